@@ -1,0 +1,3 @@
+from logicenveval.cli import main
+
+raise SystemExit(main())

@@ -1,0 +1,58 @@
+"""Thin command line: parse arguments, call library functions, print results.
+
+Each command lives in `logicenveval/commands/<name>.py` with `add_arguments(parser)` and
+`run(args) -> int`; command modules keep heavy imports inside `run` so that `--help` is fast.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+from collections.abc import Sequence
+
+from logicenveval.errors import LogicEnvEvalError
+
+#: command -> (module, one-line help)
+COMMANDS: dict[str, tuple[str, str]] = {
+    "run": ("logicenveval.commands.run", "evaluate generators on the benchmark, write a leaderboard"),
+    "tasks": ("logicenveval.commands.tasks", "list, show, validate or summarise benchmark tasks"),
+    "generate": ("logicenveval.commands.generate", "run one generator on one task"),
+    "simulate": ("logicenveval.commands.simulate", "run a policy (BT) in an environment or situation"),
+    "check-env": ("logicenveval.commands.check_env", "check an EnvSpec's physical plausibility"),
+    "report": ("logicenveval.commands.report", "rebuild leaderboard.md/.html of a run folder"),
+    "compare": ("logicenveval.commands.compare", "compare two runs; exit 1 on a regression"),
+}
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="python -m logicenveval",
+        description="LogicEnvEval: evaluate generators of logically diverse test environments.",
+    )
+    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    for name, (module, help_text) in COMMANDS.items():
+        try:
+            mod = importlib.import_module(module)
+        except ModuleNotFoundError as exc:
+            if exc.name != module:
+                raise
+            continue  # command not built yet in this checkout
+        p = sub.add_parser(name, help=help_text, description=help_text)
+        mod.add_arguments(p)
+        p.set_defaults(_run=mod.run)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(list(argv) if argv is not None else None)
+    try:
+        code: int = args._run(args)
+    except LogicEnvEvalError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("interrupted; finished units are kept and a re-run resumes", file=sys.stderr)
+        return 130
+    return code

@@ -1,0 +1,1 @@
+"""Domain knowledge: the asset catalog, predicates and the action library."""

@@ -1,0 +1,99 @@
+"""One exception root for misuse and bad input.
+
+Every message names where the problem is (file, field or line) and how to fix it, so a user can
+act on the first line they read. Outcomes of evaluation (verdicts, physics reports) are typed
+results, never exceptions.
+"""
+
+from __future__ import annotations
+
+
+class LogicEnvEvalError(Exception):
+    """Root of every error this package raises on purpose."""
+
+    def __init__(
+        self,
+        message: str,
+        *,
+        file: str | None = None,
+        field: str | None = None,
+        line: int | None = None,
+        column: int | None = None,
+        hint: str | None = None,
+    ) -> None:
+        self.message = message
+        self.file = file
+        self.field = field
+        self.line = line
+        self.column = column
+        self.hint = hint
+        super().__init__(self._format())
+
+    def _format(self) -> str:
+        where = []
+        if self.file:
+            loc = self.file
+            if self.line is not None:
+                loc += f":{self.line}"
+                if self.column is not None:
+                    loc += f":{self.column}"
+            elif self.column is not None:
+                loc += f", column {self.column}"
+            where.append(loc)
+        elif self.line is not None:
+            where.append(f"line {self.line}" + (f", column {self.column}" if self.column else ""))
+        elif self.column is not None:
+            where.append(f"column {self.column}")
+        if self.field:
+            where.append(f"field '{self.field}'")
+        text = (": ".join([", ".join(where), self.message]) if where else self.message)
+        if self.hint:
+            text += f" (fix: {self.hint})"
+        return text
+
+
+class ConditionSyntaxError(LogicEnvEvalError, ValueError):
+    """A condition string does not follow the condition language (DESIGN.md §3).
+
+    Also a ValueError so that pydantic validators report it with the field path.
+    """
+
+
+class TaskFormatError(LogicEnvEvalError):
+    """A task.json is malformed or inconsistent."""
+
+
+class PolicyFormatError(LogicEnvEvalError):
+    """A Behavior Tree XML file is malformed or uses unknown nodes/ports/roles."""
+
+
+class EnvSpecError(LogicEnvEvalError):
+    """An EnvSpec JSON is malformed."""
+
+
+class CatalogError(LogicEnvEvalError):
+    """The asset catalog is malformed or a category lookup cannot be resolved."""
+
+
+class TrajectoryError(LogicEnvEvalError):
+    """A logical trajectory is inconsistent with a task or cannot be realised."""
+
+
+class ModelReplyError(LogicEnvEvalError):
+    """An LLM reply stayed invalid after the bounded repair/re-ask budget."""
+
+
+class ModelConnectionError(LogicEnvEvalError):
+    """An LLM endpoint could not be reached or kept failing (timeouts, 429/5xx)."""
+
+
+class CacheMissError(LogicEnvEvalError):
+    """`replay:` found no cached reply for a request."""
+
+
+class ConfigError(LogicEnvEvalError):
+    """A command-line option or model argument is invalid."""
+
+
+class RunStoreError(LogicEnvEvalError):
+    """A run folder is unreadable or belongs to a different configuration."""

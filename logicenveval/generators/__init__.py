@@ -1,0 +1,1 @@
+"""Environment generators: LogicEnvGen, its ablations, and (via `baselines`) CoT, IFG, Holodeck."""

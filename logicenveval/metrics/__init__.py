@@ -1,0 +1,1 @@
+"""Metrics of DESIGN.md §7 as pure functions over evaluation records."""

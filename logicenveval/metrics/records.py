@@ -1,0 +1,57 @@
+"""Typed records that flow from evaluation into the metrics (one `EnvSample` per environment).
+
+`samples.jsonl` holds exactly these records, so every metric can be recomputed from a run folder.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from pydantic import BaseModel, ConfigDict, Field
+
+from logicenveval.generators.base import GenerationFailure
+
+
+class PhysicsSummary(BaseModel):
+    model_config = ConfigDict(frozen=True)
+    floor_plan: bool
+    entity: bool
+    relation: bool
+    #: typed failures as plain dicts (code, objects, measured, tolerance, message, dimension)
+    failures: list[dict[str, Any]] = Field(default_factory=list)
+
+
+class EnvSample(BaseModel):
+    """Everything measured about one generated environment."""
+
+    model_config = ConfigDict(frozen=True)
+    generator: str
+    task_id: str
+    env_id: str
+    claimed_trajectory: dict[str, dict[str, str]] | None = None
+    #: GT decision-path keys reached on the initial state (`DecisionPath.key`)
+    covered_paths: list[str] = Field(default_factory=list)
+    #: `Trajectory.key` when every GT tree reached a leaf, else None
+    trajectory: str | None = None
+    #: atomic conditions (variable, value) met on the reached paths (paper Def. 1)
+    conditions: list[tuple[str, str]] = Field(default_factory=list)
+    well_formed: bool = False
+    problems: list[str] = Field(default_factory=list)
+    physics: PhysicsSummary
+    #: policy kind -> verdict status (`passed`, `precondition_violation`, ...)
+    verdicts: dict[str, str] = Field(default_factory=dict)
+    #: policy kind -> simulation wall time in milliseconds (a timing field)
+    sim_ms: dict[str, float] = Field(default_factory=dict)
+
+
+class UnitRecord(BaseModel):
+    """The committed result of one (generator, task) unit of a run."""
+
+    model_config = ConfigDict(frozen=True)
+    generator: str
+    task_id: str
+    samples: list[EnvSample] = Field(default_factory=list)
+    failures: list[GenerationFailure] = Field(default_factory=list)
+    #: a unit that crashed as a whole (LLM error, solver timeout): its reason
+    error: str | None = None
+    gen_seconds: float = 0.0
