@@ -1,0 +1,58 @@
+"""`run`: evaluate generators on the benchmark and write results and leaderboards."""
+
+from __future__ import annotations
+
+import argparse
+import os
+
+from logicenveval.runner.config import DEFAULT_GENERATORS
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--model", default="offline",
+                   help="offline | oracle | openai:<model> | replay:<cache.sqlite> (default offline)")
+    p.add_argument("--model-args", default="", help="key=value,... e.g. base_url=...,api_key_env=...")
+    p.add_argument("--generators", default=",".join(DEFAULT_GENERATORS),
+                   help="comma-separated generator names (ablations by name)")
+    p.add_argument("--tasks", default="all", help="all or comma-separated task ids")
+    p.add_argument("--tasks-dir", default=None, help="folder of <task_id>/task.json (default: the benchmark)")
+    p.add_argument("--limit", type=int, default=None, help="only the first N tasks")
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--workers", type=int, default=os.cpu_count() or 1)
+    p.add_argument("--executor", default="process", choices=["process", "inprocess", "ray"])
+    p.add_argument("--output", default="reports", help="parent folder of run folders")
+    p.add_argument("--run-id", default=None, help="run folder name (default: derived from the config)")
+    cache = p.add_mutually_exclusive_group()
+    cache.add_argument("--cache", default=None, help="SQLite cache of LLM replies")
+    cache.add_argument("--no-cache", action="store_true", help="bypass the LLM reply cache")
+    p.add_argument("--quiet", action="store_true", help="no progress bars")
+
+
+def run(args: argparse.Namespace) -> int:
+    from rich.console import Console
+
+    from logicenveval.reporting.tables import markdown
+    from logicenveval.runner.config import RunConfig
+    from logicenveval.runner.run import run as run_benchmark
+
+    config = RunConfig(
+        model=args.model,
+        model_args=args.model_args,
+        generators=tuple(g.strip() for g in args.generators.split(",") if g.strip()),
+        tasks=() if args.tasks == "all" else tuple(t.strip() for t in args.tasks.split(",") if t.strip()),
+        tasks_dir=args.tasks_dir,
+        limit=args.limit,
+        seed=args.seed,
+        workers=max(1, args.workers),
+        executor=args.executor,
+        output=args.output,
+        cache=args.cache,
+        no_cache=args.no_cache,
+        run_id=args.run_id,
+    )
+    outcome = run_benchmark(config, show_progress=not args.quiet)
+    console = Console()
+    console.print(markdown(outcome.results))
+    console.print(f"[bold]run folder:[/bold] {outcome.run_dir}  "
+                  f"(computed {outcome.computed} unit(s), reused {outcome.reused})")
+    return 0

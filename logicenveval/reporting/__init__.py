@@ -1,0 +1,1 @@
+"""Leaderboards (Markdown, HTML) and run comparison."""

@@ -1,0 +1,75 @@
+"""The leaderboard table in the layout of the paper's main table, as plain rows."""
+
+from __future__ import annotations
+
+from typing import Any
+
+#: (header, path into results.<generator>, is a rate shown in percent)
+COLUMNS: tuple[tuple[str, tuple[str, ...], bool], ...] = (
+    ("PhyPR Floor", ("phypr", "floor_plan"), True),
+    ("PhyPR Entity", ("phypr", "entity"), True),
+    ("PhyPR Relation", ("phypr", "relation"), True),
+    ("PhyPR Avg", ("phypr", "avg"), True),
+    ("LogCov", ("logcov",), True),
+    ("SceVR", ("scevr",), True),
+    ("FauDR CF", ("faudr", "counterfactual"), True),
+    ("FauDR Unreach", ("faudr", "unreachable"), True),
+    ("FauDR LBranch", ("faudr", "lackbranch"), True),
+    ("FauDR Avg", ("faudr", "avg"), True),
+    ("ST (ms)", ("st_ms",), False),
+    ("LD", ("ld",), True),
+    ("JI", ("ji",), False),
+    ("Redundancy", ("redundancy",), False),
+    ("Envs", ("n_envs",), False),
+)
+
+
+def metric(values: dict[str, Any], path: tuple[str, ...]) -> float | None:
+    cur: Any = values
+    for key in path:
+        if not isinstance(cur, dict) or key not in cur:
+            return None
+        cur = cur[key]
+    return None if cur is None else float(cur)
+
+
+def fmt(value: float | None, percent: bool) -> str:
+    if value is None:
+        return "–"
+    if percent:
+        return f"{100 * value:.2f}"
+    return f"{value:.2f}" if abs(value) < 1000 else f"{value:.0f}"
+
+
+def method_label(generator: str, model: str) -> str:
+    return f"{generator} (oracle: upper bound)" if model == "oracle" else generator
+
+
+def rows(results: dict[str, Any]) -> list[list[str]]:
+    out = []
+    for gen, values in results["results"].items():
+        out.append([method_label(gen, results.get("model", ""))]
+                   + [fmt(metric(values, path), pct) for _, path, pct in COLUMNS])
+    return out
+
+
+def markdown(results: dict[str, Any]) -> str:
+    header = ["Method"] + [h + (" (%)" if pct else "") for h, _, pct in COLUMNS]
+    lines = [
+        f"# LogicEnvEval leaderboard — run `{results.get('run_id', '?')}`",
+        "",
+        f"Model: `{results.get('model')}` · seed {results.get('seed')} · "
+        f"{len(results.get('tasks', []))} tasks · commit `{results.get('git_commit') or 'n/a'}`",
+        "",
+        "| " + " | ".join(header) + " |",
+        "|" + "|".join(["---"] + ["---:"] * (len(header) - 1)) + "|",
+    ]
+    lines += ["| " + " | ".join(r) + " |" for r in rows(results)]
+    fails = {g: len(f) for g, f in results.get("failures", {}).items() if f}
+    if fails:
+        lines += ["", "Recorded generation failures: "
+                  + ", ".join(f"{g}: {n}" for g, n in sorted(fails.items()))]
+    lines += ["", "Rates in percent; ST = mean simulation time of one BT over a generator's "
+              "environments for a task (ms); JI = Jaccard index vs the reference minimal "
+              "trajectory set; Redundancy = environments / minimum cover size.", ""]
+    return "\n".join(lines)

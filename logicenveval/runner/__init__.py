@@ -1,0 +1,1 @@
+"""Run orchestration: units of (generator, task), executors, resumable store, results."""

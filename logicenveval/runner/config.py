@@ -1,0 +1,66 @@
+"""The configuration of a run: what is evaluated, with which model, where results go.
+
+The run folder name is derived from the configuration, so re-running the same command finds its
+own folder and resumes it; a different configuration never mixes into an existing folder.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import re
+from pathlib import Path
+
+from pydantic import BaseModel, ConfigDict, Field
+
+DEFAULT_GENERATORS: tuple[str, ...] = ("logicenvgen", "cot", "ifg", "holodeck")
+
+
+class RunConfig(BaseModel):
+    model_config = ConfigDict(frozen=True, extra="forbid")
+    model: str = "offline"
+    model_args: str = ""
+    generators: tuple[str, ...] = DEFAULT_GENERATORS
+    tasks: tuple[str, ...] = ()  # empty = all tasks of tasks_dir
+    tasks_dir: str | None = None
+    limit: int | None = Field(default=None, ge=1)
+    seed: int = 0
+    workers: int = Field(default=1, ge=1)
+    executor: str = "process"
+    output: str = "reports"
+    cache: str | None = None
+    no_cache: bool = False
+    run_id: str | None = None
+
+    def identity(self) -> dict[str, object]:
+        """The fields that define *what* is computed (not how fast or where)."""
+        return {
+            "model": self.model,
+            "model_args": _redact(self.model_args),
+            "generators": list(self.generators),
+            "tasks": list(self.tasks),
+            "tasks_dir": self.tasks_dir,
+            "limit": self.limit,
+            "seed": self.seed,
+        }
+
+    def resolved_run_id(self) -> str:
+        if self.run_id:
+            return self.run_id
+        blob = json.dumps(self.identity(), sort_keys=True).encode()
+        slug = re.sub(r"[^A-Za-z0-9]+", "-", self.model).strip("-").lower() or "model"
+        return f"{slug}-seed{self.seed}-{hashlib.sha256(blob).hexdigest()[:8]}"
+
+    def run_dir(self) -> Path:
+        return Path(self.output) / self.resolved_run_id()
+
+
+def _redact(model_args: str) -> str:
+    """Model args go into reports; anything that looks like a secret value is masked."""
+    parts = []
+    for item in filter(None, (p.strip() for p in model_args.split(","))):
+        key, _, value = item.partition("=")
+        if re.search(r"(key|token|secret|password)", key, re.I) and not key.endswith("_env"):
+            value = "***"
+        parts.append(f"{key}={value}" if _ else key)
+    return ",".join(parts)

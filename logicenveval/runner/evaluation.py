@@ -1,0 +1,65 @@
+"""Judging one generated environment: physics, GT coverage, and the four policies.
+
+This is where the independent parts meet; each is called through its public API so that the
+same evaluation serves the runner, `generate`, and tests.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Mapping
+from typing import Any
+
+from logicenveval.domain.catalog import Catalog
+from logicenveval.metrics.evaluate import coverage
+from logicenveval.metrics.records import EnvSample, PhysicsSummary
+from logicenveval.model.envspec import EnvSpec
+from logicenveval.model.task import Task
+from logicenveval.physics import check_env
+from logicenveval.sim.simulator import simulate
+from logicenveval.sim.world import holds_initial
+
+
+def evaluate_env(
+    generator: str,
+    task: Task,
+    env: EnvSpec,
+    policies: Mapping[str, Any],
+    catalog: Catalog,
+) -> EnvSample:
+    """Measure one environment; never raises for a bad environment (that is a finding)."""
+    report = check_env(env, catalog)
+    failures = [
+        f.model_dump(mode="json")
+        for dim in (report.floor_plan, report.entity, report.relation)
+        for f in dim.failures
+    ]
+    physics = PhysicsSummary(
+        floor_plan=report.floor_plan.passed,
+        entity=report.entity.passed,
+        relation=report.relation.passed,
+        failures=failures,
+    )
+    bound = {role for role, oid in env.roles.items() if oid is not None}
+    cov = coverage(task, holds_initial(env, catalog), bound)
+    verdicts: dict[str, str] = {}
+    sim_ms: dict[str, float] = {}
+    for kind, policy in policies.items():
+        start = time.perf_counter()
+        verdict = simulate(policy, env, task, catalog)
+        sim_ms[kind] = (time.perf_counter() - start) * 1000.0
+        verdicts[kind] = verdict.status
+    return EnvSample(
+        generator=generator,
+        task_id=task.id,
+        env_id=env.env_id,
+        claimed_trajectory=env.claimed_trajectory,
+        covered_paths=list(cov.covered_paths),
+        trajectory=cov.trajectory,
+        conditions=[tuple(c) for c in cov.conditions],
+        well_formed=cov.well_formed,
+        problems=list(cov.problems),
+        physics=physics,
+        verdicts=verdicts,
+        sim_ms=sim_ms,
+    )

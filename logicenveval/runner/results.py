@@ -1,0 +1,116 @@
+"""Turning committed units into `results.json` and `samples.jsonl` (DESIGN.md §7, §9).
+
+Everything but the `timing` block, `st_ms` and `sim_ms` is a pure function of the units, so the
+same command gives byte-identical files apart from those timing fields.
+"""
+
+from __future__ import annotations
+
+import importlib.metadata
+import json
+import platform
+import subprocess
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any
+
+from logicenveval.metrics.compute import aggregate, task_metrics
+from logicenveval.metrics.records import UnitRecord
+from logicenveval.model.task import Task
+from logicenveval.runner.config import RunConfig
+from logicenveval.runner.store import atomic_write_text
+
+RESULTS_SCHEMA = "logicenveval.results/1"
+_VERSIONED = ("logicenveval", "numpy", "pydantic", "z3-solver", "py-trees", "trimesh",
+              "python-fcl", "shapely", "ortools", "pandas")
+
+
+def package_versions() -> dict[str, str]:
+    out = {"python": platform.python_version()}
+    for name in _VERSIONED:
+        try:
+            out[name] = importlib.metadata.version(name)
+        except importlib.metadata.PackageNotFoundError:
+            out[name] = "not installed"
+    return out
+
+
+def git_commit() -> str | None:
+    here = Path(__file__).resolve().parent
+    try:
+        proc = subprocess.run(["git", "rev-parse", "HEAD"], cwd=here, capture_output=True,
+                              text=True, timeout=5, check=False)
+    except (OSError, subprocess.SubprocessError):
+        return None
+    return proc.stdout.strip() or None if proc.returncode == 0 else None
+
+
+def build_results(
+    config: RunConfig,
+    tasks: Sequence[Task],
+    records: Sequence[UnitRecord],
+    *,
+    cache_stats: dict[str, Any] | None = None,
+    wall_seconds: float | None = None,
+) -> dict[str, Any]:
+    by_task = {t.id: t for t in tasks}
+    results: dict[str, Any] = {}
+    per_task: dict[str, Any] = {}
+    failures: dict[str, list[dict[str, Any]]] = {}
+    gen_seconds: dict[str, float] = {}
+    for gen in config.generators:
+        units = [r for r in records if r.generator == gen]
+        metrics = [
+            task_metrics(by_task[u.task_id], u.samples, n_failed=1 if u.error and not u.samples else 0)
+            for u in units
+        ]
+        results[gen] = aggregate(metrics).model_dump(mode="json")
+        per_task[gen] = {u.task_id: m.model_dump(mode="json") for u, m in zip(units, metrics, strict=True)}
+        failures[gen] = [
+            {"task": u.task_id, "stage": "unit", "message": u.error} for u in units if u.error
+        ] + [
+            {"task": u.task_id, **f.model_dump(mode="json")} for u in units for f in u.failures
+        ]
+        gen_seconds[gen] = round(sum(u.gen_seconds for u in units), 3)
+    return {
+        "schema": RESULTS_SCHEMA,
+        "run_id": config.resolved_run_id(),
+        "config": config.identity(),
+        "model": config.model,
+        "seed": config.seed,
+        "tasks": [t.id for t in tasks],
+        "versions": package_versions(),
+        "git_commit": git_commit(),
+        "results": results,
+        "per_task": per_task,
+        "failures": failures,
+        "timing": {
+            "wall_seconds": None if wall_seconds is None else round(wall_seconds, 3),
+            "generation_seconds": gen_seconds,
+            "cache": cache_stats or {},
+        },
+    }
+
+
+def write_outputs(run_dir: Path, results: dict[str, Any], records: Sequence[UnitRecord]) -> None:
+    lines = [json.dumps(s.model_dump(mode="json"), sort_keys=True) for r in records for s in r.samples]
+    atomic_write_text(run_dir / "samples.jsonl", "\n".join(lines) + ("\n" if lines else ""))
+    atomic_write_text(run_dir / "results.json", json.dumps(results, indent=2, sort_keys=True) + "\n")
+
+
+def load_results(run_dir: Path) -> dict[str, Any]:
+    from logicenveval.errors import RunStoreError
+
+    path = run_dir / "results.json"
+    try:
+        data: dict[str, Any] = json.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise RunStoreError("no results.json in this folder", file=str(run_dir),
+                            hint="pass a run folder written by `python -m logicenveval run`") from None
+    except json.JSONDecodeError as exc:
+        raise RunStoreError(f"invalid JSON: {exc.msg}", file=str(path), line=exc.lineno,
+                            hint="re-run the command to rewrite it") from None
+    if data.get("schema") != RESULTS_SCHEMA or "results" not in data:
+        raise RunStoreError("not a LogicEnvEval results file", file=str(path),
+                            hint=f"expected schema {RESULTS_SCHEMA}")
+    return data

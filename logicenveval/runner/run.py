@@ -1,0 +1,106 @@
+"""`python -m logicenveval run`: generators × tasks → committed units → results and leaderboard."""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from rich.console import Console
+from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
+
+from logicenveval.benchmark import load_tasks, task_ids
+from logicenveval.errors import ConfigError
+from logicenveval.generators.base import registered
+from logicenveval.metrics.records import UnitRecord
+from logicenveval.runner.config import RunConfig
+from logicenveval.runner.executors import make_executor
+from logicenveval.runner.results import build_results, write_outputs
+from logicenveval.runner.store import RunStore
+from logicenveval.runner.unit import UnitSpec, run_unit
+
+
+@dataclass(frozen=True)
+class RunOutcome:
+    run_dir: Path
+    results: dict[str, Any]
+    computed: int  # units computed in this invocation
+    reused: int  # units found committed from an earlier, interrupted invocation
+
+
+def _check(config: RunConfig) -> list[str]:
+    known = registered()
+    for g in config.generators:
+        if g not in known:
+            raise ConfigError(f"unknown generator {g!r}", field="--generators",
+                              hint="use one of " + ", ".join(known))
+    if len(set(config.generators)) != len(config.generators):
+        raise ConfigError("a generator is listed twice", field="--generators",
+                          hint="list each generator once")
+    available = task_ids(config.tasks_dir)
+    ids = list(config.tasks) or available
+    missing = [t for t in ids if t not in available]
+    if missing:
+        raise ConfigError(f"unknown task(s) {missing}", field="--tasks",
+                          hint="see `python -m logicenveval tasks list`")
+    return ids[: config.limit] if config.limit else ids
+
+
+def _preflight(config: RunConfig, run_dir: Path) -> dict[str, Any]:
+    """Fail fast on an unreachable endpoint: one clear error instead of N failed units."""
+    from logicenveval.llm.registry import make_model
+
+    model = make_model(config.model, config.model_args, cache_path=config.cache,
+                       no_cache=config.no_cache, run_dir=run_dir)
+    check = getattr(model, "preflight", None)
+    if callable(check):
+        check()
+    return {"model": getattr(model, "name", config.model)}
+
+
+def run(config: RunConfig, *, console: Console | None = None, show_progress: bool = True) -> RunOutcome:
+    ids = _check(config)
+    tasks = load_tasks(config.tasks_dir, ids)
+    run_dir = config.run_dir()
+    _preflight(config, run_dir)
+    store = RunStore(run_dir)
+    store.bind_config(config.identity())
+    specs = [
+        UnitSpec(generator=g, task_id=t, tasks_dir=config.tasks_dir, model=config.model,
+                 model_args=config.model_args, seed=config.seed, run_dir=str(run_dir),
+                 cache=config.cache, no_cache=config.no_cache)
+        for g in config.generators for t in ids
+    ]
+    records: dict[tuple[str, str], UnitRecord] = {}
+    pending: list[UnitSpec] = []
+    for spec in specs:
+        stored = store.load(spec.generator, spec.task_id)
+        if stored is None:
+            pending.append(spec)
+        else:
+            records[(spec.generator, spec.task_id)] = stored
+    reused = len(records)
+    start = time.perf_counter()
+    console = console or Console(stderr=True)
+    executor = make_executor(config.executor, config.workers)
+    with Progress(
+        TextColumn("[bold]{task.description:<14}"), BarColumn(), MofNCompleteColumn(),
+        TimeRemainingColumn(), console=console, disable=not show_progress, transient=False,
+    ) as progress:
+        bars = {
+            g: progress.add_task(g, total=len(ids),
+                                 completed=sum(1 for (gg, _) in records if gg == g))
+            for g in config.generators
+        }
+        for spec, record in executor.map_unordered(run_unit, pending):
+            store.save(record)
+            records[(spec.generator, spec.task_id)] = record
+            progress.advance(bars[spec.generator])
+    ordered = [records[(s.generator, s.task_id)] for s in specs]
+    results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start)
+    write_outputs(run_dir, results, ordered)
+    from logicenveval.reporting.leaderboard import write_leaderboards
+
+    write_leaderboards(run_dir, results)
+    return RunOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused)

@@ -1,0 +1,95 @@
+"""Crash-safe, resumable storage of a run's finished units.
+
+Each finished (generator, task) unit is one JSON file written atomically (temp file, fsync,
+rename) and carrying a checksum of its content, so a run killed at any instant leaves either a
+complete unit or none; a truncated or edited unit fails its checksum and is recomputed.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import hashlib
+import json
+import os
+import tempfile
+from pathlib import Path
+from typing import Any
+
+from pydantic import ValidationError
+
+from logicenveval.errors import RunStoreError
+from logicenveval.metrics.records import UnitRecord
+
+
+def atomic_write_text(path: Path, text: str) -> None:
+    """Write `text` so that readers see the old file or the complete new one, never a part."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as fh:
+            fh.write(text)
+            fh.flush()
+            os.fsync(fh.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        with contextlib.suppress(FileNotFoundError):
+            os.unlink(tmp)
+        raise
+    dir_fd = os.open(path.parent, os.O_RDONLY)
+    try:
+        os.fsync(dir_fd)
+    finally:
+        os.close(dir_fd)
+
+
+def _digest(payload: Any) -> str:
+    return hashlib.sha256(json.dumps(payload, sort_keys=True).encode()).hexdigest()
+
+
+class RunStore:
+    """The `units/` folder of a run directory plus its `config.json`."""
+
+    def __init__(self, run_dir: Path) -> None:
+        self.run_dir = run_dir
+        self.units_dir = run_dir / "units"
+
+    def unit_path(self, generator: str, task_id: str) -> Path:
+        return self.units_dir / generator / f"{task_id}.json"
+
+    def bind_config(self, identity: dict[str, Any]) -> None:
+        """Record the run's identity, or check that an existing folder has the same one."""
+        path = self.run_dir / "config.json"
+        if path.exists():
+            try:
+                stored = json.loads(path.read_text(encoding="utf-8"))
+            except json.JSONDecodeError:
+                stored = None
+            if stored is not None and stored != identity:
+                raise RunStoreError(
+                    "this run folder belongs to a different configuration",
+                    file=str(path),
+                    hint="use another --output/--run-id, or delete the folder to start over",
+                )
+            if stored is not None:
+                return
+        atomic_write_text(path, json.dumps(identity, indent=2, sort_keys=True) + "\n")
+
+    def save(self, record: UnitRecord) -> None:
+        payload = record.model_dump(mode="json")
+        text = json.dumps({"sha256": _digest(payload), "unit": payload}, indent=1, sort_keys=True)
+        atomic_write_text(self.unit_path(record.generator, record.task_id), text + "\n")
+
+    def load(self, generator: str, task_id: str) -> UnitRecord | None:
+        """The stored unit, or None when absent, partial or corrupt (then it is recomputed)."""
+        path = self.unit_path(generator, task_id)
+        try:
+            blob = json.loads(path.read_text(encoding="utf-8"))
+            payload = blob["unit"]
+            if blob.get("sha256") != _digest(payload):
+                return None
+            record = UnitRecord.model_validate(payload)
+        except (OSError, ValueError, KeyError, TypeError, ValidationError):
+            return None
+        if record.generator != generator or record.task_id != task_id:
+            return None
+        return record

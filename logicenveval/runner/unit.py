@@ -1,0 +1,105 @@
+"""One unit of work: one generator on one task, from generation to evaluated samples.
+
+Units are independent and deterministic: the random generator of a unit is seeded from the run
+seed and the unit's names, so results do not depend on scheduling or on the number of workers.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import time
+import traceback
+from pathlib import Path
+
+import numpy as np
+from pydantic import BaseModel, ConfigDict
+
+from logicenveval.benchmark import load_task, policy_path
+from logicenveval.domain.catalog import load_catalog
+from logicenveval.envfiles import env_to_json
+from logicenveval.errors import LogicEnvEvalError
+from logicenveval.generators.base import GenerationContext, make_generator
+from logicenveval.metrics.records import UnitRecord
+from logicenveval.model.envspec import EnvSpec
+from logicenveval.model.task import POLICY_KINDS
+from logicenveval.runner.store import atomic_write_text
+
+
+class UnitSpec(BaseModel):
+    """Everything a worker process needs to run one unit (picklable, no live objects)."""
+
+    model_config = ConfigDict(frozen=True)
+    generator: str
+    task_id: str
+    tasks_dir: str | None
+    model: str
+    model_args: str
+    seed: int
+    run_dir: str
+    cache: str | None = None
+    no_cache: bool = False
+
+
+def unit_seed(seed: int, generator: str, task_id: str) -> list[int]:
+    """A seed sequence independent of scheduling: run seed + stable hashes of the unit's names."""
+    digest = hashlib.sha256(f"{generator}\0{task_id}".encode()).digest()
+    return [seed, int.from_bytes(digest[:8], "little")]
+
+
+def _unique_ids(envs: list[EnvSpec]) -> list[EnvSpec]:
+    """Environments keep their ids; a repeated id gets a numeric suffix so no file is lost."""
+    seen: set[str] = set()
+    out = []
+    for env in envs:
+        env_id, k = env.env_id, 1
+        while env_id in seen:
+            k += 1
+            env_id = f"{env.env_id}-{k}"
+        seen.add(env_id)
+        out.append(env if env_id == env.env_id else env.model_copy(update={"env_id": env_id}))
+    return out
+
+
+def run_unit(spec: UnitSpec) -> UnitRecord:
+    """Generate and evaluate; a failing generation is recorded, never raised."""
+    from logicenveval.llm.registry import make_model
+    from logicenveval.runner.evaluation import evaluate_env
+    from logicenveval.sim.loader import load_policy
+
+    task = load_task(spec.task_id, spec.tasks_dir)
+    catalog = load_catalog()
+    policies = {k: load_policy(policy_path(task, k, spec.tasks_dir)) for k in POLICY_KINDS}
+    run_dir = Path(spec.run_dir)
+    start = time.perf_counter()
+    try:
+        model = make_model(spec.model, spec.model_args, cache_path=spec.cache,
+                           no_cache=spec.no_cache, run_dir=run_dir)
+        generator = make_generator(spec.generator)
+        ctx = GenerationContext(
+            model=model,
+            catalog=catalog,
+            rng=np.random.default_rng(unit_seed(spec.seed, spec.generator, spec.task_id)),
+            seed=spec.seed,
+            work_dir=run_dir / "work" / spec.generator / spec.task_id,
+        )
+        result = generator.generate(task.brief(), ctx)
+    except LogicEnvEvalError as exc:
+        return UnitRecord(generator=spec.generator, task_id=spec.task_id,
+                          error=f"{type(exc).__name__}: {exc}",
+                          gen_seconds=time.perf_counter() - start)
+    except Exception as exc:  # a generator bug must not kill the run; it is reported
+        tb = traceback.format_exception_only(type(exc), exc)[-1].strip()
+        return UnitRecord(generator=spec.generator, task_id=spec.task_id,
+                          error=f"internal error: {tb}", gen_seconds=time.perf_counter() - start)
+    gen_seconds = time.perf_counter() - start
+    env_dir = run_dir / "envs" / spec.generator / spec.task_id
+    samples = []
+    for env in _unique_ids(result.envs):
+        atomic_write_text(env_dir / f"{env.env_id}.json", env_to_json(env))
+        samples.append(evaluate_env(spec.generator, task, env, policies, catalog))
+    if result.artifacts:
+        atomic_write_text(env_dir / "plan.json",
+                          json.dumps(result.artifacts, indent=2, sort_keys=True, default=str) + "\n")
+    return UnitRecord(generator=spec.generator, task_id=spec.task_id, samples=samples,
+                      failures=list(result.failures), gen_seconds=gen_seconds)

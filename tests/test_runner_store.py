@@ -1,0 +1,86 @@
+"""Crash-safe unit storage, run identity and regression comparison."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from logicenveval.errors import RunStoreError
+from logicenveval.metrics.records import EnvSample, PhysicsSummary, UnitRecord
+from logicenveval.reporting.compare import compare_results
+from logicenveval.runner.config import RunConfig
+from logicenveval.runner.store import RunStore, atomic_write_text
+
+
+def _record(task: str = "t1") -> UnitRecord:
+    sample = EnvSample(generator="g", task_id=task, env_id="e0", covered_paths=["s:v=yes"],
+                       well_formed=True, physics=PhysicsSummary(floor_plan=True, entity=False, relation=True),
+                       verdicts={"correct": "passed"}, sim_ms={"correct": 0.5})
+    return UnitRecord(generator="g", task_id=task, samples=[sample], gen_seconds=1.5)
+
+
+def test_save_load_round_trip(tmp_path: Path) -> None:
+    store = RunStore(tmp_path)
+    assert store.load("g", "t1") is None
+    store.save(_record())
+    assert store.load("g", "t1") == _record()
+    assert not list(tmp_path.rglob("*.tmp"))
+
+
+@pytest.mark.parametrize("damage", ["truncate", "edit", "garbage", "wrong_unit"])
+def test_corrupt_units_are_detected(tmp_path: Path, damage: str) -> None:
+    store = RunStore(tmp_path)
+    store.save(_record())
+    path = store.unit_path("g", "t1")
+    text = path.read_text()
+    if damage == "truncate":
+        path.write_text(text[: len(text) // 2])
+    elif damage == "edit":
+        path.write_text(text.replace('"passed"', '"goal_unmet"'))
+    elif damage == "garbage":
+        path.write_bytes(b"\x00\xff")
+    else:
+        other = RunStore(tmp_path / "x")
+        other.save(_record("t2"))
+        path.write_text(other.unit_path("g", "t2").read_text())
+    assert store.load("g", "t1") is None
+
+
+def test_atomic_write_replaces_whole_file(tmp_path: Path) -> None:
+    p = tmp_path / "a" / "f.txt"
+    atomic_write_text(p, "one")
+    atomic_write_text(p, "two")
+    assert p.read_text() == "two"
+
+
+def test_config_identity_and_folder_binding(tmp_path: Path) -> None:
+    a = RunConfig(output=str(tmp_path), workers=1)
+    b = RunConfig(output=str(tmp_path), workers=2, executor="inprocess")
+    assert a.resolved_run_id() == b.resolved_run_id()  # speed settings do not change identity
+    c = RunConfig(output=str(tmp_path), seed=1)
+    assert c.resolved_run_id() != a.resolved_run_id()
+    secret = RunConfig(model="openai:x", model_args="base_url=http://h/v1,api_key=sk-123,api_key_env=K")
+    assert "sk-123" not in json.dumps(secret.identity())
+    store = RunStore(a.run_dir())
+    store.bind_config(a.identity())
+    store.bind_config(a.identity())
+    with pytest.raises(RunStoreError, match="different configuration"):
+        store.bind_config(c.identity())
+
+
+def _results(logcov: float, st: float, redundancy: float) -> dict[str, object]:
+    return {"results": {"g": {"phypr": {"floor_plan": 1, "entity": 1, "relation": 1, "avg": 1},
+                              "logcov": logcov, "ld": 1, "scevr": 1,
+                              "faudr": {"counterfactual": 1, "unreachable": 1, "lackbranch": 1, "avg": 1},
+                              "st_ms": st, "ji": 1, "redundancy": redundancy, "n_envs": 4}}}
+
+
+def test_compare_directions_and_tolerance() -> None:
+    base = _results(0.9, 10.0, 1.0)
+    assert not any(d.regression for d in compare_results(base, _results(0.89, 50.0, 1.01)))
+    regs = {d.metric for d in compare_results(base, _results(0.85, 50.0, 1.5)) if d.regression}
+    assert regs == {"LogCov", "Redundancy"}
+    timing = {d.metric for d in compare_results(base, _results(0.9, 50.0, 1.0), judge_timing=True) if d.regression}
+    assert timing == {"ST (ms)"}
