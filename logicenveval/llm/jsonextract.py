@@ -1,0 +1,59 @@
+"""Extracting the JSON value from an LLM reply that may wrap it in prose or code fences."""
+
+from __future__ import annotations
+
+import json
+import re
+from typing import Any
+
+_FENCE = re.compile(r"```(?:json|JSON)?\s*\n?(.*?)```", re.S)
+
+
+class JSONExtractionError(ValueError):
+    """No parseable JSON value in a reply; the message says what was wrong (for re-asking)."""
+
+
+def _balanced_spans(text: str) -> list[str]:
+    """Top-level `{...}` / `[...]` spans, tracking strings and escapes."""
+    spans: list[str] = []
+    depth, start, in_str, esc = 0, -1, False, False
+    for i, ch in enumerate(text):
+        if in_str:
+            if esc:
+                esc = False
+            elif ch == "\\":
+                esc = True
+            elif ch == '"':
+                in_str = False
+            continue
+        if ch == '"' and depth > 0:
+            in_str = True
+        elif ch in "{[":
+            if depth == 0:
+                start = i
+            depth += 1
+        elif ch in "}]" and depth > 0:
+            depth -= 1
+            if depth == 0:
+                spans.append(text[start : i + 1])
+    return spans
+
+
+def extract_json(reply: str) -> Any:
+    """The first JSON object/array in `reply`: whole text, fenced block, then balanced span."""
+    text = reply.strip()
+    candidates = [text] + [m.group(1).strip() for m in _FENCE.finditer(text)] + _balanced_spans(text)
+    first_error: json.JSONDecodeError | None = None
+    for cand in candidates:
+        if not cand or cand[0] not in "{[":
+            continue
+        try:
+            return json.loads(cand)
+        except json.JSONDecodeError as exc:
+            first_error = first_error or exc
+    if first_error is not None:
+        raise JSONExtractionError(
+            f"the reply contains JSON that does not parse: {first_error.msg} at line "
+            f"{first_error.lineno} column {first_error.colno}"
+        )
+    raise JSONExtractionError("the reply contains no JSON object or array")

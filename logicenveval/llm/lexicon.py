@@ -1,0 +1,126 @@
+"""Grounding words of a task description to the task's roles, rooms and attribute values.
+
+The lexicon is built from the brief alone (role names, their categories, the catalog's synonyms
+and attribute domains), so it generalises to any task written with the same catalog.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+from logicenveval.domain.catalog import Catalog
+
+WORD = re.compile(r"[a-z0-9]+(?:'[a-z]+)?")
+
+COLOR_WORDS = frozenset(
+    ["red", "blue", "green", "yellow", "white", "black", "grey", "gray", "brown", "pink", "purple", "orange", "beige", "silver", "gold"]
+)
+
+
+def singular(word: str) -> str:
+    """Crude English singular, good enough for household nouns (boxes, dishes, shelves, toys)."""
+    if len(word) <= 3 or word.endswith("ss"):
+        return word
+    for suffix, repl in (("ies", "y"), ("ves", "f"), ("xes", "x"), ("ches", "ch"), ("shes", "sh"),
+                         ("sses", "ss"), ("oes", "o")):
+        if word.endswith(suffix):
+            return word[: -len(suffix)] + repl
+    return word[:-1] if word.endswith("s") and not word.endswith("us") else word
+
+
+def tokens(text: str) -> list[tuple[str, int, int]]:
+    """(normalised word, start, end) with words singularised for matching."""
+    return [(singular(m.group(0)), m.start(), m.end()) for m in WORD.finditer(text.lower())]
+
+
+def words_of(name: str) -> tuple[str, ...]:
+    return tuple(singular(w) for w in WORD.findall(name.lower().replace("_", " ")))
+
+
+@dataclass(frozen=True)
+class Mention:
+    roles: tuple[str, ...]  # one role, or several when the phrase is ambiguous (two toy boxes)
+    start: int  # token index
+    end: int  # token index (exclusive)
+    kind: str = "role"  # "role" | "room" | "floor"
+
+
+@dataclass
+class Lexicon:
+    roles: dict[str, dict[str, Any]]
+    rooms: list[str]
+    #: phrase (tuple of singular words) -> roles it may denote
+    phrases: dict[tuple[str, ...], set[str]] = field(default_factory=dict)
+    room_phrases: dict[tuple[str, ...], str] = field(default_factory=dict)
+    #: role -> attribute key -> allowed values (from the catalog)
+    domains: dict[str, dict[str, list[str]]] = field(default_factory=dict)
+    #: role -> fixed attributes given by the brief
+    fixed: dict[str, dict[str, str]] = field(default_factory=dict)
+
+    @classmethod
+    def build(cls, brief: Mapping[str, Any], catalog: Catalog) -> Lexicon:
+        roles: dict[str, dict[str, Any]] = dict(brief["roles"])
+        lex = cls(roles=roles, rooms=list(brief.get("rooms", [])))
+        for name, role in roles.items():
+            cat = catalog.get(role["category"])
+            names = {name, role["category"]} | set(cat.synonyms if cat else ())
+            if name.split("_")[-1].isdigit():
+                names.add("_".join(name.split("_")[:-1]))
+            for n in names:
+                lex.phrases.setdefault(words_of(n), set()).add(name)
+                # a role named after an attribute + noun ("red_box") is also found by its noun
+                if len(words_of(n)) > 1 and words_of(n)[0] in COLOR_WORDS:
+                    lex.phrases.setdefault(words_of(n)[1:], set()).add(name)
+            lex.domains[name] = {k: [v.lower() for v in vs] for k, vs in (cat.attributes if cat else {}).items()}
+            lex.fixed[name] = {k: str(v).lower() for k, v in role.get("attributes", {}).items()}
+        for room in lex.rooms:
+            lex.room_phrases[words_of(room)] = room
+        return lex
+
+    def role_words(self) -> set[str]:
+        return {w for p in self.phrases for w in p}
+
+    def find_mentions(self, toks: list[tuple[str, int, int]]) -> list[Mention]:
+        """Longest-match role, room and `floor` mentions; attribute words disambiguate."""
+        words = [t[0] for t in toks]
+        out: list[Mention] = []
+        i = 0
+        longest = max((len(p) for p in self.phrases), default=1)
+        while i < len(words):
+            found: Mention | None = None
+            for n in range(min(longest, len(words) - i), 0, -1):
+                key = tuple(words[i : i + n])
+                if key in self.room_phrases and n > 0:
+                    found = Mention((self.room_phrases[key],), i, i + n, "room")
+                    break
+                if key in self.phrases:
+                    found = Mention(self._disambiguate(self.phrases[key], words, i), i, i + n)
+                    break
+            if found is None and words[i] == "floor":
+                found = Mention(("floor",), i, i + 1, "floor")
+            if found is not None:
+                out.append(found)
+                i = found.end
+            else:
+                i += 1
+        return out
+
+    def _disambiguate(self, candidates: Iterable[str], words: list[str], i: int) -> tuple[str, ...]:
+        cands = sorted(candidates)
+        if len(cands) == 1:
+            return tuple(cands)
+        window = set(words[max(0, i - 3) : i])
+        picked = [r for r in cands if set(self.fixed.get(r, {}).values()) & window]
+        return tuple(picked or cands)
+
+    def attribute_of(self, role: str, word: str) -> tuple[str, str] | None:
+        """(key, value) when `word` is a value of an attribute domain of the role's category."""
+        w = singular(word)
+        for key, values in self.domains.get(role, {}).items():
+            for v in values:
+                if singular(v) == w:
+                    return key, v
+        return None

@@ -1,0 +1,111 @@
+"""Choosing a ChatModel by name (`--model`) with `key=value,...` arguments (`--model-args`).
+
+Providers are imported lazily, so `offline` runs never import httpx and a missing optional
+dependency only matters for the provider that needs it.
+"""
+
+from __future__ import annotations
+
+import importlib
+import sqlite3
+from pathlib import Path
+from typing import Any
+
+from logicenveval.errors import ConfigError
+from logicenveval.llm.base import ChatModel, ModelStats
+
+PROVIDERS: dict[str, str] = {
+    "offline": "logicenveval.llm.offline:OfflineModel",
+    "oracle": "logicenveval.llm.oracle:OracleModel",
+    "openai": "logicenveval.llm.openai_http:OpenAIChatModel",
+}
+
+
+def _typed(value: str) -> Any:
+    low = value.lower()
+    if low in ("true", "false"):
+        return low == "true"
+    if low in ("none", "null"):
+        return None
+    for cast in (int, float):
+        try:
+            return cast(value)
+        except ValueError:
+            pass
+    return value
+
+
+def parse_model_args(text: str | dict[str, Any] | None) -> dict[str, Any]:
+    """`base_url=http://h:8000/v1,timeout=30` -> {"base_url": "...", "timeout": 30}."""
+    if text is None:
+        return {}
+    if isinstance(text, dict):
+        return dict(text)
+    out: dict[str, Any] = {}
+    for item in filter(None, (p.strip() for p in text.split(","))):
+        key, sep, value = item.partition("=")
+        if not sep or not key.strip():
+            raise ConfigError(f"model argument {item!r} is not key=value", field="--model-args",
+                              hint="write key=value pairs separated by commas")
+        out[key.strip()] = _typed(value.strip())
+    return out
+
+
+def _replay_target(path: Path, wanted: str | None) -> tuple[str, str]:
+    if wanted:
+        provider, _, model = wanted.partition(":")
+        return provider, model
+    conn = sqlite3.connect(path)
+    try:
+        pairs = conn.execute("SELECT DISTINCT provider, model FROM replies").fetchall()
+    except sqlite3.DatabaseError:
+        raise ConfigError("not a reply cache", file=str(path),
+                          hint="pass a cache written with --cache FILE") from None
+    finally:
+        conn.close()
+    if len(pairs) != 1:
+        raise ConfigError(f"the cache holds {len(pairs)} models", file=str(path),
+                          field="--model-args replay_model",
+                          hint="choose one with replay_model=<provider>:<model>")
+    return str(pairs[0][0]), str(pairs[0][1])
+
+
+def make_model(
+    spec: str,
+    args: str | dict[str, Any] | None = None,
+    *,
+    cache_path: str | Path | None = None,
+    no_cache: bool = False,
+    run_dir: str | Path | None = None,
+) -> ChatModel:
+    """Build the model named by `spec` (`offline`, `oracle`, `openai:<model>`, `replay:<file>`)."""
+    from logicenveval.llm.cache import CachedModel, ReplayModel, ReplyCache
+
+    kwargs = parse_model_args(args)
+    stats = ModelStats()
+    provider, _, name = spec.partition(":")
+    model: Any
+    if provider == "replay":
+        if not name:
+            raise ConfigError("replay needs a cache file", field="--model", hint="write replay:<cache.sqlite>")
+        cache = ReplyCache(name, create=False)
+        target_provider, target_model = _replay_target(Path(name), kwargs.pop("replay_model", None))
+        model = ReplayModel(cache, target_provider, target_model, stats)
+    elif provider in PROVIDERS:
+        module, attr = PROVIDERS[provider].split(":")
+        factory = getattr(importlib.import_module(module), attr)
+        try:
+            model = factory(name, stats=stats, **kwargs) if provider == "openai" else factory(stats=stats, **kwargs)
+        except TypeError as exc:
+            raise ConfigError(f"bad model argument for {provider}: {exc}", field="--model-args",
+                              hint=f"see docs/llm.md for the arguments of {provider}") from None
+        if provider == "openai" and not no_cache:
+            default = Path(run_dir).parent / "llm_cache.sqlite" if run_dir else Path("llm_cache.sqlite")
+            model = CachedModel(model, ReplyCache(cache_path or default), provider, stats)
+    else:
+        raise ConfigError(f"unknown model {spec!r}", field="--model",
+                          hint="use offline, oracle, openai:<model> or replay:<cache.sqlite>")
+    model.run_dir = Path(run_dir) if run_dir else None
+    model.stats = stats
+    chat_model: ChatModel = model
+    return chat_model

@@ -1,0 +1,190 @@
+"""Pydantic models of every LLM reply kind; their JSON schemas are what servers receive.
+
+Field descriptions are part of the schema and therefore of the prompt: they say precisely what a
+model must produce, in the condition language of DESIGN.md §3 where conditions are asked for.
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Literal, Union
+
+from pydantic import BaseModel, ConfigDict, Field
+
+_F = ConfigDict(frozen=True, extra="ignore")
+
+Condition = Annotated[
+    str,
+    Field(description="a condition in the task condition language, e.g. 'on(toy, floor)', "
+          "'not attr(toy, kind, doll)', 'state(fridge, open)', using the task's role names"),
+]
+
+
+# --- behaviour plan derivation (paper §3.1) -------------------------------------------------
+
+class SubtaskDraft(BaseModel):
+    model_config = _F
+    id: str = Field(description="short snake_case id, e.g. 'tidy_toy'")
+    description: str = Field(description="one sentence: what the subtask achieves")
+    roles: list[str] = Field(description="task roles this subtask manipulates or inspects")
+
+
+class DecomposeReply(BaseModel):
+    """Mutually independent subtasks (no execution-order dependencies)."""
+
+    model_config = _F
+    reasoning: str = Field(default="", description="brief reasoning")
+    subtasks: list[SubtaskDraft] = Field(min_length=1)
+
+
+class FactorDraft(BaseModel):
+    model_config = _F
+    id: str = Field(description="snake_case factor id, unique in the task, e.g. 'toy_on_floor'")
+    question: str = Field(description="the query about the environment, e.g. 'Is there a toy on the floor?'")
+    values: dict[str, Condition] = Field(
+        min_length=2,
+        description="response -> condition; responses mutually exclusive and exhaustive",
+    )
+
+
+class FactorsReply(BaseModel):
+    """Uncertain environment factors that change how one subtask must be executed."""
+
+    model_config = _F
+    subtask: str
+    factors: list[FactorDraft] = Field(default_factory=list)
+
+
+class PlanLeaf(BaseModel):
+    model_config = _F
+    plan: list[str] = Field(description="the agent's steps in this situation")
+    goal: Condition = Field(default="true", description="condition that must hold after the plan")
+
+
+class QueryNode(BaseModel):
+    model_config = _F
+    var: str = Field(description="the factor id this query asks about")
+    query: str = Field(default="", description="the query text")
+    branches: dict[str, TreeDraft] = Field(min_length=1, description="response -> subtree")
+
+
+TreeDraft = Annotated[Union[QueryNode, PlanLeaf], Field(union_mode="smart")]  # noqa: UP007
+QueryNode.model_rebuild()
+
+
+class TreeReply(BaseModel):
+    """A decision-tree-structured behaviour plan of one subtask (paper §3.1, JSON form)."""
+
+    model_config = _F
+    subtask: str
+    tree: TreeDraft
+
+
+class TrajectoryDraft(BaseModel):
+    model_config = _F
+    description: str = Field(default="", description="the situation in words")
+    facts: list[Condition] = Field(description="conditions that hold initially in this situation")
+
+
+class TrajectoriesReply(BaseModel):
+    """Logical trajectories straight from the description (the no-DBP ablation, IFG intents)."""
+
+    model_config = _F
+    trajectories: list[TrajectoryDraft] = Field(min_length=1)
+
+
+# --- environment construction (paper §3.3) ----------------------------------------------------
+
+Wall = Literal["n", "s", "e", "w"]
+
+
+class DoorDraft(BaseModel):
+    model_config = _F
+    to: str = Field(description="a room id or 'exterior'")
+    type: Literal["door", "doorway", "sliding"] = "door"
+    width: float = Field(default=0.9, ge=0.6, le=2.0)
+    state: Literal["open", "closed"] = "closed"
+
+
+class WindowDraft(BaseModel):
+    model_config = _F
+    wall: Wall
+    width: float = Field(default=1.2, ge=0.3, le=3.0)
+    height: float = Field(default=1.2, ge=0.3, le=2.2)
+    sill: float = Field(default=0.9, ge=0.1, le=1.5)
+    state: Literal["open", "closed"] = "closed"
+
+
+class RoomDraft(BaseModel):
+    model_config = _F
+    id: str
+    type: str = Field(description="room type, e.g. LivingRoom, Kitchen, Bedroom, Bathroom, Study")
+    area_m2: float = Field(ge=3.0, le=80.0)
+    adjacent_to: list[str] = Field(default_factory=list)
+    doors: list[DoorDraft] = Field(default_factory=list)
+    windows: list[WindowDraft] = Field(default_factory=list)
+    floor_material: str = "wood"
+    wall_color: str = "white"
+
+
+class FloorPlanReply(BaseModel):
+    model_config = _F
+    rooms: list[RoomDraft] = Field(min_length=1)
+
+
+class ObjectDraft(BaseModel):
+    model_config = _F
+    id: str = Field(description="unique object id, e.g. 'sofa_1'")
+    category: str = Field(description="a catalog category name")
+    room: str
+    role: str | None = Field(default=None, description="the task role this object plays, if any")
+    placement: str = Field(description="'floor', 'wall', 'on:<object id>' or 'inside:<object id>'")
+    attributes: dict[str, str] = Field(default_factory=dict)
+    states: dict[str, bool] = Field(default_factory=dict)
+    description: str = ""
+
+
+class ObjectsReply(BaseModel):
+    model_config = _F
+    objects: list[ObjectDraft] = Field(min_length=1)
+
+
+class RelationDraft(BaseModel):
+    model_config = _F
+    type: str = Field(description="edge, center, wall_mounted, on, inside, near, far, above, "
+                      "in_front_of, side_of, center_aligned, face_to")
+    args: list[str] = Field(min_length=1, max_length=2, description="object ids")
+
+
+class RelationsReply(BaseModel):
+    model_config = _F
+    relations: list[RelationDraft] = Field(default_factory=list)
+
+
+class PlacedObject(ObjectDraft):
+    position: tuple[float, float, float] = Field(description="bounding-box centre x, y, z in metres (y up)")
+    size: tuple[float, float, float] = Field(description="extent along x, y, z in metres")
+    yaw: float = Field(default=0.0, description="rotation about y in degrees")
+
+
+class PlacementReply(BaseModel):
+    """Objects with coordinates chosen by the model itself (no solver): no-CAS, CoT, IFG."""
+
+    model_config = _F
+    objects: list[PlacedObject] = Field(min_length=1)
+    relations: list[RelationDraft] = Field(default_factory=list)
+
+
+class EnvironmentDraft(BaseModel):
+    model_config = _F
+    situation: str = Field(default="", description="the situation this environment tests")
+    rooms: list[RoomDraft] = Field(min_length=1)
+    objects: list[PlacedObject] = Field(min_length=1)
+    relations: list[RelationDraft] = Field(default_factory=list)
+
+
+class EnvironmentsReply(BaseModel):
+    """Several complete test environments (CoT) or one (IFG stage 2, Holodeck-like)."""
+
+    model_config = _F
+    reasoning: str = Field(default="", description="step-by-step reasoning about the situations")
+    environments: list[EnvironmentDraft] = Field(min_length=1)

@@ -1,0 +1,220 @@
+"""The OpenAI-compatible provider against a real loopback HTTP server with scripted replies."""
+
+from __future__ import annotations
+
+import json
+import logging
+import threading
+import time
+from collections.abc import Iterator
+from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from logicenveval.errors import CacheMissError, ModelConnectionError, ModelReplyError
+from logicenveval.llm.ask import ask
+from logicenveval.llm.registry import make_model, parse_model_args
+from logicenveval.llm.replies import DecomposeReply
+
+SECRET = "sk-test-SECRET-value-123"
+BRIEF = {"task": {"id": "t", "description": "Tidy the room.", "rooms": ["living_room"],
+                  "roles": {"toy": {"category": "toy", "attributes": {}}}}}
+VALID = {"reasoning": "r", "subtasks": [{"id": "tidy", "description": "tidy", "roles": ["toy"]}]}
+
+
+class Script:
+    """Replies served in order: (status, body, headers) or ("hang", seconds)."""
+
+    def __init__(self, steps: list[Any]) -> None:
+        self.steps = list(steps)
+        self.requests: list[dict[str, Any]] = []
+        self.headers: list[dict[str, str]] = []
+
+
+def _chat(content: str) -> tuple[int, str, dict[str, str]]:
+    body = {"choices": [{"message": {"role": "assistant", "content": content}}],
+            "usage": {"prompt_tokens": 10, "completion_tokens": 5}}
+    return 200, json.dumps(body), {}
+
+
+@pytest.fixture
+def server() -> Iterator[tuple[str, Script]]:
+    script = Script([])
+
+    class Handler(BaseHTTPRequestHandler):
+        def log_message(self, *args: Any) -> None:
+            pass
+
+        def do_GET(self) -> None:
+            self.send_response(200)
+            self.end_headers()
+            self.wfile.write(b'{"data": []}')
+
+        def do_POST(self) -> None:
+            length = int(self.headers.get("Content-Length", 0))
+            script.requests.append(json.loads(self.rfile.read(length)))
+            script.headers.append(dict(self.headers))
+            step = script.steps.pop(0) if script.steps else _chat(json.dumps(VALID))
+            if step[0] == "hang":
+                time.sleep(step[1])
+                return
+            status, body, headers = step
+            self.send_response(status)
+            for k, v in headers.items():
+                self.send_header(k, v)
+            self.send_header("Content-Type", "application/json")
+            self.end_headers()
+            self.wfile.write(body.encode())
+
+    httpd = ThreadingHTTPServer(("127.0.0.1", 0), Handler)
+    thread = threading.Thread(target=httpd.serve_forever, daemon=True)
+    thread.start()
+    try:
+        yield f"http://127.0.0.1:{httpd.server_address[1]}/v1", script
+    finally:
+        httpd.shutdown()
+        httpd.server_close()
+
+
+def _model(url: str, tmp_path: Path, **extra: Any) -> Any:
+    args = {"base_url": url, "api_key_env": "LEE_TEST_KEY", "backoff_base": 0.01, "backoff_max": 0.05,
+            "timeout": 2.0, **extra}
+    return make_model("openai:test-model", args, no_cache=True, run_dir=tmp_path / "run")
+
+
+@pytest.fixture(autouse=True)
+def _key(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv("LEE_TEST_KEY", SECRET)
+
+
+def test_valid_reply_and_schema_sent(server: tuple[str, Script], tmp_path: Path) -> None:
+    url, script = server
+    script.steps = [_chat(json.dumps(VALID))]
+    reply = ask(_model(url, tmp_path), "decompose_task", BRIEF, DecomposeReply)
+    assert reply.subtasks[0].id == "tidy"
+    sent = script.requests[0]
+    assert sent["model"] == "test-model"
+    assert sent["response_format"]["json_schema"]["schema"] == DecomposeReply.model_json_schema()
+    assert script.headers[0]["Authorization"] == f"Bearer {SECRET}"
+
+
+def test_fenced_json_is_extracted(server: tuple[str, Script], tmp_path: Path) -> None:
+    url, script = server
+    script.steps = [_chat("Sure! Here it is:\n```json\n" + json.dumps(VALID) + "\n```\nDone.")]
+    assert ask(_model(url, tmp_path), "decompose_task", BRIEF, DecomposeReply).subtasks[0].roles == ["toy"]
+
+
+def test_broken_json_then_valid_after_reask(server: tuple[str, Script], tmp_path: Path) -> None:
+    url, script = server
+    script.steps = [_chat('{"subtasks": [ {"id": "x",'), _chat(json.dumps(VALID))]
+    model = _model(url, tmp_path)
+    assert ask(model, "decompose_task", BRIEF, DecomposeReply).subtasks[0].id == "tidy"
+    assert len(script.requests) == 2
+    assert "invalid" in script.requests[1]["messages"][-1]["content"]
+    assert model.stats.reasks == 1
+
+
+def test_schema_violation_forever_raises_model_reply_error(server: tuple[str, Script], tmp_path: Path) -> None:
+    url, script = server
+    script.steps = [_chat('{"subtasks": "none"}')] * 3
+    with pytest.raises(ModelReplyError) as info:
+        ask(_model(url, tmp_path), "decompose_task", BRIEF, DecomposeReply, max_reasks=2)
+    text = str(info.value)
+    assert "decompose_task" in text and "test-model" in text and "subtasks" in text
+    saved = list((tmp_path / "run" / "llm_errors").glob("decompose_task-*.txt"))
+    assert saved and "none" in saved[0].read_text()
+
+
+def test_429_with_retry_after_then_success(server: tuple[str, Script], tmp_path: Path) -> None:
+    url, script = server
+    script.steps = [(429, '{"error": "slow down"}', {"Retry-After": "0.2"}), _chat(json.dumps(VALID))]
+    start = time.perf_counter()
+    model = _model(url, tmp_path, backoff_max=1.0)
+    ask(model, "decompose_task", BRIEF, DecomposeReply)
+    assert time.perf_counter() - start >= 0.2  # honoured Retry-After, not the tiny backoff
+    assert model.stats.retries == 1 and len(script.requests) == 2
+
+
+def test_500s_until_retry_budget_ends(server: tuple[str, Script], tmp_path: Path) -> None:
+    url, script = server
+    script.steps = [(500, "boom", {})] * 10
+    with pytest.raises(ModelConnectionError, match="3 time"):
+        ask(_model(url, tmp_path, max_retries=2), "decompose_task", BRIEF, DecomposeReply)
+    assert len(script.requests) == 3
+
+
+def test_hanging_server_times_out(server: tuple[str, Script], tmp_path: Path) -> None:
+    url, script = server
+    script.steps = [("hang", 1.5)] * 2
+    with pytest.raises(ModelConnectionError, match="timed out"):
+        ask(_model(url, tmp_path, timeout=0.3, max_retries=1), "decompose_task", BRIEF, DecomposeReply)
+
+
+def test_api_key_never_leaks(server: tuple[str, Script], tmp_path: Path, caplog: pytest.LogCaptureFixture) -> None:
+    url, script = server
+    script.steps = [(500, "boom", {})] * 5
+    caplog.set_level(logging.DEBUG)
+    model = _model(url, tmp_path, max_retries=1)
+    with pytest.raises(ModelConnectionError) as info:
+        ask(model, "decompose_task", BRIEF, DecomposeReply)
+    for text in (str(info.value), repr(model), caplog.text, json.dumps(model.stats.as_dict())):
+        assert SECRET not in text
+    assert all(SECRET not in json.dumps(r) for r in script.requests)
+
+
+def test_unreachable_server_preflight() -> None:
+    model = make_model("openai:x", "base_url=http://127.0.0.1:9/v1", no_cache=True)
+    with pytest.raises(ModelConnectionError, match="cannot reach http://127.0.0.1:9/v1"):
+        model.preflight()  # type: ignore[attr-defined]
+
+
+def test_cache_second_call_makes_no_request(server: tuple[str, Script], tmp_path: Path) -> None:
+    url, script = server
+    cache = tmp_path / "cache.sqlite"
+    args = {"base_url": url, "api_key_env": "LEE_TEST_KEY"}
+    first = make_model("openai:test-model", args, cache_path=cache)
+    ask(first, "decompose_task", BRIEF, DecomposeReply)
+    second = make_model("openai:test-model", args, cache_path=cache)
+    ask(second, "decompose_task", BRIEF, DecomposeReply)
+    assert len(script.requests) == 1
+    assert second.stats.cache_hits == 1 and second.stats.requests == 0  # type: ignore[attr-defined]
+    replay = make_model(f"replay:{cache}")
+    assert ask(replay, "decompose_task", BRIEF, DecomposeReply).subtasks[0].id == "tidy"
+    other = {"task": {**BRIEF["task"], "description": "Something else."}}
+    with pytest.raises(CacheMissError, match="'decompose_task'"):
+        ask(replay, "decompose_task", other, DecomposeReply)
+
+
+def _writer(path: str, start: int) -> None:
+    from logicenveval.llm.cache import ReplyCache
+
+    cache = ReplyCache(path)
+    for i in range(start, start + 200):
+        cache.put(f"k{i}", "p", "m", "kind", f"reply {i}")
+
+
+def test_concurrent_writers_lose_nothing(tmp_path: Path) -> None:
+    import multiprocessing
+
+    from logicenveval.llm.cache import ReplyCache
+
+    path = str(tmp_path / "c.sqlite")
+    ctx = multiprocessing.get_context("spawn")
+    procs = [ctx.Process(target=_writer, args=(path, k * 200)) for k in range(2)]
+    for p in procs:
+        p.start()
+    for p in procs:
+        p.join(60)
+        assert p.exitcode == 0
+    cache = ReplyCache(path)
+    assert len(cache) == 400
+    assert cache.get("k399") == "reply 399"
+
+
+def test_model_args_parsing() -> None:
+    assert parse_model_args("base_url=http://h:8000/v1, timeout=30,json_schema=false,x=1.5") == {
+        "base_url": "http://h:8000/v1", "timeout": 30, "json_schema": False, "x": 1.5}
+    with pytest.raises(Exception, match="not key=value"):
+        parse_model_args("oops")
