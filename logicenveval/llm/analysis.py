@@ -1,11 +1,14 @@
 """A small natural-language analyser of task descriptions (the offline model's reading).
 
-It reads only what an LLM would read (the brief: description, rooms, roles) and finds:
-sentences and clauses; conditional and uncertainty cues ("if", "unless", "in case", "depending
-on whether", "otherwise", "may", "if available", ...); mentions grounded to roles; and facts
-(on/inside/in_room/state/attr/exists) in the condition language. Facts in conditional or
-uncertain clauses become *factors* (uncertain environment variables with exclusive, exhaustive
-values), grouped by the role they test, which is what task decomposition and decision trees need.
+It reads only what an LLM would read (the brief: description, rooms, roles) and finds sentences
+and clauses; conditional and uncertainty cues ("if", "unless", "in case", "whether", "should
+there be", "otherwise", "may", "if available", ...); mentions grounded to roles (names, catalog
+categories and synonyms, colour words, pronouns resolved to the sentence topic); and facts in the
+condition language (on/inside/in_room/state/attr/exists). A fact is a *condition* when it
+describes the current situation (`if the bottle is empty`, `a toy lying on the floor`,
+`a dirty plate`) and a *goal* when it follows an action (`put it in the fridge`, `goes into the
+bin`). Conditions in conditional, uncertain or descriptive-modifier position become factors —
+uncertain variables with exclusive, exhaustive values — grouped into independent subtasks.
 """
 
 from __future__ import annotations
@@ -23,52 +26,61 @@ STATE_WORDS: dict[str, tuple[str, bool]] = {
     "open": ("open", True), "opened": ("open", True), "ajar": ("open", True),
     "closed": ("open", False), "shut": ("open", False),
     "on": ("toggled_on", True), "lit": ("toggled_on", True), "running": ("toggled_on", True),
-    "off": ("toggled_on", False),
+    "burning": ("toggled_on", True), "off": ("toggled_on", False),
     "dirty": ("dirty", True), "stained": ("dirty", True), "messy": ("dirty", True),
     "dusty": ("dirty", True), "muddy": ("dirty", True), "greasy": ("dirty", True),
-    "clean": ("dirty", False), "spotless": ("dirty", False),
-    "wet": ("wet", True), "damp": ("wet", True), "soaked": ("wet", True), "dry": ("wet", False),
+    "sticky": ("dirty", True), "used": ("dirty", True), "clean": ("dirty", False),
+    "spotless": ("dirty", False), "wet": ("wet", True), "damp": ("wet", True),
+    "soaked": ("wet", True), "soggy": ("wet", True), "dry": ("wet", False),
     "full": ("filled", True), "filled": ("filled", True), "empty": ("filled", False),
     "cooked": ("cooked", True), "raw": ("cooked", False), "sliced": ("sliced", True),
     "broken": ("broken", True), "cracked": ("broken", True),
 }
-LINKING = frozenset(
-    ["is", "are", "was", "were", "be", "been", "being", "seem", "seems", "look", "looks", "appear", "appears", "get", "gets", "got", "left", "still", "already", "currently", "the", "a", "an", "it", "they", "them", "there", "some", "any", "lying", "sitting", "standing", "kept", "placed", "put", "sit", "lie", "lies", "stand", "stands", "remain", "remains", "turned", "switched"]
+#: words between a subject and its predicate that describe a current situation
+DESCRIPTIVE = frozenset(
+    ["is", "are", "was", "were", "be", "been", "being", "am", "seem", "seems", "seemed", "look", "looks", "appear", "appears", "still", "already", "currently", "left", "lying", "lie", "lies", "sitting", "sit", "sits", "standing", "stand", "stands", "kept", "found", "dropped", "fallen", "ended", "up", "have", "has", "had", "got", "gotten", "remain", "remains", "remained", "now", "itself", "themselves", "just", "somehow", "accidentally", "again", "there", "here", "turned", "switched", "scattered", "sitting", "lays", "may", "might", "could", "possibly", "perhaps", "maybe", "probably", "sometimes", "will"]
 )
-NEGATIONS = frozenset({"not", "no", "none", "never", "without", "nothing", "nobody"})
+#: verbs after a subject that announce where it must go (a goal, not a condition)
+MOTION = frozenset(
+    ["go", "goes", "going", "belong", "belongs", "should", "must", "needs", "need", "get", "gets", "gotten", "be", "put", "placed", "hung", "moved", "returned", "stored", "back", "brought", "taken", "carried"]
+)
+#: action verbs before an object: a location after the object is a goal
+ACTIONS = frozenset(
+    ["put", "place", "move", "take", "bring", "return", "carry", "drop", "set", "lay", "stand", "hang", "throw", "toss", "tuck", "store", "stow", "leave", "fold", "bin", "transfer", "slide", "shove", "push", "pour", "empty", "fill", "refill", "sort", "give"]
+)
+ARTICLES = frozenset({"the", "a", "an", "any", "some", "one", "of", "its", "their", "this", "that",
+                      "these", "those", "every", "each", "your", "my", "our"})
+PARTS = frozenset({"door", "lid", "leaf", "screen", "soil", "surface", "top", "inside", "water",
+                   "content", "bottom", "side", "handle", "shelf", "drawer", "bag", "glass"})
+PRONOUNS = frozenset({"it", "they", "them", "itself", "themselves", "one", "ones", "its", "their"})
+NEGATIONS = frozenset({"not", "no", "none", "never", "without", "nothing", "nobody", "nowhere"})
 UNCERTAIN = frozenset({"may", "might", "possibly", "perhaps", "maybe", "could", "sometimes",
-                       "occasionally", "potentially", "probably"})
-CONDITIONAL = ("depending on whether", "depending on if", "in case", "only if", "if not",
-               "if so", "if", "unless", "whenever", "when", "should there be", "should")
-ELSE_CUES = ("otherwise", "else", "if not", "if there isn't", "if there aren't", "failing that")
+                       "occasionally", "potentially", "probably", "likely"})
+CONDITIONAL = ("depending on whether", "depending on if", "in case", "as long as", "provided that",
+               "only if", "if not", "if so", "whether", "if", "unless", "whenever", "when",
+               "should there be", "should")
+ELSE_CUES = ("otherwise", "else", "failing that", "if not", "if there is not", "if there are not")
+ELSEWHERE = ("anywhere else", "elsewhere", "somewhere else", "any other place", "not there")
 AVAILABILITY = frozenset({"available", "any", "present", "possible", "exist", "exists", "there"})
 PREP_ON = frozenset({"on", "onto", "atop", "upon"})
 PREP_IN = frozenset({"in", "inside", "into", "within"})
-VERB_GOALS = {
-    "clean": ("dirty", False), "wipe": ("dirty", False), "mop": ("dirty", False),
-    "scrub": ("dirty", False), "wash": ("dirty", False), "dust": ("dirty", False),
-    "close": ("open", False), "shut": ("open", False), "open": ("open", True),
-    "fill": ("filled", True), "refill": ("filled", True), "dry": ("wet", False),
-}
+SCENE_START = re.compile(r"^\W*(there (is|are)\b(?! (no|not|maybe|possibly))|you are\b|we are\b)", re.I)
 
-_SENT = re.compile(r"(?<=[.!?;])\s+|\n+")
+_CONTRACTIONS = [
+    (r"\b(it|that|there|what|he|she)'s\b", r"\1 is"), (r"\b(they|we|you)'re\b", r"\1 are"),
+    (r"\bcan't\b", "can not"), (r"\bwon't\b", "will not"), (r"n't\b", " not"),
+    (r"\b(i|you|we|they)'ve\b", r"\1 have"), (r"\b(i|you|we|they|it)'ll\b", r"\1 will"),
+    (r"\b(\w+)s'(\s)", r"\1s\2"), (r"\b(\w+)'s\b", r"\1"),
+]
+_SENT = re.compile(r"(?<=[.!?;])\s+|\n+|(?<=\))\s+(?=[A-Z])")
 _ABBREV = re.compile(r"\b(e\.g|i\.e|etc|approx|vs)\.", re.I)
 
 
-def _joined(words: list[str], a: Mention, b: Mention) -> bool:
-    """Mentions `a` and `b` are items of one list (`a book or a toy`, `cups, plates and bowls`)."""
-    between = words[a.end : b.start]
-    return len(between) <= 3 and any(w in {"or", "and"} for w in between) and all(
-        w in {"or", "and", "a", "an", "the", "some", "any", "either"} for w in between
-    )
-
-
-def _uncertain(text: str) -> bool:
-    return any(w in UNCERTAIN for w in re.findall(r"[a-z]+", text.lower()))
-
-
-def _is_negation(word: str) -> bool:
-    return word in NEGATIONS or word.endswith("n't")
+def _expand(text: str) -> str:
+    out = text.replace("\u2019", "'")
+    for pat, repl in _CONTRACTIONS:
+        out = re.sub(pat, repl, out, flags=re.I)
+    return out
 
 
 @dataclass(frozen=True)
@@ -78,16 +90,18 @@ class Fact:
     subject: str
     condition: str  # positive form, condition language
     kind: str  # "location" | "state" | "attr" | "exists"
-    key: str = ""  # attribute key for attr facts
+    key: str = ""  # attribute key, state flag, or location target
     negated: bool = False
+    goal: bool = False  # where something must end up (not a condition on the initial state)
+    modifier: bool = False  # described as a noun modifier ("a toy lying on the floor")
 
 
 @dataclass(frozen=True)
 class Clause:
     text: str
     sentence: int
-    cue: str | None  # conditional/uncertainty cue that governs it
-    role: str  # "condition" | "consequence" | "else" | "uncertain" | "statement"
+    cue: str | None
+    role: str  # "condition" | "consequence" | "else" | "uncertain" | "statement" | "scene"
     facts: tuple[Fact, ...]
     mentions: tuple[str, ...]
 
@@ -100,8 +114,10 @@ class Factor:
     values: dict[str, str]
     kind: str
     order: int
-    consequences: list[str] = field(default_factory=list)  # texts of dependent clauses
-    roles: set[str] = field(default_factory=set)  # roles of the consequences
+    sentence: int = -1
+    clause: int = -1
+    consequences: list[str] = field(default_factory=list)
+    roles: set[str] = field(default_factory=set)
 
 
 @dataclass
@@ -109,9 +125,9 @@ class TaskAnalysis:
     sentences: list[str]
     clauses: list[Clause]
     factors: list[Factor]
-    groups: list[list[str]]  # factor ids per subtask (independent groups)
+    groups: list[list[str]]  # factor ids per independent subtask
     group_roles: list[set[str]]
-    other_roles: set[str]  # roles in no group
+    other_roles: set[str]
 
 
 def _sentences(text: str) -> list[str]:
@@ -120,177 +136,272 @@ def _sentences(text: str) -> list[str]:
     return [p for p in parts if p]
 
 
-def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
-    """(text, cue, role) pieces: a conditional part, its consequence, or a plain statement."""
-    low = sentence.lower()
-    pieces: list[tuple[str, str | None, str]] = []
-    for cue in ELSE_CUES:
-        if re.match(rf"^\W*{re.escape(cue)}\b", low):
-            rest = sentence[re.match(rf"^\W*{re.escape(cue)}\b", low).end():]  # type: ignore[union-attr]
-            if cue.startswith("if there"):
-                return [(sentence, cue, "else_condition")]
-            return [(rest.strip(" ,"), cue, "else")]
+def _first_cue(low: str, cues: tuple[str, ...]) -> tuple[int, str] | None:
     best: tuple[int, str] | None = None
-    for cue in CONDITIONAL:
-        m = re.search(rf"\b{re.escape(cue)}\b", low)
-        if m and (best is None or m.start() < best[0]):
-            best = (m.start(), cue)
+    for cue in cues:
+        pattern = rf"(?<![a-z]){re.escape(cue)}\b"
+        if cue == "should":  # only the inverted conditional: "should the hamper be full, ..."
+            pattern = r"(?:^|[,;:(-]\s*|\b(?:and|or|but)\s+)should\b(?=\s+(?:the|there|a|an|it|they|any|one|your)\b)"
+        m = re.search(pattern, low)
+        if m is None:
+            continue
+        start = m.end() - len(cue)
+        if best is None or start < best[0] or (start == best[0] and len(cue) > len(best[1])):
+            best = (start, cue)
+    return best
+
+
+def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
+    """(text, cue, role) pieces of a sentence, recursively for chained conditionals."""
+    low = sentence.lower()
+    for cue in ELSE_CUES:
+        m = re.match(rf"^\W*{re.escape(cue)}\b", low)
+        if m:
+            if cue.startswith("if there"):
+                return [(sentence, cue, "condition")]
+            return [(sentence[m.end():].strip(" ,"), cue, "else")]
+    best = _first_cue(low, CONDITIONAL)
     if best is None:
-        return [(part, None, "uncertain" if _uncertain(part) else "statement")
-                for part in re.split(r",\s*(?:and|but|while)\s+|\s+but\s+", sentence) if part.strip()]
+        parts: list[str] = [str(p) for p in re.split(
+            r",\s*(?:and|but|while)\s+|\s+but\s+|;\s*|:\s+|\s+-\s+|\s+while\s+", sentence) if p and p.strip()]
+        out: list[tuple[str, str | None, str]] = []
+        for p in parts:
+            if SCENE_START.match(p) or re.search(r"\b(has|have|contains)\b", p.lower()) and not re.search(
+                    r"\b(may|might|if)\b", p.lower()):
+                out.append((p, None, "scene"))
+            else:
+                out.append((p, None, "uncertain" if any(w in UNCERTAIN for w in re.findall(r"[a-z]+", p.lower()))
+                            else "statement"))
+        return out
     start, cue = best
     after = re.match(r"\W*([a-z' ]{0,30}?)\W*$", low[start + len(cue):])
-    if cue == "if" and after and set(after.group(1).split()) & AVAILABILITY:
+    if cue == "if" and after and set(after.group(1).split()) & AVAILABILITY and len(after.group(1).split()) <= 3:
         return [(sentence, "if available", "uncertain")]
-    if cue == "when" and re.search(r"\bwhen (you|you're|you are|done|finished)\b", low):
-        return [(sentence, None, "statement")]
-    head = sentence[:start].strip(" ,")
+    head = sentence[:start].strip(" ,-")
     tail = sentence[start + len(cue):]
-    if start < 3 or not head:  # "If C, then A" / "If C A"
-        m = re.search(r",\s*(then\s+)?|\bthen\b", tail)
-        cond, cons = (tail[: m.start()], tail[m.end():]) if m else (tail, "")
-        pieces.append((cond, cue, "condition"))
-        if cons.strip():
-            pieces.append((cons, cue, "consequence"))
-    else:  # "Do A if C" / "A, otherwise B"
-        other = re.search(r"[,;]?\s*\b(otherwise|else)\b", tail)
+    pieces: list[tuple[str, str | None, str]] = []
+    if head:
+        pieces += _split_clauses(head) if _first_cue(head.lower(), CONDITIONAL) else [(head, cue, "consequence")]
+        if pieces and pieces[-1][2] in ("statement", "scene"):
+            pieces[-1] = (pieces[-1][0], cue, "consequence")
+    m = re.search(r",\s*(then\s+)?|\bthen\b|\s+-\s+|:\s*", tail)
+    if head and not (m and re.match(r"\s*(then\b|,\s*[a-z]+ (it|them)\b)", tail[m.start():].lower())):
+        other = re.search(r"[,;]?\s*\b(otherwise|else|or else|instead)\b", tail)
         cond = tail[: other.start()] if other else tail
-        pieces.append((head, cue, "consequence"))
-        pieces.append((cond, cue, "condition"))
+        nested = _first_cue(cond.lower()[1:], CONDITIONAL)
+        if nested:
+            cut = nested[0] + 1
+            pieces.append((cond[:cut], cue, "condition"))
+            pieces += _split_clauses(cond[cut:])
+        else:
+            pieces.append((cond, cue, "condition"))
         if other:
             pieces.append((tail[other.end():], "otherwise", "else"))
+        return pieces
+    cond, cons = (tail[: m.start()], tail[m.end():]) if m else (tail, "")
+    pieces.append((cond, cue, "condition"))
+    if cons.strip():
+        rest = _split_clauses(cons)
+        pieces += [(t, c or cue, "consequence" if r in ("statement", "scene") else r) for t, c, r in rest]
     return pieces
 
 
-class _Extractor:
+def _joined(words: list[str], a: Mention, b: Mention) -> bool:
+    """Mentions `a` and `b` are items of one list (`a book or a toy`, `cups, plates and bowls`)."""
+    between = words[a.end : b.start]
+    return len(between) <= 3 and any(w in {"or", "and"} for w in between) and all(
+        w in {"or", "and", "a", "an", "the", "some", "any", "either"} for w in between
+    )
+
+
+def _negation(word: str) -> bool:
+    return word in NEGATIONS
+
+
+class _Reader:
+    """Extracts facts clause by clause, remembering topics for pronouns."""
+
     def __init__(self, lex: Lexicon) -> None:
         self.lex = lex
-        self.attr_mentions: dict[tuple[str, str], list[str]] = {}
+        self.topic: tuple[str, ...] = ()
+        self.prev_topic: tuple[str, ...] = ()
+        self.topic_kind = "role"
+        self.prev_topic_kind = "role"
+        self.last_location: dict[str, Fact] = {}
 
-    def facts(self, text: str) -> tuple[tuple[Fact, ...], tuple[str, ...]]:
-        toks = tokens(text)
-        words = [t[0] for t in toks]
-        mentions = self.lex.find_mentions(toks)
-        facts: list[Fact] = []
-        negated = any(_is_negation(w) for w in words)
-        role_mentions = [m for m in mentions if m.kind == "role"]
-        for idx, m in enumerate(mentions):
-            if m.kind != "role":
+    def new_sentence(self) -> None:
+        if self.topic:
+            self.prev_topic, self.prev_topic_kind = self.topic, self.topic_kind
+        self.topic = ()
+
+    def mentions(self, words: list[str], toks: list[tuple[str, int, int]]) -> list[Mention]:
+        found = self.lex.find_mentions(toks)
+        covered = {i for m in found for i in range(m.start, m.end)}
+        for i, w in enumerate(words):
+            if i in covered or w not in PRONOUNS:
                 continue
-            subjects = self._coordinated(words, mentions, idx)
-            facts += self._location(words, mentions, idx, subjects, negated)
+            if w in ("one", "ones") and not (i > 0 and (words[i - 1] in STATE_WORDS or words[i - 1] in
+                                                          COLOR_WORDS or words[i - 1] in {"is", "a", "the"})):
+                continue
+            ref, kind = (self.topic, self.topic_kind) if self.topic else (self.prev_topic, self.prev_topic_kind)
+            if ref:
+                found.append(Mention(ref, i, i + 1, "pronoun" if kind == "role" else "floor"))
+        found.sort(key=lambda m: m.start)
+        if not self.topic:
+            first = next((m for m in found if m.kind in ("role", "floor", "pronoun")), None)
+            if first is not None:
+                self.topic = first.roles
+                self.topic_kind = "role" if first.kind == "pronoun" else first.kind
+        return found
+
+    def facts(self, text: str) -> tuple[list[Fact], tuple[str, ...]]:
+        toks = tokens(_expand(text))
+        words = [t[0] for t in toks]
+        mentions = self.mentions(words, toks)
+        subjects = [m for m in mentions if m.kind in ("role", "pronoun")]
+        negated = any(_negation(w) for w in words)
+        facts: list[Fact] = []
+        for idx, m in enumerate(mentions):
+            if m.kind not in ("role", "pronoun"):
+                continue
+            facts += self._location(words, mentions, idx, negated)
             facts += self._state(words, m, negated)
             facts += self._attribute(words, m, negated)
-        if not facts and negated and role_mentions:
-            facts += [Fact(r, f"exists({r})", "exists", negated=True) for r in role_mentions[0].roles]
-        unique = list(dict.fromkeys(facts))
-        names = tuple(dict.fromkeys(r for m in role_mentions for r in m.roles))
-        return tuple(unique), names
+        if any(p in " ".join(words) for p in ELSEWHERE) and subjects:
+            for r in subjects[0].roles:
+                if r in self.last_location:
+                    base = self.last_location[r]
+                    facts.append(Fact(r, base.condition, "location", base.key, negated=True))
+        if not [f for f in facts if not f.goal] and subjects and (
+                negated and ("there" in words or "any" in words) or "there" in words and "is" in words[:3]):
+            for r in subjects[0].roles:
+                facts.append(Fact(r, f"exists({r})", "exists", negated=negated))
+        for f in facts:
+            if f.kind == "location":
+                self.last_location[f.subject] = f
+        names = tuple(dict.fromkeys(r for m in subjects for r in m.roles))
+        return list(dict.fromkeys(facts)), names
 
-    def _coordinated(self, words: list[str], mentions: list[Mention], idx: int) -> list[str]:
-        """`a book or a toy on the floor`: the location phrase applies to every listed subject."""
+    def _subjects(self, words: list[str], mentions: list[Mention], idx: int) -> list[str]:
         group = [idx]
         j = idx - 1
-        while j >= 0 and mentions[j].kind == "role" and _joined(words, mentions[j], mentions[j + 1]):
+        while j >= 0 and mentions[j].kind in ("role", "pronoun") and _joined(words, mentions[j], mentions[j + 1]):
             group.insert(0, j)
             j -= 1
         return [r for g in group for r in mentions[g].roles]
 
-    def _location(self, words: list[str], mentions: list[Mention], idx: int, subjects: list[str],
-                  negated: bool) -> list[Fact]:
+    def _is_goal(self, words: list[str], m: Mention, skipped: list[str]) -> bool:
+        before = words[max(0, m.start - 4) : m.start]
+        return bool(set(skipped) & MOTION) or any(w in ACTIONS for w in before)
+
+    def _location(self, words: list[str], mentions: list[Mention], idx: int, negated: bool) -> list[Fact]:
         m = mentions[idx]
-        if idx + 1 < len(mentions) and mentions[idx + 1].kind == "role" and _joined(words, m, mentions[idx + 1]):
-            return []  # part of a coordinated list; the last item carries the location
+        if idx + 1 < len(mentions) and mentions[idx + 1].kind in ("role", "pronoun") and _joined(
+                words, m, mentions[idx + 1]):
+            return []  # the last item of a list carries the location
         k = m.end
-        while k < len(words) and words[k] in LINKING | NEGATIONS | {"top", "of", "still"} - PREP_ON - PREP_IN:
+        skipped: list[str] = []
+        while k < len(words) and (words[k] in DESCRIPTIVE | MOTION | NEGATIONS | PARTS | {"top", "of", "straight"}
+                                  ) and words[k] not in PREP_ON | PREP_IN:
+            skipped.append(words[k])
             k += 1
         if k >= len(words) or words[k] not in PREP_ON | PREP_IN:
             return []
-        prep = words[k]
-        if prep == "on" and k + 2 < len(words) and words[k + 1] == "top" and words[k + 2] == "of":
-            k += 2
-        target = next((t for t in mentions if t.start > k), None)
-        if target is None or target.start - k > 3 or any(w in {",", "and"} for w in words[k + 1: target.start]):
-            return []
-        out = []
-        for s in dict.fromkeys(subjects):
-            for t in target.roles:
-                if t == s:
-                    continue
-                if target.kind == "room":
-                    cond, kind = f"in_room({s}, {t})", "location"
-                elif prep in PREP_ON or t == "floor":
-                    cond, kind = f"on({s}, {t})", "location"
-                else:
-                    cond, kind = f"inside({s}, {t})", "location"
-                out.append(Fact(s, cond, kind, negated=negated))
+        goal = self._is_goal(words, m, skipped)
+        modifier = not goal and (not skipped or bool(set(skipped) - {"is", "are", "be", "still", "already"}))
+        subjects = self._subjects(words, mentions, idx)
+        out: list[Fact] = []
+        while k < len(words) and words[k] in PREP_ON | PREP_IN:
+            prep = words[k]
+            if prep == "on" and words[k + 1 : k + 3] == ["top", "of"]:
+                k += 2
+            target = next((t for t in mentions if t.start > k and t.kind in ("role", "room", "floor")), None)
+            if target is None or target.start - k > 3:
+                break
+            for s in dict.fromkeys(subjects):
+                for t in target.roles:
+                    if t == s:
+                        continue
+                    if target.kind == "room":
+                        cond = f"in_room({s}, {t})"
+                    elif prep in PREP_ON or t == "floor":
+                        cond = f"on({s}, {t})"
+                    else:
+                        cond = f"inside({s}, {t})"
+                    out.append(Fact(s, cond, "location", t, negated=negated and not goal, goal=goal,
+                                    modifier=modifier))
+            k = target.end
+            while k < len(words) and words[k] in {"or", "and", "either", "the", "a"}:
+                k += 1
         return out
 
     def _state(self, words: list[str], m: Mention, negated: bool) -> list[Fact]:
-        out = []
-        window: list[str] = []
         k = m.end
-        while k < len(words) and len(window) < 4 and (words[k] in LINKING or _is_negation(words[k])):
-            window.append(words[k])
+        skipped: list[str] = []
+        while k < len(words) and len(skipped) < 5 and (words[k] in DESCRIPTIVE | PARTS | NEGATIONS
+                                                       | {"but", "and"}):
+            skipped.append(words[k])
             k += 1
-        after = words[k] if k < len(words) else ""
-        before = words[m.start - 1] if m.start > 0 else ""
-        for word in (after, before):
-            if word in STATE_WORDS and not (word == "on" and word == after and k + 1 < len(words)
-                                            and words[k + 1] not in {",", "and", "or", ""}
-                                            and self._is_place_after(words, k)):
-                flag, pol = STATE_WORDS[word]
-                if word in {"on", "off"} and word != after:
-                    continue
-                for r in m.roles:
-                    out.append(Fact(r, f"state({r}, {flag})", "state", negated=negated != (not pol)))
-                break
+        found: list[tuple[str, bool, bool]] = []  # (word, polarity-negated, modifier)
+        local_neg = any(_negation(w) for w in skipped)
+        while k < len(words) and words[k] in STATE_WORDS:
+            w = words[k]
+            if w in ("on", "off") and k + 1 < len(words) and words[k + 1] in ARTICLES | PRONOUNS | {"floor"}:
+                break  # `on the table` is a place, not `switched on`
+            found.append((w, local_neg, False))
+            k += 1
+            while k < len(words) and words[k] in {"and", "but", "or", ","}:
+                k += 1
+        j = m.start - 1
+        while j >= 0 and words[j] in set(STATE_WORDS) | {"and", "but"} and words[j] not in ("on", "off"):
+            if words[j] in STATE_WORDS:
+                found.append((words[j], False, True))
+            j -= 1
+        out = []
+        for w, neg, modifier in found:
+            flag, pol = STATE_WORDS[w]
+            for r in m.roles:
+                out.append(Fact(r, f"state({r}, {flag})", "state", flag, negated=neg != (not pol),
+                                modifier=modifier))
         return out
 
-    def _is_place_after(self, words: list[str], k: int) -> bool:
-        """`on` followed by a noun phrase is a preposition, not 'switched on'."""
-        rest = words[k + 1 : k + 3]
-        return bool(rest) and rest[0] in {"the", "a", "an", "top", "floor", "it", "its", "their"}
-
     def _attribute(self, words: list[str], m: Mention, negated: bool) -> list[Fact]:
-        out = []
         k = m.end
-        while k < len(words) and words[k] in LINKING | {"made", "of", "kind", "type", "sort"}:
+        while k < len(words) and words[k] in DESCRIPTIVE | {"made", "of", "kind", "type", "sort", "a", "an"}:
             k += 1
-        candidates = words[k : k + 2] if k < len(words) else []
+        after = words[k : k + 1]
         before = words[max(0, m.start - 1) : m.start]
         fixed = {v for attrs in self.lex.fixed.values() for v in attrs.values()}
-        for w in [*candidates, *before]:
+        out = []
+        for w in [*after, *before]:
+            if w in fixed:
+                continue
             for r in m.roles:
-                if w in fixed:
-                    continue
                 hit = self.lex.attribute_of(r, w)
                 if hit is not None:
                     key, value = hit
-                    out.append(Fact(r, f"attr({r}, {key}, {value})", "attr", key=key, negated=negated))
+                    out.append(Fact(r, f"attr({r}, {key}, {value})", "attr", key,
+                                    negated=negated and bool(after) and w == after[0]))
         return out
 
     def attribute_classes(self, text: str) -> dict[tuple[str, str], list[str]]:
-        """Attribute values used as classes (`a red box for dolls`, `novels go on the top shelf`).
-
-        A value word of a role's category domain that is not part of a mention and not a fixed
-        attribute of a nearby role is evidence that the task distinguishes objects by it.
-        """
-        toks = tokens(text)
+        """Attribute values used as classes (`a red box for dolls`, `novels go on shelf one`)."""
+        toks = tokens(_expand(text))
         words = [t[0] for t in toks]
         mentions = self.lex.find_mentions(toks)
         covered = {i for mm in mentions for i in range(mm.start, mm.end)}
-        fixed_words = {v for attrs in self.lex.fixed.values() for v in attrs.values()}
+        fixed = {v for attrs in self.lex.fixed.values() for v in attrs.values()}
         found: dict[tuple[str, str], list[str]] = {}
         for i, w in enumerate(words):
-            if i in covered or w in fixed_words:
+            if w in fixed or (i in covered and not any(
+                    m.start == i and m.end - m.start > 1 for m in mentions)):
                 continue
             for role in self.lex.roles:
                 hit = self.lex.attribute_of(role, w)
                 if hit is None:
                     continue
                 if w in COLOR_WORDS:
-                    near = [mm for mm in mentions if 0 <= mm.start - i <= 2]
+                    near = [mm for mm in mentions if 0 < mm.start - i <= 2]
                     if not near or role not in near[0].roles:
                         continue  # a colour word only describes the object it precedes
                 values = found.setdefault((role, hit[0]), [])
@@ -299,126 +410,149 @@ class _Extractor:
         return found
 
 
-def _factor_id(fact: Fact) -> str:
-    inner = fact.condition[fact.condition.index("(") + 1 : -1].split(", ")
-    if fact.kind == "attr":
-        return f"{fact.subject}_{fact.key}"
-    if fact.kind == "state":
-        return f"{fact.subject}_{inner[1]}"
-    if fact.kind == "exists":
-        return f"{fact.subject}_present"
-    pred = fact.condition.split("(")[0]
-    return f"{fact.subject}_{pred}_{inner[1]}"
+_RANK = {"exists": 0, "location": 1, "state": 2, "attr": 3}
 
 
-def _question(fact: Fact) -> str:
-    s = fact.subject.replace("_", " ")
-    inner = fact.condition[fact.condition.index("(") + 1 : -1].split(", ")
-    if fact.kind == "exists":
+def _question(subject: str, kind: str, key: str, targets: list[str]) -> str:
+    s = subject.replace("_", " ")
+    if kind == "exists":
         return f"Is there a {s}?"
-    if fact.kind == "state":
-        return f"Is the {s} {inner[1].replace('_', ' ')}?"
-    if fact.kind == "attr":
-        return f"What is the {fact.key} of the {s}?"
-    pred = fact.condition.split("(")[0].replace("_", " ")
-    return f"Is the {s} {pred} the {inner[1].replace('_', ' ')}?"
+    if kind == "state":
+        return f"Is the {s} {key.replace('_', ' ')}?"
+    if kind == "attr":
+        return f"What is the {key} of the {s}?"
+    return f"Where is the {s}: " + ", ".join(t.replace("_", " ") for t in targets) + " or elsewhere?"
 
 
 def analyse(brief: Mapping[str, Any], catalog: Catalog | None = None) -> TaskAnalysis:
     """Analyse a task brief (`id`, `description`, `rooms`, `roles`)."""
     lex = Lexicon.build(brief, catalog or load_catalog())
-    ex = _Extractor(lex)
+    reader = _Reader(lex)
     sentences = _sentences(str(brief["description"]))
     clauses: list[Clause] = []
     for si, sent in enumerate(sentences):
+        reader.new_sentence()
         for text, cue, role in _split_clauses(sent):
-            facts, names = ex.facts(text)
-            clauses.append(Clause(text, si, cue, role, facts, names))
-    factors: dict[str, Factor] = {}
-    last: Factor | None = None
+            facts, names = reader.facts(text)
+            clauses.append(Clause(text, si, cue, role, tuple(facts), names))
 
-    def add(fact: Fact, order: int) -> Factor:
-        fid = _factor_id(fact)
-        if fid not in factors:
-            values = ({"yes": fact.condition, "no": f"not {fact.condition}"} if fact.kind != "attr"
-                      else {})
-            factors[fid] = Factor(fid, fact.subject, _question(fact), values, fact.kind, order)
-        return factors[fid]
-
-    attr_values: dict[tuple[str, str], list[str]] = {}
+    # collect condition facts per (subject, kind, key)
+    found: dict[tuple[str, str, str], dict[str, Any]] = {}
+    last_key: tuple[str, str, str] | None = None
+    slot: tuple[str, str, str]
     for ci, cl in enumerate(clauses):
-        if cl.role in ("condition", "uncertain", "else_condition"):
-            for fact in cl.facts:
-                f = add(fact, ci)
-                if fact.kind == "attr":
-                    vals = attr_values.setdefault((fact.subject, fact.key), [])
-                    value = fact.condition.rsplit(", ", 1)[1][:-1]
-                    if value not in vals:
-                        vals.append(value)
-                last = f
-        elif cl.role in ("consequence", "else") and last is not None:
-            last.consequences.append(cl.text)
-            last.roles |= set(cl.mentions)
-    for (role, key), values in ex.attribute_classes(str(brief["description"])).items():
-        vals = attr_values.setdefault((role, key), [])
-        vals += [v for v in values if v not in vals]
-        add(Fact(role, f"attr({role}, {key}, {values[0]})", "attr", key=key), len(clauses))
-    for (role, key), values in attr_values.items():
-        fid = f"{role}_{key}"
-        real = [v for v in values if v != "other"]
-        domain = {v: f"attr({role}, {key}, {v})" for v in real}
-        domain["other"] = " and ".join(f"not attr({role}, {key}, {v})" for v in real)
-        factors[fid].values = domain
-    _drop_redundant_existence(factors)
-    ordered = sorted(factors.values(), key=lambda f: (f.order, f.id))
-    groups, group_roles = _group(ordered)
-    mentioned = {r for cl in clauses for r in cl.mentions}
+        conditional = cl.role in ("condition", "uncertain")
+        for f in cl.facts:
+            if f.goal or not (conditional or (f.modifier and cl.role not in ("scene",))
+                              or (cl.role == "else" and f.kind != "location")):
+                continue
+            slot = (f.subject, f.kind, f.key if f.kind in ("state", "attr") else "")
+            entry = found.setdefault(slot, {"order": ci, "sentence": cl.sentence, "clause": ci,
+                                           "targets": [], "values": []})
+            if f.kind == "location" and f.key not in entry["targets"]:
+                entry["targets"].append(f.key)
+                entry.setdefault("conds", {})[f.key] = f.condition
+            if f.kind == "attr":
+                value = f.condition.rsplit(", ", 1)[1][:-1]
+                if value not in entry["values"]:
+                    entry["values"].append(value)
+            entry.setdefault("condition", f.condition)
+            last_key = slot
+        if cl.role in ("consequence", "else") and last_key is not None:
+            found[last_key].setdefault("consequences", []).append(cl.text)
+            found[last_key].setdefault("roles", set()).update(cl.mentions)
+    for (role, attr_key), classes in reader.attribute_classes(str(brief["description"])).items():
+        entry = found.setdefault((role, "attr", attr_key), {"order": len(clauses), "sentence": -1,
+                                                            "clause": -1, "targets": [], "values": []})
+        entry["values"] += [v for v in classes if v not in entry["values"]]
+
+    factors: list[Factor] = []
+    subjects_with_location = {s for (s, k, _) in found if k == "location"}
+    for (subject, kind, key), e in found.items():
+        values: dict[str, str]
+        if kind == "exists" and subject in subjects_with_location:
+            continue  # `if there are no wipes` refers to where the wipes are expected
+        if kind == "location":
+            targets = e["targets"]
+            if len(targets) == 1:
+                values = {"yes": e["conds"][targets[0]], "no": f"not {e['conds'][targets[0]]}"}
+                fid = f"{subject}_{e['conds'][targets[0]].split('(')[0]}_{targets[0]}"
+            else:
+                values = {t: e["conds"][t] for t in targets}
+                values["elsewhere"] = " and ".join(f"not {e['conds'][t]}" for t in targets)
+                fid = f"{subject}_location"
+        elif kind == "attr":
+            real = [v for v in e["values"] if v != "other"]
+            if not real:
+                continue
+            values = {v: f"attr({subject}, {key}, {v})" for v in real}
+            values["other"] = " and ".join(f"not attr({subject}, {key}, {v})" for v in real)
+            fid = f"{subject}_{key}"
+        else:
+            cond = e["condition"]
+            values = {"yes": cond, "no": f"not {cond}"}
+            fid = f"{subject}_{key or 'present'}"
+        factors.append(Factor(fid, subject, _question(subject, kind, key, e["targets"]), values, kind,
+                              e["order"], e["sentence"], e["clause"], e.get("consequences", []),
+                              set(e.get("roles", set()))))
+    factors.sort(key=lambda f: (f.order, _RANK[f.kind], f.id))
+    groups, group_roles = _group(factors)
     covered = set().union(*group_roles) if group_roles else set()
-    return TaskAnalysis(sentences, clauses, ordered, groups, group_roles,
-                        (mentioned | set(lex.roles)) - covered)
-
-
-def _drop_redundant_existence(factors: dict[str, Factor]) -> None:
-    """`if there aren't any wipes` refers back to the wipes' location factor when there is one."""
-    for fid in [f for f, x in factors.items() if x.kind == "exists"]:
-        subject = factors[fid].subject
-        if any(x.subject == subject and x.kind == "location" for x in factors.values()):
-            consequences = factors.pop(fid).consequences
-            loc = next(x for x in factors.values() if x.subject == subject and x.kind == "location")
-            loc.consequences += consequences
+    return TaskAnalysis(sentences, clauses, factors, groups, group_roles, set(lex.roles) - covered)
 
 
 def _group(factors: list[Factor]) -> tuple[list[list[str]], list[set[str]]]:
-    """Factors that test the same subject role belong to one subtask."""
-    by_subject: dict[str, list[str]] = {}
+    """Independent subtasks: factors on one subject, joined with factors of other subjects that
+    the same sentence makes depend on them (`a dirty plate goes into the dishwasher, but when the
+    dishwasher is running ...`). Subjects listed in one clause stay independent."""
+    parent: dict[str, str] = {f.subject: f.subject for f in factors}
+
+    def find(x: str) -> str:
+        while parent[x] != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+
+    for a in factors:
+        for b in factors:
+            if a.subject != b.subject and a.sentence == b.sentence >= 0 and a.clause != b.clause:
+                parent[find(b.subject)] = find(a.subject)
+    order: dict[str, list[str]] = {}
     for f in factors:
-        by_subject.setdefault(f.subject, []).append(f.id)
-    groups = list(by_subject.values())
-    roles = [{factors_by_id.subject for factors_by_id in factors if factors_by_id.id in g} for g in groups]
-    for g, rs in zip(groups, roles, strict=True):
-        for f in factors:
-            if f.id in g:
-                rs |= f.roles
+        order.setdefault(find(f.subject), []).append(f.id)
+    groups = list(order.values())
+    by_id = {f.id: f for f in factors}
+    roles = [set().union(*({by_id[i].subject} | by_id[i].roles for i in g)) for g in groups]
     return groups, roles
 
 
 def nest(factors: list[Factor]) -> dict[str, Any]:
-    """A decision tree over one subtask's factors: location/existence first, then the others.
+    """A decision tree over one subtask's factors.
 
-    Later factors are asked only where the object is where the task handles it (the positive
-    branch of a location factor); other factors nest under every branch.
+    Factors are asked subject by subject, where the object is (location/existence) first; when
+    an object is not where the task handles it (a location's `no`/`elsewhere` branch, or absent),
+    its remaining factors are not asked, but other subjects' factors still are.
     """
-    rank = {"exists": 0, "location": 1, "state": 2, "attr": 3}
-    ordered = sorted(factors, key=lambda f: (rank[f.kind], f.order))
+    subjects = list(dict.fromkeys(f.subject for f in factors))
+    ordered = sorted(factors, key=lambda f: (subjects.index(f.subject), _RANK[f.kind], f.order))
 
-    def build(i: int) -> dict[str, Any]:
+    def build(i: int, skipped: frozenset[str]) -> dict[str, Any]:
+        while i < len(ordered) and ordered[i].subject in skipped:
+            i += 1
         if i == len(ordered):
             return {"plan": [], "goal": "true"}
         f = ordered[i]
         branches = {}
         for value in f.values:
-            stop = f.kind in ("location", "exists") and value == "no"
-            branches[value] = {"plan": [], "goal": "true"} if stop else build(i + 1)
+            stop = f.kind in ("location", "exists") and value in ("no", "elsewhere")
+            branches[value] = build(i + 1, skipped | {f.subject} if stop else skipped)
+            if not f.consequences:
+                continue
+            leaf = branches[value]
+            if "plan" in leaf and not leaf["plan"]:
+                leaf["plan"] = [f.consequences[0] if value not in ("no", "elsewhere", "other")
+                                else "leave it as it is"]
         return {"var": f.id, "query": f.question, "branches": branches}
 
-    return build(0)
+    return build(0, frozenset())
+

@@ -67,4 +67,4 @@ class OfflineModel:
                               field="--model",
                               hint="known kinds: " + ", ".join(sorted(_HANDLERS)))
         self.stats.add(requests=1)
-        return json.dumps(fn(request.payload, request), sort_keys=True)
+        return json.dumps(fn(request.payload, request))

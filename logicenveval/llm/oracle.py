@@ -79,5 +79,5 @@ class OracleModel:
                 {"description": " | ".join(p.key for p in combo),
                  "facts": [task.variables[v].values[x] for p in combo for v, x in p.steps]}
                 for combo in itertools.product(*task_paths(task))]}
-        return json.dumps(reply, sort_keys=True)
+        return json.dumps(reply)
 

@@ -1,0 +1,111 @@
+"""The offline analyser on varied phrasings written for these tests (not the benchmark's)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+
+from logicenveval.domain.catalog import Catalog
+from logicenveval.llm.analysis import analyse, nest
+
+CATALOG = Catalog.model_validate({"categories": {
+    name: {"size_min": [0.1, 0.1, 0.1], "size_max": [1, 1, 1], "placement": ["floor"], **extra}
+    for name, extra in {
+        "toy": {"pickable": True, "attributes": {"kind": ["doll", "car", "ball"], "color": ["red", "blue"]}},
+        "toy_box": {"container": True, "attributes": {"color": ["red", "white", "blue"]}, "synonyms": ["toy chest"]},
+        "book": {"pickable": True, "attributes": {"kind": ["novel", "essay", "comic"]}},
+        "bookshelf": {"surface": True, "synonyms": ["shelf"]},
+        "sofa": {"surface": True, "synonyms": ["couch"]},
+        "fridge": {"container": True, "openable": True, "synonyms": ["refrigerator"]},
+        "milk_carton": {"pickable": True, "synonyms": ["milk"]},
+        "table_lamp": {"toggleable": True, "synonyms": ["lamp"]},
+        "dining_table": {"surface": True, "synonyms": ["table"]},
+        "plate": {"pickable": True},
+        "dishwasher": {"container": True, "openable": True, "toggleable": True},
+        "umbrella": {"pickable": True},
+        "shoe": {"pickable": True, "synonyms": ["shoes"]},
+        "shoe_rack": {"surface": True, "synonyms": ["rack"]},
+        "sponge": {"pickable": True},
+    }.items()}})
+
+
+def brief(description: str, roles: dict[str, Any], rooms: list[str] | None = None) -> dict[str, Any]:
+    return {"id": "t", "description": description, "rooms": rooms or ["living_room"],
+            "roles": {k: {"category": v[0], "attributes": v[1] if len(v) > 1 else {}} for k, v in roles.items()}}
+
+
+def factor_values(description: str, roles: dict[str, Any]) -> dict[str, set[str]]:
+    a = analyse(brief(description, roles), CATALOG)
+    return {f.id: set(f.values.values()) for f in a.factors}
+
+
+@pytest.mark.parametrize("text", [
+    "If there is a toy on the floor, put it into the toy chest.",
+    "Put the toy in the toy chest in case it is lying on the floor.",
+    "A toy may have been left on the floor; tidy it away.",
+    "Check the floor: should there be a toy on it, it goes into the toy chest.",
+    "Any toy lying on the floor goes into the toy chest.",
+    "Depending on whether the toy is on the floor, put it away or leave it.",
+])
+def test_location_factor_from_varied_cues(text: str) -> None:
+    values = factor_values(text, {"toy": ("toy",), "box": ("toy_box",)})
+    assert {"on(toy, floor)", "not on(toy, floor)"} in values.values()
+    assert not any("inside(toy, box)" in v for vs in values.values() for v in vs)  # a goal, not a factor
+
+
+@pytest.mark.parametrize(("text", "cond"), [
+    ("If the fridge is open, close it.", "state(fridge, open)"),
+    ("Close the refrigerator unless it is already shut.", "state(fridge, open)"),
+    ("Turn the lamp off when it is on.", "state(lamp, toggled_on)"),
+    ("Wipe the table if it looks dirty; a clean table needs nothing.", "state(table, dirty)"),
+    ("Bring the milk back to the fridge if it isn't empty.", "state(milk, filled)"),
+])
+def test_state_factors(text: str, cond: str) -> None:
+    values = factor_values(text, {"fridge": ("fridge",), "lamp": ("table_lamp",), "table": ("dining_table",),
+                                  "milk": ("milk_carton",)})
+    assert {cond, f"not {cond}"} in values.values()
+
+
+def test_attribute_classes_and_nesting() -> None:
+    text = ("Toys on the floor must be sorted: dolls go into the red box, cars into the blue one, "
+            "anything else into the white box.")
+    a = analyse(brief(text, {"toy": ("toy",), "red_box": ("toy_box", {"color": "red"}),
+                             "blue_box": ("toy_box", {"color": "blue"}),
+                             "white_box": ("toy_box", {"color": "white"})}), CATALOG)
+    by_id = {f.id: f for f in a.factors}
+    assert by_id["toy_kind"].values == {
+        "doll": "attr(toy, kind, doll)", "car": "attr(toy, kind, car)",
+        "other": "not attr(toy, kind, doll) and not attr(toy, kind, car)"}
+    assert "toy_color" not in by_id  # colour words describe the boxes, which are fixed
+    tree = nest([by_id["toy_on_floor"], by_id["toy_kind"]])
+    assert tree["var"] == "toy_on_floor"
+    assert tree["branches"]["yes"]["var"] == "toy_kind"
+    assert "plan" in tree["branches"]["no"]  # not on the floor: the kind does not matter
+
+
+def test_multi_valued_location_and_pronouns() -> None:
+    text = ("Shoes: wet ones stay by the door, dry ones belong on the rack. Books lying on the "
+            "floor or on the sofa go back on the shelf; anywhere else, leave them.")
+    values = factor_values(text, {"shoes": ("shoe",), "rack": ("shoe_rack",), "book": ("book",),
+                                  "sofa": ("sofa",), "shelf": ("bookshelf",)})
+    assert {"state(shoes, wet)", "not state(shoes, wet)"} in values.values()
+    assert {"on(book, floor)", "on(book, sofa)", "not on(book, floor) and not on(book, sofa)"} in values.values()
+
+
+def test_dependent_conditions_share_a_subtask_and_lists_do_not() -> None:
+    text = ("There may be a book or a toy on the floor. A dirty plate goes into the dishwasher, "
+            "but when the dishwasher is running put it in the sink instead.")
+    a = analyse(brief(text, {"book": ("book",), "toy": ("toy",), "plate": ("plate",),
+                             "dishwasher": ("dishwasher",)}), CATALOG)
+    groups = [{f.split("_")[0] for f in g} for g in a.groups]
+    assert {"plate", "dishwasher"} in groups
+    assert {"book"} in groups and {"toy"} in groups
+
+
+def test_absence_and_certain_scene_facts() -> None:
+    text = ("There is a sofa in the room and a toy on the floor. Clean the table with the sponge; "
+            "if there is no sponge, use a towel.")
+    values = factor_values(text, {"sofa": ("sofa",), "toy": ("toy",), "table": ("dining_table",),
+                                  "sponge": ("sponge",)})
+    assert values == {"sponge_present": {"exists(sponge)", "not exists(sponge)"}}
