@@ -55,3 +55,5 @@ class UnitRecord(BaseModel):
     #: a unit that crashed as a whole (LLM error, solver timeout): its reason
     error: str | None = None
     gen_seconds: float = 0.0
+    #: LLM counters of the unit (requests, cache hits/misses, retries, re-asks, tokens, latency)
+    llm: dict[str, float] = Field(default_factory=dict)

@@ -50,7 +50,6 @@ def build_results(
     tasks: Sequence[Task],
     records: Sequence[UnitRecord],
     *,
-    cache_stats: dict[str, Any] | None = None,
     wall_seconds: float | None = None,
 ) -> dict[str, Any]:
     by_task = {t.id: t for t in tasks}
@@ -58,6 +57,7 @@ def build_results(
     per_task: dict[str, Any] = {}
     failures: dict[str, list[dict[str, Any]]] = {}
     gen_seconds: dict[str, float] = {}
+    llm: dict[str, dict[str, float]] = {}
     for gen in config.generators:
         units = [r for r in records if r.generator == gen]
         metrics = [
@@ -72,6 +72,8 @@ def build_results(
             {"task": u.task_id, **f.model_dump(mode="json")} for u in units for f in u.failures
         ]
         gen_seconds[gen] = round(sum(u.gen_seconds for u in units), 3)
+        llm[gen] = {k: round(sum(u.llm.get(k, 0.0) for u in units), 3)
+                    for k in sorted({k for u in units for k in u.llm})}
     return {
         "schema": RESULTS_SCHEMA,
         "run_id": config.resolved_run_id(),
@@ -87,7 +89,7 @@ def build_results(
         "timing": {
             "wall_seconds": None if wall_seconds is None else round(wall_seconds, 3),
             "generation_seconds": gen_seconds,
-            "cache": cache_stats or {},
+            "llm": llm,
         },
     }
 

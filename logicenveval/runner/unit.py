@@ -72,6 +72,7 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     policies = {k: load_policy(policy_path(task, k, spec.tasks_dir)) for k in POLICY_KINDS}
     run_dir = Path(spec.run_dir)
     start = time.perf_counter()
+    model = None
     try:
         model = make_model(spec.model, spec.model_args, cache_path=spec.cache,
                            no_cache=spec.no_cache, run_dir=run_dir)
@@ -87,11 +88,12 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     except LogicEnvEvalError as exc:
         return UnitRecord(generator=spec.generator, task_id=spec.task_id,
                           error=f"{type(exc).__name__}: {exc}",
-                          gen_seconds=time.perf_counter() - start)
+                          gen_seconds=time.perf_counter() - start, llm=_stats(model))
     except Exception as exc:  # a generator bug must not kill the run; it is reported
         tb = traceback.format_exception_only(type(exc), exc)[-1].strip()
         return UnitRecord(generator=spec.generator, task_id=spec.task_id,
-                          error=f"internal error: {tb}", gen_seconds=time.perf_counter() - start)
+                          error=f"internal error: {tb}", gen_seconds=time.perf_counter() - start,
+                          llm=_stats(model))
     gen_seconds = time.perf_counter() - start
     env_dir = run_dir / "envs" / spec.generator / spec.task_id
     samples = []
@@ -102,4 +104,9 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
         atomic_write_text(env_dir / "plan.json",
                           json.dumps(result.artifacts, indent=2, sort_keys=True, default=str) + "\n")
     return UnitRecord(generator=spec.generator, task_id=spec.task_id, samples=samples,
-                      failures=list(result.failures), gen_seconds=gen_seconds)
+                      failures=list(result.failures), gen_seconds=gen_seconds, llm=_stats(model))
+
+
+def _stats(model: object) -> dict[str, float]:
+    stats = getattr(model, "stats", None)
+    return dict(stats.as_dict()) if stats is not None else {}

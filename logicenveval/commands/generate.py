@@ -1,0 +1,35 @@
+"""`generate`: run one generator on one task and write its EnvSpecs, plan and renders."""
+
+from __future__ import annotations
+
+import argparse
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--generator", required=True, help="a registered generator, e.g. logicenvgen")
+    p.add_argument("--task", required=True, help="task id")
+    p.add_argument("--model", default="offline", help="offline | oracle | openai:<model> | replay:<file>")
+    p.add_argument("--model-args", default="", help="key=value,...")
+    p.add_argument("--tasks-dir", default=None)
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--out", required=True, help="output folder")
+    p.add_argument("--cache", default=None, help="SQLite cache of LLM replies")
+    p.add_argument("--no-render", action="store_true", help="skip the SVG renders")
+
+
+def run(args: argparse.Namespace) -> int:
+    from pathlib import Path
+
+    from rich.console import Console
+
+    from logicenveval.generators.generate import generate_to_folder
+
+    summary = generate_to_folder(
+        generator=args.generator, task_id=args.task, model=args.model, model_args=args.model_args,
+        tasks_dir=args.tasks_dir, seed=args.seed, out=Path(args.out), cache=args.cache,
+        render=not args.no_render,
+    )
+    console = Console()
+    for line in summary.lines():
+        console.print(line)
+    return 0

@@ -1,0 +1,190 @@
+"""Simulated environment construction for one situation (paper §3.3).
+
+Floor plan (LLM) → object selection (LLM; task objects realising the situation + enrichment)
+→ rule check that every situation fact holds, with feedback and bounded refinement → spatial
+relations (LLM) → compatibility checker with feedback and bounded refinement → layout by the
+constraint solver with relaxation (or, for the no-CAS ablation, coordinates from the LLM).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from logicenveval.errors import TrajectoryError
+from logicenveval.generators.base import GenerationContext
+from logicenveval.generators.plan import PlanLog
+from logicenveval.llm.ask import ask
+from logicenveval.llm.replies import (
+    FloorPlanReply,
+    ObjectDraft,
+    ObjectsReply,
+    PlacementReply,
+    RelationDraft,
+    RelationsReply,
+)
+from logicenveval.model.conditions import evaluate, parse
+from logicenveval.model.envspec import EnvSpec
+from logicenveval.model.task import Task, TaskBrief
+from logicenveval.model.tree import evaluate_task
+
+
+def placement_fields(placement: str) -> tuple[str | None, str | None]:
+    """(support, container) of an object draft's placement string."""
+    if placement.startswith("on:"):
+        return placement[3:], None
+    if placement.startswith("inside:"):
+        return None, placement[7:]
+    return (placement if placement in ("floor", "wall", "ceiling") else "floor"), None
+
+
+def symbolic_env(brief: TaskBrief, env_id: str, generator: str, rooms: list[dict[str, Any]],
+                 objects: list[ObjectDraft]) -> EnvSpec:
+    """An EnvSpec without geometry, to check facts before any layout is computed."""
+    ids = {o.id for o in objects}
+    out = []
+    for o in objects:
+        support, container = placement_fields(o.placement)
+        if support not in (None, "floor", "wall", "ceiling") and support not in ids:
+            support = "floor"
+        if container is not None and container not in ids:
+            container, support = None, "floor"
+        out.append({"id": o.id, "category": o.category, "room": o.room, "support": support,
+                    "container": container, "attributes": dict(o.attributes), "states": dict(o.states)})
+    return EnvSpec.model_validate({
+        "task_id": brief.id, "generator": generator, "env_id": env_id,
+        "rooms": [{"id": r["id"], "type": r["type"]} for r in rooms],
+        "objects": out,
+        "roles": {o.role: o.id for o in objects if o.role in brief.roles},
+        "agent": {"room": brief.rooms[0]},
+    })
+
+
+def violated_facts(env: EnvSpec, facts: list[str], catalog: Any) -> list[str]:
+    from logicenveval.sim.world import holds_initial
+
+    holds = holds_initial(env, catalog)
+    return [f for f in facts if not evaluate(parse(f), holds)]
+
+
+class EnvironmentBuilder:
+    def __init__(self, brief: TaskBrief, ctx: GenerationContext, *, generator: str,
+                 use_solver: bool = True, max_refinements: int = 2) -> None:
+        self.brief = brief
+        self.ctx = ctx
+        self.generator = generator
+        self.use_solver = use_solver
+        self.max_refinements = max_refinements
+        self._floor_plan: FloorPlanReply | None = None
+
+    def _payload(self, **extra: Any) -> dict[str, Any]:
+        return {"task": self.brief.model_dump(mode="json"), **extra}
+
+    def floor_plan(self, facts: list[str]) -> FloorPlanReply:
+        return ask(self.ctx.model, "floor_plan", self._payload(situation=facts), FloorPlanReply,
+                   seed=self.ctx.seed)
+
+    def select_objects(self, env_id: str, rooms: list[dict[str, Any]], facts: list[str],
+                       log: PlanLog) -> list[ObjectDraft]:
+        categories = sorted(self.ctx.catalog.categories)
+        feedback: list[str] = []
+        for attempt in range(self.max_refinements + 1):
+            reply = ask(self.ctx.model, "select_objects", self._payload(
+                rooms=rooms, facts=facts, categories=categories, feedback=feedback), ObjectsReply,
+                seed=self.ctx.seed)
+            objects = self._known_categories(reply.objects, log, env_id)
+            sym = symbolic_env(self.brief, env_id, self.generator, rooms, objects)
+            feedback = [f"the situation requires {f}, which does not hold" for f in
+                        violated_facts(sym, facts, self.ctx.catalog)]
+            if not feedback:
+                return objects
+            log.add("select_objects", "refine", env_id=env_id, attempt=attempt, problems=feedback)
+        raise TrajectoryError(
+            f"{env_id}: the selected objects do not realise the situation: {'; '.join(feedback)}",
+            hint="the trajectory may be unsatisfiable, or the model cannot place the task objects")
+
+    def _known_categories(self, objects: list[ObjectDraft], log: PlanLog, env_id: str) -> list[ObjectDraft]:
+        from logicenveval.scene.objects import resolve_category
+
+        out = []
+        for o in objects:
+            category, warning = resolve_category(o.category, self.ctx.catalog)
+            if warning:
+                log.add("select_objects", warning, env_id=env_id)
+            out.append(o if category == o.category else o.model_copy(update={"category": category}))
+        return out
+
+    def relations(self, env_id: str, objects: list[ObjectDraft], log: PlanLog) -> list[RelationDraft]:
+        from logicenveval.scene.compat import check_relations
+
+        payload_objects = [o.model_dump() for o in objects]
+        reply = ask(self.ctx.model, "spatial_relations", self._payload(objects=payload_objects, feedback=[]),
+                    RelationsReply, seed=self.ctx.seed)
+        relations = list(reply.relations)
+        for attempt in range(self.max_refinements):
+            problems = check_relations(objects, relations, self.ctx.catalog)
+            if not problems:
+                return relations
+            reasons = [p.reason for p in problems]
+            log.add("spatial_relations", "refine", env_id=env_id, attempt=attempt, problems=reasons)
+            reply = ask(self.ctx.model, "refine_relations", self._payload(
+                objects=payload_objects, feedback=reasons,
+                rejected=[r.model_dump() for p in problems for r in p.relations]), RelationsReply,
+                seed=self.ctx.seed)
+            relations = list(reply.relations)
+        remaining = check_relations(objects, relations, self.ctx.catalog)
+        if remaining:
+            bad = {id(r) for p in remaining for r in p.relations}
+            log.add("spatial_relations", "dropped relations the checker still rejects", env_id=env_id,
+                    problems=[p.reason for p in remaining])
+            relations = [r for r in relations if id(r) not in bad]
+        return relations
+
+    def build(self, env_id: str, facts: list[str], claim: dict[str, dict[str, str]] | None,
+              plan_task: Task | None, log: PlanLog) -> EnvSpec:
+        if self._floor_plan is None:
+            self._floor_plan = self.floor_plan(facts)
+        rooms = [r.model_dump() for r in self._floor_plan.rooms]
+        objects = self.select_objects(env_id, rooms, facts, log)
+        relations = self.relations(env_id, objects, log)
+        if self.use_solver:
+            env = self._solve(env_id, rooms, objects, relations, claim, log)
+        else:
+            env = self._llm_placement(env_id, rooms, objects, relations, claim)
+        if plan_task is not None and claim is not None:
+            self._check_claim(env, plan_task, claim, log)
+        return env
+
+    def _check_claim(self, env: EnvSpec, plan_task: Task, claim: dict[str, dict[str, str]],
+                     log: PlanLog) -> None:
+        """The environment must reach, in the generator's own trees, the leaves it claims."""
+        from logicenveval.sim.world import holds_initial
+
+        reached = {o.subtask: (o.path.assignment() if o.path else None)
+                   for o in evaluate_task(plan_task, holds_initial(env, self.ctx.catalog))}
+        wrong = [s for s, a in claim.items() if reached.get(s) != a]
+        if wrong:
+            log.add("construct", f"{env.env_id} does not realise its trajectory in subtasks {wrong}",
+                    env_id=env.env_id, failure=True)
+
+    def _solve(self, env_id: str, rooms: list[dict[str, Any]], objects: list[ObjectDraft],
+               relations: list[RelationDraft], claim: dict[str, dict[str, str]] | None,
+               log: PlanLog) -> EnvSpec:
+        from logicenveval.scene.construct import construct_from_drafts
+
+        result = construct_from_drafts(
+            brief=self.brief, env_id=env_id, generator=self.generator, rooms=rooms, objects=objects,
+            relations=relations, claimed_trajectory=claim, catalog=self.ctx.catalog, rng=self.ctx.rng)
+        for entry in result.relaxation_log:
+            log.add("layout", str(entry), env_id=env_id)
+        return result.env
+
+    def _llm_placement(self, env_id: str, rooms: list[dict[str, Any]], objects: list[ObjectDraft],
+                       relations: list[RelationDraft], claim: dict[str, dict[str, str]] | None) -> EnvSpec:
+        from logicenveval.scene.construct import env_from_placed
+
+        reply = ask(self.ctx.model, "place_objects", self._payload(
+            rooms=rooms, objects=[o.model_dump() for o in objects],
+            relations=[r.model_dump() for r in relations]), PlacementReply, seed=self.ctx.seed)
+        return env_from_placed(brief=self.brief, env_id=env_id, generator=self.generator, rooms=rooms,
+                               placed=reply.objects, relations=reply.relations or relations,
+                               claimed_trajectory=claim, catalog=self.ctx.catalog, rng=self.ctx.rng)

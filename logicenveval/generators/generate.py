@@ -1,0 +1,68 @@
+"""Running one generator on one task outside a benchmark run (`python -m logicenveval generate`)."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from logicenveval.benchmark import load_task
+from logicenveval.domain.catalog import load_catalog
+from logicenveval.envfiles import save_env
+from logicenveval.generators.base import GenerationContext, GenerationResult, make_generator
+from logicenveval.runner.store import atomic_write_text
+from logicenveval.runner.unit import unit_seed
+
+
+@dataclass
+class GenerateSummary:
+    out: Path
+    result: GenerationResult
+    written: list[Path] = field(default_factory=list)
+
+    def lines(self) -> list[str]:
+        out = [f"{len(self.result.envs)} environment(s) written to {self.out}"]
+        out += [f"  {p.name}" for p in self.written]
+        out += [f"[red]failure[/red] {f.stage}: {f.message}" for f in self.result.failures]
+        return out
+
+
+def generate_to_folder(
+    *,
+    generator: str,
+    task_id: str,
+    model: str,
+    model_args: str,
+    tasks_dir: str | None,
+    seed: int,
+    out: Path,
+    cache: str | None = None,
+    render: bool = True,
+) -> GenerateSummary:
+    """Generate with the same seeding as a run's unit, so results match `run` exactly."""
+    from logicenveval.llm.registry import make_model
+
+    task = load_task(task_id, tasks_dir)
+    catalog = load_catalog()
+    chat = make_model(model, model_args, cache_path=cache or out / "llm_cache.sqlite", run_dir=out)
+    gen = make_generator(generator)
+    ctx = GenerationContext(model=chat, catalog=catalog,
+                            rng=np.random.default_rng(unit_seed(seed, generator, task_id)),
+                            seed=seed, work_dir=out)
+    result = gen.generate(task.brief(), ctx)
+    summary = GenerateSummary(out=out, result=result)
+    out.mkdir(parents=True, exist_ok=True)
+    for env in result.envs:
+        path = out / f"{env.env_id}.json"
+        save_env(env, path)
+        summary.written.append(path)
+        if render:
+            from logicenveval.physics import check_env
+            from logicenveval.physics.render import render_svg
+
+            atomic_write_text(out / f"{env.env_id}.svg", render_svg(env, check_env(env, catalog)))
+    plan = {**result.artifacts, "failures": [f.model_dump(mode="json") for f in result.failures]}
+    atomic_write_text(out / "plan.json", json.dumps(plan, indent=2, sort_keys=True, default=str) + "\n")
+    return summary

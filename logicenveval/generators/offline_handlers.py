@@ -1,0 +1,149 @@
+"""Offline answers to LogicEnvGen's environment-construction request kinds.
+
+Like an LLM, they see only the payload: the brief, the rooms, the situation facts and the
+task objects the generator has already realised; they answer with household conventions (room
+sizes by type, furniture typical of each room type from the catalog, relations such as "a
+sofa against a wall", "a chair near its table").
+"""
+
+from __future__ import annotations
+
+import hashlib
+from typing import Any
+
+from logicenveval.domain.catalog import load_catalog
+from logicenveval.generators.realise import NEEDS_SURFACE, realise
+from logicenveval.llm.base import ChatRequest
+from logicenveval.llm.offline import handler
+from logicenveval.model.rooms import room_type_of
+
+#: typical floor area (m²) per room type
+AREA = {"LivingRoom": 22.0, "Kitchen": 13.0, "Bedroom": 15.0, "Bathroom": 7.0, "Study": 11.0,
+        "Hallway": 9.0, "LaundryRoom": 8.0, "DiningRoom": 15.0, "KidsRoom": 13.0, "Garage": 20.0,
+        "Balcony": 6.0, "Office": 12.0, "Pantry": 5.0, "Entryway": 7.0}
+#: pairs that usually stand together (object category, anchor category)
+COMPANIONS = {"dining_chair": "dining_table", "office_chair": "desk", "nightstand": "bed",
+              "armchair": "coffee_table", "ottoman": "sofa", "bar_stool": "kitchen_island",
+              "stool": "kitchen_counter", "side_table": "sofa", "tv_stand": "sofa",
+              "changing_table": "crib", "dryer": "washing_machine"}
+WALLS = ("n", "e", "s", "w")
+
+
+def _stable(*parts: object) -> int:
+    return int.from_bytes(hashlib.sha256("\0".join(map(str, parts)).encode()).digest()[:4], "little")
+
+
+@handler("floor_plan")
+def floor_plan(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
+    """Rooms of the brief with typical areas; hallway-centred adjacency when there is a hallway."""
+    rooms = list(payload["task"]["rooms"])
+    types = {r: room_type_of(r) for r in rooms}
+    hub = next((r for r in rooms if types[r] in ("Hallway", "Entryway")), rooms[0])
+    out = []
+    for i, r in enumerate(rooms):
+        if len(rooms) == 1:
+            adjacent: list[str] = []
+        elif hub != rooms[0] or types[hub] in ("Hallway", "Entryway"):
+            adjacent = [x for x in rooms if x != r] if r == hub else [hub]
+        else:
+            adjacent = [x for x in (rooms[i - 1] if i else None, rooms[i + 1] if i + 1 < len(rooms) else None) if x]
+        doors = [{"to": other, "type": "door", "width": 0.9, "state": "open"} for other in adjacent
+                 if rooms.index(other) > i]
+        if r == hub:
+            doors.append({"to": "exterior", "type": "door", "width": 0.95, "state": "closed"})
+        out.append({
+            "id": r, "type": types[r], "area_m2": AREA.get(types[r], 12.0), "adjacent_to": adjacent,
+            "doors": doors,
+            "windows": [] if types[r] in ("Hallway", "Pantry") else [
+                {"wall": WALLS[_stable(payload["task"]["id"], r) % 4], "width": 1.2, "height": 1.2,
+                 "sill": 0.9, "state": "closed"}],
+            "floor_material": "tiles" if types[r] in ("Bathroom", "Kitchen", "LaundryRoom") else "wood",
+            "wall_color": "white",
+        })
+    return {"rooms": out}
+
+
+def _task_objects(payload: dict[str, Any]) -> list[dict[str, Any]]:
+    """One object per role (id = role name), placed so that the situation facts hold."""
+    catalog = load_catalog()
+    roles = payload["task"]["roles"]
+    objects = []
+    extra: dict[str, str] = {}
+    for role, c in realise(payload["task"], list(payload.get("facts") or []), catalog).items():
+        if not c.present:
+            continue
+        placement = c.placement or "floor"
+        if placement == NEEDS_SURFACE:
+            room = c.room or payload["task"]["rooms"][0]
+            extra.setdefault(room, f"side_table_{room}")
+            placement = f"on:{extra[room]}"
+        objects.append({"id": role, "category": roles[role]["category"], "room": c.room, "role": role,
+                        "placement": placement, "attributes": c.attributes, "states": c.states,
+                        "description": f"the {role.replace('_', ' ')}"})
+    for room, oid in extra.items():
+        objects.append({"id": oid, "category": "side_table", "room": room, "role": None,
+                        "placement": "floor", "attributes": {}, "states": {},
+                        "description": "a side table to put things on"})
+    return objects
+
+
+@handler("select_objects")
+def select_objects(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
+    """The task objects placed as the situation requires, plus furniture typical of each room."""
+    catalog = load_catalog()
+    objects = _task_objects(payload)
+    used = {o["category"] for o in objects}
+    for room in payload["rooms"]:
+        rtype, area = room["type"], float(room.get("area_m2", 12.0))
+        floor_like = sorted(
+            name for name, c in catalog.categories.items()
+            if rtype in c.rooms and c.placement[0] == "floor" and not c.pickable and name not in used
+            and not c.default_states.get("dirty", False) and c.size_min[0] * c.size_min[2] < area / 8
+        )
+        wall_like = sorted(name for name, c in catalog.categories.items()
+                           if rtype in c.rooms and c.placement[0] == "wall" and name not in used)
+        n_floor = 1 if area < 10 else 2
+        start = _stable(payload["task"]["id"], room["id"], request.seed)
+        picks = [floor_like[(start + k * 7) % len(floor_like)] for k in range(min(n_floor, len(floor_like)))]
+        if wall_like:
+            picks.append(wall_like[start % len(wall_like)])
+        for k, cat in enumerate(dict.fromkeys(picks)):
+            objects.append({
+                "id": f"{cat}_{room['id']}_{k}", "category": cat, "room": room["id"], "role": None,
+                "placement": catalog.categories[cat].placement[0], "attributes": {}, "states": {},
+                "description": f"a {cat.replace('_', ' ')} typical of a {rtype}",
+            })
+    return {"objects": objects}
+
+
+@handler("spatial_relations")
+def spatial_relations(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
+    """Household conventions: big furniture against walls, companions near their anchor."""
+    catalog = load_catalog()
+    objects = payload["objects"]
+    by_cat: dict[str, list[dict[str, Any]]] = {}
+    for o in objects:
+        by_cat.setdefault(o["category"], []).append(o)
+    relations = []
+    for o in objects:
+        cat = catalog.get(o["category"])
+        if cat is None:
+            continue
+        if o["placement"] == "wall":
+            relations.append({"type": "wall_mounted", "args": [o["id"]]})
+        elif o["placement"] == "floor" and not cat.pickable and max(cat.size_min[0], cat.size_min[2]) >= 0.6:
+            relations.append({"type": "edge", "args": [o["id"]]})
+        anchor = COMPANIONS.get(o["category"])
+        if anchor and o["placement"] == "floor":
+            partner = next((p for p in by_cat.get(anchor, []) if p["room"] == o["room"]), None)
+            if partner is not None:
+                relations.append({"type": "near", "args": [o["id"], partner["id"]]})
+    return {"relations": relations}
+
+
+@handler("refine_relations")
+def refine_relations(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
+    """Drop the relations the compatibility checker named, keep the rest."""
+    bad = {tuple(r["args"]) + (r["type"],) for r in payload.get("rejected") or []}
+    return {"relations": [r for r in spatial_relations(payload, request)["relations"]
+                          if tuple(r["args"]) + (r["type"],) not in bad]}

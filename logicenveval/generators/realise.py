@@ -1,0 +1,151 @@
+"""Choosing where each task object is, and its attributes and states, so that situation facts
+hold: the answer an LLM gives when asked to select objects for a situation.
+
+Facts are conditions on roles (DESIGN.md §3). Positive facts fix a placement, an attribute or a
+state; negated facts rule options out, and the object then goes to its most typical remaining
+place (a free surface of its room, the floor, a container). Nothing here reads ground truth.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+from logicenveval.domain.catalog import Catalog
+from logicenveval.model.conditions import And, Cond, Const, Not, Or, Pred, parse
+from logicenveval.model.rooms import room_type_of
+
+#: placement of an object that must rest on some surface when its room has none among the roles
+NEEDS_SURFACE = "on:?"
+
+
+@dataclass
+class RoleChoice:
+    present: bool = True
+    placement: str | None = None  # "floor" | "wall" | "on:<role>" | "inside:<role>"
+    room: str | None = None
+    attributes: dict[str, str] = field(default_factory=dict)
+    states: dict[str, bool] = field(default_factory=dict)
+    banned_places: set[str] = field(default_factory=set)
+    banned_values: dict[str, set[str]] = field(default_factory=dict)
+    banned_rooms: set[str] = field(default_factory=set)
+
+
+def _literals(cond: Cond, positive: bool = True) -> list[tuple[Pred, bool]]:
+    """Atoms with polarity from a conjunction; a disjunction contributes its first option."""
+    if isinstance(cond, Pred):
+        return [(cond, positive)]
+    if isinstance(cond, Not):
+        return _literals(cond.operand, not positive)
+    if isinstance(cond, And) and positive or isinstance(cond, Or) and not positive:
+        return [lit for c in cond.operands for lit in _literals(c, positive)]
+    if isinstance(cond, Or | And):
+        return _literals(cond.operands[0], positive)
+    assert isinstance(cond, Const)
+    return []
+
+
+def realise(brief: Mapping[str, Any], facts: list[str], catalog: Catalog) -> dict[str, RoleChoice]:
+    """A placement, room, attributes and states for every role satisfying `facts` if possible."""
+    roles: dict[str, Any] = dict(brief["roles"])
+    rooms: list[str] = list(brief["rooms"])
+    choice = {r: RoleChoice() for r in roles}
+    for text in facts:
+        for pred, pos in _literals(parse(text)):
+            r = pred.args[0]
+            if r not in choice:
+                continue
+            c = choice[r]
+            if pred.name == "exists":
+                c.present = pos
+            elif pred.name in ("on", "inside"):
+                place = ("floor" if pred.args[1] == "floor" else
+                         f"{'on' if pred.name == 'on' else 'inside'}:{pred.args[1]}")
+                if pos:
+                    c.placement = place
+                else:
+                    c.banned_places.add(place)
+            elif pred.name == "in_room":
+                if pos:
+                    c.room = pred.args[1]
+                else:
+                    c.banned_rooms.add(pred.args[1])
+            elif pred.name == "attr":
+                if pos:
+                    c.attributes[pred.args[1]] = pred.args[2]
+                else:
+                    c.banned_values.setdefault(pred.args[1], set()).add(pred.args[2])
+            elif pred.name == "state":
+                c.states[pred.args[1]] = pos
+    for r, c in choice.items():
+        cat = catalog.get(roles[r]["category"])
+        fixed = {k: str(v) for k, v in roles[r].get("attributes", {}).items()}
+        c.attributes = {**fixed, **c.attributes}
+        for key, banned in c.banned_values.items():
+            if key in c.attributes and c.attributes[key] not in banned:
+                continue
+            domain = cat.attributes.get(key, []) if cat else []
+            other = next((v for v in domain if v not in banned), None)
+            c.attributes[key] = other or f"other_{key}"
+        if cat:
+            c.states = {**cat.default_states, **c.states}
+    _rooms(choice, roles, rooms, catalog)
+    _places(choice, roles, catalog)
+    return choice
+
+
+def _home_room(category: str, rooms: list[str], catalog: Catalog) -> str:
+    cat = catalog.get(category)
+    if cat:
+        for room in rooms:
+            if room_type_of(room) in cat.rooms:
+                return room
+    return rooms[0]
+
+
+def _rooms(choice: dict[str, RoleChoice], roles: dict[str, Any], rooms: list[str], catalog: Catalog) -> None:
+    # holders first: an object placed on/in another shares the holder's room
+    for r, c in choice.items():
+        if c.room is None and not (c.placement or "").startswith(("on:", "inside:")):
+            options = [x for x in rooms if x not in c.banned_rooms] or rooms
+            home = _home_room(roles[r]["category"], options, catalog)
+            c.room = home if home in options else options[0]
+    for _ in range(len(choice)):
+        for c in choice.values():
+            if c.placement and c.placement.startswith(("on:", "inside:")):
+                holder = c.placement.split(":", 1)[1]
+                if holder in choice and choice[holder].room is not None:
+                    c.room = choice[holder].room
+    for r, c in choice.items():
+        c.room = c.room or _home_room(roles[r]["category"], rooms, catalog)
+
+
+def _places(choice: dict[str, RoleChoice], roles: dict[str, Any], catalog: Catalog) -> None:
+    for r, c in choice.items():
+        if c.placement is not None:
+            continue
+        cat = catalog.get(roles[r]["category"])
+        typical = cat.placement if cat else ["floor"]
+        if typical[0] in ("floor", "wall", "ceiling") and typical[0] not in c.banned_places:
+            c.placement = typical[0] if typical[0] != "ceiling" else "wall"
+            continue
+        holders = []
+        for other, oc in choice.items():
+            ocat = catalog.get(roles[other]["category"])
+            if other == r or ocat is None or not oc.present or oc.room != c.room:
+                continue
+            if oc.placement and oc.placement.startswith(("on:", "inside:")):
+                continue  # no stacking on objects that themselves rest on others
+            if ocat.surface and not ocat.pickable:
+                holders.append(f"on:{other}")
+            elif ocat.container and not ocat.openable and not ocat.pickable:
+                holders.append(f"inside:{other}")
+        preferred = [h for h in holders if h not in c.banned_places]
+        surfaces = [h for h in preferred if h.startswith("on:")]
+        if typical[0] == "inside":
+            surfaces = [h for h in preferred if h.startswith("inside:")] + surfaces
+        pick = (surfaces or preferred or [None])[0]
+        if pick is None:
+            pick = "floor" if "floor" not in c.banned_places else NEEDS_SURFACE
+        c.placement = pick
