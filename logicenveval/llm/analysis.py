@@ -34,6 +34,7 @@ STATE_WORDS: dict[str, tuple[str, bool]] = {
     "soaked": ("wet", True), "soggy": ("wet", True), "dry": ("wet", False),
     "full": ("filled", True), "filled": ("filled", True), "empty": ("filled", False),
     "cooked": ("cooked", True), "raw": ("cooked", False), "sliced": ("sliced", True),
+    "out": ("toggled_on", False), "extinguished": ("toggled_on", False),
     "broken": ("broken", True), "cracked": ("broken", True),
 }
 #: words between a subject and its predicate that describe a current situation
@@ -52,7 +53,11 @@ ARTICLES = frozenset({"the", "a", "an", "any", "some", "one", "of", "its", "thei
                       "these", "those", "every", "each", "your", "my", "our"})
 PARTS = frozenset({"door", "lid", "leaf", "screen", "soil", "surface", "top", "inside", "water",
                    "content", "bottom", "side", "handle", "shelf", "drawer", "bag", "glass"})
-PRONOUNS = frozenset({"it", "they", "them", "itself", "themselves", "one", "ones", "its", "their"})
+PRONOUNS = frozenset({"it", "they", "them", "one", "ones", "its", "their"})
+#: participles that turn a noun phrase into a description of the current situation
+SITUATION_PARTICIPLES = frozenset({"left", "lying", "lie", "lies", "sitting", "found", "dropped", "fallen",
+                                   "scattered", "forgotten", "standing", "kept", "ended"})
+INDEFINITE = frozenset({"a", "an", "any", "every", "each", "some", "no"})
 NEGATIONS = frozenset({"not", "no", "none", "never", "without", "nothing", "nobody", "nowhere"})
 UNCERTAIN = frozenset({"may", "might", "possibly", "perhaps", "maybe", "could", "sometimes",
                        "occasionally", "potentially", "probably", "likely"})
@@ -72,7 +77,7 @@ _CONTRACTIONS = [
     (r"\b(i|you|we|they)'ve\b", r"\1 have"), (r"\b(i|you|we|they|it)'ll\b", r"\1 will"),
     (r"\b(\w+)s'(\s)", r"\1s\2"), (r"\b(\w+)'s\b", r"\1"),
 ]
-_SENT = re.compile(r"(?<=[.!?;])\s+|\n+|(?<=\))\s+(?=[A-Z])")
+_SENT = re.compile(r"(?<=[.!?;:])\s+|\n+|(?<=\))\s+(?=[A-Z])")
 _ABBREV = re.compile(r"\b(e\.g|i\.e|etc|approx|vs)\.", re.I)
 
 
@@ -206,6 +211,16 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
     return pieces
 
 
+def _subsplit(pieces: list[tuple[str, str | None, str]]) -> list[tuple[str, str | None, str]]:
+    """`it is on, and close the wardrobe`: a condition ends at `, and`; what follows is an action."""
+    out: list[tuple[str, str | None, str]] = []
+    for text, cue, role in pieces:
+        parts = [p for p in re.split(r",\s*(?:and|but|then)\s+", text) if p.strip()]
+        for i, part in enumerate(parts):
+            out.append((part, cue, role if i == 0 or role != "condition" else "consequence"))
+    return out
+
+
 def _joined(words: list[str], a: Mention, b: Mention) -> bool:
     """Mentions `a` and `b` are items of one list (`a book or a toy`, `cups, plates and bowls`)."""
     between = words[a.end : b.start]
@@ -224,15 +239,8 @@ class _Reader:
     def __init__(self, lex: Lexicon) -> None:
         self.lex = lex
         self.topic: tuple[str, ...] = ()
-        self.prev_topic: tuple[str, ...] = ()
         self.topic_kind = "role"
-        self.prev_topic_kind = "role"
         self.last_location: dict[str, Fact] = {}
-
-    def new_sentence(self) -> None:
-        if self.topic:
-            self.prev_topic, self.prev_topic_kind = self.topic, self.topic_kind
-        self.topic = ()
 
     def mentions(self, words: list[str], toks: list[tuple[str, int, int]]) -> list[Mention]:
         found = self.lex.find_mentions(toks)
@@ -243,15 +251,19 @@ class _Reader:
             if w in ("one", "ones") and not (i > 0 and (words[i - 1] in STATE_WORDS or words[i - 1] in
                                                           COLOR_WORDS or words[i - 1] in {"is", "a", "the"})):
                 continue
-            ref, kind = (self.topic, self.topic_kind) if self.topic else (self.prev_topic, self.prev_topic_kind)
-            if ref:
-                found.append(Mention(ref, i, i + 1, "pronoun" if kind == "role" else "floor"))
+            before = [m for m in found if m.kind == "role" and m.end <= i]
+            if w in ("one", "ones"):  # "a dirty one": the kind the clause or sentence is about
+                before = [m for m in before if all(x in ARTICLES | set(STATE_WORDS) for x in words[: m.start])]
+            elif i > 0 and words[i - 1] in PREP_ON | PREP_IN:
+                before = before[:-1]  # "a toy on it": not the toy itself
+            if before:
+                found.append(Mention(before[-1].roles, i, i + 1, "pronoun"))
+            elif self.topic:
+                found.append(Mention(self.topic, i, i + 1, "pronoun" if self.topic_kind == "role" else "floor"))
         found.sort(key=lambda m: m.start)
-        if not self.topic:
-            first = next((m for m in found if m.kind in ("role", "floor", "pronoun")), None)
-            if first is not None:
-                self.topic = first.roles
-                self.topic_kind = "role" if first.kind == "pronoun" else first.kind
+        first = next((m for m in found if m.kind in ("role", "floor", "pronoun")), None)
+        if first is not None and first.kind != "pronoun":
+            self.topic, self.topic_kind = first.roles, first.kind
         return found
 
     def facts(self, text: str) -> tuple[list[Fact], tuple[str, ...]]:
@@ -272,10 +284,11 @@ class _Reader:
                 if r in self.last_location:
                     base = self.last_location[r]
                     facts.append(Fact(r, base.condition, "location", base.key, negated=True))
-        if not [f for f in facts if not f.goal] and subjects and (
-                negated and ("there" in words or "any" in words) or "there" in words and "is" in words[:3]):
-            for r in subjects[0].roles:
-                facts.append(Fact(r, f"exists({r})", "exists", negated=negated))
+        for m in subjects:
+            before = words[max(0, m.start - 4) : m.start]
+            if "there" in before or "no" in before[-2:]:
+                facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
+                break
         for f in facts:
             if f.kind == "location":
                 self.last_location[f.subject] = f
@@ -307,8 +320,11 @@ class _Reader:
             k += 1
         if k >= len(words) or words[k] not in PREP_ON | PREP_IN:
             return []
-        goal = self._is_goal(words, m, skipped)
-        modifier = not goal and (not skipped or bool(set(skipped) - {"is", "are", "be", "still", "already"}))
+        goal = self._is_goal(words, m, skipped) or words[k] in ("into", "onto")
+        article = words[m.start - 1] if m.start > 0 else ""
+        described = bool(set(skipped) & SITUATION_PARTICIPLES) or (
+            not skipped and (article in INDEFINITE or article not in ARTICLES))
+        modifier = not goal and described
         subjects = self._subjects(words, mentions, idx)
         out: list[Fact] = []
         while k < len(words) and words[k] in PREP_ON | PREP_IN:
@@ -338,14 +354,19 @@ class _Reader:
     def _state(self, words: list[str], m: Mention, negated: bool) -> list[Fact]:
         k = m.end
         skipped: list[str] = []
-        while k < len(words) and len(skipped) < 5 and (words[k] in DESCRIPTIVE | PARTS | NEGATIONS
-                                                       | {"but", "and"}):
+        while k < len(words) and len(skipped) < 8 and (words[k] in DESCRIPTIVE | PARTS | NEGATIONS
+                                                       | {"but", "and"} or self._pp_at(words, k)):
+            if self._pp_at(words, k):
+                k = self._pp_at(words, k)
+                continue
             skipped.append(words[k])
             k += 1
         found: list[tuple[str, bool, bool]] = []  # (word, polarity-negated, modifier)
         local_neg = any(_negation(w) for w in skipped)
         while k < len(words) and words[k] in STATE_WORDS:
             w = words[k]
+            if w == "out" and not set(skipped) & {"is", "are", "was", "were", "already", "still"}:
+                break  # `take it out` is an action, `it is out` a state
             if w in ("on", "off") and k + 1 < len(words) and words[k + 1] in ARTICLES | PRONOUNS | {"floor"}:
                 break  # `on the table` is a place, not `switched on`
             found.append((w, local_neg, False))
@@ -364,6 +385,16 @@ class _Reader:
                 out.append(Fact(r, f"state({r}, {flag})", "state", flag, negated=neg != (not pol),
                                 modifier=modifier))
         return out
+
+    def _pp_at(self, words: list[str], k: int) -> int:
+        """End of a short prepositional phrase `on the coffee table` starting at k, else 0."""
+        if words[k] not in PREP_ON | PREP_IN | {"at", "by", "near", "under", "next"}:
+            return 0
+        toks = [(w, 0, 0) for w in words[k + 1 : k + 6]]
+        for m in self.lex.find_mentions(toks):
+            if all(w in ARTICLES for w in words[k + 1 : k + 1 + m.start]):
+                return k + 1 + m.end
+        return 0
 
     def _attribute(self, words: list[str], m: Mention, negated: bool) -> list[Fact]:
         k = m.end
@@ -431,8 +462,7 @@ def analyse(brief: Mapping[str, Any], catalog: Catalog | None = None) -> TaskAna
     sentences = _sentences(str(brief["description"]))
     clauses: list[Clause] = []
     for si, sent in enumerate(sentences):
-        reader.new_sentence()
-        for text, cue, role in _split_clauses(sent):
+        for text, cue, role in _subsplit(_split_clauses(sent)):
             facts, names = reader.facts(text)
             clauses.append(Clause(text, si, cue, role, tuple(facts), names))
 
