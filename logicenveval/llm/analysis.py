@@ -240,10 +240,18 @@ class _Reader:
         self.lex = lex
         self.topic: tuple[str, ...] = ()
         self.topic_kind = "role"
+        self.recent: list[str] = []
         self.last_location: dict[str, Fact] = {}
 
+    def _recent_first(self, m: Mention) -> Mention:
+        """An ambiguous singular mention (`the rack`) means the candidate mentioned last."""
+        if m.kind != "role" or len(m.roles) < 2:
+            return m
+        known = [r for r in self.recent if r in m.roles]
+        return Mention((known[-1],), m.start, m.end, m.kind) if known else m
+
     def mentions(self, words: list[str], toks: list[tuple[str, int, int]]) -> list[Mention]:
-        found = self.lex.find_mentions(toks)
+        found = [self._recent_first(m) for m in self.lex.find_mentions(toks)]
         covered = {i for m in found for i in range(m.start, m.end)}
         for i, w in enumerate(words):
             if i in covered or w not in PRONOUNS:
@@ -261,6 +269,9 @@ class _Reader:
             elif self.topic:
                 found.append(Mention(self.topic, i, i + 1, "pronoun" if self.topic_kind == "role" else "floor"))
         found.sort(key=lambda m: m.start)
+        for m in found:
+            if m.kind in ("role", "pronoun"):
+                self.recent = [r for r in self.recent if r not in m.roles] + list(m.roles)
         first = next((m for m in found if m.kind in ("role", "floor", "pronoun")), None)
         if first is not None and first.kind != "pronoun":
             self.topic, self.topic_kind = first.roles, first.kind

@@ -78,6 +78,16 @@ class Lexicon:
             lex.fixed[name] = {k: str(v).lower() for k, v in role.get("attributes", {}).items()}
         for room in lex.rooms:
             lex.room_phrases[words_of(room)] = room
+        # "the table" for the dining table, "the machine" for the washing machine: a head noun
+        # refers to the roles whose names end with it, when no role is named exactly so
+        heads: dict[tuple[str, ...], set[str]] = {}
+        for phrase, names in list(lex.phrases.items()):
+            if len(phrase) > 1:
+                for name in names:
+                    heads.setdefault(phrase[-1:], set()).add(name)
+        for head, names in heads.items():
+            if head not in lex.phrases:
+                lex.phrases[head] = set(names)  # ambiguous heads are resolved by recency
         return lex
 
     def role_words(self) -> set[str]:

@@ -40,8 +40,7 @@ def evaluate_env(
         relation=report.relation.passed,
         failures=failures,
     )
-    bound = {role for role, oid in env.roles.items() if oid is not None}
-    cov = coverage(task, holds_initial(env, catalog), bound)
+    cov = coverage(task, holds_initial(env, catalog), env.roles)
     verdicts: dict[str, str] = {}
     sim_ms: dict[str, float] = {}
     for kind, policy in policies.items():
