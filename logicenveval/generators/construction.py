@@ -180,11 +180,18 @@ class EnvironmentBuilder:
 
     def _llm_placement(self, env_id: str, rooms: list[dict[str, Any]], objects: list[ObjectDraft],
                        relations: list[RelationDraft], claim: dict[str, dict[str, str]] | None) -> EnvSpec:
-        from logicenveval.scene.construct import env_from_placed
+        import numpy as np
 
+        from logicenveval.scene.construct import _room_requests, env_from_placed
+        from logicenveval.scene.floorplan import plan_floor
+
+        # the model sees the same floor plan that the EnvSpec will have: one seed for both
+        plan_seed = int(self.ctx.rng.integers(2**31))
+        plan = plan_floor(_room_requests(rooms), np.random.default_rng(plan_seed))
         reply = ask(self.ctx.model, "place_objects", self._payload(
-            rooms=rooms, objects=[o.model_dump() for o in objects],
+            rooms=[r.model_dump(mode="json") for r in plan.rooms], objects=[o.model_dump() for o in objects],
             relations=[r.model_dump() for r in relations]), PlacementReply, seed=self.ctx.seed)
         return env_from_placed(brief=self.brief, env_id=env_id, generator=self.generator, rooms=rooms,
                                placed=reply.objects, relations=reply.relations or relations,
-                               claimed_trajectory=claim, catalog=self.ctx.catalog, rng=self.ctx.rng)
+                               claimed_trajectory=claim, catalog=self.ctx.catalog,
+                               rng=np.random.default_rng(plan_seed))

@@ -147,3 +147,28 @@ def refine_relations(payload: dict[str, Any], request: ChatRequest) -> dict[str,
     bad = {tuple(r["args"]) + (r["type"],) for r in payload.get("rejected") or []}
     return {"relations": [r for r in spatial_relations(payload, request)["relations"]
                           if tuple(r["args"]) + (r["type"],) not in bad]}
+
+
+@handler("place_objects")
+def place_objects(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
+    """Coordinates written down without a solver (the no-CAS ablation), room by room.
+
+    Uses the same guessing heuristic as the CoT/IFG offline handlers: furniture along the walls,
+    items on their support's top; nothing checks collisions — the physics checker judges it.
+    """
+    from logicenveval.baselines.heuristics import guess_coordinates
+
+    catalog = load_catalog()
+    dims: dict[str, tuple[float, float]] = {}
+    origin: dict[str, tuple[float, float]] = {}
+    for room in payload["rooms"]:
+        xs = [p[0] for p in room["polygon"]]
+        zs = [p[1] for p in room["polygon"]]
+        origin[room["id"]] = (min(xs), min(zs))
+        dims[room["id"]] = (max(xs) - min(xs), max(zs) - min(zs))
+    placed = guess_coordinates([dict(o) for o in payload["objects"]], dims, catalog)
+    for o in placed:
+        ox, oz = origin.get(o["room"], (0.0, 0.0))
+        x, y, z = o["position"]
+        o["position"] = (round(x + ox, 3), round(y, 3), round(z + oz, 3))
+    return {"objects": placed, "relations": list(payload.get("relations") or [])}

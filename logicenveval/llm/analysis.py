@@ -123,6 +123,18 @@ class Factor:
     clause: int = -1
     consequences: list[str] = field(default_factory=list)
     roles: set[str] = field(default_factory=set)
+    #: (factor id, values) under which this factor is asked: the conditions it was stated under
+    context: list[tuple[str, frozenset[str]]] = field(default_factory=list)
+    raw_context: list[tuple[tuple[str, str, str], bool, str]] = field(default_factory=list, repr=False)
+
+
+def _allowed(dep: Factor, negated: bool, value: str) -> frozenset[str]:
+    """Values of `dep` under which a condition `[not] dep = value` holds."""
+    if dep.kind in ("state", "exists") or (dep.kind == "location" and set(dep.values) == {"yes", "no"}):
+        return frozenset({"no" if negated else "yes"})
+    if value in dep.values:
+        return frozenset(set(dep.values) - {value}) if negated else frozenset({value})
+    return frozenset(dep.values)
 
 
 @dataclass
@@ -472,24 +484,40 @@ def analyse(brief: Mapping[str, Any], catalog: Catalog | None = None) -> TaskAna
     reader = _Reader(lex)
     sentences = _sentences(str(brief["description"]))
     clauses: list[Clause] = []
+    grammatical = 0  # pieces split at ':' or ';' still belong to one sentence for grouping
     for si, sent in enumerate(sentences):
         for text, cue, role in _subsplit(_split_clauses(sent)):
             facts, names = reader.facts(text)
-            clauses.append(Clause(text, si, cue, role, tuple(facts), names))
+            clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
+        if sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences):
+            grammatical += 1
 
     # collect condition facts per (subject, kind, key)
     found: dict[tuple[str, str, str], dict[str, Any]] = {}
     last_key: tuple[str, str, str] | None = None
     slot: tuple[str, str, str]
+    #: conditions met earlier in the sentence: a factor first mentioned under them depends on them
+    context: list[tuple[tuple[str, str, str], bool, str]] = []
+    current_sentence = -1
     for ci, cl in enumerate(clauses):
+        if cl.sentence != current_sentence:
+            current_sentence, context = cl.sentence, []
+        if cl.role == "else" and context:
+            slot0, neg0, key0 = context[-1]
+            context[-1] = (slot0, not neg0, key0)
         conditional = cl.role in ("condition", "uncertain")
+        added: list[tuple[tuple[str, str, str], bool, str]] = []
         for f in cl.facts:
             if f.goal or not (conditional or (f.modifier and cl.role not in ("scene",))
                               or (cl.role == "else" and f.kind != "location")):
                 continue
             slot = (f.subject, f.kind, f.key if f.kind in ("state", "attr") else "")
             entry = found.setdefault(slot, {"order": ci, "sentence": cl.sentence, "clause": ci,
-                                           "targets": [], "values": []})
+                                           "targets": [], "values": [],
+                                           "context": [c for c in context if c[0] != slot]})
+            if cl.role == "condition":
+                value = f.condition.rsplit(", ", 1)[1][:-1] if f.kind == "attr" else f.key
+                added.append((slot, f.negated, value))
             if f.kind == "location" and f.key not in entry["targets"]:
                 entry["targets"].append(f.key)
                 entry.setdefault("conds", {})[f.key] = f.condition
@@ -499,6 +527,7 @@ def analyse(brief: Mapping[str, Any], catalog: Catalog | None = None) -> TaskAna
                     entry["values"].append(value)
             entry.setdefault("condition", f.condition)
             last_key = slot
+        context += added
         if cl.role in ("consequence", "else") and last_key is not None:
             found[last_key].setdefault("consequences", []).append(cl.text)
             found[last_key].setdefault("roles", set()).update(cl.mentions)
@@ -508,6 +537,7 @@ def analyse(brief: Mapping[str, Any], catalog: Catalog | None = None) -> TaskAna
         entry["values"] += [v for v in classes if v not in entry["values"]]
 
     factors: list[Factor] = []
+    slot_factor: dict[tuple[str, str, str], Factor] = {}
     subjects_with_location = {s for (s, k, _) in found if k == "location"}
     for (subject, kind, key), e in found.items():
         values: dict[str, str]
@@ -533,9 +563,17 @@ def analyse(brief: Mapping[str, Any], catalog: Catalog | None = None) -> TaskAna
             cond = e["condition"]
             values = {"yes": cond, "no": f"not {cond}"}
             fid = f"{subject}_{key or 'present'}"
-        factors.append(Factor(fid, subject, _question(subject, kind, key, e["targets"]), values, kind,
-                              e["order"], e["sentence"], e["clause"], e.get("consequences", []),
-                              set(e.get("roles", set()))))
+        factor = Factor(fid, subject, _question(subject, kind, key, e["targets"]), values, kind,
+                        e["order"], e["sentence"], e["clause"], e.get("consequences", []),
+                        set(e.get("roles", set())))
+        factor.raw_context = e.get("context", [])
+        slot_factor[(subject, kind, key)] = factor
+        factors.append(factor)
+    for factor in factors:
+        for slot_c, negated, value in factor.raw_context:
+            dep = slot_factor.get(slot_c)
+            if dep is not None and dep is not factor:
+                factor.context.append((dep.id, _allowed(dep, negated, value)))
     factors.sort(key=lambda f: (f.order, _RANK[f.kind], f.id))
     groups, group_roles = _group(factors)
     covered = set().union(*group_roles) if group_roles else set()
@@ -577,8 +615,12 @@ def nest(factors: list[Factor]) -> dict[str, Any]:
     subjects = list(dict.fromkeys(f.subject for f in factors))
     ordered = sorted(factors, key=lambda f: (subjects.index(f.subject), _RANK[f.kind], f.order))
 
-    def build(i: int, skipped: frozenset[str]) -> dict[str, Any]:
-        while i < len(ordered) and ordered[i].subject in skipped:
+    def asked(f: Factor, skipped: frozenset[str], path: dict[str, str]) -> bool:
+        return f.subject not in skipped and all(
+            path[dep] in allowed for dep, allowed in f.context if dep in path)
+
+    def build(i: int, skipped: frozenset[str], path: dict[str, str]) -> dict[str, Any]:
+        while i < len(ordered) and not asked(ordered[i], skipped, path):
             i += 1
         if i == len(ordered):
             return {"plan": [], "goal": "true"}
@@ -586,7 +628,7 @@ def nest(factors: list[Factor]) -> dict[str, Any]:
         branches = {}
         for value in f.values:
             stop = f.kind in ("location", "exists") and value in ("no", "elsewhere")
-            branches[value] = build(i + 1, skipped | {f.subject} if stop else skipped)
+            branches[value] = build(i + 1, skipped | {f.subject} if stop else skipped, {**path, f.id: value})
             if not f.consequences:
                 continue
             leaf = branches[value]
@@ -595,5 +637,5 @@ def nest(factors: list[Factor]) -> dict[str, Any]:
                                 else "leave it as it is"]
         return {"var": f.id, "query": f.question, "branches": branches}
 
-    return build(0, frozenset())
+    return build(0, frozenset(), {})
 
