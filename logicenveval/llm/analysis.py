@@ -35,6 +35,8 @@ STATE_WORDS: dict[str, tuple[str, bool]] = {
     "full": ("filled", True), "filled": ("filled", True), "empty": ("filled", False),
     "cooked": ("cooked", True), "raw": ("cooked", False), "sliced": ("sliced", True),
     "out": ("toggled_on", False), "extinguished": ("toggled_on", False),
+    "ringing": ("toggled_on", True), "beeping": ("toggled_on", True), "playing": ("toggled_on", True),
+    "silent": ("toggled_on", False),
     "broken": ("broken", True), "cracked": ("broken", True),
 }
 #: words between a subject and its predicate that describe a current situation
@@ -183,8 +185,8 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
             r",\s*(?:and|but|while)\s+|\s+but\s+|;\s*|:\s+|\s+-\s+|\s+while\s+", sentence) if p and p.strip()]
         out: list[tuple[str, str | None, str]] = []
         for p in parts:
-            if SCENE_START.match(p) or re.search(r"\b(has|have|contains)\b", p.lower()) and not re.search(
-                    r"\b(may|might|if)\b", p.lower()):
+            if SCENE_START.match(p) or re.search(r"\b(has|have|contains)\b", p.lower()) and not (
+                    re.search(r"\bif\b", p.lower()) or set(re.findall(r"[a-z]+", p.lower())) & UNCERTAIN):
                 out.append((p, None, "scene"))
             else:
                 out.append((p, None, "uncertain" if any(w in UNCERTAIN for w in re.findall(r"[a-z]+", p.lower()))
@@ -236,9 +238,8 @@ def _subsplit(pieces: list[tuple[str, str | None, str]]) -> list[tuple[str, str 
 def _joined(words: list[str], a: Mention, b: Mention) -> bool:
     """Mentions `a` and `b` are items of one list (`a book or a toy`, `cups, plates and bowls`)."""
     between = words[a.end : b.start]
-    return len(between) <= 3 and any(w in {"or", "and"} for w in between) and all(
-        w in {"or", "and", "a", "an", "the", "some", "any", "either"} for w in between
-    )
+    return len(between) <= 3 and all(w in {"or", "and", "a", "an", "the", "some", "any", "either"}
+                                      for w in between)
 
 
 def _negation(word: str) -> bool:
@@ -274,8 +275,14 @@ class _Reader:
             before = [m for m in found if m.kind == "role" and m.end <= i]
             if w in ("one", "ones"):  # "a dirty one": the kind the clause or sentence is about
                 before = [m for m in before if all(x in ARTICLES | set(STATE_WORDS) for x in words[: m.start])]
-            elif i > 0 and words[i - 1] in PREP_ON | PREP_IN:
-                before = before[:-1]  # "a toy on it": not the toy itself
+            elif i > 0 and words[i - 1] in PREP_ON | PREP_IN and before:
+                # "a book or a phone on it": not the listed objects themselves
+                listed = [before[-1]]
+                for m in reversed(before[:-1]):
+                    if not _joined(words, m, listed[-1]):
+                        break
+                    listed.append(m)
+                before = [m for m in before if m not in listed]
             if before:
                 found.append(Mention(before[-1].roles, i, i + 1, "pronoun"))
             elif self.topic:
@@ -313,7 +320,7 @@ class _Reader:
                 facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
                 break
         for f in facts:
-            if f.kind == "location":
+            if f.kind == "location" and not f.goal:
                 self.last_location[f.subject] = f
         names = tuple(dict.fromkeys(r for m in subjects for r in m.roles))
         return list(dict.fromkeys(facts)), names

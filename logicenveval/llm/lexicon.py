@@ -81,9 +81,11 @@ class Lexicon:
         # "the table" for the dining table, "the machine" for the washing machine: a head noun
         # refers to the roles whose names end with it, when no role is named exactly so
         heads: dict[tuple[str, ...], set[str]] = {}
-        for phrase, names in list(lex.phrases.items()):
-            if len(phrase) > 1:
-                for name in names:
+        for name, role in roles.items():
+            cat = catalog.get(role["category"])
+            for n in {role["category"], *(cat.synonyms if cat else ())}:
+                phrase = words_of(n)
+                if len(phrase) > 1:
                     heads.setdefault(phrase[-1:], set()).add(name)
         for head, names in heads.items():
             if head not in lex.phrases:
