@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from logicenveval.errors import TrajectoryError
+from logicenveval.errors import EnvSpecError, TrajectoryError
 from logicenveval.generators.base import GenerationContext
 from logicenveval.generators.plan import PlanLog
 from logicenveval.llm.ask import ask
@@ -84,9 +84,9 @@ class EnvironmentBuilder:
                    seed=self.ctx.seed)
 
     def select_objects(self, env_id: str, rooms: list[dict[str, Any]], facts: list[str],
-                       log: PlanLog) -> list[ObjectDraft]:
+                       log: PlanLog, feedback: list[str] | None = None) -> list[ObjectDraft]:
         categories = sorted(self.ctx.catalog.categories)
-        feedback: list[str] = []
+        feedback = list(feedback or [])
         for attempt in range(self.max_refinements + 1):
             reply = ask(self.ctx.model, "select_objects", self._payload(
                 rooms=rooms, facts=facts, categories=categories, feedback=feedback), ObjectsReply,
@@ -144,12 +144,23 @@ class EnvironmentBuilder:
         if self._floor_plan is None:
             self._floor_plan = self.floor_plan(facts)
         rooms = [r.model_dump() for r in self._floor_plan.rooms]
-        objects = self.select_objects(env_id, rooms, facts, log)
-        relations = self.relations(env_id, objects, log)
-        if self.use_solver:
-            env = self._solve(env_id, rooms, objects, relations, claim, log)
+        feedback: list[str] = []
+        for attempt in range(self.max_refinements + 1):
+            objects = self.select_objects(env_id, rooms, facts, log, feedback)
+            relations = self.relations(env_id, objects, log)
+            try:
+                if self.use_solver:
+                    env = self._solve(env_id, rooms, objects, relations, claim, log)
+                else:
+                    env = self._llm_placement(env_id, rooms, objects, relations, claim)
+                break
+            except EnvSpecError as exc:  # the layout cannot realise this selection: say why
+                feedback = [*feedback, exc.message]
+                log.add("layout", "refine the object selection", env_id=env_id, attempt=attempt,
+                        problems=[exc.message])
         else:
-            env = self._llm_placement(env_id, rooms, objects, relations, claim)
+            raise TrajectoryError(f"{env_id}: no layout for the selected objects: {'; '.join(feedback)}",
+                                  hint="the situation needs objects that do not fit where they must be")
         if plan_task is not None and claim is not None:
             self._check_claim(env, plan_task, claim, log)
         return env

@@ -9,6 +9,7 @@ sofa against a wall", "a chair near its table").
 from __future__ import annotations
 
 import hashlib
+import re
 from typing import Any
 
 from logicenveval.domain.catalog import load_catalog
@@ -63,13 +64,32 @@ def floor_plan(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
     return {"rooms": out}
 
 
+_TOO_BIG = re.compile(r"(\w+) \(\w+\) is larger than the top of (\w+)")
+_NO_FIT = re.compile(r"the objects \[([^\]]*)\] do not fit inside (\w+)")
+
+
+def feedback_facts(feedback: list[str], facts: list[str]) -> list[str]:
+    """Placements the layout rejected, as facts that rule them out (unless the situation needs them)."""
+    required = set(facts)
+    out: list[str] = []
+    for text in feedback:
+        for obj, holder in _TOO_BIG.findall(text):
+            out.append(f"not on({obj}, {holder})")
+        for listed, holder in _NO_FIT.findall(text):
+            names = [n.strip(" '\"") for n in listed.split(",")]
+            out += [f"not inside({n}, {holder})" for n in names[1:]]
+    return [f for f in out if f[4:] not in required]
+
+
 def _task_objects(payload: dict[str, Any]) -> list[dict[str, Any]]:
     """One object per role (id = role name), placed so that the situation facts hold."""
     catalog = load_catalog()
     roles = payload["task"]["roles"]
     objects = []
     extra: dict[str, str] = {}
-    for role, c in realise(payload["task"], list(payload.get("facts") or []), catalog).items():
+    facts = list(payload.get("facts") or [])
+    facts += feedback_facts(list(payload.get("feedback") or []), facts)
+    for role, c in realise(payload["task"], facts, catalog).items():
         if not c.present:
             continue
         placement = c.placement or "floor"
