@@ -269,9 +269,10 @@ class _Reader:
         for i, w in enumerate(words):
             if i in covered or w not in PRONOUNS:
                 continue
-            if w in ("one", "ones") and not (i > 0 and (words[i - 1] in STATE_WORDS or words[i - 1] in
-                                                          COLOR_WORDS or words[i - 1] in {"is", "a", "the"})):
-                continue
+            if w in ("one", "ones") and (i == 0 or words[i - 1] in {"no", "any", "each", "every", "which",
+                                                                   "this", "that", "no"}
+                                          or words[i + 1 : i + 2] == ["of"]):
+                continue  # "one of the cushions", "each one": not an anaphoric "one"
             before = [m for m in found if m.kind == "role" and m.end <= i]
             if w in ("one", "ones"):  # "a dirty one": the kind the clause or sentence is about
                 before = [m for m in before if all(x in ARTICLES | set(STATE_WORDS) for x in words[: m.start])]
@@ -315,7 +316,7 @@ class _Reader:
                     base = self.last_location[r]
                     facts.append(Fact(r, base.condition, "location", base.key, negated=True))
         for m in subjects:
-            before = words[max(0, m.start - 4) : m.start]
+            before = words[max(0, m.start - 6) : m.start]
             if "there" in before or "no" in before[-2:]:
                 facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
                 break
