@@ -97,3 +97,7 @@ class ConfigError(LogicEnvEvalError):
 
 class RunStoreError(LogicEnvEvalError):
     """A run folder is unreadable or belongs to a different configuration."""
+
+
+class MetricsError(LogicEnvEvalError):
+    """Metric inputs are inconsistent (samples of another task, no tasks to aggregate)."""

@@ -29,8 +29,6 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from rich.console import Console
-
     from logicenveval.reporting.tables import markdown
     from logicenveval.runner.config import RunConfig
     from logicenveval.runner.run import run as run_benchmark
@@ -51,8 +49,6 @@ def run(args: argparse.Namespace) -> int:
         run_id=args.run_id,
     )
     outcome = run_benchmark(config, show_progress=not args.quiet)
-    console = Console()
-    console.print(markdown(outcome.results))
-    console.print(f"[bold]run folder:[/bold] {outcome.run_dir}  "
-                  f"(computed {outcome.computed} unit(s), reused {outcome.reused})")
+    print(markdown(outcome.results))
+    print(f"run folder: {outcome.run_dir} (computed {outcome.computed} unit(s), reused {outcome.reused})")
     return 0

@@ -1,0 +1,157 @@
+"""Layout solver benchmark: decomposed Z3 (per floor / surface / wall) vs one monolithic Z3 model.
+
+Rooms of 10, 20, 30, 40 objects: half on the floor (some of them surfaces), a third of the rest
+on surfaces, the rest wall-mounted; a third are task objects; near/edge/far relations. For each
+size: median solve time of `construct_environment`, relaxations, physics pass rate (the physics
+checker when installed, else the scene self-check), and the median of a naive monolithic single
+Z3 model of the same objects (world frame, no decomposition, no relaxation; timeout counts as the
+limit). Last line: `objects=30 median_s=<float> monolithic_median_s=<float> phypr=<float>`.
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import time
+from typing import Any
+
+import numpy as np
+import z3
+
+from logicenveval.domain.catalog import Catalog, load_catalog
+from logicenveval.model.envspec import EnvSpec
+from logicenveval.scene.construct import construct_environment
+from logicenveval.scene.spec import (
+    ObjectRequest,
+    RelationRequest,
+    RoomRequest,
+    SceneSpec,
+    WindowRequest,
+)
+from logicenveval.scene.verify import geometric_failures
+
+FLOOR = ["armchair", "side_table", "ottoman", "floor_lamp", "bookshelf", "toy_box", "trash_can", "stool",
+         "potted_plant", "pet_bed", "chair", "cabinet"]
+SURFACES = ["coffee_table", "dining_table", "desk", "console_table", "tv_stand"]
+ON_TOP = ["book", "mug", "remote_control", "candle", "apple", "cup", "tissue_box", "cell_phone"]
+WALL = ["painting", "wall_clock", "mirror", "bulletin_board", "light_switch"]
+
+
+def room_spec(n: int, seed: int) -> SceneSpec:
+    rng = np.random.default_rng(seed)
+    n_floor = n // 2
+    n_surf = max(1, n_floor // 4)
+    n_on = (n - n_floor) * 2 // 3
+    n_wall = n - n_floor - n_on
+    objs: list[ObjectRequest] = []
+    for i in range(n_surf):
+        objs.append(ObjectRequest(id=f"s{i}", category=SURFACES[i % len(SURFACES)], room="r", task=i % 3 == 0))
+    for i in range(n_floor - n_surf):
+        objs.append(ObjectRequest(id=f"f{i}", category=str(rng.choice(FLOOR)), room="r", task=i % 3 == 0))
+    for i in range(n_on):
+        objs.append(ObjectRequest(id=f"o{i}", category=str(rng.choice(ON_TOP)), room="r",
+                                  placement=f"on:s{i % n_surf}", task=i % 3 == 0))
+    for i in range(n_wall):
+        objs.append(ObjectRequest(id=f"w{i}", category=WALL[i % len(WALL)], room="r", placement="wall",
+                                  task=i % 3 == 0))
+    floor_ids = [o.id for o in objs if o.placement == "floor"]
+    rels = [RelationRequest(type="near", args=(floor_ids[0], floor_ids[1])),
+            RelationRequest(type="edge", args=(floor_ids[-1],)),
+            RelationRequest(type="far", args=(floor_ids[0], floor_ids[-2]))]
+    for k in range(2, min(len(floor_ids) - 1, 2 + n // 10)):
+        rels.append(RelationRequest(type="near", args=(floor_ids[k], floor_ids[k + 1])))
+    area = 14.0 + 1.0 * n
+    room = RoomRequest(id="r", type="LivingRoom", area=area, windows=[WindowRequest(wall="n")])
+    return SceneSpec(task_id="bench", env_id=f"n{n}_{seed}", rooms=[room], objects=objs, relations=rels,
+                     room_timeout_s=30.0)
+
+
+def physics_passes(env: EnvSpec, catalog: Catalog) -> tuple[bool, str]:
+    try:
+        from logicenveval.physics import check_env
+    except ImportError:
+        return (not geometric_failures(env, catalog)), "scene self-check"
+    report: Any = check_env(env, catalog)
+    return bool(report.floor_plan.passed and report.entity.passed and report.relation.passed), "physics.check_env"
+
+
+def monolithic(spec: SceneSpec, catalog: Catalog, timeout_s: float) -> float:
+    """One Z3 model over every object in world cells; returns the solve time (timeout = limit)."""
+    rng = np.random.default_rng(0)
+    g = spec.grid
+    side = spec.rooms[0].area ** 0.5
+    W = D = int(side / g)
+    s = z3.Solver()
+    s.set("timeout", int(timeout_s * 1000))
+    v: dict[str, tuple[Any, Any, Any, Any, Any, int]] = {}
+    for o in spec.objects:
+        c = catalog.categories[o.category]
+        size = [float(rng.uniform(a, b)) for a, b in zip(c.size_min, c.size_max, strict=True)]
+        cx, cz, h = int(np.ceil(size[0] / g)), int(np.ceil(size[2] / g)), int(np.ceil(size[1] / g))
+        x, z, r = z3.Int(f"x_{o.id}"), z3.Int(f"z_{o.id}"), z3.Int(f"r_{o.id}")
+        odd = z3.Or(r == 1, r == 3)
+        wx, wz = z3.If(odd, cz, cx), z3.If(odd, cx, cz)
+        s.add(r >= 0, r <= 3, x >= 0, z >= 0, x + wx <= W, z + wz <= D)
+        v[o.id] = (x, z, wx, wz, r, h)
+        if o.placement == "wall":
+            s.add(z3.Or(x == 0, z == 0, x + wx == W, z + wz == D))
+    by_id = {o.id: o for o in spec.objects}
+    for o in spec.objects:
+        if o.placement.startswith("on:"):
+            x, z, wx, wz, _, _ = v[o.id]
+            px, pz, pwx, pwz, _, _ = v[o.placement[3:]]
+            s.add(x >= px, z >= pz, x + wx <= px + pwx, z + wz <= pz + pwz)
+    ids = list(v)
+    for i, a in enumerate(ids):
+        for b in ids[i + 1:]:
+            pa, pb = by_id[a].placement, by_id[b].placement
+            same_level = pa == pb or (pa in ("floor", "wall") and pb in ("floor", "wall"))
+            if not same_level:
+                continue
+            xa, za, wxa, wza, _, _ = v[a]
+            xb, zb, wxb, wzb, _, _ = v[b]
+            s.add(z3.Or(xa + wxa <= xb, xb + wxb <= xa, za + wza <= zb, zb + wzb <= za))
+    n = int(0.7 / g)
+    for rel in spec.relations:
+        if rel.type == "near":
+            xa, za, wxa, wza, _, _ = v[rel.args[0]]
+            xb, zb, wxb, wzb, _, _ = v[rel.args[1]]
+            s.add(xb - (xa + wxa) <= n, xa - (xb + wxb) <= n, zb - (za + wza) <= n, za - (zb + wzb) <= n)
+    t0 = time.perf_counter()
+    s.check()
+    return min(time.perf_counter() - t0, timeout_s)
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("--rooms", type=int, default=3, help="rooms per size")
+    ap.add_argument("--sizes", default="10,20,30,40")
+    ap.add_argument("--mono-timeout", type=float, default=20.0)
+    args = ap.parse_args()
+    catalog = load_catalog()
+    last = ""
+    for n in (int(x) for x in args.sizes.split(",")):
+        times, mono, relax, passed = [], [], [], []
+        how = ""
+        for k in range(args.rooms):
+            spec = room_spec(n, 1000 * n + k)
+            t0 = time.perf_counter()
+            res = construct_environment(spec, catalog=catalog, rng=np.random.default_rng(k))
+            times.append(time.perf_counter() - t0)
+            relax.append(len(res.relaxation_log))
+            ok, how = physics_passes(res.env, catalog)
+            passed.append(ok)
+            mono.append(monolithic(spec, catalog, args.mono_timeout))
+        med, mmed = statistics.median(times), statistics.median(mono)
+        rate = sum(passed) / len(passed)
+        print(f"objects={n:2d} rooms={args.rooms} median_s={med:.3f} max_s={max(times):.3f} "
+              f"relaxations={statistics.mean(relax):.1f} phypr={rate:.2f} ({how}) "
+              f"monolithic_median_s={mmed:.3f} speedup={mmed / med:.1f}x", flush=True)
+        if n == 30:
+            last = f"objects=30 median_s={med:.3f} monolithic_median_s={mmed:.3f} phypr={rate:.2f}"
+    if last:
+        print(last)
+
+
+if __name__ == "__main__":
+    main()

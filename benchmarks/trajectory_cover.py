@@ -1,0 +1,147 @@
+"""Trajectory selectors on random independent forests, and the per-task table (issue 5).
+
+    python benchmarks/trajectory_cover.py            # forests 6x4, 8x5, 10x6; last line = 8x5 figures
+    python benchmarks/trajectory_cover.py --tasks    # product / MTSA / exact / reference per task
+
+Trees are drawn from a seeded numpy Generator; each subtask's tree has exactly the stated number
+of leaves (random shape, depth up to 3). MTSA and exhaustive are skipped when the product or the
+time budget is too large; the skip is printed, never hidden.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import statistics
+import sys
+import time
+from collections.abc import Callable
+from functools import partial
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+
+from logicenveval.benchmark import load_task, task_ids  # noqa: E402
+from logicenveval.errors import LogicEnvEvalError  # noqa: E402
+from logicenveval.logic.constraints import PathConstraints, task_constraints  # noqa: E402
+from logicenveval.logic.exact import exact_cover  # noqa: E402
+from logicenveval.logic.mtsa import mtsa_impl  # noqa: E402
+from logicenveval.logic.reference import reference_set  # noqa: E402
+from logicenveval.logic.selectors import get_selector, uncovered  # noqa: E402
+from logicenveval.model.task import Leaf, Node, Subtask  # noqa: E402
+from logicenveval.model.tree import DecisionPath, task_paths, tree_paths  # noqa: E402
+
+CASES = [(6, 4), (8, 5), (10, 6)]
+HEADLINE = (8, 5)
+EXHAUSTIVE_MAX = 500_000
+MTSA_BUDGET_S = 20.0
+
+
+def random_tree(rng: np.random.Generator, leaves: int, prefix: str, depth: int = 0) -> Node | Leaf:
+    """A tree with exactly `leaves` leaves: split the leaf count over 2..min(3, leaves) branches."""
+    if leaves == 1:
+        return Leaf(plan=[], goal="true")
+    width = leaves if depth == 2 else int(rng.integers(2, min(3, leaves) + 1))
+    cuts = np.sort(rng.choice(np.arange(1, leaves), size=width - 1, replace=False))
+    sizes = np.diff(np.concatenate(([0], cuts, [leaves]))).tolist()
+    var = f"{prefix}d{depth}_{int(rng.integers(1 << 30))}"
+    return Node(
+        var=var,
+        branches={f"b{k}": random_tree(rng, int(n), f"{prefix}{k}", depth + 1) for k, n in enumerate(sizes)},
+    )
+
+
+def random_forest(rng: np.random.Generator, subtasks: int, paths: int) -> list[list[DecisionPath]]:
+    return [tree_paths(Subtask(id=f"s{i}", tree=random_tree(rng, paths, f"s{i}"))) for i in range(subtasks)]
+
+
+def median_ms(fn: Callable[[], object], repeat: int = 1) -> float:
+    """Median wall time of `fn` in milliseconds over `repeat` runs."""
+    times: list[float] = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        fn()
+        times.append((time.perf_counter() - t0) * 1000)
+    return statistics.median(times)
+
+
+def run_forests(seed: int) -> int:
+    rng = np.random.default_rng(seed)
+    headline: tuple[float, int, int] | None = None
+    print(f"seed={seed}; exact timed as the median of 50 runs, MTSA once (budget {MTSA_BUDGET_S:.0f} s)")
+    print(f"{'case':>6} {'product':>12} {'exhaustive':>22} {'mtsa':>22} {'exact':>18}")
+    for n, k in CASES:
+        forest = random_forest(rng, n, k)
+        product = math.prod(len(p) for p in forest)
+        ex_txt = f"skipped ({product:,})"
+        if product <= EXHAUSTIVE_MAX:
+            t0 = time.perf_counter()
+            ex = get_selector("exhaustive").select(forest)
+            ex_txt = f"{len(ex)} in {(time.perf_counter() - t0) * 1000:.1f} ms"
+            del ex
+        t0 = time.perf_counter()
+        mt = mtsa_impl(forest, PathConstraints(), time.monotonic() + MTSA_BUDGET_S)
+        mt_ms = (time.perf_counter() - t0) * 1000
+        exact = exact_cover(forest).trajectories
+        exact_ms = median_ms(partial(exact_cover, forest), repeat=50)
+        assert not uncovered(exact, forest)
+        mt_txt = f"skipped (> {MTSA_BUDGET_S:.0f} s)" if mt is None else f"{len(mt)} in {mt_ms:.1f} ms"
+        print(f"{n:>2}x{k:<3} {product:>12,} {ex_txt:>22} {mt_txt:>22} {len(exact):>3} in {exact_ms:.3f} ms")
+        if mt is not None:
+            assert not uncovered(mt, forest) and len(exact) <= len(mt)
+        if (n, k) == HEADLINE:
+            if mt is None:
+                print("mtsa did not finish on the headline case", file=sys.stderr)
+                return 1
+            headline = (mt_ms / exact_ms, len(exact), len(mt))
+    assert headline is not None
+    speedup, exact_size, mtsa_size = headline
+    print(f"exact_speedup_vs_mtsa={speedup:.0f} exact_size={exact_size} mtsa_size={mtsa_size}")
+    return 0
+
+
+def run_tasks(tasks_dir: Path) -> int:
+    ids = task_ids(tasks_dir)
+    rows: list[str] = []
+    broken: list[str] = []
+    for task_id in ids:
+        try:
+            task = load_task(task_id, tasks_dir)
+        except LogicEnvEvalError as exc:
+            broken.append(f"{task_id} ({exc.message})")
+            continue
+        paths = task_paths(task)
+        cons = task_constraints(task)
+        product = math.prod(len(p) for p in paths)
+        mt = mtsa_impl(paths, cons, time.monotonic() + MTSA_BUDGET_S)
+        result = exact_cover(paths, cons)
+        ref = reference_set(task)
+        mt_txt = "skipped" if mt is None else str(len(mt))
+        proven = "" if result.optimal else " (not proven)"
+        rows.append(
+            f"| {task.id} | {len(paths)} | {sum(len(p) for p in paths)} | {product:,} | {mt_txt} | "
+            f"{len(result.trajectories)}{proven} | {len(ref)} | {len(cons.forbidden)} |"
+        )
+    print(f"{len(rows)} of {len(ids)} task folders loaded")
+    print("| task | subtasks | paths | product | MTSA | exact | reference (JI) | forbidden pairs |")
+    print("|---|---|---|---|---|---|---|---|")
+    print("\n".join(rows))
+    for b in broken:
+        print(f"not loaded: {b}")
+    return 0
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--tasks", action="store_true", help="print the per-task table instead")
+    parser.add_argument("--tasks-dir", type=Path, default=ROOT / "benchmark_data" / "tasks")
+    parser.add_argument("--seed", type=int, default=0)
+    args = parser.parse_args()
+    return run_tasks(args.tasks_dir) if args.tasks else run_forests(args.seed)
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,46 @@
+"""CoT baseline: one chain-of-thought request designs several environments, instantiated as given.
+
+The model reasons about the situations the task may present and writes every environment
+(rooms, objects with coordinates, attributes, states) as JSON. There is no solver and no repair
+beyond schema validation: physical mistakes are part of what the benchmark measures.
+"""
+
+from __future__ import annotations
+
+from logicenveval.baselines.drafts import env_from_draft
+from logicenveval.errors import ConfigError, LogicEnvEvalError
+from logicenveval.generators.base import GenerationContext, GenerationFailure, GenerationResult
+from logicenveval.llm.ask import ask
+from logicenveval.llm.replies import EnvironmentsReply
+from logicenveval.model.task import TaskBrief
+
+
+class CoT:
+    """Registered as `cot`; `max_environments` bounds how many environments the model may write."""
+
+    def __init__(self, *, name: str = "cot", max_environments: int = 12) -> None:
+        if max_environments < 1:
+            raise ConfigError(f"max_environments must be at least 1, got {max_environments}",
+                              field="cot.max_environments", hint="pass a positive number of environments")
+        self.name = name
+        self.max_environments = max_environments
+
+    def generate(self, brief: TaskBrief, ctx: GenerationContext) -> GenerationResult:
+        payload = {"task": brief.model_dump(mode="json"), "n_environments": self.max_environments,
+                   "categories": sorted(ctx.catalog.categories)}
+        try:
+            reply = ask(ctx.model, "cot_environments", payload, EnvironmentsReply, seed=ctx.seed)
+        except LogicEnvEvalError as exc:
+            return GenerationResult(failures=[GenerationFailure(stage="cot_environments", message=str(exc))])
+        envs = []
+        failures = []
+        for i, draft in enumerate(reply.environments[: self.max_environments]):
+            env_id = f"{self.name}-{i:02d}"
+            try:
+                envs.append(env_from_draft(brief, env_id=env_id, generator=self.name, rooms=list(draft.rooms),
+                                           objects=list(draft.objects), relations=list(draft.relations),
+                                           extra={"situation": draft.situation}))
+            except LogicEnvEvalError as exc:
+                failures.append(GenerationFailure(stage="instantiate", message=str(exc), env_id=env_id))
+        return GenerationResult(envs=envs, failures=failures, artifacts={
+            "reasoning": reply.reasoning, "situations": [d.situation for d in reply.environments]})

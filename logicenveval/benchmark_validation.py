@@ -1,0 +1,304 @@
+"""Semantic validation of benchmark tasks (`tasks validate`, DESIGN.md §4-§5).
+
+Structure is checked by `load_task_file`; this module adds what needs the catalog, a solver or the
+simulator: roles and categories, disjoint subtask roles, exclusive and exhaustive variable values
+(proved with z3 over predicates as free booleans plus the physical axioms), and the four policies
+simulated in every situation (one environment per Cartesian trajectory of decision paths).
+Problems are returned as typed data, never raised, so that one run reports every task.
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import z3
+
+from logicenveval.benchmark import load_task_file, tasks_dir
+from logicenveval.domain.catalog import Catalog, load_catalog
+from logicenveval.errors import LogicEnvEvalError
+from logicenveval.model.conditions import And, Cond, Const, Not, Or, Pred, atoms, parse
+from logicenveval.model.rooms import room_type_of
+from logicenveval.model.task import FAULTY_KINDS, POLICY_KINDS, Leaf, Node, Task
+from logicenveval.model.tree import Trajectory, task_paths
+
+#: verdicts each faulty kind may fail with (DESIGN.md §5, "Faulty kinds map to verdicts")
+FAULT_VERDICTS: dict[str, frozenset[str]] = {
+    "counterfactual": frozenset({"precondition_violation"}),
+    "unreachable": frozenset({"goal_unmet", "tree_failure"}),
+    "lackbranch": frozenset({"tree_failure", "goal_unmet", "precondition_violation"}),
+}
+_MISSING_OBJECT = ("role is not bound", "no such object")
+_Add = Callable[[str, str, str], None]  # add(file, where, message)
+
+
+@dataclass(frozen=True)
+class Problem:
+    """One defect: which task and file, where inside it, and what is wrong."""
+
+    task: str
+    file: str
+    where: str
+    message: str
+
+    def __str__(self) -> str:
+        return f"{self.task}: {self.file}: {self.where}: {self.message}"
+
+
+@dataclass
+class TaskReport:
+    """Outcome of validating one task; `revealing[kind]` lists the situations exposing a fault."""
+
+    task: str
+    problems: list[Problem] = field(default_factory=list)
+    situations: int = 0
+    revealing: dict[str, list[str]] = field(default_factory=dict)
+
+    @property
+    def ok(self) -> bool:
+        return not self.problems
+
+
+def validate_all(directory: str | Path | None = None, catalog: Catalog | None = None,
+                 *, simulate: bool = True) -> list[TaskReport]:
+    """Validate every task folder of `directory` (default: the shipped benchmark)."""
+    d = tasks_dir(directory)
+    folders = sorted(p for p in d.iterdir() if p.is_dir() and not p.name.startswith("."))
+    return [validate_task(f, d, catalog, simulate=simulate) for f in folders]
+
+
+def validate_task(task: Task | str | Path, directory: str | Path | None = None,
+                  catalog: Catalog | None = None, *, simulate: bool = True) -> TaskReport:
+    """Validate one task given as a `Task`, a task folder or a task id within `directory`."""
+    d = tasks_dir(directory)
+    cat = catalog if catalog is not None else load_catalog()
+    if isinstance(task, Task):
+        folder, name = d / task.id, task.id
+    else:
+        p = Path(task)
+        folder = p if p.is_dir() else d / str(task)
+        name = folder.name
+    report = TaskReport(task=name)
+    if not isinstance(task, Task):
+        try:
+            task = load_task_file(folder / "task.json")
+        except LogicEnvEvalError as exc:
+            report.problems.append(Problem(name, "task.json", exc.field or "-", str(exc)))
+            return report
+    _impl_validate(task, folder, cat, report, simulate)
+    return report
+
+
+def _impl_validate(task: Task, folder: Path, cat: Catalog, report: TaskReport,
+                   simulate: bool) -> None:
+    def add(file: str, where: str, message: str) -> None:
+        report.problems.append(Problem(task.id, file, where, message))
+
+    for role, spec in task.roles.items():
+        category = cat.get(spec.category)
+        if category is None:
+            add("task.json", f"roles.{role}.category",
+                f"category {spec.category!r} is not in the catalog (fix: use a catalog category "
+                "or add it to benchmark_data/catalog_requests.txt)")
+            continue
+        for key, value in spec.attributes.items():
+            domain = category.attributes.get(key)
+            if domain is not None and value not in domain:
+                add("task.json", f"roles.{role}.attributes.{key}",
+                    f"value {value!r} is not in the catalog domain {domain} of {spec.category!r}")
+    _check_disjoint(task, add)
+    _check_values(task, add)
+    policies = _load_policies(task, folder, add)
+    if report.problems or not simulate or len(policies) < len(POLICY_KINDS):
+        return
+    _check_policies(task, folder, cat, policies, report, add)
+
+
+def _check_disjoint(task: Task, add: _Add) -> None:
+    owner: dict[str, str] = {}
+    for st in task.subtasks:
+        for role in sorted(task.subtask_roles(st)):
+            first = owner.setdefault(role, st.id)
+            if first != st.id:
+                add("task.json", f"subtasks.{st.id}",
+                    f"role {role!r} is tested by variables of subtasks {first!r} and {st.id!r}; "
+                    "variables of different subtasks must test disjoint roles")
+
+
+# ----- exclusive / exhaustive values ----------------------------------------------------------
+
+class _Axioms:
+    """Predicates as free z3 booleans, constrained by the physical axioms of DESIGN.md §4."""
+
+    def __init__(self, task: Task) -> None:
+        self.task = task
+        self.vars: dict[Pred, z3.BoolRef] = {}
+        preds: set[Pred] = set()
+        for var in task.variables.values():
+            for text in var.values.values():
+                preds |= set(atoms(parse(text)))
+        self.axioms: list[z3.BoolRef] = []
+        mentioned_exists = {p.args[0] for p in preds if p.name == "exists"}
+        for role in task.roles:
+            if role not in mentioned_exists:
+                self.axioms.append(self.atom(Pred("exists", (role,))))
+        by_subject: dict[str, list[Pred]] = {}
+        for p in sorted(preds, key=str):
+            by_subject.setdefault(p.args[0], []).append(p)
+        for subject, ps in by_subject.items():
+            placed = [self.atom(p) for p in ps if p.name in ("on", "inside")]
+            rooms = {room_type_of(p.args[1]): p for p in ps if p.name == "in_room"}
+            self._at_most_one(placed)
+            self._at_most_one([self.atom(p) for p in rooms.values()])
+            keys = {p.args[1] for p in ps if p.name == "attr"}
+            for key in keys:
+                self._at_most_one([self.atom(p) for p in ps if p.name == "attr" and p.args[1] == key])
+            if subject in task.roles:
+                ex = self.atom(Pred("exists", (subject,)))
+                for p in ps:
+                    if p.name != "exists":
+                        self.axioms.append(z3.Implies(self.atom(p), ex))
+        for p in preds:
+            if p.name in ("on", "inside") and p.args[1] in task.roles:
+                self.axioms.append(z3.Implies(self.atom(p), self.atom(Pred("exists", (p.args[1],)))))
+
+    def _at_most_one(self, lits: list[z3.BoolRef]) -> None:
+        for a, b in itertools.combinations(lits, 2):
+            self.axioms.append(z3.Not(z3.And(a, b)))
+
+    def atom(self, p: Pred) -> z3.BoolRef:
+        if p.name == "in_room":
+            p = Pred("in_room", (p.args[0], room_type_of(p.args[1])))
+        got = self.vars.get(p)
+        if got is None:
+            got = self.vars[p] = z3.Bool(f"{p.name}({', '.join(p.args)})")
+        return got
+
+    def cond(self, c: Cond) -> z3.BoolRef:
+        if isinstance(c, Const):
+            return z3.BoolVal(c.value)
+        if isinstance(c, Pred):
+            return self.atom(c)
+        if isinstance(c, Not):
+            return z3.Not(self.cond(c.operand))
+        if isinstance(c, And):
+            return z3.And(*[self.cond(o) for o in c.operands])
+        assert isinstance(c, Or)
+        return z3.Or(*[self.cond(o) for o in c.operands])
+
+    def witness(self, *formulas: z3.BoolRef) -> str | None:
+        """A satisfying assignment of the true atoms, or None when the formulas are unsat."""
+        s = z3.Solver()
+        s.add(*self.axioms, *formulas)
+        if s.check() != z3.sat:
+            return None
+        m = s.model()
+        true = sorted(str(v) for v in self.vars.values() if z3.is_true(m.eval(v)))
+        return "{" + ", ".join(true) + "}"
+
+
+def _check_values(task: Task, add: _Add) -> None:
+    enc = _Axioms(task)
+    for st in task.subtasks:
+        _check_node(task, enc, st.tree, [], f"subtasks.{st.id}.tree", add)
+
+
+def _check_node(task: Task, enc: _Axioms, node: Node | Leaf, path: list[z3.BoolRef], where: str,
+                add: _Add) -> None:
+    if isinstance(node, Leaf):
+        return
+    var = task.variables[node.var]
+    conds = {v: enc.cond(var.condition(v)) for v in var.values}
+    if enc.witness(*path) is None:
+        add("task.json", where, "this node is unreachable: the path conditions leading to it "
+            "contradict each other or the physical axioms")
+        return
+    for (a, ca), (b, cb) in itertools.combinations(conds.items(), 2):
+        w = enc.witness(*path, ca, cb)
+        if w is not None:
+            add("task.json", f"variables.{node.var}",
+                f"values {a!r} and {b!r} overlap at {where} (both hold in {w}); values must be "
+                "mutually exclusive")
+    w = enc.witness(*path, z3.Not(z3.Or(*conds.values())))
+    if w is not None:
+        add("task.json", f"variables.{node.var}",
+            f"values {sorted(conds)} are not exhaustive at {where}: none holds in {w}; add a value "
+            "or an explicit `not exists(...)` case")
+    for value, child in node.branches.items():
+        _check_node(task, enc, child, [*path, conds[value]], f"{where}.branches.{value}", add)
+
+
+# ----- policies ---------------------------------------------------------------------------------
+
+def _load_policies(task: Task, folder: Path, add: _Add) -> dict[str, object]:
+    from logicenveval.sim.loader import load_policy
+
+    loaded: dict[str, object] = {}
+    for kind in POLICY_KINDS:
+        rel = task.policies.get(kind)
+        if rel is None:
+            add("task.json", "policies", f"no {kind!r} policy declared")
+            continue
+        try:
+            loaded[kind] = load_policy(folder / rel, roles=task.roles, rooms=task.rooms)
+        except LogicEnvEvalError as exc:
+            add(rel, exc.field or (f"line {exc.line}" if exc.line else "-"), str(exc))
+    return loaded
+
+
+def situations(task: Task) -> list[Trajectory]:
+    """Every logical trajectory: the Cartesian product of the subtasks' decision paths."""
+    return [Trajectory(tuple(combo)) for combo in itertools.product(*task_paths(task))]
+
+
+def _check_policies(task: Task, folder: Path, cat: Catalog, policies: dict[str, object],
+                    report: TaskReport, add: _Add) -> None:
+    from logicenveval.sim.policy import Policy
+    from logicenveval.sim.simulator import simulate
+    from logicenveval.sim.situations import situation_env
+
+    passed: dict[str, list[str]] = {k: [] for k in POLICY_KINDS}
+    failed: dict[str, list[tuple[str, str, str]]] = {k: [] for k in POLICY_KINDS}
+    for traj in situations(task):
+        report.situations += 1
+        try:
+            env = situation_env(task, traj, cat)
+        except LogicEnvEvalError as exc:
+            add("task.json", f"situation {traj.key}", f"cannot be realised: {exc.message}")
+            continue
+        for kind, policy in policies.items():
+            assert isinstance(policy, Policy)
+            v = simulate(policy, env, task, cat)
+            if v.status == "passed":
+                passed[kind].append(traj.key)
+            else:
+                failed[kind].append((traj.key, v.status, v.message or ""))
+    files = task.policies
+    for key, status, message in failed["correct"]:
+        add(files["correct"], f"situation {key}",
+            f"the correct policy fails ({status}: {message})")
+    for kind in FAULTY_KINDS:
+        report.revealing[kind] = [k for k, _, _ in failed[kind]]
+        if not failed[kind]:
+            add(files[kind], "all situations",
+                f"the {kind} policy passes every situation; a faulty policy must fail in at least one")
+        if not passed[kind]:
+            add(files[kind], "all situations",
+                f"the {kind} policy fails every situation; it must pass in at least one")
+        for key, status, message in failed[kind]:
+            if not _fits(kind, status, message):
+                add(files[kind], f"situation {key}",
+                    f"fails with {status} ({message}), which is not a {kind} fault; expected "
+                    f"{sorted(FAULT_VERDICTS[kind])}")
+
+
+def _fits(kind: str, status: str, message: str) -> bool:
+    if status not in FAULT_VERDICTS[kind]:
+        return False
+    if kind == "lackbranch" and status == "precondition_violation":
+        return any(m in message for m in _MISSING_OBJECT)
+    return True
+
+

@@ -1,0 +1,56 @@
+"""`check-env ENV.json [--json] [--render OUT.svg|OUT.png]`: PhyPR check of one environment.
+
+Exit 0 when all three dimensions pass, 1 otherwise, 2 on a malformed file (via the CLI's error
+handler).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("env", metavar="ENV.json", help="EnvSpec file to check")
+    parser.add_argument("--json", action="store_true", help="print the report as JSON")
+    parser.add_argument("--render", metavar="OUT", help="write a top-down render (.svg or .png)")
+
+
+def run(args: argparse.Namespace) -> int:
+    from pathlib import Path
+
+    from rich.console import Console
+    from rich.table import Table
+
+    from logicenveval.envfiles import load_env
+    from logicenveval.errors import ConfigError
+    from logicenveval.physics import DIMENSIONS, check_env
+    from logicenveval.physics.render import render_png, render_svg
+
+    if args.render and Path(args.render).suffix.lower() not in (".svg", ".png"):
+        raise ConfigError(f"unsupported render format {Path(args.render).suffix!r}", field="--render",
+                          hint="name the output file OUT.svg or OUT.png")
+    env = load_env(args.env)
+    report = check_env(env, mesh_dir=Path(args.env).parent)
+    if args.render:
+        out = Path(args.render)
+        if out.suffix.lower() == ".svg":
+            out.parent.mkdir(parents=True, exist_ok=True)
+            out.write_text(render_svg(env, report), encoding="utf-8")
+        else:
+            render_png(env, out, report)
+    if args.json:
+        print(json.dumps(report.model_dump(mode="json"), indent=2))
+    else:
+        console = Console()
+        table = Table(title=f"PhyPR check of {env.env_id}")
+        for col in ("dimension", "result", "code", "objects", "message"):
+            table.add_column(col)
+        for dim in DIMENSIONS:
+            rep = getattr(report, dim)
+            if rep.passed:
+                table.add_row(dim, "[green]pass[/]", "", "", "")
+            for f in rep.failures:
+                table.add_row(dim, "[red]FAIL[/]", f.code, ", ".join(f.objects + f.rooms), f.message)
+        console.print(table)
+    return 0 if report.passed else 1

@@ -1,0 +1,98 @@
+"""`simulate`: run one policy (BT) of a task in an EnvSpec or in a GT situation."""
+
+from __future__ import annotations
+
+import argparse
+import json
+
+from logicenveval.errors import ConfigError
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--task", required=True, help="task id (folder under the tasks dir)")
+    parser.add_argument("--policy", required=True,
+                        help="correct|counterfactual|unreachable|lackbranch or a BT.CPP v4 XML file")
+    where = parser.add_mutually_exclusive_group(required=True)
+    where.add_argument("--env", help="EnvSpec JSON file to run in")
+    where.add_argument("--situation",
+                       help="GT situation as var=value,... (a symbolic environment is built)")
+    parser.add_argument("--trace", action="store_true", help="print every leaf tick")
+    parser.add_argument("--json", action="store_true", help="print the verdict as JSON")
+    parser.add_argument("--tick-limit", type=int, default=50, help="root ticks (default 50)")
+    parser.add_argument("--tasks-dir", default=None, help="tasks folder (default: the benchmark's)")
+    parser.add_argument("--catalog", default=None, help="catalog.json (default: the benchmark's)")
+
+
+def _situation(text: str) -> dict[str, str]:
+    out: dict[str, str] = {}
+    for part in filter(None, (p.strip() for p in text.split(","))):
+        key, sep, value = part.partition("=")
+        if not sep or not key.strip() or not value.strip():
+            raise ConfigError(f"--situation item {part!r} is not var=value", field="--situation",
+                              hint="e.g. --situation toy_on_floor=yes,toy_kind=doll")
+        out[key.strip()] = value.strip()
+    return out
+
+
+def run(args: argparse.Namespace) -> int:
+    from pathlib import Path
+
+    from logicenveval.benchmark import load_task, policy_path
+    from logicenveval.domain.catalog import load_catalog
+    from logicenveval.envfiles import load_env
+    from logicenveval.model.task import POLICY_KINDS
+    from logicenveval.model.tree import trajectory_from_assignment
+    from logicenveval.sim.simulator import simulate_file
+    from logicenveval.sim.situations import situation_env
+
+    if args.tick_limit < 1:
+        raise ConfigError("--tick-limit must be at least 1", field="--tick-limit", hint="use 50")
+    task = load_task(args.task, args.tasks_dir)
+    catalog = load_catalog(args.catalog)
+    if args.policy in POLICY_KINDS:
+        path = policy_path(task, args.policy, args.tasks_dir)
+    else:
+        path = Path(args.policy)
+        if not path.is_file():
+            raise ConfigError(f"--policy {args.policy!r} is neither a policy kind nor a file",
+                              field="--policy", hint=f"use one of {list(POLICY_KINDS)} or a path")
+    if args.env:
+        env = load_env(args.env)
+    else:
+        try:
+            trajectory = trajectory_from_assignment(task, _situation(args.situation))
+        except ValueError as exc:
+            raise ConfigError(str(exc), field="--situation",
+                              hint="give var=value for every variable the trees ask") from None
+        env = situation_env(task, trajectory, catalog)
+    verdict = simulate_file(path, env, task, catalog, tick_limit=args.tick_limit, trace=args.trace)
+    if args.json:
+        print(json.dumps(verdict.model_dump(mode="json"), indent=2))
+    else:
+        _print(verdict, str(path), env.env_id)
+    return 0 if verdict.passed else 1
+
+
+def _print(verdict: object, policy: str, env_id: str) -> None:
+    from rich.console import Console
+    from rich.table import Table
+
+    from logicenveval.sim.verdict import Verdict
+
+    assert isinstance(verdict, Verdict)
+    console = Console()
+    colour = "green" if verdict.passed else "red"
+    console.print(f"[bold]{policy}[/] in [bold]{env_id}[/]: [{colour} bold]{verdict.status}[/]"
+                  f" after {verdict.ticks} tick(s)")
+    if verdict.fault_path:
+        console.print(f"  fault at [bold]{verdict.fault_node}[/] ({verdict.fault_path})")
+    if verdict.message:
+        console.print(f"  {verdict.message}", markup=False)
+    if verdict.goal is not None:
+        console.print(f"  goal: {verdict.goal} -> {verdict.goal_holds}", markup=False)
+    if verdict.trace:
+        table = Table("tick", "node", "status", "path / detail")
+        for ev in verdict.trace:
+            table.add_row(str(ev["tick"]), str(ev["node"]), str(ev["status"]),
+                          str(ev.get("detail") or ev["path"]))
+        console.print(table)

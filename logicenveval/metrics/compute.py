@@ -1,0 +1,179 @@
+"""Per-task metrics and their aggregation into the `results.<generator>` shape (DESIGN.md §7, §9).
+
+Decisions where DESIGN.md is silent (docs/logic.md):
+- coverage (LogCov, LD, JI) counts only well-formed environments: an ill-formed one realises no
+  well-defined trajectory;
+- a failed generation (`n_failed`: a unit slot that produced no environment) covers nothing and
+  counts as a failing environment in the PhyPR and SceVR denominators, so failing never pays;
+- ST averages, over the BTs that were simulated, the per-BT sum of simulation ms over the task's
+  environments.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import pandas as pd
+from pydantic import BaseModel, ConfigDict, Field
+
+from logicenveval.errors import MetricsError
+from logicenveval.logic.reference import jaccard, reference_set
+from logicenveval.metrics.records import EnvSample
+from logicenveval.model.task import FAULTY_KINDS, POLICY_KINDS, Task
+from logicenveval.model.tree import all_path_keys, atomic_conditions
+
+
+class TaskMetrics(BaseModel):
+    """One generator's figures on one task, plus the counts aggregation needs."""
+
+    model_config = ConfigDict(frozen=True)
+    task_id: str
+    n_envs: int
+    n_failed: int = 0
+    n_floor_plan_ok: int
+    n_entity_ok: int
+    n_relation_ok: int
+    #: environments that are well-formed and in which the correct BT passes
+    n_valid: int
+    logcov: float
+    ld: float
+    ji: float
+    redundancy: float
+    min_cover: int
+    #: faulty kind -> its BT fails in at least one valid environment
+    faudr: dict[str, bool]
+    st_ms: float
+    covered_paths: list[str] = Field(default_factory=list)
+    realised_trajectories: list[str] = Field(default_factory=list)
+
+
+class PhyPR(BaseModel):
+    model_config = ConfigDict(frozen=True)
+    floor_plan: float
+    entity: float
+    relation: float
+    avg: float
+
+
+class FauDR(BaseModel):
+    model_config = ConfigDict(frozen=True)
+    counterfactual: float
+    unreachable: float
+    lackbranch: float
+    avg: float
+
+
+class GeneratorMetrics(BaseModel):
+    """Exactly the keys of `results.<generator>` in DESIGN.md §9."""
+
+    model_config = ConfigDict(frozen=True)
+    phypr: PhyPR
+    logcov: float
+    ld: float
+    scevr: float
+    faudr: FauDR
+    st_ms: float
+    ji: float
+    redundancy: float
+    n_envs: int
+
+
+def _is_valid(sample: EnvSample) -> bool:
+    return sample.well_formed and sample.verdicts.get("correct") == "passed"
+
+
+def _check_samples(task: Task, samples: Sequence[EnvSample], n_failed: int) -> set[str]:
+    if n_failed < 0:
+        raise MetricsError(
+            f"n_failed={n_failed} is negative", field="n_failed", hint="count failed generations, >= 0"
+        )
+    keys = set(all_path_keys(task))
+    for s in samples:
+        if s.task_id != task.id:
+            raise MetricsError(
+                f"sample {s.env_id!r} belongs to task {s.task_id!r}, not {task.id!r}",
+                field="samples.task_id",
+                hint="group samples by task before calling task_metrics",
+            )
+        unknown = [k for k in s.covered_paths if k not in keys]
+        if unknown:
+            raise MetricsError(
+                f"sample {s.env_id!r} covers unknown decision path(s) {unknown} of task {task.id!r}",
+                field="samples.covered_paths",
+                hint="re-evaluate the environment against the current task.json (coverage())",
+            )
+    return keys
+
+
+def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0) -> TaskMetrics:
+    keys = _check_samples(task, samples, n_failed)
+    good = [s for s in samples if s.well_formed]
+    covered = {k for s in good for k in s.covered_paths}
+    conditions = set(atomic_conditions(task))
+    met = {tuple(c) for s in good for c in s.conditions} & conditions
+    realised = {s.trajectory for s in good if s.trajectory is not None}
+    reference = [t.key for t in reference_set(task)]
+    valid = [s for s in samples if _is_valid(s)]
+    simulated = [k for k in POLICY_KINDS if any(k in s.sim_ms for s in samples)]
+    st = (
+        sum(sum(s.sim_ms.get(k, 0.0) for s in samples) for k in simulated) / len(simulated)
+        if simulated
+        else 0.0
+    )
+    return TaskMetrics(
+        task_id=task.id,
+        n_envs=len(samples),
+        n_failed=n_failed,
+        n_floor_plan_ok=sum(s.physics.floor_plan for s in samples),
+        n_entity_ok=sum(s.physics.entity for s in samples),
+        n_relation_ok=sum(s.physics.relation for s in samples),
+        n_valid=len(valid),
+        logcov=len(covered) / len(keys),
+        ld=len(met) / len(conditions) if conditions else float(bool(good)),
+        ji=jaccard(realised, reference),
+        redundancy=len(samples) / len(reference),
+        min_cover=len(reference),
+        faudr={
+            k: any(k in s.verdicts and s.verdicts[k] != "passed" for s in valid)
+            for k in FAULTY_KINDS
+        },
+        st_ms=st,
+        covered_paths=sorted(covered),
+        realised_trajectories=sorted(realised),
+    )
+
+
+def aggregate(per_task: Sequence[TaskMetrics]) -> GeneratorMetrics:
+    """Shares over all environments (PhyPR, SceVR) and means over tasks (the rest)."""
+    if not per_task:
+        raise MetricsError(
+            "no task metrics to aggregate", field="per_task", hint="evaluate at least one task"
+        )
+    ids = [t.task_id for t in per_task]
+    if len(set(ids)) != len(ids):
+        raise MetricsError(
+            f"task(s) {sorted({i for i in ids if ids.count(i) > 1})} appear more than once",
+            field="per_task",
+            hint="pass one TaskMetrics per task",
+        )
+    df = pd.DataFrame([t.model_dump() for t in per_task])
+    for kind in FAULTY_KINDS:
+        df[f"faudr_{kind}"] = [t.faudr[kind] for t in per_task]
+    slots = int(df["n_envs"].sum() + df["n_failed"].sum())
+
+    def share(column: str) -> float:
+        return float(df[column].sum()) / slots if slots else 0.0
+
+    phy = [share("n_floor_plan_ok"), share("n_entity_ok"), share("n_relation_ok")]
+    fau = [float(df[f"faudr_{k}"].mean()) for k in FAULTY_KINDS]
+    return GeneratorMetrics(
+        phypr=PhyPR(floor_plan=phy[0], entity=phy[1], relation=phy[2], avg=sum(phy) / 3),
+        logcov=float(df["logcov"].mean()),
+        ld=float(df["ld"].mean()),
+        scevr=share("n_valid"),
+        faudr=FauDR(counterfactual=fau[0], unreachable=fau[1], lackbranch=fau[2], avg=sum(fau) / 3),
+        st_ms=float(df["st_ms"].mean()),
+        ji=float(df["ji"].mean()),
+        redundancy=float(df["redundancy"].mean()),
+        n_envs=int(df["n_envs"].sum()),
+    )

@@ -1,0 +1,14 @@
+"""PhyPR physics checker (floor plan / entity / relation) and top-down renders."""
+
+from logicenveval.physics.check import check_env
+from logicenveval.physics.report import (
+    DEFAULT_TOLERANCES,
+    DIMENSIONS,
+    DimensionReport,
+    PhysicsFailure,
+    PhysicsReport,
+    Tolerances,
+)
+
+__all__ = ["DEFAULT_TOLERANCES", "DIMENSIONS", "DimensionReport", "PhysicsFailure", "PhysicsReport",
+           "Tolerances", "check_env"]

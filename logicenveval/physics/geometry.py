@@ -1,0 +1,172 @@
+"""Geometry of an EnvSpec: room polygons, walls, and objects as oriented boxes (or meshes).
+
+Convention (AI2-THOR): y is up, the floor is the x–z plane. `position` is the bounding-box
+centre, `size` the extents along x, y, z before the rotation `yaw` (degrees) about y. A positive
+yaw maps the local front +z to (sin yaw, 0, cos yaw), so yaw 0 faces +z and yaw 90 faces +x.
+Collision shapes are python-fcl objects built once per object; the broad phase is a
+sort-and-sweep over axis-aligned bounds so that only overlapping candidates reach fcl.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import fcl
+import numpy as np
+import trimesh
+from shapely.geometry import LineString, Polygon
+from shapely.geometry.base import BaseGeometry
+
+from logicenveval.model.envspec import EnvObject, EnvSpec
+
+
+def yaw_matrix(yaw_deg: float) -> np.ndarray:
+    """Rotation about +y by `yaw_deg` (local +z → (sin, 0, cos))."""
+    t = math.radians(yaw_deg)
+    c, s = math.cos(t), math.sin(t)
+    return np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])
+
+
+@dataclass(frozen=True)
+class Body:
+    """One object with geometry: oriented box frame, footprint and fcl collision object."""
+
+    obj: EnvObject
+    center: np.ndarray      # (3,)
+    half: np.ndarray        # (3,) half extents in the local frame
+    rot: np.ndarray         # (3, 3) local → world
+    footprint: Polygon      # x–z projection
+    bottom: float
+    top: float
+    aabb_min: np.ndarray
+    aabb_max: np.ndarray
+    collision: fcl.CollisionObject
+
+    @property
+    def id(self) -> str:
+        return self.obj.id
+
+    @property
+    def xz(self) -> np.ndarray:
+        return np.array([self.center[0], self.center[2]])
+
+    def front(self) -> np.ndarray:
+        """Unit front direction (local +z) in the x–z plane."""
+        return np.array([self.rot[0, 2], self.rot[2, 2]])
+
+    def right(self) -> np.ndarray:
+        """Unit local +x direction in the x–z plane."""
+        return np.array([self.rot[0, 0], self.rot[2, 0]])
+
+    def to_local(self, points: np.ndarray) -> np.ndarray:
+        local: np.ndarray = (points - self.center) @ self.rot
+        return local
+
+    def corners(self) -> np.ndarray:
+        signs = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], float)
+        world: np.ndarray = self.center + (signs * self.half) @ self.rot.T
+        return world
+
+    def back_face_segment(self) -> LineString:
+        """The floor projection of the local −z face (what a wall-mounted object hangs by)."""
+        hx, hz = self.half[0], self.half[2]
+        pts = [self.center + self.rot @ np.array([sx * hx, 0.0, -hz]) for sx in (-1.0, 1.0)]
+        return LineString([(p[0], p[2]) for p in pts])
+
+
+def mesh_path(obj: EnvObject, base_dir: Path | None) -> Path | None:
+    """Where the object's mesh file is expected, or None when it names none."""
+    if not obj.mesh:
+        return None
+    path = Path(obj.mesh)
+    return base_dir / path if not path.is_absolute() and base_dir is not None else path
+
+
+def _mesh_vertices(obj: EnvObject, base_dir: Path | None) -> np.ndarray | None:
+    """Local-frame vertices (centred on the bounding box) of the object's mesh, if it exists."""
+    path = mesh_path(obj, base_dir)
+    if path is None or not path.is_file():
+        return None  # reported as `mesh_not_found` by the entity check; the box stands in
+    mesh = trimesh.load(str(path), force="mesh")
+    assert isinstance(mesh, trimesh.Trimesh)
+    verts = np.asarray(mesh.vertices, dtype=np.float64)
+    centred: np.ndarray = verts - (verts.min(axis=0) + verts.max(axis=0)) / 2.0
+    return centred
+
+
+def build_body(obj: EnvObject, mesh_dir: Path | None = None) -> Body:
+    """Geometry of one object; the caller ensures `position` and `size` are set."""
+    assert obj.position is not None and obj.size is not None
+    center = np.asarray(obj.position, float)
+    half = np.asarray(obj.size, float) / 2.0
+    rot = yaw_matrix(obj.yaw)
+    tf = fcl.Transform(rot, center)
+    verts = _mesh_vertices(obj, mesh_dir)
+    if verts is None:
+        signs = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], float)
+        local = signs * half
+        geom: fcl.CollisionGeometry = fcl.Box(*(2.0 * half))
+    else:
+        local = verts
+        hull = trimesh.Trimesh(vertices=verts).convex_hull
+        model = fcl.BVHModel()
+        model.beginModel(len(hull.vertices), len(hull.faces))
+        model.addSubModel(np.asarray(hull.vertices, float), np.asarray(hull.faces, np.int32))
+        model.endModel()
+        geom = model
+    world = center + local @ rot.T
+    footprint = Polygon(world[:, [0, 2]]).convex_hull
+    if not isinstance(footprint, Polygon):  # degenerate (zero-size) object
+        footprint = Polygon()
+    return Body(
+        obj=obj, center=center, half=half, rot=rot, footprint=footprint,
+        bottom=float(world[:, 1].min()), top=float(world[:, 1].max()),
+        aabb_min=world.min(axis=0), aabb_max=world.max(axis=0),
+        collision=fcl.CollisionObject(geom, tf),
+    )
+
+
+def room_polygon(points: list[tuple[float, float]] | None) -> Polygon | None:
+    if points is None or len(points) < 3:
+        return None
+    return Polygon(points)
+
+
+def penetration_depth(a: Body, b: Body) -> float:
+    """Deepest contact between two bodies according to fcl (0 when they do not collide)."""
+    request = fcl.CollisionRequest(num_max_contacts=8, enable_contact=True)
+    result = fcl.CollisionResult()
+    if fcl.collide(a.collision, b.collision, request, result) == 0:
+        return 0.0
+    return max((float(c.penetration_depth) for c in result.contacts), default=0.0)
+
+
+def candidate_pairs(bodies: list[Body], margin: float = 0.0) -> list[tuple[int, int]]:
+    """Sort-and-sweep broad phase over x, then y and z interval tests: pairs whose AABBs meet."""
+    if not bodies:
+        return []
+    lo = np.array([b.aabb_min for b in bodies]) - margin
+    hi = np.array([b.aabb_max for b in bodies]) + margin
+    order = np.argsort(lo[:, 0], kind="stable")
+    pairs: list[tuple[int, int]] = []
+    active: list[int] = []
+    for i in order:
+        x0 = lo[i, 0]
+        active = [j for j in active if hi[j, 0] >= x0]
+        for j in active:
+            if lo[i, 1] <= hi[j, 1] and lo[j, 1] <= hi[i, 1] and lo[i, 2] <= hi[j, 2] and lo[j, 2] <= hi[i, 2]:
+                pairs.append((min(i, j), max(i, j)))
+        active.append(int(i))
+    return sorted(pairs)
+
+
+def point_to_boundary(geom: BaseGeometry, poly: Polygon) -> float:
+    return float(poly.exterior.distance(geom))
+
+
+def build_bodies(env: EnvSpec, mesh_dir: Path | None = None) -> dict[str, Body]:
+    """Bodies of all objects that have geometry, keyed by id, in EnvSpec order."""
+    return {o.id: build_body(o, mesh_dir) for o in env.objects
+            if o.position is not None and o.size is not None and min(o.size) > 0}

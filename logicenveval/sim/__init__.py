@@ -1,0 +1,1 @@
+"""Behaviour simulator: symbolic world, BT.CPP v4 loader, BT execution, verdicts."""

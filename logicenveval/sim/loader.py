@@ -1,0 +1,388 @@
+"""BehaviorTree.CPP v4 XML <-> `Policy` (DESIGN.md §5).
+
+Parsing goes through defusedxml (no DTDs, no entity expansion) with a tree builder that records
+the line of every element, so each error names the node and its line, and lists the valid names.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+from pathlib import Path
+from typing import Any
+from xml.etree.ElementTree import Element, ParseError, TreeBuilder
+from xml.sax.saxutils import quoteattr
+
+from defusedxml import DefusedXmlException
+from defusedxml.ElementTree import DefusedXMLParser
+
+from logicenveval.domain.actions import ACTIONS, CONDITIONS
+from logicenveval.errors import PolicyFormatError
+from logicenveval.model.rooms import is_room_type
+from logicenveval.sim.policy import (
+    BRANCHING,
+    COMPOSITES,
+    CONSTANT_LEAVES,
+    DECORATORS,
+    NODE_PARAMS,
+    Policy,
+    PolicyNode,
+)
+
+_LINE = "__line__"
+
+
+class UnknownNodeError(PolicyFormatError):
+    """A node ID that is neither a supported BT.CPP node nor in the action library."""
+
+
+class BadPortError(PolicyFormatError):
+    """A leaf with a missing, extra or invalid port (including an unknown role)."""
+
+#: BT.CPP nodes that need wall time, blackboard scripting or ports we do not model (v1)
+REJECTED = frozenset({
+    "Timeout", "Delay", "Sleep", "Script", "ScriptCondition", "Precondition", "SetBlackboard",
+    "UnsetBlackboard", "RunOnce", "Switch2", "Switch3", "Switch4", "Switch5", "Switch6",
+    "ManualSelector", "LoopInt", "LoopDouble", "LoopString", "LoopBool", "PopFromQueue",
+    "QueueSize", "WasEntryUpdated", "SkipUnlessUpdated", "WaitValueUpdate", "ParallelAll",
+    "SequenceStar", "ReactiveSequenceWithMemory", "EntryUpdatedAction", "EntryUpdatedDecorator",
+})
+_SCRIPT_ATTRS = ("_skipIf", "_successIf", "_failureIf", "_while", "_onSuccess", "_onFailure",
+                 "_onHalted", "_post", "_autoremap")
+_BLACKBOARD = re.compile(r"\{[^}]*\}")
+_WRAPPERS = ("Action", "Condition", "Control", "Decorator")
+#: ports whose value may name a room instead of a role
+_ROOM_PORTS = {("Walk", "target"), ("InRoom", "room"), ("AgentIn", "room")}
+#: ports whose value is free text (attribute keys/values, state flags)
+_FREE_PORTS = {("Attr", "key"), ("Attr", "value"), ("State", "flag")}
+_FLOOR_PORTS = {("Place", "target"), ("On", "target"), ("Walk", "target")}
+
+
+def known_nodes() -> list[str]:
+    return sorted({*COMPOSITES, *BRANCHING, *DECORATORS, *CONSTANT_LEAVES, "SubTree",
+                   *ACTIONS, *CONDITIONS})
+
+
+def ports_of(kind: str) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """(required ports, optional ports) of a leaf."""
+    if kind in ACTIONS:
+        return ACTIONS[kind].ports, ACTIONS[kind].optional
+    if kind in CONDITIONS:
+        return CONDITIONS[kind].ports, ()
+    return (), ()
+
+
+class _LineBuilder(TreeBuilder):
+    parser: Any = None
+
+    def start(self, tag: str, attrs: dict[str, str]) -> Element:
+        elem = super().start(tag, attrs)
+        elem.set(_LINE, str(self.parser.parser.CurrentLineNumber))
+        return elem
+
+
+def _parse_xml(text: str, source: str) -> Element:
+    builder = _LineBuilder()
+    parser = DefusedXMLParser(target=builder, forbid_dtd=True)
+    builder.parser = parser
+    try:
+        parser.feed(text)
+        root: Element = parser.close()
+    except ParseError as exc:
+        line = exc.position[0] if getattr(exc, "position", None) else None
+        raise PolicyFormatError(f"not well-formed XML: {exc}", file=source, line=line,
+                                hint="fix the XML syntax") from None
+    except DefusedXmlException as exc:
+        raise PolicyFormatError(f"forbidden XML construct: {exc}", file=source,
+                                hint="remove DTDs and entity declarations") from None
+    return root
+
+
+class _Reader:
+    def __init__(self, source: str, roles: Iterable[str] | None, rooms: Iterable[str] | None):
+        self.source = source
+        self.roles = set(roles) if roles is not None else None
+        self.rooms = set(rooms) if rooms is not None else None
+
+    def fail(self, elem: Element, message: str, hint: str,
+             cls: type[PolicyFormatError] = PolicyFormatError) -> PolicyFormatError:
+        return cls(message, file=self.source, line=int(elem.get(_LINE, "0")) or None,
+                                 hint=hint)
+
+    # ----- one element -------------------------------------------------------------------
+    def node(self, elem: Element) -> PolicyNode:
+        tag = elem.tag
+        attrs = {k: v for k, v in elem.attrib.items() if k != _LINE}
+        kind = tag
+        if tag in _WRAPPERS:
+            if "ID" not in attrs:
+                raise self.fail(elem, f"<{tag}> needs an ID attribute", f'write <{tag} ID="..."/>')
+            kind = attrs.pop("ID")
+        where = f"node <{kind}>"
+        if kind in REJECTED:
+            raise self.fail(elem, f"{where} is not supported: it needs wall time or blackboard "
+                            "scripting, which the symbolic simulator (v1) does not model",
+                            f"rewrite without {kind}; supported: {', '.join(known_nodes())}")
+        for key in _SCRIPT_ATTRS:
+            if key in attrs:
+                raise self.fail(elem, f"{where}: attribute {key!r} (scripting/remapping) is not "
+                                "supported in v1", f"remove {key}")
+        for key, value in attrs.items():
+            if _BLACKBOARD.search(value):
+                raise self.fail(elem, f"{where}: port {key}={value!r} uses a blackboard value; "
+                                "not supported in v1", "write the role name literally")
+        name = attrs.pop("name", None)
+        children = [c for c in elem]
+        if kind == "SubTree":
+            return self._subtree(elem, attrs, children, name)
+        if kind in ACTIONS or kind in CONDITIONS or kind in CONSTANT_LEAVES:
+            if tag == "Condition" and kind in ACTIONS:
+                raise self.fail(elem, f"{kind} is an action, not a condition",
+                                f'write <Action ID="{kind}" .../>')
+            if tag == "Action" and kind in CONDITIONS:
+                raise self.fail(elem, f"{kind} is a condition, not an action",
+                                f'write <Condition ID="{kind}" .../>')
+            if children:
+                raise self.fail(elem, f"{where} is a leaf and cannot have children",
+                                "move the children out of it")
+            return PolicyNode(kind, self._ports(elem, kind, attrs), (), name,
+                              int(elem.get(_LINE, "0")))
+        if kind in COMPOSITES or kind in BRANCHING or kind in DECORATORS:
+            return self._control(elem, kind, attrs, children, name)
+        raise self.fail(elem, f"unknown node <{kind}>",
+                        f"use one of: {', '.join(known_nodes())}", UnknownNodeError)
+
+    def _subtree(self, elem: Element, attrs: dict[str, str], children: list[Element],
+                 name: str | None) -> PolicyNode:
+        sub_id = attrs.pop("ID", None)
+        if sub_id is None:
+            raise self.fail(elem, "<SubTree> needs an ID attribute", '<SubTree ID="TreeName"/>')
+        if attrs:
+            raise self.fail(elem, f"<SubTree ID={sub_id!r}>: port remapping "
+                            f"{sorted(attrs)} is not supported in v1",
+                            "remove the remapping attributes; subtrees see the same roles")
+        if children:
+            raise self.fail(elem, "<SubTree> cannot have children", "define them in its BehaviorTree")
+        return PolicyNode("SubTree", (("ID", sub_id),), (), name, int(elem.get(_LINE, "0")))
+
+    def _control(self, elem: Element, kind: str, attrs: dict[str, str], children: list[Element],
+                 name: str | None) -> PolicyNode:
+        allowed = NODE_PARAMS.get(kind, {})
+        extra = sorted(set(attrs) - set(allowed))
+        if extra:
+            raise self.fail(elem, f"node <{kind}> has unknown parameter(s) {extra}",
+                            f"valid: {sorted(allowed) or 'none'}")
+        params: list[tuple[str, str]] = []
+        for key, (required, _default) in allowed.items():
+            if key not in attrs:
+                if required:
+                    raise self.fail(elem, f"node <{kind}> needs parameter {key!r}",
+                                    f'add {key}="N" (-1 means unbounded)')
+                continue
+            try:
+                value = int(attrs[key])
+            except ValueError:
+                raise self.fail(elem, f"node <{kind}>: {key}={attrs[key]!r} is not an integer",
+                                f'write {key}="3"') from None
+            params.append((key, str(value)))
+        n = len(children)
+        if kind in DECORATORS and n != 1:
+            raise self.fail(elem, f"decorator <{kind}> needs exactly one child, has {n}",
+                            "wrap several children in a Sequence")
+        if kind in BRANCHING and n not in (2, 3):
+            raise self.fail(elem, f"<{kind}> needs 2 or 3 children (condition, then, else), has {n}",
+                            "give it a condition, a then-branch and optionally an else-branch")
+        if kind in COMPOSITES and n == 0:
+            raise self.fail(elem, f"<{kind}> has no children", "add at least one child")
+        kids = tuple(self.node(c) for c in children)
+        node = PolicyNode(kind, tuple(params), kids, name, int(elem.get(_LINE, "0")))
+        if kind == "Parallel":
+            self._check_parallel(elem, node)
+        return node
+
+    def _check_parallel(self, elem: Element, node: PolicyNode) -> None:
+        n = len(node.children)
+        s = int(node.param("success_count") or -1)
+        threshold = n + s + 1 if s < 0 else s
+        if not 0 <= threshold <= n:
+            raise self.fail(elem, f"<Parallel> success_count={s} is impossible with {n} children",
+                            f"use a value between 1 and {n}, or -1 for all")
+
+    def _ports(self, elem: Element, kind: str, attrs: dict[str, str]) -> tuple[tuple[str, str], ...]:
+        required, optional = ports_of(kind)
+        valid = [*required, *optional]
+        for key in attrs:
+            if key not in valid:
+                raise self.fail(elem, f"node <{kind}> has no port {key!r}",
+                                f"valid ports: {valid or 'none'}", BadPortError)
+        for key in required:
+            if key not in attrs:
+                raise self.fail(elem, f"node <{kind}> is missing port {key!r}",
+                                f"valid ports: {valid}", BadPortError)
+        for key, value in attrs.items():
+            self._check_value(elem, kind, key, value)
+        return tuple((k, attrs[k]) for k in valid if k in attrs)
+
+    def _check_value(self, elem: Element, kind: str, port: str, value: str) -> None:
+        if (kind, port) in _FREE_PORTS or self.roles is None:
+            return
+        if value in self.roles:
+            return
+        if (kind, port) in _FLOOR_PORTS and value == "floor":
+            return
+        if (kind, port) in _ROOM_PORTS and (
+            is_room_type(value) or (self.rooms is not None and value in self.rooms)
+        ):
+            return
+        valid = sorted(self.roles)
+        raise self.fail(elem, f"node <{kind}>: {port}={value!r} is not a role of the task",
+                        f"use one of: {', '.join(valid)}", BadPortError)
+
+    # ----- documents ---------------------------------------------------------------------
+    def document(self, root: Element, path: Path | None, seen: set[str],
+                 trees: dict[str, tuple[PolicyNode, int]]) -> str | None:
+        if root.tag != "root":
+            raise self.fail(root, f"root element is <{root.tag}>, expected <root>",
+                            '<root BTCPP_format="4" main_tree_to_execute="Main">')
+        fmt = root.get("BTCPP_format")
+        if fmt != "4":
+            raise self.fail(root, f"BTCPP_format={fmt!r}; only BehaviorTree.CPP v4 is supported",
+                            'set BTCPP_format="4"')
+        for child in root:
+            if child.tag == "BehaviorTree":
+                self._tree(child, trees)
+            elif child.tag == "include":
+                self._include(child, path, seen, trees)
+            elif child.tag == "TreeNodesModel":
+                self._model(child)
+            else:
+                raise self.fail(child, f"unexpected element <{child.tag}> under <root>",
+                                "use <BehaviorTree>, <include> or <TreeNodesModel>")
+        return root.get("main_tree_to_execute")
+
+    def _tree(self, elem: Element, trees: dict[str, tuple[PolicyNode, int]]) -> None:
+        tree_id = elem.get("ID")
+        if not tree_id:
+            raise self.fail(elem, "<BehaviorTree> needs an ID", '<BehaviorTree ID="Main">')
+        if tree_id in trees:
+            raise self.fail(elem, f"BehaviorTree {tree_id!r} is defined twice", "rename one of them")
+        kids = list(elem)
+        if len(kids) != 1:
+            raise self.fail(elem, f"BehaviorTree {tree_id!r} must have exactly one root node, "
+                            f"has {len(kids)}", "wrap the nodes in a Sequence")
+        trees[tree_id] = (self.node(kids[0]), int(elem.get(_LINE, "0")))
+
+    def _include(self, elem: Element, path: Path | None, seen: set[str],
+                 trees: dict[str, tuple[PolicyNode, int]]) -> None:
+        rel = elem.get("path")
+        if not rel:
+            raise self.fail(elem, "<include> needs a path", '<include path="other.xml"/>')
+        base = path.parent if path is not None else Path.cwd()
+        target = (base / rel).resolve()
+        if str(target) in seen:
+            raise self.fail(elem, f"include cycle through {target}", "remove the circular include")
+        if not target.is_file():
+            raise self.fail(elem, f"included file {rel!r} not found (looked at {target})",
+                            "paths are relative to the including file")
+        sub = _Reader(str(target), self.roles, self.rooms)
+        sub.document(_parse_xml(target.read_text(encoding="utf-8"), str(target)), target,
+                     seen | {str(target)}, trees)
+
+    def _model(self, elem: Element) -> None:
+        for decl in elem:
+            kind = decl.get("ID", "")
+            if decl.tag not in (*_WRAPPERS, "SubTree"):
+                raise self.fail(decl, f"unexpected <{decl.tag}> in TreeNodesModel",
+                                "declare <Action ID=...> or <Condition ID=...>")
+            if decl.tag == "SubTree":
+                continue
+            if kind not in ACTIONS and kind not in CONDITIONS:
+                raise self.fail(decl, f"TreeNodesModel declares unknown node {kind!r}",
+                                f"the action library has: {', '.join([*ACTIONS, *CONDITIONS])}")
+            required, optional = ports_of(kind)
+            declared = {p.get("name", "") for p in decl if p.tag.endswith("port")}
+            if not declared <= {*required, *optional} or not set(required) <= declared:
+                raise self.fail(decl, f"TreeNodesModel ports of {kind} are {sorted(declared)}, "
+                                f"the library's are {[*required, *optional]}",
+                                "declare exactly the library's ports")
+
+
+def policy_from_xml(text: str, source: str = "<string>", *, roles: Iterable[str] | None = None,
+                    rooms: Iterable[str] | None = None, path: Path | None = None) -> Policy:
+    """Parse BT.CPP v4 XML; `roles`/`rooms` (when given) restrict the names ports may use."""
+    reader = _Reader(source, roles, rooms)
+    root = _parse_xml(text, source)
+    trees: dict[str, tuple[PolicyNode, int]] = {}
+    main = reader.document(root, path, {str(path.resolve())} if path else set(), trees)
+    if not trees:
+        raise PolicyFormatError("no <BehaviorTree> in the file", file=source,
+                                hint='add <BehaviorTree ID="Main">...</BehaviorTree>')
+    if main is None:
+        if len(trees) != 1:
+            raise reader.fail(root, "several BehaviorTrees but no main_tree_to_execute",
+                              f"set main_tree_to_execute to one of {sorted(trees)}")
+        main = next(iter(trees))
+    if main not in trees:
+        raise reader.fail(root, f"main_tree_to_execute={main!r} is not a BehaviorTree",
+                          f"use one of {sorted(trees)}")
+    policy = Policy(main, {k: v[0] for k, v in trees.items()}, source)
+    _check_subtrees(policy, reader)
+    return policy
+
+
+def _check_subtrees(policy: Policy, reader: _Reader) -> None:
+    """Every SubTree names a defined tree and no tree includes itself (directly or not)."""
+
+    def visit(node: PolicyNode, stack: tuple[str, ...]) -> None:
+        if node.kind == "SubTree":
+            sub = node.param("ID") or ""
+            if sub not in policy.trees:
+                raise PolicyFormatError(f"<SubTree ID={sub!r}> names no BehaviorTree",
+                                        file=reader.source, line=node.line or None,
+                                        hint=f"use one of {sorted(policy.trees)}")
+            if sub in stack:
+                raise PolicyFormatError(f"SubTree {sub!r} is recursive ({' -> '.join(stack)})",
+                                        file=reader.source, line=node.line or None,
+                                        hint="a tree cannot contain itself")
+            visit(policy.trees[sub], (*stack, sub))
+        for c in node.children:
+            visit(c, stack)
+
+    visit(policy.trees[policy.main], (policy.main,))
+
+
+def load_policy(path: str | Path, roles: Iterable[str] | None = None,
+                rooms: Iterable[str] | None = None) -> Policy:
+    p = Path(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise PolicyFormatError("policy file not found", file=str(p),
+                                hint="give an existing BT.CPP v4 XML file") from None
+    return policy_from_xml(text, str(p), roles=roles, rooms=rooms, path=p)
+
+
+def _emit(node: PolicyNode, depth: int, out: list[str]) -> None:
+    pad = "  " * depth
+    attrs = "".join(f" {k}={quoteattr(v)}" for k, v in node.params)
+    if node.name is not None:
+        attrs = f" name={quoteattr(node.name)}" + attrs
+    if not node.children:
+        out.append(f"{pad}<{node.kind}{attrs}/>")
+        return
+    out.append(f"{pad}<{node.kind}{attrs}>")
+    for c in node.children:
+        _emit(c, depth + 1, out)
+    out.append(f"{pad}</{node.kind}>")
+
+
+def policy_to_xml(policy: Policy) -> str:
+    """BT.CPP v4 XML of a policy (includes inlined), loadable by BT.CPP, Groot2 and us."""
+    out = ['<?xml version="1.0" encoding="UTF-8"?>',
+           f'<root BTCPP_format="4" main_tree_to_execute={quoteattr(policy.main)}>']
+    for tree_id, node in policy.trees.items():
+        out.append(f"  <BehaviorTree ID={quoteattr(tree_id)}>")
+        _emit(node, 2, out)
+        out.append("  </BehaviorTree>")
+    out.append("</root>")
+    return "\n".join(out) + "\n"

@@ -1,0 +1,129 @@
+"""Run a compiled policy in a world and judge it (verdict order of DESIGN.md §5).
+
+`simulate` is the public entry point; `CompiledPolicy` lets callers that run one policy in many
+environments (validation, the throughput benchmark) compile once and reset per episode.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from logicenveval.domain.catalog import Catalog
+from logicenveval.errors import PolicyFormatError
+from logicenveval.model.conditions import Cond, evaluate, to_text
+from logicenveval.model.envspec import EnvSpec
+from logicenveval.model.task import Task
+from logicenveval.model.tree import evaluate_task, goal_of
+from logicenveval.sim.loader import BadPortError, UnknownNodeError, load_policy
+from logicenveval.sim.nodes import (
+    FAILURE,
+    RUNNING,
+    BudgetExceeded,
+    Episode,
+    Node,
+    Violation,
+    compile_policy,
+)
+from logicenveval.sim.policy import Policy
+from logicenveval.sim.verdict import Verdict
+from logicenveval.sim.world import World
+
+
+class CompiledPolicy:
+    """Executable node tree of a policy, reusable across episodes (not thread-safe)."""
+
+    def __init__(self, policy: Policy) -> None:
+        self.policy = policy
+        self.root: Node = compile_policy(policy)
+
+    def run(self, world: World, goal: Cond | None, *, tick_limit: int = 50,
+            trace: bool = False) -> Verdict:
+        """Run one episode on `world` (mutated in place: pass a copy)."""
+        root = self.root
+        root.reset_all()
+        ep = Episode(world, trace=[] if trace else None)
+        status = RUNNING
+        try:
+            while ep.tick < tick_limit:
+                ep.tick += 1
+                status = root.tick(ep)
+                if status != RUNNING:
+                    break
+        except Violation as v:
+            return Verdict(status="precondition_violation", fault_node=v.node.name or v.node.label,
+                           fault_path=v.node.path, message=v.message, ticks=ep.tick,
+                           trace=ep.trace or [], final_state=world.summary())
+        except BudgetExceeded:
+            return Verdict(status="tick_limit", ticks=ep.tick, trace=ep.trace or [],
+                           message="a loop ran without ever returning RUNNING "
+                                   "(node-tick budget exhausted within one tick)",
+                           final_state=world.summary())
+        if status == RUNNING:
+            return Verdict(status="tick_limit", ticks=ep.tick, trace=ep.trace or [],
+                           message=f"root still RUNNING after {tick_limit} ticks",
+                           final_state=world.summary())
+        if status == FAILURE:
+            last = _last_failed_leaf(ep)
+            return Verdict(status="tree_failure", ticks=ep.tick, trace=ep.trace or [],
+                           fault_node=last[0], fault_path=last[1],
+                           message="the root returned FAILURE" + (
+                               f" (last failing leaf: {last[1]})" if last[1] else ""),
+                           final_state=world.summary())
+        if goal is None:
+            return Verdict(status="ill_formed", ticks=ep.tick, trace=ep.trace or [],
+                           message="some GT tree reaches no leaf on the initial state, so the "
+                                   "environment has no goal", final_state=world.summary())
+        ok = evaluate(goal, world.holds)
+        return Verdict(status="passed" if ok else "goal_unmet", ticks=ep.tick,
+                       trace=ep.trace or [], goal_holds=ok, goal=to_text(goal),
+                       message="" if ok else f"goal {to_text(goal)} is false at the end",
+                       final_state=world.summary())
+
+
+def _last_failed_leaf(ep: Episode) -> tuple[str | None, str | None]:
+    node = ep.last_fail
+    return (node.name or node.label, node.path) if node is not None else (None, None)
+
+
+def task_goal(task: Task, world: World) -> Cond | None:
+    """Conjunction of the goals of the GT leaves reached on `world` (None if ill-formed)."""
+    return goal_of(evaluate_task(task, world.holds))
+
+
+_CACHE: dict[int, CompiledPolicy] = {}
+
+
+def compiled(policy: Policy) -> CompiledPolicy:
+    """The compiled form of `policy`, built once per policy object."""
+    got = _CACHE.get(id(policy))
+    if got is None or got.policy is not policy:
+        if len(_CACHE) > 256:
+            _CACHE.clear()
+        got = _CACHE[id(policy)] = CompiledPolicy(policy)
+    return got
+
+
+def simulate(policy: Policy, env: EnvSpec, task: Task, catalog: Catalog | None = None, *,
+             tick_limit: int = 50, trace: bool = False) -> Verdict:
+    """Run `policy` once in `env`'s initial state and judge it against the task's GT goal."""
+    if tick_limit < 1:
+        raise ValueError(f"tick_limit must be >= 1, got {tick_limit}")
+    world = World.from_env(env, catalog)
+    goal = task_goal(task, world)
+    return compiled(policy).run(world, goal, tick_limit=tick_limit, trace=trace)
+
+
+def simulate_file(path: str | Path, env: EnvSpec, task: Task, catalog: Catalog | None = None,
+                  *, tick_limit: int = 50, trace: bool = False) -> Verdict:
+    """Like `simulate` for a policy file; unknown nodes and bad ports become verdicts."""
+    try:
+        policy = load_policy(path, roles=task.roles, rooms=task.rooms)
+    except UnknownNodeError as exc:
+        return Verdict(status="unknown_node", message=str(exc))
+    except BadPortError as exc:
+        return Verdict(status="bad_port", message=str(exc))
+    except PolicyFormatError:
+        raise
+    return simulate(policy, env, task, catalog, tick_limit=tick_limit, trace=trace)
+
+

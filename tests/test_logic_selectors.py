@@ -1,0 +1,214 @@
+"""Selectors over decision paths: registry, MTSA as written, exact minimum cover (issue 5)."""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Sequence
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from logicenveval.benchmark import load_task
+from logicenveval.errors import TrajectoryError
+from logicenveval.logic.constraints import PathConstraints, task_constraints
+from logicenveval.logic.exact import exact_cover, independent_cover
+from logicenveval.logic.mtsa import mtsa_impl
+from logicenveval.logic.selectors import get_selector, selector_names, uncovered
+from logicenveval.model.task import Leaf, Node, Subtask
+from logicenveval.model.tree import DecisionPath, Trajectory, task_paths, tree_paths
+
+TASKS = Path(__file__).resolve().parents[1] / "benchmark_data" / "tasks"
+Forest = list[list[DecisionPath]]
+
+
+@st.composite
+def trees(draw: st.DrawFn, name: str, depth: int = 2) -> Node | Leaf:
+    counter = [0]
+
+    def build(level: int) -> Node | Leaf:
+        if level == depth or not draw(st.booleans()):
+            return Leaf(plan=[], goal="true")
+        counter[0] += 1
+        width = draw(st.integers(1, 3))
+        return Node(var=f"{name}v{counter[0]}", branches={f"b{k}": build(level + 1) for k in range(width)})
+
+    return build(0)
+
+
+@st.composite
+def forests(draw: st.DrawFn, max_subtasks: int = 3) -> Forest:
+    n = draw(st.integers(1, max_subtasks))
+    return [tree_paths(Subtask(id=f"s{i}", tree=draw(trees(f"s{i}")))) for i in range(n)]
+
+
+@st.composite
+def forests_with_pairs(draw: st.DrawFn) -> tuple[Forest, PathConstraints]:
+    forest = draw(forests())
+    cross = [
+        (a.key, b.key)
+        for i, j in itertools.combinations(range(len(forest)), 2)
+        for a in forest[i]
+        for b in forest[j]
+    ]
+    chosen = draw(st.lists(st.sampled_from(cross), max_size=6, unique=True)) if cross else []
+    return forest, PathConstraints.of_pairs(chosen)
+
+
+def _admissible(forest: Forest, cons: PathConstraints) -> list[tuple[DecisionPath, ...]]:
+    return [c for c in itertools.product(*forest) if cons.admits(c)]
+
+
+def _coverable(forest: Forest, cons: PathConstraints) -> bool:
+    return not uncovered([Trajectory(c) for c in _admissible(forest, cons)], forest)
+
+
+def _brute_optimum(forest: Forest, cons: PathConstraints) -> int:
+    """Smallest cover by iterative deepening: branch on the first uncovered path."""
+    trajs = [frozenset(p.key for p in c) for c in _admissible(forest, cons)]
+    keys = [p.key for ps in forest for p in ps]
+
+    def fits(covered: frozenset[str], budget: int) -> bool:
+        missing = next((k for k in keys if k not in covered), None)
+        if missing is None:
+            return True
+        return budget > 0 and any(
+            fits(covered | t, budget - 1) for t in trajs if missing in t
+        )
+
+    return next(k for k in range(len(keys) + 1) if fits(frozenset(), k))
+
+
+def _keys(trajs: Sequence[Trajectory]) -> list[str]:
+    return [t.key for t in trajs]
+
+
+def _paths(sizes: Sequence[int]) -> Forest:
+    return [[DecisionPath(f"s{i}", ((f"v{i}", f"p{a}"),)) for a in range(n)] for i, n in enumerate(sizes)]
+
+
+def test_registry_names_and_unknown_name() -> None:
+    assert selector_names() == ["exhaustive", "mtsa", "exact"]
+    assert all(get_selector(n).name == n for n in selector_names())
+    with pytest.raises(TrajectoryError, match="unknown trajectory selector 'greedy'"):
+        get_selector("greedy")
+
+
+def test_clean_living_room_selectors() -> None:
+    paths = task_paths(load_task("clean_living_room", TASKS))
+    assert [len(p) for p in paths] == [3, 2, 2]
+    assert len(get_selector("exhaustive").select(paths)) == 12
+    mtsa = get_selector("mtsa").select(paths)
+    # Algorithm 1 in lexicographic order: (doll,yes,yes) and (other,no,no) are disjoint from the
+    # pool; (no,yes,yes) is a partial overlap picked by Update.
+    assert [tuple(p.steps[-1][1] for p in t.paths) for t in mtsa] == [
+        ("doll", "yes", "yes"),
+        ("other", "no", "no"),
+        ("no", "yes", "yes"),
+    ]
+    exact = get_selector("exact").select(paths)
+    assert len(exact) == 3 and not uncovered(exact, paths)
+
+
+def test_mtsa_update_step_selects_partial_overlaps() -> None:
+    # 2 x 3: first row (a0,b0) disjoint; (a1,b1) disjoint; (a0,b2) is a partial overlap -> Update.
+    paths = _paths([2, 3])
+    out = get_selector("mtsa").select(paths)
+    assert _keys(out) == [
+        "s0:v0=p0 | s1:v1=p0",
+        "s0:v0=p1 | s1:v1=p1",
+        "s0:v0=p0 | s1:v1=p2",
+    ]
+
+
+def test_mtsa_deadline_returns_none() -> None:
+    assert mtsa_impl(_paths([3, 3]), PathConstraints(), deadline=0.0) is None
+
+
+def test_independent_cover_rows() -> None:
+    rows = independent_cover(_paths([1, 3, 2]))
+    assert [[p.steps[0][1] for p in t.paths] for t in rows] == [
+        ["p0", "p0", "p0"],
+        ["p0", "p1", "p1"],
+        ["p0", "p2", "p1"],
+    ]
+
+
+def test_exact_with_forbidden_pairs_is_proven_optimal() -> None:
+    paths = _paths([2, 2])
+    cons = PathConstraints.of_pairs([("s0:v0=p0", "s1:v1=p0"), ("s0:v0=p1", "s1:v1=p1")])
+    result = exact_cover(paths, cons)
+    assert result.optimal and len(result.trajectories) == 2
+    assert all(cons.admits_trajectory(t) for t in result.trajectories)
+
+
+def test_exact_names_uncoverable_path() -> None:
+    paths = _paths([1, 2])
+    cons = PathConstraints.of_pairs([("s0:v0=p0", "s1:v1=p1")])
+    with pytest.raises(TrajectoryError, match=r"s1:v1=p1"):
+        get_selector("exact").select(paths, cons)
+    with pytest.raises(TrajectoryError, match=r"s1:v1=p1"):
+        get_selector("mtsa").select(paths, cons)
+
+
+@pytest.mark.parametrize(
+    ("pairs", "message"),
+    [
+        ([("s0:v0=p0", "nope")], "unknown decision path"),
+        ([("s0:v0=p0", "s0:v0=p1")], "different subtasks"),
+    ],
+)
+def test_bad_constraints_are_rejected(pairs: list[tuple[str, str]], message: str) -> None:
+    with pytest.raises(TrajectoryError, match=message):
+        get_selector("exact").select(_paths([2, 2]), PathConstraints.of_pairs(pairs))
+
+
+def test_bad_inputs_are_rejected() -> None:
+    with pytest.raises(TrajectoryError, match="no subtasks"):
+        get_selector("mtsa").select([])
+    with pytest.raises(TrajectoryError, match="no decision paths"):
+        get_selector("exact").select([[]])
+    dup = _paths([2])
+    with pytest.raises(TrajectoryError, match="given twice"):
+        get_selector("exhaustive").select([dup[0] + dup[0][:1]])
+
+
+def test_task_constraints_forbid_contradicting_shared_variables() -> None:
+    a = Subtask(id="a", tree=Node(var="x", branches={"yes": Leaf(), "no": Leaf()}))
+    b = Subtask(id="b", tree=Node(var="x", branches={"yes": Leaf(), "no": Leaf()}))
+    forest = [tree_paths(a), tree_paths(b)]
+    task = load_task("clean_living_room", TASKS)
+    assert not task_constraints(task).forbidden  # the paper's subtasks are independent
+    cons = PathConstraints.of_pairs([("a:x=yes", "b:x=no"), ("a:x=no", "b:x=yes")])
+    out = get_selector("exact").select(forest, cons)
+    assert sorted(_keys(out)) == ["a:x=no | b:x=no", "a:x=yes | b:x=yes"]
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(forests())
+def test_property_independent_forests(forest: Forest) -> None:
+    results = {n: get_selector(n).select(forest) for n in selector_names()}
+    for out in results.values():
+        assert not uncovered(out, forest)
+    assert len(results["exact"]) <= len(results["mtsa"])
+    assert len(results["exact"]) == max(len(p) for p in forest) == _brute_optimum(forest, PathConstraints())
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(forests_with_pairs())
+def test_property_forbidden_pairs(case: tuple[Forest, PathConstraints]) -> None:
+    forest, cons = case
+    if not _coverable(forest, cons):
+        for name in ("mtsa", "exact"):
+            with pytest.raises(TrajectoryError, match="occur in no admissible trajectory"):
+                get_selector(name).select(forest, cons)
+        return
+    mtsa = get_selector("mtsa").select(forest, cons)
+    result = exact_cover(forest, cons)
+    for out in (mtsa, list(result.trajectories)):
+        assert not uncovered(out, forest)
+        assert all(cons.admits_trajectory(t) for t in out)
+    assert result.optimal
+    assert len(result.trajectories) <= len(mtsa)
+    assert len(result.trajectories) == _brute_optimum(forest, cons)

@@ -1,0 +1,63 @@
+"""Exporters: ProcTHOR-style house JSON and GLB; spec JSON round trips."""
+
+from __future__ import annotations
+
+import io
+import json
+
+import numpy as np
+import trimesh
+from test_scene_layout import living_spec
+
+from logicenveval.domain.catalog import load_catalog
+from logicenveval.scene.construct import construct_environment
+from logicenveval.scene.export import to_glb, to_procthor
+from logicenveval.scene.spec import SceneResult, SceneSpec
+
+CAT = load_catalog()
+
+
+def _result() -> SceneResult:
+    return construct_environment(living_spec(3), catalog=CAT, rng=np.random.default_rng(5))
+
+
+def test_procthor_house_structure() -> None:
+    env = _result().env
+    house = to_procthor(env, CAT)
+    json.dumps(house)
+    wall_ids = {w["id"] for w in house["walls"]}
+    assert {r["id"] for r in house["rooms"]} == {r.id for r in env.rooms}
+    assert all(len(r["floorPolygon"]) == 4 for r in house["rooms"])
+    for d in house["doors"] + house["windows"]:
+        assert d["wall0"] in wall_ids and d["wall1"] in wall_ids
+        lo, hi = d["holePolygon"]
+        assert hi["x"] > lo["x"] and hi["y"] > lo["y"]
+    flat = []
+    stack = list(house["objects"])
+    while stack:
+        o = stack.pop()
+        flat.append(o)
+        stack += o["children"]
+    assert {o["id"] for o in flat} == {o.id for o in env.objects}
+    sofa = next(o for o in flat if o["id"] == "sofa_1")
+    assert sofa["objectType"] == "Sofa"
+    table = next(o for o in flat if o["id"] == "table_1")
+    assert [c["id"] for c in table["children"]] == ["book_1"]
+
+
+def test_glb_loads_back_with_one_box_per_object() -> None:
+    env = _result().env
+    data = to_glb(env)
+    scene = trimesh.load(io.BytesIO(data), file_type="glb")
+    names = set(scene.graph.nodes_geometry)
+    assert {o.id for o in env.objects} <= names
+    assert len(names) == len(env.objects) + len(env.rooms)
+
+
+def test_spec_and_result_json_round_trip() -> None:
+    spec = living_spec(2)
+    assert SceneSpec.model_validate_json(spec.model_dump_json()) == spec
+    res = _result()
+    again = SceneResult.model_validate_json(res.model_dump_json(by_alias=True))
+    assert again.env.to_json_dict() == res.env.to_json_dict()
+    assert again.relaxation_log == res.relaxation_log

@@ -1,0 +1,186 @@
+"""Layout solver: every returned scene passes geometric checks (physics thresholds of DESIGN.md §7)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from logicenveval.domain.catalog import Catalog, load_catalog
+from logicenveval.errors import EnvSpecError
+from logicenveval.model.envspec import EnvSpec
+from logicenveval.physics import check_env
+from logicenveval.scene.construct import construct_environment
+from logicenveval.scene.objects import enrichment_objects
+from logicenveval.scene.spec import (
+    ObjectRequest,
+    RelationRequest,
+    RoomRequest,
+    SceneSpec,
+    WindowRequest,
+)
+from logicenveval.scene.verify import geometric_failures as _self_check
+
+CAT = load_catalog()
+
+
+def geometric_failures(env: EnvSpec, catalog: Catalog) -> list[str]:
+    """The physics checker's failures (all three dimensions) plus the scene self-check's."""
+    report = check_env(env, catalog)
+    out = [f.message for dim in (report.floor_plan, report.entity, report.relation) for f in dim.failures]
+    return out + _self_check(env, catalog)
+
+
+def living_spec(n_extra: int = 6, seed: int = 0) -> SceneSpec:
+    rng = np.random.default_rng(seed)
+    rooms = [RoomRequest(id="living_room", type="LivingRoom", area=25, adjacent_to=["kitchen"],
+                         windows=[WindowRequest(wall="n")]),
+             RoomRequest(id="kitchen", type="Kitchen", area=15)]
+    objs = [ObjectRequest(id="sofa_1", category="sofa", room="living_room", role="sofa"),
+            ObjectRequest(id="table_1", category="coffee_table", room="living_room", role="table"),
+            ObjectRequest(id="book_1", category="book", room="living_room", role="book", placement="on:table_1"),
+            ObjectRequest(id="box_1", category="toy_box", room="living_room", role="red_box"),
+            ObjectRequest(id="toy_1", category="toy", room="living_room", role="toy", placement="inside:box_1"),
+            ObjectRequest(id="painting_1", category="painting", room="living_room", placement="wall"),
+            ObjectRequest(id="fridge_1", category="fridge", room="kitchen", role="fridge")]
+    objs += enrichment_objects("LivingRoom", rng, n_extra, CAT, room="living_room", exclude=["sofa"])
+    rels = [RelationRequest(type="near", args=("table_1", "sofa_1")),
+            RelationRequest(type="edge", args=("sofa_1",)),
+            RelationRequest(type="in_front_of", args=("table_1", "sofa_1")),
+            RelationRequest(type="far", args=("box_1", "sofa_1"))]
+    return SceneSpec(task_id="t", env_id="e0", rooms=rooms, objects=objs, relations=rels,
+                     claimed_trajectory={"tidy": {"toy_on_floor": "no"}})
+
+
+def test_living_room_scene_is_physically_valid() -> None:
+    res = construct_environment(living_spec(), catalog=CAT, rng=np.random.default_rng(3))
+    env = res.env
+    assert geometric_failures(env, CAT) == []
+    assert env.roles["toy"] == "toy_1" and env.obj("toy_1").container == "box_1"
+    assert env.obj("book_1").support == "table_1"
+    assert env.claimed_trajectory == {"tidy": {"toy_on_floor": "no"}}
+    assert {r.type for r in env.relations} == {"near", "edge", "in_front_of", "far"}
+    assert env.agent.room == "living_room" and env.agent.position is not None
+    assert not [e for e in res.relaxation_log if e.task]
+
+
+def test_deterministic_given_rng() -> None:
+    a = construct_environment(living_spec(), catalog=CAT, rng=np.random.default_rng(7)).env
+    b = construct_environment(living_spec(), catalog=CAT, rng=np.random.default_rng(7)).env
+    assert a.to_json_dict() == b.to_json_dict()
+
+
+def test_in_front_of_and_edge_hold_geometrically() -> None:
+    env = construct_environment(living_spec(0), catalog=CAT, rng=np.random.default_rng(11)).env
+    sofa, table = env.obj("sofa_1"), env.obj("table_1")
+    assert sofa.position is not None and table.position is not None
+    yaw = math.radians(sofa.yaw)
+    front = (math.sin(yaw), math.cos(yaw))  # +z after yaw
+    d = (table.position[0] - sofa.position[0], table.position[2] - sofa.position[2])
+    assert d[0] * front[0] + d[1] * front[1] > 0
+
+
+def test_unsat_enrichment_relation_dropped_with_core_reason() -> None:
+    spec = living_spec(0)
+    extra = ObjectRequest(id="chair_x", category="armchair", room="living_room", task=False)
+    rels = [*spec.relations, RelationRequest(type="near", args=("chair_x", "sofa_1")),
+            RelationRequest(type="far", args=("chair_x", "table_1")),
+            RelationRequest(type="center", args=("chair_x",)), RelationRequest(type="edge", args=("chair_x",))]
+    spec = spec.model_copy(update={"objects": [*spec.objects, extra], "relations": rels})
+    res = construct_environment(spec, catalog=CAT, rng=np.random.default_rng(0))
+    assert res.relaxation_log, "center+edge of one object cannot both hold"
+    assert all(not e.task for e in res.relaxation_log)
+    assert any("center(chair_x)" in e.item or "edge(chair_x)" in e.item for e in res.relaxation_log)
+    assert geometric_failures(res.env, CAT) == []
+
+
+def test_crowded_room_drops_enrichment_objects_never_task_objects() -> None:
+    rooms = [RoomRequest(id="bedroom", type="Bedroom", area=9)]
+    objs = [ObjectRequest(id="bed_1", category="bed", room="bedroom", role="bed")]
+    objs += [ObjectRequest(id=f"w{i}", category="wardrobe", room="bedroom", task=False) for i in range(8)]
+    spec = SceneSpec(task_id="t", env_id="e", rooms=rooms, objects=objs)
+    res = construct_environment(spec, catalog=CAT, rng=np.random.default_rng(0))
+    ids = {o.id for o in res.env.objects}
+    assert "bed_1" in ids and len(ids) < 9
+    assert {e.item for e in res.relaxation_log if e.kind == "object"} == {f"w{i}" for i in range(8)} - ids
+    assert geometric_failures(res.env, CAT) == []
+
+
+def test_impossible_task_objects_raise_precise_error() -> None:
+    rooms = [RoomRequest(id="bathroom", type="Bathroom", area=4)]
+    objs = [ObjectRequest(id=f"bed{i}", category="bed", room="bathroom", role=f"b{i}") for i in range(4)]
+    with pytest.raises(EnvSpecError, match="bathroom"):
+        construct_environment(SceneSpec(task_id="t", env_id="e", rooms=rooms, objects=objs), catalog=CAT,
+                              rng=np.random.default_rng(0))
+
+
+def test_unknown_placement_target_raises() -> None:
+    rooms = [RoomRequest(id="r", type="LivingRoom")]
+    objs = [ObjectRequest(id="a", category="book", room="r", placement="on:nothing", role="a")]
+    with pytest.raises(EnvSpecError, match="unknown object 'nothing'"):
+        construct_environment(SceneSpec(task_id="t", env_id="e", rooms=rooms, objects=objs), catalog=CAT,
+                              rng=np.random.default_rng(0))
+
+
+ROOM_TYPES = ["LivingRoom", "Bedroom", "Kitchen", "Study", "Bathroom"]
+SURFACE_ITEMS = ["book", "mug", "remote_control", "candle", "apple", "laptop"]
+
+
+@st.composite
+def scenes(draw: st.DrawFn) -> tuple[SceneSpec, int]:
+    seed = draw(st.integers(0, 10_000))
+    rng = np.random.default_rng(seed)
+    n_rooms = draw(st.integers(1, 3))
+    rooms = []
+    for i in range(n_rooms):
+        rooms.append(RoomRequest(id=f"room{i}", type=draw(st.sampled_from(ROOM_TYPES)),
+                                 area=draw(st.floats(12, 35)), adjacent_to=[f"room{i - 1}"] if i else [],
+                                 windows=[WindowRequest(wall=draw(st.sampled_from(["n", "s", "e", "w"])))]))
+    objs: list[ObjectRequest] = []
+    for r in rooms:
+        n = draw(st.integers(1, 6))
+        floor = enrichment_objects(r.type, rng, n, CAT, room=r.id, prefix=r.id)
+        for o in floor:
+            task = draw(st.booleans()) and o.placement == "floor"
+            objs.append(o.model_copy(update={"role": f"role_{o.id}" if task else None, "task": task}))
+        surfaces = [o.id for o in floor if CAT.categories[o.category].surface and o.placement == "floor"
+                    and min(CAT.categories[o.category].size_min[0], CAT.categories[o.category].size_min[2]) >= 0.3]
+        for k in range(draw(st.integers(0, 3)) if surfaces else 0):
+            objs.append(ObjectRequest(id=f"{r.id}_item{k}", category=draw(st.sampled_from(SURFACE_ITEMS)), room=r.id,
+                                      placement=f"on:{draw(st.sampled_from(surfaces))}", task=draw(st.booleans())))
+    floor_ids = [o.id for o in objs if o.placement == "floor"]
+    rels: list[RelationRequest] = []
+    for _ in range(draw(st.integers(0, 4))):
+        kind = draw(st.sampled_from(["near", "far", "edge", "center_aligned", "side_of"]))
+        a = draw(st.sampled_from(floor_ids)) if floor_ids else None
+        b = draw(st.sampled_from(floor_ids)) if floor_ids else None
+        if a is None or b is None:
+            break
+        room_of = {o.id: o.room for o in objs}
+        if kind == "edge":
+            rels.append(RelationRequest(type="edge", args=(a,)))
+        elif a != b and room_of[a] == room_of[b]:
+            rels.append(RelationRequest(type=kind, args=(a, b)))
+    return SceneSpec(task_id="t", env_id="e", rooms=rooms, objects=objs, relations=rels), seed
+
+
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(scenes())
+def test_property_every_returned_layout_is_valid(case: tuple[SceneSpec, int]) -> None:
+    spec, seed = case
+    try:
+        res = construct_environment(spec, catalog=CAT, rng=np.random.default_rng(seed))
+    except EnvSpecError as exc:  # task objects that cannot fit are reported, never placed badly
+        assert "do not fit" in str(exc)
+        return
+    assert geometric_failures(res.env, CAT) == []
+    kept = {o.id for o in res.env.objects}
+    assert {o.id for o in spec.objects if o.is_task} <= kept
+    assert all(not e.task for e in res.relaxation_log if e.kind == "object")
+    for r in spec.relations:
+        text = r.text()
+        in_env = any(x.type == r.type and x.args == r.args for x in res.env.relations)
+        assert in_env or any(e.item == text for e in res.relaxation_log)

@@ -1,0 +1,142 @@
+"""BT.CPP v4 loader: both leaf spellings, SubTree/include, errors with line numbers, round trip."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from sim_support import POLICIES, living_room_task
+
+from logicenveval.errors import PolicyFormatError
+from logicenveval.sim.loader import (
+    BadPortError,
+    UnknownNodeError,
+    load_policy,
+    policy_from_xml,
+    policy_to_xml,
+)
+
+ROLES = ["toy", "box", "sofa"]
+
+
+def doc(body: str, extra: str = "") -> str:
+    return ('<root BTCPP_format="4" main_tree_to_execute="Main">\n'
+            f'  <BehaviorTree ID="Main">\n{body}\n  </BehaviorTree>\n{extra}</root>\n')
+
+
+def err(text: str, cls: type[PolicyFormatError] = PolicyFormatError) -> PolicyFormatError:
+    with pytest.raises(cls) as info:
+        policy_from_xml(text, "p.xml", roles=ROLES)
+    return info.value
+
+
+def test_both_leaf_spellings_give_the_same_policy() -> None:
+    a = policy_from_xml(doc('<Sequence><Pick obj="toy"/><On obj="toy" target="floor"/></Sequence>'))
+    b = policy_from_xml(doc('<Sequence><Action ID="Pick" obj="toy"/>'
+                            '<Condition ID="On" obj="toy" target="floor"/></Sequence>'))
+    assert a == b
+
+
+def test_unknown_node_names_line_and_valid_names() -> None:
+    e = err(doc('    <Sequence>\n      <Pick obj="toy"/>\n      <Jump obj="toy"/>\n    </Sequence>'),
+            UnknownNodeError)
+    assert e.line == 5 and "Jump" in str(e) and "PutIn" in str(e) and "p.xml:5" in str(e)
+
+
+def test_missing_and_extra_port() -> None:
+    e = err(doc('    <Place obj="toy"/>'), BadPortError)
+    assert e.line == 3 and "missing port 'target'" in str(e)
+    e = err(doc('    <Pick obj="toy" speed="2"/>'), BadPortError)
+    assert "no port 'speed'" in str(e) and "obj" in str(e)
+
+
+def test_unknown_role() -> None:
+    e = err(doc('    <Sequence>\n      <Walk target="teddy"/>\n    </Sequence>'), BadPortError)
+    assert e.line == 4 and "teddy" in str(e) and "box, sofa, toy" in str(e)
+    # floor and room names are fine where they make sense
+    policy_from_xml(doc('<Sequence><Walk target="Kitchen"/><Place obj="toy" target="floor"/>'
+                        '</Sequence>'), roles=ROLES)
+
+
+@pytest.mark.parametrize("node", ["Timeout msec=\"10\"", "Delay delay_msec=\"5\"",
+                                  "Script code=\"x:=1\"", "SetBlackboard value=\"1\" output_key=\"k\""])
+def test_rejected_nodes(node: str) -> None:
+    e = err(doc(f'    <Sequence>\n      <{node}/>\n    </Sequence>'))
+    assert e.line == 4 and node.split()[0] in str(e) and "not supported" in str(e)
+
+
+def test_blackboard_value_rejected() -> None:
+    e = err(doc('    <Sequence>\n\n      <Pick obj="{target}"/>\n    </Sequence>'))
+    assert e.line == 5 and "blackboard" in str(e)
+
+
+def test_subtree_remapping_rejected() -> None:
+    e = err(doc('    <SubTree ID="Sub" obj="toy"/>',
+                '  <BehaviorTree ID="Sub"><Pick obj="toy"/></BehaviorTree>\n'))
+    assert e.line == 3 and "remapping" in str(e)
+
+
+def test_subtree_unknown_and_recursive() -> None:
+    assert "names no BehaviorTree" in str(err(doc('    <SubTree ID="Nope"/>')))
+    text = doc('    <SubTree ID="Main"/>')
+    assert "recursive" in str(err(text))
+
+
+def test_xml_syntax_and_format() -> None:
+    assert err('<root BTCPP_format="4">\n<BehaviorTree ID="M"><Pick obj="toy">\n</root>').line == 3
+    assert "BTCPP_format" in str(err('<root BTCPP_format="3"><BehaviorTree ID="M"/></root>'))
+
+
+def test_entities_are_forbidden() -> None:
+    text = '<?xml version="1.0"?><!DOCTYPE r [<!ENTITY a "x">]><root BTCPP_format="4"/>'
+    assert "forbidden" in str(err(text)) or "DTD" in str(err(text))
+
+
+def test_tree_nodes_model_checked() -> None:
+    good = ('  <TreeNodesModel>\n    <Action ID="Pick"><input_port name="obj"/></Action>\n'
+            '  </TreeNodesModel>\n')
+    policy_from_xml(doc('    <Pick obj="toy"/>', good))
+    bad = ('  <TreeNodesModel>\n    <Action ID="Fly"><input_port name="obj"/></Action>\n'
+           '  </TreeNodesModel>\n')
+    e = err(doc('    <Pick obj="toy"/>', bad))
+    assert e.line == 6 and "Fly" in str(e)
+
+
+def test_control_node_parameters() -> None:
+    assert "num_attempts" in str(err(doc('<RetryUntilSuccessful><Pick obj="toy"/>'
+                                         '</RetryUntilSuccessful>')))
+    assert "not an integer" in str(err(doc('<Repeat num_cycles="x"><Pick obj="toy"/></Repeat>')))
+    assert "exactly one child" in str(err(doc('<Inverter/>')))
+    assert "2 or 3" in str(err(doc('<IfThenElse><Pick obj="toy"/></IfThenElse>')))
+    assert "impossible" in str(err(doc('<Parallel success_count="3"><Pick obj="toy"/></Parallel>')))
+
+
+def test_include_relative_to_file(tmp_path: Path) -> None:
+    (tmp_path / "sub").mkdir()
+    (tmp_path / "sub" / "lib.xml").write_text(
+        '<root BTCPP_format="4"><BehaviorTree ID="Grab"><Pick obj="toy"/></BehaviorTree></root>')
+    main = tmp_path / "main.xml"
+    main.write_text(doc('<SubTree ID="Grab"/>', '  <include path="sub/lib.xml"/>\n'))
+    p = load_policy(main, roles=ROLES)
+    assert set(p.trees) == {"Main", "Grab"}
+    (tmp_path / "bad.xml").write_text(doc('<SubTree ID="Grab"/>', '  <include path="no.xml"/>\n'))
+    with pytest.raises(PolicyFormatError, match="not found"):
+        load_policy(tmp_path / "bad.xml")
+
+
+@pytest.mark.parametrize("kind", ["correct", "counterfactual", "unreachable", "lackbranch"])
+def test_round_trip(kind: str) -> None:
+    task = living_room_task()
+    p = load_policy(POLICIES / f"{kind}.xml", roles=task.roles, rooms=task.rooms)
+    text = policy_to_xml(p)
+    again = policy_from_xml(text, "export.xml", roles=task.roles)
+    assert again == p
+    assert policy_to_xml(again) == text
+
+
+def test_round_trip_keeps_names_and_params() -> None:
+    p = policy_from_xml(doc('<Parallel name="both" success_count="1" failure_count="2">'
+                            '<Pick obj="toy"/><Repeat num_cycles="2"><AlwaysSuccess/></Repeat>'
+                            '</Parallel>'))
+    assert policy_from_xml(policy_to_xml(p)) == p
+    assert 'name="both"' in policy_to_xml(p)

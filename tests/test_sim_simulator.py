@@ -1,0 +1,222 @@
+"""BT.CPP control-node semantics, verdict order, and properties of the simulator."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from sim_support import small_catalog
+
+from logicenveval.domain.actions import ACTIONS
+from logicenveval.model.envspec import EnvSpec
+from logicenveval.model.task import task_from_dict
+from logicenveval.sim.loader import policy_from_xml
+from logicenveval.sim.simulator import simulate
+from logicenveval.sim.verdict import Verdict
+from logicenveval.sim.world import World
+
+CAT = small_catalog()
+ENV = EnvSpec.model_validate({
+    "task_id": "tidy", "env_id": "e",
+    "rooms": [{"id": "living_room"}, {"id": "kitchen"}],
+    "doors": [{"id": "d", "rooms": ["living_room", "kitchen"]}],
+    "objects": [
+        {"id": "toy_1", "category": "toy", "room": "living_room", "attributes": {"kind": "car"}},
+        {"id": "box_1", "category": "toy_box", "room": "living_room"},
+        {"id": "sofa_1", "category": "sofa", "room": "living_room"},
+        {"id": "fridge_1", "category": "fridge", "room": "kitchen"},
+    ],
+    "roles": {"toy": "toy_1", "box": "box_1", "sofa": "sofa_1", "fridge": "fridge_1"}})
+TASK = task_from_dict({
+    "id": "tidy", "description": "put the toy into the box", "rooms": ["living_room", "kitchen"],
+    "roles": {"toy": {"category": "toy"}, "box": {"category": "toy_box"},
+              "sofa": {"category": "sofa"}, "fridge": {"category": "fridge"}},
+    "variables": {"where": {"question": "toy on floor?",
+                            "values": {"yes": "on(toy, floor)", "no": "not on(toy, floor)"}}},
+    "subtasks": [{"id": "s", "tree": {"var": "where", "branches": {
+        "yes": {"plan": [], "goal": "inside(toy, box)"},
+        "no": {"plan": [], "goal": "true"}}}}]})
+TIDY = '<Walk target="toy"/><Pick obj="toy"/><Walk target="box"/><PutIn obj="toy" target="box"/>'
+
+
+def run(body: str, env: EnvSpec = ENV, **kw: Any) -> Verdict:
+    text = f'<root BTCPP_format="4"><BehaviorTree ID="Main">{body}</BehaviorTree></root>'
+    return simulate(policy_from_xml(text, roles=TASK.roles), env, TASK, CAT, **kw)
+
+
+def walks(v: Verdict) -> int:
+    return sum(1 for e in v.trace if e["node"] == "Walk" and e["status"] == "SUCCESS")
+
+
+# ----- verdict kinds ---------------------------------------------------------------------
+def test_passed_and_one_tick_per_action() -> None:
+    v = run(f"<Sequence>{TIDY}</Sequence>", trace=True)
+    assert v.status == "passed" and v.goal_holds and v.ticks == 5
+    assert v.final_state["roles"]["toy"]["container"] == "box_1"
+
+
+def test_precondition_violation_names_node_and_path() -> None:
+    v = run('<Sequence><Walk target="box"/><PutIn obj="toy" target="box"/></Sequence>')
+    assert v.status == "precondition_violation" and v.fault_node == "PutIn"
+    assert v.fault_path == "Main/Sequence/PutIn[1]" and "not holding" in v.message
+
+
+def test_violation_wins_even_if_fallback_recovers() -> None:
+    v = run(f'<Fallback><Pick obj="toy"/><Sequence>{TIDY}</Sequence></Fallback>')
+    assert v.status == "precondition_violation" and v.fault_node == "Pick"
+
+
+def test_violation_wins_even_if_retry_recovers() -> None:
+    v = run('<RetryUntilSuccessful num_attempts="3"><Sequence><Pick obj="toy"/></Sequence>'
+            '</RetryUntilSuccessful>')
+    assert v.status == "precondition_violation"
+
+
+def test_tree_failure_and_goal_unmet_and_tick_limit() -> None:
+    v = run(f'<Sequence><Inside obj="toy" target="box"/>{TIDY}</Sequence>')
+    assert v.status == "tree_failure" and v.fault_node == "Inside"
+    v = run('<Sequence><Walk target="toy"/><Pick obj="toy"/><Walk target="sofa"/>'
+            '<Place obj="toy" target="sofa"/></Sequence>')
+    assert v.status == "goal_unmet" and v.goal_holds is False
+    v = run(f"<Sequence>{TIDY}</Sequence>", tick_limit=3)
+    assert v.status == "tick_limit" and v.ticks == 3
+    v = run('<KeepRunningUntilFailure><AlwaysSuccess/></KeepRunningUntilFailure>')
+    assert v.status == "tick_limit" and v.ticks == 50
+
+
+def test_endless_loop_within_one_tick_is_tick_limit() -> None:
+    v = run('<RetryUntilSuccessful num_attempts="-1"><AlwaysFailure/></RetryUntilSuccessful>')
+    assert v.status == "tick_limit" and "loop" in v.message
+
+
+def test_ill_formed_when_no_branch_holds() -> None:
+    env = ENV.model_copy(update={"roles": {**ENV.roles, "toy": None}})
+    # an absent toy is neither on the floor nor on the sofa: no branch holds
+    task = TASK.model_copy(update={"variables": {"where": TASK.variables["where"].model_copy(
+        update={"values": {"yes": "on(toy, floor)", "no": "on(toy, sofa)"}})}})
+    text = '<root BTCPP_format="4"><BehaviorTree ID="M"><AlwaysSuccess/></BehaviorTree></root>'
+    v = simulate(policy_from_xml(text), env, task, CAT)
+    assert v.status == "ill_formed" and v.goal_holds is None
+
+
+def test_verdict_json_round_trip() -> None:
+    v = run(f"<Sequence>{TIDY}</Sequence>", trace=True)
+    assert Verdict.model_validate_json(v.model_dump_json()) == v
+
+
+# ----- BT.CPP semantics ------------------------------------------------------------------
+def test_reactive_sequence_rechecks_conditions_each_tick() -> None:
+    guarded = ('<{seq}><Inverter><Holding obj="toy"/></Inverter><Sequence>'
+               '<Walk target="toy"/><Pick obj="toy"/><Walk target="box"/></Sequence></{seq}>')
+    assert run(guarded.format(seq="Sequence")).status == "goal_unmet"  # condition ticked once
+    v = run(guarded.format(seq="ReactiveSequence"))
+    assert v.status == "tree_failure" and v.fault_node == "Holding"
+
+
+def test_sequence_with_memory_resumes_at_failed_child() -> None:
+    body = ('<RetryUntilSuccessful num_attempts="3"><{seq}><Walk target="toy"/>'
+            '<Near obj="box"/></{seq}></RetryUntilSuccessful>')
+    plain = run(body.format(seq="Sequence"), trace=True)
+    memory = run(body.format(seq="SequenceWithMemory"), trace=True)
+    assert plain.status == memory.status == "tree_failure"
+    assert walks(plain) == 3 and walks(memory) == 1
+
+
+def test_fallback_and_reactive_fallback() -> None:
+    assert run(f'<Fallback><Inside obj="toy" target="box"/><Sequence>{TIDY}</Sequence>'
+               '</Fallback>').status == "passed"
+    # the reactive form re-checks the first child each tick; the toy never gets inside until
+    # the end, so the sequence finishes as well
+    assert run(f'<ReactiveFallback><Inside obj="toy" target="box"/><Sequence>{TIDY}</Sequence>'
+               '</ReactiveFallback>').status == "passed"
+    # ReactiveFallback halts the running branch as soon as an earlier child succeeds
+    v = run('<ReactiveFallback><Near obj="toy"/><Sequence><Walk target="toy"/>'
+            '<Walk target="sofa"/></Sequence></ReactiveFallback>', trace=True)
+    assert v.status == "goal_unmet" and walks(v) == 1
+
+
+def test_if_then_else_and_while_do_else() -> None:
+    assert run(f'<IfThenElse><On obj="toy" target="floor"/><Sequence>{TIDY}</Sequence>'
+               '<AlwaysFailure/></IfThenElse>').status == "passed"
+    # two children and a false condition: FAILURE
+    assert run('<IfThenElse><On obj="toy" target="sofa"/><AlwaysSuccess/></IfThenElse>'
+               ).status == "tree_failure"
+    # WhileDoElse re-evaluates the condition and switches branch (halting the other)
+    v = run('<WhileDoElse><Inverter><Holding obj="toy"/></Inverter>'
+            '<Sequence><Walk target="toy"/><Pick obj="toy"/><Walk target="sofa"/></Sequence>'
+            '<Sequence><Walk target="box"/><PutIn obj="toy" target="box"/></Sequence>'
+            '</WhileDoElse>', trace=True)
+    assert v.status == "passed" and walks(v) == 2
+
+
+def test_parallel_counts() -> None:
+    both = '<Parallel{a}><Walk target="toy"/><AlwaysFailure/></Parallel>'
+    assert run(both.format(a="")).status == "tree_failure"  # failure_count=1
+    assert run(both.format(a=' success_count="1" failure_count="2"')).status == "goal_unmet"
+    v = run('<Parallel success_count="2"><Walk target="toy"/><Walk target="box"/></Parallel>',
+            trace=True)
+    assert v.ticks == 2 and walks(v) == 2
+
+
+def test_decorators() -> None:
+    assert run("<Inverter><AlwaysSuccess/></Inverter>").status == "tree_failure"
+    assert run('<ForceFailure><Walk target="toy"/></ForceFailure>').status == "tree_failure"
+    assert run('<ForceSuccess><On obj="toy" target="sofa"/></ForceSuccess>').status == "goal_unmet"
+    v = run('<Repeat num_cycles="3"><Walk target="toy"/></Repeat>', trace=True)
+    assert walks(v) == 3 and v.status == "goal_unmet"
+    v = run('<RetryUntilSuccessful num_attempts="2"><On obj="toy" target="sofa"/>'
+            '</RetryUntilSuccessful>', trace=True)
+    assert v.status == "tree_failure" and len(v.trace) == 2
+
+
+def test_subtree_path() -> None:
+    text = ('<root BTCPP_format="4" main_tree_to_execute="Main">'
+            '<BehaviorTree ID="Main"><Sequence><SubTree ID="Put"/></Sequence></BehaviorTree>'
+            '<BehaviorTree ID="Put"><PutIn obj="toy" target="box"/></BehaviorTree></root>')
+    v = simulate(policy_from_xml(text), ENV, TASK, CAT)
+    assert v.fault_path == "Main/Sequence/SubTree(Put)[0]/PutIn"
+
+
+# ----- properties ------------------------------------------------------------------------
+NAMES = ["toy", "box", "sofa", "fridge", "floor", "kitchen", "living_room"]
+STEP = st.tuples(st.sampled_from(sorted(ACTIONS)), st.sampled_from(NAMES), st.sampled_from(NAMES))
+
+
+def _leaf(step: tuple[str, str, str]) -> str:
+    name, a, b = step
+    spec = ACTIONS[name]
+    args = dict(zip(spec.ports, (a, b), strict=False))
+    return f"<{name} " + " ".join(f'{k}="{v}"' for k, v in args.items()) + "/>"
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(STEP, min_size=1, max_size=8))
+def test_random_sequences_never_mutate_the_env_and_are_deterministic(
+        steps: list[tuple[str, str, str]]) -> None:
+    before = ENV.model_dump_json()
+    body = "<Sequence>" + "".join(_leaf(s) for s in steps) + "</Sequence>"
+    text = f'<root BTCPP_format="4"><BehaviorTree ID="M">{body}</BehaviorTree></root>'
+    policy = policy_from_xml(text)
+    first = simulate(policy, ENV, TASK, CAT, trace=True)
+    assert simulate(policy, ENV, TASK, CAT, trace=True) == first
+    assert ENV.model_dump_json() == before
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(STEP, min_size=1, max_size=10))
+def test_sequences_of_valid_actions_pass_preconditions(steps: list[tuple[str, str, str]]) -> None:
+    world = World.from_env(ENV, CAT)
+    valid: list[str] = []
+    for name, a, b in steps:
+        spec = ACTIONS[name]
+        args = dict(zip(spec.ports, (a, b), strict=False))
+        if spec.check(world, args) is None:
+            spec.apply(world, args)
+            valid.append(_leaf((name, a, b)))
+    if not valid:
+        return
+    body = "<Sequence>" + "".join(valid) + "</Sequence>"
+    text = f'<root BTCPP_format="4"><BehaviorTree ID="M">{body}</BehaviorTree></root>'
+    v = simulate(policy_from_xml(text), ENV, TASK, CAT)
+    assert v.status in ("passed", "goal_unmet") and v.ticks == len(valid) + 1
