@@ -58,6 +58,9 @@ def room_spec(n: int, seed: int) -> SceneSpec:
     rels = [RelationRequest(type="near", args=(floor_ids[0], floor_ids[1])),
             RelationRequest(type="edge", args=(floor_ids[-1],)),
             RelationRequest(type="far", args=(floor_ids[0], floor_ids[-2]))]
+    extra = next(o.id for o in objs if o.placement == "floor" and not o.is_task)
+    rels += [RelationRequest(type="edge", args=(extra,)),  # an LLM-style conflict: relaxation must drop one
+             RelationRequest(type="center", args=(extra,))]
     for k in range(2, min(len(floor_ids) - 1, 2 + n // 10)):
         rels.append(RelationRequest(type="near", args=(floor_ids[k], floor_ids[k + 1])))
     area = 14.0 + 1.0 * n

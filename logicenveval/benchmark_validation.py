@@ -132,10 +132,9 @@ def _check_disjoint(task: Task, add: _Add) -> None:
 class _Axioms:
     """Predicates as free z3 booleans, constrained by the physical axioms of DESIGN.md §4."""
 
-    def __init__(self, task: Task) -> None:
-        self.task = task
+    def __init__(self, task: Task, extra: tuple[Cond, ...] = ()) -> None:
         self.vars: dict[Pred, z3.BoolRef] = {}
-        preds: set[Pred] = set()
+        preds: set[Pred] = {p for c in extra for p in atoms(c)}
         for var in task.variables.values():
             for text in var.values.values():
                 preds |= set(atoms(parse(text)))
@@ -195,8 +194,14 @@ class _Axioms:
         if s.check() != z3.sat:
             return None
         m = s.model()
-        true = sorted(str(v) for v in self.vars.values() if z3.is_true(m.eval(v)))
-        return "{" + ", ".join(true) + "}"
+        facts = []
+        for p, v in sorted(self.vars.items(), key=lambda kv: str(kv[1])):
+            holds = z3.is_true(m.eval(v, model_completion=True))
+            if p.name == "exists":
+                facts += [] if holds else [f"not {v}"]  # present objects are the default
+            elif holds:
+                facts.append(str(v))
+        return "{" + (", ".join(facts) or "every predicate false") + "}"
 
 
 def _check_values(task: Task, add: _Add) -> None:

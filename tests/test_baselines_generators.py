@@ -240,13 +240,18 @@ REAL_CATALOG = Path(__file__).resolve().parents[1] / "benchmark_data" / "catalog
 
 @pytest.mark.skipif(not REAL_CATALOG.exists(), reason="benchmark catalog not written yet")
 def test_every_task_with_the_benchmark_catalog(monkeypatch: pytest.MonkeyPatch) -> None:
-    """Every benchmark task: envs or an explained failure; Holodeck covers fewer paths than CoT."""
+    """Every benchmark task: envs or an explained failure; Holodeck covers fewer paths than CoT and
+    IFG and passes the physics checker."""
     from logicenveval.benchmark import task_ids
     from logicenveval.model.tree import evaluate_task, task_paths
     from logicenveval.sim.world import holds_initial
 
     monkeypatch.setattr(domain.catalog, "DEFAULT_CATALOG", REAL_CATALOG)
     cat = load_catalog()
+    try:
+        import logicenveval.physics as physics
+    except ImportError:
+        physics = None
     coverage: dict[str, list[float]] = {"cot": [], "ifg": [], "holodeck": []}
     for task_id in task_ids(TASKS):
         task = load_task(task_id, TASKS)
@@ -257,6 +262,8 @@ def test_every_task_with_the_benchmark_catalog(monkeypatch: pytest.MonkeyPatch) 
             assert result.envs or all(f.message for f in result.failures)
             if name == "holodeck":
                 assert not _interpenetrations(result.envs[0]), task_id
+                if physics is not None:
+                    assert physics.check_env(result.envs[0], cat).passed, task_id
             covered = {o.path.key for e in result.envs for o in evaluate_task(task, holds_initial(e, cat)) if o.path}
             coverage[name].append(len(covered & total) / len(total))
     mean = {k: sum(v) / len(v) for k, v in coverage.items()}

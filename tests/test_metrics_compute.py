@@ -2,10 +2,9 @@
 
 from __future__ import annotations
 
+import itertools
 import json
 from pathlib import Path
-
-import itertools
 
 import pytest
 from hypothesis import given, settings

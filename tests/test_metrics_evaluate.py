@@ -6,9 +6,13 @@ import json
 from pathlib import Path
 from typing import Any
 
+import pytest
+
+from logicenveval.benchmark import load_task, task_ids
 from logicenveval.metrics.evaluate import Coverage, coverage
 from logicenveval.model.conditions import Holds
 from logicenveval.model.task import Task, task_from_dict
+from logicenveval.model.tree import task_paths
 
 CLR = Path(__file__).resolve().parents[1] / "benchmark_data" / "tasks" / "clean_living_room" / "task.json"
 
@@ -87,3 +91,28 @@ def test_coverage_json_round_trip() -> None:
     task = _task()
     cov = coverage(task, DOLL_BOOK_WIPE, _all_bound(task))
     assert Coverage.model_validate_json(cov.model_dump_json()) == cov
+
+
+def test_situation_envs_realise_their_trajectories() -> None:
+    from logicenveval.logic.reference import reference_set
+    from logicenveval.metrics.evaluate import coverage_of_env
+    from logicenveval.sim.situations import situation_env
+
+    task = _task()
+    for traj in reference_set(task):
+        cov = coverage_of_env(task, situation_env(task, traj))
+        assert cov.well_formed, cov.problems
+        assert cov.trajectory == traj.key
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("task_id", task_ids(CLR.parents[1]))
+def test_every_situation_of_every_task_is_recovered(task_id: str) -> None:
+    from logicenveval.logic.selectors import get_selector
+    from logicenveval.metrics.evaluate import coverage_of_env
+    from logicenveval.sim.situations import situation_env
+
+    task = load_task(task_id, CLR.parents[1])
+    for traj in get_selector("exhaustive").select(task_paths(task)):
+        cov = coverage_of_env(task, situation_env(task, traj))
+        assert cov.well_formed and cov.trajectory == traj.key, (traj.key, cov.problems)

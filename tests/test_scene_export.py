@@ -49,6 +49,7 @@ def test_glb_loads_back_with_one_box_per_object() -> None:
     env = _result().env
     data = to_glb(env)
     scene = trimesh.load(io.BytesIO(data), file_type="glb")
+    assert isinstance(scene, trimesh.Scene)
     names = set(scene.graph.nodes_geometry)
     assert {o.id for o in env.objects} <= names
     assert len(names) == len(env.objects) + len(env.rooms)

@@ -151,10 +151,16 @@ def scenes(draw: st.DrawFn) -> tuple[SceneSpec, int]:
         for k in range(draw(st.integers(0, 3)) if surfaces else 0):
             objs.append(ObjectRequest(id=f"{r.id}_item{k}", category=draw(st.sampled_from(SURFACE_ITEMS)), room=r.id,
                                       placement=f"on:{draw(st.sampled_from(surfaces))}", task=draw(st.booleans())))
+        boxes = [o.id for o in floor if CAT.categories[o.category].container and o.placement == "floor"
+                 and min(CAT.categories[o.category].size_min) >= 0.25]
+        for k in range(draw(st.integers(0, 2)) if boxes else 0):
+            objs.append(ObjectRequest(id=f"{r.id}_in{k}", category=draw(st.sampled_from(["apple", "cup", "candle"])),
+                                      room=r.id, placement=f"inside:{draw(st.sampled_from(boxes))}",
+                                      task=draw(st.booleans())))
     floor_ids = [o.id for o in objs if o.placement == "floor"]
     rels: list[RelationRequest] = []
     for _ in range(draw(st.integers(0, 4))):
-        kind = draw(st.sampled_from(["near", "far", "edge", "center_aligned", "side_of"]))
+        kind = draw(st.sampled_from(["near", "far", "edge", "center_aligned", "side_of", "in_front_of", "face_to"]))
         a = draw(st.sampled_from(floor_ids)) if floor_ids else None
         b = draw(st.sampled_from(floor_ids)) if floor_ids else None
         if a is None or b is None:
@@ -184,3 +190,32 @@ def test_property_every_returned_layout_is_valid(case: tuple[SceneSpec, int]) ->
         text = r.text()
         in_env = any(x.type == r.type and x.args == r.args for x in res.env.relations)
         assert in_env or any(e.item == text for e in res.relaxation_log)
+
+
+def test_ceiling_objects_touch_the_ceiling_clear_of_tall_furniture() -> None:
+    rooms = [RoomRequest(id="bedroom", type="Bedroom", area=12)]
+    objs = [ObjectRequest(id="wardrobe", category="wardrobe", room="bedroom", role="wardrobe"),
+            ObjectRequest(id="fan", category="ceiling_fan", room="bedroom", placement="ceiling", role="fan"),
+            ObjectRequest(id="lamp", category="ceiling_lamp", room="bedroom", placement="ceiling", task=False)]
+    spec = SceneSpec(task_id="t", env_id="e", rooms=rooms, objects=objs, wall_height=2.5)
+    env = construct_environment(spec, catalog=CAT, rng=np.random.default_rng(2)).env
+    fan = env.obj("fan")
+    assert fan.support == "ceiling" and fan.position is not None and fan.size is not None
+    assert abs(fan.position[1] + fan.size[1] / 2 - 2.5) < 1e-6
+    assert geometric_failures(env, CAT) == []
+
+
+def test_bad_enrichment_placements_are_dropped_bad_task_placements_raise() -> None:
+    rooms = [RoomRequest(id="r", type="LivingRoom", area=20)]
+    objs = [ObjectRequest(id="sofa", category="sofa", room="r", role="sofa"),
+            ObjectRequest(id="a", category="side_table", room="r", placement="on:b", task=False),
+            ObjectRequest(id="b", category="side_table", room="r", placement="on:a", task=False),
+            ObjectRequest(id="chair", category="armchair", room="r", placement="wall", task=False)]
+    res = construct_environment(SceneSpec(task_id="t", env_id="e", rooms=rooms, objects=objs), catalog=CAT,
+                                rng=np.random.default_rng(0))
+    assert {o.id for o in res.env.objects} == {"sofa"}
+    assert {e.item for e in res.relaxation_log} == {"a", "b", "chair"}
+    bad = [*objs[:1], ObjectRequest(id="book", category="book", room="r", role="book", placement="inside:sofa")]
+    with pytest.raises(EnvSpecError, match="not a container"):
+        construct_environment(SceneSpec(task_id="t", env_id="e", rooms=rooms, objects=bad), catalog=CAT,
+                              rng=np.random.default_rng(0))

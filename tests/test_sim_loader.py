@@ -140,3 +140,26 @@ def test_round_trip_keeps_names_and_params() -> None:
                             '</Parallel>'))
     assert policy_from_xml(policy_to_xml(p)) == p
     assert 'name="both"' in policy_to_xml(p)
+
+
+def test_py_trees_view_mirrors_structure() -> None:
+    from logicenveval.sim.pytrees_view import to_py_trees, unicode_tree
+
+    task = living_room_task()
+    p = load_policy(POLICIES / "correct.xml", roles=task.roles)
+
+    def count(node: object) -> int:
+        kids = getattr(node, "children", [])
+        return 1 + sum(count(c) for c in kids)
+
+    def count_policy(kind_root: object) -> int:
+        from logicenveval.sim.policy import PolicyNode
+
+        assert isinstance(kind_root, PolicyNode)
+        if kind_root.kind == "SubTree":
+            return 1 + count_policy(p.trees[kind_root.param("ID") or ""])
+        return 1 + sum(count_policy(c) for c in kind_root.children)
+
+    assert count(to_py_trees(p)) == count_policy(p.trees[p.main])
+    text = unicode_tree(p)
+    assert "PutIn(obj=toy, target=white_box)" in text and "SubTree(TidyBook)" in text

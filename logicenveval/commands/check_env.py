@@ -44,8 +44,9 @@ def run(args: argparse.Namespace) -> int:
     else:
         console = Console()
         table = Table(title=f"PhyPR check of {env.env_id}")
-        for col in ("dimension", "result", "code", "objects", "message"):
-            table.add_column(col)
+        for col in ("dimension", "result", "code", "objects"):
+            table.add_column(col, no_wrap=True)
+        table.add_column("message", ratio=1)
         for dim in DIMENSIONS:
             rep = getattr(report, dim)
             if rep.passed:

@@ -18,6 +18,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                        help="GT situation as var=value,... (a symbolic environment is built)")
     parser.add_argument("--trace", action="store_true", help="print every leaf tick")
     parser.add_argument("--json", action="store_true", help="print the verdict as JSON")
+    parser.add_argument("--show-tree", action="store_true",
+                        help="also print the policy's tree (rendered with py_trees)")
     parser.add_argument("--tick-limit", type=int, default=50, help="root ticks (default 50)")
     parser.add_argument("--tasks-dir", default=None, help="tasks folder (default: the benchmark's)")
     parser.add_argument("--catalog", default=None, help="catalog.json (default: the benchmark's)")
@@ -66,6 +68,11 @@ def run(args: argparse.Namespace) -> int:
                               hint="give var=value for every variable the trees ask") from None
         env = situation_env(task, trajectory, catalog)
     verdict = simulate_file(path, env, task, catalog, tick_limit=args.tick_limit, trace=args.trace)
+    if args.show_tree and not args.json:
+        from logicenveval.sim.loader import load_policy
+        from logicenveval.sim.pytrees_view import unicode_tree
+
+        print(unicode_tree(load_policy(path)))
     if args.json:
         print(json.dumps(verdict.model_dump(mode="json"), indent=2))
     else:

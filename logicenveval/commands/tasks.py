@@ -3,6 +3,10 @@
 from __future__ import annotations
 
 import argparse
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from rich.console import Console
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
@@ -31,7 +35,6 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _list(args: argparse.Namespace) -> int:
-    from rich.console import Console
     from rich.table import Table
 
     from logicenveval.benchmark import load_tasks
@@ -42,12 +45,11 @@ def _list(args: argparse.Namespace) -> int:
     for t in load_tasks(args.tasks_dir):
         desc = t.description if len(t.description) <= 80 else t.description[:77] + "..."
         table.add_row(t.id, ", ".join(t.rooms), str(len(t.subtasks)), desc)
-    Console().print(table)
+    _console().print(table)
     return 0
 
 
 def _show(args: argparse.Namespace) -> int:
-    from rich.console import Console
     from rich.table import Table
     from rich.tree import Tree
 
@@ -55,7 +57,7 @@ def _show(args: argparse.Namespace) -> int:
     from logicenveval.model.task import Leaf, Node
 
     t = load_task(args.task_id, args.tasks_dir)
-    con = Console()
+    con = _console()
     con.print(f"[bold]{t.id}[/bold]  rooms: {', '.join(t.rooms)}")
     con.print(t.description)
     roles = Table(title="roles")
@@ -82,7 +84,6 @@ def _show(args: argparse.Namespace) -> int:
 
 
 def _validate(args: argparse.Namespace) -> int:
-    from rich.console import Console
     from rich.table import Table
 
     from logicenveval.benchmark import tasks_dir
@@ -101,7 +102,7 @@ def _validate(args: argparse.Namespace) -> int:
                for k in ("counterfactual", "unreachable", "lackbranch")]
         table.add_row(r.task, str(r.situations), *rev,
                       "[green]ok[/green]" if r.ok else f"[red]{len(r.problems)} problem(s)[/red]")
-    Console().print(table)
+    _console().print(table)
     problems = [p for r in reports for p in r.problems]
     for p in problems:
         print(f"problem: {p}")
@@ -113,7 +114,6 @@ def _validate(args: argparse.Namespace) -> int:
 
 
 def _stats(args: argparse.Namespace) -> int:
-    from rich.console import Console
     from rich.table import Table
 
     from logicenveval.benchmark_stats import COLUMNS, benchmark_stats, to_markdown, totals
@@ -129,6 +129,14 @@ def _stats(args: argparse.Namespace) -> int:
         table.add_row(*[str(getattr(r, c)) for c in COLUMNS])
     t = totals(rows)
     table.add_row("total", *[str(t[c]) for c in COLUMNS[1:]], style="bold")
-    Console().print(table)
+    _console().print(table)
     print(f"{t['tasks']} tasks, {t['policies']} policies")
     return 0
+
+
+def _console() -> Console:
+    """A console at least 140 columns wide, so that piped output keeps task ids whole."""
+    from rich.console import Console
+
+    probe = Console()
+    return Console(width=max(probe.width, 140))

@@ -6,7 +6,6 @@ task role must be bound to an object unless the reached path itself requires `no
 
 from __future__ import annotations
 
-import importlib
 from collections.abc import Mapping
 from typing import TYPE_CHECKING
 
@@ -78,7 +77,6 @@ def coverage(task: Task, holds: Holds, bound_roles: Mapping[str, str | None]) ->
 
 def coverage_of_env(task: Task, env: EnvSpec, catalog: Catalog | None = None) -> Coverage:
     """`coverage` on an EnvSpec through the simulator's initial-state predicate evaluator."""
-    # resolved at call time: the simulator package is built independently of the metrics
-    world = importlib.import_module("logicenveval.sim.world")
-    holds: Holds = world.holds_initial(env, catalog)
-    return coverage(task, holds, env.roles)
+    from logicenveval.sim.world import holds_initial  # the simulator is heavy; import on use
+
+    return coverage(task, holds_initial(env, catalog), env.roles)

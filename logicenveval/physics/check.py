@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from logicenveval.domain.catalog import Catalog, load_catalog
+from logicenveval.errors import EnvSpecError
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.physics.entity import check_entities
 from logicenveval.physics.floorplan import check_floor_plan
@@ -25,6 +26,9 @@ def check_env(env: EnvSpec, catalog: Catalog | None = None, *, tolerances: Toler
     `catalog` defaults to the benchmark catalog; `mesh_dir` resolves relative `mesh` paths;
     `broad_phase=False` checks every object pair with fcl (the baseline of the benchmark).
     """
+    if not isinstance(env, EnvSpec):
+        raise EnvSpecError(f"check_env needs an EnvSpec, got {type(env).__name__}", field="env",
+                           hint="load the file with logicenveval.envfiles.load_env or env_from_dict")
     cat = catalog if catalog is not None else load_catalog()
     plan, polys = check_floor_plan(env, tolerances)
     base = Path(mesh_dir) if mesh_dir is not None else None

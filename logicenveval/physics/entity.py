@@ -10,7 +10,13 @@ from shapely.geometry import Point, Polygon
 
 from logicenveval.domain.catalog import Catalog
 from logicenveval.model.envspec import EnvSpec
-from logicenveval.physics.geometry import Body, candidate_pairs, mesh_path, penetration_depth
+from logicenveval.physics.geometry import (
+    Body,
+    candidate_pairs,
+    finite,
+    mesh_path,
+    penetration_depth,
+)
 from logicenveval.physics.report import PhysicsFailure, Tolerances
 
 
@@ -115,7 +121,7 @@ def swing_areas(env: EnvSpec) -> list[tuple[str, Polygon]]:
     """A door-width square on each side of every door (the area its leaf sweeps or a person needs)."""
     out = []
     for d in env.doors:
-        if d.segment is None:
+        if d.segment is None or not finite(*d.segment[0], *d.segment[1]):
             continue
         p, q = np.asarray(d.segment[0], float), np.asarray(d.segment[1], float)
         width = float(np.linalg.norm(q - p))
@@ -151,15 +157,21 @@ def check_entities(env: EnvSpec, bodies: dict[str, Body], polys: dict[str, Polyg
                                [o.id]))
         if o.position is None or o.size is None:
             fails.append(_fail("missing_geometry", f"{o.id} has no position or size", [o.id]))
+        elif not finite(*o.position, *o.size, o.yaw):
+            fails.append(_fail("missing_geometry", f"{o.id} has a non-finite position, size or yaw", [o.id]))
         elif min(o.size) <= 0:
             fails.append(_fail("invalid_size", f"{o.id} size {o.size} has a non-positive extent", [o.id],
                                measured=float(min(o.size)), tolerance=0.0))
     doors = swing_areas(env)
+    grown = {rid: poly.buffer(tol.room_margin) for rid, poly in polys.items()}
     for b in bodies.values():
         fails += _catalog_size(b, catalog, tol)
         fails += _support(b, env, bodies, polys, tol)
+        if b.top > env.wall_height + tol.support_gap:
+            fails.append(_fail("above_ceiling", f"{b.id} top {b.top:.2f} m is above the wall height "
+                               f"{env.wall_height} m", [b.id], measured=b.top, tolerance=env.wall_height))
         poly = polys.get(b.obj.room)
-        if poly is not None and not poly.buffer(tol.room_margin).contains(b.footprint):
+        if poly is not None and not grown[b.obj.room].contains(b.footprint):
             out = max(float(poly.distance(Point(c))) for c in b.footprint.exterior.coords)
             fails.append(_fail("outside_room", f"{b.id} footprint leaves room {b.obj.room} by {out:.3f} m",
                                [b.id], rooms=[b.obj.room], measured=out, tolerance=tol.room_margin))

@@ -9,8 +9,10 @@ from __future__ import annotations
 from itertools import combinations
 
 from shapely.geometry import LineString, Point, Polygon
+from shapely.geometry.base import BaseGeometry
 
 from logicenveval.model.envspec import Door, EnvSpec
+from logicenveval.physics.geometry import finite
 from logicenveval.physics.report import PhysicsFailure, Tolerances
 
 
@@ -33,7 +35,7 @@ def valid_rooms(env: EnvSpec, fails: list[PhysicsFailure]) -> dict[str, Polygon]
                                rooms=[room.id], measured=float(len(pts)), tolerance=3.0))
             continue
         poly = Polygon(pts)
-        if not poly.is_valid or poly.area <= 0:
+        if not finite(*(c for p in pts for c in p)) or not poly.is_valid or poly.area <= 0:
             fails.append(_fail("invalid_polygon",
                                f"room {room.id} polygon is not a simple polygon with positive area",
                                rooms=[room.id], measured=float(poly.area)))
@@ -72,17 +74,19 @@ def _connectivity(env: EnvSpec) -> list[PhysicsFailure]:
                   rooms=[r]) for r in ids if r not in seen]
 
 
-def _on_wall(seg: LineString, poly: Polygon, tol: float) -> bool:
-    return bool(poly.exterior.buffer(tol).contains(seg))
+def _on_wall(seg: LineString, wall_band: BaseGeometry) -> bool:
+    """Whether the segment lies within `wall_band` (a room outline buffered by the tolerance)."""
+    return bool(wall_band.contains(seg))
 
 
-def _door(d: Door, env: EnvSpec, polys: dict[str, Polygon], tol: Tolerances) -> list[PhysicsFailure]:
+def _door(d: Door, env: EnvSpec, polys: dict[str, Polygon], bands: dict[str, BaseGeometry],
+          tol: Tolerances) -> list[PhysicsFailure]:
     out: list[PhysicsFailure] = []
-    if d.height <= 0 or d.height > env.wall_height - tol.ceiling_margin:
+    if not 0 < d.height <= env.wall_height - tol.ceiling_margin:
         out.append(_fail("door_height", f"door {d.id} height {d.height} m must be in (0, wall_height "
                          f"{env.wall_height} m]", objects=[d.id], measured=d.height, tolerance=env.wall_height))
-    if d.segment is None:
-        out.append(_fail("missing_geometry", f"door {d.id} has no segment", objects=[d.id]))
+    if d.segment is None or not finite(*d.segment[0], *d.segment[1]):
+        out.append(_fail("missing_geometry", f"door {d.id} has no finite segment", objects=[d.id]))
         return out
     seg = LineString(d.segment)
     if seg.length <= 0:
@@ -93,14 +97,14 @@ def _door(d: Door, env: EnvSpec, polys: dict[str, Polygon], tol: Tolerances) -> 
         if r not in polys:
             continue
         poly = polys[r]
-        if not _on_wall(seg, poly, tol.on_wall):
+        if not _on_wall(seg, bands[r]):
             dist = float(poly.exterior.distance(seg.centroid))
             code = "door_exceeds_wall" if dist <= tol.on_wall else "door_not_on_wall"
             out.append(_fail(code, f"door {d.id} is not within a wall of room {r} "
                              f"(midpoint {dist:.3f} m from the wall)", objects=[d.id], rooms=[r],
                              measured=dist, tolerance=tol.on_wall))
     if "exterior" in d.rooms and rooms:
-        others = [o for o, p in polys.items() if o not in rooms and _on_wall(seg, p, tol.on_wall)]
+        others = [o for o in polys if o not in rooms and _on_wall(seg, bands[o])]
         if others:
             out.append(_fail("door_not_exterior", f"exterior door {d.id} is on a wall shared with "
                              f"room {others[0]}", objects=[d.id], rooms=[*rooms, others[0]]))
@@ -112,26 +116,30 @@ def _door(d: Door, env: EnvSpec, polys: dict[str, Polygon], tol: Tolerances) -> 
 def check_floor_plan(env: EnvSpec, tol: Tolerances) -> tuple[list[PhysicsFailure], dict[str, Polygon]]:
     """Floor-plan failures and the valid room polygons (reused by the other dimensions)."""
     fails: list[PhysicsFailure] = []
+    if not (finite(env.wall_height) and env.wall_height > 0):
+        fails.append(_fail("invalid_wall_height", f"wall_height {env.wall_height} is not a positive number",
+                           measured=env.wall_height, tolerance=0.0))
     polys = valid_rooms(env, fails)
     fails += _overlaps(polys, tol)
     fails += _connectivity(env)
+    bands = {rid: p.exterior.buffer(tol.on_wall) for rid, p in polys.items()}
     for d in env.doors:
-        fails += _door(d, env, polys, tol)
+        fails += _door(d, env, polys, bands, tol)
     for w in env.windows:
-        if w.sill <= 0:
+        if not w.sill > 0:
             fails.append(_fail("window_sill", f"window {w.id} sill {w.sill} m is not above the floor",
                                objects=[w.id], rooms=[w.room], measured=w.sill, tolerance=0.0))
         top = w.sill + w.height
-        if w.height <= 0 or top > env.wall_height - tol.ceiling_margin:
+        if not (w.height > 0 and top <= env.wall_height - tol.ceiling_margin):
             fails.append(_fail("window_above_ceiling", f"window {w.id} top {top:.2f} m is above the "
                                f"wall height {env.wall_height} m", objects=[w.id], rooms=[w.room],
                                measured=top, tolerance=env.wall_height))
-        if w.segment is None:
-            fails.append(_fail("missing_geometry", f"window {w.id} has no segment", objects=[w.id]))
+        if w.segment is None or not finite(*w.segment[0], *w.segment[1]):
+            fails.append(_fail("missing_geometry", f"window {w.id} has no finite segment", objects=[w.id]))
             continue
         seg = LineString(w.segment)
         poly = polys.get(w.room)
-        if poly is not None and not _on_wall(seg, poly, tol.on_wall):
+        if poly is not None and not _on_wall(seg, bands[w.room]):
             dist = max(float(poly.exterior.distance(Point(c))) for c in seg.coords)
             fails.append(_fail("window_not_on_wall", f"window {w.id} is not within a wall of room {w.room}",
                                objects=[w.id], rooms=[w.room], measured=dist, tolerance=tol.on_wall))

@@ -21,6 +21,9 @@ from shapely.geometry.base import BaseGeometry
 
 from logicenveval.model.envspec import EnvObject, EnvSpec
 
+_SIGNS = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], float)
+_BOX_FOOTPRINT = [0, 4, 5, 1]  # indices of _SIGNS at y = -1 going round the x–z rectangle
+
 
 def yaw_matrix(yaw_deg: float) -> np.ndarray:
     """Rotation about +y by `yaw_deg` (local +z → (sin, 0, cos))."""
@@ -65,8 +68,7 @@ class Body:
         return local
 
     def corners(self) -> np.ndarray:
-        signs = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], float)
-        world: np.ndarray = self.center + (signs * self.half) @ self.rot.T
+        world: np.ndarray = self.center + (_SIGNS * self.half) @ self.rot.T
         return world
 
     def back_face_segment(self) -> LineString:
@@ -105,8 +107,7 @@ def build_body(obj: EnvObject, mesh_dir: Path | None = None) -> Body:
     tf = fcl.Transform(rot, center)
     verts = _mesh_vertices(obj, mesh_dir)
     if verts is None:
-        signs = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], float)
-        local = signs * half
+        local = _SIGNS * half
         geom: fcl.CollisionGeometry = fcl.Box(*(2.0 * half))
     else:
         local = verts
@@ -117,9 +118,11 @@ def build_body(obj: EnvObject, mesh_dir: Path | None = None) -> Body:
         model.endModel()
         geom = model
     world = center + local @ rot.T
-    footprint = Polygon(world[:, [0, 2]]).convex_hull
-    if not isinstance(footprint, Polygon):  # degenerate (zero-size) object
-        footprint = Polygon()
+    if verts is None:
+        footprint = Polygon(world[_BOX_FOOTPRINT][:, [0, 2]])
+    else:
+        hull = Polygon(world[:, [0, 2]]).convex_hull
+        footprint = hull if isinstance(hull, Polygon) else Polygon()
     return Body(
         obj=obj, center=center, half=half, rot=rot, footprint=footprint,
         bottom=float(world[:, 1].min()), top=float(world[:, 1].max()),
@@ -166,7 +169,16 @@ def point_to_boundary(geom: BaseGeometry, poly: Polygon) -> float:
     return float(poly.exterior.distance(geom))
 
 
+def finite(*values: float) -> bool:
+    return all(math.isfinite(v) for v in values)
+
+
+def has_geometry(obj: EnvObject) -> bool:
+    """Position and size given, finite, with positive extents (else the entity check reports it)."""
+    return (obj.position is not None and obj.size is not None and finite(*obj.position, *obj.size, obj.yaw)
+            and min(obj.size) > 0)
+
+
 def build_bodies(env: EnvSpec, mesh_dir: Path | None = None) -> dict[str, Body]:
     """Bodies of all objects that have geometry, keyed by id, in EnvSpec order."""
-    return {o.id: build_body(o, mesh_dir) for o in env.objects
-            if o.position is not None and o.size is not None and min(o.size) > 0}
+    return {o.id: build_body(o, mesh_dir) for o in env.objects if has_geometry(o)}

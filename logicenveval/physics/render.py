@@ -14,10 +14,11 @@ from xml.sax.saxutils import escape
 from PIL import Image, ImageDraw, ImageFont
 
 from logicenveval.model.envspec import EnvSpec
-from logicenveval.physics.geometry import build_bodies
+from logicenveval.physics.geometry import build_bodies, finite
 from logicenveval.physics.report import PhysicsReport
 
 _RED = "#d62728"
+_RED_FILL = "#f7b6b6"
 
 
 @dataclass(frozen=True)
@@ -45,7 +46,7 @@ def _scene(env: EnvSpec, report: PhysicsReport | None) -> list[_Shape]:
                for d in env.doors if d.segment is not None]
     shapes += [_Shape("window", [(p[0], p[1]) for p in w.segment], w.id, w.id in bad)
                for w in env.windows if w.segment is not None]
-    return shapes
+    return [s for s in shapes if finite(*(c for p in s.points for c in p))]
 
 
 class _View:
@@ -77,6 +78,7 @@ def render_svg(env: EnvSpec, report: PhysicsReport | None = None) -> str:
     for s in shapes:
         fill, stroke, width = _STYLE[s.kind]
         stroke = _RED if s.failed else stroke
+        fill = _RED_FILL if s.failed and s.kind == "object" else fill
         pts = " ".join(f"{x},{y}" for x, y in (v.px(p) for p in s.points))
         if s.kind in ("room", "object"):
             out.append(f'<polygon points="{pts}" fill="{fill}" stroke="{stroke}" stroke-width="{width}"/>')
@@ -106,6 +108,7 @@ def render_png(env: EnvSpec, path: str | Path, report: PhysicsReport | None = No
     for s in shapes:
         fill, stroke, width = _STYLE[s.kind]
         stroke = _RED if s.failed else stroke
+        fill = _RED_FILL if s.failed and s.kind == "object" else fill
         pts = [v.px(p) for p in s.points]
         if s.kind in ("room", "object"):
             draw.polygon(pts, fill=fill, outline=stroke, width=width)

@@ -101,11 +101,12 @@ class _Builder:
             name, warn = resolve_category(o.category, self.catalog)
             if warn:
                 self.warnings.append(f"{o.id}: {warn}")
+            if name != o.category:
                 o = o.model_copy(update={"category": name})
             self.objects[o.id] = o
             self.cats[o.id] = self.catalog.categories[name]
         for i, o in enumerate(self.spec.objects):
-            ref = o.support if o.support not in ("floor", "wall") else o.container
+            ref = o.support if o.support not in ("floor", "wall", "ceiling") else o.container
             if ref is not None and ref not in self.objects:
                 raise EnvSpecError(f"{o.id} is placed on/inside unknown object {ref!r}",
                                    field=f"objects[{i}].placement", hint="name an object of the scene")
@@ -113,6 +114,14 @@ class _Builder:
                 raise EnvSpecError(f"{o.id} is in room {o.room} but its support/container {ref} is in "
                                    f"{self.objects[ref].room}", field=f"objects[{i}].room",
                                    hint="put both in the same room")
+        for o in self.objects.values():  # a support or container of a task object must exist too
+            if o.is_task:
+                cur: str | None = o.id
+                while cur is not None:
+                    self.hard.add(cur)
+                    ob = self.objects[cur]
+                    nxt = ob.container or (ob.support if ob.support not in ("floor", "wall", "ceiling") else None)
+                    cur = nxt if nxt not in self.hard else None
         for p in check_relations(list(self.objects.values()), [], self.catalog):
             self._bad_placement(p.objects, p.reason)
         kept = []
@@ -132,19 +141,13 @@ class _Builder:
                 self._log_rel(self._room_of(r), r, f"its objects are in different rooms {sorted(rooms_of)}")
             else:
                 self.relations.append(r)
-        for o in self.objects.values():  # a support or container of a task object must exist too
-            if o.is_task:
-                cur: str | None = o.id
-                while cur is not None:
-                    self.hard.add(cur)
-                    ob = self.objects[cur]
-                    nxt = ob.container or (ob.support if ob.support not in ("floor", "wall") else None)
-                    cur = nxt if nxt not in self.hard else None
 
     def _bad_placement(self, ids: Sequence[str], reason: str) -> None:
-        o = self.objects.get(ids[0])
-        if o is None or o.is_task:
-            raise EnvSpecError(reason, field=f"objects.{ids[0]}.placement" if ids else "objects",
+        if not ids or ids[0] not in self.objects:
+            return  # already dropped with its support
+        o = self.objects[ids[0]]
+        if o.id in self.hard:
+            raise EnvSpecError(reason, field=f"objects.{o.id}.placement",
                                hint="change the placement to a surface/container that fits, or 'floor'")
         self._drop_object(o.id, reason)
 
@@ -175,7 +178,7 @@ class _Builder:
     def size_all(self) -> None:
         def depth(oid: str) -> int:
             o = self.objects[oid]
-            ref = o.container or (o.support if o.support not in ("floor", "wall") else None)
+            ref = o.container or (o.support if o.support not in ("floor", "wall", "ceiling") else None)
             return 0 if ref is None else 1 + depth(ref)
 
         for oid in sorted(self.objects, key=depth):
@@ -196,7 +199,7 @@ class _Builder:
             raw = list(o.size)
         else:
             raw = [float(self.rng.uniform(a, b)) for a, b in zip(lo, hi, strict=True)]
-        ref = o.container or (o.support if o.support not in ("floor", "wall") else None)
+        ref = o.container or (o.support if o.support not in ("floor", "wall", "ceiling") else None)
         if ref is not None:
             ps = self.sizes[ref]
             m = 2 * CONTAINER_MARGIN if o.container else 0.0
@@ -257,12 +260,39 @@ class _Builder:
         self._stack_all([b.id for b in boxes if b.id in self.poses])
         self._walls(rq.id, plan, rect, squares)
         self._stack_all([o.id for o in here if o.support == "wall" and o.id in self.poses])
+        self._ceiling(rq.id, rect, squares)
         lost = [o.id for o in here if o.id in self.objects and o.id not in self.poses]
         for oid in lost:  # children of objects placed in no stage (e.g. on a ceiling object)
             if oid in self.hard:
                 raise EnvSpecError(f"{oid} has no support the solver can place", field=f"objects.{oid}.placement",
                                    hint="place it on the floor, a wall, or a floor/wall object")
             self._drop_object(oid, "its support could not be placed")
+
+    def _ceiling(self, room: str, rect: Rect, squares: list[Rect]) -> None:
+        """Ceiling objects touch the ceiling, clear of everything that reaches their height."""
+        objs = [o for o in self.objects.values() if o.room == room and o.support == "ceiling"]
+        if not objs:
+            return
+        g, h = self.g, self.spec.wall_height
+        origin = (rect.x0, rect.z0)
+        tall = [(rect_cells(p.footprint, origin, g), h - p.top - 0.01) for oid, p in self.poses.items()
+                if self.objects[oid].room == room]
+        tall += [(rect_cells(sq, origin, g), -1.0) for sq in squares]
+        boxes = [Box(o.id, self.sizes[o.id], (_cells(self.sizes[o.id][0], g), _cells(self.sizes[o.id][2], g)),
+                     o.id in self.hard) for o in objs]
+        frame = (int(round(rect.w / g)), int(round(rect.d / g)))
+        placed, dropped = pack(frame, boxes, seed=self._seed(), timeout_s=self.spec.room_timeout_s, tall=tall,
+                               grid=g)
+        if not placed:
+            raise EnvSpecError(f"room {room}: the ceiling task objects do not fit", field=f"rooms.{room}",
+                               hint="request a larger room or fewer ceiling objects")
+        self._take(room, dropped, {})
+        for b in boxes:
+            if b.id in placed:
+                p = placed[b.id]
+                ex, ez = (b.size[2], b.size[0]) if p.o % 2 else (b.size[0], b.size[2])
+                self.poses[b.id] = _Pose((_r(origin[0] + p.x0 + ex / 2), _r(h - b.size[1] / 2),
+                                          _r(origin[1] + p.z0 + ez / 2)), 90.0 * p.o, b.size)
 
     def _stack_all(self, queue: list[str]) -> None:
         while queue:
@@ -271,7 +301,7 @@ class _Builder:
 
     def _root(self, oid: str) -> str:
         o = self.objects[oid]
-        ref = o.container or (o.support if o.support not in ("floor", "wall") else None)
+        ref = o.container or (o.support if o.support not in ("floor", "wall", "ceiling") else None)
         return oid if ref is None else self._root(ref)
 
     def _floor_rels(self, here: list[ObjectRequest], root: Mapping[str, str]
@@ -315,7 +345,7 @@ class _Builder:
             cur: str | None = a.id
             while cur is not None and cur in self.objects:
                 ob = self.objects[cur]
-                cur = ob.support if ob.support not in ("floor", "wall", None) else None
+                cur = ob.support if ob.support not in ("floor", "wall", "ceiling", None) else None
                 if cur == r.args[1]:
                     return ""
             return "above is only realised by stacking one object on the other"
@@ -438,7 +468,7 @@ class _Builder:
     def agent(self, plan: FloorPlan, room: str) -> Agent:
         rect = plan.rects[room]
         fps = [p.footprint for oid, p in self.poses.items()
-               if self.objects[oid].room == room and self.objects[oid].support != "wall"]
+               if self.objects[oid].room == room and self.objects[oid].support not in ("wall", "ceiling")]
         best, score = (rect.x0 + rect.w / 2, rect.z0 + rect.d / 2), -1.0
         for i in range(1, int(rect.w / 0.25)):
             for j in range(1, int(rect.d / 0.25)):
@@ -517,8 +547,8 @@ def construct_from_drafts(*, brief: Any, env_id: str, generator: str, rooms: Seq
     roles = set(getattr(brief, "roles", {}) or {})
     reqs = []
     for o in objects:
-        placement = o.placement if (o.placement in ("floor", "wall") or o.placement.startswith(("on:", "inside:"))) \
-            else "floor"
+        placement = o.placement if (o.placement in ("floor", "wall", "ceiling")
+                                    or o.placement.startswith(("on:", "inside:"))) else "floor"
         reqs.append(ObjectRequest(id=o.id, category=o.category, room=o.room,
                                   role=o.role if o.role in roles else None, placement=placement,
                                   attributes=dict(o.attributes), states=dict(o.states)))
@@ -552,8 +582,8 @@ def env_from_placed(*, brief: Any, env_id: str, generator: str, rooms: Sequence[
             support = o.placement[3:]
         elif o.placement.startswith("inside:") and o.placement[7:] in ids:
             support, container = None, o.placement[7:]
-        elif o.placement == "wall":
-            support = "wall"
+        elif o.placement in ("wall", "ceiling"):
+            support = o.placement
         objs.append({"id": o.id, "category": name, "room": o.room if o.room in room_ids else plan.rooms[0].id,
                      "position": list(o.position), "size": list(o.size), "yaw": o.yaw, "support": support,
                      "container": container, "attributes": dict(o.attributes),

@@ -138,8 +138,8 @@ class _Openings:
         if not fits:
             return None
         u, v = fits[int(rng.integers(len(fits)))]
-        start = _snap(float(rng.uniform(u, v - width)))
-        start = min(max(start, u), v - width)
+        last = max(u, v - width)
+        start = min(max(_snap(float(rng.uniform(u, last))), u), last)
         self.used.setdefault(key, []).append((start, start + width))
         return start
 

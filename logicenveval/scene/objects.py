@@ -74,14 +74,14 @@ def enrichment_objects(room_type: str, rng: np.random.Generator, n: int, catalog
                        room: str, exclude: Iterable[str] = (), prefix: str = "extra") -> list[ObjectRequest]:
     """`n` enrichment objects that belong in `room_type` (catalog `rooms`), none of `exclude`.
 
-    Placement is the category's typical one; surface objects go onto a sampled enrichment or
-    given surface only when one exists, else they are skipped for a floor/wall category.
+    Only categories whose typical placement is the floor, a wall or the ceiling are offered:
+    objects on surfaces need a surface the caller chooses.
     """
     rtype = room_type_of(room_type)
     banned = set(exclude)
     pool = sorted(name for name, c in catalog.categories.items()
                   if name not in banned and c.rooms and rtype in c.rooms
-                  and c.placement[0] in ("floor", "wall"))
+                  and c.placement[0] in ("floor", "wall", "ceiling"))
     if not pool or n <= 0:
         return []
     picks = rng.choice(len(pool), size=min(n, len(pool)), replace=False)
@@ -115,7 +115,7 @@ def apply_trajectory_states(objects: list[ObjectRequest], facts: Mapping[str, Ma
             placement = f"inside:{f['container']}"
         elif f.get("support"):
             s = str(f["support"])
-            placement = s if s in ("floor", "wall") else f"on:{s}"
+            placement = s if s in ("floor", "wall", "ceiling") else f"on:{s}"
         out[by_role[role]] = o.model_copy(update={
             "states": states, "attributes": attrs, "placement": placement,
             "room": str(f.get("room", o.room))})

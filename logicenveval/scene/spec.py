@@ -45,7 +45,7 @@ class RoomRequest(BaseModel):
 
 
 class ObjectRequest(BaseModel):
-    """One object to place; `placement` is `floor`, `wall`, `on:<id>` or `inside:<id>`."""
+    """One object to place; `placement` is `floor`, `wall`, `ceiling`, `on:<id>` or `inside:<id>`."""
 
     model_config = _Cfg
     id: str = Field(min_length=1)
@@ -61,7 +61,7 @@ class ObjectRequest(BaseModel):
     @field_validator("placement")
     @classmethod
     def _placement(cls, v: str) -> str:
-        if v in ("floor", "wall") or (v.startswith(("on:", "inside:")) and v.split(":", 1)[1]):
+        if v in ("floor", "wall", "ceiling") or (v.startswith(("on:", "inside:")) and v.split(":", 1)[1]):
             return v
         raise ValueError(f"placement {v!r} must be 'floor', 'wall', 'on:<object id>' or 'inside:<object id>'")
 
@@ -71,7 +71,7 @@ class ObjectRequest(BaseModel):
 
     @property
     def support(self) -> str | None:
-        """`floor`, `wall`, an object id, or None when contained."""
+        """`floor`, `wall`, `ceiling`, an object id, or None when contained."""
         if self.placement.startswith("on:"):
             return self.placement[3:]
         if self.placement.startswith("inside:"):

@@ -89,7 +89,9 @@ def geometric_failures(env: EnvSpec, catalog: Catalog) -> list[str]:
             touches = min(abs(b[0] - r[0]), abs(b[2] - r[1]), abs(b[3] - r[2]), abs(b[5] - r[3])) <= TOL
             if not touches or b[1] <= 0:
                 bad.append(f"{o.id} not mounted on a wall")
-        if o.support not in (None, "floor", "wall"):
+        if o.support == "ceiling" and abs(b[4] - env.wall_height) > TOL:
+            bad.append(f"{o.id} does not touch the ceiling")
+        if o.support not in (None, "floor", "wall", "ceiling"):
             s = boxes[o.support]
             cx, cz = (b[0] + b[3]) / 2, (b[2] + b[5]) / 2
             if abs(b[1] - s[4]) > TOL or not (s[0] <= cx <= s[3] and s[2] <= cz <= s[5]):

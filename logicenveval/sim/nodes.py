@@ -25,7 +25,9 @@ STATUS_NAMES = ("IDLE", "SUCCESS", "FAILURE", "RUNNING")
 STEP_BUDGET = 100_000
 
 
-class Violation(Exception):  # noqa: N818 - an outcome signal, not an error
+class Violation(Exception):  # noqa: N818
+    """Internal signal: a precondition failed; it ends the episode (never leaves `sim`)."""
+
     def __init__(self, node: Leaf, message: str) -> None:
         super().__init__(message)
         self.node = node
@@ -33,11 +35,13 @@ class Violation(Exception):  # noqa: N818 - an outcome signal, not an error
 
 
 class BudgetExceeded(Exception):  # noqa: N818
-    pass
+    """Internal signal: a loop inside one tick used up `STEP_BUDGET` node ticks."""
 
 
 @dataclass(slots=True)
 class Episode:
+    """Per-run state shared by all nodes during one episode."""
+
     world: World
     tick: int = 0
     steps: int = 0

@@ -205,9 +205,28 @@ def _path_constraints(task: Task, trajectory: Trajectory) -> list[tuple[str, str
     return out
 
 
+_CACHE: dict[tuple[str, str, int], tuple[Catalog, EnvSpec]] = {}
+
+
 def situation_env(task: Task, trajectory: Trajectory, catalog: Catalog | None = None) -> EnvSpec:
-    """A symbolic EnvSpec (no geometry) in which the GT trees reach exactly `trajectory`."""
+    """A symbolic EnvSpec (no geometry) in which the GT trees reach exactly `trajectory`.
+
+    Results are memoised per (task content, trajectory, catalog): EnvSpecs are immutable and
+    validation, benchmarks and metrics ask for the same situations repeatedly.
+    """
     cat = catalog if catalog is not None else load_catalog()
+    key = (task.model_dump_json(), trajectory.key, id(cat))
+    hit = _CACHE.get(key)
+    if hit is not None and hit[0] is cat:
+        return hit[1]
+    env = _situation_env(task, trajectory, cat)
+    if len(_CACHE) > 4096:
+        _CACHE.clear()
+    _CACHE[key] = (cat, env)
+    return env
+
+
+def _situation_env(task: Task, trajectory: Trajectory, cat: Catalog) -> EnvSpec:
     if [p.subtask for p in trajectory.paths] != [s.id for s in task.subtasks]:
         raise TrajectoryError("the trajectory must give one path per subtask in task order",
                               field="trajectory", hint=f"subtasks: {[s.id for s in task.subtasks]}")

@@ -1,0 +1,242 @@
+"""Unit tests of the individual PhyPR checks, the report type and the broad phase."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+import trimesh
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from logicenveval.envfiles import env_from_dict
+from logicenveval.model.envspec import EnvObject
+from logicenveval.physics import (
+    DimensionReport,
+    PhysicsFailure,
+    PhysicsReport,
+    Tolerances,
+    check_env,
+)
+from logicenveval.physics.entity import collisions
+from logicenveval.physics.geometry import build_body, candidate_pairs, yaw_matrix
+
+FIXTURES = Path(__file__).parent / "fixtures" / "envs"
+
+
+def _load(name: str) -> dict[str, Any]:
+    data: dict[str, Any] = json.loads((FIXTURES / f"{name}.json").read_text())
+    return data
+
+
+def _obj(data: dict[str, Any], oid: str) -> dict[str, Any]:
+    return next(o for o in data["objects"] if o["id"] == oid)
+
+
+def _codes(data: dict[str, Any], dim: str) -> list[str]:
+    report = check_env(env_from_dict(data))
+    return [f.code for f in getattr(report, dim).failures]
+
+
+def test_report_json_has_exact_shape_and_round_trips() -> None:
+    data = _load("one_room")
+    _obj(data, "floor_lamp_1")["position"][1] += 0.2
+    report = check_env(env_from_dict(data))
+    dumped = report.model_dump(mode="json")
+    assert set(dumped) == {"floor_plan", "entity", "relation"}
+    assert all(set(v) == {"passed", "failures"} for v in dumped.values())
+    assert PhysicsReport.model_validate_json(report.model_dump_json()) == report
+    assert not report.passed and report.failed_dimensions() == {"entity"}
+    with pytest.raises(ValueError):
+        report.entity.failures[0].__setattr__("code", "x")
+
+
+def test_dimension_report_of() -> None:
+    f = PhysicsFailure(dimension="entity", code="c", message="m")
+    assert DimensionReport.of([]).passed and not DimensionReport.of([f]).passed
+
+
+def test_yaw_front_convention() -> None:
+    np.testing.assert_allclose(yaw_matrix(90.0) @ [0, 0, 1], [1, 0, 0], atol=1e-12)
+    body = build_body(EnvObject(id="a", category="x", room="r", position=(0, 0.5, 0), size=(2, 1, 0.5), yaw=90))
+    x0, z0, x1, z1 = body.footprint.bounds
+    assert (x1 - x0, z1 - z0) == pytest.approx((0.5, 2.0))
+    np.testing.assert_allclose(body.front(), [1.0, 0.0], atol=1e-12)
+
+
+def test_missing_geometry_is_an_entity_failure() -> None:
+    data = _load("one_room")
+    _obj(data, "floor_lamp_1")["position"] = None
+    data["relations"] = [r for r in data["relations"] if "floor_lamp_1" not in r["args"]]
+    assert _codes(data, "entity") == ["missing_geometry"]
+
+
+def test_centre_of_mass_off_the_support_is_unstable() -> None:
+    data = _load("one_room")
+    _obj(data, "book_1")["position"][0] = 2.55  # table spans x 1.5..2.5
+    assert "unstable" in _codes(data, "entity")
+    assert _codes(data, "relation") == ["relation_violated"]
+
+
+def test_content_sticking_out_of_container() -> None:
+    data = _load("one_room")
+    _obj(data, "toy_2")["position"][1] = 0.45
+    assert "not_contained" in _codes(data, "entity")
+
+
+def test_wall_mounted_object_away_from_wall() -> None:
+    data = _load("one_room")
+    _obj(data, "painting_1")["position"][2] = 3.5
+    assert "not_on_wall" in _codes(data, "entity")
+    assert _codes(data, "relation") == ["relation_violated"]
+
+
+def test_object_in_door_swing_area() -> None:
+    data = _load("one_room")
+    _obj(data, "floor_lamp_1")["position"] = [2.5, 0.8, 0.5]
+    data["relations"] = [r for r in data["relations"] if "floor_lamp_1" not in r["args"]]
+    assert _codes(data, "entity") == ["blocks_door"]
+
+
+def test_size_outside_catalog_range() -> None:
+    data = _load("one_room")
+    _obj(data, "floor_lamp_1")["size"] = [0.35, 2.5, 0.35]
+    _obj(data, "floor_lamp_1")["position"][1] = 1.25
+    assert _codes(data, "entity") == ["size_out_of_range"]
+    _obj(data, "floor_lamp_1")["size"][1] = 1.9 * 1.09  # inside the ±10 % band
+    _obj(data, "floor_lamp_1")["position"][1] = 1.9 * 1.09 / 2
+    assert _codes(data, "entity") == []
+
+
+def test_object_through_the_ceiling() -> None:
+    data = _load("three_rooms")
+    _obj(data, "wardrobe_1")["position"][1] = 1.0 + 1.0
+    assert sorted(_codes(data, "entity")) == ["above_ceiling", "not_supported"]
+
+
+def test_unreachable_room_and_window_faults() -> None:
+    data = _load("three_rooms")
+    data["doors"] = [d for d in data["doors"] if d["id"] != "d_lb"]
+    assert _codes(data, "floor_plan") == ["unreachable_room"]
+    data = _load("one_room")
+    data["windows"][0]["segment"] = [[2.2, 0], [3.5, 0]]
+    assert _codes(data, "floor_plan") == ["window_overlaps_door"]
+    data["windows"][0]["segment"] = [[1, 1], [1, 2]]
+    assert _codes(data, "floor_plan") == ["window_not_on_wall"]
+    data = _load("one_room")
+    data["windows"][0]["sill"] = 0.0
+    assert _codes(data, "floor_plan") == ["window_sill"]
+
+
+def test_invalid_polygon_and_exterior_door_on_shared_wall() -> None:
+    data = _load("one_room")
+    data["rooms"][0]["polygon"] = [[0, 0], [5, 4], [5, 0], [0, 4]]  # bow tie
+    assert "invalid_polygon" in _codes(data, "floor_plan")
+    data = _load("three_rooms")
+    data["doors"][0]["segment"] = [[5, 0.2], [5, 1.2]]
+    assert _codes(data, "floor_plan") == ["door_not_exterior"]
+
+
+@pytest.mark.parametrize(("rel", "ok"), [
+    ({"type": "face_to", "args": ["table_1", "sofa_1"]}, True),
+    ({"type": "face_to", "args": ["toy_box_1", "sofa_1"]}, False),
+    ({"type": "far", "args": ["table_1", "sofa_1"]}, False),
+    ({"type": "on", "args": ["book_1", "sofa_1"]}, False),
+    ({"type": "inside", "args": ["toy_2", "toy_box_1"]}, True),
+    ({"type": "above", "args": ["painting_1", "table_1"]}, False),
+    ({"type": "edge", "args": ["table_1"]}, False),
+    ({"type": "center", "args": ["floor_lamp_1"]}, False),
+    ({"type": "side_of", "args": ["table_1", "sofa_1"]}, False),
+    ({"type": "in_front_of", "args": ["floor_lamp_1", "sofa_1"]}, False),
+    ({"type": "center_aligned", "args": ["toy_box_1", "sofa_1"]}, False),
+    ({"type": "wall_mounted", "args": ["floor_lamp_1"]}, False),
+    ({"type": "near", "args": ["toy", "sofa"]}, False),
+    ({"type": "near", "args": ["book", "sofa"]}, True),
+    ({"type": "near", "args": ["ghost", "sofa"]}, False),
+])
+def test_relation_semantics(rel: dict[str, Any], ok: bool) -> None:
+    data = _load("one_room")
+    data["relations"] = [rel]
+    assert (_codes(data, "relation") == []) is ok
+
+
+def test_mesh_file_is_used_and_a_missing_one_reported(tmp_path: Path) -> None:
+    data = _load("one_room")
+    trimesh.creation.box(extents=(0.35, 1.6, 0.35)).export(str(tmp_path / "lamp.stl"))
+    _obj(data, "floor_lamp_1")["mesh"] = "lamp.stl"
+    assert check_env(env_from_dict(data), mesh_dir=tmp_path).passed
+    _obj(data, "floor_lamp_1")["mesh"] = "nope.stl"
+    assert [f.code for f in check_env(env_from_dict(data), mesh_dir=tmp_path).entity.failures] == [
+        "mesh_not_found"]
+
+
+def test_unknown_fields_are_ignored_and_tolerances_are_frozen() -> None:
+    data = _load("one_room")
+    data["extra"] = {"anything": 1}
+    _obj(data, "sofa_1")["color_hint"] = "blue"
+    assert check_env(env_from_dict(data)).passed
+    with pytest.raises(ValueError):
+        Tolerances().__setattr__("near_gap", 2.0)
+    strict = Tolerances(near_gap=0.1)
+    assert not check_env(env_from_dict(_load("one_room")), tolerances=strict).relation.passed
+
+
+_box = st.tuples(st.floats(0, 4), st.floats(0, 1), st.floats(0, 4), st.floats(0.1, 1.0),
+                 st.floats(0.1, 1.0), st.floats(0.1, 1.0), st.floats(0, 360))
+
+
+@settings(max_examples=25, deadline=None)
+@given(boxes=st.lists(_box, min_size=2, max_size=12))
+def test_broad_phase_finds_the_same_collisions_as_all_pairs(
+        boxes: list[tuple[float, float, float, float, float, float, float]]) -> None:
+    bodies = [build_body(EnvObject(id=f"o{i}", category="x", room="r", position=(x, y, z), size=(w, h, d), yaw=a))
+              for i, (x, y, z, w, h, d, a) in enumerate(boxes)]
+    tol = Tolerances()
+    fast = collisions(bodies, tol)
+    assert fast == collisions(bodies, tol, broad_phase=False)
+    pairs = set(candidate_pairs(bodies))
+    for f in fast:
+        i, j = (int(o[1:]) for o in f.objects)
+        assert (min(i, j), max(i, j)) in pairs
+
+
+def test_check_env_rejects_a_plain_dict() -> None:
+    from logicenveval.errors import EnvSpecError
+
+    with pytest.raises(EnvSpecError, match="needs an EnvSpec"):
+        check_env(_load("one_room"))  # type: ignore[arg-type]
+
+
+_odd = st.one_of(st.floats(allow_nan=True, allow_infinity=True), st.floats(-100, 100))
+
+
+@settings(max_examples=30, deadline=None)
+@given(data_=st.data())
+def test_check_env_never_raises_on_odd_numbers(data_: st.DataObject) -> None:
+    """A careless generator's environment is a finding, never a crash (the runner relies on it)."""
+    from logicenveval.physics.render import render_svg
+
+    data = _load(data_.draw(st.sampled_from(["one_room", "three_rooms"])))
+    for _ in range(data_.draw(st.integers(1, 4))):
+        where = data_.draw(st.sampled_from(["object", "room", "door", "window", "wall"]))
+        value = data_.draw(_odd)
+        if where == "object":
+            o = data_.draw(st.sampled_from(data["objects"]))
+            field = data_.draw(st.sampled_from(["position", "size"]))
+            o[field][data_.draw(st.integers(0, 2))] = value
+        elif where == "room":
+            r = data_.draw(st.sampled_from(data["rooms"]))
+            r["polygon"][data_.draw(st.integers(0, 3))][data_.draw(st.integers(0, 1))] = value
+        elif where == "door":
+            data["doors"][0]["segment"][0][data_.draw(st.integers(0, 1))] = value
+        elif where == "window":
+            data["windows"][0][data_.draw(st.sampled_from(["sill", "height"]))] = value
+        else:
+            data["wall_height"] = value
+    env = env_from_dict(data)
+    report = check_env(env)
+    assert isinstance(report.passed, bool)
+    assert render_svg(env, report).startswith("<svg")

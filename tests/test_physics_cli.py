@@ -1,0 +1,74 @@
+"""`check-env` exit codes and output, and the deterministic renders."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from PIL import Image
+
+from logicenveval.cli import main
+from logicenveval.envfiles import env_from_dict, load_env
+from logicenveval.physics import check_env
+from logicenveval.physics.render import render_png, render_svg
+
+FIXTURES = Path(__file__).parent / "fixtures" / "envs"
+
+
+def _broken(tmp_path: Path) -> Path:
+    data = json.loads((FIXTURES / "one_room.json").read_text())
+    data["windows"][0]["height"] = 3.0
+    out = tmp_path / "broken.json"
+    out.write_text(json.dumps(data))
+    return out
+
+
+def test_valid_env_exits_zero_with_json(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["check-env", str(FIXTURES / "one_room.json"), "--json"]) == 0
+    report = json.loads(capsys.readouterr().out)
+    assert report == {d: {"passed": True, "failures": []} for d in ("floor_plan", "entity", "relation")}
+
+
+def test_failing_env_exits_one_and_names_the_fault(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                                   monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv("COLUMNS", "160")
+    assert main(["check-env", str(_broken(tmp_path))]) == 1
+    out = capsys.readouterr().out
+    assert "window_above_ceiling" in out and "FAIL" in out
+
+
+def test_malformed_file_exits_two_with_field_path(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    data = json.loads((FIXTURES / "one_room.json").read_text())
+    data["objects"][0]["position"] = [1, 2]
+    bad = tmp_path / "bad.json"
+    bad.write_text(json.dumps(data))
+    assert main(["check-env", str(bad)]) == 2
+    assert "objects.0.position" in capsys.readouterr().err
+
+
+def test_render_svg_is_deterministic_and_highlights_failures(tmp_path: Path) -> None:
+    env = load_env(_broken(tmp_path))
+    report = check_env(env)
+    svg = render_svg(env, report)
+    assert svg == render_svg(env, report)
+    assert svg.startswith("<svg") and ">sofa</text>" in svg and ">toy_box_1</text>" in svg
+    assert 'stroke="#d62728"' in svg and 'stroke="#d62728"' not in render_svg(env)
+
+
+def test_render_png_via_cli(tmp_path: Path) -> None:
+    out_a, out_b = tmp_path / "a.png", tmp_path / "b.png"
+    assert main(["check-env", str(FIXTURES / "three_rooms.json"), "--render", str(out_a)]) == 0
+    render_png(load_env(FIXTURES / "three_rooms.json"), out_b, check_env(load_env(FIXTURES / "three_rooms.json")))
+    assert out_a.read_bytes() == out_b.read_bytes()
+    with Image.open(out_a) as img:
+        assert img.size[0] > 300 and img.size[1] > 300
+        assert len(img.getcolors(maxcolors=100000) or []) > 3
+    assert main(["check-env", str(FIXTURES / "three_rooms.json"), "--render", str(tmp_path / "x.gif")]) == 2
+
+
+def test_env_without_geometry_fails_entity(tmp_path: Path) -> None:
+    env = env_from_dict({"task_id": "t", "env_id": "e", "rooms": [{"id": "r", "polygon": [[0, 0], [3, 0], [3, 3]]}],
+                         "objects": [{"id": "a", "category": "toy", "room": "r"}]})
+    report = check_env(env)
+    assert report.floor_plan.passed and not report.entity.passed and report.relation.passed
