@@ -65,7 +65,7 @@ def floor_plan(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
 
 
 _TOO_BIG = re.compile(r"(\w+) \(\w+\) is larger than the top of (\w+)")
-_NO_FIT = re.compile(r"the objects \[([^\]]*)\] do not fit inside (\w+)")
+_NO_FIT = re.compile(r"the objects \[([^\]]*)\] do not fit (inside|on) (\w+)")
 
 
 def feedback_facts(feedback: list[str], facts: list[str]) -> list[str]:
@@ -75,9 +75,10 @@ def feedback_facts(feedback: list[str], facts: list[str]) -> list[str]:
     for text in feedback:
         for obj, holder in _TOO_BIG.findall(text):
             out.append(f"not on({obj}, {holder})")
-        for listed, holder in _NO_FIT.findall(text):
+        for listed, how, holder in _NO_FIT.findall(text):
             names = [n.strip(" '\"") for n in listed.split(",")]
-            out += [f"not inside({n}, {holder})" for n in names[1:]]
+            pred = "inside" if how == "inside" else "on"
+            out += [f"not {pred}({n}, {holder})" for n in names[1:]]
     return [f for f in out if f[4:] not in required]
 
 

@@ -128,7 +128,7 @@ def _places(choice: dict[str, RoleChoice], roles: dict[str, Any], catalog: Catal
         cat = catalog.get(roles[r]["category"])
         typical = cat.placement if cat else ["floor"]
         if typical[0] in ("floor", "wall", "ceiling") and typical[0] not in c.banned_places:
-            c.placement = typical[0] if typical[0] != "ceiling" else "wall"
+            c.placement = typical[0]
             continue
         holders = []
         for other, oc in choice.items():
@@ -145,7 +145,8 @@ def _places(choice: dict[str, RoleChoice], roles: dict[str, Any], catalog: Catal
         surfaces = [h for h in preferred if h.startswith("on:")]
         if typical[0] == "inside":
             surfaces = [h for h in preferred if h.startswith("inside:")] + surfaces
-        pick = (surfaces or preferred or [None])[0]
-        if pick is None:
-            pick = "floor" if "floor" not in c.banned_places else NEEDS_SURFACE
-        c.placement = pick
+        options = surfaces or preferred
+        if options:
+            c.placement = options[0]
+        else:
+            c.placement = "floor" if "floor" not in c.banned_places else NEEDS_SURFACE

@@ -238,8 +238,8 @@ def _subsplit(pieces: list[tuple[str, str | None, str]]) -> list[tuple[str, str 
 def _joined(words: list[str], a: Mention, b: Mention) -> bool:
     """Mentions `a` and `b` are items of one list (`a book or a toy`, `cups, plates and bowls`)."""
     between = words[a.end : b.start]
-    return len(between) <= 3 and all(w in {"or", "and", "a", "an", "the", "some", "any", "either"}
-                                      for w in between)
+    return 0 < len(between) <= 3 and all(w in {"or", "and", "a", "an", "the", "some", "any", "either"}
+                                          for w in between)
 
 
 def _negation(word: str) -> bool:
@@ -270,7 +270,7 @@ class _Reader:
             if i in covered or w not in PRONOUNS:
                 continue
             if w in ("one", "ones") and (i == 0 or words[i - 1] in {"no", "any", "each", "every", "which",
-                                                                   "this", "that", "no"}
+                                                                   "this", "that"}
                                           or words[i + 1 : i + 2] == ["of"]):
                 continue  # "one of the cushions", "each one": not an anaphoric "one"
             before = [m for m in found if m.kind == "role" and m.end <= i]

@@ -137,7 +137,7 @@ class ObjectDraft(BaseModel):
     category: str = Field(description="a catalog category name")
     room: str
     role: str | None = Field(default=None, description="the task role this object plays, if any")
-    placement: str = Field(description="'floor', 'wall', 'on:<object id>' or 'inside:<object id>'")
+    placement: str = Field(description="'floor', 'wall', 'ceiling', 'on:<object id>' or 'inside:<object id>'")
     attributes: dict[str, str] = Field(default_factory=dict)
     states: dict[str, bool] = Field(default_factory=dict)
     description: str = ""
