@@ -47,8 +47,13 @@ def decompose(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
 
 
 def _factors_for(a: TaskAnalysis, subtask: dict[str, Any]) -> list[Factor]:
+    """The factors of the analysis group whose first-tested object leads the subtask's roles."""
     roles = list(subtask.get("roles") or [])
     subject = roles[0] if roles else None
+    by_id = {f.id: f for f in a.factors}
+    for group in a.groups:
+        if by_id[group[0]].subject == subject:
+            return [by_id[f] for f in group]
     return [f for f in a.factors if f.subject == subject]
 
 
@@ -62,9 +67,10 @@ def identify_factors(payload: dict[str, Any], request: ChatRequest) -> dict[str,
 
 def _as_factor(draft: dict[str, Any], order: int) -> Factor:
     first = next(iter(draft["values"].values()))
-    preds = [p.name for p in _atoms(first)]
-    kind = _KIND_OF_PRED.get(preds[0], "state") if preds else "state"
-    return Factor(draft["id"], "", draft.get("question", ""), dict(draft["values"]), kind, order)
+    atoms = _atoms(first)
+    kind = _KIND_OF_PRED.get(atoms[0].name, "state") if atoms else "state"
+    subject = atoms[0].args[0] if atoms else ""
+    return Factor(draft["id"], subject, draft.get("question", ""), dict(draft["values"]), kind, order)
 
 
 def _atoms(text: str) -> list[Any]:
@@ -75,7 +81,16 @@ def _atoms(text: str) -> list[Any]:
 
 @handler("build_tree")
 def build_tree(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
-    factors = [_as_factor(d, i) for i, d in enumerate(payload.get("factors") or [])]
+    """Nest the given factors; a factor the reading found stated under a condition of another
+    (`if there is no sponge` within `if the table is dirty`) is asked only under it."""
+    known = {f.id: f for f in _analysis(payload).factors}
+    factors = []
+    for i, d in enumerate(payload.get("factors") or []):
+        f = known.get(d["id"])
+        factors.append(f if f is not None and f.values == d["values"] else _as_factor(d, i))
+    ids = {f.id for f in factors}
+    for f in factors:
+        f.context = [(dep, allowed) for dep, allowed in f.context if dep in ids]
     return {"subtask": payload["subtask"]["id"], "tree": nest(factors)}
 
 
