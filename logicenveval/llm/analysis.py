@@ -36,7 +36,7 @@ STATE_WORDS: dict[str, tuple[str, bool]] = {
     "cooked": ("cooked", True), "raw": ("cooked", False), "sliced": ("sliced", True),
     "out": ("toggled_on", False), "extinguished": ("toggled_on", False),
     "ringing": ("toggled_on", True), "beeping": ("toggled_on", True), "playing": ("toggled_on", True),
-    "silent": ("toggled_on", False),
+    "silent": ("toggled_on", False), "stopped": ("toggled_on", False), "idle": ("toggled_on", False),
     "broken": ("broken", True), "cracked": ("broken", True),
 }
 #: words between a subject and its predicate that describe a current situation
@@ -45,16 +45,18 @@ DESCRIPTIVE = frozenset(
 )
 #: verbs after a subject that announce where it must go (a goal, not a condition)
 MOTION = frozenset(
-    ["go", "goes", "going", "belong", "belongs", "should", "must", "needs", "need", "get", "gets", "gotten", "be", "put", "placed", "hung", "moved", "returned", "stored", "back", "brought", "taken", "carried"]
+    ["go", "goes", "going", "belong", "belongs", "should", "must", "needs", "need", "get", "gets", "gotten", "put", "placed", "hung", "moved", "returned", "stored", "back", "brought", "taken", "carried"]
 )
 #: action verbs before an object: a location after the object is a goal
 ACTIONS = frozenset(
-    ["put", "place", "move", "take", "bring", "return", "carry", "drop", "set", "lay", "stand", "hang", "throw", "toss", "tuck", "store", "stow", "leave", "fold", "bin", "transfer", "slide", "shove", "push", "pour", "empty", "fill", "refill", "sort", "give"]
+    ["put", "place", "move", "take", "bring", "return", "carry", "drop", "set", "lay", "stand", "hang", "throw", "toss", "tuck", "store", "stow", "leave", "fold", "bin", "transfer", "slide", "shove", "push", "pour", "empty", "fill", "refill", "sort", "give", "file", "load", "unload", "shelve",
+     "pack", "stack", "deliver"]
 )
 ARTICLES = frozenset({"the", "a", "an", "any", "some", "one", "of", "its", "their", "this", "that",
                       "these", "those", "every", "each", "your", "my", "our"})
 PARTS = frozenset({"door", "lid", "leaf", "screen", "soil", "surface", "top", "inside", "water",
-                   "content", "bottom", "side", "handle", "shelf", "drawer", "bag", "glass"})
+                   "content", "bottom", "side", "handle", "shelf", "drawer", "bag", "glass", "bottle",
+                   "box", "pack", "packet", "jar", "carton", "tub", "container", "roll"})
 PRONOUNS = frozenset({"it", "they", "them", "one", "ones", "its", "their"})
 #: participles that turn a noun phrase into a description of the current situation
 SITUATION_PARTICIPLES = frozenset({"left", "lying", "lie", "lies", "sitting", "found", "dropped", "fallen",
@@ -64,7 +66,7 @@ NEGATIONS = frozenset({"not", "no", "none", "never", "without", "nothing", "nobo
 UNCERTAIN = frozenset({"may", "might", "possibly", "perhaps", "maybe", "could", "sometimes",
                        "occasionally", "potentially", "probably", "likely"})
 CONDITIONAL = ("depending on whether", "depending on if", "in case", "as long as", "provided that",
-               "only if", "if not", "if so", "whether", "if", "unless", "whenever", "when",
+               "only if", "if not", "if so", "whether", "if", "unless", "whenever", "when", "while", "once",
                "should there be", "should")
 ELSE_CUES = ("otherwise", "else", "failing that", "if not", "if there is not", "if there are not")
 ELSEWHERE = ("anywhere else", "elsewhere", "somewhere else", "any other place", "not there")
@@ -404,7 +406,8 @@ class _Reader:
             k += 1
             while k < len(words) and words[k] in {"and", "but", "or", ","}:
                 k += 1
-        j = m.start - 1
+        # "a dirty plate", "wet ones", but not "open it"
+        j = m.start - 1 if m.kind == "role" or words[m.start] in ("one", "ones") else -1
         while j >= 0 and words[j] in set(STATE_WORDS) | {"and", "but"} and words[j] not in ("on", "off"):
             if words[j] in STATE_WORDS:
                 found.append((words[j], False, True))
