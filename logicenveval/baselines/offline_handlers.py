@@ -24,7 +24,7 @@ from logicenveval.baselines.drafts import floor_plan
 from logicenveval.baselines.geometry import room_dims
 from logicenveval.baselines.heuristics import guess_coordinates
 from logicenveval.domain.catalog import Catalog, load_catalog
-from logicenveval.generators.realise import NEEDS_SURFACE, realise
+from logicenveval.generators.realise import task_objects
 from logicenveval.llm.analysis import Factor, analyse
 from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.offline import handler
@@ -62,28 +62,6 @@ def default_rooms(task: dict[str, Any]) -> list[dict[str, Any]]:
                     "windows": [] if rtype in ("Hallway", "Pantry", "Entryway") else
                     [{"wall": "n", "width": 1.2, "height": 1.2, "sill": 0.9, "state": "closed"}]})
     return out
-
-
-def task_objects(task: dict[str, Any], facts: list[str], catalog: Catalog) -> list[dict[str, Any]]:
-    """One object per present role (id = role name), placed, attributed and stated as `facts` say;
-    a side table is added when an item needs a surface its room lacks."""
-    roles = task["roles"]
-    objects: list[dict[str, Any]] = []
-    extra: dict[str, str] = {}
-    for role, c in realise(task, facts, catalog).items():
-        if not c.present:
-            continue
-        placement = c.placement or "floor"
-        room = c.room or task["rooms"][0]
-        if placement == NEEDS_SURFACE:
-            extra.setdefault(room, f"side_table_{room}")
-            placement = f"on:{extra[room]}"
-        objects.append({"id": role, "category": roles[role]["category"], "room": room, "role": role,
-                        "placement": placement, "attributes": c.attributes, "states": c.states})
-    for room, oid in extra.items():
-        objects.append({"id": oid, "category": "side_table", "room": room, "role": None,
-                        "placement": "floor", "attributes": {}, "states": {}})
-    return objects
 
 
 def flat_situations(factors: list[Factor]) -> list[tuple[str, list[str]]]:

@@ -193,12 +193,12 @@ class EnvironmentBuilder:
                        relations: list[RelationDraft], claim: dict[str, dict[str, str]] | None) -> EnvSpec:
         import numpy as np
 
-        from logicenveval.scene.construct import _room_requests, env_from_placed
+        from logicenveval.scene.construct import env_from_placed, room_requests
         from logicenveval.scene.floorplan import plan_floor
 
         # the model sees the same floor plan that the EnvSpec will have: one seed for both
         plan_seed = int(self.ctx.rng.integers(2**31))
-        plan = plan_floor(_room_requests(rooms), np.random.default_rng(plan_seed))
+        plan = plan_floor(room_requests(rooms), np.random.default_rng(plan_seed))
         reply = ask(self.ctx.model, "place_objects", self._payload(
             rooms=[r.model_dump(mode="json") for r in plan.rooms], objects=[o.model_dump() for o in objects],
             relations=[r.model_dump() for r in relations]), PlacementReply, seed=self.ctx.seed)

@@ -13,7 +13,7 @@ import re
 from typing import Any
 
 from logicenveval.domain.catalog import load_catalog
-from logicenveval.generators.realise import NEEDS_SURFACE, realise
+from logicenveval.generators.realise import task_objects
 from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.offline import handler
 from logicenveval.model.rooms import room_type_of
@@ -83,29 +83,10 @@ def feedback_facts(feedback: list[str], facts: list[str]) -> list[str]:
 
 
 def _task_objects(payload: dict[str, Any]) -> list[dict[str, Any]]:
-    """One object per role (id = role name), placed so that the situation facts hold."""
-    catalog = load_catalog()
-    roles = payload["task"]["roles"]
-    objects = []
-    extra: dict[str, str] = {}
+    """One object per role, placed so that the situation facts (and the layout's feedback) hold."""
     facts = list(payload.get("facts") or [])
     facts += feedback_facts(list(payload.get("feedback") or []), facts)
-    for role, c in realise(payload["task"], facts, catalog).items():
-        if not c.present:
-            continue
-        placement = c.placement or "floor"
-        if placement == NEEDS_SURFACE:
-            room = c.room or payload["task"]["rooms"][0]
-            extra.setdefault(room, f"side_table_{room}")
-            placement = f"on:{extra[room]}"
-        objects.append({"id": role, "category": roles[role]["category"], "room": c.room, "role": role,
-                        "placement": placement, "attributes": c.attributes, "states": c.states,
-                        "description": f"the {role.replace('_', ' ')}"})
-    for room, oid in extra.items():
-        objects.append({"id": oid, "category": "side_table", "room": room, "role": None,
-                        "placement": "floor", "attributes": {}, "states": {},
-                        "description": "a side table to put things on"})
-    return objects
+    return task_objects(payload["task"], facts, load_catalog())
 
 
 @handler("select_objects")

@@ -150,3 +150,27 @@ def _places(choice: dict[str, RoleChoice], roles: dict[str, Any], catalog: Catal
             c.placement = options[0]
         else:
             c.placement = "floor" if "floor" not in c.banned_places else NEEDS_SURFACE
+
+
+def task_objects(task: Mapping[str, Any], facts: list[str], catalog: Catalog) -> list[dict[str, Any]]:
+    """Object drafts for the task's roles (id = role name) realising `facts`; a side table is added
+    when an item needs a surface its room lacks."""
+    roles = task["roles"]
+    objects: list[dict[str, Any]] = []
+    extra: dict[str, str] = {}
+    for role, c in realise(task, facts, catalog).items():
+        if not c.present:
+            continue
+        placement = c.placement or "floor"
+        room = c.room or task["rooms"][0]
+        if placement == NEEDS_SURFACE:
+            extra.setdefault(room, f"side_table_{room}")
+            placement = f"on:{extra[room]}"
+        objects.append({"id": role, "category": roles[role]["category"], "room": room, "role": role,
+                        "placement": placement, "attributes": c.attributes, "states": c.states,
+                        "description": f"the {role.replace('_', ' ')}"})
+    for room, oid in extra.items():
+        objects.append({"id": oid, "category": "side_table", "room": room, "role": None,
+                        "placement": "floor", "attributes": {}, "states": {},
+                        "description": "a side table to put things on"})
+    return objects

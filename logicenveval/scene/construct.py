@@ -525,7 +525,7 @@ def construct_environment(spec: SceneSpec, *, catalog: Catalog, rng: np.random.G
 
 # --- adapters for generators (LLM drafts are duck-typed: scene does not import llm) ----------------
 
-def _room_requests(rooms: Sequence[Mapping[str, Any]]) -> list[RoomRequest]:
+def room_requests(rooms: Sequence[Mapping[str, Any]]) -> list[RoomRequest]:
     out = []
     for r in rooms:
         out.append(RoomRequest(
@@ -559,7 +559,7 @@ def construct_from_drafts(*, brief: Any, env_id: str, generator: str, rooms: Seq
             rels.append(RelationRequest(type=r.type, args=tuple(r.args)))
         except ValueError as exc:
             warnings.append(f"relation {r.type}({', '.join(r.args)}) ignored: {exc}")
-    spec = SceneSpec(task_id=brief.id, env_id=env_id, generator=generator, rooms=_room_requests(rooms),
+    spec = SceneSpec(task_id=brief.id, env_id=env_id, generator=generator, rooms=room_requests(rooms),
                      objects=reqs, relations=rels, claimed_trajectory=claimed_trajectory)
     res = construct_environment(spec, catalog=catalog, rng=rng, solver=solver)
     return res.model_copy(update={"warnings": warnings + res.warnings}) if warnings else res
@@ -570,7 +570,7 @@ def env_from_placed(*, brief: Any, env_id: str, generator: str, rooms: Sequence[
                     claimed_trajectory: dict[str, dict[str, str]] | None, catalog: Catalog,
                     rng: np.random.Generator) -> EnvSpec:
     """An EnvSpec with the model's own coordinates (no solver: the no-CAS ablation and baselines)."""
-    plan = plan_floor(_room_requests(rooms), rng)
+    plan = plan_floor(room_requests(rooms), rng)
     ids = {o.id for o in placed}
     room_ids = {r.id for r in plan.rooms}
     objs = []
