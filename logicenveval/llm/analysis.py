@@ -231,7 +231,8 @@ def _subsplit(pieces: list[tuple[str, str | None, str]]) -> list[tuple[str, str 
     """`it is on, and close the wardrobe`: a condition ends at `, and`; what follows is an action."""
     out: list[tuple[str, str | None, str]] = []
     for text, cue, role in pieces:
-        parts = [p for p in re.split(r",\s*(?:and|but|then)\s+", text) if p.strip()]
+        splitter = r",\s*(?:and|but|then)\s+" + (r"|,\s*(?=the\s)" if role == "consequence" else "")
+        parts = [p for p in re.split(splitter, text) if p.strip()]
         for i, part in enumerate(parts):
             out.append((part, cue, role if i == 0 or role != "condition" else "consequence"))
     return out
@@ -276,6 +277,7 @@ class _Reader:
                                           or words[i + 1 : i + 2] == ["of"]):
                 continue  # "one of the cushions", "each one": not an anaphoric "one"
             before = [m for m in found if m.kind == "role" and m.end <= i]
+            places = [m for m in found if m.kind in ("role", "floor") and m.end <= i]
             if w in ("one", "ones"):  # "a dirty one": the kind the clause or sentence is about
                 before = [m for m in before if all(x in ARTICLES | set(STATE_WORDS) for x in words[: m.start])]
             elif i > 0 and words[i - 1] in PREP_ON | PREP_IN and before:
@@ -285,9 +287,11 @@ class _Reader:
                     if not _joined(words, m, listed[-1]):
                         break
                     listed.append(m)
-                before = [m for m in before if m not in listed]
+                # the place spoken about first in the clause ("the floor ... a toy on it")
+                before = [m for m in places if m not in listed][:1]
             if before:
-                found.append(Mention(before[-1].roles, i, i + 1, "pronoun"))
+                found.append(Mention(before[-1].roles, i, i + 1,
+                                     "pronoun" if before[-1].kind == "role" else before[-1].kind))
             elif self.topic:
                 found.append(Mention(self.topic, i, i + 1, "pronoun" if self.topic_kind == "role" else "floor"))
         found.sort(key=lambda m: m.start)
@@ -351,7 +355,8 @@ class _Reader:
                                   ) and words[k] not in PREP_ON | PREP_IN:
             skipped.append(words[k])
             k += 1
-        if k >= len(words) or words[k] not in PREP_ON | PREP_IN:
+        if k >= len(words) or words[k] not in PREP_ON | PREP_IN or (
+                skipped and skipped[-1] in ("switched", "turned")):  # "switched on" is not a place
             return []
         goal = self._is_goal(words, m, skipped) or words[k] in ("into", "onto")
         article = words[m.start - 1] if m.start > 0 else ""
@@ -364,7 +369,9 @@ class _Reader:
             prep = words[k]
             if prep == "on" and words[k + 1 : k + 3] == ["top", "of"]:
                 k += 2
-            target = next((t for t in mentions if t.start > k and t.kind in ("role", "room", "floor")), None)
+            target = next((t for t in mentions if t.start > k and (
+                t.kind in ("role", "room", "floor") or t.kind == "pronoun" and words[t.start] in ("it", "them"))),
+                None)
             if target is None or target.start - k > 3:
                 break
             for s in dict.fromkeys(subjects):
@@ -400,7 +407,8 @@ class _Reader:
             w = words[k]
             if w == "out" and not set(skipped) & {"is", "are", "was", "were", "already", "still"}:
                 break  # `take it out` is an action, `it is out` a state
-            if w in ("on", "off") and k + 1 < len(words) and words[k + 1] in ARTICLES | PRONOUNS | {"floor"}:
+            if w in ("on", "off") and k + 1 < len(words) and words[k + 1] in ARTICLES | PRONOUNS | {"floor"} \
+                    and not (skipped and skipped[-1] in ("switched", "turned")):
                 break  # `on the table` is a place, not `switched on`
             found.append((w, local_neg, False))
             k += 1
