@@ -38,15 +38,17 @@ class _Encoding:
         self.rooms = list(task.rooms)
         n = len(self.roles)
         self.caps = [caps_of(task.roles[r].category, catalog) for r in self.roles]
-        self.exists = [z3.Bool(f"exists_{r}") for r in self.roles]
-        self.room = [z3.Int(f"room_{r}") for r in self.roles]
+        # a private z3 context: the optimum found must not depend on earlier solves in the process
+        self.ctx = z3.Context()
+        self.exists = [z3.Bool(f"exists_{r}", self.ctx) for r in self.roles]
+        self.room = [z3.Int(f"room_{r}", self.ctx) for r in self.roles]
         # support: 0 none, 1 floor, 2 + j object j; container: 0 none, 1 + j object j
-        self.sup = [z3.Int(f"sup_{r}") for r in self.roles]
-        self.cont = [z3.Int(f"cont_{r}") for r in self.roles]
-        self.level = [z3.Int(f"level_{r}") for r in self.roles]
+        self.sup = [z3.Int(f"sup_{r}", self.ctx) for r in self.roles]
+        self.cont = [z3.Int(f"cont_{r}", self.ctx) for r in self.roles]
+        self.level = [z3.Int(f"level_{r}", self.ctx) for r in self.roles]
         self.attrs: dict[tuple[int, str], tuple[z3.ArithRef, list[str]]] = {}
         self.flags: dict[tuple[int, str], z3.BoolRef] = {}
-        self.opt = z3.Optimize()
+        self.opt = z3.Optimize(ctx=self.ctx)
         self._axioms(n)
 
     def _axioms(self, n: int) -> None:
@@ -103,14 +105,14 @@ class _Encoding:
                     domain.append(v)
             if _OTHER not in domain:
                 domain.append(_OTHER)
-            var = z3.Int(f"attr_{self.roles[i]}_{key}")
+            var = z3.Int(f"attr_{self.roles[i]}_{key}", self.ctx)
             self.opt.add(var >= 0, var < len(domain))
             fixed = role.attributes.get(key)
             if fixed is not None:
                 self.opt.add(var == domain.index(fixed))
             got = self.attrs[(i, key)] = (var, domain)
         var, domain = got
-        return var == domain.index(value) if value in domain else z3.BoolVal(False)
+        return var == domain.index(value) if value in domain else z3.BoolVal(False, self.ctx)
 
     def _mentioned_values(self, role: str, key: str) -> list[str]:
         out: list[str] = []
@@ -127,7 +129,7 @@ class _Encoding:
     def _flag(self, i: int, flag: str) -> z3.BoolRef:
         got = self.flags.get((i, flag))
         if got is None:
-            got = self.flags[(i, flag)] = z3.Bool(f"state_{self.roles[i]}_{flag}")
+            got = self.flags[(i, flag)] = z3.Bool(f"state_{self.roles[i]}_{flag}", self.ctx)
             cat = self.catalog.get(self.task.roles[self.roles[i]].category)
             default = bool(cat.default_states.get(flag, False)) if cat is not None else False
             self.opt.add_soft(got if default else z3.Not(got), 2)
@@ -136,13 +138,13 @@ class _Encoding:
     def pred(self, p: Pred) -> z3.BoolRef:
         name, args = p.name, p.args
         if name in ("holding", "near"):
-            return z3.BoolVal(args[0] == "floor" and name == "near")
+            return z3.BoolVal(args[0] == "floor" and name == "near", self.ctx)
         if name == "agent_in":
             return z3.BoolVal(bool(self.rooms) and (args[0] == self.rooms[0]
-                                                    or args[0] == room_type_of(self.rooms[0])))
+                                                    or args[0] == room_type_of(self.rooms[0])), self.ctx)
         i = self._obj(args[0])
         if i is None:
-            return z3.BoolVal(False)
+            return z3.BoolVal(False, self.ctx)
         ex = self.exists[i]
         if name == "exists":
             return ex
@@ -150,22 +152,22 @@ class _Encoding:
             if args[1] == "floor":
                 return z3.And(ex, self.sup[i] == 1)
             j = self._obj(args[1])
-            return z3.And(ex, self.sup[i] == 2 + j) if j is not None else z3.BoolVal(False)
+            return z3.And(ex, self.sup[i] == 2 + j) if j is not None else z3.BoolVal(False, self.ctx)
         if name == "inside":
             j = self._obj(args[1])
-            return z3.And(ex, self.cont[i] == 1 + j) if j is not None else z3.BoolVal(False)
+            return z3.And(ex, self.cont[i] == 1 + j) if j is not None else z3.BoolVal(False, self.ctx)
         if name == "in_room":
             ks = [k for k, r in enumerate(self.rooms) if args[1] in (r, room_type_of(r))]
-            return z3.And(ex, z3.Or(*[self.room[i] == k for k in ks])) if ks else z3.BoolVal(False)
+            return z3.And(ex, z3.Or(*[self.room[i] == k for k in ks])) if ks else z3.BoolVal(False, self.ctx)
         if name == "attr":
             return z3.And(ex, self._attr(i, args[1], args[2]))
         if name == "state":
             return z3.And(ex, self._flag(i, args[1]))
-        return z3.BoolVal(False)
+        return z3.BoolVal(False, self.ctx)
 
     def cond(self, c: Cond) -> z3.BoolRef:
         if isinstance(c, Const):
-            return z3.BoolVal(c.value)
+            return z3.BoolVal(c.value, self.ctx)
         if isinstance(c, Pred):
             return self.pred(c)
         if isinstance(c, Not):
@@ -234,7 +236,7 @@ def _situation_env(task: Task, trajectory: Trajectory, cat: Catalog) -> EnvSpec:
     edges = _path_constraints(task, trajectory)
     labels: list[tuple[z3.BoolRef, str, str]] = []
     for k, (subtask, var, cond, wanted) in enumerate(edges):
-        lit = z3.Bool(f"edge_{k}")
+        lit = z3.Bool(f"edge_{k}", enc.ctx)
         f = enc.cond(cond)
         enc.opt.add(lit == (f if wanted else z3.Not(f)))
         labels.append((lit, subtask, var))
