@@ -135,3 +135,22 @@ def test_sigkill_midway_then_resume(tmp_path: Path) -> None:
                    stdout=subprocess.DEVNULL)
     (fresh_dir,) = [p for p in fresh.iterdir() if p.is_dir()]
     assert _stable(resumed) == _stable(json.loads((fresh_dir / "results.json").read_text()))
+
+
+def test_task_sets_outside_the_repository(tmp_path: Path) -> None:
+    """`--tasks-dir` runs the same pipeline on a task folder kept elsewhere, without code changes."""
+    import shutil
+
+    from logicenveval.benchmark import DEFAULT_TASKS_DIR
+
+    tasks = tmp_path / "my_tasks"
+    shutil.copytree(DEFAULT_TASKS_DIR / "clean_living_room", tasks / "tidy_lounge")
+    data = json.loads((tasks / "tidy_lounge" / "task.json").read_text())
+    data["id"] = "tidy_lounge"
+    (tasks / "tidy_lounge" / "task.json").write_text(json.dumps(data))
+    out = tmp_path / "out"
+    assert main(["run", "--model", "offline", "--tasks-dir", str(tasks), "--generators", "logicenvgen",
+                 "--executor", "inprocess", "--output", str(out), "--quiet"]) == 0
+    (run_dir,) = [p for p in out.iterdir() if p.is_dir()]
+    results = json.loads((run_dir / "results.json").read_text())
+    assert results["tasks"] == ["tidy_lounge"] and results["results"]["logicenvgen"]["logcov"] == 1.0

@@ -14,19 +14,11 @@ from pydantic import ValidationError
 
 from logicenveval.baselines.geometry import RoomRect, layout_rooms
 from logicenveval.errors import EnvSpecError
+from logicenveval.generators.construction import placement_fields
 from logicenveval.llm.replies import DoorDraft, PlacedObject, RelationDraft, RoomDraft
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import TaskBrief
 from logicenveval.validation import first_error
-
-
-def placement_fields(placement: str) -> tuple[str | None, str | None]:
-    """(support, container) of a placement string `floor|wall|ceiling|on:<id>|inside:<id>`."""
-    if placement.startswith("on:"):
-        return placement[3:], None
-    if placement.startswith("inside:"):
-        return None, placement[7:]
-    return (placement if placement in ("floor", "wall", "ceiling") else "floor"), None
 
 
 def floor_plan(rooms: list[RoomDraft]) -> tuple[list[RoomRect], list[dict[str, Any]], list[dict[str, Any]]]:

@@ -12,7 +12,7 @@ from typing import Any
 
 import numpy as np
 
-from logicenveval.baselines.drafts import floor_plan, placement_fields
+from logicenveval.baselines.drafts import floor_plan
 from logicenveval.baselines.geometry import RoomRect, typical_size
 from logicenveval.baselines.holodeck_solver import (
     DOOR_CLEARANCE,
@@ -29,6 +29,7 @@ from logicenveval.baselines.replies import HolodeckSceneReply
 from logicenveval.domain.catalog import Catalog
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.base import GenerationContext, GenerationFailure, GenerationResult
+from logicenveval.generators.construction import placement_fields
 from logicenveval.llm.ask import ask
 from logicenveval.llm.replies import ObjectDraft
 from logicenveval.model.envspec import EnvSpec
