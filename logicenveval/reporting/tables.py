@@ -49,7 +49,8 @@ def rows(results: dict[str, Any]) -> list[list[str]]:
     out = []
     for gen, values in results["results"].items():
         out.append([method_label(gen, results.get("model", ""))]
-                   + [fmt(metric(values, path), pct) for _, path, pct in COLUMNS])
+                   + [str(int(values["n_envs"])) if path == ("n_envs",) else fmt(metric(values, path), pct)
+                      for _, path, pct in COLUMNS])
     return out
 
 
