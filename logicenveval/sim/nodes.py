@@ -436,8 +436,15 @@ class SubTree(Decorator):
         return self.child.tick(ep)
 
 
-class RetryUntilSuccessful(Decorator):
+class _CountedLoop(Decorator):
+    """Re-ticks its child up to `limit` times (< 0: forever); `stop_on` ends the loop at once.
+
+    RetryUntilSuccessful and Repeat are the same loop with the child's statuses swapped.
+    """
+
     __slots__ = ("limit", "count")
+    stop_on: int
+    exhausted: int
 
     def __init__(self, label: str, path: str, name: str | None, child: Node, limit: int) -> None:
         super().__init__(label, path, name, child)
@@ -460,46 +467,25 @@ class RetryUntilSuccessful(Decorator):
             st = self.child.tick(ep)
             if st == RUNNING:
                 return RUNNING
-            if st == SUCCESS:
+            if st == self.stop_on:
                 self.halt()
-                return SUCCESS
+                return self.stop_on
             self.count += 1
             _reset(self.child)
         self.halt()
-        return FAILURE
+        return self.exhausted
 
 
-class Repeat(Decorator):
-    __slots__ = ("limit", "count")
+class RetryUntilSuccessful(_CountedLoop):
+    __slots__ = ()
+    stop_on = SUCCESS
+    exhausted = FAILURE
 
-    def __init__(self, label: str, path: str, name: str | None, child: Node, limit: int) -> None:
-        super().__init__(label, path, name, child)
-        self.limit = limit
-        self.count = 0
 
-    def halt(self) -> None:
-        self.count = 0
-        _reset(self.child)
-
-    def reset_all(self) -> None:
-        self.count = 0
-        super().reset_all()
-
-    def _tick(self, ep: Episode) -> int:
-        while self.limit < 0 or self.count < self.limit:
-            ep.steps += 1
-            if ep.steps > STEP_BUDGET:
-                raise BudgetExceeded
-            st = self.child.tick(ep)
-            if st == RUNNING:
-                return RUNNING
-            if st == FAILURE:
-                self.halt()
-                return FAILURE
-            self.count += 1
-            _reset(self.child)
-        self.halt()
-        return SUCCESS
+class Repeat(_CountedLoop):
+    __slots__ = ()
+    stop_on = FAILURE
+    exhausted = SUCCESS
 
 
 class KeepRunningUntilFailure(Decorator):
