@@ -1,7 +1,7 @@
 """Simulator throughput on one core over every (task, policy, situation) of the benchmark.
 
 Situation environments are built once (z3, untimed); the timed loop resets a world copy per
-episode and reuses each policy's compiled tree. The baseline, measured in the same run, is the
+episode and reuses each policy's py_trees tree (built once). The baseline, measured in the same run, is the
 convenience path `simulate()` that rebuilds the world from the EnvSpec and the GT goal each call.
 Last line: `episodes_per_s=<float> ticks_per_s=<float>`.
 """

@@ -142,24 +142,42 @@ def test_round_trip_keeps_names_and_params() -> None:
     assert 'name="both"' in policy_to_xml(p)
 
 
-def test_py_trees_view_mirrors_structure() -> None:
-    from logicenveval.sim.pytrees_view import to_py_trees, unicode_tree
+def test_xml_parses_into_py_trees_and_exports_back() -> None:
+    import py_trees
+
+    from logicenveval.sim import nodes
+    from logicenveval.sim.pytrees_io import load_tree, tree_from_xml, tree_to_xml, unicode_tree
 
     task = living_room_task()
-    p = load_policy(POLICIES / "correct.xml", roles=task.roles)
-
-    def count(node: object) -> int:
-        kids = getattr(node, "children", [])
-        return 1 + sum(count(c) for c in kids)
-
-    def count_policy(kind_root: object) -> int:
-        from logicenveval.sim.policy import PolicyNode
-
-        assert isinstance(kind_root, PolicyNode)
-        if kind_root.kind == "SubTree":
-            return 1 + count_policy(p.trees[kind_root.param("ID") or ""])
-        return 1 + sum(count_policy(c) for c in kind_root.children)
-
-    assert count(to_py_trees(p)) == count_policy(p.trees[p.main])
-    text = unicode_tree(p)
+    for kind in ("correct", "counterfactual", "unreachable", "lackbranch"):
+        p = load_policy(POLICIES / f"{kind}.xml", roles=task.roles, rooms=task.rooms)
+        root = load_tree(POLICIES / f"{kind}.xml", roles=task.roles, rooms=task.rooms)
+        assert all(isinstance(n, py_trees.behaviour.Behaviour) for n in root.iterate())
+        text = tree_to_xml(root)
+        assert policy_from_xml(text, roles=task.roles, rooms=task.rooms) == p
+        assert tree_to_xml(tree_from_xml(text, roles=task.roles, rooms=task.rooms)) == text
+    root = load_tree(POLICIES / "correct.xml", roles=task.roles)
+    kinds = {type(n) for n in root.iterate()}
+    assert {nodes.SubTree, nodes.ActionNode, nodes.ConditionNode} <= kinds
+    assert all(isinstance(n, py_trees.composites.Composite) for n in root.iterate()
+               if isinstance(n, nodes.Control))
+    text = unicode_tree(root)
     assert "PutIn(obj=toy, target=white_box)" in text and "SubTree(TidyBook)" in text
+
+
+def test_round_trip_of_every_control_node_through_py_trees() -> None:
+    from logicenveval.sim.pytrees_io import tree_from_xml, tree_to_xml
+
+    body = ('<Sequence name="all"><SequenceWithMemory><ReactiveSequence><AlwaysSuccess/></ReactiveSequence>'
+            '</SequenceWithMemory><Fallback><ReactiveFallback><AlwaysFailure/></ReactiveFallback></Fallback>'
+            '<IfThenElse><Holding obj="toy"/><Pick obj="toy"/><AlwaysSuccess/></IfThenElse>'
+            '<WhileDoElse><Holding obj="toy"/><AlwaysSuccess/></WhileDoElse>'
+            '<Parallel success_count="1" failure_count="2"><AlwaysSuccess/><AlwaysFailure/></Parallel>'
+            '<Inverter><ForceSuccess><ForceFailure><AlwaysSuccess/></ForceFailure></ForceSuccess></Inverter>'
+            '<RetryUntilSuccessful num_attempts="3"><Repeat num_cycles="2"><KeepRunningUntilFailure>'
+            '<AlwaysFailure/></KeepRunningUntilFailure></Repeat></RetryUntilSuccessful>'
+            '<SubTree ID="Sub"/></Sequence>')
+    text = doc(body, '  <BehaviorTree ID="Sub">\n<Walk target="box"/>\n  </BehaviorTree>\n')
+    p = policy_from_xml(text, roles=ROLES)
+    again = tree_to_xml(tree_from_xml(text, roles=ROLES))
+    assert policy_from_xml(again, roles=ROLES) == p

@@ -178,6 +178,27 @@ def test_subtree_path() -> None:
     assert v.fault_path == "Main/Sequence/SubTree(Put)[0]/PutIn"
 
 
+def test_tree_ticks_under_py_trees_behaviour_tree_with_visitors() -> None:
+    """The executed tree is a py_trees tree: BehaviourTree and its visitors drive it too."""
+    import py_trees
+
+    from logicenveval.sim.nodes import Episode, build_tree
+
+    text = f'<root BTCPP_format="4"><BehaviorTree ID="Main"><Sequence>{TIDY}</Sequence></BehaviorTree></root>'
+    root = build_tree(policy_from_xml(text, roles=TASK.roles))
+    world = World.from_env(ENV, CAT)
+    root.binding.ep = Episode(world)
+    tree = py_trees.trees.BehaviourTree(root)
+    snapshot = py_trees.visitors.SnapshotVisitor()
+    tree.visitors.append(snapshot)
+    seen: set[str] = set()
+    while root.status is not py_trees.common.Status.SUCCESS and tree.count < 10:
+        tree.tick()
+        seen |= {n.name for n in root.iterate() if n.id in snapshot.visited}
+    assert tree.count == 5 and world.holds("inside", ("toy", "box"))
+    assert {"Walk(target=toy)", "Pick(obj=toy)", "PutIn(obj=toy, target=box)"} <= seen
+
+
 # ----- properties ------------------------------------------------------------------------
 NAMES = ["toy", "box", "sofa", "fridge", "floor", "kitchen", "living_room"]
 STEP = st.tuples(st.sampled_from(sorted(ACTIONS)), st.sampled_from(NAMES), st.sampled_from(NAMES))

@@ -69,10 +69,9 @@ def run(args: argparse.Namespace) -> int:
         env = situation_env(task, trajectory, catalog)
     verdict = simulate_file(path, env, task, catalog, tick_limit=args.tick_limit, trace=args.trace)
     if args.show_tree and not args.json:
-        from logicenveval.sim.loader import load_policy
-        from logicenveval.sim.pytrees_view import unicode_tree
+        from logicenveval.sim.pytrees_io import load_tree, unicode_tree
 
-        print(unicode_tree(load_policy(path)))
+        print(unicode_tree(load_tree(path)))
     if args.json:
         print(json.dumps(verdict.model_dump(mode="json"), indent=2))
     else:

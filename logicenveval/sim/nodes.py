@@ -1,25 +1,34 @@
-"""Executable BT nodes with BehaviorTree.CPP v4 semantics (sequence_node.cpp, fallback_node.cpp,
+"""py_trees behaviours with BehaviorTree.CPP v4 semantics (sequence_node.cpp, fallback_node.cpp,
 reactive_*.cpp, if_then_else_node.cpp, while_do_else_node.cpp, parallel_node.cpp, decorators).
 
-A policy is compiled once into these nodes; an episode binds a fresh `Episode` (world copy,
-fault slot, optional trace) and ticks the root. Actions are asynchronous and take one tick: the
-first tick checks the precondition and returns RUNNING, the next applies the effect and returns
-SUCCESS, so every action costs one root tick and `tick_limit` bounds plan length and loops.
-The first precondition violation stops the episode at once (it decides the verdict whatever
-recovers from it later).
+A policy is built once into a py_trees tree (`build_tree`); an episode binds a fresh `Episode`
+(world copy, fault slot, optional trace) to the tree's shared `Binding` and ticks the root with
+py_trees' generator protocol (`root.tick_once()`). Leaves are ordinary py_trees behaviours
+(`initialise`/`update`); the control nodes override `tick()` like py_trees' own composites do,
+because BT.CPP's index memory, `resetChild` (halt a child only if it is RUNNING, so a finished
+`SequenceWithMemory` keeps its position), `IfThenElse`, `WhileDoElse` and `Parallel` thresholds
+are not what py_trees' `Sequence`/`Selector`/`Parallel` do.
+
+Actions are asynchronous and take one tick: the first tick checks the precondition and returns
+RUNNING, the next re-checks it, applies the effect and returns SUCCESS, so every action costs one
+root tick and `tick_limit` bounds plan length and loops. The first precondition violation stops
+the episode at once (it decides the verdict whatever recovers from it later).
 """
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import Any
+
+import py_trees
+from py_trees.common import Status
 
 from logicenveval.domain.actions import ACTIONS, CONDITIONS, ActionSpec
 from logicenveval.sim.policy import Policy, PolicyNode
 from logicenveval.sim.world import World
 
-IDLE, SUCCESS, FAILURE, RUNNING = 0, 1, 2, 3
-STATUS_NAMES = ("IDLE", "SUCCESS", "FAILURE", "RUNNING")
+IDLE, SUCCESS, FAILURE, RUNNING = Status.INVALID, Status.SUCCESS, Status.FAILURE, Status.RUNNING
 #: node ticks allowed within one episode, so that a loop that never returns RUNNING
 #: (e.g. RetryUntilSuccessful num_attempts=-1 over a failing condition) still ends
 STEP_BUDGET = 100_000
@@ -28,7 +37,7 @@ STEP_BUDGET = 100_000
 class Violation(Exception):  # noqa: N818
     """Internal signal: a precondition failed; it ends the episode (never leaves `sim`)."""
 
-    def __init__(self, node: Leaf, message: str) -> None:
+    def __init__(self, node: BTNode, message: str) -> None:
         super().__init__(message)
         self.node = node
         self.message = message
@@ -46,142 +55,176 @@ class Episode:
     tick: int = 0
     steps: int = 0
     trace: list[dict[str, Any]] | None = None
-    last_fail: Node | None = field(default=None)
+    last_fail: BTNode | None = field(default=None)
 
 
-class Node:
-    __slots__ = ("label", "path", "name", "status")
+class Binding:
+    """The slot through which every node of one tree reaches the current episode."""
 
-    def __init__(self, label: str, path: str, name: str | None) -> None:
-        self.label = label
-        self.path = path
-        self.name = name
-        self.status = IDLE
+    __slots__ = ("ep",)
 
-    def tick(self, ep: Episode) -> int:
-        st = self._tick(ep)
-        self.status = st
-        return st
+    def __init__(self) -> None:
+        self.ep: Episode | None = None
 
-    def _tick(self, ep: Episode) -> int:
-        raise NotImplementedError
+    @property
+    def episode(self) -> Episode:
+        if self.ep is None:
+            raise RuntimeError("tick the tree through CompiledPolicy.run, which binds an episode")
+        return self.ep
 
-    def halt(self) -> None:
-        """Interrupt a RUNNING node (BT.CPP `haltNode`)."""
+
+class BTNode(py_trees.behaviour.Behaviour):
+    """What every node adds to py_trees' Behaviour: its BT.CPP identity, for faults and export.
+
+    `kind` is the BT.CPP node ID, `params` its ports/parameters, `bt_name` its `name` attribute,
+    `path` the fault path (`Tree/Node[i]/...`) and `tree_id` the BehaviorTree ID of a tree root.
+    """
+
+    kind: str
+    params: tuple[tuple[str, str], ...]
+    bt_name: str | None
+    path: str
+    binding: Binding
+    tree_id: str | None
+
+    def setup_bt(self, p: PolicyNode, path: str, binding: Binding) -> None:
+        self.kind, self.params, self.bt_name = p.kind, p.params, p.name
+        self.path, self.binding, self.tree_id = path, binding, None
+
+    @property
+    def label(self) -> str:
+        """The node's ID as fault paths spell it (`SubTree(ID)` for a SubTree)."""
+        return f"SubTree({self.param('ID')})" if self.kind == "SubTree" else self.kind
+
+    def param(self, key: str) -> str | None:
+        return next((v for k, v in self.params if k == key), None)
 
     def reset_all(self) -> None:
         """Forget every bit of state, memory included (start of an episode)."""
         self.status = IDLE
 
 
-def _reset(node: Node) -> None:
-    """BT.CPP `resetChild`: halt the node only if it is RUNNING, then mark it IDLE; a
-    finished SequenceWithMemory thus keeps its position."""
-    if node.status == RUNNING:
-        node.halt()
+def display_name(p: PolicyNode) -> str:
+    """py_trees name of a node: BT.CPP ID with its ports, prefixed by its `name` attribute."""
+    ports = ", ".join(f"{k}={v}" for k, v in p.params)
+    text = f"{p.label}({ports})" if ports and p.kind != "SubTree" else p.label
+    return f"{p.name}: {text}" if p.name else text
+
+
+def _reset(node: py_trees.behaviour.Behaviour) -> None:
+    """BT.CPP `resetChild`: halt the node only if it is RUNNING, then mark it IDLE; a finished
+    SequenceWithMemory thus keeps its position."""
+    if node.status is RUNNING:
+        node.stop(IDLE)
     node.status = IDLE
 
 
-class Leaf(Node):
-    __slots__ = ()
-
-
-class ActionNode(Leaf):
-    __slots__ = ("spec", "args", "running")
-
-    def __init__(self, label: str, path: str, name: str | None, spec: ActionSpec,
-                 args: dict[str, str]) -> None:
-        super().__init__(label, path, name)
-        self.spec = spec
-        self.args = args
-        self.running = False
-
-    def _tick(self, ep: Episode) -> int:
-        ep.steps += 1
-        why = self.spec.check(ep.world, self.args)
-        if why is not None:
-            self.running = False
-            if ep.trace is not None:
-                ep.trace.append(_event(ep, self, "violation", why))
-            raise Violation(self, why)
-        if not self.running:
-            self.running = True
-            if ep.trace is not None:
-                ep.trace.append(_event(ep, self, "RUNNING"))
-            return RUNNING
-        self.running = False
-        self.spec.apply(ep.world, self.args)
-        if ep.trace is not None:
-            ep.trace.append(_event(ep, self, "SUCCESS"))
-        return SUCCESS
-
-    def halt(self) -> None:
-        self.running = False
-
-    def reset_all(self) -> None:
-        self.status = IDLE
-        self.running = False
-
-
-class ConditionNode(Leaf):
-    __slots__ = ("predicate", "args")
-
-    def __init__(self, label: str, path: str, name: str | None, predicate: str,
-                 args: tuple[str, ...]) -> None:
-        super().__init__(label, path, name)
-        self.predicate = predicate
-        self.args = args
-
-    def _tick(self, ep: Episode) -> int:
-        ep.steps += 1
-        st = SUCCESS if ep.world.holds(self.predicate, self.args) else FAILURE
-        if st == FAILURE:
-            ep.last_fail = self
-        if ep.trace is not None:
-            ep.trace.append(_event(ep, self, STATUS_NAMES[st]))
-        return st
-
-
-class ConstNode(Leaf):
-    __slots__ = ("value",)
-
-    def __init__(self, label: str, path: str, name: str | None, value: int) -> None:
-        super().__init__(label, path, name)
-        self.value = value
-
-    def _tick(self, ep: Episode) -> int:
-        ep.steps += 1
-        if self.value == FAILURE:
-            ep.last_fail = self
-        return self.value
-
-
-def _event(ep: Episode, node: Node, status: str, detail: str | None = None) -> dict[str, Any]:
-    ev: dict[str, Any] = {"tick": ep.tick, "node": node.name or node.label, "path": node.path,
+def _event(ep: Episode, node: BTNode, status: str, detail: str | None = None) -> dict[str, Any]:
+    ev: dict[str, Any] = {"tick": ep.tick, "node": node.bt_name or node.kind, "path": node.path,
                           "status": status}
     if detail is not None:
         ev["detail"] = detail
     return ev
 
 
-class Control(Node):
-    __slots__ = ("children", "idx")
+class Leaf(BTNode):
+    """py_trees' leaf lifecycle (`initialise` unless RUNNING, `update`, `terminate` when done)
+    without its per-tick debug-string formatting and generator re-creation, which cost more
+    than the action itself; nodes still tick through py_trees' generator protocol."""
 
-    def __init__(self, label: str, path: str, name: str | None, children: list[Node]) -> None:
-        super().__init__(label, path, name)
-        self.children = children
+    def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
+        if self.status is not RUNNING:
+            self.initialise()
+        st = self.update()
+        if st is not RUNNING:
+            self.terminate(st)
+        self.status = st
+        yield self
+
+    def stop(self, new_status: Status = IDLE) -> None:
+        self.terminate(new_status)
+        self.status = new_status
+
+
+class ActionNode(Leaf):
+    """An action of the library: `initialise` is BT.CPP's onStart, a RUNNING `update` onRunning."""
+
+    def __init__(self, name: str, spec: ActionSpec, args: dict[str, str]) -> None:
+        super().__init__(name)
+        self.spec = spec
+        self.args = args
+
+    def update(self) -> Status:
+        ep = self.binding.episode
+        ep.steps += 1
+        why = self.spec.check(ep.world, self.args)
+        if why is not None:
+            if ep.trace is not None:
+                ep.trace.append(_event(ep, self, "violation", why))
+            raise Violation(self, why)
+        if self.status is not RUNNING:
+            if ep.trace is not None:
+                ep.trace.append(_event(ep, self, "RUNNING"))
+            return RUNNING
+        self.spec.apply(ep.world, self.args)
+        if ep.trace is not None:
+            ep.trace.append(_event(ep, self, "SUCCESS"))
+        return SUCCESS
+
+
+class ConditionNode(Leaf):
+    def __init__(self, name: str, predicate: str, args: tuple[str, ...]) -> None:
+        super().__init__(name)
+        self.predicate = predicate
+        self.args = args
+
+    def update(self) -> Status:
+        ep = self.binding.episode
+        ep.steps += 1
+        st = SUCCESS if ep.world.holds(self.predicate, self.args) else FAILURE
+        if st is FAILURE:
+            ep.last_fail = self
+        if ep.trace is not None:
+            ep.trace.append(_event(ep, self, st.value))
+        return st
+
+
+class ConstNode(Leaf):
+    """AlwaysSuccess / AlwaysFailure."""
+
+    def __init__(self, name: str, value: Status) -> None:
+        super().__init__(name)
+        self.value = value
+
+    def update(self) -> Status:
+        ep = self.binding.episode
+        ep.steps += 1
+        if self.value is FAILURE:
+            ep.last_fail = self
+        return self.value
+
+
+class Control(BTNode, py_trees.composites.Composite):
+    """A BT.CPP control node; `idx` is its position memory, `stop` is BT.CPP's `halt`.
+
+    Sequences, fallbacks and Parallel also derive from py_trees' Sequence/Selector/Parallel so
+    py_trees' renderers and visitors classify them, but none of their methods run: `tick` and
+    `stop` here (and `__init__`) take precedence.
+    """
+
+    def __init__(self, name: str, children: list[py_trees.behaviour.Behaviour]) -> None:
+        py_trees.composites.Composite.__init__(self, name, children)
         self.idx = 0
 
-    def halt(self) -> None:
+    def stop(self, new_status: Status = IDLE) -> None:
         self.idx = 0
         for c in self.children:
             _reset(c)
+        self.status = new_status
 
     def reset_all(self) -> None:
         self.status = IDLE
         self.idx = 0
-        for c in self.children:
-            c.reset_all()
 
     def _halt_others(self, keep: int) -> None:
         for i, c in enumerate(self.children):
@@ -189,97 +232,114 @@ class Control(Node):
                 _reset(c)
 
 
-class Sequence(Control):
-    __slots__ = ()
+class Sequence(Control, py_trees.composites.Sequence):
+    memory = True  # resumes at a RUNNING child (py_trees' meaning); restarts after FAILURE
 
-    def _tick(self, ep: Episode) -> int:
-        ep.steps += 1
+    def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
+        self.binding.episode.steps += 1
         kids = self.children
         while self.idx < len(kids):
-            st = kids[self.idx].tick(ep)
-            if st == RUNNING:
-                return RUNNING
-            if st == FAILURE:
-                self.halt()
-                return FAILURE
+            child = kids[self.idx]
+            yield from child.tick()
+            st = child.status
+            if st is RUNNING:
+                self.status = RUNNING
+                yield self
+                return
+            if st is FAILURE:
+                self.stop(FAILURE)
+                yield self
+                return
             self.idx += 1
-        self.halt()
-        return SUCCESS
+        self.stop(SUCCESS)
+        yield self
 
 
-class SequenceWithMemory(Control):
+class SequenceWithMemory(Control, py_trees.composites.Sequence):
     """Like Sequence, but after a FAILURE the next tick resumes at the failed child."""
 
-    __slots__ = ()
+    memory = True
 
-    def _tick(self, ep: Episode) -> int:
-        ep.steps += 1
+    def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
+        self.binding.episode.steps += 1
         kids = self.children
         while self.idx < len(kids):
-            st = kids[self.idx].tick(ep)
-            if st == RUNNING:
-                return RUNNING
-            if st == FAILURE:
+            child = kids[self.idx]
+            yield from child.tick()
+            st = child.status
+            if st is RUNNING:
+                self.status = RUNNING
+                yield self
+                return
+            if st is FAILURE:
                 for c in kids[self.idx:]:
                     _reset(c)
-                return FAILURE
+                self.status = FAILURE
+                yield self
+                return
             self.idx += 1
-        self.halt()
-        return SUCCESS
+        self.stop(SUCCESS)
+        yield self
 
 
-class Fallback(Control):
-    __slots__ = ()
+class Fallback(Control, py_trees.composites.Selector):
+    memory = True
 
-    def _tick(self, ep: Episode) -> int:
-        ep.steps += 1
+    def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
+        self.binding.episode.steps += 1
         kids = self.children
         while self.idx < len(kids):
-            st = kids[self.idx].tick(ep)
-            if st == RUNNING:
-                return RUNNING
-            if st == SUCCESS:
-                self.halt()
-                return SUCCESS
+            child = kids[self.idx]
+            yield from child.tick()
+            st = child.status
+            if st is RUNNING:
+                self.status = RUNNING
+                yield self
+                return
+            if st is SUCCESS:
+                self.stop(SUCCESS)
+                yield self
+                return
             self.idx += 1
-        self.halt()
-        return FAILURE
+        self.stop(FAILURE)
+        yield self
 
 
-class ReactiveSequence(Control):
-    """Re-ticks every child from the first on each tick; a RUNNING child halts the others."""
+class _Reactive(Control):
+    """Re-ticks every child from the first on each tick; a RUNNING child halts the others.
 
-    __slots__ = ()
+    `decisive` is the child status that ends the node at once (FAILURE for ReactiveSequence).
+    """
 
-    def _tick(self, ep: Episode) -> int:
-        ep.steps += 1
-        for i, c in enumerate(self.children):
-            st = c.tick(ep)
-            if st == RUNNING:
+    decisive: Status
+    exhausted: Status
+
+    def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
+        self.binding.episode.steps += 1
+        for i, child in enumerate(self.children):
+            yield from child.tick()
+            st = child.status
+            if st is RUNNING:
                 self._halt_others(i)
-                return RUNNING
-            if st == FAILURE:
-                self.halt()
-                return FAILURE
-        self.halt()
-        return SUCCESS
+                self.status = RUNNING
+                yield self
+                return
+            if st is self.decisive:
+                self.stop(st)
+                yield self
+                return
+        self.stop(self.exhausted)
+        yield self
 
 
-class ReactiveFallback(Control):
-    __slots__ = ()
+class ReactiveSequence(_Reactive, py_trees.composites.Sequence):
+    memory = False
+    decisive, exhausted = FAILURE, SUCCESS
 
-    def _tick(self, ep: Episode) -> int:
-        ep.steps += 1
-        for i, c in enumerate(self.children):
-            st = c.tick(ep)
-            if st == RUNNING:
-                self._halt_others(i)
-                return RUNNING
-            if st == SUCCESS:
-                self.halt()
-                return SUCCESS
-        self.halt()
-        return FAILURE
+
+class ReactiveFallback(_Reactive, py_trees.composites.Selector):
+    memory = False
+    decisive, exhausted = SUCCESS, FAILURE
 
 
 class IfThenElse(Control):
@@ -288,65 +348,71 @@ class IfThenElse(Control):
     With only two children a false condition returns FAILURE (BT.CPP).
     """
 
-    __slots__ = ()
-
-    def _tick(self, ep: Episode) -> int:
-        ep.steps += 1
+    def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
+        self.binding.episode.steps += 1
         kids = self.children
         if self.idx == 0:
-            st = kids[0].tick(ep)
-            if st == RUNNING:
-                return RUNNING
-            if st == SUCCESS:
+            yield from kids[0].tick()
+            st = kids[0].status
+            if st is RUNNING:
+                self.status = RUNNING
+                yield self
+                return
+            if st is SUCCESS:
                 self.idx = 1
             elif len(kids) == 3:
                 self.idx = 2
             else:
-                self.halt()
-                return FAILURE
-        st = kids[self.idx].tick(ep)
-        if st == RUNNING:
-            return RUNNING
-        self.halt()
-        return st
+                self.stop(FAILURE)
+                yield self
+                return
+        branch = kids[self.idx]
+        yield from branch.tick()
+        st = branch.status
+        if st is RUNNING:
+            self.status = RUNNING
+        else:
+            self.stop(st)
+        yield self
 
 
 class WhileDoElse(Control):
     """Re-checks the condition every tick and halts the branch that is no longer chosen."""
 
-    __slots__ = ()
-
-    def _tick(self, ep: Episode) -> int:
-        ep.steps += 1
+    def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
+        self.binding.episode.steps += 1
         kids = self.children
-        cond = kids[0].tick(ep)
-        if cond == RUNNING:
-            return RUNNING
-        if cond == SUCCESS:
+        yield from kids[0].tick()
+        cond = kids[0].status
+        if cond is RUNNING:
+            self.status = RUNNING
+            yield self
+            return
+        st = FAILURE
+        if cond is SUCCESS:
             if len(kids) == 3:
                 _reset(kids[2])
-            st = kids[1].tick(ep)
+            yield from kids[1].tick()
+            st = kids[1].status
         elif len(kids) == 3:
             _reset(kids[1])
-            st = kids[2].tick(ep)
+            yield from kids[2].tick()
+            st = kids[2].status
+        if st is RUNNING:
+            self.status = RUNNING
         else:
-            st = FAILURE
-        if st == RUNNING:
-            return RUNNING
-        self.halt()
-        return st
+            self.stop(st)
+        yield self
 
 
-class Parallel(Control):
+class Parallel(Control, py_trees.composites.Parallel):
     """Ticks every unfinished child; SUCCESS at `success_count` successes, FAILURE when
     `failure_count` children failed or success became impossible (negative counts mean
     "all but |n|-1")."""
 
-    __slots__ = ("succ_needed", "fail_needed", "done", "n_succ", "n_fail")
-
-    def __init__(self, label: str, path: str, name: str | None, children: list[Node],
-                 success_count: int, failure_count: int) -> None:
-        super().__init__(label, path, name, children)
+    def __init__(self, name: str, children: list[py_trees.behaviour.Behaviour], success_count: int,
+                 failure_count: int) -> None:
+        super().__init__(name, children)
         n = len(children)
         self.succ_needed = n + success_count + 1 if success_count < 0 else success_count
         self.fail_needed = n + failure_count + 1 if failure_count < 0 else failure_count
@@ -354,8 +420,8 @@ class Parallel(Control):
         self.n_succ = 0
         self.n_fail = 0
 
-    def halt(self) -> None:
-        super().halt()
+    def stop(self, new_status: Status = IDLE) -> None:
+        super().stop(new_status)
         self.done = set()
         self.n_succ = self.n_fail = 0
 
@@ -364,76 +430,91 @@ class Parallel(Control):
         self.done = set()
         self.n_succ = self.n_fail = 0
 
-    def _tick(self, ep: Episode) -> int:
-        ep.steps += 1
+    def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
+        self.binding.episode.steps += 1
         n = len(self.children)
-        for i, c in enumerate(self.children):
+        for i, child in enumerate(self.children):
             if i in self.done:
                 continue
-            st = c.tick(ep)
-            if st == SUCCESS:
+            yield from child.tick()
+            st = child.status
+            if st is SUCCESS:
                 self.done.add(i)
                 self.n_succ += 1
-            elif st == FAILURE:
+            elif st is FAILURE:
                 self.done.add(i)
                 self.n_fail += 1
             if self.n_succ >= self.succ_needed:
-                self.halt()
-                return SUCCESS
+                self.stop(SUCCESS)
+                yield self
+                return
             if n - self.n_fail < self.succ_needed or self.n_fail == self.fail_needed:
-                self.halt()
-                return FAILURE
-        return RUNNING
+                self.stop(FAILURE)
+                yield self
+                return
+        self.status = RUNNING
+        yield self
 
 
-class Decorator(Node):
-    __slots__ = ("child",)
+class Decorator(BTNode, py_trees.decorators.Decorator):
+    """A BT.CPP decorator; `stop` halts the child (BT.CPP `DecoratorNode::halt`)."""
 
-    def __init__(self, label: str, path: str, name: str | None, child: Node) -> None:
-        super().__init__(label, path, name)
-        self.child = child
+    def __init__(self, name: str, child: py_trees.behaviour.Behaviour) -> None:
+        py_trees.decorators.Decorator.__init__(self, name, child)
 
-    def halt(self) -> None:
-        _reset(self.child)
+    def stop(self, new_status: Status = IDLE) -> None:
+        _reset(self.decorated)
+        self.status = new_status
 
-    def reset_all(self) -> None:
-        self.status = IDLE
-        self.child.reset_all()
+    def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
+        self.binding.episode.steps += 1
+        yield from self.decorated.tick()
+        st = self.map(self.decorated.status)
+        if st is RUNNING:
+            self.status = RUNNING
+        else:
+            self.stop(st)
+        yield self
+
+    def map(self, st: Status) -> Status:
+        """The decorator's status for its child's."""
+        return st
+
+    def update(self) -> Status:
+        """Not called: `tick` decides (py_trees declares `update` abstract for decorators)."""
+        return self.status
 
 
 class Inverter(Decorator):
-    __slots__ = ()
-
-    def _tick(self, ep: Episode) -> int:
-        ep.steps += 1
-        st = self.child.tick(ep)
-        return FAILURE if st == SUCCESS else SUCCESS if st == FAILURE else st
+    def map(self, st: Status) -> Status:
+        return FAILURE if st is SUCCESS else SUCCESS if st is FAILURE else st
 
 
 class ForceSuccess(Decorator):
-    __slots__ = ()
-
-    def _tick(self, ep: Episode) -> int:
-        ep.steps += 1
-        st = self.child.tick(ep)
-        return RUNNING if st == RUNNING else SUCCESS
+    def map(self, st: Status) -> Status:
+        return RUNNING if st is RUNNING else SUCCESS
 
 
 class ForceFailure(Decorator):
-    __slots__ = ()
-
-    def _tick(self, ep: Episode) -> int:
-        ep.steps += 1
-        st = self.child.tick(ep)
-        return RUNNING if st == RUNNING else FAILURE
+    def map(self, st: Status) -> Status:
+        return RUNNING if st is RUNNING else FAILURE
 
 
 class SubTree(Decorator):
-    __slots__ = ()
+    """The root of another BehaviorTree of the file, expanded in place (BT.CPP `SubTree`)."""
 
-    def _tick(self, ep: Episode) -> int:
-        ep.steps += 1
-        return self.child.tick(ep)
+
+class KeepRunningUntilFailure(Decorator):
+    def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
+        self.binding.episode.steps += 1
+        yield from self.decorated.tick()
+        st = self.decorated.status
+        if st is RUNNING:
+            self.status = RUNNING
+        else:
+            _reset(self.decorated)
+            self.status = RUNNING if st is SUCCESS else FAILURE
+        yield self
 
 
 class _CountedLoop(Decorator):
@@ -442,65 +523,51 @@ class _CountedLoop(Decorator):
     RetryUntilSuccessful and Repeat are the same loop with the child's statuses swapped.
     """
 
-    __slots__ = ("limit", "count")
-    stop_on: int
-    exhausted: int
+    stop_on: Status
+    exhausted: Status
 
-    def __init__(self, label: str, path: str, name: str | None, child: Node, limit: int) -> None:
-        super().__init__(label, path, name, child)
+    def __init__(self, name: str, child: py_trees.behaviour.Behaviour, limit: int) -> None:
+        super().__init__(name, child)
         self.limit = limit
         self.count = 0
 
-    def halt(self) -> None:
+    def stop(self, new_status: Status = IDLE) -> None:
         self.count = 0
-        _reset(self.child)
+        super().stop(new_status)
 
     def reset_all(self) -> None:
         self.count = 0
-        super().reset_all()
+        self.status = IDLE
 
-    def _tick(self, ep: Episode) -> int:
+    def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
+        ep = self.binding.episode
+        child = self.decorated
         while self.limit < 0 or self.count < self.limit:
             ep.steps += 1
             if ep.steps > STEP_BUDGET:
                 raise BudgetExceeded
-            st = self.child.tick(ep)
-            if st == RUNNING:
-                return RUNNING
-            if st == self.stop_on:
-                self.halt()
-                return self.stop_on
+            yield from child.tick()
+            st = child.status
+            if st is RUNNING:
+                self.status = RUNNING
+                yield self
+                return
+            if st is self.stop_on:
+                self.stop(st)
+                yield self
+                return
             self.count += 1
-            _reset(self.child)
-        self.halt()
-        return self.exhausted
+            _reset(child)
+        self.stop(self.exhausted)
+        yield self
 
 
 class RetryUntilSuccessful(_CountedLoop):
-    __slots__ = ()
-    stop_on = SUCCESS
-    exhausted = FAILURE
+    stop_on, exhausted = SUCCESS, FAILURE
 
 
 class Repeat(_CountedLoop):
-    __slots__ = ()
-    stop_on = FAILURE
-    exhausted = SUCCESS
-
-
-class KeepRunningUntilFailure(Decorator):
-    __slots__ = ()
-
-    def _tick(self, ep: Episode) -> int:
-        ep.steps += 1
-        st = self.child.tick(ep)
-        if st == SUCCESS:
-            _reset(self.child)
-            return RUNNING
-        if st == FAILURE:
-            _reset(self.child)
-            return FAILURE
-        return RUNNING
+    stop_on, exhausted = FAILURE, SUCCESS
 
 
 _COMPOSITE_CLASSES: dict[str, type[Control]] = {
@@ -514,36 +581,64 @@ _SIMPLE_DECORATORS: dict[str, type[Decorator]] = {
 }
 
 
-def compile_policy(policy: Policy) -> Node:
-    """Executable node tree of the policy's main tree (SubTrees expanded in place)."""
+def build_tree(policy: Policy, binding: Binding | None = None) -> BTNode:
+    """The policy's main tree as py_trees behaviours (SubTrees expanded in place), all sharing
+    `binding` (a new one if not given; reach it as `root.binding`)."""
     root = policy.trees[policy.main]
-    return _build(policy, root, f"{policy.main}/{root.label}")
+    node = _build(policy, root, f"{policy.main}/{root.label}", binding or Binding())
+    node.tree_id = policy.main
+    return node
 
 
-def _build(policy: Policy, p: PolicyNode, path: str) -> Node:
-    kind, name = p.kind, p.name
-    kids = [_build(policy, c, f"{path}/{c.label}[{i}]") for i, c in enumerate(p.children)]
+def _build(policy: Policy, p: PolicyNode, path: str, binding: Binding) -> BTNode:
+    kind, name = p.kind, display_name(p)
+    kids = [_build(policy, c, f"{path}/{c.label}[{i}]", binding) for i, c in enumerate(p.children)]
+    node: BTNode
     if kind in ACTIONS:
-        return ActionNode(kind, path, name, ACTIONS[kind], dict(p.params))
-    if kind in CONDITIONS:
+        node = ActionNode(name, ACTIONS[kind], dict(p.params))
+    elif kind in CONDITIONS:
         spec = CONDITIONS[kind]
         args = dict(p.params)
-        return ConditionNode(kind, path, name, spec.predicate, tuple(args[k] for k in spec.ports))
-    if kind == "AlwaysSuccess":
-        return ConstNode(kind, path, name, SUCCESS)
-    if kind == "AlwaysFailure":
-        return ConstNode(kind, path, name, FAILURE)
-    if kind == "SubTree":
+        node = ConditionNode(name, spec.predicate, tuple(args[k] for k in spec.ports))
+    elif kind in ("AlwaysSuccess", "AlwaysFailure"):
+        node = ConstNode(name, SUCCESS if kind == "AlwaysSuccess" else FAILURE)
+    elif kind == "SubTree":
         sub = p.param("ID") or ""
         sub_root = policy.trees[sub]
-        return SubTree(p.label, path, name, _build(policy, sub_root, f"{path}/{sub_root.label}"))
-    if kind in _COMPOSITE_CLASSES:
-        return _COMPOSITE_CLASSES[kind](kind, path, name, kids)
-    if kind == "Parallel":
-        return Parallel(kind, path, name, kids, int(p.param("success_count") or -1),
+        child = _build(policy, sub_root, f"{path}/{sub_root.label}", binding)
+        child.tree_id = sub
+        node = SubTree(name, child)
+    elif kind in _COMPOSITE_CLASSES:
+        node = _COMPOSITE_CLASSES[kind](name, list(kids))
+    elif kind == "Parallel":
+        node = Parallel(name, list(kids), int(p.param("success_count") or -1),
                         int(p.param("failure_count") or 1))
-    if kind == "RetryUntilSuccessful":
-        return RetryUntilSuccessful(kind, path, name, kids[0], int(p.param("num_attempts") or 0))
-    if kind == "Repeat":
-        return Repeat(kind, path, name, kids[0], int(p.param("num_cycles") or 0))
-    return _SIMPLE_DECORATORS[kind](kind, path, name, kids[0])
+    elif kind == "RetryUntilSuccessful":
+        node = RetryUntilSuccessful(name, kids[0], int(p.param("num_attempts") or 0))
+    elif kind == "Repeat":
+        node = Repeat(name, kids[0], int(p.param("num_cycles") or 0))
+    else:
+        node = _SIMPLE_DECORATORS[kind](name, kids[0])
+    node.setup_bt(p, path, binding)
+    return node
+
+
+def tree_to_policy(root: BTNode, source: str = "<py_trees>") -> Policy:
+    """The policy a tree was built from, read back from its nodes (SubTrees become trees again)."""
+    trees: dict[str, PolicyNode] = {}
+    main = root.tree_id or "MainTree"
+    trees[main] = _unbuild(root, trees)
+    return Policy(main=main, trees=trees, source=source)
+
+
+def _unbuild(node: py_trees.behaviour.Behaviour, trees: dict[str, PolicyNode]) -> PolicyNode:
+    if not isinstance(node, BTNode):
+        raise TypeError(f"{node.name!r} is a {type(node).__name__}, not a node built by build_tree")
+    if isinstance(node, SubTree):
+        sub = node.param("ID") or ""
+        if sub not in trees:
+            trees[sub] = _unbuild(node.decorated, trees)
+        children: tuple[PolicyNode, ...] = ()
+    else:
+        children = tuple(_unbuild(c, trees) for c in node.children)
+    return PolicyNode(kind=node.kind, params=node.params, children=children, name=node.bt_name)

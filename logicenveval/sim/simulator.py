@@ -1,7 +1,8 @@
 """Run a compiled policy in a world and judge it (verdict order of DESIGN.md §5).
 
 `simulate` is the public entry point; `CompiledPolicy` lets callers that run one policy in many
-environments (validation, the throughput benchmark) compile once and reset per episode.
+environments (validation, the throughput benchmark) build the py_trees tree once and reset it per
+episode.
 """
 
 from __future__ import annotations
@@ -17,12 +18,13 @@ from logicenveval.model.tree import evaluate_task, goal_of
 from logicenveval.sim.loader import BadPortError, UnknownNodeError, load_policy
 from logicenveval.sim.nodes import (
     FAILURE,
+    IDLE,
     RUNNING,
+    BTNode,
     BudgetExceeded,
     Episode,
-    Node,
     Violation,
-    compile_policy,
+    build_tree,
 )
 from logicenveval.sim.policy import Policy
 from logicenveval.sim.verdict import Verdict
@@ -30,27 +32,30 @@ from logicenveval.sim.world import World
 
 
 class CompiledPolicy:
-    """Executable node tree of a policy, reusable across episodes (not thread-safe)."""
+    """The policy as a py_trees tree, reusable across episodes (not thread-safe)."""
 
     def __init__(self, policy: Policy) -> None:
         self.policy = policy
-        self.root: Node = compile_policy(policy)
+        self.root: BTNode = build_tree(policy)
+        self._nodes: list[BTNode] = [n for n in self.root.iterate() if isinstance(n, BTNode)]
 
     def run(self, world: World, goal: Cond | None, *, tick_limit: int = 50,
             trace: bool = False) -> Verdict:
         """Run one episode on `world` (mutated in place: pass a copy)."""
         root = self.root
-        root.reset_all()
-        ep = Episode(world, trace=[] if trace else None)
-        status = RUNNING
+        for node in self._nodes:
+            node.reset_all()
+        ep = root.binding.ep = Episode(world, trace=[] if trace else None)
+        status = IDLE
         try:
             while ep.tick < tick_limit:
                 ep.tick += 1
-                status = root.tick(ep)
-                if status != RUNNING:
+                root.tick_once()
+                status = root.status
+                if status is not RUNNING:
                     break
         except Violation as v:
-            return Verdict(status="precondition_violation", fault_node=v.node.name or v.node.label,
+            return Verdict(status="precondition_violation", fault_node=v.node.bt_name or v.node.label,
                            fault_path=v.node.path, message=v.message, ticks=ep.tick,
                            trace=ep.trace or [], final_state=world.summary())
         except BudgetExceeded:
@@ -58,11 +63,11 @@ class CompiledPolicy:
                            message="a loop ran without ever returning RUNNING "
                                    "(node-tick budget exhausted within one tick)",
                            final_state=world.summary())
-        if status == RUNNING:
+        if status is RUNNING:
             return Verdict(status="tick_limit", ticks=ep.tick, trace=ep.trace or [],
                            message=f"root still RUNNING after {tick_limit} ticks",
                            final_state=world.summary())
-        if status == FAILURE:
+        if status is FAILURE:
             last = _last_failed_leaf(ep)
             return Verdict(status="tree_failure", ticks=ep.tick, trace=ep.trace or [],
                            fault_node=last[0], fault_path=last[1],
@@ -82,7 +87,7 @@ class CompiledPolicy:
 
 def _last_failed_leaf(ep: Episode) -> tuple[str | None, str | None]:
     node = ep.last_fail
-    return (node.name or node.label, node.path) if node is not None else (None, None)
+    return (node.bt_name or node.label, node.path) if node is not None else (None, None)
 
 
 def task_goal(task: Task, world: World) -> Cond | None:
