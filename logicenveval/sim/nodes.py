@@ -232,8 +232,14 @@ class Control(BTNode, py_trees.composites.Composite):
                 _reset(c)
 
 
-class Sequence(Control, py_trees.composites.Sequence):
-    memory = True  # resumes at a RUNNING child (py_trees' meaning); restarts after FAILURE
+class _Ordered(Control):
+    """Ticks children in order from the remembered index; `decisive` ends the node at once.
+
+    Sequence and Fallback are the same loop with the child's statuses swapped.
+    """
+
+    decisive: Status
+    exhausted: Status
 
     def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
         self.binding.episode.steps += 1
@@ -246,63 +252,36 @@ class Sequence(Control, py_trees.composites.Sequence):
                 self.status = RUNNING
                 yield self
                 return
-            if st is FAILURE:
-                self.stop(FAILURE)
+            if st is self.decisive:
+                self.conclude(st)
                 yield self
                 return
             self.idx += 1
-        self.stop(SUCCESS)
+        self.stop(self.exhausted)
         yield self
 
+    def conclude(self, st: Status) -> None:
+        """A decisive child status: halt (position back to the first child)."""
+        self.stop(st)
 
-class SequenceWithMemory(Control, py_trees.composites.Sequence):
+
+class Sequence(_Ordered, py_trees.composites.Sequence):
+    memory = True  # resumes at a RUNNING child (py_trees' meaning); restarts after FAILURE
+    decisive, exhausted = FAILURE, SUCCESS
+
+
+class SequenceWithMemory(Sequence):
     """Like Sequence, but after a FAILURE the next tick resumes at the failed child."""
 
+    def conclude(self, st: Status) -> None:
+        for c in self.children[self.idx:]:
+            _reset(c)
+        self.status = st
+
+
+class Fallback(_Ordered, py_trees.composites.Selector):
     memory = True
-
-    def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
-        self.binding.episode.steps += 1
-        kids = self.children
-        while self.idx < len(kids):
-            child = kids[self.idx]
-            yield from child.tick()
-            st = child.status
-            if st is RUNNING:
-                self.status = RUNNING
-                yield self
-                return
-            if st is FAILURE:
-                for c in kids[self.idx:]:
-                    _reset(c)
-                self.status = FAILURE
-                yield self
-                return
-            self.idx += 1
-        self.stop(SUCCESS)
-        yield self
-
-
-class Fallback(Control, py_trees.composites.Selector):
-    memory = True
-
-    def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
-        self.binding.episode.steps += 1
-        kids = self.children
-        while self.idx < len(kids):
-            child = kids[self.idx]
-            yield from child.tick()
-            st = child.status
-            if st is RUNNING:
-                self.status = RUNNING
-                yield self
-                return
-            if st is SUCCESS:
-                self.stop(SUCCESS)
-                yield self
-                return
-            self.idx += 1
-        self.stop(FAILURE)
-        yield self
+    decisive, exhausted = SUCCESS, FAILURE
 
 
 class _Reactive(Control):
