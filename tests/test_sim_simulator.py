@@ -241,3 +241,75 @@ def test_sequences_of_valid_actions_pass_preconditions(steps: list[tuple[str, st
     text = f'<root BTCPP_format="4"><BehaviorTree ID="M">{body}</BehaviorTree></root>'
     v = simulate(policy_from_xml(text), ENV, TASK, CAT)
     assert v.status in ("passed", "goal_unmet") and v.ticks == len(valid) + 1
+
+
+# ----- control nodes against a logical reference ------------------------------------------
+# Over condition leaves (instant, side-effect free) every BT.CPP control node has a boolean
+# meaning; a tree of them must finish in one tick with exactly that outcome.
+_WORLD = World.from_env(ENV, CAT)
+_CONDS = [('<On obj="toy" target="floor"/>', _WORLD.holds("on", ("toy", "floor"))),
+          ('<Holding obj="toy"/>', _WORLD.holds("holding", ("toy",))),
+          ('<Inside obj="toy" target="box"/>', _WORLD.holds("inside", ("toy", "box"))),
+          ("<AlwaysSuccess/>", True), ("<AlwaysFailure/>", False)]
+
+
+def _parallel(kids: list[bool], s: int, f: int) -> bool:
+    n_s = n_f = 0
+    for k in kids:
+        n_s, n_f = n_s + k, n_f + (not k)
+        if n_s >= s:
+            return True
+        if len(kids) - n_f < s or n_f == f:
+            return False
+    raise AssertionError("unreachable with instant children")
+
+
+def _tree(children: st.SearchStrategy[tuple[str, bool]]) -> st.SearchStrategy[tuple[str, bool]]:
+    kids = st.lists(children, min_size=1, max_size=3)
+
+    def wrap(tag: str, value: object, parts: list[tuple[str, bool]], attrs: str = "") -> tuple[str, bool]:
+        return f"<{tag}{attrs}>" + "".join(x for x, _ in parts) + f"</{tag}>", bool(value)
+
+    return st.one_of(
+        kids.map(lambda ps: wrap("Sequence", all(v for _, v in ps), ps)),
+        kids.map(lambda ps: wrap("SequenceWithMemory", all(v for _, v in ps), ps)),
+        kids.map(lambda ps: wrap("ReactiveSequence", all(v for _, v in ps), ps)),
+        kids.map(lambda ps: wrap("Fallback", any(v for _, v in ps), ps)),
+        kids.map(lambda ps: wrap("ReactiveFallback", any(v for _, v in ps), ps)),
+        st.tuples(children, children, children).map(
+            lambda t: wrap("IfThenElse", t[1][1] if t[0][1] else t[2][1], list(t))),
+        st.tuples(children, children).map(lambda t: wrap("IfThenElse", t[0][1] and t[1][1], list(t))),
+        st.tuples(children, children, children).map(
+            lambda t: wrap("WhileDoElse", t[1][1] if t[0][1] else t[2][1], list(t))),
+        st.tuples(kids, st.integers(1, 3), st.integers(1, 3)).filter(lambda t: t[1] <= len(t[0])).map(
+            lambda t: wrap("Parallel", _parallel([v for _, v in t[0]], t[1], t[2]), t[0],
+                           f' success_count="{t[1]}" failure_count="{t[2]}"')),
+        children.map(lambda c: wrap("Inverter", not c[1], [c])),
+        children.map(lambda c: wrap("ForceSuccess", True, [c])),
+        children.map(lambda c: wrap("ForceFailure", False, [c])),
+        children.map(lambda c: wrap("Repeat", c[1], [c], ' num_cycles="2"')),
+        children.map(lambda c: wrap("RetryUntilSuccessful", c[1], [c], ' num_attempts="2"')),
+    )
+
+
+TREES = st.recursive(st.sampled_from(_CONDS), _tree, max_leaves=12)
+
+
+@settings(max_examples=150, deadline=None)
+@given(TREES)
+def test_control_nodes_over_conditions_match_their_logic(tree: tuple[str, bool]) -> None:
+    body, expected = tree
+    v = run(body)
+    assert v.ticks == 1
+    assert v.status == ("goal_unmet" if expected else "tree_failure"), body
+
+
+@settings(max_examples=60, deadline=None)
+@given(TREES)
+def test_random_trees_round_trip_through_py_trees(tree: tuple[str, bool]) -> None:
+    from logicenveval.sim.pytrees_io import tree_from_xml, tree_to_xml
+
+    text = f'<root BTCPP_format="4"><BehaviorTree ID="Main">{tree[0]}</BehaviorTree></root>'
+    exported = tree_to_xml(tree_from_xml(text, roles=TASK.roles))
+    assert policy_from_xml(exported, roles=TASK.roles) == policy_from_xml(text, roles=TASK.roles)
+    assert run(tree[0]) == simulate(policy_from_xml(exported), ENV, TASK, CAT)
