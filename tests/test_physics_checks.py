@@ -213,6 +213,7 @@ def test_check_env_rejects_a_plain_dict() -> None:
 _odd = st.one_of(st.floats(allow_nan=True, allow_infinity=True), st.floats(-100, 100))
 
 
+@pytest.mark.filterwarnings("ignore:overflow encountered:RuntimeWarning")  # huge sizes on purpose
 @settings(max_examples=30, deadline=None)
 @given(data_=st.data())
 def test_check_env_never_raises_on_odd_numbers(data_: st.DataObject) -> None:
