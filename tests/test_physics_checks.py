@@ -210,6 +210,18 @@ def test_check_env_rejects_a_plain_dict() -> None:
         check_env(_load("one_room"))  # type: ignore[arg-type]
 
 
+@pytest.mark.filterwarnings("ignore:overflow encountered:RuntimeWarning")
+def test_render_leaves_out_absurdly_far_objects() -> None:
+    """Found by the property below: a finite 2e306 m position overflowed the pixel maths."""
+    from logicenveval.physics.render import render_svg
+
+    data = _load("one_room")
+    data["objects"][0]["position"][0] = 2.247116418577895e306
+    env = env_from_dict(data)
+    svg = render_svg(env, check_env(env))
+    assert svg.startswith("<svg") and 'width="' in svg
+
+
 _odd = st.one_of(st.floats(allow_nan=True, allow_infinity=True), st.floats(-100, 100))
 
 

@@ -29,6 +29,11 @@ class _Shape:
     failed: bool
 
 
+#: metres; shapes farther out are left out of the picture (the checker reports them), so that
+#: absurd coordinates cannot overflow the pixel arithmetic
+_FAR = 1e4
+
+
 def _scene(env: EnvSpec, report: PhysicsReport | None) -> list[_Shape]:
     bad: set[str] = set()
     if report is not None:
@@ -46,7 +51,8 @@ def _scene(env: EnvSpec, report: PhysicsReport | None) -> list[_Shape]:
                for d in env.doors if d.segment is not None]
     shapes += [_Shape("window", [(p[0], p[1]) for p in w.segment], w.id, w.id in bad)
                for w in env.windows if w.segment is not None]
-    return [s for s in shapes if finite(*(c for p in s.points for c in p))]
+    return [s for s in shapes if finite(*(c for p in s.points for c in p))
+            and all(abs(c) <= _FAR for p in s.points for c in p)]
 
 
 class _View:
