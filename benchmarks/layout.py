@@ -1,11 +1,14 @@
-"""Layout solver benchmark: decomposed Z3 (per floor / surface / wall) vs one monolithic Z3 model.
+"""Layout solver benchmark: decomposed Z3 and CP-SAT (per floor / surface / wall) vs one monolithic Z3 model.
 
 Rooms of 10, 20, 30, 40 objects: half on the floor (some of them surfaces), a third of the rest
-on surfaces, the rest wall-mounted; a third are task objects; near/edge/far relations. For each
-size: median solve time of `construct_environment`, relaxations, physics pass rate (the physics
-checker when installed, else the scene self-check), and the median of a naive monolithic single
-Z3 model of the same objects (world frame, no decomposition, no relaxation; timeout counts as the
-limit). Last line: `objects=30 median_s=<float> monolithic_median_s=<float> phypr=<float>`.
+on surfaces, the rest wall-mounted; a third are task objects; near/edge/far relations and one
+conflicting enrichment pair. Two densities: `normal` (14 m² + 1 m² per object) and `dense` (35 % of
+that area: 40-50 % of the floor covered by 20+ objects). For each density, size and backend: median
+and max time of `construct_environment`, relaxations, physics pass rate (`physics.check_env`);
+for `normal` also the median of a naive monolithic single Z3 model of the same objects (world frame,
+no decomposition, no relaxation; timeout counts as the limit). Then which backend is faster on
+dense rooms, against the package default. Last line (default backend, normal rooms):
+`objects=30 median_s=<float> monolithic_median_s=<float> phypr=<float>`.
 """
 
 from __future__ import annotations
@@ -21,6 +24,7 @@ import z3
 from logicenveval.domain.catalog import Catalog, load_catalog
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.scene.construct import construct_environment
+from logicenveval.scene.layout import DEFAULT_SOLVER, SOLVERS, Solver
 from logicenveval.scene.spec import (
     ObjectRequest,
     RelationRequest,
@@ -37,7 +41,10 @@ ON_TOP = ["book", "mug", "remote_control", "candle", "apple", "cup", "tissue_box
 WALL = ["painting", "wall_clock", "mirror", "bulletin_board", "light_switch"]
 
 
-def room_spec(n: int, seed: int) -> SceneSpec:
+DENSE = 0.35  # area factor of the dense setting
+
+
+def room_spec(n: int, seed: int, area_factor: float = 1.0) -> SceneSpec:
     rng = np.random.default_rng(seed)
     n_floor = n // 2
     n_surf = max(1, n_floor // 4)
@@ -63,7 +70,7 @@ def room_spec(n: int, seed: int) -> SceneSpec:
              RelationRequest(type="center", args=(extra,))]
     for k in range(2, min(len(floor_ids) - 1, 2 + n // 10)):
         rels.append(RelationRequest(type="near", args=(floor_ids[k], floor_ids[k + 1])))
-    area = 14.0 + 1.0 * n
+    area = (14.0 + 1.0 * n) * area_factor
     room = RoomRequest(id="r", type="LivingRoom", area=area, windows=[WindowRequest(wall="n")])
     return SceneSpec(task_id="bench", env_id=f"n{n}_{seed}", rooms=[room], objects=objs, relations=rels,
                      room_timeout_s=30.0)
@@ -125,6 +132,21 @@ def monolithic(spec: SceneSpec, catalog: Catalog, timeout_s: float) -> float:
     return min(time.perf_counter() - t0, timeout_s)
 
 
+def measure(n: int, rooms: int, factor: float, solver: Solver, catalog: Catalog
+            ) -> tuple[list[float], list[int], list[bool], str]:
+    times, relax, passed = [], [], []
+    how = ""
+    for k in range(rooms):
+        spec = room_spec(n, 1000 * n + k, factor)
+        t0 = time.perf_counter()
+        res = construct_environment(spec, catalog=catalog, rng=np.random.default_rng(k), solver=solver)
+        times.append(time.perf_counter() - t0)
+        relax.append(len(res.relaxation_log))
+        ok, how = physics_passes(res.env, catalog)
+        passed.append(ok)
+    return times, relax, passed, how
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("--rooms", type=int, default=3, help="rooms per size")
@@ -132,26 +154,31 @@ def main() -> None:
     ap.add_argument("--mono-timeout", type=float, default=20.0)
     args = ap.parse_args()
     catalog = load_catalog()
+    construct_environment(room_spec(10, 0), catalog=catalog, rng=np.random.default_rng(0), solver="cpsat")  # warm-up
     last = ""
-    for n in (int(x) for x in args.sizes.split(",")):
-        times, mono, relax, passed = [], [], [], []
-        how = ""
-        for k in range(args.rooms):
-            spec = room_spec(n, 1000 * n + k)
-            t0 = time.perf_counter()
-            res = construct_environment(spec, catalog=catalog, rng=np.random.default_rng(k))
-            times.append(time.perf_counter() - t0)
-            relax.append(len(res.relaxation_log))
-            ok, how = physics_passes(res.env, catalog)
-            passed.append(ok)
-            mono.append(monolithic(spec, catalog, args.mono_timeout))
-        med, mmed = statistics.median(times), statistics.median(mono)
-        rate = sum(passed) / len(passed)
-        print(f"objects={n:2d} rooms={args.rooms} median_s={med:.3f} max_s={max(times):.3f} "
-              f"relaxations={statistics.mean(relax):.1f} phypr={rate:.2f} ({how}) "
-              f"monolithic_median_s={mmed:.3f} speedup={mmed / med:.1f}x", flush=True)
-        if n == 30:
-            last = f"objects=30 median_s={med:.3f} monolithic_median_s={mmed:.3f} phypr={rate:.2f}"
+    dense_wins: dict[str, int] = {s: 0 for s in SOLVERS}
+    for setting, factor in (("normal", 1.0), ("dense", DENSE)):
+        for n in (int(x) for x in args.sizes.split(",")):
+            medians: dict[str, float] = {}
+            mono = ([monolithic(room_spec(n, 1000 * n + k), catalog, args.mono_timeout) for k in range(args.rooms)]
+                    if setting == "normal" else [])
+            for solver in SOLVERS:
+                times, relax, passed, how = measure(n, args.rooms, factor, solver, catalog)
+                med = medians[solver] = statistics.median(times)
+                rate = sum(passed) / len(passed)
+                line = (f"{setting:6s} objects={n:2d} solver={solver:5s} rooms={args.rooms} median_s={med:.3f} "
+                        f"max_s={max(times):.3f} relaxations={statistics.mean(relax):.1f} phypr={rate:.2f} ({how})")
+                if mono:
+                    mmed = statistics.median(mono)
+                    line += f" monolithic_median_s={mmed:.3f} speedup={mmed / med:.1f}x"
+                    if n == 30 and solver == DEFAULT_SOLVER:
+                        last = f"objects=30 median_s={med:.3f} monolithic_median_s={mmed:.3f} phypr={rate:.2f}"
+                print(line, flush=True)
+            if setting == "dense":
+                dense_wins[min(medians, key=lambda s: medians[s])] += 1
+    best = max(dense_wins, key=lambda s: dense_wins[s])
+    print(f"dense rooms: fastest backend per size {dense_wins}; package default DEFAULT_SOLVER={DEFAULT_SOLVER!r} "
+          f"({'agrees' if best == DEFAULT_SOLVER else 'DISAGREES: revisit scene/layout.py'})")
     if last:
         print(last)
 

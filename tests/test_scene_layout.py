@@ -14,6 +14,7 @@ from logicenveval.errors import EnvSpecError
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.physics import check_env
 from logicenveval.scene.construct import construct_environment
+from logicenveval.scene.layout import SOLVERS, Solver
 from logicenveval.scene.objects import enrichment_objects
 from logicenveval.scene.spec import (
     ObjectRequest,
@@ -55,8 +56,9 @@ def living_spec(n_extra: int = 6, seed: int = 0) -> SceneSpec:
                      claimed_trajectory={"tidy": {"toy_on_floor": "no"}})
 
 
-def test_living_room_scene_is_physically_valid() -> None:
-    res = construct_environment(living_spec(), catalog=CAT, rng=np.random.default_rng(3))
+@pytest.mark.parametrize("solver", SOLVERS)
+def test_living_room_scene_is_physically_valid(solver: Solver) -> None:
+    res = construct_environment(living_spec(), catalog=CAT, rng=np.random.default_rng(3), solver=solver)
     env = res.env
     assert geometric_failures(env, CAT) == []
     assert env.roles["toy"] == "toy_1" and env.obj("toy_1").container == "box_1"
@@ -67,14 +69,16 @@ def test_living_room_scene_is_physically_valid() -> None:
     assert not [e for e in res.relaxation_log if e.task]
 
 
-def test_deterministic_given_rng() -> None:
-    a = construct_environment(living_spec(), catalog=CAT, rng=np.random.default_rng(7)).env
-    b = construct_environment(living_spec(), catalog=CAT, rng=np.random.default_rng(7)).env
+@pytest.mark.parametrize("solver", SOLVERS)
+def test_deterministic_given_rng(solver: Solver) -> None:
+    a = construct_environment(living_spec(), catalog=CAT, rng=np.random.default_rng(7), solver=solver).env
+    b = construct_environment(living_spec(), catalog=CAT, rng=np.random.default_rng(7), solver=solver).env
     assert a.to_json_dict() == b.to_json_dict()
 
 
-def test_in_front_of_and_edge_hold_geometrically() -> None:
-    env = construct_environment(living_spec(0), catalog=CAT, rng=np.random.default_rng(11)).env
+@pytest.mark.parametrize("solver", SOLVERS)
+def test_in_front_of_and_edge_hold_geometrically(solver: Solver) -> None:
+    env = construct_environment(living_spec(0), catalog=CAT, rng=np.random.default_rng(11), solver=solver).env
     sofa, table = env.obj("sofa_1"), env.obj("table_1")
     assert sofa.position is not None and table.position is not None
     yaw = math.radians(sofa.yaw)
@@ -83,38 +87,57 @@ def test_in_front_of_and_edge_hold_geometrically() -> None:
     assert d[0] * front[0] + d[1] * front[1] > 0
 
 
-def test_unsat_enrichment_relation_dropped_with_core_reason() -> None:
+@pytest.mark.parametrize("solver", SOLVERS)
+def test_unsat_enrichment_relation_dropped_with_core_reason(solver: Solver) -> None:
     spec = living_spec(0)
     extra = ObjectRequest(id="chair_x", category="armchair", room="living_room", task=False)
     rels = [*spec.relations, RelationRequest(type="near", args=("chair_x", "sofa_1")),
             RelationRequest(type="far", args=("chair_x", "table_1")),
             RelationRequest(type="center", args=("chair_x",)), RelationRequest(type="edge", args=("chair_x",))]
     spec = spec.model_copy(update={"objects": [*spec.objects, extra], "relations": rels})
-    res = construct_environment(spec, catalog=CAT, rng=np.random.default_rng(0))
+    res = construct_environment(spec, catalog=CAT, rng=np.random.default_rng(0), solver=solver)
     assert res.relaxation_log, "center+edge of one object cannot both hold"
     assert all(not e.task for e in res.relaxation_log)
     assert any("center(chair_x)" in e.item or "edge(chair_x)" in e.item for e in res.relaxation_log)
     assert geometric_failures(res.env, CAT) == []
 
 
-def test_crowded_room_drops_enrichment_objects_never_task_objects() -> None:
+@pytest.mark.parametrize("solver", SOLVERS)
+def test_one_conflicting_enrichment_pair_costs_exactly_one_relation(solver: Solver) -> None:
+    spec = living_spec(0)
+    extra = ObjectRequest(id="chair_x", category="armchair", room="living_room", task=False)
+    rels = [*spec.relations, RelationRequest(type="center", args=("chair_x",)),
+            RelationRequest(type="edge", args=("chair_x",))]
+    spec = spec.model_copy(update={"objects": [*spec.objects, extra], "relations": rels})
+    res = construct_environment(spec, catalog=CAT, rng=np.random.default_rng(0), solver=solver)
+    [entry] = res.relaxation_log
+    assert entry.kind == "relation" and not entry.task
+    assert entry.item in ("center(chair_x)", "edge(chair_x)")
+    assert entry.reason.startswith("unsatisfiable") and "chair_x" in entry.reason
+    assert "chair_x" in {o.id for o in res.env.objects}
+    assert geometric_failures(res.env, CAT) == []
+
+
+@pytest.mark.parametrize("solver", SOLVERS)
+def test_crowded_room_drops_enrichment_objects_never_task_objects(solver: Solver) -> None:
     rooms = [RoomRequest(id="bedroom", type="Bedroom", area=9)]
     objs = [ObjectRequest(id="bed_1", category="bed", room="bedroom", role="bed")]
     objs += [ObjectRequest(id=f"w{i}", category="wardrobe", room="bedroom", task=False) for i in range(8)]
     spec = SceneSpec(task_id="t", env_id="e", rooms=rooms, objects=objs)
-    res = construct_environment(spec, catalog=CAT, rng=np.random.default_rng(0))
+    res = construct_environment(spec, catalog=CAT, rng=np.random.default_rng(0), solver=solver)
     ids = {o.id for o in res.env.objects}
     assert "bed_1" in ids and len(ids) < 9
     assert {e.item for e in res.relaxation_log if e.kind == "object"} == {f"w{i}" for i in range(8)} - ids
     assert geometric_failures(res.env, CAT) == []
 
 
-def test_impossible_task_objects_raise_precise_error() -> None:
+@pytest.mark.parametrize("solver", SOLVERS)
+def test_impossible_task_objects_raise_precise_error(solver: Solver) -> None:
     rooms = [RoomRequest(id="bathroom", type="Bathroom", area=4)]
     objs = [ObjectRequest(id=f"bed{i}", category="bed", room="bathroom", role=f"b{i}") for i in range(4)]
     with pytest.raises(EnvSpecError, match="bathroom"):
         construct_environment(SceneSpec(task_id="t", env_id="e", rooms=rooms, objects=objs), catalog=CAT,
-                              rng=np.random.default_rng(0))
+                              rng=np.random.default_rng(0), solver=solver)
 
 
 def test_unknown_placement_target_raises() -> None:
@@ -173,12 +196,13 @@ def scenes(draw: st.DrawFn) -> tuple[SceneSpec, int]:
     return SceneSpec(task_id="t", env_id="e", rooms=rooms, objects=objs, relations=rels), seed
 
 
+@pytest.mark.parametrize("solver", SOLVERS)
 @settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(scenes())
-def test_property_every_returned_layout_is_valid(case: tuple[SceneSpec, int]) -> None:
+def test_property_every_returned_layout_is_valid(solver: Solver, case: tuple[SceneSpec, int]) -> None:
     spec, seed = case
     try:
-        res = construct_environment(spec, catalog=CAT, rng=np.random.default_rng(seed))
+        res = construct_environment(spec, catalog=CAT, rng=np.random.default_rng(seed), solver=solver)
     except EnvSpecError as exc:  # task objects that cannot fit are reported, never placed badly
         assert "do not fit" in str(exc)
         return
@@ -192,13 +216,14 @@ def test_property_every_returned_layout_is_valid(case: tuple[SceneSpec, int]) ->
         assert in_env or any(e.item == text for e in res.relaxation_log)
 
 
-def test_ceiling_objects_touch_the_ceiling_clear_of_tall_furniture() -> None:
+@pytest.mark.parametrize("solver", SOLVERS)
+def test_ceiling_objects_touch_the_ceiling_clear_of_tall_furniture(solver: Solver) -> None:
     rooms = [RoomRequest(id="bedroom", type="Bedroom", area=12)]
     objs = [ObjectRequest(id="wardrobe", category="wardrobe", room="bedroom", role="wardrobe"),
             ObjectRequest(id="fan", category="ceiling_fan", room="bedroom", placement="ceiling", role="fan"),
             ObjectRequest(id="lamp", category="ceiling_lamp", room="bedroom", placement="ceiling", task=False)]
     spec = SceneSpec(task_id="t", env_id="e", rooms=rooms, objects=objs, wall_height=2.5)
-    env = construct_environment(spec, catalog=CAT, rng=np.random.default_rng(2)).env
+    env = construct_environment(spec, catalog=CAT, rng=np.random.default_rng(2), solver=solver).env
     fan = env.obj("fan")
     assert fan.support == "ceiling" and fan.position is not None and fan.size is not None
     assert abs(fan.position[1] + fan.size[1] / 2 - 2.5) < 1e-6

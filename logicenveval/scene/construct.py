@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from typing import Any, Literal
+from typing import Any
 
 import numpy as np
 
@@ -15,7 +15,17 @@ from logicenveval.model.envspec import Agent, EnvObject, EnvSpec, Relation
 from logicenveval.scene.compat import check_relations
 from logicenveval.scene.floorplan import FloorPlan, plan_floor
 from logicenveval.scene.geometry import Rect, edges
-from logicenveval.scene.layout import WALKWAY, Box, FloorRel, WallBox, pack, pack_walls, rect_cells
+from logicenveval.scene.layout import (
+    DEFAULT_SOLVER,
+    WALKWAY,
+    Box,
+    FloorRel,
+    Solver,
+    WallBox,
+    backend,
+    cells,
+    rect_cells,
+)
 from logicenveval.scene.objects import resolve_category
 from logicenveval.scene.relax import Dropped
 from logicenveval.scene.spec import (
@@ -32,7 +42,6 @@ from logicenveval.scene.spec import (
 WINDOW_CLEARANCE = 0.3  # metres in front of a window kept free of objects taller than its sill
 CONTAINER_MARGIN = 0.01  # wall thickness of containers, metres
 FLOOR_RELATIONS = {"edge", "center", "near", "far", "center_aligned", "in_front_of", "face_to", "side_of"}
-Solver = Literal["z3"]
 
 
 @dataclass
@@ -69,13 +78,10 @@ def _snap_size(v: float, lo: float, hi: float, grid: float) -> float:
     return _r(v)
 
 
-def _cells(v: float, grid: float) -> int:
-    return int(math.ceil(v / grid - 1e-6))
-
-
 class _Builder:
-    def __init__(self, spec: SceneSpec, catalog: Catalog, rng: np.random.Generator) -> None:
+    def __init__(self, spec: SceneSpec, catalog: Catalog, rng: np.random.Generator, solver: Solver) -> None:
         self.spec = spec
+        self.solver = backend(solver)
         self.catalog = catalog
         self.rng = rng
         self.g = spec.grid
@@ -233,7 +239,7 @@ class _Builder:
         frame = (int(round(rect.w / g)), int(round(rect.d / g)))
         here = [o for o in self.objects.values() if o.room == rq.id]
         floor = [o for o in here if o.support == "floor"]
-        boxes = [Box(o.id, self.sizes[o.id], (_cells(self.sizes[o.id][0], g), _cells(self.sizes[o.id][2], g)),
+        boxes = [Box(o.id, self.sizes[o.id], (cells(self.sizes[o.id][0], g), cells(self.sizes[o.id][2], g)),
                      o.id in self.hard) for o in floor]
         squares = self._door_squares(rq.id, plan, rect)
         obstacles = [rect_cells(sq, origin, g) for sq in squares]
@@ -243,8 +249,8 @@ class _Builder:
                 tall.append((rect_cells(self._strip(w.segment, rect, WINDOW_CLEARANCE), origin, g), w.sill))
         root = {o.id: self._root(o.id) for o in here}
         rels, by_text = self._floor_rels(here, root)
-        placed, dropped = pack(frame, boxes, seed=self._seed(), timeout_s=self.spec.room_timeout_s,
-                               obstacles=obstacles, tall=tall, walkway=_cells(WALKWAY, g), rels=rels, grid=g)
+        placed, dropped = self.solver.pack(frame, boxes, seed=self._seed(), timeout_s=self.spec.room_timeout_s,
+                               obstacles=obstacles, tall=tall, walkway=cells(WALKWAY, g), rels=rels, grid=g)
         if not placed and boxes:
             raise EnvSpecError(f"room {rq.id}: the task objects do not fit its floor together with the doors "
                                "and walkways", field=f"rooms.{rq.id}",
@@ -278,10 +284,10 @@ class _Builder:
         tall = [(rect_cells(p.footprint, origin, g), h - p.top - 0.01) for oid, p in self.poses.items()
                 if self.objects[oid].room == room]
         tall += [(rect_cells(sq, origin, g), -1.0) for sq in squares]
-        boxes = [Box(o.id, self.sizes[o.id], (_cells(self.sizes[o.id][0], g), _cells(self.sizes[o.id][2], g)),
+        boxes = [Box(o.id, self.sizes[o.id], (cells(self.sizes[o.id][0], g), cells(self.sizes[o.id][2], g)),
                      o.id in self.hard) for o in objs]
         frame = (int(round(rect.w / g)), int(round(rect.d / g)))
-        placed, dropped = pack(frame, boxes, seed=self._seed(), timeout_s=self.spec.room_timeout_s, tall=tall,
+        placed, dropped = self.solver.pack(frame, boxes, seed=self._seed(), timeout_s=self.spec.room_timeout_s, tall=tall,
                                grid=g)
         if not placed:
             raise EnvSpecError(f"room {room}: the ceiling task objects do not fit", field=f"rooms.{room}",
@@ -380,10 +386,10 @@ class _Builder:
             m = CONTAINER_MARGIN if mode == "inside" else 0.0
             fw, fd = parent.size[0] - 2 * m, parent.size[2] - 2 * m
             frame = (int(math.floor(fw / self.g + 1e-6)), int(math.floor(fd / self.g + 1e-6)))
-            boxes = [Box(o.id, self.sizes[o.id], (_cells(self.sizes[o.id][0], self.g),
-                                                  _cells(self.sizes[o.id][2], self.g)), o.id in self.hard)
+            boxes = [Box(o.id, self.sizes[o.id], (cells(self.sizes[o.id][0], self.g),
+                                                  cells(self.sizes[o.id][2], self.g)), o.id in self.hard)
                      for o in kids]
-            placed, dropped = pack(frame, boxes, seed=self._seed(), timeout_s=self.spec.room_timeout_s,
+            placed, dropped = self.solver.pack(frame, boxes, seed=self._seed(), timeout_s=self.spec.room_timeout_s,
                                    grid=self.g)
             if not placed:
                 raise EnvSpecError(f"the objects {[b.id for b in boxes]} do not fit {mode} {pid}",
@@ -425,7 +431,7 @@ class _Builder:
         for side in order:
             e = es[side]
             length = int(math.floor((e.hi - e.lo) / g + 1e-6))
-            corner = _cells(depth, g)  # keep out of the perpendicular walls' objects
+            corner = cells(depth, g)  # keep out of the perpendicular walls' objects
             blocked: list[tuple[int, int, float, float]] = [(-1, corner, 0.0, h), (length - corner, length + 1, 0.0, h)]
             spans = [(d.segment, 0.0, h) for d in plan.doors if d.segment is not None]
             spans += [(w.segment, w.sill - 0.05, w.sill + w.height + 0.05) for w in plan.windows
@@ -435,20 +441,20 @@ class _Builder:
                 if abs(pa[k_across] - e.at) < 1e-6 and abs(pb[k_across] - e.at) < 1e-6:
                     lo = min(pa[k_along], pb[k_along]) - e.lo - 0.05
                     hi = max(pa[k_along], pb[k_along]) - e.lo + 0.05
-                    blocked.append((int(math.floor(lo / g)), _cells(hi, g), bot, top))
+                    blocked.append((int(math.floor(lo / g)), cells(hi, g), bot, top))
             for fp, top in solids:
                 near = (fp.z0 - e.at < depth if e.inward > 0 else e.at - fp.z1 < depth) if e.axis == "x" else \
                        (fp.x0 - e.at < depth if e.inward > 0 else e.at - fp.x1 < depth)
                 if near:
                     lo, hi = (fp.x0, fp.x1) if e.axis == "x" else (fp.z0, fp.z1)
-                    blocked.append((int(math.floor((lo - e.lo) / g)) - 1, _cells(hi - e.lo, g) + 1, 0.0, top + 0.01))
+                    blocked.append((int(math.floor((lo - e.lo) / g)) - 1, cells(hi - e.lo, g) + 1, 0.0, top + 0.01))
             walls.append((length, blocked))
         boxes = []
         for o in objs:
             sx, sy, _ = self.sizes[o.id]
             bottom = min(max(1.5 - sy / 2, 0.3), h - 0.1 - sy)
-            boxes.append(WallBox(o.id, _cells(sx, g), _r(max(bottom, 0.05)), sy, o.id in self.hard))
-        placed, dropped = pack_walls(walls, boxes, seed=self._seed(), timeout_s=self.spec.room_timeout_s)
+            boxes.append(WallBox(o.id, cells(sx, g), _r(max(bottom, 0.05)), sy, o.id in self.hard))
+        placed, dropped = self.solver.pack_walls(walls, boxes, seed=self._seed(), timeout_s=self.spec.room_timeout_s)
         if not placed and boxes:
             raise EnvSpecError(f"room {room}: the wall-mounted task objects do not fit its free walls",
                                field=f"rooms.{room}", hint="request a larger room or fewer wall objects")
@@ -481,12 +487,9 @@ class _Builder:
 
 
 def construct_environment(spec: SceneSpec, *, catalog: Catalog, rng: np.random.Generator,
-                          solver: Solver = "z3") -> SceneResult:
+                          solver: Solver = DEFAULT_SOLVER) -> SceneResult:
     """A full EnvSpec for `spec`; enrichment relations/objects are dropped (logged) when unsatisfiable."""
-    if solver != "z3":
-        raise EnvSpecError(f"unknown solver {solver!r}", field="solver",
-                           hint="use 'z3' (docs/scene.md explains why there is no CP-SAT backend yet)")
-    b = _Builder(spec, catalog, rng)
+    b = _Builder(spec, catalog, rng, solver)
     b.validate()
     plan = plan_floor(spec.rooms, rng, wall_height=spec.wall_height)
     b.warnings += plan.warnings
@@ -542,7 +545,7 @@ def room_requests(rooms: Sequence[Mapping[str, Any]]) -> list[RoomRequest]:
 def construct_from_drafts(*, brief: Any, env_id: str, generator: str, rooms: Sequence[Mapping[str, Any]],
                           objects: Sequence[Any], relations: Sequence[Any],
                           claimed_trajectory: dict[str, dict[str, str]] | None, catalog: Catalog,
-                          rng: np.random.Generator, solver: Solver = "z3") -> SceneResult:
+                          rng: np.random.Generator, solver: Solver = DEFAULT_SOLVER) -> SceneResult:
     """`construct_environment` for LLM drafts (objects with id/category/room/role/placement/...)."""
     roles = set(getattr(brief, "roles", {}) or {})
     reqs = []

@@ -1,25 +1,33 @@
-"""Z3 layout of one room, decomposed: the floor, then each supporting surface/container, then walls.
+"""What a layout backend solves: boxes in a cell frame, wall objects on wall segments, relations.
 
 Everything is on an integer grid (`grid` metres per cell). Object sizes are snapped to the grid
 when the catalog range allows, so a placed box is exactly its cell box. Orientation `o` in 0..3 is
 yaw `90*o`; the front of an object is +z after yaw (AI2-THOR), i.e. +z, +x, -z, -x.
+Backends (`layout_z3`, `layout_cpsat`) implement the same `pack`/`pack_walls` contract and are
+looked up by name with `backend`, imported only when used.
 """
 
 from __future__ import annotations
 
+import importlib
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Literal, Protocol, get_args
 
-import z3
-
+from logicenveval.errors import EnvSpecError
 from logicenveval.scene.geometry import Rect
-from logicenveval.scene.relax import Dropped, Tracked, solve_relaxing
+from logicenveval.scene.relax import Dropped
 from logicenveval.scene.spec import RelationRequest
 
 WALKWAY = 0.45  # metres of free floor in front of each task object for the agent to approach
 NEAR_AXIS = 0.7  # per-axis footprint gap: sqrt(2)*0.7 < 1.0 m (DESIGN §6 near)
 FAR = 2.5
+IN_FRONT_GAP = NEAR_AXIS + 0.25  # in_front_of / side_of: gap along one axis only, < 1.0 m
+
+Solver = Literal["z3", "cpsat"]
+SOLVERS: tuple[str, ...] = get_args(Solver)
+DEFAULT_SOLVER: Solver = "cpsat"
 
 
 @dataclass(frozen=True)
@@ -52,151 +60,6 @@ class FloorRel:
     slack: tuple[float, ...]
 
 
-class _Vars:
-    def __init__(self, b: Box, tag: str, ctx: z3.Context) -> None:
-        self.x = z3.Int(f"x_{tag}", ctx)
-        self.z = z3.Int(f"z_{tag}", ctx)
-        self.o = z3.Int(f"o_{tag}", ctx)
-        odd = z3.Or(self.o == 1, self.o == 3)
-        self.wx = z3.If(odd, b.cells[1], b.cells[0])
-        self.wz = z3.If(odd, b.cells[0], b.cells[1])
-        self.cx2 = 2 * self.x + self.wx
-        self.cz2 = 2 * self.z + self.wz
-
-    def disjoint(self, x0: z3.ArithRef | int, z0: z3.ArithRef | int, x1: z3.ArithRef | int,
-                 z1: z3.ArithRef | int) -> z3.BoolRef:
-        return z3.Or(self.x + self.wx <= x0, x1 <= self.x, self.z + self.wz <= z0, z1 <= self.z)
-
-    def apart(self, v: _Vars) -> z3.BoolRef:
-        return self.disjoint(v.x, v.z, v.x + v.wx, v.z + v.wz)
-
-
-def _cells(v: float, grid: float) -> int:
-    return int(math.ceil(v / grid - 1e-6))
-
-
-def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: float,
-         obstacles: Sequence[tuple[int, int, int, int]] = (),
-         tall: Sequence[tuple[tuple[int, int, int, int], float]] = (),
-         walkway: int = 0, rels: Sequence[FloorRel] = (), grid: float = 0.05,
-         free_rotation: bool = True) -> tuple[dict[str, Placed], list[Dropped]]:
-    """Non-overlapping boxes in a `frame` of cells; obstacles in cells; `tall` only for taller boxes.
-
-    Returns placements (corner in cells times `grid`) of the boxes kept and the relaxation drops.
-    Task boxes are hard; if they cannot be placed, no placement is returned for any box.
-    """
-    W, D = frame
-    ctx = z3.Context()  # a fresh context per solve: results do not depend on earlier solves
-    s = z3.Solver(ctx=ctx)
-    s.set("random_seed", seed)
-    s.set("core.minimize", False)
-    vs = {b.id: _Vars(b, f"{k}", ctx) for k, b in enumerate(boxes)}
-    lit: dict[str, z3.BoolRef] = {}
-    tracked: list[Tracked] = []
-    for k, b in enumerate(boxes):
-        if not b.task:
-            lit[b.id] = z3.Bool(f"obj_{k}", ctx)
-            tracked.append(Tracked(lit[b.id], "object", b.id, False, (b.id,)))
-
-    def guard(ids: Sequence[str], c: z3.BoolRef) -> None:
-        conds = [lit[i] for i in ids if i in lit]
-        s.add(z3.Implies(z3.And(*conds), c) if conds else c)
-
-    for b in boxes:
-        v = vs[b.id]
-        s.add(v.o >= 0, v.o <= (3 if free_rotation else 0), v.x >= 0, v.z >= 0)
-        guard([b.id], z3.And(v.x + v.wx <= W, v.z + v.wz <= D))
-        for ob in obstacles:
-            guard([b.id], v.disjoint(*ob))
-        for ob, min_h in tall:
-            if b.size[1] > min_h:
-                guard([b.id], v.disjoint(*ob))
-    for i, a in enumerate(boxes):
-        for bb in boxes[i + 1:]:
-            guard([a.id, bb.id], vs[a.id].apart(vs[bb.id]))
-    if walkway:
-        for b in boxes:
-            if not b.task:
-                continue
-            v = vs[b.id]
-            A = walkway
-            sx0 = z3.If(v.o == 1, v.x + v.wx, z3.If(v.o == 3, v.x - A, v.x))
-            sx1 = z3.If(v.o == 1, v.x + v.wx + A, z3.If(v.o == 3, v.x, v.x + v.wx))
-            sz0 = z3.If(v.o == 0, v.z + v.wz, z3.If(v.o == 2, v.z - A, v.z))
-            sz1 = z3.If(v.o == 0, v.z + v.wz + A, z3.If(v.o == 2, v.z, v.z + v.wz))
-            s.add(sx0 >= 0, sz0 >= 0, sx1 <= W, sz1 <= D)
-            for other in boxes:
-                if other.id != b.id:
-                    guard([other.id], vs[other.id].disjoint(sx0, sz0, sx1, sz1))
-    for k, fr in enumerate(rels):
-        c = _encode(fr, vs, (W, D), grid)
-        if c is None:
-            continue
-        p = z3.Bool(f"rel_{k}", ctx)
-        tracked.append(Tracked(p, "relation", fr.rel.text(), fr.task, tuple(fr.rel.args)))
-        guard(fr.args, z3.Implies(p, c))
-    model, dropped = solve_relaxing(s, tracked, timeout_s)
-    if model is None:
-        return {}, dropped
-    gone = {d.tracked.item for d in dropped if d.tracked.kind == "object"}
-    out = {}
-    for b in boxes:
-        if b.id in gone:
-            continue
-        v = vs[b.id]
-        ev = model.eval
-        out[b.id] = Placed(ev(v.x).as_long() * grid, ev(v.z).as_long() * grid, ev(v.o).as_long())
-    return out, dropped
-
-
-def _abs_le(e: z3.ArithRef, k: int) -> z3.BoolRef:
-    return z3.And(e <= k, -e <= k)
-
-
-def _encode(fr: FloorRel, vs: dict[str, _Vars], frame: tuple[int, int], grid: float) -> z3.BoolRef | None:
-    W, D = frame
-    t = fr.rel.type
-    if t == "edge":
-        v = vs[fr.args[0]]
-        return z3.Or(z3.And(v.x == 0, v.o == 1), z3.And(v.x + v.wx == W, v.o == 3),
-                     z3.And(v.z == 0, v.o == 0), z3.And(v.z + v.wz == D, v.o == 2))
-    if t == "center":
-        v = vs[fr.args[0]]
-        return z3.And(_abs_le(v.cx2 - W, 2), _abs_le(v.cz2 - D, 2))
-    a, b = vs[fr.args[0]], vs[fr.args[1]]
-    if t == "near":
-        n = int(math.floor((NEAR_AXIS - sum(fr.slack)) / grid))
-        return z3.And(b.x - (a.x + a.wx) <= n, a.x - (b.x + b.wx) <= n,
-                      b.z - (a.z + a.wz) <= n, a.z - (b.z + b.wz) <= n)
-    if t == "far":
-        f2 = 2 * _cells(FAR + sum(fr.slack) + grid, grid)
-        dx, dz = a.cx2 - b.cx2, a.cz2 - b.cz2
-        return z3.Or(dx >= f2, -dx >= f2, dz >= f2, -dz >= f2)
-    if t == "center_aligned":
-        return z3.Or(_abs_le(a.cx2 - b.cx2, 1), _abs_le(a.cz2 - b.cz2, 1))
-    near = int(math.floor((NEAR_AXIS + 0.25) / grid))  # gap along one axis only: < 1.0 m
-    if t in ("in_front_of", "face_to"):
-        # `front` lies on the front axis of `back` (centres aligned within half a cell)
-        front, back = (a, b) if t == "in_front_of" else (b, a)
-        gap = near if t == "in_front_of" else 10**6
-        return z3.Or(
-            z3.And(back.o == 0, front.z >= back.z + back.wz, front.z - (back.z + back.wz) <= gap,
-                   _abs_le(front.cx2 - back.cx2, 1)),
-            z3.And(back.o == 2, front.z + front.wz <= back.z, back.z - (front.z + front.wz) <= gap,
-                   _abs_le(front.cx2 - back.cx2, 1)),
-            z3.And(back.o == 1, front.x >= back.x + back.wx, front.x - (back.x + back.wx) <= gap,
-                   _abs_le(front.cz2 - back.cz2, 1)),
-            z3.And(back.o == 3, front.x + front.wx <= back.x, back.x - (front.x + front.wx) <= gap,
-                   _abs_le(front.cz2 - back.cz2, 1)))
-    if t == "side_of":
-        along_x = z3.And(z3.Or(z3.And(a.x + a.wx <= b.x, b.x - (a.x + a.wx) <= near),
-                               z3.And(a.x >= b.x + b.wx, a.x - (b.x + b.wx) <= near)), _abs_le(a.cz2 - b.cz2, 1))
-        along_z = z3.And(z3.Or(z3.And(a.z + a.wz <= b.z, b.z - (a.z + a.wz) <= near),
-                               z3.And(a.z >= b.z + b.wz, a.z - (b.z + b.wz) <= near)), _abs_le(a.cx2 - b.cx2, 1))
-        return z3.If(z3.Or(b.o == 0, b.o == 2), along_x, along_z)
-    return None
-
-
 @dataclass(frozen=True)
 class WallBox:
     id: str
@@ -206,47 +69,46 @@ class WallBox:
     task: bool
 
 
-def pack_walls(walls: Sequence[tuple[int, list[tuple[int, int, float, float]]]], boxes: Sequence[WallBox], *,
-               seed: int, timeout_s: float) -> tuple[dict[str, tuple[int, int]], list[Dropped]]:
-    """Wall objects on wall segments: per wall its length and blocked stretches (lo, hi, bottom, top).
-
-    A stretch blocks a box whose vertical extent meets [bottom, top]. Returns (wall index, start cell).
-    """
-    ctx = z3.Context()
-    s = z3.Solver(ctx=ctx)
-    s.set("random_seed", seed)
-    w = {b.id: z3.Int(f"w_{k}", ctx) for k, b in enumerate(boxes)}
-    t = {b.id: z3.Int(f"t_{k}", ctx) for k, b in enumerate(boxes)}
-    lit: dict[str, z3.BoolRef] = {}
-    tracked: list[Tracked] = []
-    for k, b in enumerate(boxes):
-        if not b.task:
-            lit[b.id] = z3.Bool(f"wobj_{k}", ctx)
-            tracked.append(Tracked(lit[b.id], "object", b.id, False, (b.id,)))
-
-    def guard(ids: Sequence[str], c: z3.BoolRef) -> None:
-        conds = [lit[i] for i in ids if i in lit]
-        s.add(z3.Implies(z3.And(*conds), c) if conds else c)
-
-    for b in boxes:
-        s.add(w[b.id] >= 0, w[b.id] < len(walls), t[b.id] >= 0)
-        for k, (length, blocked) in enumerate(walls):
-            cons = [t[b.id] + b.length <= length]
-            cons += [z3.Or(t[b.id] + b.length <= lo, t[b.id] >= hi)
-                     for lo, hi, bot, top in blocked if bot < b.bottom + b.height and top > b.bottom]
-            guard([b.id], z3.Implies(w[b.id] == k, z3.And(*cons)))
-    for i, a in enumerate(boxes):
-        for c in boxes[i + 1:]:
-            guard([a.id, c.id], z3.Or(w[a.id] != w[c.id], t[a.id] + a.length <= t[c.id], t[c.id] + c.length <= t[a.id]))
-    model, dropped = solve_relaxing(s, tracked, timeout_s)
-    if model is None:
-        return {}, dropped
-    gone = {d.tracked.item for d in dropped}
-    return ({b.id: (model.eval(w[b.id]).as_long(), model.eval(t[b.id]).as_long())
-             for b in boxes if b.id not in gone}, dropped)
+Obstacle = tuple[int, int, int, int]  # x0, z0, x1, z1 in cells
+WallSegment = tuple[int, list[tuple[int, int, float, float]]]  # length, blocked (lo, hi, bottom, top)
 
 
-def rect_cells(r: Rect, origin: tuple[float, float], grid: float) -> tuple[int, int, int, int]:
+class Backend(Protocol):
+    """A layout backend module: `pack` places floor/surface boxes, `pack_walls` wall objects."""
+
+    def pack(self, frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: float,
+             obstacles: Sequence[Obstacle] = (), tall: Sequence[tuple[Obstacle, float]] = (),
+             walkway: int = 0, rels: Sequence[FloorRel] = (), grid: float = 0.05,
+             free_rotation: bool = True) -> tuple[dict[str, Placed], list[Dropped]]:
+        """Non-overlapping boxes in a `frame` of cells; obstacles in cells; `tall` only for taller boxes.
+
+        Returns placements (corner in cells times `grid`) of the boxes kept and the relaxation drops.
+        Task boxes are hard; if they cannot be placed, no placement is returned for any box.
+        """
+
+    def pack_walls(self, walls: Sequence[WallSegment], boxes: Sequence[WallBox], *, seed: int,
+                   timeout_s: float) -> tuple[dict[str, tuple[int, int]], list[Dropped]]:
+        """Wall objects on wall segments: per wall its length and blocked stretches (lo, hi, bottom, top).
+
+        A stretch blocks a box whose vertical extent meets [bottom, top]. Returns (wall index, start cell).
+        """
+
+
+def backend(name: str) -> Backend:
+    """The layout backend called `name` ('z3' or 'cpsat')."""
+    if name not in SOLVERS:
+        raise EnvSpecError(f"unknown layout solver {name!r}", field="solver",
+                           hint=f"use one of {', '.join(SOLVERS)} (docs/scene.md compares them)")
+    mod: Backend = importlib.import_module(f"logicenveval.scene.layout_{name}")
+    return mod
+
+
+def cells(v: float, grid: float) -> int:
+    """`v` metres in whole cells, rounded up (sizes never shrink)."""
+    return int(math.ceil(v / grid - 1e-6))
+
+
+def rect_cells(r: Rect, origin: tuple[float, float], grid: float) -> Obstacle:
     """A world rectangle as cells relative to `origin`, rounded outwards."""
     return (int(math.floor((r.x0 - origin[0]) / grid + 1e-6)), int(math.floor((r.z0 - origin[1]) / grid + 1e-6)),
-            _cells(r.x1 - origin[0], grid), _cells(r.z1 - origin[1], grid))
+            cells(r.x1 - origin[0], grid), cells(r.z1 - origin[1], grid))

@@ -1,20 +1,24 @@
-"""Solve with tracked assumptions; on unsat drop by priority using z3 unsat cores.
+"""Solve with tracked assumptions; on unsat drop by priority, reading the solver's core.
 
 Priority (first dropped first): enrichment relations, enrichment objects, then task relations.
-Task objects are never tracked: their constraints are hard.
+Task objects are never tracked: their constraints are hard. The loop is backend-neutral: a layout
+backend (Z3, CP-SAT) supplies a `Check` that solves under the active assumptions and names the
+tracked items of its core.
 """
 
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import Any, Literal
 
-import z3
+Status = Literal["sat", "unsat", "unknown"]
 
 
-@dataclass
+@dataclass(eq=False)  # identity: backend literals overload `==`
 class Tracked:
-    lit: z3.BoolRef
+    lit: Any  # the backend's assumption literal (z3.BoolRef, CP-SAT IntVar)
     kind: str  # "relation" | "object"
     item: str
     task: bool
@@ -33,30 +37,32 @@ class Dropped:
     reason: str
 
 
-def solve_relaxing(s: z3.Solver, tracked: list[Tracked], timeout_s: float
-                   ) -> tuple[z3.ModelRef | None, list[Dropped]]:
-    """A model honouring as many tracked items as the priorities allow, and what was dropped."""
+Check = Callable[[list[Tracked], float], tuple[Status, list[Tracked]]]
+"""Solve assuming every item of `active` within `timeout_s`; on unsat also the core's items (in `active` order)."""
+
+
+def relax(check: Check, tracked: list[Tracked], timeout_s: float) -> tuple[bool, list[Dropped]]:
+    """Whether a solution honours as many tracked items as the priorities allow, and what was dropped.
+
+    On True the backend's last `check` call holds the solution.
+    """
     active = list(tracked)
     dropped: list[Dropped] = []
     deadline = time.monotonic() + timeout_s
     while True:
-        left_ms = max(1, int((deadline - time.monotonic()) * 1000))
-        s.set("timeout", left_ms)
-        res = s.check(*[t.lit for t in active])
-        if res == z3.sat:
-            return s.model(), dropped
-        if res == z3.unsat:
-            core = {str(c) for c in s.unsat_core()}
-            cands = [t for t in active if str(t.lit) in core]
+        res, cands = check(active, deadline - time.monotonic())
+        if res == "sat":
+            return True, dropped
+        if res == "unsat":
             if not cands:
-                return None, dropped
+                return False, dropped
             victim = min(reversed(cands), key=lambda t: t.rank)
             others = [t.item for t in cands if t is not victim][:4]
             reason = ("unsatisfiable with the room's hard constraints"
                       + (f" and {', '.join(others)}" if others else ""))
         else:
             if not active:
-                return None, dropped
+                return False, dropped
             victim = min(reversed(active), key=lambda t: t.rank)
             reason = "solver timeout"
             deadline = time.monotonic() + max(1.0, timeout_s / 4)

@@ -1,0 +1,367 @@
+"""OR-Tools CP-SAT layout backend: the same contract as `layout_z3`, with CP-SAT's global constraints.
+
+Non-overlap is one `NoOverlap2D` over (optional) interval variables instead of pairwise
+disjunctions: an enrichment object's interval is present iff its tracked literal is, a rotation
+changes an interval's size through a single `odd` literal. Each task object's walkway strip is an
+interval whose bounds are linear in the four orientation literals, in its own `NoOverlap2D` with the
+other boxes. Relations are reified on the tracked literal (and those of their enrichment objects).
+Relaxation uses assumptions and `sufficient_assumptions_for_infeasibility` as the core. One worker
+and the run's seed keep the search deterministic.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Sequence
+from typing import Any
+
+from ortools.sat.python import cp_model
+
+from logicenveval.errors import LogicEnvEvalError
+from logicenveval.scene.layout import (
+    FAR,
+    IN_FRONT_GAP,
+    NEAR_AXIS,
+    Box,
+    FloorRel,
+    Obstacle,
+    Placed,
+    WallBox,
+    WallSegment,
+    cells,
+)
+from logicenveval.scene.relax import Dropped, Status, Tracked, relax
+
+Lit = Any  # a CP-SAT Boolean literal (IntVar or its negation)
+_RELATIONS = {"edge", "center", "near", "far", "center_aligned", "in_front_of", "face_to", "side_of"}
+
+
+class _Solve:
+    """The relaxation `Check` for one model; keeps the last solver to read the solution from.
+
+    CP-SAT's `sufficient_assumptions_for_infeasibility` is often not minimal (it may name a
+    relation that conflicts with nothing), and relaxation drops a core's lowest-priority member,
+    so the core is shrunk by deletion, lowest priority first, before it is returned. Each deletion
+    probe is capped in deterministic time (`PROBE_DET_TIME`), so the core does not depend on the
+    machine's speed; a probe that runs out keeps its item.
+    """
+
+    PROBE_DET_TIME = 1.0
+
+    def __init__(self, m: cp_model.CpModel, seed: int) -> None:
+        self.m = m
+        self.seed = seed
+        self.solver = cp_model.CpSolver()
+
+    def __call__(self, active: list[Tracked], timeout_s: float) -> tuple[Status, list[Tracked]]:
+        deadline = time.monotonic() + timeout_s
+        status = self._solve(active, timeout_s)
+        if status != "unsat":
+            return status, []
+        core = self._core(active)
+        for t in sorted(core, key=lambda t: t.rank):
+            if len(core) == 1 or time.monotonic() >= deadline:
+                break
+            trial = [c for c in core if c is not t]
+            if self._solve(trial, deadline - time.monotonic(), self.PROBE_DET_TIME) == "unsat":
+                core = self._core(trial)
+        return "unsat", [t for t in active if any(t is c for c in core)]
+
+    def _solve(self, assumed: list[Tracked], timeout_s: float, det_time: float | None = None) -> Status:
+        self.m.clear_assumptions()
+        self.m.add_assumptions([t.lit for t in assumed])
+        self.solver = cp_model.CpSolver()
+        p = self.solver.parameters
+        p.num_workers = 1
+        p.random_seed = self.seed % 2**31
+        p.max_time_in_seconds = max(0.001, timeout_s)
+        if det_time is not None:
+            p.max_deterministic_time = det_time
+        # measured on benchmarks/layout.py floors: presolve and LP relaxation cost more than they
+        # prune on these small feasibility models (3-6x faster without them, docs/scene.md)
+        p.cp_model_presolve = False
+        p.linearization_level = 0
+        status = self.solver.solve(self.m)
+        if status in (cp_model.OPTIMAL, cp_model.FEASIBLE):
+            return "sat"
+        if status == cp_model.INFEASIBLE:
+            return "unsat"
+        if status == cp_model.MODEL_INVALID:
+            raise LogicEnvEvalError(f"the CP-SAT layout model is invalid: {self.m.validate()}",
+                                    hint="report this as a bug; use solver='z3' meanwhile")
+        return "unknown"
+
+    def _core(self, assumed: list[Tracked]) -> list[Tracked]:
+        core = set(self.solver.sufficient_assumptions_for_infeasibility())
+        return [t for t in assumed if t.lit.index in core]
+
+
+class _Vars:
+    """Corner, far corner, orientation literals and the x/z intervals of one box."""
+
+    def __init__(self, m: cp_model.CpModel, b: Box, tag: str, frame: tuple[int, int], free_rotation: bool,
+                 present: Lit | None) -> None:
+        W, D = frame
+        c0, c1 = b.cells
+        self.x = m.new_int_var(0, W, f"x_{tag}")
+        self.z = m.new_int_var(0, D, f"z_{tag}")
+        self.ex = m.new_int_var(0, W, f"ex_{tag}")  # x + wx: in the frame by its domain
+        self.ez = m.new_int_var(0, D, f"ez_{tag}")
+        self.o = [m.new_bool_var(f"o{k}_{tag}") for k in range(4)]
+        m.add_exactly_one(self.o)
+        if not free_rotation:
+            m.add(self.o[0] == 1)
+        self.odd = m.new_bool_var(f"odd_{tag}")
+        m.add(self.odd == self.o[1] + self.o[3])
+        self.wx = c0 + (c1 - c0) * self.odd
+        self.wz = c1 + (c0 - c1) * self.odd
+        self.cx2 = self.x + self.ex
+        self.cz2 = self.z + self.ez
+        if present is None:
+            self.ix = m.new_interval_var(self.x, self.wx, self.ex, f"ix_{tag}")
+            self.iz = m.new_interval_var(self.z, self.wz, self.ez, f"iz_{tag}")
+        else:
+            self.ix = m.new_optional_interval_var(self.x, self.wx, self.ex, present, f"ix_{tag}")
+            self.iz = m.new_optional_interval_var(self.z, self.wz, self.ez, present, f"iz_{tag}")
+
+
+def _fixed(m: cp_model.CpModel, ob: Obstacle, tag: str) -> tuple[Any, Any]:
+    x0, z0, x1, z1 = ob
+    return (m.new_fixed_size_interval_var(x0, x1 - x0, f"obx_{tag}"),
+            m.new_fixed_size_interval_var(z0, z1 - z0, f"obz_{tag}"))
+
+
+def _outside(m: cp_model.CpModel, v: _Vars, ob: Obstacle, en: list[Lit]) -> None:
+    """`v` does not meet `ob` (for degenerate obstacles, which an interval would not block)."""
+    x0, z0, x1, z1 = ob
+    side = [m.new_bool_var("") for _ in range(4)]
+    m.add_bool_or(side).only_enforce_if(en)
+    m.add(v.ex <= x0).only_enforce_if(side[0])
+    m.add(v.x >= x1).only_enforce_if(side[1])
+    m.add(v.ez <= z0).only_enforce_if(side[2])
+    m.add(v.z >= z1).only_enforce_if(side[3])
+
+
+def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: float,
+         obstacles: Sequence[Obstacle] = (), tall: Sequence[tuple[Obstacle, float]] = (),
+         walkway: int = 0, rels: Sequence[FloorRel] = (), grid: float = 0.05,
+         free_rotation: bool = True) -> tuple[dict[str, Placed], list[Dropped]]:
+    """See `scene.layout.Backend.pack`."""
+    W, D = frame
+    m = cp_model.CpModel()
+    lit: dict[str, Lit] = {}
+    tracked: list[Tracked] = []
+    for k, b in enumerate(boxes):
+        if not b.task:
+            lit[b.id] = m.new_bool_var(f"obj_{k}")
+            tracked.append(Tracked(lit[b.id], "object", b.id, False, (b.id,)))
+    vs = {b.id: _Vars(m, b, str(k), frame, free_rotation, lit.get(b.id)) for k, b in enumerate(boxes)}
+
+    def guard(ids: Sequence[str]) -> list[Lit]:
+        return [lit[i] for i in ids if i in lit]
+
+    xs, zs = [vs[b.id].ix for b in boxes], [vs[b.id].iz for b in boxes]
+    fixed_x: list[Any] = []
+    fixed_z: list[Any] = []
+    kept: list[Obstacle] = []
+    for k, ob in enumerate(obstacles):
+        solid = ob[2] > ob[0] and ob[3] > ob[1] and not any(_meet(ob, o) for o in kept)
+        if solid:
+            kept.append(ob)
+            ix, iz = _fixed(m, ob, str(k))
+            fixed_x.append(ix)
+            fixed_z.append(iz)
+        else:
+            for b in boxes:
+                _outside(m, vs[b.id], ob, guard([b.id]))
+    m.add_no_overlap_2d(xs + fixed_x, zs + fixed_z)
+    for k, (ob, min_h) in enumerate(tall):
+        taller = [b for b in boxes if b.size[1] > min_h]
+        if not taller:
+            continue
+        if ob[2] > ob[0] and ob[3] > ob[1]:
+            ix, iz = _fixed(m, ob, f"t{k}")
+            m.add_no_overlap_2d([ix] + [vs[b.id].ix for b in taller], [iz] + [vs[b.id].iz for b in taller])
+        else:
+            for b in taller:
+                _outside(m, vs[b.id], ob, guard([b.id]))
+    if walkway:
+        for k, b in enumerate(boxes):
+            if b.task:
+                _walkway(m, vs[b.id], b, walkway, frame, str(k),
+                         [(vs[o.id].ix, vs[o.id].iz) for o in boxes if o.id != b.id])
+    for k, fr in enumerate(rels):
+        if fr.rel.type not in _RELATIONS:
+            continue
+        p = m.new_bool_var(f"rel_{k}")
+        tracked.append(Tracked(p, "relation", fr.rel.text(), fr.task, tuple(fr.rel.args)))
+        _encode(m, fr, vs, frame, grid, [p, *guard(fr.args)])
+    solve = _Solve(m, seed)
+    ok, dropped = relax(solve, tracked, timeout_s)
+    if not ok:
+        return {}, dropped
+    gone = {d.tracked.item for d in dropped if d.tracked.kind == "object"}
+    val = solve.solver.value
+    out = {}
+    for b in boxes:
+        if b.id in gone:
+            continue
+        v = vs[b.id]
+        o = next(k for k in range(4) if solve.solver.boolean_value(v.o[k]))
+        out[b.id] = Placed(val(v.x) * grid, val(v.z) * grid, o)
+    return out, dropped
+
+
+def _meet(a: Obstacle, b: Obstacle) -> bool:
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+
+def _walkway(m: cp_model.CpModel, v: _Vars, b: Box, A: int, frame: tuple[int, int], tag: str,
+             others: list[tuple[Any, Any]]) -> None:
+    """A strip `A` cells deep in front of `v` (its +z after yaw), inside the frame, free of `others`.
+
+    Orientation 0..3 puts it at +z, +x, -z, -x; the corner and size are linear in the literals
+    because exactly one holds (e.g. with o1 the box's x extent is c1, so the strip starts at x + c1).
+    """
+    W, D = frame
+    c0, c1 = b.cells
+    o = v.o
+    sx0, sx1 = m.new_int_var(0, W, f"sx0_{tag}"), m.new_int_var(0, W, f"sx1_{tag}")
+    sz0, sz1 = m.new_int_var(0, D, f"sz0_{tag}"), m.new_int_var(0, D, f"sz1_{tag}")
+    m.add(sx0 == v.x + c1 * o[1] - A * o[3])
+    m.add(sz0 == v.z + c1 * o[0] - A * o[2])
+    sx = m.new_interval_var(sx0, c0 + (A - c0) * v.odd, sx1, f"sx_{tag}")
+    sz = m.new_interval_var(sz0, A + (c0 - A) * v.odd, sz1, f"sz_{tag}")
+    m.add_no_overlap_2d([sx] + [ix for ix, _ in others], [sz] + [iz for _, iz in others])
+
+
+def _abs_le(m: cp_model.CpModel, e: Any, k: int, en: list[Lit]) -> None:
+    m.add(e <= k).only_enforce_if(en)
+    m.add(-e <= k).only_enforce_if(en)
+
+
+def _any_of(m: cp_model.CpModel, n: int, en: list[Lit]) -> list[Lit]:
+    """`n` case literals of which at least one holds when all of `en` do."""
+    cases = [m.new_bool_var("") for _ in range(n)]
+    m.add_bool_or(cases).only_enforce_if(en)
+    return cases
+
+
+def _encode(m: cp_model.CpModel, fr: FloorRel, vs: dict[str, _Vars], frame: tuple[int, int], grid: float,
+            en: list[Lit]) -> None:
+    """`fr` holds when every literal of `en` does (the same geometry as `layout_z3._encode`)."""
+    W, D = frame
+    t = fr.rel.type
+    if t == "edge":  # back against the wall it faces away from; exactly one orientation holds
+        v = vs[fr.args[0]]
+        m.add(v.z == 0).only_enforce_if([v.o[0], *en])
+        m.add(v.x == 0).only_enforce_if([v.o[1], *en])
+        m.add(v.ez == D).only_enforce_if([v.o[2], *en])
+        m.add(v.ex == W).only_enforce_if([v.o[3], *en])
+        return
+    if t == "center":
+        v = vs[fr.args[0]]
+        _abs_le(m, v.cx2 - W, 2, en)
+        _abs_le(m, v.cz2 - D, 2, en)
+        return
+    a, b = vs[fr.args[0]], vs[fr.args[1]]
+    if t == "near":
+        n = int(math.floor((NEAR_AXIS - sum(fr.slack)) / grid))
+        for e in (b.x - a.ex, a.x - b.ex, b.z - a.ez, a.z - b.ez):
+            m.add(e <= n).only_enforce_if(en)
+        return
+    if t == "far":
+        f2 = 2 * cells(FAR + sum(fr.slack) + grid, grid)
+        dx, dz = a.cx2 - b.cx2, a.cz2 - b.cz2
+        for case, e in zip(_any_of(m, 4, en), (dx, -dx, dz, -dz), strict=True):
+            m.add(e >= f2).only_enforce_if(case)
+        return
+    if t == "center_aligned":
+        cx, cz = _any_of(m, 2, en)
+        _abs_le(m, a.cx2 - b.cx2, 1, [cx])
+        _abs_le(m, a.cz2 - b.cz2, 1, [cz])
+        return
+    near = int(math.floor(IN_FRONT_GAP / grid))
+    if t in ("in_front_of", "face_to"):
+        # `front` lies on the front axis of `back` (centres aligned within half a cell)
+        front, back = (a, b) if t == "in_front_of" else (b, a)
+        gaps = [front.z - back.ez, back.z - front.ez, front.x - back.ex, back.x - front.ex]  # o = 0, 2, 1, 3
+        for k, gap, cross in ((0, gaps[0], front.cx2 - back.cx2), (2, gaps[1], front.cx2 - back.cx2),
+                              (1, gaps[2], front.cz2 - back.cz2), (3, gaps[3], front.cz2 - back.cz2)):
+            when = [back.o[k], *en]
+            m.add(gap >= 0).only_enforce_if(when)
+            if t == "in_front_of":
+                m.add(gap <= near).only_enforce_if(when)
+            _abs_le(m, cross, 1, when)
+        return
+    # side_of: beside `b` along its own left-right axis
+    for odd, lo_gap, hi_gap, cross in ((b.odd.Not(), b.x - a.ex, a.x - b.ex, a.cz2 - b.cz2),
+                                       (b.odd, b.z - a.ez, a.z - b.ez, a.cx2 - b.cx2)):
+        when = [odd, *en]
+        for case, gap in zip(_any_of(m, 2, when), (lo_gap, hi_gap), strict=True):
+            m.add(gap >= 0).only_enforce_if(case)
+            m.add(gap <= near).only_enforce_if(case)
+        _abs_le(m, cross, 1, when)
+    return
+
+def pack_walls(walls: Sequence[WallSegment], boxes: Sequence[WallBox], *, seed: int,
+               timeout_s: float) -> tuple[dict[str, tuple[int, int]], list[Dropped]]:
+    """See `scene.layout.Backend.pack_walls`: one optional interval per (box, wall), one NoOverlap per wall."""
+    m = cp_model.CpModel()
+    tracked: list[Tracked] = []
+    longest = max((length for length, _ in walls), default=0)
+    on: dict[str, list[Lit]] = {}
+    start: dict[str, Any] = {}
+    per_wall: list[list[Any]] = [[] for _ in walls]
+    for i, b in enumerate(boxes):
+        present = None
+        if not b.task:
+            present = m.new_bool_var(f"wobj_{i}")
+            tracked.append(Tracked(present, "object", b.id, False, (b.id,)))
+        start[b.id] = t = m.new_int_var(0, max(0, longest), f"t_{i}")
+        on[b.id] = [m.new_bool_var(f"w{k}_{i}") for k in range(len(walls))]
+        m.add_exactly_one(on[b.id])
+        for k, (length, blocked) in enumerate(walls):
+            here = on[b.id][k]
+            if present is not None:  # placed on wall k: on it and kept
+                here = m.new_bool_var(f"p{k}_{i}")
+                m.add_implication(here, on[b.id][k])
+                m.add_implication(here, present)
+                m.add_bool_or([on[b.id][k].Not(), present.Not(), here])
+            free = _free_starts(length, b, blocked)
+            if free:
+                m.add_linear_expression_in_domain(t, cp_model.Domain.from_intervals(free)).only_enforce_if(here)
+            else:
+                m.add_bool_or([here.Not()])
+            per_wall[k].append(m.new_optional_fixed_size_interval_var(t, b.length, here, f"i{k}_{i}"))
+    for intervals in per_wall:
+        m.add_no_overlap(intervals)
+    solve = _Solve(m, seed)
+    ok, dropped = relax(solve, tracked, timeout_s)
+    if not ok:
+        return {}, dropped
+    gone = {d.tracked.item for d in dropped}
+    s = solve.solver
+    return ({b.id: (next(k for k, w in enumerate(on[b.id]) if s.boolean_value(w)), s.value(start[b.id]))
+             for b in boxes if b.id not in gone}, dropped)
+
+
+def _free_starts(length: int, b: WallBox, blocked: list[tuple[int, int, float, float]]) -> list[list[int]]:
+    """Start cells of `b` on a wall of `length` clear of the stretches that reach its height."""
+    free = [[0, length - b.length]] if length >= b.length else []
+    for lo, hi, bot, top in blocked:
+        if not (bot < b.bottom + b.height and top > b.bottom):
+            continue
+        cut_lo, cut_hi = lo - b.length + 1, hi - 1  # starts that overlap [lo, hi)
+        nxt = []
+        for a, z in free:
+            if cut_hi < a or z < cut_lo:
+                nxt.append([a, z])
+                continue
+            if a < cut_lo:
+                nxt.append([a, cut_lo - 1])
+            if cut_hi < z:
+                nxt.append([cut_hi + 1, z])
+        free = nxt
+    return free

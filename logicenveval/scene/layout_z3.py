@@ -1,0 +1,220 @@
+"""Z3 layout backend: pairwise disjunctions over integer cells, tracked literals as assumptions.
+
+The contract (frames, boxes, relations, orientation convention) is `scene.layout`'s.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+import z3
+
+from logicenveval.scene.layout import (
+    FAR,
+    IN_FRONT_GAP,
+    NEAR_AXIS,
+    Box,
+    FloorRel,
+    Obstacle,
+    Placed,
+    WallBox,
+    WallSegment,
+    cells,
+)
+from logicenveval.scene.relax import Check, Dropped, Status, Tracked, relax
+
+
+class _Vars:
+    def __init__(self, b: Box, tag: str, ctx: z3.Context) -> None:
+        self.x = z3.Int(f"x_{tag}", ctx)
+        self.z = z3.Int(f"z_{tag}", ctx)
+        self.o = z3.Int(f"o_{tag}", ctx)
+        odd = z3.Or(self.o == 1, self.o == 3)
+        self.wx = z3.If(odd, b.cells[1], b.cells[0])
+        self.wz = z3.If(odd, b.cells[0], b.cells[1])
+        self.cx2 = 2 * self.x + self.wx
+        self.cz2 = 2 * self.z + self.wz
+
+    def disjoint(self, x0: z3.ArithRef | int, z0: z3.ArithRef | int, x1: z3.ArithRef | int,
+                 z1: z3.ArithRef | int) -> z3.BoolRef:
+        return z3.Or(self.x + self.wx <= x0, x1 <= self.x, self.z + self.wz <= z0, z1 <= self.z)
+
+    def apart(self, v: _Vars) -> z3.BoolRef:
+        return self.disjoint(v.x, v.z, v.x + v.wx, v.z + v.wz)
+
+
+def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: float,
+         obstacles: Sequence[Obstacle] = (), tall: Sequence[tuple[Obstacle, float]] = (),
+         walkway: int = 0, rels: Sequence[FloorRel] = (), grid: float = 0.05,
+         free_rotation: bool = True) -> tuple[dict[str, Placed], list[Dropped]]:
+    """Non-overlapping boxes in a `frame` of cells; obstacles in cells; `tall` only for taller boxes.
+
+    Returns placements (corner in cells times `grid`) of the boxes kept and the relaxation drops.
+    Task boxes are hard; if they cannot be placed, no placement is returned for any box.
+    """
+    W, D = frame
+    ctx = z3.Context()  # a fresh context per solve: results do not depend on earlier solves
+    s = z3.Solver(ctx=ctx)
+    s.set("random_seed", seed)
+    s.set("core.minimize", False)
+    vs = {b.id: _Vars(b, f"{k}", ctx) for k, b in enumerate(boxes)}
+    lit: dict[str, z3.BoolRef] = {}
+    tracked: list[Tracked] = []
+    for k, b in enumerate(boxes):
+        if not b.task:
+            lit[b.id] = z3.Bool(f"obj_{k}", ctx)
+            tracked.append(Tracked(lit[b.id], "object", b.id, False, (b.id,)))
+
+    def guard(ids: Sequence[str], c: z3.BoolRef) -> None:
+        conds = [lit[i] for i in ids if i in lit]
+        s.add(z3.Implies(z3.And(*conds), c) if conds else c)
+
+    for b in boxes:
+        v = vs[b.id]
+        s.add(v.o >= 0, v.o <= (3 if free_rotation else 0), v.x >= 0, v.z >= 0)
+        guard([b.id], z3.And(v.x + v.wx <= W, v.z + v.wz <= D))
+        for ob in obstacles:
+            guard([b.id], v.disjoint(*ob))
+        for ob, min_h in tall:
+            if b.size[1] > min_h:
+                guard([b.id], v.disjoint(*ob))
+    for i, a in enumerate(boxes):
+        for bb in boxes[i + 1:]:
+            guard([a.id, bb.id], vs[a.id].apart(vs[bb.id]))
+    if walkway:
+        for b in boxes:
+            if not b.task:
+                continue
+            v = vs[b.id]
+            A = walkway
+            sx0 = z3.If(v.o == 1, v.x + v.wx, z3.If(v.o == 3, v.x - A, v.x))
+            sx1 = z3.If(v.o == 1, v.x + v.wx + A, z3.If(v.o == 3, v.x, v.x + v.wx))
+            sz0 = z3.If(v.o == 0, v.z + v.wz, z3.If(v.o == 2, v.z - A, v.z))
+            sz1 = z3.If(v.o == 0, v.z + v.wz + A, z3.If(v.o == 2, v.z, v.z + v.wz))
+            s.add(sx0 >= 0, sz0 >= 0, sx1 <= W, sz1 <= D)
+            for other in boxes:
+                if other.id != b.id:
+                    guard([other.id], vs[other.id].disjoint(sx0, sz0, sx1, sz1))
+    for k, fr in enumerate(rels):
+        c = _encode(fr, vs, (W, D), grid)
+        if c is None:
+            continue
+        p = z3.Bool(f"rel_{k}", ctx)
+        tracked.append(Tracked(p, "relation", fr.rel.text(), fr.task, tuple(fr.rel.args)))
+        guard(fr.args, z3.Implies(p, c))
+    ok, dropped = relax(_check(s), tracked, timeout_s)
+    if not ok:
+        return {}, dropped
+    gone = {d.tracked.item for d in dropped if d.tracked.kind == "object"}
+    out = {}
+    ev = s.model().eval
+    for b in boxes:
+        if b.id in gone:
+            continue
+        v = vs[b.id]
+        out[b.id] = Placed(ev(v.x).as_long() * grid, ev(v.z).as_long() * grid, ev(v.o).as_long())
+    return out, dropped
+
+
+def _check(s: z3.Solver) -> Check:
+    """Z3's check under assumptions; the core is read by literal name."""
+    def check(active: list[Tracked], timeout_s: float) -> tuple[Status, list[Tracked]]:
+        s.set("timeout", max(1, int(timeout_s * 1000)))
+        res = s.check(*[t.lit for t in active])
+        if res == z3.sat:
+            return "sat", []
+        if res == z3.unsat:
+            core = {str(c) for c in s.unsat_core()}
+            return "unsat", [t for t in active if str(t.lit) in core]
+        return "unknown", []
+    return check
+
+
+def _abs_le(e: z3.ArithRef, k: int) -> z3.BoolRef:
+    return z3.And(e <= k, -e <= k)
+
+
+def _encode(fr: FloorRel, vs: dict[str, _Vars], frame: tuple[int, int], grid: float) -> z3.BoolRef | None:
+    W, D = frame
+    t = fr.rel.type
+    if t == "edge":
+        v = vs[fr.args[0]]
+        return z3.Or(z3.And(v.x == 0, v.o == 1), z3.And(v.x + v.wx == W, v.o == 3),
+                     z3.And(v.z == 0, v.o == 0), z3.And(v.z + v.wz == D, v.o == 2))
+    if t == "center":
+        v = vs[fr.args[0]]
+        return z3.And(_abs_le(v.cx2 - W, 2), _abs_le(v.cz2 - D, 2))
+    a, b = vs[fr.args[0]], vs[fr.args[1]]
+    if t == "near":
+        n = int(math.floor((NEAR_AXIS - sum(fr.slack)) / grid))
+        return z3.And(b.x - (a.x + a.wx) <= n, a.x - (b.x + b.wx) <= n,
+                      b.z - (a.z + a.wz) <= n, a.z - (b.z + b.wz) <= n)
+    if t == "far":
+        f2 = 2 * cells(FAR + sum(fr.slack) + grid, grid)
+        dx, dz = a.cx2 - b.cx2, a.cz2 - b.cz2
+        return z3.Or(dx >= f2, -dx >= f2, dz >= f2, -dz >= f2)
+    if t == "center_aligned":
+        return z3.Or(_abs_le(a.cx2 - b.cx2, 1), _abs_le(a.cz2 - b.cz2, 1))
+    near = int(math.floor(IN_FRONT_GAP / grid))
+    if t in ("in_front_of", "face_to"):
+        # `front` lies on the front axis of `back` (centres aligned within half a cell)
+        front, back = (a, b) if t == "in_front_of" else (b, a)
+        gap = near if t == "in_front_of" else 10**6
+        return z3.Or(
+            z3.And(back.o == 0, front.z >= back.z + back.wz, front.z - (back.z + back.wz) <= gap,
+                   _abs_le(front.cx2 - back.cx2, 1)),
+            z3.And(back.o == 2, front.z + front.wz <= back.z, back.z - (front.z + front.wz) <= gap,
+                   _abs_le(front.cx2 - back.cx2, 1)),
+            z3.And(back.o == 1, front.x >= back.x + back.wx, front.x - (back.x + back.wx) <= gap,
+                   _abs_le(front.cz2 - back.cz2, 1)),
+            z3.And(back.o == 3, front.x + front.wx <= back.x, back.x - (front.x + front.wx) <= gap,
+                   _abs_le(front.cz2 - back.cz2, 1)))
+    if t == "side_of":
+        along_x = z3.And(z3.Or(z3.And(a.x + a.wx <= b.x, b.x - (a.x + a.wx) <= near),
+                               z3.And(a.x >= b.x + b.wx, a.x - (b.x + b.wx) <= near)), _abs_le(a.cz2 - b.cz2, 1))
+        along_z = z3.And(z3.Or(z3.And(a.z + a.wz <= b.z, b.z - (a.z + a.wz) <= near),
+                               z3.And(a.z >= b.z + b.wz, a.z - (b.z + b.wz) <= near)), _abs_le(a.cx2 - b.cx2, 1))
+        return z3.If(z3.Or(b.o == 0, b.o == 2), along_x, along_z)
+    return None
+
+
+def pack_walls(walls: Sequence[WallSegment], boxes: Sequence[WallBox], *,
+               seed: int, timeout_s: float) -> tuple[dict[str, tuple[int, int]], list[Dropped]]:
+    """Wall objects on wall segments: per wall its length and blocked stretches (lo, hi, bottom, top).
+
+    A stretch blocks a box whose vertical extent meets [bottom, top]. Returns (wall index, start cell).
+    """
+    ctx = z3.Context()
+    s = z3.Solver(ctx=ctx)
+    s.set("random_seed", seed)
+    w = {b.id: z3.Int(f"w_{k}", ctx) for k, b in enumerate(boxes)}
+    t = {b.id: z3.Int(f"t_{k}", ctx) for k, b in enumerate(boxes)}
+    lit: dict[str, z3.BoolRef] = {}
+    tracked: list[Tracked] = []
+    for k, b in enumerate(boxes):
+        if not b.task:
+            lit[b.id] = z3.Bool(f"wobj_{k}", ctx)
+            tracked.append(Tracked(lit[b.id], "object", b.id, False, (b.id,)))
+
+    def guard(ids: Sequence[str], c: z3.BoolRef) -> None:
+        conds = [lit[i] for i in ids if i in lit]
+        s.add(z3.Implies(z3.And(*conds), c) if conds else c)
+
+    for b in boxes:
+        s.add(w[b.id] >= 0, w[b.id] < len(walls), t[b.id] >= 0)
+        for k, (length, blocked) in enumerate(walls):
+            cons = [t[b.id] + b.length <= length]
+            cons += [z3.Or(t[b.id] + b.length <= lo, t[b.id] >= hi)
+                     for lo, hi, bot, top in blocked if bot < b.bottom + b.height and top > b.bottom]
+            guard([b.id], z3.Implies(w[b.id] == k, z3.And(*cons)))
+    for i, a in enumerate(boxes):
+        for c in boxes[i + 1:]:
+            guard([a.id, c.id], z3.Or(w[a.id] != w[c.id], t[a.id] + a.length <= t[c.id], t[c.id] + c.length <= t[a.id]))
+    ok, dropped = relax(_check(s), tracked, timeout_s)
+    if not ok:
+        return {}, dropped
+    model = s.model()
+    gone = {d.tracked.item for d in dropped}
+    return ({b.id: (model.eval(w[b.id]).as_long(), model.eval(t[b.id]).as_long())
+             for b in boxes if b.id not in gone}, dropped)

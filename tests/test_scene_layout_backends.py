@@ -1,0 +1,241 @@
+"""Z3 and CP-SAT layout backends: the same contract, checked against each other and against geometry."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import z3
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from ortools.sat.python import cp_model
+
+from logicenveval.domain.catalog import load_catalog
+from logicenveval.errors import EnvSpecError
+from logicenveval.physics import check_env
+from logicenveval.scene import layout_cpsat, layout_z3
+from logicenveval.scene.construct import construct_environment
+from logicenveval.scene.layout import (
+    SOLVERS,
+    Box,
+    FloorRel,
+    Obstacle,
+    Placed,
+    Solver,
+    WallBox,
+    backend,
+)
+from logicenveval.scene.spec import ObjectRequest, RelationRequest, RoomRequest, SceneSpec
+
+CAT = load_catalog()
+PAIRS = {"near": ("armchair", "sofa"), "far": ("armchair", "sofa"), "center_aligned": ("armchair", "sofa"),
+         "in_front_of": ("coffee_table", "sofa"), "face_to": ("armchair", "tv_stand"),
+         "side_of": ("side_table", "sofa"), "edge": ("sofa", "armchair"), "center": ("coffee_table", "sofa")}
+
+
+@pytest.mark.parametrize("solver", SOLVERS)
+@pytest.mark.parametrize("rel", sorted(PAIRS))
+def test_each_relation_holds_geometrically(rel: str, solver: Solver) -> None:
+    a, b = PAIRS[rel]
+    objs = [ObjectRequest(id="a", category=a, room="r", role="a"), ObjectRequest(id="b", category=b, room="r", role="b")]
+    args = ("a",) if rel in ("edge", "center") else ("a", "b")
+    spec = SceneSpec(task_id="t", env_id="e", rooms=[RoomRequest(id="r", type="LivingRoom", area=30)], objects=objs,
+                     relations=[RelationRequest(type=rel, args=args)])  # type: ignore[arg-type]
+    res = construct_environment(spec, catalog=CAT, rng=np.random.default_rng(5), solver=solver)
+    assert res.relaxation_log == []
+    assert [(r.type, r.args) for r in res.env.relations] == [(rel, args)]
+    report = check_env(res.env, CAT)
+    assert report.relation.passed, [f.message for f in report.relation.failures]
+    assert report.entity.passed and report.floor_plan.passed
+
+
+def test_unknown_backend_names_the_valid_ones() -> None:
+    with pytest.raises(EnvSpecError, match="z3, cpsat"):
+        backend("gurobi")
+    spec = SceneSpec(task_id="t", env_id="e", rooms=[RoomRequest(id="r", type="LivingRoom")], objects=[])
+    with pytest.raises(EnvSpecError, match="unknown layout solver 'ortools'"):
+        construct_environment(spec, catalog=CAT, rng=np.random.default_rng(0), solver="ortools")  # type: ignore[arg-type]
+
+
+def _extent(b: Box, p: Placed, grid: float) -> tuple[int, int, int, int]:
+    wx, wz = (b.cells[1], b.cells[0]) if p.o % 2 else b.cells
+    x, z = round(p.x0 / grid), round(p.z0 / grid)
+    return x, z, x + wx, z + wz
+
+
+def _meet(a: tuple[int, int, int, int], b: Obstacle) -> bool:
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+
+def _strip(r: tuple[int, int, int, int], o: int, depth: int) -> tuple[int, int, int, int]:
+    x0, z0, x1, z1 = r
+    return [(x0, z1, x1, z1 + depth), (x1, z0, x1 + depth, z1), (x0, z0 - depth, x1, z0), (x0 - depth, z0, x0, z1)][o]
+
+
+rects = st.tuples(st.integers(0, 30), st.integers(0, 30), st.integers(1, 12), st.integers(1, 12)).map(
+    lambda t: (t[0], t[1], t[0] + t[2], t[1] + t[3]))
+
+
+@st.composite
+def packings(draw: st.DrawFn) -> tuple[tuple[int, int], list[Box], list[Obstacle], list[tuple[Obstacle, float]], int]:
+    frame = (draw(st.integers(8, 36)), draw(st.integers(8, 36)))
+    boxes = [Box(f"b{k}", (0.5, draw(st.floats(0.1, 2.0)), 0.5), (draw(st.integers(1, 12)), draw(st.integers(1, 12))),
+                 task=draw(st.booleans())) for k in range(draw(st.integers(1, 7)))]
+    obstacles = draw(st.lists(rects, max_size=3))
+    tall = [(r, draw(st.floats(0.0, 1.5))) for r in draw(st.lists(rects, max_size=2))]
+    return frame, boxes, obstacles, tall, draw(st.sampled_from([0, 3]))
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(packings(), st.integers(0, 1000))
+def test_property_backends_agree_on_feasibility_and_return_valid_packings(
+        case: tuple[tuple[int, int], list[Box], list[Obstacle], list[tuple[Obstacle, float]], int], seed: int) -> None:
+    frame, boxes, obstacles, tall, walkway = case
+    results = {}
+    for name in SOLVERS:
+        placed, dropped = backend(name).pack(frame, boxes, seed=seed, timeout_s=30.0, obstacles=obstacles, tall=tall,
+                                             walkway=walkway, grid=0.05)
+        results[name] = placed
+        assert all(not d.tracked.task and d.tracked.kind == "object" for d in dropped)
+        if not placed:
+            continue
+        assert {b.id for b in boxes if b.task} <= set(placed)
+        kept = [b for b in boxes if b.id in placed]
+        ext = {b.id: _extent(b, placed[b.id], 0.05) for b in kept}
+        for b in kept:
+            r = ext[b.id]
+            assert r[0] >= 0 and r[1] >= 0 and r[2] <= frame[0] and r[3] <= frame[1], (name, b, r)
+            assert not any(_meet(r, ob) for ob in obstacles), (name, b.id, r)
+            assert not any(_meet(r, ob) for ob, h in tall if b.size[1] > h), (name, b.id, r)
+            assert not any(_meet(r, ext[c.id]) for c in kept if c.id != b.id), (name, b.id)
+            if walkway and b.task:
+                s = _strip(r, placed[b.id].o, walkway)
+                assert s[0] >= 0 and s[1] >= 0 and s[2] <= frame[0] and s[3] <= frame[1], (name, b.id, s)
+                assert not any(_meet(s, ext[c.id]) for c in kept if c.id != b.id), (name, b.id, s)
+    if all(b.task for b in boxes):  # no relaxation freedom: both complete solvers must agree
+        assert bool(results["z3"]) == bool(results["cpsat"])
+
+
+@st.composite
+def wall_cases(draw: st.DrawFn) -> tuple[list[tuple[int, list[tuple[int, int, float, float]]]], list[WallBox]]:
+    walls = []
+    for _ in range(draw(st.integers(1, 4))):
+        length = draw(st.integers(5, 60))
+        blocked = [(lo, lo + draw(st.integers(1, 20)), bot, bot + draw(st.floats(0.1, 2.0)))
+                   for lo, bot in draw(st.lists(st.tuples(st.integers(-2, 60), st.floats(0.0, 2.0)), max_size=4))]
+        walls.append((length, blocked))
+    boxes = [WallBox(f"w{k}", draw(st.integers(1, 25)), draw(st.floats(0.3, 1.8)), draw(st.floats(0.1, 1.0)),
+                     task=draw(st.booleans())) for k in range(draw(st.integers(1, 5)))]
+    return walls, boxes
+
+
+@settings(max_examples=40, deadline=None)
+@given(wall_cases(), st.integers(0, 1000))
+def test_property_wall_backends_agree_and_respect_blocked_stretches(
+        case: tuple[list[tuple[int, list[tuple[int, int, float, float]]]], list[WallBox]], seed: int) -> None:
+    walls, boxes = case
+    results = {}
+    for name in SOLVERS:
+        placed, dropped = backend(name).pack_walls(walls, boxes, seed=seed, timeout_s=30.0)
+        results[name] = placed
+        assert all(not d.tracked.task for d in dropped)
+        for b in boxes:
+            if b.id not in placed:
+                continue
+            k, t = placed[b.id]
+            length, blocked = walls[k]
+            assert t >= 0 and t + b.length <= length
+            for lo, hi, bot, top in blocked:
+                if bot < b.bottom + b.height and top > b.bottom:
+                    assert t + b.length <= lo or t >= hi, (name, b, (lo, hi))
+            for c in boxes:
+                if c.id != b.id and c.id in placed and placed[c.id][0] == k:
+                    tc = placed[c.id][1]
+                    assert t + b.length <= tc or tc + c.length <= t
+    if all(b.task for b in boxes):
+        assert bool(results["z3"]) == bool(results["cpsat"])
+
+
+@given(st.integers(0, 40), st.integers(1, 12),
+       st.lists(st.tuples(st.integers(-3, 45), st.integers(1, 10)), max_size=5))
+def test_property_free_starts_are_exactly_the_clear_positions(length: int, size: int,
+                                                              cuts: list[tuple[int, int]]) -> None:
+    box = WallBox("w", size, 1.0, 0.5, True)
+    blocked = [(lo, lo + w, 0.0, 3.0) for lo, w in cuts]
+    free = {t for a, z in layout_cpsat._free_starts(length, box, blocked) for t in range(a, z + 1)}
+    brute = {t for t in range(0, length - size + 1)
+             if all(t + size <= lo or t >= hi for lo, hi, _, _ in blocked)}
+    assert free == brute
+
+
+FRONT = [(0, 1), (1, 0), (0, -1), (-1, 0)]  # +z after yaw 90*o
+SIDE = 80  # cells: 4 m, room for `far`
+
+
+def _solve_forced(solver: str, rel: str, ref: str, o: int) -> dict[str, tuple[int, int, int, int, int]]:
+    """Boxes a, b in an 80x80 frame with `rel`, the orientation of `ref` forced to `o`; (x0, z0, x1, z1, o) each."""
+    W = D = SIDE
+    boxes = {"a": Box("a", (0.3, 0.5, 0.2), (6, 4), True), "b": Box("b", (0.4, 0.5, 0.2), (8, 4), True)}
+    args = ("a",) if rel in ("edge", "center") else ("a", "b")
+    fr = FloorRel(RelationRequest(type=rel, args=args), True, args, (0.0,) * len(args))  # type: ignore[arg-type]
+    if solver == "z3":
+        ctx = z3.Context()
+        s = z3.Solver(ctx=ctx)
+        zv = {k: layout_z3._Vars(b, k, ctx) for k, b in boxes.items()}
+        for v in zv.values():
+            s.add(v.o >= 0, v.o <= 3, v.x >= 0, v.z >= 0, v.x + v.wx <= W, v.z + v.wz <= D)
+        s.add(zv["a"].apart(zv["b"]), zv[ref].o == o, layout_z3._encode(fr, zv, (W, D), 0.05))
+        assert s.check() == z3.sat
+        mdl = s.model()
+        out = {}
+        for k, v in zv.items():
+            x, z = mdl.eval(v.x).as_long(), mdl.eval(v.z).as_long()
+            out[k] = (x, z, x + mdl.eval(v.wx).as_long(), z + mdl.eval(v.wz).as_long(), mdl.eval(v.o).as_long())
+        return out
+    m = cp_model.CpModel()
+    cv = {k: layout_cpsat._Vars(m, b, k, (W, D), True, None) for k, b in boxes.items()}
+    m.add_no_overlap_2d([v.ix for v in cv.values()], [v.iz for v in cv.values()])
+    m.add(cv[ref].o[o] == 1)
+    layout_cpsat._encode(m, fr, cv, (W, D), 0.05, [])
+    solver_ = cp_model.CpSolver()
+    solver_.parameters.num_workers = 1
+    assert solver_.solve(m) in (cp_model.OPTIMAL, cp_model.FEASIBLE)
+    return {k: (solver_.value(v.x), solver_.value(v.z), solver_.value(v.ex), solver_.value(v.ez),
+                next(i for i in range(4) if solver_.boolean_value(v.o[i]))) for k, v in cv.items()}
+
+
+def _on_front_axis(front: tuple[int, int, int, int, int], back: tuple[int, int, int, int, int], max_gap: int) -> bool:
+    fx, fz = FRONT[back[4]]
+    if fx:  # front axis along x: gap beyond back's front face, centres aligned in z
+        gap = front[0] - back[2] if fx > 0 else back[0] - front[2]
+        cross = abs((front[1] + front[3]) - (back[1] + back[3]))
+    else:
+        gap = front[1] - back[3] if fz > 0 else back[1] - front[3]
+        cross = abs((front[0] + front[2]) - (back[0] + back[2]))
+    return 0 <= gap <= max_gap and cross <= 1
+
+
+@pytest.mark.parametrize("solver", SOLVERS)
+@pytest.mark.parametrize("rel", ["edge", "center", "near", "far", "center_aligned", "in_front_of", "face_to", "side_of"])
+@pytest.mark.parametrize("o", range(4))
+def test_every_relation_encoding_means_the_same_in_every_orientation(solver: str, rel: str, o: int) -> None:
+    ref = "a" if rel in ("edge", "center", "face_to") else "b"
+    p = _solve_forced(solver, rel, ref, o)
+    a, b = p["a"], p["b"]
+    assert p[ref][4] == o
+    near_gap = 19  # IN_FRONT_GAP / grid
+    if rel == "edge":
+        assert [a[1] == 0, a[0] == 0, a[3] == SIDE, a[2] == SIDE][o]  # back against the wall behind it
+    elif rel == "center":
+        assert abs(a[0] + a[2] - SIDE) <= 2 and abs(a[1] + a[3] - SIDE) <= 2
+    elif rel == "near":
+        assert max(b[0] - a[2], a[0] - b[2]) <= 14 and max(b[1] - a[3], a[1] - b[3]) <= 14
+    elif rel == "far":
+        assert max(abs(a[0] + a[2] - b[0] - b[2]), abs(a[1] + a[3] - b[1] - b[3])) >= 2 * 51  # (FAR + one cell) / grid, doubled centres
+    elif rel == "center_aligned":
+        assert abs(a[0] + a[2] - b[0] - b[2]) <= 1 or abs(a[1] + a[3] - b[1] - b[3]) <= 1
+    elif rel == "in_front_of":
+        assert _on_front_axis(a, b, near_gap)
+    elif rel == "face_to":
+        assert _on_front_axis(b, a, 10**6)
+    else:  # side_of: on b's left-right axis, i.e. a front axis of b turned by 90 degrees either way
+        assert any(_on_front_axis(a, (*b[:4], (b[4] + t) % 4), near_gap) for t in (1, 3))
