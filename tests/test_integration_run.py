@@ -84,6 +84,20 @@ def test_same_command_same_results_and_resume(first_run: Path, tmp_path: Path) -
     assert _stable(third) == _stable(first)
 
 
+def test_z3_layout_backend_gives_the_same_evaluation(first_run: Path, tmp_path: Path) -> None:
+    assert main(["run", "--model", "offline", "--tasks", TASKS, "--generators", "logicenvgen", "--layout-solver",
+                 "z3", "--executor", "inprocess", "--output", str(tmp_path), "--quiet"]) == 0
+    (run_dir,) = [p for p in tmp_path.iterdir() if p.is_dir()]
+    assert run_dir.name != first_run.name
+    z3_run = json.loads((run_dir / "results.json").read_text())
+    assert z3_run["config"]["layout_solver"] == "z3"
+    assert json.loads((first_run / "results.json").read_text())["config"]["layout_solver"] == "cpsat"
+    default = _stable(json.loads((first_run / "results.json").read_text()))
+    assert _stable(z3_run)["per_task"]["logicenvgen"] == default["per_task"]["logicenvgen"]
+    envs = sorted((run_dir / "envs" / "logicenvgen").rglob("*-0*.json"))
+    assert envs and any(p.read_bytes() != (first_run / p.relative_to(run_dir)).read_bytes() for p in envs)
+
+
 def test_compare_and_report(first_run: Path, capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["compare", str(first_run), str(first_run)]) == 0
     assert main(["report", str(first_run)]) == 0

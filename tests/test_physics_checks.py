@@ -226,6 +226,7 @@ _odd = st.one_of(st.floats(allow_nan=True, allow_infinity=True), st.floats(-100,
 
 
 @pytest.mark.filterwarnings("ignore:overflow encountered:RuntimeWarning")  # huge sizes on purpose
+@pytest.mark.filterwarnings("ignore:invalid value encountered:RuntimeWarning")  # shapely on inf-sized shapes
 @settings(max_examples=30, deadline=None)
 @given(data_=st.data())
 def test_check_env_never_raises_on_odd_numbers(data_: st.DataObject) -> None:

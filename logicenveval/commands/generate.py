@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import argparse
 
+from logicenveval.scene.layout import DEFAULT_SOLVER, SOLVERS
+
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--generator", required=True, help="a registered generator, e.g. logicenvgen")
@@ -12,6 +14,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--model-args", default="", help="key=value,...")
     p.add_argument("--tasks-dir", default=None)
     p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--layout-solver", default=DEFAULT_SOLVER, choices=SOLVERS,
+                   help=f"layout backend (default {DEFAULT_SOLVER})")
     p.add_argument("--out", required=True, help="output folder")
     p.add_argument("--cache", default=None, help="SQLite cache of LLM replies")
     p.add_argument("--no-render", action="store_true", help="skip the SVG renders")
@@ -27,7 +31,7 @@ def run(args: argparse.Namespace) -> int:
     summary = generate_to_folder(
         generator=args.generator, task_id=args.task, model=args.model, model_args=args.model_args,
         tasks_dir=args.tasks_dir, seed=args.seed, out=Path(args.out), cache=args.cache,
-        render=not args.no_render,
+        render=not args.no_render, layout_solver=args.layout_solver,
     )
     console = Console()
     for line in summary.lines():

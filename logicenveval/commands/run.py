@@ -6,6 +6,7 @@ import argparse
 import os
 
 from logicenveval.runner.config import DEFAULT_GENERATORS
+from logicenveval.scene.layout import DEFAULT_SOLVER, SOLVERS
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
@@ -18,6 +19,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--tasks-dir", default=None, help="folder of <task_id>/task.json (default: the benchmark)")
     p.add_argument("--limit", type=int, default=None, help="only the first N tasks")
     p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--layout-solver", default=DEFAULT_SOLVER, choices=SOLVERS,
+                   help=f"layout backend of solver-based generators (default {DEFAULT_SOLVER}; docs/scene.md)")
     p.add_argument("--workers", type=int, default=os.cpu_count() or 1)
     p.add_argument("--executor", default="process", choices=["process", "inprocess", "ray"])
     p.add_argument("--output", default="reports", help="parent folder of run folders")
@@ -41,6 +44,7 @@ def run(args: argparse.Namespace) -> int:
         tasks_dir=args.tasks_dir,
         limit=args.limit,
         seed=args.seed,
+        layout_solver=args.layout_solver,
         workers=max(1, args.workers),
         executor=args.executor,
         output=args.output,

@@ -19,6 +19,7 @@ from logicenveval.domain.catalog import Catalog
 from logicenveval.errors import ConfigError
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import TaskBrief
+from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
 
 
 class GenerationFailure(BaseModel):
@@ -48,6 +49,8 @@ class GenerationContext:
     seed: int = 0
     #: folder where the generator may write debugging artefacts (raw replies, renders); optional
     work_dir: Path | None = None
+    #: layout backend for generators that construct scenes with the solver (docs/scene.md)
+    layout_solver: Solver = DEFAULT_SOLVER
     options: dict[str, Any] = field(default_factory=dict)
 
 

@@ -184,7 +184,8 @@ class EnvironmentBuilder:
 
         result = construct_from_drafts(
             brief=self.brief, env_id=env_id, generator=self.generator, rooms=rooms, objects=objects,
-            relations=relations, claimed_trajectory=claim, catalog=self.ctx.catalog, rng=self.ctx.rng)
+            relations=relations, claimed_trajectory=claim, catalog=self.ctx.catalog, rng=self.ctx.rng,
+            solver=self.ctx.layout_solver)
         for entry in result.relaxation_log:
             log.add("layout", str(entry), env_id=env_id)
         return result.env

@@ -14,6 +14,7 @@ from logicenveval.envfiles import save_env
 from logicenveval.generators.base import GenerationContext, GenerationResult, make_generator
 from logicenveval.runner.store import atomic_write_text
 from logicenveval.runner.unit import unit_seed
+from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
 
 
 @dataclass
@@ -40,6 +41,7 @@ def generate_to_folder(
     out: Path,
     cache: str | None = None,
     render: bool = True,
+    layout_solver: Solver = DEFAULT_SOLVER,
 ) -> GenerateSummary:
     """Generate with the same seeding as a run's unit, so results match `run` exactly."""
     from logicenveval.llm.registry import make_model
@@ -50,7 +52,7 @@ def generate_to_folder(
     gen = make_generator(generator)
     ctx = GenerationContext(model=chat, catalog=catalog,
                             rng=np.random.default_rng(unit_seed(seed, generator, task_id)),
-                            seed=seed, work_dir=out)
+                            seed=seed, work_dir=out, layout_solver=layout_solver)
     result = gen.generate(task.brief(), ctx)
     summary = GenerateSummary(out=out, result=result)
     out.mkdir(parents=True, exist_ok=True)

@@ -13,6 +13,8 @@ from pathlib import Path
 
 from pydantic import BaseModel, ConfigDict, Field
 
+from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
+
 DEFAULT_GENERATORS: tuple[str, ...] = ("logicenvgen", "cot", "ifg", "holodeck")
 
 
@@ -25,6 +27,7 @@ class RunConfig(BaseModel):
     tasks_dir: str | None = None
     limit: int | None = Field(default=None, ge=1)
     seed: int = 0
+    layout_solver: Solver = DEFAULT_SOLVER
     workers: int = Field(default=1, ge=1)
     executor: str = "process"
     output: str = "reports"
@@ -42,6 +45,7 @@ class RunConfig(BaseModel):
             "tasks_dir": self.tasks_dir,
             "limit": self.limit,
             "seed": self.seed,
+            "layout_solver": self.layout_solver,
         }
 
     def resolved_run_id(self) -> str:

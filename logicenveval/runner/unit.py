@@ -24,6 +24,7 @@ from logicenveval.metrics.records import UnitRecord
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import POLICY_KINDS
 from logicenveval.runner.store import atomic_write_text
+from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
 
 
 class UnitSpec(BaseModel):
@@ -37,6 +38,7 @@ class UnitSpec(BaseModel):
     model_args: str
     seed: int
     run_dir: str
+    layout_solver: Solver = DEFAULT_SOLVER
     cache: str | None = None
     no_cache: bool = False
 
@@ -83,6 +85,7 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
             rng=np.random.default_rng(unit_seed(spec.seed, spec.generator, spec.task_id)),
             seed=spec.seed,
             work_dir=run_dir / "work" / spec.generator / spec.task_id,
+            layout_solver=spec.layout_solver,
         )
         result = generator.generate(task.brief(), ctx)
     except LogicEnvEvalError as exc:
