@@ -25,6 +25,23 @@ from logicenveval.scene.layout import (
 from logicenveval.scene.relax import Check, Dropped, Status, Tracked, relax
 
 
+class _Guard:
+    """One tracked literal per enrichment box; `guard(ids, c)` asserts `c` for when all of `ids` are kept."""
+
+    def __init__(self, s: z3.Solver, boxes: Sequence[Box | WallBox], ctx: z3.Context, prefix: str) -> None:
+        self.s = s
+        self.lit: dict[str, z3.BoolRef] = {}
+        self.tracked: list[Tracked] = []
+        for k, b in enumerate(boxes):
+            if not b.task:
+                self.lit[b.id] = z3.Bool(f"{prefix}_{k}", ctx)
+                self.tracked.append(Tracked(self.lit[b.id], "object", b.id, False, (b.id,)))
+
+    def __call__(self, ids: Sequence[str], c: z3.BoolRef) -> None:
+        conds = [self.lit[i] for i in ids if i in self.lit]
+        self.s.add(z3.Implies(z3.And(*conds), c) if conds else c)
+
+
 class _Vars:
     def __init__(self, b: Box, tag: str, ctx: z3.Context) -> None:
         self.x = z3.Int(f"x_{tag}", ctx)
@@ -59,16 +76,8 @@ def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: 
     s.set("random_seed", seed)
     s.set("core.minimize", False)
     vs = {b.id: _Vars(b, f"{k}", ctx) for k, b in enumerate(boxes)}
-    lit: dict[str, z3.BoolRef] = {}
-    tracked: list[Tracked] = []
-    for k, b in enumerate(boxes):
-        if not b.task:
-            lit[b.id] = z3.Bool(f"obj_{k}", ctx)
-            tracked.append(Tracked(lit[b.id], "object", b.id, False, (b.id,)))
-
-    def guard(ids: Sequence[str], c: z3.BoolRef) -> None:
-        conds = [lit[i] for i in ids if i in lit]
-        s.add(z3.Implies(z3.And(*conds), c) if conds else c)
+    guard = _Guard(s, boxes, ctx, "obj")
+    tracked = guard.tracked
 
     for b in boxes:
         v = vs[b.id]
@@ -190,16 +199,8 @@ def pack_walls(walls: Sequence[WallSegment], boxes: Sequence[WallBox], *,
     s.set("random_seed", seed)
     w = {b.id: z3.Int(f"w_{k}", ctx) for k, b in enumerate(boxes)}
     t = {b.id: z3.Int(f"t_{k}", ctx) for k, b in enumerate(boxes)}
-    lit: dict[str, z3.BoolRef] = {}
-    tracked: list[Tracked] = []
-    for k, b in enumerate(boxes):
-        if not b.task:
-            lit[b.id] = z3.Bool(f"wobj_{k}", ctx)
-            tracked.append(Tracked(lit[b.id], "object", b.id, False, (b.id,)))
-
-    def guard(ids: Sequence[str], c: z3.BoolRef) -> None:
-        conds = [lit[i] for i in ids if i in lit]
-        s.add(z3.Implies(z3.And(*conds), c) if conds else c)
+    guard = _Guard(s, boxes, ctx, "wobj")
+    tracked = guard.tracked
 
     for b in boxes:
         s.add(w[b.id] >= 0, w[b.id] < len(walls), t[b.id] >= 0)
