@@ -17,6 +17,7 @@ from logicenveval.scene.floorplan import FloorPlan, plan_floor
 from logicenveval.scene.geometry import Rect, edges
 from logicenveval.scene.layout import (
     DEFAULT_SOLVER,
+    FLOOR_RELATIONS,
     WALKWAY,
     Box,
     FloorRel,
@@ -41,7 +42,6 @@ from logicenveval.scene.spec import (
 
 WINDOW_CLEARANCE = 0.3  # metres in front of a window kept free of objects taller than its sill
 CONTAINER_MARGIN = 0.01  # wall thickness of containers, metres
-FLOOR_RELATIONS = {"edge", "center", "near", "far", "center_aligned", "in_front_of", "face_to", "side_of"}
 
 
 @dataclass

@@ -24,6 +24,8 @@ WALKWAY = 0.45  # metres of free floor in front of each task object for the agen
 NEAR_AXIS = 0.7  # per-axis footprint gap: sqrt(2)*0.7 < 1.0 m (DESIGN §6 near)
 FAR = 2.5
 IN_FRONT_GAP = NEAR_AXIS + 0.25  # in_front_of / side_of: gap along one axis only, < 1.0 m
+#: the relation types a backend encodes on a floor (`FloorRel`); others hold by placement or are dropped
+FLOOR_RELATIONS = frozenset({"edge", "center", "near", "far", "center_aligned", "in_front_of", "face_to", "side_of"})
 
 Solver = Literal["z3", "cpsat"]
 SOLVERS: tuple[str, ...] = get_args(Solver)

@@ -21,6 +21,7 @@ from ortools.sat.python import cp_model
 from logicenveval.errors import LogicEnvEvalError
 from logicenveval.scene.layout import (
     FAR,
+    FLOOR_RELATIONS,
     IN_FRONT_GAP,
     NEAR_AXIS,
     Box,
@@ -34,7 +35,6 @@ from logicenveval.scene.layout import (
 from logicenveval.scene.relax import Dropped, Status, Tracked, relax
 
 Lit = Any  # a CP-SAT Boolean literal (IntVar or its negation)
-_RELATIONS = {"edge", "center", "near", "far", "center_aligned", "in_front_of", "face_to", "side_of"}
 
 
 class _Solve:
@@ -66,7 +66,7 @@ class _Solve:
             trial = [c for c in core if c is not t]
             if self._solve(trial, deadline - time.monotonic(), self.PROBE_DET_TIME) == "unsat":
                 core = self._core(trial)
-        return "unsat", [t for t in active if any(t is c for c in core)]
+        return "unsat", core  # in `active` order: every core is filtered from it in order
 
     def _solve(self, assumed: list[Tracked], timeout_s: float, det_time: float | None = None) -> Status:
         self.m.clear_assumptions()
@@ -126,6 +126,23 @@ class _Vars:
             self.iz = m.new_optional_interval_var(self.z, self.wz, self.ez, present, f"iz_{tag}")
 
 
+def _object_literals(m: cp_model.CpModel, boxes: Sequence[Box | WallBox], prefix: str
+                     ) -> tuple[dict[str, Lit], list[Tracked]]:
+    """One tracked literal per enrichment box (task boxes are hard)."""
+    lit: dict[str, Lit] = {}
+    tracked: list[Tracked] = []
+    for k, b in enumerate(boxes):
+        if not b.task:
+            lit[b.id] = m.new_bool_var(f"{prefix}_{k}")
+            tracked.append(Tracked(lit[b.id], "object", b.id, False, (b.id,)))
+    return lit, tracked
+
+
+def _solid(ob: Obstacle) -> bool:
+    """A rectangle of positive area (a fixed interval of zero size would block nothing)."""
+    return ob[2] > ob[0] and ob[3] > ob[1]
+
+
 def _fixed(m: cp_model.CpModel, ob: Obstacle, tag: str) -> tuple[Any, Any]:
     x0, z0, x1, z1 = ob
     return (m.new_fixed_size_interval_var(x0, x1 - x0, f"obx_{tag}"),
@@ -150,12 +167,7 @@ def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: 
     """See `scene.layout.Backend.pack`."""
     W, D = frame
     m = cp_model.CpModel()
-    lit: dict[str, Lit] = {}
-    tracked: list[Tracked] = []
-    for k, b in enumerate(boxes):
-        if not b.task:
-            lit[b.id] = m.new_bool_var(f"obj_{k}")
-            tracked.append(Tracked(lit[b.id], "object", b.id, False, (b.id,)))
+    lit, tracked = _object_literals(m, boxes, "obj")
     vs = {b.id: _Vars(m, b, str(k), frame, free_rotation, lit.get(b.id)) for k, b in enumerate(boxes)}
 
     def guard(ids: Sequence[str]) -> list[Lit]:
@@ -166,8 +178,7 @@ def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: 
     fixed_z: list[Any] = []
     kept: list[Obstacle] = []
     for k, ob in enumerate(obstacles):
-        solid = ob[2] > ob[0] and ob[3] > ob[1] and not any(_meet(ob, o) for o in kept)
-        if solid:
+        if _solid(ob) and not any(_meet(ob, o) for o in kept):
             kept.append(ob)
             ix, iz = _fixed(m, ob, str(k))
             fixed_x.append(ix)
@@ -180,7 +191,7 @@ def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: 
         taller = [b for b in boxes if b.size[1] > min_h]
         if not taller:
             continue
-        if ob[2] > ob[0] and ob[3] > ob[1]:
+        if _solid(ob):
             ix, iz = _fixed(m, ob, f"t{k}")
             m.add_no_overlap_2d([ix] + [vs[b.id].ix for b in taller], [iz] + [vs[b.id].iz for b in taller])
         else:
@@ -192,7 +203,7 @@ def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: 
                 _walkway(m, vs[b.id], b, walkway, frame, str(k),
                          [(vs[o.id].ix, vs[o.id].iz) for o in boxes if o.id != b.id])
     for k, fr in enumerate(rels):
-        if fr.rel.type not in _RELATIONS:
+        if fr.rel.type not in FLOOR_RELATIONS:
             continue
         p = m.new_bool_var(f"rel_{k}")
         tracked.append(Tracked(p, "relation", fr.rel.text(), fr.task, tuple(fr.rel.args)))
@@ -303,22 +314,19 @@ def _encode(m: cp_model.CpModel, fr: FloorRel, vs: dict[str, _Vars], frame: tupl
             m.add(gap >= 0).only_enforce_if(case)
             m.add(gap <= near).only_enforce_if(case)
         _abs_le(m, cross, 1, when)
-    return
+
 
 def pack_walls(walls: Sequence[WallSegment], boxes: Sequence[WallBox], *, seed: int,
                timeout_s: float) -> tuple[dict[str, tuple[int, int]], list[Dropped]]:
     """See `scene.layout.Backend.pack_walls`: one optional interval per (box, wall), one NoOverlap per wall."""
     m = cp_model.CpModel()
-    tracked: list[Tracked] = []
+    lit, tracked = _object_literals(m, boxes, "wobj")
     longest = max((length for length, _ in walls), default=0)
     on: dict[str, list[Lit]] = {}
     start: dict[str, Any] = {}
     per_wall: list[list[Any]] = [[] for _ in walls]
     for i, b in enumerate(boxes):
-        present = None
-        if not b.task:
-            present = m.new_bool_var(f"wobj_{i}")
-            tracked.append(Tracked(present, "object", b.id, False, (b.id,)))
+        present = lit.get(b.id)
         start[b.id] = t = m.new_int_var(0, max(0, longest), f"t_{i}")
         on[b.id] = [m.new_bool_var(f"w{k}_{i}") for k in range(len(walls))]
         m.add_exactly_one(on[b.id])
