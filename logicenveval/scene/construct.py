@@ -221,6 +221,11 @@ class _Builder:
     def _seed(self) -> int:
         return int(self.rng.integers(0, 2**31 - 1))
 
+    def _box(self, oid: str) -> Box:
+        """The layout box of a sized object: its footprint in cells; task objects (and their supports) hard."""
+        size = self.sizes[oid]
+        return Box(oid, size, (cells(size[0], self.g), cells(size[2], self.g)), oid in self.hard)
+
     def _take(self, room: str, dropped: list[Dropped], rels: Mapping[str, RelationRequest]) -> None:
         for d in dropped:
             t = d.tracked
@@ -239,8 +244,7 @@ class _Builder:
         frame = (int(round(rect.w / g)), int(round(rect.d / g)))
         here = [o for o in self.objects.values() if o.room == rq.id]
         floor = [o for o in here if o.support == "floor"]
-        boxes = [Box(o.id, self.sizes[o.id], (cells(self.sizes[o.id][0], g), cells(self.sizes[o.id][2], g)),
-                     o.id in self.hard) for o in floor]
+        boxes = [self._box(o.id) for o in floor]
         squares = self._door_squares(rq.id, plan, rect)
         obstacles = [rect_cells(sq, origin, g) for sq in squares]
         tall = []
@@ -284,8 +288,7 @@ class _Builder:
         tall = [(rect_cells(p.footprint, origin, g), h - p.top - 0.01) for oid, p in self.poses.items()
                 if self.objects[oid].room == room]
         tall += [(rect_cells(sq, origin, g), -1.0) for sq in squares]
-        boxes = [Box(o.id, self.sizes[o.id], (cells(self.sizes[o.id][0], g), cells(self.sizes[o.id][2], g)),
-                     o.id in self.hard) for o in objs]
+        boxes = [self._box(o.id) for o in objs]
         frame = (int(round(rect.w / g)), int(round(rect.d / g)))
         placed, dropped = self.solver.pack(frame, boxes, seed=self._seed(), timeout_s=self.spec.room_timeout_s, tall=tall,
                                grid=g)
@@ -386,9 +389,7 @@ class _Builder:
             m = CONTAINER_MARGIN if mode == "inside" else 0.0
             fw, fd = parent.size[0] - 2 * m, parent.size[2] - 2 * m
             frame = (int(math.floor(fw / self.g + 1e-6)), int(math.floor(fd / self.g + 1e-6)))
-            boxes = [Box(o.id, self.sizes[o.id], (cells(self.sizes[o.id][0], self.g),
-                                                  cells(self.sizes[o.id][2], self.g)), o.id in self.hard)
-                     for o in kids]
+            boxes = [self._box(o.id) for o in kids]
             placed, dropped = self.solver.pack(frame, boxes, seed=self._seed(), timeout_s=self.spec.room_timeout_s,
                                    grid=self.g)
             if not placed:
