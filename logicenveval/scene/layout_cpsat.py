@@ -32,7 +32,7 @@ from logicenveval.scene.layout import (
     WallSegment,
     cells,
 )
-from logicenveval.scene.relax import Dropped, Status, Tracked, relax
+from logicenveval.scene.relax import Dropped, Status, Tracked, object_literals, relax
 
 Lit = Any  # a CP-SAT Boolean literal (IntVar or its negation)
 
@@ -126,18 +126,6 @@ class _Vars:
             self.iz = m.new_optional_interval_var(self.z, self.wz, self.ez, present, f"iz_{tag}")
 
 
-def _object_literals(m: cp_model.CpModel, boxes: Sequence[Box | WallBox], prefix: str
-                     ) -> tuple[dict[str, Lit], list[Tracked]]:
-    """One tracked literal per enrichment box (task boxes are hard)."""
-    lit: dict[str, Lit] = {}
-    tracked: list[Tracked] = []
-    for k, b in enumerate(boxes):
-        if not b.task:
-            lit[b.id] = m.new_bool_var(f"{prefix}_{k}")
-            tracked.append(Tracked(lit[b.id], "object", b.id, False, (b.id,)))
-    return lit, tracked
-
-
 def _solid(ob: Obstacle) -> bool:
     """A rectangle of positive area (a fixed interval of zero size would block nothing)."""
     return ob[2] > ob[0] and ob[3] > ob[1]
@@ -167,7 +155,7 @@ def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: 
     """See `scene.layout.Backend.pack`."""
     W, D = frame
     m = cp_model.CpModel()
-    lit, tracked = _object_literals(m, boxes, "obj")
+    lit, tracked = object_literals(boxes, m.new_bool_var, "obj")
     vs = {b.id: _Vars(m, b, str(k), frame, free_rotation, lit.get(b.id)) for k, b in enumerate(boxes)}
 
     def guard(ids: Sequence[str]) -> list[Lit]:
@@ -320,7 +308,7 @@ def pack_walls(walls: Sequence[WallSegment], boxes: Sequence[WallBox], *, seed: 
                timeout_s: float) -> tuple[dict[str, tuple[int, int]], list[Dropped]]:
     """See `scene.layout.Backend.pack_walls`: one optional interval per (box, wall), one NoOverlap per wall."""
     m = cp_model.CpModel()
-    lit, tracked = _object_literals(m, boxes, "wobj")
+    lit, tracked = object_literals(boxes, m.new_bool_var, "wobj")
     longest = max((length for length, _ in walls), default=0)
     on: dict[str, list[Lit]] = {}
     start: dict[str, Any] = {}

@@ -22,7 +22,7 @@ from logicenveval.scene.layout import (
     WallSegment,
     cells,
 )
-from logicenveval.scene.relax import Check, Dropped, Status, Tracked, relax
+from logicenveval.scene.relax import Check, Dropped, Status, Tracked, object_literals, relax
 
 
 class _Guard:
@@ -30,12 +30,7 @@ class _Guard:
 
     def __init__(self, s: z3.Solver, boxes: Sequence[Box | WallBox], ctx: z3.Context, prefix: str) -> None:
         self.s = s
-        self.lit: dict[str, z3.BoolRef] = {}
-        self.tracked: list[Tracked] = []
-        for k, b in enumerate(boxes):
-            if not b.task:
-                self.lit[b.id] = z3.Bool(f"{prefix}_{k}", ctx)
-                self.tracked.append(Tracked(self.lit[b.id], "object", b.id, False, (b.id,)))
+        self.lit, self.tracked = object_literals(boxes, lambda name: z3.Bool(name, ctx), prefix)
 
     def __call__(self, ids: Sequence[str], c: z3.BoolRef) -> None:
         conds = [self.lit[i] for i in ids if i in self.lit]
@@ -65,11 +60,7 @@ def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: 
          obstacles: Sequence[Obstacle] = (), tall: Sequence[tuple[Obstacle, float]] = (),
          walkway: int = 0, rels: Sequence[FloorRel] = (), grid: float = 0.05,
          free_rotation: bool = True) -> tuple[dict[str, Placed], list[Dropped]]:
-    """Non-overlapping boxes in a `frame` of cells; obstacles in cells; `tall` only for taller boxes.
-
-    Returns placements (corner in cells times `grid`) of the boxes kept and the relaxation drops.
-    Task boxes are hard; if they cannot be placed, no placement is returned for any box.
-    """
+    """See `scene.layout.Backend.pack`."""
     W, D = frame
     ctx = z3.Context()  # a fresh context per solve: results do not depend on earlier solves
     s = z3.Solver(ctx=ctx)
@@ -190,10 +181,7 @@ def _encode(fr: FloorRel, vs: dict[str, _Vars], frame: tuple[int, int], grid: fl
 
 def pack_walls(walls: Sequence[WallSegment], boxes: Sequence[WallBox], *,
                seed: int, timeout_s: float) -> tuple[dict[str, tuple[int, int]], list[Dropped]]:
-    """Wall objects on wall segments: per wall its length and blocked stretches (lo, hi, bottom, top).
-
-    A stretch blocks a box whose vertical extent meets [bottom, top]. Returns (wall index, start cell).
-    """
+    """See `scene.layout.Backend.pack_walls`."""
     ctx = z3.Context()
     s = z3.Solver(ctx=ctx)
     s.set("random_seed", seed)

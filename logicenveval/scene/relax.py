@@ -9,9 +9,9 @@ tracked items of its core.
 from __future__ import annotations
 
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
-from typing import Any, Literal
+from typing import Any, Literal, Protocol
 
 Status = Literal["sat", "unsat", "unknown"]
 
@@ -35,6 +35,26 @@ class Tracked:
 class Dropped:
     tracked: Tracked
     reason: str
+
+
+class _Keyed(Protocol):
+    @property
+    def id(self) -> str: ...
+
+    @property
+    def task(self) -> bool: ...
+
+
+def object_literals(boxes: Sequence[_Keyed], new_lit: Callable[[str], Any], prefix: str
+                    ) -> tuple[dict[str, Any], list[Tracked]]:
+    """One tracked literal `new_lit(f"{prefix}_{k}")` per enrichment box k; task boxes stay hard."""
+    lit: dict[str, Any] = {}
+    tracked: list[Tracked] = []
+    for k, b in enumerate(boxes):
+        if not b.task:
+            lit[b.id] = new_lit(f"{prefix}_{k}")
+            tracked.append(Tracked(lit[b.id], "object", b.id, False, (b.id,)))
+    return lit, tracked
 
 
 Check = Callable[[list[Tracked], float], tuple[Status, list[Tracked]]]
