@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from logicenveval.errors import ConditionSyntaxError
+from logicenveval.limits import limit, raise_hint
 
 #: predicate name -> arity (v1 vocabulary, fixed by DESIGN.md §3)
 PREDICATES: dict[str, int] = {
@@ -116,6 +117,8 @@ class _Parser:
         self.source = source
         self.toks = _tokenize(text, source)
         self.i = 0
+        self.depth = 0
+        self.max_depth = limit("max_condition_depth")
 
     def _peek(self) -> _Tok:
         return self.toks[self.i]
@@ -126,9 +129,16 @@ class _Parser:
         return tok
 
     def _fail(self, tok: _Tok, message: str, hint: str) -> ConditionSyntaxError:
+        shown = self.text if len(self.text) <= 120 else self.text[:117] + "..."
         return ConditionSyntaxError(
-            f"{message} in condition {self.text!r}", file=self.source, column=tok.col, hint=hint
+            f"{message} in condition {shown!r}", file=self.source, column=tok.col, hint=hint
         )
+
+    def _nest(self, tok: _Tok) -> None:
+        self.depth += 1
+        if self.depth > self.max_depth:
+            raise self._fail(tok, f"nesting deeper than {self.max_depth} levels",
+                             "simplify the condition (" + raise_hint("max_condition_depth") + ")")
 
     def parse(self) -> Cond:
         cond = self._expr()
@@ -154,16 +164,21 @@ class _Parser:
     def _factor(self) -> Cond:
         tok = self._next()
         if tok.kind == "punct" and tok.text == "(":
+            self._nest(tok)
             inner = self._expr()
             close = self._next()
             if close.text != ")":
                 raise self._fail(close, "missing ')'", "balance the parentheses")
+            self.depth -= 1
             return inner
         if tok.kind != "word":
             what = "end of condition" if tok.kind == "end" else repr(tok.text)
             raise self._fail(tok, f"expected a predicate, found {what}", "e.g. on(toy, floor)")
         if tok.text == "not":
-            return Not(self._factor())
+            self._nest(tok)
+            negated = Not(self._factor())
+            self.depth -= 1
+            return negated
         if tok.text == "true":
             return TRUE
         if tok.text == "false":
