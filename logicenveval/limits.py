@@ -27,6 +27,7 @@ DEFAULTS: dict[str, tuple[int, str]] = {
     "max_xml_attribute_chars": (1_000, "characters of one XML attribute value"),
     "max_subtree_nodes": (100_000, "nodes of a BT after expanding its SubTrees"),
     "max_env_bytes": (20_000_000, "size of an EnvSpec file"),
+    "max_run_file_bytes": (1_000_000_000, "size of a run's results.json or samples.jsonl"),
     "max_env_objects": (2_000, "objects of one EnvSpec"),
     "max_reply_bytes": (2_000_000, "bytes of one LLM HTTP reply"),
     "max_situations": (100_000, "situations (trajectories) of one task"),

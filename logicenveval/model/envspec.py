@@ -8,17 +8,14 @@ Unknown fields are kept (generators may add fields) and ignored by the checker.
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
 ENV_SCHEMA = "logicenveval.env/1"
 
-#: a coordinate or extent in metres; far-off values overflow the geometry libraries
-MAX_COORD = 100_000.0
-Coord = Annotated[float, Field(ge=-MAX_COORD, le=MAX_COORD)]
-Vec2 = tuple[Coord, Coord]
-Vec3 = tuple[Coord, Coord, Coord]
+Vec2 = tuple[float, float]
+Vec3 = tuple[float, float, float]
 
 RELATION_TYPES: dict[str, int] = {
     "edge": 1,
@@ -35,8 +32,7 @@ RELATION_TYPES: dict[str, int] = {
     "face_to": 2,
 }
 
-#: NaN/inf coordinates are refused here: geometry libraries crash or loop on them
-_Cfg = ConfigDict(frozen=True, extra="allow", populate_by_name=True, allow_inf_nan=False)
+_Cfg = ConfigDict(frozen=True, extra="allow", populate_by_name=True)
 
 
 class Room(BaseModel):

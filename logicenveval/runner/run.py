@@ -11,7 +11,7 @@ from rich.console import Console
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
 
 from logicenveval.benchmark import load_tasks, task_ids
-from logicenveval.errors import ConfigError
+from logicenveval.errors import ConfigError, RunFailedError
 from logicenveval.generators.base import registered
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.runner.config import RunConfig
@@ -27,9 +27,16 @@ class RunOutcome:
     results: dict[str, Any]
     computed: int  # units computed in this invocation
     reused: int  # units found committed from an earlier, interrupted invocation
+    records: tuple[UnitRecord, ...] = ()  # every unit of the run, in (generator, task) order
 
 
 def _check(config: RunConfig) -> list[str]:
+    if not config.generators:
+        raise ConfigError("no generator selected", field="--generators",
+                          hint="name at least one of " + ", ".join(registered()))
+    if len(set(config.tasks)) != len(config.tasks):
+        dup = sorted({t for t in config.tasks if config.tasks.count(t) > 1})
+        raise ConfigError(f"task(s) listed twice: {dup}", field="--tasks", hint="list each task once")
     known = registered()
     for g in config.generators:
         if g not in known:
@@ -59,13 +66,28 @@ def _preflight(config: RunConfig, run_dir: Path) -> dict[str, Any]:
     return {"model": getattr(model, "name", config.model)}
 
 
+def _prepare_dir(run_dir: Path) -> None:
+    """Refuse an output location that cannot hold a run before any work is done."""
+    try:
+        run_dir.mkdir(parents=True, exist_ok=True)
+        probe = run_dir / ".write-probe.tmp"
+        probe.write_text("", encoding="utf-8")
+        probe.unlink()
+    except OSError as exc:
+        raise ConfigError(f"cannot write the run folder: {exc.strerror or exc}", file=str(run_dir),
+                          field="--output",
+                          hint="choose a writable folder (not a file) with --output") from None
+
+
 def run(config: RunConfig, *, console: Console | None = None, show_progress: bool = True) -> RunOutcome:
     ids = _check(config)
     tasks = load_tasks(config.tasks_dir, ids)
     run_dir = config.run_dir()
     _preflight(config, run_dir)
+    _prepare_dir(run_dir)
     store = RunStore(run_dir)
     store.bind_config(config.identity())
+    store.remove_stale_temp_files()
     specs = [
         UnitSpec(generator=g, task_id=t, tasks_dir=config.tasks_dir, model=config.model,
                  model_args=config.model_args, seed=config.seed, run_dir=str(run_dir),
@@ -76,8 +98,8 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
     pending: list[UnitSpec] = []
     for spec in specs:
         stored = store.load(spec.generator, spec.task_id)
-        if stored is None:
-            pending.append(spec)
+        if stored is None or stored.error_kind == "infrastructure":
+            pending.append(spec)  # never computed, corrupt, or failed for a reason outside it
         else:
             records[(spec.generator, spec.task_id)] = stored
     reused = len(records)
@@ -93,14 +115,23 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
                                  completed=sum(1 for (gg, _) in records if gg == g))
             for g in config.generators
         }
+        streak = 0
         for spec, record in executor.map_unordered(run_unit, pending):
             store.save(record)
             records[(spec.generator, spec.task_id)] = record
             progress.advance(bars[spec.generator])
+            streak = streak + 1 if record.error_kind == "infrastructure" else 0
+            if config.max_infra_failures and streak >= config.max_infra_failures:
+                raise RunFailedError(
+                    f"stopped after {streak} consecutive infrastructure failures; last: "
+                    f"{record.error}", file=str(run_dir),
+                    hint="fix the endpoint or cache, then re-run the same command: finished units "
+                    "are kept and the failed ones are recomputed (--max-infra-failures 0 never stops)")
     ordered = [records[(s.generator, s.task_id)] for s in specs]
     results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start)
     write_outputs(run_dir, results, ordered)
     from logicenveval.reporting.leaderboard import write_leaderboards
 
     write_leaderboards(run_dir, results)
-    return RunOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused)
+    return RunOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused,
+                      records=tuple(ordered))

@@ -8,9 +8,11 @@ from __future__ import annotations
 
 import hashlib
 import json
+import sqlite3
 import time
 import traceback
 from pathlib import Path
+from typing import Literal
 
 import numpy as np
 from pydantic import BaseModel, ConfigDict
@@ -18,11 +20,12 @@ from pydantic import BaseModel, ConfigDict
 from logicenveval.benchmark import load_task, policy_path
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.envfiles import env_to_json
-from logicenveval.errors import LogicEnvEvalError
+from logicenveval.errors import CacheMissError, LogicEnvEvalError, ModelConnectionError
 from logicenveval.generators.base import GenerationContext, make_generator
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import POLICY_KINDS
+from logicenveval.redact import redact
 from logicenveval.runner.store import atomic_write_text
 from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
 
@@ -88,14 +91,9 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
             layout_solver=spec.layout_solver,
         )
         result = generator.generate(task.brief(), ctx)
-    except LogicEnvEvalError as exc:
-        return UnitRecord(generator=spec.generator, task_id=spec.task_id,
-                          error=f"{type(exc).__name__}: {exc}",
-                          gen_seconds=time.perf_counter() - start, llm=_stats(model))
-    except Exception as exc:  # a generator bug must not kill the run; it is reported
-        tb = traceback.format_exception_only(type(exc), exc)[-1].strip()
-        return UnitRecord(generator=spec.generator, task_id=spec.task_id,
-                          error=f"internal error: {tb}", gen_seconds=time.perf_counter() - start,
+    except Exception as exc:  # a failing unit must not kill the run; it is recorded
+        return UnitRecord(generator=spec.generator, task_id=spec.task_id, error=_reason(exc),
+                          error_kind=failure_kind(exc), gen_seconds=time.perf_counter() - start,
                           llm=_stats(model))
     gen_seconds = time.perf_counter() - start
     env_dir = run_dir / "envs" / spec.generator / spec.task_id
@@ -108,6 +106,22 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
                           json.dumps(result.artifacts, indent=2, sort_keys=True, default=str) + "\n")
     return UnitRecord(generator=spec.generator, task_id=spec.task_id, samples=samples,
                       failures=list(result.failures), gen_seconds=gen_seconds, llm=_stats(model))
+
+
+def failure_kind(exc: BaseException) -> Literal["infrastructure", "generation", "internal"]:
+    """Infrastructure failures (endpoint, cache, disk) are not the generator's result: the next
+    run recomputes them instead of reusing them."""
+    if isinstance(exc, ModelConnectionError | CacheMissError | OSError | sqlite3.Error | MemoryError):
+        return "infrastructure"
+    return "generation" if isinstance(exc, LogicEnvEvalError) else "internal"
+
+
+def _reason(exc: BaseException) -> str:
+    if isinstance(exc, LogicEnvEvalError):
+        text = f"{type(exc).__name__}: {exc}"
+    else:
+        text = "internal error: " + traceback.format_exception_only(type(exc), exc)[-1].strip()
+    return redact(text if len(text) <= 2000 else text[:1997] + "...")
 
 
 def _stats(model: object) -> dict[str, float]:
