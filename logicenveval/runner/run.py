@@ -10,10 +10,11 @@ from typing import Any
 from rich.console import Console
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
 
-from logicenveval.benchmark import load_tasks, task_ids
+from logicenveval.benchmark import load_tasks, policy_path, task_ids
 from logicenveval.errors import ConfigError, RunFailedError
 from logicenveval.generators.base import registered
 from logicenveval.metrics.records import UnitRecord
+from logicenveval.model.task import POLICY_KINDS
 from logicenveval.runner.config import RunConfig
 from logicenveval.runner.executors import make_executor
 from logicenveval.runner.results import build_results, write_outputs
@@ -82,6 +83,9 @@ def _prepare_dir(run_dir: Path) -> None:
 def run(config: RunConfig, *, console: Console | None = None, show_progress: bool = True) -> RunOutcome:
     ids = _check(config)
     tasks = load_tasks(config.tasks_dir, ids)
+    for task in tasks:  # policy paths are checked (confined to the task folder) before any unit
+        for kind in POLICY_KINDS:
+            policy_path(task, kind, config.tasks_dir)
     run_dir = config.run_dir()
     _preflight(config, run_dir)
     _prepare_dir(run_dir)

@@ -12,7 +12,7 @@ import sqlite3
 import time
 import traceback
 from pathlib import Path
-from typing import Literal
+from typing import Any, Literal
 
 import numpy as np
 from pydantic import BaseModel, ConfigDict
@@ -22,6 +22,7 @@ from logicenveval.domain.catalog import load_catalog
 from logicenveval.envfiles import env_to_json
 from logicenveval.errors import CacheMissError, LogicEnvEvalError, ModelConnectionError
 from logicenveval.generators.base import GenerationContext, make_generator
+from logicenveval.llm.base import ChatModel, ChatRequest
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import POLICY_KINDS
@@ -77,10 +78,10 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     policies = {k: load_policy(policy_path(task, k, spec.tasks_dir)) for k in POLICY_KINDS}
     run_dir = Path(spec.run_dir)
     start = time.perf_counter()
-    model = None
+    model: _Watched | None = None
     try:
-        model = make_model(spec.model, spec.model_args, cache_path=spec.cache,
-                           no_cache=spec.no_cache, run_dir=run_dir)
+        model = _Watched(make_model(spec.model, spec.model_args, cache_path=spec.cache,
+                                    no_cache=spec.no_cache, run_dir=run_dir))
         generator = make_generator(spec.generator)
         ctx = GenerationContext(
             model=model,
@@ -96,6 +97,10 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
                           error_kind=failure_kind(exc), gen_seconds=time.perf_counter() - start,
                           llm=_stats(model))
     gen_seconds = time.perf_counter() - start
+    if model.infra_error is not None:  # the generator absorbed it, but its output is incomplete
+        return UnitRecord(generator=spec.generator, task_id=spec.task_id,
+                          error="infrastructure failure during generation: " + model.infra_error,
+                          error_kind="infrastructure", gen_seconds=gen_seconds, llm=_stats(model))
     env_dir = run_dir / "envs" / spec.generator / spec.task_id
     samples = []
     for env in _unique_ids(result.envs):
@@ -106,6 +111,27 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
                           json.dumps(result.artifacts, indent=2, sort_keys=True, default=str) + "\n")
     return UnitRecord(generator=spec.generator, task_id=spec.task_id, samples=samples,
                       failures=list(result.failures), gen_seconds=gen_seconds, llm=_stats(model))
+
+
+class _Watched:
+    """A ChatModel proxy that remembers an infrastructure failure even when the generator
+    catches it and carries on: such a unit is incomplete and must be recomputed next run."""
+
+    def __init__(self, inner: ChatModel) -> None:
+        self._inner = inner
+        self.name = inner.name
+        self.infra_error: str | None = None
+
+    def complete(self, request: ChatRequest) -> str:
+        try:
+            return self._inner.complete(request)
+        except Exception as exc:
+            if self.infra_error is None and failure_kind(exc) == "infrastructure":
+                self.infra_error = _reason(exc)
+            raise
+
+    def __getattr__(self, attr: str) -> Any:
+        return getattr(self._inner, attr)
 
 
 def failure_kind(exc: BaseException) -> Literal["infrastructure", "generation", "internal"]:
