@@ -117,3 +117,46 @@ def test_run_stops_after_consecutive_infrastructure_failures(tmp_path: Path) -> 
         assert server.posts < len(TASKS)  # queued units were dropped, not run
     units = list(tmp_path.rglob("units/*/*.json"))
     assert 3 <= len(units) < len(TASKS)
+
+
+def _children(pid: int) -> set[int]:
+    out = set()
+    for status in Path("/proc").glob("[0-9]*/status"):
+        try:
+            fields = dict(line.split(":\t", 1) for line in status.read_text().splitlines() if ":\t" in line)
+        except OSError:
+            continue
+        if fields.get("PPid", "").strip() == str(pid):
+            out.add(int(status.parent.name))
+    return out
+
+
+@pytest.mark.skipif(not Path("/proc/self/status").exists(), reason="needs /proc (Linux)")
+def test_workers_die_with_a_killed_run(tmp_path: Path) -> None:
+    """SIGKILL of `run` leaves no orphaned pool worker behind (issue 20, item 13)."""
+    import signal
+    import time
+
+    proc = subprocess.Popen([sys.executable, "-m", "logicenveval", "run", "--generators",
+                             "logicenvgen", "--tasks", ",".join(TASKS[:6]), "--workers", "2",
+                             "--output", str(tmp_path), "--quiet"],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    workers: set[int] = set()
+    for _ in range(600):  # until both workers have started (bounded: 60 s)
+        workers = {c for c in _children(proc.pid)
+                   if b"multiprocessing" in Path(f"/proc/{c}/cmdline").read_bytes()}
+        if len(workers) >= 2:
+            break
+        time.sleep(0.1)
+    assert len(workers) >= 2
+    time.sleep(1.0)  # let the workers run their initializer
+    proc.send_signal(signal.SIGKILL)
+    proc.wait()
+    for _ in range(50):
+        alive = {w for w in workers if Path(f"/proc/{w}").exists()
+                 and "zombie" not in Path(f"/proc/{w}/status").read_text()}
+        if not alive:
+            break
+        time.sleep(0.1)
+    assert not alive
+    assert not list(tmp_path.rglob("*.tmp"))
