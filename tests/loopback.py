@@ -21,7 +21,8 @@ def messages_key(messages: list[dict[str, Any]]) -> str:
 
 class Loopback:
     """`modes` is cycled per POST: ok, fail (HTTP 500 echoing the request headers), hang,
-    trickle (one byte per `trickle_s`), echo (a good reply followed by the request headers)."""
+    trickle (one byte per `trickle_s`), echo (a good reply followed by the request headers), huge
+    (a 3 MB reply)."""
 
     def __init__(self, *, replies: dict[str, str] | None = None, modes: list[str] | None = None,
                  get_status: int = 200, echo: bool = False, hang_s: float = 6.0,
@@ -85,6 +86,8 @@ class Loopback:
                                 break
                             self.wfile.write(b" ")
                             self.wfile.flush()
+                    elif mode == "huge":
+                        self._send(200, b'{"choices": [{"message": {"content": "' + b"x" * 3_000_000 + b'"}}]}')
                     elif reply is None:
                         self._send(404, b'{"error": "no recorded reply for these messages"}')
                     else:

@@ -87,15 +87,21 @@ def test_units_without_config_are_refused(tmp_path: Path, capsys: pytest.Capture
 # ----- 2. crashes in geometry libraries ----------------------------------------------------
 
 @pytest.mark.parametrize("fixture", ["one_room", "three_rooms"])
-def test_nan_door_segment_is_a_finding_not_a_segfault(tmp_path: Path, fixture: str) -> None:
+@pytest.mark.parametrize("part,code", [("doors", "missing_geometry"), ("rooms", "invalid_polygon")])
+def test_nan_geometry_is_a_finding_not_a_crash(tmp_path: Path, fixture: str, part: str, code: str) -> None:
+    """All-NaN door segments segfaulted shapely (exit 139); NaN room polygons raised GEOSException."""
     data = json.loads((ENVS / f"{fixture}.json").read_text())
-    for door in data["doors"]:
-        door["segment"] = [[float("nan"), float("nan")], [float("nan"), float("nan")]]
+    nan = float("nan")
+    for item in data[part]:
+        if part == "doors":
+            item["segment"] = [[nan, nan], [nan, nan]]
+        else:
+            item["polygon"] = [[nan, nan]] * len(item["polygon"])
     path = tmp_path / "nan.json"
     path.write_text(json.dumps(data))
     proc = sub("check-env", str(path), "--render", str(tmp_path / "r.svg"))
     assert proc.returncode == 1  # a failed check, not -11
-    assert "missing_geometry" in proc.stdout
+    assert code in proc.stdout
     assert (tmp_path / "r.svg").exists()
 
 
@@ -440,7 +446,31 @@ def test_report_on_truncated_samples(tmp_path: Path, capsys: pytest.CaptureFixtu
     assert code == 0 and samples.read_text() == text
 
 
-# ----- 7, 9. time bounds and Retry-After: see tests/test_fault_injection.py --------------------
+# ----- 7, 9, 10. time bounds, Retry-After, reply size (the run-level faults: test_fault_injection.py)
+
+def test_trickling_and_huge_replies_are_bounded(tmp_path: Path) -> None:
+    from loopback import Loopback
+
+    from logicenveval.errors import ModelConnectionError
+    from logicenveval.llm.ask import ask
+    from logicenveval.llm.registry import make_model
+    from logicenveval.llm.replies import DecomposeReply
+
+    payload = {"task": {"id": "t", "description": "Tidy.", "rooms": ["living_room"],
+                        "roles": {"toy": {"category": "toy", "attributes": {}}}}}
+    with Loopback(modes=["trickle", "huge"], trickle_s=0.2) as server:
+        model = make_model("openai:m", f"base_url={server.url},timeout=1,max_retries=0", no_cache=True)
+        with pytest.raises(ModelConnectionError, match="no complete reply within 1s"):
+            ask(model, "decompose_task", payload, DecomposeReply)  # 1 byte / 0.2 s, for 60 s
+        with pytest.raises(ModelConnectionError, match="larger than 2000000 bytes"):
+            ask(model, "decompose_task", payload, DecomposeReply)
+        model = make_model("openai:m", f"base_url={server.url},timeout=30,max_retries=5,"
+                           "unit_timeout=1,backoff_base=0", no_cache=True)
+        server.set_modes(["trickle"])
+        with pytest.raises(ModelConnectionError, match="time budget ran out"):
+            ask(model, "decompose_task", payload, DecomposeReply)  # retries stop at the unit budget
+        assert server.posts <= 4
+
 
 def test_retry_after_that_is_not_a_number_or_date() -> None:
     import httpx
