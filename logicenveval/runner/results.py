@@ -67,7 +67,8 @@ def build_results(
         results[gen] = aggregate(metrics).model_dump(mode="json")
         per_task[gen] = {u.task_id: m.model_dump(mode="json") for u, m in zip(units, metrics, strict=True)}
         failures[gen] = [
-            {"task": u.task_id, "stage": "unit", "message": u.error} for u in units if u.error
+            {"task": u.task_id, "stage": "unit", "message": u.error, "kind": u.error_kind}
+            for u in units if u.error
         ] + [
             {"task": u.task_id, **f.model_dump(mode="json")} for u in units for f in u.failures
         ]

@@ -87,8 +87,8 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
         for kind in POLICY_KINDS:
             policy_path(task, kind, config.tasks_dir)
     run_dir = config.run_dir()
-    _preflight(config, run_dir)
     _prepare_dir(run_dir)
+    _preflight(config, run_dir)
     store = RunStore(run_dir)
     store.bind_config(config.identity())
     store.remove_stale_temp_files()
