@@ -111,14 +111,27 @@ def _tokenize(text: str, source: str | None) -> list[_Tok]:
     return toks
 
 
+def _check_nesting(text: str, source: str | None, max_depth: int) -> None:
+    depth = 0
+    for col, ch in enumerate(text, 1):
+        depth += (ch == "(") - (ch == ")")
+        if depth > max_depth:
+            shown = text if len(text) <= 120 else text[:117] + "..."
+            raise ConditionSyntaxError(
+                f"nesting deeper than {max_depth} levels in condition {shown!r}", file=source,
+                column=col, hint="simplify the condition (" + raise_hint("max_condition_depth") + ")")
+
+
 class _Parser:
     def __init__(self, text: str, source: str | None) -> None:
         self.text = text
         self.source = source
-        self.toks = _tokenize(text, source)
-        self.i = 0
         self.depth = 0
         self.max_depth = limit("max_condition_depth")
+        if text.count("(") > self.max_depth:  # refuse absurd nesting before tokenising it all
+            _check_nesting(text, source, self.max_depth)
+        self.toks = _tokenize(text, source)
+        self.i = 0
 
     def _peek(self) -> _Tok:
         return self.toks[self.i]
