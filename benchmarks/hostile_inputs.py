@@ -8,6 +8,7 @@ Last line: `worst_refusal_ms=<float> baseline_ms=<float> ratio=<float>`.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import statistics
 import tempfile
@@ -33,10 +34,8 @@ def _ms(fn: Callable[[], object], repeat: int = 5) -> float:
     times = []
     for _ in range(repeat):
         t0 = time.perf_counter()
-        try:
+        with contextlib.suppress(LogicEnvEvalError):
             fn()
-        except LogicEnvEvalError:
-            pass
         times.append((time.perf_counter() - t0) * 1000)
     return statistics.median(times)
 
