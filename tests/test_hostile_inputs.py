@@ -548,6 +548,9 @@ def test_too_many_situations(tmp_path: Path, capsys: pytest.CaptureFixture[str])
     (tasks / TASK / "task.json").write_text(json.dumps(data))
     code, out, _ = cli(capsys, "tasks", "validate", "--tasks-dir", str(tasks))
     assert code == 1 and "4194304 situations" in out and "LOGICENVEVAL_MAX_SITUATIONS" in out
+    code, _, err = cli(capsys, "run", "--tasks-dir", str(tasks), "--generators", "cot",
+                       "--executor", "inprocess", "--output", str(tmp_path / "o"), "--quiet")
+    assert code == 2 and "4194304 situations" in err
 
 
 # ----- 11. paths confined to their folders --------------------------------------------------

@@ -11,6 +11,7 @@ from rich.console import Console
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
 
 from logicenveval.benchmark import load_tasks, policy_path, task_ids
+from logicenveval.benchmark_validation import situation_count
 from logicenveval.errors import ConfigError, RunFailedError
 from logicenveval.generators.base import registered
 from logicenveval.metrics.records import UnitRecord
@@ -83,9 +84,10 @@ def _prepare_dir(run_dir: Path) -> None:
 def run(config: RunConfig, *, console: Console | None = None, show_progress: bool = True) -> RunOutcome:
     ids = _check(config)
     tasks = load_tasks(config.tasks_dir, ids)
-    for task in tasks:  # policy paths are checked (confined to the task folder) before any unit
+    for task in tasks:  # before any unit: policy paths confined, situation count bounded
         for kind in POLICY_KINDS:
             policy_path(task, kind, config.tasks_dir)
+        situation_count(task)
     run_dir = config.run_dir()
     _prepare_dir(run_dir)
     _preflight(config, run_dir)
