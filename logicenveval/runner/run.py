@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -122,17 +123,20 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
             for g in config.generators
         }
         streak = 0
-        for spec, record in executor.map_unordered(run_unit, pending):
-            store.save(record)
-            records[(spec.generator, spec.task_id)] = record
-            progress.advance(bars[spec.generator])
-            streak = streak + 1 if record.error_kind == "infrastructure" else 0
-            if config.max_infra_failures and streak >= config.max_infra_failures:
-                raise RunFailedError(
-                    f"stopped after {streak} consecutive infrastructure failures; last: "
-                    f"{record.error}", file=str(run_dir),
-                    hint="fix the endpoint or cache, then re-run the same command: finished units "
-                    "are kept and the failed ones are recomputed (--max-infra-failures 0 never stops)")
+        # closing(): stopping early shuts the pool down at once and drops the queued units
+        with contextlib.closing(executor.map_unordered(run_unit, pending)) as finished:  # type: ignore[type-var]  # generators have close()
+            for spec, record in finished:
+                store.save(record)
+                records[(spec.generator, spec.task_id)] = record
+                progress.advance(bars[spec.generator])
+                streak = streak + 1 if record.error_kind == "infrastructure" else 0
+                if config.max_infra_failures and streak >= config.max_infra_failures:
+                    raise RunFailedError(
+                        f"stopped after {streak} consecutive infrastructure failures; last: "
+                        f"{record.error}", file=str(run_dir),
+                        hint="fix the endpoint or cache, then re-run the same command: finished "
+                        "units are kept and the failed ones are recomputed "
+                        "(--max-infra-failures 0 never stops)")
     ordered = [records[(s.generator, s.task_id)] for s in specs]
     results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start)
     write_outputs(run_dir, results, ordered)
