@@ -256,6 +256,10 @@ def _load_policies(task: Task, folder: Path, add: _Add) -> dict[str, object]:
         if rel is None:
             add("task.json", "policies", f"no {kind!r} policy declared")
             continue
+        if not (folder / rel).resolve().is_relative_to(folder.resolve()):
+            add("task.json", f"policies.{kind}", f"policy {rel!r} is outside the task folder "
+                "(fix: policies are files inside the task's own folder)")
+            continue
         try:
             loaded[kind] = load_policy(folder / rel, roles=task.roles, rooms=task.rooms)
         except LogicEnvEvalError as exc:

@@ -574,6 +574,21 @@ def test_policy_outside_the_task_folder(tmp_path: Path, capsys: pytest.CaptureFi
                        "--executor", "inprocess", "--output", str(tmp_path / "o"), "--quiet")
     assert code == 2 and "outside the task folder" in err and "policies.correct" in err
     assert "root:" not in err and not list(tmp_path.rglob("units"))
+    code, out, _ = cli(capsys, "tasks", "validate", "--tasks-dir", str(tasks), "--no-simulate")
+    assert code == 1 and "outside the task folder" in out and "root:" not in out
+
+
+def test_include_outside_the_policy_folder(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    tasks = copy_task(tmp_path)
+    (tmp_path / "other.xml").write_text('<root BTCPP_format="4"><BehaviorTree ID="X">'
+                                        "<AlwaysSuccess/></BehaviorTree></root>")
+    policy = tasks / TASK / "policies" / "correct.xml"
+    for target in ("/etc/passwd", "../../../other.xml"):
+        policy.write_text(f'<root BTCPP_format="4"><include path="{target}"/><BehaviorTree ID="M">'
+                          "<AlwaysSuccess/></BehaviorTree></root>")
+        code, _, err = cli(capsys, "simulate", "--task", TASK, "--policy", str(policy), "--env",
+                           str(ENVS / "one_room.json"), "--tasks-dir", str(tasks))
+        assert code == 2 and "outside the policy's folder" in err and "root:" not in err
 
 
 # ----- 12. compare over different tasks ----------------------------------------------------

@@ -129,6 +129,8 @@ class _Reader:
         self.source = source
         self.roles = set(roles) if roles is not None else None
         self.rooms = set(rooms) if rooms is not None else None
+        #: the main policy file's folder: includes may not leave it
+        self.top: Path | None = None
 
     def fail(self, elem: Element, message: str, hint: str,
              cls: type[PolicyFormatError] = PolicyFormatError) -> PolicyFormatError:
@@ -307,10 +309,15 @@ class _Reader:
         target = (base / rel).resolve()
         if str(target) in seen:
             raise self.fail(elem, f"include cycle through {target}", "remove the circular include")
+        top = self.top or base.resolve()
+        if not target.is_relative_to(top):  # untrusted policies must not read files elsewhere
+            raise self.fail(elem, f"include {rel!r} is outside the policy's folder {top}",
+                            "keep included files next to (or below) the main policy file")
         if not target.is_file():
             raise self.fail(elem, f"included file {rel!r} not found (looked at {target})",
                             "paths are relative to the including file")
         sub = _Reader(str(target), self.roles, self.rooms)
+        sub.top = top
         text = read_text(target, what="included BT XML file", error=PolicyFormatError,
                          max_bytes="max_xml_bytes", hint="paths are relative to the including file")
         sub.document(_parse_xml(text, str(target)), target,
@@ -339,6 +346,7 @@ def policy_from_xml(text: str, source: str = "<string>", *, roles: Iterable[str]
                     rooms: Iterable[str] | None = None, path: Path | None = None) -> Policy:
     """Parse BT.CPP v4 XML; `roles`/`rooms` (when given) restrict the names ports may use."""
     reader = _Reader(source, roles, rooms)
+    reader.top = path.resolve().parent if path is not None else None
     root = _parse_xml(text, source)
     trees: dict[str, tuple[PolicyNode, int]] = {}
     main = reader.document(root, path, {str(path.resolve())} if path else set(), trees)
