@@ -414,7 +414,7 @@ def test_render_into_read_only_or_missing_place(tmp_path: Path, capsys: pytest.C
     blocker.write_text("")
     code, _, err = cli(capsys, "check-env", str(ENVS / "one_room.json"), "--render",
                        str(blocker / "sub" / "r.svg"))
-    assert code == 1 and "blocker" in err
+    assert code == 2 and "blocker" in err and "--render" in err
 
 
 @pytest.mark.parametrize("content,needle", [
