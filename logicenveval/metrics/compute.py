@@ -7,7 +7,8 @@ Decisions where DESIGN.md is silent (docs/logic.md):
   counts as a failing environment in the PhyPR and SceVR denominators, so failing never pays;
 - ST averages, over the BTs that were simulated, the per-BT sum of simulation ms over the task's
   environments; `st_ticks` is the same figure in simulator ticks, which machine load cannot move;
-- PhyPR holds the paper's three dimensions only; the extra checks are `plausibility`.
+- PhyPR holds the paper's three dimensions only; the extra checks are `plausibility`;
+- JI compares with the minimum cover closest to the realised set (`logic.reference`).
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ import pandas as pd
 from pydantic import BaseModel, ConfigDict, Field
 
 from logicenveval.errors import MetricsError
-from logicenveval.logic.reference import jaccard, reference_set
+from logicenveval.logic.reference import closest_reference
 from logicenveval.metrics.records import EnvSample
 from logicenveval.model.task import FAULTY_KINDS, POLICY_KINDS, Task
 from logicenveval.model.tree import all_path_keys, atomic_conditions
@@ -51,6 +52,8 @@ class TaskMetrics(BaseModel):
     extended_codes: dict[str, int] = Field(default_factory=dict)
     covered_paths: list[str] = Field(default_factory=list)
     realised_trajectories: list[str] = Field(default_factory=list)
+    #: the minimum cover JI compares with: the one closest to `realised_trajectories`
+    reference_trajectories: list[str] = Field(default_factory=list)
 
 
 class PhyPR(BaseModel):
@@ -128,7 +131,7 @@ def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0) ->
     conditions = set(atomic_conditions(task))
     met = {tuple(c) for s in good for c in s.conditions} & conditions
     realised = {s.trajectory for s in good if s.trajectory is not None}
-    reference = [t.key for t in reference_set(task)]
+    closest = closest_reference(task, realised)
     valid = [s for s in samples if _is_valid(s)]
     simulated = [k for k in POLICY_KINDS if any(k in s.sim_ms for s in samples)]
     st = (
@@ -153,9 +156,9 @@ def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0) ->
         n_valid=len(valid),
         logcov=len(covered) / len(keys),
         ld=len(met) / len(conditions) if conditions else float(bool(good)),
-        ji=jaccard(realised, reference),
-        redundancy=len(samples) / len(reference),
-        min_cover=len(reference),
+        ji=closest.ji,
+        redundancy=len(samples) / len(closest.trajectories),
+        min_cover=len(closest.trajectories),
         faudr={
             k: any(k in s.verdicts and s.verdicts[k] != "passed" for s in valid)
             for k in FAULTY_KINDS
@@ -166,6 +169,7 @@ def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0) ->
         extended_codes=dict(sorted(codes.items())),
         covered_paths=sorted(covered),
         realised_trajectories=sorted(realised),
+        reference_trajectories=[t.key for t in closest.trajectories],
     )
 
 
