@@ -11,11 +11,11 @@ import json
 import re
 from pathlib import Path
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, field_validator
 
 from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
 
-DEFAULT_GENERATORS: tuple[str, ...] = ("logicenvgen", "cot", "ifg", "holodeck")
+DEFAULT_GENERATORS: tuple[str, ...] = ("logicenvgen", "logicenvgen-exact", "cot", "ifg", "holodeck")
 
 
 class RunConfig(BaseModel):
@@ -34,6 +34,14 @@ class RunConfig(BaseModel):
     cache: str | None = None
     no_cache: bool = False
     run_id: str | None = None
+
+    @field_validator("generators")
+    @classmethod
+    def _current_names(cls, names: tuple[str, ...]) -> tuple[str, ...]:
+        """Old generator names (aliases) become current ones, with a FutureWarning."""
+        from logicenveval.generators.base import canonical_name
+
+        return tuple(canonical_name(n) for n in names)
 
     def identity(self) -> dict[str, object]:
         """The fields that define *what* is computed (not how fast or where)."""
