@@ -73,6 +73,7 @@ def markdown(results: dict[str, Any]) -> str:
         f"# LogicEnvEval leaderboard — run `{results.get('run_id', '?')}`",
         "",
         f"Model: `{results.get('model')}` · seed {results.get('seed')} · "
+        f"brief `{results.get('brief', 'roles')}` · "
         f"{len(results.get('tasks', []))} tasks · commit `{results.get('git_commit') or 'n/a'}`",
         "",
         "| " + " | ".join(header) + " |",

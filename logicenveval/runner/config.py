@@ -10,6 +10,7 @@ import hashlib
 import json
 import re
 from pathlib import Path
+from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator
 
@@ -34,6 +35,8 @@ class RunConfig(BaseModel):
     cache: str | None = None
     no_cache: bool = False
     run_id: str | None = None
+    #: what generators are given: the task's roles (default) or, as in the paper, the description
+    brief: Literal["roles", "description"] = "roles"
 
     @field_validator("generators")
     @classmethod
@@ -54,6 +57,7 @@ class RunConfig(BaseModel):
             "limit": self.limit,
             "seed": self.seed,
             "layout_solver": self.layout_solver,
+            "brief": self.brief,
         }
 
     def resolved_run_id(self) -> str:
