@@ -95,3 +95,8 @@ def test_run_records_the_brief_and_binds_roles(tmp_path: Path) -> None:
     # boxes are not told apart by the offline model's object names, so those envs are ill-formed
     assert samples and all("role red_box" in " ".join(s["problems"]) for s in samples if not s["well_formed"])
     assert any(s["covered_paths"] for s in samples)
+
+
+def test_description_brief_with_the_oracle_is_refused(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["run", "--model", "oracle", "--brief", "description", "--tasks", TASK]) == 2
+    assert "--brief description cannot be used with --model oracle" in capsys.readouterr().err

@@ -12,7 +12,7 @@ import re
 from pathlib import Path
 from typing import Literal
 
-from pydantic import BaseModel, ConfigDict, Field, field_validator
+from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
 from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
 
@@ -37,6 +37,16 @@ class RunConfig(BaseModel):
     run_id: str | None = None
     #: what generators are given: the task's roles (default) or, as in the paper, the description
     brief: Literal["roles", "description"] = "roles"
+
+    @model_validator(mode="after")
+    def _brief_fits_model(self) -> RunConfig:
+        if self.brief == "description" and self.model == "oracle":
+            from logicenveval.errors import ConfigError
+
+            raise ConfigError("--brief description cannot be used with --model oracle", field="--brief",
+                              hint="the oracle answers with the GT plans, which name the task's roles; "
+                                   "use --brief roles (the default) with the oracle")
+        return self
 
     @field_validator("generators")
     @classmethod
