@@ -10,15 +10,16 @@ import hashlib
 import json
 import re
 from pathlib import Path
+from typing import Literal
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
 from logicenveval.redact import strip_url_credentials
 from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
 
 #: a run id is one folder name inside --output: no separators, no leading dot
 RUN_ID_PATTERN = r"^[A-Za-z0-9_][A-Za-z0-9._-]{0,127}$"
-DEFAULT_GENERATORS: tuple[str, ...] = ("logicenvgen", "cot", "ifg", "holodeck")
+DEFAULT_GENERATORS: tuple[str, ...] = ("logicenvgen", "logicenvgen-exact", "cot", "ifg", "holodeck")
 
 
 class RunConfig(BaseModel):
@@ -39,6 +40,26 @@ class RunConfig(BaseModel):
     run_id: str | None = Field(default=None, pattern=RUN_ID_PATTERN)
     #: stop the run after this many consecutive units failed for infrastructure reasons (0: never)
     max_infra_failures: int = Field(default=5, ge=0)
+    #: what generators are given: the task's roles (default) or, as in the paper, the description
+    brief: Literal["roles", "description"] = "roles"
+
+    @model_validator(mode="after")
+    def _brief_fits_model(self) -> RunConfig:
+        if self.brief == "description" and self.model == "oracle":
+            from logicenveval.errors import ConfigError
+
+            raise ConfigError("--brief description cannot be used with --model oracle", field="--brief",
+                              hint="the oracle answers with the GT plans, which name the task's roles; "
+                                   "use --brief roles (the default) with the oracle")
+        return self
+
+    @field_validator("generators")
+    @classmethod
+    def _current_names(cls, names: tuple[str, ...]) -> tuple[str, ...]:
+        """Old generator names (aliases) become current ones, with a FutureWarning."""
+        from logicenveval.generators.base import canonical_name
+
+        return tuple(canonical_name(n) for n in names)
 
     def identity(self) -> dict[str, object]:
         """The fields that define *what* is computed (not how fast or where)."""
@@ -51,6 +72,7 @@ class RunConfig(BaseModel):
             "limit": self.limit,
             "seed": self.seed,
             "layout_solver": self.layout_solver,
+            "brief": self.brief,
         }
 
     def resolved_run_id(self) -> str:

@@ -22,7 +22,9 @@ from logicenveval.domain.catalog import load_catalog
 from logicenveval.envfiles import env_to_json
 from logicenveval.errors import CacheMissError, LogicEnvEvalError, ModelConnectionError
 from logicenveval.generators.base import GenerationContext, make_generator
+from logicenveval.generators.brief import BriefMode, generator_brief
 from logicenveval.llm.base import ChatModel, ChatRequest
+from logicenveval.llm.fewshot import FewShotModel
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import POLICY_KINDS
@@ -45,6 +47,7 @@ class UnitSpec(BaseModel):
     layout_solver: Solver = DEFAULT_SOLVER
     cache: str | None = None
     no_cache: bool = False
+    brief: BriefMode = "roles"
 
 
 def unit_seed(seed: int, generator: str, task_id: str) -> list[int]:
@@ -78,10 +81,13 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     policies = {k: load_policy(policy_path(task, k, spec.tasks_dir)) for k in POLICY_KINDS}
     run_dir = Path(spec.run_dir)
     start = time.perf_counter()
-    model: _Watched | None = None
+    model: ChatModel | None = None
     try:
-        model = _Watched(make_model(spec.model, spec.model_args, cache_path=spec.cache,
-                                    no_cache=spec.no_cache, run_dir=run_dir))
+        watched = _Watched(make_model(spec.model, spec.model_args, cache_path=spec.cache,
+                                      no_cache=spec.no_cache, run_dir=run_dir))
+        model = watched
+        if spec.brief == "description":
+            model = FewShotModel(watched)
         generator = make_generator(spec.generator)
         ctx = GenerationContext(
             model=model,
@@ -91,21 +97,24 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
             work_dir=run_dir / "work" / spec.generator / spec.task_id,
             layout_solver=spec.layout_solver,
         )
-        result = generator.generate(task.brief(), ctx)
+        brief = generator_brief(task, spec.brief, model, seed=spec.seed)
+        result = generator.generate(brief, ctx)
     except Exception as exc:  # a failing unit must not kill the run; it is recorded
         return UnitRecord(generator=spec.generator, task_id=spec.task_id, error=_reason(exc),
                           error_kind=failure_kind(exc), gen_seconds=time.perf_counter() - start,
                           llm=_stats(model))
     gen_seconds = time.perf_counter() - start
-    if model.infra_error is not None:  # the generator absorbed it, but its output is incomplete
+    if watched.infra_error is not None:  # the generator absorbed it, but its output is incomplete
         return UnitRecord(generator=spec.generator, task_id=spec.task_id,
-                          error="infrastructure failure during generation: " + model.infra_error,
+                          error="infrastructure failure during generation: " + watched.infra_error,
                           error_kind="infrastructure", gen_seconds=gen_seconds, llm=_stats(model))
     env_dir = run_dir / "envs" / spec.generator / spec.task_id
     samples = []
     for env in _unique_ids(result.envs):
         atomic_write_text(env_dir / f"{env.env_id}.json", env_to_json(env))
         samples.append(evaluate_env(spec.generator, task, env, policies, catalog))
+    if spec.brief != "roles":
+        atomic_write_text(env_dir / "brief.json", brief.model_dump_json(indent=2) + "\n")
     if result.artifacts:
         atomic_write_text(env_dir / "plan.json",
                           json.dumps(result.artifacts, indent=2, sort_keys=True, default=str) + "\n")
