@@ -133,12 +133,13 @@ def _check_results(data: dict[str, Any], file: str) -> None:
     for gen, values in data["results"].items():
         if not isinstance(values, dict):
             raise bad(f"results.{gen}", "must be an object of metrics")
-        for key, value in values.items():
-            inner = value.items() if isinstance(value, dict) else [("", value)]
-            for sub, v in inner:
-                if v is not None and (isinstance(v, bool) or not isinstance(v, int | float)):
-                    where = f"results.{gen}.{key}" + (f".{sub}" if sub else "")
-                    raise bad(where, f"metric value {str(v)[:40]!r} is not a number")
+        stack: list[tuple[str, Any]] = [(f"results.{gen}", values)]
+        while stack:  # every leaf of the (nested) metrics is a number or null
+            where, v = stack.pop()
+            if isinstance(v, dict):
+                stack += [(f"{where}.{k}", x) for k, x in v.items()]
+            elif v is not None and (isinstance(v, bool) or not isinstance(v, int | float)):
+                raise bad(where, f"metric value {str(v)[:40]!r} is not a number")
     for section in ("per_task", "failures"):
         if not isinstance(data.get(section, {}), dict):
             raise bad(section, "must be an object of generators")
