@@ -17,6 +17,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     val = sub.add_parser("validate", help="check every task; exit 1 on any problem")
     val.add_argument("--task", action="append", default=None, help="validate only this task (repeatable)")
     val.add_argument("--no-simulate", action="store_true", help="skip simulating the four policies")
+    val.add_argument("--worlds", type=_positive, default=None,
+                     help="worlds simulated per situation (default 12; 1 = the minimal world only)")
     st = sub.add_parser("stats", help="per-task logical and policy sizes, with totals")
     st.add_argument("--markdown", action="store_true", help="print a Markdown table (for the README)")
     for q in (ls, show, val, st):
@@ -89,11 +91,14 @@ def _validate(args: argparse.Namespace) -> int:
     from logicenveval.benchmark import tasks_dir
     from logicenveval.benchmark_validation import validate_all, validate_task
 
+    from logicenveval.sim.worlds import DEFAULT_WORLDS
+
     simulate = not args.no_simulate
+    worlds = args.worlds or DEFAULT_WORLDS
     if args.task:
-        reports = [validate_task(t, args.tasks_dir, simulate=simulate) for t in args.task]
+        reports = [validate_task(t, args.tasks_dir, simulate=simulate, worlds=worlds) for t in args.task]
     else:
-        reports = validate_all(args.tasks_dir, simulate=simulate)
+        reports = validate_all(args.tasks_dir, simulate=simulate, worlds=worlds)
     table = Table(title=f"validation of {tasks_dir(args.tasks_dir)}")
     for col in ("task", "situations", "counterfactual", "unreachable", "lackbranch", "result"):
         table.add_column(col)
@@ -132,6 +137,16 @@ def _stats(args: argparse.Namespace) -> int:
     _console().print(table)
     print(f"{t['tasks']} tasks, {t['policies']} policies")
     return 0
+
+
+def _positive(text: str) -> int:
+    try:
+        n = int(text)
+    except ValueError:
+        n = 0
+    if n < 1:
+        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
+    return n
 
 
 def _console() -> Console:
