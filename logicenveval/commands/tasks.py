@@ -19,9 +19,14 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     val.add_argument("--no-simulate", action="store_true", help="skip simulating the four policies")
     val.add_argument("--worlds", type=_positive, default=None,
                      help="worlds simulated per situation (default 12; 1 = the minimal world only)")
+    mu = sub.add_parser("mutants", help="first-order mutants of the correct BTs, classified by simulation")
+    mu.add_argument("--tasks", default="all", help="all or comma-separated task ids")
+    mu.add_argument("--worlds", type=_positive, default=None,
+                    help="worlds simulated per situation (default 12, as tasks validate)")
+    mu.add_argument("--json", action="store_true", help="print JSON (every mutant and what kills it)")
     st = sub.add_parser("stats", help="per-task logical and policy sizes, with totals")
     st.add_argument("--markdown", action="store_true", help="print a Markdown table (for the README)")
-    for q in (ls, show, val, st):
+    for q in (ls, show, val, mu, st):
         q.add_argument("--tasks-dir", default=None, help="folder of <task_id>/task.json (default: benchmark)")
 
 
@@ -33,6 +38,8 @@ def run(args: argparse.Namespace) -> int:
         return _show(args)
     if cmd == "validate":
         return _validate(args)
+    if cmd == "mutants":
+        return _mutants(args)
     return _stats(args)
 
 
@@ -115,6 +122,56 @@ def _validate(args: argparse.Namespace) -> int:
         print(f"{len(problems)} problem(s) in {sum(not r.ok for r in reports)} of {len(reports)} task(s)")
         return 1
     print(f"all {len(reports)} task(s) valid")
+    return 0
+
+
+def _mutants(args: argparse.Namespace) -> int:
+    import json
+
+    from rich.table import Table
+
+    from logicenveval.benchmark import task_ids
+    from logicenveval.errors import ConfigError
+    from logicenveval.faults.classify import classify_tasks
+    from logicenveval.sim.worlds import DEFAULT_WORLDS
+
+    known = task_ids(args.tasks_dir)
+    ids = known if args.tasks == "all" else [t.strip() for t in args.tasks.split(",") if t.strip()]
+    unknown = [t for t in ids if t not in known]
+    if unknown or not ids:
+        raise ConfigError(f"unknown task id(s) {unknown}", field="--tasks",
+                          hint=f"use all or some of: {', '.join(known)}")
+    reports = classify_tasks(ids, args.tasks_dir, worlds=args.worlds or DEFAULT_WORLDS)
+    if args.json:
+        print(json.dumps([r.to_json() for r in reports], indent=2, sort_keys=True))
+        return 0
+    table = Table(title="first-order mutants of the correct BTs")
+    for col in ("task", "mutants", "equivalent", "killable", "cf / unr / lack", "hand-written reproduced"):
+        table.add_column(col)
+    for r in reports:
+        j = r.to_json()
+        by = j["by_class"]
+        assert isinstance(by, dict)
+        hw = ", ".join(f"{k}: {'yes' if h.reproduced_by else 'no'}" for k, h in r.handwritten.items())
+        table.add_row(r.task, str(j["mutants"]), str(j["equivalent"]), str(j["killable"]),
+                      f"{by['counterfactual']} / {by['unreachable']} / {by['lackbranch']}", hw)
+    _console().print(table)
+    ops: dict[str, list[int]] = {}
+    for r in reports:
+        for op, row in r.by_operator().items():
+            acc = ops.setdefault(op, [0, 0])
+            acc[0] += row["mutants"]
+            acc[1] += row["killable"]
+    print("by operator: " + ", ".join(f"{op} {m}/{k}" for op, (m, k) in sorted(ops.items()))
+          + "  (mutants/killable)")
+    total = sum(len(r.killable) for r in reports)
+    print(f"{len(reports)} task(s): {sum(len(r.outcomes) for r in reports)} mutants, {total} killable "
+          f"({total / len(reports):.1f} per task)")
+    for r in reports:
+        for kind, h in r.handwritten.items():
+            if not h.reproduced_by:
+                print(f"not reproduced: {r.task} {kind}: {h.reason}; closest {h.closest} "
+                      f"(Jaccard {h.closest_jaccard:.2f})")
     return 0
 
 

@@ -105,34 +105,46 @@ class MutantRunner:
     def __init__(self, correct: Policy, muts: Sequence[Mutant]) -> None:
         self.correct = CompiledPolicy(correct)
         self.mutants = list(muts)
-        self._compiled: dict[str, CompiledPolicy] = {}
+        self._compiled: dict[int, CompiledPolicy] = {}
         paths = _compiled_paths(correct)
         self._regions = [tuple(p for r in m.region for p in paths.get((m.location[0], r), ()))
                          for m in self.mutants]
+        #: a condition replaced by a constant behaves as before wherever it already returned
+        #: that constant: leaf paths and the status the mutant forces
+        self._forced = [(self._regions[i], _FORCED.get(m.operator)) for i, m in enumerate(self.mutants)]
 
     def run(self, world: World, goal: Cond | None,
             only: Iterable[int] | None = None) -> dict[int, str]:
         """Verdict status of each mutant (index -> status) that does not pass on `world`."""
         base = self.correct.run(world.copy(), goal, trace=True)
         ticked: set[str] = set()
+        leaf_status: dict[str, set[str]] = {}
         for ev in base.trace:
-            parts = str(ev["path"]).split("/")
+            path = str(ev["path"])
+            leaf_status.setdefault(path, set()).add(str(ev["status"]))
+            parts = path.split("/")
             for k in range(1, len(parts) + 1):
                 ticked.add("/".join(parts[:k]))
         out: dict[int, str] = {}
         for i in (only if only is not None else range(len(self.mutants))):
-            if not any(p in ticked for p in self._regions[i]):
+            region, forced = self._forced[i]
+            same = not any(p in ticked for p in region) or (
+                forced is not None and all(leaf_status.get(p, {forced}) == {forced} for p in region))
+            if same:
                 if base.status != "passed":
                     out[i] = base.status
                 continue
-            m = self.mutants[i]
-            cp = self._compiled.get(m.id)
+            cp = self._compiled.get(i)
             if cp is None:
-                cp = self._compiled[m.id] = CompiledPolicy(m.policy)
-            v = cp.run(world.copy(), goal)
-            if v.status != "passed":
-                out[i] = v.status
+                cp = self._compiled[i] = CompiledPolicy(self.mutants[i].policy)
+            status = cp.status(world.copy(), goal)
+            if status != "passed":
+                out[i] = status
         return out
+
+
+#: operators that replace a condition by a constant, and the leaf status that constant gives
+_FORCED = {"condition_true": "SUCCESS", "condition_false": "FAILURE"}
 
 
 def _compiled_paths(policy: Policy) -> dict[tuple[str, tuple[int, ...]], list[str]]:
@@ -191,9 +203,9 @@ def _signature(policy: Policy, prepared: list[tuple[str, World, Cond | None]]) -
     cp = CompiledPolicy(policy)
     out: dict[str, set[str]] = {}
     for key, world, goal in prepared:
-        v = cp.run(world.copy(), goal)
-        if v.status != "passed":
-            out.setdefault(key, set()).add(v.status)
+        status = cp.status(world.copy(), goal)
+        if status != "passed":
+            out.setdefault(key, set()).add(status)
     return {s: tuple(sorted(v)) for s, v in sorted(out.items())}
 
 

@@ -13,7 +13,8 @@ picked), an *unreachable* BT follows real-world logic but misses the goal in som
 | unreachable | `change_destination` | give a Place / PutIn another destination used by the policy |
 | unreachable | `swap_branches` | swap the then / else branches of an IfThenElse |
 | unreachable | `drop_goal_action` | delete a Place / PutIn / Close / Toggle / Clean / Fill |
-| lackbranch | `delete_alternative` | delete a Fallback alternative or an IfThenElse else branch |
+| lackbranch | `delete_alternative` | delete a Fallback alternative or an IfThenElse branch (then: the node becomes `Sequence(Inverter(C), else)`) |
+| lackbranch | `delete_skip_branch` | `Fallback(Inverter(C), body)` ("if C do body") becomes `Sequence(C, body)`: no branch for not C |
 | lackbranch | `condition_true` / `condition_false` | replace a condition by AlwaysSuccess / AlwaysFailure |
 | lackbranch | `invert_condition` | wrap a condition in an Inverter |
 
@@ -77,6 +78,7 @@ OPERATORS: dict[str, str] = {
     "swap_branches": "unreachable",
     "drop_goal_action": "unreachable",
     "delete_alternative": "lackbranch",
+    "delete_skip_branch": "lackbranch",
     "condition_true": "lackbranch",
     "condition_false": "lackbranch",
     "invert_condition": "lackbranch",
@@ -187,6 +189,16 @@ def _node_edits(tree_id: str, root: PolicyNode, idx: tuple[int, ...], node: Poli
         if parent.kind == "IfThenElse" and k == 2:
             yield _Edit("delete_alternative", loc, tail, "delete the else branch of IfThenElse",
                         _delete_child(root, parent_idx, k))
+        if parent.kind == "IfThenElse" and k == 1 and len(siblings) == 3:
+            cond, _, other = siblings
+            yield _Edit("delete_alternative", loc, tail, "delete the then branch of IfThenElse",
+                        _replace(root, parent_idx, lambda p, c=cond, o=other: PolicyNode(
+                            "Sequence", (), (PolicyNode("Inverter", (), (c,)), o), p.name, p.line)))
+    if (kind in _FALLBACKS and len(node.children) == 2 and node.children[0].kind == "Inverter"
+            and node.children[0].children[0].kind in CONDITIONS):
+        cond, body = node.children[0].children[0], node.children[1]
+        yield _Edit("delete_skip_branch", loc, (idx,), f"{kind}(not C, body) -> Sequence(C, body)",
+                    _replace(root, idx, lambda n: PolicyNode("Sequence", (), (cond, body), n.name, n.line)))
     if kind == "IfThenElse" and len(node.children) == 3:
         a, b, c = node.children
         yield _Edit("swap_branches", loc, ((*idx, 1), (*idx, 2)), "swap then / else branches",
