@@ -288,7 +288,7 @@ def _check_policies(task: Task, cat: Catalog, policies: dict[str, object],
             continue
         for kind, policy in policies.items():
             assert isinstance(policy, Policy)
-            fails = []
+            fails: list[tuple[str, str]] = []
             for env in envs:
                 v = simulate(policy, env, task, cat)
                 if v.status != "passed":
@@ -298,9 +298,9 @@ def _check_policies(task: Task, cat: Catalog, policies: dict[str, object],
             for status, message in fails if kind != "correct" else fails[:1]:
                 failed[kind].append((traj.key, status, message))
     files = task.policies
-    for key, status, message in failed["correct"]:
+    for key, why, message in failed["correct"]:
         add(files["correct"], f"situation {key}",
-            f"the correct policy fails ({status}: {message})")
+            f"the correct policy fails ({why}: {message})")
     for kind in FAULTY_KINDS:
         report.revealing[kind] = list(dict.fromkeys(k for k, _, _ in failed[kind]))
         if not failed[kind]:
@@ -309,10 +309,10 @@ def _check_policies(task: Task, cat: Catalog, policies: dict[str, object],
         if not passed[kind]:
             add(files[kind], "all situations",
                 f"the {kind} policy fails every situation; it must pass in at least one")
-        for key, status, message in failed[kind]:
-            if not _fits(kind, status, message):
+        for key, why, message in failed[kind]:
+            if not _fits(kind, why, message):
                 add(files[kind], f"situation {key}",
-                    f"fails with {status} ({message}), which is not a {kind} fault; expected "
+                    f"fails with {why} ({message}), which is not a {kind} fault; expected "
                     f"{sorted(FAULT_VERDICTS[kind])}")
 
 

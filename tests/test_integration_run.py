@@ -54,9 +54,9 @@ def test_outputs_and_result_keys(first_run: Path) -> None:
         assert set(values) == KEYS
         assert set(values["phypr"]) == {"floor_plan", "entity", "relation", "avg"}
         assert set(values["faudr"]) == {"counterfactual", "unreachable", "lackbranch", "avg"}
-    assert results["tasks"] == TASKS.split(",")
         assert 0.0 < values["faudr_mut"] <= 1.0
         assert set(values["faudr_mut_by_class"]) == {"counterfactual", "unreachable", "lackbranch"}
+    assert results["tasks"] == TASKS.split(",")
     lines = (first_run / "samples.jsonl").read_text().splitlines()
     assert len(lines) == sum(v["n_envs"] for v in results["results"].values())
     samples = [json.loads(line) for line in lines]

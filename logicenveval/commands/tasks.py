@@ -97,7 +97,6 @@ def _validate(args: argparse.Namespace) -> int:
 
     from logicenveval.benchmark import tasks_dir
     from logicenveval.benchmark_validation import validate_all, validate_task
-
     from logicenveval.sim.worlds import DEFAULT_WORLDS
 
     simulate = not args.no_simulate

@@ -27,6 +27,7 @@ from logicenveval.model.conditions import Cond
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import FAULTY_KINDS, Task
 from logicenveval.sim.loader import load_policy
+from logicenveval.sim.nodes import BTNode, Decorator, build_tree
 from logicenveval.sim.policy import Policy, PolicyNode
 from logicenveval.sim.simulator import CompiledPolicy, task_goal
 from logicenveval.sim.world import World
@@ -99,19 +100,37 @@ class TaskMutants:
         }
 
 
+#: (parent, child index, original child, spliced-in child, the spliced subtree's nodes)
+_Splice = tuple[BTNode, int, BTNode, BTNode, list[BTNode]]
+
+
 class MutantRunner:
-    """Runs the correct BT and its mutants on environments, reusing compiled trees."""
+    """Runs the correct BT and its mutants on environments, reusing compiled trees.
+
+    A mutant is not compiled as a whole: only its anchor (the smallest subtree holding the
+    edit) is built, and spliced into the correct BT's compiled tree for the episode, in place
+    of the original subtree, then taken out again. Everything outside the anchor is the very
+    same py_trees nodes, so building a mutant costs its anchor, not the whole tree.
+    """
 
     def __init__(self, correct: Policy, muts: Sequence[Mutant]) -> None:
         self.correct = CompiledPolicy(correct)
         self.mutants = list(muts)
-        self._compiled: dict[int, CompiledPolicy] = {}
-        paths = _compiled_paths(correct)
-        self._regions = [tuple(p for r in m.region for p in paths.get((m.location[0], r), ()))
-                         for m in self.mutants]
+        self._splices: dict[int, list[_Splice]] = {}
+        self._whole: dict[int, CompiledPolicy] = {}
+        self._paths = _compiled_paths(correct)
+        self._by_path: dict[str, tuple[BTNode, BTNode | None, int]] = {}
+        for node in self.correct.root.iterate():
+            if isinstance(node, BTNode):
+                self._by_path.setdefault(node.path, (node, None, 0))
+                for i, child in enumerate(node.children):
+                    if isinstance(child, BTNode):
+                        self._by_path[child.path] = (child, node, i)
+        regions = [tuple(p for r in m.region for p in self._paths.get((m.location[0], r), ()))
+                   for m in self.mutants]
         #: a condition replaced by a constant behaves as before wherever it already returned
         #: that constant: leaf paths and the status the mutant forces
-        self._forced = [(self._regions[i], _FORCED.get(m.operator)) for i, m in enumerate(self.mutants)]
+        self._forced = [(regions[i], _FORCED.get(m.operator)) for i, m in enumerate(self.mutants)]
 
     def run(self, world: World, goal: Cond | None,
             only: Iterable[int] | None = None) -> dict[int, str]:
@@ -134,13 +153,60 @@ class MutantRunner:
                 if base.status != "passed":
                     out[i] = base.status
                 continue
-            cp = self._compiled.get(i)
-            if cp is None:
-                cp = self._compiled[i] = CompiledPolicy(self.mutants[i].policy)
-            status = cp.status(world.copy(), goal)
+            status = self._status(i, world.copy(), goal)
             if status != "passed":
                 out[i] = status
         return out
+
+    def _status(self, i: int, world: World, goal: Cond | None) -> str:
+        whole = self._whole.get(i)
+        if whole is not None:
+            return whole.status(world, goal)
+        splices = self._splices.get(i)
+        if splices is None:
+            splices = self._build_splices(i)
+            if splices is None:
+                whole = self._whole[i] = CompiledPolicy(self.mutants[i].policy)
+                return whole.status(world, goal)
+        for parent, k, _, new, nodes in splices:
+            _put(parent, k, new)
+            for n in nodes:
+                n.reset_all()
+        try:
+            return self.correct.status(world, goal)
+        finally:
+            for parent, k, old, _, _ in splices:
+                _put(parent, k, old)
+
+    def _build_splices(self, i: int) -> list[_Splice] | None:
+        m = self.mutants[i]
+        tree = m.location[0]
+        places = self._paths.get((tree, m.anchor), [])
+        out = []
+        for path in places:
+            old, parent, k = self._by_path[path]
+            if parent is None:
+                return None  # the anchor is the main tree's root: compile the mutant whole
+            anchor = _node_at(m.policy.trees[tree], m.anchor)
+            host = f"{tree}#anchor"
+            part = Policy(host, {**m.policy.trees, host: anchor}, m.policy.source)
+            new = build_tree(part, self.correct.root.binding)
+            out.append((parent, k, old, new, [n for n in new.iterate() if isinstance(n, BTNode)]))
+        self._splices[i] = out
+        return out
+
+
+def _put(parent: BTNode, k: int, child: BTNode) -> None:
+    parent.children[k] = child
+    if isinstance(parent, Decorator):
+        parent.decorated = child
+
+
+def _node_at(root: PolicyNode, idx: tuple[int, ...]) -> PolicyNode:
+    node = root
+    for j in idx:
+        node = node.children[j]
+    return node
 
 
 #: operators that replace a condition by a constant, and the leaf status that constant gives

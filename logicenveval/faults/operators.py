@@ -56,8 +56,11 @@ class Mutant:
     #: child-index paths (within `location[0]`) whose execution the edit can change
     region: tuple[tuple[int, ...], ...]
     description: str
+    #: the mutant (shares every unchanged node with the correct policy)
     policy: Policy
     xml: str
+    #: the smallest subtree (child indices within `location[0]`) that contains the whole edit
+    anchor: tuple[int, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)
@@ -100,8 +103,7 @@ def mutants(policy: Policy, *, roles: Iterable[str] | None = None,
         if xml in seen:
             continue
         try:
-            loaded = policy_from_xml(xml, f"{policy.source}#{edit.operator}", roles=role_list,
-                                     rooms=room_list)
+            policy_from_xml(xml, f"{policy.source}#{edit.operator}", roles=role_list, rooms=room_list)
         except PolicyFormatError:
             continue
         seen.add(xml)
@@ -110,8 +112,18 @@ def mutants(policy: Policy, *, roles: Iterable[str] | None = None,
         if edit.detail:
             mid += f":{edit.detail}"
         out.append(Mutant(mid, edit.operator, OPERATORS[edit.operator], edit.location, edit.region,
-                          edit.description, loaded, xml))
+                          edit.description, candidate, xml, _anchor(edit)))
     return out
+
+
+#: operators that change the children of the edited node's parent (the rest edit the node itself)
+_PARENT_EDITS = frozenset({"delete_precondition", "reorder_precondition", "drop_goal_action",
+                           "delete_alternative"})
+
+
+def _anchor(edit: _Edit) -> tuple[int, ...]:
+    idx = edit.location[1]
+    return idx[:-1] if edit.operator in _PARENT_EDITS else idx
 
 
 # ----- tree surgery ------------------------------------------------------------------------------
@@ -137,6 +149,26 @@ def _with_children(node: PolicyNode, kids: list[PolicyNode]) -> PolicyNode:
 def _with_param(node: PolicyNode, key: str, value: str) -> PolicyNode:
     params = tuple((k, value if k == key else v) for k, v in node.params)
     return PolicyNode(node.kind, params, node.children, node.name, node.line)
+
+
+_Fn = Callable[[PolicyNode], PolicyNode]
+
+
+def _children_to(kids: list[PolicyNode]) -> _Fn:
+    return lambda n: _with_children(n, kids)
+
+
+def _param_to(key: str, value: str) -> _Fn:
+    return lambda n: _with_param(n, key, value)
+
+
+def _becomes(kind: str, children: tuple[PolicyNode, ...]) -> _Fn:
+    """The node replaced by a `kind` node (no ports) with `children`, keeping its name."""
+    return lambda n: PolicyNode(kind, (), children, n.name, n.line)
+
+
+def _inverted(n: PolicyNode) -> PolicyNode:
+    return PolicyNode("Inverter", (), (n,), None, n.line)
 
 
 def _delete_child(root: PolicyNode, parent: tuple[int, ...], k: int) -> PolicyNode:
@@ -178,7 +210,7 @@ def _node_edits(tree_id: str, root: PolicyNode, idx: tuple[int, ...], node: Poli
                     kids[k], kids[k + 1] = kids[k + 1], kids[k]
                     yield _Edit("reorder_precondition", loc, tail,
                                 f"move {_show(node)} after {_show(siblings[k + 1])}",
-                                _replace(root, parent_idx, lambda p, kids=kids: _with_children(p, kids)))
+                                _replace(root, parent_idx, _children_to(kids)))
             if kind in GOAL_ACTIONS:
                 yield _Edit("drop_goal_action", loc, tail, f"delete {_show(node)}",
                             _delete_child(root, parent_idx, k))
@@ -190,19 +222,18 @@ def _node_edits(tree_id: str, root: PolicyNode, idx: tuple[int, ...], node: Poli
             yield _Edit("delete_alternative", loc, tail, "delete the else branch of IfThenElse",
                         _delete_child(root, parent_idx, k))
         if parent.kind == "IfThenElse" and k == 1 and len(siblings) == 3:
-            cond, _, other = siblings
+            cond, _, els = siblings
             yield _Edit("delete_alternative", loc, tail, "delete the then branch of IfThenElse",
-                        _replace(root, parent_idx, lambda p, c=cond, o=other: PolicyNode(
-                            "Sequence", (), (PolicyNode("Inverter", (), (c,)), o), p.name, p.line)))
+                        _replace(root, parent_idx, _becomes("Sequence", (PolicyNode("Inverter", (), (cond,)), els))))
     if (kind in _FALLBACKS and len(node.children) == 2 and node.children[0].kind == "Inverter"
             and node.children[0].children[0].kind in CONDITIONS):
         cond, body = node.children[0].children[0], node.children[1]
         yield _Edit("delete_skip_branch", loc, (idx,), f"{kind}(not C, body) -> Sequence(C, body)",
-                    _replace(root, idx, lambda n: PolicyNode("Sequence", (), (cond, body), n.name, n.line)))
+                    _replace(root, idx, _becomes("Sequence", (cond, body))))
     if kind == "IfThenElse" and len(node.children) == 3:
         a, b, c = node.children
         yield _Edit("swap_branches", loc, ((*idx, 1), (*idx, 2)), "swap then / else branches",
-                    _replace(root, idx, lambda n: _with_children(n, [a, c, b])))
+                    _replace(root, idx, _children_to([a, c, b])))
     if kind in ACTIONS:
         port = "obj" if node.param("obj") is not None else None
         if port is not None:
@@ -210,21 +241,19 @@ def _node_edits(tree_id: str, root: PolicyNode, idx: tuple[int, ...], node: Poli
             for other in by_kind.get((kind, port), []):
                 if other != cur:
                     yield _Edit("swap_object", loc, (idx,), f"{_show(node)} with obj={other}",
-                                _replace(root, idx, lambda n, o=other: _with_param(n, "obj", o)),
-                                detail=other)
+                                _replace(root, idx, _param_to("obj", other)), detail=other)
         if kind in ("Place", "PutIn"):
             cur = node.param("target")
             for other in by_kind.get((kind, "target"), []):
                 if other != cur:
                     yield _Edit("change_destination", loc, (idx,), f"{_show(node)} to {other}",
-                                _replace(root, idx, lambda n, o=other: _with_param(n, "target", o)),
-                                detail=other)
+                                _replace(root, idx, _param_to("target", other)), detail=other)
     if kind in CONDITIONS:
         for op, const in (("condition_true", "AlwaysSuccess"), ("condition_false", "AlwaysFailure")):
             yield _Edit(op, loc, (idx,), f"replace {_show(node)} by {const}",
-                        _replace(root, idx, lambda n, c=const: PolicyNode(c, (), (), n.name, n.line)))
+                        _replace(root, idx, _becomes(const, ())))
         yield _Edit("invert_condition", loc, (idx,), f"invert {_show(node)}",
-                    _replace(root, idx, lambda n: PolicyNode("Inverter", (), (n,), None, n.line)))
+                    _replace(root, idx, _inverted))
 
 
 def _get(root: PolicyNode, idx: tuple[int, ...]) -> PolicyNode:

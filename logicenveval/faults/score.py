@@ -20,7 +20,7 @@ from pathlib import Path
 from logicenveval.benchmark import policy_path
 from logicenveval.domain.catalog import Catalog
 from logicenveval.faults.classify import MutantRunner, classify_task
-from logicenveval.faults.operators import Mutant, mutants
+from logicenveval.faults.operators import OPERATORS, Mutant, mutants
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import Task
 from logicenveval.sim.loader import load_policy, policy_to_xml
@@ -50,7 +50,8 @@ def scorer_for(task: Task, tasks_dir: str | Path | None, catalog: Catalog, *,
     correct = load_policy(policy_path(task, "correct", tasks_dir), roles=task.roles, rooms=task.rooms)
     muts = mutants(correct, roles=task.roles, rooms=task.rooms)
     key = hashlib.sha256("\0".join([task.model_dump_json(), policy_to_xml(correct), str(worlds),
-                                    catalog.model_dump_json()]).encode()).hexdigest()
+                                    catalog.model_dump_json(), *sorted(OPERATORS),
+                                    str(len(muts))]).encode()).hexdigest()
     hit = _SCORERS.get(key)
     if hit is not None:
         return hit
@@ -67,6 +68,11 @@ def scorer_for(task: Task, tasks_dir: str | Path | None, catalog: Catalog, *,
 
 #: scorers by content key: a worker process builds each mutant's tree once for all its units
 _SCORERS: dict[str, MutationScorer] = {}
+
+
+def clear_cache() -> None:
+    """Forget the scorers (and their built trees) of this process."""
+    _SCORERS.clear()
 
 
 def _write(path: Path, text: str) -> None:

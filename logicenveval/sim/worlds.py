@@ -46,7 +46,9 @@ class Deviation:
     label: str = ""
 
 
-_State = dict[str, dict[str, object]]
+
+
+_State = dict[str, "_Obj"]
 
 
 def situation_worlds(task: Task, trajectory: Trajectory, catalog: Catalog | None = None, *,
@@ -162,13 +164,21 @@ def _fits(content: Category | None, holder: Category | None) -> bool:
     return all(a <= b for a, b in zip(sorted(content.size_min), sorted(holder.size_max), strict=True))
 
 
+@dataclass(slots=True)
+class _Obj:
+    room: str
+    support: str | None
+    container: str | None
+    states: dict[str, bool]
+
+
 def _state_of(env: EnvSpec) -> _State:
-    return {o.id: {"room": o.room, "support": o.support if o.container is None else None,
-                   "container": o.container, "states": dict(o.states)} for o in env.objects}
+    return {o.id: _Obj(o.room, o.support if o.container is None else None, o.container,
+                       dict(o.states)) for o in env.objects}
 
 
 def _copy(state: _State) -> _State:
-    return {k: {**v, "states": dict(v["states"])} for k, v in state.items()}  # type: ignore[dict-item]
+    return {k: _Obj(v.room, v.support, v.container, dict(v.states)) for k, v in state.items()}
 
 
 def _apply(state: _State, d: Deviation) -> _State | None:
@@ -181,19 +191,17 @@ def _apply(state: _State, d: Deviation) -> _State | None:
     if holder is not None:
         if holder not in new or _inside_of(new, holder, d.obj):
             return None
-        o["support"], o["container"] = (None, holder) if d.container else (holder, None)
-        _move_room(new, d.obj, str(new[holder]["room"]))
+        o.support, o.container = (None, holder) if d.container else (holder, None)
+        _move_room(new, d.obj, new[holder].room)
     elif d.support == "floor":
-        o["support"], o["container"] = "floor", None
-        _move_room(new, d.obj, d.room or str(o["room"]))
+        o.support, o.container = "floor", None
+        _move_room(new, d.obj, d.room or o.room)
     elif d.room is not None:
         _move_room(new, d.obj, d.room)
     for oid, flag, value in d.states:
         if oid not in new:
             return None
-        states = new[oid]["states"]
-        assert isinstance(states, dict)
-        states[flag] = value
+        new[oid].states[flag] = value
     return new
 
 
@@ -206,15 +214,14 @@ def _inside_of(state: _State, oid: str, ancestor: str) -> bool:
             return True
         seen.add(cur)
         s = state[cur]
-        nxt = s["container"] or (s["support"] if s["support"] not in (None, "floor") else None)
-        cur = str(nxt) if nxt is not None else None
+        cur = s.container or (s.support if s.support not in (None, "floor") else None)
     return False
 
 
 def _move_room(state: _State, oid: str, room: str) -> None:
-    state[oid]["room"] = room
+    state[oid].room = room
     for other, s in state.items():
-        if other != oid and (s["container"] == oid or s["support"] == oid):
+        if other != oid and (s.container == oid or s.support == oid):
             _move_room(state, other, room)
 
 
@@ -223,8 +230,7 @@ def _env_of(base: EnvSpec, state: _State, k: int) -> EnvSpec:
     for o in base.objects:
         s = state[o.id]
         objects.append(o.model_copy(update={
-            "room": s["room"], "support": s["support"], "container": s["container"],
-            "states": dict(s["states"]),  # type: ignore[call-overload]
+            "room": s.room, "support": s.support, "container": s.container, "states": dict(s.states),
         }))
     return base.model_copy(update={"objects": objects, "env_id": f"{base.env_id}#w{k}"})
 
