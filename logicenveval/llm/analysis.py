@@ -45,7 +45,10 @@ DESCRIPTIVE = frozenset(
 )
 #: verbs after a subject that announce where it must go (a goal, not a condition)
 MOTION = frozenset(
-    ["go", "goes", "going", "belong", "belongs", "should", "must", "needs", "need", "get", "gets", "gotten", "put", "placed", "hung", "moved", "returned", "stored", "back", "brought", "taken", "carried"]
+    ["go", "goes", "going", "belong", "belongs", "should", "must", "needs", "need", "get", "gets", "gotten", "put", "placed", "hung", "moved", "returned", "stored", "back", "brought", "taken", "carried",
+     # passive voice: "a dirty shirt is put into the hamper", "clean ones are folded onto the shelf"
+     "laid", "thrown", "tossed", "loaded", "folded", "filed", "shelved", "stowed", "sorted", "tucked",
+     "packed", "stacked", "transferred", "binned", "hanged", "set", "parked", "wiped", "refilled"]
 )
 #: action verbs before an object: a location after the object is a goal
 ACTIONS = frozenset(
@@ -70,6 +73,8 @@ CONDITIONAL = ("depending on whether", "depending on if", "in case", "as long as
                "should there be", "should")
 ELSE_CUES = ("otherwise", "else", "failing that", "if not", "if there is not", "if there are not")
 ELSEWHERE = ("anywhere else", "elsewhere", "somewhere else", "any other place", "not there")
+#: words that say an object is absent: "the roll is missing"
+ABSENT = frozenset({"missing", "absent", "gone", "lacking", "unavailable"})
 AVAILABILITY = frozenset({"available", "any", "present", "possible", "exist", "exists", "there"})
 PREP_ON = frozenset({"on", "onto", "atop", "upon"})
 PREP_IN = frozenset({"in", "inside", "into", "within"})
@@ -182,6 +187,8 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
                 return [(sentence, cue, "condition")]
             return [(sentence[m.end():].strip(" ,"), cue, "else")]
     best = _first_cue(low, CONDITIONAL)
+    if best is None and low.rstrip().endswith("?"):
+        return [(sentence, "?", "condition")]  # "Are the keys on the floor?" asks about the situation
     if best is None:
         parts: list[str] = [str(p) for p in re.split(
             r",\s*(?:and|but|while)\s+|\s+but\s+|;\s*|:\s+|\s+-\s+|\s+while\s+", sentence) if p and p.strip()]
@@ -322,6 +329,13 @@ class _Reader:
                     base = self.last_location[r]
                     facts.append(Fact(r, base.condition, "location", base.key, negated=True))
         for m in subjects:
+            k = m.end
+            while k < len(words) and (words[k] in DESCRIPTIVE or self._pp_at(words, k)):
+                k = self._pp_at(words, k) or k + 1
+            if k < len(words) and words[k] in ABSENT or words[max(0, m.start - 3) : m.start][:2] == ["out", "of"]:
+                # "the roll by the toilet is missing", "we are out of bread"
+                facts += [Fact(r, f"exists({r})", "exists", negated=True) for r in m.roles]
+                break
             before = words[max(0, m.start - 6) : m.start]
             if "there" in before or "no" in before[-2:]:
                 facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
@@ -518,8 +532,13 @@ def analyse(brief: Mapping[str, Any], catalog: Catalog | None = None) -> TaskAna
     #: conditions met earlier in the sentence: a factor first mentioned under them depends on them
     context: list[tuple[tuple[str, str, str], bool, str]] = []
     current_sentence = -1
+    #: a sentence that opens with an instruction continues the previous one's conditions
+    #: ("Clean the mirror if it is dirty. Use the cloth if we still have one; if there is no
+    #: cloth, ..."): an absence stated there is only asked under those conditions
+    carried: list[tuple[tuple[str, str, str], bool, str]] = []
     for ci, cl in enumerate(clauses):
         if cl.sentence != current_sentence:
+            carried = context if cl.role in ("statement", "consequence") else []
             current_sentence, context = cl.sentence, []
         if cl.role == "else" and context:
             slot0, neg0, key0 = context[-1]
@@ -533,7 +552,8 @@ def analyse(brief: Mapping[str, Any], catalog: Catalog | None = None) -> TaskAna
             slot = (f.subject, f.kind, f.key if f.kind in ("state", "attr") else "")
             entry = found.setdefault(slot, {"order": ci, "sentence": cl.sentence, "clause": ci,
                                            "targets": [], "values": [],
-                                           "context": [c for c in context if c[0] != slot]})
+                                           "context": [c for c in context if c[0] != slot]
+                                           or [c for c in carried if c[0] != slot and f.kind == "exists"]})
             if cl.role == "condition":
                 value = f.condition.rsplit(", ", 1)[1][:-1] if f.kind == "attr" else f.key
                 added.append((slot, f.negated, value))
@@ -615,6 +635,11 @@ def _group(factors: list[Factor]) -> tuple[list[list[str]], list[set[str]]]:
         for b in factors:
             if a.subject != b.subject and a.sentence == b.sentence >= 0 and a.clause != b.clause:
                 parent[find(b.subject)] = find(a.subject)
+    subject_of = {f.id: f.subject for f in factors}
+    for f in factors:  # a factor asked only under another's value belongs to its subtask
+        for dep, _ in f.context:
+            if dep in subject_of and find(subject_of[dep]) != find(f.subject):
+                parent[find(f.subject)] = find(subject_of[dep])
     order: dict[str, list[str]] = {}
     for f in factors:
         order.setdefault(find(f.subject), []).append(f.id)
