@@ -340,6 +340,14 @@ class _Reader:
             if "there" in before or "no" in before[-2:]:
                 facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
                 break
+        if not subjects and self.topic and self.topic_kind == "role" and len(words) <= 4:
+            # an elliptic condition about the topic: "when dry, ...", "if not ripe, ..."
+            for w in words:
+                if w in STATE_WORDS and w not in ("on", "off", "out"):
+                    flag, pol = STATE_WORDS[w]
+                    facts += [Fact(r, f"state({r}, {flag})", "state", flag, negated=negated != (not pol))
+                              for r in self.topic]
+                    break
         for f in facts:
             if f.kind == "location" and not f.goal:
                 self.last_location[f.subject] = f
@@ -409,7 +417,8 @@ class _Reader:
         k = m.end
         skipped: list[str] = []
         while k < len(words) and len(skipped) < 8 and (words[k] in DESCRIPTIVE | PARTS | NEGATIONS
-                                                       | {"but", "and"} or self._pp_at(words, k)):
+                                                       | {"but", "and", "that", "which"}
+                                                       or self._pp_at(words, k)):
             if self._pp_at(words, k):
                 k = self._pp_at(words, k)
                 continue
