@@ -41,7 +41,7 @@ STATE_WORDS: dict[str, tuple[str, bool]] = {
 }
 #: words between a subject and its predicate that describe a current situation
 DESCRIPTIVE = frozenset(
-    ["is", "are", "was", "were", "be", "been", "being", "am", "seem", "seems", "seemed", "look", "looks", "appear", "appears", "still", "already", "currently", "left", "lying", "lie", "lies", "sitting", "sit", "sits", "standing", "stand", "stands", "kept", "found", "dropped", "fallen", "ended", "up", "have", "has", "had", "got", "gotten", "remain", "remains", "remained", "now", "itself", "themselves", "just", "somehow", "accidentally", "again", "there", "here", "turned", "switched", "scattered", "sitting", "lays", "may", "might", "could", "possibly", "perhaps", "maybe", "probably", "sometimes", "will"]
+    ["is", "are", "was", "were", "be", "been", "being", "am", "seem", "seems", "seemed", "look", "looks", "appear", "appears", "still", "already", "currently", "left", "lying", "lie", "lies", "sitting", "sit", "sits", "standing", "stand", "stands", "kept", "found", "dropped", "fallen", "ended", "up", "have", "has", "had", "got", "gotten", "remain", "remains", "remained", "now", "itself", "themselves", "just", "somehow", "accidentally", "again", "there", "here", "turned", "switched", "scattered", "sitting", "lays", "fell", "slipped", "rolled", "may", "might", "could", "possibly", "perhaps", "maybe", "probably", "sometimes", "will"]
 )
 #: verbs after a subject that announce where it must go (a goal, not a condition)
 MOTION = frozenset(
@@ -60,13 +60,14 @@ ARTICLES = frozenset({"the", "a", "an", "any", "some", "one", "of", "its", "thei
 PARTS = frozenset({"door", "lid", "leaf", "screen", "soil", "surface", "top", "inside", "water",
                    "content", "bottom", "side", "handle", "shelf", "drawer", "bag", "glass", "bottle",
                    "box", "pack", "packet", "jar", "carton", "tub", "container", "roll"})
-PRONOUNS = frozenset({"it", "they", "them", "one", "ones", "its", "their"})
+PRONOUNS = frozenset({"it", "they", "them", "one", "ones", "its", "their", "whose"})
 #: participles that turn a noun phrase into a description of the current situation
-SITUATION_PARTICIPLES = frozenset({"left", "lying", "lie", "lies", "sitting", "found", "dropped", "fallen",
+SITUATION_PARTICIPLES = frozenset({"left", "lying", "lie", "lies", "sitting", "found", "dropped", "fallen", "fell",
+                                   "slipped", "rolled",
                                    "scattered", "forgotten", "standing", "kept", "ended"})
 INDEFINITE = frozenset({"a", "an", "any", "every", "each", "some", "no"})
 NEGATIONS = frozenset({"not", "no", "none", "never", "without", "nothing", "nobody", "nowhere"})
-UNCERTAIN = frozenset({"may", "might", "possibly", "perhaps", "maybe", "could", "sometimes",
+UNCERTAIN = frozenset({"may", "might", "possibly", "possible", "perhaps", "maybe", "could", "sometimes",
                        "occasionally", "potentially", "probably", "likely"})
 CONDITIONAL = ("depending on whether", "depending on if", "in case", "as long as", "provided that",
                "only if", "if not", "if so", "whether", "if", "unless", "whenever", "when", "while", "once",
@@ -194,7 +195,8 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
             r",\s*(?:and|but|while)\s+|\s+but\s+|;\s*|:\s+|\s+-\s+|\s+while\s+", sentence) if p and p.strip()]
         out: list[tuple[str, str | None, str]] = []
         for p in parts:
-            if SCENE_START.match(p) or re.search(r"\b(has|have|contains)\b", p.lower()) and not (
+            if SCENE_START.match(p) or re.search(r"\b(has|have|contains)\b(?!\s+(?:been|\w+(?:ed|en))\b)",
+                                                 p.lower()) and not (
                     re.search(r"\bif\b", p.lower()) or set(re.findall(r"[a-z]+", p.lower())) & UNCERTAIN):
                 out.append((p, None, "scene"))
             else:
@@ -214,7 +216,7 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
             pieces[-1] = (pieces[-1][0], cue, "consequence")
     m = re.search(r",\s*(then\s+)?|\bthen\b|\s+-\s+|:\s*", tail)
     if head and not (m and re.match(r"\s*(then\b|,\s*[a-z]+ (it|them)\b)", tail[m.start():].lower())):
-        other = re.search(r"[,;]?\s*\b(otherwise|else|or else|instead)\b", tail)
+        other = re.search(r"[,;]?\s*\b(otherwise|(?<!where )(?<!thing )else|or else|instead)\b", tail)
         cond = tail[: other.start()] if other else tail
         nested = _first_cue(cond.lower()[1:], CONDITIONAL)
         if nested:
@@ -380,7 +382,8 @@ class _Reader:
         if k >= len(words) or words[k] not in PREP_ON | PREP_IN or (
                 skipped and skipped[-1] in ("switched", "turned")):  # "switched on" is not a place
             return []
-        goal = self._is_goal(words, m, skipped) or words[k] in ("into", "onto")
+        goal = self._is_goal(words, m, skipped) or (
+            words[k] in ("into", "onto") and not set(skipped) & SITUATION_PARTICIPLES)
         article = words[m.start - 1] if m.start > 0 else ""
         described = bool(set(skipped) & SITUATION_PARTICIPLES) or (
             not skipped and (article in INDEFINITE or article not in ARTICLES))
