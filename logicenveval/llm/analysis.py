@@ -375,8 +375,8 @@ class _Reader:
             return []  # the last item of a list carries the location
         k = m.end
         skipped: list[str] = []
-        while k < len(words) and (words[k] in DESCRIPTIVE | MOTION | NEGATIONS | PARTS | {"top", "of", "straight"}
-                                  ) and words[k] not in PREP_ON | PREP_IN:
+        while k < len(words) and (words[k] in DESCRIPTIVE | MOTION | NEGATIONS | PARTS
+                                  | {"top", "of", "straight", "that", "which"}) and words[k] not in PREP_ON | PREP_IN:
             skipped.append(words[k])
             k += 1
         if k >= len(words) or words[k] not in PREP_ON | PREP_IN or (
@@ -462,7 +462,15 @@ class _Reader:
         for m in self.lex.find_mentions(toks):
             if all(w in ARTICLES for w in words[k + 1 : k + 1 + m.start]):
                 return k + 1 + m.end
-        return 0
+        # a place the task has no role for ("the candle on the coffee table is burning")
+        j = k + 1
+        while j < len(words) and words[j] in ARTICLES:
+            j += 1
+        end = j
+        while end < min(j + 2, len(words)) and words[end].isalpha() and words[end] not in (
+                STATE_WORDS.keys() | DESCRIPTIVE | NEGATIONS | MOTION | PREP_ON | PREP_IN | {"and", "or", "but"}):
+            end += 1
+        return end if j > k + 1 and end > j else 0
 
     def _attribute(self, words: list[str], m: Mention, negated: bool) -> list[Fact]:
         k = m.end
