@@ -79,7 +79,8 @@ ABSENT = frozenset({"missing", "absent", "gone", "lacking", "unavailable"})
 AVAILABILITY = frozenset({"available", "any", "present", "possible", "exist", "exists", "there"})
 PREP_ON = frozenset({"on", "onto", "atop", "upon"})
 PREP_IN = frozenset({"in", "inside", "into", "within"})
-SCENE_START = re.compile(r"^\W*(there (is|are)\b(?! (no|not|maybe|possibly))|you are\b|we are\b)", re.I)
+SCENE_START = re.compile(r"^\W*([a-z' ,]{0,50}?\bthere (is|are)\b(?! (no|not|maybe|possibly))|you are\b|we are\b)",
+                         re.I)
 
 _CONTRACTIONS = [
     (r"\b(it|that|there|what|he|she)'s\b", r"\1 is"), (r"\b(they|we|you)'re\b", r"\1 are"),
@@ -330,6 +331,7 @@ class _Reader:
                 if r in self.last_location:
                     base = self.last_location[r]
                     facts.append(Fact(r, base.condition, "location", base.key, negated=True))
+        facts += self._fronted_place(words, mentions)
         for m in subjects:
             k = m.end
             while k < len(words) and (words[k] in DESCRIPTIVE or self._pp_at(words, k)):
@@ -355,6 +357,24 @@ class _Reader:
                 self.last_location[f.subject] = f
         names = tuple(dict.fromkeys(r for m in subjects for r in m.roles))
         return list(dict.fromkeys(facts)), names
+
+    def _fronted_place(self, words: list[str], mentions: list[Mention]) -> list[Fact]:
+        """`On the bed there may be a book, an alarm clock or a phone`: the place comes first."""
+        if not words or words[0] not in PREP_ON | PREP_IN or "there" not in words:
+            return []
+        place = next((m for m in mentions if m.kind in ("role", "floor")), None)
+        there = words.index("there")
+        if place is None or place.end > there or not all(w in ARTICLES for w in words[1 : place.start]):
+            return []
+        out = []
+        for m in mentions:
+            if m.start > there and m.kind == "role":
+                for s in m.roles:
+                    for t in place.roles:
+                        if s != t:
+                            cond = f"on({s}, {t})" if words[0] in PREP_ON or t == "floor" else f"inside({s}, {t})"
+                            out.append(Fact(s, cond, "location", t, modifier=True))
+        return out
 
     def _subjects(self, words: list[str], mentions: list[Mention], idx: int) -> list[str]:
         group = [idx]
