@@ -206,7 +206,8 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
         return out
     start, cue = best
     after = re.match(r"\W*([a-z' ]{0,30}?)\W*$", low[start + len(cue):])
-    if cue == "if" and after and set(after.group(1).split()) & AVAILABILITY and len(after.group(1).split()) <= 3:
+    if cue in ("if", "in case") and after and set(after.group(1).split()) & AVAILABILITY \
+            and len(after.group(1).split()) <= 3:
         return [(sentence, "if available", "uncertain")]
     head = sentence[:start].strip(" ,-")
     tail = sentence[start + len(cue):]
@@ -406,7 +407,8 @@ class _Reader:
             words[k] in ("into", "onto") and not set(skipped) & SITUATION_PARTICIPLES)
         article = words[m.start - 1] if m.start > 0 else ""
         described = bool(set(skipped) & SITUATION_PARTICIPLES) or (
-            not skipped and (article in INDEFINITE or article not in ARTICLES))
+            not skipped and (article in INDEFINITE or article not in ARTICLES)) or (
+            skipped[:1] in (["that"], ["which"]) and article in INDEFINITE)  # "any toy that is on the floor"
         modifier = not goal and described
         subjects = self._subjects(words, mentions, idx)
         out: list[Fact] = []
