@@ -75,6 +75,8 @@ CONDITIONAL = ("depending on whether", "depending on if", "in case", "as long as
                "should there be", "should")
 ELSE_CUES = ("otherwise", "else", "failing that", "if not", "if there is not", "if there are not")
 ELSEWHERE = ("anywhere else", "elsewhere", "somewhere else", "any other place", "not there")
+#: verbs whose "from" names a source ("fill the bowl from the bag"), not a location
+SOURCE_VERBS = frozenset({"fill", "refill", "pour", "top", "water", "feed"})
 #: words that say an object is absent: "the roll is missing"
 ABSENT = frozenset({"missing", "absent", "gone", "lacking", "unavailable"})
 AVAILABILITY = frozenset({"available", "any", "present", "possible", "exist", "exists", "there"})
@@ -401,11 +403,14 @@ class _Reader:
                                   | {"top", "of", "straight", "that", "which"}) and words[k] not in PREP_ON | PREP_IN:
             skipped.append(words[k])
             k += 1
-        if k >= len(words) or words[k] not in PREP_ON | PREP_IN or (
+        if k >= len(words) or words[k] not in PREP_ON | PREP_IN | {"from"} or (
                 skipped and skipped[-1] in ("switched", "turned")):  # "switched on" is not a place
             return []
-        goal = self._is_goal(words, m, skipped) or (
-            words[k] in ("into", "onto") and not set(skipped) & SITUATION_PARTICIPLES)
+        if words[k] == "from" and (skipped or m.kind != "role" or set(words[max(0, m.start - 4) : m.start]) & SOURCE_VERBS):
+            return []  # "fill it from the bag" names a source, not where the object is
+        # "the wipes from the table": where the object is now, whatever verb precedes it
+        goal = words[k] != "from" and (self._is_goal(words, m, skipped) or (
+            words[k] in ("into", "onto") and not set(skipped) & SITUATION_PARTICIPLES))
         article = words[m.start - 1] if m.start > 0 else ""
         described = bool(set(skipped) & SITUATION_PARTICIPLES) or (
             not skipped and (article in INDEFINITE or article not in ARTICLES)) or (
@@ -413,7 +418,7 @@ class _Reader:
         modifier = not goal and described
         subjects = self._subjects(words, mentions, idx)
         out: list[Fact] = []
-        while k < len(words) and words[k] in PREP_ON | PREP_IN:
+        while k < len(words) and words[k] in PREP_ON | PREP_IN | {"from"}:
             prep = words[k]
             if prep == "on" and words[k + 1 : k + 3] == ["top", "of"]:
                 k += 2
@@ -424,11 +429,11 @@ class _Reader:
                 break
             for s in dict.fromkeys(subjects):
                 for t in target.roles:
-                    if t == s:
+                    if t == s or (prep == "from" and target.kind == "role" and t not in self.lex.holders):
                         continue
                     if target.kind == "room":
                         cond = f"in_room({s}, {t})"
-                    elif prep in PREP_ON or t == "floor":
+                    elif prep in PREP_ON or t == "floor" or (prep == "from" and t not in self.lex.containers):
                         cond = f"on({s}, {t})"
                     else:
                         cond = f"inside({s}, {t})"

@@ -59,6 +59,10 @@ class Lexicon:
     domains: dict[str, dict[str, list[str]]] = field(default_factory=dict)
     #: role -> fixed attributes given by the brief
     fixed: dict[str, dict[str, str]] = field(default_factory=dict)
+    #: roles one puts things *in* rather than *on* (containers that are not surfaces)
+    containers: set[str] = field(default_factory=set)
+    #: roles things can rest on or in (surfaces and containers)
+    holders: set[str] = field(default_factory=set)
 
     @classmethod
     def build(cls, brief: Mapping[str, Any], catalog: Catalog) -> Lexicon:
@@ -76,6 +80,10 @@ class Lexicon:
                     lex.phrases.setdefault(words_of(n)[1:], set()).add(name)
             lex.domains[name] = {k: [v.lower() for v in vs] for k, vs in (cat.attributes if cat else {}).items()}
             lex.fixed[name] = {k: str(v).lower() for k, v in role.get("attributes", {}).items()}
+            if cat is not None and cat.container and not cat.surface:
+                lex.containers.add(name)
+            if cat is not None and (cat.container or cat.surface):
+                lex.holders.add(name)
         for room in lex.rooms:
             lex.room_phrases[words_of(room)] = room
         # "the table" for the dining table, "the machine" for the washing machine: a head noun
