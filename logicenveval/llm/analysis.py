@@ -306,6 +306,11 @@ class _Reader:
             if before:
                 found.append(Mention(before[-1].roles, i, i + 1,
                                      "pronoun" if before[-1].kind == "role" else before[-1].kind))
+            elif w == "one" and "there" in words[max(0, i - 3) : i] and self.recent:
+                # "... with the cloth if there is one": the object named last, not the topic,
+                # unless the clause already spoke of something ("if it is elsewhere or there is none")
+                prior = [p for p in found if p.kind == "pronoun" and p.start < i]
+                found.append(Mention(prior[-1].roles if prior else (self.recent[-1],), i, i + 1, "pronoun"))
             elif self.topic:
                 found.append(Mention(self.topic, i, i + 1, "pronoun" if self.topic_kind == "role" else "floor"))
         found.sort(key=lambda m: m.start)
