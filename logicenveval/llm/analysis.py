@@ -140,6 +140,8 @@ class Factor:
     #: (factor id, values) under which this factor is asked: the conditions it was stated under
     context: list[tuple[str, frozenset[str]]] = field(default_factory=list)
     raw_context: list[tuple[tuple[str, str, str], bool, str]] = field(default_factory=list, repr=False)
+    #: every (sentence, clause) where the factor's condition is stated, not only the first
+    places: set[tuple[int, int]] = field(default_factory=set, repr=False)
 
 
 def _allowed(dep: Factor, negated: bool, value: str) -> frozenset[str]:
@@ -607,6 +609,7 @@ def analyse(brief: Mapping[str, Any], catalog: Catalog | None = None) -> TaskAna
                                            "targets": [], "values": [],
                                            "context": [c for c in context if c[0] != slot]
                                            or [c for c in carried if c[0] != slot and f.kind == "exists"]})
+            entry.setdefault("places", set()).add((cl.sentence, ci))
             if cl.role == "condition":
                 value = f.condition.rsplit(", ", 1)[1][:-1] if f.kind == "attr" else f.key
                 added.append((slot, f.negated, value))
@@ -659,6 +662,7 @@ def analyse(brief: Mapping[str, Any], catalog: Catalog | None = None) -> TaskAna
                         e["order"], e["sentence"], e["clause"], e.get("consequences", []),
                         set(e.get("roles", set())))
         factor.raw_context = e.get("context", [])
+        factor.places = set(e.get("places", set()))
         slot_factor[(subject, kind, key)] = factor
         factors.append(factor)
     for factor in factors:
@@ -687,6 +691,11 @@ def _group(factors: list[Factor]) -> tuple[list[list[str]], list[set[str]]]:
     for a in factors:
         for b in factors:
             if a.subject != b.subject and a.sentence == b.sentence >= 0 and a.clause != b.clause:
+                parent[find(b.subject)] = find(a.subject)
+            elif a.subject != b.subject and any(sa == sb and ca != cb for sa, ca in a.places
+                                                for sb, cb in b.places):
+                # restated later in a sentence that makes them depend ("a dirty shirt goes into the
+                # machine, unless the machine is running")
                 parent[find(b.subject)] = find(a.subject)
     subject_of = {f.id: f.subject for f in factors}
     for f in factors:  # a factor asked only under another's value belongs to its subtask
