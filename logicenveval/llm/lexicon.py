@@ -114,7 +114,10 @@ class Lexicon:
             for n in range(min(longest, len(words) - i), 0, -1):
                 key = tuple(words[i : i + n])
                 if key in self.room_phrases and n > 0:
-                    found = Mention((self.room_phrases[key],), i, i + n, "room")
+                    if words[i + n : i + n + 1] == ["floor"]:  # "the laundry room floor"
+                        found = Mention(("floor",), i, i + n + 1, "floor")
+                    else:
+                        found = Mention((self.room_phrases[key],), i, i + n, "room")
                     break
                 if key in self.phrases:
                     found = Mention(self._disambiguate(self.phrases[key], words, i), i, i + n)
