@@ -351,7 +351,7 @@ class _Reader:
                 # "the roll by the toilet is missing", "we are out of bread"
                 facts += [Fact(r, f"exists({r})", "exists", negated=True) for r in m.roles]
                 break
-            before = words[max(0, m.start - 6) : m.start]
+            before = words[max(0, m.start - 8) : m.start]  # "there may or may not be a loaf"
             if "there" in before or "no" in before[-2:]:
                 facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
                 break
@@ -598,7 +598,9 @@ def analyse(brief: Mapping[str, Any], catalog: Catalog | None = None) -> TaskAna
         if cl.role == "else" and context:
             slot0, neg0, key0 = context[-1]
             context[-1] = (slot0, not neg0, key0)
-        conditional = cl.role in ("condition", "uncertain")
+        # "put it in the fridge - the fridge door may already be open": an uncertain remark
+        conditional = cl.role in ("condition", "uncertain") or (
+            cl.role == "consequence" and bool(set(re.findall(r"[a-z]+", cl.text.lower())) & UNCERTAIN))
         added: list[tuple[tuple[str, str, str], bool, str]] = []
         for f in cl.facts:
             if f.goal or not (conditional or (f.modifier and cl.role not in ("scene",))
