@@ -312,10 +312,19 @@ class _Reader:
                 # "... with the cloth if there is one": the object named last, not the topic,
                 # unless the clause already spoke of something ("if it is elsewhere or there is none")
                 prior = [p for p in found if p.kind == "pronoun" and p.start < i]
-                found.append(Mention(prior[-1].roles if prior else (self.recent[-1],), i, i + 1, "pronoun"))
+                things = [r for r in self.recent if r not in self.lex.holders] or self.recent
+                found.append(Mention(prior[-1].roles if prior else (things[-1],), i, i + 1, "pronoun"))
             elif self.topic:
                 found.append(Mention(self.topic, i, i + 1, "pronoun" if self.topic_kind == "role" else "floor"))
         found.sort(key=lambda m: m.start)
+        for n, m in enumerate(found):
+            # "use the sponge in case it lies on the counter": a thing is not on itself
+            later = {r for x in found[n + 1:] if x.kind == "role"
+                     and set(words[max(0, x.start - 2) : x.start]) & (PREP_ON | PREP_IN) for r in x.roles}
+            if m.kind == "pronoun" and set(m.roles) <= later:
+                other = [r for r in self.recent if r not in later]
+                if other:
+                    found[n] = Mention((other[-1],), m.start, m.end, m.kind)
         for m in found:
             if m.kind in ("role", "pronoun"):
                 self.recent = [r for r in self.recent if r not in m.roles] + list(m.roles)

@@ -20,10 +20,15 @@ COLOR_WORDS = frozenset(
 )
 
 
+_VERB_IES = frozenset({"lies", "dies", "ties"})
+
+
 def singular(word: str) -> str:
     """Crude English singular, good enough for household nouns (boxes, dishes, shelves, toys)."""
     if len(word) <= 3 or word.endswith("ss"):
         return word
+    if word in _VERB_IES:
+        return word[:-1]  # "lies" is the verb "lie", not a plural of "ly"
     for suffix, repl in (("ies", "y"), ("ves", "f"), ("xes", "x"), ("ches", "ch"), ("shes", "sh"),
                          ("sses", "ss"), ("oes", "o")):
         if word.endswith(suffix):
