@@ -145,3 +145,11 @@ def test_somewhere_else_is_not_an_else_branch() -> None:
                       {"book": ("book",), "shelf": ("bookshelf",)}), CATALOG)
     assert [c.role for c in a.clauses] == ["consequence", "condition"]
     assert "somewhere else" in a.clauses[-1].text
+
+
+def test_already_refers_to_the_previous_instruction() -> None:
+    got = _conditions("Put the plate on the dining table unless it is already there.",
+                      {"plate": ("plate",), "table": ("dining_table",)})
+    assert "on(plate, table)" in got
+    got = _conditions("Switch the lamp on unless it is already on.", {"lamp": ("table_lamp",)})
+    assert "state(lamp, toggled_on)" in got

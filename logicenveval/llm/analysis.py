@@ -274,6 +274,10 @@ class _Reader:
         self.topic_kind = "role"
         self.recent: list[str] = []
         self.last_location: dict[str, Fact] = {}
+        #: the last goal location and the last state spoken of ("put the pan on the stove",
+        #: "switch the toaster on"), for "unless it is already there / on"
+        self.last_goal: Fact | None = None
+        self.last_state: dict[str, Fact] = {}
 
     def _recent_first(self, m: Mention) -> Mention:
         """An ambiguous singular mention (`the rack`) means the candidate mentioned last."""
@@ -339,6 +343,9 @@ class _Reader:
         mentions = self.mentions(words, toks)
         subjects = [m for m in mentions if m.kind in ("role", "pronoun")]
         negated = any(_negation(w) for w in words)
+        already = self._already(words, mentions, negated)
+        if already is not None:
+            return [already], (already.subject,)
         facts: list[Fact] = []
         for idx, m in enumerate(mentions):
             if m.kind not in ("role", "pronoun"):
@@ -375,8 +382,27 @@ class _Reader:
         for f in facts:
             if f.kind == "location" and not f.goal:
                 self.last_location[f.subject] = f
+            if f.kind == "location" and f.goal:
+                self.last_goal = f
+            if f.kind == "state":
+                self.last_state[f.key] = f
         names = tuple(dict.fromkeys(r for m in subjects for r in m.roles))
         return list(dict.fromkeys(facts)), names
+
+    def _already(self, words: list[str], mentions: list[Mention], negated: bool) -> Fact | None:
+        """`unless it is already there / on`: the condition is the previous instruction's result."""
+        if "already" not in words or any(m.kind == "role" for m in mentions) or len(words) > 6:
+            return None
+        after = words[words.index("already") + 1 :]
+        if after[:1] in (["there"], ["here"]) and self.last_goal is not None:
+            g = self.last_goal
+            return Fact(g.subject, g.condition, "location", g.key, negated=negated)
+        if after and after[0] in STATE_WORDS:
+            flag, pol = STATE_WORDS[after[0]]
+            st = self.last_state.get(flag)
+            if st is not None:
+                return Fact(st.subject, st.condition, "state", flag, negated=negated != (not pol))
+        return None
 
     def _fronted_place(self, words: list[str], mentions: list[Mention]) -> list[Fact]:
         """`On the bed there may be a book, an alarm clock or a phone`: the place comes first."""
