@@ -174,7 +174,7 @@ def _first_cue(low: str, cues: tuple[str, ...]) -> tuple[int, str] | None:
     for cue in cues:
         pattern = rf"(?<![a-z]){re.escape(cue)}\b"
         if cue == "should":  # only the inverted conditional: "should the hamper be full, ..."
-            pattern = r"(?:^|[,;:(-]\s*|\b(?:and|or|but)\s+)should\b(?=\s+(?:the|there|a|an|it|they|any|one|your)\b)"
+            pattern = r"(?:^|[,;:(-]\s*|\b(?:and|or|but)\s+)should\b(?=\s+(?:the|there|a|an|it|they|any|one|your|my|our|its|their|this|that|these|those|some|no)\b)"
         m = re.search(pattern, low)
         if m is None:
             continue
