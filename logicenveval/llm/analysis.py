@@ -371,7 +371,15 @@ class _Reader:
             if "there" in before or "no" in before[-2:]:
                 facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
                 break
-        if not subjects and self.topic and self.topic_kind == "role" and len(words) <= 4:
+        if not subjects and self.topic and self.topic_kind == "role":
+            # "The potted plant: dusty leaves get misted ..." - a state of a part of the topic
+            for i, w in enumerate(words[:-1]):
+                if w in STATE_WORDS and w not in ("on", "off", "out") and words[i + 1] in PARTS:
+                    flag, pol = STATE_WORDS[w]
+                    facts += [Fact(r, f"state({r}, {flag})", "state", flag, negated=not pol, modifier=True)
+                              for r in self.topic]
+                    break
+        if not subjects and not facts and self.topic and self.topic_kind == "role" and len(words) <= 4:
             # an elliptic condition about the topic: "when dry, ...", "if not ripe, ..."
             for w in words:
                 if w in STATE_WORDS and w not in ("on", "off", "out"):
