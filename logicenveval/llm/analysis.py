@@ -516,8 +516,17 @@ class _Reader:
                 break  # `on the table` is a place, not `switched on`
             found.append((w, local_neg, False))
             k += 1
-            while k < len(words) and words[k] in {"and", "but", "or", ","}:
-                k += 1
+            j = k
+            while j < len(words) and words[j] in {"and", "but", "or", ","}:
+                j += 1
+            extra: list[str] = []
+            while j > k and j < len(words) and words[j] in DESCRIPTIVE | NEGATIONS and len(extra) < 3:
+                extra.append(words[j])  # "not empty but is dirty": each state has its own negation
+                j += 1
+            if j < len(words) and words[j] in STATE_WORDS:
+                if extra:
+                    local_neg = any(_negation(x) for x in extra)
+                k = j
         # "a dirty plate", "wet ones", but not "open it"
         j = m.start - 1 if m.kind == "role" or words[m.start] in ("one", "ones") else -1
         while j >= 0 and words[j] in set(STATE_WORDS) | {"and", "but"} and words[j] not in ("on", "off"):
