@@ -507,6 +507,8 @@ class _Reader:
             k += 1
         found: list[tuple[str, bool, bool]] = []  # (word, polarity-negated, modifier)
         local_neg = any(_negation(w) for w in skipped)
+        # "a water bowl that has water but is dirty": a restrictive relative clause describes
+        relative = skipped[:1] in (["that"], ["which"]) and m.start > 0 and words[m.start - 1] in INDEFINITE
         while k < len(words) and words[k] in STATE_WORDS:
             w = words[k]
             if w == "out" and not set(skipped) & {"is", "are", "was", "were", "already", "still"}:
@@ -514,7 +516,7 @@ class _Reader:
             if w in ("on", "off") and k + 1 < len(words) and words[k + 1] in ARTICLES | PRONOUNS | {"floor"} \
                     and not (skipped and skipped[-1] in ("switched", "turned")):
                 break  # `on the table` is a place, not `switched on`
-            found.append((w, local_neg, False))
+            found.append((w, local_neg, relative))
             k += 1
             j = k
             while j < len(words) and words[j] in {"and", "but", "or", ","}:
