@@ -49,7 +49,8 @@ MOTION = frozenset(
     ["go", "goes", "going", "belong", "belongs", "should", "must", "needs", "need", "get", "gets", "gotten", "put", "placed", "hung", "moved", "returned", "stored", "back", "brought", "taken", "carried",
      # passive voice: "a dirty shirt is put into the hamper", "clean ones are folded onto the shelf"
      "laid", "thrown", "tossed", "loaded", "folded", "filed", "shelved", "stowed", "sorted", "tucked",
-     "packed", "stacked", "transferred", "binned", "hanged", "set", "parked", "wiped", "refilled"]
+     "packed", "stacked", "transferred", "binned", "hanged", "set", "parked", "wiped", "refilled",
+     "end"]  # "should end up on the rack"
 )
 #: action verbs before an object: a location after the object is a goal
 ACTIONS = frozenset(
@@ -401,14 +402,16 @@ class _Reader:
         """`unless it is already there / on`: the condition is the previous instruction's result."""
         if "already" not in words or any(m.kind == "role" for m in mentions) or len(words) > 6:
             return None
-        after = words[words.index("already") + 1 :]
-        if after[:1] in (["there"], ["here"]) and self.last_goal is not None:
+        said = {r for m in mentions if m.kind == "pronoun" for r in m.roles}
+        after = [w for w in words[words.index("already") + 1 :] if w not in {"is", "are", "be", "was", "were"}]
+        if after[:1] in (["there"], ["here"]) and self.last_goal is not None and (
+                not said or self.last_goal.subject in said):
             g = self.last_goal
             return Fact(g.subject, g.condition, "location", g.key, negated=negated)
         if after and after[0] in STATE_WORDS:
             flag, pol = STATE_WORDS[after[0]]
             st = self.last_state.get(flag)
-            if st is not None:
+            if st is not None:  # pronouns before "already on" are often the sentence topic: trust the state
                 return Fact(st.subject, st.condition, "state", flag, negated=negated != (not pol))
         return None
 
@@ -629,7 +632,8 @@ def analyse(brief: Mapping[str, Any], catalog: Catalog | None = None) -> TaskAna
     grammatical = 0  # pieces split at ':' or ';' still belong to one sentence for grouping
     for si, sent in enumerate(sentences):
         for text, cue, role in _subsplit(_split_clauses(sent)):
-            facts, names = reader.facts(text)
+            # "should there be an umbrella: ..." - the cue itself says the object may be absent
+            facts, names = reader.facts("there is " + text if cue == "should there be" else text)
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
         if sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences):
             grammatical += 1
