@@ -211,9 +211,9 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
                             else "statement"))
         return out
     start, cue = best
-    after = re.match(r"\W*([a-z' ]{0,30}?)\W*$", low[start + len(cue):])
+    after = re.match(r"\W*([a-z' ]{0,30}?)\W*(?:$|[,;]|\s-\s)", low[start + len(cue):])
     if cue in ("if", "in case") and after and set(after.group(1).split()) & AVAILABILITY \
-            and len(after.group(1).split()) <= 3:
+            and len(after.group(1).split()) <= 3 and not set(after.group(1).split()) & NEGATIONS:
         return [(sentence, "if available", "uncertain")]
     head = sentence[:start].strip(" ,-")
     tail = sentence[start + len(cue):]
@@ -413,6 +413,9 @@ class _Reader:
             st = self.last_state.get(flag)
             if st is not None:  # pronouns before "already on" are often the sentence topic: trust the state
                 return Fact(st.subject, st.condition, "state", flag, negated=negated != (not pol))
+            if self.recent:  # "opening the wardrobe first, unless the door is already open"
+                r = self.recent[-1]
+                return Fact(r, f"state({r}, {flag})", "state", flag, negated=negated != (not pol))
         return None
 
     def _fronted_place(self, words: list[str], mentions: list[Mention]) -> list[Fact]:
