@@ -19,6 +19,9 @@ class PhysicsSummary(BaseModel):
     relation: bool
     #: typed failures as plain dicts (code, objects, measured, tolerance, message, dimension)
     failures: list[dict[str, Any]] = Field(default_factory=list)
+    #: the extra plausibility checks beyond the paper's PhyPR (`physics.EXTENDED_CODES`)
+    extended: bool = True
+    extended_failures: list[dict[str, Any]] = Field(default_factory=list)
 
 
 class EnvSample(BaseModel):
@@ -45,6 +48,8 @@ class EnvSample(BaseModel):
     sim_ms: dict[str, float] = Field(default_factory=dict)
     #: ids of the task's killable mutants that fail here (valid environments only; `faudr_mut`)
     killed_mutants: list[str] = Field(default_factory=list)
+    #: policy kind -> simulator ticks of the run (deterministic companion of `sim_ms`)
+    sim_ticks: dict[str, int] = Field(default_factory=dict)
 
 
 class UnitRecord(BaseModel):
