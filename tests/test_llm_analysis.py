@@ -153,3 +153,11 @@ def test_already_refers_to_the_previous_instruction() -> None:
     assert "on(plate, table)" in got
     got = _conditions("Switch the lamp on unless it is already on.", {"lamp": ("table_lamp",)})
     assert "state(lamp, toggled_on)" in got
+
+
+def test_coordinated_instructions_keep_their_own_conditions() -> None:
+    a = analyse(brief("Turn off the lamp if it is on, and close the fridge if it is open.",
+                      {"lamp": ("table_lamp",), "fridge": ("fridge",)}), CATALOG)
+    by_id = {f.id: f for f in a.factors}
+    assert "fridge_open" in by_id and "lamp_toggled_on" in by_id
+    assert by_id["fridge_open"].context == []  # asked whatever the lamp's state

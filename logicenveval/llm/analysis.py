@@ -656,6 +656,14 @@ def analyse(brief: Mapping[str, Any], catalog: Catalog | None = None) -> TaskAna
         if cl.sentence != current_sentence:
             carried = context if cl.role in ("statement", "consequence") else []
             current_sentence, context = cl.sentence, []
+        elif (cl.role == "condition" and ci >= 2 and clauses[ci - 1].role == "consequence"
+              and clauses[ci - 2].role == "condition" and clauses[ci - 2].sentence == cl.sentence
+              and (clauses[ci - 1].cue != cl.cue or (
+                  ci >= 3 and clauses[ci - 3].role == "consequence"
+                  and clauses[ci - 3].sentence == cl.sentence))):
+            # "switch off the lamp in case it is on, and shut the wardrobe if it is open": a new
+            # instruction with its own postposed condition, not nested under the previous one
+            context = []
         if cl.role == "else" and context:
             slot0, neg0, key0 = context[-1]
             context[-1] = (slot0, not neg0, key0)
