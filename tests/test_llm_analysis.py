@@ -109,3 +109,29 @@ def test_absence_and_certain_scene_facts() -> None:
     values = factor_values(text, {"sofa": ("sofa",), "toy": ("toy",), "table": ("dining_table",),
                                   "sponge": ("sponge",)})
     assert values == {"sponge_present": {"exists(sponge)", "not exists(sponge)"}}
+
+
+def test_analysis_is_memoised_per_brief_and_callers_get_copies() -> None:
+    from logicenveval.llm import analysis
+
+    b = brief("If there is a toy on the floor, put it into the toy chest.", {"toy": ["toy"]})
+    first = analyse(b, CATALOG)
+    first.factors.clear()  # a caller changing its copy does not change the next answer
+    second = analyse(dict(b), CATALOG)
+    assert second.factors and second == analysis._analyse(b, CATALOG)
+    assert analyse(b, CATALOG) is not second
+
+
+def test_reply_schema_is_built_once_per_class() -> None:
+    from pydantic import BaseModel
+
+    from logicenveval.llm.ask import _schema_of, reply_schema
+
+    class Reply(BaseModel):
+        answer: str
+
+    _schema_of.cache_clear()
+    first = reply_schema(Reply)
+    first["mutated"] = True
+    assert reply_schema(Reply) == Reply.model_json_schema()
+    assert _schema_of.cache_info().misses == 1

@@ -6,6 +6,7 @@ the server-side constraint and the validation can never disagree.
 
 from __future__ import annotations
 
+import copy
 import hashlib
 import json
 from functools import lru_cache
@@ -29,6 +30,16 @@ _SPLIT = "=== user ==="
 def _jinja() -> Environment:
     return Environment(loader=PackageLoader("logicenveval", "llm/prompts"), undefined=StrictUndefined,
                        keep_trailing_newline=False, autoescape=False)
+
+
+@lru_cache(maxsize=256)
+def _schema_of(reply_model: type[BaseModel]) -> dict[str, Any]:
+    return reply_model.model_json_schema()
+
+
+def reply_schema(reply_model: type[BaseModel]) -> dict[str, Any]:
+    """The JSON schema of a reply class, built once per class (pydantic rebuilds it per call)."""
+    return copy.deepcopy(_schema_of(reply_model))
 
 
 def render_messages(kind: str, payload: dict[str, Any], schema: dict[str, Any]) -> list[dict[str, str]]:
@@ -72,7 +83,7 @@ def ask(
     times with the validation error appended; then `ModelReplyError` names the kind, the model
     and the first invalid field, and the raw replies are saved under `run_dir/llm_errors/`.
     """
-    schema = reply_model.model_json_schema()
+    schema = reply_schema(reply_model)
     messages = render_messages(kind, payload, schema)
     replies: list[str] = []
     problem = ""

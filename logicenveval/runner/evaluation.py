@@ -8,16 +8,26 @@ from __future__ import annotations
 
 import time
 from collections.abc import Mapping
+from dataclasses import dataclass
 from typing import Any
 
 from logicenveval.domain.catalog import Catalog
 from logicenveval.metrics.evaluate import coverage
-from logicenveval.metrics.records import EnvSample, PhysicsSummary
+from logicenveval.metrics.records import EnvSample, PhysicsSummary, VerdictTrace
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import Task
-from logicenveval.physics import check_env
+from logicenveval.physics import PhysicsReport, check_env
 from logicenveval.sim.simulator import simulate
 from logicenveval.sim.world import holds_initial
+
+
+@dataclass(frozen=True)
+class Evaluation:
+    """The measured sample plus what the reports show (physics report for the render, traces)."""
+
+    sample: EnvSample
+    physics: PhysicsReport
+    traces: dict[str, VerdictTrace]
 
 
 def evaluate_env(
@@ -26,8 +36,12 @@ def evaluate_env(
     env: EnvSpec,
     policies: Mapping[str, Any],
     catalog: Catalog,
-) -> EnvSample:
-    """Measure one environment; never raises for a bad environment (that is a finding)."""
+) -> Evaluation:
+    """Measure one environment; never raises for a bad environment (that is a finding).
+
+    Each policy runs once, traced: the trace costs a list append per node tick, and it spares
+    the report a second simulation of every (environment, BT) pair.
+    """
     report = check_env(env, catalog)
     failures = [
         f.model_dump(mode="json")
@@ -43,12 +57,15 @@ def evaluate_env(
     cov = coverage(task, holds_initial(env, catalog), env.roles)
     verdicts: dict[str, str] = {}
     sim_ms: dict[str, float] = {}
+    traces: dict[str, VerdictTrace] = {}
     for kind, policy in policies.items():
         start = time.perf_counter()
-        verdict = simulate(policy, env, task, catalog)
+        verdict = simulate(policy, env, task, catalog, trace=True)
         sim_ms[kind] = (time.perf_counter() - start) * 1000.0
         verdicts[kind] = verdict.status
-    return EnvSample(
+        traces[kind] = VerdictTrace(status=verdict.status, message=verdict.message or "",
+                                    trace=[str(t) for t in verdict.trace])
+    sample = EnvSample(
         generator=generator,
         task_id=task.id,
         env_id=env.env_id,
@@ -62,3 +79,4 @@ def evaluate_env(
         verdicts=verdicts,
         sim_ms=sim_ms,
     )
+    return Evaluation(sample=sample, physics=report, traces=traces)

@@ -76,7 +76,7 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
     pending: list[UnitSpec] = []
     for spec in specs:
         stored = store.load(spec.generator, spec.task_id)
-        if stored is None:
+        if stored is None or not store.files_intact(stored):
             pending.append(spec)
         else:
             records[(spec.generator, spec.task_id)] = stored
@@ -99,8 +99,10 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
             progress.advance(bars[spec.generator])
     ordered = [records[(s.generator, s.task_id)] for s in specs]
     results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start)
-    write_outputs(run_dir, results, ordered)
     from logicenveval.reporting.leaderboard import write_leaderboards
 
-    write_leaderboards(run_dir, results)
+    report_start = time.perf_counter()
+    write_leaderboards(run_dir, results, ordered)
+    results["timing"]["report_seconds"] = round(time.perf_counter() - report_start, 3)
+    write_outputs(run_dir, results, ordered)
     return RunOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused)

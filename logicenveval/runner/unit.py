@@ -20,10 +20,10 @@ from logicenveval.domain.catalog import load_catalog
 from logicenveval.envfiles import env_to_json
 from logicenveval.errors import LogicEnvEvalError
 from logicenveval.generators.base import GenerationContext, make_generator
-from logicenveval.metrics.records import UnitRecord
+from logicenveval.metrics.records import EnvDetail, EnvSample, UnitRecord
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import POLICY_KINDS
-from logicenveval.runner.store import atomic_write_text
+from logicenveval.runner.store import atomic_write_text, text_digest
 from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
 
 
@@ -66,6 +66,7 @@ def _unique_ids(envs: list[EnvSpec]) -> list[EnvSpec]:
 def run_unit(spec: UnitSpec) -> UnitRecord:
     """Generate and evaluate; a failing generation is recorded, never raised."""
     from logicenveval.llm.registry import make_model
+    from logicenveval.physics.render import render_svg
     from logicenveval.runner.evaluation import evaluate_env
     from logicenveval.sim.loader import load_policy
 
@@ -98,16 +99,29 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
                           error=f"internal error: {tb}", gen_seconds=time.perf_counter() - start,
                           llm=_stats(model))
     gen_seconds = time.perf_counter() - start
-    env_dir = run_dir / "envs" / spec.generator / spec.task_id
-    samples = []
+    rel_dir = Path("envs") / spec.generator / spec.task_id
+    samples: list[EnvSample] = []
+    details: list[EnvDetail] = []
+    files: dict[str, str] = {}
     for env in _unique_ids(result.envs):
-        atomic_write_text(env_dir / f"{env.env_id}.json", env_to_json(env))
-        samples.append(evaluate_env(spec.generator, task, env, policies, catalog))
+        _write(run_dir, rel_dir / f"{env.env_id}.json", env_to_json(env), files)
+        done = evaluate_env(spec.generator, task, env, policies, catalog)
+        render = (Path("renders") / spec.generator / spec.task_id / f"{env.env_id}.svg").as_posix()
+        atomic_write_text(run_dir / render, render_svg(env, done.physics), durable=False)
+        samples.append(done.sample)
+        details.append(EnvDetail(env_id=env.env_id, render=render, traces=done.traces))
     if result.artifacts:
-        atomic_write_text(env_dir / "plan.json",
-                          json.dumps(result.artifacts, indent=2, sort_keys=True, default=str) + "\n")
+        _write(run_dir, rel_dir / "plan.json",
+               json.dumps(result.artifacts, indent=2, sort_keys=True, default=str) + "\n", files)
     return UnitRecord(generator=spec.generator, task_id=spec.task_id, samples=samples,
-                      failures=list(result.failures), gen_seconds=gen_seconds, llm=_stats(model))
+                      failures=list(result.failures), gen_seconds=gen_seconds, llm=_stats(model),
+                      details=details, files=files)
+
+
+def _write(run_dir: Path, rel: Path, text: str, files: dict[str, str]) -> None:
+    """A file only generation can rebuild: not fsynced, but its digest goes into the unit."""
+    atomic_write_text(run_dir / rel, text, durable=False)
+    files[rel.as_posix()] = text_digest(text)
 
 
 def _stats(model: object) -> dict[str, float]:
