@@ -13,11 +13,10 @@ uncertain variables with exclusive, exhaustive values — grouped into independe
 
 from __future__ import annotations
 
-import copy
 import json
 import re
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from logicenveval.domain.catalog import Catalog, load_catalog
@@ -516,7 +515,20 @@ def analyse(brief: Mapping[str, Any], catalog: Catalog | None = None) -> TaskAna
         if len(_MEMO) >= 64:
             _MEMO.clear()
         hit = _MEMO[key] = (catalog, _analyse(brief, catalog))
-    return copy.deepcopy(hit[1])
+    return _copy(hit[1])
+
+
+def _copy(a: TaskAnalysis) -> TaskAnalysis:
+    """A copy whose containers are the caller's own (clauses and tuples are immutable)."""
+    return TaskAnalysis(
+        sentences=list(a.sentences),
+        clauses=list(a.clauses),
+        factors=[replace(f, values=dict(f.values), consequences=list(f.consequences), roles=set(f.roles),
+                         context=list(f.context), raw_context=list(f.raw_context)) for f in a.factors],
+        groups=[list(g) for g in a.groups],
+        group_roles=[set(r) for r in a.group_roles],
+        other_roles=set(a.other_roles),
+    )
 
 
 def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:

@@ -6,7 +6,6 @@ the server-side constraint and the validation can never disagree.
 
 from __future__ import annotations
 
-import copy
 import hashlib
 import json
 from functools import lru_cache
@@ -33,13 +32,12 @@ def _jinja() -> Environment:
 
 
 @lru_cache(maxsize=256)
-def _schema_of(reply_model: type[BaseModel]) -> dict[str, Any]:
-    return reply_model.model_json_schema()
-
-
 def reply_schema(reply_model: type[BaseModel]) -> dict[str, Any]:
-    """The JSON schema of a reply class, built once per class (pydantic rebuilds it per call)."""
-    return copy.deepcopy(_schema_of(reply_model))
+    """The JSON schema of a reply class, built once per class (pydantic rebuilds it per call).
+
+    The dict is shared by every request of that class: read it, never change it.
+    """
+    return reply_model.model_json_schema()
 
 
 def render_messages(kind: str, payload: dict[str, Any], schema: dict[str, Any]) -> list[dict[str, str]]:

@@ -18,7 +18,7 @@ from logicenveval.runner.config import RunConfig
 from logicenveval.runner.executors import make_executor
 from logicenveval.runner.results import build_results, write_outputs
 from logicenveval.runner.store import RunStore
-from logicenveval.runner.unit import UnitSpec, run_unit
+from logicenveval.runner.unit import UnitSpec, chunk_units, run_units
 
 
 @dataclass(frozen=True)
@@ -60,6 +60,10 @@ def _preflight(config: RunConfig, run_dir: Path) -> dict[str, Any]:
 
 
 def run(config: RunConfig, *, console: Console | None = None, show_progress: bool = True) -> RunOutcome:
+    executor = make_executor(config.executor, config.workers)
+    warm_up = getattr(executor, "warm_up", None)
+    if callable(warm_up):
+        warm_up()  # workers' imports overlap the checks, preflight and resume scan below
     ids = _check(config)
     tasks = load_tasks(config.tasks_dir, ids)
     run_dir = config.run_dir()
@@ -83,7 +87,6 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
     reused = len(records)
     start = time.perf_counter()
     console = console or Console(stderr=True)
-    executor = make_executor(config.executor, config.workers)
     with Progress(
         TextColumn("[bold]{task.description:<14}"), BarColumn(), MofNCompleteColumn(),
         TimeRemainingColumn(), console=console, disable=not show_progress, transient=False,
@@ -93,10 +96,11 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
                                  completed=sum(1 for (gg, _) in records if gg == g))
             for g in config.generators
         }
-        for spec, record in executor.map_unordered(run_unit, pending):
-            store.save(record)
-            records[(spec.generator, spec.task_id)] = record
-            progress.advance(bars[spec.generator])
+        for _, chunk in executor.map_unordered(run_units, chunk_units(pending, config.workers)):
+            for record in chunk:
+                store.save(record)
+                records[(record.generator, record.task_id)] = record
+                progress.advance(bars[record.generator])
     ordered = [records[(s.generator, s.task_id)] for s in specs]
     results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start)
     from logicenveval.reporting.leaderboard import write_leaderboards

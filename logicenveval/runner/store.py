@@ -88,7 +88,9 @@ class RunStore:
 
     def save(self, record: UnitRecord) -> None:
         payload = record.model_dump(mode="json")
-        text = json.dumps({"sha256": _digest(payload), "unit": payload}, indent=1, sort_keys=True)
+        # compact: with an indent, json falls back to its pure-Python encoder (units hold traces)
+        text = json.dumps({"sha256": _digest(payload), "unit": payload}, sort_keys=True,
+                          separators=(",", ":"))
         atomic_write_text(self.unit_path(record.generator, record.task_id), text + "\n")
 
     def load(self, generator: str, task_id: str) -> UnitRecord | None:

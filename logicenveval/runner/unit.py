@@ -10,6 +10,7 @@ import hashlib
 import json
 import time
 import traceback
+from collections.abc import Sequence
 from pathlib import Path
 
 import numpy as np
@@ -116,6 +117,27 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     return UnitRecord(generator=spec.generator, task_id=spec.task_id, samples=samples,
                       failures=list(result.failures), gen_seconds=gen_seconds, llm=_stats(model),
                       details=details, files=files)
+
+
+def run_units(specs: tuple[UnitSpec, ...]) -> list[UnitRecord]:
+    """Several units in one hand-off to a worker (see `chunk_units`)."""
+    return [run_unit(spec) for spec in specs]
+
+
+def chunk_units(specs: Sequence[UnitSpec], workers: int) -> list[tuple[UnitSpec, ...]]:
+    """Hand-offs for `workers` processes.
+
+    With at least 4 tasks per worker, the units of one task travel together, so they share the
+    worker's memoised task analysis (the offline model reads each brief once per process, not
+    once per generator) and the tail stays one task long (0.15–0.5 CPU-s per task on the
+    offline run); with fewer tasks every unit is its own hand-off so that all workers get work.
+    """
+    by_task: dict[str, list[UnitSpec]] = {}
+    for spec in specs:
+        by_task.setdefault(spec.task_id, []).append(spec)
+    if workers > 1 and len(by_task) >= 4 * workers:
+        return [tuple(g) for g in by_task.values()]
+    return [(spec,) for spec in specs]
 
 
 def _write(run_dir: Path, rel: Path, text: str, files: dict[str, str]) -> None:
