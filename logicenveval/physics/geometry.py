@@ -168,6 +168,29 @@ def candidate_pairs(bodies: list[Body], margin: float = 0.0) -> list[tuple[int, 
     return sorted(pairs)
 
 
+def rect_pairs(a: list[tuple[float, float, float, float]],
+               b: list[tuple[float, float, float, float]]) -> list[tuple[int, int]]:
+    """(i, j) with rectangle a[i] meeting b[j] (x0, z0, x1, z1): one sort-and-sweep over x of both
+    sets, an interval test on z. Used to pair door squares with object footprints; a rectangle with
+    a non-finite bound (an empty shape) meets nothing."""
+    events = sorted([(r[0], 0, i) for i, r in enumerate(a) if finite(*r)]
+                    + [(r[0], 1, j) for j, r in enumerate(b) if finite(*r)])
+    active: tuple[list[int], list[int]] = ([], [])
+    rects = (a, b)
+    pairs: list[tuple[int, int]] = []
+    for x0, side, k in events:
+        other = 1 - side
+        active_other = [m for m in active[other] if rects[other][m][2] >= x0]
+        active[other][:] = active_other
+        r = rects[side][k]
+        for m in active_other:
+            q = rects[other][m]
+            if r[1] <= q[3] and q[1] <= r[3]:
+                pairs.append((k, m) if side == 0 else (m, k))
+        active[side].append(k)
+    return sorted(pairs)
+
+
 def point_to_boundary(geom: BaseGeometry, poly: Polygon) -> float:
     return float(poly.exterior.distance(geom))
 
