@@ -210,6 +210,11 @@ def has_geometry(obj: EnvObject) -> bool:
 _LAST: list[tuple[Path | None, list[EnvObject], dict[str, Body]]] = []
 
 
+def clear_body_cache() -> None:
+    """Forget the memoised bodies (benchmarks time cold checks of one environment)."""
+    _LAST.clear()
+
+
 def build_bodies(env: EnvSpec, mesh_dir: Path | None = None) -> dict[str, Body]:
     """Bodies of all objects that have geometry, keyed by id, in EnvSpec order (read-only)."""
     objects = [o for o in env.objects if has_geometry(o)]
