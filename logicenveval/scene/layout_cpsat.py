@@ -44,7 +44,10 @@ class _Solve:
     relation that conflicts with nothing), and relaxation drops a core's lowest-priority member,
     so the core is shrunk by deletion, lowest priority first, before it is returned. Each deletion
     probe is capped in deterministic time (`PROBE_DET_TIME`), so the core does not depend on the
-    machine's speed; a probe that runs out keeps its item.
+    machine's speed; a probe that runs out keeps its item. Every solve after the first feasible
+    one is hinted with the last feasible assignment (probes of a core differ in one assumption, so
+    it is often one repair away; measured: the second probe of a dense 60-object floor 1.4 s ->
+    0.02 s).
     """
 
     PROBE_DET_TIME = 1.0
@@ -53,6 +56,8 @@ class _Solve:
         self.m = m
         self.seed = seed
         self.solver = cp_model.CpSolver()
+        #: the last feasible assignment of this model (every variable), the hint of the next solve
+        self._last: list[int] | None = None
 
     def __call__(self, active: list[Tracked], timeout_s: float) -> tuple[Status, list[Tracked]]:
         deadline = time.monotonic() + timeout_s
@@ -82,8 +87,14 @@ class _Solve:
         # prune on these small feasibility models (3-6x faster without them, docs/scene.md)
         p.cp_model_presolve = False
         p.linearization_level = 0
+        if self._last is not None:  # warm start: the last layout found under other assumptions
+            self.m.clear_hints()  # type: ignore[no-untyped-call]
+            hint = self.m.proto.solution_hint
+            hint.vars.extend(range(len(self._last)))
+            hint.values.extend(self._last)
         status = self.solver.solve(self.m)
         if status in (cp_model.OPTIMAL, cp_model.FEASIBLE):
+            self._last = list(self.solver.response_proto.solution)
             return "sat"
         if status == cp_model.INFEASIBLE:
             return "unsat"
