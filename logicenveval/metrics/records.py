@@ -61,7 +61,7 @@ class EnvDetail(BaseModel):
     env_id: str
     #: the top-down render, relative to the run folder (a derived file, re-drawn when missing)
     render: str | None = None
-    #: policy kind -> the traced run whose verdict is in `EnvSample.verdicts`
+    #: policy kind -> a traced re-run of the episode whose verdict is in `EnvSample.verdicts`
     traces: dict[str, VerdictTrace] = Field(default_factory=dict)
 
 
