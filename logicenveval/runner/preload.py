@@ -4,6 +4,7 @@ whatever is missing on its own."""
 
 from __future__ import annotations
 
+import gc
 import importlib
 
 import logicenveval.llm.registry  # noqa: F401
@@ -18,3 +19,6 @@ from logicenveval.generators.registry import BUILTIN
 load_catalog()
 for _entry in BUILTIN.values():
     importlib.import_module(_entry.partition(":")[0])
+# what is loaded now is shared by every forked worker: keep the workers' collector off it, so it
+# neither scans it nor copies its pages (copy-on-write) — the use gc.freeze documents
+gc.freeze()
