@@ -17,7 +17,7 @@ from typing import Any
 from jinja2 import Environment, PackageLoader, select_autoescape
 
 from logicenveval.metrics.records import EnvDetail, UnitRecord
-from logicenveval.reporting.tables import COLUMNS, markdown, method_label, rows
+from logicenveval.reporting.tables import COLUMNS, LEGEND, markdown, method_label, rows
 from logicenveval.runner.store import RunStore, atomic_write_text
 
 _NOT_RECORDED = "no trace recorded (the unit was written by a version that did not store traces)"
@@ -44,9 +44,12 @@ def _redraw(run_dir: Path, gen: str, task_id: str, sample: dict[str, Any], rel: 
         env = load_env(env_path)
     except LogicEnvEvalError:
         return None
-    failures = [PhysicsFailure.model_validate(f) for f in sample["physics"].get("failures", [])]
+    physics = sample["physics"]
+    failures = [PhysicsFailure.model_validate(f) for f in physics.get("failures", [])]
+    extended = [PhysicsFailure.model_validate(f) for f in physics.get("extended_failures", [])]
     report = PhysicsReport(**{d: DimensionReport.of([f for f in failures if f.dimension == d])
-                              for d in ("floor_plan", "entity", "relation")})
+                              for d in ("floor_plan", "entity", "relation")},
+                           extended=DimensionReport.of(extended))
     atomic_write_text(run_dir / rel, render_svg(env, report), durable=False)
     return rel
 
@@ -102,6 +105,7 @@ def render_html(run_dir: Path, results: dict[str, Any],
         results=results,
         headers=["Method"] + [h + (" (%)" if pct else "") for h, _, pct in COLUMNS],
         rows=rows(results),
+        legend=LEGEND,
         generators=_drilldown(run_dir, results, records),
         label=lambda g: method_label(g, results.get("model", "")),
     )

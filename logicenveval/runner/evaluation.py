@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from logicenveval.domain.catalog import Catalog
+from logicenveval.domain.roles import bind_roles
 from logicenveval.metrics.evaluate import coverage
 from logicenveval.metrics.records import EnvSample, PhysicsSummary, VerdictTrace
 from logicenveval.model.envspec import EnvSpec
@@ -23,9 +24,12 @@ from logicenveval.sim.world import holds_initial
 
 @dataclass(frozen=True)
 class Evaluation:
-    """The measured sample plus what the reports show (physics report for the render, traces)."""
+    """The measured sample plus what the reports show (judged env and physics report for the
+    render, traces)."""
 
     sample: EnvSample
+    #: the environment as judged (roles bound)
+    env: EnvSpec
     physics: PhysicsReport
     traces: dict[str, VerdictTrace]
 
@@ -39,10 +43,20 @@ def evaluate_env(
 ) -> Evaluation:
     """Measure one environment; never raises for a bad environment (that is a finding).
 
+    Roles the environment does not map are bound first (`domain.roles`), so environments made
+    by other tools are judged by the same trees and policies; an ambiguous role makes it
+    ill-formed. Names the environment maps that are not roles of the task (a generator that was
+    not told the roles names objects its own way: `--brief description`) neither bind nor block
+    objects; they stay in the map for the relations that use them.
+
     Each policy runs twice: untraced and timed (`sim_ms`, the paper's ST; recording a trace adds
     ~40 % to these sub-millisecond episodes), then traced for the report's drill-down, so that
     `report` never simulates.
     """
+    own = {name: oid for name, oid in env.roles.items() if name in task.roles}
+    binding = bind_roles(env.model_copy(update={"roles": own}), task.roles, catalog)
+    if binding.roles != own:
+        env = env.model_copy(update={"roles": {**env.roles, **binding.roles}})
     report = check_env(env, catalog)
     failures = [
         f.model_dump(mode="json")
@@ -54,16 +68,20 @@ def evaluate_env(
         entity=report.entity.passed,
         relation=report.relation.passed,
         failures=failures,
+        extended=report.extended.passed,
+        extended_failures=[f.model_dump(mode="json") for f in report.extended.failures],
     )
     cov = coverage(task, holds_initial(env, catalog), env.roles)
     verdicts: dict[str, str] = {}
     sim_ms: dict[str, float] = {}
+    sim_ticks: dict[str, int] = {}
     traces: dict[str, VerdictTrace] = {}
     for kind, policy in policies.items():
         start = time.perf_counter()
         verdicts[kind] = simulate(policy, env, task, catalog).status
         sim_ms[kind] = (time.perf_counter() - start) * 1000.0
         verdict = simulate(policy, env, task, catalog, trace=True)
+        sim_ticks[kind] = verdict.ticks
         traces[kind] = VerdictTrace(status=verdict.status, message=verdict.message or "",
                                     trace=[str(t) for t in verdict.trace])
     sample = EnvSample(
@@ -74,10 +92,11 @@ def evaluate_env(
         covered_paths=list(cov.covered_paths),
         trajectory=cov.trajectory,
         conditions=[tuple(c) for c in cov.conditions],
-        well_formed=cov.well_formed,
-        problems=list(cov.problems),
+        well_formed=cov.well_formed and binding.well_formed,
+        problems=list(cov.problems) + binding.problems,
         physics=physics,
         verdicts=verdicts,
         sim_ms=sim_ms,
+        sim_ticks=sim_ticks,
     )
-    return Evaluation(sample=sample, physics=report, traces=traces)
+    return Evaluation(sample=sample, env=env, physics=report, traces=traces)
