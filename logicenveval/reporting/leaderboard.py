@@ -17,6 +17,7 @@ from typing import Any
 from jinja2 import Environment, PackageLoader, select_autoescape
 
 from logicenveval.metrics.records import EnvDetail, UnitRecord
+from logicenveval.model.task import POLICY_KINDS
 from logicenveval.reporting.tables import COLUMNS, LEGEND, markdown, method_label, rows
 from logicenveval.runner.store import RunStore, atomic_write_text
 
@@ -59,8 +60,10 @@ def _entry(run_dir: Path, gen: str, task_id: str, sample: dict[str, Any],
     rel = detail.render if detail is not None and detail.render else \
         (Path("renders") / gen / task_id / f"{sample['env_id']}.svg").as_posix()
     render = rel if (run_dir / rel).exists() else _redraw(run_dir, gen, task_id, sample, rel)
-    if detail is not None:
-        traces = {k: t.model_dump(mode="json") for k, t in detail.traces.items()}
+    if detail is not None:  # in policy-kind order (unit files store keys sorted)
+        order = {k: i for i, k in enumerate(POLICY_KINDS)}
+        kinds = sorted(detail.traces, key=lambda k: (order.get(k, len(order)), k))
+        traces = {k: detail.traces[k].model_dump(mode="json") for k in kinds}
     else:
         traces = {k: {"status": v, "message": _NOT_RECORDED, "trace": []}
                   for k, v in sample.get("verdicts", {}).items()}
