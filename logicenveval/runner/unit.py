@@ -69,6 +69,7 @@ def _unique_ids(envs: list[EnvSpec]) -> list[EnvSpec]:
 
 def run_unit(spec: UnitSpec) -> UnitRecord:
     """Generate and evaluate; a failing generation is recorded, never raised."""
+    from logicenveval.faults.score import scorer_for
     from logicenveval.llm.registry import make_model
     from logicenveval.physics.render import render_svg
     from logicenveval.runner.evaluation import evaluate_env
@@ -110,12 +111,20 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     samples: list[EnvSample] = []
     details: list[EnvDetail] = []
     files: dict[str, str] = {}
+    scorer = scorer_for(task, spec.tasks_dir, catalog, cache_dir=run_dir / "work" / "mutants")
     for env in _unique_ids(result.envs):
         _write(run_dir, rel_dir / f"{env.env_id}.json", env_to_json(env), files)
         done = evaluate_env(spec.generator, task, env, policies, catalog)
+        sample = done.sample
+        if sample.well_formed and sample.verdicts.get("correct") == "passed":
+            start = time.perf_counter()
+            killed = scorer.killed(env, task, catalog)
+            ms = (time.perf_counter() - start) * 1000.0
+            sample = sample.model_copy(update={"killed_mutants": killed,
+                                               "sim_ms": {**sample.sim_ms, "mutants": ms}})
         render = (Path("renders") / spec.generator / spec.task_id / f"{env.env_id}.svg").as_posix()
         atomic_write_text(run_dir / render, render_svg(done.env, done.physics), durable=False)
-        samples.append(done.sample)
+        samples.append(sample)
         details.append(EnvDetail(env_id=env.env_id, render=render, traces=done.traces))
     if spec.brief != "roles":
         _write(run_dir, rel_dir / "brief.json", brief.model_dump_json(indent=2) + "\n", files)
@@ -124,7 +133,7 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
                json.dumps(result.artifacts, indent=2, sort_keys=True, default=str) + "\n", files)
     return UnitRecord(generator=spec.generator, task_id=spec.task_id, samples=samples,
                       failures=list(result.failures), gen_seconds=gen_seconds, llm=_stats(model),
-                      details=details, files=files)
+                      mutants=scorer.classes, details=details, files=files)
 
 
 def run_units(specs: tuple[UnitSpec, ...]) -> list[UnitRecord]:
