@@ -21,7 +21,7 @@ from logicenveval.runner.config import RunConfig
 from logicenveval.runner.executors import make_executor
 from logicenveval.runner.results import build_results, write_outputs
 from logicenveval.runner.store import RunStore
-from logicenveval.runner.unit import UnitSpec, run_unit
+from logicenveval.runner.unit import UnitSpec, chunk_units, run_units
 
 
 @dataclass(frozen=True)
@@ -83,6 +83,10 @@ def _prepare_dir(run_dir: Path) -> None:
 
 
 def run(config: RunConfig, *, console: Console | None = None, show_progress: bool = True) -> RunOutcome:
+    executor = make_executor(config.executor, config.workers)
+    warm_up = getattr(executor, "warm_up", None)
+    if callable(warm_up):
+        warm_up()  # workers' imports overlap the checks, preflight and resume scan below
     ids = _check(config)
     tasks = load_tasks(config.tasks_dir, ids)
     for task in tasks:  # before any unit: policy paths confined, situation count bounded
@@ -106,14 +110,13 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
     pending: list[UnitSpec] = []
     for spec in specs:
         stored = store.load(spec.generator, spec.task_id)
-        if stored is None or stored.error_kind == "infrastructure":
-            pending.append(spec)  # never computed, corrupt, or failed for a reason outside it
+        if stored is None or stored.error_kind == "infrastructure" or not store.files_intact(stored):
+            pending.append(spec)  # never computed, corrupt, edited, or failed for a reason outside it
         else:
             records[(spec.generator, spec.task_id)] = stored
     reused = len(records)
     start = time.perf_counter()
     console = console or Console(stderr=True)
-    executor = make_executor(config.executor, config.workers)
     with Progress(
         TextColumn("[bold]{task.description:<14}"), BarColumn(), MofNCompleteColumn(),
         TimeRemainingColumn(), console=console, disable=not show_progress, transient=False,
@@ -125,24 +128,28 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
         }
         streak = 0
         # closing(): stopping early shuts the pool down at once and drops the queued units
-        with contextlib.closing(executor.map_unordered(run_unit, pending)) as finished:  # type: ignore[type-var]  # generators have close()
-            for spec, record in finished:
-                store.save(record)
-                records[(spec.generator, spec.task_id)] = record
-                progress.advance(bars[spec.generator])
-                streak = streak + 1 if record.error_kind == "infrastructure" else 0
-                if config.max_infra_failures and streak >= config.max_infra_failures:
-                    raise RunFailedError(
-                        f"stopped after {streak} consecutive infrastructure failures; last: "
-                        f"{record.error}", file=str(run_dir),
-                        hint="fix the endpoint or cache, then re-run the same command: finished "
-                        "units are kept and the failed ones are recomputed "
-                        "(--max-infra-failures 0 never stops)")
+        chunks = executor.map_unordered(run_units, chunk_units(pending, config.workers))
+        with contextlib.closing(chunks) as finished:  # type: ignore[type-var]  # generators have close()
+            for _, chunk in finished:
+                for record in chunk:
+                    store.save(record)
+                    records[(record.generator, record.task_id)] = record
+                    progress.advance(bars[record.generator])
+                    streak = streak + 1 if record.error_kind == "infrastructure" else 0
+                    if config.max_infra_failures and streak >= config.max_infra_failures:
+                        raise RunFailedError(
+                            f"stopped after {streak} consecutive infrastructure failures; last: "
+                            f"{record.error}", file=str(run_dir),
+                            hint="fix the endpoint or cache, then re-run the same command: "
+                            "finished units are kept and the failed ones are recomputed "
+                            "(--max-infra-failures 0 never stops)")
     ordered = [records[(s.generator, s.task_id)] for s in specs]
     results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start)
-    write_outputs(run_dir, results, ordered)
     from logicenveval.reporting.leaderboard import write_leaderboards
 
-    write_leaderboards(run_dir, results)
+    report_start = time.perf_counter()
+    write_leaderboards(run_dir, results, ordered)
+    results["timing"]["report_seconds"] = round(time.perf_counter() - report_start, 3)
+    write_outputs(run_dir, results, ordered)
     return RunOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused,
                       records=tuple(ordered))
