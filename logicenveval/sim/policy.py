@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 
 #: control nodes with any number (>= 1) of children
 COMPOSITES = frozenset({"Sequence", "SequenceWithMemory", "Fallback", "ReactiveSequence",
-                        "ReactiveFallback", "Parallel"})
+                        "ReactiveFallback", "Parallel", "AsyncSequence", "AsyncFallback"})
 #: control nodes with a condition child and one or two branches
 BRANCHING = frozenset({"IfThenElse", "WhileDoElse"})
 #: nodes with exactly one child
@@ -25,6 +25,12 @@ NODE_PARAMS: dict[str, dict[str, tuple[bool, int]]] = {
     "RetryUntilSuccessful": {"num_attempts": (True, 0)},
     "Repeat": {"num_cycles": (True, 0)},
 }
+
+
+def parallel_threshold(count: int, n_children: int) -> int:
+    """BT.CPP's `successThreshold`/`failureThreshold` of a Parallel: a negative count means
+    "all but |count|-1", clamped at 0."""
+    return max(n_children + count + 1, 0) if count < 0 else count
 
 
 @dataclass(frozen=True, slots=True)
@@ -57,6 +63,8 @@ class Policy:
     main: str
     trees: dict[str, PolicyNode]
     source: str = field(default="<string>", compare=False)
+    #: what the loader accepted but wants the author to know (e.g. a missing BTCPP_format)
+    warnings: tuple[str, ...] = field(default=(), compare=False)
 
     def __hash__(self) -> int:
         return hash((self.main, tuple(sorted(self.trees))))
