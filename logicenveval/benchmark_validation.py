@@ -69,6 +69,27 @@ def validate_all(directory: str | Path | None = None, catalog: Catalog | None = 
     return [validate_task(f, d, catalog, simulate=simulate) for f in folders]
 
 
+def write_models(directory: str | Path | None = None, ids: list[str] | None = None) -> list[Path]:
+    """Give every policy of the tasks (all, or `ids`) the library's current Groot2
+    `<TreeNodesModel>`; returns the files that changed."""
+    from logicenveval.sim.groot import with_current_model
+
+    d = tasks_dir(directory)
+    changed = []
+    for folder in sorted(p for p in d.iterdir() if p.is_dir() and not p.name.startswith(".")):
+        if ids and folder.name not in ids:
+            continue
+        task = load_task_file(folder / "task.json")
+        for rel in task.policies.values():
+            path = folder / rel
+            text = path.read_text(encoding="utf-8")
+            new = with_current_model(text)
+            if new != text:
+                path.write_text(new, encoding="utf-8")
+                changed.append(path)
+    return changed
+
+
 def validate_task(task: Task | str | Path, directory: str | Path | None = None,
                   catalog: Catalog | None = None, *, simulate: bool = True) -> TaskReport:
     """Validate one task given as a `Task`, a task folder or a task id within `directory`."""
@@ -238,6 +259,7 @@ def _check_node(task: Task, enc: _Axioms, node: Node | Leaf, path: list[z3.BoolR
 # ----- policies ---------------------------------------------------------------------------------
 
 def _load_policies(task: Task, folder: Path, add: _Add) -> dict[str, object]:
+    from logicenveval.sim.groot import model_problem
     from logicenveval.sim.loader import load_policy
 
     loaded: dict[str, object] = {}
@@ -250,6 +272,11 @@ def _load_policies(task: Task, folder: Path, add: _Add) -> dict[str, object]:
             loaded[kind] = load_policy(folder / rel, roles=task.roles, rooms=task.rooms)
         except LogicEnvEvalError as exc:
             add(rel, exc.field or (f"line {exc.line}" if exc.line else "-"), str(exc))
+            continue
+        stale = model_problem((folder / rel).read_text(encoding="utf-8"))
+        if stale is not None:
+            add(rel, "TreeNodesModel", f"{stale}; run `python -m logicenveval tasks validate "
+                "--write-models` to write the action library's current one")
     return loaded
 
 

@@ -237,3 +237,31 @@ def test_round_trip_of_every_control_node_through_py_trees() -> None:
     p = policy_from_xml(text, roles=ROLES)
     again = tree_to_xml(tree_from_xml(text, roles=ROLES))
     assert policy_from_xml(again, roles=ROLES) == p
+
+
+def test_every_shipped_policy_carries_the_current_groot2_model() -> None:
+    from logicenveval.benchmark import DEFAULT_TASKS_DIR
+    from logicenveval.sim.groot import model_problem
+
+    files = sorted(DEFAULT_TASKS_DIR.glob("*/policies/*.xml"))
+    assert len(files) == 100
+    assert [f for f in files if model_problem(f.read_text(encoding="utf-8"))] == []
+
+
+def test_export_carries_the_model_and_round_trips() -> None:
+    from defusedxml.ElementTree import fromstring
+
+    from logicenveval.domain.actions import ACTIONS, CONDITIONS
+    from logicenveval.sim.groot import model_problem
+
+    policy = load_policy(POLICIES / "correct.xml")
+    text = policy_to_xml(policy)
+    assert model_problem(text) is None
+    model = fromstring(text).find("TreeNodesModel")
+    assert {(d.tag, d.get("ID")) for d in model} == {
+        *(("Action", a) for a in ACTIONS), *(("Condition", c) for c in CONDITIONS)}
+    place = model.find("Action[@ID='Place']")
+    assert [(p.get("name"), p.get("type")) for p in place] [:2] == [
+        ("obj", "std::string"), ("target", "std::string")]
+    again = policy_from_xml(text)
+    assert again == policy and policy_to_xml(again) == text

@@ -17,6 +17,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     val = sub.add_parser("validate", help="check every task; exit 1 on any problem")
     val.add_argument("--task", action="append", default=None, help="validate only this task (repeatable)")
     val.add_argument("--no-simulate", action="store_true", help="skip simulating the four policies")
+    val.add_argument("--write-models", action="store_true",
+                     help="first rewrite each policy's Groot2 <TreeNodesModel> from the action library")
     st = sub.add_parser("stats", help="per-task logical and policy sizes, with totals")
     st.add_argument("--markdown", action="store_true", help="print a Markdown table (for the README)")
     for q in (ls, show, val, st):
@@ -90,6 +92,11 @@ def _validate(args: argparse.Namespace) -> int:
     from logicenveval.benchmark_validation import validate_all, validate_task
 
     simulate = not args.no_simulate
+    if args.write_models:
+        from logicenveval.benchmark_validation import write_models
+
+        for path in write_models(args.tasks_dir, args.task):
+            print(f"updated TreeNodesModel of {path}")
     if args.task:
         reports = [validate_task(t, args.tasks_dir, simulate=simulate) for t in args.task]
     else:

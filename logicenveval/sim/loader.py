@@ -21,6 +21,7 @@ from defusedxml.ElementTree import DefusedXMLParser
 from logicenveval.domain.actions import ACTIONS, CONDITIONS
 from logicenveval.errors import PolicyFormatError
 from logicenveval.model.rooms import is_room_type
+from logicenveval.sim.groot import tree_nodes_model
 from logicenveval.sim.policy import (
     BRANCHING,
     COMPOSITES,
@@ -433,12 +434,14 @@ def _emit(node: PolicyNode, depth: int, out: list[str]) -> None:
 
 
 def policy_to_xml(policy: Policy) -> str:
-    """BT.CPP v4 XML of a policy (includes inlined), loadable by BT.CPP, Groot2 and us."""
+    """BT.CPP v4 XML of a policy (includes inlined) with the library's Groot2 TreeNodesModel,
+    loadable by BT.CPP, Groot2 and us."""
     out = ['<?xml version="1.0" encoding="UTF-8"?>',
            f'<root BTCPP_format="4" main_tree_to_execute={quoteattr(policy.main)}>']
     for tree_id, node in policy.trees.items():
         out.append(f"  <BehaviorTree ID={quoteattr(tree_id)}>")
         _emit(node, 2, out)
         out.append("  </BehaviorTree>")
+    out.append(tree_nodes_model().rstrip("\n"))
     out.append("</root>")
     return "\n".join(out) + "\n"
