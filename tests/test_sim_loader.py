@@ -161,6 +161,9 @@ def test_control_node_parameters() -> None:
     assert "not an integer" in str(err(doc('<Repeat num_cycles="x"><Pick obj="toy"/></Repeat>')))
     assert "exactly one child" in str(err(doc('<Inverter/>')))
     assert "2 or 3" in str(err(doc('<IfThenElse><Pick obj="toy"/></IfThenElse>')))
+    assert "at least 2" in str(err(doc('<TryCatch><Pick obj="toy"/></TryCatch>')))
+    assert "not a boolean" in str(err(doc('<TryCatch catch_on_halt="maybe"><Pick obj="toy"/>'
+                                          '<Pick obj="toy"/></TryCatch>')))
     assert "more than its 1 children" in str(err(doc('<Parallel success_count="3"><Pick obj="toy"/>'
                                                     '</Parallel>')))
     assert "failure_count=2" in str(err(doc('<Parallel failure_count="2"><Pick obj="toy"/>'
@@ -232,11 +235,14 @@ def test_round_trip_of_every_control_node_through_py_trees() -> None:
             '<Inverter><ForceSuccess><ForceFailure><AlwaysSuccess/></ForceFailure></ForceSuccess></Inverter>'
             '<RetryUntilSuccessful num_attempts="3"><Repeat num_cycles="2"><KeepRunningUntilFailure>'
             '<AlwaysFailure/></KeepRunningUntilFailure></Repeat></RetryUntilSuccessful>'
+            '<AsyncSequence><AsyncFallback><AlwaysFailure/></AsyncFallback></AsyncSequence>'
+            '<TryCatch catch_on_halt="1"><AlwaysSuccess/><AlwaysFailure/></TryCatch>'
             '<SubTree ID="Sub"/></Sequence>')
     text = doc(body, '  <BehaviorTree ID="Sub">\n<Walk target="box"/>\n  </BehaviorTree>\n')
     p = policy_from_xml(text, roles=ROLES)
     again = tree_to_xml(tree_from_xml(text, roles=ROLES))
     assert policy_from_xml(again, roles=ROLES) == p
+    assert 'catch_on_halt="true"' in again
 
 
 def test_every_shipped_policy_carries_the_current_groot2_model() -> None:

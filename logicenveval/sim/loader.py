@@ -23,10 +23,12 @@ from logicenveval.errors import PolicyFormatError
 from logicenveval.model.rooms import is_room_type
 from logicenveval.sim.groot import tree_nodes_model
 from logicenveval.sim.policy import (
+    BOOL_PARAMS,
     BRANCHING,
     COMPOSITES,
     CONSTANT_LEAVES,
     DECORATORS,
+    MIN_CHILDREN,
     NODE_PARAMS,
     Policy,
     PolicyNode,
@@ -192,12 +194,7 @@ class _Reader:
                     raise self.fail(elem, f"node <{kind}> needs parameter {key!r}",
                                     f'add {key}="N" (-1 means unbounded)')
                 continue
-            try:
-                value = int(attrs[key])
-            except ValueError:
-                raise self.fail(elem, f"node <{kind}>: {key}={attrs[key]!r} is not an integer",
-                                f'write {key}="3"') from None
-            params.append((key, str(value)))
+            params.append((key, self._param(elem, kind, key, attrs[key])))
         n = len(children)
         if kind in DECORATORS and n != 1:
             raise self.fail(elem, f"decorator <{kind}> needs exactly one child, has {n}",
@@ -205,13 +202,27 @@ class _Reader:
         if kind in BRANCHING and n not in (2, 3):
             raise self.fail(elem, f"<{kind}> needs 2 or 3 children (condition, then, else), has {n}",
                             "give it a condition, a then-branch and optionally an else-branch")
-        if kind in COMPOSITES and n == 0:
-            raise self.fail(elem, f"<{kind}> has no children", "add at least one child")
+        if kind in COMPOSITES and n < MIN_CHILDREN.get(kind, 1):
+            raise self.fail(elem, f"<{kind}> needs at least {MIN_CHILDREN.get(kind, 1)} "
+                            f"child(ren), has {n}", "add children")
         kids = tuple(self.node(c) for c in children)
         node = PolicyNode(kind, tuple(params), kids, name, int(elem.get(_LINE, "0")))
         if kind == "Parallel":
             self._check_parallel(elem, node)
         return node
+
+    def _param(self, elem: Element, kind: str, key: str, text: str) -> str:
+        if (kind, key) in BOOL_PARAMS:
+            word = {"true": "true", "1": "true", "false": "false", "0": "false"}.get(text.lower())
+            if word is None:
+                raise self.fail(elem, f"node <{kind}>: {key}={text!r} is not a boolean",
+                                f'write {key}="true" or "false"')
+            return word
+        try:
+            return str(int(text))
+        except ValueError:
+            raise self.fail(elem, f"node <{kind}>: {key}={text!r} is not an integer",
+                            f'write {key}="3"') from None
 
     def _check_parallel(self, elem: Element, node: PolicyNode) -> None:
         """BT.CPP throws when a threshold exceeds the children ("can never succeed/fail")."""

@@ -304,6 +304,70 @@ class AsyncFallback(Fallback):
     yields = True
 
 
+class TryCatch(Control):
+    """BT.CPP 4.x `TryCatch`: all children but the last run as a Sequence (the try block);
+    when one fails, the last child (catch) runs to completion and the node returns FAILURE.
+    With `catch_on_halt`, a halt during the try block ticks the catch child once first."""
+
+    def __init__(self, name: str, children: list[py_trees.behaviour.Behaviour],
+                 catch_on_halt: bool) -> None:
+        super().__init__(name, children)
+        self.catch_on_halt = catch_on_halt
+        self.in_catch = False
+
+    def reset_all(self) -> None:
+        super().reset_all()
+        self.in_catch = False
+
+    def stop(self, new_status: Status = IDLE) -> None:
+        kids = self.children
+        if self.catch_on_halt and not self.in_catch and self.status is RUNNING:
+            for c in kids[:-1]:
+                _reset(c)
+            for _ in kids[-1].tick():
+                pass
+            if kids[-1].status is RUNNING:
+                _reset(kids[-1])
+        self.in_catch = False
+        super().stop(new_status)
+
+    def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
+        kids = self.children
+        if self.status is not RUNNING:
+            self.in_catch = False
+        while not self.in_catch and self.idx < len(kids) - 1:
+            child = kids[self.idx]
+            yield from child.tick()
+            st = child.status
+            if st is RUNNING:
+                self.status = RUNNING
+                yield self
+                return
+            if st is FAILURE:
+                for c in kids:
+                    _reset(c)
+                self.idx = 0
+                self.in_catch = True
+            else:
+                self.idx += 1
+        if not self.in_catch:
+            self._finish(SUCCESS)
+            yield self
+            return
+        catch = kids[-1]
+        yield from catch.tick()
+        if catch.status is RUNNING:
+            self.status = RUNNING
+        else:
+            self._finish(FAILURE)
+        yield self
+
+    def _finish(self, st: Status) -> None:
+        """Done (not halted): reset the children without running the catch-on-halt."""
+        self.in_catch = False
+        Control.stop(self, st)
+
+
 class _Reactive(Control):
     """Re-ticks every child from the first on each tick; a RUNNING child halts the others.
 
@@ -618,6 +682,8 @@ def _build(policy: Policy, p: PolicyNode, path: str, binding: Binding,
         node = SubTree(name, child)
     elif kind in _COMPOSITE_CLASSES:
         node = _COMPOSITE_CLASSES[kind](name, list(kids))
+    elif kind == "TryCatch":
+        node = TryCatch(name, list(kids), p.param("catch_on_halt") == "true")
     elif kind == "Parallel":
         node = Parallel(name, list(kids), int(p.param("success_count") or -1),
                         int(p.param("failure_count") or 1))

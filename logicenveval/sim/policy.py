@@ -11,7 +11,8 @@ from dataclasses import dataclass, field
 
 #: control nodes with any number (>= 1) of children
 COMPOSITES = frozenset({"Sequence", "SequenceWithMemory", "Fallback", "ReactiveSequence",
-                        "ReactiveFallback", "Parallel", "AsyncSequence", "AsyncFallback"})
+                        "ReactiveFallback", "Parallel", "AsyncSequence", "AsyncFallback",
+                        "TryCatch"})
 #: control nodes with a condition child and one or two branches
 BRANCHING = frozenset({"IfThenElse", "WhileDoElse"})
 #: nodes with exactly one child
@@ -19,12 +20,17 @@ DECORATORS = frozenset({"Inverter", "ForceSuccess", "ForceFailure", "RetryUntilS
                         "Repeat", "KeepRunningUntilFailure"})
 #: leaves without ports
 CONSTANT_LEAVES = frozenset({"AlwaysSuccess", "AlwaysFailure"})
-#: node parameters (not ports): name -> (node, required, default)
+#: node parameters (not ports): node -> name -> (required, default); integers unless in
+#: BOOL_PARAMS (stored as "true"/"false")
 NODE_PARAMS: dict[str, dict[str, tuple[bool, int]]] = {
     "Parallel": {"success_count": (False, -1), "failure_count": (False, 1)},
     "RetryUntilSuccessful": {"num_attempts": (True, 0)},
     "Repeat": {"num_cycles": (True, 0)},
+    "TryCatch": {"catch_on_halt": (False, 0)},
 }
+BOOL_PARAMS = frozenset({("TryCatch", "catch_on_halt")})
+#: minimum number of children of a composite (BT.CPP's VerifyXML)
+MIN_CHILDREN = {"TryCatch": 2}
 
 
 def parallel_threshold(count: int, n_children: int) -> int:
