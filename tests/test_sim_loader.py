@@ -271,3 +271,19 @@ def test_export_carries_the_model_and_round_trips() -> None:
         ("obj", "std::string"), ("target", "std::string")]
     again = policy_from_xml(text)
     assert again == policy and policy_to_xml(again) == text
+
+
+FORMS = Path(__file__).parent / "fixtures" / "btcpp_forms"
+
+
+def test_documents_in_bt_cpp_and_groot2_forms_load() -> None:
+    # our own XML in the forms BT.CPP's examples and Groot2 project files use (both files load and
+    # tick in BehaviorTree.CPP 4.10 with the library nodes registered; see docs/simulator.md)
+    p = load_policy(FORMS / "groot2_project.xml", roles=ROLES)
+    assert p.main == "Main" and set(p.trees) == {"Main", "TidyToy"} and p.warnings == ()
+    assert p.trees["TidyToy"].kind == "TryCatch"
+    assert p.trees["Main"].children[0].params == (("ID", "TidyToy"),)  # _description ignored
+    t = load_policy(FORMS / "tutorial_form.xml", roles=ROLES)
+    assert t.main == "BehaviorTree_0" and "BTCPP_format" in t.warnings[0]
+    again = policy_from_xml(policy_to_xml(t), roles=ROLES)
+    assert again == t and again.warnings == ()

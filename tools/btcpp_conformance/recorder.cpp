@@ -15,6 +15,7 @@
 #include <behaviortree_cpp/bt_factory.h>
 #include <behaviortree_cpp/contrib/json.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <map>
