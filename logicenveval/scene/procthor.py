@@ -40,6 +40,28 @@ ROOM_TYPE_MAP = {"Study": "Bedroom", "Hallway": "LivingRoom", "LaundryRoom": "Ba
 
 #: stand-ins for wall-mounted categories without an AI2-THOR type
 WALL_TYPES = frozenset({"Painting", "Mirror"})
+#: our choice of the ProcTHOR type that stands in for a category AI2-THOR has no type for (the
+#: closest-size asset of that type is taken); categories not listed get the closest-size asset
+#: of the same pickability (wall-mounted: a Painting/Mirror)
+STAND_IN_TYPES = {
+    "bookshelf": "ShelvingUnit", "pantry_shelf": "ShelvingUnit", "utility_shelf": "ShelvingUnit",
+    "shoe_rack": "ShelvingUnit", "cabinet": "Dresser", "bathroom_vanity": "Dresser",
+    "wardrobe": "Dresser", "filing_cabinet": "Dresser", "changing_table": "Dresser",
+    "washing_machine": "WashingMachine", "dryer": "ClothesDryer", "crib": "Bed",
+    "bench": "Ottoman", "step_stool": "Stool", "toy_box": "Box", "basket": "LaundryHamper",
+    "curtain": "Blinds", "shower_stall": "ShowerCurtain", "toy": "TeddyBear", "doll": "TeddyBear",
+    "toy_car": "TeddyBear", "shoe": "Boots", "sock": "Cloth", "shirt": "Cloth", "jacket": "Cloth",
+    "coat": "Cloth", "hat": "Cloth", "scarf": "Cloth", "blanket": "Cloth", "diaper": "Cloth",
+    "bath_mat": "Towel", "wet_wipe": "TissueBox", "headphones": "RemoteControl",
+    "game_controller": "RemoteControl", "calculator": "CellPhone", "phone_charger": "CellPhone",
+    "wallet": "CreditCard", "document": "Newspaper", "folder": "Newspaper",
+    "photo_frame": "TableTopDecor", "medicine_bottle": "SoapBottle", "sunscreen": "SoapBottle",
+    "toothpaste": "SoapBottle", "baby_bottle": "Bottle", "milk_carton": "Bottle",
+    "banana": "Potato", "orange": "Apple", "onion": "Potato", "cheese": "Bread",
+    "food_can": "Cup", "pet_food": "Bowl", "cutting_board": "Plate", "blender": "CoffeeMachine",
+    "flower": "Vase", "first_aid_kit": "Box", "mop": "Plunger", "broom": "Plunger",
+    "dustpan": "ScrubBrush", "bucket": "GarbageCan", "umbrella_stand": "GarbageCan",
+}
 #: the opening sizes (width, height) we choose one wall-hole asset for
 OPENING_TARGETS = {"door": ((0.9, 2.1), (1.6, 2.1)), "doorway": ((0.9, 2.1), (1.6, 2.1)),
                    "window": ((0.9, 1.2), (1.5, 1.2), (2.4, 1.2))}
@@ -127,8 +149,8 @@ def choose_assets(catalog: Catalog, db: ProcthorDB) -> dict[str, Any]:
         mean = tuple((lo + hi) / 2 for lo, hi in zip(cat.size_min, cat.size_max, strict=True))
         size: Size = (mean[0], mean[1], mean[2])
         own = by_type.get(cat.ai2thor_type or "", [])
-        pool = own or (on_wall if cat.placement[0] == "wall" else
-                       [a for a in loose if a.pickable == cat.pickable])
+        pool = own or by_type.get(STAND_IN_TYPES.get(name, ""), []) or (
+            on_wall if cat.placement[0] == "wall" else [a for a in loose if a.pickable == cat.pickable])
         a = closest(size, pool)
         categories[name] = {"assetId": a.asset_id, "objectType": a.object_type,
                             "size": [round(v, 4) for v in a.size], "standIn": not own}
