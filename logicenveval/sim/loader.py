@@ -58,12 +58,6 @@ _SCRIPT_ATTRS = ("_skipIf", "_successIf", "_failureIf", "_while", "_onSuccess", 
                  "_onHalted", "_post", "_autoremap")
 #: BT.CPP's prefix of ID-less `<BehaviorTree>` names (`BehaviorTree_0`, ...; xml_parsing.cpp)
 UNNAMED_TREE = "BehaviorTree_"
-
-
-def _metadata(key: str) -> bool:
-    """An attribute BT.CPP keeps out of the ports and ignores (`_description`, `_uid`,
-    `_fullpath`, ...): not a valid port name, and not one of its scripting attributes."""
-    return key.startswith("_") and key not in _SCRIPT_ATTRS
 _BLACKBOARD = re.compile(r"\{[^}]*\}")
 _WRAPPERS = ("Action", "Condition", "Control", "Decorator")
 #: ports whose value may name a room instead of a role
@@ -71,6 +65,13 @@ _ROOM_PORTS = {("Walk", "target"), ("InRoom", "room"), ("AgentIn", "room")}
 #: ports whose value is free text (attribute keys/values, state flags)
 _FREE_PORTS = {("Attr", "key"), ("Attr", "value"), ("State", "flag")}
 _FLOOR_PORTS = {("Place", "target"), ("On", "target"), ("Walk", "target")}
+
+
+def _metadata(key: str) -> bool:
+    """An attribute BT.CPP keeps out of the ports and ignores (`_description`, `_uid`,
+    `_fullpath`, ...; also our `__line__` marker): not a valid port name, and not one of its
+    scripting attributes."""
+    return key.startswith("_") and key not in _SCRIPT_ATTRS
 
 
 def known_nodes() -> list[str]:
