@@ -105,11 +105,12 @@ def test_check_house_finds_each_problem(tmp_path: Path) -> None:
     house["rooms"][0]["roomType"] = "Study"
     house["windows"][0]["assetId"] = "Window_1"
     house["doors"][0]["wall0"] = "wall|nowhere"
+    house["objects"][2]["room"] = "attic"
     del house["metadata"]["agentPoses"]
     report = check_house(house, db)
     where = {p.where for p in report.problems}
     assert {"objects[0].assetId", "objects[1].isToggled", "rooms[0].floorMaterial", "rooms[0].roomType",
-            "windows[0].assetId", "doors[0].wall0", "metadata.agentPoses"} <= where
+            "windows[0].assetId", "doors[0].wall0", "objects[2].room", "metadata.agentPoses"} <= where
     assert report.unknown_ids == 2 and report.unknown_materials == 1
 
 

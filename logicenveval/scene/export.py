@@ -1,12 +1,13 @@
 """Exporters: EnvSpec → ProcTHOR house JSON (loadable by AI2-THOR) and → GLB (any 3D viewer).
 
 House JSON follows ProcTHOR's schema 1.0.0 layout (its generation code: house.py, doors.py,
-wall_objects.py): `rooms` with `floorPolygon` and one of ProcTHOR's four `roomType`s, one
+wall_objects.py) and the fields AI2-THOR reads (`ProceduralData.cs`: `HouseObject`,
+`HouseMetadata.agentPoses`, `Door`, `Window`, `PolygonWall`, `RoomHierarchy`): `rooms` with `floorPolygon` and one of ProcTHOR's four `roomType`s, one
 `walls` entry per room side and per stretch (a room edge is split wherever another room's edge
 starts or ends, so a shared stretch is one wall on each side), `doors`/`windows` with
 `room0/room1`, `wall0/wall1`, a real wall-hole `assetId` and its `holePolygon`/`assetPosition`
 placed as ProcTHOR places them, and `objects` with a real `assetId`/`objectType` (our recorded
-choice per category, `scene/procthor.py`), `position`, `rotation`, `openness`, `isOn`,
+choice per category, `scene/procthor.py`), `position`, `rotation`, `room`, `openness`, `isOn`,
 `isDirty`; an object on or inside another is listed among that object's `children`. What
 AI2-THOR has no field for stays in `logicenveval*` side fields (original room type and
 category, other state flags, size and hole-size differences to the chosen assets).
@@ -201,7 +202,7 @@ def to_procthor(env: EnvSpec, catalog: Catalog, mapping: dict[str, Any] | None =
         out: dict[str, Any] = {
             "id": o.id, "assetId": chosen["assetId"], "objectType": chosen["objectType"],
             "position": _p(*pos), "rotation": _p(0, o.yaw % 360, 0),
-            "kinematic": not (cat.pickable if cat else False), "roomId": o.room,
+            "kinematic": not (cat.pickable if cat else False), "room": o.room,
             "openness": 1 if o.states.get("open") else 0,
             **{key: bool(o.states.get(flag)) for flag, key in _AI2THOR_STATES.items()},
             "children": [obj(c) for c in by_parent.get(o.id, [])],

@@ -14,8 +14,9 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from logicenveval.scene.procthor import AI2THOR_ROOM_TYPES, ProcthorDB
 
-#: our flag names and legacy spellings that AI2-THOR's house JSON does not read
-_FOREIGN_STATE_KEYS = ("isToggled", "toggled_on", "open", "dirty")
+#: our flag names and legacy spellings that AI2-THOR's house JSON does not read (its
+#: `HouseObject` has `openness`, `isOn`, `isDirty`)
+_FOREIGN_STATE_KEYS = ("isToggled", "toggled_on", "open", "dirty", "isOpen")
 _REQUIRED = {
     "room": ("id", "roomType", "floorPolygon", "floorMaterial"),
     "wall": ("id", "roomId", "polygon", "material"),
@@ -136,6 +137,8 @@ def check_house(house: Any, db: ProcthorDB) -> HouseReport:
     for where, o in _objects(house.get("objects") or [], "objects"):
         need("object", where, o)
         asset(where, o, hole=False)
+        if "room" in o and o["room"] not in room_ids:
+            bad(f"{where}.room", f"{o['room']!r} is not a room")
         for k in _FOREIGN_STATE_KEYS:
             if k in o:
                 bad(f"{where}.{k}", f"AI2-THOR does not read {k!r} (isOn, isDirty, openness)")
