@@ -28,6 +28,9 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     cache = p.add_mutually_exclusive_group()
     cache.add_argument("--cache", default=None, help="SQLite cache of LLM replies")
     cache.add_argument("--no-cache", action="store_true", help="bypass the LLM reply cache")
+    p.add_argument("--brief", default="roles", choices=["roles", "description"],
+                   help="what generators get: the task's roles (default) or, as in the paper, only id, "
+                        "description and rooms, with the paper's few-shot example (docs/fidelity.md)")
     p.add_argument("--quiet", action="store_true", help="no progress bars")
     p.add_argument("--export", default="", metavar="FORMATS",
                    help="also write procthor and/or glb files next to every environment "
@@ -54,6 +57,7 @@ def run(args: argparse.Namespace) -> int:
         cache=args.cache,
         no_cache=args.no_cache,
         run_id=args.run_id,
+        brief=args.brief,
     )
     formats = [f.strip() for f in args.export.split(",") if f.strip()]
     if formats:

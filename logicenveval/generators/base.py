@@ -8,6 +8,7 @@ it did and where it failed, so that a missed decision path can be traced to its 
 from __future__ import annotations
 
 import importlib
+import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Protocol
@@ -69,13 +70,33 @@ def register(name: str, entry_point: str) -> None:
     _REGISTRY[name] = entry_point
 
 
+#: old name -> current name; using an old name works and warns
+_ALIASES: dict[str, str] = {}
+
+
+def register_alias(old: str, new: str) -> None:
+    """Keep an old generator name working (with a FutureWarning) after a rename."""
+    _ALIASES[old] = new
+
+
+def canonical_name(name: str) -> str:
+    """The current name of a generator; warns (FutureWarning) when `name` is an old alias."""
+    _load_builtin()
+    if name in _ALIASES and name not in _REGISTRY:
+        new = _ALIASES[name]
+        warnings.warn(f"generator {name!r} is an old name of {new!r}; use {new!r}",
+                      FutureWarning, stacklevel=2)
+        return new
+    return name
+
+
 def registered() -> list[str]:
     _load_builtin()
     return sorted(_REGISTRY)
 
 
 def make_generator(name: str, **options: Any) -> Generator:
-    _load_builtin()
+    name = canonical_name(name)
     if name not in _REGISTRY:
         raise ConfigError(f"unknown generator {name!r}", field="--generators",
                           hint="use one of " + ", ".join(sorted(_REGISTRY)))

@@ -17,10 +17,23 @@ COLUMNS: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     ("FauDR LBranch", ("faudr", "lackbranch"), True),
     ("FauDR Avg", ("faudr", "avg"), True),
     ("ST (ms)", ("st_ms",), False),
+    ("ST (ticks)", ("st_ticks",), False),
     ("LD", ("ld",), True),
     ("JI", ("ji",), False),
     ("Redundancy", ("redundancy",), False),
     ("Envs", ("n_envs",), False),
+    ("Extra checks", ("plausibility", "rate"), True),
+)
+
+#: what the columns mean, under every leaderboard (markdown and HTML)
+LEGEND = (
+    "Rates in percent. PhyPR: the paper's three dimensions only (Table 2). ST (ms) = wall time to "
+    "simulate one BT over a generator's environments for a task (varies with machine load); "
+    "ST (ticks) = the same in simulator ticks (deterministic). JI = Jaccard index vs the minimum "
+    "cover of the GT trajectories closest to the generator's set; Redundancy = environments / "
+    "minimum cover size; Extra checks = share of environments passing our plausibility checks "
+    "beyond the paper's PhyPR (catalog sizes, door swing areas, stability, ceiling, unreachable "
+    "rooms, windows over doors; not part of PhyPR)."
 )
 
 
@@ -60,6 +73,7 @@ def markdown(results: dict[str, Any]) -> str:
         f"# LogicEnvEval leaderboard — run `{results.get('run_id', '?')}`",
         "",
         f"Model: `{results.get('model')}` · seed {results.get('seed')} · "
+        f"brief `{results.get('brief', 'roles')}` · "
         f"{len(results.get('tasks', []))} tasks · commit `{results.get('git_commit') or 'n/a'}`",
         "",
         "| " + " | ".join(header) + " |",
@@ -70,7 +84,5 @@ def markdown(results: dict[str, Any]) -> str:
     if fails:
         lines += ["", "Recorded generation failures: "
                   + ", ".join(f"{g}: {n}" for g, n in sorted(fails.items()))]
-    lines += ["", "Rates in percent; ST = mean simulation time of one BT over a generator's "
-              "environments for a task (ms); JI = Jaccard index vs the reference minimal "
-              "trajectory set; Redundancy = environments / minimum cover size.", ""]
+    lines += ["", LEGEND, ""]
     return "\n".join(lines)

@@ -11,6 +11,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from logicenveval.domain.catalog import Catalog
+from logicenveval.domain.roles import bind_roles
 from logicenveval.metrics.evaluate import coverage
 from logicenveval.metrics.records import EnvSample, PhysicsSummary
 from logicenveval.model.envspec import EnvSpec
@@ -27,7 +28,18 @@ def evaluate_env(
     policies: Mapping[str, Any],
     catalog: Catalog,
 ) -> EnvSample:
-    """Measure one environment; never raises for a bad environment (that is a finding)."""
+    """Measure one environment; never raises for a bad environment (that is a finding).
+
+    Roles the environment does not map are bound first (`domain.roles`), so environments made
+    by other tools are judged by the same trees and policies; an ambiguous role makes it
+    ill-formed. Names the environment maps that are not roles of the task (a generator that was
+    not told the roles names objects its own way: `--brief description`) neither bind nor block
+    objects; they stay in the map for the relations that use them.
+    """
+    own = {name: oid for name, oid in env.roles.items() if name in task.roles}
+    binding = bind_roles(env.model_copy(update={"roles": own}), task.roles, catalog)
+    if binding.roles != own:
+        env = env.model_copy(update={"roles": {**env.roles, **binding.roles}})
     report = check_env(env, catalog)
     failures = [
         f.model_dump(mode="json")
@@ -39,14 +51,18 @@ def evaluate_env(
         entity=report.entity.passed,
         relation=report.relation.passed,
         failures=failures,
+        extended=report.extended.passed,
+        extended_failures=[f.model_dump(mode="json") for f in report.extended.failures],
     )
     cov = coverage(task, holds_initial(env, catalog), env.roles)
     verdicts: dict[str, str] = {}
     sim_ms: dict[str, float] = {}
+    sim_ticks: dict[str, int] = {}
     for kind, policy in policies.items():
         start = time.perf_counter()
         verdict = simulate(policy, env, task, catalog)
         sim_ms[kind] = (time.perf_counter() - start) * 1000.0
+        sim_ticks[kind] = verdict.ticks
         verdicts[kind] = verdict.status
     return EnvSample(
         generator=generator,
@@ -56,9 +72,10 @@ def evaluate_env(
         covered_paths=list(cov.covered_paths),
         trajectory=cov.trajectory,
         conditions=[tuple(c) for c in cov.conditions],
-        well_formed=cov.well_formed,
-        problems=list(cov.problems),
+        well_formed=cov.well_formed and binding.well_formed,
+        problems=list(cov.problems) + binding.problems,
         physics=physics,
         verdicts=verdicts,
         sim_ms=sim_ms,
+        sim_ticks=sim_ticks,
     )

@@ -80,6 +80,7 @@ def build_results(
         "config": config.identity(),
         "model": config.model,
         "seed": config.seed,
+        "brief": config.brief,
         "tasks": [t.id for t in tasks],
         "versions": package_versions(),
         "git_commit": git_commit(),

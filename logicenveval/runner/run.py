@@ -69,7 +69,8 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
     specs = [
         UnitSpec(generator=g, task_id=t, tasks_dir=config.tasks_dir, model=config.model,
                  model_args=config.model_args, seed=config.seed, run_dir=str(run_dir),
-                 cache=config.cache, no_cache=config.no_cache, layout_solver=config.layout_solver)
+                 cache=config.cache, no_cache=config.no_cache, layout_solver=config.layout_solver,
+                 brief=config.brief)
         for g in config.generators for t in ids
     ]
     records: dict[tuple[str, str], UnitRecord] = {}
