@@ -57,8 +57,6 @@ class CompiledPolicy:
                     break
         except Violation:
             return "precondition_violation"
-        except BudgetExceeded:
-            return "tick_limit"
         if status is RUNNING:
             return "tick_limit"
         if status is FAILURE:
