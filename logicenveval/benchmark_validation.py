@@ -140,9 +140,9 @@ def _impl_validate(task: Task, folder: Path, cat: Catalog, report: TaskReport,
     _check_disjoint(task, add)
     _check_values(task, add)
     policies = _load_policies(task, folder, add)
-    if report.problems or not simulate or len(policies) < len(POLICY_KINDS):
-        return
-    _check_policies(task, cat, policies, report, add, worlds)
+    if simulate and not report.problems and len(policies) == len(POLICY_KINDS):
+        _check_policies(task, cat, policies, report, add, worlds)
+    _check_models(task, folder, policies, add)
 
 
 def _check_disjoint(task: Task, add: _Add) -> None:
@@ -267,7 +267,6 @@ def _check_node(task: Task, enc: _Axioms, node: Node | Leaf, path: list[z3.BoolR
 # ----- policies ---------------------------------------------------------------------------------
 
 def _load_policies(task: Task, folder: Path, add: _Add) -> dict[str, object]:
-    from logicenveval.sim.groot import model_problem
     from logicenveval.sim.loader import load_policy
 
     loaded: dict[str, object] = {}
@@ -280,12 +279,20 @@ def _load_policies(task: Task, folder: Path, add: _Add) -> dict[str, object]:
             loaded[kind] = load_policy(folder / rel, roles=task.roles, rooms=task.rooms)
         except LogicEnvEvalError as exc:
             add(rel, exc.field or (f"line {exc.line}" if exc.line else "-"), str(exc))
-            continue
+    return loaded
+
+
+def _check_models(task: Task, folder: Path, loaded: dict[str, object], add: _Add) -> None:
+    """Each loaded policy carries the library's current Groot2 model (checked after the
+    simulation, so that a stale model never hides a behaviour problem)."""
+    from logicenveval.sim.groot import model_problem
+
+    for kind in loaded:
+        rel = task.policies[kind]
         stale = model_problem((folder / rel).read_text(encoding="utf-8"))
         if stale is not None:
             add(rel, "TreeNodesModel", f"{stale}; run `python -m logicenveval tasks validate "
                 "--write-models` to write the action library's current one")
-    return loaded
 
 
 def situations(task: Task) -> list[Trajectory]:
