@@ -21,6 +21,9 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "generate": ("logicenveval.commands.generate", "run one generator on one task"),
     "simulate": ("logicenveval.commands.simulate", "run a policy (BT) in an environment or situation"),
     "check-env": ("logicenveval.commands.check_env", "check an EnvSpec's physical plausibility"),
+    "export": ("logicenveval.commands.export", "write an environment as ProcTHOR house JSON or GLB"),
+    "check-house": ("logicenveval.commands.check_house",
+                    "check a ProcTHOR house JSON against ProcTHOR's databases"),
     "report": ("logicenveval.commands.report", "rebuild leaderboard.md/.html of a run folder"),
     "compare": ("logicenveval.commands.compare", "compare two runs; exit 1 on a regression"),
 }

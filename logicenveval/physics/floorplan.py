@@ -34,8 +34,8 @@ def valid_rooms(env: EnvSpec, fails: list[PhysicsFailure]) -> dict[str, Polygon]
             fails.append(_fail("invalid_polygon", f"room {room.id} polygon has {len(pts)} points (need >= 3)",
                                rooms=[room.id], measured=float(len(pts)), tolerance=3.0))
             continue
-        if not finite(*(c for p in pts for c in p)):  # before shapely: GEOS refuses or crashes on NaN
-            fails.append(_fail("invalid_polygon", f"room {room.id} polygon has non-finite coordinates",
+        if not finite(*(c for p in pts for c in p)):  # shapely raises on NaN/inf before is_valid
+            fails.append(_fail("invalid_polygon", f"room {room.id} polygon has a non-finite coordinate",
                                rooms=[room.id]))
             continue
         poly = Polygon(pts)
