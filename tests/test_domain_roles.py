@@ -1,0 +1,145 @@
+"""Role binding for environments that carry no `roles` map (logicenveval.domain.roles)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import hypothesis.strategies as st
+from hypothesis import given, settings
+
+from logicenveval.benchmark import load_task
+from logicenveval.domain.catalog import load_catalog
+from logicenveval.domain.roles import RoleBinding, bind_roles, category_names, matches
+from logicenveval.envfiles import env_from_dict
+from logicenveval.model.envspec import EnvObject, EnvSpec
+from logicenveval.model.task import Role
+
+CATALOG = load_catalog()
+REFERENCE = Path(__file__).resolve().parents[1] / "reports" / "reference" / "envs" / "logicenvgen"
+
+
+def _env(objects: list[dict[str, Any]], roles: dict[str, str | None] | None = None) -> EnvSpec:
+    return env_from_dict({
+        "task_id": "t", "env_id": "e", "rooms": [{"id": "living_room"}],
+        "objects": [{"room": "living_room", **o} for o in objects],
+        **({"roles": roles} if roles is not None else {}),
+    })
+
+
+BOXES = {"red_box": Role(category="toy_box", attributes={"color": "red"}),
+         "white_box": Role(category="toy_box", attributes={"color": "white"})}
+
+
+def test_category_and_attributes_bind_each_role_to_its_object() -> None:
+    env = _env([{"id": "b1", "category": "toy_box", "attributes": {"color": "white"}},
+                {"id": "b2", "category": "toy_box", "attributes": {"color": "red"}},
+                {"id": "s", "category": "sofa"}])
+    b = bind_roles(env, BOXES | {"sofa": Role(category="sofa")}, CATALOG)
+    assert b.roles == {"red_box": "b2", "white_box": "b1", "sofa": "s"}
+    assert b.well_formed and b.problems == [] and b.candidates == {}
+    assert b.apply(env).roles == b.roles
+
+
+def test_synonyms_and_spelling_variants_name_the_category() -> None:
+    names = category_names("toy_box", CATALOG)
+    assert {"toy_box", "toy_chest", "toy_bin"} <= names
+    role = Role(category="toy_box")
+    for spelled in ("Toy Chest", "toy-chests", "ToyBin", "toy_box"):
+        assert matches(EnvObject(id="x", category=spelled, room="r"), role, CATALOG), spelled
+    assert not matches(EnvObject(id="x", category="laundry_basket", room="r"), role, CATALOG)
+
+
+def test_an_object_lacking_the_role_attribute_does_not_agree() -> None:
+    env = _env([{"id": "b", "category": "toy_box"}])
+    b = bind_roles(env, BOXES, CATALOG)
+    assert b.roles == {"red_box": None, "white_box": None} and b.well_formed
+
+
+def test_several_candidates_is_ill_formed_naming_role_and_candidates() -> None:
+    env = _env([{"id": "bag_1", "category": "trash_bag"}, {"id": "bag_2", "category": "trash bag"}])
+    b = bind_roles(env, {"full_bag": Role(category="trash_bag")}, CATALOG)
+    assert not b.well_formed
+    assert b.roles == {"full_bag": None}
+    assert b.candidates == {"full_bag": ["bag_1", "bag_2"]}
+    (msg,) = b.problems
+    assert "role full_bag" in msg and "bag_1" in msg and "bag_2" in msg and "roles" in msg
+
+
+def test_two_roles_contesting_one_object_are_both_ambiguous() -> None:
+    env = _env([{"id": "roll", "category": "toilet_paper"}])
+    roles = {"roll": Role(category="toilet_paper"), "spare_roll": Role(category="toilet_paper")}
+    b = bind_roles(env, roles, CATALOG)
+    assert b.roles == {"roll": None, "spare_roll": None}
+    assert b.candidates == {"roll": ["roll"], "spare_roll": ["roll"]}
+    assert len(b.problems) == 2 and "spare_roll" in b.problems[0]
+
+
+def test_forced_choices_propagate() -> None:
+    env = _env([{"id": "a", "category": "wall_shelf", "attributes": {"color": "red"}},
+                {"id": "b", "category": "wall_shelf", "attributes": {"color": "blue"}}])
+    roles = {"shelf": Role(category="wall_shelf"),
+             "red_shelf": Role(category="wall_shelf", attributes={"color": "red"})}
+    b = bind_roles(env, roles, CATALOG)
+    assert b.roles == {"shelf": "b", "red_shelf": "a"} and b.well_formed
+
+
+def test_roles_given_by_the_env_are_kept_and_their_objects_taken() -> None:
+    env = _env([{"id": "b1", "category": "toy_box", "attributes": {"color": "red"}},
+                {"id": "b2", "category": "toy_box", "attributes": {"color": "red"}}],
+               roles={"red_box": "b2", "white_box": None})
+    b = bind_roles(env, BOXES | {"other": Role(category="toy_box")}, CATALOG)
+    assert b.roles == {"red_box": "b2", "white_box": None, "other": "b1"}
+    assert b.bound == {"other": "b1"}
+    assert bind_roles(env, BOXES, CATALOG).apply(env) is env
+
+
+def test_binding_round_trips_as_json() -> None:
+    env = _env([{"id": "bag_1", "category": "trash_bag"}, {"id": "bag_2", "category": "trash_bag"}])
+    b = bind_roles(env, {"full_bag": Role(category="trash_bag")}, CATALOG)
+    assert RoleBinding.model_validate_json(b.model_dump_json()) == b
+
+
+def test_reference_envs_without_roles_rebind_where_unique() -> None:
+    """LogicEnvGen's own environments: the rule recovers its role map wherever it is unique."""
+    env_path = REFERENCE / "clean_living_room" / "logicenvgen-00.json"
+    data = json.loads(env_path.read_text())
+    task = load_task("clean_living_room")
+    stripped = env_from_dict({k: v for k, v in data.items() if k != "roles"})
+    b = bind_roles(stripped, task.roles, CATALOG)
+    assert b.well_formed
+    assert b.roles == data["roles"]
+
+
+_CATS = ["toy", "toy_box", "book", "sofa"]
+_COLORS = ["red", "white", "blue"]
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.tuples(st.sampled_from(_CATS), st.sampled_from(_COLORS)), max_size=8),
+       st.dictionaries(st.sampled_from(["r1", "r2", "r3", "r4"]),
+                       st.tuples(st.sampled_from(_CATS), st.none() | st.sampled_from(_COLORS)),
+                       min_size=1))
+def test_binding_never_guesses(objs: list[tuple[str, str]], spec: dict[str, tuple[str, str | None]]) -> None:
+    env = _env([{"id": f"o{i}", "category": c, "attributes": {"color": col}}
+                for i, (c, col) in enumerate(objs)])
+    roles = {n: Role(category=c, attributes={"color": col} if col else {}) for n, (c, col) in spec.items()}
+    b = bind_roles(env, roles, CATALOG)
+    assert set(b.roles) == set(roles)
+    chosen = [o for o in b.roles.values() if o is not None]
+    assert len(chosen) == len(set(chosen)), "two roles bound to one object"
+    for name, oid in b.roles.items():
+        if oid is not None:
+            assert matches(env.obj(oid), roles[name], CATALOG)
+    for name, cands in b.candidates.items():
+        assert b.roles[name] is None and cands
+        assert any(f"role {name} " in p for p in b.problems)
+    # every role with one qualifying object and no rival for it is bound to that object
+    for name, role in roles.items():
+        qual = [o.id for o in env.objects if matches(o, role, CATALOG)]
+        rivals = [m for m, r in roles.items() if m != name and any(matches(env.obj(q), r, CATALOG) for q in qual)]
+        if len(qual) == 1 and not rivals:
+            assert b.roles[name] == qual[0]
+        if not qual:
+            assert b.roles[name] is None and name not in b.candidates
