@@ -11,6 +11,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from logicenveval.domain.catalog import Catalog
+from logicenveval.domain.roles import bind_roles
 from logicenveval.metrics.evaluate import coverage
 from logicenveval.metrics.records import EnvSample, PhysicsSummary
 from logicenveval.model.envspec import EnvSpec
@@ -27,7 +28,14 @@ def evaluate_env(
     policies: Mapping[str, Any],
     catalog: Catalog,
 ) -> EnvSample:
-    """Measure one environment; never raises for a bad environment (that is a finding)."""
+    """Measure one environment; never raises for a bad environment (that is a finding).
+
+    Roles the environment does not map are bound first (`domain.roles`), so environments made
+    by other tools are judged by the same trees and policies; an ambiguous role makes it
+    ill-formed.
+    """
+    binding = bind_roles(env, task.roles, catalog)
+    env = binding.apply(env)
     report = check_env(env, catalog)
     failures = [
         f.model_dump(mode="json")
@@ -56,8 +64,8 @@ def evaluate_env(
         covered_paths=list(cov.covered_paths),
         trajectory=cov.trajectory,
         conditions=[tuple(c) for c in cov.conditions],
-        well_formed=cov.well_formed,
-        problems=list(cov.problems),
+        well_formed=cov.well_formed and binding.well_formed,
+        problems=list(cov.problems) + binding.problems,
         physics=physics,
         verdicts=verdicts,
         sim_ms=sim_ms,

@@ -51,14 +51,16 @@ def build_results(
     records: Sequence[UnitRecord],
     *,
     wall_seconds: float | None = None,
+    generators: Sequence[str] | None = None,
 ) -> dict[str, Any]:
+    """`generators` are the row names (plug-ins' `name` attributes); default: config.generators."""
     by_task = {t.id: t for t in tasks}
     results: dict[str, Any] = {}
     per_task: dict[str, Any] = {}
     failures: dict[str, list[dict[str, Any]]] = {}
     gen_seconds: dict[str, float] = {}
     llm: dict[str, dict[str, float]] = {}
-    for gen in config.generators:
+    for gen in (config.generators if generators is None else generators):
         units = [r for r in records if r.generator == gen]
         metrics = [
             task_metrics(by_task[u.task_id], u.samples, n_failed=1 if u.error and not u.samples else 0)

@@ -31,7 +31,7 @@ class UnitSpec(BaseModel):
     """Everything a worker process needs to run one unit (picklable, no live objects)."""
 
     model_config = ConfigDict(frozen=True)
-    generator: str
+    generator: str  # the row name: seeds, storage and records use it
     task_id: str
     tasks_dir: str | None
     model: str
@@ -41,6 +41,8 @@ class UnitSpec(BaseModel):
     layout_solver: Solver = DEFAULT_SOLVER
     cache: str | None = None
     no_cache: bool = False
+    #: what the worker makes (a registered name or MODULE:ATTR; generators.plugins); None = name
+    generator_target: str | None = None
 
 
 def unit_seed(seed: int, generator: str, task_id: str) -> list[int]:
@@ -78,7 +80,7 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     try:
         model = make_model(spec.model, spec.model_args, cache_path=spec.cache,
                            no_cache=spec.no_cache, run_dir=run_dir)
-        generator = make_generator(spec.generator)
+        generator = make_generator(spec.generator_target or spec.generator)
         ctx = GenerationContext(
             model=model,
             catalog=catalog,

@@ -1,0 +1,140 @@
+"""Generators from outside the package: MODULE:ATTR, entry points, register_generator."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+import logicenveval
+from logicenveval.cli import main
+from logicenveval.errors import ConfigError
+from logicenveval.generators import plugins
+from logicenveval.generators.base import GenerationContext, GenerationResult
+from logicenveval.generators.plugins import resolve_generator
+from logicenveval.model.task import TaskBrief
+
+ROOT = Path(__file__).resolve().parents[1]
+EXAMPLE = ROOT / "examples" / "my_generator"
+TASKS = "clean_living_room,kitchen_fridge_restock"
+
+
+class Named:
+    """A generator defined in the test module (importable by workers as tests' module)."""
+
+    name = "named-in-tests"
+
+    def generate(self, brief: TaskBrief, ctx: GenerationContext) -> GenerationResult:
+        return GenerationResult()
+
+
+def _cli(out: Path, generators: str, *extra: str, cwd: Path = EXAMPLE) -> subprocess.CompletedProcess[str]:
+    env = {**os.environ, "PYTHONPATH": ""}
+    return subprocess.run(
+        [sys.executable, "-m", "logicenveval", "run", "--model", "offline", "--tasks", TASKS,
+         "--generators", generators, "--output", str(out), "--quiet", *extra],
+        cwd=cwd, env=env, capture_output=True, text=True, timeout=600, check=False)
+
+
+def _results(out: Path) -> dict[str, Any]:
+    (run_dir,) = [p for p in out.iterdir() if p.is_dir()]
+    data: dict[str, Any] = json.loads((run_dir / "results.json").read_text())
+    return data
+
+
+def test_builtin_names_resolve_to_themselves() -> None:
+    ref = resolve_generator("cot")
+    assert (ref.name, ref.target, ref.portable) == ("cot", "cot", True)
+
+
+def test_module_attr_resolves_to_the_generators_name(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.syspath_prepend(str(EXAMPLE))
+    ref = resolve_generator("my_generator:MyGenerator")
+    assert ref.name == "my-generator" and ref.target == "my_generator:MyGenerator"
+
+
+def test_entry_point_names_resolve(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.syspath_prepend(str(EXAMPLE))
+    monkeypatch.setattr(plugins, "entry_points", lambda: {"mine": "my_generator:MyGenerator"})
+    ref = resolve_generator("mine")
+    assert ref.name == "my-generator" and ref.target == "my_generator:MyGenerator"
+
+
+@pytest.mark.parametrize(("spec", "words"), [
+    ("no_such_module_xyz:Gen", ["cannot import module 'no_such_module_xyz'", "No module named", "fix:"]),
+    ("logicenveval.errors:NoSuchThing", ["has no attribute 'NoSuchThing'", "fix:"]),
+    ("logicenveval:__version__", ["is not callable", "fix:"]),
+    ("not-a-generator", ["unknown generator 'not-a-generator'", "PKG.MODULE:ATTR", "logicenvgen"]),
+    ("logicenveval.errors:LogicEnvEvalError", ["could not be constructed", "fix:"]),
+])
+def test_bad_specs_are_config_errors_with_the_cause(spec: str, words: list[str]) -> None:
+    with pytest.raises(ConfigError) as info:
+        resolve_generator(spec)
+    for w in words:
+        assert w in str(info.value), str(info.value)
+
+
+def test_unknown_module_on_the_command_line_exits_2(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    code = main(["run", "--model", "offline", "--tasks", TASKS, "--generators", "nope_mod:Gen",
+                 "--output", str(tmp_path), "--quiet"])
+    assert code == 2
+    err = capsys.readouterr().err
+    assert "nope_mod" in err and "No module named" in err and "fix:" in err
+    assert not any(tmp_path.iterdir())  # nothing was started
+
+
+def test_register_generator_from_python(tmp_path: Path) -> None:
+    logicenveval.register_generator("mine-registered", Named)
+    ref = resolve_generator("mine-registered")
+    assert ref.target == f"{__name__}:Named" and ref.portable
+    assert main(["run", "--model", "offline", "--tasks", "clean_living_room",
+                 "--generators", "mine-registered", "--executor", "inprocess",
+                 "--output", str(tmp_path), "--quiet"]) == 0
+    assert list(_results(tmp_path)["results"]) == ["mine-registered"]
+
+
+def test_unimportable_factory_is_refused_for_worker_processes(tmp_path: Path) -> None:
+    logicenveval.register_generator("lambda-gen", lambda: Named())
+    assert not resolve_generator("lambda-gen").portable
+    with pytest.raises(ConfigError, match="worker processes cannot import"):
+        from logicenveval.runner.config import RunConfig
+        from logicenveval.runner.run import resolve_generators
+
+        resolve_generators(RunConfig(generators=("lambda-gen",), workers=2, output=str(tmp_path)))
+
+
+def test_module_attr_with_two_worker_processes(tmp_path: Path) -> None:
+    """The must-show: MODULE:ATTR from the current folder, --workers 2, row under its name."""
+    proc = _cli(tmp_path, "my_generator:MyGenerator,cot", "--workers", "2", "--executor", "process")
+    assert proc.returncode == 0, proc.stderr
+    results = _results(tmp_path)
+    assert set(results["results"]) == {"my-generator", "cot"}
+    assert results["results"]["my-generator"]["n_envs"] == 6
+    assert results["failures"]["my-generator"] == []
+    (run_dir,) = [p for p in tmp_path.iterdir() if p.is_dir()]
+    assert "| my-generator |" in (run_dir / "leaderboard.md").read_text()
+    assert len(list((run_dir / "envs" / "my-generator" / "clean_living_room").glob("*.json"))) == 3
+    # same command in one process: identical results (resolution travels in the unit spec)
+    inproc = tmp_path / "inproc"
+    assert _cli(inproc, "my_generator:MyGenerator,cot", "--executor", "inprocess").returncode == 0
+    a, b = results["results"]["my-generator"], _results(inproc)["results"]["my-generator"]
+    assert {k: v for k, v in a.items() if k != "st_ms"} == {k: v for k, v in b.items() if k != "st_ms"}
+
+
+@pytest.mark.slow
+def test_entry_point_after_pip_install(tmp_path: Path) -> None:
+    pip = [sys.executable, "-m", "pip", "install", "-q", "--no-deps", "--no-build-isolation",
+           "-e", str(EXAMPLE)]
+    subprocess.run(pip, check=True, capture_output=True, timeout=600)
+    try:
+        proc = _cli(tmp_path, "my-generator", "--workers", "2", cwd=tmp_path)
+        assert proc.returncode == 0, proc.stderr
+        assert list(_results(tmp_path)["results"]) == ["my-generator"]
+    finally:
+        subprocess.run([sys.executable, "-m", "pip", "uninstall", "-q", "-y",
+                        "my-logicenveval-generator"], check=False, capture_output=True, timeout=600)
