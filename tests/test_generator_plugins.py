@@ -128,7 +128,7 @@ def test_module_attr_with_two_worker_processes(tmp_path: Path) -> None:
 
 @pytest.mark.slow
 def test_entry_point_after_pip_install(tmp_path: Path) -> None:
-    pip = [sys.executable, "-m", "pip", "install", "-q", "--no-deps", "--no-build-isolation",
+    pip = [sys.executable, "-m", "pip", "install", "-q", "--no-deps",
            "-e", str(EXAMPLE)]
     subprocess.run(pip, check=True, capture_output=True, timeout=600)
     try:
