@@ -27,6 +27,7 @@ def _samples(run_dir: Path) -> list[dict[str, Any]]:
 def _drilldown(run_dir: Path, results: dict[str, Any], tasks_dir: str | None) -> list[dict[str, Any]]:
     from logicenveval.benchmark import load_task, policy_path
     from logicenveval.domain.catalog import load_catalog
+    from logicenveval.domain.roles import bind_roles
     from logicenveval.envfiles import load_env
     from logicenveval.errors import LogicEnvEvalError
     from logicenveval.model.task import POLICY_KINDS
@@ -52,6 +53,7 @@ def _drilldown(run_dir: Path, results: dict[str, Any], tasks_dir: str | None) ->
                 entry: dict[str, Any] = {"sample": s, "render": None, "traces": {}}
                 if env_path.exists():
                     env = load_env(env_path)
+                    env = bind_roles(env, task.roles, catalog).apply(env)  # as it was judged
                     svg = render_svg(env, check_env(env, catalog))
                     rel = Path("renders") / gen / task_id / f"{s['env_id']}.svg"
                     atomic_write_text(run_dir / rel, svg)

@@ -12,12 +12,11 @@ import platform
 import subprocess
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
+from typing import Any, Protocol
 
 from logicenveval.metrics.compute import aggregate, task_metrics
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.model.task import Task
-from logicenveval.runner.config import RunConfig
 from logicenveval.runner.store import atomic_write_text
 
 RESULTS_SCHEMA = "logicenveval.results/1"
@@ -45,8 +44,21 @@ def git_commit() -> str | None:
     return proc.stdout.strip() or None if proc.returncode == 0 else None
 
 
+class ResultsConfig(Protocol):
+    """What results.json records of a run's configuration (`RunConfig`, `EvaluateConfig`)."""
+
+    @property
+    def model(self) -> str: ...
+    @property
+    def seed(self) -> int: ...
+    @property
+    def generators(self) -> tuple[str, ...]: ...
+    def identity(self) -> dict[str, object]: ...
+    def resolved_run_id(self) -> str: ...
+
+
 def build_results(
-    config: RunConfig,
+    config: ResultsConfig,
     tasks: Sequence[Task],
     records: Sequence[UnitRecord],
     *,
