@@ -17,7 +17,7 @@ from logicenveval.cli import main
 
 TASKS = "clean_living_room,hallway_entry_tidy,kitchen_fridge_restock"
 GENERATORS = "logicenvgen,cot,ifg,holodeck"
-KEYS = {"phypr", "logcov", "ld", "scevr", "faudr", "st_ms", "ji", "redundancy", "n_envs"}
+KEYS = {"phypr", "logcov", "ld", "scevr", "faudr", "st_ms", "ji", "redundancy", "n_envs", "ci95"}
 
 
 def _run(out: Path, *extra: str) -> int:

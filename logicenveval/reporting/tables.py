@@ -27,6 +27,9 @@ COLUMNS: tuple[tuple[str, tuple[str, ...], bool], ...] = (
 def metric(values: dict[str, Any], path: tuple[str, ...]) -> float | None:
     cur: Any = values
     for key in path:
+        if isinstance(cur, list) and key.isdigit() and int(key) < len(cur):
+            cur = cur[int(key)]
+            continue
         if not isinstance(cur, dict) or key not in cur:
             return None
         cur = cur[key]
@@ -45,12 +48,23 @@ def method_label(generator: str, model: str) -> str:
     return f"{generator} (oracle: upper bound)" if model == "oracle" else generator
 
 
+def cell(values: dict[str, Any], path: tuple[str, ...], pct: bool) -> str:
+    """One leaderboard cell: `value ± half-width` of the 95 % interval when results carry one."""
+    if path == ("n_envs",):
+        return str(int(values["n_envs"]))
+    text = fmt(metric(values, path), pct)
+    lo, hi = metric(values.get("ci95", {}), path + ("0",)), metric(values.get("ci95", {}), path + ("1",))
+    if lo is None or hi is None:
+        return text
+    half = (hi - lo) / 2
+    return f"{text} ± {100 * half:.2f}" if pct else f"{text} ± {half:.2f}"
+
+
 def rows(results: dict[str, Any]) -> list[list[str]]:
     out = []
     for gen, values in results["results"].items():
         out.append([method_label(gen, results.get("model", ""))]
-                   + [str(int(values["n_envs"])) if path == ("n_envs",) else fmt(metric(values, path), pct)
-                      for _, path, pct in COLUMNS])
+                   + [cell(values, path, pct) for _, path, pct in COLUMNS])
     return out
 
 
@@ -70,7 +84,8 @@ def markdown(results: dict[str, Any]) -> str:
     if fails:
         lines += ["", "Recorded generation failures: "
                   + ", ".join(f"{g}: {n}" for g, n in sorted(fails.items()))]
-    lines += ["", "Rates in percent; ST = mean simulation time of one BT over a generator's "
+    lines += ["", "Rates in percent (± half-width of the 95 % bootstrap interval over tasks"
+              + (" and seeds" if results.get("seeds") else "") + "); ST = mean simulation time of one BT over a generator's "
               "environments for a task (ms); JI = Jaccard index vs the reference minimal "
               "trajectory set; Redundancy = environments / minimum cover size.", ""]
     return "\n".join(lines)

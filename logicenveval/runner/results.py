@@ -10,18 +10,27 @@ import importlib.metadata
 import json
 import platform
 import subprocess
+import zlib
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any, Protocol
 
+import numpy as np
+
 from logicenveval.metrics.compute import aggregate, task_metrics
 from logicenveval.metrics.records import UnitRecord
+from logicenveval.metrics.uncertainty import ci95
 from logicenveval.model.task import Task
 from logicenveval.runner.store import atomic_write_text
 
 RESULTS_SCHEMA = "logicenveval.results/1"
 _VERSIONED = ("logicenveval", "numpy", "pydantic", "z3-solver", "py-trees", "trimesh",
               "python-fcl", "shapely", "ortools", "pandas")
+
+
+def bootstrap_rng(seed: int, generator: str) -> np.random.Generator:
+    """The bootstrap's own stream: fixed by the run seed and the row, whatever else ran."""
+    return np.random.default_rng([seed, 95, zlib.crc32(generator.encode())])
 
 
 def package_versions() -> dict[str, str]:
@@ -80,6 +89,8 @@ def build_results(
         ]
         results[gen] = aggregate(metrics).model_dump(mode="json")
         per_task[gen] = {u.task_id: m.model_dump(mode="json") for u, m in zip(units, metrics, strict=True)}
+        results[gen]["ci95"] = ci95({(t, config.seed): m for t, m in per_task[gen].items()},
+                                    bootstrap_rng(config.seed, gen))
         failures[gen] = [
             {"task": u.task_id, "stage": "unit", "message": u.error} for u in units if u.error
         ] + [
