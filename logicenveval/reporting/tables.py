@@ -68,12 +68,17 @@ def rows(results: dict[str, Any]) -> list[list[str]]:
     return out
 
 
+def _seed_text(results: dict[str, Any]) -> str:
+    seeds = results.get("seeds")
+    return f"seeds {', '.join(str(s) for s in seeds)}" if seeds else f"seed {results.get('seed')}"
+
+
 def markdown(results: dict[str, Any]) -> str:
     header = ["Method"] + [h + (" (%)" if pct else "") for h, _, pct in COLUMNS]
     lines = [
         f"# LogicEnvEval leaderboard — run `{results.get('run_id', '?')}`",
         "",
-        f"Model: `{results.get('model')}` · seed {results.get('seed')} · "
+        f"Model: `{results.get('model')}` · {_seed_text(results)} · "
         f"{len(results.get('tasks', []))} tasks · commit `{results.get('git_commit') or 'n/a'}`",
         "",
         "| " + " | ".join(header) + " |",

@@ -6,6 +6,7 @@ same command gives byte-identical files apart from those timing fields.
 
 from __future__ import annotations
 
+import hashlib
 import importlib.metadata
 import json
 import platform
@@ -31,6 +32,12 @@ _VERSIONED = ("logicenveval", "numpy", "pydantic", "z3-solver", "py-trees", "tri
 def bootstrap_rng(seed: int, generator: str) -> np.random.Generator:
     """The bootstrap's own stream: fixed by the run seed and the row, whatever else ran."""
     return np.random.default_rng([seed, 95, zlib.crc32(generator.encode())])
+
+
+def task_hashes(tasks: Sequence[Task]) -> dict[str, str]:
+    """A digest per task (its full JSON): the benchmark version `compare` checks."""
+    return {t.id: hashlib.sha256(json.dumps(t.model_dump(mode="json"), sort_keys=True).encode())
+            .hexdigest()[:16] for t in tasks}
 
 
 def package_versions() -> dict[str, str]:
@@ -106,6 +113,7 @@ def build_results(
         "model": config.model,
         "seed": config.seed,
         "tasks": [t.id for t in tasks],
+        "benchmark": {"task_sha256": task_hashes(tasks)},
         "versions": package_versions(),
         "git_commit": git_commit(),
         "results": results,
