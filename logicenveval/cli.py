@@ -20,6 +20,8 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "evaluate": ("logicenveval.commands.evaluate", "score a folder of EnvSpecs made by any tool"),
     "generate": ("logicenveval.commands.generate", "run one generator on one task"),
     "simulate": ("logicenveval.commands.simulate", "run a policy (BT) in an environment or situation"),
+    "import-house": ("logicenveval.commands.import_house",
+                     "convert a ProcTHOR/AI2-THOR house (schema 1.0.0) into an EnvSpec"),
     "check-env": ("logicenveval.commands.check_env", "check an EnvSpec's physical plausibility"),
     "report": ("logicenveval.commands.report", "rebuild leaderboard.md/.html of a run folder"),
     "compare": ("logicenveval.commands.compare", "compare two runs; exit 1 on a regression"),
