@@ -138,3 +138,28 @@ def test_entry_point_after_pip_install(tmp_path: Path) -> None:
     finally:
         subprocess.run([sys.executable, "-m", "pip", "uninstall", "-q", "-y",
                         "my-logicenveval-generator"], check=False, capture_output=True, timeout=600)
+
+
+def test_a_worker_without_the_module_on_its_path_imports_it_from_the_spec(tmp_path: Path) -> None:
+    """What a Ray worker started in another folder does: the unit spec carries the module's root."""
+    import sys as _sys
+
+    _sys.path.insert(0, str(EXAMPLE))
+    try:
+        ref = resolve_generator("my_generator:MyGenerator")
+    finally:
+        _sys.path.remove(str(EXAMPLE))
+    assert ref.search_path == str(EXAMPLE.resolve())
+    from logicenveval.runner.unit import UnitSpec
+
+    spec = UnitSpec(generator=ref.name, generator_target=ref.target, generator_path=ref.search_path,
+                    task_id="clean_living_room", tasks_dir=None, model="offline", model_args="",
+                    seed=0, run_dir=str(tmp_path / "run"))
+    code = ("import json, sys; from logicenveval.runner.unit import UnitSpec, run_unit; "
+            "r = run_unit(UnitSpec.model_validate_json(sys.argv[1])); "
+            "print(json.dumps([r.error, len(r.samples)]))")
+    proc = subprocess.run([sys.executable, "-c", code, spec.model_dump_json()], cwd=tmp_path,
+                          env={**os.environ, "PYTHONPATH": ""}, capture_output=True, text=True,
+                          timeout=600, check=False)
+    assert proc.returncode == 0, proc.stderr
+    assert json.loads(proc.stdout.strip().splitlines()[-1]) == [None, 3]

@@ -14,9 +14,11 @@ from __future__ import annotations
 
 import importlib
 import importlib.metadata
+import importlib.util
 import sys
 from collections.abc import Callable
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 from logicenveval.errors import ConfigError
@@ -31,6 +33,9 @@ class GeneratorRef:
     name: str  # the generator's `name` attribute: its leaderboard row, units/ and envs/ folder
     target: str  # what a worker passes to `make_generator`: a registered name or MODULE:ATTR
     portable: bool = True  # False: a factory registered in this process that workers cannot import
+    #: the folder the target's top-level module was imported from, for workers whose Python path
+    #: lacks it (a Ray worker started elsewhere); None for registered names
+    search_path: str | None = None
 
 
 def entry_points() -> dict[str, str]:
@@ -105,4 +110,26 @@ def resolve_generator(spec: str) -> GeneratorRef:
                           field="--generators", hint="implement the Generator protocol "
                           "(logicenveval.generators.base)")
     return GeneratorRef(spec=spec, name=name if entry is None else spec, target=target,
-                        portable=portable)
+                        portable=portable, search_path=_import_root(target))
+
+
+def _import_root(target: str) -> str | None:
+    """The sys.path entry that provides the top-level module of `module:attr`, if any."""
+    if ":" not in target:
+        return None
+    top = target.partition(":")[0].split(".")[0]
+    found = importlib.util.find_spec(top)
+    if found is None:
+        return None
+    if found.submodule_search_locations:
+        return str(Path(next(iter(found.submodule_search_locations))).resolve().parent)
+    return str(Path(found.origin).resolve().parent) if found.origin else None
+
+
+def ensure_importable(target: str, search_path: str | None) -> None:
+    """In a worker: make `target`'s module importable from `search_path` when it is not already."""
+    if search_path is None or ":" not in target:
+        return
+    top = target.partition(":")[0].split(".")[0]
+    if importlib.util.find_spec(top) is None and search_path not in sys.path:
+        sys.path.append(search_path)

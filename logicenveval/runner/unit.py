@@ -20,6 +20,7 @@ from logicenveval.domain.catalog import load_catalog
 from logicenveval.envfiles import env_to_json
 from logicenveval.errors import LogicEnvEvalError
 from logicenveval.generators.base import GenerationContext, make_generator
+from logicenveval.generators.plugins import ensure_importable
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import POLICY_KINDS
@@ -43,6 +44,8 @@ class UnitSpec(BaseModel):
     no_cache: bool = False
     #: what the worker makes (a registered name or MODULE:ATTR; generators.plugins); None = name
     generator_target: str | None = None
+    #: where the target's module was found in the parent (generators.plugins.GeneratorRef)
+    generator_path: str | None = None
 
 
 def unit_seed(seed: int, generator: str, task_id: str) -> list[int]:
@@ -80,7 +83,9 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     try:
         model = make_model(spec.model, spec.model_args, cache_path=spec.cache,
                            no_cache=spec.no_cache, run_dir=run_dir)
-        generator = make_generator(spec.generator_target or spec.generator)
+        target = spec.generator_target or spec.generator
+        ensure_importable(target, spec.generator_path)
+        generator = make_generator(target)
         ctx = GenerationContext(
             model=model,
             catalog=catalog,
