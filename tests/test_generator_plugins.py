@@ -163,3 +163,39 @@ def test_a_worker_without_the_module_on_its_path_imports_it_from_the_spec(tmp_pa
                           timeout=600, check=False)
     assert proc.returncode == 0, proc.stderr
     assert json.loads(proc.stdout.strip().splitlines()[-1]) == [None, 3]
+
+
+SCRIPT = '''
+import sys
+import logicenveval
+from logicenveval.generators.base import GenerationResult
+from logicenveval.runner.config import RunConfig
+from logicenveval.runner.run import run
+
+
+class ScriptGen:
+    name = "script-gen"
+
+    def generate(self, brief, ctx):
+        raise RuntimeError("generator bug in the user script")
+
+
+logicenveval.register_generator("from-script", ScriptGen)
+
+if __name__ == "__main__":
+    out = run(RunConfig(generators=("from-script",), tasks=("clean_living_room", "kitchen_fridge_restock"),
+                        workers=2, executor="process", output=sys.argv[1]), show_progress=False)
+    print(sorted(out.results["failures"]["from-script"][0].items()))
+'''
+
+
+def test_register_generator_in_a_script_reaches_process_workers(tmp_path: Path) -> None:
+    """The issue's first report: register() in a user script was unknown to the pool workers."""
+    script = tmp_path / "user_script.py"
+    script.write_text(SCRIPT)
+    proc = subprocess.run([sys.executable, str(script), str(tmp_path / "out")], cwd=tmp_path,
+                          capture_output=True, text=True, timeout=600, check=False)
+    assert proc.returncode == 0, proc.stderr
+    # the workers made the generator (no "unknown generator"): its own error is what is recorded
+    assert "generator bug in the user script" in proc.stdout
+    assert "unknown generator" not in proc.stdout

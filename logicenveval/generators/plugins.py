@@ -118,6 +118,8 @@ def _import_root(target: str) -> str | None:
     if ":" not in target:
         return None
     top = target.partition(":")[0].split(".")[0]
+    if top == "__main__":
+        return None  # a script's own classes: process workers re-import the script themselves
     found = importlib.util.find_spec(top)
     if found is None:
         return None
