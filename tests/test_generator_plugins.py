@@ -199,3 +199,13 @@ def test_register_generator_in_a_script_reaches_process_workers(tmp_path: Path) 
     # the workers made the generator (no "unknown generator"): its own error is what is recorded
     assert "generator bug in the user script" in proc.stdout
     assert "unknown generator" not in proc.stdout
+
+
+@pytest.mark.slow
+def test_module_attr_with_the_ray_executor(tmp_path: Path) -> None:
+    pytest.importorskip("ray")
+    proc = _cli(tmp_path, "my_generator:MyGenerator", "--workers", "2", "--executor", "ray")
+    assert proc.returncode == 0, proc.stderr
+    results = _results(tmp_path)
+    assert list(results["results"]) == ["my-generator"] and results["failures"]["my-generator"] == []
+    assert results["results"]["my-generator"]["n_envs"] == 6
