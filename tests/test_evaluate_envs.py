@@ -137,3 +137,15 @@ def test_not_a_folder_exits_2(tmp_path: Path, capsys: pytest.CaptureFixture[str]
     (tmp_path / "empty").mkdir()
     assert main(["evaluate", str(tmp_path / "empty"), "--output", str(tmp_path)]) == 2
     assert "no folder named after a task" in capsys.readouterr().err
+
+
+def test_edited_files_score_into_a_new_run_folder(run_dir: Path, tmp_path: Path) -> None:
+    envs = tmp_path / "envs"
+    shutil.copytree(run_dir / "envs" / "logicenvgen", envs)
+    first = _evaluate(envs, tmp_path / "a")
+    (envs / "clean_living_room" / "logicenvgen-00.json").unlink()
+    assert main(["evaluate", str(envs), "--executor", "inprocess", "--output", str(tmp_path / "a")]) == 0
+    folders = sorted(p for p in (tmp_path / "a").iterdir() if p.is_dir())
+    assert len(folders) == 2 and first in folders
+    second = next(p for p in folders if p != first)
+    assert _results(second)["results"]["envs"]["n_envs"] == _results(first)["results"]["envs"]["n_envs"] - 1

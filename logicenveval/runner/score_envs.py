@@ -63,9 +63,11 @@ class EvaluateConfig(BaseModel):
         return (self.generator_name,)
 
     def identity(self) -> dict[str, object]:
+        """What is scored, including a digest of the files: edited files give a new run folder."""
         return {
             "mode": "evaluate",
             "envs_dir": str(Path(self.envs_dir).resolve()),
+            "envs_sha256": folder_digest(Path(self.envs_dir)),
             "generators": [self.generator_name],
             "tasks": list(self.tasks),
             "tasks_dir": self.tasks_dir,
@@ -100,6 +102,17 @@ class EvaluateOutcome:
     computed: int
     reused: int
     skipped_folders: list[str] = field(default_factory=list)  # not tasks of the tasks dir
+
+
+def folder_digest(root: Path) -> str:
+    """SHA-256 over every candidate EnvSpec file's relative path and content."""
+    h = hashlib.sha256()
+    if root.is_dir():
+        for folder in sorted(p for p in root.iterdir() if p.is_dir()):
+            for path in env_files(folder):
+                h.update(f"{folder.name}/{path.name}\0".encode())
+                h.update(hashlib.sha256(path.read_bytes()).digest())
+    return h.hexdigest()[:16]
 
 
 def _natural(path: Path) -> list[object]:
