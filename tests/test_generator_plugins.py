@@ -88,6 +88,16 @@ def test_unknown_module_on_the_command_line_exits_2(tmp_path: Path, capsys: pyte
     assert not any(tmp_path.iterdir())  # nothing was started
 
 
+@pytest.fixture
+def clean_registry(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Registrations made by a test stay in that test."""
+    from logicenveval.generators import base
+
+    base.registered()
+    monkeypatch.setattr(base, "_REGISTRY", dict(base._REGISTRY))
+
+
+@pytest.mark.usefixtures("clean_registry")
 def test_register_generator_from_python(tmp_path: Path) -> None:
     logicenveval.register_generator("mine-registered", Named)
     ref = resolve_generator("mine-registered")
@@ -98,6 +108,7 @@ def test_register_generator_from_python(tmp_path: Path) -> None:
     assert list(_results(tmp_path)["results"]) == ["mine-registered"]
 
 
+@pytest.mark.usefixtures("clean_registry")
 def test_unimportable_factory_is_refused_for_worker_processes(tmp_path: Path) -> None:
     logicenveval.register_generator("lambda-gen", lambda: Named())
     assert not resolve_generator("lambda-gen").portable

@@ -14,7 +14,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                    help="offline | oracle | openai:<model> | replay:<cache.sqlite> (default offline)")
     p.add_argument("--model-args", default="", help="key=value,... e.g. base_url=...,api_key_env=...")
     p.add_argument("--generators", default=",".join(DEFAULT_GENERATORS),
-                   help="comma-separated generator names (ablations by name)")
+                   help="comma-separated: built-in names (ablations by name), installed plug-ins, "
+                   "or PKG.MODULE:ATTR (docs/own-generator.md)")
     p.add_argument("--tasks", default="all", help="all or comma-separated task ids")
     p.add_argument("--tasks-dir", default=None, help="folder of <task_id>/task.json (default: the benchmark)")
     p.add_argument("--limit", type=int, default=None, help="only the first N tasks")
