@@ -32,10 +32,14 @@ def evaluate_env(
 
     Roles the environment does not map are bound first (`domain.roles`), so environments made
     by other tools are judged by the same trees and policies; an ambiguous role makes it
-    ill-formed.
+    ill-formed. Names the environment maps that are not roles of the task (a generator that was
+    not told the roles names objects its own way: `--brief description`) neither bind nor block
+    objects; they stay in the map for the relations that use them.
     """
-    binding = bind_roles(env, task.roles, catalog)
-    env = binding.apply(env)
+    own = {name: oid for name, oid in env.roles.items() if name in task.roles}
+    binding = bind_roles(env.model_copy(update={"roles": own}), task.roles, catalog)
+    if binding.roles != own:
+        env = env.model_copy(update={"roles": {**env.roles, **binding.roles}})
     report = check_env(env, catalog)
     failures = [
         f.model_dump(mode="json")
