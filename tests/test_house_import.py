@@ -2,16 +2,21 @@
 
 from __future__ import annotations
 
+import copy
 import json
 from pathlib import Path
+from typing import Any
 
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from logicenveval.benchmark import load_task
 from logicenveval.cli import main
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.domain.roles import bind_roles
 from logicenveval.envfiles import load_env
+from logicenveval.errors import EnvSpecError
 from logicenveval.metrics.evaluate import coverage_of_env
 from logicenveval.scene.house_import import import_house, load_house
 
@@ -115,3 +120,41 @@ def test_bad_houses_exit_2_naming_the_field(tmp_path: Path, capsys: pytest.Captu
     for w in words:
         assert w in err, err
     assert not (tmp_path / "out.json").exists()
+
+
+def _paths(node: object, prefix: tuple[object, ...] = ()) -> list[tuple[object, ...]]:
+    out: list[tuple[object, ...]] = [prefix] if prefix else []
+    if isinstance(node, dict):
+        for k, v in node.items():
+            out += _paths(v, (*prefix, k))
+    elif isinstance(node, list):
+        for i, v in enumerate(node):
+            out += _paths(v, (*prefix, i))
+    return out
+
+
+_HOUSE = json.loads((HOUSES / "kitchen_breakfast.json").read_text())
+_PATHS = _paths(_HOUSE)
+_JUNK = [None, "x", "", [], {}, -1, 0, 1e308, float("nan"), float("inf"), [1, 2], {"x": "a"}, True]
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(st.tuples(st.sampled_from(_PATHS), st.sampled_from([*_JUNK, "DELETE"])),
+                min_size=1, max_size=4))
+def test_any_mangled_house_imports_or_names_the_problem(edits: list[tuple[tuple[object, ...], object]]) -> None:
+    house = copy.deepcopy(_HOUSE)
+    for path, value in edits:
+        parent: Any = house
+        try:
+            for key in path[:-1]:
+                parent = parent[key]
+            if value == "DELETE" and isinstance(parent, dict):
+                parent.pop(path[-1], None)
+            else:
+                parent[path[-1]] = value
+        except (KeyError, IndexError, TypeError):
+            continue  # an earlier edit removed or replaced this path
+    try:
+        import_house(house, task_id="kitchen_breakfast_prep", env_id="h", catalog=CATALOG)
+    except EnvSpecError as exc:
+        assert "fix:" in str(exc)

@@ -75,10 +75,14 @@ def _type_of(obj: dict[str, Any]) -> str:
 
 def _xz(p: Any, where: str) -> tuple[float, float]:
     try:
-        return float(p["x"]), float(p["z"])
+        x, z = float(p["x"]), float(p["z"])
     except (TypeError, KeyError, ValueError):
         raise EnvSpecError("expected a point {x, y, z}", field=where,
                            hint="ProcTHOR points are objects with x, y and z") from None
+    if not (math.isfinite(x) and math.isfinite(z)):
+        raise EnvSpecError(f"non-finite coordinate ({x}, {z})", field=where,
+                           hint="coordinates are finite numbers in metres")
+    return x, z
 
 
 def _need(data: dict[str, Any], key: str, where: str) -> Any:
@@ -105,12 +109,13 @@ class _Importer:
         self.polys: dict[str, Polygon] = {}
         self.objects: list[dict[str, Any]] = []
         self.used_ids: set[str] = set()
+        self.where = ""  # the part being read, for errors the precise checks do not name
 
     def rooms(self) -> list[dict[str, Any]]:
         out = []
         counts: dict[str, int] = {}
         for i, room in enumerate(_need(self.house, "rooms", "")):
-            where = f"rooms[{i}]"
+            where = self.where = f"rooms[{i}]"
             rtype = str(room.get("roomType") or "LivingRoom")
             base = _snake(rtype)
             counts[base] = counts.get(base, 0) + 1
@@ -165,7 +170,7 @@ class _Importer:
     def doors(self) -> list[dict[str, Any]]:
         out = []
         for i, d in enumerate(self.house.get("doors") or []):
-            where = f"doors[{i}]"
+            where = self.where = f"doors[{i}]"
             r0 = self._room(_need(d, "room0", where), f"{where}.room0")
             r1 = self._room(d.get("room1", d["room0"]), f"{where}.room1")
             exterior = r0 == r1 or "exterior" in str(d.get("wall1", "")) or "exterior" in str(d.get("wall0", ""))
@@ -179,7 +184,7 @@ class _Importer:
     def windows(self) -> list[dict[str, Any]]:
         out = []
         for i, w in enumerate(self.house.get("windows") or []):
-            where = f"windows[{i}]"
+            where = self.where = f"windows[{i}]"
             room = self._room(_need(w, "room0", where), f"{where}.room0")
             seg, sill, height = self._segment(w, w.get("wall0"), where)
             out.append({"id": _ident(str(w.get("id", f"window_{i}"))), "room": room, "segment": seg,
@@ -206,6 +211,7 @@ class _Importer:
         return choice
 
     def add_object(self, obj: dict[str, Any], where: str, parent: dict[str, Any] | None) -> None:
+        self.where = where
         raw_id = str(_need(obj, "id", where))
         oid = _ident(raw_id)
         k = 1
@@ -264,7 +270,8 @@ def import_house(house: dict[str, Any], *, task_id: str, env_id: str, catalog: C
     """
     if not isinstance(house, dict):
         raise EnvSpecError("a house is a JSON object", file=source, hint="pass a ProcTHOR house JSON")
-    schema = (house.get("metadata") or {}).get("schema")
+    meta = house.get("metadata")
+    schema = meta.get("schema") if isinstance(meta, dict) else None
     warnings = []
     if schema not in SUPPORTED_SCHEMAS:
         if schema is None:
@@ -274,17 +281,31 @@ def import_house(house: dict[str, Any], *, task_id: str, env_id: str, catalog: C
                                field="metadata.schema",
                                hint="upgrade it to 1.0.0 with ProcTHOR's upgrade_house_version")
     imp = _Importer(house, catalog, source, frozenset(role_categories))
-    rooms = imp.rooms()
-    doors, windows = imp.doors(), imp.windows()
-    for i, obj in enumerate(house.get("objects") or []):
-        imp.add_object(obj, f"objects[{i}]", None)
+    try:
+        rooms = imp.rooms()
+        doors, windows = imp.doors(), imp.windows()
+        imp.where = "objects"
+        for i, obj in enumerate(house.get("objects") or []):
+            imp.add_object(obj, f"objects[{i}]", None)
+        imp.where = "walls"
+        ceiling = [float(p.get("y", 0)) for w in house.get("walls") or [] for p in w.get("polygon") or []]
+        imp.where = "metadata.agent"
+        agent = imp.agent()
+    except EnvSpecError as exc:
+        if exc.file is not None or source is None:
+            raise
+        raise EnvSpecError(exc.message, file=source, field=exc.field, hint=exc.hint) from None
+    except (KeyError, TypeError, ValueError, AttributeError, IndexError, RecursionError) as exc:
+        raise EnvSpecError(f"malformed house: {type(exc).__name__}: {exc}", file=source,
+                           field=imp.where or None,
+                           hint="compare the field with the ProcTHOR 1.0.0 layout "
+                           "(docs/own-generator.md)") from None
     for otype, ids in sorted(imp.unknown.items()):
         warnings.append(f"unknown AI2-THOR type {otype} kept as obstacle(s): {', '.join(ids)}")
-    ceiling = [float(p.get("y", 0)) for w in house.get("walls") or [] for p in w.get("polygon") or []]
+    height = max(ceiling) if ceiling and math.isfinite(max(ceiling)) and max(ceiling) > 0 else 2.7
     data = {"task_id": task_id, "generator": "procthor-import", "env_id": env_id,
-            "wall_height": max(ceiling) if ceiling and max(ceiling) > 0 else 2.7,
-            "rooms": rooms, "doors": doors, "windows": windows, "objects": imp.objects,
-            "agent": imp.agent(), "source_schema": schema or "1.0.0"}
+            "wall_height": height, "rooms": rooms, "doors": doors, "windows": windows,
+            "objects": imp.objects, "agent": agent, "source_schema": schema or "1.0.0"}
     env = env_from_dict(data, source=source)
     return ImportReport(env=env, unknown_types=imp.unknown, ambiguous_types=imp.ambiguous,
                         chosen=imp.chosen, warnings=warnings)
