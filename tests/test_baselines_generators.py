@@ -20,9 +20,11 @@ from logicenveval.generators.base import (
     make_generator,
     registered,
 )
+from logicenveval.generators.logicenvgen import LogicEnvGen
 from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.offline import OfflineModel
 from logicenveval.model.envspec import EnvSpec
+from logicenveval.runner.config import RunConfig
 
 TASKS = Path(__file__).resolve().parents[1] / "benchmark_data" / "tasks"
 IDS = ["clean_living_room", "multi_room_laundry_collect", "hallway_coat_and_bag"]
@@ -296,3 +298,19 @@ def test_bad_options_are_config_errors(name: str, options: dict[str, Any]) -> No
 
     with pytest.raises(ConfigError, match=next(iter(options)).split("_")[0]):
         make_generator(name, **options)
+
+
+def test_paper_method_names_and_old_alias_warns() -> None:
+    assert {"logicenvgen", "logicenvgen-exact", "logicenvgen-no-dbp", "logicenvgen-no-mtsa",
+            "logicenvgen-exhaustive", "logicenvgen-no-cas"} <= set(registered())
+    gens = {n: make_generator(n) for n in ("logicenvgen", "logicenvgen-exact", "logicenvgen-no-mtsa",
+                                           "logicenvgen-exhaustive", "logicenvgen-no-cas")}
+    selectors = {n: g.selector for n, g in gens.items() if isinstance(g, LogicEnvGen)}
+    assert selectors == {"logicenvgen": "mtsa", "logicenvgen-exact": "exact", "logicenvgen-no-mtsa": "product",
+                         "logicenvgen-exhaustive": "exhaustive", "logicenvgen-no-cas": "mtsa"}
+    with pytest.warns(FutureWarning, match="'logicenvgen-mtsa' is an old name of 'logicenvgen'"):
+        gen = make_generator("logicenvgen-mtsa")
+    assert gen.name == "logicenvgen"
+    with pytest.warns(FutureWarning, match="old name"):
+        config = RunConfig(generators=("logicenvgen-mtsa", "cot"))
+    assert config.generators == ("logicenvgen", "cot")

@@ -17,7 +17,8 @@ from logicenveval.cli import main
 
 TASKS = "clean_living_room,hallway_entry_tidy,kitchen_fridge_restock"
 GENERATORS = "logicenvgen,cot,ifg,holodeck"
-KEYS = {"phypr", "logcov", "ld", "scevr", "faudr", "st_ms", "ji", "redundancy", "n_envs", "ci95"}
+KEYS = {"phypr", "logcov", "ld", "scevr", "faudr", "st_ms", "st_ticks", "ji", "redundancy", "n_envs",
+        "plausibility", "ci95"}
 
 
 def _run(out: Path, *extra: str) -> int:
@@ -124,7 +125,7 @@ def test_generate_writes_envs_plan_and_renders(tmp_path: Path) -> None:
     assert main(["generate", "--generator", "logicenvgen", "--task", "clean_living_room",
                  "--model", "offline", "--out", str(tmp_path)]) == 0
     plan = json.loads((tmp_path / "plan.json").read_text())
-    assert plan["selector"] == "exact" and len(plan["trajectories"]) == 3
+    assert plan["selector"] == "mtsa" and len(plan["trajectories"]) == 3
     assert len(list(tmp_path.glob("logicenvgen-*.json"))) == 3
     assert len(list(tmp_path.glob("logicenvgen-*.svg"))) == 3
 

@@ -15,6 +15,7 @@ from logicenveval.benchmark import load_task
 from logicenveval.errors import TrajectoryError
 from logicenveval.logic.constraints import PathConstraints, task_constraints
 from logicenveval.logic.exact import exact_cover, independent_cover
+from logicenveval.logic.exhaustive import exhaustive_cover
 from logicenveval.logic.mtsa import mtsa_impl
 from logicenveval.logic.selectors import get_selector, selector_names, uncovered
 from logicenveval.model.task import Leaf, Node, Subtask
@@ -94,7 +95,7 @@ def _paths(sizes: Sequence[int]) -> Forest:
 
 
 def test_registry_names_and_unknown_name() -> None:
-    assert selector_names() == ["exhaustive", "mtsa", "exact"]
+    assert selector_names() == ["product", "mtsa", "exhaustive", "exact"]
     assert all(get_selector(n).name == n for n in selector_names())
     with pytest.raises(TrajectoryError, match="unknown trajectory selector 'greedy'"):
         get_selector("greedy")
@@ -103,7 +104,8 @@ def test_registry_names_and_unknown_name() -> None:
 def test_clean_living_room_selectors() -> None:
     paths = task_paths(load_task("clean_living_room", TASKS))
     assert [len(p) for p in paths] == [3, 2, 2]
-    assert len(get_selector("exhaustive").select(paths)) == 12
+    assert len(get_selector("product").select(paths)) == 12
+    assert len(get_selector("exhaustive").select(paths)) == 3
     mtsa = get_selector("mtsa").select(paths)
     # Algorithm 1 in lexicographic order: (doll,yes,yes) and (other,no,no) are disjoint from the
     # pool; (no,yes,yes) is a partial overlap picked by Update.
@@ -200,6 +202,7 @@ def test_property_independent_forests(forest: Forest) -> None:
     assert len(results["exact"]) == max(len(p) for p in forest)
     if math.prod(len(p) for p in forest) <= SMALL:
         assert len(results["exact"]) == _brute_optimum(forest, PathConstraints())
+        assert len(results["exhaustive"]) == len(results["exact"])  # the search finished
 
 
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -220,3 +223,22 @@ def test_property_forbidden_pairs(case: tuple[Forest, PathConstraints]) -> None:
     assert len(result.trajectories) <= len(mtsa)
     if math.prod(len(p) for p in forest) <= SMALL:
         assert len(result.trajectories) == _brute_optimum(forest, cons)
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(forests_with_pairs())
+def test_property_exhaustive_search_is_a_minimum_cover(case: tuple[Forest, PathConstraints]) -> None:
+    forest, cons = case
+    if math.prod(len(p) for p in forest) > SMALL or not _coverable(forest, cons):
+        return
+    result = exhaustive_cover(forest, cons)
+    assert result.optimal and not uncovered(list(result.trajectories), forest)
+    assert all(cons.admits_trajectory(t) for t in result.trajectories)
+    assert len(result.trajectories) == _brute_optimum(forest, cons)
+
+
+def test_exhaustive_search_falls_back_to_mtsa_when_the_budget_runs_out() -> None:
+    paths = _paths([5, 5, 5, 5, 5])  # 3125 trajectories: C(3125, k) subsets up to k = 5
+    result = exhaustive_cover(paths, budget_s=0.0)
+    assert not result.optimal and result.tested >= 4096
+    assert _keys(result.trajectories) == _keys(get_selector("mtsa").select(paths))

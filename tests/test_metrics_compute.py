@@ -49,6 +49,8 @@ def _sample(
     verdicts: dict[str, str] | None = None,
     physics: tuple[bool, bool, bool] = (True, True, True),
     ms: float = 2.0,
+    ticks: int = 7,
+    extended: tuple[str, ...] = (),
     task_id: str = "clean_living_room",
 ) -> EnvSample:
     verdicts = verdicts if verdicts is not None else {
@@ -62,9 +64,12 @@ def _sample(
         trajectory=" | ".join(paths) if len(paths) == 3 else None,
         conditions=[c for p in paths for c in STEP[p]],
         well_formed=well_formed,
-        physics=PhysicsSummary(floor_plan=physics[0], entity=physics[1], relation=physics[2]),
+        physics=PhysicsSummary(floor_plan=physics[0], entity=physics[1], relation=physics[2],
+                               extended=not extended,
+                               extended_failures=[{"code": c, "dimension": "entity"} for c in extended]),
         verdicts=verdicts,
         sim_ms={k: ms for k in verdicts},
+        sim_ticks={k: ticks for k in verdicts},
     )
 
 
@@ -100,6 +105,7 @@ def test_ill_formed_and_invalid_envs(task: Task) -> None:
     assert m.faudr["counterfactual"] is False  # it fails only in the ill-formed e1
     # ST: correct over 3 envs = 6 ms; unreachable 3 envs = 6 ms; counterfactual/lackbranch only e1
     assert m.st_ms == pytest.approx((6 + 6 + 2 + 2) / 4)
+    assert m.st_ticks == pytest.approx((21 + 21 + 7 + 7) / 4)  # same shape as ST, in ticks
     g = aggregate([m])
     assert g.n_envs == 3
     assert g.phypr.floor_plan == pytest.approx(3 / 4)  # the failed generation counts as failing
@@ -125,8 +131,10 @@ def test_results_shape_has_exactly_design_keys(task: Task) -> None:
     g = aggregate([task_metrics(task, [_sample("e0", [DOLL, BOOK, WIPE])])])
     dumped = json.loads(g.model_dump_json())
     assert set(dumped) == {
-        "phypr", "logcov", "ld", "scevr", "faudr", "st_ms", "ji", "redundancy", "n_envs"
+        "phypr", "logcov", "ld", "scevr", "faudr", "st_ms", "st_ticks", "ji", "redundancy", "n_envs",
+        "plausibility",
     }
+    assert set(dumped["plausibility"]) == {"rate", "codes"}
     assert set(dumped["phypr"]) == {"floor_plan", "entity", "relation", "avg"}
     assert set(dumped["faudr"]) == {"counterfactual", "unreachable", "lackbranch", "avg"}
     assert GeneratorMetrics.model_validate(dumped) == g
@@ -174,3 +182,17 @@ def test_property_metric_ranges_and_monotone_coverage(picks: list[tuple[str, str
     assert bigger.logcov >= m.logcov and bigger.ld >= m.ld
     g = aggregate([m])
     assert 0.0 <= g.scevr <= g.phypr.floor_plan <= 1.0
+
+
+def test_extra_checks_are_reported_apart_from_phypr(task: Task) -> None:
+    samples = [
+        _sample("e0", [DOLL, BOOK, WIPE], extended=("blocks_door", "size_out_of_range")),
+        _sample("e1", [OTHER, NOBOOK, MOP], extended=("blocks_door",)),
+        _sample("e2", [NOTOY, NOBOOK, MOP]),
+    ]
+    m = task_metrics(task, samples, n_failed=1)
+    assert m.n_extended_ok == 1 and m.extended_codes == {"blocks_door": 2, "size_out_of_range": 1}
+    g = aggregate([m])
+    assert g.phypr.entity == pytest.approx(3 / 4)  # the extra codes do not touch PhyPR
+    assert g.plausibility.rate == pytest.approx(1 / 4)
+    assert g.plausibility.codes == {"blocks_door": 2, "size_out_of_range": 1}

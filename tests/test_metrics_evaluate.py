@@ -113,6 +113,6 @@ def test_every_situation_of_every_task_is_recovered(task_id: str) -> None:
     from logicenveval.sim.situations import situation_env
 
     task = load_task(task_id, CLR.parents[1])
-    for traj in get_selector("exhaustive").select(task_paths(task)):
+    for traj in get_selector("product").select(task_paths(task)):
         cov = coverage_of_env(task, situation_env(task, traj))
         assert cov.well_formed and cov.trajectory == traj.key, (traj.key, cov.problems)

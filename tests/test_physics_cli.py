@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import json
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import pytest
 from PIL import Image
@@ -16,18 +18,23 @@ from logicenveval.physics.render import render_png, render_svg
 FIXTURES = Path(__file__).parent / "fixtures" / "envs"
 
 
-def _broken(tmp_path: Path) -> Path:
-    data = json.loads((FIXTURES / "one_room.json").read_text())
-    data["windows"][0]["height"] = 3.0
-    out = tmp_path / "broken.json"
+def _write(tmp_path: Path, data: dict[str, Any], name: str = "broken.json") -> Path:
+    out = tmp_path / name
     out.write_text(json.dumps(data))
     return out
+
+
+def _broken(tmp_path: Path) -> Path:
+    data = json.loads((FIXTURES / "one_room.json").read_text())
+    next(o for o in data["objects"] if o["id"] == "floor_lamp_1")["position"][1] += 0.3  # floating
+    return _write(tmp_path, data)
 
 
 def test_valid_env_exits_zero_with_json(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["check-env", str(FIXTURES / "one_room.json"), "--json"]) == 0
     report = json.loads(capsys.readouterr().out)
-    assert report == {d: {"passed": True, "failures": []} for d in ("floor_plan", "entity", "relation")}
+    assert report == {d: {"passed": True, "failures": []}
+                      for d in ("floor_plan", "entity", "relation", "extended")}
 
 
 def test_failing_env_exits_one_and_names_the_fault(tmp_path: Path, capsys: pytest.CaptureFixture[str],
@@ -35,7 +42,33 @@ def test_failing_env_exits_one_and_names_the_fault(tmp_path: Path, capsys: pytes
     monkeypatch.setenv("COLUMNS", "160")
     assert main(["check-env", str(_broken(tmp_path))]) == 1
     out = capsys.readouterr().out
-    assert "window_above_ceiling" in out and "FAIL" in out
+    assert "not_supported" in out and "FAIL" in out
+
+
+def _chair_in_doorway(data: dict[str, Any]) -> None:
+    data["objects"].append({"id": "chair_1", "category": "chair", "room": "living_room",
+                            "position": [2.5, 0.45, 0.5], "yaw": 0, "size": [0.5, 0.9, 0.5],
+                            "support": "floor"})
+
+
+def _short_book(data: dict[str, Any]) -> None:
+    next(o for o in data["objects"] if o["id"] == "book_1")["size"] = [0.2, 0.04, 0.15]
+
+
+@pytest.mark.parametrize(("flaw", "code"), [(_chair_in_doorway, "blocks_door"), (_short_book, "size_out_of_range")])
+def test_extra_check_failure_leaves_the_paper_dimensions_passing(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str], flaw: Callable[[dict[str, Any]], None],
+        code: str) -> None:
+    data = json.loads((FIXTURES / "one_room.json").read_text())
+    flaw(data)
+    path = _write(tmp_path, data)
+    assert main(["check-env", str(path), "--json"]) == 0
+    report = json.loads(capsys.readouterr().out)
+    assert all(report[d] == {"passed": True, "failures": []} for d in ("floor_plan", "entity", "relation"))
+    assert report["extended"]["passed"] is False
+    assert [f["code"] for f in report["extended"]["failures"]] == [code]
+    assert main(["check-env", str(path), "--strict"]) == 1
+    assert code in capsys.readouterr().out
 
 
 def test_malformed_file_exits_two_with_field_path(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:

@@ -32,6 +32,9 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     cache = p.add_mutually_exclusive_group()
     cache.add_argument("--cache", default=None, help="SQLite cache of LLM replies")
     cache.add_argument("--no-cache", action="store_true", help="bypass the LLM reply cache")
+    p.add_argument("--brief", default="roles", choices=["roles", "description"],
+                   help="what generators get: the task's roles (default) or, as in the paper, only id, "
+                        "description and rooms, with the paper's few-shot example (docs/fidelity.md)")
     p.add_argument("--quiet", action="store_true", help="no progress bars")
 
 
@@ -55,6 +58,7 @@ def run(args: argparse.Namespace) -> int:
         cache=args.cache,
         no_cache=args.no_cache,
         run_id=args.run_id,
+        brief=args.brief,
     )
     if args.seeds is not None:
         from logicenveval.runner.seeds import run_seeds

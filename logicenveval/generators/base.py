@@ -8,6 +8,7 @@ it did and where it failed, so that a missed decision path can be traced to its 
 from __future__ import annotations
 
 import importlib
+import warnings
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -70,6 +71,26 @@ def register(name: str, entry_point: str | Callable[..., Any]) -> None:
     _REGISTRY[name] = entry_point
 
 
+#: old name -> current name; using an old name works and warns
+_ALIASES: dict[str, str] = {}
+
+
+def register_alias(old: str, new: str) -> None:
+    """Keep an old generator name working (with a FutureWarning) after a rename."""
+    _ALIASES[old] = new
+
+
+def canonical_name(name: str) -> str:
+    """The current name of a generator; warns (FutureWarning) when `name` is an old alias."""
+    _load_builtin()
+    if name in _ALIASES and name not in _REGISTRY:
+        new = _ALIASES[name]
+        warnings.warn(f"generator {name!r} is an old name of {new!r}; use {new!r}",
+                      FutureWarning, stacklevel=2)
+        return new
+    return name
+
+
 def registered() -> list[str]:
     _load_builtin()
     return sorted(_REGISTRY)
@@ -82,8 +103,9 @@ def registry_entry(name: str) -> str | Callable[..., Any] | None:
 
 
 def make_generator(name: str, **options: Any) -> Generator:
-    """Make a registered generator, or import a `module:attr` target (see generators.plugins)."""
-    _load_builtin()
+    """Make a registered generator (old names via their alias), or import a `module:attr` target
+    (see generators.plugins)."""
+    name = canonical_name(name)
     entry = _REGISTRY.get(name)
     if entry is None and ":" in name:
         entry = name

@@ -1,9 +1,12 @@
 """LogicEnvGen (paper §3): behaviour plans → logical trajectories → one environment each.
 
-Ablations (paper §5.3) are the same class with one part switched off or swapped:
+`logicenvgen` is the paper's method, with MTSA (Algorithm 1) selecting the trajectories;
+`logicenvgen-exact` swaps in our polynomial exact minimum cover (beyond the paper). Ablations and
+comparisons (paper §5.3) are the same class with one part switched off or swapped:
 `logicenvgen-no-dbp` (trajectories straight from the description, no decision trees),
-`logicenvgen-mtsa` / `logicenvgen-exhaustive` (trajectory selector), `logicenvgen-no-cas` (the
-LLM places objects itself, no constraint solver).
+`logicenvgen-no-mtsa` (the whole Cartesian product), `logicenvgen-exhaustive` (the paper's
+exponential minimum-set-cover search), `logicenvgen-no-cas` (the LLM places objects itself, no
+constraint solver).
 """
 
 from __future__ import annotations
@@ -16,6 +19,7 @@ from logicenveval.generators.construction import EnvironmentBuilder
 from logicenveval.generators.plan import DerivedPlan, PlanLog, derive_plan
 from logicenveval.llm.ask import ask
 from logicenveval.llm.replies import TrajectoriesReply
+from logicenveval.logic.exhaustive import exhaustive_cover
 from logicenveval.logic.selectors import get_selector
 from logicenveval.model.task import TaskBrief
 from logicenveval.model.tree import Trajectory, task_paths
@@ -24,7 +28,7 @@ from logicenveval.model.tree import Trajectory, task_paths
 class LogicEnvGen:
     """The full method; keyword options select the ablations."""
 
-    def __init__(self, *, selector: str = "exact", use_trees: bool = True, use_solver: bool = True,
+    def __init__(self, *, selector: str = "mtsa", use_trees: bool = True, use_solver: bool = True,
                  name: str = "logicenvgen", max_refinements: int = 2) -> None:
         self.name = name
         self.selector = selector
@@ -36,12 +40,11 @@ class LogicEnvGen:
         failures: list[GenerationFailure] = []
         if self.use_trees:
             plan = derive_plan(brief, ctx, max_refinements=self.max_refinements)
-            trajectories = get_selector(self.selector).select(task_paths(plan.task))
+            artifacts: dict[str, Any] = {**plan.as_json(), "selector": self.selector}
+            trajectories = self._select(plan, artifacts)
             situations = [_facts(plan, t) for t in trajectories]
             claims: list[dict[str, dict[str, str]] | None] = [t.as_claim() for t in trajectories]
-            artifacts: dict[str, Any] = {
-                **plan.as_json(), "selector": self.selector,
-                "trajectories": [t.key for t in trajectories]}
+            artifacts["trajectories"] = [t.key for t in trajectories]
         else:
             reply = ask(ctx.model, "trajectories_direct", {"task": brief.model_dump(mode="json")},
                         TrajectoriesReply, seed=ctx.seed)
@@ -67,16 +70,30 @@ class LogicEnvGen:
         return GenerationResult(envs=envs, artifacts=artifacts, failures=failures)
 
 
+    def _select(self, plan: DerivedPlan, artifacts: dict[str, Any]) -> list[Trajectory]:
+        if self.selector != "exhaustive":
+            return get_selector(self.selector).select(task_paths(plan.task))
+        result = exhaustive_cover(task_paths(plan.task))
+        artifacts["exhaustive"] = {"optimal": result.optimal, "subsets_tested": result.tested}
+        if not result.optimal:
+            artifacts["exhaustive"]["note"] = "search budget exhausted; MTSA's cover used"
+        return list(result.trajectories)
+
+
 def _facts(plan: DerivedPlan, trajectory: Trajectory) -> list[str]:
     return [plan.task.variables[v].values[x] for path in trajectory.paths for v, x in path.steps]
+
+
+def exact() -> LogicEnvGen:
+    return LogicEnvGen(selector="exact", name="logicenvgen-exact")
 
 
 def no_dbp() -> LogicEnvGen:
     return LogicEnvGen(use_trees=False, name="logicenvgen-no-dbp")
 
 
-def with_mtsa() -> LogicEnvGen:
-    return LogicEnvGen(selector="mtsa", name="logicenvgen-mtsa")
+def no_mtsa() -> LogicEnvGen:
+    return LogicEnvGen(selector="product", name="logicenvgen-no-mtsa")
 
 
 def exhaustive() -> LogicEnvGen:

@@ -22,7 +22,13 @@ from pathlib import Path
 from typing import Any
 
 from logicenveval.errors import ConfigError
-from logicenveval.generators.base import import_target, make_generator, register, registry_entry
+from logicenveval.generators.base import (
+    canonical_name,
+    import_target,
+    make_generator,
+    register,
+    registry_entry,
+)
 
 ENTRY_POINT_GROUP = "logicenveval.generators"
 
@@ -73,6 +79,8 @@ def _portable(factory: Callable[..., Any]) -> str | None:
 
 def resolve_generator(spec: str) -> GeneratorRef:
     """Resolve one `--generators` item; unknown or unimportable -> `ConfigError` (exit 2)."""
+    if ":" not in spec:
+        spec = canonical_name(spec)  # an old name of a renamed generator (with a FutureWarning)
     entry = registry_entry(spec)
     portable = True
     if entry is not None:

@@ -1,11 +1,12 @@
 """Names of the built-in generators; each module is imported only when its generator is made."""
 
-from logicenveval.generators.base import register
+from logicenveval.generators.base import register, register_alias
 
 BUILTIN: dict[str, str] = {
     "logicenvgen": "logicenveval.generators.logicenvgen:LogicEnvGen",
+    "logicenvgen-exact": "logicenveval.generators.logicenvgen:exact",
     "logicenvgen-no-dbp": "logicenveval.generators.logicenvgen:no_dbp",
-    "logicenvgen-mtsa": "logicenveval.generators.logicenvgen:with_mtsa",
+    "logicenvgen-no-mtsa": "logicenveval.generators.logicenvgen:no_mtsa",
     "logicenvgen-exhaustive": "logicenveval.generators.logicenvgen:exhaustive",
     "logicenvgen-no-cas": "logicenveval.generators.logicenvgen:no_cas",
     "cot": "logicenveval.baselines.cot:CoT",
@@ -13,5 +14,13 @@ BUILTIN: dict[str, str] = {
     "holodeck": "logicenveval.baselines.holodeck:Holodeck",
 }
 
+#: old name -> current name. Two names changed meaning when the paper's names were adopted and
+#: cannot be aliases: `logicenvgen` (was the exact cover, now MTSA: the old row is
+#: `logicenvgen-exact`) and `logicenvgen-exhaustive` (was the Cartesian product, now the paper's
+#: exponential search: the old row is `logicenvgen-no-mtsa`).
+ALIASES: dict[str, str] = {"logicenvgen-mtsa": "logicenvgen"}
+
 for _name, _entry in BUILTIN.items():
     register(_name, _entry)
+for _old, _new in ALIASES.items():
+    register_alias(_old, _new)

@@ -24,6 +24,7 @@ HANDLER_MODULES: tuple[str, ...] = (
     "logicenveval.llm.offline_plan",
     "logicenveval.generators.offline_handlers",
     "logicenveval.baselines.offline_handlers",
+    "logicenveval.generators.brief",
 )
 
 

@@ -1,4 +1,9 @@
-"""Selector interface and the name registry (`exhaustive`, `mtsa`, `exact`), imported lazily."""
+"""Selector interface and the name registry, imported lazily.
+
+`product` (the Cartesian product: the paper's "W/O MTSA"), `mtsa` (paper Algorithm 1),
+`exhaustive` (the paper's exponential minimum-set-cover search), `exact` (our polynomial
+minimum cover).
+"""
 
 from __future__ import annotations
 
@@ -22,8 +27,9 @@ class Selector(Protocol):
 
 
 _REGISTRY: dict[str, str] = {
-    "exhaustive": "logicenveval.logic.exhaustive:SELECTOR",
+    "product": "logicenveval.logic.product:SELECTOR",
     "mtsa": "logicenveval.logic.mtsa:SELECTOR",
+    "exhaustive": "logicenveval.logic.exhaustive:SELECTOR",
     "exact": "logicenveval.logic.exact:SELECTOR",
 }
 

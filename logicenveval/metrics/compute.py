@@ -6,18 +6,21 @@ Decisions where DESIGN.md is silent (docs/logic.md):
 - a failed generation (`n_failed`: a unit slot that produced no environment) covers nothing and
   counts as a failing environment in the PhyPR and SceVR denominators, so failing never pays;
 - ST averages, over the BTs that were simulated, the per-BT sum of simulation ms over the task's
-  environments.
+  environments; `st_ticks` is the same figure in simulator ticks, which machine load cannot move;
+- PhyPR holds the paper's three dimensions only; the extra checks are `plausibility`;
+- JI compares with the minimum cover closest to the realised set (`logic.reference`).
 """
 
 from __future__ import annotations
 
+from collections import Counter
 from collections.abc import Sequence
 
 import pandas as pd
 from pydantic import BaseModel, ConfigDict, Field
 
 from logicenveval.errors import MetricsError
-from logicenveval.logic.reference import jaccard, reference_set
+from logicenveval.logic.reference import closest_reference
 from logicenveval.metrics.records import EnvSample
 from logicenveval.model.task import FAULTY_KINDS, POLICY_KINDS, Task
 from logicenveval.model.tree import all_path_keys, atomic_conditions
@@ -43,8 +46,14 @@ class TaskMetrics(BaseModel):
     #: faulty kind -> its BT fails in at least one valid environment
     faudr: dict[str, bool]
     st_ms: float
+    st_ticks: float = 0.0
+    #: environments passing every extra plausibility check, and per failure code how many fail it
+    n_extended_ok: int = 0
+    extended_codes: dict[str, int] = Field(default_factory=dict)
     covered_paths: list[str] = Field(default_factory=list)
     realised_trajectories: list[str] = Field(default_factory=list)
+    #: the minimum cover JI compares with: the one closest to `realised_trajectories`
+    reference_trajectories: list[str] = Field(default_factory=list)
 
 
 class PhyPR(BaseModel):
@@ -63,8 +72,16 @@ class FauDR(BaseModel):
     avg: float
 
 
+class Plausibility(BaseModel):
+    """The extra checks beyond the paper's PhyPR: pass rate and environments failing each code."""
+
+    model_config = ConfigDict(frozen=True)
+    rate: float
+    codes: dict[str, int]
+
+
 class GeneratorMetrics(BaseModel):
-    """Exactly the keys of `results.<generator>` in DESIGN.md §9."""
+    """The keys of `results.<generator>` in DESIGN.md §9, plus `st_ticks` and `plausibility`."""
 
     model_config = ConfigDict(frozen=True)
     phypr: PhyPR
@@ -73,9 +90,11 @@ class GeneratorMetrics(BaseModel):
     scevr: float
     faudr: FauDR
     st_ms: float
+    st_ticks: float
     ji: float
     redundancy: float
     n_envs: int
+    plausibility: Plausibility
 
 
 def _is_valid(sample: EnvSample) -> bool:
@@ -112,7 +131,7 @@ def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0) ->
     conditions = set(atomic_conditions(task))
     met = {tuple(c) for s in good for c in s.conditions} & conditions
     realised = {s.trajectory for s in good if s.trajectory is not None}
-    reference = [t.key for t in reference_set(task)]
+    closest = closest_reference(task, realised)
     valid = [s for s in samples if _is_valid(s)]
     simulated = [k for k in POLICY_KINDS if any(k in s.sim_ms for s in samples)]
     st = (
@@ -120,6 +139,13 @@ def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0) ->
         if simulated
         else 0.0
     )
+    st_ticks = (
+        sum(sum(s.sim_ticks.get(k, 0) for s in samples) for k in simulated) / len(simulated)
+        if simulated
+        else 0.0
+    )
+    codes = Counter(code for s in samples
+                    for code in sorted({f["code"] for f in s.physics.extended_failures}))
     return TaskMetrics(
         task_id=task.id,
         n_envs=len(samples),
@@ -130,16 +156,20 @@ def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0) ->
         n_valid=len(valid),
         logcov=len(covered) / len(keys),
         ld=len(met) / len(conditions) if conditions else float(bool(good)),
-        ji=jaccard(realised, reference),
-        redundancy=len(samples) / len(reference),
-        min_cover=len(reference),
+        ji=closest.ji,
+        redundancy=len(samples) / len(closest.trajectories),
+        min_cover=len(closest.trajectories),
         faudr={
             k: any(k in s.verdicts and s.verdicts[k] != "passed" for s in valid)
             for k in FAULTY_KINDS
         },
         st_ms=st,
+        st_ticks=st_ticks,
+        n_extended_ok=sum(s.physics.extended for s in samples),
+        extended_codes=dict(sorted(codes.items())),
         covered_paths=sorted(covered),
         realised_trajectories=sorted(realised),
+        reference_trajectories=[t.key for t in closest.trajectories],
     )
 
 
@@ -173,7 +203,12 @@ def aggregate(per_task: Sequence[TaskMetrics]) -> GeneratorMetrics:
         scevr=share("n_valid"),
         faudr=FauDR(counterfactual=fau[0], unreachable=fau[1], lackbranch=fau[2], avg=sum(fau) / 3),
         st_ms=float(df["st_ms"].mean()),
+        st_ticks=float(df["st_ticks"].mean()),
         ji=float(df["ji"].mean()),
         redundancy=float(df["redundancy"].mean()),
         n_envs=int(df["n_envs"].sum()),
+        plausibility=Plausibility(
+            rate=share("n_extended_ok"),
+            codes=dict(sorted(sum((Counter(t.extended_codes) for t in per_task), Counter()).items())),
+        ),
     )

@@ -19,6 +19,9 @@ class PhysicsSummary(BaseModel):
     relation: bool
     #: typed failures as plain dicts (code, objects, measured, tolerance, message, dimension)
     failures: list[dict[str, Any]] = Field(default_factory=list)
+    #: the extra plausibility checks beyond the paper's PhyPR (`physics.EXTENDED_CODES`)
+    extended: bool = True
+    extended_failures: list[dict[str, Any]] = Field(default_factory=list)
 
 
 class EnvSample(BaseModel):
@@ -42,6 +45,8 @@ class EnvSample(BaseModel):
     verdicts: dict[str, str] = Field(default_factory=dict)
     #: policy kind -> simulation wall time in milliseconds (a timing field)
     sim_ms: dict[str, float] = Field(default_factory=dict)
+    #: policy kind -> simulator ticks of the run (deterministic companion of `sim_ms`)
+    sim_ticks: dict[str, int] = Field(default_factory=dict)
 
 
 class UnitRecord(BaseModel):

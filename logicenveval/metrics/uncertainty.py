@@ -10,6 +10,7 @@ from an explicit `numpy.random.Generator`, so intervals are reproducible.
 
 from __future__ import annotations
 
+from collections import Counter
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -27,8 +28,10 @@ _RATIOS: dict[_Path, str] = {("phypr", "floor_plan"): "n_floor_plan_ok", ("phypr
            ("phypr", "relation"): "n_relation_ok", ("scevr",): "n_valid"}
 _MEANS: dict[_Path, str] = {("logcov",): "logcov", ("ld",): "ld", ("ji",): "ji",
           **{("faudr", k): f"faudr_{k}" for k in FAULTY_KINDS}}
-#: means reported but not given intervals in results.json (compare still pairs them)
-_OTHER_MEANS: dict[_Path, str] = {("redundancy",): "redundancy", ("st_ms",): "st_ms"}
+#: figures reported but not given intervals in results.json (compare still pairs them)
+_OTHER_MEANS: dict[_Path, str] = {("redundancy",): "redundancy", ("st_ms",): "st_ms",
+                                  ("st_ticks",): "st_ticks"}
+_OTHER_RATIOS: dict[_Path, str] = {("plausibility", "rate"): "n_extended_ok"}
 CI_METRICS: tuple[tuple[str, ...], ...] = (
     *_RATIOS, ("phypr", "avg"), *_MEANS, ("faudr", "avg"))
 
@@ -36,9 +39,9 @@ Cell = Mapping[str, Any]  # one TaskMetrics as JSON (results.json per_task entri
 
 
 def _columns(cells: Sequence[Cell]) -> dict[str, np.ndarray]:
-    cols = {name: np.array([float(c[name]) for c in cells])
+    cols = {name: np.array([float(c.get(name, 0.0)) for c in cells])
             for name in ("n_floor_plan_ok", "n_entity_ok", "n_relation_ok", "n_valid", "logcov",
-                         "ld", "ji", "redundancy", "st_ms")}
+                         "ld", "ji", "redundancy", "st_ms", "st_ticks", "n_extended_ok")}
     cols["slots"] = np.array([float(c["n_envs"]) + float(c.get("n_failed", 0)) for c in cells])
     for k in FAULTY_KINDS:
         cols[f"faudr_{k}"] = np.array([float(bool(c["faudr"][k])) for c in cells])
@@ -53,7 +56,7 @@ def metrics_from_weights(cells: Sequence[Cell], weights: np.ndarray) -> dict[tup
     slots = w @ cols["slots"]
     out: dict[tuple[str, ...], np.ndarray] = {}
     with np.errstate(invalid="ignore", divide="ignore"):
-        for path, col in _RATIOS.items():
+        for path, col in {**_RATIOS, **_OTHER_RATIOS}.items():
             out[path] = np.where(slots > 0, (w @ cols[col]) / slots, 0.0)
         for path, col in {**_MEANS, **_OTHER_MEANS}.items():
             out[path] = (w @ cols[col]) / total
@@ -69,6 +72,10 @@ def point_metrics(cells: Sequence[Cell]) -> dict[str, Any]:
     nested: dict[str, Any] = {"n_envs": int(sum(int(c["n_envs"]) for c in cells))}
     for path, value in m.items():
         _put(nested, path, value)
+    codes: Counter[str] = Counter()
+    for c in cells:
+        codes.update(c.get("extended_codes") or {})
+    nested["plausibility"]["codes"] = dict(sorted(codes.items()))
     return nested
 
 

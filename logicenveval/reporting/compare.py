@@ -22,7 +22,7 @@ from logicenveval.metrics.uncertainty import cells_of, paired_difference
 from logicenveval.reporting.tables import COLUMNS, metric
 
 #: metrics where lower is better; all others are better when higher
-LOWER_IS_BETTER = frozenset({("st_ms",), ("redundancy",)})
+LOWER_IS_BETTER = frozenset({("st_ms",), ("st_ticks",), ("redundancy",)})
 TIMING = frozenset({("st_ms",)})
 NOT_JUDGED = frozenset({("n_envs",)})
 

@@ -13,7 +13,7 @@ from typing import Any
 
 from jinja2 import Environment, PackageLoader, select_autoescape
 
-from logicenveval.reporting.tables import COLUMNS, markdown, method_label, rows
+from logicenveval.reporting.tables import COLUMNS, LEGEND, markdown, method_label, rows
 from logicenveval.runner.store import atomic_write_text
 
 
@@ -78,6 +78,7 @@ def render_html(run_dir: Path, results: dict[str, Any]) -> str:
         results=results,
         headers=["Method"] + [h + (" (%)" if pct else "") for h, _, pct in COLUMNS],
         rows=rows(results),
+        legend=LEGEND,
         generators=_drilldown(run_dir, results, tasks_dir),
         label=lambda g: method_label(g, results.get("model", "")),
     )

@@ -17,10 +17,23 @@ COLUMNS: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     ("FauDR LBranch", ("faudr", "lackbranch"), True),
     ("FauDR Avg", ("faudr", "avg"), True),
     ("ST (ms)", ("st_ms",), False),
+    ("ST (ticks)", ("st_ticks",), False),
     ("LD", ("ld",), True),
     ("JI", ("ji",), False),
     ("Redundancy", ("redundancy",), False),
     ("Envs", ("n_envs",), False),
+    ("Extra checks", ("plausibility", "rate"), True),
+)
+
+#: what the columns mean, under every leaderboard (markdown and HTML)
+LEGEND = (
+    "Rates in percent. PhyPR: the paper's three dimensions only (Table 2). ST (ms) = wall time to "
+    "simulate one BT over a generator's environments for a task (varies with machine load); "
+    "ST (ticks) = the same in simulator ticks (deterministic). JI = Jaccard index vs the minimum "
+    "cover of the GT trajectories closest to the generator's set; Redundancy = environments / "
+    "minimum cover size; Extra checks = share of environments passing our plausibility checks "
+    "beyond the paper's PhyPR (catalog sizes, door swing areas, stability, ceiling, unreachable "
+    "rooms, windows over doors; not part of PhyPR)."
 )
 
 
@@ -68,6 +81,12 @@ def rows(results: dict[str, Any]) -> list[list[str]]:
     return out
 
 
+def interval_note(results: dict[str, Any]) -> str:
+    """What `±` means under a leaderboard."""
+    over = "tasks and seeds" if results.get("seeds") else "tasks"
+    return f"± = half-width of the 95 % bootstrap interval over {over} (docs/runner.md)."
+
+
 def _seed_text(results: dict[str, Any]) -> str:
     seeds = results.get("seeds")
     return f"seeds {', '.join(str(s) for s in seeds)}" if seeds else f"seed {results.get('seed')}"
@@ -79,6 +98,7 @@ def markdown(results: dict[str, Any]) -> str:
         f"# LogicEnvEval leaderboard — run `{results.get('run_id', '?')}`",
         "",
         f"Model: `{results.get('model')}` · {_seed_text(results)} · "
+        f"brief `{results.get('brief', 'roles')}` · "
         f"{len(results.get('tasks', []))} tasks · commit `{results.get('git_commit') or 'n/a'}`",
         "",
         "| " + " | ".join(header) + " |",
@@ -89,8 +109,5 @@ def markdown(results: dict[str, Any]) -> str:
     if fails:
         lines += ["", "Recorded generation failures: "
                   + ", ".join(f"{g}: {n}" for g, n in sorted(fails.items()))]
-    lines += ["", "Rates in percent (± half-width of the 95 % bootstrap interval over tasks"
-              + (" and seeds" if results.get("seeds") else "") + "); ST = mean simulation time of one BT over a generator's "
-              "environments for a task (ms); JI = Jaccard index vs the reference minimal "
-              "trajectory set; Redundancy = environments / minimum cover size.", ""]
+    lines += ["", LEGEND + " " + interval_note(results), ""]
     return "\n".join(lines)

@@ -10,12 +10,13 @@ import hashlib
 import json
 import re
 from pathlib import Path
+from typing import Literal
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
 from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
 
-DEFAULT_GENERATORS: tuple[str, ...] = ("logicenvgen", "cot", "ifg", "holodeck")
+DEFAULT_GENERATORS: tuple[str, ...] = ("logicenvgen", "logicenvgen-exact", "cot", "ifg", "holodeck")
 
 
 class RunConfig(BaseModel):
@@ -34,6 +35,26 @@ class RunConfig(BaseModel):
     cache: str | None = None
     no_cache: bool = False
     run_id: str | None = None
+    #: what generators are given: the task's roles (default) or, as in the paper, the description
+    brief: Literal["roles", "description"] = "roles"
+
+    @model_validator(mode="after")
+    def _brief_fits_model(self) -> RunConfig:
+        if self.brief == "description" and self.model == "oracle":
+            from logicenveval.errors import ConfigError
+
+            raise ConfigError("--brief description cannot be used with --model oracle", field="--brief",
+                              hint="the oracle answers with the GT plans, which name the task's roles; "
+                                   "use --brief roles (the default) with the oracle")
+        return self
+
+    @field_validator("generators")
+    @classmethod
+    def _current_names(cls, names: tuple[str, ...]) -> tuple[str, ...]:
+        """Old generator names (aliases) become current ones, with a FutureWarning."""
+        from logicenveval.generators.base import canonical_name
+
+        return tuple(canonical_name(n) for n in names)
 
     def identity(self) -> dict[str, object]:
         """The fields that define *what* is computed (not how fast or where)."""
@@ -46,6 +67,7 @@ class RunConfig(BaseModel):
             "limit": self.limit,
             "seed": self.seed,
             "layout_solver": self.layout_solver,
+            "brief": self.brief,
         }
 
     def resolved_run_id(self) -> str:

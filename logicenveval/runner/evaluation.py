@@ -51,14 +51,18 @@ def evaluate_env(
         entity=report.entity.passed,
         relation=report.relation.passed,
         failures=failures,
+        extended=report.extended.passed,
+        extended_failures=[f.model_dump(mode="json") for f in report.extended.failures],
     )
     cov = coverage(task, holds_initial(env, catalog), env.roles)
     verdicts: dict[str, str] = {}
     sim_ms: dict[str, float] = {}
+    sim_ticks: dict[str, int] = {}
     for kind, policy in policies.items():
         start = time.perf_counter()
         verdict = simulate(policy, env, task, catalog)
         sim_ms[kind] = (time.perf_counter() - start) * 1000.0
+        sim_ticks[kind] = verdict.ticks
         verdicts[kind] = verdict.status
     return EnvSample(
         generator=generator,
@@ -73,4 +77,5 @@ def evaluate_env(
         physics=physics,
         verdicts=verdicts,
         sim_ms=sim_ms,
+        sim_ticks=sim_ticks,
     )

@@ -68,6 +68,8 @@ class ResultsConfig(Protocol):
     @property
     def seed(self) -> int: ...
     @property
+    def brief(self) -> str: ...
+    @property
     def generators(self) -> tuple[str, ...]: ...
     def identity(self) -> dict[str, object]: ...
     def resolved_run_id(self) -> str: ...
@@ -112,6 +114,7 @@ def build_results(
         "config": config.identity(),
         "model": config.model,
         "seed": config.seed,
+        "brief": config.brief,
         "tasks": [t.id for t in tasks],
         "benchmark": {"task_sha256": task_hashes(tasks)},
         "versions": package_versions(),

@@ -81,7 +81,7 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
         UnitSpec(generator=r.name, generator_target=r.target, generator_path=r.search_path, task_id=t,
                  tasks_dir=config.tasks_dir, model=config.model, model_args=config.model_args,
                  seed=config.seed, run_dir=str(run_dir), cache=config.cache,
-                 no_cache=config.no_cache, layout_solver=config.layout_solver)
+                 no_cache=config.no_cache, layout_solver=config.layout_solver, brief=config.brief)
         for r in refs for t in ids
     ]
     records: dict[tuple[str, str], UnitRecord] = {}

@@ -53,6 +53,7 @@ class EvaluateConfig(BaseModel):
     run_id: str | None = None
     model: str = "external"
     seed: int = 0
+    brief: str = "external"  # what the making tool was told is unknown to the harness
 
     @property
     def generator_name(self) -> str:

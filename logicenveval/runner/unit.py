@@ -20,7 +20,9 @@ from logicenveval.domain.catalog import load_catalog
 from logicenveval.envfiles import env_to_json
 from logicenveval.errors import LogicEnvEvalError
 from logicenveval.generators.base import GenerationContext, make_generator
+from logicenveval.generators.brief import BriefMode, generator_brief
 from logicenveval.generators.plugins import ensure_importable
+from logicenveval.llm.fewshot import FewShotModel
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import POLICY_KINDS
@@ -42,6 +44,7 @@ class UnitSpec(BaseModel):
     layout_solver: Solver = DEFAULT_SOLVER
     cache: str | None = None
     no_cache: bool = False
+    brief: BriefMode = "roles"
     #: what the worker makes (a registered name or MODULE:ATTR; generators.plugins); None = name
     generator_target: str | None = None
     #: where the target's module was found in the parent (generators.plugins.GeneratorRef)
@@ -83,6 +86,8 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     try:
         model = make_model(spec.model, spec.model_args, cache_path=spec.cache,
                            no_cache=spec.no_cache, run_dir=run_dir)
+        if spec.brief == "description":
+            model = FewShotModel(model)
         target = spec.generator_target or spec.generator
         ensure_importable(target, spec.generator_path)
         generator = make_generator(target)
@@ -94,7 +99,8 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
             work_dir=run_dir / "work" / spec.generator / spec.task_id,
             layout_solver=spec.layout_solver,
         )
-        result = generator.generate(task.brief(), ctx)
+        brief = generator_brief(task, spec.brief, model, seed=spec.seed)
+        result = generator.generate(brief, ctx)
     except LogicEnvEvalError as exc:
         return UnitRecord(generator=spec.generator, task_id=spec.task_id,
                           error=f"{type(exc).__name__}: {exc}",
@@ -110,6 +116,8 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     for env in _unique_ids(result.envs):
         atomic_write_text(env_dir / f"{env.env_id}.json", env_to_json(env))
         samples.append(evaluate_env(spec.generator, task, env, policies, catalog))
+    if spec.brief != "roles":
+        atomic_write_text(env_dir / "brief.json", brief.model_dump_json(indent=2) + "\n")
     if result.artifacts:
         atomic_write_text(env_dir / "plan.json",
                           json.dumps(result.artifacts, indent=2, sort_keys=True, default=str) + "\n")
