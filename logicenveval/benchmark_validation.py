@@ -23,6 +23,7 @@ from logicenveval.model.conditions import And, Cond, Const, Not, Or, Pred, atoms
 from logicenveval.model.rooms import room_type_of
 from logicenveval.model.task import FAULTY_KINDS, POLICY_KINDS, Leaf, Node, Task
 from logicenveval.model.tree import Trajectory, task_paths
+from logicenveval.sim.worlds import DEFAULT_WORLDS
 
 #: verdicts each faulty kind may fail with (DESIGN.md §5, "Faulty kinds map to verdicts")
 FAULT_VERDICTS: dict[str, frozenset[str]] = {
@@ -62,16 +63,23 @@ class TaskReport:
 
 
 def validate_all(directory: str | Path | None = None, catalog: Catalog | None = None,
-                 *, simulate: bool = True) -> list[TaskReport]:
+                 *, simulate: bool = True, worlds: int = DEFAULT_WORLDS) -> list[TaskReport]:
     """Validate every task folder of `directory` (default: the shipped benchmark)."""
     d = tasks_dir(directory)
     folders = sorted(p for p in d.iterdir() if p.is_dir() and not p.name.startswith("."))
-    return [validate_task(f, d, catalog, simulate=simulate) for f in folders]
+    return [validate_task(f, d, catalog, simulate=simulate, worlds=worlds) for f in folders]
 
 
 def validate_task(task: Task | str | Path, directory: str | Path | None = None,
-                  catalog: Catalog | None = None, *, simulate: bool = True) -> TaskReport:
-    """Validate one task given as a `Task`, a task folder or a task id within `directory`."""
+                  catalog: Catalog | None = None, *, simulate: bool = True,
+                  worlds: int = DEFAULT_WORLDS) -> TaskReport:
+    """Validate one task given as a `Task`, a task folder or a task id within `directory`.
+
+    Each situation is simulated in up to `worlds` environments (`sim.worlds.situation_worlds`);
+    `worlds=1` checks only the minimal world of each situation.
+    """
+    if worlds < 1:
+        raise ValueError(f"worlds must be >= 1, got {worlds}")
     d = tasks_dir(directory)
     cat = catalog if catalog is not None else load_catalog()
     if isinstance(task, Task):
@@ -87,12 +95,12 @@ def validate_task(task: Task | str | Path, directory: str | Path | None = None,
         except LogicEnvEvalError as exc:
             report.problems.append(Problem(name, "task.json", exc.field or "-", str(exc)))
             return report
-    _impl_validate(task, folder, cat, report, simulate)
+    _impl_validate(task, folder, cat, report, simulate, worlds)
     return report
 
 
 def _impl_validate(task: Task, folder: Path, cat: Catalog, report: TaskReport,
-                   simulate: bool) -> None:
+                   simulate: bool, worlds: int) -> None:
     def add(file: str, where: str, message: str) -> None:
         report.problems.append(Problem(task.id, file, where, message))
 
@@ -113,7 +121,7 @@ def _impl_validate(task: Task, folder: Path, cat: Catalog, report: TaskReport,
     policies = _load_policies(task, folder, add)
     if report.problems or not simulate or len(policies) < len(POLICY_KINDS):
         return
-    _check_policies(task, folder, cat, policies, report, add)
+    _check_policies(task, cat, policies, report, add, worlds)
 
 
 def _check_disjoint(task: Task, add: _Add) -> None:
@@ -258,45 +266,60 @@ def situations(task: Task) -> list[Trajectory]:
     return [Trajectory(tuple(combo)) for combo in itertools.product(*task_paths(task))]
 
 
-def _check_policies(task: Task, folder: Path, cat: Catalog, policies: dict[str, object],
-                    report: TaskReport, add: _Add) -> None:
+def _check_policies(task: Task, cat: Catalog, policies: dict[str, object],
+                    report: TaskReport, add: _Add, worlds: int) -> None:
+    """Run every policy in every world of every situation.
+
+    The correct policy must pass in all worlds; a faulty one must fail in some world of some
+    situation, pass in some situation's every world, and fail only with verdicts of its kind.
+    """
     from logicenveval.sim.policy import Policy
     from logicenveval.sim.simulator import simulate
-    from logicenveval.sim.situations import situation_env
+    from logicenveval.sim.worlds import situation_worlds
 
     passed: dict[str, list[str]] = {k: [] for k in POLICY_KINDS}
     failed: dict[str, list[tuple[str, str, str]]] = {k: [] for k in POLICY_KINDS}
     for traj in situations(task):
         report.situations += 1
         try:
-            env = situation_env(task, traj, cat)
+            envs = situation_worlds(task, traj, cat, limit=worlds)
         except LogicEnvEvalError as exc:
             add("task.json", f"situation {traj.key}", f"cannot be realised: {exc.message}")
             continue
         for kind, policy in policies.items():
             assert isinstance(policy, Policy)
-            v = simulate(policy, env, task, cat)
-            if v.status == "passed":
+            fails: list[tuple[str, str]] = []
+            for env in envs:
+                v = simulate(policy, env, task, cat)
+                if v.status != "passed":
+                    fails.append((v.status, _where(env.env_id, v.message or "")))
+            if not fails:
                 passed[kind].append(traj.key)
-            else:
-                failed[kind].append((traj.key, v.status, v.message or ""))
+            for status, message in fails if kind != "correct" else fails[:1]:
+                failed[kind].append((traj.key, status, message))
     files = task.policies
-    for key, status, message in failed["correct"]:
+    for key, why, message in failed["correct"]:
         add(files["correct"], f"situation {key}",
-            f"the correct policy fails ({status}: {message})")
+            f"the correct policy fails ({why}: {message})")
     for kind in FAULTY_KINDS:
-        report.revealing[kind] = [k for k, _, _ in failed[kind]]
+        report.revealing[kind] = list(dict.fromkeys(k for k, _, _ in failed[kind]))
         if not failed[kind]:
             add(files[kind], "all situations",
                 f"the {kind} policy passes every situation; a faulty policy must fail in at least one")
         if not passed[kind]:
             add(files[kind], "all situations",
                 f"the {kind} policy fails every situation; it must pass in at least one")
-        for key, status, message in failed[kind]:
-            if not _fits(kind, status, message):
+        for key, why, message in failed[kind]:
+            if not _fits(kind, why, message):
                 add(files[kind], f"situation {key}",
-                    f"fails with {status} ({message}), which is not a {kind} fault; expected "
+                    f"fails with {why} ({message}), which is not a {kind} fault; expected "
                     f"{sorted(FAULT_VERDICTS[kind])}")
+
+
+def _where(env_id: str, message: str) -> str:
+    """`message`, naming the varied world (`#wN`) when the failure is not in the minimal one."""
+    _, sep, world = env_id.rpartition("#")
+    return f"{message} [in varied world {world}]" if sep else message
 
 
 def _fits(kind: str, status: str, message: str) -> bool:

@@ -18,7 +18,7 @@ from logicenveval.cli import main
 TASKS = "clean_living_room,hallway_entry_tidy,kitchen_fridge_restock"
 GENERATORS = "logicenvgen,cot,ifg,holodeck"
 KEYS = {"phypr", "logcov", "ld", "scevr", "faudr", "st_ms", "st_ticks", "ji", "redundancy", "n_envs",
-        "plausibility", "ci95"}
+        "plausibility", "faudr_mut", "faudr_mut_by_class", "ci95"}
 
 
 def _run(out: Path, *extra: str) -> int:
@@ -54,9 +54,15 @@ def test_outputs_and_result_keys(first_run: Path) -> None:
         assert set(values) == KEYS
         assert set(values["phypr"]) == {"floor_plan", "entity", "relation", "avg"}
         assert set(values["faudr"]) == {"counterfactual", "unreachable", "lackbranch", "avg"}
+        assert 0.0 < values["faudr_mut"] <= 1.0
+        assert set(values["faudr_mut_by_class"]) == {"counterfactual", "unreachable", "lackbranch"}
     assert results["tasks"] == TASKS.split(",")
     lines = (first_run / "samples.jsonl").read_text().splitlines()
     assert len(lines) == sum(v["n_envs"] for v in results["results"].values())
+    samples = [json.loads(line) for line in lines]
+    assert any(s["killed_mutants"] for s in samples)
+    assert all(not s["killed_mutants"] for s in samples if s["verdicts"].get("correct") != "passed")
+    assert "FauDR-mut" in (first_run / "leaderboard.md").read_text()
     assert list((first_run / "envs" / "logicenvgen" / "clean_living_room").glob("*.json"))
     assert "| logicenvgen |" in (first_run / "leaderboard.md").read_text()
     html = (first_run / "leaderboard.html").read_text()

@@ -109,3 +109,55 @@ def test_absence_and_certain_scene_facts() -> None:
     values = factor_values(text, {"sofa": ("sofa",), "toy": ("toy",), "table": ("dining_table",),
                                   "sponge": ("sponge",)})
     assert values == {"sponge_present": {"exists(sponge)", "not exists(sponge)"}}
+
+
+# ----- phrasings added for issue 22 (generalisation to reworded descriptions) -----------------
+
+def _conditions(description: str, roles: dict[str, Any]) -> set[str]:
+    return {c for vs in factor_values(description, roles).values() for c in vs}
+
+
+def test_a_question_asks_about_the_situation() -> None:
+    got = _conditions("Is the milk on the dining table? Then put it in the fridge.",
+                      {"milk": ("milk_carton",), "table": ("dining_table",), "fridge": ("fridge",)})
+    assert "on(milk, table)" in got
+
+
+def test_absence_words_and_fronted_places() -> None:
+    got = _conditions("Wipe the plate with the sponge. When the sponge is missing, use the cloth.",
+                      {"plate": ("plate",), "sponge": ("sponge",)})
+    assert "exists(sponge)" in got
+    got = _conditions("On the sofa there might be a book or a toy. Put them away.",
+                      {"book": ("book",), "toy": ("toy",), "sofa": ("sofa",)})
+    assert {"on(book, sofa)", "on(toy, sofa)"} <= got
+
+
+def test_relative_clauses_ellipses_and_passive_goals() -> None:
+    roles = {"toy": ("toy",), "box": ("toy_box",), "umbrella": ("umbrella",), "rack": ("shoe_rack",)}
+    got = _conditions("Any toy that is on the sofa gets put into the box. If there is an umbrella: "
+                      "when wet, it is laid on the rack.", {**roles, "sofa": ("sofa",)})
+    assert "on(toy, sofa)" in got and "state(umbrella, wet)" in got
+    assert not any(c.startswith(("on(umbrella, rack)", "inside(toy, box)")) for c in got)  # goals
+
+
+def test_somewhere_else_is_not_an_else_branch() -> None:
+    a = analyse(brief("The book is returned to the bookshelf when it is lying somewhere else.",
+                      {"book": ("book",), "shelf": ("bookshelf",)}), CATALOG)
+    assert [c.role for c in a.clauses] == ["consequence", "condition"]
+    assert "somewhere else" in a.clauses[-1].text
+
+
+def test_already_refers_to_the_previous_instruction() -> None:
+    got = _conditions("Put the plate on the dining table unless it is already there.",
+                      {"plate": ("plate",), "table": ("dining_table",)})
+    assert "on(plate, table)" in got
+    got = _conditions("Switch the lamp on unless it is already on.", {"lamp": ("table_lamp",)})
+    assert "state(lamp, toggled_on)" in got
+
+
+def test_coordinated_instructions_keep_their_own_conditions() -> None:
+    a = analyse(brief("Turn off the lamp if it is on, and close the fridge if it is open.",
+                      {"lamp": ("table_lamp",), "fridge": ("fridge",)}), CATALOG)
+    by_id = {f.id: f for f in a.factors}
+    assert "fridge_open" in by_id and "lamp_toggled_on" in by_id
+    assert by_id["fridge_open"].context == []  # asked whatever the lamp's state

@@ -132,7 +132,7 @@ def test_results_shape_has_exactly_design_keys(task: Task) -> None:
     dumped = json.loads(g.model_dump_json())
     assert set(dumped) == {
         "phypr", "logcov", "ld", "scevr", "faudr", "st_ms", "st_ticks", "ji", "redundancy", "n_envs",
-        "plausibility",
+        "plausibility", "faudr_mut", "faudr_mut_by_class",
     }
     assert set(dumped["plausibility"]) == {"rate", "codes"}
     assert set(dumped["phypr"]) == {"floor_plan", "entity", "relation", "avg"}
@@ -196,3 +196,24 @@ def test_extra_checks_are_reported_apart_from_phypr(task: Task) -> None:
     assert g.phypr.entity == pytest.approx(3 / 4)  # the extra codes do not touch PhyPR
     assert g.plausibility.rate == pytest.approx(1 / 4)
     assert g.plausibility.codes == {"blocks_door": 2, "size_out_of_range": 1}
+
+
+def test_faudr_mut_counts_killed_mutants_in_valid_envs_only(task: Task) -> None:
+    mutants = {"m1": "counterfactual", "m2": "counterfactual", "m3": "lackbranch", "m4": "unreachable"}
+    valid = _sample("e0", [DOLL, BOOK, WIPE]).model_copy(update={"killed_mutants": ["m1", "m3"]})
+    invalid = _sample("e1", [OTHER, BOOK, MOP], verdicts={"correct": "goal_unmet"}).model_copy(
+        update={"killed_mutants": ["m2", "m4"]})
+    m = task_metrics(task, [valid, invalid], mutants=mutants)
+    assert m.faudr_mut == pytest.approx(2 / 4)
+    assert m.faudr_mut_by_class == {"counterfactual": 0.5, "lackbranch": 1.0, "unreachable": 0.0}
+    other = task_metrics(load_task("living_room_toy_boxes", TASKS), [], mutants={"x": "lackbranch"})
+    g = aggregate([m, other])
+    assert g.faudr_mut == pytest.approx((0.5 + 0.0) / 2)
+    assert g.faudr_mut_by_class["lackbranch"] == pytest.approx((1.0 + 0.0) / 2)
+    assert g.faudr_mut_by_class["unreachable"] == pytest.approx(0.0)
+
+
+def test_faudr_mut_is_none_when_not_scored(task: Task) -> None:
+    m = task_metrics(task, [_sample("e0", [DOLL, BOOK, WIPE])])
+    assert m.faudr_mut is None and m.faudr_mut_by_class == {}
+    assert aggregate([m]).faudr_mut is None

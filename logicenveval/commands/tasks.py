@@ -17,9 +17,16 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     val = sub.add_parser("validate", help="check every task; exit 1 on any problem")
     val.add_argument("--task", action="append", default=None, help="validate only this task (repeatable)")
     val.add_argument("--no-simulate", action="store_true", help="skip simulating the four policies")
+    val.add_argument("--worlds", type=_positive, default=None,
+                     help="worlds simulated per situation (default 12; 1 = the minimal world only)")
+    mu = sub.add_parser("mutants", help="first-order mutants of the correct BTs, classified by simulation")
+    mu.add_argument("--tasks", default="all", help="all or comma-separated task ids")
+    mu.add_argument("--worlds", type=_positive, default=None,
+                    help="worlds simulated per situation (default 12, as tasks validate)")
+    mu.add_argument("--json", action="store_true", help="print JSON (every mutant and what kills it)")
     st = sub.add_parser("stats", help="per-task logical and policy sizes, with totals")
     st.add_argument("--markdown", action="store_true", help="print a Markdown table (for the README)")
-    for q in (ls, show, val, st):
+    for q in (ls, show, val, mu, st):
         q.add_argument("--tasks-dir", default=None, help="folder of <task_id>/task.json (default: benchmark)")
 
 
@@ -31,6 +38,8 @@ def run(args: argparse.Namespace) -> int:
         return _show(args)
     if cmd == "validate":
         return _validate(args)
+    if cmd == "mutants":
+        return _mutants(args)
     return _stats(args)
 
 
@@ -88,12 +97,14 @@ def _validate(args: argparse.Namespace) -> int:
 
     from logicenveval.benchmark import tasks_dir
     from logicenveval.benchmark_validation import validate_all, validate_task
+    from logicenveval.sim.worlds import DEFAULT_WORLDS
 
     simulate = not args.no_simulate
+    worlds = args.worlds or DEFAULT_WORLDS
     if args.task:
-        reports = [validate_task(t, args.tasks_dir, simulate=simulate) for t in args.task]
+        reports = [validate_task(t, args.tasks_dir, simulate=simulate, worlds=worlds) for t in args.task]
     else:
-        reports = validate_all(args.tasks_dir, simulate=simulate)
+        reports = validate_all(args.tasks_dir, simulate=simulate, worlds=worlds)
     table = Table(title=f"validation of {tasks_dir(args.tasks_dir)}")
     for col in ("task", "situations", "counterfactual", "unreachable", "lackbranch", "result"):
         table.add_column(col)
@@ -110,6 +121,56 @@ def _validate(args: argparse.Namespace) -> int:
         print(f"{len(problems)} problem(s) in {sum(not r.ok for r in reports)} of {len(reports)} task(s)")
         return 1
     print(f"all {len(reports)} task(s) valid")
+    return 0
+
+
+def _mutants(args: argparse.Namespace) -> int:
+    import json
+
+    from rich.table import Table
+
+    from logicenveval.benchmark import task_ids
+    from logicenveval.errors import ConfigError
+    from logicenveval.faults.classify import classify_tasks
+    from logicenveval.sim.worlds import DEFAULT_WORLDS
+
+    known = task_ids(args.tasks_dir)
+    ids = known if args.tasks == "all" else [t.strip() for t in args.tasks.split(",") if t.strip()]
+    unknown = [t for t in ids if t not in known]
+    if unknown or not ids:
+        raise ConfigError(f"unknown task id(s) {unknown}", field="--tasks",
+                          hint=f"use all or some of: {', '.join(known)}")
+    reports = classify_tasks(ids, args.tasks_dir, worlds=args.worlds or DEFAULT_WORLDS)
+    if args.json:
+        print(json.dumps([r.to_json() for r in reports], indent=2, sort_keys=True))
+        return 0
+    table = Table(title="first-order mutants of the correct BTs")
+    for col in ("task", "mutants", "equivalent", "killable", "cf / unr / lack", "hand-written reproduced"):
+        table.add_column(col)
+    for r in reports:
+        j = r.to_json()
+        by = j["by_class"]
+        assert isinstance(by, dict)
+        hw = ", ".join(f"{k}: {'yes' if h.reproduced_by else 'no'}" for k, h in r.handwritten.items())
+        table.add_row(r.task, str(j["mutants"]), str(j["equivalent"]), str(j["killable"]),
+                      f"{by['counterfactual']} / {by['unreachable']} / {by['lackbranch']}", hw)
+    _console().print(table)
+    ops: dict[str, list[int]] = {}
+    for r in reports:
+        for op, row in r.by_operator().items():
+            acc = ops.setdefault(op, [0, 0])
+            acc[0] += row["mutants"]
+            acc[1] += row["killable"]
+    print("by operator: " + ", ".join(f"{op} {m}/{k}" for op, (m, k) in sorted(ops.items()))
+          + "  (mutants/killable)")
+    total = sum(len(r.killable) for r in reports)
+    print(f"{len(reports)} task(s): {sum(len(r.outcomes) for r in reports)} mutants, {total} killable "
+          f"({total / len(reports):.1f} per task)")
+    for r in reports:
+        for kind, h in r.handwritten.items():
+            if not h.reproduced_by:
+                print(f"not reproduced: {r.task} {kind}: {h.reason}; closest {h.closest} "
+                      f"(Jaccard {h.closest_jaccard:.2f})")
     return 0
 
 
@@ -132,6 +193,16 @@ def _stats(args: argparse.Namespace) -> int:
     _console().print(table)
     print(f"{t['tasks']} tasks, {t['policies']} policies")
     return 0
+
+
+def _positive(text: str) -> int:
+    try:
+        n = int(text)
+    except ValueError:
+        n = 0
+    if n < 1:
+        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
+    return n
 
 
 def _console() -> Console:

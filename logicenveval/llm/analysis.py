@@ -41,11 +41,16 @@ STATE_WORDS: dict[str, tuple[str, bool]] = {
 }
 #: words between a subject and its predicate that describe a current situation
 DESCRIPTIVE = frozenset(
-    ["is", "are", "was", "were", "be", "been", "being", "am", "seem", "seems", "seemed", "look", "looks", "appear", "appears", "still", "already", "currently", "left", "lying", "lie", "lies", "sitting", "sit", "sits", "standing", "stand", "stands", "kept", "found", "dropped", "fallen", "ended", "up", "have", "has", "had", "got", "gotten", "remain", "remains", "remained", "now", "itself", "themselves", "just", "somehow", "accidentally", "again", "there", "here", "turned", "switched", "scattered", "sitting", "lays", "may", "might", "could", "possibly", "perhaps", "maybe", "probably", "sometimes", "will"]
+    ["is", "are", "was", "were", "be", "been", "being", "am", "seem", "seems", "seemed", "look", "looks", "appear", "appears", "still", "already", "currently", "left", "lying", "lie", "lies", "sitting", "sit", "sits", "standing", "stand", "stands", "kept", "found", "dropped", "fallen", "ended", "up", "have", "has", "had", "got", "gotten", "remain", "remains", "remained", "now", "itself", "themselves", "just", "somehow", "accidentally", "again", "there", "here", "turned", "switched", "scattered", "sitting", "lays", "fell", "slipped", "rolled", "may", "might", "could", "possibly", "perhaps", "maybe", "probably", "sometimes", "will",
+     "also", "too", "even"]
 )
 #: verbs after a subject that announce where it must go (a goal, not a condition)
 MOTION = frozenset(
-    ["go", "goes", "going", "belong", "belongs", "should", "must", "needs", "need", "get", "gets", "gotten", "put", "placed", "hung", "moved", "returned", "stored", "back", "brought", "taken", "carried"]
+    ["go", "goes", "going", "belong", "belongs", "should", "must", "needs", "need", "get", "gets", "gotten", "put", "placed", "hung", "moved", "returned", "stored", "back", "brought", "taken", "carried",
+     # passive voice: "a dirty shirt is put into the hamper", "clean ones are folded onto the shelf"
+     "laid", "thrown", "tossed", "loaded", "folded", "filed", "shelved", "stowed", "sorted", "tucked",
+     "packed", "stacked", "transferred", "binned", "hanged", "set", "parked", "wiped", "refilled",
+     "end"]  # "should end up on the rack"
 )
 #: action verbs before an object: a location after the object is a goal
 ACTIONS = frozenset(
@@ -57,23 +62,29 @@ ARTICLES = frozenset({"the", "a", "an", "any", "some", "one", "of", "its", "thei
 PARTS = frozenset({"door", "lid", "leaf", "screen", "soil", "surface", "top", "inside", "water",
                    "content", "bottom", "side", "handle", "shelf", "drawer", "bag", "glass", "bottle",
                    "box", "pack", "packet", "jar", "carton", "tub", "container", "roll"})
-PRONOUNS = frozenset({"it", "they", "them", "one", "ones", "its", "their"})
+PRONOUNS = frozenset({"it", "they", "them", "one", "ones", "its", "their", "whose"})
 #: participles that turn a noun phrase into a description of the current situation
-SITUATION_PARTICIPLES = frozenset({"left", "lying", "lie", "lies", "sitting", "found", "dropped", "fallen",
+SITUATION_PARTICIPLES = frozenset({"left", "lying", "lie", "lies", "sitting", "found", "dropped", "fallen", "fell",
+                                   "slipped", "rolled",
                                    "scattered", "forgotten", "standing", "kept", "ended"})
 INDEFINITE = frozenset({"a", "an", "any", "every", "each", "some", "no"})
 NEGATIONS = frozenset({"not", "no", "none", "never", "without", "nothing", "nobody", "nowhere"})
-UNCERTAIN = frozenset({"may", "might", "possibly", "perhaps", "maybe", "could", "sometimes",
+UNCERTAIN = frozenset({"may", "might", "possibly", "possible", "perhaps", "maybe", "could", "sometimes",
                        "occasionally", "potentially", "probably", "likely"})
 CONDITIONAL = ("depending on whether", "depending on if", "in case", "as long as", "provided that",
                "only if", "if not", "if so", "whether", "if", "unless", "whenever", "when", "while", "once",
                "should there be", "should")
 ELSE_CUES = ("otherwise", "else", "failing that", "if not", "if there is not", "if there are not")
 ELSEWHERE = ("anywhere else", "elsewhere", "somewhere else", "any other place", "not there")
+#: verbs whose "from" names a source ("fill the bowl from the bag"), not a location
+SOURCE_VERBS = frozenset({"fill", "refill", "pour", "top", "water", "feed"})
+#: words that say an object is absent: "the roll is missing"
+ABSENT = frozenset({"missing", "absent", "gone", "lacking", "unavailable"})
 AVAILABILITY = frozenset({"available", "any", "present", "possible", "exist", "exists", "there"})
 PREP_ON = frozenset({"on", "onto", "atop", "upon"})
 PREP_IN = frozenset({"in", "inside", "into", "within"})
-SCENE_START = re.compile(r"^\W*(there (is|are)\b(?! (no|not|maybe|possibly))|you are\b|we are\b)", re.I)
+SCENE_START = re.compile(r"^\W*([a-z' ,]{0,50}?\bthere (is|are)\b(?! (no|not|maybe|possibly))|you are\b|we are\b)",
+                         re.I)
 
 _CONTRACTIONS = [
     (r"\b(it|that|there|what|he|she)'s\b", r"\1 is"), (r"\b(they|we|you)'re\b", r"\1 are"),
@@ -130,6 +141,8 @@ class Factor:
     #: (factor id, values) under which this factor is asked: the conditions it was stated under
     context: list[tuple[str, frozenset[str]]] = field(default_factory=list)
     raw_context: list[tuple[tuple[str, str, str], bool, str]] = field(default_factory=list, repr=False)
+    #: every (sentence, clause) where the factor's condition is stated, not only the first
+    places: set[tuple[int, int]] = field(default_factory=set, repr=False)
 
 
 def _allowed(dep: Factor, negated: bool, value: str) -> frozenset[str]:
@@ -162,7 +175,7 @@ def _first_cue(low: str, cues: tuple[str, ...]) -> tuple[int, str] | None:
     for cue in cues:
         pattern = rf"(?<![a-z]){re.escape(cue)}\b"
         if cue == "should":  # only the inverted conditional: "should the hamper be full, ..."
-            pattern = r"(?:^|[,;:(-]\s*|\b(?:and|or|but)\s+)should\b(?=\s+(?:the|there|a|an|it|they|any|one|your)\b)"
+            pattern = r"(?:^|[,;:(-]\s*|\b(?:and|or|but)\s+)should\b(?=\s+(?:the|there|a|an|it|they|any|one|your|my|our|its|their|this|that|these|those|some|no)\b)"
         m = re.search(pattern, low)
         if m is None:
             continue
@@ -182,12 +195,15 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
                 return [(sentence, cue, "condition")]
             return [(sentence[m.end():].strip(" ,"), cue, "else")]
     best = _first_cue(low, CONDITIONAL)
+    if best is None and low.rstrip().endswith("?"):
+        return [(sentence, "?", "condition")]  # "Are the keys on the floor?" asks about the situation
     if best is None:
         parts: list[str] = [str(p) for p in re.split(
             r",\s*(?:and|but|while)\s+|\s+but\s+|;\s*|:\s+|\s+-\s+|\s+while\s+", sentence) if p and p.strip()]
         out: list[tuple[str, str | None, str]] = []
         for p in parts:
-            if SCENE_START.match(p) or re.search(r"\b(has|have|contains)\b", p.lower()) and not (
+            if SCENE_START.match(p) or re.search(r"\b(has|have|contains)\b(?!\s+(?:been|\w+(?:ed|en))\b)",
+                                                 p.lower()) and not (
                     re.search(r"\bif\b", p.lower()) or set(re.findall(r"[a-z]+", p.lower())) & UNCERTAIN):
                 out.append((p, None, "scene"))
             else:
@@ -195,8 +211,9 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
                             else "statement"))
         return out
     start, cue = best
-    after = re.match(r"\W*([a-z' ]{0,30}?)\W*$", low[start + len(cue):])
-    if cue == "if" and after and set(after.group(1).split()) & AVAILABILITY and len(after.group(1).split()) <= 3:
+    after = re.match(r"\W*([a-z' ]{0,30}?)\W*(?:$|[,;]|\s-\s)", low[start + len(cue):])
+    if cue in ("if", "in case") and after and set(after.group(1).split()) & AVAILABILITY \
+            and len(after.group(1).split()) <= 3 and not set(after.group(1).split()) & NEGATIONS:
         return [(sentence, "if available", "uncertain")]
     head = sentence[:start].strip(" ,-")
     tail = sentence[start + len(cue):]
@@ -207,7 +224,7 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
             pieces[-1] = (pieces[-1][0], cue, "consequence")
     m = re.search(r",\s*(then\s+)?|\bthen\b|\s+-\s+|:\s*", tail)
     if head and not (m and re.match(r"\s*(then\b|,\s*[a-z]+ (it|them)\b)", tail[m.start():].lower())):
-        other = re.search(r"[,;]?\s*\b(otherwise|else|or else|instead)\b", tail)
+        other = re.search(r"[,;]?\s*\b(otherwise|(?<!where )(?<!thing )else|or else|instead)\b", tail)
         cond = tail[: other.start()] if other else tail
         nested = _first_cue(cond.lower()[1:], CONDITIONAL)
         if nested:
@@ -258,6 +275,10 @@ class _Reader:
         self.topic_kind = "role"
         self.recent: list[str] = []
         self.last_location: dict[str, Fact] = {}
+        #: the last goal location and the last state spoken of ("put the pan on the stove",
+        #: "switch the toaster on"), for "unless it is already there / on"
+        self.last_goal: Fact | None = None
+        self.last_state: dict[str, Fact] = {}
 
     def _recent_first(self, m: Mention) -> Mention:
         """An ambiguous singular mention (`the rack`) means the candidate mentioned last."""
@@ -292,9 +313,23 @@ class _Reader:
             if before:
                 found.append(Mention(before[-1].roles, i, i + 1,
                                      "pronoun" if before[-1].kind == "role" else before[-1].kind))
+            elif w == "one" and "there" in words[max(0, i - 3) : i] and self.recent:
+                # "... with the cloth if there is one": the object named last, not the topic,
+                # unless the clause already spoke of something ("if it is elsewhere or there is none")
+                prior = [p for p in found if p.kind == "pronoun" and p.start < i]
+                things = [r for r in self.recent if r not in self.lex.holders] or self.recent
+                found.append(Mention(prior[-1].roles if prior else (things[-1],), i, i + 1, "pronoun"))
             elif self.topic:
                 found.append(Mention(self.topic, i, i + 1, "pronoun" if self.topic_kind == "role" else "floor"))
         found.sort(key=lambda m: m.start)
+        for n, m in enumerate(found):
+            # "use the sponge in case it lies on the counter": a thing is not on itself
+            later = {r for x in found[n + 1:] if x.kind == "role"
+                     and set(words[max(0, x.start - 2) : x.start]) & (PREP_ON | PREP_IN) for r in x.roles}
+            if m.kind == "pronoun" and set(m.roles) <= later:
+                other = [r for r in self.recent if r not in later]
+                if other:
+                    found[n] = Mention((other[-1],), m.start, m.end, m.kind)
         for m in found:
             if m.kind in ("role", "pronoun"):
                 self.recent = [r for r in self.recent if r not in m.roles] + list(m.roles)
@@ -309,6 +344,9 @@ class _Reader:
         mentions = self.mentions(words, toks)
         subjects = [m for m in mentions if m.kind in ("role", "pronoun")]
         negated = any(_negation(w) for w in words)
+        already = self._already(words, mentions, negated)
+        if already is not None:
+            return [already], (already.subject,)
         facts: list[Fact] = []
         for idx, m in enumerate(mentions):
             if m.kind not in ("role", "pronoun"):
@@ -321,16 +359,82 @@ class _Reader:
                 if r in self.last_location:
                     base = self.last_location[r]
                     facts.append(Fact(r, base.condition, "location", base.key, negated=True))
+        facts += self._fronted_place(words, mentions)
         for m in subjects:
-            before = words[max(0, m.start - 6) : m.start]
+            k = m.end
+            while k < len(words) and (words[k] in DESCRIPTIVE or self._pp_at(words, k)):
+                k = self._pp_at(words, k) or k + 1
+            if k < len(words) and words[k] in ABSENT or words[max(0, m.start - 3) : m.start][:2] == ["out", "of"]:
+                # "the roll by the toilet is missing", "we are out of bread"
+                facts += [Fact(r, f"exists({r})", "exists", negated=True) for r in m.roles]
+                break
+            before = words[max(0, m.start - 8) : m.start]  # "there may or may not be a loaf"
             if "there" in before or "no" in before[-2:]:
                 facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
                 break
+        if not subjects and self.topic and self.topic_kind == "role":
+            # "The potted plant: dusty leaves get misted ..." - a state of a part of the topic
+            for i, w in enumerate(words[:-1]):
+                if w in STATE_WORDS and w not in ("on", "off", "out") and words[i + 1] in PARTS:
+                    flag, pol = STATE_WORDS[w]
+                    facts += [Fact(r, f"state({r}, {flag})", "state", flag, negated=not pol, modifier=True)
+                              for r in self.topic]
+                    break
+        if not subjects and not facts and self.topic and self.topic_kind == "role" and len(words) <= 4:
+            # an elliptic condition about the topic: "when dry, ...", "if not ripe, ..."
+            for w in words:
+                if w in STATE_WORDS and w not in ("on", "off", "out"):
+                    flag, pol = STATE_WORDS[w]
+                    facts += [Fact(r, f"state({r}, {flag})", "state", flag, negated=negated != (not pol))
+                              for r in self.topic]
+                    break
         for f in facts:
             if f.kind == "location" and not f.goal:
                 self.last_location[f.subject] = f
+            if f.kind == "location" and f.goal:
+                self.last_goal = f
+            if f.kind == "state":
+                self.last_state[f.key] = f
         names = tuple(dict.fromkeys(r for m in subjects for r in m.roles))
         return list(dict.fromkeys(facts)), names
+
+    def _already(self, words: list[str], mentions: list[Mention], negated: bool) -> Fact | None:
+        """`unless it is already there / on`: the condition is the previous instruction's result."""
+        if "already" not in words or any(m.kind == "role" for m in mentions) or len(words) > 6:
+            return None
+        said = {r for m in mentions if m.kind == "pronoun" for r in m.roles}
+        after = [w for w in words[words.index("already") + 1 :] if w not in {"is", "are", "be", "was", "were"}]
+        if after[:1] in (["there"], ["here"]) and self.last_goal is not None and (
+                not said or self.last_goal.subject in said):
+            g = self.last_goal
+            return Fact(g.subject, g.condition, "location", g.key, negated=negated)
+        if after and after[0] in STATE_WORDS:
+            flag, pol = STATE_WORDS[after[0]]
+            st = self.last_state.get(flag)
+            if st is not None:  # pronouns before "already on" are often the sentence topic: trust the state
+                return Fact(st.subject, st.condition, "state", flag, negated=negated != (not pol))
+            if self.recent:  # "opening the wardrobe first, unless the door is already open"
+                r = self.recent[-1]
+                return Fact(r, f"state({r}, {flag})", "state", flag, negated=negated != (not pol))
+        return None
+
+    def _fronted_place(self, words: list[str], mentions: list[Mention]) -> list[Fact]:
+        """`On the bed there may be a book, an alarm clock or a phone`: the place comes first."""
+        if not words or words[0] not in PREP_ON | PREP_IN or "there" not in words:
+            return []
+        place = next((m for m in mentions if m.kind in ("role", "floor")), None)
+        there = words.index("there")
+        if place is None or place.end > there or not all(w in ARTICLES for w in words[1 : place.start]):
+            return []
+        out = []
+        for m in mentions:
+            if m.start > there and m.kind == "role":
+                for s in m.roles:
+                    for t in place.roles:
+                        if s != t:
+                            cond = f"on({s}, {t})" if words[0] in PREP_ON or t == "floor" else f"inside({s}, {t})"
+                            out.append(Fact(s, cond, "location", t, modifier=True))
+        return out
 
     def _subjects(self, words: list[str], mentions: list[Mention], idx: int) -> list[str]:
         group = [idx]
@@ -351,21 +455,26 @@ class _Reader:
             return []  # the last item of a list carries the location
         k = m.end
         skipped: list[str] = []
-        while k < len(words) and (words[k] in DESCRIPTIVE | MOTION | NEGATIONS | PARTS | {"top", "of", "straight"}
-                                  ) and words[k] not in PREP_ON | PREP_IN:
+        while k < len(words) and (words[k] in DESCRIPTIVE | MOTION | NEGATIONS | PARTS
+                                  | {"top", "of", "straight", "that", "which"}) and words[k] not in PREP_ON | PREP_IN:
             skipped.append(words[k])
             k += 1
-        if k >= len(words) or words[k] not in PREP_ON | PREP_IN or (
+        if k >= len(words) or words[k] not in PREP_ON | PREP_IN | {"from"} or (
                 skipped and skipped[-1] in ("switched", "turned")):  # "switched on" is not a place
             return []
-        goal = self._is_goal(words, m, skipped) or words[k] in ("into", "onto")
+        if words[k] == "from" and (skipped or m.kind != "role" or set(words[max(0, m.start - 4) : m.start]) & SOURCE_VERBS):
+            return []  # "fill it from the bag" names a source, not where the object is
+        # "the wipes from the table": where the object is now, whatever verb precedes it
+        goal = words[k] != "from" and (self._is_goal(words, m, skipped) or (
+            words[k] in ("into", "onto") and not set(skipped) & SITUATION_PARTICIPLES))
         article = words[m.start - 1] if m.start > 0 else ""
         described = bool(set(skipped) & SITUATION_PARTICIPLES) or (
-            not skipped and (article in INDEFINITE or article not in ARTICLES))
+            not skipped and (article in INDEFINITE or article not in ARTICLES)) or (
+            skipped[:1] in (["that"], ["which"]) and article in INDEFINITE)  # "any toy that is on the floor"
         modifier = not goal and described
         subjects = self._subjects(words, mentions, idx)
         out: list[Fact] = []
-        while k < len(words) and words[k] in PREP_ON | PREP_IN:
+        while k < len(words) and words[k] in PREP_ON | PREP_IN | {"from"}:
             prep = words[k]
             if prep == "on" and words[k + 1 : k + 3] == ["top", "of"]:
                 k += 2
@@ -376,11 +485,11 @@ class _Reader:
                 break
             for s in dict.fromkeys(subjects):
                 for t in target.roles:
-                    if t == s:
+                    if t == s or (prep == "from" and target.kind == "role" and t not in self.lex.holders):
                         continue
                     if target.kind == "room":
                         cond = f"in_room({s}, {t})"
-                    elif prep in PREP_ON or t == "floor":
+                    elif prep in PREP_ON or t == "floor" or (prep == "from" and t not in self.lex.containers):
                         cond = f"on({s}, {t})"
                     else:
                         cond = f"inside({s}, {t})"
@@ -395,7 +504,8 @@ class _Reader:
         k = m.end
         skipped: list[str] = []
         while k < len(words) and len(skipped) < 8 and (words[k] in DESCRIPTIVE | PARTS | NEGATIONS
-                                                       | {"but", "and"} or self._pp_at(words, k)):
+                                                       | {"but", "and", "that", "which"}
+                                                       or self._pp_at(words, k)):
             if self._pp_at(words, k):
                 k = self._pp_at(words, k)
                 continue
@@ -403,6 +513,8 @@ class _Reader:
             k += 1
         found: list[tuple[str, bool, bool]] = []  # (word, polarity-negated, modifier)
         local_neg = any(_negation(w) for w in skipped)
+        # "a water bowl that has water but is dirty": a restrictive relative clause describes
+        relative = skipped[:1] in (["that"], ["which"]) and m.start > 0 and words[m.start - 1] in INDEFINITE
         while k < len(words) and words[k] in STATE_WORDS:
             w = words[k]
             if w == "out" and not set(skipped) & {"is", "are", "was", "were", "already", "still"}:
@@ -410,10 +522,19 @@ class _Reader:
             if w in ("on", "off") and k + 1 < len(words) and words[k + 1] in ARTICLES | PRONOUNS | {"floor"} \
                     and not (skipped and skipped[-1] in ("switched", "turned")):
                 break  # `on the table` is a place, not `switched on`
-            found.append((w, local_neg, False))
+            found.append((w, local_neg, relative))
             k += 1
-            while k < len(words) and words[k] in {"and", "but", "or", ","}:
-                k += 1
+            j = k
+            while j < len(words) and words[j] in {"and", "but", "or", ","}:
+                j += 1
+            extra: list[str] = []
+            while j > k and j < len(words) and words[j] in DESCRIPTIVE | NEGATIONS and len(extra) < 3:
+                extra.append(words[j])  # "not empty but is dirty": each state has its own negation
+                j += 1
+            if j < len(words) and words[j] in STATE_WORDS:
+                if extra:
+                    local_neg = any(_negation(x) for x in extra)
+                k = j
         # "a dirty plate", "wet ones", but not "open it"
         j = m.start - 1 if m.kind == "role" or words[m.start] in ("one", "ones") else -1
         while j >= 0 and words[j] in set(STATE_WORDS) | {"and", "but"} and words[j] not in ("on", "off"):
@@ -436,7 +557,15 @@ class _Reader:
         for m in self.lex.find_mentions(toks):
             if all(w in ARTICLES for w in words[k + 1 : k + 1 + m.start]):
                 return k + 1 + m.end
-        return 0
+        # a place the task has no role for ("the candle on the coffee table is burning")
+        j = k + 1
+        while j < len(words) and words[j] in ARTICLES:
+            j += 1
+        end = j
+        while end < min(j + 2, len(words)) and words[end].isalpha() and words[end] not in (
+                STATE_WORDS.keys() | DESCRIPTIVE | NEGATIONS | MOTION | PREP_ON | PREP_IN | {"and", "or", "but"}):
+            end += 1
+        return end if j > k + 1 and end > j else 0
 
     def _attribute(self, words: list[str], m: Mention, negated: bool) -> list[Fact]:
         k = m.end
@@ -506,7 +635,8 @@ def analyse(brief: Mapping[str, Any], catalog: Catalog | None = None) -> TaskAna
     grammatical = 0  # pieces split at ':' or ';' still belong to one sentence for grouping
     for si, sent in enumerate(sentences):
         for text, cue, role in _subsplit(_split_clauses(sent)):
-            facts, names = reader.facts(text)
+            # "should there be an umbrella: ..." - the cue itself says the object may be absent
+            facts, names = reader.facts("there is " + text if cue == "should there be" else text)
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
         if sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences):
             grammatical += 1
@@ -518,13 +648,28 @@ def analyse(brief: Mapping[str, Any], catalog: Catalog | None = None) -> TaskAna
     #: conditions met earlier in the sentence: a factor first mentioned under them depends on them
     context: list[tuple[tuple[str, str, str], bool, str]] = []
     current_sentence = -1
+    #: a sentence that opens with an instruction continues the previous one's conditions
+    #: ("Clean the mirror if it is dirty. Use the cloth if we still have one; if there is no
+    #: cloth, ..."): an absence stated there is only asked under those conditions
+    carried: list[tuple[tuple[str, str, str], bool, str]] = []
     for ci, cl in enumerate(clauses):
         if cl.sentence != current_sentence:
+            carried = context if cl.role in ("statement", "consequence") else []
             current_sentence, context = cl.sentence, []
+        elif (cl.role == "condition" and ci >= 2 and clauses[ci - 1].role == "consequence"
+              and clauses[ci - 2].role == "condition" and clauses[ci - 2].sentence == cl.sentence
+              and (clauses[ci - 1].cue != cl.cue or (
+                  ci >= 3 and clauses[ci - 3].role == "consequence"
+                  and clauses[ci - 3].sentence == cl.sentence))):
+            # "switch off the lamp in case it is on, and shut the wardrobe if it is open": a new
+            # instruction with its own postposed condition, not nested under the previous one
+            context = []
         if cl.role == "else" and context:
             slot0, neg0, key0 = context[-1]
             context[-1] = (slot0, not neg0, key0)
-        conditional = cl.role in ("condition", "uncertain")
+        # "put it in the fridge - the fridge door may already be open": an uncertain remark
+        conditional = cl.role in ("condition", "uncertain") or (
+            cl.role == "consequence" and bool(set(re.findall(r"[a-z]+", cl.text.lower())) & UNCERTAIN))
         added: list[tuple[tuple[str, str, str], bool, str]] = []
         for f in cl.facts:
             if f.goal or not (conditional or (f.modifier and cl.role not in ("scene",))
@@ -533,7 +678,9 @@ def analyse(brief: Mapping[str, Any], catalog: Catalog | None = None) -> TaskAna
             slot = (f.subject, f.kind, f.key if f.kind in ("state", "attr") else "")
             entry = found.setdefault(slot, {"order": ci, "sentence": cl.sentence, "clause": ci,
                                            "targets": [], "values": [],
-                                           "context": [c for c in context if c[0] != slot]})
+                                           "context": [c for c in context if c[0] != slot]
+                                           or [c for c in carried if c[0] != slot and f.kind == "exists"]})
+            entry.setdefault("places", set()).add((cl.sentence, ci))
             if cl.role == "condition":
                 value = f.condition.rsplit(", ", 1)[1][:-1] if f.kind == "attr" else f.key
                 added.append((slot, f.negated, value))
@@ -586,6 +733,7 @@ def analyse(brief: Mapping[str, Any], catalog: Catalog | None = None) -> TaskAna
                         e["order"], e["sentence"], e["clause"], e.get("consequences", []),
                         set(e.get("roles", set())))
         factor.raw_context = e.get("context", [])
+        factor.places = set(e.get("places", set()))
         slot_factor[(subject, kind, key)] = factor
         factors.append(factor)
     for factor in factors:
@@ -615,6 +763,16 @@ def _group(factors: list[Factor]) -> tuple[list[list[str]], list[set[str]]]:
         for b in factors:
             if a.subject != b.subject and a.sentence == b.sentence >= 0 and a.clause != b.clause:
                 parent[find(b.subject)] = find(a.subject)
+            elif a.subject != b.subject and any(sa == sb and ca != cb for sa, ca in a.places
+                                                for sb, cb in b.places):
+                # restated later in a sentence that makes them depend ("a dirty shirt goes into the
+                # machine, unless the machine is running")
+                parent[find(b.subject)] = find(a.subject)
+    subject_of = {f.id: f.subject for f in factors}
+    for f in factors:  # a factor asked only under another's value belongs to its subtask
+        for dep, _ in f.context:
+            if dep in subject_of and find(subject_of[dep]) != find(f.subject):
+                parent[find(f.subject)] = find(subject_of[dep])
     order: dict[str, list[str]] = {}
     for f in factors:
         order.setdefault(find(f.subject), []).append(f.id)

@@ -20,10 +20,15 @@ COLOR_WORDS = frozenset(
 )
 
 
+_VERB_IES = frozenset({"lies", "dies", "ties"})
+
+
 def singular(word: str) -> str:
     """Crude English singular, good enough for household nouns (boxes, dishes, shelves, toys)."""
     if len(word) <= 3 or word.endswith("ss"):
         return word
+    if word in _VERB_IES:
+        return word[:-1]  # "lies" is the verb "lie", not a plural of "ly"
     for suffix, repl in (("ies", "y"), ("ves", "f"), ("xes", "x"), ("ches", "ch"), ("shes", "sh"),
                          ("sses", "ss"), ("oes", "o")):
         if word.endswith(suffix):
@@ -59,6 +64,10 @@ class Lexicon:
     domains: dict[str, dict[str, list[str]]] = field(default_factory=dict)
     #: role -> fixed attributes given by the brief
     fixed: dict[str, dict[str, str]] = field(default_factory=dict)
+    #: roles one puts things *in* rather than *on* (containers that are not surfaces)
+    containers: set[str] = field(default_factory=set)
+    #: roles things can rest on or in (surfaces and containers)
+    holders: set[str] = field(default_factory=set)
 
     @classmethod
     def build(cls, brief: Mapping[str, Any], catalog: Catalog) -> Lexicon:
@@ -76,6 +85,10 @@ class Lexicon:
                     lex.phrases.setdefault(words_of(n)[1:], set()).add(name)
             lex.domains[name] = {k: [v.lower() for v in vs] for k, vs in (cat.attributes if cat else {}).items()}
             lex.fixed[name] = {k: str(v).lower() for k, v in role.get("attributes", {}).items()}
+            if cat is not None and cat.container and not cat.surface:
+                lex.containers.add(name)
+            if cat is not None and (cat.container or cat.surface):
+                lex.holders.add(name)
         for room in lex.rooms:
             lex.room_phrases[words_of(room)] = room
         # "the table" for the dining table, "the machine" for the washing machine: a head noun
@@ -106,7 +119,10 @@ class Lexicon:
             for n in range(min(longest, len(words) - i), 0, -1):
                 key = tuple(words[i : i + n])
                 if key in self.room_phrases and n > 0:
-                    found = Mention((self.room_phrases[key],), i, i + n, "room")
+                    if words[i + n : i + n + 1] == ["floor"]:  # "the laundry room floor"
+                        found = Mention(("floor",), i, i + n + 1, "floor")
+                    else:
+                        found = Mention((self.room_phrases[key],), i, i + n, "room")
                     break
                 if key in self.phrases:
                     found = Mention(self._disambiguate(self.phrases[key], words, i), i, i + n)

@@ -14,7 +14,8 @@ Decisions where DESIGN.md is silent (docs/logic.md):
 from __future__ import annotations
 
 from collections import Counter
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
+from typing import Any
 
 import pandas as pd
 from pydantic import BaseModel, ConfigDict, Field
@@ -50,6 +51,10 @@ class TaskMetrics(BaseModel):
     #: environments passing every extra plausibility check, and per failure code how many fail it
     n_extended_ok: int = 0
     extended_codes: dict[str, int] = Field(default_factory=dict)
+    #: share of the task's killable mutants killed in some valid environment (None: not scored)
+    faudr_mut: float | None = None
+    #: the same share per fault class (classes without killable mutants are left out)
+    faudr_mut_by_class: dict[str, float] = Field(default_factory=dict)
     covered_paths: list[str] = Field(default_factory=list)
     realised_trajectories: list[str] = Field(default_factory=list)
     #: the minimum cover JI compares with: the one closest to `realised_trajectories`
@@ -95,6 +100,9 @@ class GeneratorMetrics(BaseModel):
     redundancy: float
     n_envs: int
     plausibility: Plausibility
+    #: mutation score (issue 22): mean over scored tasks; None when no task was scored
+    faudr_mut: float | None = None
+    faudr_mut_by_class: dict[str, float] = Field(default_factory=dict)
 
 
 def _is_valid(sample: EnvSample) -> bool:
@@ -124,7 +132,9 @@ def _check_samples(task: Task, samples: Sequence[EnvSample], n_failed: int) -> s
     return keys
 
 
-def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0) -> TaskMetrics:
+def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0,
+                 mutants: Mapping[str, str] | None = None) -> TaskMetrics:
+    """Figures of one task; `mutants` (killable id -> fault class) enables `faudr_mut`."""
     keys = _check_samples(task, samples, n_failed)
     good = [s for s in samples if s.well_formed]
     covered = {k for s in good for k in s.covered_paths}
@@ -167,10 +177,22 @@ def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0) ->
         st_ticks=st_ticks,
         n_extended_ok=sum(s.physics.extended for s in samples),
         extended_codes=dict(sorted(codes.items())),
+        **_mutation_score(valid, mutants),
         covered_paths=sorted(covered),
         realised_trajectories=sorted(realised),
         reference_trajectories=[t.key for t in closest.trajectories],
     )
+
+
+def _mutation_score(valid: Sequence[EnvSample], mutants: Mapping[str, str] | None) -> dict[str, Any]:
+    if not mutants:
+        return {}
+    killed = {m for s in valid for m in s.killed_mutants} & set(mutants)
+    by_class: dict[str, float] = {}
+    for cls in sorted(set(mutants.values())):
+        ids = {m for m, c in mutants.items() if c == cls}
+        by_class[cls] = len(killed & ids) / len(ids)
+    return {"faudr_mut": len(killed) / len(mutants), "faudr_mut_by_class": by_class}
 
 
 def aggregate(per_task: Sequence[TaskMetrics]) -> GeneratorMetrics:
@@ -211,4 +233,16 @@ def aggregate(per_task: Sequence[TaskMetrics]) -> GeneratorMetrics:
             rate=share("n_extended_ok"),
             codes=dict(sorted(sum((Counter(t.extended_codes) for t in per_task), Counter()).items())),
         ),
+        **_mean_mutation_score(per_task),
     )
+
+
+def _mean_mutation_score(per_task: Sequence[TaskMetrics]) -> dict[str, Any]:
+    scored = [t for t in per_task if t.faudr_mut is not None]
+    if not scored:
+        return {}
+    classes = sorted({c for t in scored for c in t.faudr_mut_by_class})
+    by_class = {c: sum(t.faudr_mut_by_class[c] for t in scored if c in t.faudr_mut_by_class)
+                / sum(1 for t in scored if c in t.faudr_mut_by_class) for c in classes}
+    return {"faudr_mut": sum(float(t.faudr_mut or 0.0) for t in scored) / len(scored),
+            "faudr_mut_by_class": by_class}

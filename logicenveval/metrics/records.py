@@ -43,8 +43,11 @@ class EnvSample(BaseModel):
     physics: PhysicsSummary
     #: policy kind -> verdict status (`passed`, `precondition_violation`, ...)
     verdicts: dict[str, str] = Field(default_factory=dict)
-    #: policy kind -> simulation wall time in milliseconds (a timing field)
+    #: policy kind -> simulation wall time in milliseconds (a timing field); key `mutants`:
+    #: time to simulate the task's killable mutants (not part of ST)
     sim_ms: dict[str, float] = Field(default_factory=dict)
+    #: ids of the task's killable mutants that fail here (valid environments only; `faudr_mut`)
+    killed_mutants: list[str] = Field(default_factory=list)
     #: policy kind -> simulator ticks of the run (deterministic companion of `sim_ms`)
     sim_ticks: dict[str, int] = Field(default_factory=dict)
 
@@ -60,5 +63,7 @@ class UnitRecord(BaseModel):
     #: a unit that crashed as a whole (LLM error, solver timeout): its reason
     error: str | None = None
     gen_seconds: float = 0.0
+    #: killable mutant id -> fault class (`faults.score`); empty when mutants were not scored
+    mutants: dict[str, str] = Field(default_factory=dict)
     #: LLM counters of the unit (requests, cache hits/misses, retries, re-asks, tokens, latency)
     llm: dict[str, float] = Field(default_factory=dict)

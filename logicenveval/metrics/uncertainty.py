@@ -45,6 +45,9 @@ def _columns(cells: Sequence[Cell]) -> dict[str, np.ndarray]:
     cols["slots"] = np.array([float(c["n_envs"]) + float(c.get("n_failed", 0)) for c in cells])
     for k in FAULTY_KINDS:
         cols[f"faudr_{k}"] = np.array([float(bool(c["faudr"][k])) for c in cells])
+    mut = [c.get("faudr_mut") for c in cells]  # None where the task has no mutants scored
+    cols["faudr_mut"] = np.array([float(m) if m is not None else 0.0 for m in mut])
+    cols["faudr_mut_scored"] = np.array([0.0 if m is None else 1.0 for m in mut])
     return cols
 
 
@@ -60,6 +63,9 @@ def metrics_from_weights(cells: Sequence[Cell], weights: np.ndarray) -> dict[tup
             out[path] = np.where(slots > 0, (w @ cols[col]) / slots, 0.0)
         for path, col in {**_MEANS, **_OTHER_MEANS}.items():
             out[path] = (w @ cols[col]) / total
+        scored = w @ cols["faudr_mut_scored"]
+        out[("faudr_mut",)] = np.where(scored > 0, (w @ (cols["faudr_mut"] * cols["faudr_mut_scored"]))
+                                       / scored, np.nan)
     out[("phypr", "avg")] = (out[("phypr", "floor_plan")] + out[("phypr", "entity")]
                              + out[("phypr", "relation")]) / 3
     out[("faudr", "avg")] = np.mean([out[("faudr", k)] for k in FAULTY_KINDS], axis=0)
@@ -71,7 +77,13 @@ def point_metrics(cells: Sequence[Cell]) -> dict[str, Any]:
     m = {p: float(v[0]) for p, v in metrics_from_weights(cells, np.ones((1, len(cells)))).items()}
     nested: dict[str, Any] = {"n_envs": int(sum(int(c["n_envs"]) for c in cells))}
     for path, value in m.items():
-        _put(nested, path, value)
+        _put(nested, path, None if np.isnan(value) else value)
+    by_class: dict[str, list[float]] = {}
+    for c in cells:
+        if c.get("faudr_mut") is not None:
+            for cls, v in (c.get("faudr_mut_by_class") or {}).items():
+                by_class.setdefault(cls, []).append(float(v))
+    nested["faudr_mut_by_class"] = {k: sum(v) / len(v) for k, v in sorted(by_class.items())}
     codes: Counter[str] = Counter()
     for c in cells:
         codes.update(c.get("extended_codes") or {})
@@ -146,7 +158,9 @@ def paired_difference(a: Mapping[tuple[str, int], Cell], b: Mapping[tuple[str, i
     pb = metrics_from_weights(cells_b, np.ones((1, len(kb))))
     out = {}
     for path in da:
-        lo, hi = np.percentile(db[path] - da[path], [2.5, 97.5])
+        if np.isnan(pa[path][0]) or np.isnan(pb[path][0]):
+            continue  # a figure one of the runs does not have (e.g. no mutants scored)
+        lo, hi = np.nanpercentile(db[path] - da[path], [2.5, 97.5])
         out[path] = (float(pb[path][0] - pa[path][0]), float(lo), float(hi))
     return out
 

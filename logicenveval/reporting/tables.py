@@ -16,6 +16,7 @@ COLUMNS: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     ("FauDR Unreach", ("faudr", "unreachable"), True),
     ("FauDR LBranch", ("faudr", "lackbranch"), True),
     ("FauDR Avg", ("faudr", "avg"), True),
+    ("FauDR-mut", ("faudr_mut",), True),
     ("ST (ms)", ("st_ms",), False),
     ("ST (ticks)", ("st_ticks",), False),
     ("LD", ("ld",), True),

@@ -11,7 +11,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from logicenveval.domain.catalog import Catalog
-from logicenveval.domain.roles import bind_roles
+from logicenveval.domain.roles import RoleBinding, bind_roles
 from logicenveval.metrics.evaluate import coverage
 from logicenveval.metrics.records import EnvSample, PhysicsSummary
 from logicenveval.model.envspec import EnvSpec
@@ -19,6 +19,15 @@ from logicenveval.model.task import Task
 from logicenveval.physics import check_env
 from logicenveval.sim.simulator import simulate
 from logicenveval.sim.world import holds_initial
+
+
+def with_bound_roles(env: EnvSpec, task: Task, catalog: Catalog) -> tuple[EnvSpec, RoleBinding]:
+    """`env` as it is judged: the task's roles it does not map bound by `domain.roles`."""
+    own = {name: oid for name, oid in env.roles.items() if name in task.roles}
+    binding = bind_roles(env.model_copy(update={"roles": own}), task.roles, catalog)
+    if binding.roles != own:
+        env = env.model_copy(update={"roles": {**env.roles, **binding.roles}})
+    return env, binding
 
 
 def evaluate_env(
@@ -36,10 +45,7 @@ def evaluate_env(
     not told the roles names objects its own way: `--brief description`) neither bind nor block
     objects; they stay in the map for the relations that use them.
     """
-    own = {name: oid for name, oid in env.roles.items() if name in task.roles}
-    binding = bind_roles(env.model_copy(update={"roles": own}), task.roles, catalog)
-    if binding.roles != own:
-        env = env.model_copy(update={"roles": {**env.roles, **binding.roles}})
+    env, binding = with_bound_roles(env, task, catalog)
     report = check_env(env, catalog)
     failures = [
         f.model_dump(mode="json")

@@ -93,7 +93,8 @@ def build_results(
     for gen in (config.generators if generators is None else generators):
         units = [r for r in records if r.generator == gen]
         metrics = [
-            task_metrics(by_task[u.task_id], u.samples, n_failed=1 if u.error and not u.samples else 0)
+            task_metrics(by_task[u.task_id], u.samples, n_failed=1 if u.error and not u.samples else 0,
+                         mutants=u.mutants or None)
             for u in units
         ]
         results[gen] = aggregate(metrics).model_dump(mode="json")

@@ -129,7 +129,8 @@ def env_files(folder: Path) -> list[Path]:
 
 def score_unit(spec: ScoreUnitSpec) -> UnitRecord:
     """Judge every EnvSpec of one task folder; a bad file is a failure, never an exception."""
-    from logicenveval.runner.evaluation import evaluate_env
+    from logicenveval.faults.score import scorer_for
+    from logicenveval.runner.evaluation import evaluate_env, with_bound_roles
     from logicenveval.sim.loader import load_policy
 
     task = load_task(spec.task_id, spec.tasks_dir)
@@ -140,6 +141,8 @@ def score_unit(spec: ScoreUnitSpec) -> UnitRecord:
     failures: list[GenerationFailure] = []
     samples = []
     seen: set[str] = set()
+    # mutation scoring exactly as `run_unit` does it (faudr_mut)
+    scorer = scorer_for(task, spec.tasks_dir, catalog, cache_dir=Path(spec.run_dir) / "work" / "mutants")
     for path in env_files(folder):
         try:
             env = load_env(path)
@@ -152,6 +155,12 @@ def score_unit(spec: ScoreUnitSpec) -> UnitRecord:
                                   file=str(path), field="env_id", hint="give every environment its own env_id")
             seen.add(env.env_id)
             sample = evaluate_env(spec.generator, task, env, policies, catalog)
+            if sample.well_formed and sample.verdicts.get("correct") == "passed":
+                start = time.perf_counter()
+                killed = scorer.killed(with_bound_roles(env, task, catalog)[0], task, catalog)
+                ms = (time.perf_counter() - start) * 1000.0
+                sample = sample.model_copy(update={"killed_mutants": killed,
+                                                   "sim_ms": {**sample.sim_ms, "mutants": ms}})
         except LogicEnvEvalError as exc:
             failures.append(GenerationFailure(stage="load", message=str(exc), env_id=path.stem))
             continue
@@ -167,7 +176,7 @@ def score_unit(spec: ScoreUnitSpec) -> UnitRecord:
         error = (f"no valid EnvSpec in {folder}" if folder.is_dir()
                  else f"no folder {folder} for this task")
     return UnitRecord(generator=spec.generator, task_id=spec.task_id, samples=samples,
-                      failures=failures, error=error)
+                      failures=failures, error=error, mutants=scorer.classes)
 
 
 def _task_ids(config: EvaluateConfig) -> tuple[list[str], list[str]]:

@@ -73,6 +73,7 @@ def _unique_ids(envs: list[EnvSpec]) -> list[EnvSpec]:
 
 def run_unit(spec: UnitSpec) -> UnitRecord:
     """Generate and evaluate; a failing generation is recorded, never raised."""
+    from logicenveval.faults.score import scorer_for
     from logicenveval.llm.registry import make_model
     from logicenveval.runner.evaluation import evaluate_env
     from logicenveval.sim.loader import load_policy
@@ -113,16 +114,25 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     gen_seconds = time.perf_counter() - start
     env_dir = run_dir / "envs" / spec.generator / spec.task_id
     samples = []
+    scorer = scorer_for(task, spec.tasks_dir, catalog, cache_dir=run_dir / "work" / "mutants")
     for env in _unique_ids(result.envs):
         atomic_write_text(env_dir / f"{env.env_id}.json", env_to_json(env))
-        samples.append(evaluate_env(spec.generator, task, env, policies, catalog))
+        sample = evaluate_env(spec.generator, task, env, policies, catalog)
+        if sample.well_formed and sample.verdicts.get("correct") == "passed":
+            start = time.perf_counter()
+            killed = scorer.killed(env, task, catalog)
+            ms = (time.perf_counter() - start) * 1000.0
+            sample = sample.model_copy(update={"killed_mutants": killed,
+                                               "sim_ms": {**sample.sim_ms, "mutants": ms}})
+        samples.append(sample)
     if spec.brief != "roles":
         atomic_write_text(env_dir / "brief.json", brief.model_dump_json(indent=2) + "\n")
     if result.artifacts:
         atomic_write_text(env_dir / "plan.json",
                           json.dumps(result.artifacts, indent=2, sort_keys=True, default=str) + "\n")
     return UnitRecord(generator=spec.generator, task_id=spec.task_id, samples=samples,
-                      failures=list(result.failures), gen_seconds=gen_seconds, llm=_stats(model))
+                      failures=list(result.failures), gen_seconds=gen_seconds, llm=_stats(model),
+                      mutants=scorer.classes)
 
 
 def _stats(model: object) -> dict[str, float]:

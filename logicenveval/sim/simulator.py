@@ -39,6 +39,35 @@ class CompiledPolicy:
         self.root: BTNode = build_tree(policy)
         self._nodes: list[BTNode] = [n for n in self.root.iterate() if isinstance(n, BTNode)]
 
+    def status(self, world: World, goal: Cond | None, *, tick_limit: int = 50) -> str:
+        """The verdict status of one episode on `world` (mutated in place: pass a copy).
+
+        Same judgement as `run` without building a `Verdict` (no trace, no final-state digest),
+        for callers that run many policies and only need the outcome (mutation scoring).
+        """
+        for node in self._nodes:
+            node.reset_all()
+        ep = self.root.binding.ep = Episode(world)
+        status = IDLE
+        try:
+            while ep.tick < tick_limit:
+                ep.tick += 1
+                self.root.tick_once()
+                status = self.root.status
+                if status is not RUNNING:
+                    break
+        except Violation:
+            return "precondition_violation"
+        except BudgetExceeded:
+            return "tick_limit"
+        if status is RUNNING:
+            return "tick_limit"
+        if status is FAILURE:
+            return "tree_failure"
+        if goal is None:
+            return "ill_formed"
+        return "passed" if evaluate(goal, world.holds) else "goal_unmet"
+
     def run(self, world: World, goal: Cond | None, *, tick_limit: int = 50,
             trace: bool = False) -> Verdict:
         """Run one episode on `world` (mutated in place: pass a copy)."""

@@ -1,0 +1,1 @@
+"""Mutation-based faults: first-order BT mutants, their classification, and the mutation score."""

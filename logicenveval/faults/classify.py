@@ -1,0 +1,342 @@
+"""Classify mutants by exhaustive simulation, and score environments by the mutants they kill.
+
+A mutant is *equivalent* when it passes every GT situation in every world the validator builds
+(`sim.worlds.situation_worlds`); otherwise it is *killable*, and the situations that kill it and
+its verdict kinds are recorded. Each of a task's three hand-written faulty BTs is *reproduced*
+when some mutant has the same signature (situation -> verdict kinds over all worlds).
+
+Speed: a mutant differs from the correct BT only inside its `region`. Every episode runs the
+correct BT once with a trace; a mutant none of whose region's leaves were ticked there behaves
+exactly like the correct BT (same ticks, same statuses, same world), so it passes without being
+simulated. Only mutants whose region was reached are run, each on its own compiled tree, built
+once and reset per episode.
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from logicenveval.benchmark import load_task, policy_path
+from logicenveval.benchmark_validation import situations
+from logicenveval.domain.catalog import Catalog, load_catalog
+from logicenveval.faults.operators import FAULT_CLASSES, Mutant, mutants
+from logicenveval.model.conditions import Cond
+from logicenveval.model.envspec import EnvSpec
+from logicenveval.model.task import FAULTY_KINDS, Task
+from logicenveval.sim.loader import load_policy
+from logicenveval.sim.nodes import BTNode, Decorator, build_tree
+from logicenveval.sim.policy import Policy, PolicyNode
+from logicenveval.sim.simulator import CompiledPolicy, task_goal
+from logicenveval.sim.world import World
+from logicenveval.sim.worlds import DEFAULT_WORLDS, situation_worlds
+
+Signature = dict[str, tuple[str, ...]]  # situation key -> sorted verdict kinds of its failures
+
+
+@dataclass(frozen=True)
+class MutantOutcome:
+    id: str
+    operator: str
+    fault_class: str
+    description: str
+    killed_by: Signature
+
+    @property
+    def equivalent(self) -> bool:
+        return not self.killed_by
+
+
+@dataclass(frozen=True)
+class HandwrittenMatch:
+    """How a hand-written faulty BT relates to the mutants."""
+
+    kind: str
+    signature: Signature
+    reproduced_by: list[str]
+    #: when not reproduced: the closest mutant and the Jaccard index of (situation, kind) pairs
+    closest: str | None = None
+    closest_jaccard: float = 0.0
+    #: number of single-node differences between the faulty and the correct BT
+    edits: int = 0
+    reason: str = ""
+
+
+@dataclass
+class TaskMutants:
+    task: str
+    situations: int
+    worlds: int
+    outcomes: list[MutantOutcome] = field(default_factory=list)
+    handwritten: dict[str, HandwrittenMatch] = field(default_factory=dict)
+
+    @property
+    def killable(self) -> list[MutantOutcome]:
+        return [o for o in self.outcomes if not o.equivalent]
+
+    def by_operator(self) -> dict[str, dict[str, int]]:
+        out: dict[str, dict[str, int]] = {}
+        for o in self.outcomes:
+            row = out.setdefault(o.operator, {"mutants": 0, "killable": 0})
+            row["mutants"] += 1
+            row["killable"] += not o.equivalent
+        return dict(sorted(out.items()))
+
+    def to_json(self) -> dict[str, object]:
+        return {
+            "task": self.task, "situations": self.situations, "worlds": self.worlds,
+            "mutants": len(self.outcomes), "killable": len(self.killable),
+            "equivalent": len(self.outcomes) - len(self.killable),
+            "by_operator": self.by_operator(),
+            "by_class": {c: sum(1 for o in self.killable if o.fault_class == c) for c in FAULT_CLASSES},
+            "handwritten": {k: {"reproduced_by": h.reproduced_by, "closest": h.closest,
+                                "closest_jaccard": round(h.closest_jaccard, 4), "edits": h.edits,
+                                "reason": h.reason}
+                            for k, h in self.handwritten.items()},
+            "mutant_list": [{"id": o.id, "class": o.fault_class, "description": o.description,
+                             "killed_by": o.killed_by} for o in self.outcomes],
+        }
+
+
+#: (parent, child index, original child, spliced-in child, the spliced subtree's nodes)
+_Splice = tuple[BTNode, int, BTNode, BTNode, list[BTNode]]
+
+
+class MutantRunner:
+    """Runs the correct BT and its mutants on environments, reusing compiled trees.
+
+    A mutant is not compiled as a whole: only its anchor (the smallest subtree holding the
+    edit) is built, and spliced into the correct BT's compiled tree for the episode, in place
+    of the original subtree, then taken out again. Everything outside the anchor is the very
+    same py_trees nodes, so building a mutant costs its anchor, not the whole tree.
+    """
+
+    def __init__(self, correct: Policy, muts: Sequence[Mutant]) -> None:
+        self.correct = CompiledPolicy(correct)
+        self.mutants = list(muts)
+        self._splices: dict[int, list[_Splice]] = {}
+        self._whole: dict[int, CompiledPolicy] = {}
+        self._paths = _compiled_paths(correct)
+        self._by_path: dict[str, tuple[BTNode, BTNode | None, int]] = {}
+        for node in self.correct.root.iterate():
+            if isinstance(node, BTNode):
+                self._by_path.setdefault(node.path, (node, None, 0))
+                for i, child in enumerate(node.children):
+                    if isinstance(child, BTNode):
+                        self._by_path[child.path] = (child, node, i)
+        regions = [tuple(p for r in m.region for p in self._paths.get((m.location[0], r), ()))
+                   for m in self.mutants]
+        #: a condition replaced by a constant behaves as before wherever it already returned
+        #: that constant: leaf paths and the status the mutant forces
+        self._forced = [(regions[i], _FORCED.get(m.operator)) for i, m in enumerate(self.mutants)]
+
+    def run(self, world: World, goal: Cond | None,
+            only: Iterable[int] | None = None) -> dict[int, str]:
+        """Verdict status of each mutant (index -> status) that does not pass on `world`."""
+        base = self.correct.run(world.copy(), goal, trace=True)
+        ticked: set[str] = set()
+        leaf_status: dict[str, set[str]] = {}
+        for ev in base.trace:
+            path = str(ev["path"])
+            leaf_status.setdefault(path, set()).add(str(ev["status"]))
+            parts = path.split("/")
+            for k in range(1, len(parts) + 1):
+                ticked.add("/".join(parts[:k]))
+        out: dict[int, str] = {}
+        for i in (only if only is not None else range(len(self.mutants))):
+            region, forced = self._forced[i]
+            same = not any(p in ticked for p in region) or (
+                forced is not None and all(leaf_status.get(p, {forced}) == {forced} for p in region))
+            if same:
+                if base.status != "passed":
+                    out[i] = base.status
+                continue
+            status = self._status(i, world.copy(), goal)
+            if status != "passed":
+                out[i] = status
+        return out
+
+    def _status(self, i: int, world: World, goal: Cond | None) -> str:
+        whole = self._whole.get(i)
+        if whole is not None:
+            return whole.status(world, goal)
+        splices = self._splices.get(i)
+        if splices is None:
+            splices = self._build_splices(i)
+            if splices is None:
+                whole = self._whole[i] = CompiledPolicy(self.mutants[i].policy)
+                return whole.status(world, goal)
+        for parent, k, _, new, nodes in splices:
+            _put(parent, k, new)
+            for n in nodes:
+                n.reset_all()
+        try:
+            return self.correct.status(world, goal)
+        finally:
+            for parent, k, old, _, _ in splices:
+                _put(parent, k, old)
+
+    def _build_splices(self, i: int) -> list[_Splice] | None:
+        m = self.mutants[i]
+        tree = m.location[0]
+        places = self._paths.get((tree, m.anchor), [])
+        out = []
+        for path in places:
+            old, parent, k = self._by_path[path]
+            if parent is None:
+                return None  # the anchor is the main tree's root: compile the mutant whole
+            anchor = _node_at(m.policy.trees[tree], m.anchor)
+            host = f"{tree}#anchor"
+            part = Policy(host, {**m.policy.trees, host: anchor}, m.policy.source)
+            new = build_tree(part, self.correct.root.binding)
+            out.append((parent, k, old, new, [n for n in new.iterate() if isinstance(n, BTNode)]))
+        self._splices[i] = out
+        return out
+
+
+def _put(parent: BTNode, k: int, child: BTNode) -> None:
+    parent.children[k] = child
+    if isinstance(parent, Decorator):
+        parent.decorated = child
+
+
+def _node_at(root: PolicyNode, idx: tuple[int, ...]) -> PolicyNode:
+    node = root
+    for j in idx:
+        node = node.children[j]
+    return node
+
+
+#: operators that replace a condition by a constant, and the leaf status that constant gives
+_FORCED = {"condition_true": "SUCCESS", "condition_false": "FAILURE"}
+
+
+def _compiled_paths(policy: Policy) -> dict[tuple[str, tuple[int, ...]], list[str]]:
+    """Fault paths (as `sim.nodes` spells them) of every (tree, child-index) location."""
+    out: dict[tuple[str, tuple[int, ...]], list[str]] = {}
+
+    def visit(tree: str, node: PolicyNode, idx: tuple[int, ...], path: str) -> None:
+        out.setdefault((tree, idx), []).append(path)
+        if node.kind == "SubTree":
+            sub = node.param("ID") or ""
+            root = policy.trees[sub]
+            visit(sub, root, (), f"{path}/{root.label}")
+        for i, c in enumerate(node.children):
+            visit(tree, c, (*idx, i), f"{path}/{c.label}[{i}]")
+
+    main = policy.trees[policy.main]
+    visit(policy.main, main, (), f"{policy.main}/{main.label}")
+    return out
+
+
+def task_worlds(task: Task, catalog: Catalog, worlds: int) -> list[tuple[str, EnvSpec]]:
+    """(situation key, world) for every world of every situation of `task`."""
+    return [(traj.key, env) for traj in situations(task)
+            for env in situation_worlds(task, traj, catalog, limit=worlds)]
+
+
+def classify_task(task: Task | str, tasks_dir: str | Path | None = None,
+                  catalog: Catalog | None = None, *, worlds: int = DEFAULT_WORLDS) -> TaskMutants:
+    """Generate every first-order mutant of the task's correct BT and classify it."""
+    t = task if isinstance(task, Task) else load_task(task, tasks_dir)
+    cat = catalog if catalog is not None else load_catalog()
+    correct = load_policy(policy_path(t, "correct", tasks_dir), roles=t.roles, rooms=t.rooms)
+    muts = mutants(correct, roles=t.roles, rooms=t.rooms)
+    envs = task_worlds(t, cat, worlds)
+    prepared: list[tuple[str, World, Cond | None]] = []
+    for key, env in envs:
+        w = World.from_env(env, cat)
+        prepared.append((key, w, task_goal(t, w)))
+    runner = MutantRunner(correct, muts)
+    kills: list[dict[str, set[str]]] = [{} for _ in muts]
+    for key, world, goal in prepared:
+        for i, status in runner.run(world, goal).items():
+            kills[i].setdefault(key, set()).add(status)
+    report = TaskMutants(task=t.id, situations=len(situations(t)), worlds=len(envs))
+    for m, k in zip(muts, kills, strict=True):
+        report.outcomes.append(MutantOutcome(m.id, m.operator, m.fault_class, m.description,
+                                             {s: tuple(sorted(v)) for s, v in sorted(k.items())}))
+    for kind in FAULTY_KINDS:
+        faulty = load_policy(policy_path(t, kind, tasks_dir), roles=t.roles, rooms=t.rooms)
+        sig = _signature(faulty, prepared)
+        report.handwritten[kind] = _match(kind, sig, report.outcomes, correct, faulty)
+    return report
+
+
+def _signature(policy: Policy, prepared: list[tuple[str, World, Cond | None]]) -> Signature:
+    cp = CompiledPolicy(policy)
+    out: dict[str, set[str]] = {}
+    for key, world, goal in prepared:
+        status = cp.status(world.copy(), goal)
+        if status != "passed":
+            out.setdefault(key, set()).add(status)
+    return {s: tuple(sorted(v)) for s, v in sorted(out.items())}
+
+
+def _pairs(sig: Signature) -> set[tuple[str, str]]:
+    return {(s, k) for s, ks in sig.items() for k in ks}
+
+
+def _match(kind: str, sig: Signature, outcomes: list[MutantOutcome], correct: Policy,
+           faulty: Policy) -> HandwrittenMatch:
+    same = [o.id for o in outcomes if o.killed_by == sig]
+    edits = _distance(correct, faulty)
+    if same:
+        return HandwrittenMatch(kind, sig, same, edits=edits)
+    want = _pairs(sig)
+    best, best_j = None, 0.0
+    for o in outcomes:
+        got = _pairs(o.killed_by)
+        if not got:
+            continue
+        j = len(want & got) / len(want | got)
+        if j > best_j:
+            best, best_j = o.id, j
+    reason = (f"the hand-written BT differs from the correct one in {edits} places (a higher-order "
+              "fault); no single edit has the same failing situations and verdict kinds"
+              if edits > 1 else
+              "the hand-written edit is outside the operator families (see docs/faults.md)")
+    return HandwrittenMatch(kind, sig, [], best, best_j, edits, reason)
+
+
+def _distance(a: Policy, b: Policy) -> int:
+    """Number of differing places between two policies (a rough tree edit count)."""
+    total = 0
+    for tree in set(a.trees) | set(b.trees):
+        x, y = a.trees.get(tree), b.trees.get(tree)
+        total += _node_distance(x, y)
+    return total
+
+
+def _node_distance(x: PolicyNode | None, y: PolicyNode | None) -> int:
+    if x is None or y is None:
+        return 0 if x is y else 1
+    if x.kind != y.kind or x.params != y.params:
+        return 1
+    if len(x.children) != len(y.children):
+        # one child inserted or deleted counts once, plus differences among the aligned rest
+        sm = difflib.SequenceMatcher(a=[_key(c) for c in x.children], b=[_key(c) for c in y.children])
+        d = 0
+        for op, i1, i2, j1, j2 in sm.get_opcodes():
+            if op == "equal":
+                continue
+            if op == "replace" and i2 - i1 == j2 - j1:
+                d += sum(_node_distance(x.children[i], y.children[j])
+                         for i, j in zip(range(i1, i2), range(j1, j2), strict=True))
+            else:
+                d += max(i2 - i1, j2 - j1)
+        return d
+    return sum(_node_distance(c, d) for c, d in zip(x.children, y.children, strict=True))
+
+
+def _key(n: PolicyNode) -> str:
+    return f"{n.kind}{n.params}{len(n.children)}"
+
+
+def classify_tasks(ids: Iterable[str], tasks_dir: str | Path | None = None, *,
+                   worlds: int = DEFAULT_WORLDS) -> list[TaskMutants]:
+    cat = load_catalog()
+    return [classify_task(i, tasks_dir, cat, worlds=worlds) for i in ids]
+

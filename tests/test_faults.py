@@ -1,0 +1,116 @@
+"""Mutation operators, classification by simulation, pruning soundness and `tasks mutants`."""
+
+from __future__ import annotations
+
+import functools
+import json
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from logicenveval.benchmark import load_task, policy_path
+from logicenveval.cli import main
+from logicenveval.domain.catalog import load_catalog
+from logicenveval.faults.classify import MutantRunner, _distance, classify_task, task_worlds
+from logicenveval.faults.operators import FAULT_CLASSES, OPERATORS, _get, _replace, mutants
+from logicenveval.faults.score import clear_cache, scorer_for
+from logicenveval.sim.loader import load_policy, policy_from_xml, policy_to_xml
+from logicenveval.sim.simulator import CompiledPolicy, simulate, task_goal
+from logicenveval.sim.world import World
+
+
+def _correct(task_id: str):  # type: ignore[no-untyped-def]
+    task = load_task(task_id)
+    return task, load_policy(policy_path(task, "correct"), roles=task.roles, rooms=task.rooms)
+
+
+@functools.lru_cache(maxsize=4)
+def _prepared(task_id: str):  # type: ignore[no-untyped-def]
+    task, correct = _correct(task_id)
+    cat = load_catalog()
+    muts = mutants(correct, roles=task.roles, rooms=task.rooms)
+    return task, cat, muts, MutantRunner(correct, muts), task_worlds(task, cat, 3)
+
+
+@pytest.mark.parametrize("task_id", ["clean_living_room", "bedroom_bookshelf_sorting"])
+def test_mutants_are_valid_distinct_first_order_and_deterministic(task_id: str) -> None:
+    task, correct = _correct(task_id)
+    muts = mutants(correct, roles=task.roles, rooms=task.rooms)
+    assert [m.id for m in muts] == [m.id for m in mutants(correct, roles=task.roles, rooms=task.rooms)]
+    assert len({m.id for m in muts}) == len(muts)
+    assert len({m.xml for m in muts}) == len(muts) and policy_to_xml(correct) not in {m.xml for m in muts}
+    assert {m.fault_class for m in muts} == set(FAULT_CLASSES)
+    for m in muts:
+        assert m.fault_class == OPERATORS[m.operator]
+        reloaded = policy_from_xml(m.xml, "mutant", roles=task.roles, rooms=task.rooms)
+        assert policy_to_xml(reloaded) == m.xml  # valid BT.CPP v4 XML that round-trips
+        # first order: outside the edited node's parent, the mutant is the correct BT
+        tree, idx = m.location
+        assert {k: v for k, v in m.policy.trees.items() if k != tree} == {
+            k: v for k, v in correct.trees.items() if k != tree}
+        original = _get(correct.trees[tree], idx[:-1])
+        restored = _replace(m.policy.trees[tree], idx[:-1], lambda _, o=original: o)
+        assert restored == correct.trees[tree]
+
+
+def test_classification_reproduces_the_hand_written_faults() -> None:
+    report = classify_task("clean_living_room", worlds=2)
+    assert len(report.killable) >= 20
+    assert report.outcomes and all(o.killed_by or o.equivalent for o in report.outcomes)
+    for kind, match in report.handwritten.items():
+        assert match.reproduced_by, kind
+        assert match.edits == _distance(*[load_policy(policy_path(load_task("clean_living_room"), k))
+                                          for k in ("correct", kind)])
+        ids = {o.id: o for o in report.outcomes}
+        assert ids[match.reproduced_by[0]].killed_by == match.signature
+    # kill verdicts follow the taxonomy: deleting a Walk breaks a precondition
+    walks = [o for o in report.killable if o.operator == "delete_precondition"]
+    assert walks and all("precondition_violation" in ks for o in walks for ks in o.killed_by.values())
+
+
+@settings(max_examples=8, deadline=None)
+@given(st.sampled_from(["lamp_or_pillow_fetch", "kitchen_dish_cleanup"]), st.integers(0, 10_000))
+def test_pruned_runner_equals_simulating_every_mutant(task_id: str, pick: int) -> None:
+    """A mutant whose edited region the correct BT never ticks is judged without simulation;
+    this must give exactly the verdicts of simulating every mutant."""
+    task, cat, muts, runner, envs = _prepared(task_id)
+    _, env = envs[pick % len(envs)]
+    world = World.from_env(env, cat)
+    got = runner.run(world, task_goal(task, world))
+    want = {i: v.status for i, m in enumerate(muts)
+            if (v := simulate(m.policy, env, task, cat)).status != "passed"}
+    assert got == want
+
+
+def test_status_matches_run() -> None:
+    task, correct = _correct("clean_living_room")
+    cat = load_catalog()
+    cp = CompiledPolicy(correct)
+    for _, env in task_worlds(task, cat, 2):
+        w = World.from_env(env, cat)
+        goal = task_goal(task, w)
+        assert cp.status(w.copy(), goal) == cp.run(w.copy(), goal).status
+
+
+def test_scorer_cache_is_keyed_and_reused(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    task = load_task("lamp_or_pillow_fetch")
+    cat = load_catalog()
+    scorer = scorer_for(task, None, cat, cache_dir=tmp_path, worlds=1)
+    data = json.loads((tmp_path / "lamp_or_pillow_fetch.json").read_text())
+    assert data["killable"] == [m.id for m in scorer.killable] and len(data["key"]) == 64
+    (tmp_path / "lamp_or_pillow_fetch.json").write_text('{"key": "stale", "killable": []}')
+    clear_cache()
+    again = scorer_for(task, None, cat, cache_dir=tmp_path, worlds=1)  # stale cache: recomputed
+    assert [m.id for m in again.killable] == [m.id for m in scorer.killable]
+
+
+def test_tasks_mutants_cli(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["tasks", "mutants", "--tasks", "lamp_or_pillow_fetch", "--worlds", "2", "--json"]) == 0
+    (row,) = json.loads(capsys.readouterr().out)
+    assert row["task"] == "lamp_or_pillow_fetch"
+    assert row["killable"] + row["equivalent"] == row["mutants"] == len(row["mutant_list"])
+    assert all(h["reproduced_by"] for h in row["handwritten"].values())
+    assert main(["tasks", "mutants", "--tasks", "lamp_or_pillow_fetch", "--worlds", "2"]) == 0
+    assert "killable" in capsys.readouterr().out
+    assert main(["tasks", "mutants", "--tasks", "no_such_task"]) == 2
