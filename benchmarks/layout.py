@@ -9,6 +9,12 @@ for `normal` also the median of a naive monolithic single Z3 model of the same o
 no decomposition, no relaxation; timeout counts as the limit). Then which backend is faster on
 dense rooms, against the package default. Last line (default backend, normal rooms):
 `objects=30 median_s=<float> monolithic_median_s=<float> phypr=<float>`.
+
+`--objects N --dense` measures dense rooms instead: a growth table (one room per size of
+`--growth`, both backends, Z3 only up to `--z3-max` objects because it takes minutes beyond),
+the fitted growth exponent per backend (slope of log time over log objects), then `--rooms` dense
+rooms of N objects with the default backend. Last line:
+`objects=<N> dense_median_s=<float> phypr=<float>`.
 """
 
 from __future__ import annotations
@@ -147,14 +153,50 @@ def measure(n: int, rooms: int, factor: float, solver: Solver, catalog: Catalog
     return times, relax, passed, how
 
 
+def growth(args: argparse.Namespace, catalog: Catalog) -> None:
+    import os
+
+    print("load (1, 5, 15 min): " + " ".join(f"{x:.2f}" for x in os.getloadavg()))
+    sizes = [int(x) for x in args.growth.split(",")]
+    print(f"{'objects':>8} " + " ".join(f"{s + '_s':>10}" for s in SOLVERS) + "  (dense, 1 room each)")
+    fits: dict[str, list[tuple[float, float]]] = {s: [] for s in SOLVERS}
+    for n in sizes:
+        cols = []
+        for solver in SOLVERS:
+            if solver == "z3" and n > args.z3_max:
+                cols.append(f"{'skipped':>10}")
+                continue
+            times, _, passed, _ = measure(n, 1, DENSE, solver, catalog)
+            fits[solver].append((n, times[0]))
+            cols.append(f"{times[0]:>9.3f}{'' if all(passed) else '!'}")
+        print(f"{n:>8} " + " ".join(cols), flush=True)
+    for solver, pts in fits.items():
+        if len(pts) >= 2:
+            slope = float(np.polyfit(np.log([p[0] for p in pts]), np.log([p[1] for p in pts]), 1)[0])
+            print(f"growth exponent {solver}: {slope:.2f} over {[p[0] for p in pts]} objects")
+    times, relax, passed, how = measure(args.objects, args.rooms, DENSE, DEFAULT_SOLVER, catalog)
+    print(f"dense objects={args.objects} solver={DEFAULT_SOLVER} rooms={args.rooms} "
+          f"times_s={[round(t, 3) for t in times]} relaxations={statistics.mean(relax):.1f} ({how})")
+    print(f"objects={args.objects} dense_median_s={statistics.median(times):.3f} "
+          f"phypr={sum(passed) / len(passed):.2f}")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("--rooms", type=int, default=3, help="rooms per size")
     ap.add_argument("--sizes", default="10,20,30,40")
     ap.add_argument("--mono-timeout", type=float, default=20.0)
+    ap.add_argument("--objects", type=int, default=None, help="dense-room mode with this many objects")
+    ap.add_argument("--dense", action="store_true", help="with --objects: dense rooms (the only mode)")
+    ap.add_argument("--growth", default="20,40,60,80", help="sizes of the dense growth table")
+    ap.add_argument("--z3-max", type=int, default=40,
+                    help="largest dense room given to Z3 in the table (Z3 takes ~2 min at 60)")
     args = ap.parse_args()
     catalog = load_catalog()
     construct_environment(room_spec(10, 0), catalog=catalog, rng=np.random.default_rng(0), solver="cpsat")  # warm-up
+    if args.objects is not None:
+        growth(args, catalog)
+        return
     last = ""
     dense_wins: dict[str, int] = {s: 0 for s in SOLVERS}
     for setting, factor in (("normal", 1.0), ("dense", DENSE)):

@@ -2,6 +2,9 @@
 
     python benchmarks/trajectory_cover.py            # forests 6x4, 8x5, 10x6; last line = 8x5 figures
     python benchmarks/trajectory_cover.py --tasks    # the paper's Table on MTSA, per benchmark task
+    python benchmarks/trajectory_cover.py --forbidden 0.15 --subtasks 12 --paths 20
+        # random forests where each cross-subtask path pair is forbidden with that probability;
+        # last line `exact_median_s=... proven=<proven>/<draws with a cover> mtsa_s=...`
 
 Selectors: `product` (the Cartesian product, "W/O MTSA"), `mtsa` (paper Algorithm 1),
 `exhaustive` (the paper's exponential minimum-set-cover search, 10 s budget), `exact` (ours).
@@ -115,6 +118,55 @@ def run_forests(seed: int) -> int:
     return 0
 
 
+def random_pairs(rng: np.random.Generator, forest: list[list[DecisionPath]], share: float) -> PathConstraints:
+    """Each pair of paths of different subtasks is forbidden with probability `share`."""
+    keys = [[p.key for p in paths] for paths in forest]
+    pairs = [(a, b) for i in range(len(keys)) for j in range(i + 1, len(keys))
+             for a in keys[i] for b in keys[j]]
+    drawn = rng.random(len(pairs)) < share
+    return PathConstraints.of_pairs(p for p, keep in zip(pairs, drawn, strict=True) if keep)
+
+
+def run_forbidden(seed: int, share: float, subtasks: int, paths: int, draws: int, mtsa_budget: float) -> int:
+    import os
+
+    rng = np.random.default_rng(seed)
+    print(f"load={' '.join(f'{x:.2f}' for x in os.getloadavg())} seed={seed} draws={draws} "
+          f"forest={subtasks}x{paths} forbidden={share:.2f}")
+    times: list[float] = []
+    proven = covered = 0
+    first: tuple[list[list[DecisionPath]], PathConstraints] | None = None
+    for d in range(draws):
+        forest = random_forest(rng, subtasks, paths)
+        cons = random_pairs(rng, forest, share)
+        t0 = time.perf_counter()
+        try:
+            result = exact_cover(forest, cons)
+        except LogicEnvEvalError:
+            print(f"draw {d}: {len(cons.forbidden)} pairs, no cover (a path is in no admissible trajectory)")
+            continue
+        elapsed = time.perf_counter() - t0
+        out = list(result.trajectories)
+        assert not uncovered(out, forest) and all(cons.admits_trajectory(t) for t in out)
+        times.append(elapsed)
+        covered += 1
+        proven += result.optimal
+        first = first or (forest, cons)
+        print(f"draw {d}: {len(cons.forbidden)} pairs, size {len(out)}, lower bound {result.lower_bound}, "
+              f"proven {result.optimal}, {elapsed:.3f} s")
+    mtsa_txt = "n/a"
+    if first is not None:
+        t0 = time.perf_counter()
+        mt = mtsa_impl(first[0], first[1], time.monotonic() + mtsa_budget)
+        mtsa_s = time.perf_counter() - t0
+        state = f"gave up at its {mtsa_budget:.0f} s budget" if mt is None else f"{len(mt)} trajectories"
+        print(f"mtsa on draw 0 with a cover: {state} after {mtsa_s:.2f} s")
+        mtsa_txt = f"{mtsa_s:.2f}"
+    median = statistics.median(times) if times else float("nan")
+    print(f"exact_median_s={median:.3f} proven={proven}/{covered} mtsa_s={mtsa_txt}")
+    return 0 if proven == covered else 1
+
+
 def run_tasks(tasks_dir: Path) -> int:
     """Per task: sizes and runtimes of MTSA, the exhaustive search and exact (medians of repeats)."""
     ids = task_ids(tasks_dir)
@@ -168,7 +220,15 @@ def main() -> int:
     parser.add_argument("--tasks", action="store_true", help="print the per-task table instead")
     parser.add_argument("--tasks-dir", type=Path, default=ROOT / "benchmark_data" / "tasks")
     parser.add_argument("--seed", type=int, default=0)
+    parser.add_argument("--forbidden", type=float, default=None,
+                        help="share of cross-subtask path pairs forbidden (switches to that benchmark)")
+    parser.add_argument("--subtasks", type=int, default=12)
+    parser.add_argument("--paths", type=int, default=20)
+    parser.add_argument("--draws", type=int, default=10)
+    parser.add_argument("--mtsa-budget", type=float, default=MTSA_BUDGET_S)
     args = parser.parse_args()
+    if args.forbidden is not None:
+        return run_forbidden(args.seed, args.forbidden, args.subtasks, args.paths, args.draws, args.mtsa_budget)
     return run_tasks(args.tasks_dir) if args.tasks else run_forests(args.seed)
 
 

@@ -119,6 +119,41 @@ def test_compare_and_report(first_run: Path, capsys: pytest.CaptureFixture[str])
     assert "REGRESSION" in capsys.readouterr().out
 
 
+def test_report_only_reads(first_run: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """`report` rebuilds the leaderboards from the units: no simulation, physics or solving."""
+    import logicenveval.physics as physics
+    import logicenveval.physics.check as check
+    import logicenveval.scene.construct as construct
+    import logicenveval.sim.simulator as simulator
+
+    def forbidden(*args: object, **kwargs: object) -> None:
+        raise AssertionError("report must not recompute")
+
+    for module, name in ((simulator, "simulate"), (simulator.CompiledPolicy, "run"), (physics, "check_env"),
+                         (check, "check_env"), (construct, "construct_environment")):
+        monkeypatch.setattr(module, name, forbidden)
+    before = (first_run / "leaderboard.html").read_text()
+    svg = sorted((first_run / "renders").rglob("*.svg"))[0]
+    drawn = svg.read_text()
+    svg.unlink()  # renders are derived files: a lost one is re-drawn from stored data
+    assert main(["report", str(first_run)]) == 0
+    assert (first_run / "leaderboard.html").read_text() == before
+    assert svg.read_text() == drawn
+    assert "&#39;tick&#39;: 1, &#39;node&#39;" in before  # the recorded traces are shown
+
+
+def test_unit_with_a_lost_env_file_is_recomputed(first_run: Path, tmp_path: Path) -> None:
+    assert _run(tmp_path, "--generators", "cot") == 0
+    (run_dir,) = [p for p in tmp_path.iterdir() if p.is_dir()]
+    env = sorted((run_dir / "envs" / "cot" / "hallway_entry_tidy").glob("*.json"))[0]
+    kept = env.read_bytes()
+    env.unlink()  # what a power loss can do to a file written without fsync
+    before = {p: p.stat().st_mtime_ns for p in (run_dir / "units").rglob("*.json")}
+    assert _run(tmp_path, "--generators", "cot") == 0
+    changed = [p.name for p in before if p.stat().st_mtime_ns != before[p]]
+    assert changed == ["hallway_entry_tidy.json"] and env.read_bytes() == kept
+
+
 def test_unreachable_endpoint_is_one_error_line(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     code = main(["run", "--model", "openai:x", "--model-args", "base_url=http://127.0.0.1:9/v1",
                  "--tasks", "clean_living_room", "--output", str(tmp_path), "--quiet"])

@@ -111,6 +111,30 @@ def test_absence_and_certain_scene_facts() -> None:
     assert values == {"sponge_present": {"exists(sponge)", "not exists(sponge)"}}
 
 
+def test_analysis_is_memoised_per_brief_and_callers_get_copies() -> None:
+    from logicenveval.llm import analysis
+
+    b = brief("If there is a toy on the floor, put it into the toy chest.", {"toy": ["toy"]})
+    first = analyse(b, CATALOG)
+    first.factors[0].values.clear()  # a caller changing its copy does not change the next answer
+    first.factors.clear()
+    second = analyse(dict(b), CATALOG)
+    assert second.factors and second == analysis._analyse(b, CATALOG)
+    assert analyse(b, CATALOG) is not second
+
+
+def test_reply_schema_is_built_once_per_class() -> None:
+    from pydantic import BaseModel
+
+    from logicenveval.llm.ask import reply_schema
+
+    class Reply(BaseModel):
+        answer: str
+
+    assert reply_schema(Reply) is reply_schema(Reply)
+    assert reply_schema(Reply) == Reply.model_json_schema()
+
+
 # ----- phrasings added for issue 22 (generalisation to reworded descriptions) -----------------
 
 def _conditions(description: str, roles: dict[str, Any]) -> set[str]:

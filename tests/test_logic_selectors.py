@@ -225,6 +225,37 @@ def test_property_forbidden_pairs(case: tuple[Forest, PathConstraints]) -> None:
         assert len(result.trajectories) == _brute_optimum(forest, cons)
 
 
+def test_exact_clique_bound_when_conflicts_force_extra_rows() -> None:
+    """a0 and a1 exclude b0 and b1, so {a0, a1, b0, b1} pairwise exclude each other: the minimum
+    is 4 > max |paths| = 3 and the conflict-clique bound proves it without a search."""
+    paths = _paths([3, 3])
+    cons = PathConstraints.of_pairs([(f"s0:v0=p{a}", f"s1:v1=p{b}") for a in (0, 1) for b in (0, 1)])
+    result = exact_cover(paths, cons)
+    assert len(result.trajectories) == 4 and result.lower_bound == 4 and result.optimal
+    assert all(cons.admits_trajectory(t) for t in result.trajectories)
+    assert not uncovered(list(result.trajectories), paths)
+    assert _brute_optimum(paths, cons) == 4
+
+
+def test_exact_set_cover_search_improves_a_warm_start_and_proves_it() -> None:
+    from logicenveval.logic.exact import _pairs, _solve_set_cover
+
+    paths = _paths([3, 3])
+    cons = PathConstraints.of_pairs([(f"s0:v0=p{a}", f"s1:v1=p{b}") for a in (0, 1) for b in (0, 1)])
+    start = [(0, 2), (1, 2), (2, 0), (2, 1), (2, 2)]  # a valid cover with one row too many
+    rows, optimal = _solve_set_cover(paths, _pairs(paths, cons), start, 3, 0)
+    assert optimal and len(rows) == 4
+    assert {a for a, _ in rows} == {0, 1, 2} and {b for _, b in rows} == {0, 1, 2}
+
+
+def test_mtsa_deadline_holds_in_the_update_pass(monkeypatch: pytest.MonkeyPatch) -> None:
+    import logicenveval.logic.mtsa as mtsa
+
+    clock = iter([0.0, 100.0])  # the scan's check sees time 0, the update pass's check time 100
+    monkeypatch.setattr(mtsa.time, "monotonic", lambda: next(clock))
+    assert mtsa_impl(_paths([3, 3]), PathConstraints(), deadline=50.0) is None
+
+
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(forests_with_pairs())
 def test_property_exhaustive_search_is_a_minimum_cover(case: tuple[Forest, PathConstraints]) -> None:

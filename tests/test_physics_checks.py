@@ -256,3 +256,21 @@ def test_check_env_never_raises_on_odd_numbers(data_: st.DataObject) -> None:
     report = check_env(env)
     assert isinstance(report.passed, bool)
     assert render_svg(env, report).startswith("<svg")
+
+
+def test_rect_pairs_matches_the_all_pairs_test() -> None:
+    import numpy as np
+
+    from logicenveval.physics.geometry import rect_pairs
+
+    rng = np.random.default_rng(3)
+    for _ in range(50):
+        def rects(n: int) -> list[tuple[float, float, float, float]]:
+            lo = rng.uniform(0, 10, size=(n, 2))
+            hi = lo + rng.uniform(0, 3, size=(n, 2))
+            return [(float(a[0]), float(a[1]), float(b[0]), float(b[1])) for a, b in zip(lo, hi, strict=True)]
+        a, b = rects(int(rng.integers(0, 12))), rects(int(rng.integers(0, 5)))
+        a.append((float("nan"),) * 4)
+        brute = sorted((i, j) for i, r in enumerate(a) for j, q in enumerate(b)
+                       if r[0] <= q[2] and q[0] <= r[2] and r[1] <= q[3] and q[1] <= r[3])
+        assert rect_pairs(a, b) == brute

@@ -84,3 +84,18 @@ def test_compare_directions_and_tolerance() -> None:
     assert regs == {"LogCov", "Redundancy"}
     timing = {d.metric for d in compare_results(base, _results(0.9, 50.0, 1.0), judge_timing=True) if d.regression}
     assert timing == {"ST (ms)"}
+
+
+def test_files_intact_checks_the_files_a_unit_wrote(tmp_path: Path) -> None:
+    from logicenveval.runner.store import text_digest
+
+    store = RunStore(tmp_path)
+    atomic_write_text(tmp_path / "envs" / "g" / "t1" / "e0.json", "{}\n", durable=False)
+    record = _record().model_copy(update={"files": {"envs/g/t1/e0.json": text_digest("{}\n")}})
+    store.save(record)
+    loaded = store.load("g", "t1")
+    assert loaded == record and store.files_intact(loaded)
+    (tmp_path / "envs" / "g" / "t1" / "e0.json").write_text("{ }\n")
+    assert not store.files_intact(loaded)
+    (tmp_path / "envs" / "g" / "t1" / "e0.json").unlink()
+    assert not store.files_intact(loaded)

@@ -239,3 +239,29 @@ def test_every_relation_encoding_means_the_same_in_every_orientation(solver: str
         assert _on_front_axis(b, a, 10**6)
     else:  # side_of: on b's left-right axis, i.e. a front axis of b turned by 90 degrees either way
         assert any(_on_front_axis(a, (*b[:4], (b[4] + t) % 4), near_gap) for t in (1, 3))
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_large_floors_make_walkways_exclusive_in_both_backends(seed: int) -> None:
+    """From EXCLUSIVE_WALKWAYS_FROM boxes on, a walkway strip is also clear of the other strips
+    and of door squares (CP-SAT packs box + strip as one rectangle)."""
+    from logicenveval.scene.layout import EXCLUSIVE_WALKWAYS_FROM
+
+    rng = np.random.default_rng(seed)
+    frame, walkway = (70, 70), 9
+    boxes = [Box(f"b{k}", (0.5, 0.8, 0.5), (int(rng.integers(3, 9)), int(rng.integers(3, 9))), task=k % 3 == 0)
+             for k in range(EXCLUSIVE_WALKWAYS_FROM + 2)]
+    door: Obstacle = (30, 0, 42, 12)
+    feasible = {}
+    for name in SOLVERS:
+        placed, _ = backend(name).pack(frame, boxes, seed=seed, timeout_s=30.0, obstacles=[door],
+                                       walkway=walkway, grid=0.05)
+        feasible[name] = bool(placed)
+        ext = {b.id: _extent(b, placed[b.id], 0.05) for b in boxes if b.id in placed}
+        strips = {b.id: _strip(ext[b.id], placed[b.id].o, walkway) for b in boxes if b.task and b.id in placed}
+        for bid, s in strips.items():
+            assert s[0] >= 0 and s[1] >= 0 and s[2] <= frame[0] and s[3] <= frame[1], (name, bid)
+            assert not _meet(s, door), (name, bid)
+            assert not any(_meet(s, r) for c, r in ext.items() if c != bid), (name, bid)
+            assert not any(_meet(s, t) for c, t in strips.items() if c != bid), (name, bid)
+    assert feasible == {"z3": True, "cpsat": True}

@@ -13,9 +13,10 @@ uncertain variables with exclusive, exhaustive values — grouped into independe
 
 from __future__ import annotations
 
+import json
 import re
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from logicenveval.domain.catalog import Catalog, load_catalog
@@ -626,9 +627,42 @@ def _question(subject: str, kind: str, key: str, targets: list[str]) -> str:
     return f"Where is the {s}: " + ", ".join(t.replace("_", " ") for t in targets) + " or elsewhere?"
 
 
+#: brief (canonical JSON) -> (catalog, analysis); generators ask about one brief many times
+_MEMO: dict[str, tuple[Catalog, TaskAnalysis]] = {}
+
+
 def analyse(brief: Mapping[str, Any], catalog: Catalog | None = None) -> TaskAnalysis:
-    """Analyse a task brief (`id`, `description`, `rooms`, `roles`)."""
-    lex = Lexicon.build(brief, catalog or load_catalog())
+    """Analyse a task brief (`id`, `description`, `rooms`, `roles`).
+
+    A pure function of the brief and the catalog, so it is memoised per brief; callers get
+    their own copy and may change it.
+    """
+    catalog = catalog or load_catalog()
+    key = json.dumps(brief, sort_keys=True, default=str)
+    hit = _MEMO.get(key)
+    if hit is None or hit[0] is not catalog:
+        if len(_MEMO) >= 64:
+            _MEMO.clear()
+        hit = _MEMO[key] = (catalog, _analyse(brief, catalog))
+    return _copy(hit[1])
+
+
+def _copy(a: TaskAnalysis) -> TaskAnalysis:
+    """A copy whose containers are the caller's own (clauses and tuples are immutable)."""
+    return TaskAnalysis(
+        sentences=list(a.sentences),
+        clauses=list(a.clauses),
+        factors=[replace(f, values=dict(f.values), consequences=list(f.consequences), roles=set(f.roles),
+                         context=list(f.context), raw_context=list(f.raw_context),
+                         places=set(f.places)) for f in a.factors],
+        groups=[list(g) for g in a.groups],
+        group_roles=[set(r) for r in a.group_roles],
+        other_roles=set(a.other_roles),
+    )
+
+
+def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
+    lex = Lexicon.build(brief, catalog)
     reader = _Reader(lex)
     sentences = _sentences(str(brief["description"]))
     clauses: list[Clause] = []

@@ -31,6 +31,15 @@ def _jinja() -> Environment:
                        keep_trailing_newline=False, autoescape=False)
 
 
+@lru_cache(maxsize=256)
+def reply_schema(reply_model: type[BaseModel]) -> dict[str, Any]:
+    """The JSON schema of a reply class, built once per class (pydantic rebuilds it per call).
+
+    The dict is shared by every request of that class: read it, never change it.
+    """
+    return reply_model.model_json_schema()
+
+
 def render_messages(kind: str, payload: dict[str, Any], schema: dict[str, Any]) -> list[dict[str, str]]:
     """System + user messages of a request kind from `prompts/<kind>.j2`."""
     try:
@@ -72,7 +81,7 @@ def ask(
     times with the validation error appended; then `ModelReplyError` names the kind, the model
     and the first invalid field, and the raw replies are saved under `run_dir/llm_errors/`.
     """
-    schema = reply_model.model_json_schema()
+    schema = reply_schema(reply_model)
     messages = render_messages(kind, payload, schema)
     replies: list[str] = []
     problem = ""

@@ -9,6 +9,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
+from functools import lru_cache
 from typing import Any
 
 from logicenveval.domain.catalog import Catalog
@@ -23,6 +24,7 @@ COLOR_WORDS = frozenset(
 _VERB_IES = frozenset({"lies", "dies", "ties"})
 
 
+@lru_cache(maxsize=16384)
 def singular(word: str) -> str:
     """Crude English singular, good enough for household nouns (boxes, dishes, shelves, toys)."""
     if len(word) <= 3 or word.endswith("ss"):

@@ -17,6 +17,10 @@ from logicenveval.logic.constraints import PathConstraints
 from logicenveval.logic.selectors import PathsPerSubtask, check_inputs, uncovered
 from logicenveval.model.tree import DecisionPath, Trajectory
 
+#: the deadline is checked every this many trajectories, in the scan and in the update pass
+#: (~1 ms of work with constraints to check, so the budget holds in every phase)
+_CHECK_EVERY = 1024
+
 
 def mtsa_impl(
     paths_per_subtask: PathsPerSubtask,
@@ -37,7 +41,7 @@ def mtsa_impl(
     selected: list[tuple[int, ...]] = []
     candidates: list[tuple[int, ...]] = []
     for n, combo in enumerate(itertools.product(*ids)):
-        if deadline is not None and n % 65536 == 0 and time.monotonic() > deadline:
+        if deadline is not None and n % _CHECK_EVERY == 0 and time.monotonic() > deadline:
             return None
         if check and not constraints.admits([flat[i] for i in combo]):
             continue
@@ -46,7 +50,9 @@ def mtsa_impl(
             pool.update(combo)
         elif not pool.issuperset(combo):
             candidates.append(combo)
-    for combo in candidates:  # Update(T_min, T_cand, C_pool)
+    for n, combo in enumerate(candidates):  # Update(T_min, T_cand, C_pool)
+        if deadline is not None and n % _CHECK_EVERY == 0 and time.monotonic() > deadline:
+            return None
         if not pool.issuperset(combo):
             selected.append(combo)
             pool.update(combo)

@@ -52,6 +52,27 @@ class EnvSample(BaseModel):
     sim_ticks: dict[str, int] = Field(default_factory=dict)
 
 
+class VerdictTrace(BaseModel):
+    """One BT's run in one environment as the report shows it: verdict, message, tick trace."""
+
+    model_config = ConfigDict(frozen=True)
+    status: str
+    message: str = ""
+    trace: list[str] = Field(default_factory=list)
+
+
+class EnvDetail(BaseModel):
+    """What the reports show about one environment beyond its metrics, recorded when the unit
+    evaluated it, so that `report` reads instead of re-running physics and simulation."""
+
+    model_config = ConfigDict(frozen=True)
+    env_id: str
+    #: the top-down render, relative to the run folder (a derived file, re-drawn when missing)
+    render: str | None = None
+    #: policy kind -> a traced re-run of the episode whose verdict is in `EnvSample.verdicts`
+    traces: dict[str, VerdictTrace] = Field(default_factory=dict)
+
+
 class UnitRecord(BaseModel):
     """The committed result of one (generator, task) unit of a run."""
 
@@ -67,3 +88,7 @@ class UnitRecord(BaseModel):
     mutants: dict[str, str] = Field(default_factory=dict)
     #: LLM counters of the unit (requests, cache hits/misses, retries, re-asks, tokens, latency)
     llm: dict[str, float] = Field(default_factory=dict)
+    #: one per sample, same order: what the drill-down of `leaderboard.html` shows
+    details: list[EnvDetail] = Field(default_factory=list)
+    #: run-relative path -> SHA-256 of each file the unit wrote that only generation can rebuild
+    files: dict[str, str] = Field(default_factory=dict)

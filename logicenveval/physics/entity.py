@@ -16,6 +16,7 @@ from logicenveval.physics.geometry import (
     finite,
     mesh_path,
     penetration_depth,
+    rect_pairs,
 )
 from logicenveval.physics.report import PhysicsFailure, Tolerances
 
@@ -132,6 +133,16 @@ def swing_areas(env: EnvSpec) -> list[tuple[str, Polygon]]:
     return out
 
 
+def _door_candidates(bodies: list[Body], doors: list[tuple[str, Polygon]]) -> dict[int, list[int]]:
+    """Body index -> the doors (in order) whose swing square's bounds meet its footprint's: the
+    broad phase of the door test (a body far from every door costs no polygon intersection)."""
+    pairs = rect_pairs([b.footprint.bounds for b in bodies], [area.bounds for _, area in doors])
+    out: dict[int, list[int]] = {}
+    for i, d in pairs:
+        out.setdefault(i, []).append(d)
+    return out
+
+
 def _catalog_size(b: Body, catalog: Catalog, tol: Tolerances) -> list[PhysicsFailure]:
     cat = catalog.get(b.obj.category)
     if cat is None:
@@ -164,7 +175,8 @@ def check_entities(env: EnvSpec, bodies: dict[str, Body], polys: dict[str, Polyg
                                measured=float(min(o.size)), tolerance=0.0))
     doors = swing_areas(env)
     grown = {rid: poly.buffer(tol.room_margin) for rid, poly in polys.items()}
-    for b in bodies.values():
+    blocking = _door_candidates(list(bodies.values()), doors)
+    for k, b in enumerate(bodies.values()):
         fails += _catalog_size(b, catalog, tol)
         fails += _support(b, env, bodies, polys, tol)
         if b.top > env.wall_height + tol.support_gap:
@@ -176,7 +188,7 @@ def check_entities(env: EnvSpec, bodies: dict[str, Body], polys: dict[str, Polyg
             fails.append(_fail("outside_room", f"{b.id} footprint leaves room {b.obj.room} by {out:.3f} m",
                                [b.id], rooms=[b.obj.room], measured=out, tolerance=tol.room_margin))
         if b.obj.support == "floor" and b.obj.container is None:
-            for door_id, area in doors:
+            for door_id, area in (doors[d] for d in blocking.get(k, ())):
                 inter = float(area.intersection(b.footprint).area)
                 if inter > tol.room_overlap_area:
                     fails.append(_fail("blocks_door", f"{b.id} stands in the swing area of door {door_id} "

@@ -15,7 +15,6 @@ from pathlib import Path
 
 import fcl
 import numpy as np
-import trimesh
 from shapely.geometry import LineString, Polygon
 from shapely.geometry.base import BaseGeometry
 
@@ -91,6 +90,8 @@ def _mesh_vertices(obj: EnvObject, base_dir: Path | None) -> np.ndarray | None:
     path = mesh_path(obj, base_dir)
     if path is None or not path.is_file():
         return None  # reported as `mesh_not_found` by the entity check; the box stands in
+    import trimesh  # only for mesh files: importing it (and SciPy) costs a second per process
+
     mesh = trimesh.load(str(path), force="mesh")
     assert isinstance(mesh, trimesh.Trimesh)
     verts = np.asarray(mesh.vertices, dtype=np.float64)
@@ -110,6 +111,8 @@ def build_body(obj: EnvObject, mesh_dir: Path | None = None) -> Body:
         local = _SIGNS * half
         geom: fcl.CollisionGeometry = fcl.Box(*(2.0 * half))
     else:
+        import trimesh
+
         local = verts
         hull = trimesh.Trimesh(vertices=verts).convex_hull
         model = fcl.BVHModel()
@@ -165,6 +168,29 @@ def candidate_pairs(bodies: list[Body], margin: float = 0.0) -> list[tuple[int, 
     return sorted(pairs)
 
 
+def rect_pairs(a: list[tuple[float, float, float, float]],
+               b: list[tuple[float, float, float, float]]) -> list[tuple[int, int]]:
+    """(i, j) with rectangle a[i] meeting b[j] (x0, z0, x1, z1): one sort-and-sweep over x of both
+    sets, an interval test on z. Used to pair door squares with object footprints; a rectangle with
+    a non-finite bound (an empty shape) meets nothing."""
+    events = sorted([(r[0], 0, i) for i, r in enumerate(a) if finite(*r)]
+                    + [(r[0], 1, j) for j, r in enumerate(b) if finite(*r)])
+    active: tuple[list[int], list[int]] = ([], [])
+    rects = (a, b)
+    pairs: list[tuple[int, int]] = []
+    for x0, side, k in events:
+        other = 1 - side
+        active_other = [m for m in active[other] if rects[other][m][2] >= x0]
+        active[other][:] = active_other
+        r = rects[side][k]
+        for m in active_other:
+            q = rects[other][m]
+            if r[1] <= q[3] and q[1] <= r[3]:
+                pairs.append((k, m) if side == 0 else (m, k))
+        active[side].append(k)
+    return sorted(pairs)
+
+
 def point_to_boundary(geom: BaseGeometry, poly: Polygon) -> float:
     return float(poly.exterior.distance(geom))
 
@@ -179,6 +205,21 @@ def has_geometry(obj: EnvObject) -> bool:
             and min(obj.size) > 0)
 
 
+#: the last bodies built and what they were built from: checking and then rendering one
+#: environment builds them once
+_LAST: list[tuple[Path | None, list[EnvObject], dict[str, Body]]] = []
+
+
+def clear_body_cache() -> None:
+    """Forget the memoised bodies (benchmarks time cold checks of one environment)."""
+    _LAST.clear()
+
+
 def build_bodies(env: EnvSpec, mesh_dir: Path | None = None) -> dict[str, Body]:
-    """Bodies of all objects that have geometry, keyed by id, in EnvSpec order."""
-    return {o.id: build_body(o, mesh_dir) for o in env.objects if has_geometry(o)}
+    """Bodies of all objects that have geometry, keyed by id, in EnvSpec order (read-only)."""
+    objects = [o for o in env.objects if has_geometry(o)]
+    if _LAST and _LAST[0][0] == mesh_dir and _LAST[0][1] == objects:
+        return _LAST[0][2]
+    bodies = {o.id: build_body(o, mesh_dir) for o in objects}
+    _LAST[:] = [(mesh_dir, objects, bodies)]
+    return bodies

@@ -1,20 +1,27 @@
 """`leaderboard.md` and a static, self-contained `leaderboard.html` for a run folder.
 
 The HTML drill-down shows, per generator and task, every environment's top-down render, the GT
-decision paths it covers, its physics failures and each BT's verdict with the tick trace (traces
-are recomputed from the stored EnvSpecs, so they never bloat `samples.jsonl`).
+decision paths it covers, its physics failures and each BT's verdict with the tick trace. All of
+it was recorded by the units when they evaluated the environments (`UnitRecord.details`), so a
+report only reads: no physics check, no simulation, no solving. A render file that is missing
+(renders are not fsynced) is re-drawn from the stored environment and stored physics failures.
 """
 
 from __future__ import annotations
 
 import json
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
 from jinja2 import Environment, PackageLoader, select_autoescape
 
+from logicenveval.metrics.records import EnvDetail, UnitRecord
+from logicenveval.model.task import POLICY_KINDS
 from logicenveval.reporting.tables import COLUMNS, LEGEND, markdown, method_label, rows
-from logicenveval.runner.store import atomic_write_text
+from logicenveval.runner.store import RunStore, atomic_write_text
+
+_NOT_RECORDED = "no trace recorded (the unit was written by a version that did not store traces)"
 
 
 def _samples(run_dir: Path) -> list[dict[str, Any]]:
@@ -24,66 +31,93 @@ def _samples(run_dir: Path) -> list[dict[str, Any]]:
     return [json.loads(line) for line in path.read_text(encoding="utf-8").splitlines() if line.strip()]
 
 
-def _drilldown(run_dir: Path, results: dict[str, Any], tasks_dir: str | None) -> list[dict[str, Any]]:
-    from logicenveval.benchmark import load_task, policy_path
-    from logicenveval.domain.catalog import load_catalog
-    from logicenveval.domain.roles import bind_roles
+def _redraw(run_dir: Path, gen: str, task_id: str, sample: dict[str, Any], rel: str) -> str | None:
+    """Draw a missing render from the stored environment and its stored physics failures."""
     from logicenveval.envfiles import load_env
     from logicenveval.errors import LogicEnvEvalError
-    from logicenveval.model.task import POLICY_KINDS
-    from logicenveval.physics import check_env
     from logicenveval.physics.render import render_svg
-    from logicenveval.sim.loader import load_policy
-    from logicenveval.sim.simulator import simulate
+    from logicenveval.physics.report import DimensionReport, PhysicsFailure, PhysicsReport
 
-    catalog = load_catalog()
-    samples = _samples(run_dir)
+    env_path = run_dir / "envs" / gen / task_id / f"{sample['env_id']}.json"
+    if not env_path.exists():
+        return None
+    try:
+        env = load_env(env_path)
+    except LogicEnvEvalError:
+        return None
+    physics = sample["physics"]
+    failures = [PhysicsFailure.model_validate(f) for f in physics.get("failures", [])]
+    extended = [PhysicsFailure.model_validate(f) for f in physics.get("extended_failures", [])]
+    report = PhysicsReport(**{d: DimensionReport.of([f for f in failures if f.dimension == d])
+                              for d in ("floor_plan", "entity", "relation")},
+                           extended=DimensionReport.of(extended))
+    atomic_write_text(run_dir / rel, render_svg(env, report), durable=False)
+    return rel
+
+
+def _entry(run_dir: Path, gen: str, task_id: str, sample: dict[str, Any],
+           detail: EnvDetail | None) -> dict[str, Any]:
+    rel = detail.render if detail is not None and detail.render else \
+        (Path("renders") / gen / task_id / f"{sample['env_id']}.svg").as_posix()
+    render = rel if (run_dir / rel).exists() else _redraw(run_dir, gen, task_id, sample, rel)
+    if detail is not None:  # in policy-kind order (unit files store keys sorted)
+        order = {k: i for i, k in enumerate(POLICY_KINDS)}
+        kinds = sorted(detail.traces, key=lambda k: (order.get(k, len(order)), k))
+        traces = {k: detail.traces[k].model_dump(mode="json") for k in kinds}
+    else:
+        traces = {k: {"status": v, "message": _NOT_RECORDED, "trace": []}
+                  for k, v in sample.get("verdicts", {}).items()}
+    return {"sample": sample, "render": render, "traces": traces}
+
+
+def _drilldown(run_dir: Path, results: dict[str, Any],
+               records: Sequence[UnitRecord] | None) -> list[dict[str, Any]]:
+    """Per generator and task, the stored environments with their recorded details."""
+    units: dict[tuple[str, str], UnitRecord] = {(r.generator, r.task_id): r for r in records or ()}
+    store = RunStore(run_dir)
+    loose: dict[tuple[str, str], list[dict[str, Any]]] | None = None
     out: list[dict[str, Any]] = []
     for gen in results["results"]:
         gen_block: dict[str, Any] = {"name": gen, "tasks": []}
         for task_id in results.get("tasks", []):
-            try:
-                task = load_task(task_id, tasks_dir)
-                policies = {k: load_policy(policy_path(task, k, tasks_dir)) for k in POLICY_KINDS}
-            except LogicEnvEvalError:
-                continue
+            unit = units.get((gen, task_id)) or store.load(gen, task_id)
             envs = []
-            for s in (x for x in samples if x["generator"] == gen and x["task_id"] == task_id):
-                env_path = run_dir / "envs" / gen / task_id / f"{s['env_id']}.json"
-                entry: dict[str, Any] = {"sample": s, "render": None, "traces": {}}
-                if env_path.exists():
-                    env = load_env(env_path)
-                    env = bind_roles(env, task.roles, catalog).apply(env)  # as it was judged
-                    svg = render_svg(env, check_env(env, catalog))
-                    rel = Path("renders") / gen / task_id / f"{s['env_id']}.svg"
-                    atomic_write_text(run_dir / rel, svg)
-                    entry["render"] = rel.as_posix()
-                    for kind, policy in policies.items():
-                        verdict = simulate(policy, env, task, catalog, trace=True)
-                        entry["traces"][kind] = {"status": verdict.status, "message": verdict.message,
-                                                 "trace": [str(t) for t in verdict.trace]}
-                envs.append(entry)
+            if unit is not None:
+                by_id = {d.env_id: d for d in unit.details}
+                for s in unit.samples:
+                    envs.append(_entry(run_dir, gen, task_id, s.model_dump(mode="json"),
+                                       by_id.get(s.env_id)))
+            else:  # a folder without units (e.g. a published reference run): samples only
+                if loose is None:
+                    loose = {}
+                    for x in _samples(run_dir):
+                        loose.setdefault((x["generator"], x["task_id"]), []).append(x)
+                envs = [_entry(run_dir, gen, task_id, x, None) for x in loose.get((gen, task_id), [])]
             per_task = results.get("per_task", {}).get(gen, {}).get(task_id, {})
             gen_block["tasks"].append({"id": task_id, "metrics": per_task, "envs": envs})
         out.append(gen_block)
     return out
 
 
-def render_html(run_dir: Path, results: dict[str, Any]) -> str:
+def render_html(run_dir: Path, results: dict[str, Any],
+                records: Sequence[UnitRecord] | None = None) -> str:
     env = Environment(loader=PackageLoader("logicenveval", "reporting/templates"),
                       autoescape=select_autoescape(["html", "j2"]))
     template = env.get_template("leaderboard.html.j2")
-    tasks_dir = results.get("config", {}).get("tasks_dir")
     return template.render(
         results=results,
         headers=["Method"] + [h + (" (%)" if pct else "") for h, _, pct in COLUMNS],
         rows=rows(results),
         legend=LEGEND,
-        generators=_drilldown(run_dir, results, tasks_dir),
+        generators=_drilldown(run_dir, results, records),
         label=lambda g: method_label(g, results.get("model", "")),
     )
 
 
-def write_leaderboards(run_dir: Path, results: dict[str, Any]) -> None:
-    atomic_write_text(run_dir / "leaderboard.md", markdown(results))
-    atomic_write_text(run_dir / "leaderboard.html", render_html(run_dir, results))
+def write_leaderboards(run_dir: Path, results: dict[str, Any],
+                       records: Sequence[UnitRecord] | None = None) -> None:
+    """Both leaderboards; `records` are the run's units when the caller holds them already
+    (otherwise they are read from `units/`)."""
+    atomic_write_text(run_dir / "leaderboard.md", markdown(results), durable=False)
+    atomic_write_text(run_dir / "leaderboard.html", render_html(run_dir, results, records),
+                      durable=False)

@@ -18,7 +18,7 @@ from logicenveval.runner.config import RunConfig
 from logicenveval.runner.executors import make_executor
 from logicenveval.runner.results import build_results, write_outputs
 from logicenveval.runner.store import RunStore
-from logicenveval.runner.unit import UnitSpec, run_unit
+from logicenveval.runner.unit import UnitSpec, chunk_units, run_units
 
 
 @dataclass(frozen=True)
@@ -70,6 +70,10 @@ def _preflight(config: RunConfig, run_dir: Path) -> dict[str, Any]:
 
 
 def run(config: RunConfig, *, console: Console | None = None, show_progress: bool = True) -> RunOutcome:
+    executor = make_executor(config.executor, config.workers)
+    warm_up = getattr(executor, "warm_up", None)
+    if callable(warm_up):
+        warm_up()  # workers' imports overlap the checks, preflight and resume scan below
     refs = resolve_generators(config)
     ids = _check(config)
     tasks = load_tasks(config.tasks_dir, ids)
@@ -88,14 +92,13 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
     pending: list[UnitSpec] = []
     for spec in specs:
         stored = store.load(spec.generator, spec.task_id)
-        if stored is None:
+        if stored is None or not store.files_intact(stored):
             pending.append(spec)
         else:
             records[(spec.generator, spec.task_id)] = stored
     reused = len(records)
     start = time.perf_counter()
     console = console or Console(stderr=True)
-    executor = make_executor(config.executor, config.workers)
     with Progress(
         TextColumn("[bold]{task.description:<14}"), BarColumn(), MofNCompleteColumn(),
         TimeRemainingColumn(), console=console, disable=not show_progress, transient=False,
@@ -105,15 +108,18 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
                                       completed=sum(1 for (gg, _) in records if gg == r.name))
             for r in refs
         }
-        for spec, record in executor.map_unordered(run_unit, pending):
-            store.save(record)
-            records[(spec.generator, spec.task_id)] = record
-            progress.advance(bars[spec.generator])
+        for _, chunk in executor.map_unordered(run_units, chunk_units(pending, config.workers)):
+            for record in chunk:
+                store.save(record)
+                records[(record.generator, record.task_id)] = record
+                progress.advance(bars[record.generator])
     ordered = [records[(s.generator, s.task_id)] for s in specs]
     results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start,
                             generators=[r.name for r in refs])
-    write_outputs(run_dir, results, ordered)
     from logicenveval.reporting.leaderboard import write_leaderboards
 
-    write_leaderboards(run_dir, results)
+    report_start = time.perf_counter()
+    write_leaderboards(run_dir, results, ordered)
+    results["timing"]["report_seconds"] = round(time.perf_counter() - report_start, 3)
+    write_outputs(run_dir, results, ordered)
     return RunOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused)

@@ -29,11 +29,11 @@ from logicenveval.domain.catalog import load_catalog
 from logicenveval.envfiles import env_to_json, load_env
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.base import GenerationFailure
-from logicenveval.metrics.records import UnitRecord
+from logicenveval.metrics.records import EnvDetail, UnitRecord
 from logicenveval.model.task import POLICY_KINDS
 from logicenveval.runner.executors import make_executor
 from logicenveval.runner.results import build_results, write_outputs
-from logicenveval.runner.store import RunStore, atomic_write_text
+from logicenveval.runner.store import RunStore, atomic_write_text, text_digest
 
 #: artefacts a run writes next to its environments; not EnvSpecs, so not scored
 ARTEFACTS = frozenset({"plan.json"})
@@ -130,16 +130,18 @@ def env_files(folder: Path) -> list[Path]:
 def score_unit(spec: ScoreUnitSpec) -> UnitRecord:
     """Judge every EnvSpec of one task folder; a bad file is a failure, never an exception."""
     from logicenveval.faults.score import scorer_for
-    from logicenveval.runner.evaluation import evaluate_env, with_bound_roles
+    from logicenveval.physics.render import render_svg
+    from logicenveval.runner.evaluation import evaluate_env
     from logicenveval.sim.loader import load_policy
 
     task = load_task(spec.task_id, spec.tasks_dir)
     catalog = load_catalog()
     policies = {k: load_policy(policy_path(task, k, spec.tasks_dir)) for k in POLICY_KINDS}
     folder = Path(spec.folder)
-    out_dir = Path(spec.run_dir) / "envs" / spec.generator / spec.task_id
     failures: list[GenerationFailure] = []
     samples = []
+    details: list[EnvDetail] = []
+    files: dict[str, str] = {}
     seen: set[str] = set()
     # mutation scoring exactly as `run_unit` does it (faudr_mut)
     scorer = scorer_for(task, spec.tasks_dir, catalog, cache_dir=Path(spec.run_dir) / "work" / "mutants")
@@ -154,10 +156,11 @@ def score_unit(spec: ScoreUnitSpec) -> UnitRecord:
                 raise ConfigError(f"env_id {env.env_id!r} is used by another file of this task",
                                   file=str(path), field="env_id", hint="give every environment its own env_id")
             seen.add(env.env_id)
-            sample = evaluate_env(spec.generator, task, env, policies, catalog)
+            done = evaluate_env(spec.generator, task, env, policies, catalog)
+            sample = done.sample
             if sample.well_formed and sample.verdicts.get("correct") == "passed":
                 start = time.perf_counter()
-                killed = scorer.killed(with_bound_roles(env, task, catalog)[0], task, catalog)
+                killed = scorer.killed(done.env, task, catalog)
                 ms = (time.perf_counter() - start) * 1000.0
                 sample = sample.model_copy(update={"killed_mutants": killed,
                                                    "sim_ms": {**sample.sim_ms, "mutants": ms}})
@@ -169,14 +172,22 @@ def score_unit(spec: ScoreUnitSpec) -> UnitRecord:
             failures.append(GenerationFailure(stage="evaluate", message=f"{path}: internal error: {why}",
                                               env_id=path.stem))
             continue
-        atomic_write_text(out_dir / f"{env.env_id}.json", env_to_json(env))
+        text = env_to_json(env)  # the file as given: a resumed run re-reads it, not the bound copy
+        rel = (Path("envs") / spec.generator / spec.task_id / f"{env.env_id}.json").as_posix()
+        atomic_write_text(Path(spec.run_dir) / rel, text, durable=False)
+        files[rel] = text_digest(text)
+        render = (Path("renders") / spec.generator / spec.task_id / f"{env.env_id}.svg").as_posix()
+        atomic_write_text(Path(spec.run_dir) / render, render_svg(done.env, done.physics),
+                          durable=False)
         samples.append(sample)
+        details.append(EnvDetail(env_id=env.env_id, render=render, traces=done.traces))
     error = None
     if not samples:
         error = (f"no valid EnvSpec in {folder}" if folder.is_dir()
                  else f"no folder {folder} for this task")
     return UnitRecord(generator=spec.generator, task_id=spec.task_id, samples=samples,
-                      failures=failures, error=error, mutants=scorer.classes)
+                      failures=failures, error=error, mutants=scorer.classes, details=details,
+                      files=files)
 
 
 def _task_ids(config: EvaluateConfig) -> tuple[list[str], list[str]]:
@@ -229,7 +240,7 @@ def evaluate_envs(config: EvaluateConfig) -> EvaluateOutcome:
     write_outputs(run_dir, results, ordered)
     from logicenveval.reporting.leaderboard import write_leaderboards
 
-    write_leaderboards(run_dir, results)
+    write_leaderboards(run_dir, results, ordered)
     return EvaluateOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused,
                            skipped_folders=skipped)
 

@@ -21,20 +21,27 @@ from logicenveval.errors import RunStoreError
 from logicenveval.metrics.records import UnitRecord
 
 
-def atomic_write_text(path: Path, text: str) -> None:
-    """Write `text` so that readers see the old file or the complete new one, never a part."""
+def atomic_write_text(path: Path, text: str, *, durable: bool = True) -> None:
+    """Write `text` so that readers see the old file or the complete new one, never a part.
+
+    `durable` also fsyncs the file and its folder, so the write survives a power loss; files a
+    unit commit vouches for by digest (or that are rebuilt from units) skip that cost.
+    """
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     try:
         with os.fdopen(fd, "w", encoding="utf-8") as fh:
             fh.write(text)
-            fh.flush()
-            os.fsync(fh.fileno())
+            if durable:
+                fh.flush()
+                os.fsync(fh.fileno())
         os.replace(tmp, path)
     except BaseException:
         with contextlib.suppress(FileNotFoundError):
             os.unlink(tmp)
         raise
+    if not durable:
+        return
     dir_fd = os.open(path.parent, os.O_RDONLY)
     try:
         os.fsync(dir_fd)
@@ -44,6 +51,11 @@ def atomic_write_text(path: Path, text: str) -> None:
 
 def _digest(payload: Any) -> str:
     return hashlib.sha256(json.dumps(payload, sort_keys=True).encode()).hexdigest()
+
+
+def text_digest(text: str) -> str:
+    """The SHA-256 a unit records for each file it wrote (`UnitRecord.files`)."""
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()
 
 
 class RunStore:
@@ -76,7 +88,9 @@ class RunStore:
 
     def save(self, record: UnitRecord) -> None:
         payload = record.model_dump(mode="json")
-        text = json.dumps({"sha256": _digest(payload), "unit": payload}, indent=1, sort_keys=True)
+        # compact: with an indent, json falls back to its pure-Python encoder (units hold traces)
+        text = json.dumps({"sha256": _digest(payload), "unit": payload}, sort_keys=True,
+                          separators=(",", ":"))
         atomic_write_text(self.unit_path(record.generator, record.task_id), text + "\n")
 
     def load(self, generator: str, task_id: str) -> UnitRecord | None:
@@ -93,3 +107,18 @@ class RunStore:
         if record.generator != generator or record.task_id != task_id:
             return None
         return record
+
+    def files_intact(self, record: UnitRecord) -> bool:
+        """Whether every file the unit wrote (environments, plan) is still there, unchanged.
+
+        Those files are written without fsync; only the unit file is durable. After a power loss
+        a unit whose files did not reach the disk is therefore recomputed, never half-reused.
+        """
+        for rel, digest in record.files.items():
+            try:
+                data = (self.run_dir / rel).read_bytes()
+            except OSError:
+                return False
+            if hashlib.sha256(data).hexdigest() != digest:
+                return False
+        return True

@@ -21,6 +21,13 @@ from logicenveval.scene.relax import Dropped
 from logicenveval.scene.spec import RelationRequest
 
 WALKWAY = 0.45  # metres of free floor in front of each task object for the agent to approach
+
+#: floors with at least this many boxes make walkway strips exclusive: clear of other boxes,
+#: of each other and of door squares (CP-SAT: box + strip as one rectangle in the floor's NoOverlap2D);
+#: below it each strip only keeps clear of the other boxes. Measured on dense rooms of
+#: `benchmarks/layout.py`: the per-strip constraints made a 60-object floor ~10x slower.
+EXCLUSIVE_WALKWAYS_FROM = 16
+
 NEAR_AXIS = 0.7  # per-axis footprint gap: sqrt(2)*0.7 < 1.0 m (DESIGN §6 near)
 FAR = 2.5
 IN_FRONT_GAP = NEAR_AXIS + 0.25  # in_front_of / side_of: gap along one axis only, < 1.0 m
