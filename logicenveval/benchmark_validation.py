@@ -70,6 +70,27 @@ def validate_all(directory: str | Path | None = None, catalog: Catalog | None = 
     return [validate_task(f, d, catalog, simulate=simulate, worlds=worlds) for f in folders]
 
 
+def write_models(directory: str | Path | None = None, ids: list[str] | None = None) -> list[Path]:
+    """Give every policy of the tasks (all, or `ids`) the library's current Groot2
+    `<TreeNodesModel>`; returns the files that changed."""
+    from logicenveval.sim.groot import with_current_model
+
+    d = tasks_dir(directory)
+    changed = []
+    for folder in sorted(p for p in d.iterdir() if p.is_dir() and not p.name.startswith(".")):
+        if ids and folder.name not in ids:
+            continue
+        task = load_task_file(folder / "task.json")
+        for rel in task.policies.values():
+            path = folder / rel
+            text = path.read_text(encoding="utf-8")
+            new = with_current_model(text)
+            if new != text:
+                path.write_text(new, encoding="utf-8")
+                changed.append(path)
+    return changed
+
+
 def validate_task(task: Task | str | Path, directory: str | Path | None = None,
                   catalog: Catalog | None = None, *, simulate: bool = True,
                   worlds: int = DEFAULT_WORLDS) -> TaskReport:
@@ -119,9 +140,9 @@ def _impl_validate(task: Task, folder: Path, cat: Catalog, report: TaskReport,
     _check_disjoint(task, add)
     _check_values(task, add)
     policies = _load_policies(task, folder, add)
-    if report.problems or not simulate or len(policies) < len(POLICY_KINDS):
-        return
-    _check_policies(task, cat, policies, report, add, worlds)
+    if simulate and not report.problems and len(policies) == len(POLICY_KINDS):
+        _check_policies(task, cat, policies, report, add, worlds)
+    _check_models(task, folder, policies, add)
 
 
 def _check_disjoint(task: Task, add: _Add) -> None:
@@ -259,6 +280,19 @@ def _load_policies(task: Task, folder: Path, add: _Add) -> dict[str, object]:
         except LogicEnvEvalError as exc:
             add(rel, exc.field or (f"line {exc.line}" if exc.line else "-"), str(exc))
     return loaded
+
+
+def _check_models(task: Task, folder: Path, loaded: dict[str, object], add: _Add) -> None:
+    """Each loaded policy carries the library's current Groot2 model (checked after the
+    simulation, so that a stale model never hides a behaviour problem)."""
+    from logicenveval.sim.groot import model_problem
+
+    for kind in loaded:
+        rel = task.policies[kind]
+        stale = model_problem((folder / rel).read_text(encoding="utf-8"))
+        if stale is not None:
+            add(rel, "TreeNodesModel", f"{stale}; run `python -m logicenveval tasks validate "
+                "--write-models` to write the action library's current one")
 
 
 def situations(task: Task) -> list[Trajectory]:

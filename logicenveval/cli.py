@@ -23,6 +23,9 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "import-house": ("logicenveval.commands.import_house",
                      "convert a ProcTHOR/AI2-THOR house (schema 1.0.0) into an EnvSpec"),
     "check-env": ("logicenveval.commands.check_env", "check an EnvSpec's physical plausibility"),
+    "export": ("logicenveval.commands.export", "write an environment as ProcTHOR house JSON or GLB"),
+    "check-house": ("logicenveval.commands.check_house",
+                    "check a ProcTHOR house JSON against ProcTHOR's databases"),
     "report": ("logicenveval.commands.report", "rebuild leaderboard.md/.html of a run folder"),
     "compare": ("logicenveval.commands.compare", "compare two runs; exit 1 on a regression"),
 }

@@ -128,3 +128,19 @@ def test_faulty_policy_of_the_wrong_kind(tmp_path: Path) -> None:
     assert any("counterfactual.xml" in p and "goal_unmet" in p and "not a counterfactual fault" in p
                for p in probs)
     assert any("unreachable.xml" in p and "precondition_violation" in p for p in probs)
+
+
+def test_stale_tree_nodes_model_is_a_problem_and_write_models_fixes_it(tmp_path: Path) -> None:
+    from logicenveval.benchmark_validation import write_models
+
+    d = tmp_path / TASK
+    shutil.copytree(DEFAULT_TASKS_DIR / TASK, d)
+    correct = d / "policies" / "correct.xml"
+    correct.write_text(correct.read_text(encoding="utf-8").replace(
+        '<input_port name="obj" type="std::string">role name of the object</input_port>', "", 1),
+        encoding="utf-8")
+    probs = [str(p) for p in validate_task(TASK, tmp_path, simulate=False).problems]
+    assert len(probs) == 1 and "correct.xml" in probs[0] and "TreeNodesModel" in probs[0]
+    assert write_models(tmp_path) == [correct]
+    assert validate_task(TASK, tmp_path, simulate=False).problems == []
+    assert write_models(tmp_path) == []

@@ -212,3 +212,14 @@ def test_task_sets_outside_the_repository(tmp_path: Path) -> None:
     (run_dir,) = [p for p in out.iterdir() if p.is_dir()]
     results = json.loads((run_dir / "results.json").read_text())
     assert results["tasks"] == ["tidy_lounge"] and results["results"]["logicenvgen"]["logcov"] == 1.0
+
+
+def test_run_export_writes_houses_that_pass_check_house(first_run: Path) -> None:
+    assert _run(first_run.parent, "--export", "procthor,glb") == 0  # resumes: units reused
+    envs = [p for p in (first_run / "envs").rglob("*.json")
+            if p.name != "plan.json" and not p.name.endswith(".house.json")]
+    houses = sorted((first_run / "envs").rglob("*.house.json"))
+    assert len(houses) == len(envs) == len(list((first_run / "envs").rglob("*.glb")))
+    assert main(["check-house", *map(str, houses)]) == 0
+    assert _run(first_run.parent, "--export", "procthor") == 0  # nothing left to write
+    assert sorted((first_run / "envs").rglob("*.house.json")) == houses

@@ -11,7 +11,7 @@ from test_scene_layout import living_spec
 
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.scene.construct import construct_environment
-from logicenveval.scene.export import to_glb, to_procthor
+from logicenveval.scene.export import _colour, _wall_pieces, to_glb, to_procthor
 from logicenveval.scene.spec import SceneResult, SceneSpec
 
 CAT = load_catalog()
@@ -45,14 +45,38 @@ def test_procthor_house_structure() -> None:
     assert [c["id"] for c in table["children"]] == ["book_1"]
 
 
-def test_glb_loads_back_with_one_box_per_object() -> None:
+def test_glb_loads_back_with_objects_floors_and_walls_with_openings() -> None:
     env = _result().env
     data = to_glb(env)
     scene = trimesh.load(io.BytesIO(data), file_type="glb")
     assert isinstance(scene, trimesh.Scene)
     names = set(scene.graph.nodes_geometry)
     assert {o.id for o in env.objects} <= names
-    assert len(names) == len(env.objects) + len(env.rooms)
+    walls = {n for n in names if n.startswith("wall_")}
+    assert len(names) == len(env.objects) + len(env.rooms) + len(walls)
+    pieces = _wall_pieces(env)
+    assert len(pieces) == len(walls)
+    # every door leaves a gap from the floor to its height: only a lintel above it
+    for d in env.doors:
+        assert d.segment is not None
+        mid = ((d.segment[0][0] + d.segment[1][0]) / 2, (d.segment[0][1] + d.segment[1][1]) / 2)
+        covering = [(y0, y1) for (p0, p1), y0, y1 in pieces
+                    if _on_segment(mid, p0, p1)]
+        assert covering and all(y0 >= d.height - 1e-6 for y0, _ in covering)
+    for w in env.windows:
+        assert w.segment is not None
+        mid = ((w.segment[0][0] + w.segment[1][0]) / 2, (w.segment[0][1] + w.segment[1][1]) / 2)
+        spans = sorted((y0, y1) for (p0, p1), y0, y1 in pieces if _on_segment(mid, p0, p1))
+        assert spans == [(0.0, w.sill), (w.sill + w.height, env.wall_height)]
+    floor, wall = _colour("sofa"), _colour("toy")
+    assert floor != wall  # per-category colours
+
+
+def _on_segment(p: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> bool:
+    cross = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+    inside = min(a[0], b[0]) - 1e-6 <= p[0] <= max(a[0], b[0]) + 1e-6 and \
+        min(a[1], b[1]) - 1e-6 <= p[1] <= max(a[1], b[1]) + 1e-6
+    return abs(cross) < 1e-6 and inside
 
 
 def test_spec_and_result_json_round_trip() -> None:

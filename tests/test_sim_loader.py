@@ -96,10 +96,63 @@ def test_tree_nodes_model_checked() -> None:
     good = ('  <TreeNodesModel>\n    <Action ID="Pick"><input_port name="obj"/></Action>\n'
             '  </TreeNodesModel>\n')
     policy_from_xml(doc('    <Pick obj="toy"/>', good))
-    bad = ('  <TreeNodesModel>\n    <Action ID="Fly"><input_port name="obj"/></Action>\n'
+    bad = ('  <TreeNodesModel>\n    <Action ID="Pick"><input_port name="thing"/></Action>\n'
            '  </TreeNodesModel>\n')
     e = err(doc('    <Pick obj="toy"/>', bad))
-    assert e.line == 6 and "Fly" in str(e)
+    assert e.line == 6 and "Pick" in str(e) and "thing" in str(e)
+    wrong_kind = ('  <TreeNodesModel>\n    <Condition ID="Pick"><input_port name="obj"/>'
+                  '</Condition>\n  </TreeNodesModel>\n')
+    assert "<Action>" in str(err(doc('    <Pick obj="toy"/>', wrong_kind)))
+
+
+def test_tree_nodes_model_extra_nodes_ignored_unless_used() -> None:
+    palette = ('  <TreeNodesModel>\n    <Action ID="Fly"><input_port name="obj"/></Action>\n'
+               '    <Condition ID="IsBatteryOk"/>\n  </TreeNodesModel>\n')
+    policy_from_xml(doc('    <Pick obj="toy"/>', palette), roles=ROLES)
+    e = err(doc('    <Fly obj="toy"/>', palette), UnknownNodeError)
+    assert e.line == 3 and "Fly" in str(e)
+
+
+def test_metadata_attributes_ignored() -> None:
+    a = policy_from_xml(doc('<Sequence _uid="3" _fullpath="Main/Sequence"><Pick obj="toy" '
+                            '_description="grab it"/><SubTree ID="T" _description="x"/></Sequence>',
+                            '<BehaviorTree ID="T"><AlwaysSuccess _uid="9"/></BehaviorTree>'))
+    b = policy_from_xml(doc('<Sequence><Pick obj="toy"/><SubTree ID="T"/></Sequence>',
+                            '<BehaviorTree ID="T"><AlwaysSuccess/></BehaviorTree>'))
+    assert a == b
+    assert "_skipIf" in str(err(doc('<Pick obj="toy" _skipIf="x"/>')))
+
+
+def test_id_less_tree_and_missing_format_as_bt_cpp() -> None:
+    p = policy_from_xml('<root><BehaviorTree><Pick obj="toy"/></BehaviorTree></root>')
+    assert p.main == "BehaviorTree_0" and list(p.trees) == ["BehaviorTree_0"]
+    assert len(p.warnings) == 1 and "BTCPP_format" in p.warnings[0]
+    assert policy_from_xml(doc('<Pick obj="toy"/>')).warnings == ()
+    e = err('<root BTCPP_format="4"><BehaviorTree><Pick obj="toy"/></BehaviorTree>'
+            '<BehaviorTree ID="B"><Pick obj="toy"/></BehaviorTree></root>')
+    assert "needs an ID" in str(e)
+    assert "BTCPP_format='3'" in str(err('<root BTCPP_format="3"><BehaviorTree ID="A">'
+                                         '<Pick obj="toy"/></BehaviorTree></root>'))
+
+
+def test_main_tree_rules_as_bt_cpp(tmp_path: Path) -> None:
+    (tmp_path / "lib.xml").write_text('<root BTCPP_format="4"><BehaviorTree ID="Lib">'
+                                      '<Pick obj="toy"/></BehaviorTree></root>')
+    main = tmp_path / "main.xml"
+    main.write_text('<root BTCPP_format="4"><include path="lib.xml"/><BehaviorTree ID="Top">'
+                    '<SubTree ID="Lib"/></BehaviorTree></root>')
+    assert load_policy(main).main == "Top"  # the file's only tree, includes aside
+    main.write_text('<root BTCPP_format="4"><include path="lib.xml"/></root>')
+    assert load_policy(main).main == "Lib"  # the only tree loaded
+    two = ('<root BTCPP_format="4"><BehaviorTree ID="A"><Pick obj="toy"/></BehaviorTree>'
+           '<BehaviorTree ID="B"><Pick obj="toy"/></BehaviorTree></root>')
+    assert "main_tree_to_execute" in str(err(two))
+
+
+def test_async_controls_load() -> None:
+    p = policy_from_xml(doc('<AsyncSequence><Pick obj="toy"/><AsyncFallback><Pick obj="toy"/>'
+                            '</AsyncFallback></AsyncSequence>'))
+    assert policy_to_xml(p).count("Async") == 4
 
 
 def test_control_node_parameters() -> None:
@@ -108,7 +161,13 @@ def test_control_node_parameters() -> None:
     assert "not an integer" in str(err(doc('<Repeat num_cycles="x"><Pick obj="toy"/></Repeat>')))
     assert "exactly one child" in str(err(doc('<Inverter/>')))
     assert "2 or 3" in str(err(doc('<IfThenElse><Pick obj="toy"/></IfThenElse>')))
-    assert "impossible" in str(err(doc('<Parallel success_count="3"><Pick obj="toy"/></Parallel>')))
+    assert "at least 2" in str(err(doc('<TryCatch><Pick obj="toy"/></TryCatch>')))
+    assert "not a boolean" in str(err(doc('<TryCatch catch_on_halt="maybe"><Pick obj="toy"/>'
+                                          '<Pick obj="toy"/></TryCatch>')))
+    assert "more than its 1 children" in str(err(doc('<Parallel success_count="3"><Pick obj="toy"/>'
+                                                    '</Parallel>')))
+    assert "failure_count=2" in str(err(doc('<Parallel failure_count="2"><Pick obj="toy"/>'
+                                            '</Parallel>')))
 
 
 def test_include_relative_to_file(tmp_path: Path) -> None:
@@ -176,8 +235,55 @@ def test_round_trip_of_every_control_node_through_py_trees() -> None:
             '<Inverter><ForceSuccess><ForceFailure><AlwaysSuccess/></ForceFailure></ForceSuccess></Inverter>'
             '<RetryUntilSuccessful num_attempts="3"><Repeat num_cycles="2"><KeepRunningUntilFailure>'
             '<AlwaysFailure/></KeepRunningUntilFailure></Repeat></RetryUntilSuccessful>'
+            '<AsyncSequence><AsyncFallback><AlwaysFailure/></AsyncFallback></AsyncSequence>'
+            '<TryCatch catch_on_halt="1"><AlwaysSuccess/><AlwaysFailure/></TryCatch>'
             '<SubTree ID="Sub"/></Sequence>')
     text = doc(body, '  <BehaviorTree ID="Sub">\n<Walk target="box"/>\n  </BehaviorTree>\n')
     p = policy_from_xml(text, roles=ROLES)
     again = tree_to_xml(tree_from_xml(text, roles=ROLES))
     assert policy_from_xml(again, roles=ROLES) == p
+    assert 'catch_on_halt="true"' in again
+
+
+def test_every_shipped_policy_carries_the_current_groot2_model() -> None:
+    from logicenveval.benchmark import DEFAULT_TASKS_DIR
+    from logicenveval.sim.groot import model_problem
+
+    files = sorted(DEFAULT_TASKS_DIR.glob("*/policies/*.xml"))
+    assert len(files) == 100
+    assert [f for f in files if model_problem(f.read_text(encoding="utf-8"))] == []
+
+
+def test_export_carries_the_model_and_round_trips() -> None:
+    from defusedxml.ElementTree import fromstring
+
+    from logicenveval.domain.actions import ACTIONS, CONDITIONS
+    from logicenveval.sim.groot import model_problem
+
+    policy = load_policy(POLICIES / "correct.xml")
+    text = policy_to_xml(policy)
+    assert model_problem(text) is None
+    model = fromstring(text).find("TreeNodesModel")
+    assert {(d.tag, d.get("ID")) for d in model} == {
+        *(("Action", a) for a in ACTIONS), *(("Condition", c) for c in CONDITIONS)}
+    place = model.find("Action[@ID='Place']")
+    assert [(p.get("name"), p.get("type")) for p in place] [:2] == [
+        ("obj", "std::string"), ("target", "std::string")]
+    again = policy_from_xml(text)
+    assert again == policy and policy_to_xml(again) == text
+
+
+FORMS = Path(__file__).parent / "fixtures" / "btcpp_forms"
+
+
+def test_documents_in_bt_cpp_and_groot2_forms_load() -> None:
+    # our own XML in the forms BT.CPP's examples and Groot2 project files use (both files load and
+    # tick in BehaviorTree.CPP 4.10 with the library nodes registered; see docs/simulator.md)
+    p = load_policy(FORMS / "groot2_project.xml", roles=ROLES)
+    assert p.main == "Main" and set(p.trees) == {"Main", "TidyToy"} and p.warnings == ()
+    assert p.trees["TidyToy"].kind == "TryCatch"
+    assert p.trees["Main"].children[0].params == (("ID", "TidyToy"),)  # _description ignored
+    t = load_policy(FORMS / "tutorial_form.xml", roles=ROLES)
+    assert t.main == "BehaviorTree_0" and "BTCPP_format" in t.warnings[0]
+    again = policy_from_xml(policy_to_xml(t), roles=ROLES)
+    assert again == t and again.warnings == ()

@@ -36,6 +36,9 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                    help="what generators get: the task's roles (default) or, as in the paper, only id, "
                         "description and rooms, with the paper's few-shot example (docs/fidelity.md)")
     p.add_argument("--quiet", action="store_true", help="no progress bars")
+    p.add_argument("--export", default="", metavar="FORMATS",
+                   help="also write procthor and/or glb files next to every environment "
+                        "(e.g. procthor,glb)")
 
 
 def run(args: argparse.Namespace) -> int:
@@ -60,15 +63,34 @@ def run(args: argparse.Namespace) -> int:
         run_id=args.run_id,
         brief=args.brief,
     )
+    formats = [f.strip() for f in args.export.split(",") if f.strip()]
+    if formats:
+        from logicenveval.errors import ConfigError
+        from logicenveval.scene.export_files import SUFFIX
+
+        unknown = sorted(set(formats) - set(SUFFIX))
+        if unknown:
+            raise ConfigError(f"unknown export format(s) {unknown}", field="--export",
+                              hint=f"use a comma-separated subset of {', '.join(SUFFIX)}")
     if args.seeds is not None:
         from logicenveval.runner.seeds import run_seeds
 
         multi = run_seeds(config, _seeds(args.seeds), show_progress=not args.quiet)
+        if formats:
+            from logicenveval.scene.export_files import export_run
+
+            n = sum(len(export_run(d, formats)) for d in multi.seed_dirs)
+            print(f"exported {n} file(s) ({', '.join(formats)}) next to the environments")
         print(markdown(multi.results))
         print(f"run folder: {multi.run_dir} (seed runs {', '.join(str(d) for d in multi.seed_dirs)}; "
               f"computed {multi.computed} unit(s), reused {multi.reused})")
         return 0
     outcome = run_benchmark(config, show_progress=not args.quiet)
+    if formats:
+        from logicenveval.scene.export_files import export_run
+
+        written = export_run(outcome.run_dir, formats)
+        print(f"exported {len(written)} file(s) ({', '.join(formats)}) next to the environments")
     print(markdown(outcome.results))
     print(f"run folder: {outcome.run_dir} (computed {outcome.computed} unit(s), reused {outcome.reused})")
     return 0

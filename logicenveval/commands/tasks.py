@@ -19,6 +19,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     val.add_argument("--no-simulate", action="store_true", help="skip simulating the four policies")
     val.add_argument("--worlds", type=_positive, default=None,
                      help="worlds simulated per situation (default 12; 1 = the minimal world only)")
+    val.add_argument("--write-models", action="store_true",
+                     help="first rewrite each policy's Groot2 <TreeNodesModel> from the action library")
     mu = sub.add_parser("mutants", help="first-order mutants of the correct BTs, classified by simulation")
     mu.add_argument("--tasks", default="all", help="all or comma-separated task ids")
     mu.add_argument("--worlds", type=_positive, default=None,
@@ -100,6 +102,11 @@ def _validate(args: argparse.Namespace) -> int:
     from logicenveval.sim.worlds import DEFAULT_WORLDS
 
     simulate = not args.no_simulate
+    if args.write_models:
+        from logicenveval.benchmark_validation import write_models
+
+        for path in write_models(args.tasks_dir, args.task):
+            print(f"updated TreeNodesModel of {path}")
     worlds = args.worlds or DEFAULT_WORLDS
     if args.task:
         reports = [validate_task(t, args.tasks_dir, simulate=simulate, worlds=worlds) for t in args.task]

@@ -34,8 +34,12 @@ def valid_rooms(env: EnvSpec, fails: list[PhysicsFailure]) -> dict[str, Polygon]
             fails.append(_fail("invalid_polygon", f"room {room.id} polygon has {len(pts)} points (need >= 3)",
                                rooms=[room.id], measured=float(len(pts)), tolerance=3.0))
             continue
+        if not finite(*(c for p in pts for c in p)):  # shapely raises on NaN/inf before is_valid
+            fails.append(_fail("invalid_polygon", f"room {room.id} polygon has a non-finite coordinate",
+                               rooms=[room.id]))
+            continue
         poly = Polygon(pts)
-        if not finite(*(c for p in pts for c in p)) or not poly.is_valid or poly.area <= 0:
+        if not poly.is_valid or poly.area <= 0:
             fails.append(_fail("invalid_polygon",
                                f"room {room.id} polygon is not a simple polygon with positive area",
                                rooms=[room.id], measured=float(poly.area)))

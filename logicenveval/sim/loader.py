@@ -6,8 +6,10 @@ the line of every element, so each error names the node and its line, and lists 
 
 from __future__ import annotations
 
+import logging
 import re
 from collections.abc import Iterable
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 from xml.etree.ElementTree import Element, ParseError, TreeBuilder
@@ -19,17 +21,22 @@ from defusedxml.ElementTree import DefusedXMLParser
 from logicenveval.domain.actions import ACTIONS, CONDITIONS
 from logicenveval.errors import PolicyFormatError
 from logicenveval.model.rooms import is_room_type
+from logicenveval.sim.groot import tree_nodes_model
 from logicenveval.sim.policy import (
+    BOOL_PARAMS,
     BRANCHING,
     COMPOSITES,
     CONSTANT_LEAVES,
     DECORATORS,
+    MIN_CHILDREN,
     NODE_PARAMS,
     Policy,
     PolicyNode,
+    parallel_threshold,
 )
 
 _LINE = "__line__"
+_log = logging.getLogger(__name__)
 
 
 class UnknownNodeError(PolicyFormatError):
@@ -49,6 +56,8 @@ REJECTED = frozenset({
 })
 _SCRIPT_ATTRS = ("_skipIf", "_successIf", "_failureIf", "_while", "_onSuccess", "_onFailure",
                  "_onHalted", "_post", "_autoremap")
+#: BT.CPP's prefix of ID-less `<BehaviorTree>` names (`BehaviorTree_0`, ...; xml_parsing.cpp)
+UNNAMED_TREE = "BehaviorTree_"
 _BLACKBOARD = re.compile(r"\{[^}]*\}")
 _WRAPPERS = ("Action", "Condition", "Control", "Decorator")
 #: ports whose value may name a room instead of a role
@@ -56,6 +65,13 @@ _ROOM_PORTS = {("Walk", "target"), ("InRoom", "room"), ("AgentIn", "room")}
 #: ports whose value is free text (attribute keys/values, state flags)
 _FREE_PORTS = {("Attr", "key"), ("Attr", "value"), ("State", "flag")}
 _FLOOR_PORTS = {("Place", "target"), ("On", "target"), ("Walk", "target")}
+
+
+def _metadata(key: str) -> bool:
+    """An attribute BT.CPP keeps out of the ports and ignores (`_description`, `_uid`,
+    `_fullpath`, ...; also our `__line__` marker): not a valid port name, and not one of its
+    scripting attributes."""
+    return key.startswith("_") and key not in _SCRIPT_ATTRS
 
 
 def known_nodes() -> list[str]:
@@ -112,7 +128,7 @@ class _Reader:
     # ----- one element -------------------------------------------------------------------
     def node(self, elem: Element) -> PolicyNode:
         tag = elem.tag
-        attrs = {k: v for k, v in elem.attrib.items() if k != _LINE}
+        attrs = {k: v for k, v in elem.attrib.items() if not _metadata(k)}
         kind = tag
         if tag in _WRAPPERS:
             if "ID" not in attrs:
@@ -179,12 +195,7 @@ class _Reader:
                     raise self.fail(elem, f"node <{kind}> needs parameter {key!r}",
                                     f'add {key}="N" (-1 means unbounded)')
                 continue
-            try:
-                value = int(attrs[key])
-            except ValueError:
-                raise self.fail(elem, f"node <{kind}>: {key}={attrs[key]!r} is not an integer",
-                                f'write {key}="3"') from None
-            params.append((key, str(value)))
+            params.append((key, self._param(elem, kind, key, attrs[key])))
         n = len(children)
         if kind in DECORATORS and n != 1:
             raise self.fail(elem, f"decorator <{kind}> needs exactly one child, has {n}",
@@ -192,21 +203,37 @@ class _Reader:
         if kind in BRANCHING and n not in (2, 3):
             raise self.fail(elem, f"<{kind}> needs 2 or 3 children (condition, then, else), has {n}",
                             "give it a condition, a then-branch and optionally an else-branch")
-        if kind in COMPOSITES and n == 0:
-            raise self.fail(elem, f"<{kind}> has no children", "add at least one child")
+        if kind in COMPOSITES and n < MIN_CHILDREN.get(kind, 1):
+            raise self.fail(elem, f"<{kind}> needs at least {MIN_CHILDREN.get(kind, 1)} "
+                            f"child(ren), has {n}", "add children")
         kids = tuple(self.node(c) for c in children)
         node = PolicyNode(kind, tuple(params), kids, name, int(elem.get(_LINE, "0")))
         if kind == "Parallel":
             self._check_parallel(elem, node)
         return node
 
+    def _param(self, elem: Element, kind: str, key: str, text: str) -> str:
+        if (kind, key) in BOOL_PARAMS:
+            word = {"true": "true", "1": "true", "false": "false", "0": "false"}.get(text.lower())
+            if word is None:
+                raise self.fail(elem, f"node <{kind}>: {key}={text!r} is not a boolean",
+                                f'write {key}="true" or "false"')
+            return word
+        try:
+            return str(int(text))
+        except ValueError:
+            raise self.fail(elem, f"node <{kind}>: {key}={text!r} is not an integer",
+                            f'write {key}="3"') from None
+
     def _check_parallel(self, elem: Element, node: PolicyNode) -> None:
+        """BT.CPP throws when a threshold exceeds the children ("can never succeed/fail")."""
         n = len(node.children)
-        s = int(node.param("success_count") or -1)
-        threshold = n + s + 1 if s < 0 else s
-        if not 0 <= threshold <= n:
-            raise self.fail(elem, f"<Parallel> success_count={s} is impossible with {n} children",
-                            f"use a value between 1 and {n}, or -1 for all")
+        for key, default in (("success_count", -1), ("failure_count", 1)):
+            count = int(node.param(key) or default)
+            if parallel_threshold(count, n) > n:
+                raise self.fail(elem, f"<Parallel> {key}={count} is more than its {n} children "
+                                "(BehaviorTree.CPP raises 'Number of children is less than "
+                                "threshold')", f"use a value between 1 and {n}, or -1 for all")
 
     def _ports(self, elem: Element, kind: str, attrs: dict[str, str]) -> tuple[tuple[str, str], ...]:
         required, optional = ports_of(kind)
@@ -239,41 +266,51 @@ class _Reader:
                         f"use one of: {', '.join(valid)}", BadPortError)
 
     # ----- documents ---------------------------------------------------------------------
-    def document(self, root: Element, path: Path | None, seen: set[str],
-                 trees: dict[str, tuple[PolicyNode, int]]) -> str | None:
+    def document(self, root: Element, path: Path | None, seen: set[str], acc: _Trees) -> _Doc:
+        """Read one file into `acc`: includes first, then its trees (BT.CPP's order, which
+        numbers ID-less trees)."""
         if root.tag != "root":
             raise self.fail(root, f"root element is <{root.tag}>, expected <root>",
                             '<root BTCPP_format="4" main_tree_to_execute="Main">')
         fmt = root.get("BTCPP_format")
-        if fmt != "4":
+        if fmt is None:
+            acc.warnings.append(f"{self.source}: <root> has no BTCPP_format; read as 4 "
+                                '(BehaviorTree.CPP does the same); add BTCPP_format="4"')
+        elif fmt != "4":
             raise self.fail(root, f"BTCPP_format={fmt!r}; only BehaviorTree.CPP v4 is supported",
                             'set BTCPP_format="4"')
-        for child in root:
-            if child.tag == "BehaviorTree":
-                self._tree(child, trees)
-            elif child.tag == "include":
-                self._include(child, path, seen, trees)
-            elif child.tag == "TreeNodesModel":
-                self._model(child)
-            else:
+        children = list(root)
+        for child in children:
+            if child.tag not in ("BehaviorTree", "include", "TreeNodesModel"):
                 raise self.fail(child, f"unexpected element <{child.tag}> under <root>",
                                 "use <BehaviorTree>, <include> or <TreeNodesModel>")
-        return root.get("main_tree_to_execute")
+        for child in children:
+            if child.tag == "include":
+                self._include(child, path, seen, acc)
+            elif child.tag == "TreeNodesModel":
+                self._model(child)
+        own = [self._tree(c, acc, alone=len(children) == 1)
+               for c in children if c.tag == "BehaviorTree"]
+        return _Doc(root.get("main_tree_to_execute"), own)
 
-    def _tree(self, elem: Element, trees: dict[str, tuple[PolicyNode, int]]) -> None:
+    def _tree(self, elem: Element, acc: _Trees, *, alone: bool) -> str:
         tree_id = elem.get("ID")
         if not tree_id:
-            raise self.fail(elem, "<BehaviorTree> needs an ID", '<BehaviorTree ID="Main">')
-        if tree_id in trees:
+            if not alone:
+                raise self.fail(elem, "<BehaviorTree> needs an ID when <root> has other elements",
+                                '<BehaviorTree ID="Main">')
+            tree_id = f"{UNNAMED_TREE}{acc.unnamed}"
+            acc.unnamed += 1
+        if tree_id in acc.trees:
             raise self.fail(elem, f"BehaviorTree {tree_id!r} is defined twice", "rename one of them")
         kids = list(elem)
         if len(kids) != 1:
             raise self.fail(elem, f"BehaviorTree {tree_id!r} must have exactly one root node, "
                             f"has {len(kids)}", "wrap the nodes in a Sequence")
-        trees[tree_id] = (self.node(kids[0]), int(elem.get(_LINE, "0")))
+        acc.trees[tree_id] = (self.node(kids[0]), int(elem.get(_LINE, "0")))
+        return tree_id if elem.get("ID") else ""
 
-    def _include(self, elem: Element, path: Path | None, seen: set[str],
-                 trees: dict[str, tuple[PolicyNode, int]]) -> None:
+    def _include(self, elem: Element, path: Path | None, seen: set[str], acc: _Trees) -> None:
         rel = elem.get("path")
         if not rel:
             raise self.fail(elem, "<include> needs a path", '<include path="other.xml"/>')
@@ -286,19 +323,23 @@ class _Reader:
                             "paths are relative to the including file")
         sub = _Reader(str(target), self.roles, self.rooms)
         sub.document(_parse_xml(target.read_text(encoding="utf-8"), str(target)), target,
-                     seen | {str(target)}, trees)
+                     seen | {str(target)}, acc)
 
     def _model(self, elem: Element) -> None:
+        """Entries for nodes outside the action library are ignored (Groot2 palettes list
+        more than a tree uses; using one is still an unknown node); library entries must
+        match the library's kind and ports."""
         for decl in elem:
             kind = decl.get("ID", "")
             if decl.tag not in (*_WRAPPERS, "SubTree"):
                 raise self.fail(decl, f"unexpected <{decl.tag}> in TreeNodesModel",
                                 "declare <Action ID=...> or <Condition ID=...>")
-            if decl.tag == "SubTree":
-                continue
             if kind not in ACTIONS and kind not in CONDITIONS:
-                raise self.fail(decl, f"TreeNodesModel declares unknown node {kind!r}",
-                                f"the action library has: {', '.join([*ACTIONS, *CONDITIONS])}")
+                continue
+            wanted = "Action" if kind in ACTIONS else "Condition"
+            if decl.tag != wanted:
+                raise self.fail(decl, f"TreeNodesModel declares {kind} as <{decl.tag}>; the "
+                                f"action library has it as <{wanted}>", f'write <{wanted} ID="{kind}">')
             required, optional = ports_of(kind)
             declared = {p.get("name", "") for p in decl if p.tag.endswith("port")}
             if not declared <= {*required, *optional} or not set(required) <= declared:
@@ -307,27 +348,55 @@ class _Reader:
                                 "declare exactly the library's ports")
 
 
+@dataclass
+class _Trees:
+    """What the files of one policy add up to: trees in BT.CPP's load order."""
+
+    trees: dict[str, tuple[PolicyNode, int]] = field(default_factory=dict)
+    unnamed: int = 0
+    warnings: list[str] = field(default_factory=list)
+
+
+@dataclass(frozen=True)
+class _Doc:
+    main: str | None  # its main_tree_to_execute
+    own: list[str]  # IDs of its own BehaviorTrees ("" for an ID-less one)
+
+
 def policy_from_xml(text: str, source: str = "<string>", *, roles: Iterable[str] | None = None,
                     rooms: Iterable[str] | None = None, path: Path | None = None) -> Policy:
     """Parse BT.CPP v4 XML; `roles`/`rooms` (when given) restrict the names ports may use."""
     reader = _Reader(source, roles, rooms)
     root = _parse_xml(text, source)
-    trees: dict[str, tuple[PolicyNode, int]] = {}
-    main = reader.document(root, path, {str(path.resolve())} if path else set(), trees)
+    acc = _Trees()
+    doc = reader.document(root, path, {str(path.resolve())} if path else set(), acc)
+    trees = acc.trees
     if not trees:
         raise PolicyFormatError("no <BehaviorTree> in the file", file=source,
                                 hint='add <BehaviorTree ID="Main">...</BehaviorTree>')
+    main = _main_tree(doc, trees)
     if main is None:
-        if len(trees) != 1:
-            raise reader.fail(root, "several BehaviorTrees but no main_tree_to_execute",
-                              f"set main_tree_to_execute to one of {sorted(trees)}")
-        main = next(iter(trees))
+        raise reader.fail(root, "several BehaviorTrees but no main_tree_to_execute",
+                          f"set main_tree_to_execute to one of {sorted(trees)}")
     if main not in trees:
         raise reader.fail(root, f"main_tree_to_execute={main!r} is not a BehaviorTree",
                           f"use one of {sorted(trees)}")
-    policy = Policy(main, {k: v[0] for k, v in trees.items()}, source)
+    for w in acc.warnings:
+        _log.warning(w)
+    policy = Policy(main, {k: v[0] for k, v in trees.items()}, source, tuple(acc.warnings))
     _check_subtrees(policy, reader)
     return policy
+
+
+def _main_tree(doc: _Doc, trees: dict[str, tuple[PolicyNode, int]]) -> str | None:
+    """BT.CPP's choice (bt_factory.cpp `detectMainTreeId`, `XMLParser::instantiateTree`): the
+    file's main_tree_to_execute, else its only BehaviorTree if that has an ID, else the only
+    tree loaded (includes counted)."""
+    if doc.main is not None:
+        return doc.main
+    if len(doc.own) == 1 and doc.own[0]:
+        return doc.own[0]
+    return next(iter(trees)) if len(trees) == 1 else None
 
 
 def _check_subtrees(policy: Policy, reader: _Reader) -> None:
@@ -377,12 +446,14 @@ def _emit(node: PolicyNode, depth: int, out: list[str]) -> None:
 
 
 def policy_to_xml(policy: Policy) -> str:
-    """BT.CPP v4 XML of a policy (includes inlined), loadable by BT.CPP, Groot2 and us."""
+    """BT.CPP v4 XML of a policy (includes inlined) with the library's Groot2 TreeNodesModel,
+    loadable by BT.CPP, Groot2 and us."""
     out = ['<?xml version="1.0" encoding="UTF-8"?>',
            f'<root BTCPP_format="4" main_tree_to_execute={quoteattr(policy.main)}>']
     for tree_id, node in policy.trees.items():
         out.append(f"  <BehaviorTree ID={quoteattr(tree_id)}>")
         _emit(node, 2, out)
         out.append("  </BehaviorTree>")
+    out.append(tree_nodes_model().rstrip("\n"))
     out.append("</root>")
     return "\n".join(out) + "\n"

@@ -17,7 +17,7 @@ the episode at once (it decides the verdict whatever recovers from it later).
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -25,13 +25,10 @@ import py_trees
 from py_trees.common import Status
 
 from logicenveval.domain.actions import ACTIONS, CONDITIONS, ActionSpec
-from logicenveval.sim.policy import Policy, PolicyNode
+from logicenveval.sim.policy import Policy, PolicyNode, parallel_threshold
 from logicenveval.sim.world import World
 
 IDLE, SUCCESS, FAILURE, RUNNING = Status.INVALID, Status.SUCCESS, Status.FAILURE, Status.RUNNING
-#: node ticks allowed within one episode, so that a loop that never returns RUNNING
-#: (e.g. RetryUntilSuccessful num_attempts=-1 over a failing condition) still ends
-STEP_BUDGET = 100_000
 
 
 class Violation(Exception):  # noqa: N818
@@ -43,17 +40,12 @@ class Violation(Exception):  # noqa: N818
         self.message = message
 
 
-class BudgetExceeded(Exception):  # noqa: N818
-    """Internal signal: a loop inside one tick used up `STEP_BUDGET` node ticks."""
-
-
 @dataclass(slots=True)
 class Episode:
     """Per-run state shared by all nodes during one episode."""
 
     world: World
     tick: int = 0
-    steps: int = 0
     trace: list[dict[str, Any]] | None = None
     last_fail: BTNode | None = field(default=None)
 
@@ -156,7 +148,6 @@ class ActionNode(Leaf):
 
     def update(self) -> Status:
         ep = self.binding.episode
-        ep.steps += 1
         why = self.spec.check(ep.world, self.args)
         if why is not None:
             if ep.trace is not None:
@@ -180,7 +171,6 @@ class ConditionNode(Leaf):
 
     def update(self) -> Status:
         ep = self.binding.episode
-        ep.steps += 1
         st = SUCCESS if ep.world.holds(self.predicate, self.args) else FAILURE
         if st is FAILURE:
             ep.last_fail = self
@@ -198,7 +188,6 @@ class ConstNode(Leaf):
 
     def update(self) -> Status:
         ep = self.binding.episode
-        ep.steps += 1
         if self.value is FAILURE:
             ep.last_fail = self
         return self.value
@@ -241,11 +230,17 @@ class _Ordered(Control):
     decisive: Status
     exhausted: Status
 
+    #: BT.CPP's interruptible loop: after a child that finished synchronously (it was IDLE
+    #: before this tick) with the non-decisive status, return RUNNING before the next child
+    #: (AsyncSequence, AsyncFallback, SequenceWithMemory; `requiresWakeUp()` is always true
+    #: in a built BT.CPP tree)
+    yields: bool = False
+
     def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
-        self.binding.episode.steps += 1
         kids = self.children
         while self.idx < len(kids):
             child = kids[self.idx]
+            before = child.status
             yield from child.tick()
             st = child.status
             if st is RUNNING:
@@ -257,6 +252,11 @@ class _Ordered(Control):
                 yield self
                 return
             self.idx += 1
+            if self.yields and before is IDLE and self.idx < len(kids):
+                self.status = RUNNING
+                yield self
+                return
+        self.idx = 0
         self.stop(self.exhausted)
         yield self
 
@@ -270,18 +270,102 @@ class Sequence(_Ordered, py_trees.composites.Sequence):
     decisive, exhausted = FAILURE, SUCCESS
 
 
+class AsyncSequence(Sequence):
+    """Sequence that returns RUNNING between children finishing synchronously (BT.CPP 4)."""
+
+    yields = True
+
+
 class SequenceWithMemory(Sequence):
-    """Like Sequence, but after a FAILURE the next tick resumes at the failed child."""
+    """Like AsyncSequence, but after a FAILURE the next tick resumes at the failed child, and
+    a halt keeps the position (BT.CPP's `SequenceWithMemory::halt` does not reset it)."""
+
+    yields = True
 
     def conclude(self, st: Status) -> None:
         for c in self.children[self.idx:]:
             _reset(c)
         self.status = st
 
+    def stop(self, new_status: Status = IDLE) -> None:
+        for c in self.children:
+            _reset(c)
+        self.status = new_status
+
 
 class Fallback(_Ordered, py_trees.composites.Selector):
     memory = True
     decisive, exhausted = SUCCESS, FAILURE
+
+
+class AsyncFallback(Fallback):
+    """Fallback that returns RUNNING between children failing synchronously (BT.CPP 4)."""
+
+    yields = True
+
+
+class TryCatch(Control):
+    """BT.CPP 4.x `TryCatch`: all children but the last run as a Sequence (the try block);
+    when one fails, the last child (catch) runs to completion and the node returns FAILURE.
+    With `catch_on_halt`, a halt during the try block ticks the catch child once first."""
+
+    def __init__(self, name: str, children: list[py_trees.behaviour.Behaviour],
+                 catch_on_halt: bool) -> None:
+        super().__init__(name, children)
+        self.catch_on_halt = catch_on_halt
+        self.in_catch = False
+
+    def reset_all(self) -> None:
+        super().reset_all()
+        self.in_catch = False
+
+    def stop(self, new_status: Status = IDLE) -> None:
+        kids = self.children
+        if self.catch_on_halt and not self.in_catch and self.status is RUNNING:
+            for c in kids[:-1]:
+                _reset(c)
+            for _ in kids[-1].tick():
+                pass
+            if kids[-1].status is RUNNING:
+                _reset(kids[-1])
+        self.in_catch = False
+        super().stop(new_status)
+
+    def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
+        kids = self.children
+        if self.status is not RUNNING:
+            self.in_catch = False
+        while not self.in_catch and self.idx < len(kids) - 1:
+            child = kids[self.idx]
+            yield from child.tick()
+            st = child.status
+            if st is RUNNING:
+                self.status = RUNNING
+                yield self
+                return
+            if st is FAILURE:
+                for c in kids:
+                    _reset(c)
+                self.idx = 0
+                self.in_catch = True
+            else:
+                self.idx += 1
+        if not self.in_catch:
+            self._finish(SUCCESS)
+            yield self
+            return
+        catch = kids[-1]
+        yield from catch.tick()
+        if catch.status is RUNNING:
+            self.status = RUNNING
+        else:
+            self._finish(FAILURE)
+        yield self
+
+    def _finish(self, st: Status) -> None:
+        """Done (not halted): reset the children without running the catch-on-halt."""
+        self.in_catch = False
+        Control.stop(self, st)
 
 
 class _Reactive(Control):
@@ -294,7 +378,6 @@ class _Reactive(Control):
     exhausted: Status
 
     def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
-        self.binding.episode.steps += 1
         for i, child in enumerate(self.children):
             yield from child.tick()
             st = child.status
@@ -328,7 +411,6 @@ class IfThenElse(Control):
     """
 
     def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
-        self.binding.episode.steps += 1
         kids = self.children
         if self.idx == 0:
             yield from kids[0].tick()
@@ -359,7 +441,6 @@ class WhileDoElse(Control):
     """Re-checks the condition every tick and halts the branch that is no longer chosen."""
 
     def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
-        self.binding.episode.steps += 1
         kids = self.children
         yield from kids[0].tick()
         cond = kids[0].status
@@ -393,8 +474,8 @@ class Parallel(Control, py_trees.composites.Parallel):
                  failure_count: int) -> None:
         super().__init__(name, children)
         n = len(children)
-        self.succ_needed = n + success_count + 1 if success_count < 0 else success_count
-        self.fail_needed = n + failure_count + 1 if failure_count < 0 else failure_count
+        self.succ_needed = parallel_threshold(success_count, n)
+        self.fail_needed = parallel_threshold(failure_count, n)
         self.done: set[int] = set()
         self.n_succ = 0
         self.n_fail = 0
@@ -410,7 +491,6 @@ class Parallel(Control, py_trees.composites.Parallel):
         self.n_succ = self.n_fail = 0
 
     def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
-        self.binding.episode.steps += 1
         n = len(self.children)
         for i, child in enumerate(self.children):
             if i in self.done:
@@ -446,7 +526,6 @@ class Decorator(BTNode, py_trees.decorators.Decorator):
         self.status = new_status
 
     def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
-        self.binding.episode.steps += 1
         yield from self.decorated.tick()
         st = self.map(self.decorated.status)
         if st is RUNNING:
@@ -485,7 +564,6 @@ class SubTree(Decorator):
 
 class KeepRunningUntilFailure(Decorator):
     def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
-        self.binding.episode.steps += 1
         yield from self.decorated.tick()
         st = self.decorated.status
         if st is RUNNING:
@@ -497,7 +575,8 @@ class KeepRunningUntilFailure(Decorator):
 
 
 class _CountedLoop(Decorator):
-    """Re-ticks its child up to `limit` times (< 0: forever); `stop_on` ends the loop at once.
+    """Re-ticks its child up to `limit` times (-1: forever, other negatives: never, as in
+    BT.CPP); `stop_on` ends the loop at once.
 
     RetryUntilSuccessful and Repeat are the same loop with the child's statuses swapped.
     """
@@ -519,12 +598,9 @@ class _CountedLoop(Decorator):
         self.status = IDLE
 
     def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
-        ep = self.binding.episode
         child = self.decorated
-        while self.limit < 0 or self.count < self.limit:
-            ep.steps += 1
-            if ep.steps > STEP_BUDGET:
-                raise BudgetExceeded
+        while self.limit == -1 or self.count < self.limit:
+            before = child.status
             yield from child.tick()
             st = child.status
             if st is RUNNING:
@@ -537,6 +613,12 @@ class _CountedLoop(Decorator):
                 return
             self.count += 1
             _reset(child)
+            if before is IDLE and (self.limit == -1 or self.count < self.limit):
+                # BT.CPP 4.x: a child that finished synchronously returns the flow to the
+                # parent before the next iteration (an interruptible loop)
+                self.status = RUNNING
+                yield self
+                return
         self.stop(self.exhausted)
         yield self
 
@@ -551,6 +633,7 @@ class Repeat(_CountedLoop):
 
 _COMPOSITE_CLASSES: dict[str, type[Control]] = {
     "Sequence": Sequence, "SequenceWithMemory": SequenceWithMemory, "Fallback": Fallback,
+    "AsyncSequence": AsyncSequence, "AsyncFallback": AsyncFallback,
     "ReactiveSequence": ReactiveSequence, "ReactiveFallback": ReactiveFallback,
     "IfThenElse": IfThenElse, "WhileDoElse": WhileDoElse,
 }
@@ -560,20 +643,30 @@ _SIMPLE_DECORATORS: dict[str, type[Decorator]] = {
 }
 
 
-def build_tree(policy: Policy, binding: Binding | None = None) -> BTNode:
+#: builds the node of an action/condition leaf from its policy node and py_trees name
+LeafFactory = Callable[[PolicyNode, str], "BTNode"]
+
+
+def build_tree(policy: Policy, binding: Binding | None = None,
+               leaves: LeafFactory | None = None) -> BTNode:
     """The policy's main tree as py_trees behaviours (SubTrees expanded in place), all sharing
-    `binding` (a new one if not given; reach it as `root.binding`)."""
+    `binding` (a new one if not given; reach it as `root.binding`). `leaves` replaces the action
+    library's leaves (the BT.CPP conformance corpus runs scripted stubs through it)."""
     root = policy.trees[policy.main]
-    node = _build(policy, root, f"{policy.main}/{root.label}", binding or Binding())
+    node = _build(policy, root, f"{policy.main}/{root.label}", binding or Binding(), leaves)
     node.tree_id = policy.main
     return node
 
 
-def _build(policy: Policy, p: PolicyNode, path: str, binding: Binding) -> BTNode:
+def _build(policy: Policy, p: PolicyNode, path: str, binding: Binding,
+           leaves: LeafFactory | None) -> BTNode:
     kind, name = p.kind, display_name(p)
-    kids = [_build(policy, c, f"{path}/{c.label}[{i}]", binding) for i, c in enumerate(p.children)]
+    kids = [_build(policy, c, f"{path}/{c.label}[{i}]", binding, leaves)
+            for i, c in enumerate(p.children)]
     node: BTNode
-    if kind in ACTIONS:
+    if leaves is not None and (kind in ACTIONS or kind in CONDITIONS):
+        node = leaves(p, name)
+    elif kind in ACTIONS:
         node = ActionNode(name, ACTIONS[kind], dict(p.params))
     elif kind in CONDITIONS:
         spec = CONDITIONS[kind]
@@ -584,11 +677,13 @@ def _build(policy: Policy, p: PolicyNode, path: str, binding: Binding) -> BTNode
     elif kind == "SubTree":
         sub = p.param("ID") or ""
         sub_root = policy.trees[sub]
-        child = _build(policy, sub_root, f"{path}/{sub_root.label}", binding)
+        child = _build(policy, sub_root, f"{path}/{sub_root.label}", binding, leaves)
         child.tree_id = sub
         node = SubTree(name, child)
     elif kind in _COMPOSITE_CLASSES:
         node = _COMPOSITE_CLASSES[kind](name, list(kids))
+    elif kind == "TryCatch":
+        node = TryCatch(name, list(kids), p.param("catch_on_halt") == "true")
     elif kind == "Parallel":
         node = Parallel(name, list(kids), int(p.param("success_count") or -1),
                         int(p.param("failure_count") or 1))

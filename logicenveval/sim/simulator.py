@@ -21,7 +21,6 @@ from logicenveval.sim.nodes import (
     IDLE,
     RUNNING,
     BTNode,
-    BudgetExceeded,
     Episode,
     Violation,
     build_tree,
@@ -58,8 +57,6 @@ class CompiledPolicy:
                     break
         except Violation:
             return "precondition_violation"
-        except BudgetExceeded:
-            return "tick_limit"
         if status is RUNNING:
             return "tick_limit"
         if status is FAILURE:
@@ -87,11 +84,6 @@ class CompiledPolicy:
             return Verdict(status="precondition_violation", fault_node=v.node.bt_name or v.node.label,
                            fault_path=v.node.path, message=v.message, ticks=ep.tick,
                            trace=ep.trace or [], final_state=world.summary())
-        except BudgetExceeded:
-            return Verdict(status="tick_limit", ticks=ep.tick, trace=ep.trace or [],
-                           message="a loop ran without ever returning RUNNING "
-                                   "(node-tick budget exhausted within one tick)",
-                           final_state=world.summary())
         if status is RUNNING:
             return Verdict(status="tick_limit", ticks=ep.tick, trace=ep.trace or [],
                            message=f"root still RUNNING after {tick_limit} ticks",

@@ -1,0 +1,57 @@
+"""`check-house HOUSE.json [--procthor-db DIR] [--json]`: will AI2-THOR load this house?
+
+Verifies asset ids, wall holes, materials and required keys against ProcTHOR's databases
+(`--procthor-db`: its procthor/databases folder), or, without it, against our recorded
+mapping (benchmark_data/procthor_assets.json) — which only knows the ids we chose, and says so.
+Exit 0 when the house passes, 1 when it has problems, 2 on an unreadable file.
+"""
+
+from __future__ import annotations
+
+import argparse
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("house", metavar="HOUSE.json", nargs="+", help="house JSON file(s)")
+    parser.add_argument("--procthor-db", metavar="DIR", default=None,
+                        help="ProcTHOR's procthor/databases folder (default: our recorded mapping)")
+    parser.add_argument("--json", action="store_true", help="print the reports as JSON")
+
+
+def run(args: argparse.Namespace) -> int:
+    import json
+    from pathlib import Path
+
+    from logicenveval.errors import ConfigError
+    from logicenveval.scene.house_check import check_house
+    from logicenveval.scene.procthor import load_mapping, load_procthor_db, mapping_db
+
+    db = load_procthor_db(args.procthor_db) if args.procthor_db else mapping_db(load_mapping())
+    if not args.procthor_db and not args.json:
+        print("no --procthor-db: checking against our recorded mapping only "
+              "(benchmark_data/procthor_assets.json), not ProcTHOR's full databases")
+    failed = 0
+    reports = {}
+    for name in args.house:
+        path = Path(name)
+        try:
+            house = json.loads(path.read_text(encoding="utf-8"))
+        except FileNotFoundError:
+            raise ConfigError("house file not found", file=name, hint="check the path") from None
+        except json.JSONDecodeError as exc:
+            raise ConfigError(f"invalid JSON: {exc.msg}", file=name, line=exc.lineno,
+                              hint="export it with `python -m logicenveval export`") from None
+        report = check_house(house, db)
+        reports[name] = report
+        failed += not report.passed
+        if not args.json:
+            state = "ok" if report.passed else f"{len(report.problems)} problem(s)"
+            print(f"{name}: {state} ({report.assets} asset ids, {report.unknown_ids} unknown ids, "
+                  f"{report.unknown_materials} unknown materials)")
+            for p in report.problems:
+                print(f"  {p.where}: {p.message}")
+    if args.json:
+        print(json.dumps({k: r.model_dump(mode="json") for k, r in reports.items()}, indent=2))
+    else:
+        print(f"{len(reports) - failed} of {len(reports)} house(s) pass against {db.source}")
+    return 1 if failed else 0

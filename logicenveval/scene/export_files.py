@@ -1,0 +1,63 @@
+"""Export files next to environments: `<env>.house.json` (ProcTHOR/AI2-THOR) and `<env>.glb`.
+
+Used by the `export` command and by `run --export`, which writes them for every environment of a
+run (skipping files already written, so a resumed run does not redo them).
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from logicenveval.domain.catalog import Catalog, load_catalog
+from logicenveval.envfiles import load_env
+from logicenveval.errors import ConfigError
+from logicenveval.model.envspec import ENV_SCHEMA
+
+SUFFIX = {"procthor": ".house.json", "glb": ".glb"}
+
+
+def export_env(env_path: Path, fmt: str, out: Path, catalog: Catalog | str | None = None) -> None:
+    from logicenveval.scene.export import to_glb, to_procthor
+
+    if fmt not in SUFFIX:
+        raise ConfigError(f"unknown export format {fmt!r}", field="--export",
+                          hint=f"use {', '.join(SUFFIX)}")
+    env = load_env(env_path)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    if fmt == "glb":
+        out.write_bytes(to_glb(env))
+        return
+    cat = catalog if isinstance(catalog, Catalog) else load_catalog(catalog)
+    out.write_text(json.dumps(to_procthor(env, cat), indent=1) + "\n", encoding="utf-8")
+
+
+def export_run(run_dir: Path, formats: list[str], catalog: Catalog | None = None) -> list[Path]:
+    """Write each format next to every environment JSON under `run_dir/envs`; returns new files."""
+    cat = catalog or load_catalog()
+    written = []
+    for env_path in sorted((run_dir / "envs").rglob("*.json")):
+        if env_path.name.endswith(".house.json") or not _is_env(env_path):
+            continue
+        for fmt in formats:
+            out = env_path.with_name(env_path.stem + SUFFIX[fmt])
+            if not out.exists():
+                export_env(env_path, fmt, out, cat)
+                written.append(out)
+    return written
+
+
+def _is_env(path: Path) -> bool:
+    """An EnvSpec file (the env folders also hold each unit's plan.json)."""
+    try:
+        return bool(json.loads(path.read_text(encoding="utf-8")).get("schema") == ENV_SCHEMA)
+    except (json.JSONDecodeError, AttributeError):
+        return False
+
+
+def write_bt_model(out: Path) -> None:
+    from logicenveval.sim.groot import tree_nodes_model
+
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.write_text('<?xml version="1.0" encoding="UTF-8"?>\n<root BTCPP_format="4">\n'
+                   + tree_nodes_model() + "</root>\n", encoding="utf-8")
