@@ -12,7 +12,7 @@ from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, T
 
 from logicenveval.benchmark import load_tasks, task_ids
 from logicenveval.errors import ConfigError
-from logicenveval.generators.base import registered
+from logicenveval.generators.plugins import GeneratorRef, resolve_generator
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.runner.config import RunConfig
 from logicenveval.runner.executors import make_executor
@@ -29,15 +29,25 @@ class RunOutcome:
     reused: int  # units found committed from an earlier, interrupted invocation
 
 
+def resolve_generators(config: RunConfig) -> list[GeneratorRef]:
+    """Resolve every `--generators` item (built-in, plug-in, MODULE:ATTR) before any unit runs."""
+    refs = [resolve_generator(g) for g in config.generators]
+    names = [r.name for r in refs]
+    if len(set(names)) != len(names):
+        raise ConfigError(f"two generators share a name in {names}", field="--generators",
+                          hint="list each generator once; plug-ins need distinct `name`s")
+    parallel = config.executor == "ray" or (config.executor == "process" and config.workers > 1)
+    for r in refs:
+        if parallel and not r.portable:
+            raise ConfigError(
+                f"generator {r.spec!r} was registered with a factory that worker processes "
+                "cannot import (a lambda, a nested function or a notebook cell)",
+                field="--generators",
+                hint="define it in a module and pass MODULE:ATTR, or use --executor inprocess")
+    return refs
+
+
 def _check(config: RunConfig) -> list[str]:
-    known = registered()
-    for g in config.generators:
-        if g not in known:
-            raise ConfigError(f"unknown generator {g!r}", field="--generators",
-                              hint="use one of " + ", ".join(known))
-    if len(set(config.generators)) != len(config.generators):
-        raise ConfigError("a generator is listed twice", field="--generators",
-                          hint="list each generator once")
     available = task_ids(config.tasks_dir)
     ids = list(config.tasks) or available
     missing = [t for t in ids if t not in available]
@@ -64,6 +74,7 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
     warm_up = getattr(executor, "warm_up", None)
     if callable(warm_up):
         warm_up()  # workers' imports overlap the checks, preflight and resume scan below
+    refs = resolve_generators(config)
     ids = _check(config)
     tasks = load_tasks(config.tasks_dir, ids)
     run_dir = config.run_dir()
@@ -71,11 +82,11 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
     store = RunStore(run_dir)
     store.bind_config(config.identity())
     specs = [
-        UnitSpec(generator=g, task_id=t, tasks_dir=config.tasks_dir, model=config.model,
-                 model_args=config.model_args, seed=config.seed, run_dir=str(run_dir),
-                 cache=config.cache, no_cache=config.no_cache, layout_solver=config.layout_solver,
-                 brief=config.brief)
-        for g in config.generators for t in ids
+        UnitSpec(generator=r.name, generator_target=r.target, generator_path=r.search_path, task_id=t,
+                 tasks_dir=config.tasks_dir, model=config.model, model_args=config.model_args,
+                 seed=config.seed, run_dir=str(run_dir), cache=config.cache,
+                 no_cache=config.no_cache, layout_solver=config.layout_solver, brief=config.brief)
+        for r in refs for t in ids
     ]
     records: dict[tuple[str, str], UnitRecord] = {}
     pending: list[UnitSpec] = []
@@ -93,9 +104,9 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
         TimeRemainingColumn(), console=console, disable=not show_progress, transient=False,
     ) as progress:
         bars = {
-            g: progress.add_task(g, total=len(ids),
-                                 completed=sum(1 for (gg, _) in records if gg == g))
-            for g in config.generators
+            r.name: progress.add_task(r.name, total=len(ids),
+                                      completed=sum(1 for (gg, _) in records if gg == r.name))
+            for r in refs
         }
         for _, chunk in executor.map_unordered(run_units, chunk_units(pending, config.workers)):
             for record in chunk:
@@ -103,7 +114,8 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
                 records[(record.generator, record.task_id)] = record
                 progress.advance(bars[record.generator])
     ordered = [records[(s.generator, s.task_id)] for s in specs]
-    results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start)
+    results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start,
+                            generators=[r.name for r in refs])
     from logicenveval.reporting.leaderboard import write_leaderboards
 
     report_start = time.perf_counter()
