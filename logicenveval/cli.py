@@ -18,8 +18,11 @@ from logicenveval.redact import redact
 COMMANDS: dict[str, tuple[str, str]] = {
     "run": ("logicenveval.commands.run", "evaluate generators on the benchmark, write a leaderboard"),
     "tasks": ("logicenveval.commands.tasks", "list, show, validate or summarise benchmark tasks"),
+    "evaluate": ("logicenveval.commands.evaluate", "score a folder of EnvSpecs made by any tool"),
     "generate": ("logicenveval.commands.generate", "run one generator on one task"),
     "simulate": ("logicenveval.commands.simulate", "run a policy (BT) in an environment or situation"),
+    "import-house": ("logicenveval.commands.import_house",
+                     "convert a ProcTHOR/AI2-THOR house (schema 1.0.0) into an EnvSpec"),
     "check-env": ("logicenveval.commands.check_env", "check an EnvSpec's physical plausibility"),
     "export": ("logicenveval.commands.export", "write an environment as ProcTHOR house JSON or GLB"),
     "check-house": ("logicenveval.commands.check_house",

@@ -18,7 +18,7 @@ from logicenveval.cli import main
 TASKS = "clean_living_room,hallway_entry_tidy,kitchen_fridge_restock"
 GENERATORS = "logicenvgen,cot,ifg,holodeck"
 KEYS = {"phypr", "logcov", "ld", "scevr", "faudr", "st_ms", "st_ticks", "ji", "redundancy", "n_envs",
-        "plausibility", "faudr_mut", "faudr_mut_by_class"}
+        "plausibility", "faudr_mut", "faudr_mut_by_class", "ci95"}
 
 
 def _run(out: Path, *extra: str) -> int:
@@ -112,6 +112,8 @@ def test_compare_and_report(first_run: Path, capsys: pytest.CaptureFixture[str])
     worse.mkdir(exist_ok=True)
     results = json.loads((first_run / "results.json").read_text())
     results["results"]["logicenvgen"]["logcov"] -= 0.1
+    for per in results["per_task"]["logicenvgen"].values():  # compare pairs the per-task figures
+        per["logcov"] -= 0.1
     (worse / "results.json").write_text(json.dumps(results))
     assert main(["compare", str(first_run), str(worse)]) == 1
     assert "REGRESSION" in capsys.readouterr().out

@@ -1,4 +1,4 @@
-"""`report RUN_DIR`: rebuild leaderboard.md and leaderboard.html from a run folder."""
+"""`report RUN_DIR [RUN_DIR ...] [--out DIR]`: rebuild a run's leaderboards, or merge runs into one."""
 
 from __future__ import annotations
 
@@ -7,14 +7,25 @@ from pathlib import Path
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
-    p.add_argument("run_dir", help="a folder written by `run`")
+    p.add_argument("run_dirs", nargs="+", metavar="RUN_DIR", help="folders written by `run`/`evaluate`")
+    p.add_argument("--out", default=None,
+                   help="folder of the merged leaderboard (default: the run folder for one run, "
+                   "reports/merged for several)")
 
 
 def run(args: argparse.Namespace) -> int:
-    from logicenveval.reporting.leaderboard import write_leaderboards
-    from logicenveval.runner.results import load_results
+    dirs = [Path(d) for d in args.run_dirs]
+    if len(dirs) == 1 and args.out is None:
+        from logicenveval.reporting.leaderboard import write_leaderboards
+        from logicenveval.runner.results import load_results
 
-    run_dir = Path(args.run_dir)
-    write_leaderboards(run_dir, load_results(run_dir))
-    print(f"wrote {run_dir / 'leaderboard.md'} and {run_dir / 'leaderboard.html'}")
+        write_leaderboards(dirs[0], load_results(dirs[0]))
+        print(f"wrote {dirs[0] / 'leaderboard.md'} and {dirs[0] / 'leaderboard.html'}")
+        return 0
+    from logicenveval.reporting.merged import merged_markdown, write_merged
+
+    out = Path(args.out or "reports/merged")
+    runs = write_merged(dirs, out)
+    print(merged_markdown(runs))
+    print(f"wrote {out / 'leaderboard.md'} and {out / 'leaderboard.html'}")
     return 0

@@ -21,11 +21,15 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                    help="offline | oracle | openai:<model> | replay:<cache.sqlite> (default offline)")
     p.add_argument("--model-args", default="", help="key=value,... e.g. base_url=...,api_key_env=...")
     p.add_argument("--generators", default=DEFAULT_GENERATORS, type=options.name_list,
-                   help="comma-separated generator names (ablations by name)")
+                   help="comma-separated: built-in names (ablations by name), installed plug-ins, "
+                   "or PKG.MODULE:ATTR (docs/own-generator.md)")
     p.add_argument("--tasks", default=(), type=_tasks, help="all or comma-separated task ids")
     p.add_argument("--tasks-dir", default=None, help="folder of <task_id>/task.json (default: the benchmark)")
     p.add_argument("--limit", type=options.int_range(1), default=None, help="only the first N tasks")
     p.add_argument("--seed", type=options.int_range(0), default=0)
+    p.add_argument("--seeds", default=None,
+                   help="comma-separated seeds: one run per seed, aggregated with intervals over "
+                   "tasks and seeds (overrides --seed)")
     p.add_argument("--layout-solver", default=DEFAULT_SOLVER, choices=SOLVERS,
                    help=f"layout backend of solver-based generators (default {DEFAULT_SOLVER}; docs/scene.md)")
     p.add_argument("--workers", type=options.workers, default=os.cpu_count() or 1)
@@ -80,6 +84,19 @@ def run(args: argparse.Namespace) -> int:
         if unknown:
             raise ConfigError(f"unknown export format(s) {unknown}", field="--export",
                               hint=f"use a comma-separated subset of {', '.join(SUFFIX)}")
+    if args.seeds is not None:
+        from logicenveval.runner.seeds import run_seeds
+
+        multi = run_seeds(config, _seeds(args.seeds), show_progress=not args.quiet)
+        if formats:
+            from logicenveval.scene.export_files import export_run
+
+            n = sum(len(export_run(d, formats)) for d in multi.seed_dirs)
+            print(f"exported {n} file(s) ({', '.join(formats)}) next to the environments")
+        print(markdown(multi.results))
+        print(f"run folder: {multi.run_dir} (seed runs {', '.join(str(d) for d in multi.seed_dirs)}; "
+              f"computed {multi.computed} unit(s), reused {multi.reused})")
+        return 0
     outcome = run_benchmark(config, show_progress=not args.quiet)
     if formats:
         from logicenveval.scene.export_files import export_run
@@ -105,3 +122,13 @@ def report_failures(records: Sequence[UnitRecord]) -> int:
 
 def _tasks(text: str) -> tuple[str, ...]:
     return () if text.strip() == "all" else options.name_list(text)
+
+
+def _seeds(text: str) -> list[int]:
+    from logicenveval.errors import ConfigError
+
+    try:
+        return [int(t) for t in text.split(",") if t.strip()]
+    except ValueError:
+        raise ConfigError(f"--seeds {text!r} is not a list of integers", field="--seeds",
+                          hint="e.g. --seeds 0,1,2") from None

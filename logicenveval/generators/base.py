@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import importlib
 import warnings
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Protocol
@@ -61,12 +62,12 @@ class Generator(Protocol):
     def generate(self, brief: TaskBrief, ctx: GenerationContext) -> GenerationResult: ...
 
 
-#: name -> "module:attribute"; the attribute is a class or factory taking keyword options
-_REGISTRY: dict[str, str] = {}
+#: name -> "module:attribute" (imported when first made) or the factory itself
+_REGISTRY: dict[str, str | Callable[..., Any]] = {}
 
 
-def register(name: str, entry_point: str) -> None:
-    """Register a generator by name (`module:attr`), imported only when first made."""
+def register(name: str, entry_point: str | Callable[..., Any]) -> None:
+    """Register a generator by name: `module:attr` (imported only when first made) or a factory."""
     _REGISTRY[name] = entry_point
 
 
@@ -95,15 +96,53 @@ def registered() -> list[str]:
     return sorted(_REGISTRY)
 
 
+def registry_entry(name: str) -> str | Callable[..., Any] | None:
+    """What `name` was registered with, or None."""
+    _load_builtin()
+    return _REGISTRY.get(name)
+
+
 def make_generator(name: str, **options: Any) -> Generator:
+    """Make a registered generator (old names via their alias), or import a `module:attr` target
+    (see generators.plugins)."""
     name = canonical_name(name)
-    if name not in _REGISTRY:
+    entry = _REGISTRY.get(name)
+    if entry is None and ":" in name:
+        entry = name
+    if entry is None:
         raise ConfigError(f"unknown generator {name!r}", field="--generators",
-                          hint="use one of " + ", ".join(sorted(_REGISTRY)))
-    module_name, attr = _REGISTRY[name].split(":")
-    factory = getattr(importlib.import_module(module_name), attr)
+                          hint="use one of " + ", ".join(sorted(_REGISTRY))
+                          + ", a PKG.MODULE:ATTR, or an installed plug-in (docs/own-generator.md)")
+    factory = import_target(entry) if isinstance(entry, str) else entry
     gen: Generator = factory(**options)
     return gen
+
+
+def import_target(target: str) -> Callable[..., Any]:
+    """The object `module:attr` (attr may be dotted) names; a clear error when it cannot be imported."""
+    module_name, _, attr = target.partition(":")
+    if not module_name or not attr:
+        raise ConfigError(f"generator {target!r} is not MODULE:ATTR", field="--generators",
+                          hint="write it as package.module:ClassOrFactory")
+    try:
+        obj: Any = importlib.import_module(module_name)
+    except ImportError as exc:
+        raise ConfigError(f"cannot import module {module_name!r} of generator {target!r}: {exc}",
+                          field="--generators",
+                          hint="check the spelling, install the package, or run from the folder "
+                          "that holds the module (it is imported from the current Python path)"
+                          ) from None
+    for part in attr.split("."):
+        if not hasattr(obj, part):
+            raise ConfigError(f"module {module_name!r} has no attribute {attr!r}",
+                              field="--generators",
+                              hint=f"name a class or factory defined in {module_name}")
+        obj = getattr(obj, part)
+    if not callable(obj):
+        raise ConfigError(f"generator {target!r} is not callable", field="--generators",
+                          hint="point at a generator class or a factory function")
+    factory: Callable[..., Any] = obj
+    return factory
 
 
 def _load_builtin() -> None:

@@ -12,6 +12,7 @@ from logicenveval.benchmark import load_task
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.envfiles import save_env
 from logicenveval.generators.base import GenerationContext, GenerationResult, make_generator
+from logicenveval.generators.plugins import resolve_generator
 from logicenveval.runner.store import atomic_write_text
 from logicenveval.runner.unit import unit_seed
 from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
@@ -49,9 +50,10 @@ def generate_to_folder(
     task = load_task(task_id, tasks_dir)
     catalog = load_catalog()
     chat = make_model(model, model_args, cache_path=cache or out / "llm_cache.sqlite", run_dir=out)
-    gen = make_generator(generator)
+    ref = resolve_generator(generator)
+    gen = make_generator(ref.target)
     ctx = GenerationContext(model=chat, catalog=catalog,
-                            rng=np.random.default_rng(unit_seed(seed, generator, task_id)),
+                            rng=np.random.default_rng(unit_seed(seed, ref.name, task_id)),
                             seed=seed, work_dir=out, layout_solver=layout_solver)
     result = gen.generate(task.brief(), ctx)
     summary = GenerateSummary(out=out, result=result)

@@ -41,6 +41,9 @@ LEGEND = (
 def metric(values: dict[str, Any], path: tuple[str, ...]) -> float | None:
     cur: Any = values
     for key in path:
+        if isinstance(cur, list) and key.isdigit() and int(key) < len(cur):
+            cur = cur[int(key)]
+            continue
         if not isinstance(cur, dict) or key not in cur:
             return None
         cur = cur[key]
@@ -59,13 +62,35 @@ def method_label(generator: str, model: str) -> str:
     return f"{generator} (oracle: upper bound)" if model == "oracle" else generator
 
 
+def cell(values: dict[str, Any], path: tuple[str, ...], pct: bool) -> str:
+    """One leaderboard cell: `value ± half-width` of the 95 % interval when results carry one."""
+    if path == ("n_envs",):
+        return str(int(values["n_envs"]))
+    text = fmt(metric(values, path), pct)
+    lo, hi = metric(values.get("ci95", {}), path + ("0",)), metric(values.get("ci95", {}), path + ("1",))
+    if lo is None or hi is None:
+        return text
+    half = (hi - lo) / 2
+    return f"{text} ± {100 * half:.2f}" if pct else f"{text} ± {half:.2f}"
+
+
 def rows(results: dict[str, Any]) -> list[list[str]]:
     out = []
     for gen, values in results["results"].items():
         out.append([method_label(gen, results.get("model", ""))]
-                   + [str(int(values["n_envs"])) if path == ("n_envs",) else fmt(metric(values, path), pct)
-                      for _, path, pct in COLUMNS])
+                   + [cell(values, path, pct) for _, path, pct in COLUMNS])
     return out
+
+
+def interval_note(results: dict[str, Any]) -> str:
+    """What `±` means under a leaderboard."""
+    over = "tasks and seeds" if results.get("seeds") else "tasks"
+    return f"± = half-width of the 95 % bootstrap interval over {over} (docs/runner.md)."
+
+
+def _seed_text(results: dict[str, Any]) -> str:
+    seeds = results.get("seeds")
+    return f"seeds {', '.join(str(s) for s in seeds)}" if seeds else f"seed {results.get('seed')}"
 
 
 def markdown(results: dict[str, Any]) -> str:
@@ -73,7 +98,7 @@ def markdown(results: dict[str, Any]) -> str:
     lines = [
         f"# LogicEnvEval leaderboard — run `{results.get('run_id', '?')}`",
         "",
-        f"Model: `{results.get('model')}` · seed {results.get('seed')} · "
+        f"Model: `{results.get('model')}` · {_seed_text(results)} · "
         f"brief `{results.get('brief', 'roles')}` · "
         f"{len(results.get('tasks', []))} tasks · commit `{results.get('git_commit') or 'n/a'}`",
         "",
@@ -85,5 +110,5 @@ def markdown(results: dict[str, Any]) -> str:
     if fails:
         lines += ["", "Recorded generation failures: "
                   + ", ".join(f"{g}: {n}" for g, n in sorted(fails.items()))]
-    lines += ["", LEGEND, ""]
+    lines += ["", LEGEND + " " + interval_note(results), ""]
     return "\n".join(lines)

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from logicenveval.domain.catalog import Catalog
-from logicenveval.domain.roles import bind_roles
+from logicenveval.domain.roles import RoleBinding, bind_roles
 from logicenveval.metrics.evaluate import coverage
 from logicenveval.metrics.records import EnvSample, PhysicsSummary, VerdictTrace
 from logicenveval.model.envspec import EnvSpec
@@ -20,6 +20,15 @@ from logicenveval.model.task import Task
 from logicenveval.physics import PhysicsReport, check_env
 from logicenveval.sim.simulator import simulate
 from logicenveval.sim.world import holds_initial
+
+
+def with_bound_roles(env: EnvSpec, task: Task, catalog: Catalog) -> tuple[EnvSpec, RoleBinding]:
+    """`env` as it is judged: the task's roles it does not map bound by `domain.roles`."""
+    own = {name: oid for name, oid in env.roles.items() if name in task.roles}
+    binding = bind_roles(env.model_copy(update={"roles": own}), task.roles, catalog)
+    if binding.roles != own:
+        env = env.model_copy(update={"roles": {**env.roles, **binding.roles}})
+    return env, binding
 
 
 @dataclass(frozen=True)
@@ -53,10 +62,7 @@ def evaluate_env(
     ~40 % to these sub-millisecond episodes), then traced for the report's drill-down, so that
     `report` never simulates.
     """
-    own = {name: oid for name, oid in env.roles.items() if name in task.roles}
-    binding = bind_roles(env.model_copy(update={"roles": own}), task.roles, catalog)
-    if binding.roles != own:
-        env = env.model_copy(update={"roles": {**env.roles, **binding.roles}})
+    env, binding = with_bound_roles(env, task, catalog)
     report = check_env(env, catalog)
     failures = [
         f.model_dump(mode="json")

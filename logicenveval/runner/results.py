@@ -6,23 +6,38 @@ same command gives byte-identical files apart from those timing fields.
 
 from __future__ import annotations
 
+import hashlib
 import importlib.metadata
 import json
 import platform
 import subprocess
+import zlib
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
+from typing import Any, Protocol
+
+import numpy as np
 
 from logicenveval.metrics.compute import aggregate, task_metrics
 from logicenveval.metrics.records import UnitRecord
+from logicenveval.metrics.uncertainty import ci95
 from logicenveval.model.task import Task
-from logicenveval.runner.config import RunConfig
 from logicenveval.runner.store import atomic_write_text
 
 RESULTS_SCHEMA = "logicenveval.results/1"
 _VERSIONED = ("logicenveval", "numpy", "pydantic", "z3-solver", "py-trees", "trimesh",
               "python-fcl", "shapely", "ortools", "pandas")
+
+
+def bootstrap_rng(seed: int, generator: str) -> np.random.Generator:
+    """The bootstrap's own stream: fixed by the run seed and the row, whatever else ran."""
+    return np.random.default_rng([seed, 95, zlib.crc32(generator.encode())])
+
+
+def task_hashes(tasks: Sequence[Task]) -> dict[str, str]:
+    """A digest per task (its full JSON): the benchmark version `compare` checks."""
+    return {t.id: hashlib.sha256(json.dumps(t.model_dump(mode="json"), sort_keys=True).encode())
+            .hexdigest()[:16] for t in tasks}
 
 
 def package_versions() -> dict[str, str]:
@@ -45,20 +60,37 @@ def git_commit() -> str | None:
     return proc.stdout.strip() or None if proc.returncode == 0 else None
 
 
+class ResultsConfig(Protocol):
+    """What results.json records of a run's configuration (`RunConfig`, `EvaluateConfig`)."""
+
+    @property
+    def model(self) -> str: ...
+    @property
+    def seed(self) -> int: ...
+    @property
+    def brief(self) -> str: ...
+    @property
+    def generators(self) -> tuple[str, ...]: ...
+    def identity(self) -> dict[str, object]: ...
+    def resolved_run_id(self) -> str: ...
+
+
 def build_results(
-    config: RunConfig,
+    config: ResultsConfig,
     tasks: Sequence[Task],
     records: Sequence[UnitRecord],
     *,
     wall_seconds: float | None = None,
+    generators: Sequence[str] | None = None,
 ) -> dict[str, Any]:
+    """`generators` are the row names (plug-ins' `name` attributes); default: config.generators."""
     by_task = {t.id: t for t in tasks}
     results: dict[str, Any] = {}
     per_task: dict[str, Any] = {}
     failures: dict[str, list[dict[str, Any]]] = {}
     gen_seconds: dict[str, float] = {}
     llm: dict[str, dict[str, float]] = {}
-    for gen in config.generators:
+    for gen in (config.generators if generators is None else generators):
         units = [r for r in records if r.generator == gen]
         metrics = [
             task_metrics(by_task[u.task_id], u.samples, n_failed=1 if u.error and not u.samples else 0,
@@ -67,6 +99,8 @@ def build_results(
         ]
         results[gen] = aggregate(metrics).model_dump(mode="json")
         per_task[gen] = {u.task_id: m.model_dump(mode="json") for u, m in zip(units, metrics, strict=True)}
+        results[gen]["ci95"] = ci95({(t, config.seed): m for t, m in per_task[gen].items()},
+                                    bootstrap_rng(config.seed, gen))
         failures[gen] = [
             {"task": u.task_id, "stage": "unit", "message": u.error, "kind": u.error_kind}
             for u in units if u.error
@@ -84,6 +118,7 @@ def build_results(
         "seed": config.seed,
         "brief": config.brief,
         "tasks": [t.id for t in tasks],
+        "benchmark": {"task_sha256": task_hashes(tasks)},
         "versions": package_versions(),
         "git_commit": git_commit(),
         "results": results,

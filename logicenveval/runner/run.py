@@ -14,7 +14,7 @@ from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, T
 from logicenveval.benchmark import load_tasks, policy_path, task_ids
 from logicenveval.benchmark_validation import situation_count
 from logicenveval.errors import ConfigError, RunFailedError
-from logicenveval.generators.base import registered
+from logicenveval.generators.plugins import GeneratorRef, resolve_generator
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.model.task import POLICY_KINDS
 from logicenveval.runner.config import RunConfig
@@ -33,21 +33,31 @@ class RunOutcome:
     records: tuple[UnitRecord, ...] = ()  # every unit of the run, in (generator, task) order
 
 
+def resolve_generators(config: RunConfig) -> list[GeneratorRef]:
+    """Resolve every `--generators` item (built-in, plug-in, MODULE:ATTR) before any unit runs."""
+    refs = [resolve_generator(g) for g in config.generators]
+    names = [r.name for r in refs]
+    if len(set(names)) != len(names):
+        raise ConfigError(f"two generators share a name in {names}", field="--generators",
+                          hint="list each generator once; plug-ins need distinct `name`s")
+    parallel = config.executor == "ray" or (config.executor == "process" and config.workers > 1)
+    for r in refs:
+        if parallel and not r.portable:
+            raise ConfigError(
+                f"generator {r.spec!r} was registered with a factory that worker processes "
+                "cannot import (a lambda, a nested function or a notebook cell)",
+                field="--generators",
+                hint="define it in a module and pass MODULE:ATTR, or use --executor inprocess")
+    return refs
+
+
 def _check(config: RunConfig) -> list[str]:
     if not config.generators:
         raise ConfigError("no generator selected", field="--generators",
-                          hint="name at least one of " + ", ".join(registered()))
+                          hint="name at least one generator (see docs/own-generator.md)")
     if len(set(config.tasks)) != len(config.tasks):
         dup = sorted({t for t in config.tasks if config.tasks.count(t) > 1})
         raise ConfigError(f"task(s) listed twice: {dup}", field="--tasks", hint="list each task once")
-    known = registered()
-    for g in config.generators:
-        if g not in known:
-            raise ConfigError(f"unknown generator {g!r}", field="--generators",
-                              hint="use one of " + ", ".join(known))
-    if len(set(config.generators)) != len(config.generators):
-        raise ConfigError("a generator is listed twice", field="--generators",
-                          hint="list each generator once")
     available = task_ids(config.tasks_dir)
     ids = list(config.tasks) or available
     missing = [t for t in ids if t not in available]
@@ -87,6 +97,7 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
     warm_up = getattr(executor, "warm_up", None)
     if callable(warm_up):
         warm_up()  # workers' imports overlap the checks, preflight and resume scan below
+    refs = resolve_generators(config)
     ids = _check(config)
     tasks = load_tasks(config.tasks_dir, ids)
     for task in tasks:  # before any unit: policy paths confined, situation count bounded
@@ -100,11 +111,11 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
     store.bind_config(config.identity())
     store.remove_stale_temp_files()
     specs = [
-        UnitSpec(generator=g, task_id=t, tasks_dir=config.tasks_dir, model=config.model,
-                 model_args=config.model_args, seed=config.seed, run_dir=str(run_dir),
-                 cache=config.cache, no_cache=config.no_cache, layout_solver=config.layout_solver,
-                 brief=config.brief)
-        for g in config.generators for t in ids
+        UnitSpec(generator=r.name, generator_target=r.target, generator_path=r.search_path, task_id=t,
+                 tasks_dir=config.tasks_dir, model=config.model, model_args=config.model_args,
+                 seed=config.seed, run_dir=str(run_dir), cache=config.cache,
+                 no_cache=config.no_cache, layout_solver=config.layout_solver, brief=config.brief)
+        for r in refs for t in ids
     ]
     records: dict[tuple[str, str], UnitRecord] = {}
     pending: list[UnitSpec] = []
@@ -122,9 +133,9 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
         TimeRemainingColumn(), console=console, disable=not show_progress, transient=False,
     ) as progress:
         bars = {
-            g: progress.add_task(g, total=len(ids),
-                                 completed=sum(1 for (gg, _) in records if gg == g))
-            for g in config.generators
+            r.name: progress.add_task(r.name, total=len(ids),
+                                      completed=sum(1 for (gg, _) in records if gg == r.name))
+            for r in refs
         }
         streak = 0
         # closing(): stopping early shuts the pool down at once and drops the queued units
@@ -144,7 +155,8 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
                             "finished units are kept and the failed ones are recomputed "
                             "(--max-infra-failures 0 never stops)")
     ordered = [records[(s.generator, s.task_id)] for s in specs]
-    results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start)
+    results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start,
+                            generators=[r.name for r in refs])
     from logicenveval.reporting.leaderboard import write_leaderboards
 
     report_start = time.perf_counter()

@@ -24,6 +24,7 @@ from logicenveval.envfiles import env_to_json
 from logicenveval.errors import CacheMissError, LogicEnvEvalError, ModelConnectionError
 from logicenveval.generators.base import GenerationContext, make_generator
 from logicenveval.generators.brief import BriefMode, generator_brief
+from logicenveval.generators.plugins import ensure_importable
 from logicenveval.llm.base import ChatModel, ChatRequest
 from logicenveval.llm.fewshot import FewShotModel
 from logicenveval.metrics.records import EnvDetail, EnvSample, UnitRecord
@@ -38,7 +39,7 @@ class UnitSpec(BaseModel):
     """Everything a worker process needs to run one unit (picklable, no live objects)."""
 
     model_config = ConfigDict(frozen=True)
-    generator: str
+    generator: str  # the row name: seeds, storage and records use it
     task_id: str
     tasks_dir: str | None
     model: str
@@ -49,6 +50,10 @@ class UnitSpec(BaseModel):
     cache: str | None = None
     no_cache: bool = False
     brief: BriefMode = "roles"
+    #: what the worker makes (a registered name or MODULE:ATTR; generators.plugins); None = name
+    generator_target: str | None = None
+    #: where the target's module was found in the parent (generators.plugins.GeneratorRef)
+    generator_path: str | None = None
 
 
 def unit_seed(seed: int, generator: str, task_id: str) -> list[int]:
@@ -91,7 +96,9 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
         model = watched
         if spec.brief == "description":
             model = FewShotModel(watched)
-        generator = make_generator(spec.generator)
+        target = spec.generator_target or spec.generator
+        ensure_importable(target, spec.generator_path)
+        generator = make_generator(target)
         ctx = GenerationContext(
             model=model,
             catalog=catalog,

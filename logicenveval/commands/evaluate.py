@@ -1,0 +1,43 @@
+"""`evaluate ENVS_DIR`: score a folder of EnvSpecs made by any tool, like a generator in `run`."""
+
+from __future__ import annotations
+
+import argparse
+import os
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    p.add_argument("envs_dir", help="folder of <task_id>/*.json EnvSpecs (e.g. a run's envs/<generator>)")
+    p.add_argument("--name", default=None, help="leaderboard row name (default: the folder's name)")
+    p.add_argument("--tasks", default="found",
+                   help="comma-separated task ids; 'found' (default) = every task folder in ENVS_DIR")
+    p.add_argument("--tasks-dir", default=None, help="folder of <task_id>/task.json (default: the benchmark)")
+    p.add_argument("--workers", type=int, default=os.cpu_count() or 1)
+    p.add_argument("--executor", default="process", choices=["process", "inprocess", "ray"])
+    p.add_argument("--output", default="reports", help="parent folder of run folders")
+    p.add_argument("--run-id", default=None, help="run folder name (default: derived from the inputs)")
+
+
+def run(args: argparse.Namespace) -> int:
+    from logicenveval.reporting.tables import markdown
+    from logicenveval.runner.score_envs import EvaluateConfig, evaluate_envs
+
+    config = EvaluateConfig(
+        envs_dir=args.envs_dir,
+        name=args.name,
+        tasks=() if args.tasks == "found" else tuple(t.strip() for t in args.tasks.split(",") if t.strip()),
+        tasks_dir=args.tasks_dir,
+        workers=max(1, args.workers),
+        executor=args.executor,
+        output=args.output,
+        run_id=args.run_id,
+    )
+    outcome = evaluate_envs(config)
+    print(markdown(outcome.results))
+    for folder in outcome.skipped_folders:
+        print(f"skipped {folder}/: not a task of the tasks dir")
+    for f in outcome.results["failures"].get(config.generator_name, []):
+        print(f"failure {f['task']}: {f.get('env_id') or ''} {f['message']}".replace("  ", " "))
+    print(f"run folder: {outcome.run_dir} (scored {outcome.computed} task folder(s), "
+          f"reused {outcome.reused})")
+    return 0

@@ -1,0 +1,145 @@
+"""Generators from outside the package: `PKG.MODULE:ATTR`, installed plug-ins, notebook factories.
+
+A `--generators` item is resolved once, in the parent process, to a `GeneratorRef`: the row
+name (the generator's own `name` attribute) and an importable *target* that travels inside every
+unit's spec. Workers (spawned processes, Ray tasks) import the target themselves, so a
+generator works the same under every executor without any registration in the workers.
+
+Resolution order of an item: a registered name (built-ins, `register_generator`), then an entry
+point of the group `logicenveval.generators` published by an installed package, then
+`MODULE:ATTR` imported from the current Python path.
+"""
+
+from __future__ import annotations
+
+import importlib
+import importlib.metadata
+import importlib.util
+import sys
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from logicenveval.errors import ConfigError
+from logicenveval.generators.base import (
+    canonical_name,
+    import_target,
+    make_generator,
+    register,
+    registry_entry,
+)
+
+ENTRY_POINT_GROUP = "logicenveval.generators"
+
+
+@dataclass(frozen=True)
+class GeneratorRef:
+    spec: str  # as the user wrote it
+    name: str  # the generator's `name` attribute: its leaderboard row, units/ and envs/ folder
+    target: str  # what a worker passes to `make_generator`: a registered name or MODULE:ATTR
+    portable: bool = True  # False: a factory registered in this process that workers cannot import
+    #: the folder the target's top-level module was imported from, for workers whose Python path
+    #: lacks it (a Ray worker started elsewhere); None for registered names
+    search_path: str | None = None
+
+
+def entry_points() -> dict[str, str]:
+    """Installed plug-ins: entry-point name -> `module:attr`."""
+    return {ep.name: ep.value for ep in importlib.metadata.entry_points(group=ENTRY_POINT_GROUP)}
+
+
+def register_generator(name: str, factory: Callable[..., Any] | str) -> None:
+    """Make `factory` (a generator class, a function returning a generator, or `module:attr`)
+    available under `name` to `run`, `evaluate` and `make_generator` — e.g. from a notebook.
+
+    Process-pool and Ray workers import the factory by its module and qualified name, so define
+    it in a module (or a script run as `__main__`) rather than as a lambda or a nested function;
+    an interactive notebook's factories need `--executor inprocess`.
+    """
+    if not name or not isinstance(name, str):
+        raise ConfigError("a generator needs a non-empty name", field="name",
+                          hint="register_generator('my-gen', MyGenerator)")
+    if not (callable(factory) or isinstance(factory, str)):
+        raise ConfigError(f"factory of generator {name!r} is neither callable nor MODULE:ATTR",
+                          field="factory", hint="pass the generator class or a factory function")
+    register(name, factory)
+
+
+def _portable(factory: Callable[..., Any]) -> str | None:
+    """`module:qualname` when a fresh worker can import `factory` by that path, else None."""
+    module = getattr(factory, "__module__", None)
+    qualname = getattr(factory, "__qualname__", None)
+    if not module or not qualname or "<" in qualname:
+        return None
+    if module == "__main__" and not getattr(sys.modules.get("__main__"), "__file__", None):
+        return None  # an interactive session: nothing a worker could re-import
+    return f"{module}:{qualname}"
+
+
+def resolve_generator(spec: str) -> GeneratorRef:
+    """Resolve one `--generators` item; unknown or unimportable -> `ConfigError` (exit 2)."""
+    if ":" not in spec:
+        spec = canonical_name(spec)  # an old name of a renamed generator (with a FutureWarning)
+    entry = registry_entry(spec)
+    portable = True
+    if entry is not None:
+        target = spec if isinstance(entry, str) else (_portable(entry) or spec)
+        portable = isinstance(entry, str) or target != spec
+    elif spec in (eps := entry_points()):
+        target = eps[spec]
+    elif ":" in spec:
+        target = spec
+    else:
+        from logicenveval.generators.base import registered
+
+        raise ConfigError(
+            f"unknown generator {spec!r}", field="--generators",
+            hint="use a built-in name (" + ", ".join(registered()) + "), an installed plug-in ("
+            + (", ".join(sorted(eps)) or f"none installed in group {ENTRY_POINT_GROUP}")
+            + "), or PKG.MODULE:ATTR (docs/own-generator.md)")
+    if entry is None:
+        import_target(target)  # the module error, before any unit runs
+    try:
+        gen = make_generator(target)
+    except ConfigError:
+        raise
+    except Exception as exc:  # a plug-in's constructor: report it as bad input, with the cause
+        raise ConfigError(f"generator {spec!r} could not be constructed: {type(exc).__name__}: {exc}",
+                          field="--generators",
+                          hint="its class or factory must be callable without arguments") from None
+    name = getattr(gen, "name", None)
+    if not isinstance(name, str) or not name.strip() or "/" in name or name.startswith("."):
+        raise ConfigError(f"generator {spec!r} has no usable `name` attribute ({name!r})",
+                          field="--generators",
+                          hint="give the generator a `name` string: it names its leaderboard row")
+    if not callable(getattr(gen, "generate", None)):
+        raise ConfigError(f"generator {spec!r} has no generate(brief, ctx) method",
+                          field="--generators", hint="implement the Generator protocol "
+                          "(logicenveval.generators.base)")
+    return GeneratorRef(spec=spec, name=name if entry is None else spec, target=target,
+                        portable=portable, search_path=_import_root(target))
+
+
+def _import_root(target: str) -> str | None:
+    """The sys.path entry that provides the top-level module of `module:attr`, if any."""
+    if ":" not in target:
+        return None
+    top = target.partition(":")[0].split(".")[0]
+    if top == "__main__":
+        return None  # a script's own classes: process workers re-import the script themselves
+    found = importlib.util.find_spec(top)
+    if found is None:
+        return None
+    if found.submodule_search_locations:
+        return str(Path(next(iter(found.submodule_search_locations))).resolve().parent)
+    return str(Path(found.origin).resolve().parent) if found.origin else None
+
+
+def ensure_importable(target: str, search_path: str | None) -> None:
+    """In a worker: make `target`'s module importable from `search_path` when it is not already."""
+    if search_path is None or ":" not in target:
+        return
+    top = target.partition(":")[0].split(".")[0]
+    if importlib.util.find_spec(top) is None and search_path not in sys.path:
+        sys.path.append(search_path)

@@ -1,0 +1,246 @@
+"""`python -m logicenveval evaluate ENVS_DIR`: score environments made by any tool.
+
+`ENVS_DIR/<task_id>/*.json` are EnvSpecs (DESIGN.md §6). Each task folder is one unit, judged
+exactly as a `run` judges a generator's environments (`runner.evaluation.evaluate_env`: physics,
+role binding, GT coverage, the four policies), committed to the same resumable store and
+summarised into the same results.json, samples.jsonl and leaderboards. So scoring the
+`envs/<generator>` folder of a run reproduces that run's metrics for the generator.
+
+A file that is not a valid EnvSpec (bad JSON, a missing field, another task's `task_id`) is a
+recorded failure of that file with its reason; the task's other files still count. A task
+folder with no valid EnvSpec counts like a failed generation (zero coverage).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import re
+import time
+import traceback
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from pydantic import BaseModel, ConfigDict, Field
+
+from logicenveval.benchmark import load_task, load_tasks, policy_path, task_ids
+from logicenveval.domain.catalog import load_catalog
+from logicenveval.envfiles import env_to_json, load_env
+from logicenveval.errors import ConfigError, LogicEnvEvalError
+from logicenveval.generators.base import GenerationFailure
+from logicenveval.metrics.records import EnvDetail, UnitRecord
+from logicenveval.model.task import POLICY_KINDS
+from logicenveval.runner.executors import make_executor
+from logicenveval.runner.results import build_results, write_outputs
+from logicenveval.runner.store import RunStore, atomic_write_text, text_digest
+
+#: artefacts a run writes next to its environments; not EnvSpecs, so not scored
+ARTEFACTS = frozenset({"plan.json"})
+
+
+class EvaluateConfig(BaseModel):
+    """What `evaluate` scores; its identity names the run folder, so a re-run resumes it."""
+
+    model_config = ConfigDict(frozen=True, extra="forbid")
+    envs_dir: str
+    name: str | None = None  # leaderboard row; default: the folder's name
+    tasks: tuple[str, ...] = ()  # empty: every task folder found in envs_dir
+    tasks_dir: str | None = None
+    workers: int = Field(default=1, ge=1)
+    executor: str = "process"
+    output: str = "reports"
+    run_id: str | None = None
+    model: str = "external"
+    seed: int = 0
+    brief: str = "external"  # what the making tool was told is unknown to the harness
+
+    @property
+    def generator_name(self) -> str:
+        return self.name or Path(self.envs_dir).resolve().name
+
+    @property
+    def generators(self) -> tuple[str, ...]:
+        return (self.generator_name,)
+
+    def identity(self) -> dict[str, object]:
+        """What is scored, including a digest of the files: edited files give a new run folder."""
+        return {
+            "mode": "evaluate",
+            "envs_dir": str(Path(self.envs_dir).resolve()),
+            "envs_sha256": folder_digest(Path(self.envs_dir)),
+            "generators": [self.generator_name],
+            "tasks": list(self.tasks),
+            "tasks_dir": self.tasks_dir,
+        }
+
+    def resolved_run_id(self) -> str:
+        if self.run_id:
+            return self.run_id
+        blob = json.dumps(self.identity(), sort_keys=True).encode()
+        slug = re.sub(r"[^A-Za-z0-9]+", "-", self.generator_name).strip("-").lower() or "envs"
+        return f"evaluate-{slug}-{hashlib.sha256(blob).hexdigest()[:8]}"
+
+    def run_dir(self) -> Path:
+        return Path(self.output) / self.resolved_run_id()
+
+
+class ScoreUnitSpec(BaseModel):
+    """One task folder to score (picklable for process and Ray workers)."""
+
+    model_config = ConfigDict(frozen=True)
+    generator: str
+    task_id: str
+    folder: str
+    tasks_dir: str | None
+    run_dir: str
+
+
+@dataclass(frozen=True)
+class EvaluateOutcome:
+    run_dir: Path
+    results: dict[str, Any]
+    computed: int
+    reused: int
+    skipped_folders: list[str] = field(default_factory=list)  # not tasks of the tasks dir
+
+
+def folder_digest(root: Path) -> str:
+    """SHA-256 over every candidate EnvSpec file's relative path and content."""
+    h = hashlib.sha256()
+    if root.is_dir():
+        for folder in sorted(p for p in root.iterdir() if p.is_dir()):
+            for path in env_files(folder):
+                h.update(f"{folder.name}/{path.name}\0".encode())
+                h.update(hashlib.sha256(path.read_bytes()).digest())
+    return h.hexdigest()[:16]
+
+
+def _natural(path: Path) -> list[object]:
+    return [int(t) if t.isdigit() else t for t in re.split(r"(\d+)", path.name)]
+
+
+def env_files(folder: Path) -> list[Path]:
+    """The EnvSpec candidates of a task folder, in natural name order (env-2 before env-10)."""
+    return sorted((p for p in folder.glob("*.json")
+                   if p.is_file() and p.name not in ARTEFACTS and not p.name.startswith(".")),
+                  key=_natural)
+
+
+def score_unit(spec: ScoreUnitSpec) -> UnitRecord:
+    """Judge every EnvSpec of one task folder; a bad file is a failure, never an exception."""
+    from logicenveval.faults.score import scorer_for
+    from logicenveval.physics.render import render_svg
+    from logicenveval.runner.evaluation import evaluate_env
+    from logicenveval.sim.loader import load_policy
+
+    task = load_task(spec.task_id, spec.tasks_dir)
+    catalog = load_catalog()
+    policies = {k: load_policy(policy_path(task, k, spec.tasks_dir)) for k in POLICY_KINDS}
+    folder = Path(spec.folder)
+    failures: list[GenerationFailure] = []
+    samples = []
+    details: list[EnvDetail] = []
+    files: dict[str, str] = {}
+    seen: set[str] = set()
+    # mutation scoring exactly as `run_unit` does it (faudr_mut)
+    scorer = scorer_for(task, spec.tasks_dir, catalog, cache_dir=Path(spec.run_dir) / "work" / "mutants")
+    for path in env_files(folder):
+        try:
+            env = load_env(path)
+            if env.task_id != task.id:
+                raise ConfigError(f"task_id {env.task_id!r} but the file is in the folder of task "
+                                  f"{task.id!r}", file=str(path), field="task_id",
+                                  hint="move the file to its task's folder or fix its task_id")
+            if env.env_id in seen:
+                raise ConfigError(f"env_id {env.env_id!r} is used by another file of this task",
+                                  file=str(path), field="env_id", hint="give every environment its own env_id")
+            seen.add(env.env_id)
+            done = evaluate_env(spec.generator, task, env, policies, catalog)
+            sample = done.sample
+            if sample.well_formed and sample.verdicts.get("correct") == "passed":
+                start = time.perf_counter()
+                killed = scorer.killed(done.env, task, catalog)
+                ms = (time.perf_counter() - start) * 1000.0
+                sample = sample.model_copy(update={"killed_mutants": killed,
+                                                   "sim_ms": {**sample.sim_ms, "mutants": ms}})
+        except LogicEnvEvalError as exc:
+            failures.append(GenerationFailure(stage="load", message=str(exc), env_id=path.stem))
+            continue
+        except Exception as exc:  # a malformed-but-valid env must not stop the others
+            why = traceback.format_exception_only(type(exc), exc)[-1].strip()
+            failures.append(GenerationFailure(stage="evaluate", message=f"{path}: internal error: {why}",
+                                              env_id=path.stem))
+            continue
+        text = env_to_json(env)  # the file as given: a resumed run re-reads it, not the bound copy
+        rel = (Path("envs") / spec.generator / spec.task_id / f"{env.env_id}.json").as_posix()
+        atomic_write_text(Path(spec.run_dir) / rel, text, durable=False)
+        files[rel] = text_digest(text)
+        render = (Path("renders") / spec.generator / spec.task_id / f"{env.env_id}.svg").as_posix()
+        atomic_write_text(Path(spec.run_dir) / render, render_svg(done.env, done.physics),
+                          durable=False)
+        samples.append(sample)
+        details.append(EnvDetail(env_id=env.env_id, render=render, traces=done.traces))
+    error = None
+    if not samples:
+        error = (f"no valid EnvSpec in {folder}" if folder.is_dir()
+                 else f"no folder {folder} for this task")
+    return UnitRecord(generator=spec.generator, task_id=spec.task_id, samples=samples,
+                      failures=failures, error=error, mutants=scorer.classes, details=details,
+                      files=files)
+
+
+def _task_ids(config: EvaluateConfig) -> tuple[list[str], list[str]]:
+    root = Path(config.envs_dir)
+    if not root.is_dir():
+        raise ConfigError("not a folder", file=str(root),
+                          hint="pass a folder of <task_id>/*.json EnvSpecs (e.g. a run's envs/<generator>)")
+    known = task_ids(config.tasks_dir)
+    if config.tasks:
+        missing = [t for t in config.tasks if t not in known]
+        if missing:
+            raise ConfigError(f"unknown task(s) {missing}", field="--tasks",
+                              hint="see `python -m logicenveval tasks list`")
+        return list(config.tasks), []
+    folders = sorted(p.name for p in root.iterdir() if p.is_dir() and not p.name.startswith("."))
+    found = [t for t in known if t in folders]
+    if not found:
+        raise ConfigError(f"no folder named after a task (found {folders[:5]})", file=str(root),
+                          hint="lay out ENVS_DIR/<task_id>/*.json; task ids: "
+                          "`python -m logicenveval tasks list`")
+    return found, [f for f in folders if f not in known]
+
+
+def evaluate_envs(config: EvaluateConfig) -> EvaluateOutcome:
+    """Score `config.envs_dir` into `config.run_dir()` (resuming committed task units)."""
+    ids, skipped = _task_ids(config)
+    tasks = load_tasks(config.tasks_dir, ids)
+    run_dir = config.run_dir()
+    store = RunStore(run_dir)
+    store.bind_config(config.identity())
+    name = config.generator_name
+    specs = [ScoreUnitSpec(generator=name, task_id=t, folder=str(Path(config.envs_dir) / t),
+                           tasks_dir=config.tasks_dir, run_dir=str(run_dir)) for t in ids]
+    records: dict[str, UnitRecord] = {}
+    pending = []
+    for spec in specs:
+        stored = store.load(name, spec.task_id)
+        if stored is None:
+            pending.append(spec)
+        else:
+            records[spec.task_id] = stored
+    reused = len(records)
+    start = time.perf_counter()
+    for spec, record in make_executor(config.executor, config.workers).map_unordered(score_unit, pending):
+        store.save(record)
+        records[spec.task_id] = record
+    ordered = [records[t] for t in ids]
+    results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start,
+                            generators=[name])
+    write_outputs(run_dir, results, ordered)
+    from logicenveval.reporting.leaderboard import write_leaderboards
+
+    write_leaderboards(run_dir, results, ordered)
+    return EvaluateOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused,
+                           skipped_folders=skipped)
+

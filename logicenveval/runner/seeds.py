@@ -1,0 +1,114 @@
+"""`run --seeds 0,1,2`: one complete run per seed, then one results.json over all of them.
+
+Each seed is an ordinary run in `<parent>/seed<S>/` (its own units, resumable on its own), so a
+multi-seed run killed midway keeps every finished unit of every seed. The parent's results.json
+has the usual `results.<generator>` keys computed over every (task, seed) cell exactly as a
+single run computes them over tasks, `per_task_seed.<generator>.<task>.<seed>` instead of
+`per_task`, and intervals from a two-level bootstrap (tasks, then seeds; metrics.uncertainty).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import re
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from rich.console import Console
+
+from logicenveval.errors import ConfigError
+from logicenveval.metrics.uncertainty import ci95, point_metrics
+from logicenveval.runner.config import RunConfig
+from logicenveval.runner.results import RESULTS_SCHEMA, bootstrap_rng
+from logicenveval.runner.run import run
+from logicenveval.runner.store import RunStore, atomic_write_text
+
+
+@dataclass(frozen=True)
+class SeedsOutcome:
+    run_dir: Path
+    results: dict[str, Any]
+    seed_dirs: list[Path]
+    computed: int
+    reused: int
+
+
+def seeds_identity(config: RunConfig, seeds: Sequence[int]) -> dict[str, object]:
+    identity = {k: v for k, v in config.identity().items() if k != "seed"}
+    return {**identity, "seeds": list(seeds)}
+
+
+def seeds_run_dir(config: RunConfig, seeds: Sequence[int]) -> Path:
+    if config.run_id:
+        return Path(config.output) / config.run_id
+    blob = json.dumps(seeds_identity(config, seeds), sort_keys=True).encode()
+    slug = re.sub(r"[^A-Za-z0-9]+", "-", config.model).strip("-").lower() or "model"
+    tag = "-".join(str(s) for s in seeds)
+    return Path(config.output) / f"{slug}-seeds{tag}-{hashlib.sha256(blob).hexdigest()[:8]}"
+
+
+def run_seeds(config: RunConfig, seeds: Sequence[int], *, console: Console | None = None,
+              show_progress: bool = True) -> SeedsOutcome:
+    if not seeds or len(set(seeds)) != len(seeds):
+        raise ConfigError(f"--seeds needs distinct seeds, got {list(seeds)}", field="--seeds",
+                          hint="e.g. --seeds 0,1,2")
+    parent = seeds_run_dir(config, seeds)
+    RunStore(parent).bind_config(seeds_identity(config, seeds))
+    per_seed = []
+    computed = reused = 0
+    for seed in seeds:
+        one = config.model_copy(update={"seed": seed, "output": str(parent), "run_id": f"seed{seed}"})
+        outcome = run(one, console=console, show_progress=show_progress)
+        per_seed.append(outcome.results)
+        computed += outcome.computed
+        reused += outcome.reused
+    results = combine_seeds(parent.name, seeds_identity(config, seeds), per_seed)
+    atomic_write_text(parent / "results.json", json.dumps(results, indent=2, sort_keys=True) + "\n")
+    from logicenveval.reporting.leaderboard import write_leaderboards
+
+    write_leaderboards(parent, results)
+    return SeedsOutcome(run_dir=parent, results=results,
+                        seed_dirs=[parent / f"seed{s}" for s in seeds], computed=computed,
+                        reused=reused)
+
+
+def combine_seeds(run_id: str, identity: dict[str, object],
+                  per_seed: Sequence[dict[str, Any]]) -> dict[str, Any]:
+    """One results dict over several single-seed results of the same generators and tasks."""
+    first = per_seed[0]
+    seeds = [int(r["seed"]) for r in per_seed]
+    for r in per_seed[1:]:
+        if r["tasks"] != first["tasks"] or list(r["results"]) != list(first["results"]):
+            raise ConfigError("seed runs differ in tasks or generators", field="--seeds",
+                              hint="combine runs of one configuration")
+    results: dict[str, Any] = {}
+    per_task_seed: dict[str, Any] = {}
+    failures: dict[str, list[dict[str, Any]]] = {}
+    for gen in first["results"]:
+        per_task_seed[gen] = {t: {str(r["seed"]): r["per_task"][gen][t] for r in per_seed}
+                              for t in first["tasks"]}
+        cells = {(t, int(s)): m for t, by in per_task_seed[gen].items() for s, m in by.items()}
+        results[gen] = point_metrics(list(cells.values()))
+        results[gen]["ci95"] = ci95(cells, bootstrap_rng(seeds[0], gen))
+        failures[gen] = [{**f, "seed": r["seed"]} for r in per_seed for f in r["failures"].get(gen, [])]
+    return {
+        "schema": RESULTS_SCHEMA,
+        "run_id": run_id,
+        "config": identity,
+        "model": first["model"],
+        "seed": None,
+        "seeds": seeds,
+        "brief": first.get("brief", "roles"),
+        "runs": {str(r["seed"]): f"seed{r['seed']}" for r in per_seed},
+        "tasks": first["tasks"],
+        "benchmark": first.get("benchmark", {}),
+        "versions": first["versions"],
+        "git_commit": first["git_commit"],
+        "results": results,
+        "per_task_seed": per_task_seed,
+        "failures": failures,
+        "timing": {"per_seed": {str(r["seed"]): r["timing"] for r in per_seed}},
+    }
