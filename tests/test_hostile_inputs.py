@@ -420,7 +420,7 @@ def test_render_into_read_only_or_missing_place(tmp_path: Path, capsys: pytest.C
 @pytest.mark.parametrize("content,needle", [
     ("[]", "not a LogicEnvEval results file"),
     ('{"schema": "logicenveval.results/1", "results": {"g": {"logcov": "high"}}}', "results.g.logcov"),
-    ('{"schema": "logicenveval.results/1", "results": {"g": {"phypr": {"avg": [1]}}}}', "results.g.phypr.avg"),
+    ('{"schema": "logicenveval.results/1", "results": {"g": {"phypr": {"avg": ["x"]}}}}', "results.g.phypr.avg"),
     ('{"schema": "logicenveval.results/1", "results": []}', "field 'results'"),
     ("\xff\xfe", "not UTF-8"),
 ])

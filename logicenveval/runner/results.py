@@ -174,6 +174,8 @@ def _check_results(data: dict[str, Any], file: str) -> None:
             where, v = stack.pop()
             if isinstance(v, dict):
                 stack += [(f"{where}.{k}", x) for k, x in v.items()]
+            elif isinstance(v, list):  # intervals: [lo, hi]
+                stack += [(f"{where}.{i}", x) for i, x in enumerate(v)]
             elif v is not None and (isinstance(v, bool) or not isinstance(v, int | float)):
                 raise bad(where, f"metric value {str(v)[:40]!r} is not a number")
     for section in ("per_task", "failures"):
