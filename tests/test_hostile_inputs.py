@@ -228,12 +228,15 @@ def test_generator_that_always_raises_exits_1_and_names_the_reason(
 
 def test_partial_failures_exit_0_and_are_listed(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     from logicenveval.commands.run import report_failures
+    from logicenveval.generators.base import GenerationFailure
     from logicenveval.metrics.records import UnitRecord
 
-    ok = UnitRecord(generator="g", task_id="a", samples=[], error=None)
-    assert report_failures([ok]) == 1  # no environment at all is not a measurement
-    err = capsys.readouterr().err
-    assert "returned no environment" in err
+    empty = UnitRecord(generator="g", task_id="a", samples=[], error=None)
+    assert report_failures([empty]) == 0  # measured: zero coverage, nothing failed
+    bad = UnitRecord(generator="g", task_id="b", failures=[GenerationFailure(stage="layout", message="no room")])
+    assert report_failures([empty, bad]) == 0  # partial
+    assert report_failures([bad]) == 1
+    assert "layout: no room" in capsys.readouterr().err
 
 
 def test_bad_key_is_caught_by_the_preflight(tmp_path: Path, capsys: pytest.CaptureFixture[str],

@@ -16,8 +16,10 @@ MAX_REASONS = 5
 
 
 def failed(record: UnitRecord) -> bool:
-    """A unit is failed when it crashed as a whole or produced no environment."""
-    return record.error is not None or not record.samples
+    """A unit is failed when it crashed as a whole, or produced no environment and said why.
+
+    A generator that returns nothing without a failure has been measured (zero coverage)."""
+    return record.error is not None or (not record.samples and bool(record.failures))
 
 
 def failed_generators(records: Sequence[UnitRecord]) -> list[str]:
