@@ -10,6 +10,7 @@ Problems are returned as typed data, never raised, so that one run reports every
 from __future__ import annotations
 
 import itertools
+import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -18,7 +19,8 @@ import z3
 
 from logicenveval.benchmark import load_task_file, tasks_dir
 from logicenveval.domain.catalog import Catalog, load_catalog
-from logicenveval.errors import LogicEnvEvalError
+from logicenveval.errors import LogicEnvEvalError, TaskFormatError
+from logicenveval.limits import limit, raise_hint
 from logicenveval.model.conditions import And, Cond, Const, Not, Or, Pred, atoms, parse
 from logicenveval.model.rooms import room_type_of
 from logicenveval.model.task import FAULTY_KINDS, POLICY_KINDS, Leaf, Node, Task
@@ -107,7 +109,10 @@ def validate_task(task: Task | str | Path, directory: str | Path | None = None,
         folder, name = d / task.id, task.id
     else:
         p = Path(task)
-        folder = p if p.is_dir() else d / str(task)
+        folder = p if isinstance(task, Path) and p.is_dir() else d / str(task)
+        if not isinstance(task, Path) and not folder.resolve().is_relative_to(d.resolve()):
+            raise TaskFormatError(f"{task!r} is not a task of the tasks folder", file=str(d),
+                                  field="--task", hint="give a task id (folder name), not a path")
         name = folder.name
     report = TaskReport(task=name)
     if not isinstance(task, Task):
@@ -138,6 +143,11 @@ def _impl_validate(task: Task, folder: Path, cat: Catalog, report: TaskReport,
                 add("task.json", f"roles.{role}.attributes.{key}",
                     f"value {value!r} is not in the catalog domain {domain} of {spec.category!r}")
     _check_disjoint(task, add)
+    try:
+        situation_count(task)
+    except TaskFormatError as exc:
+        add("task.json", exc.field or "subtasks", f"{exc.message} (fix: {exc.hint})")
+        return
     _check_values(task, add)
     policies = _load_policies(task, folder, add)
     if simulate and not report.problems and len(policies) == len(POLICY_KINDS):
@@ -275,6 +285,10 @@ def _load_policies(task: Task, folder: Path, add: _Add) -> dict[str, object]:
         if rel is None:
             add("task.json", "policies", f"no {kind!r} policy declared")
             continue
+        if not (folder / rel).resolve().is_relative_to(folder.resolve()):
+            add("task.json", f"policies.{kind}", f"policy {rel!r} is outside the task folder "
+                "(fix: policies are files inside the task's own folder)")
+            continue
         try:
             loaded[kind] = load_policy(folder / rel, roles=task.roles, rooms=task.rooms)
         except LogicEnvEvalError as exc:
@@ -296,8 +310,25 @@ def _check_models(task: Task, folder: Path, loaded: dict[str, object], add: _Add
 
 
 def situations(task: Task) -> list[Trajectory]:
-    """Every logical trajectory: the Cartesian product of the subtasks' decision paths."""
+    """Every logical trajectory: the Cartesian product of the subtasks' decision paths.
+
+    The product grows exponentially with independent subtasks, so its size is checked first.
+    """
+    situation_count(task)
     return [Trajectory(tuple(combo)) for combo in itertools.product(*task_paths(task))]
+
+
+def situation_count(task: Task) -> int:
+    """The number of situations, refused above the `max_situations` limit before any is built."""
+    paths = task_paths(task)
+    count = math.prod(len(p) for p in paths)
+    cap = limit("max_situations")
+    if count > cap:
+        raise TaskFormatError(f"the task has {count} situations ({' x '.join(str(len(p)) for p in paths)} "
+                              f"decision paths), more than the limit of {cap}", file=f"{task.id}/task.json",
+                              field="subtasks", hint="merge or drop independent subtasks, or "
+                              + raise_hint("max_situations"))
+    return count
 
 
 def _check_policies(task: Task, cat: Catalog, policies: dict[str, object],

@@ -12,6 +12,7 @@ import sys
 from collections.abc import Sequence
 
 from logicenveval.errors import LogicEnvEvalError
+from logicenveval.redact import redact
 
 #: command -> (module, one-line help)
 COMMANDS: dict[str, tuple[str, str]] = {
@@ -51,8 +52,17 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         code: int = args._run(args)
     except LogicEnvEvalError as exc:
-        print(f"error: {exc}", file=sys.stderr)
+        print(f"error: {redact(str(exc))}", file=sys.stderr)
+        return exc.exit_code
+    except RecursionError:
+        print("error: the input nests too deeply to process (fix: flatten it; no LogicEnvEval "
+              "format nests more than a few levels)", file=sys.stderr)
         return 2
+    except OSError as exc:
+        where = f"{exc.filename}: " if exc.filename else ""
+        print(f"error: {where}{exc.strerror or exc} (fix: check that the path exists, is "
+              "writable and that the disk has space; finished units are kept)", file=sys.stderr)
+        return 1
     except KeyboardInterrupt:
         print("interrupted; finished units are kept and a re-run resumes", file=sys.stderr)
         return 130

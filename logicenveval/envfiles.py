@@ -9,11 +9,17 @@ from typing import Any
 from pydantic import ValidationError
 
 from logicenveval.errors import EnvSpecError
+from logicenveval.limits import limit, parse_json, raise_hint, read_text
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.validation import first_error
 
 
 def env_from_dict(data: Any, *, source: str | None = None) -> EnvSpec:
+    objects = data.get("objects") if isinstance(data, dict) else None
+    cap = limit("max_env_objects")
+    if isinstance(objects, list) and len(objects) > cap:
+        raise EnvSpecError(f"{len(objects)} objects, more than the limit of {cap}", file=source,
+                           field="objects", hint=raise_hint("max_env_objects"))
     try:
         return EnvSpec.model_validate(data)
     except ValidationError as exc:
@@ -24,14 +30,9 @@ def env_from_dict(data: Any, *, source: str | None = None) -> EnvSpec:
 
 def load_env(path: str | Path) -> EnvSpec:
     p = Path(path)
-    try:
-        data = json.loads(p.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise EnvSpecError("file not found", file=str(p), hint="check the path") from None
-    except json.JSONDecodeError as exc:
-        raise EnvSpecError(f"invalid JSON: {exc.msg}", file=str(p), line=exc.lineno,
-                           column=exc.colno, hint="fix the JSON syntax") from None
-    return env_from_dict(data, source=str(p))
+    text = read_text(p, what="EnvSpec file", error=EnvSpecError, max_bytes="max_env_bytes",
+                     hint="check the path")
+    return env_from_dict(parse_json(text, file=str(p), error=EnvSpecError), source=str(p))
 
 
 def env_to_json(env: EnvSpec) -> str:

@@ -11,6 +11,9 @@ from __future__ import annotations
 class LogicEnvEvalError(Exception):
     """Root of every error this package raises on purpose."""
 
+    #: process exit code of the CLI: 2 for bad input; subclasses for failed work use 1
+    exit_code = 2
+
     def __init__(
         self,
         message: str,
@@ -101,3 +104,9 @@ class RunStoreError(LogicEnvEvalError):
 
 class MetricsError(LogicEnvEvalError):
     """Metric inputs are inconsistent (samples of another task, no tasks to aggregate)."""
+
+
+class RunFailedError(LogicEnvEvalError):
+    """The work itself failed (every unit of a generator, or a run stopped early): exit 1."""
+
+    exit_code = 1

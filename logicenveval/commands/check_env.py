@@ -37,11 +37,15 @@ def run(args: argparse.Namespace) -> int:
     report = check_env(env, mesh_dir=Path(args.env).parent)
     if args.render:
         out = Path(args.render)
-        if out.suffix.lower() == ".svg":
-            out.parent.mkdir(parents=True, exist_ok=True)
-            out.write_text(render_svg(env, report), encoding="utf-8")
-        else:
-            render_png(env, out, report)
+        try:
+            if out.suffix.lower() == ".svg":
+                out.parent.mkdir(parents=True, exist_ok=True)
+                out.write_text(render_svg(env, report), encoding="utf-8")
+            else:
+                render_png(env, out, report)
+        except OSError as exc:
+            raise ConfigError(f"cannot write the render: {exc.strerror or exc}", file=str(out),
+                              field="--render", hint="choose a writable path for the render") from None
     if args.json:
         print(json.dumps(report.model_dump(mode="json"), indent=2))
     else:

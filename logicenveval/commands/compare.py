@@ -5,11 +5,13 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from logicenveval.commands import options
+
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("run_a", help="baseline run folder")
     p.add_argument("run_b", help="candidate run folder")
-    p.add_argument("--tolerance", type=float, default=0.02,
+    p.add_argument("--tolerance", type=options.non_negative_float, default=0.02,
                    help="allowed drop per metric, absolute (rates are fractions; default 0.02)")
     p.add_argument("--judge-timing", action="store_true", help="also fail on slower ST")
     p.add_argument("--common-tasks", action="store_true",

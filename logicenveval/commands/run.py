@@ -4,31 +4,42 @@ from __future__ import annotations
 
 import argparse
 import os
+import sys
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
+from logicenveval.commands import options
 from logicenveval.runner.config import DEFAULT_GENERATORS
 from logicenveval.scene.layout import DEFAULT_SOLVER, SOLVERS
+
+if TYPE_CHECKING:
+    from logicenveval.metrics.records import UnitRecord
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--model", default="offline",
                    help="offline | oracle | openai:<model> | replay:<cache.sqlite> (default offline)")
     p.add_argument("--model-args", default="", help="key=value,... e.g. base_url=...,api_key_env=...")
-    p.add_argument("--generators", default=",".join(DEFAULT_GENERATORS),
+    p.add_argument("--generators", default=DEFAULT_GENERATORS, type=options.name_list,
                    help="comma-separated: built-in names (ablations by name), installed plug-ins, "
                    "or PKG.MODULE:ATTR (docs/own-generator.md)")
-    p.add_argument("--tasks", default="all", help="all or comma-separated task ids")
+    p.add_argument("--tasks", default=(), type=_tasks, help="all or comma-separated task ids")
     p.add_argument("--tasks-dir", default=None, help="folder of <task_id>/task.json (default: the benchmark)")
-    p.add_argument("--limit", type=int, default=None, help="only the first N tasks")
-    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--limit", type=options.int_range(1), default=None, help="only the first N tasks")
+    p.add_argument("--seed", type=options.int_range(0), default=0)
     p.add_argument("--seeds", default=None,
                    help="comma-separated seeds: one run per seed, aggregated with intervals over "
                    "tasks and seeds (overrides --seed)")
     p.add_argument("--layout-solver", default=DEFAULT_SOLVER, choices=SOLVERS,
                    help=f"layout backend of solver-based generators (default {DEFAULT_SOLVER}; docs/scene.md)")
-    p.add_argument("--workers", type=int, default=os.cpu_count() or 1)
+    p.add_argument("--workers", type=options.workers, default=os.cpu_count() or 1)
     p.add_argument("--executor", default="process", choices=["process", "inprocess", "ray"])
     p.add_argument("--output", default="reports", help="parent folder of run folders")
-    p.add_argument("--run-id", default=None, help="run folder name (default: derived from the config)")
+    p.add_argument("--run-id", default=None, type=options.folder_name,
+                   help="run folder name inside --output (default: derived from the config)")
+    p.add_argument("--max-infra-failures", type=options.int_range(0), default=5,
+                   help="stop after N consecutive units failed for infrastructure reasons "
+                   "(endpoint, cache, disk); 0 never stops (default 5)")
     cache = p.add_mutually_exclusive_group()
     cache.add_argument("--cache", default=None, help="SQLite cache of LLM replies")
     cache.add_argument("--no-cache", action="store_true", help="bypass the LLM reply cache")
@@ -49,18 +60,19 @@ def run(args: argparse.Namespace) -> int:
     config = RunConfig(
         model=args.model,
         model_args=args.model_args,
-        generators=tuple(g.strip() for g in args.generators.split(",") if g.strip()),
-        tasks=() if args.tasks == "all" else tuple(t.strip() for t in args.tasks.split(",") if t.strip()),
+        generators=tuple(args.generators),
+        tasks=args.tasks,
         tasks_dir=args.tasks_dir,
         limit=args.limit,
         seed=args.seed,
         layout_solver=args.layout_solver,
-        workers=max(1, args.workers),
+        workers=args.workers,
         executor=args.executor,
         output=args.output,
         cache=args.cache,
         no_cache=args.no_cache,
         run_id=args.run_id,
+        max_infra_failures=args.max_infra_failures,
         brief=args.brief,
     )
     formats = [f.strip() for f in args.export.split(",") if f.strip()]
@@ -93,7 +105,23 @@ def run(args: argparse.Namespace) -> int:
         print(f"exported {len(written)} file(s) ({', '.join(formats)}) next to the environments")
     print(markdown(outcome.results))
     print(f"run folder: {outcome.run_dir} (computed {outcome.computed} unit(s), reused {outcome.reused})")
-    return 0
+    return report_failures(outcome.records)
+
+
+def report_failures(records: Sequence[UnitRecord]) -> int:
+    """Exit status of a finished run: 1 with a summary when a generator has no valid unit."""
+    from logicenveval.runner.failures import failed_generators, summary
+
+    dead = failed_generators(records)
+    if not dead:
+        return 0
+    print(f"error: {len(dead)} generator(s) produced no valid unit, so they were not measured:\n"
+          + summary(records, dead), file=sys.stderr)
+    return 1
+
+
+def _tasks(text: str) -> tuple[str, ...]:
+    return () if text.strip() == "all" else options.name_list(text)
 
 
 def _seeds(text: str) -> list[int]:

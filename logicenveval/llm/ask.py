@@ -18,6 +18,7 @@ from pydantic import BaseModel, ValidationError
 from logicenveval.errors import ConfigError, ModelReplyError
 from logicenveval.llm.base import ChatModel, ChatRequest, ModelStats
 from logicenveval.llm.jsonextract import JSONExtractionError, extract_json
+from logicenveval.redact import redact
 from logicenveval.validation import first_error
 
 T = TypeVar("T", bound=BaseModel)
@@ -60,7 +61,7 @@ def _save_raw(run_dir: Path | None, kind: str, model: str, replies: list[str]) -
     path = Path(run_dir) / "llm_errors" / f"{kind}-{digest}.txt"
     path.parent.mkdir(parents=True, exist_ok=True)
     sep = "\n\n----- next attempt -----\n\n"
-    path.write_text(f"model: {model}\nkind: {kind}\n\n" + sep.join(replies), encoding="utf-8")
+    path.write_text(redact(f"model: {model}\nkind: {kind}\n\n" + sep.join(replies)), encoding="utf-8")
     return str(path)
 
 
@@ -98,6 +99,9 @@ def ask(
         except ValidationError as exc:
             loc, msg = first_error(exc)
             problem = f"field '{loc}': {msg}"
+        forget = getattr(model, "forget", None)
+        if callable(forget):
+            forget(request)  # an invalid reply is never served from the cache again
         if attempt < max_reasks:
             if stats is not None:
                 stats.add(reasks=1)

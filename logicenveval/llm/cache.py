@@ -78,8 +78,25 @@ class ReplyCache:
             (key, provider, model, kind, reply, time.time()),
         )
 
+    def delete(self, key: str) -> None:
+        self._conn().execute("DELETE FROM replies WHERE key = ?", (key,))
+
     def __len__(self) -> int:
         return int(self._conn().execute("SELECT COUNT(*) FROM replies").fetchone()[0])
+
+    def check(self, *, writable: bool = True) -> None:
+        """Fail before the first unit when the file cannot serve as a cache (it would fail all)."""
+        try:
+            conn = self._conn()
+            conn.execute("SELECT COUNT(*) FROM replies").fetchone()
+            if writable:
+                conn.execute("BEGIN IMMEDIATE")
+                conn.execute("ROLLBACK")
+        except (sqlite3.Error, OSError) as exc:
+            self._local.conn = None
+            raise ConfigError(f"the reply cache is unusable: {exc}", file=str(self.path),
+                              hint="point --cache at a writable SQLite file (or a new path), "
+                              "or pass --no-cache") from None
 
 
 class CachedModel:
@@ -103,7 +120,12 @@ class CachedModel:
         self.cache.put(key, self.provider, self.name, request.kind, reply)
         return reply
 
+    def forget(self, request: ChatRequest) -> None:
+        """Drop the reply to `request`: it failed validation, so a re-run must ask again."""
+        self.cache.delete(cache_key(self.provider, self.name, request))
+
     def preflight(self) -> None:
+        self.cache.check()
         check = getattr(self.inner, "preflight", None)
         if callable(check):
             check()
@@ -130,3 +152,6 @@ class ReplayModel:
             )
         self.stats.add(cache_hits=1)
         return hit
+
+    def preflight(self) -> None:
+        self.cache.check(writable=False)

@@ -9,6 +9,7 @@ is read from the environment variable named by `api_key_env` and only ever place
 from __future__ import annotations
 
 import email.utils
+import json
 import logging
 import os
 import threading
@@ -19,7 +20,9 @@ import httpx
 import numpy as np
 
 from logicenveval.errors import ConfigError, ModelConnectionError
+from logicenveval.limits import limit, raise_hint
 from logicenveval.llm.base import ChatRequest, ModelStats
+from logicenveval.redact import redact, register_secret, strip_url_credentials
 
 log = logging.getLogger(__name__)
 
@@ -33,8 +36,37 @@ def _retry_after(response: httpx.Response) -> float | None:
     try:
         return max(0.0, float(value))
     except ValueError:
+        pass
+    try:  # an HTTP date; anything else (`soon`) is ignored and the backoff applies
         parsed = email.utils.parsedate_to_datetime(value)
-        return max(0.0, parsed.timestamp() - time.time()) if parsed else None
+    except (TypeError, ValueError, IndexError):
+        return None
+    if parsed.tzinfo is None:
+        return None
+    return max(0.0, parsed.timestamp() - time.time())
+
+
+def _number(name: str, value: object, *, low: float, integer: bool = False) -> float:
+    """A numeric model argument, checked once at construction (preflight) with a clear error."""
+    ok = isinstance(value, int | float) and not isinstance(value, bool)
+    if ok and integer and not isinstance(value, int):
+        ok = False
+    if not ok or not (float(value) >= low) or float(value) == float("inf"):  # type: ignore[arg-type]
+        kind = "an integer" if integer else "a number"
+        raise ConfigError(f"{name}={value!r} is not {kind} >= {low:g}", field=f"--model-args {name}",
+                          hint=f"write {name}=<{kind.split()[-1]}> (see docs/llm.md)")
+    return float(value)  # type: ignore[arg-type]
+
+
+class _Deadline(Exception):
+    """The total time of one request (or of the unit) ran out while a reply was arriving."""
+
+
+class _Reply:
+    def __init__(self, status: int, headers: httpx.Headers, body: bytes) -> None:
+        self.status_code = status
+        self.headers = headers
+        self.text = body.decode("utf-8", errors="replace")
 
 
 class OpenAIChatModel:
@@ -55,37 +87,51 @@ class OpenAIChatModel:
         json_schema: str | bool = "auto",
         max_tokens: int | None = None,
         seed: int = 0,
+        unit_timeout: float = 1800.0,
         stats: ModelStats | None = None,
     ) -> None:
         if not model:
             raise ConfigError("missing model name", field="--model", hint="write openai:<model>")
         self.name = model
+        if not isinstance(base_url, str) or not base_url.startswith(("http://", "https://")):
+            raise ConfigError(f"base_url={redact(str(base_url))!r} is not an http(s) URL",
+                              field="--model-args base_url", hint="e.g. base_url=http://localhost:8000/v1")
         self.base_url = base_url.rstrip("/")
+        self._shown_url = strip_url_credentials(self.base_url)
         self._api_key_env = api_key_env
         self._key: str | None = None
         if api_key_env:
-            key = os.environ.get(api_key_env)
+            key = os.environ.get(str(api_key_env))
             if not key:
                 raise ConfigError(f"environment variable {api_key_env} is not set",
                                   field="--model-args api_key_env",
                                   hint=f"export {api_key_env}=... or drop api_key_env for a local server")
             self._key = key
+            register_secret(key)
+        timeout = _number("timeout", timeout, low=0.001)
+        connect_timeout = _number("connect_timeout", connect_timeout, low=0.001)
+        #: total seconds of one request (connect + sending + the whole reply), not per read
+        self.request_timeout = timeout
         self.timeout = httpx.Timeout(timeout, connect=connect_timeout)
-        self.max_retries = max_retries
-        self.backoff_base = backoff_base
-        self.backoff_max = backoff_max
-        self._semaphore = threading.BoundedSemaphore(max(1, concurrency))
+        self.max_retries = int(_number("max_retries", max_retries, low=0, integer=True))
+        self.backoff_base = _number("backoff_base", backoff_base, low=0)
+        self.backoff_max = _number("backoff_max", backoff_max, low=0)
+        concurrency = int(_number("concurrency", concurrency, low=1, integer=True))
+        self._semaphore = threading.BoundedSemaphore(concurrency)
         self._schema_mode: str = str(json_schema).lower()
         if self._schema_mode not in ("auto", "true", "false"):
             raise ConfigError(f"json_schema={json_schema!r}", field="--model-args json_schema",
                               hint="use auto, true or false")
-        self.max_tokens = max_tokens
-        self._rng = np.random.default_rng(seed)
+        self.max_tokens = None if max_tokens is None else int(
+            _number("max_tokens", max_tokens, low=1, integer=True))
+        self._rng = np.random.default_rng(int(_number("seed", seed, low=0, integer=True)))
+        #: every request of this model instance (one per unit) ends by this monotonic time
+        self._unit_deadline = time.monotonic() + _number("unit_timeout", unit_timeout, low=0.001)
         self.stats = stats or ModelStats()
         self._client = httpx.Client(timeout=self.timeout)
 
     def __repr__(self) -> str:  # never shows the key
-        return f"OpenAIChatModel(model={self.name!r}, base_url={self.base_url!r})"
+        return f"OpenAIChatModel(model={self.name!r}, base_url={self._shown_url!r})"
 
     def _headers(self) -> dict[str, str]:
         headers = {"Content-Type": "application/json"}
@@ -110,25 +156,60 @@ class OpenAIChatModel:
             }
         return body
 
-    def _sleep(self, attempt: int, response: httpx.Response | None) -> None:
-        wait = _retry_after(response) if response is not None else None
+    def _sleep(self, attempt: int, response: _Reply | None) -> None:
+        wait = _retry_after(response) if response is not None else None  # type: ignore[arg-type]
         if wait is None:
             wait = min(self.backoff_max, self.backoff_base * (2**attempt))
             wait *= 0.5 + float(self._rng.random())  # jitter: spread synchronized clients
-        time.sleep(min(wait, self.backoff_max))
+        wait = min(wait, self.backoff_max, max(0.0, self._unit_deadline - time.monotonic()))
+        time.sleep(wait)
+
+    def _post(self, url: str, body: dict[str, Any]) -> _Reply:
+        """One POST whose total time is bounded (a trickling server cannot hold it) and whose
+        reply size is bounded."""
+        deadline = min(time.monotonic() + self.request_timeout, self._unit_deadline)
+        cap = limit("max_reply_bytes")
+
+        def remaining() -> float:
+            left = deadline - time.monotonic()
+            if left <= 0:
+                raise _Deadline
+            return left
+
+        timeout = httpx.Timeout(min(self.timeout.read or 60.0, remaining()),
+                                connect=min(self.timeout.connect or 10.0, remaining()))
+        with self._client.stream("POST", url, json=body, headers=self._headers(),
+                                 timeout=timeout) as response:
+            chunks: list[bytes] = []
+            size = 0
+            for chunk in response.iter_bytes():  # decoded: a compressed bomb counts in full
+                size += len(chunk)
+                if size > cap:
+                    raise ModelConnectionError(
+                        f"{self._shown_url} sent a reply larger than {cap} bytes",
+                        hint="lower max_tokens, or " + raise_hint("max_reply_bytes"))
+                chunks.append(chunk)
+                remaining()
+            return _Reply(response.status_code, response.headers, b"".join(chunks))
 
     def complete(self, request: ChatRequest) -> str:
         url = f"{self.base_url}/chat/completions"
+        shown = f"{self._shown_url}/chat/completions"
         last = "no attempt made"
         with self._semaphore:
             attempt = 0
             while True:
+                if time.monotonic() >= self._unit_deadline:
+                    raise ModelConnectionError(
+                        f"the unit's time budget ran out before a {request.kind!r} request to "
+                        f"{shown}; last: {last}",
+                        hint="raise --model-args unit_timeout=<seconds>, or check the server")
                 start = time.perf_counter()
-                response: httpx.Response | None = None
+                response: _Reply | None = None
                 try:
-                    response = self._client.post(url, json=self._body(request), headers=self._headers())
-                except httpx.TimeoutException:
-                    last = f"timed out after {self.timeout.read}s"
+                    response = self._post(url, self._body(request))
+                except (httpx.TimeoutException, _Deadline):
+                    last = f"timed out: no complete reply within {self.request_timeout:g}s"
                 except httpx.TransportError as exc:
                     last = f"connection failed ({type(exc).__name__})"
                 else:
@@ -137,29 +218,29 @@ class OpenAIChatModel:
                         continue
                     if response.status_code < 300:
                         return self._content(response, time.perf_counter() - start, request.kind)
-                    last = f"HTTP {response.status_code}: {response.text[:200]!r}"
+                    last = redact(f"HTTP {response.status_code}: {response.text[:200]!r}")
                     if response.status_code not in _RETRY_STATUS:
                         raise ModelConnectionError(
-                            f"{url} rejected a {request.kind!r} request: {last}",
-                            hint="check the model name and --model-args of the server",
+                            f"{shown} rejected a {request.kind!r} request: {last}",
+                            hint="check the model name, the API key and --model-args of the server",
                         )
                 if attempt >= self.max_retries:
                     raise ModelConnectionError(
-                        f"{url} failed a {request.kind!r} request {attempt + 1} time(s); last: {last}",
+                        f"{shown} failed a {request.kind!r} request {attempt + 1} time(s); last: {last}",
                         hint="check that the server is up and base_url is right, or raise max_retries/timeout",
                     )
                 self.stats.add(retries=1)
-                log.warning("retrying %s request to %s after %s", request.kind, self.base_url, last)
+                log.warning("retrying %s request to %s after %s", request.kind, self._shown_url, last)
                 self._sleep(attempt, response)
                 attempt += 1
 
-    def _content(self, response: httpx.Response, latency: float, kind: str) -> str:
+    def _content(self, response: _Reply, latency: float, kind: str) -> str:
         try:
-            data = response.json()
+            data = json.loads(response.text)
             content = data["choices"][0]["message"]["content"]
         except (ValueError, KeyError, IndexError, TypeError):
             raise ModelConnectionError(
-                f"{self.base_url} answered a {kind!r} request without choices[0].message.content",
+                f"{self._shown_url} answered a {kind!r} request without choices[0].message.content",
                 hint="is base_url an OpenAI-compatible /v1 endpoint?",
             ) from None
         usage = data.get("usage") or {}
@@ -169,15 +250,21 @@ class OpenAIChatModel:
             prompt_tokens=int(usage.get("prompt_tokens") or 0),
             completion_tokens=int(usage.get("completion_tokens") or 0),
         )
-        return str(content or "")
+        return redact(str(content or ""))  # a server echoing our headers must not leak the key
 
     def preflight(self) -> None:
-        """Fail fast when the endpoint is unreachable (any HTTP answer counts as reachable)."""
+        """Fail fast on what would fail every unit: an unreachable endpoint or a refused key."""
         try:
-            self._client.get(f"{self.base_url}/models", headers=self._headers(),
-                             timeout=httpx.Timeout(10.0, connect=5.0))
+            response = self._client.get(f"{self.base_url}/models", headers=self._headers(),
+                                        timeout=httpx.Timeout(10.0, connect=5.0))
         except httpx.TransportError as exc:
             raise ModelConnectionError(
-                f"cannot reach {self.base_url} ({type(exc).__name__})",
+                f"cannot reach {self._shown_url} ({type(exc).__name__})",
                 hint="start the server or fix --model-args base_url=...",
             ) from None
+        if response.status_code in (401, 403):
+            raise ModelConnectionError(
+                f"{self._shown_url} refused the credentials (HTTP {response.status_code})",
+                hint="check the key in the variable named by api_key_env"
+                if self._key else "the server needs a key: --model-args api_key_env=<VARIABLE>",
+            )

@@ -5,7 +5,7 @@
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
@@ -83,6 +83,9 @@ class UnitRecord(BaseModel):
     failures: list[GenerationFailure] = Field(default_factory=list)
     #: a unit that crashed as a whole (LLM error, solver timeout): its reason
     error: str | None = None
+    #: why the unit failed: `infrastructure` (endpoint, cache, disk: recomputed by the next run),
+    #: `generation` (the generator or model could not do it) or `internal` (a generator bug)
+    error_kind: Literal["infrastructure", "generation", "internal"] | None = None
     gen_seconds: float = 0.0
     #: killable mutant id -> fault class (`faults.score`); empty when mutants were not scored
     mutants: dict[str, str] = Field(default_factory=dict)

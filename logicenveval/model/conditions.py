@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from logicenveval.errors import ConditionSyntaxError
+from logicenveval.limits import limit, raise_hint
 
 #: predicate name -> arity (v1 vocabulary, fixed by DESIGN.md §3)
 PREDICATES: dict[str, int] = {
@@ -110,10 +111,25 @@ def _tokenize(text: str, source: str | None) -> list[_Tok]:
     return toks
 
 
+def _check_nesting(text: str, source: str | None, max_depth: int) -> None:
+    depth = 0
+    for col, ch in enumerate(text, 1):
+        depth += (ch == "(") - (ch == ")")
+        if depth > max_depth:
+            shown = text if len(text) <= 120 else text[:117] + "..."
+            raise ConditionSyntaxError(
+                f"nesting deeper than {max_depth} levels in condition {shown!r}", file=source,
+                column=col, hint="simplify the condition (" + raise_hint("max_condition_depth") + ")")
+
+
 class _Parser:
     def __init__(self, text: str, source: str | None) -> None:
         self.text = text
         self.source = source
+        self.depth = 0
+        self.max_depth = limit("max_condition_depth")
+        if text.count("(") > self.max_depth:  # refuse absurd nesting before tokenising it all
+            _check_nesting(text, source, self.max_depth)
         self.toks = _tokenize(text, source)
         self.i = 0
 
@@ -126,9 +142,16 @@ class _Parser:
         return tok
 
     def _fail(self, tok: _Tok, message: str, hint: str) -> ConditionSyntaxError:
+        shown = self.text if len(self.text) <= 120 else self.text[:117] + "..."
         return ConditionSyntaxError(
-            f"{message} in condition {self.text!r}", file=self.source, column=tok.col, hint=hint
+            f"{message} in condition {shown!r}", file=self.source, column=tok.col, hint=hint
         )
+
+    def _nest(self, tok: _Tok) -> None:
+        self.depth += 1
+        if self.depth > self.max_depth:
+            raise self._fail(tok, f"nesting deeper than {self.max_depth} levels",
+                             "simplify the condition (" + raise_hint("max_condition_depth") + ")")
 
     def parse(self) -> Cond:
         cond = self._expr()
@@ -154,16 +177,21 @@ class _Parser:
     def _factor(self) -> Cond:
         tok = self._next()
         if tok.kind == "punct" and tok.text == "(":
+            self._nest(tok)
             inner = self._expr()
             close = self._next()
             if close.text != ")":
                 raise self._fail(close, "missing ')'", "balance the parentheses")
+            self.depth -= 1
             return inner
         if tok.kind != "word":
             what = "end of condition" if tok.kind == "end" else repr(tok.text)
             raise self._fail(tok, f"expected a predicate, found {what}", "e.g. on(toy, floor)")
         if tok.text == "not":
-            return Not(self._factor())
+            self._nest(tok)
+            negated = Not(self._factor())
+            self.depth -= 1
+            return negated
         if tok.text == "true":
             return TRUE
         if tok.text == "false":

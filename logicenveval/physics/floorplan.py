@@ -148,8 +148,8 @@ def check_floor_plan(env: EnvSpec, tol: Tolerances) -> tuple[list[PhysicsFailure
             fails.append(_fail("window_not_on_wall", f"window {w.id} is not within a wall of room {w.room}",
                                objects=[w.id], rooms=[w.room], measured=dist, tolerance=tol.on_wall))
         for d in env.doors:
-            if w.room not in d.rooms or d.segment is None:
-                continue
+            if w.room not in d.rooms or d.segment is None or not finite(*d.segment[0], *d.segment[1]):
+                continue  # a door without finite geometry is its own finding (shapely crashes on NaN)
             shared = float(LineString(d.segment).buffer(tol.on_wall).intersection(seg).length)
             if shared > tol.on_wall:
                 fails.append(_fail("window_overlaps_door", f"window {w.id} overlaps door {d.id} "

@@ -25,10 +25,28 @@ _NOT_RECORDED = "no trace recorded (the unit was written by a version that did n
 
 
 def _samples(run_dir: Path) -> list[dict[str, Any]]:
+    from logicenveval.errors import RunStoreError
+    from logicenveval.limits import read_text
+
     path = run_dir / "samples.jsonl"
     if not path.exists():
         return []
-    return [json.loads(line) for line in path.read_text(encoding="utf-8").splitlines() if line.strip()]
+    text = read_text(path, what="samples.jsonl", error=RunStoreError, max_bytes="max_run_file_bytes",
+                     hint="re-run the command to rewrite it")
+    out = []
+    for n, line in enumerate(text.splitlines(), 1):
+        if not line.strip():
+            continue
+        try:
+            sample = json.loads(line)
+        except (ValueError, RecursionError):
+            sample = None
+        if not isinstance(sample, dict) or not {"generator", "task_id", "env_id"} <= set(sample):
+            raise RunStoreError("not a complete sample (truncated or edited file)", file=str(path),
+                                line=n, hint="re-run the same `run` command: it rewrites samples.jsonl "
+                                "from the committed units")
+        out.append(sample)
+    return out
 
 
 def _redraw(run_dir: Path, gen: str, task_id: str, sample: dict[str, Any], rel: str) -> str | None:

@@ -14,8 +14,11 @@ from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
+from logicenveval.redact import strip_url_credentials
 from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
 
+#: a run id is one folder name inside --output: no separators, no leading dot
+RUN_ID_PATTERN = r"^[A-Za-z0-9_][A-Za-z0-9._-]{0,127}$"
 DEFAULT_GENERATORS: tuple[str, ...] = ("logicenvgen", "logicenvgen-exact", "cot", "ifg", "holodeck")
 
 
@@ -27,14 +30,16 @@ class RunConfig(BaseModel):
     tasks: tuple[str, ...] = ()  # empty = all tasks of tasks_dir
     tasks_dir: str | None = None
     limit: int | None = Field(default=None, ge=1)
-    seed: int = 0
+    seed: int = Field(default=0, ge=0)
     layout_solver: Solver = DEFAULT_SOLVER
     workers: int = Field(default=1, ge=1)
     executor: str = "process"
     output: str = "reports"
     cache: str | None = None
     no_cache: bool = False
-    run_id: str | None = None
+    run_id: str | None = Field(default=None, pattern=RUN_ID_PATTERN)
+    #: stop the run after this many consecutive units failed for infrastructure reasons (0: never)
+    max_infra_failures: int = Field(default=5, ge=0)
     #: what generators are given: the task's roles (default) or, as in the paper, the description
     brief: Literal["roles", "description"] = "roles"
 
@@ -60,7 +65,7 @@ class RunConfig(BaseModel):
         """The fields that define *what* is computed (not how fast or where)."""
         return {
             "model": self.model,
-            "model_args": _redact(self.model_args),
+            "model_args": strip_url_credentials(_redact(self.model_args)),
             "generators": list(self.generators),
             "tasks": list(self.tasks),
             "tasks_dir": self.tasks_dir,

@@ -6,8 +6,16 @@ finish, so the caller commits each unit as soon as it is done, whatever the exec
 
 from __future__ import annotations
 
+import contextlib
+import ctypes
+import ctypes.util
 import importlib
 import multiprocessing
+import os
+import signal
+import sys
+import threading
+import time
 from collections.abc import Callable, Iterator, Sequence
 from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
 from typing import Any, Protocol, TypeVar
@@ -84,13 +92,48 @@ class ProcessExecutor:
             return
         self.warm_up()
         ctx = self._ctx or _context()
-        with ProcessPoolExecutor(max_workers=min(self.workers, len(items)), mp_context=ctx) as pool:
+        pool = ProcessPoolExecutor(max_workers=min(self.workers, len(items)), mp_context=ctx,
+                                   initializer=_die_with_parent)
+        try:
             pending: dict[Future[R], T] = {pool.submit(fn, item): item for item in items}
             while pending:
                 done, _ = wait(pending, return_when=FIRST_COMPLETED)
                 for fut in done:
                     item = pending.pop(fut)
                     yield item, fut.result()
+        finally:  # also when the caller stops early: queued units are dropped, not run
+            pool.shutdown(wait=True, cancel_futures=True)
+
+
+def kill_me_with_parent() -> None:
+    """Ask Linux to SIGKILL this process when its parent dies (PR_SET_PDEATHSIG; no-op elsewhere).
+
+    Also used by the fork server (runner/preload.py), so that it exits with the run and its
+    workers follow."""
+    if sys.platform.startswith("linux"):
+        with contextlib.suppress(OSError, AttributeError):
+            libc = ctypes.CDLL(ctypes.util.find_library("c") or "libc.so.6", use_errno=True)
+            libc.prctl(1, signal.SIGKILL)
+
+
+def _die_with_parent() -> None:
+    """Worker initializer: a worker never outlives the run (even a SIGKILLed one).
+
+    The worker's parent is the run itself or its fork server, which exits with the run. Linux
+    delivers SIGKILL to the worker when that parent dies (prctl PDEATHSIG); elsewhere a daemon
+    thread notices the re-parenting within a second and exits.
+    """
+    parent = os.getppid()
+    kill_me_with_parent()
+    if parent == 1 or os.getppid() != parent:  # the parent died before the call took effect
+        os._exit(1)
+
+    def watch() -> None:
+        while os.getppid() == parent:
+            time.sleep(1.0)
+        os._exit(1)
+
+    threading.Thread(target=watch, daemon=True, name="die-with-parent").start()
 
 
 class RayExecutor:

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import gc
 import importlib
+import sys
 
 import logicenveval.llm.registry  # noqa: F401
 import logicenveval.physics.render  # noqa: F401
@@ -15,7 +16,10 @@ import logicenveval.scene.layout_cpsat  # noqa: F401  (the default layout backen
 import logicenveval.sim.loader  # noqa: F401
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.generators.registry import BUILTIN
+from logicenveval.runner.executors import kill_me_with_parent
 
+if "multiprocessing.forkserver" in sys.modules and sys.argv[:1] == ["-c"]:
+    kill_me_with_parent()  # the fork server dies with the run; its workers then die with it
 load_catalog()
 for _entry in BUILTIN.values():
     importlib.import_module(_entry.partition(":")[0])

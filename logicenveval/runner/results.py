@@ -102,7 +102,8 @@ def build_results(
         results[gen]["ci95"] = ci95({(t, config.seed): m for t, m in per_task[gen].items()},
                                     bootstrap_rng(config.seed, gen))
         failures[gen] = [
-            {"task": u.task_id, "stage": "unit", "message": u.error} for u in units if u.error
+            {"task": u.task_id, "stage": "unit", "message": u.error, "kind": u.error_kind}
+            for u in units if u.error
         ] + [
             {"task": u.task_id, **f.model_dump(mode="json")} for u in units for f in u.failures
         ]
@@ -138,18 +139,45 @@ def write_outputs(run_dir: Path, results: dict[str, Any], records: Sequence[Unit
 
 
 def load_results(run_dir: Path) -> dict[str, Any]:
+    """A run's results.json, checked enough that reports and comparisons cannot trip on it."""
     from logicenveval.errors import RunStoreError
+    from logicenveval.limits import parse_json, read_text
 
     path = run_dir / "results.json"
-    try:
-        data: dict[str, Any] = json.loads(path.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise RunStoreError("no results.json in this folder", file=str(run_dir),
-                            hint="pass a run folder written by `python -m logicenveval run`") from None
-    except json.JSONDecodeError as exc:
-        raise RunStoreError(f"invalid JSON: {exc.msg}", file=str(path), line=exc.lineno,
-                            hint="re-run the command to rewrite it") from None
-    if data.get("schema") != RESULTS_SCHEMA or "results" not in data:
+    text = read_text(path, what="results.json", error=RunStoreError, max_bytes="max_run_file_bytes",
+                     hint="pass a run folder written by `python -m logicenveval run`")
+    data = parse_json(text, file=str(path), error=RunStoreError)
+    if not isinstance(data, dict) or data.get("schema") != RESULTS_SCHEMA or "results" not in data:
         raise RunStoreError("not a LogicEnvEval results file", file=str(path),
-                            hint=f"expected schema {RESULTS_SCHEMA}")
+                            hint=f"expected an object with schema {RESULTS_SCHEMA}; re-run the command")
+    _check_results(data, str(path))
     return data
+
+
+def _check_results(data: dict[str, Any], file: str) -> None:
+    from logicenveval.errors import RunStoreError
+
+    def bad(field: str, what: str) -> RunStoreError:
+        return RunStoreError(f"{what}", file=file, field=field,
+                             hint="the file was edited or damaged; re-run the command to rewrite it")
+
+    if not isinstance(data["results"], dict):
+        raise bad("results", "must be an object of generators")
+    tasks = data.get("tasks", [])
+    if not isinstance(tasks, list) or not all(isinstance(t, str) for t in tasks):
+        raise bad("tasks", "must be a list of task ids")
+    for gen, values in data["results"].items():
+        if not isinstance(values, dict):
+            raise bad(f"results.{gen}", "must be an object of metrics")
+        stack: list[tuple[str, Any]] = [(f"results.{gen}", values)]
+        while stack:  # every leaf of the (nested) metrics is a number or null
+            where, v = stack.pop()
+            if isinstance(v, dict):
+                stack += [(f"{where}.{k}", x) for k, x in v.items()]
+            elif isinstance(v, list):  # intervals: [lo, hi]
+                stack += [(f"{where}.{i}", x) for i, x in enumerate(v)]
+            elif v is not None and (isinstance(v, bool) or not isinstance(v, int | float)):
+                raise bad(where, f"metric value {str(v)[:40]!r} is not a number")
+    for section in ("per_task", "failures"):
+        if not isinstance(data.get(section, {}), dict):
+            raise bad(section, "must be an object of generators")

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -10,10 +11,12 @@ from typing import Any
 from rich.console import Console
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
 
-from logicenveval.benchmark import load_tasks, task_ids
-from logicenveval.errors import ConfigError
+from logicenveval.benchmark import load_tasks, policy_path, task_ids
+from logicenveval.benchmark_validation import situation_count
+from logicenveval.errors import ConfigError, RunFailedError
 from logicenveval.generators.plugins import GeneratorRef, resolve_generator
 from logicenveval.metrics.records import UnitRecord
+from logicenveval.model.task import POLICY_KINDS
 from logicenveval.runner.config import RunConfig
 from logicenveval.runner.executors import make_executor
 from logicenveval.runner.results import build_results, write_outputs
@@ -27,6 +30,7 @@ class RunOutcome:
     results: dict[str, Any]
     computed: int  # units computed in this invocation
     reused: int  # units found committed from an earlier, interrupted invocation
+    records: tuple[UnitRecord, ...] = ()  # every unit of the run, in (generator, task) order
 
 
 def resolve_generators(config: RunConfig) -> list[GeneratorRef]:
@@ -48,6 +52,12 @@ def resolve_generators(config: RunConfig) -> list[GeneratorRef]:
 
 
 def _check(config: RunConfig) -> list[str]:
+    if not config.generators:
+        raise ConfigError("no generator selected", field="--generators",
+                          hint="name at least one generator (see docs/own-generator.md)")
+    if len(set(config.tasks)) != len(config.tasks):
+        dup = sorted({t for t in config.tasks if config.tasks.count(t) > 1})
+        raise ConfigError(f"task(s) listed twice: {dup}", field="--tasks", hint="list each task once")
     available = task_ids(config.tasks_dir)
     ids = list(config.tasks) or available
     missing = [t for t in ids if t not in available]
@@ -69,6 +79,19 @@ def _preflight(config: RunConfig, run_dir: Path) -> dict[str, Any]:
     return {"model": getattr(model, "name", config.model)}
 
 
+def _prepare_dir(run_dir: Path) -> None:
+    """Refuse an output location that cannot hold a run before any work is done."""
+    try:
+        run_dir.mkdir(parents=True, exist_ok=True)
+        probe = run_dir / ".write-probe.tmp"
+        probe.write_text("", encoding="utf-8")
+        probe.unlink()
+    except OSError as exc:
+        raise ConfigError(f"cannot write the run folder: {exc.strerror or exc}", file=str(run_dir),
+                          field="--output",
+                          hint="choose a writable folder (not a file) with --output") from None
+
+
 def run(config: RunConfig, *, console: Console | None = None, show_progress: bool = True) -> RunOutcome:
     executor = make_executor(config.executor, config.workers)
     warm_up = getattr(executor, "warm_up", None)
@@ -77,10 +100,16 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
     refs = resolve_generators(config)
     ids = _check(config)
     tasks = load_tasks(config.tasks_dir, ids)
+    for task in tasks:  # before any unit: policy paths confined, situation count bounded
+        for kind in POLICY_KINDS:
+            policy_path(task, kind, config.tasks_dir)
+        situation_count(task)
     run_dir = config.run_dir()
+    _prepare_dir(run_dir)
     _preflight(config, run_dir)
     store = RunStore(run_dir)
     store.bind_config(config.identity())
+    store.remove_stale_temp_files()
     specs = [
         UnitSpec(generator=r.name, generator_target=r.target, generator_path=r.search_path, task_id=t,
                  tasks_dir=config.tasks_dir, model=config.model, model_args=config.model_args,
@@ -92,8 +121,8 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
     pending: list[UnitSpec] = []
     for spec in specs:
         stored = store.load(spec.generator, spec.task_id)
-        if stored is None or not store.files_intact(stored):
-            pending.append(spec)
+        if stored is None or stored.error_kind == "infrastructure" or not store.files_intact(stored):
+            pending.append(spec)  # never computed, corrupt, edited, or failed for a reason outside it
         else:
             records[(spec.generator, spec.task_id)] = stored
     reused = len(records)
@@ -108,11 +137,23 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
                                       completed=sum(1 for (gg, _) in records if gg == r.name))
             for r in refs
         }
-        for _, chunk in executor.map_unordered(run_units, chunk_units(pending, config.workers)):
-            for record in chunk:
-                store.save(record)
-                records[(record.generator, record.task_id)] = record
-                progress.advance(bars[record.generator])
+        streak = 0
+        # closing(): stopping early shuts the pool down at once and drops the queued units
+        chunks = executor.map_unordered(run_units, chunk_units(pending, config.workers))
+        with contextlib.closing(chunks) as finished:  # type: ignore[type-var]  # generators have close()
+            for _, chunk in finished:
+                for record in chunk:
+                    store.save(record)
+                    records[(record.generator, record.task_id)] = record
+                    progress.advance(bars[record.generator])
+                    streak = streak + 1 if record.error_kind == "infrastructure" else 0
+                    if config.max_infra_failures and streak >= config.max_infra_failures:
+                        raise RunFailedError(
+                            f"stopped after {streak} consecutive infrastructure failures; last: "
+                            f"{record.error}", file=str(run_dir),
+                            hint="fix the endpoint or cache, then re-run the same command: "
+                            "finished units are kept and the failed ones are recomputed "
+                            "(--max-infra-failures 0 never stops)")
     ordered = [records[(s.generator, s.task_id)] for s in specs]
     results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start,
                             generators=[r.name for r in refs])
@@ -122,4 +163,5 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
     write_leaderboards(run_dir, results, ordered)
     results["timing"]["report_seconds"] = round(time.perf_counter() - report_start, 3)
     write_outputs(run_dir, results, ordered)
-    return RunOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused)
+    return RunOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused,
+                      records=tuple(ordered))

@@ -71,20 +71,39 @@ class RunStore:
     def bind_config(self, identity: dict[str, Any]) -> None:
         """Record the run's identity, or check that an existing folder has the same one."""
         path = self.run_dir / "config.json"
-        if path.exists():
+        if path.exists() or path.is_symlink():
             try:
                 stored = json.loads(path.read_text(encoding="utf-8"))
-            except json.JSONDecodeError:
-                stored = None
-            if stored is not None and stored != identity:
+            except (OSError, ValueError, RecursionError):
+                # never guess: units of an unknown configuration must not be reused
+                raise RunStoreError(
+                    "the run's config.json is unreadable, so its units cannot be trusted",
+                    file=str(path),
+                    hint="delete the run folder to start over, or use another --output/--run-id",
+                ) from None
+            if stored != identity:
                 raise RunStoreError(
                     "this run folder belongs to a different configuration",
                     file=str(path),
                     hint="use another --output/--run-id, or delete the folder to start over",
                 )
-            if stored is not None:
-                return
+            return
+        if self.units_dir.exists():
+            raise RunStoreError(
+                "the run folder has units but no config.json, so they cannot be trusted",
+                file=str(self.run_dir),
+                hint="delete the run folder to start over, or use another --output/--run-id",
+            )
         atomic_write_text(path, json.dumps(identity, indent=2, sort_keys=True) + "\n")
+
+    def remove_stale_temp_files(self) -> int:
+        """Delete temp files left by a writer that was killed before its rename."""
+        removed = 0
+        for tmp in self.run_dir.rglob(".*.tmp") if self.run_dir.is_dir() else ():
+            with contextlib.suppress(OSError):
+                tmp.unlink()
+                removed += 1
+        return removed
 
     def save(self, record: UnitRecord) -> None:
         payload = record.model_dump(mode="json")

@@ -8,10 +8,12 @@ from __future__ import annotations
 
 import hashlib
 import json
+import sqlite3
 import time
 import traceback
 from collections.abc import Sequence
 from pathlib import Path
+from typing import Any, Literal
 
 import numpy as np
 from pydantic import BaseModel, ConfigDict
@@ -19,14 +21,16 @@ from pydantic import BaseModel, ConfigDict
 from logicenveval.benchmark import load_task, policy_path
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.envfiles import env_to_json
-from logicenveval.errors import LogicEnvEvalError
+from logicenveval.errors import CacheMissError, LogicEnvEvalError, ModelConnectionError
 from logicenveval.generators.base import GenerationContext, make_generator
 from logicenveval.generators.brief import BriefMode, generator_brief
 from logicenveval.generators.plugins import ensure_importable
+from logicenveval.llm.base import ChatModel, ChatRequest
 from logicenveval.llm.fewshot import FewShotModel
 from logicenveval.metrics.records import EnvDetail, EnvSample, UnitRecord
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import POLICY_KINDS
+from logicenveval.redact import redact
 from logicenveval.runner.store import atomic_write_text, text_digest
 from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
 
@@ -85,12 +89,13 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     policies = {k: load_policy(policy_path(task, k, spec.tasks_dir)) for k in POLICY_KINDS}
     run_dir = Path(spec.run_dir)
     start = time.perf_counter()
-    model = None
+    model: ChatModel | None = None
     try:
-        model = make_model(spec.model, spec.model_args, cache_path=spec.cache,
-                           no_cache=spec.no_cache, run_dir=run_dir)
+        watched = _Watched(make_model(spec.model, spec.model_args, cache_path=spec.cache,
+                                      no_cache=spec.no_cache, run_dir=run_dir))
+        model = watched
         if spec.brief == "description":
-            model = FewShotModel(model)
+            model = FewShotModel(watched)
         target = spec.generator_target or spec.generator
         ensure_importable(target, spec.generator_path)
         generator = make_generator(target)
@@ -104,16 +109,15 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
         )
         brief = generator_brief(task, spec.brief, model, seed=spec.seed)
         result = generator.generate(brief, ctx)
-    except LogicEnvEvalError as exc:
-        return UnitRecord(generator=spec.generator, task_id=spec.task_id,
-                          error=f"{type(exc).__name__}: {exc}",
-                          gen_seconds=time.perf_counter() - start, llm=_stats(model))
-    except Exception as exc:  # a generator bug must not kill the run; it is reported
-        tb = traceback.format_exception_only(type(exc), exc)[-1].strip()
-        return UnitRecord(generator=spec.generator, task_id=spec.task_id,
-                          error=f"internal error: {tb}", gen_seconds=time.perf_counter() - start,
+    except Exception as exc:  # a failing unit must not kill the run; it is recorded
+        return UnitRecord(generator=spec.generator, task_id=spec.task_id, error=_reason(exc),
+                          error_kind=failure_kind(exc), gen_seconds=time.perf_counter() - start,
                           llm=_stats(model))
     gen_seconds = time.perf_counter() - start
+    if watched.infra_error is not None:  # the generator absorbed it, but its output is incomplete
+        return UnitRecord(generator=spec.generator, task_id=spec.task_id,
+                          error="infrastructure failure during generation: " + watched.infra_error,
+                          error_kind="infrastructure", gen_seconds=gen_seconds, llm=_stats(model))
     rel_dir = Path("envs") / spec.generator / spec.task_id
     samples: list[EnvSample] = []
     details: list[EnvDetail] = []
@@ -168,6 +172,43 @@ def _write(run_dir: Path, rel: Path, text: str, files: dict[str, str]) -> None:
     """A file only generation can rebuild: not fsynced, but its digest goes into the unit."""
     atomic_write_text(run_dir / rel, text, durable=False)
     files[rel.as_posix()] = text_digest(text)
+
+
+class _Watched:
+    """A ChatModel proxy that remembers an infrastructure failure even when the generator
+    catches it and carries on: such a unit is incomplete and must be recomputed next run."""
+
+    def __init__(self, inner: ChatModel) -> None:
+        self._inner = inner
+        self.name = inner.name
+        self.infra_error: str | None = None
+
+    def complete(self, request: ChatRequest) -> str:
+        try:
+            return self._inner.complete(request)
+        except Exception as exc:
+            if self.infra_error is None and failure_kind(exc) == "infrastructure":
+                self.infra_error = _reason(exc)
+            raise
+
+    def __getattr__(self, attr: str) -> Any:
+        return getattr(self._inner, attr)
+
+
+def failure_kind(exc: BaseException) -> Literal["infrastructure", "generation", "internal"]:
+    """Infrastructure failures (endpoint, cache, disk) are not the generator's result: the next
+    run recomputes them instead of reusing them."""
+    if isinstance(exc, ModelConnectionError | CacheMissError | OSError | sqlite3.Error | MemoryError):
+        return "infrastructure"
+    return "generation" if isinstance(exc, LogicEnvEvalError) else "internal"
+
+
+def _reason(exc: BaseException) -> str:
+    if isinstance(exc, LogicEnvEvalError):
+        text = f"{type(exc).__name__}: {exc}"
+    else:
+        text = "internal error: " + traceback.format_exception_only(type(exc), exc)[-1].strip()
+    return redact(text if len(text) <= 2000 else text[:1997] + "...")
 
 
 def _stats(model: object) -> dict[str, float]:

@@ -20,6 +20,7 @@ from defusedxml.ElementTree import DefusedXMLParser
 
 from logicenveval.domain.actions import ACTIONS, CONDITIONS
 from logicenveval.errors import PolicyFormatError
+from logicenveval.limits import limit, raise_hint, read_text
 from logicenveval.model.rooms import is_room_type
 from logicenveval.sim.groot import tree_nodes_model
 from logicenveval.sim.policy import (
@@ -89,18 +90,43 @@ def ports_of(kind: str) -> tuple[tuple[str, ...], tuple[str, ...]]:
 
 
 class _LineBuilder(TreeBuilder):
+    """Records each element's line and refuses absurd nesting and attribute sizes as it reads."""
+
     parser: Any = None
+    source = "<string>"
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.depth = 0
+        self.max_depth = limit("max_xml_depth")
+        self.max_attr = limit("max_xml_attribute_chars")
 
     def start(self, tag: str, attrs: dict[str, str]) -> Element:
+        line = self.parser.parser.CurrentLineNumber
+        self.depth += 1
+        if self.depth > self.max_depth:
+            raise PolicyFormatError(f"elements nest deeper than {self.max_depth} levels",
+                                    file=self.source, line=line, hint=raise_hint("max_xml_depth"))
+        for key, value in attrs.items():
+            if len(value) > self.max_attr:
+                raise PolicyFormatError(
+                    f"attribute {key[:40]!r} of <{tag[:40]}> has {len(value)} characters, more "
+                    f"than the limit of {self.max_attr}", file=self.source, line=line,
+                    hint=raise_hint("max_xml_attribute_chars"))
         elem = super().start(tag, attrs)
-        elem.set(_LINE, str(self.parser.parser.CurrentLineNumber))
+        elem.set(_LINE, str(line))
         return elem
+
+    def end(self, tag: str) -> Element:
+        self.depth -= 1
+        return super().end(tag)
 
 
 def _parse_xml(text: str, source: str) -> Element:
     builder = _LineBuilder()
     parser = DefusedXMLParser(target=builder, forbid_dtd=True)
     builder.parser = parser
+    builder.source = source
     try:
         parser.feed(text)
         root: Element = parser.close()
@@ -119,6 +145,8 @@ class _Reader:
         self.source = source
         self.roles = set(roles) if roles is not None else None
         self.rooms = set(rooms) if rooms is not None else None
+        #: the main policy file's folder: includes may not leave it
+        self.top: Path | None = None
 
     def fail(self, elem: Element, message: str, hint: str,
              cls: type[PolicyFormatError] = PolicyFormatError) -> PolicyFormatError:
@@ -318,11 +346,18 @@ class _Reader:
         target = (base / rel).resolve()
         if str(target) in seen:
             raise self.fail(elem, f"include cycle through {target}", "remove the circular include")
+        top = self.top or base.resolve()
+        if not target.is_relative_to(top):  # untrusted policies must not read files elsewhere
+            raise self.fail(elem, f"include {rel!r} is outside the policy's folder {top}",
+                            "keep included files next to (or below) the main policy file")
         if not target.is_file():
             raise self.fail(elem, f"included file {rel!r} not found (looked at {target})",
                             "paths are relative to the including file")
         sub = _Reader(str(target), self.roles, self.rooms)
-        sub.document(_parse_xml(target.read_text(encoding="utf-8"), str(target)), target,
+        sub.top = top
+        text = read_text(target, what="included BT XML file", error=PolicyFormatError,
+                         max_bytes="max_xml_bytes", hint="paths are relative to the including file")
+        sub.document(_parse_xml(text, str(target)), target,
                      seen | {str(target)}, acc)
 
     def _model(self, elem: Element) -> None:
@@ -367,6 +402,7 @@ def policy_from_xml(text: str, source: str = "<string>", *, roles: Iterable[str]
                     rooms: Iterable[str] | None = None, path: Path | None = None) -> Policy:
     """Parse BT.CPP v4 XML; `roles`/`rooms` (when given) restrict the names ports may use."""
     reader = _Reader(source, roles, rooms)
+    reader.top = path.resolve().parent if path is not None else None
     root = _parse_xml(text, source)
     acc = _Trees()
     doc = reader.document(root, path, {str(path.resolve())} if path else set(), acc)
@@ -400,9 +436,17 @@ def _main_tree(doc: _Doc, trees: dict[str, tuple[PolicyNode, int]]) -> str | Non
 
 
 def _check_subtrees(policy: Policy, reader: _Reader) -> None:
-    """Every SubTree names a defined tree and no tree includes itself (directly or not)."""
+    """Every SubTree names a defined tree, no tree includes itself, and the expanded tree fits.
 
-    def visit(node: PolicyNode, stack: tuple[str, ...]) -> None:
+    Expansion inlines every SubTree, so trees that each call the next level twice grow
+    exponentially from a few KB of XML; the expanded size is counted per tree (memoised, linear
+    in the file) and refused above the `max_subtree_nodes` budget.
+    """
+    budget = limit("max_subtree_nodes")
+    sizes: dict[str, int] = {}
+
+    def size(node: PolicyNode, stack: tuple[str, ...]) -> int:
+        total = 1
         if node.kind == "SubTree":
             sub = node.param("ID") or ""
             if sub not in policy.trees:
@@ -413,21 +457,26 @@ def _check_subtrees(policy: Policy, reader: _Reader) -> None:
                 raise PolicyFormatError(f"SubTree {sub!r} is recursive ({' -> '.join(stack)})",
                                         file=reader.source, line=node.line or None,
                                         hint="a tree cannot contain itself")
-            visit(policy.trees[sub], (*stack, sub))
+            if sub not in sizes:
+                sizes[sub] = size(policy.trees[sub], (*stack, sub))
+            total += sizes[sub]
         for c in node.children:
-            visit(c, stack)
+            total += size(c, stack)
+        return min(total, budget + 1)
 
-    visit(policy.trees[policy.main], (policy.main,))
+    expanded = size(policy.trees[policy.main], (policy.main,))
+    if expanded > budget:
+        raise PolicyFormatError(f"the tree expands to more than {budget} nodes through its "
+                                "SubTrees", file=reader.source,
+                                hint="reuse fewer SubTrees per level, or "
+                                + raise_hint("max_subtree_nodes"))
 
 
 def load_policy(path: str | Path, roles: Iterable[str] | None = None,
                 rooms: Iterable[str] | None = None) -> Policy:
     p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise PolicyFormatError("policy file not found", file=str(p),
-                                hint="give an existing BT.CPP v4 XML file") from None
+    text = read_text(p, what="policy file", error=PolicyFormatError, max_bytes="max_xml_bytes",
+                     hint="give an existing BT.CPP v4 XML file")
     return policy_from_xml(text, str(p), roles=roles, rooms=rooms, path=p)
 
 

@@ -1,0 +1,88 @@
+"""Time to refuse hostile inputs (issue 20), against the time to accept a genuine one in the same run.
+
+Each hostile input is generated here (nothing big is committed) and handed to the public loader;
+the figure is the wall time until the clear error. The baseline is loading a real benchmark
+policy and task, so a ratio near 1 means a hostile file costs no more than a normal one.
+Last line: `worst_refusal_ms=<float> baseline_ms=<float> ratio=<float>`.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import json
+import statistics
+import tempfile
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+from logicenveval.benchmark import DEFAULT_TASKS_DIR, load_task_file
+from logicenveval.errors import LogicEnvEvalError
+from logicenveval.sim.loader import load_policy
+
+TASK = "clean_living_room"
+
+
+def fan_out(levels: int) -> str:
+    trees = [f'<BehaviorTree ID="T{i}"><Sequence><SubTree ID="T{i + 1}"/><SubTree ID="T{i + 1}"/>'
+             "</Sequence></BehaviorTree>" for i in range(levels)]
+    return ('<root BTCPP_format="4" main_tree_to_execute="T0">' + "".join(trees)
+            + f'<BehaviorTree ID="T{levels}"><AlwaysSuccess/></BehaviorTree></root>')
+
+
+def _ms(fn: Callable[[], object], repeat: int = 5) -> float:
+    times = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        with contextlib.suppress(LogicEnvEvalError):
+            fn()
+        times.append((time.perf_counter() - t0) * 1000)
+    return statistics.median(times)
+
+
+def main() -> None:
+    folder = DEFAULT_TASKS_DIR / TASK
+    task = json.loads((folder / "task.json").read_text())
+    with tempfile.TemporaryDirectory() as tmp:
+        d = Path(tmp)
+        files: dict[str, tuple[Path, Callable[[Path], object]]] = {}
+
+        def add(name: str, text: str | bytes, loader: Callable[[Path], object], suffix: str) -> None:
+            path = d / name / f"{TASK}{suffix}" if suffix == "" else d / f"{name}{suffix}"
+            path.parent.mkdir(parents=True, exist_ok=True)
+            (path.write_bytes if isinstance(text, bytes) else path.write_text)(text)  # type: ignore[operator]
+            files[name] = (path, loader)
+
+        for levels in (16, 18, 40):
+            add(f"subtree_fan_out_{levels}", fan_out(levels), load_policy, ".xml")
+        add("sequence_500_deep", '<root BTCPP_format="4"><BehaviorTree ID="M">' + "<Sequence>" * 500
+            + "<AlwaysSuccess/>" + "</Sequence>" * 500 + "</BehaviorTree></root>", load_policy, ".xml")
+        add("attribute_50MB", '<root BTCPP_format="4"><BehaviorTree ID="M"><Sequence name="'
+            + "a" * 50_000_000 + '"/></BehaviorTree></root>', load_policy, ".xml")
+        add("xml_utf16", (folder / "policies" / "correct.xml").read_text().encode("utf-16"), load_policy, ".xml")
+        big = dict(task, description="There may be a toy on the floor. " * 1_500_000)
+        (d / "desc" / TASK).mkdir(parents=True)
+        (d / "desc" / TASK / "task.json").write_text(json.dumps(big))
+        files["description_50MB"] = (d / "desc" / TASK / "task.json", load_task_file)
+        paren = dict(task)
+        paren["variables"] = dict(task["variables"])
+        paren["variables"]["toy_on_floor"] = {"question": "?", "values": {
+            "yes": "(" * 50_000 + "on(toy, floor)" + ")" * 50_000, "no": "not on(toy, floor)"}}
+        (d / "paren" / TASK).mkdir(parents=True)
+        (d / "paren" / TASK / "task.json").write_text(json.dumps(paren))
+        files["parentheses_50k"] = (d / "paren" / TASK / "task.json", load_task_file)
+
+        baseline = _ms(lambda: (load_task_file(folder / "task.json"),
+                                load_policy(folder / "policies" / "correct.xml")))
+        print(f"{'input':<24} {'bytes':>12} {'refused in ms':>14}")
+        worst = 0.0
+        for name, (path, loader) in files.items():
+            ms = _ms(lambda p=path, f=loader: f(p), repeat=3)  # type: ignore[misc]
+            worst = max(worst, ms)
+            print(f"{name:<24} {path.stat().st_size:>12} {ms:>14.1f}")
+    print(f"baseline (load one real task + policy): {baseline:.1f} ms")
+    print(f"worst_refusal_ms={worst:.1f} baseline_ms={baseline:.1f} ratio={worst / baseline:.2f}")
+
+
+if __name__ == "__main__":
+    main()

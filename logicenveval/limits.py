@@ -1,0 +1,101 @@
+"""Size and depth limits on untrusted input, and the one reader of untrusted text files.
+
+Task folders, BT XML, EnvSpecs and LLM replies may come from anyone (docs/security.md), so every
+size that drives time or memory has a bound with a clear error. Each limit has a default that is
+far above what the benchmark needs and can be raised with an environment variable
+`LOGICENVEVAL_<NAME>` (e.g. `LOGICENVEVAL_MAX_XML_BYTES=10000000`), read when the limit is used,
+so it also reaches worker processes.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from pathlib import Path
+from typing import Any
+
+from logicenveval.errors import ConfigError, LogicEnvEvalError
+
+#: name -> (default, what it bounds)
+DEFAULTS: dict[str, tuple[int, str]] = {
+    "max_task_bytes": (2_000_000, "size of a task.json"),
+    "max_description_chars": (20_000, "characters of a task description"),
+    "max_tree_depth": (60, "depth of a task's decision tree"),
+    "max_condition_depth": (50, "parenthesis nesting of a condition"),
+    "max_xml_bytes": (2_000_000, "size of a BT XML file"),
+    "max_xml_depth": (100, "element nesting of a BT XML file"),
+    "max_xml_attribute_chars": (1_000, "characters of one XML attribute value"),
+    "max_subtree_nodes": (100_000, "nodes of a BT after expanding its SubTrees"),
+    "max_env_bytes": (20_000_000, "size of an EnvSpec file"),
+    "max_run_file_bytes": (1_000_000_000, "size of a run's results.json or samples.jsonl"),
+    "max_env_objects": (2_000, "objects of one EnvSpec"),
+    "max_reply_bytes": (2_000_000, "bytes of one LLM HTTP reply"),
+    "max_situations": (100_000, "situations (trajectories) of one task"),
+    "max_workers": (256, "worker processes of a run"),
+}
+
+
+def limit(name: str) -> int:
+    """The current value of a limit (environment override or default)."""
+    default, _ = DEFAULTS[name]
+    env = f"LOGICENVEVAL_{name.upper()}"
+    raw = os.environ.get(env)
+    if raw is None:
+        return default
+    try:
+        value = int(raw)
+    except ValueError:
+        value = 0
+    if value < 1:
+        raise ConfigError(f"{env}={raw!r} is not a positive integer", field=env,
+                          hint=f"set it to an integer >= 1 (default {default}) or unset it")
+    return value
+
+
+def raise_hint(name: str) -> str:
+    return f"raise the limit with LOGICENVEVAL_{name.upper()}=<n> if the input is genuine"
+
+
+def read_text(path: str | Path, *, what: str, error: type[LogicEnvEvalError],
+              max_bytes: str, hint: str) -> str:
+    """Read an untrusted UTF-8 text file with one precise error for every way it can be unusable.
+
+    `max_bytes` names the size limit; `hint` is the fix for a missing file.
+    """
+    p = Path(path)
+    try:
+        size = p.stat().st_size
+    except FileNotFoundError:
+        raise error(f"{what} not found", file=str(p), hint=hint) from None
+    except OSError as exc:
+        raise error(f"cannot read {what}: {exc.strerror}", file=str(p), hint=hint) from None
+    if p.is_dir():
+        raise error(f"{what} is a directory, not a file", file=str(p), hint=hint)
+    cap = limit(max_bytes)
+    if size > cap:
+        raise error(f"{what} is {size} bytes, more than the limit of {cap}", file=str(p),
+                    hint=raise_hint(max_bytes))
+    try:
+        data = p.read_bytes()
+    except OSError as exc:
+        raise error(f"cannot read {what}: {exc.strerror}", file=str(p),
+                    hint="check the file's permissions") from None
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        bom = data[:2] in (b"\xff\xfe", b"\xfe\xff")
+        raise error(f"{what} is not UTF-8 text (byte {exc.start}"
+                    + (", looks like UTF-16" if bom else "") + ")", file=str(p),
+                    hint="save the file as UTF-8") from None
+
+
+def parse_json(text: str, *, file: str, error: type[LogicEnvEvalError]) -> Any:
+    """`json.loads` with one precise error for broken syntax and for absurd nesting."""
+    try:
+        return json.loads(text)
+    except json.JSONDecodeError as exc:
+        raise error(f"invalid JSON: {exc.msg}", file=file, line=exc.lineno, column=exc.colno,
+                    hint="fix the JSON syntax") from None
+    except RecursionError:
+        raise error("JSON nested too deeply to read", file=file,
+                    hint="flatten the file; no LogicEnvEval format nests more than a few levels") from None

@@ -1,0 +1,112 @@
+"""A hostile OpenAI-compatible server on 127.0.0.1 for tests: it fails, hangs, trickles and echoes
+secrets by turns. Good replies are the offline model's own answers, recorded beforehand and served
+by the hash of the request's messages (a server cannot know the payload, only the messages).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import itertools
+import json
+import threading
+import time
+from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
+from types import TracebackType
+from typing import Any
+
+
+def messages_key(messages: list[dict[str, Any]]) -> str:
+    return hashlib.sha256(json.dumps(messages, sort_keys=True).encode()).hexdigest()
+
+
+class Loopback:
+    """`modes` is cycled per POST: ok, fail (HTTP 500 echoing the request headers), hang,
+    trickle (one byte per `trickle_s`), echo (a good reply followed by the request headers), huge
+    (a 3 MB reply)."""
+
+    def __init__(self, *, replies: dict[str, str] | None = None, modes: list[str] | None = None,
+                 get_status: int = 200, echo: bool = False, hang_s: float = 6.0,
+                 trickle_s: float = 0.5) -> None:
+        self.replies = replies or {}
+        self.modes = itertools.cycle(modes or ["ok"])
+        self.get_status = get_status
+        self.echo = echo
+        self.hang_s = hang_s
+        self.trickle_s = trickle_s
+        self.posts = 0
+        self.seen: list[str] = []
+        self._lock = threading.Lock()
+        self._stop = threading.Event()
+        self._httpd = ThreadingHTTPServer(("127.0.0.1", 0), self._handler())
+        self._httpd.daemon_threads = True
+        self.url = f"http://127.0.0.1:{self._httpd.server_address[1]}/v1"
+
+    def set_modes(self, modes: list[str]) -> None:
+        with self._lock:
+            self.modes = itertools.cycle(modes)
+
+    def _handler(self) -> type[BaseHTTPRequestHandler]:
+        server = self
+
+        class Handler(BaseHTTPRequestHandler):
+            def log_message(self, *args: Any) -> None:
+                pass
+
+            def _send(self, status: int, body: bytes) -> None:
+                self.send_response(status)
+                self.send_header("Content-Type", "application/json")
+                self.send_header("Content-Length", str(len(body)))
+                self.end_headers()
+                self.wfile.write(body)
+
+            def do_GET(self) -> None:
+                headers = json.dumps(dict(self.headers)) if server.echo else "{}"
+                self._send(server.get_status, f'{{"data": [], "headers": {headers}}}'.encode())
+
+            def do_POST(self) -> None:
+                body = json.loads(self.rfile.read(int(self.headers.get("Content-Length", 0))))
+                with server._lock:
+                    server.posts += 1
+                    mode = next(server.modes)
+                server.seen.append(mode)
+                headers = json.dumps(dict(self.headers))
+                reply = server.replies.get(messages_key(body["messages"]))
+                try:
+                    if mode == "fail":
+                        self._send(500, f'{{"error": "boom", "your_headers": {headers}}}'.encode())
+                    elif mode == "hang":
+                        server._stop.wait(server.hang_s)
+                    elif mode == "trickle":
+                        self.send_response(200)
+                        self.send_header("Content-Type", "application/json")
+                        self.send_header("Content-Length", "100000")
+                        self.end_headers()
+                        for _ in range(int(60 / server.trickle_s)):
+                            if server._stop.wait(server.trickle_s):
+                                break
+                            self.wfile.write(b" ")
+                            self.wfile.flush()
+                    elif mode == "huge":
+                        self._send(200, b'{"choices": [{"message": {"content": "' + b"x" * 3_000_000 + b'"}}]}')
+                    elif reply is None:
+                        self._send(404, b'{"error": "no recorded reply for these messages"}')
+                    else:
+                        content = reply + ("\n\nrequest headers: " + headers if mode == "echo" else "")
+                        chat = {"choices": [{"message": {"role": "assistant", "content": content}}],
+                                "usage": {"prompt_tokens": 1, "completion_tokens": 1}}
+                        self._send(200, json.dumps(chat).encode())
+                except (BrokenPipeError, ConnectionResetError):
+                    pass  # the client gave up (its deadline): expected for hang/trickle
+
+        return Handler
+
+    def __enter__(self) -> Loopback:
+        threading.Thread(target=self._httpd.serve_forever, daemon=True).start()
+        return self
+
+    def __exit__(self, et: type[BaseException] | None, ev: BaseException | None,
+                 tb: TracebackType | None) -> None:
+        self._stop.set()
+        self._httpd.shutdown()
+        self._httpd.server_close()
+        time.sleep(0.05)
