@@ -149,3 +149,15 @@ def test_edited_files_score_into_a_new_run_folder(run_dir: Path, tmp_path: Path)
     assert len(folders) == 2 and first in folders
     second = next(p for p in folders if p != first)
     assert _results(second)["results"]["envs"]["n_envs"] == _results(first)["results"]["envs"]["n_envs"] - 1
+
+
+def test_every_file_bad_exits_1_with_the_reasons(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    envs = tmp_path / "envs"
+    for task in ("clean_living_room", "hallway_entry_tidy"):
+        (envs / task).mkdir(parents=True)
+        (envs / task / "broken.json").write_text("{not json")
+    code = main(["evaluate", str(envs), "--name", "mine", "--executor", "inprocess",
+                 "--output", str(tmp_path / "out")])
+    err = capsys.readouterr().err
+    assert code == 1
+    assert "mine: 2 of 2 unit(s) failed" in err and "no valid EnvSpec" in err

@@ -226,6 +226,23 @@ def test_generator_that_always_raises_exits_1_and_names_the_reason(
     assert "| cot |" in out  # and still reported
 
 
+def test_seeds_run_that_always_fails_exits_1(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch) -> None:
+    from logicenveval.generators.base import register
+
+    monkeypatch.setattr("logicenveval.generators.base._REGISTRY", dict(_REGISTRY))
+    register("always_fails", f"{__name__}:AlwaysFails")
+    code, _, err = cli(capsys, "run", "--generators", "always_fails", "--tasks", TASK, "--seeds", "0,1",
+                       "--executor", "inprocess", "--output", str(tmp_path), "--quiet")
+    assert code == 1
+    assert "always_fails: 2 of 2 unit(s) failed" in err and "the flux capacitor is unplugged" in err
+
+
+def test_negative_seeds_are_refused(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    code, _, err = cli(capsys, "run", "--seeds", "0,-1", "--tasks", TASK, "--output", str(tmp_path))
+    assert code == 2 and "--seeds" in err and "negative" in err
+
+
 def test_partial_failures_exit_0_and_are_listed(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     from logicenveval.commands.run import report_failures
     from logicenveval.generators.base import GenerationFailure

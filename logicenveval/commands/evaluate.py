@@ -5,6 +5,8 @@ from __future__ import annotations
 import argparse
 import os
 
+from logicenveval.commands import options
+
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("envs_dir", help="folder of <task_id>/*.json EnvSpecs (e.g. a run's envs/<generator>)")
@@ -12,7 +14,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--tasks", default="found",
                    help="comma-separated task ids; 'found' (default) = every task folder in ENVS_DIR")
     p.add_argument("--tasks-dir", default=None, help="folder of <task_id>/task.json (default: the benchmark)")
-    p.add_argument("--workers", type=int, default=os.cpu_count() or 1)
+    p.add_argument("--workers", type=options.workers, default=os.cpu_count() or 1)
     p.add_argument("--executor", default="process", choices=["process", "inprocess", "ray"])
     p.add_argument("--output", default="reports", help="parent folder of run folders")
     p.add_argument("--run-id", default=None, help="run folder name (default: derived from the inputs)")
@@ -27,7 +29,7 @@ def run(args: argparse.Namespace) -> int:
         name=args.name,
         tasks=() if args.tasks == "found" else tuple(t.strip() for t in args.tasks.split(",") if t.strip()),
         tasks_dir=args.tasks_dir,
-        workers=max(1, args.workers),
+        workers=args.workers,
         executor=args.executor,
         output=args.output,
         run_id=args.run_id,
@@ -40,4 +42,6 @@ def run(args: argparse.Namespace) -> int:
         print(f"failure {f['task']}: {f.get('env_id') or ''} {f['message']}".replace("  ", " "))
     print(f"run folder: {outcome.run_dir} (scored {outcome.computed} task folder(s), "
           f"reused {outcome.reused})")
-    return 0
+    from logicenveval.commands.run import report_failures
+
+    return report_failures(outcome.records)

@@ -96,7 +96,7 @@ def run(args: argparse.Namespace) -> int:
         print(markdown(multi.results))
         print(f"run folder: {multi.run_dir} (seed runs {', '.join(str(d) for d in multi.seed_dirs)}; "
               f"computed {multi.computed} unit(s), reused {multi.reused})")
-        return 0
+        return report_failures(multi.records)
     outcome = run_benchmark(config, show_progress=not args.quiet)
     if formats:
         from logicenveval.scene.export_files import export_run
@@ -128,7 +128,11 @@ def _seeds(text: str) -> list[int]:
     from logicenveval.errors import ConfigError
 
     try:
-        return [int(t) for t in text.split(",") if t.strip()]
+        seeds = [int(t) for t in text.split(",") if t.strip()]
     except ValueError:
         raise ConfigError(f"--seeds {text!r} is not a list of integers", field="--seeds",
                           hint="e.g. --seeds 0,1,2") from None
+    if any(s < 0 for s in seeds):
+        raise ConfigError(f"--seeds {text!r} has a negative seed", field="--seeds",
+                          hint="seeds are integers >= 0, e.g. --seeds 0,1,2")
+    return seeds

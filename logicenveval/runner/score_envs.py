@@ -103,6 +103,7 @@ class EvaluateOutcome:
     computed: int
     reused: int
     skipped_folders: list[str] = field(default_factory=list)  # not tasks of the tasks dir
+    records: tuple[UnitRecord, ...] = ()  # one unit per task, in task order
 
 
 def folder_digest(root: Path) -> str:
@@ -242,5 +243,5 @@ def evaluate_envs(config: EvaluateConfig) -> EvaluateOutcome:
 
     write_leaderboards(run_dir, results, ordered)
     return EvaluateOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused,
-                           skipped_folders=skipped)
+                           skipped_folders=skipped, records=tuple(ordered))
 

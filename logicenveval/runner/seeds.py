@@ -20,6 +20,7 @@ from typing import Any
 from rich.console import Console
 
 from logicenveval.errors import ConfigError
+from logicenveval.metrics.records import UnitRecord
 from logicenveval.metrics.uncertainty import ci95, point_metrics
 from logicenveval.runner.config import RunConfig
 from logicenveval.runner.results import RESULTS_SCHEMA, bootstrap_rng
@@ -34,6 +35,7 @@ class SeedsOutcome:
     seed_dirs: list[Path]
     computed: int
     reused: int
+    records: tuple[UnitRecord, ...] = ()  # every unit of every seed, seed by seed
 
 
 def seeds_identity(config: RunConfig, seeds: Sequence[int]) -> dict[str, object]:
@@ -58,11 +60,13 @@ def run_seeds(config: RunConfig, seeds: Sequence[int], *, console: Console | Non
     parent = seeds_run_dir(config, seeds)
     RunStore(parent).bind_config(seeds_identity(config, seeds))
     per_seed = []
+    records: list[UnitRecord] = []
     computed = reused = 0
     for seed in seeds:
         one = config.model_copy(update={"seed": seed, "output": str(parent), "run_id": f"seed{seed}"})
         outcome = run(one, console=console, show_progress=show_progress)
         per_seed.append(outcome.results)
+        records.extend(outcome.records)
         computed += outcome.computed
         reused += outcome.reused
     results = combine_seeds(parent.name, seeds_identity(config, seeds), per_seed)
@@ -72,7 +76,7 @@ def run_seeds(config: RunConfig, seeds: Sequence[int], *, console: Console | Non
     write_leaderboards(parent, results)
     return SeedsOutcome(run_dir=parent, results=results,
                         seed_dirs=[parent / f"seed{s}" for s in seeds], computed=computed,
-                        reused=reused)
+                        reused=reused, records=tuple(records))
 
 
 def combine_seeds(run_id: str, identity: dict[str, object],
