@@ -114,3 +114,36 @@ def test_tasks_mutants_cli(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["tasks", "mutants", "--tasks", "lamp_or_pillow_fetch", "--worlds", "2"]) == 0
     assert "killable" in capsys.readouterr().out
     assert main(["tasks", "mutants", "--tasks", "no_such_task"]) == 2
+
+
+def test_shipped_killable_lists_are_current_and_equal_a_fresh_classification() -> None:
+    from logicenveval.benchmark import task_ids
+    from logicenveval.faults.score import shipped_is_current, shipped_path
+
+    cat = load_catalog()
+    stale = [t for t in task_ids() if not shipped_is_current(load_task(t), None, cat)]
+    assert not stale, f"run `python -m logicenveval tasks mutants --write` (stale: {stale})"
+    task = load_task("lamp_or_pillow_fetch")
+    shipped = json.loads(shipped_path(task, None).read_text())["killable"]
+    assert shipped == [o.id for o in classify_task(task, None, cat).killable]
+
+
+def test_written_list_is_read_instead_of_classifying(tmp_path, monkeypatch) -> None:  # type: ignore[no-untyped-def]
+    import shutil
+
+    from logicenveval.benchmark import DEFAULT_TASKS_DIR
+
+    shutil.copytree(DEFAULT_TASKS_DIR / "lamp_or_pillow_fetch", tmp_path / "lamp_or_pillow_fetch")
+    (tmp_path / "lamp_or_pillow_fetch" / "killable_mutants.json").unlink()
+    assert main(["tasks", "mutants", "--tasks", "lamp_or_pillow_fetch", "--worlds", "2", "--write",
+                 "--tasks-dir", str(tmp_path)]) == 0
+    written = json.loads((tmp_path / "lamp_or_pillow_fetch" / "killable_mutants.json").read_text())
+
+    def refuse(*a, **k):  # type: ignore[no-untyped-def]
+        raise AssertionError("classified although a current list was shipped")
+
+    monkeypatch.setattr("logicenveval.faults.score.classify_task", refuse)
+    clear_cache()
+    task = load_task("lamp_or_pillow_fetch", tmp_path)
+    scorer = scorer_for(task, tmp_path, load_catalog(), worlds=2)
+    assert [m.id for m in scorer.killable] == written["killable"]

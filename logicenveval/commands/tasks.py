@@ -26,6 +26,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     mu.add_argument("--worlds", type=_positive, default=None,
                     help="worlds simulated per situation (default 12, as tasks validate)")
     mu.add_argument("--json", action="store_true", help="print JSON (every mutant and what kills it)")
+    mu.add_argument("--write", action="store_true",
+                    help="also write each task folder's killable_mutants.json (read by run/evaluate)")
     st = sub.add_parser("stats", help="per-task logical and policy sizes, with totals")
     st.add_argument("--markdown", action="store_true", help="print a Markdown table (for the README)")
     for q in (ls, show, val, mu, st):
@@ -148,6 +150,14 @@ def _mutants(args: argparse.Namespace) -> int:
         raise ConfigError(f"unknown task id(s) {unknown}", field="--tasks",
                           hint=f"use all or some of: {', '.join(known)}")
     reports = classify_tasks(ids, args.tasks_dir, worlds=args.worlds or DEFAULT_WORLDS)
+    if args.write:
+        from logicenveval.benchmark import load_task
+        from logicenveval.domain.catalog import load_catalog
+        from logicenveval.faults.score import write_shipped
+
+        for r in reports:
+            write_shipped(load_task(r.task, args.tasks_dir), args.tasks_dir, load_catalog(),
+                          [o.id for o in r.killable], worlds=args.worlds or DEFAULT_WORLDS)
     if args.json:
         print(json.dumps([r.to_json() for r in reports], indent=2, sort_keys=True))
         return 0

@@ -5,9 +5,11 @@ faults to detect; an environment *kills* a mutant when the mutant does not pass 
 simulates the killable mutants in every valid environment and stores the killed ids per
 environment (`EnvSample.killed_mutants`); `metrics.compute` turns them into `faudr_mut`.
 
-Classifying a task's mutants takes exhaustive simulation over every world of every situation, so
-the list of killable ids is cached as JSON keyed by a hash of the task, its correct BT and the
-number of worlds; a stale cache is recomputed, never trusted.
+Classifying a task's mutants takes exhaustive simulation over every world of every situation
+(seconds per task), so the list of killable ids is shipped in each benchmark task folder
+(`killable_mutants.json`, written by `tasks mutants --write`) and cached per run, both keyed by a
+hash of the task, its correct BT, the catalog, the operators and the number of worlds; a stale
+file is recomputed, never trusted.
 """
 
 from __future__ import annotations
@@ -44,18 +46,42 @@ class MutationScorer:
         return sorted(self.killable[i].id for i in got)
 
 
-def scorer_for(task: Task, tasks_dir: str | Path | None, catalog: Catalog, *,
-               cache_dir: Path | None = None, worlds: int = DEFAULT_WORLDS) -> MutationScorer:
-    """The scorer of `task`: its correct BT and killable mutants (classified or from cache)."""
+#: file of killable mutant ids shipped in a task folder (`tasks mutants --write`), keyed like the cache
+SHIPPED_NAME = "killable_mutants.json"
+
+
+def scorer_key(task: Task, correct: Policy, muts: list[Mutant], catalog: Catalog, worlds: int) -> str:
+    """Content key of a task's classification: any change to what it depends on makes it stale."""
+    return hashlib.sha256("\0".join([task.model_dump_json(), policy_to_xml(correct), str(worlds),
+                                      catalog.model_dump_json(), *sorted(OPERATORS),
+                                      str(len(muts))]).encode()).hexdigest()
+
+
+def shipped_path(task: Task, tasks_dir: str | Path | None) -> Path:
+    return policy_path(task, "correct", tasks_dir).parent.parent / SHIPPED_NAME
+
+
+def _prepared(task: Task, tasks_dir: str | Path | None, catalog: Catalog,
+              worlds: int) -> tuple[Policy, list[Mutant], str]:
     correct = load_policy(policy_path(task, "correct", tasks_dir), roles=task.roles, rooms=task.rooms)
     muts = mutants(correct, roles=task.roles, rooms=task.rooms)
-    key = hashlib.sha256("\0".join([task.model_dump_json(), policy_to_xml(correct), str(worlds),
-                                    catalog.model_dump_json(), *sorted(OPERATORS),
-                                    str(len(muts))]).encode()).hexdigest()
+    return correct, muts, scorer_key(task, correct, muts, catalog, worlds)
+
+
+def scorer_for(task: Task, tasks_dir: str | Path | None, catalog: Catalog, *,
+               cache_dir: Path | None = None, worlds: int = DEFAULT_WORLDS) -> MutationScorer:
+    """The scorer of `task`: its correct BT and killable mutants.
+
+    The killable ids come from the task folder's shipped file, else the run's cache, else
+    classification; a file whose key does not match the current task, BT, catalog and operators
+    is ignored (recomputed, never trusted)."""
+    correct, muts, key = _prepared(task, tasks_dir, catalog, worlds)
     hit = _SCORERS.get(key)
     if hit is not None:
         return hit
-    ids = _cached(cache_dir, task.id, key)
+    ids = _read(shipped_path(task, tasks_dir), key)
+    if ids is None and cache_dir is not None:
+        ids = _read(cache_dir / f"{task.id}.json", key)
     if ids is None:
         report = classify_task(task, tasks_dir, catalog, worlds=worlds)
         ids = [o.id for o in report.killable]
@@ -64,6 +90,21 @@ def scorer_for(task: Task, tasks_dir: str | Path | None, catalog: Catalog, *,
     keep = set(ids)
     scorer = _SCORERS[key] = MutationScorer(correct, [m for m in muts if m.id in keep])
     return scorer
+
+
+def write_shipped(task: Task, tasks_dir: str | Path | None, catalog: Catalog, killable: list[str], *,
+                  worlds: int = DEFAULT_WORLDS) -> Path:
+    """Ship a task's killable ids in its folder, so runs need not classify it again."""
+    _, _, key = _prepared(task, tasks_dir, catalog, worlds)
+    path = shipped_path(task, tasks_dir)
+    _write(path, json.dumps({"key": key, "killable": killable}, indent=1))
+    return path
+
+
+def shipped_is_current(task: Task, tasks_dir: str | Path | None, catalog: Catalog, *,
+                       worlds: int = DEFAULT_WORLDS) -> bool:
+    _, _, key = _prepared(task, tasks_dir, catalog, worlds)
+    return _read(shipped_path(task, tasks_dir), key) is not None
 
 
 #: scorers by content key: a worker process builds each mutant's tree once for all its units
@@ -83,11 +124,9 @@ def _write(path: Path, text: str) -> None:
     os.replace(tmp, path)
 
 
-def _cached(cache_dir: Path | None, task_id: str, key: str) -> list[str] | None:
-    if cache_dir is None:
-        return None
+def _read(path: Path, key: str) -> list[str] | None:
     try:
-        data = json.loads((cache_dir / f"{task_id}.json").read_text(encoding="utf-8"))
+        data = json.loads(path.read_text(encoding="utf-8"))
     except (FileNotFoundError, json.JSONDecodeError):
         return None
     if not isinstance(data, dict) or data.get("key") != key or not isinstance(data.get("killable"), list):
