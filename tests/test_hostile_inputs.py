@@ -662,3 +662,18 @@ def test_malformed_envspec_lists_each_problem(tmp_path: Path, capsys: pytest.Cap
     assert code == 2
     for field in ("objects.0.category", "objects.1.position", "doors.0.state"):
         assert field in err
+
+
+@pytest.mark.parametrize("command", [["check-house"], ["import-house", "--task", TASK, "--out", "OUT"]])
+def test_house_files_that_cannot_be_read(command: list[str], tmp_path: Path,
+                                         capsys: pytest.CaptureFixture[str]) -> None:
+    utf16 = tmp_path / "utf16.json"
+    utf16.write_bytes(b"\xff\xfe{\x00}\x00")
+    listed = tmp_path / "list.json"
+    listed.write_text("[1, 2]")
+    argv = [str(tmp_path / "out.json") if a == "OUT" else a for a in command[1:]]
+    for path, expected in ((utf16, "not UTF-8"), (listed, "JSON object"), (tmp_path, "a directory")):
+        code, out, err = cli(capsys, command[0], str(path), *argv)
+        assert code == 2 and expected in err and str(path) in err
+        assert "Traceback" not in out + err
+    assert not (tmp_path / "out.json").exists()

@@ -22,8 +22,8 @@ def run(args: argparse.Namespace) -> int:
     import json
     from pathlib import Path
 
-    from logicenveval.errors import ConfigError
     from logicenveval.scene.house_check import check_house
+    from logicenveval.scene.house_import import load_house
     from logicenveval.scene.procthor import load_mapping, load_procthor_db, mapping_db
 
     db = load_procthor_db(args.procthor_db) if args.procthor_db else mapping_db(load_mapping())
@@ -34,13 +34,7 @@ def run(args: argparse.Namespace) -> int:
     reports = {}
     for name in args.house:
         path = Path(name)
-        try:
-            house = json.loads(path.read_text(encoding="utf-8"))
-        except FileNotFoundError:
-            raise ConfigError("house file not found", file=name, hint="check the path") from None
-        except json.JSONDecodeError as exc:
-            raise ConfigError(f"invalid JSON: {exc.msg}", file=name, line=exc.lineno,
-                              hint="export it with `python -m logicenveval export`") from None
+        house = load_house(path)
         report = check_house(house, db)
         reports[name] = report
         failed += not report.passed

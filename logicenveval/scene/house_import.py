@@ -29,7 +29,6 @@ unknown one none — PhyPR of an imported house therefore reflects these approxi
 
 from __future__ import annotations
 
-import json
 import math
 import re
 from collections.abc import Iterable
@@ -312,12 +311,13 @@ def import_house(house: dict[str, Any], *, task_id: str, env_id: str, catalog: C
 
 
 def load_house(path: str | Path) -> dict[str, Any]:
-    p = Path(path)
-    try:
-        data: dict[str, Any] = json.loads(p.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise EnvSpecError("file not found", file=str(p), hint="check the path") from None
-    except json.JSONDecodeError as exc:
-        raise EnvSpecError(f"invalid JSON: {exc.msg}", file=str(p), line=exc.lineno,
-                           column=exc.colno, hint="fix the JSON syntax") from None
+    """Read an untrusted house JSON file (size-limited, UTF-8, one precise error per problem)."""
+    from logicenveval.limits import parse_json, read_text
+
+    text = read_text(path, what="house file", error=EnvSpecError, max_bytes="max_env_bytes",
+                     hint="check the path")
+    data = parse_json(text, file=str(path), error=EnvSpecError)
+    if not isinstance(data, dict):
+        raise EnvSpecError(f"a house is a JSON object, not {type(data).__name__}", file=str(path),
+                           hint="export the house with AI2-THOR/ProcTHOR (schema 1.0.0)")
     return data
