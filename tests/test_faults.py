@@ -147,3 +147,26 @@ def test_written_list_is_read_instead_of_classifying(tmp_path, monkeypatch) -> N
     task = load_task("lamp_or_pillow_fetch", tmp_path)
     scorer = scorer_for(task, tmp_path, load_catalog(), worlds=2)
     assert [m.id for m in scorer.killable] == written["killable"]
+
+
+def test_killed_is_memoised_by_the_symbolic_world_only() -> None:
+    from logicenveval.faults.score import MutationScorer
+    from logicenveval.model.envspec import EnvSpec
+    from logicenveval.sim.world import symbolic_key
+
+    task, cat, muts, _, worlds = _prepared("lamp_or_pillow_fetch")
+    _, correct = _correct("lamp_or_pillow_fetch")
+    envs: list[EnvSpec] = [env for _, env in worlds]
+    fresh = [MutationScorer(correct, muts).killed(env, task, cat) for env in envs]
+    shared = MutationScorer(correct, muts)
+    assert [shared.killed(env, task, cat) for env in envs] == fresh
+    env = envs[0]
+    renamed = env.model_copy(update={"env_id": "another-name"})
+    assert symbolic_key(renamed) == symbolic_key(env)  # the file's name is not part of the world
+    first = env.objects[0]
+    for change in ({"room": "elsewhere"}, {"states": {**first.states, "dirty": True}},
+                   {"attributes": {**first.attributes, "colour": "x"}}, {"category": "mug"},
+                   {"support": "floor-x"}, {"container": "box-x"}):
+        changed = env.model_copy(update={"objects": [first.model_copy(update=change), *env.objects[1:]]})
+        assert symbolic_key(changed) != symbolic_key(env), change
+    assert symbolic_key(env.model_copy(update={"roles": {}})) != symbolic_key(env)

@@ -28,7 +28,7 @@ from logicenveval.model.task import Task
 from logicenveval.sim.loader import load_policy, policy_to_xml
 from logicenveval.sim.policy import Policy
 from logicenveval.sim.simulator import task_goal
-from logicenveval.sim.world import World
+from logicenveval.sim.world import World, symbolic_key
 from logicenveval.sim.worlds import DEFAULT_WORLDS
 
 
@@ -39,11 +39,22 @@ class MutationScorer:
         self.killable = killable
         self.classes = {m.id: m.fault_class for m in killable}
         self._runner = MutantRunner(correct, killable)
+        self._killed: dict[str, list[str]] = {}
 
     def killed(self, env: EnvSpec, task: Task, catalog: Catalog) -> list[str]:
-        world = World.from_env(env, catalog)
-        got = self._runner.run(world, task_goal(task, world))
-        return sorted(self.killable[i].id for i in got)
+        """Killed ids; memoised by the env's symbolic world, since the simulator sees nothing else
+        (different generators often realise the same situation with the same objects)."""
+        key = symbolic_key(env)
+        hit = self._killed.get(key)
+        if hit is None:
+            world = World.from_env(env, catalog)
+            got = self._runner.run(world, task_goal(task, world))
+            hit = self._killed[key] = sorted(self.killable[i].id for i in got)
+        return list(hit)
+
+    def forget_killed(self) -> None:
+        """Drop the memoised results but keep the built trees (to time a warm worker)."""
+        self._killed.clear()
 
 
 #: file of killable mutant ids shipped in a task folder (`tasks mutants --write`), keyed like the cache

@@ -7,6 +7,7 @@ flags, agent). `copy()` duplicates only the mutable part, so resetting per episo
 
 from __future__ import annotations
 
+import json
 from collections import deque
 from dataclasses import dataclass
 
@@ -213,6 +214,19 @@ class World:
             }
         return {"agent_room": self.agent_room, "holding": self.holding, "near": self.near,
                 "roles": roles}
+
+
+def symbolic_key(env: EnvSpec) -> str:
+    """Everything `World.from_env` reads from an EnvSpec, in order: two environments with the same
+    key start every episode in the same symbolic world (geometry and ids of the file aside)."""
+    return json.dumps([
+        list(env.roles.items()),
+        [(o.id, o.category, list(o.attributes.items()), list(o.states.items()), o.support,
+          o.container, o.room) for o in env.objects],
+        [(r.id, r.type) for r in env.rooms],
+        [list(d.rooms) for d in env.doors],
+        env.agent.room,
+    ], default=str)
 
 
 def holds_initial(env: EnvSpec, catalog: Catalog | None = None) -> Holds:
