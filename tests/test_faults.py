@@ -170,3 +170,31 @@ def test_killed_is_memoised_by_the_symbolic_world_only() -> None:
         changed = env.model_copy(update={"objects": [first.model_copy(update=change), *env.objects[1:]]})
         assert symbolic_key(changed) != symbolic_key(env), change
     assert symbolic_key(env.model_copy(update={"roles": {}})) != symbolic_key(env)
+
+
+def test_mutants_are_scored_on_the_env_as_judged() -> None:
+    """An env whose roles the harness binds kills the same mutants as the same env with its roles."""
+    from logicenveval.faults.score import MutationScorer
+    from logicenveval.runner.evaluation import evaluate_env, with_killed_mutants
+
+    task, cat, muts, _, worlds = _prepared("lamp_or_pillow_fetch")
+    _, correct = _correct("lamp_or_pillow_fetch")
+    policies = {k: load_policy(policy_path(task, k), roles=task.roles, rooms=task.rooms) for k in task.policies}
+    scorer = MutationScorer(correct, muts)
+    situation = worlds[0][1]
+    # object ids unlike role names (as generators write them), so an unbound role cannot be
+    # resolved by accident through an id equal to its name
+    new = {o.id: f"obj{i}" for i, o in enumerate(situation.objects)}
+    env = situation.model_copy(update={
+        "objects": [o.model_copy(update={"id": new[o.id],
+                                         "support": new.get(o.support or "", o.support),
+                                         "container": new.get(o.container or "", o.container)})
+                    for o in situation.objects],
+        "roles": {r: new[oid] if oid else None for r, oid in situation.roles.items()}})
+    anonymous = env.model_copy(update={"roles": {}})
+    with_roles = with_killed_mutants(evaluate_env("g", task, env, policies, cat), task, scorer, cat)
+    bound = with_killed_mutants(evaluate_env("g", task, anonymous, policies, cat), task, scorer, cat)
+    assert bound.verdicts["correct"] == "passed" and bound.killed_mutants
+    assert bound.killed_mutants == with_roles.killed_mutants
+    # the fixture discriminates: scored on the unbound env, more mutants would count as killed
+    assert MutationScorer(correct, muts).killed(anonymous, task, cat) != bound.killed_mutants

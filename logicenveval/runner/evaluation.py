@@ -9,7 +9,7 @@ from __future__ import annotations
 import time
 from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from logicenveval.domain.catalog import Catalog
 from logicenveval.domain.roles import RoleBinding, bind_roles
@@ -20,6 +20,9 @@ from logicenveval.model.task import Task
 from logicenveval.physics import PhysicsReport, check_env
 from logicenveval.sim.simulator import simulate
 from logicenveval.sim.world import holds_initial
+
+if TYPE_CHECKING:
+    from logicenveval.faults.score import MutationScorer
 
 
 def with_bound_roles(env: EnvSpec, task: Task, catalog: Catalog) -> tuple[EnvSpec, RoleBinding]:
@@ -106,3 +109,19 @@ def evaluate_env(
         sim_ticks=sim_ticks,
     )
     return Evaluation(sample=sample, env=env, physics=report, traces=traces)
+
+
+def with_killed_mutants(done: Evaluation, task: Task, scorer: MutationScorer,
+                        catalog: Catalog) -> EnvSample:
+    """The sample with the mutants its environment kills (`faudr_mut`), timed as `sim_ms.mutants`.
+
+    Only valid environments (well-formed, correct BT passes) score mutants, and on the env as
+    judged (roles bound), like the four policies."""
+    sample = done.sample
+    if not (sample.well_formed and sample.verdicts.get("correct") == "passed"):
+        return sample
+    start = time.perf_counter()
+    killed = scorer.killed(done.env, task, catalog)
+    ms = (time.perf_counter() - start) * 1000.0
+    return sample.model_copy(update={"killed_mutants": killed,
+                                     "sim_ms": {**sample.sim_ms, "mutants": ms}})

@@ -132,7 +132,7 @@ def score_unit(spec: ScoreUnitSpec) -> UnitRecord:
     """Judge every EnvSpec of one task folder; a bad file is a failure, never an exception."""
     from logicenveval.faults.score import scorer_for
     from logicenveval.physics.render import render_svg
-    from logicenveval.runner.evaluation import evaluate_env
+    from logicenveval.runner.evaluation import evaluate_env, with_killed_mutants
     from logicenveval.sim.loader import load_policy
 
     task = load_task(spec.task_id, spec.tasks_dir)
@@ -144,7 +144,6 @@ def score_unit(spec: ScoreUnitSpec) -> UnitRecord:
     details: list[EnvDetail] = []
     files: dict[str, str] = {}
     seen: set[str] = set()
-    # mutation scoring exactly as `run_unit` does it (faudr_mut)
     scorer = scorer_for(task, spec.tasks_dir, catalog, cache_dir=Path(spec.run_dir) / "work" / "mutants")
     for path in env_files(folder):
         try:
@@ -158,13 +157,7 @@ def score_unit(spec: ScoreUnitSpec) -> UnitRecord:
                                   file=str(path), field="env_id", hint="give every environment its own env_id")
             seen.add(env.env_id)
             done = evaluate_env(spec.generator, task, env, policies, catalog)
-            sample = done.sample
-            if sample.well_formed and sample.verdicts.get("correct") == "passed":
-                start = time.perf_counter()
-                killed = scorer.killed(done.env, task, catalog)
-                ms = (time.perf_counter() - start) * 1000.0
-                sample = sample.model_copy(update={"killed_mutants": killed,
-                                                   "sim_ms": {**sample.sim_ms, "mutants": ms}})
+            sample = with_killed_mutants(done, task, scorer, catalog)
         except LogicEnvEvalError as exc:
             failures.append(GenerationFailure(stage="load", message=str(exc), env_id=path.stem))
             continue

@@ -81,7 +81,7 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     from logicenveval.faults.score import scorer_for
     from logicenveval.llm.registry import make_model
     from logicenveval.physics.render import render_svg
-    from logicenveval.runner.evaluation import evaluate_env
+    from logicenveval.runner.evaluation import evaluate_env, with_killed_mutants
     from logicenveval.sim.loader import load_policy
 
     task = load_task(spec.task_id, spec.tasks_dir)
@@ -126,13 +126,7 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     for env in _unique_ids(result.envs):
         _write(run_dir, rel_dir / f"{env.env_id}.json", env_to_json(env), files)
         done = evaluate_env(spec.generator, task, env, policies, catalog)
-        sample = done.sample
-        if sample.well_formed and sample.verdicts.get("correct") == "passed":
-            start = time.perf_counter()
-            killed = scorer.killed(env, task, catalog)
-            ms = (time.perf_counter() - start) * 1000.0
-            sample = sample.model_copy(update={"killed_mutants": killed,
-                                               "sim_ms": {**sample.sim_ms, "mutants": ms}})
+        sample = with_killed_mutants(done, task, scorer, catalog)
         render = (Path("renders") / spec.generator / spec.task_id / f"{env.env_id}.svg").as_posix()
         atomic_write_text(run_dir / render, render_svg(done.env, done.physics), durable=False)
         samples.append(sample)
