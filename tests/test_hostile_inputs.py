@@ -414,17 +414,17 @@ def test_disk_full_while_committing(tmp_path: Path, capsys: pytest.CaptureFixtur
     """ENOSPC while saving a unit: exit 1, one line, and the temp file is cleaned up."""
     import errno
 
-    from logicenveval.runner import store
+    from logicenveval import atomic
 
-    real = store.os.fsync
+    real = atomic.os.fsync
 
     def full(fd: int) -> None:
         raise OSError(errno.ENOSPC, "No space left on device")
 
-    monkeypatch.setattr(store.os, "fsync", full)
+    monkeypatch.setattr(atomic.os, "fsync", full)
     out = tmp_path / "o"
     code, _, err = cli(capsys, *run_args(out))
-    monkeypatch.setattr(store.os, "fsync", real)
+    monkeypatch.setattr(atomic.os, "fsync", real)
     assert code == 1 and "No space left on device" in err
     assert not list(out.rglob("*.tmp"))
 

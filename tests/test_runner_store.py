@@ -7,11 +7,12 @@ from pathlib import Path
 
 import pytest
 
+from logicenveval.atomic import atomic_write_text
 from logicenveval.errors import RunStoreError
 from logicenveval.metrics.records import EnvSample, PhysicsSummary, UnitRecord
 from logicenveval.reporting.compare import compare_results
 from logicenveval.runner.config import RunConfig
-from logicenveval.runner.store import RunStore, atomic_write_text
+from logicenveval.runner.store import RunStore
 
 
 def _record(task: str = "t1") -> UnitRecord:

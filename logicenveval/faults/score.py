@@ -16,9 +16,9 @@ from __future__ import annotations
 
 import hashlib
 import json
-import os
 from pathlib import Path
 
+from logicenveval.atomic import atomic_write_text
 from logicenveval.benchmark import policy_path
 from logicenveval.domain.catalog import Catalog
 from logicenveval.faults.classify import MutantRunner, classify_task
@@ -97,7 +97,8 @@ def scorer_for(task: Task, tasks_dir: str | Path | None, catalog: Catalog, *,
         report = classify_task(task, tasks_dir, catalog, worlds=worlds)
         ids = [o.id for o in report.killable]
         if cache_dir is not None:
-            _write(cache_dir / f"{task.id}.json", json.dumps({"key": key, "killable": ids}, indent=1))
+            atomic_write_text(cache_dir / f"{task.id}.json", json.dumps({"key": key, "killable": ids}, indent=1) + "\n",
+                              durable=False)
     keep = set(ids)
     scorer = _SCORERS[key] = MutationScorer(correct, [m for m in muts if m.id in keep])
     return scorer
@@ -108,7 +109,7 @@ def write_shipped(task: Task, tasks_dir: str | Path | None, catalog: Catalog, ki
     """Ship a task's killable ids in its folder, so runs need not classify it again."""
     _, _, key = _prepared(task, tasks_dir, catalog, worlds)
     path = shipped_path(task, tasks_dir)
-    _write(path, json.dumps({"key": key, "killable": killable}, indent=1))
+    atomic_write_text(path, json.dumps({"key": key, "killable": killable}, indent=1) + "\n", durable=False)
     return path
 
 
@@ -125,14 +126,6 @@ _SCORERS: dict[str, MutationScorer] = {}
 def clear_cache() -> None:
     """Forget the scorers (and their built trees) of this process."""
     _SCORERS.clear()
-
-
-def _write(path: Path, text: str) -> None:
-    """Atomic write (a killed run leaves the old file or none, never half a file)."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    tmp.write_text(text + "\n", encoding="utf-8")
-    os.replace(tmp, path)
 
 
 def _read(path: Path, key: str) -> list[str] | None:

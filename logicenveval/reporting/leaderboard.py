@@ -16,10 +16,11 @@ from typing import Any
 
 from jinja2 import Environment, PackageLoader, select_autoescape
 
+from logicenveval.atomic import atomic_write_text
 from logicenveval.metrics.records import EnvDetail, UnitRecord
 from logicenveval.model.task import POLICY_KINDS
 from logicenveval.reporting.tables import COLUMNS, LEGEND, markdown, method_label, rows
-from logicenveval.runner.store import RunStore, atomic_write_text
+from logicenveval.runner.store import RunStore
 
 _NOT_RECORDED = "no trace recorded (the unit was written by a version that did not store traces)"
 

@@ -14,9 +14,9 @@ from typing import Any
 
 from jinja2 import Environment, PackageLoader, select_autoescape
 
+from logicenveval.atomic import atomic_write_text
 from logicenveval.errors import ConfigError
 from logicenveval.reporting.tables import COLUMNS, cell, method_label
-from logicenveval.runner.store import atomic_write_text
 
 HEADERS = ["Model", "Method", "Seeds"] + [h + (" (%)" if pct else "") for h, _, pct in COLUMNS]
 

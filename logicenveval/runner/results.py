@@ -18,11 +18,11 @@ from typing import Any, Protocol
 
 import numpy as np
 
+from logicenveval.atomic import atomic_write_text
 from logicenveval.metrics.compute import aggregate, task_metrics
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.metrics.uncertainty import ci95
 from logicenveval.model.task import Task
-from logicenveval.runner.store import atomic_write_text
 
 RESULTS_SCHEMA = "logicenveval.results/1"
 _VERSIONED = ("logicenveval", "numpy", "pydantic", "z3-solver", "py-trees", "trimesh",

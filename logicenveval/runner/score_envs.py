@@ -24,6 +24,7 @@ from typing import Any
 
 from pydantic import BaseModel, ConfigDict, Field
 
+from logicenveval.atomic import atomic_write_text
 from logicenveval.benchmark import load_task, load_tasks, policy_path, task_ids
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.envfiles import env_to_json, load_env
@@ -33,7 +34,7 @@ from logicenveval.metrics.records import EnvDetail, UnitRecord
 from logicenveval.model.task import POLICY_KINDS
 from logicenveval.runner.executors import make_executor
 from logicenveval.runner.results import build_results, write_outputs
-from logicenveval.runner.store import RunStore, atomic_write_text, text_digest
+from logicenveval.runner.store import RunStore, text_digest
 
 #: artefacts a run writes next to its environments; not EnvSpecs, so not scored
 ARTEFACTS = frozenset({"plan.json"})

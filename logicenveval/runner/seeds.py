@@ -19,13 +19,14 @@ from typing import Any
 
 from rich.console import Console
 
+from logicenveval.atomic import atomic_write_text
 from logicenveval.errors import ConfigError
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.metrics.uncertainty import ci95, point_metrics
 from logicenveval.runner.config import RunConfig
 from logicenveval.runner.results import RESULTS_SCHEMA, bootstrap_rng
 from logicenveval.runner.run import run
-from logicenveval.runner.store import RunStore, atomic_write_text
+from logicenveval.runner.store import RunStore
 
 
 @dataclass(frozen=True)

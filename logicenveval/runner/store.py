@@ -10,43 +10,14 @@ from __future__ import annotations
 import contextlib
 import hashlib
 import json
-import os
-import tempfile
 from pathlib import Path
 from typing import Any
 
 from pydantic import ValidationError
 
+from logicenveval.atomic import atomic_write_text
 from logicenveval.errors import RunStoreError
 from logicenveval.metrics.records import UnitRecord
-
-
-def atomic_write_text(path: Path, text: str, *, durable: bool = True) -> None:
-    """Write `text` so that readers see the old file or the complete new one, never a part.
-
-    `durable` also fsyncs the file and its folder, so the write survives a power loss; files a
-    unit commit vouches for by digest (or that are rebuilt from units) skip that cost.
-    """
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as fh:
-            fh.write(text)
-            if durable:
-                fh.flush()
-                os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        with contextlib.suppress(FileNotFoundError):
-            os.unlink(tmp)
-        raise
-    if not durable:
-        return
-    dir_fd = os.open(path.parent, os.O_RDONLY)
-    try:
-        os.fsync(dir_fd)
-    finally:
-        os.close(dir_fd)
 
 
 def _digest(payload: Any) -> str:

@@ -18,6 +18,7 @@ from typing import Any, Literal
 import numpy as np
 from pydantic import BaseModel, ConfigDict
 
+from logicenveval.atomic import atomic_write_text
 from logicenveval.benchmark import load_task, policy_path
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.envfiles import env_to_json
@@ -31,7 +32,7 @@ from logicenveval.metrics.records import EnvDetail, EnvSample, UnitRecord
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import POLICY_KINDS
 from logicenveval.redact import redact
-from logicenveval.runner.store import atomic_write_text, text_digest
+from logicenveval.runner.store import text_digest
 from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
 
 
