@@ -103,6 +103,10 @@ def test_scorer_cache_is_keyed_and_reused(tmp_path) -> None:  # type: ignore[no-
     clear_cache()
     again = scorer_for(task, None, cat, cache_dir=tmp_path, worlds=1)  # stale cache: recomputed
     assert [m.id for m in again.killable] == [m.id for m in scorer.killable]
+    (tmp_path / "lamp_or_pillow_fetch.json").write_bytes(b"\xff\xfe garbage")
+    clear_cache()
+    garbled = scorer_for(task, None, cat, cache_dir=tmp_path, worlds=1)  # unreadable: recomputed
+    assert [m.id for m in garbled.killable] == [m.id for m in scorer.killable]
 
 
 def test_tasks_mutants_cli(capsys: pytest.CaptureFixture[str]) -> None:

@@ -129,9 +129,11 @@ def clear_cache() -> None:
 
 
 def _read(path: Path, key: str) -> list[str] | None:
+    """The killable ids of a shipped or cached file, or None when it is absent, unreadable
+    (a folder, not UTF-8, not JSON) or stale: such a file is recomputed, never trusted."""
     try:
         data = json.loads(path.read_text(encoding="utf-8"))
-    except (FileNotFoundError, json.JSONDecodeError):
+    except (OSError, ValueError):
         return None
     if not isinstance(data, dict) or data.get("key") != key or not isinstance(data.get("killable"), list):
         return None
