@@ -15,7 +15,7 @@ once and reset per episode.
 from __future__ import annotations
 
 import difflib
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -29,7 +29,7 @@ from logicenveval.model.task import FAULTY_KINDS, Task
 from logicenveval.sim.loader import load_policy
 from logicenveval.sim.nodes import BTNode, Decorator, build_tree
 from logicenveval.sim.policy import Policy, PolicyNode
-from logicenveval.sim.simulator import CompiledPolicy, task_goal
+from logicenveval.sim.simulator import CompiledPolicy, Snapshot, task_goal
 from logicenveval.sim.world import World
 from logicenveval.sim.worlds import DEFAULT_WORLDS, situation_worlds
 
@@ -131,49 +131,59 @@ class MutantRunner:
         #: a condition replaced by a constant behaves as before wherever it already returned
         #: that constant: leaf paths and the status the mutant forces
         self._forced = [(regions[i], _FORCED.get(m.operator)) for i, m in enumerate(self.mutants)]
+        #: compiled paths of each mutant's anchor: where its episode can first differ
+        self._anchors = [tuple(self._paths.get((m.location[0], m.anchor), ())) for m in self.mutants]
+        self._prefix: dict[str, list[str]] = {}
 
     def run(self, world: World, goal: Cond | None,
             only: Iterable[int] | None = None) -> dict[int, str]:
         """Verdict status of each mutant (index -> status) that does not pass on `world`."""
-        base = self.correct.run(world.copy(), goal, trace=True)
-        ticked: set[str] = set()
+        base = self.correct.record(world.copy(), goal)
+        first: dict[str, int] = {}  # compiled path -> first root tick that entered it
         leaf_status: dict[str, set[str]] = {}
-        for ev in base.trace:
-            path = str(ev["path"])
-            leaf_status.setdefault(path, set()).add(str(ev["status"]))
-            parts = path.split("/")
-            for k in range(1, len(parts) + 1):
-                ticked.add("/".join(parts[:k]))
+        for tick, leaf, st in base.ticks:
+            path = leaf.path
+            leaf_status.setdefault(path, set()).add(st.value)
+            for p in self._prefixes(path):
+                first.setdefault(p, tick)
         out: dict[int, str] = {}
         for i in (only if only is not None else range(len(self.mutants))):
             region, forced = self._forced[i]
-            same = not any(p in ticked for p in region) or (
+            same = not any(p in first for p in region) or (
                 forced is not None and all(leaf_status.get(p, {forced}) == {forced} for p in region))
             if same:
                 if base.status != "passed":
                     out[i] = base.status
                 continue
-            status = self._status(i, world.copy(), goal)
+            start = min(first[p] for p in self._anchors[i] if p in first)
+            status = self._status(i, base.snapshots[start - 1], goal)
             if status != "passed":
                 out[i] = status
         return out
 
-    def _status(self, i: int, world: World, goal: Cond | None) -> str:
+    def _prefixes(self, path: str) -> list[str]:
+        got = self._prefix.get(path)
+        if got is None:
+            parts = path.split("/")
+            got = self._prefix[path] = ["/".join(parts[:k]) for k in range(1, len(parts) + 1)]
+        return got
+
+    def _status(self, i: int, snapshot: Snapshot, goal: Cond | None) -> str:
+        """The mutant's status, resumed from the correct BT's state before the first root tick
+        that entered its anchor: until then the two trees tick the same nodes the same way."""
         whole = self._whole.get(i)
         if whole is not None:
-            return whole.status(world, goal)
+            return whole.status(snapshot.world.copy(), goal)
         splices = self._splices.get(i)
         if splices is None:
             splices = self._build_splices(i)
             if splices is None:
                 whole = self._whole[i] = CompiledPolicy(self.mutants[i].policy)
-                return whole.status(world, goal)
-        for parent, k, _, new, nodes in splices:
+                return whole.status(snapshot.world.copy(), goal)
+        for parent, k, _, new, _ in splices:
             _put(parent, k, new)
-            for n in nodes:
-                n.reset_all()
         try:
-            return self.correct.status(world, goal)
+            return self.correct.resume(snapshot, goal, (n for *_, nodes in splices for n in nodes))
         finally:
             for parent, k, old, _, _ in splices:
                 _put(parent, k, old)
@@ -190,10 +200,43 @@ class MutantRunner:
             anchor = _node_at(m.policy.trees[tree], m.anchor)
             host = f"{tree}#anchor"
             part = Policy(host, {**m.policy.trees, host: anchor}, m.policy.source)
-            new = build_tree(part, self.correct.root.binding)
+            new = build_tree(part, self.correct.root.binding,
+                             reuse=_reuser(_node_at(self.correct.policy.trees[tree], m.anchor), old))
+            _adopt(old)
             out.append((parent, k, old, new, [n for n in new.iterate() if isinstance(n, BTNode)]))
         self._splices[i] = out
         return out
+
+
+def _reuser(policy_anchor: PolicyNode, built: BTNode) -> Callable[[PolicyNode], BTNode | None]:
+    """The correct BT's built nodes below its anchor, by policy node: a mutant's anchor keeps
+    every unchanged child (the same `PolicyNode` object), so only the edited nodes are built.
+    Each built node is handed out once, so no node appears twice in a tree."""
+    pairs: dict[int, BTNode] = {}
+
+    def visit(p: PolicyNode, n: BTNode) -> None:
+        for pc, nc in zip(p.children, n.children, strict=True):
+            if isinstance(nc, BTNode):
+                pairs.setdefault(id(pc), nc)
+                if pc.kind != "SubTree":  # reused whole, with the tree it expands
+                    visit(pc, nc)
+
+    visit(policy_anchor, built)
+
+    def reuse(p: PolicyNode) -> BTNode | None:
+        got = pairs.pop(id(p), None)
+        if got is not None:
+            got.parent = None  # py_trees adopts only orphans; `_adopt` gives it back
+        return got
+
+    return reuse
+
+
+def _adopt(root: BTNode) -> None:
+    """Point every node below `root` back to its parent in `root`'s tree (py_trees' `parent`)."""
+    for node in root.iterate():
+        for child in node.children:
+            child.parent = node
 
 
 def _put(parent: BTNode, k: int, child: BTNode) -> None:

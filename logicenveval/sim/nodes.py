@@ -48,6 +48,9 @@ class Episode:
     tick: int = 0
     trace: list[dict[str, Any]] | None = None
     last_fail: BTNode | None = field(default=None)
+    #: when a list: every leaf tick as (root tick, leaf, status), action/condition/constant alike
+    #: (mutation scoring reads which nodes an episode entered, and when)
+    ticks: list[tuple[int, BTNode, Status]] | None = None
 
 
 class Binding:
@@ -95,6 +98,13 @@ class BTNode(py_trees.behaviour.Behaviour):
         """Forget every bit of state, memory included (start of an episode)."""
         self.status = IDLE
 
+    def state(self) -> Any:
+        """Everything ticks change in this node (with `restore`: resume an episode mid-way)."""
+        return self.status
+
+    def restore(self, state: Any) -> None:
+        self.status = state
+
 
 def display_name(p: PolicyNode) -> str:
     """py_trees name of a node: BT.CPP ID with its ports, prefixed by its `name` attribute."""
@@ -131,6 +141,9 @@ class Leaf(BTNode):
         if st is not RUNNING:
             self.terminate(st)
         self.status = st
+        ep = self.binding.ep
+        if ep is not None and ep.ticks is not None:
+            ep.ticks.append((ep.tick, self, st))
         yield self
 
     def stop(self, new_status: Status = IDLE) -> None:
@@ -214,6 +227,12 @@ class Control(BTNode, py_trees.composites.Composite):
     def reset_all(self) -> None:
         self.status = IDLE
         self.idx = 0
+
+    def state(self) -> Any:
+        return self.status, self.idx
+
+    def restore(self, state: Any) -> None:
+        self.status, self.idx = state
 
     def _halt_others(self, keep: int) -> None:
         for i, c in enumerate(self.children):
@@ -318,6 +337,12 @@ class TryCatch(Control):
     def reset_all(self) -> None:
         super().reset_all()
         self.in_catch = False
+
+    def state(self) -> Any:
+        return self.status, self.idx, self.in_catch
+
+    def restore(self, state: Any) -> None:
+        self.status, self.idx, self.in_catch = state
 
     def stop(self, new_status: Status = IDLE) -> None:
         kids = self.children
@@ -490,6 +515,13 @@ class Parallel(Control, py_trees.composites.Parallel):
         self.done = set()
         self.n_succ = self.n_fail = 0
 
+    def state(self) -> Any:
+        return self.status, self.idx, frozenset(self.done), self.n_succ, self.n_fail
+
+    def restore(self, state: Any) -> None:
+        self.status, self.idx, done, self.n_succ, self.n_fail = state
+        self.done = set(done)
+
     def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
         n = len(self.children)
         for i, child in enumerate(self.children):
@@ -597,6 +629,12 @@ class _CountedLoop(Decorator):
         self.count = 0
         self.status = IDLE
 
+    def state(self) -> Any:
+        return self.status, self.count
+
+    def restore(self, state: Any) -> None:
+        self.status, self.count = state
+
     def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
         child = self.decorated
         while self.limit == -1 or self.count < self.limit:
@@ -647,21 +685,31 @@ _SIMPLE_DECORATORS: dict[str, type[Decorator]] = {
 LeafFactory = Callable[[PolicyNode, str], "BTNode"]
 
 
+#: an already built node to use for a policy node (None: build it)
+Reuse = Callable[[PolicyNode], "BTNode | None"]
+
+
 def build_tree(policy: Policy, binding: Binding | None = None,
-               leaves: LeafFactory | None = None) -> BTNode:
+               leaves: LeafFactory | None = None, reuse: Reuse | None = None) -> BTNode:
     """The policy's main tree as py_trees behaviours (SubTrees expanded in place), all sharing
     `binding` (a new one if not given; reach it as `root.binding`). `leaves` replaces the action
-    library's leaves (the BT.CPP conformance corpus runs scripted stubs through it)."""
+    library's leaves (the BT.CPP conformance corpus runs scripted stubs through it); `reuse`
+    supplies built subtrees (a mutant's edited subtree shares its unchanged children with the
+    correct BT's tree)."""
     root = policy.trees[policy.main]
-    node = _build(policy, root, f"{policy.main}/{root.label}", binding or Binding(), leaves)
+    node = _build(policy, root, f"{policy.main}/{root.label}", binding or Binding(), leaves, reuse)
     node.tree_id = policy.main
     return node
 
 
 def _build(policy: Policy, p: PolicyNode, path: str, binding: Binding,
-           leaves: LeafFactory | None) -> BTNode:
+           leaves: LeafFactory | None, reuse: Reuse | None = None) -> BTNode:
+    if reuse is not None:
+        got = reuse(p)
+        if got is not None:
+            return got
     kind, name = p.kind, display_name(p)
-    kids = [_build(policy, c, f"{path}/{c.label}[{i}]", binding, leaves)
+    kids = [_build(policy, c, f"{path}/{c.label}[{i}]", binding, leaves, reuse)
             for i, c in enumerate(p.children)]
     node: BTNode
     if leaves is not None and (kind in ACTIONS or kind in CONDITIONS):
@@ -677,7 +725,7 @@ def _build(policy: Policy, p: PolicyNode, path: str, binding: Binding,
     elif kind == "SubTree":
         sub = p.param("ID") or ""
         sub_root = policy.trees[sub]
-        child = _build(policy, sub_root, f"{path}/{sub_root.label}", binding, leaves)
+        child = _build(policy, sub_root, f"{path}/{sub_root.label}", binding, leaves, reuse)
         child.tree_id = sub
         node = SubTree(name, child)
     elif kind in _COMPOSITE_CLASSES:

@@ -7,7 +7,11 @@ episode.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
+from dataclasses import dataclass
 from pathlib import Path
+
+from py_trees.common import Status
 
 from logicenveval.domain.catalog import Catalog
 from logicenveval.errors import PolicyFormatError
@@ -30,6 +34,25 @@ from logicenveval.sim.verdict import Verdict
 from logicenveval.sim.world import World
 
 
+@dataclass(frozen=True, slots=True)
+class Snapshot:
+    """An episode between two root ticks: ticks done, every node's `state()`, the world."""
+
+    tick: int
+    states: list[object]
+    world: World
+
+
+@dataclass(frozen=True, slots=True)
+class Recording:
+    """A recorded episode: its verdict status, every leaf tick (root tick, leaf, status; a
+    precondition violation counts as FAILURE) and a snapshot before every root tick."""
+
+    status: str
+    ticks: list[tuple[int, BTNode, Status]]
+    snapshots: list[Snapshot]
+
+
 class CompiledPolicy:
     """The policy as a py_trees tree, reusable across episodes (not thread-safe)."""
 
@@ -47,6 +70,45 @@ class CompiledPolicy:
         for node in self._nodes:
             node.reset_all()
         ep = self.root.binding.ep = Episode(world)
+        return self._judge(ep, goal, tick_limit)
+
+    def record(self, world: World, goal: Cond | None, *, tick_limit: int = 50) -> Recording:
+        """`status` of one episode, plus every leaf tick and the state at the start of every
+        root tick (so that an episode of a tree that differs only where this one had not yet
+        gone can start there: `resume`)."""
+        for node in self._nodes:
+            node.reset_all()
+        ticks: list[tuple[int, BTNode, Status]] = []
+        ep = self.root.binding.ep = Episode(world, ticks=ticks)
+        snapshots: list[Snapshot] = []
+        nodes = self._nodes
+        status = IDLE
+        try:
+            while ep.tick < tick_limit:
+                snapshots.append(Snapshot(ep.tick, [n.state() for n in nodes], world.copy()))
+                ep.tick += 1
+                self.root.tick_once()
+                status = self.root.status
+                if status is not RUNNING:
+                    break
+        except Violation as v:
+            ticks.append((ep.tick, v.node, FAILURE))
+            return Recording("precondition_violation", ticks, snapshots)
+        return Recording(self._outcome(status, goal, world), ticks, snapshots)
+
+    def resume(self, snapshot: Snapshot, goal: Cond | None, fresh: Iterable[BTNode] = (), *,
+               tick_limit: int = 50) -> str:
+        """`status` of an episode that starts from `snapshot` (taken by `record` on this tree)
+        instead of from the initial state; `fresh` are nodes spliced in since, which start
+        reset."""
+        for node, state in zip(self._nodes, snapshot.states, strict=True):
+            node.restore(state)
+        for node in fresh:
+            node.reset_all()
+        ep = self.root.binding.ep = Episode(snapshot.world.copy(), tick=snapshot.tick)
+        return self._judge(ep, goal, tick_limit)
+
+    def _judge(self, ep: Episode, goal: Cond | None, tick_limit: int) -> str:
         status = IDLE
         try:
             while ep.tick < tick_limit:
@@ -57,6 +119,10 @@ class CompiledPolicy:
                     break
         except Violation:
             return "precondition_violation"
+        return self._outcome(status, goal, ep.world)
+
+    @staticmethod
+    def _outcome(status: Status, goal: Cond | None, world: World) -> str:
         if status is RUNNING:
             return "tick_limit"
         if status is FAILURE:
