@@ -22,14 +22,14 @@ from pathlib import Path
 from logicenveval.benchmark import load_task, policy_path
 from logicenveval.benchmark_validation import situations
 from logicenveval.domain.catalog import Catalog, load_catalog
-from logicenveval.faults.operators import FAULT_CLASSES, Mutant, mutants
+from logicenveval.faults.operators import FAULT_CLASSES, PARENT_EDITS, Mutant, mutants
 from logicenveval.model.conditions import Cond
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import FAULTY_KINDS, Task
 from logicenveval.sim.loader import load_policy
 from logicenveval.sim.nodes import BTNode, Decorator, build_tree
 from logicenveval.sim.policy import Policy, PolicyNode
-from logicenveval.sim.simulator import CompiledPolicy, Snapshot, task_goal
+from logicenveval.sim.simulator import CompiledPolicy, Recording, task_goal
 from logicenveval.sim.world import World
 from logicenveval.sim.worlds import DEFAULT_WORLDS, situation_worlds
 
@@ -100,7 +100,8 @@ class TaskMutants:
         }
 
 
-#: (parent, child index, original child, spliced-in child, the spliced subtree's nodes)
+#: (parent, child index, original child, spliced-in child, the spliced subtree's new nodes —
+#: the rest are the correct tree's own, reused)
 _Splice = tuple[BTNode, int, BTNode, BTNode, list[BTNode]]
 
 
@@ -131,8 +132,14 @@ class MutantRunner:
         #: a condition replaced by a constant behaves as before wherever it already returned
         #: that constant: leaf paths and the status the mutant forces
         self._forced = [(regions[i], _FORCED.get(m.operator)) for i, m in enumerate(self.mutants)]
-        #: compiled paths of each mutant's anchor: where its episode can first differ
-        self._anchors = [tuple(self._paths.get((m.location[0], m.anchor), ())) for m in self.mutants]
+        #: compiled paths where each mutant's episode can first differ: its anchor, or its
+        #: region when the anchor is a parent whose edit keeps its kind and its first k children
+        #: (then the edited parent takes the original's state when the region is first entered)
+        self._mirrored = [_mirrors(correct, m) for m in self.mutants]
+        self._entries = [regions[i] if self._mirrored[i] else
+                         tuple(self._paths.get((m.location[0], m.anchor), ()))
+                         for i, m in enumerate(self.mutants)]
+        self._index = {id(n): j for j, n in enumerate(self.correct.nodes)}
         self._prefix: dict[str, list[str]] = {}
 
     def run(self, world: World, goal: Cond | None,
@@ -151,12 +158,12 @@ class MutantRunner:
             region, forced = self._forced[i]
             same = not any(p in first for p in region) or (
                 forced is not None and all(leaf_status.get(p, {forced}) == {forced} for p in region))
-            if same:
+            if same and base.status != "tick_limit":
                 if base.status != "passed":
                     out[i] = base.status
                 continue
-            start = min(first[p] for p in self._anchors[i] if p in first)
-            status = self._status(i, base.snapshots[start - 1], goal)
+            start = min((first[p] for p in self._entries[i] if p in first), default=1)
+            status = self._status(i, base, start, goal)
             if status != "passed":
                 out[i] = status
         return out
@@ -168,22 +175,26 @@ class MutantRunner:
             got = self._prefix[path] = ["/".join(parts[:k]) for k in range(1, len(parts) + 1)]
         return got
 
-    def _status(self, i: int, snapshot: Snapshot, goal: Cond | None) -> str:
+    def _status(self, i: int, base: Recording, start: int, goal: Cond | None) -> str:
         """The mutant's status, resumed from the correct BT's state before the first root tick
-        that entered its anchor: until then the two trees tick the same nodes the same way."""
+        that entered its anchor (or region, see `_mirrors`): until then the two trees tick the
+        same nodes the same way."""
         whole = self._whole.get(i)
         if whole is not None:
-            return whole.status(snapshot.world.copy(), goal)
+            return whole.status(base.snapshots[0].world.copy(), goal)
         splices = self._splices.get(i)
         if splices is None:
             splices = self._build_splices(i)
-            if splices is None:
+            if splices is None:  # a whole tree of its own: run from the start
                 whole = self._whole[i] = CompiledPolicy(self.mutants[i].policy)
-                return whole.status(snapshot.world.copy(), goal)
+                return whole.status(base.snapshots[0].world.copy(), goal)
+        snapshot = base.snapshots[start - 1]
         for parent, k, _, new, _ in splices:
             _put(parent, k, new)
+        mirror = [(new, self._index[id(old)]) for _, _, old, new, _ in splices] if self._mirrored[i] else ()
         try:
-            return self.correct.resume(snapshot, goal, (n for *_, nodes in splices for n in nodes))
+            return self.correct.resume(snapshot, goal, (n for *_, nodes in splices for n in nodes),
+                                       mirror)
         finally:
             for parent, k, old, _, _ in splices:
                 _put(parent, k, old)
@@ -203,9 +214,27 @@ class MutantRunner:
             new = build_tree(part, self.correct.root.binding,
                              reuse=_reuser(_node_at(self.correct.policy.trees[tree], m.anchor), old))
             _adopt(old)
-            out.append((parent, k, old, new, [n for n in new.iterate() if isinstance(n, BTNode)]))
+            out.append((parent, k, old, new, [n for n in new.iterate()
+                                              if isinstance(n, BTNode) and id(n) not in self._index]))
         self._splices[i] = out
         return out
+
+
+#: parents that tick their children in order and whose behaviour before child k does not depend
+#: on how many children follow (no yielding between children, unlike SequenceWithMemory)
+_IN_ORDER = frozenset({"Sequence", "Fallback", "ReactiveSequence", "ReactiveFallback", "IfThenElse"})
+
+
+def _mirrors(correct: Policy, m: Mutant) -> bool:
+    """Whether the mutant's edited parent can take the original parent's state when the edit's
+    region is first entered: the edit deletes or reorders children from k on (the region) of a
+    parent that keeps its kind and ticks children in order. Until the region is entered both
+    parents have ticked the same first k children (the very same reused nodes) the same way."""
+    if m.operator not in PARENT_EDITS:
+        return False
+    tree = m.location[0]
+    old = _node_at(correct.trees[tree], m.anchor)
+    return old.kind in _IN_ORDER and _node_at(m.policy.trees[tree], m.anchor).kind == old.kind
 
 
 def _reuser(policy_anchor: PolicyNode, built: BTNode) -> Callable[[PolicyNode], BTNode | None]:

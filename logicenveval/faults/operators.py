@@ -117,13 +117,13 @@ def mutants(policy: Policy, *, roles: Iterable[str] | None = None,
 
 
 #: operators that change the children of the edited node's parent (the rest edit the node itself)
-_PARENT_EDITS = frozenset({"delete_precondition", "reorder_precondition", "drop_goal_action",
+PARENT_EDITS = frozenset({"delete_precondition", "reorder_precondition", "drop_goal_action",
                            "delete_alternative"})
 
 
 def _anchor(edit: _Edit) -> tuple[int, ...]:
     idx = edit.location[1]
-    return idx[:-1] if edit.operator in _PARENT_EDITS else idx
+    return idx[:-1] if edit.operator in PARENT_EDITS else idx
 
 
 # ----- tree surgery ------------------------------------------------------------------------------

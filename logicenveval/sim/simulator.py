@@ -61,6 +61,11 @@ class CompiledPolicy:
         self.root: BTNode = build_tree(policy)
         self._nodes: list[BTNode] = [n for n in self.root.iterate() if isinstance(n, BTNode)]
 
+    @property
+    def nodes(self) -> list[BTNode]:
+        """Every node of the tree, in the order of a `Snapshot`'s states."""
+        return self._nodes
+
     def status(self, world: World, goal: Cond | None, *, tick_limit: int = 50) -> str:
         """The verdict status of one episode on `world` (mutated in place: pass a copy).
 
@@ -96,15 +101,18 @@ class CompiledPolicy:
             return Recording("precondition_violation", ticks, snapshots)
         return Recording(self._outcome(status, goal, world), ticks, snapshots)
 
-    def resume(self, snapshot: Snapshot, goal: Cond | None, fresh: Iterable[BTNode] = (), *,
-               tick_limit: int = 50) -> str:
+    def resume(self, snapshot: Snapshot, goal: Cond | None, fresh: Iterable[BTNode] = (),
+               mirror: Iterable[tuple[BTNode, int]] = (), *, tick_limit: int = 50) -> str:
         """`status` of an episode that starts from `snapshot` (taken by `record` on this tree)
         instead of from the initial state; `fresh` are nodes spliced in since, which start
-        reset."""
+        reset, except those in `mirror`, which take the state of the tree's node at that
+        index."""
         for node, state in zip(self._nodes, snapshot.states, strict=True):
             node.restore(state)
         for node in fresh:
             node.reset_all()
+        for node, j in mirror:
+            node.restore(snapshot.states[j])
         ep = self.root.binding.ep = Episode(snapshot.world.copy(), tick=snapshot.tick)
         return self._judge(ep, goal, tick_limit)
 
