@@ -36,9 +36,11 @@ from logicenveval.sim.world import World
 
 @dataclass(frozen=True, slots=True)
 class Snapshot:
-    """An episode between two root ticks: ticks done, every node's `state()`, the world."""
+    """An episode between two root ticks: ticks done, every node's status, the `state()` of
+    the nodes that keep more than a status (controls' memory, loop counters), the world."""
 
     tick: int
+    statuses: list[Status]
     states: list[object]
     world: World
 
@@ -60,11 +62,20 @@ class CompiledPolicy:
         self.policy = policy
         self.root: BTNode = build_tree(policy)
         self._nodes: list[BTNode] = [n for n in self.root.iterate() if isinstance(n, BTNode)]
+        #: the nodes with more state than a status (restoring statuses alone is cheaper)
+        self._stateful = [n for n in self._nodes if type(n).state is not BTNode.state]
+        self._stateful_at = {j: k for k, j in enumerate(
+            j for j, n in enumerate(self._nodes) if type(n).state is not BTNode.state)}
 
     @property
     def nodes(self) -> list[BTNode]:
-        """Every node of the tree, in the order of a `Snapshot`'s states."""
+        """Every node of the tree, in the order of a `Snapshot`'s statuses."""
         return self._nodes
+
+    def state_at(self, snapshot: Snapshot, j: int) -> object:
+        """The `state()` node `j` had in `snapshot`."""
+        k = self._stateful_at.get(j)
+        return snapshot.statuses[j] if k is None else snapshot.states[k]
 
     def status(self, world: World, goal: Cond | None, *, tick_limit: int = 50) -> str:
         """The verdict status of one episode on `world` (mutated in place: pass a copy).
@@ -86,11 +97,12 @@ class CompiledPolicy:
         ticks: list[tuple[int, BTNode, Status]] = []
         ep = self.root.binding.ep = Episode(world, ticks=ticks)
         snapshots: list[Snapshot] = []
-        nodes = self._nodes
+        nodes, stateful = self._nodes, self._stateful
         status = IDLE
         try:
             while ep.tick < tick_limit:
-                snapshots.append(Snapshot(ep.tick, [n.state() for n in nodes], world.copy()))
+                snapshots.append(Snapshot(ep.tick, [n.status for n in nodes],
+                                          [n.state() for n in stateful], world.copy()))
                 ep.tick += 1
                 self.root.tick_once()
                 status = self.root.status
@@ -107,12 +119,14 @@ class CompiledPolicy:
         instead of from the initial state; `fresh` are nodes spliced in since, which start
         reset, except those in `mirror`, which take the state of the tree's node at that
         index."""
-        for node, state in zip(self._nodes, snapshot.states, strict=True):
+        for node, status in zip(self._nodes, snapshot.statuses, strict=True):
+            node.status = status
+        for node, state in zip(self._stateful, snapshot.states, strict=True):
             node.restore(state)
         for node in fresh:
             node.reset_all()
         for node, j in mirror:
-            node.restore(snapshot.states[j])
+            node.restore(self.state_at(snapshot, j))
         ep = self.root.binding.ep = Episode(snapshot.world.copy(), tick=snapshot.tick)
         return self._judge(ep, goal, tick_limit)
 
