@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from logicenveval.benchmark import load_task, policy_path
+from logicenveval.benchmark import load_task, policy_path, task_ids
 from logicenveval.cli import main
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.faults.classify import MutantRunner, _distance, classify_task, task_worlds
@@ -69,18 +69,53 @@ def test_classification_reproduces_the_hand_written_faults() -> None:
     assert walks and all("precondition_violation" in ks for o in walks for ks in o.killed_by.values())
 
 
-@settings(max_examples=8, deadline=None)
-@given(st.sampled_from(["lamp_or_pillow_fetch", "kitchen_dish_cleanup"]), st.integers(0, 10_000))
-def test_pruned_runner_equals_simulating_every_mutant(task_id: str, pick: int) -> None:
-    """A mutant whose edited region the correct BT never ticks is judged without simulation;
-    this must give exactly the verdicts of simulating every mutant."""
+def _full(muts, env, task, cat) -> dict[int, str]:  # type: ignore[no-untyped-def]
+    return {i: v.status for i, m in enumerate(muts)
+            if (v := simulate(m.policy, env, task, cat)).status != "passed"}
+
+
+@settings(max_examples=12, deadline=None)
+@given(st.sampled_from(task_ids()), st.integers(0, 10_000))
+def test_pruned_resumed_runner_equals_simulating_every_mutant(task_id: str, pick: int) -> None:
+    """A mutant whose edited region the correct BT never ticks is judged without simulation,
+    the others resume from the correct BT's recorded state where they can first differ; this
+    must give exactly the verdicts of simulating every mutant from the start."""
     task, cat, muts, runner, envs = _prepared(task_id)
     _, env = envs[pick % len(envs)]
     world = World.from_env(env, cat)
-    got = runner.run(world, task_goal(task, world))
-    want = {i: v.status for i, m in enumerate(muts)
-            if (v := simulate(m.policy, env, task, cat)).status != "passed"}
-    assert got == want
+    assert runner.run(world, task_goal(task, world)) == _full(muts, env, task, cat)
+
+
+def test_constant_leaves_count_as_ticked() -> None:
+    """`AlwaysSuccess` leaves leave no trace event; the runner still sees them ticked (the
+    trace-based pruning called deleting this else branch equivalent)."""
+    task, cat, muts, runner, envs = _prepared("multi_room_lights_off")
+    mid = "delete_alternative@Main:2.2.2"
+    i = next(k for k, m in enumerate(muts) if m.id == mid)
+    worlds = [env for key, env in envs if "laptop_where=other" in key]
+    assert worlds
+    for env in worlds:
+        world = World.from_env(env, cat)
+        got = runner.run(world, task_goal(task, world))
+        assert got == _full(muts, env, task, cat)
+        assert got[i] == "tree_failure"
+
+
+@pytest.mark.parametrize("task_id", ["hallway_coat_and_bag", "multi_room_lights_off", "kitchen_dish_cleanup"])
+def test_resuming_any_recorded_tick_ends_as_the_recording(task_id: str) -> None:
+    """`CompiledPolicy.record` snapshots every node's state and the world before each root tick;
+    resuming from any snapshot must end exactly as the recorded episode (all four BTs)."""
+    task = load_task(task_id)
+    cat = load_catalog()
+    for kind in task.policies:
+        cp = CompiledPolicy(load_policy(policy_path(task, kind), roles=task.roles, rooms=task.rooms))
+        for _, env in task_worlds(task, cat, 1)[:12]:
+            w = World.from_env(env, cat)
+            goal = task_goal(task, w)
+            rec = cp.record(w.copy(), goal)
+            assert rec.status == cp.status(w.copy(), goal)
+            for snap in rec.snapshots:
+                assert cp.resume(snap, goal) == rec.status
 
 
 def test_status_matches_run() -> None:
