@@ -238,6 +238,9 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
             pieces.append((tail[other.end():], "otherwise", "else"))
         return pieces
     cond, cons = (tail[: m.start()], tail[m.end():]) if m else (tail, "")
+    alt = re.match(r"\s*or\s+[^,;]*,\s*", cons, re.I) if m and tail[m.start()] == "," else None
+    if alt:  # "if it is elsewhere, or we are out of it, skip it": one condition with two alternatives
+        cond, cons = tail[: m.start() + 1] + cons[: alt.end()].rstrip(" ,"), cons[alt.end():]
     pieces.append((cond, cue, "condition"))
     if cons.strip():
         rest = _split_clauses(cons)
@@ -365,7 +368,7 @@ class _Reader:
             k = m.end
             while k < len(words) and (words[k] in DESCRIPTIVE or self._pp_at(words, k)):
                 k = self._pp_at(words, k) or k + 1
-            if k < len(words) and words[k] in ABSENT or words[max(0, m.start - 3) : m.start][:2] == ["out", "of"]:
+            if k < len(words) and words[k] in ABSENT or words[max(0, m.start - 2) : m.start] == ["out", "of"]:
                 # "the roll by the toilet is missing", "we are out of bread"
                 facts += [Fact(r, f"exists({r})", "exists", negated=True) for r in m.roles]
                 break
@@ -373,6 +376,12 @@ class _Reader:
             if "there" in before or "no" in before[-2:]:
                 facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
                 break
+        else:
+            none = next((i for i, w in enumerate(words) if w == "none" and i > 0
+                         and words[i - 1] in {"have", "has", "is", "are", "there"}), None)
+            if none is not None and subjects and subjects[0].start < none:
+                # "if it is anywhere else, or we have none": the thing spoken of may be absent
+                facts += [Fact(r, f"exists({r})", "exists", negated=True) for r in subjects[0].roles]
         if not subjects and self.topic and self.topic_kind == "role":
             # "The potted plant: dusty leaves get misted ..." - a state of a part of the topic
             for i, w in enumerate(words[:-1]):
@@ -712,7 +721,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             slot = (f.subject, f.kind, f.key if f.kind in ("state", "attr") else "")
             entry = found.setdefault(slot, {"order": ci, "sentence": cl.sentence, "clause": ci,
                                            "targets": [], "values": [],
-                                           "context": [c for c in context if c[0] != slot]
+                                           "context": [c for c in context if c[0] != slot and not (
+                                               f.kind == "exists" and c[0][0] == f.subject)]
                                            or [c for c in carried if c[0] != slot and f.kind == "exists"]})
             entry.setdefault("places", set()).add((cl.sentence, ci))
             if cl.role == "condition":
@@ -739,10 +749,16 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     factors: list[Factor] = []
     slot_factor: dict[tuple[str, str, str], Factor] = {}
     subjects_with_location = {s for (s, k, _) in found if k == "location"}
+    absence_stated = {f.subject for cl in clauses if cl.role in ("condition", "uncertain") for f in cl.facts
+                      if f.kind == "exists" and f.negated and not f.goal and (cl.role == "uncertain" or any(
+                          g.subject == f.subject and g.kind == "location" and g.negated for g in cl.facts))}
     for (subject, kind, key), e in found.items():
         values: dict[str, str]
-        if kind == "exists" and subject in subjects_with_location:
-            continue  # `if there are no wipes` refers to where the wipes are expected
+        if kind == "exists" and subject in subjects_with_location - absence_stated:
+            # `if there are no wipes` refers to where the wipes are expected; only an absence
+            # stated as its own alternative (`if it is elsewhere or we have none`, `there may or
+            # may not be a loaf`) is a separate question
+            continue
         if kind == "location":
             targets = e["targets"]
             if len(targets) == 1:
