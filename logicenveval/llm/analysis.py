@@ -115,6 +115,9 @@ class Fact:
     negated: bool = False
     goal: bool = False  # where something must end up (not a condition on the initial state)
     modifier: bool = False  # described as a noun modifier ("a toy lying on the floor")
+    #: an attribute the catalog has no domain for, read from the wording ("a ripe one", "it is a
+    #: bill"); kept only when the text contrasts it (see `_contrasted`)
+    derived: bool = False
 
 
 @dataclass(frozen=True)
@@ -297,7 +300,7 @@ class _Reader:
         for i, w in enumerate(words):
             if i in covered or w not in PRONOUNS:
                 continue
-            if w in ("one", "ones") and (i == 0 or words[i - 1] in {"no", "any", "each", "every", "which",
+            if w in ("one", "ones") and (i == 0 and words[1:2] not in (["that"], ["which"]) or i > 0 and words[i - 1] in {"no", "any", "each", "every", "which",
                                                                    "this", "that"}
                                           or words[i + 1 : i + 2] == ["of"]):
                 continue  # "one of the cushions", "each one": not an anaphoric "one"
@@ -305,6 +308,11 @@ class _Reader:
             places = [m for m in found if m.kind in ("role", "floor") and m.end <= i]
             if w in ("one", "ones"):  # "a dirty one": the kind the clause or sentence is about
                 before = [m for m in before if all(x in ARTICLES | set(STATE_WORDS) for x in words[: m.start])]
+            elif w == "it" and words[i + 1 : i + 3] in (["is", "a"], ["is", "an"]) and len(before) > 1:
+                # "a document on the desk and it is a bill": the pronoun of a predicate noun is the
+                # clause's subject, not a place named after a preposition
+                subj = [m for m in before if m.start == 0 or words[m.start - 1] not in PREP_ON | PREP_IN]
+                before = subj[:1] or before
             elif i > 0 and words[i - 1] in PREP_ON | PREP_IN and before:
                 # "a book or a phone on it": not the listed objects themselves
                 listed = [before[-1]]
@@ -364,6 +372,7 @@ class _Reader:
                     base = self.last_location[r]
                     facts.append(Fact(r, base.condition, "location", base.key, negated=True))
         facts += self._fronted_place(words, mentions)
+        facts += self._derived_attributes(words, mentions)
         for m in subjects:
             k = m.end
             while k < len(words) and (words[k] in DESCRIPTIVE or self._pp_at(words, k)):
@@ -427,6 +436,41 @@ class _Reader:
                 r = self.recent[-1]
                 return Fact(r, f"state({r}, {flag})", "state", flag, negated=negated != (not pol))
         return None
+
+    def _unknown(self, word: str) -> bool:
+        """A word the analyser has no meaning for: not a role, room, state, cue or function word."""
+        return (len(word) > 2 and word.isalpha() and word not in _KNOWN_WORDS
+                and word not in self.lex.role_words() and word not in self.lex.attribute_words())
+
+    def _derived_attributes(self, words: list[str], mentions: list[Mention]) -> list[Fact]:
+        """Attributes the catalog has no domain for: `a ripe one` / `it is not ripe yet` (an
+        adjective, key = its noun `ripeness`; `unripe` negates `ripe`) and `it is a bill` (a kind)."""
+        out: list[Fact] = []
+        for m in mentions:
+            if m.kind not in ("role", "pronoun"):
+                continue
+            k = m.end
+            while k < len(words) and words[k] in DESCRIPTIVE | NEGATIONS | {"that", "which"}:
+                k += 1
+            neg = any(_negation(w) for w in words[m.end : k])
+            if k > m.end and k < len(words) and words[k - 1] in DESCRIPTIVE | NEGATIONS:
+                if words[k] in ("a", "an") and k + 2 == len(words) and self._unknown(words[k + 1]):
+                    # "... and it is a bill": a kind of the object (the clause ends with the noun)
+                    out += [Fact(r, f"attr({r}, kind, {words[k + 1]})", "attr", "kind", negated=neg,
+                                 modifier=True, derived=True) for r in m.roles]
+                elif self._unknown(words[k]) and (k + 1 == len(words) or words[k + 1] in _AFTER_PREDICATE):
+                    out += self._adjective(m, words[k], neg)
+            if m.start > 0 and self._unknown(words[m.start - 1]) and (
+                    m.start == 1 or words[m.start - 2] in ARTICLES):
+                out += self._adjective(m, words[m.start - 1], False)  # "a ripe one", "an unripe one"
+        return out
+
+    def _adjective(self, m: Mention, word: str, negated: bool) -> list[Fact]:
+        if word.startswith("un") and len(word) > 5:
+            word, negated = word[2:], not negated
+        noun = (word[:-1] + "i" if word.endswith("y") else word) + "ness"
+        return [Fact(r, f"attr({r}, {noun}, {word})", "attr", noun, negated=negated, modifier=True, derived=True)
+                for r in m.roles]
 
     def _fronted_place(self, words: list[str], mentions: list[Mention]) -> list[Fact]:
         """`On the bed there may be a book, an alarm clock or a phone`: the place comes first."""
@@ -623,6 +667,19 @@ class _Reader:
 
 
 _RANK = {"exists": 0, "location": 1, "state": 2, "attr": 3}
+#: words that end a predicate adjective: "one that is not ripe yet belongs in the bowl"
+_AFTER_PREDICATE = frozenset({"yet", "enough", "anymore", "already", "now"}) | MOTION
+#: words with a meaning of their own, never an attribute read from the wording
+_KNOWN_WORDS = (frozenset(STATE_WORDS) | DESCRIPTIVE | MOTION | ACTIONS | ARTICLES | PARTS | PRONOUNS
+                | NEGATIONS | UNCERTAIN | ABSENT | AVAILABILITY | PREP_ON | PREP_IN | COLOR_WORDS
+                | SITUATION_PARTICIPLES | frozenset(
+                    {"other", "another", "else", "same", "different", "done", "finished", "ready",
+                     "sure", "fine", "alone", "there", "here", "where", "what", "whatever", "which",
+                     "whichever", "yet", "enough", "anymore", "and", "but", "then", "also", "only",
+                     "new", "old", "spare", "fresh", "own", "whole", "nearest", "next", "last",
+                     "first", "second", "third", "kind", "sort", "type", "need", "time", "for",
+                     "with", "without", "from", "place", "way", "lot", "mess", "problem", "close",
+                     "switch", "turn", "shut", "check", "use", "wipe", "clean", "empty", "fill"}))
 
 
 def _question(subject: str, kind: str, key: str, targets: list[str]) -> str:
@@ -684,6 +741,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         if sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences):
             grammatical += 1
 
+    contrasted = _contrasted(clauses, str(brief["description"]))
     # collect condition facts per (subject, kind, key)
     found: dict[tuple[str, str, str], dict[str, Any]] = {}
     last_key: tuple[str, str, str] | None = None
@@ -715,6 +773,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             cl.role == "consequence" and bool(set(re.findall(r"[a-z]+", cl.text.lower())) & UNCERTAIN))
         added: list[tuple[tuple[str, str, str], bool, str]] = []
         for f in cl.facts:
+            if f.derived and (f.subject, f.key) not in contrasted:
+                continue
             if f.goal or not (conditional or (f.modifier and cl.role not in ("scene",))
                               or (cl.role == "else" and f.kind != "location")):
                 continue
@@ -795,6 +855,24 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     groups, group_roles = _group(factors)
     covered = set().union(*group_roles) if group_roles else set()
     return TaskAnalysis(sentences, clauses, factors, groups, group_roles, set(lex.roles) - covered)
+
+
+def _contrasted(clauses: list[Clause], text: str) -> set[tuple[str, str]]:
+    """(subject, key) of derived attributes the text contrasts, so that they decide something:
+    an adjective said of the object both positively and negated (`a ripe one ..., one that is not
+    ripe ...`, `ripe` / `unripe`), a kind stated in a condition (`if it is a bill`) or set against
+    `other` objects of its sort (`any other document`)."""
+    polarity: dict[tuple[str, str], set[bool]] = {}
+    out: set[tuple[str, str]] = set()
+    low = " " + " ".join(w for w, _, _ in tokens(_expand(text))) + " "
+    for cl in clauses:
+        for f in cl.facts:
+            if not f.derived:
+                continue
+            polarity.setdefault((f.subject, f.key), set()).add(f.negated)
+            if f.key == "kind" and (cl.role == "condition" or f" other {f.subject.replace('_', ' ')} " in low):
+                out.add((f.subject, f.key))
+    return out | {s for s, pols in polarity.items() if len(pols) == 2}
 
 
 def _group(factors: list[Factor]) -> tuple[list[list[str]], list[set[str]]]:
