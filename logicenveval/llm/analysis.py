@@ -668,7 +668,7 @@ class _Reader:
 
 _RANK = {"exists": 0, "location": 1, "state": 2, "attr": 3}
 #: words that end a predicate adjective: "one that is not ripe yet belongs in the bowl"
-_AFTER_PREDICATE = frozenset({"yet", "enough", "anymore", "already", "now"}) | MOTION
+_AFTER_PREDICATE = frozenset({"yet", "enough", "anymore", "already", "now", "and", "or", "but"}) | MOTION
 #: words with a meaning of their own, never an attribute read from the wording
 _KNOWN_WORDS = (frozenset(STATE_WORDS) | DESCRIPTIVE | MOTION | ACTIONS | ARTICLES | PARTS | PRONOUNS
                 | NEGATIONS | UNCERTAIN | ABSENT | AVAILABILITY | PREP_ON | PREP_IN | COLOR_WORDS
@@ -810,8 +810,13 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     slot_factor: dict[tuple[str, str, str], Factor] = {}
     subjects_with_location = {s for (s, k, _) in found if k == "location"}
     absence_stated = {f.subject for cl in clauses if cl.role in ("condition", "uncertain") for f in cl.facts
-                      if f.kind == "exists" and f.negated and not f.goal and (cl.role == "uncertain" or any(
-                          g.subject == f.subject and g.kind == "location" and g.negated for g in cl.facts))}
+                      if f.kind == "exists" and not f.goal and (
+                          f.negated and cl.role == "uncertain"
+                          or f.negated and any(g.subject == f.subject and g.kind == "location" and g.negated
+                                               for g in cl.facts)
+                          # "there may be a loaf of bread." said on its own, before where it is
+                          or cl.role == "uncertain" and not any(g.subject == f.subject and g.kind == "location"
+                                                                for g in cl.facts))}
     for (subject, kind, key), e in found.items():
         values: dict[str, str]
         if kind == "exists" and subject in subjects_with_location - absence_stated:
