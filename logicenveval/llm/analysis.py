@@ -174,6 +174,21 @@ def _sentences(text: str) -> list[str]:
     return [p for p in parts if p]
 
 
+_GENERIC = (r"whatever|anything|everything|something|all|(?:any|the|all the)\s+(?:items?|things?|objects?|stuff)"
+            r"|items|things|objects|stuff")
+_APPOSITION = re.compile(rf"^(?P<lead>\W*)(?:{_GENERIC})\s+(?:that\s+|which\s+)?(?P<pred>[^:\u2013-]+?)\s*(?:\s-|\u2013|:)\s+"
+                         r"(?P<list>[^:\u2013-]+?(?:,|\bor\b|\band\b)[^:\u2013-]+?)\s+(?:-|\u2013)\s+(?P<rest>.+)$", re.I)
+
+
+def _apposition(sentence: str) -> str:
+    """`Whatever is lying on it - a book, a clock, a phone - goes ...`: the listed objects are the
+    subject of the generic word's predicate (`a book, a clock, a phone is lying on it - goes ...`)."""
+    m = _APPOSITION.match(sentence)
+    if m is None:
+        return sentence
+    return f"{m.group('lead')}{m.group('list')} {m.group('pred')} - {m.group('rest')}"
+
+
 def _first_cue(low: str, cues: tuple[str, ...]) -> tuple[int, str] | None:
     best: tuple[int, str] | None = None
     for cue in cues:
@@ -460,7 +475,8 @@ class _Reader:
                                  modifier=True, derived=True) for r in m.roles]
                 elif self._unknown(words[k]) and (k + 1 == len(words) or words[k + 1] in _AFTER_PREDICATE):
                     out += self._adjective(m, words[k], neg)
-            if m.start > 0 and self._unknown(words[m.start - 1]) and (
+            if m.start > 0 and (m.kind == "role" or words[m.start] in ("one", "ones")) and self._unknown(
+                    words[m.start - 1]) and (
                     m.start == 1 or words[m.start - 2] in ARTICLES):
                 out += self._adjective(m, words[m.start - 1], False)  # "a ripe one", "an unripe one"
         return out
@@ -734,7 +750,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     clauses: list[Clause] = []
     grammatical = 0  # pieces split at ':' or ';' still belong to one sentence for grouping
     for si, sent in enumerate(sentences):
-        for text, cue, role in _subsplit(_split_clauses(sent)):
+        for text, cue, role in _subsplit(_split_clauses(_apposition(sent))):
             # "should there be an umbrella: ..." - the cue itself says the object may be absent
             facts, names = reader.facts("there is " + text if cue == "should there be" else text)
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
