@@ -258,7 +258,7 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
     cond, cons = (tail[: m.start()], tail[m.end():]) if m else (tail, "")
     alt = re.match(r"\s*or\s+[^,;]*,\s*", cons, re.I) if m and tail[m.start()] == "," else None
     if alt:  # "if it is elsewhere, or we are out of it, skip it": one condition with two alternatives
-        cond, cons = tail[: m.start() + 1] + cons[: alt.end()].rstrip(" ,"), cons[alt.end():]
+        cond, cons = tail[: m.start() + 1] + " " + cons[: alt.end()].rstrip(" ,"), cons[alt.end():]
     pieces.append((cond, cue, "condition"))
     if cons.strip():
         rest = _split_clauses(cons)
@@ -322,7 +322,8 @@ class _Reader:
             before = [m for m in found if m.kind == "role" and m.end <= i]
             places = [m for m in found if m.kind in ("role", "floor") and m.end <= i]
             if w in ("one", "ones"):  # "a dirty one": the kind the clause or sentence is about
-                before = [m for m in before if all(x in ARTICLES | set(STATE_WORDS) for x in words[: m.start])]
+                before = [m for m in before if all(x in ARTICLES | set(STATE_WORDS) or self._unknown(x)
+                                                   for x in words[: m.start])]
             elif w == "it" and words[i + 1 : i + 3] in (["is", "a"], ["is", "an"]) and len(before) > 1:
                 # "a document on the desk and it is a bill": the pronoun of a predicate noun is the
                 # clause's subject, not a place named after a preposition
@@ -374,6 +375,16 @@ class _Reader:
         already = self._already(words, mentions, negated)
         if already is not None:
             return [already], (already.subject,)
+        if subjects and subjects[0].kind == "pronoun" and any(p in " ".join(words) for p in ELSEWHERE) and not (
+                set(subjects[0].roles) & set(self.last_location)) and not any(
+                x.kind in ("role", "floor", "room") for x in mentions):
+            # "if it is somewhere else": the thing whose place was just spoken of
+            placed = [r for r in self.recent if r in self.last_location]
+            if placed:
+                first = Mention((placed[-1],), subjects[0].start, subjects[0].end, "pronoun")
+                mentions = [first if x is subjects[0] else x for x in mentions]
+                subjects = [first, *subjects[1:]]
+                self.recent = [r for r in self.recent if r != placed[-1]] + [placed[-1]]
         facts: list[Fact] = []
         for idx, m in enumerate(mentions):
             if m.kind not in ("role", "pronoun"):
@@ -464,9 +475,15 @@ class _Reader:
         for m in mentions:
             if m.kind not in ("role", "pronoun"):
                 continue
+            j = m.start - 1
+            while j >= 0 and words[j] in ARTICLES:
+                j -= 1
+            if j >= 0 and words[j] in PREP_ON | PREP_IN and any(
+                    x.kind in ("role", "pronoun") and x.end <= j for x in mentions):
+                continue  # "the banana on the table is overripe" speaks of the banana
             k = m.end
-            while k < len(words) and words[k] in DESCRIPTIVE | NEGATIONS | {"that", "which"}:
-                k += 1
+            while k < len(words) and (words[k] in DESCRIPTIVE | NEGATIONS | {"that", "which"} or self._pp_at(words, k)):
+                k = self._pp_at(words, k) or k + 1
             neg = any(_negation(w) for w in words[m.end : k])
             if k > m.end and k < len(words) and words[k - 1] in DESCRIPTIVE | NEGATIONS:
                 if words[k] in ("a", "an") and k + 2 == len(words) and self._unknown(words[k + 1]):
