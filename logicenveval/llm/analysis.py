@@ -257,7 +257,7 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
         return pieces
     cond, cons = (tail[: m.start()], tail[m.end():]) if m else (tail, "")
     alt = re.match(r"\s*or\s+[^,;]*,\s*", cons, re.I) if m and tail[m.start()] == "," else None
-    if alt:  # "if it is elsewhere, or we are out of it, skip it": one condition with two alternatives
+    if alt and m:  # "if it is elsewhere, or we are out of it, skip it": one condition with two alternatives
         cond, cons = tail[: m.start() + 1] + " " + cons[: alt.end()].rstrip(" ,"), cons[alt.end():]
     pieces.append((cond, cue, "condition"))
     if cons.strip():
