@@ -230,6 +230,9 @@ def test_an_absence_stated_as_an_alternative_is_its_own_question() -> None:
     got = factor_values("Wipe the plate with the sponge from the table if available; if there is none, "
                         "use a towel.", roles)
     assert "sponge_present" not in got and "sponge_on_table" in got
+    got = factor_values("Put the plate in the dishwasher; if there is no plate on the table at all, skip this.",
+                        {**roles, "dishwasher": ("dishwasher",)})
+    assert "plate_present" not in got and "plate_on_table" in got
 
 
 def test_listed_apposition_takes_the_generic_words_place() -> None:

@@ -845,8 +845,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     absence_stated = {f.subject for cl in clauses if cl.role in ("condition", "uncertain") for f in cl.facts
                       if f.kind == "exists" and not f.goal and (
                           f.negated and cl.role == "uncertain"
-                          or f.negated and any(g.subject == f.subject and g.kind == "location" and g.negated
-                                               for g in cl.facts)
+                          # "if it is elsewhere, or we have none": two alternatives, not "no plate on the counter"
+                          or f.negated and re.search(r"\bor\b", cl.text) is not None and any(
+                              g.subject == f.subject and g.kind == "location" and g.negated for g in cl.facts)
                           # "there may be a loaf of bread." said on its own, before where it is
                           or cl.role == "uncertain" and not any(g.subject == f.subject and g.kind == "location"
                                                                 for g in cl.facts))}
