@@ -239,3 +239,17 @@ def test_listed_apposition_takes_the_generic_words_place() -> None:
     got = _conditions("Everything lying on the sofa - a toy, a book or a plate - has to be put away.",
                       {"toy": ("toy",), "book": ("book",), "plate": ("plate",), "sofa": ("sofa",)})
     assert {"on(toy, sofa)", "on(book, sofa)", "on(plate, sofa)"} <= got
+
+
+def test_sibling_conditions_and_relative_clauses_after_adjectives() -> None:
+    roles = {"plate": ("plate",), "dishwasher": ("dishwasher",), "table": ("dining_table",),
+             "shelf": ("bookshelf",)}
+    a = analyse(brief("About the plate: when it is dirty, load it into the dishwasher; when it is clean and "
+                      "wet, leave it on the table; when it is clean and dry, put it on the shelf.", roles), CATALOG)
+    by_id = {f.id: f for f in a.factors}
+    assert by_id["plate_wet"].context == []  # not only asked when the plate is dirty
+    tree = nest(a.factors)
+    assert tree["var"] == "plate_dirty" and tree["branches"]["no"]["var"] == "plate_wet"
+    got = factor_values("A dirty plate goes into the dishwasher. A clean plate that is wet stays on the table.",
+                        roles)
+    assert got["plate_wet"] == {"state(plate, wet)", "not state(plate, wet)"}

@@ -466,7 +466,8 @@ class _Reader:
     def _unknown(self, word: str) -> bool:
         """A word the analyser has no meaning for: not a role, room, state, cue or function word."""
         return (len(word) > 2 and word.isalpha() and word not in _KNOWN_WORDS
-                and word not in self.lex.role_words() and word not in self.lex.attribute_words())
+                and word not in self.lex.role_words() and word not in self.lex.attribute_words()
+                and not any(word in room for room in self.lex.room_phrases))
 
     def _derived_attributes(self, words: list[str], mentions: list[Mention]) -> list[Fact]:
         """Attributes the catalog has no domain for: `a ripe one` / `it is not ripe yet` (an
@@ -601,7 +602,10 @@ class _Reader:
         found: list[tuple[str, bool, bool]] = []  # (word, polarity-negated, modifier)
         local_neg = any(_negation(w) for w in skipped)
         # "a water bowl that has water but is dirty": a restrictive relative clause describes
-        relative = skipped[:1] in (["that"], ["which"]) and m.start > 0 and words[m.start - 1] in INDEFINITE
+        art = m.start - 1  # the article before any adjectives: "a clean coat that is wet"
+        while art > 0 and (words[art] in STATE_WORDS or self._unknown(words[art])):
+            art -= 1
+        relative = skipped[:1] in (["that"], ["which"]) and art >= 0 and words[art] in INDEFINITE
         while k < len(words) and words[k] in STATE_WORDS:
             w = words[k]
             if w == "out" and not set(skipped) & {"is", "are", "was", "were", "already", "still"}:
@@ -805,6 +809,12 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         conditional = cl.role in ("condition", "uncertain") or (
             cl.role == "consequence" and bool(set(re.findall(r"[a-z]+", cl.text.lower())) & UNCERTAIN))
         added: list[tuple[tuple[str, str, str], bool, str]] = []
+        if cl.role == "condition":
+            # "when it is dirty, ...; when it is clean and wet, ...": a condition restating an
+            # earlier one of the sentence is its sibling alternative, not nested under it
+            restated = {((f.subject, f.kind, f.key if f.kind in ("state", "attr") else ""), not f.negated)
+                        for f in cl.facts if not f.goal}
+            context = [c for c in context if (c[0], c[1]) not in restated]
         for f in cl.facts:
             if f.derived and (f.subject, f.key) not in contrasted:
                 continue
