@@ -253,3 +253,10 @@ def test_sibling_conditions_and_relative_clauses_after_adjectives() -> None:
     got = factor_values("A dirty plate goes into the dishwasher. A clean plate that is wet stays on the table.",
                         roles)
     assert got["plate_wet"] == {"state(plate, wet)", "not state(plate, wet)"}
+
+
+def test_an_empty_it_is_not_a_reference() -> None:
+    got = factor_values("Close the fridge if it is open. It is likely that a toy has fallen on the floor; "
+                        "put it into the toy chest.", {"fridge": ("fridge",), "toy": ("toy",), "box": ("toy_box",)})
+    assert got["toy_on_floor"] == {"on(toy, floor)", "not on(toy, floor)"}
+    assert not any(k.startswith("fridge_") and k != "fridge_open" for k in got)

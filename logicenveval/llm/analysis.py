@@ -315,6 +315,9 @@ class _Reader:
         for i, w in enumerate(words):
             if i in covered or w not in PRONOUNS:
                 continue
+            if w == "it" and words[i + 1 : i + 2] in (["is"], ["was"], ["seems"], ["may"], ["might"], ["could"]) \
+                    and "that" in words[i + 2 : i + 5]:
+                continue  # "it is possible that my toothbrush fell": an empty subject, not a reference
             if w in ("one", "ones") and (i == 0 and words[1:2] not in (["that"], ["which"]) or i > 0 and words[i - 1] in {"no", "any", "each", "every", "which",
                                                                    "this", "that"}
                                           or words[i + 1 : i + 2] == ["of"]):
