@@ -260,3 +260,14 @@ def test_an_empty_it_is_not_a_reference() -> None:
                         "put it into the toy chest.", {"fridge": ("fridge",), "toy": ("toy",), "box": ("toy_box",)})
     assert got["toy_on_floor"] == {"on(toy, floor)", "not on(toy, floor)"}
     assert not any(k.startswith("fridge_") and k != "fridge_open" for k in got)
+
+
+def test_fronted_conditions_on_unrelated_things_and_without() -> None:
+    a = analyse(brief("Should the fridge be open, close it; should the lamp be on, switch it off.",
+                      {"fridge": ("fridge",), "lamp": ("table_lamp",)}), CATALOG)
+    assert {f.id: f.context for f in a.factors}["lamp_toggled_on"] == []
+    a = analyse(brief("Wipe the table when it is dirty. Without a sponge, use a towel and bin it.",
+                      {"table": ("dining_table",), "sponge": ("sponge",)}), CATALOG)
+    by_id = {f.id: f for f in a.factors}
+    assert by_id["sponge_present"].values == {"yes": "exists(sponge)", "no": "not exists(sponge)"}
+    assert "dining_table_dirty" in by_id

@@ -180,9 +180,14 @@ _APPOSITION = re.compile(rf"^(?P<lead>\W*)(?:{_GENERIC})\s+(?:that\s+|which\s+)?
                          r"(?P<list>[^:\u2013-]+?(?:,|\bor\b|\band\b)[^:\u2013-]+?)\s+(?:-|\u2013)\s+(?P<rest>.+)$", re.I)
 
 
+_WITHOUT = re.compile(r"^(\W*)(?:without|with no)\s+(?:a|an|any|the)?\s*(?=\w[^,]*,)", re.I)
+
+
 def _apposition(sentence: str) -> str:
     """`Whatever is lying on it - a book, a clock, a phone - goes ...`: the listed objects are the
-    subject of the generic word's predicate (`a book, a clock, a phone is lying on it - goes ...`)."""
+    subject of the generic word's predicate (`a book, a clock, a phone is lying on it - goes ...`);
+    a fronted `without a sponge, ...` is the condition `if there is no sponge, ...`."""
+    sentence = _WITHOUT.sub(r"\1if there is no ", sentence)  # "without a sponge, use ...": a condition
     m = _APPOSITION.match(sentence)
     if m is None:
         return sentence
@@ -801,7 +806,12 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
               and clauses[ci - 2].role == "condition" and clauses[ci - 2].sentence == cl.sentence
               and (clauses[ci - 1].cue != cl.cue or (
                   ci >= 3 and clauses[ci - 3].role == "consequence"
-                  and clauses[ci - 3].sentence == cl.sentence))):
+                  and clauses[ci - 3].sentence == cl.sentence)
+                  # "should the wardrobe be open, close it; should the lamp be on, ...": a condition
+                  # on something the previous instruction never spoke of
+                  or not ({f.subject for f in cl.facts if not f.goal}
+                          & (set(clauses[ci - 1].mentions) | set(clauses[ci - 2].mentions)))
+                  and bool(cl.facts))):
             # "switch off the lamp in case it is on, and shut the wardrobe if it is open": a new
             # instruction with its own postposed condition, not nested under the previous one
             context = []
