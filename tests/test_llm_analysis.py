@@ -270,4 +270,4 @@ def test_fronted_conditions_on_unrelated_things_and_without() -> None:
                       {"table": ("dining_table",), "sponge": ("sponge",)}), CATALOG)
     by_id = {f.id: f for f in a.factors}
     assert by_id["sponge_present"].values == {"yes": "exists(sponge)", "no": "not exists(sponge)"}
-    assert "dining_table_dirty" in by_id
+    assert "table_dirty" in by_id
