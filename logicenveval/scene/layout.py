@@ -28,6 +28,12 @@ WALKWAY = 0.45  # metres of free floor in front of each task object for the agen
 #: `benchmarks/layout.py`: the per-strip constraints made a 60-object floor ~10x slower.
 EXCLUSIVE_WALKWAYS_FROM = 16
 
+#: floors with at least this many boxes get CP-SAT's stronger NoOverlap2D propagation (timetabling
+#: and try-edge reasoning). Measured per floor on `benchmarks/layout.py` rooms (docs/scene.md): up
+#: to 15 boxes it costs 1.2-2.9x, from 20 boxes it pays (0.3-1.3x at 20, 0.05-0.4x at 30-50: a
+#: dense 40-box floor 1.4 s -> 0.09 s); no effect on Z3.
+STRONG_NO_OVERLAP_FROM = 16
+
 NEAR_AXIS = 0.7  # per-axis footprint gap: sqrt(2)*0.7 < 1.0 m (DESIGN §6 near)
 FAR = 2.5
 IN_FRONT_GAP = NEAR_AXIS + 0.25  # in_front_of / side_of: gap along one axis only, < 1.0 m
