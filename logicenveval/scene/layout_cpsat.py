@@ -157,15 +157,16 @@ def _fixed(m: cp_model.CpModel, ob: Obstacle, tag: str) -> tuple[Any, Any]:
             m.new_fixed_size_interval_var(z0, z1 - z0, f"obz_{tag}"))
 
 
-def _outside(m: cp_model.CpModel, v: _Vars, ob: Obstacle, en: list[Lit]) -> None:
-    """`v` does not meet `ob` (for degenerate obstacles, which an interval would not block)."""
+def _outside(m: cp_model.CpModel, ix: Any, iz: Any, ob: Obstacle, en: list[Lit]) -> None:
+    """The rectangle of intervals `ix` x `iz` does not meet `ob` (for degenerate or mutually
+    overlapping obstacles, which are not in the NoOverlap2D)."""
     x0, z0, x1, z1 = ob
     side = [m.new_bool_var("") for _ in range(4)]
     m.add_bool_or(side).only_enforce_if(en)
-    m.add(v.ex <= x0).only_enforce_if(side[0])
-    m.add(v.x >= x1).only_enforce_if(side[1])
-    m.add(v.ez <= z0).only_enforce_if(side[2])
-    m.add(v.z >= z1).only_enforce_if(side[3])
+    m.add(ix.end_expr() <= x0).only_enforce_if(side[0])
+    m.add(ix.start_expr() >= x1).only_enforce_if(side[1])
+    m.add(iz.end_expr() <= z0).only_enforce_if(side[2])
+    m.add(iz.start_expr() >= z1).only_enforce_if(side[3])
 
 
 def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: float,
@@ -195,9 +196,11 @@ def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: 
             ix, iz = _fixed(m, ob, str(k))
             fixed_x.append(ix)
             fixed_z.append(iz)
-        else:
-            for b in boxes:
-                _outside(m, vs[b.id], ob, guard([b.id]))
+        else:  # exclusive walkways keep clear of solid obstacles too (as in Z3)
+            for b, ix, iz in zip(boxes, xs, zs, strict=True):
+                if b.id in ext and not _solid(ob):
+                    ix, iz = vs[b.id].ix, vs[b.id].iz
+                _outside(m, ix, iz, ob, guard([b.id]))
     m.add_no_overlap_2d(xs + fixed_x, zs + fixed_z)
     for k, (ob, min_h) in enumerate(tall):
         taller = [b for b in boxes if b.size[1] > min_h]
@@ -208,7 +211,7 @@ def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: 
             m.add_no_overlap_2d([ix] + [vs[b.id].ix for b in taller], [iz] + [vs[b.id].iz for b in taller])
         else:
             for b in taller:
-                _outside(m, vs[b.id], ob, guard([b.id]))
+                _outside(m, vs[b.id].ix, vs[b.id].iz, ob, guard([b.id]))
     if walkway and not exclusive:
         for k, b in enumerate(boxes):
             if b.task:
