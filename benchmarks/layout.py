@@ -16,10 +16,11 @@ it takes minutes beyond), the fitted growth exponent per backend (slope of log t
 objects), then `--rooms` dense rooms of N objects with the default backend. Last line:
 `objects=<N> dense_median_s=<float> phypr=<float>`.
 
-`--crossover` measures what the `auto` backend's rule is taken from: every floor packing of normal
-and dense rooms of `--crossover-sizes` objects (`--rooms` each), solved by Z3 and by CP-SAT
-(best of 3 each), per density and floor box count the median times, the median Z3/CP-SAT ratio, the
-share of the floor covered, and which backend `auto` picks there.
+`--crossover` measures what the `auto` backend's rule is taken from: every floor packing of rooms
+of `--crossover-sizes` objects (`--rooms` each) at each area factor of `--crossover-factors`,
+solved by Z3 and by CP-SAT (best of 3 each); per area factor and floor box count the median times,
+the median and range of the Z3/CP-SAT ratio, the share of the floor covered, and which backend
+`auto` picks there.
 """
 
 from __future__ import annotations
@@ -34,6 +35,7 @@ import numpy as np
 import z3
 
 from logicenveval.domain.catalog import Catalog, load_catalog
+from logicenveval.errors import LogicEnvEvalError
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.scene.construct import construct_environment
 from logicenveval.scene.layout import DEFAULT_SOLVER, SOLVERS, Solver
@@ -208,9 +210,13 @@ def crossover(args: argparse.Namespace, catalog: Catalog) -> None:
 
     layout_cpsat.pack = record
     try:
-        for current[0], factor in (("normal", 1.0), ("dense", DENSE)):
+        for factor in (float(x) for x in args.crossover_factors.split(",")):
+            current[0] = f"{factor:g}"
             for n in (int(x) for x in args.crossover_sizes.split(",")):
-                measure(n, args.rooms, factor, "cpsat", catalog)
+                try:
+                    measure(n, args.rooms, factor, "cpsat", catalog)
+                except LogicEnvEvalError as e:  # too small a room for this many objects
+                    print(f"area factor {factor:g}, {n} objects: skipped ({e})")
     finally:
         layout_cpsat.pack = real
 
@@ -228,7 +234,7 @@ def crossover(args: argparse.Namespace, catalog: Catalog) -> None:
         fill = sum(b.cells[0] * b.cells[1] for b in boxes) / (frame[0] * frame[1])
         rows.setdefault((where, len(boxes)), []).append(
             (best(layout_z3.pack, a, kw), best(real, a, kw), fill, layout_auto.choose(frame, boxes, kw["walkway"])))
-    print(f"{'density':>7} {'boxes':>5} {'floors':>6} {'z3_ms':>7} {'cpsat_ms':>8} {'z3/cpsat':>8} {'range':>11} "
+    print(f"{'area':>7} {'boxes':>5} {'floors':>6} {'z3_ms':>7} {'cpsat_ms':>8} {'z3/cpsat':>8} {'range':>11} "
           f"{'fill':>5} auto")
     for (where, nb), rs in sorted(rows.items()):
         ratios = [z / c for z, c, _, _ in rs]
@@ -252,6 +258,8 @@ def main() -> None:
                     help="largest dense room given to Z3 in the table (Z3 takes ~2 min at 60)")
     ap.add_argument("--crossover", action="store_true", help="Z3 vs CP-SAT per floor size (the `auto` rule)")
     ap.add_argument("--crossover-sizes", default="6,8,10,12,14,16,18,20,24")
+    ap.add_argument("--crossover-factors", default=f"1,{DENSE},0.25",
+                    help="room area factors of the crossover (1 = normal; 0.25 crowds 4-7-box floors)")
     args = ap.parse_args()
     catalog = load_catalog()
     construct_environment(room_spec(10, 0), catalog=catalog, rng=np.random.default_rng(0), solver="cpsat")  # warm-up

@@ -346,7 +346,7 @@ def test_auto_sends_small_sparse_floors_to_z3_and_everything_else_to_cpsat() -> 
     assert layout_auto.choose(frame, boxes(7, 10), walkway=9) == "z3"
     assert layout_auto.choose(frame, boxes(3, 10), walkway=9) == "cpsat"  # a tie measured: keep CP-SAT
     assert layout_auto.choose(frame, boxes(8, 10), walkway=9) == "cpsat"  # too many boxes
-    assert layout_auto.choose(frame, boxes(5, 20), walkway=9) == "cpsat"  # 20 % covered: dense
+    assert layout_auto.choose(frame, boxes(5, 20), walkway=9) == "cpsat"  # 20 % covered: crowded
     assert layout_auto.choose(frame, boxes(5, 10), walkway=0) == "cpsat"  # a surface / ceiling
     assert layout_auto.choose((0, 0), boxes(5, 1), walkway=9) == "cpsat"
 

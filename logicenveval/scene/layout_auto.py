@@ -1,11 +1,12 @@
 """The `auto` layout backend: picks Z3 or CP-SAT per sub-problem (floor, surface, walls) by measurement.
 
-Both backends enforce the same constraints, so the choice only moves time. Measured per floor on
-`benchmarks/layout.py --crossover` rooms (5 rooms per size, 2026-11-23, docs/scene.md): Z3 is
-faster on sparse floors of 4-7 boxes (normal rooms, < 10 % of the floor covered: median time
-0.60-0.77x CP-SAT's), even on dense floors of 3-7 boxes (median 0.55-1.10x) and slower from 8 boxes
-on (1.3-2.8x, far more on large dense floors). CP-SAT is faster on every surface, container, ceiling and
-wall sub-problem measured (Z3 3-13x slower: its model building dominates these ~1 ms solves).
+Both backends enforce the same constraints, so the choice only moves time. Measured per floor with
+`benchmarks/layout.py --crossover` (5 rooms per size and area factor, three runs, 2026-11-23,
+docs/scene.md): on sparse floors of 4-7 boxes (6-8 % of the floor covered) Z3 is consistently
+faster (median time 0.60-0.82x CP-SAT's); on crowded ones (18-33 % covered) it is a toss-up
+(0.51-1.44x, differing between runs); from 8 boxes on CP-SAT wins (Z3 1.2-4.9x, minutes on large
+dense floors); 3 boxes are a tie. CP-SAT is faster on every surface, container, ceiling and wall
+sub-problem measured (Z3 3-13x slower: its model building dominates these ~1 ms solves).
 """
 
 from __future__ import annotations
@@ -26,8 +27,9 @@ from logicenveval.scene.relax import Dropped
 
 #: floors (packings with a walkway) of this many boxes go to Z3 when they are sparse
 Z3_FLOOR_BOXES = range(4, 8)
-#: ... i.e. when the boxes' footprints cover less than this share of the floor (measured: the
-#: normal rooms where Z3 won cover 6-8 %, the dense ones where it tied 18-23 %)
+#: ... i.e. when the boxes' footprints cover less than this share of the floor: between the
+#: measured sparse floors (6-8 %, Z3 faster in every run) and the crowded ones (18-33 %, no
+#: consistent winner, so CP-SAT stays); nothing was measured in between
 Z3_FLOOR_FILL = 0.15
 
 
