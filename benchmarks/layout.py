@@ -10,16 +10,23 @@ no decomposition, no relaxation; timeout counts as the limit). Then which backen
 dense rooms, against the package default. Last line (default backend, normal rooms):
 `objects=30 median_s=<float> monolithic_median_s=<float> phypr=<float>`.
 
-`--objects N --dense` measures dense rooms instead: a growth table (one room per size of
-`--growth`, both backends, Z3 only up to `--z3-max` objects because it takes minutes beyond),
-the fitted growth exponent per backend (slope of log time over log objects), then `--rooms` dense
-rooms of N objects with the default backend. Last line:
+`--objects N --dense` measures dense rooms instead: a growth table (median of `--growth-rooms`
+rooms per size of `--growth`, every backend incl. `auto`, Z3 only up to `--z3-max` objects because
+it takes minutes beyond), the fitted growth exponent per backend (slope of log time over log
+objects), then `--rooms` dense rooms of N objects with the default backend. Last line:
 `objects=<N> dense_median_s=<float> phypr=<float>`.
+
+`--crossover` measures what the `auto` backend's rule is taken from: every floor packing of rooms
+of `--crossover-sizes` objects (`--rooms` each) at each area factor of `--crossover-factors`,
+solved by Z3 and by CP-SAT (best of 3 each); per area factor and floor box count the median times,
+the median and range of the Z3/CP-SAT ratio, the share of the floor covered, and which backend
+`auto` picks there.
 """
 
 from __future__ import annotations
 
 import argparse
+import os
 import statistics
 import time
 from typing import Any
@@ -28,6 +35,7 @@ import numpy as np
 import z3
 
 from logicenveval.domain.catalog import Catalog, load_catalog
+from logicenveval.errors import LogicEnvEvalError
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.scene.construct import construct_environment
 from logicenveval.scene.layout import DEFAULT_SOLVER, SOLVERS, Solver
@@ -153,12 +161,15 @@ def measure(n: int, rooms: int, factor: float, solver: Solver, catalog: Catalog
     return times, relax, passed, how
 
 
-def growth(args: argparse.Namespace, catalog: Catalog) -> None:
-    import os
+def _load() -> str:
+    return "load (1, 5, 15 min): " + " ".join(f"{x:.2f}" for x in os.getloadavg())
 
-    print("load (1, 5, 15 min): " + " ".join(f"{x:.2f}" for x in os.getloadavg()))
+
+def growth(args: argparse.Namespace, catalog: Catalog) -> None:
+    print(_load())
     sizes = [int(x) for x in args.growth.split(",")]
-    print(f"{'objects':>8} " + " ".join(f"{s + '_s':>10}" for s in SOLVERS) + "  (dense, 1 room each)")
+    print(f"{'objects':>8} " + " ".join(f"{s + '_s':>10}" for s in SOLVERS)
+          + f"  (dense, median of {args.growth_rooms} rooms; ! = a room failed physics)")
     fits: dict[str, list[tuple[float, float]]] = {s: [] for s in SOLVERS}
     for n in sizes:
         cols = []
@@ -166,9 +177,10 @@ def growth(args: argparse.Namespace, catalog: Catalog) -> None:
             if solver == "z3" and n > args.z3_max:
                 cols.append(f"{'skipped':>10}")
                 continue
-            times, _, passed, _ = measure(n, 1, DENSE, solver, catalog)
-            fits[solver].append((n, times[0]))
-            cols.append(f"{times[0]:>9.3f}{'' if all(passed) else '!'}")
+            times, _, passed, _ = measure(n, args.growth_rooms, DENSE, solver, catalog)
+            med = statistics.median(times)
+            fits[solver].append((n, med))
+            cols.append(f"{med:>9.3f}{'' if all(passed) else '!'}")
         print(f"{n:>8} " + " ".join(cols), flush=True)
     for solver, pts in fits.items():
         if len(pts) >= 2:
@@ -177,8 +189,60 @@ def growth(args: argparse.Namespace, catalog: Catalog) -> None:
     times, relax, passed, how = measure(args.objects, args.rooms, DENSE, DEFAULT_SOLVER, catalog)
     print(f"dense objects={args.objects} solver={DEFAULT_SOLVER} rooms={args.rooms} "
           f"times_s={[round(t, 3) for t in times]} relaxations={statistics.mean(relax):.1f} ({how})")
+    print(_load())
     print(f"objects={args.objects} dense_median_s={statistics.median(times):.3f} "
           f"phypr={sum(passed) / len(passed):.2f}")
+
+
+def crossover(args: argparse.Namespace, catalog: Catalog) -> None:
+    """Z3 vs CP-SAT on the very floor packings `construct_environment` hands to a backend."""
+    from logicenveval.scene import layout_auto, layout_cpsat, layout_z3
+
+    print(_load())
+    floors: list[tuple[str, tuple[Any, ...], dict[str, Any]]] = []
+    real = layout_cpsat.pack
+    current = [""]  # the density being recorded
+
+    def record(*a: Any, **kw: Any) -> Any:
+        if kw.get("walkway"):
+            floors.append((current[0], a, kw))
+        return real(*a, **kw)
+
+    layout_cpsat.pack = record
+    try:
+        for factor in (float(x) for x in args.crossover_factors.split(",")):
+            current[0] = f"{factor:g}"
+            for n in (int(x) for x in args.crossover_sizes.split(",")):
+                try:
+                    measure(n, args.rooms, factor, "cpsat", catalog)
+                except LogicEnvEvalError as e:  # too small a room for this many objects
+                    print(f"area factor {factor:g}, {n} objects: skipped ({e})")
+    finally:
+        layout_cpsat.pack = real
+
+    def best(f: Any, a: tuple[Any, ...], kw: dict[str, Any]) -> float:
+        out = []
+        for _ in range(3):
+            t0 = time.perf_counter()
+            f(*a, **kw)
+            out.append(time.perf_counter() - t0)
+        return min(out)
+
+    rows: dict[tuple[str, int], list[tuple[float, float, float, str]]] = {}
+    for where, a, kw in floors:
+        frame, boxes = a
+        fill = sum(b.cells[0] * b.cells[1] for b in boxes) / (frame[0] * frame[1])
+        rows.setdefault((where, len(boxes)), []).append(
+            (best(layout_z3.pack, a, kw), best(real, a, kw), fill, layout_auto.choose(frame, boxes, kw["walkway"])))
+    print(f"{'area':>7} {'boxes':>5} {'floors':>6} {'z3_ms':>7} {'cpsat_ms':>8} {'z3/cpsat':>8} {'range':>11} "
+          f"{'fill':>5} auto")
+    for (where, nb), rs in sorted(rows.items()):
+        ratios = [z / c for z, c, _, _ in rs]
+        print(f"{where:>7} {nb:>5} {len(rs):>6} {statistics.median(r[0] for r in rs) * 1e3:>7.1f} "
+              f"{statistics.median(r[1] for r in rs) * 1e3:>8.1f} {statistics.median(ratios):>8.2f} "
+              f"{min(ratios):>5.2f}-{max(ratios):<5.2f} {statistics.median(r[2] for r in rs):>5.2f} "
+              f"{'/'.join(sorted({r[3] for r in rs}))}", flush=True)
+    print(_load())
 
 
 def main() -> None:
@@ -189,11 +253,19 @@ def main() -> None:
     ap.add_argument("--objects", type=int, default=None, help="dense-room mode with this many objects")
     ap.add_argument("--dense", action="store_true", help="with --objects: dense rooms (the only mode)")
     ap.add_argument("--growth", default="20,40,60,80", help="sizes of the dense growth table")
+    ap.add_argument("--growth-rooms", type=int, default=3, help="dense rooms per size of the growth table")
     ap.add_argument("--z3-max", type=int, default=40,
                     help="largest dense room given to Z3 in the table (Z3 takes ~2 min at 60)")
+    ap.add_argument("--crossover", action="store_true", help="Z3 vs CP-SAT per floor size (the `auto` rule)")
+    ap.add_argument("--crossover-sizes", default="6,8,10,12,14,16,18,20,24")
+    ap.add_argument("--crossover-factors", default=f"1,{DENSE},0.25",
+                    help="room area factors of the crossover (1 = normal; 0.25 crowds 4-7-box floors)")
     args = ap.parse_args()
     catalog = load_catalog()
     construct_environment(room_spec(10, 0), catalog=catalog, rng=np.random.default_rng(0), solver="cpsat")  # warm-up
+    if args.crossover:
+        crossover(args, catalog)
+        return
     if args.objects is not None:
         growth(args, catalog)
         return

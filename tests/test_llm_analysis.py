@@ -27,6 +27,10 @@ CATALOG = Catalog.model_validate({"categories": {
         "shoe": {"pickable": True, "synonyms": ["shoes"]},
         "shoe_rack": {"surface": True, "synonyms": ["rack"]},
         "sponge": {"pickable": True},
+        "banana": {"pickable": True},
+        "letter": {"pickable": True},
+        "bowl": {"container": True},
+        "cabinet": {"container": True, "openable": True},
     }.items()}})
 
 
@@ -185,3 +189,86 @@ def test_coordinated_instructions_keep_their_own_conditions() -> None:
     by_id = {f.id: f for f in a.factors}
     assert "fridge_open" in by_id and "lamp_toggled_on" in by_id
     assert by_id["fridge_open"].context == []  # asked whatever the lamp's state
+
+
+# ----- issue 22, follow-up: attributes without a domain, absences as alternatives, appositions ---
+
+def test_contrasted_adjective_becomes_an_attribute_without_a_catalog_domain() -> None:
+    roles = {"banana": ("banana",), "table": ("dining_table",), "bowl": ("bowl",), "fridge": ("fridge",)}
+    got = factor_values("If the banana on the table is overripe, put it in the fridge; a banana that "
+                        "is not overripe belongs in the bowl.", roles)
+    assert got["banana_overripeness"] == {"attr(banana, overripeness, overripe)",
+                                          "not attr(banana, overripeness, overripe)"}
+    got = factor_values("A peeled banana goes in the fridge and an unpeeled one goes in the bowl.", roles)
+    assert got["banana_peeledness"] == {"attr(banana, peeledness, peeled)", "not attr(banana, peeledness, peeled)"}
+    # an adjective the text never contrasts decides nothing
+    assert not any("attr(" in c for vs in factor_values(
+        "Put a fresh plate on the table and move the soft banana into the bowl.",
+        {**roles, "plate": ("plate",)}).values() for c in vs)
+
+
+def test_a_kind_named_in_a_condition_belongs_to_the_subject_not_the_place() -> None:
+    got = factor_values("If there is a letter on the table and it is an invoice, put it in the cabinet; "
+                        "any other letter goes into the bowl.",
+                        {"letter": ("letter",), "table": ("dining_table",), "cabinet": ("cabinet",),
+                         "bowl": ("bowl",)})
+    assert got["letter_kind"] == {"attr(letter, kind, invoice)", "not attr(letter, kind, invoice)"}
+    assert not any(k.startswith("table_") for k in got)
+
+
+def test_an_absence_stated_as_an_alternative_is_its_own_question() -> None:
+    roles = {"sponge": ("sponge",), "plate": ("plate",), "table": ("dining_table",)}
+    a = analyse(brief("When the sponge is on the table, wipe the plate with it. If it is somewhere "
+                      "else, or we have none, leave the plate.", roles), CATALOG)
+    tree = nest(a.factors)
+    assert tree["var"] == "sponge_present"  # asked first; where it is only when it exists
+    assert tree["branches"]["yes"]["var"] == "sponge_on_table" and "plan" in tree["branches"]["no"]
+    a = analyse(brief("There may be a plate. If it is on the table, put it in the dishwasher.",
+                      {**roles, "dishwasher": ("dishwasher",)}), CATALOG)
+    assert {"plate_present", "plate_on_table"} <= {f.id for f in a.factors}
+    # "if there is none" right after a location only says where it is expected: no extra question
+    got = factor_values("Wipe the plate with the sponge from the table if available; if there is none, "
+                        "use a towel.", roles)
+    assert "sponge_present" not in got and "sponge_on_table" in got
+    got = factor_values("Put the plate in the dishwasher; if there is no plate on the table at all, skip this.",
+                        {**roles, "dishwasher": ("dishwasher",)})
+    assert "plate_present" not in got and "plate_on_table" in got
+
+
+def test_listed_apposition_takes_the_generic_words_place() -> None:
+    got = _conditions("Everything lying on the sofa - a toy, a book or a plate - has to be put away.",
+                      {"toy": ("toy",), "book": ("book",), "plate": ("plate",), "sofa": ("sofa",)})
+    assert {"on(toy, sofa)", "on(book, sofa)", "on(plate, sofa)"} <= got
+
+
+def test_sibling_conditions_and_relative_clauses_after_adjectives() -> None:
+    roles = {"plate": ("plate",), "dishwasher": ("dishwasher",), "table": ("dining_table",),
+             "shelf": ("bookshelf",)}
+    a = analyse(brief("About the plate: when it is dirty, load it into the dishwasher; when it is clean and "
+                      "wet, leave it on the table; when it is clean and dry, put it on the shelf.", roles), CATALOG)
+    by_id = {f.id: f for f in a.factors}
+    assert by_id["plate_wet"].context == []  # not only asked when the plate is dirty
+    tree = nest(a.factors)
+    assert tree["var"] == "plate_dirty" and tree["branches"]["no"]["var"] == "plate_wet"
+    got = factor_values("A dirty plate goes into the dishwasher. A clean plate that is wet stays on the table.",
+                        roles)
+    assert got["plate_wet"] == {"state(plate, wet)", "not state(plate, wet)"}
+
+
+def test_an_empty_it_is_not_a_reference() -> None:
+    got = factor_values("Close the fridge if it is open. It is likely that a toy has fallen on the floor: "
+                        "put it into the toy chest when it is dirty.",
+                        {"fridge": ("fridge",), "toy": ("toy",), "box": ("toy_box",)})
+    assert got["toy_on_floor"] == {"on(toy, floor)", "not on(toy, floor)"}
+    assert "toy_dirty" in got and "fridge_dirty" not in got
+
+
+def test_fronted_conditions_on_unrelated_things_and_without() -> None:
+    a = analyse(brief("Should the fridge be open, close it; should the lamp be on, switch it off.",
+                      {"fridge": ("fridge",), "lamp": ("table_lamp",)}), CATALOG)
+    assert {f.id: f.context for f in a.factors}["lamp_toggled_on"] == []
+    a = analyse(brief("Wipe the table when it is dirty. Without a sponge, use a towel and bin it.",
+                      {"table": ("dining_table",), "sponge": ("sponge",)}), CATALOG)
+    by_id = {f.id: f for f in a.factors}
+    assert by_id["sponge_present"].values == {"yes": "exists(sponge)", "no": "not exists(sponge)"}
+    assert "table_dirty" in by_id

@@ -49,7 +49,7 @@ def test_each_relation_holds_geometrically(rel: str, solver: Solver) -> None:
 
 
 def test_unknown_backend_names_the_valid_ones() -> None:
-    with pytest.raises(EnvSpecError, match="z3, cpsat"):
+    with pytest.raises(EnvSpecError, match="z3, cpsat, auto"):
         backend("gurobi")
     spec = SceneSpec(task_id="t", env_id="e", rooms=[RoomRequest(id="r", type="LivingRoom")], objects=[])
     with pytest.raises(EnvSpecError, match="unknown layout solver 'ortools'"):
@@ -264,4 +264,112 @@ def test_large_floors_make_walkways_exclusive_in_both_backends(seed: int) -> Non
             assert not _meet(s, door), (name, bid)
             assert not any(_meet(s, r) for c, r in ext.items() if c != bid), (name, bid)
             assert not any(_meet(s, t) for c, t in strips.items() if c != bid), (name, bid)
-    assert feasible == {"z3": True, "cpsat": True}
+    assert feasible == {name: True for name in SOLVERS}
+
+
+def _valid_packing(frame: tuple[int, int], boxes: list[Box], placed: dict[str, Placed], obstacles: list[Obstacle],
+                   walkway: int) -> None:
+    """Every kept box in the frame, clear of the obstacles and the other boxes; exclusive walkway strips."""
+    assert {b.id for b in boxes if b.task} <= set(placed)
+    ext = {b.id: _extent(b, placed[b.id], 0.05) for b in boxes if b.id in placed}
+    strips = {b.id: _strip(ext[b.id], placed[b.id].o, walkway) for b in boxes if b.task and b.id in placed}
+    for bid, r in ext.items():
+        assert r[0] >= 0 and r[1] >= 0 and r[2] <= frame[0] and r[3] <= frame[1], (bid, r)
+        assert not any(_meet(r, ob) for ob in obstacles), bid
+        assert not any(_meet(r, o) for c, o in ext.items() if c != bid), bid
+    for bid, s in strips.items():
+        assert s[0] >= 0 and s[1] >= 0 and s[2] <= frame[0] and s[3] <= frame[1], bid
+        assert not any(_meet(s, ob) for ob in obstacles), bid
+        assert not any(_meet(s, r) for c, r in ext.items() if c != bid), bid
+        assert not any(_meet(s, t) for c, t in strips.items() if c != bid), bid
+
+
+@st.composite
+def large_floors(draw: st.DrawFn) -> tuple[tuple[int, int], list[Box], list[Obstacle]]:
+    from logicenveval.scene.layout import STRONG_NO_OVERLAP_FROM
+
+    frame = (draw(st.integers(60, 90)), draw(st.integers(60, 90)))
+    n = draw(st.integers(STRONG_NO_OVERLAP_FROM, STRONG_NO_OVERLAP_FROM + 8))
+    all_task = draw(st.booleans())
+    boxes = [Box(f"b{k}", (0.5, 0.8, 0.5), (draw(st.integers(2, 12)), draw(st.integers(2, 12))),
+                 task=all_task or draw(st.booleans())) for k in range(n)]
+    return frame, boxes, draw(st.lists(rects, max_size=3))
+
+
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(large_floors(), st.integers(0, 1000))
+def test_property_large_floors_with_strong_no_overlap_reasoning_are_valid_and_agree_with_the_weak_one(
+        case: tuple[tuple[int, int], list[Box], list[Obstacle]], seed: int) -> None:
+    """The stronger NoOverlap2D propagation of large CP-SAT packings only prunes: every packing it
+    returns is valid, and with only task boxes (nothing to relax) it finds one iff the default
+    propagation does."""
+    frame, boxes, obstacles = case
+    placed, dropped = layout_cpsat.pack(frame, boxes, seed=seed, timeout_s=30.0, obstacles=obstacles, walkway=5)
+    assert all(not d.tracked.task for d in dropped)
+    if placed:
+        _valid_packing(frame, boxes, placed, obstacles, 5)
+    if all(b.task for b in boxes):
+        with pytest.MonkeyPatch.context() as mp:
+            mp.setattr(layout_cpsat, "STRONG_NO_OVERLAP_FROM", 10**6)
+            weak, _ = layout_cpsat.pack(frame, boxes, seed=seed, timeout_s=30.0, obstacles=obstacles, walkway=5)
+        assert bool(placed) == bool(weak)
+        if weak:
+            _valid_packing(frame, boxes, weak, obstacles, 5)
+
+
+def test_strong_reasoning_is_switched_on_from_the_threshold(monkeypatch: pytest.MonkeyPatch) -> None:
+    from logicenveval.scene.layout import STRONG_NO_OVERLAP_FROM
+
+    seen: list[bool] = []
+    real = layout_cpsat._Solve.__init__
+
+    def spy(self: layout_cpsat._Solve, m: cp_model.CpModel, seed: int, strong: bool = False) -> None:
+        seen.append(strong)
+        real(self, m, seed, strong)
+
+    monkeypatch.setattr(layout_cpsat._Solve, "__init__", spy)
+    for n in (STRONG_NO_OVERLAP_FROM - 1, STRONG_NO_OVERLAP_FROM):
+        boxes = [Box(f"b{k}", (0.2, 0.2, 0.2), (2, 2), True) for k in range(n)]
+        placed, _ = layout_cpsat.pack((40, 40), boxes, seed=0, timeout_s=10.0)
+        assert len(placed) == n
+    assert seen == [False, True]
+
+
+def test_auto_sends_small_sparse_floors_to_z3_and_everything_else_to_cpsat() -> None:
+    from logicenveval.scene import layout_auto
+
+    def boxes(n: int, side: int) -> list[Box]:
+        return [Box(f"b{k}", (0.5, 0.5, 0.5), (side, side), True) for k in range(n)]
+
+    frame = (100, 100)  # 10 000 cells
+    assert layout_auto.choose(frame, boxes(4, 10), walkway=9) == "z3"  # 4 % covered
+    assert layout_auto.choose(frame, boxes(7, 10), walkway=9) == "z3"
+    assert layout_auto.choose(frame, boxes(3, 10), walkway=9) == "cpsat"  # a tie measured: keep CP-SAT
+    assert layout_auto.choose(frame, boxes(8, 10), walkway=9) == "cpsat"  # too many boxes
+    assert layout_auto.choose(frame, boxes(5, 20), walkway=9) == "cpsat"  # 20 % covered: crowded
+    assert layout_auto.choose(frame, boxes(5, 10), walkway=0) == "cpsat"  # a surface / ceiling
+    assert layout_auto.choose((0, 0), boxes(5, 1), walkway=9) == "cpsat"
+
+
+def test_auto_returns_what_the_chosen_backend_returns(monkeypatch: pytest.MonkeyPatch) -> None:
+    from logicenveval.scene import layout_auto
+
+    boxes = [Box(f"b{k}", (0.5, 0.5, 0.5), (10, 10), k % 2 == 0) for k in range(5)]
+    calls: list[str] = []
+    for name, mod in (("z3", layout_z3), ("cpsat", layout_cpsat)):
+        real = mod.pack
+
+        def spy(*a: object, _real: object = real, _name: str = name, **kw: object) -> object:
+            calls.append(_name)
+            return _real(*a, **kw)  # type: ignore[operator]
+
+        monkeypatch.setattr(mod, "pack", spy)
+    sparse = layout_auto.pack((100, 100), boxes, seed=3, timeout_s=10.0, walkway=9)
+    assert calls == ["z3"]
+    assert sparse == layout_z3.pack((100, 100), boxes, seed=3, timeout_s=10.0, walkway=9)
+    layout_auto.pack((100, 100), boxes, seed=3, timeout_s=10.0)  # no walkway: a surface
+    assert calls[-1] == "cpsat"
+    walls = [(60, [])]
+    wall_boxes = [WallBox("w", 10, 1.0, 0.5, True)]
+    assert layout_auto.pack_walls(walls, wall_boxes, seed=1, timeout_s=5.0) == \
+        layout_cpsat.pack_walls(walls, wall_boxes, seed=1, timeout_s=5.0)

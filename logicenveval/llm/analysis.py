@@ -115,6 +115,9 @@ class Fact:
     negated: bool = False
     goal: bool = False  # where something must end up (not a condition on the initial state)
     modifier: bool = False  # described as a noun modifier ("a toy lying on the floor")
+    #: an attribute the catalog has no domain for, read from the wording ("a ripe one", "it is a
+    #: bill"); kept only when the text contrasts it (see `_contrasted`)
+    derived: bool = False
 
 
 @dataclass(frozen=True)
@@ -169,6 +172,26 @@ def _sentences(text: str) -> list[str]:
     protected = _ABBREV.sub(lambda m: m.group(0).replace(".", "\u2024"), text)
     parts = [p.strip().replace("\u2024", ".") for p in _SENT.split(protected)]
     return [p for p in parts if p]
+
+
+_GENERIC = (r"whatever|anything|everything|something|all|(?:any|the|all the)\s+(?:items?|things?|objects?|stuff)"
+            r"|items|things|objects|stuff")
+_APPOSITION = re.compile(rf"^(?P<lead>\W*)(?:{_GENERIC})\s+(?:that\s+|which\s+)?(?P<pred>[^:\u2013-]+?)\s*(?:\s-|\u2013|:)\s+"
+                         r"(?P<list>[^:\u2013-]+?(?:,|\bor\b|\band\b)[^:\u2013-]+?)\s+(?:-|\u2013)\s+(?P<rest>.+)$", re.I)
+
+
+_WITHOUT = re.compile(r"^(\W*)(?:without|with no)\s+(?:a|an|any|the)?\s*(?=\w[^,]*,)", re.I)
+
+
+def _apposition(sentence: str) -> str:
+    """`Whatever is lying on it - a book, a clock, a phone - goes ...`: the listed objects are the
+    subject of the generic word's predicate (`a book, a clock, a phone is lying on it - goes ...`);
+    a fronted `without a sponge, ...` is the condition `if there is no sponge, ...`."""
+    sentence = _WITHOUT.sub(r"\1if there is no ", sentence)  # "without a sponge, use ...": a condition
+    m = _APPOSITION.match(sentence)
+    if m is None:
+        return sentence
+    return f"{m.group('lead')}{m.group('list')} {m.group('pred')} - {m.group('rest')}"
 
 
 def _first_cue(low: str, cues: tuple[str, ...]) -> tuple[int, str] | None:
@@ -238,6 +261,9 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
             pieces.append((tail[other.end():], "otherwise", "else"))
         return pieces
     cond, cons = (tail[: m.start()], tail[m.end():]) if m else (tail, "")
+    alt = re.match(r"\s*or\s+[^,;]*,\s*", cons, re.I) if m and tail[m.start()] == "," else None
+    if alt and m:  # "if it is elsewhere, or we are out of it, skip it": one condition with two alternatives
+        cond, cons = tail[: m.start() + 1] + " " + cons[: alt.end()].rstrip(" ,"), cons[alt.end():]
     pieces.append((cond, cue, "condition"))
     if cons.strip():
         rest = _split_clauses(cons)
@@ -294,14 +320,23 @@ class _Reader:
         for i, w in enumerate(words):
             if i in covered or w not in PRONOUNS:
                 continue
-            if w in ("one", "ones") and (i == 0 or words[i - 1] in {"no", "any", "each", "every", "which",
+            if w == "it" and words[i + 1 : i + 2] in (["is"], ["was"], ["seems"], ["may"], ["might"], ["could"]) \
+                    and "that" in words[i + 2 : i + 5]:
+                continue  # "it is possible that my toothbrush fell": an empty subject, not a reference
+            if w in ("one", "ones") and (i == 0 and words[1:2] not in (["that"], ["which"]) or i > 0 and words[i - 1] in {"no", "any", "each", "every", "which",
                                                                    "this", "that"}
                                           or words[i + 1 : i + 2] == ["of"]):
                 continue  # "one of the cushions", "each one": not an anaphoric "one"
             before = [m for m in found if m.kind == "role" and m.end <= i]
             places = [m for m in found if m.kind in ("role", "floor") and m.end <= i]
             if w in ("one", "ones"):  # "a dirty one": the kind the clause or sentence is about
-                before = [m for m in before if all(x in ARTICLES | set(STATE_WORDS) for x in words[: m.start])]
+                before = [m for m in before if all(x in ARTICLES | set(STATE_WORDS) or self._unknown(x)
+                                                   for x in words[: m.start])]
+            elif w == "it" and words[i + 1 : i + 3] in (["is", "a"], ["is", "an"]) and len(before) > 1:
+                # "a document on the desk and it is a bill": the pronoun of a predicate noun is the
+                # clause's subject, not a place named after a preposition
+                subj = [m for m in before if m.start == 0 or words[m.start - 1] not in PREP_ON | PREP_IN]
+                before = subj[:1] or before
             elif i > 0 and words[i - 1] in PREP_ON | PREP_IN and before:
                 # "a book or a phone on it": not the listed objects themselves
                 listed = [before[-1]]
@@ -348,6 +383,16 @@ class _Reader:
         already = self._already(words, mentions, negated)
         if already is not None:
             return [already], (already.subject,)
+        if subjects and subjects[0].kind == "pronoun" and any(p in " ".join(words) for p in ELSEWHERE) and not (
+                set(subjects[0].roles) & set(self.last_location)) and not any(
+                x.kind in ("role", "floor", "room") for x in mentions):
+            # "if it is somewhere else": the thing whose place was just spoken of
+            placed = [r for r in self.recent if r in self.last_location]
+            if placed:
+                first = Mention((placed[-1],), subjects[0].start, subjects[0].end, "pronoun")
+                mentions = [first if x is subjects[0] else x for x in mentions]
+                subjects = [first, *subjects[1:]]
+                self.recent = [r for r in self.recent if r != placed[-1]] + [placed[-1]]
         facts: list[Fact] = []
         for idx, m in enumerate(mentions):
             if m.kind not in ("role", "pronoun"):
@@ -361,11 +406,12 @@ class _Reader:
                     base = self.last_location[r]
                     facts.append(Fact(r, base.condition, "location", base.key, negated=True))
         facts += self._fronted_place(words, mentions)
+        facts += self._derived_attributes(words, mentions)
         for m in subjects:
             k = m.end
             while k < len(words) and (words[k] in DESCRIPTIVE or self._pp_at(words, k)):
                 k = self._pp_at(words, k) or k + 1
-            if k < len(words) and words[k] in ABSENT or words[max(0, m.start - 3) : m.start][:2] == ["out", "of"]:
+            if k < len(words) and words[k] in ABSENT or words[max(0, m.start - 2) : m.start] == ["out", "of"]:
                 # "the roll by the toilet is missing", "we are out of bread"
                 facts += [Fact(r, f"exists({r})", "exists", negated=True) for r in m.roles]
                 break
@@ -373,6 +419,12 @@ class _Reader:
             if "there" in before or "no" in before[-2:]:
                 facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
                 break
+        else:
+            none = next((i for i, w in enumerate(words) if w == "none" and i > 0
+                         and words[i - 1] in {"have", "has", "is", "are", "there"}), None)
+            if none is not None and subjects and subjects[0].start < none:
+                # "if it is anywhere else, or we have none": the thing spoken of may be absent
+                facts += [Fact(r, f"exists({r})", "exists", negated=True) for r in subjects[0].roles]
         if not subjects and self.topic and self.topic_kind == "role":
             # "The potted plant: dusty leaves get misted ..." - a state of a part of the topic
             for i, w in enumerate(words[:-1]):
@@ -418,6 +470,49 @@ class _Reader:
                 r = self.recent[-1]
                 return Fact(r, f"state({r}, {flag})", "state", flag, negated=negated != (not pol))
         return None
+
+    def _unknown(self, word: str) -> bool:
+        """A word the analyser has no meaning for: not a role, room, state, cue or function word."""
+        return (len(word) > 2 and word.isalpha() and word not in _KNOWN_WORDS
+                and word not in self.lex.role_words() and word not in self.lex.attribute_words()
+                and not any(word in room for room in self.lex.room_phrases))
+
+    def _derived_attributes(self, words: list[str], mentions: list[Mention]) -> list[Fact]:
+        """Attributes the catalog has no domain for: `a ripe one` / `it is not ripe yet` (an
+        adjective, key = its noun `ripeness`; `unripe` negates `ripe`) and `it is a bill` (a kind)."""
+        out: list[Fact] = []
+        for m in mentions:
+            if m.kind not in ("role", "pronoun"):
+                continue
+            j = m.start - 1
+            while j >= 0 and words[j] in ARTICLES:
+                j -= 1
+            if j >= 0 and words[j] in PREP_ON | PREP_IN and any(
+                    x.kind in ("role", "pronoun") and x.end <= j for x in mentions):
+                continue  # "the banana on the table is overripe" speaks of the banana
+            k = m.end
+            while k < len(words) and (words[k] in DESCRIPTIVE | NEGATIONS | {"that", "which"} or self._pp_at(words, k)):
+                k = self._pp_at(words, k) or k + 1
+            neg = any(_negation(w) for w in words[m.end : k])
+            if k > m.end and k < len(words) and words[k - 1] in DESCRIPTIVE | NEGATIONS:
+                if words[k] in ("a", "an") and k + 2 == len(words) and self._unknown(words[k + 1]):
+                    # "... and it is a bill": a kind of the object (the clause ends with the noun)
+                    out += [Fact(r, f"attr({r}, kind, {words[k + 1]})", "attr", "kind", negated=neg,
+                                 modifier=True, derived=True) for r in m.roles]
+                elif self._unknown(words[k]) and (k + 1 == len(words) or words[k + 1] in _AFTER_PREDICATE):
+                    out += self._adjective(m, words[k], neg)
+            if m.start > 0 and (m.kind == "role" or words[m.start] in ("one", "ones")) and self._unknown(
+                    words[m.start - 1]) and (
+                    m.start == 1 or words[m.start - 2] in ARTICLES):
+                out += self._adjective(m, words[m.start - 1], False)  # "a ripe one", "an unripe one"
+        return out
+
+    def _adjective(self, m: Mention, word: str, negated: bool) -> list[Fact]:
+        if word.startswith("un") and len(word) > 5:
+            word, negated = word[2:], not negated
+        noun = (word[:-1] + "i" if word.endswith("y") else word) + "ness"
+        return [Fact(r, f"attr({r}, {noun}, {word})", "attr", noun, negated=negated, modifier=True, derived=True)
+                for r in m.roles]
 
     def _fronted_place(self, words: list[str], mentions: list[Mention]) -> list[Fact]:
         """`On the bed there may be a book, an alarm clock or a phone`: the place comes first."""
@@ -515,7 +610,10 @@ class _Reader:
         found: list[tuple[str, bool, bool]] = []  # (word, polarity-negated, modifier)
         local_neg = any(_negation(w) for w in skipped)
         # "a water bowl that has water but is dirty": a restrictive relative clause describes
-        relative = skipped[:1] in (["that"], ["which"]) and m.start > 0 and words[m.start - 1] in INDEFINITE
+        art = m.start - 1  # the article before any adjectives: "a clean coat that is wet"
+        while art > 0 and (words[art] in STATE_WORDS or self._unknown(words[art])):
+            art -= 1
+        relative = skipped[:1] in (["that"], ["which"]) and art >= 0 and words[art] in INDEFINITE
         while k < len(words) and words[k] in STATE_WORDS:
             w = words[k]
             if w == "out" and not set(skipped) & {"is", "are", "was", "were", "already", "still"}:
@@ -614,6 +712,19 @@ class _Reader:
 
 
 _RANK = {"exists": 0, "location": 1, "state": 2, "attr": 3}
+#: words that end a predicate adjective: "one that is not ripe yet belongs in the bowl"
+_AFTER_PREDICATE = frozenset({"yet", "enough", "anymore", "already", "now", "and", "or", "but"}) | MOTION
+#: words with a meaning of their own, never an attribute read from the wording
+_KNOWN_WORDS = (frozenset(STATE_WORDS) | DESCRIPTIVE | MOTION | ACTIONS | ARTICLES | PARTS | PRONOUNS
+                | NEGATIONS | UNCERTAIN | ABSENT | AVAILABILITY | PREP_ON | PREP_IN | COLOR_WORDS
+                | SITUATION_PARTICIPLES | frozenset(
+                    {"other", "another", "else", "same", "different", "done", "finished", "ready",
+                     "sure", "fine", "alone", "there", "here", "where", "what", "whatever", "which",
+                     "whichever", "yet", "enough", "anymore", "and", "but", "then", "also", "only",
+                     "new", "old", "spare", "fresh", "own", "whole", "nearest", "next", "last",
+                     "first", "second", "third", "kind", "sort", "type", "need", "time", "for",
+                     "with", "without", "from", "place", "way", "lot", "mess", "problem", "close",
+                     "switch", "turn", "shut", "check", "use", "wipe", "clean", "empty", "fill"}))
 
 
 def _question(subject: str, kind: str, key: str, targets: list[str]) -> str:
@@ -668,13 +779,14 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     clauses: list[Clause] = []
     grammatical = 0  # pieces split at ':' or ';' still belong to one sentence for grouping
     for si, sent in enumerate(sentences):
-        for text, cue, role in _subsplit(_split_clauses(sent)):
+        for text, cue, role in _subsplit(_split_clauses(_apposition(sent))):
             # "should there be an umbrella: ..." - the cue itself says the object may be absent
             facts, names = reader.facts("there is " + text if cue == "should there be" else text)
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
         if sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences):
             grammatical += 1
 
+    contrasted = _contrasted(clauses, str(brief["description"]))
     # collect condition facts per (subject, kind, key)
     found: dict[tuple[str, str, str], dict[str, Any]] = {}
     last_key: tuple[str, str, str] | None = None
@@ -694,7 +806,12 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
               and clauses[ci - 2].role == "condition" and clauses[ci - 2].sentence == cl.sentence
               and (clauses[ci - 1].cue != cl.cue or (
                   ci >= 3 and clauses[ci - 3].role == "consequence"
-                  and clauses[ci - 3].sentence == cl.sentence))):
+                  and clauses[ci - 3].sentence == cl.sentence)
+                  # "should the wardrobe be open, close it; should the lamp be on, ...": a condition
+                  # on something the previous instruction never spoke of
+                  or not ({f.subject for f in cl.facts if not f.goal}
+                          & (set(clauses[ci - 1].mentions) | set(clauses[ci - 2].mentions)))
+                  and bool(cl.facts))):
             # "switch off the lamp in case it is on, and shut the wardrobe if it is open": a new
             # instruction with its own postposed condition, not nested under the previous one
             context = []
@@ -705,14 +822,23 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         conditional = cl.role in ("condition", "uncertain") or (
             cl.role == "consequence" and bool(set(re.findall(r"[a-z]+", cl.text.lower())) & UNCERTAIN))
         added: list[tuple[tuple[str, str, str], bool, str]] = []
+        if cl.role == "condition":
+            # "when it is dirty, ...; when it is clean and wet, ...": a condition restating an
+            # earlier one of the sentence is its sibling alternative, not nested under it
+            restated = {((f.subject, f.kind, f.key if f.kind in ("state", "attr") else ""), not f.negated)
+                        for f in cl.facts if not f.goal}
+            context = [c for c in context if (c[0], c[1]) not in restated]
         for f in cl.facts:
+            if f.derived and (f.subject, f.key) not in contrasted:
+                continue
             if f.goal or not (conditional or (f.modifier and cl.role not in ("scene",))
                               or (cl.role == "else" and f.kind != "location")):
                 continue
             slot = (f.subject, f.kind, f.key if f.kind in ("state", "attr") else "")
             entry = found.setdefault(slot, {"order": ci, "sentence": cl.sentence, "clause": ci,
                                            "targets": [], "values": [],
-                                           "context": [c for c in context if c[0] != slot]
+                                           "context": [c for c in context if c[0] != slot and not (
+                                               f.kind == "exists" and c[0][0] == f.subject)]
                                            or [c for c in carried if c[0] != slot and f.kind == "exists"]})
             entry.setdefault("places", set()).add((cl.sentence, ci))
             if cl.role == "condition":
@@ -739,10 +865,22 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     factors: list[Factor] = []
     slot_factor: dict[tuple[str, str, str], Factor] = {}
     subjects_with_location = {s for (s, k, _) in found if k == "location"}
+    absence_stated = {f.subject for cl in clauses if cl.role in ("condition", "uncertain") for f in cl.facts
+                      if f.kind == "exists" and not f.goal and (
+                          f.negated and cl.role == "uncertain"
+                          # "if it is elsewhere, or we have none": two alternatives, not "no plate on the counter"
+                          or f.negated and re.search(r"\bor\b", cl.text) is not None and any(
+                              g.subject == f.subject and g.kind == "location" and g.negated for g in cl.facts)
+                          # "there may be a loaf of bread." said on its own, before where it is
+                          or cl.role == "uncertain" and not any(g.subject == f.subject and g.kind == "location"
+                                                                for g in cl.facts))}
     for (subject, kind, key), e in found.items():
         values: dict[str, str]
-        if kind == "exists" and subject in subjects_with_location:
-            continue  # `if there are no wipes` refers to where the wipes are expected
+        if kind == "exists" and subject in subjects_with_location - absence_stated:
+            # `if there are no wipes` refers to where the wipes are expected; only an absence
+            # stated as its own alternative (`if it is elsewhere or we have none`, `there may or
+            # may not be a loaf`) is a separate question
+            continue
         if kind == "location":
             targets = e["targets"]
             if len(targets) == 1:
@@ -779,6 +917,24 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     groups, group_roles = _group(factors)
     covered = set().union(*group_roles) if group_roles else set()
     return TaskAnalysis(sentences, clauses, factors, groups, group_roles, set(lex.roles) - covered)
+
+
+def _contrasted(clauses: list[Clause], text: str) -> set[tuple[str, str]]:
+    """(subject, key) of derived attributes the text contrasts, so that they decide something:
+    an adjective said of the object both positively and negated (`a ripe one ..., one that is not
+    ripe ...`, `ripe` / `unripe`), a kind stated in a condition (`if it is a bill`) or set against
+    `other` objects of its sort (`any other document`)."""
+    polarity: dict[tuple[str, str], set[bool]] = {}
+    out: set[tuple[str, str]] = set()
+    low = " " + " ".join(w for w, _, _ in tokens(_expand(text))) + " "
+    for cl in clauses:
+        for f in cl.facts:
+            if not f.derived:
+                continue
+            polarity.setdefault((f.subject, f.key), set()).add(f.negated)
+            if f.key == "kind" and (cl.role == "condition" or f" other {f.subject.replace('_', ' ')} " in low):
+                out.add((f.subject, f.key))
+    return out | {s for s, pols in polarity.items() if len(pols) == 2}
 
 
 def _group(factors: list[Factor]) -> tuple[list[list[str]], list[set[str]]]:

@@ -110,6 +110,11 @@ class Lexicon:
     def role_words(self) -> set[str]:
         return {w for p in self.phrases for w in p}
 
+    def attribute_words(self) -> set[str]:
+        """Every value of every attribute domain and fixed attribute (singular)."""
+        return {singular(v) for d in self.domains.values() for vs in d.values() for v in vs} | {
+            singular(v) for attrs in self.fixed.values() for v in attrs.values()}
+
     def find_mentions(self, toks: list[tuple[str, int, int]]) -> list[Mention]:
         """Longest-match role, room and `floor` mentions; attribute words disambiguate."""
         words = [t[0] for t in toks]

@@ -4,7 +4,8 @@ Everything is on an integer grid (`grid` metres per cell). Object sizes are snap
 when the catalog range allows, so a placed box is exactly its cell box. Orientation `o` in 0..3 is
 yaw `90*o`; the front of an object is +z after yaw (AI2-THOR), i.e. +z, +x, -z, -x.
 Backends (`layout_z3`, `layout_cpsat`) implement the same `pack`/`pack_walls` contract and are
-looked up by name with `backend`, imported only when used.
+looked up by name with `backend`, imported only when used; `layout_auto` dispatches each packing to
+one of them by its size and density.
 """
 
 from __future__ import annotations
@@ -28,13 +29,19 @@ WALKWAY = 0.45  # metres of free floor in front of each task object for the agen
 #: `benchmarks/layout.py`: the per-strip constraints made a 60-object floor ~10x slower.
 EXCLUSIVE_WALKWAYS_FROM = 16
 
+#: floors with at least this many boxes get CP-SAT's stronger NoOverlap2D propagation (timetabling
+#: and try-edge reasoning). Measured per floor on `benchmarks/layout.py` rooms (docs/scene.md): up
+#: to 15 boxes it costs 1.2-2.9x, from 20 boxes it pays (0.3-1.3x at 20, 0.05-0.4x at 30-50: a
+#: dense 40-box floor 1.4 s -> 0.09 s); no effect on Z3.
+STRONG_NO_OVERLAP_FROM = 16
+
 NEAR_AXIS = 0.7  # per-axis footprint gap: sqrt(2)*0.7 < 1.0 m (DESIGN §6 near)
 FAR = 2.5
 IN_FRONT_GAP = NEAR_AXIS + 0.25  # in_front_of / side_of: gap along one axis only, < 1.0 m
 #: the relation types a backend encodes on a floor (`FloorRel`); others hold by placement or are dropped
 FLOOR_RELATIONS = frozenset({"edge", "center", "near", "far", "center_aligned", "in_front_of", "face_to", "side_of"})
 
-Solver = Literal["z3", "cpsat"]
+Solver = Literal["z3", "cpsat", "auto"]
 SOLVERS: tuple[str, ...] = get_args(Solver)
 DEFAULT_SOLVER: Solver = "cpsat"
 
@@ -104,7 +111,7 @@ class Backend(Protocol):
 
 
 def backend(name: str) -> Backend:
-    """The layout backend called `name` ('z3' or 'cpsat')."""
+    """The layout backend called `name`: 'z3', 'cpsat' or 'auto' (per sub-problem, `layout_auto`)."""
     if name not in SOLVERS:
         raise EnvSpecError(f"unknown layout solver {name!r}", field="solver",
                            hint=f"use one of {', '.join(SOLVERS)} (docs/scene.md compares them)")
