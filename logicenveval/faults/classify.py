@@ -5,11 +5,13 @@ A mutant is *equivalent* when it passes every GT situation in every world the va
 its verdict kinds are recorded. Each of a task's three hand-written faulty BTs is *reproduced*
 when some mutant has the same signature (situation -> verdict kinds over all worlds).
 
-Speed: a mutant differs from the correct BT only inside its `region`. Every episode runs the
-correct BT once with a trace; a mutant none of whose region's leaves were ticked there behaves
-exactly like the correct BT (same ticks, same statuses, same world), so it passes without being
-simulated. Only mutants whose region was reached are run, each on its own compiled tree, built
-once and reset per episode.
+Speed: a mutant differs from the correct BT only inside its `region`. Every episode records
+the correct BT once (`CompiledPolicy.record`: every leaf tick, constant leaves included, and a
+snapshot before every root tick); a mutant none of whose region's leaves were ticked there
+behaves exactly like the correct BT (same ticks, same statuses, same world), so it gets its
+verdict without being simulated. The others resume from the snapshot before the first root tick
+where they can differ (`MutantRunner._status`), on the correct tree with only their edited
+subtree spliced in, built once and reset per episode.
 """
 
 from __future__ import annotations

@@ -2,7 +2,7 @@
 
 `simulate` is the public entry point; `CompiledPolicy` lets callers that run one policy in many
 environments (validation, the throughput benchmark) build the py_trees tree once and reset it per
-episode.
+episode, and mutation scoring record an episode and resume it from any root tick.
 """
 
 from __future__ import annotations
