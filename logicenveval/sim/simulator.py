@@ -7,7 +7,7 @@ episode, and mutation scoring record an episode and resume it from any root tick
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -98,16 +98,13 @@ class CompiledPolicy:
         ep = self.root.binding.ep = Episode(world, ticks=ticks)
         snapshots: list[Snapshot] = []
         nodes, stateful = self._nodes, self._stateful
-        status = IDLE
+
+        def snapshot() -> None:
+            snapshots.append(Snapshot(ep.tick, [n.status for n in nodes],
+                                      [n.state() for n in stateful], world.copy()))
+
         try:
-            while ep.tick < tick_limit:
-                snapshots.append(Snapshot(ep.tick, [n.status for n in nodes],
-                                          [n.state() for n in stateful], world.copy()))
-                ep.tick += 1
-                self.root.tick_once()
-                status = self.root.status
-                if status is not RUNNING:
-                    break
+            status = self._tick_until_done(ep, tick_limit, snapshot)
         except Violation as v:
             ticks.append((ep.tick, v.node, FAILURE))
             return Recording("precondition_violation", ticks, snapshots)
@@ -130,15 +127,25 @@ class CompiledPolicy:
         ep = self.root.binding.ep = Episode(snapshot.world.copy(), tick=snapshot.tick)
         return self._judge(ep, goal, tick_limit)
 
-    def _judge(self, ep: Episode, goal: Cond | None, tick_limit: int) -> str:
+    def _tick_until_done(self, ep: Episode, tick_limit: int,
+                         before_tick: Callable[[], None] | None = None) -> Status:
+        """Tick the root until it stops RUNNING or `ep` has `tick_limit` root ticks; the root's
+        last status (IDLE when no tick was left). A `Violation` propagates to the caller."""
+        root = self.root
         status = IDLE
+        while ep.tick < tick_limit:
+            if before_tick is not None:
+                before_tick()
+            ep.tick += 1
+            root.tick_once()
+            status = root.status
+            if status is not RUNNING:
+                break
+        return status
+
+    def _judge(self, ep: Episode, goal: Cond | None, tick_limit: int) -> str:
         try:
-            while ep.tick < tick_limit:
-                ep.tick += 1
-                self.root.tick_once()
-                status = self.root.status
-                if status is not RUNNING:
-                    break
+            status = self._tick_until_done(ep, tick_limit)
         except Violation:
             return "precondition_violation"
         return self._outcome(status, goal, ep.world)
@@ -156,18 +163,11 @@ class CompiledPolicy:
     def run(self, world: World, goal: Cond | None, *, tick_limit: int = 50,
             trace: bool = False) -> Verdict:
         """Run one episode on `world` (mutated in place: pass a copy)."""
-        root = self.root
         for node in self._nodes:
             node.reset_all()
-        ep = root.binding.ep = Episode(world, trace=[] if trace else None)
-        status = IDLE
+        ep = self.root.binding.ep = Episode(world, trace=[] if trace else None)
         try:
-            while ep.tick < tick_limit:
-                ep.tick += 1
-                root.tick_once()
-                status = root.status
-                if status is not RUNNING:
-                    break
+            status = self._tick_until_done(ep, tick_limit)
         except Violation as v:
             return Verdict(status="precondition_violation", fault_node=v.node.bt_name or v.node.label,
                            fault_path=v.node.path, message=v.message, ticks=ep.tick,
