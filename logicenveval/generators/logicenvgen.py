@@ -16,9 +16,10 @@ from typing import Any
 from logicenveval.errors import LogicEnvEvalError
 from logicenveval.generators.base import GenerationContext, GenerationFailure, GenerationResult
 from logicenveval.generators.construction import EnvironmentBuilder
-from logicenveval.generators.plan import DerivedPlan, PlanLog, derive_plan
+from logicenveval.generators.plan import DerivedPlan, PlanLog, derive_plan, plan_vocabulary
 from logicenveval.llm.ask import ask
-from logicenveval.llm.replies import TrajectoriesReply
+from logicenveval.llm.replies import TrajectoriesWire
+from logicenveval.llm.structured import literal_text
 from logicenveval.logic.exhaustive import exhaustive_cover
 from logicenveval.logic.selectors import get_selector
 from logicenveval.model.task import TaskBrief
@@ -47,11 +48,13 @@ class LogicEnvGen:
             artifacts["trajectories"] = [t.key for t in trajectories]
         else:
             reply = ask(ctx.model, "trajectories_direct", {"task": brief.model_dump(mode="json")},
-                        TrajectoriesReply, seed=ctx.seed)
-            situations = [list(t.facts) for t in reply.trajectories]
+                        TrajectoriesWire, seed=ctx.seed, vocabulary=plan_vocabulary(brief))
+            situations = [[literal_text(f) for f in t.facts] for t in reply.trajectories]
             claims = [None] * len(situations)
             plan = None
-            artifacts = {"trajectories": [t.model_dump() for t in reply.trajectories], "log": []}
+            artifacts = {"trajectories": [{"description": t.description, "facts": facts}
+                                          for t, facts in zip(reply.trajectories, situations, strict=True)],
+                         "log": []}
         builder = EnvironmentBuilder(brief, ctx, generator=self.name, use_solver=self.use_solver,
                                      max_refinements=self.max_refinements)
         envs = []

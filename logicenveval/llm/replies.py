@@ -8,7 +8,10 @@ from __future__ import annotations
 
 from typing import Annotated, Literal, Union
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, model_validator
+
+from logicenveval.llm.structured import Conjunction, Goal, to_text
+from logicenveval.llm.vocab import Vocab
 
 _F = ConfigDict(frozen=True, extra="ignore")
 
@@ -69,14 +72,6 @@ class QueryNode(BaseModel):
 
 TreeDraft = Annotated[Union[QueryNode, PlanLeaf], Field(union_mode="smart")]  # noqa: UP007
 QueryNode.model_rebuild()
-
-
-class TreeReply(BaseModel):
-    """A decision-tree-structured behaviour plan of one subtask (paper §3.1, JSON form)."""
-
-    model_config = _F
-    subtask: str
-    tree: TreeDraft
 
 
 class TrajectoryDraft(BaseModel):
@@ -188,3 +183,81 @@ class EnvironmentsReply(BaseModel):
     model_config = _F
     reasoning: str = Field(default="", description="step-by-step reasoning about the situations")
     environments: list[EnvironmentDraft] = Field(min_length=1)
+
+
+# --- vocabulary-bound wire forms of LogicEnvGen's plan requests (llm.vocab, llm.structured) ------
+# Conditions are lists of literals with enumerated roles/rooms/flags; `plan.py` converts them to
+# the internal drafts above (condition-language strings) after validation.
+
+class SubtaskWire(BaseModel):
+    model_config = _F
+    id: Annotated[str, Vocab("ids", "short snake_case id, e.g. 'tidy_toy'")]
+    description: str = Field(description="one sentence: what the subtask achieves")
+    roles: list[Annotated[str, Vocab("roles")]] = Field(
+        description="task roles this subtask manipulates or inspects")
+
+
+class DecomposeWire(BaseModel):
+    """Mutually independent subtasks (no execution-order dependencies)."""
+
+    model_config = _F
+    subtasks: list[SubtaskWire] = Field(min_length=1)
+
+
+class ResponseWire(BaseModel):
+    model_config = _F
+    response: Annotated[str, Vocab("ids", "short snake_case answer, e.g. 'yes', 'no', 'novel'")]
+    condition: Conjunction = Field(description="what holds in the environment when this is the answer")
+
+
+class FactorWire(BaseModel):
+    model_config = _F
+    id: Annotated[str, Vocab("ids", "snake_case factor id, unique in the task, e.g. 'toy_on_floor'")]
+    question: str = Field(description="the query about the environment, e.g. 'Is there a toy on the floor?'")
+    responses: list[ResponseWire] = Field(
+        min_length=2, description="mutually exclusive answers that cover every situation")
+
+    @model_validator(mode="after")
+    def _distinct(self) -> FactorWire:
+        names = [r.response for r in self.responses]
+        repeated = sorted({n for n in names if names.count(n) > 1})
+        if repeated:
+            raise ValueError(f"factor {self.id!r} gives the response {repeated[0]!r} twice")
+        return self
+
+    def draft(self) -> FactorDraft:
+        return FactorDraft(id=self.id, question=self.question,
+                           values={r.response: to_text(r.condition) for r in self.responses})
+
+
+class FactorsWire(BaseModel):
+    """Uncertain environment factors that change how one subtask must be executed."""
+
+    model_config = _F
+    factors: list[FactorWire] = Field(default_factory=list)
+
+
+class TreeStepReply(BaseModel):
+    """One step of growing a decision tree: the factor to ask next on this path, or `act`."""
+
+    model_config = _F
+    next: Annotated[str, Vocab("next_steps", "a factor id not yet asked on this path, or act")]
+
+
+class LeafWire(BaseModel):
+    model_config = _F
+    plan: list[str] = Field(min_length=1, max_length=8, description="the agent's steps")
+    goal: Goal = Field(description="conditions that must hold after the plan (may be empty)")
+
+
+class FactTrajectoryWire(BaseModel):
+    model_config = _F
+    description: str = Field(description="the situation in words")
+    facts: Goal = Field(description="what holds initially in this situation")
+
+
+class TrajectoriesWire(BaseModel):
+    """Logical trajectories straight from the description (the no-DBP ablation)."""
+
+    model_config = _F
+    trajectories: list[FactTrajectoryWire] = Field(min_length=1)
