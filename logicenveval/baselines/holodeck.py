@@ -32,6 +32,7 @@ from logicenveval.generators.base import GenerationContext, GenerationFailure, G
 from logicenveval.generators.construction import placement_fields
 from logicenveval.llm.ask import ask
 from logicenveval.llm.replies import ObjectDraft
+from logicenveval.llm.vocab import scene_vocabulary
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import TaskBrief
 
@@ -54,7 +55,9 @@ class Holodeck:
         payload = {"task": brief.model_dump(mode="json"), "categories": sorted(ctx.catalog.categories)}
         env_id = f"{self.name}-00"
         try:
-            scene = ask(ctx.model, "holodeck_scene", payload, HolodeckSceneReply, seed=ctx.seed)
+            scene = ask(ctx.model, "holodeck_scene", payload, HolodeckSceneReply, seed=ctx.seed,
+                        vocabulary=scene_vocabulary(brief.rooms, sorted(brief.roles),
+                                                    payload["categories"]))
             env, log = build_scene(brief, scene, ctx.catalog, ctx.rng, env_id=env_id, generator=self.name,
                                    grid=self.grid, max_nodes=self.max_nodes)
         except LogicEnvEvalError as exc:

@@ -135,7 +135,8 @@ def ask(
     for attempt in range(max_reasks + 1):
         step_seed = seed if attempt == 0 else (seed or 0) + attempt
         request = ChatRequest(kind=kind, payload=payload, messages=messages, schema=schema,
-                              temperature=min(1.0, temperature + REASK_TEMPERATURE_STEP * attempt),
+                              temperature=temperature if attempt == 0 else
+                              min(2.0, temperature + REASK_TEMPERATURE_STEP * attempt),
                               seed=step_seed, max_tokens=bound)
         raw, truncated = split_truncation(model.complete(request))
         replies.append(raw)

@@ -94,7 +94,7 @@ Wall = Literal["n", "s", "e", "w"]
 
 class DoorDraft(BaseModel):
     model_config = _F
-    to: str = Field(description="a room id or 'exterior'")
+    to: Annotated[str, Vocab("door_targets")] = Field(description="a room id or 'exterior'")
     type: Literal["door", "doorway", "sliding"] = "door"
     width: float = Field(default=0.9, ge=0.6, le=2.0)
     state: Literal["open", "closed"] = "closed"
@@ -111,10 +111,11 @@ class WindowDraft(BaseModel):
 
 class RoomDraft(BaseModel):
     model_config = _F
-    id: str
-    type: str = Field(description="room type, e.g. LivingRoom, Kitchen, Bedroom, Bathroom, Study")
+    id: Annotated[str, Vocab("rooms")]
+    type: Annotated[str, Vocab("room_types")] = Field(
+        description="room type, e.g. LivingRoom, Kitchen, Bedroom, Bathroom, Study")
     area_m2: float = Field(ge=3.0, le=80.0)
-    adjacent_to: list[str] = Field(default_factory=list)
+    adjacent_to: list[Annotated[str, Vocab("rooms")]] = Field(default_factory=list)
     doors: list[DoorDraft] = Field(default_factory=list)
     windows: list[WindowDraft] = Field(default_factory=list)
     floor_material: str = "wood"
@@ -128,11 +129,13 @@ class FloorPlanReply(BaseModel):
 
 class ObjectDraft(BaseModel):
     model_config = _F
-    id: str = Field(description="unique object id, e.g. 'sofa_1'")
-    category: str = Field(description="a catalog category name")
-    room: str
-    role: str | None = Field(default=None, description="the task role this object plays, if any")
-    placement: str = Field(description="'floor', 'wall', 'ceiling', 'on:<object id>' or 'inside:<object id>'")
+    id: Annotated[str, Vocab("object_ids")] = Field(description="unique object id, e.g. 'sofa_1'")
+    category: Annotated[str, Vocab("categories")] = Field(description="a catalog category name")
+    room: Annotated[str, Vocab("rooms")]
+    role: Annotated[str, Vocab("roles")] | None = Field(
+        default=None, description="the task role this object plays, if any")
+    placement: Annotated[str, Vocab("placements")] = Field(
+        description="'floor', 'wall', 'ceiling', 'on:<object id>' or 'inside:<object id>'")
     attributes: dict[str, str] = Field(default_factory=dict)
     states: dict[str, bool] = Field(default_factory=dict)
     description: str = ""
@@ -145,9 +148,11 @@ class ObjectsReply(BaseModel):
 
 class RelationDraft(BaseModel):
     model_config = _F
-    type: str = Field(description="edge, center, wall_mounted, on, inside, near, far, above, "
-                      "in_front_of, side_of, center_aligned, face_to")
-    args: list[str] = Field(min_length=1, max_length=2, description="object ids")
+    type: Annotated[str, Vocab("relation_types")] = Field(
+        description="edge, center, wall_mounted, on, inside, near, far, above, "
+        "in_front_of, side_of, center_aligned, face_to")
+    args: list[Annotated[str, Vocab("object_ids")]] = Field(min_length=1, max_length=2,
+                                                            description="object ids")
 
 
 class RelationsReply(BaseModel):
