@@ -81,8 +81,8 @@ class EnvironmentBuilder:
         return {"task": self.brief.model_dump(mode="json"), **extra}
 
     def _vocabulary(self, rooms: list[str], object_ids: list[str] | None = None) -> dict[str, Words]:
-        return scene_vocabulary(rooms, sorted(self.brief.roles), sorted(self.ctx.catalog.categories),
-                                object_ids)
+        categories = [*sorted(self.ctx.catalog.categories), *(r.category for r in self.brief.roles.values())]
+        return scene_vocabulary(rooms, sorted(self.brief.roles), categories, object_ids)
 
     def floor_plan(self, facts: list[str]) -> FloorPlanReply:
         return ask(self.ctx.model, "floor_plan", self._payload(situation=facts), FloorPlanReply,

@@ -200,7 +200,10 @@ def derive_plan(brief: TaskBrief, ctx: GenerationContext, *, max_refinements: in
 
 def _grow_tree(brief: TaskBrief, ctx: GenerationContext, st: SubtaskDraft,
                factors: dict[str, FactorDraft], log: PlanLog) -> QueryNode | PlanLeaf:
-    """The subtask's tree, one `tree_step` question per node, then its leaves' plans."""
+    """The subtask's tree, one `tree_step` question per node, then its leaves' plans.
+
+    The root must ask one of the identified factors (they were identified because they change
+    what the agent does); below it the model may act at any point."""
     base = _payload(brief, subtask=st.model_dump(), factors=[f.model_dump() for f in factors.values()])
     budget = [MAX_TREE_STEPS]
     leaves: list[list[tuple[str, str]]] = []
@@ -216,7 +219,7 @@ def _grow_tree(brief: TaskBrief, ctx: GenerationContext, st: SubtaskDraft,
             step = ask(ctx.model, "tree_step",
                        {**base, "path": [{"factor": v, "response": x} for v, x in path]},
                        TreeStepReply, seed=ctx.seed,
-                       vocabulary={"next_steps": [*remaining, ACT]})
+                       vocabulary={"next_steps": [*remaining, ACT] if path else remaining})
         except ModelReplyError as exc:
             log.add("tree_step", "no valid reply; a leaf here", subtask=st.id,
                     path=dict(path), error=exc.message)
