@@ -10,7 +10,7 @@ from typing import Annotated, Literal, Union
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
-from logicenveval.llm.structured import Conjunction, Goal, to_text
+from logicenveval.llm.structured import Conjunction, Goal, LiteralDraft, to_text
 from logicenveval.llm.vocab import Vocab
 
 _F = ConfigDict(frozen=True, extra="ignore")
@@ -143,7 +143,7 @@ class ObjectDraft(BaseModel):
 
 class ObjectsReply(BaseModel):
     model_config = _F
-    objects: list[ObjectDraft] = Field(min_length=1)
+    objects: list[ObjectDraft] = Field(min_length=1, max_length=60)
 
 
 class RelationDraft(BaseModel):
@@ -157,7 +157,7 @@ class RelationDraft(BaseModel):
 
 class RelationsReply(BaseModel):
     model_config = _F
-    relations: list[RelationDraft] = Field(default_factory=list)
+    relations: list[RelationDraft] = Field(default_factory=list, max_length=80)
 
 
 class PlacedObject(ObjectDraft):
@@ -197,16 +197,16 @@ class EnvironmentsReply(BaseModel):
 class SubtaskWire(BaseModel):
     model_config = _F
     id: Annotated[str, Vocab("ids", "short snake_case id, e.g. 'tidy_toy'")]
-    description: str = Field(description="one sentence: what the subtask achieves")
+    description: str = Field(max_length=300, description="one sentence: what the subtask achieves")
     roles: list[Annotated[str, Vocab("roles")]] = Field(
-        description="task roles this subtask manipulates or inspects")
+        max_length=12, description="task roles this subtask manipulates or inspects")
 
 
 class DecomposeWire(BaseModel):
     """Mutually independent subtasks (no execution-order dependencies)."""
 
     model_config = _F
-    subtasks: list[SubtaskWire] = Field(min_length=1)
+    subtasks: list[SubtaskWire] = Field(min_length=1, max_length=8)
 
 
 class ResponseWire(BaseModel):
@@ -218,9 +218,10 @@ class ResponseWire(BaseModel):
 class FactorWire(BaseModel):
     model_config = _F
     id: Annotated[str, Vocab("ids", "snake_case factor id, unique in the task, e.g. 'toy_on_floor'")]
-    question: str = Field(description="the query about the environment, e.g. 'Is there a toy on the floor?'")
+    question: str = Field(max_length=300,
+                          description="the query about the environment, e.g. 'Is there a toy on the floor?'")
     responses: list[ResponseWire] = Field(
-        min_length=2, description="mutually exclusive answers that cover every situation")
+        min_length=2, max_length=5, description="mutually exclusive answers that cover every situation")
 
     @model_validator(mode="after")
     def _distinct(self) -> FactorWire:
@@ -239,7 +240,7 @@ class FactorsWire(BaseModel):
     """Uncertain environment factors that change how one subtask must be executed."""
 
     model_config = _F
-    factors: list[FactorWire] = Field(default_factory=list)
+    factors: list[FactorWire] = Field(default_factory=list, max_length=6)
 
 
 class TreeStepReply(BaseModel):
@@ -251,18 +252,20 @@ class TreeStepReply(BaseModel):
 
 class LeafWire(BaseModel):
     model_config = _F
-    plan: list[str] = Field(min_length=1, max_length=8, description="the agent's steps")
+    plan: list[Annotated[str, Field(max_length=200)]] = Field(min_length=1, max_length=8,
+                                                                description="the agent's steps")
     goal: Goal = Field(description="conditions that must hold after the plan (may be empty)")
 
 
 class FactTrajectoryWire(BaseModel):
     model_config = _F
-    description: str = Field(description="the situation in words")
-    facts: Goal = Field(description="what holds initially in this situation")
+    description: str = Field(max_length=300, description="the situation in words")
+    facts: list[LiteralDraft] = Field(default_factory=list, max_length=24,
+                                      description="what holds initially in this situation")
 
 
 class TrajectoriesWire(BaseModel):
     """Logical trajectories straight from the description (the no-DBP ablation)."""
 
     model_config = _F
-    trajectories: list[FactTrajectoryWire] = Field(min_length=1)
+    trajectories: list[FactTrajectoryWire] = Field(min_length=1, max_length=16)
