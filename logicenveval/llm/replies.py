@@ -197,7 +197,7 @@ class EnvironmentsReply(BaseModel):
 class SubtaskWire(BaseModel):
     model_config = _F
     id: Annotated[str, Vocab("ids", "short snake_case id, e.g. 'tidy_toy'")]
-    description: str = Field(max_length=300, description="one sentence: what the subtask achieves")
+    description: str = Field(max_length=200, description="one short sentence: what the subtask achieves")
     roles: list[Annotated[str, Vocab("roles")]] = Field(
         max_length=12, description="task roles this subtask manipulates or inspects")
 
@@ -206,7 +206,7 @@ class DecomposeWire(BaseModel):
     """Mutually independent subtasks (no execution-order dependencies)."""
 
     model_config = _F
-    subtasks: list[SubtaskWire] = Field(min_length=1, max_length=8)
+    subtasks: list[SubtaskWire] = Field(min_length=1, max_length=6)
 
 
 class ResponseWire(BaseModel):
