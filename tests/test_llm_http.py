@@ -14,7 +14,7 @@ from typing import Any
 import pytest
 
 from logicenveval.errors import CacheMissError, ModelConnectionError, ModelReplyError
-from logicenveval.llm.ask import ask
+from logicenveval.llm.ask import ask, reply_schema
 from logicenveval.llm.registry import make_model, parse_model_args
 from logicenveval.llm.replies import DecomposeReply
 
@@ -96,7 +96,7 @@ def test_valid_reply_and_schema_sent(server: tuple[str, Script], tmp_path: Path)
     assert reply.subtasks[0].id == "tidy"
     sent = script.requests[0]
     assert sent["model"] == "test-model"
-    assert sent["response_format"]["json_schema"]["schema"] == DecomposeReply.model_json_schema()
+    assert sent["response_format"]["json_schema"]["schema"] == reply_schema(DecomposeReply)
     assert script.headers[0]["Authorization"] == f"Bearer {SECRET}"
 
 

@@ -141,7 +141,7 @@ def _real_setup() -> tuple[Path, Path]:
 @pytest.mark.slow
 def test_real_llamacpp_run_makes_a_valid_environment(tmp_path: Path) -> None:
     binary, model = _real_setup()
-    code = main(["run", "--model", f"llamacpp:{model}", "--model-args", "threads=2,ctx=8192",
+    code = main(["run", "--model", f"llamacpp:{model}", "--model-args", "threads=1,ctx=8192",
                  "--tasks", "clean_living_room", "--generators", "logicenvgen", "--output",
                  str(tmp_path / "runs"), "--run-id", "r", "--executor", "inprocess"])
     results = json.loads((tmp_path / "runs" / "r" / "results.json").read_text())

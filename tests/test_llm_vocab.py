@@ -119,7 +119,7 @@ _ATOM = st.one_of(
 )
 
 
-@given(st.lists(st.tuples(st.booleans(), _ATOM), min_size=1, max_size=4))
+@given(st.lists(st.tuples(st.booleans(), _ATOM), min_size=1, max_size=3))
 def test_structured_conditions_round_trip(parts: list[tuple[bool, str]]) -> None:
     text = " and ".join(("not " if neg else "") + atom for neg, atom in parts)
     from pydantic import TypeAdapter

@@ -39,7 +39,19 @@ def reply_schema(reply_model: type[BaseModel]) -> dict[str, Any]:
 
     The dict is shared by every request of that class: read it, never change it.
     """
-    return reply_model.model_json_schema()
+    return _without_titles(reply_model.model_json_schema())
+
+
+def _without_titles(node: Any) -> Any:
+    """The schema without pydantic's `title` keys: they repeat the field names, cost prompt
+    tokens on every request and constrain nothing (a property *named* `title` is kept)."""
+    if isinstance(node, dict):
+        return {k: (_without_titles(v) if k != "properties" else
+                    {name: _without_titles(sub) for name, sub in v.items()})
+                for k, v in node.items() if k != "title" or not isinstance(v, str)}
+    if isinstance(node, list):
+        return [_without_titles(v) for v in node]
+    return node
 
 
 def render_messages(kind: str, payload: dict[str, Any], schema: dict[str, Any]) -> list[dict[str, str]]:
@@ -50,7 +62,7 @@ def render_messages(kind: str, payload: dict[str, Any], schema: dict[str, Any]) 
         raise ConfigError(f"no prompt template for request kind {kind!r}",
                           file=f"logicenveval/llm/prompts/{kind}.j2",
                           hint="add the template or use an existing kind") from None
-    text = template.render(payload=payload, schema=json.dumps(schema, indent=1), json=json)
+    text = template.render(payload=payload, schema=json.dumps(schema, separators=(",", ":")), json=json)
     system, _, user = text.partition(_SPLIT)
     return [{"role": "system", "content": system.strip()}, {"role": "user", "content": user.strip()}]
 
@@ -69,11 +81,10 @@ def _save_raw(run_dir: Path | None, kind: str, model: str, replies: list[str]) -
 #: reply-length bound (tokens) per request kind: generous for a valid reply, short enough that a
 #: model looping inside a grammar stops in seconds, not at the end of its context
 MAX_TOKENS: dict[str, int] = {
-    "name_objects": 800, "decompose_task": 800, "identify_factors": 1500, "tree_step": 64,
-    "tree_leaves": 1500, "build_tree": 2500, "refine_tree": 2500, "trajectories_direct": 2500,
-    "floor_plan": 1500, "select_objects": 3000, "spatial_relations": 1500,
-    "refine_relations": 1500, "place_objects": 4000, "holodeck_scene": 4000,
-    "cot_environments": 6000, "ifg_intents": 2000, "ifg_environment": 4000,
+    "name_objects": 600, "decompose_task": 800, "identify_factors": 1000, "tree_step": 48,
+    "tree_leaves": 1000, "trajectories_direct": 2000, "floor_plan": 1000, "select_objects": 2000,
+    "spatial_relations": 1000, "refine_relations": 1000, "place_objects": 3000,
+    "holodeck_scene": 3000, "cot_environments": 4000, "ifg_intents": 1500, "ifg_environment": 3000,
 }
 DEFAULT_MAX_TOKENS = 2500
 #: each re-ask raises the temperature by this much (and steps the seed): a deterministic model

@@ -75,9 +75,9 @@ class ExistsLit(BaseModel):
 LiteralDraft = Annotated[Union[OnLit, InsideLit, InRoomLit, StateLit, AttrLit, ExistsLit],  # noqa: UP007
                          Field(discriminator="predicate")]
 #: a condition: all literals hold (at least one)
-Conjunction = Annotated[list[LiteralDraft], Field(min_length=1, max_length=6)]
+Conjunction = Annotated[list[LiteralDraft], Field(min_length=1, max_length=3)]
 #: a goal: all literals hold; empty = nothing to check
-Goal = Annotated[list[LiteralDraft], Field(default_factory=list, max_length=6)]
+Goal = Annotated[list[LiteralDraft], Field(default_factory=list, max_length=3)]
 
 
 def literal_text(lit: BaseModel) -> str:
