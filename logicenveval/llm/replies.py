@@ -199,7 +199,7 @@ class SubtaskWire(BaseModel):
     id: Annotated[str, Vocab("ids", "short snake_case id, e.g. 'tidy_toy'")]
     description: str = Field(max_length=200, description="one short sentence: what the subtask achieves")
     roles: list[Annotated[str, Vocab("roles")]] = Field(
-        max_length=12, description="task roles this subtask manipulates or inspects")
+        max_length=8, description="task roles this subtask manipulates or inspects")
 
 
 class DecomposeWire(BaseModel):
@@ -218,7 +218,7 @@ class ResponseWire(BaseModel):
 class FactorWire(BaseModel):
     model_config = _F
     id: Annotated[str, Vocab("ids", "snake_case factor id, unique in the task, e.g. 'toy_on_floor'")]
-    question: str = Field(max_length=300,
+    question: str = Field(max_length=150,
                           description="the query about the environment, e.g. 'Is there a toy on the floor?'")
     responses: list[ResponseWire] = Field(
         min_length=2, max_length=5, description="mutually exclusive answers that cover every situation")

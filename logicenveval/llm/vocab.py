@@ -40,7 +40,8 @@ class Pattern:
 Words = Sequence[str] | Pattern
 Vocabulary = Mapping[str, Words]
 
-SNAKE = Pattern(r"^[a-z][a-z0-9_]*$")
+#: a snake_case id of at most 40 characters (a bound the grammar enforces: small models loop in ids)
+SNAKE = Pattern(r"^[a-z][a-z0-9_]{0,39}$")
 
 
 def _check(name: str) -> Any:
@@ -105,7 +106,7 @@ def specialise(schema: dict[str, Any], vocabulary: Vocabulary | None) -> dict[st
 
 
 #: `floor`, `wall`, `ceiling`, `on:<object id>`, `inside:<object id>`
-PLACEMENT = Pattern(r"^(floor|wall|ceiling|(on|inside):[a-z0-9_]+)$")
+PLACEMENT = Pattern(r"^(floor|wall|ceiling|(on|inside):[a-z0-9_]{1,40})$")
 
 
 def scene_vocabulary(rooms: Sequence[str], roles: Sequence[str], categories: Sequence[str],
