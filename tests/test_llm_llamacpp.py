@@ -100,15 +100,18 @@ def test_one_server_per_run_stopped_when_the_run_ends(monkeypatch: pytest.Monkey
     assert (tmp_path / "llm_cache.sqlite").exists() or (tmp_path / "runs" / "llm_cache.sqlite").exists()
 
 
-@pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGKILL])
-def test_no_orphan_server_after_an_interrupted_or_killed_run(sig: int, gguf: Path, tmp_path: Path) -> None:
+@pytest.mark.parametrize("sig,executor", [(signal.SIGINT, "inprocess"), (signal.SIGKILL, "inprocess"),
+                                          (signal.SIGINT, "process")])
+def test_no_orphan_server_after_an_interrupted_or_killed_run(sig: int, executor: str, gguf: Path,
+                                                             tmp_path: Path) -> None:
+    """With worker processes, Ctrl-C stops the server first, so units waiting on it end too."""
     pidfile = tmp_path / "server.pid"
     env = {**os.environ, "FAKE_LLAMA_PIDFILE": str(pidfile), "FAKE_LLAMA_DELAY": "60",
            "PYTHONPATH": str(REPO)}
     run = subprocess.Popen(
         [sys.executable, "-m", "logicenveval", "run", "--model", f"llamacpp:{gguf}", "--model-args",
-         f"server={FAKE}", "--tasks", "clean_living_room", "--generators", "holodeck", "--output",
-         str(tmp_path / "runs"), "--executor", "inprocess"],
+         f"server={FAKE}", "--tasks", "clean_living_room", "--generators", "holodeck,cot", "--output",
+         str(tmp_path / "runs"), "--executor", executor, "--workers", "2"],
         env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     try:
         deadline = time.monotonic() + 60
@@ -118,7 +121,7 @@ def test_no_orphan_server_after_an_interrupted_or_killed_run(sig: int, gguf: Pat
         server_pid = int(pidfile.read_text())
         time.sleep(1.0)  # the run is now waiting for the (delayed) first reply
         run.send_signal(sig)
-        run.wait(timeout=30)
+        run.wait(timeout=120)
         assert _gone(server_pid), "llama-server outlived its run"
     finally:
         if run.poll() is None:

@@ -34,7 +34,7 @@ import subprocess
 import sys
 import threading
 import time
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -136,7 +136,7 @@ def _die_with_parent() -> None:
 class ServerSettings:
     model: Path
     binary: Path
-    ctx: int = 8192
+    ctx: int = 8192  # per slot: the server gets ctx * parallel (it splits its context over slots)
     threads: int = 0  # 0: half the machine's cores, at least one
     port: int = 0  # 0: a free port
     parallel: int = 1
@@ -145,7 +145,7 @@ class ServerSettings:
     def command(self, port: int) -> list[str]:
         threads = self.threads or max(1, (os.cpu_count() or 2) // 2)
         return [str(self.binary), "--model", str(self.model), "--host", "127.0.0.1",
-                "--port", str(port), "--ctx-size", str(self.ctx), "--threads", str(threads),
+                "--port", str(port), "--ctx-size", str(self.ctx * self.parallel), "--threads", str(threads),
                 "--threads-batch", str(threads), "--parallel", str(self.parallel)]
 
 
@@ -310,7 +310,32 @@ def serving(spec: str, model_args: str, *, log_path: Path | None = None) -> Iter
         log_path.parent.mkdir(parents=True, exist_ok=True)
     server = LlamaServer(settings, log_path=log_path)
     server.start()
+    restore = _stop_on_interrupt(server)
     try:
         yield ",".join(filter(None, [model_args.strip(), f"base_url={server.base_url}"]))
     finally:
+        restore()
         server.stop()
+
+
+def _stop_on_interrupt(server: LlamaServer) -> Callable[[], None]:
+    """On Ctrl-C, stop the server at once, then interrupt as usual: units running in worker
+    processes then fail within seconds (their requests are refused) instead of running to
+    completion while the pool shuts down. Returns the function restoring the old handler."""
+    if threading.current_thread() is not threading.main_thread():
+        return lambda: None
+    previous = signal.getsignal(signal.SIGINT)
+
+    def on_interrupt(signum: int, frame: Any) -> None:
+        server.stop(grace=5.0)
+        if callable(previous):
+            previous(signum, frame)
+        else:
+            raise KeyboardInterrupt
+
+    signal.signal(signal.SIGINT, on_interrupt)
+
+    def restore() -> None:
+        signal.signal(signal.SIGINT, previous)
+
+    return restore
