@@ -93,7 +93,7 @@ def test_cli_writes_a_scorable_envspec(tmp_path: Path, capsys: pytest.CaptureFix
     assert main(["import-house", str(HOUSES / "kitchen_breakfast.json"), "--task",
                  "kitchen_breakfast_prep", "--out", str(out)]) == 0
     text = capsys.readouterr().out
-    assert "unknown AI2-THOR type Dumbbell" in text and "bread=small_2_0" in text
+    assert "AI2-THOR type Dumbbell names no catalog category" in text and "bread=small_2_0" in text
     assert load_env(out).env_id == "house"
     assert main(["evaluate", str(tmp_path / "envs"), "--name", "procthor", "--executor", "inprocess",
                  "--output", str(tmp_path / "reports")]) == 0

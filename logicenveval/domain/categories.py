@@ -125,6 +125,10 @@ class Vocabulary:
                 self._add(syn, "synonym", name)
             if cat.ai2thor_type:
                 self._add(cat.ai2thor_type, "ai2thor_type", name)
+        self._by_type: dict[str, list[str]] = {}
+        for name, cat in sorted(catalog.categories.items()):
+            if cat.ai2thor_type:
+                self._by_type.setdefault(_squash(snake(cat.ai2thor_type)), []).append(name)
         self._cache: dict[tuple[str, frozenset[str]], Resolution] = {}
 
     def _add(self, text: str, how: How, category: str) -> None:
@@ -156,6 +160,25 @@ class Vocabulary:
             choice = (preferred if len(preferred) == 1 else own or sorted(names))[0]
             return Resolution(name, choice, how, tuple(sorted(names)))
         return Resolution(name, None)
+
+    def resolve_type(self, object_type: str, prefer: Iterable[str] = ()) -> Resolution:
+        """The catalog category of an AI2-THOR object type (a house's `objectType`).
+
+        The categories that carry the type come first — of several, the only one among
+        `prefer`, else the one named like the type (`GarbageCan` -> `trash_can`, "garbage can"),
+        else the first by name; a type no category carries is read as any other name
+        (`WallClock` -> `wall_clock`)."""
+        key = _squash(snake(object_type))
+        names = self._by_type.get(key, [])
+        if not names:
+            return self.resolve(object_type, prefer)
+        if len(names) == 1:
+            return Resolution(object_type, names[0], "ai2thor_type")
+        wanted = set(prefer)
+        preferred = [n for n in names if n in wanted]
+        named = [n for n in names if key in {_squash(x) for x in self.names(n)}]
+        choice = (preferred if len(preferred) == 1 else named or names)[0]
+        return Resolution(object_type, choice, "ai2thor_type", tuple(names))
 
     def canonical(self, name: str, prefer: Iterable[str] = ()) -> str | None:
         """The catalog key `name` denotes, or None."""
