@@ -153,11 +153,13 @@ def _stretches(env: EnvSpec) -> list[tuple[str, tuple[float, float], tuple[float
 def _walls(env: EnvSpec, material: str = "Drywall") -> list[dict[str, Any]]:
     """ProcTHOR walls: one per room stretch, plus the exterior side of every stretch that no
     other room shares."""
-    h = env.wall_height
+    h = round(env.wall_height, 4)
 
     def wall(rid: str, a: tuple[float, float], b: tuple[float, float]) -> dict[str, Any]:
+        # the stretch ends are rounded already (`_stretches`): no rounding per point
         return {"id": _wall_id(rid, a, b), "roomId": rid, "material": {"name": material},
-                "polygon": [_p(a[0], 0, a[1]), _p(b[0], 0, b[1]), _p(b[0], h, b[1]), _p(a[0], h, a[1])]}
+                "polygon": [{"x": a[0], "y": 0, "z": a[1]}, {"x": b[0], "y": 0, "z": b[1]},
+                            {"x": b[0], "y": h, "z": b[1]}, {"x": a[0], "y": h, "z": a[1]}]}
 
     stretches = _stretches(env)
     pieces = {(a, b) for _, a, b in stretches}

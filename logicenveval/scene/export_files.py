@@ -50,7 +50,8 @@ def export_env(env_path: Path, fmt: str, out: Path, catalog: Catalog | str | Non
         data: str | bytes = to_glb(env)
     else:
         cat = catalog if isinstance(catalog, Catalog) else load_catalog(catalog)
-        data = json.dumps(to_procthor(env, cat), indent=1, allow_nan=False) + "\n"
+        # compact: the indenting encoder is pure Python, 4x slower on a big house
+        data = json.dumps(to_procthor(env, cat), separators=(",", ":"), allow_nan=False) + "\n"
     write_output(out, data, what=f"{fmt} export")
 
 
