@@ -105,7 +105,7 @@ def _house_with(objects: list[dict[str, object]], rooms: int = 1) -> dict[str, o
     house["rooms"] = [{"id": f"room|{i}", "roomType": "Kitchen", "floorMaterial": {"name": "PureWhite"},
                        "floorPolygon": [{"x": x + 4 * i, "y": 0, "z": z} for x, z in ((0, 0), (0, 4), (4, 4), (4, 0))]}
                       for i in range(rooms)]
-    house["doors"], house["windows"], house["objects"] = [], [], objects
+    house["walls"], house["doors"], house["windows"], house["objects"] = [], [], [], objects
     return house
 
 

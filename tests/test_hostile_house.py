@@ -177,6 +177,9 @@ def test_duplicate_room_ids_are_called_duplicates(tmp_path: Path, capsys: pytest
     assert code == 2 and "room id 'room|2' is used twice (rooms[0] and rooms[1])" in err
     code, out, _ = cli(capsys, "check-house", str(house))
     assert code == 1 and "rooms[1].id: room id 'room|2' is used twice" in out
+    objects = _house(tmp_path, lambda h: h["objects"].append(copy.deepcopy(h["objects"][0])))
+    code, out, _ = cli(capsys, "check-house", str(objects))
+    assert code == 1 and "object id 'CounterTop|2|0' is used twice (objects[0] and objects[" in out
 
 
 # ----- 20. a full disk leaves the old file, never a truncated one --------------------------

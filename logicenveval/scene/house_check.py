@@ -2,7 +2,7 @@
 databases (or our recorded mapping): every object `assetId` is a real asset (of its `objectType`
 when the house names one — ProcTHOR-10K houses do not), every door/window asset has a wall hole,
 every material exists, the keys AI2-THOR reads are there (`metadata.agentPoses`, room types,
-wall/room references, unique room ids), every number is finite, and state flags use AI2-THOR's
+wall/room references, unique room and object ids), every number is finite, and state flags use AI2-THOR's
 names. Problems are data (a typed report), not exceptions; a value of the wrong JSON type is a
 problem at its path.
 
@@ -215,8 +215,14 @@ def check_house(house: Any, db: ProcthorDB, *, authoritative: bool = True) -> Ho
                     refer(f"{where}.{k}", d[k], rooms, "room")
     if not isinstance(house.get("objects"), list):
         bad("objects", "missing list 'objects'")
+    object_ids: dict[str, str] = {}
     for where, o in _objects(house.get("objects"), "objects"):
         need("object", where, o)
+        oid = _key(o.get("id"))
+        if oid is not None and oid in object_ids:
+            bad(f"{where}.id", f"object id {show(oid)} is used twice ({object_ids[oid]} and {where})")
+        elif oid is not None:
+            object_ids[oid] = where
         asset(where, o, hole=False)
         if "room" in o:
             refer(f"{where}.room", o["room"], rooms, "room")
