@@ -229,3 +229,16 @@ def test_procthor10k_house_passes_check_house_without_object_types(capsys: pytes
     assert report["problems"] == []
     fridge = next(w for w in report["warnings"] if w["where"] == "objects[1].assetId")
     assert "asset id 'Fridge_1' is not in our mapping" in fridge["message"]
+
+
+def test_export_then_import_keeps_categories_sizes_and_places() -> None:
+    from logicenveval.scene.export import to_procthor
+
+    env = load_env(Path(__file__).parent / "fixtures" / "envs" / "three_rooms.json")
+    back = import_house(to_procthor(env, CATALOG), task_id=env.task_id, env_id="back", catalog=CATALOG).env
+    before = {o.id: o for o in env.objects}
+    assert {o.id for o in back.objects} == set(before)
+    for o in back.objects:
+        src = before[o.id]
+        assert o.category == src.category and o.size is not None and src.size is not None
+        assert o.size == pytest.approx(src.size, abs=1e-3) and o.position == pytest.approx(src.position, abs=1e-3)

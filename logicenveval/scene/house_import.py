@@ -338,6 +338,12 @@ class _Importer:
         asset_id = obj.get("assetId")
         asset = self.assets.assets.get(asset_id) if isinstance(asset_id, str) else None
         cat = self.catalog.get(category)
+        ours = obj.get("logicenvevalSizeDifference")  # a house we exported: asset minus our box
+        if size is None and asset is not None and isinstance(ours, list) and len(ours) == 3:
+            diff = [_num(v, f"{where}.logicenvevalSizeDifference[{k}]") for k, v in enumerate(ours)]
+            exact = (asset.size[0] - diff[0], asset.size[1] - diff[1], asset.size[2] - diff[2])
+            if min(exact) > 0:
+                size = exact
         if size is None and asset is not None:
             source, size = "asset database", asset.size
         elif size is None and cat is not None:
