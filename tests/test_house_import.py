@@ -122,29 +122,23 @@ def test_bad_houses_exit_2_naming_the_field(tmp_path: Path, capsys: pytest.Captu
     assert not (tmp_path / "out.json").exists()
 
 
-def _paths(node: object, prefix: tuple[object, ...] = ()) -> list[tuple[object, ...]]:
+def json_paths(node: object, prefix: tuple[object, ...] = ()) -> list[tuple[object, ...]]:
+    """Every path into a JSON value (dict keys and list indices)."""
     out: list[tuple[object, ...]] = [prefix] if prefix else []
     if isinstance(node, dict):
         for k, v in node.items():
-            out += _paths(v, (*prefix, k))
+            out += json_paths(v, (*prefix, k))
     elif isinstance(node, list):
         for i, v in enumerate(node):
-            out += _paths(v, (*prefix, i))
+            out += json_paths(v, (*prefix, i))
     return out
 
 
-_HOUSE = json.loads((HOUSES / "kitchen_breakfast.json").read_text())
-_PATHS = _paths(_HOUSE)
-_JUNK = [None, "x", "", [], {}, -1, 0, 1e308, float("nan"), float("inf"), [1, 2], {"x": "a"}, True]
-
-
-@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(st.lists(st.tuples(st.sampled_from(_PATHS), st.sampled_from([*_JUNK, "DELETE"])),
-                min_size=1, max_size=4))
-def test_any_mangled_house_imports_or_names_the_problem(edits: list[tuple[tuple[object, ...], object]]) -> None:
-    house = copy.deepcopy(_HOUSE)
+def mangled(house: dict[str, Any], edits: list[tuple[tuple[object, ...], object]]) -> dict[str, Any]:
+    """A copy of `house` with each path set to junk (or removed: "DELETE")."""
+    out = copy.deepcopy(house)
     for path, value in edits:
-        parent: Any = house
+        parent: Any = out
         try:
             for key in path[:-1]:
                 parent = parent[key]
@@ -154,6 +148,19 @@ def test_any_mangled_house_imports_or_names_the_problem(edits: list[tuple[tuple[
                 parent[path[-1]] = value
         except (KeyError, IndexError, TypeError):
             continue  # an earlier edit removed or replaced this path
+    return out
+
+
+_HOUSE = json.loads((HOUSES / "kitchen_breakfast.json").read_text())
+_PATHS = json_paths(_HOUSE)
+JUNK = [None, "x", "", [], {}, -1, 0, 1e308, float("nan"), float("inf"), [1, 2], {"x": "a"}, True]
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(st.tuples(st.sampled_from(_PATHS), st.sampled_from([*JUNK, "DELETE"])),
+                min_size=1, max_size=4))
+def test_any_mangled_house_imports_or_names_the_problem(edits: list[tuple[tuple[object, ...], object]]) -> None:
+    house = mangled(_HOUSE, edits)
     try:
         import_house(house, task_id="kitchen_breakfast_prep", env_id="h", catalog=CATALOG)
     except EnvSpecError as exc:
