@@ -12,12 +12,16 @@ from __future__ import annotations
 
 import ast
 import base64
+import functools
 import hashlib
+import html
 import re
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
+
+from markupsafe import Markup
 
 from logicenveval.atomic import atomic_write_text
 from logicenveval.metrics.records import EnvDetail, UnitRecord
@@ -204,24 +208,29 @@ class TickRow:
     status: str
     path: str
 
-    @property
-    def short_path(self) -> str:
-        """The last three steps of the node's path: enough to place it in the tree."""
-        parts = self.path.split("/")
-        return ("…/" if len(parts) > 3 else "") + "/".join(parts[-3:])
+
+
+#: the form the simulator's trace entries are recorded in (`str` of a dict, keys in this order)
+_TRACE_LINE = re.compile(r"\{'tick': (\d+), 'node': '([^'\\]*)', 'path': '([^'\\]*)', "
+                         r"'status': '([A-Z_]+)'\}")
 
 
 def trace_rows(lines: Sequence[str]) -> tuple[list[TickRow], list[str]]:
     """Tick-table rows of a recorded trace, and the lines that are not tick entries (kept as text).
 
-    Traces hold one `{'tick': .., 'node': .., 'path': .., 'status': ..}` literal per line; they
-    are read with `ast.literal_eval` (literals only, never code).
+    Traces hold one `{'tick': .., 'node': .., 'path': .., 'status': ..}` literal per line: the
+    common form is matched directly, others are read with `ast.literal_eval` (literals only,
+    never code).
     """
     rows: list[TickRow] = []
     other: list[str] = []
     for line in lines:
-        entry: object = None
         text = line.strip()
+        plain = _TRACE_LINE.fullmatch(text)
+        if plain is not None:
+            rows.append(TickRow(plain[1], plain[2], plain[4], plain[3]))
+            continue
+        entry: object = None
         if text.startswith("{") and len(text) <= _MAX_TRACE_LINE:
             try:
                 entry = ast.literal_eval(text)
@@ -233,6 +242,27 @@ def trace_rows(lines: Sequence[str]) -> tuple[list[TickRow], list[str]]:
         else:
             other.append(line)
     return rows, other
+
+
+@functools.lru_cache(maxsize=4096)
+def _where(path: str) -> str:
+    """The `where` cell of a tick row: the short path, the full one on hover (paths repeat a lot)."""
+    parts = path.split("/")
+    short = ("…/" if len(parts) > 3 else "") + "/".join(parts[-3:])
+    return f'<td title="{html.escape(path)}"><code>{html.escape(short)}</code></td>'
+
+
+def tick_table(rows: Sequence[TickRow]) -> Markup:
+    """The trace as an HTML table (built here, not in the template: a report holds ~60,000 rows)."""
+    if not rows:
+        return Markup("")
+    esc = html.escape
+    out = ['<table class="ticks"><thead><tr><th>tick</th><th>node</th><th>status</th>'
+           "<th>where</th></tr></thead><tbody>"]
+    out += [f'<tr class="st-{esc(r.status.lower())}"><td class="t">{esc(r.tick)}</td><td>{esc(r.node)}'
+            f"</td><td>{esc(r.status)}</td>{_where(r.path)}</tr>" for r in rows]
+    out.append("</tbody></table>")
+    return Markup("\n".join(out))
 
 
 @dataclass(frozen=True)
@@ -247,6 +277,10 @@ class VerdictView:
     message: str
     rows: list[TickRow]
     other: list[str]
+
+    @property
+    def table(self) -> Markup:
+        return tick_table(self.rows)
 
 
 @dataclass(frozen=True)
