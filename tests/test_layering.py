@@ -56,7 +56,8 @@ def violations(known: dict[str, int], files: dict[str, str]) -> tuple[list[str],
             edges.add((here, target))
             if known[target] > known.get(here, -1):
                 upward.append(f"{module}:{line}: {here} imports {target}")
-    cycles = sorted((a, b) for a, b in edges if a < b and known[a] == known.get(b) and (b, a) in edges)
+    cycles = sorted((a, b) for a, b in edges
+                    if a < b and a in known and known[a] == known.get(b) and (b, a) in edges)
     return upward, cycles
 
 
@@ -66,6 +67,7 @@ def package_files() -> dict[str, str]:
 
 
 def test_every_module_has_a_layer() -> None:
+    assert all(name.isidentifier() for name in layers()), "two spaces between names and description"
     modules = {p.relative_to(PACKAGE).parts[0].removesuffix(".py") for p in PACKAGE.rglob("*.py")}
     assert sorted(modules - set(layers())) == [], "add these modules to docs/ARCHITECTURE.md's order"
 
