@@ -89,6 +89,16 @@ def test_unmeasured_rows_budget_marks_and_failed_attempts() -> None:
     assert "| cot | not measured | not measured |" in md and "0.00 ±" not in md
 
 
+def test_model_reply_validity_is_shown_when_recorded() -> None:
+    ref = _reference()
+    assert "Valid model replies" not in markdown(ref)  # results without an `llm` block
+    ref["llm"] = {"cot": {"all": {"questions": 40, "valid_first": 38, "valid": 40,
+                                  "valid_first_share": 0.95, "valid_share": 1.0}},
+                  "ifg": "damaged"}
+    line = next(x for x in markdown(ref).splitlines() if x.startswith("Valid model replies"))
+    assert line.endswith("questions asked): cot: 95.0 % / 100.0 % of 40")  # the damaged entry is left out
+
+
 def test_markdown_cells_cannot_break_the_table() -> None:
     ref = _reference()
     ref["results"] = {"a|b\nc": ref["results"]["cot"]}

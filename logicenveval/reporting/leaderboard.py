@@ -35,6 +35,7 @@ from logicenveval.reporting.tables import (
     Cell,
     interval_note,
     is_measured,
+    llm_validity,
     markdown,
     row_cells,
     row_label,
@@ -216,7 +217,7 @@ def render_main(results: dict[str, Any], collected: Collected, env: Environment)
     return env.get_template("leaderboard.html.j2").render(
         results=results, top=top, sub=sub, rows=table_rows(results), legend=LEGEND,
         note=interval_note(results), why=why, hrefs=collected.hrefs,
-        groups=group_rows(collected.rows), seeded=bool(results.get("runs")))
+        groups=group_rows(collected.rows), seeded=bool(results.get("runs")), llm=llm_validity(results))
 
 
 def _rebase(got: Collected, sub: str, seed: str) -> Collected:

@@ -185,6 +185,21 @@ def interval_note(results: dict[str, Any]) -> str:
             "tasks; docs/runner.md).")
 
 
+def llm_validity(results: dict[str, Any]) -> list[tuple[str, float, float, int]]:
+    """(generator, valid first-reply share, valid share after re-asks, questions) from the
+    results' `llm` block, for generators that asked a model anything (none in old results)."""
+    block = results.get("llm")
+    out = []
+    for gen in results.get("results", {}):
+        row = block.get(gen, {}).get("all") if isinstance(block, dict) and isinstance(block.get(gen), dict) else None
+        if not isinstance(row, dict):
+            continue
+        first, share, asked = metric(row, ("valid_first_share",)), metric(row, ("valid_share",)), metric(row, ("questions",))
+        if first is not None and share is not None and asked:
+            out.append((gen, first, share, int(asked)))
+    return out
+
+
 def _seed_text(results: dict[str, Any]) -> str:
     seeds = results.get("seeds")
     return f"seeds {', '.join(str(s) for s in seeds)}" if seeds else f"seed {results.get('seed')}"
@@ -207,5 +222,9 @@ def markdown(results: dict[str, Any]) -> str:
     if fails:
         lines += ["", "Recorded generation failures: "
                   + ", ".join(f"{md_escape(g)}: {n}" for g, n in sorted(fails.items()))]
+    valid = llm_validity(results)
+    if valid:
+        lines += ["", "Valid model replies (first reply / after re-asks, of questions asked): "
+                  + ", ".join(f"{md_escape(g)}: {100 * a:.1f} % / {100 * b:.1f} % of {n}" for g, a, b, n in valid)]
     lines += ["", LEGEND + " " + interval_note(results), ""]
     return "\n".join(lines)
