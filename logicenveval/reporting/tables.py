@@ -33,8 +33,8 @@ LEGEND = (
     "ST (ticks) = the same in simulator ticks (deterministic). JI = Jaccard index vs the minimum "
     "cover of the GT trajectories closest to the generator's set; Redundancy = environments / "
     "minimum cover size; Extra checks = share of environments passing our plausibility checks "
-    "beyond the paper's PhyPR (catalog sizes, door swing areas, stability, ceiling, unreachable "
-    "rooms, windows over doors; not part of PhyPR)."
+    "beyond the paper's PhyPR (catalog sizes, door swing areas, objects through the ceiling, "
+    "unreachable rooms, windows over doors; not part of PhyPR)."
 )
 
 
