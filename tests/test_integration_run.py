@@ -18,7 +18,8 @@ from logicenveval.cli import main
 TASKS = "clean_living_room,hallway_entry_tidy,kitchen_fridge_restock"
 GENERATORS = "logicenvgen,cot,ifg,holodeck"
 KEYS = {"phypr", "logcov", "ld", "scevr", "faudr", "st_ms", "st_ticks", "ji", "redundancy", "n_envs",
-        "plausibility", "faudr_mut", "faudr_mut_by_class", "ci95"}
+        "plausibility", "faudr_mut", "faudr_mut_by_class", "ci95", "n_attempted", "n_failed", "measured",
+        "not_measured_tasks", "budget_hit_tasks"}
 
 
 def _run(out: Path, *extra: str) -> int:

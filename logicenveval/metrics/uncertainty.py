@@ -75,7 +75,9 @@ def metrics_from_weights(cells: Sequence[Cell], weights: np.ndarray) -> dict[tup
 def point_metrics(cells: Sequence[Cell]) -> dict[str, Any]:
     """`results.<generator>` over all cells (every task and seed counted once)."""
     m = {p: float(v[0]) for p, v in metrics_from_weights(cells, np.ones((1, len(cells)))).items()}
-    nested: dict[str, Any] = {"n_envs": int(sum(int(c["n_envs"]) for c in cells))}
+    nested: dict[str, Any] = {"n_envs": int(sum(int(c["n_envs"]) for c in cells)),
+                              "n_failed": int(sum(int(c.get("n_failed", 0)) for c in cells))}
+    nested["n_attempted"] = nested["n_envs"] + nested["n_failed"]
     for path, value in m.items():
         _put(nested, path, None if np.isnan(value) else value)
     by_class: dict[str, list[float]] = {}

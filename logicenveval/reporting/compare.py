@@ -24,7 +24,7 @@ from logicenveval.reporting.tables import COLUMNS, metric
 #: metrics where lower is better; all others are better when higher
 LOWER_IS_BETTER = frozenset({("st_ms",), ("st_ticks",), ("redundancy",)})
 TIMING = frozenset({("st_ms",)})
-NOT_JUDGED = frozenset({("n_envs",)})
+NOT_JUDGED = frozenset({("n_envs",), ("n_failed",)})
 
 
 @dataclass(frozen=True)

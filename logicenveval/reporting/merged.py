@@ -16,7 +16,7 @@ from jinja2 import Environment, PackageLoader, select_autoescape
 
 from logicenveval.atomic import atomic_write_text
 from logicenveval.errors import ConfigError
-from logicenveval.reporting.tables import COLUMNS, cell, method_label
+from logicenveval.reporting.tables import COLUMNS, cell, row_label
 
 HEADERS = ["Model", "Method", "Seeds"] + [h + (" (%)" if pct else "") for h, _, pct in COLUMNS]
 
@@ -49,7 +49,7 @@ def merged_rows(runs: Sequence[tuple[Path, dict[str, Any]]]) -> list[list[str]]:
     out = []
     for _, r in runs:
         for gen, values in r["results"].items():
-            out.append([str(r.get("model", "?")), method_label(gen, r.get("model", "")), _seeds(r)]
+            out.append([str(r.get("model", "?")), row_label(gen, values, r), _seeds(r)]
                        + [cell(values, path, pct) for _, path, pct in COLUMNS])
     return out
 

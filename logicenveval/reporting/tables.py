@@ -23,6 +23,7 @@ COLUMNS: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     ("JI", ("ji",), False),
     ("Redundancy", ("redundancy",), False),
     ("Envs", ("n_envs",), False),
+    ("Failed", ("n_failed",), False),
     ("Extra checks", ("plausibility", "rate"), True),
 )
 
@@ -34,8 +35,12 @@ LEGEND = (
     "cover of the GT trajectories closest to the generator's set; Redundancy = environments / "
     "minimum cover size; Extra checks = share of environments passing our plausibility checks "
     "beyond the paper's PhyPR (catalog sizes, door swing areas, objects through the ceiling, "
-    "unreachable rooms, windows over doors; not part of PhyPR)."
+    "unreachable rooms, windows over doors; not part of PhyPR). Failed = attempted environments the "
+    "generator could not build / all it attempted; PhyPR and SceVR divide by all attempted. \"not "
+    "measured\": every unit failed for infrastructure reasons (endpoint, cache), so there is no result."
 )
+
+NOT_MEASURED = "not measured"
 
 
 def metric(values: dict[str, Any], path: tuple[str, ...]) -> float | None:
@@ -62,10 +67,25 @@ def method_label(generator: str, model: str) -> str:
     return f"{generator} (oracle: upper bound)" if model == "oracle" else generator
 
 
+def row_label(generator: str, values: dict[str, Any], results: dict[str, Any]) -> str:
+    """The method label, with the tasks where a search stopped at its budget (docs/logic.md)."""
+    label = method_label(generator, results.get("model", ""))
+    hit = values.get("budget_hit_tasks") or []
+    if hit:
+        measured = len(results.get("tasks", [])) - len(values.get("not_measured_tasks") or [])
+        label += f" (budget hit {len(hit)}/{measured})"
+    return label
+
+
 def cell(values: dict[str, Any], path: tuple[str, ...], pct: bool) -> str:
     """One leaderboard cell: `value ± half-width` of the 95 % interval when results carry one."""
+    if values.get("measured") is False:
+        return NOT_MEASURED
     if path == ("n_envs",):
         return str(int(values["n_envs"]))
+    if path == ("n_failed",):
+        failed, attempted = values.get("n_failed"), values.get("n_attempted")
+        return "–" if failed is None or attempted is None else f"{int(failed)}/{int(attempted)}"
     text = fmt(metric(values, path), pct)
     lo, hi = metric(values.get("ci95", {}), path + ("0",)), metric(values.get("ci95", {}), path + ("1",))
     if lo is None or hi is None:
@@ -77,7 +97,7 @@ def cell(values: dict[str, Any], path: tuple[str, ...], pct: bool) -> str:
 def rows(results: dict[str, Any]) -> list[list[str]]:
     out = []
     for gen, values in results["results"].items():
-        out.append([method_label(gen, results.get("model", ""))]
+        out.append([row_label(gen, values, results)]
                    + [cell(values, path, pct) for _, path, pct in COLUMNS])
     return out
 
@@ -110,5 +130,10 @@ def markdown(results: dict[str, Any]) -> str:
     if fails:
         lines += ["", "Recorded generation failures: "
                   + ", ".join(f"{g}: {n}" for g, n in sorted(fails.items()))]
+    for key, what in (("not_measured_tasks", "Not measured (infrastructure failures; left out of "
+                       "the row)"), ("budget_hit_tasks", "Search budget hit (MTSA's cover used)")):
+        listed = {g: v[key] for g, v in results["results"].items() if v.get(key)}
+        if listed:
+            lines += ["", f"{what}: " + "; ".join(f"{g}: {', '.join(t)}" for g, t in listed.items())]
     lines += ["", LEGEND + " " + interval_note(results), ""]
     return "\n".join(lines)

@@ -19,7 +19,7 @@ from typing import Any, Protocol
 import numpy as np
 
 from logicenveval.atomic import atomic_write_text
-from logicenveval.metrics.compute import aggregate, task_metrics
+from logicenveval.metrics.compute import aggregate, null_metrics, task_metrics
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.metrics.uncertainty import ci95
 from logicenveval.model.task import Task
@@ -92,15 +92,20 @@ def build_results(
     llm: dict[str, dict[str, float]] = {}
     for gen in (config.generators if generators is None else generators):
         units = [r for r in records if r.generator == gen]
-        metrics = [
-            task_metrics(by_task[u.task_id], u.samples, n_failed=1 if u.error and not u.samples else 0,
-                         mutants=u.mutants or None)
-            for u in units
-        ]
-        results[gen] = aggregate(metrics).model_dump(mode="json")
-        per_task[gen] = {u.task_id: m.model_dump(mode="json") for u, m in zip(units, metrics, strict=True)}
-        results[gen]["ci95"] = ci95({(t, config.seed): m for t, m in per_task[gen].items()},
-                                    bootstrap_rng(config.seed, gen))
+        measured = [u for u in units if u.measured]
+        metrics = [task_metrics(by_task[u.task_id], u.samples, n_failed=u.n_failed,
+                                mutants=u.mutants or None) for u in measured]
+        per_task[gen] = {u.task_id: {**m.model_dump(mode="json"), "budget_hit": u.budget_hit is not None}
+                         for u, m in zip(measured, metrics, strict=True)}
+        if metrics:
+            results[gen] = aggregate(metrics).model_dump(mode="json")
+            results[gen]["ci95"] = ci95({(t, config.seed): m for t, m in per_task[gen].items()},
+                                        bootstrap_rng(config.seed, gen))
+        else:  # not measured: null figures, never zeros
+            results[gen] = {**null_metrics(), "ci95": {}}
+        results[gen].update(row_status(
+            measured=bool(metrics), not_measured=[u.task_id for u in units if not u.measured],
+            budget_hit=[u.task_id for u in measured if u.budget_hit is not None]))
         failures[gen] = [
             {"task": u.task_id, "stage": "unit", "message": u.error, "kind": u.error_kind}
             for u in units if u.error
@@ -130,6 +135,18 @@ def build_results(
             "llm": llm,
         },
     }
+
+
+#: keys of `results.<generator>` that are not figures (checked apart from the numeric leaves)
+STATUS_KEYS = ("measured", "not_measured_tasks", "budget_hit_tasks")
+
+
+def row_status(*, measured: bool, not_measured: Sequence[str], budget_hit: Sequence[str]) -> dict[str, Any]:
+    """What a row is besides its figures: measured at all (False: every unit failed for
+    infrastructure reasons, so every figure is null), the tasks left out as not measured, and
+    the tasks where a search stopped at its budget (the leaderboard labels such rows)."""
+    return {"measured": measured, "not_measured_tasks": sorted(not_measured),
+            "budget_hit_tasks": sorted(budget_hit)}
 
 
 def write_outputs(run_dir: Path, results: dict[str, Any], records: Sequence[UnitRecord]) -> None:
@@ -169,7 +186,14 @@ def _check_results(data: dict[str, Any], file: str) -> None:
     for gen, values in data["results"].items():
         if not isinstance(values, dict):
             raise bad(f"results.{gen}", "must be an object of metrics")
-        stack: list[tuple[str, Any]] = [(f"results.{gen}", values)]
+        if not isinstance(values.get("measured", True), bool):
+            raise bad(f"results.{gen}.measured", "must be true or false")
+        for key in STATUS_KEYS[1:]:
+            tasks_of = values.get(key, [])
+            if not isinstance(tasks_of, list) or not all(isinstance(t, str) for t in tasks_of):
+                raise bad(f"results.{gen}.{key}", "must be a list of task ids")
+        figures = {k: v for k, v in values.items() if k not in STATUS_KEYS}
+        stack: list[tuple[str, Any]] = [(f"results.{gen}", figures)]
         while stack:  # every leaf of the (nested) metrics is a number or null
             where, v = stack.pop()
             if isinstance(v, dict):

@@ -23,7 +23,12 @@ from logicenveval.benchmark import load_task, policy_path
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.envfiles import env_to_json
 from logicenveval.errors import CacheMissError, LogicEnvEvalError, ModelConnectionError
-from logicenveval.generators.base import GenerationContext, make_generator
+from logicenveval.generators.base import (
+    Attempt,
+    GenerationContext,
+    counted_attempts,
+    make_generator,
+)
 from logicenveval.generators.brief import BriefMode, generator_brief
 from logicenveval.generators.plugins import ensure_importable
 from logicenveval.llm.base import ChatModel, ChatRequest
@@ -91,6 +96,7 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     run_dir = Path(spec.run_dir)
     start = time.perf_counter()
     model: ChatModel | None = None
+    ctx: GenerationContext | None = None
     try:
         watched = _Watched(make_model(spec.model, spec.model_args, cache_path=spec.cache,
                                       no_cache=spec.no_cache, run_dir=run_dir))
@@ -111,9 +117,12 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
         brief = generator_brief(task, spec.brief, model, seed=spec.seed)
         result = generator.generate(brief, ctx)
     except Exception as exc:  # a failing unit must not kill the run; it is recorded
+        kind = failure_kind(exc)
+        planned = ctx.planned_attempts if ctx is not None else 0
         return UnitRecord(generator=spec.generator, task_id=spec.task_id, error=_reason(exc),
-                          error_kind=failure_kind(exc), gen_seconds=time.perf_counter() - start,
-                          llm=_stats(model))
+                          error_kind=kind, gen_seconds=time.perf_counter() - start,
+                          llm=_stats(model), attempts=[] if kind == "infrastructure"
+                          else planned_failures(spec.generator, planned))
     gen_seconds = time.perf_counter() - start
     if watched.infra_error is not None:  # the generator absorbed it, but its output is incomplete
         return UnitRecord(generator=spec.generator, task_id=spec.task_id,
@@ -139,7 +148,15 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
                json.dumps(result.artifacts, indent=2, sort_keys=True, default=str) + "\n", files)
     return UnitRecord(generator=spec.generator, task_id=spec.task_id, samples=samples,
                       failures=list(result.failures), gen_seconds=gen_seconds, llm=_stats(model),
-                      mutants=scorer.classes, details=details, files=files)
+                      mutants=scorer.classes, details=details, files=files,
+                      attempts=counted_attempts(result), budget_hit=result.budget_hit)
+
+
+def planned_failures(generator: str, planned: int) -> list[Attempt]:
+    """A unit that failed as a whole for generation reasons: every environment it planned
+    (`GenerationContext.plan_attempts`, at least one) is a failed attempt."""
+    return [Attempt(id=f"{generator}-{i:02d}", stage="unit", reason="the unit failed as a whole (see its error)")
+            for i in range(max(1, planned))]
 
 
 def run_units(specs: tuple[UnitSpec, ...]) -> list[UnitRecord]:
