@@ -22,6 +22,7 @@ from logicenveval.generators.base import (
 from logicenveval.generators.logicenvgen import LogicEnvGen
 from logicenveval.metrics.records import EnvSample, PhysicsSummary, UnitRecord
 from logicenveval.model.task import TaskBrief
+from logicenveval.reporting.publish import publish
 from logicenveval.reporting.tables import markdown
 from logicenveval.runner.config import RunConfig
 from logicenveval.runner.results import build_results, load_results, write_outputs
@@ -168,6 +169,7 @@ class Unreachable:
 def _run(tmp_path: Path, generators: tuple[str, ...], tasks: tuple[str, ...] = (TASK,)) -> dict[str, Any]:
     outcome = run(RunConfig(generators=generators, tasks=tasks, executor="inprocess",
                             output=str(tmp_path), max_infra_failures=0), show_progress=False)
+    publish(outcome.run_dir, outcome.results, outcome.records)
     return outcome.results
 
 

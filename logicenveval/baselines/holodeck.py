@@ -13,7 +13,7 @@ from typing import Any
 import numpy as np
 
 from logicenveval.baselines.drafts import floor_plan
-from logicenveval.baselines.geometry import RoomRect, typical_size
+from logicenveval.baselines.geometry import RoomRect
 from logicenveval.baselines.holodeck_solver import (
     DOOR_CLEARANCE,
     NEAR_GAP,
@@ -39,6 +39,7 @@ from logicenveval.llm.ask import ask
 from logicenveval.llm.replies import ObjectDraft
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import TaskBrief
+from logicenveval.scene.guessed_layout import typical_size
 
 WALL_OBJECT_Y = 1.6  # centre height of wall-mounted objects
 WALL_HEIGHT = 2.7

@@ -5,11 +5,11 @@ handlers use:
 - `cot_environments`: a flat reading of the description — a baseline situation (every factor at
   its first value, the case the text describes first) plus, for each factor, each other value
   one at a time, with no decision-tree nesting; the floor plan from `written_floor_plan` (the
-  writer's own coarse geometry), object coordinates from `heuristics`.
+  writer's own coarse geometry), object coordinates from `scene.guessed_layout`.
 - `ifg_intents`: k intents sampled with `default_rng(request.seed)`, each factor's value drawn
   from a softmax over a prior that prefers the first-described value, sharpened by 1/temperature.
 - `ifg_environment`: one environment realising the intent, the same floor plan rule, coordinates
-  from `heuristics` with a temperature-scaled, seeded wall gap.
+  from `scene.guessed_layout` with a temperature-scaled, seeded wall gap.
 - `holodeck_scene`: the default room of the description — every role object in its typical
   place, plus furniture typical of each room type (catalog `rooms`), and spatial relations.
 """
@@ -22,13 +22,13 @@ from typing import Any
 import numpy as np
 
 from logicenveval.baselines.geometry import room_dims
-from logicenveval.baselines.heuristics import guess_coordinates
 from logicenveval.domain.catalog import Catalog, load_catalog
 from logicenveval.generators.realise import task_objects
 from logicenveval.llm.analysis import Factor, analyse
 from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.offline import handler
 from logicenveval.model.rooms import room_type_of
+from logicenveval.scene.guessed_layout import guess_coordinates
 
 #: typical floor area (m²) per room type
 AREA = {"LivingRoom": 22.0, "Kitchen": 13.0, "Bedroom": 15.0, "Bathroom": 7.0, "Study": 11.0,

@@ -7,6 +7,7 @@ it did and where it failed, so that a missed decision path can be traced to its 
 
 from __future__ import annotations
 
+import hashlib
 import importlib
 import warnings
 from collections.abc import Callable
@@ -22,6 +23,13 @@ from logicenveval.errors import ConfigError
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import TaskBrief
 from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
+
+
+def unit_seed(seed: int, generator: str, task_id: str) -> list[int]:
+    """The seed sequence of a unit's `GenerationContext.rng`, independent of scheduling: the run
+    seed and stable hashes of the unit's names (`run`, `generate` and tests use the same)."""
+    digest = hashlib.sha256(f"{generator}\0{task_id}".encode()).digest()
+    return [seed, int.from_bytes(digest[:8], "little")]
 
 
 class GenerationFailure(BaseModel):

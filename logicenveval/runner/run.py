@@ -1,4 +1,4 @@
-"""`python -m logicenveval run`: generators × tasks → committed units → results and leaderboard."""
+"""`python -m logicenveval run`: generators × tasks → committed units → results (no leaderboard)."""
 
 from __future__ import annotations
 
@@ -157,11 +157,6 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
     ordered = [records[(s.generator, s.task_id)] for s in specs]
     results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start,
                             generators=[r.name for r in refs])
-    from logicenveval.reporting.leaderboard import write_leaderboards
-
-    report_start = time.perf_counter()
-    write_leaderboards(run_dir, results, ordered)
-    results["timing"]["report_seconds"] = round(time.perf_counter() - report_start, 3)
     write_outputs(run_dir, results, ordered)
     return RunOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused,
                       records=tuple(ordered))

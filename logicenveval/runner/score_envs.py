@@ -3,7 +3,7 @@
 `ENVS_DIR/<task_id>/*.json` are EnvSpecs (DESIGN.md §6). Each task folder is one unit, judged
 exactly as a `run` judges a generator's environments (`runner.evaluation.evaluate_env`: physics,
 role binding, GT coverage, the four policies), committed to the same resumable store and
-summarised into the same results.json, samples.jsonl and leaderboards. So scoring the
+summarised into the same results.json and samples.jsonl (leaderboards: `reporting`). So scoring the
 `envs/<generator>` folder of a run reproduces that run's metrics for the generator.
 
 Every candidate file is one attempted environment (docs/logic.md). A file that is not a valid
@@ -241,9 +241,6 @@ def evaluate_envs(config: EvaluateConfig) -> EvaluateOutcome:
     results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start,
                             generators=[name])
     write_outputs(run_dir, results, ordered)
-    from logicenveval.reporting.leaderboard import write_leaderboards
-
-    write_leaderboards(run_dir, results, ordered)
     return EvaluateOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused,
                            skipped_folders=skipped, records=tuple(ordered))
 

@@ -25,7 +25,7 @@ from logicenveval.metrics.compute import null_metrics
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.metrics.uncertainty import ci95, point_metrics
 from logicenveval.runner.config import RunConfig
-from logicenveval.runner.results import RESULTS_SCHEMA, bootstrap_rng, row_status
+from logicenveval.runner.results import RESULTS_SCHEMA, row_status
 from logicenveval.runner.run import run
 from logicenveval.runner.store import RunStore
 
@@ -73,9 +73,6 @@ def run_seeds(config: RunConfig, seeds: Sequence[int], *, console: Console | Non
         reused += outcome.reused
     results = combine_seeds(parent.name, seeds_identity(config, seeds), per_seed)
     atomic_write_text(parent / "results.json", json.dumps(results, indent=2, sort_keys=True) + "\n")
-    from logicenveval.reporting.leaderboard import write_leaderboards
-
-    write_leaderboards(parent, results)
     return SeedsOutcome(run_dir=parent, results=results,
                         seed_dirs=[parent / f"seed{s}" for s in seeds], computed=computed,
                         reused=reused, records=tuple(records))
@@ -102,7 +99,7 @@ def combine_seeds(run_id: str, identity: dict[str, object],
         cells = {(t, int(s)): m for t, by in per_task_seed[gen].items() for s, m in by.items()}
         if cells:
             results[gen] = point_metrics(list(cells.values()))
-            results[gen]["ci95"] = ci95(cells, bootstrap_rng(seeds[0], gen))
+            results[gen]["ci95"] = ci95(cells)
         else:
             results[gen] = {**null_metrics(), "ci95": {}}
         results[gen].update(row_status(

@@ -6,7 +6,6 @@ seed and the unit's names, so results do not depend on scheduling or on the numb
 
 from __future__ import annotations
 
-import hashlib
 import json
 import sqlite3
 import time
@@ -28,6 +27,7 @@ from logicenveval.generators.base import (
     GenerationContext,
     counted_attempts,
     make_generator,
+    unit_seed,
 )
 from logicenveval.generators.brief import BriefMode, generator_brief
 from logicenveval.generators.plugins import ensure_importable
@@ -60,12 +60,6 @@ class UnitSpec(BaseModel):
     generator_target: str | None = None
     #: where the target's module was found in the parent (generators.plugins.GeneratorRef)
     generator_path: str | None = None
-
-
-def unit_seed(seed: int, generator: str, task_id: str) -> list[int]:
-    """A seed sequence independent of scheduling: run seed + stable hashes of the unit's names."""
-    digest = hashlib.sha256(f"{generator}\0{task_id}".encode()).digest()
-    return [seed, int.from_bytes(digest[:8], "little")]
 
 
 def _unique_ids(envs: list[EnvSpec]) -> list[EnvSpec]:
