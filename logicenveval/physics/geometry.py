@@ -197,15 +197,22 @@ def separated(bodies: list[Body], pairs: np.ndarray, eps: float = 1e-6) -> np.nd
     top = np.array([b.top for b in bodies])
     box = np.array([b.is_box for b in bodies])
     for s in range(0, len(pairs), 65536):  # bounded memory on huge candidate sets
-        i, j = pairs[s:s + 65536, 0], pairs[s:s + 65536, 1]
-        gap = np.maximum(bot[i], bot[j]) - np.minimum(top[i], top[j])  # > 0: apart vertically
-        d = cen[j] - cen[i]
-        for normals in (ax[i, 0], ax[i, 1], ax[j, 0], ax[j, 1]):
-            reach = sum(half[k, a] * np.abs(np.einsum("pb,pb->p", ax[k, a], normals))
-                        for k in (i, j) for a in (0, 1))
-            gap = np.maximum(gap, np.abs(np.einsum("pb,pb->p", d, normals)) - reach)
-        out[s:s + 65536] = (gap > eps) & box[i] & box[j]
+        with np.errstate(all="ignore"):  # absurd coordinates give inf/NaN: not called separated
+            out[s:s + 65536] = _apart(pairs[s:s + 65536], cen, ax, half, bot, top, box, eps)
     return out
+
+
+def _apart(pairs: np.ndarray, cen: np.ndarray, ax: np.ndarray, half: np.ndarray, bot: np.ndarray,
+           top: np.ndarray, box: np.ndarray, eps: float) -> np.ndarray:
+    """`separated` on one chunk of pairs: the largest gap over the five axes, > eps."""
+    i, j = pairs[:, 0], pairs[:, 1]
+    gap = np.maximum(bot[i], bot[j]) - np.minimum(top[i], top[j])  # > 0: apart vertically
+    d = cen[j] - cen[i]
+    for normals in (ax[i, 0], ax[i, 1], ax[j, 0], ax[j, 1]):
+        reach = sum(half[k, a] * np.abs(np.einsum("pb,pb->p", ax[k, a], normals)) for k in (i, j) for a in (0, 1))
+        gap = np.maximum(gap, np.abs(np.einsum("pb,pb->p", d, normals)) - reach)
+    apart: np.ndarray = (gap > eps) & box[i] & box[j]
+    return apart
 
 
 def rect_pairs(a: list[tuple[float, float, float, float]],
