@@ -11,6 +11,11 @@ TidyToy/TidyBook trees inlined again and again (`big_correct_bt`; 48 copies = 53
 reported case) or its TidyToy Fallback given ever more alternatives (`wide_correct_bt`) — in a
 fresh process each, with wall time and peak RSS, against the shipped 4 KB BT in the same run.
 Line: `mutants_53KB_s=<float> mutants_53KB_MB=<float> shipped_s=<float>`.
+
+Before both, houses and exports (issue 27, items 6, 14, 15; `house_cases`): GLB and ProcTHOR
+export of 10k-50k-vertex rooms, import-house/check-house of houses with repeated ids, over the
+object limit, or with 1,500 rooms, each a fresh process.
+Line: `worst_house_s=<float> worst_house_rss_mb=<float>`.
 """
 
 from __future__ import annotations
@@ -64,16 +69,22 @@ def wide_correct_bt(alternatives: int) -> str:
                                                                            fb.name)}))
 
 
-def _mutants_run(tasks: Path) -> tuple[float, float]:
-    """Seconds and peak MB of `tasks mutants --json` on a tasks folder, in a fresh process."""
+def _measure(argv: list[str]) -> tuple[float, float, int]:
+    """(seconds, peak RSS in MB, exit code) of one CLI call in a fresh process."""
     t0 = time.perf_counter()
-    proc = subprocess.Popen([sys.executable, "-m", "logicenveval", "tasks", "mutants", "--json",
-                             "--tasks-dir", str(tasks)], stdout=subprocess.DEVNULL)
+    proc = subprocess.Popen([sys.executable, "-m", "logicenveval", *argv], stdout=subprocess.DEVNULL,
+                            stderr=subprocess.DEVNULL)
     _, status, usage = os.wait4(proc.pid, 0)
     proc.returncode = os.waitstatus_to_exitcode(status)
-    if proc.returncode != 0:
-        raise SystemExit(f"tasks mutants failed on {tasks} (exit {proc.returncode})")
-    return time.perf_counter() - t0, usage.ru_maxrss / 1024
+    return time.perf_counter() - t0, usage.ru_maxrss / 1024, proc.returncode
+
+
+def _mutants_run(tasks: Path) -> tuple[float, float]:
+    """Seconds and peak MB of `tasks mutants --json` on a tasks folder, in a fresh process."""
+    seconds, mb, code = _measure(["tasks", "mutants", "--json", "--tasks-dir", str(tasks)])
+    if code != 0:
+        raise SystemExit(f"tasks mutants failed on {tasks} (exit {code})")
+    return seconds, mb
 
 
 def large_correct_bts() -> None:
@@ -106,6 +117,7 @@ def _ms(fn: Callable[[], object], repeat: int = 5) -> float:
 
 
 def main() -> None:
+    house_cases()  # first: each case's peak RSS includes this process's pages at the fork
     large_correct_bts()
     folder = DEFAULT_TASKS_DIR / TASK
     task = json.loads((folder / "task.json").read_text())
@@ -148,6 +160,62 @@ def main() -> None:
             print(f"{name:<24} {path.stat().st_size:>12} {ms:>14.1f}")
     print(f"baseline (load one real task + policy): {baseline:.1f} ms")
     print(f"worst_refusal_ms={worst:.1f} baseline_ms={baseline:.1f} ratio={worst / baseline:.2f}")
+
+
+def _comb(n: int) -> list[tuple[float, float]]:
+    """A simple room polygon with `n` vertices: teeth of alternating height (tests/test_hostile_house)."""
+    k = n // 4
+    low = [p for i in range(k) for p in ((round(i * 0.1, 2), 0.0), (round(i * 0.1 + 0.05, 2), 0.0))]
+    high = [p for i in reversed(range(k)) for p in ((round(i * 0.1 + 0.05, 2), 5.0 + (i % 2) * 0.3),
+                                                   (round(i * 0.1, 2), 5.0 + (i % 2) * 0.3))]
+    return low + high
+
+
+def _house_with(objects: list[dict[str, object]], rooms: int = 1) -> dict[str, object]:
+    """A ProcTHOR-layout house (tests/fixtures/houses/procthor10k_kitchen.json) with other rooms
+    and objects."""
+    house: dict[str, object] = json.loads((Path(__file__).resolve().parents[1] / "tests" / "fixtures"
+                                           / "houses" / "procthor10k_kitchen.json").read_text())
+    house["rooms"] = [{"id": f"room|{i}", "roomType": "Kitchen", "floorMaterial": {"name": "PureWhite"},
+                       "floorPolygon": [{"x": x + 4 * i, "y": 0, "z": z} for x, z in ((0, 0), (0, 4), (4, 4), (4, 0))]}
+                      for i in range(rooms)]
+    house["walls"], house["doors"], house["windows"], house["objects"] = [], [], [], objects
+    return house
+
+
+def house_cases() -> None:
+    """Issue 27 items 6, 14, 15: export, import-house and check-house of big inputs under 1 MB,
+    each in a fresh process (its Python start-up included; its peak RSS includes the pages of the
+    parent at the fork, so this runs before anything big is loaded). Prints one row per case and
+    `worst_house_s=<float> worst_house_rss_mb=<float>` (targets: < 10 s, < 1024 MB)."""
+    with tempfile.TemporaryDirectory() as tmp:
+        d = Path(tmp)
+        cases: dict[str, tuple[Path, list[str]]] = {}
+        for n in (10_000, 20_000, 50_000):
+            env = {"task_id": "t", "env_id": "e", "rooms": [{"id": "living_room", "polygon": _comb(n)}]}
+            path = d / f"room_{n}.json"
+            path.write_text(json.dumps(env))
+            cases[f"glb_room_{n // 1000}k_vertices"] = (path, ["export", str(path), "--format", "glb",
+                                                               "--out", str(d / "o.glb")])
+            cases[f"procthor_room_{n // 1000}k_vertices"] = (path, ["export", str(path), "--format",
+                                                                    "procthor", "--out", str(d / "o.json")])
+        obj = {"assetId": "Bread_1", "id": "Bread|2|0", "kinematic": False, "position": {"x": 1, "y": 1, "z": 1},
+               "rotation": {"x": 0, "y": 0, "z": 0}, "layer": "Procedural1", "material": None}
+        for name, objects, rooms in (("house_1990_same_ids", [obj] * 1990, 1),
+                                     ("house_5000_objects_over_limit", [obj] * 5000, 1),
+                                     ("house_1500_rooms", [obj] * 1500, 1500)):
+            path = d / f"{name}.json"
+            path.write_text(json.dumps(_house_with(objects, rooms)))
+            cases[f"import_{name}"] = (path, ["import-house", str(path), "--task", "kitchen_breakfast_prep",
+                                             "--out", str(d / "imported.json")])
+            cases[f"check_{name}"] = (path, ["check-house", str(path)])
+        worst_s = worst_mb = 0.0
+        print(f"{'house/export case':<34} {'bytes':>9} {'s':>7} {'RSS MB':>8} {'exit':>5}")
+        for name, (path, argv) in cases.items():
+            seconds, mb, code = _measure(argv)
+            worst_s, worst_mb = max(worst_s, seconds), max(worst_mb, mb)
+            print(f"{name:<34} {path.stat().st_size:>9} {seconds:>7.2f} {mb:>8.0f} {code:>5}")
+        print(f"worst_house_s={worst_s:.2f} worst_house_rss_mb={worst_mb:.0f}")
 
 
 if __name__ == "__main__":

@@ -14,11 +14,16 @@ def atomic_write_text(path: Path, text: str, *, durable: bool = True) -> None:
     `durable` also fsyncs the file and its folder, so the write survives a power loss; files a
     unit commit vouches for by digest (or that are rebuilt from units) skip that cost.
     """
+    atomic_write_bytes(path, text.encode("utf-8"), durable=durable)
+
+
+def atomic_write_bytes(path: Path, data: bytes, *, durable: bool = True) -> None:
+    """`atomic_write_text` for binary files (GLB scenes, PNG renders)."""
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     try:
-        with os.fdopen(fd, "w", encoding="utf-8") as fh:
-            fh.write(text)
+        with os.fdopen(fd, "wb") as fh:
+            fh.write(data)
             if durable:
                 fh.flush()
                 os.fsync(fh.fileno())

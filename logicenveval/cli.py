@@ -27,6 +27,9 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "export": ("logicenveval.commands.export", "write an environment as ProcTHOR house JSON or GLB"),
     "check-house": ("logicenveval.commands.check_house",
                     "check a ProcTHOR house JSON against ProcTHOR's databases"),
+    "lint": ("logicenveval.commands.lint",
+             "list the binding, category and affordance problems of a folder of EnvSpecs"),
+    "schema": ("logicenveval.commands.schema", "print the JSON Schema of EnvSpecs, tasks or results"),
     "report": ("logicenveval.commands.report", "rebuild leaderboard.md/.html of a run folder"),
     "compare": ("logicenveval.commands.compare", "compare two runs; exit 1 on a regression"),
 }

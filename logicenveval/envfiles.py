@@ -25,7 +25,7 @@ def env_from_dict(data: Any, *, source: str | None = None) -> EnvSpec:
     except ValidationError as exc:
         loc, msg = first_error(exc)
         raise EnvSpecError(msg, file=source, field=loc,
-                           hint="see DESIGN.md §6 for the EnvSpec format") from None
+                           hint="see docs/envspec.md for the EnvSpec format") from None
 
 
 def load_env(path: str | Path) -> EnvSpec:

@@ -28,16 +28,19 @@ def run(args: argparse.Namespace) -> int:
     from rich.console import Console
     from rich.table import Table
 
+    from logicenveval.domain.catalog import load_catalog
+    from logicenveval.domain.categories import normalise_env
     from logicenveval.envfiles import load_env
     from logicenveval.errors import ConfigError
     from logicenveval.physics import DIMENSIONS, check_env
     from logicenveval.physics.render import render_png, render_svg
 
+    catalog = load_catalog()
     if args.render and Path(args.render).suffix.lower() not in (".svg", ".png"):
         raise ConfigError(f"unsupported render format {Path(args.render).suffix!r}", field="--render",
                           hint="name the output file OUT.svg or OUT.png")
-    env = load_env(args.env)
-    report = check_env(env, mesh_dir=Path(args.env).parent)
+    env, categories = normalise_env(load_env(args.env), catalog)
+    report = check_env(env, catalog, mesh_dir=Path(args.env).parent)
     if args.render:
         out = Path(args.render)
         try:
@@ -53,6 +56,8 @@ def run(args: argparse.Namespace) -> int:
         print(json.dumps(report.model_dump(mode="json"), indent=2))
     else:
         console = Console()
+        for note in categories.notes():
+            console.print(f"note: {note}", markup=False)
         table = Table(title=f"PhyPR check of {env.env_id}")
         for col in ("dimension", "result", "code", "objects"):
             table.add_column(col, no_wrap=True)

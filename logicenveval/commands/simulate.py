@@ -1,4 +1,8 @@
-"""`simulate`: run one policy (BT) of a task in an EnvSpec or in a GT situation."""
+"""`simulate`: run one policy (BT) of a task in an EnvSpec or in a GT situation.
+
+An EnvSpec is taken in as `evaluate` takes it (`domain.roles.prepare_env`): categories mapped to
+catalog keys, the task's roles it does not map bound by category and attributes.
+"""
 
 from __future__ import annotations
 
@@ -41,6 +45,7 @@ def run(args: argparse.Namespace) -> int:
 
     from logicenveval.benchmark import load_task, policy_path
     from logicenveval.domain.catalog import load_catalog
+    from logicenveval.domain.roles import prepare_env
     from logicenveval.envfiles import load_env
     from logicenveval.model.task import POLICY_KINDS
     from logicenveval.model.tree import trajectory_from_assignment
@@ -62,8 +67,12 @@ def run(args: argparse.Namespace) -> int:
     # a policy the loader refuses (unknown node, bad port, unknown role, ...) is bad input:
     # exit 2 with file:line and a fix, like every other input (docs/security.md)
     policy = load_policy(path, roles=task.roles, rooms=task.rooms)
-    if args.env:
-        env = load_env(args.env)
+    if args.env:  # categories mapped and roles bound exactly as `evaluate` judges the file
+        prepared = prepare_env(load_env(args.env), task.roles, catalog)
+        env = prepared.env
+        if not args.json:
+            for note in [*prepared.categories.notes(), *prepared.binding.problems]:
+                print(f"note: {note}")
     else:
         try:
             trajectory = trajectory_from_assignment(task, _situation(args.situation))

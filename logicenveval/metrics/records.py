@@ -50,6 +50,10 @@ class EnvSample(BaseModel):
     killed_mutants: list[str] = Field(default_factory=list)
     #: policy kind -> simulator ticks of the run (deterministic companion of `sim_ms`)
     sim_ticks: dict[str, int] = Field(default_factory=dict)
+    #: written category -> the catalog key it was judged as, where it was not a key already
+    categories: dict[str, str] = Field(default_factory=dict)
+    #: written categories that name no catalog category -> object ids (judged as obstacles)
+    unknown_categories: dict[str, list[str]] = Field(default_factory=dict)
 
 
 class VerdictTrace(BaseModel):
