@@ -48,8 +48,10 @@ def seeds_run_dir(config: RunConfig, seeds: Sequence[int]) -> Path:
     if config.run_id:
         return Path(config.output) / config.run_id
     blob = json.dumps(seeds_identity(config, seeds), sort_keys=True).encode()
-    slug = re.sub(r"[^A-Za-z0-9]+", "-", config.model).strip("-").lower() or "model"
+    slug = re.sub(r"[^A-Za-z0-9]+", "-", config.model).strip("-").lower()[:40] or "model"
     tag = "-".join(str(s) for s in seeds)
+    if len(tag) > 40:  # a long list would make the folder name too long: the hash tells it apart
+        tag = f"{seeds[0]}-to-{seeds[-1]}-n{len(seeds)}"
     return Path(config.output) / f"{slug}-seeds{tag}-{hashlib.sha256(blob).hexdigest()[:8]}"
 
 
