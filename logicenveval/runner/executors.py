@@ -215,6 +215,9 @@ class ProcessExecutor:
                     continue
                 lost += [(fut, item) for fut, (item, _) in running.items()]  # gone with the pool
                 running.clear()
+                if len(lost) == 1 and not overdue:  # it ran alone: it is the one that died
+                    yield lost[0][1], _crashed(on_crash, lost[0][1], _death(pool.exit_codes()))
+                    return
                 for fut, item in lost:
                     if fut in overdue:
                         yield item, _crashed(on_crash, item, "the unit did not finish within its "

@@ -61,7 +61,16 @@ def run_seeds(config: RunConfig, seeds: Sequence[int], *, console: Console | Non
         raise ConfigError(f"--seeds needs distinct seeds, got {list(seeds)}", field="--seeds",
                           hint="e.g. --seeds 0,1,2")
     parent = seeds_run_dir(config, seeds)
-    RunStore(parent).bind_config(seeds_identity(config, seeds))
+    store = RunStore(parent)
+    store.claim(seeds_identity(config, seeds))  # the parent folder is this run's until it ends
+    try:
+        return _run_seeds(config, seeds, parent, console, show_progress)
+    finally:
+        store.unlock()
+
+
+def _run_seeds(config: RunConfig, seeds: Sequence[int], parent: Path, console: Console | None,
+               show_progress: bool) -> SeedsOutcome:
     per_seed = []
     records: list[UnitRecord] = []
     computed = reused = 0
