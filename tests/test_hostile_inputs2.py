@@ -651,3 +651,18 @@ def test_bad_input_exits_2_everywhere(tmp_path: Path, capsys: pytest.CaptureFixt
     argv = [str(tmp_path / "o") if a == "OUT" else a for a in argv]
     code, _, err = cli(capsys, *argv, *(["--output", str(tmp_path)] if argv[0] == "run" else []))
     assert code == 2 and err.strip()
+
+
+def test_generate_command_with_hostile_plugins(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    out = tmp_path / "work" / "out"
+    code, stdout, _ = cli(capsys, "generate", "--generator", "hostile_generators:Ids", "--task", TASK,
+                          "--out", str(out), "--no-render")
+    assert code == 0 and "skipped" in stdout
+    assert files_under(tmp_path / "work") == files_under(out)
+    assert sorted(p.name for p in out.glob("*.json") if p.name != "plan.json") == ["A.json", "a.json"]
+    code, _, err = cli(capsys, "generate", "--generator", "hostile_generators:ReturnsNone", "--task",
+                       TASK, "--out", str(tmp_path / "none"))
+    assert code == 1 and "failed: AttributeError" in err
+    code, _, _ = cli(capsys, "generate", "--generator", "hostile_generators:Empty", "--task", TASK,
+                     "--out", str(tmp_path / "empty"))
+    assert code == 1
