@@ -189,13 +189,23 @@ class ProcessExecutor:
         running: dict[Future[R], tuple[T, float | None]] = {}
         overdue: set[Future[R]] = set()
         stopped = True
+
+        def fill() -> None:  # one item per worker, so a broken pool tells which items it lost
+            while queue and not overdue and len(running) < pool.workers:
+                item = queue.popleft()
+                limit = budget(item) if budget else None
+                try:
+                    fut = pool.pool.submit(fn, item)
+                except BrokenProcessPool:  # broke since the last result: the next round retries it
+                    queue.appendleft(item)
+                    return
+                running[fut] = (item, None if limit is None else time.monotonic() + limit)
+
         try:
             while queue or running:
-                while queue and not overdue and len(running) < pool.workers:
-                    item = queue.popleft()
-                    limit = budget(item) if budget else None
-                    running[pool.pool.submit(fn, item)] = (item, None if limit is None else
-                                                           time.monotonic() + limit)
+                fill()
+                if not running:  # the pool broke with none of our items on it
+                    return
                 deadlines = [d for _, d in running.values() if d is not None]
                 wait_s = max(0.0, min(deadlines) - time.monotonic()) if deadlines else None
                 done, _ = wait(running, timeout=wait_s, return_when=FIRST_COMPLETED)
@@ -205,12 +215,14 @@ class ProcessExecutor:
                     pool.kill()
                     continue
                 lost: list[tuple[Future[R], T]] = []
+                finished: list[tuple[Future[R], T]] = []
                 for fut in done:
                     item, _ = running.pop(fut)
-                    if isinstance(fut.exception(), BrokenProcessPool):
-                        lost.append((fut, item))
-                    else:
-                        yield item, fut.result()
+                    (lost if isinstance(fut.exception(), BrokenProcessPool) else finished).append((fut, item))
+                if not lost:
+                    fill()  # the next items start before the caller commits these results
+                for fut, item in finished:
+                    yield item, fut.result()
                 if not lost:
                     continue
                 lost += [(fut, item) for fut, (item, _) in running.items()]  # gone with the pool

@@ -33,7 +33,7 @@ from logicenveval.generators.base import GenerationFailure
 from logicenveval.limits import limit
 from logicenveval.metrics.records import EnvDetail, UnitRecord
 from logicenveval.model.task import POLICY_KINDS, Task
-from logicenveval.paths import check_name, shown
+from logicenveval.paths import check_name, child, shown
 from logicenveval.runner.config import RUN_ID_PATTERN
 from logicenveval.runner.executors import make_executor
 from logicenveval.runner.results import build_results, write_outputs
@@ -189,10 +189,11 @@ def score_unit(spec: ScoreUnitSpec) -> UnitRecord:
                                               env_id=path.stem))
             continue
         text = env_to_json(env)  # the file as given: a resumed run re-reads it, not the bound copy
-        rel = (Path("envs") / spec.generator / spec.task_id / f"{env.env_id}.json").as_posix()
+        rel = child(Path("envs"), spec.generator, spec.task_id, env.env_id, suffix=".json").as_posix()
         atomic_write_text(Path(spec.run_dir) / rel, text, durable=False)
         files[rel] = text_digest(text)
-        render = (Path("renders") / spec.generator / spec.task_id / f"{env.env_id}.svg").as_posix()
+        render = child(Path("renders"), spec.generator, spec.task_id, env.env_id,
+                       suffix=".svg").as_posix()
         atomic_write_text(Path(spec.run_dir) / render, render_svg(done.env, done.physics),
                           durable=False)
         samples.append(sample)

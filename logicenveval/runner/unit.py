@@ -43,7 +43,7 @@ from logicenveval.llm.fewshot import FewShotModel
 from logicenveval.metrics.records import EnvDetail, EnvSample, UnitRecord
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import POLICY_KINDS, TaskBrief
-from logicenveval.paths import name_problem, shown
+from logicenveval.paths import child, name_problem, shown
 from logicenveval.redact import redact
 from logicenveval.runner import executors
 from logicenveval.runner.store import text_digest
@@ -360,14 +360,14 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
         return UnitRecord(generator=spec.generator, task_id=spec.task_id,
                           error="infrastructure failure during generation: " + watched.infra_error,
                           error_kind="infrastructure", gen_seconds=gen_seconds, llm=_stats(model))
-    rel_dir = Path("envs") / spec.generator / spec.task_id
+    rel_dir = child(Path("envs"), spec.generator, spec.task_id)
     samples: list[EnvSample] = []
     details: list[EnvDetail] = []
     files: dict[str, str] = {}
     failures = list(result.failures)
     scorer = scorer_for(task, spec.tasks_dir, catalog, cache_dir=run_dir / "work" / "mutants")
-    for env in result.envs:
-        _write(run_dir, rel_dir / f"{env.env_id}.json", env_to_json(env), files)
+    for env in result.envs:  # ids checked by the boundary; `child` checks them once more
+        _write(run_dir, child(rel_dir, env.env_id, suffix=".json"), env_to_json(env), files)
         try:
             done = evaluate_env(spec.generator, task, env, policies, catalog)
             sample = with_killed_mutants(done, task, scorer, catalog)
@@ -375,7 +375,7 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
             failures.append(GenerationFailure(stage="evaluate", env_id=env.env_id,
                                               message=_reason(exc)))
             continue
-        render = (Path("renders") / spec.generator / spec.task_id / f"{env.env_id}.svg").as_posix()
+        render = child(Path("renders"), spec.generator, spec.task_id, env.env_id, suffix=".svg").as_posix()
         atomic_write_text(run_dir / render, render_svg(done.env, done.physics), durable=False)
         samples.append(sample)
         details.append(EnvDetail(env_id=env.env_id, render=render, traces=done.traces))
