@@ -7,11 +7,11 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from logicenveval.baselines.geometry import footprint, layout_rooms, room_dims, typical_size
-from logicenveval.baselines.heuristics import guess_coordinates
+from logicenveval.baselines.geometry import layout_rooms, room_dims
 from logicenveval.baselines.offline_handlers import default_rooms, door_stretches, flat_situations
 from logicenveval.domain.catalog import Catalog
 from logicenveval.llm.analysis import Factor
+from logicenveval.scene.guessed_layout import footprint, guess_coordinates, typical_size
 
 CAT = Catalog.model_validate({"categories": {
     "sofa": {"size_min": [2.0, 0.8, 0.9], "size_max": [2.0, 0.8, 0.9], "placement": ["floor"], "surface": True},

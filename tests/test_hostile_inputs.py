@@ -623,13 +623,16 @@ def test_include_outside_the_policy_folder(tmp_path: Path, capsys: pytest.Captur
 
 # ----- 12. compare over different tasks ----------------------------------------------------
 
-def test_compare_refuses_runs_over_different_tasks(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    base = {"schema": "logicenveval.results/1", "results": {"g": {"logcov": 0.5}}}
+def test_compare_flags_tasks_missing_from_the_candidate(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    cell = {"n_envs": 1, "logcov": 0.5, "faudr": dict.fromkeys(("counterfactual", "unreachable", "lackbranch"), True)}
     for name, tasks in (("a", ["t1", "t2"]), ("b", ["t1"])):
         (tmp_path / name).mkdir()
-        (tmp_path / name / "results.json").write_text(json.dumps({**base, "tasks": tasks}))
-    code, _, err = cli(capsys, "compare", str(tmp_path / "a"), str(tmp_path / "b"))
-    assert code == 2 and "different tasks" in err and "t2" in err
+        (tmp_path / name / "results.json").write_text(json.dumps({
+            "schema": "logicenveval.results/1", "results": {"g": {"logcov": 0.5}}, "tasks": tasks,
+            "per_task": {"g": {t: cell for t in tasks}}}))
+    code, out, _ = cli(capsys, "compare", str(tmp_path / "a"), str(tmp_path / "b"))
+    assert code == 1 and "task t2 of g: missing in B" in out
+    assert cli(capsys, "compare", str(tmp_path / "a"), str(tmp_path / "b"), "--allow-missing")[0] == 0
 
 
 # ----- 13. stale temp files ----------------------------------------------------------------

@@ -11,11 +11,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from logicenveval.domain.catalog import Catalog
-
-#: extents of an object whose category the catalog does not know
-UNKNOWN_SIZE = (0.4, 0.4, 0.4)
-
 
 @dataclass(frozen=True)
 class RoomRect:
@@ -45,19 +40,3 @@ def layout_rooms(rooms: list[tuple[str, float]]) -> list[RoomRect]:
         out.append(RoomRect(rid, round(x, 3), w, d))
         x += w
     return out
-
-
-def typical_size(category: str, catalog: Catalog) -> tuple[float, float, float]:
-    """The middle of the catalog's size range: what a model guesses for an ordinary instance."""
-    cat = catalog.get(category)
-    if cat is None:
-        return UNKNOWN_SIZE
-    lo, hi = cat.size_min, cat.size_max
-    return (round((lo[0] + hi[0]) / 2, 3), round((lo[1] + hi[1]) / 2, 3), round((lo[2] + hi[2]) / 2, 3))
-
-
-def footprint(size: tuple[float, float, float], yaw: float) -> tuple[float, float]:
-    """Extents along x and z after a rotation by a multiple of 90 degrees."""
-    if round(yaw) % 180 == 90:
-        return size[2], size[0]
-    return size[0], size[2]

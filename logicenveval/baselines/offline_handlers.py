@@ -22,7 +22,6 @@ import numpy as np
 
 from logicenveval.baselines.drafts import floor_plan
 from logicenveval.baselines.geometry import room_dims
-from logicenveval.baselines.heuristics import guess_coordinates
 from logicenveval.domain.catalog import Catalog, load_catalog
 from logicenveval.generators.realise import task_objects
 from logicenveval.llm.analysis import Factor, analyse
@@ -30,6 +29,7 @@ from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.offline import handler
 from logicenveval.llm.replies import RoomDraft
 from logicenveval.model.rooms import room_type_of
+from logicenveval.scene.guessed_layout import guess_coordinates
 
 #: typical floor area (m²) per room type
 AREA = {"LivingRoom": 22.0, "Kitchen": 13.0, "Bedroom": 15.0, "Bathroom": 7.0, "Study": 11.0,

@@ -22,7 +22,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from logicenveval.reporting.tables import markdown
+    from logicenveval.reporting.publish import publish
     from logicenveval.runner.score_envs import EvaluateConfig, evaluate_envs
 
     config = EvaluateConfig(
@@ -36,13 +36,15 @@ def run(args: argparse.Namespace) -> int:
         run_id=args.run_id,
     )
     outcome = evaluate_envs(config)
-    print(markdown(outcome.results))
+    shown = publish(outcome.run_dir, outcome.results, outcome.records)
+    print(shown.table)
     for folder in outcome.skipped_folders:
         print(f"skipped {folder}/: not a task of the tasks dir")
     for f in outcome.results["failures"].get(config.generator_name, []):
         print(f"failure {f['task']}: {f.get('env_id') or ''} {f['message']}".replace("  ", " "))
     print(f"run folder: {outcome.run_dir} (scored {outcome.computed} task folder(s), "
           f"reused {outcome.reused})")
+    print(shown.why)
     from logicenveval.commands.run import report_failures
 
     return report_failures(outcome.records)

@@ -62,7 +62,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from logicenveval.reporting.tables import markdown
+    from logicenveval.reporting.publish import publish
     from logicenveval.runner.config import RunConfig
     from logicenveval.runner.run import run as run_benchmark
 
@@ -104,9 +104,11 @@ def run(args: argparse.Namespace) -> int:
 
             n = sum(len(export_run(d, formats)) for d in multi.seed_dirs)
             print(f"exported {n} file(s) ({', '.join(formats)}) next to the environments")
-        print(markdown(multi.results))
+        shown = publish(multi.run_dir, multi.results, multi.records)
+        print(shown.table)
         print(f"run folder: {multi.run_dir} (seed runs {', '.join(str(d) for d in multi.seed_dirs)}; "
               f"computed {multi.computed} unit(s), reused {multi.reused})")
+        print(shown.why)
         return report_failures(multi.records)
     outcome = run_benchmark(config, show_progress=not args.quiet)
     if formats:
@@ -114,8 +116,10 @@ def run(args: argparse.Namespace) -> int:
 
         written = export_run(outcome.run_dir, formats)
         print(f"exported {len(written)} file(s) ({', '.join(formats)}) next to the environments")
-    print(markdown(outcome.results))
+    shown = publish(outcome.run_dir, outcome.results, outcome.records)
+    print(shown.table)
     print(f"run folder: {outcome.run_dir} (computed {outcome.computed} unit(s), reused {outcome.reused})")
+    print(shown.why)
     return report_failures(outcome.records)
 
 

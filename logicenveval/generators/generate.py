@@ -12,10 +12,14 @@ from logicenveval.atomic import atomic_write_text
 from logicenveval.benchmark import load_task
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.envfiles import save_env
-from logicenveval.generators.base import GenerationContext, GenerationResult, make_generator
+from logicenveval.generators.base import (
+    GenerationContext,
+    GenerationResult,
+    make_generator,
+    unit_seed,
+)
 from logicenveval.generators.plugins import resolve_generator
 from logicenveval.paths import name_problem, shown
-from logicenveval.runner.unit import unit_seed
 from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
 
 

@@ -158,7 +158,7 @@ def place_objects(payload: dict[str, Any], request: ChatRequest) -> dict[str, An
     Uses the same guessing heuristic as the CoT/IFG offline handlers: furniture along the walls,
     items on their support's top; nothing checks collisions — the physics checker judges it.
     """
-    from logicenveval.baselines.heuristics import guess_coordinates
+    from logicenveval.scene.guessed_layout import guess_coordinates
 
     catalog = load_catalog()
     dims: dict[str, tuple[float, float]] = {}

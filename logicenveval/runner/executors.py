@@ -83,7 +83,8 @@ def _context() -> multiprocessing.context.BaseContext:
 
 def _death(codes: Sequence[int | None]) -> str:
     """Why the worker processes of a broken pool died, from their exit statuses."""
-    dead = sorted({c for c in codes if c not in (None, 0)}, key=lambda c: (c is None, c))
+    # the pool itself SIGTERMs the survivors of a broken pool: the cause is another status
+    dead = sorted({c for c in codes if c not in (None, 0)}, key=lambda c: (c == -signal.SIGTERM, c))
     if EXIT_TIMED_OUT in dead:
         return "the unit ignored its time bound (--unit-timeout), so its worker was stopped"
     for code in dead:

@@ -1,4 +1,4 @@
-"""`python -m logicenveval run`: generators × tasks → committed units → results and leaderboard."""
+"""`python -m logicenveval run`: generators × tasks → committed units → results (no leaderboard)."""
 
 from __future__ import annotations
 
@@ -24,7 +24,7 @@ from logicenveval.runner.config import RunConfig
 from logicenveval.runner.executors import Executor, make_executor
 from logicenveval.runner.results import build_results, write_outputs
 from logicenveval.runner.store import RunStore
-from logicenveval.runner.unit import UnitSpec, chunk_units, run_units
+from logicenveval.runner.unit import UnitSpec, chunk_units, planned_failures, run_units
 
 
 @dataclass(frozen=True)
@@ -144,7 +144,8 @@ def _crashed(chunk: tuple[UnitSpec, ...], why: str) -> list[UnitRecord]:
     """The record of units whose worker died: recomputed by the next run unless timed out."""
     timed_out = "time" in why
     return [UnitRecord(generator=s.generator, task_id=s.task_id, error=why,
-                       error_kind="generation" if timed_out else "infrastructure")
+                       error_kind="generation" if timed_out else "infrastructure",
+                       attempts=planned_failures(s.generator, 0) if timed_out else [])
             for s in chunk]
 
 
@@ -202,11 +203,6 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
     ordered = [records[(s.generator, s.task_id)] for s in specs]
     results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start,
                             generators=[r.name for r in refs])
-    from logicenveval.reporting.leaderboard import write_leaderboards
-
-    report_start = time.perf_counter()
-    write_leaderboards(run_dir, results, ordered)
-    results["timing"]["report_seconds"] = round(time.perf_counter() - report_start, 3)
     write_outputs(run_dir, results, ordered)
     return RunOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused,
                       records=tuple(ordered))

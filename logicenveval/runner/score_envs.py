@@ -3,12 +3,13 @@
 `ENVS_DIR/<task_id>/*.json` are EnvSpecs (DESIGN.md §6). Each task folder is one unit, judged
 exactly as a `run` judges a generator's environments (`runner.evaluation.evaluate_env`: physics,
 role binding, GT coverage, the four policies), committed to the same resumable store and
-summarised into the same results.json, samples.jsonl and leaderboards. So scoring the
+summarised into the same results.json and samples.jsonl (leaderboards: `reporting`). So scoring the
 `envs/<generator>` folder of a run reproduces that run's metrics for the generator.
 
-A file that is not a valid EnvSpec (bad JSON, a missing field, another task's `task_id`) is a
-recorded failure of that file with its reason; the task's other files still count. A task
-folder with no valid EnvSpec counts like a failed generation (zero coverage).
+Every candidate file is one attempted environment (docs/logic.md). A file that is not a valid
+EnvSpec (bad JSON, a missing field, another task's `task_id`) is a recorded failure of that file
+with its reason and one failed attempt (it fails PhyPR and SceVR); the task's other files still
+count. A task folder with no file is one failed attempt (zero coverage).
 """
 
 from __future__ import annotations
@@ -29,7 +30,7 @@ from logicenveval.benchmark import load_task, load_tasks, policy_path, task_ids
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.envfiles import env_to_json, load_env
 from logicenveval.errors import ConfigError, LogicEnvEvalError
-from logicenveval.generators.base import GenerationFailure
+from logicenveval.generators.base import Attempt, GenerationFailure
 from logicenveval.limits import limit
 from logicenveval.metrics.records import EnvDetail, UnitRecord
 from logicenveval.model.task import POLICY_KINDS, Task
@@ -161,6 +162,7 @@ def score_unit(spec: ScoreUnitSpec) -> UnitRecord:
     policies = {k: load_policy(policy_path(task, k, spec.tasks_dir)) for k in POLICY_KINDS}
     folder = Path(spec.folder)
     failures: list[GenerationFailure] = []
+    attempts: list[Attempt] = []
     samples = []
     details: list[EnvDetail] = []
     files: dict[str, str] = {}
@@ -182,12 +184,16 @@ def score_unit(spec: ScoreUnitSpec) -> UnitRecord:
             sample = with_killed_mutants(done, task, scorer, catalog)
         except LogicEnvEvalError as exc:
             failures.append(GenerationFailure(stage="load", message=str(exc), env_id=path.stem))
+            attempts.append(Attempt(id=path.stem, target=path.name, stage="load", reason=str(exc)))
             continue
         except Exception as exc:  # a malformed-but-valid env must not stop the others
             why = traceback.format_exception_only(type(exc), exc)[-1].strip()
             failures.append(GenerationFailure(stage="evaluate", message=f"{path}: internal error: {why}",
                                               env_id=path.stem))
+            attempts.append(Attempt(id=path.stem, target=path.name, stage="evaluate",
+                                    reason=f"internal error: {why}"))
             continue
+        attempts.append(Attempt(id=path.stem, target=path.name, env_id=env.env_id))
         text = env_to_json(env)  # the file as given: a resumed run re-reads it, not the bound copy
         rel = child(Path("envs"), spec.generator, spec.task_id, env.env_id, suffix=".json").as_posix()
         atomic_write_text(Path(spec.run_dir) / rel, text, durable=False)
@@ -202,9 +208,11 @@ def score_unit(spec: ScoreUnitSpec) -> UnitRecord:
     if not samples:
         error = (f"no valid EnvSpec in {folder}" if folder.is_dir()
                  else f"no folder {folder} for this task")
+    if not attempts:
+        attempts.append(Attempt(id=spec.task_id, stage="load", reason=error or "no EnvSpec file"))
     return UnitRecord(generator=spec.generator, task_id=spec.task_id, samples=samples,
                       failures=failures, error=error, mutants=scorer.classes, details=details,
-                      files=files)
+                      files=files, attempts=attempts)
 
 
 def _task_ids(config: EvaluateConfig) -> tuple[list[str], list[str]]:
@@ -274,9 +282,6 @@ def _score(config: EvaluateConfig, ids: list[str], skipped: list[str], tasks: li
     results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start,
                             generators=[name])
     write_outputs(run_dir, results, ordered)
-    from logicenveval.reporting.leaderboard import write_leaderboards
-
-    write_leaderboards(run_dir, results, ordered)
     return EvaluateOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused,
                            skipped_folders=skipped, records=tuple(ordered))
 

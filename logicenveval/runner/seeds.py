@@ -21,10 +21,11 @@ from rich.console import Console
 
 from logicenveval.atomic import atomic_write_text
 from logicenveval.errors import ConfigError
+from logicenveval.metrics.compute import null_metrics
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.metrics.uncertainty import ci95, point_metrics
 from logicenveval.runner.config import RunConfig
-from logicenveval.runner.results import RESULTS_SCHEMA, bootstrap_rng
+from logicenveval.runner.results import RESULTS_SCHEMA, row_status
 from logicenveval.runner.run import run
 from logicenveval.runner.store import RunStore
 
@@ -83,9 +84,6 @@ def _run_seeds(config: RunConfig, seeds: Sequence[int], parent: Path, console: C
         reused += outcome.reused
     results = combine_seeds(parent.name, seeds_identity(config, seeds), per_seed)
     atomic_write_text(parent / "results.json", json.dumps(results, indent=2, sort_keys=True) + "\n")
-    from logicenveval.reporting.leaderboard import write_leaderboards
-
-    write_leaderboards(parent, results)
     return SeedsOutcome(run_dir=parent, results=results,
                         seed_dirs=[parent / f"seed{s}" for s in seeds], computed=computed,
                         reused=reused, records=tuple(records))
@@ -104,11 +102,21 @@ def combine_seeds(run_id: str, identity: dict[str, object],
     per_task_seed: dict[str, Any] = {}
     failures: dict[str, list[dict[str, Any]]] = {}
     for gen in first["results"]:
+        # a task not measured in some seed (infrastructure failure) is left out for every seed:
+        # the two-level bootstrap needs the same seeds for every task
+        missing = sorted({t for r in per_seed for t in first["tasks"] if t not in r["per_task"][gen]})
         per_task_seed[gen] = {t: {str(r["seed"]): r["per_task"][gen][t] for r in per_seed}
-                              for t in first["tasks"]}
+                              for t in first["tasks"] if t not in missing}
         cells = {(t, int(s)): m for t, by in per_task_seed[gen].items() for s, m in by.items()}
-        results[gen] = point_metrics(list(cells.values()))
-        results[gen]["ci95"] = ci95(cells, bootstrap_rng(seeds[0], gen))
+        if cells:
+            results[gen] = point_metrics(list(cells.values()))
+            results[gen]["ci95"] = ci95(cells)
+        else:
+            results[gen] = {**null_metrics(), "ci95": {}}
+        results[gen].update(row_status(
+            measured=bool(cells), not_measured=missing,
+            budget_hit=sorted({t for t, by in per_task_seed[gen].items()
+                               if any(m.get("budget_hit") for m in by.values())})))
         failures[gen] = [{**f, "seed": r["seed"]} for r in per_seed for f in r["failures"].get(gen, [])]
     return {
         "schema": RESULTS_SCHEMA,

@@ -29,11 +29,14 @@ from logicenveval.domain.catalog import DEFAULT_CATALOG, Catalog, load_catalog, 
 from logicenveval.envfiles import env_from_dict, env_to_json
 from logicenveval.errors import CacheMissError, LogicEnvEvalError, ModelConnectionError
 from logicenveval.generators.base import (
+    Attempt,
     GenerationContext,
     GenerationFailure,
     GenerationResult,
     Generator,
+    counted_attempts,
     make_generator,
+    unit_seed,
 )
 from logicenveval.generators.brief import BriefMode, generator_brief
 from logicenveval.generators.plugins import ensure_importable
@@ -73,12 +76,6 @@ class UnitSpec(BaseModel):
     generator_args: dict[str, Any] = Field(default_factory=dict)
     #: seconds the generator may take for this unit (`--unit-timeout`); None: unbounded
     unit_timeout: float | None = None
-
-
-def unit_seed(seed: int, generator: str, task_id: str) -> list[int]:
-    """A seed sequence independent of scheduling: run seed + stable hashes of the unit's names."""
-    digest = hashlib.sha256(f"{generator}\0{task_id}".encode()).digest()
-    return [seed, int.from_bytes(digest[:8], "little")]
 
 
 def _unique_ids(envs: list[EnvSpec]) -> list[EnvSpec]:
@@ -122,6 +119,10 @@ class Checked:
     failures: list[GenerationFailure]
     plan_text: str | None
     returned: int  # environments the generator returned, rejected ones included
+    attempts: list[Attempt]  # `counted_attempts` of what the generator returned
+    budget_hit: str | None
+    origin: list[str]  # the generator's own env_id of each kept environment (before `-2` suffixes)
+    rejected: list[tuple[str, str, str]]  # env_id, stage, reason of each environment not kept
 
 
 def call_generator(generator: Generator, brief: TaskBrief, ctx: GenerationContext, *,
@@ -186,7 +187,11 @@ def check_result(result: object, task_id: str) -> Checked:
         except (ValueError, TypeError, RecursionError) as exc:
             raise GeneratorBroke("GenerationResult.artifacts cannot be written as JSON "
                                  f"({type(exc).__name__}: {str(exc)[:200]})") from None
+    attempts = result.attempts
+    if not isinstance(attempts, list | tuple) or not all(isinstance(a, Attempt) for a in attempts):
+        raise GeneratorBroke("GenerationResult.attempts must be a list of Attempt")
     kept: list[EnvSpec] = []
+    rejected: list[tuple[str, str, str]] = []
     out_failures = list(failures)
     for env in envs:
         checked = _checked_env(env, task_id)
@@ -196,8 +201,11 @@ def check_result(result: object, task_id: str) -> Checked:
             safe = name_problem(env.env_id) is None
             out_failures.append(GenerationFailure(stage="validate", message=checked,
                                                   env_id=env.env_id if safe else None))
+            rejected.append((env.env_id, "validate", checked))
     return Checked(envs=_unique_ids(kept), failures=out_failures, plan_text=plan_text,
-                   returned=len(envs))
+                   returned=len(envs), attempts=counted_attempts(result),
+                   budget_hit=result.budget_hit if isinstance(result.budget_hit, str) else None,
+                   origin=[e.env_id for e in kept], rejected=rejected)
 
 
 def _checked_env(env: EnvSpec, task_id: str) -> EnvSpec | str:
@@ -321,6 +329,7 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     run_dir = Path(spec.run_dir)
     start = time.perf_counter()
     model: ChatModel | None = None
+    ctx: GenerationContext | None = None
     try:
         watched = _Watched(make_model(spec.model, spec.model_args, cache_path=spec.cache,
                                       no_cache=spec.no_cache, run_dir=run_dir))
@@ -344,12 +353,16 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
         shared_catalog()
         return UnitRecord(generator=spec.generator, task_id=spec.task_id, error=redact(str(exc)),
                           error_kind=exc.kind, gen_seconds=time.perf_counter() - start,
-                          llm=_stats(model))
+                          llm=_stats(model), attempts=planned_failures(
+                              spec.generator, ctx.planned_attempts if ctx is not None else 0))
     except Exception as exc:  # a failing unit must not kill the run; it is recorded
         shared_catalog()
+        kind = failure_kind(exc)
+        planned = ctx.planned_attempts if ctx is not None else 0
         return UnitRecord(generator=spec.generator, task_id=spec.task_id, error=_reason(exc),
-                          error_kind=failure_kind(exc), gen_seconds=time.perf_counter() - start,
-                          llm=_stats(model))
+                          error_kind=kind, gen_seconds=time.perf_counter() - start,
+                          llm=_stats(model), attempts=[] if kind == "infrastructure"
+                          else planned_failures(spec.generator, planned))
     gen_seconds = time.perf_counter() - start
     catalog, changed = shared_catalog()  # judged with the catalog as its file defines it
     if changed:
@@ -366,7 +379,8 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     files: dict[str, str] = {}
     failures = list(result.failures)
     scorer = scorer_for(task, spec.tasks_dir, catalog, cache_dir=run_dir / "work" / "mutants")
-    for env in result.envs:  # ids checked by the boundary; `child` checks them once more
+    unjudged = list(result.rejected)
+    for env, origin in zip(result.envs, result.origin, strict=True):  # ids checked by the boundary
         _write(run_dir, child(rel_dir, env.env_id, suffix=".json"), env_to_json(env), files)
         try:
             done = evaluate_env(spec.generator, task, env, policies, catalog)
@@ -374,6 +388,7 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
         except Exception as exc:  # one environment the harness cannot judge must not stop the others
             failures.append(GenerationFailure(stage="evaluate", env_id=env.env_id,
                                               message=_reason(exc)))
+            unjudged.append((origin, "evaluate", _reason(exc)))
             continue
         render = child(Path("renders"), spec.generator, spec.task_id, env.env_id, suffix=".svg").as_posix()
         atomic_write_text(run_dir / render, render_svg(done.env, done.physics), durable=False)
@@ -390,7 +405,31 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     return UnitRecord(generator=spec.generator, task_id=spec.task_id, samples=samples,
                       failures=failures, gen_seconds=gen_seconds, llm=_stats(model),
                       mutants=scorer.classes, details=details, files=files, error=error,
-                      error_kind=None if error is None else "generation")
+                      error_kind=None if error is None else "generation",
+                      attempts=_settled(result.attempts, unjudged), budget_hit=result.budget_hit)
+
+
+def planned_failures(generator: str, planned: int) -> list[Attempt]:
+    """A unit that failed as a whole for generation reasons: every environment it planned
+    (`GenerationContext.plan_attempts`, at least one) is a failed attempt."""
+    return [Attempt(id=f"{generator}-{i:02d}", stage="unit", reason="the unit failed as a whole (see its error)")
+            for i in range(max(1, planned))]
+
+
+def _settled(attempts: list[Attempt], unjudged: list[tuple[str, str, str]]) -> list[Attempt]:
+    """The attempts with every built environment that was not judged — rejected by the boundary
+    or not judgeable (`unjudged`: the generator's env_id, stage, reason) — turned into a failed
+    attempt, so that n_attempted = judged samples + failed attempts."""
+    pending: dict[str, list[tuple[str, str]]] = {}
+    for env_id, stage, reason in unjudged:
+        pending.setdefault(env_id, []).append((stage, reason))
+    out = []
+    for a in attempts:
+        if a.env_id is not None and pending.get(a.env_id):
+            stage, reason = pending[a.env_id].pop(0)
+            a = Attempt(id=a.id, target=a.target, stage=stage, reason=reason)
+        out.append(a)
+    return out
 
 
 def run_units(specs: tuple[UnitSpec, ...]) -> list[UnitRecord]:
