@@ -93,6 +93,8 @@ def test_plugin_env_ids_cannot_leave_the_run_folder(tmp_path: Path,
         assert any(needle in m for m in messages), needle
     assert len(messages) == len(HOSTILE_IDS) - 2
     assert data["results"]["ids"]["n_envs"] == 2
+    cell = data["per_task"]["ids"][TASK]  # a rejected environment is a failed attempt
+    assert (cell["n_attempted"], cell["n_failed"]) == (len(HOSTILE_IDS), len(HOSTILE_IDS) - 2)
 
 
 def test_a_and_sub_dotdot_a_never_collide() -> None:
@@ -272,6 +274,8 @@ def test_env_of_another_task_is_rejected_not_scored(tmp_path: Path,
     assert data["results"]["wrong-task"]["n_envs"] == 1
     (fail,) = data["failures"]["wrong-task"]
     assert "task_id 'kitchen_fridge_restock'" in fail["message"] and fail["env_id"] == "other"
+    assert (data["per_task"]["wrong-task"][TASK]["n_attempted"],
+            data["per_task"]["wrong-task"][TASK]["n_failed"]) == (2, 1)
     assert not (only_run(tmp_path) / "envs" / "wrong-task" / TASK / "other.json").exists()
 
 
