@@ -228,8 +228,11 @@ class ProcessExecutor:
                     continue
                 lost += [(fut, item) for fut, (item, _) in running.items()]  # gone with the pool
                 running.clear()
-                if len(lost) == 1 and not overdue:  # it ran alone: it is the one that died
-                    yield lost[0][1], _crashed(on_crash, lost[0][1], _death(pool.exit_codes()))
+                codes = pool.exit_codes()
+                if not overdue and (len(lost) == 1 or codes.count(EXIT_TIMED_OUT) == len(lost)):
+                    # it ran alone, or every worker that ran one ended itself at its time bound
+                    for _, item in lost:
+                        yield item, _crashed(on_crash, item, _death(codes))
                     return
                 for fut, item in lost:
                     if fut in overdue:
