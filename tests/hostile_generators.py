@@ -193,3 +193,10 @@ class WithArgs(_Base):
     def generate(self, brief: TaskBrief, ctx: GenerationContext) -> GenerationResult:
         return GenerationResult(envs=[fixture_env(brief, f"e{i}") for i in range(self.n_envs)],
                                 artifacts={"label": self.label})
+
+
+class ExitsInInit(_Base):
+    """A factory that calls sys.exit."""
+
+    def __init__(self) -> None:
+        raise SystemExit(4)

@@ -670,3 +670,9 @@ def test_generate_command_with_hostile_plugins(tmp_path: Path, capsys: pytest.Ca
     code, _, _ = cli(capsys, "generate", "--generator", "hostile_generators:Empty", "--task", TASK,
                      "--out", str(tmp_path / "empty"))
     assert code == 1
+
+
+def test_factory_calling_sys_exit_is_bad_input(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """Before, SystemExit from a plug-in ended `run` with that status and no message."""
+    code, _, err = cli(capsys, *plug(tmp_path, "hostile_generators:ExitsInInit"))
+    assert code == 2 and "could not be constructed: SystemExit: 4" in err

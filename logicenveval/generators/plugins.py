@@ -109,9 +109,9 @@ def resolve_generator(spec: str, args: dict[str, Any] | None = None) -> Generato
         import_target(target)  # the module error, before any unit runs
     try:
         gen = make_generator(target, **(args or {}))
-    except ConfigError:
+    except (ConfigError, KeyboardInterrupt):
         raise
-    except Exception as exc:  # a plug-in's constructor: report it as bad input, with the cause
+    except BaseException as exc:  # a plug-in's constructor (even sys.exit): bad input, with the cause
         given = ", ".join(f"{k}={v!r}" for k, v in (args or {}).items())
         raise ConfigError(f"generator {spec!r} could not be constructed"
                           + (f" with {given}" if given else "") + f": {type(exc).__name__}: "

@@ -198,10 +198,11 @@ def check_result(result: object, task_id: str) -> Checked:
         if isinstance(checked, EnvSpec):
             kept.append(checked)
         else:
-            safe = name_problem(env.env_id) is None
+            env_id = getattr(env, "env_id", None)
+            safe = isinstance(env_id, str) and name_problem(env_id) is None
             out_failures.append(GenerationFailure(stage="validate", message=checked,
-                                                  env_id=env.env_id if safe else None))
-            rejected.append((env.env_id, "validate", checked))
+                                                  env_id=env_id if safe else None))
+            rejected.append((env_id if isinstance(env_id, str) else "", "validate", checked))
     return Checked(envs=_unique_ids(kept), failures=out_failures, plan_text=plan_text,
                    returned=len(envs), attempts=counted_attempts(result),
                    budget_hit=result.budget_hit if isinstance(result.budget_hit, str) else None,
@@ -210,13 +211,15 @@ def check_result(result: object, task_id: str) -> Checked:
 
 def _checked_env(env: EnvSpec, task_id: str) -> EnvSpec | str:
     """The environment as its file will hold it (re-validated), or why it is rejected."""
-    problem = name_problem(env.env_id)
+    env_id = getattr(env, "env_id", None)
+    problem = name_problem(env_id)
     if problem is not None:
-        return f"env_id {shown(env.env_id)} {problem}, so it cannot name a file; not judged"
-    if env.task_id != task_id:
-        return (f"environment {env.env_id!r} has task_id {shown(env.task_id)}, but this unit is "
-                f"task {task_id!r}; not judged")
-    objects = env.objects if isinstance(env.objects, list | tuple) else ()
+        return f"env_id {shown(env_id)} {problem}, so it cannot name a file; not judged"
+    if getattr(env, "task_id", None) != task_id:
+        return (f"environment {env_id!r} has task_id {shown(getattr(env, 'task_id', None))}, but "
+                f"this unit is task {task_id!r}; not judged")
+    objects = getattr(env, "objects", ())
+    objects = objects if isinstance(objects, list | tuple) else ()
     cap = limit("max_env_objects")
     if len(objects) > cap:
         return (f"environment {env.env_id!r} has {len(objects)} objects, more than the limit of "
@@ -355,8 +358,16 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
                           error_kind=exc.kind, gen_seconds=time.perf_counter() - start,
                           llm=_stats(model), attempts=planned_failures(
                               spec.generator, ctx.planned_attempts if ctx is not None else 0))
-    except Exception as exc:  # a failing unit must not kill the run; it is recorded
+    except KeyboardInterrupt:
+        if not executors.IN_WORKER:  # a real Ctrl-C of the run (workers ignore SIGINT)
+            raise
         shared_catalog()
+        return UnitRecord(generator=spec.generator, task_id=spec.task_id,
+                          error="internal error: the generator raised KeyboardInterrupt",
+                          error_kind="internal", gen_seconds=time.perf_counter() - start,
+                          llm=_stats(model), attempts=planned_failures(spec.generator, 0))
+    except BaseException as exc:  # a failing unit must not kill the run; it is recorded
+        shared_catalog()  # (also SystemExit from a factory: it is the generator's, not ours)
         kind = failure_kind(exc)
         planned = ctx.planned_attempts if ctx is not None else 0
         return UnitRecord(generator=spec.generator, task_id=spec.task_id, error=_reason(exc),
