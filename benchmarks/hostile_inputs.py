@@ -1,11 +1,18 @@
 """Time to refuse hostile inputs (issues 20 and 27), against the time to accept a genuine one.
 
-Part 1: each hostile file is generated here (nothing big is committed) and handed to the public
+First, large but *valid* policies (issue 27, item 18): `tasks mutants` (mutant generation and
+classification by simulation) on a generated correct BT of clean_living_room — its guarded
+TidyToy/TidyBook trees inlined again and again (`big_correct_bt`; 48 copies = 53 KB, the
+reported case) or its TidyToy Fallback given ever more alternatives (`wide_correct_bt`) — in a
+fresh process each, with wall time and peak RSS, against the shipped 4 KB BT in the same run.
+Line: `mutants_53KB_s=<float> mutants_53KB_MB=<float> shipped_s=<float>`.
+
+Then each hostile file is generated here (nothing big is committed) and handed to the public
 loader; the figure is the wall time until the clear error. The baseline is loading a real
 benchmark policy and task, so a ratio near 1 means a hostile file costs no more than a normal one.
-Printed line: `worst_refusal_ms=<float> baseline_ms=<float> ratio=<float>`.
+Line: `worst_refusal_ms=<float> baseline_ms=<float> ratio=<float>`.
 
-Part 2 (issue 27): resource cases through the CLI, each in a fresh process (peak memory is the
+Last, resource cases (issue 27) through the CLI, each in a fresh process (peak memory is the
 process's and its workers' maximum resident set, from `wait4`): a plug-in returning 10,001
 environments or a 50,000-object one, a generator that never returns (bounded by
 `--unit-timeout 1`, in-process and in a worker that even ignores the alarm), a 3 GB sparse file
@@ -30,7 +37,8 @@ from pathlib import Path
 
 from logicenveval.benchmark import DEFAULT_TASKS_DIR, load_task_file
 from logicenveval.errors import LogicEnvEvalError
-from logicenveval.sim.loader import load_policy
+from logicenveval.sim.loader import load_policy, policy_to_xml
+from logicenveval.sim.policy import Policy, PolicyNode
 
 TASK = "clean_living_room"
 
@@ -40,6 +48,59 @@ def fan_out(levels: int) -> str:
              "</Sequence></BehaviorTree>" for i in range(levels)]
     return ('<root BTCPP_format="4" main_tree_to_execute="T0">' + "".join(trees)
             + f'<BehaviorTree ID="T{levels}"><AlwaysSuccess/></BehaviorTree></root>')
+
+
+def big_correct_bt(copies: int) -> str:
+    """clean_living_room's correct BT with its guarded TidyToy and TidyBook trees inlined
+    `copies` more times before CleanMark: still correct (the copies find nothing to do), every
+    copy is ticked, and each adds its own mutants (48 copies: 53 KB)."""
+    p = load_policy(DEFAULT_TASKS_DIR / TASK / "policies" / "correct.xml")
+    main = p.trees[p.main]
+    extra = tuple(p.trees[t] for _ in range(copies) for t in ("TidyToy", "TidyBook"))
+    root = PolicyNode(main.kind, main.params, (*main.children[:-1], *extra, main.children[-1]),
+                      main.name)
+    return policy_to_xml(Policy(p.main, {**p.trees, p.main: root}))
+
+
+def wide_correct_bt(alternatives: int) -> str:
+    """clean_living_room's correct BT whose TidyToy Fallback has `alternatives` copies of its
+    IfThenElse (never reached after the first): one node with thousands of children."""
+    p = load_policy(DEFAULT_TASKS_DIR / TASK / "policies" / "correct.xml")
+    fb = p.trees["TidyToy"]
+    kids = (fb.children[0], *(fb.children[1] for _ in range(alternatives)))
+    return policy_to_xml(Policy(p.main, {**p.trees, "TidyToy": PolicyNode(fb.kind, fb.params, kids,
+                                                                           fb.name)}))
+
+
+def _mutants_run(tasks: Path) -> tuple[float, float]:
+    """Seconds and peak MB of `tasks mutants --json` on a tasks folder, in a fresh process."""
+    t0 = time.perf_counter()
+    proc = subprocess.Popen([sys.executable, "-m", "logicenveval", "tasks", "mutants", "--json",
+                             "--tasks-dir", str(tasks)], stdout=subprocess.DEVNULL)
+    _, status, usage = os.wait4(proc.pid, 0)
+    proc.returncode = os.waitstatus_to_exitcode(status)
+    if proc.returncode != 0:
+        raise SystemExit(f"tasks mutants failed on {tasks} (exit {proc.returncode})")
+    return time.perf_counter() - t0, usage.ru_maxrss / 1024
+
+
+def large_correct_bts() -> None:
+    print(f"{'valid large policy':<24} {'bytes':>12} {'mutants s':>10} {'peak MB':>8}")
+    with tempfile.TemporaryDirectory() as tmp:
+        results: dict[str, tuple[float, float]] = {}
+        cases = {"shipped": None, **{f"copies_{k}": big_correct_bt(k) for k in (24, 48, 96, 192)},
+                 **{f"alternatives_{k}": wide_correct_bt(k) for k in (100, 1000, 2000)}}
+        for name, text in cases.items():
+            tasks = Path(tmp) / name
+            shutil.copytree(DEFAULT_TASKS_DIR / TASK, tasks / TASK)
+            policy = tasks / TASK / "policies" / "correct.xml"
+            if text is not None:
+                policy.write_text(text)
+            results[name] = _mutants_run(tasks)
+            print(f"{name:<24} {policy.stat().st_size:>12} {results[name][0]:>10.2f} "
+                  f"{results[name][1]:>8.0f}")
+    big_s, big_mb = results["copies_48"]
+    print(f"mutants_53KB_s={big_s:.2f} mutants_53KB_MB={big_mb:.0f} shipped_s={results['shipped'][0]:.2f}")
 
 
 def _ms(fn: Callable[[], object], repeat: int = 5) -> float:
@@ -53,6 +114,7 @@ def _ms(fn: Callable[[], object], repeat: int = 5) -> float:
 
 
 def main() -> None:
+    large_correct_bts()
     folder = DEFAULT_TASKS_DIR / TASK
     task = json.loads((folder / "task.json").read_text())
     with tempfile.TemporaryDirectory() as tmp:

@@ -33,6 +33,8 @@ DEFAULTS: dict[str, tuple[int, str]] = {
     "max_reply_bytes": (2_000_000, "bytes of one LLM HTTP reply"),
     "max_situations": (100_000, "situations (trajectories) of one task"),
     "max_workers": (256, "worker processes of a run"),
+    "max_mutants": (500, "first-order mutants of a correct BT classified and scored (evenly "
+                         "spaced sample above; docs/faults.md)"),
 }
 
 

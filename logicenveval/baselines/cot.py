@@ -1,13 +1,15 @@
 """CoT baseline: one chain-of-thought request designs several environments, instantiated as given.
 
-The model reasons about the situations the task may present and writes every environment
-(rooms, objects with coordinates, attributes, states) as JSON. There is no solver and no repair
-beyond schema validation: physical mistakes are part of what the benchmark measures.
+The model reasons about the situations the task may present and writes every environment as
+JSON: its floor plan (room polygons, door and window segments) and its objects (coordinates,
+attributes, states). There is no solver and no repair beyond schema validation: physical
+mistakes, the floor plan's included, are part of what the benchmark measures.
 """
 
 from __future__ import annotations
 
 from logicenveval.baselines.drafts import env_from_draft
+from logicenveval.baselines.replies import WrittenEnvironmentsReply
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.base import (
     Attempt,
@@ -16,7 +18,6 @@ from logicenveval.generators.base import (
     GenerationResult,
 )
 from logicenveval.llm.ask import ask
-from logicenveval.llm.replies import EnvironmentsReply
 from logicenveval.model.task import TaskBrief
 
 
@@ -38,7 +39,7 @@ class CoT:
         ids = [f"{self.name}-{i:02d}" for i in range(self.max_environments)]
         ctx.plan_attempts(self.max_environments)
         try:
-            reply = ask(ctx.model, "cot_environments", payload, EnvironmentsReply, seed=ctx.seed)
+            reply = ask(ctx.model, "cot_environments", payload, WrittenEnvironmentsReply, seed=ctx.seed)
         except LogicEnvEvalError as exc:
             return GenerationResult(
                 failures=[GenerationFailure(stage="cot_environments", message=str(exc))],
@@ -50,8 +51,7 @@ class CoT:
         attempts = []
         for env_id, draft in zip(ids, drafts, strict=False):
             try:
-                envs.append(env_from_draft(brief, env_id=env_id, generator=self.name, rooms=list(draft.rooms),
-                                           objects=list(draft.objects), relations=list(draft.relations),
+                envs.append(env_from_draft(brief, env_id=env_id, generator=self.name, draft=draft,
                                            extra={"situation": draft.situation}))
             except LogicEnvEvalError as exc:
                 failures.append(GenerationFailure(stage="instantiate", message=str(exc), env_id=env_id))

@@ -1,9 +1,9 @@
-"""Room rectangles shared by the baselines: how a room draft's area becomes a floor polygon.
+"""Room rectangles from room areas: the Holodeck-like's floor plan and the offline CoT/IFG
+writer's habit.
 
 Rooms are laid out side by side along x in the order they are listed, each from z = 0 to its
-depth, so that consecutive rooms share a wall (where their doors go). Object coordinates in a
-draft are relative to the room's south-west corner (x east, z north); walls are `s` (z = 0),
-`n` (z = depth), `w` (x = 0) and `e` (x = width).
+depth, so that consecutive rooms share a wall. Within a room, x runs east and z north from its
+south-west corner; walls are `s` (z = 0), `n` (z = depth), `w` (x = 0) and `e` (x = width).
 """
 
 from __future__ import annotations

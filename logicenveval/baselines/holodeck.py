@@ -186,9 +186,14 @@ def _wall_objects(rect: RoomRect, drafts: dict[str, ObjectDraft], room_of: dict[
     heights = {i: sizes[i][1] for i in floor}
     hung: dict[str, list[tuple[float, float]]] = {"n": [], "s": [], "w": [], "e": []}
     for oid, o in drafts.items():
-        if room_of[oid] != rect.id or placement_fields(o.placement)[0] not in ("wall", "ceiling"):
+        where = placement_fields(o.placement)[0]
+        if room_of[oid] != rect.id or where not in ("wall", "ceiling"):
             continue
         w, h, d = sizes[oid]
+        if where == "ceiling":  # as Holodeck's ceiling objects (lights): at the room's centre, touching it
+            box = Box(rect.width / 2, rect.depth / 2, w, d)
+            placed[oid] = _record(o, rect, box, WALL_HEIGHT - h / 2, sizes[oid], 0.0, "ceiling", None)
+            continue
         y = min(WALL_OBJECT_Y, WALL_HEIGHT - h / 2 - 0.1)
         blocked = _wall_blocked(rect, openings, floor, heights, y - h / 2)
         for wall_id, spans in hung.items():

@@ -2,7 +2,7 @@
 
 Stage 1 (`ifg_intents`, temperature 1.1) samples k intents — logical trajectories written as
 the facts that hold initially; stage 2 (`ifg_environment`, temperature 0.5) designs one
-environment per intent, with coordinates from the model (no solver). Duplicate intents are kept:
+environment per intent, floor plan and coordinates written by the model (no solver). Duplicate intents are kept:
 IFG's redundancy is part of what the benchmark measures. Seeds of both stages are drawn from the
 run's generator, so a run is reproducible and different runs sample differently.
 """
@@ -10,6 +10,7 @@ run's generator, so a run is reproducible and different runs sample differently.
 from __future__ import annotations
 
 from logicenveval.baselines.drafts import env_from_draft
+from logicenveval.baselines.replies import WrittenEnvironmentsReply
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.base import (
     Attempt,
@@ -18,7 +19,7 @@ from logicenveval.generators.base import (
     GenerationResult,
 )
 from logicenveval.llm.ask import ask
-from logicenveval.llm.replies import EnvironmentsReply, TrajectoriesReply
+from logicenveval.llm.replies import TrajectoriesReply
 from logicenveval.model.task import TaskBrief
 
 #: intents per task: the paper does not state k; 8 exceeds the minimum cover of most benchmark
@@ -65,10 +66,9 @@ class IFG:
             try:
                 reply = ask(ctx.model, "ifg_environment", {"task": task, "intent": list(intent.facts),
                                                            "categories": categories},
-                            EnvironmentsReply, temperature=self.env_temperature, seed=seeds[i + 1])
+                            WrittenEnvironmentsReply, temperature=self.env_temperature, seed=seeds[i + 1])
                 draft = reply.environments[0]
-                envs.append(env_from_draft(brief, env_id=env_id, generator=self.name, rooms=list(draft.rooms),
-                                           objects=list(draft.objects), relations=list(draft.relations),
+                envs.append(env_from_draft(brief, env_id=env_id, generator=self.name, draft=draft,
                                            extra={"intent": list(intent.facts), "situation": intent.description}))
             except LogicEnvEvalError as exc:
                 failures.append(GenerationFailure(stage="ifg_environment", message=str(exc), env_id=env_id))

@@ -10,6 +10,9 @@ from __future__ import annotations
 import argparse
 import json
 
+#: failures per dimension shown in the table (a pile of objects can fail thousands of pairs)
+TABLE_ROWS = 50
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("env", metavar="ENV.json", help="EnvSpec file to check")
@@ -62,7 +65,10 @@ def run(args: argparse.Namespace) -> int:
             label = "extended (not PhyPR)" if dim == "extended" else dim
             if rep.passed:
                 table.add_row(label, "[green]pass[/]", "", "", "")
-            for f in rep.failures:
+            for f in rep.failures[:TABLE_ROWS]:
                 table.add_row(label, "[red]FAIL[/]", f.code, ", ".join(f.objects + f.rooms), f.message)
+            if len(rep.failures) > TABLE_ROWS:
+                table.add_row(label, "[red]FAIL[/]", "…", "", f"{len(rep.failures) - TABLE_ROWS} more failures "
+                              "(--json lists all)")
         console.print(table)
     return 0 if report.passed and (report.extended.passed or not args.strict) else 1

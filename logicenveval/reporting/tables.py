@@ -52,11 +52,11 @@ LEGEND = (
     "ST (ticks) = the same in simulator ticks (deterministic). JI = Jaccard index vs the minimum "
     "cover of the GT trajectories closest to the generator's set; Redundancy = environments / "
     "minimum cover size; Extra checks = share of environments passing our plausibility checks "
-    "beyond the paper's PhyPR (catalog sizes, door swing areas, stability, ceiling, unreachable "
-    "rooms, windows over doors; not part of PhyPR). n = tasks × seeds the row was measured on; "
-    "Failed / attempted = environments the generator set out to build but could not; PhyPR and "
-    "SceVR divide by all attempted. \"not measured\": every unit failed for infrastructure reasons "
-    "(endpoint, cache), so there is no result."
+    "beyond the paper's PhyPR (catalog sizes, door swing areas, objects through the ceiling, "
+    "unreachable rooms, windows over doors; not part of PhyPR). n = tasks × seeds the row was "
+    "measured on; Failed / attempted = environments the generator set out to build but could not; "
+    "PhyPR and SceVR divide by all attempted. \"not measured\": every unit failed for infrastructure "
+    "reasons (endpoint, cache), so there is no result."
 )
 
 
