@@ -1,9 +1,4 @@
-"""Time to refuse hostile inputs (issue 20), against the time to accept a genuine one in the same run.
-
-Each hostile input is generated here (nothing big is committed) and handed to the public loader;
-the figure is the wall time until the clear error. The baseline is loading a real benchmark
-policy and task, so a ratio near 1 means a hostile file costs no more than a normal one.
-Last line: `worst_refusal_ms=<float> baseline_ms=<float> ratio=<float>`.
+"""Time to refuse hostile inputs (issues 20 and 27), against the time to accept a genuine one.
 
 First, large but *valid* policies (issue 27, item 18): `tasks mutants` (mutant generation and
 classification by simulation) on a generated correct BT of clean_living_room — its guarded
@@ -16,6 +11,19 @@ Before both, houses and exports (issue 27, items 6, 14, 15; `house_cases`): GLB 
 export of 10k-50k-vertex rooms, import-house/check-house of houses with repeated ids, over the
 object limit, or with 1,500 rooms, each a fresh process.
 Line: `worst_house_s=<float> worst_house_rss_mb=<float>`.
+
+Then each hostile file is generated here (nothing big is committed) and handed to the public
+loader; the figure is the wall time until the clear error. The baseline is loading a real
+benchmark policy and task, so a ratio near 1 means a hostile file costs no more than a normal one.
+Line: `worst_refusal_ms=<float> baseline_ms=<float> ratio=<float>`.
+
+Last, resource cases (issue 27) through the CLI, each in a fresh process (peak memory is the
+process's and its workers' maximum resident set, from `wait4`): a plug-in returning 10,001
+environments or a 50,000-object one, a generator that never returns (bounded by
+`--unit-timeout 1`, in-process and in a worker that even ignores the alarm), a 3 GB sparse file
+in an `evaluate` folder, `check-env /dev/zero`. The plug-ins are `tests/hostile_generators.py`
+(well under 1 MB). The baseline is a normal one-environment run of the same plug-in module. Last line:
+`resources: worst_seconds=<float> worst_peak_mb=<float> baseline_seconds=<float> ratio=<float>`.
 """
 
 from __future__ import annotations
@@ -160,6 +168,64 @@ def main() -> None:
             print(f"{name:<24} {path.stat().st_size:>12} {ms:>14.1f}")
     print(f"baseline (load one real task + policy): {baseline:.1f} ms")
     print(f"worst_refusal_ms={worst:.1f} baseline_ms={baseline:.1f} ratio={worst / baseline:.2f}")
+    resources()
+
+
+TESTS = Path(__file__).resolve().parents[1] / "tests"
+
+
+def _measured(argv: list[str], cwd: Path) -> tuple[float, float, int, str]:
+    """Wall seconds, peak resident MB (the process and the workers it waited for), exit code,
+    last line of stderr."""
+    start = time.perf_counter()
+    with tempfile.TemporaryFile("w+") as err:
+        proc = subprocess.Popen([sys.executable, "-m", "logicenveval", *argv], cwd=cwd,
+                                stdout=subprocess.DEVNULL, stderr=err, text=True)
+        _, status, usage = os.wait4(proc.pid, 0)
+        proc.returncode = os.waitstatus_to_exitcode(status)
+        seconds = time.perf_counter() - start
+        err.seek(0)
+        lines = [line for line in err.read().splitlines() if line.strip()]
+    return seconds, usage.ru_maxrss / 1024, proc.returncode, (lines[-1] if lines else "")[:90]
+
+
+def resources() -> None:
+    task = "clean_living_room"
+    with tempfile.TemporaryDirectory() as tmp:
+        d = Path(tmp)
+        folder = d / "envs" / task
+        folder.mkdir(parents=True)
+        shutil.copy(TESTS / "fixtures" / "envs" / "one_room.json", folder / "good.json")
+        with open(folder / "sparse.json", "wb") as fh:
+            fh.truncate(3 * 1024**3)
+
+        def run(gen: str, *extra: str) -> list[str]:
+            return ["run", "--generators", f"hostile_generators:{gen}", "--tasks", task,
+                    "--output", str(d / gen), "--quiet", *extra]
+
+        cases = {
+            "baseline: one normal env": run("WithArgs", "--executor", "inprocess"),
+            "plug-in: 10,001 envs": run("Many", "--executor", "inprocess"),
+            "plug-in: 50,000-object env": run("Huge", "--executor", "inprocess"),
+            "never returns (inprocess)": run("Forever", "--executor", "inprocess", "--unit-timeout", "1"),
+            "never returns, ignores alarm": run("Stubborn", "--executor", "process", "--workers", "2",
+                                                "--tasks", f"{task},kitchen_fridge_restock",
+                                                "--unit-timeout", "1"),
+            "evaluate: 3 GB sparse file": ["evaluate", str(d / "envs"), "--name", "ext", "--output",
+                                           str(d / "ev"), "--executor", "inprocess"],
+            "check-env /dev/zero": ["check-env", "/dev/zero"],
+        }
+        print(f"\n{'resource case':<32} {'seconds':>8} {'peak MB':>8} {'exit':>5}  message")
+        worst_s = worst_mb = base_s = 0.0
+        for name, argv in cases.items():
+            seconds, peak, code, message = _measured(argv, TESTS)
+            if name.startswith("baseline"):
+                base_s = seconds
+            else:
+                worst_s, worst_mb = max(worst_s, seconds), max(worst_mb, peak)
+            print(f"{name:<32} {seconds:>8.2f} {peak:>8.0f} {code:>5}  {message}")
+    print(f"resources: worst_seconds={worst_s:.2f} worst_peak_mb={worst_mb:.0f} "
+          f"baseline_seconds={base_s:.2f} ratio={worst_s / base_s:.2f}")
 
 
 def _comb(n: int) -> list[tuple[float, float]]:

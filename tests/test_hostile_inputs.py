@@ -246,14 +246,22 @@ def test_negative_seeds_are_refused(tmp_path: Path, capsys: pytest.CaptureFixtur
 def test_partial_failures_exit_0_and_are_listed(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     from logicenveval.commands.run import report_failures
     from logicenveval.generators.base import GenerationFailure
-    from logicenveval.metrics.records import UnitRecord
+    from logicenveval.metrics.records import EnvSample, PhysicsSummary, UnitRecord
 
-    empty = UnitRecord(generator="g", task_id="a", samples=[], error=None)
-    assert report_failures([empty]) == 0  # measured: zero coverage, nothing failed
+    sample = EnvSample(generator="g", task_id="a", env_id="e", claimed_trajectory=None,
+                       covered_paths=[], trajectory=None, conditions=[], well_formed=False,
+                       problems=[], physics=PhysicsSummary(floor_plan=True, entity=True, relation=True),
+                       verdicts={}, sim_ms={})
+    measured = UnitRecord(generator="g", task_id="a", samples=[sample])
+    empty = UnitRecord(generator="g", task_id="c", samples=[], error=None)
     bad = UnitRecord(generator="g", task_id="b", failures=[GenerationFailure(stage="layout", message="no room")])
-    assert report_failures([empty, bad]) == 0  # partial
+    assert report_failures([measured, empty]) == 0  # measured: zero coverage on c, nothing failed
+    assert report_failures([measured, empty, bad]) == 0  # partial
     assert report_failures([bad]) == 1
     assert "layout: no room" in capsys.readouterr().err
+    # a generator that returns no environment anywhere measured nothing (docs/security.md): exit 1
+    assert report_failures([empty]) == 1
+    assert "the generator returned no environment" in capsys.readouterr().err
 
 
 def test_bad_key_is_caught_by_the_preflight(tmp_path: Path, capsys: pytest.CaptureFixture[str],

@@ -28,6 +28,7 @@ def run(args: argparse.Namespace) -> int:
     from rich.console import Console
     from rich.table import Table
 
+    from logicenveval.atomic import RESOURCE_ERRNOS, atomic_path, atomic_write_text
     from logicenveval.domain.catalog import load_catalog
     from logicenveval.domain.categories import normalise_env
     from logicenveval.envfiles import load_env
@@ -41,15 +42,17 @@ def run(args: argparse.Namespace) -> int:
                           hint="name the output file OUT.svg or OUT.png")
     env, categories = normalise_env(load_env(args.env), catalog)
     report = check_env(env, catalog, mesh_dir=Path(args.env).parent)
-    if args.render:
+    if args.render:  # temp file + rename: a failed write leaves the old file or none, never a part
         out = Path(args.render)
         try:
             if out.suffix.lower() == ".svg":
-                out.parent.mkdir(parents=True, exist_ok=True)
-                out.write_text(render_svg(env, report), encoding="utf-8")
+                atomic_write_text(out, render_svg(env, report))
             else:
-                render_png(env, out, report)
+                with atomic_path(out) as tmp:
+                    render_png(env, tmp, report)
         except OSError as exc:
+            if exc.errno in RESOURCE_ERRNOS:
+                raise  # a full disk: the CLI names the file, exit 1
             raise ConfigError(f"cannot write the render: {exc.strerror or exc}", file=str(out),
                               field="--render", hint="choose a writable path for the render") from None
     if args.json:

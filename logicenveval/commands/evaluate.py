@@ -11,13 +11,14 @@ from logicenveval.commands import options
 def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("envs_dir", help="folder of <task_id>/*.json EnvSpecs (e.g. a run's envs/<generator>)")
     p.add_argument("--name", default=None, help="leaderboard row name (default: the folder's name)")
-    p.add_argument("--tasks", default="found",
+    p.add_argument("--tasks", default=(), type=_tasks,
                    help="comma-separated task ids; 'found' (default) = every task folder in ENVS_DIR")
     p.add_argument("--tasks-dir", default=None, help="folder of <task_id>/task.json (default: the benchmark)")
     p.add_argument("--workers", type=options.workers, default=os.cpu_count() or 1)
     p.add_argument("--executor", default="process", choices=["process", "inprocess", "ray"])
     p.add_argument("--output", default="reports", help="parent folder of run folders")
-    p.add_argument("--run-id", default=None, help="run folder name (default: derived from the inputs)")
+    p.add_argument("--run-id", default=None, type=options.folder_name,
+                   help="run folder name (default: derived from the inputs)")
 
 
 def run(args: argparse.Namespace) -> int:
@@ -27,7 +28,7 @@ def run(args: argparse.Namespace) -> int:
     config = EvaluateConfig(
         envs_dir=args.envs_dir,
         name=args.name,
-        tasks=() if args.tasks == "found" else tuple(t.strip() for t in args.tasks.split(",") if t.strip()),
+        tasks=args.tasks,
         tasks_dir=args.tasks_dir,
         workers=args.workers,
         executor=args.executor,
@@ -47,3 +48,8 @@ def run(args: argparse.Namespace) -> int:
     from logicenveval.commands.run import report_failures
 
     return report_failures(outcome.records)
+
+
+def _tasks(text: str) -> tuple[str, ...]:
+    """`found` (every task folder present: returned as ()) or a list of task ids."""
+    return () if text.strip() == "found" else options.name_list(text)

@@ -49,8 +49,10 @@ def seeds_run_dir(config: RunConfig, seeds: Sequence[int]) -> Path:
     if config.run_id:
         return Path(config.output) / config.run_id
     blob = json.dumps(seeds_identity(config, seeds), sort_keys=True).encode()
-    slug = re.sub(r"[^A-Za-z0-9]+", "-", config.model).strip("-").lower() or "model"
+    slug = re.sub(r"[^A-Za-z0-9]+", "-", config.model).strip("-").lower()[:40] or "model"
     tag = "-".join(str(s) for s in seeds)
+    if len(tag) > 40:  # a long list would make the folder name too long: the hash tells it apart
+        tag = f"{seeds[0]}-to-{seeds[-1]}-n{len(seeds)}"
     return Path(config.output) / f"{slug}-seeds{tag}-{hashlib.sha256(blob).hexdigest()[:8]}"
 
 
@@ -60,7 +62,16 @@ def run_seeds(config: RunConfig, seeds: Sequence[int], *, console: Console | Non
         raise ConfigError(f"--seeds needs distinct seeds, got {list(seeds)}", field="--seeds",
                           hint="e.g. --seeds 0,1,2")
     parent = seeds_run_dir(config, seeds)
-    RunStore(parent).bind_config(seeds_identity(config, seeds))
+    store = RunStore(parent)
+    store.claim(seeds_identity(config, seeds))  # the parent folder is this run's until it ends
+    try:
+        return _run_seeds(config, seeds, parent, console, show_progress)
+    finally:
+        store.unlock()
+
+
+def _run_seeds(config: RunConfig, seeds: Sequence[int], parent: Path, console: Console | None,
+               show_progress: bool) -> SeedsOutcome:
     per_seed = []
     records: list[UnitRecord] = []
     computed = reused = 0
