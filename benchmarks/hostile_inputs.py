@@ -1,16 +1,40 @@
-"""Time to refuse hostile inputs (issue 20), against the time to accept a genuine one in the same run.
+"""Time to refuse hostile inputs (issues 20 and 27), against the time to accept a genuine one.
 
-Each hostile input is generated here (nothing big is committed) and handed to the public loader;
-the figure is the wall time until the clear error. The baseline is loading a real benchmark
-policy and task, so a ratio near 1 means a hostile file costs no more than a normal one.
-Last line: `worst_refusal_ms=<float> baseline_ms=<float> ratio=<float>`.
+First, large but *valid* policies (issue 27, item 18): `tasks mutants` (mutant generation and
+classification by simulation) on a generated correct BT of clean_living_room — its guarded
+TidyToy/TidyBook trees inlined again and again (`big_correct_bt`; 48 copies = 53 KB, the
+reported case) or its TidyToy Fallback given ever more alternatives (`wide_correct_bt`) — in a
+fresh process each, with wall time and peak RSS, against the shipped 4 KB BT in the same run.
+Line: `mutants_53KB_s=<float> mutants_53KB_MB=<float> shipped_s=<float>`.
+
+Before both, houses and exports (issue 27, items 6, 14, 15; `house_cases`): GLB and ProcTHOR
+export of 10k-50k-vertex rooms, import-house/check-house of houses with repeated ids, over the
+object limit, or with 1,500 rooms, each a fresh process.
+Line: `worst_house_s=<float> worst_house_rss_mb=<float>`.
+
+Then each hostile file is generated here (nothing big is committed) and handed to the public
+loader; the figure is the wall time until the clear error. The baseline is loading a real
+benchmark policy and task, so a ratio near 1 means a hostile file costs no more than a normal one.
+Line: `worst_refusal_ms=<float> baseline_ms=<float> ratio=<float>`.
+
+Last, resource cases (issue 27) through the CLI, each in a fresh process (peak memory is the
+process's and its workers' maximum resident set, from `wait4`): a plug-in returning 10,001
+environments or a 50,000-object one, a generator that never returns (bounded by
+`--unit-timeout 1`, in-process and in a worker that even ignores the alarm), a 3 GB sparse file
+in an `evaluate` folder, `check-env /dev/zero`. The plug-ins are `tests/hostile_generators.py`
+(well under 1 MB). The baseline is a normal one-environment run of the same plug-in module. Last line:
+`resources: worst_seconds=<float> worst_peak_mb=<float> baseline_seconds=<float> ratio=<float>`.
 """
 
 from __future__ import annotations
 
 import contextlib
 import json
+import os
+import shutil
 import statistics
+import subprocess
+import sys
 import tempfile
 import time
 from collections.abc import Callable
@@ -18,7 +42,8 @@ from pathlib import Path
 
 from logicenveval.benchmark import DEFAULT_TASKS_DIR, load_task_file
 from logicenveval.errors import LogicEnvEvalError
-from logicenveval.sim.loader import load_policy
+from logicenveval.sim.loader import load_policy, policy_to_xml
+from logicenveval.sim.policy import Policy, PolicyNode
 
 TASK = "clean_living_room"
 
@@ -28,6 +53,65 @@ def fan_out(levels: int) -> str:
              "</Sequence></BehaviorTree>" for i in range(levels)]
     return ('<root BTCPP_format="4" main_tree_to_execute="T0">' + "".join(trees)
             + f'<BehaviorTree ID="T{levels}"><AlwaysSuccess/></BehaviorTree></root>')
+
+
+def big_correct_bt(copies: int) -> str:
+    """clean_living_room's correct BT with its guarded TidyToy and TidyBook trees inlined
+    `copies` more times before CleanMark: still correct (the copies find nothing to do), every
+    copy is ticked, and each adds its own mutants (48 copies: 53 KB)."""
+    p = load_policy(DEFAULT_TASKS_DIR / TASK / "policies" / "correct.xml")
+    main = p.trees[p.main]
+    extra = tuple(p.trees[t] for _ in range(copies) for t in ("TidyToy", "TidyBook"))
+    root = PolicyNode(main.kind, main.params, (*main.children[:-1], *extra, main.children[-1]),
+                      main.name)
+    return policy_to_xml(Policy(p.main, {**p.trees, p.main: root}))
+
+
+def wide_correct_bt(alternatives: int) -> str:
+    """clean_living_room's correct BT whose TidyToy Fallback has `alternatives` copies of its
+    IfThenElse (never reached after the first): one node with thousands of children."""
+    p = load_policy(DEFAULT_TASKS_DIR / TASK / "policies" / "correct.xml")
+    fb = p.trees["TidyToy"]
+    kids = (fb.children[0], *(fb.children[1] for _ in range(alternatives)))
+    return policy_to_xml(Policy(p.main, {**p.trees, "TidyToy": PolicyNode(fb.kind, fb.params, kids,
+                                                                           fb.name)}))
+
+
+def _measure(argv: list[str]) -> tuple[float, float, int]:
+    """(seconds, peak RSS in MB, exit code) of one CLI call in a fresh process."""
+    t0 = time.perf_counter()
+    proc = subprocess.Popen([sys.executable, "-m", "logicenveval", *argv], stdout=subprocess.DEVNULL,
+                            stderr=subprocess.DEVNULL)
+    _, status, usage = os.wait4(proc.pid, 0)
+    proc.returncode = os.waitstatus_to_exitcode(status)
+    return time.perf_counter() - t0, usage.ru_maxrss / 1024, proc.returncode
+
+
+def _mutants_run(tasks: Path) -> tuple[float, float]:
+    """Seconds and peak MB of `tasks mutants --json` on a tasks folder, in a fresh process."""
+    seconds, mb, code = _measure(["tasks", "mutants", "--json", "--tasks-dir", str(tasks)])
+    if code != 0:
+        raise SystemExit(f"tasks mutants failed on {tasks} (exit {code})")
+    return seconds, mb
+
+
+def large_correct_bts() -> None:
+    print(f"{'valid large policy':<24} {'bytes':>12} {'mutants s':>10} {'peak MB':>8}")
+    with tempfile.TemporaryDirectory() as tmp:
+        results: dict[str, tuple[float, float]] = {}
+        cases = {"shipped": None, **{f"copies_{k}": big_correct_bt(k) for k in (24, 48, 96, 192)},
+                 **{f"alternatives_{k}": wide_correct_bt(k) for k in (100, 1000, 2000)}}
+        for name, text in cases.items():
+            tasks = Path(tmp) / name
+            shutil.copytree(DEFAULT_TASKS_DIR / TASK, tasks / TASK)
+            policy = tasks / TASK / "policies" / "correct.xml"
+            if text is not None:
+                policy.write_text(text)
+            results[name] = _mutants_run(tasks)
+            print(f"{name:<24} {policy.stat().st_size:>12} {results[name][0]:>10.2f} "
+                  f"{results[name][1]:>8.0f}")
+    big_s, big_mb = results["copies_48"]
+    print(f"mutants_53KB_s={big_s:.2f} mutants_53KB_MB={big_mb:.0f} shipped_s={results['shipped'][0]:.2f}")
 
 
 def _ms(fn: Callable[[], object], repeat: int = 5) -> float:
@@ -41,6 +125,8 @@ def _ms(fn: Callable[[], object], repeat: int = 5) -> float:
 
 
 def main() -> None:
+    house_cases()  # first: each case's peak RSS includes this process's pages at the fork
+    large_correct_bts()
     folder = DEFAULT_TASKS_DIR / TASK
     task = json.loads((folder / "task.json").read_text())
     with tempfile.TemporaryDirectory() as tmp:
@@ -82,6 +168,120 @@ def main() -> None:
             print(f"{name:<24} {path.stat().st_size:>12} {ms:>14.1f}")
     print(f"baseline (load one real task + policy): {baseline:.1f} ms")
     print(f"worst_refusal_ms={worst:.1f} baseline_ms={baseline:.1f} ratio={worst / baseline:.2f}")
+    resources()
+
+
+TESTS = Path(__file__).resolve().parents[1] / "tests"
+
+
+def _measured(argv: list[str], cwd: Path) -> tuple[float, float, int, str]:
+    """Wall seconds, peak resident MB (the process and the workers it waited for), exit code,
+    last line of stderr."""
+    start = time.perf_counter()
+    with tempfile.TemporaryFile("w+") as err:
+        proc = subprocess.Popen([sys.executable, "-m", "logicenveval", *argv], cwd=cwd,
+                                stdout=subprocess.DEVNULL, stderr=err, text=True)
+        _, status, usage = os.wait4(proc.pid, 0)
+        proc.returncode = os.waitstatus_to_exitcode(status)
+        seconds = time.perf_counter() - start
+        err.seek(0)
+        lines = [line for line in err.read().splitlines() if line.strip()]
+    return seconds, usage.ru_maxrss / 1024, proc.returncode, (lines[-1] if lines else "")[:90]
+
+
+def resources() -> None:
+    task = "clean_living_room"
+    with tempfile.TemporaryDirectory() as tmp:
+        d = Path(tmp)
+        folder = d / "envs" / task
+        folder.mkdir(parents=True)
+        shutil.copy(TESTS / "fixtures" / "envs" / "one_room.json", folder / "good.json")
+        with open(folder / "sparse.json", "wb") as fh:
+            fh.truncate(3 * 1024**3)
+
+        def run(gen: str, *extra: str) -> list[str]:
+            return ["run", "--generators", f"hostile_generators:{gen}", "--tasks", task,
+                    "--output", str(d / gen), "--quiet", *extra]
+
+        cases = {
+            "baseline: one normal env": run("WithArgs", "--executor", "inprocess"),
+            "plug-in: 10,001 envs": run("Many", "--executor", "inprocess"),
+            "plug-in: 50,000-object env": run("Huge", "--executor", "inprocess"),
+            "never returns (inprocess)": run("Forever", "--executor", "inprocess", "--unit-timeout", "1"),
+            "never returns, ignores alarm": run("Stubborn", "--executor", "process", "--workers", "2",
+                                                "--tasks", f"{task},kitchen_fridge_restock",
+                                                "--unit-timeout", "1"),
+            "evaluate: 3 GB sparse file": ["evaluate", str(d / "envs"), "--name", "ext", "--output",
+                                           str(d / "ev"), "--executor", "inprocess"],
+            "check-env /dev/zero": ["check-env", "/dev/zero"],
+        }
+        print(f"\n{'resource case':<32} {'seconds':>8} {'peak MB':>8} {'exit':>5}  message")
+        worst_s = worst_mb = base_s = 0.0
+        for name, argv in cases.items():
+            seconds, peak, code, message = _measured(argv, TESTS)
+            if name.startswith("baseline"):
+                base_s = seconds
+            else:
+                worst_s, worst_mb = max(worst_s, seconds), max(worst_mb, peak)
+            print(f"{name:<32} {seconds:>8.2f} {peak:>8.0f} {code:>5}  {message}")
+    print(f"resources: worst_seconds={worst_s:.2f} worst_peak_mb={worst_mb:.0f} "
+          f"baseline_seconds={base_s:.2f} ratio={worst_s / base_s:.2f}")
+
+
+def _comb(n: int) -> list[tuple[float, float]]:
+    """A simple room polygon with `n` vertices: teeth of alternating height (tests/test_hostile_house)."""
+    k = n // 4
+    low = [p for i in range(k) for p in ((round(i * 0.1, 2), 0.0), (round(i * 0.1 + 0.05, 2), 0.0))]
+    high = [p for i in reversed(range(k)) for p in ((round(i * 0.1 + 0.05, 2), 5.0 + (i % 2) * 0.3),
+                                                   (round(i * 0.1, 2), 5.0 + (i % 2) * 0.3))]
+    return low + high
+
+
+def _house_with(objects: list[dict[str, object]], rooms: int = 1) -> dict[str, object]:
+    """A ProcTHOR-layout house (tests/fixtures/houses/procthor10k_kitchen.json) with other rooms
+    and objects."""
+    house: dict[str, object] = json.loads((Path(__file__).resolve().parents[1] / "tests" / "fixtures"
+                                           / "houses" / "procthor10k_kitchen.json").read_text())
+    house["rooms"] = [{"id": f"room|{i}", "roomType": "Kitchen", "floorMaterial": {"name": "PureWhite"},
+                       "floorPolygon": [{"x": x + 4 * i, "y": 0, "z": z} for x, z in ((0, 0), (0, 4), (4, 4), (4, 0))]}
+                      for i in range(rooms)]
+    house["walls"], house["doors"], house["windows"], house["objects"] = [], [], [], objects
+    return house
+
+
+def house_cases() -> None:
+    """Issue 27 items 6, 14, 15: export, import-house and check-house of big inputs under 1 MB,
+    each in a fresh process (its Python start-up included; its peak RSS includes the pages of the
+    parent at the fork, so this runs before anything big is loaded). Prints one row per case and
+    `worst_house_s=<float> worst_house_rss_mb=<float>` (targets: < 10 s, < 1024 MB)."""
+    with tempfile.TemporaryDirectory() as tmp:
+        d = Path(tmp)
+        cases: dict[str, tuple[Path, list[str]]] = {}
+        for n in (10_000, 20_000, 50_000):
+            env = {"task_id": "t", "env_id": "e", "rooms": [{"id": "living_room", "polygon": _comb(n)}]}
+            path = d / f"room_{n}.json"
+            path.write_text(json.dumps(env))
+            cases[f"glb_room_{n // 1000}k_vertices"] = (path, ["export", str(path), "--format", "glb",
+                                                               "--out", str(d / "o.glb")])
+            cases[f"procthor_room_{n // 1000}k_vertices"] = (path, ["export", str(path), "--format",
+                                                                    "procthor", "--out", str(d / "o.json")])
+        obj = {"assetId": "Bread_1", "id": "Bread|2|0", "kinematic": False, "position": {"x": 1, "y": 1, "z": 1},
+               "rotation": {"x": 0, "y": 0, "z": 0}, "layer": "Procedural1", "material": None}
+        for name, objects, rooms in (("house_1990_same_ids", [obj] * 1990, 1),
+                                     ("house_5000_objects_over_limit", [obj] * 5000, 1),
+                                     ("house_1500_rooms", [obj] * 1500, 1500)):
+            path = d / f"{name}.json"
+            path.write_text(json.dumps(_house_with(objects, rooms)))
+            cases[f"import_{name}"] = (path, ["import-house", str(path), "--task", "kitchen_breakfast_prep",
+                                             "--out", str(d / "imported.json")])
+            cases[f"check_{name}"] = (path, ["check-house", str(path)])
+        worst_s = worst_mb = 0.0
+        print(f"{'house/export case':<34} {'bytes':>9} {'s':>7} {'RSS MB':>8} {'exit':>5}")
+        for name, (path, argv) in cases.items():
+            seconds, mb, code = _measure(argv)
+            worst_s, worst_mb = max(worst_s, seconds), max(worst_mb, mb)
+            print(f"{name:<34} {path.stat().st_size:>9} {seconds:>7.2f} {mb:>8.0f} {code:>5}")
+        print(f"worst_house_s={worst_s:.2f} worst_house_rss_mb={worst_mb:.0f}")
 
 
 if __name__ == "__main__":

@@ -1,12 +1,19 @@
-"""Throughput of the PhyPR checker on a 40-object, 4-room valid environment (one core).
+"""Throughput and scaling of the PhyPR checker (one core).
 
-Builds the environment deterministically from a seeded numpy Generator, checks that it passes,
-then times `check_env` with the sort-and-sweep broad phase and the naive all-pairs fcl baseline.
-Last line: `objects=40 checks_per_s=<float>`.
+1. A 40-object, 4-room valid environment built deterministically from a seeded numpy Generator:
+   checks per second with the broad phase and with the naive all-pairs fcl baseline.
+2. Scaling (issue 27 item 13), each case in a fresh subprocess so that its peak RSS is its own:
+   `spread` (n/2 tables with an item on each, a valid room) and `pile` (n copies of one object in
+   one place: n²/2 colliding pairs, the hostile case) at 500 and 2,000 objects — seconds of
+   `check_env` and peak RSS of the process — and the all-pairs path as the in-run baseline where
+   it is cheap (up to 500 objects; at 2,000 in a pile it takes minutes and GBs). `import_only`
+   is the RSS of a process that only imported the checker.
+Last line: `objects=2000 pile_s=<float> pile_peak_mb=<float> spread_s=<float> checks_per_s=<float>`.
 """
 
 from __future__ import annotations
 
+import math
 import time
 from typing import Any
 
@@ -82,9 +89,81 @@ def _rate(env: EnvSpec, broad_phase: bool, seconds: float = 3.0) -> float:
     return n / (time.perf_counter() - start)
 
 
+def scaled_env(kind: str, n: int) -> EnvSpec:
+    """`spread`: n/2 coffee tables on a grid in one square room, a book on each; `pile`: n sofas at
+    one position."""
+    if kind == "pile":
+        sofa = {"category": "sofa", "room": "r", "position": [2.0, 0.425, 2.0], "size": [2.0, 0.85, 0.9]}
+        objects = [{"id": f"o{i}", **sofa} for i in range(n)]
+        side = 5.0
+    else:
+        per_row = math.ceil(math.sqrt(n / 2))
+        side = 1.0 + 1.5 * per_row
+        objects = []
+        for k in range(n // 2):
+            x, z = 1.0 + 1.5 * (k % per_row), 1.0 + 1.5 * (k // per_row)
+            objects.append({"id": f"t{k}", "category": "coffee_table", "room": "r", "position": [x, 0.225, z],
+                            "size": [1.0, 0.45, 0.6]})
+            objects.append({"id": f"b{k}", "category": "book", "room": "r", "support": f"t{k}",
+                            "position": [x, 0.47, z], "size": [0.2, 0.04, 0.25]})
+    room = {"id": "r", "type": "LivingRoom", "polygon": [[0, 0], [side, 0], [side, side], [0, side]]}
+    return env_from_dict({"task_id": "bench", "env_id": f"{kind}{n}", "rooms": [room], "objects": objects})
+
+
+def _one(kind: str, n: int, path: str) -> None:
+    """Child process: time one check, print seconds, peak RSS (MB) and failures as JSON."""
+    import json
+    import resource
+
+    if kind == "import_only":
+        print(json.dumps({"s": 0.0, "peak_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024,
+                          "failures": 0}))
+        return
+    env = scaled_env(kind, n)
+    start = time.perf_counter()
+    report = check_env(env, broad_phase=path == "broad")
+    seconds = time.perf_counter() - start
+    print(json.dumps({"s": seconds, "peak_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024,
+                      "failures": len(report.failures()), "passed": report.passed}))
+
+
+def _measure(kind: str, n: int, path: str) -> dict[str, Any]:
+    import json
+    import subprocess
+    import sys
+
+    out = subprocess.run([sys.executable, __file__, "--one", kind, str(n), path], check=True,
+                         capture_output=True, text=True).stdout
+    result: dict[str, Any] = json.loads(out.strip().splitlines()[-1])
+    return result
+
+
+def scaling() -> dict[tuple[str, int, str], dict[str, Any]]:
+    base = _measure("import_only", 0, "broad")
+    print(f"import_only peak_mb={base['peak_mb']:.0f}")
+    print(f"{'case':<8} {'objects':>7} {'path':<9} {'seconds':>8} {'peak MB':>8} {'failures':>9} passed")
+    results = {}
+    for kind in ("spread", "pile"):
+        for n in (500, 2000):
+            for path in ("broad", "allpairs"):
+                if path == "allpairs" and n > 500:
+                    continue  # the old quadratic path: minutes and GBs on the 2,000-object pile
+                r = results[kind, n, path] = _measure(kind, n, path)
+                print(f"{kind:<8} {n:>7} {path:<9} {r['s']:>8.2f} {r['peak_mb']:>8.0f} {r['failures']:>9} "
+                      f"{r['passed']}")
+    for kind in ("spread", "pile"):
+        b, a = results[kind, 500, "broad"], results[kind, 500, "allpairs"]
+        print(f"{kind} 500: all-pairs / broad phase time {a['s'] / b['s']:.1f}x")
+    return results
+
+
 def main() -> None:
     import os
+    import sys
 
+    if len(sys.argv) == 5 and sys.argv[1] == "--one":
+        _one(sys.argv[2], int(sys.argv[3]), sys.argv[4])
+        return
     print("load (1, 5, 15 min): " + " ".join(f"{x:.2f}" for x in os.getloadavg()))
     env = build_env(np.random.default_rng(20261123))
     report = check_env(env)
@@ -94,7 +173,10 @@ def main() -> None:
     print(f"rooms={len(env.rooms)} objects={len(env.objects)} passed={report.passed}")
     print(f"naive_all_pairs_checks_per_s={naive:.1f}")
     print(f"broad_phase_speedup={fast / naive:.2f}x")
-    print(f"objects={len(env.objects)} checks_per_s={fast:.1f}")
+    scaled = scaling()
+    pile, spread = scaled["pile", 2000, "broad"], scaled["spread", 2000, "broad"]
+    print(f"objects=2000 pile_s={pile['s']:.2f} pile_peak_mb={pile['peak_mb']:.0f} spread_s={spread['s']:.2f} "
+          f"checks_per_s={fast:.1f}")
 
 
 if __name__ == "__main__":

@@ -5,9 +5,12 @@
     python benchmarks/trajectory_cover.py --forbidden 0.15 --subtasks 12 --paths 20
         # random forests where each cross-subtask path pair is forbidden with that probability;
         # last line `exact_median_s=... proven=<proven>/<draws with a cover> mtsa_s=...`
+    python benchmarks/trajectory_cover.py --plans    # the exhaustive search on the plans the
+        # offline model derives (what `logicenvgen-exhaustive` searches): per-task subsets and time
 
 Selectors: `product` (the Cartesian product, "W/O MTSA"), `mtsa` (paper Algorithm 1),
-`exhaustive` (the paper's exponential minimum-set-cover search, 10 s budget), `exact` (ours).
+`exhaustive` (the paper's exponential minimum-set-cover search; its budget counts subsets),
+`exact` (ours).
 Trees are drawn from a seeded numpy Generator; each subtask's tree has exactly the stated number
 of leaves (random shape, depth up to 3). The product and MTSA are skipped when the product or the
 time budget is too large, and a search that runs out of budget says so; nothing is hidden.
@@ -16,6 +19,7 @@ time budget is too large, and a search that runs out of budget says so; nothing 
 from __future__ import annotations
 
 import argparse
+import itertools
 import math
 import statistics
 import sys
@@ -33,7 +37,7 @@ from logicenveval.benchmark import load_task, task_ids  # noqa: E402
 from logicenveval.errors import LogicEnvEvalError  # noqa: E402
 from logicenveval.logic.constraints import PathConstraints, task_constraints  # noqa: E402
 from logicenveval.logic.exact import exact_cover  # noqa: E402
-from logicenveval.logic.exhaustive import exhaustive_cover  # noqa: E402
+from logicenveval.logic.exhaustive import MAX_SUBSETS, exhaustive_cover  # noqa: E402
 from logicenveval.logic.mtsa import mtsa_impl  # noqa: E402
 from logicenveval.logic.reference import reference_set  # noqa: E402
 from logicenveval.logic.selectors import get_selector, uncovered  # noqa: E402
@@ -44,7 +48,8 @@ CASES = [(6, 4), (8, 5), (10, 6)]
 HEADLINE = (8, 5)
 PRODUCT_MAX = 500_000
 MTSA_BUDGET_S = 20.0
-EXHAUSTIVE_BUDGET_S = 10.0
+#: the random forests' budget for the exhaustive search (the generator's default is larger)
+EXHAUSTIVE_SUBSETS = 10**9
 
 
 def random_tree(rng: np.random.Generator, leaves: int, prefix: str, depth: int = 0) -> Node | Leaf:
@@ -92,7 +97,7 @@ def run_forests(seed: int) -> int:
             ex_txt = f"{len(ex)} in {(time.perf_counter() - t0) * 1000:.1f} ms"
             del ex
             t0 = time.perf_counter()
-            search = exhaustive_cover(forest, budget_s=EXHAUSTIVE_BUDGET_S)
+            search = exhaustive_cover(forest, max_subsets=EXHAUSTIVE_SUBSETS)
             search_ms = (time.perf_counter() - t0) * 1000
             search_txt = (f"{len(search.trajectories)} in {search_ms:.1f} ms" if search.optimal
                           else f"budget out ({search.tested:,} sets)")
@@ -183,11 +188,10 @@ def run_tasks(tasks_dir: Path) -> int:
         cons = task_constraints(task)
         product = math.prod(len(p) for p in paths)
         mt = mtsa_impl(paths, cons, time.monotonic() + MTSA_BUDGET_S)
-        search = exhaustive_cover(paths, cons, budget_s=EXHAUSTIVE_BUDGET_S)
+        search = exhaustive_cover(paths, cons)
         result = exact_cover(paths, cons)
         ms = {"mtsa": median_ms(partial(mtsa_impl, paths, cons), repeat=21),
-              "exhaustive": median_ms(partial(exhaustive_cover, paths, cons, budget_s=EXHAUSTIVE_BUDGET_S),
-                                      repeat=5),
+              "exhaustive": median_ms(partial(exhaustive_cover, paths, cons), repeat=5),
               "exact": median_ms(partial(exact_cover, paths, cons), repeat=21)}
         for name, value in ms.items():
             times[name].append(value)
@@ -215,6 +219,64 @@ def run_tasks(tasks_dir: Path) -> int:
     return 0
 
 
+def _masks(paths: list[list[DecisionPath]]) -> tuple[list[int], int]:
+    """The product's path masks as `exhaustive_cover` builds them (no constraints)."""
+    bit = {p.key: 1 << n for n, p in enumerate(p for ps in paths for p in ps)}
+    masks = [sum(bit[p.key] for p in c) for c in itertools.product(*paths)]
+    return masks, (1 << len(bit)) - 1
+
+
+def run_plans(tasks_dir: Path, max_subsets: int, only: list[str], plain_subsets: int) -> int:
+    """Per task: the exhaustive search on the plan the offline model derives (the trees
+    `logicenvgen-exhaustive` searches, not the GT), with its subsets tested and wall time; and,
+    as the baseline of the same run, the plain Python loop's rate over its first subsets."""
+    import os
+
+    from logicenveval.domain.catalog import load_catalog
+    from logicenveval.generators.base import GenerationContext
+    from logicenveval.generators.brief import generator_brief
+    from logicenveval.generators.plan import derive_plan
+    from logicenveval.llm.registry import make_model
+    from logicenveval.logic.exhaustive import _search_plain
+
+    model = make_model("offline", "", no_cache=True)
+    catalog = load_catalog()
+    print(f"load={' '.join(f'{x:.2f}' for x in os.getloadavg())} max_subsets={max_subsets:,}")
+    print("| task | paths per subtask | product N | minimum cover | subsets tested | finished | "
+          "exhaustive s | subsets/s | plain loop subsets/s | MTSA size |")
+    print("|---|---|---:|---:|---:|---|---:|---:|---:|---:|")
+    total = plain_total = 0.0
+    tested_total = plain_tested = 0
+    hit: list[str] = []
+    for task_id in only or task_ids(tasks_dir):
+        task = load_task(task_id, tasks_dir)
+        brief = generator_brief(task, "roles", model, seed=0)
+        ctx = GenerationContext(model=model, catalog=catalog, rng=np.random.default_rng(0), seed=0)
+        paths = task_paths(derive_plan(brief, ctx).task)
+        t0 = time.perf_counter()
+        search = exhaustive_cover(paths, max_subsets=max_subsets)
+        elapsed = time.perf_counter() - t0
+        masks, full = _masks(paths)
+        t0 = time.perf_counter()
+        _, plain_n = _search_plain(masks, full, min(plain_subsets, search.tested))
+        plain_s = time.perf_counter() - t0
+        total, tested_total = total + elapsed, tested_total + search.tested
+        plain_total, plain_tested = plain_total + plain_s, plain_tested + plain_n
+        exact = exact_cover(paths)
+        if search.optimal:
+            assert len(search.trajectories) == len(exact.trajectories)
+        else:
+            hit.append(task_id)
+        mtsa = get_selector("mtsa").select(paths)
+        print(f"| {task_id} | {'×'.join(str(len(p)) for p in paths)} | {math.prod(len(p) for p in paths):,} | "
+              f"{len(exact.trajectories)} | {search.tested:,} | {'yes' if search.optimal else 'budget hit'} | "
+              f"{elapsed:.2f} | {search.tested / elapsed:.3g} | {plain_n / plain_s:.3g} | {len(mtsa)} |")
+    rate, plain_rate = tested_total / total, plain_tested / plain_total
+    print(f"exhaustive_total_s={total:.1f} budget_hit={len(hit)} {','.join(hit)} "
+          f"subsets_per_s={rate:.3g} plain_loop_subsets_per_s={plain_rate:.3g} speedup={rate / plain_rate:.0f}")
+    return 0
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--tasks", action="store_true", help="print the per-task table instead")
@@ -226,7 +288,17 @@ def main() -> int:
     parser.add_argument("--paths", type=int, default=20)
     parser.add_argument("--draws", type=int, default=10)
     parser.add_argument("--mtsa-budget", type=float, default=MTSA_BUDGET_S)
+    parser.add_argument("--plans", action="store_true",
+                        help="the exhaustive search on the offline model's derived plans, per task")
+    parser.add_argument("--max-subsets", type=int, default=MAX_SUBSETS,
+                        help="the exhaustive search's budget in subsets tested (--plans)")
+    parser.add_argument("--only", default="", help="comma-separated task ids (--plans)")
+    parser.add_argument("--plain-subsets", type=int, default=2_000_000,
+                        help="subsets the plain-loop baseline tests per task (--plans)")
     args = parser.parse_args()
+    if args.plans:
+        return run_plans(args.tasks_dir, args.max_subsets, [t for t in args.only.split(",") if t],
+                         args.plain_subsets)
     if args.forbidden is not None:
         return run_forbidden(args.seed, args.forbidden, args.subtasks, args.paths, args.draws, args.mtsa_budget)
     return run_tasks(args.tasks_dir) if args.tasks else run_forests(args.seed)

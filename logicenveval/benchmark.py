@@ -36,7 +36,7 @@ def load_task_file(path: str | Path) -> Task:
     except ValidationError as exc:
         loc, msg = first_error(exc)
         raise TaskFormatError(msg, file=str(p), field=loc,
-                              hint="see DESIGN.md §4 for the task format") from None
+                              hint="see docs/task-format.md for the task format") from None
     except ConditionSyntaxError as exc:
         raise TaskFormatError(exc.message, file=str(p), column=exc.column, hint=exc.hint) from None
     except RecursionError:

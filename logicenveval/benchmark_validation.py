@@ -17,10 +17,11 @@ from pathlib import Path
 
 import z3
 
+from logicenveval.atomic import atomic_write_text
 from logicenveval.benchmark import load_task_file, tasks_dir
 from logicenveval.domain.catalog import Catalog, load_catalog
-from logicenveval.errors import LogicEnvEvalError, TaskFormatError
-from logicenveval.limits import limit, raise_hint
+from logicenveval.errors import LogicEnvEvalError, PolicyFormatError, TaskFormatError
+from logicenveval.limits import limit, raise_hint, read_text
 from logicenveval.model.conditions import And, Cond, Const, Not, Or, Pred, atoms, parse
 from logicenveval.model.rooms import room_type_of
 from logicenveval.model.task import FAULTY_KINDS, POLICY_KINDS, Leaf, Node, Task
@@ -85,10 +86,13 @@ def write_models(directory: str | Path | None = None, ids: list[str] | None = No
         task = load_task_file(folder / "task.json")
         for rel in task.policies.values():
             path = folder / rel
-            text = path.read_text(encoding="utf-8")
+            if not path.resolve().is_relative_to(folder.resolve()):
+                continue  # a policy outside its task folder is never written (validate reports it)
+            text = read_text(path, what="policy file", error=PolicyFormatError,
+                             max_bytes="max_xml_bytes", hint="check the task's policies")
             new = with_current_model(text)
             if new != text:
-                path.write_text(new, encoding="utf-8")
+                atomic_write_text(path, new)
                 changed.append(path)
     return changed
 

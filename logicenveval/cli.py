@@ -11,6 +11,7 @@ import importlib
 import sys
 from collections.abc import Sequence
 
+from logicenveval.atomic import RESOURCE_ERRNOS
 from logicenveval.errors import LogicEnvEvalError
 from logicenveval.redact import redact
 
@@ -27,6 +28,9 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "export": ("logicenveval.commands.export", "write an environment as ProcTHOR house JSON or GLB"),
     "check-house": ("logicenveval.commands.check_house",
                     "check a ProcTHOR house JSON against ProcTHOR's databases"),
+    "lint": ("logicenveval.commands.lint",
+             "list the binding, category and affordance problems of a folder of EnvSpecs"),
+    "schema": ("logicenveval.commands.schema", "print the JSON Schema of EnvSpecs, tasks or results"),
     "report": ("logicenveval.commands.report", "rebuild leaderboard.md/.html of a run folder"),
     "compare": ("logicenveval.commands.compare", "compare two runs; exit 1 on a regression"),
 }
@@ -59,11 +63,27 @@ def main(argv: Sequence[str] | None = None) -> int:
               "format nests more than a few levels)", file=sys.stderr)
         return 2
     except OSError as exc:
-        where = f"{exc.filename}: " if exc.filename else ""
-        print(f"error: {where}{exc.strerror or exc} (fix: check that the path exists, is "
-              "writable and that the disk has space; finished units are kept)", file=sys.stderr)
-        return 1
+        return _os_error(exc, args.command)
     except KeyboardInterrupt:
-        print("interrupted; finished units are kept and a re-run resumes", file=sys.stderr)
+        kept = " finished units are kept and a re-run resumes" if args.command in RESUMABLE else ""
+        print(f"interrupted;{kept or ' nothing was written partially'}", file=sys.stderr)
         return 130
     return code
+
+
+#: commands whose finished units survive a failure (a re-run of the same command resumes)
+RESUMABLE = frozenset({"run", "evaluate"})
+
+
+def _os_error(exc: OSError, command: str) -> int:
+    """One line for an operating-system error: exit 1 when the machine failed the work (a full
+    disk, an I/O error), 2 when the path given cannot be used (missing, a folder, read-only)."""
+    where = f"{exc.filename}: " if exc.filename else ""
+    kept = "; finished units are kept and a re-run resumes" if command in RESUMABLE else ""
+    if exc.errno in RESOURCE_ERRNOS:
+        print(f"error: {where}{exc.strerror or exc} (fix: free disk space or fix the device, then "
+              f"re-run{kept})", file=sys.stderr)
+        return 1
+    print(f"error: {where}{exc.strerror or exc} (fix: check that the path exists, is a file or "
+          f"folder as expected and is writable{kept})", file=sys.stderr)
+    return 2

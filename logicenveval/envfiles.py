@@ -8,6 +8,7 @@ from typing import Any
 
 from pydantic import ValidationError
 
+from logicenveval.atomic import atomic_write_text
 from logicenveval.errors import EnvSpecError
 from logicenveval.limits import limit, parse_json, raise_hint, read_text
 from logicenveval.model.envspec import EnvSpec
@@ -25,7 +26,7 @@ def env_from_dict(data: Any, *, source: str | None = None) -> EnvSpec:
     except ValidationError as exc:
         loc, msg = first_error(exc)
         raise EnvSpecError(msg, file=source, field=loc,
-                           hint="see DESIGN.md §6 for the EnvSpec format") from None
+                           hint="see docs/envspec.md for the EnvSpec format") from None
 
 
 def load_env(path: str | Path) -> EnvSpec:
@@ -41,6 +42,5 @@ def env_to_json(env: EnvSpec) -> str:
 
 
 def save_env(env: EnvSpec, path: str | Path) -> None:
-    p = Path(path)
-    p.parent.mkdir(parents=True, exist_ok=True)
-    p.write_text(env_to_json(env), encoding="utf-8")
+    """Write an EnvSpec file atomically (temp file + rename: never a partial file)."""
+    atomic_write_text(Path(path), env_to_json(env))

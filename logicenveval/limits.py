@@ -12,7 +12,7 @@ from __future__ import annotations
 import json
 import os
 from pathlib import Path
-from typing import Any
+from typing import Any, BinaryIO
 
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 
@@ -29,9 +29,12 @@ DEFAULTS: dict[str, tuple[int, str]] = {
     "max_env_bytes": (20_000_000, "size of an EnvSpec file"),
     "max_run_file_bytes": (1_000_000_000, "size of a run's results.json or samples.jsonl"),
     "max_env_objects": (2_000, "objects of one EnvSpec"),
+    "max_unit_envs": (2_000, "environments one generator returns for one task"),
     "max_reply_bytes": (2_000_000, "bytes of one LLM HTTP reply"),
     "max_situations": (100_000, "situations (trajectories) of one task"),
     "max_workers": (256, "worker processes of a run"),
+    "max_mutants": (500, "first-order mutants of a correct BT classified and scored (evenly "
+                         "spaced sample above; docs/faults.md)"),
 }
 
 
@@ -56,36 +59,65 @@ def raise_hint(name: str) -> str:
     return f"raise the limit with LOGICENVEVAL_{name.upper()}=<n> if the input is genuine"
 
 
+def read_bytes(path: str | Path, *, what: str, error: type[LogicEnvEvalError],
+               max_bytes: str, hint: str) -> bytes:
+    """The bytes of an untrusted file, at most the `max_bytes` limit of them.
+
+    The limit is checked on the bytes actually read, not on the size the file system reports:
+    `/dev/zero`, a pipe or a file growing while read report no (or a wrong) size.
+    """
+    p = Path(path)
+    cap = limit(max_bytes)
+    try:
+        if p.is_dir():
+            raise error(f"{what} is a directory, not a file", file=str(p), hint=hint)
+        size = p.stat().st_size
+        if size > cap:  # a regular file that says it is too big: refused without reading
+            raise error(f"{what} is {size} bytes, more than the limit of {cap}", file=str(p),
+                        hint=raise_hint(max_bytes))
+        with p.open("rb", buffering=0) as fh:
+            data = _read_at_most(fh, cap + 1)
+    except FileNotFoundError:
+        raise error(f"{what} not found", file=str(p), hint=hint) from None
+    except OSError as exc:
+        raise error(f"cannot read {what}: {exc.strerror or exc}", file=str(p),
+                    hint="check the path and the file's permissions") from None
+    except ValueError:  # a NUL in the path
+        raise error(f"{what}: the path holds a NUL character", file=repr(str(p)),
+                    hint="pass a real file path") from None
+    if len(data) > cap:
+        raise error(f"{what} has more than the limit of {cap} bytes", file=str(p),
+                    hint=raise_hint(max_bytes))
+    return data
+
+
+def _read_at_most(fh: BinaryIO, n: int) -> bytes:
+    """Up to `n` bytes, read in chunks (a pipe or device has no size to trust)."""
+    chunks: list[bytes] = []
+    got = 0
+    while got < n:
+        chunk = fh.read(min(1 << 20, n - got))
+        if not chunk:
+            break
+        chunks.append(chunk)
+        got += len(chunk)
+    return b"".join(chunks)
+
+
 def read_text(path: str | Path, *, what: str, error: type[LogicEnvEvalError],
               max_bytes: str, hint: str) -> str:
     """Read an untrusted UTF-8 text file with one precise error for every way it can be unusable.
 
-    `max_bytes` names the size limit; `hint` is the fix for a missing file.
+    `max_bytes` names the size limit (checked on the bytes read: `read_bytes`); `hint` is the fix
+    for a missing file.
     """
-    p = Path(path)
-    try:
-        size = p.stat().st_size
-    except FileNotFoundError:
-        raise error(f"{what} not found", file=str(p), hint=hint) from None
-    except OSError as exc:
-        raise error(f"cannot read {what}: {exc.strerror}", file=str(p), hint=hint) from None
-    if p.is_dir():
-        raise error(f"{what} is a directory, not a file", file=str(p), hint=hint)
-    cap = limit(max_bytes)
-    if size > cap:
-        raise error(f"{what} is {size} bytes, more than the limit of {cap}", file=str(p),
-                    hint=raise_hint(max_bytes))
-    try:
-        data = p.read_bytes()
-    except OSError as exc:
-        raise error(f"cannot read {what}: {exc.strerror}", file=str(p),
-                    hint="check the file's permissions") from None
+    data = read_bytes(path, what=what, error=error, max_bytes=max_bytes, hint=hint)
     try:
         return data.decode("utf-8")
     except UnicodeDecodeError as exc:
         bom = data[:2] in (b"\xff\xfe", b"\xfe\xff")
         raise error(f"{what} is not UTF-8 text (byte {exc.start}"
-                    + (", looks like UTF-16" if bom else "") + ")", file=str(p),
+                    + (", looks like UTF-16" if bom else "") + ")", file=str(path),
                     hint="save the file as UTF-8") from None
 
 

@@ -208,33 +208,71 @@ def test_holodeck_passes_physics_checker() -> None:
 
 def test_invalid_draft_is_a_recorded_failure() -> None:
     from logicenveval.baselines.drafts import env_from_draft
+    from logicenveval.baselines.replies import WrittenEnvironment
     from logicenveval.errors import EnvSpecError
-    from logicenveval.llm.replies import PlacedObject, RoomDraft
 
     brief = load_task("clean_living_room", TASKS).brief()
-    room = RoomDraft(id="living_room", type="LivingRoom", area_m2=20.0,
-                     doors=[{"to": "exterior"}], windows=[{"wall": "n"}])
-    toy = PlacedObject(id="toy", category="toy", room="living_room", role="toy", placement="on:shelf_9",
-                       position=(1.0, 0.5, 1.0), size=(0.2, 0.2, 0.2))
+    toy = {"id": "toy", "category": "toy", "room": "living_room", "role": "toy", "placement": "on:shelf_9",
+           "position": (1.0, 0.5, 1.0), "size": (0.2, 0.2, 0.2)}
+    draft = WrittenEnvironment.model_validate({
+        "rooms": [{"id": "living_room", "type": "LivingRoom", "polygon": [(0, 0), (5, 0), (5, 4), (0, 4)]}],
+        "doors": [{"rooms": ["living_room", "exterior"], "segment": [(2, 0), (2.9, 0)]}],
+        "windows": [{"room": "living_room", "segment": [(1, 4), (2.2, 4)], "sill": 1.0, "height": 2.2}],
+        "objects": [toy]})
     with pytest.raises(EnvSpecError, match="shelf_9"):
-        env_from_draft(brief, env_id="cot-00", generator="cot", rooms=[room], objects=[toy], relations=[])
-    ok = env_from_draft(brief, env_id="cot-00", generator="cot", rooms=[room],
-                        objects=[toy.model_copy(update={"placement": "floor"})], relations=[])
+        env_from_draft(brief, env_id="cot-00", generator="cot", draft=draft)
+    ok = env_from_draft(brief, env_id="cot-00", generator="cot",
+                        draft=draft.model_copy(update={"objects": [draft.objects[0].model_copy(
+                            update={"placement": "floor"})]}))
     assert ok.roles["toy"] == "toy" and ok.roles["sofa"] is None
-    (a, b), window = ok.doors[0].segment or ((0, 0), (0, 0)), ok.windows[0].segment or ((0, 0), (0, 0))
-    assert a[1] == b[1] == 0.0 and window[0][1] == window[1][1] == ok.rooms[0].polygon[2][1]  # type: ignore[index]
+    assert ok.doors[0].id == "d0" and ok.doors[0].segment == ((2, 0), (2.9, 0))
+    assert ok.windows[0].segment == ((1, 4), (2.2, 4)) and ok.windows[0].height == 2.2  # as written, not repaired
+    assert [f.code for f in __import__("logicenveval.physics", fromlist=["check_env"]).check_env(
+        ok).floor_plan.failures] == ["window_above_ceiling"]
 
 
-def test_rooms_side_by_side_share_a_wall_with_their_door() -> None:
-    result = _run("cot", "multi_room_laundry_collect")
-    env = result.envs[0]
-    polys = [r.polygon or [] for r in env.rooms]
-    for left, right in zip(polys, polys[1:], strict=False):
-        assert left[1][0] == right[0][0]  # east wall of one room is the west wall of the next
-    inner = [d for d in env.doors if "exterior" not in d.rooms]
-    assert len(inner) == len(polys) - 1
-    for d in inner:
-        assert d.segment is not None and d.segment[0][0] == d.segment[1][0]
+def test_cot_and_ifg_floor_plans_are_their_own_and_judged_as_written() -> None:
+    """The offline writer's coarse rule: rooms in a row, every room joined to the hub. On
+    multi_room_laundry_collect (bedroom | bathroom | laundry_room) the bedroom–laundry door is drawn
+    on the bedroom's east wall, which the laundry room does not share: a floor-plan failure."""
+    from logicenveval.physics import check_env
+
+    brief = load_task("multi_room_laundry_collect", TASKS).brief().model_dump(mode="json")
+    plan = oh.written_floor_plan(brief)
+    for name in ("cot", "ifg"):
+        env = _run(name, "multi_room_laundry_collect").envs[0]
+        assert [r.polygon for r in env.rooms] == [[tuple(p) for p in r["polygon"]] for r in plan["rooms"]]
+        assert [d.segment for d in env.doors] == [tuple(tuple(p) for p in d["segment"]) for d in plan["doors"]]
+        polys = [r.polygon or [] for r in env.rooms]
+        for left, right in zip(polys, polys[1:], strict=False):
+            assert left[1][0] == right[0][0]  # east wall of one room is the west wall of the next
+        report = check_env(env)
+        far = next(d.id for d in env.doors if set(d.rooms) == {"bedroom", "laundry_room"})
+        assert [(f.code, f.objects, f.rooms) for f in report.floor_plan.failures] == [
+            ("door_not_on_wall", [far], ["laundry_room"])]
+
+
+def test_written_reply_models_round_trip_as_json() -> None:
+    from logicenveval.baselines.replies import WrittenEnvironmentsReply
+    from logicenveval.llm.replies import PlacementReply
+
+    req = ChatRequest(kind="cot_environments", payload={}, messages=[], schema=None, seed=0)
+    brief = load_task("multi_room_laundry_collect", TASKS).brief().model_dump(mode="json")
+    reply = WrittenEnvironmentsReply.model_validate(oh.cot_environments({"task": brief, "n_environments": 2}, req))
+    assert WrittenEnvironmentsReply.model_validate_json(reply.model_dump_json()) == reply
+    assert len(reply.environments) == 2 and len(reply.environments[0].doors) == 3
+    placement = PlacementReply.model_validate({"objects": [reply.environments[0].objects[0].model_dump()],
+                                               "openings": [{"id": "d0", "segment": [[0, 0], [0.9, 0]]}]})
+    assert PlacementReply.model_validate_json(placement.model_dump_json()) == placement
+
+
+def test_written_floor_plan_hub_is_the_hallway() -> None:
+    plan = oh.written_floor_plan({"rooms": ["kitchen", "living_room", "hallway"]})
+    assert [d["rooms"] for d in plan["doors"]] == [["hallway", "exterior"], ["hallway", "kitchen"],
+                                                   ["hallway", "living_room"]]
+    assert [w["room"] for w in plan["windows"]] == ["kitchen", "living_room"]
+    single = oh.written_floor_plan({"rooms": ["bathroom"]})
+    assert len(single["doors"]) == 1 and len(single["windows"]) == 1
 
 
 REAL_CATALOG = Path(__file__).resolve().parents[1] / "benchmark_data" / "catalog.json"

@@ -7,11 +7,15 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from logicenveval.baselines.geometry import footprint, layout_rooms, room_dims, typical_size
-from logicenveval.baselines.heuristics import guess_coordinates
-from logicenveval.baselines.offline_handlers import default_rooms, door_stretches, flat_situations
+from logicenveval.baselines.geometry import layout_rooms, room_dims
+from logicenveval.baselines.offline_handlers import (
+    door_stretches,
+    flat_situations,
+    written_floor_plan,
+)
 from logicenveval.domain.catalog import Catalog
 from logicenveval.llm.analysis import Factor
+from logicenveval.scene.guessed_layout import footprint, guess_coordinates, typical_size
 
 CAT = Catalog.model_validate({"categories": {
     "sofa": {"size_min": [2.0, 0.8, 0.9], "size_max": [2.0, 0.8, 0.9], "placement": ["floor"], "surface": True},
@@ -60,10 +64,10 @@ def test_sampled_wall_gap_is_seeded() -> None:
     assert one == two and 0.45 <= one[0]["position"][2] <= 0.95
 
 
-def test_door_stretches_of_default_rooms() -> None:
-    rooms = default_rooms({"rooms": ["hallway", "kitchen"]})
-    spans = door_stretches(rooms)
+def test_door_stretches_of_the_written_floor_plan() -> None:
+    spans = door_stretches(written_floor_plan({"rooms": ["hallway", "kitchen"]}))
     assert "s" in spans["hallway"] and "e" in spans["hallway"] and "w" in spans["kitchen"]
+    assert spans["hallway"]["s"] == [pytest.approx((1.25 - 0.9, 2.15 + 0.9))]  # the entrance and its swing
 
 
 def test_flat_situations_vary_one_factor_at_a_time() -> None:

@@ -104,8 +104,16 @@ def test_bad_files_are_per_file_failures(run_dir: Path, tmp_path: Path) -> None:
     ev = _evaluate(envs, tmp_path / "out", "--name", "mine")
     res = _results(ev)
     base = _results(run_dir)
-    assert res["results"]["mine"]["n_envs"] == base["results"]["logicenvgen"]["n_envs"]
-    assert _untimed(res["results"]["mine"]) == _untimed(base["results"]["logicenvgen"])
+    mine, theirs = res["results"]["mine"], base["results"]["logicenvgen"]
+    assert mine["n_envs"] == theirs["n_envs"]
+    # each bad file is one failed attempt: it fails PhyPR and SceVR, coverage counts what was built
+    assert (mine["n_failed"], mine["n_attempted"]) == (3, theirs["n_attempted"] + 3)
+    assert res["per_task"]["mine"]["clean_living_room"]["n_failed"] == 3
+    assert mine["phypr"]["avg"] == pytest.approx(theirs["phypr"]["avg"] * theirs["n_attempted"]
+                                                 / mine["n_attempted"])
+    assert mine["scevr"] < theirs["scevr"]
+    for key in ("logcov", "ld", "ji", "faudr", "n_envs"):
+        assert mine[key] == theirs[key]
     fails = {f["env_id"]: f["message"] for f in res["failures"]["mine"]}
     assert set(fails) == {"broken", "norooms", "elsewhere"}
     assert "invalid JSON" in fails["broken"] and "broken.json" in fails["broken"]

@@ -12,10 +12,21 @@ from hypothesis import strategies as st
 from logicenveval.benchmark import load_task, policy_path, task_ids
 from logicenveval.cli import main
 from logicenveval.domain.catalog import load_catalog
+from logicenveval.errors import PolicyFormatError
 from logicenveval.faults.classify import MutantRunner, _distance, classify_task, task_worlds
-from logicenveval.faults.operators import FAULT_CLASSES, OPERATORS, _get, _replace, mutants
+from logicenveval.faults.operators import (
+    FAULT_CLASSES,
+    OPERATORS,
+    PARENT_EDITS,
+    _edits,
+    _get,
+    _mutant,
+    _replace,
+    mutants,
+)
 from logicenveval.faults.score import clear_cache, scorer_for
 from logicenveval.sim.loader import load_policy, policy_from_xml, policy_to_xml
+from logicenveval.sim.policy import Policy, PolicyNode
 from logicenveval.sim.simulator import CompiledPolicy, simulate, task_goal
 from logicenveval.sim.world import World
 
@@ -52,6 +63,86 @@ def test_mutants_are_valid_distinct_first_order_and_deterministic(task_id: str) 
         original = _get(correct.trees[tree], idx[:-1])
         restored = _replace(m.policy.trees[tree], idx[:-1], lambda _, o=original: o)
         assert restored == correct.trees[tree]
+
+
+def _reference_mutants(policy: Policy, roles: list[str] | None, rooms: list[str] | None) -> list[str]:
+    """The definition `mutants` implements without printing XML: every edit applied, printed,
+    dropped if its XML is the correct BT's or an earlier mutant's, kept if it loads again."""
+    seen, out = {policy_to_xml(policy)}, []
+    for edit in _edits(policy):
+        m = _mutant(policy, edit)
+        if m.xml in seen:
+            continue
+        try:
+            policy_from_xml(m.xml, "mutant", roles=roles, rooms=rooms)
+        except PolicyFormatError:
+            continue
+        seen.add(m.xml)
+        out.append(m.id)
+    return out
+
+
+_LEAVES = ['<Walk target="toy"/>', '<Walk target="box"/>', '<Pick obj="toy"/>', '<Pick obj="box"/>',
+           '<PutIn obj="toy" target="box"/>', '<Place obj="toy" target="floor"/>',
+           '<Holding obj="toy"/>', '<On obj="toy" target="floor"/>', "<AlwaysSuccess/>",
+           '<SubTree ID="Sub"/>']
+
+
+@st.composite
+def _trees(draw: st.DrawFn, depth: int = 3) -> str:
+    """Small BTs with repeated siblings (duplicate mutants), one-child controls (invalid
+    deletions), IfThenElse and skip branches."""
+    if depth == 0 or draw(st.integers(0, 3)) == 0:
+        return draw(st.sampled_from(_LEAVES))
+    kind = draw(st.sampled_from(["Sequence", "Fallback", "ReactiveSequence", "IfThenElse",
+                                 "SkipBranch", "Inverter"]))
+    if kind == "Inverter":
+        return f"<Inverter>{draw(_trees(depth - 1))}</Inverter>"
+    if kind == "SkipBranch":
+        return f'<Fallback><Inverter><Holding obj="toy"/></Inverter>{draw(_trees(depth - 1))}</Fallback>'
+    n = draw(st.integers(2, 3)) if kind == "IfThenElse" else draw(st.integers(1, 4))
+    kids = [draw(_trees(depth - 1)) for _ in range(n)]
+    if draw(st.booleans()) and n > 1:
+        kids[1] = kids[0]  # equal siblings
+    return f"<{kind}>{''.join(kids)}</{kind}>"
+
+
+@settings(max_examples=150, deadline=None)
+@given(_trees(), _trees())
+def test_mutants_equal_printing_and_reloading_every_edit(main_tree: str, sub_tree: str) -> None:
+    xml = (f'<root BTCPP_format="4" main_tree_to_execute="Main"><BehaviorTree ID="Main">{main_tree}'
+           f'</BehaviorTree><BehaviorTree ID="Sub">{sub_tree.replace("SubTree", "AlwaysSuccess")}'
+           "</BehaviorTree></root>")
+    roles = ["toy", "box"]
+    try:
+        policy = policy_from_xml(xml, "p", roles=roles)
+    except PolicyFormatError:
+        return
+    got = mutants(policy, roles=roles)
+    assert [m.id for m in got] == _reference_mutants(policy, roles, None)
+    for m in got:  # a deletion's or reorder's region: the node and its later siblings then
+        tree, idx = m.location
+        if m.operator in PARENT_EDITS:
+            parent = _get(policy.trees[tree], idx[:-1])
+            assert m.region == tuple((*idx[:-1], j) for j in range(idx[-1], len(parent.children)))
+
+
+def test_the_mutants_of_a_large_bt_are_an_evenly_spaced_sample(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Above `max_mutants`, an evenly spaced sample of the full list (docs/faults.md)."""
+    task, correct = _correct("clean_living_room")
+    main = correct.trees[correct.main]
+    copies = tuple(correct.trees[t] for _ in range(12) for t in ("TidyToy", "TidyBook"))
+    big = Policy(correct.main, {**correct.trees, correct.main: PolicyNode(
+        main.kind, main.params, (*main.children[:-1], *copies, main.children[-1]), main.name)})
+    monkeypatch.setenv("LOGICENVEVAL_MAX_MUTANTS", "1000000")
+    full = [m.id for m in mutants(big, roles=task.roles, rooms=task.rooms)]
+    assert len(full) > 500
+    monkeypatch.delenv("LOGICENVEVAL_MAX_MUTANTS")
+    capped = [m.id for m in mutants(big, roles=task.roles, rooms=task.rooms)]
+    assert len(capped) == 500 and capped == [full[k * len(full) // 500] for k in range(500)]
+    assert {i.split("@")[0] for i in capped} == {i.split("@")[0] for i in full}
+    monkeypatch.setenv("LOGICENVEVAL_MAX_MUTANTS", "1000000")
+    assert _reference_mutants(big, task.roles, task.rooms) == full
 
 
 def test_classification_reproduces_the_hand_written_faults() -> None:

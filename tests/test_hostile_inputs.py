@@ -13,9 +13,9 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from cli_support import cli
 
 from logicenveval.benchmark import DEFAULT_TASKS_DIR
-from logicenveval.cli import main
 from logicenveval.generators.base import _REGISTRY, GenerationContext, GenerationResult
 from logicenveval.model.task import TaskBrief
 
@@ -23,16 +23,6 @@ TASK = "clean_living_room"
 ENVS = Path(__file__).parent / "fixtures" / "envs"
 SECRET = "sk-hostile-SECRET-0123456789"
 
-
-def cli(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
-    """Run the CLI in-process; argparse errors count as their exit code."""
-    try:
-        code = main(list(argv))
-    except SystemExit as exc:
-        code = int(exc.code or 0)
-    out, err = capsys.readouterr()
-    assert "Traceback" not in out + err
-    return code, out, err
 
 
 def sub(*argv: str, cwd: Path | None = None, env: dict[str, str] | None = None,
@@ -248,14 +238,22 @@ def test_negative_seeds_are_refused(tmp_path: Path, capsys: pytest.CaptureFixtur
 def test_partial_failures_exit_0_and_are_listed(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     from logicenveval.commands.run import report_failures
     from logicenveval.generators.base import GenerationFailure
-    from logicenveval.metrics.records import UnitRecord
+    from logicenveval.metrics.records import EnvSample, PhysicsSummary, UnitRecord
 
-    empty = UnitRecord(generator="g", task_id="a", samples=[], error=None)
-    assert report_failures([empty]) == 0  # measured: zero coverage, nothing failed
+    sample = EnvSample(generator="g", task_id="a", env_id="e", claimed_trajectory=None,
+                       covered_paths=[], trajectory=None, conditions=[], well_formed=False,
+                       problems=[], physics=PhysicsSummary(floor_plan=True, entity=True, relation=True),
+                       verdicts={}, sim_ms={})
+    measured = UnitRecord(generator="g", task_id="a", samples=[sample])
+    empty = UnitRecord(generator="g", task_id="c", samples=[], error=None)
     bad = UnitRecord(generator="g", task_id="b", failures=[GenerationFailure(stage="layout", message="no room")])
-    assert report_failures([empty, bad]) == 0  # partial
+    assert report_failures([measured, empty]) == 0  # measured: zero coverage on c, nothing failed
+    assert report_failures([measured, empty, bad]) == 0  # partial
     assert report_failures([bad]) == 1
     assert "layout: no room" in capsys.readouterr().err
+    # a generator that returns no environment anywhere measured nothing (docs/security.md): exit 1
+    assert report_failures([empty]) == 1
+    assert "the generator returned no environment" in capsys.readouterr().err
 
 
 def test_bad_key_is_caught_by_the_preflight(tmp_path: Path, capsys: pytest.CaptureFixture[str],
@@ -617,13 +615,16 @@ def test_include_outside_the_policy_folder(tmp_path: Path, capsys: pytest.Captur
 
 # ----- 12. compare over different tasks ----------------------------------------------------
 
-def test_compare_refuses_runs_over_different_tasks(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    base = {"schema": "logicenveval.results/1", "results": {"g": {"logcov": 0.5}}}
+def test_compare_flags_tasks_missing_from_the_candidate(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    cell = {"n_envs": 1, "logcov": 0.5, "faudr": dict.fromkeys(("counterfactual", "unreachable", "lackbranch"), True)}
     for name, tasks in (("a", ["t1", "t2"]), ("b", ["t1"])):
         (tmp_path / name).mkdir()
-        (tmp_path / name / "results.json").write_text(json.dumps({**base, "tasks": tasks}))
-    code, _, err = cli(capsys, "compare", str(tmp_path / "a"), str(tmp_path / "b"))
-    assert code == 2 and "different tasks" in err and "t2" in err
+        (tmp_path / name / "results.json").write_text(json.dumps({
+            "schema": "logicenveval.results/1", "results": {"g": {"logcov": 0.5}}, "tasks": tasks,
+            "per_task": {"g": {t: cell for t in tasks}}}))
+    code, out, _ = cli(capsys, "compare", str(tmp_path / "a"), str(tmp_path / "b"))
+    assert code == 1 and "task t2 of g: missing in B" in out
+    assert cli(capsys, "compare", str(tmp_path / "a"), str(tmp_path / "b"), "--allow-missing")[0] == 0
 
 
 # ----- 13. stale temp files ----------------------------------------------------------------

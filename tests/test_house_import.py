@@ -93,7 +93,7 @@ def test_cli_writes_a_scorable_envspec(tmp_path: Path, capsys: pytest.CaptureFix
     assert main(["import-house", str(HOUSES / "kitchen_breakfast.json"), "--task",
                  "kitchen_breakfast_prep", "--out", str(out)]) == 0
     text = capsys.readouterr().out
-    assert "unknown AI2-THOR type Dumbbell" in text and "bread=small_2_0" in text
+    assert "AI2-THOR type Dumbbell names no catalog category" in text and "bread=small_2_0" in text
     assert load_env(out).env_id == "house"
     assert main(["evaluate", str(tmp_path / "envs"), "--name", "procthor", "--executor", "inprocess",
                  "--output", str(tmp_path / "reports")]) == 0
@@ -122,29 +122,23 @@ def test_bad_houses_exit_2_naming_the_field(tmp_path: Path, capsys: pytest.Captu
     assert not (tmp_path / "out.json").exists()
 
 
-def _paths(node: object, prefix: tuple[object, ...] = ()) -> list[tuple[object, ...]]:
+def json_paths(node: object, prefix: tuple[object, ...] = ()) -> list[tuple[object, ...]]:
+    """Every path into a JSON value (dict keys and list indices)."""
     out: list[tuple[object, ...]] = [prefix] if prefix else []
     if isinstance(node, dict):
         for k, v in node.items():
-            out += _paths(v, (*prefix, k))
+            out += json_paths(v, (*prefix, k))
     elif isinstance(node, list):
         for i, v in enumerate(node):
-            out += _paths(v, (*prefix, i))
+            out += json_paths(v, (*prefix, i))
     return out
 
 
-_HOUSE = json.loads((HOUSES / "kitchen_breakfast.json").read_text())
-_PATHS = _paths(_HOUSE)
-_JUNK = [None, "x", "", [], {}, -1, 0, 1e308, float("nan"), float("inf"), [1, 2], {"x": "a"}, True]
-
-
-@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(st.lists(st.tuples(st.sampled_from(_PATHS), st.sampled_from([*_JUNK, "DELETE"])),
-                min_size=1, max_size=4))
-def test_any_mangled_house_imports_or_names_the_problem(edits: list[tuple[tuple[object, ...], object]]) -> None:
-    house = copy.deepcopy(_HOUSE)
+def mangled(house: dict[str, Any], edits: list[tuple[tuple[object, ...], object]]) -> dict[str, Any]:
+    """A copy of `house` with each path set to junk (or removed: "DELETE")."""
+    out = copy.deepcopy(house)
     for path, value in edits:
-        parent: Any = house
+        parent: Any = out
         try:
             for key in path[:-1]:
                 parent = parent[key]
@@ -154,7 +148,104 @@ def test_any_mangled_house_imports_or_names_the_problem(edits: list[tuple[tuple[
                 parent[path[-1]] = value
         except (KeyError, IndexError, TypeError):
             continue  # an earlier edit removed or replaced this path
+    return out
+
+
+_HOUSE = json.loads((HOUSES / "kitchen_breakfast.json").read_text())
+_PATHS = json_paths(_HOUSE)
+JUNK = [None, "x", "", [], {}, -1, 0, 1e308, float("nan"), float("inf"), [1, 2], {"x": "a"}, True]
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(st.tuples(st.sampled_from(_PATHS), st.sampled_from([*JUNK, "DELETE"])),
+                min_size=1, max_size=4))
+def test_any_mangled_house_imports_or_names_the_problem(edits: list[tuple[tuple[object, ...], object]]) -> None:
+    house = mangled(_HOUSE, edits)
     try:
         import_house(house, task_id="kitchen_breakfast_prep", env_id="h", catalog=CATALOG)
     except EnvSpecError as exc:
         assert "fix:" in str(exc)
+
+
+#: a house in the layout of the ProcTHOR-10K houses AI2-THOR ships as test data (same keys, id
+#: forms `CounterTop|2|0`, `Bread|surface|2|1`, `Sink|2|2|0`, no objectType, real asset ids; a
+#: Doorframe door without openable/openness, exterior walls listing their top points first),
+#: written for kitchen_breakfast_prep
+PROCTHOR10K = HOUSES / "procthor10k_kitchen.json"
+#: ProcTHOR's asset database has no stove: an AI2-THOR kitchen (iTHOR) has a StoveBurner
+STOVE = {"assetId": "Stove_LogicEnvEval_1", "id": "StoveBurner|2|9", "kinematic": True,
+         "position": {"x": 2.9, "y": 0.45, "z": 3.15}, "rotation": {"x": 0, "y": 180, "z": 0},
+         "layer": "Procedural1", "material": None}
+
+
+def test_procthor10k_house_takes_types_from_ids_and_sizes_from_the_catalog() -> None:
+    task = load_task("kitchen_breakfast_prep")
+    rep = import_house(load_house(PROCTHOR10K), task_id=task.id, env_id="h", catalog=CATALOG,
+                       role_categories=[r.category for r in task.roles.values()])
+    objs = {o.id: o for o in rep.env.objects}
+    assert rep.type_sources == {"id": 22}
+    assert rep.unknown_types == {"Faucet": ["Faucet_2_2_1"]}  # AI2-THOR has it, our catalog not
+    counter = objs["CounterTop_2_0"]
+    assert counter.category == "kitchen_counter" and counter.size == (1.8314, 0.9375, 0.6106)  # our mapping's asset
+    assert counter.model_dump()["object_type"] == "CounterTop"
+    assert objs["Bread_surface_2_1"].category == "bread" and objs["Bread_surface_2_1"].support == "CounterTop_2_0"
+    assert objs["Tomato_surface_2_6"].container == "Fridge_2_1"
+    assert objs["Toaster_surface_2_4"].states == {"toggled_on": False}
+    assert objs["FloorLamp_3_3_1"].states == {"toggled_on": True} and objs["FloorLamp_3_3_1"].room == "living_room"
+    assert all(o.size is not None for o in rep.env.objects if o.id != "Faucet_2_2_1")
+    assert rep.size_sources == {"catalog": 17, "asset database": 4, "none": 1}
+    inner, outer = rep.env.doors
+    assert inner.rooms == ("kitchen", "living_room") and inner.state == "closed" and inner.type == "door"
+    assert outer.rooms == ("living_room", "exterior") and outer.type == "doorway"
+    assert rep.env.wall_height == pytest.approx(2.6135)
+    binding = bind_roles(rep.env, task.roles, CATALOG)
+    assert {r for r, o in binding.roles.items() if o is None} == {"stove"}  # ProcTHOR has none
+    assert binding.well_formed
+
+
+def test_procthor10k_house_scores_with_every_role_bound(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    house = json.loads(PROCTHOR10K.read_text())
+    house["objects"].append(STOVE)
+    src = tmp_path / "house.json"
+    src.write_text(json.dumps(house))
+    envs = tmp_path / "envs" / "kitchen_breakfast_prep"
+    for name, path in (("as_procthor", PROCTHOR10K), ("with_stove", src)):
+        assert main(["import-house", str(path), "--task", "kitchen_breakfast_prep",
+                     "--out", str(envs / f"{name}.json")]) == 0
+    out = capsys.readouterr().out
+    assert "object types from id 22" in out and "roles with no object in the house (unbound): stove" in out
+    assert "sizes from catalog" in out and "AI2-THOR type Faucet names no catalog category" in out
+    assert main(["evaluate", str(tmp_path / "envs"), "--name", "procthor", "--executor", "inprocess",
+                 "--output", str(tmp_path / "reports")]) == 0
+    (run_dir,) = list((tmp_path / "reports").iterdir())
+    samples = {s["env_id"]: s for s in map(json.loads, (run_dir / "samples.jsonl").read_text().splitlines())}
+    bare, full = samples["as_procthor"], samples["with_stove"]
+    assert not bare["well_formed"] and any("role stove is not bound" in p for p in bare["problems"])
+    assert full["well_formed"] and full["verdicts"]["correct"] == "passed"
+    assert full["covered_paths"] == ["toast:bread_status=on_counter/toaster_on=off",
+                                     "kettle:kettle_filled=empty", "fry_egg:egg_in_fridge=no"]
+    assert full["unknown_categories"] == {"faucet": ["Faucet_2_2_1"]}
+    res = json.loads((run_dir / "results.json").read_text())["results"]["procthor"]
+    assert res["logcov"] > 0 and res["scevr"] > 0 and res["faudr"]["avg"] > 0
+    assert res["phypr"]["floor_plan"] == 1.0
+
+
+def test_procthor10k_house_passes_check_house_without_object_types(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["check-house", str(PROCTHOR10K), "--json"]) == 0
+    (report,) = json.loads(capsys.readouterr().out).values()
+    assert report["problems"] == []
+    fridge = next(w for w in report["warnings"] if w["where"] == "objects[1].assetId")
+    assert "asset id 'Fridge_1' is not in our mapping" in fridge["message"]
+
+
+def test_export_then_import_keeps_categories_sizes_and_places() -> None:
+    from logicenveval.scene.export import to_procthor
+
+    env = load_env(Path(__file__).parent / "fixtures" / "envs" / "three_rooms.json")
+    back = import_house(to_procthor(env, CATALOG), task_id=env.task_id, env_id="back", catalog=CATALOG).env
+    before = {o.id: o for o in env.objects}
+    assert {o.id for o in back.objects} == set(before)
+    for o in back.objects:
+        src = before[o.id]
+        assert o.category == src.category and o.size is not None and src.size is not None
+        assert o.size == pytest.approx(src.size, abs=1e-3) and o.position == pytest.approx(src.position, abs=1e-3)

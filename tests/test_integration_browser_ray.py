@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import json
 import shutil
-import subprocess
 from pathlib import Path
 
 import pytest
@@ -35,24 +34,66 @@ def test_ray_executor_gathers_the_same_results(tmp_path: Path) -> None:
     assert _results(tmp_path / "ray") == _results(tmp_path / "local")
 
 
+CHROMIUM_FLAGS = ["--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+                  "--disable-background-networking", "--disable-component-update", "--disable-sync"]
+
+
+def _chromium() -> str:
+    for name in ("chromium", "chromium-browser", "google-chrome"):
+        found = shutil.which(name)
+        if found:
+            return found
+    pytest.skip("no Chromium on this machine (Debian: apt-get install chromium)")
+
+
 @pytest.mark.slow
-def test_leaderboard_html_renders_in_headless_chromium(tmp_path: Path) -> None:
-    browser = shutil.which("chromium") or shutil.which("chromium-browser") or shutil.which("google-chrome")
-    if browser is None:
-        pytest.skip("no Chromium on this machine (apt-get install chromium)")
+def test_report_in_headless_chromium(tmp_path: Path) -> None:
+    """The report as a reader uses it: the table fits 1,400 px, the filter hides rows, an
+    environment's anchor opens its task page with the embedded render, a trace is a tick table."""
+    browser_path = _chromium()
+    sync_api = pytest.importorskip("playwright.sync_api",
+                                   reason="Playwright is not installed (pip install -e '.[browser]')")
     out = tmp_path / "out"
-    assert main(["run", "--model", "offline", "--tasks", "clean_living_room", "--generators", "logicenvgen",
+    assert main(["run", "--model", "offline", "--tasks", TASKS, "--generators", "logicenvgen,cot",
                  "--executor", "inprocess", "--output", str(out), "--quiet"]) == 0
     (run_dir,) = [p for p in out.iterdir() if p.is_dir()]
-    page = (run_dir / "leaderboard.html").resolve().as_uri()
-    flags = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-             "--disable-background-networking", "--disable-component-update", "--disable-sync",
-             f"--user-data-dir={tmp_path / 'profile'}", "--allow-file-access-from-files"]
-    dom = subprocess.run([browser, *flags, "--dump-dom", page], capture_output=True, text=True, timeout=120)
-    assert '<table class="lb"' in dom.stdout and "logicenvgen" in dom.stdout
-    assert 'src="renders/logicenvgen/clean_living_room/' in dom.stdout
-    shot = tmp_path / "leaderboard.png"
-    subprocess.run([browser, *flags, "--window-size=1400,1000", f"--screenshot={shot}", page],
-                   capture_output=True, timeout=120, check=False)
-    assert shot.exists() and shot.stat().st_size > 10_000
-    shutil.copy(shot, run_dir / "leaderboard.png")
+    moved = tmp_path / "moved"  # the report folder alone, elsewhere: nothing links back
+    shutil.copytree(run_dir / "details", moved / "details")
+    shutil.copy(run_dir / "leaderboard.html", moved / "leaderboard.html")
+    with sync_api.sync_playwright() as pw:
+        context = pw.chromium.launch_persistent_context(
+            str(tmp_path / "profile"), executable_path=browser_path, headless=True,
+            args=CHROMIUM_FLAGS, viewport={"width": 1400, "height": 1000})
+        try:
+            page = context.new_page()
+            page.goto((moved / "leaderboard.html").as_uri())
+            width = page.evaluate("[document.documentElement.scrollWidth, window.innerWidth]")
+            assert width[0] <= width[1], f"the page overflows 1,400 px: {width}"
+            extra = page.locator("#leaderboard th", has_text="Extra checks").bounding_box()
+            assert extra is not None and extra["x"] + extra["width"] <= 1400
+            assert page.evaluate("getComputedStyle(document.querySelector('#leaderboard thead')).position") == "sticky"
+            rows = page.locator("table.idx tbody tr")
+            assert rows.count() == 4
+            page.fill("#filter", "hallway cot")
+            visible = [r for r in rows.all() if r.is_visible()]
+            assert len(visible) == 1 and "hallway_entry_tidy" in visible[0].inner_text()
+            assert page.locator("#row-gen-cot").is_visible()  # the method's own row stays
+            assert not page.locator("#row-gen-logicenvgen").is_visible()
+            page.screenshot(path=str(tmp_path / "leaderboard.png"), full_page=True)
+            page.fill("#filter", "")
+            link = page.locator("#t-logicenvgen--clean_living_room a.env").first
+            env_id = link.inner_text()
+            link.click()
+            page.wait_for_load_state()
+            assert page.url.endswith(f"details/logicenvgen/clean_living_room.html#env-{env_id}")
+            card = page.locator(f"#env-{env_id}")
+            assert card.is_visible() and card.locator("img").evaluate("i => i.naturalWidth") > 0
+            card.locator("details.bt").first.locator("summary").click()
+            ticks = card.locator("table.ticks").first
+            assert ticks.is_visible() and ticks.locator("tbody tr").count() > 1
+            page.screenshot(path=str(tmp_path / "task.png"))
+        finally:
+            context.close()
+    for shot in ("leaderboard.png", "task.png"):
+        assert (tmp_path / shot).stat().st_size > 10_000
+        shutil.copy(tmp_path / shot, run_dir / shot)

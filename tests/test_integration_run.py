@@ -18,7 +18,8 @@ from logicenveval.cli import main
 TASKS = "clean_living_room,hallway_entry_tidy,kitchen_fridge_restock"
 GENERATORS = "logicenvgen,cot,ifg,holodeck"
 KEYS = {"phypr", "logcov", "ld", "scevr", "faudr", "st_ms", "st_ticks", "ji", "redundancy", "n_envs",
-        "plausibility", "faudr_mut", "faudr_mut_by_class", "ci95"}
+        "plausibility", "faudr_mut", "faudr_mut_by_class", "ci95", "n_attempted", "n_failed", "measured",
+        "not_measured_tasks", "budget_hit_tasks"}
 
 
 def _run(out: Path, *extra: str) -> int:
@@ -66,7 +67,9 @@ def test_outputs_and_result_keys(first_run: Path) -> None:
     assert list((first_run / "envs" / "logicenvgen" / "clean_living_room").glob("*.json"))
     assert "| logicenvgen |" in (first_run / "leaderboard.md").read_text()
     html = (first_run / "leaderboard.html").read_text()
-    assert "<table" in html and "renders/" in html
+    page = (first_run / "details" / "logicenvgen" / "clean_living_room.html").read_text()
+    assert "<table" in html and 'href="details/logicenvgen/clean_living_room.html"' in html
+    assert 'src="data:image/svg+xml;base64,' in page  # renders embedded: the folder can move
     # the full method covers every decision path of the paper's example with the minimum 3 envs
     clr = results["per_task"]["logicenvgen"]["clean_living_room"]
     assert clr["logcov"] == 1.0 and clr["n_envs"] == 3
@@ -132,14 +135,16 @@ def test_report_only_reads(first_run: Path, monkeypatch: pytest.MonkeyPatch) -> 
     for module, name in ((simulator, "simulate"), (simulator.CompiledPolicy, "run"), (physics, "check_env"),
                          (check, "check_env"), (construct, "construct_environment")):
         monkeypatch.setattr(module, name, forbidden)
-    before = (first_run / "leaderboard.html").read_text()
+    pages = sorted((first_run / "details").rglob("*.html"))
+    before = {p: p.read_text() for p in [first_run / "leaderboard.html", *pages]}
     svg = sorted((first_run / "renders").rglob("*.svg"))[0]
     drawn = svg.read_text()
     svg.unlink()  # renders are derived files: a lost one is re-drawn from stored data
     assert main(["report", str(first_run)]) == 0
-    assert (first_run / "leaderboard.html").read_text() == before
+    assert {p: p.read_text() for p in before} == before
     assert svg.read_text() == drawn
-    assert "&#39;tick&#39;: 1, &#39;node&#39;" in before  # the recorded traces are shown
+    page = before[first_run / "details" / "logicenvgen" / "clean_living_room.html"]
+    assert '<td class="t">1</td><td>' in page  # the recorded traces are shown as tick tables
 
 
 def test_unit_with_a_lost_env_file_is_recomputed(first_run: Path, tmp_path: Path) -> None:

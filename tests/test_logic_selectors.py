@@ -270,6 +270,6 @@ def test_property_exhaustive_search_is_a_minimum_cover(case: tuple[Forest, PathC
 
 def test_exhaustive_search_falls_back_to_mtsa_when_the_budget_runs_out() -> None:
     paths = _paths([5, 5, 5, 5, 5])  # 3125 trajectories: C(3125, k) subsets up to k = 5
-    result = exhaustive_cover(paths, budget_s=0.0)
-    assert not result.optimal and result.tested >= 4096
+    result = exhaustive_cover(paths, max_subsets=4096)
+    assert not result.optimal and result.tested == 4096
     assert _keys(result.trajectories) == _keys(get_selector("mtsa").select(paths))

@@ -45,6 +45,31 @@ def test_failing_env_exits_one_and_names_the_fault(tmp_path: Path, capsys: pytes
     assert "not_supported" in out and "FAIL" in out
 
 
+def _beside_table(data: dict[str, Any]) -> None:
+    """The audit's case: an item 0.3 m beside its table, bottom still at the table's top."""
+    book = next(o for o in data["objects"] if o["id"] == "book_1")
+    book["position"][2] = 2.2 + 0.3 + 0.3  # the coffee table's top ends 0.3 m from its centre
+    data["relations"] = [r for r in data["relations"] if "book_1" not in r["args"]]
+
+
+def _window_through_ceiling(data: dict[str, Any]) -> None:
+    data["windows"][0].update(sill=1.0, height=2.2)  # top 3.2 m in a 2.7 m wall
+
+
+@pytest.mark.parametrize(("flaw", "dimension", "code"), [(_beside_table, "entity", "centre_off_support"),
+                                                         (_window_through_ceiling, "floor_plan",
+                                                          "window_above_ceiling")])
+def test_table2_violations_fail_their_dimension(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                                flaw: Callable[[dict[str, Any]], None], dimension: str,
+                                                code: str) -> None:
+    data = json.loads((FIXTURES / "one_room.json").read_text())
+    flaw(data)
+    assert main(["check-env", str(_write(tmp_path, data)), "--json"]) == 1
+    report = json.loads(capsys.readouterr().out)
+    assert {d for d, r in report.items() if not r["passed"]} == {dimension}
+    assert [f["code"] for f in report[dimension]["failures"]] == [code]
+
+
 def _chair_in_doorway(data: dict[str, Any]) -> None:
     data["objects"].append({"id": "chair_1", "category": "chair", "room": "living_room",
                             "position": [2.5, 0.45, 0.5], "yaw": 0, "size": [0.5, 0.9, 0.5],
@@ -105,3 +130,20 @@ def test_env_without_geometry_fails_entity(tmp_path: Path) -> None:
                          "objects": [{"id": "a", "category": "toy", "room": "r"}]})
     report = check_env(env)
     assert report.floor_plan.passed and not report.entity.passed and report.relation.passed
+
+
+def test_table_shows_a_bounded_number_of_failures(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                                  monkeypatch: pytest.MonkeyPatch) -> None:
+    from logicenveval.commands.check_env import TABLE_ROWS
+
+    monkeypatch.setenv("COLUMNS", "200")
+    data = json.loads((FIXTURES / "one_room.json").read_text())
+    sofa = next(o for o in data["objects"] if o["id"] == "sofa_1")
+    data["objects"] = [{**sofa, "id": f"o{i}"} for i in range(30)]  # a pile: 30 x 8 / 2 > TABLE_ROWS pairs
+    data["relations"], data["roles"] = [], {}
+    path = _write(tmp_path, data)
+    assert main(["check-env", str(path)]) == 1
+    out = capsys.readouterr().out
+    n = len(check_env(load_env(path)).entity.failures)
+    assert n > TABLE_ROWS and f"{n - TABLE_ROWS} more failures" in out
+    assert out.count("interpenetrate") == TABLE_ROWS

@@ -122,13 +122,29 @@ def test_door_on_non_shared_wall_fails_floor_plan_only(case: tuple[str, float, f
 
 @FAST
 @given(name=st.sampled_from(sorted(ENVS)), excess=st.floats(0.01, 1.0), which=st.integers(0, 1))
-def test_window_above_ceiling_fails_the_extended_checks_only(name: str, excess: float, which: int) -> None:
+def test_window_above_ceiling_fails_floor_plan_only(name: str, excess: float, which: int) -> None:
     data = _copy(name)
     w = data["windows"][which % len(data["windows"])]
     w["height"] = data["wall_height"] - w["sill"] + excess
     report = check_env(env_from_dict(data))
-    assert report.passed and report.failed_dimensions() == set()  # not in the paper's Table 2
-    assert [(f.dimension, f.code) for f in report.extended.failures] == [("floor_plan", "window_above_ceiling")]
+    assert report.failed_dimensions() == {"floor_plan"}  # Table 2: embedded in the wall
+    assert [f.code for f in report.floor_plan.failures] == ["window_above_ceiling"]
+    assert report.extended.passed
+
+
+@FAST
+@given(name=st.sampled_from(sorted(ENVS)), off=st.floats(0.08, 1.0))
+def test_item_slid_beside_its_support_fails_entity_only(name: str, off: float) -> None:
+    """At its supporter's height but with the centre of mass beside the top: floating."""
+    data = _copy(name)
+    item = next(o for o in data["objects"] if o["support"] not in ("floor", "wall", "ceiling", None))
+    sup = _obj(data, item["support"])
+    half = max(sup["size"][0], sup["size"][2]) / 2
+    item["position"][0] = sup["position"][0] + half + off
+    data["relations"] = [r for r in data["relations"] if item["id"] not in r["args"]]
+    report = check_env(env_from_dict(data))
+    assert report.failed_dimensions() == {"entity"}
+    assert [f.code for f in report.entity.failures if item["id"] in f.objects][0] == "centre_off_support"
 
 
 @FAST

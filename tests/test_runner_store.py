@@ -80,11 +80,13 @@ def _results(logcov: float, st: float, redundancy: float) -> dict[str, object]:
 
 def test_compare_directions_and_tolerance() -> None:
     base = _results(0.9, 10.0, 1.0)
-    assert not any(d.regression for d in compare_results(base, _results(0.89, 50.0, 1.01)))
-    regs = {d.metric for d in compare_results(base, _results(0.85, 50.0, 1.5)) if d.regression}
+    assert not compare_results(base, _results(0.89, 50.0, 1.01)).regressions
+    regs = {d.metric for d in compare_results(base, _results(0.85, 50.0, 1.5)).regressions}
     assert regs == {"LogCov", "Redundancy"}
-    timing = {d.metric for d in compare_results(base, _results(0.9, 50.0, 1.0), judge_timing=True) if d.regression}
+    timing = {d.metric for d in compare_results(base, _results(0.9, 50.0, 1.0), judge_timing=True).regressions}
     assert timing == {"ST (ms)"}
+    better = compare_results(base, _results(0.95, 10.0, 0.5))
+    assert {d.metric for d in better.improvements} == {"LogCov", "Redundancy"} and not better.failed
 
 
 def test_files_intact_checks_the_files_a_unit_wrote(tmp_path: Path) -> None:

@@ -43,12 +43,27 @@ def test_construct_from_drafts_builds_a_valid_env() -> None:
     assert check_env(env, CAT).passed
 
 
-def test_env_from_placed_keeps_model_coordinates() -> None:
+def test_env_from_placed_keeps_model_coordinates_and_openings() -> None:
+    """No CAS: objects, doors and windows where the model put them; an opening it left out has no
+    segment, which the floor-plan check reports (nothing is repaired)."""
+    from logicenveval.generators.offline_handlers import spread_openings
+    from logicenveval.scene.construct import room_requests
+    from logicenveval.scene.floorplan import plan_floor
+
+    plan = plan_floor(room_requests(ROOMS), np.random.default_rng(0))
+    requests = plan.opening_requests()
+    assert [(r["id"], r["kind"]) for r in requests] == [("d0", "door"), ("w0", "window")]
     placed = [PlacedObject(id="sofa_1", category="sofa", room="living_room", role="sofa", placement="floor",
                            position=(2.0, 0.4, 1.0), size=(2.0, 0.8, 0.9), yaw=0.0)]
-    env = env_from_placed(brief=BRIEF, env_id="e", generator="cot", rooms=ROOMS, placed=placed, relations=[],
-                          claimed_trajectory=None, catalog=CAT, rng=np.random.default_rng(0))
+    segments = {o["id"]: tuple(map(tuple, o["segment"])) for o in spread_openings(requests)}
+    env = env_from_placed(brief=BRIEF, env_id="e", generator="cot", plan=plan, placed=placed, relations=[],
+                          openings=segments, claimed_trajectory=None, catalog=CAT)
     assert env.obj("sofa_1").position == (2.0, 0.4, 1.0) and env.roles == {"sofa": "sofa_1"}
+    assert env.doors[0].segment == segments["d0"] and env.windows[0].segment == segments["w0"]
+    assert check_env(env, CAT).floor_plan.passed
+    env = env_from_placed(brief=BRIEF, env_id="e", generator="cot", plan=plan, placed=placed, relations=[],
+                          openings={"d0": segments["d0"]}, claimed_trajectory=None, catalog=CAT)
+    assert [(f.code, f.objects) for f in check_env(env, CAT).floor_plan.failures] == [("missing_geometry", ["w0"])]
 
 
 def test_unknown_solver_is_rejected() -> None:

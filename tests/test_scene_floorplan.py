@@ -1,4 +1,5 @@
-"""Floor plans: non-overlapping rectangles, doors on shared walls, windows outside, determinism."""
+"""Floor plans: non-overlapping rectangles, door and window slots on shared/exterior walls with room
+for every opening, the no-solver placement rule, determinism."""
 
 from __future__ import annotations
 
@@ -10,11 +11,12 @@ from hypothesis import strategies as st
 from logicenveval.errors import EnvSpecError
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.physics import check_env
-from logicenveval.scene.floorplan import plan_floor
+from logicenveval.scene.floorplan import CORNER, GAP, place_by_rule, plan_floor
 from logicenveval.scene.spec import DoorRequest, RoomRequest, WindowRequest
 
 
 def _env(plan: object) -> EnvSpec:
+    plan = place_by_rule(plan, np.random.default_rng(1))  # type: ignore[arg-type]
     return EnvSpec.model_validate({"task_id": "t", "env_id": "e",
                                    "rooms": [r.model_dump() for r in plan.rooms],  # type: ignore[attr-defined]
                                    "doors": [d.model_dump() for d in plan.doors],  # type: ignore[attr-defined]
@@ -63,3 +65,15 @@ def test_property_plans_pass_the_floor_plan_check(n: int, seed: int, data: st.Da
                 reach |= set(d.rooms) - {"exterior"}
     assert reach == {r.id for r in rooms}
     assert any("exterior" in d.rooms for d in a.doors)
+    assert all(d.segment is None for d in a.doors) and all(w.segment is None for w in a.windows)
+    assert set(a.slots) == {d.id for d in a.doors} | {w.id for w in a.windows}
+    for _oid, slot in a.slots.items():  # the slot lies on its owner's wall, corners cleared
+        e = slot.edge
+        assert e.lo + CORNER - 1e-9 <= slot.lo and slot.hi <= e.hi - CORNER + 1e-9
+        assert slot.hi - slot.lo >= slot.width - 1e-9
+        assert slot.owner in {r.id for r in rooms}
+    by_stretch: dict[tuple[str, float, float, float], float] = {}
+    for slot in a.slots.values():  # every opening of a stretch fits on it together
+        key = (slot.edge.axis, slot.edge.at, slot.lo, slot.hi)
+        by_stretch[key] = by_stretch.get(key, -GAP) + slot.width + GAP
+    assert all(used <= key[3] - key[2] + 1e-9 for key, used in by_stretch.items())

@@ -142,9 +142,15 @@ def test_cli_export_and_check_house(tmp_path: Path, capsys: pytest.CaptureFixtur
     db_dir = tiny_db(tmp_path / "db")
     assert main(["check-house", str(house), "--procthor-db", str(db_dir)]) == 1  # other ids
     bad = json.loads(house.read_text())
-    bad["objects"][0]["assetId"] = "nope"
+    bad["objects"][0]["assetId"] = "nope"  # our mapping cannot say it is not ProcTHOR's: a warning
+    house.write_text(json.dumps(bad))
+    capsys.readouterr()
+    assert main(["check-house", str(house)]) == 0
+    assert "'nope' is not in our mapping" in capsys.readouterr().out
+    bad["objects"][0]["position"]["x"] = float("nan")
     house.write_text(json.dumps(bad))
     assert main(["check-house", str(house)]) == 1
+    assert "objects[0].position.x: not a finite number" in capsys.readouterr().out
     assert main(["check-house", str(tmp_path / "missing.json")]) == 2
     with pytest.raises(ConfigError):
         load_procthor_db(tmp_path)

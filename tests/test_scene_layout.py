@@ -217,6 +217,50 @@ def test_property_every_returned_layout_is_valid(solver: Solver, case: tuple[Sce
 
 
 @pytest.mark.parametrize("solver", SOLVERS)
+@settings(max_examples=10, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(scenes())
+def test_property_doors_and_windows_the_solver_places(solver: Solver, case: tuple[SceneSpec, int]) -> None:
+    """Door and window positions are layout variables (paper §3.3): on the grid, on a shared wall
+    (doors between rooms) or an exterior one (entrance, windows), within it and embedded, apart
+    from each other on a wall line, no window over a door, every door's swing square on both
+    sides free of floor objects."""
+    from logicenveval.scene.floorplan import GAP
+
+    spec, seed = case
+    try:
+        res = construct_environment(spec, catalog=CAT, rng=np.random.default_rng(seed), solver=solver)
+    except EnvSpecError as exc:
+        assert "do not fit" in str(exc)
+        return
+    env = res.env
+    report = check_env(env, CAT)
+    assert report.floor_plan.passed, report.floor_plan.failures
+    assert not {"window_overlaps_door", "blocks_door"} & {f.code for f in report.extended.failures}
+    segs = [o.segment for o in (*env.doors, *env.windows)]
+    assert all(s is not None for s in segs)
+    lines: dict[tuple[int, float], list[tuple[float, float]]] = {}
+    for (a, b) in segs:  # type: ignore[misc]
+        axis = 0 if abs(a[1] - b[1]) < 1e-9 else 1
+        start = min(a[axis], b[axis])
+        assert abs(start / 0.05 - round(start / 0.05)) < 1e-6  # a solver cell, not a drawn position
+        lines.setdefault((axis, round(a[1 - axis], 4)), []).append((min(a[axis], b[axis]), max(a[axis], b[axis])))
+    for spans in lines.values():
+        spans.sort()
+        assert all(nxt[0] - cur[1] >= GAP - 1e-6 for cur, nxt in zip(spans, spans[1:], strict=False)), spans
+    polys = {r.id: r.polygon for r in env.rooms}
+    for w in env.windows:  # windows on exterior walls: on no other room's outline
+        mid = ((w.segment[0][0] + w.segment[1][0]) / 2, (w.segment[0][1] + w.segment[1][1]) / 2)  # type: ignore[index]
+        for rid, poly in polys.items():
+            if rid != w.room:
+                xs, zs = [p[0] for p in poly], [p[1] for p in poly]  # type: ignore[union-attr]
+                on_x = min(xs) - 1e-6 <= mid[0] <= max(xs) + 1e-6 and (abs(mid[1] - min(zs)) < 1e-6
+                                                                        or abs(mid[1] - max(zs)) < 1e-6)
+                on_z = min(zs) - 1e-6 <= mid[1] <= max(zs) + 1e-6 and (abs(mid[0] - min(xs)) < 1e-6
+                                                                        or abs(mid[0] - max(xs)) < 1e-6)
+                assert not (on_x or on_z), (w.id, rid)
+
+
+@pytest.mark.parametrize("solver", SOLVERS)
 def test_ceiling_objects_touch_the_ceiling_clear_of_tall_furniture(solver: Solver) -> None:
     rooms = [RoomRequest(id="bedroom", type="Bedroom", area=12)]
     objs = [ObjectRequest(id="wardrobe", category="wardrobe", room="bedroom", role="wardrobe"),

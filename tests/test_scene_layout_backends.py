@@ -19,10 +19,12 @@ from logicenveval.scene.layout import (
     Box,
     FloorRel,
     Obstacle,
+    Opening,
     Placed,
     Solver,
     WallBox,
     backend,
+    opening_rect,
 )
 from logicenveval.scene.spec import ObjectRequest, RelationRequest, RoomRequest, SceneSpec
 
@@ -113,6 +115,67 @@ def test_property_backends_agree_on_feasibility_and_return_valid_packings(
                 assert not any(_meet(s, ext[c.id]) for c in kept if c.id != b.id), (name, b.id, s)
     if all(b.task for b in boxes):  # no relaxation freedom: both complete solvers must agree
         assert bool(results["z3"]) == bool(results["cpsat"])
+
+
+@st.composite
+def opening_packings(draw: st.DrawFn) -> tuple[tuple[int, int], list[Box], list[Obstacle], list[Opening], int]:
+    frame = (draw(st.integers(12, 40)), draw(st.integers(12, 40)))
+    boxes = [Box(f"b{k}", (0.5, draw(st.floats(0.1, 2.0)), 0.5), (draw(st.integers(1, 10)), draw(st.integers(1, 10))),
+                 task=draw(st.booleans())) for k in range(draw(st.integers(0, 5)))]
+    openings = []
+    for k in range(draw(st.integers(1, 4))):
+        side = draw(st.sampled_from(["s", "n", "w", "e"]))
+        length = frame[0] if side in "sn" else frame[1]
+        width = draw(st.integers(2, 10))
+        lo = draw(st.integers(0, length - width))
+        hi = draw(st.integers(lo, length - width))
+        door = draw(st.booleans())
+        openings.append(Opening(f"op{k}", side, ((lo, hi),), width, width if door else 6,
+                                sill=None if door else draw(st.floats(0.2, 1.2))))
+    return frame, boxes, draw(st.lists(rects, max_size=2)), openings, draw(st.sampled_from([0, 3]))
+
+
+def _opening_cells(op: Opening, p: Placed, frame: tuple[int, int]) -> tuple[int, tuple[int, int, int, int]]:
+    t = round((p.x0 if op.side in "sn" else p.z0) / 0.05)
+    return t, tuple(int(v) for v in opening_rect(op, t, frame))  # type: ignore[return-value]
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(opening_packings(), st.integers(0, 1000))
+def test_property_backends_place_doors_and_windows_validly_and_agree(
+        case: tuple[tuple[int, int], list[Box], list[Obstacle], list[Opening], int], seed: int) -> None:
+    """Doors and windows are solver variables (paper §3.3): each lies in its allowed starts on its
+    side, keeps the gap to the other openings of that side, a door's clearance is free of every
+    box, of the obstacles and of the other doors' clearances, a window's of the boxes taller than
+    its sill; both backends agree on feasibility."""
+    frame, boxes, obstacles, openings, walkway = case
+    results = {}
+    for name in SOLVERS:
+        placed, _ = backend(name).pack(frame, boxes, seed=seed, timeout_s=30.0, obstacles=obstacles,
+                                       walkway=walkway, grid=0.05, openings=openings)
+        results[name] = bool(placed)
+        if not placed:
+            continue
+        kept = {b.id: _extent(b, placed[b.id], 0.05) for b in boxes if b.id in placed}
+        at = {op.id: _opening_cells(op, placed[op.id], frame) for op in openings}
+        for op in openings:
+            t, r = at[op.id]
+            assert any(lo <= t <= hi for lo, hi in op.starts), (name, op, t)
+            assert r[0] >= 0 and r[1] >= 0 and r[2] <= frame[0] and r[3] <= frame[1]
+            blocked = [kept[b.id] for b in boxes if b.id in kept and (op.sill is None or b.size[1] > op.sill)]
+            assert not any(_meet(r, e) for e in blocked), (name, op.id)
+            for other in openings:
+                if other.id == op.id:
+                    continue
+                u, q = at[other.id]
+                if other.side == op.side:
+                    assert t + op.width + op.gap <= u or u + other.width + other.gap <= t, (name, op, other)
+                if op.sill is None and other.sill is None:
+                    assert not _meet(r, q), (name, op.id, other.id)
+            if op.sill is None:
+                assert not any(_meet(r, ob) for ob in obstacles), (name, op.id)
+    if all(b.task for b in boxes):
+        assert results["z3"] == results["cpsat"]
 
 
 @st.composite
@@ -265,6 +328,29 @@ def test_large_floors_make_walkways_exclusive_in_both_backends(seed: int) -> Non
             assert not any(_meet(s, r) for c, r in ext.items() if c != bid), (name, bid)
             assert not any(_meet(s, t) for c, t in strips.items() if c != bid), (name, bid)
     assert feasible == {name: True for name in SOLVERS}
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_exclusive_walkways_keep_clear_of_doors_the_solver_places(seed: int) -> None:
+    """As above with the door a solver variable on the south side: its square is also kept clear."""
+    from logicenveval.scene.layout import EXCLUSIVE_WALKWAYS_FROM
+
+    rng = np.random.default_rng(seed)
+    frame, walkway = (70, 70), 9
+    boxes = [Box(f"b{k}", (0.5, 0.8, 0.5), (int(rng.integers(3, 9)), int(rng.integers(3, 9))), task=k % 3 == 0)
+             for k in range(EXCLUSIVE_WALKWAYS_FROM + 2)]
+    door = Opening("d0", "s", ((3, 55),), 12, 12)
+    for name in SOLVERS:
+        placed, _ = backend(name).pack(frame, boxes, seed=seed, timeout_s=30.0, walkway=walkway, grid=0.05,
+                                       openings=[door])
+        assert placed, name
+        _, square = _opening_cells(door, placed["d0"], frame)
+        ext = {b.id: _extent(b, placed[b.id], 0.05) for b in boxes if b.id in placed}
+        for b in boxes:
+            if b.task and b.id in placed:
+                assert not _meet(_strip(ext[b.id], placed[b.id].o, walkway), square), (name, b.id)
+            if b.id in placed:
+                assert not _meet(ext[b.id], square), (name, b.id)
 
 
 def _valid_packing(frame: tuple[int, int], boxes: list[Box], placed: dict[str, Placed], obstacles: list[Obstacle],

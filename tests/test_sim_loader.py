@@ -287,3 +287,95 @@ def test_documents_in_bt_cpp_and_groot2_forms_load() -> None:
     assert t.main == "BehaviorTree_0" and "BTCPP_format" in t.warnings[0]
     again = policy_from_xml(policy_to_xml(t), roles=ROLES)
     assert again == t and again.warnings == ()
+
+
+# ----- issue 27, item 22: what the loader refuses and how --------------------------------
+
+def test_name_attribute_in_braces_is_a_name_not_a_blackboard_port() -> None:
+    p = policy_from_xml(doc('    <Sequence name="{step}"><Pick name="{x}" obj="toy"/></Sequence>'),
+                        roles=ROLES)
+    root = p.trees["Main"]
+    assert root.name == "{step}" and root.children[0].name == "{x}"
+    assert root.children[0].params == (("obj", "toy"),)
+    assert "blackboard" in str(err(doc('    <Pick name="{x}" obj="{toy}"/>')))
+
+
+@pytest.mark.parametrize(("xml", "says", "fix"), [
+    ('<Action ID="Sequence"><Pick obj="toy"/></Action>', "Sequence is a control node, not an action",
+     '<Control ID="Sequence">'),
+    ('<Control ID="Walk" target="toy"/>', "Walk is an action node, not a control", '<Action ID="Walk"'),
+    ('<Decorator ID="Sequence"><Pick obj="toy"/></Decorator>', "control node, not a decorator",
+     "<Sequence>"),
+    ('<Control ID="Inverter"><Pick obj="toy"/></Control>', "decorator node, not a control",
+     '<Decorator ID="Inverter">'),
+    ('<Condition ID="Pick" obj="toy"/>', "Pick is an action node, not a condition", '<Action ID="Pick"'),
+    ('<Action ID="Holding" obj="toy"/>', "a condition node, not an action", '<Condition ID="Holding"'),
+    ('<Condition ID="AlwaysSuccess"/>', "an action node, not a condition", '<Action ID="AlwaysSuccess"'),
+    ('<Action ID="SubTree"/>', "not how a SubTree is written", '<SubTree ID='),
+])
+def test_wrapper_tag_must_match_the_node_type(xml: str, says: str, fix: str) -> None:
+    e = err(doc(f"    <Sequence>\n      {xml}\n    </Sequence>"))
+    assert e.line == 4 and says in str(e) and e.hint is not None and fix in e.hint
+
+
+def test_matching_wrappers_load() -> None:
+    a = policy_from_xml(doc('<Control ID="Sequence"><Decorator ID="Inverter"><Condition ID="Holding" '
+                            'obj="toy"/></Decorator><Action ID="AlwaysSuccess"/></Control>'))
+    b = policy_from_xml(doc('<Sequence><Inverter><Holding obj="toy"/></Inverter><AlwaysSuccess/>'
+                            '</Sequence>'))
+    assert a == b
+
+
+@pytest.mark.parametrize(("value", "why"), [
+    ("1_0", "leading '1'"), ("3 ", "leading '3'"), ("2x", "leading '2'"), (" 3", "ASCII digits"),
+    ("+3", "ASCII digits"), ("\u0663", "ASCII digits"), ("３", "ASCII digits"), ("", "ASCII digits"),
+    ("0x3", "leading '0'"), ("3.0", "leading '3'"), ("2147483648", "32-bit"), ("-2147483649", "32-bit"),
+])
+def test_integers_are_ascii_digits_as_behaviortree_cpp_reads_them(value: str, why: str) -> None:
+    e = err(doc(f'    <Repeat num_cycles="{value}"><Pick obj="toy"/></Repeat>'))
+    assert e.line == 3 and "num_cycles" in str(e) and why in str(e)
+
+
+@pytest.mark.parametrize(("value", "want"), [("3", "3"), ("-1", "-1"), ("007", "7"),
+                                              ("2147483647", "2147483647")])
+def test_plain_integers_load(value: str, want: str) -> None:
+    p = policy_from_xml(doc(f'<Repeat num_cycles="{value}"><Pick obj="toy"/></Repeat>'))
+    assert p.trees["Main"].param("num_cycles") == want
+
+
+@pytest.mark.parametrize(("value", "want"), [("true", "true"), ("True", "true"), ("TRUE", "true"),
+                                              ("1", "true"), ("false", "false"), ("0", "false")])
+def test_booleans_as_behaviortree_cpp_spells_them(value: str, want: str) -> None:
+    p = policy_from_xml(doc(f'<TryCatch catch_on_halt="{value}"><Pick obj="toy"/>'
+                            '<Pick obj="box"/></TryCatch>'))
+    assert p.trees["Main"].param("catch_on_halt") == want
+
+
+@pytest.mark.parametrize("value", ["tRuE", "yes", " true", "2"])
+def test_other_boolean_spellings_are_refused(value: str) -> None:
+    e = err(doc(f'    <TryCatch catch_on_halt="{value}"><Pick obj="toy"/><Pick obj="box"/></TryCatch>'))
+    assert e.line == 3 and "not a boolean" in str(e)
+
+
+@pytest.mark.parametrize(("body", "says"), [
+    ('<Fly obj="toy"/>', "unknown node <Fly>"),
+    ('<Pick obj="toy" speed="2"/>', "no port 'speed'"),
+    ('<Walk target="teddy"/>', "'teddy' is not a role of the task"),
+    ('<Action ID="Sequence"><Pick obj="toy"/></Action>', "not an action node"),
+    ('<Repeat num_cycles="1_0"><Pick obj="toy"/></Repeat>', "not an integer"),
+])
+def test_simulate_cli_exits_2_on_a_policy_it_cannot_load(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str], body: str, says: str) -> None:
+    """One rule (docs/security.md): a policy that cannot be loaded is bad input, exit 2 with
+    file:line and a fix, whatever the reason (unknown node and bad port included)."""
+    from logicenveval.cli import main
+
+    policy = tmp_path / "p.xml"
+    policy.write_text(f'<root BTCPP_format="4">\n<BehaviorTree ID="M">\n{body}\n'
+                      "</BehaviorTree></root>")
+    env = Path(__file__).parent / "fixtures" / "envs" / "one_room.json"
+    code = main(["simulate", "--task", "clean_living_room", "--policy", str(policy), "--env",
+                 str(env)])
+    out, errors = capsys.readouterr()
+    assert code == 2 and out == "" and "Traceback" not in errors
+    assert f"{policy}:3" in errors and says in errors and "(fix: " in errors

@@ -152,6 +152,22 @@ def test_if_then_else_and_while_do_else() -> None:
     assert v.status == "passed" and walks(v) == 2
 
 
+def test_an_action_in_a_condition_slot_runs_once() -> None:
+    """BT.CPP 4.10 (recorded: tests/conformance, `while_do_else_action_condition`): a finished
+    action keeps its status until a parent resets it. WhileDoElse re-ticks its condition while
+    the branch runs; a Pick there is not picked again (which would violate 'hand empty')."""
+    v = run('<Sequence><Walk target="toy"/><WhileDoElse><Pick obj="toy"/>'
+            '<Sequence><Walk target="box"/><PutIn obj="toy" target="box"/></Sequence>'
+            "<AlwaysFailure/></WhileDoElse></Sequence>", trace=True)
+    assert v.status == "passed" and v.ticks == 5
+    assert [e["status"] for e in v.trace if e["node"] == "Pick"] == ["RUNNING", "SUCCESS"]
+    # under a decorator the action is reset after each tick and runs again (BT.CPP alike)
+    v = run('<Sequence><Walk target="toy"/><WhileDoElse><ForceSuccess><Pick obj="toy"/>'
+            '</ForceSuccess><Sequence><Walk target="box"/><PutIn obj="toy" target="box"/>'
+            "</Sequence></WhileDoElse></Sequence>")
+    assert v.status == "precondition_violation" and v.fault_node == "Pick"
+
+
 def test_parallel_counts() -> None:
     both = '<Parallel{a}><Walk target="toy"/><AlwaysFailure/></Parallel>'
     assert run(both.format(a="")).status == "tree_failure"  # failure_count=1

@@ -19,7 +19,7 @@ from logicenveval.model.tree import (
     trajectory_from_assignment,
 )
 from logicenveval.sim.loader import load_policy
-from logicenveval.sim.simulator import simulate
+from logicenveval.sim.simulator import simulate, simulate_file
 from logicenveval.sim.situations import situation_env
 from logicenveval.sim.world import holds_initial
 
@@ -132,6 +132,11 @@ def test_cli_env_file_and_policy_file(tmp_path: Path, capsys: pytest.CaptureFixt
             str(env_file), "--json", "--policy"]
     assert main([*args, "unreachable"]) == 1
     assert json.loads(capsys.readouterr().out)["status"] == "goal_unmet"
-    assert main([*args, str(bad)]) == 1
-    out = json.loads(capsys.readouterr().out)
-    assert out["status"] == "unknown_node" and ":2" in out["message"]
+    # a policy that cannot be loaded is bad input: exit 2 naming file:line and a fix; the
+    # Python API `simulate_file` judges it instead (an `unknown_node` verdict)
+    assert main([*args, str(bad)]) == 2
+    captured = capsys.readouterr()
+    assert captured.out == "" and f"{bad}:2" in captured.err and "unknown node <Fly>" in captured.err
+    assert "fix:" in captured.err
+    verdict = simulate_file(bad, env, TASK, CAT)
+    assert verdict.status == "unknown_node" and ":2" in verdict.message

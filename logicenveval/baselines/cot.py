@@ -1,17 +1,23 @@
 """CoT baseline: one chain-of-thought request designs several environments, instantiated as given.
 
-The model reasons about the situations the task may present and writes every environment
-(rooms, objects with coordinates, attributes, states) as JSON. There is no solver and no repair
-beyond schema validation: physical mistakes are part of what the benchmark measures.
+The model reasons about the situations the task may present and writes every environment as
+JSON: its floor plan (room polygons, door and window segments) and its objects (coordinates,
+attributes, states). There is no solver and no repair beyond schema validation: physical
+mistakes, the floor plan's included, are part of what the benchmark measures.
 """
 
 from __future__ import annotations
 
 from logicenveval.baselines.drafts import env_from_draft
+from logicenveval.baselines.replies import WrittenEnvironmentsReply
 from logicenveval.errors import ConfigError, LogicEnvEvalError
-from logicenveval.generators.base import GenerationContext, GenerationFailure, GenerationResult
+from logicenveval.generators.base import (
+    Attempt,
+    GenerationContext,
+    GenerationFailure,
+    GenerationResult,
+)
 from logicenveval.llm.ask import ask
-from logicenveval.llm.replies import EnvironmentsReply
 from logicenveval.model.task import TaskBrief
 
 
@@ -26,21 +32,31 @@ class CoT:
         self.max_environments = max_environments
 
     def generate(self, brief: TaskBrief, ctx: GenerationContext) -> GenerationResult:
+        """One attempt per draft the model wrote; a reply that never validates fails all
+        `max_environments` drafts it could have written, so failing never beats answering."""
         payload = {"task": brief.model_dump(mode="json"), "n_environments": self.max_environments,
                    "categories": sorted(ctx.catalog.categories)}
+        ids = [f"{self.name}-{i:02d}" for i in range(self.max_environments)]
+        ctx.plan_attempts(self.max_environments)
         try:
-            reply = ask(ctx.model, "cot_environments", payload, EnvironmentsReply, seed=ctx.seed)
+            reply = ask(ctx.model, "cot_environments", payload, WrittenEnvironmentsReply, seed=ctx.seed)
         except LogicEnvEvalError as exc:
-            return GenerationResult(failures=[GenerationFailure(stage="cot_environments", message=str(exc))])
+            return GenerationResult(
+                failures=[GenerationFailure(stage="cot_environments", message=str(exc))],
+                attempts=[Attempt(id=i, stage="cot_environments", reason=str(exc)) for i in ids])
+        drafts = reply.environments[: self.max_environments]
+        ctx.plan_attempts(len(drafts))
         envs = []
         failures = []
-        for i, draft in enumerate(reply.environments[: self.max_environments]):
-            env_id = f"{self.name}-{i:02d}"
+        attempts = []
+        for env_id, draft in zip(ids, drafts, strict=False):
             try:
-                envs.append(env_from_draft(brief, env_id=env_id, generator=self.name, rooms=list(draft.rooms),
-                                           objects=list(draft.objects), relations=list(draft.relations),
+                envs.append(env_from_draft(brief, env_id=env_id, generator=self.name, draft=draft,
                                            extra={"situation": draft.situation}))
             except LogicEnvEvalError as exc:
                 failures.append(GenerationFailure(stage="instantiate", message=str(exc), env_id=env_id))
-        return GenerationResult(envs=envs, failures=failures, artifacts={
+                attempts.append(Attempt(id=env_id, target=draft.situation, stage="instantiate", reason=str(exc)))
+                continue
+            attempts.append(Attempt(id=env_id, target=draft.situation, env_id=env_id))
+        return GenerationResult(envs=envs, failures=failures, attempts=attempts, artifacts={
             "reasoning": reply.reasoning, "situations": [d.situation for d in reply.environments]})

@@ -1,9 +1,12 @@
-"""Instantiating a model's environment draft (rooms + placed objects) as an EnvSpec, as given.
+"""Instantiating a model's written environment as an EnvSpec, as given; Holodeck-like's floor plan.
 
-No solver and no repair: the only transformation is geometry bookkeeping (room rectangles side
-by side, room-relative coordinates made absolute, doors and windows put on the walls the draft
-names). A draft that cannot be an EnvSpec (an unknown support id, a room missing) raises
-`EnvSpecError`, which the baselines record as a generation failure.
+CoT and IFG write the whole environment — room polygons, door and window segments, object
+positions, one world frame — and `env_from_draft` copies it into an EnvSpec: no solver, no
+repair, the only additions are door/window ids (`d0`, `w0`, … in the order written). A draft that
+cannot be an EnvSpec (an unknown support id or room) raises `EnvSpecError`, which the baselines
+record as a generation failure; a physically wrong one is an EnvSpec the PhyPR checker judges.
+
+`floor_plan` is the Holodeck-like's floor plan from rooms by area (rectangles side by side).
 """
 
 from __future__ import annotations
@@ -13,16 +16,17 @@ from typing import Any
 from pydantic import ValidationError
 
 from logicenveval.baselines.geometry import RoomRect, layout_rooms
+from logicenveval.baselines.replies import WrittenEnvironment
 from logicenveval.errors import EnvSpecError
 from logicenveval.generators.construction import placement_fields
-from logicenveval.llm.replies import DoorDraft, PlacedObject, RelationDraft, RoomDraft
+from logicenveval.llm.replies import DoorDraft, RoomDraft
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import TaskBrief
 from logicenveval.validation import first_error
 
 
 def floor_plan(rooms: list[RoomDraft]) -> tuple[list[RoomRect], list[dict[str, Any]], list[dict[str, Any]]]:
-    """Room rectangles, doors and windows (EnvSpec dicts) of a list of room drafts."""
+    """Holodeck-like: room rectangles, doors and windows (EnvSpec dicts) of a list of room drafts."""
     rects = layout_rooms([(r.id, r.area_m2) for r in rooms])
     by_id = {r.id: r for r in rects}
     order = [r.id for r in rects]
@@ -64,36 +68,28 @@ def _door_segment(rect: RoomRect, door: DoorDraft, by_id: dict[str, RoomRect], o
     return _wall_segment(rect, "n", door.width)
 
 
-def env_from_draft(
-    brief: TaskBrief,
-    *,
-    env_id: str,
-    generator: str,
-    rooms: list[RoomDraft],
-    objects: list[PlacedObject],
-    relations: list[RelationDraft],
-    extra: dict[str, Any] | None = None,
-) -> EnvSpec:
-    """The EnvSpec of a draft whose object positions are relative to their room's corner."""
-    rects, doors, windows = floor_plan(rooms)
-    offset = {r.id: r.x0 for r in rects}
-    out: list[dict[str, Any]] = []
+def env_from_draft(brief: TaskBrief, *, env_id: str, generator: str, draft: WrittenEnvironment,
+                   extra: dict[str, Any] | None = None) -> EnvSpec:
+    """The EnvSpec of a written environment, coordinates exactly as the model wrote them."""
+    objects: list[dict[str, Any]] = []
     roles: dict[str, str | None] = {r: None for r in brief.roles}
-    for o in objects:
+    for o in draft.objects:
         support, container = placement_fields(o.placement)
-        x, y, z = o.position
-        out.append({"id": o.id, "category": o.category, "room": o.room,
-                    "position": [round(x + offset.get(o.room, 0.0), 3), y, z], "size": list(o.size),
-                    "yaw": o.yaw, "support": support, "container": container,
-                    "attributes": dict(o.attributes), "states": dict(o.states)})
+        objects.append({"id": o.id, "category": o.category, "room": o.room, "position": list(o.position),
+                        "size": list(o.size), "yaw": o.yaw, "support": support, "container": container,
+                        "attributes": dict(o.attributes), "states": dict(o.states)})
         if o.role in roles and roles[o.role] is None:
             roles[o.role] = o.id
+    room_ids = [r.id for r in draft.rooms]
     data = {
         "task_id": brief.id, "generator": generator, "env_id": env_id, "claimed_trajectory": None,
-        "rooms": [{"id": r.id, "type": d.type, "polygon": r.polygon} for r, d in zip(rects, rooms, strict=True)],
-        "doors": doors, "windows": windows, "objects": out,
-        "relations": [{"type": r.type, "args": list(r.args)} for r in relations],
-        "roles": roles, "agent": {"room": brief.rooms[0] if brief.rooms[0] in offset else rooms[0].id},
+        "rooms": [{"id": r.id, "type": r.type, "polygon": [list(p) for p in r.polygon]} for r in draft.rooms],
+        "doors": [{"id": f"d{k}", "rooms": list(d.rooms), "segment": [list(p) for p in d.segment],
+                   "height": d.height, "type": d.type, "state": d.state} for k, d in enumerate(draft.doors)],
+        "windows": [{"id": f"w{k}", "room": w.room, "segment": [list(p) for p in w.segment], "sill": w.sill,
+                     "height": w.height, "state": w.state} for k, w in enumerate(draft.windows)],
+        "objects": objects, "relations": [{"type": r.type, "args": list(r.args)} for r in draft.relations],
+        "roles": roles, "agent": {"room": brief.rooms[0] if brief.rooms[0] in room_ids else room_ids[0]},
         **(extra or {}),
     }
     try:
@@ -104,4 +100,3 @@ def env_from_draft(
                            field=loc or None,
                            hint="the baseline instantiates drafts as given; the model must name existing "
                                 "rooms and object ids") from None
-

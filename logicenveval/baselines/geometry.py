@@ -1,20 +1,15 @@
-"""Room rectangles shared by the baselines: how a room draft's area becomes a floor polygon.
+"""Room rectangles from room areas: the Holodeck-like's floor plan and the offline CoT/IFG
+writer's habit.
 
 Rooms are laid out side by side along x in the order they are listed, each from z = 0 to its
-depth, so that consecutive rooms share a wall (where their doors go). Object coordinates in a
-draft are relative to the room's south-west corner (x east, z north); walls are `s` (z = 0),
-`n` (z = depth), `w` (x = 0) and `e` (x = width).
+depth, so that consecutive rooms share a wall. Within a room, x runs east and z north from its
+south-west corner; walls are `s` (z = 0), `n` (z = depth), `w` (x = 0) and `e` (x = width).
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-
-from logicenveval.domain.catalog import Catalog
-
-#: extents of an object whose category the catalog does not know
-UNKNOWN_SIZE = (0.4, 0.4, 0.4)
 
 
 @dataclass(frozen=True)
@@ -45,19 +40,3 @@ def layout_rooms(rooms: list[tuple[str, float]]) -> list[RoomRect]:
         out.append(RoomRect(rid, round(x, 3), w, d))
         x += w
     return out
-
-
-def typical_size(category: str, catalog: Catalog) -> tuple[float, float, float]:
-    """The middle of the catalog's size range: what a model guesses for an ordinary instance."""
-    cat = catalog.get(category)
-    if cat is None:
-        return UNKNOWN_SIZE
-    lo, hi = cat.size_min, cat.size_max
-    return (round((lo[0] + hi[0]) / 2, 3), round((lo[1] + hi[1]) / 2, 3), round((lo[2] + hi[2]) / 2, 3))
-
-
-def footprint(size: tuple[float, float, float], yaw: float) -> tuple[float, float]:
-    """Extents along x and z after a rotation by a multiple of 90 degrees."""
-    if round(yaw) % 180 == 90:
-        return size[2], size[0]
-    return size[0], size[2]

@@ -13,7 +13,7 @@ from typing import Any
 import numpy as np
 
 from logicenveval.baselines.drafts import floor_plan
-from logicenveval.baselines.geometry import RoomRect, typical_size
+from logicenveval.baselines.geometry import RoomRect
 from logicenveval.baselines.holodeck_solver import (
     DOOR_CLEARANCE,
     NEAR_GAP,
@@ -28,13 +28,19 @@ from logicenveval.baselines.holodeck_solver import (
 from logicenveval.baselines.replies import HolodeckSceneReply
 from logicenveval.domain.catalog import Catalog
 from logicenveval.errors import ConfigError, LogicEnvEvalError
-from logicenveval.generators.base import GenerationContext, GenerationFailure, GenerationResult
+from logicenveval.generators.base import (
+    Attempt,
+    GenerationContext,
+    GenerationFailure,
+    GenerationResult,
+)
 from logicenveval.generators.construction import placement_fields
 from logicenveval.llm.ask import ask
 from logicenveval.llm.replies import ObjectDraft
 from logicenveval.llm.vocab import scene_vocabulary
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import TaskBrief
+from logicenveval.scene.guessed_layout import typical_size
 
 WALL_OBJECT_Y = 1.6  # centre height of wall-mounted objects
 WALL_HEIGHT = 2.7
@@ -52,8 +58,12 @@ class Holodeck:
         self.max_nodes = max_nodes
 
     def generate(self, brief: TaskBrief, ctx: GenerationContext) -> GenerationResult:
+        """One attempt: the scene. It fails when the scene request or its layout fails, or when
+        the solver left out an object the scene gave a task role: a scene without a task object
+        it had to place is not the environment it set out to build (it stays in plan.json)."""
         payload = {"task": brief.model_dump(mode="json"), "categories": sorted(ctx.catalog.categories)}
         env_id = f"{self.name}-00"
+        ctx.plan_attempts(1)
         try:
             scene = ask(ctx.model, "holodeck_scene", payload, HolodeckSceneReply, seed=ctx.seed,
                         vocabulary=scene_vocabulary(brief.rooms, sorted(brief.roles), [
@@ -61,12 +71,21 @@ class Holodeck:
             env, log = build_scene(brief, scene, ctx.catalog, ctx.rng, env_id=env_id, generator=self.name,
                                    grid=self.grid, max_nodes=self.max_nodes)
         except LogicEnvEvalError as exc:
-            return GenerationResult(failures=[GenerationFailure(stage="holodeck", message=str(exc), env_id=env_id)])
+            return GenerationResult(
+                failures=[GenerationFailure(stage="holodeck", message=str(exc), env_id=env_id)],
+                attempts=[Attempt(id=env_id, stage="holodeck", reason=str(exc))])
+        artifacts = {"scene": scene.model_dump(mode="json"), "layout": log}
+        roles = {o.id: o.role for o in scene.objects if o.role}
         failures = [GenerationFailure(stage="layout", env_id=env_id,
                                       message=f"role object {oid!r} could not be placed and was left out")
-                    for oid in log["dropped"] if oid in {o.id for o in scene.objects if o.role}]
-        return GenerationResult(envs=[env], artifacts={"scene": scene.model_dump(mode="json"), "layout": log},
-                                failures=failures)
+                    for oid in log["dropped"] if oid in roles]
+        if failures:
+            left_out = sorted({roles[oid] for oid in log["dropped"] if oid in roles})
+            reason = f"the layout left out the object(s) of role(s) {left_out}"
+            return GenerationResult(artifacts=artifacts, failures=failures,
+                                    attempts=[Attempt(id=env_id, stage="layout", reason=reason)])
+        return GenerationResult(envs=[env], artifacts=artifacts,
+                                attempts=[Attempt(id=env_id, env_id=env_id)])
 
 
 def _door_obstacles(rect: RoomRect, doors: list[dict[str, Any]]) -> list[Box]:
@@ -170,9 +189,14 @@ def _wall_objects(rect: RoomRect, drafts: dict[str, ObjectDraft], room_of: dict[
     heights = {i: sizes[i][1] for i in floor}
     hung: dict[str, list[tuple[float, float]]] = {"n": [], "s": [], "w": [], "e": []}
     for oid, o in drafts.items():
-        if room_of[oid] != rect.id or placement_fields(o.placement)[0] not in ("wall", "ceiling"):
+        where = placement_fields(o.placement)[0]
+        if room_of[oid] != rect.id or where not in ("wall", "ceiling"):
             continue
         w, h, d = sizes[oid]
+        if where == "ceiling":  # as Holodeck's ceiling objects (lights): at the room's centre, touching it
+            box = Box(rect.width / 2, rect.depth / 2, w, d)
+            placed[oid] = _record(o, rect, box, WALL_HEIGHT - h / 2, sizes[oid], 0.0, "ceiling", None)
+            continue
         y = min(WALL_OBJECT_Y, WALL_HEIGHT - h / 2 - 0.1)
         blocked = _wall_blocked(rect, openings, floor, heights, y - h / 2)
         for wall_id, spans in hung.items():

@@ -2,7 +2,7 @@
 
 Stage 1 (`ifg_intents`, temperature 1.1) samples k intents — logical trajectories written as
 the facts that hold initially; stage 2 (`ifg_environment`, temperature 0.5) designs one
-environment per intent, with coordinates from the model (no solver). Duplicate intents are kept:
+environment per intent, floor plan and coordinates written by the model (no solver). Duplicate intents are kept:
 IFG's redundancy is part of what the benchmark measures. Seeds of both stages are drawn from the
 run's generator, so a run is reproducible and different runs sample differently.
 """
@@ -10,10 +10,16 @@ run's generator, so a run is reproducible and different runs sample differently.
 from __future__ import annotations
 
 from logicenveval.baselines.drafts import env_from_draft
+from logicenveval.baselines.replies import WrittenEnvironmentsReply
 from logicenveval.errors import ConfigError, LogicEnvEvalError
-from logicenveval.generators.base import GenerationContext, GenerationFailure, GenerationResult
+from logicenveval.generators.base import (
+    Attempt,
+    GenerationContext,
+    GenerationFailure,
+    GenerationResult,
+)
 from logicenveval.llm.ask import ask
-from logicenveval.llm.replies import EnvironmentsReply, TrajectoriesReply
+from logicenveval.llm.replies import TrajectoriesReply
 from logicenveval.model.task import TaskBrief
 
 #: intents per task: the paper does not state k; 8 exceeds the minimum cover of most benchmark
@@ -37,27 +43,39 @@ class IFG:
         self.env_temperature = env_temperature
 
     def generate(self, brief: TaskBrief, ctx: GenerationContext) -> GenerationResult:
+        """One attempt per intent asked for (k): an intent the model did not give, or whose
+        environment is invalid, is a failed attempt."""
         task = brief.model_dump(mode="json")
         seeds = [int(s) for s in ctx.rng.integers(0, 2**31 - 1, size=self.k + 1)]
+        ids = [f"{self.name}-{i:02d}" for i in range(self.k)]
+        ctx.plan_attempts(self.k)
         try:
             intents = ask(ctx.model, "ifg_intents", {"task": task, "k": self.k}, TrajectoriesReply,
                           temperature=self.intent_temperature, seed=seeds[0]).trajectories[: self.k]
         except LogicEnvEvalError as exc:
-            return GenerationResult(failures=[GenerationFailure(stage="ifg_intents", message=str(exc))])
+            return GenerationResult(
+                failures=[GenerationFailure(stage="ifg_intents", message=str(exc))],
+                attempts=[Attempt(id=i, stage="ifg_intents", reason=str(exc)) for i in ids])
         categories = sorted(ctx.catalog.categories)
         envs = []
         failures = []
+        attempts = []
         for i, intent in enumerate(intents):
-            env_id = f"{self.name}-{i:02d}"
+            env_id = ids[i]
+            target = " & ".join(intent.facts)
             try:
                 reply = ask(ctx.model, "ifg_environment", {"task": task, "intent": list(intent.facts),
                                                            "categories": categories},
-                            EnvironmentsReply, temperature=self.env_temperature, seed=seeds[i + 1])
+                            WrittenEnvironmentsReply, temperature=self.env_temperature, seed=seeds[i + 1])
                 draft = reply.environments[0]
-                envs.append(env_from_draft(brief, env_id=env_id, generator=self.name, rooms=list(draft.rooms),
-                                           objects=list(draft.objects), relations=list(draft.relations),
+                envs.append(env_from_draft(brief, env_id=env_id, generator=self.name, draft=draft,
                                            extra={"intent": list(intent.facts), "situation": intent.description}))
             except LogicEnvEvalError as exc:
                 failures.append(GenerationFailure(stage="ifg_environment", message=str(exc), env_id=env_id))
-        return GenerationResult(envs=envs, failures=failures, artifacts={
+                attempts.append(Attempt(id=env_id, target=target, stage="ifg_environment", reason=str(exc)))
+                continue
+            attempts.append(Attempt(id=env_id, target=target, env_id=env_id))
+        missing = f"the intents reply gave {len(intents)} of the {self.k} intents asked for"
+        attempts += [Attempt(id=i, stage="ifg_intents", reason=missing) for i in ids[len(intents):]]
+        return GenerationResult(envs=envs, failures=failures, attempts=attempts, artifacts={
             "k": self.k, "seeds": seeds, "intents": [t.model_dump(mode="json") for t in intents]})

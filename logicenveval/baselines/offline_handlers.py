@@ -4,11 +4,12 @@ Each handler implements its baseline's *strategy* with the same analyser the Log
 handlers use:
 - `cot_environments`: a flat reading of the description — a baseline situation (every factor at
   its first value, the case the text describes first) plus, for each factor, each other value
-  one at a time, with no decision-tree nesting; coordinates from `heuristics`.
+  one at a time, with no decision-tree nesting; the floor plan from `written_floor_plan` (the
+  writer's own coarse geometry), object coordinates from `scene.guessed_layout`.
 - `ifg_intents`: k intents sampled with `default_rng(request.seed)`, each factor's value drawn
   from a softmax over a prior that prefers the first-described value, sharpened by 1/temperature.
-- `ifg_environment`: one environment realising the intent, coordinates from `heuristics` with a
-  temperature-scaled, seeded wall gap.
+- `ifg_environment`: one environment realising the intent, the same floor plan rule, coordinates
+  from `scene.guessed_layout` with a temperature-scaled, seeded wall gap.
 - `holodeck_scene`: the default room of the description — every role object in its typical
   place, plus furniture typical of each room type (catalog `rooms`), and spatial relations.
 """
@@ -20,16 +21,14 @@ from typing import Any
 
 import numpy as np
 
-from logicenveval.baselines.drafts import floor_plan
 from logicenveval.baselines.geometry import room_dims
-from logicenveval.baselines.heuristics import guess_coordinates
 from logicenveval.domain.catalog import Catalog, load_catalog
 from logicenveval.generators.realise import task_objects
 from logicenveval.llm.analysis import Factor, analyse
 from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.offline import handler
-from logicenveval.llm.replies import RoomDraft
 from logicenveval.model.rooms import room_type_of
+from logicenveval.scene.guessed_layout import guess_coordinates
 
 #: typical floor area (m²) per room type
 AREA = {"LivingRoom": 22.0, "Kitchen": 13.0, "Bedroom": 15.0, "Bathroom": 7.0, "Study": 11.0,
@@ -89,36 +88,83 @@ def value_probabilities(n_values: int, temperature: float) -> np.ndarray:
     return np.asarray(z / z.sum())
 
 
-def door_stretches(rooms: list[dict[str, Any]]) -> dict[str, dict[str, list[tuple[float, float]]]]:
-    """Room → wall → stretches along the wall in front of a door (door width plus its swing)."""
-    rects, doors, _ = floor_plan([RoomDraft.model_validate(r) for r in rooms])
-    out: dict[str, dict[str, list[tuple[float, float]]]] = {r.id: {} for r in rects}
-    for rect in rects:
-        for d in doors:
+#: room types a writer thinks of as connecting the others
+HUBS = ("Hallway", "Entryway")
+
+
+def written_floor_plan(task: dict[str, Any]) -> dict[str, list[dict[str, Any]]]:
+    """The floor plan a writer without a solver puts down, in coordinates (as the paper's prompts
+    have the LLM write vertex coordinates): the task's rooms as rectangles side by side along x in
+    the order listed, each of its type's typical area A, `round(sqrt(1.25 A), 1)` wide and
+    `round(A / width, 1)` deep; one room is the hub (a hallway or entryway if there is one, else
+    the first room) and gets the entrance, centred on its south wall, and a door to every other
+    room, centred on the hub's wall that faces that room — the writer connects rooms by what they
+    are, not by where it drew them, so a door to a room that is not the hub's neighbour lands on a
+    wall the two do not share; a window 1.2 m wide, sill 0.9 m, 1.2 m high, centred on the north
+    wall of each room but hallways, pantries and entryways. Returns `rooms`, `doors`, `windows` in
+    the `WrittenEnvironment` form."""
+    names = list(task["rooms"])
+    types = {r: room_type_of(r) for r in names}
+    hub = next((r for r in names if types[r] in HUBS), names[0])
+    rects: dict[str, tuple[float, float, float]] = {}  # room -> (x0, width, depth)
+    x = 0.0
+    for r in names:
+        w, d = room_dims(AREA.get(types[r], 12.0))
+        rects[r] = (round(x, 2), w, d)
+        x += w
+    hx, hw, hd = rects[hub]
+    doors = [{"rooms": [hub, "exterior"], "segment": [[round(hx + hw / 2 - 0.45, 2), 0.0],
+                                                      [round(hx + hw / 2 + 0.45, 2), 0.0]],
+              "type": "door", "state": "closed"}]
+    for r in names:
+        if r == hub:
+            continue
+        wall_x = round(hx + hw, 2) if rects[r][0] > hx else hx
+        doors.append({"rooms": [hub, r], "segment": [[wall_x, round(hd / 2 - 0.45, 2)], [wall_x, round(hd / 2 + 0.45, 2)]],
+                      "type": "door", "state": "open"})
+    windows = [{"room": r, "segment": [[round(x0 + w / 2 - 0.6, 2), d], [round(x0 + w / 2 + 0.6, 2), d]],
+                "sill": 0.9, "height": 1.2, "state": "closed"}
+               for r, (x0, w, d) in rects.items() if types[r] not in ("Hallway", "Pantry", "Entryway")]
+    rooms = [{"id": r, "type": types[r], "polygon": [[x0, 0.0], [round(x0 + w, 2), 0.0], [round(x0 + w, 2), d], [x0, d]]}
+             for r, (x0, w, d) in rects.items()]
+    return {"rooms": rooms, "doors": doors, "windows": windows}
+
+
+def door_stretches(plan: dict[str, list[dict[str, Any]]]) -> dict[str, dict[str, list[tuple[float, float]]]]:
+    """Room → wall → stretches along the wall (room-relative) in front of a door the plan draws on
+    that wall (door width plus its swing), which the writer keeps furniture off."""
+    out: dict[str, dict[str, list[tuple[float, float]]]] = {}
+    for room in plan["rooms"]:
+        (x0, z0), (x1, _), (_, z1) = room["polygon"][0], room["polygon"][1], room["polygon"][2]
+        walls = out.setdefault(room["id"], {})
+        for d in plan["doors"]:
             (ax, az), (bx, bz) = d["segment"]
-            ax, bx = ax - rect.x0, bx - rect.x0
             width = max(abs(bx - ax), abs(bz - az))
-            if az == bz and az in (0.0, rect.depth) and 0 <= min(ax, bx) <= rect.width:
-                wall, lo, hi = ("s" if az == 0.0 else "n"), min(ax, bx), max(ax, bx)
-            elif ax == bx and (abs(ax) < 1e-6 or abs(ax - rect.width) < 1e-6):
-                wall, lo, hi = ("w" if abs(ax) < 1e-6 else "e"), min(az, bz), max(az, bz)
+            if az == bz and az in (z0, z1) and x0 <= min(ax, bx) and max(ax, bx) <= x1:
+                wall, lo, hi = ("s" if az == z0 else "n"), min(ax, bx) - x0, max(ax, bx) - x0
+            elif ax == bx and ax in (x0, x1) and z0 <= min(az, bz) and max(az, bz) <= z1:
+                wall, lo, hi = ("w" if ax == x0 else "e"), min(az, bz) - z0, max(az, bz) - z0
             else:
                 continue
-            out[rect.id].setdefault(wall, []).append((lo - width, hi + width))
+            walls.setdefault(wall, []).append((lo - width, hi + width))
     return out
 
 
 def _environment(task: dict[str, Any], situation: str, facts: list[str], catalog: Catalog,
                  rng: np.random.Generator | None, wall_gap: float) -> dict[str, Any]:
-    rooms = default_rooms(task)
-    dims = {r["id"]: room_dims(r["area_m2"]) for r in rooms}
+    plan = written_floor_plan(task)
+    origin = {r["id"]: tuple(r["polygon"][0]) for r in plan["rooms"]}
+    dims = {r["id"]: (r["polygon"][1][0] - r["polygon"][0][0], r["polygon"][2][1] - r["polygon"][0][1])
+            for r in plan["rooms"]}
     objects = guess_coordinates(task_objects(task, facts, catalog), dims, catalog, rng=rng, wall_gap=wall_gap,
-                                doors=door_stretches(rooms))
+                                doors=door_stretches(plan))
+    for o in objects:  # the writer's room-relative thinking, written in the plan's frame
+        (ox, oz), (x, y, z) = origin[o["room"]], o["position"]
+        o["position"] = (round(x + ox, 3), y, round(z + oz, 3))
     relations = [{"type": "on" if o["placement"].startswith("on:") else "inside",
                   "args": [o["id"], o["placement"].split(":", 1)[1]]}
                  for o in objects if o["placement"].startswith(("on:", "inside:"))]
-    return {"situation": situation, "rooms": rooms,
-            "objects": [dict(o) for o in objects], "relations": relations}
+    return {"situation": situation, **plan, "objects": [dict(o) for o in objects], "relations": relations}
 
 
 @handler("cot_environments")

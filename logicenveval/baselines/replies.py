@@ -1,10 +1,68 @@
-"""Reply model of the Holodeck-like scene request (the other baselines reuse llm.replies)."""
+"""Reply models of the baselines' own request kinds (the other kinds reuse llm.replies).
+
+CoT and IFG write whole environments, floor plan included, in one world frame (x east, z north,
+y up, metres), as the paper's prompts have the LLM write vertex coordinates: rooms as polygons,
+doors and windows as segments on walls, objects with positions. The harness checks what they
+wrote and repairs nothing (`baselines.drafts`). Holodeck-like gives rooms by area and objects with
+placements only: its own solver places them.
+"""
 
 from __future__ import annotations
 
+from typing import Literal
+
 from pydantic import BaseModel, ConfigDict, Field
 
-from logicenveval.llm.replies import ObjectDraft, RelationDraft, RoomDraft
+from logicenveval.llm.replies import ObjectDraft, PlacedObject, RelationDraft, RoomDraft
+
+_F = ConfigDict(frozen=True, extra="ignore")
+
+Point = tuple[float, float]
+
+
+class WrittenRoom(BaseModel):
+    model_config = _F
+    id: str = Field(description="the room id, one of the task's rooms")
+    type: str = Field(description="room type, e.g. LivingRoom, Kitchen, Bedroom, Bathroom, Study")
+    polygon: list[Point] = Field(min_length=3, description="the floor outline: its vertices (x, z) in metres, "
+                                 "in order around the room")
+
+
+class WrittenDoor(BaseModel):
+    model_config = _F
+    rooms: tuple[str, str] = Field(description="the two rooms it joins: two room ids, or a room id and 'exterior'")
+    segment: tuple[Point, Point] = Field(description="its two end points (x, z) on the wall between the two rooms "
+                                         "(an entrance: on an outside wall)")
+    height: float = Field(default=2.1, description="metres; a door stands on the floor")
+    type: Literal["door", "doorway", "sliding"] = "door"
+    state: Literal["open", "closed"] = "closed"
+
+
+class WrittenWindow(BaseModel):
+    model_config = _F
+    room: str
+    segment: tuple[Point, Point] = Field(description="its two end points (x, z) on a wall of its room")
+    sill: float = Field(default=0.9, description="height of its bottom above the floor, metres")
+    height: float = Field(default=1.2, description="metres; sill + height must stay below the ceiling")
+    state: Literal["open", "closed"] = "closed"
+
+
+class WrittenEnvironment(BaseModel):
+    model_config = _F
+    situation: str = Field(default="", description="the situation this environment tests")
+    rooms: list[WrittenRoom] = Field(min_length=1)
+    doors: list[WrittenDoor] = Field(default_factory=list)
+    windows: list[WrittenWindow] = Field(default_factory=list)
+    objects: list[PlacedObject] = Field(min_length=1, description="positions in the same world frame as the rooms")
+    relations: list[RelationDraft] = Field(default_factory=list)
+
+
+class WrittenEnvironmentsReply(BaseModel):
+    """Several complete test environments (CoT) or one (IFG stage 2), floor plans included."""
+
+    model_config = _F
+    reasoning: str = Field(default="", description="step-by-step reasoning about the situations")
+    environments: list[WrittenEnvironment] = Field(min_length=1)
 
 
 class HolodeckSceneReply(BaseModel):

@@ -1,9 +1,10 @@
 """`check-house HOUSE.json [--procthor-db DIR] [--json]`: will AI2-THOR load this house?
 
-Verifies asset ids, wall holes, materials and required keys against ProcTHOR's databases
-(`--procthor-db`: its procthor/databases folder), or, without it, against our recorded
-mapping (benchmark_data/procthor_assets.json) — which only knows the ids we chose, and says so.
-Exit 0 when the house passes, 1 when it has problems, 2 on an unreadable file.
+Verifies asset ids, wall holes, materials, required keys and finite numbers against ProcTHOR's
+databases (`--procthor-db`: its procthor/databases folder), or, without it, against our recorded
+mapping (benchmark_data/procthor_assets.json) — which only knows the ids our exporter chooses, so
+an asset id outside it is a warning, not a problem. Exit 0 when every house passes, 1 when one
+has problems, 2 on an unreadable file or database.
 """
 
 from __future__ import annotations
@@ -24,26 +25,29 @@ def run(args: argparse.Namespace) -> int:
 
     from logicenveval.scene.house_check import check_house
     from logicenveval.scene.house_import import load_house
-    from logicenveval.scene.procthor import load_mapping, load_procthor_db, mapping_db
+    from logicenveval.scene.procthor import load_procthor_db, our_assets
 
-    db = load_procthor_db(args.procthor_db) if args.procthor_db else mapping_db(load_mapping())
-    if not args.procthor_db and not args.json:
+    real = bool(args.procthor_db)
+    db = load_procthor_db(args.procthor_db) if real else our_assets()
+    if not real and not args.json:
         print("no --procthor-db: checking against our recorded mapping only "
               "(benchmark_data/procthor_assets.json), not ProcTHOR's full databases")
     failed = 0
     reports = {}
     for name in args.house:
-        path = Path(name)
-        house = load_house(path)
-        report = check_house(house, db)
+        report = check_house(load_house(Path(name)), db, authoritative=real)
         reports[name] = report
         failed += not report.passed
         if not args.json:
             state = "ok" if report.passed else f"{len(report.problems)} problem(s)"
             print(f"{name}: {state} ({report.assets} asset ids, {report.unknown_ids} unknown ids, "
-                  f"{report.unknown_materials} unknown materials)")
+                  f"{report.unknown_materials} unknown materials, {len(report.warnings)} warning(s))")
             for p in report.problems:
                 print(f"  {p.where}: {p.message}")
+            for p in report.warnings[:10]:
+                print(f"  warning: {p.where}: {p.message}")
+            if len(report.warnings) > 10:
+                print(f"  ... {len(report.warnings) - 10} more warning(s) (--json lists all)")
     if args.json:
         print(json.dumps({k: r.model_dump(mode="json") for k, r in reports.items()}, indent=2))
     else:

@@ -27,14 +27,22 @@ def run(args: argparse.Namespace) -> int:
 
     from rich.console import Console
 
+    from logicenveval.errors import LogicEnvEvalError, RunFailedError
     from logicenveval.generators.generate import generate_to_folder
 
-    summary = generate_to_folder(
-        generator=args.generator, task_id=args.task, model=args.model, model_args=args.model_args,
-        tasks_dir=args.tasks_dir, seed=args.seed, out=Path(args.out), cache=args.cache,
-        render=not args.no_render, layout_solver=args.layout_solver,
-    )
+    try:
+        summary = generate_to_folder(
+            generator=args.generator, task_id=args.task, model=args.model, model_args=args.model_args,
+            tasks_dir=args.tasks_dir, seed=args.seed, out=Path(args.out), cache=args.cache,
+            render=not args.no_render, layout_solver=args.layout_solver,
+        )
+    except (LogicEnvEvalError, OSError):
+        raise
+    except Exception as exc:  # the generator's own bug: one line, exit 1 (docs/security.md)
+        raise RunFailedError(f"generator {args.generator!r} failed: {type(exc).__name__}: "
+                             f"{str(exc)[:300]}", field="--generator",
+                             hint="fix the generator; `run` records such a failure per unit") from None
     console = Console()
     for line in summary.lines():
         console.print(line)
-    return 0
+    return 0 if summary.written else 1  # nothing written: the work failed (docs/security.md)

@@ -40,6 +40,11 @@ def non_negative_float(text: str) -> float:
     return value
 
 
+def task_list(text: str) -> tuple[str, ...]:
+    """`--tasks`: `all` (returned as ()) or a `name_list` of task ids."""
+    return () if text.strip() == "all" else name_list(text)
+
+
 def name_list(text: str) -> tuple[str, ...]:
     """A comma-separated list of names: no empty list, no empty or repeated item."""
     items = [t.strip() for t in text.split(",")]
@@ -59,3 +64,68 @@ def folder_name(text: str) -> str:
         raise argparse.ArgumentTypeError(
             f"{text!r} is not a plain folder name: use letters, digits, '.', '_' and '-' only")
     return text
+
+
+def seed_list(text: str) -> list[int]:
+    """`--seeds 0,1,2`: distinct integers >= 0, no empty item."""
+    items = [t.strip() for t in text.split(",")]
+    if not all(items):
+        raise argparse.ArgumentTypeError(f"{text!r} has an empty item: write e.g. 0,1,2")
+    try:
+        seeds = [int(t) for t in items]
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a list of integers, e.g. 0,1,2") from None
+    if any(s < 0 for s in seeds):
+        raise argparse.ArgumentTypeError(f"{text!r} has a negative seed: seeds are integers >= 0")
+    if any(s > MAX_SEED for s in seeds):
+        raise argparse.ArgumentTypeError(f"{text!r} has a seed above {MAX_SEED}")
+    dup = sorted({s for s in seeds if seeds.count(s) > 1})
+    if dup:
+        raise argparse.ArgumentTypeError(f"listed twice: {', '.join(map(str, dup))}")
+    return seeds
+
+
+#: the largest seed (numpy takes any integer; a longer one only makes folder names longer)
+MAX_SEED = 2**63 - 1
+
+
+def timeout(text: str) -> float | None:
+    """Seconds > 0, or 0 for no bound."""
+    value = non_negative_float(text)
+    return value or None
+
+
+def _scalar(text: str) -> str | int | float | bool:
+    """An argument value: an integer, a decimal number, true/false, else the text itself."""
+    if text.lower() in ("true", "false"):
+        return text.lower() == "true"
+    if re.fullmatch(r"[+-]?[0-9]+", text):
+        return int(text)
+    if re.fullmatch(r"[+-]?([0-9]+\.[0-9]*|\.[0-9]+|[0-9]+)([eE][+-]?[0-9]+)?", text):
+        value = float(text)
+        if math.isfinite(value):
+            return value
+    return text
+
+
+def generator_args(text: str) -> tuple[str, dict[str, str | int | float | bool]]:
+    """`NAME:key=value,...` -> (NAME, {key: value}); values are numbers, true/false or text.
+
+    NAME may itself hold ':' (`my_pkg.mod:MyGenerator:n_envs=5`): it ends at the last ':' before
+    the first '='."""
+    head, eq, _ = text.partition("=")
+    name, colon, _ = head.rpartition(":")
+    if not eq or not colon or not name.strip():
+        raise argparse.ArgumentTypeError(f"{text!r} is not NAME:key=value,... (e.g. "
+                                         "my-generator:n_envs=5,style=sparse)")
+    args: dict[str, str | int | float | bool] = {}
+    for item in text[len(name) + 1:].split(","):
+        key, sep, value = item.partition("=")
+        key = key.strip()
+        if not sep or not key.isidentifier():
+            raise argparse.ArgumentTypeError(f"{item!r} in {text!r} is not key=value with a "
+                                             "Python keyword name as key")
+        if key in args:
+            raise argparse.ArgumentTypeError(f"{key!r} given twice in {text!r}")
+        args[key] = _scalar(value.strip())
+    return name.strip(), args

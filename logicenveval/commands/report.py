@@ -1,4 +1,7 @@
-"""`report RUN_DIR [RUN_DIR ...] [--out DIR]`: rebuild a run's leaderboards, or merge runs into one."""
+"""`report RUN_DIR [RUN_DIR ...] [--out DIR]`: rebuild a run's leaderboards, or merge runs into one.
+
+Every file is written to a temp file and renamed (`logicenveval.atomic`), so an interrupted or
+failed report leaves the previous one readable."""
 
 from __future__ import annotations
 
@@ -19,8 +22,9 @@ def run(args: argparse.Namespace) -> int:
         from logicenveval.reporting.leaderboard import write_leaderboards
         from logicenveval.runner.results import load_results
 
-        write_leaderboards(dirs[0], load_results(dirs[0]))
-        print(f"wrote {dirs[0] / 'leaderboard.md'} and {dirs[0] / 'leaderboard.html'}")
+        pages = write_leaderboards(dirs[0], load_results(dirs[0])).rows
+        print(f"wrote {dirs[0] / 'leaderboard.md'}, {dirs[0] / 'leaderboard.html'} and "
+              f"{len(pages)} task page(s) under details/")
         return 0
     from logicenveval.reporting.merged import merged_markdown, write_merged
 

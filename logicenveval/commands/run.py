@@ -6,10 +6,10 @@ import argparse
 import os
 import sys
 from collections.abc import Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from logicenveval.commands import options
-from logicenveval.runner.config import DEFAULT_GENERATORS
+from logicenveval.runner.config import DEFAULT_GENERATORS, DEFAULT_UNIT_TIMEOUT
 from logicenveval.scene.layout import DEFAULT_SOLVER, SOLVERS
 
 if TYPE_CHECKING:
@@ -23,11 +23,11 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--generators", default=DEFAULT_GENERATORS, type=options.name_list,
                    help="comma-separated: built-in names (ablations by name), installed plug-ins, "
                    "or PKG.MODULE:ATTR (docs/own-generator.md)")
-    p.add_argument("--tasks", default=(), type=_tasks, help="all or comma-separated task ids")
+    p.add_argument("--tasks", default=(), type=options.task_list, help="all or comma-separated task ids")
     p.add_argument("--tasks-dir", default=None, help="folder of <task_id>/task.json (default: the benchmark)")
     p.add_argument("--limit", type=options.int_range(1), default=None, help="only the first N tasks")
-    p.add_argument("--seed", type=options.int_range(0), default=0)
-    p.add_argument("--seeds", default=None,
+    p.add_argument("--seed", type=options.int_range(0, options.MAX_SEED), default=0)
+    p.add_argument("--seeds", default=None, type=options.seed_list,
                    help="comma-separated seeds: one run per seed, aggregated with intervals over "
                    "tasks and seeds (overrides --seed)")
     p.add_argument("--layout-solver", default=DEFAULT_SOLVER, choices=SOLVERS,
@@ -46,6 +46,15 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--brief", default="roles", choices=["roles", "description"],
                    help="what generators get: the task's roles (default) or, as in the paper, only id, "
                         "description and rooms, with the paper's few-shot example (docs/fidelity.md)")
+    p.add_argument("--unit-timeout", type=options.timeout, default=DEFAULT_UNIT_TIMEOUT,
+                   metavar="SECONDS",
+                   help="wall-time bound of one generator on one task; a generator that does not "
+                   f"return in time fails that unit (default {DEFAULT_UNIT_TIMEOUT:g}; 0: no bound; "
+                   "docs/runner.md)")
+    p.add_argument("--generator-args", action="append", default=[], type=options.generator_args,
+                   metavar="NAME:key=value,...",
+                   help="keyword arguments of a generator's factory (repeat per generator; NAME as "
+                   "in --generators); part of the run's identity (docs/own-generator.md)")
     p.add_argument("--quiet", action="store_true", help="no progress bars")
     p.add_argument("--export", default="", metavar="FORMATS",
                    help="also write procthor and/or glb files next to every environment "
@@ -53,7 +62,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from logicenveval.reporting.tables import markdown
+    from logicenveval.reporting.publish import publish
     from logicenveval.runner.config import RunConfig
     from logicenveval.runner.run import run as run_benchmark
 
@@ -74,6 +83,8 @@ def run(args: argparse.Namespace) -> int:
         run_id=args.run_id,
         max_infra_failures=args.max_infra_failures,
         brief=args.brief,
+        unit_timeout=args.unit_timeout,
+        generator_args=_generator_args(args.generator_args),
     )
     formats = [f.strip() for f in args.export.split(",") if f.strip()]
     if formats:
@@ -87,15 +98,17 @@ def run(args: argparse.Namespace) -> int:
     if args.seeds is not None:
         from logicenveval.runner.seeds import run_seeds
 
-        multi = run_seeds(config, _seeds(args.seeds), show_progress=not args.quiet)
+        multi = run_seeds(config, args.seeds, show_progress=not args.quiet)
         if formats:
             from logicenveval.scene.export_files import export_run
 
             n = sum(len(export_run(d, formats)) for d in multi.seed_dirs)
             print(f"exported {n} file(s) ({', '.join(formats)}) next to the environments")
-        print(markdown(multi.results))
+        shown = publish(multi.run_dir, multi.results, multi.records)
+        print(shown.table)
         print(f"run folder: {multi.run_dir} (seed runs {', '.join(str(d) for d in multi.seed_dirs)}; "
               f"computed {multi.computed} unit(s), reused {multi.reused})")
+        print(shown.why)
         return report_failures(multi.records)
     outcome = run_benchmark(config, show_progress=not args.quiet)
     if formats:
@@ -103,8 +116,10 @@ def run(args: argparse.Namespace) -> int:
 
         written = export_run(outcome.run_dir, formats)
         print(f"exported {len(written)} file(s) ({', '.join(formats)}) next to the environments")
-    print(markdown(outcome.results))
+    shown = publish(outcome.run_dir, outcome.results, outcome.records)
+    print(shown.table)
     print(f"run folder: {outcome.run_dir} (computed {outcome.computed} unit(s), reused {outcome.reused})")
+    print(shown.why)
     return report_failures(outcome.records)
 
 
@@ -120,19 +135,13 @@ def report_failures(records: Sequence[UnitRecord]) -> int:
     return 1
 
 
-def _tasks(text: str) -> tuple[str, ...]:
-    return () if text.strip() == "all" else options.name_list(text)
-
-
-def _seeds(text: str) -> list[int]:
+def _generator_args(items: Sequence[tuple[str, dict[str, Any]]]) -> dict[str, dict[str, Any]]:
     from logicenveval.errors import ConfigError
 
-    try:
-        seeds = [int(t) for t in text.split(",") if t.strip()]
-    except ValueError:
-        raise ConfigError(f"--seeds {text!r} is not a list of integers", field="--seeds",
-                          hint="e.g. --seeds 0,1,2") from None
-    if any(s < 0 for s in seeds):
-        raise ConfigError(f"--seeds {text!r} has a negative seed", field="--seeds",
-                          hint="seeds are integers >= 0, e.g. --seeds 0,1,2")
-    return seeds
+    out: dict[str, dict[str, Any]] = {}
+    for name, kwargs in items:
+        if name in out:
+            raise ConfigError(f"--generator-args given twice for {name!r}", field="--generator-args",
+                              hint="give all of a generator's arguments in one NAME:k=v,k=v")
+        out[name] = kwargs
+    return out

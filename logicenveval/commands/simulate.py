@@ -1,4 +1,8 @@
-"""`simulate`: run one policy (BT) of a task in an EnvSpec or in a GT situation."""
+"""`simulate`: run one policy (BT) of a task in an EnvSpec or in a GT situation.
+
+An EnvSpec is taken in as `evaluate` takes it (`domain.roles.prepare_env`): categories mapped to
+catalog keys, the task's roles it does not map bound by category and attributes.
+"""
 
 from __future__ import annotations
 
@@ -41,10 +45,12 @@ def run(args: argparse.Namespace) -> int:
 
     from logicenveval.benchmark import load_task, policy_path
     from logicenveval.domain.catalog import load_catalog
+    from logicenveval.domain.roles import prepare_env
     from logicenveval.envfiles import load_env
     from logicenveval.model.task import POLICY_KINDS
     from logicenveval.model.tree import trajectory_from_assignment
-    from logicenveval.sim.simulator import simulate_file
+    from logicenveval.sim.loader import load_policy
+    from logicenveval.sim.simulator import simulate
     from logicenveval.sim.situations import situation_env
 
     if args.tick_limit < 1:
@@ -58,8 +64,15 @@ def run(args: argparse.Namespace) -> int:
         if not path.is_file():
             raise ConfigError(f"--policy {args.policy!r} is neither a policy kind nor a file",
                               field="--policy", hint=f"use one of {list(POLICY_KINDS)} or a path")
-    if args.env:
-        env = load_env(args.env)
+    # a policy the loader refuses (unknown node, bad port, unknown role, ...) is bad input:
+    # exit 2 with file:line and a fix, like every other input (docs/security.md)
+    policy = load_policy(path, roles=task.roles, rooms=task.rooms)
+    if args.env:  # categories mapped and roles bound exactly as `evaluate` judges the file
+        prepared = prepare_env(load_env(args.env), task.roles, catalog)
+        env = prepared.env
+        if not args.json:
+            for note in [*prepared.categories.notes(), *prepared.binding.problems]:
+                print(f"note: {note}")
     else:
         try:
             trajectory = trajectory_from_assignment(task, _situation(args.situation))
@@ -67,7 +80,7 @@ def run(args: argparse.Namespace) -> int:
             raise ConfigError(str(exc), field="--situation",
                               hint="give var=value for every variable the trees ask") from None
         env = situation_env(task, trajectory, catalog)
-    verdict = simulate_file(path, env, task, catalog, tick_limit=args.tick_limit, trace=args.trace)
+    verdict = simulate(policy, env, task, catalog, tick_limit=args.tick_limit, trace=args.trace)
     if args.show_tree and not args.json:
         from logicenveval.sim.pytrees_io import load_tree, unicode_tree
 

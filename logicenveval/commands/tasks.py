@@ -5,6 +5,8 @@ from __future__ import annotations
 import argparse
 from typing import TYPE_CHECKING
 
+from logicenveval.commands import options
+
 if TYPE_CHECKING:
     from rich.console import Console
 
@@ -22,7 +24,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     val.add_argument("--write-models", action="store_true",
                      help="first rewrite each policy's Groot2 <TreeNodesModel> from the action library")
     mu = sub.add_parser("mutants", help="first-order mutants of the correct BTs, classified by simulation")
-    mu.add_argument("--tasks", default="all", help="all or comma-separated task ids")
+    mu.add_argument("--tasks", default=(), type=options.task_list, help="all or comma-separated task ids")
     mu.add_argument("--worlds", type=_positive, default=None,
                     help="worlds simulated per situation (default 12, as tasks validate)")
     mu.add_argument("--json", action="store_true", help="print JSON (every mutant and what kills it)")
@@ -36,6 +38,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     cmd: str = args.tasks_command
+    if cmd != "show" and not (cmd == "validate" and args.task):
+        _some_tasks(args.tasks_dir)
     if cmd == "list":
         return _list(args)
     if cmd == "show":
@@ -144,9 +148,9 @@ def _mutants(args: argparse.Namespace) -> int:
     from logicenveval.sim.worlds import DEFAULT_WORLDS
 
     known = task_ids(args.tasks_dir)
-    ids = known if args.tasks == "all" else [t.strip() for t in args.tasks.split(",") if t.strip()]
+    ids = list(args.tasks) or known
     unknown = [t for t in ids if t not in known]
-    if unknown or not ids:
+    if unknown:
         raise ConfigError(f"unknown task id(s) {unknown}", field="--tasks",
                           hint=f"use all or some of: {', '.join(known)}")
     reports = classify_tasks(ids, args.tasks_dir, worlds=args.worlds or DEFAULT_WORLDS)
@@ -210,6 +214,17 @@ def _stats(args: argparse.Namespace) -> int:
     _console().print(table)
     print(f"{t['tasks']} tasks, {t['policies']} policies")
     return 0
+
+
+def _some_tasks(tasks_dir: str | None) -> None:
+    """A tasks folder without any task is a mistake (a wrong path), not an empty benchmark."""
+    from logicenveval.benchmark import task_ids
+    from logicenveval.benchmark import tasks_dir as folder
+    from logicenveval.errors import ConfigError
+
+    if not task_ids(tasks_dir):
+        raise ConfigError("no task in this folder (no <task_id>/task.json)", file=str(folder(tasks_dir)),
+                          field="--tasks-dir", hint="pass the folder that holds the task folders")
 
 
 def _positive(text: str) -> int:

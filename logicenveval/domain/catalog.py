@@ -79,3 +79,9 @@ def _load(path: str) -> Catalog:
 def load_catalog(path: str | Path | None = None) -> Catalog:
     """Load (and cache) a catalog; the default is the benchmark's `catalog.json`."""
     return _load(str(Path(path) if path else DEFAULT_CATALOG))
+
+
+def reload_catalogs() -> None:
+    """Forget every loaded catalog, so the next `load_catalog` reads its file again (the runner
+    restores a catalog that a generator changed in place)."""
+    _load.cache_clear()

@@ -6,9 +6,9 @@ rule that never guesses:
 
 * A role that the EnvSpec already maps (to an object id or to null) keeps its mapping.
 * Any other role is a *candidate match* for an object when the object's category names the
-  role's category — equal to the catalog category or to one of its catalog synonyms, compared
-  case-, space- and plural-insensitively (``Toy Chest``, ``toy_chests`` and ``toy_box`` all name
-  ``toy_box``) — and the object has every attribute of the role with the same value (a role
+  role's category in the one vocabulary (`domain.categories`: the catalog key, a synonym, an
+  AI2-THOR type, in any case, spacing or plural: ``Toy Chest``, ``toy_chests`` and ``toy_box``
+  all name ``toy_box``) — and the object has every attribute of the role with the same value (a role
   ``toy_box`` with ``color=red`` needs an object whose ``color`` is ``red``; an object without a
   colour does not agree).
 * One candidate: the role binds to it. None: the role stays unbound (null), which the GT
@@ -33,12 +33,13 @@ Public API::
 
 from __future__ import annotations
 
-import re
 from collections.abc import Mapping
+from dataclasses import dataclass
 
 from pydantic import BaseModel, ConfigDict, Field
 
 from logicenveval.domain.catalog import Catalog, load_catalog
+from logicenveval.domain.categories import CategoryReport, normalise_env, snake, vocabulary
 from logicenveval.model.envspec import EnvObject, EnvSpec
 from logicenveval.model.task import Role
 
@@ -63,39 +64,20 @@ class RoleBinding(BaseModel):
         return env.model_copy(update={"roles": dict(self.roles)})
 
 
-def _norm(text: str) -> str:
-    """`Toy Chest`, `toy-chest`, `ToyChest` -> `toy_chest`."""
-    spaced = re.sub(r"(?<=[a-z0-9])(?=[A-Z])", "_", text.strip())
-    return re.sub(r"[^a-z0-9]+", "_", spaced.lower()).strip("_")
-
-
-def _singular(word: str) -> str:
-    for suf, rep in (("ies", "y"), ("ves", "f"), ("ses", "s"), ("s", "")):
-        if word.endswith(suf) and len(word) > len(suf) + 2:
-            return word[: -len(suf)] + rep
-    return word
-
-
-def _forms(text: str) -> set[str]:
-    key = _norm(text)
-    return {key, "_".join(_singular(t) for t in key.split("_"))}
-
-
 def category_names(category: str, catalog: Catalog) -> set[str]:
-    """Normalised names that denote `category`: itself and its catalog synonyms (with singulars)."""
-    cat = catalog.get(category)
-    names = _forms(category)
-    for syn in cat.synonyms if cat is not None else ():
-        names |= _forms(syn)
-    return names
+    """Names (snake_case) that denote `category`: itself and its catalog synonyms."""
+    return vocabulary(catalog).names(category)
 
 
 def matches(obj: EnvObject, role: Role, catalog: Catalog) -> bool:
-    """Does `obj` qualify for `role` (category or synonym, and every role attribute agrees)?"""
-    if not _forms(obj.category) & category_names(role.category, catalog):
+    """Does `obj` qualify for `role` (its category names the role's, every role attribute agrees)?
+
+    The object's category is read through the one vocabulary (`domain.categories`), preferring
+    the role's category where a name fits several."""
+    if vocabulary(catalog).canonical(obj.category, (role.category,)) != role.category:
         return False
-    have = {_norm(k): _norm(v) for k, v in obj.attributes.items()}
-    return all(have.get(_norm(k)) == _norm(v) for k, v in role.attributes.items())
+    have = {snake(k): snake(v) for k, v in obj.attributes.items()}
+    return all(have.get(snake(k)) == snake(v) for k, v in role.attributes.items())
 
 
 def bind_roles(env: EnvSpec, roles: Mapping[str, Role], catalog: Catalog | None = None) -> RoleBinding:
@@ -144,3 +126,31 @@ def _decide(cands: Mapping[str, list[str]]) -> tuple[dict[str, str | None], dict
     used = {oid for oid in decided.values() if oid is not None}
     ambiguous = {n: [i for i in ids if i not in used] for n, ids in cands.items() if n not in decided}
     return decided, ambiguous
+
+
+@dataclass(frozen=True)
+class PreparedEnv:
+    """An environment as the harness judges it, and what preparing it found."""
+
+    #: categories mapped to catalog keys, the task's unmapped roles bound
+    env: EnvSpec
+    binding: RoleBinding
+    categories: CategoryReport
+
+
+def prepare_env(env: EnvSpec, roles: Mapping[str, Role], catalog: Catalog | None = None) -> PreparedEnv:
+    """Map every category to its catalog key (ties go to the roles' categories), then bind the
+    roles of `roles` the environment does not map.
+
+    Names the environment maps that are not roles of the task (a generator that was not told
+    the roles names objects its own way: `--brief description`) neither bind nor block objects;
+    they stay in the map for the relations that use them. Evaluation, `simulate --env`,
+    `check-env` and `lint` all prepare environments here, so they agree on every binding.
+    """
+    cat = catalog if catalog is not None else load_catalog()
+    env, categories = normalise_env(env, cat, prefer={r.category for r in roles.values()})
+    own = {name: oid for name, oid in env.roles.items() if name in roles}
+    binding = bind_roles(env.model_copy(update={"roles": own}), roles, cat)
+    if binding.roles != own:
+        env = env.model_copy(update={"roles": {**env.roles, **binding.roles}})
+    return PreparedEnv(env=env, binding=binding, categories=categories)

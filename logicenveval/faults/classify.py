@@ -129,7 +129,8 @@ class MutantRunner:
                 for i, child in enumerate(node.children):
                     if isinstance(child, BTNode):
                         self._by_path[child.path] = (child, node, i)
-        regions = [tuple(p for r in m.region for p in self._paths.get((m.location[0], r), ()))
+        # sets: a deletion's region holds every later sibling, and a node can have thousands
+        regions = [frozenset(p for r in m.region for p in self._paths.get((m.location[0], r), ()))
                    for m in self.mutants]
         #: a condition replaced by a constant behaves as before wherever it already returned
         #: that constant: leaf paths and the status the mutant forces
@@ -139,7 +140,7 @@ class MutantRunner:
         #: (then the edited parent takes the original's state when the region is first entered)
         self._mirrored = [_mirrors(correct, m) for m in self.mutants]
         self._entries = [regions[i] if self._mirrored[i] else
-                         tuple(self._paths.get((m.location[0], m.anchor), ()))
+                         frozenset(self._paths.get((m.location[0], m.anchor), ()))
                          for i, m in enumerate(self.mutants)]
         self._index = {id(n): j for j, n in enumerate(self.correct.nodes)}
         self._prefix: dict[str, list[str]] = {}
@@ -158,13 +159,16 @@ class MutantRunner:
         out: dict[int, str] = {}
         for i in (only if only is not None else range(len(self.mutants))):
             region, forced = self._forced[i]
-            same = not any(p in first for p in region) or (
+            same = first.keys().isdisjoint(region) or (  # iterates the smaller of the two
                 forced is not None and all(leaf_status.get(p, {forced}) == {forced} for p in region))
             if same and base.status != "tick_limit":
                 if base.status != "passed":
                     out[i] = base.status
                 continue
-            start = min((first[p] for p in self._entries[i] if p in first), default=1)
+            entries = self._entries[i]
+            entered = (p for p in first if p in entries) if len(first) < len(entries) else (
+                p for p in entries if p in first)
+            start = min((first[p] for p in entered), default=1)
             status = self._status(i, base, start, goal)
             if status != "passed":
                 out[i] = status

@@ -198,19 +198,20 @@ class EnvironmentBuilder:
 
     def _llm_placement(self, env_id: str, rooms: list[dict[str, Any]], objects: list[ObjectDraft],
                        relations: list[RelationDraft], claim: dict[str, dict[str, str]] | None) -> EnvSpec:
+        """No CAS: the model places the objects, and the doors and windows on the wall stretches
+        of the floor plan (their positions are the solver's variables otherwise, paper §3.3)."""
         import numpy as np
 
         from logicenveval.scene.construct import env_from_placed, room_requests
         from logicenveval.scene.floorplan import plan_floor
 
-        # the model sees the same floor plan that the EnvSpec will have: one seed for both
-        plan_seed = int(self.ctx.rng.integers(2**31))
-        plan = plan_floor(room_requests(rooms), np.random.default_rng(plan_seed))
+        plan = plan_floor(room_requests(rooms), np.random.default_rng(int(self.ctx.rng.integers(2**31))))
         reply = ask(self.ctx.model, "place_objects", self._payload(
-            rooms=[r.model_dump(mode="json") for r in plan.rooms], objects=[o.model_dump() for o in objects],
-            relations=[r.model_dump() for r in relations]), PlacementReply, seed=self.ctx.seed,
+            rooms=[r.model_dump(mode="json") for r in plan.rooms], openings=plan.opening_requests(),
+            objects=[o.model_dump() for o in objects], relations=[r.model_dump() for r in relations]),
+            PlacementReply, seed=self.ctx.seed,
             vocabulary=self._vocabulary([r["id"] for r in rooms], [o.id for o in objects]))
-        return env_from_placed(brief=self.brief, env_id=env_id, generator=self.generator, rooms=rooms,
+        return env_from_placed(brief=self.brief, env_id=env_id, generator=self.generator, plan=plan,
                                placed=reply.objects, relations=reply.relations or relations,
-                               claimed_trajectory=claim, catalog=self.ctx.catalog,
-                               rng=np.random.default_rng(plan_seed))
+                               openings={o.id: o.segment for o in reply.openings}, claimed_trajectory=claim,
+                               catalog=self.ctx.catalog)

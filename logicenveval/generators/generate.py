@@ -12,9 +12,14 @@ from logicenveval.atomic import atomic_write_text
 from logicenveval.benchmark import load_task
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.envfiles import save_env
-from logicenveval.generators.base import GenerationContext, GenerationResult, make_generator
+from logicenveval.generators.base import (
+    GenerationContext,
+    GenerationResult,
+    make_generator,
+    unit_seed,
+)
 from logicenveval.generators.plugins import resolve_generator
-from logicenveval.runner.unit import unit_seed
+from logicenveval.paths import name_problem, shown
 from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
 
 
@@ -23,11 +28,13 @@ class GenerateSummary:
     out: Path
     result: GenerationResult
     written: list[Path] = field(default_factory=list)
+    skipped: list[str] = field(default_factory=list)
 
     def lines(self) -> list[str]:
         out = [f"{len(self.result.envs)} environment(s) written to {self.out}"]
         out += [f"  {p.name}" for p in self.written]
         out += [f"[red]failure[/red] {f.stage}: {f.message}" for f in self.result.failures]
+        out += [f"[red]skipped[/red] {why}" for why in self.skipped]
         return out
 
 
@@ -59,6 +66,9 @@ def generate_to_folder(
     summary = GenerateSummary(out=out, result=result)
     out.mkdir(parents=True, exist_ok=True)
     for env in result.envs:
+        if name_problem(env.env_id) is not None:  # never a file outside `out` (logicenveval.paths)
+            summary.skipped.append(f"env_id {shown(env.env_id)} {name_problem(env.env_id)}: not written")
+            continue
         path = out / f"{env.env_id}.json"
         save_env(env, path)
         summary.written.append(path)

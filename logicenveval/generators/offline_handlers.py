@@ -158,7 +158,7 @@ def place_objects(payload: dict[str, Any], request: ChatRequest) -> dict[str, An
     Uses the same guessing heuristic as the CoT/IFG offline handlers: furniture along the walls,
     items on their support's top; nothing checks collisions — the physics checker judges it.
     """
-    from logicenveval.baselines.heuristics import guess_coordinates
+    from logicenveval.scene.guessed_layout import guess_coordinates
 
     catalog = load_catalog()
     dims: dict[str, tuple[float, float]] = {}
@@ -173,4 +173,23 @@ def place_objects(payload: dict[str, Any], request: ChatRequest) -> dict[str, An
         ox, oz = origin.get(o["room"], (0.0, 0.0))
         x, y, z = o["position"]
         o["position"] = (round(x + ox, 3), round(y, 3), round(z + oz, 3))
-    return {"objects": placed, "relations": list(payload.get("relations") or [])}
+    return {"objects": placed, "relations": list(payload.get("relations") or []),
+            "openings": spread_openings(payload.get("openings") or [])}
+
+
+def spread_openings(openings: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """Doors and windows where a writer without a solver puts them: the k openings of one wall
+    stretch centred at 1/(k+1), 2/(k+1), ... of it (no check that they keep apart)."""
+    by_wall: dict[tuple[float, ...], list[dict[str, Any]]] = {}
+    for op in openings:
+        by_wall.setdefault((*op["wall_from"], *op["wall_to"]), []).append(op)
+    out = []
+    for (ax, az, bx, bz), ops in by_wall.items():
+        length = max(abs(bx - ax), abs(bz - az))
+        ux, uz = (bx - ax) / length, (bz - az) / length
+        for i, op in enumerate(ops):
+            mid = length * (i + 1) / (len(ops) + 1)
+            ends = [(round(ax + ux * t, 2), round(az + uz * t, 2)) for t in (mid - op["width"] / 2,
+                                                                         mid + op["width"] / 2)]
+            out.append({"id": op["id"], "segment": ends})
+    return out

@@ -16,8 +16,9 @@ import importlib
 import importlib.metadata
 import importlib.util
 import sys
+import unicodedata
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -29,6 +30,7 @@ from logicenveval.generators.base import (
     register,
     registry_entry,
 )
+from logicenveval.paths import check_name, name_problem, shown
 
 ENTRY_POINT_GROUP = "logicenveval.generators"
 
@@ -42,6 +44,8 @@ class GeneratorRef:
     #: the folder the target's top-level module was imported from, for workers whose Python path
     #: lacks it (a Ray worker started elsewhere); None for registered names
     search_path: str | None = None
+    #: keyword arguments of the factory (`--generator-args`)
+    args: dict[str, Any] = field(default_factory=dict)
 
 
 def entry_points() -> dict[str, str]:
@@ -57,9 +61,7 @@ def register_generator(name: str, factory: Callable[..., Any] | str) -> None:
     it in a module (or a script run as `__main__`) rather than as a lambda or a nested function;
     an interactive notebook's factories need `--executor inprocess`.
     """
-    if not name or not isinstance(name, str):
-        raise ConfigError("a generator needs a non-empty name", field="name",
-                          hint="register_generator('my-gen', MyGenerator)")
+    check_name(name, what="generator name", field="name")
     if not (callable(factory) or isinstance(factory, str)):
         raise ConfigError(f"factory of generator {name!r} is neither callable nor MODULE:ATTR",
                           field="factory", hint="pass the generator class or a factory function")
@@ -77,8 +79,13 @@ def _portable(factory: Callable[..., Any]) -> str | None:
     return f"{module}:{qualname}"
 
 
-def resolve_generator(spec: str) -> GeneratorRef:
-    """Resolve one `--generators` item; unknown or unimportable -> `ConfigError` (exit 2)."""
+def resolve_generator(spec: str, args: dict[str, Any] | None = None) -> GeneratorRef:
+    """Resolve one `--generators` item, made with `args` as its factory's keyword arguments;
+    unknown, unimportable or unmakeable -> `ConfigError` (exit 2)."""
+    if len(spec) > 300 or any(unicodedata.category(c) in ("Cc", "Cs") for c in spec):
+        raise ConfigError(f"generator {shown(spec)} holds a control character or is too long",
+                          field="--generators",
+                          hint="name a generator, an installed plug-in or PKG.MODULE:ATTR")
     if ":" not in spec:
         spec = canonical_name(spec)  # an old name of a renamed generator (with a FutureWarning)
     entry = registry_entry(spec)
@@ -101,24 +108,30 @@ def resolve_generator(spec: str) -> GeneratorRef:
     if entry is None:
         import_target(target)  # the module error, before any unit runs
     try:
-        gen = make_generator(target)
-    except ConfigError:
+        gen = make_generator(target, **(args or {}))
+    except (ConfigError, KeyboardInterrupt):
         raise
-    except Exception as exc:  # a plug-in's constructor: report it as bad input, with the cause
-        raise ConfigError(f"generator {spec!r} could not be constructed: {type(exc).__name__}: {exc}",
-                          field="--generators",
-                          hint="its class or factory must be callable without arguments") from None
-    name = getattr(gen, "name", None)
-    if not isinstance(name, str) or not name.strip() or "/" in name or name.startswith("."):
-        raise ConfigError(f"generator {spec!r} has no usable `name` attribute ({name!r})",
-                          field="--generators",
-                          hint="give the generator a `name` string: it names its leaderboard row")
+    except BaseException as exc:  # a plug-in's constructor (even sys.exit): bad input, with the cause
+        given = ", ".join(f"{k}={v!r}" for k, v in (args or {}).items())
+        raise ConfigError(f"generator {spec!r} could not be constructed"
+                          + (f" with {given}" if given else "") + f": {type(exc).__name__}: "
+                          + str(exc)[:300], field="--generators",
+                          hint="its class or factory must be callable without arguments, or with "
+                          "the keyword arguments given by --generator-args") from None
+    name = getattr(gen, "name", None) if entry is None else spec
+    problem = name_problem(name)
+    if problem is not None:
+        raise ConfigError(f"generator {shown(spec)} has no usable `name` attribute: {shown(name)} "
+                          f"{problem}", field="--generators",
+                          hint="give the generator a `name` string (a plain folder name): it names "
+                          "its leaderboard row and its units/ and envs/ folders")
     if not callable(getattr(gen, "generate", None)):
         raise ConfigError(f"generator {spec!r} has no generate(brief, ctx) method",
                           field="--generators", hint="implement the Generator protocol "
                           "(logicenveval.generators.base)")
-    return GeneratorRef(spec=spec, name=name if entry is None else spec, target=target,
-                        portable=portable, search_path=_import_root(target))
+    assert isinstance(name, str)
+    return GeneratorRef(spec=spec, name=name, target=target,
+                        portable=portable, search_path=_import_root(target), args=dict(args or {}))
 
 
 def _import_root(target: str) -> str | None:

@@ -15,6 +15,7 @@ from typing import Any, TypeVar
 from jinja2 import Environment, PackageLoader, StrictUndefined, TemplateNotFound
 from pydantic import BaseModel, ValidationError
 
+from logicenveval.atomic import atomic_write_text
 from logicenveval.errors import ConfigError, ModelReplyError, ModelTruncatedError
 from logicenveval.llm.base import ChatModel, ChatRequest, ModelStats, split_truncation
 from logicenveval.llm.jsonextract import JSONExtractionError, extract_json
@@ -39,7 +40,8 @@ def reply_schema(reply_model: type[BaseModel]) -> dict[str, Any]:
 
     The dict is shared by every request of that class: read it, never change it.
     """
-    return _without_titles(reply_model.model_json_schema())
+    schema: dict[str, Any] = _without_titles(reply_model.model_json_schema())
+    return schema
 
 
 def _without_titles(node: Any) -> Any:
@@ -72,9 +74,9 @@ def _save_raw(run_dir: Path | None, kind: str, model: str, replies: list[str]) -
         return None
     digest = hashlib.sha256("\n".join(replies).encode()).hexdigest()[:12]
     path = Path(run_dir) / "llm_errors" / f"{kind}-{digest}.txt"
-    path.parent.mkdir(parents=True, exist_ok=True)
     sep = "\n\n----- next attempt -----\n\n"
-    path.write_text(redact(f"model: {model}\nkind: {kind}\n\n" + sep.join(replies)), encoding="utf-8")
+    atomic_write_text(path, redact(f"model: {model}\nkind: {kind}\n\n" + sep.join(replies)),
+                      durable=False)
     return str(path)
 
 

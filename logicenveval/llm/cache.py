@@ -12,7 +12,9 @@ import os
 import sqlite3
 import threading
 import time
+from collections.abc import Callable
 from pathlib import Path
+from typing import TypeVar
 
 from logicenveval.errors import CacheMissError, ConfigError
 from logicenveval.llm.base import ChatModel, ChatRequest, ModelStats
@@ -47,8 +49,41 @@ def cache_key(provider: str, model: str, request: ChatRequest) -> str:
     return hashlib.sha256(blob.encode()).hexdigest()
 
 
+#: how long an operation waits for other processes' locks before it fails (seconds)
+BUSY_SECONDS = 60.0
+T = TypeVar("T")
+
+
+def _busy(exc: sqlite3.OperationalError) -> bool:
+    text = str(exc).lower()
+    return "locked" in text or "busy" in text
+
+
+def _retrying(action: Callable[[], T]) -> T:
+    """`action`, retried while another connection holds a lock SQLite will not wait for.
+
+    SQLite's busy timeout covers ordinary lock waits, but not all: switching a new file to WAL
+    (which needs the file to itself) and a few WAL recovery states return "database is locked"
+    at once. With several workers opening one new cache together, one of them got that error
+    and lost its unit; here it waits (backing off) up to `BUSY_SECONDS` like any other lock."""
+    deadline = time.monotonic() + BUSY_SECONDS
+    pause = 0.005
+    while True:
+        try:
+            return action()
+        except sqlite3.OperationalError as exc:
+            if not _busy(exc) or time.monotonic() + pause > deadline:
+                raise
+        time.sleep(pause)
+        pause = min(pause * 2, 0.25)
+
+
 class ReplyCache:
-    """One connection per process and thread, opened lazily (connections never cross a fork)."""
+    """One connection per process and thread, opened lazily (connections never cross a fork).
+
+    Many processes share one cache file: the file is in WAL mode (readers never block the
+    writer), every connection waits for locks (`busy_timeout`), and what SQLite will not wait
+    for is retried (`_retrying`), so concurrent workers never lose a reply or fail a unit."""
 
     def __init__(self, path: str | Path, *, create: bool = True) -> None:
         self.path = Path(path)
@@ -61,30 +96,29 @@ class ReplyCache:
         conn: sqlite3.Connection | None = getattr(self._local, "conn", None)
         if conn is None or getattr(self._local, "pid", None) != os.getpid():
             self.path.parent.mkdir(parents=True, exist_ok=True)
-            conn = sqlite3.connect(self.path, timeout=30.0, isolation_level=None)
-            conn.execute("PRAGMA journal_mode=WAL")
-            conn.execute("PRAGMA busy_timeout=30000")
-            conn.execute("PRAGMA synchronous=NORMAL")
-            conn.execute(_SCHEMA)
+            conn = sqlite3.connect(self.path, timeout=BUSY_SECONDS, isolation_level=None)
+            conn.execute(f"PRAGMA busy_timeout={int(BUSY_SECONDS * 1000)}")
+            _retrying(lambda: _prepare(conn))
             self._local.conn, self._local.pid = conn, os.getpid()
         return conn
 
     def get(self, key: str) -> str | None:
-        row = self._conn().execute("SELECT reply FROM replies WHERE key = ?", (key,)).fetchone()
+        row = _retrying(lambda: self._conn().execute(
+            "SELECT reply FROM replies WHERE key = ?", (key,)).fetchone())
         return None if row is None else str(row[0])
 
     def put(self, key: str, provider: str, model: str, kind: str, reply: str) -> None:
-        self._conn().execute(
+        _retrying(lambda: self._conn().execute(
             "INSERT OR REPLACE INTO replies (key, provider, model, kind, reply, created) "
             "VALUES (?, ?, ?, ?, ?, ?)",
             (key, provider, model, kind, reply, time.time()),
-        )
+        ))
 
     def delete(self, key: str) -> None:
-        self._conn().execute("DELETE FROM replies WHERE key = ?", (key,))
+        _retrying(lambda: self._conn().execute("DELETE FROM replies WHERE key = ?", (key,)))
 
     def __len__(self) -> int:
-        return int(self._conn().execute("SELECT COUNT(*) FROM replies").fetchone()[0])
+        return int(_retrying(lambda: self._conn().execute("SELECT COUNT(*) FROM replies").fetchone()[0]))
 
     def check(self, *, writable: bool = True) -> None:
         """Fail before the first unit when the file cannot serve as a cache (it would fail all)."""
@@ -99,6 +133,15 @@ class ReplyCache:
             raise ConfigError(f"the reply cache is unusable: {exc}", file=str(self.path),
                               hint="point --cache at a writable SQLite file (or a new path), "
                               "or pass --no-cache") from None
+
+
+def _prepare(conn: sqlite3.Connection) -> None:
+    """WAL mode (set once per file: it persists), then the table."""
+    mode = conn.execute("PRAGMA journal_mode").fetchone()[0]
+    if str(mode).lower() != "wal":
+        conn.execute("PRAGMA journal_mode=WAL")
+    conn.execute("PRAGMA synchronous=NORMAL")
+    conn.execute(_SCHEMA)
 
 
 class CachedModel:

@@ -166,28 +166,20 @@ class PlacedObject(ObjectDraft):
     yaw: float = Field(default=0.0, description="rotation about y in degrees")
 
 
+class OpeningPlacement(BaseModel):
+    model_config = _F
+    id: str = Field(description="the id of a door or window of the floor plan")
+    segment: tuple[tuple[float, float], tuple[float, float]] = Field(
+        description="its two end points (x, z) in metres, on its wall stretch")
+
+
 class PlacementReply(BaseModel):
-    """Objects with coordinates chosen by the model itself (no solver): no-CAS, CoT, IFG."""
+    """Objects, doors and windows with coordinates chosen by the model itself (no solver: no-CAS)."""
 
     model_config = _F
     objects: list[PlacedObject] = Field(min_length=1)
     relations: list[RelationDraft] = Field(default_factory=list)
-
-
-class EnvironmentDraft(BaseModel):
-    model_config = _F
-    situation: str = Field(default="", description="the situation this environment tests")
-    rooms: list[RoomDraft] = Field(min_length=1)
-    objects: list[PlacedObject] = Field(min_length=1)
-    relations: list[RelationDraft] = Field(default_factory=list)
-
-
-class EnvironmentsReply(BaseModel):
-    """Several complete test environments (CoT) or one (IFG stage 2, Holodeck-like)."""
-
-    model_config = _F
-    reasoning: str = Field(default="", description="step-by-step reasoning about the situations")
-    environments: list[EnvironmentDraft] = Field(min_length=1)
+    openings: list[OpeningPlacement] = Field(default_factory=list, description="where each door and window goes")
 
 
 # --- vocabulary-bound wire forms of LogicEnvGen's plan requests (llm.vocab, llm.structured) ------

@@ -3,8 +3,9 @@
 Decisions where DESIGN.md is silent (docs/logic.md):
 - coverage (LogCov, LD, JI) counts only well-formed environments: an ill-formed one realises no
   well-defined trajectory;
-- a failed generation (`n_failed`: a unit slot that produced no environment) covers nothing and
-  counts as a failing environment in the PhyPR and SceVR denominators, so failing never pays;
+- PhyPR and SceVR divide by attempted environments (`n_attempted` = built `n_envs` + failed
+  attempts `n_failed`): a failed attempt fails every PhyPR dimension and is no valid scenario,
+  so failing never pays; LogCov, LD, JI and FauDR count only what was built;
 - ST averages, over the BTs that were simulated, the per-BT sum of simulation ms over the task's
   environments; `st_ticks` is the same figure in simulator ticks, which machine load cannot move;
 - PhyPR holds the paper's three dimensions only; the extra checks are `plausibility`;
@@ -18,7 +19,7 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 import pandas as pd
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, computed_field
 
 from logicenveval.errors import MetricsError
 from logicenveval.logic.reference import closest_reference
@@ -33,6 +34,7 @@ class TaskMetrics(BaseModel):
     model_config = ConfigDict(frozen=True)
     task_id: str
     n_envs: int
+    #: attempted environments that were not built (they fail PhyPR and SceVR)
     n_failed: int = 0
     n_floor_plan_ok: int
     n_entity_ok: int
@@ -59,6 +61,12 @@ class TaskMetrics(BaseModel):
     realised_trajectories: list[str] = Field(default_factory=list)
     #: the minimum cover JI compares with: the one closest to `realised_trajectories`
     reference_trajectories: list[str] = Field(default_factory=list)
+
+    @computed_field  # type: ignore[prop-decorator]
+    @property
+    def n_attempted(self) -> int:
+        """Environments the generator set out to build: the PhyPR and SceVR denominator."""
+        return self.n_envs + self.n_failed
 
 
 class PhyPR(BaseModel):
@@ -100,6 +108,9 @@ class GeneratorMetrics(BaseModel):
     redundancy: float
     n_envs: int
     plausibility: Plausibility
+    #: environments set out to build (the PhyPR/SceVR denominator) and those not built
+    n_attempted: int = 0
+    n_failed: int = 0
     #: mutation score (issue 22): mean over scored tasks; None when no task was scored
     faudr_mut: float | None = None
     faudr_mut_by_class: dict[str, float] = Field(default_factory=dict)
@@ -196,7 +207,7 @@ def _mutation_score(valid: Sequence[EnvSample], mutants: Mapping[str, str] | Non
 
 
 def aggregate(per_task: Sequence[TaskMetrics]) -> GeneratorMetrics:
-    """Shares over all environments (PhyPR, SceVR) and means over tasks (the rest)."""
+    """Shares over all attempted environments (PhyPR, SceVR) and means over tasks (the rest)."""
     if not per_task:
         raise MetricsError(
             "no task metrics to aggregate", field="per_task", hint="evaluate at least one task"
@@ -229,6 +240,8 @@ def aggregate(per_task: Sequence[TaskMetrics]) -> GeneratorMetrics:
         ji=float(df["ji"].mean()),
         redundancy=float(df["redundancy"].mean()),
         n_envs=int(df["n_envs"].sum()),
+        n_attempted=slots,
+        n_failed=int(df["n_failed"].sum()),
         plausibility=Plausibility(
             rate=share("n_extended_ok"),
             codes=dict(sorted(sum((Counter(t.extended_codes) for t in per_task), Counter()).items())),
@@ -246,3 +259,20 @@ def _mean_mutation_score(per_task: Sequence[TaskMetrics]) -> dict[str, Any]:
                 / sum(1 for t in scored if c in t.faudr_mut_by_class) for c in classes}
     return {"faudr_mut": sum(float(t.faudr_mut or 0.0) for t in scored) / len(scored),
             "faudr_mut_by_class": by_class}
+
+
+def null_metrics() -> dict[str, Any]:
+    """`results.<generator>` of a generator that was not measured (every unit failed for
+    infrastructure reasons): the shape of `GeneratorMetrics` with every figure null, never 0."""
+
+    def nulls(value: Any) -> Any:
+        if isinstance(value, dict):
+            return {k: nulls(v) for k, v in value.items()} if value else {}
+        return None
+
+    shape = aggregate([TaskMetrics(task_id="-", n_envs=0, n_failed=1, n_floor_plan_ok=0, n_entity_ok=0,
+                                   n_relation_ok=0, n_valid=0, logcov=0.0, ld=0.0, ji=0.0,
+                                   redundancy=0.0, min_cover=1, faudr=dict.fromkeys(FAULTY_KINDS, False),
+                                   st_ms=0.0)])
+    out: dict[str, Any] = nulls(shape.model_dump(mode="json"))
+    return out

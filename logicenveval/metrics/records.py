@@ -9,7 +9,7 @@ from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
-from logicenveval.generators.base import GenerationFailure
+from logicenveval.generators.base import Attempt, GenerationFailure
 
 
 class PhysicsSummary(BaseModel):
@@ -50,6 +50,10 @@ class EnvSample(BaseModel):
     killed_mutants: list[str] = Field(default_factory=list)
     #: policy kind -> simulator ticks of the run (deterministic companion of `sim_ms`)
     sim_ticks: dict[str, int] = Field(default_factory=dict)
+    #: written category -> the catalog key it was judged as, where it was not a key already
+    categories: dict[str, str] = Field(default_factory=dict)
+    #: written categories that name no catalog category -> object ids (judged as obstacles)
+    unknown_categories: dict[str, list[str]] = Field(default_factory=dict)
 
 
 class VerdictTrace(BaseModel):
@@ -95,3 +99,28 @@ class UnitRecord(BaseModel):
     details: list[EnvDetail] = Field(default_factory=list)
     #: run-relative path -> SHA-256 of each file the unit wrote that only generation can rebuild
     files: dict[str, str] = Field(default_factory=dict)
+    #: every environment the generator set out to build (`generators.base.counted_attempts`);
+    #: a unit that failed as a whole holds its planned attempts as failed (none: infrastructure)
+    attempts: list[Attempt] = Field(default_factory=list)
+    #: a search of the generator that stopped at its budget, and what it used instead
+    budget_hit: str | None = None
+
+    @property
+    def measured(self) -> bool:
+        """False when the unit failed for infrastructure reasons: not a result, never a zero."""
+        return self.error_kind != "infrastructure"
+
+    @property
+    def n_failed(self) -> int:
+        """Attempted environments that were not built (docs/logic.md). Units written before
+        attempts were recorded: failures naming an environment that is not among the samples,
+        at least one when the unit holds no sample."""
+        if self.attempts:
+            return sum(not a.built for a in self.attempts)
+        built = {s.env_id for s in self.samples}
+        failed = {f.env_id for f in self.failures if f.env_id is not None and f.env_id not in built}
+        return len(failed) if self.samples or failed else 1
+
+    @property
+    def n_attempted(self) -> int:
+        return len(self.samples) + self.n_failed

@@ -5,7 +5,10 @@ environments, are what a different benchmark draw would change. With several see
 task also redraws its seeds (a two-level bootstrap), so seed-to-seed variation widens the
 interval. A metric is recomputed from per-cell (task, seed) counts exactly as `aggregate` does:
 PhyPR and SceVR are shares of all environment slots, the others means over cells. Draws come
-from an explicit `numpy.random.Generator`, so intervals are reproducible.
+from an explicit `numpy.random.Generator` with a fixed seed (`bootstrap_rng`): an interval is a
+function of the per-task figures alone, so the same environments scored under another row name,
+run seed or run give the same interval. With fewer than two tasks there is nothing to resample:
+the interval is `None` (shown as n/a).
 """
 
 from __future__ import annotations
@@ -21,6 +24,10 @@ from logicenveval.model.task import FAULTY_KINDS
 
 #: resamples per interval; 2,000 keeps the 2.5/97.5 percentiles stable to ~0.1 point
 N_BOOTSTRAP = 2000
+#: the bootstrap's seed: fixed, never derived from a row name or the run seed
+BOOTSTRAP_SEED = 95
+#: an interval needs at least this many distinct tasks (one task resamples to itself)
+MIN_TASKS = 2
 
 #: path into results.<generator> -> the per-cell column it is computed from
 _Path = tuple[str, ...]
@@ -75,7 +82,9 @@ def metrics_from_weights(cells: Sequence[Cell], weights: np.ndarray) -> dict[tup
 def point_metrics(cells: Sequence[Cell]) -> dict[str, Any]:
     """`results.<generator>` over all cells (every task and seed counted once)."""
     m = {p: float(v[0]) for p, v in metrics_from_weights(cells, np.ones((1, len(cells)))).items()}
-    nested: dict[str, Any] = {"n_envs": int(sum(int(c["n_envs"]) for c in cells))}
+    nested: dict[str, Any] = {"n_envs": int(sum(int(c["n_envs"]) for c in cells)),
+                              "n_failed": int(sum(int(c.get("n_failed", 0)) for c in cells))}
+    nested["n_attempted"] = nested["n_envs"] + nested["n_failed"]
     for path, value in m.items():
         _put(nested, path, None if np.isnan(value) else value)
     by_class: dict[str, list[float]] = {}
@@ -118,16 +127,27 @@ def _groups(keys: Sequence[tuple[str, int]]) -> tuple[list[str], list[list[int]]
     return list(order), list(order.values())
 
 
-def ci95(cells: Mapping[tuple[str, int], Cell], rng: np.random.Generator,
+def bootstrap_rng() -> np.random.Generator:
+    """The bootstrap's own stream, the same for every row: intervals depend on the data only."""
+    return np.random.default_rng(BOOTSTRAP_SEED)
+
+
+def ci95(cells: Mapping[tuple[str, int], Cell], rng: np.random.Generator | None = None,
          n: int = N_BOOTSTRAP) -> dict[str, Any]:
-    """95 % percentile intervals `[lo, hi]` of every `CI_METRICS` rate, nested like results."""
+    """95 % percentile intervals `[lo, hi]` of every `CI_METRICS` rate, nested like results;
+    `None` for each when the cells cover fewer than `MIN_TASKS` tasks."""
     if not cells:
         raise MetricsError("no per-task metrics", field="per_task", hint="evaluate at least one task")
     keys = sorted(cells)
     _, groups = _groups(keys)
+    out: dict[str, Any] = {}
+    if len(groups) < MIN_TASKS:
+        for path in CI_METRICS:
+            _put(out, path, None)
+        return out
+    rng = bootstrap_rng() if rng is None else rng
     weights = _weights(groups, rng.integers(0, len(groups), size=(n, len(groups))), rng)
     draws = metrics_from_weights([cells[k] for k in keys], weights)
-    out: dict[str, Any] = {}
     for path in CI_METRICS:
         lo, hi = np.percentile(draws[path], [2.5, 97.5])
         _put(out, path, [float(lo), float(hi)])
@@ -135,12 +155,12 @@ def ci95(cells: Mapping[tuple[str, int], Cell], rng: np.random.Generator,
 
 
 def paired_difference(a: Mapping[tuple[str, int], Cell], b: Mapping[tuple[str, int], Cell],
-                      rng: np.random.Generator, n: int = N_BOOTSTRAP
-                      ) -> dict[tuple[str, ...], tuple[float, float, float]]:
-    """Per metric: (b - a, lo, hi), resampling the same tasks for both runs in every draw.
+                      rng: np.random.Generator | None = None, n: int = N_BOOTSTRAP
+                      ) -> dict[tuple[str, ...], tuple[float, float | None, float | None]]:
+    """Per metric: (b - a, lo, hi), resampling the same tasks for both sides in every draw.
 
-    Both runs must cover the same tasks (pass only the common ones); each run's seeds of a drawn
-    task are redrawn independently.
+    Both sides must cover the same tasks (pass only the common ones); each side's seeds of a
+    drawn task are redrawn independently. With fewer than `MIN_TASKS` tasks `lo`, `hi` are None.
     """
     ka, kb = sorted(a), sorted(b)
     tasks_a, groups_a = _groups(ka)
@@ -150,13 +170,17 @@ def paired_difference(a: Mapping[tuple[str, int], Cell], b: Mapping[tuple[str, i
                            hint="compare over the common tasks (--common-tasks)")
     if not ka:
         raise MetricsError("no common task to compare", field="per_task", hint="check the run folders")
-    task_draw = rng.integers(0, len(tasks_a), size=(n, len(tasks_a)))
-    wa, wb = _weights(groups_a, task_draw, rng), _weights(groups_b, task_draw, rng)
     cells_a, cells_b = [a[k] for k in ka], [b[k] for k in kb]
-    da, db = metrics_from_weights(cells_a, wa), metrics_from_weights(cells_b, wb)
     pa = metrics_from_weights(cells_a, np.ones((1, len(ka))))
     pb = metrics_from_weights(cells_b, np.ones((1, len(kb))))
-    out = {}
+    if len(tasks_a) < MIN_TASKS:
+        return {path: (float(pb[path][0] - pa[path][0]), None, None) for path in pa
+                if not (np.isnan(pa[path][0]) or np.isnan(pb[path][0]))}
+    rng = bootstrap_rng() if rng is None else rng
+    task_draw = rng.integers(0, len(tasks_a), size=(n, len(tasks_a)))
+    wa, wb = _weights(groups_a, task_draw, rng), _weights(groups_b, task_draw, rng)
+    da, db = metrics_from_weights(cells_a, wa), metrics_from_weights(cells_b, wb)
+    out: dict[tuple[str, ...], tuple[float, float | None, float | None]] = {}
     for path in da:
         if np.isnan(pa[path][0]) or np.isnan(pb[path][0]):
             continue  # a figure one of the runs does not have (e.g. no mutants scored)
@@ -165,10 +189,19 @@ def paired_difference(a: Mapping[tuple[str, int], Cell], b: Mapping[tuple[str, i
     return out
 
 
+def measured(cell: Cell) -> bool:
+    """A per-task cell with figures (a task that was not measured has `n_envs` null)."""
+    return cell.get("n_envs") is not None
+
+
 def cells_of(results: Mapping[str, Any], generator: str) -> dict[tuple[str, int], Cell]:
-    """(task, seed) -> per-task metrics of one generator, from a single- or multi-seed results."""
+    """(task, seed) -> per-task metrics of one generator, from a single- or multi-seed results;
+    tasks the generator was not measured on are left out."""
+    skip = set((results.get("results", {}).get(generator) or {}).get("not_measured_tasks") or ())
     if "per_task_seed" in results:
         per = results["per_task_seed"].get(generator, {})
-        return {(task, int(seed)): m for task, by_seed in per.items() for seed, m in by_seed.items()}
-    seed = int(results.get("seed") or 0)
-    return {(task, seed): m for task, m in results.get("per_task", {}).get(generator, {}).items()}
+        cells = {(task, int(seed)): m for task, by_seed in per.items() for seed, m in by_seed.items()}
+    else:
+        seed = int(results.get("seed") or 0)
+        cells = {(task, seed): m for task, m in results.get("per_task", {}).get(generator, {}).items()}
+    return {k: m for k, m in cells.items() if k[0] not in skip and measured(m)}

@@ -12,11 +12,12 @@ from logicenveval.domain.catalog import Catalog
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.physics.geometry import (
     Body,
-    candidate_pairs,
+    candidate_array,
     finite,
     mesh_path,
     penetration_depth,
     rect_pairs,
+    separated,
 )
 from logicenveval.physics.report import PhysicsFailure, Tolerances
 
@@ -28,13 +29,14 @@ def _fail(code: str, message: str, objects: list[str], *, rooms: list[str] | Non
 
 
 def rests_on(b: Body, s: Body, tol: Tolerances) -> tuple[bool, str, float]:
-    """Whether `b` rests on the top face of `s`: (holds, reason code, measured)."""
+    """Whether `b` rests on the top face of `s` — its bottom at that top and its centre of mass over
+    the top's footprint: (holds, reason code, measured)."""
     gap = b.bottom - s.top
     if abs(gap) > tol.support_gap:
         return False, "not_supported", gap
     outside = float(s.footprint.exterior.distance(Point(b.xz))) if not s.footprint.contains(Point(b.xz)) else 0.0
     if outside > 0:
-        return False, "unstable", outside
+        return False, "centre_off_support", outside
     return True, "", 0.0
 
 
@@ -48,8 +50,21 @@ def wall_distance(b: Body, poly: Polygon) -> float:
     return float(poly.exterior.distance(b.back_face_segment().centroid))
 
 
+def _mountable(b: Body, where: str, catalog: Catalog) -> list[PhysicsFailure]:
+    """A wall or ceiling object is supported only where the catalog lets its category hang there
+    (categories the catalog does not know are not judged, as for sizes)."""
+    cat = catalog.get(b.obj.category)
+    if cat is None or where in cat.placement:
+        return []
+    return [_fail("not_supported", f"{b.id} ({b.obj.category}) is mounted on the {where}, but the catalog "
+                  f"places it {'/'.join(cat.placement)}", [b.id])]
+
+
 def _support(b: Body, env: EnvSpec, bodies: dict[str, Body], polys: dict[str, Polygon],
-             tol: Tolerances) -> list[PhysicsFailure]:
+             catalog: Catalog, tol: Tolerances) -> list[PhysicsFailure]:
+    """Table 2 "supported by a surface (i.e., not floating)": on the floor, on a supporter's top
+    with the centre of mass over it, inside a container, or hung on a wall/ceiling the catalog
+    allows (docs/physics.md)."""
     o = b.obj
     out: list[PhysicsFailure] = []
     if o.container is not None:
@@ -68,11 +83,13 @@ def _support(b: Body, env: EnvSpec, bodies: dict[str, Body], polys: dict[str, Po
             out.append(_fail("not_supported", f"{o.id} bottom is at y={b.bottom:.3f} m, not on the floor",
                              [o.id], measured=b.bottom, tolerance=tol.support_gap))
     elif sup == "ceiling":
+        out += _mountable(b, "ceiling", catalog)
         gap = env.wall_height - b.top
         if abs(gap) > tol.support_gap:
             out.append(_fail("not_supported", f"{o.id} top is {gap:.3f} m below the ceiling",
                              [o.id], measured=gap, tolerance=tol.support_gap))
     elif sup == "wall":
+        out += _mountable(b, "wall", catalog)
         poly = polys.get(o.room)
         if poly is not None:
             dist = wall_distance(b, poly)
@@ -88,33 +105,110 @@ def _support(b: Body, env: EnvSpec, bodies: dict[str, Body], polys: dict[str, Po
             ok, code, measured = rests_on(b, s, tol)
             if not ok:
                 what = ("does not rest on the top of" if code == "not_supported"
-                        else "has its centre of mass outside the top of")
+                        else "has its centre of mass beside the top of")
                 out.append(_fail(code, f"{o.id} {what} {sup} ({measured:+.3f} m)", [o.id, sup],
                                  measured=measured, tolerance=tol.support_gap if code == "not_supported" else 0.0))
     return out
 
 
-def exempt(a: Body, b: Body) -> bool:
-    """Support, containment and same-container pairs may touch or overlap."""
+def enclosing(bodies: dict[str, Body] | list[Body]) -> dict[str, frozenset[str]]:
+    """Object id -> the containers that enclose it: its own, and those of every object it rests
+    on or lies in, transitively (a book on a shelf in a cabinet lies in the cabinet)."""
+    objs = {b.id: b.obj for b in (bodies.values() if isinstance(bodies, dict) else bodies)}
+    memo: dict[str, frozenset[str]] = {}
+
+    def walk(oid: str, seen: frozenset[str]) -> frozenset[str]:
+        if oid in memo:
+            return memo[oid]
+        o = objs.get(oid)
+        if o is None or oid in seen:
+            return frozenset()
+        out: set[str] = set()
+        seen = seen | {oid}
+        if o.container is not None:
+            out.add(o.container)
+            out |= walk(o.container, seen)
+        if o.support not in (None, "floor", "wall", "ceiling"):
+            out |= walk(o.support, seen)
+        memo[oid] = frozenset(out)
+        return memo[oid]
+
+    return {oid: walk(oid, frozenset()) for oid in objs}
+
+
+def exempt(a: Body, b: Body, encl: dict[str, frozenset[str]]) -> bool:
+    """A support pair may touch, and an object lies within the containers enclosing it; anything
+    else — two objects in one container included — must not interpenetrate (Table 2)."""
     oa, ob = a.obj, b.obj
-    return (oa.support == ob.id or ob.support == oa.id or oa.container == ob.id
-            or ob.container == oa.id or (oa.container is not None and oa.container == ob.container))
+    return (oa.support == ob.id or ob.support == oa.id or ob.id in encl.get(oa.id, frozenset())
+            or oa.id in encl.get(ob.id, frozenset()))
+
+
+#: a candidate pair is examined while either object is named in fewer interpenetrations than
+#: this: a pile of n objects in one place has n²/2 colliding pairs, and listing them all costs
+#: quadratic time, memory and output, while a few suffice to fail each object. So every colliding
+#: object is still named (at least min(its collisions, cap) times) and a report holds at most
+#: cap x n interpenetrations (docs/physics.md).
+MAX_COLLISIONS_PER_OBJECT = 8
+
+
+def _collision(a: Body, b: Body, tol: Tolerances) -> PhysicsFailure | None:
+    depth = penetration_depth(a, b)
+    if depth <= tol.penetration:
+        return None
+    return _fail("interpenetration", f"{a.id} and {b.id} interpenetrate by {depth:.3f} m",
+                 [a.id, b.id], measured=depth, tolerance=tol.penetration)
 
 
 def collisions(bodies: list[Body], tol: Tolerances, *, broad_phase: bool = True) -> list[PhysicsFailure]:
-    if broad_phase:
-        pairs = candidate_pairs(bodies)
-    else:
-        pairs = [(i, j) for i in range(len(bodies)) for j in range(i + 1, len(bodies))]
-    out = []
-    for i, j in pairs:
+    """Interpenetrations of non-exempt pairs, in pair order (i < j, EnvSpec order).
+
+    With `broad_phase` (the default): sort-and-sweep candidates, a separating-axis prefilter for
+    boxes, fcl on the rest, and at most `MAX_COLLISIONS_PER_OBJECT` failures naming one object
+    (a pair is examined while either object is below the cap). Without: every pair through fcl,
+    every collision reported — the old quadratic path, kept as the baseline of
+    `benchmarks/physics_check.py`. Both give the same failures until an object reaches the cap.
+    """
+    encl = enclosing(bodies)
+    if not broad_phase:
+        found = (_collision(bodies[i], bodies[j], tol) for i in range(len(bodies))
+                 for j in range(i + 1, len(bodies)) if not exempt(bodies[i], bodies[j], encl))
+        return [f for f in found if f is not None]
+    pairs = candidate_array(bodies)
+    pairs = pairs[~separated(bodies, pairs)]
+    count = np.zeros(len(bodies), dtype=np.int64)
+    cap = MAX_COLLISIONS_PER_OBJECT
+    out: list[PhysicsFailure] = []
+
+    def examine(i: int, j: int) -> None:
         a, b = bodies[i], bodies[j]
-        if exempt(a, b):
-            continue
-        depth = penetration_depth(a, b)
-        if depth > tol.penetration:
-            out.append(_fail("interpenetration", f"{a.id} and {b.id} interpenetrate by {depth:.3f} m",
-                             [a.id, b.id], measured=depth, tolerance=tol.penetration))
+        if exempt(a, b, encl):
+            return
+        f = _collision(a, b, tol)
+        if f is None:
+            return
+        count[i] += 1
+        count[j] += 1
+        full = [x.id for x, n in ((a, count[i]), (b, count[j])) if n == cap]
+        if full:
+            f = f.model_copy(update={"message": f"{f.message} ({', '.join(full)} now named in {cap} "
+                                                "interpenetrations: further pairs among such objects "
+                                                "are not examined)"})
+        out.append(f)
+
+    if not len(pairs):
+        return out
+    starts = np.flatnonzero(np.r_[True, pairs[1:, 0] != pairs[:-1, 0]])
+    for s, e in zip(starts, [*starts[1:], len(pairs)], strict=True):
+        i = int(pairs[s, 0])
+        js = pairs[s:e, 1]
+        for pos, j in enumerate(js):
+            if count[i] >= cap:  # i is full: only partners below the cap still need examining
+                rest = js[pos:]
+                for k in rest[count[rest] < cap]:
+                    examine(i, int(k))
+                break
+            examine(i, int(j))
     return out
 
 
@@ -178,7 +272,7 @@ def check_entities(env: EnvSpec, bodies: dict[str, Body], polys: dict[str, Polyg
     blocking = _door_candidates(list(bodies.values()), doors)
     for k, b in enumerate(bodies.values()):
         fails += _catalog_size(b, catalog, tol)
-        fails += _support(b, env, bodies, polys, tol)
+        fails += _support(b, env, bodies, polys, catalog, tol)
         if b.top > env.wall_height + tol.support_gap:
             fails.append(_fail("above_ceiling", f"{b.id} top {b.top:.2f} m is above the wall height "
                                f"{env.wall_height} m", [b.id], measured=b.top, tolerance=env.wall_height))
@@ -198,5 +292,5 @@ def check_entities(env: EnvSpec, bodies: dict[str, Body], polys: dict[str, Polyg
     return fails
 
 
-__all__ = ["check_entities", "collisions", "contained_excess", "rests_on", "swing_areas",
+__all__ = ["check_entities", "collisions", "contained_excess", "enclosing", "exempt", "rests_on", "swing_areas",
            "wall_distance"]

@@ -1,18 +1,20 @@
 """Floor-plan dimension: room polygons, overlaps, connectivity, doors and windows.
 
 Doors stand on the floor by construction (EnvSpec doors have no bottom), so "bottom on the
-floor" reduces to a positive height; "below the ceiling" is height <= wall_height.
+floor" reduces to a positive height; "below the ceiling" is height <= wall_height. A window is
+embedded in its wall: its segment within the room's outline (horizontally) and sill > 0 and
+sill + height <= wall_height (vertically).
 """
 
 from __future__ import annotations
 
-from itertools import combinations
+import math
 
 from shapely.geometry import LineString, Point, Polygon
 from shapely.geometry.base import BaseGeometry
 
 from logicenveval.model.envspec import Door, EnvSpec
-from logicenveval.physics.geometry import finite
+from logicenveval.physics.geometry import finite, rect_pairs
 from logicenveval.physics.report import PhysicsFailure, Tolerances
 
 
@@ -49,8 +51,15 @@ def valid_rooms(env: EnvSpec, fails: list[PhysicsFailure]) -> dict[str, Polygon]
 
 
 def _overlaps(polys: dict[str, Polygon], tol: Tolerances) -> list[PhysicsFailure]:
+    """Pairs of rooms (in room order) overlapping by more than the tolerance; only rooms whose
+    bounds meet are intersected (a sweep over the bounds, not all pairs)."""
+    items = list(polys.items())
+    bounds = [p.bounds for _, p in items]
     out = []
-    for (a, pa), (b, pb) in combinations(polys.items(), 2):
+    for i, j in rect_pairs(bounds, bounds):
+        if i >= j:
+            continue
+        (a, pa), (b, pb) = items[i], items[j]
         area = float(pa.intersection(pb).area)
         if area > tol.room_overlap_area:
             out.append(_fail("rooms_overlap", f"rooms {a} and {b} overlap by {area:.3f} m²",
@@ -84,7 +93,8 @@ def _on_wall(seg: LineString, wall_band: BaseGeometry) -> bool:
 
 
 def _door(d: Door, env: EnvSpec, polys: dict[str, Polygon], bands: dict[str, BaseGeometry],
-          tol: Tolerances) -> list[PhysicsFailure]:
+          near: list[str], tol: Tolerances) -> list[PhysicsFailure]:
+    """The door's findings; `near` are the rooms whose wall bands' bounds meet its segment's."""
     out: list[PhysicsFailure] = []
     if not 0 < d.height <= env.wall_height - tol.ceiling_margin:
         out.append(_fail("door_height", f"door {d.id} height {d.height} m must be in (0, wall_height "
@@ -108,13 +118,22 @@ def _door(d: Door, env: EnvSpec, polys: dict[str, Polygon], bands: dict[str, Bas
                              f"(midpoint {dist:.3f} m from the wall)", objects=[d.id], rooms=[r],
                              measured=dist, tolerance=tol.on_wall))
     if "exterior" in d.rooms and rooms:
-        others = [o for o in polys if o not in rooms and _on_wall(seg, bands[o])]
+        others = [o for o in near if o not in rooms and _on_wall(seg, bands[o])]
         if others:
             out.append(_fail("door_not_exterior", f"exterior door {d.id} is on a wall shared with "
                              f"room {others[0]}", objects=[d.id], rooms=[*rooms, others[0]]))
     if d.rooms[0] == d.rooms[1]:
         out.append(_fail("door_rooms", f"door {d.id} connects {d.rooms[0]} to itself", objects=[d.id]))
     return out
+
+
+def _bounds(seg: tuple[tuple[float, float], tuple[float, float]] | None,
+            grow: float = 0.0) -> tuple[float, float, float, float]:
+    """Bounds (x0, z0, x1, z1) of a segment grown by `grow`; NaN (meets nothing) without one."""
+    if seg is None:
+        return (math.nan,) * 4
+    (ax, az), (bx, bz) = seg
+    return (min(ax, bx) - grow, min(az, bz) - grow, max(ax, bx) + grow, max(az, bz) + grow)
 
 
 def check_floor_plan(env: EnvSpec, tol: Tolerances) -> tuple[list[PhysicsFailure], dict[str, Polygon]]:
@@ -127,17 +146,25 @@ def check_floor_plan(env: EnvSpec, tol: Tolerances) -> tuple[list[PhysicsFailure
     fails += _overlaps(polys, tol)
     fails += _connectivity(env)
     bands = {rid: p.exterior.buffer(tol.on_wall) for rid, p in polys.items()}
-    for d in env.doors:
-        fails += _door(d, env, polys, bands, tol)
-    for w in env.windows:
+    band_ids = list(bands)
+    near: dict[int, list[str]] = {}
+    for k, r in rect_pairs([_bounds(d.segment) for d in env.doors], [b.bounds for b in bands.values()]):
+        near.setdefault(k, []).append(band_ids[r])
+    for k, d in enumerate(env.doors):
+        fails += _door(d, env, polys, bands, near.get(k, []), tol)
+    door_at: dict[int, list[int]] = {}  # window -> doors whose segments come within the tolerance
+    grown = [_bounds(w.segment, tol.on_wall) for w in env.windows]
+    for k, m in rect_pairs(grown, [_bounds(d.segment) for d in env.doors]):
+        door_at.setdefault(k, []).append(m)
+    for k, w in enumerate(env.windows):  # Table 2: "embedded in the wall and positioned above the floor"
         if not w.sill > 0:
             fails.append(_fail("window_sill", f"window {w.id} sill {w.sill} m is not above the floor",
                                objects=[w.id], rooms=[w.room], measured=w.sill, tolerance=0.0))
         top = w.sill + w.height
         if not (w.height > 0 and top <= env.wall_height - tol.ceiling_margin):
-            fails.append(_fail("window_above_ceiling", f"window {w.id} top {top:.2f} m is above the "
-                               f"wall height {env.wall_height} m", objects=[w.id], rooms=[w.room],
-                               measured=top, tolerance=env.wall_height))
+            fails.append(_fail("window_above_ceiling", f"window {w.id} top {top:.2f} m is not within the "
+                               f"wall (wall height {env.wall_height} m, window height {w.height} m)",
+                               objects=[w.id], rooms=[w.room], measured=top, tolerance=env.wall_height))
         if w.segment is None or not finite(*w.segment[0], *w.segment[1]):
             fails.append(_fail("missing_geometry", f"window {w.id} has no finite segment", objects=[w.id]))
             continue
@@ -147,7 +174,7 @@ def check_floor_plan(env: EnvSpec, tol: Tolerances) -> tuple[list[PhysicsFailure
             dist = max(float(poly.exterior.distance(Point(c))) for c in seg.coords)
             fails.append(_fail("window_not_on_wall", f"window {w.id} is not within a wall of room {w.room}",
                                objects=[w.id], rooms=[w.room], measured=dist, tolerance=tol.on_wall))
-        for d in env.doors:
+        for d in (env.doors[m] for m in door_at.get(k, ())):
             if w.room not in d.rooms or d.segment is None or not finite(*d.segment[0], *d.segment[1]):
                 continue  # a door without finite geometry is its own finding (shapely crashes on NaN)
             shared = float(LineString(d.segment).buffer(tol.on_wall).intersection(seg).length)

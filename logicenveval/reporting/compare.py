@@ -1,41 +1,49 @@
-"""Regression comparison of two runs (`compare RUN_A RUN_B`), for generators' CI.
+"""Regression comparison (`compare RUN_A [RUN_B] [--gen-a X --gen-b Y]`), for generators' CI.
 
-Every metric has a direction. The comparison is paired over tasks: both runs' per-task figures
-are resampled with the same task draws (and each run's seeds within a drawn task), giving a
-95 % bootstrap interval of the difference B - A. A change is a regression only when it goes
-against the metric's direction by more than the tolerance (absolute, in the metric's unit:
-fractions for rates) AND its interval excludes 0, so noise from a few tasks is not flagged.
-Results without per-task figures fall back to the tolerance alone (no interval). Timing (ST)
-is shown but judged only when asked; runs over different task sets or task versions are refused
-unless the comparison is restricted to the tasks they share.
+Pairs are generator X of run A against generator Y of run B: by default every generator of A
+against the one of the same name in B; `--gen-a/--gen-b` compare two different generators, also
+of one run. Every metric has a direction. The comparison is paired over tasks: both sides'
+per-task figures are resampled with the same task draws (and each side's seeds within a drawn
+task), giving a 95 % bootstrap interval of the difference B - A (`n/a` with fewer than two
+tasks). A change is a regression only when it goes against the metric's direction by more than
+the tolerance (absolute, in the metric's unit: fractions for rates) AND its interval excludes 0,
+so noise from a few tasks is not flagged; an improvement is the same in the metric's direction.
+Without an interval the tolerance alone decides. Timing (ST ms) is shown but judged only when
+asked. Anything of A missing from B — a generator, a task, a measurement (a row or task B did not
+measure) — is a regression unless allowed; tasks whose definition changed between the runs are
+refused unless the comparison is restricted to the unchanged ones.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
-import numpy as np
-
 from logicenveval.errors import ConfigError
-from logicenveval.metrics.uncertainty import cells_of, paired_difference
-from logicenveval.reporting.tables import COLUMNS, metric
+from logicenveval.metrics.uncertainty import cells_of, paired_difference, point_metrics
+from logicenveval.reporting.tables import COLUMNS, is_measured, metric
 
 #: metrics where lower is better; all others are better when higher
 LOWER_IS_BETTER = frozenset({("st_ms",), ("st_ticks",), ("redundancy",)})
 TIMING = frozenset({("st_ms",)})
-NOT_JUDGED = frozenset({("n_envs",)})
+NOT_JUDGED = frozenset({("n_envs",), ("n_failed",)})
+
+REGRESSION, IMPROVED, UNCHANGED, INFO = "regression", "improved", "", "not judged"
 
 
 @dataclass(frozen=True)
 class Delta:
-    generator: str
+    gen_a: str
+    gen_b: str
     metric: str
     before: float | None
     after: float | None
-    regression: bool
-    #: 95 % paired bootstrap interval of after - before (None without per-task figures)
+    #: regression, improved, "" (no change beyond the tolerance and noise) or "not judged"
+    verdict: str
+    #: 95 % paired bootstrap interval of after - before (None: no per-task figures, or < 2 tasks)
     ci95: tuple[float, float] | None = None
+    percent: bool = False
+    path: tuple[str, ...] = ()
 
     @property
     def change(self) -> float | None:
@@ -43,78 +51,182 @@ class Delta:
             return None
         return self.after - self.before
 
+    @property
+    def regression(self) -> bool:
+        return self.verdict == REGRESSION
 
-def common_tasks(a: dict[str, Any], b: dict[str, Any], *, allow_subset: bool) -> list[str]:
-    """The tasks both runs are compared on; refuses mismatched sets unless `allow_subset`."""
-    ta, tb = list(a.get("tasks", [])), list(b.get("tasks", []))
+    @property
+    def improved(self) -> bool:
+        return self.verdict == IMPROVED
+
+    @property
+    def generator(self) -> str:
+        return self.gen_a if self.gen_a == self.gen_b else f"{self.gen_a} → {self.gen_b}"
+
+    def to_json(self) -> dict[str, Any]:
+        return {"metric": self.metric, "key": ".".join(self.path), "a": self.before, "b": self.after,
+                "change": self.change, "ci95": None if self.ci95 is None else list(self.ci95),
+                "verdict": self.verdict or "unchanged"}
+
+
+@dataclass(frozen=True)
+class Missing:
+    """Something A measured that B does not have: a generator, or a task of a generator."""
+
+    generator: str
+    task: str = ""
+    why: str = "missing"
+
+    @property
+    def text(self) -> str:
+        what = f"task {self.task} of {self.generator}" if self.task else f"generator {self.generator}"
+        return f"{what}: {self.why} in B"
+
+
+@dataclass(frozen=True)
+class Pair:
+    gen_a: str
+    gen_b: str
+    tasks: list[str]
+    deltas: list[Delta]
+    #: the interval is over this many tasks (< 2: n/a)
+    n_tasks: int = 0
+
+    @property
+    def title(self) -> str:
+        return self.gen_a if self.gen_a == self.gen_b else f"{self.gen_a} (A) → {self.gen_b} (B)"
+
+
+@dataclass(frozen=True)
+class Comparison:
+    tasks: list[str]
+    pairs: list[Pair]
+    missing: list[Missing] = field(default_factory=list)
+    #: generators of B that A does not have (informational)
+    new: list[str] = field(default_factory=list)
+    allow_missing: bool = False
+    tolerance: float = 0.02
+
+    @property
+    def deltas(self) -> list[Delta]:
+        return [d for p in self.pairs for d in p.deltas]
+
+    @property
+    def regressions(self) -> list[Delta]:
+        return [d for d in self.deltas if d.regression]
+
+    @property
+    def improvements(self) -> list[Delta]:
+        return [d for d in self.deltas if d.improved]
+
+    @property
+    def failed(self) -> bool:
+        """What makes `compare` exit 1: a regression, or something missing from B (unless allowed)."""
+        return bool(self.regressions) or (bool(self.missing) and not self.allow_missing)
+
+    def to_json(self) -> dict[str, Any]:
+        return {
+            "tasks": self.tasks, "tolerance": self.tolerance, "allow_missing": self.allow_missing,
+            "pairs": [{"a": p.gen_a, "b": p.gen_b, "n_tasks": p.n_tasks,
+                       "metrics": [d.to_json() for d in p.deltas]} for p in self.pairs],
+            "missing": [{"generator": m.generator, "task": m.task or None, "why": m.why} for m in self.missing],
+            "new_in_b": self.new,
+            "regressions": len(self.regressions), "improvements": len(self.improvements),
+            "failed": self.failed,
+        }
+
+
+def compared_tasks(a: dict[str, Any], b: dict[str, Any], *, skip_changed: bool) -> list[str]:
+    """A's tasks, less those whose definition differs in B (refused unless `skip_changed`).
+
+    Tasks of A that B lacks stay in: the comparison reports them as missing from B."""
+    ta, tb = list(a.get("tasks", [])), set(b.get("tasks", []))
     ha = a.get("benchmark", {}).get("task_sha256", {})
     hb = b.get("benchmark", {}).get("task_sha256", {})
-    changed = sorted(t for t in set(ta) & set(tb) if t in ha and t in hb and ha[t] != hb[t])
-    common = [t for t in ta if t in set(tb) and t not in changed]
-    if not allow_subset:
-        if set(ta) != set(tb):
-            only_a, only_b = sorted(set(ta) - set(tb)), sorted(set(tb) - set(ta))
-            raise ConfigError(f"the runs cover different tasks (only in A: {only_a[:5]}, only in "
-                              f"B: {only_b[:5]})", field="tasks",
-                              hint="re-run on the same tasks, or pass --common-tasks")
-        if changed:
-            raise ConfigError(f"task(s) {changed[:5]} differ between the runs' benchmark versions",
-                              field="benchmark", hint="re-run both on the same benchmark, or "
-                              "pass --common-tasks to compare the unchanged tasks only")
-    if not common:
-        raise ConfigError("the runs share no task", field="tasks", hint="compare runs of one benchmark")
-    return common
+    changed = sorted(t for t in set(ta) & tb if t in ha and t in hb and ha[t] != hb[t])
+    if changed and not skip_changed:
+        raise ConfigError(f"task(s) {changed[:5]} differ between the runs' benchmark versions",
+                          field="benchmark", hint="re-run both on the same benchmark, or "
+                          "pass --common-tasks to compare the unchanged tasks only")
+    if not any(t in tb and t not in changed for t in ta):
+        raise ConfigError(f"the runs share no task (A: {ta[:5]}, B: {sorted(tb)[:5]})", field="tasks",
+                          hint="compare runs of one benchmark")
+    return [t for t in ta if t not in changed]
+
+
+def _pairs(a: dict[str, Any], b: dict[str, Any], gen_a: str | None,
+           gen_b: str | None) -> tuple[list[tuple[str, str]], list[str], list[str]]:
+    """(pairs, generators of A missing from B, generators only in B)."""
+    ra, rb = a["results"], b["results"]
+    if gen_a is None and gen_b is None:
+        pairs = [(g, g) for g in ra if g in rb]
+        return pairs, [g for g in ra if g not in rb], [g for g in rb if g not in ra]
+    x, y = gen_a or gen_b, gen_b or gen_a
+    assert x is not None and y is not None
+    for name, side, opt in ((x, ra, "--gen-a"), (y, rb, "--gen-b")):
+        if name not in side:
+            raise ConfigError(f"no generator {name!r} in run {'A' if opt == '--gen-a' else 'B'} "
+                              f"(it has {sorted(side)[:8]})", field=opt,
+                              hint="name a generator of that run's leaderboard")
+    return [(x, y)], [], []
 
 
 def compare_results(
     a: dict[str, Any], b: dict[str, Any], *, tolerance: float = 0.02, judge_timing: bool = False,
-    common: list[str] | None = None, n_bootstrap: int = 2000,
-) -> list[Delta]:
-    out: list[Delta] = []
-    rng = np.random.default_rng([0, 95])
-    generators = list(a["results"]) + [g for g in b["results"] if g not in a["results"]]
-    for gen in generators:
-        va, vb = a["results"].get(gen), b["results"].get(gen)
-        paired = _paired(a, b, gen, common, rng, n_bootstrap) if va and vb else None
-        for header, path, _ in COLUMNS:
-            judged = path not in NOT_JUDGED and (judge_timing or path not in TIMING)
-            if paired is not None and path in paired:
-                diff, lo, hi = paired[path]
-                before = _point(a, gen, path, common)
-                after = None if before is None else before + diff
-                worse = diff > tolerance and lo > 0 if path in LOWER_IS_BETTER else (
-                    -diff > tolerance and hi < 0)
-                out.append(Delta(gen, header, before, after, judged and worse, (lo, hi)))
-                continue
-            before = metric(va, path) if va is not None else None
-            after = metric(vb, path) if vb is not None else None
-            if before is None or after is None:
-                regression = False  # a row missing on one side is reported, not judged
-            elif path in LOWER_IS_BETTER:
-                regression = judged and after - before > tolerance
-            else:
-                regression = judged and before - after > tolerance
-            out.append(Delta(gen, header, before, after, regression))
-    return out
+    tasks: list[str] | None = None, n_bootstrap: int = 2000, gen_a: str | None = None,
+    gen_b: str | None = None, allow_missing: bool = False,
+) -> Comparison:
+    """Compare every pair of generators of A and B over `tasks` (default: A's tasks)."""
+    tasks = list(a.get("tasks", [])) if tasks is None else list(tasks)
+    in_b = set(b.get("tasks", []))
+    pairs, lost, new = _pairs(a, b, gen_a, gen_b)
+    missing = [Missing(g) for g in lost if is_measured(a["results"][g])]
+    out = []
+    for x, y in pairs:
+        va, vb = a["results"][x], b["results"][y]
+        if not is_measured(va):
+            continue  # nothing of A to keep
+        if not is_measured(vb):
+            missing.append(Missing(y, why="not measured"))
+            continue
+        ca = {k: c for k, c in cells_of(a, x).items() if k[0] in set(tasks)}
+        cb = {k: c for k, c in cells_of(b, y).items() if k[0] in set(tasks)}
+        ta, tb = {t for t, _ in ca}, {t for t, _ in cb}
+        missing += [Missing(y, t, "not measured" if t in in_b else "missing")
+                    for t in tasks if t in ta and t not in tb]
+        shared = [t for t in tasks if t in ta and t in tb]
+        out.append(_pair(x, y, va, vb, ca, cb, shared, tolerance, judge_timing, n_bootstrap))
+    return Comparison(tasks, out, missing, new, allow_missing, tolerance)
 
 
-def _restrict(cells: dict[tuple[str, int], Any], common: list[str] | None) -> dict[tuple[str, int], Any]:
-    return cells if common is None else {k: v for k, v in cells.items() if k[0] in set(common)}
-
-
-def _paired(a: dict[str, Any], b: dict[str, Any], gen: str, common: list[str] | None,
-            rng: np.random.Generator, n: int) -> dict[tuple[str, ...], tuple[float, float, float]] | None:
-    ca, cb = _restrict(cells_of(a, gen), common), _restrict(cells_of(b, gen), common)
-    if not ca or not cb or {t for t, _ in ca} != {t for t, _ in cb}:
-        return None
-    return paired_difference(ca, cb, rng, n)
-
-
-def _point(results: dict[str, Any], gen: str, path: tuple[str, ...], common: list[str] | None) -> float | None:
-    """The metric over the compared tasks (equal to results.<gen> when all tasks are compared)."""
-    if common is None or set(common) == set(results.get("tasks", [])):
-        return metric(results["results"][gen], path)
-    from logicenveval.metrics.uncertainty import point_metrics
-
-    cells = _restrict(cells_of(results, gen), common)
-    return metric(point_metrics(list(cells.values())), path)
+def _pair(x: str, y: str, va: dict[str, Any], vb: dict[str, Any], ca: dict[tuple[str, int], Any],
+          cb: dict[tuple[str, int], Any], shared: list[str], tolerance: float, judge_timing: bool,
+          n_bootstrap: int) -> Pair:
+    paired: dict[tuple[str, ...], tuple[float, float | None, float | None]] = {}
+    point_a = point_b = None
+    if shared:
+        ca = {k: c for k, c in ca.items() if k[0] in set(shared)}
+        cb = {k: c for k, c in cb.items() if k[0] in set(shared)}
+        paired = paired_difference(ca, cb, n=n_bootstrap)
+        point_a, point_b = point_metrics(list(ca.values())), point_metrics(list(cb.values()))
+    deltas = []
+    for header, path, pct in COLUMNS:
+        judged = path not in NOT_JUDGED and (judge_timing or path not in TIMING)
+        lower = path in LOWER_IS_BETTER
+        ci: tuple[float, float] | None = None
+        if path in paired and point_a is not None and point_b is not None:
+            _, lo, hi = paired[path]
+            before, after = metric(point_a, path), metric(point_b, path)
+            ci = None if lo is None or hi is None else (lo, hi)
+        else:  # results without per-task figures: the tolerance alone
+            before, after = metric(va, path), metric(vb, path)
+        diff = None if before is None or after is None else after - before
+        verdict = UNCHANGED
+        if diff is not None:
+            gain = -diff if lower else diff
+            beyond = abs(diff) > tolerance
+            clear = ci is None or (ci[0] > 0 or ci[1] < 0)
+            if beyond and clear:
+                verdict = (IMPROVED if gain > 0 else REGRESSION) if judged else INFO
+        deltas.append(Delta(x, y, header, before, after, verdict, ci, pct, path))
+    return Pair(x, y, shared, deltas, len(shared))

@@ -1,142 +1,270 @@
-"""`leaderboard.md` and a static, self-contained `leaderboard.html` for a run folder.
+"""`leaderboard.md` and a static `leaderboard.html` with per-task pages, for a run folder.
 
-The HTML drill-down shows, per generator and task, every environment's top-down render, the GT
-decision paths it covers, its physics failures and each BT's verdict with the tick trace. All of
-it was recorded by the units when they evaluated the environments (`UnitRecord.details`), so a
-report only reads: no physics check, no simulation, no solving. A render file that is missing
-(renders are not fsynced) is re-drawn from the stored environment and stored physics failures.
+The main page holds the table (grouped, sticky header, sortable), the reasons environments were
+rejected or failed, a filter box and an index of every (generator, task) with anchors; each index
+row links to the task's page under `details/` (`reporting.details`), loaded only when opened. All
+of it was recorded by the units when they evaluated the environments (`UnitRecord.details`), so a
+report only reads: no physics check, no simulation, no solving. Renders are embedded in the
+pages, so the report folder works when moved or copied on its own.
 """
 
 from __future__ import annotations
 
-import json
-from collections.abc import Sequence
+import os
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
 from jinja2 import Environment, PackageLoader, select_autoescape
 
 from logicenveval.atomic import atomic_write_text
-from logicenveval.metrics.records import EnvDetail, UnitRecord
-from logicenveval.model.task import POLICY_KINDS
-from logicenveval.reporting.tables import COLUMNS, LEGEND, markdown, method_label, rows
-from logicenveval.runner.store import RunStore
+from logicenveval.metrics.records import UnitRecord
+from logicenveval.model.task import FAULTY_KINDS
+from logicenveval.reporting.details import (
+    Source,
+    TaskRow,
+    slug,
+    sources,
+)
+from logicenveval.reporting.tables import (
+    COLUMNS,
+    GROUPS,
+    LEGEND,
+    SUBHEADERS,
+    Cell,
+    interval_note,
+    is_measured,
+    llm_validity,
+    markdown,
+    row_cells,
+    row_label,
+)
+from logicenveval.reporting.why import GeneratorReasons, reasons
 
-_NOT_RECORDED = "no trace recorded (the unit was written by a version that did not store traces)"
-
-
-def _samples(run_dir: Path) -> list[dict[str, Any]]:
-    from logicenveval.errors import RunStoreError
-    from logicenveval.limits import read_text
-
-    path = run_dir / "samples.jsonl"
-    if not path.exists():
-        return []
-    text = read_text(path, what="samples.jsonl", error=RunStoreError, max_bytes="max_run_file_bytes",
-                     hint="re-run the command to rewrite it")
-    out = []
-    for n, line in enumerate(text.splitlines(), 1):
-        if not line.strip():
-            continue
-        try:
-            sample = json.loads(line)
-        except (ValueError, RecursionError):
-            sample = None
-        if not isinstance(sample, dict) or not {"generator", "task_id", "env_id"} <= set(sample):
-            raise RunStoreError("not a complete sample (truncated or edited file)", file=str(path),
-                                line=n, hint="re-run the same `run` command: it rewrites samples.jsonl "
-                                "from the committed units")
-        out.append(sample)
-    return out
+#: the faulty kinds' short names in the index
+_KIND_SHORT = {"counterfactual": "CF", "unreachable": "Unreach", "lackbranch": "LBranch"}
 
 
-def _redraw(run_dir: Path, gen: str, task_id: str, sample: dict[str, Any], rel: str) -> str | None:
-    """Draw a missing render from the stored environment and its stored physics failures."""
-    from logicenveval.envfiles import load_env
-    from logicenveval.errors import LogicEnvEvalError
-    from logicenveval.physics.render import render_svg
-    from logicenveval.physics.report import DimensionReport, PhysicsFailure, PhysicsReport
-
-    env_path = run_dir / "envs" / gen / task_id / f"{sample['env_id']}.json"
-    if not env_path.exists():
-        return None
-    try:
-        env = load_env(env_path)
-    except LogicEnvEvalError:
-        return None
-    physics = sample["physics"]
-    failures = [PhysicsFailure.model_validate(f) for f in physics.get("failures", [])]
-    extended = [PhysicsFailure.model_validate(f) for f in physics.get("extended_failures", [])]
-    report = PhysicsReport(**{d: DimensionReport.of([f for f in failures if f.dimension == d])
-                              for d in ("floor_plan", "entity", "relation")},
-                           extended=DimensionReport.of(extended))
-    atomic_write_text(run_dir / rel, render_svg(env, report), durable=False)
-    return rel
-
-
-def _entry(run_dir: Path, gen: str, task_id: str, sample: dict[str, Any],
-           detail: EnvDetail | None) -> dict[str, Any]:
-    rel = detail.render if detail is not None and detail.render else \
-        (Path("renders") / gen / task_id / f"{sample['env_id']}.svg").as_posix()
-    render = rel if (run_dir / rel).exists() else _redraw(run_dir, gen, task_id, sample, rel)
-    if detail is not None:  # in policy-kind order (unit files store keys sorted)
-        order = {k: i for i, k in enumerate(POLICY_KINDS)}
-        kinds = sorted(detail.traces, key=lambda k: (order.get(k, len(order)), k))
-        traces = {k: detail.traces[k].model_dump(mode="json") for k in kinds}
-    else:
-        traces = {k: {"status": v, "message": _NOT_RECORDED, "trace": []}
-                  for k, v in sample.get("verdicts", {}).items()}
-    return {"sample": sample, "render": render, "traces": traces}
-
-
-def _drilldown(run_dir: Path, results: dict[str, Any],
-               records: Sequence[UnitRecord] | None) -> list[dict[str, Any]]:
-    """Per generator and task, the stored environments with their recorded details."""
-    units: dict[tuple[str, str], UnitRecord] = {(r.generator, r.task_id): r for r in records or ()}
-    store = RunStore(run_dir)
-    loose: dict[tuple[str, str], list[dict[str, Any]]] | None = None
-    out: list[dict[str, Any]] = []
-    for gen in results["results"]:
-        gen_block: dict[str, Any] = {"name": gen, "tasks": []}
-        for task_id in results.get("tasks", []):
-            unit = units.get((gen, task_id)) or store.load(gen, task_id)
-            envs = []
-            if unit is not None:
-                by_id = {d.env_id: d for d in unit.details}
-                for s in unit.samples:
-                    envs.append(_entry(run_dir, gen, task_id, s.model_dump(mode="json"),
-                                       by_id.get(s.env_id)))
-            else:  # a folder without units (e.g. a published reference run): samples only
-                if loose is None:
-                    loose = {}
-                    for x in _samples(run_dir):
-                        loose.setdefault((x["generator"], x["task_id"]), []).append(x)
-                envs = [_entry(run_dir, gen, task_id, x, None) for x in loose.get((gen, task_id), [])]
-            per_task = results.get("per_task", {}).get(gen, {}).get(task_id, {})
-            gen_block["tasks"].append({"id": task_id, "metrics": per_task, "envs": envs})
-        out.append(gen_block)
-    return out
-
-
-def render_html(run_dir: Path, results: dict[str, Any],
-                records: Sequence[UnitRecord] | None = None) -> str:
+def jinja() -> Environment:
     env = Environment(loader=PackageLoader("logicenveval", "reporting/templates"),
                       autoescape=select_autoescape(["html", "j2"]))
-    template = env.get_template("leaderboard.html.j2")
-    return template.render(
-        results=results,
-        headers=["Method"] + [h + (" (%)" if pct else "") for h, _, pct in COLUMNS],
-        rows=rows(results),
-        legend=LEGEND,
-        generators=_drilldown(run_dir, results, records),
-        label=lambda g: method_label(g, results.get("model", "")),
-    )
+    env.globals.update(kind_short=_KIND_SHORT, faulty_kinds=FAULTY_KINDS)
+    return env
+
+
+def gen_anchor(generator: str, scope: str = "") -> str:
+    return f"gen-{slug(generator)}" + (f"--{scope}" if scope else "")
+
+
+@dataclass(frozen=True)
+class HeaderCell:
+    text: str
+    colspan: int = 1
+    rowspan: int = 1
+    #: the body column this header sorts (None for a group title)
+    col: int | None = None
+    title: str = ""
+
+
+def header_rows(lead: Sequence[str]) -> tuple[list[HeaderCell], list[HeaderCell]]:
+    """Two header rows: lead columns, n, grouped metric columns (PhyPR, FauDR, ST), failed."""
+    top = [HeaderCell(h, rowspan=2, col=i) for i, h in enumerate(lead)]
+    top.append(HeaderCell("n", rowspan=2, col=len(lead), title="tasks × seeds"))
+    sub: list[HeaderCell] = []
+    first = len(lead) + 1
+    group_at = {start: (title, size) for title, start, size in GROUPS}
+    for i, (header, _, pct) in enumerate(COLUMNS):
+        unit = " (%)" if pct else ""
+        if i in group_at:
+            title, size = group_at[i]
+            top.append(HeaderCell(title + (" (%)" if pct else ""), colspan=size))
+        if i in SUBHEADERS:
+            sub.append(HeaderCell(SUBHEADERS[i], col=first + i, title=header + unit))
+        else:
+            top.append(HeaderCell(header, rowspan=2, col=first + i, title=header + unit))
+    top.append(HeaderCell("Failed", rowspan=2, col=first + len(COLUMNS),
+                          title="environments the generator could not build / attempted"))
+    return top, sub
+
+
+@dataclass(frozen=True)
+class TableRow:
+    lead: list[str]
+    cells: list[Cell]
+    anchor: str
+    href: str
+    filter: str
+
+
+@dataclass(frozen=True)
+class EnvLink:
+    env_id: str
+    href: str
+    summary: str
+    valid: bool
+
+
+@dataclass(frozen=True)
+class IndexRow:
+    """One (generator, task[, seed]) of the index: counts, per-task figures, link to its page."""
+
+    generator: str
+    task: str
+    seed: str
+    anchor: str
+    href: str
+    measured: bool
+    n_envs: int
+    n_valid: int
+    n_physics: int
+    failed: str
+    logcov: str
+    detected: dict[str, bool | None]
+    budget_hit: bool
+    envs: list[EnvLink]
+
+
+@dataclass
+class Collected:
+    """What the main page needs of the detail pages once they are written."""
+
+    rows: list[IndexRow]
+    samples: list[dict[str, Any]]
+    messages: dict[tuple[str, str, str], str]
+    hrefs: dict[tuple[str, str, str], str]
+    written: set[Path]
+
+
+def _index_row(row: TaskRow, not_measured: set[str]) -> IndexRow:
+    m = row.metrics
+    measured = row.task not in not_measured and m.get("n_envs") is not None if m else False
+    attempted, n_failed = m.get("n_attempted"), m.get("n_failed")
+    logcov = m.get("logcov")
+    return IndexRow(
+        generator=row.generator, task=row.task, seed=row.seed, anchor=row.anchor, href=row.href,
+        measured=measured or (not m and bool(row.envs)), n_envs=len(row.envs), n_valid=row.n_valid,
+        n_physics=row.n_physics,
+        failed=f"{int(n_failed)}/{int(attempted)}" if attempted is not None and n_failed is not None
+        else (str(int(n_failed)) if n_failed else "0"),
+        logcov="–" if logcov is None else f"{100 * float(logcov):.0f}",
+        detected=row.detected, budget_hit=bool(m.get("budget_hit")),
+        envs=[EnvLink(e.env_id, f"{row.href}#{e.anchor}", e.summary, e.valid) for e in row.envs])
+
+
+def write_details(out: Path, srcs: Sequence[Source], generators: Sequence[str],
+                  env: Environment) -> Collected:
+    """Write every (generator, task) page of `srcs` under `out/details/`; return the index."""
+    from logicenveval.reporting.details import task_rows
+
+    template = env.get_template("task.html.j2")
+    got = Collected([], [], {}, {}, set())
+    for source in srcs:
+        results = source.results
+        for row in task_rows(source, [g for g in generators if g in results.get("results", {})]):
+            values = results["results"].get(row.generator, {})
+            not_measured = set(values.get("not_measured_tasks") or ())
+            up = "../" * row.href.count("/")
+            html = template.render(row=row, back=f"{up}leaderboard.html#{row.anchor}",
+                                   run_id=results.get("run_id", ""), model=results.get("model", ""),
+                                   measured=row.task not in not_measured and is_measured(values))
+            path = out / row.href
+            atomic_write_text(path, html, durable=False)
+            got.written.add(path)
+            got.rows.append(_index_row(row, not_measured))
+            for e in row.envs:
+                key = (row.generator, row.task, e.env_id)
+                got.hrefs.setdefault(key, f"{row.href}#{e.anchor}")
+                correct = next((v for v in e.verdicts if v.kind == "correct"), None)
+                if correct is not None and correct.message:
+                    got.messages.setdefault(key, f"correct BT {correct.status}: {correct.message}")
+            got.samples.extend(row.samples)
+    return got
+
+
+def remove_stale(folder: Path, keep: set[Path]) -> None:
+    """Drop pages a previous report wrote that this one did not (a generator or task left)."""
+    if not folder.is_dir():
+        return
+    for path in sorted(folder.rglob("*.html")):
+        if path not in keep:
+            path.unlink(missing_ok=True)
+    for dirpath, _dirs, _files in sorted(os.walk(folder), key=lambda w: -len(w[0])):
+        if Path(dirpath) != folder and not any(Path(dirpath).iterdir()):
+            Path(dirpath).rmdir()
+
+
+def table_rows(results: dict[str, Any], lead: Sequence[str] = (), scope: str = "") -> list[TableRow]:
+    out = []
+    for gen, values in results["results"].items():
+        label = row_label(gen, values, results)
+        out.append(TableRow([*lead, label], row_cells(results, gen), gen_anchor(gen, scope),
+                            f"#{gen_anchor(gen, scope)}", " ".join([*lead, label])))
+    return out
+
+
+def group_rows(rows: Sequence[IndexRow], scope: str = "") -> list[dict[str, Any]]:
+    groups: dict[str, list[IndexRow]] = {}
+    for r in rows:
+        groups.setdefault(r.generator, []).append(r)
+    return [{"generator": g, "anchor": gen_anchor(g, scope), "rows": rs} for g, rs in groups.items()]
+
+
+def render_main(results: dict[str, Any], collected: Collected, env: Environment) -> str:
+    why: list[GeneratorReasons] = reasons(collected.samples, results.get("failures", {}),
+                                          list(results["results"]), collected.messages)
+    top, sub = header_rows(["Method"])
+    return env.get_template("leaderboard.html.j2").render(
+        results=results, top=top, sub=sub, rows=table_rows(results), legend=LEGEND,
+        note=interval_note(results), why=why, hrefs=collected.hrefs,
+        groups=group_rows(collected.rows), seeded=bool(results.get("runs")), llm=llm_validity(results))
+
+
+def _rebase(got: Collected, sub: str, seed: str) -> Collected:
+    """A seed run's index as seen from its multi-seed parent folder (`sub/` in front of links)."""
+    def env(e: EnvLink) -> EnvLink:
+        return replace(e, href=f"{sub}/{e.href}")
+
+    rows = [replace(r, href=f"{sub}/{r.href}", anchor=f"{r.anchor}--seed{slug(seed)}", seed=seed,
+                    envs=[env(e) for e in r.envs]) for r in got.rows]
+    return Collected(rows, got.samples, got.messages, {k: f"{sub}/{v}" for k, v in got.hrefs.items()},
+                     got.written)
 
 
 def write_leaderboards(run_dir: Path, results: dict[str, Any],
-                       records: Sequence[UnitRecord] | None = None) -> None:
-    """Both leaderboards; `records` are the run's units when the caller holds them already
-    (otherwise they are read from `units/`)."""
+                       records: Sequence[UnitRecord] | None = None) -> Collected:
+    """`leaderboard.md`, `leaderboard.html` and `details/` of a run folder; `records` are the
+    run's units when the caller holds them already (otherwise they are read from `units/`).
+
+    A multi-seed run's pages are its seed runs' own: each seed folder gets its leaderboards, and
+    the parent's index links to their pages."""
+    env = jinja()
+    if results.get("runs"):
+        collected = Collected([], [], {}, {}, set())
+        for source in sources(run_dir, results):
+            sub = source.run_dir.name
+            got = _rebase(write_leaderboards(source.run_dir, source.results), sub, source.seed)
+            collected.rows += got.rows
+            collected.samples += got.samples
+            for k, v in got.messages.items():
+                collected.messages.setdefault(k, v)
+            for k, v in got.hrefs.items():
+                collected.hrefs.setdefault(k, v)
+    else:
+        collected = write_details(run_dir, sources(run_dir, results, records=records, restore=True),
+                                  list(results["results"]), env)
+        remove_stale(run_dir / "details", collected.written)
     atomic_write_text(run_dir / "leaderboard.md", markdown(results), durable=False)
-    atomic_write_text(run_dir / "leaderboard.html", render_html(run_dir, results, records),
-                      durable=False)
+    atomic_write_text(run_dir / "leaderboard.html", render_main(results, collected, env), durable=False)
+    return collected
+
+
+def correct_messages(records: Sequence[UnitRecord]) -> Mapping[tuple[str, str, str], str]:
+    """(generator, task, env) -> the correct BT's verdict message, for the reasons' examples."""
+    out: dict[tuple[str, str, str], str] = {}
+    for r in records:
+        for d in r.details:
+            trace = d.traces.get("correct")
+            if trace is not None and trace.message:
+                out[(r.generator, r.task_id, d.env_id)] = f"correct BT {trace.status}: {trace.message}"
+    return out

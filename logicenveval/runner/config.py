@@ -20,6 +20,10 @@ from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
 #: a run id is one folder name inside --output: no separators, no leading dot
 RUN_ID_PATTERN = r"^[A-Za-z0-9_][A-Za-z0-9._-]{0,127}$"
 DEFAULT_GENERATORS: tuple[str, ...] = ("logicenvgen", "logicenvgen-exact", "cot", "ifg", "holodeck")
+#: seconds one generator may take for one task (`--unit-timeout`); 0 or None: no bound
+DEFAULT_UNIT_TIMEOUT = 1800.0
+#: a generator's factory arguments: JSON scalars
+ArgValue = str | int | float | bool
 
 
 class RunConfig(BaseModel):
@@ -42,6 +46,10 @@ class RunConfig(BaseModel):
     max_infra_failures: int = Field(default=5, ge=0)
     #: what generators are given: the task's roles (default) or, as in the paper, the description
     brief: Literal["roles", "description"] = "roles"
+    #: wall-time bound of one generator on one task (runner.unit); None: unbounded
+    unit_timeout: float | None = Field(default=DEFAULT_UNIT_TIMEOUT, gt=0, allow_inf_nan=False)
+    #: `--generators` item (as written, or its row name) -> keyword arguments of its factory
+    generator_args: dict[str, dict[str, ArgValue]] = Field(default_factory=dict)
 
     @model_validator(mode="after")
     def _brief_fits_model(self) -> RunConfig:
@@ -73,13 +81,19 @@ class RunConfig(BaseModel):
             "seed": self.seed,
             "layout_solver": self.layout_solver,
             "brief": self.brief,
+            # recorded only when set, so the identity (and folder) of earlier runs is unchanged
+            **({"generator_args": {g: dict(sorted(a.items()))
+                                   for g, a in sorted(self.generator_args.items())}}
+               if self.generator_args else {}),
+            **({"unit_timeout": self.unit_timeout}
+               if self.unit_timeout != DEFAULT_UNIT_TIMEOUT else {}),
         }
 
     def resolved_run_id(self) -> str:
         if self.run_id:
             return self.run_id
         blob = json.dumps(self.identity(), sort_keys=True).encode()
-        slug = re.sub(r"[^A-Za-z0-9]+", "-", self.model).strip("-").lower() or "model"
+        slug = re.sub(r"[^A-Za-z0-9]+", "-", self.model).strip("-").lower()[:40] or "model"
         return f"{slug}-seed{self.seed}-{hashlib.sha256(blob).hexdigest()[:8]}"
 
     def run_dir(self) -> Path:

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from logicenveval.domain.catalog import Catalog
-from logicenveval.domain.roles import RoleBinding, bind_roles
+from logicenveval.domain.roles import prepare_env
 from logicenveval.metrics.evaluate import coverage
 from logicenveval.metrics.records import EnvSample, PhysicsSummary, VerdictTrace
 from logicenveval.model.envspec import EnvSpec
@@ -23,15 +23,6 @@ from logicenveval.sim.world import holds_initial
 
 if TYPE_CHECKING:
     from logicenveval.faults.score import MutationScorer
-
-
-def with_bound_roles(env: EnvSpec, task: Task, catalog: Catalog) -> tuple[EnvSpec, RoleBinding]:
-    """`env` as it is judged: the task's roles it does not map bound by `domain.roles`."""
-    own = {name: oid for name, oid in env.roles.items() if name in task.roles}
-    binding = bind_roles(env.model_copy(update={"roles": own}), task.roles, catalog)
-    if binding.roles != own:
-        env = env.model_copy(update={"roles": {**env.roles, **binding.roles}})
-    return env, binding
 
 
 @dataclass(frozen=True)
@@ -55,17 +46,17 @@ def evaluate_env(
 ) -> Evaluation:
     """Measure one environment; never raises for a bad environment (that is a finding).
 
-    Roles the environment does not map are bound first (`domain.roles`), so environments made
-    by other tools are judged by the same trees and policies; an ambiguous role makes it
-    ill-formed. Names the environment maps that are not roles of the task (a generator that was
-    not told the roles names objects its own way: `--brief description`) neither bind nor block
-    objects; they stay in the map for the relations that use them.
+    Categories are mapped to catalog keys and the roles the environment does not map are bound
+    first (`domain.roles.prepare_env`), so environments made by other tools are judged by the
+    same trees, physics and policies; an ambiguous role makes it ill-formed. The sample records
+    the written categories that were mapped and those that name nothing (kept as obstacles).
 
     Each policy runs twice: untraced and timed (`sim_ms`, the paper's ST; recording a trace adds
     ~40 % to these sub-millisecond episodes), then traced for the report's drill-down, so that
     `report` never simulates.
     """
-    env, binding = with_bound_roles(env, task, catalog)
+    prepared = prepare_env(env, task.roles, catalog)
+    env, binding = prepared.env, prepared.binding
     report = check_env(env, catalog)
     failures = [
         f.model_dump(mode="json")
@@ -107,6 +98,8 @@ def evaluate_env(
         verdicts=verdicts,
         sim_ms=sim_ms,
         sim_ticks=sim_ticks,
+        categories=prepared.categories.mapped,
+        unknown_categories=prepared.categories.unknown,
     )
     return Evaluation(sample=sample, env=env, physics=report, traces=traces)
 

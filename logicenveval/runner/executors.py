@@ -16,8 +16,10 @@ import signal
 import sys
 import threading
 import time
+from collections import deque
 from collections.abc import Callable, Iterator, Sequence
 from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
+from concurrent.futures.process import BrokenProcessPool
 from typing import Any, Protocol, TypeVar
 
 from logicenveval.errors import ConfigError
@@ -26,27 +28,43 @@ T = TypeVar("T")
 R = TypeVar("R")
 
 
+#: how long (s) an item may run in a worker process before the pool is stopped; None = no bound
+Budget = Callable[[Any], "float | None"]
+#: the result standing for an item whose worker process died (killed, out of memory, timed out)
+OnCrash = Callable[[Any, str], Any]
+
+
 class Executor(Protocol):
     name: str
 
-    def map_unordered(self, fn: Callable[[T], R], items: Sequence[T]) -> Iterator[tuple[T, R]]: ...
+    def map_unordered(self, fn: Callable[[T], R], items: Sequence[T], *,
+                      budget: Budget | None = None, on_crash: OnCrash | None = None,
+                      split: Callable[[T], Sequence[T]] | None = None) -> Iterator[tuple[T, R]]: ...
 
 
 class InProcessExecutor:
-    """Runs units one after another in this process (debugging, profiling)."""
+    """Runs units one after another in this process (debugging, profiling).
+
+    Nothing can stop a unit from outside here: a unit that never returns holds the run (the
+    runner's in-unit time bound, `runner.unit`, stops Python code that returns to the
+    interpreter; the process executor also kills a worker)."""
 
     name = "inprocess"
 
     def __init__(self, workers: int = 1) -> None:
         self.workers = 1
 
-    def map_unordered(self, fn: Callable[[T], R], items: Sequence[T]) -> Iterator[tuple[T, R]]:
+    def map_unordered(self, fn: Callable[[T], R], items: Sequence[T], *,
+                      budget: Budget | None = None, on_crash: OnCrash | None = None,
+                      split: Callable[[T], Sequence[T]] | None = None) -> Iterator[tuple[T, R]]:
         for item in items:
             yield item, fn(item)
 
 
 #: imported once in the fork server, so that every worker starts with them loaded
 PRELOAD: tuple[str, ...] = ("logicenveval.runner.preload",)
+#: exit status of a worker whose unit ignored its time bound (`runner.unit`'s watchdog)
+EXIT_TIMED_OUT = 86
 
 
 def _context() -> multiprocessing.context.BaseContext:
@@ -63,12 +81,71 @@ def _context() -> multiprocessing.context.BaseContext:
     return multiprocessing.get_context("spawn")
 
 
+def _death(codes: Sequence[int | None]) -> str:
+    """Why the worker processes of a broken pool died, from their exit statuses."""
+    # the pool itself SIGTERMs the survivors of a broken pool: the cause is another status
+    dead = sorted({c for c in codes if c not in (None, 0)}, key=lambda c: (c == -signal.SIGTERM, c))
+    if EXIT_TIMED_OUT in dead:
+        return "the unit ignored its time bound (--unit-timeout), so its worker was stopped"
+    for code in dead:
+        if code is not None and code < 0:
+            try:
+                name = signal.Signals(-code).name
+            except ValueError:
+                name = f"signal {-code}"
+            oom = " (as the out-of-memory killer does)" if -code == signal.SIGKILL else ""
+            return f"its worker process was killed by {name}{oom}"
+    if dead:
+        return f"its worker process exited with status {dead[0]}"
+    return "its worker process died"
+
+
+class _Pool:
+    """One ProcessPoolExecutor whose workers can be stopped at once (timeouts, interrupts)."""
+
+    def __init__(self, ctx: multiprocessing.context.BaseContext, workers: int) -> None:
+        self.workers = workers
+        self.pool = ProcessPoolExecutor(max_workers=workers, mp_context=ctx,
+                                        initializer=_worker_init)
+
+    def processes(self) -> list[multiprocessing.process.BaseProcess]:
+        procs: dict[int, multiprocessing.process.BaseProcess] = getattr(self.pool, "_processes", None) or {}
+        return list(procs.values())
+
+    def exit_codes(self) -> list[int | None]:
+        out = []
+        for p in self.processes():
+            p.join(0.5)  # a dead worker's status needs reaping
+            out.append(p.exitcode)
+        return out
+
+    def kill(self) -> None:
+        for p in self.processes():
+            with contextlib.suppress(OSError, ValueError, AttributeError):
+                p.kill()
+
+    def close(self, *, kill: bool) -> None:
+        """Shut down; with `kill`, running units are stopped instead of awaited (an interrupt,
+        a caller that stopped early), so this never waits for a unit that does not return."""
+        if kill:
+            self.kill()
+        self.pool.shutdown(wait=not kill, cancel_futures=True)
+        if kill:
+            for p in self.processes():
+                p.join(5)
+
+
 class ProcessExecutor:
     """A pool of worker processes started once per run from a preloaded fork server.
 
     Units are handed out one at a time as workers free up: a unit takes 30 ms to a few seconds,
     far more than the ~1 ms a hand-off costs, so larger chunks would only lengthen the tail.
     The caller lists the expensive units first (longest processing time first).
+
+    A worker that dies (the out-of-memory killer, a crash in native code, a unit that outlived
+    its `budget` and was stopped) breaks the pool; the items it was running are then re-run
+    one per fresh process (`split` into smaller items first), so the item that kills its worker
+    again gets `on_crash`'s result with the reason, and every other item completes.
     """
 
     name = "process"
@@ -86,23 +163,134 @@ class ProcessExecutor:
 
                 forkserver.ensure_running()
 
-    def map_unordered(self, fn: Callable[[T], R], items: Sequence[T]) -> Iterator[tuple[T, R]]:
+    def map_unordered(self, fn: Callable[[T], R], items: Sequence[T], *,
+                      budget: Budget | None = None, on_crash: OnCrash | None = None,
+                      split: Callable[[T], Sequence[T]] | None = None) -> Iterator[tuple[T, R]]:
         if self.workers == 1 or len(items) <= 1:
             yield from InProcessExecutor().map_unordered(fn, items)
             return
         self.warm_up()
         ctx = self._ctx or _context()
-        pool = ProcessPoolExecutor(max_workers=min(self.workers, len(items)), mp_context=ctx,
-                                   initializer=_die_with_parent)
+        queue: deque[T] = deque(items)
+        while queue:
+            suspects: list[T] = []
+            yield from self._round(ctx, fn, queue, budget, on_crash, suspects)
+            isolated = [part for s in suspects for part in (split(s) if split else (s,))]
+            yield from self._isolated(ctx, fn, isolated, budget, on_crash)
+
+    def _round(self, ctx: multiprocessing.context.BaseContext, fn: Callable[[T], R], queue: deque[T],
+               budget: Budget | None, on_crash: OnCrash | None,
+               suspects: list[T]) -> Iterator[tuple[T, R]]:
+        """Run queued items on one pool until the queue is empty or the pool breaks.
+
+        When a deadline passes, the pool is stopped: the overdue items get `on_crash`, the
+        others go back to the queue. When a worker dies otherwise, the items the pool was
+        running become `suspects` (one of them killed it; `_isolated` finds which)."""
+        pool = _Pool(ctx, min(self.workers, len(queue)))
+        running: dict[Future[R], tuple[T, float | None]] = {}
+        overdue: set[Future[R]] = set()
+        stopped = True
+
+        def fill() -> None:  # one item per worker, so a broken pool tells which items it lost
+            while queue and not overdue and len(running) < pool.workers:
+                item = queue.popleft()
+                limit = budget(item) if budget else None
+                try:
+                    fut = pool.pool.submit(fn, item)
+                except BrokenProcessPool:  # broke since the last result: the next round retries it
+                    queue.appendleft(item)
+                    return
+                running[fut] = (item, None if limit is None else time.monotonic() + limit)
+
         try:
-            pending: dict[Future[R], T] = {pool.submit(fn, item): item for item in items}
-            while pending:
-                done, _ = wait(pending, return_when=FIRST_COMPLETED)
+            while queue or running:
+                fill()
+                if not running:  # the pool broke with none of our items on it
+                    return
+                deadlines = [d for _, d in running.values() if d is not None]
+                wait_s = max(0.0, min(deadlines) - time.monotonic()) if deadlines else None
+                done, _ = wait(running, timeout=wait_s, return_when=FIRST_COMPLETED)
+                if not done:  # a deadline passed: stop the pool (nothing else stops native code)
+                    now = time.monotonic()
+                    overdue |= {f for f, (_, d) in running.items() if d is not None and d <= now}
+                    pool.kill()
+                    continue
+                lost: list[tuple[Future[R], T]] = []
+                finished: list[tuple[Future[R], T]] = []
                 for fut in done:
-                    item = pending.pop(fut)
+                    item, _ = running.pop(fut)
+                    (lost if isinstance(fut.exception(), BrokenProcessPool) else finished).append((fut, item))
+                if not lost:
+                    fill()  # the next items start before the caller commits these results
+                for fut, item in finished:
                     yield item, fut.result()
-        finally:  # also when the caller stops early: queued units are dropped, not run
-            pool.shutdown(wait=True, cancel_futures=True)
+                if not lost:
+                    continue
+                lost += [(fut, item) for fut, (item, _) in running.items()]  # gone with the pool
+                running.clear()
+                codes = pool.exit_codes()
+                if not overdue and (len(lost) == 1 or codes.count(EXIT_TIMED_OUT) == len(lost)):
+                    # it ran alone, or every worker that ran one ended itself at its time bound
+                    for _, item in lost:
+                        yield item, _crashed(on_crash, item, _death(codes))
+                    return
+                for fut, item in lost:
+                    if fut in overdue:
+                        yield item, _crashed(on_crash, item, "the unit did not finish within its "
+                                             "time budget, so its worker was stopped")
+                    elif overdue:
+                        queue.appendleft(item)  # the culprit is known: re-run the others
+                    else:
+                        suspects.append(item)
+                return
+            stopped = False
+        finally:  # also when the caller stops early or the user interrupts: stop, never wait
+            pool.close(kill=stopped)
+
+    def _isolated(self, ctx: multiprocessing.context.BaseContext, fn: Callable[[T], R],
+                  items: list[T], budget: Budget | None,
+                  on_crash: OnCrash | None) -> Iterator[tuple[T, R]]:
+        """Each item in a process of its own (several at a time), to find the one that kills it."""
+        queue = deque(items)
+        running: dict[Future[R], tuple[T, _Pool, float | None]] = {}
+        try:
+            while queue or running:
+                while queue and len(running) < self.workers:
+                    item = queue.popleft()
+                    pool = _Pool(ctx, 1)
+                    limit = budget(item) if budget else None
+                    running[pool.pool.submit(fn, item)] = (item, pool, None if limit is None else
+                                                           time.monotonic() + limit)
+                deadlines = [d for _, _, d in running.values() if d is not None]
+                wait_s = max(0.0, min(deadlines) - time.monotonic()) if deadlines else None
+                done, _ = wait(running, timeout=wait_s, return_when=FIRST_COMPLETED)
+                if not done:
+                    now = time.monotonic()
+                    for fut, (item, pool, d) in list(running.items()):
+                        if d is not None and d <= now:
+                            del running[fut]
+                            pool.close(kill=True)
+                            yield item, _crashed(on_crash, item, "the unit did not finish within "
+                                                 "its time budget, so its worker was stopped")
+                    continue
+                for fut in done:
+                    item, pool, _ = running.pop(fut)
+                    if isinstance(fut.exception(), BrokenProcessPool):
+                        why = _death(pool.exit_codes())
+                        pool.close(kill=True)
+                        yield item, _crashed(on_crash, item, why)
+                    else:
+                        pool.close(kill=False)
+                        yield item, fut.result()
+        finally:
+            for _, pool, _ in running.values():
+                pool.close(kill=True)
+
+
+def _crashed(on_crash: OnCrash | None, item: Any, why: str) -> Any:
+    if on_crash is None:
+        raise BrokenProcessPool(why)
+    return on_crash(item, why)
 
 
 def kill_me_with_parent() -> None:
@@ -116,8 +304,21 @@ def kill_me_with_parent() -> None:
             libc.prctl(1, signal.SIGKILL)
 
 
+def _worker_init() -> None:
+    """Worker initializer: die with the run; leave Ctrl-C to the run, which stops the workers
+    (a terminal's SIGINT reaches the whole process group)."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    global IN_WORKER
+    IN_WORKER = True
+    _die_with_parent()
+
+
+#: True in a pool worker (`runner.unit` may then end the process when a unit ignores its bound)
+IN_WORKER = False
+
+
 def _die_with_parent() -> None:
-    """Worker initializer: a worker never outlives the run (even a SIGKILLed one).
+    """A worker never outlives the run (even a SIGKILLed one).
 
     The worker's parent is the run itself or its fork server, which exits with the run. Linux
     delivers SIGKILL to the worker when that parent dies (prctl PDEATHSIG); elsewhere a daemon
@@ -150,7 +351,10 @@ class RayExecutor:
         self.workers = workers
         self.address = address
 
-    def map_unordered(self, fn: Callable[[T], R], items: Sequence[T]) -> Iterator[tuple[T, R]]:
+    def map_unordered(self, fn: Callable[[T], R], items: Sequence[T], *,
+                      budget: Budget | None = None, on_crash: OnCrash | None = None,
+                      split: Callable[[T], Sequence[T]] | None = None) -> Iterator[tuple[T, R]]:
+        """A task whose worker dies gets `on_crash`'s result; one past its budget is cancelled."""
         ray = self._ray
         started_here = not ray.is_initialized()
         if started_here:
@@ -158,11 +362,30 @@ class RayExecutor:
                      include_dashboard=False, log_to_driver=False)
         try:
             remote = ray.remote(fn)
-            pending = {remote.remote(item): item for item in items}
+            pending: dict[Any, tuple[T, float | None]] = {}
+            for item in items:
+                limit = budget(item) if budget else None
+                pending[remote.remote(item)] = (item, None if limit is None else time.monotonic() + limit)
             while pending:
-                done, _ = ray.wait(list(pending), num_returns=1)
+                deadlines = [d for _, d in pending.values() if d is not None]
+                wait_s = max(0.0, min(deadlines) - time.monotonic()) if deadlines else None
+                done, _ = ray.wait(list(pending), num_returns=1, timeout=wait_s)
+                if not done:
+                    now = time.monotonic()
+                    for ref, (item, d) in list(pending.items()):
+                        if d is not None and d <= now:
+                            ray.cancel(ref, force=True)
+                            del pending[ref]
+                            yield item, _crashed(on_crash, item, "the unit did not finish within "
+                                                 "its time budget, so its task was cancelled")
+                    continue
                 for ref in done:
-                    yield pending.pop(ref), ray.get(ref)
+                    item, _ = pending.pop(ref)
+                    try:
+                        result = ray.get(ref)
+                    except Exception as exc:  # the worker died (Ray wraps the cause)
+                        result = _crashed(on_crash, item, f"its Ray worker failed: {type(exc).__name__}")
+                    yield item, result
         finally:
             if started_here:
                 ray.shutdown()

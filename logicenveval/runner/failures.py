@@ -18,16 +18,18 @@ MAX_REASONS = 5
 def failed(record: UnitRecord) -> bool:
     """A unit is failed when it crashed as a whole, or produced no environment and said why.
 
-    A generator that returns nothing without a failure has been measured (zero coverage)."""
+    A unit that returns nothing without a failure has been measured (zero coverage)."""
     return record.error is not None or (not record.samples and bool(record.failures))
 
 
 def failed_generators(records: Sequence[UnitRecord]) -> list[str]:
-    """Generators (in first-seen order) all of whose units failed."""
+    """Generators (in first-seen order) all of whose units failed, or that produced no judged
+    environment in any unit: nothing of theirs was measured (docs/security.md, exit code 1)."""
     by_gen: dict[str, list[UnitRecord]] = {}
     for r in records:
         by_gen.setdefault(r.generator, []).append(r)
-    return [g for g, units in by_gen.items() if units and all(failed(u) for u in units)]
+    return [g for g, units in by_gen.items()
+            if units and (all(failed(u) for u in units) or not any(u.samples for u in units))]
 
 
 def _reason(record: UnitRecord) -> str:
@@ -45,8 +47,10 @@ def summary(records: Sequence[UnitRecord], generators: Sequence[str]) -> str:
     for g in generators:
         units = [r for r in records if r.generator == g]
         bad = [u for u in units if failed(u)]
-        lines.append(f"{g}: {len(bad)} of {len(units)} unit(s) failed")
-        reasons = Counter(_reason(u) for u in bad)
+        empty = [u for u in units if not failed(u) and not u.samples]
+        lines.append(f"{g}: {len(bad)} of {len(units)} unit(s) failed"
+                     + (f", {len(empty)} returned no environment" if empty else ""))
+        reasons = Counter(_reason(u) for u in bad + empty)
         for reason, n in reasons.most_common(MAX_REASONS):
             lines.append(f"  {n} x {reason}")
         if len(reasons) > MAX_REASONS:

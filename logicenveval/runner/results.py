@@ -9,30 +9,23 @@ from __future__ import annotations
 import hashlib
 import importlib.metadata
 import json
+import math
 import platform
 import subprocess
-import zlib
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any, Protocol
 
-import numpy as np
-
 from logicenveval.atomic import atomic_write_text
 from logicenveval.llm.base import KIND_PREFIX
-from logicenveval.metrics.compute import aggregate, task_metrics
+from logicenveval.metrics.compute import aggregate, null_metrics, task_metrics
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.metrics.uncertainty import ci95
-from logicenveval.model.task import Task
+from logicenveval.model.task import FAULTY_KINDS, Task
 
 RESULTS_SCHEMA = "logicenveval.results/1"
 _VERSIONED = ("logicenveval", "numpy", "pydantic", "z3-solver", "py-trees", "trimesh",
               "python-fcl", "shapely", "ortools", "pandas")
-
-
-def bootstrap_rng(seed: int, generator: str) -> np.random.Generator:
-    """The bootstrap's own stream: fixed by the run seed and the row, whatever else ran."""
-    return np.random.default_rng([seed, 95, zlib.crc32(generator.encode())])
 
 
 def task_hashes(tasks: Sequence[Task]) -> dict[str, str]:
@@ -94,15 +87,19 @@ def build_results(
     validity: dict[str, dict[str, dict[str, float]]] = {}
     for gen in (config.generators if generators is None else generators):
         units = [r for r in records if r.generator == gen]
-        metrics = [
-            task_metrics(by_task[u.task_id], u.samples, n_failed=1 if u.error and not u.samples else 0,
-                         mutants=u.mutants or None)
-            for u in units
-        ]
-        results[gen] = aggregate(metrics).model_dump(mode="json")
-        per_task[gen] = {u.task_id: m.model_dump(mode="json") for u, m in zip(units, metrics, strict=True)}
-        results[gen]["ci95"] = ci95({(t, config.seed): m for t, m in per_task[gen].items()},
-                                    bootstrap_rng(config.seed, gen))
+        measured = [u for u in units if u.measured]
+        metrics = [task_metrics(by_task[u.task_id], u.samples, n_failed=u.n_failed,
+                                mutants=u.mutants or None) for u in measured]
+        per_task[gen] = {u.task_id: {**m.model_dump(mode="json"), "budget_hit": u.budget_hit is not None}
+                         for u, m in zip(measured, metrics, strict=True)}
+        if metrics:
+            results[gen] = aggregate(metrics).model_dump(mode="json")
+            results[gen]["ci95"] = ci95({(t, config.seed): m for t, m in per_task[gen].items()})
+        else:  # not measured: null figures, never zeros
+            results[gen] = {**null_metrics(), "ci95": {}}
+        results[gen].update(row_status(
+            measured=bool(metrics), not_measured=[u.task_id for u in units if not u.measured],
+            budget_hit=[u.task_id for u in measured if u.budget_hit is not None]))
         failures[gen] = [
             {"task": u.task_id, "stage": "unit", "message": u.error, "kind": u.error_kind}
             for u in units if u.error
@@ -156,6 +153,18 @@ def reply_validity(units: Sequence[UnitRecord]) -> dict[str, dict[str, float]]:
     return dict(sorted(counts.items()))
 
 
+#: keys of `results.<generator>` that are not figures (checked apart from the numeric leaves)
+STATUS_KEYS = ("measured", "not_measured_tasks", "budget_hit_tasks")
+
+
+def row_status(*, measured: bool, not_measured: Sequence[str], budget_hit: Sequence[str]) -> dict[str, Any]:
+    """What a row is besides its figures: measured at all (False: every unit failed for
+    infrastructure reasons, so every figure is null), the tasks left out as not measured, and
+    the tasks where a search stopped at its budget (the leaderboard labels such rows)."""
+    return {"measured": measured, "not_measured_tasks": sorted(not_measured),
+            "budget_hit_tasks": sorted(budget_hit)}
+
+
 def write_outputs(run_dir: Path, results: dict[str, Any], records: Sequence[UnitRecord]) -> None:
     lines = [json.dumps(s.model_dump(mode="json"), sort_keys=True) for r in records for s in r.samples]
     atomic_write_text(run_dir / "samples.jsonl", "\n".join(lines) + ("\n" if lines else ""))
@@ -178,30 +187,137 @@ def load_results(run_dir: Path) -> dict[str, Any]:
     return data
 
 
+#: per-task figures that reports and comparisons compute with (`metrics.uncertainty`)
+_CELL_NUMBERS = ("n_envs", "n_failed", "n_attempted", "n_floor_plan_ok", "n_entity_ok",
+                 "n_relation_ok", "n_valid", "n_extended_ok", "logcov", "ld", "ji", "redundancy",
+                 "st_ms", "st_ticks", "faudr_mut")
+#: keys of `results.<generator>` that hold lists of task ids, and those that hold a flag
+_ROW_TASK_LISTS = ("not_measured_tasks", "budget_hit_tasks")
+_ROW_FLAGS = ("measured",)
+
+
+class _Damaged(Exception):
+    def __init__(self, field: str, what: str) -> None:
+        super().__init__(what)
+        self.field, self.what = field, what
+
+
 def _check_results(data: dict[str, Any], file: str) -> None:
+    """Every field `report` and `compare` read has the type they read it as (else the field)."""
     from logicenveval.errors import RunStoreError
 
-    def bad(field: str, what: str) -> RunStoreError:
-        return RunStoreError(f"{what}", file=file, field=field,
-                             hint="the file was edited or damaged; re-run the command to rewrite it")
+    try:
+        _check_top(data)
+    except _Damaged as exc:
+        raise RunStoreError(exc.what, file=file, field=exc.field,
+                            hint="the file was edited or damaged; re-run the command to rewrite it") from None
 
-    if not isinstance(data["results"], dict):
-        raise bad("results", "must be an object of generators")
+
+def _need(ok: bool, field: str, what: str) -> None:
+    if not ok:
+        raise _Damaged(field, what)
+
+
+def _is_number(v: object) -> bool:
+    return isinstance(v, int | float) and not isinstance(v, bool) and math.isfinite(v)
+
+
+def _check_leaves(where: str, value: object) -> None:
+    """No NaN or infinity anywhere (JSON has none; a file holding them was not written by us)."""
+    stack: list[tuple[str, object]] = [(where, value)]
+    while stack:
+        at, v = stack.pop()
+        if isinstance(v, dict):
+            stack += [(f"{at}.{k}", x) for k, x in v.items()]
+        elif isinstance(v, list):
+            stack += [(f"{at}.{i}", x) for i, x in enumerate(v)]
+        else:
+            _need(not isinstance(v, float) or math.isfinite(v), at, f"{v!r} is not a finite number")
+
+
+def _check_top(data: dict[str, Any]) -> None:
+    _need(isinstance(data["results"], dict), "results", "must be an object of generators")
     tasks = data.get("tasks", [])
-    if not isinstance(tasks, list) or not all(isinstance(t, str) for t in tasks):
-        raise bad("tasks", "must be a list of task ids")
+    _need(isinstance(tasks, list) and all(isinstance(t, str) for t in tasks), "tasks",
+          "must be a list of task ids")
+    for key in ("run_id", "model"):
+        _need(isinstance(data.get(key, ""), str), key, "must be a string")
+    seeds = data.get("seeds")
+    _need(seeds is None or (isinstance(seeds, list) and all(_is_number(s) for s in seeds)),
+          "seeds", "must be a list of integers")
+    _need(data.get("seed") is None or _is_number(data["seed"]), "seed", "must be an integer")
+    bench = data.get("benchmark", {})
+    _need(isinstance(bench, dict), "benchmark", "must be an object")
+    hashes = bench.get("task_sha256", {})
+    _need(isinstance(hashes, dict) and all(isinstance(v, str) for v in hashes.values()),
+          "benchmark.task_sha256", "must map task ids to digests")
     for gen, values in data["results"].items():
-        if not isinstance(values, dict):
-            raise bad(f"results.{gen}", "must be an object of metrics")
-        stack: list[tuple[str, Any]] = [(f"results.{gen}", values)]
-        while stack:  # every leaf of the (nested) metrics is a number or null
-            where, v = stack.pop()
-            if isinstance(v, dict):
-                stack += [(f"{where}.{k}", x) for k, x in v.items()]
-            elif isinstance(v, list):  # intervals: [lo, hi]
-                stack += [(f"{where}.{i}", x) for i, x in enumerate(v)]
-            elif v is not None and (isinstance(v, bool) or not isinstance(v, int | float)):
-                raise bad(where, f"metric value {str(v)[:40]!r} is not a number")
-    for section in ("per_task", "failures"):
-        if not isinstance(data.get(section, {}), dict):
-            raise bad(section, "must be an object of generators")
+        _check_row(f"results.{gen}", values)
+    for section, depth in (("per_task", 2), ("per_task_seed", 3)):
+        _check_cells(section, data.get(section, {}), depth)
+    failures = data.get("failures", {})
+    _need(isinstance(failures, dict), "failures", "must be an object of generators")
+    for gen, items in failures.items():
+        _need(isinstance(items, list) and all(isinstance(f, dict) for f in items),
+              f"failures.{gen}", "must be a list of failures")
+    _need(isinstance(data.get("runs", {}), dict), "runs", "must map seeds to folders")
+
+
+def _check_row(where: str, values: object) -> None:
+    _need(isinstance(values, dict), where, "must be an object of metrics")
+    assert isinstance(values, dict)
+    _check_leaves(where, values)
+    stack: list[tuple[str, str, object]] = [(where, k, v) for k, v in values.items()]
+    while stack:  # every leaf of the (nested) metrics is a number or null
+        parent, key, v = stack.pop()
+        at = f"{parent}.{key}"
+        if parent == where and key in _ROW_FLAGS:
+            _need(isinstance(v, bool), at, "must be true or false")
+        elif parent == where and key in _ROW_TASK_LISTS:
+            _need(isinstance(v, list) and all(isinstance(t, str) for t in v), at, "must be a list of task ids")
+        elif parent == where and key == "ci95":
+            _check_intervals(at, v)
+        elif parent == where and key in ("n_envs", "n_attempted", "n_failed"):
+            _need(v is None or (isinstance(v, int | float) and _is_number(v) and v >= 0), at,
+                  f"{str(v)[:40]!r} is not a count")
+        elif isinstance(v, dict):
+            stack += [(at, k, x) for k, x in v.items()]
+        else:
+            _need(v is None or _is_number(v), at, f"metric value {str(v)[:40]!r} is not a number")
+
+
+def _check_intervals(where: str, tree: object) -> None:
+    _need(isinstance(tree, dict), where, "must be an object of intervals")
+    assert isinstance(tree, dict)
+    for key, v in tree.items():
+        at = f"{where}.{key}"
+        if isinstance(v, dict):
+            _check_intervals(at, v)
+        else:
+            _need(v is None or (isinstance(v, list) and len(v) == 2 and all(_is_number(x) for x in v)),
+                  at, "must be an interval [lo, hi] or null")
+
+
+def _check_cells(section: str, tree: object, depth: int) -> None:
+    """`per_task.<gen>.<task>` (depth 2) or `per_task_seed.<gen>.<task>.<seed>` (depth 3)."""
+    stack: list[tuple[str, object, int]] = [(section, tree, depth)]
+    while stack:
+        where, node, left = stack.pop()
+        _need(isinstance(node, dict), where, "must be an object" if left else "must be an object of metrics")
+        assert isinstance(node, dict)
+        if left:
+            stack += [(f"{where}.{k}", v, left - 1) for k, v in node.items()]
+            continue
+        _check_leaves(where, node)
+        for key in _CELL_NUMBERS:
+            v = node.get(key)
+            _need(v is None or _is_number(v), f"{where}.{key}", f"{str(v)[:40]!r} is not a number")
+        if node.get("n_envs") is None:
+            continue  # a task that was not measured has no figures
+        faudr = node.get("faudr")
+        _need(isinstance(faudr, dict) and all(isinstance(faudr.get(k), bool | int | float) for k in FAULTY_KINDS),
+              f"{where}.faudr", f"must map each fault kind ({', '.join(FAULTY_KINDS)}) to true/false")
+        for key in ("faudr_mut_by_class", "extended_codes"):
+            sub = node.get(key) or {}
+            _need(isinstance(sub, dict) and all(_is_number(v) for v in sub.values()),
+                  f"{where}.{key}", "must map names to numbers")

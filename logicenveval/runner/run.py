@@ -1,9 +1,12 @@
-"""`python -m logicenveval run`: generators × tasks → committed units → results and leaderboard."""
+"""`python -m logicenveval run`: generators × tasks → committed units → results (no leaderboard)."""
 
 from __future__ import annotations
 
 import contextlib
+import os
+import tempfile
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -16,12 +19,12 @@ from logicenveval.benchmark_validation import situation_count
 from logicenveval.errors import ConfigError, RunFailedError
 from logicenveval.generators.plugins import GeneratorRef, resolve_generator
 from logicenveval.metrics.records import UnitRecord
-from logicenveval.model.task import POLICY_KINDS
+from logicenveval.model.task import POLICY_KINDS, Task
 from logicenveval.runner.config import RunConfig
-from logicenveval.runner.executors import make_executor
+from logicenveval.runner.executors import Executor, make_executor
 from logicenveval.runner.results import build_results, write_outputs
 from logicenveval.runner.store import RunStore
-from logicenveval.runner.unit import UnitSpec, chunk_units, run_units
+from logicenveval.runner.unit import UnitSpec, chunk_units, planned_failures, run_units
 
 
 @dataclass(frozen=True)
@@ -35,7 +38,17 @@ class RunOutcome:
 
 def resolve_generators(config: RunConfig) -> list[GeneratorRef]:
     """Resolve every `--generators` item (built-in, plug-in, MODULE:ATTR) before any unit runs."""
-    refs = [resolve_generator(g) for g in config.generators]
+    refs = []
+    for g in config.generators:  # --generator-args keys: the item as written, or its row name
+        ref = resolve_generator(g, config.generator_args.get(g, {}))
+        if g not in config.generator_args and ref.name in config.generator_args:
+            ref = resolve_generator(g, config.generator_args[ref.name])
+        refs.append(ref)
+    unknown = sorted(set(config.generator_args) - set(config.generators) - {r.name for r in refs})
+    if unknown:
+        raise ConfigError(f"--generator-args names {unknown}, which is not in --generators "
+                          f"{list(config.generators)}", field="--generator-args",
+                          hint="write NAME:key=value,... with NAME as listed in --generators")
     names = [r.name for r in refs]
     if len(set(names)) != len(names):
         raise ConfigError(f"two generators share a name in {names}", field="--generators",
@@ -59,6 +72,10 @@ def _check(config: RunConfig) -> list[str]:
         dup = sorted({t for t in config.tasks if config.tasks.count(t) > 1})
         raise ConfigError(f"task(s) listed twice: {dup}", field="--tasks", hint="list each task once")
     available = task_ids(config.tasks_dir)
+    if not available:
+        raise ConfigError("no task in the tasks folder (no <task_id>/task.json)",
+                          file=str(config.tasks_dir), field="--tasks-dir",
+                          hint="pass the folder that holds the task folders")
     ids = list(config.tasks) or available
     missing = [t for t in ids if t not in available]
     if missing:
@@ -83,9 +100,9 @@ def _prepare_dir(run_dir: Path) -> None:
     """Refuse an output location that cannot hold a run before any work is done."""
     try:
         run_dir.mkdir(parents=True, exist_ok=True)
-        probe = run_dir / ".write-probe.tmp"
-        probe.write_text("", encoding="utf-8")
-        probe.unlink()
+        fd, probe = tempfile.mkstemp(prefix=".write-probe.", suffix=".tmp", dir=run_dir)
+        os.close(fd)
+        os.unlink(probe)
     except OSError as exc:
         raise ConfigError(f"cannot write the run folder: {exc.strerror or exc}", file=str(run_dir),
                           field="--output",
@@ -119,13 +136,41 @@ def _run(config: RunConfig, model_args: str, *, console: Console | None,
     _prepare_dir(run_dir)
     _preflight(config, run_dir, model_args)
     store = RunStore(run_dir)
-    store.bind_config(config.identity())
+    store.claim(config.identity())  # held until the run ends: one run per folder at a time
+    try:
+        return _run_units(config, refs, ids, tasks, run_dir, store, executor, console, show_progress,
+                          model_args)
+    finally:
+        store.unlock()
+
+
+def _budget(config: RunConfig) -> Callable[[tuple[UnitSpec, ...]], float | None]:
+    """The hard bound of a hand-off in a worker: the generator's own bound (`--unit-timeout`,
+    enforced inside the unit) twice over plus ten minutes of judging per unit, so only a unit
+    stuck where nothing else can stop it (native code holding the interpreter) meets it."""
+    timeout = config.unit_timeout
+    return lambda chunk: None if timeout is None else len(chunk) * (2 * timeout + 600.0)
+
+
+def _crashed(chunk: tuple[UnitSpec, ...], why: str) -> list[UnitRecord]:
+    """The record of units whose worker died: recomputed by the next run unless timed out."""
+    timed_out = "time" in why
+    return [UnitRecord(generator=s.generator, task_id=s.task_id, error=why,
+                       error_kind="generation" if timed_out else "infrastructure",
+                       attempts=planned_failures(s.generator, 0) if timed_out else [])
+            for s in chunk]
+
+
+def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], tasks: list[Task],
+               run_dir: Path, store: RunStore, executor: Executor, console: Console | None,
+               show_progress: bool, model_args: str) -> RunOutcome:
     store.remove_stale_temp_files()
     specs = [
         UnitSpec(generator=r.name, generator_target=r.target, generator_path=r.search_path, task_id=t,
                  tasks_dir=config.tasks_dir, model=config.model, model_args=model_args,
                  seed=config.seed, run_dir=str(run_dir), cache=config.cache,
-                 no_cache=config.no_cache, layout_solver=config.layout_solver, brief=config.brief)
+                 no_cache=config.no_cache, layout_solver=config.layout_solver, brief=config.brief,
+                 generator_args=r.args, unit_timeout=config.unit_timeout)
         for r in refs for t in ids
     ]
     records: dict[tuple[str, str], UnitRecord] = {}
@@ -149,8 +194,10 @@ def _run(config: RunConfig, model_args: str, *, console: Console | None,
             for r in refs
         }
         streak = 0
-        # closing(): stopping early shuts the pool down at once and drops the queued units
-        chunks = executor.map_unordered(run_units, chunk_units(pending, config.workers))
+        # closing(): stopping early stops the pool at once and drops the queued units
+        chunks = executor.map_unordered(run_units, chunk_units(pending, config.workers),
+                                        budget=_budget(config), on_crash=_crashed,
+                                        split=lambda chunk: [(s,) for s in chunk])
         with contextlib.closing(chunks) as finished:  # type: ignore[type-var]  # generators have close()
             for _, chunk in finished:
                 for record in chunk:
@@ -168,11 +215,6 @@ def _run(config: RunConfig, model_args: str, *, console: Console | None,
     ordered = [records[(s.generator, s.task_id)] for s in specs]
     results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start,
                             generators=[r.name for r in refs])
-    from logicenveval.reporting.leaderboard import write_leaderboards
-
-    report_start = time.perf_counter()
-    write_leaderboards(run_dir, results, ordered)
-    results["timing"]["report_seconds"] = round(time.perf_counter() - report_start, 3)
     write_outputs(run_dir, results, ordered)
     return RunOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused,
                       records=tuple(ordered))

@@ -3,12 +3,13 @@
 `ENVS_DIR/<task_id>/*.json` are EnvSpecs (DESIGN.md §6). Each task folder is one unit, judged
 exactly as a `run` judges a generator's environments (`runner.evaluation.evaluate_env`: physics,
 role binding, GT coverage, the four policies), committed to the same resumable store and
-summarised into the same results.json, samples.jsonl and leaderboards. So scoring the
+summarised into the same results.json and samples.jsonl (leaderboards: `reporting`). So scoring the
 `envs/<generator>` folder of a run reproduces that run's metrics for the generator.
 
-A file that is not a valid EnvSpec (bad JSON, a missing field, another task's `task_id`) is a
-recorded failure of that file with its reason; the task's other files still count. A task
-folder with no valid EnvSpec counts like a failed generation (zero coverage).
+Every candidate file is one attempted environment (docs/logic.md). A file that is not a valid
+EnvSpec (bad JSON, a missing field, another task's `task_id`) is a recorded failure of that file
+with its reason and one failed attempt (it fails PhyPR and SceVR); the task's other files still
+count. A task folder with no file is one failed attempt (zero coverage).
 """
 
 from __future__ import annotations
@@ -29,15 +30,18 @@ from logicenveval.benchmark import load_task, load_tasks, policy_path, task_ids
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.envfiles import env_to_json, load_env
 from logicenveval.errors import ConfigError, LogicEnvEvalError
-from logicenveval.generators.base import GenerationFailure
+from logicenveval.generators.base import Attempt, GenerationFailure
+from logicenveval.limits import limit
 from logicenveval.metrics.records import EnvDetail, UnitRecord
-from logicenveval.model.task import POLICY_KINDS
+from logicenveval.model.task import POLICY_KINDS, Task
+from logicenveval.paths import check_name, child, shown
+from logicenveval.runner.config import RUN_ID_PATTERN
 from logicenveval.runner.executors import make_executor
 from logicenveval.runner.results import build_results, write_outputs
 from logicenveval.runner.store import RunStore, text_digest
 
 #: artefacts a run writes next to its environments; not EnvSpecs, so not scored
-ARTEFACTS = frozenset({"plan.json"})
+ARTEFACTS = frozenset({"plan.json", "brief.json"})
 
 
 class EvaluateConfig(BaseModel):
@@ -51,14 +55,18 @@ class EvaluateConfig(BaseModel):
     workers: int = Field(default=1, ge=1)
     executor: str = "process"
     output: str = "reports"
-    run_id: str | None = None
+    run_id: str | None = Field(default=None, pattern=RUN_ID_PATTERN)
     model: str = "external"
     seed: int = 0
     brief: str = "external"  # what the making tool was told is unknown to the harness
 
     @property
     def generator_name(self) -> str:
-        return self.name or Path(self.envs_dir).resolve().name
+        """The row name, checked to be a plain folder name (it names units/ and envs/ folders)."""
+        if self.name is not None:
+            return check_name(self.name, what="--name", field="--name")
+        return check_name(Path(self.envs_dir).resolve().name, what="the folder's name (the row "
+                          "name unless --name is given)", file=self.envs_dir)
 
     @property
     def generators(self) -> tuple[str, ...]:
@@ -79,7 +87,7 @@ class EvaluateConfig(BaseModel):
         if self.run_id:
             return self.run_id
         blob = json.dumps(self.identity(), sort_keys=True).encode()
-        slug = re.sub(r"[^A-Za-z0-9]+", "-", self.generator_name).strip("-").lower() or "envs"
+        slug = re.sub(r"[^A-Za-z0-9]+", "-", self.generator_name).strip("-").lower()[:40] or "envs"
         return f"evaluate-{slug}-{hashlib.sha256(blob).hexdigest()[:8]}"
 
     def run_dir(self) -> Path:
@@ -108,13 +116,26 @@ class EvaluateOutcome:
 
 
 def folder_digest(root: Path) -> str:
-    """SHA-256 over every candidate EnvSpec file's relative path and content."""
+    """SHA-256 over every candidate EnvSpec file's relative path and content.
+
+    A file above the size limit is refused when scored without being read, so only its size
+    and modification time enter the digest; the others are hashed in chunks (no file is held in
+    memory whole)."""
     h = hashlib.sha256()
+    cap = limit("max_env_bytes")
     if root.is_dir():
         for folder in sorted(p for p in root.iterdir() if p.is_dir()):
             for path in env_files(folder):
-                h.update(f"{folder.name}/{path.name}\0".encode())
-                h.update(hashlib.sha256(path.read_bytes()).digest())
+                h.update(f"{folder.name}/{path.name}\0".encode("utf-8", "surrogateescape"))
+                try:
+                    st = path.stat()
+                    if st.st_size > cap:
+                        h.update(f"size {st.st_size} mtime {st.st_mtime_ns}".encode())
+                        continue
+                    with path.open("rb") as fh:
+                        h.update(hashlib.file_digest(fh, "sha256").digest())
+                except OSError as exc:  # unreadable: the per-file failure says so when scored
+                    h.update(f"unreadable {exc.errno}".encode())
     return h.hexdigest()[:16]
 
 
@@ -141,37 +162,44 @@ def score_unit(spec: ScoreUnitSpec) -> UnitRecord:
     policies = {k: load_policy(policy_path(task, k, spec.tasks_dir)) for k in POLICY_KINDS}
     folder = Path(spec.folder)
     failures: list[GenerationFailure] = []
+    attempts: list[Attempt] = []
     samples = []
     details: list[EnvDetail] = []
     files: dict[str, str] = {}
-    seen: set[str] = set()
+    seen: set[str] = set()  # casefolded: two files never collide on a case-insensitive disk
     scorer = scorer_for(task, spec.tasks_dir, catalog, cache_dir=Path(spec.run_dir) / "work" / "mutants")
     for path in env_files(folder):
         try:
             env = load_env(path)
             if env.task_id != task.id:
-                raise ConfigError(f"task_id {env.task_id!r} but the file is in the folder of task "
+                raise ConfigError(f"task_id {shown(env.task_id)} but the file is in the folder of task "
                                   f"{task.id!r}", file=str(path), field="task_id",
                                   hint="move the file to its task's folder or fix its task_id")
-            if env.env_id in seen:
+            check_name(env.env_id, what="env_id", file=str(path), field="env_id")
+            if env.env_id.casefold() in seen:
                 raise ConfigError(f"env_id {env.env_id!r} is used by another file of this task",
                                   file=str(path), field="env_id", hint="give every environment its own env_id")
-            seen.add(env.env_id)
+            seen.add(env.env_id.casefold())
             done = evaluate_env(spec.generator, task, env, policies, catalog)
             sample = with_killed_mutants(done, task, scorer, catalog)
         except LogicEnvEvalError as exc:
             failures.append(GenerationFailure(stage="load", message=str(exc), env_id=path.stem))
+            attempts.append(Attempt(id=path.stem, target=path.name, stage="load", reason=str(exc)))
             continue
         except Exception as exc:  # a malformed-but-valid env must not stop the others
             why = traceback.format_exception_only(type(exc), exc)[-1].strip()
             failures.append(GenerationFailure(stage="evaluate", message=f"{path}: internal error: {why}",
                                               env_id=path.stem))
+            attempts.append(Attempt(id=path.stem, target=path.name, stage="evaluate",
+                                    reason=f"internal error: {why}"))
             continue
+        attempts.append(Attempt(id=path.stem, target=path.name, env_id=env.env_id))
         text = env_to_json(env)  # the file as given: a resumed run re-reads it, not the bound copy
-        rel = (Path("envs") / spec.generator / spec.task_id / f"{env.env_id}.json").as_posix()
+        rel = child(Path("envs"), spec.generator, spec.task_id, env.env_id, suffix=".json").as_posix()
         atomic_write_text(Path(spec.run_dir) / rel, text, durable=False)
         files[rel] = text_digest(text)
-        render = (Path("renders") / spec.generator / spec.task_id / f"{env.env_id}.svg").as_posix()
+        render = child(Path("renders"), spec.generator, spec.task_id, env.env_id,
+                       suffix=".svg").as_posix()
         atomic_write_text(Path(spec.run_dir) / render, render_svg(done.env, done.physics),
                           durable=False)
         samples.append(sample)
@@ -180,9 +208,11 @@ def score_unit(spec: ScoreUnitSpec) -> UnitRecord:
     if not samples:
         error = (f"no valid EnvSpec in {folder}" if folder.is_dir()
                  else f"no folder {folder} for this task")
+    if not attempts:
+        attempts.append(Attempt(id=spec.task_id, stage="load", reason=error or "no EnvSpec file"))
     return UnitRecord(generator=spec.generator, task_id=spec.task_id, samples=samples,
                       failures=failures, error=error, mutants=scorer.classes, details=details,
-                      files=files)
+                      files=files, attempts=attempts)
 
 
 def _task_ids(config: EvaluateConfig) -> tuple[list[str], list[str]]:
@@ -190,7 +220,11 @@ def _task_ids(config: EvaluateConfig) -> tuple[list[str], list[str]]:
     if not root.is_dir():
         raise ConfigError("not a folder", file=str(root),
                           hint="pass a folder of <task_id>/*.json EnvSpecs (e.g. a run's envs/<generator>)")
+    config.generator_name  # noqa: B018  (checked before any work: it names folders)
     known = task_ids(config.tasks_dir)
+    if len(set(config.tasks)) != len(config.tasks):
+        dup = sorted({t for t in config.tasks if config.tasks.count(t) > 1})
+        raise ConfigError(f"task(s) listed twice: {dup}", field="--tasks", hint="list each task once")
     if config.tasks:
         missing = [t for t in config.tasks if t not in known]
         if missing:
@@ -212,7 +246,21 @@ def evaluate_envs(config: EvaluateConfig) -> EvaluateOutcome:
     tasks = load_tasks(config.tasks_dir, ids)
     run_dir = config.run_dir()
     store = RunStore(run_dir)
-    store.bind_config(config.identity())
+    store.claim(config.identity())  # held until the end: one run per folder at a time
+    try:
+        return _score(config, ids, skipped, tasks, run_dir, store)
+    finally:
+        store.unlock()
+
+
+def _crashed(spec: ScoreUnitSpec, why: str) -> UnitRecord:
+    return UnitRecord(generator=spec.generator, task_id=spec.task_id, error=why,
+                      error_kind="infrastructure")
+
+
+def _score(config: EvaluateConfig, ids: list[str], skipped: list[str], tasks: list[Task],
+           run_dir: Path, store: RunStore) -> EvaluateOutcome:
+    store.remove_stale_temp_files()
     name = config.generator_name
     specs = [ScoreUnitSpec(generator=name, task_id=t, folder=str(Path(config.envs_dir) / t),
                            tasks_dir=config.tasks_dir, run_dir=str(run_dir)) for t in ids]
@@ -220,22 +268,20 @@ def evaluate_envs(config: EvaluateConfig) -> EvaluateOutcome:
     pending = []
     for spec in specs:
         stored = store.load(name, spec.task_id)
-        if stored is None:
-            pending.append(spec)
+        if stored is None or stored.error_kind == "infrastructure" or not store.files_intact(stored):
+            pending.append(spec)  # never scored, corrupt, its files changed, or its worker died
         else:
             records[spec.task_id] = stored
     reused = len(records)
     start = time.perf_counter()
-    for spec, record in make_executor(config.executor, config.workers).map_unordered(score_unit, pending):
+    executor = make_executor(config.executor, config.workers)
+    for spec, record in executor.map_unordered(score_unit, pending, on_crash=_crashed):
         store.save(record)
         records[spec.task_id] = record
     ordered = [records[t] for t in ids]
     results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start,
                             generators=[name])
     write_outputs(run_dir, results, ordered)
-    from logicenveval.reporting.leaderboard import write_leaderboards
-
-    write_leaderboards(run_dir, results, ordered)
     return EvaluateOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused,
                            skipped_folders=skipped, records=tuple(ordered))
 

@@ -21,10 +21,11 @@ from rich.console import Console
 
 from logicenveval.atomic import atomic_write_text
 from logicenveval.errors import ConfigError
+from logicenveval.metrics.compute import null_metrics
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.metrics.uncertainty import ci95, point_metrics
 from logicenveval.runner.config import RunConfig
-from logicenveval.runner.results import RESULTS_SCHEMA, bootstrap_rng
+from logicenveval.runner.results import RESULTS_SCHEMA, row_status
 from logicenveval.runner.run import run
 from logicenveval.runner.store import RunStore
 
@@ -48,8 +49,10 @@ def seeds_run_dir(config: RunConfig, seeds: Sequence[int]) -> Path:
     if config.run_id:
         return Path(config.output) / config.run_id
     blob = json.dumps(seeds_identity(config, seeds), sort_keys=True).encode()
-    slug = re.sub(r"[^A-Za-z0-9]+", "-", config.model).strip("-").lower() or "model"
+    slug = re.sub(r"[^A-Za-z0-9]+", "-", config.model).strip("-").lower()[:40] or "model"
     tag = "-".join(str(s) for s in seeds)
+    if len(tag) > 40:  # a long list would make the folder name too long: the hash tells it apart
+        tag = f"{seeds[0]}-to-{seeds[-1]}-n{len(seeds)}"
     return Path(config.output) / f"{slug}-seeds{tag}-{hashlib.sha256(blob).hexdigest()[:8]}"
 
 
@@ -59,7 +62,16 @@ def run_seeds(config: RunConfig, seeds: Sequence[int], *, console: Console | Non
         raise ConfigError(f"--seeds needs distinct seeds, got {list(seeds)}", field="--seeds",
                           hint="e.g. --seeds 0,1,2")
     parent = seeds_run_dir(config, seeds)
-    RunStore(parent).bind_config(seeds_identity(config, seeds))
+    store = RunStore(parent)
+    store.claim(seeds_identity(config, seeds))  # the parent folder is this run's until it ends
+    try:
+        return _run_seeds(config, seeds, parent, console, show_progress)
+    finally:
+        store.unlock()
+
+
+def _run_seeds(config: RunConfig, seeds: Sequence[int], parent: Path, console: Console | None,
+               show_progress: bool) -> SeedsOutcome:
     per_seed = []
     records: list[UnitRecord] = []
     computed = reused = 0
@@ -72,9 +84,6 @@ def run_seeds(config: RunConfig, seeds: Sequence[int], *, console: Console | Non
         reused += outcome.reused
     results = combine_seeds(parent.name, seeds_identity(config, seeds), per_seed)
     atomic_write_text(parent / "results.json", json.dumps(results, indent=2, sort_keys=True) + "\n")
-    from logicenveval.reporting.leaderboard import write_leaderboards
-
-    write_leaderboards(parent, results)
     return SeedsOutcome(run_dir=parent, results=results,
                         seed_dirs=[parent / f"seed{s}" for s in seeds], computed=computed,
                         reused=reused, records=tuple(records))
@@ -93,11 +102,21 @@ def combine_seeds(run_id: str, identity: dict[str, object],
     per_task_seed: dict[str, Any] = {}
     failures: dict[str, list[dict[str, Any]]] = {}
     for gen in first["results"]:
+        # a task not measured in some seed (infrastructure failure) is left out for every seed:
+        # the two-level bootstrap needs the same seeds for every task
+        missing = sorted({t for r in per_seed for t in first["tasks"] if t not in r["per_task"][gen]})
         per_task_seed[gen] = {t: {str(r["seed"]): r["per_task"][gen][t] for r in per_seed}
-                              for t in first["tasks"]}
+                              for t in first["tasks"] if t not in missing}
         cells = {(t, int(s)): m for t, by in per_task_seed[gen].items() for s, m in by.items()}
-        results[gen] = point_metrics(list(cells.values()))
-        results[gen]["ci95"] = ci95(cells, bootstrap_rng(seeds[0], gen))
+        if cells:
+            results[gen] = point_metrics(list(cells.values()))
+            results[gen]["ci95"] = ci95(cells)
+        else:
+            results[gen] = {**null_metrics(), "ci95": {}}
+        results[gen].update(row_status(
+            measured=bool(cells), not_measured=missing,
+            budget_hit=sorted({t for t, by in per_task_seed[gen].items()
+                               if any(m.get("budget_hit") for m in by.values())})))
         failures[gen] = [{**f, "seed": r["seed"]} for r in per_seed for f in r["failures"].get(gen, [])]
     return {
         "schema": RESULTS_SCHEMA,

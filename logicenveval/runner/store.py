@@ -10,6 +10,7 @@ from __future__ import annotations
 import contextlib
 import hashlib
 import json
+import os
 from pathlib import Path
 from typing import Any
 
@@ -18,6 +19,7 @@ from pydantic import ValidationError
 from logicenveval.atomic import atomic_write_text
 from logicenveval.errors import RunStoreError
 from logicenveval.metrics.records import UnitRecord
+from logicenveval.paths import child, safe_relative
 
 
 def _digest(payload: Any) -> str:
@@ -35,37 +37,93 @@ class RunStore:
     def __init__(self, run_dir: Path) -> None:
         self.run_dir = run_dir
         self.units_dir = run_dir / "units"
+        self._lock_fd: int | None = None
 
     def unit_path(self, generator: str, task_id: str) -> Path:
-        return self.units_dir / generator / f"{task_id}.json"
+        return child(self.units_dir, generator, task_id, suffix=".json", what="unit name")
+
+    def claim(self, identity: dict[str, Any]) -> None:
+        """`lock` the folder, then `bind_config`: what a run does before its first unit."""
+        self.lock(identity)
+        try:
+            self.bind_config(identity)
+        except BaseException:
+            self.unlock()
+            raise
+
+    def lock(self, identity: dict[str, Any] | None = None) -> None:
+        """Hold the folder for this process until `unlock` (or its exit, even a SIGKILL).
+
+        Two processes writing one run folder would delete each other's temp files and race on
+        the same units, so a second run of the folder is refused while the first is alive.
+        Where the platform has no `flock` only the config claim protects the folder.
+        """
+        try:
+            import fcntl
+        except ImportError:  # pragma: no cover - not POSIX
+            return
+        self.run_dir.mkdir(parents=True, exist_ok=True)
+        fd = os.open(self.run_dir / ".lock", os.O_RDWR | os.O_CREAT, 0o666)
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError:
+            os.close(fd)
+            other = ""
+            with contextlib.suppress(OSError, ValueError, RecursionError):
+                stored = json.loads((self.run_dir / "config.json").read_text(encoding="utf-8"))
+                other = " of the same configuration" if stored == identity else \
+                    " of a different configuration"
+            raise RunStoreError(
+                f"the run folder is in use by another run{other} that is still going",
+                file=str(self.run_dir),
+                hint="wait for it to finish (then re-run to resume), or use another --output/--run-id",
+            ) from None
+        self._lock_fd = fd
+
+    def unlock(self) -> None:
+        fd, self._lock_fd = self._lock_fd, None
+        if fd is not None:
+            os.close(fd)
 
     def bind_config(self, identity: dict[str, Any]) -> None:
-        """Record the run's identity, or check that an existing folder has the same one."""
+        """Claim the folder for `identity`, or check that it already belongs to the same one.
+
+        The claim is one exclusive create of `config.json` (a hard link of a complete temp
+        file), so of two runs started together with different configurations exactly one gets
+        the folder and the other is refused; nothing is checked and then written.
+        """
         path = self.run_dir / "config.json"
-        if path.exists() or path.is_symlink():
-            try:
-                stored = json.loads(path.read_text(encoding="utf-8"))
-            except (OSError, ValueError, RecursionError):
-                # never guess: units of an unknown configuration must not be reused
-                raise RunStoreError(
-                    "the run's config.json is unreadable, so its units cannot be trusted",
-                    file=str(path),
-                    hint="delete the run folder to start over, or use another --output/--run-id",
-                ) from None
-            if stored != identity:
-                raise RunStoreError(
-                    "this run folder belongs to a different configuration",
-                    file=str(path),
-                    hint="use another --output/--run-id, or delete the folder to start over",
-                )
-            return
-        if self.units_dir.exists():
+        text = json.dumps(identity, indent=2, sort_keys=True) + "\n"
+        had_units = self.units_dir.exists()  # observed before the claim: see below
+        if not path.exists() and not path.is_symlink():
+            self.run_dir.mkdir(parents=True, exist_ok=True)
+            if _create_exclusive(path, text):
+                if had_units:  # units older than any config: nothing says what made them
+                    path.unlink()
+                    raise RunStoreError(
+                        "the run folder has units but no config.json, so they cannot be trusted",
+                        file=str(self.run_dir),
+                        hint="delete the run folder to start over, or use another --output/--run-id",
+                    )
+                return
+        try:
+            stored = json.loads(path.read_text(encoding="utf-8"))
+        except (OSError, ValueError, RecursionError):
+            # never guess: units of an unknown configuration must not be reused
             raise RunStoreError(
-                "the run folder has units but no config.json, so they cannot be trusted",
-                file=str(self.run_dir),
+                "the run's config.json is unreadable, so its units cannot be trusted",
+                file=str(path),
                 hint="delete the run folder to start over, or use another --output/--run-id",
+            ) from None
+        if stored != identity:
+            differs = sorted(k for k in set(stored) | set(identity)
+                             if not isinstance(stored, dict) or stored.get(k) != identity.get(k))
+            raise RunStoreError(
+                "this run folder belongs to a different configuration (another run claimed it"
+                + (f"; differs in {', '.join(differs[:6])}" if differs else "") + ")",
+                file=str(path),
+                hint="use another --output/--run-id, or delete the folder to start over",
             )
-        atomic_write_text(path, json.dumps(identity, indent=2, sort_keys=True) + "\n")
 
     def remove_stale_temp_files(self) -> int:
         """Delete temp files left by a writer that was killed before its rename."""
@@ -84,7 +142,8 @@ class RunStore:
         atomic_write_text(self.unit_path(record.generator, record.task_id), text + "\n")
 
     def load(self, generator: str, task_id: str) -> UnitRecord | None:
-        """The stored unit, or None when absent, partial or corrupt (then it is recomputed)."""
+        """The stored unit, or None when absent, partial, corrupt, or recording a path that
+        leaves the run folder (then it is recomputed)."""
         path = self.unit_path(generator, task_id)
         try:
             blob = json.loads(path.read_text(encoding="utf-8"))
@@ -96,6 +155,9 @@ class RunStore:
             return None
         if record.generator != generator or record.task_id != task_id:
             return None
+        recorded = [d.render for d in record.details if d.render is not None] + list(record.files)
+        if any(safe_relative(rel) is None for rel in recorded):
+            return None
         return record
 
     def files_intact(self, record: UnitRecord) -> bool:
@@ -105,10 +167,35 @@ class RunStore:
         a unit whose files did not reach the disk is therefore recomputed, never half-reused.
         """
         for rel, digest in record.files.items():
+            safe = safe_relative(rel)
             try:
-                data = (self.run_dir / rel).read_bytes()
+                if safe is None:
+                    return False
+                data = (self.run_dir / safe).read_bytes()
             except OSError:
                 return False
             if hashlib.sha256(data).hexdigest() != digest:
                 return False
         return True
+
+
+def _create_exclusive(path: Path, text: str) -> bool:
+    """Create `path` holding `text` unless it exists (then False), never showing a partial file:
+    the text goes to a temp file that is hard-linked to `path` (an atomic create-if-absent)."""
+    tmp = path.with_name(f".{path.name}.{os.getpid()}.claim.tmp")
+    atomic_write_text(tmp, text)
+    try:
+        os.link(tmp, path)
+    except FileExistsError:
+        return False
+    except OSError:  # a file system without hard links: an exclusive create, then the content
+        try:
+            fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
+        except FileExistsError:
+            return False
+        with os.fdopen(fd, "w", encoding="utf-8") as fh:
+            fh.write(text)
+    finally:
+        with contextlib.suppress(FileNotFoundError):
+            os.unlink(tmp)
+    return True

@@ -6,32 +6,49 @@ seed and the unit's names, so results do not depend on scheduling or on the numb
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import json
+import os
+import signal
 import sqlite3
+import threading
 import time
 import traceback
-from collections.abc import Sequence
+from collections.abc import Callable, Iterator, Sequence
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Literal
 
 import numpy as np
-from pydantic import BaseModel, ConfigDict
+from pydantic import BaseModel, ConfigDict, Field
 
 from logicenveval.atomic import atomic_write_text
 from logicenveval.benchmark import load_task, policy_path
-from logicenveval.domain.catalog import load_catalog
-from logicenveval.envfiles import env_to_json
+from logicenveval.domain.catalog import DEFAULT_CATALOG, Catalog, load_catalog, reload_catalogs
+from logicenveval.envfiles import env_from_dict, env_to_json
 from logicenveval.errors import CacheMissError, LogicEnvEvalError, ModelConnectionError
-from logicenveval.generators.base import GenerationContext, make_generator
+from logicenveval.generators.base import (
+    Attempt,
+    GenerationContext,
+    GenerationFailure,
+    GenerationResult,
+    Generator,
+    counted_attempts,
+    make_generator,
+    unit_seed,
+)
 from logicenveval.generators.brief import BriefMode, generator_brief
 from logicenveval.generators.plugins import ensure_importable
+from logicenveval.limits import limit, raise_hint
 from logicenveval.llm.base import ChatModel, ChatRequest
 from logicenveval.llm.fewshot import FewShotModel
 from logicenveval.metrics.records import EnvDetail, EnvSample, UnitRecord
 from logicenveval.model.envspec import EnvSpec
-from logicenveval.model.task import POLICY_KINDS
+from logicenveval.model.task import POLICY_KINDS, TaskBrief
+from logicenveval.paths import child, name_problem, shown
 from logicenveval.redact import redact
+from logicenveval.runner import executors
 from logicenveval.runner.store import text_digest
 from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
 
@@ -55,26 +72,250 @@ class UnitSpec(BaseModel):
     generator_target: str | None = None
     #: where the target's module was found in the parent (generators.plugins.GeneratorRef)
     generator_path: str | None = None
-
-
-def unit_seed(seed: int, generator: str, task_id: str) -> list[int]:
-    """A seed sequence independent of scheduling: run seed + stable hashes of the unit's names."""
-    digest = hashlib.sha256(f"{generator}\0{task_id}".encode()).digest()
-    return [seed, int.from_bytes(digest[:8], "little")]
+    #: keyword arguments of the generator's factory (`--generator-args`)
+    generator_args: dict[str, Any] = Field(default_factory=dict)
+    #: seconds the generator may take for this unit (`--unit-timeout`); None: unbounded
+    unit_timeout: float | None = None
 
 
 def _unique_ids(envs: list[EnvSpec]) -> list[EnvSpec]:
-    """Environments keep their ids; a repeated id gets a numeric suffix so no file is lost."""
+    """Environments keep their ids; a repeated id gets a numeric suffix so no file is lost.
+
+    Ids are compared ignoring case, so two files never collide on a case-insensitive disk."""
     seen: set[str] = set()
     out = []
     for env in envs:
         env_id, k = env.env_id, 1
-        while env_id in seen:
+        while env_id.casefold() in seen:
             k += 1
             env_id = f"{env.env_id}-{k}"
-        seen.add(env_id)
+        seen.add(env_id.casefold())
         out.append(env if env_id == env.env_id else env.model_copy(update={"env_id": env_id}))
     return out
+
+
+# ----- the generator boundary -----------------------------------------------------------------
+
+class GeneratorBroke(Exception):
+    """What the boundary concludes when a generator misbehaves as a whole (the unit fails)."""
+
+    def __init__(self, message: str, kind: Literal["generation", "internal"] = "internal") -> None:
+        super().__init__(message)
+        self.kind = kind
+
+
+class UnitTimeout(BaseException):
+    """Raised inside the generator when its time bound passes.
+
+    A BaseException, so a generator's own `except Exception` does not swallow it."""
+
+
+@dataclass
+class Checked:
+    """A generator's output after the boundary: valid environments of this task with plain,
+    unique ids, every rejected one as a failure, and the artefacts as JSON text."""
+
+    envs: list[EnvSpec]
+    failures: list[GenerationFailure]
+    plan_text: str | None
+    returned: int  # environments the generator returned, rejected ones included
+    attempts: list[Attempt]  # `counted_attempts` of what the generator returned
+    budget_hit: str | None
+    origin: list[str]  # the generator's own env_id of each kept environment (before `-2` suffixes)
+    rejected: list[tuple[str, str, str]]  # env_id, stage, reason of each environment not kept
+
+
+def call_generator(generator: Generator, brief: TaskBrief, ctx: GenerationContext, *,
+                   task_id: str, timeout: float | None) -> Checked:
+    """Run `generator.generate` behind the one boundary every unit uses.
+
+    The generator gets its own copy of the brief; its wall time is bounded (`_time_bound`);
+    anything it raises besides an ordinary exception (SystemExit, KeyboardInterrupt, other
+    BaseExceptions) and anything it returns that is not a `GenerationResult` of EnvSpecs with
+    JSON artefacts becomes `GeneratorBroke` with the reason. Ordinary exceptions propagate
+    to the caller, which classifies them (`failure_kind`). A real Ctrl-C still stops the run.
+    """
+    start = time.monotonic()
+    with _interrupts() as interrupted:
+        try:
+            with _time_bound(timeout):
+                result = generator.generate(brief.model_copy(deep=True), ctx)
+        except UnitTimeout:
+            raise GeneratorBroke(_late(timeout), "generation") from None
+        except KeyboardInterrupt:
+            if interrupted():
+                raise
+            raise GeneratorBroke("the generator raised KeyboardInterrupt") from None
+        except SystemExit as exc:
+            raise GeneratorBroke(f"the generator called sys.exit({exc.code!r})") from None
+        except Exception:
+            raise
+        except BaseException as exc:  # GeneratorExit and other BaseException subclasses
+            raise GeneratorBroke(f"the generator raised {type(exc).__name__}: {str(exc)[:200]}") from None
+    if timeout is not None and time.monotonic() - start > timeout:
+        raise GeneratorBroke(_late(timeout), "generation")
+    return check_result(result, task_id)
+
+
+def _late(timeout: float | None) -> str:
+    return (f"the generator did not return within {timeout:g} s (--unit-timeout; raise it if the "
+            "generator is genuinely slow)")
+
+
+def check_result(result: object, task_id: str) -> Checked:
+    """Validate what a generator returned (see `call_generator`)."""
+    if not isinstance(result, GenerationResult):
+        raise GeneratorBroke(f"generate() returned {_what(result)}, not a GenerationResult")
+    envs, failures, artifacts = result.envs, result.failures, result.artifacts
+    if not isinstance(envs, list | tuple):
+        raise GeneratorBroke(f"GenerationResult.envs is {_what(envs)}, not a list of EnvSpecs")
+    cap = limit("max_unit_envs")
+    if len(envs) > cap:
+        raise GeneratorBroke(f"generate() returned {len(envs)} environments, more than the limit of "
+                             f"{cap} ({raise_hint('max_unit_envs')})", "generation")
+    for i, env in enumerate(envs):
+        if not isinstance(env, EnvSpec):
+            raise GeneratorBroke(f"GenerationResult.envs[{i}] is {_what(env)}, not an EnvSpec")
+    if not isinstance(failures, list | tuple) or not all(isinstance(f, GenerationFailure) for f in failures):
+        raise GeneratorBroke("GenerationResult.failures must be a list of GenerationFailure")
+    if not isinstance(artifacts, dict):
+        raise GeneratorBroke(f"GenerationResult.artifacts is {_what(artifacts)}, not a dict")
+    plan_text = None
+    if artifacts:
+        try:
+            plan_text = json.dumps(artifacts, indent=2, sort_keys=True, default=str) + "\n"
+        except (ValueError, TypeError, RecursionError) as exc:
+            raise GeneratorBroke("GenerationResult.artifacts cannot be written as JSON "
+                                 f"({type(exc).__name__}: {str(exc)[:200]})") from None
+    attempts = result.attempts
+    if not isinstance(attempts, list | tuple) or not all(isinstance(a, Attempt) for a in attempts):
+        raise GeneratorBroke("GenerationResult.attempts must be a list of Attempt")
+    kept: list[EnvSpec] = []
+    rejected: list[tuple[str, str, str]] = []
+    out_failures = list(failures)
+    for env in envs:
+        checked = _checked_env(env, task_id)
+        if isinstance(checked, EnvSpec):
+            kept.append(checked)
+        else:
+            env_id = getattr(env, "env_id", None)
+            safe = isinstance(env_id, str) and name_problem(env_id) is None
+            out_failures.append(GenerationFailure(stage="validate", message=checked,
+                                                  env_id=env_id if safe else None))
+            rejected.append((env_id if isinstance(env_id, str) else "", "validate", checked))
+    return Checked(envs=_unique_ids(kept), failures=out_failures, plan_text=plan_text,
+                   returned=len(envs), attempts=counted_attempts(result),
+                   budget_hit=result.budget_hit if isinstance(result.budget_hit, str) else None,
+                   origin=[e.env_id for e in kept], rejected=rejected)
+
+
+def _checked_env(env: EnvSpec, task_id: str) -> EnvSpec | str:
+    """The environment as its file will hold it (re-validated), or why it is rejected."""
+    env_id = getattr(env, "env_id", None)
+    problem = name_problem(env_id)
+    if problem is not None:
+        return f"env_id {shown(env_id)} {problem}, so it cannot name a file; not judged"
+    if getattr(env, "task_id", None) != task_id:
+        return (f"environment {env_id!r} has task_id {shown(getattr(env, 'task_id', None))}, but "
+                f"this unit is task {task_id!r}; not judged")
+    objects = getattr(env, "objects", ())
+    objects = objects if isinstance(objects, list | tuple) else ()
+    cap = limit("max_env_objects")
+    if len(objects) > cap:
+        return (f"environment {env.env_id!r} has {len(objects)} objects, more than the limit of "
+                f"{cap} ({raise_hint('max_env_objects')}); not judged")
+    try:
+        return env_from_dict(json.loads(env_to_json(env)), source=env.env_id)
+    except LogicEnvEvalError as exc:
+        return f"environment {env.env_id!r} is not a valid EnvSpec: {exc}"
+    except Exception as exc:  # e.g. a model_construct()ed EnvSpec holding anything
+        return (f"environment {env.env_id!r} cannot be written as an EnvSpec "
+                f"({type(exc).__name__}: {str(exc)[:200]})")
+
+
+def _what(value: object) -> str:
+    return "None" if value is None else f"a {type(value).__name__}"
+
+
+@contextlib.contextmanager
+def _time_bound(seconds: float | None) -> Iterator[None]:
+    """Raise `UnitTimeout` in this thread after `seconds` (again every second if swallowed).
+
+    Only the main thread of a process can receive the alarm; elsewhere (a library caller's
+    thread) the bound is checked when the generator returns. In a pool worker a watchdog
+    thread also ends the process shortly after the bound, for a generator that blocks the
+    alarm or sits in native code; the process executor then reports the unit as timed out.
+    """
+    if not seconds or not hasattr(signal, "setitimer") or \
+            threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def fire(signum: int, frame: object) -> None:
+        raise UnitTimeout()
+
+    old = signal.signal(signal.SIGALRM, fire)
+    watchdog = None
+    if executors.IN_WORKER:
+        grace = max(2.0, min(seconds, 30.0))
+        watchdog = threading.Timer(seconds + grace, os._exit, args=(executors.EXIT_TIMED_OUT,))
+        watchdog.daemon = True
+        watchdog.start()
+    signal.setitimer(signal.ITIMER_REAL, seconds, 1.0)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+        if watchdog is not None:
+            watchdog.cancel()
+
+
+@contextlib.contextmanager
+def _interrupts() -> Iterator[Callable[[], bool]]:
+    """Tell a real Ctrl-C (which must stop the run) from a KeyboardInterrupt a generator raises.
+
+    Pool workers ignore SIGINT (the run stops them), so there every KeyboardInterrupt is the
+    generator's own."""
+    seen = [False]
+    main = threading.current_thread() is threading.main_thread()
+    if not main or signal.getsignal(signal.SIGINT) is not signal.default_int_handler:
+        yield lambda: False if not main else seen[0]
+        return
+
+    def on_sigint(signum: int, frame: object) -> None:
+        seen[0] = True
+        raise KeyboardInterrupt
+
+    signal.signal(signal.SIGINT, on_sigint)
+    try:
+        yield lambda: seen[0]
+    finally:
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+
+
+# ----- shared state a generator could change -----------------------------------------------
+
+_BASELINE: list[str] = []  # digest of the catalog as its file defines it (once per process)
+_CHANGED: list[Catalog] = []  # catalogs a generator changed: kept alive so their id is never reused
+
+
+def _digest(catalog: Catalog) -> str:
+    return hashlib.sha256(catalog.model_dump_json().encode()).hexdigest()
+
+
+def shared_catalog() -> tuple[Catalog, bool]:
+    """The process's cached catalog, and whether it had to be restored from its file because a
+    generator changed it in place (caches keyed by a catalog's id then never see the new one
+    under an old id)."""
+    if not _BASELINE:
+        _BASELINE.append(_digest(Catalog.model_validate_json(DEFAULT_CATALOG.read_text("utf-8"))))
+    catalog = load_catalog()
+    if _digest(catalog) == _BASELINE[0]:
+        return catalog, False
+    _CHANGED.append(catalog)
+    reload_catalogs()
+    return load_catalog(), True
 
 
 def run_unit(spec: UnitSpec) -> UnitRecord:
@@ -86,11 +327,12 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     from logicenveval.sim.loader import load_policy
 
     task = load_task(spec.task_id, spec.tasks_dir)
-    catalog = load_catalog()
+    catalog, _ = shared_catalog()
     policies = {k: load_policy(policy_path(task, k, spec.tasks_dir)) for k in POLICY_KINDS}
     run_dir = Path(spec.run_dir)
     start = time.perf_counter()
     model: ChatModel | None = None
+    ctx: GenerationContext | None = None
     try:
         watched = _Watched(make_model(spec.model, spec.model_args, cache_path=spec.cache,
                                       no_cache=spec.no_cache, run_dir=run_dir))
@@ -99,7 +341,7 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
             model = FewShotModel(watched)
         target = spec.generator_target or spec.generator
         ensure_importable(target, spec.generator_path)
-        generator = make_generator(target)
+        generator = make_generator(target, **spec.generator_args)
         ctx = GenerationContext(
             model=model,
             catalog=catalog,
@@ -109,37 +351,96 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
             layout_solver=spec.layout_solver,
         )
         brief = generator_brief(task, spec.brief, model, seed=spec.seed)
-        result = generator.generate(brief, ctx)
-    except Exception as exc:  # a failing unit must not kill the run; it is recorded
+        result = call_generator(generator, brief, ctx, task_id=task.id, timeout=spec.unit_timeout)
+    except GeneratorBroke as exc:
+        shared_catalog()
+        return UnitRecord(generator=spec.generator, task_id=spec.task_id, error=redact(str(exc)),
+                          error_kind=exc.kind, gen_seconds=time.perf_counter() - start,
+                          llm=_stats(model), attempts=planned_failures(
+                              spec.generator, ctx.planned_attempts if ctx is not None else 0))
+    except KeyboardInterrupt:
+        if not executors.IN_WORKER:  # a real Ctrl-C of the run (workers ignore SIGINT)
+            raise
+        shared_catalog()
+        return UnitRecord(generator=spec.generator, task_id=spec.task_id,
+                          error="internal error: the generator raised KeyboardInterrupt",
+                          error_kind="internal", gen_seconds=time.perf_counter() - start,
+                          llm=_stats(model), attempts=planned_failures(spec.generator, 0))
+    except BaseException as exc:  # a failing unit must not kill the run; it is recorded
+        shared_catalog()  # (also SystemExit from a factory: it is the generator's, not ours)
+        kind = failure_kind(exc)
+        planned = ctx.planned_attempts if ctx is not None else 0
         return UnitRecord(generator=spec.generator, task_id=spec.task_id, error=_reason(exc),
-                          error_kind=failure_kind(exc), gen_seconds=time.perf_counter() - start,
-                          llm=_stats(model))
+                          error_kind=kind, gen_seconds=time.perf_counter() - start,
+                          llm=_stats(model), attempts=[] if kind == "infrastructure"
+                          else planned_failures(spec.generator, planned))
     gen_seconds = time.perf_counter() - start
+    catalog, changed = shared_catalog()  # judged with the catalog as its file defines it
+    if changed:
+        result.failures.append(GenerationFailure(
+            stage="isolation", message="the generator changed the shared asset catalog in place; "
+            "the change was undone before judging (work on ctx.catalog.model_copy(deep=True))"))
     if watched.infra_error is not None:  # the generator absorbed it, but its output is incomplete
         return UnitRecord(generator=spec.generator, task_id=spec.task_id,
                           error="infrastructure failure during generation: " + watched.infra_error,
                           error_kind="infrastructure", gen_seconds=gen_seconds, llm=_stats(model))
-    rel_dir = Path("envs") / spec.generator / spec.task_id
+    rel_dir = child(Path("envs"), spec.generator, spec.task_id)
     samples: list[EnvSample] = []
     details: list[EnvDetail] = []
     files: dict[str, str] = {}
+    failures = list(result.failures)
     scorer = scorer_for(task, spec.tasks_dir, catalog, cache_dir=run_dir / "work" / "mutants")
-    for env in _unique_ids(result.envs):
-        _write(run_dir, rel_dir / f"{env.env_id}.json", env_to_json(env), files)
-        done = evaluate_env(spec.generator, task, env, policies, catalog)
-        sample = with_killed_mutants(done, task, scorer, catalog)
-        render = (Path("renders") / spec.generator / spec.task_id / f"{env.env_id}.svg").as_posix()
+    unjudged = list(result.rejected)
+    for env, origin in zip(result.envs, result.origin, strict=True):  # ids checked by the boundary
+        _write(run_dir, child(rel_dir, env.env_id, suffix=".json"), env_to_json(env), files)
+        try:
+            done = evaluate_env(spec.generator, task, env, policies, catalog)
+            sample = with_killed_mutants(done, task, scorer, catalog)
+        except Exception as exc:  # one environment the harness cannot judge must not stop the others
+            failures.append(GenerationFailure(stage="evaluate", env_id=env.env_id,
+                                              message=_reason(exc)))
+            unjudged.append((origin, "evaluate", _reason(exc)))
+            continue
+        render = child(Path("renders"), spec.generator, spec.task_id, env.env_id, suffix=".svg").as_posix()
         atomic_write_text(run_dir / render, render_svg(done.env, done.physics), durable=False)
         samples.append(sample)
         details.append(EnvDetail(env_id=env.env_id, render=render, traces=done.traces))
     if spec.brief != "roles":
         _write(run_dir, rel_dir / "brief.json", brief.model_dump_json(indent=2) + "\n", files)
-    if result.artifacts:
-        _write(run_dir, rel_dir / "plan.json",
-               json.dumps(result.artifacts, indent=2, sort_keys=True, default=str) + "\n", files)
+    if result.plan_text is not None:
+        _write(run_dir, rel_dir / "plan.json", result.plan_text, files)
+    error = None
+    if result.returned and not samples:  # every environment was rejected or could not be judged
+        first = next(f.message for f in failures if f.stage in ("validate", "evaluate"))
+        error = f"none of the {result.returned} environment(s) returned could be judged; first: {first}"
     return UnitRecord(generator=spec.generator, task_id=spec.task_id, samples=samples,
-                      failures=list(result.failures), gen_seconds=gen_seconds, llm=_stats(model),
-                      mutants=scorer.classes, details=details, files=files)
+                      failures=failures, gen_seconds=gen_seconds, llm=_stats(model),
+                      mutants=scorer.classes, details=details, files=files, error=error,
+                      error_kind=None if error is None else "generation",
+                      attempts=_settled(result.attempts, unjudged), budget_hit=result.budget_hit)
+
+
+def planned_failures(generator: str, planned: int) -> list[Attempt]:
+    """A unit that failed as a whole for generation reasons: every environment it planned
+    (`GenerationContext.plan_attempts`, at least one) is a failed attempt."""
+    return [Attempt(id=f"{generator}-{i:02d}", stage="unit", reason="the unit failed as a whole (see its error)")
+            for i in range(max(1, planned))]
+
+
+def _settled(attempts: list[Attempt], unjudged: list[tuple[str, str, str]]) -> list[Attempt]:
+    """The attempts with every built environment that was not judged — rejected by the boundary
+    or not judgeable (`unjudged`: the generator's env_id, stage, reason) — turned into a failed
+    attempt, so that n_attempted = judged samples + failed attempts."""
+    pending: dict[str, list[tuple[str, str]]] = {}
+    for env_id, stage, reason in unjudged:
+        pending.setdefault(env_id, []).append((stage, reason))
+    out = []
+    for a in attempts:
+        if a.env_id is not None and pending.get(a.env_id):
+            stage, reason = pending[a.env_id].pop(0)
+            a = Attempt(id=a.id, target=a.target, stage=stage, reason=reason)
+        out.append(a)
+    return out
 
 
 def run_units(specs: tuple[UnitSpec, ...]) -> list[UnitRecord]:

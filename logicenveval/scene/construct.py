@@ -13,14 +13,15 @@ from logicenveval.domain.catalog import Catalog, Category
 from logicenveval.errors import EnvSpecError
 from logicenveval.model.envspec import Agent, EnvObject, EnvSpec, Relation
 from logicenveval.scene.compat import check_relations
-from logicenveval.scene.floorplan import FloorPlan, plan_floor
-from logicenveval.scene.geometry import Rect, edges
+from logicenveval.scene.floorplan import GAP, FloorPlan, plan_floor
+from logicenveval.scene.geometry import Rect, edges, subtract
 from logicenveval.scene.layout import (
     DEFAULT_SOLVER,
     FLOOR_RELATIONS,
     WALKWAY,
     Box,
     FloorRel,
+    Opening,
     Solver,
     WallBox,
     backend,
@@ -237,7 +238,9 @@ class _Builder:
                     self.dropped_rel.add(id(r))
                     self._log_rel(room, r, d.reason)
 
-    def layout_room(self, rq: RoomRequest, plan: FloorPlan) -> None:
+    def layout_room(self, rq: RoomRequest, plan: FloorPlan) -> FloorPlan:
+        """Lay out one room; its own doors and windows are placed by the floor solve (paper §3.3:
+        their positions are variables of the CSP). Returns the plan with them on their walls."""
         rect = plan.rects[rq.id]
         origin = (rect.x0, rect.z0)
         g = self.g
@@ -245,20 +248,24 @@ class _Builder:
         here = [o for o in self.objects.values() if o.room == rq.id]
         floor = [o for o in here if o.support == "floor"]
         boxes = [self._box(o.id) for o in floor]
-        squares = self._door_squares(rq.id, plan, rect)
-        obstacles = [rect_cells(sq, origin, g) for sq in squares]
+        obstacles = [rect_cells(sq, origin, g) for sq in self._door_squares(rq.id, plan, rect)]
         tall = []
         for w in plan.windows:
             if w.room == rq.id and w.segment is not None:
                 tall.append((rect_cells(self._strip(w.segment, rect, WINDOW_CLEARANCE), origin, g), w.sill))
+        openings = self._openings(rq.id, plan, rect)
         root = {o.id: self._root(o.id) for o in here}
         rels, by_text = self._floor_rels(here, root)
         placed, dropped = self.solver.pack(frame, boxes, seed=self._seed(), timeout_s=self.spec.room_timeout_s,
-                               obstacles=obstacles, tall=tall, walkway=cells(WALKWAY, g), rels=rels, grid=g)
-        if not placed and boxes:
-            raise EnvSpecError(f"room {rq.id}: the task objects do not fit its floor together with the doors "
-                               "and walkways", field=f"rooms.{rq.id}",
+                                           obstacles=obstacles, tall=tall, walkway=cells(WALKWAY, g), rels=rels,
+                                           grid=g, openings=openings)
+        if not placed and (boxes or openings):
+            raise EnvSpecError(f"room {rq.id}: the task objects do not fit its floor together with the doors, "
+                               "windows and walkways", field=f"rooms.{rq.id}",
                                hint="request a larger room area or fewer/smaller task objects")
+        plan = plan.placed({op.id: origin[0] + placed[op.id].x0 if op.side in "sn" else origin[1] + placed[op.id].z0
+                            for op in openings})
+        squares = self._door_squares(rq.id, plan, rect)
         self._take(rq.id, dropped, by_text)
         for b in boxes:
             if b.id in placed:
@@ -277,6 +284,40 @@ class _Builder:
                 raise EnvSpecError(f"{oid} has no support the solver can place", field=f"objects.{oid}.placement",
                                    hint="place it on the floor, a wall, or a floor/wall object")
             self._drop_object(oid, "its support could not be placed")
+        return plan
+
+    def free_floor(self, room: str, rect: Rect) -> float:
+        """Floor area (m²) the room's floor objects leave free: how tight its floor solve is."""
+        return rect.area - sum(self.sizes[o.id][0] * self.sizes[o.id][2] for o in self.objects.values()
+                               if o.room == room and o.support == "floor")
+
+    def _openings(self, room: str, plan: FloorPlan, rect: Rect) -> list[Opening]:
+        """The doors and windows this room's floor solve places: their slot's stretch in this room's
+        cells, minus what openings already on that wall line take (with the gap)."""
+        g = self.g
+        out = []
+        placed = [(d.segment, d.id) for d in plan.doors if d.segment is not None]
+        placed += [(w.segment, w.id) for w in plan.windows if w.segment is not None]
+        for oid, slot in plan.slots.items():
+            if slot.owner != room or any(i == oid for _, i in placed):
+                continue
+            e = slot.edge
+            origin = rect.x0 if e.axis == "x" else rect.z0
+            k_along, k_across = (0, 1) if e.axis == "x" else (1, 0)
+            taken = [(min(a[k_along], b[k_along]) - GAP, max(a[k_along], b[k_along]) + GAP)
+                     for (a, b), _ in placed if abs(a[k_across] - e.at) < 1e-6 and abs(b[k_across] - e.at) < 1e-6]
+            width = cells(slot.width, g)
+            starts = []
+            for lo, hi in subtract(slot.lo, slot.hi, taken):
+                first = cells(lo - origin, g)
+                last = int(math.floor((hi - origin - slot.width) / g + 1e-6))
+                if first <= last:
+                    starts.append((first, last))
+            window = next((w for w in plan.windows if w.id == oid), None)
+            out.append(Opening(oid, e.side, tuple(starts), width,  # type: ignore[arg-type]
+                               cells(WINDOW_CLEARANCE, g) if window else width,
+                               sill=window.sill if window else None))
+        return out
 
     def _ceiling(self, room: str, rect: Rect, squares: list[Rect]) -> None:
         """Ceiling objects touch the ceiling, clear of everything that reaches their height."""
@@ -495,8 +536,10 @@ def construct_environment(spec: SceneSpec, *, catalog: Catalog, rng: np.random.G
     plan = plan_floor(spec.rooms, rng, wall_height=spec.wall_height)
     b.warnings += plan.warnings
     b.size_all()
-    for rq in spec.rooms:
-        b.layout_room(rq, plan)
+    order = sorted(spec.rooms, key=lambda r: b.free_floor(r.id, plan.rects[r.id]))
+    plan = plan.owned_in([r.id for r in order])
+    for rq in order:  # the tightest room first: it places its doors, the roomier neighbours take them
+        plan = b.layout_room(rq, plan)
     objects = []
     for o in spec.objects:
         if o.id not in b.objects or o.id not in b.poses:
@@ -569,12 +612,14 @@ def construct_from_drafts(*, brief: Any, env_id: str, generator: str, rooms: Seq
     return res.model_copy(update={"warnings": warnings + res.warnings}) if warnings else res
 
 
-def env_from_placed(*, brief: Any, env_id: str, generator: str, rooms: Sequence[Mapping[str, Any]],
+def env_from_placed(*, brief: Any, env_id: str, generator: str, plan: FloorPlan,
                     placed: Sequence[Any], relations: Sequence[Any],
-                    claimed_trajectory: dict[str, dict[str, str]] | None, catalog: Catalog,
-                    rng: np.random.Generator) -> EnvSpec:
-    """An EnvSpec with the model's own coordinates (no solver: the no-CAS ablation and baselines)."""
-    plan = plan_floor(room_requests(rooms), rng)
+                    openings: Mapping[str, tuple[tuple[float, float], tuple[float, float]]],
+                    claimed_trajectory: dict[str, dict[str, str]] | None, catalog: Catalog) -> EnvSpec:
+    """An EnvSpec with the model's own coordinates (no solver: the no-CAS ablation): its objects,
+    and its door and window segments (`openings`, by id) on the rooms and wall stretches of `plan`;
+    an opening it did not place keeps no segment (the floor-plan check reports it)."""
+    plan = plan.placed({})
     ids = {o.id for o in placed}
     room_ids = {r.id for r in plan.rooms}
     objs = []
@@ -599,9 +644,11 @@ def env_from_placed(*, brief: Any, env_id: str, generator: str, rooms: Sequence[
         except ValueError:
             continue
     roles_set = set(getattr(brief, "roles", {}) or {})
+    doors = [d.model_copy(update={"segment": openings.get(d.id)}) for d in plan.doors]
+    windows = [w.model_copy(update={"segment": openings.get(w.id)}) for w in plan.windows]
     return EnvSpec.model_validate({
         "task_id": brief.id, "generator": generator, "env_id": env_id, "claimed_trajectory": claimed_trajectory,
-        "rooms": [r.model_dump() for r in plan.rooms], "doors": [d.model_dump() for d in plan.doors],
-        "windows": [w.model_dump() for w in plan.windows], "objects": objs, "relations": rels,
+        "rooms": [r.model_dump() for r in plan.rooms], "doors": [d.model_dump() for d in doors],
+        "windows": [w.model_dump() for w in windows], "objects": objs, "relations": rels,
         "roles": {o.role: o.id for o in placed if o.role in roles_set},
         "agent": {"room": plan.rooms[0].id}})

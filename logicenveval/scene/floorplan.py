@@ -1,16 +1,23 @@
-"""Floor plans: rectilinear rooms by boustrophedon strip slicing, doors on shared walls, windows outside.
+"""Floor plans: rectilinear rooms by boustrophedon strip slicing; doors and windows assigned to wall
+stretches, their positions along them left to the layout solver.
 
 Rooms are ordered breadth-first over the requested adjacency and laid into rows of at most three
 (alternating direction), so that rooms adjacent in the request are usually adjacent in the plan.
 Rows share one width, each row's depth follows its total area, so rooms never overlap and the
 outline is a rectangle. Requested adjacencies the slicing cannot honour are warned about; a door is
 added between touching rooms wherever needed to keep every room reachable.
+
+Each door and window gets a `Slot`: the wall stretch it goes on (a door on the longest wall its
+rooms share, an entrance or window on an exterior stretch), with room reserved for every opening
+of that stretch. Where along the stretch is a variable of the layout solve of the slot's owner
+room (paper §3.3: "the doorway and window positions" are variables of the CSP; `scene.construct`).
+`place_by_rule` fixes them without a solver instead (seeded positions; the no-CAS ablation).
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -21,16 +28,73 @@ from logicenveval.scene.spec import DoorRequest, RoomRequest
 
 MIN_SIDE = 2.0  # metres: narrower rooms cannot hold furniture and a walkway
 CORNER = 0.15  # door and window clearance from wall corners
+GAP = 0.1  # metres between two openings on one wall
 ROW_MAX = 3
+
+
+@dataclass(frozen=True)
+class Slot:
+    """Where a door or window may go: along `edge` (of the owner room's rectangle) between `lo`
+    and `hi` (corner clearance applied), `width` long. `owner` is the room whose layout solve
+    places it (a door's first room in request order)."""
+
+    owner: str
+    edge: Edge
+    lo: float
+    hi: float
+    width: float
+
+    def segment(self, start: float) -> tuple[tuple[float, float], tuple[float, float]]:
+        """The wall segment of the opening that starts at `start` (metres along the edge)."""
+        return (self.edge.point(_snap(start, 0.001)), self.edge.point(_snap(start + self.width, 0.001)))
 
 
 @dataclass(frozen=True)
 class FloorPlan:
     rooms: list[Room]
     rects: dict[str, Rect]
-    doors: list[Door]
+    doors: list[Door]  # `segment` None until placed (layout solver or `place_by_rule`)
     windows: list[Window]
     warnings: list[str] = field(default_factory=list)
+    slots: dict[str, Slot] = field(default_factory=dict)  # door/window id -> its wall stretch
+
+    def opening_requests(self) -> list[dict[str, object]]:
+        """Each door and window as a writer without a solver is asked to place it: id, kind, rooms,
+        size, and the wall stretch (two end points) it goes on."""
+        out: list[dict[str, object]] = []
+        for d in self.doors:
+            e, slot = self.slots[d.id].edge, self.slots[d.id]
+            out.append({"id": d.id, "kind": "door", "rooms": list(d.rooms), "width": slot.width, "height": d.height,
+                        "wall_from": list(e.point(slot.lo)), "wall_to": list(e.point(slot.hi))})
+        for w in self.windows:
+            e, slot = self.slots[w.id].edge, self.slots[w.id]
+            out.append({"id": w.id, "kind": "window", "rooms": [w.room], "width": slot.width, "sill": w.sill,
+                        "height": w.height, "wall_from": list(e.point(slot.lo)), "wall_to": list(e.point(slot.hi))})
+        return out
+
+    def owned_in(self, order: list[str]) -> FloorPlan:
+        """The plan whose doors are placed by whichever of their rooms comes first in `order` (the
+        order the rooms are laid out in), each slot on that room's edge of the same wall."""
+        rank = {r: k for k, r in enumerate(order)}
+        slots = dict(self.slots)
+        for d in self.doors:
+            rooms = [r for r in d.rooms if r != "exterior"]
+            owner = min(rooms, key=lambda r: rank.get(r, len(rank)))
+            old = slots[d.id]
+            if owner != old.owner:
+                edge = next(e for e in edges(self.rects[owner]).values()
+                            if e.axis == old.edge.axis and abs(e.at - old.edge.at) < EPS and e.inward != old.edge.inward)
+                slots[d.id] = replace(old, owner=owner, edge=edge)
+        return replace(self, slots=slots)
+
+    def placed(self, starts: dict[str, float]) -> FloorPlan:
+        """The plan with the openings of `starts` (id -> metres along its slot's edge) on their walls."""
+        def seg(oid: str, old: tuple[tuple[float, float], tuple[float, float]] | None
+                ) -> tuple[tuple[float, float], tuple[float, float]] | None:
+            return self.slots[oid].segment(starts[oid]) if oid in starts else old
+
+        return replace(self, doors=[d.model_copy(update={"segment": seg(d.id, d.segment)}) for d in self.doors],
+                       windows=[w.model_copy(update={"segment": seg(w.id, w.segment)}) for w in self.windows])
 
 
 def _snap(v: float, grid: float = 0.05) -> float:
@@ -124,28 +188,24 @@ def _exterior(rid: str, rects: dict[str, Rect]) -> list[tuple[Edge, float, float
     return out
 
 
-class _Openings:
-    """Occupied stretches per wall line, so doors and windows never overlap."""
+class _Stretches:
+    """Room left on each wall stretch, so that every opening assigned to one fits with `GAP`s."""
 
     def __init__(self) -> None:
-        self.used: dict[tuple[str, float], list[tuple[float, float]]] = {}
+        self.widths: dict[tuple[str, float, float, float], list[float]] = {}
 
-    def place(self, e: Edge, lo: float, hi: float, width: float, rng: np.random.Generator,
-              gap: float) -> float | None:
-        key = (e.axis, round(e.at, 4))
-        free = subtract(lo + CORNER, hi - CORNER, [(a - gap, b + gap) for a, b in self.used.get(key, [])])
-        fits = [(u, v) for u, v in free if v - u >= width - EPS]
-        if not fits:
-            return None
-        u, v = fits[int(rng.integers(len(fits)))]
-        last = max(u, v - width)
-        start = min(max(_snap(float(rng.uniform(u, last))), u), last)
-        self.used.setdefault(key, []).append((start, start + width))
-        return start
+    def reserve(self, e: Edge, lo: float, hi: float, width: float) -> bool:
+        key = (e.axis, round(e.at, 4), round(lo, 4), round(hi, 4))
+        taken = self.widths.setdefault(key, [])
+        if sum(taken) + GAP * len(taken) + width > hi - lo - 2 * CORNER + EPS:
+            return False
+        taken.append(width)
+        return True
 
 
 def plan_floor(rooms: list[RoomRequest], rng: np.random.Generator, *, wall_height: float = 2.7) -> FloorPlan:
-    """Rooms, doors and windows for the requested rooms; deterministic given `rng`."""
+    """Rooms, and doors and windows with their wall stretches (not yet positions: `Slot`); deterministic
+    given `rng`."""
     if not rooms:
         raise EnvSpecError("no rooms requested", field="rooms", hint="request at least one room")
     ids = [r.id for r in rooms]
@@ -160,7 +220,8 @@ def plan_floor(rooms: list[RoomRequest], rng: np.random.Generator, *, wall_heigh
         if abs(rects[r.id].area - r.area) > 0.25 * r.area:
             warnings.append(f"room {r.id}: area {rects[r.id].area:.1f} m² instead of {r.area:.1f} m² "
                             "(rooms keep at least 2 m per side and share the plan's width)")
-    openings = _Openings()
+    stretches = _Stretches()
+    slots: dict[str, Slot] = {}
     doors: list[Door] = []
     parent = {i: i for i in ids}
 
@@ -176,11 +237,11 @@ def plan_floor(rooms: list[RoomRequest], rng: np.random.Generator, *, wall_heigh
             sw = _shared_wall(rects[a], rects[b])
             walls = [(sw[0], *sw[1])] if sw else []
         for e, lo, hi in walls:
-            start = openings.place(e, lo, hi, req.width, rng, gap=req.width + 0.1)
-            if start is None:
+            if not stretches.reserve(e, lo, hi, req.width):
                 continue
-            seg = (e.point(start), e.point(_snap(start + req.width, 0.001)))
-            doors.append(Door(id=f"d{len(doors)}", rooms=(a, b), segment=seg, type=req.type, state=req.state))
+            door = Door(id=f"d{len(doors)}", rooms=(a, b), segment=None, type=req.type, state=req.state)
+            doors.append(door)
+            slots[door.id] = Slot(a, e, lo + CORNER, hi - CORNER, req.width)
             if b != "exterior":
                 parent[find(a)] = find(b)
             return True
@@ -208,17 +269,18 @@ def plan_floor(rooms: list[RoomRequest], rng: np.random.Generator, *, wall_heigh
     for a in ids:  # keep every room reachable
         for b in ids:
             if a < b and find(a) != find(b):
-                add_door(a, b, DoorRequest(to=b))
+                first, second = sorted((a, b), key=ids.index)
+                add_door(first, second, DoorRequest(to=second))
     ext_room, ext_req = exterior or (ids[0], DoorRequest(to="exterior"))
     if not add_door(ext_room, "exterior", ext_req):
         warnings.append(f"room {ext_room}: no exterior wall free for the entrance door")
-    windows = _windows(rooms, rects, openings, rng, wall_height, warnings)
+    windows = _windows(rooms, rects, stretches, slots, wall_height, warnings)
     out_rooms = [Room(id=r.id, type=r.type, polygon=rects[r.id].polygon()) for r in rooms]
-    return FloorPlan(rooms=out_rooms, rects=rects, doors=doors, windows=windows, warnings=warnings)
+    return FloorPlan(rooms=out_rooms, rects=rects, doors=doors, windows=windows, warnings=warnings, slots=slots)
 
 
-def _windows(rooms: list[RoomRequest], rects: dict[str, Rect], openings: _Openings,
-             rng: np.random.Generator, wall_height: float, warnings: list[str]) -> list[Window]:
+def _windows(rooms: list[RoomRequest], rects: dict[str, Rect], stretches: _Stretches, slots: dict[str, Slot],
+             wall_height: float, warnings: list[str]) -> list[Window]:
     out: list[Window] = []
     for r in rooms:
         ext = _exterior(r.id, rects)
@@ -230,19 +292,38 @@ def _windows(rooms: list[RoomRequest], rects: dict[str, Rect], openings: _Openin
             walls = sorted(ext, key=lambda t: (t[0].side != w.wall, -(t[2] - t[1])))
             placed = False
             for e, lo, hi in walls:
-                width = min(w.width, hi - lo - 2 * CORNER)
-                if width < 0.3:
-                    continue
-                start = openings.place(e, lo, hi, width, rng, gap=0.1)
-                if start is None:
+                width = _snap(min(w.width, hi - lo - 2 * CORNER))
+                if width < 0.3 or not stretches.reserve(e, lo, hi, width):
                     continue
                 if e.side != w.wall:
                     warnings.append(f"room {r.id}: wall {w.wall} is not exterior; window put on {e.side}")
-                seg = (e.point(start), e.point(_snap(start + width, 0.001)))
-                out.append(Window(id=f"w{len(out)}", room=r.id, segment=seg, sill=w.sill,
-                                  height=round(height, 3), state=w.state))
+                win = Window(id=f"w{len(out)}", room=r.id, segment=None, sill=w.sill, height=round(height, 3),
+                             state=w.state)
+                out.append(win)
+                slots[win.id] = Slot(r.id, e, lo + CORNER, hi - CORNER, width)
                 placed = True
                 break
             if not placed:
                 warnings.append(f"room {r.id}: no exterior wall free for a window; skipped")
     return out
+
+
+def place_by_rule(plan: FloorPlan, rng: np.random.Generator) -> FloorPlan:
+    """Every opening at a seeded position of its stretch, without a solver (the no-CAS ablation:
+    only the layout solver would place them otherwise): the openings of a stretch in order, the
+    stretch's spare length split among the gaps before, between and after them at random."""
+    groups: dict[tuple[str, float, float, float], list[str]] = {}
+    for oid, slot in plan.slots.items():
+        groups.setdefault((slot.edge.axis, round(slot.edge.at, 4), round(slot.lo, 4), round(slot.hi, 4)),
+                          []).append(oid)
+    starts: dict[str, float] = {}
+    for ids in groups.values():
+        first = plan.slots[ids[0]]
+        spare = first.hi - first.lo - sum(plan.slots[i].width for i in ids) - GAP * (len(ids) - 1)
+        shares = rng.dirichlet(np.ones(len(ids) + 1)) * max(spare, 0.0)
+        at = first.lo
+        for oid, share in zip(ids, shares, strict=False):
+            at += float(share)
+            starts[oid] = math.floor(at * 1000) / 1000  # mm: never past the reserved room
+            at = starts[oid] + plan.slots[oid].width + GAP
+    return plan.placed(starts)

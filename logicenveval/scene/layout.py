@@ -14,7 +14,7 @@ import importlib
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Literal, Protocol, get_args
+from typing import Any, Literal, Protocol, get_args
 
 from logicenveval.errors import EnvSpecError
 from logicenveval.scene.geometry import Rect
@@ -87,6 +87,51 @@ class WallBox:
 
 Obstacle = tuple[int, int, int, int]  # x0, z0, x1, z1 in cells
 WallSegment = tuple[int, list[tuple[int, int, float, float]]]  # length, blocked (lo, hi, bottom, top)
+Side = Literal["s", "n", "w", "e"]
+
+#: cells kept between two openings on one side of a floor (`floorplan.GAP` = 0.1 m at 5 cm)
+OPENING_GAP_CELLS = 2
+
+
+@dataclass(frozen=True)
+class Opening:
+    """A door or window whose position along one side of a floor frame the solver chooses
+    (paper §3.3: "the doorway and window positions" are variables of the CSP).
+
+    `side` is `s` (z = 0), `n` (z = D), `w` (x = 0) or `e` (x = W) of the frame; `starts` the
+    inclusive ranges of cells where it may start along that side; `width` its cells along the
+    side; `depth` the cells of clearance in front of it, kept free of every box for a door (its
+    swing square) or, with `sill`, of the boxes taller than the sill (a window). Openings on one
+    side keep `gap` cells apart, and door clearances do not overlap each other or the obstacles.
+    """
+
+    id: str
+    side: Side
+    starts: tuple[tuple[int, int], ...]
+    width: int
+    depth: int
+    sill: float | None = None  # None: a door
+    gap: int = OPENING_GAP_CELLS
+
+
+def opening_rect(op: Opening, t: Any, frame: tuple[int, int]) -> tuple[Any, Any, Any, Any]:
+    """(x0, z0, x1, z1) of an opening's clearance when it starts at cell `t` (an int or a solver
+    expression)."""
+    W, D = frame
+    if op.side == "s":
+        return t, 0, t + op.width, op.depth
+    if op.side == "n":
+        return t, D - op.depth, t + op.width, D
+    if op.side == "w":
+        return 0, t, op.depth, t + op.width
+    return W - op.depth, t, W, t + op.width
+
+
+def opening_start(op: Opening, t: int, frame: tuple[int, int], grid: float) -> Placed:
+    """The `Placed` a backend returns for an opening: its start point on its side, in metres."""
+    W, D = frame
+    x, z = {"s": (t, 0), "n": (t, D), "w": (0, t), "e": (W, t)}[op.side]
+    return Placed(x * grid, z * grid, 0)
 
 
 class Backend(Protocol):
@@ -95,11 +140,13 @@ class Backend(Protocol):
     def pack(self, frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: float,
              obstacles: Sequence[Obstacle] = (), tall: Sequence[tuple[Obstacle, float]] = (),
              walkway: int = 0, rels: Sequence[FloorRel] = (), grid: float = 0.05,
-             free_rotation: bool = True) -> tuple[dict[str, Placed], list[Dropped]]:
-        """Non-overlapping boxes in a `frame` of cells; obstacles in cells; `tall` only for taller boxes.
+             free_rotation: bool = True, openings: Sequence[Opening] = ()) -> tuple[dict[str, Placed], list[Dropped]]:
+        """Non-overlapping boxes in a `frame` of cells; obstacles in cells; `tall` only for taller boxes;
+        doors and windows on the frame's sides at positions the solver chooses (`Opening`).
 
-        Returns placements (corner in cells times `grid`) of the boxes kept and the relaxation drops.
-        Task boxes are hard; if they cannot be placed, no placement is returned for any box.
+        Returns placements (corner in cells times `grid`) of the boxes kept, each opening's start
+        point on its side (`opening_start`), and the relaxation drops. Task boxes and openings are
+        hard; if they cannot be placed, nothing is returned.
         """
 
     def pack_walls(self, walls: Sequence[WallSegment], boxes: Sequence[WallBox], *, seed: int,

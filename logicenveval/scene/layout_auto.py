@@ -17,6 +17,7 @@ from logicenveval.scene.layout import (
     Box,
     FloorRel,
     Obstacle,
+    Opening,
     Placed,
     Solver,
     WallBox,
@@ -45,11 +46,11 @@ def choose(frame: tuple[int, int], boxes: Sequence[Box], walkway: int) -> Solver
 def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: float,
          obstacles: Sequence[Obstacle] = (), tall: Sequence[tuple[Obstacle, float]] = (),
          walkway: int = 0, rels: Sequence[FloorRel] = (), grid: float = 0.05,
-         free_rotation: bool = True) -> tuple[dict[str, Placed], list[Dropped]]:
+         free_rotation: bool = True, openings: Sequence[Opening] = ()) -> tuple[dict[str, Placed], list[Dropped]]:
     """See `scene.layout.Backend.pack`; solved by the backend `choose` names."""
     return backend(choose(frame, boxes, walkway)).pack(
         frame, boxes, seed=seed, timeout_s=timeout_s, obstacles=obstacles, tall=tall, walkway=walkway,
-        rels=rels, grid=grid, free_rotation=free_rotation)
+        rels=rels, grid=grid, free_rotation=free_rotation, openings=openings)
 
 
 def pack_walls(walls: Sequence[WallSegment], boxes: Sequence[WallBox], *, seed: int,

@@ -31,10 +31,13 @@ from logicenveval.scene.layout import (
     Box,
     FloorRel,
     Obstacle,
+    Opening,
     Placed,
     WallBox,
     WallSegment,
     cells,
+    opening_rect,
+    opening_start,
 )
 from logicenveval.scene.relax import Dropped, Status, Tracked, object_literals, relax
 
@@ -172,10 +175,12 @@ def _outside(m: cp_model.CpModel, ix: Any, iz: Any, ob: Obstacle, en: list[Lit])
 def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: float,
          obstacles: Sequence[Obstacle] = (), tall: Sequence[tuple[Obstacle, float]] = (),
          walkway: int = 0, rels: Sequence[FloorRel] = (), grid: float = 0.05,
-         free_rotation: bool = True) -> tuple[dict[str, Placed], list[Dropped]]:
+         free_rotation: bool = True, openings: Sequence[Opening] = ()) -> tuple[dict[str, Placed], list[Dropped]]:
     """See `scene.layout.Backend.pack`."""
     W, D = frame
     m = cp_model.CpModel()
+    ops = [_OpeningVars(m, op, frame, str(k)) for k, op in enumerate(openings)]
+    doors = [o for o in ops if o.op.sill is None]
     lit, tracked = object_literals(boxes, m.new_bool_var, "obj")
     vs = {b.id: _Vars(m, b, str(k), frame, free_rotation, lit.get(b.id)) for k, b in enumerate(boxes)}
 
@@ -201,7 +206,18 @@ def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: 
                 if b.id in ext and not _solid(ob):
                     ix, iz = vs[b.id].ix, vs[b.id].iz
                 _outside(m, ix, iz, ob, guard([b.id]))
-    m.add_no_overlap_2d(xs + fixed_x, zs + fixed_z)
+            for d in doors:
+                _outside(m, d.ix, d.iz, ob, [])
+    m.add_no_overlap_2d(xs + fixed_x + [d.ix for d in doors], zs + fixed_z + [d.iz for d in doors])
+    for w in ops:
+        if w.op.sill is not None:
+            taller = [b for b in boxes if b.size[1] > w.op.sill]
+            if taller:
+                m.add_no_overlap_2d([w.ix] + [vs[b.id].ix for b in taller], [w.iz] + [vs[b.id].iz for b in taller])
+    for side in "snwe":
+        line = [o.line for o in ops if o.op.side == side]
+        if len(line) > 1:
+            m.add_no_overlap(line)
     for k, (ob, min_h) in enumerate(tall):
         taller = [b for b in boxes if b.size[1] > min_h]
         if not taller:
@@ -229,7 +245,7 @@ def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: 
         return {}, dropped
     gone = {d.tracked.item for d in dropped if d.tracked.kind == "object"}
     val = solve.solver.value
-    out = {}
+    out = {o.op.id: opening_start(o.op, val(o.t), frame, grid) for o in ops}
     for b in boxes:
         if b.id in gone:
             continue
@@ -237,6 +253,20 @@ def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: 
         o = next(k for k in range(4) if solve.solver.boolean_value(v.o[k]))
         out[b.id] = Placed(val(v.x) * grid, val(v.z) * grid, o)
     return out, dropped
+
+
+class _OpeningVars:
+    """An opening's start cell, its clearance as x/z intervals and its stretch along the side
+    extended by the gap (one `NoOverlap` per side keeps openings apart)."""
+
+    def __init__(self, m: cp_model.CpModel, op: Opening, frame: tuple[int, int], tag: str) -> None:
+        self.op = op
+        self.t = m.new_int_var_from_domain(cp_model.Domain.from_intervals([list(r) for r in op.starts]),
+                                           f"op_{tag}")
+        x0, z0, x1, z1 = opening_rect(op, self.t, frame)
+        self.ix = m.new_interval_var(x0, x1 - x0, x1, f"opx_{tag}")
+        self.iz = m.new_interval_var(z0, z1 - z0, z1, f"opz_{tag}")
+        self.line = m.new_interval_var(self.t, op.width + op.gap, self.t + op.width + op.gap, f"opl_{tag}")
 
 
 def _meet(a: Obstacle, b: Obstacle) -> bool:

@@ -19,10 +19,13 @@ from logicenveval.scene.layout import (
     Box,
     FloorRel,
     Obstacle,
+    Opening,
     Placed,
     WallBox,
     WallSegment,
     cells,
+    opening_rect,
+    opening_start,
 )
 from logicenveval.scene.relax import Check, Dropped, Status, Tracked, object_literals, relax
 
@@ -61,7 +64,7 @@ class _Vars:
 def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: float,
          obstacles: Sequence[Obstacle] = (), tall: Sequence[tuple[Obstacle, float]] = (),
          walkway: int = 0, rels: Sequence[FloorRel] = (), grid: float = 0.05,
-         free_rotation: bool = True) -> tuple[dict[str, Placed], list[Dropped]]:
+         free_rotation: bool = True, openings: Sequence[Opening] = ()) -> tuple[dict[str, Placed], list[Dropped]]:
     """See `scene.layout.Backend.pack`."""
     W, D = frame
     ctx = z3.Context()  # a fresh context per solve: results do not depend on earlier solves
@@ -84,6 +87,23 @@ def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: 
     for i, a in enumerate(boxes):
         for bb in boxes[i + 1:]:
             guard([a.id, bb.id], vs[a.id].apart(vs[bb.id]))
+    ts = [z3.Int(f"op_{k}", ctx) for k in range(len(openings))]
+    door_rects: list[tuple[Any, Any, Any, Any]] = []
+    for k, (op, t) in enumerate(zip(openings, ts, strict=True)):
+        s.add(z3.Or(*[z3.And(t >= lo, t <= hi) for lo, hi in op.starts]))
+        rect = opening_rect(op, t, frame)
+        for b in boxes:
+            if op.sill is None or b.size[1] > op.sill:
+                guard([b.id], vs[b.id].disjoint(*rect))
+        for later, u in zip(openings[k + 1:], ts[k + 1:], strict=True):
+            if later.side == op.side:
+                s.add(z3.Or(t + op.width + op.gap <= u, u + later.width + later.gap <= t))
+        if op.sill is None:
+            for ob in obstacles:
+                s.add(_apart(rect, ob))
+            for other_rect in door_rects:
+                s.add(_apart(rect, other_rect))
+            door_rects.append(rect)
     exclusive = bool(walkway) and len(boxes) >= EXCLUSIVE_WALKWAYS_FROM
     strips: list[tuple[Any, Any, Any, Any]] = []
     if walkway:
@@ -104,6 +124,8 @@ def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: 
                 for ob in obstacles:
                     if ob[2] > ob[0] and ob[3] > ob[1]:
                         s.add(z3.Or(sx1 <= ob[0], sx0 >= ob[2], sz1 <= ob[1], sz0 >= ob[3]))
+                for rect in door_rects:
+                    s.add(_apart((sx0, sz0, sx1, sz1), rect))
                 for tx0, tz0, tx1, tz1 in strips:
                     s.add(z3.Or(sx1 <= tx0, tx1 <= sx0, sz1 <= tz0, tz1 <= sz0))
                 strips.append((sx0, sz0, sx1, sz1))
@@ -118,14 +140,19 @@ def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: 
     if not ok:
         return {}, dropped
     gone = {d.tracked.item for d in dropped if d.tracked.kind == "object"}
-    out = {}
     ev = s.model().eval
+    out = {op.id: opening_start(op, ev(t).as_long(), frame, grid) for op, t in zip(openings, ts, strict=True)}
     for b in boxes:
         if b.id in gone:
             continue
         v = vs[b.id]
         out[b.id] = Placed(ev(v.x).as_long() * grid, ev(v.z).as_long() * grid, ev(v.o).as_long())
     return out, dropped
+
+
+def _apart(a: tuple[Any, Any, Any, Any], b: tuple[Any, Any, Any, Any]) -> z3.BoolRef:
+    """Two rectangles (x0, z0, x1, z1) of cells do not overlap (touching is fine)."""
+    return z3.Or(a[2] <= b[0], b[2] <= a[0], a[3] <= b[1], b[3] <= a[1])
 
 
 def _check(s: z3.Solver) -> Check:

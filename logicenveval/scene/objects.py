@@ -3,44 +3,30 @@
 from __future__ import annotations
 
 import difflib
-import re
 from collections.abc import Iterable, Mapping
 from typing import Any
 
 import numpy as np
 
 from logicenveval.domain.catalog import Catalog, Category
+from logicenveval.domain.categories import singular, snake, vocabulary
 from logicenveval.errors import CatalogError
 from logicenveval.model.rooms import room_type_of
 from logicenveval.scene.spec import ObjectRequest
 
 
-def _norm(text: str) -> str:
-    return re.sub(r"[^a-z0-9]+", "_", text.strip().lower()).strip("_")
-
-
-def _singular(word: str) -> str:
-    for suf, rep in (("ies", "y"), ("ves", "f"), ("ses", "s"), ("s", "")):
-        if word.endswith(suf) and len(word) > len(suf) + 2:
-            return word[: -len(suf)] + rep
-    return word
-
-
 def resolve_category(text: str, catalog: Catalog) -> tuple[str, str | None]:
-    """Catalog category for free text: exact, synonym, then lexical similarity (with a warning)."""
-    key = _norm(text)
-    if key in catalog.categories:
-        return key, None
-    sing = "_".join(_singular(t) for t in key.split("_"))
-    if sing in catalog.categories:
-        return sing, None
-    for name, cat in catalog.categories.items():
-        if key in {_norm(s) for s in cat.synonyms} or sing in {_norm(s) for s in cat.synonyms}:
-            return name, None
+    """Catalog category for free text (an LLM's reply): the one vocabulary
+    (`domain.categories`: key, synonym, AI2-THOR type, any spelling or plural), else the
+    lexically closest category, with a warning."""
+    known = vocabulary(catalog).canonical(text)
+    if known is not None:
+        return known, None
+    sing = singular(text)
     tokens = set(sing.split("_"))
     best, score = "", -1.0
     for name, cat in sorted(catalog.categories.items()):
-        for cand in [name, *(_norm(s) for s in cat.synonyms)]:
+        for cand in [name, *(snake(s) for s in cat.synonyms)]:
             ctoks = set(cand.split("_"))
             overlap = len(tokens & ctoks) / len(tokens | ctoks)
             s = overlap + difflib.SequenceMatcher(None, sing, cand).ratio()

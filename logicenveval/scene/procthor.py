@@ -17,7 +17,6 @@ that mapping.
 
 from __future__ import annotations
 
-import json
 import math
 from dataclasses import dataclass
 from functools import lru_cache, partial
@@ -26,6 +25,7 @@ from typing import Any
 
 from logicenveval.domain.catalog import Catalog
 from logicenveval.errors import ConfigError
+from logicenveval.limits import parse_json, read_text
 
 Size = tuple[float, float, float]
 MAPPING_FILE = Path(__file__).resolve().parents[2] / "benchmark_data" / "procthor_assets.json"
@@ -91,15 +91,14 @@ class ProcthorDB:
     source: str
 
 
+_DB_HINT = "--procthor-db is ProcTHOR's procthor/databases folder"
+
+
 def _read(path: Path) -> Any:
-    try:
-        return json.loads(path.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise ConfigError(f"{path.name} not found", file=str(path),
-                          hint="--procthor-db is ProcTHOR's procthor/databases folder") from None
-    except json.JSONDecodeError as exc:
-        raise ConfigError(f"invalid JSON: {exc.msg}", file=str(path), line=exc.lineno,
-                          hint="use the unmodified ProcTHOR database file") from None
+    """One database file, read as untrusted input (size limit, UTF-8, JSON) with one message."""
+    text = read_text(path, what=f"ProcTHOR database file {path.name}", error=ConfigError,
+                     max_bytes="max_env_bytes", hint=_DB_HINT)
+    return parse_json(text, file=str(path), error=ConfigError)
 
 
 def _hole(entry: dict[str, Any]) -> Hole:
@@ -110,6 +109,9 @@ def _hole(entry: dict[str, Any]) -> Hole:
 def load_procthor_db(folder: str | Path) -> ProcthorDB:
     """Read ProcTHOR's asset, material and wall-hole databases from `folder`."""
     d = Path(folder)
+    if not d.is_dir():
+        raise ConfigError("not a folder" if d.exists() else "folder not found", file=str(d),
+                          field="--procthor-db", hint=_DB_HINT)
     raw_assets, raw_mats, raw_holes = (_read(d / n) for n in (
         "asset-database.json", "material-database.json", "wall-holes.json"))
     try:
@@ -119,9 +121,9 @@ def load_procthor_db(folder: str | Path) -> ProcthorDB:
                   for group in raw_assets.values() for a in group}
         materials = frozenset(m for group in raw_mats.values() for m in group)
         holes = {k: _hole(v) for k, v in raw_holes.items()}
-    except (KeyError, TypeError, AttributeError) as exc:
-        raise ConfigError(f"not in ProcTHOR's database format (missing {exc})", file=str(d),
-                          hint="--procthor-db is ProcTHOR's procthor/databases folder") from None
+    except (KeyError, TypeError, AttributeError, ValueError, IndexError) as exc:
+        raise ConfigError(f"not in ProcTHOR's database format ({type(exc).__name__}: "
+                          f"{str(exc)[:200]})", file=str(d), hint=_DB_HINT) from None
     return ProcthorDB(assets, materials, holes, str(d))
 
 
@@ -198,6 +200,12 @@ def mapping_db(mapping: dict[str, Any]) -> ProcthorDB:
                                                               (o["offset"][0], o["offset"][1]))
     materials = frozenset(mapping["materials"].values())
     return ProcthorDB(assets, materials, holes, f"our mapping ({MAPPING_FILE.name})")
+
+
+@lru_cache(maxsize=1)
+def our_assets() -> ProcthorDB:
+    """The assets our recorded mapping names, as a database (what we know without ProcTHOR's)."""
+    return mapping_db(load_mapping())
 
 
 def opening_asset(mapping: dict[str, Any], kind: str, width: float, height: float) -> tuple[str, Hole]:

@@ -42,21 +42,28 @@ def port_doc(kind: str, port: str) -> str:
     return _LEAF_PORT_DOCS.get((kind, port), _PORT_DOCS.get(port, port))
 
 
-def _entries() -> list[tuple[str, str, str, tuple[str, ...]]]:
-    """(tag, ID, description, ports) of every library leaf, actions first, in library order."""
-    out = [("Action", a.name, a.doc, (*a.ports, *a.optional)) for a in ACTIONS.values()]
-    out += [("Condition", c.name, c.doc, c.ports) for c in CONDITIONS.values()]
+#: one model entry: (tag, ID, description, ((port, port description), ...))
+Entry = tuple[str, str, str, tuple[tuple[str, str], ...]]
+
+
+def library_entries() -> list[Entry]:
+    """The entries of every library leaf, actions first, in library order."""
+    out = [("Action", a.name, a.doc, tuple((p, port_doc(a.name, p)) for p in (*a.ports, *a.optional)))
+           for a in ACTIONS.values()]
+    out += [("Condition", c.name, c.doc, tuple((p, port_doc(c.name, p)) for p in c.ports))
+            for c in CONDITIONS.values()]
     return out
 
 
-def tree_nodes_model(indent: str = "  ") -> str:
-    """The library's `<TreeNodesModel>` element as text, each line prefixed by `indent`."""
+def tree_nodes_model(indent: str = "  ", entries: list[Entry] | None = None) -> str:
+    """The library's `<TreeNodesModel>` element (or one of `entries`) as text, each line
+    prefixed by `indent`."""
     lines = [f"{indent}<TreeNodesModel>"]
-    for tag, kind, doc, ports in _entries():
+    for tag, kind, doc, ports in library_entries() if entries is None else entries:
         lines.append(f"{indent}  <{tag} ID={quoteattr(kind)}>")
-        for port in ports:
+        for port, text in ports:
             lines.append(f"{indent}    <input_port name={quoteattr(port)} type={quoteattr(PORT_TYPE)}>"
-                         f"{escape(port_doc(kind, port))}</input_port>")
+                         f"{escape(text)}</input_port>")
         lines.append(f"{indent}    <MetadataFields><Metadata description={quoteattr(doc)}/>"
                      "</MetadataFields>")
         lines.append(f"{indent}  </{tag}>")
@@ -68,13 +75,16 @@ Canonical = tuple[tuple[str, str, str, tuple[tuple[str, str, str], ...]], ...]
 
 
 def _canonical(model: Element) -> Canonical:
+    """The model's entries and each entry's ports, sorted: order carries no meaning (BT.CPP's
+    `writeTreeNodesModelXML` sorts entries by ID and lists ports in hash-map order; we write
+    the library's order)."""
     out = []
     for decl in model:
-        ports = tuple((p.get("name", ""), p.get("type", ""), (p.text or "").strip())
-                      for p in decl if p.tag.endswith("_port"))
+        ports = tuple(sorted((p.get("name", ""), p.get("type", ""), (p.text or "").strip())
+                             for p in decl if p.tag.endswith("_port")))
         meta = next((m.get("description", "") for m in decl.iter("Metadata")), "")
         out.append((decl.tag, decl.get("ID", ""), meta, ports))
-    return tuple(out)
+    return tuple(sorted(out))
 
 
 CURRENT: Canonical = _canonical(fromstring(tree_nodes_model()))

@@ -66,6 +66,29 @@ _ROOM_PORTS = {("Walk", "target"), ("InRoom", "room"), ("AgentIn", "room")}
 #: ports whose value is free text (attribute keys/values, state flags)
 _FREE_PORTS = {("Attr", "key"), ("Attr", "value"), ("State", "flag")}
 _FLOOR_PORTS = {("Place", "target"), ("On", "target"), ("Walk", "target")}
+#: integer parameters as BehaviorTree.CPP's `convertFromString<int>` (std::from_chars, int32)
+#: reads them in full: ASCII digits, an optional '-', nothing else (`int()` would also take
+#: "1_0", " 3", "+3" and non-ASCII digits such as "٣")
+_INTEGER = re.compile(r"-?[0-9]+")
+_INT32 = (-(2**31), 2**31 - 1)
+#: the spellings BehaviorTree.CPP's `convertFromString<bool>` accepts
+_BOOLS = {"1": "true", "true": "true", "True": "true", "TRUE": "true",
+          "0": "false", "false": "false", "False": "false", "FALSE": "false"}
+_ARTICLE = {"Action": "an", "Condition": "a", "Control": "a", "Decorator": "a"}
+
+
+def _wrapper_of(kind: str) -> str | None:
+    """The element a node of this ID is wrapped in (BehaviorTree.CPP's registered type;
+    None for an unknown ID, which is reported as such)."""
+    if kind in ACTIONS or kind in CONSTANT_LEAVES:
+        return "Action"
+    if kind in CONDITIONS:
+        return "Condition"
+    if kind in COMPOSITES or kind in BRANCHING:
+        return "Control"
+    if kind in DECORATORS:
+        return "Decorator"
+    return "SubTree" if kind == "SubTree" else None
 
 
 def _metadata(key: str) -> bool:
@@ -87,6 +110,97 @@ def ports_of(kind: str) -> tuple[tuple[str, ...], tuple[str, ...]]:
     if kind in CONDITIONS:
         return CONDITIONS[kind].ports, ()
     return (), ()
+
+
+#: what is wrong with a node: (message, fix, error class)
+Problem = tuple[str, str, type[PolicyFormatError]]
+
+
+def _children_problem(kind: str, n: int) -> Problem | None:
+    """Children counts BT.CPP enforces (VerifyXML, IfThenElse/WhileDoElse ticks)."""
+    if kind in DECORATORS and n != 1:
+        return (f"decorator <{kind}> needs exactly one child, has {n}",
+                "wrap several children in a Sequence", PolicyFormatError)
+    if kind in BRANCHING and n not in (2, 3):
+        return (f"<{kind}> needs 2 or 3 children (condition, then, else), has {n}",
+                "give it a condition, a then-branch and optionally an else-branch", PolicyFormatError)
+    if kind in COMPOSITES and n < MIN_CHILDREN.get(kind, 1):
+        return (f"<{kind}> needs at least {MIN_CHILDREN.get(kind, 1)} child(ren), has {n}",
+                "add children", PolicyFormatError)
+    if (kind in ACTIONS or kind in CONDITIONS or kind in CONSTANT_LEAVES or kind == "SubTree") and n:
+        return (f"node <{kind}> is a leaf and cannot have children", "move the children out of it",
+                PolicyFormatError)
+    return None
+
+
+def _parallel_problem(node: PolicyNode) -> Problem | None:
+    """BT.CPP throws when a threshold exceeds the children ("can never succeed/fail")."""
+    if node.kind != "Parallel":
+        return None
+    n = len(node.children)
+    for key, default in (("success_count", -1), ("failure_count", 1)):
+        count = int(node.param(key) or default)
+        if parallel_threshold(count, n) > n:
+            return (f"<Parallel> {key}={count} is more than its {n} children (BehaviorTree.CPP "
+                    "raises 'Number of children is less than threshold')",
+                    f"use a value between 1 and {n}, or -1 for all", PolicyFormatError)
+    return None
+
+
+def _port_problem(kind: str, attrs: dict[str, str], roles: set[str] | None,
+                  rooms: set[str] | None) -> Problem | None:
+    """A leaf's ports: exactly the library's, each naming a role of the task (or a room or
+    the floor where the port allows it, or free text where the port is free)."""
+    required, optional = ports_of(kind)
+    valid = [*required, *optional]
+    for key in attrs:
+        if key not in valid:
+            return f"node <{kind}> has no port {key!r}", f"valid ports: {valid or 'none'}", BadPortError
+    for key in required:
+        if key not in attrs:
+            return f"node <{kind}> is missing port {key!r}", f"valid ports: {valid}", BadPortError
+    if roles is None:
+        return None
+    for port, value in attrs.items():
+        if ((kind, port) in _FREE_PORTS or value in roles
+                or ((kind, port) in _FLOOR_PORTS and value == "floor")
+                or ((kind, port) in _ROOM_PORTS
+                    and (is_room_type(value) or (rooms is not None and value in rooms)))):
+            continue
+        return (f"node <{kind}>: {port}={value!r} is not a role of the task",
+                f"use one of: {', '.join(sorted(roles))}", BadPortError)
+    return None
+
+
+def node_problem(node: PolicyNode, trees: Iterable[str], roles: Iterable[str] | None = None,
+                 rooms: Iterable[str] | None = None) -> str | None:
+    """Why one node of a built policy (its own kind, parameters, ports and number of children;
+    not its children) would not load, or None; `trees` are the policy's BehaviorTree IDs.
+
+    The loader's rules for what a `PolicyNode` can hold, for callers that edit loaded policies
+    (mutation operators) and check only the nodes they made.
+    """
+    kind = node.kind
+    problem: Problem | None
+    if kind == "SubTree":
+        sub = node.param("ID")
+        if sub not in set(trees) or len(node.params) != 1:
+            return f"<SubTree> needs ID naming one of {sorted(trees)} and nothing else"
+        problem = _children_problem(kind, len(node.children))
+    elif kind in ACTIONS or kind in CONDITIONS or kind in CONSTANT_LEAVES:
+        problem = _children_problem(kind, len(node.children)) or _port_problem(
+            kind, dict(node.params), set(roles) if roles is not None else None,
+            set(rooms) if rooms is not None else None)
+    elif kind in COMPOSITES or kind in BRANCHING or kind in DECORATORS:
+        allowed = NODE_PARAMS.get(kind, {})
+        keys = [k for k, _ in node.params]
+        if len(set(keys)) != len(keys) or not set(keys) <= set(allowed) or any(
+                req and k not in keys for k, (req, _) in allowed.items()):
+            return f"node <{kind}> has parameters {keys}, valid: {sorted(allowed)}"
+        problem = _children_problem(kind, len(node.children)) or _parallel_problem(node)
+    else:
+        return f"unknown node <{kind}>"
+    return None if problem is None else problem[0]
 
 
 class _LineBuilder(TreeBuilder):
@@ -162,6 +276,7 @@ class _Reader:
             if "ID" not in attrs:
                 raise self.fail(elem, f"<{tag}> needs an ID attribute", f'write <{tag} ID="..."/>')
             kind = attrs.pop("ID")
+            self._check_wrapper(elem, tag, kind)
         where = f"node <{kind}>"
         if kind in REJECTED:
             raise self.fail(elem, f"{where} is not supported: it needs wall time or blackboard "
@@ -171,30 +286,44 @@ class _Reader:
             if key in attrs:
                 raise self.fail(elem, f"{where}: attribute {key!r} (scripting/remapping) is not "
                                 "supported in v1", f"remove {key}")
+        # `name` is the instance name (metadata, never a port): `{x}` there is plain text
+        name = attrs.pop("name", None)
         for key, value in attrs.items():
             if _BLACKBOARD.search(value):
                 raise self.fail(elem, f"{where}: port {key}={value!r} uses a blackboard value; "
                                 "not supported in v1", "write the role name literally")
-        name = attrs.pop("name", None)
         children = [c for c in elem]
         if kind == "SubTree":
             return self._subtree(elem, attrs, children, name)
         if kind in ACTIONS or kind in CONDITIONS or kind in CONSTANT_LEAVES:
-            if tag == "Condition" and kind in ACTIONS:
-                raise self.fail(elem, f"{kind} is an action, not a condition",
-                                f'write <Action ID="{kind}" .../>')
-            if tag == "Action" and kind in CONDITIONS:
-                raise self.fail(elem, f"{kind} is a condition, not an action",
-                                f'write <Condition ID="{kind}" .../>')
-            if children:
-                raise self.fail(elem, f"{where} is a leaf and cannot have children",
-                                "move the children out of it")
+            problem = _children_problem(kind, len(children))
+            if problem is not None:
+                raise self.fail(elem, *problem)
             return PolicyNode(kind, self._ports(elem, kind, attrs), (), name,
                               int(elem.get(_LINE, "0")))
         if kind in COMPOSITES or kind in BRANCHING or kind in DECORATORS:
             return self._control(elem, kind, attrs, children, name)
         raise self.fail(elem, f"unknown node <{kind}>",
                         f"use one of: {', '.join(known_nodes())}", UnknownNodeError)
+
+    def _check_wrapper(self, elem: Element, tag: str, kind: str) -> None:
+        """`<Action|Condition|Control|Decorator ID=...>` must name a node of that type.
+
+        BehaviorTree.CPP looks the node up by ID and ignores the tag (it loads `<Action
+        ID="Sequence">` with children and `<Control ID="Walk"/>`), but Groot2 draws and edits the
+        node as the tag says; a mismatch is an authoring error, refused here.
+        """
+        want = _wrapper_of(kind)
+        if want is None or want == tag:
+            return
+        if want == "SubTree":
+            raise self.fail(elem, f"<{tag} ID=\"SubTree\"> is not how a SubTree is written",
+                            '<SubTree ID="TreeName"/>')
+        form = f'<{want} ID="{kind}" .../>' if want in ("Action", "Condition") else (
+            f'<{want} ID="{kind}">...</{want}> or <{kind}>...</{kind}>')
+        raise self.fail(elem, f"<{tag} ID=\"{kind}\">: {kind} is {_ARTICLE[want]} "
+                        f"{want.lower()} node, not {_ARTICLE[tag]} {tag.lower()} node",
+                        f"write {form}")
 
     def _subtree(self, elem: Element, attrs: dict[str, str], children: list[Element],
                  name: str | None) -> PolicyNode:
@@ -224,74 +353,42 @@ class _Reader:
                                     f'add {key}="N" (-1 means unbounded)')
                 continue
             params.append((key, self._param(elem, kind, key, attrs[key])))
-        n = len(children)
-        if kind in DECORATORS and n != 1:
-            raise self.fail(elem, f"decorator <{kind}> needs exactly one child, has {n}",
-                            "wrap several children in a Sequence")
-        if kind in BRANCHING and n not in (2, 3):
-            raise self.fail(elem, f"<{kind}> needs 2 or 3 children (condition, then, else), has {n}",
-                            "give it a condition, a then-branch and optionally an else-branch")
-        if kind in COMPOSITES and n < MIN_CHILDREN.get(kind, 1):
-            raise self.fail(elem, f"<{kind}> needs at least {MIN_CHILDREN.get(kind, 1)} "
-                            f"child(ren), has {n}", "add children")
+        problem = _children_problem(kind, len(children))
+        if problem is not None:
+            raise self.fail(elem, *problem)
         kids = tuple(self.node(c) for c in children)
         node = PolicyNode(kind, tuple(params), kids, name, int(elem.get(_LINE, "0")))
-        if kind == "Parallel":
-            self._check_parallel(elem, node)
+        problem = _parallel_problem(node)
+        if problem is not None:
+            raise self.fail(elem, *problem)
         return node
 
     def _param(self, elem: Element, kind: str, key: str, text: str) -> str:
         if (kind, key) in BOOL_PARAMS:
-            word = {"true": "true", "1": "true", "false": "false", "0": "false"}.get(text.lower())
+            word = _BOOLS.get(text)
             if word is None:
-                raise self.fail(elem, f"node <{kind}>: {key}={text!r} is not a boolean",
-                                f'write {key}="true" or "false"')
+                raise self.fail(elem, f"node <{kind}>: {key}={text[:40]!r} is not a boolean "
+                                "as BehaviorTree.CPP reads one (0, 1, true, True, TRUE, false, "
+                                "False, FALSE)", f'write {key}="true" or "false"')
             return word
-        try:
-            return str(int(text))
-        except ValueError:
-            raise self.fail(elem, f"node <{kind}>: {key}={text!r} is not an integer",
-                            f'write {key}="3"') from None
-
-    def _check_parallel(self, elem: Element, node: PolicyNode) -> None:
-        """BT.CPP throws when a threshold exceeds the children ("can never succeed/fail")."""
-        n = len(node.children)
-        for key, default in (("success_count", -1), ("failure_count", 1)):
-            count = int(node.param(key) or default)
-            if parallel_threshold(count, n) > n:
-                raise self.fail(elem, f"<Parallel> {key}={count} is more than its {n} children "
-                                "(BehaviorTree.CPP raises 'Number of children is less than "
-                                "threshold')", f"use a value between 1 and {n}, or -1 for all")
+        if not _INTEGER.fullmatch(text):
+            lead = _INTEGER.match(text)
+            why = f"; BehaviorTree.CPP would read only its leading {lead.group()!r}" if lead else ""
+            raise self.fail(elem, f"node <{kind}>: {key}={text[:40]!r} is not an integer "
+                            f"(ASCII digits with an optional leading '-'){why}",
+                            f'write {key}="3"')
+        value = int(text)
+        if not _INT32[0] <= value <= _INT32[1]:
+            raise self.fail(elem, f"node <{kind}>: {key}={text[:40]} is out of the range of a "
+                            "32-bit int (BehaviorTree.CPP refuses it)", f'write {key}="3"')
+        return str(value)
 
     def _ports(self, elem: Element, kind: str, attrs: dict[str, str]) -> tuple[tuple[str, str], ...]:
-        required, optional = ports_of(kind)
-        valid = [*required, *optional]
-        for key in attrs:
-            if key not in valid:
-                raise self.fail(elem, f"node <{kind}> has no port {key!r}",
-                                f"valid ports: {valid or 'none'}", BadPortError)
-        for key in required:
-            if key not in attrs:
-                raise self.fail(elem, f"node <{kind}> is missing port {key!r}",
-                                f"valid ports: {valid}", BadPortError)
-        for key, value in attrs.items():
-            self._check_value(elem, kind, key, value)
+        problem = _port_problem(kind, attrs, self.roles, self.rooms)
+        if problem is not None:
+            raise self.fail(elem, *problem)
+        valid = [*ports_of(kind)[0], *ports_of(kind)[1]]
         return tuple((k, attrs[k]) for k in valid if k in attrs)
-
-    def _check_value(self, elem: Element, kind: str, port: str, value: str) -> None:
-        if (kind, port) in _FREE_PORTS or self.roles is None:
-            return
-        if value in self.roles:
-            return
-        if (kind, port) in _FLOOR_PORTS and value == "floor":
-            return
-        if (kind, port) in _ROOM_PORTS and (
-            is_room_type(value) or (self.rooms is not None and value in self.rooms)
-        ):
-            return
-        valid = sorted(self.roles)
-        raise self.fail(elem, f"node <{kind}>: {port}={value!r} is not a role of the task",
-                        f"use one of: {', '.join(valid)}", BadPortError)
 
     # ----- documents ---------------------------------------------------------------------
     def document(self, root: Element, path: Path | None, seen: set[str], acc: _Trees) -> _Doc:

@@ -134,13 +134,21 @@ class Leaf(BTNode):
     without its per-tick debug-string formatting and generator re-creation, which cost more
     than the action itself; nodes still tick through py_trees' generator protocol."""
 
+    #: BT.CPP `StatefulActionNode::tick`: a finished action that nobody reset returns its
+    #: status again without running (an action in the condition slot of `WhileDoElse`, or of
+    #: an `IfThenElse` that failed on it, stays finished until a parent resets it); conditions
+    #: and `AlwaysSuccess`/`AlwaysFailure` are evaluated on every tick
+    keeps_result: bool = False
+
     def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
-        if self.status is not RUNNING:
-            self.initialise()
-        st = self.update()
-        if st is not RUNNING:
-            self.terminate(st)
-        self.status = st
+        st = self.status
+        if not (self.keeps_result and (st is SUCCESS or st is FAILURE)):
+            if st is not RUNNING:
+                self.initialise()
+            st = self.update()
+            if st is not RUNNING:
+                self.terminate(st)
+            self.status = st
         ep = self.binding.ep
         if ep is not None and ep.ticks is not None:
             ep.ticks.append((ep.tick, self, st))
@@ -153,6 +161,8 @@ class Leaf(BTNode):
 
 class ActionNode(Leaf):
     """An action of the library: `initialise` is BT.CPP's onStart, a RUNNING `update` onRunning."""
+
+    keeps_result = True
 
     def __init__(self, name: str, spec: ActionSpec, args: dict[str, str]) -> None:
         super().__init__(name)
@@ -432,7 +442,8 @@ class ReactiveFallback(_Reactive, py_trees.composites.Selector):
 class IfThenElse(Control):
     """The condition is ticked once; then the chosen branch runs to completion.
 
-    With only two children a false condition returns FAILURE (BT.CPP).
+    With only two children a false condition returns FAILURE (BT.CPP), leaving the condition
+    finished: an action there is not run again until a halt or a finished branch resets it.
     """
 
     def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
@@ -449,7 +460,8 @@ class IfThenElse(Control):
             elif len(kids) == 3:
                 self.idx = 2
             else:
-                self.stop(FAILURE)
+                # BT.CPP returns FAILURE without `resetChildren`: the condition keeps its status
+                self.status = FAILURE
                 yield self
                 return
         branch = kids[self.idx]
@@ -463,7 +475,11 @@ class IfThenElse(Control):
 
 
 class WhileDoElse(Control):
-    """Re-checks the condition every tick and halts the branch that is no longer chosen."""
+    """Re-checks the condition every tick and halts the branch that is no longer chosen.
+
+    The condition is reset only when the node finishes or is halted, so an action there runs
+    once and returns the same status while the branch is RUNNING (BT.CPP).
+    """
 
     def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
         kids = self.children

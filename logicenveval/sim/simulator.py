@@ -7,8 +7,11 @@ episode, and mutation scoring record an episode and resume it from any root tick
 
 from __future__ import annotations
 
+from collections import deque
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
+from itertools import repeat
+from operator import attrgetter
 from pathlib import Path
 
 from py_trees.common import Status
@@ -25,6 +28,7 @@ from logicenveval.sim.nodes import (
     IDLE,
     RUNNING,
     BTNode,
+    Control,
     Episode,
     Violation,
     build_tree,
@@ -36,11 +40,13 @@ from logicenveval.sim.world import World
 
 @dataclass(frozen=True, slots=True)
 class Snapshot:
-    """An episode between two root ticks: ticks done, every node's status, the `state()` of
-    the nodes that keep more than a status (controls' memory, loop counters), the world."""
+    """An episode between two root ticks: ticks done, every node's status, the child index of
+    the controls that keep only that, the `state()` of the few nodes that keep more (loop
+    counters, Parallel's finished children, TryCatch's mode), the world."""
 
     tick: int
     statuses: list[Status]
+    indices: list[int]
     states: list[object]
     world: World
 
@@ -55,6 +61,10 @@ class Recording:
     snapshots: list[Snapshot]
 
 
+_STATUS = attrgetter("status")
+_IDX = attrgetter("idx")
+
+
 class CompiledPolicy:
     """The policy as a py_trees tree, reusable across episodes (not thread-safe)."""
 
@@ -62,10 +72,16 @@ class CompiledPolicy:
         self.policy = policy
         self.root: BTNode = build_tree(policy)
         self._nodes: list[BTNode] = [n for n in self.root.iterate() if isinstance(n, BTNode)]
-        #: the nodes with more state than a status (restoring statuses alone is cheaper)
-        self._stateful = [n for n in self._nodes if type(n).state is not BTNode.state]
-        self._stateful_at = {j: k for k, j in enumerate(
-            j for j, n in enumerate(self._nodes) if type(n).state is not BTNode.state)}
+        # snapshots read and restore plain attributes in C loops (`map`), a method call only
+        # for the few nodes whose state is more than a status and a child index
+        kinds = [type(n).state for n in self._nodes]
+        self._indexed = [n for n, k in zip(self._nodes, kinds, strict=True) if k is Control.state]
+        self._stateful = [n for n, k in zip(self._nodes, kinds, strict=True)
+                          if k is not BTNode.state and k is not Control.state]
+        self._indexed_at = {j: i for i, j in enumerate(
+            j for j, k in enumerate(kinds) if k is Control.state)}
+        self._stateful_at = {j: i for i, j in enumerate(
+            j for j, k in enumerate(kinds) if k is not BTNode.state and k is not Control.state)}
 
     @property
     def nodes(self) -> list[BTNode]:
@@ -75,7 +91,10 @@ class CompiledPolicy:
     def state_at(self, snapshot: Snapshot, j: int) -> object:
         """The `state()` node `j` had in `snapshot`."""
         k = self._stateful_at.get(j)
-        return snapshot.statuses[j] if k is None else snapshot.states[k]
+        if k is not None:
+            return snapshot.states[k]
+        i = self._indexed_at.get(j)
+        return snapshot.statuses[j] if i is None else (snapshot.statuses[j], snapshot.indices[i])
 
     def status(self, world: World, goal: Cond | None, *, tick_limit: int = 50) -> str:
         """The verdict status of one episode on `world` (mutated in place: pass a copy).
@@ -97,10 +116,10 @@ class CompiledPolicy:
         ticks: list[tuple[int, BTNode, Status]] = []
         ep = self.root.binding.ep = Episode(world, ticks=ticks)
         snapshots: list[Snapshot] = []
-        nodes, stateful = self._nodes, self._stateful
+        nodes, indexed, stateful = self._nodes, self._indexed, self._stateful
 
         def snapshot() -> None:
-            snapshots.append(Snapshot(ep.tick, [n.status for n in nodes],
+            snapshots.append(Snapshot(ep.tick, list(map(_STATUS, nodes)), list(map(_IDX, indexed)),
                                       [n.state() for n in stateful], world.copy()))
 
         try:
@@ -116,8 +135,8 @@ class CompiledPolicy:
         instead of from the initial state; `fresh` are nodes spliced in since, which start
         reset, except those in `mirror`, which take the state of the tree's node at that
         index."""
-        for node, status in zip(self._nodes, snapshot.statuses, strict=True):
-            node.status = status
+        deque(map(setattr, self._nodes, repeat("status"), snapshot.statuses), maxlen=0)
+        deque(map(setattr, self._indexed, repeat("idx"), snapshot.indices), maxlen=0)
         for node, state in zip(self._stateful, snapshot.states, strict=True):
             node.restore(state)
         for node in fresh:

@@ -12,6 +12,7 @@ from collections import deque
 from dataclasses import dataclass
 
 from logicenveval.domain.catalog import Catalog, load_catalog
+from logicenveval.domain.categories import vocabulary
 from logicenveval.model.conditions import Holds
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.rooms import room_type_of
@@ -53,8 +54,10 @@ class _Static:
     def __init__(self, env: EnvSpec, catalog: Catalog) -> None:
         self.roles: dict[str, str | None] = dict(env.roles)
         self.object_ids: frozenset[str] = frozenset(o.id for o in env.objects)
-        self.category = {o.id: o.category for o in env.objects}
-        self.caps = {o.id: caps_of(o.category, catalog) for o in env.objects}
+        # the catalog key each object's category names (domain.categories); unknown: as written
+        vocab = vocabulary(catalog)
+        self.category = {o.id: vocab.canonical(o.category) or o.category for o in env.objects}
+        self.caps = {oid: caps_of(c, catalog) for oid, c in self.category.items()}
         self.attributes = {o.id: dict(o.attributes) for o in env.objects}
         self.room_ids: tuple[str, ...] = tuple(r.id for r in env.rooms)
         # a name -> room ids it denotes: the id itself, its EnvSpec type and its derived type
@@ -113,7 +116,7 @@ class World:
         static = _Static(env, cat)
         flags: set[tuple[str, str]] = set()
         for o in env.objects:
-            known = cat.get(o.category)
+            known = cat.get(static.category[o.id])
             merged = {**(known.default_states if known else {}), **o.states}
             flags.update((o.id, f) for f, v in merged.items() if v)
         return cls(

@@ -12,7 +12,12 @@
 // `Tree::tickExactlyOnce()`, until the root is not RUNNING or `max_ticks` ticks were made.
 // Output per case: the events of each tick (stub name + returned status, or HALTED when BT.CPP
 // halts a RUNNING stub) with the root status, or the error BT.CPP raised (at load or tick).
+//
+// Second use:  recorder --model MODEL.json MODEL.xml  registers the leaves MODEL.json lists
+// (tag, ID, description, input ports with their descriptions) and writes the Groot2
+// <TreeNodesModel> BT.CPP prints for them (writeTreeNodesModelXML, built-in nodes left out).
 #include <behaviortree_cpp/bt_factory.h>
+#include <behaviortree_cpp/xml_parsing.h>
 #include <behaviortree_cpp/contrib/json.hpp>
 
 #include <algorithm>
@@ -133,11 +138,44 @@ json record(const json& c)
 }
 }  // namespace
 
+int writeModel(const char* spec_path, const char* out_path)
+{
+  std::ifstream in(spec_path);
+  const json spec = json::parse(in);
+  Recorder rec;
+  BT::BehaviorTreeFactory factory;
+  for(const auto& e : spec.at("entries"))
+  {
+    BT::PortsList ports;
+    for(const auto& p : e.at("ports"))
+    {
+      ports.insert(BT::InputPort<std::string>(p.at(0).get<std::string>(),
+                                              p.at(1).get<std::string>()));
+    }
+    const auto id = e.at("id").get<std::string>();
+    if(e.at("tag") == "Action")
+    {
+      factory.registerNodeType<StubAction>(id, ports, &rec);
+    }
+    else
+    {
+      factory.registerNodeType<StubCondition>(id, ports, &rec);
+    }
+    factory.addMetadataToManifest(id, { { "description", e.at("description").get<std::string>() } });
+  }
+  std::ofstream(out_path) << BT::writeTreeNodesModelXML(factory, false) << "\n";
+  return 0;
+}
+
 int main(int argc, char** argv)
 {
+  if(argc == 4 && std::string(argv[1]) == "--model")
+  {
+    return writeModel(argv[2], argv[3]);
+  }
   if(argc != 3)
   {
-    std::cerr << "usage: recorder CASES.json TRACES.json\n";
+    std::cerr << "usage: recorder CASES.json TRACES.json | recorder --model MODEL.json MODEL.xml\n";
     return 2;
   }
   std::ifstream in(argv[1]);

@@ -1,6 +1,7 @@
 """The coordinates an LLM writes down when asked for positions without a solver.
 
-Used by the offline CoT and IFG handlers: furniture goes along the walls one after another
+Used by the offline CoT and IFG handlers and by LogicEnvGen's no-CAS ablation (so it sits in
+`scene`, below both generators and baselines): furniture goes along the walls one after another
 (south, north, west, east), loose items lie in a row across the middle of the room, wall objects
 hang on the west wall, and small items stand on their support's top (or sit inside their
 container), spread along x. Nothing checks collisions, door swing or overhang: whatever physical
@@ -13,11 +14,28 @@ from typing import Any
 
 import numpy as np
 
-from logicenveval.baselines.geometry import footprint, typical_size
 from logicenveval.domain.catalog import Catalog
 
+#: extents of an object whose category the catalog does not know
+UNKNOWN_SIZE = (0.4, 0.4, 0.4)
 WALL_Y = 1.5  # centre height of wall-mounted objects
 _SLOTS = (("s", 0.0), ("n", 180.0), ("w", 90.0), ("e", 270.0))
+
+
+def typical_size(category: str, catalog: Catalog) -> tuple[float, float, float]:
+    """The middle of the catalog's size range: what a model guesses for an ordinary instance."""
+    cat = catalog.get(category)
+    if cat is None:
+        return UNKNOWN_SIZE
+    lo, hi = cat.size_min, cat.size_max
+    return (round((lo[0] + hi[0]) / 2, 3), round((lo[1] + hi[1]) / 2, 3), round((lo[2] + hi[2]) / 2, 3))
+
+
+def footprint(size: tuple[float, float, float], yaw: float) -> tuple[float, float]:
+    """Extents along x and z after a rotation by a multiple of 90 degrees."""
+    if round(yaw) % 180 == 90:
+        return size[2], size[0]
+    return size[0], size[2]
 
 
 def guess_coordinates(

@@ -1,0 +1,44 @@
+"""`lint ENVS_DIR [--json]`: the binding, category and affordance problems of each EnvSpec in a
+folder laid out as `evaluate` scores it (`<task_id>/*.json`), before any scoring.
+
+Exit 0 when no file has a problem (notes allowed), 1 when one has, 2 on bad input (no such
+folder, no task folder).
+"""
+
+from __future__ import annotations
+
+import argparse
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("envs_dir", metavar="ENVS_DIR", help="folder of <task_id>/*.json EnvSpecs")
+    parser.add_argument("--tasks-dir", default=None, help="tasks folder (default: the benchmark's)")
+    parser.add_argument("--json", action="store_true", help="print the findings as JSON")
+    parser.add_argument("--quiet", action="store_true", help="list only files with problems")
+
+
+def run(args: argparse.Namespace) -> int:
+    import json
+
+    from logicenveval.lint import lint_folder
+
+    reports = lint_folder(args.envs_dir, args.tasks_dir)
+    bad = [r for r in reports if not r.clean]
+    if args.json:
+        print(json.dumps([{"file": r.path, "task_id": r.task_id, "env_id": r.env_id,
+                           "problems": [{"kind": k, "message": m} for k, m in r.problems],
+                           "notes": [{"kind": k, "message": m} for k, m in r.notes]}
+                          for r in reports], indent=2))
+    else:
+        for r in reports:
+            if r.clean and (args.quiet or not r.notes):
+                if not args.quiet:
+                    print(f"{r.path}: ok")
+                continue
+            print(f"{r.path}: {len(r.problems)} problem(s)" if r.problems else f"{r.path}: ok")
+            for kind, message in r.problems:
+                print(f"  {kind}: {message}")
+            for kind, message in r.notes:
+                print(f"  note ({kind}): {message}")
+        print(f"{len(reports) - len(bad)} of {len(reports)} file(s) without problems")
+    return 1 if bad else 0

@@ -1,0 +1,39 @@
+"""What `run` and `evaluate` do once their units are committed: write the leaderboards, say why.
+
+The runner stops at results.json and samples.jsonl (it sits below reporting); the command layer
+calls `publish` with what the run returned, so no lower layer imports this one.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from logicenveval.metrics.records import UnitRecord
+from logicenveval.reporting.leaderboard import correct_messages, write_leaderboards
+from logicenveval.reporting.tables import markdown
+from logicenveval.reporting.why import reasons, summary_text
+
+
+@dataclass(frozen=True)
+class Published:
+    #: the leaderboard as Markdown (what the command prints first)
+    table: str
+    #: why environments were rejected or failed, per generator (what the command prints last)
+    why: str
+
+
+def why_text(results: dict[str, Any], records: Sequence[UnitRecord]) -> str:
+    """The reasons summary of a finished run, from its units and its recorded failures."""
+    samples = [s.model_dump(mode="json") for r in records for s in r.samples]
+    return summary_text(reasons(samples, results.get("failures", {}), list(results["results"]),
+                                correct_messages(records)))
+
+
+def publish(run_dir: Path, results: dict[str, Any], records: Sequence[UnitRecord]) -> Published:
+    """Write `leaderboard.md`, `leaderboard.html` and `details/` (for a multi-seed run also each
+    seed's), and return the text the command prints."""
+    write_leaderboards(run_dir, results, None if results.get("runs") else records)
+    return Published(markdown(results), why_text(results, records))

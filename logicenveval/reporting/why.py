@@ -1,0 +1,175 @@
+"""Why environments were rejected or failed: reasons grouped per generator, counted, with an example.
+
+A run's scores say how many environments were not valid; this says why, in one screen. Three
+kinds of reason, from what the units recorded (`samples.jsonl`, `results.json` `failures`):
+
+- `generation`: an environment the generator set out to build but could not (a failed unit, a
+  trajectory without a layout, a draft that is not a valid EnvSpec), by stage and message;
+- `rejected`: an environment that is not a valid scenario — ill-formed (a role not bound, a
+  reached path that does not allow it: its first problem) or one in which the correct BT fails;
+- `physics`: an environment failing one of the paper's PhyPR dimensions, by failure code.
+
+Messages name objects and roles; reasons group them by their shape (names, quoted text and numbers
+replaced), and every group keeps its first example verbatim with its task and environment.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+#: groups listed per generator before "... and N other reason(s)"
+MAX_GROUPS = 6
+_EXAMPLE_CHARS = 200
+_KEY_CHARS = 90
+#: generation failures and rejections come before physics findings
+_KIND_ORDER = {"generation": 0, "rejected": 1, "physics": 2}
+
+_QUOTED = re.compile(r"'[^']*'|\"[^\"]*\"")
+_NAMED = re.compile(r"\b(role|object|objects|category|door|window|room|target|env|environment)\s+"
+                    r"(?!(?:is|are|has|not|and|or|of|to|in|on|the|a|an|with|for)\b)[\w.-]+")
+_IDENT = re.compile(r"\b[A-Za-z][A-Za-z0-9]*(?:[_-][A-Za-z0-9]+)+\b")
+_NUMBER = re.compile(r"-?\d+(?:\.\d+)?")
+_BRACKETS = re.compile(r"\[[^\]]*\]")
+
+
+def reason_key(message: str) -> str:
+    """The shape of a message: what varies between environments (names, numbers) replaced."""
+    first = (message.strip().splitlines() or [""])[0]
+    text = _QUOTED.sub("'…'", first)
+    text = _BRACKETS.sub("[…]", text)
+    text = _NAMED.sub(lambda m: f"{m.group(1)} …", text)
+    text = _IDENT.sub("…", text)
+    text = _NUMBER.sub("#", text)
+    text = " ".join(text.split())
+    return text if len(text) <= _KEY_CHARS else text[: _KEY_CHARS - 1] + "…"
+
+
+@dataclass
+class Reason:
+    """Environments of one generator that share a reason, with the first one as the example."""
+
+    kind: str  # generation | rejected | physics
+    key: str
+    count: int = 0
+    task: str = ""
+    env_id: str = ""
+    example: str = ""
+
+    @property
+    def label(self) -> str:
+        return f"{self.kind}: {self.key}"
+
+
+@dataclass
+class GeneratorReasons:
+    generator: str
+    n_envs: int = 0
+    n_failed: int = 0
+    n_rejected: int = 0
+    n_physics: int = 0
+    reasons: list[Reason] = field(default_factory=list)
+
+    @property
+    def clean(self) -> bool:
+        return not (self.n_failed or self.n_rejected or self.n_physics)
+
+
+def _add(groups: dict[tuple[str, str], Reason], kind: str, key: str, task: str, env_id: str,
+         example: str) -> None:
+    reason = groups.setdefault((kind, key), Reason(kind, key, task=task, env_id=env_id,
+                                                  example=" ".join(example.split())[:_EXAMPLE_CHARS]))
+    reason.count += 1
+
+
+def rejection(sample: Mapping[str, Any]) -> tuple[str, str] | None:
+    """(reason key, message) why a sample is not a valid scenario, or None when it is one."""
+    problems = [str(p) for p in sample.get("problems") or []]
+    if not sample.get("well_formed", False):
+        message = problems[0] if problems else "ill-formed (no problem recorded)"
+        return f"ill-formed: {reason_key(message)}", message
+    verdict = (sample.get("verdicts") or {}).get("correct")
+    if verdict != "passed":
+        return f"the correct BT ends {verdict or 'without a verdict'}", f"correct BT: {verdict}"
+    return None
+
+
+def reasons(samples: Iterable[Mapping[str, Any]],
+            failures: Mapping[str, Sequence[Mapping[str, Any]]],
+            generators: Sequence[str] | None = None,
+            messages: Mapping[tuple[str, str, str], str] | None = None) -> list[GeneratorReasons]:
+    """Per generator (results order), its reasons, most frequent first.
+
+    `messages` optionally maps (generator, task, env_id) to the correct BT's verdict message, so
+    a rejected environment's example says where the BT failed.
+    """
+    by_gen: dict[str, GeneratorReasons] = {}
+    groups: dict[str, dict[tuple[str, str], Reason]] = {}
+    order = list(generators or [])
+
+    def gen_of(name: str) -> GeneratorReasons:
+        if name not in by_gen:
+            by_gen[name] = GeneratorReasons(name)
+            groups[name] = {}
+            if name not in order:
+                order.append(name)
+        return by_gen[name]
+
+    for gen in order:
+        gen_of(gen)
+    for gen, items in failures.items():
+        g = gen_of(gen)
+        for f in items:
+            message = str(f.get("message") or "no message")
+            stage = str(f.get("stage") or "unit")
+            kind = f.get("kind")
+            g.n_failed += 1
+            key = f"{stage}{f' ({kind})' if kind else ''}: {reason_key(message)}"
+            _add(groups[gen], "generation", key, str(f.get("task", "")), str(f.get("env_id") or ""),
+                 message)
+    for s in samples:
+        gen, task, env_id = str(s["generator"]), str(s["task_id"]), str(s["env_id"])
+        g = gen_of(gen)
+        g.n_envs += 1
+        why = rejection(s)
+        if why is not None:
+            g.n_rejected += 1
+            key, message = why
+            if messages and s.get("well_formed"):
+                message = messages.get((gen, task, env_id)) or message
+            _add(groups[gen], "rejected", key, task, env_id, message)
+        physics = s.get("physics") or {}
+        failed = [f for f in physics.get("failures") or [] if isinstance(f, Mapping)]
+        if failed:
+            g.n_physics += 1
+        for code in sorted({(str(f.get("dimension", "?")), str(f.get("code", "?"))) for f in failed}):
+            first = next(f for f in failed if (str(f.get("dimension", "?")), str(f.get("code", "?"))) == code)
+            _add(groups[gen], "physics", f"PhyPR {code[0]}: {code[1]}", task, env_id,
+                 str(first.get("message") or code[1]))
+    out = []
+    for gen in order:
+        g = by_gen[gen]
+        g.reasons = sorted(groups[gen].values(), key=lambda r: (_KIND_ORDER.get(r.kind, 3), -r.count, r.key))
+        out.append(g)
+    return out
+
+
+def summary_text(per_gen: Sequence[GeneratorReasons], max_groups: int = MAX_GROUPS) -> str:
+    """The end-of-run summary: per generator its counts and its most frequent reasons."""
+    lines = ["Why environments were rejected or failed (count × reason — first example):"]
+    for g in per_gen:
+        if g.clean:
+            lines.append(f"  {g.generator}: {g.n_envs} environment(s), none rejected, failed or "
+                         "physically implausible")
+            continue
+        lines.append(f"  {g.generator}: {g.n_envs} environment(s); {g.n_failed} failed to generate, "
+                     f"{g.n_rejected} not a valid scenario, {g.n_physics} failing PhyPR")
+        for r in g.reasons[:max_groups]:
+            where = "/".join(x for x in (r.task, r.env_id) if x)
+            lines.append(f"    {r.count} × {r.label} — {where}: {r.example}")
+        if len(g.reasons) > max_groups:
+            lines.append(f"    ... and {len(g.reasons) - max_groups} other reason(s): see "
+                         "leaderboard.html, samples.jsonl and results.json 'failures'")
+    return "\n".join(lines)

@@ -1,0 +1,310 @@
+"""Leaderboard cells (intervals as bounds, unmeasured rows), reasons, report pages, compare."""
+
+from __future__ import annotations
+
+import copy
+import json
+import re
+import shutil
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from logicenveval.cli import main
+from logicenveval.metrics.uncertainty import ci95
+from logicenveval.reporting.compare import compare_results
+from logicenveval.reporting.details import slug, trace_rows
+from logicenveval.reporting.tables import markdown, rows
+from logicenveval.reporting.why import reason_key, reasons, summary_text
+
+REFERENCE = Path(__file__).resolve().parents[1] / "reports" / "reference" / "results.json"
+TASKS = "clean_living_room,hallway_entry_tidy,kitchen_fridge_restock"
+
+
+def _reference() -> dict[str, Any]:
+    data: dict[str, Any] = json.loads(REFERENCE.read_text())
+    return data
+
+
+def _only_dir(parent: Path) -> Path:
+    (d,) = [p for p in parent.iterdir() if p.is_dir()]
+    return d
+
+
+# ----- intervals -------------------------------------------------------------------------------
+
+def test_interval_depends_on_the_data_not_the_name() -> None:
+    ref = _reference()
+    cells = {(t, 0): m for t, m in ref["per_task"]["logicenvgen"].items()}
+    assert ci95(cells) == ci95(dict(cells))  # fixed seed: reproducible
+    renamed = {(t, 7): m for (t, _), m in cells.items()}  # another run seed, same figures
+    assert ci95(renamed) == ci95(cells)
+    other = {(t, 0): m for t, m in ref["per_task"]["cot"].items()}
+    assert ci95(other) != ci95(cells)
+
+
+def test_one_task_gives_no_interval() -> None:
+    cell = _reference()["per_task"]["cot"]["clean_living_room"]
+    got = ci95({("clean_living_room", 0): cell})
+    assert got["logcov"] is None and got["phypr"]["entity"] is None
+
+
+def test_cells_print_bounds_not_half_widths() -> None:
+    ref = _reference()
+    for gen in ref["results"]:
+        ref["results"][gen]["ci95"] = ci95({(t, 0): m for t, m in ref["per_task"][gen].items()})
+    text = markdown(ref)
+    assert " ± " not in text
+    holodeck = next(r for r in rows(ref) if r[0] == "holodeck")
+    logcov = holodeck[1 + 1 + 4]  # Method, n, four PhyPR columns
+    value, lo, hi = map(float, re.fullmatch(r"(\S+) \[(\S+), (\S+)\]", logcov).groups())  # type: ignore[union-attr]
+    assert lo <= value <= hi and lo >= 0 and hi <= 100
+    assert holodeck[1] == "25"
+
+
+def test_old_half_width_results_and_one_task_rows() -> None:
+    ref = _reference()
+    one = copy.deepcopy(ref)
+    one["tasks"] = ["clean_living_room"]
+    for gen in one["per_task"]:
+        one["per_task"][gen] = {"clean_living_room": one["per_task"][gen]["clean_living_room"]}
+    row = rows(one)[0]
+    assert row[1] == "1" and "[n/a]" in row[1 + 1 + 4]
+
+
+def test_unmeasured_rows_budget_marks_and_failed_attempts() -> None:
+    ref = _reference()
+    ref["results"]["cot"] = {**{k: None for k in ref["results"]["cot"]}, "measured": False,
+                             "n_attempted": 0, "n_failed": 0, "not_measured_tasks": ref["tasks"],
+                             "budget_hit_tasks": []}
+    ref["results"]["logicenvgen"].update(n_attempted=140, n_failed=2, measured=True,
+                                         budget_hit_tasks=ref["tasks"][:4], not_measured_tasks=[])
+    by_label = {r[0]: r for r in rows(ref)}
+    assert set(by_label["cot"][1:]) == {"not measured"}
+    assert "logicenvgen (budget hit 4/25)" in by_label
+    assert by_label["logicenvgen (budget hit 4/25)"][-1] == "2/140"
+    assert by_label["holodeck"][-1] == "–"  # old results: no attempts recorded
+    md = markdown(ref)
+    assert "| cot | not measured | not measured |" in md and "0.00 ±" not in md
+
+
+def test_model_reply_validity_is_shown_when_recorded() -> None:
+    ref = _reference()
+    assert "Valid model replies" not in markdown(ref)  # results without an `llm` block
+    ref["llm"] = {"cot": {"all": {"questions": 40, "valid_first": 38, "valid": 40,
+                                  "valid_first_share": 0.95, "valid_share": 1.0}},
+                  "ifg": "damaged"}
+    line = next(x for x in markdown(ref).splitlines() if x.startswith("Valid model replies"))
+    assert line.endswith("questions asked): cot: 95.0 % / 100.0 % of 40")  # the damaged entry is left out
+
+
+def test_markdown_cells_cannot_break_the_table() -> None:
+    ref = _reference()
+    ref["results"] = {"a|b\nc": ref["results"]["cot"]}
+    ref["per_task"] = {"a|b\nc": ref["per_task"]["cot"]}
+    line = next(x for x in markdown(ref).splitlines() if x.startswith("| a"))
+    assert line.startswith("| a\\|b c |") and "\n" not in line
+
+
+# ----- reasons -----------------------------------------------------------------------------------
+
+def test_reasons_group_by_shape_and_keep_the_first_example() -> None:
+    assert reason_key("role vanity is not bound to an object") == reason_key("role spare_bag is not bound to an object")
+    samples = [
+        {"generator": "g", "task_id": "t", "env_id": "e0", "well_formed": False,
+         "problems": ["role white_box is not bound to an object"], "verdicts": {"correct": "passed"},
+         "physics": {"failures": []}},
+        {"generator": "g", "task_id": "t", "env_id": "e1", "well_formed": False,
+         "problems": ["role mop is not bound to an object"], "verdicts": {}, "physics": {"failures": []}},
+        {"generator": "g", "task_id": "t", "env_id": "e2", "well_formed": True, "problems": [],
+         "verdicts": {"correct": "goal_unmet"},
+         "physics": {"failures": [{"dimension": "entity", "code": "floating", "message": "cup floats 0.3 m"}]}},
+    ]
+    failures = {"g": [{"task": "t", "stage": "construct", "message": "no layout for x"}]}
+    (g,) = reasons(samples, failures, ["g"], {("g", "t", "e2"): "correct BT goal_unmet: cup not on table"})
+    assert (g.n_envs, g.n_failed, g.n_rejected, g.n_physics) == (3, 1, 3, 1)
+    labels = {r.label: r for r in g.reasons}
+    bound = labels["rejected: ill-formed: role … is not bound to an object"]
+    assert bound.count == 2 and bound.env_id == "e0" and "white_box" in bound.example
+    assert labels["rejected: the correct BT ends goal_unmet"].example == "correct BT goal_unmet: cup not on table"
+    assert labels["physics: PhyPR entity: floating"].example == "cup floats 0.3 m"
+    assert g.reasons[0].kind == "generation"
+    text = summary_text([g])
+    assert "2 × rejected: ill-formed" in text and "t/e0: role white_box" in text
+
+
+def test_trace_lines_become_tick_rows_and_slugs_are_safe() -> None:
+    lines = ["{'tick': 1, 'node': 'Walk', 'path': 'R/Sequence/Walk[0]', 'status': 'RUNNING'}",
+             "__import__('os').system('x')", "plain text"]
+    got, other = trace_rows(lines)
+    assert [(r.tick, r.node, r.status) for r in got] == [("1", "Walk", "RUNNING")]
+    assert other == lines[1:]
+    assert slug("logicenvgen-exact") == "logicenvgen-exact"
+    for bad in ("../x", "/abs", "a b", "", ".."):
+        s = slug(bad)
+        assert re.fullmatch(r"[A-Za-z0-9][A-Za-z0-9._-]*", s) and "/" not in s and s != slug(bad + "y")
+
+
+# ----- compare -----------------------------------------------------------------------------------
+
+def test_compare_two_generators_and_missing_ones() -> None:
+    ref = _reference()
+    c = compare_results(ref, ref, gen_a="logicenvgen", gen_b="cot")
+    (pair,) = c.pairs
+    logcov = next(d for d in pair.deltas if d.metric == "LogCov")
+    assert logcov.ci95 is not None and logcov.ci95[0] <= logcov.change <= logcov.ci95[1]  # type: ignore[operator]
+    assert logcov.regression and c.failed
+    assert not compare_results(ref, ref).failed
+    lost = copy.deepcopy(ref)
+    del lost["results"]["ifg"]
+    assert [m.text for m in compare_results(ref, lost).missing] == ["generator ifg: missing in B"]
+    assert compare_results(ref, lost).failed and not compare_results(ref, lost, allow_missing=True).failed
+    empty = {**ref, "results": {}}
+    assert compare_results(ref, empty).failed
+    unmeasured = copy.deepcopy(ref)
+    unmeasured["results"]["cot"]["measured"] = False
+    assert compare_results(ref, unmeasured).missing[0].text == "generator cot: not measured in B"
+
+
+# ----- through the CLI ---------------------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def run_dir(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    out = tmp_path_factory.mktemp("run")
+    assert main(["run", "--model", "offline", "--tasks", TASKS, "--generators", "logicenvgen,cot,holodeck",
+                 "--executor", "inprocess", "--quiet", "--output", str(out)]) == 0
+    return _only_dir(out)
+
+
+def test_run_ends_with_the_reasons(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["run", "--model", "offline", "--tasks", "bathroom_towel_refresh", "--generators", "ifg",
+                 "--executor", "inprocess", "--quiet", "--output", str(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    why = out[out.index("Why environments were rejected or failed"):]
+    assert "ifg: " in why and "role … is not bound" in why and "role vanity is not bound" in why
+
+
+def test_same_environments_under_two_names_same_interval(run_dir: Path, tmp_path: Path) -> None:
+    for name in ("first", "second"):
+        assert main(["evaluate", str(run_dir / "envs" / "cot"), "--name", name, "--executor", "inprocess",
+                     "--output", str(tmp_path / name)]) == 0
+    a, b = (json.loads((_only_dir(tmp_path / n) / "results.json").read_text()) for n in ("first", "second"))
+    assert a["results"]["first"]["ci95"] == b["results"]["second"]["ci95"]
+    original = json.loads((run_dir / "results.json").read_text())["results"]["cot"]["ci95"]
+    assert a["results"]["first"]["ci95"] == original
+
+
+def test_one_task_evaluate_prints_na(run_dir: Path, tmp_path: Path) -> None:
+    src = tmp_path / "envs"
+    (src / "clean_living_room").mkdir(parents=True)
+    for f in (run_dir / "envs" / "cot" / "clean_living_room").glob("cot-*.json"):
+        (src / "clean_living_room" / f.name).write_text(f.read_text())
+    assert main(["evaluate", str(src), "--name", "one", "--executor", "inprocess",
+                 "--output", str(tmp_path / "o")]) == 0
+    md = (_only_dir(tmp_path / "o") / "leaderboard.md").read_text()
+    assert "[n/a]" in md and "± 0.00" not in md
+
+
+def test_compare_two_generators_of_one_run_and_json(run_dir: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    capsys.readouterr()
+    code = main(["compare", str(run_dir), "--gen-a", "logicenvgen", "--gen-b", "holodeck"])
+    out = capsys.readouterr().out
+    assert code == 1 and "logicenvgen (A) → holodeck (B)" in out
+    assert "95 % CI of change" in out and "verdict" in out
+    assert re.search(r"LogCov \(%\) .*[-+]\d+\.\d\d .*\[[-+]\d+\.\d\d, [-+]\d+\.\d\d\] .*REGRESSION", out), out
+    assert main(["compare", str(run_dir), str(run_dir), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert sorted(p["a"] for p in data["pairs"]) == ["cot", "holodeck", "logicenvgen"] and not data["failed"]
+    assert main(["compare", str(run_dir), "--gen-a", "nope"]) == 2
+    assert "--gen-a" in capsys.readouterr().err
+
+
+def test_compare_candidate_that_lost_a_generator(run_dir: Path, tmp_path: Path,
+                                                 capsys: pytest.CaptureFixture[str]) -> None:
+    data = json.loads((run_dir / "results.json").read_text())
+    for name, change in (("lost", lambda d: d["results"].pop("cot")), ("empty", lambda d: d.update(results={}))):
+        damaged = copy.deepcopy(data)
+        change(damaged)
+        (tmp_path / name).mkdir()
+        (tmp_path / name / "results.json").write_text(json.dumps(damaged))
+        capsys.readouterr()
+        assert main(["compare", str(run_dir), str(tmp_path / name)]) == 1
+        assert "generator cot: missing in B" in capsys.readouterr().out
+    assert main(["compare", str(run_dir), str(tmp_path / "lost"), "--allow-missing"]) == 0
+
+
+@pytest.mark.parametrize("damage,field", [
+    (lambda d: d.update(benchmark=[]), "field 'benchmark'"),
+    (lambda d: d.update(per_task=[]), "field 'per_task'"),
+    (lambda d: d["per_task"]["cot"].update(clean_living_room="x"), "per_task.cot.clean_living_room"),
+    (lambda d: d["per_task"].update(cot=["x"]), "per_task.cot"),
+    (lambda d: d["results"]["cot"].update(n_envs=float("nan")), "results.cot.n_envs"),
+    (lambda d: d["per_task"]["cot"]["clean_living_room"].update(n_envs=float("inf")),
+     "per_task.cot.clean_living_room.n_envs"),
+    (lambda d: d["results"]["cot"].update(measured="yes"), "results.cot.measured"),
+    (lambda d: d["results"]["cot"]["ci95"].update(logcov=[0.1]), "results.cot.ci95.logcov"),
+    (lambda d: d["per_task"]["cot"]["clean_living_room"].update(faudr={}), "per_task.cot.clean_living_room.faudr"),
+])
+def test_damaged_results_exit_2_naming_the_field(run_dir: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                                 damage: Any, field: str) -> None:
+    data = json.loads((run_dir / "results.json").read_text())
+    damage(data)
+    bad = tmp_path / "bad"
+    bad.mkdir()
+    (bad / "results.json").write_text(json.dumps(data))  # NaN/inf written as JSON's extensions
+    for argv in (["report", str(bad)], ["compare", str(run_dir), str(bad)], ["report", str(run_dir), str(bad),
+                                                                             "--out", str(tmp_path / "m")]):
+        capsys.readouterr()
+        assert main(argv) == 2, argv
+        err = capsys.readouterr().err
+        assert field in err and "Traceback" not in err
+
+
+def test_report_pages_show_why_and_stand_alone(run_dir: Path, tmp_path: Path) -> None:
+    assert main(["report", str(run_dir)]) == 0
+    html = (run_dir / "leaderboard.html").read_text()
+    assert 'id="gen-cot"' in html and 'id="t-cot--clean_living_room"' in html and 'id="filter"' in html
+    assert "Why environments were rejected or failed" in html
+    page = (run_dir / "details" / "cot" / "kitchen_fridge_restock.html").read_text()
+    assert 'id="env-cot-00"' in page and "<table class=\"ticks\">" in page and "{'tick'" not in page
+    assert re.search(r">(detected|missed)</span>", page)
+    samples = [json.loads(x) for x in (run_dir / "samples.jsonl").read_text().splitlines()]
+    physics = next(f for s in samples for f in s["physics"]["failures"] if s["generator"] == "cot")
+    owner = next(s for s in samples if physics in s["physics"]["failures"])
+    owner_page = (run_dir / "details" / "cot" / f"{owner['task_id']}.html").read_text()
+    assert physics["message"].replace("'", "&#39;") in owner_page  # the message, not only a red label
+    # the report folder is self-contained: move it, drop renders/ and envs/, pages keep their images
+    moved = tmp_path / "moved"
+    shutil.copytree(run_dir / "details", moved / "details")
+    shutil.copy(run_dir / "leaderboard.html", moved / "leaderboard.html")
+    assert 'src="data:image/svg+xml;base64,' in (moved / "details" / "cot" / "clean_living_room.html").read_text()
+
+
+def test_report_replaces_files_atomically(run_dir: Path, monkeypatch: pytest.MonkeyPatch,
+                                          capsys: pytest.CaptureFixture[str]) -> None:
+    import errno
+
+    from logicenveval import atomic
+
+    before = (run_dir / "leaderboard.html").read_bytes()
+
+    def full(src: str, dst: str) -> None:
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(atomic.os, "replace", full)
+    assert main(["report", str(run_dir)]) == 1
+    monkeypatch.undo()
+    assert (run_dir / "leaderboard.html").read_bytes() == before
+    assert not list(run_dir.rglob("*.tmp"))
+    assert "No space left on device" in capsys.readouterr().err
+
+
+def test_report_of_runs_has_a_run_column(run_dir: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    capsys.readouterr()
+    assert main(["report", str(run_dir), str(run_dir), "--out", str(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    assert f"| {run_dir.name} (1) | offline | 0 | cot |" in out and f"| {run_dir.name} (2) | offline | 0 | cot |" in out
+    html = (tmp_path / "leaderboard.html").read_text()
+    assert 'href="details/run1/cot/clean_living_room.html' in html
+    assert len(html) < 1_000_000

@@ -1,0 +1,146 @@
+"""The contract in the repo: JSON Schemas generated from the models (docs/schemas/), and `lint`."""
+
+from __future__ import annotations
+
+import json
+import shutil
+from pathlib import Path
+from typing import Any
+
+import pytest
+from jsonschema import Draft202012Validator
+
+from logicenveval.benchmark import DEFAULT_TASKS_DIR
+from logicenveval.cli import main
+from logicenveval.metrics.results_file import ResultsFile
+from logicenveval.schemas import DOCS_DIR, SCHEMAS, json_schema, schema_text
+
+ROOT = Path(__file__).resolve().parents[1]
+REFERENCE = ROOT / "reports" / "reference"
+
+
+def _validator(name: str) -> Draft202012Validator:
+    schema = json_schema(name)
+    Draft202012Validator.check_schema(schema)
+    return Draft202012Validator(schema)
+
+
+@pytest.mark.parametrize("name", sorted(SCHEMAS))
+def test_committed_schemas_are_current(name: str) -> None:
+    committed = (DOCS_DIR / f"{name}.schema.json").read_text()
+    assert committed == schema_text(name), (
+        f"docs/schemas/{name}.schema.json is stale: python -m logicenveval schema {name} "
+        f"--out docs/schemas/{name}.schema.json")
+
+
+def test_schema_command_prints_the_committed_text(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["schema", "envspec"]) == 0
+    assert capsys.readouterr().out == (DOCS_DIR / "envspec.schema.json").read_text()
+    with pytest.raises(SystemExit) as info:
+        main(["schema", "nonsense"])
+    assert info.value.code == 2
+
+
+def test_envspec_schema_validates_every_reference_environment() -> None:
+    validator = _validator("envspec")
+    files = [p for p in (REFERENCE / "envs").rglob("*.json") if p.name != "plan.json"]
+    assert len(files) > 600
+    for path in files:
+        errors = list(validator.iter_errors(json.loads(path.read_text())))
+        assert not errors, (path, errors[0].message)
+
+
+@pytest.mark.parametrize(("edit", "needle"), [
+    (lambda d: d.pop("rooms"), "'rooms' is a required property"),
+    (lambda d: d["objects"][0].update(position=[1, 2]), "[1, 2]"),
+    (lambda d: d["doors"][0].update(state="ajar"), "'ajar'"),
+    (lambda d: d.update(schema="logicenveval.env/2"), "logicenveval.env/1"),
+])
+def test_envspec_schema_rejects_what_the_loader_rejects(edit: Any, needle: str) -> None:
+    data = json.loads((ROOT / "tests" / "fixtures" / "envs" / "one_room.json").read_text())
+    edit(data)
+    messages = [e.message for e in _validator("envspec").iter_errors(data)]
+    assert any(needle in m for m in messages), messages
+
+
+def test_task_schema_validates_every_benchmark_task() -> None:
+    validator = _validator("task")
+    for path in sorted(DEFAULT_TASKS_DIR.glob("*/task.json")):
+        assert not list(validator.iter_errors(json.loads(path.read_text()))), path
+
+
+def test_results_schema_and_model_hold_the_reference_results() -> None:
+    data = json.loads((REFERENCE / "results.json").read_text())
+    assert not list(_validator("results").iter_errors(data))
+    results = ResultsFile.model_validate(data)
+    assert set(results.results) >= {"logicenvgen", "cot"} and results.per_task is not None
+    broken = dict(data, results={"cot": {**data["results"]["cot"], "logcov": "high"}})
+    assert list(_validator("results").iter_errors(broken))
+
+
+# ----- lint ---------------------------------------------------------------------------------
+
+TASK = "clean_living_room"
+
+
+def _folder(tmp_path: Path) -> Path:
+    """The reference run's three clean_living_room environments, roles removed (to be bound)."""
+    folder = tmp_path / "envs" / TASK
+    folder.mkdir(parents=True)
+    for path in sorted((REFERENCE / "envs" / "logicenvgen" / TASK).glob("logicenvgen-*.json")):
+        data = json.loads(path.read_text())
+        data.pop("roles")
+        (folder / path.name).write_text(json.dumps(data))
+    return folder
+
+
+def _edit(path: Path, edit: Any) -> None:
+    data = json.loads(path.read_text())
+    edit(data)
+    path.write_text(json.dumps(data))
+
+
+def test_lint_passes_clean_files_and_names_the_unbound_role(tmp_path: Path,
+                                                            capsys: pytest.CaptureFixture[str]) -> None:
+    folder = _folder(tmp_path)
+    assert main(["lint", str(folder.parent)]) == 0
+    assert "3 of 3 file(s) without problems" in capsys.readouterr().out
+    first, second, third = sorted(folder.glob("*.json"))
+
+    def no_mop(d: dict[str, Any]) -> None:
+        d["objects"] = [o for o in d["objects"] if o["category"] != "mop"]
+
+    _edit(first, no_mop)
+    _edit(second, lambda d: d["objects"].append({**next(o for o in d["objects"] if o["category"] == "sofa"),
+                                                 "id": "sofa_2", "category": "Couch"}))
+
+    def on_the_toy(d: dict[str, Any]) -> None:
+        d["objects"][1]["support"] = d["objects"][0]["id"]
+        d["objects"].append({"id": "thing", "category": "Dumbbell", "room": d["rooms"][0]["id"]})
+        d["roles"] = {"sofa": next(o["id"] for o in d["objects"] if o["category"] == "book")}
+
+    _edit(third, on_the_toy)
+    assert main(["lint", str(folder.parent)]) == 1
+    out = capsys.readouterr().out
+    assert "binding: role mop is not bound to an object and no reached path allows it" in out
+    assert "binding: role sofa is ambiguous: 2 objects qualify" in out and "sofa_2" in out
+    assert "which is not a surface" in out and "role sofa is mapped to" in out
+    assert "note (category): category 'Dumbbell' names no catalog category" in out
+    assert "0 of 3 file(s) without problems" in out
+    assert main(["lint", str(folder.parent), "--json"]) == 1
+    listed = json.loads(capsys.readouterr().out)
+    assert [len(f["problems"]) > 0 for f in listed] == [True, True, True]
+
+
+def test_lint_bad_input_exits_2(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["lint", str(tmp_path / "missing")]) == 2
+    (tmp_path / "not_a_task").mkdir()
+    assert main(["lint", str(tmp_path)]) == 2
+    assert "no folder named after a task" in capsys.readouterr().err
+    folder = tmp_path / TASK
+    folder.mkdir()
+    (folder / "broken.json").write_text("{")
+    shutil.copy(REFERENCE / "envs" / "cot" / "multi_room_trash_run" / "cot-00.json", folder / "other.json")
+    assert main(["lint", str(tmp_path)]) == 1
+    out = capsys.readouterr().out
+    assert "file: not a valid EnvSpec" in out and "task_id 'multi_room_trash_run'" in out
