@@ -10,7 +10,8 @@ from pathlib import Path
 import pytest
 
 REPO = Path(__file__).resolve().parents[1]
-PACKS = sorted(p for p in (REPO / "reports" / "real").glob("*") if (p / "llm_cache.sqlite").is_file())
+PACKS = sorted(p for p in (REPO / "reports" / "real").glob("*")
+               if (p / "llm_cache.sqlite").is_file() and (p / "results.json").is_file())
 sys.path.insert(0, str(REPO / "benchmarks"))
 
 

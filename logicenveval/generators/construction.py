@@ -16,6 +16,7 @@ from logicenveval.generators.plan import PlanLog
 from logicenveval.llm.ask import ask
 from logicenveval.llm.replies import (
     FloorPlanReply,
+    FloorPlanWire,
     ObjectDraft,
     ObjectsReply,
     PlacementReply,
@@ -85,8 +86,8 @@ class EnvironmentBuilder:
         return scene_vocabulary(rooms, sorted(self.brief.roles), categories, object_ids)
 
     def floor_plan(self, facts: list[str]) -> FloorPlanReply:
-        return ask(self.ctx.model, "floor_plan", self._payload(situation=facts), FloorPlanReply,
-                   seed=self.ctx.seed, vocabulary=self._vocabulary(list(self.brief.rooms)))
+        return ask(self.ctx.model, "floor_plan", self._payload(situation=facts), FloorPlanWire,
+                   seed=self.ctx.seed, vocabulary=self._vocabulary(list(self.brief.rooms))).draft()
 
     def select_objects(self, env_id: str, rooms: list[dict[str, Any]], facts: list[str],
                        log: PlanLog, feedback: list[str] | None = None) -> list[ObjectDraft]:

@@ -11,7 +11,7 @@ from typing import Annotated, Literal, Union
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
 from logicenveval.llm.structured import Conjunction, Goal, LiteralDraft, to_text
-from logicenveval.llm.vocab import Vocab
+from logicenveval.llm.vocab import COUNT, Vocab
 
 _F = ConfigDict(frozen=True, extra="ignore")
 
@@ -182,7 +182,33 @@ class PlacementReply(BaseModel):
     openings: list[OpeningPlacement] = Field(default_factory=list, description="where each door and window goes")
 
 
-# --- vocabulary-bound wire forms of LogicEnvGen's plan requests (llm.vocab, llm.structured) ------
+# --- vocabulary-bound wire forms of LogicEnvGen's requests (llm.vocab, llm.structured) -----------
+
+class RoomWire(RoomDraft):
+    #: whole square metres: llama.cpp's grammar bounds integers, not decimals (a small model
+    #: wrote 1.2 m² rooms)
+    area_m2: int = Field(ge=3, le=80)
+
+
+class FloorPlanWire(BaseModel):
+    """The floor plan of LogicEnvGen: one entry per room of the task (grammar: `maxItems`)."""
+
+    model_config = _F
+    rooms: list[RoomWire] = Field(min_length=1, json_schema_extra={COUNT: "rooms"})
+
+    @model_validator(mode="after")
+    def _distinct(self) -> FloorPlanWire:
+        ids = [r.id for r in self.rooms]
+        repeated = sorted({i for i in ids if ids.count(i) > 1})
+        if repeated:
+            raise ValueError(f"room {repeated[0]!r} is listed twice; list each room once")
+        return self
+
+    def draft(self) -> FloorPlanReply:
+        return FloorPlanReply(rooms=[RoomDraft(**r.model_dump()) for r in self.rooms])
+
+
+# --- plan requests ----------------------------------------------------------------------------
 # Conditions are lists of literals with enumerated roles/rooms/flags; `plan.py` converts them to
 # the internal drafts above (condition-language strings) after validation.
 

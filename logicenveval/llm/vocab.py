@@ -26,6 +26,9 @@ from pydantic_core import CoreSchema, core_schema
 
 #: JSON-schema key of the marker (kept in the schema sent without a vocabulary: servers ignore it)
 MARK = "x-vocab"
+#: JSON-schema key of a list whose length is at most the size of a vocabulary (`maxItems`);
+#: its items must then be distinct, which the reply model checks
+COUNT = "x-count"
 #: validation-context key under which `ask` passes the vocabulary
 CONTEXT_KEY = "vocabulary"
 
@@ -95,6 +98,10 @@ def specialise(schema: dict[str, Any], vocabulary: Vocabulary | None) -> dict[st
                 node["pattern"] = words.regex
             elif words:
                 node["enum"] = list(dict.fromkeys(words))
+            counted = node.get(COUNT)
+            bound = vocabulary.get(counted) if isinstance(counted, str) else None
+            if bound and not isinstance(bound, Pattern):  # a list of at most one item per word
+                node["maxItems"] = len(set(bound))
             for value in node.values():
                 walk(value)
         elif isinstance(node, list):
