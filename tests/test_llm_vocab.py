@@ -128,3 +128,18 @@ def test_structured_conditions_round_trip(parts: list[tuple[bool, str]]) -> None
 
     lits = TypeAdapter(Conjunction).validate_python(literals_of(text))
     assert parse(to_text(lits)) == parse(text)
+
+
+def test_floor_plan_lists_each_room_once_with_whole_square_metres() -> None:
+    from logicenveval.llm.replies import FloorPlanWire
+    from logicenveval.llm.vocab import scene_vocabulary
+
+    vocab = scene_vocabulary(["kitchen", "hallway"], [], [])
+    schema = specialise(reply_schema(FloorPlanWire), vocab)
+    assert schema["properties"]["rooms"]["maxItems"] == 2
+    assert schema["$defs"]["RoomWire"]["properties"]["area_m2"] == {"maximum": 80, "minimum": 3, "type": "integer"}
+    room = {"id": "kitchen", "type": "Kitchen", "area_m2": 12}
+    with pytest.raises(ModelReplyError, match="room 'kitchen' is listed twice"):
+        ask(_Fixed([{"rooms": [room, room]}]), "floor_plan", {**PAYLOAD, "situation": []}, FloorPlanWire, vocabulary=vocab)
+    plan = ask(_Fixed([{"rooms": [room]}]), "floor_plan", {**PAYLOAD, "situation": []}, FloorPlanWire, vocabulary=vocab).draft()
+    assert plan.rooms[0].area_m2 == 12.0
