@@ -143,3 +143,11 @@ def test_floor_plan_lists_each_room_once_with_whole_square_metres() -> None:
         ask(_Fixed([{"rooms": [room, room]}]), "floor_plan", {**PAYLOAD, "situation": []}, FloorPlanWire, vocabulary=vocab)
     plan = ask(_Fixed([{"rooms": [room]}]), "floor_plan", {**PAYLOAD, "situation": []}, FloorPlanWire, vocabulary=vocab).draft()
     assert plan.rooms[0].area_m2 == 12.0
+
+
+def test_a_relation_with_the_wrong_number_of_objects_is_invalid() -> None:
+    from logicenveval.llm.replies import RelationDraft
+
+    with pytest.raises(ValueError, match="'inside' takes 2 object id"):
+        RelationDraft(type="inside", args=["cup"])
+    assert RelationDraft(type="edge", args=["sofa"]).args == ["sofa"]

@@ -154,6 +154,17 @@ class RelationDraft(BaseModel):
     args: list[Annotated[str, Vocab("object_ids")]] = Field(min_length=1, max_length=2,
                                                             description="object ids")
 
+    @model_validator(mode="after")
+    def _arity(self) -> RelationDraft:
+        """`inside` with one object would reach the solver and crash it: refused here, so the
+        model is asked again (seen with a real small model)."""
+        from logicenveval.model.envspec import RELATION_TYPES
+
+        wanted = RELATION_TYPES.get(self.type)
+        if wanted is not None and len(self.args) != wanted:
+            raise ValueError(f"relation {self.type!r} takes {wanted} object id(s), got {self.args}")
+        return self
+
 
 class RelationsReply(BaseModel):
     model_config = _F
