@@ -15,6 +15,7 @@ import os
 import tempfile
 from collections.abc import Iterator
 from pathlib import Path
+from typing import BinaryIO
 
 #: write errors of the machine rather than of the path given: the work failed (CLI exit 1)
 RESOURCE_ERRNOS = frozenset({errno.ENOSPC, errno.EDQUOT, errno.EIO, errno.EFBIG, errno.ENOMEM})
@@ -38,38 +39,9 @@ def _named(exc: OSError, path: Path) -> OSError:
 
 
 @contextlib.contextmanager
-def atomic_path(path: Path, *, durable: bool = True) -> Iterator[Path]:
-    """A temp path in `path`'s folder for a writer that wants a file name (an image library);
-    renamed to `path` when the block ends without an exception, removed otherwise."""
-    try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    except OSError as exc:
-        raise _named(exc, path) from exc
-    os.close(fd)
-    try:
-        yield Path(tmp)
-        os.chmod(tmp, 0o666 & ~_umask())
-        if durable:
-            with open(tmp, "rb") as fh:
-                os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    except BaseException as exc:
-        with contextlib.suppress(FileNotFoundError):
-            os.unlink(tmp)
-        if isinstance(exc, OSError):
-            raise _named(exc, path) from exc
-        raise
-    if durable:
-        _sync_folder(path.parent)
-
-
-def atomic_write_bytes(path: Path, data: bytes, *, durable: bool = True) -> None:
-    """Write `data` so that readers see the old file or the complete new one, never a part.
-
-    `durable` also fsyncs the file and its folder, so the write survives a power loss; files a
-    unit commit vouches for by digest (or that are rebuilt from units) skip that cost.
-    """
+def _temp_for(path: Path, *, durable: bool) -> Iterator[tuple[BinaryIO, Path]]:
+    """An open temp file (file object, path) in `path`'s folder, renamed to `path` when the block
+    ends without an exception and removed otherwise; OS errors name `path`."""
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
@@ -77,7 +49,7 @@ def atomic_write_bytes(path: Path, data: bytes, *, durable: bool = True) -> None
         raise _named(exc, path) from exc
     try:
         with os.fdopen(fd, "wb") as fh:
-            fh.write(data)
+            yield fh, Path(tmp)
             fh.flush()
             os.fchmod(fh.fileno(), 0o666 & ~_umask())
             if durable:
@@ -91,6 +63,24 @@ def atomic_write_bytes(path: Path, data: bytes, *, durable: bool = True) -> None
         raise
     if durable:
         _sync_folder(path.parent)
+
+
+@contextlib.contextmanager
+def atomic_path(path: Path, *, durable: bool = True) -> Iterator[Path]:
+    """A temp path in `path`'s folder for a writer that wants a file name (an image library);
+    renamed to `path` when the block ends without an exception, removed otherwise."""
+    with _temp_for(path, durable=durable) as (_, tmp):
+        yield tmp
+
+
+def atomic_write_bytes(path: Path, data: bytes, *, durable: bool = True) -> None:
+    """Write `data` so that readers see the old file or the complete new one, never a part.
+
+    `durable` also fsyncs the file and its folder, so the write survives a power loss; files a
+    unit commit vouches for by digest (or that are rebuilt from units) skip that cost.
+    """
+    with _temp_for(path, durable=durable) as (fh, _):
+        fh.write(data)
 
 
 def atomic_write_text(path: Path, text: str, *, durable: bool = True) -> None:

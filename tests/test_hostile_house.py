@@ -205,7 +205,7 @@ def test_full_disk_keeps_the_old_file_and_names_the_new_one(tmp_path: Path, caps
             "export-glb": ["export", str(ENVS / "one_room.json"), "--format", "glb"],
             "import-house": ["import-house", str(HOUSES / "kitchen_breakfast.json"), "--task", TASK]}[command]
     code, _, err = cli(capsys, *argv, "--out", str(out))
-    assert code == 2 and str(out) in err and os.strerror(errno.ENOSPC) in err
+    assert code == 1 and str(out) in err and os.strerror(errno.ENOSPC) in err  # the machine failed
     assert out.read_text() == "a good file from before"
     assert [p.name for p in tmp_path.iterdir()] == ["target.out"]  # no temp file left
 

@@ -13,9 +13,9 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from cli_support import cli
 
 from logicenveval.benchmark import DEFAULT_TASKS_DIR
-from logicenveval.cli import main
 from logicenveval.generators.base import _REGISTRY, GenerationContext, GenerationResult
 from logicenveval.model.task import TaskBrief
 
@@ -23,16 +23,6 @@ TASK = "clean_living_room"
 ENVS = Path(__file__).parent / "fixtures" / "envs"
 SECRET = "sk-hostile-SECRET-0123456789"
 
-
-def cli(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
-    """Run the CLI in-process; argparse errors count as their exit code."""
-    try:
-        code = main(list(argv))
-    except SystemExit as exc:
-        code = int(exc.code or 0)
-    out, err = capsys.readouterr()
-    assert "Traceback" not in out + err
-    return code, out, err
 
 
 def sub(*argv: str, cwd: Path | None = None, env: dict[str, str] | None = None,

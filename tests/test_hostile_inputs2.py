@@ -20,23 +20,13 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-
-from logicenveval.cli import main
+from cli_support import cli
 
 HERE = Path(__file__).parent
 ENVS = HERE / "fixtures" / "envs"
 TASK = "clean_living_room"
 TASK2 = "kitchen_fridge_restock"
 
-
-def cli(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
-    try:
-        code = main(list(argv))
-    except SystemExit as exc:
-        code = int(exc.code or 0)
-    out, err = capsys.readouterr()
-    assert "Traceback" not in out + err
-    return code, out, err
 
 
 def sub(*argv: str, timeout: float = 300, **kw: Any) -> subprocess.CompletedProcess[str]:

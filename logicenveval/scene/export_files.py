@@ -11,7 +11,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from logicenveval.atomic import atomic_write_bytes
+from logicenveval.atomic import RESOURCE_ERRNOS, atomic_write_bytes
 from logicenveval.domain.catalog import Catalog, load_catalog
 from logicenveval.envfiles import load_env
 from logicenveval.errors import ConfigError
@@ -30,6 +30,8 @@ def write_output(out: Path, data: str | bytes, *, what: str = "output file",
     try:
         atomic_write_bytes(out, data.encode("utf-8") if isinstance(data, str) else data)
     except OSError as exc:
+        if exc.errno in RESOURCE_ERRNOS:
+            raise  # the machine failed the work (a full disk): the CLI names the file, exit 1
         raise ConfigError(f"cannot write the {what}: {exc.strerror or exc}", file=str(out), field=field,
                           hint="choose a writable path whose folders are folders, on a disk with "
                           "free space (nothing was changed there)") from None
