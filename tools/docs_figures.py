@@ -67,7 +67,7 @@ LABELS = {"logicenvgen": "logicenvgen (MTSA)", "logicenvgen-exact": "logicenvgen
 NOT_MEASURED = "not measured"
 
 BLOCK = re.compile(r"(<!-- figures:([a-z0-9-]+) -->\n)(.*?)(\n<!-- /figures -->)", re.S)
-FIG = re.compile(r"(<!--fig:([a-z0-9_]+)-->)(.*?)(<!--/fig-->)", re.S)
+FIG = re.compile(r"(<!--fig:([a-z0-9_.-]+)-->)(.*?)(<!--/fig-->)", re.S)
 
 
 # ---------------------------------------------------------------- sources
@@ -366,7 +366,25 @@ INLINE: dict[str, Callable[[], str]] = {
     "exact_fewer_envs": lambda: f"{100 * (1 - _row('logicenvgen-exact')['n_envs'] / _row('logicenvgen')['n_envs']):.0f}",
     "no_mtsa_envs": lambda: thousands(_row("logicenvgen-no-mtsa", "ablation")["n_envs"]),
     "no_mtsa_redundancy": lambda: f"{_row('logicenvgen-no-mtsa', 'ablation')['redundancy']:.1f}",
+    "no_mtsa_ticks_ratio": lambda: f"{_row('logicenvgen-no-mtsa', 'ablation')['st_ticks'] / _row('logicenvgen', 'ablation')['st_ticks']:.1f}",
+    "no_mtsa_logcov_gain": lambda: f"{100 * (_row('logicenvgen-no-mtsa', 'ablation')['logcov'] - _row('logicenvgen', 'ablation')['logcov']):+.2f}",
 }
+
+
+#: figures written as numbers, not percentages
+PLAIN = ("ji", "redundancy", "st_ticks", "st_ms")
+
+
+def data_figure(name: str) -> str | None:
+    """`RUN.GENERATOR.METRIC[.SUB]` (RUN: reference or a run of `RUNS`), e.g.
+    `reference.cot.phypr.floor_plan` -> 82.39, `ablation.logicenvgen-no-dbp.ji` -> 0.32."""
+    parts = name.split(".")
+    if len(parts) < 3 or (parts[0] != "reference" and parts[0] not in RUNS):
+        return None
+    value = get(_row(parts[1], parts[0]), *parts[2:])
+    if parts[-1] == "n_envs":
+        return thousands(value)
+    return num(value) if parts[-1] in PLAIN else pct(value)
 
 
 # ---------------------------------------------------------------- driver
@@ -384,9 +402,11 @@ def render(text: str) -> str:
 
     def inline(m: re.Match[str]) -> str:
         name = m.group(2)
-        if name not in INLINE:
-            raise SystemExit(f"unknown inline figure {name!r}; known: {', '.join(sorted(INLINE))}")
-        return m.group(1) + INLINE[name]() + m.group(4)
+        value = INLINE[name]() if name in INLINE else data_figure(name)
+        if value is None:
+            raise SystemExit(f"unknown inline figure {name!r}; known: RUN.GENERATOR.METRIC or "
+                             + ", ".join(sorted(INLINE)))
+        return m.group(1) + value + m.group(4)
 
     return FIG.sub(inline, BLOCK.sub(block, text))
 
