@@ -86,8 +86,17 @@ class ModelReplyError(LogicEnvEvalError):
     """An LLM reply stayed invalid after the bounded repair/re-ask budget."""
 
 
+class ModelTruncatedError(ModelReplyError):
+    """A reply was cut at `max_tokens` (`finish_reason: length`): the model's output, not the
+    infrastructure, so it counts as a failed generation attempt."""
+
+
 class ModelConnectionError(LogicEnvEvalError):
     """An LLM endpoint could not be reached or kept failing (timeouts, 429/5xx)."""
+
+
+class ServerStartError(ModelConnectionError):
+    """A managed local model server (llama.cpp) did not start: infrastructure, not the model."""
 
 
 class CacheMissError(LogicEnvEvalError):

@@ -127,7 +127,9 @@ def test_subtree_budget_can_be_raised(monkeypatch: pytest.MonkeyPatch) -> None:
 
 # ----- 4. infrastructure failures are not frozen into the run -------------------------------
 
-def test_invalid_reply_is_evicted_from_the_cache(tmp_path: Path) -> None:
+def test_invalid_replies_are_cached_for_replay_and_cannot_trap_a_run(tmp_path: Path) -> None:
+    """Re-asks differ from the first request (temperature, seed, feedback), so keeping invalid
+    replies in the cache cannot loop; it lets `replay:` reproduce the failed unit exactly."""
     from logicenveval.errors import ModelReplyError
     from logicenveval.llm.ask import ask
     from logicenveval.llm.base import ChatRequest, ModelStats
@@ -151,10 +153,10 @@ def test_invalid_reply_is_evicted_from_the_cache(tmp_path: Path) -> None:
                         "roles": {"toy": {"category": "toy", "attributes": {}}}}}
     with pytest.raises(ModelReplyError):
         ask(model, "decompose_task", payload, DecomposeReply)
-    assert len(cache) == 0  # a fixed server will be asked again
+    assert len(cache) == 3 and inner.calls == 3  # three distinct requests, three cached replies
     with pytest.raises(ModelReplyError):
         ask(model, "decompose_task", payload, DecomposeReply)
-    assert inner.calls == 6
+    assert inner.calls == 3  # the second run is served from the cache and fails the same way
 
 
 def test_unusable_cache_is_caught_before_the_first_unit(tmp_path: Path,

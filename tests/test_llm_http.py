@@ -14,7 +14,7 @@ from typing import Any
 import pytest
 
 from logicenveval.errors import CacheMissError, ModelConnectionError, ModelReplyError
-from logicenveval.llm.ask import ask
+from logicenveval.llm.ask import ask, reply_schema
 from logicenveval.llm.registry import make_model, parse_model_args
 from logicenveval.llm.replies import DecomposeReply
 
@@ -96,7 +96,7 @@ def test_valid_reply_and_schema_sent(server: tuple[str, Script], tmp_path: Path)
     assert reply.subtasks[0].id == "tidy"
     sent = script.requests[0]
     assert sent["model"] == "test-model"
-    assert sent["response_format"]["json_schema"]["schema"] == DecomposeReply.model_json_schema()
+    assert sent["response_format"]["json_schema"]["schema"] == reply_schema(DecomposeReply)
     assert script.headers[0]["Authorization"] == f"Bearer {SECRET}"
 
 
@@ -218,3 +218,52 @@ def test_model_args_parsing() -> None:
         "base_url": "http://h:8000/v1", "timeout": 30, "json_schema": False, "x": 1.5}
     with pytest.raises(Exception, match="not key=value"):
         parse_model_args("oops")
+
+
+def _cut(content: str) -> tuple[int, str, dict[str, str]]:
+    body = {"choices": [{"message": {"role": "assistant", "content": content}, "finish_reason": "length"}]}
+    return 200, json.dumps(body), {}
+
+
+def test_reasks_change_temperature_and_seed_and_never_repeat_a_request(
+        server: tuple[str, Script], tmp_path: Path) -> None:
+    url, script = server
+    script.steps = [_chat('{"subtasks": "none"}')] * 3
+    with pytest.raises(ModelReplyError):
+        ask(_model(url, tmp_path), "decompose_task", BRIEF, DecomposeReply, seed=7)
+    bodies = [json.dumps(r, sort_keys=True) for r in script.requests]
+    assert len(set(bodies)) == 3  # no two attempts identical
+    assert [r["temperature"] for r in script.requests] == [0.0, 0.3, 0.6]
+    assert [r["seed"] for r in script.requests] == [7, 8, 9]
+    # each re-ask quotes the validator's message, and the prompt does not grow with the attempts
+    assert "subtasks" in script.requests[1]["messages"][-1]["content"]
+    assert len(script.requests[1]["messages"]) == len(script.requests[2]["messages"])
+    assert all(r["max_tokens"] == 800 for r in script.requests)  # decompose_task's default bound
+
+
+def test_a_reply_cut_at_max_tokens_is_a_truncation_error_naming_it(
+        server: tuple[str, Script], tmp_path: Path) -> None:
+    from logicenveval.errors import ModelTruncatedError
+
+    url, script = server
+    script.steps = [_cut('{"subtasks": [{"id": "ZZCUT')] * 3
+    model = _model(url, tmp_path)
+    with pytest.raises(ModelTruncatedError, match="max_tokens=800"):
+        ask(model, "decompose_task", BRIEF, DecomposeReply)
+    # the cut reply is never sent back: the re-ask says it was cut and asks for a shorter one
+    assert all("ZZCUT" not in m["content"] for m in script.requests[1]["messages"])
+    assert "cut off at max_tokens=800" in script.requests[1]["messages"][-1]["content"]
+    counts = model.stats.by_kind["decompose_task"]
+    assert counts == {"questions": 1, "attempts": 3, "truncated": 3}
+
+
+def test_validity_counters_per_kind(server: tuple[str, Script], tmp_path: Path) -> None:
+    url, script = server
+    script.steps = [_chat("no json"), _chat(json.dumps(VALID)), _chat(json.dumps(VALID))]
+    model = _model(url, tmp_path)
+    ask(model, "decompose_task", BRIEF, DecomposeReply)
+    ask(model, "decompose_task", {**BRIEF, "x": 1}, DecomposeReply)
+    assert model.stats.by_kind["decompose_task"] == {
+        "questions": 2, "attempts": 3, "truncated": 0, "valid": 2, "valid_first": 1}
+    flat = model.stats.as_dict()
+    assert flat["kind.decompose_task.valid_first"] == 1 and "by_kind" not in flat

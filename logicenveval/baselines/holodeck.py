@@ -37,6 +37,7 @@ from logicenveval.generators.base import (
 from logicenveval.generators.construction import placement_fields
 from logicenveval.llm.ask import ask
 from logicenveval.llm.replies import ObjectDraft
+from logicenveval.llm.vocab import scene_vocabulary
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import TaskBrief
 from logicenveval.scene.guessed_layout import typical_size
@@ -64,7 +65,9 @@ class Holodeck:
         env_id = f"{self.name}-00"
         ctx.plan_attempts(1)
         try:
-            scene = ask(ctx.model, "holodeck_scene", payload, HolodeckSceneReply, seed=ctx.seed)
+            scene = ask(ctx.model, "holodeck_scene", payload, HolodeckSceneReply, seed=ctx.seed,
+                        vocabulary=scene_vocabulary(brief.rooms, sorted(brief.roles), [
+                            *payload["categories"], *(r.category for r in brief.roles.values())]))
             env, log = build_scene(brief, scene, ctx.catalog, ctx.rng, env_id=env_id, generator=self.name,
                                    grid=self.grid, max_nodes=self.max_nodes)
         except LogicEnvEvalError as exc:

@@ -16,12 +16,14 @@ from logicenveval.generators.plan import PlanLog
 from logicenveval.llm.ask import ask
 from logicenveval.llm.replies import (
     FloorPlanReply,
+    FloorPlanWire,
     ObjectDraft,
     ObjectsReply,
     PlacementReply,
     RelationDraft,
     RelationsReply,
 )
+from logicenveval.llm.vocab import Words, scene_vocabulary
 from logicenveval.model.conditions import evaluate, parse
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import Task, TaskBrief
@@ -79,9 +81,13 @@ class EnvironmentBuilder:
     def _payload(self, **extra: Any) -> dict[str, Any]:
         return {"task": self.brief.model_dump(mode="json"), **extra}
 
+    def _vocabulary(self, rooms: list[str], object_ids: list[str] | None = None) -> dict[str, Words]:
+        categories = [*sorted(self.ctx.catalog.categories), *(r.category for r in self.brief.roles.values())]
+        return scene_vocabulary(rooms, sorted(self.brief.roles), categories, object_ids)
+
     def floor_plan(self, facts: list[str]) -> FloorPlanReply:
-        return ask(self.ctx.model, "floor_plan", self._payload(situation=facts), FloorPlanReply,
-                   seed=self.ctx.seed)
+        return ask(self.ctx.model, "floor_plan", self._payload(situation=facts), FloorPlanWire,
+                   seed=self.ctx.seed, vocabulary=self._vocabulary(list(self.brief.rooms))).draft()
 
     def select_objects(self, env_id: str, rooms: list[dict[str, Any]], facts: list[str],
                        log: PlanLog, feedback: list[str] | None = None) -> list[ObjectDraft]:
@@ -90,7 +96,7 @@ class EnvironmentBuilder:
         for attempt in range(self.max_refinements + 1):
             reply = ask(self.ctx.model, "select_objects", self._payload(
                 rooms=rooms, facts=facts, categories=categories, feedback=feedback), ObjectsReply,
-                seed=self.ctx.seed)
+                seed=self.ctx.seed, vocabulary=self._vocabulary([r["id"] for r in rooms]))
             objects = self._known_categories(reply.objects, log, env_id)
             sym = symbolic_env(self.brief, env_id, self.generator, rooms, objects)
             feedback = [f"the situation requires {f}, which does not hold" for f in
@@ -117,8 +123,9 @@ class EnvironmentBuilder:
         from logicenveval.scene.compat import check_relations
 
         payload_objects = [o.model_dump() for o in objects]
+        vocab = self._vocabulary(sorted({o.room for o in objects}), [o.id for o in objects])
         reply = ask(self.ctx.model, "spatial_relations", self._payload(objects=payload_objects, feedback=[]),
-                    RelationsReply, seed=self.ctx.seed)
+                    RelationsReply, seed=self.ctx.seed, vocabulary=vocab)
         relations = list(reply.relations)
         for attempt in range(self.max_refinements):
             problems = check_relations(objects, relations, self.ctx.catalog)
@@ -129,7 +136,7 @@ class EnvironmentBuilder:
             reply = ask(self.ctx.model, "refine_relations", self._payload(
                 objects=payload_objects, feedback=reasons,
                 rejected=[r.model_dump() for p in problems for r in p.relations]), RelationsReply,
-                seed=self.ctx.seed)
+                seed=self.ctx.seed, vocabulary=vocab)
             relations = list(reply.relations)
         remaining = check_relations(objects, relations, self.ctx.catalog)
         if remaining:
@@ -203,7 +210,8 @@ class EnvironmentBuilder:
         reply = ask(self.ctx.model, "place_objects", self._payload(
             rooms=[r.model_dump(mode="json") for r in plan.rooms], openings=plan.opening_requests(),
             objects=[o.model_dump() for o in objects], relations=[r.model_dump() for r in relations]),
-            PlacementReply, seed=self.ctx.seed)
+            PlacementReply, seed=self.ctx.seed,
+            vocabulary=self._vocabulary([r["id"] for r in rooms], [o.id for o in objects]))
         return env_from_placed(brief=self.brief, env_id=env_id, generator=self.generator, plan=plan,
                                placed=reply.objects, relations=reply.relations or relations,
                                openings={o.id: o.segment for o in reply.openings}, claimed_trajectory=claim,

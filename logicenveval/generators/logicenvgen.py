@@ -21,9 +21,10 @@ from logicenveval.generators.base import (
     GenerationResult,
 )
 from logicenveval.generators.construction import EnvironmentBuilder
-from logicenveval.generators.plan import DerivedPlan, PlanLog, derive_plan
+from logicenveval.generators.plan import DerivedPlan, PlanLog, derive_plan, plan_vocabulary
 from logicenveval.llm.ask import ask
-from logicenveval.llm.replies import TrajectoriesReply
+from logicenveval.llm.replies import TrajectoriesWire
+from logicenveval.llm.structured import literal_text
 from logicenveval.logic.exhaustive import MAX_SUBSETS, exhaustive_cover
 from logicenveval.logic.selectors import get_selector
 from logicenveval.model.task import TaskBrief
@@ -58,12 +59,14 @@ class LogicEnvGen:
             artifacts["trajectories"] = targets
         else:
             reply = ask(ctx.model, "trajectories_direct", {"task": brief.model_dump(mode="json")},
-                        TrajectoriesReply, seed=ctx.seed)
-            situations = [list(t.facts) for t in reply.trajectories]
+                        TrajectoriesWire, seed=ctx.seed, vocabulary=plan_vocabulary(brief))
+            situations = [[literal_text(f) for f in t.facts] for t in reply.trajectories]
             claims = [None] * len(situations)
-            targets = [" & ".join(t.facts) for t in reply.trajectories]
+            targets = [" & ".join(facts) for facts in situations]
             plan = None
-            artifacts = {"trajectories": [t.model_dump() for t in reply.trajectories], "log": []}
+            artifacts = {"trajectories": [{"description": t.description, "facts": facts}
+                                          for t, facts in zip(reply.trajectories, situations, strict=True)],
+                         "log": []}
         ctx.plan_attempts(len(situations))
         builder = EnvironmentBuilder(brief, ctx, generator=self.name, use_solver=self.use_solver,
                                      max_refinements=self.max_refinements)

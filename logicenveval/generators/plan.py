@@ -1,6 +1,7 @@
 """Behaviour plan derivation (paper §3.1): decomposition, factors, decision trees, verification.
 
-The LLM proposes subtasks, uncertain factors and trees; rule-guided verification checks
+The LLM proposes subtasks, uncertain factors and trees (grown one question at a time, in the
+task's own vocabulary); rule-guided verification checks
 (a) independence of subtasks (no shared factor, no shared tested role), (b) syntax/schema,
 (c) every internal node grounded in an identified factor, and (d) every factor value a condition
 on the task's roles (DESIGN.md §3). Violations go back to the LLM as feedback, a bounded number
@@ -11,22 +12,26 @@ factors) and logged, so the plan is always a valid `Task` built from the brief a
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import lru_cache
 from typing import Any
 
-from pydantic import ValidationError
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, create_model
 
-from logicenveval.errors import ConditionSyntaxError, LogicEnvEvalError
+from logicenveval.errors import ConditionSyntaxError, LogicEnvEvalError, ModelReplyError
 from logicenveval.generators.base import GenerationContext
 from logicenveval.llm.ask import ask
 from logicenveval.llm.replies import (
-    DecomposeReply,
+    DecomposeWire,
     FactorDraft,
-    FactorsReply,
+    FactorsWire,
+    LeafWire,
     PlanLeaf,
     QueryNode,
     SubtaskDraft,
-    TreeReply,
+    TreeStepReply,
 )
+from logicenveval.llm.structured import to_text
+from logicenveval.llm.vocab import SNAKE, Words
 from logicenveval.model.conditions import AGENT_PREDICATES, atoms, parse, subject_roles
 from logicenveval.model.rooms import ROOM_TYPES
 from logicenveval.model.task import Task, TaskBrief
@@ -129,24 +134,53 @@ class DerivedPlan:
         }
 
 
+def plan_vocabulary(brief: TaskBrief) -> dict[str, Words]:
+    """The words a plan reply may use: the task's roles and rooms, snake_case ids."""
+    roles = sorted(brief.roles)
+    return {"roles": roles, "places": [*roles, "floor"], "rooms": list(brief.rooms),
+            "attr_keys": SNAKE, "attr_values": SNAKE, "ids": SNAKE}
+
+
+#: bound on the tree_step questions of one subtask (a tree over many factors is cut into leaves)
+MAX_TREE_STEPS = 64
+
+
 def derive_plan(brief: TaskBrief, ctx: GenerationContext, *, max_refinements: int = 2) -> DerivedPlan:
-    """Decompose, identify factors and build trees with bounded rule-guided refinement."""
+    """Decompose, identify factors and grow trees step by step, with rule-guided refinement.
+
+    Replies are bound to the task's vocabulary (`plan_vocabulary`). A tree is grown one question
+    at a time (`tree_step`: which factor next on this path, or act), so its branches are the
+    factor's responses and no factor repeats on a path by construction; its leaves' plans come
+    in one `tree_leaves` request. A question that stays invalid after its re-asks is repaired by
+    rule (no factors for that subtask, a leaf where the tree could not grow) and logged."""
     log = PlanLog()
-    decomposition = ask(ctx.model, "decompose_task", _payload(brief), DecomposeReply, seed=ctx.seed)
-    subtasks = [s for s in decomposition.subtasks if s.roles or s.description]
+    vocab = plan_vocabulary(brief)
+    decomposition = ask(ctx.model, "decompose_task", _payload(brief), DecomposeWire, seed=ctx.seed,
+                        vocabulary=vocab)
+    subtasks = [SubtaskDraft(id=s.id, description=s.description, roles=list(s.roles))
+                for s in decomposition.subtasks if s.roles or s.description]
+    subtasks = [s for i, s in enumerate(subtasks) if s.id not in {t.id for t in subtasks[:i]}]
     factors_of: dict[str, list[FactorDraft]] = {}
     for st in subtasks:
         feedback: list[str] = []
+        drafts: list[FactorDraft] = []
         for attempt in range(max_refinements + 1):
-            reply = ask(ctx.model, "identify_factors",
-                        _payload(brief, subtask=st.model_dump(), feedback=feedback),
-                        FactorsReply, seed=ctx.seed)
-            feedback = [p for f in reply.factors for p in check_factor(brief, f)]
+            try:
+                reply = ask(ctx.model, "identify_factors",
+                            _payload(brief, subtask=st.model_dump(), feedback=feedback),
+                            FactorsWire, seed=ctx.seed, vocabulary=vocab)
+            except ModelReplyError as exc:
+                log.add("identify_factors", "no valid reply; the subtask keeps no factors",
+                        subtask=st.id, error=exc.message)
+                drafts = []
+                break
+            drafts = [f.draft() for f in reply.factors]
+            feedback = [p for f in drafts for p in check_factor(brief, f)]
             if not feedback:
                 break
             log.add("identify_factors", "refine", subtask=st.id, attempt=attempt, problems=feedback)
-        good = [f for f in reply.factors if not check_factor(brief, f)]
-        dropped = [f.id for f in reply.factors if f not in good]
+        good = [f for f in drafts if not check_factor(brief, f)]
+        dropped = [f.id for f in drafts if f not in good]
         if dropped:
             log.add("identify_factors", "dropped factors that stay ungrounded", subtask=st.id,
                     factors=dropped)
@@ -155,23 +189,84 @@ def derive_plan(brief: TaskBrief, ctx: GenerationContext, *, max_refinements: in
     trees: dict[str, QueryNode | PlanLeaf] = {}
     for st in subtasks:
         factors = {f.id: f for f in factors_of[st.id]}
-        feedback = []
-        tree: QueryNode | PlanLeaf = PlanLeaf(plan=[st.description], goal="true")
-        for attempt in range(max_refinements + 1):
-            kind = "build_tree" if attempt == 0 else "refine_tree"
-            reply_tree = ask(ctx.model, kind, _payload(
-                brief, subtask=st.model_dump(), factors=[f.model_dump() for f in factors.values()],
-                feedback=feedback, tree=tree.model_dump() if attempt else None), TreeReply, seed=ctx.seed)
-            tree = reply_tree.tree
-            feedback = check_tree(tree, factors)
-            if not feedback:
-                break
-            log.add(kind, "refine", subtask=st.id, attempt=attempt, problems=feedback)
-        if feedback:
+        tree = _grow_tree(brief, ctx, st, factors, log)
+        problems = check_tree(tree, factors)
+        if problems:  # cannot happen by construction; kept as the rule check of the paper
+            log.add("verify", "tree rejected", subtask=st.id, problems=problems)
             tree = _prune(tree, factors)
-            log.add("build_tree", "pruned queries that stay ungrounded", subtask=st.id)
         trees[st.id] = tree
     return DerivedPlan(_as_task(brief, subtasks, factors_of, trees, log), log)
+
+
+def _grow_tree(brief: TaskBrief, ctx: GenerationContext, st: SubtaskDraft,
+               factors: dict[str, FactorDraft], log: PlanLog) -> QueryNode | PlanLeaf:
+    """The subtask's tree, one `tree_step` question per node, then its leaves' plans.
+
+    The root must ask one of the identified factors (they were identified because they change
+    what the agent does); below it the model may act at any point."""
+    base = _payload(brief, subtask=st.model_dump(), factors=[f.model_dump() for f in factors.values()])
+    budget = [MAX_TREE_STEPS]
+    leaves: list[list[tuple[str, str]]] = []
+
+    def grow(path: list[tuple[str, str]]) -> QueryNode | PlanLeaf:
+        asked = {var for var, _ in path}
+        remaining = [f for f in factors if f not in asked]
+        if not remaining or budget[0] <= 0:
+            leaves.append(path)
+            return PlanLeaf(plan=[st.description], goal="true")
+        budget[0] -= 1
+        try:
+            step = ask(ctx.model, "tree_step",
+                       {**base, "path": [{"factor": v, "response": x} for v, x in path]},
+                       TreeStepReply, seed=ctx.seed,
+                       vocabulary={"next_steps": [*remaining, ACT] if path else remaining})
+        except ModelReplyError as exc:
+            log.add("tree_step", "no valid reply; a leaf here", subtask=st.id,
+                    path=dict(path), error=exc.message)
+            leaves.append(path)
+            return PlanLeaf(plan=[st.description], goal="true")
+        if step.next == ACT:
+            leaves.append(path)
+            return PlanLeaf(plan=[st.description], goal="true")
+        var = step.next
+        return QueryNode(var=var, query=factors[var].question,
+                         branches={value: grow([*path, (var, value)]) for value in factors[var].values})
+
+    tree = grow([])
+    if not factors:
+        return tree
+    try:
+        reply = ask(ctx.model, "tree_leaves",
+                    {**base, "leaves": [[{"factor": v, "response": x} for v, x in p] for p in leaves]},
+                    leaves_reply(len(leaves)), seed=ctx.seed, vocabulary=plan_vocabulary(brief))
+    except ModelReplyError as exc:
+        log.add("tree_leaves", "no valid reply; leaves keep the subtask description",
+                subtask=st.id, error=exc.message)
+        return tree
+    plans = {tuple(p): leaf for p, leaf in zip(leaves, reply.leaves, strict=True)}  # type: ignore[attr-defined]
+
+    def fill(node: QueryNode | PlanLeaf, path: list[tuple[str, str]]) -> QueryNode | PlanLeaf:
+        if isinstance(node, PlanLeaf):
+            leaf = plans[tuple(path)]
+            return PlanLeaf(plan=list(leaf.plan), goal=to_text(list(leaf.goal)))
+        return QueryNode(var=node.var, query=node.query, branches={
+            v: fill(c, [*path, (node.var, v)]) for v, c in node.branches.items()})
+
+    return fill(tree, [])
+
+
+#: the `tree_step` answer that ends a path with a leaf
+ACT = "act"
+
+
+@lru_cache(maxsize=64)
+def leaves_reply(n: int) -> type[BaseModel]:
+    """The `tree_leaves` reply model for exactly `n` leaves (listed in the request's order)."""
+    model: type[BaseModel] = create_model(
+        "LeavesReply", __config__=ConfigDict(frozen=True, extra="ignore"),
+        leaves=(list[LeafWire], Field(min_length=n, max_length=n,
+                                      description="one entry per listed situation, in order")))
+    return model
 
 
 def _independent(

@@ -16,6 +16,20 @@ class ChatRequest:
     temperature: float = 0.0
     #: sampling seed forwarded to servers that support it (part of the cache key)
     seed: int | None = None
+    #: reply length bound of this request kind (`ask.MAX_TOKENS`); a model arg overrides it
+    max_tokens: int | None = None
+
+
+#: appended by providers to a reply cut at its token bound (`finish_reason: length`); it travels
+#: through the reply cache with the text, so a replayed run sees the same truncation
+TRUNCATION_MARK = "\n<<logicenveval:finish_reason=length>>"
+
+
+def split_truncation(reply: str) -> tuple[str, bool]:
+    """(reply text, whether the provider cut it at its token bound)."""
+    if reply.endswith(TRUNCATION_MARK):
+        return reply[: -len(TRUNCATION_MARK)], True
+    return reply, False
 
 
 @runtime_checkable
@@ -37,6 +51,9 @@ class ModelStats:
     prompt_tokens: int = 0
     completion_tokens: int = 0
     latency_s: float = 0.0
+    #: per request kind: questions asked, attempts sent, valid first replies, valid after
+    #: re-asks, attempts cut at max_tokens (`ask` counts them; reported as results.json `llm`)
+    by_kind: dict[str, dict[str, int]] = field(default_factory=dict)
     _lock: threading.Lock = field(default_factory=threading.Lock, repr=False, compare=False)
 
     def add(self, **deltas: float) -> None:
@@ -44,6 +61,21 @@ class ModelStats:
             for key, value in deltas.items():
                 setattr(self, key, getattr(self, key) + value)
 
-    def as_dict(self) -> dict[str, float]:
+    def count(self, kind: str, **deltas: int) -> None:
         with self._lock:
-            return {k: v for k, v in vars(self).items() if not k.startswith("_")}
+            counters = self.by_kind.setdefault(kind, {})
+            for key, value in deltas.items():
+                counters[key] = counters.get(key, 0) + value
+
+    def as_dict(self) -> dict[str, float]:
+        """Flat counters; per-kind ones as `kind.<kind>.<counter>` (see `KIND_PREFIX`)."""
+        with self._lock:
+            out: dict[str, float] = {k: v for k, v in vars(self).items()
+                                     if not k.startswith("_") and k != "by_kind"}
+            for kind, counters in self.by_kind.items():
+                for key, value in counters.items():
+                    out[f"{KIND_PREFIX}{kind}.{key}"] = value
+            return out
+
+
+KIND_PREFIX = "kind."

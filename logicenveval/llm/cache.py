@@ -40,6 +40,8 @@ def cache_key(provider: str, model: str, request: ChatRequest) -> str:
             "schema": request.schema,
             "temperature": request.temperature,
             "seed": request.seed,
+            # only when bounded, so that keys of unbounded requests stay as they were
+            **({"max_tokens": request.max_tokens} if request.max_tokens is not None else {}),
         },
         sort_keys=True,
         separators=(",", ":"),

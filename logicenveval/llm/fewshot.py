@@ -43,9 +43,3 @@ class FewShotModel:
 
     def complete(self, request: ChatRequest) -> str:
         return self.inner.complete(replace(request, messages=with_example(request.messages)))
-
-    def forget(self, request: ChatRequest) -> None:
-        """Evict the (invalid) cached reply of the request actually sent (docs/security.md)."""
-        forget = getattr(self.inner, "forget", None)
-        if callable(forget):
-            forget(replace(request, messages=with_example(request.messages)))

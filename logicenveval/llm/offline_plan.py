@@ -11,6 +11,7 @@ from typing import Any
 from logicenveval.llm.analysis import Factor, TaskAnalysis, analyse, nest
 from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.offline import handler
+from logicenveval.llm.structured import literals_of
 from logicenveval.model.conditions import parse
 
 _KIND_OF_PRED = {"exists": "exists", "on": "location", "inside": "location", "in_room": "location",
@@ -61,8 +62,10 @@ def _factors_for(a: TaskAnalysis, subtask: dict[str, Any]) -> list[Factor]:
 def identify_factors(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
     a = _analysis(payload)
     factors = _factors_for(a, payload["subtask"])
-    return {"subtask": payload["subtask"]["id"], "factors": [
-        {"id": f.id, "question": f.question, "values": dict(f.values)} for f in factors]}
+    return {"factors": [
+        {"id": f.id, "question": f.question,
+         "responses": [{"response": v, "condition": literals_of(c)} for v, c in f.values.items()]}
+        for f in factors]}
 
 
 def _as_factor(draft: dict[str, Any], order: int) -> Factor:
@@ -79,10 +82,10 @@ def _atoms(text: str) -> list[Any]:
     return list(atoms(parse(text)))
 
 
-@handler("build_tree")
-def build_tree(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
-    """Nest the given factors; a factor the reading found stated under a condition of another
-    (`if there is no sponge` within `if the table is dirty`) is asked only under it."""
+def _tree(payload: dict[str, Any]) -> dict[str, Any]:
+    """The whole tree over the given factors; a factor the reading found stated under a
+    condition of another (`if there is no sponge` within `if the table is dirty`) is asked only
+    under it."""
     known = {f.id: f for f in _analysis(payload).factors}
     factors = []
     for i, d in enumerate(payload.get("factors") or []):
@@ -91,13 +94,34 @@ def build_tree(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
     ids = {f.id for f in factors}
     for f in factors:
         f.context = [(dep, allowed) for dep, allowed in f.context if dep in ids]
-    return {"subtask": payload["subtask"]["id"], "tree": nest(factors)}
+    return nest(factors)
 
 
-@handler("refine_tree")
-def refine_tree(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
-    tree: dict[str, Any] = build_tree(payload, request)
-    return tree
+def _node_at(tree: dict[str, Any], path: list[dict[str, str]]) -> dict[str, Any]:
+    node = tree
+    for step in path:
+        if "var" not in node or node["var"] != step["factor"] or step["response"] not in node["branches"]:
+            return {"plan": [], "goal": "true"}  # the path left this tree: act
+        node = node["branches"][step["response"]]
+    return node
+
+
+@handler("tree_step")
+def tree_step(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
+    """The factor this reading asks next on the request's path (`act` at a leaf)."""
+    node = _node_at(_tree(payload), list(payload.get("path") or []))
+    return {"next": node.get("var", "act")}
+
+
+@handler("tree_leaves")
+def tree_leaves(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
+    tree = _tree(payload)
+    leaves = []
+    for path in payload.get("leaves") or []:
+        node = _node_at(tree, path)
+        plan = list(node.get("plan") or []) or [payload["subtask"]["description"]]
+        leaves.append({"plan": plan, "goal": literals_of(node.get("goal", "true"))})
+    return {"leaves": leaves}
 
 
 @handler("trajectories_direct")
@@ -112,5 +136,5 @@ def trajectories_direct(payload: dict[str, Any], request: ChatRequest) -> dict[s
     by_id = {f.id: f for f in a.factors}
     return {"trajectories": [
         {"description": ", ".join(f"{k}={v}" for k, v in s.items()),
-         "facts": [by_id[k].values[v] for k, v in s.items()]}
+         "facts": [lit for k, v in s.items() for lit in literals_of(by_id[k].values[v])]}
         for s in situations]}

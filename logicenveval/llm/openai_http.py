@@ -21,7 +21,7 @@ import numpy as np
 
 from logicenveval.errors import ConfigError, ModelConnectionError
 from logicenveval.limits import limit, raise_hint
-from logicenveval.llm.base import ChatRequest, ModelStats
+from logicenveval.llm.base import TRUNCATION_MARK, ChatRequest, ModelStats
 from logicenveval.redact import redact, register_secret, strip_url_credentials
 
 log = logging.getLogger(__name__)
@@ -147,8 +147,9 @@ class OpenAIChatModel:
         }
         if request.seed is not None:
             body["seed"] = request.seed
-        if self.max_tokens:
-            body["max_tokens"] = self.max_tokens
+        bound = self.max_tokens or request.max_tokens
+        if bound:
+            body["max_tokens"] = bound
         if request.schema is not None and self._schema_mode != "false":
             body["response_format"] = {
                 "type": "json_schema",
@@ -237,7 +238,8 @@ class OpenAIChatModel:
     def _content(self, response: _Reply, latency: float, kind: str) -> str:
         try:
             data = json.loads(response.text)
-            content = data["choices"][0]["message"]["content"]
+            choice = data["choices"][0]
+            content = choice["message"]["content"]
         except (ValueError, KeyError, IndexError, TypeError):
             raise ModelConnectionError(
                 f"{self._shown_url} answered a {kind!r} request without choices[0].message.content",
@@ -250,7 +252,8 @@ class OpenAIChatModel:
             prompt_tokens=int(usage.get("prompt_tokens") or 0),
             completion_tokens=int(usage.get("completion_tokens") or 0),
         )
-        return redact(str(content or ""))  # a server echoing our headers must not leak the key
+        text = redact(str(content or ""))  # a server echoing our headers must not leak the key
+        return text + TRUNCATION_MARK if choice.get("finish_reason") == "length" else text
 
     def preflight(self) -> None:
         """Fail fast on what would fail every unit: an unreachable endpoint or a refused key."""

@@ -16,18 +16,9 @@ from logicenveval.benchmark import load_task
 from logicenveval.errors import ConfigError
 from logicenveval.llm.base import ChatRequest, ModelStats
 from logicenveval.llm.offline import OfflineModel
+from logicenveval.llm.structured import literals_of
 from logicenveval.model.task import Leaf, Node, Task
 from logicenveval.model.tree import task_paths
-
-
-def _tree_draft(task: Task, node: Node | Leaf) -> dict[str, Any]:
-    if isinstance(node, Leaf):
-        return {"plan": list(node.plan), "goal": node.goal}
-    return {
-        "var": node.var,
-        "query": task.variables[node.var].question,
-        "branches": {v: _tree_draft(task, child) for v, child in node.branches.items()},
-    }
 
 
 def _vars_of(node: Node | Leaf) -> list[str]:
@@ -57,27 +48,47 @@ class OracleModel:
 
     def complete(self, request: ChatRequest) -> str:
         kind, payload = request.kind, request.payload
-        if kind not in ("decompose_task", "identify_factors", "build_tree", "trajectories_direct"):
+        if kind not in ("decompose_task", "identify_factors", "tree_step", "tree_leaves",
+                        "trajectories_direct"):
             return self._offline.complete(request)
         self.stats.add(requests=1)
         task = self._task(payload)
         reply: dict[str, Any]
         if kind == "decompose_task":
-            reply = {"reasoning": "ground truth", "subtasks": [
+            reply = {"subtasks": [
                 {"id": st.id, "description": st.description or st.id,
                  "roles": sorted(task.subtask_roles(st))} for st in task.subtasks]}
         elif kind == "identify_factors":
             st = task.subtask(payload["subtask"]["id"])
-            reply = {"subtask": st.id, "factors": [
-                {"id": v, "question": task.variables[v].question, "values": dict(task.variables[v].values)}
+            reply = {"factors": [
+                {"id": v, "question": task.variables[v].question,
+                 "responses": [{"response": x, "condition": literals_of(c)}
+                               for x, c in task.variables[v].values.items()]}
                 for v in _vars_of(st.tree)]}
-        elif kind == "build_tree":
+        elif kind in ("tree_step", "tree_leaves"):
             st = task.subtask(payload["subtask"]["id"])
-            reply = {"subtask": st.id, "tree": _tree_draft(task, st.tree)}
+            if kind == "tree_step":
+                node = _node_at(st.tree, payload.get("path") or [])
+                reply = {"next": node.var if isinstance(node, Node) else "act"}
+            else:
+                leaves = [_node_at(st.tree, p) for p in payload.get("leaves") or []]
+                reply = {"leaves": [
+                    {"plan": list(n.plan) or [st.description or st.id],
+                     "goal": literals_of(n.goal)} if isinstance(n, Leaf)
+                    else {"plan": [st.description or st.id], "goal": []} for n in leaves]}
         else:
             reply = {"trajectories": [
                 {"description": " | ".join(p.key for p in combo),
-                 "facts": [task.variables[v].values[x] for p in combo for v, x in p.steps]}
+                 "facts": [lit for p in combo for v, x in p.steps
+                           for lit in literals_of(task.variables[v].values[x])]}
                 for combo in itertools.product(*task_paths(task))]}
         return json.dumps(reply)
 
+
+def _node_at(node: Node | Leaf, path: list[dict[str, str]]) -> Node | Leaf:
+    """The GT node a path of answers leads to (a path that leaves the tree ends at a leaf)."""
+    for step in path:
+        if not isinstance(node, Node) or node.var != step["factor"] or step["response"] not in node.branches:
+            return Leaf(plan=[], goal="true")
+        node = node.branches[step["response"]]
+    return node

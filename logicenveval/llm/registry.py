@@ -18,7 +18,10 @@ PROVIDERS: dict[str, str] = {
     "offline": "logicenveval.llm.offline:OfflineModel",
     "oracle": "logicenveval.llm.oracle:OracleModel",
     "openai": "logicenveval.llm.openai_http:OpenAIChatModel",
+    "llamacpp": "logicenveval.llm.llamacpp:make_llamacpp",
 }
+#: providers whose replies are cached (HTTP models; the rule-based ones are faster than a lookup)
+CACHED = frozenset({"openai", "llamacpp"})
 
 
 def _typed(value: str) -> Any:
@@ -78,14 +81,23 @@ def make_model(
     no_cache: bool = False,
     run_dir: str | Path | None = None,
 ) -> ChatModel:
-    """Build the model named by `spec` (`offline`, `oracle`, `openai:<model>`, `replay:<file>`)."""
+    """Build the model named by `spec` (`offline`, `oracle`, `openai:<model>`, `llamacpp:<gguf>`,
+    `replay:<file>`, `noisy:<spec>`)."""
     from logicenveval.llm.cache import CachedModel, ReplayModel, ReplyCache
 
     kwargs = parse_model_args(args)
     stats = ModelStats()
     provider, _, name = spec.partition(":")
     model: Any
-    if provider == "replay":
+    if provider == "noisy":
+        from logicenveval.llm.noisy import NoisyModel
+
+        rate, seed = kwargs.pop("rate", 0.0), kwargs.pop("seed", 0)
+        inner = make_model(name or "offline", kwargs, cache_path=cache_path, no_cache=no_cache,
+                           run_dir=run_dir)
+        stats = getattr(inner, "stats", None) or stats  # one set of counters for both layers
+        model = NoisyModel(inner, rate=rate, seed=seed, stats=stats)
+    elif provider == "replay":
         if not name:
             raise ConfigError("replay needs a cache file", field="--model", hint="write replay:<cache.sqlite>")
         cache = ReplyCache(name, create=False)
@@ -95,16 +107,17 @@ def make_model(
         module, attr = PROVIDERS[provider].split(":")
         factory = getattr(importlib.import_module(module), attr)
         try:
-            model = factory(name, stats=stats, **kwargs) if provider == "openai" else factory(stats=stats, **kwargs)
+            model = factory(name, stats=stats, **kwargs) if provider in CACHED else factory(stats=stats, **kwargs)
         except TypeError as exc:
             raise ConfigError(f"bad model argument for {provider}: {exc}", field="--model-args",
                               hint=f"see docs/llm.md for the arguments of {provider}") from None
-        if provider == "openai" and not no_cache:
+        if provider in CACHED and not no_cache:
             default = Path(run_dir).parent / "llm_cache.sqlite" if run_dir else Path("llm_cache.sqlite")
             model = CachedModel(model, ReplyCache(cache_path or default), provider, stats)
     else:
         raise ConfigError(f"unknown model {spec!r}", field="--model",
-                          hint="use offline, oracle, openai:<model> or replay:<cache.sqlite>")
+                          hint="use offline, oracle, openai:<model>, llamacpp:<model.gguf>, "
+                          "replay:<cache.sqlite> or noisy:<model>")
     model.run_dir = Path(run_dir) if run_dir else None
     model.stats = stats
     chat_model: ChatModel = model

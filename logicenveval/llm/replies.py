@@ -8,7 +8,10 @@ from __future__ import annotations
 
 from typing import Annotated, Literal, Union
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, model_validator
+
+from logicenveval.llm.structured import Conjunction, Goal, LiteralDraft, to_text
+from logicenveval.llm.vocab import COUNT, Vocab
 
 _F = ConfigDict(frozen=True, extra="ignore")
 
@@ -71,14 +74,6 @@ TreeDraft = Annotated[Union[QueryNode, PlanLeaf], Field(union_mode="smart")]  # 
 QueryNode.model_rebuild()
 
 
-class TreeReply(BaseModel):
-    """A decision-tree-structured behaviour plan of one subtask (paper §3.1, JSON form)."""
-
-    model_config = _F
-    subtask: str
-    tree: TreeDraft
-
-
 class TrajectoryDraft(BaseModel):
     model_config = _F
     description: str = Field(default="", description="the situation in words")
@@ -99,7 +94,7 @@ Wall = Literal["n", "s", "e", "w"]
 
 class DoorDraft(BaseModel):
     model_config = _F
-    to: str = Field(description="a room id or 'exterior'")
+    to: Annotated[str, Vocab("door_targets")] = Field(description="a room id or 'exterior'")
     type: Literal["door", "doorway", "sliding"] = "door"
     width: float = Field(default=0.9, ge=0.6, le=2.0)
     state: Literal["open", "closed"] = "closed"
@@ -116,10 +111,11 @@ class WindowDraft(BaseModel):
 
 class RoomDraft(BaseModel):
     model_config = _F
-    id: str
-    type: str = Field(description="room type, e.g. LivingRoom, Kitchen, Bedroom, Bathroom, Study")
+    id: Annotated[str, Vocab("rooms")]
+    type: Annotated[str, Vocab("room_types")] = Field(
+        description="room type, e.g. LivingRoom, Kitchen, Bedroom, Bathroom, Study")
     area_m2: float = Field(ge=3.0, le=80.0)
-    adjacent_to: list[str] = Field(default_factory=list)
+    adjacent_to: list[Annotated[str, Vocab("rooms")]] = Field(default_factory=list)
     doors: list[DoorDraft] = Field(default_factory=list)
     windows: list[WindowDraft] = Field(default_factory=list)
     floor_material: str = "wood"
@@ -133,11 +129,13 @@ class FloorPlanReply(BaseModel):
 
 class ObjectDraft(BaseModel):
     model_config = _F
-    id: str = Field(description="unique object id, e.g. 'sofa_1'")
-    category: str = Field(description="a catalog category name")
-    room: str
-    role: str | None = Field(default=None, description="the task role this object plays, if any")
-    placement: str = Field(description="'floor', 'wall', 'ceiling', 'on:<object id>' or 'inside:<object id>'")
+    id: Annotated[str, Vocab("object_ids")] = Field(description="unique object id, e.g. 'sofa_1'")
+    category: Annotated[str, Vocab("categories")] = Field(description="a catalog category name")
+    room: Annotated[str, Vocab("rooms")]
+    role: Annotated[str, Vocab("roles")] | None = Field(
+        default=None, description="the task role this object plays, if any")
+    placement: Annotated[str, Vocab("placements")] = Field(
+        description="'floor', 'wall', 'ceiling', 'on:<object id>' or 'inside:<object id>'")
     attributes: dict[str, str] = Field(default_factory=dict)
     states: dict[str, bool] = Field(default_factory=dict)
     description: str = ""
@@ -145,19 +143,32 @@ class ObjectDraft(BaseModel):
 
 class ObjectsReply(BaseModel):
     model_config = _F
-    objects: list[ObjectDraft] = Field(min_length=1)
+    objects: list[ObjectDraft] = Field(min_length=1, max_length=60)
 
 
 class RelationDraft(BaseModel):
     model_config = _F
-    type: str = Field(description="edge, center, wall_mounted, on, inside, near, far, above, "
-                      "in_front_of, side_of, center_aligned, face_to")
-    args: list[str] = Field(min_length=1, max_length=2, description="object ids")
+    type: Annotated[str, Vocab("relation_types")] = Field(
+        description="edge, center, wall_mounted, on, inside, near, far, above, "
+        "in_front_of, side_of, center_aligned, face_to")
+    args: list[Annotated[str, Vocab("object_ids")]] = Field(min_length=1, max_length=2,
+                                                            description="object ids")
+
+    @model_validator(mode="after")
+    def _arity(self) -> RelationDraft:
+        """`inside` with one object would reach the solver and crash it: refused here, so the
+        model is asked again (seen with a real small model)."""
+        from logicenveval.model.envspec import RELATION_TYPES
+
+        wanted = RELATION_TYPES.get(self.type)
+        if wanted is not None and len(self.args) != wanted:
+            raise ValueError(f"relation {self.type!r} takes {wanted} object id(s), got {self.args}")
+        return self
 
 
 class RelationsReply(BaseModel):
     model_config = _F
-    relations: list[RelationDraft] = Field(default_factory=list)
+    relations: list[RelationDraft] = Field(default_factory=list, max_length=80)
 
 
 class PlacedObject(ObjectDraft):
@@ -180,3 +191,110 @@ class PlacementReply(BaseModel):
     objects: list[PlacedObject] = Field(min_length=1)
     relations: list[RelationDraft] = Field(default_factory=list)
     openings: list[OpeningPlacement] = Field(default_factory=list, description="where each door and window goes")
+
+
+# --- vocabulary-bound wire forms of LogicEnvGen's requests (llm.vocab, llm.structured) -----------
+
+class RoomWire(RoomDraft):
+    #: whole square metres: llama.cpp's grammar bounds integers, not decimals (a small model
+    #: wrote 1.2 m² rooms)
+    area_m2: int = Field(ge=3, le=80)
+
+
+class FloorPlanWire(BaseModel):
+    """The floor plan of LogicEnvGen: one entry per room of the task (grammar: `maxItems`)."""
+
+    model_config = _F
+    rooms: list[RoomWire] = Field(min_length=1, json_schema_extra={COUNT: "rooms"})
+
+    @model_validator(mode="after")
+    def _distinct(self) -> FloorPlanWire:
+        ids = [r.id for r in self.rooms]
+        repeated = sorted({i for i in ids if ids.count(i) > 1})
+        if repeated:
+            raise ValueError(f"room {repeated[0]!r} is listed twice; list each room once")
+        return self
+
+    def draft(self) -> FloorPlanReply:
+        return FloorPlanReply(rooms=[RoomDraft(**r.model_dump()) for r in self.rooms])
+
+
+# --- plan requests ----------------------------------------------------------------------------
+# Conditions are lists of literals with enumerated roles/rooms/flags; `plan.py` converts them to
+# the internal drafts above (condition-language strings) after validation.
+
+class SubtaskWire(BaseModel):
+    model_config = _F
+    id: Annotated[str, Vocab("ids", "short snake_case id, e.g. 'tidy_toy'")]
+    description: str = Field(max_length=200, description="one short sentence: what the subtask achieves")
+    roles: list[Annotated[str, Vocab("roles")]] = Field(
+        max_length=8, description="task roles this subtask manipulates or inspects")
+
+
+class DecomposeWire(BaseModel):
+    """Mutually independent subtasks (no execution-order dependencies)."""
+
+    model_config = _F
+    subtasks: list[SubtaskWire] = Field(min_length=1, max_length=6)
+
+
+class ResponseWire(BaseModel):
+    model_config = _F
+    response: Annotated[str, Vocab("ids", "short snake_case answer, e.g. 'yes', 'no', 'novel'")]
+    condition: Conjunction = Field(description="what holds in the environment when this is the answer")
+
+
+class FactorWire(BaseModel):
+    model_config = _F
+    id: Annotated[str, Vocab("ids", "snake_case factor id, unique in the task, e.g. 'toy_on_floor'")]
+    question: str = Field(max_length=150,
+                          description="the query about the environment, e.g. 'Is there a toy on the floor?'")
+    responses: list[ResponseWire] = Field(
+        min_length=2, max_length=5, description="mutually exclusive answers that cover every situation")
+
+    @model_validator(mode="after")
+    def _distinct(self) -> FactorWire:
+        names = [r.response for r in self.responses]
+        repeated = sorted({n for n in names if names.count(n) > 1})
+        if repeated:
+            raise ValueError(f"factor {self.id!r} gives the response {repeated[0]!r} twice")
+        return self
+
+    def draft(self) -> FactorDraft:
+        return FactorDraft(id=self.id, question=self.question,
+                           values={r.response: to_text(r.condition) for r in self.responses})
+
+
+class FactorsWire(BaseModel):
+    """Uncertain environment factors that change how one subtask must be executed."""
+
+    model_config = _F
+    factors: list[FactorWire] = Field(default_factory=list, max_length=6)
+
+
+class TreeStepReply(BaseModel):
+    """One step of growing a decision tree: the factor to ask next on this path, or `act`."""
+
+    model_config = _F
+    next: Annotated[str, Vocab("next_steps", "a factor id not yet asked on this path, or act")]
+
+
+class LeafWire(BaseModel):
+    model_config = _F
+    plan: list[Annotated[str, Field(max_length=200)]] = Field(min_length=1, max_length=8,
+                                                                description="the agent's steps")
+    goal: Goal = Field(description="conditions that must hold after the plan (may be empty)")
+
+
+class FactTrajectoryWire(BaseModel):
+    model_config = _F
+    description: str = Field(max_length=300, description="the situation in words")
+    facts: list[LiteralDraft] = Field(default_factory=list, max_length=24,
+                                      description="what holds initially in this situation")
+
+
+class TrajectoriesWire(BaseModel):
+    """Logical trajectories straight from the description (the no-DBP ablation)."""
+
+    model_config = _F
+    trajectories: list[FactTrajectoryWire] = Field(min_length=1, max_length=16)

@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import Any, Protocol
 
 from logicenveval.atomic import atomic_write_text
+from logicenveval.llm.base import KIND_PREFIX
 from logicenveval.metrics.compute import aggregate, null_metrics, task_metrics
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.metrics.uncertainty import ci95
@@ -83,6 +84,7 @@ def build_results(
     failures: dict[str, list[dict[str, Any]]] = {}
     gen_seconds: dict[str, float] = {}
     llm: dict[str, dict[str, float]] = {}
+    validity: dict[str, dict[str, dict[str, float]]] = {}
     for gen in (config.generators if generators is None else generators):
         units = [r for r in records if r.generator == gen]
         measured = [u for u in units if u.measured]
@@ -106,7 +108,8 @@ def build_results(
         ]
         gen_seconds[gen] = round(sum(u.gen_seconds for u in units), 3)
         llm[gen] = {k: round(sum(u.llm.get(k, 0.0) for u in units), 3)
-                    for k in sorted({k for u in units for k in u.llm})}
+                    for k in sorted({k for u in units for k in u.llm}) if not k.startswith(KIND_PREFIX)}
+        validity[gen] = reply_validity(units)
     return {
         "schema": RESULTS_SCHEMA,
         "run_id": config.resolved_run_id(),
@@ -121,12 +124,33 @@ def build_results(
         "results": results,
         "per_task": per_task,
         "failures": failures,
+        "llm": validity,
         "timing": {
             "wall_seconds": None if wall_seconds is None else round(wall_seconds, 3),
             "generation_seconds": gen_seconds,
             "llm": llm,
         },
     }
+
+
+def reply_validity(units: Sequence[UnitRecord]) -> dict[str, dict[str, float]]:
+    """Per request kind (and `all`): questions asked, attempts sent, valid first replies, valid
+    after re-asks, attempts cut at max_tokens, and the two shares (docs/llm.md)."""
+    counts: dict[str, dict[str, float]] = {}
+    for u in units:
+        for key, value in u.llm.items():
+            if key.startswith(KIND_PREFIX):
+                kind, _, counter = key[len(KIND_PREFIX):].rpartition(".")
+                for name in (kind, "all"):
+                    row = counts.setdefault(name, {})
+                    row[counter] = row.get(counter, 0) + value
+    for row in counts.values():
+        asked = row.get("questions", 0)
+        for counter in ("questions", "attempts", "valid_first", "valid", "truncated"):
+            row[counter] = int(row.get(counter, 0))
+        row["valid_first_share"] = round(row["valid_first"] / asked, 4) if asked else 0.0
+        row["valid_share"] = round(row["valid"] / asked, 4) if asked else 0.0
+    return dict(sorted(counts.items()))
 
 
 #: keys of `results.<generator>` that are not figures (checked apart from the numeric leaves)

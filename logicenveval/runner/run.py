@@ -84,11 +84,11 @@ def _check(config: RunConfig) -> list[str]:
     return ids[: config.limit] if config.limit else ids
 
 
-def _preflight(config: RunConfig, run_dir: Path) -> dict[str, Any]:
+def _preflight(config: RunConfig, run_dir: Path, model_args: str) -> dict[str, Any]:
     """Fail fast on an unreachable endpoint: one clear error instead of N failed units."""
     from logicenveval.llm.registry import make_model
 
-    model = make_model(config.model, config.model_args, cache_path=config.cache,
+    model = make_model(config.model, model_args, cache_path=config.cache,
                        no_cache=config.no_cache, run_dir=run_dir)
     check = getattr(model, "preflight", None)
     if callable(check):
@@ -110,6 +110,17 @@ def _prepare_dir(run_dir: Path) -> None:
 
 
 def run(config: RunConfig, *, console: Console | None = None, show_progress: bool = True) -> RunOutcome:
+    """Run (or resume) the units of `config`; a managed local model (`llamacpp:`) is served by
+    one server for the whole run, stopped when the run ends however it ends (llm.llamacpp)."""
+    from logicenveval.llm.llamacpp import serving
+
+    with serving(config.model, config.model_args,
+                 log_path=config.run_dir() / "llama-server.log") as model_args:
+        return _run(config, model_args, console=console, show_progress=show_progress)
+
+
+def _run(config: RunConfig, model_args: str, *, console: Console | None,
+         show_progress: bool) -> RunOutcome:
     executor = make_executor(config.executor, config.workers)
     warm_up = getattr(executor, "warm_up", None)
     if callable(warm_up):
@@ -123,11 +134,12 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
         situation_count(task)
     run_dir = config.run_dir()
     _prepare_dir(run_dir)
-    _preflight(config, run_dir)
+    _preflight(config, run_dir, model_args)
     store = RunStore(run_dir)
     store.claim(config.identity())  # held until the run ends: one run per folder at a time
     try:
-        return _run_units(config, refs, ids, tasks, run_dir, store, executor, console, show_progress)
+        return _run_units(config, refs, ids, tasks, run_dir, store, executor, console, show_progress,
+                          model_args)
     finally:
         store.unlock()
 
@@ -151,11 +163,11 @@ def _crashed(chunk: tuple[UnitSpec, ...], why: str) -> list[UnitRecord]:
 
 def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], tasks: list[Task],
                run_dir: Path, store: RunStore, executor: Executor, console: Console | None,
-               show_progress: bool) -> RunOutcome:
+               show_progress: bool, model_args: str) -> RunOutcome:
     store.remove_stale_temp_files()
     specs = [
         UnitSpec(generator=r.name, generator_target=r.target, generator_path=r.search_path, task_id=t,
-                 tasks_dir=config.tasks_dir, model=config.model, model_args=config.model_args,
+                 tasks_dir=config.tasks_dir, model=config.model, model_args=model_args,
                  seed=config.seed, run_dir=str(run_dir), cache=config.cache,
                  no_cache=config.no_cache, layout_solver=config.layout_solver, brief=config.brief,
                  generator_args=r.args, unit_timeout=config.unit_timeout)

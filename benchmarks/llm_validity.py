@@ -1,0 +1,74 @@
+"""Share of valid LLM replies per request kind, from a replay pack (no model needed).
+
+A replay pack is a run folder of a real model (`reports/real/<model>/`: results.json,
+config.json and the `llm_cache.sqlite` of every reply). This re-runs the pack's configuration
+with `--model replay:<pack>/llm_cache.sqlite` (every reply comes from the cache, so it takes
+seconds), checks that the metrics equal the pack's results.json, and prints, per generator and
+request kind, how many questions were asked, the share answered validly at the first attempt and
+after re-asks, and the attempts cut at max_tokens. Last line:
+`llm_validity pack=<folder> metrics_reproduced=<true|false> valid_first=<x> valid=<y>`.
+
+    python benchmarks/llm_validity.py reports/real/qwen2.5-coder-0.5b-instruct-q4_k_m
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import tempfile
+import time
+from pathlib import Path
+from typing import Any
+
+from logicenveval.runner.config import RunConfig
+from logicenveval.runner.run import run
+
+
+def replay(pack: Path, output: Path) -> dict[str, Any]:
+    """results.json of the pack's configuration replayed from its reply cache."""
+    config = json.loads((pack / "config.json").read_text(encoding="utf-8"))
+    run_config = RunConfig(
+        model=f"replay:{pack / 'llm_cache.sqlite'}", generators=tuple(config["generators"]),
+        tasks=tuple(config["tasks"]), tasks_dir=config["tasks_dir"], limit=config["limit"],
+        seed=config["seed"], layout_solver=config["layout_solver"], brief=config["brief"],
+        output=str(output), workers=1)
+    return run(run_config, show_progress=False).results
+
+
+def same_metrics(a: dict[str, Any], b: dict[str, Any]) -> bool:
+    """Equal per-task metrics, wall-clock timings aside."""
+    def strip(per_task: dict[str, Any]) -> dict[str, Any]:
+        return {g: {t: {k: v for k, v in m.items() if k != "st_ms"} for t, m in tasks.items()}
+                for g, tasks in per_task.items()}
+    return strip(a["per_task"]) == strip(b["per_task"])
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("pack", type=Path, help="a run folder holding llm_cache.sqlite")
+    args = parser.parse_args(argv)
+    recorded = json.loads((args.pack / "results.json").read_text(encoding="utf-8"))
+    with tempfile.TemporaryDirectory() as tmp:
+        start = time.perf_counter()
+        replayed = replay(args.pack, Path(tmp))
+        seconds = time.perf_counter() - start
+    print(f"model: {recorded['model']} · tasks: {len(recorded['tasks'])} · replayed in {seconds:.1f} s")
+    print("| method | request kind | questions | valid first (%) | valid after re-asks (%) | attempts | cut at max_tokens |")
+    print("|---|---|---:|---:|---:|---:|---:|")
+    totals = {"questions": 0, "valid_first": 0, "valid": 0}
+    for gen, kinds in replayed["llm"].items():
+        for kind, row in kinds.items():
+            print(f"| {gen} | {kind} | {row['questions']} | {100 * row['valid_first_share']:.1f} | "
+                  f"{100 * row['valid_share']:.1f} | {row['attempts']} | {row['truncated']} |")
+            if kind == "all":
+                for key in totals:
+                    totals[key] += row[key]
+    asked = max(1, totals["questions"])
+    reproduced = same_metrics(recorded, replayed)
+    print(f"llm_validity pack={args.pack} metrics_reproduced={str(reproduced).lower()} "
+          f"valid_first={totals['valid_first'] / asked:.4f} valid={totals['valid'] / asked:.4f}")
+    return 0 if reproduced else 1
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,63 @@
+"""Stability of each method over repeated LLM runs (the paper's App. C), from a `run --seeds` folder.
+
+`python -m logicenveval run --seeds 0,1,2,3,4 ...` makes one run per seed in `<folder>/seed<S>/`;
+with a real model the seed is the model's sampling seed (sent as the request's `seed`) and the
+harness's random generator, at the paper's temperature 0 (re-asks step it up). This prints, per
+method and metric, the mean over the runs, the standard deviation and the range. Last line:
+`stability runs=<n> methods=<m>`.
+
+    python benchmarks/stability.py reports/real/stability/<run-id>
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import statistics
+from pathlib import Path
+from typing import Any
+
+METRICS: tuple[tuple[str, tuple[str, ...]], ...] = (
+    ("PhyPR", ("phypr", "avg")), ("LogCov", ("logcov",)), ("SceVR", ("scevr",)),
+    ("FauDR", ("faudr", "avg")), ("LD", ("ld",)), ("JI", ("ji",)), ("Envs", ("n_envs",)),
+)
+
+
+def _get(data: Any, path: tuple[str, ...]) -> Any:
+    for key in path:
+        if not isinstance(data, dict) or key not in data:
+            return None
+        data = data[key]
+    return data
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("folder", type=Path, help="the parent folder of a `run --seeds` run")
+    args = parser.parse_args(argv)
+    runs = [json.loads(p.read_text(encoding="utf-8"))
+            for p in sorted(args.folder.glob("seed*/results.json"))]
+    if not runs:
+        raise SystemExit(f"no seed*/results.json under {args.folder}")
+    methods = list(runs[0]["results"])
+    print(f"model: {runs[0]['model']} · {len(runs)} runs (seeds {', '.join(str(r['seed']) for r in runs)})"
+          f" · tasks: {', '.join(runs[0]['tasks'])}")
+    print(f"| method | {' | '.join(label for label, _ in METRICS)} |")
+    print("|---|" + "---:|" * len(METRICS))
+    for method in methods:
+        cells = []
+        for label, path in METRICS:
+            values = [v for r in runs if (v := _get(r["results"].get(method), path)) is not None]
+            if not values:
+                cells.append("–")
+                continue
+            scale = 1 if label == "Envs" else 100
+            mean, sd = statistics.fmean(values) * scale, statistics.pstdev(values) * scale
+            cells.append(f"{mean:.1f} ± {sd:.1f} ({min(values) * scale:.1f}–{max(values) * scale:.1f})")
+        print(f"| {method} | {' | '.join(cells)} |")
+    print(f"stability runs={len(runs)} methods={len(methods)}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

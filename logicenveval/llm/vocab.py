@@ -1,0 +1,129 @@
+"""Request vocabularies: reply fields whose values must come from the task's own words.
+
+A reply model marks a string field, `Annotated[str, Vocab("roles")]`. The marker alone changes
+nothing. A request that passes a vocabulary
+(`ask(..., vocabulary={"roles": ["toy", "box"], ...})`) gets a JSON schema in which every marked
+field is an `enum` of those words (or a `pattern`, for open sets such as object ids), and its
+reply is validated against the same words, so the server's grammar (llama.cpp enforces `enum` and
+`pattern`), the prompt and the validator agree. A value outside the vocabulary is a validation
+error that quotes the value and lists the allowed ones, which is what the re-ask sends back.
+
+Any reply model can adopt it by marking fields; request kinds without a vocabulary keep free
+strings.
+"""
+
+from __future__ import annotations
+
+import copy
+import re
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+from pydantic import GetCoreSchemaHandler, GetJsonSchemaHandler, ValidationInfo
+from pydantic.json_schema import JsonSchemaValue
+from pydantic_core import CoreSchema, core_schema
+
+#: JSON-schema key of the marker (kept in the schema sent without a vocabulary: servers ignore it)
+MARK = "x-vocab"
+#: JSON-schema key of a list whose length is at most the size of a vocabulary (`maxItems`);
+#: its items must then be distinct, which the reply model checks
+COUNT = "x-count"
+#: validation-context key under which `ask` passes the vocabulary
+CONTEXT_KEY = "vocabulary"
+
+
+@dataclass(frozen=True)
+class Pattern:
+    """An open vocabulary: any string matching `regex` (e.g. snake_case ids)."""
+
+    regex: str
+
+
+Words = Sequence[str] | Pattern
+Vocabulary = Mapping[str, Words]
+
+#: a snake_case id of at most 40 characters (a bound the grammar enforces: small models loop in ids)
+SNAKE = Pattern(r"^[a-z][a-z0-9_]{0,39}$")
+
+
+def _check(name: str) -> Any:
+    def check(value: str, info: ValidationInfo) -> str:
+        vocabulary = (info.context or {}).get(CONTEXT_KEY) or {}
+        words = vocabulary.get(name)
+        if words is None:
+            return value
+        if isinstance(words, Pattern):
+            if not re.fullmatch(words.regex, value):
+                raise ValueError(f"{value!r} is not a valid {name} (must match {words.regex})")
+        elif words and value not in words:
+            shown = ", ".join(list(words)[:40]) + (", ..." if len(words) > 40 else "")
+            raise ValueError(f"{value!r} is not one of the {name}: {shown}")
+        return value
+
+    return check
+
+
+@dataclass(frozen=True)
+class Vocab:
+    """Marker of a string field drawn from the request vocabulary `name`:
+    `Annotated[str, Vocab("roles")]`."""
+
+    name: str
+    description: str = ""
+
+    def __get_pydantic_core_schema__(self, source: Any, handler: GetCoreSchemaHandler) -> CoreSchema:
+        return core_schema.with_info_after_validator_function(_check(self.name), handler(source))
+
+    def __get_pydantic_json_schema__(self, schema: CoreSchema,
+                                     handler: GetJsonSchemaHandler) -> JsonSchemaValue:
+        out = handler.resolve_ref_schema(handler(schema))
+        out[MARK] = self.name
+        if self.description:
+            out.setdefault("description", self.description)
+        return out
+
+
+def specialise(schema: dict[str, Any], vocabulary: Vocabulary | None) -> dict[str, Any]:
+    """A copy of `schema` whose marked fields list their vocabulary (enum) or pattern."""
+    if not vocabulary:
+        return schema
+    out = copy.deepcopy(schema)
+
+    def walk(node: Any) -> None:
+        if isinstance(node, dict):
+            name = node.get(MARK)
+            words = vocabulary.get(name) if isinstance(name, str) else None
+            if isinstance(words, Pattern):
+                node["pattern"] = words.regex
+            elif words:
+                node["enum"] = list(dict.fromkeys(words))
+            counted = node.get(COUNT)
+            bound = vocabulary.get(counted) if isinstance(counted, str) else None
+            if bound and not isinstance(bound, Pattern):  # a list of at most one item per word
+                node["maxItems"] = len(set(bound))
+            for value in node.values():
+                walk(value)
+        elif isinstance(node, list):
+            for value in node:
+                walk(value)
+
+    walk(out)
+    return out
+
+
+#: `floor`, `wall`, `ceiling`, `on:<object id>`, `inside:<object id>`
+PLACEMENT = Pattern(r"^(floor|wall|ceiling|(on|inside):[a-z0-9_]{1,40})$")
+
+
+def scene_vocabulary(rooms: Sequence[str], roles: Sequence[str], categories: Sequence[str],
+                     object_ids: Sequence[str] | None = None) -> dict[str, Words]:
+    """The words of a scene reply (floor plan, objects, relations): the task's rooms, room
+    types, categories (the catalog's and the roles'), roles, relation types; object ids listed when the request names
+    them (relations over given objects), else any snake_case id."""
+    from logicenveval.model.envspec import RELATION_TYPES
+    from logicenveval.model.rooms import ROOM_TYPES
+
+    return {"rooms": list(rooms), "door_targets": [*rooms, "exterior"], "room_types": list(ROOM_TYPES),
+            "roles": list(roles), "categories": list(dict.fromkeys(categories)), "placements": PLACEMENT,
+            "relation_types": list(RELATION_TYPES), "object_ids": list(object_ids or []) or SNAKE}

