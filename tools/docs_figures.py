@@ -247,16 +247,19 @@ def block_selectors() -> str:
 
 
 def block_real() -> str:
-    """One row per committed real-model pack, next to the offline reference's rows."""
-    cols = [c for c in MAIN if c[0] not in ("ST (ms)",)]
-    out = []
+    """The committed real-model replay packs, one row per method, labelled with model and tasks."""
+    cols = [c for c in MAIN if c[0] != "ST (ms)"]
+    head: list[str] = []
+    rows: list[str] = []
     for path in sorted(REAL.glob("*/results.json")):
         res = json.loads(path.read_text())
-        out.append(table(res, cols).splitlines())
-    if not out:
-        return "(no real-model pack committed)"
-    lines = out[0][:2] + [row for rows in out for row in rows[2:]]
-    return "\n".join(lines)
+        model = Path(str(res.get("model", "?")).split(":", 1)[-1]).name.removesuffix(".gguf")
+        lines = table(res, cols).splitlines()
+        head = lines[:2]
+        for line in lines[2:]:
+            gen = line.split(" | ")[0].removeprefix("| ")
+            rows.append(line.replace(f"| {gen} |", f"| {gen} — {model}, {len(res['tasks'])} tasks |", 1))
+    return "\n".join(head + rows) if rows else "(no real-model pack committed)"
 
 
 # ---------------------------------------------------------------- paper vs ours

@@ -1,10 +1,12 @@
 """`noisy:<model>`: a model whose replies are perturbed the ways real models err (beyond the paper).
 
-Each reply of the wrapped model is perturbed with probability `rate` by one error drawn from
-those applicable to it: coordinates displaced, an object or relation dropped, a category renamed
-to a synonym or to an invented word, an object moved to another room, a decision branch emptied
-(a tree step answering `act`, a factor losing its responses), the JSON cut short, or the JSON
-wrapped in prose. Draws come from a numpy Generator seeded with `seed` and a hash of the request,
+`rate` is the probability that one element of a reply errs: each object draft (displaced, dropped,
+its category renamed to a synonym or an invented word, or moved to another room), each relation
+(dropped) and each decision branch (a tree step answering `act`, a factor losing all but one
+response) errs on its own, by one error applicable to it — so a reply describing twelve
+environments carries as many errors per object as one describing a single environment, and
+methods that ask in one big reply are not spared. With probability `rate / 2` a reply's text is
+broken instead (the JSON cut short, or wrapped in prose), which a re-ask may mend. Draws come from a numpy Generator seeded with `seed` and a hash of the request,
 so a run is deterministic and independent of scheduling, and a re-ask (another temperature and
 seed) draws again, as a real model's second attempt would. `benchmarks/robustness.py` sweeps the
 rate to show how gracefully each method degrades when its LLM errs.
@@ -14,7 +16,6 @@ from __future__ import annotations
 
 import hashlib
 import json
-from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -22,103 +23,90 @@ import numpy as np
 from logicenveval.errors import ConfigError
 from logicenveval.llm.base import ChatModel, ChatRequest, ModelStats
 
-Perturb = Callable[[Any, np.random.Generator], Any]
 
-
-def _objects(data: Any) -> list[dict[str, Any]]:
-    """Every object draft in a reply (top level or inside environments)."""
+def _holders(data: Any) -> list[dict[str, Any]]:
+    """The dicts of a reply that hold object and relation lists (top level, each environment)."""
     if not isinstance(data, dict):
         return []
-    out = [o for o in data.get("objects") or [] if isinstance(o, dict)]
+    out = [data]
     for env in data.get("environments") or []:
-        out += _objects(env)
+        out += _holders(env)
     return out
-
-
-def _lists(data: Any, key: str) -> list[list[Any]]:
-    if not isinstance(data, dict):
-        return []
-    found = [data[key]] if isinstance(data.get(key), list) and data[key] else []
-    for env in data.get("environments") or []:
-        found += _lists(env, key)
-    return found
-
-
-def _displace(data: Any, rng: np.random.Generator) -> Any:
-    placed = [o for o in _objects(data) if isinstance(o.get("position"), list) and len(o["position"]) == 3]
-    for o in placed:
-        if rng.random() < 0.5:
-            x, y, z = o["position"]
-            o["position"] = [x + float(rng.normal(0, 0.6)), y, z + float(rng.normal(0, 0.6))]
-    return data
-
-
-def _drop(key: str) -> Perturb:
-    def drop(data: Any, rng: np.random.Generator) -> Any:
-        lists = _lists(data, key)
-        target = lists[int(rng.integers(len(lists)))]
-        del target[int(rng.integers(len(target)))]
-        return data
-
-    return drop
 
 
 _INVENTED = ("thingamajig", "gizmo", "widget", "doohickey")
 
 
-def _rename(data: Any, rng: np.random.Generator) -> Any:
+def _rename(o: dict[str, Any], rng: np.random.Generator) -> None:
     from logicenveval.domain.catalog import load_catalog
 
-    objects = [o for o in _objects(data) if isinstance(o.get("category"), str)]
-    o = objects[int(rng.integers(len(objects)))]
     cat = load_catalog().get(o["category"])
     synonyms = list(cat.synonyms) if cat is not None else []
     if synonyms and rng.random() < 0.5:
         o["category"] = synonyms[int(rng.integers(len(synonyms)))]
     else:
         o["category"] = f"{o['category']}_{_INVENTED[int(rng.integers(len(_INVENTED)))]}"
-    return data
 
 
-def _swap_room(data: Any, rng: np.random.Generator) -> Any:
-    objects = [o for o in _objects(data) if isinstance(o.get("room"), str)]
-    rooms = sorted({o["room"] for o in objects} | {r["id"] for r in (data.get("rooms") or [])
-                                                    if isinstance(r, dict) and isinstance(r.get("id"), str)})
-    o = objects[int(rng.integers(len(objects)))]
-    others = [r for r in rooms if r != o["room"]]
-    o["room"] = others[int(rng.integers(len(others)))] if others else "attic"
-    return data
-
-
-def _empty_branch(data: Any, rng: np.random.Generator) -> Any:
-    if "next" in data:
-        data["next"] = "act"
-        return data
-    factors = [f for f in data["factors"] if isinstance(f, dict) and f.get("responses")]
-    f = factors[int(rng.integers(len(factors)))]
-    f["responses"] = f["responses"][:1]
-    return data
-
-
-def _applicable(data: Any) -> list[tuple[str, Perturb]]:
-    out: list[tuple[str, Perturb]] = []
-    if not isinstance(data, dict):
-        return out
-    objects = _objects(data)
-    if any(isinstance(o.get("position"), list) for o in objects):
-        out.append(("displace", _displace))
-    if _lists(data, "objects"):
-        out.append(("drop_object", _drop("objects")))
-    if _lists(data, "relations"):
-        out.append(("drop_relation", _drop("relations")))
-    if any(isinstance(o.get("category"), str) for o in objects):
-        out.append(("rename_category", _rename))
-    if any(isinstance(o.get("room"), str) for o in objects):
-        out.append(("swap_room", _swap_room))
-    if data.get("next") not in (None, "act") or any(
-            isinstance(f, dict) and f.get("responses") for f in data.get("factors") or []):
-        out.append(("empty_branch", _empty_branch))
+def _object_errors(o: dict[str, Any]) -> list[str]:
+    """The errors that can befall one object draft."""
+    out = ["drop_object"]
+    pos = o.get("position")
+    if isinstance(pos, list) and len(pos) == 3 and all(isinstance(v, int | float) for v in pos):
+        out.append("displace")
+    if isinstance(o.get("category"), str):
+        out.append("rename_category")
+    if isinstance(o.get("room"), str):
+        out.append("swap_room")
     return out
+
+
+def _perturb_elements(data: Any, rate: float, rng: np.random.Generator) -> list[str]:
+    """Each object, relation and branch of the reply errs with probability `rate`, by one error
+    applicable to it; returns the errors applied. Per element, so a reply that describes twelve
+    environments carries as many errors per object as a reply that describes one."""
+    applied: list[str] = []
+    for holder in _holders(data):
+        objects = holder.get("objects")
+        if isinstance(objects, list):
+            rooms = sorted({o["room"] for o in objects if isinstance(o, dict) and isinstance(o.get("room"), str)}
+                           | {r["id"] for r in (holder.get("rooms") or data.get("rooms") or [])
+                              if isinstance(r, dict) and isinstance(r.get("id"), str)})
+            kept = []
+            for o in objects:
+                if not isinstance(o, dict) or rng.random() >= rate:
+                    kept.append(o)
+                    continue
+                errors = _object_errors(o)
+                error = errors[int(rng.integers(len(errors)))]
+                applied.append(error)
+                if error == "drop_object":
+                    continue
+                if error == "displace":
+                    x, y, z = o["position"]
+                    o["position"] = [x + float(rng.normal(0, 0.6)), y, z + float(rng.normal(0, 0.6))]
+                elif error == "rename_category":
+                    _rename(o, rng)
+                else:
+                    others = [r for r in rooms if r != o["room"]]
+                    o["room"] = others[int(rng.integers(len(others)))] if others else "attic"
+                kept.append(o)
+            holder["objects"] = kept
+        relations = holder.get("relations")
+        if isinstance(relations, list):
+            kept_rel = [r for r in relations if rng.random() >= rate]
+            applied += ["drop_relation"] * (len(relations) - len(kept_rel))
+            holder["relations"] = kept_rel
+    if isinstance(data, dict):
+        if data.get("next") not in (None, "act") and rng.random() < rate:
+            data["next"] = "act"  # a tree step that stops asking: the branch below is empty
+            applied.append("empty_branch")
+        for f in data.get("factors") or []:
+            if isinstance(f, dict) and isinstance(f.get("responses"), list) and len(f["responses"]) > 1 \
+                    and rng.random() < rate:
+                f["responses"] = f["responses"][:1]
+                applied.append("empty_branch")
+    return applied
 
 
 class NoisyModel:
@@ -149,21 +137,20 @@ class NoisyModel:
     def complete(self, request: ChatRequest) -> str:
         reply = self.inner.complete(request)
         rng = self._rng(request)
-        if self.rate <= 0.0 or rng.random() >= self.rate:
+        if self.rate <= 0.0:
             return reply
         try:
             data = json.loads(reply)
         except ValueError:
             return reply
-        options: list[tuple[str, Perturb | None]] = [*_applicable(data), ("truncate", None),
-                                                     ("prose", None)]
-        name, perturb = options[int(rng.integers(len(options)))]
-        self.applied[name] = self.applied.get(name, 0) + 1
-        if name == "truncate":
-            text = json.dumps(data)
-            return text[: int(len(text) * float(rng.uniform(0.2, 0.9)))]
-        if name == "prose":
+        if rng.random() < self.rate / 2:  # the reply's text itself is broken (a re-ask may mend it)
+            name = "truncate" if rng.random() < 0.5 else "prose"
+            self.applied[name] = self.applied.get(name, 0) + 1
+            if name == "truncate":
+                text = json.dumps(data)
+                return text[: int(len(text) * float(rng.uniform(0.2, 0.9)))]
             return ("Sure! Here is the JSON you asked for:\n```json\n"
                     f"{json.dumps(data, indent=1)}\n```\nHope it helps.")
-        assert perturb is not None
-        return json.dumps(perturb(data, rng))
+        for name in _perturb_elements(data, self.rate, rng):
+            self.applied[name] = self.applied.get(name, 0) + 1
+        return json.dumps(data)
