@@ -151,3 +151,29 @@ def test_a_relation_with_the_wrong_number_of_objects_is_invalid() -> None:
     with pytest.raises(ValueError, match="'inside' takes 2 object id"):
         RelationDraft(type="inside", args=["cup"])
     assert RelationDraft(type="edge", args=["sofa"]).args == ["sofa"]
+
+
+def test_repeated_object_ids_are_refused_so_the_model_is_asked_again() -> None:
+    from pydantic import ValidationError
+
+    from logicenveval.llm.replies import ObjectsReply
+
+    obj = {"id": "living_room", "category": "sofa", "room": "living_room", "placement": "floor"}
+    with pytest.raises(ValidationError, match="repeated: \\['living_room'\\]"):
+        ObjectsReply.model_validate({"objects": [obj, {**obj, "category": "rug"}]})
+
+
+def test_an_environment_assembled_from_bad_drafts_fails_its_attempt_not_the_unit() -> None:
+    """Model-made drafts that cannot form an EnvSpec raise EnvSpecError (a failed attempt),
+    never pydantic's ValidationError (an internal error that fails the whole unit)."""
+    from logicenveval.benchmark import load_task
+    from logicenveval.errors import EnvSpecError
+    from logicenveval.generators.construction import symbolic_env
+    from logicenveval.llm.replies import ObjectDraft
+
+    brief = load_task("clean_living_room").brief()
+    draft = ObjectDraft.model_validate({"id": "sofa_1", "category": "sofa", "room": "living_room",
+                                        "placement": "floor"})
+    with pytest.raises(EnvSpecError, match="unique"):
+        symbolic_env(brief, "e-00", "logicenvgen", [{"id": "living_room", "type": "LivingRoom"}],
+                     [draft, draft])

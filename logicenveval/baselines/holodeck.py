@@ -27,6 +27,7 @@ from logicenveval.baselines.holodeck_solver import (
 )
 from logicenveval.baselines.replies import HolodeckSceneReply
 from logicenveval.domain.catalog import Catalog
+from logicenveval.envfiles import env_from_dict
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.base import (
     Attempt,
@@ -159,7 +160,7 @@ def build_scene(brief: TaskBrief, scene: HolodeckSceneReply, catalog: Catalog, r
         _wall_objects(rect, drafts, room_of, sizes, room_doors, windows, layout.poses, placed, log)
     obstacles = {r.id: _door_obstacles(r, [d for d in doors if r.id in d["rooms"]]) for r in rects}
     _held_objects(drafts, by_room, sizes, placed, log, catalog, obstacles)
-    env = EnvSpec.model_validate({
+    env = env_from_dict({
         "task_id": brief.id, "generator": generator, "env_id": env_id, "claimed_trajectory": None,
         "wall_height": WALL_HEIGHT,
         "rooms": [{"id": r.id, "type": d.type, "polygon": r.polygon} for r, d in zip(rects, scene.rooms, strict=True)],
@@ -168,7 +169,7 @@ def build_scene(brief: TaskBrief, scene: HolodeckSceneReply, catalog: Catalog, r
         "roles": {role: next((o.id for o in scene.objects if o.role == role and o.id in placed), None)
                   for role in brief.roles},
         "agent": {"room": brief.rooms[0] if brief.rooms[0] in by_room else rects[0].id},
-    })
+    }, source=env_id)
     return env, log
 
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from logicenveval.envfiles import env_from_dict
 from logicenveval.errors import EnvSpecError, TrajectoryError
 from logicenveval.generators.base import GenerationContext
 from logicenveval.generators.plan import PlanLog
@@ -52,13 +53,13 @@ def symbolic_env(brief: TaskBrief, env_id: str, generator: str, rooms: list[dict
             container, support = None, "floor"
         out.append({"id": o.id, "category": o.category, "room": o.room, "support": support,
                     "container": container, "attributes": dict(o.attributes), "states": dict(o.states)})
-    return EnvSpec.model_validate({
+    return env_from_dict({
         "task_id": brief.id, "generator": generator, "env_id": env_id,
         "rooms": [{"id": r["id"], "type": r["type"]} for r in rooms],
         "objects": out,
         "roles": {o.role: o.id for o in objects if o.role in brief.roles},
         "agent": {"room": brief.rooms[0]},
-    })
+    }, source=env_id)
 
 
 def violated_facts(env: EnvSpec, facts: list[str], catalog: Any) -> list[str]:

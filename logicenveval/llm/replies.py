@@ -145,6 +145,16 @@ class ObjectsReply(BaseModel):
     model_config = _F
     objects: list[ObjectDraft] = Field(min_length=1, max_length=60)
 
+    @model_validator(mode="after")
+    def _unique_ids(self) -> ObjectsReply:
+        """Two objects under one id cannot both be placed: refused here, so the model is asked
+        again (a real small model named two objects `living_room`)."""
+        ids = [o.id for o in self.objects]
+        repeated = sorted({i for i in ids if ids.count(i) > 1})
+        if repeated:
+            raise ValueError(f"object ids must be unique; repeated: {repeated}")
+        return self
+
 
 class RelationDraft(BaseModel):
     model_config = _F

@@ -10,6 +10,7 @@ from typing import Any
 import numpy as np
 
 from logicenveval.domain.catalog import Catalog, Category
+from logicenveval.envfiles import env_from_dict
 from logicenveval.errors import EnvSpecError
 from logicenveval.model.envspec import Agent, EnvObject, EnvSpec, Relation
 from logicenveval.scene.compat import check_relations
@@ -557,13 +558,13 @@ def construct_environment(spec: SceneSpec, *, catalog: Catalog, rng: np.random.G
             b._log_rel(b._room_of(r), r, "one of its objects was dropped")
     roles = {o.role: o.id for o in spec.objects if o.role and o.id in kept}
     agent_room = spec.rooms[0].id
-    env = EnvSpec.model_validate({
+    env = env_from_dict({
         "task_id": spec.task_id, "generator": spec.generator, "env_id": spec.env_id,
         "claimed_trajectory": spec.claimed_trajectory, "wall_height": spec.wall_height,
         "rooms": [r.model_dump() for r in plan.rooms], "doors": [d.model_dump() for d in plan.doors],
         "windows": [w.model_dump() for w in plan.windows], "objects": [o.model_dump() for o in objects],
         "relations": [r.model_dump() for r in relations], "roles": roles,
-        "agent": b.agent(plan, agent_room).model_dump()})
+        "agent": b.agent(plan, agent_room).model_dump()}, source=spec.env_id)
     for e in b.log:
         if e.task:
             b.warnings.append(f"task {e.kind} dropped: {e}")
@@ -646,9 +647,9 @@ def env_from_placed(*, brief: Any, env_id: str, generator: str, plan: FloorPlan,
     roles_set = set(getattr(brief, "roles", {}) or {})
     doors = [d.model_copy(update={"segment": openings.get(d.id)}) for d in plan.doors]
     windows = [w.model_copy(update={"segment": openings.get(w.id)}) for w in plan.windows]
-    return EnvSpec.model_validate({
+    return env_from_dict({
         "task_id": brief.id, "generator": generator, "env_id": env_id, "claimed_trajectory": claimed_trajectory,
         "rooms": [r.model_dump() for r in plan.rooms], "doors": [d.model_dump() for d in doors],
         "windows": [w.model_dump() for w in windows], "objects": objs, "relations": rels,
         "roles": {o.role: o.id for o in placed if o.role in roles_set},
-        "agent": {"room": plan.rooms[0].id}})
+        "agent": {"room": plan.rooms[0].id}}, source=env_id)
