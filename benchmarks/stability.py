@@ -31,20 +31,17 @@ def _get(data: Any, path: tuple[str, ...]) -> Any:
     return data
 
 
-def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("folder", type=Path, help="the parent folder of a `run --seeds` run")
-    args = parser.parse_args(argv)
-    runs = [json.loads(p.read_text(encoding="utf-8"))
-            for p in sorted(args.folder.glob("seed*/results.json"))]
+def table(folder: Path) -> list[str]:
+    """The markdown table (header line, then rows) of a `run --seeds` folder: per method and metric
+    the mean over the runs, the standard deviation and the range."""
+    runs = [json.loads(p.read_text(encoding="utf-8")) for p in sorted(folder.glob("seed*/results.json"))]
     if not runs:
-        raise SystemExit(f"no seed*/results.json under {args.folder}")
-    methods = list(runs[0]["results"])
-    print(f"model: {runs[0]['model']} · {len(runs)} runs (seeds {', '.join(str(r['seed']) for r in runs)})"
-          f" · tasks: {', '.join(runs[0]['tasks'])}")
-    print(f"| method | {' | '.join(label for label, _ in METRICS)} |")
-    print("|---|" + "---:|" * len(METRICS))
-    for method in methods:
+        raise SystemExit(f"no seed*/results.json under {folder}")
+    lines = [f"model: {runs[0]['model']} · {len(runs)} runs (seeds "
+             f"{', '.join(str(r['seed']) for r in runs)}) · tasks: {', '.join(runs[0]['tasks'])}",
+             f"| method | {' | '.join(label for label, _ in METRICS)} |",
+             "|---|" + "---:|" * len(METRICS)]
+    for method in runs[0]["results"]:
         cells = []
         for label, path in METRICS:
             values = [v for r in runs if (v := _get(r["results"].get(method), path)) is not None]
@@ -54,8 +51,18 @@ def main(argv: list[str] | None = None) -> int:
             scale = 1 if label == "Envs" else 100
             mean, sd = statistics.fmean(values) * scale, statistics.pstdev(values) * scale
             cells.append(f"{mean:.1f} ± {sd:.1f} ({min(values) * scale:.1f}–{max(values) * scale:.1f})")
-        print(f"| {method} | {' | '.join(cells)} |")
-    print(f"stability runs={len(runs)} methods={len(methods)}")
+        lines.append(f"| {method} | {' | '.join(cells)} |")
+    return lines
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("folder", type=Path, help="the parent folder of a `run --seeds` run")
+    args = parser.parse_args(argv)
+    lines = table(args.folder)
+    print("\n".join(lines))
+    runs = len(list(args.folder.glob("seed*/results.json")))
+    print(f"stability runs={runs} methods={len(lines) - 3}")
     return 0
 
 

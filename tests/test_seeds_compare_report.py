@@ -112,6 +112,31 @@ def test_seeds_give_one_run_per_seed_and_intervals(runs: dict[str, Path]) -> Non
     assert set(single["ci95"]["phypr"]) == {"floor_plan", "entity", "relation", "avg"}
 
 
+def test_stability_table_summarises_the_seed_runs(runs: dict[str, Path]) -> None:
+    """benchmarks/stability.py (paper App. C): per method, mean ± sd (range) over the seed runs."""
+    import statistics
+    import sys
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
+    from stability import table  # type: ignore[import-not-found]
+
+    caption, header, _, *rows = table(runs["seeds"])
+    assert "2 runs (seeds 0, 1)" in caption and header.startswith("| method | PhyPR | LogCov")
+    assert sorted(r.split(" | ")[0].removeprefix("| ") for r in rows) == ["holodeck", "logicenvgen"]
+    per_seed = [_load(runs["seeds"] / f"seed{s}")["results"] for s in (0, 1)]
+    for row in rows:
+        gen, *cells = row.strip("| ").split(" | ")
+        got = re.fullmatch(r"([\d.]+) ± ([\d.]+) \(([\d.]+)–([\d.]+)\)", cells[1])  # LogCov
+        assert got is not None
+        values = [100 * r[gen]["logcov"] for r in per_seed]
+        mean, sd, lo, hi = map(float, got.groups())
+        assert (mean, sd, lo, hi) == tuple(round(v, 1) for v in (
+            statistics.fmean(values), statistics.pstdev(values), min(values), max(values)))
+        envs = re.match(r"([\d.]+) ±", cells[-1])
+        assert envs is not None and float(envs.group(1)) == statistics.fmean(
+            r[gen]["n_envs"] for r in per_seed)
+
+
 def test_seeds_resume_per_seed(runs: dict[str, Path], capsys: pytest.CaptureFixture[str]) -> None:
     (runs["seeds"] / "seed1" / "units" / "holodeck" / "clean_living_room.json").unlink()
     before = _load(runs["seeds"])

@@ -10,7 +10,8 @@ markers and is written by this script from the committed runs and the benchmark 
 
 Sources: `reports/reference/results.json` (the default generators), `reports/figures/<run>/
 results.json` (the ablation, oracle and `--brief description` runs: only their results are
-committed), `reports/real/*/results.json` (the real-model replay packs), and the task folders
+committed), `reports/real/*/results.json` (the real-model replay packs), `reports/real/stability/
+<model>/seed*/results.json` (repeated real-model runs, paper App. C), and the task folders
 (`tasks stats`, trajectory selectors, shipped killable-mutant lists). Benchmark timings (the
 "Performance" table, `benchmarks/*.py`) are measurements of a machine, not data, and stay
 hand-written.
@@ -262,6 +263,20 @@ def block_real() -> str:
     return "\n".join(head + rows) if rows else "(no real-model pack committed)"
 
 
+def block_stability() -> str:
+    """Paper App. C: per method, mean ± sd (range) of each metric over the committed seed runs of
+    a real model (`reports/real/stability/<model>/seed*/results.json`, `benchmarks/stability.py`)."""
+    sys.path.insert(0, str(ROOT / "benchmarks"))
+    from stability import table as stability_table  # type: ignore[import-not-found]
+
+    out: list[str] = []
+    for folder in sorted((REAL / "stability").glob("*/")):
+        if any(folder.glob("seed*/results.json")):
+            caption, *rows = stability_table(folder)
+            out += [*([""] if out else []), f"*{caption}*", "", *rows]
+    return "\n".join(out) if out else "(no stability runs committed)"
+
+
 # ---------------------------------------------------------------- paper vs ours
 
 def _three(v: dict[str, Any]) -> str:
@@ -343,6 +358,7 @@ BLOCKS: dict[str, Callable[[], str]] = {
     "reference": block_reference, "ablation": block_ablation, "oracle": block_oracle,
     "brief": block_brief, "faudr-mut": block_faudr_mut, "baselines": block_baselines,
     "task-stats": block_task_stats, "selectors": block_selectors, "real": block_real,
+    "stability": block_stability,
 }
 
 
