@@ -106,8 +106,9 @@ def test_no_orphan_server_after_an_interrupted_or_killed_run(sig: int, executor:
                                                              tmp_path: Path) -> None:
     """With worker processes, Ctrl-C stops the server first, so units waiting on it end too."""
     pidfile = tmp_path / "server.pid"
+    posts = tmp_path / "posts"
     env = {**os.environ, "FAKE_LLAMA_PIDFILE": str(pidfile), "FAKE_LLAMA_DELAY": "60",
-           "PYTHONPATH": str(REPO)}
+           "FAKE_LLAMA_POSTS": str(posts), "PYTHONPATH": str(REPO)}
     run = subprocess.Popen(
         [sys.executable, "-m", "logicenveval", "run", "--model", f"llamacpp:{gguf}", "--model-args",
          f"server={FAKE}", "--tasks", "clean_living_room", "--generators", "holodeck,cot", "--output",
@@ -119,10 +120,16 @@ def test_no_orphan_server_after_an_interrupted_or_killed_run(sig: int, executor:
             time.sleep(0.1)
         assert pidfile.exists(), "the fake server never started"
         server_pid = int(pidfile.read_text())
-        time.sleep(1.0)  # the run is now waiting for the (delayed) first reply
+        while not posts.exists() and time.monotonic() < deadline:
+            time.sleep(0.1)
+        assert posts.exists(), "no unit asked the fake server"
+        time.sleep(0.5)  # a unit is now waiting for the (delayed) first reply
         run.send_signal(sig)
-        run.wait(timeout=120)
+        code = run.wait(timeout=120)
         assert _gone(server_pid), "llama-server outlived its run"
+        if sig == signal.SIGINT:  # Ctrl-C is the user's, not a unit's failure: nothing recorded
+            assert code == 130
+            assert not list((tmp_path / "runs").glob("*/units/*/*.json"))
     finally:
         if run.poll() is None:
             run.kill()
@@ -153,3 +160,32 @@ def test_real_llamacpp_run_makes_a_valid_environment(tmp_path: Path) -> None:
     assert results["llm"]["logicenvgen"]["all"]["valid"] >= 1
     out = subprocess.run(["pgrep", "-f", str(model)], capture_output=True, text=True)
     assert out.stdout.strip() == "", "llama-server outlived its run"
+
+
+@pytest.mark.slow
+def test_real_llamacpp_server_is_gone_after_sigint(tmp_path: Path) -> None:
+    """Ctrl-C while the real server is answering: the run ends and takes its server with it."""
+    binary, model = _real_setup()
+    log = tmp_path / "runs" / "r" / "llama-server.log"
+    env = {**os.environ, "LOGICENVEVAL_LLAMA_SERVER": str(binary), "PYTHONPATH": str(REPO)}
+    run = subprocess.Popen(
+        [sys.executable, "-m", "logicenveval", "run", "--model", f"llamacpp:{model}", "--model-args",
+         "threads=1", "--tasks", "clean_living_room", "--generators", "logicenvgen", "--output",
+         str(tmp_path / "runs"), "--run-id", "r", "--quiet"],
+        env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        deadline = time.monotonic() + 120
+        while time.monotonic() < deadline and "processing task" not in (
+                log.read_text(errors="replace") if log.exists() else ""):
+            time.sleep(0.2)
+        assert log.exists() and "processing task" in log.read_text(errors="replace"), \
+            "the real server never took a request"
+        found = subprocess.run(["pgrep", "-P", str(run.pid), "-f", "llama-server"], capture_output=True,
+                               text=True)  # the run's own server (it is the run's child)
+        (server_pid,) = [int(p) for p in found.stdout.split()]
+        run.send_signal(signal.SIGINT)
+        assert run.wait(timeout=60) == 130
+        assert _gone(server_pid), "llama-server outlived its run"
+    finally:
+        if run.poll() is None:
+            run.kill()

@@ -276,22 +276,26 @@ def _interrupts() -> Iterator[Callable[[], bool]]:
     """Tell a real Ctrl-C (which must stop the run) from a KeyboardInterrupt a generator raises.
 
     Pool workers ignore SIGINT (the run stops them), so there every KeyboardInterrupt is the
-    generator's own."""
+    generator's own. In the main thread the handler in place (Python's default, or the managed
+    llama.cpp server's, which stops the server first) is wrapped, not replaced: a real Ctrl-C is
+    noted, then handled as before."""
     seen = [False]
-    main = threading.current_thread() is threading.main_thread()
-    if not main or signal.getsignal(signal.SIGINT) is not signal.default_int_handler:
-        yield lambda: False if not main else seen[0]
+    previous = signal.getsignal(signal.SIGINT)
+    if threading.current_thread() is not threading.main_thread() or not callable(previous):
+        yield lambda: False
         return
 
-    def on_sigint(signum: int, frame: object) -> None:
+    def on_sigint(signum: int, frame: Any) -> None:
         seen[0] = True
+        if previous is not signal.default_int_handler:
+            previous(signum, frame)
         raise KeyboardInterrupt
 
     signal.signal(signal.SIGINT, on_sigint)
     try:
         yield lambda: seen[0]
     finally:
-        signal.signal(signal.SIGINT, signal.default_int_handler)
+        signal.signal(signal.SIGINT, previous)
 
 
 # ----- shared state a generator could change -----------------------------------------------

@@ -4,7 +4,8 @@
 Accepts llama-server's command line, listens on 127.0.0.1:--port, answers GET /health and POST
 /v1/chat/completions with the text in $FAKE_LLAMA_REPLY (default `{}`), and writes its pid to
 $FAKE_LLAMA_PIDFILE. $FAKE_LLAMA_EXIT=1 makes it exit at once (a server that cannot load);
-$FAKE_LLAMA_DELAY=S makes each completion take S seconds.
+$FAKE_LLAMA_DELAY=S makes each completion take S seconds; $FAKE_LLAMA_POSTS names a file that
+gets a line per completion request when it arrives (a test can wait until a unit is asking).
 """
 
 import argparse
@@ -39,6 +40,9 @@ class Handler(BaseHTTPRequestHandler):
 
     def do_POST(self) -> None:  # noqa: N802
         self.rfile.read(int(self.headers.get("Content-Length", 0)))
+        if os.environ.get("FAKE_LLAMA_POSTS"):
+            with open(os.environ["FAKE_LLAMA_POSTS"], "a") as fh:
+                fh.write("post\n")
         time.sleep(float(os.environ.get("FAKE_LLAMA_DELAY", "0")))
         reply = os.environ.get("FAKE_LLAMA_REPLY", "{}")
         self._send({"choices": [{"message": {"content": reply}, "finish_reason": "stop"}]})
