@@ -15,7 +15,12 @@ import pytest
 
 from logicenveval.errors import CacheMissError, ModelConnectionError, ModelReplyError
 from logicenveval.llm.ask import ask, reply_schema
-from logicenveval.llm.registry import make_model, parse_model_args
+from logicenveval.llm.registry import (
+    UNBOUNDED_SECONDS,
+    make_model,
+    parse_model_args,
+    with_unit_budget,
+)
 from logicenveval.llm.replies import DecomposeReply
 
 SECRET = "sk-test-SECRET-value-123"
@@ -218,6 +223,38 @@ def test_model_args_parsing() -> None:
         "base_url": "http://h:8000/v1", "timeout": 30, "json_schema": False, "x": 1.5}
     with pytest.raises(Exception, match="not key=value"):
         parse_model_args("oops")
+
+
+def test_http_models_take_the_runs_unit_timeout_as_their_budget() -> None:
+    """One bound per unit: --unit-timeout reaches the HTTP model's request budget (a run given
+    3 h per unit had a slow local model stopped at the model's own default of 30 minutes)."""
+    assert with_unit_budget("openai:m", "base_url=http://h/v1", 10800.0)["unit_timeout"] == 10800.0
+    assert with_unit_budget("llamacpp:/m.gguf", "threads=1", 60.0) == {"threads": 1, "unit_timeout": 60.0}
+    assert with_unit_budget("noisy:openai:m", "rate=0.3", 60.0)["unit_timeout"] == 60.0
+    assert with_unit_budget("openai:m", "", None)["unit_timeout"] == UNBOUNDED_SECONDS  # --unit-timeout 0
+    assert with_unit_budget("openai:m", "unit_timeout=5", 60.0)["unit_timeout"] == 5  # the user's own
+    assert "unit_timeout" not in with_unit_budget("offline", "", 60.0)
+    assert "unit_timeout" not in with_unit_budget("noisy:offline", "rate=0.1", 60.0)
+
+
+def test_a_run_hands_its_unit_timeout_to_the_model(server: tuple[str, Script], tmp_path: Path,
+                                                   monkeypatch: pytest.MonkeyPatch) -> None:
+    from logicenveval.cli import main
+    from logicenveval.llm import openai_http
+
+    budgets: list[float] = []
+    init = openai_http.OpenAIChatModel.__init__
+
+    def spy(self: Any, *args: Any, **kwargs: Any) -> None:
+        budgets.append(kwargs.get("unit_timeout", 1800.0))
+        init(self, *args, **kwargs)
+
+    monkeypatch.setattr(openai_http.OpenAIChatModel, "__init__", spy)
+    url, _ = server
+    main(["run", "--model", "openai:test-model", "--model-args", f"base_url={url},max_retries=0",
+          "--tasks", "clean_living_room", "--generators", "holodeck", "--unit-timeout", "7200",
+          "--executor", "inprocess", "--output", str(tmp_path), "--quiet", "--no-cache"])
+    assert budgets and budgets[-1] == 7200.0  # the unit's model (the first is the run's preflight)
 
 
 def _cut(content: str) -> tuple[int, str, dict[str, str]]:

@@ -54,6 +54,24 @@ def parse_model_args(text: str | dict[str, Any] | None) -> dict[str, Any]:
     return out
 
 
+#: the HTTP models' unit budget when the run sets no wall-time bound (`--unit-timeout 0`)
+UNBOUNDED_SECONDS = 1e9
+
+
+def with_unit_budget(spec: str, args: str | dict[str, Any] | None,
+                     seconds: float | None) -> dict[str, Any]:
+    """Model arguments in which an HTTP model's own per-unit request budget (`unit_timeout`)
+    follows the run's `--unit-timeout`, unless the user set it in --model-args: one bound, not
+    two (a run given 3 h per unit had its slow local model stopped at the model's 30 minutes)."""
+    kwargs = parse_model_args(args)
+    provider, _, name = spec.partition(":")
+    while provider == "noisy":
+        provider, _, name = name.partition(":")
+    if provider in CACHED and "unit_timeout" not in kwargs:
+        kwargs["unit_timeout"] = UNBOUNDED_SECONDS if seconds is None else seconds
+    return kwargs
+
+
 def _replay_target(path: Path, wanted: str | None) -> tuple[str, str]:
     if wanted:
         provider, _, model = wanted.partition(":")

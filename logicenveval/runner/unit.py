@@ -325,7 +325,7 @@ def shared_catalog() -> tuple[Catalog, bool]:
 def run_unit(spec: UnitSpec) -> UnitRecord:
     """Generate and evaluate; a failing generation is recorded, never raised."""
     from logicenveval.faults.score import scorer_for
-    from logicenveval.llm.registry import make_model
+    from logicenveval.llm.registry import make_model, with_unit_budget
     from logicenveval.physics.render import render_svg
     from logicenveval.runner.evaluation import evaluate_env, with_killed_mutants
     from logicenveval.sim.loader import load_policy
@@ -338,7 +338,9 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     model: ChatModel | None = None
     ctx: GenerationContext | None = None
     try:
-        watched = _Watched(make_model(spec.model, spec.model_args, cache_path=spec.cache,
+        watched = _Watched(make_model(spec.model, with_unit_budget(spec.model, spec.model_args,
+                                                                   spec.unit_timeout),
+                                      cache_path=spec.cache,
                                       no_cache=spec.no_cache, run_dir=run_dir))
         model = watched
         if spec.brief == "description":
