@@ -66,3 +66,13 @@ def test_the_why_column_is_kept_and_the_figures_are_not(figures: ModuleType) -> 
     row = next(line for line in body.splitlines() if line.startswith("| LogicEnvGen LogCov |"))
     tampered = body.replace(row, row.replace(row.split(" | ")[2], "1.00"))
     assert figures.block_paper_vs_ours(tampered) == body
+
+
+def test_an_empty_block_is_filled_and_the_text_after_it_kept(figures: ModuleType) -> None:
+    """Two markers on consecutive lines are an empty block: filling it must not swallow the prose
+    up to the next block's end (it once did, and an empty last block was never filled)."""
+    text = ("intro\n<!-- figures:real -->\n<!-- /figures -->\nprose kept\n"
+            "<!-- figures:real -->\nold table\n<!-- /figures -->\nend\n")
+    body = figures.block_real()
+    assert figures.render(text) == (f"intro\n<!-- figures:real -->\n{body}\n<!-- /figures -->\n"
+                                    f"prose kept\n<!-- figures:real -->\n{body}\n<!-- /figures -->\nend\n")

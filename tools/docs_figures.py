@@ -67,7 +67,8 @@ LABELS = {"logicenvgen": "logicenvgen (MTSA)", "logicenvgen-exact": "logicenvgen
           "logicenvgen-no-mtsa": "logicenvgen-no-mtsa (product)"}
 NOT_MEASURED = "not measured"
 
-BLOCK = re.compile(r"(<!-- figures:([a-z0-9-]+) -->\n)(.*?)(\n<!-- /figures -->)", re.S)
+#: an empty block is the two markers on consecutive lines (the body then matches nothing)
+BLOCK = re.compile(r"(<!-- figures:([a-z0-9-]+) -->\n)(?:(.*?)\n)??(<!-- /figures -->)", re.S)
 FIG = re.compile(r"(<!--fig:([a-z0-9_.-]+)-->)(.*?)(<!--/fig-->)", re.S)
 
 
@@ -263,6 +264,21 @@ def block_real() -> str:
     return "\n".join(head + rows) if rows else "(no real-model pack committed)"
 
 
+def block_validity() -> str:
+    """Share of valid first replies and after re-asks per method and request kind, from the `llm`
+    block of each committed replay pack (the table `benchmarks/llm_validity.py` prints)."""
+    sys.path.insert(0, str(ROOT / "benchmarks"))
+    from llm_validity import validity_table  # type: ignore[import-not-found]
+
+    out: list[str] = []
+    for path in sorted(REAL.glob("*/results.json")):
+        res = json.loads(path.read_text())
+        model = Path(str(res.get("model", "?")).split(":", 1)[-1]).name.removesuffix(".gguf")
+        lines, _ = validity_table(res.get("llm", {}))
+        out += [*([""] if out else []), f"*{model}, tasks: {', '.join(res['tasks'])}*", "", *lines]
+    return "\n".join(out) if out else "(no real-model pack committed)"
+
+
 def block_stability() -> str:
     """Paper App. C: per method, mean ± sd (range) of each metric over the committed seed runs of
     a real model (`reports/real/stability/<model>/seed*/results.json`, `benchmarks/stability.py`)."""
@@ -274,7 +290,7 @@ def block_stability() -> str:
         if any(folder.glob("seed*/results.json")):
             caption, *rows = stability_table(folder)
             out += [*([""] if out else []), f"*{caption}*", "", *rows]
-    return "\n".join(out) if out else "(no stability runs committed)"
+    return "\n".join(out) if out else "(no stability runs committed yet)"
 
 
 # ---------------------------------------------------------------- paper vs ours
@@ -358,7 +374,7 @@ BLOCKS: dict[str, Callable[[], str]] = {
     "reference": block_reference, "ablation": block_ablation, "oracle": block_oracle,
     "brief": block_brief, "faudr-mut": block_faudr_mut, "baselines": block_baselines,
     "task-stats": block_task_stats, "selectors": block_selectors, "real": block_real,
-    "stability": block_stability,
+    "stability": block_stability, "validity": block_validity,
 }
 
 
@@ -412,12 +428,12 @@ def render(text: str) -> str:
     def block(m: re.Match[str]) -> str:
         name = m.group(2)
         if name == "paper-vs-ours":
-            body = block_paper_vs_ours(m.group(3))
+            body = block_paper_vs_ours(m.group(3) or "")
         elif name in BLOCKS:
             body = BLOCKS[name]()
         else:
             raise SystemExit(f"unknown figures block {name!r}; known: {', '.join(sorted(BLOCKS))}")
-        return m.group(1) + body + m.group(4)
+        return m.group(1) + body + "\n" + m.group(4)
 
     def inline(m: re.Match[str]) -> str:
         name = m.group(2)
