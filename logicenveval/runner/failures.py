@@ -24,7 +24,8 @@ def failed(record: UnitRecord) -> bool:
 
 def failed_generators(records: Sequence[UnitRecord]) -> list[str]:
     """Generators (in first-seen order) all of whose units failed, or that produced no judged
-    environment in any unit: nothing of theirs was measured (docs/security.md, exit code 1)."""
+    environment in any unit: the run exits 1 (docs/security.md); their rows still count the failed
+    attempts, unless every unit failed for infrastructure reasons ("not measured")."""
     by_gen: dict[str, list[UnitRecord]] = {}
     for r in records:
         by_gen.setdefault(r.generator, []).append(r)
