@@ -43,6 +43,22 @@ def same_metrics(a: dict[str, Any], b: dict[str, Any]) -> bool:
     return strip(a["per_task"]) == strip(b["per_task"])
 
 
+def validity_table(llm: dict[str, Any]) -> tuple[list[str], dict[str, int]]:
+    """The markdown table of a results.json `llm` block (per method and request kind: questions,
+    valid first and after re-asks, attempts, cut at max_tokens) and the totals over methods."""
+    lines = ["| method | request kind | questions | valid first (%) | valid after re-asks (%) | "
+             "attempts | cut at max_tokens |", "|---|---|---:|---:|---:|---:|---:|"]
+    totals = {"questions": 0, "valid_first": 0, "valid": 0}
+    for gen, kinds in llm.items():
+        for kind, row in kinds.items():
+            lines.append(f"| {gen} | {kind} | {row['questions']} | {100 * row['valid_first_share']:.1f} | "
+                         f"{100 * row['valid_share']:.1f} | {row['attempts']} | {row['truncated']} |")
+            if kind == "all":
+                for key in totals:
+                    totals[key] += row[key]
+    return lines, totals
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("pack", type=Path, help="a run folder holding llm_cache.sqlite")
@@ -53,16 +69,8 @@ def main(argv: list[str] | None = None) -> int:
         replayed = replay(args.pack, Path(tmp))
         seconds = time.perf_counter() - start
     print(f"model: {recorded['model']} · tasks: {len(recorded['tasks'])} · replayed in {seconds:.1f} s")
-    print("| method | request kind | questions | valid first (%) | valid after re-asks (%) | attempts | cut at max_tokens |")
-    print("|---|---|---:|---:|---:|---:|---:|")
-    totals = {"questions": 0, "valid_first": 0, "valid": 0}
-    for gen, kinds in replayed["llm"].items():
-        for kind, row in kinds.items():
-            print(f"| {gen} | {kind} | {row['questions']} | {100 * row['valid_first_share']:.1f} | "
-                  f"{100 * row['valid_share']:.1f} | {row['attempts']} | {row['truncated']} |")
-            if kind == "all":
-                for key in totals:
-                    totals[key] += row[key]
+    lines, totals = validity_table(replayed["llm"])
+    print("\n".join(lines))
     asked = max(1, totals["questions"])
     reproduced = same_metrics(recorded, replayed)
     print(f"llm_validity pack={args.pack} metrics_reproduced={str(reproduced).lower()} "
