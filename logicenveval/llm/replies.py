@@ -12,6 +12,7 @@ from pydantic import BaseModel, ConfigDict, Field, model_validator
 
 from logicenveval.llm.structured import Conjunction, Goal, LiteralDraft, to_text
 from logicenveval.llm.vocab import COUNT, Vocab
+from logicenveval.model.repeats import repeated
 
 _F = ConfigDict(frozen=True, extra="ignore")
 
@@ -150,9 +151,9 @@ class ObjectsReply(BaseModel):
         """Two objects under one id cannot both be placed: refused here, so the model is asked
         again (a real small model named two objects `living_room`)."""
         ids = [o.id for o in self.objects]
-        repeated = sorted({i for i in ids if ids.count(i) > 1})
-        if repeated:
-            raise ValueError(f"object ids must be unique; repeated: {repeated}")
+        twice = repeated(ids)
+        if twice:
+            raise ValueError(f"object ids must be unique; repeated: {twice}")
         return self
 
 
@@ -220,9 +221,9 @@ class FloorPlanWire(BaseModel):
     @model_validator(mode="after")
     def _distinct(self) -> FloorPlanWire:
         ids = [r.id for r in self.rooms]
-        repeated = sorted({i for i in ids if ids.count(i) > 1})
-        if repeated:
-            raise ValueError(f"room {repeated[0]!r} is listed twice; list each room once")
+        twice = repeated(ids)
+        if twice:
+            raise ValueError(f"room {twice[0]!r} is listed twice; list each room once")
         return self
 
     def draft(self) -> FloorPlanReply:
@@ -265,9 +266,9 @@ class FactorWire(BaseModel):
     @model_validator(mode="after")
     def _distinct(self) -> FactorWire:
         names = [r.response for r in self.responses]
-        repeated = sorted({n for n in names if names.count(n) > 1})
-        if repeated:
-            raise ValueError(f"factor {self.id!r} gives the response {repeated[0]!r} twice")
+        twice = repeated(names)
+        if twice:
+            raise ValueError(f"factor {self.id!r} gives the response {twice[0]!r} twice")
         return self
 
     def draft(self) -> FactorDraft:

@@ -24,6 +24,7 @@ from pydantic import BaseModel, ConfigDict, Field, computed_field
 from logicenveval.errors import MetricsError
 from logicenveval.logic.reference import closest_reference
 from logicenveval.metrics.records import EnvSample
+from logicenveval.model.repeats import repeated
 from logicenveval.model.task import FAULTY_KINDS, POLICY_KINDS, Task
 from logicenveval.model.tree import all_path_keys, atomic_conditions
 
@@ -215,7 +216,7 @@ def aggregate(per_task: Sequence[TaskMetrics]) -> GeneratorMetrics:
     ids = [t.task_id for t in per_task]
     if len(set(ids)) != len(ids):
         raise MetricsError(
-            f"task(s) {sorted({i for i in ids if ids.count(i) > 1})} appear more than once",
+            f"task(s) {repeated(ids)} appear more than once",
             field="per_task",
             hint="pass one TaskMetrics per task",
         )

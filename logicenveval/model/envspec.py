@@ -12,6 +12,8 @@ from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
+from logicenveval.model.repeats import repeated
+
 ENV_SCHEMA = "logicenveval.env/1"
 
 Vec2 = tuple[float, float]
@@ -123,7 +125,7 @@ class EnvSpec(BaseModel):
             raise ValueError("room ids must be unique")
         ids = [o.id for o in self.objects]
         if len(set(ids)) != len(ids):
-            dup = sorted({i for i in ids if ids.count(i) > 1})
+            dup = repeated(ids)
             raise ValueError(f"object ids must be unique; repeated: {dup}")
         obj_ids = set(ids)
         for i, o in enumerate(self.objects):

@@ -19,6 +19,7 @@ from logicenveval.benchmark_validation import situation_count
 from logicenveval.errors import ConfigError, RunFailedError
 from logicenveval.generators.plugins import GeneratorRef, resolve_generator
 from logicenveval.metrics.records import UnitRecord
+from logicenveval.model.repeats import repeated
 from logicenveval.model.task import POLICY_KINDS, Task
 from logicenveval.runner.config import RunConfig
 from logicenveval.runner.executors import Executor, make_executor
@@ -69,7 +70,7 @@ def _check(config: RunConfig) -> list[str]:
         raise ConfigError("no generator selected", field="--generators",
                           hint="name at least one generator (see docs/own-generator.md)")
     if len(set(config.tasks)) != len(config.tasks):
-        dup = sorted({t for t in config.tasks if config.tasks.count(t) > 1})
+        dup = repeated(config.tasks)
         raise ConfigError(f"task(s) listed twice: {dup}", field="--tasks", hint="list each task once")
     available = task_ids(config.tasks_dir)
     if not available:

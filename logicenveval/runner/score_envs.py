@@ -33,6 +33,7 @@ from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.base import Attempt, GenerationFailure
 from logicenveval.limits import limit
 from logicenveval.metrics.records import EnvDetail, UnitRecord
+from logicenveval.model.repeats import repeated
 from logicenveval.model.task import POLICY_KINDS, Task
 from logicenveval.paths import check_name, child, shown
 from logicenveval.runner.config import RUN_ID_PATTERN
@@ -223,7 +224,7 @@ def _task_ids(config: EvaluateConfig) -> tuple[list[str], list[str]]:
     config.generator_name  # noqa: B018  (checked before any work: it names folders)
     known = task_ids(config.tasks_dir)
     if len(set(config.tasks)) != len(config.tasks):
-        dup = sorted({t for t in config.tasks if config.tasks.count(t) > 1})
+        dup = repeated(config.tasks)
         raise ConfigError(f"task(s) listed twice: {dup}", field="--tasks", hint="list each task once")
     if config.tasks:
         missing = [t for t in config.tasks if t not in known]

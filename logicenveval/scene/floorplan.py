@@ -23,6 +23,7 @@ import numpy as np
 
 from logicenveval.errors import EnvSpecError
 from logicenveval.model.envspec import Door, Room, Window
+from logicenveval.model.repeats import repeated
 from logicenveval.scene.geometry import EPS, Edge, Rect, edges, shared, subtract
 from logicenveval.scene.spec import DoorRequest, RoomRequest
 
@@ -209,7 +210,7 @@ def plan_floor(rooms: list[RoomRequest], rng: np.random.Generator, *, wall_heigh
     if not rooms:
         raise EnvSpecError("no rooms requested", field="rooms", hint="request at least one room")
     ids = [r.id for r in rooms]
-    dup = sorted({i for i in ids if ids.count(i) > 1})
+    dup = repeated(ids)
     if dup:
         raise EnvSpecError(f"room ids repeated: {dup}", field="rooms", hint="give each room a unique id")
     if "exterior" in ids:
