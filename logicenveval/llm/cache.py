@@ -114,9 +114,6 @@ class ReplyCache:
             (key, provider, model, kind, reply, time.time()),
         ))
 
-    def delete(self, key: str) -> None:
-        _retrying(lambda: self._conn().execute("DELETE FROM replies WHERE key = ?", (key,)))
-
     def __len__(self) -> int:
         return int(_retrying(lambda: self._conn().execute("SELECT COUNT(*) FROM replies").fetchone()[0]))
 
@@ -164,10 +161,6 @@ class CachedModel:
         reply = self.inner.complete(request)
         self.cache.put(key, self.provider, self.name, request.kind, reply)
         return reply
-
-    def forget(self, request: ChatRequest) -> None:
-        """Drop the reply to `request`: it failed validation, so a re-run must ask again."""
-        self.cache.delete(cache_key(self.provider, self.name, request))
 
     def preflight(self) -> None:
         self.cache.check()
