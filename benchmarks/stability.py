@@ -3,7 +3,8 @@
 `python -m logicenveval run --seeds 0,1,2,3,4 ...` makes one run per seed in `<folder>/seed<S>/`;
 with a real model the seed is the model's sampling seed (sent as the request's `seed`) and the
 harness's random generator, at the paper's temperature 0 (re-asks step it up). This prints, per
-method and metric, the mean over the runs, the standard deviation and the range. Last line:
+method and metric, the mean over the runs, the standard deviation and the range, with the share
+of valid model replies (after re-asks) and of attempted environments that failed. Last line:
 `stability runs=<n> methods=<m>`.
 
     python benchmarks/stability.py reports/real/stability/<run-id>
@@ -17,9 +18,15 @@ import statistics
 from pathlib import Path
 from typing import Any
 
-METRICS: tuple[tuple[str, tuple[str, ...]], ...] = (
+#: (label, where in results.json: a path under `results.<method>`, or a function of the run and method)
+METRICS: tuple[tuple[str, Any], ...] = (
     ("PhyPR", ("phypr", "avg")), ("LogCov", ("logcov",)), ("SceVR", ("scevr",)),
-    ("FauDR", ("faudr", "avg")), ("LD", ("ld",)), ("JI", ("ji",)), ("Envs", ("n_envs",)),
+    ("FauDR", ("faudr", "avg")), ("LD", ("ld",)), ("JI", ("ji",)),
+    # how often the model's reply was usable: the LLM-side stability App. C is about
+    ("Valid replies", lambda run, method: _get(run.get("llm"), (method, "all", "valid_share"))),
+    ("Failed attempts", lambda run, method: _share(_get(run["results"], (method, "n_failed")),
+                                                   _get(run["results"], (method, "n_attempted")))),
+    ("Envs", ("n_envs",)),
 )
 
 
@@ -29,6 +36,16 @@ def _get(data: Any, path: tuple[str, ...]) -> Any:
             return None
         data = data[key]
     return data
+
+
+def _share(part: Any, whole: Any) -> float | None:
+    return part / whole if isinstance(part, int) and isinstance(whole, int) and whole > 0 else None
+
+
+def _value(run: dict[str, Any], method: str, where: Any) -> Any:
+    if callable(where):
+        return where(run, method)
+    return _get(run["results"].get(method), where)
 
 
 def table(folder: Path) -> list[str]:
@@ -44,7 +61,7 @@ def table(folder: Path) -> list[str]:
     for method in runs[0]["results"]:
         cells = []
         for label, path in METRICS:
-            values = [v for r in runs if (v := _get(r["results"].get(method), path)) is not None]
+            values = [v for r in runs if (v := _value(r, method, path)) is not None]
             if not values:
                 cells.append("–")
                 continue

@@ -122,6 +122,7 @@ def test_stability_table_summarises_the_seed_runs(runs: dict[str, Path]) -> None
 
     caption, header, _, *rows = table(runs["seeds"])
     assert "2 runs (seeds 0, 1)" in caption and header.startswith("| method | PhyPR | LogCov")
+    assert header.endswith("| Valid replies | Failed attempts | Envs |")
     assert sorted(r.split(" | ")[0].removeprefix("| ") for r in rows) == ["holodeck", "logicenvgen"]
     per_seed = [_load(runs["seeds"] / f"seed{s}")["results"] for s in (0, 1)]
     for row in rows:
@@ -132,6 +133,12 @@ def test_stability_table_summarises_the_seed_runs(runs: dict[str, Path]) -> None
         mean, sd, lo, hi = map(float, got.groups())
         assert (mean, sd, lo, hi) == tuple(round(v, 1) for v in (
             statistics.fmean(values), statistics.pstdev(values), min(values), max(values)))
+        failed = re.match(r"([\d.]+) ±", cells[-2])  # Failed attempts: n_failed / n_attempted
+        assert failed is not None and float(failed.group(1)) == round(100 * statistics.fmean(
+            r[gen]["n_failed"] / r[gen]["n_attempted"] for r in per_seed), 1)
+        valid = re.match(r"([\d.]+) ±", cells[-3])  # Valid replies: the llm block's share
+        llm = [_load(runs["seeds"] / f"seed{s}")["llm"][gen]["all"]["valid_share"] for s in (0, 1)]
+        assert valid is not None and float(valid.group(1)) == round(100 * statistics.fmean(llm), 1)
         envs = re.match(r"([\d.]+) ±", cells[-1])
         assert envs is not None and float(envs.group(1)) == statistics.fmean(
             r[gen]["n_envs"] for r in per_seed)
