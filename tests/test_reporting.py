@@ -137,6 +137,22 @@ def test_reasons_group_by_shape_and_keep_the_first_example() -> None:
     assert "2 × rejected: ill-formed" in text and "t/e0: role white_box" in text
 
 
+def test_a_stage_failure_of_a_returned_environment_is_no_failed_attempt() -> None:
+    """A layout that misses its claimed trajectory is logged as a construct failure, yet the
+    environment is returned and scored: the summary must agree with results.json's n_failed."""
+    samples = [{"generator": "g", "task_id": "t", "env_id": "e0", "well_formed": False,
+                "problems": ["role toy is not bound to an object"], "verdicts": {}, "physics": {}}]
+    failures = {"g": [{"task": "t", "env_id": "e0", "stage": "construct",
+                       "message": "e0 does not realise its trajectory in subtasks ['sofa']"},
+                      {"task": "t", "env_id": "e1", "stage": "construct", "message": "no layout for x"}]}
+    (g,) = reasons(iter(samples), failures, ["g"])
+    assert (g.n_envs, g.n_failed, g.n_short, g.n_rejected) == (1, 1, 1, 1)
+    assert [r.kind for r in g.reasons] == ["generation", "built short", "rejected"]
+    text = summary_text([g])
+    assert "1 environment(s) (1 stage failure(s) in returned ones); 1 failed to generate" in text
+    assert "1 × built short: construct: e# does not realise its trajectory" in text
+
+
 def test_trace_lines_become_tick_rows_and_slugs_are_safe() -> None:
     lines = ["{'tick': 1, 'node': 'Walk', 'path': 'R/Sequence/Walk[0]', 'status': 'RUNNING'}",
              "__import__('os').system('x')", "plain text"]

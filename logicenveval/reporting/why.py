@@ -1,10 +1,13 @@
 """Why environments were rejected or failed: reasons grouped per generator, counted, with an example.
 
-A run's scores say how many environments were not valid; this says why, in one screen. Three
+A run's scores say how many environments were not valid; this says why, in one screen. Four
 kinds of reason, from what the units recorded (`samples.jsonl`, `results.json` `failures`):
 
 - `generation`: an environment the generator set out to build but could not (a failed unit, a
   trajectory without a layout, a draft that is not a valid EnvSpec), by stage and message;
+- `built short`: a stage failure the generator recorded for an environment it still returned
+  (e.g. a layout that does not realise its claimed trajectory): the environment exists and is
+  scored, so it is no failed attempt (the count agrees with results.json's `n_failed`);
 - `rejected`: an environment that is not a valid scenario — ill-formed (a role not bound, a
   reached path that does not allow it: its first problem) or one in which the correct BT fails;
 - `physics`: an environment failing one of the paper's PhyPR dimensions, by failure code.
@@ -25,7 +28,7 @@ MAX_GROUPS = 6
 _EXAMPLE_CHARS = 200
 _KEY_CHARS = 90
 #: generation failures and rejections come before physics findings
-_KIND_ORDER = {"generation": 0, "rejected": 1, "physics": 2}
+_KIND_ORDER = {"generation": 0, "built short": 1, "rejected": 2, "physics": 3}
 
 _QUOTED = re.compile(r"'[^']*'|\"[^\"]*\"")
 _NAMED = re.compile(r"\b(role|object|objects|category|door|window|room|target|env|environment)\s+"
@@ -51,7 +54,7 @@ def reason_key(message: str) -> str:
 class Reason:
     """Environments of one generator that share a reason, with the first one as the example."""
 
-    kind: str  # generation | rejected | physics
+    kind: str  # generation | built short | rejected | physics
     key: str
     count: int = 0
     task: str = ""
@@ -68,13 +71,15 @@ class GeneratorReasons:
     generator: str
     n_envs: int = 0
     n_failed: int = 0
+    #: stage failures recorded for environments that were still returned (`built short`)
+    n_short: int = 0
     n_rejected: int = 0
     n_physics: int = 0
     reasons: list[Reason] = field(default_factory=list)
 
     @property
     def clean(self) -> bool:
-        return not (self.n_failed or self.n_rejected or self.n_physics)
+        return not (self.n_failed or self.n_short or self.n_rejected or self.n_physics)
 
 
 def _add(groups: dict[tuple[str, str], Reason], kind: str, key: str, task: str, env_id: str,
@@ -119,16 +124,20 @@ def reasons(samples: Iterable[Mapping[str, Any]],
 
     for gen in order:
         gen_of(gen)
+    samples = list(samples)
+    built = {(str(s["generator"]), str(s["task_id"]), str(s["env_id"])) for s in samples}
     for gen, items in failures.items():
         g = gen_of(gen)
         for f in items:
             message = str(f.get("message") or "no message")
             stage = str(f.get("stage") or "unit")
             kind = f.get("kind")
-            g.n_failed += 1
+            task, env_id = str(f.get("task", "")), str(f.get("env_id") or "")
+            returned = (gen, task, env_id) in built
+            g.n_failed += not returned
+            g.n_short += returned
             key = f"{stage}{f' ({kind})' if kind else ''}: {reason_key(message)}"
-            _add(groups[gen], "generation", key, str(f.get("task", "")), str(f.get("env_id") or ""),
-                 message)
+            _add(groups[gen], "built short" if returned else "generation", key, task, env_id, message)
     for s in samples:
         gen, task, env_id = str(s["generator"]), str(s["task_id"]), str(s["env_id"])
         g = gen_of(gen)
@@ -164,8 +173,9 @@ def summary_text(per_gen: Sequence[GeneratorReasons], max_groups: int = MAX_GROU
             lines.append(f"  {g.generator}: {g.n_envs} environment(s), none rejected, failed or "
                          "physically implausible")
             continue
-        lines.append(f"  {g.generator}: {g.n_envs} environment(s); {g.n_failed} failed to generate, "
-                     f"{g.n_rejected} not a valid scenario, {g.n_physics} failing PhyPR")
+        short = f" ({g.n_short} stage failure(s) in returned ones)" if g.n_short else ""
+        lines.append(f"  {g.generator}: {g.n_envs} environment(s){short}; {g.n_failed} failed to "
+                     f"generate, {g.n_rejected} not a valid scenario, {g.n_physics} failing PhyPR")
         for r in g.reasons[:max_groups]:
             where = "/".join(x for x in (r.task, r.env_id) if x)
             lines.append(f"    {r.count} × {r.label} — {where}: {r.example}")
