@@ -151,6 +151,10 @@ def test_a_stage_failure_of_a_returned_environment_is_no_failed_attempt() -> Non
     text = summary_text([g])
     assert "1 environment(s) (1 stage failure(s) in returned ones); 1 failed to generate" in text
     assert "1 × built short: construct: e# does not realise its trajectory" in text
+    # a failed unit is one record but all its planned attempts: with results.json's counts the
+    # summary says what the leaderboard's Failed / attempted says
+    (g,) = reasons(samples, failures, ["g"], scores={"g": {"n_failed": 12, "n_attempted": 13}})
+    assert "; 12/13 attempted failed to generate" in summary_text([g])
 
 
 def test_trace_lines_become_tick_rows_and_slugs_are_safe() -> None:

@@ -70,12 +70,22 @@ class Reason:
 class GeneratorReasons:
     generator: str
     n_envs: int = 0
+    #: attempted environments that were not built: results.json's `n_failed` when the caller
+    #: passes the results (a failed unit is one record but all its planned attempts), else the
+    #: failure records that name no returned environment
     n_failed: int = 0
+    #: all attempted environments (results.json's `n_attempted`); 0 when not known
+    n_attempted: int = 0
     #: stage failures recorded for environments that were still returned (`built short`)
     n_short: int = 0
     n_rejected: int = 0
     n_physics: int = 0
     reasons: list[Reason] = field(default_factory=list)
+
+    @property
+    def failed_text(self) -> str:
+        """`3/6 attempted` when the attempts are known, else the count alone."""
+        return f"{self.n_failed}/{self.n_attempted} attempted" if self.n_attempted else str(self.n_failed)
 
     @property
     def clean(self) -> bool:
@@ -104,11 +114,13 @@ def rejection(sample: Mapping[str, Any]) -> tuple[str, str] | None:
 def reasons(samples: Iterable[Mapping[str, Any]],
             failures: Mapping[str, Sequence[Mapping[str, Any]]],
             generators: Sequence[str] | None = None,
-            messages: Mapping[tuple[str, str, str], str] | None = None) -> list[GeneratorReasons]:
+            messages: Mapping[tuple[str, str, str], str] | None = None,
+            scores: Mapping[str, Mapping[str, Any]] | None = None) -> list[GeneratorReasons]:
     """Per generator (results order), its reasons, most frequent first.
 
     `messages` optionally maps (generator, task, env_id) to the correct BT's verdict message, so
-    a rejected environment's example says where the BT failed.
+    a rejected environment's example says where the BT failed. `scores` (results.json's
+    `results`) gives the attempt counts, so the summary's numbers are the leaderboard's.
     """
     by_gen: dict[str, GeneratorReasons] = {}
     groups: dict[str, dict[tuple[str, str], Reason]] = {}
@@ -160,6 +172,9 @@ def reasons(samples: Iterable[Mapping[str, Any]],
     out = []
     for gen in order:
         g = by_gen[gen]
+        row = (scores or {}).get(gen) or {}
+        if isinstance(row.get("n_failed"), int) and isinstance(row.get("n_attempted"), int):
+            g.n_failed, g.n_attempted = row["n_failed"], row["n_attempted"]
         g.reasons = sorted(groups[gen].values(), key=lambda r: (_KIND_ORDER.get(r.kind, 3), -r.count, r.key))
         out.append(g)
     return out
@@ -174,7 +189,7 @@ def summary_text(per_gen: Sequence[GeneratorReasons], max_groups: int = MAX_GROU
                          "physically implausible")
             continue
         short = f" ({g.n_short} stage failure(s) in returned ones)" if g.n_short else ""
-        lines.append(f"  {g.generator}: {g.n_envs} environment(s){short}; {g.n_failed} failed to "
+        lines.append(f"  {g.generator}: {g.n_envs} environment(s){short}; {g.failed_text} failed to "
                      f"generate, {g.n_rejected} not a valid scenario, {g.n_physics} failing PhyPR")
         for r in g.reasons[:max_groups]:
             where = "/".join(x for x in (r.task, r.env_id) if x)
