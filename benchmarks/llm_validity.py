@@ -24,11 +24,12 @@ from logicenveval.runner.config import RunConfig
 from logicenveval.runner.run import run
 
 
-def replay(pack: Path, output: Path) -> dict[str, Any]:
-    """results.json of the pack's configuration replayed from its reply cache."""
+def replay(pack: Path, output: Path, cache: Path | None = None) -> dict[str, Any]:
+    """results.json of the pack's configuration replayed from its reply cache (`cache`: one
+    shared by several run folders, e.g. the stability seed runs)."""
     config = json.loads((pack / "config.json").read_text(encoding="utf-8"))
     run_config = RunConfig(
-        model=f"replay:{pack / 'llm_cache.sqlite'}", generators=tuple(config["generators"]),
+        model=f"replay:{cache or pack / 'llm_cache.sqlite'}", generators=tuple(config["generators"]),
         tasks=tuple(config["tasks"]), tasks_dir=config["tasks_dir"], limit=config["limit"],
         seed=config["seed"], layout_solver=config["layout_solver"], brief=config["brief"],
         output=str(output), workers=1)

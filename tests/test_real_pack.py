@@ -28,3 +28,20 @@ def test_replaying_a_pack_reproduces_its_metrics(pack: Path, tmp_path: Path) -> 
         return {g: sorted((f["task"], f.get("stage", "")) for f in fs) for g, fs in results["failures"].items()}
 
     assert stages(replayed) == stages(recorded)
+
+
+SEED_RUNS = sorted((REPO / "reports" / "real" / "stability").glob("*/seed*/results.json"))
+
+
+@pytest.mark.skipif(not SEED_RUNS, reason="no stability seed runs committed under reports/real/stability/")
+@pytest.mark.parametrize("results", SEED_RUNS, ids=[f"{p.parent.parent.name}/{p.parent.name}" for p in SEED_RUNS])
+def test_replaying_a_stability_seed_run_reproduces_it(results: Path, tmp_path: Path) -> None:
+    """The App. C table in docs/llm.md is computed from these runs: each one replays from the
+    shared stability cache to the same metrics and reply counts, seed included."""
+    from llm_validity import replay, same_metrics
+
+    recorded = json.loads(results.read_text(encoding="utf-8"))
+    replayed = replay(results.parent, tmp_path, cache=REPO / "reports" / "real" / "stability" / "llm_cache.sqlite")
+    assert replayed["seed"] == recorded["seed"]
+    assert same_metrics(recorded, replayed)
+    assert replayed["llm"] == recorded["llm"]
