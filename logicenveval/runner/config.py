@@ -9,11 +9,14 @@ from __future__ import annotations
 import hashlib
 import json
 import re
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
+from logicenveval.errors import ConfigError
+from logicenveval.model.repeats import repeated
 from logicenveval.redact import strip_url_credentials
 from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
 
@@ -109,3 +112,16 @@ def _redact(model_args: str) -> str:
             value = "***"
         parts.append(f"{key}={value}" if _ else key)
     return ",".join(parts)
+
+
+def selected_tasks(tasks: Sequence[str], known: Sequence[str]) -> list[str]:
+    """A `--tasks` list checked against the task ids there are: each named once and each known
+    (`run` and `evaluate` take the same list; an empty one is theirs to default)."""
+    dup = repeated(tasks)
+    if dup:
+        raise ConfigError(f"task(s) listed twice: {dup}", field="--tasks", hint="list each task once")
+    missing = [t for t in tasks if t not in known]
+    if missing:
+        raise ConfigError(f"unknown task(s) {missing}", field="--tasks",
+                          hint="see `python -m logicenveval tasks list`")
+    return list(tasks)

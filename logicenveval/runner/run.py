@@ -19,9 +19,8 @@ from logicenveval.benchmark_validation import situation_count
 from logicenveval.errors import ConfigError, RunFailedError
 from logicenveval.generators.plugins import GeneratorRef, resolve_generator
 from logicenveval.metrics.records import UnitRecord
-from logicenveval.model.repeats import repeated
 from logicenveval.model.task import POLICY_KINDS, Task
-from logicenveval.runner.config import RunConfig
+from logicenveval.runner.config import RunConfig, selected_tasks
 from logicenveval.runner.executors import Executor, make_executor
 from logicenveval.runner.results import build_results, write_outputs
 from logicenveval.runner.store import RunStore
@@ -69,19 +68,12 @@ def _check(config: RunConfig) -> list[str]:
     if not config.generators:
         raise ConfigError("no generator selected", field="--generators",
                           hint="name at least one generator (see docs/own-generator.md)")
-    if len(set(config.tasks)) != len(config.tasks):
-        dup = repeated(config.tasks)
-        raise ConfigError(f"task(s) listed twice: {dup}", field="--tasks", hint="list each task once")
     available = task_ids(config.tasks_dir)
     if not available:
         raise ConfigError("no task in the tasks folder (no <task_id>/task.json)",
                           file=str(config.tasks_dir), field="--tasks-dir",
                           hint="pass the folder that holds the task folders")
-    ids = list(config.tasks) or available
-    missing = [t for t in ids if t not in available]
-    if missing:
-        raise ConfigError(f"unknown task(s) {missing}", field="--tasks",
-                          hint="see `python -m logicenveval tasks list`")
+    ids = selected_tasks(config.tasks, available) or available
     return ids[: config.limit] if config.limit else ids
 
 

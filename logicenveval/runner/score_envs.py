@@ -33,10 +33,9 @@ from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.base import Attempt, GenerationFailure
 from logicenveval.limits import limit
 from logicenveval.metrics.records import EnvDetail, UnitRecord
-from logicenveval.model.repeats import repeated
 from logicenveval.model.task import POLICY_KINDS, Task
 from logicenveval.paths import check_name, child, shown
-from logicenveval.runner.config import RUN_ID_PATTERN
+from logicenveval.runner.config import RUN_ID_PATTERN, selected_tasks
 from logicenveval.runner.executors import make_executor
 from logicenveval.runner.results import build_results, write_outputs
 from logicenveval.runner.store import RunStore, text_digest
@@ -223,15 +222,8 @@ def _task_ids(config: EvaluateConfig) -> tuple[list[str], list[str]]:
                           hint="pass a folder of <task_id>/*.json EnvSpecs (e.g. a run's envs/<generator>)")
     config.generator_name  # noqa: B018  (checked before any work: it names folders)
     known = task_ids(config.tasks_dir)
-    if len(set(config.tasks)) != len(config.tasks):
-        dup = repeated(config.tasks)
-        raise ConfigError(f"task(s) listed twice: {dup}", field="--tasks", hint="list each task once")
     if config.tasks:
-        missing = [t for t in config.tasks if t not in known]
-        if missing:
-            raise ConfigError(f"unknown task(s) {missing}", field="--tasks",
-                              hint="see `python -m logicenveval tasks list`")
-        return list(config.tasks), []
+        return selected_tasks(config.tasks, known), []
     folders = sorted(p.name for p in root.iterdir() if p.is_dir() and not p.name.startswith("."))
     found = [t for t in known if t in folders]
     if not found:
