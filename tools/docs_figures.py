@@ -248,6 +248,11 @@ def block_selectors() -> str:
     return "\n".join(rows)
 
 
+def _model_label(res: dict[str, Any]) -> str:
+    """`llamacpp:/x/SmolLM2-135M-Instruct.Q4_1.gguf` -> `SmolLM2-135M-Instruct.Q4_1`."""
+    return Path(str(res.get("model", "?")).split(":", 1)[-1]).name.removesuffix(".gguf")
+
+
 def block_real() -> str:
     """The committed real-model replay packs, one row per method, labelled with model and tasks."""
     cols = [c for c in MAIN if c[0] != "ST (ms)"]
@@ -255,7 +260,7 @@ def block_real() -> str:
     rows: list[str] = []
     for path in sorted(REAL.glob("*/results.json")):
         res = json.loads(path.read_text())
-        model = Path(str(res.get("model", "?")).split(":", 1)[-1]).name.removesuffix(".gguf")
+        model = _model_label(res)
         lines = table(res, cols).splitlines()
         head = lines[:2]
         for line in lines[2:]:
@@ -273,7 +278,7 @@ def block_validity() -> str:
     out: list[str] = []
     for path in sorted(REAL.glob("*/results.json")):
         res = json.loads(path.read_text())
-        model = Path(str(res.get("model", "?")).split(":", 1)[-1]).name.removesuffix(".gguf")
+        model = _model_label(res)
         lines, _ = validity_table(res.get("llm", {}))
         out += [*([""] if out else []), f"*{model}, tasks: {', '.join(res['tasks'])}*", "", *lines]
     return "\n".join(out) if out else "(no real-model pack committed)"

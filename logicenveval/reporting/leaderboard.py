@@ -212,7 +212,7 @@ def group_rows(rows: Sequence[IndexRow], scope: str = "") -> list[dict[str, Any]
 
 def render_main(results: dict[str, Any], collected: Collected, env: Environment) -> str:
     why: list[GeneratorReasons] = reasons(collected.samples, results.get("failures", {}),
-                                          list(results["results"]), collected.messages, results["results"])
+                                          messages=collected.messages, scores=results["results"])
     top, sub = header_rows(["Method"])
     return env.get_template("leaderboard.html.j2").render(
         results=results, top=top, sub=sub, rows=table_rows(results), legend=LEGEND,

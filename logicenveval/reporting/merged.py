@@ -106,8 +106,7 @@ def write_merged(run_dirs: Sequence[Path], out: Path) -> list[tuple[Path, dict[s
         table += table_rows(results, lead, scope)
         groups += [{**grp, "run": label} for grp in group_rows(got.rows, scope)]
         why += [(label, g, got.hrefs) for g in reasons(got.samples, results.get("failures", {}),
-                                                        list(results["results"]), got.messages,
-                                                        results["results"])]
+                                                        messages=got.messages, scores=results["results"])]
     remove_stale(out / "details", written)
     top, sub = header_rows([*LEAD, "Method"])
     html = env.get_template("merged.html.j2").render(

@@ -28,8 +28,8 @@ class Published:
 def why_text(results: dict[str, Any], records: Sequence[UnitRecord]) -> str:
     """The reasons summary of a finished run, from its units and its recorded failures."""
     samples = [s.model_dump(mode="json") for r in records for s in r.samples]
-    return summary_text(reasons(samples, results.get("failures", {}), list(results["results"]),
-                                correct_messages(records), results["results"]))
+    return summary_text(reasons(samples, results.get("failures", {}), messages=correct_messages(records),
+                                scores=results["results"]))
 
 
 def publish(run_dir: Path, results: dict[str, Any], records: Sequence[UnitRecord]) -> Published:

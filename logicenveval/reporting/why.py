@@ -120,11 +120,12 @@ def reasons(samples: Iterable[Mapping[str, Any]],
 
     `messages` optionally maps (generator, task, env_id) to the correct BT's verdict message, so
     a rejected environment's example says where the BT failed. `scores` (results.json's
-    `results`) gives the attempt counts, so the summary's numbers are the leaderboard's.
+    `results`) gives the attempt counts, so the summary's numbers are the leaderboard's, and,
+    without `generators`, the order.
     """
     by_gen: dict[str, GeneratorReasons] = {}
     groups: dict[str, dict[tuple[str, str], Reason]] = {}
-    order = list(generators or [])
+    order = list(generators or scores or [])
 
     def gen_of(name: str) -> GeneratorReasons:
         if name not in by_gen:
@@ -175,7 +176,8 @@ def reasons(samples: Iterable[Mapping[str, Any]],
         row = (scores or {}).get(gen) or {}
         if isinstance(row.get("n_failed"), int) and isinstance(row.get("n_attempted"), int):
             g.n_failed, g.n_attempted = row["n_failed"], row["n_attempted"]
-        g.reasons = sorted(groups[gen].values(), key=lambda r: (_KIND_ORDER.get(r.kind, 3), -r.count, r.key))
+        g.reasons = sorted(groups[gen].values(), key=lambda r: (_KIND_ORDER.get(r.kind, len(_KIND_ORDER)),
+                                                                  -r.count, r.key))
         out.append(g)
     return out
 
