@@ -113,9 +113,21 @@ class _Pool:
         return list(procs.values())
 
     def exit_codes(self) -> list[int | None]:
+        """The workers' exit statuses, once the broken pool's own thread has reaped them.
+
+        That thread stops and joins every worker of a broken pool; joining a worker from here at
+        the same time races it (two readers of the fork server's one status message: the loser
+        sees end-of-file and reports 255, CPython gh-130895), so this waits for it instead."""
+        manager: threading.Thread | None = getattr(self.pool, "_executor_manager_thread", None)
+        if manager is not None:
+            manager.join(5)
+            if manager.is_alive():  # a worker outlives SIGTERM and holds the pool's own join
+                self.kill()
+                manager.join(5)
         out = []
         for p in self.processes():
-            p.join(0.5)  # a dead worker's status needs reaping
+            if manager is None or manager.is_alive():
+                p.join(0.5)  # nothing else reaps it
             out.append(p.exitcode)
         return out
 
