@@ -48,13 +48,26 @@ def _value(run: dict[str, Any], method: str, where: Any) -> Any:
     return _get(run["results"].get(method), where)
 
 
-def table(folder: Path) -> list[str]:
-    """The markdown table (header line, then rows) of a `run --seeds` folder: per method and metric
-    the mean over the runs, the standard deviation and the range."""
+def _model(spec: str) -> str:
+    """`llamacpp:/any/dir/m.gguf` -> `llamacpp:m.gguf`: the caption names the model, not the
+    folder it sat in on the machine that ran it."""
+    kind, sep, arg = spec.partition(":")
+    return f"{kind}{sep}{Path(arg).name}" if sep and "/" in arg else spec
+
+
+def load_runs(folder: Path) -> list[dict[str, Any]]:
+    """The results.json of each seed run of a `run --seeds` folder, in seed-folder order."""
     runs = [json.loads(p.read_text(encoding="utf-8")) for p in sorted(folder.glob("seed*/results.json"))]
     if not runs:
         raise SystemExit(f"no seed*/results.json under {folder}")
-    lines = [f"model: {runs[0]['model']} · {len(runs)} runs (seeds "
+    return runs
+
+
+def table(runs: list[dict[str, Any]]) -> list[str]:
+    """The markdown table (caption, header line, then rows) of the seed runs of a `run --seeds`
+    folder (`load_runs`): per method and metric the mean over the runs, the standard deviation
+    and the range."""
+    lines = [f"model: {_model(runs[0]['model'])} · {len(runs)} runs (seeds "
              f"{', '.join(str(r['seed']) for r in runs)}) · tasks: {', '.join(runs[0]['tasks'])}",
              f"| method | {' | '.join(label for label, _ in METRICS)} |",
              "|---|" + "---:|" * len(METRICS)]
@@ -76,10 +89,10 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("folder", type=Path, help="the parent folder of a `run --seeds` run")
     args = parser.parse_args(argv)
-    lines = table(args.folder)
+    runs = load_runs(args.folder)
+    lines = table(runs)
     print("\n".join(lines))
-    runs = len(list(args.folder.glob("seed*/results.json")))
-    print(f"stability runs={runs} methods={len(lines) - 3}")
+    print(f"stability runs={len(runs)} methods={len(lines) - 3}")
     return 0
 
 

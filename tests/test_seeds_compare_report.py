@@ -118,9 +118,12 @@ def test_stability_table_summarises_the_seed_runs(runs: dict[str, Path]) -> None
     import sys
 
     sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
-    from stability import table  # type: ignore[import-not-found]
+    from stability import _model, load_runs, table  # type: ignore[import-not-found]
 
-    caption, header, _, *rows = table(runs["seeds"])
+    assert _model("llamacpp:/home/me/models/m.Q4.gguf") == "llamacpp:m.Q4.gguf"  # no machine paths
+    assert _model("openai:qwen2.5-coder") == "openai:qwen2.5-coder" and _model("offline") == "offline"
+
+    caption, header, _, *rows = table(load_runs(runs["seeds"]))
     assert "2 runs (seeds 0, 1)" in caption and header.startswith("| method | PhyPR | LogCov")
     assert header.endswith("| Valid replies | Failed attempts | Envs |")
     assert sorted(r.split(" | ")[0].removeprefix("| ") for r in rows) == ["holodeck", "logicenvgen"]

@@ -41,6 +41,7 @@ from typing import Any
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(ROOT / "benchmarks"))  # the benchmark scripts whose tables the docs embed
 
 from logicenveval.benchmark import load_task, task_ids, tasks_dir  # noqa: E402
 from logicenveval.benchmark_stats import benchmark_stats, to_markdown, totals  # noqa: E402
@@ -272,7 +273,6 @@ def block_real() -> str:
 def block_validity() -> str:
     """Share of valid first replies and after re-asks per method and request kind, from the `llm`
     block of each committed replay pack (the table `benchmarks/llm_validity.py` prints)."""
-    sys.path.insert(0, str(ROOT / "benchmarks"))
     from llm_validity import validity_table  # type: ignore[import-not-found]
 
     out: list[str] = []
@@ -287,13 +287,13 @@ def block_validity() -> str:
 def block_stability() -> str:
     """Paper App. C: per method, mean ± sd (range) of each metric over the committed seed runs of
     a real model (`reports/real/stability/<model>/seed*/results.json`, `benchmarks/stability.py`)."""
-    sys.path.insert(0, str(ROOT / "benchmarks"))
-    from stability import table as stability_table  # type: ignore[import-not-found]
+    from stability import load_runs  # type: ignore[import-not-found]
+    from stability import table as stability_table
 
     out: list[str] = []
     for folder in sorted((REAL / "stability").glob("*/")):
         if any(folder.glob("seed*/results.json")):
-            caption, *rows = stability_table(folder)
+            caption, *rows = stability_table(load_runs(folder))
             out += [*([""] if out else []), f"*{caption}*", "", *rows]
     return "\n".join(out) if out else "(no stability runs committed yet)"
 
