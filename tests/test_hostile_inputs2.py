@@ -9,6 +9,7 @@ from __future__ import annotations
 import errno
 import json
 import os
+import re
 import shutil
 import signal
 import stat
@@ -666,3 +667,15 @@ def test_factory_calling_sys_exit_is_bad_input(tmp_path: Path, capsys: pytest.Ca
     """Before, SystemExit from a plug-in ended `run` with that status and no message."""
     code, _, err = cli(capsys, *plug(tmp_path, "hostile_generators:ExitsInInit"))
     assert code == 2 and "could not be constructed: SystemExit: 4" in err
+
+
+def test_multi_seed_reasons_name_their_seed(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """The seeds' environments share ids: each example of the end-of-run summary and of the
+    parent page says which seed it comes from."""
+    code, out, _ = cli(capsys, *plug(tmp_path, "hostile_generators:Huge", "--seeds", "0,1"))
+    assert code == 0
+    summary = out[out.index("Why environments"):]
+    assert "huge: 2 environment(s); 2/4 attempted failed to generate" in summary
+    assert re.search(r"2 × generation: .* — clean_living_room/\S+ \(seed 0\): ", summary), summary
+    parent = next(p for p in tmp_path.iterdir() if p.is_dir())
+    assert "(seed 0)" in (parent / "leaderboard.html").read_text(encoding="utf-8")

@@ -125,7 +125,7 @@ def test_reasons_group_by_shape_and_keep_the_first_example() -> None:
          "physics": {"failures": [{"dimension": "entity", "code": "floating", "message": "cup floats 0.3 m"}]}},
     ]
     failures = {"g": [{"task": "t", "stage": "construct", "message": "no layout for x"}]}
-    (g,) = reasons(samples, failures, ["g"], {("g", "t", "e2"): "correct BT goal_unmet: cup not on table"})
+    (g,) = reasons(samples, failures, ["g"], {("g", "t", "e2", ""): "correct BT goal_unmet: cup not on table"})
     assert (g.n_envs, g.n_failed, g.n_rejected, g.n_physics) == (3, 1, 3, 1)
     labels = {r.label: r for r in g.reasons}
     bound = labels["rejected: ill-formed: role … is not bound to an object"]
@@ -155,6 +155,21 @@ def test_a_stage_failure_of_a_returned_environment_is_no_failed_attempt() -> Non
     # summary says what the leaderboard's Failed / attempted says
     (g,) = reasons(samples, failures, ["g"], scores={"g": {"n_failed": 12, "n_attempted": 13}})
     assert "; 12/13 attempted failed to generate" in summary_text([g])
+
+
+def test_in_a_multi_seed_run_a_failure_is_matched_to_its_own_seeds_environments() -> None:
+    """Seeds' environments share ids: seed 1's failed e0 is not the e0 seed 0 built, and each
+    example names its seed."""
+    samples = [{"generator": "g", "task_id": "t", "env_id": "e0", "seed": "0", "well_formed": True,
+                "problems": [], "verdicts": {"correct": "goal_unmet"}, "physics": {}}]
+    failures = {"g": [{"task": "t", "env_id": "e0", "seed": 1, "stage": "construct", "message": "no layout"}]}
+    (g,) = reasons(samples, failures, messages={("g", "t", "e0", "0"): "correct BT goal_unmet: seed 0's",
+                                                ("g", "t", "e0", "1"): "correct BT goal_unmet: seed 1's"})
+    assert (g.n_failed, g.n_short, g.n_rejected) == (1, 0, 1)
+    gen, rejected = g.reasons
+    assert (gen.kind, gen.where) == ("generation", "t/e0 (seed 1)")
+    assert rejected.where == "t/e0 (seed 0)" and rejected.example == "correct BT goal_unmet: seed 0's"
+    assert "1 × generation: construct: no layout — t/e0 (seed 1): no layout" in summary_text([g])
 
 
 def test_trace_lines_become_tick_rows_and_slugs_are_safe() -> None:

@@ -11,7 +11,7 @@ pages, so the report folder works when moved or copied on its own.
 from __future__ import annotations
 
 import os
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
@@ -40,7 +40,7 @@ from logicenveval.reporting.tables import (
     row_cells,
     row_label,
 )
-from logicenveval.reporting.why import GeneratorReasons, reasons
+from logicenveval.reporting.why import GeneratorReasons, Where, reasons
 
 #: the faulty kinds' short names in the index
 _KIND_SHORT = {"counterfactual": "CF", "unreachable": "Unreach", "lackbranch": "LBranch"}
@@ -131,8 +131,9 @@ class Collected:
 
     rows: list[IndexRow]
     samples: list[dict[str, Any]]
-    messages: dict[tuple[str, str, str], str]
-    hrefs: dict[tuple[str, str, str], str]
+    #: per environment (generator, task, env_id, seed): the correct BT's message, its page link
+    messages: dict[Where, str]
+    hrefs: dict[Where, str]
     written: set[Path]
 
 
@@ -173,12 +174,12 @@ def write_details(out: Path, srcs: Sequence[Source], generators: Sequence[str],
             got.written.add(path)
             got.rows.append(_index_row(row, not_measured))
             for e in row.envs:
-                key = (row.generator, row.task, e.env_id)
+                key = (row.generator, row.task, e.env_id, source.seed)
                 got.hrefs.setdefault(key, f"{row.href}#{e.anchor}")
                 correct = next((v for v in e.verdicts if v.kind == "correct"), None)
                 if correct is not None and correct.message:
                     got.messages.setdefault(key, f"correct BT {correct.status}: {correct.message}")
-            got.samples.extend(row.samples)
+            got.samples.extend({**s, "seed": source.seed} if source.seed else s for s in row.samples)
     return got
 
 
@@ -227,8 +228,12 @@ def _rebase(got: Collected, sub: str, seed: str) -> Collected:
 
     rows = [replace(r, href=f"{sub}/{r.href}", anchor=f"{r.anchor}--seed{slug(seed)}", seed=seed,
                     envs=[env(e) for e in r.envs]) for r in got.rows]
-    return Collected(rows, got.samples, got.messages, {k: f"{sub}/{v}" for k, v in got.hrefs.items()},
-                     got.written)
+    def at(key: Where) -> Where:  # the seed run's own environments, named by their seed here
+        return (*key[:3], seed)
+
+    return Collected(rows, [{**s, "seed": seed} for s in got.samples],
+                     {at(k): v for k, v in got.messages.items()},
+                     {at(k): f"{sub}/{v}" for k, v in got.hrefs.items()}, got.written)
 
 
 def write_leaderboards(run_dir: Path, results: dict[str, Any],
@@ -258,13 +263,3 @@ def write_leaderboards(run_dir: Path, results: dict[str, Any],
     atomic_write_text(run_dir / "leaderboard.html", render_main(results, collected, env), durable=False)
     return collected
 
-
-def correct_messages(records: Sequence[UnitRecord]) -> Mapping[tuple[str, str, str], str]:
-    """(generator, task, env) -> the correct BT's verdict message, for the reasons' examples."""
-    out: dict[tuple[str, str, str], str] = {}
-    for r in records:
-        for d in r.details:
-            trace = d.traces.get("correct")
-            if trace is not None and trace.message:
-                out[(r.generator, r.task_id, d.env_id)] = f"correct BT {trace.status}: {trace.message}"
-    return out

@@ -27,7 +27,7 @@ from logicenveval.reporting.leaderboard import (
     write_details,
 )
 from logicenveval.reporting.tables import LEGEND, headers, md_escape, row_cells, row_label
-from logicenveval.reporting.why import GeneratorReasons, reasons
+from logicenveval.reporting.why import GeneratorReasons, Where, reasons
 
 LEAD = ["Run", "Model", "Seeds"]
 
@@ -95,7 +95,7 @@ def write_merged(run_dirs: Sequence[Path], out: Path) -> list[tuple[Path, dict[s
     labels = run_labels(runs)
     table: list[TableRow] = []
     groups: list[dict[str, Any]] = []
-    why: list[tuple[str, GeneratorReasons, dict[tuple[str, str, str], str]]] = []
+    why: list[tuple[str, GeneratorReasons, dict[Where, str]]] = []
     written: set[Path] = set()
     for k, (label, (run_dir, results)) in enumerate(zip(labels, runs, strict=True)):
         scope = f"run{k}"

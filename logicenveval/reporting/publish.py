@@ -12,7 +12,7 @@ from pathlib import Path
 from typing import Any
 
 from logicenveval.metrics.records import UnitRecord
-from logicenveval.reporting.leaderboard import correct_messages, write_leaderboards
+from logicenveval.reporting.leaderboard import write_leaderboards
 from logicenveval.reporting.tables import markdown
 from logicenveval.reporting.why import reasons, summary_text
 
@@ -25,15 +25,10 @@ class Published:
     why: str
 
 
-def why_text(results: dict[str, Any], records: Sequence[UnitRecord]) -> str:
-    """The reasons summary of a finished run, from its units and its recorded failures."""
-    samples = [s.model_dump(mode="json") for r in records for s in r.samples]
-    return summary_text(reasons(samples, results.get("failures", {}), messages=correct_messages(records),
-                                scores=results["results"]))
-
-
 def publish(run_dir: Path, results: dict[str, Any], records: Sequence[UnitRecord]) -> Published:
     """Write `leaderboard.md`, `leaderboard.html` and `details/` (for a multi-seed run also each
-    seed's), and return the text the command prints."""
-    write_leaderboards(run_dir, results, None if results.get("runs") else records)
-    return Published(markdown(results), why_text(results, records))
+    seed's), and return the text the command prints: the "why" summary is read from the pages'
+    index, so it names the same examples (with their seed in a multi-seed run) as the HTML."""
+    got = write_leaderboards(run_dir, results, None if results.get("runs") else records)
+    why = reasons(got.samples, results.get("failures", {}), messages=got.messages, scores=results["results"])
+    return Published(markdown(results), summary_text(why))

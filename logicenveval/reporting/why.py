@@ -13,7 +13,8 @@ kinds of reason, from what the units recorded (`samples.jsonl`, `results.json` `
 - `physics`: an environment failing one of the paper's PhyPR dimensions, by failure code.
 
 Messages name objects and roles; reasons group them by their shape (names, quoted text and numbers
-replaced), and every group keeps its first example verbatim with its task and environment.
+replaced), and every group keeps its first example verbatim with its task and environment (and
+seed, in a multi-seed run, where the seeds' environments share ids).
 """
 
 from __future__ import annotations
@@ -36,6 +37,9 @@ _NAMED = re.compile(r"\b(role|object|objects|category|door|window|room|target|en
 _IDENT = re.compile(r"\b[A-Za-z][A-Za-z0-9]*(?:[_-][A-Za-z0-9]+)+\b")
 _NUMBER = re.compile(r"-?\d+(?:\.\d+)?")
 _BRACKETS = re.compile(r"\[[^\]]*\]")
+
+#: (generator, task, env_id, seed) of one environment; seed "" outside a multi-seed run
+Where = tuple[str, str, str, str]
 
 
 def reason_key(message: str) -> str:
@@ -60,10 +64,17 @@ class Reason:
     task: str = ""
     env_id: str = ""
     example: str = ""
+    seed: str = ""
 
     @property
     def label(self) -> str:
         return f"{self.kind}: {self.key}"
+
+    @property
+    def where(self) -> str:
+        """`task/env` of the example, with its seed in a multi-seed run."""
+        place = "/".join(x for x in (self.task, self.env_id) if x)
+        return f"{place} (seed {self.seed})" if self.seed else place
 
 
 @dataclass
@@ -92,11 +103,18 @@ class GeneratorReasons:
         return not (self.n_failed or self.n_short or self.n_rejected or self.n_physics)
 
 
-def _add(groups: dict[tuple[str, str], Reason], kind: str, key: str, task: str, env_id: str,
+def _add(groups: dict[tuple[str, str], Reason], kind: str, key: str, where: Where,
          example: str) -> None:
-    reason = groups.setdefault((kind, key), Reason(kind, key, task=task, env_id=env_id,
+    _, task, env_id, seed = where
+    reason = groups.setdefault((kind, key), Reason(kind, key, task=task, env_id=env_id, seed=seed,
                                                   example=" ".join(example.split())[:_EXAMPLE_CHARS]))
     reason.count += 1
+
+
+def _seed(record: Mapping[str, Any]) -> str:
+    """The seed a sample or failure record was tagged with in a multi-seed run, else ""."""
+    seed = record.get("seed")
+    return "" if seed is None else str(seed)
 
 
 def rejection(sample: Mapping[str, Any]) -> tuple[str, str] | None:
@@ -114,12 +132,14 @@ def rejection(sample: Mapping[str, Any]) -> tuple[str, str] | None:
 def reasons(samples: Iterable[Mapping[str, Any]],
             failures: Mapping[str, Sequence[Mapping[str, Any]]],
             generators: Sequence[str] | None = None,
-            messages: Mapping[tuple[str, str, str], str] | None = None,
+            messages: Mapping[Where, str] | None = None,
             scores: Mapping[str, Mapping[str, Any]] | None = None) -> list[GeneratorReasons]:
     """Per generator (results order), its reasons, most frequent first.
 
-    `messages` optionally maps (generator, task, env_id) to the correct BT's verdict message, so
-    a rejected environment's example says where the BT failed. `scores` (results.json's
+    `messages` optionally maps an environment (`Where`) to the correct BT's verdict message, so
+    a rejected environment's example says where the BT failed. In a multi-seed run, samples and
+    failures carry their `seed`: the seeds' environments share ids, so a failure in one seed is
+    never taken for an environment another seed built. `scores` (results.json's
     `results`) gives the attempt counts, so the summary's numbers are the leaderboard's, and,
     without `generators`, the order.
     """
@@ -138,21 +158,22 @@ def reasons(samples: Iterable[Mapping[str, Any]],
     for gen in order:
         gen_of(gen)
     samples = list(samples)
-    built = {(str(s["generator"]), str(s["task_id"]), str(s["env_id"])) for s in samples}
+    built = {(str(s["generator"]), str(s["task_id"]), str(s["env_id"]), _seed(s)) for s in samples}
     for gen, items in failures.items():
         g = gen_of(gen)
         for f in items:
             message = str(f.get("message") or "no message")
             stage = str(f.get("stage") or "unit")
             kind = f.get("kind")
-            task, env_id = str(f.get("task", "")), str(f.get("env_id") or "")
-            returned = (gen, task, env_id) in built
+            where = (gen, str(f.get("task", "")), str(f.get("env_id") or ""), _seed(f))
+            returned = where in built
             g.n_failed += not returned
             g.n_short += returned
             key = f"{stage}{f' ({kind})' if kind else ''}: {reason_key(message)}"
-            _add(groups[gen], "built short" if returned else "generation", key, task, env_id, message)
+            _add(groups[gen], "built short" if returned else "generation", key, where, message)
     for s in samples:
-        gen, task, env_id = str(s["generator"]), str(s["task_id"]), str(s["env_id"])
+        where = (str(s["generator"]), str(s["task_id"]), str(s["env_id"]), _seed(s))
+        gen = where[0]
         g = gen_of(gen)
         g.n_envs += 1
         why = rejection(s)
@@ -160,15 +181,15 @@ def reasons(samples: Iterable[Mapping[str, Any]],
             g.n_rejected += 1
             key, message = why
             if messages and s.get("well_formed"):
-                message = messages.get((gen, task, env_id)) or message
-            _add(groups[gen], "rejected", key, task, env_id, message)
+                message = messages.get(where) or message
+            _add(groups[gen], "rejected", key, where, message)
         physics = s.get("physics") or {}
         failed = [f for f in physics.get("failures") or [] if isinstance(f, Mapping)]
         if failed:
             g.n_physics += 1
         for code in sorted({(str(f.get("dimension", "?")), str(f.get("code", "?"))) for f in failed}):
             first = next(f for f in failed if (str(f.get("dimension", "?")), str(f.get("code", "?"))) == code)
-            _add(groups[gen], "physics", f"PhyPR {code[0]}: {code[1]}", task, env_id,
+            _add(groups[gen], "physics", f"PhyPR {code[0]}: {code[1]}", where,
                  str(first.get("message") or code[1]))
     out = []
     for gen in order:
@@ -194,8 +215,7 @@ def summary_text(per_gen: Sequence[GeneratorReasons], max_groups: int = MAX_GROU
         lines.append(f"  {g.generator}: {g.n_envs} environment(s){short}; {g.failed_text} failed to "
                      f"generate, {g.n_rejected} not a valid scenario, {g.n_physics} failing PhyPR")
         for r in g.reasons[:max_groups]:
-            where = "/".join(x for x in (r.task, r.env_id) if x)
-            lines.append(f"    {r.count} × {r.label} — {where}: {r.example}")
+            lines.append(f"    {r.count} × {r.label} — {r.where}: {r.example}")
         if len(g.reasons) > max_groups:
             lines.append(f"    ... and {len(g.reasons) - max_groups} other reason(s): see "
                          "leaderboard.html, samples.jsonl and results.json 'failures'")
