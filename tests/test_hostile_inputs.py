@@ -442,6 +442,7 @@ def test_render_into_read_only_or_missing_place(tmp_path: Path, capsys: pytest.C
     ('{"schema": "logicenveval.results/1", "results": {"g": {"logcov": "high"}}}', "results.g.logcov"),
     ('{"schema": "logicenveval.results/1", "results": {"g": {"phypr": {"avg": ["x"]}}}}', "results.g.phypr.avg"),
     ('{"schema": "logicenveval.results/1", "results": []}', "field 'results'"),
+    ('{"schema": "logicenveval.results/1", "results": {}, "generators": "cot"}', "field 'generators'"),
     ("\xff\xfe", "not UTF-8"),
 ])
 def test_report_and_compare_on_damaged_results(tmp_path: Path, capsys: pytest.CaptureFixture[str],

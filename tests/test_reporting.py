@@ -300,7 +300,12 @@ def test_damaged_results_exit_2_naming_the_field(run_dir: Path, tmp_path: Path, 
 
 
 def test_report_pages_show_why_and_stand_alone(run_dir: Path, tmp_path: Path) -> None:
+    written_by_run = (run_dir / "leaderboard.md").read_text()
     assert main(["report", str(run_dir)]) == 0
+    # results.json's keys are sorted; its `generators` keeps the run's row order for the report
+    assert (run_dir / "leaderboard.md").read_text() == written_by_run
+    assert [x.split(" |")[0] for x in written_by_run.splitlines() if x.startswith("| ") and "Method" not in x] \
+        == ["| logicenvgen", "| cot", "| holodeck"]
     html = (run_dir / "leaderboard.html").read_text()
     assert 'id="gen-cot"' in html and 'id="t-cot--clean_living_room"' in html and 'id="filter"' in html
     assert "Why environments were rejected or failed" in html

@@ -102,3 +102,13 @@ def test_files_intact_checks_the_files_a_unit_wrote(tmp_path: Path) -> None:
     assert not store.files_intact(loaded)
     (tmp_path / "envs" / "g" / "t1" / "e0.json").unlink()
     assert not store.files_intact(loaded)
+
+
+def test_results_rows_follow_the_runs_order_whatever_the_file_lists() -> None:
+    from logicenveval.runner.results import in_run_order
+
+    rows = {"a": {}, "b": {}, "c": {}}
+    assert list(in_run_order({"results": rows, "generators": ["c", "a", "b"]})["results"]) == ["c", "a", "b"]
+    # edited by hand: a name no row has is skipped, rows it does not name follow in file order
+    assert list(in_run_order({"results": rows, "generators": ["x", "b"]})["results"]) == ["b", "a", "c"]
+    assert list(in_run_order({"results": rows})["results"]) == ["a", "b", "c"]

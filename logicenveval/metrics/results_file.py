@@ -71,6 +71,9 @@ class ResultsFile(BaseModel):
     benchmark: Benchmark = Field(default_factory=Benchmark)
     versions: dict[str, str] = Field(default_factory=dict)
     git_commit: str | None = None
+    generators: list[str] | None = Field(
+        default=None, description="the row names of `results` in the run's order (the file's keys "
+        "are sorted; reports list the rows in this order)")
     results: dict[str, GeneratorResults] = Field(description="generator (row name) -> metrics")
     per_task: dict[str, dict[str, TaskMetrics]] | None = Field(
         default=None, description="generator -> task id -> that task's metrics (single-seed runs)")

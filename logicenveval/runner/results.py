@@ -121,6 +121,7 @@ def build_results(
         "benchmark": {"task_sha256": task_hashes(tasks)},
         "versions": package_versions(),
         "git_commit": git_commit(),
+        "generators": list(results),
         "results": results,
         "per_task": per_task,
         "failures": failures,
@@ -184,7 +185,16 @@ def load_results(run_dir: Path) -> dict[str, Any]:
         raise RunStoreError("not a LogicEnvEval results file", file=str(path),
                             hint=f"expected an object with schema {RESULTS_SCHEMA}; re-run the command")
     _check_results(data, str(path))
-    return data
+    return in_run_order(data)
+
+
+def in_run_order(data: dict[str, Any]) -> dict[str, Any]:
+    """`results` in the run's row order (`generators`; results.json is written with sorted keys,
+    so without it a report would list the rows alphabetically, unlike the run's own leaderboard).
+    Rows the list does not name (a file edited by hand) follow in the file's order."""
+    rows = data["results"]
+    order = [g for g in dict.fromkeys(data.get("generators") or []) if g in rows]
+    return {**data, "results": {**{g: rows[g] for g in order}, **rows}}
 
 
 #: per-task figures that reports and comparisons compute with (`metrics.uncertainty`)
@@ -237,6 +247,9 @@ def _check_leaves(where: str, value: object) -> None:
 
 def _check_top(data: dict[str, Any]) -> None:
     _need(isinstance(data["results"], dict), "results", "must be an object of generators")
+    order = data.get("generators", [])
+    _need(isinstance(order, list) and all(isinstance(g, str) for g in order), "generators",
+          "must be a list of generator names (the row order)")
     tasks = data.get("tasks", [])
     _need(isinstance(tasks, list) and all(isinstance(t, str) for t in tasks), "tasks",
           "must be a list of task ids")
