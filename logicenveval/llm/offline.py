@@ -14,6 +14,7 @@ from typing import Any
 
 from logicenveval.errors import ConfigError
 from logicenveval.llm.base import ChatRequest, ModelStats
+from logicenveval.llm.bounds import fit_arrays
 
 Handler = Callable[[dict[str, Any], ChatRequest], Any]
 
@@ -64,4 +65,5 @@ class OfflineModel:
                               field="--model",
                               hint="known kinds: " + ", ".join(sorted(_HANDLERS)))
         self.stats.add(requests=1)
-        return json.dumps(fn(request.payload, request))
+        # within the schema's list bounds, as a grammar-constrained model must write (llm.bounds)
+        return json.dumps(fit_arrays(fn(request.payload, request), request.schema))
