@@ -94,6 +94,7 @@ def test_unmeasured_rows_budget_marks_and_failed_attempts() -> None:
 
 def test_model_reply_validity_is_shown_when_recorded() -> None:
     ref = _reference()
+    ref.pop("llm", None)
     assert "Valid model replies" not in markdown(ref)  # results without an `llm` block
     ref["llm"] = {"cot": {"all": {"questions": 40, "valid_first": 38, "valid": 40,
                                   "valid_first_share": 0.95, "valid_share": 1.0}},
