@@ -21,6 +21,7 @@ from pathlib import Path
 from typing import Any
 
 from logicenveval.runner.config import RunConfig
+from logicenveval.runner.results import load_results
 from logicenveval.runner.run import run
 
 
@@ -64,7 +65,7 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("pack", type=Path, help="a run folder holding llm_cache.sqlite")
     args = parser.parse_args(argv)
-    recorded = json.loads((args.pack / "results.json").read_text(encoding="utf-8"))
+    recorded = load_results(args.pack)
     with tempfile.TemporaryDirectory() as tmp:
         start = time.perf_counter()
         replayed = replay(args.pack, Path(tmp))

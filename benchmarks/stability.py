@@ -13,10 +13,11 @@ of valid model replies (after re-asks) and of attempted environments that failed
 from __future__ import annotations
 
 import argparse
-import json
 import statistics
 from pathlib import Path
 from typing import Any
+
+from logicenveval.runner.results import load_results
 
 #: (label, where in results.json: a path under `results.<method>`, or a function of the run and method)
 METRICS: tuple[tuple[str, Any], ...] = (
@@ -57,7 +58,7 @@ def _model(spec: str) -> str:
 
 def load_runs(folder: Path) -> list[dict[str, Any]]:
     """The results.json of each seed run of a `run --seeds` folder, in seed-folder order."""
-    runs = [json.loads(p.read_text(encoding="utf-8")) for p in sorted(folder.glob("seed*/results.json"))]
+    runs = [load_results(p.parent) for p in sorted(folder.glob("seed*/results.json"))]
     if not runs:
         raise SystemExit(f"no seed*/results.json under {folder}")
     return runs

@@ -112,3 +112,6 @@ def test_results_rows_follow_the_runs_order_whatever_the_file_lists() -> None:
     # edited by hand: a name no row has is skipped, rows it does not name follow in file order
     assert list(in_run_order({"results": rows, "generators": ["x", "b"]})["results"]) == ["b", "a", "c"]
     assert list(in_run_order({"results": rows})["results"]) == ["a", "b", "c"]
+    # written before `generators`: the generators the config asked for (a plug-in's ref matches no row)
+    older = {"results": rows, "config": {"generators": ["c", "pkg.mod:Gen", "b"]}}
+    assert list(in_run_order(older)["results"]) == ["c", "b", "a"]

@@ -51,6 +51,7 @@ from logicenveval.logic.exhaustive import exhaustive_cover  # noqa: E402
 from logicenveval.logic.reference import reference_set  # noqa: E402
 from logicenveval.logic.selectors import get_selector  # noqa: E402
 from logicenveval.model.tree import task_paths  # noqa: E402
+from logicenveval.runner.results import load_results  # noqa: E402
 
 REFERENCE = ROOT / "reports" / "reference"
 FIGURES = ROOT / "reports" / "figures"
@@ -77,9 +78,7 @@ FIG = re.compile(r"(<!--fig:([a-z0-9_.-]+)-->)(.*?)(<!--/fig-->)", re.S)
 
 @cache
 def results(name: str) -> dict[str, Any]:
-    path = REFERENCE / "results.json" if name == "reference" else FIGURES / name / "results.json"
-    data: dict[str, Any] = json.loads(path.read_text())
-    return data
+    return load_results(REFERENCE if name == "reference" else FIGURES / name)
 
 
 @cache
@@ -138,9 +137,7 @@ def table(res: dict[str, Any], columns: Sequence[Column], first: str = "Method",
     head = "| " + " | ".join([first] + [c for c, _ in columns]) + " |"
     sep = "|---|" + "|".join("---:" for _ in columns) + "|"
     lines = [head, sep]
-    order = [g for g in (res.get("config") or {}).get("generators", []) if g in res["results"]]
-    order += [g for g in res["results"] if g not in order]
-    for gen in generators or order:
+    for gen in generators or res["results"]:  # load_results: the run's row order
         values = res["results"][gen]
         cells = ([NOT_MEASURED] * len(columns) if values.get("measured") is False
                  else [fn(values) for _, fn in columns])
@@ -260,7 +257,7 @@ def block_real() -> str:
     head: list[str] = []
     rows: list[str] = []
     for path in sorted(REAL.glob("*/results.json")):
-        res = json.loads(path.read_text())
+        res = load_results(path.parent)
         model = _model_label(res)
         lines = table(res, cols).splitlines()
         head = lines[:2]

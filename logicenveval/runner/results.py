@@ -191,9 +191,14 @@ def load_results(run_dir: Path) -> dict[str, Any]:
 def in_run_order(data: dict[str, Any]) -> dict[str, Any]:
     """`results` in the run's row order (`generators`; results.json is written with sorted keys,
     so without it a report would list the rows alphabetically, unlike the run's own leaderboard).
-    Rows the list does not name (a file edited by hand) follow in the file's order."""
+    A file written before `generators` existed is ordered by the generators its `config` asked
+    for (built-in row names are those names). Rows neither list names (a plug-in's row, a file
+    edited by hand) follow in the file's order."""
     rows = data["results"]
-    order = [g for g in dict.fromkeys(data.get("generators") or []) if g in rows]
+    config = data.get("config")
+    asked = config.get("generators") if isinstance(config, dict) else None
+    listed = data.get("generators") or (asked if isinstance(asked, list) else [])
+    order = [g for g in dict.fromkeys(listed) if isinstance(g, str) and g in rows]
     return {**data, "results": {**{g: rows[g] for g in order}, **rows}}
 
 
