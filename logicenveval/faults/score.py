@@ -21,8 +21,8 @@ from pathlib import Path
 from logicenveval.atomic import atomic_write_text
 from logicenveval.benchmark import policy_path
 from logicenveval.domain.catalog import Catalog
-from logicenveval.faults.classify import MutantRunner, classify_task
 from logicenveval.errors import LogicEnvEvalError, RunStoreError
+from logicenveval.faults.classify import MutantRunner, classify_task
 from logicenveval.faults.operators import OPERATORS, Mutant, mutants
 from logicenveval.limits import read_bytes
 from logicenveval.model.envspec import EnvSpec

@@ -334,14 +334,15 @@ def _check_numbers(where: str, values: dict[str, Any]) -> None:
             elif isinstance(v, list):
                 lo, hi = v
                 _need(lo <= hi, at, f"interval [{lo:.4g}, {hi:.4g}] has its low end above its high end")
-                _need(not _is_rate(path[1:]) or (0 <= lo and hi <= 1), at,
+                _need(not _is_rate(path[1:]) or (lo >= 0 and hi <= 1), at,
                       f"interval [{lo:.4g}, {hi:.4g}] of a rate is outside [0, 1] (0-100 %)")
         elif isinstance(v, dict):
             stack += [((*path, k), x) for k, x in v.items()]
-        elif _is_rate(path) and _is_number(v) and not isinstance(v, bool):
+        elif _is_rate(path) and isinstance(v, int | float) and _is_number(v):
             _need(0 <= v <= 1, at, f"rate {v:.4g} is outside [0, 1] (shown as {100 * v:.4g} %)")
     failed, attempted = values.get("n_failed"), values.get("n_attempted")
-    if _is_number(failed) and _is_number(attempted):
+    if isinstance(failed, int | float) and isinstance(attempted, int | float) \
+            and _is_number(failed) and _is_number(attempted):
         _need(failed <= attempted, f"{where}.n_failed",
               f"{failed} failed environments are more than the {attempted} attempted")
 
