@@ -24,6 +24,15 @@ environments or a 50,000-object one, a generator that never returns (bounded by
 in an `evaluate` folder, `check-env /dev/zero`. The plug-ins are `tests/hostile_generators.py`
 (well under 1 MB). The baseline is a normal one-environment run of the same plug-in module. Last line:
 `resources: worst_seconds=<float> worst_peak_mb=<float> baseline_seconds=<float> ratio=<float>`.
+
+Then issue 37's file and message cases (`io_cases`, defect classes 1, 5, 17-19, 22-25): every
+writer aimed at a device node, a FIFO, a symlink to /proc/self/fd/1 and a read-only file of
+another user; FIFOs and a socket as task, policy, run-folder and ProcTHOR database files; edited
+results.json with impossible values; 1e300 coordinates; 120 kB inputs echoed; `lint` of nothing;
+`simulate --env` of another task's environment. Each is a fresh CLI process with a 60 s deadline;
+a case fails on another exit code than documented, a traceback, a hang, an error line over
+4,000 characters, or a target changed. Last line:
+`io: cases=<int> failures=<int> worst_seconds=<float>`.
 """
 
 from __future__ import annotations
@@ -32,6 +41,7 @@ import contextlib
 import json
 import os
 import shutil
+import stat
 import statistics
 import subprocess
 import sys
@@ -39,6 +49,7 @@ import tempfile
 import time
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 from logicenveval.benchmark import DEFAULT_TASKS_DIR, load_task_file
 from logicenveval.errors import LogicEnvEvalError
@@ -169,6 +180,7 @@ def main() -> None:
     print(f"baseline (load one real task + policy): {baseline:.1f} ms")
     print(f"worst_refusal_ms={worst:.1f} baseline_ms={baseline:.1f} ratio={worst / baseline:.2f}")
     resources()
+    io_cases()
 
 
 TESTS = Path(__file__).resolve().parents[1] / "tests"
@@ -284,5 +296,147 @@ def house_cases() -> None:
         print(f"worst_house_s={worst_s:.2f} worst_house_rss_mb={worst_mb:.0f}")
 
 
+# ----- issue 37: special files, edited results, echoes (branch i37-io) -----------------------
+
+def _fingerprint(path: Path) -> tuple[object, ...]:
+    st = os.lstat(path)
+    link = os.readlink(path) if stat.S_ISLNK(st.st_mode) else None
+    data = path.read_bytes() if stat.S_ISREG(st.st_mode) else None
+    return st.st_ino, st.st_mode, st.st_uid, link, data
+
+
+def _io_targets(d: Path) -> dict[str, Path]:
+    """Output targets a rename must not replace (the device only as root)."""
+    out: dict[str, Path] = {}
+    if os.geteuid() == 0:
+        os.mknod(d / "dev", stat.S_IFCHR | 0o666, os.makedev(1, 3))
+        out["device"] = d / "dev"
+    os.mkfifo(d / "fifo")
+    os.symlink("/proc/self/fd/1", d / "link")
+    (d / "ro").write_text("another user's file\n")
+    if os.geteuid() == 0:
+        os.chown(d / "ro", 65534, 65534)
+    (d / "ro").chmod(0o444)
+    out.update(fifo=d / "fifo", symlink=d / "link", readonly=d / "ro")
+    return out
+
+
+def _io_run(argv: list[str], cwd: Path) -> tuple[float, int, str, bool]:
+    """Seconds, exit code, stderr and whether it hung (killed at the deadline)."""
+    start = time.perf_counter()
+    try:
+        proc = subprocess.run([sys.executable, "-m", "logicenveval", *argv], cwd=cwd, text=True,
+                              capture_output=True, timeout=60)
+    except subprocess.TimeoutExpired:
+        return time.perf_counter() - start, -1, "", True
+    return time.perf_counter() - start, proc.returncode, proc.stdout + proc.stderr, False
+
+
+def io_cases() -> None:
+    envs_fixture = TESTS / "fixtures" / "envs"
+    house = TESTS / "fixtures" / "houses" / "procthor10k_kitchen.json"
+    one_room = str(envs_fixture / "one_room.json")
+    big = "a" * 120_000
+    with tempfile.TemporaryDirectory() as tmp:
+        d = Path(tmp)
+        cases: list[tuple[str, list[str], set[int], list[Path]]] = []
+        writers = {
+            "schema --out": lambda o: ["schema", "envspec", "--out", str(o)],
+            "export glb": lambda o: ["export", one_room, "--format", "glb", "--out", str(o)],
+            "export procthor": lambda o: ["export", one_room, "--format", "procthor", "--out", str(o)],
+            "import-house": lambda o: ["import-house", str(house), "--task", "kitchen_breakfast_prep",
+                                       "--env-id", "k", "--out", str(o)],
+        }
+        for wname, argv in writers.items():
+            folder = d / f"out_{len(cases)}"
+            folder.mkdir()
+            for kind, target in _io_targets(folder).items():
+                cases.append((f"{wname} -> {kind}", argv(target), {2}, [target]))
+        svg = d / "svg"
+        svg.mkdir()
+        os.mkfifo(svg / "r.svg")
+        cases.append(("check-env --render -> fifo", ["check-env", one_room, "--render", str(svg / "r.svg")],
+                      {2}, [svg / "r.svg"]))
+        # inputs that are not regular files
+        tasks = d / "tasks"
+        for member in ("task.json", "policies/correct.xml"):
+            folder = tasks / member.replace("/", "_")
+            shutil.copytree(DEFAULT_TASKS_DIR / TASK, folder / TASK)
+            (folder / TASK / member).unlink()
+            os.mkfifo(folder / TASK / member)
+            cases.append((f"tasks validate, {member} fifo", ["tasks", "validate", "--tasks-dir", str(folder)],
+                          {1, 2}, [folder / TASK / member]))
+        db = d / "db"
+        db.mkdir()
+        for name in ("asset-database.json", "material-database.json", "wall-holes.json"):
+            os.mkfifo(db / name)
+        cases.append(("check-house --procthor-db fifos", ["check-house", str(house), "--procthor-db", str(db)],
+                      {2}, []))
+        cases.append(("check-env /dev/zero", ["check-env", "/dev/zero"], {2}, []))
+        # a scored run folder: FIFOs in it, edited results
+        (d / "envs" / TASK).mkdir(parents=True)
+        shutil.copy(envs_fixture / "one_room.json", d / "envs" / TASK / "one_room.json")
+        evaluate = ["evaluate", str(d / "envs"), "--name", "ext", "--output", str(d / "scored"),
+                    "--run-id", "r", "--executor", "inprocess"]
+        _io_run(evaluate, TESTS)
+        run = d / "scored" / "r"
+        for member in ("config.json", "units/ext/clean_living_room.json"):
+            copy = d / f"scored_{member[:5]}"
+            shutil.copytree(d / "scored", copy)
+            (copy / "r" / member).unlink()
+            os.mkfifo(copy / "r" / member)
+            cases.append((f"resume, {member.split('/')[0]} fifo",
+                          [*evaluate[:5], str(copy), *evaluate[6:]], {2}, [copy / "r" / member]))
+        fifo_run = d / "fifo_results"
+        fifo_run.mkdir()
+        os.mkfifo(fifo_run / "results.json")
+        cases.append(("compare, results.json fifo", ["compare", str(run), str(fifo_run)], {2}, []))
+        data = json.loads((run / "results.json").read_text())
+        edits: dict[str, Callable[[dict[str, Any]], object]] = {
+            "LogCov 750 %": lambda r: r["results"]["ext"].update(logcov=7.5),
+            "lo > hi": lambda r: r["results"]["ext"]["ci95"].update(ji=[0.9, 0.1]),
+            "n_failed > n_attempted": lambda r: r["results"]["ext"].update(n_failed=10**6),
+            "unknown row": lambda r: r["results"].update(ghost=r["results"]["ext"]),
+            "generators twice": lambda r: r.update(generators=["ext", "ext"]),
+        }
+        for name, edit in edits.items():
+            copy = d / f"edited_{len(cases)}"
+            shutil.copytree(run, copy)
+            edited = json.loads(json.dumps(data))
+            edit(edited)
+            (copy / "results.json").write_text(json.dumps(edited))
+            cases.append((f"report, {name}", ["report", str(copy)], {2}, [copy / "leaderboard.md"]))
+        huge = json.loads((envs_fixture / "one_room.json").read_text())
+        huge["objects"][0]["position"] = [1e300, 0.4, 3.5]
+        (d / "huge.json").write_text(json.dumps(huge))
+        cases.append(("export glb, 1e300 coordinates", ["export", str(d / "huge.json"), "--format", "glb",
+                                                         "--out", str(d / "huge.glb")], {2}, []))
+        for name, argv in (("tasks show", ["tasks", "show", big]), ("schema NAME", ["schema", big]),
+                           ("check-env PATH", ["check-env", f"/tmp/{big}"]),
+                           ("run --tasks", ["run", "--tasks", big, "--quiet"])):
+            cases.append((f"120 kB echo: {name}", argv, {2}, []))
+        (d / "lint" / TASK).mkdir(parents=True)
+        cases.append(("lint of no EnvSpec", ["lint", str(d / "lint")], {2}, []))
+        cases.append(("simulate --env of another task", ["simulate", "--task", "kitchen_fridge_restock",
+                                                          "--policy", "correct", "--env", one_room], {2}, []))
+        print(f"\n{'io case (issue 37)':<44} {'seconds':>8} {'exit':>5} {'ok':>3}  message")
+        failures = 0
+        worst = 0.0
+        for name, argv, codes, kept in cases:
+            before = [_fingerprint(p) for p in kept]
+            seconds, code, text, hung = _io_run(argv, TESTS)
+            lines = [ln for ln in text.splitlines() if ln.strip()]
+            ok = (not hung and code in codes and "Traceback" not in text and len(text) < 4000
+                  and [_fingerprint(p) for p in kept] == before)
+            failures += not ok
+            worst = max(worst, seconds)
+            print(f"{name[:44]:<44} {seconds:>8.2f} {code:>5} {'yes' if ok else 'NO':>3}  "
+                  f"{(lines[-1] if lines else '')[:70]}")
+    print(f"io: cases={len(cases)} failures={failures} worst_seconds={worst:.2f}")
+
+
 if __name__ == "__main__":
-    main()
+    if sys.argv[1:] == ["io"]:  # only this pass's cases
+        io_cases()
+    else:
+        main()

@@ -307,7 +307,8 @@ def _check_models(task: Task, folder: Path, loaded: dict[str, object], add: _Add
 
     for kind in loaded:
         rel = task.policies[kind]
-        stale = model_problem((folder / rel).read_text(encoding="utf-8"))
+        stale = model_problem(read_text(folder / rel, what="policy file", error=PolicyFormatError,
+                                        max_bytes="max_xml_bytes", hint="restore the policy file"))
         if stale is not None:
             add(rel, "TreeNodesModel", f"{stale}; run `python -m logicenveval tasks validate "
                 "--write-models` to write the action library's current one")

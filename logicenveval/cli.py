@@ -10,9 +10,10 @@ import argparse
 import importlib
 import sys
 from collections.abc import Sequence
+from typing import NoReturn
 
 from logicenveval.atomic import RESOURCE_ERRNOS
-from logicenveval.errors import LogicEnvEvalError
+from logicenveval.errors import ECHO_LIMITS, LogicEnvEvalError, clip
 from logicenveval.redact import redact
 
 #: command -> (module, one-line help)
@@ -36,8 +37,15 @@ COMMANDS: dict[str, tuple[str, str]] = {
 }
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse, whose usage errors echo a bounded part of a value (`invalid choice: '<100 kB>'`)."""
+
+    def error(self, message: str) -> NoReturn:
+        super().error(clip(message, ECHO_LIMITS["message"]))
+
+
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="python -m logicenveval",
         description="LogicEnvEval: evaluate generators of logically diverse test environments.",
     )
@@ -78,7 +86,7 @@ RESUMABLE = frozenset({"run", "evaluate"})
 def _os_error(exc: OSError, command: str) -> int:
     """One line for an operating-system error: exit 1 when the machine failed the work (a full
     disk, an I/O error), 2 when the path given cannot be used (missing, a folder, read-only)."""
-    where = f"{exc.filename}: " if exc.filename else ""
+    where = f"{clip(str(exc.filename), ECHO_LIMITS['file'])}: " if exc.filename else ""
     kept = "; finished units are kept and a re-run resumes" if command in RESUMABLE else ""
     if exc.errno in RESOURCE_ERRNOS:
         print(f"error: {where}{exc.strerror or exc} (fix: free disk space or fix the device, then "

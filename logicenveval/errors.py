@@ -7,6 +7,20 @@ results, never exceptions.
 
 from __future__ import annotations
 
+#: characters of each part of a message (what, file, field, fix): an input echoed into a
+#: message (a 100 kB task id, path or option value) is cut in its middle, so an error stays a
+#: line a user can read, and a log line stays small
+ECHO_LIMITS = {"message": 1500, "file": 400, "field": 200, "hint": 800}
+
+
+def clip(text: str, limit: int) -> str:
+    """`text` cut in its middle to at most `limit` characters, saying how much was left out."""
+    if len(text) <= limit:
+        return text
+    keep = max(limit - len(f" ...[{len(text)} characters cut]... "), 2)
+    mark = f" ...[{len(text) - keep} characters cut]... "
+    return text[: keep // 2 + keep % 2] + mark + text[len(text) - keep // 2:]
+
 
 class LogicEnvEvalError(Exception):
     """Root of every error this package raises on purpose."""
@@ -35,7 +49,7 @@ class LogicEnvEvalError(Exception):
     def _format(self) -> str:
         where = []
         if self.file:
-            loc = self.file
+            loc = clip(self.file, ECHO_LIMITS["file"])
             if self.line is not None:
                 loc += f":{self.line}"
                 if self.column is not None:
@@ -48,10 +62,11 @@ class LogicEnvEvalError(Exception):
         elif self.column is not None:
             where.append(f"column {self.column}")
         if self.field:
-            where.append(f"field '{self.field}'")
-        text = (": ".join([", ".join(where), self.message]) if where else self.message)
+            where.append(f"field '{clip(self.field, ECHO_LIMITS['field'])}'")
+        message = clip(self.message, ECHO_LIMITS["message"])
+        text = (": ".join([", ".join(where), message]) if where else message)
         if self.hint:
-            text += f" (fix: {self.hint})"
+            text += f" (fix: {clip(self.hint, ECHO_LIMITS['hint'])})"
         return text
 
 

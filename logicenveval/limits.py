@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import json
 import os
+import stat
 from pathlib import Path
 from typing import Any, BinaryIO
 
@@ -63,19 +64,24 @@ def read_bytes(path: str | Path, *, what: str, error: type[LogicEnvEvalError],
                max_bytes: str, hint: str) -> bytes:
     """The bytes of an untrusted file, at most the `max_bytes` limit of them.
 
-    The limit is checked on the bytes actually read, not on the size the file system reports:
-    `/dev/zero`, a pipe or a file growing while read report no (or a wrong) size.
+    Only regular files are read: a FIFO, a socket or a device has no size and may never end or
+    never answer (a FIFO without a writer blocks the open itself), so it is refused before it is
+    opened — and the open is non-blocking and checked again on the descriptor, so a FIFO swapped
+    in between cannot hang the read. Files are opened read-only. The limit is also checked on the
+    bytes actually read (a file growing while read).
     """
     p = Path(path)
     cap = limit(max_bytes)
     try:
-        if p.is_dir():
-            raise error(f"{what} is a directory, not a file", file=str(p), hint=hint)
-        size = p.stat().st_size
-        if size > cap:  # a regular file that says it is too big: refused without reading
-            raise error(f"{what} is {size} bytes, more than the limit of {cap}", file=str(p),
-                        hint=raise_hint(max_bytes))
-        with p.open("rb", buffering=0) as fh:
+        _check_regular(os.stat(p).st_mode, p, what, error, hint)
+        fd = os.open(p, os.O_RDONLY | os.O_NONBLOCK | os.O_NOCTTY | os.O_CLOEXEC)
+        with open(fd, "rb", buffering=0) as fh:
+            st = os.fstat(fd)
+            _check_regular(st.st_mode, p, what, error, hint)
+            if st.st_size > cap:  # a regular file that says it is too big: refused unread
+                raise error(f"{what} is {st.st_size} bytes, more than the limit of {cap}",
+                            file=str(p), hint=raise_hint(max_bytes))
+            os.set_blocking(fd, True)
             data = _read_at_most(fh, cap + 1)
     except FileNotFoundError:
         raise error(f"{what} not found", file=str(p), hint=hint) from None
@@ -89,6 +95,17 @@ def read_bytes(path: str | Path, *, what: str, error: type[LogicEnvEvalError],
         raise error(f"{what} has more than the limit of {cap} bytes", file=str(p),
                     hint=raise_hint(max_bytes))
     return data
+
+
+def _check_regular(mode: int, p: Path, what: str, error: type[LogicEnvEvalError],
+                   hint: str) -> None:
+    if stat.S_ISDIR(mode):
+        raise error(f"{what} is a directory, not a file", file=str(p), hint=hint)
+    if not stat.S_ISREG(mode):
+        kind = ("a FIFO (named pipe)" if stat.S_ISFIFO(mode) else "a socket" if stat.S_ISSOCK(mode)
+                else "a device")
+        raise error(f"{what} is {kind}, not a regular file; it was not read", file=str(p),
+                    hint="pass a regular file (copy the data to a file first)")
 
 
 def _read_at_most(fh: BinaryIO, n: int) -> bytes:

@@ -127,4 +127,9 @@ def lint_folder(envs_dir: str | Path, tasks_dir: str | Path | None = None,
                 report.problems.append(("file", f"env_id {env.env_id!r} is also used by {seen[env.env_id]}"))
             seen.setdefault(env.env_id, path.name)
             lint_env(env, task, cat, report)
+    if not reports:  # "no problems" about nothing would read as a pass
+        raise ConfigError(f"no EnvSpec file (*.json) in the task folder(s) "
+                          f"{', '.join(f.name for f in folders[:5])}, so nothing was checked",
+                          file=str(root), hint="put the EnvSpecs in ENVS_DIR/<task_id>/*.json, "
+                          "as regular files the user may read")
     return reports

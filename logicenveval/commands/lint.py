@@ -2,7 +2,7 @@
 folder laid out as `evaluate` scores it (`<task_id>/*.json`), before any scoring.
 
 Exit 0 when no file has a problem (notes allowed), 1 when one has, 2 on bad input (no such
-folder, no task folder).
+folder, no task folder, no EnvSpec file in the task folders: nothing checked).
 """
 
 from __future__ import annotations

@@ -49,6 +49,7 @@ def run(args: argparse.Namespace) -> int:
     from logicenveval.envfiles import load_env
     from logicenveval.model.task import POLICY_KINDS
     from logicenveval.model.tree import trajectory_from_assignment
+    from logicenveval.paths import shown
     from logicenveval.sim.loader import load_policy
     from logicenveval.sim.simulator import simulate
     from logicenveval.sim.situations import situation_env
@@ -68,7 +69,13 @@ def run(args: argparse.Namespace) -> int:
     # exit 2 with file:line and a fix, like every other input (docs/security.md)
     policy = load_policy(path, roles=task.roles, rooms=task.rooms)
     if args.env:  # categories mapped and roles bound exactly as `evaluate` judges the file
-        prepared = prepare_env(load_env(args.env), task.roles, catalog)
+        loaded = load_env(args.env)
+        if loaded.task_id != task.id:  # its roles and GT are another task's: a pass means nothing
+            raise ConfigError(f"the environment is for task {shown(loaded.task_id)}, not "
+                              f"{task.id!r}", file=args.env, field="task_id",
+                              hint=f"simulate it with --task {shown(loaded.task_id)}, or pass "
+                              f"an environment of {task.id}")
+        prepared = prepare_env(loaded, task.roles, catalog)
         env = prepared.env
         if not args.json:
             for note in [*prepared.categories.notes(), *prepared.binding.problems]:

@@ -15,6 +15,7 @@ from typing import Literal
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
 from logicenveval.errors import CatalogError
+from logicenveval.limits import read_text
 from logicenveval.validation import first_error
 
 Placement = Literal["floor", "surface", "wall", "ceiling", "inside"]
@@ -62,10 +63,10 @@ class Catalog(BaseModel):
 @lru_cache(maxsize=8)
 def _load(path: str) -> Catalog:
     p = Path(path)
+    text = read_text(p, what="catalog file", error=CatalogError, max_bytes="max_env_bytes",
+                     hint="pass an existing catalog.json")
     try:
-        data = json.loads(p.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise CatalogError("catalog file not found", file=path, hint="pass an existing catalog.json") from None
+        data = json.loads(text)
     except json.JSONDecodeError as exc:
         raise CatalogError(f"invalid JSON: {exc.msg}", file=path, line=exc.lineno, column=exc.colno,
                            hint="fix the JSON syntax") from None

@@ -21,8 +21,10 @@ from pathlib import Path
 from logicenveval.atomic import atomic_write_text
 from logicenveval.benchmark import policy_path
 from logicenveval.domain.catalog import Catalog
+from logicenveval.errors import LogicEnvEvalError, RunStoreError
 from logicenveval.faults.classify import MutantRunner, classify_task
 from logicenveval.faults.operators import OPERATORS, Mutant, mutants
+from logicenveval.limits import read_bytes
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import Task
 from logicenveval.sim.loader import load_policy, policy_to_xml
@@ -132,8 +134,9 @@ def _read(path: Path, key: str) -> list[str] | None:
     """The killable ids of a shipped or cached file, or None when it is absent, unreadable
     (a folder, not UTF-8, not JSON) or stale: such a file is recomputed, never trusted."""
     try:
-        data = json.loads(path.read_text(encoding="utf-8"))
-    except (OSError, ValueError):
+        data = json.loads(read_bytes(path, what="killable-mutants file", error=RunStoreError,
+                                     max_bytes="max_run_file_bytes", hint="it is recomputed"))
+    except (LogicEnvEvalError, ValueError, RecursionError):
         return None
     if not isinstance(data, dict) or data.get("key") != key or not isinstance(data.get("killable"), list):
         return None

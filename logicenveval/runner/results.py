@@ -22,6 +22,7 @@ from logicenveval.metrics.compute import aggregate, null_metrics, task_metrics
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.metrics.uncertainty import ci95
 from logicenveval.model.task import FAULTY_KINDS, Task
+from logicenveval.paths import shown
 
 RESULTS_SCHEMA = "logicenveval.results/1"
 _VERSIONED = ("logicenveval", "numpy", "pydantic", "z3-solver", "py-trees", "trimesh",
@@ -279,6 +280,71 @@ def _check_top(data: dict[str, Any]) -> None:
         _need(isinstance(items, list) and all(isinstance(f, dict) for f in items),
               f"failures.{gen}", "must be a list of failures")
     _need(isinstance(data.get("runs", {}), dict), "runs", "must map seeds to folders")
+    _check_consistent(data)
+
+
+#: metrics stored as fractions in [0, 1] (shown as percentages), with everything nested under them
+_RATES = frozenset({"logcov", "ld", "ji", "scevr", "faudr", "faudr_mut", "faudr_mut_by_class",
+                    "phypr", "plausibility.rate"})
+
+
+def _is_rate(path: tuple[str, ...]) -> bool:
+    return bool(path) and (path[0] in _RATES or ".".join(path[:2]) in _RATES)
+
+
+def _check_consistent(data: dict[str, Any]) -> None:
+    """Values a run cannot have produced: a rate outside [0, 1] (shown as 0-100 %), an interval
+    whose low end is above its high end, more failed than attempted environments, a row order
+    naming a row twice, a row it does not name, a task cell of a task it does not list (a row
+    it names without results is a lost generator, which `compare` reports)."""
+    rows: dict[str, Any] = data["results"]
+    order = data.get("generators")
+    if order is not None:
+        twice = sorted({g for g in order if order.count(g) > 1})
+        _need(not twice, "generators", f"names {shown(twice[0])} more than once" if twice else "")
+        unknown = [g for g in rows if g not in order]
+        _need(not unknown, f"results.{unknown[0] if unknown else ''}",
+              "is a row the file's `generators` does not list")
+    tasks = data.get("tasks")
+    for gen, cells in data.get("per_task", {}).items():
+        stray = [t for t in cells if tasks and t not in tasks]
+        _need(not stray, f"per_task.{gen}.{stray[0] if stray else ''}",
+              "is a task the file's `tasks` does not list")
+    for gen, values in rows.items():
+        _check_numbers(f"results.{gen}", values)
+    for section, depth in (("per_task", 2), ("per_task_seed", 3)):
+        stack: list[tuple[str, Any, int]] = [(section, data.get(section, {}), depth)]
+        while stack:
+            where, node, left = stack.pop()
+            if left:
+                stack += [(f"{where}.{k}", v, left - 1) for k, v in node.items()]
+            else:
+                _check_numbers(where, node)
+
+
+def _check_numbers(where: str, values: dict[str, Any]) -> None:
+    """Rates in [0, 1], intervals ordered, n_failed <= n_attempted in one row or cell."""
+    stack: list[tuple[tuple[str, ...], object]] = [((k,), v) for k, v in values.items()]
+    while stack:
+        path, v = stack.pop()
+        at = ".".join((where, *path))
+        if path[0] == "ci95":
+            if isinstance(v, dict):
+                stack += [((*path, k), x) for k, x in v.items()]
+            elif isinstance(v, list):
+                lo, hi = v
+                _need(lo <= hi, at, f"interval [{lo:.4g}, {hi:.4g}] has its low end above its high end")
+                _need(not _is_rate(path[1:]) or (lo >= 0 and hi <= 1), at,
+                      f"interval [{lo:.4g}, {hi:.4g}] of a rate is outside [0, 1] (0-100 %)")
+        elif isinstance(v, dict):
+            stack += [((*path, k), x) for k, x in v.items()]
+        elif _is_rate(path) and isinstance(v, int | float) and _is_number(v):
+            _need(0 <= v <= 1, at, f"rate {v:.4g} is outside [0, 1] (shown as {100 * v:.4g} %)")
+    failed, attempted = values.get("n_failed"), values.get("n_attempted")
+    if isinstance(failed, int | float) and isinstance(attempted, int | float) \
+            and _is_number(failed) and _is_number(attempted):
+        _need(failed <= attempted, f"{where}.n_failed",
+              f"{failed} failed environments are more than the {attempted} attempted")
 
 
 def _check_row(where: str, values: object) -> None:

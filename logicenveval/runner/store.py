@@ -17,7 +17,8 @@ from typing import Any
 from pydantic import ValidationError
 
 from logicenveval.atomic import atomic_write_text
-from logicenveval.errors import RunStoreError
+from logicenveval.errors import LogicEnvEvalError, RunStoreError
+from logicenveval.limits import read_bytes
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.paths import child, safe_relative
 
@@ -69,8 +70,8 @@ class RunStore:
         except OSError:
             os.close(fd)
             other = ""
-            with contextlib.suppress(OSError, ValueError, RecursionError):
-                stored = json.loads((self.run_dir / "config.json").read_text(encoding="utf-8"))
+            with contextlib.suppress(LogicEnvEvalError, ValueError, RecursionError):
+                stored = json.loads(_run_file(self.run_dir / "config.json"))
                 other = " of the same configuration" if stored == identity else \
                     " of a different configuration"
             raise RunStoreError(
@@ -107,8 +108,8 @@ class RunStore:
                     )
                 return
         try:
-            stored = json.loads(path.read_text(encoding="utf-8"))
-        except (OSError, ValueError, RecursionError):
+            stored = json.loads(_run_file(path))
+        except (LogicEnvEvalError, ValueError, RecursionError):
             # never guess: units of an unknown configuration must not be reused
             raise RunStoreError(
                 "the run's config.json is unreadable, so its units cannot be trusted",
@@ -146,12 +147,12 @@ class RunStore:
         leaves the run folder (then it is recomputed)."""
         path = self.unit_path(generator, task_id)
         try:
-            blob = json.loads(path.read_text(encoding="utf-8"))
+            blob = json.loads(_run_file(path))
             payload = blob["unit"]
             if blob.get("sha256") != _digest(payload):
                 return None
             record = UnitRecord.model_validate(payload)
-        except (OSError, ValueError, KeyError, TypeError, ValidationError):
+        except (LogicEnvEvalError, ValueError, KeyError, TypeError, ValidationError):
             return None
         if record.generator != generator or record.task_id != task_id:
             return None
@@ -171,12 +172,19 @@ class RunStore:
             try:
                 if safe is None:
                     return False
-                data = (self.run_dir / safe).read_bytes()
-            except OSError:
+                data = _run_file(self.run_dir / safe)
+            except LogicEnvEvalError:
                 return False
             if hashlib.sha256(data).hexdigest() != digest:
                 return False
         return True
+
+
+def _run_file(path: Path) -> bytes:
+    """A file of the run folder, read like any untrusted file (`limits.read_bytes`): a FIFO or
+    device put in its place is refused, never waited on."""
+    return read_bytes(path, what=path.name, error=RunStoreError, max_bytes="max_run_file_bytes",
+                      hint="a run folder holds regular files only")
 
 
 def _create_exclusive(path: Path, text: str) -> bool:

@@ -37,12 +37,21 @@ from logicenveval.scene.procthor import (
 Seg = tuple[tuple[float, float], tuple[float, float]]
 
 
+#: largest magnitude of a coordinate, size or angle an export writes (a house is metres wide)
+MAX_MAGNITUDE = 1e6
+
+
 def check_exportable(env: EnvSpec, *, positions: bool) -> None:
     """Refuse what no house or scene can hold: a non-finite number anywhere in the geometry, a
-    room without a polygon, and (`positions`) an object without a position."""
+    number beyond `MAX_MAGNITUDE` (finite, but a GLB stores float32, where 1e300 is infinite, and
+    sums and products of it overflow), a room without a polygon, and (`positions`) an object
+    without a position."""
     def finite(values: tuple[float, ...] | list[float], where: str) -> None:
-        if not all(math.isfinite(v) for v in values):
-            raise EnvSpecError(f"non-finite number in {tuple(values)}", field=where,
+        bad = next((v for v in values if not math.isfinite(v) or abs(v) > MAX_MAGNITUDE), None)
+        if bad is not None:
+            what = "non-finite number" if not math.isfinite(bad) else \
+                f"number {bad:.3g} beyond +-{MAX_MAGNITUDE:g} (metres or degrees)"
+            raise EnvSpecError(f"{what} in the geometry", field=where,
                                hint="geometry is finite numbers in metres and degrees; fix or "
                                "re-generate the environment (`check-env` lists the problems)")
 

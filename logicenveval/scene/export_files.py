@@ -14,7 +14,8 @@ from pathlib import Path
 from logicenveval.atomic import RESOURCE_ERRNOS, atomic_write_bytes
 from logicenveval.domain.catalog import Catalog, load_catalog
 from logicenveval.envfiles import load_env
-from logicenveval.errors import ConfigError
+from logicenveval.errors import ConfigError, EnvSpecError, LogicEnvEvalError
+from logicenveval.limits import read_text
 from logicenveval.model.envspec import ENV_SCHEMA
 
 SUFFIX = {"procthor": ".house.json", "glb": ".glb"}
@@ -73,10 +74,13 @@ def export_run(run_dir: Path, formats: list[str], catalog: Catalog | None = None
 
 
 def _is_env(path: Path) -> bool:
-    """An EnvSpec file (the env folders also hold each unit's plan.json)."""
+    """An EnvSpec file (the env folders also hold each unit's plan.json); a file that is not
+    one — not JSON, not UTF-8, too big, a FIFO put there — is not exported, never a crash."""
     try:
-        return bool(json.loads(path.read_text(encoding="utf-8")).get("schema") == ENV_SCHEMA)
-    except (json.JSONDecodeError, AttributeError):
+        data = json.loads(read_text(path, what="environment file", error=EnvSpecError,
+                                    max_bytes="max_env_bytes", hint="not exported"))
+        return isinstance(data, dict) and data.get("schema") == ENV_SCHEMA
+    except (LogicEnvEvalError, ValueError, RecursionError):
         return False
 
 
