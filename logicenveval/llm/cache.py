@@ -186,16 +186,19 @@ class CachedModel:
         self.provider = provider
         self.stats = stats
         self.name = inner.name
+        #: the model's identity in the cache: `cache_name` when the inner model has one (a local
+        #: model file's name and content hash), else its name
+        self.cache_name: str = getattr(inner, "cache_name", None) or inner.name
 
     def complete(self, request: ChatRequest) -> str:
-        key = cache_key(self.provider, self.name, request)
+        key = cache_key(self.provider, self.cache_name, request)
         hit = self.cache.get(key)
         if hit is not None:
             self.stats.add(cache_hits=1)
             return hit
         self.stats.add(cache_misses=1)
         reply = self.inner.complete(request)
-        self.cache.put(key, self.provider, self.name, request.kind, reply)
+        self.cache.put(key, self.provider, self.cache_name, request.kind, reply)
         return reply
 
     def preflight(self) -> None:

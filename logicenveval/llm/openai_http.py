@@ -162,6 +162,9 @@ class OpenAIChatModel:
         if not model:
             raise ConfigError("missing model name", field="--model", hint="write openai:<model>")
         self.name = model
+        #: the model's identity in reply caches when it differs from `name` (llamacpp: the
+        #: file's stem and content hash)
+        self.cache_name: str | None = None
         self.base_url = check_base_url(base_url)
         self._shown_url = strip_url_credentials(self.base_url)
         self._api_key_env = api_key_env
