@@ -35,6 +35,12 @@ _PATTERNS: tuple[tuple[re.Pattern[str], str], ...] = (
 )
 
 
+def is_secret_name(name: str) -> bool:
+    """Whether an argument named `name` holds a credential (`api_key`, `x_auth_token`, not
+    `max_tokens` or `api_key_env`, which names a variable)."""
+    return re.fullmatch(rf"[A-Za-z0-9_-]*?(?:{_SECRET_NAMES})", name, re.I) is not None
+
+
 def register_secret(value: str | None) -> None:
     """Mask `value` in every text passed through `redact` in this process from now on."""
     if value and len(value) >= 4:

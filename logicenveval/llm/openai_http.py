@@ -93,10 +93,11 @@ def check_base_url(base_url: object) -> str:
 
 
 def bounded_get(client: httpx.Client, url: str, *, headers: dict[str, str] | None = None,
-                seconds: float = PROBE_SECONDS, cap: int = PROBE_BYTES) -> tuple[int, bytes]:
+                seconds: float | None = None, cap: int = PROBE_BYTES) -> tuple[int, bytes]:
     """GET `url`: its status and at most `cap` bytes of its body, all within `seconds` in total
     (a server dripping one byte a second, or sending 400 MB, cannot hold or flood the caller).
     Raises httpx.TimeoutException when the time runs out, ValueError when the body is larger."""
+    seconds = PROBE_SECONDS if seconds is None else seconds
     deadline = time.monotonic() + seconds
 
     def left() -> float:
@@ -331,7 +332,7 @@ class OpenAIChatModel:
             status, _ = bounded_get(self._client, f"{self.base_url}/models", headers=self._headers())
         except httpx.TimeoutException:
             raise ModelConnectionError(
-                f"{self._shown_url}/models sent no complete reply within {PROBE_SECONDS:g}s",
+                f"{self._shown_url}/models sent no complete reply in time (a slow or foreign server)",
                 hint="check that base_url names an OpenAI-compatible server that is up") from None
         except httpx.TransportError as exc:
             raise ModelConnectionError(
