@@ -148,17 +148,20 @@ def _probe(client: httpx.Client, url: str, deadline: float) -> tuple[int, bytes]
         return 0, b""
 
 
-def _served_model(client: httpx.Client, url: str, deadline: float) -> str:
-    """The model id `GET /v1/models` reports (llama-server: its `--alias`), "" if none."""
+def _served_models(client: httpx.Client, url: str, deadline: float) -> list[str]:
+    """The model names `GET /v1/models` reports: llama-server lists its `--alias` as the model
+    `id` (newer versions also under `aliases`); [] when there is no such answer."""
     import json
 
     status, body = _probe(client, url, deadline)
     if status != 200:
-        return ""
+        return []
     try:
-        return str(json.loads(body)["data"][0]["id"])[:200]
-    except (ValueError, KeyError, IndexError, TypeError, RecursionError):
-        return ""
+        entry = json.loads(body)["data"][0]
+        aliases = entry.get("aliases") if isinstance(entry.get("aliases"), list) else []
+        return [str(name)[:200] for name in [entry["id"], *aliases[:16]]]
+    except (ValueError, KeyError, IndexError, TypeError, AttributeError, RecursionError):
+        return []
 
 
 _DIGESTS: dict[tuple[str, int, int], str] = {}
@@ -273,13 +276,13 @@ class LlamaServer:
                     self.stop()
                     return f"it exited with code {code} while loading{self._log_tail()}"
                 if _probe(client, f"{root}/health", deadline)[0] == 200:
-                    served = _served_model(client, f"{root}/v1/models", deadline)
-                    if served == self.nonce and self.alive():
+                    served = _served_models(client, f"{root}/v1/models", deadline)
+                    if self.nonce in served and self.alive():
                         return ""
                     self.stop()
                     return (f"127.0.0.1:{self.port} is answered by another service, not the "
-                            f"llama-server we started (it names its model {served!r}, not our "
-                            f"nonce){self._log_tail()}")
+                            f"llama-server we started (its models {served[:3]!r} do not include "
+                            f"our nonce){self._log_tail()}")
                 time.sleep(0.25)
         self.stop()
         return (f"its health endpoint did not answer within {self.settings.startup_timeout:g}s"
