@@ -17,6 +17,15 @@ loader; the figure is the wall time until the clear error. The baseline is loadi
 benchmark policy and task, so a ratio near 1 means a hostile file costs no more than a normal one.
 Line: `worst_refusal_ms=<float> baseline_ms=<float> ratio=<float>`.
 
+Then the model-side cases of the third pass (issue 37, `llm_cases_round3`): a foreign service on
+the managed llama.cpp server's port, bad `server=` values, unparseable and 100 kB `base_url`s, a
+repeated model argument, replay packs that are a folder, an empty file or a table without a
+`reply` column, arguments replay cannot use, preflight `GET /models` replies that drip or weigh
+50 MB, a `--tasks` typo that must be reported before a server starts, deeply nested replies, and
+`noisy:llamacpp:` with two workers (one server). Each is a fresh CLI process against the stand-in
+servers of `tests/` and must give its documented exit code, no traceback, and leave its inputs as
+they were. Line: `llm_round3: cases=<int> failures=<int> worst_s=<float>`.
+
 Last, resource cases (issue 27) through the CLI, each in a fresh process (peak memory is the
 process's and its workers' maximum resident set, from `wait4`): a plug-in returning 10,001
 environments or a 50,000-object one, a generator that never returns (bounded by
@@ -179,6 +188,7 @@ def main() -> None:
             print(f"{name:<24} {path.stat().st_size:>12} {ms:>14.1f}")
     print(f"baseline (load one real task + policy): {baseline:.1f} ms")
     print(f"worst_refusal_ms={worst:.1f} baseline_ms={baseline:.1f} ratio={worst / baseline:.2f}")
+    llm_cases_round3()
     resources()
     io_cases()
 
@@ -433,6 +443,88 @@ def io_cases() -> None:
             print(f"{name[:44]:<44} {seconds:>8.2f} {code:>5} {'yes' if ok else 'NO':>3}  "
                   f"{(lines[-1] if lines else '')[:70]}")
     print(f"io: cases={len(cases)} failures={failures} worst_seconds={worst:.2f}")
+
+
+# ----- issue 37, model side: managed server, replay packs, model arguments -------------------------
+
+def llm_cases_round3() -> None:
+    """Each case: a fresh CLI process; (exit code, no traceback, inputs unchanged) as documented."""
+    import hashlib
+    import sqlite3
+
+    sys.path.insert(0, str(TESTS))
+    from loopback import Loopback
+
+    fake = TESTS / "data" / "fake_llama_server.py"
+    with tempfile.TemporaryDirectory() as tmp, Loopback() as other, \
+            Loopback(get_mode="drip", trickle_s=0.5) as drip, Loopback(get_mode="huge") as huge, \
+            Loopback(modes=["deep"]) as deep:
+        d = Path(tmp)
+        gguf = d / "model.gguf"
+        gguf.write_bytes(b"GGUF" + bytes(60))
+        empty = d / "empty.sqlite"
+        empty.touch()
+        cut = d / "cut.sqlite"
+        with contextlib.closing(sqlite3.connect(cut)) as conn:
+            conn.execute("CREATE TABLE replies (key TEXT, provider TEXT, model TEXT, kind TEXT)")
+            conn.commit()
+        pack = d / "pack.sqlite"
+        shutil.copy(Path(__file__).resolve().parents[1] / "reports" / "real" / "stability" / "llm_cache.sqlite",
+                    pack)
+        inputs = {p: hashlib.sha256(p.read_bytes()).hexdigest() for p in (gguf, empty, cut, pack)}
+        starts = d / "starts.txt"
+        port = other.url.split(":")[2].split("/")[0]
+
+        def run(model: str, args: str, *extra: str, tasks: str = TASK, executor: str = "inprocess",
+                out: str = "out") -> list[str]:
+            return ["run", "--model", model, "--model-args", args, "--tasks", tasks, "--generators",
+                    "holodeck", "--executor", executor, "--output", str(d / out), "--quiet", *extra]
+
+        llama = f"llamacpp:{gguf}"
+        cases: dict[str, tuple[list[str], int]] = {
+            "foreign_service_on_port": (run(llama, f"server={fake},port={port}"), 2),
+            "server_123": (run(llama, "server=123"), 2),
+            "server_true": (run(llama, "server=true"), 2),
+            "base_url_two_ports": (run("openai:m", "base_url=http://h:1:2"), 2),
+            "base_url_100kB": (run("openai:m", "base_url=http://" + "a" * 100_000), 2),
+            "repeated_model_arg": (run("openai:m", "timeout=5,timeout=50"), 2),
+            "replay_a_folder": (run(f"replay:{d}", ""), 2),
+            "replay_empty_file": (run(f"replay:{empty}", ""), 2),
+            "replay_no_reply_column": (run(f"replay:{cut}", ""), 2),
+            "replay_with_timeout_arg": (run(f"replay:{pack}", "timeout=5"), 2),
+            "preflight_drip": (run("openai:m", f"base_url={drip.url}"), 2),
+            "preflight_50MB": (run("openai:m", f"base_url={huge.url}"), 2),
+            "tasks_typo_before_server": (run(llama, f"server={fake}", tasks="clean_livng_room"), 2),
+            "deeply_nested_replies": (run("openai:m", f"base_url={deep.url},max_retries=0", "--no-cache"), 1),
+            "noisy_llamacpp_2_workers": (run(f"noisy:llamacpp:{gguf}", f"server={fake},threads=1,rate=0.2",
+                                             "--workers", "2", executor="process", out="noisy"), 1),
+        }
+        os.environ["FAKE_LLAMA_STARTS"] = str(starts)
+        failures, worst = 0, 0.0
+        print(f"{'model-side case (issue 37)':<28} {'s':>6} {'exit':>5} {'ok':>3}  last line")
+        try:
+            for name, (argv, expected) in cases.items():
+                start = time.perf_counter()
+                proc = subprocess.run([sys.executable, "-m", "logicenveval", *argv], cwd=TESTS,
+                                      capture_output=True, text=True, timeout=600)
+                seconds = time.perf_counter() - start
+                worst = max(worst, seconds)
+                lines = [line for line in proc.stderr.splitlines() if line.strip()]
+                ok = proc.returncode == expected and "Traceback" not in proc.stdout + proc.stderr
+                if name == "tasks_typo_before_server":
+                    ok = ok and not starts.exists()
+                if name == "noisy_llamacpp_2_workers":
+                    ok = ok and len(starts.read_text().splitlines()) == 1
+                failures += not ok
+                print(f"{name:<28} {seconds:>6.2f} {proc.returncode:>5} {'yes' if ok else 'NO':>3}  "
+                      f"{(lines[-1] if lines else '')[:80]}")
+        finally:
+            os.environ.pop("FAKE_LLAMA_STARTS", None)
+        changed = [p.name for p, h in inputs.items() if hashlib.sha256(p.read_bytes()).hexdigest() != h]
+        failures += len(changed)
+        if changed:
+            print(f"inputs changed: {changed}")
+    print(f"llm_round3: cases={len(cases)} failures={failures} worst_s={worst:.2f}")
 
 
 if __name__ == "__main__":

@@ -14,15 +14,31 @@ MASK = "***"
 
 _known: set[str] = set()
 
+#: argument names whose value is a credential: the name must END in one of these words, so that
+#: `max_tokens=1000`, `api_key_env=OPENAI_API_KEY` (a variable's name) and a hint's `key=value`
+#: stay readable
+_SECRET_NAMES = (r"api[_-]?key|access[_-]?key|secret[_-]?key|private[_-]?key|token|secret|"
+                 r"password|passwd|credentials?")
+#: the value after an authorization scheme: holding a digit or punctuation, mixed case inside
+#: the word (base64) or long, so that ordinary prose ("the token budget", "basic household objects") is not taken for a credential
+_CREDENTIAL = r"(?=[A-Za-z0-9._~+/=-]{6,})(?=[A-Za-z._~+/=-]*[0-9._~+/=-]|[A-Za-z]*[a-z][A-Z]|[A-Za-z]{20,})[A-Za-z0-9._~+/=-]+"
+
 _PATTERNS: tuple[tuple[re.Pattern[str], str], ...] = (
-    (re.compile(r"(?i)\b(bearer|basic|token)\s+[A-Za-z0-9._~+/=-]{6,}"), rf"\1 {MASK}"),
+    (re.compile(r"(?i)\b(bearer)(\s+)[A-Za-z0-9._~+/=-]{6,}"), rf"\1\2{MASK}"),
+    (re.compile(rf"\b((?i:basic|token))(\s+){_CREDENTIAL}"), rf"\1\2{MASK}"),
     (re.compile(r"\bsk-[A-Za-z0-9_-]{6,}"), MASK),
     (re.compile(r"(?i)\b(authorization|x-api-key|api-key)(['\"]?\s*[:=]\s*['\"]?)[^'\",;\s}]+"),
      rf"\1\2{MASK}"),
-    (re.compile(r"(?i)\b([A-Za-z_]*(?:key|token|secret|password)[A-Za-z_]*)=(?!\*)([^,&\s'\"]+)"),
+    (re.compile(rf"(?i)\b([A-Za-z0-9_-]*?(?:{_SECRET_NAMES}))=(?!\*)([^,&\s'\"]+)"),
      rf"\1={MASK}"),
     (re.compile(r"(?i)\b([a-z][a-z0-9+.-]*://)[^/\s@:]+(?::[^/\s@]*)?@"), rf"\1{MASK}@"),
 )
+
+
+def is_secret_name(name: str) -> bool:
+    """Whether an argument named `name` holds a credential (`api_key`, `x_auth_token`, not
+    `max_tokens` or `api_key_env`, which names a variable)."""
+    return re.fullmatch(rf"[A-Za-z0-9_-]*?(?:{_SECRET_NAMES})", name, re.I) is not None
 
 
 def register_secret(value: str | None) -> None:

@@ -22,17 +22,24 @@ def messages_key(messages: list[dict[str, Any]]) -> str:
 class Loopback:
     """`modes` is cycled per POST: ok, fail (HTTP 500 echoing the request headers), hang,
     trickle (one byte per `trickle_s`), echo (a good reply followed by the request headers), huge
-    (a 3 MB reply)."""
+    (a 3 MB reply), badusage (a good reply whose `usage` is malformed, cycling through shapes),
+    deep (a reply whose content is JSON nested 100,000 deep), deepbody (the HTTP body itself nested
+    that deep). `get_mode` shapes every GET: ok, drip (one byte per `trickle_s` for a minute),
+    huge (a 50 MB body)."""
 
     def __init__(self, *, replies: dict[str, str] | None = None, modes: list[str] | None = None,
                  get_status: int = 200, echo: bool = False, hang_s: float = 6.0,
-                 trickle_s: float = 0.5) -> None:
+                 trickle_s: float = 0.5, get_mode: str = "ok") -> None:
         self.replies = replies or {}
         self.modes = itertools.cycle(modes or ["ok"])
         self.get_status = get_status
         self.echo = echo
         self.hang_s = hang_s
         self.trickle_s = trickle_s
+        self.get_mode = get_mode
+        self.gets = 0
+        self._usages = itertools.cycle(['"abc"', '{"prompt_tokens": "x", "completion_tokens": []}',
+                                        "[1, 2]", '{"prompt_tokens": 1e400}', "null"])
         self.posts = 0
         self.seen: list[str] = []
         self._lock = threading.Lock()
@@ -60,6 +67,28 @@ class Loopback:
                 self.wfile.write(body)
 
             def do_GET(self) -> None:
+                server.gets += 1
+                try:
+                    if server.get_mode == "drip":
+                        self.send_response(200)
+                        self.send_header("Content-Length", "100000")
+                        self.end_headers()
+                        for _ in range(int(60 / server.trickle_s)):
+                            if server._stop.wait(server.trickle_s):
+                                break
+                            self.wfile.write(b" ")
+                            self.wfile.flush()
+                        return
+                    if server.get_mode == "huge":
+                        self.send_response(200)
+                        self.send_header("Content-Length", str(50 * 2**20))
+                        self.end_headers()
+                        block = b" " * 2**20
+                        for _ in range(50):
+                            self.wfile.write(block)
+                        return
+                except (BrokenPipeError, ConnectionResetError):
+                    return
                 headers = json.dumps(dict(self.headers)) if server.echo else "{}"
                 self._send(server.get_status, f'{{"data": [], "headers": {headers}}}'.encode())
 
@@ -88,13 +117,19 @@ class Loopback:
                             self.wfile.flush()
                     elif mode == "huge":
                         self._send(200, b'{"choices": [{"message": {"content": "' + b"x" * 3_000_000 + b'"}}]}')
+                    elif mode == "deep":
+                        chat = {"choices": [{"message": {"content": "[" * 100_000 + "]" * 100_000}}]}
+                        self._send(200, json.dumps(chat).encode())
+                    elif mode == "deepbody":
+                        self._send(200, b"[" * 100_000 + b"]" * 100_000)
                     elif reply is None:
                         self._send(404, b'{"error": "no recorded reply for these messages"}')
                     else:
                         content = reply + ("\n\nrequest headers: " + headers if mode == "echo" else "")
-                        chat = {"choices": [{"message": {"role": "assistant", "content": content}}],
-                                "usage": {"prompt_tokens": 1, "completion_tokens": 1}}
-                        self._send(200, json.dumps(chat).encode())
+                        usage = next(server._usages) if mode == "badusage" else \
+                            '{"prompt_tokens": 1, "completion_tokens": 1}'
+                        chat = {"choices": [{"message": {"role": "assistant", "content": content}}]}
+                        self._send(200, (json.dumps(chat)[:-1] + f', "usage": {usage}}}').encode())
                 except (BrokenPipeError, ConnectionResetError):
                     pass  # the client gave up (its deadline): expected for hang/trickle
 

@@ -1,5 +1,8 @@
 """SQLite cache of LLM replies (WAL mode: many reader/writer processes of one pool).
 
+A replay pack is opened read-only (`mode=ro`, and `immutable=1` when it has no write-ahead log:
+no lock or side file is created), so replaying never changes its input, even on read-only storage.
+
 The key is a SHA-256 of the canonical JSON of (provider, model, kind, messages, schema,
 temperature, seed), so any change to a prompt template or schema is a miss, never a stale hit.
 """
@@ -10,8 +13,10 @@ import hashlib
 import json
 import os
 import sqlite3
+import stat
 import threading
 import time
+import urllib.parse
 from collections.abc import Callable
 from pathlib import Path
 from typing import TypeVar
@@ -28,6 +33,8 @@ CREATE TABLE IF NOT EXISTS replies (
   reply TEXT NOT NULL,
   created REAL NOT NULL
 )"""
+#: the columns a reply cache must have to serve replies
+COLUMNS = frozenset({"key", "provider", "model", "reply"})
 
 
 def cache_key(provider: str, model: str, request: ChatRequest) -> str:
@@ -85,20 +92,36 @@ class ReplyCache:
     writer), every connection waits for locks (`busy_timeout`), and what SQLite will not wait
     for is retried (`_retrying`), so concurrent workers never lose a reply or fail a unit."""
 
-    def __init__(self, path: str | Path, *, create: bool = True) -> None:
+    def __init__(self, path: str | Path, *, create: bool = True, read_only: bool = False) -> None:
         self.path = Path(path)
-        if not create and not self.path.exists():
-            raise ConfigError("cache file not found", file=str(self.path),
-                              hint="replay needs a cache written by an earlier run (--cache FILE)")
+        self.read_only = read_only
+        if not create or read_only:
+            try:
+                mode = self.path.stat().st_mode
+            except OSError:
+                raise ConfigError("cache file not found", file=str(self.path),
+                                  hint="replay needs a cache written by an earlier run (--cache FILE)") from None
+            if not stat.S_ISREG(mode):
+                raise ConfigError("not a reply cache: not a regular file", file=str(self.path),
+                                  hint="pass the llm_cache.sqlite file of a run, not its folder")
         self._local = threading.local()
 
-    def _conn(self) -> sqlite3.Connection:
-        conn: sqlite3.Connection | None = getattr(self._local, "conn", None)
-        if conn is None or getattr(self._local, "pid", None) != os.getpid():
+    def _open(self) -> sqlite3.Connection:
+        if not self.read_only:
             self.path.parent.mkdir(parents=True, exist_ok=True)
             conn = sqlite3.connect(self.path, timeout=BUSY_SECONDS, isolation_level=None)
             conn.execute(f"PRAGMA busy_timeout={int(BUSY_SECONDS * 1000)}")
             _retrying(lambda: _prepare(conn))
+            return conn
+        wal = self.path.with_name(self.path.name + "-wal")
+        query = "mode=ro" if wal.exists() and wal.stat().st_size else "mode=ro&immutable=1"
+        uri = f"file:{urllib.parse.quote(str(self.path.resolve()))}?{query}"
+        return sqlite3.connect(uri, uri=True, timeout=BUSY_SECONDS, isolation_level=None)
+
+    def _conn(self) -> sqlite3.Connection:
+        conn: sqlite3.Connection | None = getattr(self._local, "conn", None)
+        if conn is None or getattr(self._local, "pid", None) != os.getpid():
+            conn = self._open()
             self._local.conn, self._local.pid = conn, os.getpid()
         return conn
 
@@ -117,10 +140,23 @@ class ReplyCache:
     def __len__(self) -> int:
         return int(_retrying(lambda: self._conn().execute("SELECT COUNT(*) FROM replies").fetchone()[0]))
 
+    def models(self) -> list[tuple[str, str]]:
+        """The distinct (provider, model) pairs whose replies the cache holds."""
+        rows = _retrying(lambda: self._conn().execute(
+            "SELECT DISTINCT provider, model FROM replies").fetchall())
+        return sorted((str(p), str(m)) for p, m in rows)
+
     def check(self, *, writable: bool = True) -> None:
         """Fail before the first unit when the file cannot serve as a cache (it would fail all)."""
         try:
             conn = self._conn()
+            columns = {str(row[1]) for row in conn.execute("PRAGMA table_info(replies)")}
+            missing = sorted(COLUMNS - columns)
+            if missing:
+                self._local.conn = None
+                what = "no table `replies`" if not columns else f"no column {', '.join(missing)}"
+                raise ConfigError(f"not a reply cache: {what}", file=str(self.path),
+                                  hint="pass a cache written by a run (--cache FILE), or a new path")
             conn.execute("SELECT COUNT(*) FROM replies").fetchone()
             if writable:
                 conn.execute("BEGIN IMMEDIATE")
@@ -150,16 +186,19 @@ class CachedModel:
         self.provider = provider
         self.stats = stats
         self.name = inner.name
+        #: the model's identity in the cache: `cache_name` when the inner model has one (a local
+        #: model file's name and content hash), else its name
+        self.cache_name: str = getattr(inner, "cache_name", None) or inner.name
 
     def complete(self, request: ChatRequest) -> str:
-        key = cache_key(self.provider, self.name, request)
+        key = cache_key(self.provider, self.cache_name, request)
         hit = self.cache.get(key)
         if hit is not None:
             self.stats.add(cache_hits=1)
             return hit
         self.stats.add(cache_misses=1)
         reply = self.inner.complete(request)
-        self.cache.put(key, self.provider, self.name, request.kind, reply)
+        self.cache.put(key, self.provider, self.cache_name, request.kind, reply)
         return reply
 
     def preflight(self) -> None:

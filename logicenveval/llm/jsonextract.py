@@ -6,6 +6,9 @@ import json
 import re
 from typing import Any
 
+#: deepest nesting of a reply's JSON value: far above any schema's, far below the interpreter's
+#: recursion limit (a deeper reply raised RecursionError, an *internal* error kept on resume)
+MAX_DEPTH = 64
 _FENCE = re.compile(r"```(?:json|JSON)?\s*\n?(.*?)```", re.S)
 
 
@@ -39,6 +42,28 @@ def _balanced_spans(text: str) -> list[str]:
     return spans
 
 
+def _too_deep(text: str) -> bool:
+    """Whether the brackets of `text` (outside strings) nest deeper than MAX_DEPTH."""
+    depth, in_str, esc = 0, False, False
+    for ch in text:
+        if in_str:
+            if esc:
+                esc = False
+            elif ch == "\\":
+                esc = True
+            elif ch == '"':
+                in_str = False
+        elif ch == '"':
+            in_str = True
+        elif ch in "{[":
+            depth += 1
+            if depth > MAX_DEPTH:
+                return True
+        elif ch in "}]":
+            depth -= 1
+    return False
+
+
 def extract_json(reply: str) -> Any:
     """The first JSON object/array in `reply`: whole text, fenced block, then balanced span."""
     text = reply.strip()
@@ -47,6 +72,9 @@ def extract_json(reply: str) -> Any:
     for cand in candidates:
         if not cand or cand[0] not in "{[":
             continue
+        if _too_deep(cand):
+            raise JSONExtractionError(f"the reply's JSON nests deeper than {MAX_DEPTH} levels; "
+                                      "reply with the flat structure the schema asks for")
         try:
             return json.loads(cand)
         except json.JSONDecodeError as exc:

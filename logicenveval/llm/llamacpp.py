@@ -25,8 +25,11 @@ import atexit
 import contextlib
 import ctypes
 import ctypes.util
+import hashlib
 import importlib.util
 import os
+import re
+import secrets
 import shutil
 import signal
 import socket
@@ -121,6 +124,71 @@ def free_port() -> int:
         return int(sock.getsockname()[1])
 
 
+def _port_free(port: int) -> bool:
+    """Whether nothing listens on 127.0.0.1:`port` (a server we start there would not be the
+    one answering)."""
+    with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as sock:
+        try:
+            sock.bind(("127.0.0.1", port))
+        except OSError:
+            return False
+    return True
+
+
+def _probe(client: httpx.Client, url: str, deadline: float) -> tuple[int, bytes]:
+    """One bounded GET of the starting server (time and size capped); (0, b"") on no answer."""
+    from logicenveval.llm.openai_http import bounded_get
+
+    seconds = min(5.0, deadline - time.monotonic())
+    if seconds <= 0:
+        return 0, b""
+    try:
+        return bounded_get(client, url, seconds=seconds, cap=65536)
+    except (httpx.HTTPError, ValueError):
+        return 0, b""
+
+
+def _served_models(client: httpx.Client, url: str, deadline: float) -> list[str]:
+    """The model names `GET /v1/models` reports: llama-server lists its `--alias` as the model
+    `id` (newer versions also under `aliases`); [] when there is no such answer."""
+    import json
+
+    status, body = _probe(client, url, deadline)
+    if status != 200:
+        return []
+    try:
+        entry = json.loads(body)["data"][0]
+        aliases = entry.get("aliases") if isinstance(entry.get("aliases"), list) else []
+        return [str(name)[:200] for name in [entry["id"], *aliases[:16]]]
+    except (ValueError, KeyError, IndexError, TypeError, AttributeError, RecursionError):
+        return []
+
+
+_DIGESTS: dict[tuple[str, int, int], str] = {}
+_HEX64 = re.compile(r"[0-9a-f]{64}")
+
+
+def model_digest(file: Path) -> str:
+    """SHA-256 of a model file's content, computed once per process and file version (path,
+    size, mtime): two different files of one name never share cached replies."""
+    info = file.stat()
+    key = (str(file), info.st_size, info.st_mtime_ns)
+    digest = _DIGESTS.get(key)
+    if digest is None:
+        sha = hashlib.sha256()
+        with file.open("rb") as fh:
+            for block in iter(lambda: fh.read(1 << 20), b""):
+                sha.update(block)
+        digest = _DIGESTS[key] = sha.hexdigest()
+    return digest
+
+
+def cache_name(file: Path, digest: str) -> str:
+    """The model's name in reply caches: its stem (readable, independent of the folder) and
+    the start of its content hash (two files of one name are two models)."""
+    return f"{file.stem}@sha256:{digest[:16]}"
+
+
 _LIBC: Any = None
 if sys.platform.startswith("linux"):
     with contextlib.suppress(OSError):
@@ -136,16 +204,18 @@ def _die_with_parent() -> None:
 @dataclass(frozen=True)
 class ServerSettings:
     model: Path
-    binary: Path
+    binary: Path | None  # None when the model attaches to a server given by base_url
     ctx: int = 8192  # per slot: the server gets ctx * parallel (it splits its context over slots)
     threads: int = 0  # 0: half the machine's cores, at least one
     port: int = 0  # 0: a free port
     parallel: int = 1
     startup_timeout: float = 180.0
 
-    def command(self, port: int) -> list[str]:
+    def command(self, port: int, alias: str) -> list[str]:
+        """llama-server's command line; `alias` is the nonce the server reports as its model id
+        (`GET /v1/models`), by which we know that the server answering is the one we started."""
         threads = self.threads or max(1, (os.cpu_count() or 2) // 2)
-        return [str(self.binary), "--model", str(self.model), "--host", "127.0.0.1",
+        return [str(self.binary), "--model", str(self.model), "--alias", alias, "--host", "127.0.0.1",
                 "--port", str(port), "--ctx-size", str(self.ctx * self.parallel), "--threads", str(threads),
                 "--threads-batch", str(threads), "--parallel", str(self.parallel)]
 
@@ -158,12 +228,22 @@ class LlamaServer:
         self.log_path = log_path
         self.process: subprocess.Popen[bytes] | None = None
         self.port = 0
+        self.nonce = ""
 
     @property
     def base_url(self) -> str:
         return f"http://127.0.0.1:{self.port}/v1"
 
     def start(self) -> None:
+        if self.settings.binary is None:
+            raise ConfigError("no llama-server binary to start", field="--model-args server",
+                              hint=INSTALL_HINT)
+        if self.settings.port and not _port_free(self.settings.port):
+            raise ServerStartError(
+                f"port {self.settings.port} is already in use by another process",
+                file=str(self.settings.model), field="--model-args port",
+                hint="drop port= (a free port is chosen), choose another one, or attach to a "
+                "server you started with base_url=http://127.0.0.1:PORT/v1")
         attempts = 1 if self.settings.port else 3  # a free port can be taken between probe and bind
         last = ""
         for _ in range(attempts):
@@ -175,10 +255,11 @@ class LlamaServer:
                                hint="see the server log; a smaller ctx= or another model may help")
 
     def _start_once(self) -> str:
+        self.nonce = f"logicenveval-{secrets.token_hex(12)}"
         log = open(self.log_path, "ab") if self.log_path else subprocess.DEVNULL  # noqa: SIM115
         try:
             self.process = subprocess.Popen(
-                self.settings.command(self.port), stdin=subprocess.DEVNULL, stdout=log,
+                self.settings.command(self.port, self.nonce), stdin=subprocess.DEVNULL, stdout=log,
                 stderr=subprocess.STDOUT, start_new_session=True, preexec_fn=_die_with_parent)
         except OSError as exc:
             return f"cannot execute {self.settings.binary}: {exc.strerror or exc}"
@@ -187,15 +268,21 @@ class LlamaServer:
                 log.close()  # type: ignore[union-attr]  # the child holds its own descriptor
         _RUNNING.add(self)
         deadline = time.monotonic() + self.settings.startup_timeout
-        with httpx.Client(timeout=httpx.Timeout(5.0, connect=2.0)) as client:
+        root = f"http://127.0.0.1:{self.port}"
+        with httpx.Client() as client:
             while time.monotonic() < deadline:
-                code = self.process.poll()
+                code = self.process.poll() if self.process is not None else -1
                 if code is not None:
                     self.stop()
                     return f"it exited with code {code} while loading{self._log_tail()}"
-                with contextlib.suppress(httpx.HTTPError):
-                    if client.get(f"http://127.0.0.1:{self.port}/health").status_code == 200:
+                if _probe(client, f"{root}/health", deadline)[0] == 200:
+                    served = _served_models(client, f"{root}/v1/models", deadline)
+                    if self.nonce in served and self.alive():
                         return ""
+                    self.stop()
+                    return (f"127.0.0.1:{self.port} is answered by another service, not the "
+                            f"llama-server we started (its models {served[:3]!r} do not include "
+                            f"our nonce){self._log_tail()}")
                 time.sleep(0.25)
         self.stop()
         return (f"its health endpoint did not answer within {self.settings.startup_timeout:g}s"
@@ -237,8 +324,10 @@ def _stop_all() -> None:
         server.stop(grace=5.0)
 
 
-def _split_args(path: str, kwargs: dict[str, Any]) -> tuple[ServerSettings, dict[str, Any]]:
-    """Server settings from `--model-args`, and the remaining OpenAIChatModel arguments."""
+def _split_args(path: str, kwargs: dict[str, Any], *,
+                need_binary: bool = True) -> tuple[ServerSettings, dict[str, Any]]:
+    """Server settings from `--model-args`, and the remaining OpenAIChatModel arguments. The
+    binary is looked for only when a server is to be started (`need_binary`)."""
     from logicenveval.llm.openai_http import _number
 
     rest = {k: v for k, v in kwargs.items() if k not in SERVER_ARGS}
@@ -249,8 +338,12 @@ def _split_args(path: str, kwargs: dict[str, Any]) -> tuple[ServerSettings, dict
     if ints.get("port", 0) > 65535:
         raise ConfigError(f"port={ints['port']} is not a TCP port", field="--model-args port",
                           hint="use 0 (a free port) or 1024-65535")
+    server = kwargs.get("server")
+    if server is not None and (not isinstance(server, str) or not server.strip()):
+        raise ConfigError(f"server={server!r} is not a path", field="--model-args server",
+                          hint="write server=PATH/TO/llama-server")
     settings = ServerSettings(
-        model=model, binary=find_server_binary(kwargs.get("server")), **ints,
+        model=model, binary=find_server_binary(server) if need_binary else None, **ints,
         startup_timeout=_number("startup_timeout", kwargs.get("startup_timeout", 180.0), low=1.0))
     return settings, rest
 
@@ -276,17 +369,26 @@ def release(settings: ServerSettings) -> None:
 def make_llamacpp(path: str, *, stats: ModelStats, **kwargs: Any) -> Any:
     """The `llamacpp:PATH` chat model: an OpenAIChatModel on a managed local server.
 
-    With `base_url` (set by `serving()` for the units of a run) it attaches to that server;
-    without, it starts (or reuses) a server owned by this process."""
+    With `base_url` (set by `serving()` for the units of a run, or a server of your own) it
+    attaches to that server and needs no binary; without, it starts (or reuses) a server owned by
+    this process. `model_sha256` (set by `serving()`) spares each worker hashing the file again."""
     from logicenveval.llm.openai_http import OpenAIChatModel
 
     base_url = kwargs.pop("base_url", None)
-    settings, rest = _split_args(path, kwargs)
+    known = kwargs.pop("model_sha256", None)
+    settings, rest = _split_args(path, kwargs, need_binary=base_url is None)
+    if known is not None and not (isinstance(known, str) and _HEX64.fullmatch(known)):
+        raise ConfigError(f"model_sha256={known!r} is not a SHA-256 hex digest",
+                          field="--model-args model_sha256",
+                          hint="drop it: the run computes it from the model file")
+    digest = known or model_digest(settings.model)
     if base_url is None:
         base_url = acquire(settings).base_url
     rest.setdefault("timeout", _request_timeout(rest.get("unit_timeout")))
     rest.setdefault("concurrency", settings.parallel)
-    return OpenAIChatModel(settings.model.stem, base_url=base_url, stats=stats, **rest)
+    model = OpenAIChatModel(settings.model.stem, base_url=base_url, stats=stats, **rest)
+    model.cache_name = cache_name(settings.model, digest)
+    return model
 
 
 def _request_timeout(unit_budget: Any) -> float:
@@ -299,31 +401,38 @@ def _request_timeout(unit_budget: Any) -> float:
     return LOCAL_TIMEOUT
 
 
-def model_name(path: str) -> str:
-    """The name a `llamacpp:PATH` model has in caches and reports: the file's stem (not its
-    folder, so that a replay pack does not depend on where the file was)."""
-    return Path(path).stem
+def managed_path(spec: str) -> str | None:
+    """The model file of a spec served by a managed server (`llamacpp:P`, `noisy:llamacpp:P`)."""
+    provider, _, rest = spec.partition(":")
+    while provider == "noisy":
+        provider, _, rest = rest.partition(":")
+    return rest if provider == PROVIDER else None
 
 
 @contextlib.contextmanager
 def serving(spec: str, model_args: str, *, log_path: Path | None = None) -> Iterator[str]:
-    """For a run: start the server of a `llamacpp:` spec once, yield the model arguments the
-    units must use (with its `base_url`), stop it when the run ends, however it ends."""
-    from logicenveval.llm.registry import parse_model_args
+    """For a run: start the server of a `llamacpp:` spec (also under `noisy:`) once, yield the
+    model arguments the units must use (its `base_url` and the model file's hash), stop it when
+    the run ends, however it ends. The whole spec is checked first (every model argument, by
+    building the model against a placeholder URL), so a typo costs no server start."""
+    from logicenveval.llm.registry import make_model, parse_model_args
 
-    provider, _, path = spec.partition(":")
+    path = managed_path(spec)
     kwargs = parse_model_args(model_args)
-    if provider != PROVIDER or "base_url" in kwargs:
+    if path is None or "base_url" in kwargs:
         yield model_args
         return
     settings, _ = _split_args(path, kwargs)
+    extra = f"model_sha256={model_digest(settings.model)}"
+    check = ",".join(filter(None, [model_args.strip(), extra, "base_url=http://127.0.0.1:9/v1"]))
+    make_model(spec, check, no_cache=True)  # raises the ConfigError of a bad argument
     if log_path is not None:
         log_path.parent.mkdir(parents=True, exist_ok=True)
     server = LlamaServer(settings, log_path=log_path)
     server.start()
     restore = _stop_on_interrupt(server)
     try:
-        yield ",".join(filter(None, [model_args.strip(), f"base_url={server.base_url}"]))
+        yield ",".join(filter(None, [model_args.strip(), extra, f"base_url={server.base_url}"]))
     finally:
         restore()
         server.stop()

@@ -141,7 +141,7 @@ class NoisyModel:
             return reply
         try:
             data = json.loads(reply)
-        except ValueError:
+        except (ValueError, RecursionError):
             return reply
         if rng.random() < self.rate / 2:  # the reply's text itself is broken (a re-ask may mend it)
             name = "truncate" if rng.random() < 0.5 else "prose"

@@ -58,6 +58,76 @@ def _number(name: str, value: object, *, low: float, integer: bool = False) -> f
     return float(value)  # type: ignore[arg-type]
 
 
+#: longest base_url accepted (a URL is echoed in errors: a 100 kB one would flood them)
+MAX_URL_CHARS = 2048
+#: bytes of a preflight `GET /models` (or a server's health and identity) reply that are read
+PROBE_BYTES = 1_000_000
+#: total seconds of one such probe, however slowly the server drips its reply
+PROBE_SECONDS = 15.0
+
+
+def check_base_url(base_url: object) -> str:
+    """`base_url` without its trailing slash, refused with a ConfigError unless httpx can use it
+    (scheme http(s), a host, a port in range): `http://h:1:2` raised httpx.InvalidURL at the
+    first request."""
+    text = base_url if isinstance(base_url, str) else repr(base_url)
+    shown = redact(text if len(text) <= 80 else text[:77] + "...")
+    problem = ""
+    if not isinstance(base_url, str) or not base_url.startswith(("http://", "https://")):
+        problem = "is not an http(s) URL"
+    elif len(base_url) > MAX_URL_CHARS:
+        problem = f"is longer than {MAX_URL_CHARS} characters"
+    else:
+        try:
+            url = httpx.URL(base_url)
+            if not url.host:
+                problem = "has no host"
+            elif url.port is not None and not 0 < url.port < 65536:
+                problem = f"has port {url.port}, not a TCP port"
+        except (httpx.InvalidURL, ValueError, TypeError) as exc:
+            problem = f"does not parse ({redact(str(exc))[:120]})"
+    if problem:
+        raise ConfigError(f"base_url={shown!r} {problem}", field="--model-args base_url",
+                          hint="e.g. base_url=http://localhost:8000/v1")
+    return str(base_url).rstrip("/")
+
+
+def bounded_get(client: httpx.Client, url: str, *, headers: dict[str, str] | None = None,
+                seconds: float | None = None, cap: int = PROBE_BYTES) -> tuple[int, bytes]:
+    """GET `url`: its status and at most `cap` bytes of its body, all within `seconds` in total
+    (a server dripping one byte a second, or sending 400 MB, cannot hold or flood the caller).
+    Raises httpx.TimeoutException when the time runs out, ValueError when the body is larger."""
+    seconds = PROBE_SECONDS if seconds is None else seconds
+    deadline = time.monotonic() + seconds
+
+    def left() -> float:
+        remaining = deadline - time.monotonic()
+        if remaining <= 0:
+            raise httpx.ReadTimeout(f"no complete reply within {seconds:g}s")
+        return remaining
+
+    timeout = httpx.Timeout(min(10.0, left()), connect=min(5.0, left()))
+    with client.stream("GET", url, headers=headers, timeout=timeout) as response:
+        chunks: list[bytes] = []
+        size = 0
+        for chunk in response.iter_bytes():
+            size += len(chunk)
+            if size > cap:
+                raise ValueError(f"a reply larger than {cap} bytes")
+            chunks.append(chunk)
+            left()
+        return response.status_code, b"".join(chunks)
+
+
+def _count(usage: object, key: str) -> int:
+    """A token count of a reply's `usage`, 0 when the server sent none or nonsense (a malformed
+    `usage` is not the model's answer and must not fail the unit)."""
+    value = usage.get(key) if isinstance(usage, dict) else None
+    if isinstance(value, bool) or not isinstance(value, int | float) or not 0 <= value < 2**53:
+        return 0
+    return int(value)
+
+
 class _Deadline(Exception):
     """The total time of one request (or of the unit) ran out while a reply was arriving."""
 
@@ -93,10 +163,10 @@ class OpenAIChatModel:
         if not model:
             raise ConfigError("missing model name", field="--model", hint="write openai:<model>")
         self.name = model
-        if not isinstance(base_url, str) or not base_url.startswith(("http://", "https://")):
-            raise ConfigError(f"base_url={redact(str(base_url))!r} is not an http(s) URL",
-                              field="--model-args base_url", hint="e.g. base_url=http://localhost:8000/v1")
-        self.base_url = base_url.rstrip("/")
+        #: the model's identity in reply caches when it differs from `name` (llamacpp: the
+        #: file's stem and content hash)
+        self.cache_name: str | None = None
+        self.base_url = check_base_url(base_url)
         self._shown_url = strip_url_credentials(self.base_url)
         self._api_key_env = api_key_env
         self._key: str | None = None
@@ -240,34 +310,42 @@ class OpenAIChatModel:
             data = json.loads(response.text)
             choice = data["choices"][0]
             content = choice["message"]["content"]
-        except (ValueError, KeyError, IndexError, TypeError):
+            finish = choice.get("finish_reason")
+        except (ValueError, KeyError, IndexError, TypeError, AttributeError, RecursionError):
             raise ModelConnectionError(
                 f"{self._shown_url} answered a {kind!r} request without choices[0].message.content",
                 hint="is base_url an OpenAI-compatible /v1 endpoint?",
             ) from None
-        usage = data.get("usage") or {}
+        usage = data.get("usage")
         self.stats.add(
             requests=1,
             latency_s=latency,
-            prompt_tokens=int(usage.get("prompt_tokens") or 0),
-            completion_tokens=int(usage.get("completion_tokens") or 0),
+            prompt_tokens=_count(usage, "prompt_tokens"),
+            completion_tokens=_count(usage, "completion_tokens"),
         )
         text = redact(str(content or ""))  # a server echoing our headers must not leak the key
-        return text + TRUNCATION_MARK if choice.get("finish_reason") == "length" else text
+        return text + TRUNCATION_MARK if finish == "length" else text
 
     def preflight(self) -> None:
         """Fail fast on what would fail every unit: an unreachable endpoint or a refused key."""
         try:
-            response = self._client.get(f"{self.base_url}/models", headers=self._headers(),
-                                        timeout=httpx.Timeout(10.0, connect=5.0))
+            status, _ = bounded_get(self._client, f"{self.base_url}/models", headers=self._headers())
+        except httpx.TimeoutException:
+            raise ModelConnectionError(
+                f"{self._shown_url}/models sent no complete reply in time (a slow or foreign server)",
+                hint="check that base_url names an OpenAI-compatible server that is up") from None
         except httpx.TransportError as exc:
             raise ModelConnectionError(
                 f"cannot reach {self._shown_url} ({type(exc).__name__})",
                 hint="start the server or fix --model-args base_url=...",
             ) from None
-        if response.status_code in (401, 403):
+        except ValueError as exc:
             raise ModelConnectionError(
-                f"{self._shown_url} refused the credentials (HTTP {response.status_code})",
+                f"{self._shown_url}/models sent {exc}",
+                hint="check that base_url names an OpenAI-compatible server") from None
+        if status in (401, 403):
+            raise ModelConnectionError(
+                f"{self._shown_url} refused the credentials (HTTP {status})",
                 hint="check the key in the variable named by api_key_env"
                 if self._key else "the server needs a key: --model-args api_key_env=<VARIABLE>",
             )

@@ -7,12 +7,12 @@ dependency only matters for the provider that needs it.
 from __future__ import annotations
 
 import importlib
-import sqlite3
 from pathlib import Path
 from typing import Any
 
 from logicenveval.errors import ConfigError
 from logicenveval.llm.base import ChatModel, ModelStats
+from logicenveval.llm.cache import ReplyCache
 
 PROVIDERS: dict[str, str] = {
     "offline": "logicenveval.llm.offline:OfflineModel",
@@ -50,7 +50,11 @@ def parse_model_args(text: str | dict[str, Any] | None) -> dict[str, Any]:
         if not sep or not key.strip():
             raise ConfigError(f"model argument {item!r} is not key=value", field="--model-args",
                               hint="write key=value pairs separated by commas")
-        out[key.strip()] = _typed(value.strip())
+        key = key.strip()
+        if key in out:
+            raise ConfigError(f"model argument {key!r} is given twice", field=f"--model-args {key}",
+                              hint=f"give {key}= once (the last value would silently win)")
+        out[key] = _typed(value.strip())
     return out
 
 
@@ -72,23 +76,24 @@ def with_unit_budget(spec: str, args: str | dict[str, Any] | None,
     return kwargs
 
 
-def _replay_target(path: Path, wanted: str | None) -> tuple[str, str]:
-    if wanted:
-        provider, _, model = wanted.partition(":")
+#: the only model argument of `replay:` (the recorded run's arguments are in its replies)
+REPLAY_ARGS = frozenset({"replay_model"})
+
+
+def _replay_target(cache: ReplyCache, wanted: Any) -> tuple[str, str]:
+    if wanted is not None:
+        provider, sep, model = str(wanted).partition(":")
+        if not (isinstance(wanted, str) and sep and provider and model):
+            raise ConfigError(f"replay_model={wanted!r} is not <provider>:<model>",
+                              field="--model-args replay_model",
+                              hint="e.g. replay_model=llamacpp:SmolLM2-135M-Instruct.Q4_1")
         return provider, model
-    conn = sqlite3.connect(path)
-    try:
-        pairs = conn.execute("SELECT DISTINCT provider, model FROM replies").fetchall()
-    except sqlite3.DatabaseError:
-        raise ConfigError("not a reply cache", file=str(path),
-                          hint="pass a cache written with --cache FILE") from None
-    finally:
-        conn.close()
+    pairs = cache.models()
     if len(pairs) != 1:
-        raise ConfigError(f"the cache holds {len(pairs)} models", file=str(path),
+        raise ConfigError(f"the cache holds {len(pairs)} models", file=str(cache.path),
                           field="--model-args replay_model",
                           hint="choose one with replay_model=<provider>:<model>")
-    return str(pairs[0][0]), str(pairs[0][1])
+    return pairs[0]
 
 
 def make_model(
@@ -101,7 +106,7 @@ def make_model(
 ) -> ChatModel:
     """Build the model named by `spec` (`offline`, `oracle`, `openai:<model>`, `llamacpp:<gguf>`,
     `replay:<file>`, `noisy:<spec>`)."""
-    from logicenveval.llm.cache import CachedModel, ReplayModel, ReplyCache
+    from logicenveval.llm.cache import CachedModel, ReplayModel
 
     kwargs = parse_model_args(args)
     stats = ModelStats()
@@ -118,8 +123,15 @@ def make_model(
     elif provider == "replay":
         if not name:
             raise ConfigError("replay needs a cache file", field="--model", hint="write replay:<cache.sqlite>")
-        cache = ReplyCache(name, create=False)
-        target_provider, target_model = _replay_target(Path(name), kwargs.pop("replay_model", None))
+        unknown = sorted(set(kwargs) - REPLAY_ARGS)
+        if unknown:
+            raise ConfigError(f"replay takes no model argument {', '.join(unknown)}",
+                              field="--model-args",
+                              hint="replay answers from the recorded replies: pass only "
+                              "replay_model=<provider>:<model> (or nothing)")
+        cache = ReplyCache(name, read_only=True)
+        cache.check(writable=False)
+        target_provider, target_model = _replay_target(cache, kwargs.pop("replay_model", None))
         model = ReplayModel(cache, target_provider, target_model, stats)
     elif provider in PROVIDERS:
         module, attr = PROVIDERS[provider].split(":")

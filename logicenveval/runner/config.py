@@ -17,7 +17,7 @@ from pydantic import BaseModel, ConfigDict, Field, field_validator, model_valida
 
 from logicenveval.errors import ConfigError
 from logicenveval.model.repeats import repeated
-from logicenveval.redact import strip_url_credentials
+from logicenveval.redact import is_secret_name, strip_url_credentials
 from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
 
 #: a run id is one folder name inside --output: no separators, no leading dot
@@ -108,7 +108,7 @@ def _redact(model_args: str) -> str:
     parts = []
     for item in filter(None, (p.strip() for p in model_args.split(","))):
         key, _, value = item.partition("=")
-        if re.search(r"(key|token|secret|password)", key, re.I) and not key.endswith("_env"):
+        if is_secret_name(key.strip()):
             value = "***"
         parts.append(f"{key}={value}" if _ else key)
     return ",".join(parts)

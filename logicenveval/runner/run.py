@@ -107,24 +107,25 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
     one server for the whole run, stopped when the run ends however it ends (llm.llamacpp)."""
     from logicenveval.llm.llamacpp import serving
 
-    with serving(config.model, config.model_args,
-                 log_path=config.run_dir() / "llama-server.log") as model_args:
-        return _run(config, model_args, console=console, show_progress=show_progress)
-
-
-def _run(config: RunConfig, model_args: str, *, console: Console | None,
-         show_progress: bool) -> RunOutcome:
-    executor = make_executor(config.executor, config.workers)
-    warm_up = getattr(executor, "warm_up", None)
-    if callable(warm_up):
-        warm_up()  # workers' imports overlap the checks, preflight and resume scan below
-    refs = resolve_generators(config)
+    refs = resolve_generators(config)  # the whole spec, before a server starts (minutes)
     ids = _check(config)
     tasks = load_tasks(config.tasks_dir, ids)
     for task in tasks:  # before any unit: policy paths confined, situation count bounded
         for kind in POLICY_KINDS:
             policy_path(task, kind, config.tasks_dir)
         situation_count(task)
+    with serving(config.model, config.model_args,
+                 log_path=config.run_dir() / "llama-server.log") as model_args:
+        return _run(config, model_args, refs, ids, tasks, console=console,
+                    show_progress=show_progress)
+
+
+def _run(config: RunConfig, model_args: str, refs: list[GeneratorRef], ids: list[str],
+         tasks: list[Task], *, console: Console | None, show_progress: bool) -> RunOutcome:
+    executor = make_executor(config.executor, config.workers)
+    warm_up = getattr(executor, "warm_up", None)
+    if callable(warm_up):
+        warm_up()  # workers' imports overlap the preflight and resume scan below
     run_dir = config.run_dir()
     _prepare_dir(run_dir)
     _preflight(config, run_dir, model_args)

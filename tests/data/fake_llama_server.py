@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """A stand-in for llama.cpp's llama-server in process-management tests (no model, no network).
 
-Accepts llama-server's command line, listens on 127.0.0.1:--port, answers GET /health and POST
-/v1/chat/completions with the text in $FAKE_LLAMA_REPLY (default `{}`), and writes its pid to
-$FAKE_LLAMA_PIDFILE. $FAKE_LLAMA_EXIT=1 makes it exit at once (a server that cannot load);
+Accepts llama-server's command line, listens on 127.0.0.1:--port, answers GET /health, GET
+/v1/models (its `--alias` as the model id, as llama-server does) and POST /v1/chat/completions with the text in $FAKE_LLAMA_REPLY (default `{}`), and writes its pid to
+$FAKE_LLAMA_PIDFILE (and a line per start to $FAKE_LLAMA_STARTS). $FAKE_LLAMA_EXIT=1 makes it exit at once (a server that cannot load);
 $FAKE_LLAMA_DELAY=S makes each completion take S seconds; $FAKE_LLAMA_POSTS names a file that
 gets a line per completion request when it arrives (a test can wait until a unit is asking).
 """
@@ -17,10 +17,14 @@ from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--port", type=int, required=True)
+parser.add_argument("--alias", default="")
 args, _ = parser.parse_known_args()
 if os.environ.get("FAKE_LLAMA_EXIT"):
     print("error: failed to load model", file=sys.stderr)
     sys.exit(1)
+if os.environ.get("FAKE_LLAMA_STARTS"):
+    with open(os.environ["FAKE_LLAMA_STARTS"], "a") as fh:
+        fh.write(f"{os.getpid()}\n")
 if os.environ.get("FAKE_LLAMA_PIDFILE"):
     with open(os.environ["FAKE_LLAMA_PIDFILE"], "w") as fh:
         fh.write(str(os.getpid()))
@@ -36,7 +40,10 @@ class Handler(BaseHTTPRequestHandler):
         self.wfile.write(data)
 
     def do_GET(self) -> None:  # noqa: N802
-        self._send({"status": "ok"} if self.path == "/health" else {"data": []})
+        if self.path == "/health":
+            self._send({"status": "ok"})
+        else:
+            self._send({"object": "list", "data": [{"id": args.alias, "object": "model"}]})
 
     def do_POST(self) -> None:  # noqa: N802
         self.rfile.read(int(self.headers.get("Content-Length", 0)))
