@@ -350,3 +350,16 @@ def test_recorded_model_args_mask_credentials_only(tmp_path: Path) -> None:
 def test_a_hint_shows_key_value_unmasked(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     code, _, err = cli(capsys, *_run(tmp_path / "o", "offline", "nonsense"))
     assert code == 2 and "key=value" in err and "key=***" not in err
+
+
+def test_a_fifo_as_the_server_log_is_refused_without_hanging(gguf: Path, tmp_path: Path) -> None:
+    out = tmp_path / "o"
+    (out / "fifo-log").mkdir(parents=True)
+    os.mkfifo(out / "fifo-log" / "llama-server.log")
+    proc = subprocess.run([sys.executable, "-m", "logicenveval",
+                           *_run(out, f"llamacpp:{gguf}", f"server={FAKE},threads=1"),
+                           "--run-id", "fifo-log"], capture_output=True, text=True, timeout=120,
+                          env={**os.environ, "PYTHONPATH": str(REPO)})
+    assert proc.returncode == 2, proc.stderr
+    assert "FIFO" in proc.stderr and "Traceback" not in proc.stderr
+    assert (out / "fifo-log" / "llama-server.log").is_fifo()

@@ -44,6 +44,7 @@ from typing import Any
 
 import httpx
 
+from logicenveval.atomic import check_output
 from logicenveval.errors import ConfigError, ServerStartError
 from logicenveval.llm.base import ModelStats
 
@@ -256,6 +257,8 @@ class LlamaServer:
 
     def _start_once(self) -> str:
         self.nonce = f"logicenveval-{secrets.token_hex(12)}"
+        if self.log_path:
+            check_output(self.log_path)  # a FIFO or device in its place would hang or be clobbered
         log = open(self.log_path, "ab") if self.log_path else subprocess.DEVNULL  # noqa: SIM115
         try:
             self.process = subprocess.Popen(
