@@ -175,10 +175,15 @@ def test_in_a_multi_seed_run_a_failure_is_matched_to_its_own_seeds_environments(
 
 def test_trace_lines_become_tick_rows_and_slugs_are_safe() -> None:
     lines = ["{'tick': 1, 'node': 'Walk', 'path': 'R/Sequence/Walk[0]', 'status': 'RUNNING'}",
+             "{'tick': 2, 'node': 'Walk', 'path': 'R/Sequence/Walk[0]', 'status': 'SUCCESS', "
+             "'ports': 'target=kitchen'}",
+             "{'tick': 3, 'node': 'Pick', 'path': 'R/Sequence/Pick[1]', 'status': 'violation', "
+             "'detail': \"not 'near'\", 'ports': 'obj=cup_1'}",
              "__import__('os').system('x')", "plain text"]
     got, other = trace_rows(lines)
-    assert [(r.tick, r.node, r.status) for r in got] == [("1", "Walk", "RUNNING")]
-    assert other == lines[1:]
+    assert [(r.tick, r.node, r.status) for r in got] == [
+        ("1", "Walk", "RUNNING"), ("2", "Walk target=kitchen", "SUCCESS"), ("3", "Pick obj=cup_1", "violation")]
+    assert other == lines[3:]
     assert slug("logicenvgen-exact") == "logicenvgen-exact"
     for bad in ("../x", "/abs", "a b", "", ".."):
         s = slug(bad)

@@ -56,6 +56,13 @@ def test_passed_and_one_tick_per_action() -> None:
     assert v.final_state["roles"]["toy"]["container"] == "box_1"
 
 
+def test_trace_shows_the_ports_a_node_ran_with() -> None:
+    v = run(f"<Sequence>{TIDY}</Sequence>", trace=True)
+    assert [e.get("ports") for e in v.trace if e["node"] == "Walk" and e["status"] == "SUCCESS"] \
+        == ["target=toy", "target=box"]
+    assert all("ports" not in e for e in v.trace if e["node"] == "Sequence")
+
+
 def test_precondition_violation_names_node_and_path() -> None:
     v = run('<Sequence><Walk target="box"/><PutIn obj="toy" target="box"/></Sequence>')
     assert v.status == "precondition_violation" and v.fault_node == "PutIn"

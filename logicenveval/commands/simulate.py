@@ -112,6 +112,7 @@ def _print(verdict: object, policy: str, env_id: str) -> None:
     if verdict.trace:
         table = Table("tick", "node", "status", "path / detail")
         for ev in verdict.trace:
-            table.add_row(str(ev["tick"]), str(ev["node"]), str(ev["status"]),
+            table.add_row(str(ev["tick"]), " ".join(str(x) for x in (ev["node"], ev.get("ports")) if x),
+                          str(ev["status"]),
                           str(ev.get("detail") or ev["path"]))
         console.print(table)

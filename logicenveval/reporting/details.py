@@ -212,7 +212,12 @@ class TickRow:
 
 #: the form the simulator's trace entries are recorded in (`str` of a dict, keys in this order)
 _TRACE_LINE = re.compile(r"\{'tick': (\d+), 'node': '([^'\\]*)', 'path': '([^'\\]*)', "
-                         r"'status': '([A-Z_]+)'\}")
+                         r"'status': '([A-Z_]+)'(?:, 'ports': '([^'\\]*)')?\}")
+
+
+def _with_ports(node: str, ports: str | None) -> str:
+    """`Walk target=kitchen`: the node with the port values it ran with (older traces: the node)."""
+    return f"{node} {ports}" if ports else node
 
 
 def trace_rows(lines: Sequence[str]) -> tuple[list[TickRow], list[str]]:
@@ -228,7 +233,7 @@ def trace_rows(lines: Sequence[str]) -> tuple[list[TickRow], list[str]]:
         text = line.strip()
         plain = _TRACE_LINE.fullmatch(text)
         if plain is not None:
-            rows.append(TickRow(plain[1], plain[2], plain[4], plain[3]))
+            rows.append(TickRow(plain[1], _with_ports(plain[2], plain[5]), plain[4], plain[3]))
             continue
         entry: object = None
         if text.startswith("{") and len(text) <= _MAX_TRACE_LINE:
@@ -237,8 +242,9 @@ def trace_rows(lines: Sequence[str]) -> tuple[list[TickRow], list[str]]:
             except (ValueError, SyntaxError, MemoryError, RecursionError, TypeError):
                 entry = None
         if isinstance(entry, dict) and {"tick", "node", "status"} <= set(entry):
-            rows.append(TickRow(str(entry["tick"]), str(entry["node"]), str(entry["status"]),
-                                str(entry.get("path", ""))))
+            ports = entry.get("ports")
+            rows.append(TickRow(str(entry["tick"]), _with_ports(str(entry["node"]), ports and str(ports)),
+                                str(entry["status"]), str(entry.get("path", ""))))
         else:
             other.append(line)
     return rows, other

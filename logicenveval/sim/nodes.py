@@ -81,10 +81,13 @@ class BTNode(py_trees.behaviour.Behaviour):
     path: str
     binding: Binding
     tree_id: str | None
+    ports: str
 
     def setup_bt(self, p: PolicyNode, path: str, binding: Binding) -> None:
         self.kind, self.params, self.bt_name = p.kind, p.params, p.name
         self.path, self.binding, self.tree_id = path, binding, None
+        #: the ports a trace shows beside the node (`target=kitchen`): what the node acted on
+        self.ports = " ".join(f"{k}={v}" for k, v in p.params) if p.kind != "SubTree" else ""
 
     @property
     def label(self) -> str:
@@ -124,6 +127,8 @@ def _reset(node: py_trees.behaviour.Behaviour) -> None:
 def _event(ep: Episode, node: BTNode, status: str, detail: str | None = None) -> dict[str, Any]:
     ev: dict[str, Any] = {"tick": ep.tick, "node": node.bt_name or node.kind, "path": node.path,
                           "status": status}
+    if node.ports:
+        ev["ports"] = node.ports
     if detail is not None:
         ev["detail"] = detail
     return ev
