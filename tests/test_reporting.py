@@ -103,6 +103,20 @@ def test_model_reply_validity_is_shown_when_recorded() -> None:
     assert line.endswith("questions asked): cot: 95.0 % / 100.0 % of 40")  # the damaged entry is left out
 
 
+def test_generator_args_tell_two_otherwise_equal_runs_apart() -> None:
+    from logicenveval.reporting.merged import merged_markdown
+
+    a, b = _reference(), _reference()
+    a["config"]["generator_args"] = {"cot": {"n_envs": 3, "strict": True}}
+    # keyed by the `--generators` item as written, which is not the row's name
+    b["config"]["generators"] = ["my_pkg.gen:Cot" if g == "cot" else g for g in b["generators"]]
+    b["config"]["generator_args"] = {"my_pkg.gen:Cot": {"n_envs": 5}}
+    assert "| cot (n_envs=3, strict=true) |" in markdown(a)
+    assert "| cot (n_envs=5) |" in markdown(b) and "| holodeck |" in markdown(b)
+    merged = merged_markdown([(Path("gridA"), a), (Path("gridB"), b)])
+    assert "cot (n_envs=3, strict=true) |" in merged and "cot (n_envs=5) |" in merged
+
+
 def test_markdown_cells_cannot_break_the_table() -> None:
     ref = _reference()
     ref["results"] = {"a|b\nc": ref["results"]["cot"]}
