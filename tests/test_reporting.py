@@ -152,6 +152,23 @@ def test_reasons_group_by_shape_and_keep_the_first_example() -> None:
     assert "2 × rejected: ill-formed" in text and "t/e0: role white_box" in text
 
 
+def test_extra_check_failures_are_reasons_not_a_clean_bill() -> None:
+    """An environment that passes PhyPR but fails an extra check (the leaderboard's Extra checks
+    below 100) is listed, not summed up as "none rejected ... physically implausible"."""
+    samples = [{"generator": "g", "task_id": "t", "env_id": f"e{i}", "well_formed": True, "problems": [],
+                "verdicts": {"correct": "passed"},
+                "physics": {"failures": [], "extended_failures": [
+                    {"dimension": "entity", "code": "blocks_door", "message": f"towel stands in door d{i}'s swing"}]}}
+               for i in range(2)]
+    (g,) = reasons(samples, {}, ["g"])
+    assert not g.clean and (g.n_rejected, g.n_physics, g.n_extra) == (0, 0, 2)
+    (r,) = g.reasons
+    assert (r.label, r.count, r.example) == ("extra check: blocks_door", 2, "towel stands in door d0's swing")
+    text = summary_text([g])
+    assert "none rejected" not in text and "2 failing extra checks" in text
+    assert "2 × extra check: blocks_door — t/e0" in text
+
+
 def test_a_stage_failure_of_a_returned_environment_is_no_failed_attempt() -> None:
     """A layout that misses its claimed trajectory is logged as a construct failure, yet the
     environment is returned and scored: the summary must agree with results.json's n_failed."""
@@ -371,3 +388,67 @@ def test_report_of_runs_has_a_run_column(run_dir: Path, tmp_path: Path, capsys: 
     html = (tmp_path / "leaderboard.html").read_text()
     assert 'href="details/run1/cot/clean_living_room.html' in html
     assert len(html) < 1_000_000
+
+
+# ----- filters find every word shown --------------------------------------------------------------
+
+_WORD = re.compile(r"[A-Za-z][\w-]*")
+
+
+def _text(fragment: str) -> str:
+    import html as html_lib
+
+    return html_lib.unescape(re.sub(r"<[^>]+>", " ", fragment))
+
+
+def _filters(page: str, tag: str, marker: str = "") -> list[tuple[str, str]]:
+    """(filter text, inner HTML) of each `tag` with a data-filter (and `marker`) on a page."""
+    import html as html_lib
+
+    return [(html_lib.unescape(m.group(1)).lower(), m.group(2)) for m in re.finditer(
+        rf'<{tag}\b[^>]*{marker}[^>]*data-filter="([^"]*)"[^>]*>(.*?)</{tag}>', page, re.S)]
+
+
+def _found(filter_text: str, typed: str) -> bool:
+    """The page's filter: every typed word is a substring of the element's filter text."""
+    return all(w in filter_text for w in typed.lower().split())
+
+
+@pytest.fixture(scope="module")
+def faulty_run(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """A run with every kind of reason: ill-formed, a failing correct BT, PhyPR codes, extra checks."""
+    out = tmp_path_factory.mktemp("faulty")
+    assert main(["run", "--model", "offline", "--tasks", "bathroom_towel_refresh", "--generators",
+                 "cot,holodeck", "--executor", "inprocess", "--quiet", "--output", str(out)]) == 0
+    return _only_dir(out)
+
+
+def test_the_filters_find_every_reason_word_and_code_shown(faulty_run: Path) -> None:
+    run_dir = faulty_run
+    page = (run_dir / "leaderboard.html").read_text()
+    rows = [f for f, _ in _filters(page, "tr", "data-count")]
+    reasons = _filters(page, "li")
+    assert rows and reasons and any("extra check" in f for f, _ in reasons)
+    typed_any = set()
+    for filter_text, inner in reasons:
+        shown = _text(inner).replace("e.g.", " ")
+        for word in _WORD.findall(shown):
+            typed_any.add(word.lower())
+            assert _found(filter_text, word), (word, filter_text)  # the reason stays listed
+            assert any(_found(r, word) for r in rows), word  # and the index finds its rows
+    assert {"interpenetration", "outside_room", "ill-formed", "blocks_door"} <= typed_any
+    # every code and verdict word the index shows finds the rows showing it
+    for word in ("missed", "detected", "entity", "fails", "valid"):
+        if word in page:
+            assert any(_found(r, word) for r in rows), word
+    # the detail pages: every word of a card's lists and tick tables is in the card's filter text
+    pages = sorted((run_dir / "details").rglob("*.html"))
+    nodes = 0
+    for path in pages:
+        for filter_text, inner in _filters(path.read_text(), "article", "data-count"):
+            parts = re.findall(r"<li>(.*?)</li>|<td>(.*?)</td>|<td title=[^>]*>(.*?)</td>", inner, re.S)
+            for part in parts:
+                for word in _WORD.findall(_text("".join(part))):
+                    assert _found(filter_text, word), (path.name, word)
+            nodes += "=" in filter_text
+    assert nodes  # port values (`target=...`) are searchable too

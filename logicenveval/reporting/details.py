@@ -35,6 +35,8 @@ _MAX_RENDER_BYTES = 2_000_000
 #: a trace line longer than this is shown as text, not parsed
 _MAX_TRACE_LINE = 4000
 _DIMENSIONS = ("floor_plan", "entity", "relation")
+#: the faulty kinds' short names in the index
+KIND_SHORT = {"counterfactual": "CF", "unreachable": "Unreach", "lackbranch": "LBranch"}
 _WHY_KEYS = frozenset({"generator", "task_id", "env_id", "well_formed", "problems", "verdicts", "physics"})
 
 
@@ -303,6 +305,19 @@ class EnvView:
     covered_paths: list[str]
     claimed: str
     verdicts: list[VerdictView]
+    #: the words of what is wrong (reasons as the "why" section names them, codes, messages,
+    #: object and room ids, verdicts): the index row's filter text
+    reasons_text: str = ""
+    #: the render and the environment file, relative to the report folder (None: absent)
+    render_href: str | None = None
+    env_href: str | None = None
+
+    @property
+    def search(self) -> str:
+        """The detail page's filter text: every word the environment's card shows."""
+        nodes = [f"{r.node} {r.status} {r.path}" for v in self.verdicts for r in v.rows]
+        return search_words(self.env_id, self.summary, self.reasons_text, self.claimed,
+                            *self.covered_paths, *nodes, *(x for v in self.verdicts for x in v.other))
 
     @property
     def summary(self) -> str:
@@ -337,6 +352,36 @@ def _verdicts(sample: Mapping[str, Any], detail: EnvDetail | None, valid: bool) 
     return out
 
 
+def search_words(*texts: str) -> str:
+    """One filter text of `texts`: each whitespace-separated word once, in lower case, in order of
+    first appearance (a page's filter matches typed words as substrings of this)."""
+    seen: dict[str, None] = {}
+    for text in texts:
+        for word in text.lower().split():
+            seen.setdefault(word, None)
+    return " ".join(seen)
+
+
+def _reasons_text(sample: Mapping[str, Any], verdicts: Sequence[VerdictView]) -> str:
+    from logicenveval.reporting.why import sample_reasons
+
+    physics = sample.get("physics") or {}
+    found = [f for key in ("failures", "extended_failures") for f in physics.get(key) or []
+             if isinstance(f, dict)]
+    return search_words(
+        *(f"{kind}: {key} {message}" for kind, key, message in sample_reasons(sample)),
+        *(str(p) for p in sample.get("problems") or []),
+        *(f"{f.get('dimension', '')} {f.get('code', '')} {f.get('message', '')} "
+          + " ".join(str(x) for x in [*(f.get("objects") or []), *(f.get("rooms") or [])])
+          for f in found),
+        *(f"{v.kind} {kind_short(v.kind)} {v.label} {v.status} {v.message}" for v in verdicts))
+
+
+def kind_short(kind: str) -> str:
+    """The faulty kinds' short names (index columns): CF, Unreach, LBranch; others as they are."""
+    return KIND_SHORT.get(kind, kind)
+
+
 def env_view(run_dir: Path, generator: str, task: str, sample: dict[str, Any],
              detail: EnvDetail | None, restore: bool = False) -> EnvView:
     physics = sample.get("physics") or {}
@@ -352,13 +397,14 @@ def env_view(run_dir: Path, generator: str, task: str, sample: dict[str, Any],
     claimed = sample.get("claimed_trajectory") or {}
     claim = " | ".join(f"{sub}: " + ", ".join(f"{k}={v}" for k, v in sorted(vals.items()))
                        for sub, vals in sorted(claimed.items()) if isinstance(vals, dict))
+    verdicts = _verdicts(sample, detail, valid)
     return EnvView(
         env_id=str(sample["env_id"]), anchor=env_anchor(str(sample["env_id"])),
         render=render_uri(run_dir, generator, task, sample, detail, restore),
         well_formed=bool(sample.get("well_formed")), valid=valid,
         problems=[str(p) for p in sample.get("problems") or []], physics=dims, extra=extra,
         covered_paths=[str(p) for p in sample.get("covered_paths") or []], claimed=claim,
-        verdicts=_verdicts(sample, detail, valid))
+        verdicts=verdicts, reasons_text=_reasons_text(sample, verdicts))
 
 
 @dataclass(frozen=True)
@@ -379,6 +425,21 @@ class TaskRow:
     @property
     def n_valid(self) -> int:
         return sum(e.valid for e in self.envs)
+
+    @property
+    def search(self) -> str:
+        """The index row's filter text: task, seed, each environment's id, summary and reasons,
+        the task's generation failures as the "why" section names them, what the row shows."""
+        from logicenveval.reporting.why import failure_reason
+
+        detected = [f"{k} {kind_short(k)} {'–' if d is None else ('detected' if d else 'missed')}"
+                    for k, d in self.detected.items()]
+        failed = [f"{'built short' if f.get('env_id') in {e.env_id for e in self.envs} else 'generation'}"
+                  f": {failure_reason(f)[0]} {failure_reason(f)[1]} {f.get('env_id') or ''}"
+                  for f in self.failures]
+        return search_words(self.generator, self.task, f"seed{self.seed}" if self.seed else "",
+                            "budget" if self.metrics.get("budget_hit") else "", *detected, *failed,
+                            *(f"{e.env_id} {e.summary} {e.reasons_text}" for e in self.envs))
 
     @property
     def n_physics(self) -> int:

@@ -22,8 +22,10 @@ from logicenveval.atomic import atomic_write_text
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.model.task import FAULTY_KINDS
 from logicenveval.reporting.details import (
+    KIND_SHORT,
     Source,
     TaskRow,
+    search_words,
     slug,
     sources,
 )
@@ -42,14 +44,11 @@ from logicenveval.reporting.tables import (
 )
 from logicenveval.reporting.why import GeneratorReasons, Where, reasons
 
-#: the faulty kinds' short names in the index
-_KIND_SHORT = {"counterfactual": "CF", "unreachable": "Unreach", "lackbranch": "LBranch"}
-
 
 def jinja() -> Environment:
     env = Environment(loader=PackageLoader("logicenveval", "reporting/templates"),
                       autoescape=select_autoescape(["html", "j2"]))
-    env.globals.update(kind_short=_KIND_SHORT, faulty_kinds=FAULTY_KINDS)
+    env.globals.update(kind_short=KIND_SHORT, faulty_kinds=FAULTY_KINDS)
     return env
 
 
@@ -123,6 +122,8 @@ class IndexRow:
     detected: dict[str, bool | None]
     budget_hit: bool
     envs: list[EnvLink]
+    #: the filter's text: every word the row and its environments' reasons show
+    filter: str = ""
 
 
 @dataclass
@@ -150,7 +151,8 @@ def _index_row(row: TaskRow, not_measured: set[str]) -> IndexRow:
         else (str(int(n_failed)) if n_failed else "0"),
         logcov="–" if logcov is None else f"{100 * float(logcov):.0f}",
         detected=row.detected, budget_hit=bool(m.get("budget_hit")),
-        envs=[EnvLink(e.env_id, f"{row.href}#{e.anchor}", e.summary, e.valid) for e in row.envs])
+        envs=[EnvLink(e.env_id, f"{row.href}#{e.anchor}", e.summary, e.valid) for e in row.envs],
+        filter=row.search)
 
 
 def write_details(out: Path, srcs: Sequence[Source], generators: Sequence[str],
@@ -195,12 +197,19 @@ def remove_stale(folder: Path, keep: set[Path]) -> None:
             Path(dirpath).rmdir()
 
 
-def table_rows(results: dict[str, Any], lead: Sequence[str] = (), scope: str = "") -> list[TableRow]:
+def why_text(g: GeneratorReasons) -> str:
+    """A generator's reasons as filter text: its table row is found by any reason it has."""
+    return search_words(*(f"{r.label} {r.where} {r.example}" for r in g.reasons))
+
+
+def table_rows(results: dict[str, Any], lead: Sequence[str] = (), scope: str = "",
+               why: Sequence[GeneratorReasons] = ()) -> list[TableRow]:
+    texts = {g.generator: why_text(g) for g in why}
     out = []
     for gen, values in results["results"].items():
         label = row_label(gen, values, results)
         out.append(TableRow([*lead, label], row_cells(results, gen), gen_anchor(gen, scope),
-                            f"#{gen_anchor(gen, scope)}", " ".join([*lead, label])))
+                            f"#{gen_anchor(gen, scope)}", search_words(*lead, label, texts.get(gen, ""))))
     return out
 
 
@@ -216,7 +225,7 @@ def render_main(results: dict[str, Any], collected: Collected, env: Environment)
                                           messages=collected.messages, scores=results["results"])
     top, sub = header_rows(["Method"])
     return env.get_template("leaderboard.html.j2").render(
-        results=results, top=top, sub=sub, rows=table_rows(results), legend=LEGEND,
+        results=results, top=top, sub=sub, rows=table_rows(results, why=why), legend=LEGEND,
         note=interval_note(results), why=why, hrefs=collected.hrefs,
         groups=group_rows(collected.rows), seeded=bool(results.get("runs")), llm=llm_validity(results))
 
@@ -227,7 +236,8 @@ def _rebase(got: Collected, sub: str, seed: str) -> Collected:
         return replace(e, href=f"{sub}/{e.href}")
 
     rows = [replace(r, href=f"{sub}/{r.href}", anchor=f"{r.anchor}--seed{slug(seed)}", seed=seed,
-                    envs=[env(e) for e in r.envs]) for r in got.rows]
+                    envs=[env(e) for e in r.envs], filter=search_words(r.filter, f"seed{seed}"))
+            for r in got.rows]
     def at(key: Where) -> Where:  # the seed run's own environments, named by their seed here
         return (*key[:3], seed)
 

@@ -103,10 +103,11 @@ def write_merged(run_dirs: Sequence[Path], out: Path) -> list[tuple[Path, dict[s
         got: Collected = write_details(out, srcs, list(results["results"]), env)
         written |= got.written
         lead = [label, str(results.get("model", "?")), _seeds(results)]
-        table += table_rows(results, lead, scope)
+        run_why = reasons(got.samples, results.get("failures", {}), messages=got.messages,
+                          scores=results["results"])
+        table += table_rows(results, lead, scope, run_why)
         groups += [{**grp, "run": label} for grp in group_rows(got.rows, scope)]
-        why += [(label, g, got.hrefs) for g in reasons(got.samples, results.get("failures", {}),
-                                                        messages=got.messages, scores=results["results"])]
+        why += [(label, g, got.hrefs) for g in run_why]
     remove_stale(out / "details", written)
     top, sub = header_rows([*LEAD, "Method"])
     html = env.get_template("merged.html.j2").render(
