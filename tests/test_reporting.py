@@ -354,11 +354,28 @@ def test_report_pages_show_why_and_stand_alone(run_dir: Path, tmp_path: Path) ->
     owner = next(s for s in samples if physics in s["physics"]["failures"])
     owner_page = (run_dir / "details" / "cot" / f"{owner['task_id']}.html").read_text()
     assert physics["message"].replace("'", "&#39;") in owner_page  # the message, not only a red label
-    # the report folder is self-contained: move it, drop renders/ and envs/, pages keep their images
+    # renders are linked (written once, under renders/), with the EnvSpec file; links are relative,
+    # so the run folder works moved whole
     moved = tmp_path / "moved"
-    shutil.copytree(run_dir / "details", moved / "details")
-    shutil.copy(run_dir / "leaderboard.html", moved / "leaderboard.html")
-    assert 'src="data:image/svg+xml;base64,' in (moved / "details" / "cot" / "clean_living_room.html").read_text()
+    shutil.copytree(run_dir, moved)
+    page_path = moved / "details" / "cot" / "clean_living_room.html"
+    moved_page = page_path.read_text()
+    assert "data:image" not in moved_page and 'src="../../renders/cot/clean_living_room/cot-00.svg"' in moved_page
+    assert 'href="../../envs/cot/clean_living_room/cot-00.json"' in moved_page
+    assert _broken_links(page_path) == []
+    # a render that is gone is re-drawn from the stored environment, written back once and linked
+    (moved / "renders" / "cot" / "clean_living_room" / "cot-00.svg").unlink()
+    assert main(["report", str(moved)]) == 0
+    assert (moved / "renders" / "cot" / "clean_living_room" / "cot-00.svg").read_text().startswith("<svg")
+    assert _broken_links(page_path) == []
+
+
+def _broken_links(page: Path) -> list[str]:
+    """The page's relative src/href targets (anchors and queries aside) that are not files."""
+    from urllib.parse import unquote
+
+    links = re.findall(r'(?:src|href)="([^"#?]+)[^"]*"', page.read_text())
+    return [x for x in links if "://" not in x and not (page.parent / unquote(x)).is_file()]
 
 
 def test_report_replaces_files_atomically(run_dir: Path, monkeypatch: pytest.MonkeyPatch,
@@ -388,6 +405,10 @@ def test_report_of_runs_has_a_run_column(run_dir: Path, tmp_path: Path, capsys: 
     html = (tmp_path / "leaderboard.html").read_text()
     assert 'href="details/run1/cot/clean_living_room.html' in html
     assert len(html) < 1_000_000
+    # the merged folder stands alone: each run's renders and environments are copied under files/
+    page = tmp_path / "details" / "run1" / "cot" / "clean_living_room.html"
+    assert 'src="../../../files/run1/renders/cot/clean_living_room/cot-00.svg"' in page.read_text()
+    assert _broken_links(page) == [] and _broken_links(tmp_path / "leaderboard.html") == []
 
 
 # ----- filters find every word shown --------------------------------------------------------------

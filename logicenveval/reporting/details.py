@@ -2,8 +2,8 @@
 
 A report's main page stays small: the table, the reasons and an index of (generator, task)
 rows. Each row links to one page `details/[<run>/][seed<S>/]<generator>/<task>.html` holding
-that task's environments: the top-down render (embedded as a data URI, so a page works copied
-anywhere), the problems that made it ill-formed, every physics finding with its message, the
+that task's environments: the top-down render (linked, not inlined: the unit wrote it once under
+`renders/`; click to open it full size) and a link to the EnvSpec JSON, the problems that made it ill-formed, every physics finding with its message, the
 covered decision paths and each BT's verdict with its tick trace as a table. Faulty BTs read
 "detected" / "missed": a faulty BT that passes is a fault the environment did not reveal.
 """
@@ -11,7 +11,6 @@ covered decision paths and each BT's verdict with its tick trace as a table. Fau
 from __future__ import annotations
 
 import ast
-import base64
 import functools
 import hashlib
 import html
@@ -23,14 +22,14 @@ from typing import Any
 
 from markupsafe import Markup
 
-from logicenveval.atomic import atomic_write_text
+from logicenveval.atomic import atomic_write_bytes, atomic_write_text
 from logicenveval.metrics.records import EnvDetail, UnitRecord
 from logicenveval.model.task import FAULTY_KINDS, POLICY_KINDS
 from logicenveval.runner.store import RunStore
 
 _NOT_RECORDED = "no trace recorded (the unit was written by a version that did not store traces)"
 _SAFE = re.compile(r"[A-Za-z0-9][A-Za-z0-9._-]{0,63}")
-#: a render bigger than this is not embedded (renders are a few kB; a hostile file is not)
+#: a render bigger than this is not copied into a merged report (renders are a few kB; a hostile file is not)
 _MAX_RENDER_BYTES = 2_000_000
 #: a trace line longer than this is shown as text, not parsed
 _MAX_TRACE_LINE = 4000
@@ -179,28 +178,85 @@ def _svg_from_env(run_dir: Path, generator: str, task: str, sample: Mapping[str,
     return render_svg(env, report)
 
 
-def render_uri(run_dir: Path, generator: str, task: str, sample: Mapping[str, Any],
-               detail: EnvDetail | None, restore: bool = False) -> str | None:
-    """The environment's top-down render as a `data:` URI, drawn afresh when the file is gone
-    (and written back to its place in the run folder with `restore`: renders are derived)."""
+#: an environment file bigger than this is not copied into a merged report (it is linked from
+#: its run folder only when the report is the run's own)
+_MAX_ENV_BYTES = 50_000_000
+
+
+@dataclass(frozen=True)
+class Assets:
+    """Where a source's renders and environment files are linked from.
+
+    A run's own report links the files in place (`renders/...`, `envs/...`: each written once,
+    by the unit); a report in another folder (`report RUN RUN --out DIR`) copies them to
+    `DIR/files/<prefix>` so that folder stands alone. `written` collects the copies."""
+
+    out: Path
+    source: Source
+    written: set[Path] = field(default_factory=set)
+
+    @property
+    def in_place(self) -> bool:
+        return self.source.run_dir.resolve() == self.out.resolve()
+
+    def place(self, rel: str, data: bytes | None) -> str | None:
+        """The href (relative to the report folder) of the run folder's file `rel`, copying it (or
+        `data`, when the file is gone) when the report lives elsewhere."""
+        src = _inside(self.source.run_dir, rel)
+        if src is None:
+            return None
+        if self.in_place:
+            return rel if src.is_file() else None
+        if data is None:
+            return None
+        dest = self.out / "files" / self.source.prefix / rel
+        if dest not in self.written:
+            dest.parent.mkdir(parents=True, exist_ok=True)
+            if not dest.is_file() or dest.read_bytes() != data:
+                atomic_write_bytes(dest, data, durable=False)
+            self.written.add(dest)
+        return dest.relative_to(self.out).as_posix()
+
+
+def _read(path: Path | None, limit: int) -> bytes | None:
+    if path is None or not path.is_file():
+        return None
+    try:
+        return path.read_bytes() if path.stat().st_size <= limit else None
+    except OSError:
+        return None
+
+
+def render_href(assets: Assets, generator: str, task: str, sample: Mapping[str, Any],
+                detail: EnvDetail | None) -> str | None:
+    """The environment's top-down render, linked (never inlined: it is written once, under
+    `renders/`), drawn afresh when the file is gone (and written back to its place in the run
+    folder with `restore`: renders are derived)."""
+    run_dir = assets.source.run_dir
     rel = detail.render if detail is not None and detail.render else \
         f"renders/{generator}/{task}/{sample['env_id']}.svg"
     path = _inside(run_dir, rel)
-    svg: bytes | None = None
-    if path is not None and path.suffix == ".svg" and path.is_file():
-        try:
-            if path.stat().st_size <= _MAX_RENDER_BYTES:
-                svg = path.read_bytes()
-        except OSError:
-            svg = None
-    if svg is None:
-        drawn = _svg_from_env(run_dir, generator, task, sample)
-        if drawn is None:
-            return None
-        svg = drawn.encode()
-        if restore and path is not None and path.suffix == ".svg":
-            atomic_write_text(path, drawn, durable=False)
-    return "data:image/svg+xml;base64," + base64.b64encode(svg).decode("ascii")
+    if path is None or path.suffix != ".svg":
+        return None
+    rel = path.relative_to(run_dir.resolve()).as_posix()
+    if path.is_file():
+        return rel if assets.in_place else assets.place(rel, _read(path, _MAX_RENDER_BYTES))
+    drawn = _svg_from_env(run_dir, generator, task, sample)
+    if drawn is None:
+        return None
+    if assets.source.restore:
+        atomic_write_text(path, drawn, durable=False)
+    return assets.place(rel, drawn.encode())
+
+
+def env_href(assets: Assets, generator: str, task: str, env_id: str) -> str | None:
+    """The environment's EnvSpec JSON, linked from its page (copied into a merged report)."""
+    rel = f"envs/{generator}/{task}/{env_id}.json"
+    path = _inside(assets.source.run_dir, rel)
+    if path is None:
+        return None
+    data = None if assets.in_place else _read(path, _MAX_ENV_BYTES)
+    return assets.place(path.relative_to(assets.source.run_dir.resolve()).as_posix(), data)
 
 
 @dataclass(frozen=True)
@@ -295,7 +351,6 @@ class VerdictView:
 class EnvView:
     env_id: str
     anchor: str
-    render: str | None
     well_formed: bool
     valid: bool
     problems: list[str]
@@ -309,8 +364,8 @@ class EnvView:
     #: object and room ids, verdicts): the index row's filter text
     reasons_text: str = ""
     #: the render and the environment file, relative to the report folder (None: absent)
-    render_href: str | None = None
-    env_href: str | None = None
+    render: str | None = None
+    env_file: str | None = None
 
     @property
     def search(self) -> str:
@@ -382,8 +437,8 @@ def kind_short(kind: str) -> str:
     return KIND_SHORT.get(kind, kind)
 
 
-def env_view(run_dir: Path, generator: str, task: str, sample: dict[str, Any],
-             detail: EnvDetail | None, restore: bool = False) -> EnvView:
+def env_view(assets: Assets, generator: str, task: str, sample: dict[str, Any],
+             detail: EnvDetail | None) -> EnvView:
     physics = sample.get("physics") or {}
     failures = [f for f in physics.get("failures") or [] if isinstance(f, dict)]
     dims = {d: [str(f.get("message") or f.get("code")) for f in failures if f.get("dimension") == d]
@@ -400,7 +455,8 @@ def env_view(run_dir: Path, generator: str, task: str, sample: dict[str, Any],
     verdicts = _verdicts(sample, detail, valid)
     return EnvView(
         env_id=str(sample["env_id"]), anchor=env_anchor(str(sample["env_id"])),
-        render=render_uri(run_dir, generator, task, sample, detail, restore),
+        render=render_href(assets, generator, task, sample, detail),
+        env_file=env_href(assets, generator, task, str(sample["env_id"])),
         well_formed=bool(sample.get("well_formed")), valid=valid,
         problems=[str(p) for p in sample.get("problems") or []], physics=dims, extra=extra,
         covered_paths=[str(p) for p in sample.get("covered_paths") or []], claimed=claim,
@@ -454,8 +510,10 @@ class TaskRow:
         return {k: any(v.kind == k and v.good for e in valid for v in e.verdicts) for k in FAULTY_KINDS}
 
 
-def task_rows(source: Source, generators: Sequence[str]) -> Iterator[TaskRow]:
-    """Every (generator, task) of a source with its environments, in results order."""
+def task_rows(source: Source, generators: Sequence[str], assets: Assets | None = None) -> Iterator[TaskRow]:
+    """Every (generator, task) of a source with its environments, in results order; `assets`
+    says where the report links renders and environment files from (default: in place)."""
+    assets = assets or Assets(source.run_dir, source)
     reader = UnitReader(source)
     per_task = source.results.get("per_task", {})
     failures = source.results.get("failures", {})
@@ -463,7 +521,7 @@ def task_rows(source: Source, generators: Sequence[str]) -> Iterator[TaskRow]:
     for gen in generators:
         for task in source.results.get("tasks", []):
             pairs = reader.envs(gen, task)
-            envs = [env_view(source.run_dir, gen, task, s, d, source.restore) for s, d in pairs]
+            envs = [env_view(assets, gen, task, s, d) for s, d in pairs]
             yield TaskRow(
                 generator=gen, task=task, seed=source.seed, anchor=task_anchor(gen, task, scope),
                 href=page_path(source, gen, task),

@@ -4,8 +4,9 @@ The main page holds the table (grouped, sticky header, sortable), the reasons en
 rejected or failed, a filter box and an index of every (generator, task) with anchors; each index
 row links to the task's page under `details/` (`reporting.details`), loaded only when opened. All
 of it was recorded by the units when they evaluated the environments (`UnitRecord.details`), so a
-report only reads: no physics check, no simulation, no solving. Renders are embedded in the
-pages, so the report folder works when moved or copied on its own.
+report only reads: no physics check, no simulation, no solving. Renders and environment files
+are linked where the run wrote them (relative links: the run folder works when moved or copied
+whole); a report written elsewhere copies them under `files/`.
 """
 
 from __future__ import annotations
@@ -158,17 +159,18 @@ def _index_row(row: TaskRow, not_measured: set[str]) -> IndexRow:
 def write_details(out: Path, srcs: Sequence[Source], generators: Sequence[str],
                   env: Environment) -> Collected:
     """Write every (generator, task) page of `srcs` under `out/details/`; return the index."""
-    from logicenveval.reporting.details import task_rows
+    from logicenveval.reporting.details import Assets, task_rows
 
     template = env.get_template("task.html.j2")
     got = Collected([], [], {}, {}, set())
     for source in srcs:
         results = source.results
-        for row in task_rows(source, [g for g in generators if g in results.get("results", {})]):
+        assets = Assets(out, source, got.written)
+        for row in task_rows(source, [g for g in generators if g in results.get("results", {})], assets):
             values = results["results"].get(row.generator, {})
             not_measured = set(values.get("not_measured_tasks") or ())
             up = "../" * row.href.count("/")
-            html = template.render(row=row, back=f"{up}leaderboard.html#{row.anchor}",
+            html = template.render(row=row, back=f"{up}leaderboard.html#{row.anchor}", up=up,
                                    run_id=results.get("run_id", ""), model=results.get("model", ""),
                                    measured=row.task not in not_measured and is_measured(values))
             path = out / row.href
@@ -185,11 +187,12 @@ def write_details(out: Path, srcs: Sequence[Source], generators: Sequence[str],
     return got
 
 
-def remove_stale(folder: Path, keep: set[Path]) -> None:
-    """Drop pages a previous report wrote that this one did not (a generator or task left)."""
+def remove_stale(folder: Path, keep: set[Path], pattern: str = "*.html") -> None:
+    """Drop pages (or copied files) a previous report wrote that this one did not (a generator
+    or task left)."""
     if not folder.is_dir():
         return
-    for path in sorted(folder.rglob("*.html")):
+    for path in sorted(p for p in folder.rglob(pattern) if p.is_file()):
         if path not in keep:
             path.unlink(missing_ok=True)
     for dirpath, _dirs, _files in sorted(os.walk(folder), key=lambda w: -len(w[0])):

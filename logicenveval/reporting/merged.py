@@ -3,7 +3,8 @@
 Runs of different models, generators or seeds are merged row by row with Run, Model and Seeds
 columns; rows are only comparable on the same tasks of the same benchmark version, so mixed task
 sets are refused with the runs that differ. Every run keeps its drill-down: its per-task pages
-are written under `DIR/details/run<k>/` (renders embedded), so the merged folder stands alone.
+are written under `DIR/details/run<k>/` and its renders and environment files copied under
+`DIR/files/run<k>/`, so the merged folder stands alone.
 """
 
 from __future__ import annotations
@@ -109,6 +110,7 @@ def write_merged(run_dirs: Sequence[Path], out: Path) -> list[tuple[Path, dict[s
         groups += [{**grp, "run": label} for grp in group_rows(got.rows, scope)]
         why += [(label, g, got.hrefs) for g in run_why]
     remove_stale(out / "details", written)
+    remove_stale(out / "files", written, "*")
     top, sub = header_rows([*LEAD, "Method"])
     html = env.get_template("merged.html.j2").render(
         top=top, sub=sub, rows=table, runs=[(label, str(d)) for label, (d, _) in zip(labels, runs, strict=True)],

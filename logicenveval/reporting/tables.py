@@ -106,8 +106,7 @@ def generator_args(results: dict[str, Any], generator: str) -> dict[str, Any]:
     """The `--generator-args` a row was made with (keyed in results.json's `config` by the item as
     written in `--generators`, or by the row's name), {} when none."""
     config = results.get("config")
-    given = config.get("generator_args") if isinstance(config, dict) else None
-    if not isinstance(given, dict):
+    if not isinstance(config, dict) or not isinstance(given := config.get("generator_args"), dict):
         return {}
     args = given.get(generator)
     if args is None:
