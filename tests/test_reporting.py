@@ -210,11 +210,13 @@ def test_trace_lines_become_tick_rows_and_slugs_are_safe() -> None:
              "'ports': 'target=kitchen'}",
              "{'tick': 3, 'node': 'Pick', 'path': 'R/Sequence/Pick[1]', 'status': 'violation', "
              "'detail': \"not 'near'\", 'ports': 'obj=cup_1'}",
+             "{'tick': 4, 'node': 'Walk', 'path': 'R/Sequence/Walk[0]', 'status': 'SUCCESS'}",
              "__import__('os').system('x')", "plain text"]
     got, other = trace_rows(lines)
     assert [(r.tick, r.node, r.status) for r in got] == [
-        ("1", "Walk", "RUNNING"), ("2", "Walk target=kitchen", "SUCCESS"), ("3", "Pick obj=cup_1", "violation")]
-    assert other == lines[3:]
+        ("1", "Walk", "RUNNING"), ("2", "Walk target=kitchen", "SUCCESS"), ("3", "Pick obj=cup_1", "violation"),
+        ("4", "Walk target=kitchen", "SUCCESS")]  # ports carried forward by path
+    assert other == lines[4:]
     assert slug("logicenvgen-exact") == "logicenvgen-exact"
     for bad in ("../x", "/abs", "a b", "", ".."):
         s = slug(bad)
@@ -462,14 +464,13 @@ def test_the_filters_find_every_reason_word_and_code_shown(faulty_run: Path) -> 
     for word in ("missed", "detected", "entity", "fails", "valid"):
         if word in page:
             assert any(_found(r, word) for r in rows), word
-    # the detail pages: every word of a card's lists and tick tables is in the card's filter text
+    # the detail pages: a card is searched by its filter text and its own text (data-text), which
+    # holds its lists and trace; codes that only the filter text carries are found too
     pages = sorted((run_dir / "details").rglob("*.html"))
-    nodes = 0
-    for path in pages:
-        for filter_text, inner in _filters(path.read_text(), "article", "data-count"):
-            parts = re.findall(r"<li>(.*?)</li>|<td>(.*?)</td>|<td title=[^>]*>(.*?)</td>", inner, re.S)
-            for part in parts:
-                for word in _WORD.findall(_text("".join(part))):
-                    assert _found(filter_text, word), (path.name, word)
-            nodes += "=" in filter_text
-    assert nodes  # port values (`target=...`) are searchable too
+    cards = [(f + " " + _text(inner).lower(), inner) for p in pages
+             for f, inner in _filters(p.read_text(), "article", "data-text")]
+    assert cards and len(cards) == sum(p.read_text().count("<article") for p in pages)
+    for code in ("interpenetration", "outside_room", "blocks_door", "ill-formed", "missed"):
+        assert any(_found(text, code) for text, _ in cards), code
+    nodes = sum(bool(re.search(r"<td>\w+ \w+=\w", inner)) for _, inner in cards)
+    assert nodes  # traces show port values (`Walk target=...`), searchable as the card's text

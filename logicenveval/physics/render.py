@@ -23,6 +23,7 @@ from logicenveval.physics.geometry import build_bodies, finite
 from logicenveval.physics.report import PhysicsReport
 
 _RED = "#d62728"
+_INK = "#333333"
 _RED_FILL = "#f7b6b6"
 
 
@@ -170,7 +171,7 @@ def _labels(shapes: list[_Shape], v: _View) -> list[_Label]:
     return out
 
 
-_STYLE = {"room": ("#f2f2f2", "#333333", 3), "object": ("#9ecae1", "#3182bd", 1),
+_STYLE = {"room": ("#f2f2f2", _INK, 3), "object": ("#9ecae1", "#3182bd", 1),
           "door": (None, "#8c564b", 6), "window": (None, "#17becf", 5)}
 
 
@@ -195,17 +196,17 @@ def _legend_marks(v: _View) -> list[_Mark]:
         for kind, text, x in row:
             if kind == "axes":  # an L: +x to the right, +z up
                 ox, oy = x + 4, y + 7
-                out += [_Mark("line", ((ox, oy), (ox + 22, oy)), stroke="#333333"),
-                        _Mark("line", ((ox + 17, oy - 3), (ox + 22, oy), (ox + 17, oy + 3)), stroke="#333333"),
-                        _Mark("text", ((ox + 25, oy),), fill="#333333", text="+x"),
-                        _Mark("line", ((ox, oy), (ox, oy - 16)), stroke="#333333"),
-                        _Mark("line", ((ox - 3, oy - 11), (ox, oy - 16), (ox + 3, oy - 11)), stroke="#333333"),
-                        _Mark("text", ((ox + 5, oy - 13),), fill="#333333", text="+z")]
+                out += [_Mark("line", ((ox, oy), (ox + 22, oy)), stroke=_INK),
+                        _Mark("line", ((ox + 17, oy - 3), (ox + 22, oy), (ox + 17, oy + 3)), stroke=_INK),
+                        _Mark("text", ((ox + 25, oy),), fill=_INK, text="+x"),
+                        _Mark("line", ((ox, oy), (ox, oy - 16)), stroke=_INK),
+                        _Mark("line", ((ox - 3, oy - 11), (ox, oy - 16), (ox + 3, oy - 11)), stroke=_INK),
+                        _Mark("text", ((ox + 5, oy - 13),), fill=_INK, text="+z")]
             elif kind == "scale":
-                out += [_Mark("line", ((x, y + 4), (x + v.scale, y + 4)), stroke="#333333", width=2),
-                        _Mark("line", ((x, y), (x, y + 8)), stroke="#333333"),
-                        _Mark("line", ((x + v.scale, y), (x + v.scale, y + 8)), stroke="#333333"),
-                        _Mark("text", ((x + v.scale / 2, y - 4),), fill="#333333", text=text, anchor="middle")]
+                out += [_Mark("line", ((x, y + 4), (x + v.scale, y + 4)), stroke=_INK, width=2),
+                        _Mark("line", ((x, y), (x, y + 8)), stroke=_INK),
+                        _Mark("line", ((x + v.scale, y), (x + v.scale, y + 8)), stroke=_INK),
+                        _Mark("text", ((x + v.scale / 2, y - 4),), fill=_INK, text=text, anchor="middle")]
             else:
                 box = ((x, y - 6), (x + _SWATCH, y + 6))
                 if kind == "failed":
@@ -216,21 +217,24 @@ def _legend_marks(v: _View) -> list[_Mark]:
                 else:
                     fill, stroke, _ = _STYLE[kind]
                     out.append(_Mark("rect", box, fill=fill, stroke=stroke, width=1))
-                out.append(_Mark("text", ((x + _SWATCH + 6, y),), fill="#333333", text=text))
+                out.append(_Mark("text", ((x + _SWATCH + 6, y),), fill=_INK, text=text))
     return out
 
 
 def _svg_mark(m: _Mark) -> str:
+    """One legend mark, inside a group that sets its defaults (no fill, dark stroke and text)."""
     if m.kind == "rect":
         (x0, y0), (x1, y1) = m.points
         return (f'<rect x="{x0:g}" y="{y0:g}" width="{x1 - x0:g}" height="{y1 - y0:g}" fill="{m.fill}" '
                 f'stroke="{m.stroke}" stroke-width="{m.width}"/>')
     if m.kind == "line":
         pts = " ".join(f"{x:g},{y:g}" for x, y in m.points)
-        return f'<polyline points="{pts}" fill="none" stroke="{m.stroke}" stroke-width="{m.width}"/>'
+        stroke = "" if m.stroke == _INK else f' stroke="{m.stroke}"'
+        width = "" if m.width == 1 else f' stroke-width="{m.width}"'
+        return f'<polyline points="{pts}"{stroke}{width}/>'
     (x, y), = m.points
-    return (f'<text x="{x:g}" y="{y:g}" font-size="11" text-anchor="{m.anchor}" dominant-baseline="middle" '
-            f'fill="{m.fill}">{escape(m.text)}</text>')
+    anchor = "" if m.anchor == "start" else f' text-anchor="{m.anchor}"'
+    return f'<text x="{x:g}" y="{y:g}"{anchor} fill="{m.fill}" stroke="none">{escape(m.text)}</text>'
 
 
 def render_svg(env: EnvSpec, report: PhysicsReport | None = None) -> str:
@@ -248,16 +252,19 @@ def render_svg(env: EnvSpec, report: PhysicsReport | None = None) -> str:
             out.append(f'<polygon points="{pts}" fill="{fill}" stroke="{stroke}" stroke-width="{width}"/>')
         else:
             out.append(f'<polyline points="{pts}" fill="none" stroke="{stroke}" stroke-width="{width}"/>')
-    for label in _labels(shapes, v):
-        if label.leader is not None:
-            lx, ly = label.leader
-            out.append(f'<line x1="{lx}" y1="{ly}" x2="{label.x}" y2="{label.y}" stroke="#9a9a9a" '
-                       'stroke-width="0.6"/>')
-        out.append(f'<text x="{label.x}" y="{label.y}" font-size="{label.size}" text-anchor="middle" '
-                   f'dominant-baseline="middle" fill="{label.color}" stroke="white" stroke-width="2.5" '
-                   f'paint-order="stroke">{escape(label.text)}</text>')
+    labels = _labels(shapes, v)
+    out += [f'<line x1="{lb.leader[0]}" y1="{lb.leader[1]}" x2="{lb.x}" y2="{lb.y}" stroke="#9a9a9a" '
+            'stroke-width="0.6"/>' for lb in labels if lb.leader is not None]
+    # labels share their look through a group (a render holds dozens of them)
+    out.append('<g text-anchor="middle" dominant-baseline="middle" stroke="white" stroke-width="2.5" '
+               'paint-order="stroke" font-size="10">')
+    for lb in labels:
+        size = "" if lb.size == 10 else f' font-size="{lb.size}"'
+        out.append(f'<text x="{lb.x}" y="{lb.y}"{size} fill="{lb.color}">{escape(lb.text)}</text>')
+    out.append("</g>")
+    out.append(f'<g fill="none" stroke="{_INK}" font-size="11" dominant-baseline="middle">')
     out += [_svg_mark(m) for m in _legend_marks(v)]
-    out.append("</svg>")
+    out += ["</g>", "</svg>"]
     return "\n".join(out) + "\n"
 
 

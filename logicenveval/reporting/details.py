@@ -281,17 +281,20 @@ def _with_ports(node: str, ports: str | None) -> str:
 def trace_rows(lines: Sequence[str]) -> tuple[list[TickRow], list[str]]:
     """Tick-table rows of a recorded trace, and the lines that are not tick entries (kept as text).
 
-    Traces hold one `{'tick': .., 'node': .., 'path': .., 'status': ..}` literal per line: the
-    common form is matched directly, others are read with `ast.literal_eval` (literals only,
-    never code).
+    Traces hold one `{'tick': .., 'node': .., 'path': .., 'status': ..}` literal per line, with
+    `'ports'` on a node's first line (carried forward to its later rows by path): the common form
+    is matched directly, others are read with `ast.literal_eval` (literals only, never code).
     """
     rows: list[TickRow] = []
     other: list[str] = []
+    ports: dict[str, str] = {}
     for line in lines:
         text = line.strip()
         plain = _TRACE_LINE.fullmatch(text)
         if plain is not None:
-            rows.append(TickRow(plain[1], _with_ports(plain[2], plain[5]), plain[4], plain[3]))
+            if plain[5]:
+                ports[plain[3]] = plain[5]
+            rows.append(TickRow(plain[1], _with_ports(plain[2], ports.get(plain[3])), plain[4], plain[3]))
             continue
         entry: object = None
         if text.startswith("{") and len(text) <= _MAX_TRACE_LINE:
@@ -300,9 +303,11 @@ def trace_rows(lines: Sequence[str]) -> tuple[list[TickRow], list[str]]:
             except (ValueError, SyntaxError, MemoryError, RecursionError, TypeError):
                 entry = None
         if isinstance(entry, dict) and {"tick", "node", "status"} <= set(entry):
-            ports = entry.get("ports")
-            rows.append(TickRow(str(entry["tick"]), _with_ports(str(entry["node"]), ports and str(ports)),
-                                str(entry["status"]), str(entry.get("path", ""))))
+            path = str(entry.get("path", ""))
+            if entry.get("ports"):
+                ports[path] = str(entry["ports"])
+            rows.append(TickRow(str(entry["tick"]), _with_ports(str(entry["node"]), ports.get(path)),
+                                str(entry["status"]), path))
         else:
             other.append(line)
     return rows, other
@@ -313,18 +318,19 @@ def _where(path: str) -> str:
     """The `where` cell of a tick row: the short path, the full one on hover (paths repeat a lot)."""
     parts = path.split("/")
     short = ("…/" if len(parts) > 3 else "") + "/".join(parts[-3:])
-    return f'<td title="{html.escape(path)}"><code>{html.escape(short)}</code></td>'
+    return f'<td title="{html.escape(path)}">{html.escape(short)}'
 
 
 def tick_table(rows: Sequence[TickRow]) -> Markup:
-    """The trace as an HTML table (built here, not in the template: a report holds ~60,000 rows)."""
+    """The trace as an HTML table (built here, not in the template: a report holds ~60,000 rows,
+    so cells leave out the end tags HTML lets them omit)."""
     if not rows:
         return Markup("")
     esc = html.escape
     out = ['<table class="ticks"><thead><tr><th>tick</th><th>node</th><th>status</th>'
            "<th>where</th></tr></thead><tbody>"]
-    out += [f'<tr class="st-{esc(r.status.lower())}"><td class="t">{esc(r.tick)}</td><td>{esc(r.node)}'
-            f"</td><td>{esc(r.status)}</td>{_where(r.path)}</tr>" for r in rows]
+    out += [f'<tr class="st-{esc(r.status.lower())}"><td>{esc(r.tick)}<td>{esc(r.node)}'
+            f"<td>{esc(r.status)}{_where(r.path)}" for r in rows]
     out.append("</tbody></table>")
     return Markup("\n".join(out))
 
@@ -369,10 +375,9 @@ class EnvView:
 
     @property
     def search(self) -> str:
-        """The detail page's filter text: every word the environment's card shows."""
-        nodes = [f"{r.node} {r.status} {r.path}" for v in self.verdicts for r in v.rows]
-        return search_words(self.env_id, self.summary, self.reasons_text, self.claimed,
-                            *self.covered_paths, *nodes, *(x for v in self.verdicts for x in v.other))
+        """The detail page's filter text beside the card's own text (which the page's filter reads
+        too): the reasons as the "why" section names them, codes, object and room ids."""
+        return search_words(self.env_id, self.summary, self.reasons_text)
 
     @property
     def summary(self) -> str:
