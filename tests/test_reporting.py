@@ -115,6 +115,10 @@ def test_generator_args_tell_two_otherwise_equal_runs_apart() -> None:
     assert "| cot (n_envs=5) |" in markdown(b) and "| holodeck |" in markdown(b)
     merged = merged_markdown([(Path("gridA"), a), (Path("gridB"), b)])
     assert "cot (n_envs=3, strict=true) |" in merged and "cot (n_envs=5) |" in merged
+    from logicenveval.reporting.leaderboard import table_rows
+
+    html_rows = {r.anchor: r for r in table_rows(b)}
+    assert html_rows["gen-cot"].lead == ["cot (n_envs=5)"] and "n_envs=5" in html_rows["gen-cot"].filter
 
 
 def test_markdown_cells_cannot_break_the_table() -> None:
