@@ -110,7 +110,8 @@ def write_merged(run_dirs: Sequence[Path], out: Path) -> list[tuple[Path, dict[s
         groups += [{**grp, "run": label} for grp in group_rows(got.rows, scope)]
         why += [(label, g, got.hrefs) for g in run_why]
     remove_stale(out / "details", written)
-    remove_stale(out / "files", written, "*")
+    for kind in ("*.svg", "*.json"):  # only what a report copies there (renders, environments)
+        remove_stale(out / "files", written, kind)
     top, sub = header_rows([*LEAD, "Method"])
     html = env.get_template("merged.html.j2").render(
         top=top, sub=sub, rows=table, runs=[(label, str(d)) for label, (d, _) in zip(labels, runs, strict=True)],
