@@ -125,6 +125,10 @@ def test_report_in_headless_chromium(tmp_path: Path) -> None:
             assert ticks.is_visible() and ticks.locator("tbody tr").count() > 1
             node = next(t for t in ticks.locator("tbody tr td:nth-child(2)").all_inner_texts() if "=" in t)
             assert re.fullmatch(r"\w+ \w+=\S+.*", node), node  # `Walk target=...`: ports shown
+            where = ticks.locator("tbody tr td:nth-child(4)").first
+            where.hover()  # the full tree path appears as the cell's title
+            full = where.get_attribute("title")
+            assert full and full.count("/") >= 1 and full.endswith(where.inner_text().removeprefix("…/"))
             page.screenshot(path=str(tmp_path / "task.png"))
             page.fill("#filter", node.split()[-1])
             assert card.is_visible()

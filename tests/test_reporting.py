@@ -477,4 +477,12 @@ def test_the_filters_find_every_reason_word_and_code_shown(faulty_run: Path) -> 
     for code in ("interpenetration", "outside_room", "blocks_door", "ill-formed", "missed"):
         assert any(_found(text, code) for text, _ in cards), code
     nodes = sum(bool(re.search(r"<td>\w+ \w+=\w", inner)) for _, inner in cards)
+    # a tick row's full tree path is the page's path list entry its number names (shown on hover)
+    for path in pages:
+        text = path.read_text()
+        listed = json.loads(re.search(r'<script type="application/json" id="tick-paths">(.*?)</script>',
+                                      text, re.S).group(1))  # type: ignore[union-attr]
+        for index, short in re.findall(r'<td data-p="(\d+)">([^<\n]*)', text):
+            full = listed[int(index)]
+            assert full.endswith(short.removeprefix("…/")) and full.count("/") >= short.count("/")
     assert nodes  # traces show port values (`Walk target=...`), searchable as the card's text

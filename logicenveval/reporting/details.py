@@ -314,23 +314,42 @@ def trace_rows(lines: Sequence[str]) -> tuple[list[TickRow], list[str]]:
 
 
 @functools.lru_cache(maxsize=4096)
-def _where(path: str) -> str:
-    """The `where` cell of a tick row: the short path, the full one on hover (paths repeat a lot)."""
+def _where(path: str, index: int) -> str:
+    """The `where` cell of a tick row: the short path; the full one (the page's `index`-th path,
+    listed once per page) is shown on hover. Rows repeat a few paths thousands of times."""
     parts = path.split("/")
     short = ("…/" if len(parts) > 3 else "") + "/".join(parts[-3:])
-    return f'<td title="{html.escape(path)}">{html.escape(short)}'
+    return f'<td data-p="{index}">{html.escape(short)}'
 
 
-def tick_table(rows: Sequence[TickRow]) -> Markup:
+def path_index(envs: Sequence[EnvView]) -> dict[str, int]:
+    """Every tree path the page's traces pass, numbered in order of first appearance."""
+    out: dict[str, int] = {}
+    for e in envs:
+        for v in e.verdicts:
+            for r in v.rows:
+                out.setdefault(r.path, len(out))
+    return out
+
+
+def paths_json(paths: Mapping[str, int]) -> Markup:
+    """The page's path list for a `<script type="application/json">` (no `<` can end the script)."""
+    import json
+
+    return Markup(json.dumps(list(paths), ensure_ascii=False).replace("<", "\\u003c"))
+
+
+def tick_table(rows: Sequence[TickRow], paths: Mapping[str, int]) -> Markup:
     """The trace as an HTML table (built here, not in the template: a report holds ~60,000 rows,
-    so cells leave out the end tags HTML lets them omit)."""
+    so cells leave out the end tags HTML lets them omit and name their path by its number in
+    the page's `paths`)."""
     if not rows:
         return Markup("")
     esc = html.escape
     out = ['<table class="ticks"><thead><tr><th>tick</th><th>node</th><th>status</th>'
            "<th>where</th></tr></thead><tbody>"]
     out += [f'<tr class="st-{esc(r.status.lower())}"><td>{esc(r.tick)}<td>{esc(r.node)}'
-            f"<td>{esc(r.status)}{_where(r.path)}" for r in rows]
+            f"<td>{esc(r.status)}{_where(r.path, paths[r.path])}" for r in rows]
     out.append("</tbody></table>")
     return Markup("\n".join(out))
 
@@ -347,10 +366,6 @@ class VerdictView:
     message: str
     rows: list[TickRow]
     other: list[str]
-
-    @property
-    def table(self) -> Markup:
-        return tick_table(self.rows)
 
 
 @dataclass(frozen=True)

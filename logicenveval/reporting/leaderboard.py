@@ -26,9 +26,12 @@ from logicenveval.reporting.details import (
     KIND_SHORT,
     Source,
     TaskRow,
+    path_index,
+    paths_json,
     search_words,
     slug,
     sources,
+    tick_table,
 )
 from logicenveval.reporting.tables import (
     COLUMNS,
@@ -49,7 +52,7 @@ from logicenveval.reporting.why import GeneratorReasons, Where, reasons
 def jinja() -> Environment:
     env = Environment(loader=PackageLoader("logicenveval", "reporting/templates"),
                       autoescape=select_autoescape(["html", "j2"]))
-    env.globals.update(kind_short=KIND_SHORT, faulty_kinds=FAULTY_KINDS)
+    env.globals.update(kind_short=KIND_SHORT, faulty_kinds=FAULTY_KINDS, tick_table=tick_table)
     return env
 
 
@@ -170,7 +173,9 @@ def write_details(out: Path, srcs: Sequence[Source], generators: Sequence[str],
             values = results["results"].get(row.generator, {})
             not_measured = set(values.get("not_measured_tasks") or ())
             up = "../" * row.href.count("/")
+            paths = path_index(row.envs)
             html = template.render(row=row, back=f"{up}leaderboard.html#{row.anchor}", up=up,
+                                   paths=paths, paths_json=paths_json(paths),
                                    run_id=results.get("run_id", ""), model=results.get("model", ""),
                                    measured=row.task not in not_measured and is_measured(values))
             path = out / row.href
