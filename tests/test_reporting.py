@@ -486,3 +486,26 @@ def test_the_filters_find_every_reason_word_and_code_shown(faulty_run: Path) -> 
             full = listed[int(index)]
             assert full.endswith(short.removeprefix("…/")) and full.count("/") >= short.count("/")
     assert nodes  # traces show port values (`Walk target=...`), searchable as the card's text
+
+
+def test_linked_files_never_leave_the_run_folder(tmp_path: Path) -> None:
+    """A report links (or, elsewhere, copies) renders and environments named by units: a path or
+    symlink leading out of the run folder is neither linked nor copied."""
+    from logicenveval.reporting.details import Assets, Source
+
+    run = tmp_path / "run"
+    (run / "envs" / "g" / "t").mkdir(parents=True)
+    secret = tmp_path / "secret.json"
+    secret.write_text("{}")
+    (run / "envs" / "g" / "t" / "e0.json").symlink_to(secret)
+    (run / "envs" / "g" / "t" / "e1.json").write_text("{}")
+    own = Assets(run, Source(run, {}))
+    for bad in ("envs/g/t/e0.json", "../secret.json", "envs/../../secret.json", str(secret), ""):
+        assert own.inside(bad) is None, bad
+    good = own.inside("envs/g/t/e1.json")
+    assert good is not None and own.place(good, None) == "envs/g/t/e1.json"
+    out = tmp_path / "merged"
+    other = Assets(out, Source(run, {}, prefix="run0/"))
+    copied = other.inside("envs/g/t/e1.json")
+    assert copied is not None and other.place(copied, b"{}") == "files/run0/envs/g/t/e1.json"
+    assert (out / "files" / "run0" / "envs" / "g" / "t" / "e1.json").read_text() == "{}"
