@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import re
 import shutil
 from pathlib import Path
 
@@ -46,20 +47,30 @@ def _chromium() -> str:
     pytest.skip("no Chromium on this machine (Debian: apt-get install chromium)")
 
 
+#: a task on which cot's environments are ill-formed, interpenetrate, leave their room and block doors
+BROWSER_TASKS = "clean_living_room,hallway_entry_tidy,bathroom_towel_refresh"
+
+
+def _reason_words(label: str) -> list[str]:
+    """The words of a reason's label a reader would type: codes and words, not `…` or `#`."""
+    return [w for w in re.findall(r"[A-Za-z][\w-]+", label) if len(w) > 2]
+
+
 @pytest.mark.slow
 def test_report_in_headless_chromium(tmp_path: Path) -> None:
-    """The report as a reader uses it: the table fits 1,400 px, the filter hides rows, an
-    environment's anchor opens its task page with the embedded render, a trace is a tick table."""
+    """The report as a reader uses it: the table fits 1,400 px, the filter finds every reason
+    word the page shows (and keeps the reasons list), an environment's anchor opens its task
+    page with its linked render (full size on click) and EnvSpec JSON, a trace is a tick table
+    with port values, and the task page's filter finds codes and node names."""
     browser_path = _chromium()
     sync_api = pytest.importorskip("playwright.sync_api",
                                    reason="Playwright is not installed (pip install -e '.[browser]')")
     out = tmp_path / "out"
-    assert main(["run", "--model", "offline", "--tasks", TASKS, "--generators", "logicenvgen,cot",
+    assert main(["run", "--model", "offline", "--tasks", BROWSER_TASKS, "--generators", "logicenvgen,cot",
                  "--executor", "inprocess", "--output", str(out), "--quiet"]) == 0
     (run_dir,) = [p for p in out.iterdir() if p.is_dir()]
-    moved = tmp_path / "moved"  # the report folder alone, elsewhere: nothing links back
-    shutil.copytree(run_dir / "details", moved / "details")
-    shutil.copy(run_dir / "leaderboard.html", moved / "leaderboard.html")
+    moved = tmp_path / "moved"  # the run folder, elsewhere: every link is relative
+    shutil.copytree(run_dir, moved)
     with sync_api.sync_playwright() as pw:
         context = pw.chromium.launch_persistent_context(
             str(tmp_path / "profile"), executable_path=browser_path, headless=True,
@@ -73,12 +84,28 @@ def test_report_in_headless_chromium(tmp_path: Path) -> None:
             assert extra is not None and extra["x"] + extra["width"] <= 1400
             assert page.evaluate("getComputedStyle(document.querySelector('#leaderboard thead')).position") == "sticky"
             rows = page.locator("table.idx tbody tr")
-            assert rows.count() == 4
+            assert rows.count() == 6
             page.fill("#filter", "hallway cot")
             visible = [r for r in rows.all() if r.is_visible()]
             assert len(visible) == 1 and "hallway_entry_tidy" in visible[0].inner_text()
             assert page.locator("#row-gen-cot").is_visible()  # the method's own row stays
             assert not page.locator("#row-gen-logicenvgen").is_visible()
+            # every word of every reason shown finds index rows, and its reason stays listed
+            page.fill("#filter", "")
+            reasons = page.locator("ul.why li")
+            labels = [li.inner_text().split(" — ")[0].split("×", 1)[1] for li in reasons.all()]
+            words = sorted({w for label in labels for w in _reason_words(label)})
+            assert {"interpenetration", "outside_room", "ill-formed", "blocks_door"} <= set(words)
+            for word in words:
+                page.fill("#filter", word)
+                shown = page.locator("table.idx tbody tr:visible").count()
+                assert shown > 0, f"the filter finds no row for {word!r}, shown on the page"
+                assert not page.locator("#filter-count").inner_text().startswith("0 of")
+                assert page.locator("ul.why li:visible").count() > 0, f"{word!r} hides the reasons"
+                assert page.locator("#leaderboard tbody tr:visible").count() > 0
+            page.fill("#filter", "interpenetration")
+            assert not page.locator("#t-logicenvgen--clean_living_room").is_visible()
+            assert page.locator("#t-cot--bathroom_towel_refresh").is_visible()
             page.screenshot(path=str(tmp_path / "leaderboard.png"), full_page=True)
             page.fill("#filter", "")
             link = page.locator("#t-logicenvgen--clean_living_room a.env").first
@@ -88,10 +115,33 @@ def test_report_in_headless_chromium(tmp_path: Path) -> None:
             assert page.url.endswith(f"details/logicenvgen/clean_living_room.html#env-{env_id}")
             card = page.locator(f"#env-{env_id}")
             assert card.is_visible() and card.locator("img").evaluate("i => i.naturalWidth") > 0
+            # the render opens full size; the EnvSpec JSON is linked
+            assert card.locator("a:has(img)").get_attribute("href", timeout=1000).endswith(f"{env_id}.svg")
+            env_href = card.locator("a", has_text="EnvSpec JSON").get_attribute("href")
+            assert env_href is not None and (page_dir := moved / "details" / "logicenvgen").is_dir()
+            assert json.loads((page_dir / env_href).read_text())["env_id"] == env_id
             card.locator("details.bt").first.locator("summary").click()
             ticks = card.locator("table.ticks").first
             assert ticks.is_visible() and ticks.locator("tbody tr").count() > 1
+            node = next(t for t in ticks.locator("tbody tr td:nth-child(2)").all_inner_texts() if "=" in t)
+            assert re.fullmatch(r"\w+ \w+=\S+.*", node), node  # `Walk target=...`: ports shown
+            where = ticks.locator("tbody tr td:nth-child(4)").first
+            where.hover()  # the full tree path appears as the cell's title
+            full = where.get_attribute("title")
+            assert full and full.count("/") >= 1 and full.endswith(where.inner_text().removeprefix("…/"))
             page.screenshot(path=str(tmp_path / "task.png"))
+            page.fill("#filter", node.split()[-1])
+            assert card.is_visible()
+            # a detail page's filter finds a code (not printed on the card) and an object id
+            page.goto((moved / "details" / "cot" / "bathroom_towel_refresh.html").as_uri())
+            cards = page.locator("article.env")
+            page.fill("#filter", "interpenetration")
+            hit = page.locator("article.env:visible")
+            assert 0 < hit.count() <= cards.count()
+            obj = re.search(r"(\w+) and \w+ interpenetrate", hit.first.inner_text())
+            assert obj is not None
+            page.fill("#filter", obj.group(1))
+            assert page.locator("article.env:visible").count() > 0
         finally:
             context.close()
     for shot in ("leaderboard.png", "task.png"):

@@ -69,7 +69,9 @@ def test_outputs_and_result_keys(first_run: Path) -> None:
     html = (first_run / "leaderboard.html").read_text()
     page = (first_run / "details" / "logicenvgen" / "clean_living_room.html").read_text()
     assert "<table" in html and 'href="details/logicenvgen/clean_living_room.html"' in html
-    assert 'src="data:image/svg+xml;base64,' in page  # renders embedded: the folder can move
+    # renders are written once and linked (relative: the folder can move whole), with the EnvSpec
+    assert 'src="../../renders/logicenvgen/clean_living_room/' in page and "data:image" not in page
+    assert 'href="../../envs/logicenvgen/clean_living_room/' in page
     # the full method covers every decision path of the paper's example with the minimum 3 envs
     clr = results["per_task"]["logicenvgen"]["clean_living_room"]
     assert clr["logcov"] == 1.0 and clr["n_envs"] == 3
@@ -144,7 +146,7 @@ def test_report_only_reads(first_run: Path, monkeypatch: pytest.MonkeyPatch) -> 
     assert {p: p.read_text() for p in before} == before
     assert svg.read_text() == drawn
     page = before[first_run / "details" / "logicenvgen" / "clean_living_room.html"]
-    assert '<td class="t">1</td><td>' in page  # the recorded traces are shown as tick tables
+    assert '<table class="ticks">' in page and '"><td>1<td>' in page  # recorded traces as tick tables
 
 
 def test_unit_with_a_lost_env_file_is_recomputed(first_run: Path, tmp_path: Path) -> None:

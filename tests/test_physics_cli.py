@@ -111,7 +111,30 @@ def test_render_svg_is_deterministic_and_highlights_failures(tmp_path: Path) -> 
     svg = render_svg(env, report)
     assert svg == render_svg(env, report)
     assert svg.startswith("<svg") and ">sofa</text>" in svg and ">toy_box_1</text>" in svg
-    assert 'stroke="#d62728"' in svg and 'stroke="#d62728"' not in render_svg(env)
+    # the legend's "named by a failure" swatch is red in both; only the failing render outlines shapes
+    assert svg.count('stroke="#d62728"') > render_svg(env).count('stroke="#d62728"') == 1
+
+
+def test_render_is_seen_from_above_with_legend_scale_and_axes() -> None:
+    """docs/envspec.md: y up, floor x-z in AI2-THOR's frame; seen from above +z points up the page."""
+    import re
+
+    data = json.loads((FIXTURES / "one_room.json").read_text())
+    (first, *_rest) = data["objects"]
+    low = {**first, "id": "low_one", "position": [first["position"][0], first["position"][1], 0.6]}
+    high = {**first, "id": "high_one", "position": [first["position"][0], first["position"][1], 2.4]}
+    data["objects"] = [low, high]
+    data["roles"] = {}
+    svg = render_svg(env_from_dict(data))
+
+    def label_y(name: str) -> float:
+        m = re.search(rf'<text x="[^"]+" y="([^"]+)"[^>]*>{name}</text>', svg)
+        assert m, name
+        return float(m.group(1))
+
+    assert label_y("high_one") < label_y("low_one")  # larger z is higher on the page
+    for text in (">+x</text>", ">+z</text>", ">1 m</text>", ">named by a failure</text>", ">window</text>"):
+        assert text in svg
 
 
 def test_render_png_via_cli(tmp_path: Path) -> None:

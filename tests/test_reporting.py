@@ -103,6 +103,24 @@ def test_model_reply_validity_is_shown_when_recorded() -> None:
     assert line.endswith("questions asked): cot: 95.0 % / 100.0 % of 40")  # the damaged entry is left out
 
 
+def test_generator_args_tell_two_otherwise_equal_runs_apart() -> None:
+    from logicenveval.reporting.merged import merged_markdown
+
+    a, b = _reference(), _reference()
+    a["config"]["generator_args"] = {"cot": {"n_envs": 3, "strict": True}}
+    # keyed by the `--generators` item as written, which is not the row's name
+    b["config"]["generators"] = ["my_pkg.gen:Cot" if g == "cot" else g for g in b["generators"]]
+    b["config"]["generator_args"] = {"my_pkg.gen:Cot": {"n_envs": 5}}
+    assert "| cot (n_envs=3, strict=true) |" in markdown(a)
+    assert "| cot (n_envs=5) |" in markdown(b) and "| holodeck |" in markdown(b)
+    merged = merged_markdown([(Path("gridA"), a), (Path("gridB"), b)])
+    assert "cot (n_envs=3, strict=true) |" in merged and "cot (n_envs=5) |" in merged
+    from logicenveval.reporting.leaderboard import table_rows
+
+    html_rows = {r.anchor: r for r in table_rows(b)}
+    assert html_rows["gen-cot"].lead == ["cot (n_envs=5)"] and "n_envs=5" in html_rows["gen-cot"].filter
+
+
 def test_markdown_cells_cannot_break_the_table() -> None:
     ref = _reference()
     ref["results"] = {"a|b\nc": ref["results"]["cot"]}
@@ -136,6 +154,23 @@ def test_reasons_group_by_shape_and_keep_the_first_example() -> None:
     assert g.reasons[0].kind == "generation"
     text = summary_text([g])
     assert "2 × rejected: ill-formed" in text and "t/e0: role white_box" in text
+
+
+def test_extra_check_failures_are_reasons_not_a_clean_bill() -> None:
+    """An environment that passes PhyPR but fails an extra check (the leaderboard's Extra checks
+    below 100) is listed, not summed up as "none rejected ... physically implausible"."""
+    samples = [{"generator": "g", "task_id": "t", "env_id": f"e{i}", "well_formed": True, "problems": [],
+                "verdicts": {"correct": "passed"},
+                "physics": {"failures": [], "extended_failures": [
+                    {"dimension": "entity", "code": "blocks_door", "message": f"towel stands in door d{i}'s swing"}]}}
+               for i in range(2)]
+    (g,) = reasons(samples, {}, ["g"])
+    assert not g.clean and (g.n_rejected, g.n_physics, g.n_extra) == (0, 0, 2)
+    (r,) = g.reasons
+    assert (r.label, r.count, r.example) == ("extra check: blocks_door", 2, "towel stands in door d0's swing")
+    text = summary_text([g])
+    assert "none rejected" not in text and "2 failing extra checks" in text
+    assert "2 × extra check: blocks_door — t/e0" in text
 
 
 def test_a_stage_failure_of_a_returned_environment_is_no_failed_attempt() -> None:
@@ -175,10 +210,17 @@ def test_in_a_multi_seed_run_a_failure_is_matched_to_its_own_seeds_environments(
 
 def test_trace_lines_become_tick_rows_and_slugs_are_safe() -> None:
     lines = ["{'tick': 1, 'node': 'Walk', 'path': 'R/Sequence/Walk[0]', 'status': 'RUNNING'}",
+             "{'tick': 2, 'node': 'Walk', 'path': 'R/Sequence/Walk[0]', 'status': 'SUCCESS', "
+             "'ports': 'target=kitchen'}",
+             "{'tick': 3, 'node': 'Pick', 'path': 'R/Sequence/Pick[1]', 'status': 'violation', "
+             "'detail': \"not 'near'\", 'ports': 'obj=cup_1'}",
+             "{'tick': 4, 'node': 'Walk', 'path': 'R/Sequence/Walk[0]', 'status': 'SUCCESS'}",
              "__import__('os').system('x')", "plain text"]
     got, other = trace_rows(lines)
-    assert [(r.tick, r.node, r.status) for r in got] == [("1", "Walk", "RUNNING")]
-    assert other == lines[1:]
+    assert [(r.tick, r.node, r.status) for r in got] == [
+        ("1", "Walk", "RUNNING"), ("2", "Walk target=kitchen", "SUCCESS"), ("3", "Pick obj=cup_1", "violation"),
+        ("4", "Walk target=kitchen", "SUCCESS")]  # ports carried forward by path
+    assert other == lines[4:]
     assert slug("logicenvgen-exact") == "logicenvgen-exact"
     for bad in ("../x", "/abs", "a b", "", ".."):
         s = slug(bad)
@@ -318,11 +360,28 @@ def test_report_pages_show_why_and_stand_alone(run_dir: Path, tmp_path: Path) ->
     owner = next(s for s in samples if physics in s["physics"]["failures"])
     owner_page = (run_dir / "details" / "cot" / f"{owner['task_id']}.html").read_text()
     assert physics["message"].replace("'", "&#39;") in owner_page  # the message, not only a red label
-    # the report folder is self-contained: move it, drop renders/ and envs/, pages keep their images
+    # renders are linked (written once, under renders/), with the EnvSpec file; links are relative,
+    # so the run folder works moved whole
     moved = tmp_path / "moved"
-    shutil.copytree(run_dir / "details", moved / "details")
-    shutil.copy(run_dir / "leaderboard.html", moved / "leaderboard.html")
-    assert 'src="data:image/svg+xml;base64,' in (moved / "details" / "cot" / "clean_living_room.html").read_text()
+    shutil.copytree(run_dir, moved)
+    page_path = moved / "details" / "cot" / "clean_living_room.html"
+    moved_page = page_path.read_text()
+    assert "data:image" not in moved_page and 'src="../../renders/cot/clean_living_room/cot-00.svg"' in moved_page
+    assert 'href="../../envs/cot/clean_living_room/cot-00.json"' in moved_page
+    assert _broken_links(page_path) == []
+    # a render that is gone is re-drawn from the stored environment, written back once and linked
+    (moved / "renders" / "cot" / "clean_living_room" / "cot-00.svg").unlink()
+    assert main(["report", str(moved)]) == 0
+    assert (moved / "renders" / "cot" / "clean_living_room" / "cot-00.svg").read_text().startswith("<svg")
+    assert _broken_links(page_path) == []
+
+
+def _broken_links(page: Path) -> list[str]:
+    """The page's relative src/href targets (anchors and queries aside) that are not files."""
+    from urllib.parse import unquote
+
+    links = re.findall(r'(?:src|href)="([^"#?]+)[^"]*"', page.read_text())
+    return [x for x in links if "://" not in x and not (page.parent / unquote(x)).is_file()]
 
 
 def test_report_replaces_files_atomically(run_dir: Path, monkeypatch: pytest.MonkeyPatch,
@@ -352,3 +411,101 @@ def test_report_of_runs_has_a_run_column(run_dir: Path, tmp_path: Path, capsys: 
     html = (tmp_path / "leaderboard.html").read_text()
     assert 'href="details/run1/cot/clean_living_room.html' in html
     assert len(html) < 1_000_000
+    # the merged folder stands alone: each run's renders and environments are copied under files/
+    page = tmp_path / "details" / "run1" / "cot" / "clean_living_room.html"
+    assert 'src="../../../files/run1/renders/cot/clean_living_room/cot-00.svg"' in page.read_text()
+    assert _broken_links(page) == [] and _broken_links(tmp_path / "leaderboard.html") == []
+
+
+# ----- filters find every word shown --------------------------------------------------------------
+
+_WORD = re.compile(r"[A-Za-z][\w-]*")
+
+
+def _text(fragment: str) -> str:
+    import html as html_lib
+
+    return html_lib.unescape(re.sub(r"<[^>]+>", " ", fragment))
+
+
+def _filters(page: str, tag: str, marker: str = "") -> list[tuple[str, str]]:
+    """(filter text, inner HTML) of each `tag` with a data-filter (and `marker`) on a page."""
+    import html as html_lib
+
+    return [(html_lib.unescape(m.group(1)).lower(), m.group(2)) for m in re.finditer(
+        rf'<{tag}\b[^>]*{marker}[^>]*data-filter="([^"]*)"[^>]*>(.*?)</{tag}>', page, re.S)]
+
+
+def _found(filter_text: str, typed: str) -> bool:
+    """The page's filter: every typed word is a substring of the element's filter text."""
+    return all(w in filter_text for w in typed.lower().split())
+
+
+@pytest.fixture(scope="module")
+def faulty_run(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """A run with every kind of reason: ill-formed, a failing correct BT, PhyPR codes, extra checks."""
+    out = tmp_path_factory.mktemp("faulty")
+    assert main(["run", "--model", "offline", "--tasks", "bathroom_towel_refresh", "--generators",
+                 "cot,holodeck", "--executor", "inprocess", "--quiet", "--output", str(out)]) == 0
+    return _only_dir(out)
+
+
+def test_the_filters_find_every_reason_word_and_code_shown(faulty_run: Path) -> None:
+    run_dir = faulty_run
+    page = (run_dir / "leaderboard.html").read_text()
+    rows = [f for f, _ in _filters(page, "tr", "data-count")]
+    reasons = _filters(page, "li")
+    assert rows and reasons and any("extra check" in f for f, _ in reasons)
+    typed_any = set()
+    for filter_text, inner in reasons:
+        shown = _text(inner).replace("e.g.", " ")
+        for word in _WORD.findall(shown):
+            typed_any.add(word.lower())
+            assert _found(filter_text, word), (word, filter_text)  # the reason stays listed
+            assert any(_found(r, word) for r in rows), word  # and the index finds its rows
+    assert {"interpenetration", "outside_room", "ill-formed", "blocks_door"} <= typed_any
+    # every code and verdict word the index shows finds the rows showing it
+    for word in ("missed", "detected", "entity", "fails", "valid"):
+        if word in page:
+            assert any(_found(r, word) for r in rows), word
+    # the detail pages: a card is searched by its filter text and its own text (data-text), which
+    # holds its lists and trace; codes that only the filter text carries are found too
+    pages = sorted((run_dir / "details").rglob("*.html"))
+    cards = [(f + " " + _text(inner).lower(), inner) for p in pages
+             for f, inner in _filters(p.read_text(), "article", "data-text")]
+    assert cards and len(cards) == sum(p.read_text().count("<article") for p in pages)
+    for code in ("interpenetration", "outside_room", "blocks_door", "ill-formed", "missed"):
+        assert any(_found(text, code) for text, _ in cards), code
+    nodes = sum(bool(re.search(r"<td>\w+ \w+=\w", inner)) for _, inner in cards)
+    # a tick row's full tree path is the page's path list entry its number names (shown on hover)
+    for path in pages:
+        text = path.read_text()
+        listed = json.loads(re.search(r'<script type="application/json" id="tick-paths">(.*?)</script>',
+                                      text, re.S).group(1))  # type: ignore[union-attr]
+        for index, short in re.findall(r'<td data-p="(\d+)">([^<\n]*)', text):
+            full = listed[int(index)]
+            assert full.endswith(short.removeprefix("…/")) and full.count("/") >= short.count("/")
+    assert nodes  # traces show port values (`Walk target=...`), searchable as the card's text
+
+
+def test_linked_files_never_leave_the_run_folder(tmp_path: Path) -> None:
+    """A report links (or, elsewhere, copies) renders and environments named by units: a path or
+    symlink leading out of the run folder is neither linked nor copied."""
+    from logicenveval.reporting.details import Assets, Source
+
+    run = tmp_path / "run"
+    (run / "envs" / "g" / "t").mkdir(parents=True)
+    secret = tmp_path / "secret.json"
+    secret.write_text("{}")
+    (run / "envs" / "g" / "t" / "e0.json").symlink_to(secret)
+    (run / "envs" / "g" / "t" / "e1.json").write_text("{}")
+    own = Assets(run, Source(run, {}))
+    for bad in ("envs/g/t/e0.json", "../secret.json", "envs/../../secret.json", str(secret), ""):
+        assert own.inside(bad) is None, bad
+    good = own.inside("envs/g/t/e1.json")
+    assert good is not None and own.place(good, None) == "envs/g/t/e1.json"
+    out = tmp_path / "merged"
+    other = Assets(out, Source(run, {}, prefix="run0/"))
+    copied = other.inside("envs/g/t/e1.json")
+    assert copied is not None and other.place(copied, b"{}") == "files/run0/envs/g/t/e1.json"
+    assert (out / "files" / "run0" / "envs" / "g" / "t" / "e1.json").read_text() == "{}"

@@ -33,6 +33,15 @@ def test_committed_schemas_are_current(name: str) -> None:
         f"--out docs/schemas/{name}.schema.json")
 
 
+def test_every_envspec_field_is_described() -> None:
+    """A tool writing EnvSpecs from the schema alone learns what each field means and its unit."""
+    schema = json_schema("envspec")
+    missing = [f"{name}.{field}" for name, part in [("EnvSpec", schema), *schema["$defs"].items()]
+               for field, prop in part.get("properties", {}).items() if not prop.get("description")]
+    assert missing == []
+    assert "metres" in schema["$defs"]["EnvObject"]["properties"]["position"]["description"]
+
+
 def test_schema_command_prints_the_committed_text(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["schema", "envspec"]) == 0
     assert capsys.readouterr().out == (DOCS_DIR / "envspec.schema.json").read_text()

@@ -56,6 +56,15 @@ def test_passed_and_one_tick_per_action() -> None:
     assert v.final_state["roles"]["toy"]["container"] == "box_1"
 
 
+def test_trace_shows_the_ports_a_node_ran_with() -> None:
+    v = run(f"<Sequence>{TIDY}</Sequence>", trace=True)
+    walks = [e for e in v.trace if e["node"] == "Walk"]
+    # a node's ports are on its first event only (readers carry them forward by path)
+    assert [(e["status"], e.get("ports")) for e in walks] == [
+        ("RUNNING", "target=toy"), ("SUCCESS", None), ("RUNNING", "target=box"), ("SUCCESS", None)]
+    assert all("ports" not in e for e in v.trace if e["node"] == "Sequence")
+
+
 def test_precondition_violation_names_node_and_path() -> None:
     v = run('<Sequence><Walk target="box"/><PutIn obj="toy" target="box"/></Sequence>')
     assert v.status == "precondition_violation" and v.fault_node == "PutIn"

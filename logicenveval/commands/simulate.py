@@ -118,7 +118,11 @@ def _print(verdict: object, policy: str, env_id: str) -> None:
         console.print(f"  goal: {verdict.goal} -> {verdict.goal_holds}", markup=False)
     if verdict.trace:
         table = Table("tick", "node", "status", "path / detail")
+        ports: dict[str, str] = {}  # recorded on a node's first event, carried forward by path
         for ev in verdict.trace:
-            table.add_row(str(ev["tick"]), str(ev["node"]), str(ev["status"]),
+            if ev.get("ports"):
+                ports[str(ev["path"])] = str(ev["ports"])
+            node = " ".join(x for x in (str(ev["node"]), ports.get(str(ev["path"]))) if x)
+            table.add_row(str(ev["tick"]), node, str(ev["status"]),
                           str(ev.get("detail") or ev["path"]))
         console.print(table)

@@ -37,52 +37,85 @@ RELATION_TYPES: dict[str, int] = {
 _Cfg = ConfigDict(frozen=True, extra="allow", populate_by_name=True)
 
 
+#: floor coordinates, shared by the descriptions below
+_XZ = "[x, z] in metres on the floor (y is up; AI2-THOR's frame)"
+
+
 class Room(BaseModel):
+    """A room: its id, its AI2-THOR-style type and its floor outline."""
+
     model_config = _Cfg
-    id: str = Field(min_length=1)
-    type: str = "LivingRoom"
-    polygon: list[Vec2] | None = None
+    id: str = Field(min_length=1, description="Unique room id; task room names are resolved against ids "
+                    "and types (`living_room` names a room with id `living_room` or type `LivingRoom`).")
+    type: str = Field("LivingRoom", description="AI2-THOR-style room type: Kitchen, LivingRoom, Bedroom, "
+                      "Bathroom, Study, Hallway, LaundryRoom, DiningRoom, KidsRoom, ...")
+    polygon: list[Vec2] | None = Field(None, description=f"The floor outline, a simple polygon of {_XZ}, "
+                                       "any orientation; null in purely symbolic environments (the "
+                                       "physics checker then reports missing geometry).")
 
 
 class Door(BaseModel):
+    """A door or doorway between two rooms, or a room and the outside."""
+
     model_config = _Cfg
-    id: str
-    rooms: tuple[str, str]  # a room id, or "exterior"
-    segment: tuple[Vec2, Vec2] | None = None
-    height: float = 2.1
-    type: str = "door"
-    state: Literal["open", "closed"] = "closed"
+    id: str = Field(description="Door id (unique among doors).")
+    rooms: tuple[str, str] = Field(description='The two sides: room ids, one of them may be "exterior".')
+    segment: tuple[Vec2, Vec2] | None = Field(None, description=f"The opening on the shared wall: two "
+                                              f"points {_XZ}; null when not placed.")
+    height: float = Field(2.1, description="Height of the opening, metres.")
+    type: str = Field("door", description='"door" (with a leaf that swings) or "doorway" (no leaf).')
+    state: Literal["open", "closed"] = Field("closed", description="open or closed; the agent walks "
+                                             "through closed doors too (it opens them).")
 
 
 class Window(BaseModel):
+    """A window on an outer wall of a room."""
+
     model_config = _Cfg
-    id: str
-    room: str
-    segment: tuple[Vec2, Vec2] | None = None
-    sill: float = 0.9
-    height: float = 1.2
-    state: Literal["open", "closed"] = "closed"
+    id: str = Field(description="Window id (unique among windows).")
+    room: str = Field(description="The room id whose outer wall holds the window.")
+    segment: tuple[Vec2, Vec2] | None = Field(None, description=f"The window on the outer wall: two points "
+                                              f"{_XZ}; null when not placed.")
+    sill: float = Field(0.9, description="Height of the sill above the floor, metres.")
+    height: float = Field(1.2, description="Height of the window opening, metres.")
+    state: Literal["open", "closed"] = Field("closed", description="open or closed.")
 
 
 class EnvObject(BaseModel):
+    """One object: what it is, where it is, what it rests on or is inside, its attributes and states."""
+
     model_config = _Cfg
-    id: str = Field(min_length=1)
-    category: str = Field(min_length=1)
-    room: str
-    position: Vec3 | None = None
-    yaw: float = 0.0
-    size: Vec3 | None = None
-    support: str | None = "floor"  # "floor", "wall", "ceiling", an object id, or None if contained
-    container: str | None = None
-    attributes: dict[str, str] = Field(default_factory=dict)
-    states: dict[str, bool] = Field(default_factory=dict)
-    mesh: str | None = None
+    id: str = Field(min_length=1, description="Unique object id in the file; roles and relations name it.")
+    category: str = Field(min_length=1, description="What the object is: a catalog key, a synonym, an "
+                          "AI2-THOR type, any case or plural (mapped once to the catalog key; "
+                          "docs/envspec.md, 'Categories').")
+    room: str = Field(description="The id of the room it is in.")
+    position: Vec3 | None = Field(None, description="Centre of the bounding box, [x, y, z] in metres "
+                                  "(y up); an object on the floor has y == size[1] / 2.")
+    yaw: float = Field(0.0, description="Rotation about +y in degrees; yaw 0 faces +z, yaw 90 faces +x.")
+    size: Vec3 | None = Field(None, description="Bounding-box extents along x, y, z before the yaw, metres; "
+                              "the physics checker compares them with the catalog's range.")
+    support: str | None = Field("floor", description='What it rests on or hangs from: "floor", "wall", '
+                                '"ceiling", an object id, or null when it is inside a container.')
+    container: str | None = Field(None, description="The id of the container it is directly inside, or null.")
+    attributes: dict[str, str] = Field(default_factory=dict, description='Attributes as strings, e.g. '
+                                       '{"kind": "doll", "color": "red"}; domains per category in '
+                                       "docs/catalog.md.")
+    states: dict[str, bool] = Field(default_factory=dict, description="State flags (open, toggled_on, "
+                                    "dirty, wet, filled, cooked, sliced, broken); flags not given take "
+                                    "the catalog's default_states.")
+    mesh: str | None = Field(None, description="A mesh file, relative to the EnvSpec's folder, that the "
+                             "physics checker uses instead of the box; null: the box.")
 
 
 class Relation(BaseModel):
+    """A spatial relation the generator asked for; the physics checker verifies it."""
+
     model_config = _Cfg
-    type: str
-    args: tuple[str, ...]
+    type: str = Field(description="Unary: edge, center, wall_mounted; binary: on, inside, near, far, "
+                      "above, in_front_of, side_of, center_aligned, face_to (docs/physics.md).")
+    args: tuple[str, ...] = Field(description="The object ids it relates: one for a unary, two for a "
+                                  "binary relation.")
 
     @model_validator(mode="after")
     def _arity(self) -> Relation:
@@ -97,26 +130,38 @@ class Relation(BaseModel):
 
 
 class Agent(BaseModel):
+    """Where the agent starts, with an empty hand, near nothing."""
+
     model_config = _Cfg
-    room: str | None = None
-    position: Vec2 | None = None
+    room: str | None = Field(None, description="The room id it starts in; null: the first room.")
+    position: Vec2 | None = Field(None, description=f"Its start point, {_XZ}; optional.")
 
 
 class EnvSpec(BaseModel):
+    """One generated environment (docs/envspec.md): rooms, doors, windows, objects, relations,
+    the objects playing the task's roles and the agent's start."""
+
     model_config = _Cfg
-    schema_: Literal["logicenveval.env/1"] = Field("logicenveval.env/1", alias="schema")
-    task_id: str
-    generator: str = "unknown"
-    env_id: str
-    claimed_trajectory: dict[str, dict[str, str]] | None = None
-    wall_height: float = 2.7
-    rooms: list[Room] = Field(min_length=1)
-    doors: list[Door] = Field(default_factory=list)
-    windows: list[Window] = Field(default_factory=list)
-    objects: list[EnvObject] = Field(default_factory=list)
-    relations: list[Relation] = Field(default_factory=list)
-    roles: dict[str, str | None] = Field(default_factory=dict)
-    agent: Agent = Field(default_factory=Agent)
+    schema_: Literal["logicenveval.env/1"] = Field("logicenveval.env/1", alias="schema",
+                                                   description="Format version.")
+    task_id: str = Field(description="The task the environment is for (`python -m logicenveval tasks list`).")
+    generator: str = Field("unknown", description="The tool that made it.")
+    env_id: str = Field(description="Unique within the task's folder; becomes the file name in run folders.")
+    claimed_trajectory: dict[str, dict[str, str]] | None = Field(
+        None, description="{subtask: {variable: value}}: what the generator meant to realise; recorded, "
+        "never trusted (the harness evaluates the ground-truth trees itself).")
+    wall_height: float = Field(2.7, description="Height of every wall, metres.")
+    rooms: list[Room] = Field(min_length=1, description="The rooms, at least one.")
+    doors: list[Door] = Field(default_factory=list, description="Doors and doorways between rooms.")
+    windows: list[Window] = Field(default_factory=list, description="Windows on outer walls.")
+    objects: list[EnvObject] = Field(default_factory=list, description="The objects (at most 2,000, "
+                                     "LOGICENVEVAL_MAX_ENV_OBJECTS).")
+    relations: list[Relation] = Field(default_factory=list, description="The spatial relations the "
+                                      "generator asked for (the physics checker verifies them).")
+    roles: dict[str, str | None] = Field(default_factory=dict, description="{role: object id or null}: "
+                                         "which object plays each task role; roles left out are bound by "
+                                         "the harness by category and attributes.")
+    agent: Agent = Field(default_factory=Agent, description="Where the agent starts.")
 
     @model_validator(mode="after")
     def _references(self) -> EnvSpec:

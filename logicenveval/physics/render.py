@@ -1,10 +1,13 @@
-"""Top-down renders of an EnvSpec (x to the right, z downwards), SVG text and PNG via Pillow.
+"""Top-down renders of an EnvSpec, seen from above (+y): +x to the right, +z up, as in
+docs/envspec.md's axes (AI2-THOR's left-handed frame). SVG text and PNG via Pillow.
 
 Both renders draw the same scene description, so the output is deterministic: rooms (grey),
 walls, doors (brown gaps), windows (blue), object footprints labelled by role or id, and every
 room/object/door named by a failure outlined in red. Labels are placed so that they do not
 overlap (`_labels`): a label that would cover another moves up or down by a line, with a thin
-leader to its object, and none runs off the picture.
+leader to its object, and none runs off the picture. Under the plan, a legend band says what
+the colours mean, and holds a 1 m scale bar and the +x/+z axes, so a picture read alone is
+read right.
 """
 
 from __future__ import annotations
@@ -20,6 +23,7 @@ from logicenveval.physics.geometry import build_bodies, finite
 from logicenveval.physics.report import PhysicsReport
 
 _RED = "#d62728"
+_INK = "#333333"
 _RED_FILL = "#f7b6b6"
 
 
@@ -57,20 +61,51 @@ def _scene(env: EnvSpec, report: PhysicsReport | None) -> list[_Shape]:
             and all(abs(c) <= _FAR for p in s.points for c in p)]
 
 
+#: the legend's entries: (kind, text); "failed" is the red of a shape named by a failure
+_LEGEND = (("room", "room"), ("object", "object"), ("door", "door"), ("window", "window"),
+           ("failed", "named by a failure"))
+_LEGEND_ROW = 22
+#: pixels a legend entry takes: swatch, gap, text (~6 px a character at 11 px)
+_SWATCH, _CHAR = 16, 6.2
+_AXES_W, _SCALE_W = 84, 24
+
+
+def _entry_width(text: str) -> float:
+    return _SWATCH + 6 + _CHAR * len(text) + 14
+
+
+def _legend_rows(width: float, margin: float, scale: float) -> list[list[tuple[str, str, float]]]:
+    """The legend's entries (kind, text, x) wrapped into rows that fit `width`; the axes and the
+    scale bar come first."""
+    items = [("axes", "", _AXES_W), ("scale", "1 m", scale + _SCALE_W)]
+    items += [(k, t, _entry_width(t)) for k, t in _LEGEND]
+    rows: list[list[tuple[str, str, float]]] = [[]]
+    x = margin
+    for kind, text, w in items:
+        if rows[-1] and x + w > width - margin / 2:
+            rows.append([])
+            x = margin
+        rows[-1].append((kind, text, x))
+        x += w
+    return rows
+
+
 class _View:
-    """Maps metres to pixels with a margin, keeping the aspect ratio."""
+    """Maps metres to pixels with a margin, keeping the aspect ratio: +x right, +z up."""
 
     def __init__(self, shapes: list[_Shape], scale: float = 80.0, margin: float = 30.0) -> None:
         xs = [p[0] for s in shapes for p in s.points] or [0.0, 1.0]
         zs = [p[1] for s in shapes for p in s.points] or [0.0, 1.0]
-        self.x0, self.z0 = min(xs), min(zs)
+        self.x0, self.z1 = min(xs), max(zs)
         self.scale, self.margin = scale, margin
         self.width = int(round((max(xs) - self.x0) * scale + 2 * margin))
-        self.height = int(round((max(zs) - self.z0) * scale + 2 * margin))
+        self.plan_height = int(round((self.z1 - min(zs)) * scale + 2 * margin))
+        self.legend = _legend_rows(self.width, margin, scale)
+        self.height = self.plan_height + _LEGEND_ROW * len(self.legend) + 8
 
     def px(self, p: tuple[float, float]) -> tuple[float, float]:
         return (round((p[0] - self.x0) * self.scale + self.margin, 2),
-                round((p[1] - self.z0) * self.scale + self.margin, 2))
+                round((self.z1 - p[1]) * self.scale + self.margin, 2))
 
 
 @dataclass(frozen=True)
@@ -121,7 +156,7 @@ def _labels(shapes: list[_Shape], v: _View) -> list[_Label]:
         best: tuple[float, float] | None = None
         best_cost = float("inf")
         for shift in _SHIFTS:
-            y = min(max(base + shift * (size + 2), size), max(v.height - size, size))
+            y = min(max(base + shift * (size + 2), size), max(v.plan_height - size, size))
             cost = sum(_overlap(_box(x, y, s.label, size), b) for b in placed)
             if cost < best_cost:
                 best, best_cost = (x, y), cost
@@ -136,8 +171,70 @@ def _labels(shapes: list[_Shape], v: _View) -> list[_Label]:
     return out
 
 
-_STYLE = {"room": ("#f2f2f2", "#333333", 3), "object": ("#9ecae1", "#3182bd", 1),
+_STYLE = {"room": ("#f2f2f2", _INK, 3), "object": ("#9ecae1", "#3182bd", 1),
           "door": (None, "#8c564b", 6), "window": (None, "#17becf", 5)}
+
+
+@dataclass(frozen=True)
+class _Mark:
+    """One drawing primitive of the legend band, drawn alike by the SVG and the PNG writer."""
+
+    kind: str  # rect | line | text
+    points: tuple[tuple[float, float], ...]
+    fill: str | None = None
+    stroke: str | None = None
+    width: int = 1
+    text: str = ""
+    anchor: str = "start"  # start | middle
+
+
+def _legend_marks(v: _View) -> list[_Mark]:
+    """Axes (+x right, +z up), a 1 m scale bar and the colour legend, under the plan."""
+    out = [_Mark("line", ((0, v.plan_height), (v.width, v.plan_height)), stroke="#dddddd")]
+    for i, row in enumerate(v.legend):
+        y = v.plan_height + 8 + _LEGEND_ROW * i + _LEGEND_ROW / 2
+        for kind, text, x in row:
+            if kind == "axes":  # an L: +x to the right, +z up
+                ox, oy = x + 4, y + 7
+                out += [_Mark("line", ((ox, oy), (ox + 22, oy)), stroke=_INK),
+                        _Mark("line", ((ox + 17, oy - 3), (ox + 22, oy), (ox + 17, oy + 3)), stroke=_INK),
+                        _Mark("text", ((ox + 25, oy),), fill=_INK, text="+x"),
+                        _Mark("line", ((ox, oy), (ox, oy - 16)), stroke=_INK),
+                        _Mark("line", ((ox - 3, oy - 11), (ox, oy - 16), (ox + 3, oy - 11)), stroke=_INK),
+                        _Mark("text", ((ox + 5, oy - 13),), fill=_INK, text="+z")]
+            elif kind == "scale":
+                out += [_Mark("line", ((x, y + 4), (x + v.scale, y + 4)), stroke=_INK, width=2),
+                        _Mark("line", ((x, y), (x, y + 8)), stroke=_INK),
+                        _Mark("line", ((x + v.scale, y), (x + v.scale, y + 8)), stroke=_INK),
+                        _Mark("text", ((x + v.scale / 2, y - 4),), fill=_INK, text=text, anchor="middle")]
+            else:
+                box = ((x, y - 6), (x + _SWATCH, y + 6))
+                if kind == "failed":
+                    out.append(_Mark("rect", box, fill=_RED_FILL, stroke=_RED, width=2))
+                elif kind in ("door", "window"):
+                    out.append(_Mark("line", ((x, y), (x + _SWATCH, y)), stroke=_STYLE[kind][1],
+                                     width=_STYLE[kind][2]))
+                else:
+                    fill, stroke, _ = _STYLE[kind]
+                    out.append(_Mark("rect", box, fill=fill, stroke=stroke, width=1))
+                out.append(_Mark("text", ((x + _SWATCH + 6, y),), fill=_INK, text=text))
+    return out
+
+
+def _svg_mark(m: _Mark) -> str:
+    """One legend mark, inside a group that sets its defaults (no fill, dark stroke and text)."""
+    if m.kind == "rect":
+        (x0, y0), (x1, y1) = m.points
+        return (f'<rect x="{x0:g}" y="{y0:g}" width="{x1 - x0:g}" height="{y1 - y0:g}" fill="{m.fill}" '
+                f'stroke="{m.stroke}" stroke-width="{m.width}"/>')
+    if m.kind == "line":
+        pts = " ".join(f"{x:g},{y:g}" for x, y in m.points)
+        stroke = "" if m.stroke == _INK else f' stroke="{m.stroke}"'
+        width = "" if m.width == 1 else f' stroke-width="{m.width}"'
+        return f'<polyline points="{pts}"{stroke}{width}/>'
+    (x, y), = m.points
+    anchor = "" if m.anchor == "start" else f' text-anchor="{m.anchor}"'
+    return f'<text x="{x:g}" y="{y:g}"{anchor} fill="{m.fill}" stroke="none">{escape(m.text)}</text>'
 
 
 def render_svg(env: EnvSpec, report: PhysicsReport | None = None) -> str:
@@ -155,15 +252,19 @@ def render_svg(env: EnvSpec, report: PhysicsReport | None = None) -> str:
             out.append(f'<polygon points="{pts}" fill="{fill}" stroke="{stroke}" stroke-width="{width}"/>')
         else:
             out.append(f'<polyline points="{pts}" fill="none" stroke="{stroke}" stroke-width="{width}"/>')
-    for label in _labels(shapes, v):
-        if label.leader is not None:
-            lx, ly = label.leader
-            out.append(f'<line x1="{lx}" y1="{ly}" x2="{label.x}" y2="{label.y}" stroke="#9a9a9a" '
-                       'stroke-width="0.6"/>')
-        out.append(f'<text x="{label.x}" y="{label.y}" font-size="{label.size}" text-anchor="middle" '
-                   f'dominant-baseline="middle" fill="{label.color}" stroke="white" stroke-width="2.5" '
-                   f'paint-order="stroke">{escape(label.text)}</text>')
-    out.append("</svg>")
+    labels = _labels(shapes, v)
+    out += [f'<line x1="{lb.leader[0]}" y1="{lb.leader[1]}" x2="{lb.x}" y2="{lb.y}" stroke="#9a9a9a" '
+            'stroke-width="0.6"/>' for lb in labels if lb.leader is not None]
+    # labels share their look through a group (a render holds dozens of them)
+    out.append('<g text-anchor="middle" dominant-baseline="middle" stroke="white" stroke-width="2.5" '
+               'paint-order="stroke" font-size="10">')
+    for lb in labels:
+        size = "" if lb.size == 10 else f' font-size="{lb.size}"'
+        out.append(f'<text x="{lb.x}" y="{lb.y}"{size} fill="{lb.color}">{escape(lb.text)}</text>')
+    out.append("</g>")
+    out.append(f'<g fill="none" stroke="{_INK}" font-size="11" dominant-baseline="middle">')
+    out += [_svg_mark(m) for m in _legend_marks(v)]
+    out += ["</g>", "</svg>"]
     return "\n".join(out) + "\n"
 
 
@@ -187,5 +288,12 @@ def render_png(env: EnvSpec, path: str | Path, report: PhysicsReport | None = No
         if label.leader is not None:
             draw.line([label.leader, (label.x, label.y)], fill="#9a9a9a", width=1)
         draw.text((label.x, label.y), label.text, fill=label.color, font=font, anchor="mm")
+    for m in _legend_marks(v):
+        if m.kind == "rect":
+            draw.rectangle(m.points, fill=m.fill, outline=m.stroke, width=m.width)
+        elif m.kind == "line":
+            draw.line(m.points, fill=m.stroke, width=m.width)
+        else:
+            draw.text(m.points[0], m.text, fill=m.fill, font=font, anchor="mm" if m.anchor == "middle" else "lm")
     Path(path).parent.mkdir(parents=True, exist_ok=True)
     img.save(str(path), format="PNG", optimize=False)

@@ -2,8 +2,8 @@
 
 A report's main page stays small: the table, the reasons and an index of (generator, task)
 rows. Each row links to one page `details/[<run>/][seed<S>/]<generator>/<task>.html` holding
-that task's environments: the top-down render (embedded as a data URI, so a page works copied
-anywhere), the problems that made it ill-formed, every physics finding with its message, the
+that task's environments: the top-down render (linked, not inlined: the unit wrote it once under
+`renders/`; click to open it full size) and a link to the EnvSpec JSON, the problems that made it ill-formed, every physics finding with its message, the
 covered decision paths and each BT's verdict with its tick trace as a table. Faulty BTs read
 "detected" / "missed": a faulty BT that passes is a fault the environment did not reveal.
 """
@@ -11,7 +11,6 @@ covered decision paths and each BT's verdict with its tick trace as a table. Fau
 from __future__ import annotations
 
 import ast
-import base64
 import functools
 import hashlib
 import html
@@ -23,18 +22,20 @@ from typing import Any
 
 from markupsafe import Markup
 
-from logicenveval.atomic import atomic_write_text
+from logicenveval.atomic import atomic_write_bytes, atomic_write_text
 from logicenveval.metrics.records import EnvDetail, UnitRecord
 from logicenveval.model.task import FAULTY_KINDS, POLICY_KINDS
 from logicenveval.runner.store import RunStore
 
 _NOT_RECORDED = "no trace recorded (the unit was written by a version that did not store traces)"
 _SAFE = re.compile(r"[A-Za-z0-9][A-Za-z0-9._-]{0,63}")
-#: a render bigger than this is not embedded (renders are a few kB; a hostile file is not)
+#: a render bigger than this is not copied into a merged report (renders are a few kB; a hostile file is not)
 _MAX_RENDER_BYTES = 2_000_000
 #: a trace line longer than this is shown as text, not parsed
 _MAX_TRACE_LINE = 4000
 _DIMENSIONS = ("floor_plan", "entity", "relation")
+#: the faulty kinds' short names in the index
+KIND_SHORT = {"counterfactual": "CF", "unreachable": "Unreach", "lackbranch": "LBranch"}
 _WHY_KEYS = frozenset({"generator", "task_id", "env_id", "well_formed", "problems", "verdicts", "physics"})
 
 
@@ -177,28 +178,100 @@ def _svg_from_env(run_dir: Path, generator: str, task: str, sample: Mapping[str,
     return render_svg(env, report)
 
 
-def render_uri(run_dir: Path, generator: str, task: str, sample: Mapping[str, Any],
-               detail: EnvDetail | None, restore: bool = False) -> str | None:
-    """The environment's top-down render as a `data:` URI, drawn afresh when the file is gone
-    (and written back to its place in the run folder with `restore`: renders are derived)."""
+#: an environment file bigger than this is not copied into a merged report (it is linked from
+#: its run folder only when the report is the run's own)
+_MAX_ENV_BYTES = 50_000_000
+
+
+@dataclass(frozen=True)
+class Assets:
+    """Where a source's renders and environment files are linked from.
+
+    A run's own report links the files in place (`renders/...`, `envs/...`: each written once,
+    by the unit); a report in another folder (`report RUN RUN --out DIR`) copies them to
+    `DIR/files/<prefix>` so that folder stands alone. `written` collects the copies."""
+
+    out: Path
+    source: Source
+    written: set[Path] = field(default_factory=set)
+    root: Path = field(init=False)
+    in_place: bool = field(init=False)
+    _dirs: dict[Path, Path] = field(init=False, default_factory=dict)
+
+    def __post_init__(self) -> None:  # resolved once: a report links ~1,300 files
+        root = self.source.run_dir.resolve()
+        object.__setattr__(self, "root", root)
+        object.__setattr__(self, "in_place", root == self.out.resolve())
+
+    def inside(self, rel: str) -> Path | None:
+        """The run folder's file `rel` when it stays inside the folder (a unit could name any
+        path). Folders are resolved once each (a report links ~1,300 files in ~250 folders)."""
+        if not rel or "\0" in rel:
+            return None
+        try:
+            rough = self.root / rel
+            parent = self._dirs.get(rough.parent)
+            if parent is None:
+                parent = self._dirs.setdefault(rough.parent, rough.parent.resolve())
+            path = parent / rough.name
+            if rough.name in ("", ".", "..") or path.is_symlink():
+                path = path.resolve()
+        except (OSError, RuntimeError, ValueError):
+            return None
+        return path if path.is_relative_to(self.root) else None
+
+    def place(self, src: Path, data: bytes | None) -> str | None:
+        """The href (relative to the report folder) of the run folder's file `src`, copying it (or
+        `data`, when the file is gone) when the report lives elsewhere."""
+        rel = src.relative_to(self.root).as_posix()
+        if self.in_place:
+            return rel if src.is_file() else None
+        if data is None:
+            return None
+        dest = self.out / "files" / self.source.prefix / rel
+        if dest not in self.written:
+            dest.parent.mkdir(parents=True, exist_ok=True)
+            if not dest.is_file() or dest.read_bytes() != data:
+                atomic_write_bytes(dest, data, durable=False)
+            self.written.add(dest)
+        return dest.relative_to(self.out).as_posix()
+
+
+def _read(path: Path | None, limit: int) -> bytes | None:
+    if path is None or not path.is_file():
+        return None
+    try:
+        return path.read_bytes() if path.stat().st_size <= limit else None
+    except OSError:
+        return None
+
+
+def render_href(assets: Assets, generator: str, task: str, sample: Mapping[str, Any],
+                detail: EnvDetail | None) -> str | None:
+    """The environment's top-down render, linked (never inlined: it is written once, under
+    `renders/`), drawn afresh when the file is gone (and written back to its place in the run
+    folder with `restore`: renders are derived)."""
     rel = detail.render if detail is not None and detail.render else \
         f"renders/{generator}/{task}/{sample['env_id']}.svg"
-    path = _inside(run_dir, rel)
-    svg: bytes | None = None
-    if path is not None and path.suffix == ".svg" and path.is_file():
-        try:
-            if path.stat().st_size <= _MAX_RENDER_BYTES:
-                svg = path.read_bytes()
-        except OSError:
-            svg = None
-    if svg is None:
-        drawn = _svg_from_env(run_dir, generator, task, sample)
-        if drawn is None:
-            return None
-        svg = drawn.encode()
-        if restore and path is not None and path.suffix == ".svg":
-            atomic_write_text(path, drawn, durable=False)
-    return "data:image/svg+xml;base64," + base64.b64encode(svg).decode("ascii")
+    path = assets.inside(rel)
+    if path is None or path.suffix != ".svg":
+        return None
+    if path.is_file():
+        return assets.place(path, None if assets.in_place else _read(path, _MAX_RENDER_BYTES))
+    drawn = _svg_from_env(assets.source.run_dir, generator, task, sample)
+    if drawn is None:
+        return None
+    if assets.source.restore:
+        atomic_write_text(path, drawn, durable=False)
+    return assets.place(path, drawn.encode())
+
+
+def env_href(assets: Assets, generator: str, task: str, env_id: str) -> str | None:
+    """The environment's EnvSpec JSON, linked from its page (copied into a merged report)."""
+    path = assets.inside(f"envs/{generator}/{task}/{env_id}.json")
+    if path is None:
+        return None
+    return assets.place(path, None if assets.in_place else _read(path, _MAX_ENV_BYTES))
 
 
 @dataclass(frozen=True)
@@ -212,23 +285,31 @@ class TickRow:
 
 #: the form the simulator's trace entries are recorded in (`str` of a dict, keys in this order)
 _TRACE_LINE = re.compile(r"\{'tick': (\d+), 'node': '([^'\\]*)', 'path': '([^'\\]*)', "
-                         r"'status': '([A-Z_]+)'\}")
+                         r"'status': '([A-Z_]+)'(?:, 'ports': '([^'\\]*)')?\}")
+
+
+def _with_ports(node: str, ports: str | None) -> str:
+    """`Walk target=kitchen`: the node with the port values it ran with (older traces: the node)."""
+    return f"{node} {ports}" if ports else node
 
 
 def trace_rows(lines: Sequence[str]) -> tuple[list[TickRow], list[str]]:
     """Tick-table rows of a recorded trace, and the lines that are not tick entries (kept as text).
 
-    Traces hold one `{'tick': .., 'node': .., 'path': .., 'status': ..}` literal per line: the
-    common form is matched directly, others are read with `ast.literal_eval` (literals only,
-    never code).
+    Traces hold one `{'tick': .., 'node': .., 'path': .., 'status': ..}` literal per line, with
+    `'ports'` on a node's first line (carried forward to its later rows by path): the common form
+    is matched directly, others are read with `ast.literal_eval` (literals only, never code).
     """
     rows: list[TickRow] = []
     other: list[str] = []
+    ports: dict[str, str] = {}
     for line in lines:
         text = line.strip()
         plain = _TRACE_LINE.fullmatch(text)
         if plain is not None:
-            rows.append(TickRow(plain[1], plain[2], plain[4], plain[3]))
+            if plain[5]:
+                ports[plain[3]] = plain[5]
+            rows.append(TickRow(plain[1], _with_ports(plain[2], ports.get(plain[3])), plain[4], plain[3]))
             continue
         entry: object = None
         if text.startswith("{") and len(text) <= _MAX_TRACE_LINE:
@@ -237,30 +318,53 @@ def trace_rows(lines: Sequence[str]) -> tuple[list[TickRow], list[str]]:
             except (ValueError, SyntaxError, MemoryError, RecursionError, TypeError):
                 entry = None
         if isinstance(entry, dict) and {"tick", "node", "status"} <= set(entry):
-            rows.append(TickRow(str(entry["tick"]), str(entry["node"]), str(entry["status"]),
-                                str(entry.get("path", ""))))
+            path = str(entry.get("path", ""))
+            if entry.get("ports"):
+                ports[path] = str(entry["ports"])
+            rows.append(TickRow(str(entry["tick"]), _with_ports(str(entry["node"]), ports.get(path)),
+                                str(entry["status"]), path))
         else:
             other.append(line)
     return rows, other
 
 
 @functools.lru_cache(maxsize=4096)
-def _where(path: str) -> str:
-    """The `where` cell of a tick row: the short path, the full one on hover (paths repeat a lot)."""
+def _where(path: str, index: int) -> str:
+    """The `where` cell of a tick row: the short path; the full one (the page's `index`-th path,
+    listed once per page) is shown on hover. Rows repeat a few paths thousands of times."""
     parts = path.split("/")
     short = ("…/" if len(parts) > 3 else "") + "/".join(parts[-3:])
-    return f'<td title="{html.escape(path)}"><code>{html.escape(short)}</code></td>'
+    return f'<td data-p="{index}">{html.escape(short)}'
 
 
-def tick_table(rows: Sequence[TickRow]) -> Markup:
-    """The trace as an HTML table (built here, not in the template: a report holds ~60,000 rows)."""
+def path_index(envs: Sequence[EnvView]) -> dict[str, int]:
+    """Every tree path the page's traces pass, numbered in order of first appearance."""
+    out: dict[str, int] = {}
+    for e in envs:
+        for v in e.verdicts:
+            for r in v.rows:
+                out.setdefault(r.path, len(out))
+    return out
+
+
+def paths_json(paths: Mapping[str, int]) -> Markup:
+    """The page's path list for a `<script type="application/json">` (no `<` can end the script)."""
+    import json
+
+    return Markup(json.dumps(list(paths), ensure_ascii=False).replace("<", "\\u003c"))
+
+
+def tick_table(rows: Sequence[TickRow], paths: Mapping[str, int]) -> Markup:
+    """The trace as an HTML table (built here, not in the template: a report holds ~60,000 rows,
+    so cells leave out the end tags HTML lets them omit and name their path by its number in
+    the page's `paths`)."""
     if not rows:
         return Markup("")
     esc = html.escape
     out = ['<table class="ticks"><thead><tr><th>tick</th><th>node</th><th>status</th>'
            "<th>where</th></tr></thead><tbody>"]
-    out += [f'<tr class="st-{esc(r.status.lower())}"><td class="t">{esc(r.tick)}</td><td>{esc(r.node)}'
-            f"</td><td>{esc(r.status)}</td>{_where(r.path)}</tr>" for r in rows]
+    out += [f'<tr class="st-{esc(r.status.lower())}"><td>{esc(r.tick)}<td>{esc(r.node)}'
+            f"<td>{esc(r.status)}{_where(r.path, paths[r.path])}" for r in rows]
     out.append("</tbody></table>")
     return Markup("\n".join(out))
 
@@ -278,16 +382,11 @@ class VerdictView:
     rows: list[TickRow]
     other: list[str]
 
-    @property
-    def table(self) -> Markup:
-        return tick_table(self.rows)
-
 
 @dataclass(frozen=True)
 class EnvView:
     env_id: str
     anchor: str
-    render: str | None
     well_formed: bool
     valid: bool
     problems: list[str]
@@ -297,6 +396,18 @@ class EnvView:
     covered_paths: list[str]
     claimed: str
     verdicts: list[VerdictView]
+    #: the words of what is wrong (reasons as the "why" section names them, codes, messages,
+    #: object and room ids, verdicts): the index row's filter text
+    reasons_text: str = ""
+    #: the render and the environment file, relative to the report folder (None: absent)
+    render: str | None = None
+    env_file: str | None = None
+
+    @property
+    def search(self) -> str:
+        """The detail page's filter text beside the card's own text (which the page's filter reads
+        too): the reasons as the "why" section names them, codes, object and room ids."""
+        return search_words(self.env_id, self.summary, self.reasons_text)
 
     @property
     def summary(self) -> str:
@@ -331,8 +442,38 @@ def _verdicts(sample: Mapping[str, Any], detail: EnvDetail | None, valid: bool) 
     return out
 
 
-def env_view(run_dir: Path, generator: str, task: str, sample: dict[str, Any],
-             detail: EnvDetail | None, restore: bool = False) -> EnvView:
+def search_words(*texts: str) -> str:
+    """One filter text of `texts`: each whitespace-separated word once, in lower case, in order of
+    first appearance (a page's filter matches typed words as substrings of this)."""
+    seen: dict[str, None] = {}
+    for text in texts:
+        for word in text.lower().split():
+            seen.setdefault(word, None)
+    return " ".join(seen)
+
+
+def _reasons_text(sample: Mapping[str, Any], verdicts: Sequence[VerdictView]) -> str:
+    from logicenveval.reporting.why import sample_reasons
+
+    physics = sample.get("physics") or {}
+    found = [f for key in ("failures", "extended_failures") for f in physics.get(key) or []
+             if isinstance(f, dict)]
+    return search_words(
+        *(f"{kind}: {key} {message}" for kind, key, message in sample_reasons(sample)),
+        *(str(p) for p in sample.get("problems") or []),
+        *(f"{f.get('dimension', '')} {f.get('code', '')} {f.get('message', '')} "
+          + " ".join(str(x) for x in [*(f.get("objects") or []), *(f.get("rooms") or [])])
+          for f in found),
+        *(f"{v.kind} {kind_short(v.kind)} {v.label} {v.status} {v.message}" for v in verdicts))
+
+
+def kind_short(kind: str) -> str:
+    """The faulty kinds' short names (index columns): CF, Unreach, LBranch; others as they are."""
+    return KIND_SHORT.get(kind, kind)
+
+
+def env_view(assets: Assets, generator: str, task: str, sample: dict[str, Any],
+             detail: EnvDetail | None) -> EnvView:
     physics = sample.get("physics") or {}
     failures = [f for f in physics.get("failures") or [] if isinstance(f, dict)]
     dims = {d: [str(f.get("message") or f.get("code")) for f in failures if f.get("dimension") == d]
@@ -346,13 +487,15 @@ def env_view(run_dir: Path, generator: str, task: str, sample: dict[str, Any],
     claimed = sample.get("claimed_trajectory") or {}
     claim = " | ".join(f"{sub}: " + ", ".join(f"{k}={v}" for k, v in sorted(vals.items()))
                        for sub, vals in sorted(claimed.items()) if isinstance(vals, dict))
+    verdicts = _verdicts(sample, detail, valid)
     return EnvView(
         env_id=str(sample["env_id"]), anchor=env_anchor(str(sample["env_id"])),
-        render=render_uri(run_dir, generator, task, sample, detail, restore),
+        render=render_href(assets, generator, task, sample, detail),
+        env_file=env_href(assets, generator, task, str(sample["env_id"])),
         well_formed=bool(sample.get("well_formed")), valid=valid,
         problems=[str(p) for p in sample.get("problems") or []], physics=dims, extra=extra,
         covered_paths=[str(p) for p in sample.get("covered_paths") or []], claimed=claim,
-        verdicts=_verdicts(sample, detail, valid))
+        verdicts=verdicts, reasons_text=_reasons_text(sample, verdicts))
 
 
 @dataclass(frozen=True)
@@ -375,6 +518,21 @@ class TaskRow:
         return sum(e.valid for e in self.envs)
 
     @property
+    def search(self) -> str:
+        """The index row's filter text: task, seed, each environment's id, summary and reasons,
+        the task's generation failures as the "why" section names them, what the row shows."""
+        from logicenveval.reporting.why import failure_reason
+
+        detected = [f"{k} {kind_short(k)} {'–' if d is None else ('detected' if d else 'missed')}"
+                    for k, d in self.detected.items()]
+        failed = [f"{'built short' if f.get('env_id') in {e.env_id for e in self.envs} else 'generation'}"
+                  f": {failure_reason(f)[0]} {failure_reason(f)[1]} {f.get('env_id') or ''}"
+                  for f in self.failures]
+        return search_words(self.generator, self.task, f"seed{self.seed}" if self.seed else "",
+                            "budget" if self.metrics.get("budget_hit") else "", *detected, *failed,
+                            *(f"{e.env_id} {e.summary} {e.reasons_text}" for e in self.envs))
+
+    @property
     def n_physics(self) -> int:
         return sum(any(e.physics.values()) for e in self.envs)
 
@@ -387,8 +545,10 @@ class TaskRow:
         return {k: any(v.kind == k and v.good for e in valid for v in e.verdicts) for k in FAULTY_KINDS}
 
 
-def task_rows(source: Source, generators: Sequence[str]) -> Iterator[TaskRow]:
-    """Every (generator, task) of a source with its environments, in results order."""
+def task_rows(source: Source, generators: Sequence[str], assets: Assets | None = None) -> Iterator[TaskRow]:
+    """Every (generator, task) of a source with its environments, in results order; `assets`
+    says where the report links renders and environment files from (default: in place)."""
+    assets = assets or Assets(source.run_dir, source)
     reader = UnitReader(source)
     per_task = source.results.get("per_task", {})
     failures = source.results.get("failures", {})
@@ -396,7 +556,7 @@ def task_rows(source: Source, generators: Sequence[str]) -> Iterator[TaskRow]:
     for gen in generators:
         for task in source.results.get("tasks", []):
             pairs = reader.envs(gen, task)
-            envs = [env_view(source.run_dir, gen, task, s, d, source.restore) for s, d in pairs]
+            envs = [env_view(assets, gen, task, s, d) for s, d in pairs]
             yield TaskRow(
                 generator=gen, task=task, seed=source.seed, anchor=task_anchor(gen, task, scope),
                 href=page_path(source, gen, task),

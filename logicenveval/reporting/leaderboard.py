@@ -4,8 +4,9 @@ The main page holds the table (grouped, sticky header, sortable), the reasons en
 rejected or failed, a filter box and an index of every (generator, task) with anchors; each index
 row links to the task's page under `details/` (`reporting.details`), loaded only when opened. All
 of it was recorded by the units when they evaluated the environments (`UnitRecord.details`), so a
-report only reads: no physics check, no simulation, no solving. Renders are embedded in the
-pages, so the report folder works when moved or copied on its own.
+report only reads: no physics check, no simulation, no solving. Renders and environment files
+are linked where the run wrote them (relative links: the run folder works when moved or copied
+whole); a report written elsewhere copies them under `files/`.
 """
 
 from __future__ import annotations
@@ -22,10 +23,15 @@ from logicenveval.atomic import atomic_write_text
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.model.task import FAULTY_KINDS
 from logicenveval.reporting.details import (
+    KIND_SHORT,
     Source,
     TaskRow,
+    path_index,
+    paths_json,
+    search_words,
     slug,
     sources,
+    tick_table,
 )
 from logicenveval.reporting.tables import (
     COLUMNS,
@@ -42,14 +48,11 @@ from logicenveval.reporting.tables import (
 )
 from logicenveval.reporting.why import GeneratorReasons, Where, reasons
 
-#: the faulty kinds' short names in the index
-_KIND_SHORT = {"counterfactual": "CF", "unreachable": "Unreach", "lackbranch": "LBranch"}
-
 
 def jinja() -> Environment:
     env = Environment(loader=PackageLoader("logicenveval", "reporting/templates"),
                       autoescape=select_autoescape(["html", "j2"]))
-    env.globals.update(kind_short=_KIND_SHORT, faulty_kinds=FAULTY_KINDS)
+    env.globals.update(kind_short=KIND_SHORT, faulty_kinds=FAULTY_KINDS, tick_table=tick_table)
     return env
 
 
@@ -123,6 +126,8 @@ class IndexRow:
     detected: dict[str, bool | None]
     budget_hit: bool
     envs: list[EnvLink]
+    #: the filter's text: every word the row and its environments' reasons show
+    filter: str = ""
 
 
 @dataclass
@@ -150,23 +155,27 @@ def _index_row(row: TaskRow, not_measured: set[str]) -> IndexRow:
         else (str(int(n_failed)) if n_failed else "0"),
         logcov="–" if logcov is None else f"{100 * float(logcov):.0f}",
         detected=row.detected, budget_hit=bool(m.get("budget_hit")),
-        envs=[EnvLink(e.env_id, f"{row.href}#{e.anchor}", e.summary, e.valid) for e in row.envs])
+        envs=[EnvLink(e.env_id, f"{row.href}#{e.anchor}", e.summary, e.valid) for e in row.envs],
+        filter=row.search)
 
 
 def write_details(out: Path, srcs: Sequence[Source], generators: Sequence[str],
                   env: Environment) -> Collected:
     """Write every (generator, task) page of `srcs` under `out/details/`; return the index."""
-    from logicenveval.reporting.details import task_rows
+    from logicenveval.reporting.details import Assets, task_rows
 
     template = env.get_template("task.html.j2")
     got = Collected([], [], {}, {}, set())
     for source in srcs:
         results = source.results
-        for row in task_rows(source, [g for g in generators if g in results.get("results", {})]):
+        assets = Assets(out, source, got.written)
+        for row in task_rows(source, [g for g in generators if g in results.get("results", {})], assets):
             values = results["results"].get(row.generator, {})
             not_measured = set(values.get("not_measured_tasks") or ())
             up = "../" * row.href.count("/")
-            html = template.render(row=row, back=f"{up}leaderboard.html#{row.anchor}",
+            paths = path_index(row.envs)
+            html = template.render(row=row, back=f"{up}leaderboard.html#{row.anchor}", up=up,
+                                   paths=paths, paths_json=paths_json(paths),
                                    run_id=results.get("run_id", ""), model=results.get("model", ""),
                                    measured=row.task not in not_measured and is_measured(values))
             path = out / row.href
@@ -183,11 +192,12 @@ def write_details(out: Path, srcs: Sequence[Source], generators: Sequence[str],
     return got
 
 
-def remove_stale(folder: Path, keep: set[Path]) -> None:
-    """Drop pages a previous report wrote that this one did not (a generator or task left)."""
+def remove_stale(folder: Path, keep: set[Path], pattern: str = "*.html") -> None:
+    """Drop pages (or copied files) a previous report wrote that this one did not (a generator
+    or task left)."""
     if not folder.is_dir():
         return
-    for path in sorted(folder.rglob("*.html")):
+    for path in sorted(p for p in folder.rglob(pattern) if p.is_file()):
         if path not in keep:
             path.unlink(missing_ok=True)
     for dirpath, _dirs, _files in sorted(os.walk(folder), key=lambda w: -len(w[0])):
@@ -195,12 +205,19 @@ def remove_stale(folder: Path, keep: set[Path]) -> None:
             Path(dirpath).rmdir()
 
 
-def table_rows(results: dict[str, Any], lead: Sequence[str] = (), scope: str = "") -> list[TableRow]:
+def why_text(g: GeneratorReasons) -> str:
+    """A generator's reasons as filter text: its table row is found by any reason it has."""
+    return search_words(*(f"{r.label} {r.where} {r.example}" for r in g.reasons))
+
+
+def table_rows(results: dict[str, Any], lead: Sequence[str] = (), scope: str = "",
+               why: Sequence[GeneratorReasons] = ()) -> list[TableRow]:
+    texts = {g.generator: why_text(g) for g in why}
     out = []
     for gen, values in results["results"].items():
         label = row_label(gen, values, results)
         out.append(TableRow([*lead, label], row_cells(results, gen), gen_anchor(gen, scope),
-                            f"#{gen_anchor(gen, scope)}", " ".join([*lead, label])))
+                            f"#{gen_anchor(gen, scope)}", search_words(*lead, label, texts.get(gen, ""))))
     return out
 
 
@@ -216,7 +233,7 @@ def render_main(results: dict[str, Any], collected: Collected, env: Environment)
                                           messages=collected.messages, scores=results["results"])
     top, sub = header_rows(["Method"])
     return env.get_template("leaderboard.html.j2").render(
-        results=results, top=top, sub=sub, rows=table_rows(results), legend=LEGEND,
+        results=results, top=top, sub=sub, rows=table_rows(results, why=why), legend=LEGEND,
         note=interval_note(results), why=why, hrefs=collected.hrefs,
         groups=group_rows(collected.rows), seeded=bool(results.get("runs")), llm=llm_validity(results))
 
@@ -227,7 +244,8 @@ def _rebase(got: Collected, sub: str, seed: str) -> Collected:
         return replace(e, href=f"{sub}/{e.href}")
 
     rows = [replace(r, href=f"{sub}/{r.href}", anchor=f"{r.anchor}--seed{slug(seed)}", seed=seed,
-                    envs=[env(e) for e in r.envs]) for r in got.rows]
+                    envs=[env(e) for e in r.envs], filter=search_words(r.filter, f"seed{seed}"))
+            for r in got.rows]
     def at(key: Where) -> Where:  # the seed run's own environments, named by their seed here
         return (*key[:3], seed)
 

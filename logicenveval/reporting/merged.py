@@ -3,7 +3,8 @@
 Runs of different models, generators or seeds are merged row by row with Run, Model and Seeds
 columns; rows are only comparable on the same tasks of the same benchmark version, so mixed task
 sets are refused with the runs that differ. Every run keeps its drill-down: its per-task pages
-are written under `DIR/details/run<k>/` (renders embedded), so the merged folder stands alone.
+are written under `DIR/details/run<k>/` and its renders and environment files copied under
+`DIR/files/run<k>/`, so the merged folder stands alone.
 """
 
 from __future__ import annotations
@@ -103,11 +104,14 @@ def write_merged(run_dirs: Sequence[Path], out: Path) -> list[tuple[Path, dict[s
         got: Collected = write_details(out, srcs, list(results["results"]), env)
         written |= got.written
         lead = [label, str(results.get("model", "?")), _seeds(results)]
-        table += table_rows(results, lead, scope)
+        run_why = reasons(got.samples, results.get("failures", {}), messages=got.messages,
+                          scores=results["results"])
+        table += table_rows(results, lead, scope, run_why)
         groups += [{**grp, "run": label} for grp in group_rows(got.rows, scope)]
-        why += [(label, g, got.hrefs) for g in reasons(got.samples, results.get("failures", {}),
-                                                        messages=got.messages, scores=results["results"])]
+        why += [(label, g, got.hrefs) for g in run_why]
     remove_stale(out / "details", written)
+    for kind in ("*.svg", "*.json"):  # only what a report copies there (renders, environments)
+        remove_stale(out / "files", written, kind)
     top, sub = header_rows([*LEAD, "Method"])
     html = env.get_template("merged.html.j2").render(
         top=top, sub=sub, rows=table, runs=[(label, str(d)) for label, (d, _) in zip(labels, runs, strict=True)],

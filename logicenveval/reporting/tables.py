@@ -8,6 +8,7 @@ reasons) says so in every cell; old results files without these fields render as
 
 from __future__ import annotations
 
+import json
 from dataclasses import dataclass
 from typing import Any
 
@@ -101,11 +102,35 @@ def is_measured(values: dict[str, Any]) -> bool:
     return values.get("measured") is not False
 
 
+def generator_args(results: dict[str, Any], generator: str) -> dict[str, Any]:
+    """The `--generator-args` a row was made with (keyed in results.json's `config` by the item as
+    written in `--generators`, or by the row's name), {} when none."""
+    config = results.get("config")
+    if not isinstance(config, dict) or not isinstance(given := config.get("generator_args"), dict):
+        return {}
+    args = given.get(generator)
+    if args is None:
+        items, rows = config.get("generators"), results.get("generators")
+        if isinstance(items, list) and isinstance(rows, list) and len(items) == len(rows) \
+                and generator in rows:
+            args = given.get(str(items[rows.index(generator)]))
+    return dict(args) if isinstance(args, dict) else {}
+
+
+def args_text(args: dict[str, Any]) -> str:
+    """`n_envs=3, seed_offset=2`: generator args as `--generator-args` spells them."""
+    return ", ".join(f"{k}={json.dumps(v) if isinstance(v, bool) else v}" for k, v in sorted(args.items()))
+
+
 def row_label(generator: str, values: dict[str, Any], results: dict[str, Any]) -> str:
-    """The method's name with what qualifies its row: oracle, selector budget hit, tasks missed."""
+    """The method's name with what qualifies its row: its generator args (two runs that differ
+    only in them are told apart), oracle, selector budget hit, tasks missed."""
     label = method_label(generator, str(results.get("model", "")))
     n_tasks = len(results.get("tasks", []))
     marks = []
+    args = generator_args(results, generator)
+    if args:
+        marks.append(args_text(args))
     budget = values.get("budget_hit_tasks") or []
     if budget:
         marks.append(f"budget hit {len(budget)}/{n_tasks}")

@@ -10,7 +10,9 @@ kinds of reason, from what the units recorded (`samples.jsonl`, `results.json` `
   scored, so it is no failed attempt (the count agrees with results.json's `n_failed`);
 - `rejected`: an environment that is not a valid scenario — ill-formed (a role not bound, a
   reached path that does not allow it: its first problem) or one in which the correct BT fails;
-- `physics`: an environment failing one of the paper's PhyPR dimensions, by failure code.
+- `physics`: an environment failing one of the paper's PhyPR dimensions, by failure code;
+- `extra check`: an environment failing one of our plausibility checks beyond PhyPR (the
+  leaderboard's "Extra checks" column), by failure code.
 
 Messages name objects and roles; reasons group them by their shape (names, quoted text and numbers
 replaced), and every group keeps its first example verbatim with its task and environment (and
@@ -29,7 +31,7 @@ MAX_GROUPS = 6
 _EXAMPLE_CHARS = 200
 _KEY_CHARS = 90
 #: generation failures and rejections come before physics findings
-_KIND_ORDER = {"generation": 0, "built short": 1, "rejected": 2, "physics": 3}
+_KIND_ORDER = {"generation": 0, "built short": 1, "rejected": 2, "physics": 3, "extra check": 4}
 
 _QUOTED = re.compile(r"'[^']*'|\"[^\"]*\"")
 _NAMED = re.compile(r"\b(role|object|objects|category|door|window|room|target|env|environment)\s+"
@@ -58,7 +60,7 @@ def reason_key(message: str) -> str:
 class Reason:
     """Environments of one generator that share a reason, with the first one as the example."""
 
-    kind: str  # generation | built short | rejected | physics
+    kind: str  # generation | built short | rejected | physics | extra check
     key: str
     count: int = 0
     task: str = ""
@@ -91,6 +93,8 @@ class GeneratorReasons:
     n_short: int = 0
     n_rejected: int = 0
     n_physics: int = 0
+    #: environments failing an extra plausibility check (beyond the paper's PhyPR)
+    n_extra: int = 0
     reasons: list[Reason] = field(default_factory=list)
 
     @property
@@ -100,7 +104,13 @@ class GeneratorReasons:
 
     @property
     def clean(self) -> bool:
-        return not (self.n_failed or self.n_short or self.n_rejected or self.n_physics)
+        return not (self.n_failed or self.n_short or self.n_rejected or self.n_physics or self.n_extra)
+
+    @property
+    def counts_text(self) -> str:
+        """The summary's counts: failed attempts, rejected, failing PhyPR, failing extra checks."""
+        return (f"{self.failed_text} failed to generate, {self.n_rejected} not a valid scenario, "
+                f"{self.n_physics} failing PhyPR, {self.n_extra} failing extra checks")
 
 
 def _add(groups: dict[tuple[str, str], Reason], kind: str, key: str, where: Where,
@@ -127,6 +137,33 @@ def rejection(sample: Mapping[str, Any]) -> tuple[str, str] | None:
     if verdict != "passed":
         return f"the correct BT ends {verdict or 'without a verdict'}", f"correct BT: {verdict}"
     return None
+
+
+def sample_reasons(sample: Mapping[str, Any]) -> list[tuple[str, str, str]]:
+    """(kind, reason key, first message) of everything wrong with one environment: its rejection,
+    each PhyPR failure code, each extra-check failure code (what the "why" section lists)."""
+    out = []
+    why = rejection(sample)
+    if why is not None:
+        out.append(("rejected", *why))
+    physics = sample.get("physics") or {}
+    failed = [f for f in physics.get("failures") or [] if isinstance(f, Mapping)]
+    for dim, code in sorted({(str(f.get("dimension", "?")), str(f.get("code", "?"))) for f in failed}):
+        first = next(f for f in failed if (str(f.get("dimension", "?")), str(f.get("code", "?"))) == (dim, code))
+        out.append(("physics", f"PhyPR {dim}: {code}", str(first.get("message") or code)))
+    extra = [f for f in physics.get("extended_failures") or [] if isinstance(f, Mapping)]
+    for code in sorted({str(f.get("code", "?")) for f in extra}):
+        first = next(f for f in extra if str(f.get("code", "?")) == code)
+        out.append(("extra check", code, str(first.get("message") or code)))
+    return out
+
+
+def failure_reason(failure: Mapping[str, Any]) -> tuple[str, str]:
+    """(reason key, message) of a recorded generation failure."""
+    message = str(failure.get("message") or "no message")
+    stage = str(failure.get("stage") or "unit")
+    kind = failure.get("kind")
+    return f"{stage}{f' ({kind})' if kind else ''}: {reason_key(message)}", message
 
 
 def reasons(samples: Iterable[Mapping[str, Any]],
@@ -162,35 +199,26 @@ def reasons(samples: Iterable[Mapping[str, Any]],
     for gen, items in failures.items():
         g = gen_of(gen)
         for f in items:
-            message = str(f.get("message") or "no message")
-            stage = str(f.get("stage") or "unit")
-            kind = f.get("kind")
             where = (gen, str(f.get("task", "")), str(f.get("env_id") or ""), _seed(f))
             returned = where in built
             g.n_failed += not returned
             g.n_short += returned
-            key = f"{stage}{f' ({kind})' if kind else ''}: {reason_key(message)}"
+            key, message = failure_reason(f)
             _add(groups[gen], "built short" if returned else "generation", key, where, message)
     for s in samples:
         where = (str(s["generator"]), str(s["task_id"]), str(s["env_id"]), _seed(s))
         gen = where[0]
         g = gen_of(gen)
         g.n_envs += 1
-        why = rejection(s)
-        if why is not None:
-            g.n_rejected += 1
-            key, message = why
-            if messages and s.get("well_formed"):
+        found = sample_reasons(s)
+        kinds = {kind for kind, _, _ in found}
+        g.n_rejected += "rejected" in kinds
+        g.n_physics += "physics" in kinds
+        g.n_extra += "extra check" in kinds
+        for kind, key, message in found:
+            if kind == "rejected" and messages and s.get("well_formed"):
                 message = messages.get(where) or message
-            _add(groups[gen], "rejected", key, where, message)
-        physics = s.get("physics") or {}
-        failed = [f for f in physics.get("failures") or [] if isinstance(f, Mapping)]
-        if failed:
-            g.n_physics += 1
-        for code in sorted({(str(f.get("dimension", "?")), str(f.get("code", "?"))) for f in failed}):
-            first = next(f for f in failed if (str(f.get("dimension", "?")), str(f.get("code", "?"))) == code)
-            _add(groups[gen], "physics", f"PhyPR {code[0]}: {code[1]}", where,
-                 str(first.get("message") or code[1]))
+            _add(groups[gen], kind, key, where, message)
     out = []
     for gen in order:
         g = by_gen[gen]
@@ -208,12 +236,11 @@ def summary_text(per_gen: Sequence[GeneratorReasons], max_groups: int = MAX_GROU
     lines = ["Why environments were rejected or failed (count × reason — first example):"]
     for g in per_gen:
         if g.clean:
-            lines.append(f"  {g.generator}: {g.n_envs} environment(s), none rejected, failed or "
-                         "physically implausible")
+            lines.append(f"  {g.generator}: {g.n_envs} environment(s), none rejected, failed, "
+                         "physically implausible or failing an extra check")
             continue
         short = f" ({g.n_short} stage failure(s) in returned ones)" if g.n_short else ""
-        lines.append(f"  {g.generator}: {g.n_envs} environment(s){short}; {g.failed_text} failed to "
-                     f"generate, {g.n_rejected} not a valid scenario, {g.n_physics} failing PhyPR")
+        lines.append(f"  {g.generator}: {g.n_envs} environment(s){short}; {g.counts_text}")
         for r in g.reasons[:max_groups]:
             lines.append(f"    {r.count} × {r.label} — {r.where}: {r.example}")
         if len(g.reasons) > max_groups:

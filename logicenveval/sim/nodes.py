@@ -48,6 +48,9 @@ class Episode:
     tick: int = 0
     trace: list[dict[str, Any]] | None = None
     last_fail: BTNode | None = field(default=None)
+    #: paths whose port values the trace already holds (a node's ports are recorded on its first
+    #: event only; readers carry them forward by path, so a long trace does not repeat them)
+    traced_ports: set[str] = field(default_factory=set)
     #: when a list: every leaf tick as (root tick, leaf, status), action/condition/constant alike
     #: (mutation scoring reads which nodes an episode entered, and when)
     ticks: list[tuple[int, BTNode, Status]] | None = None
@@ -81,10 +84,13 @@ class BTNode(py_trees.behaviour.Behaviour):
     path: str
     binding: Binding
     tree_id: str | None
+    ports: str
 
     def setup_bt(self, p: PolicyNode, path: str, binding: Binding) -> None:
         self.kind, self.params, self.bt_name = p.kind, p.params, p.name
         self.path, self.binding, self.tree_id = path, binding, None
+        #: the ports a trace shows beside the node (`target=kitchen`): what the node acted on
+        self.ports = " ".join(f"{k}={v}" for k, v in p.params) if p.kind != "SubTree" else ""
 
     @property
     def label(self) -> str:
@@ -124,6 +130,9 @@ def _reset(node: py_trees.behaviour.Behaviour) -> None:
 def _event(ep: Episode, node: BTNode, status: str, detail: str | None = None) -> dict[str, Any]:
     ev: dict[str, Any] = {"tick": ep.tick, "node": node.bt_name or node.kind, "path": node.path,
                           "status": status}
+    if node.ports and node.path not in ep.traced_ports:
+        ep.traced_ports.add(node.path)
+        ev["ports"] = node.ports
     if detail is not None:
         ev["detail"] = detail
     return ev
