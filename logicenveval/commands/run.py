@@ -76,6 +76,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from logicenveval.reporting.publish import publish
+    from logicenveval.reporting.terminal import path_lines
     from logicenveval.runner.config import RunConfig
     from logicenveval.runner.run import run as run_benchmark
 
@@ -121,8 +122,9 @@ def run(args: argparse.Namespace) -> int:
             print(f"exported {n} file(s) ({', '.join(formats)}) next to the environments")
         shown = publish(multi.run_dir, multi.results, multi.records)
         print(shown.summary)
-        print(f"run folder: {multi.run_dir} (seed runs {', '.join(str(d) for d in multi.seed_dirs)}; "
-              f"computed {multi.computed} unit(s), reused {multi.reused})")
+        print(f"computed {multi.computed} unit(s), reused {multi.reused} over "
+              f"{len(multi.seed_dirs)} seed run(s) (seed<N>/ in the run folder)")
+        print("\n".join(path_lines("run folder:", multi.run_dir)))
         _say_stale(multi.stale, multi.records, args.debug)
         return report_failures(multi.records)
     outcome = run_benchmark(config, show_progress=not args.quiet)
@@ -133,7 +135,8 @@ def run(args: argparse.Namespace) -> int:
         print(f"exported {len(written)} file(s) ({', '.join(formats)}) next to the environments")
     shown = publish(outcome.run_dir, outcome.results, outcome.records)
     print(shown.summary)
-    print(f"run folder: {outcome.run_dir} (computed {outcome.computed} unit(s), reused {outcome.reused})")
+    print(f"computed {outcome.computed} unit(s), reused {outcome.reused}")
+    print("\n".join(path_lines("run folder:", outcome.run_dir)))
     _say_stale(outcome.stale, outcome.records, args.debug)
     return report_failures(outcome.records)
 

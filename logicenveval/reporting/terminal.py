@@ -34,6 +34,13 @@ def _clip(text: str, width: int) -> str:
     return text if len(text) <= width else text[: width - 1] + "…"
 
 
+def path_lines(label: str, path: Path | str, width: int = WIDTH) -> list[str]:
+    """`label path` on one line, or the path on a line of its own when that is too wide: a path is
+    never clipped (it is there to be copied)."""
+    line = f"{label} {path}"
+    return [line] if len(line) <= width else [label, str(path)]
+
+
 def reasons_line(g: GeneratorReasons) -> str:
     """The method's reasons on one line: counts and shapes, most frequent kinds first."""
     if g.clean:
@@ -69,7 +76,5 @@ def terminal_summary(results: dict[str, Any], why: Sequence[GeneratorReasons], r
     console.print(summary_table(results))
     lines = ["Why (count × reason; examples in leaderboard.html):"]
     lines += [_clip("  " + reasons_line(g), width) for g in why]
-    page = f"leaderboard: {run_dir / 'leaderboard.html'}"
-    # a path is never clipped (it is there to be copied): a long one gets a line of its own
-    lines += [page] if len(page) <= width else ["leaderboard:", str(run_dir / "leaderboard.html")]
+    lines += path_lines("leaderboard:", run_dir / "leaderboard.html", width)
     return "\n".join(line.rstrip() for line in buf.getvalue().splitlines()) + "\n" + "\n".join(lines)

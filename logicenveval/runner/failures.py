@@ -51,9 +51,11 @@ def summary(records: Sequence[UnitRecord], generators: Sequence[str]) -> str:
         empty = [u for u in units if not failed(u) and not u.samples]
         lines.append(f"{g}: {len(bad)} of {len(units)} unit(s) failed"
                      + (f", {len(empty)} returned no environment" if empty else ""))
-        reasons = Counter(_reason(u) for u in bad + empty)
+        reasons: Counter[str] = Counter()
+        for u in bad + empty:  # failed attempts per cause: a unit that failed planned several
+            reasons[_reason(u)] += max(1, u.n_failed)
         for reason, n in reasons.most_common(MAX_REASONS):
-            lines.append(f"  {n} x {reason}")
+            lines.append(f"  {n} failed attempt(s): {reason}")
         if len(reasons) > MAX_REASONS:
             lines.append(f"  ... and {len(reasons) - MAX_REASONS} other reason(s); see results.json 'failures'")
     return "\n".join(lines)

@@ -363,7 +363,7 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     except GeneratorBroke as exc:
         shared_catalog()
         cause = exc.__context__ if exc.kind == "internal" else None
-        if spec.debug and cause is not None:
+        if spec.debug and isinstance(cause, Exception):  # sys.exit() & co. are recorded, shown
             raise cause from None
         return UnitRecord(generator=spec.generator, task_id=spec.task_id, error=redact(str(exc)),
                           error_kind=exc.kind, gen_seconds=time.perf_counter() - start,
