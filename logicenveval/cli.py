@@ -23,6 +23,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "tasks": ("logicenveval.commands.tasks", "list, show, validate or summarise benchmark tasks"),
     "evaluate": ("logicenveval.commands.evaluate", "score a folder of EnvSpecs made by any tool"),
     "generate": ("logicenveval.commands.generate", "run one generator on one task"),
+    "generators": ("logicenveval.commands.generators", "list the generators (built-in and plug-ins)"),
     "simulate": ("logicenveval.commands.simulate", "run a policy (BT) in an environment or situation"),
     "import-house": ("logicenveval.commands.import_house",
                      "convert a ProcTHOR/AI2-THOR house (schema 1.0.0) into an EnvSpec"),
