@@ -12,7 +12,14 @@ from rich.console import Console
 from rich.table import Table
 
 from logicenveval.metrics.uncertainty import MIN_TASKS
-from logicenveval.reporting.compare import INCONCLUSIVE, IMPROVED, REGRESSION, Comparison, Delta, Pair
+from logicenveval.reporting.compare import (
+    IMPROVED,
+    INCONCLUSIVE,
+    REGRESSION,
+    Comparison,
+    Delta,
+    Pair,
+)
 
 _WIDTH = 132
 

@@ -22,7 +22,12 @@ from logicenveval.metrics.records import UnitRecord
 from logicenveval.model.task import POLICY_KINDS, Task
 from logicenveval.runner.config import RunConfig, selected_tasks
 from logicenveval.runner.executors import Executor, make_executor
-from logicenveval.runner.fingerprint import changed_inputs, generator_fingerprint, stale_reason, unit_inputs
+from logicenveval.runner.fingerprint import (
+    changed_inputs,
+    generator_fingerprint,
+    stale_reason,
+    unit_inputs,
+)
 from logicenveval.runner.results import build_results, write_outputs
 from logicenveval.runner.store import RunStore
 from logicenveval.runner.unit import UnitSpec, chunk_units, planned_failures, run_units
