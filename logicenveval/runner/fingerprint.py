@@ -138,12 +138,12 @@ def catalog_fingerprint(path: Path = DEFAULT_CATALOG) -> str:
     return _file_digest(path, stat.st_mtime_ns, stat.st_size)
 
 
-def unit_inputs(ref: GeneratorRef, task_id: str, directory: str | Path | None,
-                generator: str | None = None) -> dict[str, str]:
-    """The fingerprints a unit of `ref` on `task_id` records (`generator`: its precomputed one)."""
+def unit_inputs(ref: GeneratorRef, task_id: str, directory: str | Path | None, *,
+                generator: str | None = None, task: str | None = None) -> dict[str, str]:
+    """The fingerprints a unit of `ref` on `task_id` records (`generator`, `task`: precomputed)."""
     return {"harness": harness_fingerprint(),
             "generator": generator if generator is not None else generator_fingerprint(ref),
-            "task": task_fingerprint(task_id, directory),
+            "task": task if task is not None else task_fingerprint(task_id, directory),
             "catalog": catalog_fingerprint()}
 
 

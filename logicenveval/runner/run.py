@@ -26,6 +26,7 @@ from logicenveval.runner.fingerprint import (
     changed_inputs,
     generator_fingerprint,
     stale_reason,
+    task_fingerprint,
     unit_inputs,
 )
 from logicenveval.runner.results import build_results, write_outputs
@@ -183,9 +184,10 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
         for r in refs for t in ids
     ]
     code = {r.name: generator_fingerprint(r) for r in refs}
+    files = {t: task_fingerprint(t, config.tasks_dir) for t in ids}
     by_name = {r.name: r for r in refs}
-    inputs = {(s.generator, s.task_id): unit_inputs(by_name[s.generator], s.task_id,
-                                                    config.tasks_dir, code[s.generator])
+    inputs = {(s.generator, s.task_id): unit_inputs(by_name[s.generator], s.task_id, config.tasks_dir,
+                                                    generator=code[s.generator], task=files[s.task_id])
               for s in specs}
     records: dict[tuple[str, str], UnitRecord] = {}
     pending: list[UnitSpec] = []
