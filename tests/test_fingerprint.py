@@ -61,7 +61,7 @@ def test_edited_plugin_recomputes_its_units_only(world: Path) -> None:
     after = _run(world)
     assert (after.computed, after.reused) == (2, 2)
     [(why, n)] = after.stale.items()
-    assert n == 2 and why.startswith("generator plug's code changed (plug-in src:")
+    assert n == 2 and why.startswith("generator plug's code changed\n  was plug-in src:")
 
 
 def test_edited_task_recomputes_its_units_only(world: Path) -> None:
@@ -71,7 +71,7 @@ def test_edited_task_recomputes_its_units_only(world: Path) -> None:
     after = _run(world)
     assert (after.computed, after.reused) == (2, 2)
     [(why, n)] = after.stale.items()
-    assert n == 2 and why.startswith(f"task {TASKS[1]}'s files changed (")
+    assert n == 2 and why.startswith(f"task {TASKS[1]}'s files changed\n  was ")
 
 
 def test_harness_and_catalog_fingerprints_recompute_everything(

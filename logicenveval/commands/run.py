@@ -160,7 +160,7 @@ def report_failures(records: Sequence[UnitRecord]) -> int:
     dead = failed_generators(records)
     if not dead:
         return 0
-    print(f"error: {len(dead)} generator(s) produced no environment in any unit (a row of failed "
+    print(f"error: {len(dead)} generator(s) produced no environment in any unit\n(a row of failed "
           "attempts is still a measurement; infrastructure failures are 'not measured'):\n"
           + summary(records, dead), file=sys.stderr)
     return 1

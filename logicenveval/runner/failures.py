@@ -13,6 +13,8 @@ from collections.abc import Sequence
 from logicenveval.metrics.records import UnitRecord
 
 MAX_REASONS = 5
+#: the summary's lines are clipped to this many columns (the full reasons: leaderboard.html)
+WIDTH = 100
 
 
 def failed(record: UnitRecord) -> bool:
@@ -54,8 +56,10 @@ def summary(records: Sequence[UnitRecord], generators: Sequence[str]) -> str:
         reasons: Counter[str] = Counter()
         for u in bad + empty:  # failed attempts per cause: a unit that failed planned several
             reasons[_reason(u)] += max(1, u.n_failed)
-        for reason, n in reasons.most_common(MAX_REASONS):
-            lines.append(f"  {n} failed attempt(s): {reason}")
+        for reason, n in reasons.most_common(MAX_REASONS):  # one terminal line each
+            line = f"  {n} failed attempt(s): {reason}"
+            lines.append(line if len(line) <= WIDTH else line[: WIDTH - 1] + "…")
         if len(reasons) > MAX_REASONS:
-            lines.append(f"  ... and {len(reasons) - MAX_REASONS} other reason(s); see results.json 'failures'")
+            lines.append(f"  ... and {len(reasons) - MAX_REASONS} other reason(s); see results.json "
+                         "'failures'")
     return "\n".join(lines)

@@ -13,6 +13,7 @@ import functools
 import hashlib
 import importlib.metadata
 import importlib.util
+import re
 import sys
 from collections.abc import Iterable, Mapping
 from pathlib import Path
@@ -156,11 +157,18 @@ def changed_inputs(stored: Mapping[str, str], current: Mapping[str, str]) -> lis
 
 def stale_reason(key: str, generator: str, task_id: str, stored: Mapping[str, str],
                  current: Mapping[str, str]) -> str:
-    """One line naming what changed, grouped by the run (units sharing a reason are counted)."""
+    """What changed (a line) and its fingerprints before and after (an indented line); the run
+    groups units by it and counts them."""
     if key == "unrecorded":
         return "written by a harness that recorded no fingerprints"
     if key == "fresh":
         return "--fresh"
     what = {"harness": "the harness", "generator": f"generator {generator}'s code",
             "task": f"task {task_id}'s files", "catalog": "the catalog"}[key]
-    return f"{what} changed ({stored.get(key, 'none')} -> {current.get(key)})"
+    detail = f"  was {_short(stored.get(key, 'none'))}, now {_short(current.get(key, ''))}"
+    return f"{what} changed\n{detail if len(detail) <= 100 else detail[:99] + '…'}"
+
+
+def _short(fingerprint: str) -> str:
+    """A fingerprint as a person reads it: digests cut to 8 hex digits (still telling apart)."""
+    return re.sub(r"\b([0-9a-f]{8})[0-9a-f]{8,}\b", r"\1", fingerprint)
