@@ -103,7 +103,8 @@ class Delta:
     def to_json(self) -> dict[str, Any]:
         return {"metric": self.metric, "key": ".".join(self.path), "a": self.before, "b": self.after,
                 "change": self.change, "ci95": None if self.ci95 is None else list(self.ci95),
-                "direction": self.direction, "verdict": self.verdict or "unchanged"}
+                "direction": self.direction,
+                "verdict": None if self.change is None else (self.verdict or "unchanged")}
 
 
 @dataclass(frozen=True)

@@ -79,7 +79,7 @@ def comparison_text(c: Comparison, run_a: str, run_b: str) -> str:
         lines += [f"  {m.text}" for m in c.missing]
     lines.append(f"{len(c.regressions)} regression(s), {len(c.improvements)} improvement(s), "
                  f"{len(c.inconclusive)} inconclusive")
-    for mark, pick in (("REGRESSION  ", REGRESSION), ("improved    ", IMPROVED),
+    for mark, pick in (("REGRESSION", REGRESSION), ("improved", IMPROVED),
                        ("inconclusive", INCONCLUSIVE)):
         lines += [f"  {mark} {d.generator} {d.metric}: {_num(d.change, d.percent, True)} "
                   f"{interval_text(d, p.n_tasks)}" for p in c.pairs for d in p.deltas if d.verdict == pick]
