@@ -21,9 +21,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                    help="offline (rule-based, no network) | oracle (the GT plans: an upper bound) | "
                    "openai:<model> (any OpenAI-compatible endpoint) | replay:<cache.sqlite> | "
                    "llamacpp:<model.gguf> (a managed local llama.cpp server) | "
-                   "noisy:<model> (a model whose replies are perturbed; rate= in --model-args); default "
-                   "offline "
-                   "(docs/llm.md)")
+                   "noisy:<model> (a model whose replies are perturbed; rate= in --model-args); "
+                   "default offline (docs/llm.md)")
     p.add_argument("--model-args", default="", help="key=value,... e.g. base_url=...,api_key_env=...")
     p.add_argument("--generators", default=DEFAULT_GENERATORS, type=options.name_list,
                    help="comma-separated: built-in names (ablations by name), installed plug-ins, "

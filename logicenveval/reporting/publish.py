@@ -20,7 +20,7 @@ from logicenveval.reporting.why import reasons, summary_text
 
 @dataclass(frozen=True)
 class Published:
-    #: the leaderboard as Markdown (what the command prints first)
+    #: the full leaderboard as Markdown (leaderboard.md)
     table: str
     #: why environments were rejected or failed, per generator, with examples
     why: str

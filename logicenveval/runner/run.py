@@ -199,7 +199,7 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
             pending.append(spec)  # never computed, corrupt, edited, or failed for a reason outside it
             continue
         changed = ["fresh"] if config.fresh else changed_inputs(stored.inputs, inputs[key])
-        if config.debug and stored.error_kind == "internal":
+        if config.debug and (stored.error_kind == "internal" or stored.traceback is not None):
             changed = changed or ["debug"]
         if changed:  # made by other code or data: recomputed, and the run says why
             pending.append(spec)
