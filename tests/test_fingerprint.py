@@ -120,3 +120,24 @@ def test_cli_says_what_changed(world: Path, capsys: pytest.CaptureFixture[str]) 
     assert "recomputed 2 unit(s): generator plug's code changed" in out
     assert main([*args, "--fresh"]) == 0
     assert "recomputed 2 unit(s): --fresh" in capsys.readouterr().out
+
+
+def test_evaluate_rejudges_units_when_the_harness_or_a_task_changed(
+        world: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from logicenveval.generators.generate import generate_to_folder
+    from logicenveval.runner.score_envs import EvaluateConfig, evaluate_envs
+
+    for t in TASKS:
+        generate_to_folder(generator="cot", task_id=t, model="offline", model_args="",
+                           tasks_dir=str(world / "tasks"), seed=0, out=world / "envs", render=False,
+                           generator_args={"max_environments": 1})
+    config = EvaluateConfig(envs_dir=str(world / "envs"), tasks_dir=str(world / "tasks"),
+                            executor="inprocess", output=str(world / "scored"))
+    assert evaluate_envs(config).computed == 2
+    assert evaluate_envs(config).computed == 0
+    task_json = world / "tasks" / TASKS[0] / "task.json"
+    task_json.write_text(task_json.read_text(encoding="utf-8") + "\n", encoding="utf-8")
+    again = evaluate_envs(config)
+    assert (again.computed, list(again.stale.values())) == (1, [1])
+    monkeypatch.setattr(fingerprint, "harness_fingerprint", lambda: "9.9.9 src:bumped")
+    assert evaluate_envs(config).computed == 2

@@ -45,6 +45,10 @@ def run(args: argparse.Namespace) -> int:
     print(f"run folder: {outcome.run_dir} (scored {outcome.computed} task folder(s), "
           f"reused {outcome.reused})")
     from logicenveval.commands.run import report_failures
+    from logicenveval.runner.run import stale_text
+
+    if outcome.stale:
+        print(stale_text(outcome.stale))
 
     return report_failures(outcome.records)
 

@@ -148,6 +148,13 @@ def unit_inputs(ref: GeneratorRef, task_id: str, directory: str | Path | None, *
             "catalog": catalog_fingerprint()}
 
 
+def scored_inputs(task_id: str, directory: str | Path | None) -> dict[str, str]:
+    """What a unit of `evaluate` records: no generator ran (the environment files are in the
+    folder's identity), but the harness, the task and the catalog judged them."""
+    return {"harness": harness_fingerprint(), "task": task_fingerprint(task_id, directory),
+            "catalog": catalog_fingerprint()}
+
+
 def changed_inputs(stored: Mapping[str, str], current: Mapping[str, str]) -> list[str]:
     """The inputs that differ (all of them for a unit that recorded none: an older harness)."""
     if not stored:
