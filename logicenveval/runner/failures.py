@@ -7,13 +7,14 @@ in one screen instead of in N unit files. Partial failures only appear in the le
 
 from __future__ import annotations
 
+import textwrap
 from collections import Counter
 from collections.abc import Sequence
 
 from logicenveval.metrics.records import UnitRecord
 
 MAX_REASONS = 5
-#: the summary's lines are clipped to this many columns (the full reasons: leaderboard.html)
+#: the summary's lines are wrapped to this many columns
 WIDTH = 100
 
 
@@ -56,9 +57,9 @@ def summary(records: Sequence[UnitRecord], generators: Sequence[str]) -> str:
         reasons: Counter[str] = Counter()
         for u in bad + empty:  # failed attempts per cause: a unit that failed planned several
             reasons[_reason(u)] += max(1, u.n_failed)
-        for reason, n in reasons.most_common(MAX_REASONS):  # one terminal line each
-            line = f"  {n} failed attempt(s): {reason}"
-            lines.append(line if len(line) <= WIDTH else line[: WIDTH - 1] + "…")
+        for reason, n in reasons.most_common(MAX_REASONS):  # wrapped, never cut: it is the cause
+            lines += textwrap.wrap(f"{n} failed attempt(s): {reason}", WIDTH, initial_indent="  ",
+                                   subsequent_indent="    ", break_on_hyphens=False)
         if len(reasons) > MAX_REASONS:
             lines.append(f"  ... and {len(reasons) - MAX_REASONS} other reason(s); see results.json "
                          "'failures'")
