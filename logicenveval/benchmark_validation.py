@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import itertools
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -66,11 +66,22 @@ class TaskReport:
 
 
 def validate_all(directory: str | Path | None = None, catalog: Catalog | None = None,
-                 *, simulate: bool = True, worlds: int = DEFAULT_WORLDS) -> list[TaskReport]:
-    """Validate every task folder of `directory` (default: the shipped benchmark)."""
+                 *, simulate: bool = True, worlds: int = DEFAULT_WORLDS,
+                 ids: Sequence[str] = (),
+                 progress: Callable[[int, int, str], None] | None = None) -> list[TaskReport]:
+    """Validate every task folder of `directory` (default: the shipped benchmark), or those of
+    `ids`; `progress(done, total, task)` is called before each task (a long check: seconds each)."""
     d = tasks_dir(directory)
-    folders = sorted(p for p in d.iterdir() if p.is_dir() and not p.name.startswith("."))
-    return [validate_task(f, d, catalog, simulate=simulate, worlds=worlds) for f in folders]
+    folders: list[Path | str] = list(ids) or sorted(
+        p for p in d.iterdir() if p.is_dir() and not p.name.startswith("."))
+    reports = []
+    for i, f in enumerate(folders):
+        if progress is not None:
+            progress(i, len(folders), f.name if isinstance(f, Path) else f)
+        reports.append(validate_task(f, d, catalog, simulate=simulate, worlds=worlds))
+    if progress is not None:
+        progress(len(folders), len(folders), "")
+    return reports
 
 
 def write_models(directory: str | Path | None = None, ids: list[str] | None = None) -> list[Path]:

@@ -7,7 +7,9 @@ Each command lives in `logicenveval/commands/<name>.py` with `add_arguments(pars
 from __future__ import annotations
 
 import argparse
+import contextlib
 import importlib
+import os
 import sys
 from collections.abc import Sequence
 from typing import NoReturn
@@ -22,6 +24,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "tasks": ("logicenveval.commands.tasks", "list, show, validate or summarise benchmark tasks"),
     "evaluate": ("logicenveval.commands.evaluate", "score a folder of EnvSpecs made by any tool"),
     "generate": ("logicenveval.commands.generate", "run one generator on one task"),
+    "generators": ("logicenveval.commands.generators", "list the generators (built-in and plug-ins)"),
     "simulate": ("logicenveval.commands.simulate", "run a policy (BT) in an environment or situation"),
     "import-house": ("logicenveval.commands.import_house",
                      "convert a ProcTHOR/AI2-THOR house (schema 1.0.0) into an EnvSpec"),
@@ -61,8 +64,16 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv: Sequence[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(list(argv) if argv is not None else None)
+    if getattr(args, "debug", False):  # every exception with its traceback, for a debugger
+        try:
+            debug_code: int = args._run(args)
+        except BrokenPipeError:
+            return _broken_pipe()
+        return debug_code
     try:
         code: int = args._run(args)
+    except BrokenPipeError:
+        return _broken_pipe()
     except LogicEnvEvalError as exc:
         print(f"error: {redact(str(exc))}", file=sys.stderr)
         return exc.exit_code
@@ -77,6 +88,20 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(f"interrupted;{kept or ' nothing was written partially'}", file=sys.stderr)
         return 130
     return code
+
+
+#: exit status after the reader of our output went away (`... | head`): the output is
+#: incomplete, said without a message (as Python's documented recipe and rich's consoles do)
+EXIT_BROKEN_PIPE = 1
+
+
+def _broken_pipe() -> int:
+    """The reader closed the pipe: stop quietly, like a Unix tool. Standard output is pointed at
+    the null device so that the interpreter's final flush does not fail a second time."""
+    with contextlib.suppress(OSError, ValueError):
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    return EXIT_BROKEN_PIPE
 
 
 #: commands whose finished units survive a failure (a re-run of the same command resumes)

@@ -172,10 +172,11 @@ def test_unreachable_endpoint_is_one_error_line(tmp_path: Path, capsys: pytest.C
 def test_generate_writes_envs_plan_and_renders(tmp_path: Path) -> None:
     assert main(["generate", "--generator", "logicenvgen", "--task", "clean_living_room",
                  "--model", "offline", "--out", str(tmp_path)]) == 0
-    plan = json.loads((tmp_path / "plan.json").read_text())
+    out = tmp_path / "clean_living_room"  # one folder per task: what `evaluate` scores
+    plan = json.loads((out / "plan.json").read_text())
     assert plan["selector"] == "mtsa" and len(plan["trajectories"]) == 3
-    assert len(list(tmp_path.glob("logicenvgen-*.json"))) == 3
-    assert len(list(tmp_path.glob("logicenvgen-*.svg"))) == 3
+    assert len(list(out.glob("logicenvgen-*.json"))) == 3
+    assert len(list(out.glob("logicenvgen-*.svg"))) == 3
 
 
 @pytest.mark.slow

@@ -82,11 +82,12 @@ def test_compare_directions_and_tolerance() -> None:
     base = _results(0.9, 10.0, 1.0)
     assert not compare_results(base, _results(0.89, 50.0, 1.01)).regressions
     regs = {d.metric for d in compare_results(base, _results(0.85, 50.0, 1.5)).regressions}
-    assert regs == {"LogCov", "Redundancy"}
+    assert regs == {"LogCov"}  # Redundancy has no direction (issue 36): reported, not judged
     timing = {d.metric for d in compare_results(base, _results(0.9, 50.0, 1.0), judge_timing=True).regressions}
     assert timing == {"ST (ms)"}
     better = compare_results(base, _results(0.95, 10.0, 0.5))
-    assert {d.metric for d in better.improvements} == {"LogCov", "Redundancy"} and not better.failed
+    assert {d.metric for d in better.improvements} == {"LogCov"} and not better.failed
+    assert {d.metric: d.verdict for d in better.deltas}["Redundancy"] == "not judged"
 
 
 def test_files_intact_checks_the_files_a_unit_wrote(tmp_path: Path) -> None:

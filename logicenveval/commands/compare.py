@@ -25,6 +25,9 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                    help="a generator or task of A that B lacks (or did not measure) is reported, "
                    "not a regression")
     p.add_argument("--json", action="store_true", help="print the comparison as JSON")
+    p.add_argument("--html", default=None, metavar="PAGE",
+                   help="also write the comparison as an HTML page (per-task differences, links "
+                   "to both runs' detail pages)")
 
 
 def run(args: argparse.Namespace) -> int:
@@ -47,4 +50,11 @@ def run(args: argparse.Namespace) -> int:
                          indent=2))
     else:
         print(comparison_text(comparison, args.run_a, args.run_b or args.run_a))
+    if args.html:
+        from logicenveval.reporting.compare_html import write_comparison_html
+
+        write_comparison_html(Path(args.html), comparison, a, b, Path(args.run_a),
+                              Path(args.run_b or args.run_a))
+        if not args.json:
+            print(f"comparison page: {args.html}")
     return 1 if comparison.failed else 0

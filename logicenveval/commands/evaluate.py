@@ -37,15 +37,18 @@ def run(args: argparse.Namespace) -> int:
     )
     outcome = evaluate_envs(config)
     shown = publish(outcome.run_dir, outcome.results, outcome.records)
-    print(shown.table)
+    print(shown.summary)
     for folder in outcome.skipped_folders:
         print(f"skipped {folder}/: not a task of the tasks dir")
     for f in outcome.results["failures"].get(config.generator_name, []):
         print(f"failure {f['task']}: {f.get('env_id') or ''} {f['message']}".replace("  ", " "))
     print(f"run folder: {outcome.run_dir} (scored {outcome.computed} task folder(s), "
           f"reused {outcome.reused})")
-    print(shown.why)
     from logicenveval.commands.run import report_failures
+    from logicenveval.runner.run import stale_text
+
+    if outcome.stale:
+        print(stale_text(outcome.stale))
 
     return report_failures(outcome.records)
 

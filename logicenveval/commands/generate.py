@@ -9,7 +9,11 @@ from logicenveval.scene.layout import DEFAULT_SOLVER, SOLVERS
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--generator", required=True, help="a registered generator, e.g. logicenvgen")
+    p.add_argument("--generator", required=True,
+                   help="a built-in name, an installed plug-in or PKG.MODULE:ATTR, e.g. logicenvgen "
+                   "(`python -m logicenveval generators list`)")
+    p.add_argument("--generator-args", default={}, type=options.factory_args, metavar="key=value,...",
+                   help="keyword arguments of the generator's factory (as `run --generator-args`)")
     p.add_argument("--task", required=True, help="task id")
     p.add_argument("--model", default="offline", help="offline | oracle | openai:<model> | replay:<file>")
     p.add_argument("--model-args", default="", help="key=value,...")
@@ -17,7 +21,9 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--seed", type=options.int_range(0), default=0)
     p.add_argument("--layout-solver", default=DEFAULT_SOLVER, choices=SOLVERS,
                    help=f"layout backend (default {DEFAULT_SOLVER})")
-    p.add_argument("--out", required=True, help="output folder")
+    p.add_argument("--out", required=True,
+                   help="output folder: the environments go to OUT/<task>/, the layout `evaluate OUT` "
+                   "scores")
     p.add_argument("--cache", default=None, help="SQLite cache of LLM replies")
     p.add_argument("--no-render", action="store_true", help="skip the SVG renders")
 
@@ -35,6 +41,7 @@ def run(args: argparse.Namespace) -> int:
             generator=args.generator, task_id=args.task, model=args.model, model_args=args.model_args,
             tasks_dir=args.tasks_dir, seed=args.seed, out=Path(args.out), cache=args.cache,
             render=not args.no_render, layout_solver=args.layout_solver,
+            generator_args=args.generator_args,
         )
     except (LogicEnvEvalError, OSError):
         raise

@@ -108,6 +108,15 @@ def _scalar(text: str) -> str | int | float | bool:
     return text
 
 
+def factory_args(text: str) -> dict[str, str | int | float | bool]:
+    """`key=value,...` -> {key: value}: the factory arguments of the one generator of `generate`."""
+    try:
+        return generator_args("generator:" + text)[1]
+    except argparse.ArgumentTypeError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not key=value,... (e.g. n_envs=5,style=sparse)"
+                                         ) from None
+
+
 def generator_args(text: str) -> tuple[str, dict[str, str | int | float | bool]]:
     """`NAME:key=value,...` -> (NAME, {key: value}); values are numbers, true/false or text.
 

@@ -18,11 +18,16 @@ if TYPE_CHECKING:
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--model", default="offline",
-                   help="offline | oracle | openai:<model> | replay:<cache.sqlite> (default offline)")
+                   help="offline (rule-based, no network) | oracle (the GT plans: an upper bound) | "
+                   "openai:<model> (any OpenAI-compatible endpoint) | replay:<cache.sqlite> | "
+                   "llamacpp:<model.gguf> (a managed local llama.cpp server) | "
+                   "noisy:<model> (a model whose replies are perturbed; rate= in --model-args); "
+                   "default offline (docs/llm.md)")
     p.add_argument("--model-args", default="", help="key=value,... e.g. base_url=...,api_key_env=...")
     p.add_argument("--generators", default=DEFAULT_GENERATORS, type=options.name_list,
                    help="comma-separated: built-in names (ablations by name), installed plug-ins, "
-                   "or PKG.MODULE:ATTR (docs/own-generator.md)")
+                   f"or PKG.MODULE:ATTR (default {','.join(DEFAULT_GENERATORS)}; see "
+                   "`python -m logicenveval generators list`, docs/own-generator.md)")
     p.add_argument("--tasks", default=(), type=options.task_list, help="all or comma-separated task ids")
     p.add_argument("--tasks-dir", default=None, help="folder of <task_id>/task.json (default: the benchmark)")
     p.add_argument("--limit", type=options.int_range(1), default=None, help="only the first N tasks")
@@ -55,6 +60,13 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                    metavar="NAME:key=value,...",
                    help="keyword arguments of a generator's factory (repeat per generator; NAME as "
                    "in --generators); part of the run's identity (docs/own-generator.md)")
+    p.add_argument("--fresh", action="store_true",
+                   help="recompute every unit (by default a unit is reused only when the "
+                   "configuration, harness, generator code, task files and catalog are unchanged)")
+    p.add_argument("--debug", action="store_true",
+                   help="run in this process and re-raise a generator's exception with its "
+                   "traceback (for a debugger: python -m pdb -m logicenveval run --debug ...); "
+                   "also prints the stored traceback of every failed unit")
     p.add_argument("--quiet", action="store_true", help="no progress bars")
     p.add_argument("--export", default="", metavar="FORMATS",
                    help="also write procthor and/or glb files next to every environment "
@@ -63,6 +75,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from logicenveval.reporting.publish import publish
+    from logicenveval.reporting.terminal import path_lines
     from logicenveval.runner.config import RunConfig
     from logicenveval.runner.run import run as run_benchmark
 
@@ -85,6 +98,8 @@ def run(args: argparse.Namespace) -> int:
         brief=args.brief,
         unit_timeout=args.unit_timeout,
         generator_args=_generator_args(args.generator_args),
+        fresh=args.fresh,
+        debug=args.debug,
     )
     formats = [f.strip() for f in args.export.split(",") if f.strip()]
     if formats:
@@ -105,10 +120,11 @@ def run(args: argparse.Namespace) -> int:
             n = sum(len(export_run(d, formats)) for d in multi.seed_dirs)
             print(f"exported {n} file(s) ({', '.join(formats)}) next to the environments")
         shown = publish(multi.run_dir, multi.results, multi.records)
-        print(shown.table)
-        print(f"run folder: {multi.run_dir} (seed runs {', '.join(str(d) for d in multi.seed_dirs)}; "
-              f"computed {multi.computed} unit(s), reused {multi.reused})")
-        print(shown.why)
+        print(shown.summary)
+        print(f"computed {multi.computed} unit(s), reused {multi.reused} over "
+              f"{len(multi.seed_dirs)} seed run(s) (seed<N>/ in the run folder)")
+        print("\n".join(path_lines("run folder:", multi.run_dir)))
+        _say_stale(multi.stale, multi.records, args.debug)
         return report_failures(multi.records)
     outcome = run_benchmark(config, show_progress=not args.quiet)
     if formats:
@@ -117,10 +133,23 @@ def run(args: argparse.Namespace) -> int:
         written = export_run(outcome.run_dir, formats)
         print(f"exported {len(written)} file(s) ({', '.join(formats)}) next to the environments")
     shown = publish(outcome.run_dir, outcome.results, outcome.records)
-    print(shown.table)
-    print(f"run folder: {outcome.run_dir} (computed {outcome.computed} unit(s), reused {outcome.reused})")
-    print(shown.why)
+    print(shown.summary)
+    print(f"computed {outcome.computed} unit(s), reused {outcome.reused}")
+    print("\n".join(path_lines("run folder:", outcome.run_dir)))
+    _say_stale(outcome.stale, outcome.records, args.debug)
     return report_failures(outcome.records)
+
+
+def _say_stale(stale: dict[str, int], records: Sequence[UnitRecord], debug: bool) -> None:
+    """Why stored units were recomputed; with --debug, every failed unit's traceback (stderr)."""
+    from logicenveval.runner.run import stale_text
+
+    if stale:
+        print(stale_text(stale))
+    if debug:
+        for r in records:
+            if r.traceback:
+                print(f"--- {r.generator} on {r.task_id}: {r.error}\n{r.traceback}", file=sys.stderr)
 
 
 def report_failures(records: Sequence[UnitRecord]) -> int:
@@ -130,7 +159,7 @@ def report_failures(records: Sequence[UnitRecord]) -> int:
     dead = failed_generators(records)
     if not dead:
         return 0
-    print(f"error: {len(dead)} generator(s) produced no environment in any unit (a row of failed "
+    print(f"error: {len(dead)} generator(s) produced no environment in any unit\n(a row of failed "
           "attempts is still a measurement; infrastructure failures are 'not measured'):\n"
           + summary(records, dead), file=sys.stderr)
     return 1

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
+from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING
 
 from logicenveval.commands import options
@@ -104,7 +106,7 @@ def _validate(args: argparse.Namespace) -> int:
     from rich.table import Table
 
     from logicenveval.benchmark import tasks_dir
-    from logicenveval.benchmark_validation import validate_all, validate_task
+    from logicenveval.benchmark_validation import validate_all
     from logicenveval.sim.worlds import DEFAULT_WORLDS
 
     simulate = not args.no_simulate
@@ -114,10 +116,9 @@ def _validate(args: argparse.Namespace) -> int:
         for path in write_models(args.tasks_dir, args.task):
             print(f"updated TreeNodesModel of {path}")
     worlds = args.worlds or DEFAULT_WORLDS
-    if args.task:
-        reports = [validate_task(t, args.tasks_dir, simulate=simulate, worlds=worlds) for t in args.task]
-    else:
-        reports = validate_all(args.tasks_dir, simulate=simulate, worlds=worlds)
+    with _progress("validating") as progress:
+        reports = validate_all(args.tasks_dir, simulate=simulate, worlds=worlds,
+                               ids=args.task or (), progress=progress)
     table = Table(title=f"validation of {tasks_dir(args.tasks_dir)}")
     for col in ("task", "situations", "counterfactual", "unreachable", "lackbranch", "result"):
         table.add_column(col)
@@ -235,6 +236,23 @@ def _positive(text: str) -> int:
     if n < 1:
         raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
     return n
+
+
+@contextlib.contextmanager
+def _progress(what: str) -> Iterator[Callable[[int, int, str], None]]:
+    """A progress bar on stderr (stdout keeps only the result) for a per-task callback
+    `(done, total, task)`; it disappears when done."""
+    from rich.console import Console
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+
+    with Progress(TextColumn(f"{what} {{task.description}}"), BarColumn(), MofNCompleteColumn(),
+                  TimeElapsedColumn(), console=Console(stderr=True), transient=True) as bar:
+        job = bar.add_task("", total=None)
+
+        def advance(done: int, total: int, task: str) -> None:
+            bar.update(job, completed=done, total=total, description=task)
+
+        yield advance
 
 
 def _console() -> Console:

@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -50,19 +51,24 @@ def generate_to_folder(
     cache: str | None = None,
     render: bool = True,
     layout_solver: Solver = DEFAULT_SOLVER,
+    generator_args: dict[str, Any] | None = None,
 ) -> GenerateSummary:
-    """Generate with the same seeding as a run's unit, so results match `run` exactly."""
+    """Generate with the same seeding as a run's unit, so results match `run` exactly.
+
+    The files go to `out/<task_id>/` (environments, renders, plan.json): the layout `evaluate`
+    scores, one folder per task; the generator's scratch space is `out/.work/<task_id>/`."""
     from logicenveval.llm.registry import make_model
 
     task = load_task(task_id, tasks_dir)
     catalog = load_catalog()
     chat = make_model(model, model_args, cache_path=cache or out / "llm_cache.sqlite", run_dir=out)
-    ref = resolve_generator(generator)
-    gen = make_generator(ref.target)
+    ref = resolve_generator(generator, generator_args)
+    gen = make_generator(ref.target, **ref.args)
     ctx = GenerationContext(model=chat, catalog=catalog,
                             rng=np.random.default_rng(unit_seed(seed, ref.name, task_id)),
-                            seed=seed, work_dir=out, layout_solver=layout_solver)
+                            seed=seed, work_dir=out / ".work" / task.id, layout_solver=layout_solver)
     result = gen.generate(task.brief(), ctx)
+    out = out / task.id
     summary = GenerateSummary(out=out, result=result)
     out.mkdir(parents=True, exist_ok=True)
     for env in result.envs:

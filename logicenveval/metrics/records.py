@@ -104,6 +104,11 @@ class UnitRecord(BaseModel):
     attempts: list[Attempt] = Field(default_factory=list)
     #: a search of the generator that stopped at its budget, and what it used instead
     budget_hit: str | None = None
+    #: the full traceback (redacted) of an exception that failed the unit as a whole
+    traceback: str | None = None
+    #: fingerprints of what made the unit: harness, generator code, task files, catalog
+    #: (`runner.fingerprint`); a resumed run recomputes the unit when one changed
+    inputs: dict[str, str] = Field(default_factory=dict)
 
     @property
     def measured(self) -> bool:

@@ -37,6 +37,8 @@ class FailureEntry(BaseModel):
     env_id: str | None = None
     kind: str | None = Field(default=None, description="infrastructure, generation or internal (units)")
     seed: int | None = Field(default=None, description="the seed run it came from (run --seeds)")
+    attempts: int | None = Field(default=None, description="failed attempts of a unit that "
+                                 "failed as a whole (stage `unit`): what the reasons count")
 
 
 class Timing(BaseModel):

@@ -2,14 +2,16 @@
 
 Pairs are generator X of run A against generator Y of run B: by default every generator of A
 against the one of the same name in B; `--gen-a/--gen-b` compare two different generators, also
-of one run. Every metric has a direction. The comparison is paired over tasks: both sides'
-per-task figures are resampled with the same task draws (and each side's seeds within a drawn
-task), giving a 95 % bootstrap interval of the difference B - A (`n/a` with fewer than two
-tasks). A change is a regression only when it goes against the metric's direction by more than
-the tolerance (absolute, in the metric's unit: fractions for rates) AND its interval excludes 0,
-so noise from a few tasks is not flagged; an improvement is the same in the metric's direction.
-Without an interval the tolerance alone decides. Timing (ST ms) is shown but judged only when
-asked. Anything of A missing from B — a generator, a task, a measurement (a row or task B did not
+of one run. A metric is judged only when it has a declared direction (`DIRECTION`: the rates,
+LD and JI, higher is better); Redundancy, ST and the environment count are reported, not judged
+(a generator that builds fewer environments must not look "improved"). The comparison is paired
+over tasks: both sides' per-task figures are resampled with the same task draws (and each side's
+seeds within a drawn task), giving a 95 % bootstrap interval of the difference B - A (`n/a` with
+fewer than two tasks). A change is a regression only when it goes against the metric's direction
+by more than the tolerance (absolute, in the metric's unit: fractions for rates) AND its interval
+excludes 0, so noise from a few tasks is not flagged; an improvement is the same in the metric's
+direction; an interval that holds 0 but reaches beyond the tolerance is "inconclusive" (`verdict`).
+Without an interval the tolerance alone decides. Timing (ST ms) is judged only when asked. Anything of A missing from B — a generator, a task, a measurement (a row or task B did not
 measure) — is a regression unless allowed; tasks whose definition changed between the runs are
 refused unless the comparison is restricted to the unchanged ones.
 """
@@ -23,12 +25,45 @@ from logicenveval.errors import ConfigError
 from logicenveval.metrics.uncertainty import cells_of, paired_difference, point_metrics
 from logicenveval.reporting.tables import COLUMNS, is_measured, metric
 
-#: metrics where lower is better; all others are better when higher
-LOWER_IS_BETTER = frozenset({("st_ms",), ("st_ticks",), ("redundancy",)})
-TIMING = frozenset({("st_ms",)})
-NOT_JUDGED = frozenset({("n_envs",), ("n_failed",)})
+#: each judged metric's declared direction: "higher" is better (every other metric is reported,
+#: never judged: Redundancy is good near 1 and below 1 means under-coverage, ST and Envs follow
+#: how many environments a generator built, so fewer environments must not read as "improved")
+DIRECTION: dict[tuple[str, ...], str] = {
+    path: "higher" for _, path, _ in COLUMNS
+    if path not in {("st_ms",), ("st_ticks",), ("redundancy",), ("n_envs",)}
+}
+#: ST (ms) is judged, lower being better, only with `judge_timing` (--judge-timing)
+TIMING = ("st_ms",)
 
-REGRESSION, IMPROVED, UNCHANGED, INFO = "regression", "improved", "", "not judged"
+REGRESSION, IMPROVED, UNCHANGED, INCONCLUSIVE, INFO = (
+    "regression", "improved", "", "inconclusive", "not judged")
+
+
+def direction(path: tuple[str, ...], judge_timing: bool = False) -> str | None:
+    """"higher", "lower" or None (reported, not judged) for a metric of `COLUMNS`."""
+    if judge_timing and path == TIMING:
+        return "lower"
+    return DIRECTION.get(path)
+
+
+def verdict(diff: float | None, ci: tuple[float, float] | None, tolerance: float,
+            way: str | None) -> str:
+    """What a change says. Without a direction: "not judged". With an interval: a regression
+    or improvement when the change exceeds the tolerance and the interval excludes 0;
+    "inconclusive" when the interval holds 0 but reaches beyond the tolerance (a change that
+    large is as compatible with the data as none); else unchanged. Without an interval (one
+    task, or results without per-task figures) the tolerance alone decides."""
+    if diff is None:
+        return UNCHANGED
+    if way is None:
+        return INFO
+    gain = diff if way == "higher" else -diff
+    clear = ci is None or ci[0] > 0 or ci[1] < 0
+    if abs(diff) > tolerance and clear:
+        return IMPROVED if gain > 0 else REGRESSION
+    if ci is not None and ci[0] <= 0 <= ci[1] and (ci[0] < -tolerance or ci[1] > tolerance):
+        return INCONCLUSIVE
+    return UNCHANGED
 
 
 @dataclass(frozen=True)
@@ -38,12 +73,14 @@ class Delta:
     metric: str
     before: float | None
     after: float | None
-    #: regression, improved, "" (no change beyond the tolerance and noise) or "not judged"
+    #: regression, improved, inconclusive, "" (unchanged) or "not judged" (`verdict`)
     verdict: str
     #: 95 % paired bootstrap interval of after - before (None: no per-task figures, or < 2 tasks)
     ci95: tuple[float, float] | None = None
     percent: bool = False
     path: tuple[str, ...] = ()
+    #: "higher" or "lower" is better, or None: reported, not judged
+    direction: str | None = None
 
     @property
     def change(self) -> float | None:
@@ -66,7 +103,8 @@ class Delta:
     def to_json(self) -> dict[str, Any]:
         return {"metric": self.metric, "key": ".".join(self.path), "a": self.before, "b": self.after,
                 "change": self.change, "ci95": None if self.ci95 is None else list(self.ci95),
-                "verdict": self.verdict or "unchanged"}
+                "direction": self.direction,
+                "verdict": None if self.change is None else (self.verdict or "unchanged")}
 
 
 @dataclass(frozen=True)
@@ -120,6 +158,10 @@ class Comparison:
         return [d for d in self.deltas if d.improved]
 
     @property
+    def inconclusive(self) -> list[Delta]:
+        return [d for d in self.deltas if d.verdict == INCONCLUSIVE]
+
+    @property
     def failed(self) -> bool:
         """What makes `compare` exit 1: a regression, or something missing from B (unless allowed)."""
         return bool(self.regressions) or (bool(self.missing) and not self.allow_missing)
@@ -132,7 +174,7 @@ class Comparison:
             "missing": [{"generator": m.generator, "task": m.task or None, "why": m.why} for m in self.missing],
             "new_in_b": self.new,
             "regressions": len(self.regressions), "improvements": len(self.improvements),
-            "failed": self.failed,
+            "inconclusive": len(self.inconclusive), "failed": self.failed,
         }
 
 
@@ -211,8 +253,6 @@ def _pair(x: str, y: str, va: dict[str, Any], vb: dict[str, Any], ca: dict[tuple
         point_a, point_b = point_metrics(list(ca.values())), point_metrics(list(cb.values()))
     deltas = []
     for header, path, pct in COLUMNS:
-        judged = path not in NOT_JUDGED and (judge_timing or path not in TIMING)
-        lower = path in LOWER_IS_BETTER
         ci: tuple[float, float] | None = None
         if path in paired and point_a is not None and point_b is not None:
             _, lo, hi = paired[path]
@@ -221,12 +261,7 @@ def _pair(x: str, y: str, va: dict[str, Any], vb: dict[str, Any], ca: dict[tuple
         else:  # results without per-task figures: the tolerance alone
             before, after = metric(va, path), metric(vb, path)
         diff = None if before is None or after is None else after - before
-        verdict = UNCHANGED
-        if diff is not None:
-            gain = -diff if lower else diff
-            beyond = abs(diff) > tolerance
-            clear = ci is None or (ci[0] > 0 or ci[1] < 0)
-            if beyond and clear:
-                verdict = (IMPROVED if gain > 0 else REGRESSION) if judged else INFO
-        deltas.append(Delta(x, y, header, before, after, verdict, ci, pct, path))
+        way = direction(path, judge_timing)
+        deltas.append(Delta(x, y, header, before, after, verdict(diff, ci, tolerance, way), ci, pct,
+                            path, way))
     return Pair(x, y, shared, deltas, len(shared))

@@ -12,7 +12,14 @@ from rich.console import Console
 from rich.table import Table
 
 from logicenveval.metrics.uncertainty import MIN_TASKS
-from logicenveval.reporting.compare import IMPROVED, REGRESSION, Comparison, Delta, Pair
+from logicenveval.reporting.compare import (
+    IMPROVED,
+    INCONCLUSIVE,
+    REGRESSION,
+    Comparison,
+    Delta,
+    Pair,
+)
 
 _WIDTH = 132
 
@@ -30,12 +37,13 @@ def interval_text(d: Delta, n_tasks: int) -> str:
     return f"[{_num(d.ci95[0], d.percent, True)}, {_num(d.ci95[1], d.percent, True)}]"
 
 
-def _verdict(d: Delta) -> str:
+def verdict_text(d: Delta) -> str:
+    """The word of a delta, the same in text, JSON and HTML (regressions shouted in text)."""
     if d.regression:
         return "REGRESSION"
-    if d.improved:
-        return "improved"
-    return d.verdict
+    if d.change is None:
+        return ""
+    return d.verdict or "unchanged"
 
 
 def pair_table(pair: Pair) -> Table:
@@ -47,7 +55,7 @@ def pair_table(pair: Pair) -> Table:
         digits = 0 if d.path == ("n_envs",) else 2
         table.add_row(d.metric + (" (%)" if d.percent else ""), _num(d.before, d.percent, digits=digits),
                       _num(d.after, d.percent, digits=digits), _num(d.change, d.percent, True, digits),
-                      interval_text(d, pair.n_tasks), _verdict(d))
+                      interval_text(d, pair.n_tasks), verdict_text(d))
     return table
 
 
@@ -56,7 +64,9 @@ def comparison_text(c: Comparison, run_a: str, run_b: str) -> str:
     console = Console(file=buf, width=_WIDTH, no_color=True, highlight=False)
     console.print(f"A = {run_a}\nB = {run_b}\n{len(c.tasks)} task(s); tolerance {c.tolerance} "
                   "(fractions; percentage points / 100 for rates); a change is judged when it "
-                  "exceeds the tolerance and its paired 95 % bootstrap interval excludes 0.",
+                  "exceeds the tolerance and its paired 95 % bootstrap interval excludes 0; "
+                  "'inconclusive': the interval holds 0 but reaches beyond the tolerance; "
+                  "'not judged': a metric without a direction (Redundancy, ST, Envs).",
                   markup=False)
     for pair in c.pairs:
         console.print(pair_table(pair))
@@ -67,8 +77,10 @@ def comparison_text(c: Comparison, run_a: str, run_b: str) -> str:
         lines.append(f"{len(c.missing)} thing(s) of A missing from B"
                      + (" (allowed by --allow-missing):" if c.allow_missing else " (regressions):"))
         lines += [f"  {m.text}" for m in c.missing]
-    lines.append(f"{len(c.regressions)} regression(s), {len(c.improvements)} improvement(s)")
-    for mark, pick in (("REGRESSION", REGRESSION), ("improved  ", IMPROVED)):
+    lines.append(f"{len(c.regressions)} regression(s), {len(c.improvements)} improvement(s), "
+                 f"{len(c.inconclusive)} inconclusive")
+    for mark, pick in (("REGRESSION", REGRESSION), ("improved", IMPROVED),
+                       ("inconclusive", INCONCLUSIVE)):
         lines += [f"  {mark} {d.generator} {d.metric}: {_num(d.change, d.percent, True)} "
                   f"{interval_text(d, p.n_tasks)}" for p in c.pairs for d in p.deltas if d.verdict == pick]
     lines.append("FAILED: " + ("regression(s)" if c.regressions else "missing in B")

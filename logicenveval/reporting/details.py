@@ -133,8 +133,12 @@ class UnitReader:
         self.store = RunStore(source.run_dir)
         self._loose: dict[tuple[str, str], list[dict[str, Any]]] | None = None
 
-    def envs(self, generator: str, task: str) -> list[tuple[dict[str, Any], EnvDetail | None]]:
-        unit = self.source.records.get((generator, task)) or self.store.load(generator, task)
+    def unit(self, generator: str, task: str) -> UnitRecord | None:
+        return self.source.records.get((generator, task)) or self.store.load(generator, task)
+
+    def envs(self, generator: str, task: str,
+             unit: UnitRecord | None = None) -> list[tuple[dict[str, Any], EnvDetail | None]]:
+        unit = unit or self.unit(generator, task)
         if unit is not None:
             by_id = {d.env_id: d for d in unit.details}
             return [(s.model_dump(mode="json"), by_id.get(s.env_id)) for s in unit.samples]
@@ -512,6 +516,8 @@ class TaskRow:
     envs: list[EnvView]
     #: the environments' samples as recorded (what `why.reasons` reads)
     samples: list[dict[str, Any]] = field(default_factory=list)
+    #: the traceback of the exception that failed the unit as a whole (`UnitRecord.traceback`)
+    traceback: str | None = None
 
     @property
     def n_valid(self) -> int:
@@ -555,11 +561,13 @@ def task_rows(source: Source, generators: Sequence[str], assets: Assets | None =
     scope = source.prefix.strip("/").replace("/", "-")
     for gen in generators:
         for task in source.results.get("tasks", []):
-            pairs = reader.envs(gen, task)
+            unit = reader.unit(gen, task)
+            pairs = reader.envs(gen, task, unit)
             envs = [env_view(assets, gen, task, s, d) for s, d in pairs]
             yield TaskRow(
                 generator=gen, task=task, seed=source.seed, anchor=task_anchor(gen, task, scope),
                 href=page_path(source, gen, task),
                 metrics=dict(per_task.get(gen, {}).get(task) or {}),
                 failures=[f for f in failures.get(gen, []) if isinstance(f, dict) and f.get("task") == task],
-                envs=envs, samples=[{k: v for k, v in s.items() if k in _WHY_KEYS} for s, _ in pairs])
+                envs=envs, samples=[{k: v for k, v in s.items() if k in _WHY_KEYS} for s, _ in pairs],
+                traceback=unit.traceback if unit is not None else None)

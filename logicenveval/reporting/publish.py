@@ -14,15 +14,18 @@ from typing import Any
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.reporting.leaderboard import write_leaderboards
 from logicenveval.reporting.tables import markdown
+from logicenveval.reporting.terminal import terminal_summary
 from logicenveval.reporting.why import reasons, summary_text
 
 
 @dataclass(frozen=True)
 class Published:
-    #: the leaderboard as Markdown (what the command prints first)
+    #: the full leaderboard as Markdown (leaderboard.md)
     table: str
-    #: why environments were rejected or failed, per generator (what the command prints last)
+    #: why environments were rejected or failed, per generator, with examples
     why: str
+    #: what the command prints: headline figures, a reasons line per method, where the pages are
+    summary: str = ""
 
 
 def publish(run_dir: Path, results: dict[str, Any], records: Sequence[UnitRecord]) -> Published:
@@ -31,4 +34,4 @@ def publish(run_dir: Path, results: dict[str, Any], records: Sequence[UnitRecord
     index, so it names the same examples (with their seed in a multi-seed run) as the HTML."""
     got = write_leaderboards(run_dir, results, None if results.get("runs") else records)
     why = reasons(got.samples, results.get("failures", {}), messages=got.messages, scores=results["results"])
-    return Published(markdown(results), summary_text(why))
+    return Published(markdown(results), summary_text(why), terminal_summary(results, why, run_dir))

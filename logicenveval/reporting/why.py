@@ -114,11 +114,11 @@ class GeneratorReasons:
 
 
 def _add(groups: dict[tuple[str, str], Reason], kind: str, key: str, where: Where,
-         example: str) -> None:
+         example: str, n: int = 1) -> None:
     _, task, env_id, seed = where
     reason = groups.setdefault((kind, key), Reason(kind, key, task=task, env_id=env_id, seed=seed,
                                                   example=" ".join(example.split())[:_EXAMPLE_CHARS]))
-    reason.count += 1
+    reason.count += n
 
 
 def _seed(record: Mapping[str, Any]) -> str:
@@ -201,10 +201,15 @@ def reasons(samples: Iterable[Mapping[str, Any]],
         for f in items:
             where = (gen, str(f.get("task", "")), str(f.get("env_id") or ""), _seed(f))
             returned = where in built
-            g.n_failed += not returned
+            # a unit that failed as a whole counts its failed attempts (results.json `attempts`)
+            stage = str(f.get("stage") or "unit")
+            n = f.get("attempts") if stage == "unit" and isinstance(f.get("attempts"), int) else 1
+            n = max(1, n or 1)
+            g.n_failed += 0 if returned else n
             g.n_short += returned
             key, message = failure_reason(f)
-            _add(groups[gen], "built short" if returned else "generation", key, where, message)
+            _add(groups[gen], "built short" if returned else "generation", key, where, message,
+                 1 if returned else n)
     for s in samples:
         where = (str(s["generator"]), str(s["task_id"]), str(s["env_id"]), _seed(s))
         gen = where[0]

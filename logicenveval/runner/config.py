@@ -53,6 +53,10 @@ class RunConfig(BaseModel):
     unit_timeout: float | None = Field(default=DEFAULT_UNIT_TIMEOUT, gt=0, allow_inf_nan=False)
     #: `--generators` item (as written, or its row name) -> keyword arguments of its factory
     generator_args: dict[str, dict[str, ArgValue]] = Field(default_factory=dict)
+    #: recompute every unit, even those whose fingerprints are unchanged (`--fresh`; not identity)
+    fresh: bool = False
+    #: re-raise a generator's exception in this process, for a debugger (`--debug`; not identity)
+    debug: bool = False
 
     @model_validator(mode="after")
     def _brief_fits_model(self) -> RunConfig:

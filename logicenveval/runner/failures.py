@@ -7,12 +7,15 @@ in one screen instead of in N unit files. Partial failures only appear in the le
 
 from __future__ import annotations
 
+import textwrap
 from collections import Counter
 from collections.abc import Sequence
 
 from logicenveval.metrics.records import UnitRecord
 
 MAX_REASONS = 5
+#: the summary's lines are wrapped to this many columns
+WIDTH = 100
 
 
 def failed(record: UnitRecord) -> bool:
@@ -51,9 +54,13 @@ def summary(records: Sequence[UnitRecord], generators: Sequence[str]) -> str:
         empty = [u for u in units if not failed(u) and not u.samples]
         lines.append(f"{g}: {len(bad)} of {len(units)} unit(s) failed"
                      + (f", {len(empty)} returned no environment" if empty else ""))
-        reasons = Counter(_reason(u) for u in bad + empty)
-        for reason, n in reasons.most_common(MAX_REASONS):
-            lines.append(f"  {n} x {reason}")
+        reasons: Counter[str] = Counter()
+        for u in bad + empty:  # failed attempts per cause: a unit that failed planned several
+            reasons[_reason(u)] += max(1, u.n_failed)
+        for reason, n in reasons.most_common(MAX_REASONS):  # wrapped, never cut: it is the cause
+            lines += textwrap.wrap(f"{n} failed attempt(s): {reason}", WIDTH, initial_indent="  ",
+                                   subsequent_indent="    ", break_on_hyphens=False)
         if len(reasons) > MAX_REASONS:
-            lines.append(f"  ... and {len(reasons) - MAX_REASONS} other reason(s); see results.json 'failures'")
+            lines.append(f"  ... and {len(reasons) - MAX_REASONS} other reason(s); see results.json "
+                         "'failures'")
     return "\n".join(lines)

@@ -102,7 +102,8 @@ def build_results(
             measured=bool(metrics), not_measured=[u.task_id for u in units if not u.measured],
             budget_hit=[u.task_id for u in measured if u.budget_hit is not None]))
         failures[gen] = [
-            {"task": u.task_id, "stage": "unit", "message": u.error, "kind": u.error_kind}
+            {"task": u.task_id, "stage": "unit", "message": u.error, "kind": u.error_kind,
+             "attempts": u.n_failed}
             for u in units if u.error
         ] + [
             {"task": u.task_id, **f.model_dump(mode="json")} for u in units for f in u.failures

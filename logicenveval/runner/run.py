@@ -7,7 +7,7 @@ import os
 import tempfile
 import time
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -22,6 +22,13 @@ from logicenveval.metrics.records import UnitRecord
 from logicenveval.model.task import POLICY_KINDS, Task
 from logicenveval.runner.config import RunConfig, selected_tasks
 from logicenveval.runner.executors import Executor, make_executor
+from logicenveval.runner.fingerprint import (
+    changed_inputs,
+    generator_fingerprint,
+    stale_reason,
+    task_fingerprint,
+    unit_inputs,
+)
 from logicenveval.runner.results import build_results, write_outputs
 from logicenveval.runner.store import RunStore
 from logicenveval.runner.unit import UnitSpec, chunk_units, planned_failures, run_units
@@ -34,6 +41,16 @@ class RunOutcome:
     computed: int  # units computed in this invocation
     reused: int  # units found committed from an earlier, interrupted invocation
     records: tuple[UnitRecord, ...] = ()  # every unit of the run, in (generator, task) order
+    #: why stored units were recomputed (what changed, or --fresh) -> how many units it cost
+    stale: dict[str, int] = field(default_factory=dict)
+
+    def stale_text(self) -> str:
+        """One line per reason stored units were recomputed ("" when none was)."""
+        return stale_text(self.stale)
+
+
+def stale_text(stale: dict[str, int]) -> str:
+    return "\n".join(f"recomputed {n} unit(s): {why}" for why, n in stale.items())
 
 
 def resolve_generators(config: RunConfig) -> list[GeneratorRef]:
@@ -122,7 +139,7 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
 
 def _run(config: RunConfig, model_args: str, refs: list[GeneratorRef], ids: list[str],
          tasks: list[Task], *, console: Console | None, show_progress: bool) -> RunOutcome:
-    executor = make_executor(config.executor, config.workers)
+    executor = make_executor("inprocess" if config.debug else config.executor, config.workers)
     warm_up = getattr(executor, "warm_up", None)
     if callable(warm_up):
         warm_up()  # workers' imports overlap the preflight and resume scan below
@@ -164,17 +181,35 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
                  tasks_dir=config.tasks_dir, model=config.model, model_args=model_args,
                  seed=config.seed, run_dir=str(run_dir), cache=config.cache,
                  no_cache=config.no_cache, layout_solver=config.layout_solver, brief=config.brief,
-                 generator_args=r.args, unit_timeout=config.unit_timeout)
+                 generator_args=r.args, unit_timeout=config.unit_timeout, debug=config.debug)
         for r in refs for t in ids
     ]
+    code = {r.name: generator_fingerprint(r) for r in refs}
+    files = {t: task_fingerprint(t, config.tasks_dir) for t in ids}
+    by_name = {r.name: r for r in refs}
+    inputs = {(s.generator, s.task_id): unit_inputs(by_name[s.generator], s.task_id, config.tasks_dir,
+                                                    generator=code[s.generator], task=files[s.task_id])
+              for s in specs}
     records: dict[tuple[str, str], UnitRecord] = {}
     pending: list[UnitSpec] = []
+    stale: dict[str, int] = {}
     for spec in specs:
+        key = (spec.generator, spec.task_id)
         stored = store.load(spec.generator, spec.task_id)
         if stored is None or stored.error_kind == "infrastructure" or not store.files_intact(stored):
             pending.append(spec)  # never computed, corrupt, edited, or failed for a reason outside it
+            continue
+        changed = ["fresh"] if config.fresh else changed_inputs(stored.inputs, inputs[key])
+        if config.debug and (stored.error_kind == "internal" or stored.traceback is not None):
+            changed = changed or ["debug"]
+        if changed:  # made by other code or data: recomputed, and the run says why
+            pending.append(spec)
+            for what in changed:
+                why = ("--debug re-runs a generator that raised" if what == "debug" else
+                       stale_reason(what, spec.generator, spec.task_id, stored.inputs, inputs[key]))
+                stale[why] = stale.get(why, 0) + 1
         else:
-            records[(spec.generator, spec.task_id)] = stored
+            records[key] = stored
     reused = len(records)
     start = time.perf_counter()
     console = console or Console(stderr=True)
@@ -195,6 +230,8 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
         with contextlib.closing(chunks) as finished:  # type: ignore[type-var]  # generators have close()
             for _, chunk in finished:
                 for record in chunk:
+                    record = record.model_copy(update={"inputs": inputs[(record.generator,
+                                                                         record.task_id)]})
                     store.save(record)
                     records[(record.generator, record.task_id)] = record
                     progress.advance(bars[record.generator])
@@ -211,4 +248,4 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
                             generators=[r.name for r in refs])
     write_outputs(run_dir, results, ordered)
     return RunOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused,
-                      records=tuple(ordered))
+                      records=tuple(ordered), stale=stale)

@@ -37,6 +37,7 @@ from logicenveval.model.task import POLICY_KINDS, Task
 from logicenveval.paths import check_name, child, shown
 from logicenveval.runner.config import RUN_ID_PATTERN, selected_tasks
 from logicenveval.runner.executors import make_executor
+from logicenveval.runner.fingerprint import changed_inputs, scored_inputs, stale_reason
 from logicenveval.runner.results import build_results, write_outputs
 from logicenveval.runner.store import RunStore, text_digest
 
@@ -113,6 +114,8 @@ class EvaluateOutcome:
     reused: int
     skipped_folders: list[str] = field(default_factory=list)  # not tasks of the tasks dir
     records: tuple[UnitRecord, ...] = ()  # one unit per task, in task order
+    #: why stored units were recomputed -> how many (`runner.run.RunOutcome.stale`)
+    stale: dict[str, int] = field(default_factory=dict)
 
 
 def folder_digest(root: Path) -> str:
@@ -259,16 +262,26 @@ def _score(config: EvaluateConfig, ids: list[str], skipped: list[str], tasks: li
                            tasks_dir=config.tasks_dir, run_dir=str(run_dir)) for t in ids]
     records: dict[str, UnitRecord] = {}
     pending = []
+    inputs = {t: scored_inputs(t, config.tasks_dir) for t in ids}
+    stale: dict[str, int] = {}
     for spec in specs:
         stored = store.load(name, spec.task_id)
         if stored is None or stored.error_kind == "infrastructure" or not store.files_intact(stored):
             pending.append(spec)  # never scored, corrupt, its files changed, or its worker died
+            continue
+        changed = changed_inputs(stored.inputs, inputs[spec.task_id])
+        if changed:  # judged by other code or against another task or catalog: judged again
+            pending.append(spec)
+            for what in changed:
+                why = stale_reason(what, name, spec.task_id, stored.inputs, inputs[spec.task_id])
+                stale[why] = stale.get(why, 0) + 1
         else:
             records[spec.task_id] = stored
     reused = len(records)
     start = time.perf_counter()
     executor = make_executor(config.executor, config.workers)
     for spec, record in executor.map_unordered(score_unit, pending, on_crash=_crashed):
+        record = record.model_copy(update={"inputs": inputs[spec.task_id]})
         store.save(record)
         records[spec.task_id] = record
     ordered = [records[t] for t in ids]
@@ -276,5 +289,5 @@ def _score(config: EvaluateConfig, ids: list[str], skipped: list[str], tasks: li
                             generators=[name])
     write_outputs(run_dir, results, ordered)
     return EvaluateOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused,
-                           skipped_folders=skipped, records=tuple(ordered))
+                           skipped_folders=skipped, records=tuple(ordered), stale=stale)
 

@@ -13,7 +13,7 @@ import hashlib
 import json
 import re
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -38,6 +38,8 @@ class SeedsOutcome:
     computed: int
     reused: int
     records: tuple[UnitRecord, ...] = ()  # every unit of every seed, seed by seed
+    #: why stored units were recomputed -> how many (summed over the seeds; `RunOutcome.stale`)
+    stale: dict[str, int] = field(default_factory=dict)
 
 
 def seeds_identity(config: RunConfig, seeds: Sequence[int]) -> dict[str, object]:
@@ -75,6 +77,7 @@ def _run_seeds(config: RunConfig, seeds: Sequence[int], parent: Path, console: C
     per_seed = []
     records: list[UnitRecord] = []
     computed = reused = 0
+    stale: dict[str, int] = {}
     for seed in seeds:
         one = config.model_copy(update={"seed": seed, "output": str(parent), "run_id": f"seed{seed}"})
         outcome = run(one, console=console, show_progress=show_progress)
@@ -82,11 +85,13 @@ def _run_seeds(config: RunConfig, seeds: Sequence[int], parent: Path, console: C
         records.extend(outcome.records)
         computed += outcome.computed
         reused += outcome.reused
+        for why, n in outcome.stale.items():
+            stale[why] = stale.get(why, 0) + n
     results = combine_seeds(parent.name, seeds_identity(config, seeds), per_seed)
     atomic_write_text(parent / "results.json", json.dumps(results, indent=2, sort_keys=True) + "\n")
     return SeedsOutcome(run_dir=parent, results=results,
                         seed_dirs=[parent / f"seed{s}" for s in seeds], computed=computed,
-                        reused=reused, records=tuple(records))
+                        reused=reused, records=tuple(records), stale=stale)
 
 
 def combine_seeds(run_id: str, identity: dict[str, object],

@@ -76,6 +76,8 @@ class UnitSpec(BaseModel):
     generator_args: dict[str, Any] = Field(default_factory=dict)
     #: seconds the generator may take for this unit (`--unit-timeout`); None: unbounded
     unit_timeout: float | None = None
+    #: re-raise a generator's exception instead of recording it (`--debug`, in-process only)
+    debug: bool = False
 
 
 def _unique_ids(envs: list[EnvSpec]) -> list[EnvSpec]:
@@ -360,8 +362,12 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
         result = call_generator(generator, brief, ctx, task_id=task.id, timeout=spec.unit_timeout)
     except GeneratorBroke as exc:
         shared_catalog()
+        cause = exc.__context__ if exc.kind == "internal" else None
+        if spec.debug and isinstance(cause, Exception):  # sys.exit() & co. are recorded, shown
+            raise cause from None
         return UnitRecord(generator=spec.generator, task_id=spec.task_id, error=redact(str(exc)),
                           error_kind=exc.kind, gen_seconds=time.perf_counter() - start,
+                          traceback=None if cause is None else full_traceback(cause),
                           llm=_stats(model), attempts=planned_failures(
                               spec.generator, ctx.planned_attempts if ctx is not None else 0))
     except KeyboardInterrupt:
@@ -375,9 +381,12 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     except BaseException as exc:  # a failing unit must not kill the run; it is recorded
         shared_catalog()  # (also SystemExit from a factory: it is the generator's, not ours)
         kind = failure_kind(exc)
+        if spec.debug and kind != "infrastructure":
+            raise
         planned = ctx.planned_attempts if ctx is not None else 0
         return UnitRecord(generator=spec.generator, task_id=spec.task_id, error=_reason(exc),
                           error_kind=kind, gen_seconds=time.perf_counter() - start,
+                          traceback=full_traceback(exc),
                           llm=_stats(model), attempts=[] if kind == "infrastructure"
                           else planned_failures(spec.generator, planned))
     gen_seconds = time.perf_counter() - start
@@ -511,6 +520,19 @@ def _reason(exc: BaseException) -> str:
     else:
         text = "internal error: " + traceback.format_exception_only(type(exc), exc)[-1].strip()
     return redact(text if len(text) <= 2000 else text[:1997] + "...")
+
+
+#: the longest traceback a unit keeps (its end: the innermost frames and the message)
+MAX_TRACEBACK = 20_000
+
+
+def full_traceback(exc: BaseException) -> str:
+    """The exception's whole traceback (file and line of every frame, chained causes), redacted
+    of secrets: what `--debug` and the task's detail page show for a unit that failed."""
+    text = "".join(traceback.format_exception(type(exc), exc, exc.__traceback__))
+    if len(text) > MAX_TRACEBACK:
+        text = "...\n" + text[-MAX_TRACEBACK:]
+    return redact(text.rstrip("\n"))
 
 
 def _stats(model: object) -> dict[str, float]:
