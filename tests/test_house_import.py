@@ -203,7 +203,8 @@ def test_procthor10k_house_takes_types_from_ids_and_sizes_from_the_catalog() -> 
     assert binding.well_formed
 
 
-def test_procthor10k_house_scores_with_every_role_bound(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+def test_procthor10k_house_scores_with_every_role_bound(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                                        no_procthor: None) -> None:
     house = json.loads(PROCTHOR10K.read_text())
     house["objects"].append(STOVE)
     src = tmp_path / "house.json"
@@ -230,7 +231,8 @@ def test_procthor10k_house_scores_with_every_role_bound(tmp_path: Path, capsys: 
     assert res["phypr"]["floor_plan"] == 1.0
 
 
-def test_procthor10k_house_passes_check_house_without_object_types(capsys: pytest.CaptureFixture[str]) -> None:
+def test_procthor10k_house_passes_check_house_without_object_types(capsys: pytest.CaptureFixture[str],
+                                                                   no_procthor: None) -> None:
     assert main(["check-house", str(PROCTHOR10K), "--json"]) == 0
     (report,) = json.loads(capsys.readouterr().out).values()
     assert report["problems"] == []

@@ -25,12 +25,14 @@ def run(args: argparse.Namespace) -> int:
 
     from logicenveval.scene.house_check import check_house
     from logicenveval.scene.house_import import load_house
-    from logicenveval.scene.procthor import load_procthor_db, our_assets
+    from logicenveval.scene.procthor import installed_procthor_db, load_procthor_db, our_assets
 
-    real = bool(args.procthor_db)
-    db = load_procthor_db(args.procthor_db) if real else our_assets()
+    found = load_procthor_db(args.procthor_db) if args.procthor_db else installed_procthor_db()
+    real = found is not None
+    db = found if found is not None else our_assets()
     if not real and not args.json:
-        print("no --procthor-db: checking against our recorded mapping only "
+        print("ProcTHOR's databases are not installed (pip install 'logicenveval[procthor]') and no "
+              "--procthor-db: checking against our recorded mapping only "
               "(benchmark_data/procthor_assets.json), not ProcTHOR's full databases")
     failed = 0
     reports = {}

@@ -45,6 +45,7 @@ from shapely.geometry import Point, Polygon
 
 from logicenveval.domain.catalog import Catalog
 from logicenveval.domain.categories import Resolution, snake, vocabulary
+from logicenveval.domain.shapes import load_shapes
 from logicenveval.envfiles import env_from_dict
 from logicenveval.errors import EnvSpecError
 from logicenveval.limits import limit, raise_hint
@@ -285,6 +286,34 @@ class _Importer:
                         "state": "open" if openness > 0 else "closed"})
         return out
 
+    def openings(self, height: float) -> list[dict[str, Any]]:
+        """Open boundaries: ProcTHOR joins two rooms without a door by giving both rooms' walls
+        on their shared segment `"empty": true`. Each such pair becomes a door of type `open`
+        spanning the segment (no leaf, so no swing area) that connects the two rooms."""
+        sides: dict[tuple[tuple[float, float], tuple[float, float]], list[str]] = {}
+        for wid, (i, w) in self.walls.items():
+            if not isinstance(w, dict) or w.get("empty") is not True:
+                continue
+            self.where = f"walls[{i}]"
+            poly = _list(w, "polygon", self.where, required=True)
+            if len(poly) < 2:
+                raise EnvSpecError("a wall polygon needs its two ends first", field=f"{self.where}.polygon",
+                                   hint=_LAYOUT)
+            ends = sorted((_xz(poly[0], f"{self.where}.polygon[0]"), _xz(poly[1], f"{self.where}.polygon[1]")))
+            key = (ends[0], ends[1])
+            ref = w.get("roomId", f"room|{wid.split('|')[1]}" if wid.count("|") >= 5 else None)
+            if ref is None or str(ref) not in self.room_ids:
+                continue  # an exterior or unknown side joins nothing
+            room = self.room_ids[str(ref)]
+            if room not in sides.setdefault(key, []):
+                sides[key].append(room)
+        out = []
+        for (a, b), rooms in sorted(sides.items()):
+            for r0, r1 in zip(rooms, rooms[1:], strict=False):
+                out.append({"id": _ident(f"open_{r0}_{r1}_{len(out)}"), "rooms": [r0, r1], "segment": (a, b),
+                            "height": round(height, 4), "type": "open", "state": "open"})
+        return out
+
     def windows(self) -> list[dict[str, Any]]:
         out = []
         for i, w in enumerate(_list(self.house, "windows", "")):
@@ -402,7 +431,7 @@ class _Importer:
             entry["support"] = "wall" if cat and cat.placement[0] == "wall" else "floor"
         else:
             pcat = self.catalog.get(parent["category"])
-            if pcat is not None and pcat.container and not pcat.surface:
+            if pcat is not None and pcat.container and not pcat.surface and not _on_rim(entry, parent):
                 entry["support"], entry["container"] = None, parent["id"]
             else:
                 entry["support"] = parent["id"]
@@ -427,6 +456,20 @@ class _Importer:
             return {}
         x, z = _xz(pos, "metadata.agent.position")
         return {"room": self.room_of(x, z), "position": (x, z)}
+
+
+def _on_rim(child: dict[str, Any], parent: dict[str, Any]) -> bool:
+    """A child of a container whose shape holds objects only near its top (a rim: its lowest
+    level above half its height, e.g. a sink) and whose bottom is at or above that level (the
+    faucet on a sink) rests on it, not in it; a fridge's shelves do not make a rim."""
+    if child["size"] is None or parent["size"] is None:
+        return False
+    shape = load_shapes().of(parent["category"])
+    if shape is None or shape.levels[0][0] < 0.5:
+        return False
+    p_bottom = parent["position"][1] - parent["size"][1] / 2
+    level = p_bottom + shape.levels[0][0] * parent["size"][1]
+    return bool(child["position"][1] - child["size"][1] / 2 >= level - 0.02)
 
 
 def _ident(text: str) -> str:
@@ -463,6 +506,7 @@ def import_house(house: dict[str, Any], *, task_id: str, env_id: str, catalog: C
         imp.add_objects(_list(house, "objects", ""))
         imp.where = "walls"
         height = imp.ceiling()
+        doors += imp.openings(height)
         imp.where = "metadata.agent"
         agent = imp.agent()
     except EnvSpecError as exc:

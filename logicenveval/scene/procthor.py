@@ -17,6 +17,7 @@ that mapping.
 
 from __future__ import annotations
 
+import importlib.util
 import math
 from dataclasses import dataclass
 from functools import lru_cache, partial
@@ -125,6 +126,27 @@ def load_procthor_db(folder: str | Path) -> ProcthorDB:
         raise ConfigError(f"not in ProcTHOR's database format ({type(exc).__name__}: "
                           f"{str(exc)[:200]})", file=str(d), hint=_DB_HINT) from None
     return ProcthorDB(assets, materials, holes, str(d))
+
+
+def find_procthor_db() -> Path | None:
+    """ProcTHOR's `procthor/databases` folder of the installed `procthor` package (the
+    `[procthor]` extra), found without importing it (its import pulls heavy dependencies)."""
+    try:
+        spec = importlib.util.find_spec("procthor")
+    except (ImportError, ValueError):
+        return None
+    for loc in (spec.submodule_search_locations or []) if spec is not None else []:
+        folder = Path(loc) / "databases"
+        if (folder / "asset-database.json").is_file():
+            return folder
+    return None
+
+
+@lru_cache(maxsize=1)
+def installed_procthor_db() -> ProcthorDB | None:
+    """The installed ProcTHOR databases, read once, or None when the extra is not installed."""
+    folder = find_procthor_db()
+    return load_procthor_db(folder) if folder is not None else None
 
 
 def _distance(a: Size, b: Size) -> float:
