@@ -13,14 +13,17 @@ bottom, 1 = its top) or depth (0 = its back, 1 = its front):
 * `levels`: the heights where objects rest on it (the bottoms of objects whose parent receptacle
   it is), clustered; a cluster needs >= 3 observations and >= 5 % of the type's observations.
   A seat's levels run from its lowest cluster above 0.2 (the seat) to its highest; any other type
-  with objects resting below 0.9 of its height (>= 3 and >= 1 % of them) has shelves, and is given the band
+  with objects resting below 0.9 of its height or `Shelf` objects inside its box (together >= 3
+  and >= 1 % of its observations) has shelves, and is given the band
   from the lowest of them to its top, since shelf heights differ between assets of one type;
-  the rest are supports at their top only.
+  the rest hold objects on their top, over the spread of their highest cluster (a sink's rim).
 * `solid`: the parts of its bounding box that are solid. Seats (chair, armchair, sofa, bed): the
-  box below the seat plus a back strip whose depth is what the data leaves behind tucked chairs
+  box below the seat (`seat`: the median height things rest at on it) plus a back strip whose depth is what the data leaves behind tucked chairs
   (1 - the 95th percentile of how far chairs reach under tables and desks). Tops (tables, desks,
   counters) with >= 3 things found tucked under them: a slab above the highest solid part of
   those (a tucked seat's solid part ends at its seat). Everything else: the whole box.
+* `open_top`: whether objects held inside it stand out of its top in the scenes (>= 2 and >= 5 %
+  of them by more than 1 cm): a sink, a bin or a box is open, a fridge or a drawer is not.
 * `floor_spread`: how far settled floor objects' boxes dip below the floor (5th percentile) — the
   penetration into floors and walls that is not a collision.
 
@@ -42,7 +45,7 @@ OUT = ROOT / "benchmark_data" / "support_shapes.json"
 SEATS = ("Chair", "ArmChair", "Sofa", "Bed", "Stool", "Ottoman")
 TOPS = ("DiningTable", "Desk", "CounterTop", "CoffeeTable", "SideTable")
 #: objects seen tucked under tops (the others overlapping a top are its own drawers and shelves)
-TUCKED = ("Chair", "Stool", "ArmChair", "Ottoman", "Footstool", "GarbageCan", "Box", "LaundryHamper")
+TUCKED = ("Chair", "Stool", "Ottoman", "Footstool", "GarbageCan", "Box", "LaundryHamper")
 
 
 def _box(o: dict[str, Any]) -> tuple[list[float], list[float]]:
@@ -76,6 +79,7 @@ def _axis_aligned(o: dict[str, Any]) -> bool:
 
 def derive(meta: dict[str, Any]) -> dict[str, Any]:
     levels: dict[str, list[float]] = defaultdict(list)
+    above: dict[str, list[bool]] = defaultdict(list)
     floor_gaps: list[float] = []
     scenes = [scene for group in meta.values() for scene in group]
     for scene in scenes:
@@ -94,6 +98,23 @@ def derive(meta: dict[str, Any]) -> dict[str, Any]:
                 frac = (lo[1] - rlo[1]) / height if height > 0 else math.nan
                 if -0.05 <= frac <= 1.05:
                     levels[r["objectType"]].append(frac)
+                    if frac < 0.9:  # held inside: does it stand out of the top?
+                        above[r["objectType"]].append(_box(o)[1][1] - rhi[1] > 0.01)
+    # AI2-THOR models a receptacle's open shelves as `Shelf` objects inside its box: their
+    # bottoms are shelf heights too (drawers are closed: what lies in them is contained)
+    shelves: dict[str, list[float]] = defaultdict(list)
+    for scene in scenes:
+        inner = [s for s in scene if s["objectType"] == "Shelf"]
+        for r in scene:
+            if r["objectType"] in ("Shelf", "Floor") or r["objectType"] not in levels:
+                continue
+            rlo, rhi = _box(r)
+            for s in inner:
+                c = s["axisAlignedBoundingBox"]["center"]
+                if all(rlo[i] <= c[k] <= rhi[i] for i, k in enumerate("xyz")):
+                    frac = (_box(s)[0][1] - rlo[1]) / (rhi[1] - rlo[1])
+                    if 0.0 <= frac < 0.9:
+                        shelves[r["objectType"]].append(frac)
     types: dict[str, dict[str, Any]] = {}
     for otype, vals in sorted(levels.items()):
         cl = clusters(vals)
@@ -104,10 +125,16 @@ def derive(meta: dict[str, Any]) -> dict[str, Any]:
         if otype in SEATS:
             seat = [c for c in cl if 0.2 < c[0]] or cl
             entry["levels"] = [[round(seat[0][0], 3), round(max(c[1] for c in seat), 3)]]
+            # the seat surface: the median height where things rest on it
+            entry["seat"] = round(_quantile([v for v in vals if seat[0][0] <= v <= seat[-1][1]], 0.5), 3)
         else:
-            inside = [v for v in vals if v < 0.9]
+            inside = [v for v in vals if v < 0.9] + shelves.get(otype, [])
             shelved = len(inside) >= max(3, math.ceil(0.01 * len(vals)))
-            entry["levels"] = [[round(max(min(inside), 0.0), 3), 1.0]] if shelved else [[1.0, 1.0]]
+            entry["shelves"] = len(shelves.get(otype, []))
+            top = min(cl[-1][0], 1.0)
+            entry["levels"] = [[round(max(min(inside), 0.0), 3), 1.0]] if shelved else [[round(top, 3), 1.0]]
+        out_top = sum(above.get(otype, []))
+        entry["open_top"] = out_top >= max(2, math.ceil(0.05 * len(above.get(otype, []))))
         types[otype] = entry
     # how far chairs reach under tops, and the highest solid thing tucked under each top type
     reach: list[float] = []
@@ -126,14 +153,13 @@ def derive(meta: dict[str, Any]) -> dict[str, Any]:
                 axis = 0 if ov[0] < ov[2] else 2
                 if o["objectType"] == "Chair":
                     reach.append(ov[axis] / (ohi[axis] - olo[axis]))
-                seat = types.get(o["objectType"], {}).get("levels", [[1.0, 1.0]])[0][0] \
-                    if o["objectType"] in SEATS else 1.0
+                seat = types.get(o["objectType"], {}).get("seat", 1.0)
                 solid_top = olo[1] + seat * (ohi[1] - olo[1])
                 under[t["objectType"]].append((solid_top - tlo[1]) / (thi[1] - tlo[1]))
     back = round(1.0 - _quantile(reach, 0.95), 3) if reach else 0.25
     for otype in SEATS:
         if otype in types:
-            s = types[otype]["levels"][0][0]
+            s = types[otype]["seat"]
             types[otype]["solid"] = [{"y": [0.0, s], "z": [0.0, 1.0]}, {"y": [0.0, 1.0], "z": [0.0, back]}]
     for otype in TOPS:
         mine = [v for v in under.get(otype, []) if v < 1.0]

@@ -44,6 +44,7 @@ class Shape:
     otype: str
     levels: tuple[tuple[float, float], ...]  # where objects rest, fractions of the height
     solid: tuple[Part, ...] | None  # None: the whole box is solid
+    open_top: bool = False  # what it holds may stand out of its top (a sink, not a fridge)
 
 
 @dataclass(frozen=True)
@@ -61,7 +62,7 @@ def _shape(otype: str, entry: dict[str, Any]) -> Shape:
     solid = entry.get("solid")
     parts = tuple(Part((float(p["y"][0]), float(p["y"][1])), (float(p["z"][0]), float(p["z"][1])))
                   for p in solid) if solid else None
-    return Shape(otype, levels, parts)
+    return Shape(otype, levels, parts, bool(entry.get("open_top", False)))
 
 
 @lru_cache(maxsize=4)

@@ -49,9 +49,14 @@ def rests_on(b: Body, s: Body, tol: Tolerances) -> tuple[bool, str, float]:
 
 
 def contained_excess(b: Body, c: Body) -> float:
-    """How far (m) the corners of `b` stick out of the box of container `c`."""
+    """How far (m) the corners of `b` stick out of the box of container `c` — through its top
+    too unless the shape of `c` is open at the top (a bottle standing in a sink: domain.shapes)."""
     local = c.to_local(b.corners())
-    return float(np.max(np.abs(local) - c.half, initial=0.0))
+    excess = np.abs(local) - c.half
+    shape = load_shapes().of(c.obj.category)
+    if shape is not None and shape.open_top:
+        excess[:, 1] = np.where(local[:, 1] > 0, 0.0, excess[:, 1])
+    return float(np.max(excess, initial=0.0))
 
 
 def wall_distance(b: Body, poly: Polygon) -> float:
