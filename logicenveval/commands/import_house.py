@@ -32,6 +32,7 @@ def run(args: argparse.Namespace) -> int:
     from logicenveval.envfiles import env_to_json
     from logicenveval.scene.export_files import write_output
     from logicenveval.scene.house_import import import_house, load_house
+    from logicenveval.scene.import_report import format_rooms, house_report
     from logicenveval.scene.procthor import installed_procthor_db, load_procthor_db
 
     task = load_task(args.task, args.tasks_dir)
@@ -50,6 +51,13 @@ def run(args: argparse.Namespace) -> int:
           + "; sizes from " + _counts(report.size_sources))
     for w in report.warnings:
         print(f"warning: {w}")
+    house = house_report(report, catalog)
+    unreachable = [f.rooms[0] for f in house.physics.extended.failures if f.code == "unreachable_room"]
+    print(f"PhyPR of the imported house: floor plan {'passes' if house.physics.floor_plan.passed else 'fails'}"
+          f" ({len(unreachable)} unreachable room(s)), {house.objects - house.entity_failed} of {house.objects}"
+          " object(s) pass entity; per room:")
+    for line in format_rooms(house):
+        print(line)
     for otype, names in sorted(report.ambiguous_types.items()):
         print(f"note: AI2-THOR type {otype} fits categories {', '.join(names)}; used "
               f"{report.chosen[otype]} (docs/scene.md: Importing houses)")

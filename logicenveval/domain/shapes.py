@@ -45,6 +45,15 @@ class Shape:
     levels: tuple[tuple[float, float], ...]  # where objects rest, fractions of the height
     solid: tuple[Part, ...] | None  # None: the whole box is solid
     open_top: bool = False  # what it holds may stand out of its top (a sink, not a fridge)
+    seat: float | None = None  # a seat's surface (fraction of the height): where things are put on it
+
+    def surface(self) -> tuple[float, float]:
+        """Where a layout puts things on it: (height fraction, depth fraction from the back where
+        the usable area starts) — a seat in front of its back strip, else the whole top."""
+        if self.seat is None:
+            return 1.0, 0.0
+        back = max((p.z[1] for p in self.solid or () if p.z[0] == 0.0 and p.z[1] < 1.0), default=0.0)
+        return self.seat, back
 
 
 @dataclass(frozen=True)
@@ -62,7 +71,9 @@ def _shape(otype: str, entry: dict[str, Any]) -> Shape:
     solid = entry.get("solid")
     parts = tuple(Part((float(p["y"][0]), float(p["y"][1])), (float(p["z"][0]), float(p["z"][1])))
                   for p in solid) if solid else None
-    return Shape(otype, levels, parts, bool(entry.get("open_top", False)))
+    seat = entry.get("seat")
+    return Shape(otype, levels, parts, bool(entry.get("open_top", False)),
+                 float(seat) if seat is not None else None)
 
 
 @lru_cache(maxsize=4)

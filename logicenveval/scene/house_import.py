@@ -50,7 +50,7 @@ from logicenveval.envfiles import env_from_dict
 from logicenveval.errors import EnvSpecError
 from logicenveval.limits import limit, raise_hint
 from logicenveval.model.envspec import EnvSpec
-from logicenveval.scene.procthor import ProcthorDB, our_assets
+from logicenveval.scene.procthor import OBSTACLE_CLASSES, ProcthorDB, our_assets
 
 SUPPORTED_SCHEMAS = ("1.0.0",)
 
@@ -75,6 +75,11 @@ class ImportReport:
     type_sources: dict[str, int] = field(default_factory=dict)
     #: where object sizes came from (house, asset database, catalog, none) -> count
     size_sources: dict[str, int] = field(default_factory=dict)
+    #: object id -> where its size came from; object id -> obstacle class (OBSTACLE_CLASSES)
+    size_of: dict[str, str] = field(default_factory=dict)
+    obstacles: dict[str, str] = field(default_factory=dict)
+    #: EnvSpec room id -> the house's room id
+    room_sources: dict[str, str] = field(default_factory=dict)
 
 
 def show(value: Any, limit_chars: int = 60) -> str:
@@ -175,6 +180,8 @@ class _Importer:
         self.ambiguous: dict[str, list[str]] = {}
         self.type_sources: dict[str, int] = {}
         self.size_sources: dict[str, int] = {}
+        self.size_of: dict[str, str] = {}  # object id -> where its size came from
+        self.obstacles: dict[str, str] = {}  # object id -> its obstacle class (OBSTACLE_CLASSES)
         self.room_ids: dict[str, str] = {}
         self.room_where: dict[str, str] = {}
         self.polys: dict[str, Polygon] = {}
@@ -186,6 +193,7 @@ class _Importer:
         self.next_suffix: dict[str, int] = {}
         self.max_objects = limit("max_env_objects")
         self.where = ""  # the part being read, for errors the precise checks do not name
+        self.last_size_source = "none"
 
     def rooms(self) -> list[dict[str, Any]]:
         out = []
@@ -354,6 +362,8 @@ class _Importer:
         res, otype, source = self.object_type(obj, raw_id)
         self.type_sources[source] = self.type_sources.get(source, 0) + 1
         if res is None or res.category is None:
+            if otype in OBSTACLE_CLASSES:
+                self.obstacles[oid] = OBSTACLE_CLASSES[otype][0]
             self.unknown.setdefault(otype, []).append(oid)
             return snake(otype) or "unknown", otype
         if res.ambiguous:
@@ -381,6 +391,7 @@ class _Importer:
         elif size is None:
             source = "none"
         self.size_sources[source] = self.size_sources.get(source, 0) + 1
+        self.last_size_source = source
         return size
 
     def _unique(self, raw_id: str) -> str:
@@ -424,6 +435,7 @@ class _Importer:
         entry: dict[str, Any] = {
             "id": oid, "category": category, "room": parent["room"] if parent else self.room_of(x, z),
             "position": (x, y, z), "yaw": yaw, "size": self._size(obj, where, category),
+            "size_source": self.last_size_source,
             "states": states, "procthor_id": raw_id, "asset_id": obj.get("assetId"),
             "object_type": otype,
         }
@@ -435,6 +447,7 @@ class _Importer:
                 entry["support"], entry["container"] = None, parent["id"]
             else:
                 entry["support"] = parent["id"]
+        self.size_of[oid] = entry.pop("size_source")
         self.objects.append(entry)
         return entry
 
@@ -518,15 +531,20 @@ def import_house(house: dict[str, Any], *, task_id: str, env_id: str, catalog: C
                            field=imp.where or None, hint=_LAYOUT) from None
     for otype, ids in sorted(imp.unknown.items()):
         shown = ids if len(ids) <= 5 else [*ids[:5], f"… ({len(ids) - 5} more)"]
-        warnings.append(f"AI2-THOR type {otype} names no catalog category: kept as obstacle(s) "
-                        f"{', '.join(shown)}")
+        if otype in OBSTACLE_CLASSES:
+            cls, why = OBSTACLE_CLASSES[otype]
+            warnings.append(f"AI2-THOR type {otype} is a {cls} ({why}): kept as obstacle(s) {', '.join(shown)}")
+        else:
+            warnings.append(f"AI2-THOR type {otype} names no catalog category: kept as obstacle(s) "
+                            f"{', '.join(shown)}")
     data = {"task_id": task_id, "generator": "procthor-import", "env_id": env_id,
             "wall_height": height, "rooms": rooms, "doors": doors, "windows": windows,
             "objects": imp.objects, "agent": agent, "source_schema": schema or "1.0.0"}
     env = env_from_dict(data, source=source)
     return ImportReport(env=env, unknown_types=imp.unknown, ambiguous_types=imp.ambiguous,
                         chosen=imp.chosen, warnings=warnings, type_sources=imp.type_sources,
-                        size_sources=imp.size_sources)
+                        size_sources=imp.size_sources, size_of=imp.size_of, obstacles=imp.obstacles,
+                        room_sources={r["id"]: r["procthor_id"] for r in rooms})
 
 
 def load_house(path: str | Path) -> dict[str, Any]:

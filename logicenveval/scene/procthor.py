@@ -63,6 +63,27 @@ STAND_IN_TYPES = {
     "flower": "Vase", "first_aid_kit": "Box", "mop": "Plunger", "broom": "Plunger",
     "dustpan": "ScrubBrush", "bucket": "GarbageCan", "umbrella_stand": "GarbageCan",
 }
+#: AI2-THOR object types that are not household things a task names: the obstacle class an
+#: imported one is kept as (category = its snake-case type, judged for collisions and support
+#: but not sized against the catalog) and why. Every other type in ProcTHOR's databases maps to
+#: a catalog category (tests/test_real_houses.py checks both against the installed databases).
+OBSTACLE_CLASSES: dict[str, tuple[str, str]] = {
+    "Doorframe": ("opening", "a door's frame: houses give it as a door (imported as a door), not an object"),
+    "Doorway": ("opening", "a doorway: imported as a door of type doorway, not an object"),
+    "Window": ("opening", "a window: imported as a window, not an object"),
+    "Floor": ("structure", "the floor itself (AI2-THOR's scenes list it as an object)"),
+    "Drawer": ("part", "a drawer of a dresser, desk or counter: part of its furniture, inside its box"),
+    "SinkBasin": ("part", "the basin of a sink: part of the sink"),
+    "BathtubBasin": ("part", "the basin of a bathtub: part of the bathtub"),
+    "Faucet": ("fixture", "mounted on a sink or bathtub; never moved"),
+    "ShowerHead": ("fixture", "mounted on a wall; never moved"),
+    "StoveKnob": ("fixture", "part of a stove's front"),
+    "HandTowelHolder": ("fixture", "a rail on a wall; holds a towel"),
+    "ToiletPaperHanger": ("fixture", "a holder on a wall; holds toilet paper"),
+    "ShowerDoor": ("fixture", "a glass door of a shower stall"),
+    "ShowerCurtain": ("fixture", "hangs from a rail of a shower"),
+    "Blinds": ("fixture", "hang in a window"),
+}
 #: the opening sizes (width, height) we choose one wall-hole asset for
 OPENING_TARGETS = {"door": ((0.9, 2.1), (1.6, 2.1)), "doorway": ((0.9, 2.1), (1.6, 2.1)),
                    "window": ((0.9, 1.2), (1.5, 1.2), (2.4, 1.2))}
