@@ -198,19 +198,31 @@ class _Importer:
     def rooms(self) -> list[dict[str, Any]]:
         out = []
         counts: dict[str, int] = {}
-        for i, room in enumerate(_list(self.house, "rooms", "", required=True)):
+        listed = _list(self.house, "rooms", "", required=True)
+        # a house we exported names its rooms by our ids: keep them (ProcTHOR's are room|n)
+        plain = {r["id"] for r in listed if isinstance(r, dict) and isinstance(r.get("id"), str)
+                 and re.fullmatch(r"[a-z][a-z0-9_]*", r["id"])}
+        taken: set[str] = set()
+        for i, room in enumerate(listed):
             where = self.where = f"rooms[{i}]"
             raw = _ref(_need(room, "id", where), f"{where}.id")
             if raw in self.room_ids:
                 raise EnvSpecError(f"room id {show(raw)} is used twice ({self.room_where[raw]} and "
                                    f"{where})", field=f"{where}.id", hint="give every room its own id")
-            rtype = room.get("roomType") or "LivingRoom"
+            # our own room type where we exported it (a Study is a Bedroom to AI2-THOR)
+            rtype = room.get("logicenvevalRoomType") or room.get("roomType") or "LivingRoom"
             if not isinstance(rtype, str):
                 raise EnvSpecError(f"expected a room type, got {show(rtype)}", field=f"{where}.roomType",
                                    hint="Kitchen, LivingRoom, Bedroom or Bathroom")
-            base = snake(rtype) or "room"
-            counts[base] = counts.get(base, 0) + 1
-            rid = base if counts[base] == 1 else f"{base}_{counts[base]}"
+            if raw in plain and raw not in taken:
+                rid = raw
+            else:
+                base = snake(rtype) or "room"
+                rid = ""
+                while not rid or rid in plain or rid in taken:
+                    counts[base] = counts.get(base, 0) + 1
+                    rid = base if counts[base] == 1 else f"{base}_{counts[base]}"
+            taken.add(rid)
             self.room_ids[raw], self.room_where[raw] = rid, where
             poly = [_xz(p, f"{where}.floorPolygon[{k}]")
                     for k, p in enumerate(_list(room, "floorPolygon", where, required=True))]
@@ -274,6 +286,14 @@ class _Importer:
         hi_x, hi_y = _num(hp[1].get("x"), f"{where}.holePolygon[1].x"), _num(hp[1].get("y"), f"{where}.holePolygon[1].y")
         length = math.dist(start, end) or 1.0
         ux, uz = (end[0] - start[0]) / length, (end[1] - start[1]) / length
+        ours = hole.get("logicenvevalOpening")  # a house we exported: our opening, not the asset's hole
+        if isinstance(ours, dict) and "start" in ours and "width" in ours and "height" in ours:
+            lo_x = _num(ours["start"], f"{where}.logicenvevalOpening.start")
+            hi_x = lo_x + _num(ours["width"], f"{where}.logicenvevalOpening.width")
+            hi_y = lo_y + _num(ours["height"], f"{where}.logicenvevalOpening.height")
+            a = (round(start[0] + ux * lo_x, 4), round(start[1] + uz * lo_x, 4))  # as exported: 0.1 mm
+            b = (round(start[0] + ux * hi_x, 4), round(start[1] + uz * hi_x, 4))
+            return (a, b), lo_y, round(hi_y - lo_y, 4)
         a = (start[0] + ux * lo_x, start[1] + uz * lo_x)
         b = (start[0] + ux * hi_x, start[1] + uz * hi_x)
         return (a, b), lo_y, hi_y - lo_y
@@ -290,7 +310,8 @@ class _Importer:
             openness = _num(d.get("openness"), f"{where}.openness", 0.0)
             out.append({"id": _ident(str(d.get("id", f"door_{i}"))), "rooms": [r0, "exterior" if exterior else r1],
                         "segment": seg, "height": round(height, 4) or 2.1,
-                        "type": "door" if d.get("openable", True) else "doorway",
+                        "type": d["logicenvevalDoorType"] if isinstance(d.get("logicenvevalDoorType"), str)
+                        else "door" if d.get("openable", True) else "doorway",
                         "state": "open" if openness > 0 else "closed"})
         return out
 
@@ -430,6 +451,9 @@ class _Importer:
         states = {flag: bool(obj[key]) for key, flag in _STATES.items() if key in obj}
         if "openness" in obj:
             states["open"] = _num(obj["openness"], f"{where}.openness", 0.0) > 0
+        ours = obj.get("logicenvevalStates")  # a house we exported: the states AI2-THOR has no key for
+        if isinstance(ours, dict):
+            states.update({str(k): v for k, v in ours.items() if isinstance(v, bool)})
         rot = obj.get("rotation")
         yaw = _num(rot.get("y"), f"{where}.rotation.y", 0.0) if isinstance(rot, dict) else 0.0
         entry: dict[str, Any] = {
