@@ -20,7 +20,12 @@ from logicenveval.scene.export import to_procthor
 from logicenveval.scene.house_check import check_house
 from logicenveval.scene.house_import import import_house, load_house
 from logicenveval.scene.import_report import house_report
-from logicenveval.scene.procthor import OBSTACLE_CLASSES, find_procthor_db, installed_procthor_db, our_assets
+from logicenveval.scene.procthor import (
+    OBSTACLE_CLASSES,
+    find_procthor_db,
+    installed_procthor_db,
+    our_assets,
+)
 
 ROOT = Path(__file__).resolve().parents[1]
 HOUSES = Path(__file__).parent / "data" / "houses"

@@ -123,7 +123,7 @@ def derive(meta: dict[str, Any]) -> dict[str, Any]:
         entry: dict[str, Any] = {"observations": len(vals),
                                  "clusters": [[round(a, 3), round(b, 3), n] for a, b, n in cl]}
         if otype in SEATS:
-            seat = [c for c in cl if 0.2 < c[0]] or cl
+            seat = [c for c in cl if c[0] > 0.2] or cl
             entry["levels"] = [[round(seat[0][0], 3), round(max(c[1] for c in seat), 3)]]
             # the seat surface: the median height where things rest on it
             entry["seat"] = round(_quantile([v for v in vals if seat[0][0] <= v <= seat[-1][1]], 0.5), 3)

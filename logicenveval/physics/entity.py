@@ -9,6 +9,7 @@ import numpy as np
 from shapely.geometry import Point, Polygon
 
 from logicenveval.domain.catalog import Catalog
+from logicenveval.domain.shapes import load_shapes, support_gap
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.physics.geometry import (
     Body,
@@ -20,7 +21,6 @@ from logicenveval.physics.geometry import (
     separated,
 )
 from logicenveval.physics.report import PhysicsFailure, Tolerances
-from logicenveval.domain.shapes import load_shapes, support_gap
 
 
 def _fail(code: str, message: str, objects: list[str], *, rooms: list[str] | None = None,

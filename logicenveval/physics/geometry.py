@@ -18,8 +18,8 @@ import numpy as np
 from shapely.geometry import LineString, Polygon
 from shapely.geometry.base import BaseGeometry
 
-from logicenveval.model.envspec import EnvObject, EnvSpec
 from logicenveval.domain.shapes import load_shapes
+from logicenveval.model.envspec import EnvObject, EnvSpec
 
 _SIGNS = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], float)
 _BOX_FOOTPRINT = [0, 4, 5, 1]  # indices of _SIGNS at y = -1 going round the x–z rectangle

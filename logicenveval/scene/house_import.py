@@ -336,7 +336,7 @@ class _Importer:
             room = self.room_ids[str(ref)]
             if room not in sides.setdefault(key, []):
                 sides[key].append(room)
-        out = []
+        out: list[dict[str, Any]] = []
         for (a, b), rooms in sorted(sides.items()):
             for r0, r1 in zip(rooms, rooms[1:], strict=False):
                 out.append({"id": _ident(f"open_{r0}_{r1}_{len(out)}"), "rooms": [r0, r1], "segment": (a, b),
