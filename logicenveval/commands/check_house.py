@@ -1,8 +1,8 @@
 """`check-house HOUSE.json [--procthor-db DIR] [--json]`: will AI2-THOR load this house?
 
 Verifies asset ids, wall holes, materials, required keys and finite numbers against ProcTHOR's
-databases (`--procthor-db`: its procthor/databases folder), or, without it, against our recorded
-mapping (benchmark_data/procthor_assets.json) — which only knows the ids our exporter chooses, so
+databases (`--procthor-db`: its procthor/databases folder; by default those of the installed
+`procthor` package, the `[procthor]` extra), or, without them, against our recorded mapping (benchmark_data/procthor_assets.json) — which only knows the ids our exporter chooses, so
 an asset id outside it is a warning, not a problem. Exit 0 when every house passes, 1 when one
 has problems, 2 on an unreadable file or database.
 """

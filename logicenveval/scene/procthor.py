@@ -6,7 +6,8 @@ ProcTHOR's `procthor/databases/` folder that say so (`asset-database.json`: obje
 assets with `assetId`, `objectType`, `boundingBox`, `primaryProperty`; `material-database.json`:
 group -> material names; `wall-holes.json`: asset id -> hole `min`/`max`/`offset`).
 
-We do not ship those databases (workplace rule: no data copied from another repository).
+We do not ship those databases: the `[procthor]` extra installs ProcTHOR's wheel, whose
+databases `find_procthor_db` locates (Apache-2.0; read as data, its code is never imported).
 `benchmark_data/procthor_assets.json` is *our choice*: one ProcTHOR asset id per catalog
 category (the asset of the category's AI2-THOR type, else a stand-in of the same pickability,
 whose size is closest to the category's mean size), the door, doorway and window ids with the
