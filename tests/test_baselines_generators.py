@@ -14,6 +14,7 @@ from logicenveval.baselines import offline_handlers as oh
 from logicenveval.baselines.holodeck_solver import Box
 from logicenveval.benchmark import load_task
 from logicenveval.domain.catalog import Catalog, load_catalog
+from logicenveval.domain.shapes import load_shapes
 from logicenveval.generators.base import (
     GenerationContext,
     GenerationResult,
@@ -190,7 +191,9 @@ def test_holodeck_layout_is_physically_sound() -> None:
             elif o.support not in (None, "wall"):
                 s = env.obj(o.support)
                 assert s.position and s.size
-                assert o.position[1] - o.size[1] / 2 == pytest.approx(s.position[1] + s.size[1] / 2)
+                shape = load_shapes().of(s.category)  # a seat holds things on its seat, not its top
+                level = shape.surface()[0] if shape is not None else 1.0
+                assert o.position[1] - o.size[1] / 2 == pytest.approx(s.position[1] + (level - 0.5) * s.size[1])
         for i, a in enumerate(floor):
             assert not any(a.overlaps(b, 0.0) for b in floor[i + 1:])
         assert not _interpenetrations(env)

@@ -83,14 +83,14 @@ def _env(objects: list[dict[str, Any]]) -> Any:
 
 def test_normalise_env_maps_once_keeps_the_written_name_and_lists_unknowns() -> None:
     env = _env([{"id": "s", "category": "Couch"}, {"id": "b", "category": "toy_boxes"},
-                {"id": "k", "category": "toy_box"}, {"id": "d", "category": "Dumbbell"}])
+                {"id": "k", "category": "toy_box"}, {"id": "d", "category": "Kayak"}])
     out, report = normalise_env(env, CATALOG)
-    assert [o.category for o in out.objects] == ["sofa", "toy_box", "toy_box", "Dumbbell"]
+    assert [o.category for o in out.objects] == ["sofa", "toy_box", "toy_box", "Kayak"]
     assert out.obj("s").model_dump()["source_category"] == "Couch"
     assert "source_category" not in out.obj("k").model_dump()
     assert report.mapped == {"Couch": "sofa", "toy_boxes": "toy_box"}
-    assert report.unknown == {"Dumbbell": ["d"]}
-    assert any("'Dumbbell' is not in the catalog" in n for n in report.notes())
+    assert report.unknown == {"Kayak": ["d"]}
+    assert any("'Kayak' is not in the catalog" in n for n in report.notes())
     assert normalise_env(out, CATALOG)[0].objects == out.objects  # idempotent
 
 

@@ -273,3 +273,23 @@ def test_any_mangled_procthor10k_house_is_checked_and_imported_or_named(
         import_house(house, task_id=TASK, env_id="h", catalog=load_catalog())
     except EnvSpecError as exc:
         assert "fix:" in str(exc) and len(str(exc)) < 3000
+
+
+_REAL = json.loads((Path(__file__).parent / "data" / "houses" / "ai2thor_train_4.json").read_text())
+#: the parts of a real house the import reads beyond the fixture's: open boundaries (walls with
+#: "empty": true), our round-trip keys
+_REAL_PATHS = [p for p in json_paths(_REAL) if p[0] == "walls" or p[:2] == ("objects", 13)]
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(st.tuples(st.sampled_from(_REAL_PATHS),
+                          st.sampled_from([*JUNK, True, "room|6", "DELETE"])), min_size=1, max_size=4))
+def test_any_mangled_open_boundary_is_imported_or_named(edits: list[tuple[tuple[object, ...], object]]) -> None:
+    from logicenveval.errors import EnvSpecError
+
+    house = mangled(_REAL, edits)
+    house["rooms"][0]["logicenvevalRoomType"] = edits[0][1]  # junk in our keys too
+    try:
+        import_house(house, task_id=TASK, env_id="h", catalog=load_catalog())
+    except EnvSpecError as exc:
+        assert "fix:" in str(exc) and len(str(exc)) < 3000

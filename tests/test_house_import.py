@@ -54,8 +54,8 @@ def test_kitchen_house_geometry_objects_and_states() -> None:
     cat = CATALOG.categories["fridge"]
     assert objs["Fridge_2_1"].size == tuple((a + b) / 2 for a, b in zip(cat.size_min, cat.size_max, strict=True))
     assert objs["2_4"].category == "wall_clock"  # no ai2thor_type, but a catalog name
-    assert rep.unknown_types == {"Dumbbell": ["2_5"]}
-    assert objs["2_5"].category == "dumbbell" and objs["2_5"].size is None
+    assert rep.unknown_types == {"Kayak": ["2_5"]}
+    assert objs["2_5"].category == "kayak" and objs["2_5"].size is None
     assert env.agent.room == "kitchen" and env.agent.position == (1.0, 1.0)
     assert env.roles == {}
 
@@ -93,7 +93,7 @@ def test_cli_writes_a_scorable_envspec(tmp_path: Path, capsys: pytest.CaptureFix
     assert main(["import-house", str(HOUSES / "kitchen_breakfast.json"), "--task",
                  "kitchen_breakfast_prep", "--out", str(out)]) == 0
     text = capsys.readouterr().out
-    assert "AI2-THOR type Dumbbell names no catalog category" in text and "bread=small_2_0" in text
+    assert "AI2-THOR type Kayak names no catalog category" in text and "bread=small_2_0" in text
     assert load_env(out).env_id == "house"
     assert main(["evaluate", str(tmp_path / "envs"), "--name", "procthor", "--executor", "inprocess",
                  "--output", str(tmp_path / "reports")]) == 0
@@ -193,7 +193,7 @@ def test_procthor10k_house_takes_types_from_ids_and_sizes_from_the_catalog() -> 
     assert objs["Toaster_surface_2_4"].states == {"toggled_on": False}
     assert objs["FloorLamp_3_3_1"].states == {"toggled_on": True} and objs["FloorLamp_3_3_1"].room == "living_room"
     assert all(o.size is not None for o in rep.env.objects if o.id != "Faucet_2_2_1")
-    assert rep.size_sources == {"catalog": 17, "asset database": 4, "none": 1}
+    assert rep.size_sources == {"catalog": 16, "asset database": 5, "none": 1}
     inner, outer = rep.env.doors
     assert inner.rooms == ("kitchen", "living_room") and inner.state == "closed" and inner.type == "door"
     assert outer.rooms == ("living_room", "exterior") and outer.type == "doorway"
@@ -203,7 +203,8 @@ def test_procthor10k_house_takes_types_from_ids_and_sizes_from_the_catalog() -> 
     assert binding.well_formed
 
 
-def test_procthor10k_house_scores_with_every_role_bound(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+def test_procthor10k_house_scores_with_every_role_bound(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                                        no_procthor: None) -> None:
     house = json.loads(PROCTHOR10K.read_text())
     house["objects"].append(STOVE)
     src = tmp_path / "house.json"
@@ -214,7 +215,7 @@ def test_procthor10k_house_scores_with_every_role_bound(tmp_path: Path, capsys: 
                      "--out", str(envs / f"{name}.json")]) == 0
     out = capsys.readouterr().out
     assert "object types from id 22" in out and "roles with no object in the house (unbound): stove" in out
-    assert "sizes from catalog" in out and "AI2-THOR type Faucet names no catalog category" in out
+    assert "sizes from catalog" in out and "AI2-THOR type Faucet is a fixture (mounted on a sink" in out
     assert main(["evaluate", str(tmp_path / "envs"), "--name", "procthor", "--executor", "inprocess",
                  "--output", str(tmp_path / "reports")]) == 0
     (run_dir,) = list((tmp_path / "reports").iterdir())
@@ -230,7 +231,8 @@ def test_procthor10k_house_scores_with_every_role_bound(tmp_path: Path, capsys: 
     assert res["phypr"]["floor_plan"] == 1.0
 
 
-def test_procthor10k_house_passes_check_house_without_object_types(capsys: pytest.CaptureFixture[str]) -> None:
+def test_procthor10k_house_passes_check_house_without_object_types(capsys: pytest.CaptureFixture[str],
+                                                                   no_procthor: None) -> None:
     assert main(["check-house", str(PROCTHOR10K), "--json"]) == 0
     (report,) = json.loads(capsys.readouterr().out).values()
     assert report["problems"] == []

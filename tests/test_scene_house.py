@@ -129,7 +129,7 @@ def test_room_types_outside_procthor_are_mapped_and_kept() -> None:
     assert room["roomType"] == "Bedroom" and room["logicenvevalRoomType"] == "Study"
 
 
-def test_cli_export_and_check_house(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+def test_cli_export_and_check_house(tmp_path: Path, capsys: pytest.CaptureFixture[str], no_procthor: None) -> None:
     env_file = tmp_path / "env.json"
     env_file.write_text(env_to_json(ENV), encoding="utf-8")
     house, glb, model = tmp_path / "h.house.json", tmp_path / "e.glb", tmp_path / "m.xml"

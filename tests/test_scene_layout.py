@@ -288,3 +288,35 @@ def test_bad_enrichment_placements_are_dropped_bad_task_placements_raise() -> No
     with pytest.raises(EnvSpecError, match="not a container"):
         construct_environment(SceneSpec(task_id="t", env_id="e", rooms=rooms, objects=bad), catalog=CAT,
                               rng=np.random.default_rng(0))
+
+
+@pytest.mark.parametrize("solver", SOLVERS)
+def test_things_put_on_a_seat_rest_on_its_seat_in_front_of_its_back(solver: Solver) -> None:
+    """The layout solver puts things on a sofa or an armchair where AI2-THOR's scenes have them:
+    on the seat (domain.shapes `seat`), in front of the back strip — not on top of the backrest."""
+    from logicenveval.domain.shapes import load_shapes
+
+    rooms = [RoomRequest(id="living_room", type="LivingRoom", area=25)]
+    objs = [ObjectRequest(id="sofa_1", category="sofa", room="living_room"),
+            ObjectRequest(id="chair_1", category="armchair", room="living_room"),
+            ObjectRequest(id="remote_1", category="remote_control", room="living_room", placement="on:sofa_1"),
+            ObjectRequest(id="blanket_1", category="blanket", room="living_room", placement="on:chair_1")]
+    env = construct_environment(SceneSpec(task_id="t", env_id="e", rooms=rooms, objects=objs), catalog=CAT,
+                                rng=np.random.default_rng(1), solver=solver).env
+    assert check_env(env, CAT).passed
+    for item, seat in (("remote_1", "sofa_1"), ("blanket_1", "chair_1")):
+        o, s = env.obj(item), env.obj(seat)
+        assert o.position and o.size and s.position and s.size
+        shape = load_shapes().of(s.category)
+        assert shape is not None and shape.seat is not None
+        bottom = s.position[1] - s.size[1] / 2
+        assert o.position[1] - o.size[1] / 2 == pytest.approx(bottom + shape.seat * s.size[1], abs=0.01)
+        front = (math.sin(math.radians(s.yaw)), math.cos(math.radians(s.yaw)))
+        t = math.radians(o.yaw)
+        corners = [(o.position[0] + a * o.size[0] / 2 * math.cos(t) + b * o.size[2] / 2 * math.sin(t),
+                    o.position[2] - a * o.size[0] / 2 * math.sin(t) + b * o.size[2] / 2 * math.cos(t))
+                   for a in (-1, 1) for b in (-1, 1)]
+        back = shape.surface()[1]
+        for x, z in corners:  # every corner over the seat, in front of the back strip
+            ahead = (x - s.position[0]) * front[0] + (z - s.position[2]) * front[1]
+            assert ahead >= (back - 0.5) * s.size[2] - 1e-6

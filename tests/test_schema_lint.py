@@ -125,7 +125,7 @@ def test_lint_passes_clean_files_and_names_the_unbound_role(tmp_path: Path,
 
     def on_the_toy(d: dict[str, Any]) -> None:
         d["objects"][1]["support"] = d["objects"][0]["id"]
-        d["objects"].append({"id": "thing", "category": "Dumbbell", "room": d["rooms"][0]["id"]})
+        d["objects"].append({"id": "thing", "category": "Kayak", "room": d["rooms"][0]["id"]})
         d["roles"] = {"sofa": next(o["id"] for o in d["objects"] if o["category"] == "book")}
 
     _edit(third, on_the_toy)
@@ -134,7 +134,7 @@ def test_lint_passes_clean_files_and_names_the_unbound_role(tmp_path: Path,
     assert "binding: role mop is not bound to an object and no reached path allows it" in out
     assert "binding: role sofa is ambiguous: 2 objects qualify" in out and "sofa_2" in out
     assert "which is not a surface" in out and "role sofa is mapped to" in out
-    assert "note (category): category 'Dumbbell' names no catalog category" in out
+    assert "note (category): category 'Kayak' names no catalog category" in out
     assert "0 of 3 file(s) without problems" in out
     assert main(["lint", str(folder.parent), "--json"]) == 1
     listed = json.loads(capsys.readouterr().out)

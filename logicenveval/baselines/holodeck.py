@@ -27,6 +27,7 @@ from logicenveval.baselines.holodeck_solver import (
 )
 from logicenveval.baselines.replies import HolodeckSceneReply
 from logicenveval.domain.catalog import Catalog
+from logicenveval.domain.shapes import load_shapes
 from logicenveval.envfiles import env_from_dict
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.base import (
@@ -243,16 +244,13 @@ def _held_objects(drafts: dict[str, ObjectDraft], by_room: dict[str, RoomRect],
                 top = Box(hx, hz, hfx - 0.04, hfz - 0.04)
                 base = hy - h["size"][1] / 2 + 0.02
             else:
-                top = Box(hx, hz, hfx, hfz)
-                base = hy + h["size"][1] / 2
+                top, base = _surface(h)
             box, size, base = _free_spot(holder, top, variants, base, hy + h["size"][1] / 2 if container else None, taken)
             if box is None and not container:  # too big for its support: the largest other free surface
                 for alt in _surfaces(placed, h["room"], holder, catalog):
                     a = placed[alt]
-                    afx, afz = (a["size"][2], a["size"][0]) if a["yaw"] in (90.0, 270.0) else (a["size"][0], a["size"][2])
-                    abase = a["position"][1] + a["size"][1] / 2
-                    box, size, base = _free_spot(alt, Box(a["position"][0], a["position"][2], afx, afz), variants,
-                                                 abase, None, taken)
+                    atop, abase = _surface(a)
+                    box, size, base = _free_spot(alt, atop, variants, abase, None, taken)
                     if box is not None:
                         log["relaxed"].append(f"on:{oid}:{holder}->{alt}")
                         holder, h = alt, a
@@ -300,6 +298,20 @@ def _surfaces(placed: dict[str, dict[str, Any]], room: str, exclude: str, catalo
         if oid != exclude and rec["room"] == room and rec["support"] == "floor" and cat is not None and cat.surface:
             out.append((-rec["size"][0] * rec["size"][2], oid))
     return [oid for _, oid in sorted(out)]
+
+
+def _surface(h: dict[str, Any]) -> tuple[Box, float]:
+    """The area and height where things are put on a placed holder: its top, or for a seat (a
+    sofa, an armchair, a bed) its seat in front of the back strip (domain.shapes: AI2-THOR's
+    placement puts small objects on receptacle surfaces, as Holodeck does through it)."""
+    (hx, hy, hz), (sx, sy, sz), yaw = h["position"], h["size"], h["yaw"]
+    shape = load_shapes().of(h["category"])
+    level, back = shape.surface() if shape is not None else (1.0, 0.0)
+    shift = back * sz / 2
+    fx, fz, dx, dz = {0.0: (sx, sz * (1 - back), 0.0, shift), 180.0: (sx, sz * (1 - back), 0.0, -shift),
+                      90.0: (sz * (1 - back), sx, shift, 0.0), 270.0: (sz * (1 - back), sx, -shift, 0.0)
+                      }.get(float(yaw) % 360, (sx, sz, 0.0, 0.0))
+    return Box(hx + dx, hz + dz, fx, fz), hy - sy / 2 + level * sy
 
 
 def _free_spot(holder: str, top: Box, variants: list[tuple[float, float, float]], base: float,

@@ -1,8 +1,8 @@
 """`check-house HOUSE.json [--procthor-db DIR] [--json]`: will AI2-THOR load this house?
 
 Verifies asset ids, wall holes, materials, required keys and finite numbers against ProcTHOR's
-databases (`--procthor-db`: its procthor/databases folder), or, without it, against our recorded
-mapping (benchmark_data/procthor_assets.json) — which only knows the ids our exporter chooses, so
+databases (`--procthor-db`: its procthor/databases folder; by default those of the installed
+`procthor` package, the `[procthor]` extra), or, without them, against our recorded mapping (benchmark_data/procthor_assets.json) — which only knows the ids our exporter chooses, so
 an asset id outside it is a warning, not a problem. Exit 0 when every house passes, 1 when one
 has problems, 2 on an unreadable file or database.
 """
@@ -25,12 +25,14 @@ def run(args: argparse.Namespace) -> int:
 
     from logicenveval.scene.house_check import check_house
     from logicenveval.scene.house_import import load_house
-    from logicenveval.scene.procthor import load_procthor_db, our_assets
+    from logicenveval.scene.procthor import installed_procthor_db, load_procthor_db, our_assets
 
-    real = bool(args.procthor_db)
-    db = load_procthor_db(args.procthor_db) if real else our_assets()
+    found = load_procthor_db(args.procthor_db) if args.procthor_db else installed_procthor_db()
+    real = found is not None
+    db = found if found is not None else our_assets()
     if not real and not args.json:
-        print("no --procthor-db: checking against our recorded mapping only "
+        print("ProcTHOR's databases are not installed (pip install 'logicenveval[procthor]') and no "
+              "--procthor-db: checking against our recorded mapping only "
               "(benchmark_data/procthor_assets.json), not ProcTHOR's full databases")
     failed = 0
     reports = {}

@@ -17,7 +17,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--env-id", default=None, help="env_id (default: the --out file's name)")
     p.add_argument("--procthor-db", metavar="DIR", default=None,
                    help="ProcTHOR's procthor/databases folder: exact types and sizes of its asset ids "
-                   "(default: our recorded mapping, then the catalog)")
+                   "(default: those of the installed `procthor` package, the [procthor] extra; "
+                   "else our recorded mapping, then the catalog)")
     p.add_argument("--tasks-dir", default=None, help="folder of <task_id>/task.json (default: the benchmark)")
     p.add_argument("--catalog", default=None, help="catalog.json (default: the benchmark's)")
 
@@ -31,11 +32,12 @@ def run(args: argparse.Namespace) -> int:
     from logicenveval.envfiles import env_to_json
     from logicenveval.scene.export_files import write_output
     from logicenveval.scene.house_import import import_house, load_house
-    from logicenveval.scene.procthor import load_procthor_db
+    from logicenveval.scene.import_report import format_rooms, house_report
+    from logicenveval.scene.procthor import installed_procthor_db, load_procthor_db
 
     task = load_task(args.task, args.tasks_dir)
     catalog = load_catalog(args.catalog)
-    assets = load_procthor_db(args.procthor_db) if args.procthor_db else None
+    assets = load_procthor_db(args.procthor_db) if args.procthor_db else installed_procthor_db()
     path, out = Path(args.house), Path(args.out)
     report = import_house(load_house(path), task_id=task.id,
                           env_id=args.env_id or out.name.removesuffix(".json"),
@@ -49,6 +51,13 @@ def run(args: argparse.Namespace) -> int:
           + "; sizes from " + _counts(report.size_sources))
     for w in report.warnings:
         print(f"warning: {w}")
+    house = house_report(report, catalog)
+    unreachable = [f.rooms[0] for f in house.physics.extended.failures if f.code == "unreachable_room"]
+    print(f"PhyPR of the imported house: floor plan {'passes' if house.physics.floor_plan.passed else 'fails'}"
+          f" ({len(unreachable)} unreachable room(s)), {house.objects - house.entity_failed} of {house.objects}"
+          " object(s) pass entity; per room:")
+    for line in format_rooms(house):
+        print(line)
     for otype, names in sorted(report.ambiguous_types.items()):
         print(f"note: AI2-THOR type {otype} fits categories {', '.join(names)}; used "
               f"{report.chosen[otype]} (docs/scene.md: Importing houses)")

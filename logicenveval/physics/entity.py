@@ -9,6 +9,7 @@ import numpy as np
 from shapely.geometry import Point, Polygon
 
 from logicenveval.domain.catalog import Catalog
+from logicenveval.domain.shapes import load_shapes, support_gap
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.physics.geometry import (
     Body,
@@ -28,11 +29,18 @@ def _fail(code: str, message: str, objects: list[str], *, rooms: list[str] | Non
                           measured=measured, tolerance=tolerance, message=message)
 
 
+def settles(gap: float, tol: Tolerances) -> bool:
+    """A bottom `gap` m above a support (< 0: below it) rests on it: within `support_gap` of it,
+    or a short drop above it that AI2-THOR's physics settles on load (`settle_drop`)."""
+    return -tol.support_gap <= gap <= max(tol.settle_drop, tol.support_gap)
+
+
 def rests_on(b: Body, s: Body, tol: Tolerances) -> tuple[bool, str, float]:
-    """Whether `b` rests on the top face of `s` — its bottom at that top and its centre of mass over
-    the top's footprint: (holds, reason code, measured)."""
-    gap = b.bottom - s.top
-    if abs(gap) > tol.support_gap:
+    """Whether `b` rests on `s` — its bottom at one of the heights where the shape of `s` holds
+    objects (its top for a plain box; a seat, a shelf band: domain.shapes), or a settling drop
+    above it, and its centre of mass over the footprint: (holds, reason code, measured)."""
+    gap = support_gap(b.bottom, s.bottom, s.top, load_shapes().of(s.obj.category))
+    if not settles(gap, tol):
         return False, "not_supported", gap
     outside = float(s.footprint.exterior.distance(Point(b.xz))) if not s.footprint.contains(Point(b.xz)) else 0.0
     if outside > 0:
@@ -41,9 +49,14 @@ def rests_on(b: Body, s: Body, tol: Tolerances) -> tuple[bool, str, float]:
 
 
 def contained_excess(b: Body, c: Body) -> float:
-    """How far (m) the corners of `b` stick out of the box of container `c`."""
+    """How far (m) the corners of `b` stick out of the box of container `c` — through its top
+    too unless the shape of `c` is open at the top (a bottle standing in a sink: domain.shapes)."""
     local = c.to_local(b.corners())
-    return float(np.max(np.abs(local) - c.half, initial=0.0))
+    excess = np.abs(local) - c.half
+    shape = load_shapes().of(c.obj.category)
+    if shape is not None and shape.open_top:
+        excess[:, 1] = np.where(local[:, 1] > 0, 0.0, excess[:, 1])
+    return float(np.max(excess, initial=0.0))
 
 
 def wall_distance(b: Body, poly: Polygon) -> float:
@@ -79,7 +92,7 @@ def _support(b: Body, env: EnvSpec, bodies: dict[str, Body], polys: dict[str, Po
         if o.container is None:
             out.append(_fail("not_supported", f"{o.id} has neither support nor container", [o.id]))
     elif sup == "floor":
-        if o.container is None and abs(b.bottom) > tol.support_gap:
+        if o.container is None and not settles(b.bottom, tol):
             out.append(_fail("not_supported", f"{o.id} bottom is at y={b.bottom:.3f} m, not on the floor",
                              [o.id], measured=b.bottom, tolerance=tol.support_gap))
     elif sup == "ceiling":
@@ -104,7 +117,7 @@ def _support(b: Body, env: EnvSpec, bodies: dict[str, Body], polys: dict[str, Po
         if s is not None:
             ok, code, measured = rests_on(b, s, tol)
             if not ok:
-                what = ("does not rest on the top of" if code == "not_supported"
+                what = ("does not rest on a surface of" if code == "not_supported"
                         else "has its centre of mass beside the top of")
                 out.append(_fail(code, f"{o.id} {what} {sup} ({measured:+.3f} m)", [o.id, sup],
                                  measured=measured, tolerance=tol.support_gap if code == "not_supported" else 0.0))
@@ -213,10 +226,11 @@ def collisions(bodies: list[Body], tol: Tolerances, *, broad_phase: bool = True)
 
 
 def swing_areas(env: EnvSpec) -> list[tuple[str, Polygon]]:
-    """A door-width square on each side of every door (the area its leaf sweeps or a person needs)."""
+    """A door-width square on each side of every door (the area its leaf sweeps or a person needs);
+    an open boundary between rooms (type `open`) has no leaf and is a whole wall wide: none."""
     out = []
     for d in env.doors:
-        if d.segment is None or not finite(*d.segment[0], *d.segment[1]):
+        if d.type == "open" or d.segment is None or not finite(*d.segment[0], *d.segment[1]):
             continue
         p, q = np.asarray(d.segment[0], float), np.asarray(d.segment[1], float)
         width = float(np.linalg.norm(q - p))
@@ -292,5 +306,6 @@ def check_entities(env: EnvSpec, bodies: dict[str, Body], polys: dict[str, Polyg
     return fails
 
 
-__all__ = ["check_entities", "collisions", "contained_excess", "enclosing", "exempt", "rests_on", "swing_areas",
+__all__ = ["check_entities", "collisions", "contained_excess", "enclosing", "exempt", "rests_on", "settles",
+           "swing_areas",
            "wall_distance"]

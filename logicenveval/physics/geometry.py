@@ -18,6 +18,7 @@ import numpy as np
 from shapely.geometry import LineString, Polygon
 from shapely.geometry.base import BaseGeometry
 
+from logicenveval.domain.shapes import load_shapes
 from logicenveval.model.envspec import EnvObject, EnvSpec
 
 _SIGNS = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], float)
@@ -46,6 +47,8 @@ class Body:
     aabb_max: np.ndarray
     collision: fcl.CollisionObject
     is_box: bool = True     # False: the convex hull of a mesh file
+    #: the solid parts of the box where its shape says only parts are solid (domain.shapes)
+    parts: tuple[fcl.CollisionObject, ...] | None = None
 
     @property
     def id(self) -> str:
@@ -132,7 +135,21 @@ def build_body(obj: EnvObject, mesh_dir: Path | None = None) -> Body:
         bottom=float(world[:, 1].min()), top=float(world[:, 1].max()),
         aabb_min=world.min(axis=0), aabb_max=world.max(axis=0),
         collision=fcl.CollisionObject(geom, tf), is_box=verts is None,
+        parts=_solid_parts(obj, center, half, rot) if verts is None else None,
     )
+
+
+def _solid_parts(obj: EnvObject, center: np.ndarray, half: np.ndarray, rot: np.ndarray
+                 ) -> tuple[fcl.CollisionObject, ...] | None:
+    """fcl boxes of the solid parts of the object's category shape (None: the box is solid)."""
+    shape = load_shapes().of(obj.category)
+    if shape is None or shape.solid is None:
+        return None
+    out = []
+    for part in shape.solid:
+        c, h = part.local_box(half)
+        out.append(fcl.CollisionObject(fcl.Box(*(2.0 * h)), fcl.Transform(rot, center + rot @ c)))
+    return tuple(out)
 
 
 def room_polygon(points: list[tuple[float, float]] | None) -> Polygon | None:
@@ -141,13 +158,20 @@ def room_polygon(points: list[tuple[float, float]] | None) -> Polygon | None:
     return Polygon(points)
 
 
-def penetration_depth(a: Body, b: Body) -> float:
-    """Deepest contact between two bodies according to fcl (0 when they do not collide)."""
+def _depth(a: fcl.CollisionObject, b: fcl.CollisionObject) -> float:
     request = fcl.CollisionRequest(num_max_contacts=8, enable_contact=True)
     result = fcl.CollisionResult()
-    if fcl.collide(a.collision, b.collision, request, result) == 0:
+    if fcl.collide(a, b, request, result) == 0:
         return 0.0
     return max((float(c.penetration_depth) for c in result.contacts), default=0.0)
+
+
+def penetration_depth(a: Body, b: Body) -> float:
+    """Deepest contact between two bodies according to fcl (0 when they do not collide), between
+    their solid parts where their shapes have parts (a chair's seat under a table's top is free)."""
+    if a.parts is None and b.parts is None:
+        return _depth(a.collision, b.collision)
+    return max(_depth(pa, pb) for pa in (a.parts or (a.collision,)) for pb in (b.parts or (b.collision,)))
 
 
 def candidate_pairs(bodies: list[Body], margin: float = 0.0) -> list[tuple[int, int]]:

@@ -9,7 +9,7 @@ import numpy as np
 from shapely.geometry import Point, Polygon
 
 from logicenveval.model.envspec import EnvSpec, Relation
-from logicenveval.physics.entity import contained_excess, rests_on, wall_distance
+from logicenveval.physics.entity import contained_excess, rests_on, settles, wall_distance
 from logicenveval.physics.geometry import Body
 from logicenveval.physics.report import PhysicsFailure, Tolerances
 
@@ -55,7 +55,7 @@ def _holds(rel: Relation, bs: list[Body], env: EnvSpec, polys: dict[str, Polygon
         if a.obj.support != b.id:
             return False, None, None, f"support is {a.obj.support!r}, not {b.id!r}"
         ok, _, m = rests_on(a, b, tol)
-        return ok, m, tol.support_gap, "does not rest on the top face with its centre over it"
+        return ok, m, tol.support_gap, "does not rest on a surface of it with its centre over it"
     if t == "inside":
         if a.obj.container != b.id:
             return False, None, None, f"container is {a.obj.container!r}, not {b.id!r}"
@@ -112,7 +112,7 @@ def check_relations(env: EnvSpec, bodies: dict[str, Body], polys: dict[str, Poly
         if rel.type == "on" and rel.args[1] == "floor":
             oid = _resolve(rel.args[0], env, ids)
             body = bodies.get(oid) if oid else None
-            if oid is None or body is None or env.obj(oid).support != "floor" or abs(body.bottom) > tol.support_gap:
+            if oid is None or body is None or env.obj(oid).support != "floor" or not settles(body.bottom, tol):
                 fails.append(_fail("relation_violated", rel, "not resting on the floor"))
             continue
         resolved = [_resolve(x, env, ids) for x in rel.args]

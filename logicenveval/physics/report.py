@@ -33,6 +33,7 @@ class Tolerances(BaseModel):
     door_floor: float = 0.02       # door bottom is y = 0 by definition; kept for completeness
     ceiling_margin: float = 0.0    # door/window top must be <= wall_height - margin
     support_gap: float = 0.02      # |bottom - support top|
+    settle_drop: float = 0.10      # a bottom this far above a support settles onto it (docs/physics.md)
     penetration: float = 0.01      # deepest allowed interpenetration between unrelated objects
     wall_gap: float = 0.05         # wall-mounted back face to wall
     containment: float = 0.02      # contained box may stick out of its container by this much

@@ -10,6 +10,7 @@ from typing import Any
 import numpy as np
 
 from logicenveval.domain.catalog import Catalog, Category
+from logicenveval.domain.shapes import load_shapes
 from logicenveval.envfiles import env_from_dict
 from logicenveval.errors import EnvSpecError
 from logicenveval.model.envspec import Agent, EnvObject, EnvSpec, Relation
@@ -196,11 +197,12 @@ class _Builder:
         cat = self.cats[o.id]
         lo, hi = list(cat.size_min), list(cat.size_max)
         kids = [c for c in self.objects.values() if c.support == o.id or c.container == o.id]
+        back = self._seat_back(o.id)
         for c in kids:  # leave room for the smallest version of each child
             cmin = self.cats[c.id].size_min
             need = max(cmin[0], cmin[2]) + 2 * CONTAINER_MARGIN + self.g
-            for ax in (0, 2):
-                lo[ax] = min(hi[ax], max(lo[ax], need))
+            for ax in (0, 2):  # things on a seat use its depth in front of the back strip
+                lo[ax] = min(hi[ax], max(lo[ax], need / (1 - back) if ax == 2 and c.support == o.id else need))
             if c.container == o.id:
                 lo[1] = min(hi[1], max(lo[1], cmin[1] + 2 * CONTAINER_MARGIN))
         if o.size is not None:
@@ -211,13 +213,19 @@ class _Builder:
         if ref is not None:
             ps = self.sizes[ref]
             m = 2 * CONTAINER_MARGIN if o.container else 0.0
-            cap = [ps[0] - m - self.g, ps[1] - m, ps[2] - m - self.g]
+            seat = 0.0 if o.container else self._seat_back(ref)
+            cap = [ps[0] - m - self.g, ps[1] - m, ps[2] * (1 - seat) - m - self.g]
             for ax in (0, 2):
                 raw[ax] = max(cat.size_min[ax], min(raw[ax], min(cap[0], cap[2])))
             if o.container:
                 raw[1] = max(cat.size_min[1], min(raw[1], cap[1]))
         out = [_snap_size(v, cat.size_min[k], cat.size_max[k], self.g) for k, v in enumerate(raw)]
         return (out[0], out[1], out[2])
+
+    def _seat_back(self, oid: str) -> float:
+        """The depth fraction of the back strip of a seat things are put on (0: all its top)."""
+        shape = load_shapes().of(self.objects[oid].category) if oid in self.objects else None
+        return shape.surface()[1] if shape is not None else 0.0
 
     # --- layout -------------------------------------------------------------------------------
     def _seed(self) -> int:
@@ -429,7 +437,11 @@ class _Builder:
             if not kids:
                 continue
             m = CONTAINER_MARGIN if mode == "inside" else 0.0
-            fw, fd = parent.size[0] - 2 * m, parent.size[2] - 2 * m
+            # on a seat (a sofa, an armchair, a bed): on its seat in front of its back strip, at
+            # the height where things rest on it in AI2-THOR's scenes (domain.shapes)
+            shape = load_shapes().of(self.objects[pid].category) if mode == "on" else None
+            level, back = shape.surface() if shape is not None else (1.0, 0.0)
+            fw, fd = parent.size[0] - 2 * m, parent.size[2] * (1 - back) - 2 * m
             frame = (int(math.floor(fw / self.g + 1e-6)), int(math.floor(fd / self.g + 1e-6)))
             boxes = [self._box(o.id) for o in kids]
             placed, dropped = self.solver.pack(frame, boxes, seed=self._seed(), timeout_s=self.spec.room_timeout_s,
@@ -446,10 +458,11 @@ class _Builder:
                 p = placed[b.id]
                 ex, ez = (b.size[2], b.size[0]) if p.o % 2 else (b.size[0], b.size[2])
                 lx = p.x0 + ex / 2 - fw / 2
-                lz = p.z0 + ez / 2 - fd / 2
+                lz = p.z0 + ez / 2 - fd / 2 + parent.size[2] * back / 2
                 wx = lx * math.cos(yaw) + lz * math.sin(yaw)
                 wz = -lx * math.sin(yaw) + lz * math.cos(yaw)
-                base = parent.top if mode == "on" else parent.position[1] - parent.size[1] / 2 + m
+                bottom = parent.position[1] - parent.size[1] / 2
+                base = bottom + level * parent.size[1] if mode == "on" else bottom + m
                 self.poses[b.id] = _Pose((_r(parent.position[0] + wx), _r(base + b.size[1] / 2),
                                           _r(parent.position[2] + wz)), (parent.yaw + 90.0 * p.o) % 360, b.size)
                 placed_ids.append(b.id)

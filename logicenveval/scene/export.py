@@ -223,7 +223,7 @@ def _opening(walls: _Walls, rid: str, seg: Seg, mapping: dict[str, Any], kind: s
     hi = _p(start + w - ox, y0 + h - oy, 0)
     fields = {"assetId": asset_id, "holePolygon": [lo, hi],
               "assetPosition": _p(lo["x"] + ox + asset_w / 2, y0 + oy + asset_h / 2, 0),
-              "logicenvevalOpening": {"width": round(t1 - t0, 4), "height": round(height, 4),
+              "logicenvevalOpening": {"start": round(t0, 4), "width": round(t1 - t0, 4), "height": round(height, 4),
                                       "holeSizeDifference": [round(w - (t1 - t0), 4), round(h - height, 4)]}}
     return fields, wall
 
@@ -261,13 +261,13 @@ def to_procthor(env: EnvSpec, catalog: Catalog, mapping: dict[str, Any] | None =
         r0, r1 = d.rooms
         if r0 == "exterior":
             r0, r1 = r1, r0
-        kind = "doorway" if d.type == "doorway" else "door"
+        kind = "doorway" if d.type in ("doorway", "open") else "door"  # an open boundary: a doorway
         fields, w0 = _opening(hosts, r0, d.segment, m, kind, 0.0, d.height)
         w1, _, _ = hosts.host(r1, d.segment)
         doors.append({"id": d.id, **fields, "room0": r0, "room1": r1 if r1 != "exterior" else r0,
                       "wall0": w0["id"], "wall1": w1["id"],
-                      "openable": d.type != "doorway" and r1 != "exterior",
-                      "openness": 1 if d.state == "open" else 0})
+                      "openable": d.type not in ("doorway", "open") and r1 != "exterior",
+                      "openness": 1 if d.state == "open" else 0, "logicenvevalDoorType": d.type})
     windows = []
     for w in env.windows:
         if w.segment is None:
@@ -284,6 +284,10 @@ def to_procthor(env: EnvSpec, catalog: Catalog, mapping: dict[str, Any] | None =
     def obj(o: EnvObject) -> dict[str, Any]:
         cat = catalog.get(o.category)
         chosen = m["categories"].get(o.category)
+        extra = o.model_extra or {}
+        if chosen is None and isinstance(extra.get("asset_id"), str):  # an imported obstacle keeps its asset
+            chosen = {"assetId": extra["asset_id"], "objectType": str(extra.get("object_type") or o.category),
+                      "size": None}
         if chosen is None:
             raise EnvSpecError(f"object {o.id}: category {o.category!r} has no ProcTHOR asset in "
                                "our mapping", field=f"objects.{o.id}.category",
@@ -300,7 +304,7 @@ def to_procthor(env: EnvSpec, catalog: Catalog, mapping: dict[str, Any] | None =
             "logicenvevalCategory": o.category,
             "logicenvevalStates": {k: v for k, v in sorted(o.states.items())
                                    if k not in _AI2THOR_STATES and k != "open"}}
-        if o.size is not None:
+        if o.size is not None and chosen["size"] is not None:
             out["logicenvevalSizeDifference"] = [round(a - b, 4) for a, b in zip(chosen["size"], o.size, strict=True)]
         return out
 

@@ -45,11 +45,12 @@ from shapely.geometry import Point, Polygon
 
 from logicenveval.domain.catalog import Catalog
 from logicenveval.domain.categories import Resolution, snake, vocabulary
+from logicenveval.domain.shapes import load_shapes
 from logicenveval.envfiles import env_from_dict
 from logicenveval.errors import EnvSpecError
 from logicenveval.limits import limit, raise_hint
 from logicenveval.model.envspec import EnvSpec
-from logicenveval.scene.procthor import ProcthorDB, our_assets
+from logicenveval.scene.procthor import OBSTACLE_CLASSES, ProcthorDB, our_assets
 
 SUPPORTED_SCHEMAS = ("1.0.0",)
 
@@ -74,6 +75,11 @@ class ImportReport:
     type_sources: dict[str, int] = field(default_factory=dict)
     #: where object sizes came from (house, asset database, catalog, none) -> count
     size_sources: dict[str, int] = field(default_factory=dict)
+    #: object id -> where its size came from; object id -> obstacle class (OBSTACLE_CLASSES)
+    size_of: dict[str, str] = field(default_factory=dict)
+    obstacles: dict[str, str] = field(default_factory=dict)
+    #: EnvSpec room id -> the house's room id
+    room_sources: dict[str, str] = field(default_factory=dict)
 
 
 def show(value: Any, limit_chars: int = 60) -> str:
@@ -174,6 +180,8 @@ class _Importer:
         self.ambiguous: dict[str, list[str]] = {}
         self.type_sources: dict[str, int] = {}
         self.size_sources: dict[str, int] = {}
+        self.size_of: dict[str, str] = {}  # object id -> where its size came from
+        self.obstacles: dict[str, str] = {}  # object id -> its obstacle class (OBSTACLE_CLASSES)
         self.room_ids: dict[str, str] = {}
         self.room_where: dict[str, str] = {}
         self.polys: dict[str, Polygon] = {}
@@ -185,23 +193,36 @@ class _Importer:
         self.next_suffix: dict[str, int] = {}
         self.max_objects = limit("max_env_objects")
         self.where = ""  # the part being read, for errors the precise checks do not name
+        self.last_size_source = "none"
 
     def rooms(self) -> list[dict[str, Any]]:
         out = []
         counts: dict[str, int] = {}
-        for i, room in enumerate(_list(self.house, "rooms", "", required=True)):
+        listed = _list(self.house, "rooms", "", required=True)
+        # a house we exported names its rooms by our ids: keep them (ProcTHOR's are room|n)
+        plain = {r["id"] for r in listed if isinstance(r, dict) and isinstance(r.get("id"), str)
+                 and re.fullmatch(r"[a-z][a-z0-9_]*", r["id"])}
+        taken: set[str] = set()
+        for i, room in enumerate(listed):
             where = self.where = f"rooms[{i}]"
             raw = _ref(_need(room, "id", where), f"{where}.id")
             if raw in self.room_ids:
                 raise EnvSpecError(f"room id {show(raw)} is used twice ({self.room_where[raw]} and "
                                    f"{where})", field=f"{where}.id", hint="give every room its own id")
-            rtype = room.get("roomType") or "LivingRoom"
+            # our own room type where we exported it (a Study is a Bedroom to AI2-THOR)
+            rtype = room.get("logicenvevalRoomType") or room.get("roomType") or "LivingRoom"
             if not isinstance(rtype, str):
                 raise EnvSpecError(f"expected a room type, got {show(rtype)}", field=f"{where}.roomType",
                                    hint="Kitchen, LivingRoom, Bedroom or Bathroom")
-            base = snake(rtype) or "room"
-            counts[base] = counts.get(base, 0) + 1
-            rid = base if counts[base] == 1 else f"{base}_{counts[base]}"
+            if raw in plain and raw not in taken:
+                rid = raw
+            else:
+                base = snake(rtype) or "room"
+                rid = ""
+                while not rid or rid in plain or rid in taken:
+                    counts[base] = counts.get(base, 0) + 1
+                    rid = base if counts[base] == 1 else f"{base}_{counts[base]}"
+            taken.add(rid)
             self.room_ids[raw], self.room_where[raw] = rid, where
             poly = [_xz(p, f"{where}.floorPolygon[{k}]")
                     for k, p in enumerate(_list(room, "floorPolygon", where, required=True))]
@@ -265,6 +286,14 @@ class _Importer:
         hi_x, hi_y = _num(hp[1].get("x"), f"{where}.holePolygon[1].x"), _num(hp[1].get("y"), f"{where}.holePolygon[1].y")
         length = math.dist(start, end) or 1.0
         ux, uz = (end[0] - start[0]) / length, (end[1] - start[1]) / length
+        ours = hole.get("logicenvevalOpening")  # a house we exported: our opening, not the asset's hole
+        if isinstance(ours, dict) and "start" in ours and "width" in ours and "height" in ours:
+            lo_x = _num(ours["start"], f"{where}.logicenvevalOpening.start")
+            hi_x = lo_x + _num(ours["width"], f"{where}.logicenvevalOpening.width")
+            hi_y = lo_y + _num(ours["height"], f"{where}.logicenvevalOpening.height")
+            a = (round(start[0] + ux * lo_x, 4), round(start[1] + uz * lo_x, 4))  # as exported: 0.1 mm
+            b = (round(start[0] + ux * hi_x, 4), round(start[1] + uz * hi_x, 4))
+            return (a, b), lo_y, round(hi_y - lo_y, 4)
         a = (start[0] + ux * lo_x, start[1] + uz * lo_x)
         b = (start[0] + ux * hi_x, start[1] + uz * hi_x)
         return (a, b), lo_y, hi_y - lo_y
@@ -281,8 +310,37 @@ class _Importer:
             openness = _num(d.get("openness"), f"{where}.openness", 0.0)
             out.append({"id": _ident(str(d.get("id", f"door_{i}"))), "rooms": [r0, "exterior" if exterior else r1],
                         "segment": seg, "height": round(height, 4) or 2.1,
-                        "type": "door" if d.get("openable", True) else "doorway",
+                        "type": d["logicenvevalDoorType"] if isinstance(d.get("logicenvevalDoorType"), str)
+                        else "door" if d.get("openable", True) else "doorway",
                         "state": "open" if openness > 0 else "closed"})
+        return out
+
+    def openings(self, height: float) -> list[dict[str, Any]]:
+        """Open boundaries: ProcTHOR joins two rooms without a door by giving both rooms' walls
+        on their shared segment `"empty": true`. Each such pair becomes a door of type `open`
+        spanning the segment (no leaf, so no swing area) that connects the two rooms."""
+        sides: dict[tuple[tuple[float, float], tuple[float, float]], list[str]] = {}
+        for wid, (i, w) in self.walls.items():
+            if not isinstance(w, dict) or w.get("empty") is not True:
+                continue
+            self.where = f"walls[{i}]"
+            poly = _list(w, "polygon", self.where, required=True)
+            if len(poly) < 2:
+                raise EnvSpecError("a wall polygon needs its two ends first", field=f"{self.where}.polygon",
+                                   hint=_LAYOUT)
+            ends = sorted((_xz(poly[0], f"{self.where}.polygon[0]"), _xz(poly[1], f"{self.where}.polygon[1]")))
+            key = (ends[0], ends[1])
+            ref = w.get("roomId", f"room|{wid.split('|')[1]}" if wid.count("|") >= 5 else None)
+            if ref is None or str(ref) not in self.room_ids:
+                continue  # an exterior or unknown side joins nothing
+            room = self.room_ids[str(ref)]
+            if room not in sides.setdefault(key, []):
+                sides[key].append(room)
+        out: list[dict[str, Any]] = []
+        for (a, b), rooms in sorted(sides.items()):
+            for r0, r1 in zip(rooms, rooms[1:], strict=False):
+                out.append({"id": _ident(f"open_{r0}_{r1}_{len(out)}"), "rooms": [r0, r1], "segment": (a, b),
+                            "height": round(height, 4), "type": "open", "state": "open"})
         return out
 
     def windows(self) -> list[dict[str, Any]]:
@@ -325,6 +383,8 @@ class _Importer:
         res, otype, source = self.object_type(obj, raw_id)
         self.type_sources[source] = self.type_sources.get(source, 0) + 1
         if res is None or res.category is None:
+            if otype in OBSTACLE_CLASSES:
+                self.obstacles[oid] = OBSTACLE_CLASSES[otype][0]
             self.unknown.setdefault(otype, []).append(oid)
             return snake(otype) or "unknown", otype
         if res.ambiguous:
@@ -352,6 +412,7 @@ class _Importer:
         elif size is None:
             source = "none"
         self.size_sources[source] = self.size_sources.get(source, 0) + 1
+        self.last_size_source = source
         return size
 
     def _unique(self, raw_id: str) -> str:
@@ -390,11 +451,15 @@ class _Importer:
         states = {flag: bool(obj[key]) for key, flag in _STATES.items() if key in obj}
         if "openness" in obj:
             states["open"] = _num(obj["openness"], f"{where}.openness", 0.0) > 0
+        ours = obj.get("logicenvevalStates")  # a house we exported: the states AI2-THOR has no key for
+        if isinstance(ours, dict):
+            states.update({str(k): v for k, v in ours.items() if isinstance(v, bool)})
         rot = obj.get("rotation")
         yaw = _num(rot.get("y"), f"{where}.rotation.y", 0.0) if isinstance(rot, dict) else 0.0
         entry: dict[str, Any] = {
             "id": oid, "category": category, "room": parent["room"] if parent else self.room_of(x, z),
             "position": (x, y, z), "yaw": yaw, "size": self._size(obj, where, category),
+            "size_source": self.last_size_source,
             "states": states, "procthor_id": raw_id, "asset_id": obj.get("assetId"),
             "object_type": otype,
         }
@@ -402,10 +467,11 @@ class _Importer:
             entry["support"] = "wall" if cat and cat.placement[0] == "wall" else "floor"
         else:
             pcat = self.catalog.get(parent["category"])
-            if pcat is not None and pcat.container and not pcat.surface:
+            if pcat is not None and pcat.container and not pcat.surface and not _on_rim(entry, parent):
                 entry["support"], entry["container"] = None, parent["id"]
             else:
                 entry["support"] = parent["id"]
+        self.size_of[oid] = entry.pop("size_source")
         self.objects.append(entry)
         return entry
 
@@ -427,6 +493,20 @@ class _Importer:
             return {}
         x, z = _xz(pos, "metadata.agent.position")
         return {"room": self.room_of(x, z), "position": (x, z)}
+
+
+def _on_rim(child: dict[str, Any], parent: dict[str, Any]) -> bool:
+    """A child of a container whose shape holds objects only near its top (a rim: its lowest
+    level above half its height, e.g. a sink) and whose bottom is at or above that level (the
+    faucet on a sink) rests on it, not in it; a fridge's shelves do not make a rim."""
+    if child["size"] is None or parent["size"] is None:
+        return False
+    shape = load_shapes().of(parent["category"])
+    if shape is None or shape.levels[0][0] < 0.5:
+        return False
+    p_bottom = parent["position"][1] - parent["size"][1] / 2
+    level = p_bottom + shape.levels[0][0] * parent["size"][1]
+    return bool(child["position"][1] - child["size"][1] / 2 >= level - 0.02)
 
 
 def _ident(text: str) -> str:
@@ -463,6 +543,7 @@ def import_house(house: dict[str, Any], *, task_id: str, env_id: str, catalog: C
         imp.add_objects(_list(house, "objects", ""))
         imp.where = "walls"
         height = imp.ceiling()
+        doors += imp.openings(height)
         imp.where = "metadata.agent"
         agent = imp.agent()
     except EnvSpecError as exc:
@@ -474,15 +555,20 @@ def import_house(house: dict[str, Any], *, task_id: str, env_id: str, catalog: C
                            field=imp.where or None, hint=_LAYOUT) from None
     for otype, ids in sorted(imp.unknown.items()):
         shown = ids if len(ids) <= 5 else [*ids[:5], f"… ({len(ids) - 5} more)"]
-        warnings.append(f"AI2-THOR type {otype} names no catalog category: kept as obstacle(s) "
-                        f"{', '.join(shown)}")
+        if otype in OBSTACLE_CLASSES:
+            cls, why = OBSTACLE_CLASSES[otype]
+            warnings.append(f"AI2-THOR type {otype} is a {cls} ({why}): kept as obstacle(s) {', '.join(shown)}")
+        else:
+            warnings.append(f"AI2-THOR type {otype} names no catalog category: kept as obstacle(s) "
+                            f"{', '.join(shown)}")
     data = {"task_id": task_id, "generator": "procthor-import", "env_id": env_id,
             "wall_height": height, "rooms": rooms, "doors": doors, "windows": windows,
             "objects": imp.objects, "agent": agent, "source_schema": schema or "1.0.0"}
     env = env_from_dict(data, source=source)
     return ImportReport(env=env, unknown_types=imp.unknown, ambiguous_types=imp.ambiguous,
                         chosen=imp.chosen, warnings=warnings, type_sources=imp.type_sources,
-                        size_sources=imp.size_sources)
+                        size_sources=imp.size_sources, size_of=imp.size_of, obstacles=imp.obstacles,
+                        room_sources={r["id"]: r["procthor_id"] for r in rooms})
 
 
 def load_house(path: str | Path) -> dict[str, Any]:

@@ -6,7 +6,8 @@ ProcTHOR's `procthor/databases/` folder that say so (`asset-database.json`: obje
 assets with `assetId`, `objectType`, `boundingBox`, `primaryProperty`; `material-database.json`:
 group -> material names; `wall-holes.json`: asset id -> hole `min`/`max`/`offset`).
 
-We do not ship those databases (workplace rule: no data copied from another repository).
+We do not ship those databases: the `[procthor]` extra installs ProcTHOR's wheel, whose
+databases `find_procthor_db` locates (Apache-2.0; read as data, its code is never imported).
 `benchmark_data/procthor_assets.json` is *our choice*: one ProcTHOR asset id per catalog
 category (the asset of the category's AI2-THOR type, else a stand-in of the same pickability,
 whose size is closest to the category's mean size), the door, doorway and window ids with the
@@ -17,6 +18,7 @@ that mapping.
 
 from __future__ import annotations
 
+import importlib.util
 import math
 from dataclasses import dataclass
 from functools import lru_cache, partial
@@ -61,6 +63,27 @@ STAND_IN_TYPES = {
     "food_can": "Cup", "pet_food": "Bowl", "cutting_board": "Plate", "blender": "CoffeeMachine",
     "flower": "Vase", "first_aid_kit": "Box", "mop": "Plunger", "broom": "Plunger",
     "dustpan": "ScrubBrush", "bucket": "GarbageCan", "umbrella_stand": "GarbageCan",
+}
+#: AI2-THOR object types that are not household things a task names: the obstacle class an
+#: imported one is kept as (category = its snake-case type, judged for collisions and support
+#: but not sized against the catalog) and why. Every other type in ProcTHOR's databases maps to
+#: a catalog category (tests/test_real_houses.py checks both against the installed databases).
+OBSTACLE_CLASSES: dict[str, tuple[str, str]] = {
+    "Doorframe": ("opening", "a door's frame: houses give it as a door (imported as a door), not an object"),
+    "Doorway": ("opening", "a doorway: imported as a door of type doorway, not an object"),
+    "Window": ("opening", "a window: imported as a window, not an object"),
+    "Floor": ("structure", "the floor itself (AI2-THOR's scenes list it as an object)"),
+    "Drawer": ("part", "a drawer of a dresser, desk or counter: part of its furniture, inside its box"),
+    "SinkBasin": ("part", "the basin of a sink: part of the sink"),
+    "BathtubBasin": ("part", "the basin of a bathtub: part of the bathtub"),
+    "Faucet": ("fixture", "mounted on a sink or bathtub; never moved"),
+    "ShowerHead": ("fixture", "mounted on a wall; never moved"),
+    "StoveKnob": ("fixture", "part of a stove's front"),
+    "HandTowelHolder": ("fixture", "a rail on a wall; holds a towel"),
+    "ToiletPaperHanger": ("fixture", "a holder on a wall; holds toilet paper"),
+    "ShowerDoor": ("fixture", "a glass door of a shower stall"),
+    "ShowerCurtain": ("fixture", "hangs from a rail of a shower"),
+    "Blinds": ("fixture", "hang in a window"),
 }
 #: the opening sizes (width, height) we choose one wall-hole asset for
 OPENING_TARGETS = {"door": ((0.9, 2.1), (1.6, 2.1)), "doorway": ((0.9, 2.1), (1.6, 2.1)),
@@ -125,6 +148,27 @@ def load_procthor_db(folder: str | Path) -> ProcthorDB:
         raise ConfigError(f"not in ProcTHOR's database format ({type(exc).__name__}: "
                           f"{str(exc)[:200]})", file=str(d), hint=_DB_HINT) from None
     return ProcthorDB(assets, materials, holes, str(d))
+
+
+def find_procthor_db() -> Path | None:
+    """ProcTHOR's `procthor/databases` folder of the installed `procthor` package (the
+    `[procthor]` extra), found without importing it (its import pulls heavy dependencies)."""
+    try:
+        spec = importlib.util.find_spec("procthor")
+    except (ImportError, ValueError):
+        return None
+    for loc in (spec.submodule_search_locations or []) if spec is not None else []:
+        folder = Path(loc) / "databases"
+        if (folder / "asset-database.json").is_file():
+            return folder
+    return None
+
+
+@lru_cache(maxsize=1)
+def installed_procthor_db() -> ProcthorDB | None:
+    """The installed ProcTHOR databases, read once, or None when the extra is not installed."""
+    folder = find_procthor_db()
+    return load_procthor_db(folder) if folder is not None else None
 
 
 def _distance(a: Size, b: Size) -> float:

@@ -11,6 +11,7 @@ import itertools
 import math
 
 from logicenveval.domain.catalog import Catalog
+from logicenveval.domain.shapes import load_shapes
 from logicenveval.model.envspec import EnvObject, EnvSpec
 
 TOL = 0.01
@@ -94,7 +95,9 @@ def geometric_failures(env: EnvSpec, catalog: Catalog) -> list[str]:
         if o.support not in (None, "floor", "wall", "ceiling"):
             s = boxes[o.support]
             cx, cz = (b[0] + b[3]) / 2, (b[2] + b[5]) / 2
-            if abs(b[1] - s[4]) > TOL or not (s[0] <= cx <= s[3] and s[2] <= cz <= s[5]):
+            shape = load_shapes().of(objs[o.support].category)  # a seat holds things on its seat
+            level = s[1] + (shape.surface()[0] if shape is not None else 1.0) * (s[4] - s[1])
+            if abs(b[1] - level) > TOL or not (s[0] <= cx <= s[3] and s[2] <= cz <= s[5]):
                 bad.append(f"{o.id} does not rest on {o.support}")
         if o.container is not None:
             c = boxes[o.container]
