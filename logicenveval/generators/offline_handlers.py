@@ -9,10 +9,11 @@ sofa against a wall", "a chair near its table").
 from __future__ import annotations
 
 import hashlib
+import math
 import re
 from typing import Any
 
-from logicenveval.domain.catalog import load_catalog
+from logicenveval.domain.catalog import Catalog, load_catalog
 from logicenveval.generators.realise import task_objects
 from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.offline import handler
@@ -83,10 +84,55 @@ def feedback_facts(feedback: list[str], facts: list[str]) -> list[str]:
 
 
 def _task_objects(payload: dict[str, Any]) -> list[dict[str, Any]]:
-    """One object per role, placed so that the situation facts (and the layout's feedback) hold."""
+    """One object per role, placed so that the situation facts (and the layout's feedback) hold
+    and every object fits where it is put (the asset sizes, as a model that knows them would)."""
+    catalog = load_catalog()
     facts = list(payload.get("facts") or [])
     facts += feedback_facts(list(payload.get("feedback") or []), facts)
-    return task_objects(payload["task"], facts, load_catalog())
+    banned: list[str] = []
+    objects = task_objects(payload["task"], facts, catalog)
+    for _ in range(len(objects)):
+        new = [f for f in misfits(objects, catalog) if f not in banned and f[4:] not in facts]
+        if not new:
+            break
+        banned += new
+        objects = task_objects(payload["task"], facts + banned, catalog)
+    return objects
+
+
+#: layout grid (m) and the share of a holder's smallest top that its items may fill together
+GRID, FILL = 0.05, 0.8
+
+
+def misfits(objects: list[dict[str, Any]], catalog: Catalog) -> list[str]:
+    """Placements that cannot be laid out, as facts that rule them out: an item larger than its
+    holder's largest top (or opening), or the items on one holder, at the largest size the
+    layout may draw for each, too many for its smallest top (the last listed goes elsewhere)."""
+    by_id = {o["id"]: o for o in objects}
+    out: list[str] = []
+    load: dict[str, float] = {}
+    for o in objects:
+        how, _, holder = str(o["placement"]).partition(":")
+        if how not in ("on", "inside") or holder not in by_id:
+            continue
+        item, host = catalog.get(o["category"]), catalog.get(by_id[holder]["category"])
+        if item is None or host is None:
+            continue
+        pred = f"not {how}({o['id']}, {holder})"
+        inner = sorted(item.size_min if how == "inside" else item.size_min[::2])
+        outer = sorted(host.size_max if how == "inside" else host.size_max[::2])
+        if any(a > b + 1e-9 for a, b in zip(inner, outer, strict=True)):
+            out.append(pred)
+            continue
+        # the layout draws an item's size up to its holder's top, whatever else stands there
+        top = [max(host.size_min[k], item.size_min[k]) for k in (0, 2)]
+        cells = math.prod(math.ceil(min(item.size_max[k], t) / GRID) for k, t in zip((0, 2), top, strict=True))
+        room = math.prod(math.floor(t / GRID) for t in top)
+        if load.get(holder, 0.0) + cells > FILL * room and load.get(holder):
+            out.append(pred)
+            continue
+        load[holder] = load.get(holder, 0.0) + cells
+    return out
 
 
 @handler("select_objects")
