@@ -110,25 +110,25 @@ def _facts(plan: DerivedPlan, trajectory: Trajectory) -> list[str]:
     return [plan.task.variables[v].values[x] for path in trajectory.paths for v, x in path.steps]
 
 
-def exact() -> LogicEnvGen:
-    return LogicEnvGen(selector="exact", name="logicenvgen-exact")
+def exact(**options: Any) -> LogicEnvGen:
+    return LogicEnvGen(**{"selector": "exact", "name": "logicenvgen-exact", **options})
 
 
-def no_dbp() -> LogicEnvGen:
-    return LogicEnvGen(use_trees=False, name="logicenvgen-no-dbp")
+def no_dbp(**options: Any) -> LogicEnvGen:
+    return LogicEnvGen(**{"use_trees": False, "name": "logicenvgen-no-dbp", **options})
 
 
-def no_mtsa() -> LogicEnvGen:
-    return LogicEnvGen(selector="product", name="logicenvgen-no-mtsa")
+def no_mtsa(**options: Any) -> LogicEnvGen:
+    return LogicEnvGen(**{"selector": "product", "name": "logicenvgen-no-mtsa", **options})
 
 
 def exhaustive(max_subsets: int = MAX_SUBSETS) -> LogicEnvGen:
     return LogicEnvGen(selector="exhaustive", name="logicenvgen-exhaustive", max_subsets=max_subsets)
 
 
-def reselect() -> LogicEnvGen:
-    return LogicEnvGen(reselect=True, name="logicenvgen-reselect")
+def reselect(**options: Any) -> LogicEnvGen:
+    return LogicEnvGen(**{"reselect": True, "name": "logicenvgen-reselect", **options})
 
 
-def no_cas() -> LogicEnvGen:
-    return LogicEnvGen(use_solver=False, name="logicenvgen-no-cas")
+def no_cas(**options: Any) -> LogicEnvGen:
+    return LogicEnvGen(**{"use_solver": False, "name": "logicenvgen-no-cas", **options})
