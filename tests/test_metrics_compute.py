@@ -5,6 +5,7 @@ from __future__ import annotations
 import itertools
 import json
 from pathlib import Path
+from typing import Any
 
 import pytest
 from hypothesis import given, settings
@@ -117,9 +118,12 @@ def test_ill_formed_and_invalid_envs(task: Task) -> None:
 def test_aggregate_means_over_tasks(task: Task) -> None:
     a = task_metrics(task, [_sample("e0", [DOLL, BOOK, WIPE])])
     empty = task_metrics(task, [], n_failed=2)
-    assert empty.logcov == 0.0 and empty.ji == 0.0 and empty.redundancy == 0.0
+    assert empty.logcov == 0.0 and empty.ji == 0.0
+    assert empty.redundancy is None and empty.st_ms is None and empty.st_ticks is None  # issue 34
     b = empty.model_copy(update={"task_id": "other_task"})
     g = aggregate([a, b])
+    assert g.redundancy == a.redundancy and g.st_ticks == a.st_ticks  # failing does not look lean
+    assert aggregate([b]).redundancy is None and aggregate([b]).st_ms is None
     assert g.logcov == pytest.approx(3 / 14)
     assert g.faudr.counterfactual == pytest.approx(0.5)
     assert g.faudr.avg == pytest.approx(0.5 / 3)
@@ -217,3 +221,22 @@ def test_faudr_mut_is_none_when_not_scored(task: Task) -> None:
     m = task_metrics(task, [_sample("e0", [DOLL, BOOK, WIPE])])
     assert m.faudr_mut is None and m.faudr_mut_by_class == {}
     assert aggregate([m]).faudr_mut is None
+
+
+def test_compare_never_calls_failing_a_task_faster_or_leaner(task: Task) -> None:
+    """A task without environments has no ST/Redundancy: B failing the second task must not make
+    those figures 'improved' (issue 34)."""
+    from logicenveval.reporting.compare import compare_results
+
+    full = task_metrics(task, [_sample("e0", [DOLL, BOOK, WIPE]), _sample("e1", [DOLL, BOOK, WIPE])])
+    cheap = task_metrics(task, [_sample("e0", [DOLL, BOOK, WIPE])])
+    failed = task_metrics(task, [], n_failed=2)
+
+    def results(second: TaskMetrics) -> dict[str, Any]:
+        cells = {"t1": full.model_dump(mode="json"), "t2": second.model_dump(mode="json") | {"task_id": "t2"}}
+        return {"tasks": ["t1", "t2"], "seed": 0, "per_task": {"g": cells},
+                "results": {"g": aggregate([full, second.model_copy(update={"task_id": "t2"})]).model_dump(mode="json")}}
+
+    deltas = {d.path: d for d in compare_results(results(cheap), results(failed)).pairs[0].deltas}
+    for path in (("redundancy",), ("st_ticks",), ("st_ms",)):
+        assert not deltas[path].improved and deltas[path].before == deltas[path].after

@@ -7,7 +7,10 @@ Decisions where DESIGN.md is silent (docs/logic.md):
   attempts `n_failed`): a failed attempt fails every PhyPR dimension and is no valid scenario,
   so failing never pays; LogCov, LD, JI and FauDR count only what was built;
 - ST averages, over the BTs that were simulated, the per-BT sum of simulation ms over the task's
-  environments; `st_ticks` is the same figure in simulator ticks, which machine load cannot move;
+  environments (each episode timed after a warm-up run, `runner.evaluation`); `st_ticks` is the
+  same figure in simulator ticks, which machine load cannot move;
+- a task without environments has no ST and no Redundancy (null, left out of the means): failing
+  to build anything must not look fast or lean;
 - PhyPR holds the paper's three dimensions only; the extra checks are `plausibility`;
 - JI compares with the minimum cover closest to the realised set (`logic.reference`).
 """
@@ -45,12 +48,14 @@ class TaskMetrics(BaseModel):
     logcov: float
     ld: float
     ji: float
-    redundancy: float
+    #: environments / minimum cover size; None for a task without environments
+    redundancy: float | None
     min_cover: int
     #: faulty kind -> its BT fails in at least one valid environment
     faudr: dict[str, bool]
-    st_ms: float
-    st_ticks: float = 0.0
+    #: None for a task without environments (nothing was simulated)
+    st_ms: float | None
+    st_ticks: float | None = 0.0
     #: environments passing every extra plausibility check, and per failure code how many fail it
     n_extended_ok: int = 0
     extended_codes: dict[str, int] = Field(default_factory=dict)
@@ -103,10 +108,11 @@ class GeneratorMetrics(BaseModel):
     ld: float
     scevr: float
     faudr: FauDR
-    st_ms: float
-    st_ticks: float
+    #: means over the tasks with environments; None when no task has any
+    st_ms: float | None
+    st_ticks: float | None
     ji: float
-    redundancy: float
+    redundancy: float | None
     n_envs: int
     plausibility: Plausibility
     #: environments set out to build (the PhyPR/SceVR denominator) and those not built
@@ -159,12 +165,12 @@ def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0,
     st = (
         sum(sum(s.sim_ms.get(k, 0.0) for s in samples) for k in simulated) / len(simulated)
         if simulated
-        else 0.0
+        else None
     )
     st_ticks = (
         sum(sum(s.sim_ticks.get(k, 0) for s in samples) for k in simulated) / len(simulated)
         if simulated
-        else 0.0
+        else None
     )
     codes = Counter(code for s in samples
                     for code in sorted({f["code"] for f in s.physics.extended_failures}))
@@ -179,7 +185,7 @@ def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0,
         logcov=len(covered) / len(keys),
         ld=len(met) / len(conditions) if conditions else float(bool(good)),
         ji=closest.ji,
-        redundancy=len(samples) / len(closest.trajectories),
+        redundancy=len(samples) / len(closest.trajectories) if samples else None,
         min_cover=len(closest.trajectories),
         faudr={
             k: any(k in s.verdicts and s.verdicts[k] != "passed" for s in valid)
@@ -236,10 +242,10 @@ def aggregate(per_task: Sequence[TaskMetrics]) -> GeneratorMetrics:
         ld=float(df["ld"].mean()),
         scevr=share("n_valid"),
         faudr=FauDR(counterfactual=fau[0], unreachable=fau[1], lackbranch=fau[2], avg=sum(fau) / 3),
-        st_ms=float(df["st_ms"].mean()),
-        st_ticks=float(df["st_ticks"].mean()),
+        st_ms=_mean_present(df["st_ms"]),
+        st_ticks=_mean_present(df["st_ticks"]),
         ji=float(df["ji"].mean()),
-        redundancy=float(df["redundancy"].mean()),
+        redundancy=_mean_present(df["redundancy"]),
         n_envs=int(df["n_envs"].sum()),
         n_attempted=slots,
         n_failed=int(df["n_failed"].sum()),
@@ -249,6 +255,12 @@ def aggregate(per_task: Sequence[TaskMetrics]) -> GeneratorMetrics:
         ),
         **_mean_mutation_score(per_task),
     )
+
+
+def _mean_present(column: pd.Series) -> float | None:
+    """Mean over the tasks that have the figure; None when none has it."""
+    values = pd.to_numeric(column, errors="coerce").dropna()
+    return float(values.mean()) if len(values) else None
 
 
 def _mean_mutation_score(per_task: Sequence[TaskMetrics]) -> dict[str, Any]:
