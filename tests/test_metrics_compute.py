@@ -135,7 +135,7 @@ def test_results_shape_has_exactly_design_keys(task: Task) -> None:
     g = aggregate([task_metrics(task, [_sample("e0", [DOLL, BOOK, WIPE])])])
     dumped = json.loads(g.model_dump_json())
     assert set(dumped) == {
-        "phypr", "logcov", "ld", "scevr", "faudr", "st_ms", "st_ticks", "ji", "redundancy", "n_envs",
+        "phypr", "logcov", "ld", "scevr", "faudr", "st_ms", "st_ticks", "ji", "ji_fixed", "redundancy", "n_envs",
         "plausibility", "faudr_mut", "faudr_mut_by_class", "n_attempted", "n_failed",
     }
     assert set(dumped["plausibility"]) == {"rate", "codes"}

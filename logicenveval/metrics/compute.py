@@ -12,7 +12,8 @@ Decisions where DESIGN.md is silent (docs/logic.md):
 - a task without environments has no ST and no Redundancy (null, left out of the means): failing
   to build anything must not look fast or lean;
 - PhyPR holds the paper's three dimensions only; the extra checks are `plausibility`;
-- JI compares with the minimum cover closest to the realised set (`logic.reference`).
+- JI compares with the minimum cover closest to the realised set (`logic.reference`); `ji_fixed`
+  beside it compares with one canonical minimum cover (docs/fidelity.md gives both).
 """
 
 from __future__ import annotations
@@ -25,7 +26,7 @@ import pandas as pd
 from pydantic import BaseModel, ConfigDict, Field, computed_field
 
 from logicenveval.errors import MetricsError
-from logicenveval.logic.reference import closest_reference
+from logicenveval.logic.reference import closest_reference, jaccard, reference_set
 from logicenveval.metrics.records import EnvSample
 from logicenveval.model.repeats import repeated
 from logicenveval.model.task import FAULTY_KINDS, POLICY_KINDS, Task
@@ -48,6 +49,9 @@ class TaskMetrics(BaseModel):
     logcov: float
     ld: float
     ji: float
+    #: JI against the one canonical minimum cover (`logic.reference.reference_set`) instead of the
+    #: closest one: shown beside JI, as the paper does not say which minimum cover it means
+    ji_fixed: float | None = None
     #: environments / minimum cover size; None for a task without environments
     redundancy: float | None
     min_cover: int
@@ -112,6 +116,8 @@ class GeneratorMetrics(BaseModel):
     st_ms: float | None
     st_ticks: float | None
     ji: float
+    #: JI against the canonical minimum cover (mean over tasks; None for files written before it)
+    ji_fixed: float | None = None
     redundancy: float | None
     n_envs: int
     plausibility: Plausibility
@@ -185,6 +191,7 @@ def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0,
         logcov=len(covered) / len(keys),
         ld=len(met) / len(conditions) if conditions else float(bool(good)),
         ji=closest.ji,
+        ji_fixed=jaccard(realised, [t.key for t in reference_set(task)]),
         redundancy=len(samples) / len(closest.trajectories) if samples else None,
         min_cover=len(closest.trajectories),
         faudr={
@@ -245,6 +252,7 @@ def aggregate(per_task: Sequence[TaskMetrics]) -> GeneratorMetrics:
         st_ms=_mean_present(df["st_ms"]),
         st_ticks=_mean_present(df["st_ticks"]),
         ji=float(df["ji"].mean()),
+        ji_fixed=_mean_present(df["ji_fixed"]),
         redundancy=_mean_present(df["redundancy"]),
         n_envs=int(df["n_envs"].sum()),
         n_attempted=slots,

@@ -204,7 +204,7 @@ def in_run_order(data: dict[str, Any]) -> dict[str, Any]:
 
 #: per-task figures that reports and comparisons compute with (`metrics.uncertainty`)
 _CELL_NUMBERS = ("n_envs", "n_failed", "n_attempted", "n_floor_plan_ok", "n_entity_ok",
-                 "n_relation_ok", "n_valid", "n_extended_ok", "logcov", "ld", "ji", "redundancy",
+                 "n_relation_ok", "n_valid", "n_extended_ok", "logcov", "ld", "ji", "ji_fixed", "redundancy",
                  "st_ms", "st_ticks", "faudr_mut")
 #: keys of `results.<generator>` that hold lists of task ids, and those that hold a flag
 _ROW_TASK_LISTS = ("not_measured_tasks", "budget_hit_tasks")
