@@ -177,3 +177,15 @@ def test_coloured_boxes_bind_to_their_roles_by_attribute(task_id: str) -> None:
     binding = prepare_env(env, {n: r for n, r in task.roles.items() if r.category == "toy_box"}).binding
     assert binding.well_formed and all(binding.roles[n] == f"{r.attributes['color']}_toy_box"
                                        for n, r in task.roles.items() if r.category == "toy_box")
+
+
+def test_offline_floor_plan_sizes_rooms_for_the_objects_they_must_hold() -> None:
+    from logicenveval.generators.offline_handlers import AREA, room_areas
+
+    catalog = load_catalog()
+    small = {"rooms": ["bathroom"], "roles": {"toilet": {"category": "toilet"}}}
+    assert room_areas(small, catalog) == {"bathroom": AREA["Bathroom"]}
+    crowded = {"rooms": ["bathroom"], "roles": {n: {"category": c} for n, c in [
+        ("counter", "kitchen_counter"), ("vanity", "bathroom_vanity"), ("toilet", "toilet"),
+        ("cabinet", "cabinet"), ("basket", "laundry_basket"), ("hamper", "hamper")]}}
+    assert room_areas(crowded, catalog)["bathroom"] > AREA["Bathroom"]

@@ -37,9 +37,11 @@ def _stable(*parts: object) -> int:
 
 @handler("floor_plan")
 def floor_plan(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
-    """Rooms of the brief with typical areas; hallway-centred adjacency when there is a hallway."""
+    """Rooms of the brief with typical areas, larger where the task's objects need it (`room_areas`);
+    hallway-centred adjacency when there is a hallway."""
     rooms = list(payload["task"]["rooms"])
     types = {r: room_type_of(r) for r in rooms}
+    areas = room_areas(payload["task"], load_catalog())
     hub = next((r for r in rooms if types[r] in ("Hallway", "Entryway")), rooms[0])
     out = []
     for i, r in enumerate(rooms):
@@ -54,7 +56,7 @@ def floor_plan(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
         if r == hub:
             doors.append({"to": "exterior", "type": "door", "width": 0.95, "state": "closed"})
         out.append({
-            "id": r, "type": types[r], "area_m2": AREA.get(types[r], 12.0), "adjacent_to": adjacent,
+            "id": r, "type": types[r], "area_m2": areas[r], "adjacent_to": adjacent,
             "doors": doors,
             "windows": [] if types[r] in ("Hallway", "Pantry") else [
                 {"wall": WALLS[_stable(payload["task"]["id"], r) % 4], "width": 1.2, "height": 1.2,
@@ -63,6 +65,37 @@ def floor_plan(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
             "wall_color": "white",
         })
     return {"rooms": out}
+
+
+#: a room's floor area per square metre of furniture footprint; metres of wall per metre of
+#: wall-mounted objects (doors and windows need their share)
+FLOOR_PER_FOOTPRINT, WALL_PER_WIDTH, OPENINGS_M = 3.0, 2.0, 2.0
+
+
+def room_areas(task: dict[str, Any], catalog: Catalog) -> dict[str, float]:
+    """Whole square metres per room: the typical area of its type, or more when the task's objects
+    that belong there (at their largest catalog sizes) need more floor or wall (a designer who has
+    read the task sizes the rooms for what they must hold)."""
+    rooms = list(task["rooms"])
+    floor = dict.fromkeys(rooms, 0.0)
+    along = dict.fromkeys(rooms, 0.0)  # metres of wall the floor furniture stands against
+    wall = dict.fromkeys(rooms, 0.0)
+    for role in dict(task.get("roles") or {}).values():
+        cat = catalog.get(role["category"])
+        if cat is None or cat.pickable:
+            continue
+        room = next((r for r in rooms if room_type_of(r) in cat.rooms), rooms[0])
+        if cat.placement[0] == "floor":
+            floor[room] += cat.size_max[0] * cat.size_max[2]
+            along[room] += cat.size_max[0]
+        elif cat.placement[0] == "wall":
+            wall[room] += cat.size_max[0]
+    out = {}
+    for r in rooms:
+        perimeter = WALL_PER_WIDTH * (wall[r] + OPENINGS_M) + along[r]
+        need = max(FLOOR_PER_FOOTPRINT * floor[r], (perimeter / 4) ** 2)
+        out[r] = float(min(80, max(AREA.get(room_type_of(r), 12.0), math.ceil(need))))
+    return out
 
 
 _TOO_BIG = re.compile(r"(\w+) \(\w+\) is larger than the top of (\w+)")
