@@ -16,6 +16,7 @@ import pytest
 from logicenveval.benchmark import load_task
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.domain.roles import prepare_env
+from logicenveval.envfiles import env_from_dict
 from logicenveval.generators.base import GenerationContext, make_generator
 from logicenveval.generators.brief import generator_brief, name_objects
 from logicenveval.generators.offline_handlers import misfits
@@ -23,7 +24,6 @@ from logicenveval.generators.plan import derive_plan
 from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.lexicon import singular
 from logicenveval.llm.offline import OfflineModel
-from logicenveval.envfiles import env_from_dict
 from logicenveval.model.rooms import room_type_of
 from logicenveval.runner.config import RunConfig
 

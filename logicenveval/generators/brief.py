@@ -108,9 +108,9 @@ def name_objects(description: str, catalog: Catalog, rooms: Iterable[str] = ()) 
     heads: dict[str, list[str]] = {}
     for name, cat in catalog.categories.items():
         for text in (name, *cat.synonyms):
-            words = words_of(text)
-            phrases.setdefault(words, name)
-            heads.setdefault(words[-1], []).append(name)
+            phrase = words_of(text)
+            phrases.setdefault(phrase, name)
+            heads.setdefault(phrase[-1], []).append(name)
     longest = max(len(p) for p in phrases)
     text = description.lower()
     toks = tokens(description)
@@ -126,10 +126,10 @@ def name_objects(description: str, catalog: Catalog, rooms: Iterable[str] = ()) 
     def instance(category: str, name: str, attrs: dict[str, str]) -> None:
         kinds.setdefault(category, _Kind()).instances.setdefault(name, attrs)
 
+    shelf = vocabulary(catalog).canonical("shelf")
     for m in _LEVELS.finditer(text):
-        shelf = vocabulary(catalog).canonical("shelf")
         for item in re.split(r",\s*(?:and\s+)?|\s+and\s+", m.group(1).strip()):
-            if item.split():
+            if item.split() and shelf is not None:
                 instance(shelf, f"shelf_{item.split()[0]}", {})
     i = 0
     while i < len(words):
@@ -140,11 +140,12 @@ def name_objects(description: str, catalog: Catalog, rooms: Iterable[str] = ()) 
             continue
         if words[i] == "one" and i + 2 < len(words) and words[i + 1] == "for" and last_counted \
                 and i - last_counted[1] <= 12:
-            category, purpose = last_counted[0], raw[i + 2]
-            kinds[category].purposes.add(purpose)
-            instance(category, f"{purpose}_{words_of(category)[-1]}", {})
+            counted, purpose = last_counted[0], raw[i + 2]
+            kinds[counted].purposes.add(purpose)
+            instance(counted, f"{purpose}_{words_of(counted)[-1]}", {})
             i += 3
             continue
+        category: str | None
         n, category = next(((n, phrases[tuple(words[i:i + n])]) for n in range(min(longest, len(words) - i), 0, -1)
                             if tuple(words[i:i + n]) in phrases), (1, None))
         if n == 1:
@@ -221,4 +222,5 @@ def _bare_noun(word: str, exact: str | None, prev: str, heads: dict[str, list[st
         return (len(others & context), category == exact,
                 -len(rooms) if rooms & room_types else -1000)
 
-    return max(options or [exact], key=lambda c: score(c) if c else (-1, 0, 0))
+    candidates = [c for c in [*options, exact] if c is not None] if not options else options
+    return max(candidates, key=score)

@@ -11,7 +11,16 @@ from typing import TYPE_CHECKING
 
 from pydantic import BaseModel, ConfigDict, Field
 
-from logicenveval.model.conditions import And, Cond, Holds, Not, Pred, atoms, evaluate, subject_roles
+from logicenveval.model.conditions import (
+    And,
+    Cond,
+    Holds,
+    Not,
+    Pred,
+    atoms,
+    evaluate,
+    subject_roles,
+)
 from logicenveval.model.task import Task
 from logicenveval.model.tree import DecisionPath, Trajectory, atomic_conditions, evaluate_task
 

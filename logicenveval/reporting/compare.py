@@ -20,7 +20,12 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from logicenveval.errors import ConfigError
-from logicenveval.metrics.uncertainty import cells_of, paired_cells, paired_difference, point_metrics
+from logicenveval.metrics.uncertainty import (
+    cells_of,
+    paired_cells,
+    paired_difference,
+    point_metrics,
+)
 from logicenveval.reporting.tables import COLUMNS, is_measured, metric
 
 #: metrics where lower is better; all others are better when higher
