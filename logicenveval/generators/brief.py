@@ -222,5 +222,5 @@ def _bare_noun(word: str, exact: str | None, prev: str, heads: dict[str, list[st
         return (len(others & context), category == exact,
                 -len(rooms) if rooms & room_types else -1000)
 
-    candidates = [c for c in [*options, exact] if c is not None] if not options else options
+    candidates = options if options else ([exact] if exact is not None else [])
     return max(candidates, key=score)
