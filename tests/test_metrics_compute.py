@@ -240,3 +240,18 @@ def test_compare_never_calls_failing_a_task_faster_or_leaner(task: Task) -> None
     deltas = {d.path: d for d in compare_results(results(cheap), results(failed)).pairs[0].deltas}
     for path in (("redundancy",), ("st_ticks",), ("st_ms",)):
         assert not deltas[path].improved and deltas[path].before == deltas[path].after
+
+
+def test_ji_compares_the_reported_set_when_it_is_made_of_gt_trajectories(task: Task) -> None:
+    """The paper's JI compares the generated trajectory set: an attempt that was not built still
+    belongs to it; targets in a generator's own vocabulary fall back to the realised set."""
+    built = [_sample("e0", [DOLL, BOOK, WIPE])]
+    gt = [" | ".join(p) for p in (["tidy_toy:toy_on_floor=yes/toy_kind=doll", "tidy_book:book_on_floor=yes",
+                                   "clean_mark:wipe_on_table=yes"],
+                                  ["tidy_toy:toy_on_floor=no", "tidy_book:book_on_floor=no",
+                                   "clean_mark:wipe_on_table=no"])]
+    realised = task_metrics(task, built, n_failed=1)
+    reported = task_metrics(task, built, n_failed=1, reported=gt)
+    own = task_metrics(task, built, n_failed=1, reported=["handle_toy:toy_here=yes", gt[1]])
+    assert reported.ji_set == "reported" and realised.ji_set == own.ji_set == "realised"
+    assert own.ji == realised.ji and reported.ji > realised.ji

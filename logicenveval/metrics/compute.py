@@ -20,7 +20,7 @@ from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Mapping, Sequence
-from typing import Any
+from typing import Any, Literal
 
 import pandas as pd
 from pydantic import BaseModel, ConfigDict, Field, computed_field
@@ -52,6 +52,9 @@ class TaskMetrics(BaseModel):
     #: JI against the one canonical minimum cover (`logic.reference.reference_set`) instead of the
     #: closest one: shown beside JI, as the paper does not say which minimum cover it means
     ji_fixed: float | None = None
+    #: what JI compared: the trajectories the generator reported (every attempt's target a GT
+    #: trajectory, the paper's generated set) or, otherwise, those its environments realise
+    ji_set: Literal["reported", "realised"] = "realised"
     #: environments / minimum cover size; None for a task without environments
     redundancy: float | None
     min_cover: int
@@ -157,15 +160,20 @@ def _check_samples(task: Task, samples: Sequence[EnvSample], n_failed: int) -> s
 
 
 def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0,
-                 mutants: Mapping[str, str] | None = None) -> TaskMetrics:
-    """Figures of one task; `mutants` (killable id -> fault class) enables `faudr_mut`."""
+                 mutants: Mapping[str, str] | None = None, reported: Sequence[str] = ()) -> TaskMetrics:
+    """Figures of one task; `mutants` (killable id -> fault class) enables `faudr_mut`;
+    `reported`: the trajectory each attempt set out to realise (`Attempt.target`), JI's set when
+    every one is a trajectory of the task's GT trees (the paper's generated set), else the
+    realised trajectories are."""
     keys = _check_samples(task, samples, n_failed)
     good = [s for s in samples if s.well_formed]
     covered = {k for s in good for k in s.covered_paths}
     conditions = set(atomic_conditions(task))
     met = {tuple(c) for s in good for c in s.conditions} & conditions
     realised = {s.trajectory for s in good if s.trajectory is not None}
-    closest = closest_reference(task, realised)
+    generated = set(reported) if reported and all(_is_trajectory(task, k) for k in reported) else None
+    compared = realised if generated is None else generated
+    closest = closest_reference(task, compared)
     valid = [s for s in samples if _is_valid(s)]
     simulated = [k for k in POLICY_KINDS if any(k in s.sim_ms for s in samples)]
     st = (
@@ -191,7 +199,8 @@ def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0,
         logcov=len(covered) / len(keys),
         ld=len(met) / len(conditions) if conditions else float(bool(good)),
         ji=closest.ji,
-        ji_fixed=jaccard(realised, [t.key for t in reference_set(task)]),
+        ji_fixed=jaccard(compared, [t.key for t in reference_set(task)]),
+        ji_set="realised" if generated is None else "reported",
         redundancy=len(samples) / len(closest.trajectories) if samples else None,
         min_cover=len(closest.trajectories),
         faudr={
@@ -207,6 +216,14 @@ def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0,
         realised_trajectories=sorted(realised),
         reference_trajectories=[t.key for t in closest.trajectories],
     )
+
+
+def _is_trajectory(task: Task, key: str) -> bool:
+    """Is `key` a trajectory key of the task's GT trees (one path per subtask, in order)?"""
+    parts = key.split(" | ")
+    paths = set(all_path_keys(task))
+    return len(parts) == len(task.subtasks) and all(
+        p in paths and p.split(":", 1)[0] == st.id for p, st in zip(parts, task.subtasks, strict=True))
 
 
 def _mutation_score(valid: Sequence[EnvSample], mutants: Mapping[str, str] | None) -> dict[str, Any]:

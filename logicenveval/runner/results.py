@@ -89,7 +89,8 @@ def build_results(
         units = [r for r in records if r.generator == gen]
         measured = [u for u in units if u.measured]
         metrics = [task_metrics(by_task[u.task_id], u.samples, n_failed=u.n_failed,
-                                mutants=u.mutants or None) for u in measured]
+                                mutants=u.mutants or None, reported=[a.target for a in u.attempts])
+                   for u in measured]
         per_task[gen] = {u.task_id: {**m.model_dump(mode="json"), "budget_hit": u.budget_hit is not None}
                          for u, m in zip(measured, metrics, strict=True)}
         if metrics:
