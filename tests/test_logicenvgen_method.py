@@ -189,3 +189,28 @@ def test_offline_floor_plan_sizes_rooms_for_the_objects_they_must_hold() -> None
         ("counter", "kitchen_counter"), ("vanity", "bathroom_vanity"), ("toilet", "toilet"),
         ("cabinet", "cabinet"), ("basket", "laundry_basket"), ("hamper", "hamper")]}}
     assert room_areas(crowded, catalog)["bathroom"] > AREA["Bathroom"]
+
+
+def test_st_times_an_episode_only_after_its_warm_up(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The timed (untraced) run of each policy follows a traced run of the same episode, which
+    pays for tree building and caches (issue 34: a unit's first episode inflated ST)."""
+    import logicenveval.runner.evaluation as evaluation
+    from logicenveval.benchmark import policy_path
+    from logicenveval.benchmark_validation import situations
+    from logicenveval.sim.loader import load_policy
+    from logicenveval.sim.situations import situation_env
+
+    calls: list[tuple[str, bool]] = []
+    real = evaluation.simulate
+
+    def spy(policy: Any, env: Any, task: Any, catalog: Any = None, **kw: Any) -> Any:
+        calls.append((str(policy), bool(kw.get("trace"))))
+        return real(policy, env, task, catalog, **kw)
+
+    monkeypatch.setattr(evaluation, "simulate", spy)
+    task = load_task("clean_living_room")
+    env = situation_env(task, situations(task)[0])
+    policies = {k: load_policy(policy_path(task, k), roles=task.roles) for k in ("correct", "counterfactual")}
+    evaluation.evaluate_env("g", task, env, policies, load_catalog())
+    assert [traced for _, traced in calls] == [True, False, True, False]
+    assert calls[0][0] == calls[1][0] and calls[2][0] == calls[3][0]
