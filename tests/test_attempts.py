@@ -166,9 +166,10 @@ class Unreachable:
         raise ModelConnectionError("cannot reach http://127.0.0.1:9/v1", field="base_url")
 
 
-def _run(tmp_path: Path, generators: tuple[str, ...], tasks: tuple[str, ...] = (TASK,)) -> dict[str, Any]:
+def _run(tmp_path: Path, generators: tuple[str, ...], tasks: tuple[str, ...] = (TASK,),
+         **config: Any) -> dict[str, Any]:
     outcome = run(RunConfig(generators=generators, tasks=tasks, executor="inprocess",
-                            output=str(tmp_path), max_infra_failures=0), show_progress=False)
+                            output=str(tmp_path), max_infra_failures=0, **config), show_progress=False)
     publish(outcome.run_dir, outcome.results, outcome.records)
     return outcome.results
 
@@ -220,11 +221,13 @@ def test_multi_seed_results_leave_out_unmeasured_tasks_and_count_attempts() -> N
 # --- the offline generators and evaluate ----------------------------------------------------
 
 def test_an_offline_generation_failure_is_counted(tmp_path: Path) -> None:
-    """A real failure of a shipped generator with the offline model: no-DBP's selected objects do
-    not realise one of its `hallway_entry_tidy` situations (the quick start's former
-    logicenvgen-exact layout failure on `bathroom_counter_sort` depended on sampled sizes and went
-    away when door positions became layout variables, issue 26)."""
-    res = _run(tmp_path, ("logicenvgen-no-dbp",), ("hallway_entry_tidy",))
+    """A real failure of a shipped generator with the offline model: with our re-selection check
+    (`reselect`), no-DBP's selected objects do not realise one of its `hallway_entry_tidy`
+    situations after the re-asks (the quick start's former logicenvgen-exact layout failure on
+    `bathroom_counter_sort` depended on sampled sizes and went away when door positions became
+    layout variables, issue 26)."""
+    res = _run(tmp_path, ("logicenvgen-no-dbp",), ("hallway_entry_tidy",), brief="roles",
+               generator_args={"logicenvgen-no-dbp": {"reselect": True}})
     row = res["results"]["logicenvgen-no-dbp"]
     per = res["per_task"]["logicenvgen-no-dbp"]["hallway_entry_tidy"]
     assert row["n_failed"] == per["n_failed"] == 1

@@ -59,7 +59,7 @@ def _run(out: Path, url: str, *extra: str) -> subprocess.CompletedProcess[str]:
     argv = [sys.executable, "-m", "logicenveval", "run", "--model", "openai:fake-model",
             "--model-args", f"base_url={url},api_key_env=FAULT_KEY,timeout=2,max_retries=0",
             "--generators", GENERATOR, "--tasks", ",".join(TASKS), "--workers", "2",
-            "--output", str(out), "--quiet", *extra]
+            "--brief", "roles", "--output", str(out), "--quiet", *extra]  # one recorded reply per task
     proc = subprocess.run(argv, capture_output=True, text=True, timeout=300,
                           env={**os.environ, "FAULT_KEY": SECRET})
     assert "Traceback" not in proc.stdout + proc.stderr

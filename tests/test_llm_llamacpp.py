@@ -90,7 +90,7 @@ def test_one_server_per_run_stopped_when_the_run_ends(monkeypatch: pytest.Monkey
     monkeypatch.setenv("FAKE_LLAMA_PIDFILE", str(pidfile))
     code = main(["run", "--model", f"llamacpp:{gguf}", "--model-args", f"server={FAKE},threads=1",
                  "--tasks", "clean_living_room", "--generators", "holodeck,cot", "--workers", "2",
-                 "--output", str(tmp_path / "runs"), "--run-id", "r"])
+                 "--brief", "roles", "--output", str(tmp_path / "runs"), "--run-id", "r"])  # scene first
     assert code in (0, 1)  # `{}` is no valid scene: the units fail, the run itself completes
     assert _gone(int(pidfile.read_text()))
     results = json.loads((tmp_path / "runs" / "r" / "results.json").read_text())

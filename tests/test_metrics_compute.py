@@ -5,6 +5,7 @@ from __future__ import annotations
 import itertools
 import json
 from pathlib import Path
+from typing import Any
 
 import pytest
 from hypothesis import given, settings
@@ -117,9 +118,12 @@ def test_ill_formed_and_invalid_envs(task: Task) -> None:
 def test_aggregate_means_over_tasks(task: Task) -> None:
     a = task_metrics(task, [_sample("e0", [DOLL, BOOK, WIPE])])
     empty = task_metrics(task, [], n_failed=2)
-    assert empty.logcov == 0.0 and empty.ji == 0.0 and empty.redundancy == 0.0
+    assert empty.logcov == 0.0 and empty.ji == 0.0
+    assert empty.redundancy is None and empty.st_ms is None and empty.st_ticks is None  # issue 34
     b = empty.model_copy(update={"task_id": "other_task"})
     g = aggregate([a, b])
+    assert g.redundancy == a.redundancy and g.st_ticks == a.st_ticks  # failing does not look lean
+    assert aggregate([b]).redundancy is None and aggregate([b]).st_ms is None
     assert g.logcov == pytest.approx(3 / 14)
     assert g.faudr.counterfactual == pytest.approx(0.5)
     assert g.faudr.avg == pytest.approx(0.5 / 3)
@@ -131,7 +135,7 @@ def test_results_shape_has_exactly_design_keys(task: Task) -> None:
     g = aggregate([task_metrics(task, [_sample("e0", [DOLL, BOOK, WIPE])])])
     dumped = json.loads(g.model_dump_json())
     assert set(dumped) == {
-        "phypr", "logcov", "ld", "scevr", "faudr", "st_ms", "st_ticks", "ji", "redundancy", "n_envs",
+        "phypr", "logcov", "ld", "scevr", "faudr", "st_ms", "st_ticks", "ji", "ji_fixed", "redundancy", "n_envs",
         "plausibility", "faudr_mut", "faudr_mut_by_class", "n_attempted", "n_failed",
     }
     assert set(dumped["plausibility"]) == {"rate", "codes"}
@@ -217,3 +221,37 @@ def test_faudr_mut_is_none_when_not_scored(task: Task) -> None:
     m = task_metrics(task, [_sample("e0", [DOLL, BOOK, WIPE])])
     assert m.faudr_mut is None and m.faudr_mut_by_class == {}
     assert aggregate([m]).faudr_mut is None
+
+
+def test_compare_never_calls_failing_a_task_faster_or_leaner(task: Task) -> None:
+    """A task without environments has no ST/Redundancy: B failing the second task must not make
+    those figures 'improved' (issue 34)."""
+    from logicenveval.reporting.compare import compare_results
+
+    full = task_metrics(task, [_sample("e0", [DOLL, BOOK, WIPE]), _sample("e1", [DOLL, BOOK, WIPE])])
+    cheap = task_metrics(task, [_sample("e0", [DOLL, BOOK, WIPE])])
+    failed = task_metrics(task, [], n_failed=2)
+
+    def results(second: TaskMetrics) -> dict[str, Any]:
+        cells = {"t1": full.model_dump(mode="json"), "t2": second.model_dump(mode="json") | {"task_id": "t2"}}
+        return {"tasks": ["t1", "t2"], "seed": 0, "per_task": {"g": cells},
+                "results": {"g": aggregate([full, second.model_copy(update={"task_id": "t2"})]).model_dump(mode="json")}}
+
+    deltas = {d.path: d for d in compare_results(results(cheap), results(failed)).pairs[0].deltas}
+    for path in (("redundancy",), ("st_ticks",), ("st_ms",)):
+        assert not deltas[path].improved and deltas[path].before == deltas[path].after
+
+
+def test_ji_compares_the_reported_set_when_it_is_made_of_gt_trajectories(task: Task) -> None:
+    """The paper's JI compares the generated trajectory set: an attempt that was not built still
+    belongs to it; targets in a generator's own vocabulary fall back to the realised set."""
+    built = [_sample("e0", [DOLL, BOOK, WIPE])]
+    gt = [" | ".join(p) for p in (["tidy_toy:toy_on_floor=yes/toy_kind=doll", "tidy_book:book_on_floor=yes",
+                                   "clean_mark:wipe_on_table=yes"],
+                                  ["tidy_toy:toy_on_floor=no", "tidy_book:book_on_floor=no",
+                                   "clean_mark:wipe_on_table=no"])]
+    realised = task_metrics(task, built, n_failed=1)
+    reported = task_metrics(task, built, n_failed=1, reported=gt)
+    own = task_metrics(task, built, n_failed=1, reported=["handle_toy:toy_here=yes", gt[1]])
+    assert reported.ji_set == "reported" and realised.ji_set == own.ji_set == "realised"
+    assert own.ji == realised.ji and reported.ji > realised.ji

@@ -116,3 +116,13 @@ def test_every_situation_of_every_task_is_recovered(task_id: str) -> None:
     for traj in get_selector("product").select(task_paths(task)):
         cov = coverage_of_env(task, situation_env(task, traj))
         assert cov.well_formed and cov.trajectory == traj.key, (traj.key, cov.problems)
+
+
+def test_ld_counts_every_value_the_environment_realises_not_only_on_reached_paths() -> None:
+    """Paper Def. 1: a doll that is not on the floor still realises toy_kind=doll (issue 34)."""
+    task = _task()
+    cov = coverage(task, _holds(("attr", "toy", "kind", "doll")), _all_bound(task))
+    assert cov.covered_paths[0] == "tidy_toy:toy_on_floor=no"
+    assert ("toy_kind", "doll") in cov.conditions and ("toy_on_floor", "no") in cov.conditions
+    absent = coverage(task, _holds(), _all_bound(task) | {"toy": None})
+    assert not [c for c in absent.conditions if c[0] == "toy_kind"]  # no toy: its kind is no value

@@ -9,7 +9,7 @@ markers and is written by this script from the committed runs and the benchmark 
     <!--fig:NAME-->1,475<!--/fig-->   one figure inside a sentence (NAME is a key of INLINE)
 
 Sources: `reports/reference/results.json` (the default generators), `reports/figures/<run>/
-results.json` (the ablation, oracle and `--brief description` runs: only their results are
+results.json` (the ablation, oracle and `--brief roles` runs: only their results are
 committed), `reports/real/*/results.json` (the real-model replay packs), `reports/real/stability/
 <model>/seed*/results.json` (repeated real-model runs, paper App. C), and the task folders
 (`tasks stats`, trajectory selectors, shipped killable-mutant lists). Benchmark timings (the
@@ -61,9 +61,9 @@ DOCS = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
 #: the runs besides the reference whose results.json the tables read, and the command of each
 RUNS: dict[str, list[str]] = {
     "ablation": ["--generators", "logicenvgen,logicenvgen-exact,logicenvgen-no-dbp,logicenvgen-no-mtsa,"
-                 "logicenvgen-exhaustive,logicenvgen-no-cas"],
+                 "logicenvgen-exhaustive,logicenvgen-no-cas,logicenvgen-reselect"],
     "oracle": ["--model", "oracle", "--generators", "logicenvgen,logicenvgen-exact"],
-    "brief-description": ["--brief", "description"],
+    "brief-roles": ["--brief", "roles"],
 }
 LABELS = {"logicenvgen": "logicenvgen (MTSA)", "logicenvgen-exact": "logicenvgen-exact (ours)",
           "logicenvgen-no-mtsa": "logicenvgen-no-mtsa (product)"}
@@ -196,7 +196,9 @@ def block_brief() -> str:
     cols: list[Column] = [("PhyPR avg", rate("phypr", "avg")), ("LogCov", rate("logcov")),
                           ("SceVR", rate("scevr")), ("FauDR avg", rate("faudr", "avg")),
                           ("JI", plain("ji")), ENVS, FAILED, EXTRA]
-    return table(results("brief-description"), cols, first="generator")
+    if not (FIGURES / "brief-roles" / "results.json").exists():
+        return "(the `--brief roles` run is not committed yet: `python tools/docs_figures.py --rerun`)"
+    return table(results("brief-roles"), cols, first="generator")
 
 
 def block_faudr_mut() -> str:
@@ -372,7 +374,56 @@ def block_paper_vs_ours(current: str) -> str:
     return "\n".join(lines)
 
 
+# ---------------------------------------------------------------- orderings
+
+PAPER_TABLE = ROOT / "benchmark_data" / "paper_main_table.json"
+#: (row, the paper's key, our results path, higher is better)
+ORDERED: list[tuple[str, str, tuple[str, ...], bool]] = [
+    ("PhyPR avg", "phypr_avg", ("phypr", "avg"), True),
+    ("LogCov", "logcov", ("logcov",), True),
+    ("SceVR", "scevr", ("scevr",), True),
+    ("FauDR CF", "faudr_counterfactual", ("faudr", "counterfactual"), True),
+    ("FauDR Unreach", "faudr_unreachable", ("faudr", "unreachable"), True),
+    ("FauDR LBranch", "faudr_lackbranch", ("faudr", "lackbranch"), True),
+    ("FauDR avg", "faudr_avg", ("faudr", "avg"), True),
+    ("ST (ours: ticks)", "st_min", ("st_ticks",), False),
+]
+
+
+def ordering(values: dict[str, float], higher: bool) -> str:
+    """Methods best first; `=` joins ties at the printed precision (two decimals)."""
+    groups: dict[float, list[str]] = {}
+    for name, v in values.items():
+        groups.setdefault(round(v, 2), []).append(name)
+    keys = sorted(groups, reverse=higher)
+    return " > ".join(" = ".join(sorted(groups[k])) for k in keys)
+
+
+def block_orderings() -> str:
+    """Per metric, the paper's order of the four methods under each of its LLMs and ours (the
+    reference run), and under which LLMs ours is the same order."""
+    paper = json.loads(PAPER_TABLE.read_text())
+    names: dict[str, str] = paper["methods"]
+    llms = list(paper["models"])
+    res = results("reference")
+    head = ["metric", *(f"paper, {m}" for m in llms), f"ours ({_model_label(res)}, brief {res.get('brief', 'roles')})",
+            "same order as"]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for row, key, path, higher in ORDERED:
+        orders = [ordering({n: paper["models"][m][n][key] for n in names}, higher) for m in llms]
+        ours_values = {n: get(res["results"].get(gen, {}), *path) for n, gen in names.items()}
+        if any(v is None for v in ours_values.values()):
+            ours, same = NOT_MEASURED, "—"
+        else:
+            scale = 100.0 if path[0] not in PLAIN else 1.0
+            ours = ordering({n: scale * float(v) for n, v in ours_values.items()}, higher)
+            same = ", ".join(m for m, o in zip(llms, orders, strict=True) if o == ours) or "none"
+        lines.append(f"| {row} | " + " | ".join(orders) + f" | {ours} | {same} |")
+    return "\n".join(lines)
+
+
 BLOCKS: dict[str, Callable[[], str]] = {
+    "orderings": block_orderings,
     "reference": block_reference, "ablation": block_ablation, "oracle": block_oracle,
     "brief": block_brief, "faudr-mut": block_faudr_mut, "baselines": block_baselines,
     "task-stats": block_task_stats, "selectors": block_selectors, "real": block_real,

@@ -48,9 +48,10 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     cache = p.add_mutually_exclusive_group()
     cache.add_argument("--cache", default=None, help="SQLite cache of LLM replies")
     cache.add_argument("--no-cache", action="store_true", help="bypass the LLM reply cache")
-    p.add_argument("--brief", default="roles", choices=["roles", "description"],
-                   help="what generators get: the task's roles (default) or, as in the paper, only id, "
-                        "description and rooms, with the paper's few-shot example (docs/fidelity.md)")
+    p.add_argument("--brief", default=None, choices=["roles", "description"],
+                   help="what generators get: as in the paper, only id, description and rooms, with the "
+                        "paper's few-shot example (default; roles with --model oracle), or the task's "
+                        "roles (our variant; docs/fidelity.md)")
     p.add_argument("--unit-timeout", type=options.timeout, default=DEFAULT_UNIT_TIMEOUT,
                    metavar="SECONDS",
                    help="wall-time bound of one generator on one task; a generator that does not "

@@ -1,9 +1,14 @@
 """Simulated environment construction for one situation (paper §3.3).
 
-Floor plan (LLM) → object selection (LLM; task objects realising the situation + enrichment)
-→ rule check that every situation fact holds, with feedback and bounded refinement → spatial
-relations (LLM) → compatibility checker with feedback and bounded refinement → layout by the
-constraint solver with relaxation (or, for the no-CAS ablation, coordinates from the LLM).
+Floor plan (LLM, asked per situation) → object selection (LLM; task objects realising the
+situation + enrichment) → spatial relations (LLM) → compatibility checker with feedback and
+bounded refinement → layout by the constraint solver with relaxation (or, for the no-CAS
+ablation, coordinates from the LLM). That is the paper's method.
+
+`reselect=True` (our variant, `logicenvgen-reselect`) adds two loops the paper does not have: a
+rule check after object selection that re-asks until every situation fact holds, and a failed
+layout re-asking the object selection with the solver's message, each bounded by
+`max_refinements` (docs/fidelity.md gives their measured effect).
 """
 
 from __future__ import annotations
@@ -71,13 +76,13 @@ def violated_facts(env: EnvSpec, facts: list[str], catalog: Any) -> list[str]:
 
 class EnvironmentBuilder:
     def __init__(self, brief: TaskBrief, ctx: GenerationContext, *, generator: str,
-                 use_solver: bool = True, max_refinements: int = 2) -> None:
+                 use_solver: bool = True, max_refinements: int = 2, reselect: bool = False) -> None:
         self.brief = brief
         self.ctx = ctx
         self.generator = generator
         self.use_solver = use_solver
         self.max_refinements = max_refinements
-        self._floor_plan: FloorPlanReply | None = None
+        self.reselect = reselect
 
     def _payload(self, **extra: Any) -> dict[str, Any]:
         return {"task": self.brief.model_dump(mode="json"), **extra}
@@ -94,7 +99,7 @@ class EnvironmentBuilder:
                        log: PlanLog, feedback: list[str] | None = None) -> list[ObjectDraft]:
         categories = sorted(self.ctx.catalog.categories)
         feedback = list(feedback or [])
-        for attempt in range(self.max_refinements + 1):
+        for attempt in range(self.max_refinements + 1 if self.reselect else 1):
             reply = ask(self.ctx.model, "select_objects", self._payload(
                 rooms=rooms, facts=facts, categories=categories, feedback=feedback), ObjectsReply,
                 seed=self.ctx.seed, vocabulary=self._vocabulary([r["id"] for r in rooms]))
@@ -103,6 +108,9 @@ class EnvironmentBuilder:
             feedback = [f"the situation requires {f}, which does not hold" for f in
                         violated_facts(sym, facts, self.ctx.catalog)]
             if not feedback:
+                return objects
+            if not self.reselect:  # the paper checks no facts here: the environment says what it is
+                log.add("select_objects", "situation facts not realised", env_id=env_id, problems=feedback)
                 return objects
             log.add("select_objects", "refine", env_id=env_id, attempt=attempt, problems=feedback)
         raise TrajectoryError(
@@ -149,11 +157,9 @@ class EnvironmentBuilder:
 
     def build(self, env_id: str, facts: list[str], claim: dict[str, dict[str, str]] | None,
               plan_task: Task | None, log: PlanLog) -> EnvSpec:
-        if self._floor_plan is None:
-            self._floor_plan = self.floor_plan(facts)
-        rooms = [r.model_dump() for r in self._floor_plan.rooms]
+        rooms = [r.model_dump() for r in self.floor_plan(facts).rooms]
         feedback: list[str] = []
-        for attempt in range(self.max_refinements + 1):
+        for attempt in range(self.max_refinements + 1 if self.reselect else 1):
             objects = self.select_objects(env_id, rooms, facts, log, feedback)
             relations = self.relations(env_id, objects, log)
             try:

@@ -6,7 +6,8 @@ comparisons (paper §5.3) are the same class with one part switched off or swapp
 `logicenvgen-no-dbp` (trajectories straight from the description, no decision trees),
 `logicenvgen-no-mtsa` (the whole Cartesian product), `logicenvgen-exhaustive` (the paper's
 exponential minimum-set-cover search), `logicenvgen-no-cas` (the LLM places objects itself, no
-constraint solver).
+constraint solver). `logicenvgen-reselect` is ours: the full method plus two re-selection loops
+the paper does not have (`generators/construction.py`).
 """
 
 from __future__ import annotations
@@ -36,8 +37,9 @@ class LogicEnvGen:
 
     def __init__(self, *, selector: str = "mtsa", use_trees: bool = True, use_solver: bool = True,
                  name: str = "logicenvgen", max_refinements: int = 2,
-                 max_subsets: int = MAX_SUBSETS) -> None:
+                 max_subsets: int = MAX_SUBSETS, reselect: bool = False) -> None:
         self.name = name
+        self.reselect = reselect
         self.selector = selector
         self.use_trees = use_trees
         self.use_solver = use_solver
@@ -69,7 +71,7 @@ class LogicEnvGen:
                          "log": []}
         ctx.plan_attempts(len(situations))
         builder = EnvironmentBuilder(brief, ctx, generator=self.name, use_solver=self.use_solver,
-                                     max_refinements=self.max_refinements)
+                                     max_refinements=self.max_refinements, reselect=self.reselect)
         envs = []
         attempts = []
         log = PlanLog()
@@ -108,21 +110,25 @@ def _facts(plan: DerivedPlan, trajectory: Trajectory) -> list[str]:
     return [plan.task.variables[v].values[x] for path in trajectory.paths for v, x in path.steps]
 
 
-def exact() -> LogicEnvGen:
-    return LogicEnvGen(selector="exact", name="logicenvgen-exact")
+def exact(**options: Any) -> LogicEnvGen:
+    return LogicEnvGen(**{"selector": "exact", "name": "logicenvgen-exact", **options})
 
 
-def no_dbp() -> LogicEnvGen:
-    return LogicEnvGen(use_trees=False, name="logicenvgen-no-dbp")
+def no_dbp(**options: Any) -> LogicEnvGen:
+    return LogicEnvGen(**{"use_trees": False, "name": "logicenvgen-no-dbp", **options})
 
 
-def no_mtsa() -> LogicEnvGen:
-    return LogicEnvGen(selector="product", name="logicenvgen-no-mtsa")
+def no_mtsa(**options: Any) -> LogicEnvGen:
+    return LogicEnvGen(**{"selector": "product", "name": "logicenvgen-no-mtsa", **options})
 
 
 def exhaustive(max_subsets: int = MAX_SUBSETS) -> LogicEnvGen:
     return LogicEnvGen(selector="exhaustive", name="logicenvgen-exhaustive", max_subsets=max_subsets)
 
 
-def no_cas() -> LogicEnvGen:
-    return LogicEnvGen(use_solver=False, name="logicenvgen-no-cas")
+def reselect(**options: Any) -> LogicEnvGen:
+    return LogicEnvGen(**{"reselect": True, "name": "logicenvgen-reselect", **options})
+
+
+def no_cas(**options: Any) -> LogicEnvGen:
+    return LogicEnvGen(**{"use_solver": False, "name": "logicenvgen-no-cas", **options})

@@ -9,10 +9,11 @@ sofa against a wall", "a chair near its table").
 from __future__ import annotations
 
 import hashlib
+import math
 import re
 from typing import Any
 
-from logicenveval.domain.catalog import load_catalog
+from logicenveval.domain.catalog import Catalog, load_catalog
 from logicenveval.generators.realise import task_objects
 from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.offline import handler
@@ -36,9 +37,11 @@ def _stable(*parts: object) -> int:
 
 @handler("floor_plan")
 def floor_plan(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
-    """Rooms of the brief with typical areas; hallway-centred adjacency when there is a hallway."""
+    """Rooms of the brief with typical areas, larger where the task's objects need it (`room_areas`);
+    hallway-centred adjacency when there is a hallway."""
     rooms = list(payload["task"]["rooms"])
     types = {r: room_type_of(r) for r in rooms}
+    areas = room_areas(payload["task"], load_catalog())
     hub = next((r for r in rooms if types[r] in ("Hallway", "Entryway")), rooms[0])
     out = []
     for i, r in enumerate(rooms):
@@ -53,7 +56,7 @@ def floor_plan(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
         if r == hub:
             doors.append({"to": "exterior", "type": "door", "width": 0.95, "state": "closed"})
         out.append({
-            "id": r, "type": types[r], "area_m2": AREA.get(types[r], 12.0), "adjacent_to": adjacent,
+            "id": r, "type": types[r], "area_m2": areas[r], "adjacent_to": adjacent,
             "doors": doors,
             "windows": [] if types[r] in ("Hallway", "Pantry") else [
                 {"wall": WALLS[_stable(payload["task"]["id"], r) % 4], "width": 1.2, "height": 1.2,
@@ -62,6 +65,37 @@ def floor_plan(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
             "wall_color": "white",
         })
     return {"rooms": out}
+
+
+#: a room's floor area per square metre of furniture footprint; metres of wall per metre of
+#: wall-mounted objects (doors and windows need their share)
+FLOOR_PER_FOOTPRINT, WALL_PER_WIDTH, OPENINGS_M = 3.0, 2.0, 2.0
+
+
+def room_areas(task: dict[str, Any], catalog: Catalog) -> dict[str, float]:
+    """Whole square metres per room: the typical area of its type, or more when the task's objects
+    that belong there (at their largest catalog sizes) need more floor or wall (a designer who has
+    read the task sizes the rooms for what they must hold)."""
+    rooms = list(task["rooms"])
+    floor = dict.fromkeys(rooms, 0.0)
+    along = dict.fromkeys(rooms, 0.0)  # metres of wall the floor furniture stands against
+    wall = dict.fromkeys(rooms, 0.0)
+    for role in dict(task.get("roles") or {}).values():
+        cat = catalog.get(role["category"])
+        if cat is None or cat.pickable:
+            continue
+        room = next((r for r in rooms if room_type_of(r) in cat.rooms), rooms[0])
+        if cat.placement[0] == "floor":
+            floor[room] += cat.size_max[0] * cat.size_max[2]
+            along[room] += cat.size_max[0]
+        elif cat.placement[0] == "wall":
+            wall[room] += cat.size_max[0]
+    out = {}
+    for r in rooms:
+        perimeter = WALL_PER_WIDTH * (wall[r] + OPENINGS_M) + along[r]
+        need = max(FLOOR_PER_FOOTPRINT * floor[r], (perimeter / 4) ** 2)
+        out[r] = float(min(80, max(AREA.get(room_type_of(r), 12.0), math.ceil(need))))
+    return out
 
 
 _TOO_BIG = re.compile(r"(\w+) \(\w+\) is larger than the top of (\w+)")
@@ -83,10 +117,55 @@ def feedback_facts(feedback: list[str], facts: list[str]) -> list[str]:
 
 
 def _task_objects(payload: dict[str, Any]) -> list[dict[str, Any]]:
-    """One object per role, placed so that the situation facts (and the layout's feedback) hold."""
+    """One object per role, placed so that the situation facts (and the layout's feedback) hold
+    and every object fits where it is put (the asset sizes, as a model that knows them would)."""
+    catalog = load_catalog()
     facts = list(payload.get("facts") or [])
     facts += feedback_facts(list(payload.get("feedback") or []), facts)
-    return task_objects(payload["task"], facts, load_catalog())
+    banned: list[str] = []
+    objects = task_objects(payload["task"], facts, catalog)
+    for _ in range(len(objects)):
+        new = [f for f in misfits(objects, catalog) if f not in banned and f[4:] not in facts]
+        if not new:
+            break
+        banned += new
+        objects = task_objects(payload["task"], facts + banned, catalog)
+    return objects
+
+
+#: layout grid (m) and the share of a holder's smallest top that its items may fill together
+GRID, FILL = 0.05, 0.8
+
+
+def misfits(objects: list[dict[str, Any]], catalog: Catalog) -> list[str]:
+    """Placements that cannot be laid out, as facts that rule them out: an item larger than its
+    holder's largest top (or opening), or the items on one holder, at the largest size the
+    layout may draw for each, too many for its smallest top (the last listed goes elsewhere)."""
+    by_id = {o["id"]: o for o in objects}
+    out: list[str] = []
+    load: dict[str, float] = {}
+    for o in objects:
+        how, _, holder = str(o["placement"]).partition(":")
+        if how not in ("on", "inside") or holder not in by_id:
+            continue
+        item, host = catalog.get(o["category"]), catalog.get(by_id[holder]["category"])
+        if item is None or host is None:
+            continue
+        pred = f"not {how}({o['id']}, {holder})"
+        inner = sorted(item.size_min if how == "inside" else item.size_min[::2])
+        outer = sorted(host.size_max if how == "inside" else host.size_max[::2])
+        if any(a > b + 1e-9 for a, b in zip(inner, outer, strict=True)):
+            out.append(pred)
+            continue
+        # the layout draws an item's size up to its holder's top, whatever else stands there
+        top = [max(host.size_min[k], item.size_min[k]) for k in (0, 2)]
+        cells = math.prod(math.ceil(min(item.size_max[k], t) / GRID) for k, t in zip((0, 2), top, strict=True))
+        room = math.prod(math.floor(t / GRID) for t in top)
+        if load.get(holder, 0.0) + cells > FILL * room and load.get(holder):
+            out.append(pred)
+            continue
+        load[holder] = load.get(holder, 0.0) + cells
+    return out
 
 
 @handler("select_objects")

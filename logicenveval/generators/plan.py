@@ -5,8 +5,9 @@ task's own vocabulary); rule-guided verification checks
 (a) independence of subtasks (no shared factor, no shared tested role), (b) syntax/schema,
 (c) every internal node grounded in an identified factor, and (d) every factor value a condition
 on the task's roles (DESIGN.md §3). Violations go back to the LLM as feedback, a bounded number
-of times; what still fails is repaired by rule (merge dependent subtasks, drop ungrounded
-factors) and logged, so the plan is always a valid `Task` built from the brief alone.
+of times (rule (a): the decomposition is asked again with the dependent pairs named; rule (d):
+the factors are asked again); what still fails is repaired by rule (merge dependent subtasks,
+drop ungrounded factors) and logged, so the plan is always a valid `Task` built from the brief alone.
 """
 
 from __future__ import annotations
@@ -155,36 +156,13 @@ def derive_plan(brief: TaskBrief, ctx: GenerationContext, *, max_refinements: in
     rule (no factors for that subtask, a leaf where the tree could not grow) and logged."""
     log = PlanLog()
     vocab = plan_vocabulary(brief)
-    decomposition = ask(ctx.model, "decompose_task", _payload(brief), DecomposeWire, seed=ctx.seed,
-                        vocabulary=vocab)
-    subtasks = [SubtaskDraft(id=s.id, description=s.description, roles=list(s.roles))
-                for s in decomposition.subtasks if s.roles or s.description]
-    subtasks = [s for i, s in enumerate(subtasks) if s.id not in {t.id for t in subtasks[:i]}]
-    factors_of: dict[str, list[FactorDraft]] = {}
-    for st in subtasks:
-        feedback: list[str] = []
-        drafts: list[FactorDraft] = []
-        for attempt in range(max_refinements + 1):
-            try:
-                reply = ask(ctx.model, "identify_factors",
-                            _payload(brief, subtask=st.model_dump(), feedback=feedback),
-                            FactorsWire, seed=ctx.seed, vocabulary=vocab)
-            except ModelReplyError as exc:
-                log.add("identify_factors", "no valid reply; the subtask keeps no factors",
-                        subtask=st.id, error=exc.message)
-                drafts = []
-                break
-            drafts = [f.draft() for f in reply.factors]
-            feedback = [p for f in drafts for p in check_factor(brief, f)]
-            if not feedback:
-                break
-            log.add("identify_factors", "refine", subtask=st.id, attempt=attempt, problems=feedback)
-        good = [f for f in drafts if not check_factor(brief, f)]
-        dropped = [f.id for f in drafts if f not in good]
-        if dropped:
-            log.add("identify_factors", "dropped factors that stay ungrounded", subtask=st.id,
-                    factors=dropped)
-        factors_of[st.id] = good
+    subtasks, factors_of = _decompose(brief, ctx, vocab, log, max_refinements, [])
+    for attempt in range(max_refinements):
+        feedback = dependence_problems(subtasks, factors_of)
+        if not feedback:
+            break
+        log.add("verify", "refine the decomposition", attempt=attempt, problems=feedback)
+        subtasks, factors_of = _decompose(brief, ctx, vocab, log, max_refinements, feedback)
     subtasks, factors_of = _independent(subtasks, factors_of, log)
     trees: dict[str, QueryNode | PlanLeaf] = {}
     for st in subtasks:
@@ -196,6 +174,66 @@ def derive_plan(brief: TaskBrief, ctx: GenerationContext, *, max_refinements: in
             tree = _prune(tree, factors)
         trees[st.id] = tree
     return DerivedPlan(_as_task(brief, subtasks, factors_of, trees, log), log)
+
+
+def _decompose(brief: TaskBrief, ctx: GenerationContext, vocab: dict[str, Words], log: PlanLog,
+               max_refinements: int, feedback: list[str]) -> tuple[list[SubtaskDraft], dict[str, list[FactorDraft]]]:
+    """Subtasks (`decompose_task`, with rule (a)'s feedback when re-asked) and their factors."""
+    extra = {"feedback": feedback} if feedback else {}
+    decomposition = ask(ctx.model, "decompose_task", _payload(brief, **extra), DecomposeWire,
+                        seed=ctx.seed, vocabulary=vocab)
+    subtasks = [SubtaskDraft(id=s.id, description=s.description, roles=list(s.roles))
+                for s in decomposition.subtasks if s.roles or s.description]
+    subtasks = [s for i, s in enumerate(subtasks) if s.id not in {t.id for t in subtasks[:i]}]
+    factors_of: dict[str, list[FactorDraft]] = {}
+    for st in subtasks:
+        factors_of[st.id] = _identify(brief, ctx, vocab, log, st, max_refinements)
+    return subtasks, factors_of
+
+
+def _identify(brief: TaskBrief, ctx: GenerationContext, vocab: dict[str, Words], log: PlanLog,
+              st: SubtaskDraft, max_refinements: int) -> list[FactorDraft]:
+    """The subtask's factors, re-asked with rule (d)'s feedback; ungrounded ones dropped."""
+    feedback: list[str] = []
+    drafts: list[FactorDraft] = []
+    for attempt in range(max_refinements + 1):
+        try:
+            reply = ask(ctx.model, "identify_factors",
+                        _payload(brief, subtask=st.model_dump(), feedback=feedback),
+                        FactorsWire, seed=ctx.seed, vocabulary=vocab)
+        except ModelReplyError as exc:
+            log.add("identify_factors", "no valid reply; the subtask keeps no factors",
+                    subtask=st.id, error=exc.message)
+            return []
+        drafts = [f.draft() for f in reply.factors]
+        feedback = [p for f in drafts for p in check_factor(brief, f)]
+        if not feedback:
+            break
+        log.add("identify_factors", "refine", subtask=st.id, attempt=attempt, problems=feedback)
+    good = [f for f in drafts if not check_factor(brief, f)]
+    dropped = [f.id for f in drafts if f not in good]
+    if dropped:
+        log.add("identify_factors", "dropped factors that stay ungrounded", subtask=st.id,
+                factors=dropped)
+    return good
+
+
+def _tested(factors: list[FactorDraft]) -> set[str]:
+    return {r for f in factors for t in f.values.values() for r in subject_roles(parse(t))}
+
+
+def dependence_problems(subtasks: list[SubtaskDraft], factors_of: dict[str, list[FactorDraft]]) -> list[str]:
+    """Rule (a) as feedback: one line per pair of subtasks sharing a factor id or a tested role."""
+    problems = []
+    for i, a in enumerate(subtasks):
+        for b in subtasks[i + 1:]:
+            shared = sorted({f.id for f in factors_of[a.id]} & {f.id for f in factors_of[b.id]}
+                            | _tested(factors_of[a.id]) & _tested(factors_of[b.id]))
+            if shared:
+                problems.append(f"subtasks {a.id} and {b.id} both depend on {', '.join(shared)}: they "
+                                "are not independent; make them one subtask or split them so that no "
+                                "uncertain factor or tested object is shared")
+    return problems
 
 
 def _grow_tree(brief: TaskBrief, ctx: GenerationContext, st: SubtaskDraft,
@@ -272,14 +310,15 @@ def leaves_reply(n: int) -> type[BaseModel]:
 def _independent(
     subtasks: list[SubtaskDraft], factors_of: dict[str, list[FactorDraft]], log: PlanLog
 ) -> tuple[list[SubtaskDraft], dict[str, list[FactorDraft]]]:
-    """Rule (a): subtasks that share a factor id or a tested role are merged."""
+    """Rule (a) by rule, once the re-asks did not make the subtasks independent: subtasks that
+    share a factor id or a tested role are merged."""
     merged: list[SubtaskDraft] = []
     merged_factors: dict[str, list[FactorDraft]] = {}
     for st in subtasks:
-        tested = {r for f in factors_of[st.id] for t in f.values.values() for r in subject_roles(parse(t))}
+        tested = _tested(factors_of[st.id])
         ids = {f.id for f in factors_of[st.id]}
-        target = next((m for m in merged if ids & {f.id for f in merged_factors[m.id]} or tested & {
-            r for f in merged_factors[m.id] for t in f.values.values() for r in subject_roles(parse(t))}), None)
+        target = next((m for m in merged if ids & {f.id for f in merged_factors[m.id]}
+                       or tested & _tested(merged_factors[m.id])), None)
         if target is None:
             merged.append(st)
             merged_factors[st.id] = list(factors_of[st.id])

@@ -9,6 +9,7 @@ BUILTIN: dict[str, str] = {
     "logicenvgen-no-mtsa": "logicenveval.generators.logicenvgen:no_mtsa",
     "logicenvgen-exhaustive": "logicenveval.generators.logicenvgen:exhaustive",
     "logicenvgen-no-cas": "logicenveval.generators.logicenvgen:no_cas",
+    "logicenvgen-reselect": "logicenveval.generators.logicenvgen:reselect",
     "cot": "logicenveval.baselines.cot:CoT",
     "ifg": "logicenveval.baselines.ifg:IFG",
     "holodeck": "logicenveval.baselines.holodeck:Holodeck",

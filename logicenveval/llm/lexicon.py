@@ -29,8 +29,8 @@ def singular(word: str) -> str:
     """Crude English singular, good enough for household nouns (boxes, dishes, shelves, toys)."""
     if len(word) <= 3 or word.endswith("ss"):
         return word
-    if word in _VERB_IES:
-        return word[:-1]  # "lies" is the verb "lie", not a plural of "ly"
+    if word in _VERB_IES or word.endswith("shoes"):
+        return word[:-1]  # "lies" is the verb "lie", not a plural of "ly"; "shoes" is not "sho" + es
     for suffix, repl in (("ies", "y"), ("ves", "f"), ("xes", "x"), ("ches", "ch"), ("shes", "sh"),
                          ("sses", "ss"), ("oes", "o")):
         if word.endswith(suffix):

@@ -7,22 +7,26 @@ Decisions where DESIGN.md is silent (docs/logic.md):
   attempts `n_failed`): a failed attempt fails every PhyPR dimension and is no valid scenario,
   so failing never pays; LogCov, LD, JI and FauDR count only what was built;
 - ST averages, over the BTs that were simulated, the per-BT sum of simulation ms over the task's
-  environments; `st_ticks` is the same figure in simulator ticks, which machine load cannot move;
+  environments (each episode timed after a warm-up run, `runner.evaluation`); `st_ticks` is the
+  same figure in simulator ticks, which machine load cannot move;
+- a task without environments has no ST and no Redundancy (null, left out of the means): failing
+  to build anything must not look fast or lean;
 - PhyPR holds the paper's three dimensions only; the extra checks are `plausibility`;
-- JI compares with the minimum cover closest to the realised set (`logic.reference`).
+- JI compares with the minimum cover closest to the realised set (`logic.reference`); `ji_fixed`
+  beside it compares with one canonical minimum cover (docs/fidelity.md gives both).
 """
 
 from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Mapping, Sequence
-from typing import Any
+from typing import Any, Literal
 
 import pandas as pd
 from pydantic import BaseModel, ConfigDict, Field, computed_field
 
 from logicenveval.errors import MetricsError
-from logicenveval.logic.reference import closest_reference
+from logicenveval.logic.reference import closest_reference, jaccard, reference_set
 from logicenveval.metrics.records import EnvSample
 from logicenveval.model.repeats import repeated
 from logicenveval.model.task import FAULTY_KINDS, POLICY_KINDS, Task
@@ -45,12 +49,20 @@ class TaskMetrics(BaseModel):
     logcov: float
     ld: float
     ji: float
-    redundancy: float
+    #: JI against the one canonical minimum cover (`logic.reference.reference_set`) instead of the
+    #: closest one: shown beside JI, as the paper does not say which minimum cover it means
+    ji_fixed: float | None = None
+    #: what JI compared: the trajectories the generator reported (every attempt's target a GT
+    #: trajectory, the paper's generated set) or, otherwise, those its environments realise
+    ji_set: Literal["reported", "realised"] = "realised"
+    #: environments / minimum cover size; None for a task without environments
+    redundancy: float | None
     min_cover: int
     #: faulty kind -> its BT fails in at least one valid environment
     faudr: dict[str, bool]
-    st_ms: float
-    st_ticks: float = 0.0
+    #: None for a task without environments (nothing was simulated)
+    st_ms: float | None
+    st_ticks: float | None = 0.0
     #: environments passing every extra plausibility check, and per failure code how many fail it
     n_extended_ok: int = 0
     extended_codes: dict[str, int] = Field(default_factory=dict)
@@ -103,10 +115,13 @@ class GeneratorMetrics(BaseModel):
     ld: float
     scevr: float
     faudr: FauDR
-    st_ms: float
-    st_ticks: float
+    #: means over the tasks with environments; None when no task has any
+    st_ms: float | None
+    st_ticks: float | None
     ji: float
-    redundancy: float
+    #: JI against the canonical minimum cover (mean over tasks; None for files written before it)
+    ji_fixed: float | None = None
+    redundancy: float | None
     n_envs: int
     plausibility: Plausibility
     #: environments set out to build (the PhyPR/SceVR denominator) and those not built
@@ -145,26 +160,31 @@ def _check_samples(task: Task, samples: Sequence[EnvSample], n_failed: int) -> s
 
 
 def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0,
-                 mutants: Mapping[str, str] | None = None) -> TaskMetrics:
-    """Figures of one task; `mutants` (killable id -> fault class) enables `faudr_mut`."""
+                 mutants: Mapping[str, str] | None = None, reported: Sequence[str] = ()) -> TaskMetrics:
+    """Figures of one task; `mutants` (killable id -> fault class) enables `faudr_mut`;
+    `reported`: the trajectory each attempt set out to realise (`Attempt.target`), JI's set when
+    every one is a trajectory of the task's GT trees (the paper's generated set), else the
+    realised trajectories are."""
     keys = _check_samples(task, samples, n_failed)
     good = [s for s in samples if s.well_formed]
     covered = {k for s in good for k in s.covered_paths}
     conditions = set(atomic_conditions(task))
     met = {tuple(c) for s in good for c in s.conditions} & conditions
     realised = {s.trajectory for s in good if s.trajectory is not None}
-    closest = closest_reference(task, realised)
+    generated = set(reported) if reported and all(_is_trajectory(task, k) for k in reported) else None
+    compared = realised if generated is None else generated
+    closest = closest_reference(task, compared)
     valid = [s for s in samples if _is_valid(s)]
     simulated = [k for k in POLICY_KINDS if any(k in s.sim_ms for s in samples)]
     st = (
         sum(sum(s.sim_ms.get(k, 0.0) for s in samples) for k in simulated) / len(simulated)
         if simulated
-        else 0.0
+        else None
     )
     st_ticks = (
         sum(sum(s.sim_ticks.get(k, 0) for s in samples) for k in simulated) / len(simulated)
         if simulated
-        else 0.0
+        else None
     )
     codes = Counter(code for s in samples
                     for code in sorted({f["code"] for f in s.physics.extended_failures}))
@@ -179,7 +199,9 @@ def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0,
         logcov=len(covered) / len(keys),
         ld=len(met) / len(conditions) if conditions else float(bool(good)),
         ji=closest.ji,
-        redundancy=len(samples) / len(closest.trajectories),
+        ji_fixed=jaccard(compared, [t.key for t in reference_set(task)]),
+        ji_set="realised" if generated is None else "reported",
+        redundancy=len(samples) / len(closest.trajectories) if samples else None,
         min_cover=len(closest.trajectories),
         faudr={
             k: any(k in s.verdicts and s.verdicts[k] != "passed" for s in valid)
@@ -194,6 +216,14 @@ def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0,
         realised_trajectories=sorted(realised),
         reference_trajectories=[t.key for t in closest.trajectories],
     )
+
+
+def _is_trajectory(task: Task, key: str) -> bool:
+    """Is `key` a trajectory key of the task's GT trees (one path per subtask, in order)?"""
+    parts = key.split(" | ")
+    paths = set(all_path_keys(task))
+    return len(parts) == len(task.subtasks) and all(
+        p in paths and p.split(":", 1)[0] == st.id for p, st in zip(parts, task.subtasks, strict=True))
 
 
 def _mutation_score(valid: Sequence[EnvSample], mutants: Mapping[str, str] | None) -> dict[str, Any]:
@@ -236,10 +266,11 @@ def aggregate(per_task: Sequence[TaskMetrics]) -> GeneratorMetrics:
         ld=float(df["ld"].mean()),
         scevr=share("n_valid"),
         faudr=FauDR(counterfactual=fau[0], unreachable=fau[1], lackbranch=fau[2], avg=sum(fau) / 3),
-        st_ms=float(df["st_ms"].mean()),
-        st_ticks=float(df["st_ticks"].mean()),
+        st_ms=_mean_present(df["st_ms"]),
+        st_ticks=_mean_present(df["st_ticks"]),
         ji=float(df["ji"].mean()),
-        redundancy=float(df["redundancy"].mean()),
+        ji_fixed=_mean_present(df["ji_fixed"]),
+        redundancy=_mean_present(df["redundancy"]),
         n_envs=int(df["n_envs"].sum()),
         n_attempted=slots,
         n_failed=int(df["n_failed"].sum()),
@@ -249,6 +280,12 @@ def aggregate(per_task: Sequence[TaskMetrics]) -> GeneratorMetrics:
         ),
         **_mean_mutation_score(per_task),
     )
+
+
+def _mean_present(column: pd.Series) -> float | None:
+    """Mean over the tasks that have the figure; None when none has it."""
+    values = pd.to_numeric(column, errors="coerce").dropna()
+    return float(values.mean()) if len(values) else None
 
 
 def _mean_mutation_score(per_task: Sequence[TaskMetrics]) -> dict[str, Any]:

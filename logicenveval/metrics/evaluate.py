@@ -11,9 +11,18 @@ from typing import TYPE_CHECKING
 
 from pydantic import BaseModel, ConfigDict, Field
 
-from logicenveval.model.conditions import And, Cond, Holds, Not, Pred
+from logicenveval.model.conditions import (
+    And,
+    Cond,
+    Holds,
+    Not,
+    Pred,
+    atoms,
+    evaluate,
+    subject_roles,
+)
 from logicenveval.model.task import Task
-from logicenveval.model.tree import DecisionPath, Trajectory, evaluate_task
+from logicenveval.model.tree import DecisionPath, Trajectory, atomic_conditions, evaluate_task
 
 if TYPE_CHECKING:
     from logicenveval.domain.catalog import Catalog
@@ -26,7 +35,8 @@ class Coverage(BaseModel):
     covered_paths: list[str] = Field(default_factory=list)
     #: `Trajectory.key` when every tree reached a leaf, else None
     trajectory: str | None = None
-    #: atomic conditions (variable, value) on the reached paths (paper Def. 1)
+    #: atomic conditions (variable, value) the environment realises, on a reached path or not
+    #: (paper Def. 1: the variable takes the value in the environment)
     conditions: list[tuple[str, str]] = Field(default_factory=list)
     well_formed: bool = False
     problems: list[str] = Field(default_factory=list)
@@ -61,10 +71,7 @@ def coverage(task: Task, holds: Holds, bound_roles: Mapping[str, str | None]) ->
     for role in task.roles:
         if bound_roles.get(role) is None and role not in absent_ok:
             problems.append(f"role {role} is not bound to an object and no reached path allows it")
-    conditions: dict[tuple[str, str], None] = {}
-    for path in reached:
-        for step in path.steps:
-            conditions.setdefault(step, None)
+    conditions = realised_conditions(task, holds, bound_roles)
     complete = len(reached) == len(task.subtasks)
     return Coverage(
         covered_paths=[p.key for p in reached],
@@ -73,6 +80,25 @@ def coverage(task: Task, holds: Holds, bound_roles: Mapping[str, str | None]) ->
         well_formed=not problems,
         problems=problems,
     )
+
+
+def realised_conditions(task: Task, holds: Holds, bound_roles: Mapping[str, str | None]) -> list[tuple[str, str]]:
+    """Every (variable, value) of C_total (paper Def. 1) that the environment realises: exactly one
+    of the variable's values holds, and every role its values speak of is present unless they
+    ask about existence itself (a toy's kind is no value of a room without a toy)."""
+    out: list[tuple[str, str]] = []
+    edges = set(atomic_conditions(task))
+    for name in dict.fromkeys(v for v, _ in atomic_conditions(task)):
+        var = task.variables[name]
+        conds = [var.condition(value) for value in var.values]
+        about_existence = any(a.name == "exists" for c in conds for a in atoms(c))
+        if not about_existence and any(bound_roles.get(r) is None for c in conds for r in subject_roles(c)
+                                       if r in task.roles):
+            continue
+        held = [value for value, c in zip(var.values, conds, strict=True) if evaluate(c, holds)]
+        if len(held) == 1 and (name, held[0]) in edges:
+            out.append((name, held[0]))
+    return out
 
 
 def coverage_of_env(task: Task, env: EnvSpec, catalog: Catalog | None = None) -> Coverage:

@@ -39,6 +39,8 @@ _MEANS: dict[_Path, str] = {("logcov",): "logcov", ("ld",): "ld", ("ji",): "ji",
 _OTHER_MEANS: dict[_Path, str] = {("redundancy",): "redundancy", ("st_ms",): "st_ms",
                                   ("st_ticks",): "st_ticks"}
 _OTHER_RATIOS: dict[_Path, str] = {("plausibility", "rate"): "n_extended_ok"}
+#: per-task figures a task without environments does not have (means over the tasks that do)
+_PRESENT_ONLY = frozenset({"redundancy", "st_ms", "st_ticks"})
 CI_METRICS: tuple[tuple[str, ...], ...] = (
     *_RATIOS, ("phypr", "avg"), *_MEANS, ("faudr", "avg"))
 
@@ -46,9 +48,11 @@ Cell = Mapping[str, Any]  # one TaskMetrics as JSON (results.json per_task entri
 
 
 def _columns(cells: Sequence[Cell]) -> dict[str, np.ndarray]:
-    cols = {name: np.array([float(c.get(name, 0.0)) for c in cells])
+    cols = {name: np.array([float(c.get(name) or 0.0) for c in cells])
             for name in ("n_floor_plan_ok", "n_entity_ok", "n_relation_ok", "n_valid", "logcov",
                          "ld", "ji", "redundancy", "st_ms", "st_ticks", "n_extended_ok")}
+    for name in _PRESENT_ONLY:  # null for a task without environments: left out, never 0
+        cols[f"{name}_present"] = np.array([0.0 if c.get(name, 0.0) is None else 1.0 for c in cells])
     cols["slots"] = np.array([float(c["n_envs"]) + float(c.get("n_failed", 0)) for c in cells])
     for k in FAULTY_KINDS:
         cols[f"faudr_{k}"] = np.array([float(bool(c["faudr"][k])) for c in cells])
@@ -69,7 +73,11 @@ def metrics_from_weights(cells: Sequence[Cell], weights: np.ndarray) -> dict[tup
         for path, col in {**_RATIOS, **_OTHER_RATIOS}.items():
             out[path] = np.where(slots > 0, (w @ cols[col]) / slots, 0.0)
         for path, col in {**_MEANS, **_OTHER_MEANS}.items():
-            out[path] = (w @ cols[col]) / total
+            if col in _PRESENT_ONLY:
+                present = w @ cols[f"{col}_present"]
+                out[path] = np.where(present > 0, (w @ (cols[col] * cols[f"{col}_present"])) / present, np.nan)
+            else:
+                out[path] = (w @ cols[col]) / total
         scored = w @ cols["faudr_mut_scored"]
         out[("faudr_mut",)] = np.where(scored > 0, (w @ (cols["faudr_mut"] * cols["faudr_mut_scored"]))
                                        / scored, np.nan)
@@ -154,6 +162,21 @@ def ci95(cells: Mapping[tuple[str, int], Cell], rng: np.random.Generator | None 
     return out
 
 
+def paired_cells(a: Mapping[tuple[str, int], Cell], b: Mapping[tuple[str, int], Cell]
+                 ) -> tuple[dict[tuple[str, int], Cell], dict[tuple[str, int], Cell]]:
+    """Both sides with ST and Redundancy nulled on the tasks where either side lacks them (a task
+    without environments): a paired figure compares the same tasks, so failing a task never
+    looks faster or leaner."""
+    out_a, out_b = dict(a), dict(b)
+    for name in _PRESENT_ONLY:
+        lacking = {k[0] for side in (a, b) for k, c in side.items() if c.get(name, 0.0) is None}
+        for side in (out_a, out_b):
+            for k, c in side.items():
+                if k[0] in lacking and c.get(name, 0.0) is not None:
+                    side[k] = {**c, name: None}
+    return out_a, out_b
+
+
 def paired_difference(a: Mapping[tuple[str, int], Cell], b: Mapping[tuple[str, int], Cell],
                       rng: np.random.Generator | None = None, n: int = N_BOOTSTRAP
                       ) -> dict[tuple[str, ...], tuple[float, float | None, float | None]]:
@@ -162,6 +185,7 @@ def paired_difference(a: Mapping[tuple[str, int], Cell], b: Mapping[tuple[str, i
     Both sides must cover the same tasks (pass only the common ones); each side's seeds of a
     drawn task are redrawn independently. With fewer than `MIN_TASKS` tasks `lo`, `hi` are None.
     """
+    a, b = paired_cells(a, b)
     ka, kb = sorted(a), sorted(b)
     tasks_a, groups_a = _groups(ka)
     tasks_b, groups_b = _groups(kb)

@@ -22,7 +22,12 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from logicenveval.errors import ConfigError
-from logicenveval.metrics.uncertainty import cells_of, paired_difference, point_metrics
+from logicenveval.metrics.uncertainty import (
+    cells_of,
+    paired_cells,
+    paired_difference,
+    point_metrics,
+)
 from logicenveval.reporting.tables import COLUMNS, is_measured, metric
 
 #: each judged metric's declared direction: "higher" is better (every other metric is reported,
@@ -249,6 +254,7 @@ def _pair(x: str, y: str, va: dict[str, Any], vb: dict[str, Any], ca: dict[tuple
     if shared:
         ca = {k: c for k, c in ca.items() if k[0] in set(shared)}
         cb = {k: c for k, c in cb.items() if k[0] in set(shared)}
+        ca, cb = paired_cells(ca, cb)  # ST and Redundancy over the tasks both sides have them
         paired = paired_difference(ca, cb, n=n_bootstrap)
         point_a, point_b = point_metrics(list(ca.values())), point_metrics(list(cb.values()))
     deltas = []

@@ -11,7 +11,7 @@ import json
 import re
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Literal
+from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
@@ -47,8 +47,9 @@ class RunConfig(BaseModel):
     run_id: str | None = Field(default=None, pattern=RUN_ID_PATTERN)
     #: stop the run after this many consecutive units failed for infrastructure reasons (0: never)
     max_infra_failures: int = Field(default=5, ge=0)
-    #: what generators are given: the task's roles (default) or, as in the paper, the description
-    brief: Literal["roles", "description"] = "roles"
+    #: what generators are given: as in the paper, the description (the default; with the oracle,
+    #: whose replies name the task's roles, the roles), or the task's roles (our variant)
+    brief: Literal["roles", "description"] = "description"
     #: wall-time bound of one generator on one task (runner.unit); None: unbounded
     unit_timeout: float | None = Field(default=DEFAULT_UNIT_TIMEOUT, gt=0, allow_inf_nan=False)
     #: `--generators` item (as written, or its row name) -> keyword arguments of its factory
@@ -58,6 +59,14 @@ class RunConfig(BaseModel):
     #: re-raise a generator's exception in this process, for a debugger (`--debug`; not identity)
     debug: bool = False
 
+    @model_validator(mode="before")
+    @classmethod
+    def _default_brief(cls, data: Any) -> Any:
+        """No brief given: the paper's (description), except for the oracle, which needs roles."""
+        if isinstance(data, dict) and data.get("brief") is None:
+            data = {**data, "brief": "roles" if data.get("model") == "oracle" else "description"}
+        return data
+
     @model_validator(mode="after")
     def _brief_fits_model(self) -> RunConfig:
         if self.brief == "description" and self.model == "oracle":
@@ -65,7 +74,7 @@ class RunConfig(BaseModel):
 
             raise ConfigError("--brief description cannot be used with --model oracle", field="--brief",
                               hint="the oracle answers with the GT plans, which name the task's roles; "
-                                   "use --brief roles (the default) with the oracle")
+                                   "use --brief roles with the oracle")
         return self
 
     @field_validator("generators")

@@ -90,7 +90,8 @@ def build_results(
         units = [r for r in records if r.generator == gen]
         measured = [u for u in units if u.measured]
         metrics = [task_metrics(by_task[u.task_id], u.samples, n_failed=u.n_failed,
-                                mutants=u.mutants or None) for u in measured]
+                                mutants=u.mutants or None, reported=[a.target for a in u.attempts])
+                   for u in measured]
         per_task[gen] = {u.task_id: {**m.model_dump(mode="json"), "budget_hit": u.budget_hit is not None}
                          for u, m in zip(measured, metrics, strict=True)}
         if metrics:
@@ -206,7 +207,7 @@ def in_run_order(data: dict[str, Any]) -> dict[str, Any]:
 
 #: per-task figures that reports and comparisons compute with (`metrics.uncertainty`)
 _CELL_NUMBERS = ("n_envs", "n_failed", "n_attempted", "n_floor_plan_ok", "n_entity_ok",
-                 "n_relation_ok", "n_valid", "n_extended_ok", "logcov", "ld", "ji", "redundancy",
+                 "n_relation_ok", "n_valid", "n_extended_ok", "logcov", "ld", "ji", "ji_fixed", "redundancy",
                  "st_ms", "st_ticks", "faudr_mut")
 #: keys of `results.<generator>` that hold lists of task ids, and those that hold a flag
 _ROW_TASK_LISTS = ("not_measured_tasks", "budget_hit_tasks")

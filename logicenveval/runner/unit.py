@@ -417,7 +417,9 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
             unjudged.append((origin, "evaluate", _reason(exc)))
             continue
         render = child(Path("renders"), spec.generator, spec.task_id, env.env_id, suffix=".svg").as_posix()
-        atomic_write_text(run_dir / render, render_svg(done.env, done.physics), durable=False)
+        # drawn from the environment as stored, as `report` re-draws a lost render (with
+        # `--brief description` the judged copy also maps the task's roles)
+        atomic_write_text(run_dir / render, render_svg(env, done.physics), durable=False)
         samples.append(sample)
         details.append(EnvDetail(env_id=env.env_id, render=render, traces=done.traces))
     if spec.brief != "roles":
