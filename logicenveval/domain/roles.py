@@ -42,7 +42,6 @@ Public API::
 from __future__ import annotations
 
 import difflib
-import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -168,9 +167,9 @@ def bind_roles(env: EnvSpec, roles: Mapping[str, Role], catalog: Catalog | None 
     bound = {name: decided.get(name) for name in cands}
     full = {**env.roles, **bound}
     used = {oid for oid in full.values() if oid is not None}
-    why = {name: _nearest(name, roles[name], env, full, used, cat)
-           for name, oid in bound.items() if oid is None and name not in ambiguous}
-    return RoleBinding(roles=full, bound=bound, candidates=ambiguous, problems=problems, why=why)
+    nearest = {name: _nearest(name, roles[name], env, full, used, cat)
+               for name, oid in bound.items() if oid is None and name not in ambiguous}
+    return RoleBinding(roles=full, bound=bound, candidates=ambiguous, problems=problems, why=nearest)
 
 
 def _nearest(name: str, role: Role, env: EnvSpec, full: Mapping[str, str | None],
@@ -245,8 +244,11 @@ def _decide(cands: Mapping[str, list[str]]) -> tuple[dict[str, str | None], dict
     return decided, ambiguous
 
 
-def parse_role_map(text: str | None, roles: Mapping[str, Role]) -> dict[str, str]:
-    """`--roles ROLE=ID,...` as a map, each ROLE a role of the task (`ConfigError` otherwise)."""
+def parse_role_map(text: str | None, roles: Mapping[str, Role] | None = None, *,
+                   strict: bool = True) -> dict[str, str]:
+    """`--roles ROLE=ID,...` as a map (`ConfigError` on a malformed item). With `roles`, each
+    ROLE must be one of them (`strict`) or is left out (not strict: several tasks share a
+    `--roles`, each takes its own)."""
     out: dict[str, str] = {}
     for item in (text or "").split(","):
         if not item.strip():
@@ -255,7 +257,9 @@ def parse_role_map(text: str | None, roles: Mapping[str, Role]) -> dict[str, str
         if not sep or not role or not oid:
             raise ConfigError(f"{item.strip()!r} is not ROLE=ID", field="--roles",
                               hint="write --roles red_box=box_2,toy=doll_1")
-        if role not in roles:
+        if roles is not None and role not in roles:
+            if not strict:
+                continue
             raise ConfigError(f"{role!r} is not a role of the task", field="--roles",
                               hint=f"roles: {', '.join(sorted(roles))}")
         out[role] = oid

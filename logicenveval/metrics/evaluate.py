@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 
 from pydantic import BaseModel, ConfigDict, Field
 
-from logicenveval.model.conditions import And, Cond, Holds, Not, Pred, atoms
+from logicenveval.model.conditions import And, Cond, Holds, Not, Pred
 from logicenveval.model.task import Task
 from logicenveval.model.tree import DecisionPath, Trajectory, evaluate_task
 
@@ -72,9 +72,9 @@ def coverage(task: Task, holds: Holds, bound_roles: Mapping[str, str | None],
             continue
         if binding is not None and role in binding.candidates:
             continue
-        why = binding.why.get(role) if binding is not None else None
+        lacks = binding.why.get(role) if binding is not None else None
         problems.append(f"role {role} is not bound to an object and no reached path allows it"
-                        + (f": {why}" if why else ""))
+                        + (f": {lacks}" if lacks else ""))
     conditions: dict[tuple[str, str], None] = {}
     for path in reached:
         for step in path.steps:

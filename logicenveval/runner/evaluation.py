@@ -43,6 +43,7 @@ def evaluate_env(
     env: EnvSpec,
     policies: Mapping[str, Any],
     catalog: Catalog,
+    given: Mapping[str, str] | None = None,
 ) -> Evaluation:
     """Measure one environment; never raises for a bad environment (that is a finding).
 
@@ -56,7 +57,7 @@ def evaluate_env(
     ~40 % to these sub-millisecond episodes), then traced for the report's drill-down, so that
     `report` never simulates.
     """
-    prepared = prepare_env(env, task.roles, catalog)
+    prepared = prepare_env(env, task.roles, catalog, given)
     env, binding = prepared.env, prepared.binding
     report = check_env(env, catalog)
     failures = [
