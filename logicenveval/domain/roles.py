@@ -176,8 +176,8 @@ def _nearest(name: str, role: Role, env: EnvSpec, full: Mapping[str, str | None]
              used: set[str], cat: Catalog) -> str:
     """One sentence: which objects come nearest to playing `role`, and what each lacks."""
     owner = {oid: r for r, oid in full.items() if oid is not None}
-    want = role.category + (" with " + ", ".join(f"{k}={v}" for k, v in role.attributes.items())
-                            if role.attributes else "")
+    attrs = ", ".join(f"{k}={v}" for k, v in role.attributes.items())
+    want = role.category + (f" with {attrs}" if attrs else "")
     same = [o for o in env.objects if _same_category(o, role, cat)]
     if same:
         parts = []
@@ -191,12 +191,12 @@ def _nearest(name: str, role: Role, env: EnvSpec, full: Mapping[str, str | None]
                           if g.startswith("no ")})
         fix = (f"state {', '.join(missing)} on the object meant (or name it so)" if missing
                else "map the role with --roles or \"roles\"")
-        return f"no {role.category} agrees with {want}: {'; '.join(parts)}{more}; {fix}"
+        return f"no {role.category} has {attrs or 'what ' + name + ' needs'}: {'; '.join(parts)}{more}; {fix}"
     related = _related(name, role, [o for o in env.objects if o.id not in used], cat)
     if not related:
         return f"no object is a {role.category} (a {want} would bind)"
-    parts = [f"{o.id} is a {getattr(o, 'source_category', None) or o.category}, not a {role.category}"
-             for o in related]
+    parts = [f"{o.id} is a {vocabulary(cat).canonical(o.category) or repr(o.category)}, "
+             f"not a {role.category}" for o in related]
     return f"no object is a {role.category}: {'; '.join(parts)} (a {want} would bind)"
 
 
