@@ -196,9 +196,10 @@ class Task(BaseModel):
     def violated(self, holds: Holds, roles: Mapping[str, str | None]) -> list[Constraint]:
         """The constraints that do not hold in `holds`, given `role -> object id or None`.
 
-        A constraint naming an optional role that `roles` leaves unbound is vacuous (the
-        description asserts it only of an object that is there)."""
-        absent = {r for r, spec in self.roles.items() if spec.optional and roles.get(r) is None}
+        A constraint naming a role that `roles` leaves unbound is not checked: for an optional
+        role the description asserts it only of an object that is there, and a required role
+        left unbound already makes the environment ill-formed (one message, not two)."""
+        absent = {r for r in self.roles if roles.get(r) is None}
         out = []
         for c in self.constraints:
             cond = c.condition()
