@@ -142,3 +142,22 @@ def test_task_files_stay_loadable_without_constraints() -> None:
         spec.pop("optional", None)
     task = task_from_dict(data)
     assert task.constraints == [] and not any(r.optional for r in task.roles.values())
+
+
+def test_lint_shows_category_readings_and_constraint_problems(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    env = _edit(_without_wipes(), "red_box", attributes={"color": "blue"})
+    env = env.model_copy(update={"objects": [
+        o.model_copy(update={"category": "Red Toy Box"}) if o.id == "white_box" else o
+        for o in env.objects]})
+    folder = tmp_path / "envs" / TASK.id
+    folder.mkdir(parents=True)
+    (folder / "e.json").write_text(env_to_json(env))
+    assert main(["lint", str(tmp_path / "envs"), "--json"]) == 1
+    (report,) = json.loads(capsys.readouterr().out)
+    readings = {c["object"]: (c["written"], c["read_as"]) for c in report["categories"]}
+    assert readings["white_box"] == ("Red Toy Box", "toy_box") and readings["mark"] == ("floor_stain", "floor_stain")
+    kinds = {p["kind"]: p["message"] for p in report["problems"]}
+    assert "attr(red_box, color, red)" in kinds["constraint"]
+    assert main(["lint", str(tmp_path / "envs"), "--roles", "red_box=nope"]) == 1
+    assert "no object 'nope'" in capsys.readouterr().out
