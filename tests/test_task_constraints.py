@@ -161,3 +161,30 @@ def test_lint_shows_category_readings_and_constraint_problems(
     assert "attr(red_box, color, red)" in kinds["constraint"]
     assert main(["lint", str(tmp_path / "envs"), "--roles", "red_box=nope"]) == 1
     assert "no object 'nope'" in capsys.readouterr().out
+
+
+def test_evaluate_roles_option_binds_first(tmp_path: Path) -> None:
+    env = _without_wipes()
+    plain = {"red_box": "box_a", "white_box": "box_b"}
+    env = env.model_copy(update={
+        "roles": {r: o for r, o in env.roles.items() if r not in plain},
+        "objects": [o.model_copy(update={"id": plain[o.id], "attributes": {}}) if o.id in plain
+                    else o for o in env.objects]})
+    folder = tmp_path / "envs" / TASK.id
+    folder.mkdir(parents=True)
+    (folder / "e.json").write_text(env_to_json(env).replace('"red_box"', '"box_a"')
+                                   .replace('"white_box"', '"box_b"'))
+
+    def sample(*extra: str) -> dict[str, Any]:
+        out = tmp_path / f"out{len(extra)}"
+        main(["evaluate", str(tmp_path / "envs"), "--executor", "inprocess", "--output", str(out), *extra])
+        (run,) = list(out.iterdir())
+        (line,) = (run / "samples.jsonl").read_text().splitlines()
+        return dict(json.loads(line))
+
+    unbound = sample()
+    assert not unbound["well_formed"]
+    assert any("role red_box is not bound" in p and "box_a has no color" in p for p in unbound["problems"])
+    given = sample("--roles", "red_box=box_a,white_box=box_b")
+    assert given["well_formed"] and any("attr(red_box, color, red)" in v and "has no color" in v
+                                        for v in given["violations"])
