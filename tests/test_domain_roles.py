@@ -217,3 +217,34 @@ def test_given_roles_bind_first_and_bad_ids_are_bad_input() -> None:
     with pytest.raises(ConfigError, match="ROLE=ID"):
         parse_role_map("red_box", BOXES)
     assert parse_role_map("blue_box=b1,red_box=b2", BOXES, strict=False) == {"red_box": "b2"}
+
+
+_IDS = st.from_regex(r"[A-Za-z][A-Za-z0-9_.-]{0,8}", fullmatch=True)
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.dictionaries(st.sampled_from(sorted(BOXES)), _IDS, min_size=1))
+def test_role_map_text_round_trips(mapping: dict[str, str]) -> None:
+    from logicenveval.domain.roles import parse_role_map
+
+    text = ",".join(f" {r} = {o} " for r, o in mapping.items())
+    assert parse_role_map(text, BOXES) == mapping
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.tuples(st.sampled_from(["red_box", "white_box", "box", "red box 1", "toy"]),
+                          st.sampled_from(["toy_box", "Red Toy Box", "toy"]),
+                          st.none() | st.sampled_from(_COLORS)), max_size=6, unique_by=lambda t: t[0]))
+def test_names_never_bind_a_disagreeing_object(objs: list[tuple[str, str, str | None]]) -> None:
+    from logicenveval.domain.roles import prepare_env
+
+    env = _env([{"id": i, "category": c, "attributes": {"color": col} if col else {}}
+                for i, c, col in objs])
+    prepared = prepare_env(env, BOXES, CATALOG)
+    by_id = {o.id: o for o in prepared.env.objects}
+    for role, oid in prepared.binding.roles.items():
+        if oid is not None:  # bound: it has (or its name gave it) the role's colour
+            assert by_id[oid].attributes.get("color") == BOXES[role].attributes["color"]
+            assert matches(by_id[oid], BOXES[role], CATALOG)
+        else:
+            assert role in prepared.binding.candidates or role in prepared.binding.why
