@@ -2,8 +2,10 @@
 
 Structure is checked by `load_task_file`; this module adds what needs the catalog, a solver or the
 simulator: roles and categories, disjoint subtask roles, exclusive and exhaustive variable values
-(proved with z3 over predicates as free booleans plus the physical axioms), and the four policies
-simulated in every situation (one environment per Cartesian trajectory of decision paths).
+(proved with z3 over predicates as free booleans plus the physical axioms; an optional role may
+be absent), the explicit constraints (each role attribute stated, all consistent with every
+situation: z3), and the four policies simulated in every situation (several worlds per Cartesian
+trajectory of decision paths, each holding the constraints, absence worlds for optional roles).
 Problems are returned as typed data, never raised, so that one run reports every task.
 """
 
@@ -164,6 +166,7 @@ def _impl_validate(task: Task, folder: Path, cat: Catalog, report: TaskReport,
         add("task.json", exc.field or "subtasks", f"{exc.message} (fix: {exc.hint})")
         return
     _check_values(task, add)
+    _check_constraints(task, cat, add)
     policies = _load_policies(task, folder, add)
     if simulate and not report.problems and len(policies) == len(POLICY_KINDS):
         _check_policies(task, cat, policies, report, add, worlds)
@@ -181,6 +184,30 @@ def _check_disjoint(task: Task, add: _Add) -> None:
                     "variables of different subtasks must test disjoint roles")
 
 
+def _check_constraints(task: Task, cat: Catalog, add: _Add) -> None:
+    """Every role attribute is stated as a constraint (the description's words for it), and the
+    constraints hold together with every situation (z3: `situation_env` makes them hard)."""
+    from logicenveval.errors import TrajectoryError
+    from logicenveval.sim.situations import situation_env
+
+    stated = {c.fact.replace(" ", "") for c in task.constraints}
+    for role, spec in task.roles.items():
+        for key, value in spec.attributes.items():
+            if f"attr({role},{key},{value})" not in stated:
+                add("task.json", f"roles.{role}.attributes.{key}",
+                    f"{key}={value} tells {role} apart but no constraint states it (fix: add "
+                    f"{{\"fact\": \"attr({role}, {key}, {value})\", \"says\": <the description's "
+                    "words>} to constraints)")
+    if not task.constraints:
+        return
+    for traj in situations(task):
+        try:
+            situation_env(task, traj, cat)
+        except TrajectoryError as exc:
+            add("task.json", "constraints", f"situation {traj.key}: {exc.message}")
+            return
+
+
 # ----- exclusive / exhaustive values ----------------------------------------------------------
 
 class _Axioms:
@@ -194,8 +221,8 @@ class _Axioms:
                 preds |= set(atoms(parse(text)))
         self.axioms: list[z3.BoolRef] = []
         mentioned_exists = {p.args[0] for p in preds if p.name == "exists"}
-        for role in task.roles:
-            if role not in mentioned_exists:
+        for role, spec in task.roles.items():
+            if role not in mentioned_exists and not spec.optional:
                 self.axioms.append(self.atom(Pred("exists", (role,))))
         by_subject: dict[str, list[Pred]] = {}
         for p in sorted(preds, key=str):

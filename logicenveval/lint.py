@@ -5,11 +5,14 @@ exactly as evaluation takes it (`domain.roles.prepare_env`: categories mapped, r
 checked, without physics or simulation:
 
 * **file**: not a valid EnvSpec, a `task_id` of another task, an `env_id` used twice;
-* **binding**: an ambiguous role (several objects qualify), a role left unbound that no reached
-  decision path allows to be absent, a variable whose values reach no leaf (the GT trees are
-  evaluated on the initial state);
+* **binding**: an ambiguous role (several objects qualify), a role left unbound that is not
+  optional and that no reached decision path allows to be absent — one message per role, naming
+  the nearest objects and what they lack — a variable whose values reach no leaf (the GT trees
+  are evaluated on the initial state);
+* **constraint**: a fact the task description fixes that the environment violates (not a valid
+  scenario);
 * **category**: names that fit several catalog categories (the choice made) and names that fit
-  none (kept as obstacles) — notes, unless they are why a role is unbound;
+  none (kept as obstacles) — notes; `readings` lists how each object's category was read;
 * **affordance**: an object resting on something that is not a surface, inside something that is
   not a container; a role the EnvSpec maps itself to an object of another category or with other
   attributes (the harness never second-guesses such a map, so it is reported here).
@@ -19,15 +22,16 @@ Problems make a file fail (exit 1); notes do not.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from logicenveval.benchmark import load_task, task_ids
 from logicenveval.domain.catalog import Catalog, load_catalog
-from logicenveval.domain.roles import matches, prepare_env
+from logicenveval.domain.roles import matches, parse_role_map, prepare_env
 from logicenveval.envfiles import load_env
 from logicenveval.errors import ConfigError, LogicEnvEvalError
-from logicenveval.metrics.evaluate import coverage
+from logicenveval.metrics.evaluate import constraint_problems, coverage
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import Task
 from logicenveval.sim.world import holds_initial
@@ -41,16 +45,24 @@ class FileReport:
     #: (kind, message): kind is file, binding, category or affordance
     problems: list[tuple[str, str]] = field(default_factory=list)
     notes: list[tuple[str, str]] = field(default_factory=list)
+    #: per object: its id, the category as written and the catalog key it was read as (None:
+    #: names no category)
+    readings: list[tuple[str, str, str | None]] = field(default_factory=list)
 
     @property
     def clean(self) -> bool:
         return not self.problems
 
 
-def lint_env(env: EnvSpec, task: Task, catalog: Catalog, report: FileReport) -> None:
-    """Add the binding, category and affordance findings of one loaded environment."""
-    prepared = prepare_env(env, task.roles, catalog)
+def lint_env(env: EnvSpec, task: Task, catalog: Catalog, report: FileReport,
+             given: Mapping[str, str] | None = None) -> None:
+    """Add the binding, constraint, category and affordance findings of one loaded environment;
+    `given` maps roles first (`--roles`)."""
+    prepared = prepare_env(env, task.roles, catalog, given)
     judged, cats = prepared.env, prepared.categories
+    for o in judged.objects:
+        written = getattr(o, "source_category", None) or o.category
+        report.readings.append((o.id, written, None if written in cats.unknown else o.category))
     for name, ids in sorted(cats.unknown.items()):
         report.notes.append(("category", f"category {name!r} names no catalog category: "
                              f"{', '.join(ids[:5])}{' …' if len(ids) > 5 else ''} kept as immovable "
@@ -59,13 +71,10 @@ def lint_env(env: EnvSpec, task: Task, catalog: Catalog, report: FileReport) -> 
         report.notes.append(("category", f"category {name!r} fits {', '.join(options)}: "
                              f"read as {cats.mapped[name]}"))
     report.problems += [("binding", p) for p in prepared.binding.problems]
-    cov = coverage(task, holds_initial(judged, catalog), judged.roles)
-    unknown_names = sorted(cats.unknown)
-    for problem in cov.problems:
-        if " is not bound to an object" in problem and unknown_names:
-            problem += (f" (objects of unknown categories {', '.join(repr(n) for n in unknown_names[:5])}"
-                        " cannot play a role)")
-        report.problems.append(("binding", problem))
+    holds = holds_initial(judged, catalog)
+    cov = coverage(task, holds, judged.roles, prepared.binding)
+    report.problems += [("binding", p) for p in cov.problems]
+    report.problems += [("constraint", p) for p in constraint_problems(task, judged, holds)]
     by_id = {o.id: o for o in judged.objects}
     for o in judged.objects:
         sup = by_id.get(o.support or "")
@@ -92,8 +101,9 @@ def _has(catalog: Catalog, category: str, affordance: str) -> bool:
 
 
 def lint_folder(envs_dir: str | Path, tasks_dir: str | Path | None = None,
-                catalog: Catalog | None = None) -> list[FileReport]:
-    """One report per EnvSpec file of `envs_dir/<task_id>/`, in task and natural file order."""
+                catalog: Catalog | None = None, roles: str | None = None) -> list[FileReport]:
+    """One report per EnvSpec file of `envs_dir/<task_id>/`, in task and natural file order;
+    `roles` (`--roles ROLE=ID,...`) maps roles of every file first."""
     from logicenveval.runner.score_envs import env_files
 
     root = Path(envs_dir)
@@ -126,7 +136,11 @@ def lint_folder(envs_dir: str | Path, tasks_dir: str | Path | None = None,
             if env.env_id in seen:
                 report.problems.append(("file", f"env_id {env.env_id!r} is also used by {seen[env.env_id]}"))
             seen.setdefault(env.env_id, path.name)
-            lint_env(env, task, cat, report)
+            try:
+                given = parse_role_map(roles, task.roles)
+                lint_env(env, task, cat, report, given)
+            except ConfigError as exc:
+                report.problems.append(("binding", str(exc)))
     if not reports:  # "no problems" about nothing would read as a pass
         raise ConfigError(f"no EnvSpec file (*.json) in the task folder(s) "
                           f"{', '.join(f.name for f in folders[:5])}, so nothing was checked",

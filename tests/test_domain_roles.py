@@ -143,3 +143,108 @@ def test_binding_never_guesses(objs: list[tuple[str, str]], spec: dict[str, tupl
             assert b.roles[name] == qual[0]
         if not qual:
             assert b.roles[name] is None and name not in b.candidates
+
+
+def test_the_name_says_what_the_attributes_do_not() -> None:
+    from logicenveval.domain.roles import prepare_env
+
+    env = _env([{"id": "box_a", "category": "red toy box"},
+                {"id": "white_box", "category": "toy_box"}])
+    prepared = prepare_env(env, BOXES, CATALOG)
+    assert prepared.binding.roles == {"red_box": "box_a", "white_box": "white_box"}
+    colours = {o.id: o.attributes.get("color") for o in prepared.env.objects}
+    assert colours == {"box_a": "red", "white_box": "white"}  # read from the names, kept
+    other = _env([{"id": "b1", "category": "toy_box", "attributes": {"color": "blue"}},
+                  {"id": "b2", "category": "toy_box", "attributes": {"color": "blue"}}])
+    assert prepare_env(other, BOXES, CATALOG).binding.roles == {"red_box": None, "white_box": None}
+
+
+def test_the_role_name_chooses_among_candidates_of_one_kind() -> None:
+    roles = {"food_bowl": Role(category="pet_bowl"), "water_bowl": Role(category="pet_bowl")}
+    env = _env([{"id": "water_bowl", "category": "pet_bowl"}, {"id": "Food Bowl 1", "category": "pet_bowl"}])
+    b = bind_roles(env, roles, CATALOG)
+    assert b.roles == {"food_bowl": "Food Bowl 1", "water_bowl": "water_bowl"} and b.well_formed
+
+
+def test_two_boxes_without_colour_name_the_missing_color_once_per_role() -> None:
+    env = _env([{"id": "b1", "category": "toy_box"}, {"id": "b2", "category": "toy_box"}])
+    b = bind_roles(env, BOXES, CATALOG)
+    assert b.problems == [] and b.candidates == {}
+    for role in BOXES:
+        assert "b1 has no color" in b.why[role] and "b2 has no color" in b.why[role]
+        assert "state color" in b.why[role]
+
+
+def test_an_unbound_role_blames_only_related_objects() -> None:
+    env = _env([{"id": "Teddy Bear", "category": "Teddy Bear"}, {"id": "Lamp", "category": "Lamp"},
+                {"id": "thing", "category": "flux_capacitor"}])
+    b = bind_roles(env, {"toy": Role(category="toy"), "sofa": Role(category="sofa")}, CATALOG)
+    assert "Teddy Bear is a teddy_bear, not a toy" in b.why["toy"] and "a toy would bind" in b.why["toy"]
+    assert "Lamp" not in b.why["toy"] and "flux" not in b.why["toy"]
+    assert b.why["sofa"] == "no object is a sofa (a sofa would bind)"
+
+
+def test_an_ambiguous_role_gets_exactly_one_message() -> None:
+    from logicenveval.metrics.evaluate import coverage
+    from logicenveval.sim.world import holds_initial
+
+    task = load_task("clean_living_room")
+    env = _env([{"id": "t1", "category": "toy"}, {"id": "t2", "category": "toy"}])
+    b = bind_roles(env, task.roles, CATALOG)
+    bound = b.apply(env)
+    cov = coverage(task, holds_initial(bound, CATALOG), bound.roles, b)
+    messages = [m for m in [*b.problems, *cov.problems] if "role toy " in m]
+    assert len(messages) == 1 and "ambiguous" in messages[0]
+    mop = [m for m in cov.problems if "role mop " in m]
+    assert mop == ["role mop is not bound to an object and no reached path allows it: "
+                   "no object is a mop (a mop would bind)"]
+    assert not any("role wet_wipe" in m for m in cov.problems)  # optional: may be absent
+
+
+def test_given_roles_bind_first_and_bad_ids_are_bad_input() -> None:
+    import pytest
+
+    from logicenveval.domain.roles import parse_role_map, prepare_env
+    from logicenveval.errors import ConfigError
+
+    env = _env([{"id": "b1", "category": "toy_box"}, {"id": "b2", "category": "toy_box"}])
+    given = parse_role_map("red_box=b2, white_box=b1", BOXES)
+    assert prepare_env(env, BOXES, CATALOG, given).binding.roles == {"red_box": "b2", "white_box": "b1"}
+    with pytest.raises(ConfigError, match="no object 'b9'"):
+        prepare_env(env, BOXES, CATALOG, {"red_box": "b9"})
+    with pytest.raises(ConfigError, match="not a role"):
+        parse_role_map("blue_box=b1", BOXES)
+    with pytest.raises(ConfigError, match="ROLE=ID"):
+        parse_role_map("red_box", BOXES)
+    assert parse_role_map("blue_box=b1,red_box=b2", BOXES, strict=False) == {"red_box": "b2"}
+
+
+_IDS = st.from_regex(r"[A-Za-z][A-Za-z0-9_.-]{0,8}", fullmatch=True)
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.dictionaries(st.sampled_from(sorted(BOXES)), _IDS, min_size=1))
+def test_role_map_text_round_trips(mapping: dict[str, str]) -> None:
+    from logicenveval.domain.roles import parse_role_map
+
+    text = ",".join(f" {r} = {o} " for r, o in mapping.items())
+    assert parse_role_map(text, BOXES) == mapping
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.tuples(st.sampled_from(["red_box", "white_box", "box", "red box 1", "toy"]),
+                          st.sampled_from(["toy_box", "Red Toy Box", "toy"]),
+                          st.none() | st.sampled_from(_COLORS)), max_size=6, unique_by=lambda t: t[0]))
+def test_names_never_bind_a_disagreeing_object(objs: list[tuple[str, str, str | None]]) -> None:
+    from logicenveval.domain.roles import prepare_env
+
+    env = _env([{"id": i, "category": c, "attributes": {"color": col} if col else {}}
+                for i, c, col in objs])
+    prepared = prepare_env(env, BOXES, CATALOG)
+    by_id = {o.id: o for o in prepared.env.objects}
+    for role, oid in prepared.binding.roles.items():
+        if oid is not None:  # bound: it has (or its name gave it) the role's colour
+            assert by_id[oid].attributes.get("color") == BOXES[role].attributes["color"]
+            assert matches(by_id[oid], BOXES[role], CATALOG)
+        else:
+            assert role in prepared.binding.candidates or role in prepared.binding.why

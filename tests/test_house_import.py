@@ -214,7 +214,7 @@ def test_procthor10k_house_scores_with_every_role_bound(tmp_path: Path, capsys: 
         assert main(["import-house", str(path), "--task", "kitchen_breakfast_prep",
                      "--out", str(envs / f"{name}.json")]) == 0
     out = capsys.readouterr().out
-    assert "object types from id 22" in out and "roles with no object in the house (unbound): stove" in out
+    assert "object types from id 22" in out and "unbound stove: no object is a stove" in out
     assert "sizes from catalog" in out and "AI2-THOR type Faucet is a fixture (mounted on a sink" in out
     assert main(["evaluate", str(tmp_path / "envs"), "--name", "procthor", "--executor", "inprocess",
                  "--output", str(tmp_path / "reports")]) == 0

@@ -19,9 +19,13 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--output", default="reports", help="parent folder of run folders")
     p.add_argument("--run-id", default=None, type=options.folder_name,
                    help="run folder name (default: derived from the inputs)")
+    p.add_argument("--roles", default=None, metavar="ROLE=ID,...",
+                   help="bind these roles to these object ids first, in every file of a task "
+                   "that has the role (e.g. red_box=box_2)")
 
 
 def run(args: argparse.Namespace) -> int:
+    from logicenveval.domain.roles import parse_role_map
     from logicenveval.reporting.publish import publish
     from logicenveval.runner.score_envs import EvaluateConfig, evaluate_envs
 
@@ -34,7 +38,9 @@ def run(args: argparse.Namespace) -> int:
         executor=args.executor,
         output=args.output,
         run_id=args.run_id,
+        roles=args.roles,
     )
+    parse_role_map(args.roles)  # malformed items are bad input before any scoring
     outcome = evaluate_envs(config)
     shown = publish(outcome.run_dir, outcome.results, outcome.records)
     print(shown.summary)

@@ -21,6 +21,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                    "else our recorded mapping, then the catalog)")
     p.add_argument("--tasks-dir", default=None, help="folder of <task_id>/task.json (default: the benchmark)")
     p.add_argument("--catalog", default=None, help="catalog.json (default: the benchmark's)")
+    p.add_argument("--roles", default=None, metavar="ROLE=ID,...",
+                   help="bind these roles to these object ids (written into the EnvSpec's roles)")
 
 
 def run(args: argparse.Namespace) -> int:
@@ -28,7 +30,7 @@ def run(args: argparse.Namespace) -> int:
 
     from logicenveval.benchmark import load_task
     from logicenveval.domain.catalog import load_catalog
-    from logicenveval.domain.roles import prepare_env
+    from logicenveval.domain.roles import parse_role_map, prepare_env
     from logicenveval.envfiles import env_to_json
     from logicenveval.scene.export_files import write_output
     from logicenveval.scene.house_import import import_house, load_house
@@ -44,6 +46,10 @@ def run(args: argparse.Namespace) -> int:
                           catalog=catalog, source=str(path), assets=assets,
                           role_categories=[r.category for r in task.roles.values()])
     env = report.env
+    given = parse_role_map(args.roles, task.roles)
+    prepared = prepare_env(env, task.roles, catalog, given)  # checks the ids before writing
+    if given:
+        env = env.model_copy(update={"roles": {**env.roles, **given}})
     write_output(out, env_to_json(env), what="EnvSpec")
     print(f"wrote {out}: {len(env.rooms)} room(s), {len(env.doors)} door(s), "
           f"{len(env.windows)} window(s), {len(env.objects)} object(s)")
@@ -61,13 +67,13 @@ def run(args: argparse.Namespace) -> int:
     for otype, names in sorted(report.ambiguous_types.items()):
         print(f"note: AI2-THOR type {otype} fits categories {', '.join(names)}; used "
               f"{report.chosen[otype]} (docs/scene.md: Importing houses)")
-    binding = prepare_env(env, task.roles, catalog).binding
+    binding = prepared.binding
     bound = {r: o for r, o in binding.roles.items() if o is not None}
-    missing = sorted(r for r, o in binding.roles.items() if o is None and r not in binding.candidates)
     print(f"roles of {task.id} the harness binds: "
           + (", ".join(f"{r}={o}" for r, o in bound.items()) or "none"))
-    if missing:
-        print(f"roles with no object in the house (unbound): {', '.join(missing)}")
+    for role, why in sorted(binding.why.items()):
+        optional = " (optional: may be absent)" if task.roles[role].optional else ""
+        print(f"unbound {role}{optional}: {why}")
     for problem in binding.problems:
         print(f"not well-formed: {problem}")
     return 0

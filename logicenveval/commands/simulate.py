@@ -1,15 +1,23 @@
 """`simulate`: run one policy (BT) of a task in an EnvSpec or in a GT situation.
 
 An EnvSpec is taken in as `evaluate` takes it (`domain.roles.prepare_env`): categories mapped to
-catalog keys, the task's roles it does not map bound by category and attributes.
+catalog keys, the task's roles it does not map bound by category, attributes and name; what
+makes it no valid scenario (an unbound role with its nearest objects, a violated task
+constraint) is printed before the verdict.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+from typing import TYPE_CHECKING
 
 from logicenveval.errors import ConfigError
+
+if TYPE_CHECKING:
+    from logicenveval.domain.catalog import Catalog
+    from logicenveval.domain.roles import PreparedEnv
+    from logicenveval.model.task import Task
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -40,6 +48,18 @@ def _situation(text: str) -> dict[str, str]:
     return out
 
 
+def env_problems(task: Task, prepared: PreparedEnv, catalog: Catalog) -> list[str]:
+    """Why the prepared environment is no valid scenario before any tick: each role left unbound
+    (one message, the nearest objects), a tree reaching no leaf, a violated task constraint."""
+    from logicenveval.metrics.evaluate import constraint_problems, coverage
+    from logicenveval.sim.world import holds_initial
+
+    holds = holds_initial(prepared.env, catalog)
+    cov = coverage(task, holds, prepared.env.roles, prepared.binding)
+    return [*prepared.binding.problems, *cov.problems,
+            *constraint_problems(task, prepared.env, holds)]
+
+
 def run(args: argparse.Namespace) -> int:
     from pathlib import Path
 
@@ -68,6 +88,7 @@ def run(args: argparse.Namespace) -> int:
     # a policy the loader refuses (unknown node, bad port, unknown role, ...) is bad input:
     # exit 2 with file:line and a fix, like every other input (docs/security.md)
     policy = load_policy(path, roles=task.roles, rooms=task.rooms)
+    unfit: list[str] = []
     if args.env:  # categories mapped and roles bound exactly as `evaluate` judges the file
         loaded = load_env(args.env)
         if loaded.task_id != task.id:  # its roles and GT are another task's: a pass means nothing
@@ -77,8 +98,9 @@ def run(args: argparse.Namespace) -> int:
                               f"an environment of {task.id}")
         prepared = prepare_env(loaded, task.roles, catalog)
         env = prepared.env
+        unfit = env_problems(task, prepared, catalog)
         if not args.json:
-            for note in [*prepared.categories.notes(), *prepared.binding.problems]:
+            for note in [*prepared.categories.notes(), *unfit]:
                 print(f"note: {note}")
     else:
         try:
@@ -93,7 +115,7 @@ def run(args: argparse.Namespace) -> int:
 
         print(unicode_tree(load_tree(path)))
     if args.json:
-        print(json.dumps(verdict.model_dump(mode="json"), indent=2))
+        print(json.dumps({**verdict.model_dump(mode="json"), "env_problems": unfit}, indent=2))
     else:
         _print(verdict, str(path), env.env_id)
     return 0 if verdict.passed else 1

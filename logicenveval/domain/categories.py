@@ -13,7 +13,10 @@ name is mapped to a key exactly once, when an environment enters the harness
    plurals (`key` → `keys`, for catalog keys that are plural).
 2. For the first form that names anything: a catalog key, else a catalog synonym, else an
    AI2-THOR object type (`ai2thor_type`).
-3. When that names several categories (`GarbageCan`: `trash_can`, `recycling_bin`; `clock`:
+3. Else the longest tail of the name's words that names a category (`red toy box` ->
+   `toy_box`: the head of an English compound is its last word); the other words stay in the
+   name, where role binding reads them (`domain.roles`).
+4. When that names several categories (`GarbageCan`: `trash_can`, `recycling_bin`; `clock`:
    `alarm_clock`, `wall_clock`): the only one among `prefer` (a task's role categories), else the
    one whose own name is the form, else the first by name — and the choice is reported.
 
@@ -229,6 +232,21 @@ def _first(ids: list[str], n: int = 5) -> list[str]:
     return ids if len(ids) <= n else [*ids[:n], f"... ({len(ids) - n} more)"]
 
 
+def head_noun(vocab: Vocabulary, name: str, prefer: Iterable[str] = ()) -> Resolution:
+    """`vocab.resolve(name)`, else the longest tail of its words that names a category (an
+    English compound's head is last: `red toy box` -> `toy_box`, `wet mop` -> `mop`); the words
+    left over stay in the object's name (`source_category`), where binding reads them."""
+    res = vocab.resolve(name, prefer)
+    words = snake(name).split("_")
+    for k in range(1, len(words)):
+        if res.category is not None:
+            break
+        tail = vocab.resolve("_".join(words[k:]), prefer)
+        if tail.category is not None:
+            res = Resolution(name, tail.category, tail.how, tail.candidates)
+    return res
+
+
 def normalise_env(env: EnvSpec, catalog: Catalog, prefer: Iterable[str] = ()
                   ) -> tuple[EnvSpec, CategoryReport]:
     """`env` with every object category mapped to its catalog key; the written name is kept on
@@ -241,7 +259,7 @@ def normalise_env(env: EnvSpec, catalog: Catalog, prefer: Iterable[str] = ()
     objects = []
     changed = False
     for o in env.objects:
-        res = vocab.resolve(o.category, wanted)
+        res = head_noun(vocab, o.category, wanted)
         if res.category is None:
             unknown.setdefault(o.category, []).append(o.id)
         elif res.category != o.category:

@@ -133,7 +133,10 @@ class GeneratorMetrics(BaseModel):
 
 
 def _is_valid(sample: EnvSample) -> bool:
-    return sample.well_formed and sample.verdicts.get("correct") == "passed"
+    """A valid scenario (SceVR): well-formed, every explicit task constraint held, the correct
+    BT passes."""
+    return (sample.well_formed and not sample.violations
+            and sample.verdicts.get("correct") == "passed")
 
 
 def _check_samples(task: Task, samples: Sequence[EnvSample], n_failed: int) -> set[str]:

@@ -1,7 +1,10 @@
 """GT evaluation of one environment: which decision paths it realises, and is it well-formed.
 
 Well-formedness comes first (DESIGN.md §7): every GT tree must reach exactly one leaf, and every
-task role must be bound to an object unless the reached path itself requires `not exists(role)`.
+task role must be bound to an object unless it is optional (the description lets it be absent)
+or the reached path itself requires `not exists(role)`. Validity then also needs the task's
+explicit constraints (`constraint_problems`): an environment that violates one is well-formed
+(it is judged) but not a valid scenario.
 """
 
 from __future__ import annotations
@@ -26,6 +29,7 @@ from logicenveval.model.tree import DecisionPath, Trajectory, atomic_conditions,
 
 if TYPE_CHECKING:
     from logicenveval.domain.catalog import Catalog
+    from logicenveval.domain.roles import RoleBinding
     from logicenveval.model.envspec import EnvSpec
 
 
@@ -51,8 +55,13 @@ def _absent_roles(cond: Cond) -> set[str]:
     return set()
 
 
-def coverage(task: Task, holds: Holds, bound_roles: Mapping[str, str | None]) -> Coverage:
-    """Evaluate the GT trees on `holds` (the initial state) given `role -> object id or None`."""
+def coverage(task: Task, holds: Holds, bound_roles: Mapping[str, str | None],
+             binding: RoleBinding | None = None) -> Coverage:
+    """Evaluate the GT trees on `holds` (the initial state) given `role -> object id or None`.
+
+    With the `binding` that produced `bound_roles`, an unbound role gets one message: its
+    ambiguity (already among the binding's problems, so not repeated here) or what the nearest
+    objects lack (`binding.why`)."""
     reached: list[DecisionPath] = []
     problems: list[str] = []
     for outcome in evaluate_task(task, holds):
@@ -68,9 +77,14 @@ def coverage(task: Task, holds: Holds, bound_roles: Mapping[str, str | None]) ->
     for path in reached:
         for var, value in path.steps:
             absent_ok |= _absent_roles(task.variables[var].condition(value))
-    for role in task.roles:
-        if bound_roles.get(role) is None and role not in absent_ok:
-            problems.append(f"role {role} is not bound to an object and no reached path allows it")
+    for role, spec in task.roles.items():
+        if bound_roles.get(role) is not None or role in absent_ok or spec.optional:
+            continue
+        if binding is not None and role in binding.candidates:
+            continue
+        lacks = binding.why.get(role) if binding is not None else None
+        problems.append(f"role {role} is not bound to an object and no reached path allows it"
+                        + (f": {lacks}" if lacks else ""))
     conditions = realised_conditions(task, holds, bound_roles)
     complete = len(reached) == len(task.subtasks)
     return Coverage(
@@ -99,6 +113,38 @@ def realised_conditions(task: Task, holds: Holds, bound_roles: Mapping[str, str 
         if len(held) == 1 and (name, held[0]) in edges:
             out.append((name, held[0]))
     return out
+
+
+def constraint_problems(task: Task, env: EnvSpec, holds: Holds) -> list[str]:
+    """One message per task constraint `env` violates, naming the fact, the description's words
+    and what the environment has instead."""
+    out = []
+    for c in task.violated(holds, env.roles):
+        out.append(f"violates the task's constraint {c.fact} (the description: \"{c.says}\")"
+                   + _instead(c.condition(), env))
+    return out
+
+
+def _instead(cond: Cond, env: EnvSpec) -> str:
+    """What the environment has instead of a violated one-atom fact (`; red_box (box_2) has
+    color=blue`); "" for compound facts."""
+    negated = isinstance(cond, Not)
+    p = cond.operand if isinstance(cond, Not) else cond
+    if not isinstance(p, Pred) or p.name == "exists":
+        return ""
+    oid = env.roles.get(p.args[0], p.args[0])
+    obj = next((o for o in env.objects if o.id == oid), None)
+    if obj is None:
+        return f"; {p.args[0]} is not in the environment" if not negated else ""
+    who = p.args[0] if oid == p.args[0] else f"{p.args[0]} ({oid})"
+    if p.name == "attr" and not negated:
+        got = obj.attributes.get(p.args[1])
+        return f"; {who} has " + (f"{p.args[1]}={got}" if got is not None else f"no {p.args[1]}")
+    if p.name == "state":
+        return f"; {who} is {'' if negated else 'not '}{p.args[1]}"
+    if p.name in ("on", "inside") and not negated:
+        return f"; {who} is " + (f"inside {obj.container}" if obj.container else f"on {obj.support}")
+    return ""
 
 
 def coverage_of_env(task: Task, env: EnvSpec, catalog: Catalog | None = None) -> Coverage:

@@ -40,6 +40,8 @@ class EnvSample(BaseModel):
     conditions: list[tuple[str, str]] = Field(default_factory=list)
     well_formed: bool = False
     problems: list[str] = Field(default_factory=list)
+    #: one message per explicit task constraint the environment violates (not a valid scenario)
+    violations: list[str] = Field(default_factory=list)
     physics: PhysicsSummary
     #: policy kind -> verdict status (`passed`, `precondition_violation`, ...)
     verdicts: dict[str, str] = Field(default_factory=dict)

@@ -7,6 +7,8 @@ values, policies passing) live in `logicenveval.benchmark_validation`.
 
 from __future__ import annotations
 
+import re
+from collections.abc import Mapping
 from typing import Annotated, Any, Union
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
@@ -14,7 +16,9 @@ from pydantic import BaseModel, ConfigDict, Field, field_validator, model_valida
 from logicenveval.model.conditions import (
     AGENT_PREDICATES,
     Cond,
+    Holds,
     atoms,
+    evaluate,
     parse,
     subject_roles,
 )
@@ -38,6 +42,34 @@ class Role(BaseModel):
     category: str = Field(min_length=1)
     attributes: dict[str, str] = Field(default_factory=dict)
     description: str | None = None
+    #: the description lets the object be absent ("may", "if there are any", "if available"):
+    #: an environment without it is well-formed and every predicate about it is false
+    optional: bool = False
+
+
+class Constraint(BaseModel):
+    """A fact the task description fixes in every situation, with the words that assert it.
+
+    `fact` is a condition on the initial state (`attr(red_box, color, red)`, `state(mark, dirty)`);
+    `says` quotes the description. A fact about an optional role binds only when the role is
+    present. An environment that violates a constraint is not a valid scenario."""
+
+    model_config = _Frozen
+    fact: str = Field(min_length=1)
+    says: str = Field(min_length=1)
+
+    @field_validator("fact")
+    @classmethod
+    def _fact_parses(cls, fact: str) -> str:
+        cond = parse(fact)
+        agent = [p.name for p in atoms(cond) if p.name in AGENT_PREDICATES]
+        if agent:
+            raise ValueError(f"predicate {agent[0]!r} speaks about the agent; constraints describe "
+                             "the initial environment only")
+        return fact
+
+    def condition(self) -> Cond:
+        return parse(self.fact)
 
 
 class Variable(BaseModel):
@@ -115,6 +147,8 @@ class Task(BaseModel):
     variables: dict[str, Variable]
     subtasks: list[Subtask] = Field(min_length=1)
     policies: dict[str, str] = Field(default_factory=dict)
+    #: facts the description fixes in every situation (docs/task-format.md, "Constraints")
+    constraints: list[Constraint] = Field(default_factory=list)
 
     @model_validator(mode="after")
     def _references(self) -> Task:
@@ -122,6 +156,12 @@ class Task(BaseModel):
         if len(set(ids)) != len(ids):
             raise ValueError(f"subtask ids must be unique, got {ids}")
         known = set(self.roles) | set(self.rooms) | set(ROOM_TYPES) | {"floor"}
+        said = _words(self.description)
+        for k, c in enumerate(self.constraints):
+            _check_args(c.condition(), known, f"constraints.{k}.fact")
+            if _words(c.says) not in said:
+                raise ValueError(f"constraints.{k}.says: {c.says!r} is not in the task description; "
+                                 "quote the words of the description that assert the fact")
         for name, var in self.variables.items():
             for value, text in var.values.items():
                 _check_args(parse(text), known, f"variables.{name}.values.{value}")
@@ -153,6 +193,22 @@ class Task(BaseModel):
     def brief(self) -> TaskBrief:
         return TaskBrief(id=self.id, description=self.description, rooms=self.rooms, roles=self.roles)
 
+    def violated(self, holds: Holds, roles: Mapping[str, str | None]) -> list[Constraint]:
+        """The constraints that do not hold in `holds`, given `role -> object id or None`.
+
+        A constraint naming a role that `roles` leaves unbound is not checked: for an optional
+        role the description asserts it only of an object that is there, and a required role
+        left unbound already makes the environment ill-formed (one message, not two)."""
+        absent = {r for r in self.roles if roles.get(r) is None}
+        out = []
+        for c in self.constraints:
+            cond = c.condition()
+            if any(a in absent for p in atoms(cond) for a in p.args):
+                continue
+            if not evaluate(cond, holds):
+                out.append(c)
+        return out
+
     def subtask(self, subtask_id: str) -> Subtask:
         for st in self.subtasks:
             if st.id == subtask_id:
@@ -167,6 +223,11 @@ class Task(BaseModel):
                 for text in self.variables[node.var].values.values():
                     roles |= subject_roles(parse(text))
         return roles & set(self.roles)
+
+
+def _words(text: str) -> str:
+    """`text` lower-cased with runs of non-letters as one space (quotes match despite punctuation)."""
+    return " " + " ".join(re.findall(r"[a-z0-9]+", text.lower())) + " "
 
 
 def _walk(tree: Node | Leaf, path: str) -> list[tuple[str, Node | Leaf]]:

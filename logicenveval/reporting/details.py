@@ -36,7 +36,8 @@ _MAX_TRACE_LINE = 4000
 _DIMENSIONS = ("floor_plan", "entity", "relation")
 #: the faulty kinds' short names in the index
 KIND_SHORT = {"counterfactual": "CF", "unreachable": "Unreach", "lackbranch": "LBranch"}
-_WHY_KEYS = frozenset({"generator", "task_id", "env_id", "well_formed", "problems", "verdicts", "physics"})
+_WHY_KEYS = frozenset({"generator", "task_id", "env_id", "well_formed", "problems", "violations",
+                       "verdicts", "physics"})
 
 
 def slug(name: str) -> str:
@@ -420,7 +421,7 @@ class EnvView:
         if not self.well_formed:
             bad.append("ill-formed")
         elif not self.valid:
-            bad.append("correct BT fails")
+            bad.append("violates a task constraint" if self.problems else "correct BT fails")
         bad += [f"{d} fails" for d, msgs in self.physics.items() if msgs]
         return ", ".join(bad) or "valid"
 
@@ -487,7 +488,8 @@ def env_view(assets: Assets, generator: str, task: str, sample: dict[str, Any],
             dims[d] = ["failed (no message recorded)"]
     extra = [f"{f.get('code')}: {f.get('message')}" for f in physics.get("extended_failures") or []
              if isinstance(f, dict)]
-    valid = bool(sample.get("well_formed")) and (sample.get("verdicts") or {}).get("correct") == "passed"
+    valid = (bool(sample.get("well_formed")) and not sample.get("violations")
+             and (sample.get("verdicts") or {}).get("correct") == "passed")
     claimed = sample.get("claimed_trajectory") or {}
     claim = " | ".join(f"{sub}: " + ", ".join(f"{k}={v}" for k, v in sorted(vals.items()))
                        for sub, vals in sorted(claimed.items()) if isinstance(vals, dict))
@@ -497,7 +499,8 @@ def env_view(assets: Assets, generator: str, task: str, sample: dict[str, Any],
         render=render_href(assets, generator, task, sample, detail),
         env_file=env_href(assets, generator, task, str(sample["env_id"])),
         well_formed=bool(sample.get("well_formed")), valid=valid,
-        problems=[str(p) for p in sample.get("problems") or []], physics=dims, extra=extra,
+        problems=[str(p) for p in [*(sample.get("problems") or []), *(sample.get("violations") or [])]],
+        physics=dims, extra=extra,
         covered_paths=[str(p) for p in sample.get("covered_paths") or []], claimed=claim,
         verdicts=verdicts, reasons_text=_reasons_text(sample, verdicts))
 

@@ -133,6 +133,9 @@ def rejection(sample: Mapping[str, Any]) -> tuple[str, str] | None:
     if not sample.get("well_formed", False):
         message = problems[0] if problems else "ill-formed (no problem recorded)"
         return f"ill-formed: {reason_key(message)}", message
+    violations = [str(v) for v in sample.get("violations") or []]
+    if violations:
+        return f"violates a task constraint: {reason_key(violations[0])}", violations[0]
     verdict = (sample.get("verdicts") or {}).get("correct")
     if verdict != "passed":
         return f"the correct BT ends {verdict or 'without a verdict'}", f"correct BT: {verdict}"

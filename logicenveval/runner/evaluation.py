@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 from logicenveval.domain.catalog import Catalog
 from logicenveval.domain.roles import prepare_env
-from logicenveval.metrics.evaluate import coverage
+from logicenveval.metrics.evaluate import constraint_problems, coverage
 from logicenveval.metrics.records import EnvSample, PhysicsSummary, VerdictTrace
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import Task
@@ -43,12 +43,14 @@ def evaluate_env(
     env: EnvSpec,
     policies: Mapping[str, Any],
     catalog: Catalog,
+    given: Mapping[str, str] | None = None,
 ) -> Evaluation:
     """Measure one environment; never raises for a bad environment (that is a finding).
 
     Categories are mapped to catalog keys and the roles the environment does not map are bound
     first (`domain.roles.prepare_env`), so environments made by other tools are judged by the
-    same trees, physics and policies; an ambiguous role makes it ill-formed. The sample records
+    same trees, physics and policies; an ambiguous role makes it ill-formed, a violated task
+    constraint an invalid scenario (`violations`). The sample records
     the written categories that were mapped and those that name nothing (kept as obstacles).
 
     Each policy runs twice: traced for the report's drill-down (so that `report` never simulates),
@@ -57,7 +59,7 @@ def evaluate_env(
     with one environment per task look slower than one with seven), and recording a trace adds
     ~40 % to these sub-millisecond episodes.
     """
-    prepared = prepare_env(env, task.roles, catalog)
+    prepared = prepare_env(env, task.roles, catalog, given)
     env, binding = prepared.env, prepared.binding
     report = check_env(env, catalog)
     failures = [
@@ -73,7 +75,9 @@ def evaluate_env(
         extended=report.extended.passed,
         extended_failures=[f.model_dump(mode="json") for f in report.extended.failures],
     )
-    cov = coverage(task, holds_initial(env, catalog), env.roles)
+    holds = holds_initial(env, catalog)
+    cov = coverage(task, holds, env.roles, binding)
+    violations = constraint_problems(task, env, holds)
     verdicts: dict[str, str] = {}
     sim_ms: dict[str, float] = {}
     sim_ticks: dict[str, int] = {}
@@ -95,7 +99,8 @@ def evaluate_env(
         trajectory=cov.trajectory,
         conditions=[tuple(c) for c in cov.conditions],
         well_formed=cov.well_formed and binding.well_formed,
-        problems=list(cov.problems) + binding.problems,
+        problems=binding.problems + list(cov.problems),
+        violations=violations,
         physics=physics,
         verdicts=verdicts,
         sim_ms=sim_ms,
@@ -113,7 +118,8 @@ def with_killed_mutants(done: Evaluation, task: Task, scorer: MutationScorer,
     Only valid environments (well-formed, correct BT passes) score mutants, and on the env as
     judged (roles bound), like the four policies."""
     sample = done.sample
-    if not (sample.well_formed and sample.verdicts.get("correct") == "passed"):
+    if not (sample.well_formed and not sample.violations
+            and sample.verdicts.get("correct") == "passed"):
         return sample
     start = time.perf_counter()
     killed = scorer.killed(done.env, task, catalog)

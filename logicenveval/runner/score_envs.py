@@ -28,6 +28,7 @@ from pydantic import BaseModel, ConfigDict, Field
 from logicenveval.atomic import atomic_write_text
 from logicenveval.benchmark import load_task, load_tasks, policy_path, task_ids
 from logicenveval.domain.catalog import load_catalog
+from logicenveval.domain.roles import parse_role_map
 from logicenveval.envfiles import env_to_json, load_env
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.base import Attempt, GenerationFailure
@@ -60,6 +61,8 @@ class EvaluateConfig(BaseModel):
     model: str = "external"
     seed: int = 0
     brief: str = "external"  # what the making tool was told is unknown to the harness
+    #: `--roles ROLE=ID,...`: roles bound first in every file of a task that has them
+    roles: str | None = None
 
     @property
     def generator_name(self) -> str:
@@ -82,6 +85,7 @@ class EvaluateConfig(BaseModel):
             "generators": [self.generator_name],
             "tasks": list(self.tasks),
             "tasks_dir": self.tasks_dir,
+            **({"roles": self.roles} if self.roles else {}),
         }
 
     def resolved_run_id(self) -> str:
@@ -104,6 +108,7 @@ class ScoreUnitSpec(BaseModel):
     folder: str
     tasks_dir: str | None
     run_dir: str
+    roles: str | None = None
 
 
 @dataclass(frozen=True)
@@ -183,7 +188,8 @@ def score_unit(spec: ScoreUnitSpec) -> UnitRecord:
                 raise ConfigError(f"env_id {env.env_id!r} is used by another file of this task",
                                   file=str(path), field="env_id", hint="give every environment its own env_id")
             seen.add(env.env_id.casefold())
-            done = evaluate_env(spec.generator, task, env, policies, catalog)
+            given = parse_role_map(spec.roles, task.roles, strict=False)
+            done = evaluate_env(spec.generator, task, env, policies, catalog, given)
             sample = with_killed_mutants(done, task, scorer, catalog)
         except LogicEnvEvalError as exc:
             failures.append(GenerationFailure(stage="load", message=str(exc), env_id=path.stem))
@@ -259,7 +265,8 @@ def _score(config: EvaluateConfig, ids: list[str], skipped: list[str], tasks: li
     store.remove_stale_temp_files()
     name = config.generator_name
     specs = [ScoreUnitSpec(generator=name, task_id=t, folder=str(Path(config.envs_dir) / t),
-                           tasks_dir=config.tasks_dir, run_dir=str(run_dir)) for t in ids]
+                           tasks_dir=config.tasks_dir, run_dir=str(run_dir), roles=config.roles)
+             for t in ids]
     records: dict[str, UnitRecord] = {}
     pending = []
     inputs = {t: scored_inputs(t, config.tasks_dir) for t in ids}

@@ -5,8 +5,9 @@ The chosen values of every decision path are encoded in z3 together with the phy
 supports are surfaces, containers are containers, no holder cycles, attribute values from the
 catalog's domains); soft constraints prefer natural defaults (furniture on the floor, small
 objects on a surface of their room or on the floor and not in containers, catalog default
-states). The result is re-checked with the GT trees, so the environment reaches exactly the
-requested leaves.
+states). The task's explicit constraints are hard (a constraint about an optional role only
+when that role exists). The result is re-checked with the GT trees and the constraints, so the
+environment reaches exactly the requested leaves.
 """
 
 from __future__ import annotations
@@ -124,6 +125,10 @@ class _Encoding:
                 for p in _atoms(var.condition(value)):
                     if p.name == "attr" and p.args[0] == role and p.args[1] == key:
                         out.append(p.args[2])
+        for c in self.task.constraints:
+            for p in _atoms(c.condition()):
+                if p.name == "attr" and p.args[0] == role and p.args[1] == key:
+                    out.append(p.args[2])
         return out
 
     def _flag(self, i: int, flag: str) -> z3.BoolRef:
@@ -240,17 +245,34 @@ def _situation_env(task: Task, trajectory: Trajectory, cat: Catalog) -> EnvSpec:
         f = enc.cond(cond)
         enc.opt.add(lit == (f if wanted else z3.Not(f)))
         labels.append((lit, subtask, var))
+    for k, c in enumerate(task.constraints):
+        lit = z3.Bool(f"constraint_{k}", enc.ctx)
+        cond = c.condition()
+        optional = sorted({a for p in _atoms(cond) for a in p.args
+                           if a in task.roles and task.roles[a].optional})
+        guard = z3.And(*[enc.exists[enc.index[r]] for r in optional]) if optional else None
+        f = enc.cond(cond)
+        enc.opt.add(lit == (f if guard is None else z3.Implies(guard, f)))
+        labels.append((lit, "constraint", c.fact))
     check = enc.opt.check(*[lit for lit, _, _ in labels])
     if check != z3.sat:
         core = enc.opt.unsat_core() if check == z3.unsat else []
         names = {str(c) for c in core}
-        blamed = [f"{st}/{var}" for lit, st, var in labels if str(lit) in names] or ["?"]
+        blamed = [f"{st} {var}" if st == "constraint" else f"{st}/{var}"
+                  for lit, st, var in labels if str(lit) in names] or ["?"]
         raise TrajectoryError(f"trajectory {trajectory.key} cannot be realised: the conditions of "
                               f"{', '.join(dict.fromkeys(blamed))} contradict each other or the "
                               "physical axioms", field="trajectory",
-                              hint="check the variables' conditions and the roles' categories")
+                              hint="check the variables' conditions, the constraints and the "
+                              "roles' categories")
     env = _to_env(task, trajectory, enc, enc.opt.model())
-    got = [o.path.key if o.path else None for o in evaluate_task(task, holds_initial(env, cat))]
+    holds = holds_initial(env, cat)
+    broken = task.violated(holds, env.roles)
+    if broken:
+        raise TrajectoryError(f"situation for {trajectory.key} violates constraint {broken[0].fact}",
+                              field="constraints", hint="a constraint uses a predicate the "
+                              "symbolic encoding cannot express; simplify it")
+    got = [o.path.key if o.path else None for o in evaluate_task(task, holds)]
     want = [p.key for p in trajectory.paths]
     if got != want:
         bad = [w for g, w in zip(got, want, strict=True) if g != w]

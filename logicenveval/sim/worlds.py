@@ -9,10 +9,12 @@ starts from that world and varies what the trajectory leaves free, one *deviatio
   room, each surface, and each container it fits in (catalog sizes) — openable ones both closed
   and open;
 - furniture in another room (its contents move with it);
-- every state flag of an object flipped.
+- every state flag of an object flipped;
+- an optional role's object left out (the description lets it be absent: "may", "if available"),
+  when nothing rests on or in it.
 
 A deviation is kept only when the GT trees still reach exactly the same leaves (so it changes
-nothing the situation pins) and the result obeys the physical axioms (holders are surfaces or
+nothing the situation pins), every explicit task constraint still holds, and the result obeys the physical axioms (holders are surfaces or
 containers, no holder cycles, contents share their holder's room). Deviations are then packed
 greedily into at most `limit` worlds, riskiest first (closed containers, other rooms, other
 supports, states), so a small bound still covers most of them.
@@ -44,6 +46,7 @@ class Deviation:
     states: tuple[tuple[str, str, bool], ...] = ()  # (object, flag, value)
     priority: int = 3
     label: str = ""
+    absent: bool = False  # the object is left out (an optional role)
 
 
 
@@ -79,7 +82,8 @@ def _variants(task: Task, trajectory: Trajectory, base: EnvSpec, cat: Catalog,
               budget: int) -> list[EnvSpec]:
     want = [p.key for p in trajectory.paths]
     start = _state_of(base)
-    single = [d for d in _deviations(base, cat) if _realises(task, base, _apply(start, d), want, cat)]
+    deviations = [*_absences(task, base), *_deviations(base, cat)]
+    single = [d for d in deviations if _realises(task, base, _apply(start, d), want, cat)]
     single.sort(key=lambda d: d.priority)
     out: list[EnvSpec] = []
     todo = single
@@ -107,6 +111,14 @@ def _variants(task: Task, trajectory: Trajectory, base: EnvSpec, cat: Catalog,
         out.append(_env_of(base, state, len(out) + 1))
         todo = left
     return out
+
+
+def _absences(task: Task, env: EnvSpec) -> list[Deviation]:
+    """Leave out each optional role's object (riskiest first: policies must cope with absence)."""
+    ids = {o.id for o in env.objects}
+    return [Deviation(oid, absent=True, priority=0, label=f"{role} absent")
+            for role, spec in task.roles.items()
+            if spec.optional and (oid := env.roles.get(role)) is not None and oid in ids]
 
 
 def _deviations(env: EnvSpec, cat: Catalog) -> list[Deviation]:
@@ -170,6 +182,7 @@ class _Obj:
     support: str | None
     container: str | None
     states: dict[str, bool]
+    present: bool = True
 
 
 def _state_of(env: EnvSpec) -> _State:
@@ -178,18 +191,24 @@ def _state_of(env: EnvSpec) -> _State:
 
 
 def _copy(state: _State) -> _State:
-    return {k: _Obj(v.room, v.support, v.container, dict(v.states)) for k, v in state.items()}
+    return {k: _Obj(v.room, v.support, v.container, dict(v.states), v.present)
+            for k, v in state.items()}
 
 
 def _apply(state: _State, d: Deviation) -> _State | None:
     """`state` with `d` applied, or None when it breaks an axiom (holder cycle, unknown object)."""
     new = _copy(state)
-    if d.obj not in new:
+    if d.obj not in new or not new[d.obj].present:
         return None
     o = new[d.obj]
+    if d.absent:
+        if any(s.present and d.obj in (s.support, s.container) for s in new.values()):
+            return None
+        o.present = False
+        return new
     holder = d.container or (d.support if d.support not in (None, "floor") else None)
     if holder is not None:
-        if holder not in new or _inside_of(new, holder, d.obj):
+        if holder not in new or not new[holder].present or _inside_of(new, holder, d.obj):
             return None
         o.support, o.container = (None, holder) if d.container else (holder, None)
         _move_room(new, d.obj, new[holder].room)
@@ -199,7 +218,7 @@ def _apply(state: _State, d: Deviation) -> _State | None:
     elif d.room is not None:
         _move_room(new, d.obj, d.room)
     for oid, flag, value in d.states:
-        if oid not in new:
+        if oid not in new or not new[oid].present:
             return None
         new[oid].states[flag] = value
     return new
@@ -229,10 +248,14 @@ def _env_of(base: EnvSpec, state: _State, k: int) -> EnvSpec:
     objects: list[EnvObject] = []
     for o in base.objects:
         s = state[o.id]
+        if not s.present:
+            continue
         objects.append(o.model_copy(update={
             "room": s.room, "support": s.support, "container": s.container, "states": dict(s.states),
         }))
-    return base.model_copy(update={"objects": objects, "env_id": f"{base.env_id}#w{k}"})
+    gone = {oid for oid, s in state.items() if not s.present}
+    roles = {r: (None if oid in gone else oid) for r, oid in base.roles.items()}
+    return base.model_copy(update={"objects": objects, "roles": roles, "env_id": f"{base.env_id}#w{k}"})
 
 
 def _realises(task: Task, base: EnvSpec, state: _State | None, want: list[str],
@@ -240,5 +263,8 @@ def _realises(task: Task, base: EnvSpec, state: _State | None, want: list[str],
     if state is None:
         return False
     env = _env_of(base, state, 0)
-    got = [o.path.key if o.path else None for o in evaluate_task(task, holds_initial(env, cat))]
+    holds = holds_initial(env, cat)
+    if task.violated(holds, env.roles):
+        return False
+    got = [o.path.key if o.path else None for o in evaluate_task(task, holds)]
     return got == want
