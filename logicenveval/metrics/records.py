@@ -104,6 +104,9 @@ class UnitRecord(BaseModel):
     attempts: list[Attempt] = Field(default_factory=list)
     #: a search of the generator that stopped at its budget, and what it used instead
     budget_hit: str | None = None
+    #: the limits (`logicenveval.limits`) that refused something in this unit, with the values in
+    #: force: the outcome depends on them, so a run under other values recomputes the unit
+    limits: dict[str, int] = Field(default_factory=dict)
 
     @property
     def measured(self) -> bool:
