@@ -7,7 +7,8 @@ import math
 import re
 from collections.abc import Callable
 
-from logicenveval.runner.config import MAX_SEED, MAX_UNIT_TIMEOUT
+from logicenveval.runner.config import MAX_SEED as MAX_SEED
+from logicenveval.runner.config import MAX_UNIT_TIMEOUT
 
 #: the largest `simulate --tick-limit` (the benchmark's trees finish in well under 100 ticks)
 MAX_TICKS = 100_000

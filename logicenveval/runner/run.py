@@ -49,9 +49,10 @@ def resolve_generators(config: RunConfig) -> list[GeneratorRef]:
         refs.append(_resolved(g, args.get(g), by_row, config.unit_timeout))
     unknown = sorted(set(args) - set(config.generators) - {r.name for r in refs})
     if unknown:
-        raise ConfigError(f"--generator-args names {unknown}, which is neither an item of "
-                          f"--generators {list(config.generators)} nor the row name of one "
-                          f"({[r.name for r in refs]})", field="--generator-args",
+        raise ConfigError(f"--generator-args names {unknown}, which is not in --generators "
+                          f"{list(config.generators)} nor the row name of one "
+                          f"({[r.name for r in refs]}); it would be ignored",
+                          field="--generator-args",
                           hint="write NAME:key=value,... with NAME as listed in --generators")
     for g, r in zip(config.generators, refs, strict=True):
         if g != r.name and g in args and r.name in args:

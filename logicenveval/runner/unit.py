@@ -343,11 +343,7 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     like an infrastructure one: not a result, never kept (`limited`)."""
     with pinned(spec.limits) as hit:
         record = _run_unit(spec)
-    return limited(record, {name: limit_value(spec, name) for name in sorted(hit)})
-
-
-def limit_value(spec: UnitSpec, name: str) -> int:
-    return spec.limits[name] if name in spec.limits else limit(name)
+    return limited(record, {n: spec.limits.get(n) or limit(n) for n in sorted(hit)})
 
 
 def limited(record: UnitRecord, values: dict[str, int]) -> UnitRecord:
@@ -356,9 +352,10 @@ def limited(record: UnitRecord, values: dict[str, int]) -> UnitRecord:
         return record
     update: dict[str, Any] = {"limits": values}
     if record.error is not None:
+        named = ", ".join(f"LOGICENVEVAL_{k.upper()}={v}" for k, v in values.items())
         update.update(error_kind="infrastructure", attempts=[],
-                      error=record.error + " [a limit of this machine, not the generator's result: "
-                      "the unit is recomputed by the next run]")
+                      error=f"refused under {named} (a limit of this run, not the generator's "
+                      f"result; the next run recomputes it): {record.error}")
     return record.model_copy(update=update)
 
 
