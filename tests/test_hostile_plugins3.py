@@ -310,6 +310,20 @@ def test_a_unit_a_limit_failed_is_an_environment_failure(tmp_path: Path,
     assert fine["error"] is None and fine["limits"] == {} and len(fine["samples"]) == 2
 
 
+def test_a_refusal_under_the_default_limits_stays_the_generators_failure() -> None:
+    """The documented contract (at most 2,000 environments): kept, but tied to the value."""
+    from logicenveval.metrics.records import UnitRecord
+    from logicenveval.runner.unit import limited
+
+    record = UnitRecord(generator="g", task_id=TASK, error="generate() returned 10001 environments",
+                        error_kind="generation")
+    kept = limited(record, {"max_unit_envs": 2000})
+    assert kept.error_kind == "generation" and kept.limits == {"max_unit_envs": 2000}
+    assert kept.error == record.error
+    assert limited(record, {"max_unit_envs": 3000}).error_kind == "infrastructure"
+    assert limited(record, {}) is record
+
+
 def _defaults() -> dict[str, int]:
     from logicenveval.limits import DEFAULTS
 

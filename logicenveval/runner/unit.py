@@ -41,7 +41,7 @@ from logicenveval.generators.base import (
 )
 from logicenveval.generators.brief import BriefMode, generator_brief
 from logicenveval.generators.plugins import ensure_importable
-from logicenveval.limits import limit, pinned, raise_hint
+from logicenveval.limits import DEFAULTS, limit, pinned, raise_hint
 from logicenveval.llm.base import ChatModel, ChatRequest
 from logicenveval.llm.fewshot import FewShotModel
 from logicenveval.metrics.records import EnvDetail, EnvSample, UnitRecord
@@ -347,12 +347,19 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
 
 
 def limited(record: UnitRecord, values: dict[str, int]) -> UnitRecord:
-    """`record` with the limits that refused something in it (`UnitRecord.limits`)."""
+    """`record` with the limits that refused something in it (`UnitRecord.limits`).
+
+    A unit failed as a whole under a limit this run's environment set away from its default
+    (`LOGICENVEVAL_MAX_*`) is an environment failure (`infrastructure`: not a result, recomputed
+    by the next run). Under the defaults the refusal is the documented contract of a generator
+    (docs/own-generator.md) and stays the generator's failure; either way a run under other
+    values recomputes the unit."""
     if not values:
         return record
     update: dict[str, Any] = {"limits": values}
-    if record.error is not None:
-        named = ", ".join(f"LOGICENVEVAL_{k.upper()}={v}" for k, v in values.items())
+    changed = {k: v for k, v in values.items() if v != DEFAULTS[k][0]}
+    if record.error is not None and changed:
+        named = ", ".join(f"LOGICENVEVAL_{k.upper()}={v}" for k, v in changed.items())
         update.update(error_kind="infrastructure", attempts=[],
                       error=f"refused under {named} (a limit of this run, not the generator's "
                       f"result; the next run recomputes it): {record.error}")
