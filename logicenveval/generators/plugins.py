@@ -41,6 +41,11 @@ from logicenveval.paths import check_name, name_problem, shown
 ENTRY_POINT_GROUP = "logicenveval.generators"
 
 
+class NotConstructed(ConfigError):
+    """The plug-in's factory raised when called with the arguments given (perhaps it needs others:
+    `--generator-args` keyed by its row name; runner.run)."""
+
+
 @dataclass(frozen=True)
 class GeneratorRef:
     spec: str  # as the user wrote it
@@ -145,7 +150,7 @@ def _made(spec: str, target: str, plugin: bool, args: dict[str, Any]) -> Any:
     except BaseException as exc:  # a plug-in's constructor (even sys.exit): bad input, with the cause
         given = ", ".join(f"{k}={v!r}" for k, v in args.items())
         file, line = plugin_frame(exc)
-        raise ConfigError(f"generator {spec!r} could not be constructed"
+        raise NotConstructed(f"generator {spec!r} could not be constructed"
                           + (f" with {given}" if given else "") + f": {said(exc)}",
                           file=file, line=line, field="--generators",
                           hint="its class or factory must be callable without arguments, or with "

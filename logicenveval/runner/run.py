@@ -17,7 +17,7 @@ from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, T
 from logicenveval.benchmark import load_tasks, policy_path, task_ids
 from logicenveval.benchmark_validation import situation_count
 from logicenveval.errors import ConfigError, RunFailedError
-from logicenveval.generators.plugins import GeneratorRef, resolve_generator
+from logicenveval.generators.plugins import GeneratorRef, NotConstructed, resolve_generator
 from logicenveval.limits import current as current_limits
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.model.task import POLICY_KINDS, Task
@@ -83,7 +83,7 @@ def _resolved(item: str, own: dict[str, Any] | None, by_row: dict[str, dict[str,
         return resolve_generator(item, own, timeout=timeout)
     try:
         ref = resolve_generator(item, {}, timeout=timeout)
-    except ConfigError as exc:
+    except NotConstructed as exc:
         for key in by_row:
             try:
                 ref = resolve_generator(item, by_row[key], timeout=timeout)
