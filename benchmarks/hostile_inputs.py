@@ -42,6 +42,10 @@ results.json with impossible values; 1e300 coordinates; 120 kB inputs echoed; `l
 a case fails on another exit code than documented, a traceback, a hang, an error line over
 4,000 characters, or a target changed. Last line:
 `io: cases=<int> failures=<int> worst_seconds=<float>`.
+Then round 3 (issue 37) — plug-in loading, `--generator-args`, numeric options, limits
+(`plugin_cases`): each case a fresh CLI process that must give its documented exit code and
+one line without a traceback within 60 s. Last line:
+`plugins3: cases=<int> failures=<int> worst_seconds=<float>`.
 """
 
 from __future__ import annotations
@@ -191,6 +195,7 @@ def main() -> None:
     llm_cases_round3()
     resources()
     io_cases()
+    plugin_cases()
 
 
 TESTS = Path(__file__).resolve().parents[1] / "tests"
@@ -525,6 +530,86 @@ def llm_cases_round3() -> None:
         if changed:
             print(f"inputs changed: {changed}")
     print(f"llm_round3: cases={len(cases)} failures={failures} worst_s={worst:.2f}")
+
+
+# ----- round 3 (issue 37): plug-in loading, --generator-args, numeric options, limits ---------
+
+#: module -> source of a plug-in that cannot be loaded (each refused with exit 2)
+BROKEN_PLUGINS = {
+    "syntax_error": "class G:\n    name = 'g'\n  def x(\n",
+    "raises_at_import": "raise RuntimeError('boom at import')\n",
+    "exits_0": "import sys\nsys.exit(0)\n",
+    "exits_3": "import sys\nsys.exit(3)\n",
+    "getattr_raises": "def __getattr__(name):\n    raise RuntimeError('no ' + name)\n",
+    "name_raises": "class G:\n    @property\n    def name(self):\n        raise ValueError('bad')\n"
+                   "    def generate(self, brief, ctx):\n        pass\n",
+    "missing_dependency": "import no_such_dependency_xyz\n",
+    "hangs": "import time\nclass G:\n    name = 'hangs'\n    def __init__(self):\n"
+             "        while True:\n            time.sleep(0.05)\n",
+}
+NAMED_PLUGIN = ("from logicenveval.generators.base import GenerationResult\n"
+                "class G:\n    def __init__(self, name='named', n=1):\n        self.name = name\n"
+                "    def generate(self, brief, ctx):\n        return GenerationResult(envs=[])\n")
+
+
+def plugin_cases() -> None:
+    """Issue 37 classes 4, 8, 9, 13, 16, 21: every case one line, its exit code, no traceback."""
+    task = "clean_living_room"
+    with tempfile.TemporaryDirectory() as tmp:
+        d = Path(tmp)
+        for name, source in BROKEN_PLUGINS.items():
+            (d / f"{name}.py").write_text(source)
+        (d / "named.py").write_text(NAMED_PLUGIN)
+
+        def run(gen: str, *extra: str) -> list[str]:
+            return ["run", "--generators", gen, "--tasks", task, "--executor", "inprocess",
+                    "--output", str(d / "out"), "--quiet", *extra]
+
+        #: name -> (argv, extra environment, expected exit code, words of the message)
+        cases: dict[str, tuple[list[str], dict[str, str], int, str]] = {
+            f"plug-in {m}": (run(f"{m}:G", "--unit-timeout", "2"), {}, 2,
+                             "not made within 2 s" if m == "hangs" else f"{m}.py:")
+            for m in BROKEN_PLUGINS}
+        cases |= {
+            "plug-in .relative:G": (run(".named:G"), {}, 2, "relative module"),
+            "generator-args name=": (run("named:G", "--generator-args", "named:G:name=x,n=1"), {}, 1,
+                                     "x: 0 of 1 unit(s) failed"),  # made: the row is `x`
+            "generator-args twice": (run("named:G", "--generator-args", "named:G:n=2",
+                                         "--generator-args", "named:n=3"), {}, 2, "row name"),
+            "generator-args typo": (run("named:G", "--generator-args", "nmaed:n=3"), {}, 2,
+                                    "not in --generators"),
+            "--unit-timeout 5e9": (run("named:G", "--unit-timeout", "5e9"), {}, 2, "a week"),
+            "--limit 10^7": (run("named:G", "--limit", "10000000"), {}, 2, "out of range"),
+            "--max-infra-failures 10^20": (run("named:G", "--max-infra-failures", "1" + "0" * 20),
+                                           {}, 2, "out of range"),
+            "simulate --tick-limit 10^9": (["simulate", "--task", task, "--policy", "correct",
+                                            "--tick-limit", "1000000000"], {}, 2, "out of range"),
+            "LOGICENVEVAL_MAX_WORKERS=abc": (run("named:G", "--workers", "2"),
+                                             {"LOGICENVEVAL_MAX_WORKERS": "abc"}, 2, "not an integer"),
+            "LOGICENVEVAL_MAX_ENV_OBJECT (typo)": (run("named:G"), {"LOGICENVEVAL_MAX_ENV_OBJECT": "9"},
+                                                   2, "names no limit"),
+        }
+        print(f"\n{'round 3 case':<36} {'seconds':>8} {'exit':>5}  message")
+        failures = 0
+        worst = 0.0
+        for name, (argv, env, expected, words) in cases.items():
+            start = time.perf_counter()
+            try:
+                proc = subprocess.run([sys.executable, "-m", "logicenveval", *argv], cwd=d,
+                                      capture_output=True, text=True, timeout=60,
+                                      env={**os.environ, **env})
+                code, err = proc.returncode, proc.stderr
+            except subprocess.TimeoutExpired:
+                code, err = -1, "hung (no answer within 60 s)"
+            seconds = time.perf_counter() - start
+            worst = max(worst, seconds)
+            lines = [line for line in err.splitlines() if line.strip()]
+            ok = code == expected and "Traceback" not in err and words in err and \
+                (expected != 2 or len(lines) == 1 or lines[0].startswith("usage:"))  # argparse's
+            failures += not ok
+            print(f"{name:<36} {seconds:>8.2f} {code:>5}  {'' if ok else 'FAILED '}"
+                  f"{(lines[-1] if lines else '')[:90]}")
+    print(f"plugins3: cases={len(cases)} failures={failures} worst_seconds={worst:.2f}")
 
 
 if __name__ == "__main__":

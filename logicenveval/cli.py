@@ -16,6 +16,7 @@ from typing import NoReturn
 
 from logicenveval.atomic import RESOURCE_ERRNOS
 from logicenveval.errors import ECHO_LIMITS, LogicEnvEvalError, clip
+from logicenveval.limits import current as current_limits
 from logicenveval.redact import redact
 
 #: command -> (module, one-line help)
@@ -62,6 +63,11 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    try:
+        current_limits()  # a malformed LOGICENVEVAL_MAX_* is one line before anything else
+    except LogicEnvEvalError as exc:
+        print(f"error: {redact(str(exc))}", file=sys.stderr)
+        return exc.exit_code
     parser = build_parser()
     args = parser.parse_args(list(argv) if argv is not None else None)
     if getattr(args, "debug", False):  # every exception with its traceback, for a debugger

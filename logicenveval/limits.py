@@ -3,15 +3,22 @@
 Task folders, BT XML, EnvSpecs and LLM replies may come from anyone (docs/security.md), so every
 size that drives time or memory has a bound with a clear error. Each limit has a default that is
 far above what the benchmark needs and can be raised with an environment variable
-`LOGICENVEVAL_<NAME>` (e.g. `LOGICENVEVAL_MAX_XML_BYTES=10000000`), read when the limit is used,
-so it also reaches worker processes.
+`LOGICENVEVAL_<NAME>` (e.g. `LOGICENVEVAL_MAX_XML_BYTES=10000000`).
+
+A run reads and checks every limit once, in the parent (`current`), and hands the values to its
+units, which work under them (`pinned`): a bad value is one error before any work, never a
+failure inside units, and every unit of a run sees the same values whatever its worker's
+environment. A refusal made under a limit (`raise_hint`) is noted, so a unit can tell that its
+outcome depends on a limit value rather than on the generator alone (runner.unit).
 """
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import stat
+from collections.abc import Iterator, Mapping
 from pathlib import Path
 from typing import Any, BinaryIO
 
@@ -39,24 +46,73 @@ DEFAULTS: dict[str, tuple[int, str]] = {
 }
 
 
+PREFIX = "LOGICENVEVAL_MAX_"
+#: the largest value a limit takes (beyond it a bound no longer bounds anything)
+MAX_VALUE = 10**15
+#: values a run handed to this process (`pinned`); empty: read the environment
+_PINNED: dict[str, int] = {}
+#: limits that refused something inside the current `pinned` scope
+_HIT: set[str] = set()
+
+
 def limit(name: str) -> int:
-    """The current value of a limit (environment override or default)."""
+    """The current value of a limit: the run's pinned value, else the environment's, else the
+    default."""
+    if name in _PINNED:
+        return _PINNED[name]
+    if name not in DEFAULTS:
+        raise KeyError(name)
+    return _from_environment(name)
+
+
+def _from_environment(name: str) -> int:
     default, _ = DEFAULTS[name]
     env = f"LOGICENVEVAL_{name.upper()}"
     raw = os.environ.get(env)
     if raw is None:
         return default
-    try:
-        value = int(raw)
-    except ValueError:
-        value = 0
-    if value < 1:
-        raise ConfigError(f"{env}={raw!r} is not a positive integer", field=env,
+    text = raw.strip()
+    value = int(text) if text.isdigit() and len(text) <= 16 else 0
+    if not 1 <= value <= MAX_VALUE:
+        raise ConfigError(f"{env}={raw[:40]!r} is not an integer between 1 and {MAX_VALUE}", field=env,
                           hint=f"set it to an integer >= 1 (default {default}) or unset it")
     return value
 
 
+def current() -> dict[str, int]:
+    """Every limit, checked: what a run reads once at its start and hands to its units.
+
+    A malformed value, or a `LOGICENVEVAL_MAX_*` variable that names no limit (a typo would
+    otherwise be ignored in silence), is a `ConfigError`."""
+    known = {f"LOGICENVEVAL_{n.upper()}" for n in DEFAULTS}
+    unknown = sorted(k for k in os.environ if k.startswith(PREFIX) and k not in known)
+    if unknown:
+        raise ConfigError(f"{unknown[0]} names no limit", field=unknown[0],
+                          hint="the limits are " + ", ".join(sorted(known)) + " (docs/security.md)")
+    return {name: limit(name) for name in DEFAULTS}
+
+
+@contextlib.contextmanager
+def pinned(values: Mapping[str, int]) -> Iterator[set[str]]:
+    """Work under the limits `values` (a run's `current()`; limits not named keep theirs), and
+    yield the set of the limits that refused something meanwhile (`raise_hint`)."""
+    saved, hit = dict(_PINNED), set(_HIT)
+    _PINNED.update(values)
+    _HIT.clear()
+    found: set[str] = set()
+    try:
+        yield found
+    finally:
+        found |= _HIT
+        _PINNED.clear()
+        _PINNED.update(saved)
+        _HIT.clear()
+        _HIT.update(hit | found)
+
+
 def raise_hint(name: str) -> str:
+    """The fix of a refusal made under the limit `name`; also notes that the limit was hit."""
+    _HIT.add(name)
     return f"raise the limit with LOGICENVEVAL_{name.upper()}=<n> if the input is genuine"
 
 

@@ -18,7 +18,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--model", default="offline", help="offline | oracle | openai:<model> | replay:<file>")
     p.add_argument("--model-args", default="", help="key=value,...")
     p.add_argument("--tasks-dir", default=None)
-    p.add_argument("--seed", type=options.int_range(0), default=0)
+    p.add_argument("--seed", type=options.int_range(0, options.MAX_SEED), default=0)
     p.add_argument("--layout-solver", default=DEFAULT_SOLVER, choices=SOLVERS,
                    help=f"layout backend (default {DEFAULT_SOLVER})")
     p.add_argument("--out", required=True,

@@ -7,27 +7,40 @@ import math
 import re
 from collections.abc import Callable
 
+from logicenveval.runner.config import MAX_SEED as MAX_SEED
+from logicenveval.runner.config import MAX_UNIT_TIMEOUT
 
-def int_range(low: int, high: int | None = None) -> Callable[[str], int]:
-    """An int option within [low, high]."""
+#: the largest `simulate --tick-limit` (the benchmark's trees finish in well under 100 ticks)
+MAX_TICKS = 100_000
+
+
+def int_range(low: int, high: int) -> Callable[[str], int]:
+    """An int option within [low, high] (every count option has an upper bound too)."""
 
     def parse(text: str) -> int:
+        if len(text.strip()) > 40:
+            raise argparse.ArgumentTypeError(f"{text[:40]!r}... is too long for an integer here")
         try:
             value = int(text)
         except ValueError:
             raise argparse.ArgumentTypeError(f"{text!r} is not an integer") from None
-        if value < low or (high is not None and value > high):
-            bound = f"between {low} and {high}" if high is not None else f">= {low}"
-            raise argparse.ArgumentTypeError(f"{value} is out of range: use an integer {bound}")
+        if value < low or value > high:
+            raise argparse.ArgumentTypeError(f"{value} is out of range: use an integer between "
+                                             f"{low} and {high}")
         return value
 
     return parse
 
 
 def workers(text: str) -> int:
+    from logicenveval.errors import ConfigError
     from logicenveval.limits import limit
 
-    return int_range(1, limit("max_workers"))(text)
+    try:
+        high = limit("max_workers")
+    except ConfigError as exc:  # argparse shows only these as one line
+        raise argparse.ArgumentTypeError(str(exc)) from None
+    return int_range(1, high)(text)
 
 
 def non_negative_float(text: str) -> float:
@@ -85,13 +98,12 @@ def seed_list(text: str) -> list[int]:
     return seeds
 
 
-#: the largest seed (numpy takes any integer; a longer one only makes folder names longer)
-MAX_SEED = 2**63 - 1
-
-
 def timeout(text: str) -> float | None:
-    """Seconds > 0, or 0 for no bound."""
+    """Seconds > 0 up to `MAX_UNIT_TIMEOUT`, or 0 for no bound."""
     value = non_negative_float(text)
+    if value > MAX_UNIT_TIMEOUT:
+        raise argparse.ArgumentTypeError(f"{text!r} is more than {MAX_UNIT_TIMEOUT:g} s (a week): use "
+                                         "a smaller bound, or 0 for none")
     return value or None
 
 

@@ -9,7 +9,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
 from logicenveval.commands import options
-from logicenveval.runner.config import DEFAULT_GENERATORS, DEFAULT_UNIT_TIMEOUT
+from logicenveval.runner.config import DEFAULT_GENERATORS, DEFAULT_UNIT_TIMEOUT, MAX_COUNT
 from logicenveval.scene.layout import DEFAULT_SOLVER, SOLVERS
 
 if TYPE_CHECKING:
@@ -30,7 +30,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                    "`python -m logicenveval generators list`, docs/own-generator.md)")
     p.add_argument("--tasks", default=(), type=options.task_list, help="all or comma-separated task ids")
     p.add_argument("--tasks-dir", default=None, help="folder of <task_id>/task.json (default: the benchmark)")
-    p.add_argument("--limit", type=options.int_range(1), default=None, help="only the first N tasks")
+    p.add_argument("--limit", type=options.int_range(1, MAX_COUNT), default=None, help="only the first N tasks")
     p.add_argument("--seed", type=options.int_range(0, options.MAX_SEED), default=0)
     p.add_argument("--seeds", default=None, type=options.seed_list,
                    help="comma-separated seeds: one run per seed, aggregated with intervals over "
@@ -42,7 +42,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--output", default="reports", help="parent folder of run folders")
     p.add_argument("--run-id", default=None, type=options.folder_name,
                    help="run folder name inside --output (default: derived from the config)")
-    p.add_argument("--max-infra-failures", type=options.int_range(0), default=5,
+    p.add_argument("--max-infra-failures", type=options.int_range(0, MAX_COUNT), default=5,
                    help="stop after N consecutive units failed for infrastructure reasons "
                    "(endpoint, cache, disk); 0 never stops (default 5)")
     cache = p.add_mutually_exclusive_group()

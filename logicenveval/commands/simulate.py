@@ -12,6 +12,7 @@ import argparse
 import json
 from typing import TYPE_CHECKING
 
+from logicenveval.commands import options
 from logicenveval.errors import ConfigError
 
 if TYPE_CHECKING:
@@ -32,7 +33,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="print the verdict as JSON")
     parser.add_argument("--show-tree", action="store_true",
                         help="also print the policy's tree (rendered with py_trees)")
-    parser.add_argument("--tick-limit", type=int, default=50, help="root ticks (default 50)")
+    parser.add_argument("--tick-limit", type=options.int_range(1, options.MAX_TICKS), default=50,
+                        help="root ticks (default 50)")
     parser.add_argument("--tasks-dir", default=None, help="tasks folder (default: the benchmark's)")
     parser.add_argument("--catalog", default=None, help="catalog.json (default: the benchmark's)")
 
@@ -74,8 +76,6 @@ def run(args: argparse.Namespace) -> int:
     from logicenveval.sim.simulator import simulate
     from logicenveval.sim.situations import situation_env
 
-    if args.tick_limit < 1:
-        raise ConfigError("--tick-limit must be at least 1", field="--tick-limit", hint="use 50")
     task = load_task(args.task, args.tasks_dir)
     catalog = load_catalog(args.catalog)
     if args.policy in POLICY_KINDS:

@@ -181,9 +181,10 @@ def registry_entry(name: str) -> str | Callable[..., Any] | None:
     return _REGISTRY.get(name)
 
 
-def make_generator(name: str, **options: Any) -> Generator:
+def make_generator(name: str, /, **options: Any) -> Generator:
     """Make a registered generator (old names via their alias), or import a `module:attr` target
-    (see generators.plugins)."""
+    (see generators.plugins). `name` is positional-only, so a factory may take a `name` keyword
+    argument of its own (`--generator-args MOD:ATTR:name=...`)."""
     name = canonical_name(name)
     entry = _REGISTRY.get(name)
     if entry is None and ":" in name:
@@ -197,31 +198,117 @@ def make_generator(name: str, **options: Any) -> Generator:
     return gen
 
 
+class Overdue(BaseException):
+    """Raised inside plug-in code when its time bound passes (`--unit-timeout`).
+
+    A BaseException, so a plug-in's own `except Exception` does not swallow it; the loading
+    boundary lets it through too."""
+
+
 def import_target(target: str) -> Callable[..., Any]:
-    """The object `module:attr` (attr may be dotted) names; a clear error when it cannot be imported."""
+    """The object `module:attr` (attr may be dotted) names: the one boundary where plug-in code
+    is imported (`run`, `generate`, workers and anything that fingerprints a plug-in use it).
+
+    Whatever the module does while being imported or looked up — a syntax error, raising,
+    `sys.exit`, a module `__getattr__` that raises — is one `ConfigError` (exit 2) naming the
+    module and the file and line where it happened; a relative form (`.mod:G`) is refused before
+    anything is imported. A real Ctrl-C still stops the caller."""
     module_name, _, attr = target.partition(":")
     if not module_name or not attr:
         raise ConfigError(f"generator {target!r} is not MODULE:ATTR", field="--generators",
                           hint="write it as package.module:ClassOrFactory")
-    try:
-        obj: Any = importlib.import_module(module_name)
-    except ImportError as exc:
-        raise ConfigError(f"cannot import module {module_name!r} of generator {target!r}: {exc}",
-                          field="--generators",
-                          hint="check the spelling, install the package, or run from the folder "
-                          "that holds the module (it is imported from the current Python path)"
-                          ) from None
+    if module_name.startswith("."):
+        raise ConfigError(f"generator {target!r} names a relative module", field="--generators",
+                          hint="write the module's absolute dotted path, as imported from the "
+                          "current folder (e.g. my_pkg.module:MyGenerator)")
+    if not all(part.isidentifier() for part in module_name.split(".")):
+        raise ConfigError(f"{module_name!r} of generator {target!r} is not a dotted module path",
+                          field="--generators", hint="write it as package.module:ClassOrFactory")
+    obj: Any = _import_module(module_name, target)
     for part in attr.split("."):
-        if not hasattr(obj, part):
+        try:
+            obj = getattr(obj, part)
+        except AttributeError:
             raise ConfigError(f"module {module_name!r} has no attribute {attr!r}",
                               field="--generators",
-                              hint=f"name a class or factory defined in {module_name}")
-        obj = getattr(obj, part)
+                              hint=f"name a class or factory defined in {module_name}") from None
+        except (KeyboardInterrupt, Overdue):
+            raise
+        except BaseException as exc:  # a module __getattr__ or a class property that raises
+            file, line = plugin_frame(exc)
+            raise ConfigError(f"looking up {attr!r} in module {module_name!r} raised {said(exc)}",
+                              file=file, line=line, field="--generators",
+                              hint="fix the plug-in at that line") from None
     if not callable(obj):
         raise ConfigError(f"generator {target!r} is not callable", field="--generators",
                           hint="point at a generator class or a factory function")
     factory: Callable[..., Any] = obj
     return factory
+
+
+def _import_module(module_name: str, target: str) -> Any:
+    try:
+        return importlib.import_module(module_name)
+    except (KeyboardInterrupt, Overdue):
+        raise
+    except SyntaxError as exc:  # also IndentationError, TabError
+        raise ConfigError(f"module {module_name!r} of generator {target!r} has a syntax error: "
+                          f"{exc.msg}", file=exc.filename, line=exc.lineno, field="--generators",
+                          hint="fix the syntax at that line") from None
+    except ModuleNotFoundError as exc:
+        if exc.name and (module_name + ".").startswith(exc.name + "."):  # it, or its package
+            raise ConfigError(f"cannot import module {module_name!r} of generator {target!r}: "
+                              f"{said(exc, False)}", field="--generators",
+                              hint="check the spelling, install the package, or run from the folder "
+                              "that holds the module (it is imported from the current Python path)"
+                              ) from None
+        file, line = plugin_frame(exc)
+        raise ConfigError(f"module {module_name!r} of generator {target!r} imports a missing "
+                          f"module: {said(exc, False)}", file=file, line=line, field="--generators",
+                          hint=f"install {exc.name!r} or fix the import at that line") from None
+    except SystemExit as exc:
+        file, line = plugin_frame(exc)
+        raise ConfigError(f"module {module_name!r} of generator {target!r} called "
+                          f"sys.exit({_short(exc.code)}) while being imported", file=file, line=line,
+                          field="--generators",
+                          hint="a plug-in module must not exit when imported; guard script code "
+                          "with `if __name__ == \"__main__\":`") from None
+    except BaseException as exc:
+        file, line = plugin_frame(exc)
+        raise ConfigError(f"importing module {module_name!r} of generator {target!r} raised "
+                          f"{said(exc)}", file=file, line=line, field="--generators",
+                          hint="fix the plug-in at that line; importing it must not fail") from None
+
+
+def plugin_frame(exc: BaseException) -> tuple[str | None, int | None]:
+    """File and line of the innermost frame of `exc` in real source (not the import machinery)."""
+    found: tuple[str | None, int | None] = (None, None)
+    tb = exc.__traceback__
+    while tb is not None:
+        name = tb.tb_frame.f_code.co_filename
+        if not name.startswith("<") and "importlib" not in Path(name).parts:
+            found = (name, tb.tb_lineno)
+        tb = tb.tb_next
+    return found
+
+
+def said(exc: BaseException, with_type: bool = True) -> str:
+    """`Type: message` of a plug-in's exception, short, even when its `__str__` raises."""
+    try:
+        text = str(exc)
+    except Exception:
+        text = "<unprintable>"
+    text = _short(text, quote=False)
+    return f"{type(exc).__name__}: {text}" if with_type else text
+
+
+def _short(value: object, quote: bool = True, n: int = 200) -> str:
+    try:
+        text = repr(value) if quote else str(value)
+    except Exception:
+        text = "<unprintable>"
+    text = " ".join(text.split())
+    return text if len(text) <= n else text[:n - 3] + "..."
 
 
 def _load_builtin() -> None:

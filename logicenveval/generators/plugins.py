@@ -12,27 +12,38 @@ point of the group `logicenveval.generators` published by an installed package, 
 
 from __future__ import annotations
 
+import contextlib
 import importlib
 import importlib.metadata
 import importlib.util
+import signal
 import sys
+import threading
 import unicodedata
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from logicenveval.errors import ConfigError
 from logicenveval.generators.base import (
+    Overdue,
     canonical_name,
     import_target,
     make_generator,
+    plugin_frame,
     register,
     registry_entry,
+    said,
 )
 from logicenveval.paths import check_name, name_problem, shown
 
 ENTRY_POINT_GROUP = "logicenveval.generators"
+
+
+class NotConstructed(ConfigError):
+    """The plug-in's factory raised when called with the arguments given (perhaps it needs others:
+    `--generator-args` keyed by its row name; runner.run)."""
 
 
 @dataclass(frozen=True)
@@ -79,9 +90,13 @@ def _portable(factory: Callable[..., Any]) -> str | None:
     return f"{module}:{qualname}"
 
 
-def resolve_generator(spec: str, args: dict[str, Any] | None = None) -> GeneratorRef:
+def resolve_generator(spec: str, args: dict[str, Any] | None = None, *,
+                      timeout: float | None = None) -> GeneratorRef:
     """Resolve one `--generators` item, made with `args` as its factory's keyword arguments;
-    unknown, unimportable or unmakeable -> `ConfigError` (exit 2)."""
+    unknown, unimportable or unmakeable -> `ConfigError` (exit 2).
+
+    The plug-in's import and constructor run here, in the caller, within `timeout` seconds
+    (`--unit-timeout`; in the main thread, where the alarm signal can be received)."""
     if len(spec) > 300 or any(unicodedata.category(c) in ("Cc", "Cs") for c in spec):
         raise ConfigError(f"generator {shown(spec)} holds a control character or is too long",
                           field="--generators",
@@ -105,33 +120,81 @@ def resolve_generator(spec: str, args: dict[str, Any] | None = None) -> Generato
             hint="use a built-in name (" + ", ".join(registered()) + "), an installed plug-in ("
             + (", ".join(sorted(eps)) or f"none installed in group {ENTRY_POINT_GROUP}")
             + "), or PKG.MODULE:ATTR (docs/own-generator.md)")
-    if entry is None:
-        import_target(target)  # the module error, before any unit runs
-    try:
-        gen = make_generator(target, **(args or {}))
-    except (ConfigError, KeyboardInterrupt):
-        raise
-    except BaseException as exc:  # a plug-in's constructor (even sys.exit): bad input, with the cause
-        given = ", ".join(f"{k}={v!r}" for k, v in (args or {}).items())
-        raise ConfigError(f"generator {spec!r} could not be constructed"
-                          + (f" with {given}" if given else "") + f": {type(exc).__name__}: "
-                          + str(exc)[:300], field="--generators",
-                          hint="its class or factory must be callable without arguments, or with "
-                          "the keyword arguments given by --generator-args") from None
-    name = getattr(gen, "name", None) if entry is None else spec
+    with _bounded(timeout, spec):
+        gen = _made(spec, target, entry is None, args or {})
+        name = _attribute(spec, gen, "name") if entry is None else spec
+        generate = _attribute(spec, gen, "generate")
     problem = name_problem(name)
     if problem is not None:
         raise ConfigError(f"generator {shown(spec)} has no usable `name` attribute: {shown(name)} "
                           f"{problem}", field="--generators",
                           hint="give the generator a `name` string (a plain folder name): it names "
                           "its leaderboard row and its units/ and envs/ folders")
-    if not callable(getattr(gen, "generate", None)):
+    if not callable(generate):
         raise ConfigError(f"generator {spec!r} has no generate(brief, ctx) method",
                           field="--generators", hint="implement the Generator protocol "
                           "(logicenveval.generators.base)")
     assert isinstance(name, str)
     return GeneratorRef(spec=spec, name=name, target=target,
                         portable=portable, search_path=_import_root(target), args=dict(args or {}))
+
+
+def _made(spec: str, target: str, plugin: bool, args: dict[str, Any]) -> Any:
+    """The generator, made once here so that a broken plug-in fails before any unit runs."""
+    if plugin:
+        import_target(target)  # the module error (file and line), before the constructor's
+    try:
+        return make_generator(target, **args)
+    except (ConfigError, KeyboardInterrupt, Overdue):
+        raise
+    except BaseException as exc:  # a plug-in's constructor (even sys.exit): bad input, with the cause
+        given = ", ".join(f"{k}={v!r}" for k, v in args.items())
+        file, line = plugin_frame(exc)
+        raise NotConstructed(f"generator {spec!r} could not be constructed"
+                          + (f" with {given}" if given else "") + f": {said(exc)}",
+                          file=file, line=line, field="--generators",
+                          hint="its class or factory must be callable without arguments, or with "
+                          "the keyword arguments given by --generator-args") from None
+
+
+def _attribute(spec: str, gen: Any, attr: str) -> Any:
+    """`gen.<attr>`, or a `ConfigError` naming the line when reading it raises (a property)."""
+    try:
+        return getattr(gen, attr, None)
+    except (KeyboardInterrupt, Overdue):
+        raise
+    except BaseException as exc:
+        file, line = plugin_frame(exc)
+        raise ConfigError(f"reading `{attr}` of generator {spec!r} raised {said(exc)}", file=file,
+                          line=line, field="--generators",
+                          hint=f"make `{attr}` a plain attribute that does not raise") from None
+
+
+@contextlib.contextmanager
+def _bounded(seconds: float | None, spec: str) -> Iterator[None]:
+    """Raise `ConfigError` when the block (a plug-in's import and constructor) takes more than
+    `seconds`; only the main thread can receive the alarm, elsewhere the block is unbounded."""
+    if not seconds or not hasattr(signal, "setitimer") or \
+            threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def fire(signum: int, frame: object) -> None:
+        raise Overdue()
+
+    old = signal.signal(signal.SIGALRM, fire)
+    signal.setitimer(signal.ITIMER_REAL, seconds, 1.0)  # again every second if swallowed
+    try:
+        yield
+    except Overdue:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        raise ConfigError(f"generator {spec!r} was not made within {seconds:g} s: its import or "
+                          "constructor does not return", field="--generators",
+                          hint="make the constructor return (do slow work in generate()), or "
+                          "raise --unit-timeout") from None
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
 
 
 def _import_root(target: str) -> str | None:

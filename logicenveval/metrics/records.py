@@ -111,6 +111,9 @@ class UnitRecord(BaseModel):
     #: fingerprints of what made the unit: harness, generator code, task files, catalog
     #: (`runner.fingerprint`); a resumed run recomputes the unit when one changed
     inputs: dict[str, str] = Field(default_factory=dict)
+    #: the limits (`logicenveval.limits`) that refused something in this unit, with the values in
+    #: force: the outcome depends on them, so a run under other values recomputes the unit
+    limits: dict[str, int] = Field(default_factory=dict)
 
     @property
     def measured(self) -> bool:

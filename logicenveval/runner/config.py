@@ -25,6 +25,14 @@ RUN_ID_PATTERN = r"^[A-Za-z0-9_][A-Za-z0-9._-]{0,127}$"
 DEFAULT_GENERATORS: tuple[str, ...] = ("logicenvgen", "logicenvgen-exact", "cot", "ifg", "holodeck")
 #: seconds one generator may take for one task (`--unit-timeout`); 0 or None: no bound
 DEFAULT_UNIT_TIMEOUT = 1800.0
+#: the largest `--unit-timeout` (a week): every timer and wait of the run stays far inside what
+#: the platform's clocks take (`threading.TIMEOUT_MAX`, `setitimer`) with the executor's budget
+MAX_UNIT_TIMEOUT = 7 * 24 * 3600.0
+#: the largest count option (`--limit`, `--max-infra-failures`): far above 25 tasks, bounded so a
+#: typo cannot make a number nothing downstream expects
+MAX_COUNT = 1_000_000
+#: the largest seed (numpy takes any integer; a longer one only makes folder names longer)
+MAX_SEED = 2**63 - 1
 #: a generator's factory arguments: JSON scalars
 ArgValue = str | int | float | bool
 
@@ -36,8 +44,8 @@ class RunConfig(BaseModel):
     generators: tuple[str, ...] = DEFAULT_GENERATORS
     tasks: tuple[str, ...] = ()  # empty = all tasks of tasks_dir
     tasks_dir: str | None = None
-    limit: int | None = Field(default=None, ge=1)
-    seed: int = Field(default=0, ge=0)
+    limit: int | None = Field(default=None, ge=1, le=MAX_COUNT)
+    seed: int = Field(default=0, ge=0, le=MAX_SEED)
     layout_solver: Solver = DEFAULT_SOLVER
     workers: int = Field(default=1, ge=1)
     executor: str = "process"
@@ -46,12 +54,13 @@ class RunConfig(BaseModel):
     no_cache: bool = False
     run_id: str | None = Field(default=None, pattern=RUN_ID_PATTERN)
     #: stop the run after this many consecutive units failed for infrastructure reasons (0: never)
-    max_infra_failures: int = Field(default=5, ge=0)
+    max_infra_failures: int = Field(default=5, ge=0, le=MAX_COUNT)
     #: what generators are given: as in the paper, the description (the default; with the oracle,
     #: whose replies name the task's roles, the roles), or the task's roles (our variant)
     brief: Literal["roles", "description"] = "description"
     #: wall-time bound of one generator on one task (runner.unit); None: unbounded
-    unit_timeout: float | None = Field(default=DEFAULT_UNIT_TIMEOUT, gt=0, allow_inf_nan=False)
+    unit_timeout: float | None = Field(default=DEFAULT_UNIT_TIMEOUT, gt=0, le=MAX_UNIT_TIMEOUT,
+                                       allow_inf_nan=False)
     #: `--generators` item (as written, or its row name) -> keyword arguments of its factory
     generator_args: dict[str, dict[str, ArgValue]] = Field(default_factory=dict)
     #: recompute every unit, even those whose fingerprints are unchanged (`--fresh`; not identity)

@@ -17,7 +17,8 @@ from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, T
 from logicenveval.benchmark import load_tasks, policy_path, task_ids
 from logicenveval.benchmark_validation import situation_count
 from logicenveval.errors import ConfigError, RunFailedError
-from logicenveval.generators.plugins import GeneratorRef, resolve_generator
+from logicenveval.generators.plugins import GeneratorRef, NotConstructed, resolve_generator
+from logicenveval.limits import current as current_limits
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.model.task import POLICY_KINDS, Task
 from logicenveval.runner.config import RunConfig, selected_tasks
@@ -54,18 +55,27 @@ def stale_text(stale: dict[str, int]) -> str:
 
 
 def resolve_generators(config: RunConfig) -> list[GeneratorRef]:
-    """Resolve every `--generators` item (built-in, plug-in, MODULE:ATTR) before any unit runs."""
-    refs = []
-    for g in config.generators:  # --generator-args keys: the item as written, or its row name
-        ref = resolve_generator(g, config.generator_args.get(g, {}))
-        if g not in config.generator_args and ref.name in config.generator_args:
-            ref = resolve_generator(g, config.generator_args[ref.name])
-        refs.append(ref)
-    unknown = sorted(set(config.generator_args) - set(config.generators) - {r.name for r in refs})
+    """Resolve every `--generators` item (built-in, plug-in, MODULE:ATTR) before any unit runs.
+
+    `--generator-args` of an item are keyed by the item as written or by its row name (the
+    generator's `name`); a key that is neither, or both keys for one item, is refused."""
+    args = config.generator_args
+    by_row = {k: a for k, a in args.items() if k not in config.generators}  # only row names
+    refs: list[GeneratorRef] = []
+    for g in config.generators:
+        refs.append(_resolved(g, args.get(g), by_row, config.unit_timeout))
+    unknown = sorted(set(args) - set(config.generators) - {r.name for r in refs})
     if unknown:
         raise ConfigError(f"--generator-args names {unknown}, which is not in --generators "
-                          f"{list(config.generators)}", field="--generator-args",
+                          f"{list(config.generators)} nor the row name of one "
+                          f"({[r.name for r in refs]}); it would be ignored",
+                          field="--generator-args",
                           hint="write NAME:key=value,... with NAME as listed in --generators")
+    for g, r in zip(config.generators, refs, strict=True):
+        if g != r.name and g in args and r.name in args:
+            raise ConfigError(f"--generator-args given for {g!r} and for its row name {r.name!r}",
+                              field="--generator-args",
+                              hint="give a generator's arguments once, under one of its names")
     names = [r.name for r in refs]
     if len(set(names)) != len(names):
         raise ConfigError(f"two generators share a name in {names}", field="--generators",
@@ -79,6 +89,29 @@ def resolve_generators(config: RunConfig) -> list[GeneratorRef]:
                 field="--generators",
                 hint="define it in a module and pass MODULE:ATTR, or use --executor inprocess")
     return refs
+
+
+def _resolved(item: str, own: dict[str, Any] | None, by_row: dict[str, dict[str, Any]],
+              timeout: float | None) -> GeneratorRef:
+    """One item, made with its own arguments or, when it has none, with the arguments keyed by
+    its row name (learnt by making it: without arguments, or with each row-keyed set in turn
+    when its factory needs some)."""
+    if own is not None:
+        return resolve_generator(item, own, timeout=timeout)
+    try:
+        ref = resolve_generator(item, {}, timeout=timeout)
+    except NotConstructed as exc:
+        for key in by_row:
+            try:
+                ref = resolve_generator(item, by_row[key], timeout=timeout)
+            except ConfigError:
+                continue
+            if ref.name == key:
+                return ref
+        raise exc from None
+    if ref.name in by_row:
+        return resolve_generator(item, by_row[ref.name], timeout=timeout)
+    return ref
 
 
 def _check(config: RunConfig) -> list[str]:
@@ -124,6 +157,7 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
     one server for the whole run, stopped when the run ends however it ends (llm.llamacpp)."""
     from logicenveval.llm.llamacpp import serving
 
+    limits = current_limits()  # once, before any work: every unit runs under these values
     refs = resolve_generators(config)  # the whole spec, before a server starts (minutes)
     ids = _check(config)
     tasks = load_tasks(config.tasks_dir, ids)
@@ -133,12 +167,13 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
         situation_count(task)
     with serving(config.model, config.model_args,
                  log_path=config.run_dir() / "llama-server.log") as model_args:
-        return _run(config, model_args, refs, ids, tasks, console=console,
+        return _run(config, model_args, refs, ids, tasks, limits, console=console,
                     show_progress=show_progress)
 
 
 def _run(config: RunConfig, model_args: str, refs: list[GeneratorRef], ids: list[str],
-         tasks: list[Task], *, console: Console | None, show_progress: bool) -> RunOutcome:
+         tasks: list[Task], limits: dict[str, int], *, console: Console | None,
+         show_progress: bool) -> RunOutcome:
     executor = make_executor("inprocess" if config.debug else config.executor, config.workers)
     warm_up = getattr(executor, "warm_up", None)
     if callable(warm_up):
@@ -150,7 +185,7 @@ def _run(config: RunConfig, model_args: str, refs: list[GeneratorRef], ids: list
     store.claim(config.identity())  # held until the run ends: one run per folder at a time
     try:
         return _run_units(config, refs, ids, tasks, run_dir, store, executor, console, show_progress,
-                          model_args)
+                          model_args, limits)
     finally:
         store.unlock()
 
@@ -174,14 +209,15 @@ def _crashed(chunk: tuple[UnitSpec, ...], why: str) -> list[UnitRecord]:
 
 def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], tasks: list[Task],
                run_dir: Path, store: RunStore, executor: Executor, console: Console | None,
-               show_progress: bool, model_args: str) -> RunOutcome:
+               show_progress: bool, model_args: str, limits: dict[str, int]) -> RunOutcome:
     store.remove_stale_temp_files()
     specs = [
         UnitSpec(generator=r.name, generator_target=r.target, generator_path=r.search_path, task_id=t,
                  tasks_dir=config.tasks_dir, model=config.model, model_args=model_args,
                  seed=config.seed, run_dir=str(run_dir), cache=config.cache,
                  no_cache=config.no_cache, layout_solver=config.layout_solver, brief=config.brief,
-                 generator_args=r.args, unit_timeout=config.unit_timeout, debug=config.debug)
+                 generator_args=r.args, unit_timeout=config.unit_timeout, debug=config.debug,
+                 limits=limits)
         for r in refs for t in ids
     ]
     code = {r.name: generator_fingerprint(r) for r in refs}
@@ -196,8 +232,10 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
     for spec in specs:
         key = (spec.generator, spec.task_id)
         stored = store.load(spec.generator, spec.task_id)
-        if stored is None or stored.error_kind == "infrastructure" or not store.files_intact(stored):
-            pending.append(spec)  # never computed, corrupt, edited, or failed for a reason outside it
+        if stored is None or stored.error_kind == "infrastructure" or not store.files_intact(stored) \
+                or any(limits.get(k) != v for k, v in stored.limits.items()):
+            pending.append(spec)  # never computed, corrupt, edited, failed for a reason outside
+            # it, or shaped by a limit whose value has changed since
             continue
         changed = ["fresh"] if config.fresh else changed_inputs(stored.inputs, inputs[key])
         if config.debug and (stored.error_kind == "internal" or stored.traceback is not None):

@@ -32,7 +32,8 @@ from logicenveval.domain.roles import parse_role_map
 from logicenveval.envfiles import env_to_json, load_env
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.base import Attempt, GenerationFailure
-from logicenveval.limits import limit
+from logicenveval.limits import current as current_limits
+from logicenveval.limits import limit, pinned
 from logicenveval.metrics.records import EnvDetail, UnitRecord
 from logicenveval.model.task import POLICY_KINDS, Task
 from logicenveval.paths import check_name, child, shown
@@ -41,6 +42,7 @@ from logicenveval.runner.executors import make_executor
 from logicenveval.runner.fingerprint import changed_inputs, scored_inputs, stale_reason
 from logicenveval.runner.results import build_results, write_outputs
 from logicenveval.runner.store import RunStore, text_digest
+from logicenveval.runner.unit import limited
 
 #: artefacts a run writes next to its environments; not EnvSpecs, so not scored
 ARTEFACTS = frozenset({"plan.json", "brief.json"})
@@ -109,6 +111,8 @@ class ScoreUnitSpec(BaseModel):
     tasks_dir: str | None
     run_dir: str
     roles: str | None = None
+    #: the run's limits, read once in the parent (`runner.unit.UnitSpec.limits`)
+    limits: dict[str, int] = Field(default_factory=dict)
 
 
 @dataclass(frozen=True)
@@ -159,6 +163,13 @@ def env_files(folder: Path) -> list[Path]:
 
 
 def score_unit(spec: ScoreUnitSpec) -> UnitRecord:
+    """Judge every EnvSpec of one task folder under the run's limits (`runner.unit.run_unit`)."""
+    with pinned(spec.limits) as hit:
+        record = _score_unit(spec)
+    return limited(record, {n: spec.limits.get(n) or limit(n) for n in sorted(hit)})
+
+
+def _score_unit(spec: ScoreUnitSpec) -> UnitRecord:
     """Judge every EnvSpec of one task folder; a bad file is a failure, never an exception."""
     from logicenveval.faults.score import scorer_for
     from logicenveval.physics.render import render_svg
@@ -264,8 +275,10 @@ def _score(config: EvaluateConfig, ids: list[str], skipped: list[str], tasks: li
            run_dir: Path, store: RunStore) -> EvaluateOutcome:
     store.remove_stale_temp_files()
     name = config.generator_name
+    limits = current_limits()
     specs = [ScoreUnitSpec(generator=name, task_id=t, folder=str(Path(config.envs_dir) / t),
-                           tasks_dir=config.tasks_dir, run_dir=str(run_dir), roles=config.roles)
+                           tasks_dir=config.tasks_dir, run_dir=str(run_dir), roles=config.roles,
+                           limits=limits)
              for t in ids]
     records: dict[str, UnitRecord] = {}
     pending = []
@@ -273,8 +286,10 @@ def _score(config: EvaluateConfig, ids: list[str], skipped: list[str], tasks: li
     stale: dict[str, int] = {}
     for spec in specs:
         stored = store.load(name, spec.task_id)
-        if stored is None or stored.error_kind == "infrastructure" or not store.files_intact(stored):
-            pending.append(spec)  # never scored, corrupt, its files changed, or its worker died
+        if stored is None or stored.error_kind == "infrastructure" or not store.files_intact(stored) \
+                or any(limits.get(k) != v for k, v in stored.limits.items()):
+            pending.append(spec)  # never scored, corrupt, its files changed, its worker died, or
+            # shaped by a limit whose value has changed since
             continue
         changed = changed_inputs(stored.inputs, inputs[spec.task_id])
         if changed:  # judged by other code or against another task or catalog: judged again

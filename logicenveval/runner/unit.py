@@ -34,13 +34,14 @@ from logicenveval.generators.base import (
     GenerationFailure,
     GenerationResult,
     Generator,
+    Overdue,
     counted_attempts,
     make_generator,
     unit_seed,
 )
 from logicenveval.generators.brief import BriefMode, generator_brief
 from logicenveval.generators.plugins import ensure_importable
-from logicenveval.limits import limit, raise_hint
+from logicenveval.limits import DEFAULTS, limit, pinned, raise_hint
 from logicenveval.llm.base import ChatModel, ChatRequest
 from logicenveval.llm.fewshot import FewShotModel
 from logicenveval.metrics.records import EnvDetail, EnvSample, UnitRecord
@@ -78,6 +79,9 @@ class UnitSpec(BaseModel):
     unit_timeout: float | None = None
     #: re-raise a generator's exception instead of recording it (`--debug`, in-process only)
     debug: bool = False
+    #: the run's limits, read and checked once in the parent (`limits.current`); empty: this
+    #: process's own environment
+    limits: dict[str, int] = Field(default_factory=dict)
 
 
 def _unique_ids(envs: list[EnvSpec]) -> list[EnvSpec]:
@@ -106,7 +110,7 @@ class GeneratorBroke(Exception):
         self.kind = kind
 
 
-class UnitTimeout(BaseException):
+class UnitTimeout(Overdue):
     """Raised inside the generator when its time bound passes.
 
     A BaseException, so a generator's own `except Exception` does not swallow it."""
@@ -159,8 +163,18 @@ def call_generator(generator: Generator, brief: TaskBrief, ctx: GenerationContex
     return check_result(result, task_id)
 
 
-def _late(timeout: float | None) -> str:
-    return (f"the generator did not return within {timeout:g} s (--unit-timeout; raise it if the "
+def make_bounded(target: str, args: dict[str, Any], timeout: float | None) -> Generator:
+    """Make the generator within `timeout` (a constructor that never returns fails the unit
+    like a `generate` that never returns)."""
+    try:
+        with _time_bound(timeout):
+            return make_generator(target, **args)
+    except UnitTimeout:
+        raise GeneratorBroke(_late(timeout, "the generator's constructor"), "generation") from None
+
+
+def _late(timeout: float | None, what: str = "the generator") -> str:
+    return (f"{what} did not return within {timeout:g} s (--unit-timeout; raise it if the "
             "generator is genuinely slow)")
 
 
@@ -325,7 +339,36 @@ def shared_catalog() -> tuple[Catalog, bool]:
 
 
 def run_unit(spec: UnitSpec) -> UnitRecord:
-    """Generate and evaluate; a failing generation is recorded, never raised."""
+    """Generate and evaluate under the run's limits; a failing generation is recorded, never
+    raised. A unit a limit refused something in records the values of those limits (a re-run
+    under other values recomputes it); one a limit failed as a whole is an environment failure,
+    like an infrastructure one: not a result, never kept (`limited`)."""
+    with pinned(spec.limits) as hit:
+        record = _run_unit(spec)
+    return limited(record, {n: spec.limits.get(n) or limit(n) for n in sorted(hit)})
+
+
+def limited(record: UnitRecord, values: dict[str, int]) -> UnitRecord:
+    """`record` with the limits that refused something in it (`UnitRecord.limits`).
+
+    A unit failed as a whole under a limit this run's environment set away from its default
+    (`LOGICENVEVAL_MAX_*`) is an environment failure (`infrastructure`: not a result, recomputed
+    by the next run). Under the defaults the refusal is the documented contract of a generator
+    (docs/own-generator.md) and stays the generator's failure; either way a run under other
+    values recomputes the unit."""
+    if not values:
+        return record
+    update: dict[str, Any] = {"limits": values}
+    changed = {k: v for k, v in values.items() if v != DEFAULTS[k][0]}
+    if record.error is not None and changed:
+        named = ", ".join(f"LOGICENVEVAL_{k.upper()}={v}" for k, v in changed.items())
+        update.update(error_kind="infrastructure", attempts=[],
+                      error=f"refused under {named} (a limit of this run, not the generator's "
+                      f"result; the next run recomputes it): {record.error}")
+    return record.model_copy(update=update)
+
+
+def _run_unit(spec: UnitSpec) -> UnitRecord:
     from logicenveval.faults.score import scorer_for
     from logicenveval.llm.registry import make_model, with_unit_budget
     from logicenveval.physics.render import render_svg
@@ -349,7 +392,7 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
             model = FewShotModel(watched)
         target = spec.generator_target or spec.generator
         ensure_importable(target, spec.generator_path)
-        generator = make_generator(target, **spec.generator_args)
+        generator = make_bounded(target, spec.generator_args, spec.unit_timeout)
         ctx = GenerationContext(
             model=model,
             catalog=catalog,
