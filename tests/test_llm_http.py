@@ -15,6 +15,7 @@ import pytest
 
 from logicenveval.errors import CacheMissError, ModelConnectionError, ModelReplyError
 from logicenveval.llm.ask import ask, bounds_of, reply_schema
+from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.registry import (
     UNBOUNDED_SECONDS,
     make_model,
@@ -328,3 +329,28 @@ def test_validity_counters_per_kind(server: tuple[str, Script], tmp_path: Path) 
         "questions": 2, "attempts": 3, "truncated": 0, "valid": 2, "valid_first": 1, "answered": 2}
     flat = model.stats.as_dict()
     assert flat["kind.decompose_task.valid_first"] == 1 and "by_kind" not in flat
+
+
+def test_the_request_timeout_scales_with_the_reply_bound(server: tuple[str, Script], tmp_path: Path) -> None:
+    """A reply bounded to many tokens may take longer than `timeout`: a reply that takes 0.6 s
+    arrives under timeout=0.3 s when its bound (100 tokens x 0.01 s) allows 1 s."""
+    url, script = server
+    model = _model(url, tmp_path, timeout=0.3, seconds_per_token=0.01, max_retries=0)
+    assert model.timeout_for({"max_tokens": 100}) == 1.0
+    assert model.timeout_for({"max_tokens": 10}) == 0.3 and model.timeout_for({}) == 0.3
+
+    script.steps = [("hang", 1.5)]  # the 1 s the bound allows, not the 0.3 s of `timeout`, ends it
+    with pytest.raises(ModelConnectionError, match="within 1s"):
+        model.complete(ChatRequest(kind="k", payload={}, messages=[{"role": "user", "content": "x"}],
+                                   schema=None, max_tokens=100))
+
+
+def test_no_retry_once_the_units_budget_is_spent(server: tuple[str, Script], tmp_path: Path) -> None:
+    """A request that times out at the end of the unit's budget is not retried (nor announced)."""
+    url, script = server
+    model = _model(url, tmp_path, timeout=5.0, unit_timeout=0.3, max_retries=3)
+    script.steps = [("hang", 0.6)]
+    with pytest.raises(ModelConnectionError, match="time budget ran out during a 'k' request"):
+        model.complete(ChatRequest(kind="k", payload={}, messages=[{"role": "user", "content": "x"}],
+                                   schema=None, max_tokens=10))
+    assert len(script.requests) == 1 and model.stats.retries == 0

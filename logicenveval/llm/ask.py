@@ -107,7 +107,16 @@ DEFAULT_MAX_TOKENS = 2500
 #: the offline model over all 25 tasks (`benchmarks/reply_bounds.py`, chars / 3.5) times 1.5,
 #: rounded up to 100, at least the protocol-1 bound; what a valid reply must hold fits, and a
 #: model looping inside a grammar still stops long before the end of its context
-MAX_TOKENS: dict[str, int] = dict(MAX_TOKENS_V1)
+#: (measured: cot_environments 38,935 chars on lamp_or_pillow_fetch, trajectories_direct 9,110,
+#: ifg_intents 3,889; every other kind fits its protocol-1 bound). A CoT reply of 16,700 tokens
+#: needs a context of at least that plus its prompt: `llamacpp:` takes `ctx=20480` (docs/llm.md)
+MAX_TOKENS: dict[str, int] = {**MAX_TOKENS_V1, "cot_environments": 16700, "trajectories_direct": 4000,
+                              "ifg_intents": 1700, "tree_step": 100}
+#: kinds whose top-level list has as many items as the request fixes (`maxItems`): the list's
+#: key and the tokens one item may take (largest measured item x 1.5, `benchmarks/reply_bounds.py`)
+PER_ITEM_TOKENS: dict[str, tuple[str, int]] = {"tree_leaves": ("leaves", 100)}
+#: tokens of a reply besides its items (braces, the key)
+ITEMS_OVERHEAD = 50
 #: a cut reply is re-asked with twice its bound, up to this many times the kind's bound and at
 #: most `MAX_TOKENS_CAP` tokens: never "shorter" (a re-ask for less lost 3 of 4 good factors)
 GROWTH_FACTOR = 2
@@ -119,10 +128,20 @@ REASK_TEMPERATURE_STEP = 0.3
 QUOTE_CHARS = 600
 
 
-def bounds_of(kind: str, protocol: int = PROTOCOL) -> int:
-    """The first attempt's reply bound of a request kind under `protocol`."""
-    table = MAX_TOKENS_V1 if protocol < 2 else MAX_TOKENS
-    return table.get(kind, DEFAULT_MAX_TOKENS)
+def bounds_of(kind: str, protocol: int = PROTOCOL, schema: dict[str, Any] | None = None) -> int:
+    """The first attempt's reply bound of a request kind under `protocol`; from protocol 2 on, a
+    kind whose list length the request fixes (`PER_ITEM_TOKENS`) gets its per-item size times
+    that length when more (a `tree_leaves` reply for 40 situations cannot fit in 1,000 tokens)."""
+    if protocol < 2:
+        return MAX_TOKENS_V1.get(kind, DEFAULT_MAX_TOKENS)
+    bound = MAX_TOKENS.get(kind, DEFAULT_MAX_TOKENS)
+    per_item = PER_ITEM_TOKENS.get(kind)
+    if per_item is not None and schema is not None:
+        key, tokens = per_item
+        count = ((schema.get("properties") or {}).get(key) or {}).get("maxItems")
+        if isinstance(count, int):
+            bound = max(bound, count * tokens + ITEMS_OVERHEAD)
+    return bound
 
 
 def grown_bound(bound: int, first: int) -> int:
@@ -180,7 +199,7 @@ def ask(
     schema = specialise(reply_schema(reply_model), vocabulary)
     first = render_messages(kind, payload, schema, protocol)
     messages = first
-    first_bound = max_tokens or bounds_of(kind, protocol)
+    first_bound = max_tokens or bounds_of(kind, protocol, schema)
     bound = first_bound
     context: dict[str, Any] = {CONTEXT_KEY: vocabulary or {}}
     if protocol >= 2:

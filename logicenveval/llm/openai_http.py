@@ -88,6 +88,7 @@ class OpenAIChatModel:
         max_tokens: int | None = None,
         seed: int = 0,
         unit_timeout: float = 1800.0,
+        seconds_per_token: float = 0.25,
         stats: ModelStats | None = None,
     ) -> None:
         if not model:
@@ -112,6 +113,10 @@ class OpenAIChatModel:
         connect_timeout = _number("connect_timeout", connect_timeout, low=0.001)
         #: total seconds of one request (connect + sending + the whole reply), not per read
         self.request_timeout = timeout
+        #: a request bounded to N reply tokens may take N x this many seconds when that is more
+        #: than `timeout` (a 2-core machine writes 4-17 tokens/s): the bound, not a fixed 60 s,
+        #: decides how long a long reply may take
+        self.seconds_per_token = _number("seconds_per_token", seconds_per_token, low=0)
         self.timeout = httpx.Timeout(timeout, connect=connect_timeout)
         self.max_retries = int(_number("max_retries", max_retries, low=0, integer=True))
         self.backoff_base = _number("backoff_base", backoff_base, low=0)
@@ -165,10 +170,17 @@ class OpenAIChatModel:
         wait = min(wait, self.backoff_max, max(0.0, self._unit_deadline - time.monotonic()))
         time.sleep(wait)
 
+    def timeout_for(self, body: dict[str, Any]) -> float:
+        """Total seconds one request may take: `timeout`, or its reply bound times
+        `seconds_per_token` when that is more."""
+        bound = body.get("max_tokens")
+        return max(self.request_timeout, (bound or 0) * self.seconds_per_token)
+
     def _post(self, url: str, body: dict[str, Any]) -> _Reply:
         """One POST whose total time is bounded (a trickling server cannot hold it) and whose
         reply size is bounded."""
-        deadline = min(time.monotonic() + self.request_timeout, self._unit_deadline)
+        allowed = self.timeout_for(body)
+        deadline = min(time.monotonic() + allowed, self._unit_deadline)
         cap = limit("max_reply_bytes")
 
         def remaining() -> float:
@@ -177,7 +189,7 @@ class OpenAIChatModel:
                 raise _Deadline
             return left
 
-        timeout = httpx.Timeout(min(self.timeout.read or 60.0, remaining()),
+        timeout = httpx.Timeout(min(max(self.timeout.read or 60.0, allowed), remaining()),
                                 connect=min(self.timeout.connect or 10.0, remaining()))
         with self._client.stream("POST", url, json=body, headers=self._headers(),
                                  timeout=timeout) as response:
@@ -210,7 +222,7 @@ class OpenAIChatModel:
                 try:
                     response = self._post(url, self._body(request))
                 except (httpx.TimeoutException, _Deadline):
-                    last = f"timed out: no complete reply within {self.request_timeout:g}s"
+                    last = f"timed out: no complete reply within {self.timeout_for(self._body(request)):g}s"
                 except httpx.TransportError as exc:
                     last = f"connection failed ({type(exc).__name__})"
                 else:
@@ -230,6 +242,11 @@ class OpenAIChatModel:
                         f"{shown} failed a {request.kind!r} request {attempt + 1} time(s); last: {last}",
                         hint="check that the server is up and base_url is right, or raise max_retries/timeout",
                     )
+                if time.monotonic() >= self._unit_deadline:  # no retry the budget cannot hold
+                    raise ModelConnectionError(
+                        f"the unit's time budget ran out during a {request.kind!r} request to "
+                        f"{shown}; last: {last}",
+                        hint="raise --model-args unit_timeout=<seconds>, or check the server")
                 self.stats.add(retries=1)
                 log.warning("retrying %s request to %s after %s", request.kind, self._shown_url, last)
                 self._sleep(attempt, response)
