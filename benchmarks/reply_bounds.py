@@ -19,7 +19,6 @@ import json
 import math
 import sys
 from collections.abc import Sequence
-from typing import Any
 
 from logicenveval.llm.ask import PER_ITEM_TOKENS
 from logicenveval.llm.base import ChatRequest

@@ -338,6 +338,10 @@ def test_the_request_timeout_scales_with_the_reply_bound(server: tuple[str, Scri
     model = _model(url, tmp_path, timeout=0.3, seconds_per_token=0.01, max_retries=0)
     assert model.timeout_for({"max_tokens": 100}) == 1.0
     assert model.timeout_for({"max_tokens": 10}) == 0.3 and model.timeout_for({}) == 0.3
+    default = make_model("openai:m", {"base_url": url}, no_cache=True)
+    assert default.timeout_for({"max_tokens": 16700}) == 16700 * 0.25 and default.timeout_for({}) == 60.0
+    fixed = make_model("openai:m", {"base_url": url, "timeout": 30}, no_cache=True)  # the user's bound
+    assert fixed.timeout_for({"max_tokens": 16700}) == 30
 
     script.steps = [("hang", 1.5)]  # the 1 s the bound allows, not the 0.3 s of `timeout`, ends it
     with pytest.raises(ModelConnectionError, match="within 1s"):
@@ -350,7 +354,12 @@ def test_no_retry_once_the_units_budget_is_spent(server: tuple[str, Script], tmp
     url, script = server
     model = _model(url, tmp_path, timeout=5.0, unit_timeout=0.3, max_retries=3)
     script.steps = [("hang", 0.6)]
-    with pytest.raises(ModelConnectionError, match="time budget ran out during a 'k' request"):
+    with pytest.raises(ModelConnectionError, match="time budget ran out during a 'k' request") as info:
         model.complete(ChatRequest(kind="k", payload={}, messages=[{"role": "user", "content": "x"}],
                                    schema=None, max_tokens=10))
     assert len(script.requests) == 1 and model.stats.retries == 0
+    # one label per cause: the budget's expiry is a generation failure, as when the alarm fires
+    from logicenveval.runner.unit import failure_kind
+
+    assert failure_kind(info.value) == "generation"
+    assert failure_kind(ModelConnectionError("endpoint down")) == "infrastructure"

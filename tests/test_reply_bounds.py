@@ -22,7 +22,13 @@ def test_bounds_hold_the_largest_replies_of_the_largest_task() -> None:
 
 def test_a_bound_grows_with_the_items_a_request_fixes() -> None:
     from logicenveval.generators.plan import leaves_reply
-    from logicenveval.llm.ask import ITEMS_OVERHEAD, MAX_TOKENS_V1, PER_ITEM_TOKENS, bounds_of, reply_schema
+    from logicenveval.llm.ask import (
+        ITEMS_OVERHEAD,
+        MAX_TOKENS_V1,
+        PER_ITEM_TOKENS,
+        bounds_of,
+        reply_schema,
+    )
 
     schema = reply_schema(leaves_reply(40))
     assert bounds_of("tree_leaves", 2, schema) == 40 * PER_ITEM_TOKENS["tree_leaves"][1] + ITEMS_OVERHEAD

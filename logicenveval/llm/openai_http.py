@@ -19,7 +19,7 @@ from typing import Any
 import httpx
 import numpy as np
 
-from logicenveval.errors import ConfigError, ModelConnectionError
+from logicenveval.errors import ConfigError, ModelConnectionError, UnitBudgetError
 from logicenveval.limits import limit, raise_hint
 from logicenveval.llm.base import TRUNCATION_MARK, ChatRequest, ModelStats
 from logicenveval.redact import redact, register_secret, strip_url_credentials
@@ -69,6 +69,13 @@ class _Reply:
         self.text = body.decode("utf-8", errors="replace")
 
 
+#: seconds of a request when no `timeout` is given (raised by the bound: `seconds_per_token`)
+DEFAULT_TIMEOUT = 60.0
+#: seconds per reply token a request may take when no `timeout` is given (4 tokens/s: a 1.5B
+#: model on a loaded 2-core machine)
+DEFAULT_SECONDS_PER_TOKEN = 0.25
+
+
 class OpenAIChatModel:
     """One model on one OpenAI-compatible server."""
 
@@ -78,7 +85,7 @@ class OpenAIChatModel:
         *,
         base_url: str = "https://api.openai.com/v1",
         api_key_env: str | None = None,
-        timeout: float = 60.0,
+        timeout: float | None = None,
         connect_timeout: float = 10.0,
         max_retries: int = 4,
         backoff_base: float = 1.0,
@@ -88,7 +95,7 @@ class OpenAIChatModel:
         max_tokens: int | None = None,
         seed: int = 0,
         unit_timeout: float = 1800.0,
-        seconds_per_token: float = 0.25,
+        seconds_per_token: float | None = None,
         stats: ModelStats | None = None,
     ) -> None:
         if not model:
@@ -109,14 +116,17 @@ class OpenAIChatModel:
                                   hint=f"export {api_key_env}=... or drop api_key_env for a local server")
             self._key = key
             register_secret(key)
-        timeout = _number("timeout", timeout, low=0.001)
+        given = timeout is not None
+        timeout = _number("timeout", DEFAULT_TIMEOUT if timeout is None else timeout, low=0.001)
         connect_timeout = _number("connect_timeout", connect_timeout, low=0.001)
         #: total seconds of one request (connect + sending + the whole reply), not per read
         self.request_timeout = timeout
         #: a request bounded to N reply tokens may take N x this many seconds when that is more
         #: than `timeout` (a 2-core machine writes 4-17 tokens/s): the bound, not a fixed 60 s,
-        #: decides how long a long reply may take
-        self.seconds_per_token = _number("seconds_per_token", seconds_per_token, low=0)
+        #: decides how long a long reply may take. A `timeout` the user gives stays a fixed bound
+        #: unless `seconds_per_token` is given too.
+        self.seconds_per_token = _number("seconds_per_token", seconds_per_token, low=0) \
+            if seconds_per_token is not None else (0.0 if given else DEFAULT_SECONDS_PER_TOKEN)
         self.timeout = httpx.Timeout(timeout, connect=connect_timeout)
         self.max_retries = int(_number("max_retries", max_retries, low=0, integer=True))
         self.backoff_base = _number("backoff_base", backoff_base, low=0)
@@ -213,7 +223,7 @@ class OpenAIChatModel:
             attempt = 0
             while True:
                 if time.monotonic() >= self._unit_deadline:
-                    raise ModelConnectionError(
+                    raise UnitBudgetError(
                         f"the unit's time budget ran out before a {request.kind!r} request to "
                         f"{shown}; last: {last}",
                         hint="raise --model-args unit_timeout=<seconds>, or check the server")
@@ -243,7 +253,7 @@ class OpenAIChatModel:
                         hint="check that the server is up and base_url is right, or raise max_retries/timeout",
                     )
                 if time.monotonic() >= self._unit_deadline:  # no retry the budget cannot hold
-                    raise ModelConnectionError(
+                    raise UnitBudgetError(
                         f"the unit's time budget ran out during a {request.kind!r} request to "
                         f"{shown}; last: {last}",
                         hint="raise --model-args unit_timeout=<seconds>, or check the server")
