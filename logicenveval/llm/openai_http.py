@@ -96,6 +96,7 @@ class OpenAIChatModel:
         seed: int = 0,
         unit_timeout: float = 1800.0,
         seconds_per_token: float | None = None,
+        grammar: str = "schema",
         stats: ModelStats | None = None,
     ) -> None:
         if not model:
@@ -137,6 +138,13 @@ class OpenAIChatModel:
         if self._schema_mode not in ("auto", "true", "false"):
             raise ConfigError(f"json_schema={json_schema!r}", field="--model-args json_schema",
                               hint="use auto, true or false")
+        if grammar not in ("schema", "compact"):
+            raise ConfigError(f"grammar={grammar!r}", field="--model-args grammar",
+                              hint="use schema (response_format) or compact (llama.cpp GBNF, no whitespace)")
+        #: `compact`: send llama.cpp a GBNF grammar without whitespace (`llm.grammar`) instead of
+        #: the JSON schema, whose grammar lets layout spend the reply's bound
+        self.grammar = grammar
+        self._grammars: dict[str, str | None] = {}
         self.max_tokens = None if max_tokens is None else int(
             _number("max_tokens", max_tokens, low=1, integer=True))
         self._rng = np.random.default_rng(int(_number("seed", seed, low=0, integer=True)))
@@ -165,12 +173,31 @@ class OpenAIChatModel:
         bound = self.max_tokens or request.max_tokens
         if bound:
             body["max_tokens"] = bound
-        if request.schema is not None and self._schema_mode != "false":
+        compact = self._compact(request.schema) if request.schema is not None else None
+        if compact is not None and self._schema_mode != "false":
+            body["grammar"] = compact
+        elif request.schema is not None and self._schema_mode != "false":
             body["response_format"] = {
                 "type": "json_schema",
                 "json_schema": {"name": request.kind, "schema": request.schema, "strict": False},
             }
         return body
+
+    def _compact(self, schema: dict[str, Any]) -> str | None:
+        """The compact GBNF of `schema` when `grammar=compact` (None: send the schema; also for
+        a schema the converter cannot write, e.g. an unsupported pattern)."""
+        if self.grammar != "compact":
+            return None
+        key = json.dumps(schema, sort_keys=True)
+        if key not in self._grammars:
+            from logicenveval.llm.grammar import to_gbnf
+
+            try:
+                self._grammars[key] = to_gbnf(schema)
+            except ConfigError as exc:
+                log.warning("sending the JSON schema instead of a compact grammar: %s", exc.message)
+                self._grammars[key] = None
+        return self._grammars[key]
 
     def _sleep(self, attempt: int, response: _Reply | None) -> None:
         wait = _retry_after(response) if response is not None else None  # type: ignore[arg-type]
@@ -236,6 +263,9 @@ class OpenAIChatModel:
                 except httpx.TransportError as exc:
                     last = f"connection failed ({type(exc).__name__})"
                 else:
+                    if response.status_code == 400 and self.grammar == "compact" and "grammar" in response.text:
+                        self.grammar = "schema"  # server without GBNF grammars: the JSON schema
+                        continue
                     if response.status_code == 400 and self._schema_mode == "auto" and "response_format" in response.text:
                         self._schema_mode = "false"  # server lacks JSON-schema output: plain JSON
                         continue
