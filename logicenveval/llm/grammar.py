@@ -245,10 +245,12 @@ def _gbnf_lit(text: str) -> str:
 
 
 def _gbnf_char(code: int) -> str:
+    """One character of a GBNF class: llama.cpp's parser knows the escapes of a backslash, a
+    quote, brackets and hex codes only, so `-` and `^` are written as hex codes."""
     ch = chr(code)
-    if ch in "]\\-^[":
+    if ch in "]\\[":
         return "\\" + ch
-    if code < 0x20 or code == 0x7F:
+    if code < 0x20 or code == 0x7F or ch in "-^":
         return f"\\x{code:02X}"
     return ch
 
