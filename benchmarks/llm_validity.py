@@ -30,11 +30,20 @@ def replay(pack: Path, output: Path, cache: Path | None = None) -> dict[str, Any
     shared by several run folders, e.g. the stability seed runs)."""
     config = json.loads((pack / "config.json").read_text(encoding="utf-8"))
     run_config = RunConfig(
-        model=f"replay:{cache or pack / 'llm_cache.sqlite'}", generators=tuple(config["generators"]),
+        model=f"replay:{cache or pack / 'llm_cache.sqlite'}", model_args=f"protocol={pack_protocol(config)}",
+        generators=tuple(config["generators"]),
         tasks=tuple(config["tasks"]), tasks_dir=config["tasks_dir"], limit=config["limit"],
         seed=config["seed"], layout_solver=config["layout_solver"], brief=config["brief"],
         output=str(output), workers=1)
     return run(run_config, show_progress=False).results
+
+
+def pack_protocol(config: dict[str, Any]) -> int:
+    """The request protocol a pack was recorded with (`llm.ask.PROTOCOL`): its `--model-args
+    protocol=N`, or 1 for a pack recorded before issue 39, whose config names none."""
+    from logicenveval.llm.registry import parse_model_args
+
+    return int(parse_model_args(config.get("model_args") or "").get("protocol", 1))
 
 
 def same_metrics(a: dict[str, Any], b: dict[str, Any]) -> bool:

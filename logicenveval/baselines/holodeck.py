@@ -69,7 +69,8 @@ class Holodeck:
         try:
             scene = ask(ctx.model, "holodeck_scene", payload, HolodeckSceneReply, seed=ctx.seed,
                         vocabulary=scene_vocabulary(brief.rooms, sorted(brief.roles), [
-                            *payload["categories"], *(r.category for r in brief.roles.values())]))
+                            *payload["categories"], *(r.category for r in brief.roles.values())],
+                            required_roles=sorted(brief.roles)))
             env, log = build_scene(brief, scene, ctx.catalog, ctx.rng, env_id=env_id, generator=self.name,
                                    grid=self.grid, max_nodes=self.max_nodes)
         except LogicEnvEvalError as exc:

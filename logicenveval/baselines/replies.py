@@ -11,9 +11,17 @@ from __future__ import annotations
 
 from typing import Literal
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, model_validator
 
-from logicenveval.llm.replies import ObjectDraft, PlacedObject, RelationDraft, RoomDraft
+from logicenveval.llm import meaning
+from logicenveval.llm.meaning import MeaningError
+from logicenveval.llm.replies import (
+    ObjectDraft,
+    PlacedObject,
+    RelationDraft,
+    RoomDraft,
+    bind_objects,
+)
 
 _F = ConfigDict(frozen=True, extra="ignore")
 
@@ -73,3 +81,14 @@ class HolodeckSceneReply(BaseModel):
     rooms: list[RoomDraft] = Field(min_length=1)
     objects: list[ObjectDraft] = Field(min_length=1)
     relations: list[RelationDraft] = Field(default_factory=list)
+
+    @model_validator(mode="after")
+    def _meaningful(self, info: ValidationInfo) -> HolodeckSceneReply:
+        """Roles bound by name and required (`llm.replies.bind_objects`), no room adjacent to
+        itself: a scene that leaves a role without an object cannot be evaluated."""
+        if meaning.enabled(info.context):
+            problem = meaning.adjacency_problem([(r.id, r.adjacent_to) for r in self.rooms])
+            if problem:
+                raise MeaningError(problem)
+        bound = bind_objects(list(self.objects), info)
+        return self if bound == list(self.objects) else self.model_copy(update={"objects": bound})

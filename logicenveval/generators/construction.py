@@ -20,6 +20,7 @@ from logicenveval.errors import EnvSpecError, TrajectoryError
 from logicenveval.generators.base import GenerationContext
 from logicenveval.generators.plan import PlanLog
 from logicenveval.llm.ask import ask
+from logicenveval.llm.meaning import present_roles
 from logicenveval.llm.replies import (
     FloorPlanReply,
     FloorPlanWire,
@@ -102,7 +103,8 @@ class EnvironmentBuilder:
         for attempt in range(self.max_refinements + 1 if self.reselect else 1):
             reply = ask(self.ctx.model, "select_objects", self._payload(
                 rooms=rooms, facts=facts, categories=categories, feedback=feedback), ObjectsReply,
-                seed=self.ctx.seed, vocabulary=self._vocabulary([r["id"] for r in rooms]))
+                seed=self.ctx.seed, vocabulary={**self._vocabulary([r["id"] for r in rooms]),
+                                                "required_roles": present_roles(sorted(self.brief.roles), facts)})
             objects = self._known_categories(reply.objects, log, env_id)
             sym = symbolic_env(self.brief, env_id, self.generator, rooms, objects)
             feedback = [f"the situation requires {f}, which does not hold" for f in

@@ -19,6 +19,7 @@ from logicenveval.atomic import atomic_write_text
 from logicenveval.errors import ConfigError, ModelReplyError, ModelTruncatedError
 from logicenveval.llm.base import ChatModel, ChatRequest, ModelStats, split_truncation
 from logicenveval.llm.jsonextract import JSONExtractionError, extract_json
+from logicenveval.llm.meaning import MEANING_KEY, meaningless
 from logicenveval.llm.vocab import CONTEXT_KEY, Vocabulary, specialise
 from logicenveval.redact import redact
 from logicenveval.validation import first_error
@@ -26,6 +27,15 @@ from logicenveval.validation import first_error
 T = TypeVar("T", bound=BaseModel)
 
 _SPLIT = "=== user ==="
+
+#: the request protocol `ask` speaks by default. 1: the protocol of the packs recorded before
+#: issue 39 (no reply-format line, `MAX_TOKENS_V1`, "shorter" re-ask of a cut reply, no meaning
+#: checks), kept so that those packs replay byte for byte (their cache keys are the request
+#: texts); 2: compact-JSON line in every prompt, bounds sized from measured content
+#: (`MAX_TOKENS`), a cut reply re-asked with a larger bound, meaning checks (`llm.meaning`).
+#: A model built with `--model-args protocol=N` (`registry.make_model`) carries `reply_protocol`.
+PROTOCOL = 2
+PROTOCOLS = (1, 2)
 
 
 @lru_cache(maxsize=1)
@@ -56,8 +66,10 @@ def _without_titles(node: Any) -> Any:
     return node
 
 
-def render_messages(kind: str, payload: dict[str, Any], schema: dict[str, Any]) -> list[dict[str, str]]:
-    """System + user messages of a request kind from `prompts/<kind>.j2`."""
+def render_messages(kind: str, payload: dict[str, Any], schema: dict[str, Any],
+                    protocol: int = PROTOCOL) -> list[dict[str, str]]:
+    """System + user messages of a request kind from `prompts/<kind>.j2`; from protocol 2 on the
+    system message ends with `_reply_format.j2` (compact JSON: layout must not spend the bound)."""
     try:
         template = _jinja().get_template(f"{kind}.j2")
     except TemplateNotFound:
@@ -66,6 +78,8 @@ def render_messages(kind: str, payload: dict[str, Any], schema: dict[str, Any]) 
                           hint="add the template or use an existing kind") from None
     text = template.render(payload=payload, schema=json.dumps(schema, separators=(",", ":")), json=json)
     system, _, user = text.partition(_SPLIT)
+    if protocol >= 2:
+        system = system.strip() + "\n" + _jinja().get_template("_reply_format.j2").render().strip()
     return [{"role": "system", "content": system.strip()}, {"role": "user", "content": user.strip()}]
 
 
@@ -80,15 +94,33 @@ def _save_raw(run_dir: Path | None, kind: str, model: str, replies: list[str]) -
     return str(path)
 
 
-#: reply-length bound (tokens) per request kind: generous for a valid reply, short enough that a
-#: model looping inside a grammar stops in seconds, not at the end of its context
-MAX_TOKENS: dict[str, int] = {
+
+#: reply-length bounds (tokens) of protocol 1, as the SmolLM2 pack was recorded with
+MAX_TOKENS_V1: dict[str, int] = {
     "name_objects": 600, "decompose_task": 800, "identify_factors": 1000, "tree_step": 48,
     "tree_leaves": 1000, "trajectories_direct": 2000, "floor_plan": 1000, "select_objects": 2000,
     "spatial_relations": 1000, "refine_relations": 1000, "place_objects": 3000,
     "holodeck_scene": 3000, "cot_environments": 4000, "ifg_intents": 1500, "ifg_environment": 3000,
 }
 DEFAULT_MAX_TOKENS = 2500
+#: reply-length bound (tokens) per request kind from protocol 2 on: the largest compact reply of
+#: the offline model over all 25 tasks (`benchmarks/reply_bounds.py`, chars / 3.5) times 1.5,
+#: rounded up to 100, at least the protocol-1 bound; what a valid reply must hold fits, and a
+#: model looping inside a grammar still stops long before the end of its context
+#: (measured: cot_environments 38,935 chars on lamp_or_pillow_fetch, trajectories_direct 9,110,
+#: ifg_intents 3,889; every other kind fits its protocol-1 bound). A CoT reply of 16,700 tokens
+#: needs a context of at least that plus its prompt: `llamacpp:` takes `ctx=20480` (docs/llm.md)
+MAX_TOKENS: dict[str, int] = {**MAX_TOKENS_V1, "cot_environments": 16700, "trajectories_direct": 4000,
+                              "ifg_intents": 1700, "tree_step": 100}
+#: kinds whose top-level list has as many items as the request fixes (`maxItems`): the list's
+#: key and the tokens one item may take (largest measured item x 1.5, `benchmarks/reply_bounds.py`)
+PER_ITEM_TOKENS: dict[str, tuple[str, int]] = {"tree_leaves": ("leaves", 100)}
+#: tokens of a reply besides its items (braces, the key)
+ITEMS_OVERHEAD = 50
+#: a cut reply is re-asked with twice its bound, up to this many times the kind's bound and at
+#: most `MAX_TOKENS_CAP` tokens: never "shorter" (a re-ask for less lost 3 of 4 good factors)
+GROWTH_FACTOR = 2
+MAX_TOKENS_CAP = 32768
 #: each re-ask raises the temperature by this much (and steps the seed): a deterministic model
 #: asked the same thing at temperature 0 repeats its invalid reply byte for byte
 REASK_TEMPERATURE_STEP = 0.3
@@ -96,10 +128,37 @@ REASK_TEMPERATURE_STEP = 0.3
 QUOTE_CHARS = 600
 
 
+def bounds_of(kind: str, protocol: int = PROTOCOL, schema: dict[str, Any] | None = None) -> int:
+    """The first attempt's reply bound of a request kind under `protocol`; from protocol 2 on, a
+    kind whose list length the request fixes (`PER_ITEM_TOKENS`) gets its per-item size times
+    that length when more (a `tree_leaves` reply for 40 situations cannot fit in 1,000 tokens)."""
+    if protocol < 2:
+        return MAX_TOKENS_V1.get(kind, DEFAULT_MAX_TOKENS)
+    bound = MAX_TOKENS.get(kind, DEFAULT_MAX_TOKENS)
+    per_item = PER_ITEM_TOKENS.get(kind)
+    if per_item is not None and schema is not None:
+        key, tokens = per_item
+        count = ((schema.get("properties") or {}).get(key) or {}).get("maxItems")
+        if isinstance(count, int):
+            bound = max(bound, count * tokens + ITEMS_OVERHEAD)
+    return bound
+
+
+def grown_bound(bound: int, first: int) -> int:
+    """The bound of the re-ask of a reply cut at `bound` (`first`: the kind's first bound)."""
+    return min(bound * GROWTH_FACTOR, first * GROWTH_FACTOR ** 2, MAX_TOKENS_CAP)
+
+
 def _reask_messages(messages: list[dict[str, str]], raw: str, problem: str,
-                    truncated: bool, max_tokens: int | None) -> list[dict[str, str]]:
+                    truncated: bool, max_tokens: int | None,
+                    protocol: int = PROTOCOL, grown: int | None = None) -> list[dict[str, str]]:
     """The first request plus one exchange about the last invalid reply (the prompt never grows
     with the number of attempts)."""
+    if truncated and protocol >= 2:
+        return [*messages, {"role": "user", "content":
+                f"Your previous reply was cut off at max_tokens={max_tokens} before its JSON was "
+                f"complete. You now have max_tokens={grown}: reply again with the complete JSON "
+                "value, every item included, written compactly (no indentation, no line breaks)."}]
     if truncated:
         return [*messages, {"role": "user", "content":
                 f"Your previous reply was cut off at max_tokens={max_tokens} before its JSON was "
@@ -130,15 +189,21 @@ def ask(
     patterns) and validated against it (`llm.vocab`). Invalid replies (no JSON, broken JSON,
     schema violations, a reply cut at `max_tokens`) are re-asked at most `max_reasks` times,
     each time with the validator's message and a higher temperature and another seed, so no
-    attempt repeats an identical request; then `ModelReplyError` (`ModelTruncatedError` when the
+    attempt repeats an identical request; from protocol 2 on (`PROTOCOL`) a cut reply is re-asked
+    with a larger bound (`grown_bound`) and meaning checks (`llm.meaning`) run as part of
+    validation; then `ModelReplyError` (`ModelTruncatedError` when the
     last reply was cut) names the kind, the model and the problem, and the raw replies are saved
     under `run_dir/llm_errors/`. Counts per kind go to the model's `stats`.
     """
+    protocol = int(getattr(model, "reply_protocol", PROTOCOL))
     schema = specialise(reply_schema(reply_model), vocabulary)
-    first = render_messages(kind, payload, schema)
+    first = render_messages(kind, payload, schema, protocol)
     messages = first
-    bound = max_tokens or MAX_TOKENS.get(kind, DEFAULT_MAX_TOKENS)
-    context = {CONTEXT_KEY: vocabulary or {}}
+    first_bound = max_tokens or bounds_of(kind, protocol, schema)
+    bound = first_bound
+    context: dict[str, Any] = {CONTEXT_KEY: vocabulary or {}}
+    if protocol >= 2:
+        context[MEANING_KEY] = True
     replies: list[str] = []
     problem = ""
     truncated = False
@@ -164,14 +229,22 @@ def ask(
         except ValidationError as exc:
             loc, msg = first_error(exc)
             problem = f"field '{loc}': {msg}"
+            if stats is not None and meaningless(exc):
+                stats.count(kind, meaningless=1)
         else:
             if stats is not None:
                 stats.count(kind, valid=1, valid_first=int(attempt == 0))
+                if protocol >= 2:
+                    stats.count(kind, answered=1)
             return reply
         if attempt < max_reasks:
             if stats is not None:
                 stats.add(reasks=1)
-            messages = _reask_messages(first, raw, problem, truncated, bound)
+            grown = grown_bound(bound, first_bound) if truncated and protocol >= 2 else bound
+            messages = _reask_messages(first, raw, problem, truncated, bound, protocol, grown)
+            bound = grown
+    if stats is not None and protocol >= 2:
+        stats.count(kind, answered=1)  # a question is answered once its attempts are spent
     saved = _save_raw(run_dir or getattr(model, "run_dir", None), kind, model.name, replies)
     error = ModelTruncatedError if truncated else ModelReplyError
     raise error(

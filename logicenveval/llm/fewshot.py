@@ -14,6 +14,7 @@ from pathlib import Path
 
 from jinja2 import Environment, PackageLoader
 
+from logicenveval.llm.ask import PROTOCOL
 from logicenveval.llm.base import ChatModel, ChatRequest, ModelStats
 
 
@@ -40,6 +41,8 @@ class FewShotModel:
         self.name = inner.name
         self.stats: ModelStats | None = getattr(inner, "stats", None)
         self.run_dir: Path | None = getattr(inner, "run_dir", None)
+        #: the request protocol of the wrapped model (`llm.ask.PROTOCOL`): a replay keeps its own
+        self.reply_protocol: int = getattr(inner, "reply_protocol", PROTOCOL)
 
     def complete(self, request: ChatRequest) -> str:
         return self.inner.complete(replace(request, messages=with_example(request.messages)))

@@ -389,6 +389,7 @@ def make_llamacpp(path: str, *, stats: ModelStats, **kwargs: Any) -> Any:
         base_url = acquire(settings).base_url
     rest.setdefault("timeout", _request_timeout(rest.get("unit_timeout")))
     rest.setdefault("concurrency", settings.parallel)
+    rest.setdefault("grammar", "compact")  # llama.cpp takes a GBNF without whitespace (llm.grammar)
     model = OpenAIChatModel(settings.model.stem, base_url=base_url, stats=stats, **rest)
     model.cache_name = cache_name(settings.model, digest)
     return model

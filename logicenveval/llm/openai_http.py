@@ -19,7 +19,7 @@ from typing import Any
 import httpx
 import numpy as np
 
-from logicenveval.errors import ConfigError, ModelConnectionError
+from logicenveval.errors import ConfigError, ModelConnectionError, UnitBudgetError
 from logicenveval.limits import limit, raise_hint
 from logicenveval.llm.base import TRUNCATION_MARK, ChatRequest, ModelStats
 from logicenveval.redact import redact, register_secret, strip_url_credentials
@@ -139,6 +139,13 @@ class _Reply:
         self.text = body.decode("utf-8", errors="replace")
 
 
+#: seconds of a request when no `timeout` is given (raised by the bound: `seconds_per_token`)
+DEFAULT_TIMEOUT = 60.0
+#: seconds per reply token a request may take when no `timeout` is given (4 tokens/s: a 1.5B
+#: model on a loaded 2-core machine)
+DEFAULT_SECONDS_PER_TOKEN = 0.25
+
+
 class OpenAIChatModel:
     """One model on one OpenAI-compatible server."""
 
@@ -148,7 +155,7 @@ class OpenAIChatModel:
         *,
         base_url: str = "https://api.openai.com/v1",
         api_key_env: str | None = None,
-        timeout: float = 60.0,
+        timeout: float | None = None,
         connect_timeout: float = 10.0,
         max_retries: int = 4,
         backoff_base: float = 1.0,
@@ -158,6 +165,8 @@ class OpenAIChatModel:
         max_tokens: int | None = None,
         seed: int = 0,
         unit_timeout: float = 1800.0,
+        seconds_per_token: float | None = None,
+        grammar: str = "schema",
         stats: ModelStats | None = None,
     ) -> None:
         if not model:
@@ -178,10 +187,17 @@ class OpenAIChatModel:
                                   hint=f"export {api_key_env}=... or drop api_key_env for a local server")
             self._key = key
             register_secret(key)
-        timeout = _number("timeout", timeout, low=0.001)
+        given = timeout is not None
+        timeout = _number("timeout", DEFAULT_TIMEOUT if timeout is None else timeout, low=0.001)
         connect_timeout = _number("connect_timeout", connect_timeout, low=0.001)
         #: total seconds of one request (connect + sending + the whole reply), not per read
         self.request_timeout = timeout
+        #: a request bounded to N reply tokens may take N x this many seconds when that is more
+        #: than `timeout` (a 2-core machine writes 4-17 tokens/s): the bound, not a fixed 60 s,
+        #: decides how long a long reply may take. A `timeout` the user gives stays a fixed bound
+        #: unless `seconds_per_token` is given too.
+        self.seconds_per_token = _number("seconds_per_token", seconds_per_token, low=0) \
+            if seconds_per_token is not None else (0.0 if given else DEFAULT_SECONDS_PER_TOKEN)
         self.timeout = httpx.Timeout(timeout, connect=connect_timeout)
         self.max_retries = int(_number("max_retries", max_retries, low=0, integer=True))
         self.backoff_base = _number("backoff_base", backoff_base, low=0)
@@ -192,6 +208,13 @@ class OpenAIChatModel:
         if self._schema_mode not in ("auto", "true", "false"):
             raise ConfigError(f"json_schema={json_schema!r}", field="--model-args json_schema",
                               hint="use auto, true or false")
+        if grammar not in ("schema", "compact"):
+            raise ConfigError(f"grammar={grammar!r}", field="--model-args grammar",
+                              hint="use schema (response_format) or compact (llama.cpp GBNF, no whitespace)")
+        #: `compact`: send llama.cpp a GBNF grammar without whitespace (`llm.grammar`) instead of
+        #: the JSON schema, whose grammar lets layout spend the reply's bound
+        self.grammar = grammar
+        self._grammars: dict[str, str | None] = {}
         self.max_tokens = None if max_tokens is None else int(
             _number("max_tokens", max_tokens, low=1, integer=True))
         self._rng = np.random.default_rng(int(_number("seed", seed, low=0, integer=True)))
@@ -220,12 +243,31 @@ class OpenAIChatModel:
         bound = self.max_tokens or request.max_tokens
         if bound:
             body["max_tokens"] = bound
-        if request.schema is not None and self._schema_mode != "false":
+        compact = self._compact(request.schema) if request.schema is not None else None
+        if compact is not None and self._schema_mode != "false":
+            body["grammar"] = compact
+        elif request.schema is not None and self._schema_mode != "false":
             body["response_format"] = {
                 "type": "json_schema",
                 "json_schema": {"name": request.kind, "schema": request.schema, "strict": False},
             }
         return body
+
+    def _compact(self, schema: dict[str, Any]) -> str | None:
+        """The compact GBNF of `schema` when `grammar=compact` (None: send the schema; also for
+        a schema the converter cannot write, e.g. an unsupported pattern)."""
+        if self.grammar != "compact":
+            return None
+        key = json.dumps(schema, sort_keys=True)
+        if key not in self._grammars:
+            from logicenveval.llm.grammar import to_gbnf
+
+            try:
+                self._grammars[key] = to_gbnf(schema)
+            except ConfigError as exc:
+                log.warning("sending the JSON schema instead of a compact grammar: %s", exc.message)
+                self._grammars[key] = None
+        return self._grammars[key]
 
     def _sleep(self, attempt: int, response: _Reply | None) -> None:
         wait = _retry_after(response) if response is not None else None  # type: ignore[arg-type]
@@ -235,10 +277,17 @@ class OpenAIChatModel:
         wait = min(wait, self.backoff_max, max(0.0, self._unit_deadline - time.monotonic()))
         time.sleep(wait)
 
+    def timeout_for(self, body: dict[str, Any]) -> float:
+        """Total seconds one request may take: `timeout`, or its reply bound times
+        `seconds_per_token` when that is more."""
+        bound = body.get("max_tokens")
+        return max(self.request_timeout, (bound or 0) * self.seconds_per_token)
+
     def _post(self, url: str, body: dict[str, Any]) -> _Reply:
         """One POST whose total time is bounded (a trickling server cannot hold it) and whose
         reply size is bounded."""
-        deadline = min(time.monotonic() + self.request_timeout, self._unit_deadline)
+        allowed = self.timeout_for(body)
+        deadline = min(time.monotonic() + allowed, self._unit_deadline)
         cap = limit("max_reply_bytes")
 
         def remaining() -> float:
@@ -247,7 +296,7 @@ class OpenAIChatModel:
                 raise _Deadline
             return left
 
-        timeout = httpx.Timeout(min(self.timeout.read or 60.0, remaining()),
+        timeout = httpx.Timeout(min(max(self.timeout.read or 60.0, allowed), remaining()),
                                 connect=min(self.timeout.connect or 10.0, remaining()))
         with self._client.stream("POST", url, json=body, headers=self._headers(),
                                  timeout=timeout) as response:
@@ -271,7 +320,7 @@ class OpenAIChatModel:
             attempt = 0
             while True:
                 if time.monotonic() >= self._unit_deadline:
-                    raise ModelConnectionError(
+                    raise UnitBudgetError(
                         f"the unit's time budget ran out before a {request.kind!r} request to "
                         f"{shown}; last: {last}",
                         hint="raise --model-args unit_timeout=<seconds>, or check the server")
@@ -280,10 +329,13 @@ class OpenAIChatModel:
                 try:
                     response = self._post(url, self._body(request))
                 except (httpx.TimeoutException, _Deadline):
-                    last = f"timed out: no complete reply within {self.request_timeout:g}s"
+                    last = f"timed out: no complete reply within {self.timeout_for(self._body(request)):g}s"
                 except httpx.TransportError as exc:
                     last = f"connection failed ({type(exc).__name__})"
                 else:
+                    if response.status_code == 400 and self.grammar == "compact" and "grammar" in response.text:
+                        self.grammar = "schema"  # server without GBNF grammars: the JSON schema
+                        continue
                     if response.status_code == 400 and self._schema_mode == "auto" and "response_format" in response.text:
                         self._schema_mode = "false"  # server lacks JSON-schema output: plain JSON
                         continue
@@ -300,6 +352,11 @@ class OpenAIChatModel:
                         f"{shown} failed a {request.kind!r} request {attempt + 1} time(s); last: {last}",
                         hint="check that the server is up and base_url is right, or raise max_retries/timeout",
                     )
+                if time.monotonic() >= self._unit_deadline:  # no retry the budget cannot hold
+                    raise UnitBudgetError(
+                        f"the unit's time budget ran out during a {request.kind!r} request to "
+                        f"{shown}; last: {last}",
+                        hint="raise --model-args unit_timeout=<seconds>, or check the server")
                 self.stats.add(retries=1)
                 log.warning("retrying %s request to %s after %s", request.kind, self._shown_url, last)
                 self._sleep(attempt, response)

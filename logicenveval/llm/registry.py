@@ -96,6 +96,19 @@ def _replay_target(cache: ReplyCache, wanted: Any) -> tuple[str, str]:
     return pairs[0]
 
 
+def _protocol(value: Any) -> int:
+    """The request protocol of `--model-args protocol=N` (`llm.ask.PROTOCOL` by default)."""
+    from logicenveval.llm.ask import PROTOCOL, PROTOCOLS
+
+    if value is None:
+        return PROTOCOL
+    if value not in PROTOCOLS:
+        raise ConfigError(f"protocol={value!r} is not a request protocol", field="--model-args protocol",
+                          hint=f"use one of {', '.join(map(str, PROTOCOLS))}; 1 replays packs recorded "
+                          "before issue 39 (docs/llm.md)")
+    return int(value)
+
+
 def make_model(
     spec: str,
     args: str | dict[str, Any] | None = None,
@@ -109,6 +122,7 @@ def make_model(
     from logicenveval.llm.cache import CachedModel, ReplayModel
 
     kwargs = parse_model_args(args)
+    protocol = _protocol(kwargs.pop("protocol", None))
     stats = ModelStats()
     provider, _, name = spec.partition(":")
     model: Any
@@ -150,5 +164,6 @@ def make_model(
                           "replay:<cache.sqlite> or noisy:<model>")
     model.run_dir = Path(run_dir) if run_dir else None
     model.stats = stats
+    model.reply_protocol = protocol
     chat_model: ChatModel = model
     return chat_model

@@ -8,10 +8,12 @@ from __future__ import annotations
 
 from typing import Annotated, Literal, Union
 
-from pydantic import BaseModel, ConfigDict, Field, model_validator
+from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, model_validator
 
+from logicenveval.llm import meaning
+from logicenveval.llm.meaning import MeaningError
 from logicenveval.llm.structured import Conjunction, Goal, LiteralDraft, to_text
-from logicenveval.llm.vocab import COUNT, Vocab
+from logicenveval.llm.vocab import CONTEXT_KEY, COUNT, Vocab
 from logicenveval.model.repeats import repeated
 
 _F = ConfigDict(frozen=True, extra="ignore")
@@ -142,19 +144,47 @@ class ObjectDraft(BaseModel):
     description: str = ""
 
 
+def bind_objects(objects: list[ObjectDraft], info: ValidationInfo) -> list[ObjectDraft]:
+    """Scene objects with every role bound, checked for meaning (validation context of `ask`
+    from protocol 2 on; otherwise returned as they are).
+
+    An object whose id is a role's name and that gives no `role` plays that role (Qwen2.5 named
+    one object per role after the role and left the optional field out); no object may rest on
+    or in itself; and every role the request requires (`required_roles` of the vocabulary)
+    must end up with an object, else the re-ask names the roles left without one."""
+    if not meaning.enabled(info.context):
+        return objects
+    vocabulary = (info.context or {}).get(CONTEXT_KEY) or {}
+    roles = vocabulary.get("roles")
+    roles = list(roles) if isinstance(roles, list) else []
+    taken = {o.role for o in objects if o.role}
+    bound = [o.model_copy(update={"role": o.id}) if o.role is None and o.id in roles and o.id not in taken
+             else o for o in objects]
+    problem = meaning.placement_problem([(o.id, o.placement) for o in bound])
+    if problem:
+        raise MeaningError(problem)
+    required = vocabulary.get("required_roles")
+    missing = meaning.unbound_roles([(o.id, o.role) for o in bound], list(required or []))
+    if missing:
+        raise MeaningError(f"role(s) {missing} have no object: add one object per role, with "
+                           "`role` set to the role's name (or the role's name as its id)")
+    return bound
+
+
 class ObjectsReply(BaseModel):
     model_config = _F
     objects: list[ObjectDraft] = Field(min_length=1, max_length=60)
 
     @model_validator(mode="after")
-    def _unique_ids(self) -> ObjectsReply:
+    def _unique_ids(self, info: ValidationInfo) -> ObjectsReply:
         """Two objects under one id cannot both be placed: refused here, so the model is asked
         again (a real small model named two objects `living_room`)."""
         ids = [o.id for o in self.objects]
         twice = repeated(ids)
         if twice:
             raise ValueError(f"object ids must be unique; repeated: {twice}")
-        return self
+        bound = bind_objects(list(self.objects), info)
+        return self if bound == list(self.objects) else self.model_copy(update={"objects": bound})
 
 
 class RelationDraft(BaseModel):
@@ -219,11 +249,15 @@ class FloorPlanWire(BaseModel):
     rooms: list[RoomWire] = Field(min_length=1, json_schema_extra={COUNT: "rooms"})
 
     @model_validator(mode="after")
-    def _distinct(self) -> FloorPlanWire:
+    def _distinct(self, info: ValidationInfo) -> FloorPlanWire:
         ids = [r.id for r in self.rooms]
         twice = repeated(ids)
         if twice:
             raise ValueError(f"room {twice[0]!r} is listed twice; list each room once")
+        if meaning.enabled(info.context):
+            problem = meaning.adjacency_problem([(r.id, r.adjacent_to) for r in self.rooms])
+            if problem:
+                raise MeaningError(problem)
         return self
 
     def draft(self) -> FloorPlanReply:
@@ -248,6 +282,17 @@ class DecomposeWire(BaseModel):
     model_config = _F
     subtasks: list[SubtaskWire] = Field(min_length=1, max_length=6)
 
+    @model_validator(mode="after")
+    def _meaningful(self, info: ValidationInfo) -> DecomposeWire:
+        """SmolLM2 wrote the schema's own description string as every subtask's description."""
+        if meaning.enabled(info.context):
+            texts = [f.description or "" for f in SubtaskWire.model_fields.values()]
+            problem = meaning.subtask_problem([(s.id, s.description) for s in self.subtasks],
+                                              [*texts, self.__doc__ or ""])
+            if problem:
+                raise MeaningError(problem)
+        return self
+
 
 class ResponseWire(BaseModel):
     model_config = _F
@@ -264,11 +309,17 @@ class FactorWire(BaseModel):
         min_length=2, max_length=5, description="mutually exclusive answers that cover every situation")
 
     @model_validator(mode="after")
-    def _distinct(self) -> FactorWire:
+    def _distinct(self, info: ValidationInfo) -> FactorWire:
         names = [r.response for r in self.responses]
         twice = repeated(names)
         if twice:
-            raise ValueError(f"factor {self.id!r} gives the response {twice[0]!r} twice")
+            fix = f"; rename one of the two {twice[0]!r} responses" if meaning.enabled(info.context) else ""
+            raise ValueError(f"factor {self.id!r} gives the response {twice[0]!r} twice{fix}")
+        if meaning.enabled(info.context):
+            problem = meaning.factor_problem(self.id, [
+                (r.response, [lit.model_dump() for lit in r.condition]) for r in self.responses])
+            if problem:
+                raise MeaningError(problem)
         return self
 
     def draft(self) -> FactorDraft:

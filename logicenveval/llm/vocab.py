@@ -117,13 +117,16 @@ PLACEMENT = Pattern(r"^(floor|wall|ceiling|(on|inside):[a-z0-9_]{1,40})$")
 
 
 def scene_vocabulary(rooms: Sequence[str], roles: Sequence[str], categories: Sequence[str],
-                     object_ids: Sequence[str] | None = None) -> dict[str, Words]:
+                     object_ids: Sequence[str] | None = None,
+                     required_roles: Sequence[str] | None = None) -> dict[str, Words]:
     """The words of a scene reply (floor plan, objects, relations): the task's rooms, room
     types, categories (the catalog's and the roles'), roles, relation types; object ids listed when the request names
-    them (relations over given objects), else any snake_case id."""
+    them (relations over given objects), else any snake_case id. `required_roles`: the roles
+    the reply must give an object (checked, not sent: `llm.replies.bind_objects`)."""
     from logicenveval.model.envspec import RELATION_TYPES
     from logicenveval.model.rooms import ROOM_TYPES
 
     return {"rooms": list(rooms), "door_targets": [*rooms, "exterior"], "room_types": list(ROOM_TYPES),
             "roles": list(roles), "categories": list(dict.fromkeys(categories)), "placements": PLACEMENT,
-            "relation_types": list(RELATION_TYPES), "object_ids": list(object_ids or []) or SNAKE}
+            "relation_types": list(RELATION_TYPES), "object_ids": list(object_ids or []) or SNAKE,
+            **({"required_roles": list(required_roles)} if required_roles is not None else {})}

@@ -149,9 +149,14 @@ def reply_validity(units: Sequence[UnitRecord]) -> dict[str, dict[str, float]]:
                     row = counts.setdefault(name, {})
                     row[counter] = row.get(counter, 0) + value
     for row in counts.values():
-        asked = row.get("questions", 0)
+        # a question whose request the unit's budget cut short was never answered: the shares
+        # count answered questions (runs recorded before the `answered` counter count all)
+        asked = row.get("answered", row.get("questions", 0))
         for counter in ("questions", "attempts", "valid_first", "valid", "truncated"):
             row[counter] = int(row.get(counter, 0))
+        for counter in ("answered", "meaningless"):
+            if counter in row:
+                row[counter] = int(row[counter])
         row["valid_first_share"] = round(row["valid_first"] / asked, 4) if asked else 0.0
         row["valid_share"] = round(row["valid"] / asked, 4) if asked else 0.0
     return dict(sorted(counts.items()))

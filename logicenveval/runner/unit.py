@@ -27,7 +27,12 @@ from logicenveval.atomic import atomic_write_text
 from logicenveval.benchmark import load_task, policy_path
 from logicenveval.domain.catalog import DEFAULT_CATALOG, Catalog, load_catalog, reload_catalogs
 from logicenveval.envfiles import env_from_dict, env_to_json
-from logicenveval.errors import CacheMissError, LogicEnvEvalError, ModelConnectionError
+from logicenveval.errors import (
+    CacheMissError,
+    LogicEnvEvalError,
+    ModelConnectionError,
+    UnitBudgetError,
+)
 from logicenveval.generators.base import (
     Attempt,
     GenerationContext,
@@ -553,7 +558,10 @@ class _Watched:
 
 def failure_kind(exc: BaseException) -> Literal["infrastructure", "generation", "internal"]:
     """Infrastructure failures (endpoint, cache, disk) are not the generator's result: the next
-    run recomputes them instead of reusing them."""
+    run recomputes them instead of reusing them. A unit budget that ran out inside a model
+    request is the generator's (`UnitBudgetError`), as when the runner's alarm fires first."""
+    if isinstance(exc, UnitBudgetError):
+        return "generation"
     if isinstance(exc, ModelConnectionError | CacheMissError | OSError | sqlite3.Error | MemoryError):
         return "infrastructure"
     return "generation" if isinstance(exc, LogicEnvEvalError) else "internal"

@@ -1,0 +1,199 @@
+"""Meaning checks of replies (issue 39): recorded replies that satisfy their schema but say nothing
+usable are re-asked with a finding naming the element to change, and counted apart."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from typing import Any
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from pydantic import ValidationError
+
+from logicenveval.errors import ModelReplyError
+from logicenveval.llm.ask import ask
+from logicenveval.llm.base import ChatRequest, ModelStats
+from logicenveval.llm.meaning import MEANING_KEY, factor_problem, present_roles
+from logicenveval.llm.replies import DecomposeWire, FactorsWire, FloorPlanWire, ObjectsReply
+from logicenveval.llm.vocab import CONTEXT_KEY, scene_vocabulary
+
+# SmolLM2-135M's replies, as recorded in reports/real/SmolLM2-135M-Instruct.Q4_1/llm_cache.sqlite
+SMOL_FACTOR = ('{"factors":[{"id":"toy_on_floor", "question":"Is there a toy on the floor?","responses":[{"response":'
+               '"yes", "condition":[{"predicate":"state","object":"toy","flag":"toggled_on","negated":false},'
+               '{"predicate":"state","object":"toy","flag":"toggled_on","negated":false}]},{"response":"no", '
+               '"condition":[{"predicate":"state","object":"toy","flag":"toggled_on","negated":false}]}]}\n\n]}')
+SMOL_NOT_EXHAUSTIVE = (
+    '{"factors":[{"id":"kitchen_dish_cleanup","question":"Is the glass on the shelf?","responses":[{"response":"yes",'
+    '"condition":[{"predicate":"state","object":"plate","flag":"open","negated":true},{"predicate":"state","object":'
+    '"plate","flag":"toggled_on","negated":true},{"predicate":"state","object":"plate","flag":"dirty","negated":true}]},'
+    '{"response":"no","condition":[{"predicate":"state","object":"plate","flag":"open","negated":false},{"predicate":'
+    '"state","object":"plate","flag":"dirty","negated":true},{"predicate":"state","object":"plate","flag":"toggled_on",'
+    '"negated":true}]}]}]\n\n}')
+SMOL_DECOMPOSE = json.dumps({"subtasks": [
+    {"id": "tidy_toy", "description": "Mutually independent subtasks (no execution-order dependencies).",
+     "roles": ["book", "mark", "mop"]},
+    {"id": "sofa", "description": "Mutually independent subtasks (no execution-order dependencies).",
+     "roles": ["sofa", "table"]}]})
+GOOD_FACTOR = {"factors": [{"id": "toy_on_floor", "question": "Is there a toy on the floor?", "responses": [
+    {"response": "yes", "condition": [{"predicate": "on", "object": "toy", "support": "floor", "negated": False}]},
+    {"response": "no", "condition": [{"predicate": "on", "object": "toy", "support": "floor", "negated": True}]}]}]}
+GOOD_DECOMPOSE = {"subtasks": [{"id": "tidy_toy", "description": "Put the toy in its box.", "roles": ["toy"]}]}
+ROLES = {"toy": "toy", "red_box": "toy_box", "white_box": "toy_box", "book": "book", "sofa": "sofa",
+         "table": "coffee_table", "wet_wipe": "wet_wipe", "mop": "mop", "mark": "floor_stain"}
+BRIEF = {"task": {"id": "clean_living_room", "description": "Tidy the living room.", "rooms": ["living_room"],
+                  "roles": {r: {"category": c, "attributes": {}} for r, c in ROLES.items()}}}
+ON = {MEANING_KEY: True}
+
+
+@dataclass
+class Scripted:
+    """A stand-in ChatModel answering with recorded replies, one per request, and keeping them."""
+
+    replies: list[str]
+    name: str = "scripted"
+    reply_protocol: int = 2
+    stats: ModelStats = field(default_factory=ModelStats)
+    run_dir: Any = None
+    requests: list[ChatRequest] = field(default_factory=list)
+
+    def complete(self, request: ChatRequest) -> str:
+        self.requests.append(request)
+        return self.replies[len(self.requests) - 1]
+
+
+def _finding(request: ChatRequest) -> str:
+    return request.messages[-1]["content"]
+
+
+def test_identical_responses_are_re_asked_naming_the_factor_and_responses() -> None:
+    model = Scripted([SMOL_FACTOR, json.dumps(GOOD_FACTOR)])
+    reply = ask(model, "identify_factors", {**BRIEF, "subtask": {"id": "tidy_toy", "description": "d",
+                                                                  "roles": ["toy"]}, "feedback": []}, FactorsWire)
+    assert [f.id for f in reply.factors] == ["toy_on_floor"]
+    finding = _finding(model.requests[1])
+    assert "factor 'toy_on_floor'" in finding and "'yes' and 'no' give the same condition" in finding
+    assert model.stats.by_kind["identify_factors"] == {
+        "questions": 1, "attempts": 2, "truncated": 0, "meaningless": 1, "valid": 1, "valid_first": 0,
+        "answered": 1}
+
+
+def test_protocol_1_accepts_what_it_accepted() -> None:
+    """The recorded pack replays: without the meaning context the same reply passes as before."""
+    assert FactorsWire.model_validate_json(SMOL_FACTOR).factors[0].id == "toy_on_floor"
+    assert len(DecomposeWire.model_validate_json(SMOL_DECOMPOSE).subtasks) == 2
+    with pytest.raises(ValidationError, match="give the same condition"):
+        FactorsWire.model_validate_json(SMOL_FACTOR, context=ON)
+
+
+def test_responses_that_leave_a_case_unanswered_are_not_exhaustive() -> None:
+    with pytest.raises(ValidationError, match=r"factor 'kitchen_dish_cleanup': its responses \['yes', 'no'\] "
+                       "leave some environments without an answer"):
+        FactorsWire.model_validate_json(SMOL_NOT_EXHAUSTIVE, context=ON)
+
+
+def test_responses_that_can_hold_together_are_not_exclusive() -> None:
+    both = [("on_floor", [{"predicate": "on", "object": "toy", "support": "floor", "negated": False}]),
+            ("red", [{"predicate": "attr", "object": "toy", "key": "color", "value": "red", "negated": False}])]
+    assert "responses 'on_floor' and 'red' can both hold" in (factor_problem("f", both) or "")
+    # physical axioms: one support at a time, so on floor / on sofa / neither is exclusive and exhaustive
+    three = [("floor", [{"predicate": "on", "object": "toy", "support": "floor", "negated": False}]),
+             ("sofa", [{"predicate": "on", "object": "toy", "support": "sofa", "negated": False}]),
+             ("elsewhere", [{"predicate": "on", "object": "toy", "support": "floor", "negated": True},
+                            {"predicate": "on", "object": "toy", "support": "sofa", "negated": True}])]
+    assert factor_problem("where", three) is None
+
+
+LITERALS = st.fixed_dictionaries({
+    "predicate": st.just("state"), "object": st.sampled_from(["toy", "book"]),
+    "flag": st.sampled_from(["open", "dirty", "wet"]), "negated": st.booleans()})
+
+
+@settings(max_examples=40, deadline=None)
+@given(lit=LITERALS)
+def test_a_literal_and_its_negation_always_pass_and_twice_never(lit: dict[str, Any]) -> None:
+    flipped = {**lit, "negated": not lit["negated"]}
+    assert factor_problem("f", [("a", [lit]), ("b", [flipped])]) is None
+    assert factor_problem("f", [("a", [lit]), ("b", [lit])]) is not None
+
+
+def test_subtasks_copying_the_schema_text_are_re_asked_naming_the_subtask() -> None:
+    model = Scripted([SMOL_DECOMPOSE, json.dumps(GOOD_DECOMPOSE)])
+    reply = ask(model, "decompose_task", BRIEF, DecomposeWire)
+    assert reply.subtasks[0].description == "Put the toy in its box."
+    assert "subtask 'tidy_toy': its description copies the schema's description text" in _finding(model.requests[1])
+    twice = {"subtasks": [{"id": "a", "description": "Tidy up.", "roles": []},
+                          {"id": "b", "description": "tidy up", "roles": []}]}
+    with pytest.raises(ValidationError, match="subtask 'b': its description repeats subtask 'a'"):
+        DecomposeWire.model_validate(twice, context=ON)
+
+
+def test_no_object_on_itself_and_no_room_adjacent_to_itself() -> None:
+    objects = {"objects": [{"id": "sofa", "category": "sofa", "room": "living_room", "placement": "on:sofa"}]}
+    with pytest.raises(ValidationError, match="object 'sofa' is placed on:sofa"):
+        ObjectsReply.model_validate(objects, context=ON)
+    assert ObjectsReply.model_validate(objects).objects[0].placement == "on:sofa"  # protocol 1
+    plan = {"rooms": [{"id": "living_room", "type": "LivingRoom", "area_m2": 20, "adjacent_to": ["living_room"]}]}
+    with pytest.raises(ValidationError, match="room 'living_room' lists itself in adjacent_to"):
+        FloorPlanWire.model_validate(plan, context=ON)
+
+
+def _qwen_scene(drop: tuple[str, ...] = ()) -> dict[str, Any]:
+    """The shape of Qwen2.5-Coder-1.5B's Holodeck-like reply for clean_living_room (issue 39): one
+    object per role under the role's own name, the right category, and no `role` field at all."""
+    placement = {"wet_wipe": "on:table"}
+    attributes = {"red_box": {"color": "red"}, "white_box": {"color": "white"}}
+    objects = [{"id": r, "category": c, "room": "living_room", "placement": placement.get(r, "floor"),
+                "attributes": attributes.get(r, {})} for r, c in ROLES.items() if r not in drop]
+    objects.append({"id": "lamp_1", "category": "floor_lamp", "room": "living_room", "placement": "floor"})
+    return {"rooms": [{"id": "living_room", "type": "LivingRoom", "area_m2": 24,
+                       "doors": [{"to": "exterior"}], "windows": [{"wall": "n"}]}],
+            "objects": objects, "relations": [{"type": "near", "args": ["wet_wipe", "table"]}]}
+
+
+def test_a_scene_naming_objects_after_roles_binds_every_role_and_is_well_formed() -> None:
+    import numpy as np
+
+    from logicenveval.baselines.holodeck import build_scene
+    from logicenveval.baselines.replies import HolodeckSceneReply
+    from logicenveval.benchmark import load_task
+    from logicenveval.domain.catalog import load_catalog
+    from logicenveval.domain.roles import prepare_env
+    from logicenveval.metrics.evaluate import coverage_of_env
+
+    task = load_task("clean_living_room")
+    catalog = load_catalog()
+    vocabulary = scene_vocabulary(task.rooms, sorted(task.roles), [*catalog.categories, *ROLES.values()],
+                                  required_roles=sorted(task.roles))
+    model = Scripted([json.dumps(_qwen_scene())])
+    scene = ask(model, "holodeck_scene", {"task": task.brief().model_dump(mode="json"), "categories": []},
+                HolodeckSceneReply, vocabulary=vocabulary)
+    assert {o.id: o.role for o in scene.objects} == {**{r: r for r in ROLES}, "lamp_1": None}
+    env, _ = build_scene(task.brief(), scene, catalog, np.random.default_rng(0), env_id="h-00", generator="holodeck")
+    assert env.roles == {r: r for r in ROLES}
+    assert coverage_of_env(task, prepare_env(env, task.roles, catalog).env, catalog).well_formed
+    # protocol 1 keeps the old reading: the roles stay unbound and the environment ill-formed
+    old = HolodeckSceneReply.model_validate(_qwen_scene())
+    env, _ = build_scene(task.brief(), old, catalog, np.random.default_rng(0), env_id="h-00", generator="holodeck")
+    coverage = coverage_of_env(task, prepare_env(env, task.roles, catalog).env, catalog)
+    assert not coverage.well_formed and any("toy" in p for p in coverage.problems)
+
+
+def test_a_scene_leaving_a_role_without_an_object_is_re_asked_naming_it() -> None:
+    from logicenveval.baselines.replies import HolodeckSceneReply
+
+    vocabulary = scene_vocabulary(["living_room"], sorted(ROLES), [*ROLES.values(), "floor_lamp"],
+                                  required_roles=sorted(ROLES))
+    model = Scripted([json.dumps(_qwen_scene(drop=("toy", "book")))] * 2)
+    with pytest.raises(ModelReplyError, match=r"role\(s\) \['book', 'toy'\] have no object"):
+        ask(model, "holodeck_scene", {**BRIEF, "categories": []}, HolodeckSceneReply, vocabulary=vocabulary, max_reasks=1)
+    assert "['book', 'toy'] have no object" in _finding(model.requests[1])
+
+
+def test_roles_a_situation_declares_absent_need_no_object() -> None:
+    assert present_roles(["book", "toy"], ["not exists(book)", "on(toy, floor)"]) == ["toy"]
+    reply = ObjectsReply.model_validate(
+        {"objects": [{"id": "toy", "category": "toy", "room": "living_room", "placement": "floor"}]},
+        context={MEANING_KEY: True, CONTEXT_KEY: {"roles": ["book", "toy"], "required_roles": ["toy"]}})
+    assert reply.objects[0].role == "toy"

