@@ -104,6 +104,9 @@ class UnitRecord(BaseModel):
     attempts: list[Attempt] = Field(default_factory=list)
     #: a search of the generator that stopped at its budget, and what it used instead
     budget_hit: str | None = None
+    #: seconds per phase of the unit (`logicenveval.phases`: tasks, start-up, generation, layout,
+    #: physics, coverage, simulation, traces, mutants, render, writing); a timing field
+    phases: dict[str, float] = Field(default_factory=dict)
 
     @property
     def measured(self) -> bool:

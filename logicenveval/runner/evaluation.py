@@ -17,6 +17,7 @@ from logicenveval.metrics.evaluate import coverage
 from logicenveval.metrics.records import EnvSample, PhysicsSummary, VerdictTrace
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import Task
+from logicenveval.phases import phase
 from logicenveval.physics import PhysicsReport, check_env
 from logicenveval.sim.simulator import simulate
 from logicenveval.sim.world import holds_initial
@@ -55,9 +56,10 @@ def evaluate_env(
     ~40 % to these sub-millisecond episodes), then traced for the report's drill-down, so that
     `report` never simulates.
     """
-    prepared = prepare_env(env, task.roles, catalog)
-    env, binding = prepared.env, prepared.binding
-    report = check_env(env, catalog)
+    with phase("physics"):
+        prepared = prepare_env(env, task.roles, catalog)
+        env, binding = prepared.env, prepared.binding
+        report = check_env(env, catalog)
     failures = [
         f.model_dump(mode="json")
         for dim in (report.floor_plan, report.entity, report.relation)
@@ -71,16 +73,19 @@ def evaluate_env(
         extended=report.extended.passed,
         extended_failures=[f.model_dump(mode="json") for f in report.extended.failures],
     )
-    cov = coverage(task, holds_initial(env, catalog), env.roles)
+    with phase("coverage"):
+        cov = coverage(task, holds_initial(env, catalog), env.roles)
     verdicts: dict[str, str] = {}
     sim_ms: dict[str, float] = {}
     sim_ticks: dict[str, int] = {}
     traces: dict[str, VerdictTrace] = {}
     for kind, policy in policies.items():
-        start = time.perf_counter()
-        verdicts[kind] = simulate(policy, env, task, catalog).status
-        sim_ms[kind] = (time.perf_counter() - start) * 1000.0
-        verdict = simulate(policy, env, task, catalog, trace=True)
+        with phase("simulation"):
+            start = time.perf_counter()
+            verdicts[kind] = simulate(policy, env, task, catalog).status
+            sim_ms[kind] = (time.perf_counter() - start) * 1000.0
+        with phase("traces"):
+            verdict = simulate(policy, env, task, catalog, trace=True)
         sim_ticks[kind] = verdict.ticks
         traces[kind] = VerdictTrace(status=verdict.status, message=verdict.message or "",
                                     trace=[str(t) for t in verdict.trace])
@@ -114,7 +119,8 @@ def with_killed_mutants(done: Evaluation, task: Task, scorer: MutationScorer,
     if not (sample.well_formed and sample.verdicts.get("correct") == "passed"):
         return sample
     start = time.perf_counter()
-    killed = scorer.killed(done.env, task, catalog)
+    with phase("mutants"):
+        killed = scorer.killed(done.env, task, catalog)
     ms = (time.perf_counter() - start) * 1000.0
     return sample.model_copy(update={"killed_mutants": killed,
                                      "sim_ms": {**sample.sim_ms, "mutants": ms}})
