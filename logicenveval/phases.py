@@ -50,13 +50,10 @@ def _close(state: _State, now: float) -> None:
 
 @contextlib.contextmanager
 def collect() -> Iterator[dict[str, float]]:
-    """Count the block's phases apart from the enclosing ones (which pause meanwhile): the dict
-    yielded holds the block's seconds per phase when the block ends (a unit run in the run's
-    own process keeps its phases out of the run's)."""
+    """Count the block's phases apart: the dict yielded holds them when the block ends, and the
+    enclosing phase counts the block's wall time as its own (a unit run in the run's own
+    process keeps its phases in its record; the run's `units` phase is the time it took)."""
     state = _STATE
-    now = time.perf_counter()
-    if state.stack:
-        _close(state, now)
     saved = state.totals, state.stack
     state.totals, state.stack = {}, []
     out: dict[str, float] = {}
@@ -65,8 +62,6 @@ def collect() -> Iterator[dict[str, float]]:
     finally:
         out.update(take())
         state.totals, state.stack = saved
-        if state.stack:
-            state.stack[-1][1] = time.perf_counter()
 
 
 def take() -> dict[str, float]:

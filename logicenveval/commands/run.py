@@ -6,6 +6,7 @@ import argparse
 import os
 import sys
 from collections.abc import Sequence
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from logicenveval.commands import options
@@ -108,6 +109,7 @@ def run(args: argparse.Namespace) -> int:
         print(shown.table)
         print(f"run folder: {multi.run_dir} (seed runs {', '.join(str(d) for d in multi.seed_dirs)}; "
               f"computed {multi.computed} unit(s), reused {multi.reused})")
+        print_size(multi.run_dir)
         print(shown.why)
         return report_failures(multi.records)
     outcome = run_benchmark(config, show_progress=not args.quiet)
@@ -119,8 +121,16 @@ def run(args: argparse.Namespace) -> int:
     shown = publish(outcome.run_dir, outcome.results, outcome.records)
     print(shown.table)
     print(f"run folder: {outcome.run_dir} (computed {outcome.computed} unit(s), reused {outcome.reused})")
+    print_size(outcome.run_dir)
     print(shown.why)
     return report_failures(outcome.records)
+
+
+def print_size(run_dir: Path) -> None:
+    """The run folder's size by part, so that a run that grows its folder is noticed."""
+    from logicenveval.runner.footprint import folder_bytes, size_text
+
+    print(f"run folder size: {size_text(folder_bytes(run_dir))}")
 
 
 def report_failures(records: Sequence[UnitRecord]) -> int:

@@ -52,7 +52,7 @@ class Timing(BaseModel):
         "render, writing)")
     run_phases: dict[str, float] = Field(
         default_factory=dict, description="seconds of the run's own phases in its main process "
-        "(tasks, start-up, units, saving, results)")
+        "(tasks, start-up, resume scan, units: running or awaiting them, saving: committing them, results)")
     per_seed: dict[str, Any] | None = Field(default=None, description="run --seeds: each seed's timing")
 
 

@@ -185,7 +185,7 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
     reused = len(records)
     start = time.perf_counter()
     console = console or Console(stderr=True)
-    with phases.phase("units"), Progress(  # the wait for units; committing them is `saving`
+    with phases.phase("units"), Progress(  # the units (run here or awaited); committing is `saving`
         TextColumn("[bold]{task.description:<14}"), BarColumn(), MofNCompleteColumn(),
         TimeRemainingColumn(), console=console, disable=not show_progress, transient=False,
     ) as progress:
