@@ -1,6 +1,9 @@
-"""Hand-offs: longest units first, whole tasks together, the last tasks one unit at a time."""
+"""Hand-offs: longest units first, whole tasks together, the last tasks one unit at a time;
+what a worker does once for all its units."""
 
 from __future__ import annotations
+
+from pathlib import Path
 
 from logicenveval.runner.schedule import hand_offs, unit_cost
 from logicenveval.runner.unit import UnitSpec
@@ -44,3 +47,19 @@ def test_tasks_travel_together_and_the_tail_is_single_short_units() -> None:
 def test_the_schedule_is_a_function_of_the_specs() -> None:
     assert hand_offs(_specs(25), 2) == hand_offs(_specs(25), 2)
     assert hand_offs(_specs(5), 1) == [(s,) for s in _specs(5)]
+
+
+def test_a_worker_parses_a_bt_once_and_again_after_an_edit(tmp_path: Path) -> None:
+    from logicenveval.runner.unit import _policy
+
+    path = tmp_path / "correct.xml"
+    path.write_text("one")
+    calls: list[str] = []
+
+    def load(p: Path) -> str:
+        calls.append(p.read_text())
+        return p.read_text()
+
+    assert _policy(load, path) == _policy(load, path) == "one" and calls == ["one"]
+    path.write_text("two, longer")
+    assert _policy(load, path) == "two, longer" and calls == ["one", "two, longer"]
