@@ -11,6 +11,15 @@ units), the `report RUN_DIR` time, and, last,
 the leaderboard time / the 2-worker wall time, and the 2-worker wall time of the full default
 run (25 tasks x 4 generators). On a machine shared with other work, wall-time ratios understate
 the speed-up; compare it with the capacity line.
+
+Where the time goes (issue 38), from the run's own instrumentation (results.json `timing`:
+`run_phases` of the main process, `phases` of each generator's units, `logicenveval.phases`), per
+configuration: `main` — the run process's phases (start-up, tasks, resume scan, units = waiting
+for workers, saving units, results) and `rest` = wall − those (interpreter start and imports,
+samples.jsonl/results.json, leaderboards); `units` — seconds summed over all units (CPU-ish time
+of the workers: start-up, task loading, generation per method, layout, physics, coverage,
+simulation, traces, mutants, render, writing); `busy` — that sum / (wall × workers), how much of
+the workers' time units used. Last the run folder's size by part.
 """
 
 from __future__ import annotations
@@ -57,6 +66,37 @@ def timed_run(workers: int, out: Path, extra: list[str]) -> tuple[float, dict[st
     return wall, timing
 
 
+#: the order phases are printed in (others follow alphabetically)
+UNIT_PHASES = ("start-up", "tasks", "generation", "layout", "physics", "coverage", "simulation",
+               "traces", "mutants", "render", "writing")
+RUN_PHASES = ("start-up", "tasks", "resume scan", "units", "saving", "results")
+
+
+def _ordered(values: dict[str, float], order: tuple[str, ...]) -> list[tuple[str, float]]:
+    return [(k, values[k]) for k in order if k in values] + sorted(
+        (k, v) for k, v in values.items() if k not in order)
+
+
+def phase_lines(workers: int, wall: float, timing: dict[str, object]) -> list[str]:
+    """The per-phase breakdown of one run, from its results.json `timing`."""
+    run_phases = timing.get("run_phases") or {}
+    per_gen = timing.get("phases") or {}
+    assert isinstance(run_phases, dict) and isinstance(per_gen, dict)
+    main = " ".join(f"{k.replace(' ', '_')}={v:.2f}" for k, v in _ordered(run_phases, RUN_PHASES))
+    rest = wall - sum(run_phases.values())
+    totals: dict[str, float] = {}
+    for phases in per_gen.values():
+        for k, v in phases.items():
+            totals[k] = totals.get(k, 0.0) + v
+    units = " ".join(f"{k}={v:.2f}" for k, v in _ordered(totals, UNIT_PHASES))
+    gen = " ".join(f"{g}={p.get('generation', 0.0):.2f}+layout {p.get('layout', 0.0):.2f}"
+                   for g, p in per_gen.items())
+    busy = sum(totals.values()) / (wall * workers) if wall else 0.0
+    return [f"  main_s: {main} rest={rest:.2f}",
+            f"  units_s (summed over units): {units} total={sum(totals.values()):.2f} busy={busy:.2f}",
+            f"  generation_s per method: {gen}"]
+
+
 def leaderboard_seconds(run_dir: Path) -> float:
     """Time to write a finished run's leaderboards and per-task pages from its units."""
     from logicenveval.reporting.leaderboard import write_leaderboards
@@ -86,8 +126,13 @@ def main() -> None:
             gens = " ".join(f"{g}_gen_s={s:.2f}" for g, s in gen.items())
             run_dir = str(timing["run_dir"])
             print(f"workers={workers} wall_s={wall:.2f} {gens}")
+            for line in phase_lines(workers, wall, timing):
+                print(line)
         report_s = leaderboard_seconds(Path(run_dir))
-        print(f"report_s={report_s:.3f}")
+        print(f"report_s={report_s:.3f} (leaderboards and detail pages of the 2-worker run)")
+        from logicenveval.runner.footprint import folder_bytes, size_text
+
+        print(f"run_folder={size_text(folder_bytes(Path(run_dir)), parts=8)}")
         start = time.perf_counter()
         subprocess.run([sys.executable, "-m", "logicenveval", "report", run_dir], check=True,
                        stdout=subprocess.DEVNULL)

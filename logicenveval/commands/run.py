@@ -6,6 +6,7 @@ import argparse
 import os
 import sys
 from collections.abc import Sequence
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from logicenveval.commands import options
@@ -125,6 +126,7 @@ def run(args: argparse.Namespace) -> int:
         print(f"computed {multi.computed} unit(s), reused {multi.reused} over "
               f"{len(multi.seed_dirs)} seed run(s) (seed<N>/ in the run folder)")
         print("\n".join(path_lines("run folder:", multi.run_dir)))
+        print_size(multi.run_dir)
         _say_stale(multi.stale, multi.records, args.debug)
         return report_failures(multi.records)
     outcome = run_benchmark(config, show_progress=not args.quiet)
@@ -137,6 +139,7 @@ def run(args: argparse.Namespace) -> int:
     print(shown.summary)
     print(f"computed {outcome.computed} unit(s), reused {outcome.reused}")
     print("\n".join(path_lines("run folder:", outcome.run_dir)))
+    print_size(outcome.run_dir)
     _say_stale(outcome.stale, outcome.records, args.debug)
     return report_failures(outcome.records)
 
@@ -151,6 +154,13 @@ def _say_stale(stale: dict[str, int], records: Sequence[UnitRecord], debug: bool
         for r in records:
             if r.traceback:
                 print(f"--- {r.generator} on {r.task_id}: {r.error}\n{r.traceback}", file=sys.stderr)
+
+
+def print_size(run_dir: Path) -> None:
+    """The run folder's size by part, so that a run that grows its folder is noticed."""
+    from logicenveval.runner.footprint import folder_bytes, size_text
+
+    print(f"run folder size: {size_text(folder_bytes(run_dir))}")
 
 
 def report_failures(records: Sequence[UnitRecord]) -> int:

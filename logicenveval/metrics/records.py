@@ -114,6 +114,9 @@ class UnitRecord(BaseModel):
     #: the limits (`logicenveval.limits`) that refused something in this unit, with the values in
     #: force: the outcome depends on them, so a run under other values recomputes the unit
     limits: dict[str, int] = Field(default_factory=dict)
+    #: seconds per phase of the unit (`logicenveval.phases`: tasks, start-up, generation, layout,
+    #: physics, coverage, simulation, traces, mutants, render, writing); a timing field
+    phases: dict[str, float] = Field(default_factory=dict)
 
     @property
     def measured(self) -> bool:

@@ -48,6 +48,13 @@ class Timing(BaseModel):
     wall_seconds: float | None = None
     generation_seconds: dict[str, float] = Field(default_factory=dict)
     llm: dict[str, dict[str, float]] = Field(default_factory=dict)
+    phases: dict[str, dict[str, float]] = Field(
+        default_factory=dict, description="per generator: seconds its units spent per phase "
+        "(tasks, start-up, generation, layout, physics, coverage, simulation, traces, mutants, "
+        "render, writing)")
+    run_phases: dict[str, float] = Field(
+        default_factory=dict, description="seconds of the run's own phases in its main process "
+        "(tasks, start-up, resume scan, units: running or awaiting them, saving: committing them, results)")
     per_seed: dict[str, Any] | None = Field(default=None, description="run --seeds: each seed's timing")
 
 

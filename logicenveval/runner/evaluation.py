@@ -17,6 +17,7 @@ from logicenveval.metrics.evaluate import constraint_problems, coverage
 from logicenveval.metrics.records import EnvSample, PhysicsSummary, VerdictTrace
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import Task
+from logicenveval.phases import phase
 from logicenveval.physics import PhysicsReport, check_env
 from logicenveval.sim.simulator import simulate
 from logicenveval.sim.world import holds_initial
@@ -59,9 +60,10 @@ def evaluate_env(
     with one environment per task look slower than one with seven), and recording a trace adds
     ~40 % to these sub-millisecond episodes.
     """
-    prepared = prepare_env(env, task.roles, catalog, given)
-    env, binding = prepared.env, prepared.binding
-    report = check_env(env, catalog)
+    with phase("physics"):
+        prepared = prepare_env(env, task.roles, catalog, given)
+        env, binding = prepared.env, prepared.binding
+        report = check_env(env, catalog)
     failures = [
         f.model_dump(mode="json")
         for dim in (report.floor_plan, report.entity, report.relation)
@@ -75,15 +77,17 @@ def evaluate_env(
         extended=report.extended.passed,
         extended_failures=[f.model_dump(mode="json") for f in report.extended.failures],
     )
-    holds = holds_initial(env, catalog)
-    cov = coverage(task, holds, env.roles, binding)
-    violations = constraint_problems(task, env, holds)
+    with phase("coverage"):
+        holds = holds_initial(env, catalog)
+        cov = coverage(task, holds, env.roles, binding)
+        violations = constraint_problems(task, env, holds)
     verdicts: dict[str, str] = {}
     sim_ms: dict[str, float] = {}
     sim_ticks: dict[str, int] = {}
     traces: dict[str, VerdictTrace] = {}
     for kind, policy in policies.items():
-        verdict = simulate(policy, env, task, catalog, trace=True)  # also the warm-up of the timing
+        with phase("traces"):
+            verdict = simulate(policy, env, task, catalog, trace=True)  # also the timing's warm-up
         sim_ticks[kind] = verdict.ticks
         traces[kind] = VerdictTrace(status=verdict.status, message=verdict.message or "",
                                     trace=[str(t) for t in verdict.trace])
@@ -122,7 +126,8 @@ def with_killed_mutants(done: Evaluation, task: Task, scorer: MutationScorer,
             and sample.verdicts.get("correct") == "passed"):
         return sample
     start = time.perf_counter()
-    killed = scorer.killed(done.env, task, catalog)
+    with phase("mutants"):
+        killed = scorer.killed(done.env, task, catalog)
     ms = (time.perf_counter() - start) * 1000.0
     return sample.model_copy(update={"killed_mutants": killed,
                                      "sim_ms": {**sample.sim_ms, "mutants": ms}})

@@ -81,6 +81,24 @@ def _context() -> multiprocessing.context.BaseContext:
     return multiprocessing.get_context("spawn")
 
 
+#: thread pools of native libraries, one thread per worker: the workers are the parallelism
+SINGLE_THREADED = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
+
+
+@contextlib.contextmanager
+def single_threaded_children() -> Iterator[None]:
+    """Processes started in the block (the fork server, spawned workers) size their native
+    thread pools to one thread, unless the user set the variable; this process is unchanged.
+    (CP-SAT is given `num_workers=1` and Z3 runs one thread where they are called.)"""
+    added = [k for k in SINGLE_THREADED if k not in os.environ]
+    os.environ.update({k: "1" for k in added})
+    try:
+        yield
+    finally:
+        for k in added:
+            os.environ.pop(k, None)
+
+
 def _death(codes: Sequence[int | None]) -> str:
     """Why the worker processes of a broken pool died, from their exit statuses."""
     # the pool itself SIGTERMs the survivors of a broken pool: the cause is another status
@@ -173,7 +191,8 @@ class ProcessExecutor:
             if self._ctx.get_start_method() == "forkserver":
                 from multiprocessing import forkserver
 
-                forkserver.ensure_running()
+                with single_threaded_children():
+                    forkserver.ensure_running()
 
     def map_unordered(self, fn: Callable[[T], R], items: Sequence[T], *,
                       budget: Budget | None = None, on_crash: OnCrash | None = None,

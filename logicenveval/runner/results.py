@@ -133,8 +133,22 @@ def build_results(
             "wall_seconds": None if wall_seconds is None else round(wall_seconds, 3),
             "generation_seconds": gen_seconds,
             "llm": llm,
+            "phases": phase_seconds(records, list(gen_seconds)),
         },
     }
+
+
+def phase_seconds(records: Sequence[UnitRecord], generators: Sequence[str]) -> dict[str, dict[str, float]]:
+    """Per generator, the seconds its units spent per phase (`UnitRecord.phases`), summed."""
+    out: dict[str, dict[str, float]] = {}
+    for gen in generators:
+        row: dict[str, float] = {}
+        for u in records:
+            if u.generator == gen:
+                for name, seconds in u.phases.items():
+                    row[name] = row.get(name, 0.0) + seconds
+        out[gen] = {k: round(v, 3) for k, v in sorted(row.items())}
+    return out
 
 
 def reply_validity(units: Sequence[UnitRecord]) -> dict[str, dict[str, float]]:

@@ -14,6 +14,7 @@ from typing import Any
 from rich.console import Console
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
 
+from logicenveval import phases
 from logicenveval.benchmark import load_tasks, policy_path, task_ids
 from logicenveval.benchmark_validation import situation_count
 from logicenveval.errors import ConfigError, RunFailedError
@@ -31,8 +32,9 @@ from logicenveval.runner.fingerprint import (
     unit_inputs,
 )
 from logicenveval.runner.results import build_results, write_outputs
+from logicenveval.runner.schedule import hand_offs
 from logicenveval.runner.store import RunStore
-from logicenveval.runner.unit import UnitSpec, chunk_units, planned_failures, run_units
+from logicenveval.runner.unit import UnitSpec, planned_failures, run_units
 
 
 @dataclass(frozen=True)
@@ -158,13 +160,16 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
     from logicenveval.llm.llamacpp import serving
 
     limits = current_limits()  # once, before any work: every unit runs under these values
-    refs = resolve_generators(config)  # the whole spec, before a server starts (minutes)
-    ids = _check(config)
-    tasks = load_tasks(config.tasks_dir, ids)
-    for task in tasks:  # before any unit: policy paths confined, situation count bounded
-        for kind in POLICY_KINDS:
-            policy_path(task, kind, config.tasks_dir)
-        situation_count(task)
+    phases.take()  # the run's own phases (`timing.run_phases`) start here
+    with phases.phase("start-up"):
+        refs = resolve_generators(config)  # the whole spec, before a server starts (minutes)
+        ids = _check(config)
+    with phases.phase("tasks"):
+        tasks = load_tasks(config.tasks_dir, ids)
+        for task in tasks:  # before any unit: policy paths confined, situation count bounded
+            for kind in POLICY_KINDS:
+                policy_path(task, kind, config.tasks_dir)
+            situation_count(task)
     with serving(config.model, config.model_args,
                  log_path=config.run_dir() / "llama-server.log") as model_args:
         return _run(config, model_args, refs, ids, tasks, limits, console=console,
@@ -174,15 +179,16 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
 def _run(config: RunConfig, model_args: str, refs: list[GeneratorRef], ids: list[str],
          tasks: list[Task], limits: dict[str, int], *, console: Console | None,
          show_progress: bool) -> RunOutcome:
-    executor = make_executor("inprocess" if config.debug else config.executor, config.workers)
-    warm_up = getattr(executor, "warm_up", None)
-    if callable(warm_up):
-        warm_up()  # workers' imports overlap the preflight and resume scan below
-    run_dir = config.run_dir()
-    _prepare_dir(run_dir)
-    _preflight(config, run_dir, model_args)
-    store = RunStore(run_dir)
-    store.claim(config.identity())  # held until the run ends: one run per folder at a time
+    with phases.phase("start-up"):
+        executor = make_executor("inprocess" if config.debug else config.executor, config.workers)
+        warm_up = getattr(executor, "warm_up", None)
+        if callable(warm_up):
+            warm_up()  # workers' imports overlap the preflight and resume scan below
+        run_dir = config.run_dir()
+        _prepare_dir(run_dir)
+        _preflight(config, run_dir, model_args)
+        store = RunStore(run_dir)
+        store.claim(config.identity())  # held until the run ends: one run per folder at a time
     try:
         return _run_units(config, refs, ids, tasks, run_dir, store, executor, console, show_progress,
                           model_args, limits)
@@ -229,29 +235,30 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
     records: dict[tuple[str, str], UnitRecord] = {}
     pending: list[UnitSpec] = []
     stale: dict[str, int] = {}
-    for spec in specs:
-        key = (spec.generator, spec.task_id)
-        stored = store.load(spec.generator, spec.task_id)
-        if stored is None or stored.error_kind == "infrastructure" or not store.files_intact(stored) \
-                or any(limits.get(k) != v for k, v in stored.limits.items()):
-            pending.append(spec)  # never computed, corrupt, edited, failed for a reason outside
-            # it, or shaped by a limit whose value has changed since
-            continue
-        changed = ["fresh"] if config.fresh else changed_inputs(stored.inputs, inputs[key])
-        if config.debug and (stored.error_kind == "internal" or stored.traceback is not None):
-            changed = changed or ["debug"]
-        if changed:  # made by other code or data: recomputed, and the run says why
-            pending.append(spec)
-            for what in changed:
-                why = ("--debug re-runs a generator that raised" if what == "debug" else
-                       stale_reason(what, spec.generator, spec.task_id, stored.inputs, inputs[key]))
-                stale[why] = stale.get(why, 0) + 1
-        else:
-            records[key] = stored
+    with phases.phase("resume scan"):
+        for spec in specs:
+            key = (spec.generator, spec.task_id)
+            stored = store.load(spec.generator, spec.task_id)
+            if stored is None or stored.error_kind == "infrastructure" or not store.files_intact(stored) \
+                    or any(limits.get(k) != v for k, v in stored.limits.items()):
+                pending.append(spec)  # never computed, corrupt, edited, failed for a reason outside
+                # it, or shaped by a limit whose value has changed since
+                continue
+            changed = ["fresh"] if config.fresh else changed_inputs(stored.inputs, inputs[key])
+            if config.debug and (stored.error_kind == "internal" or stored.traceback is not None):
+                changed = changed or ["debug"]
+            if changed:  # made by other code or data: recomputed, and the run says why
+                pending.append(spec)
+                for what in changed:
+                    why = ("--debug re-runs a generator that raised" if what == "debug" else
+                           stale_reason(what, spec.generator, spec.task_id, stored.inputs, inputs[key]))
+                    stale[why] = stale.get(why, 0) + 1
+            else:
+                records[key] = stored
     reused = len(records)
     start = time.perf_counter()
     console = console or Console(stderr=True)
-    with Progress(
+    with phases.phase("units"), Progress(  # the units (run here or awaited); committing is `saving`
         TextColumn("[bold]{task.description:<14}"), BarColumn(), MofNCompleteColumn(),
         TimeRemainingColumn(), console=console, disable=not show_progress, transient=False,
     ) as progress:
@@ -262,7 +269,7 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
         }
         streak = 0
         # closing(): stopping early stops the pool at once and drops the queued units
-        chunks = executor.map_unordered(run_units, chunk_units(pending, config.workers),
+        chunks = executor.map_unordered(run_units, hand_offs(pending, config.workers),
                                         budget=_budget(config), on_crash=_crashed,
                                         split=lambda chunk: [(s,) for s in chunk])
         with contextlib.closing(chunks) as finished:  # type: ignore[type-var]  # generators have close()
@@ -270,7 +277,8 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
                 for record in chunk:
                     record = record.model_copy(update={"inputs": inputs[(record.generator,
                                                                          record.task_id)]})
-                    store.save(record)
+                    with phases.phase("saving"):
+                        store.save(record)
                     records[(record.generator, record.task_id)] = record
                     progress.advance(bars[record.generator])
                     streak = streak + 1 if record.error_kind == "infrastructure" else 0
@@ -282,8 +290,10 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
                             "finished units are kept and the failed ones are recomputed "
                             "(--max-infra-failures 0 never stops)")
     ordered = [records[(s.generator, s.task_id)] for s in specs]
-    results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start,
-                            generators=[r.name for r in refs])
+    with phases.phase("results"):
+        results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start,
+                                generators=[r.name for r in refs])
+    results["timing"]["run_phases"] = phases.take()
     write_outputs(run_dir, results, ordered)
     return RunOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused,
                       records=tuple(ordered), stale=stale)

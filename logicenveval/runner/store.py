@@ -21,6 +21,7 @@ from logicenveval.errors import LogicEnvEvalError, RunStoreError
 from logicenveval.limits import read_bytes
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.paths import child, safe_relative
+from logicenveval.runner.unit_codec import decode_unit, encode_unit
 
 
 def _digest(payload: Any) -> str:
@@ -136,7 +137,7 @@ class RunStore:
         return removed
 
     def save(self, record: UnitRecord) -> None:
-        payload = record.model_dump(mode="json")
+        payload = encode_unit(record.model_dump(mode="json"))
         # compact: with an indent, json falls back to its pure-Python encoder (units hold traces)
         text = json.dumps({"sha256": _digest(payload), "unit": payload}, sort_keys=True,
                           separators=(",", ":"))
@@ -151,8 +152,8 @@ class RunStore:
             payload = blob["unit"]
             if blob.get("sha256") != _digest(payload):
                 return None
-            record = UnitRecord.model_validate(payload)
-        except (LogicEnvEvalError, ValueError, KeyError, TypeError, ValidationError):
+            record = UnitRecord.model_validate(decode_unit(payload))
+        except (LogicEnvEvalError, ValueError, KeyError, TypeError, AttributeError, ValidationError):
             return None
         if record.generator != generator or record.task_id != task_id:
             return None

@@ -15,7 +15,7 @@ import sqlite3
 import threading
 import time
 import traceback
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Literal
@@ -23,6 +23,7 @@ from typing import Any, Literal
 import numpy as np
 from pydantic import BaseModel, ConfigDict, Field
 
+from logicenveval import phases
 from logicenveval.atomic import atomic_write_text
 from logicenveval.benchmark import load_task, policy_path
 from logicenveval.domain.catalog import DEFAULT_CATALOG, Catalog, load_catalog, reload_catalogs
@@ -347,10 +348,12 @@ def run_unit(spec: UnitSpec) -> UnitRecord:
     """Generate and evaluate under the run's limits; a failing generation is recorded, never
     raised. A unit a limit refused something in records the values of those limits (a re-run
     under other values recomputes it); one a limit failed as a whole is an environment failure,
-    like an infrastructure one: not a result, never kept (`limited`)."""
-    with pinned(spec.limits) as hit:
+    like an infrastructure one: not a result, never kept (`limited`). The record carries where
+    the unit's time went (`UnitRecord.phases`; time not in a named phase is `start-up`)."""
+    with phases.collect() as spent, phases.phase("start-up"), pinned(spec.limits) as hit:
         record = _run_unit(spec)
-    return limited(record, {n: spec.limits.get(n) or limit(n) for n in sorted(hit)})
+    record = limited(record, {n: spec.limits.get(n) or limit(n) for n in sorted(hit)})
+    return record.model_copy(update={"phases": spent})
 
 
 def limited(record: UnitRecord, values: dict[str, int]) -> UnitRecord:
@@ -380,9 +383,10 @@ def _run_unit(spec: UnitSpec) -> UnitRecord:
     from logicenveval.runner.evaluation import evaluate_env, with_killed_mutants
     from logicenveval.sim.loader import load_policy
 
-    task = load_task(spec.task_id, spec.tasks_dir)
-    catalog, _ = shared_catalog()
-    policies = {k: load_policy(policy_path(task, k, spec.tasks_dir)) for k in POLICY_KINDS}
+    with phases.phase("tasks"):
+        task = load_task(spec.task_id, spec.tasks_dir)
+        catalog, _ = shared_catalog()
+        policies = {k: _policy(load_policy, policy_path(task, k, spec.tasks_dir)) for k in POLICY_KINDS}
     run_dir = Path(spec.run_dir)
     start = time.perf_counter()
     model: ChatModel | None = None
@@ -406,8 +410,9 @@ def _run_unit(spec: UnitSpec) -> UnitRecord:
             work_dir=run_dir / "work" / spec.generator / spec.task_id,
             layout_solver=spec.layout_solver,
         )
-        brief = generator_brief(task, spec.brief, model, seed=spec.seed)
-        result = call_generator(generator, brief, ctx, task_id=task.id, timeout=spec.unit_timeout)
+        with phases.phase("generation"):
+            brief = generator_brief(task, spec.brief, model, seed=spec.seed)
+            result = call_generator(generator, brief, ctx, task_id=task.id, timeout=spec.unit_timeout)
     except GeneratorBroke as exc:
         shared_catalog()
         cause = exc.__context__ if exc.kind == "internal" else None
@@ -452,7 +457,8 @@ def _run_unit(spec: UnitSpec) -> UnitRecord:
     details: list[EnvDetail] = []
     files: dict[str, str] = {}
     failures = list(result.failures)
-    scorer = scorer_for(task, spec.tasks_dir, catalog, cache_dir=run_dir / "work" / "mutants")
+    with phases.phase("mutants"):
+        scorer = scorer_for(task, spec.tasks_dir, catalog, cache_dir=run_dir / "work" / "mutants")
     unjudged = list(result.rejected)
     for env, origin in zip(result.envs, result.origin, strict=True):  # ids checked by the boundary
         _write(run_dir, child(rel_dir, env.env_id, suffix=".json"), env_to_json(env), files)
@@ -467,7 +473,8 @@ def _run_unit(spec: UnitSpec) -> UnitRecord:
         render = child(Path("renders"), spec.generator, spec.task_id, env.env_id, suffix=".svg").as_posix()
         # drawn from the environment as stored, as `report` re-draws a lost render (with
         # `--brief description` the judged copy also maps the task's roles)
-        atomic_write_text(run_dir / render, render_svg(env, done.physics), durable=False)
+        with phases.phase("render"):
+            atomic_write_text(run_dir / render, render_svg(env, done.physics), durable=False)
         samples.append(sample)
         details.append(EnvDetail(env_id=env.env_id, render=render, traces=done.traces))
     if spec.brief != "roles":
@@ -513,26 +520,31 @@ def run_units(specs: tuple[UnitSpec, ...]) -> list[UnitRecord]:
     return [run_unit(spec) for spec in specs]
 
 
-def chunk_units(specs: Sequence[UnitSpec], workers: int) -> list[tuple[UnitSpec, ...]]:
-    """Hand-offs for `workers` processes.
-
-    With at least 4 tasks per worker, the units of one task travel together, so they share the
-    worker's memoised task analysis (the offline model reads each brief once per process, not
-    once per generator) and the tail stays one task long (0.15–0.5 CPU-s per task on the
-    offline run); with fewer tasks every unit is its own hand-off so that all workers get work.
-    """
-    by_task: dict[str, list[UnitSpec]] = {}
-    for spec in specs:
-        by_task.setdefault(spec.task_id, []).append(spec)
-    if workers > 1 and len(by_task) >= 4 * workers:
-        return [tuple(g) for g in by_task.values()]
-    return [(spec,) for spec in specs]
-
-
 def _write(run_dir: Path, rel: Path, text: str, files: dict[str, str]) -> None:
     """A file only generation can rebuild: not fsynced, but its digest goes into the unit."""
-    atomic_write_text(run_dir / rel, text, durable=False)
+    with phases.phase("writing"):
+        atomic_write_text(run_dir / rel, text, durable=False)
     files[rel.as_posix()] = text_digest(text)
+
+
+#: parsed policies of this process by (path, inode, size, mtime): a worker parses a task's four
+#: BTs once for all its units (and the simulator compiles each once, `sim.simulator.compiled`)
+_POLICIES: dict[tuple[str, int, int, int], Any] = {}
+
+
+def _policy(load: Callable[[Path], Any], path: Path) -> Any:
+    """`load(path)`, cached while the file is unchanged (an edit gets a new key and is re-read)."""
+    try:
+        st = path.stat()
+    except OSError:
+        return load(path)  # the loader reports it
+    key = (str(path), st.st_ino, st.st_size, st.st_mtime_ns)
+    hit = _POLICIES.get(key)
+    if hit is None:
+        if len(_POLICIES) > 512:
+            _POLICIES.clear()
+        hit = _POLICIES[key] = load(path)
+    return hit
 
 
 class _Watched:

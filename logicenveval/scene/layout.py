@@ -17,6 +17,7 @@ from dataclasses import dataclass
 from typing import Any, Literal, Protocol, get_args
 
 from logicenveval.errors import EnvSpecError
+from logicenveval.phases import phase
 from logicenveval.scene.geometry import Rect
 from logicenveval.scene.relax import Dropped
 from logicenveval.scene.spec import RelationRequest
@@ -162,8 +163,27 @@ def backend(name: str) -> Backend:
     if name not in SOLVERS:
         raise EnvSpecError(f"unknown layout solver {name!r}", field="solver",
                            hint=f"use one of {', '.join(SOLVERS)} (docs/scene.md compares them)")
-    mod: Backend = importlib.import_module(f"logicenveval.scene.layout_{name}")
-    return mod
+    return _Timed(importlib.import_module(f"logicenveval.scene.layout_{name}"))
+
+
+class _Timed:
+    """A backend whose packings count as the `layout` phase of a unit (`logicenveval.phases`)."""
+
+    def __init__(self, mod: Any) -> None:
+        self._mod = mod
+
+    def pack(self, *args: Any, **kwargs: Any) -> tuple[dict[str, Placed], list[Dropped]]:
+        with phase("layout"):
+            out: tuple[dict[str, Placed], list[Dropped]] = self._mod.pack(*args, **kwargs)
+        return out
+
+    def pack_walls(self, *args: Any, **kwargs: Any) -> tuple[dict[str, tuple[int, int]], list[Dropped]]:
+        with phase("layout"):
+            out: tuple[dict[str, tuple[int, int]], list[Dropped]] = self._mod.pack_walls(*args, **kwargs)
+        return out
+
+    def __getattr__(self, attr: str) -> Any:
+        return getattr(self._mod, attr)
 
 
 def cells(v: float, grid: float) -> int:

@@ -1,0 +1,48 @@
+"""One worker or two: the same results.json apart from timings, whatever the schedule."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from logicenveval.cli import main
+
+#: 8 tasks = 4 per worker: whole-task hand-offs and the single-unit tail both run
+TASKS = ("clean_living_room,hallway_entry_tidy,kitchen_fridge_restock,bedroom_bookshelf_sorting,"
+         "study_desk_cleanup,laundry_sorting,bedroom_morning_tidy,living_room_toy_boxes")
+
+
+def _results(out: Path, *extra: str) -> dict[str, Any]:
+    assert main(["run", "--model", "offline", "--tasks", TASKS, "--generators", "logicenvgen,cot",
+                 "--output", str(out), "--quiet", *extra]) == 0
+    (run_dir,) = [p for p in out.iterdir() if p.is_dir()]
+    data: dict[str, Any] = json.loads((run_dir / "results.json").read_text())
+    return data
+
+
+def _stable(results: dict[str, Any]) -> dict[str, Any]:
+    out = json.loads(json.dumps(results))
+    out.pop("timing")
+    for values in out["results"].values():
+        values.pop("st_ms")
+    for per in out["per_task"].values():
+        for values in per.values():
+            values.pop("st_ms")
+    return out
+
+
+@pytest.mark.slow
+def test_one_and_two_workers_give_the_same_results(tmp_path: Path) -> None:
+    one = _results(tmp_path / "one", "--executor", "inprocess")
+    two = _results(tmp_path / "two", "--executor", "process", "--workers", "2")
+    assert _stable(one) == _stable(two)
+    # the timing block says where the time went, per generator and for the run itself
+    for run in (one, two):
+        phases = run["timing"]["phases"]
+        assert set(phases) == {"logicenvgen", "cot"}
+        assert {"generation", "layout", "physics", "simulation", "mutants", "writing"} <= set(phases["logicenvgen"])
+        assert "layout" not in phases["cot"]  # CoT writes its coordinates down, no solver
+        assert {"start-up", "tasks", "units", "saving", "results"} <= set(run["timing"]["run_phases"])

@@ -1,0 +1,77 @@
+"""Unit files store traces as rows with the tree paths once; loading gives back the same record."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from hypothesis import given
+from hypothesis import strategies as st
+
+from logicenveval.metrics.records import EnvDetail, UnitRecord, VerdictTrace
+from logicenveval.runner.store import RunStore, _digest
+from logicenveval.runner.unit_codec import PATHS, decode_unit, encode_unit
+
+PATH = "CleanLivingRoom/Sequence/SubTree(TidyToy)[0]/Fallback/IfThenElse[1]/Sequence[1]/Walk[0]"
+LINES = [
+    f"{{'tick': 1, 'node': 'Walk', 'path': '{PATH}', 'status': 'RUNNING', 'ports': 'target=toy'}}",
+    f"{{'tick': 2, 'node': 'Walk', 'path': '{PATH}', 'status': 'SUCCESS'}}",
+    f"{{'tick': 3, 'node': 'Pick', 'path': '{PATH}', 'status': 'FAILURE', 'ports': ''}}",
+    "{'tick': 4, 'node': \"it's\", 'path': 'a', 'status': 'SUCCESS'}",  # not the plain form: text
+    "{'tick': 05, 'node': 'Walk', 'path': 'a', 'status': 'SUCCESS'}",  # a row would read 5: text
+    "the goal holds",
+]
+
+
+def _record(lines: list[str]) -> UnitRecord:
+    traces = {k: VerdictTrace(status="passed", trace=lines) for k in ("correct", "unreachable")}
+    return UnitRecord(generator="cot", task_id="clean_living_room",
+                      details=[EnvDetail(env_id=e, traces=traces) for e in ("cot-00", "cot-01")])
+
+
+def test_rows_with_paths_once_and_the_same_record_back(tmp_path: Path) -> None:
+    record = _record(LINES)
+    payload = encode_unit(record.model_dump(mode="json"))
+    assert payload[PATHS] == [PATH]
+    trace = payload["details"][0]["traces"]["correct"]["trace"]
+    assert trace[:3] == [[1, "Walk", 0, "RUNNING", "target=toy"], [2, "Walk", 0, "SUCCESS"],
+                         [3, "Pick", 0, "FAILURE", ""]]
+    assert trace[3:] == LINES[3:]
+    assert UnitRecord.model_validate(decode_unit(json.loads(json.dumps(payload)))) == record
+    store = RunStore(tmp_path)
+    store.save(record)
+    assert store.load("cot", "clean_living_room") == record
+    assert len(store.unit_path("cot", "clean_living_room").read_text()) < \
+        len(json.dumps(record.model_dump(mode="json")))
+
+
+def test_a_unit_written_with_text_lines_still_loads(tmp_path: Path) -> None:
+    record = _record(LINES)
+    payload = record.model_dump(mode="json")  # the earlier form: no trace_paths, every line text
+    path = RunStore(tmp_path).unit_path("cot", "clean_living_room")
+    path.parent.mkdir(parents=True)
+    path.write_text(json.dumps({"sha256": _digest(payload), "unit": payload}))
+    assert RunStore(tmp_path).load("cot", "clean_living_room") == record
+
+
+def test_a_damaged_row_makes_the_unit_recomputed(tmp_path: Path) -> None:
+    payload = encode_unit(_record(LINES).model_dump(mode="json"))
+    for bad in ([1, "Walk", 7, "SUCCESS"], [1, "Walk", -1, "SUCCESS"], [1, "Walk"], ["1", "Walk", 0, "OK"], 3):
+        payload["details"][0]["traces"]["correct"]["trace"][0] = bad
+        path = RunStore(tmp_path).unit_path("cot", "clean_living_room")
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(json.dumps({"sha256": _digest(payload), "unit": payload}))
+        assert RunStore(tmp_path).load("cot", "clean_living_room") is None
+
+
+_TEXT = st.text(st.characters(blacklist_categories=("Cs",)), max_size=12)
+
+
+@given(st.lists(st.one_of(
+    st.builds(lambda t, n, p, s, ports: f"{{'tick': {t}, 'node': '{n}', 'path': '{p}', 'status': "
+              f"'{s}'" + ("" if ports is None else f", 'ports': '{ports}'") + "}",
+              st.integers(0, 10**6), _TEXT, _TEXT, _TEXT, st.none() | _TEXT),
+    _TEXT), max_size=8))
+def test_any_lines_round_trip(lines: list[str]) -> None:
+    payload = _record(lines).model_dump(mode="json")
+    assert decode_unit(json.loads(json.dumps(encode_unit(payload)))) == payload
