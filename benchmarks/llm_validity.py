@@ -15,27 +15,64 @@ from __future__ import annotations
 
 import argparse
 import json
+import shutil
 import tempfile
 import time
 from pathlib import Path
 from typing import Any
 
+from logicenveval.reporting.publish import publish
 from logicenveval.runner.config import RunConfig
-from logicenveval.runner.results import load_results
-from logicenveval.runner.run import run
+from logicenveval.runner.results import load_results, write_outputs
+from logicenveval.runner.run import RunOutcome, run
 
 
 def replay(pack: Path, output: Path, cache: Path | None = None) -> dict[str, Any]:
     """results.json of the pack's configuration replayed from its reply cache (`cache`: one
     shared by several run folders, e.g. the stability seed runs)."""
+    return _replayed(pack, output, cache).results
+
+
+def _replayed(pack: Path, output: Path, cache: Path | None) -> RunOutcome:
     config = json.loads((pack / "config.json").read_text(encoding="utf-8"))
     run_config = RunConfig(
         model=f"replay:{cache or pack / 'llm_cache.sqlite'}", model_args=f"protocol={pack_protocol(config)}",
         generators=tuple(config["generators"]),
         tasks=tuple(config["tasks"]), tasks_dir=config["tasks_dir"], limit=config["limit"],
         seed=config["seed"], layout_solver=config["layout_solver"], brief=config["brief"],
-        output=str(output), workers=1)
-    return run(run_config, show_progress=False).results
+        output=str(output), run_id=pack.name, workers=1)
+    return run(run_config, show_progress=False)
+
+
+#: what a pack holds that its replies and the scoring code determine (rewritten by `rescore`)
+DERIVED = ("results.json", "samples.jsonl", "units", "envs", "renders", "details",
+           "leaderboard.md", "leaderboard.html")
+
+
+def rescore(pack: Path, cache: Path | None = None) -> None:
+    """Score a pack again with this code from its recorded replies: the judging changed (LD,
+    JI, constraints, shapes...), the replies did not. Its derived files are rewritten; its
+    config.json, reply cache and llm_errors/ are kept, and results.json goes on naming the
+    model that wrote the replies (the replay's own `replay:` spec is an artefact of scoring)."""
+    config = json.loads((pack / "config.json").read_text(encoding="utf-8"))
+    with tempfile.TemporaryDirectory() as tmp:
+        outcome = _replayed(pack, Path(tmp), cache)
+        results = outcome.results
+        results["model"] = results["config"]["model"] = config["model"]
+        results["config"]["model_args"] = config["model_args"]
+        write_outputs(outcome.run_dir, results, outcome.records)
+        publish(outcome.run_dir, results, outcome.records)
+        for name in DERIVED:
+            target = pack / name
+            if target.is_dir():
+                shutil.rmtree(target)
+            elif target.exists():
+                target.unlink()
+            source = outcome.run_dir / name
+            if source.is_dir():
+                shutil.copytree(source, target)
+            elif source.exists():
+                shutil.copy2(source, target)
 
 
 def pack_protocol(config: dict[str, Any]) -> int:
@@ -73,11 +110,16 @@ def validity_table(llm: dict[str, Any]) -> tuple[list[str], dict[str, int]]:
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("pack", type=Path, help="a run folder holding llm_cache.sqlite")
+    parser.add_argument("--rescore", action="store_true",
+                        help="score the pack again with this code (its derived files rewritten)")
+    parser.add_argument("--cache", type=Path, help="the reply cache, when it is not the pack's own")
     args = parser.parse_args(argv)
+    if args.rescore:
+        rescore(args.pack, args.cache)
     recorded = load_results(args.pack)
     with tempfile.TemporaryDirectory() as tmp:
         start = time.perf_counter()
-        replayed = replay(args.pack, Path(tmp))
+        replayed = replay(args.pack, Path(tmp), args.cache)
         seconds = time.perf_counter() - start
     print(f"model: {recorded['model']} · tasks: {len(recorded['tasks'])} · replayed in {seconds:.1f} s")
     lines, totals = validity_table(replayed["llm"])

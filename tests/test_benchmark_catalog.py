@@ -80,3 +80,16 @@ def test_bad_catalog_names_field(tmp_path: Path) -> None:
     with pytest.raises(CatalogError) as err:
         load_catalog(bad)
     assert "sofa" in str(err.value) and str(bad) in str(err.value)
+
+
+def test_generators_are_offered_only_categories_with_rooms() -> None:
+    """Categories kept only to read imported houses (no rooms) stay out of every prompt's
+    vocabulary, so adding one changes no recorded request."""
+    from logicenveval.domain.catalog import load_catalog
+
+    catalog = load_catalog()
+    offered = catalog.generator_categories()
+    assert offered == sorted(offered) and offered
+    assert all(catalog.categories[c].rooms for c in offered)
+    assert any(not c.rooms for c in catalog.categories.values())  # the import-only ones exist
+    assert set(offered) == {n for n, c in catalog.categories.items() if c.rooms}

@@ -35,7 +35,7 @@ class CoT:
         """One attempt per draft the model wrote; a reply that never validates fails all
         `max_environments` drafts it could have written, so failing never beats answering."""
         payload = {"task": brief.model_dump(mode="json"), "n_environments": self.max_environments,
-                   "categories": sorted(ctx.catalog.categories)}
+                   "categories": ctx.catalog.generator_categories()}
         ids = [f"{self.name}-{i:02d}" for i in range(self.max_environments)]
         ctx.plan_attempts(self.max_environments)
         try:

@@ -63,7 +63,7 @@ class Holodeck:
         """One attempt: the scene. It fails when the scene request or its layout fails, or when
         the solver left out an object the scene gave a task role: a scene without a task object
         it had to place is not the environment it set out to build (it stays in plan.json)."""
-        payload = {"task": brief.model_dump(mode="json"), "categories": sorted(ctx.catalog.categories)}
+        payload = {"task": brief.model_dump(mode="json"), "categories": ctx.catalog.generator_categories()}
         env_id = f"{self.name}-00"
         ctx.plan_attempts(1)
         try:

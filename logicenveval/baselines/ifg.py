@@ -56,7 +56,7 @@ class IFG:
             return GenerationResult(
                 failures=[GenerationFailure(stage="ifg_intents", message=str(exc))],
                 attempts=[Attempt(id=i, stage="ifg_intents", reason=str(exc)) for i in ids])
-        categories = sorted(ctx.catalog.categories)
+        categories = ctx.catalog.generator_categories()
         envs = []
         failures = []
         attempts = []

@@ -59,6 +59,13 @@ class Catalog(BaseModel):
     def __contains__(self, name: object) -> bool:
         return name in self.categories
 
+    def generator_categories(self) -> list[str]:
+        """The categories a generator is offered (sorted): those with rooms to stand in. A
+        category without rooms is known only to read environments made elsewhere (AI2-THOR types
+        of imported houses, docs/catalog.md); offering it would change every prompt's vocabulary
+        and with it every recorded request."""
+        return sorted(name for name, cat in self.categories.items() if cat.rooms)
+
 
 @lru_cache(maxsize=8)
 def _load(path: str) -> Catalog:

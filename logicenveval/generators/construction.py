@@ -19,7 +19,7 @@ from logicenveval.envfiles import env_from_dict
 from logicenveval.errors import EnvSpecError, TrajectoryError
 from logicenveval.generators.base import GenerationContext
 from logicenveval.generators.plan import PlanLog
-from logicenveval.llm.ask import ask
+from logicenveval.llm.ask import ask, protocol_of
 from logicenveval.llm.meaning import present_roles
 from logicenveval.llm.replies import (
     FloorPlanReply,
@@ -84,13 +84,30 @@ class EnvironmentBuilder:
         self.use_solver = use_solver
         self.max_refinements = max_refinements
         self.reselect = reselect
+        self._first_plan: FloorPlanReply | None = None
+
+    @property
+    def _reselecting(self) -> bool:
+        """Whether failed selections and layouts re-select (`logicenvgen-reselect`, ours); request
+        protocol 1 (packs recorded before issue 34) always did, and its replay asks the same."""
+        return self.reselect or protocol_of(self.ctx.model) == 1
 
     def _payload(self, **extra: Any) -> dict[str, Any]:
         return {"task": self.brief.model_dump(mode="json"), **extra}
 
     def _vocabulary(self, rooms: list[str], object_ids: list[str] | None = None) -> dict[str, Words]:
-        categories = [*sorted(self.ctx.catalog.categories), *(r.category for r in self.brief.roles.values())]
+        categories = [*self.ctx.catalog.generator_categories(), *(r.category for r in self.brief.roles.values())]
         return scene_vocabulary(rooms, sorted(self.brief.roles), categories, object_ids)
+
+    def _plan_for(self, facts: list[str]) -> FloorPlanReply:
+        """The floor plan of one situation, asked per situation as the paper's §3.3 does; under
+        request protocol 1 (packs recorded before issue 34) the first situation's plan serves
+        every situation of the task, as those packs asked it."""
+        if protocol_of(self.ctx.model) > 1:
+            return self.floor_plan(facts)
+        if self._first_plan is None:
+            self._first_plan = self.floor_plan(facts)
+        return self._first_plan
 
     def floor_plan(self, facts: list[str]) -> FloorPlanReply:
         return ask(self.ctx.model, "floor_plan", self._payload(situation=facts), FloorPlanWire,
@@ -98,9 +115,9 @@ class EnvironmentBuilder:
 
     def select_objects(self, env_id: str, rooms: list[dict[str, Any]], facts: list[str],
                        log: PlanLog, feedback: list[str] | None = None) -> list[ObjectDraft]:
-        categories = sorted(self.ctx.catalog.categories)
+        categories = self.ctx.catalog.generator_categories()
         feedback = list(feedback or [])
-        for attempt in range(self.max_refinements + 1 if self.reselect else 1):
+        for attempt in range(self.max_refinements + 1 if self._reselecting else 1):
             reply = ask(self.ctx.model, "select_objects", self._payload(
                 rooms=rooms, facts=facts, categories=categories, feedback=feedback), ObjectsReply,
                 seed=self.ctx.seed, vocabulary={**self._vocabulary([r["id"] for r in rooms]),
@@ -111,7 +128,7 @@ class EnvironmentBuilder:
                         violated_facts(sym, facts, self.ctx.catalog)]
             if not feedback:
                 return objects
-            if not self.reselect:  # the paper checks no facts here: the environment says what it is
+            if not self._reselecting:  # the paper checks no facts here: the environment says what it is
                 log.add("select_objects", "situation facts not realised", env_id=env_id, problems=feedback)
                 return objects
             log.add("select_objects", "refine", env_id=env_id, attempt=attempt, problems=feedback)
@@ -159,9 +176,9 @@ class EnvironmentBuilder:
 
     def build(self, env_id: str, facts: list[str], claim: dict[str, dict[str, str]] | None,
               plan_task: Task | None, log: PlanLog) -> EnvSpec:
-        rooms = [r.model_dump() for r in self.floor_plan(facts).rooms]
+        rooms = [r.model_dump() for r in self._plan_for(facts).rooms]
         feedback: list[str] = []
-        for attempt in range(self.max_refinements + 1 if self.reselect else 1):
+        for attempt in range(self.max_refinements + 1 if self._reselecting else 1):
             objects = self.select_objects(env_id, rooms, facts, log, feedback)
             relations = self.relations(env_id, objects, log)
             try:

@@ -20,7 +20,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError, create_model
 
 from logicenveval.errors import ConditionSyntaxError, LogicEnvEvalError, ModelReplyError
 from logicenveval.generators.base import GenerationContext
-from logicenveval.llm.ask import ask
+from logicenveval.llm.ask import ask, protocol_of
 from logicenveval.llm.replies import (
     DecomposeWire,
     FactorDraft,
@@ -157,7 +157,8 @@ def derive_plan(brief: TaskBrief, ctx: GenerationContext, *, max_refinements: in
     log = PlanLog()
     vocab = plan_vocabulary(brief)
     subtasks, factors_of = _decompose(brief, ctx, vocab, log, max_refinements, [])
-    for attempt in range(max_refinements):
+    # request protocol 1 (packs recorded before issue 34) never re-asked the decomposition
+    for attempt in range(max_refinements if protocol_of(ctx.model) > 1 else 0):
         feedback = dependence_problems(subtasks, factors_of)
         if not feedback:
             break

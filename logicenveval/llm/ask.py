@@ -34,8 +34,16 @@ _SPLIT = "=== user ==="
 #: texts); 2: compact-JSON line in every prompt, bounds sized from measured content
 #: (`MAX_TOKENS`), a cut reply re-asked with a larger bound, meaning checks (`llm.meaning`).
 #: A model built with `--model-args protocol=N` (`registry.make_model`) carries `reply_protocol`.
+#: Protocol 1 also keeps LogicEnvGen's question flow of those packs (`generators.plan`,
+#: `generators.construction`): no rule-(a) re-ask of the decomposition and one floor plan per
+#: task, since each extra question is a request the packs never recorded.
 PROTOCOL = 2
 PROTOCOLS = (1, 2)
+
+
+def protocol_of(model: Any) -> int:
+    """The request protocol `model` speaks (`reply_protocol`, else `PROTOCOL`)."""
+    return int(getattr(model, "reply_protocol", PROTOCOL))
 
 
 @lru_cache(maxsize=1)
@@ -195,7 +203,7 @@ def ask(
     last reply was cut) names the kind, the model and the problem, and the raw replies are saved
     under `run_dir/llm_errors/`. Counts per kind go to the model's `stats`.
     """
-    protocol = int(getattr(model, "reply_protocol", PROTOCOL))
+    protocol = protocol_of(model)
     schema = specialise(reply_schema(reply_model), vocabulary)
     first = render_messages(kind, payload, schema, protocol)
     messages = first
