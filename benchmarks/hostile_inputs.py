@@ -46,6 +46,8 @@ Then round 3 (issue 37) — plug-in loading, `--generator-args`, numeric options
 (`plugin_cases`): each case a fresh CLI process that must give its documented exit code and
 one line without a traceback within 60 s. Last line:
 `plugins3: cases=<int> failures=<int> worst_seconds=<float>`.
+
+`python benchmarks/hostile_inputs.py round3` runs only the third pass's three blocks.
 """
 
 from __future__ import annotations
@@ -613,7 +615,11 @@ def plugin_cases() -> None:
 
 
 if __name__ == "__main__":
-    if sys.argv[1:] == ["io"]:  # only this pass's cases
+    if sys.argv[1:] == ["round3"]:  # only the third pass's cases (issue 37)
+        io_cases()
+        llm_cases_round3()
+        plugin_cases()
+    elif sys.argv[1:] == ["io"]:
         io_cases()
     else:
         main()

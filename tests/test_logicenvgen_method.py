@@ -29,7 +29,9 @@ from logicenveval.runner.config import RunConfig
 
 
 class Counting:
-    """The offline model, counting request kinds; `select_objects` replies can drop a role."""
+    """The offline model, counting request kinds; `select_objects` replies can misplace a role's
+    object (floor <-> on the table), so the situation's facts do not hold while every role stays
+    bound (a reply leaving a role out is re-asked as invalid, `llm.meaning`)."""
 
     name = "offline"
 
@@ -44,7 +46,9 @@ class Counting:
         reply = self.inner.complete(request)
         if request.kind == "select_objects" and self.drop:
             data = json.loads(reply)
-            data["objects"] = [o for o in data["objects"] if o["id"] != self.drop]
+            for o in data["objects"]:
+                if o["id"] == self.drop:
+                    o["placement"] = "on:table" if o["placement"] == "floor" else "floor"
             reply = json.dumps(data)
         return reply
 
@@ -56,7 +60,7 @@ def _generate(generator: str, model: Any, task_id: str = "clean_living_room") ->
 
 
 def test_logicenvgen_asks_object_selection_once_per_situation_and_reselect_re_asks() -> None:
-    paper = Counting(drop="toy")  # every selection misses a situation object
+    paper = Counting(drop="toy")  # every selection misplaces a situation object
     result = _generate("logicenvgen", paper)
     n = len(result.attempts)
     assert paper.kinds["select_objects"] == n and paper.kinds["floor_plan"] == n
@@ -76,7 +80,8 @@ class Dependent(Counting):
         if request.kind == "decompose_task" and not request.payload.get("feedback"):
             data = json.loads(reply)
             toy = next(s for s in data["subtasks"] if "toy" in s["roles"][:1])
-            data["subtasks"].append({**toy, "id": "toy_again"})
+            data["subtasks"].append({**toy, "id": "toy_again",
+                                     "description": "check the toy once more and put it away"})
             reply = json.dumps(data)
         return reply
 

@@ -160,7 +160,7 @@ def print_size(run_dir: Path) -> None:
     """The run folder's size by part, so that a run that grows its folder is noticed."""
     from logicenveval.runner.footprint import folder_bytes, size_text
 
-    print(f"run folder size: {size_text(folder_bytes(run_dir))}")
+    print(f"run folder size: {size_text(folder_bytes(run_dir), parts=3)}")  # fits 100 columns
 
 
 def report_failures(records: Sequence[UnitRecord]) -> int:
