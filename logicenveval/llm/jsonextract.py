@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import re
+from collections.abc import Iterator
 from typing import Any
 
 #: deepest nesting of a reply's JSON value: far above any schema's, far below the interpreter's
@@ -16,10 +17,10 @@ class JSONExtractionError(ValueError):
     """No parseable JSON value in a reply; the message says what was wrong (for re-asking)."""
 
 
-def _balanced_spans(text: str) -> list[str]:
-    """Top-level `{...}` / `[...]` spans, tracking strings and escapes."""
-    spans: list[str] = []
-    depth, start, in_str, esc = 0, -1, False, False
+def _brackets(text: str) -> Iterator[tuple[int, int, bool]]:
+    """(index, depth after it, opening?) of every bracket outside JSON strings; a quote opens a
+    string only inside brackets, since the prose around a reply may quote words."""
+    depth, in_str, esc = 0, False, False
     for i, ch in enumerate(text):
         if in_str:
             if esc:
@@ -32,36 +33,28 @@ def _balanced_spans(text: str) -> list[str]:
         if ch == '"' and depth > 0:
             in_str = True
         elif ch in "{[":
-            if depth == 0:
-                start = i
             depth += 1
+            yield i, depth, True
         elif ch in "}]" and depth > 0:
             depth -= 1
-            if depth == 0:
-                spans.append(text[start : i + 1])
+            yield i, depth, False
+
+
+def _balanced_spans(text: str) -> list[str]:
+    """Top-level `{...}` / `[...]` spans, tracking strings and escapes."""
+    spans: list[str] = []
+    start = -1
+    for i, depth, opening in _brackets(text):
+        if opening and depth == 1:
+            start = i
+        elif not opening and depth == 0:
+            spans.append(text[start : i + 1])
     return spans
 
 
 def _too_deep(text: str) -> bool:
     """Whether the brackets of `text` (outside strings) nest deeper than MAX_DEPTH."""
-    depth, in_str, esc = 0, False, False
-    for ch in text:
-        if in_str:
-            if esc:
-                esc = False
-            elif ch == "\\":
-                esc = True
-            elif ch == '"':
-                in_str = False
-        elif ch == '"':
-            in_str = True
-        elif ch in "{[":
-            depth += 1
-            if depth > MAX_DEPTH:
-                return True
-        elif ch in "}]":
-            depth -= 1
-    return False
+    return any(depth > MAX_DEPTH for _, depth, _ in _brackets(text))
 
 
 def extract_json(reply: str) -> Any:
