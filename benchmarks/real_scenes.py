@@ -1,5 +1,7 @@
 """PhyPR on real AI2-THOR / ProcTHOR houses (tests/data/houses, Apache-2.0; issue 35).
 
+The houses: AI2-THOR's `train_4`, ProcTHOR-10K train 1 and `house_3703` (every `*.json` there).
+
 Per house: objects (with children), how many got a catalog category (typed), how many were
 sized from ProcTHOR's asset database, entity failures (objects named by one), whether the floor
 plan passes and how many rooms are unreachable — imported for every task given (default: three

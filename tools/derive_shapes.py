@@ -21,7 +21,12 @@ bottom, 1 = its top) or depth (0 = its back, 1 = its front):
   box below the seat (`seat`: the median height things rest at on it) plus a back strip whose depth is what the data leaves behind tucked chairs
   (1 - the 95th percentile of how far chairs reach under tables and desks). Tops (tables, desks,
   counters) with >= 3 things found tucked under them: a slab above the highest solid part of
-  those (a tucked seat's solid part ends at its seat). Everything else: the whole box.
+  those (a tucked seat's solid part ends at its seat). A television (its box includes its foot;
+  the screen above is thin): the box above the free space in front of its foot, i.e. above the
+  90th percentile of the tops of the objects that rest on the TV's own receptacle inside its box
+  (by > 1 cm on every axis, the collision tolerance; tops below the TV's top; >= 3 of them) — the
+  highest tenth are boxes that overhang (a houseplant's leaves) or stand beside the screen.
+  Everything else: the whole box.
 * `open_top`: whether objects held inside it stand out of its top in the scenes (>= 2 and >= 5 %
   of them by more than 1 cm): a sink, a bin or a box is open, a fridge or a drawer is not.
 * `floor_spread`: how far settled floor objects' boxes dip below the floor (5th percentile) — the
@@ -46,6 +51,8 @@ SEATS = ("Chair", "ArmChair", "Sofa", "Bed", "Stool", "Ottoman")
 TOPS = ("DiningTable", "Desk", "CounterTop", "CoffeeTable", "SideTable")
 #: objects seen tucked under tops (the others overlapping a top are its own drawers and shelves)
 TUCKED = ("Chair", "Stool", "Ottoman", "Footstool", "GarbageCan", "Box", "LaundryHamper")
+#: objects whose box includes a deep foot under a thin solid part
+FOOTED = ("Television",)
 
 
 def _box(o: dict[str, Any]) -> tuple[list[float], list[float]]:
@@ -75,6 +82,28 @@ def clusters(levels: list[float], gap: float = 0.08) -> list[tuple[float, float,
 def _axis_aligned(o: dict[str, Any]) -> bool:
     r = o["rotation"]["y"] % 90
     return min(r, 90 - r) < 2
+
+
+def beside_foot(scenes: list[list[dict[str, Any]]], otype: str) -> tuple[int, list[float]]:
+    """(how many `otype` objects, the tops of the objects resting on their receptacles inside their
+    boxes, as fractions of their height): the free space in front of a TV's foot."""
+    count, tops = 0, []
+    for scene in scenes:
+        for tv in scene:
+            if tv["objectType"] != otype:
+                continue
+            count += 1
+            parents = set(tv.get("parentReceptacles") or [])
+            tlo, thi = _box(tv)
+            for o in scene:
+                if o is tv or not parents & set(o.get("parentReceptacles") or []):
+                    continue
+                olo, ohi = _box(o)
+                if min(min(ohi[k], thi[k]) - max(olo[k], tlo[k]) for k in range(3)) <= 0.01:
+                    continue
+                if ohi[1] < thi[1]:
+                    tops.append((ohi[1] - tlo[1]) / (thi[1] - tlo[1]))
+    return count, tops
 
 
 def derive(meta: dict[str, Any]) -> dict[str, Any]:
@@ -166,6 +195,12 @@ def derive(meta: dict[str, Any]) -> dict[str, Any]:
         if otype in types and len(mine) >= 3:  # a top is solid above the highest thing tucked under it
             types[otype]["solid"] = [{"y": [round(max(mine), 3), 1.0], "z": [0.0, 1.0]}]
             types[otype]["tucked"] = len(mine)
+    for otype in FOOTED:
+        count, tops = beside_foot(scenes, otype)
+        if len(tops) >= 3:  # not a receptacle: nothing rests on it, objects rest beside its foot
+            types[otype] = {"beside_foot": len(tops), "levels": [[1.0, 1.0]], "objects": count,
+                            "open_top": False,
+                            "solid": [{"y": [round(_quantile(tops, 0.9), 3), 1.0], "z": [0.0, 1.0]}]}
     return {
         "source": "ProcTHOR procthor/databases/ai2thor-object-metadata.json (Apache-2.0), "
                   f"{len(scenes)} AI2-THOR scenes; derived by tools/derive_shapes.py",
@@ -205,7 +240,7 @@ def main(argv: list[str] | None = None) -> int:
     data["categories"] = {k: v for k, v in category_types(ROOT / "benchmark_data" / "catalog.json").items()
                           if v in data["types"]}
     Path(args.out).write_text(json.dumps(data, indent=1, sort_keys=True) + "\n", encoding="utf-8")
-    print(f"wrote {args.out}: {len(data['types'])} receptacle types")
+    print(f"wrote {args.out}: {len(data['types'])} types (receptacles, seats, tops, footed)")
     return 0
 
 

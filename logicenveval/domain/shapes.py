@@ -5,7 +5,7 @@ scene metadata (settled bounding boxes of every object in its hand-built scenes,
 ProcTHOR's databases): per AI2-THOR type, the `levels` where objects rest (sofa and armchair
 seats, shelf bands of TV stands and shelving units, tops) and the `solid` parts of the box (a
 seat below its seat height plus a back strip; a table, desk or coffee table only above the free
-space under its top). A catalog category takes the shape of its AI2-THOR type (`categories`).
+space under its top; a TV only above the free space in front of its foot). A catalog category takes the shape of its AI2-THOR type (`categories`).
 Entity PhyPR uses them for every environment, whoever wrote it, and the layout solver places
 objects on them (docs/physics.md "Shapes").
 """
