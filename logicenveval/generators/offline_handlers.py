@@ -139,11 +139,13 @@ GRID, FILL = 0.05, 0.8
 
 def misfits(objects: list[dict[str, Any]], catalog: Catalog) -> list[str]:
     """Placements that cannot be laid out, as facts that rule them out: an item larger than its
-    holder's largest top (or opening), or the items on one holder, at the largest size the
-    layout may draw for each, too many for its smallest top (the last listed goes elsewhere)."""
+    holder's largest top (or opening), or the items on one holder (or inside it: the layout packs
+    the two apart), at the largest size the layout may draw for each, too many for its smallest top
+    (the last listed goes elsewhere)."""
     by_id = {o["id"]: o for o in objects}
     out: list[str] = []
-    load: dict[str, float] = {}
+    #: filled cells per (holder, on|inside): the layout packs a holder's top and inside apart
+    load: dict[tuple[str, str], float] = {}
     for o in objects:
         how, _, holder = str(o["placement"]).partition(":")
         if how not in ("on", "inside") or holder not in by_id:
@@ -161,10 +163,10 @@ def misfits(objects: list[dict[str, Any]], catalog: Catalog) -> list[str]:
         top = [max(host.size_min[k], item.size_min[k]) for k in (0, 2)]
         cells = math.prod(math.ceil(min(item.size_max[k], t) / GRID) for k, t in zip((0, 2), top, strict=True))
         room = math.prod(math.floor(t / GRID) for t in top)
-        if load.get(holder, 0.0) + cells > FILL * room and load.get(holder):
+        if load.get((holder, how), 0.0) + cells > FILL * room and load.get((holder, how)):
             out.append(pred)
             continue
-        load[holder] = load.get(holder, 0.0) + cells
+        load[(holder, how)] = load.get((holder, how), 0.0) + cells
     return out
 
 

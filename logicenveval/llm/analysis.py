@@ -908,6 +908,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         factor.places = set(e.get("places", set()))
         slot_factor[(subject, kind, key)] = factor
         factors.append(factor)
+    factors = _settle_stated(factors, brief, catalog, slot_factor)
     for factor in factors:
         for slot_c, negated, value in factor.raw_context:
             dep = slot_factor.get(slot_c)
@@ -917,6 +918,30 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     groups, group_roles = _group(factors)
     covered = set().union(*group_roles) if group_roles else set()
     return TaskAnalysis(sentences, clauses, factors, groups, group_roles, set(lex.roles) - covered)
+
+
+def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Catalog,
+                   slot_factor: dict[tuple[str, str, str], Factor]) -> list[Factor]:
+    """A placement the description states outright (`llm.placement`: "a coffee table with a mug on
+    it", "a kitchen with a stove") is no uncertain location: its yes/no factor is dropped; where the
+    text lists the places an object may be ("kept in the vanity, unless someone stuffed it into the
+    medicine cabinet"), those places are all its values (no "elsewhere")."""
+    from logicenveval.llm.placement import described_placements  # reads sentences with this module
+
+    stated = set(described_placements(brief, catalog))
+    out: list[Factor] = []
+    for f in factors:
+        if f.kind != "location" or not stated & set(f.values.values()):
+            out.append(f)
+            continue
+        if set(f.values) == {"yes", "no"}:
+            for slot, g in list(slot_factor.items()):
+                if g is f:
+                    del slot_factor[slot]
+            continue
+        f.values.pop("elsewhere", None)
+        out.append(f)
+    return out
 
 
 def _contrasted(clauses: list[Clause], text: str) -> set[tuple[str, str]]:
