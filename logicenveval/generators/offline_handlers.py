@@ -16,6 +16,7 @@ from typing import Any
 from logicenveval.domain.catalog import Catalog, load_catalog
 from logicenveval.generators.realise import task_objects
 from logicenveval.llm.base import ChatRequest
+from logicenveval.llm.placement import described_placements
 from logicenveval.llm.offline import handler
 from logicenveval.model.rooms import room_type_of
 
@@ -118,14 +119,17 @@ def feedback_facts(feedback: list[str], facts: list[str]) -> list[str]:
 
 def _task_objects(payload: dict[str, Any]) -> list[dict[str, Any]]:
     """One object per role, placed so that the situation facts (and the layout's feedback) hold
-    and every object fits where it is put (the asset sizes, as a model that knows them would)."""
+    and every object fits where it is put (the asset sizes, as a model that knows them would).
+    A placement the situation requires or the description states ("the cloth lives in the
+    vanity") is kept even when the estimate finds the holder crowded: the reader was told so."""
     catalog = load_catalog()
     facts = list(payload.get("facts") or [])
     facts += feedback_facts(list(payload.get("feedback") or []), facts)
+    told = set(facts) | set(described_placements(payload["task"], catalog))
     banned: list[str] = []
     objects = task_objects(payload["task"], facts, catalog)
     for _ in range(len(objects)):
-        new = [f for f in misfits(objects, catalog) if f not in banned and f[4:] not in facts]
+        new = [f for f in misfits(objects, catalog) if f not in banned and f[4:] not in told]
         if not new:
             break
         banned += new
