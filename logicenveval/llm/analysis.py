@@ -936,7 +936,7 @@ def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Cat
     medicine cabinet"), those places are all its values (no "elsewhere")."""
     from logicenveval.llm.placement import described_placements  # reads sentences with this module
 
-    stated = set(described_placements(brief, catalog))
+    stated = set(described_placements(brief, catalog, resting=False))
     out: list[Factor] = []
     for f in factors:
         if f.kind != "location" or not stated & set(f.values.values()):

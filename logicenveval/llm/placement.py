@@ -36,10 +36,13 @@ _ARTICLES = frozenset({"a", "an", "the", "some", "any", "its", "their", "our", "
 _INDEFINITE = frozenset({"a", "an"})
 
 
-def described_placements(brief: Mapping[str, Any], catalog: Catalog | None = None) -> list[str]:
+def described_placements(brief: Mapping[str, Any], catalog: Catalog | None = None, *,
+                         resting: bool = True) -> list[str]:
     """Facts (condition language) placing the brief's roles where its description says they are:
     `on(lamp, nightstand)`, `inside(old_towel, vanity)`, `in_room(drying_rack, balcony)`. One fact
-    per object; on/inside wins over a room; the first statement wins."""
+    per object; on/inside wins over a room; the first statement wins. `resting=False` leaves out
+    what a noun phrase only presumes ("check the towel on the drying rack", "if the mug on the
+    table is dirty"): a description may still ask whether it is there."""
     catalog = catalog or load_catalog()
     if not brief.get("roles"):
         return []
@@ -54,7 +57,8 @@ def described_placements(brief: Mapping[str, Any], catalog: Catalog | None = Non
         mentions = [m for m in lex.find_mentions(toks) if len(m.roles) == 1]
         _kept(catalog, lex, raw, mentions, recent, held)
         _with(lex, raw, toks, low, mentions, catalog, held)
-        _resting(catalog, lex, raw, mentions, held)
+        if resting:
+            _resting(catalog, lex, raw, mentions, held)
         _room_lists(raw, toks, low, mentions, rooms)
         _in_room(raw, mentions, rooms)
         recent += [m.roles[0] for m in mentions if m.kind == "role"]
