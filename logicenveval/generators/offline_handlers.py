@@ -16,8 +16,8 @@ from typing import Any
 from logicenveval.domain.catalog import Catalog, load_catalog
 from logicenveval.generators.realise import task_objects
 from logicenveval.llm.base import ChatRequest
-from logicenveval.llm.placement import described_placements
 from logicenveval.llm.offline import handler
+from logicenveval.llm.placement import described_placements
 from logicenveval.model.rooms import room_type_of
 
 #: typical floor area (m²) per room type

@@ -20,7 +20,7 @@ from logicenveval.llm.lexicon import Lexicon, Mention, tokens
 #: "it's kept in the vanity", "we keep spares in the vanity", "it lives in the vanity"
 KEEP_VERBS = frozenset({"keep", "keeps", "kept", "live", "lives", "lived"})
 #: words between an object and "in/on <room>" that still describe where it is
-#: ("the drying rack out on the balcony", "a pan may be in the kitchen")
+#: ("the drying rack out on the balcony", "the nearest sink is in the kitchen")
 _BETWEEN = frozenset({"out", "over", "down", "up", "is", "are", "be", "still", "always"})
 #: words before an object that make what follows a condition or a possibility, not a statement
 #: ("if there is a pan in the kitchen", "a pan may be in the kitchen")
