@@ -6,6 +6,8 @@ from __future__ import annotations
 from typing import Any
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from logicenveval.benchmark import load_task
 from logicenveval.domain.catalog import load_catalog
@@ -13,6 +15,7 @@ from logicenveval.generators.offline_handlers import misfits
 from logicenveval.generators.realise import realise
 from logicenveval.llm.analysis import analyse
 from logicenveval.llm.placement import described_placements
+from logicenveval.model.conditions import Pred, parse
 
 CATALOG = load_catalog()
 
@@ -140,3 +143,25 @@ def test_a_holders_top_and_inside_are_packed_apart() -> None:
     assert misfits(objects, CATALOG) == []
     objects[1]["placement"] = "inside:vanity"
     assert misfits(objects, CATALOG) == ["not inside(towel, vanity)"]
+
+
+_WORDS = ["the", "a", "with", "on", "in", "into", "it", "is", "kept", "keep", "lives", "out", "kitchen",
+          "balcony", "nightstand", "lamp", "drying", "rack", "mug", "coffee", "table", "vanity", "towel",
+          "if", "may", "put", "there", "where", "are", "has", ",", ".", "(", ")", "and", "we", "spares"]
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.sampled_from(_WORDS), max_size=40))
+def test_any_wording_gives_one_parseable_fact_per_known_object(words: list[str]) -> None:
+    """Whatever the text, the reader names only the brief's roles and rooms, says one thing per
+    object, and every fact parses in the condition language."""
+    brief = _brief(" ".join(words), ["kitchen", "balcony"], lamp="table_lamp", nightstand="nightstand",
+                   drying_rack="drying_rack", mug="mug", coffee_table="coffee_table",
+                   vanity="bathroom_vanity", towel="towel")
+    preds = [parse(f) for f in described_placements(brief, CATALOG)]
+    subjects = [p.args[0] for p in preds if isinstance(p, Pred)]
+    assert len(subjects) == len(set(subjects)) == len(preds)
+    for pred in preds:
+        assert isinstance(pred, Pred) and pred.name in ("on", "inside", "in_room")
+        assert pred.args[0] in brief["roles"] and pred.args[0] != pred.args[1]
+        assert pred.args[1] in (brief["rooms"] if pred.name == "in_room" else brief["roles"])
