@@ -85,7 +85,7 @@ def test_what_is_no_stated_placement(description: str, roles: dict[str, str]) ->
 def test_a_presumed_place_is_left_out_when_asked_for_settled_ones() -> None:
     brief = _brief("Check the towel on the drying rack.", ["laundry_room"], towel="towel",
                    drying_rack="drying_rack")
-    assert described_placements(brief, CATALOG, resting=False) == []
+    assert described_placements(brief, CATALOG, kinds=frozenset({"settled", "kept"})) == []
 
 
 @pytest.mark.parametrize(("task_id", "facts"), [

@@ -930,24 +930,27 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
 
 def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Catalog,
                    slot_factor: dict[tuple[str, str, str], Factor]) -> list[Factor]:
-    """A placement the description states outright (`llm.placement`: "a coffee table with a mug on
-    it", "a kitchen with a stove") is no uncertain location: its yes/no factor is dropped; where the
-    text lists the places an object may be ("kept in the vanity, unless someone stuffed it into the
-    medicine cabinet"), those places are all its values (no "elsewhere")."""
+    """A placement the description states (`llm.placement`: "a coffee table with a mug on it", "a
+    kitchen with a stove") is no uncertain location: its yes/no factor is dropped. Where the text
+    says where an object is kept and lists the other place it may be ("kept in the vanity, unless
+    someone stuffed it into the medicine cabinet"), those places are all its values: no
+    "elsewhere", unless the text speaks of one ("wherever else it may be lying")."""
     from logicenveval.llm.placement import described_placements  # reads sentences with this module
 
-    stated = set(described_placements(brief, catalog, resting=False))
+    settled = set(described_placements(brief, catalog, kinds=frozenset({"settled"})))
+    kept = set(described_placements(brief, catalog, kinds=frozenset({"kept"})))
+    low = " ".join(w for w, _, _ in tokens(_expand(str(brief.get("description", "")))))
+    elsewhere = any(re.search(rf"\b{cue}\b", low) for cue in ELSEWHERE + ("wherever",))
     out: list[Factor] = []
     for f in factors:
-        if f.kind != "location" or not stated & set(f.values.values()):
-            out.append(f)
-            continue
-        if set(f.values) == {"yes", "no"}:
+        values = set(f.values.values())
+        if f.kind == "location" and set(f.values) == {"yes", "no"} and settled & values:
             for slot, g in list(slot_factor.items()):
                 if g is f:
                     del slot_factor[slot]
             continue
-        f.values.pop("elsewhere", None)
+        if f.kind == "location" and "elsewhere" in f.values and kept & values and not elsewhere:
+            f.values.pop("elsewhere")
         out.append(f)
     return out
 

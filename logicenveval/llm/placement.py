@@ -14,8 +14,8 @@ from collections.abc import Mapping
 from typing import Any
 
 from logicenveval.domain.catalog import Catalog, load_catalog
-from logicenveval.llm.analysis import ACTIONS, PREP_IN, PREP_ON, _expand, _sentences
-from logicenveval.llm.lexicon import Lexicon, Mention, tokens
+from logicenveval.llm.analysis import ACTIONS, PREP_IN, PREP_ON, STATE_WORDS, _expand, _sentences
+from logicenveval.llm.lexicon import COLOR_WORDS, Lexicon, Mention, tokens
 
 #: "it's kept in the vanity", "we keep spares in the vanity", "it lives in the vanity"
 KEEP_VERBS = frozenset({"keep", "keeps", "kept", "live", "lives", "lived"})
@@ -26,6 +26,7 @@ _BETWEEN = frozenset({"out", "over", "down", "up", "is", "are", "be", "still", "
 #: ("if there is a pan in the kitchen", "a pan may be in the kitchen")
 _UNSURE = frozenset({"if", "whether", "unless", "when", "case", "may", "might", "maybe", "perhaps",
                      "possibly", "could", "once", "while"})
+_MODAL = frozenset({"may", "might", "could", "maybe", "perhaps", "possibly"})
 #: prepositions of where a thing is (not "into"/"onto", which say where it goes)
 _AT = frozenset({"on", "in", "inside", "atop", "upon"})
 #: words that let a room introduce a list of what it holds ("a kitchen with a stove, ...",
@@ -36,13 +37,18 @@ _ARTICLES = frozenset({"a", "an", "the", "some", "any", "its", "their", "our", "
 _INDEFINITE = frozenset({"a", "an"})
 
 
+#: what a phrase says of a place: `settled` (a statement: "a nightstand with a lamp", "a kitchen
+#: with a stove", "the drying rack out on the balcony"), `kept` (where it belongs: "it's kept in
+#: the vanity", which the text may still doubt: "wherever else it may be lying"), `presumed` (a
+#: noun phrase takes it for granted: "check the towel on the drying rack")
+KINDS = frozenset({"settled", "kept", "presumed"})
+
+
 def described_placements(brief: Mapping[str, Any], catalog: Catalog | None = None, *,
-                         resting: bool = True) -> list[str]:
+                         kinds: frozenset[str] = KINDS) -> list[str]:
     """Facts (condition language) placing the brief's roles where its description says they are:
-    `on(lamp, nightstand)`, `inside(old_towel, vanity)`, `in_room(drying_rack, balcony)`. One fact
-    per object; on/inside wins over a room; the first statement wins. `resting=False` leaves out
-    what a noun phrase only presumes ("check the towel on the drying rack", "if the mug on the
-    table is dirty"): a description may still ask whether it is there."""
+    `on(lamp, nightstand)`, `inside(old_towel, vanity)`, `in_room(drying_rack, balcony)`, from the
+    phrases of `kinds`. One fact per object; on/inside wins over a room; the first phrase wins."""
     catalog = catalog or load_catalog()
     if not brief.get("roles"):
         return []
@@ -55,12 +61,15 @@ def described_placements(brief: Mapping[str, Any], catalog: Catalog | None = Non
         low = sentence.lower()
         raw = [low[a:b] for _, a, b in toks]
         mentions = [m for m in lex.find_mentions(toks) if len(m.roles) == 1]
-        _kept(catalog, lex, raw, mentions, recent, held)
-        _with(lex, raw, toks, low, mentions, catalog, held)
-        if resting:
+        if "kept" in kinds:
+            _kept(catalog, lex, raw, mentions, recent, held)
+        if "settled" in kinds:
+            _with(lex, raw, toks, low, mentions, catalog, held)
+        if "presumed" in kinds:
             _resting(catalog, lex, raw, mentions, held)
-        _room_lists(raw, toks, low, mentions, rooms)
-        _in_room(raw, mentions, rooms)
+        if "settled" in kinds:
+            _room_lists(raw, toks, low, mentions, rooms)
+            _in_room(raw, mentions, rooms)
         recent += [m.roles[0] for m in mentions if m.kind == "role"]
     out = list(held.values())
     out += [f"in_room({role}, {room})" for role, room in rooms.items() if role not in held]
@@ -149,8 +158,13 @@ def _room_lists(raw: list[str], toks: list[tuple[str, int, int]], low: str, ment
             if later.kind == "room" or "(" in low[toks[m.end - 1][2]:toks[later.start][1]] \
                     or ")" in low[toks[m.end - 1][2]:toks[later.start][1]]:
                 break
-            if later.kind == "role" and _named(raw, later.start):
+            if later.kind == "role" and _named(raw, later.start) and not _doubted(raw, later):
                 rooms.setdefault(later.roles[0], m.roles[0])
+
+
+def _doubted(raw: list[str], m: Mention) -> bool:
+    """"where a pan may be", "where there might be a pan": the object only possibly there."""
+    return bool(set(raw[m.end:m.end + 2]) & _MODAL or set(raw[max(0, m.start - 4):m.start]) & _UNSURE)
 
 
 def _named(raw: list[str], start: int) -> bool:
@@ -179,8 +193,9 @@ def _moved_or_unsure(raw: list[str], start: int) -> bool:
     """The object at `start` follows an instruction verb ("put the mug ...") or a condition /
     possibility cue a few words before ("if there is a pan ...")."""
     j = start - 1
-    while j >= 0 and (raw[j] in _ARTICLES or re.fullmatch(r"[a-z]+(ed|est)", raw[j])):
-        j -= 1
+    while j >= 0 and (raw[j] in _ARTICLES or raw[j] in STATE_WORDS or raw[j] in COLOR_WORDS
+                      or re.fullmatch(r"[a-z]+(ed|est)", raw[j])):
+        j -= 1  # "put a clean lunch box in the kitchen cabinet"
     return j >= 0 and raw[j] in ACTIONS or bool(set(raw[max(0, start - 4):start]) & _UNSURE)
 
 
