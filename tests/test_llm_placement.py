@@ -165,3 +165,19 @@ def test_any_wording_gives_one_parseable_fact_per_known_object(words: list[str])
         assert isinstance(pred, Pred) and pred.name in ("on", "inside", "in_room")
         assert pred.args[0] in brief["roles"] and pred.args[0] != pred.args[1]
         assert pred.args[1] in (brief["rooms"] if pred.name == "in_room" else brief["roles"])
+
+
+def test_a_possible_object_in_a_room_list_is_not_placed() -> None:
+    brief = _brief("The flat has a kitchen with a stove and a sink, where a pan may be.", ["kitchen"],
+                   stove="stove", sink="sink", pan="pan")
+    facts = described_placements(brief, CATALOG)
+    assert "in_room(stove, kitchen)" in facts and not [f for f in facts if "pan" in f]
+
+
+def test_where_a_thing_is_kept_stays_askable_when_the_text_speaks_of_elsewhere() -> None:
+    """"The remote is kept on the TV stand - wherever else it may be lying, bring it back there":
+    where it belongs, not where it is."""
+    brief = _brief("The TV remote is kept on the TV stand - wherever else it may be lying, bring it back there.",
+                   ["living_room"], remote="remote_control", tv_stand="tv_stand")
+    assert described_placements(brief, CATALOG) == ["on(remote, tv_stand)"]
+    assert [f.id for f in analyse(brief).factors if f.subject == "remote"]

@@ -931,16 +931,17 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
 def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Catalog,
                    slot_factor: dict[tuple[str, str, str], Factor]) -> list[Factor]:
     """A placement the description states (`llm.placement`: "a coffee table with a mug on it", "a
-    kitchen with a stove") is no uncertain location: its yes/no factor is dropped. Where the text
-    says where an object is kept and lists the other place it may be ("kept in the vanity, unless
-    someone stuffed it into the medicine cabinet"), those places are all its values: no
-    "elsewhere", unless the text speaks of one ("wherever else it may be lying")."""
+    kitchen with a stove") is no uncertain location: its yes/no factor is dropped. So is where an
+    object is kept ("it's kept in the vanity, unless someone stuffed it into the medicine
+    cabinet"), and a factor listing the places it may be has no "elsewhere" — unless the text
+    speaks of one ("wherever else it may be lying")."""
     from logicenveval.llm.placement import described_placements  # reads sentences with this module
 
-    settled = set(described_placements(brief, catalog, kinds=frozenset({"settled"})))
-    kept = set(described_placements(brief, catalog, kinds=frozenset({"kept"})))
     low = " ".join(w for w, _, _ in tokens(_expand(str(brief.get("description", "")))))
     elsewhere = any(re.search(rf"\b{cue}\b", low) for cue in ELSEWHERE + ("wherever",))
+    settled = set(described_placements(brief, catalog, kinds=frozenset({"settled"} | (
+        set() if elsewhere else {"kept"}))))
+    kept = set(described_placements(brief, catalog, kinds=frozenset({"kept"})))
     out: list[Factor] = []
     for f in factors:
         values = set(f.values.values())
