@@ -259,15 +259,16 @@ def run_dir(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 def test_run_ends_with_the_reasons(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    assert main(["run", "--model", "offline", "--tasks", "bathroom_towel_refresh", "--generators", "ifg",
+    # description mode: two trash bags the offline names cannot tell apart leave roles ambiguous
+    assert main(["run", "--model", "offline", "--tasks", "multi_room_trash_run", "--generators", "logicenvgen",
                  "--executor", "inprocess", "--quiet", "--output", str(tmp_path)]) == 0
     out = capsys.readouterr().out
     why = out[out.index("Why (count × reason; examples in leaderboard.html)"):]
-    assert "ifg: " in why and "role … is not bound" in why
+    assert "logicenvgen: " in why and "role … is ambiguous" in why
     # the terminal summary fits 100 columns (issue 36); a long path gets a line of its own, whole
     assert max(len(line) for line in out.splitlines() if not line.startswith(str(tmp_path))) <= 100
     page = (_only_dir(tmp_path) / "leaderboard.html").read_text(encoding="utf-8")
-    assert "role vanity is not bound" in page  # the examples are on the page
+    assert "role full_bag is ambiguous" in page  # the examples are on the page
 
 
 def test_same_environments_under_two_names_same_interval(run_dir: Path, tmp_path: Path) -> None:
@@ -449,8 +450,9 @@ def _found(filter_text: str, typed: str) -> bool:
 def faulty_run(tmp_path_factory: pytest.TempPathFactory) -> Path:
     """A run with every kind of reason: ill-formed, a failing correct BT, PhyPR codes, extra checks."""
     out = tmp_path_factory.mktemp("faulty")
-    assert main(["run", "--model", "offline", "--tasks", "bathroom_towel_refresh", "--generators",
-                 "cot,holodeck", "--executor", "inprocess", "--quiet", "--output", str(out)]) == 0
+    assert main(["run", "--model", "offline", "--tasks", "bathroom_towel_refresh,multi_room_trash_run",
+                 "--generators", "cot,holodeck,logicenvgen", "--executor", "inprocess", "--quiet",
+                 "--output", str(out)]) == 0
     return _only_dir(out)
 
 

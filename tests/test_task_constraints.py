@@ -188,3 +188,21 @@ def test_evaluate_roles_option_binds_first(tmp_path: Path) -> None:
     given = sample("--roles", "red_box=box_a,white_box=box_b")
     assert given["well_formed"] and any("attr(red_box, color, red)" in v and "has no color" in v
                                         for v in given["violations"])
+
+
+def test_the_drying_rack_off_the_balcony_is_no_valid_scenario() -> None:
+    """A placement the description asserts ("the drying rack out on the balcony") is a constraint:
+    the rack moved into the laundry room leaves the environment judged but invalid, naming it."""
+    task = load_task("laundry_drying_rack")
+    assert "in_room(drying_rack, balcony)" in {c.fact for c in task.constraints}
+    path = {"shirt_state": "dry", "towel_on_rack": "no", "sock_on_floor": "no"}
+    env = situation_env(task, trajectory_from_assignment(task, path), CATALOG)
+    assert {o.id: o.room for o in env.objects}["drying_rack"] == "balcony"
+    policies = _policies(task)
+    ok = evaluate_env("g", task, env, policies, CATALOG).sample
+    assert ok.violations == [] and task_metrics(task, [ok]).n_valid == 1
+    moved = evaluate_env("g", task, _edit(env, "drying_rack", room="laundry_room"), policies, CATALOG).sample
+    assert moved.well_formed
+    assert len(moved.violations) == 1 and "in_room(drying_rack, balcony)" in moved.violations[0]
+    assert "the drying rack out on the balcony" in moved.violations[0]
+    assert task_metrics(task, [moved]).n_valid == 0

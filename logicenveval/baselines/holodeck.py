@@ -246,7 +246,9 @@ def _held_objects(drafts: dict[str, ObjectDraft], by_room: dict[str, RoomRect],
                 base = hy - h["size"][1] / 2 + 0.02
             else:
                 top, base = _surface(h)
-            box, size, base = _free_spot(holder, top, variants, base, hy + h["size"][1] / 2 if container else None, taken)
+            # a holder's inside and its top are two spaces (a towel on the vanity leaves its shelf free)
+            box, size, base = _free_spot(f"{holder}/inside" if container else holder, top, variants, base,
+                                         hy + h["size"][1] / 2 if container else None, taken)
             if box is None and not container:  # too big for its support: the largest other free surface
                 for alt in _surfaces(placed, h["room"], holder, catalog):
                     a = placed[alt]

@@ -17,6 +17,7 @@ from logicenveval.domain.catalog import Catalog, load_catalog
 from logicenveval.generators.realise import task_objects
 from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.offline import handler
+from logicenveval.llm.placement import described_placements
 from logicenveval.model.rooms import room_type_of
 
 #: typical floor area (m²) per room type
@@ -118,14 +119,17 @@ def feedback_facts(feedback: list[str], facts: list[str]) -> list[str]:
 
 def _task_objects(payload: dict[str, Any]) -> list[dict[str, Any]]:
     """One object per role, placed so that the situation facts (and the layout's feedback) hold
-    and every object fits where it is put (the asset sizes, as a model that knows them would)."""
+    and every object fits where it is put (the asset sizes, as a model that knows them would).
+    A placement the situation requires or the description states ("the cloth lives in the
+    vanity") is kept even when the estimate finds the holder crowded: the reader was told so."""
     catalog = load_catalog()
     facts = list(payload.get("facts") or [])
     facts += feedback_facts(list(payload.get("feedback") or []), facts)
+    told = set(facts) | set(described_placements(payload["task"], catalog))
     banned: list[str] = []
     objects = task_objects(payload["task"], facts, catalog)
     for _ in range(len(objects)):
-        new = [f for f in misfits(objects, catalog) if f not in banned and f[4:] not in facts]
+        new = [f for f in misfits(objects, catalog) if f not in banned and f[4:] not in told]
         if not new:
             break
         banned += new
@@ -139,11 +143,13 @@ GRID, FILL = 0.05, 0.8
 
 def misfits(objects: list[dict[str, Any]], catalog: Catalog) -> list[str]:
     """Placements that cannot be laid out, as facts that rule them out: an item larger than its
-    holder's largest top (or opening), or the items on one holder, at the largest size the
-    layout may draw for each, too many for its smallest top (the last listed goes elsewhere)."""
+    holder's largest top (or opening), or the items on one holder (or inside it: the layout packs
+    the two apart), at the largest size the layout may draw for each, too many for its smallest top
+    (the last listed goes elsewhere)."""
     by_id = {o["id"]: o for o in objects}
     out: list[str] = []
-    load: dict[str, float] = {}
+    #: filled cells per (holder, on|inside): the layout packs a holder's top and inside apart
+    load: dict[tuple[str, str], float] = {}
     for o in objects:
         how, _, holder = str(o["placement"]).partition(":")
         if how not in ("on", "inside") or holder not in by_id:
@@ -161,10 +167,10 @@ def misfits(objects: list[dict[str, Any]], catalog: Catalog) -> list[str]:
         top = [max(host.size_min[k], item.size_min[k]) for k in (0, 2)]
         cells = math.prod(math.ceil(min(item.size_max[k], t) / GRID) for k, t in zip((0, 2), top, strict=True))
         room = math.prod(math.floor(t / GRID) for t in top)
-        if load.get(holder, 0.0) + cells > FILL * room and load.get(holder):
+        if load.get((holder, how), 0.0) + cells > FILL * room and load.get((holder, how)):
             out.append(pred)
             continue
-        load[holder] = load.get(holder, 0.0) + cells
+        load[(holder, how)] = load.get((holder, how), 0.0) + cells
     return out
 
 

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from logicenveval.domain.catalog import Catalog
+from logicenveval.llm.placement import described_placements
 from logicenveval.model.conditions import And, Cond, Const, Not, Or, Pred, parse
 from logicenveval.model.rooms import room_type_of
 
@@ -53,31 +54,8 @@ def realise(brief: Mapping[str, Any], facts: list[str], catalog: Catalog) -> dic
     choice = {r: RoleChoice() for r in roles}
     for text in facts:
         for pred, pos in _literals(parse(text)):
-            r = pred.args[0]
-            if r not in choice:
-                continue
-            c = choice[r]
-            if pred.name == "exists":
-                c.present = pos
-            elif pred.name in ("on", "inside"):
-                place = ("floor" if pred.args[1] == "floor" else
-                         f"{'on' if pred.name == 'on' else 'inside'}:{pred.args[1]}")
-                if pos:
-                    c.placement = place
-                else:
-                    c.banned_places.add(place)
-            elif pred.name == "in_room":
-                if pos:
-                    c.room = pred.args[1]
-                else:
-                    c.banned_rooms.add(pred.args[1])
-            elif pred.name == "attr":
-                if pos:
-                    c.attributes[pred.args[1]] = pred.args[2]
-                else:
-                    c.banned_values.setdefault(pred.args[1], set()).add(pred.args[2])
-            elif pred.name == "state":
-                c.states[pred.args[1]] = pos
+            _apply(choice, pred, pos)
+    _described(choice, brief, facts, catalog)
     for r, c in choice.items():
         cat = catalog.get(roles[r]["category"])
         fixed = {k: str(v) for k, v in roles[r].get("attributes", {}).items()}
@@ -93,6 +71,58 @@ def realise(brief: Mapping[str, Any], facts: list[str], catalog: Catalog) -> dic
     _rooms(choice, roles, rooms, catalog)
     _places(choice, roles, catalog)
     return choice
+
+
+def _apply(choice: dict[str, RoleChoice], pred: Pred, pos: bool) -> None:
+    r = pred.args[0]
+    if r not in choice:
+        return
+    c = choice[r]
+    if pred.name == "exists":
+        c.present = pos
+    elif pred.name in ("on", "inside"):
+        place = ("floor" if pred.args[1] == "floor" else
+                 f"{'on' if pred.name == 'on' else 'inside'}:{pred.args[1]}")
+        if pos:
+            c.placement = place
+        else:
+            c.banned_places.add(place)
+    elif pred.name == "in_room":
+        if pos:
+            c.room = pred.args[1]
+        else:
+            c.banned_rooms.add(pred.args[1])
+    elif pred.name == "attr":
+        if pos:
+            c.attributes[pred.args[1]] = pred.args[2]
+        else:
+            c.banned_values.setdefault(pred.args[1], set()).add(pred.args[2])
+    elif pred.name == "state":
+        c.states[pred.args[1]] = pos
+
+
+#: predicates that say where an object is
+_WHERE = frozenset({"on", "inside", "in_room"})
+
+
+def _described(choice: dict[str, RoleChoice], brief: Mapping[str, Any], facts: list[str],
+               catalog: Catalog) -> None:
+    """Placements the description states ("a nightstand with a lamp", "the drying rack out on the
+    balcony"), for objects whose place no situation fact speaks of, held by an object present and
+    not ruled out (`llm.placement`): a reader of the text puts them there."""
+    placed = {pred.args[0] for text in facts for pred, _ in _literals(parse(text)) if pred.name in _WHERE}
+    for text in described_placements(brief, catalog):
+        for pred, pos in _literals(parse(text)):
+            c = choice.get(pred.args[0])
+            if c is None or pred.args[0] in placed or not c.present:
+                continue
+            if pred.name == "in_room" and pred.args[1] in c.banned_rooms:
+                continue
+            if pred.name in ("on", "inside") and (
+                    pred.args[1] not in choice or not choice[pred.args[1]].present
+                    or f"{pred.name}:{pred.args[1]}" in c.banned_places):
+                continue
+            _apply(choice, pred, pos)
 
 
 def _home_room(category: str, rooms: list[str], catalog: Catalog) -> str:

@@ -180,6 +180,9 @@ _APPOSITION = re.compile(rf"^(?P<lead>\W*)(?:{_GENERIC})\s+(?:that\s+|which\s+)?
                          r"(?P<list>[^:\u2013-]+?(?:,|\bor\b|\band\b)[^:\u2013-]+?)\s+(?:-|\u2013)\s+(?P<rest>.+)$", re.I)
 
 
+#: "if we still have one": the household owns the object, or not
+_WE_HAVE = re.compile(r"\b(?:we|you|i)(?: still| also| even)? have(?: (?:a|an|any|some))?$")
+_ASIDE = re.compile(r"\s*\([^()]*\)\W*$")
 _WITHOUT = re.compile(r"^(\W*)(?:without|with no)\s+(?:a|an|any|the)?\s*(?=\w[^,]*,)", re.I)
 
 
@@ -349,8 +352,9 @@ class _Reader:
             if before:
                 found.append(Mention(before[-1].roles, i, i + 1,
                                      "pronoun" if before[-1].kind == "role" else before[-1].kind))
-            elif w == "one" and "there" in words[max(0, i - 3) : i] and self.recent:
-                # "... with the cloth if there is one": the object named last, not the topic,
+            elif w == "one" and {"there", "have", "has"} & set(words[max(0, i - 3) : i]) and self.recent:
+                # "... with the cloth if there is one" / "if we still have one": the object named
+                # last, not the topic,
                 # unless the clause already spoke of something ("if it is elsewhere or there is none")
                 prior = [p for p in found if p.kind == "pronoun" and p.start < i]
                 things = [r for r in self.recent if r not in self.lex.holders] or self.recent
@@ -415,8 +419,9 @@ class _Reader:
                 # "the roll by the toilet is missing", "we are out of bread"
                 facts += [Fact(r, f"exists({r})", "exists", negated=True) for r in m.roles]
                 break
-            before = words[max(0, m.start - 8) : m.start]  # "there may or may not be a loaf"
-            if "there" in before or "no" in before[-2:]:
+            # "there may or may not be a loaf", "if we still have one"
+            before = words[max(0, m.start - 8) : m.start]
+            if "there" in before or "no" in before[-2:] or _WE_HAVE.search(" ".join(before[-4:])):
                 facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
                 break
         else:
@@ -781,7 +786,10 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     for si, sent in enumerate(sentences):
         for text, cue, role in _subsplit(_split_clauses(_apposition(sent))):
             # "should there be an umbrella: ..." - the cue itself says the object may be absent
-            facts, names = reader.facts("there is " + text if cue == "should there be" else text)
+            # "if we still have one (it lives in the vanity - ...)": a closing aside says where the
+            # object is kept (llm.placement), it asks nothing
+            said = _ASIDE.sub("", text) if role == "condition" and _ASIDE.sub("", text).strip() else text
+            facts, names = reader.facts("there is " + said if cue == "should there be" else said)
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
         if sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences):
             grammatical += 1
@@ -908,6 +916,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         factor.places = set(e.get("places", set()))
         slot_factor[(subject, kind, key)] = factor
         factors.append(factor)
+    factors = _settle_stated(factors, brief, catalog, slot_factor)
     for factor in factors:
         for slot_c, negated, value in factor.raw_context:
             dep = slot_factor.get(slot_c)
@@ -917,6 +926,34 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     groups, group_roles = _group(factors)
     covered = set().union(*group_roles) if group_roles else set()
     return TaskAnalysis(sentences, clauses, factors, groups, group_roles, set(lex.roles) - covered)
+
+
+def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Catalog,
+                   slot_factor: dict[tuple[str, str, str], Factor]) -> list[Factor]:
+    """A placement the description states (`llm.placement`: "a coffee table with a mug on it", "a
+    kitchen with a stove") is no uncertain location: its yes/no factor is dropped. So is where an
+    object is kept ("it's kept in the vanity, unless someone stuffed it into the medicine
+    cabinet"), and a factor listing the places it may be has no "elsewhere" — unless the text
+    speaks of one ("wherever else it may be lying")."""
+    from logicenveval.llm.placement import described_placements  # reads sentences with this module
+
+    low = " ".join(w for w, _, _ in tokens(_expand(str(brief.get("description", "")))))
+    elsewhere = any(re.search(rf"\b{cue}\b", low) for cue in ELSEWHERE + ("wherever",))
+    settled = set(described_placements(brief, catalog, kinds=frozenset({"settled"} | (
+        set() if elsewhere else {"kept"}))))
+    kept = set(described_placements(brief, catalog, kinds=frozenset({"kept"})))
+    out: list[Factor] = []
+    for f in factors:
+        values = set(f.values.values())
+        if f.kind == "location" and set(f.values) == {"yes", "no"} and settled & values:
+            for slot, g in list(slot_factor.items()):
+                if g is f:
+                    del slot_factor[slot]
+            continue
+        if f.kind == "location" and "elsewhere" in f.values and kept & values and not elsewhere:
+            f.values.pop("elsewhere")
+        out.append(f)
+    return out
 
 
 def _contrasted(clauses: list[Clause], text: str) -> set[tuple[str, str]]:

@@ -1,0 +1,183 @@
+"""The offline model reads the placements a description states (llm.placement) and the realiser
+puts those objects there unless a situation fact places them (issue 34, the 12 placement facts)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from logicenveval.benchmark import load_task
+from logicenveval.domain.catalog import load_catalog
+from logicenveval.generators.offline_handlers import misfits
+from logicenveval.generators.realise import realise
+from logicenveval.llm.analysis import analyse
+from logicenveval.llm.placement import described_placements
+from logicenveval.model.conditions import Pred, parse
+
+CATALOG = load_catalog()
+
+
+def _brief(description: str, rooms: list[str], **roles: str) -> dict[str, Any]:
+    return {"id": "t", "description": description, "rooms": rooms,
+            "roles": {name: {"category": cat} for name, cat in roles.items()}}
+
+
+def _task_brief(task_id: str) -> dict[str, Any]:
+    return load_task(task_id).brief().model_dump(mode="json")
+
+
+@pytest.mark.parametrize(("description", "roles", "fact"), [
+    # kept / lives: the object spoken of last is kept in the holder named after the verb
+    ("Wipe it with the old towel - it's kept in the vanity, unless someone stuffed it into the cabinet.",
+     {"old_towel": "towel", "vanity": "bathroom_vanity", "cabinet": "medicine_cabinet"},
+     "inside(old_towel, vanity)"),
+    ("Take the spare roll (we keep spares in the vanity cabinet) and put it on the toilet tank.",
+     {"spare_roll": "toilet_paper", "vanity": "bathroom_vanity", "toilet": "toilet"},
+     "inside(spare_roll, vanity)"),
+    ("Use the cloth if we still have one (it lives in the vanity).",
+     {"cloth": "cloth", "vanity": "bathroom_vanity"}, "inside(cloth, vanity)"),
+    # "a <holder> with a <thing> [on it]"
+    ("The bedroom has a bed and a nightstand with a lamp.",
+     {"bed": "bed", "nightstand": "nightstand", "lamp": "table_lamp"}, "on(lamp, nightstand)"),
+    ("You sit next to a coffee table with a mug on it.",
+     {"coffee_table": "coffee_table", "mug": "mug"}, "on(mug, coffee_table)"),
+    # a room and the list of what it holds
+    ("The home has a kitchen with a stove, a counter and a sink.",
+     {"stove": "stove", "counter": "kitchen_counter", "sink": "sink"}, "in_room(counter, kitchen)"),
+    ("The dining room opens onto the kitchen, where the fridge and a cabinet are.",
+     {"fridge": "fridge", "cabinet": "cabinet"}, "in_room(cabinet, kitchen)"),
+    ("In the bedroom, turn off the table lamp if it's on.", {"table_lamp": "table_lamp"},
+     "in_room(table_lamp, bedroom)"),
+    ("In the study the laptop belongs on the desk: put it there.", {"laptop": "laptop", "desk": "desk"},
+     "in_room(desk, study)"),
+    # an object named right before "in/on <room>"
+    ("Hang the shirt on the drying rack out on the balcony.",
+     {"shirt": "shirt", "drying_rack": "drying_rack"}, "in_room(drying_rack, balcony)"),
+    # an object named right before "on/in <holder>" (a default, not a settled location)
+    ("While you are out there, check the towel on the drying rack.",
+     {"towel": "towel", "drying_rack": "drying_rack"}, "on(towel, drying_rack)"),
+])
+def test_each_kind_of_placement_phrase(description: str, roles: dict[str, str], fact: str) -> None:
+    rooms = ["kitchen", "dining_room", "bedroom", "study", "laundry_room", "balcony", "bathroom", "living_room"]
+    assert fact in described_placements(_brief(description, rooms, **roles), CATALOG)
+
+
+@pytest.mark.parametrize(("description", "roles"), [
+    # where the mop stands, not that it is on the table
+    ("There are a sofa and a table with a wet mop leaning against it.", {"table": "coffee_table", "mop": "mop"}),
+    # a condition or a possibility, not a statement
+    ("Bring the lamp if there is a pan in the kitchen.", {"pan": "pan", "lamp": "desk_lamp"}),
+    # an instruction: where it goes, not where it is
+    ("Put the mug in the kitchen.", {"mug": "mug"}),
+    ("Hang the shirt on the drying rack.", {"shirt": "shirt", "drying_rack": "drying_rack"}),
+    ("Any other book goes into the storage box.", {"book": "book", "storage_box": "storage_box"}),
+    # a verb, not an object ("bin the wipe")
+    ("Over in the living room, clean the pet bed and bin the wipe.", {"trash_can": "trash_can"}),
+])
+def test_what_is_no_stated_placement(description: str, roles: dict[str, str]) -> None:
+    facts = described_placements(_brief(description, ["kitchen", "living_room", "laundry_room"], **roles), CATALOG)
+    assert not [f for f in facts if not f.startswith(("in_room(sofa", "in_room(table", "in_room(pet_bed"))]
+
+
+def test_a_presumed_place_is_left_out_when_asked_for_settled_ones() -> None:
+    brief = _brief("Check the towel on the drying rack.", ["laundry_room"], towel="towel",
+                   drying_rack="drying_rack")
+    assert described_placements(brief, CATALOG, kinds=frozenset({"settled", "kept"})) == []
+
+
+@pytest.mark.parametrize(("task_id", "facts"), [
+    ("bathroom_counter_sort", {"inside(old_towel, vanity)"}),
+    ("bathroom_towel_refresh", {"inside(spare_roll, vanity)", "inside(cloth, vanity)"}),
+    ("bedroom_morning_tidy", {"on(lamp, nightstand)"}),
+    ("dining_table_clear", {"in_room(cabinet, kitchen)"}),
+    ("lamp_or_pillow_fetch", {"on(mug, coffee_table)", "in_room(stove, kitchen)", "in_room(counter, kitchen)",
+                              "in_room(sink, kitchen)"}),
+    ("laundry_drying_rack", {"in_room(drying_rack, balcony)"}),
+    ("multi_room_lights_off", {"in_room(table_lamp, bedroom)", "in_room(desk, study)"}),
+])
+def test_the_benchmark_placements_are_read_from_the_description(task_id: str, facts: set[str]) -> None:
+    """The 12 placement facts the tasks state as constraints, read from the brief alone (the first
+    option of a disjunction: the vanity)."""
+    assert facts <= set(described_placements(_task_brief(task_id), CATALOG))
+
+
+def test_the_realiser_follows_the_description_unless_the_situation_places_the_object() -> None:
+    brief = _task_brief("laundry_drying_rack")
+    assert realise(brief, [], CATALOG)["drying_rack"].room == "balcony"
+    assert realise(brief, ["in_room(drying_rack, laundry_room)"], CATALOG)["drying_rack"].room == "laundry_room"
+    lamp = realise(_task_brief("bedroom_morning_tidy"), ["state(lamp, toggled_on)"], CATALOG)["lamp"]
+    assert lamp.placement == "on:nightstand"
+    towel = realise(_task_brief("bathroom_counter_sort"), ["inside(old_towel, medicine_cabinet)"], CATALOG)
+    assert towel["old_towel"].placement == "inside:medicine_cabinet"
+
+
+def test_a_stated_placement_is_no_uncertain_factor() -> None:
+    """"a kitchen with a stove", "a coffee table with a mug on it": nothing to ask; "(a pan may be
+    in the kitchen)" still is; "kept in the vanity, unless ... the medicine cabinet" has no
+    "elsewhere"."""
+    ids = {f.id for f in analyse(_task_brief("lamp_or_pillow_fetch")).factors}
+    assert not ids & {"stove_in_room_kitchen", "counter_in_room_kitchen", "sink_in_room_kitchen",
+                      "mug_on_coffee_table"}
+    assert "pan_in_room_kitchen" in ids
+    towel = [f for f in analyse(_task_brief("bathroom_counter_sort")).factors if f.subject == "old_towel"]
+    assert all("elsewhere" not in f.values for f in towel)
+
+
+def test_an_aside_in_a_condition_asks_nothing_and_we_have_one_asks_existence() -> None:
+    """"use the microfibre cloth if we still have one (it lives in the vanity ...)": the cloth
+    may be absent; the vanity is not in question."""
+    ids = {f.id for f in analyse(_task_brief("bathroom_towel_refresh")).factors}
+    assert "cloth_present" in ids and "vanity_present" not in ids
+
+
+def test_a_holders_top_and_inside_are_packed_apart() -> None:
+    """A towel on the vanity's top leaves its inside free (the layout packs the two apart)."""
+    objects = [
+        {"id": "vanity", "category": "bathroom_vanity", "placement": "floor"},
+        {"id": "bottle", "category": "medicine_bottle", "placement": "on:vanity"},
+        {"id": "towel", "category": "towel", "placement": "inside:vanity"},
+    ]
+    assert misfits(objects, CATALOG) == []
+    objects[1]["placement"] = "inside:vanity"
+    assert misfits(objects, CATALOG) == ["not inside(towel, vanity)"]
+
+
+_WORDS = ["the", "a", "with", "on", "in", "into", "it", "is", "kept", "keep", "lives", "out", "kitchen",
+          "balcony", "nightstand", "lamp", "drying", "rack", "mug", "coffee", "table", "vanity", "towel",
+          "if", "may", "put", "there", "where", "are", "has", ",", ".", "(", ")", "and", "we", "spares"]
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.sampled_from(_WORDS), max_size=40))
+def test_any_wording_gives_one_parseable_fact_per_known_object(words: list[str]) -> None:
+    """Whatever the text, the reader names only the brief's roles and rooms, says one thing per
+    object, and every fact parses in the condition language."""
+    brief = _brief(" ".join(words), ["kitchen", "balcony"], lamp="table_lamp", nightstand="nightstand",
+                   drying_rack="drying_rack", mug="mug", coffee_table="coffee_table",
+                   vanity="bathroom_vanity", towel="towel")
+    preds = [parse(f) for f in described_placements(brief, CATALOG)]
+    subjects = [p.args[0] for p in preds if isinstance(p, Pred)]
+    assert len(subjects) == len(set(subjects)) == len(preds)
+    for pred in preds:
+        assert isinstance(pred, Pred) and pred.name in ("on", "inside", "in_room")
+        assert pred.args[0] in brief["roles"] and pred.args[0] != pred.args[1]
+        assert pred.args[1] in (brief["rooms"] if pred.name == "in_room" else brief["roles"])
+
+
+def test_a_possible_object_in_a_room_list_is_not_placed() -> None:
+    brief = _brief("The flat has a kitchen with a stove and a sink, where a pan may be.", ["kitchen"],
+                   stove="stove", sink="sink", pan="pan")
+    facts = described_placements(brief, CATALOG)
+    assert "in_room(stove, kitchen)" in facts and not [f for f in facts if "pan" in f]
+
+
+def test_where_a_thing_is_kept_stays_askable_when_the_text_speaks_of_elsewhere() -> None:
+    """"The remote is kept on the TV stand - wherever else it may be lying, bring it back there":
+    where it belongs, not where it is."""
+    brief = _brief("The TV remote is kept on the TV stand - wherever else it may be lying, bring it back there.",
+                   ["living_room"], remote="remote_control", tv_stand="tv_stand")
+    assert described_placements(brief, CATALOG) == ["on(remote, tv_stand)"]
+    assert [f.id for f in analyse(brief).factors if f.subject == "remote"]
