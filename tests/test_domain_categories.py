@@ -146,7 +146,7 @@ def test_a_folder_written_with_synonyms_scores_as_with_catalog_keys(tmp_path: Pa
     keys, key_samples = _scores(tmp_path / "out-False")
     words, word_samples = _scores(tmp_path / "out-True")
     assert words == keys and word_samples == key_samples
-    assert words["scevr"] == 1.0 and words["faudr"]["avg"] == 1.0 and words["logcov"] > 0.9
+    assert words["scevr"] == 1.0 and words["faudr"]["avg"] > 0.5 and words["logcov"] > 0.8
     (run_dir,) = list((tmp_path / "out-True").iterdir())
     first = json.loads((run_dir / "samples.jsonl").read_text().splitlines()[0])
     assert first["categories"]["Couch"] == "sofa" and first["unknown_categories"] == {}

@@ -102,14 +102,19 @@ def test_binding_round_trips_as_json() -> None:
 
 
 def test_reference_envs_without_roles_rebind_where_unique() -> None:
-    """LogicEnvGen's own environments: the rule recovers its role map wherever it is unique."""
+    """LogicEnvGen's own environments: the rule recovers its role map wherever it is unique.
+    In the reference run (the paper's description brief) the generator's map names its own
+    reading of the description (`red_toy_box`); binding the stripped environment agrees with every
+    task role it did map and binds the rest."""
     env_path = REFERENCE / "clean_living_room" / "logicenvgen-00.json"
     data = json.loads(env_path.read_text())
     task = load_task("clean_living_room")
     stripped = env_from_dict({k: v for k, v in data.items() if k != "roles"})
     b = bind_roles(stripped, task.roles, CATALOG)
     assert b.well_formed
-    assert b.roles == data["roles"]
+    assert None not in b.roles.values() and set(b.roles) == set(task.roles)
+    own = {k: v for k, v in data["roles"].items() if k in task.roles and v is not None}
+    assert own.items() <= b.roles.items()
 
 
 _CATS = ["toy", "toy_box", "book", "sofa"]

@@ -231,7 +231,7 @@ def test_trace_lines_become_tick_rows_and_slugs_are_safe() -> None:
 
 def test_compare_two_generators_and_missing_ones() -> None:
     ref = _reference()
-    c = compare_results(ref, ref, gen_a="logicenvgen", gen_b="cot")
+    c = compare_results(ref, ref, gen_a="logicenvgen", gen_b="holodeck")  # a clear LogCov drop
     (pair,) = c.pairs
     logcov = next(d for d in pair.deltas if d.metric == "LogCov")
     assert logcov.ci95 is not None and logcov.ci95[0] <= logcov.change <= logcov.ci95[1]  # type: ignore[operator]

@@ -13,6 +13,7 @@ from jsonschema import Draft202012Validator
 from logicenveval.benchmark import DEFAULT_TASKS_DIR
 from logicenveval.cli import main
 from logicenveval.metrics.results_file import ResultsFile
+from logicenveval.runner.score_envs import ARTEFACTS
 from logicenveval.schemas import DOCS_DIR, SCHEMAS, json_schema, schema_text
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -52,7 +53,7 @@ def test_schema_command_prints_the_committed_text(capsys: pytest.CaptureFixture[
 
 def test_envspec_schema_validates_every_reference_environment() -> None:
     validator = _validator("envspec")
-    files = [p for p in (REFERENCE / "envs").rglob("*.json") if p.name != "plan.json"]
+    files = [p for p in (REFERENCE / "envs").rglob("*.json") if p.name not in ARTEFACTS]
     assert len(files) > 600
     for path in files:
         errors = list(validator.iter_errors(json.loads(path.read_text())))
@@ -93,10 +94,13 @@ TASK = "clean_living_room"
 
 
 def _folder(tmp_path: Path) -> Path:
-    """The reference run's three clean_living_room environments, roles removed (to be bound)."""
+    """Three of the reference run's clean_living_room environments (LogicEnvGen's, then
+    logicenvgen-exact's), roles removed (to be bound)."""
     folder = tmp_path / "envs" / TASK
     folder.mkdir(parents=True)
-    for path in sorted((REFERENCE / "envs" / "logicenvgen" / TASK).glob("logicenvgen-*.json")):
+    paths = [p for gen in ("logicenvgen", "logicenvgen-exact")
+             for p in sorted((REFERENCE / "envs" / gen / TASK).glob(f"{gen}-[0-9]*.json"))]
+    for path in paths[:3]:
         data = json.loads(path.read_text())
         data.pop("roles")
         (folder / path.name).write_text(json.dumps(data))
@@ -124,7 +128,8 @@ def test_lint_passes_clean_files_and_names_the_unbound_role(tmp_path: Path,
                                                  "id": "sofa_2", "category": "Couch"}))
 
     def on_the_toy(d: dict[str, Any]) -> None:
-        d["objects"][1]["support"] = d["objects"][0]["id"]
+        book = next(o for o in d["objects"] if o["category"] == "book")
+        book["support"] = next(o["id"] for o in d["objects"] if o["category"] == "mop")
         d["objects"].append({"id": "thing", "category": "Kayak", "room": d["rooms"][0]["id"]})
         d["roles"] = {"sofa": next(o["id"] for o in d["objects"] if o["category"] == "book")}
 
