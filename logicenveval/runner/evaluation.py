@@ -91,9 +91,10 @@ def evaluate_env(
         sim_ticks[kind] = verdict.ticks
         traces[kind] = VerdictTrace(status=verdict.status, message=verdict.message or "",
                                     trace=[str(t) for t in verdict.trace])
-        start = time.perf_counter()
-        verdicts[kind] = simulate(policy, env, task, catalog).status
-        sim_ms[kind] = (time.perf_counter() - start) * 1000.0
+        with phase("simulation"):
+            start = time.perf_counter()
+            verdicts[kind] = simulate(policy, env, task, catalog).status
+            sim_ms[kind] = (time.perf_counter() - start) * 1000.0
     sample = EnvSample(
         generator=generator,
         task_id=task.id,
