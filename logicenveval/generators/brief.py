@@ -1,12 +1,13 @@
-"""What a generator is given: the task's roles (default) or, as in the paper, the description only.
+"""What a generator is given: as in the paper, the description only (the default), or the task's
+roles (our variant).
 
-`--brief roles` (default, DESIGN.md §4): `task.brief()` — id, description, rooms and the named
-roles the policies use. `--brief description` (the paper's setting): id, description and rooms;
-every method then asks its own model, as its first request, to name the objects the description
-mentions (`name_objects`, one request kind shared by all methods so that the problem setup is the
-same), and works with those names. The harness binds the task's roles to the environment's
-objects afterwards (`domain.roles.bind_roles`), never the generator. All requests then also carry
-the paper's few-shot example (`llm.fewshot`).
+`--brief description` (the paper's setting, the default since issue 34): id, description and
+rooms; every method then asks its own model, as its first request, to name the objects the
+description mentions (`name_objects`, one request kind shared by all methods so that the problem
+setup is the same), and works with those names. The harness binds the task's roles to the
+environment's objects afterwards (`domain.roles.bind_roles`), never the generator. All requests
+then also carry the paper's few-shot example (`llm.fewshot`). `--brief roles` (ours, and the
+oracle's): `task.brief()` — id, description, rooms and the named roles the policies use.
 """
 
 from __future__ import annotations
