@@ -105,6 +105,40 @@ def test_responses_that_can_hold_together_are_not_exclusive() -> None:
     assert factor_problem("where", three) is None
 
 
+def test_factor_checks_share_one_context_per_thread_and_answer_as_alone(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Making a z3 context per check was most of the factor-checking time: a thread makes one and
+    reuses it, and an answer does not depend on the checks before it (same answers, any order)."""
+    import threading
+
+    import z3
+
+    from logicenveval.llm import meaning
+
+    made: list[z3.Context] = []
+
+    class Counted(z3.Context):
+        def __init__(self) -> None:
+            super().__init__()
+            made.append(self)
+
+    monkeypatch.setattr(meaning, "_CONTEXTS", meaning._Contexts())
+    monkeypatch.setattr(meaning.z3, "Context", Counted)
+    on = {"predicate": "on", "object": "toy", "support": "floor", "negated": False}
+    red = {"predicate": "attr", "object": "toy", "key": "color", "value": "red", "negated": False}
+    cases = [[("a", [on]), ("b", [{**on, "negated": True}])], [("a", [on]), ("b", [red])],
+             [("a", [red]), ("b", [{**red, "value": "blue"}]), ("c", [{**red, "negated": True}])],
+             [("a", [on]), ("b", [on])]]
+    forward = [factor_problem("f", c) for c in cases]
+    backward = [factor_problem("f", c) for c in reversed(cases)][::-1]
+    assert forward == backward and forward[0] is None and forward[1] and forward[3]
+    assert len(made) == 1
+    other: list[str | None] = []
+    t = threading.Thread(target=lambda: other.extend(factor_problem("f", c) for c in cases))
+    t.start()
+    t.join()
+    assert other == forward and len(made) == 2
+
+
 LITERALS = st.fixed_dictionaries({
     "predicate": st.just("state"), "object": st.sampled_from(["toy", "book"]),
     "flag": st.sampled_from(["open", "dirty", "wet"]), "negated": st.booleans()})

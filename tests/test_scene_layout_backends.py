@@ -459,3 +459,35 @@ def test_auto_returns_what_the_chosen_backend_returns(monkeypatch: pytest.Monkey
     wall_boxes = [WallBox("w", 10, 1.0, 0.5, True)]
     assert layout_auto.pack_walls(walls, wall_boxes, seed=1, timeout_s=5.0) == \
         layout_cpsat.pack_walls(walls, wall_boxes, seed=1, timeout_s=5.0)
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_cpsat_models_skip_the_camelcase_aliases_and_solve_the_same(seed: int,
+                                                                   monkeypatch: pytest.MonkeyPatch) -> None:
+    """The layout models are built without `CpModel`'s per-instance camelCase aliases (their cost
+    exceeded the model's own), and that changes no packing: the same floor and walls packed with
+    plain `CpModel`s give the same placements and drops."""
+    models: list[cp_model.CpModel] = []
+    init = layout_cpsat._Solve.__init__
+
+    def spy(self: layout_cpsat._Solve, m: cp_model.CpModel, *args: object, **kwargs: object) -> None:
+        models.append(m)
+        init(self, m, *args, **kwargs)  # type: ignore[arg-type]
+
+    rng = np.random.default_rng(seed)
+    boxes = [Box(f"b{k}", (0.5, 0.8, 0.5), (int(rng.integers(3, 9)), int(rng.integers(3, 9))), task=k % 2 == 0)
+             for k in range(9)]
+    rels = [FloorRel(RelationRequest(type="near", args=("b0", "b1")), True, ("b0", "b1"), (0.0, 0.0))]
+    walls = [(40, [(5, 12, 0.0, 2.1)]), (25, [])]
+    wboxes = [WallBox(f"w{k}", 6 + k, 1.0, 0.5, task=k == 0) for k in range(4)]
+
+    def both() -> tuple[object, object]:
+        return (layout_cpsat.pack((30, 30), boxes, seed=seed, timeout_s=30.0, walkway=4, rels=rels,
+                                  obstacles=[(10, 0, 16, 6)]),
+                layout_cpsat.pack_walls(walls, wboxes, seed=seed, timeout_s=30.0))
+
+    monkeypatch.setattr(layout_cpsat._Solve, "__init__", spy)
+    fast = both()
+    assert len(models) == 2 and all("NewIntVar" not in vars(m) for m in models)
+    monkeypatch.setattr(layout_cpsat, "_Model", cp_model.CpModel)
+    assert both() == fast

@@ -48,8 +48,15 @@ def protocol_of(model: Any) -> int:
 
 @lru_cache(maxsize=1)
 def _jinja() -> Environment:
+    # the prompts are package files: no `stat` per request to see whether one changed on disk
     return Environment(loader=PackageLoader("logicenveval", "llm/prompts"), undefined=StrictUndefined,
-                       keep_trailing_newline=False, autoescape=False)
+                       keep_trailing_newline=False, autoescape=False, auto_reload=False)
+
+
+@lru_cache(maxsize=1)
+def _reply_format() -> str:
+    """The protocol-2 reply-format paragraph: constant, rendered once."""
+    return _jinja().get_template("_reply_format.j2").render().strip()
 
 
 @lru_cache(maxsize=256)
@@ -87,7 +94,7 @@ def render_messages(kind: str, payload: dict[str, Any], schema: dict[str, Any],
     text = template.render(payload=payload, schema=json.dumps(schema, separators=(",", ":")), json=json)
     system, _, user = text.partition(_SPLIT)
     if protocol >= 2:
-        system = system.strip() + "\n" + _jinja().get_template("_reply_format.j2").render().strip()
+        system = system.strip() + "\n" + _reply_format()
     return [{"role": "system", "content": system.strip()}, {"role": "user", "content": user.strip()}]
 
 
