@@ -52,9 +52,12 @@ DERIVED = ("results.json", "samples.jsonl", "units", "envs", "renders", "details
 def rescore(pack: Path, cache: Path | None = None) -> None:
     """Score a pack again with this code from its recorded replies: the judging changed (LD,
     JI, constraints, shapes...), the replies did not. Its derived files are rewritten; its
-    config.json, reply cache and llm_errors/ are kept, and results.json goes on naming the
-    model that wrote the replies (the replay's own `replay:` spec is an artefact of scoring)."""
+    config.json (the model named by its file, `portable_model`), reply cache and llm_errors/
+    are kept, and results.json goes on naming the model that wrote the replies (the replay's
+    own `replay:` spec is an artefact of scoring)."""
     config = json.loads((pack / "config.json").read_text(encoding="utf-8"))
+    config["model"] = portable_model(config["model"])
+    (pack / "config.json").write_text(json.dumps(config, indent=2, sort_keys=True) + "\n", encoding="utf-8")
     with tempfile.TemporaryDirectory() as tmp:
         outcome = _replayed(pack, Path(tmp), cache)
         results = outcome.results
@@ -73,6 +76,13 @@ def rescore(pack: Path, cache: Path | None = None) -> None:
                 shutil.copytree(source, target)
             elif source.exists():
                 shutil.copy2(source, target)
+
+
+def portable_model(spec: str) -> str:
+    """`llamacpp:/any/dir/m.gguf` -> `llamacpp:m.gguf`: a model named by its file, not by the
+    folder it sat in on the machine that ran it."""
+    kind, sep, arg = spec.partition(":")
+    return f"{kind}{sep}{Path(arg).name}" if sep and "/" in arg else spec
 
 
 def pack_protocol(config: dict[str, Any]) -> int:

@@ -17,6 +17,8 @@ import statistics
 from pathlib import Path
 from typing import Any
 
+from llm_validity import portable_model
+
 from logicenveval.runner.results import load_results
 
 #: (label, where in results.json: a path under `results.<method>`, or a function of the run and method)
@@ -49,13 +51,6 @@ def _value(run: dict[str, Any], method: str, where: Any) -> Any:
     return _get(run["results"].get(method), where)
 
 
-def _model(spec: str) -> str:
-    """`llamacpp:/any/dir/m.gguf` -> `llamacpp:m.gguf`: the caption names the model, not the
-    folder it sat in on the machine that ran it."""
-    kind, sep, arg = spec.partition(":")
-    return f"{kind}{sep}{Path(arg).name}" if sep and "/" in arg else spec
-
-
 def load_runs(folder: Path) -> list[dict[str, Any]]:
     """The results.json of each seed run of a `run --seeds` folder, in seed-folder order."""
     runs = [load_results(p.parent) for p in sorted(folder.glob("seed*/results.json"))]
@@ -68,7 +63,7 @@ def table(runs: list[dict[str, Any]]) -> list[str]:
     """The markdown table (caption, header line, then rows) of the seed runs of a `run --seeds`
     folder (`load_runs`): per method and metric the mean over the runs, the standard deviation
     and the range."""
-    lines = [f"model: {_model(runs[0]['model'])} · {len(runs)} runs (seeds "
+    lines = [f"model: {portable_model(runs[0]['model'])} · {len(runs)} runs (seeds "
              f"{', '.join(str(r['seed']) for r in runs)}) · tasks: {', '.join(runs[0]['tasks'])}",
              f"| method | {' | '.join(label for label, _ in METRICS)} |",
              "|---|" + "---:|" * len(METRICS)]

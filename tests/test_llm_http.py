@@ -131,6 +131,7 @@ def test_schema_violation_forever_raises_model_reply_error(server: tuple[str, Sc
     assert "decompose_task" in text and "test-model" in text and "subtasks" in text
     saved = list((tmp_path / "run" / "llm_errors").glob("decompose_task-*.txt"))
     assert saved and "none" in saved[0].read_text()
+    assert info.value.file == f"llm_errors/{saved[0].name}"  # relative: no folder of this machine
 
 
 def test_429_with_retry_after_then_success(server: tuple[str, Script], tmp_path: Path) -> None:

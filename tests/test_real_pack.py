@@ -61,10 +61,11 @@ def test_a_pack_replays_with_the_protocol_it_was_recorded_with() -> None:
 @pytest.mark.skipif(not SEED_RUNS, reason="no stability seed runs committed under reports/real/stability/")
 def test_rescoring_a_pack_keeps_its_replies_and_names_its_model(tmp_path: Path) -> None:
     """`llm_validity.py --rescore`: derived files rewritten from the pack's own replies, its
-    config and reply cache untouched, results.json still naming the model that answered."""
+    config (the model named by its file, no folder of the recording machine) and reply cache
+    kept, results.json still naming the model that answered."""
     import shutil
 
-    from llm_validity import DERIVED, replay, rescore, same_metrics
+    from llm_validity import DERIVED, portable_model, replay, rescore, same_metrics
 
     pack = tmp_path / SEED_RUNS[0].parent.name
     shutil.copytree(SEED_RUNS[0].parent, pack)
@@ -74,7 +75,10 @@ def test_rescoring_a_pack_keeps_its_replies_and_names_its_model(tmp_path: Path) 
     (pack / "results.json").write_text("{}")  # stale: rescoring must rewrite it
     rescore(pack, cache)
     results = json.loads((pack / "results.json").read_text(encoding="utf-8"))
-    assert results["model"] == json.loads(config)["model"] == results["config"]["model"]
-    assert (pack / "config.json").read_bytes() == config and cache.read_bytes() == replies
+    recorded = json.loads(config)
+    assert results["model"] == portable_model(recorded["model"]) == results["config"]["model"]
+    assert "/" not in results["model"]
+    kept = json.loads((pack / "config.json").read_text(encoding="utf-8"))
+    assert kept == {**recorded, "model": results["model"]} and cache.read_bytes() == replies
     assert all((pack / name).exists() for name in DERIVED)
     assert same_metrics(results, replay(pack, tmp_path / "again", cache=cache))

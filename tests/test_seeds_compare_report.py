@@ -118,7 +118,8 @@ def test_stability_table_summarises_the_seed_runs(runs: dict[str, Path]) -> None
     import sys
 
     sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
-    from stability import _model, load_runs, table  # type: ignore[import-not-found]
+    from llm_validity import portable_model as _model  # type: ignore[import-not-found]
+    from stability import load_runs, table  # type: ignore[import-not-found]
 
     assert _model("llamacpp:/home/me/models/m.Q4.gguf") == "llamacpp:m.Q4.gguf"  # no machine paths
     assert _model("openai:qwen2.5-coder") == "openai:qwen2.5-coder" and _model("offline") == "offline"

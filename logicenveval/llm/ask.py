@@ -99,14 +99,16 @@ def render_messages(kind: str, payload: dict[str, Any], schema: dict[str, Any],
 
 
 def _save_raw(run_dir: Path | None, kind: str, model: str, replies: list[str]) -> str | None:
+    """Save the invalid replies under `run_dir/llm_errors/`; the path returned is relative to
+    the run folder, so messages (kept in units and results) name no folder of this machine."""
     if run_dir is None:
         return None
     digest = hashlib.sha256("\n".join(replies).encode()).hexdigest()[:12]
-    path = Path(run_dir) / "llm_errors" / f"{kind}-{digest}.txt"
+    rel = Path("llm_errors") / f"{kind}-{digest}.txt"
     sep = "\n\n----- next attempt -----\n\n"
-    atomic_write_text(path, redact(f"model: {model}\nkind: {kind}\n\n" + sep.join(replies)),
+    atomic_write_text(Path(run_dir) / rel, redact(f"model: {model}\nkind: {kind}\n\n" + sep.join(replies)),
                       durable=False)
-    return str(path)
+    return rel.as_posix()
 
 
 
@@ -268,5 +270,5 @@ def ask(
         file=saved,
         hint=f"the model wrote more than max_tokens={bound}: raise it with --model-args "
         "max_tokens=N, or use a stronger model" if truncated else
-        "inspect the saved raw reply; a stronger model usually helps",
+        "inspect the saved raw reply (in the run folder); a stronger model usually helps",
     )
