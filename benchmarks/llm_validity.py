@@ -21,6 +21,7 @@ import time
 from pathlib import Path
 from typing import Any
 
+from logicenveval.atomic import atomic_write_text
 from logicenveval.reporting.publish import publish
 from logicenveval.runner.config import RunConfig
 from logicenveval.runner.results import load_results, write_outputs
@@ -57,7 +58,7 @@ def rescore(pack: Path, cache: Path | None = None) -> None:
     own `replay:` spec is an artefact of scoring)."""
     config = json.loads((pack / "config.json").read_text(encoding="utf-8"))
     config["model"] = portable_model(config["model"])
-    (pack / "config.json").write_text(json.dumps(config, indent=2, sort_keys=True) + "\n", encoding="utf-8")
+    atomic_write_text(pack / "config.json", json.dumps(config, indent=2, sort_keys=True) + "\n")
     with tempfile.TemporaryDirectory() as tmp:
         outcome = _replayed(pack, Path(tmp), cache)
         results = outcome.results

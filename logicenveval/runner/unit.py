@@ -516,7 +516,7 @@ def _settled(attempts: list[Attempt], unjudged: list[tuple[str, str, str]]) -> l
 
 
 def run_units(specs: tuple[UnitSpec, ...]) -> list[UnitRecord]:
-    """Several units in one hand-off to a worker (see `chunk_units`)."""
+    """Several units in one hand-off to a worker (see `runner.schedule.hand_offs`)."""
     return [run_unit(spec) for spec in specs]
 
 
