@@ -4,16 +4,15 @@ A report's main page stays small: the table, the reasons and an index of (genera
 rows. Each row links to one page `details/[<run>/][seed<S>/]<generator>/<task>.html` holding
 that task's environments: the top-down render (linked, not inlined: the unit wrote it once under
 `renders/`; click to open it full size) and a link to the EnvSpec JSON, the problems that made it ill-formed, every physics finding with its message, the
-covered decision paths and each BT's verdict with its tick trace as a table. Faulty BTs read
+covered decision paths and each BT's verdict with its tick trace as a table (drawn by the page
+from one compact JSON when the BT is opened: `tick_data`). Faulty BTs read
 "detected" / "missed": a faulty BT that passes is a fault the environment did not reveal.
 """
 
 from __future__ import annotations
 
 import ast
-import functools
 import hashlib
-import html
 import re
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -333,49 +332,42 @@ def trace_rows(lines: Sequence[str]) -> tuple[list[TickRow], list[str]]:
     return rows, other
 
 
-@functools.lru_cache(maxsize=4096)
-def _where(path: str, index: int) -> str:
-    """The `where` cell of a tick row: the short path; the full one (the page's `index`-th path,
-    listed once per page) is shown on hover. Rows repeat a few paths thousands of times."""
-    parts = path.split("/")
-    short = ("…/" if len(parts) > 3 else "") + "/".join(parts[-3:])
-    return f'<td data-p="{index}">{html.escape(short)}'
+@dataclass(frozen=True)
+class TickData:
+    """A page's tick tables as one compact JSON (the page's script draws a table when its BT is
+    opened): tree paths and distinct (node, status, path) steps listed once, each trace a flat
+    list `[tick, step, tick, step, ...]`. Tables drawn as HTML were 83 % of a run's `details/`."""
+
+    #: the `<script type="application/json">` text (no `<` can end the script)
+    json: Markup
+    #: per environment of the page, per verdict: the number of its trace (None: no rows)
+    at: list[list[int | None]]
 
 
-def path_index(envs: Sequence[EnvView]) -> dict[str, int]:
-    """Every tree path the page's traces pass, numbered in order of first appearance."""
-    out: dict[str, int] = {}
-    for e in envs:
-        for v in e.verdicts:
-            for r in v.rows:
-                out.setdefault(r.path, len(out))
-    return out
-
-
-def paths_json(paths: Mapping[str, int]) -> Markup:
-    """The page's path list for a `<script type="application/json">` (no `<` can end the script)."""
+def tick_data(envs: Sequence[EnvView]) -> TickData:
+    """The compact traces of a page's environments, in card order."""
     import json
 
-    return Markup(json.dumps(list(paths), ensure_ascii=False).replace("<", "\\u003c"))
-
-
-#: `html.escape` memoised: tick cells repeat a few hundred node, status and tick texts ~240,000 times
-_escape = functools.lru_cache(maxsize=8192)(html.escape)
-
-
-def tick_table(rows: Sequence[TickRow], paths: Mapping[str, int]) -> Markup:
-    """The trace as an HTML table (built here, not in the template: a report holds ~60,000 rows,
-    so cells leave out the end tags HTML lets them omit and name their path by its number in
-    the page's `paths`)."""
-    if not rows:
-        return Markup("")
-    esc = _escape
-    out = ['<table class="ticks"><thead><tr><th>tick</th><th>node</th><th>status</th>'
-           "<th>where</th></tr></thead><tbody>"]
-    out += [f'<tr class="st-{esc(r.status.lower())}"><td>{esc(r.tick)}<td>{esc(r.node)}'
-            f"<td>{esc(r.status)}{_where(r.path, paths[r.path])}" for r in rows]
-    out.append("</tbody></table>")
-    return Markup("\n".join(out))
+    paths: dict[str, int] = {}
+    steps: dict[tuple[str, str, int], int] = {}
+    traces: list[list[int | str]] = []
+    at: list[list[int | None]] = []
+    for e in envs:
+        numbers: list[int | None] = []
+        for v in e.verdicts:
+            if not v.rows:
+                numbers.append(None)
+                continue
+            flat: list[int | str] = []
+            for r in v.rows:
+                key = (r.node, r.status, paths.setdefault(r.path, len(paths)))
+                flat += (int(r.tick) if r.tick.isdigit() else r.tick, steps.setdefault(key, len(steps)))
+            numbers.append(len(traces))
+            traces.append(flat)
+        at.append(numbers)
+    text = json.dumps({"paths": list(paths), "steps": [list(k) for k in steps], "traces": traces},
+                      ensure_ascii=False, separators=(",", ":"))
+    return TickData(Markup(text.replace("<", "\\u003c")), at)
 
 
 @dataclass(frozen=True)

@@ -26,12 +26,10 @@ from logicenveval.reporting.details import (
     KIND_SHORT,
     Source,
     TaskRow,
-    path_index,
-    paths_json,
     search_words,
     slug,
     sources,
-    tick_table,
+    tick_data,
 )
 from logicenveval.reporting.tables import (
     COLUMNS,
@@ -52,7 +50,7 @@ from logicenveval.reporting.why import GeneratorReasons, Where, reasons
 def jinja() -> Environment:
     env = Environment(loader=PackageLoader("logicenveval", "reporting/templates"),
                       autoescape=select_autoescape(["html", "j2"]))
-    env.globals.update(kind_short=KIND_SHORT, faulty_kinds=FAULTY_KINDS, tick_table=tick_table)
+    env.globals.update(kind_short=KIND_SHORT, faulty_kinds=FAULTY_KINDS)
     return env
 
 
@@ -142,6 +140,16 @@ class Collected:
     written: set[Path]
 
 
+#: files every detail page links (`details/<name>`), made of these templates' text
+PAGE_ASSETS = {"page.css": ("report.css", "task.css"), "page.js": ("task.js", "report.js")}
+
+
+def _template_text(env: Environment, name: str) -> str:
+    if env.loader is None:
+        raise TypeError("the report's Jinja environment has no loader")
+    return env.loader.get_source(env, name)[0]
+
+
 def _index_row(row: TaskRow, not_measured: set[str]) -> IndexRow:
     m = row.metrics
     measured = row.task not in not_measured and m.get("n_envs") is not None if m else False
@@ -166,6 +174,10 @@ def write_details(out: Path, srcs: Sequence[Source], generators: Sequence[str],
 
     template = env.get_template("task.html.j2")
     got = Collected([], [], {}, {}, set())
+    for name, parts in PAGE_ASSETS.items():  # the pages' style and script, written once
+        path = out / "details" / name
+        atomic_write_text(path, "".join(_template_text(env, part) for part in parts), durable=False)
+        got.written.add(path)
     for source in srcs:
         results = source.results
         assets = Assets(out, source, got.written)
@@ -173,9 +185,8 @@ def write_details(out: Path, srcs: Sequence[Source], generators: Sequence[str],
             values = results["results"].get(row.generator, {})
             not_measured = set(values.get("not_measured_tasks") or ())
             up = "../" * row.href.count("/")
-            paths = path_index(row.envs)
             html = template.render(row=row, back=f"{up}leaderboard.html#{row.anchor}", up=up,
-                                   paths=paths, paths_json=paths_json(paths),
+                                   ticks=tick_data(row.envs),
                                    run_id=results.get("run_id", ""), model=results.get("model", ""),
                                    measured=row.task not in not_measured and is_measured(values))
             path = out / row.href
