@@ -44,6 +44,13 @@ def test_round_trip_is_byte_stable(tmp_path: Path) -> None:
     again = EnvSpec.model_validate_json(text)
     assert again == env
     assert env_to_json(again) == text
+    # one line per top-level field and per list item (an object, a room...), each plain JSON
+    lines = text.splitlines()
+    assert lines[0] == "{" and lines[-1] == "}" and lines[1] == '  "schema": "logicenveval.env/1",'
+    objects = lines.index('  "objects": [')
+    assert [json.loads(x.strip().rstrip(","))["id"] for x in lines[objects + 1:objects + 1 + len(env.objects)]] \
+        == [o.id for o in env.objects]
+    assert json.loads(text) == json.loads(json.dumps(env.to_json_dict(), indent=2))
     dumped = json.loads(text)
     assert dumped["schema"] == "logicenveval.env/1"
     assert dumped["rooms"][0]["floor_material"] == "oak"  # unknown fields are kept
