@@ -68,7 +68,7 @@ def timed_run(workers: int, out: Path, extra: list[str]) -> tuple[float, dict[st
 
 #: the order phases are printed in (others follow alphabetically)
 UNIT_PHASES = ("start-up", "tasks", "generation", "layout", "physics", "coverage", "simulation",
-               "traces", "mutants", "render", "writing")
+               "traces", "mutants", "render", "writing", "saving")
 RUN_PHASES = ("start-up", "tasks", "resume scan", "units", "saving", "results")
 
 

@@ -17,6 +17,7 @@ from logicenveval.reporting.compare import compare_results
 from logicenveval.reporting.details import EnvView, VerdictView, slug, tick_data, trace_rows
 from logicenveval.reporting.tables import markdown, rows
 from logicenveval.reporting.why import reason_key, reasons, summary_text
+from logicenveval.runner.unit_codec import full_paths
 
 REFERENCE = Path(__file__).resolve().parents[1] / "reports" / "reference" / "results.json"
 TASKS = "clean_living_room,hallway_entry_tidy,kitchen_fridge_restock"
@@ -229,7 +230,8 @@ def test_trace_lines_become_tick_rows_and_slugs_are_safe() -> None:
     assert data.at == [[0, None], [1, None]]
     assert page_ticks(f'<script type="application/json" id="ticks">{data.json}</script>') == [
         [(r.tick, r.node, r.status, r.path) for r in got]] * 2
-    assert len(json.loads(data.json)["steps"]) == 3 and len(json.loads(data.json)["paths"]) == 2
+    assert len(json.loads(data.json)["steps"]) == 3
+    assert json.loads(data.json)["paths"] == ["R", [0, "Sequence"], [1, "Walk[0]"], [1, "Pick[1]"]]  # a trie
     assert slug("logicenvgen-exact") == "logicenvgen-exact"
     for bad in ("../x", "/abs", "a b", "", ".."):
         s = slug(bad)
@@ -396,6 +398,7 @@ def page_ticks(page: str) -> list[list[tuple[str, str, str, str]]]:
     found = re.search(r'<script type="application/json" id="ticks">(.*?)</script>', page, re.S)
     assert found is not None and "<" not in found.group(1)
     data = json.loads(found.group(1))
+    data["paths"] = full_paths(data["paths"])
     return [[(str(flat[i]), *data["steps"][flat[i + 1]][:2], data["paths"][data["steps"][flat[i + 1]][2]])
              for i in range(0, len(flat), 2)] for flat in data["traces"]]
 

@@ -43,6 +43,25 @@ def test_one_and_two_workers_give_the_same_results(tmp_path: Path) -> None:
     for run in (one, two):
         phases = run["timing"]["phases"]
         assert set(phases) == {"logicenvgen", "cot"}
-        assert {"generation", "layout", "physics", "simulation", "mutants", "writing"} <= set(phases["logicenvgen"])
+        assert {"generation", "layout", "physics", "simulation", "mutants", "writing", "saving"} \
+            <= set(phases["logicenvgen"])  # `saving`: the unit committed where it was computed
         assert "layout" not in phases["cot"]  # CoT writes its coordinates down, no solver
-        assert {"start-up", "tasks", "units", "saving", "results"} <= set(run["timing"]["run_phases"])
+        assert {"start-up", "tasks", "units", "results"} <= set(run["timing"]["run_phases"])
+
+
+def test_workers_commit_their_units(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The run's process never writes a unit of a healthy worker: each worker commits its own."""
+    from logicenveval.runner.store import RunStore
+
+    def not_here(self: RunStore, record: object) -> None:
+        raise AssertionError("the run's process wrote a unit")
+
+    monkeypatch.setattr(RunStore, "save", not_here)
+    assert main(["run", "--model", "offline", "--tasks", "clean_living_room,hallway_entry_tidy",
+                 "--generators", "cot", "--workers", "2", "--output", str(tmp_path), "--quiet"]) == 0
+    monkeypatch.undo()
+    (run_dir,) = [p for p in tmp_path.iterdir() if p.is_dir()]
+    store = RunStore(run_dir)
+    for task in ("clean_living_room", "hallway_entry_tidy"):
+        unit = store.load("cot", task)
+        assert unit is not None and unit.samples and unit.inputs  # complete, with its fingerprints

@@ -9,9 +9,15 @@ from pathlib import Path
 from hypothesis import given
 from hypothesis import strategies as st
 
-from logicenveval.metrics.records import EnvDetail, EnvSample, PhysicsSummary, UnitRecord, VerdictTrace
+from logicenveval.metrics.records import (
+    EnvDetail,
+    EnvSample,
+    PhysicsSummary,
+    UnitRecord,
+    VerdictTrace,
+)
 from logicenveval.runner.store import RunStore, _digest
-from logicenveval.runner.unit_codec import PATHS, STEPS, decode_unit, encode_unit
+from logicenveval.runner.unit_codec import PATHS, STEPS, decode_unit, encode_unit, full_paths
 
 PATH = "CleanLivingRoom/Sequence/SubTree(TidyToy)[0]/Fallback/IfThenElse[1]/Sequence[1]/Walk[0]"
 LINES = [
@@ -37,8 +43,12 @@ def _record(lines: list[str], killed: tuple[list[str], ...] = ()) -> UnitRecord:
 def test_rows_with_paths_once_and_the_same_record_back(tmp_path: Path) -> None:
     record = _record(LINES)
     payload = encode_unit(record.model_dump(mode="json"))
-    assert payload[PATHS] == [PATH]
-    assert payload[STEPS] == [["Walk", 0, "RUNNING", "target=toy"], ["Walk", 0, "SUCCESS"], ["Pick", 0, "FAILURE", ""]]
+    parts = PATH.split("/")
+    assert payload[PATHS] == [parts[0], *([i, part] for i, part in enumerate(parts[1:]))]  # a trie
+    assert full_paths(payload[PATHS])[-1] == PATH
+    last = len(parts) - 1
+    assert payload[STEPS] == [["Walk", last, "RUNNING", "target=toy"], ["Walk", last, "SUCCESS"],
+                              ["Pick", last, "FAILURE", ""]]
     trace = payload["details"][0]["traces"]["correct"]["trace"]
     assert trace[:3] == [[1, 0], [2, 1], [3, 2]]
     assert trace[3:] == LINES[3:]
@@ -64,6 +74,7 @@ def test_killed_mutants_are_numbers_of_the_units_sorted_mutants(tmp_path: Path) 
     record = _record(LINES, (["m-c", "m-a"], [], ["m-b"]))
     payload = encode_unit(record.model_dump(mode="json"))
     assert [s["killed_mutants"] for s in payload["samples"]] == [[2, 0], [], [1]]
+    assert payload["mutants"] == {"unreachable": ["m-a"], "counterfactual": ["m-b"], "lackbranch": ["m-c"]}
     assert UnitRecord.model_validate(decode_unit(json.loads(json.dumps(payload)))) == record
     store = RunStore(tmp_path)
     store.save(record)
@@ -95,9 +106,13 @@ def test_a_damaged_row_makes_the_unit_recomputed(tmp_path: Path) -> None:
         path.write_text(json.dumps({"sha256": _digest(payload), "unit": payload}))
         assert RunStore(tmp_path).load("cot", "clean_living_room") is None
     payload = encode_unit(_record(LINES, (["m-a"],)).model_dump(mode="json"))
-    for steps, killed in (([["Walk", 5, "SUCCESS"]], [0]), ([["Walk", 0]], [0]), (payload[STEPS], [3]),
-                          (payload[STEPS], [0, "m-a"])):
-        damaged = {**payload, STEPS: steps, "samples": [{**payload["samples"][0], "killed_mutants": killed}]}
+    for paths, steps, killed in ((payload[PATHS], [["Walk", 99, "SUCCESS"]], [0]),
+                                 (payload[PATHS], [["Walk", 0]], [0]), (payload[PATHS], payload[STEPS], [3]),
+                                 (payload[PATHS], payload[STEPS], [0, "m-a"]),
+                                 (["R", [2, "a"], [0, "b"]], payload[STEPS], [0]),  # a parent after its child
+                                 (["R", [0, 1]], payload[STEPS], [0]), (["R", 3], payload[STEPS], [0])):
+        damaged = {**payload, PATHS: paths, STEPS: steps,
+                   "samples": [{**payload["samples"][0], "killed_mutants": killed}]}
         path.write_text(json.dumps({"sha256": _digest(damaged), "unit": damaged}))
         assert RunStore(tmp_path).load("cot", "clean_living_room") is None
 

@@ -25,6 +25,7 @@ from logicenveval.atomic import atomic_write_bytes, atomic_write_text
 from logicenveval.metrics.records import EnvDetail, UnitRecord
 from logicenveval.model.task import FAULTY_KINDS, POLICY_KINDS
 from logicenveval.runner.store import RunStore
+from logicenveval.runner.unit_codec import PathTable
 
 _NOT_RECORDED = "no trace recorded (the unit was written by a version that did not store traces)"
 _SAFE = re.compile(r"[A-Za-z0-9][A-Za-z0-9._-]{0,63}")
@@ -335,8 +336,9 @@ def trace_rows(lines: Sequence[str]) -> tuple[list[TickRow], list[str]]:
 @dataclass(frozen=True)
 class TickData:
     """A page's tick tables as one compact JSON (the page's script draws a table when its BT is
-    opened): tree paths and distinct (node, status, path) steps listed once, each trace a flat
-    list `[tick, step, tick, step, ...]`. Tables drawn as HTML were 83 % of a run's `details/`."""
+    opened): tree paths (a trie, `PathTable`) and distinct (node, status, path) steps listed
+    once, each trace a flat list `[tick, step, tick, step, ...]`. Tables drawn as HTML were 83 %
+    of a run's `details/`."""
 
     #: the `<script type="application/json">` text (no `<` can end the script)
     json: Markup
@@ -348,7 +350,7 @@ def tick_data(envs: Sequence[EnvView]) -> TickData:
     """The compact traces of a page's environments, in card order."""
     import json
 
-    paths: dict[str, int] = {}
+    paths = PathTable()
     steps: dict[tuple[str, str, int], int] = {}
     traces: list[list[int | str]] = []
     at: list[list[int | None]] = []
@@ -360,12 +362,12 @@ def tick_data(envs: Sequence[EnvView]) -> TickData:
                 continue
             flat: list[int | str] = []
             for r in v.rows:
-                key = (r.node, r.status, paths.setdefault(r.path, len(paths)))
+                key = (r.node, r.status, paths.number(r.path))
                 flat += (int(r.tick) if r.tick.isdigit() else r.tick, steps.setdefault(key, len(steps)))
             numbers.append(len(traces))
             traces.append(flat)
         at.append(numbers)
-    text = json.dumps({"paths": list(paths), "steps": [list(k) for k in steps], "traces": traces},
+    text = json.dumps({"paths": paths.entries, "steps": [list(k) for k in steps], "traces": traces},
                       ensure_ascii=False, separators=(",", ":"))
     return TickData(Markup(text.replace("<", "\\u003c")), at)
 

@@ -189,7 +189,8 @@ def row_status(*, measured: bool, not_measured: Sequence[str], budget_hit: Seque
 
 
 def write_outputs(run_dir: Path, results: dict[str, Any], records: Sequence[UnitRecord]) -> None:
-    lines = [json.dumps(s.model_dump(mode="json"), sort_keys=True) for r in records for s in r.samples]
+    lines = [json.dumps(s.model_dump(mode="json"), sort_keys=True, separators=(",", ":"))
+             for r in records for s in r.samples]
     atomic_write_text(run_dir / "samples.jsonl", "\n".join(lines) + ("\n" if lines else ""))
     atomic_write_text(run_dir / "results.json", json.dumps(results, indent=2, sort_keys=True) + "\n")
 

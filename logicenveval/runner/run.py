@@ -205,12 +205,18 @@ def _budget(config: RunConfig) -> Callable[[tuple[UnitSpec, ...]], float | None]
 
 
 def _crashed(chunk: tuple[UnitSpec, ...], why: str) -> list[UnitRecord]:
-    """The record of units whose worker died: recomputed by the next run unless timed out."""
+    """The record of units whose worker died (committed here, since the worker could not):
+    recomputed by the next run unless timed out."""
     timed_out = "time" in why
-    return [UnitRecord(generator=s.generator, task_id=s.task_id, error=why,
-                       error_kind="generation" if timed_out else "infrastructure",
-                       attempts=planned_failures(s.generator, 0) if timed_out else [])
-            for s in chunk]
+    records = [UnitRecord(generator=s.generator, task_id=s.task_id, error=why, inputs=s.inputs,
+                          error_kind="generation" if timed_out else "infrastructure",
+                          attempts=planned_failures(s.generator, 0) if timed_out else [])
+               for s in chunk]
+    with phases.phase("saving"):
+        for spec, record in zip(chunk, records, strict=True):
+            if spec.commit:
+                RunStore(Path(spec.run_dir)).save(record)
+    return records
 
 
 def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], tasks: list[Task],
@@ -256,9 +262,11 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
             else:
                 records[key] = stored
     reused = len(records)
+    pending = [s.model_copy(update={"inputs": inputs[(s.generator, s.task_id)], "commit": True})
+               for s in pending]  # each worker commits its units (`unit.committed`)
     start = time.perf_counter()
     console = console or Console(stderr=True)
-    with phases.phase("units"), Progress(  # the units (run here or awaited); committing is `saving`
+    with phases.phase("units"), Progress(  # the units, run (and committed) here or awaited
         TextColumn("[bold]{task.description:<14}"), BarColumn(), MofNCompleteColumn(),
         TimeRemainingColumn(), console=console, disable=not show_progress, transient=False,
     ) as progress:
@@ -275,10 +283,6 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
         with contextlib.closing(chunks) as finished:  # type: ignore[type-var]  # generators have close()
             for _, chunk in finished:
                 for record in chunk:
-                    record = record.model_copy(update={"inputs": inputs[(record.generator,
-                                                                         record.task_id)]})
-                    with phases.phase("saving"):
-                        store.save(record)
                     records[(record.generator, record.task_id)] = record
                     progress.advance(bars[record.generator])
                     streak = streak + 1 if record.error_kind == "infrastructure" else 0

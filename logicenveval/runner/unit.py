@@ -56,7 +56,7 @@ from logicenveval.model.task import POLICY_KINDS, TaskBrief
 from logicenveval.paths import child, name_problem, shown
 from logicenveval.redact import redact
 from logicenveval.runner import executors
-from logicenveval.runner.store import text_digest
+from logicenveval.runner.store import RunStore, text_digest
 from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
 
 
@@ -88,6 +88,10 @@ class UnitSpec(BaseModel):
     #: the run's limits, read and checked once in the parent (`limits.current`); empty: this
     #: process's own environment
     limits: dict[str, int] = Field(default_factory=dict)
+    #: fingerprints of what makes the unit (`UnitRecord.inputs`, `runner.fingerprint`)
+    inputs: dict[str, str] = Field(default_factory=dict)
+    #: commit the record to the run's `units/` where it was computed (`run_units`)
+    commit: bool = False
 
 
 def _unique_ids(envs: list[EnvSpec]) -> list[EnvSpec]:
@@ -516,8 +520,22 @@ def _settled(attempts: list[Attempt], unjudged: list[tuple[str, str, str]]) -> l
 
 
 def run_units(specs: tuple[UnitSpec, ...]) -> list[UnitRecord]:
-    """Several units in one hand-off to a worker (see `runner.schedule.hand_offs`)."""
-    return [run_unit(spec) for spec in specs]
+    """Several units in one hand-off to a worker (see `runner.schedule.hand_offs`), each
+    committed as it finishes (`commit`)."""
+    return [committed(spec, run_unit(spec)) for spec in specs]
+
+
+def committed(spec: UnitSpec, record: UnitRecord) -> UnitRecord:
+    """The record with its inputs, written to `units/` (atomic, durable) by the process that
+    computed it when `spec.commit`: workers commit in parallel, the run's process only gathers.
+    The record handed back counts the write as its `saving` phase (the file cannot time itself)."""
+    record = record.model_copy(update={"inputs": spec.inputs})
+    if not spec.commit:
+        return record
+    start = time.perf_counter()
+    RunStore(Path(spec.run_dir)).save(record)
+    spent = round(time.perf_counter() - start, 4)
+    return record.model_copy(update={"phases": {**record.phases, "saving": spent}})
 
 
 def _write(run_dir: Path, rel: Path, text: str, files: dict[str, str]) -> None:

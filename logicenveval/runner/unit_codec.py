@@ -2,10 +2,11 @@
 
 A trace line is the `str` of one simulator entry (`{'tick': 3, 'node': 'Walk', 'path':
 'Root/Sequence/Walk[0]', 'status': 'RUNNING', 'ports': 'target=toy'}`); on disk it becomes a pair
-`[tick, step number]`, with the unit's tree paths (`trace_paths`) and its distinct steps
-`[node, path number, status(, ports)]` (`trace_steps`) listed once. A line is stored as a pair
-only when the step gives back exactly the same text; any other line stays text. A sample's
-`killed_mutants` are numbers into the unit's sorted `mutants` ids. Loading restores the strings,
+`[tick, step number]`, with the unit's tree paths (`trace_paths`, a trie: `PathTable`) and its
+distinct steps `[node, path number, status(, ports)]` (`trace_steps`) listed once. A line is stored as a pair
+only when the step gives back exactly the same text; any other line stays text. The unit's
+`mutants` ({id: fault class}) are stored as {fault class: [ids]}, and a sample's `killed_mutants`
+as numbers into the sorted ids. Loading restores the strings,
 so `UnitRecord` is the same either way; unit files of earlier versions load unchanged (plain text
 lines; rows `[tick, node, path number, status(, ports)]` without `trace_steps`; mutant ids).
 """
@@ -21,6 +22,41 @@ PATHS = "trace_paths"
 STEPS = "trace_steps"
 _LINE = re.compile(r"\{'tick': (\d+), 'node': '([^'\\]*)', 'path': '([^'\\]*)', "
                    r"'status': '([^'\\]*)'(?:, 'ports': '([^'\\]*)')?\}")
+
+
+class PathTable:
+    """Tree paths numbered in order of first use, written as a trie: an entry is a path with no
+    listed parent, or `[parent number, last part]` (parents come first). A tree path repeats its
+    root's long prefix (`Root/Sequence/SubTree(TidyToy)[0]/...`): the trie holds each part once."""
+
+    def __init__(self) -> None:
+        self.numbers: dict[str, int] = {}
+        self.entries: list[str | list[int | str]] = []
+
+    def number(self, path: str) -> int:
+        at = self.numbers.get(path)
+        if at is None:
+            head, sep, tail = path.rpartition("/")
+            entry: str | list[int | str] = [self.number(head), tail] if sep and head else path
+            at = self.numbers[path] = len(self.entries)
+            self.entries.append(entry)
+        return at
+
+
+def full_paths(entries: object) -> list[str]:
+    """The paths a `PathTable`'s entries (or a plain list of paths) stand for."""
+    if not isinstance(entries, list):
+        raise ValueError("trace_paths is not a list")
+    out: list[str] = []
+    for entry in entries:
+        if isinstance(entry, str):
+            out.append(entry)
+        elif (isinstance(entry, list) and len(entry) == 2 and type(entry[0]) is int
+              and 0 <= entry[0] < len(out) and isinstance(entry[1], str)):
+            out.append(f"{out[entry[0]]}/{entry[1]}")
+        else:
+            raise ValueError("not a trace path entry")
+    return out
 
 
 def _line(tick: int, node: str, path: str, status: str, ports: list[str]) -> str:
@@ -54,7 +90,7 @@ def _text(row: list[Any], paths: list[str], steps: list[tuple[str, str, str, lis
 def encode_unit(payload: dict[str, Any]) -> dict[str, Any]:
     """The unit's JSON payload (`UnitRecord.model_dump(mode="json")`) with its traces as
     pairs and its samples' killed mutants as numbers."""
-    paths: dict[str, int] = {}
+    paths = PathTable()
     steps: dict[tuple[str, int, str, tuple[str, ...]], int] = {}
     details = []
     for detail in payload.get("details") or []:
@@ -67,14 +103,20 @@ def encode_unit(payload: dict[str, Any]) -> dict[str, Any]:
                 if m is None or _line(int(m[1]), m[2], m[3], m[4], list(ports)) != line:
                     lines.append(line)
                     continue
-                step = (m[2], paths.setdefault(m[3], len(paths)), m[4], ports)
+                step = (m[2], paths.number(m[3]), m[4], ports)
                 lines.append([int(m[1]), steps.setdefault(step, len(steps))])
             traces[kind] = {**verdict, "trace": lines}
         details.append({**detail, "traces": traces})
     out = {**payload, "samples": _killed_as_numbers(payload)} if "samples" in payload else payload
+    mutants = payload.get("mutants")
+    if isinstance(mutants, dict) and mutants and all(isinstance(c, str) for c in mutants.values()):
+        grouped: dict[str, list[str]] = {}
+        for mutant in sorted(mutants):
+            grouped.setdefault(mutants[mutant], []).append(mutant)
+        out = {**out, "mutants": grouped}
     if not steps:
         return out
-    return {**out, "details": details, PATHS: list(paths),
+    return {**out, "details": details, PATHS: paths.entries,
             STEPS: [[node, at, status, *ports] for node, at, status, ports in steps]}
 
 
@@ -106,12 +148,15 @@ def _killed_as_ids(payload: dict[str, Any]) -> list[Any]:
 def decode_unit(payload: dict[str, Any]) -> dict[str, Any]:
     """The payload with every trace line as text again and mutant ids for numbers (a damaged
     row, step or number raises ValueError)."""
+    mutants = payload.get("mutants")
+    if isinstance(mutants, dict) and mutants and all(isinstance(ids, list) for ids in mutants.values()):
+        if not all(isinstance(m, str) for ids in mutants.values() for m in ids):
+            raise ValueError("a unit's mutant ids are not strings")
+        payload = {**payload, "mutants": dict(sorted((m, kind) for kind, ids in mutants.items() for m in ids))}
     payload = {**payload, "samples": _killed_as_ids(payload)} if "samples" in payload else payload
     if PATHS not in payload:
         return payload
-    table = payload[PATHS]
-    if not isinstance(table, list) or not all(isinstance(p, str) for p in table):
-        raise ValueError("trace_paths is not a list of paths")
+    table = full_paths(payload[PATHS])
     raw = payload.get(STEPS)
     if raw is not None and not isinstance(raw, list):
         raise ValueError("trace_steps is not a list of steps")

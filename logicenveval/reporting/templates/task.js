@@ -1,6 +1,8 @@
 "use strict";
 // a BT's tick table is drawn from the page's compact traces when it is first opened
 const ticks = JSON.parse(document.getElementById("ticks").textContent);
+// paths are a trie: a path, or [parent number, last part]
+ticks.paths.forEach((p, i) => { if (typeof p !== "string") ticks.paths[i] = ticks.paths[p[0]] + "/" + p[1]; });
 function shortPath(path) {
   const parts = path.split("/");
   return (parts.length > 3 ? "…/" : "") + parts.slice(-3).join("/");
