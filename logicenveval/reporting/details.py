@@ -12,9 +12,10 @@ from one compact JSON when the BT is opened: `tick_data`). Faulty BTs read
 from __future__ import annotations
 
 import ast
+import functools
 import hashlib
 import re
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Collection, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -382,8 +383,22 @@ class VerdictView:
     #: False where the environment is not a valid scenario (FauDR does not count it)
     counted: bool
     message: str
-    rows: list[TickRow]
-    other: list[str]
+    #: the recorded trace, read into `rows` and `other` only when a page shows it (the index
+    #: needs none of it)
+    lines: Sequence[str] = ()
+
+    @functools.cached_property
+    def _read(self) -> tuple[list[TickRow], list[str]]:
+        return trace_rows(self.lines)
+
+    @property
+    def rows(self) -> list[TickRow]:
+        return self._read[0]
+
+    @property
+    def other(self) -> list[str]:
+        """The trace's lines that are not tick entries (kept as text)."""
+        return self._read[1]
 
 
 @dataclass(frozen=True)
@@ -439,9 +454,8 @@ def _verdicts(sample: Mapping[str, Any], detail: EnvDetail | None, valid: bool) 
         else:
             good = status == "passed"
             label = "passed" if good else "failed"
-        rows, other = trace_rows(lines)
         out.append(VerdictView(kind, status, label, good, valid or kind not in FAULTY_KINDS,
-                               message, rows, other))
+                               message, lines))
     return out
 
 
@@ -475,8 +489,10 @@ def kind_short(kind: str) -> str:
     return KIND_SHORT.get(kind, kind)
 
 
-def env_view(assets: Assets, generator: str, task: str, sample: dict[str, Any],
+def env_view(assets: Assets | None, generator: str, task: str, sample: dict[str, Any],
              detail: EnvDetail | None) -> EnvView:
+    """What a card shows of one environment; without `assets` (an index row whose page is
+    written already) its render and file are not looked up."""
     physics = sample.get("physics") or {}
     failures = [f for f in physics.get("failures") or [] if isinstance(f, dict)]
     dims = {d: [str(f.get("message") or f.get("code")) for f in failures if f.get("dimension") == d]
@@ -494,8 +510,8 @@ def env_view(assets: Assets, generator: str, task: str, sample: dict[str, Any],
     verdicts = _verdicts(sample, detail, valid)
     return EnvView(
         env_id=str(sample["env_id"]), anchor=env_anchor(str(sample["env_id"])),
-        render=render_href(assets, generator, task, sample, detail),
-        env_file=env_href(assets, generator, task, str(sample["env_id"])),
+        render=None if assets is None else render_href(assets, generator, task, sample, detail),
+        env_file=None if assets is None else env_href(assets, generator, task, str(sample["env_id"])),
         well_formed=bool(sample.get("well_formed")), valid=valid,
         problems=[str(p) for p in [*(sample.get("problems") or []), *(sample.get("violations") or [])]],
         physics=dims, extra=extra,
@@ -552,9 +568,11 @@ class TaskRow:
         return {k: any(v.kind == k and v.good for e in valid for v in e.verdicts) for k in FAULTY_KINDS}
 
 
-def task_rows(source: Source, generators: Sequence[str], assets: Assets | None = None) -> Iterator[TaskRow]:
+def task_rows(source: Source, generators: Sequence[str], assets: Assets | None = None,
+              paged: Collection[tuple[str, str]] = ()) -> Iterator[TaskRow]:
     """Every (generator, task) of a source with its environments, in results order; `assets`
-    says where the report links renders and environment files from (default: in place)."""
+    says where the report links renders and environment files from (default: in place);
+    `paged`: (generator, task) whose page is written already (its files are not looked up)."""
     assets = assets or Assets(source.run_dir, source)
     reader = UnitReader(source)
     per_task = source.results.get("per_task", {})
@@ -564,7 +582,8 @@ def task_rows(source: Source, generators: Sequence[str], assets: Assets | None =
         for task in source.results.get("tasks", []):
             unit = reader.unit(gen, task)
             pairs = reader.envs(gen, task, unit)
-            envs = [env_view(assets, gen, task, s, d) for s, d in pairs]
+            links = None if (gen, task) in paged else assets
+            envs = [env_view(links, gen, task, s, d) for s, d in pairs]
             yield TaskRow(
                 generator=gen, task=task, seed=source.seed, anchor=task_anchor(gen, task, scope),
                 href=page_path(source, gen, task),
