@@ -178,7 +178,6 @@ def write_details(out: Path, srcs: Sequence[Source], generators: Sequence[str],
     style and script every page links."""
     from logicenveval.reporting.details import Assets, task_rows
 
-    template = env.get_template("task.html.j2")
     got = Collected([], [], {}, {}, set())
     for name, parts in PAGE_ASSETS.items() if shared else ():
         path = out / "details" / name
@@ -194,11 +193,11 @@ def write_details(out: Path, srcs: Sequence[Source], generators: Sequence[str],
             path = out / row.href
             got.written.add(path)
             if (row.generator, row.task) not in paged:
-                up = "../" * row.href.count("/")
-                html = template.render(row=row, back=f"{up}leaderboard.html#{row.anchor}", up=up,
-                                       ticks=tick_data(row.envs),
-                                       run_id=results.get("run_id", ""), model=results.get("model", ""),
-                                       measured=row.task not in not_measured and is_measured(values))
+                up = "../" * row.href.count("/")  # the template is compiled when first needed
+                html = env.get_template("task.html.j2").render(
+                    row=row, back=f"{up}leaderboard.html#{row.anchor}", up=up, ticks=tick_data(row.envs),
+                    run_id=results.get("run_id", ""), model=results.get("model", ""),
+                    measured=row.task not in not_measured and is_measured(values))
                 atomic_write_text(path, html, durable=False)
             got.rows.append(_index_row(row, not_measured))
             for e in row.envs:
