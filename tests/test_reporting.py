@@ -224,8 +224,9 @@ def test_trace_lines_become_tick_rows_and_slugs_are_safe() -> None:
     assert other == lines[4:]
     # a page's tables travel as one compact JSON: paths and (node, status, path) steps once each
     env = EnvView("e0", "env-e0", True, True, [], {}, [], [], "", [
-        VerdictView("correct", "passed", "passed", True, True, "", got, other),
-        VerdictView("lackbranch", "passed", "missed", False, True, "", [], [])])
+        VerdictView("correct", "passed", "passed", True, True, "", lines),
+        VerdictView("lackbranch", "passed", "missed", False, True, "", [])])
+    assert (env.verdicts[0].rows, env.verdicts[0].other) == (got, other)  # read when a page shows it
     data = tick_data([env, env])
     assert data.at == [[0, None], [1, None]]
     assert page_ticks(f'<script type="application/json" id="ticks">{data.json}</script>') == [
