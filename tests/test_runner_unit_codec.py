@@ -17,7 +17,14 @@ from logicenveval.metrics.records import (
     VerdictTrace,
 )
 from logicenveval.runner.store import RunStore, _digest
-from logicenveval.runner.unit_codec import PATHS, STEPS, decode_unit, encode_unit, full_paths
+from logicenveval.runner.unit_codec import (
+    PATHS,
+    STEPS,
+    PathTable,
+    decode_unit,
+    encode_unit,
+    full_paths,
+)
 
 PATH = "CleanLivingRoom/Sequence/SubTree(TidyToy)[0]/Fallback/IfThenElse[1]/Sequence[1]/Walk[0]"
 LINES = [
@@ -128,3 +135,12 @@ _TEXT = st.text(st.characters(blacklist_categories=("Cs",)), max_size=12)
 def test_any_lines_round_trip(lines: list[str]) -> None:
     payload = _record(lines).model_dump(mode="json")
     assert decode_unit(json.loads(json.dumps(encode_unit(payload)))) == payload
+
+
+@given(st.lists(st.text(st.sampled_from("ab/[]0"), max_size=12), max_size=12))
+def test_a_path_trie_gives_back_every_path(paths: list[str]) -> None:
+    table = PathTable()
+    numbers = [table.number(p) for p in paths]
+    full = full_paths(json.loads(json.dumps(table.entries)))
+    assert [full[n] for n in numbers] == paths
+    assert len(full) == len(set(full))  # each path (and parent) listed once
