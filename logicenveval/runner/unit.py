@@ -546,8 +546,8 @@ def committed(spec: UnitSpec, record: UnitRecord) -> Committed:
     """The record with its inputs and figures, written to `units/` (atomic, durable) by the
     process that computed it when `spec.commit` (workers commit in parallel, the run's process
     only gathers), then handed to `spec.on_commit`. The record handed back counts the write as
-    its `saving` phase (a file cannot time its own write) and the hook as `report`; a hook that
-    fails leaves the page to the run's process."""
+    its `saving` phase (a file cannot time its own write), its figures as `results` and the hook
+    as `report`; figures or a page that fail here are left to the run's process."""
     record = record.model_copy(update={"inputs": spec.inputs})
     if not spec.commit:
         return Committed(record)
@@ -556,8 +556,8 @@ def committed(spec: UnitSpec, record: UnitRecord) -> Committed:
         with phases.phase("saving"):
             RunStore(Path(spec.run_dir)).save(record)
         metrics = None
-        if record.measured:
-            with phases.phase("results"):
+        if record.measured:  # a unit its figures cannot be worked out of: the run's process
+            with phases.phase("results"), contextlib.suppress(Exception):  # tries and says why
                 metrics = unit_metrics(load_task(spec.task_id, spec.tasks_dir), record)
         paged = False
         if spec.on_commit is not None:
