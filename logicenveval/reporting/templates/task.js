@@ -31,6 +31,8 @@ function drawTicks(box) {
   box.insertBefore(table, after ? after.nextSibling : box.querySelector("summary").nextSibling);
 }
 document.querySelectorAll("details.bt[data-trace]").forEach(box => {
+  // drawn on the click itself (before the box opens), and on any other way of opening it
+  box.querySelector("summary").addEventListener("click", () => drawTicks(box));
   box.addEventListener("toggle", () => { if (box.open) drawTicks(box); });
   if (box.open) drawTicks(box);
 });
