@@ -44,6 +44,18 @@ def test_round_trip_is_byte_stable(tmp_path: Path) -> None:
     again = EnvSpec.model_validate_json(text)
     assert again == env
     assert env_to_json(again) == text
+    # one line per top-level field and per list item (an object, a room...), each plain JSON
+    lines = text.splitlines()
+    assert lines[0] == "{" and lines[-1] == "}" and lines[1] == '  "schema": "logicenveval.env/1",'
+    objects = lines.index('  "objects": [')
+    assert [json.loads(x.strip().rstrip(","))["id"] for x in lines[objects + 1:objects + 1 + len(env.objects)]] \
+        == [o.id for o in env.objects]
+    # an object's empty container, attributes, states and mesh are left out: the same EnvSpec
+    assert env_from_dict(json.loads(text)) == env
+    written = {o["id"]: o for o in json.loads(text)["objects"]}
+    for obj in env.objects:
+        left_out = {k for k in ("container", "attributes", "states", "mesh") if not getattr(obj, k)}
+        assert left_out and not left_out & set(written[obj.id]) and "support" in written[obj.id]
     dumped = json.loads(text)
     assert dumped["schema"] == "logicenveval.env/1"
     assert dumped["rooms"][0]["floor_material"] == "oak"  # unknown fields are kept

@@ -14,9 +14,10 @@ import pytest
 from logicenveval.cli import main
 from logicenveval.metrics.uncertainty import ci95
 from logicenveval.reporting.compare import compare_results
-from logicenveval.reporting.details import slug, trace_rows
+from logicenveval.reporting.details import EnvView, VerdictView, slug, tick_data, trace_rows
 from logicenveval.reporting.tables import markdown, rows
 from logicenveval.reporting.why import reason_key, reasons, summary_text
+from logicenveval.runner.unit_codec import full_paths
 
 REFERENCE = Path(__file__).resolve().parents[1] / "reports" / "reference" / "results.json"
 TASKS = "clean_living_room,hallway_entry_tidy,kitchen_fridge_restock"
@@ -221,6 +222,17 @@ def test_trace_lines_become_tick_rows_and_slugs_are_safe() -> None:
         ("1", "Walk", "RUNNING"), ("2", "Walk target=kitchen", "SUCCESS"), ("3", "Pick obj=cup_1", "violation"),
         ("4", "Walk target=kitchen", "SUCCESS")]  # ports carried forward by path
     assert other == lines[4:]
+    # a page's tables travel as one compact JSON: paths and (node, status, path) steps once each
+    env = EnvView("e0", "env-e0", True, True, [], {}, [], [], "", [
+        VerdictView("correct", "passed", "passed", True, True, "", lines),
+        VerdictView("lackbranch", "passed", "missed", False, True, "", [])])
+    assert (env.verdicts[0].rows, env.verdicts[0].other) == (got, other)  # read when a page shows it
+    data = tick_data([env, env])
+    assert data.at == [[0, None], [1, None]]
+    assert page_ticks(f'<script type="application/json" id="ticks">{data.json}</script>') == [
+        [(r.tick, r.node, r.status, r.path) for r in got]] * 2
+    assert len(json.loads(data.json)["steps"]) == 3
+    assert json.loads(data.json)["paths"] == ["R", [0, "Sequence"], [1, "Walk[0]"], [1, "Pick[1]"]]  # a trie
     assert slug("logicenvgen-exact") == "logicenvgen-exact"
     for bad in ("../x", "/abs", "a b", "", ".."):
         s = slug(bad)
@@ -358,7 +370,8 @@ def test_report_pages_show_why_and_stand_alone(run_dir: Path, tmp_path: Path) ->
     assert 'id="gen-cot"' in html and 'id="t-cot--clean_living_room"' in html and 'id="filter"' in html
     assert "Why environments were rejected or failed" in html
     page = (run_dir / "details" / "cot" / "kitchen_fridge_restock.html").read_text()
-    assert 'id="env-cot-00"' in page and "<table class=\"ticks\">" in page and "{'tick'" not in page
+    assert 'id="env-cot-00"' in page and 'data-trace="0"' in page and "{'tick'" not in page
+    assert page_ticks(page)[0][0][0] == "1" and "<table" not in page.split('<div class="envs-grid">')[1]
     assert re.search(r">(detected|missed)</span>", page)
     samples = [json.loads(x) for x in (run_dir / "samples.jsonl").read_text().splitlines()]
     physics = next(f for s in samples for f in s["physics"]["failures"] if s["generator"] == "cot")
@@ -379,6 +392,16 @@ def test_report_pages_show_why_and_stand_alone(run_dir: Path, tmp_path: Path) ->
     assert main(["report", str(moved)]) == 0
     assert (moved / "renders" / "cot" / "clean_living_room" / "cot-00.svg").read_text().startswith("<svg")
     assert _broken_links(page_path) == []
+
+
+def page_ticks(page: str) -> list[list[tuple[str, str, str, str]]]:
+    """A detail page's tick tables as its script draws them: (tick, node, status, full path) rows."""
+    found = re.search(r'<script type="application/json" id="ticks">(.*?)</script>', page, re.S)
+    assert found is not None and "<" not in found.group(1)
+    data = json.loads(found.group(1))
+    data["paths"] = full_paths(data["paths"])
+    return [[(str(flat[i]), *data["steps"][flat[i + 1]][:2], data["paths"][data["steps"][flat[i + 1]][2]])
+             for i in range(0, len(flat), 2)] for flat in data["traces"]]
 
 
 def _broken_links(page: Path) -> list[str]:
@@ -482,16 +505,13 @@ def test_the_filters_find_every_reason_word_and_code_shown(faulty_run: Path) -> 
     assert cards and len(cards) == sum(p.read_text().count("<article") for p in pages)
     for code in ("interpenetration", "outside_room", "blocks_door", "ill-formed", "missed"):
         assert any(_found(text, code) for text, _ in cards), code
-    nodes = sum(bool(re.search(r"<td>\w+ \w+=\w", inner)) for _, inner in cards)
-    # a tick row's full tree path is the page's path list entry its number names (shown on hover)
-    for path in pages:
-        text = path.read_text()
-        listed = json.loads(re.search(r'<script type="application/json" id="tick-paths">(.*?)</script>',
-                                      text, re.S).group(1))  # type: ignore[union-attr]
-        for index, short in re.findall(r'<td data-p="(\d+)">([^<\n]*)', text):
-            full = listed[int(index)]
-            assert full.endswith(short.removeprefix("…/")) and full.count("/") >= short.count("/")
-    assert nodes  # traces show port values (`Walk target=...`), searchable as the card's text
+    # traces show port values (`Walk target=...`); the page's script draws them and adds them to
+    # each card's filter text, drawn or not; every traced BT of a card names its trace
+    traces = [page_ticks(p.read_text()) for p in pages]
+    assert any(re.fullmatch(r"\w+ \w+=\w.*", node) for t in traces for rows in t for _, node, _, _ in rows)
+    for p, t in zip(pages, traces, strict=True):
+        named = [int(n) for n in re.findall(r'<details class="bt" data-trace="(\d+)">', p.read_text())]
+        assert named == list(range(len(t))) and all(t)
 
 
 def test_linked_files_never_leave_the_run_folder(tmp_path: Path) -> None:

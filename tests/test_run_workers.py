@@ -43,6 +43,38 @@ def test_one_and_two_workers_give_the_same_results(tmp_path: Path) -> None:
     for run in (one, two):
         phases = run["timing"]["phases"]
         assert set(phases) == {"logicenvgen", "cot"}
-        assert {"generation", "layout", "physics", "simulation", "mutants", "writing"} <= set(phases["logicenvgen"])
+        assert {"generation", "layout", "physics", "simulation", "mutants", "writing", "saving"} \
+            <= set(phases["logicenvgen"])  # `saving`: the unit committed where it was computed
         assert "layout" not in phases["cot"]  # CoT writes its coordinates down, no solver
-        assert {"start-up", "tasks", "units", "saving", "results"} <= set(run["timing"]["run_phases"])
+        assert {"start-up", "tasks", "units", "results"} <= set(run["timing"]["run_phases"])
+
+
+def test_workers_commit_their_units_and_write_their_pages(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The run's process never writes a unit or a task page of a healthy worker: each worker
+    commits its units and writes their pages, the same pages `report` and a resumed run write."""
+    import logicenveval.reporting.leaderboard as leaderboard
+    from logicenveval.runner.store import RunStore
+
+    def not_here(*args: object) -> None:
+        raise AssertionError("the run's process did a worker's job")
+
+    monkeypatch.setattr(RunStore, "save", not_here)
+    monkeypatch.setattr(leaderboard, "tick_data", not_here)  # made for each page it writes
+    argv = ["run", "--model", "offline", "--tasks", "clean_living_room,bathroom_towel_refresh",
+            "--generators", "cot,logicenvgen", "--workers", "2", "--output", str(tmp_path), "--quiet"]
+    assert main(argv) == 0
+    monkeypatch.undo()
+    (run_dir,) = [p for p in tmp_path.iterdir() if p.is_dir()]
+    store = RunStore(run_dir)
+    for generator in ("cot", "logicenvgen"):
+        for task in ("clean_living_room", "bathroom_towel_refresh"):
+            unit = store.load(generator, task)
+            assert unit is not None and unit.samples and unit.inputs  # complete, with its fingerprints
+    pages = {p: p.read_bytes() for p in sorted((run_dir / "details").rglob("*.html"))}
+    assert len(pages) == 4 and (run_dir / "details" / "page.js").is_file()
+    assert main(["report", str(run_dir)]) == 0  # every page from the units alone
+    assert {p: p.read_bytes() for p in pages} == pages
+    for page in pages:
+        page.unlink()
+    assert main(argv) == 0  # resumed: the units are reused, their pages written by the run
+    assert {p: p.read_bytes() for p in pages} == pages

@@ -129,13 +129,19 @@ def run(args: argparse.Namespace) -> int:
         print_size(multi.run_dir)
         _say_stale(multi.stale, multi.records, args.debug)
         return report_failures(multi.records)
-    outcome = run_benchmark(config, show_progress=not args.quiet)
+    from functools import partial
+
+    from logicenveval.reporting.unit_page import write_unit_page
+
+    # each unit's report page is written by the worker that ran it (`reporting.unit_page`)
+    pages = partial(write_unit_page, run_id=config.resolved_run_id(), model=config.model)
+    outcome = run_benchmark(config, show_progress=not args.quiet, on_commit=pages)
     if formats:
         from logicenveval.scene.export_files import export_run
 
         written = export_run(outcome.run_dir, formats)
         print(f"exported {len(written)} file(s) ({', '.join(formats)}) next to the environments")
-    shown = publish(outcome.run_dir, outcome.results, outcome.records)
+    shown = publish(outcome.run_dir, outcome.results, outcome.records, outcome.paged)
     print(shown.summary)
     print(f"computed {outcome.computed} unit(s), reused {outcome.reused}")
     print("\n".join(path_lines("run folder:", outcome.run_dir)))

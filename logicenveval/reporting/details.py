@@ -4,7 +4,8 @@ A report's main page stays small: the table, the reasons and an index of (genera
 rows. Each row links to one page `details/[<run>/][seed<S>/]<generator>/<task>.html` holding
 that task's environments: the top-down render (linked, not inlined: the unit wrote it once under
 `renders/`; click to open it full size) and a link to the EnvSpec JSON, the problems that made it ill-formed, every physics finding with its message, the
-covered decision paths and each BT's verdict with its tick trace as a table. Faulty BTs read
+covered decision paths and each BT's verdict with its tick trace as a table (drawn by the page
+from one compact JSON when the BT is opened: `tick_data`). Faulty BTs read
 "detected" / "missed": a faulty BT that passes is a fault the environment did not reveal.
 """
 
@@ -13,9 +14,8 @@ from __future__ import annotations
 import ast
 import functools
 import hashlib
-import html
 import re
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Collection, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -26,6 +26,7 @@ from logicenveval.atomic import atomic_write_bytes, atomic_write_text
 from logicenveval.metrics.records import EnvDetail, UnitRecord
 from logicenveval.model.task import FAULTY_KINDS, POLICY_KINDS
 from logicenveval.runner.store import RunStore
+from logicenveval.runner.unit_codec import PathTable
 
 _NOT_RECORDED = "no trace recorded (the unit was written by a version that did not store traces)"
 _SAFE = re.compile(r"[A-Za-z0-9][A-Za-z0-9._-]{0,63}")
@@ -333,49 +334,43 @@ def trace_rows(lines: Sequence[str]) -> tuple[list[TickRow], list[str]]:
     return rows, other
 
 
-@functools.lru_cache(maxsize=4096)
-def _where(path: str, index: int) -> str:
-    """The `where` cell of a tick row: the short path; the full one (the page's `index`-th path,
-    listed once per page) is shown on hover. Rows repeat a few paths thousands of times."""
-    parts = path.split("/")
-    short = ("…/" if len(parts) > 3 else "") + "/".join(parts[-3:])
-    return f'<td data-p="{index}">{html.escape(short)}'
+@dataclass(frozen=True)
+class TickData:
+    """A page's tick tables as one compact JSON (the page's script draws a table when its BT is
+    opened): tree paths (a trie, `PathTable`) and distinct (node, status, path) steps listed
+    once, each trace a flat list `[tick, step, tick, step, ...]`. Tables drawn as HTML were 83 %
+    of a run's `details/`."""
+
+    #: the `<script type="application/json">` text (no `<` can end the script)
+    json: Markup
+    #: per environment of the page, per verdict: the number of its trace (None: no rows)
+    at: list[list[int | None]]
 
 
-def path_index(envs: Sequence[EnvView]) -> dict[str, int]:
-    """Every tree path the page's traces pass, numbered in order of first appearance."""
-    out: dict[str, int] = {}
-    for e in envs:
-        for v in e.verdicts:
-            for r in v.rows:
-                out.setdefault(r.path, len(out))
-    return out
-
-
-def paths_json(paths: Mapping[str, int]) -> Markup:
-    """The page's path list for a `<script type="application/json">` (no `<` can end the script)."""
+def tick_data(envs: Sequence[EnvView]) -> TickData:
+    """The compact traces of a page's environments, in card order."""
     import json
 
-    return Markup(json.dumps(list(paths), ensure_ascii=False).replace("<", "\\u003c"))
-
-
-#: `html.escape` memoised: tick cells repeat a few hundred node, status and tick texts ~240,000 times
-_escape = functools.lru_cache(maxsize=8192)(html.escape)
-
-
-def tick_table(rows: Sequence[TickRow], paths: Mapping[str, int]) -> Markup:
-    """The trace as an HTML table (built here, not in the template: a report holds ~60,000 rows,
-    so cells leave out the end tags HTML lets them omit and name their path by its number in
-    the page's `paths`)."""
-    if not rows:
-        return Markup("")
-    esc = _escape
-    out = ['<table class="ticks"><thead><tr><th>tick</th><th>node</th><th>status</th>'
-           "<th>where</th></tr></thead><tbody>"]
-    out += [f'<tr class="st-{esc(r.status.lower())}"><td>{esc(r.tick)}<td>{esc(r.node)}'
-            f"<td>{esc(r.status)}{_where(r.path, paths[r.path])}" for r in rows]
-    out.append("</tbody></table>")
-    return Markup("\n".join(out))
+    paths = PathTable()
+    steps: dict[tuple[str, str, int], int] = {}
+    traces: list[list[int | str]] = []
+    at: list[list[int | None]] = []
+    for e in envs:
+        numbers: list[int | None] = []
+        for v in e.verdicts:
+            if not v.rows:
+                numbers.append(None)
+                continue
+            flat: list[int | str] = []
+            for r in v.rows:
+                key = (r.node, r.status, paths.number(r.path))
+                flat += (int(r.tick) if r.tick.isdigit() else r.tick, steps.setdefault(key, len(steps)))
+            numbers.append(len(traces))
+            traces.append(flat)
+        at.append(numbers)
+    text = json.dumps({"paths": paths.entries, "steps": [list(k) for k in steps], "traces": traces},
+                      ensure_ascii=False, separators=(",", ":"))
+    return TickData(Markup(text.replace("<", "\\u003c")), at)
 
 
 @dataclass(frozen=True)
@@ -388,8 +383,22 @@ class VerdictView:
     #: False where the environment is not a valid scenario (FauDR does not count it)
     counted: bool
     message: str
-    rows: list[TickRow]
-    other: list[str]
+    #: the recorded trace, read into `rows` and `other` only when a page shows it (the index
+    #: needs none of it)
+    lines: Sequence[str] = ()
+
+    @functools.cached_property
+    def _read(self) -> tuple[list[TickRow], list[str]]:
+        return trace_rows(self.lines)
+
+    @property
+    def rows(self) -> list[TickRow]:
+        return self._read[0]
+
+    @property
+    def other(self) -> list[str]:
+        """The trace's lines that are not tick entries (kept as text)."""
+        return self._read[1]
 
 
 @dataclass(frozen=True)
@@ -445,9 +454,8 @@ def _verdicts(sample: Mapping[str, Any], detail: EnvDetail | None, valid: bool) 
         else:
             good = status == "passed"
             label = "passed" if good else "failed"
-        rows, other = trace_rows(lines)
         out.append(VerdictView(kind, status, label, good, valid or kind not in FAULTY_KINDS,
-                               message, rows, other))
+                               message, lines))
     return out
 
 
@@ -481,8 +489,10 @@ def kind_short(kind: str) -> str:
     return KIND_SHORT.get(kind, kind)
 
 
-def env_view(assets: Assets, generator: str, task: str, sample: dict[str, Any],
+def env_view(assets: Assets | None, generator: str, task: str, sample: dict[str, Any],
              detail: EnvDetail | None) -> EnvView:
+    """What a card shows of one environment; without `assets` (an index row whose page is
+    written already) its render and file are not looked up."""
     physics = sample.get("physics") or {}
     failures = [f for f in physics.get("failures") or [] if isinstance(f, dict)]
     dims = {d: [str(f.get("message") or f.get("code")) for f in failures if f.get("dimension") == d]
@@ -500,8 +510,8 @@ def env_view(assets: Assets, generator: str, task: str, sample: dict[str, Any],
     verdicts = _verdicts(sample, detail, valid)
     return EnvView(
         env_id=str(sample["env_id"]), anchor=env_anchor(str(sample["env_id"])),
-        render=render_href(assets, generator, task, sample, detail),
-        env_file=env_href(assets, generator, task, str(sample["env_id"])),
+        render=None if assets is None else render_href(assets, generator, task, sample, detail),
+        env_file=None if assets is None else env_href(assets, generator, task, str(sample["env_id"])),
         well_formed=bool(sample.get("well_formed")), valid=valid,
         problems=[str(p) for p in [*(sample.get("problems") or []), *(sample.get("violations") or [])]],
         physics=dims, extra=extra,
@@ -558,9 +568,11 @@ class TaskRow:
         return {k: any(v.kind == k and v.good for e in valid for v in e.verdicts) for k in FAULTY_KINDS}
 
 
-def task_rows(source: Source, generators: Sequence[str], assets: Assets | None = None) -> Iterator[TaskRow]:
+def task_rows(source: Source, generators: Sequence[str], assets: Assets | None = None,
+              paged: Collection[tuple[str, str]] = ()) -> Iterator[TaskRow]:
     """Every (generator, task) of a source with its environments, in results order; `assets`
-    says where the report links renders and environment files from (default: in place)."""
+    says where the report links renders and environment files from (default: in place);
+    `paged`: (generator, task) whose page is written already (its files are not looked up)."""
     assets = assets or Assets(source.run_dir, source)
     reader = UnitReader(source)
     per_task = source.results.get("per_task", {})
@@ -570,7 +582,8 @@ def task_rows(source: Source, generators: Sequence[str], assets: Assets | None =
         for task in source.results.get("tasks", []):
             unit = reader.unit(gen, task)
             pairs = reader.envs(gen, task, unit)
-            envs = [env_view(assets, gen, task, s, d) for s, d in pairs]
+            links = None if (gen, task) in paged else assets
+            envs = [env_view(links, gen, task, s, d) for s, d in pairs]
             yield TaskRow(
                 generator=gen, task=task, seed=source.seed, anchor=task_anchor(gen, task, scope),
                 href=page_path(source, gen, task),

@@ -11,8 +11,9 @@ whole); a report written elsewhere copies them under `files/`.
 
 from __future__ import annotations
 
+import functools
 import os
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
@@ -26,12 +27,10 @@ from logicenveval.reporting.details import (
     KIND_SHORT,
     Source,
     TaskRow,
-    path_index,
-    paths_json,
     search_words,
     slug,
     sources,
-    tick_table,
+    tick_data,
 )
 from logicenveval.reporting.tables import (
     COLUMNS,
@@ -49,10 +48,12 @@ from logicenveval.reporting.tables import (
 from logicenveval.reporting.why import GeneratorReasons, Where, reasons
 
 
+@functools.cache
 def jinja() -> Environment:
+    """The report's templates, compiled once per process (a worker writes many pages)."""
     env = Environment(loader=PackageLoader("logicenveval", "reporting/templates"),
                       autoescape=select_autoescape(["html", "j2"]))
-    env.globals.update(kind_short=KIND_SHORT, faulty_kinds=FAULTY_KINDS, tick_table=tick_table)
+    env.globals.update(kind_short=KIND_SHORT, faulty_kinds=FAULTY_KINDS)
     return env
 
 
@@ -142,6 +143,16 @@ class Collected:
     written: set[Path]
 
 
+#: files every detail page links (`details/<name>`), made of these templates' text
+PAGE_ASSETS = {"page.css": ("report.css", "task.css"), "page.js": ("task.js", "report.js")}
+
+
+def _template_text(env: Environment, name: str) -> str:
+    if env.loader is None:
+        raise TypeError("the report's Jinja environment has no loader")
+    return env.loader.get_source(env, name)[0]
+
+
 def _index_row(row: TaskRow, not_measured: set[str]) -> IndexRow:
     m = row.metrics
     measured = row.task not in not_measured and m.get("n_envs") is not None if m else False
@@ -160,27 +171,34 @@ def _index_row(row: TaskRow, not_measured: set[str]) -> IndexRow:
 
 
 def write_details(out: Path, srcs: Sequence[Source], generators: Sequence[str],
-                  env: Environment) -> Collected:
-    """Write every (generator, task) page of `srcs` under `out/details/`; return the index."""
+                  env: Environment, *, paged: Collection[tuple[str, str]] = (),
+                  shared: bool = True) -> Collected:
+    """Write every (generator, task) page of `srcs` under `out/details/`, but those in `paged`
+    (written where their unit was computed: `unit_page`); return the index. `shared`: also the
+    style and script every page links."""
     from logicenveval.reporting.details import Assets, task_rows
 
-    template = env.get_template("task.html.j2")
     got = Collected([], [], {}, {}, set())
+    for name, parts in PAGE_ASSETS.items() if shared else ():
+        path = out / "details" / name
+        atomic_write_text(path, "".join(_template_text(env, part) for part in parts), durable=False)
+        got.written.add(path)
     for source in srcs:
         results = source.results
         assets = Assets(out, source, got.written)
-        for row in task_rows(source, [g for g in generators if g in results.get("results", {})], assets):
+        for row in task_rows(source, [g for g in generators if g in results.get("results", {})], assets,
+                             paged):
             values = results["results"].get(row.generator, {})
             not_measured = set(values.get("not_measured_tasks") or ())
-            up = "../" * row.href.count("/")
-            paths = path_index(row.envs)
-            html = template.render(row=row, back=f"{up}leaderboard.html#{row.anchor}", up=up,
-                                   paths=paths, paths_json=paths_json(paths),
-                                   run_id=results.get("run_id", ""), model=results.get("model", ""),
-                                   measured=row.task not in not_measured and is_measured(values))
             path = out / row.href
-            atomic_write_text(path, html, durable=False)
             got.written.add(path)
+            if (row.generator, row.task) not in paged:
+                up = "../" * row.href.count("/")  # the template is compiled when first needed
+                html = env.get_template("task.html.j2").render(
+                    row=row, back=f"{up}leaderboard.html#{row.anchor}", up=up, ticks=tick_data(row.envs),
+                    run_id=results.get("run_id", ""), model=results.get("model", ""),
+                    measured=row.task not in not_measured and is_measured(values))
+                atomic_write_text(path, html, durable=False)
             got.rows.append(_index_row(row, not_measured))
             for e in row.envs:
                 key = (row.generator, row.task, e.env_id, source.seed)
@@ -255,9 +273,11 @@ def _rebase(got: Collected, sub: str, seed: str) -> Collected:
 
 
 def write_leaderboards(run_dir: Path, results: dict[str, Any],
-                       records: Sequence[UnitRecord] | None = None) -> Collected:
+                       records: Sequence[UnitRecord] | None = None,
+                       paged: Collection[tuple[str, str]] = ()) -> Collected:
     """`leaderboard.md`, `leaderboard.html` and `details/` of a run folder; `records` are the
-    run's units when the caller holds them already (otherwise they are read from `units/`).
+    run's units when the caller holds them already (otherwise they are read from `units/`);
+    `paged`: (generator, task) whose page the worker that ran the unit wrote (`unit_page`).
 
     A multi-seed run's pages are its seed runs' own: each seed folder gets its leaderboards, and
     the parent's index links to their pages."""
@@ -275,7 +295,7 @@ def write_leaderboards(run_dir: Path, results: dict[str, Any],
                 collected.hrefs.setdefault(k, v)
     else:
         collected = write_details(run_dir, sources(run_dir, results, records=records, restore=True),
-                                  list(results["results"]), env)
+                                  list(results["results"]), env, paged=paged)
         remove_stale(run_dir / "details", collected.written)
     atomic_write_text(run_dir / "leaderboard.md", markdown(results), durable=False)
     atomic_write_text(run_dir / "leaderboard.html", render_main(results, collected, env), durable=False)

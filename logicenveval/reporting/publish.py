@@ -6,7 +6,7 @@ calls `publish` with what the run returned, so no lower layer imports this one.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -28,10 +28,13 @@ class Published:
     summary: str = ""
 
 
-def publish(run_dir: Path, results: dict[str, Any], records: Sequence[UnitRecord]) -> Published:
+def publish(run_dir: Path, results: dict[str, Any], records: Sequence[UnitRecord],
+            paged: Collection[tuple[str, str]] = ()) -> Published:
     """Write `leaderboard.md`, `leaderboard.html` and `details/` (for a multi-seed run also each
     seed's), and return the text the command prints: the "why" summary is read from the pages'
-    index, so it names the same examples (with their seed in a multi-seed run) as the HTML."""
-    got = write_leaderboards(run_dir, results, None if results.get("runs") else records)
+    index, so it names the same examples (with their seed in a multi-seed run) as the HTML.
+    `paged`: units whose page their worker wrote (`RunOutcome.paged`, `unit_page`)."""
+    got = write_leaderboards(run_dir, results, None if results.get("runs") else records,
+                             () if results.get("runs") else paged)
     why = reasons(got.samples, results.get("failures", {}), messages=got.messages, scores=results["results"])
     return Published(markdown(results), summary_text(why), terminal_summary(results, why, run_dir))

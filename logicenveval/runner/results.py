@@ -12,13 +12,13 @@ import json
 import math
 import platform
 import subprocess
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any, Protocol
 
 from logicenveval.atomic import atomic_write_text
 from logicenveval.llm.base import KIND_PREFIX
-from logicenveval.metrics.compute import aggregate, null_metrics, task_metrics
+from logicenveval.metrics.compute import TaskMetrics, aggregate, null_metrics, task_metrics
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.metrics.uncertainty import ci95
 from logicenveval.model.task import FAULTY_KINDS, Task
@@ -70,6 +70,25 @@ class ResultsConfig(Protocol):
     def resolved_run_id(self) -> str: ...
 
 
+def unit_metrics(task: Task, unit: UnitRecord) -> TaskMetrics:
+    """A measured unit's figures (results.json `per_task`), a pure function of the unit."""
+    return task_metrics(task, unit.samples, n_failed=unit.n_failed, mutants=unit.mutants or None,
+                        reported=[a.target for a in unit.attempts])
+
+
+def per_task_entry(metrics: TaskMetrics, unit: UnitRecord) -> dict[str, Any]:
+    """A unit's `per_task` entry of results.json."""
+    return {**metrics.model_dump(mode="json"), "budget_hit": unit.budget_hit is not None}
+
+
+def unit_failures(unit: UnitRecord) -> tuple[list[dict[str, Any]], list[dict[str, Any]]]:
+    """A unit's entries of results.json `failures`: its error (a unit failed as a whole), then
+    each generation failure."""
+    error = [{"task": unit.task_id, "stage": "unit", "message": unit.error, "kind": unit.error_kind,
+              "attempts": unit.n_failed}] if unit.error else []
+    return error, [{"task": unit.task_id, **f.model_dump(mode="json")} for f in unit.failures]
+
+
 def build_results(
     config: ResultsConfig,
     tasks: Sequence[Task],
@@ -77,9 +96,13 @@ def build_results(
     *,
     wall_seconds: float | None = None,
     generators: Sequence[str] | None = None,
+    computed: Mapping[tuple[str, str], TaskMetrics] | None = None,
 ) -> dict[str, Any]:
-    """`generators` are the row names (plug-ins' `name` attributes); default: config.generators."""
+    """`generators` are the row names (plug-ins' `name` attributes); default: config.generators.
+    `computed`: figures of units already worked out (`unit_metrics`, by the workers that ran
+    them), by (generator, task); the others are worked out here."""
     by_task = {t.id: t for t in tasks}
+    computed = computed or {}
     results: dict[str, Any] = {}
     per_task: dict[str, Any] = {}
     failures: dict[str, list[dict[str, Any]]] = {}
@@ -89,11 +112,9 @@ def build_results(
     for gen in (config.generators if generators is None else generators):
         units = [r for r in records if r.generator == gen]
         measured = [u for u in units if u.measured]
-        metrics = [task_metrics(by_task[u.task_id], u.samples, n_failed=u.n_failed,
-                                mutants=u.mutants or None, reported=[a.target for a in u.attempts])
+        metrics = [computed.get((u.generator, u.task_id)) or unit_metrics(by_task[u.task_id], u)
                    for u in measured]
-        per_task[gen] = {u.task_id: {**m.model_dump(mode="json"), "budget_hit": u.budget_hit is not None}
-                         for u, m in zip(measured, metrics, strict=True)}
+        per_task[gen] = {u.task_id: per_task_entry(m, u) for u, m in zip(measured, metrics, strict=True)}
         if metrics:
             results[gen] = aggregate(metrics).model_dump(mode="json")
             results[gen]["ci95"] = ci95({(t, config.seed): m for t, m in per_task[gen].items()})
@@ -102,13 +123,8 @@ def build_results(
         results[gen].update(row_status(
             measured=bool(metrics), not_measured=[u.task_id for u in units if not u.measured],
             budget_hit=[u.task_id for u in measured if u.budget_hit is not None]))
-        failures[gen] = [
-            {"task": u.task_id, "stage": "unit", "message": u.error, "kind": u.error_kind,
-             "attempts": u.n_failed}
-            for u in units if u.error
-        ] + [
-            {"task": u.task_id, **f.model_dump(mode="json")} for u in units for f in u.failures
-        ]
+        listed = [unit_failures(u) for u in units]
+        failures[gen] = [f for errors, _ in listed for f in errors] + [f for _, found in listed for f in found]
         gen_seconds[gen] = round(sum(u.gen_seconds for u in units), 3)
         llm[gen] = {k: round(sum(u.llm.get(k, 0.0) for u in units), 3)
                     for k in sorted({k for u in units for k in u.llm}) if not k.startswith(KIND_PREFIX)}
@@ -189,7 +205,8 @@ def row_status(*, measured: bool, not_measured: Sequence[str], budget_hit: Seque
 
 
 def write_outputs(run_dir: Path, results: dict[str, Any], records: Sequence[UnitRecord]) -> None:
-    lines = [json.dumps(s.model_dump(mode="json"), sort_keys=True) for r in records for s in r.samples]
+    lines = [json.dumps(s.model_dump(mode="json"), sort_keys=True, separators=(",", ":"))
+             for r in records for s in r.samples]
     atomic_write_text(run_dir / "samples.jsonl", "\n".join(lines) + ("\n" if lines else ""))
     atomic_write_text(run_dir / "results.json", json.dumps(results, indent=2, sort_keys=True) + "\n")
 

@@ -20,6 +20,7 @@ from logicenveval.benchmark_validation import situation_count
 from logicenveval.errors import ConfigError, RunFailedError
 from logicenveval.generators.plugins import GeneratorRef, NotConstructed, resolve_generator
 from logicenveval.limits import current as current_limits
+from logicenveval.metrics.compute import TaskMetrics
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.model.task import POLICY_KINDS, Task
 from logicenveval.runner.config import RunConfig, selected_tasks
@@ -34,7 +35,7 @@ from logicenveval.runner.fingerprint import (
 from logicenveval.runner.results import build_results, write_outputs
 from logicenveval.runner.schedule import hand_offs
 from logicenveval.runner.store import RunStore
-from logicenveval.runner.unit import UnitSpec, planned_failures, run_units
+from logicenveval.runner.unit import Committed, UnitSpec, planned_failures, run_units
 
 
 @dataclass(frozen=True)
@@ -46,6 +47,8 @@ class RunOutcome:
     records: tuple[UnitRecord, ...] = ()  # every unit of the run, in (generator, task) order
     #: why stored units were recomputed (what changed, or --fresh) -> how many units it cost
     stale: dict[str, int] = field(default_factory=dict)
+    #: (generator, task) of the units whose `on_commit` hook (their report page) ran in a worker
+    paged: frozenset[tuple[str, str]] = frozenset()
 
     def stale_text(self) -> str:
         """One line per reason stored units were recomputed ("" when none was)."""
@@ -154,9 +157,12 @@ def _prepare_dir(run_dir: Path) -> None:
                           hint="choose a writable folder (not a file) with --output") from None
 
 
-def run(config: RunConfig, *, console: Console | None = None, show_progress: bool = True) -> RunOutcome:
+def run(config: RunConfig, *, console: Console | None = None, show_progress: bool = True,
+        on_commit: Callable[..., None] | None = None) -> RunOutcome:
     """Run (or resume) the units of `config`; a managed local model (`llamacpp:`) is served by
-    one server for the whole run, stopped when the run ends however it ends (llm.llamacpp)."""
+    one server for the whole run, stopped when the run ends however it ends (llm.llamacpp).
+    `on_commit(spec, record, metrics)` runs where each computed unit was committed
+    (`UnitSpec.on_commit`: the command layer writes the unit's report page there)."""
     from logicenveval.llm.llamacpp import serving
 
     limits = current_limits()  # once, before any work: every unit runs under these values
@@ -173,12 +179,12 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
     with serving(config.model, config.model_args,
                  log_path=config.run_dir() / "llama-server.log") as model_args:
         return _run(config, model_args, refs, ids, tasks, limits, console=console,
-                    show_progress=show_progress)
+                    show_progress=show_progress, on_commit=on_commit)
 
 
 def _run(config: RunConfig, model_args: str, refs: list[GeneratorRef], ids: list[str],
          tasks: list[Task], limits: dict[str, int], *, console: Console | None,
-         show_progress: bool) -> RunOutcome:
+         show_progress: bool, on_commit: Callable[..., None] | None = None) -> RunOutcome:
     with phases.phase("start-up"):
         executor = make_executor("inprocess" if config.debug else config.executor, config.workers)
         warm_up = getattr(executor, "warm_up", None)
@@ -191,7 +197,7 @@ def _run(config: RunConfig, model_args: str, refs: list[GeneratorRef], ids: list
         store.claim(config.identity())  # held until the run ends: one run per folder at a time
     try:
         return _run_units(config, refs, ids, tasks, run_dir, store, executor, console, show_progress,
-                          model_args, limits)
+                          model_args, limits, on_commit)
     finally:
         store.unlock()
 
@@ -204,18 +210,25 @@ def _budget(config: RunConfig) -> Callable[[tuple[UnitSpec, ...]], float | None]
     return lambda chunk: None if timeout is None else len(chunk) * (2 * timeout + 600.0)
 
 
-def _crashed(chunk: tuple[UnitSpec, ...], why: str) -> list[UnitRecord]:
-    """The record of units whose worker died: recomputed by the next run unless timed out."""
+def _crashed(chunk: tuple[UnitSpec, ...], why: str) -> list[Committed]:
+    """The record of units whose worker died (committed here, since the worker could not):
+    recomputed by the next run unless timed out."""
     timed_out = "time" in why
-    return [UnitRecord(generator=s.generator, task_id=s.task_id, error=why,
-                       error_kind="generation" if timed_out else "infrastructure",
-                       attempts=planned_failures(s.generator, 0) if timed_out else [])
-            for s in chunk]
+    records = [UnitRecord(generator=s.generator, task_id=s.task_id, error=why, inputs=s.inputs,
+                          error_kind="generation" if timed_out else "infrastructure",
+                          attempts=planned_failures(s.generator, 0) if timed_out else [])
+               for s in chunk]
+    with phases.phase("saving"):
+        for spec, record in zip(chunk, records, strict=True):
+            if spec.commit:
+                RunStore(Path(spec.run_dir)).save(record)
+    return [Committed(r) for r in records]
 
 
 def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], tasks: list[Task],
                run_dir: Path, store: RunStore, executor: Executor, console: Console | None,
-               show_progress: bool, model_args: str, limits: dict[str, int]) -> RunOutcome:
+               show_progress: bool, model_args: str, limits: dict[str, int],
+               on_commit: Callable[..., None] | None) -> RunOutcome:
     store.remove_stale_temp_files()
     specs = [
         UnitSpec(generator=r.name, generator_target=r.target, generator_path=r.search_path, task_id=t,
@@ -256,9 +269,14 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
             else:
                 records[key] = stored
     reused = len(records)
+    pending = [s.model_copy(update={"inputs": inputs[(s.generator, s.task_id)], "commit": True,
+                                    "on_commit": on_commit})
+               for s in pending]  # each worker commits its units (`unit.committed`)
+    computed: dict[tuple[str, str], TaskMetrics] = {}
+    paged: set[tuple[str, str]] = set()
     start = time.perf_counter()
     console = console or Console(stderr=True)
-    with phases.phase("units"), Progress(  # the units (run here or awaited); committing is `saving`
+    with phases.phase("units"), Progress(  # the units, run (and committed) here or awaited
         TextColumn("[bold]{task.description:<14}"), BarColumn(), MofNCompleteColumn(),
         TimeRemainingColumn(), console=console, disable=not show_progress, transient=False,
     ) as progress:
@@ -274,12 +292,14 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
                                         split=lambda chunk: [(s,) for s in chunk])
         with contextlib.closing(chunks) as finished:  # type: ignore[type-var]  # generators have close()
             for _, chunk in finished:
-                for record in chunk:
-                    record = record.model_copy(update={"inputs": inputs[(record.generator,
-                                                                         record.task_id)]})
-                    with phases.phase("saving"):
-                        store.save(record)
-                    records[(record.generator, record.task_id)] = record
+                for done in chunk:
+                    record = done.record
+                    key = (record.generator, record.task_id)
+                    records[key] = record
+                    if done.metrics is not None:
+                        computed[key] = done.metrics
+                    if done.paged:
+                        paged.add(key)
                     progress.advance(bars[record.generator])
                     streak = streak + 1 if record.error_kind == "infrastructure" else 0
                     if config.max_infra_failures and streak >= config.max_infra_failures:
@@ -292,8 +312,8 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
     ordered = [records[(s.generator, s.task_id)] for s in specs]
     with phases.phase("results"):
         results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start,
-                                generators=[r.name for r in refs])
+                                generators=[r.name for r in refs], computed=computed)
     results["timing"]["run_phases"] = phases.take()
     write_outputs(run_dir, results, ordered)
     return RunOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused,
-                      records=tuple(ordered), stale=stale)
+                      records=tuple(ordered), stale=stale, paged=frozenset(paged))

@@ -50,13 +50,15 @@ from logicenveval.generators.plugins import ensure_importable
 from logicenveval.limits import DEFAULTS, limit, pinned, raise_hint
 from logicenveval.llm.base import ChatModel, ChatRequest
 from logicenveval.llm.fewshot import FewShotModel
+from logicenveval.metrics.compute import TaskMetrics
 from logicenveval.metrics.records import EnvDetail, EnvSample, UnitRecord
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import POLICY_KINDS, TaskBrief
 from logicenveval.paths import child, name_problem, shown
 from logicenveval.redact import redact
 from logicenveval.runner import executors
-from logicenveval.runner.store import text_digest
+from logicenveval.runner.results import unit_metrics
+from logicenveval.runner.store import RunStore, text_digest
 from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
 
 
@@ -88,6 +90,14 @@ class UnitSpec(BaseModel):
     #: the run's limits, read and checked once in the parent (`limits.current`); empty: this
     #: process's own environment
     limits: dict[str, int] = Field(default_factory=dict)
+    #: fingerprints of what makes the unit (`UnitRecord.inputs`, `runner.fingerprint`)
+    inputs: dict[str, str] = Field(default_factory=dict)
+    #: commit the record to the run's `units/` where it was computed (`run_units`)
+    commit: bool = False
+    #: called where the unit was computed, once committed, with its figures (`committed`): the
+    #: command layer passes one that writes the unit's report page, so pages are made in
+    #: parallel (the runner never imports reporting); a module-level function, to be pickled
+    on_commit: Callable[..., None] | None = None
 
 
 def _unique_ids(envs: list[EnvSpec]) -> list[EnvSpec]:
@@ -515,9 +525,48 @@ def _settled(attempts: list[Attempt], unjudged: list[tuple[str, str, str]]) -> l
     return out
 
 
-def run_units(specs: tuple[UnitSpec, ...]) -> list[UnitRecord]:
-    """Several units in one hand-off to a worker (see `runner.schedule.hand_offs`)."""
-    return [run_unit(spec) for spec in specs]
+@dataclass(frozen=True)
+class Committed:
+    """A finished unit as its worker hands it back: the record, its figures when it was measured
+    (`runner.results.unit_metrics`: results.json needs them, so they are worked out in parallel
+    too) and whether its `on_commit` hook (the report page) ran."""
+
+    record: UnitRecord
+    metrics: TaskMetrics | None = None
+    paged: bool = False
+
+
+def run_units(specs: tuple[UnitSpec, ...]) -> list[Committed]:
+    """Several units in one hand-off to a worker (see `runner.schedule.hand_offs`), each
+    committed as it finishes (`committed`)."""
+    return [committed(spec, run_unit(spec)) for spec in specs]
+
+
+def committed(spec: UnitSpec, record: UnitRecord) -> Committed:
+    """The record with its inputs and figures, written to `units/` (atomic, durable) by the
+    process that computed it when `spec.commit` (workers commit in parallel, the run's process
+    only gathers), then handed to `spec.on_commit`. The record handed back counts the write as
+    its `saving` phase (a file cannot time its own write), its figures as `results` and the hook
+    as `report`; figures or a page that fail here are left to the run's process."""
+    record = record.model_copy(update={"inputs": spec.inputs})
+    if not spec.commit:
+        return Committed(record)
+    spent = dict(record.phases)
+    with phases.collect() as more:
+        with phases.phase("saving"):
+            RunStore(Path(spec.run_dir)).save(record)
+        metrics = None
+        if record.measured:  # a unit its figures cannot be worked out of: the run's process
+            with phases.phase("results"), contextlib.suppress(Exception):  # tries and says why
+                metrics = unit_metrics(load_task(spec.task_id, spec.tasks_dir), record)
+        paged = False
+        if spec.on_commit is not None:
+            with phases.phase("report"), contextlib.suppress(Exception):
+                spec.on_commit(spec, record, metrics)
+                paged = True
+    for name, seconds in more.items():
+        spent[name] = round(spent.get(name, 0.0) + seconds, 4)
+    return Committed(record.model_copy(update={"phases": spent}), metrics, paged)
 
 
 def _write(run_dir: Path, rel: Path, text: str, files: dict[str, str]) -> None:
