@@ -17,9 +17,10 @@ from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, T
 from logicenveval import phases
 from logicenveval.benchmark import load_tasks, policy_path, task_ids
 from logicenveval.benchmark_validation import situation_count
-from logicenveval.errors import ConfigError, RunFailedError
+from logicenveval.errors import ConfigError, LogicEnvEvalError, RunFailedError
 from logicenveval.generators.plugins import GeneratorRef, NotConstructed, resolve_generator
 from logicenveval.limits import current as current_limits
+from logicenveval.metrics.compute import TaskMetrics
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.model.task import POLICY_KINDS, Task
 from logicenveval.runner.config import RunConfig, selected_tasks
@@ -31,7 +32,7 @@ from logicenveval.runner.fingerprint import (
     task_fingerprint,
     unit_inputs,
 )
-from logicenveval.runner.results import build_results, write_outputs
+from logicenveval.runner.results import build_results, unit_metrics, write_outputs
 from logicenveval.runner.schedule import hand_offs
 from logicenveval.runner.store import RunStore
 from logicenveval.runner.unit import UnitSpec, planned_failures, run_units
@@ -213,6 +214,16 @@ def _crashed(chunk: tuple[UnitSpec, ...], why: str) -> list[UnitRecord]:
             for s in chunk]
 
 
+def _score(scored: dict[tuple[str, str], tuple[UnitRecord, TaskMetrics]], by_task: dict[str, Task],
+           record: UnitRecord) -> None:
+    """Score a finished unit now (`results.unit_metrics`); a unit the metrics refuse is left to
+    `build_results`, which raises at the same point of the run as without this."""
+    try:
+        scored[(record.generator, record.task_id)] = (record, unit_metrics(by_task[record.task_id], record))
+    except LogicEnvEvalError:
+        return
+
+
 def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], tasks: list[Task],
                run_dir: Path, store: RunStore, executor: Executor, console: Console | None,
                show_progress: bool, model_args: str, limits: dict[str, int]) -> RunOutcome:
@@ -256,6 +267,8 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
             else:
                 records[key] = stored
     reused = len(records)
+    by_task = {t.id: t for t in tasks}
+    scored: dict[tuple[str, str], tuple[UnitRecord, TaskMetrics]] = {}
     start = time.perf_counter()
     console = console or Console(stderr=True)
     with phases.phase("units"), Progress(  # the units (run here or awaited); committing is `saving`
@@ -280,6 +293,9 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
                     with phases.phase("saving"):
                         store.save(record)
                     records[(record.generator, record.task_id)] = record
+                    if record.measured:  # scored while the workers compute the next units
+                        with phases.phase("scoring"):
+                            _score(scored, by_task, record)
                     progress.advance(bars[record.generator])
                     streak = streak + 1 if record.error_kind == "infrastructure" else 0
                     if config.max_infra_failures and streak >= config.max_infra_failures:
@@ -292,7 +308,7 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
     ordered = [records[(s.generator, s.task_id)] for s in specs]
     with phases.phase("results"):
         results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start,
-                                generators=[r.name for r in refs])
+                                generators=[r.name for r in refs], scored=scored)
     results["timing"]["run_phases"] = phases.take()
     write_outputs(run_dir, results, ordered)
     return RunOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused,
