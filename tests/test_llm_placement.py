@@ -181,3 +181,28 @@ def test_where_a_thing_is_kept_stays_askable_when_the_text_speaks_of_elsewhere()
                    ["living_room"], remote="remote_control", tv_stand="tv_stand")
     assert described_placements(brief, CATALOG) == ["on(remote, tv_stand)"]
     assert [f.id for f in analyse(brief).factors if f.subject == "remote"]
+
+
+def test_described_placements_are_remembered_per_brief_and_kinds(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A brief is read once per (catalog, brief, kinds): the same facts as a fresh reading, a
+    copy the caller may change, another brief or other kinds read anew."""
+    from logicenveval.llm import placement
+
+    brief = _brief("The bedroom has a bed and a nightstand with a lamp.", ["bedroom"],
+                   bed="bed", nightstand="nightstand", lamp="table_lamp")
+    fresh = placement._read(brief, CATALOG, placement.KINDS)
+    readings: list[int] = []
+    real = placement._read
+    monkeypatch.setattr(placement, "_read", lambda *a: readings.append(1) or real(*a))
+    monkeypatch.setattr(placement, "_READ", type(placement._READ)())
+    first = described_placements(brief, CATALOG)
+    first.append("changed by the caller")
+    assert described_placements(dict(brief), CATALOG) == fresh
+    assert "on(lamp, nightstand)" in fresh
+    assert len(readings) == 1
+    assert described_placements(brief, CATALOG, kinds=frozenset({"kept"})) == []
+    other = _brief("The bedroom has a desk with a lamp.", ["bedroom"], desk="desk", lamp="table_lamp")
+    assert "on(lamp, desk)" in described_placements(other, CATALOG)
+    assert len(readings) == 3
+    copy = CATALOG.model_copy(deep=True)  # another catalog object: read again
+    assert described_placements(brief, copy) == fresh and len(readings) == 4

@@ -6,7 +6,7 @@ import json
 from typing import Any
 
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from logicenveval.errors import ModelReplyError
@@ -177,3 +177,59 @@ def test_an_environment_assembled_from_bad_drafts_fails_its_attempt_not_the_unit
     with pytest.raises(EnvSpecError, match="unique"):
         symbolic_env(brief, "e-00", "logicenvgen", [{"id": "living_room", "type": "LivingRoom"}],
                      [draft, draft])
+
+
+def _specialised_by_deepcopy(schema: dict[str, Any], vocabulary: dict[str, Any]) -> dict[str, Any]:
+    """The earlier `specialise` (deep copy, then mark in place): the reference of the one-pass one."""
+    import copy
+
+    from logicenveval.llm.vocab import COUNT, MARK, Pattern
+
+    out = copy.deepcopy(schema)
+
+    def walk(node: Any) -> None:
+        if isinstance(node, dict):
+            name = node.get(MARK)
+            words = vocabulary.get(name) if isinstance(name, str) else None
+            if isinstance(words, Pattern):
+                node["pattern"] = words.regex
+            elif words:
+                node["enum"] = list(dict.fromkeys(words))
+            counted = node.get(COUNT)
+            bound = vocabulary.get(counted) if isinstance(counted, str) else None
+            if bound and not isinstance(bound, Pattern):
+                node["maxItems"] = len(set(bound))
+            for value in node.values():
+                walk(value)
+        elif isinstance(node, list):
+            for value in node:
+                walk(value)
+
+    walk(out)
+    return out
+
+
+_NAMES = st.sampled_from(["roles", "places", "ids", "rooms", "absent"])
+_LEAF = st.one_of(st.none(), st.booleans(), st.integers(), st.text(max_size=4))
+_SCHEMA = st.recursive(
+    st.dictionaries(st.sampled_from(["type", "enum", "pattern", "maxItems", "x-vocab", "x-count", "a"]),
+                    st.one_of(_LEAF, _NAMES), max_size=4),
+    lambda inner: st.one_of(st.lists(inner, max_size=3),
+                            st.dictionaries(st.sampled_from(["properties", "items", "anyOf", "x", "enum"]),
+                                            inner, max_size=3)),
+    max_leaves=12)
+
+
+@settings(deadline=None)
+@given(_SCHEMA)
+def test_specialise_matches_the_deep_copy_reference(schema: Any) -> None:
+    """One pass gives what deep-copying then marking gave, key order included, and leaves the
+    shared schema as it was."""
+    from logicenveval.llm.vocab import COUNT, MARK
+
+    assert MARK == "x-vocab" and COUNT == "x-count"
+    base = {"root": schema}
+    before = json.dumps(base)
+    for vocab in (VOCAB, {"roles": ["a", "a", "b"]}, {"ids": SNAKE}):
+        assert json.dumps(specialise(base, vocab)) == json.dumps(_specialised_by_deepcopy(base, vocab))
+    assert json.dumps(base) == before

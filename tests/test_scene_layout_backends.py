@@ -304,16 +304,14 @@ def test_every_relation_encoding_means_the_same_in_every_orientation(solver: str
         assert any(_on_front_axis(a, (*b[:4], (b[4] + t) % 4), near_gap) for t in (1, 3))
 
 
-@pytest.mark.parametrize("seed", [0, 1, 2])
-def test_large_floors_make_walkways_exclusive_in_both_backends(seed: int) -> None:
-    """From EXCLUSIVE_WALKWAYS_FROM boxes on, a walkway strip is also clear of the other strips
-    and of door squares (CP-SAT packs box + strip as one rectangle)."""
-    from logicenveval.scene.layout import EXCLUSIVE_WALKWAYS_FROM
-
+@pytest.mark.parametrize(("seed", "n_boxes"), [(0, 18), (1, 18), (2, 18), (0, 4), (1, 7), (2, 11)])
+def test_walkways_are_exclusive_in_both_backends(seed: int, n_boxes: int) -> None:
+    """On every floor, small or large, a walkway strip is clear of the other boxes, of the other
+    strips and of door squares (CP-SAT packs box + strip as one rectangle)."""
     rng = np.random.default_rng(seed)
     frame, walkway = (70, 70), 9
     boxes = [Box(f"b{k}", (0.5, 0.8, 0.5), (int(rng.integers(3, 9)), int(rng.integers(3, 9))), task=k % 3 == 0)
-             for k in range(EXCLUSIVE_WALKWAYS_FROM + 2)]
+             for k in range(n_boxes)]
     door: Obstacle = (30, 0, 42, 12)
     feasible = {}
     for name in SOLVERS:
@@ -330,15 +328,13 @@ def test_large_floors_make_walkways_exclusive_in_both_backends(seed: int) -> Non
     assert feasible == {name: True for name in SOLVERS}
 
 
-@pytest.mark.parametrize("seed", [0, 1])
-def test_exclusive_walkways_keep_clear_of_doors_the_solver_places(seed: int) -> None:
+@pytest.mark.parametrize(("seed", "n_boxes"), [(0, 18), (1, 18), (0, 5)])
+def test_exclusive_walkways_keep_clear_of_doors_the_solver_places(seed: int, n_boxes: int) -> None:
     """As above with the door a solver variable on the south side: its square is also kept clear."""
-    from logicenveval.scene.layout import EXCLUSIVE_WALKWAYS_FROM
-
     rng = np.random.default_rng(seed)
     frame, walkway = (70, 70), 9
     boxes = [Box(f"b{k}", (0.5, 0.8, 0.5), (int(rng.integers(3, 9)), int(rng.integers(3, 9))), task=k % 3 == 0)
-             for k in range(EXCLUSIVE_WALKWAYS_FROM + 2)]
+             for k in range(n_boxes)]
     door = Opening("d0", "s", ((3, 55),), 12, 12)
     for name in SOLVERS:
         placed, _ = backend(name).pack(frame, boxes, seed=seed, timeout_s=30.0, walkway=walkway, grid=0.05,
@@ -351,6 +347,18 @@ def test_exclusive_walkways_keep_clear_of_doors_the_solver_places(seed: int) -> 
                 assert not _meet(_strip(ext[b.id], placed[b.id].o, walkway), square), (name, b.id)
             if b.id in placed:
                 assert not _meet(ext[b.id], square), (name, b.id)
+
+
+def test_two_task_objects_on_a_small_floor_do_not_share_a_walkway() -> None:
+    """A floor exactly two boxes and one walkway deep: the boxes could face each other across one
+    shared strip (what floors under 16 boxes allowed before issue 38); with exclusive strips both
+    cannot be placed, so neither backend finds a layout."""
+    boxes = [Box(f"t{k}", (0.5, 0.8, 0.5), (10, 10), task=True) for k in range(2)]
+    for name in SOLVERS:
+        placed, _ = backend(name).pack((10, 29), boxes, seed=0, timeout_s=30.0, walkway=9, grid=0.05)
+        assert placed == {}, name
+        roomier, _ = backend(name).pack((10, 38), boxes, seed=0, timeout_s=30.0, walkway=9, grid=0.05)
+        assert set(roomier) == {"t0", "t1"}, name
 
 
 def _valid_packing(frame: tuple[int, int], boxes: list[Box], placed: dict[str, Placed], obstacles: list[Obstacle],

@@ -57,21 +57,50 @@ def _too_deep(text: str) -> bool:
     return any(depth > MAX_DEPTH for _, depth, _ in _brackets(text))
 
 
+def _depth(value: Any) -> int:
+    """How deep `value`'s containers nest (a scalar 0): for a parsed JSON text, the depth of its
+    brackets outside strings, which `_too_deep` counts."""
+    deepest, level = 0, [(value, 1)]
+    while level:
+        node, depth = level.pop()
+        items = node.values() if isinstance(node, dict) else node if isinstance(node, list) else None
+        if items is None:
+            continue
+        deepest = max(deepest, depth)
+        level.extend((item, depth + 1) for item in items)
+    return deepest
+
+
+def _candidates(text: str) -> Iterator[str]:
+    """The whole text, each fenced block, then each balanced span: spans are only scanned for
+    when the earlier candidates do not parse (a well-formed reply is parsed at once)."""
+    yield text
+    for m in _FENCE.finditer(text):
+        yield m.group(1).strip()
+    yield from _balanced_spans(text)
+
+
 def extract_json(reply: str) -> Any:
     """The first JSON object/array in `reply`: whole text, fenced block, then balanced span."""
     text = reply.strip()
-    candidates = [text] + [m.group(1).strip() for m in _FENCE.finditer(text)] + _balanced_spans(text)
+    too_deep = JSONExtractionError(f"the reply's JSON nests deeper than {MAX_DEPTH} levels; "
+                                   "reply with the flat structure the schema asks for")
     first_error: json.JSONDecodeError | None = None
-    for cand in candidates:
+    for cand in _candidates(text):
         if not cand or cand[0] not in "{[":
             continue
-        if _too_deep(cand):
-            raise JSONExtractionError(f"the reply's JSON nests deeper than {MAX_DEPTH} levels; "
-                                      "reply with the flat structure the schema asks for")
         try:
-            return json.loads(cand)
+            value = json.loads(cand)
         except json.JSONDecodeError as exc:
+            if _too_deep(cand):
+                raise too_deep from None
             first_error = first_error or exc
+            continue
+        except RecursionError:  # nested far deeper than MAX_DEPTH
+            raise too_deep from None
+        if _depth(value) > MAX_DEPTH:
+            raise too_deep
+        return value
     if first_error is not None:
         raise JSONExtractionError(
             f"the reply contains JSON that does not parse: {first_error.msg} at line "

@@ -75,6 +75,7 @@ class _Literals:
     def __init__(self, conditions: Sequence[Sequence[dict[str, Any]]]) -> None:
         self.ctx = _context()
         self.vars: dict[tuple[str, ...], z3.BoolRef] = {}
+        self._solver: z3.Solver | None = None
         atoms = {_atom(lit) for cond in conditions for lit in cond}
         self.axioms: list[z3.BoolRef] = []
         subjects = sorted({a[1] for a in atoms})
@@ -104,9 +105,18 @@ class _Literals:
         return z3.And(*parts) if parts else z3.BoolVal(True, self.ctx)
 
     def sat(self, *formulas: z3.BoolRef) -> bool:
-        solver = z3.Solver(ctx=self.ctx)
-        solver.add(*self.axioms, *formulas)
-        return bool(solver.check() == z3.sat)
+        """Whether the axioms and `formulas` can hold together: one solver holds the axioms, each
+        check pushes its formulas and pops them (propositional sat/unsat is a fact of the
+        formulas, not of the solver's history)."""
+        if self._solver is None:
+            self._solver = z3.Solver(ctx=self.ctx)
+            self._solver.add(*self.axioms)
+        self._solver.push()
+        try:
+            self._solver.add(*formulas)
+            return bool(self._solver.check() == z3.sat)
+        finally:
+            self._solver.pop()
 
 
 def factor_problem(factor: str, responses: Sequence[tuple[str, Sequence[dict[str, Any]]]]) -> str | None:

@@ -531,15 +531,26 @@ class _Builder:
         rect = plan.rects[room]
         fps = [p.footprint for oid, p in self.poses.items()
                if self.objects[oid].room == room and self.objects[oid].support not in ("wall", "ceiling")]
-        best, score = (rect.x0 + rect.w / 2, rect.z0 + rect.d / 2), -1.0
-        for i in range(1, int(rect.w / 0.25)):
-            for j in range(1, int(rect.d / 0.25)):
-                x, z = rect.x0 + i * 0.25, rect.z0 + j * 0.25
-                clear = min([x - rect.x0, rect.x1 - x, z - rect.z0, rect.z1 - z]
-                            + [max(f.x0 - x, x - f.x1, f.z0 - z, z - f.z1) for f in fps])
-                if clear > score + 1e-9:
-                    best, score = (x, z), clear
-        return Agent(room=room, position=(_r(best[0]), _r(best[1])))
+        x, z = start_point(rect, fps)
+        return Agent(room=room, position=(_r(x), _r(z)))
+
+
+def start_point(rect: Rect, footprints: Sequence[Rect], step: float = 0.25) -> tuple[float, float]:
+    """The point of a `step` grid in `rect` farthest from its walls and the `footprints` (the
+    first in x-major order within 1e-9; the centre on a room too small for the grid). The
+    clearances of all points are computed at once, with the same float operations as point by
+    point; the choice is made point by point."""
+    best, score = (rect.x0 + rect.w / 2, rect.z0 + rect.d / 2), -1.0
+    xs = rect.x0 + np.arange(1, max(1, int(rect.w / step))) * step
+    zs = rect.z0 + np.arange(1, max(1, int(rect.d / step))) * step
+    x, z = np.repeat(xs, len(zs)), np.tile(zs, len(xs))
+    clear = np.minimum(np.minimum(x - rect.x0, rect.x1 - x), np.minimum(z - rect.z0, rect.z1 - z))
+    for f in footprints:
+        clear = np.minimum(clear, np.maximum(np.maximum(f.x0 - x, x - f.x1), np.maximum(f.z0 - z, z - f.z1)))
+    for k, c in enumerate(clear.tolist()):
+        if c > score + 1e-9:
+            best, score = (float(x[k]), float(z[k])), c
+    return best
 
 
 def construct_environment(spec: SceneSpec, *, catalog: Catalog, rng: np.random.Generator,

@@ -22,13 +22,12 @@ from logicenveval.scene.geometry import Rect
 from logicenveval.scene.relax import Dropped
 from logicenveval.scene.spec import RelationRequest
 
-WALKWAY = 0.45  # metres of free floor in front of each task object for the agent to approach
-
-#: floors with at least this many boxes make walkway strips exclusive: clear of other boxes,
-#: of each other and of door squares (CP-SAT: box + strip as one rectangle in the floor's NoOverlap2D);
-#: below it each strip only keeps clear of the other boxes. Measured on dense rooms of
-#: `benchmarks/layout.py`: the per-strip constraints made a 60-object floor ~10x slower.
-EXCLUSIVE_WALKWAYS_FROM = 16
+#: metres of free floor in front of each task object for the agent to approach. A walkway strip is
+#: exclusive: clear of the other boxes, of the other strips and of door squares (CP-SAT packs box +
+#: strip as one rectangle in the floor's NoOverlap2D). Until issue 38 floors of fewer than 16 boxes
+#: kept each strip clear of the other boxes only, with one NoOverlap2D per strip: that took half
+#: of the offline run's floor solves (docs/scene.md "Exclusive walkways")
+WALKWAY = 0.45
 
 #: floors with at least this many boxes get CP-SAT's stronger NoOverlap2D propagation (timetabling
 #: and try-edge reasoning). Measured per floor on `benchmarks/layout.py` rooms (docs/scene.md): up

@@ -2,9 +2,9 @@
 
 Non-overlap is one `NoOverlap2D` over (optional) interval variables instead of pairwise
 disjunctions: an enrichment object's interval is present iff its tracked literal is, a rotation
-changes an interval's size through a single `odd` literal. Each task object's walkway strip is an
-interval whose bounds are linear in the four orientation literals, in its own `NoOverlap2D` with the
-other boxes. Relations are reified on the tracked literal (and those of their enrichment objects).
+changes an interval's size through a single `odd` literal. Each task object is packed together with
+its walkway strip as one rectangle whose corner is linear in the four orientation literals, so the
+strip keeps clear of every other box, strip and door square in the floor's `NoOverlap2D`. Relations are reified on the tracked literal (and those of their enrichment objects).
 Relaxation uses assumptions and `sufficient_assumptions_for_infeasibility` as the core. One worker
 and the run's seed keep the search deterministic. Large packings (`STRONG_NO_OVERLAP_FROM` boxes)
 switch on NoOverlap2D timetabling and try-edge reasoning: the weak default propagation was where
@@ -22,7 +22,6 @@ from ortools.sat.python import cp_model
 
 from logicenveval.errors import LogicEnvEvalError
 from logicenveval.scene.layout import (
-    EXCLUSIVE_WALKWAYS_FROM,
     FAR,
     FLOOR_RELATIONS,
     IN_FRONT_GAP,
@@ -197,9 +196,8 @@ def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: 
     def guard(ids: Sequence[str]) -> list[Lit]:
         return [lit[i] for i in ids if i in lit]
 
-    exclusive = bool(walkway) and len(boxes) >= EXCLUSIVE_WALKWAYS_FROM
     ext = {b.id: _extended(m, vs[b.id], b, walkway, frame, str(k)) for k, b in enumerate(boxes)
-           if exclusive and b.task}
+           if walkway and b.task}
     xs = [ext[b.id][0] if b.id in ext else vs[b.id].ix for b in boxes]
     zs = [ext[b.id][1] if b.id in ext else vs[b.id].iz for b in boxes]
     fixed_x: list[Any] = []
@@ -211,7 +209,7 @@ def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: 
             ix, iz = _fixed(m, ob, str(k))
             fixed_x.append(ix)
             fixed_z.append(iz)
-        else:  # exclusive walkways keep clear of solid obstacles too (as in Z3)
+        else:  # outside the NoOverlap2D: each box, with its strip when `ob` is solid (as in Z3)
             for b, ix, iz in zip(boxes, xs, zs, strict=True):
                 if b.id in ext and not _solid(ob):
                     ix, iz = vs[b.id].ix, vs[b.id].iz
@@ -238,11 +236,6 @@ def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: 
         else:
             for b in taller:
                 _outside(m, vs[b.id].ix, vs[b.id].iz, ob, guard([b.id]))
-    if walkway and not exclusive:
-        for k, b in enumerate(boxes):
-            if b.task:
-                _walkway(m, vs[b.id], b, walkway, frame, str(k),
-                         [(vs[o.id].ix, vs[o.id].iz) for o in boxes if o.id != b.id])
     for k, fr in enumerate(rels):
         if fr.rel.type not in FLOOR_RELATIONS:
             continue
@@ -297,25 +290,6 @@ def _extended(m: cp_model.CpModel, v: _Vars, b: Box, A: int, frame: tuple[int, i
     m.add(z0 == v.z - A * o[2])
     return (m.new_interval_var(x0, c0 + (c1 - c0 + A) * v.odd, x1, f"exi_{tag}"),
             m.new_interval_var(z0, c1 + A + (c0 - c1 - A) * v.odd, z1, f"ezi_{tag}"))
-
-
-def _walkway(m: cp_model.CpModel, v: _Vars, b: Box, A: int, frame: tuple[int, int], tag: str,
-             others: list[tuple[Any, Any]]) -> None:
-    """A strip `A` cells deep in front of `v` (its +z after yaw), inside the frame, free of `others`.
-
-    Orientation 0..3 puts it at +z, +x, -z, -x; the corner and size are linear in the literals
-    because exactly one holds (e.g. with o1 the box's x extent is c1, so the strip starts at x + c1).
-    """
-    W, D = frame
-    c0, c1 = b.cells
-    o = v.o
-    sx0, sx1 = m.new_int_var(0, W, f"sx0_{tag}"), m.new_int_var(0, W, f"sx1_{tag}")
-    sz0, sz1 = m.new_int_var(0, D, f"sz0_{tag}"), m.new_int_var(0, D, f"sz1_{tag}")
-    m.add(sx0 == v.x + c1 * o[1] - A * o[3])
-    m.add(sz0 == v.z + c1 * o[0] - A * o[2])
-    sx = m.new_interval_var(sx0, c0 + (A - c0) * v.odd, sx1, f"sx_{tag}")
-    sz = m.new_interval_var(sz0, A + (c0 - A) * v.odd, sz1, f"sz_{tag}")
-    m.add_no_overlap_2d([sx] + [ix for ix, _ in others], [sz] + [iz for _, iz in others])
 
 
 def _abs_le(m: cp_model.CpModel, e: Any, k: int, en: list[Lit]) -> None:

@@ -12,7 +12,6 @@ from typing import Any
 import z3
 
 from logicenveval.scene.layout import (
-    EXCLUSIVE_WALKWAYS_FROM,
     FAR,
     IN_FRONT_GAP,
     NEAR_AXIS,
@@ -104,7 +103,6 @@ def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: 
             for other_rect in door_rects:
                 s.add(_apart(rect, other_rect))
             door_rects.append(rect)
-    exclusive = bool(walkway) and len(boxes) >= EXCLUSIVE_WALKWAYS_FROM
     strips: list[tuple[Any, Any, Any, Any]] = []
     if walkway:
         for b in boxes:
@@ -120,15 +118,15 @@ def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: 
             for other in boxes:
                 if other.id != b.id:
                     guard([other.id], vs[other.id].disjoint(sx0, sz0, sx1, sz1))
-            if exclusive:  # as CP-SAT's extended boxes: clear of other strips and door squares
-                for ob in obstacles:
-                    if ob[2] > ob[0] and ob[3] > ob[1]:
-                        s.add(z3.Or(sx1 <= ob[0], sx0 >= ob[2], sz1 <= ob[1], sz0 >= ob[3]))
-                for rect in door_rects:
-                    s.add(_apart((sx0, sz0, sx1, sz1), rect))
-                for tx0, tz0, tx1, tz1 in strips:
-                    s.add(z3.Or(sx1 <= tx0, tx1 <= sx0, sz1 <= tz0, tz1 <= sz0))
-                strips.append((sx0, sz0, sx1, sz1))
+            # as CP-SAT's extended boxes: clear of solid obstacles, door squares and other strips
+            for ob in obstacles:
+                if ob[2] > ob[0] and ob[3] > ob[1]:
+                    s.add(z3.Or(sx1 <= ob[0], sx0 >= ob[2], sz1 <= ob[1], sz0 >= ob[3]))
+            for rect in door_rects:
+                s.add(_apart((sx0, sz0, sx1, sz1), rect))
+            for tx0, tz0, tx1, tz1 in strips:
+                s.add(z3.Or(sx1 <= tx0, tx1 <= sx0, sz1 <= tz0, tz1 <= sz0))
+            strips.append((sx0, sz0, sx1, sz1))
     for k, fr in enumerate(rels):
         c = _encode(fr, vs, (W, D), grid)
         if c is None:
