@@ -91,7 +91,8 @@ def render_messages(kind: str, payload: dict[str, Any], schema: dict[str, Any],
         raise ConfigError(f"no prompt template for request kind {kind!r}",
                           file=f"logicenveval/llm/prompts/{kind}.j2",
                           hint="add the template or use an existing kind") from None
-    text = template.render(payload=payload, schema=json.dumps(schema, separators=(",", ":")), json=json)
+    text = template.render(payload=payload, schema=json.dumps(schema, separators=(",", ":")), json=json,
+                           protocol=protocol)
     system, _, user = text.partition(_SPLIT)
     if protocol >= 2:
         system = system.strip() + "\n" + _reply_format()
