@@ -19,8 +19,8 @@ from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import Task
 from logicenveval.phases import phase
 from logicenveval.physics import PhysicsReport, check_env
-from logicenveval.sim.simulator import simulate
-from logicenveval.sim.world import holds_initial
+from logicenveval.sim.simulator import compiled, simulate, task_goal
+from logicenveval.sim.world import World
 
 if TYPE_CHECKING:
     from logicenveval.faults.score import MutationScorer
@@ -36,6 +36,8 @@ class Evaluation:
     env: EnvSpec
     physics: PhysicsReport
     traces: dict[str, VerdictTrace]
+    #: the initial symbolic world of `env` (never ticked: episodes run on copies)
+    world: World
 
 
 def evaluate_env(
@@ -78,16 +80,18 @@ def evaluate_env(
         extended_failures=[f.model_dump(mode="json") for f in report.extended.failures],
     )
     with phase("coverage"):
-        holds = holds_initial(env, catalog)
+        world = World.from_env(env, catalog)  # the initial state, copied for each traced episode
+        holds = world.holds
         cov = coverage(task, holds, env.roles, binding)
         violations = constraint_problems(task, env, holds)
+        goal = task_goal(task, world)
     verdicts: dict[str, str] = {}
     sim_ms: dict[str, float] = {}
     sim_ticks: dict[str, int] = {}
     traces: dict[str, VerdictTrace] = {}
     for kind, policy in policies.items():
-        with phase("traces"):
-            verdict = simulate(policy, env, task, catalog, trace=True)  # also the timing's warm-up
+        with phase("traces"):  # `simulate` on the world built once; also the timing's warm-up
+            verdict = compiled(policy).run(world.copy(), goal, trace=True)
         sim_ticks[kind] = verdict.ticks
         traces[kind] = VerdictTrace(status=verdict.status, message=verdict.message or "",
                                     trace=[str(t) for t in verdict.trace])
@@ -113,7 +117,7 @@ def evaluate_env(
         categories=prepared.categories.mapped,
         unknown_categories=prepared.categories.unknown,
     )
-    return Evaluation(sample=sample, env=env, physics=report, traces=traces)
+    return Evaluation(sample=sample, env=env, physics=report, traces=traces, world=world)
 
 
 def with_killed_mutants(done: Evaluation, task: Task, scorer: MutationScorer,
@@ -128,7 +132,7 @@ def with_killed_mutants(done: Evaluation, task: Task, scorer: MutationScorer,
         return sample
     start = time.perf_counter()
     with phase("mutants"):
-        killed = scorer.killed(done.env, task, catalog)
+        killed = scorer.killed(done.env, task, catalog, initial=done.world)
     ms = (time.perf_counter() - start) * 1000.0
     return sample.model_copy(update={"killed_mutants": killed,
                                      "sim_ms": {**sample.sim_ms, "mutants": ms}})
