@@ -11,6 +11,7 @@ from shapely.geometry import Point, Polygon
 from logicenveval.domain.catalog import Catalog
 from logicenveval.domain.shapes import load_shapes, support_gap
 from logicenveval.model.envspec import EnvSpec
+from logicenveval.physics.floorplan import room_band
 from logicenveval.physics.geometry import (
     Body,
     candidate_array,
@@ -282,7 +283,7 @@ def check_entities(env: EnvSpec, bodies: dict[str, Body], polys: dict[str, Polyg
             fails.append(_fail("invalid_size", f"{o.id} size {o.size} has a non-positive extent", [o.id],
                                measured=float(min(o.size)), tolerance=0.0))
     doors = swing_areas(env)
-    grown = {rid: poly.buffer(tol.room_margin) for rid, poly in polys.items()}
+    grown = {rid: room_band(env, rid, poly, tol.room_margin) for rid, poly in polys.items()}
     blocking = _door_candidates(list(bodies.values()), doors)
     for k, b in enumerate(bodies.values()):
         fails += _catalog_size(b, catalog, tol)
