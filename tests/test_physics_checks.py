@@ -435,3 +435,17 @@ def test_a_room_outline_shared_by_environments_is_built_once() -> None:
     moved["rooms"][0]["polygon"] = [[x + 100.0, z] for x, z in moved["rooms"][0]["polygon"]]
     assert valid_rooms(env_from_dict(moved), [])[rid] is not pa[rid]
     assert "outside_room" in _codes(moved, "entity")
+
+
+_BOX = st.tuples(*[st.floats(-50, 50, allow_nan=False)] * 4).map(
+    lambda b: (min(b[0], b[2]), min(b[1], b[3]), max(b[0], b[2]), max(b[1], b[3])))
+
+
+@given(st.lists(_BOX, max_size=12), _BOX)
+@settings(max_examples=200, deadline=None)
+def test_label_cover_is_the_sum_of_the_overlaps_to_the_last_bit(placed, box) -> None:  # type: ignore[no-untyped-def]
+    """The renderer's inlined cover test places every label where the plain sum placed it."""
+    from logicenveval.physics.render import _covered, _overlap
+
+    assert _covered(box, placed) == sum(_overlap(box, b) for b in placed)
+    assert _covered(box, placed) == 0 or any(_overlap(box, b) > 0 for b in placed)
