@@ -384,3 +384,32 @@ def test_evaluation_builds_the_initial_world_once_for_coverage_and_traced_episod
         alone = simulate(policy, env, task, cat, trace=True)
         assert done.traces[kind].status == alone.status == done.sample.verdicts[kind]
         assert done.traces[kind].trace == [str(t) for t in alone.trace]
+
+
+def test_a_symbolic_world_already_traced_is_not_traced_again(monkeypatch) -> None:  # type: ignore[no-untyped-def]
+    """Another environment realising the same situation with the same objects (another id,
+    other coordinates) reuses the traces; its timed episodes still run."""
+    from logicenveval.runner import evaluation
+    from logicenveval.sim.simulator import CompiledPolicy
+
+    task, cat, _, _, worlds = _prepared("lamp_or_pillow_fetch")
+    policies = {k: load_policy(policy_path(task, k), roles=task.roles, rooms=task.rooms) for k in task.policies}
+    env = worlds[1][1]
+    twin = env.model_copy(update={"env_id": "twin", "agent": env.agent.model_copy(update={"position": (9.0, 9.0)})})
+    runs: list[bool] = []
+    original = CompiledPolicy.run
+
+    def counting(self, *a, trace=False, **kw):  # type: ignore[no-untyped-def]
+        runs.append(trace)
+        return original(self, *a, trace=trace, **kw)
+
+    monkeypatch.setattr(CompiledPolicy, "run", counting)
+    monkeypatch.setattr(evaluation, "_TRACED", {})
+    first = evaluation.evaluate_env("g", task, env, policies, cat)
+    assert runs.count(True) == runs.count(False) == len(policies)
+    second = evaluation.evaluate_env("h", task, twin, policies, cat)
+    assert runs.count(True) == len(policies) and runs.count(False) == 2 * len(policies)
+    assert second.traces == first.traces and second.sample.sim_ticks == first.sample.sim_ticks
+    other = worlds[2][1]  # another situation: traced
+    evaluation.evaluate_env("g", task, other, policies, cat)
+    assert runs.count(True) == 2 * len(policies)

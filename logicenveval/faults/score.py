@@ -44,11 +44,12 @@ class MutationScorer:
         self._killed: dict[str, list[str]] = {}
 
     def killed(self, env: EnvSpec, task: Task, catalog: Catalog, *,
-               initial: World | None = None) -> list[str]:
+               initial: World | None = None, key: str | None = None) -> list[str]:
         """Killed ids; memoised by the env's symbolic world, since the simulator sees nothing else
         (different generators often realise the same situation with the same objects).
-        `initial`: `World.from_env(env, catalog)` when the caller has built it (not changed)."""
-        key = symbolic_key(env)
+        `initial` and `key`: `World.from_env(env, catalog)` (not changed) and
+        `symbolic_key(env)` when the caller has them."""
+        key = key if key is not None else symbolic_key(env)
         hit = self._killed.get(key)
         if hit is None:
             world = initial if initial is not None else World.from_env(env, catalog)
