@@ -256,7 +256,7 @@ def _catalog_size(b: Body, catalog: Catalog, tol: Tolerances) -> list[PhysicsFai
     cat = catalog.get(b.obj.category)
     if cat is None:
         return []
-    size = 2.0 * b.half
+    size = (2.0 * b.half).tolist()  # plain floats: three numpy scalar comparisons cost more
     for axis, (v, lo, hi) in enumerate(zip(size, cat.size_min, cat.size_max, strict=True)):
         lo_t, hi_t = lo * (1 - tol.size_ratio), hi * (1 + tol.size_ratio)
         if not lo_t <= v <= hi_t:

@@ -126,14 +126,14 @@ def build_body(obj: EnvObject, mesh_dir: Path | None = None) -> Body:
         geom = model
     world = center + local @ rot.T
     if verts is None:
-        footprint = Polygon(world[_BOX_FOOTPRINT][:, [0, 2]])
+        footprint = Polygon(world[_BOX_FOOTPRINT, ::2])  # x and z of the bottom corners
     else:
         hull = Polygon(world[:, [0, 2]]).convex_hull
         footprint = hull if isinstance(hull, Polygon) else Polygon()
+    lo, hi = world.min(axis=0), world.max(axis=0)
     return Body(
         obj=obj, center=center, half=half, rot=rot, footprint=footprint,
-        bottom=float(world[:, 1].min()), top=float(world[:, 1].max()),
-        aabb_min=world.min(axis=0), aabb_max=world.max(axis=0),
+        bottom=float(lo[1]), top=float(hi[1]), aabb_min=lo, aabb_max=hi,
         collision=fcl.CollisionObject(geom, tf), is_box=verts is None,
         parts=_solid_parts(obj, center, half, rot) if verts is None else None,
     )
@@ -267,7 +267,7 @@ def point_to_boundary(geom: BaseGeometry, poly: Polygon) -> float:
 
 
 def finite(*values: float) -> bool:
-    return all(math.isfinite(v) for v in values)
+    return all(map(math.isfinite, values))
 
 
 def has_geometry(obj: EnvObject) -> bool:
