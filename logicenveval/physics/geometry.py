@@ -214,9 +214,10 @@ def separated(bodies: list[Body], pairs: np.ndarray, eps: float = 1e-6) -> np.nd
     out = np.zeros(len(pairs), dtype=bool)
     if not len(pairs):
         return out
-    cen = np.array([b.xz for b in bodies])
-    ax = np.array([[b.right(), b.front()] for b in bodies])            # (n, 2 axes, 2)
-    half = np.array([[b.half[0], b.half[2]] for b in bodies])          # (n, 2)
+    cen = np.array([b.center for b in bodies])[:, ::2]                 # x, z (`Body.xz`)
+    rot = np.array([b.rot for b in bodies])
+    ax = rot[:, ::2, ::2].transpose(0, 2, 1)  # (n, 2 axes, 2): `Body.right()`, `Body.front()`
+    half = np.array([b.half for b in bodies])[:, ::2]                  # (n, 2)
     bot = np.array([b.bottom for b in bodies])
     top = np.array([b.top for b in bodies])
     box = np.array([b.is_box for b in bodies])
