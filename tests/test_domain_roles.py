@@ -253,3 +253,15 @@ def test_names_never_bind_a_disagreeing_object(objs: list[tuple[str, str, str | 
             assert matches(by_id[oid], BOXES[role], CATALOG)
         else:
             assert role in prepared.binding.candidates or role in prepared.binding.why
+
+
+def test_name_words_are_immutable_so_they_can_be_shared() -> None:
+    """The words of a name are computed once per name (binding reads them for every role and
+    environment): what is handed out cannot be changed by a caller."""
+    from logicenveval.domain.roles import name_words
+    from logicenveval.model.envspec import EnvObject
+
+    obj = EnvObject(id="red_toy_boxes_2", category="ToyBox", room="r")
+    words = name_words(obj)
+    assert isinstance(words, frozenset) and {"red", "toy", "box", "boxes"} <= words
+    assert name_words(obj) is words

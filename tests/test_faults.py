@@ -328,3 +328,88 @@ def test_mutants_are_scored_on_the_env_as_judged() -> None:
     assert bound.killed_mutants == with_roles.killed_mutants
     # the fixture discriminates: scored on the unbound env, more mutants would count as killed
     assert MutationScorer(correct, muts).killed(anonymous, task, cat) != bound.killed_mutants
+
+
+def test_a_task_bt_and_its_mutants_are_prepared_once_per_process(tmp_path, monkeypatch) -> None:  # type: ignore[no-untyped-def]
+    """Every unit of a task needs the same parsed BT and mutant list: a worker makes them once,
+    and again only when the BT file's content or a limit changes."""
+    import shutil
+
+    import logicenveval.faults.score as score
+    from logicenveval.benchmark import DEFAULT_TASKS_DIR
+
+    shutil.copytree(DEFAULT_TASKS_DIR / "lamp_or_pillow_fetch", tmp_path / "lamp_or_pillow_fetch")
+    listed: list[int] = []
+
+    def counting(policy, **kw):  # type: ignore[no-untyped-def]
+        listed.append(1)
+        return mutants(policy, **kw)
+
+    monkeypatch.setattr(score, "mutants", counting)
+    clear_cache()
+    task = load_task("lamp_or_pillow_fetch", tmp_path)
+    cat = load_catalog()
+    first = scorer_for(task, tmp_path, cat, worlds=2)
+    assert scorer_for(load_task("lamp_or_pillow_fetch", tmp_path), tmp_path, cat, worlds=2) is first
+    assert len(listed) == 1
+    bt = policy_path(task, "correct", tmp_path)
+    bt.write_text(bt.read_text().replace("<BehaviorTree", "<!-- edited -->\n<BehaviorTree", 1))
+    scorer_for(task, tmp_path, cat, worlds=2)
+    assert len(listed) == 2  # new content: parsed and listed again
+    monkeypatch.setenv("LOGICENVEVAL_MAX_MUTANTS", "7")
+    assert len(scorer_for(task, tmp_path, cat, worlds=2).killable) <= 7
+    assert len(listed) == 3  # another limit: another list
+    clear_cache()
+
+
+def test_evaluation_builds_the_initial_world_once_for_coverage_and_traced_episodes(monkeypatch) -> None:  # type: ignore[no-untyped-def]
+    """Coverage and the traced episodes share one initial world; only the timed episodes (the
+    paper's ST: `simulate` whole) build their own."""
+    from logicenveval.runner.evaluation import evaluate_env
+
+    task, cat, _, _, worlds = _prepared("lamp_or_pillow_fetch")
+    policies = {k: load_policy(policy_path(task, k), roles=task.roles, rooms=task.rooms) for k in task.policies}
+    env = worlds[0][1]
+    built: list[int] = []
+    original = World.from_env.__func__  # type: ignore[attr-defined]
+
+    def counting(cls, *a, **kw):  # type: ignore[no-untyped-def]
+        built.append(1)
+        return original(cls, *a, **kw)
+
+    monkeypatch.setattr(World, "from_env", classmethod(counting))
+    done = evaluate_env("g", task, env, policies, cat)
+    assert len(built) == 1 + len(policies)
+    for kind, policy in policies.items():  # the traces are those of `simulate`
+        alone = simulate(policy, env, task, cat, trace=True)
+        assert done.traces[kind].status == alone.status == done.sample.verdicts[kind]
+        assert done.traces[kind].trace == [str(t) for t in alone.trace]
+
+
+def test_a_symbolic_world_already_traced_is_not_traced_again(monkeypatch) -> None:  # type: ignore[no-untyped-def]
+    """Another environment realising the same situation with the same objects (another id,
+    other coordinates) reuses the traces; its timed episodes still run."""
+    from logicenveval.runner import evaluation
+    from logicenveval.sim.simulator import CompiledPolicy
+
+    task, cat, _, _, worlds = _prepared("lamp_or_pillow_fetch")
+    policies = {k: load_policy(policy_path(task, k), roles=task.roles, rooms=task.rooms) for k in task.policies}
+    env = worlds[1][1]
+    twin = env.model_copy(update={"env_id": "twin", "agent": env.agent.model_copy(update={"position": (9.0, 9.0)})})
+    runs: list[bool] = []
+    original = CompiledPolicy.run
+
+    def counting(self, *a, trace=False, **kw):  # type: ignore[no-untyped-def]
+        runs.append(trace)
+        return original(self, *a, trace=trace, **kw)
+
+    monkeypatch.setattr(CompiledPolicy, "run", counting)
+    monkeypatch.setattr(evaluation, "_TRACED", {})
+    first = evaluation.evaluate_env("g", task, env, policies, cat)
+    assert runs.count(True) == runs.count(False) == len(policies)
+    second = evaluation.evaluate_env("h", task, twin, policies, cat)
+    assert runs.count(True) == len(policies) and runs.count(False) == 2 * len(policies)
+    assert second.traces == first.traces and second.sample.sim_ticks == first.sample.sim_ticks
+    other = worlds[2][1]  # another situation: traced
+    evaluation.evaluate_env("g", task, other, policies, cat)
+    assert runs.count(True) == 2 * len(policies)

@@ -197,25 +197,31 @@ def test_offline_floor_plan_sizes_rooms_for_the_objects_they_must_hold() -> None
 
 
 def test_st_times_an_episode_only_after_its_warm_up(monkeypatch: pytest.MonkeyPatch) -> None:
-    """The timed (untraced) run of each policy follows a traced run of the same episode, which
-    pays for tree building and caches (issue 34: a unit's first episode inflated ST)."""
+    """The timed (untraced) run of each policy follows a traced run of the same episode in the
+    same process, which pays for tree building and caches (issue 34: a unit's first episode
+    inflated ST); an episode already traced in this process is not traced again (issue 38)."""
     import logicenveval.runner.evaluation as evaluation
     from logicenveval.benchmark import policy_path
     from logicenveval.benchmark_validation import situations
     from logicenveval.sim.loader import load_policy
+    from logicenveval.sim.simulator import CompiledPolicy
     from logicenveval.sim.situations import situation_env
 
-    calls: list[tuple[str, bool]] = []
-    real = evaluation.simulate
+    calls: list[tuple[int, bool]] = []
+    real = CompiledPolicy.run
 
-    def spy(policy: Any, env: Any, task: Any, catalog: Any = None, **kw: Any) -> Any:
-        calls.append((str(policy), bool(kw.get("trace"))))
-        return real(policy, env, task, catalog, **kw)
+    def spy(self: Any, *a: Any, trace: bool = False, **kw: Any) -> Any:
+        calls.append((id(self.policy), trace))
+        return real(self, *a, trace=trace, **kw)
 
-    monkeypatch.setattr(evaluation, "simulate", spy)
+    monkeypatch.setattr(CompiledPolicy, "run", spy)
+    monkeypatch.setattr(evaluation, "_TRACED", {})
     task = load_task("clean_living_room")
     env = situation_env(task, situations(task)[0])
     policies = {k: load_policy(policy_path(task, k), roles=task.roles) for k in ("correct", "counterfactual")}
     evaluation.evaluate_env("g", task, env, policies, load_catalog())
     assert [traced for _, traced in calls] == [True, False, True, False]
-    assert calls[0][0] == calls[1][0] and calls[2][0] == calls[3][0]
+    assert calls[0][0] == calls[1][0] == id(policies["correct"]) and calls[2][0] == calls[3][0]
+    calls.clear()
+    evaluation.evaluate_env("g", task, env.model_copy(update={"env_id": "again"}), policies, load_catalog())
+    assert [traced for _, traced in calls] == [False, False]

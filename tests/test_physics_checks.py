@@ -415,3 +415,37 @@ def test_rect_pairs_matches_the_all_pairs_test() -> None:
         brute = sorted((i, j) for i, r in enumerate(a) for j, q in enumerate(b)
                        if r[0] <= q[2] and q[0] <= r[2] and r[1] <= q[3] and q[1] <= r[3])
         assert rect_pairs(a, b) == brute
+
+
+def test_a_room_outline_shared_by_environments_is_built_once() -> None:
+    """Generators lay out many environments of a task in the same rooms: the checker builds and
+    buffers each outline once; a changed outline is its own polygon, with its own findings."""
+    from logicenveval.physics.floorplan import room_band, valid_rooms
+
+    data = _load("one_room")
+    a, b = env_from_dict(data), env_from_dict(json.loads(json.dumps(data)))
+    pa, pb = valid_rooms(a, []), valid_rooms(b, [])
+    rid = next(iter(pa))
+    assert pa[rid] is pb[rid]
+    band = room_band(a, rid, pa[rid], 0.05, outline=True)
+    assert room_band(b, rid, pb[rid], 0.05, outline=True) is band
+    assert band.equals(pa[rid].exterior.buffer(0.05))
+    assert room_band(a, rid, pa[rid], 0.1).equals(pa[rid].buffer(0.1))
+    moved = json.loads(json.dumps(data))
+    moved["rooms"][0]["polygon"] = [[x + 100.0, z] for x, z in moved["rooms"][0]["polygon"]]
+    assert valid_rooms(env_from_dict(moved), [])[rid] is not pa[rid]
+    assert "outside_room" in _codes(moved, "entity")
+
+
+_BOX = st.tuples(*[st.floats(-50, 50, allow_nan=False)] * 4).map(
+    lambda b: (min(b[0], b[2]), min(b[1], b[3]), max(b[0], b[2]), max(b[1], b[3])))
+
+
+@given(st.lists(_BOX, max_size=12), _BOX)
+@settings(max_examples=200, deadline=None)
+def test_label_cover_is_the_sum_of_the_overlaps_to_the_last_bit(placed, box) -> None:  # type: ignore[no-untyped-def]
+    """The renderer's inlined cover test places every label where the plain sum placed it."""
+    from logicenveval.physics.render import _covered, _overlap
+
+    assert _covered(box, placed) == sum(_overlap(box, b) for b in placed)
+    assert _covered(box, placed) == 0 or any(_overlap(box, b) > 0 for b in placed)

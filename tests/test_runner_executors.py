@@ -37,3 +37,16 @@ def test_a_killed_worker_is_named_by_its_signal_every_time() -> None:
 ])
 def test_the_cause_is_not_the_pools_own_sigterm(codes: list[int | None], reason: str) -> None:
     assert reason in _death(codes)
+
+
+def _gc_threshold(item: int) -> tuple[int, ...]:
+    import gc
+
+    return tuple(gc.get_threshold())
+
+
+def test_workers_collect_garbage_less_often_than_the_default() -> None:
+    from logicenveval.runner.executors import WORKER_GC_THRESHOLD
+
+    out = dict(ProcessExecutor(2).map_unordered(_gc_threshold, [0, 1]))
+    assert out[0] == out[1] == WORKER_GC_THRESHOLD and WORKER_GC_THRESHOLD[0] > 700

@@ -29,6 +29,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field
@@ -46,6 +47,7 @@ IRREGULAR = {"knives": "knife", "shelves": "shelf", "leaves": "leaf", "loaves": 
              "women": "woman", "geese": "goose", "dice": "die", "cacti": "cactus"}
 
 
+@lru_cache(maxsize=8192)  # pure, and called per object and role on every environment judged
 def snake(text: str) -> str:
     """`Toy Chest`, `toy-chest`, `ToyChest`, `TVStand` -> `toy_chest`, `tv_stand`."""
     spaced = re.sub(r"(?<=[a-z0-9])(?=[A-Z])|(?<=[A-Z])(?=[A-Z][a-z])", "_", text.strip())
@@ -71,6 +73,7 @@ def _singulars(word: str) -> list[str]:
     return out
 
 
+@lru_cache(maxsize=8192)
 def singular(name: str) -> str:
     """The likeliest singular of every word: `toy_boxes` -> `toy_box`, `shoes` -> `shoe`."""
     out = []

@@ -44,6 +44,7 @@ from __future__ import annotations
 import difflib
 from collections.abc import Mapping
 from dataclasses import dataclass
+from functools import lru_cache
 
 from pydantic import BaseModel, ConfigDict, Field
 
@@ -92,19 +93,20 @@ def category_names(category: str, catalog: Catalog) -> set[str]:
     return vocabulary(catalog).names(category)
 
 
-def name_words(obj: EnvObject) -> set[str]:
+def name_words(obj: EnvObject) -> frozenset[str]:
     """The words an object's name says: its id and its category as written (singular forms)."""
     written = getattr(obj, "source_category", None)
     text = " ".join(str(t) for t in (obj.id, written or obj.category))
     return _words(text)
 
 
-def _words(text: str) -> set[str]:
+@lru_cache(maxsize=8192)  # pure; every object's name is read for every role it may bind
+def _words(text: str) -> frozenset[str]:
     out: set[str] = set()
     for word in snake(text).split("_"):
         if word and not word.isdigit() and word not in _NOISE:
             out |= {word, singular(word)}
-    return out
+    return frozenset(out)
 
 
 def _same_category(obj: EnvObject, role: Role, catalog: Catalog) -> bool:

@@ -21,10 +21,10 @@ from pathlib import Path
 from logicenveval.atomic import atomic_write_text
 from logicenveval.benchmark import policy_path
 from logicenveval.domain.catalog import Catalog
-from logicenveval.errors import LogicEnvEvalError, RunStoreError
+from logicenveval.errors import LogicEnvEvalError, PolicyFormatError, RunStoreError
 from logicenveval.faults.classify import MutantRunner, classify_task
 from logicenveval.faults.operators import OPERATORS, Mutant, mutants
-from logicenveval.limits import read_bytes
+from logicenveval.limits import DEFAULTS, limit, read_bytes
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import Task
 from logicenveval.sim.loader import load_policy, policy_to_xml
@@ -43,13 +43,16 @@ class MutationScorer:
         self._runner = MutantRunner(correct, killable)
         self._killed: dict[str, list[str]] = {}
 
-    def killed(self, env: EnvSpec, task: Task, catalog: Catalog) -> list[str]:
+    def killed(self, env: EnvSpec, task: Task, catalog: Catalog, *,
+               initial: World | None = None, key: str | None = None) -> list[str]:
         """Killed ids; memoised by the env's symbolic world, since the simulator sees nothing else
-        (different generators often realise the same situation with the same objects)."""
-        key = symbolic_key(env)
+        (different generators often realise the same situation with the same objects).
+        `initial` and `key`: `World.from_env(env, catalog)` (not changed) and
+        `symbolic_key(env)` when the caller has them."""
+        key = key if key is not None else symbolic_key(env)
         hit = self._killed.get(key)
         if hit is None:
-            world = World.from_env(env, catalog)
+            world = initial if initial is not None else World.from_env(env, catalog)
             got = self._runner.run(world, task_goal(task, world))
             hit = self._killed[key] = sorted(self.killable[i].id for i in got)
         return list(hit)
@@ -65,9 +68,13 @@ SHIPPED_NAME = "killable_mutants.json"
 
 def scorer_key(task: Task, correct: Policy, muts: list[Mutant], catalog: Catalog, worlds: int) -> str:
     """Content key of a task's classification: any change to what it depends on makes it stale."""
-    return hashlib.sha256("\0".join([task.model_dump_json(), policy_to_xml(correct), str(worlds),
+    return _key(task.model_dump_json(), policy_to_xml(correct), worlds, catalog, len(muts))
+
+
+def _key(task_json: str, correct_xml: str, worlds: int, catalog: Catalog, n_mutants: int) -> str:
+    return hashlib.sha256("\0".join([task_json, correct_xml, str(worlds),
                                       catalog.model_dump_json(), *sorted(OPERATORS),
-                                      str(len(muts))]).encode()).hexdigest()
+                                      str(n_mutants)]).encode()).hexdigest()
 
 
 def shipped_path(task: Task, tasks_dir: str | Path | None) -> Path:
@@ -76,9 +83,30 @@ def shipped_path(task: Task, tasks_dir: str | Path | None) -> Path:
 
 def _prepared(task: Task, tasks_dir: str | Path | None, catalog: Catalog,
               worlds: int) -> tuple[Policy, list[Mutant], str]:
-    correct = load_policy(policy_path(task, "correct", tasks_dir), roles=task.roles, rooms=task.rooms)
-    muts = mutants(correct, roles=task.roles, rooms=task.rooms)
-    return correct, muts, scorer_key(task, correct, muts, catalog, worlds)
+    """The correct BT, its mutants and the scorer's key. Parsing the BT and listing its mutants
+    is the costly part and is done once per process for the same task, BT file content and
+    limits (every unit of a task in a worker needs it); the key still reads the catalog each
+    time, since a generator may have changed a catalog in place."""
+    path = policy_path(task, "correct", tasks_dir)
+    task_json = task.model_dump_json()
+    try:
+        data = read_bytes(path, what="policy file", error=PolicyFormatError,
+                          max_bytes="max_xml_bytes", hint="give an existing BT.CPP v4 XML file")
+    except LogicEnvEvalError:
+        data = None  # not cached: the loader reports it
+    memo = None if data is None else (str(path), hashlib.sha256(data).digest(), task_json,
+                                      tuple(limit(n) for n in DEFAULTS))
+    hit = _PREPARED.get(memo) if memo is not None else None
+    if hit is None:
+        correct = load_policy(path, roles=task.roles, rooms=task.rooms)
+        muts = mutants(correct, roles=task.roles, rooms=task.rooms)
+        hit = (correct, muts, policy_to_xml(correct))
+        if memo is not None:
+            if len(_PREPARED) > 256:
+                _PREPARED.clear()
+            _PREPARED[memo] = hit
+    correct, muts, xml = hit
+    return correct, muts, _key(task_json, xml, worlds, catalog, len(muts))
 
 
 def scorer_for(task: Task, tasks_dir: str | Path | None, catalog: Catalog, *,
@@ -123,11 +151,14 @@ def shipped_is_current(task: Task, tasks_dir: str | Path | None, catalog: Catalo
 
 #: scorers by content key: a worker process builds each mutant's tree once for all its units
 _SCORERS: dict[str, MutationScorer] = {}
+#: correct BT, mutants and BT XML by (BT path, digest of its bytes, task JSON, limits)
+_PREPARED: dict[tuple[str, bytes, str, tuple[int, ...]], tuple[Policy, list[Mutant], str]] = {}
 
 
 def clear_cache() -> None:
-    """Forget the scorers (and their built trees) of this process."""
+    """Forget the scorers (and their built trees) and the parsed BTs of this process."""
     _SCORERS.clear()
+    _PREPARED.clear()
 
 
 def _read(path: Path, key: str) -> list[str] | None:

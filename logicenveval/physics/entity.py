@@ -11,6 +11,7 @@ from shapely.geometry import Point, Polygon
 from logicenveval.domain.catalog import Catalog
 from logicenveval.domain.shapes import load_shapes, support_gap
 from logicenveval.model.envspec import EnvSpec
+from logicenveval.physics.floorplan import room_band
 from logicenveval.physics.geometry import (
     Body,
     candidate_array,
@@ -255,7 +256,7 @@ def _catalog_size(b: Body, catalog: Catalog, tol: Tolerances) -> list[PhysicsFai
     cat = catalog.get(b.obj.category)
     if cat is None:
         return []
-    size = 2.0 * b.half
+    size = (2.0 * b.half).tolist()  # plain floats: three numpy scalar comparisons cost more
     for axis, (v, lo, hi) in enumerate(zip(size, cat.size_min, cat.size_max, strict=True)):
         lo_t, hi_t = lo * (1 - tol.size_ratio), hi * (1 + tol.size_ratio)
         if not lo_t <= v <= hi_t:
@@ -282,7 +283,7 @@ def check_entities(env: EnvSpec, bodies: dict[str, Body], polys: dict[str, Polyg
             fails.append(_fail("invalid_size", f"{o.id} size {o.size} has a non-positive extent", [o.id],
                                measured=float(min(o.size)), tolerance=0.0))
     doors = swing_areas(env)
-    grown = {rid: poly.buffer(tol.room_margin) for rid, poly in polys.items()}
+    grown = {rid: room_band(env, rid, poly, tol.room_margin) for rid, poly in polys.items()}
     blocking = _door_candidates(list(bodies.values()), doors)
     for k, b in enumerate(bodies.values()):
         fails += _catalog_size(b, catalog, tol)

@@ -9,6 +9,7 @@ sill + height <= wall_height (vertically).
 from __future__ import annotations
 
 import math
+from functools import lru_cache
 
 from shapely.geometry import LineString, Point, Polygon
 from shapely.geometry.base import BaseGeometry
@@ -22,6 +23,33 @@ def _fail(code: str, message: str, *, rooms: list[str] | None = None, objects: l
           measured: float | None = None, tolerance: float | None = None) -> PhysicsFailure:
     return PhysicsFailure(dimension="floor_plan", code=code, rooms=rooms or [], objects=objects or [],
                           measured=measured, tolerance=tolerance, message=message)
+
+
+@lru_cache(maxsize=4096)
+def _room_polygon(points: tuple[tuple[float, float], ...]) -> tuple[Polygon, bool, float]:
+    """The outline's polygon, whether it is valid, its area: generators lay out many
+    environments of a task in the same rooms, so each outline is built and validated once
+    (shapely geometries are immutable, so sharing them is safe)."""
+    poly = Polygon(points)
+    return poly, bool(poly.is_valid), float(poly.area)
+
+
+@lru_cache(maxsize=8192)
+def _grown(points: tuple[tuple[float, float], ...], width: float, outline: bool) -> BaseGeometry:
+    poly = _room_polygon(points)[0]
+    return (poly.exterior if outline else poly).buffer(width)
+
+
+def room_band(env: EnvSpec, room_id: str, poly: Polygon, width: float, *,
+              outline: bool = False) -> BaseGeometry:
+    """`poly` (the valid polygon of room `room_id`, `valid_rooms`) buffered by `width` — its
+    outline only with `outline` (the wall band): built once per outline and width."""
+    for room in env.rooms:
+        if room.id == room_id and room.polygon is not None:
+            key = tuple(room.polygon)
+            if _room_polygon(key)[0] is poly:
+                return _grown(key, width, outline)
+    return (poly.exterior if outline else poly).buffer(width)
 
 
 def valid_rooms(env: EnvSpec, fails: list[PhysicsFailure]) -> dict[str, Polygon]:
@@ -40,11 +68,11 @@ def valid_rooms(env: EnvSpec, fails: list[PhysicsFailure]) -> dict[str, Polygon]
             fails.append(_fail("invalid_polygon", f"room {room.id} polygon has a non-finite coordinate",
                                rooms=[room.id]))
             continue
-        poly = Polygon(pts)
-        if not poly.is_valid or poly.area <= 0:
+        poly, valid, area = _room_polygon(tuple(pts))
+        if not valid or area <= 0:
             fails.append(_fail("invalid_polygon",
                                f"room {room.id} polygon is not a simple polygon with positive area",
-                               rooms=[room.id], measured=float(poly.area)))
+                               rooms=[room.id], measured=area))
             continue
         polys[room.id] = poly
     return polys
@@ -145,7 +173,7 @@ def check_floor_plan(env: EnvSpec, tol: Tolerances) -> tuple[list[PhysicsFailure
     polys = valid_rooms(env, fails)
     fails += _overlaps(polys, tol)
     fails += _connectivity(env)
-    bands = {rid: p.exterior.buffer(tol.on_wall) for rid, p in polys.items()}
+    bands = {rid: room_band(env, rid, p, tol.on_wall, outline=True) for rid, p in polys.items()}
     band_ids = list(bands)
     near: dict[int, list[str]] = {}
     for k, r in rect_pairs([_bounds(d.segment) for d in env.doors], [b.bounds for b in bands.values()]):

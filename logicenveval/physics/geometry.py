@@ -126,14 +126,14 @@ def build_body(obj: EnvObject, mesh_dir: Path | None = None) -> Body:
         geom = model
     world = center + local @ rot.T
     if verts is None:
-        footprint = Polygon(world[_BOX_FOOTPRINT][:, [0, 2]])
+        footprint = Polygon(world[_BOX_FOOTPRINT, ::2])  # x and z of the bottom corners
     else:
         hull = Polygon(world[:, [0, 2]]).convex_hull
         footprint = hull if isinstance(hull, Polygon) else Polygon()
+    lo, hi = world.min(axis=0), world.max(axis=0)
     return Body(
         obj=obj, center=center, half=half, rot=rot, footprint=footprint,
-        bottom=float(world[:, 1].min()), top=float(world[:, 1].max()),
-        aabb_min=world.min(axis=0), aabb_max=world.max(axis=0),
+        bottom=float(lo[1]), top=float(hi[1]), aabb_min=lo, aabb_max=hi,
         collision=fcl.CollisionObject(geom, tf), is_box=verts is None,
         parts=_solid_parts(obj, center, half, rot) if verts is None else None,
     )
@@ -214,9 +214,10 @@ def separated(bodies: list[Body], pairs: np.ndarray, eps: float = 1e-6) -> np.nd
     out = np.zeros(len(pairs), dtype=bool)
     if not len(pairs):
         return out
-    cen = np.array([b.xz for b in bodies])
-    ax = np.array([[b.right(), b.front()] for b in bodies])            # (n, 2 axes, 2)
-    half = np.array([[b.half[0], b.half[2]] for b in bodies])          # (n, 2)
+    cen = np.array([b.center for b in bodies])[:, ::2]                 # x, z (`Body.xz`)
+    rot = np.array([b.rot for b in bodies])
+    ax = rot[:, ::2, ::2].transpose(0, 2, 1)  # (n, 2 axes, 2): `Body.right()`, `Body.front()`
+    half = np.array([b.half for b in bodies])[:, ::2]                  # (n, 2)
     bot = np.array([b.bottom for b in bodies])
     top = np.array([b.top for b in bodies])
     box = np.array([b.is_box for b in bodies])
@@ -267,7 +268,7 @@ def point_to_boundary(geom: BaseGeometry, poly: Polygon) -> float:
 
 
 def finite(*values: float) -> bool:
-    return all(math.isfinite(v) for v in values)
+    return all(map(math.isfinite, values))
 
 
 def has_geometry(obj: EnvObject) -> bool:

@@ -15,12 +15,13 @@ from logicenveval.domain.catalog import Catalog
 from logicenveval.domain.roles import prepare_env
 from logicenveval.metrics.evaluate import constraint_problems, coverage
 from logicenveval.metrics.records import EnvSample, PhysicsSummary, VerdictTrace
+from logicenveval.model.conditions import Cond, to_text
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import Task
 from logicenveval.phases import phase
 from logicenveval.physics import PhysicsReport, check_env
-from logicenveval.sim.simulator import simulate
-from logicenveval.sim.world import holds_initial
+from logicenveval.sim.simulator import compiled, simulate, task_goal
+from logicenveval.sim.world import World, symbolic_key
 
 if TYPE_CHECKING:
     from logicenveval.faults.score import MutationScorer
@@ -36,6 +37,10 @@ class Evaluation:
     env: EnvSpec
     physics: PhysicsReport
     traces: dict[str, VerdictTrace]
+    #: the initial symbolic world of `env` (never ticked: episodes run on copies)
+    world: World
+    #: `sim.world.symbolic_key(env)`: all that an episode on `env` depends on
+    key: str
 
 
 def evaluate_env(
@@ -58,7 +63,8 @@ def evaluate_env(
     which is also the warm-up, then untraced and timed (`sim_ms`, the paper's ST): a unit's first
     episode pays for tree building and caches that are no simulation time (they made a generator
     with one environment per task look slower than one with seven), and recording a trace adds
-    ~40 % to these sub-millisecond episodes.
+    ~40 % to these sub-millisecond episodes. A traced episode is not run again for a symbolic
+    world this process already traced (`_traced`); the timed one always runs.
     """
     with phase("physics"):
         prepared = prepare_env(env, task.roles, catalog, given)
@@ -78,19 +84,19 @@ def evaluate_env(
         extended_failures=[f.model_dump(mode="json") for f in report.extended.failures],
     )
     with phase("coverage"):
-        holds = holds_initial(env, catalog)
+        world = World.from_env(env, catalog)  # the initial state, copied for each traced episode
+        holds = world.holds
         cov = coverage(task, holds, env.roles, binding)
         violations = constraint_problems(task, env, holds)
+        goal = task_goal(task, world)
+        key = symbolic_key(env)
     verdicts: dict[str, str] = {}
     sim_ms: dict[str, float] = {}
     sim_ticks: dict[str, int] = {}
     traces: dict[str, VerdictTrace] = {}
     for kind, policy in policies.items():
         with phase("traces"):
-            verdict = simulate(policy, env, task, catalog, trace=True)  # also the timing's warm-up
-        sim_ticks[kind] = verdict.ticks
-        traces[kind] = VerdictTrace(status=verdict.status, message=verdict.message or "",
-                                    trace=[str(t) for t in verdict.trace])
+            traces[kind], sim_ticks[kind] = _traced(policy, catalog, key, world, goal)
         with phase("simulation"):
             start = time.perf_counter()
             verdicts[kind] = simulate(policy, env, task, catalog).status
@@ -113,7 +119,32 @@ def evaluate_env(
         categories=prepared.categories.mapped,
         unknown_categories=prepared.categories.unknown,
     )
-    return Evaluation(sample=sample, env=env, physics=report, traces=traces)
+    return Evaluation(sample=sample, env=env, physics=report, traces=traces, world=world, key=key)
+
+
+#: traced episodes by (policy, catalog, symbolic world, goal), with the policy and catalog they
+#: were run with (kept alive, so their ids are not reused) -> trace, root ticks
+_TRACED: dict[tuple[int, int, str, str | None], tuple[Any, Catalog, VerdictTrace, int]] = {}
+
+
+def _traced(policy: Any, catalog: Catalog, key: str, world: World,
+            goal: Cond | None) -> tuple[VerdictTrace, int]:
+    """`simulate(policy, env, task, catalog, trace=True)` as the report shows it (`key` is
+    `symbolic_key(env)`, `world` its initial world, `goal` the task's goal there), also the
+    warm-up of the timed episode. An episode sees nothing but the symbolic world, so one already
+    traced in this process (another generator's environment that realises the same situation
+    with the same objects) is not run again: the warm-up it was is still warm."""
+    memo = (id(policy), id(catalog), key, None if goal is None else to_text(goal))
+    hit = _TRACED.get(memo)
+    if hit is not None and hit[0] is policy and hit[1] is catalog:
+        return hit[2], hit[3]
+    verdict = compiled(policy).run(world.copy(), goal, trace=True)
+    trace = VerdictTrace(status=verdict.status, message=verdict.message or "",
+                         trace=[str(t) for t in verdict.trace])
+    if len(_TRACED) >= 4096:
+        _TRACED.clear()
+    _TRACED[memo] = (policy, catalog, trace, verdict.ticks)
+    return trace, verdict.ticks
 
 
 def with_killed_mutants(done: Evaluation, task: Task, scorer: MutationScorer,
@@ -128,7 +159,7 @@ def with_killed_mutants(done: Evaluation, task: Task, scorer: MutationScorer,
         return sample
     start = time.perf_counter()
     with phase("mutants"):
-        killed = scorer.killed(done.env, task, catalog)
+        killed = scorer.killed(done.env, task, catalog, initial=done.world, key=done.key)
     ms = (time.perf_counter() - start) * 1000.0
     return sample.model_copy(update={"killed_mutants": killed,
                                      "sim_ms": {**sample.sim_ms, "mutants": ms}})
