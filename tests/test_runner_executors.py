@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import os
 import signal
+import subprocess
+import sys
 
 import pytest
 
@@ -50,3 +52,16 @@ def test_workers_collect_garbage_less_often_than_the_default() -> None:
 
     out = dict(ProcessExecutor(2).map_unordered(_gc_threshold, [0, 1]))
     assert out[0] == out[1] == WORKER_GC_THRESHOLD and WORKER_GC_THRESHOLD[0] > 700
+
+
+@pytest.mark.parametrize(("executor", "workers", "started"),
+                         [("process", 2, True), ("process", 1, False), ("inprocess", 2, False)])
+def test_prestart_starts_the_fork_server_only_for_several_process_workers(
+        executor: str, workers: int, started: bool) -> None:
+    """`run` starts the fork server before importing its own modules, so both import at once."""
+    code = ("import multiprocessing.forkserver as f\n"
+            "from logicenveval.runner.executors import prestart\n"
+            f"prestart({executor!r}, {workers})\n"
+            "print(f._forkserver._forkserver_pid is not None)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True, timeout=120)
+    assert out.stdout.strip() == str(started)

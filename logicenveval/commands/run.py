@@ -76,6 +76,10 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from logicenveval.runner.executors import prestart
+
+    if not args.debug:
+        prestart(args.executor, args.workers)
     from logicenveval.reporting.publish import publish
     from logicenveval.reporting.terminal import path_lines
     from logicenveval.runner.config import RunConfig
