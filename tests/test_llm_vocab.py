@@ -233,3 +233,23 @@ def test_specialise_matches_the_deep_copy_reference(schema: Any) -> None:
     for vocab in (VOCAB, {"roles": ["a", "a", "b"]}, {"ids": SNAKE}):
         assert json.dumps(specialise(base, vocab)) == json.dumps(_specialised_by_deepcopy(base, vocab))
     assert json.dumps(base) == before
+
+
+def test_a_room_may_name_only_the_other_rooms_as_neighbours_from_protocol_2_on() -> None:
+    """Qwen2.5-Coder-1.5B, offered only its own room for `adjacent_to`, listed it in all three
+    attempts of a one-room task's floor plan; protocol 2 bounds the list to the other rooms."""
+    from logicenveval.llm.ask import reply_schema
+    from logicenveval.llm.replies import FloorPlanWire
+    from logicenveval.llm.vocab import OTHERS, specialise
+
+    words = {"rooms": ["living_room"], "room_types": ["LivingRoom"], "door_targets": ["living_room", "exterior"]}
+    two = {**words, "rooms": ["living_room", "kitchen"]}
+
+    def adjacent(schema: dict) -> dict:
+        return schema["$defs"]["RoomWire"]["properties"]["adjacent_to"]
+
+    assert adjacent(specialise(reply_schema(FloorPlanWire), words))["maxItems"] == 0
+    assert adjacent(specialise(reply_schema(FloorPlanWire), two))["maxItems"] == 1
+    old = adjacent(specialise(reply_schema(FloorPlanWire), words, others=False))
+    assert "maxItems" not in old and OTHERS not in old  # protocol 1's request text
+    assert OTHERS not in json.dumps(specialise(reply_schema(FloorPlanWire), None))

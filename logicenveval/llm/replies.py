@@ -13,7 +13,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, model_validat
 from logicenveval.llm import meaning
 from logicenveval.llm.meaning import MeaningError
 from logicenveval.llm.structured import Conjunction, Goal, LiteralDraft, to_text
-from logicenveval.llm.vocab import CONTEXT_KEY, COUNT, Vocab
+from logicenveval.llm.vocab import CONTEXT_KEY, COUNT, OTHERS, Vocab
 from logicenveval.model.repeats import repeated
 
 _F = ConfigDict(frozen=True, extra="ignore")
@@ -240,6 +240,8 @@ class RoomWire(RoomDraft):
     #: whole square metres: llama.cpp's grammar bounds integers, not decimals (a small model
     #: wrote 1.2 m² rooms)
     area_m2: int = Field(ge=3, le=80)
+    adjacent_to: list[Annotated[str, Vocab("rooms")]] = Field(default_factory=list,
+                                                             json_schema_extra={OTHERS: "rooms"})
 
 
 class FloorPlanWire(BaseModel):

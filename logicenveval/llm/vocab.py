@@ -28,6 +28,10 @@ MARK = "x-vocab"
 #: JSON-schema key of a list whose length is at most the size of a vocabulary (`maxItems`);
 #: its items must then be distinct, which the reply model checks
 COUNT = "x-count"
+#: JSON-schema key of a list of the *other* words of a vocabulary (a room's neighbours): at most
+#: one item fewer than the vocabulary (`maxItems`), none when it has one word. Removed from the
+#: schema sent; the bound applies from request protocol 2 on (`specialise(..., others=True)`)
+OTHERS = "x-others"
 #: validation-context key under which `ask` passes the vocabulary
 CONTEXT_KEY = "vocabulary"
 
@@ -83,13 +87,17 @@ class Vocab:
         return out
 
 
-def specialise(schema: dict[str, Any], vocabulary: Vocabulary | None) -> dict[str, Any]:
+def specialise(schema: dict[str, Any], vocabulary: Vocabulary | None, *, others: bool = True) -> dict[str, Any]:
     """A copy of `schema` whose marked fields list their vocabulary (enum) or pattern.
 
-    Copied and specialised in one pass over the JSON data (`copy.deepcopy` of the schema took
-    most of this per request: ~0.2 s of LogicEnvGen's generation per run)."""
+    `others`: bound `OTHERS` lists to the other words (a one-room task's room has no neighbour
+    to name: Qwen2.5-Coder-1.5B, offered only its own room, listed it three times in a row);
+    request protocol 1 sent no such bound. Copied and specialised in one pass over the JSON data
+    (`copy.deepcopy` of the schema took most of this per request: ~0.2 s of LogicEnvGen's
+    generation per run)."""
     if not vocabulary:
-        return schema
+        plain: dict[str, Any] = _without_others(schema)
+        return plain
 
     def walk(node: Any) -> Any:
         if isinstance(node, list):
@@ -107,10 +115,22 @@ def specialise(schema: dict[str, Any], vocabulary: Vocabulary | None) -> dict[st
         bound = vocabulary.get(counted) if isinstance(counted, str) else None
         if bound and not isinstance(bound, Pattern):  # a list of at most one item per word
             out["maxItems"] = len(set(bound))
+        other = out.pop(OTHERS, None)
+        rest = vocabulary.get(other) if isinstance(other, str) and others else None
+        if rest and not isinstance(rest, Pattern):
+            out["maxItems"] = len(set(rest)) - 1
         return out
 
     result: dict[str, Any] = walk(schema)
     return result
+
+
+def _without_others(node: Any) -> Any:
+    if isinstance(node, list):
+        return [_without_others(value) for value in node]
+    if not isinstance(node, dict):
+        return node
+    return {key: _without_others(value) for key, value in node.items() if key != OTHERS}
 
 
 #: `floor`, `wall`, `ceiling`, `on:<object id>`, `inside:<object id>`
