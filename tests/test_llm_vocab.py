@@ -250,6 +250,22 @@ def test_a_room_may_name_only_the_other_rooms_as_neighbours_from_protocol_2_on()
 
     assert adjacent(specialise(reply_schema(FloorPlanWire), words))["maxItems"] == 0
     assert adjacent(specialise(reply_schema(FloorPlanWire), two))["maxItems"] == 1
-    old = adjacent(specialise(reply_schema(FloorPlanWire), words, others=False))
+    old = adjacent(specialise(reply_schema(FloorPlanWire), words, bounds=False))
     assert "maxItems" not in old and OTHERS not in old  # protocol 1's request text
     assert OTHERS not in json.dumps(specialise(reply_schema(FloorPlanWire), None))
+
+
+def test_a_scene_lists_at_least_one_object_per_required_role_from_protocol_2_on() -> None:
+    """Qwen2.5-Coder-1.5B wrote one object per `select_objects` reply, re-asked or not; protocol
+    2's grammar asks for at least one object per role the situation requires."""
+    from logicenveval.llm.ask import reply_schema
+    from logicenveval.llm.replies import ObjectsReply
+    from logicenveval.llm.vocab import AT_LEAST, scene_vocabulary, specialise
+
+    words = scene_vocabulary(["bathroom"], ["mop", "toothbrush", "vanity"], ["mop", "toothbrush", "vanity"],
+                             required_roles=["mop", "vanity"])
+    assert specialise(reply_schema(ObjectsReply), words)["properties"]["objects"]["minItems"] == 2
+    old = specialise(reply_schema(ObjectsReply), words, bounds=False)["properties"]["objects"]
+    assert old["minItems"] == 1 and AT_LEAST not in old  # protocol 1's request text
+    none = specialise(reply_schema(ObjectsReply), {**words, "required_roles": []})["properties"]["objects"]
+    assert none["minItems"] == 1

@@ -214,7 +214,7 @@ def ask(
     under `run_dir/llm_errors/`. Counts per kind go to the model's `stats`.
     """
     protocol = protocol_of(model)
-    schema = specialise(reply_schema(reply_model), vocabulary, others=protocol >= 2)
+    schema = specialise(reply_schema(reply_model), vocabulary, bounds=protocol >= 2)
     first = render_messages(kind, payload, schema, protocol)
     messages = first
     first_bound = max_tokens or bounds_of(kind, protocol, schema)

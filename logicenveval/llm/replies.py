@@ -13,7 +13,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, model_validat
 from logicenveval.llm import meaning
 from logicenveval.llm.meaning import MeaningError
 from logicenveval.llm.structured import Conjunction, Goal, LiteralDraft, to_text
-from logicenveval.llm.vocab import CONTEXT_KEY, COUNT, OTHERS, Vocab
+from logicenveval.llm.vocab import AT_LEAST, CONTEXT_KEY, COUNT, OTHERS, Vocab
 from logicenveval.model.repeats import repeated
 
 _F = ConfigDict(frozen=True, extra="ignore")
@@ -173,7 +173,7 @@ def bind_objects(objects: list[ObjectDraft], info: ValidationInfo) -> list[Objec
 
 class ObjectsReply(BaseModel):
     model_config = _F
-    objects: list[ObjectDraft] = Field(min_length=1, max_length=60)
+    objects: list[ObjectDraft] = Field(min_length=1, max_length=60, json_schema_extra={AT_LEAST: "required_roles"})
 
     @model_validator(mode="after")
     def _unique_ids(self, info: ValidationInfo) -> ObjectsReply:

@@ -32,6 +32,10 @@ COUNT = "x-count"
 #: one item fewer than the vocabulary (`maxItems`), none when it has one word. Removed from the
 #: schema sent; the bound applies from request protocol 2 on (`specialise(..., others=True)`)
 OTHERS = "x-others"
+#: JSON-schema key of a list that must hold at least one item per word of a vocabulary (the
+#: objects of a scene: one per role the situation requires; `minItems`). Removed from the schema
+#: sent; the bound applies from request protocol 2 on, like `OTHERS`
+AT_LEAST = "x-at-least"
 #: validation-context key under which `ask` passes the vocabulary
 CONTEXT_KEY = "vocabulary"
 
@@ -87,12 +91,14 @@ class Vocab:
         return out
 
 
-def specialise(schema: dict[str, Any], vocabulary: Vocabulary | None, *, others: bool = True) -> dict[str, Any]:
+def specialise(schema: dict[str, Any], vocabulary: Vocabulary | None, *, bounds: bool = True) -> dict[str, Any]:
     """A copy of `schema` whose marked fields list their vocabulary (enum) or pattern.
 
-    `others`: bound `OTHERS` lists to the other words (a one-room task's room has no neighbour
-    to name: Qwen2.5-Coder-1.5B, offered only its own room, listed it three times in a row);
-    request protocol 1 sent no such bound. Copied and specialised in one pass over the JSON data
+    `bounds` (request protocol 2 on; protocol 1 sent neither): `OTHERS` lists hold only the
+    other words (a one-room task's room has no neighbour to name: Qwen2.5-Coder-1.5B, offered
+    only its own room, listed it three times in a row), `AT_LEAST` lists one item per word at
+    least (the same model wrote one object per scene, whatever the re-ask said about the roles
+    left without one). Copied and specialised in one pass over the JSON data
     (`copy.deepcopy` of the schema took most of this per request: ~0.2 s of LogicEnvGen's
     generation per run)."""
     if not vocabulary:
@@ -116,9 +122,13 @@ def specialise(schema: dict[str, Any], vocabulary: Vocabulary | None, *, others:
         if bound and not isinstance(bound, Pattern):  # a list of at most one item per word
             out["maxItems"] = len(set(bound))
         other = out.pop(OTHERS, None)
-        rest = vocabulary.get(other) if isinstance(other, str) and others else None
+        rest = vocabulary.get(other) if isinstance(other, str) and bounds else None
         if rest and not isinstance(rest, Pattern):
             out["maxItems"] = len(set(rest)) - 1
+        least = out.pop(AT_LEAST, None)
+        each = vocabulary.get(least) if isinstance(least, str) and bounds else None
+        if each and not isinstance(each, Pattern):
+            out["minItems"] = max(int(out.get("minItems", 0)), len(set(each)))
         return out
 
     result: dict[str, Any] = walk(schema)
@@ -130,7 +140,7 @@ def _without_others(node: Any) -> Any:
         return [_without_others(value) for value in node]
     if not isinstance(node, dict):
         return node
-    return {key: _without_others(value) for key, value in node.items() if key != OTHERS}
+    return {key: _without_others(value) for key, value in node.items() if key not in (OTHERS, AT_LEAST)}
 
 
 #: `floor`, `wall`, `ceiling`, `on:<object id>`, `inside:<object id>`
