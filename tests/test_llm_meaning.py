@@ -233,3 +233,12 @@ def test_roles_a_situation_declares_absent_need_no_object() -> None:
         {"objects": [{"id": "toy", "category": "toy", "room": "living_room", "placement": "floor"}]},
         context={MEANING_KEY: True, CONTEXT_KEY: {"roles": ["book", "toy"], "required_roles": ["toy"]}})
     assert reply.objects[0].role == "toy"
+
+
+def test_an_object_placed_in_a_room_instead_of_an_object_is_re_asked() -> None:
+    """Qwen2.5-Coder-1.5B placed its sink `inside:kitchen` (a room): the re-ask names it."""
+    from logicenveval.llm.meaning import placement_problem
+
+    found = placement_problem([("sink", "inside:kitchen"), ("plate", "on:sink")])
+    assert found is not None and "'sink'" in found and "inside:kitchen" in found
+    assert placement_problem([("sink", "floor"), ("plate", "on:sink"), ("cup", "inside:sink")]) is None

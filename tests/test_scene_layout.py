@@ -140,9 +140,11 @@ def test_impossible_task_objects_raise_precise_error(solver: Solver) -> None:
                               rng=np.random.default_rng(0), solver=solver)
 
 
-def test_unknown_placement_target_raises() -> None:
+@pytest.mark.parametrize("placement", ["on:nothing", "inside:nothing"])
+def test_unknown_placement_target_raises(placement: str) -> None:
+    """`inside:<a room>` (Qwen2.5-Coder-1.5B's `inside:kitchen`) was a KeyError, not this."""
     rooms = [RoomRequest(id="r", type="LivingRoom")]
-    objs = [ObjectRequest(id="a", category="book", room="r", placement="on:nothing", role="a")]
+    objs = [ObjectRequest(id="a", category="book", room="r", placement=placement, role="a")]
     with pytest.raises(EnvSpecError, match="unknown object 'nothing'"):
         construct_environment(SceneSpec(task_id="t", env_id="e", rooms=rooms, objects=objs), catalog=CAT,
                               rng=np.random.default_rng(0))

@@ -115,7 +115,7 @@ class _Builder:
             self.objects[o.id] = o
             self.cats[o.id] = self.catalog.categories[name]
         for i, o in enumerate(self.spec.objects):
-            ref = o.support if o.support not in ("floor", "wall", "ceiling") else o.container
+            ref = o.container or (o.support if o.support not in ("floor", "wall", "ceiling") else None)
             if ref is not None and ref not in self.objects:
                 raise EnvSpecError(f"{o.id} is placed on/inside unknown object {ref!r}",
                                    field=f"objects[{i}].placement", hint="name an object of the scene")
