@@ -241,4 +241,6 @@ def test_an_object_placed_in_a_room_instead_of_an_object_is_re_asked() -> None:
 
     found = placement_problem([("sink", "inside:kitchen"), ("plate", "on:sink")])
     assert found is not None and "'sink'" in found and "inside:kitchen" in found
-    assert placement_problem([("sink", "floor"), ("plate", "on:sink"), ("cup", "inside:sink")]) is None
+    assert placement_problem([("sink", "floor"), ("plate", "on:sink"), ("cup", "inside:sink"),
+                              ("puddle", "on:floor")]) is None  # `on:floor` is the floor
+    assert placement_problem([("towel", "inside:floor")]) is not None

@@ -165,6 +165,10 @@ def subtask_problem(subtasks: Sequence[tuple[str, str]], schema_texts: Sequence[
 
 # ----- objects and rooms ------------------------------------------------------------------------
 
+#: what `on:` may name besides an object (`on:floor` is the floor, as construction reads it)
+SURFACES = frozenset({"floor", "wall", "ceiling"})
+
+
 def placement_problem(objects: Sequence[tuple[str, str]]) -> str | None:
     """An object (id, placement) placed on or inside itself, or on or inside something that is
     not an object of the same reply (Qwen2.5-Coder-1.5B wrote `inside:kitchen`, a room), named;
@@ -175,7 +179,7 @@ def placement_problem(objects: Sequence[tuple[str, str]]) -> str | None:
         if kind in ("on", "inside") and target == oid:
             return (f"object {oid!r} is placed {kind}:{oid}, on or in itself; give it another "
                     "support or container, or the floor")
-        if kind in ("on", "inside") and target not in ids:
+        if kind == "inside" and target not in ids or kind == "on" and target not in ids | SURFACES:
             return (f"object {oid!r} is placed {kind}:{target}, but {target!r} is not an object of "
                     "this reply; place it on the floor, or on or inside an object listed here")
     return None
