@@ -99,12 +99,16 @@ def test_scene_vocabulary_binds_categories_rooms_and_placements() -> None:
     from logicenveval.llm.vocab import scene_vocabulary
 
     vocab = scene_vocabulary(["living_room"], ["toy"], ["toy", "sofa"])
+    sofa = {"id": "sofa_1", "category": "sofa", "room": "living_room", "placement": "floor"}
     obj = {"id": "toy", "category": "toy", "room": "living_room", "role": "toy", "placement": "on:sofa_1"}
-    ok = ask(_Fixed([{"objects": [obj]}]), "select_objects",
+    ok = ask(_Fixed([{"objects": [sofa, obj]}]), "select_objects",
              {**PAYLOAD, "rooms": [], "facts": [], "categories": []}, ObjectsReply, vocabulary=vocab)
-    assert ok.objects[0].placement == "on:sofa_1"
+    assert ok.objects[1].placement == "on:sofa_1"
     with pytest.raises(ModelReplyError, match="'on the sofa' is not a valid placements"):
-        ask(_Fixed([{"objects": [{**obj, "placement": "on the sofa"}]}]), "select_objects",
+        ask(_Fixed([{"objects": [sofa, {**obj, "placement": "on the sofa"}]}]), "select_objects",
+            {**PAYLOAD, "rooms": [], "facts": [], "categories": []}, ObjectsReply, vocabulary=vocab)
+    with pytest.raises(ModelReplyError, match="'sofa_1' is not an object of this reply"):
+        ask(_Fixed([{"objects": [obj]}]), "select_objects",
             {**PAYLOAD, "rooms": [], "facts": [], "categories": []}, ObjectsReply, vocabulary=vocab)
 
 
