@@ -101,9 +101,7 @@ def specialise(schema: dict[str, Any], vocabulary: Vocabulary | None, *, bounds:
     left without one). Copied and specialised in one pass over the JSON data
     (`copy.deepcopy` of the schema took most of this per request: ~0.2 s of LogicEnvGen's
     generation per run)."""
-    if not vocabulary:
-        plain: dict[str, Any] = _without_others(schema)
-        return plain
+    vocabulary = vocabulary or {}
 
     def walk(node: Any) -> Any:
         if isinstance(node, list):
@@ -133,14 +131,6 @@ def specialise(schema: dict[str, Any], vocabulary: Vocabulary | None, *, bounds:
 
     result: dict[str, Any] = walk(schema)
     return result
-
-
-def _without_others(node: Any) -> Any:
-    if isinstance(node, list):
-        return [_without_others(value) for value in node]
-    if not isinstance(node, dict):
-        return node
-    return {key: _without_others(value) for key, value in node.items() if key not in (OTHERS, AT_LEAST)}
 
 
 #: `floor`, `wall`, `ceiling`, `on:<object id>`, `inside:<object id>`
