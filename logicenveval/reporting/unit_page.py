@@ -13,12 +13,11 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from logicenveval.benchmark import load_task
 from logicenveval.metrics.compute import TaskMetrics
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.reporting.details import Source
 from logicenveval.reporting.leaderboard import jinja, write_details
-from logicenveval.runner.results import per_task_entry, row_status, unit_failures, unit_metrics
+from logicenveval.runner.results import per_task_entry, row_status, unit_failures
 from logicenveval.runner.unit import UnitSpec
 
 
@@ -37,9 +36,8 @@ def unit_results(unit: UnitRecord, metrics: TaskMetrics | None, run_id: str, mod
 def write_unit_page(spec: UnitSpec, record: UnitRecord, metrics: TaskMetrics | None, *,
                     run_id: str, model: str) -> None:
     """`details/<generator>/<task>.html` of one committed unit (an `on_commit` hook: bind
-    `run_id` and `model` with `functools.partial`)."""
-    if record.measured and metrics is None:
-        metrics = unit_metrics(load_task(spec.task_id, spec.tasks_dir), record)
+    `run_id` and `model` with `functools.partial`; `committed` calls it with the figures of a
+    measured unit)."""
     run_dir = Path(spec.run_dir)
     source = Source(run_dir, unit_results(record, metrics, run_id, model),
                     records={(record.generator, record.task_id): record})

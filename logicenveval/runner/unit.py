@@ -547,7 +547,8 @@ def committed(spec: UnitSpec, record: UnitRecord) -> Committed:
     process that computed it when `spec.commit` (workers commit in parallel, the run's process
     only gathers), then handed to `spec.on_commit`. The record handed back counts the write as
     its `saving` phase (a file cannot time its own write), its figures as `results` and the hook
-    as `report`; figures or a page that fail here are left to the run's process."""
+    as `report`; figures or a page that fail here are left to the run's process (a measured
+    unit's page is not written without its figures)."""
     record = record.model_copy(update={"inputs": spec.inputs})
     if not spec.commit:
         return Committed(record)
@@ -560,7 +561,7 @@ def committed(spec: UnitSpec, record: UnitRecord) -> Committed:
             with phases.phase("results"), contextlib.suppress(Exception):  # tries and says why
                 metrics = unit_metrics(load_task(spec.task_id, spec.tasks_dir), record)
         paged = False
-        if spec.on_commit is not None:
+        if spec.on_commit is not None and (metrics is not None or not record.measured):
             with phases.phase("report"), contextlib.suppress(Exception):
                 spec.on_commit(spec, record, metrics)
                 paged = True
