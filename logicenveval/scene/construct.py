@@ -115,7 +115,7 @@ class _Builder:
             self.objects[o.id] = o
             self.cats[o.id] = self.catalog.categories[name]
         for i, o in enumerate(self.spec.objects):
-            ref = o.container or (o.support if o.support not in ("floor", "wall", "ceiling") else None)
+            ref = o.parent
             if ref is not None and ref not in self.objects:
                 raise EnvSpecError(f"{o.id} is placed on/inside unknown object {ref!r}",
                                    field=f"objects[{i}].placement", hint="name an object of the scene")
@@ -129,7 +129,7 @@ class _Builder:
                 while cur is not None:
                     self.hard.add(cur)
                     ob = self.objects[cur]
-                    nxt = ob.container or (ob.support if ob.support not in ("floor", "wall", "ceiling") else None)
+                    nxt = ob.parent
                     cur = nxt if nxt not in self.hard else None
         for p in check_relations(list(self.objects.values()), [], self.catalog):
             self._bad_placement(p.objects, p.reason)
@@ -187,7 +187,7 @@ class _Builder:
     def size_all(self) -> None:
         def depth(oid: str) -> int:
             o = self.objects[oid]
-            ref = o.container or (o.support if o.support not in ("floor", "wall", "ceiling") else None)
+            ref = o.parent
             return 0 if ref is None else 1 + depth(ref)
 
         for oid in sorted(self.objects, key=depth):
@@ -209,7 +209,7 @@ class _Builder:
             raw = list(o.size)
         else:
             raw = [float(self.rng.uniform(a, b)) for a, b in zip(lo, hi, strict=True)]
-        ref = o.container or (o.support if o.support not in ("floor", "wall", "ceiling") else None)
+        ref = o.parent
         if ref is not None:
             ps = self.sizes[ref]
             m = 2 * CONTAINER_MARGIN if o.container else 0.0
@@ -360,7 +360,7 @@ class _Builder:
 
     def _root(self, oid: str) -> str:
         o = self.objects[oid]
-        ref = o.container or (o.support if o.support not in ("floor", "wall", "ceiling") else None)
+        ref = o.parent
         return oid if ref is None else self._root(ref)
 
     def _floor_rels(self, here: list[ObjectRequest], root: Mapping[str, str]

@@ -44,6 +44,10 @@ class RoomRequest(BaseModel):
     windows: list[WindowRequest] = Field(default_factory=list)
 
 
+#: the placements that name no object
+SURFACES = ("floor", "wall", "ceiling")
+
+
 class ObjectRequest(BaseModel):
     """One object to place; `placement` is `floor`, `wall`, `ceiling`, `on:<id>` or `inside:<id>`."""
 
@@ -61,7 +65,7 @@ class ObjectRequest(BaseModel):
     @field_validator("placement")
     @classmethod
     def _placement(cls, v: str) -> str:
-        if v in ("floor", "wall", "ceiling") or (v.startswith(("on:", "inside:")) and v.split(":", 1)[1]):
+        if v in SURFACES or (v.startswith(("on:", "inside:")) and v.split(":", 1)[1]):
             return v
         raise ValueError(f"placement {v!r} must be 'floor', 'wall', 'on:<object id>' or 'inside:<object id>'")
 
@@ -81,6 +85,12 @@ class ObjectRequest(BaseModel):
     @property
     def container(self) -> str | None:
         return self.placement[7:] if self.placement.startswith("inside:") else None
+
+    @property
+    def parent(self) -> str | None:
+        """The object it rests on or in; None when it stands on the floor, a wall or the ceiling."""
+        support = self.support
+        return self.container or (support if support not in SURFACES else None)
 
 
 class RelationRequest(BaseModel):
