@@ -23,6 +23,7 @@ from collections.abc import Sequence
 from logicenveval.llm.ask import PER_ITEM_TOKENS
 from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.offline import _HANDLERS, OfflineModel
+from logicenveval.llm.replies import MAX_OTHER_OBJECTS
 
 CHARS_PER_TOKEN = 3.5
 #: head-room of a bound over the largest measured reply (models write longer ids and sentences
@@ -37,6 +38,9 @@ class Measuring(OfflineModel):
     def __init__(self) -> None:
         super().__init__()
         self.largest: dict[str, tuple[int, str]] = {}
+        #: the most objects besides the roles' in one `select_objects` reply (protocol 3 bounds
+        #: their list: `replies.MAX_OTHER_OBJECTS`)
+        self.others: tuple[int, str] = (0, "")
         self.task = ""
 
     def _keep(self, kind: str, size: int) -> None:
@@ -48,6 +52,9 @@ class Measuring(OfflineModel):
         if handler is not None:
             reply = handler(request.payload, request)
             self._keep(request.kind, len(json.dumps(reply, separators=(",", ":"))))
+            if request.kind == "select_objects" and isinstance(reply, dict):
+                others = len(reply.get("other_objects", [o for o in reply.get("objects", []) if not o.get("role")]))
+                self.others = max(self.others, (others, self.task))
             for kind, (key, _) in PER_ITEM_TOKENS.items():
                 items = reply.get(key) if request.kind == kind and isinstance(reply, dict) else None
                 for item in items or []:
@@ -65,7 +72,7 @@ def proposed_bound(chars: int, floor: int) -> int:
     return max(floor, math.ceil(tokens(chars) * MARGIN / 100) * 100)
 
 
-def measure(tasks: Sequence[str], generators: Sequence[str]) -> dict[str, tuple[int, str]]:
+def measure(tasks: Sequence[str], generators: Sequence[str]) -> Measuring:
     import numpy as np
 
     from logicenveval.benchmark import load_task
@@ -81,7 +88,7 @@ def measure(tasks: Sequence[str], generators: Sequence[str]) -> dict[str, tuple[
             ctx = GenerationContext(model=model, catalog=catalog, seed=0,
                                     rng=np.random.default_rng(unit_seed(0, name, task_id)))
             make_generator(name).generate(task.brief(), ctx)
-    return model.largest
+    return model
 
 
 def table(largest: dict[str, tuple[int, str]]) -> tuple[list[str], list[str]]:
@@ -115,9 +122,13 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--generators", default=",".join(GENERATORS))
     args = parser.parse_args(argv)
     tasks = [t for t in args.tasks.split(",") if t] or list(task_ids())
-    largest = measure(tasks, [g for g in args.generators.split(",") if g])
-    lines, short = table(largest)
+    measured = measure(tasks, [g for g in args.generators.split(",") if g])
+    lines, short = table(measured.largest)
     print("\n".join(lines))
+    others, task = measured.others
+    print(f"select_objects other_objects: at most {others} ({task}), bound {MAX_OTHER_OBJECTS}")
+    if others > MAX_OTHER_OBJECTS:
+        short.append("select_objects other_objects")
     print(f"reply_bounds tasks={len(tasks)} chars_per_token={CHARS_PER_TOKEN} margin={MARGIN} "
           f"below_content={','.join(short) or 'none'}")
     return 1 if short else 0

@@ -244,3 +244,73 @@ def test_an_object_placed_in_a_room_instead_of_an_object_is_re_asked() -> None:
     assert placement_problem([("sink", "floor"), ("plate", "on:sink"), ("cup", "inside:sink"),
                               ("puddle", "on:floor")]) is None  # `on:floor` is the floor
     assert placement_problem([("towel", "inside:floor")]) is not None
+
+
+def _selection(**roles: str) -> dict[str, Any]:
+    return {"role_objects": {r: {"category": ROLES[r], "room": "living_room", "placement": p} for r, p in roles.items()},
+            "other_objects": [{"id": "shelf_1", "category": "bookshelf", "room": "living_room", "placement": "floor"}]}
+
+
+def test_protocol_3_asks_the_objects_keyed_by_the_roles_a_situation_requires() -> None:
+    """Qwen2.5-Coder-1.5B, asked for a list of at least one object per role, repeated `cloth`
+    eight times and left roles out; keyed by role, the grammar writes each required role once,
+    no other key, and at most `MAX_OTHER_OBJECTS` others."""
+    from logicenveval.llm.ask import reply_schema
+    from logicenveval.llm.replies import MAX_OTHER_OBJECTS, SelectionWire
+    from logicenveval.llm.vocab import KEYS, specialise
+
+    words = scene_vocabulary(["living_room"], sorted(ROLES), [*ROLES.values(), "bookshelf"],
+                             required_roles=["book", "toy"])
+    keyed = specialise(reply_schema(SelectionWire), words)["properties"]
+    assert keyed["role_objects"]["required"] == ["book", "toy"] == list(keyed["role_objects"]["properties"])
+    assert keyed["role_objects"]["additionalProperties"] is False and KEYS not in keyed["role_objects"]
+    assert keyed["other_objects"]["maxItems"] == MAX_OTHER_OBJECTS
+    assert "properties" not in specialise(reply_schema(SelectionWire), words, bounds=False)["properties"]["role_objects"]
+
+
+def test_a_keyed_selection_binds_each_role_to_the_object_under_its_name() -> None:
+    from logicenveval.llm.replies import SelectionWire
+
+    context = {MEANING_KEY: True, CONTEXT_KEY: {"roles": sorted(ROLES), "required_roles": ["book", "toy"]}}
+    reply = SelectionWire.model_validate(_selection(toy="floor", book="on:shelf_1"), context=context).draft()
+    assert [(o.id, o.role, o.placement) for o in reply.objects] == [
+        ("toy", "toy", "floor"), ("book", "book", "on:shelf_1"), ("shelf_1", None, "floor")]
+
+
+@pytest.mark.parametrize(("reply", "finding"), [
+    (_selection(toy="floor"), r"role\(s\) \['book'\] have no object"),  # a server without the grammar
+    (_selection(toy="floor", book="on:book"), "placed on:book, on or in itself"),
+    (_selection(toy="floor", book="on:shelf_2"), "'shelf_2' is not an object of this reply"),
+    ({**_selection(toy="floor", book="floor"), "other_objects": [
+        {"id": "toy", "category": "toy", "room": "living_room", "placement": "floor"}]}, r"repeated: \['toy'\]"),
+    ({"role_objects": {"toy": {"category": "toy", "room": "living_room", "placement": "floor"},
+                       "lamp": {"category": "toy", "room": "living_room", "placement": "floor"}},
+      "other_objects": []}, r"\['lamp'\] are not roles of the task"),
+])
+def test_a_keyed_selection_is_re_asked_naming_what_to_change(reply: dict[str, Any], finding: str) -> None:
+    from logicenveval.llm.replies import SelectionWire
+
+    context = {MEANING_KEY: True, CONTEXT_KEY: {"roles": sorted(ROLES), "required_roles": ["book", "toy"]}}
+    with pytest.raises(ValidationError, match=finding):
+        SelectionWire.model_validate(reply, context=context)
+
+
+def test_the_offline_model_builds_the_same_environments_keyed_or_listed() -> None:
+    """Protocol 3 changes the shape of the selection reply, not what the offline model selects:
+    its LogicEnvGen environments are those of protocol 2, object for object."""
+    import numpy as np
+
+    from logicenveval.benchmark import load_task
+    from logicenveval.domain.catalog import load_catalog
+    from logicenveval.generators.base import GenerationContext, make_generator, unit_seed
+    from logicenveval.llm.offline import OfflineModel
+
+    task, catalog = load_task("kitchen_dish_cleanup"), load_catalog()
+    envs = {}
+    for protocol in (2, 3):
+        model = OfflineModel()
+        model.reply_protocol = protocol  # type: ignore[attr-defined]
+        ctx = GenerationContext(model=model, catalog=catalog, seed=0,
+                                rng=np.random.default_rng(unit_seed(0, "logicenvgen", task.id)))
+        envs[protocol] = [e.model_dump_json() for e in make_generator("logicenvgen").generate(task.brief(), ctx).envs]
+    assert envs[2] == envs[3] and envs[3]

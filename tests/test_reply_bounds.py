@@ -14,10 +14,14 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 def test_bounds_hold_the_largest_replies_of_the_largest_task() -> None:
     from reply_bounds import measure, table, tokens  # type: ignore[import-not-found]
 
-    largest = measure(["lamp_or_pillow_fetch", "kitchen_dish_cleanup"], ["cot", "logicenvgen-no-dbp", "ifg"])
-    lines, short = table(largest)
+    from logicenveval.llm.replies import MAX_OTHER_OBJECTS
+
+    measured = measure(["lamp_or_pillow_fetch", "kitchen_dish_cleanup"], ["cot", "logicenvgen-no-dbp", "ifg"])
+    lines, short = table(measured.largest)
     assert short == [], lines
-    assert tokens(largest["cot_environments"][0]) > 4000  # the protocol-1 bound could not hold it
+    assert tokens(measured.largest["cot_environments"][0]) > 4000  # the protocol-1 bound could not hold it
+    others, task = measured.others
+    assert task == "lamp_or_pillow_fetch" and 0 < others <= MAX_OTHER_OBJECTS
 
 
 def test_a_bound_grows_with_the_items_a_request_fixes() -> None:

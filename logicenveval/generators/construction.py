@@ -29,6 +29,7 @@ from logicenveval.llm.replies import (
     PlacementReply,
     RelationDraft,
     RelationsReply,
+    SelectionWire,
 )
 from logicenveval.llm.vocab import Words, scene_vocabulary
 from logicenveval.model.conditions import evaluate, parse
@@ -118,10 +119,15 @@ class EnvironmentBuilder:
         categories = self.ctx.catalog.generator_categories()
         feedback = list(feedback or [])
         for attempt in range(self.max_refinements + 1 if self._reselecting else 1):
-            reply = ask(self.ctx.model, "select_objects", self._payload(
-                rooms=rooms, facts=facts, categories=categories, feedback=feedback), ObjectsReply,
-                seed=self.ctx.seed, vocabulary={**self._vocabulary([r["id"] for r in rooms]),
-                                                "required_roles": present_roles(sorted(self.brief.roles), facts)})
+            payload = self._payload(rooms=rooms, facts=facts, categories=categories, feedback=feedback)
+            vocabulary = {**self._vocabulary([r["id"] for r in rooms]),
+                          "required_roles": present_roles(sorted(self.brief.roles), facts)}
+            if protocol_of(self.ctx.model) >= 3:
+                reply = ask(self.ctx.model, "select_objects", payload, SelectionWire, seed=self.ctx.seed,
+                            vocabulary=vocabulary).draft()
+            else:
+                reply = ask(self.ctx.model, "select_objects", payload, ObjectsReply, seed=self.ctx.seed,
+                            vocabulary=vocabulary)
             objects = self._known_categories(reply.objects, log, env_id)
             sym = symbolic_env(self.brief, env_id, self.generator, rooms, objects)
             feedback = [f"the situation requires {f}, which does not hold" for f in

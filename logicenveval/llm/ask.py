@@ -33,12 +33,14 @@ _SPLIT = "=== user ==="
 #: checks), kept so that those packs replay byte for byte (their cache keys are the request
 #: texts); 2: compact-JSON line in every prompt, bounds sized from measured content
 #: (`MAX_TOKENS`), a cut reply re-asked with a larger bound, meaning checks (`llm.meaning`).
+#: 3: as 2, and the objects of a scene are asked keyed by role (`replies.SelectionWire`: one
+#: required object per role the situation requires, then at most `MAX_OTHER_OBJECTS` others).
 #: A model built with `--model-args protocol=N` (`registry.make_model`) carries `reply_protocol`.
 #: Protocol 1 also keeps LogicEnvGen's question flow of those packs (`generators.plan`,
 #: `generators.construction`): no rule-(a) re-ask of the decomposition and one floor plan per
 #: task, since each extra question is a request the packs never recorded.
-PROTOCOL = 2
-PROTOCOLS = (1, 2)
+PROTOCOL = 3
+PROTOCOLS = (1, 2, 3)
 
 
 def protocol_of(model: Any) -> int:

@@ -13,7 +13,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, model_validat
 from logicenveval.llm import meaning
 from logicenveval.llm.meaning import MeaningError
 from logicenveval.llm.structured import Conjunction, Goal, LiteralDraft, to_text
-from logicenveval.llm.vocab import AT_LEAST, CONTEXT_KEY, COUNT, OTHERS, Vocab
+from logicenveval.llm.vocab import AT_LEAST, CONTEXT_KEY, COUNT, KEYS, OTHERS, Vocab
 from logicenveval.model.repeats import repeated
 
 _F = ConfigDict(frozen=True, extra="ignore")
@@ -185,6 +185,78 @@ class ObjectsReply(BaseModel):
             raise ValueError(f"object ids must be unique; repeated: {twice}")
         bound = bind_objects(list(self.objects), info)
         return self if bound == list(self.objects) else self.model_copy(update={"objects": bound})
+
+
+class RoleObjectWire(BaseModel):
+    """The object of one role (its id and role are the role's name)."""
+
+    model_config = _F
+    category: Annotated[str, Vocab("categories")] = Field(description="a catalog category name")
+    room: Annotated[str, Vocab("rooms")]
+    placement: Annotated[str, Vocab("placements")] = Field(
+        description="'floor', 'wall', 'ceiling', 'on:<object id>' or 'inside:<object id>'")
+    attributes: dict[str, str] = Field(default_factory=dict)
+    states: dict[str, bool] = Field(default_factory=dict)
+
+
+class OtherObjectWire(BaseModel):
+    """An object that plays no role: furniture that holds the role objects, or enrichment."""
+
+    model_config = _F
+    id: Annotated[str, Vocab("object_ids")] = Field(description="unique object id, e.g. 'sofa_1'")
+    category: Annotated[str, Vocab("categories")] = Field(description="a catalog category name")
+    room: Annotated[str, Vocab("rooms")]
+    placement: Annotated[str, Vocab("placements")] = Field(
+        description="'floor', 'wall', 'ceiling', 'on:<object id>' or 'inside:<object id>'")
+    attributes: dict[str, str] = Field(default_factory=dict)
+    states: dict[str, bool] = Field(default_factory=dict)
+
+
+#: objects besides the roles' in one selection reply (protocol 3): the offline model's largest
+#: selection over all 25 tasks has 11 (lamp_or_pillow_fetch, `benchmarks/reply_bounds.py`), times
+#: 1.5 as every measured bound; a looping reply ends here
+MAX_OTHER_OBJECTS = 17
+
+
+# The objects of a scene from protocol 3 on. A list of objects with an optional `role` let
+# Qwen2.5-Coder-1.5B repeat one object eight times and leave roles out; keyed by role (grammar:
+# one required property per role the situation requires, `KEYS`), every role is written once and
+# a loop ends at `MAX_OTHER_OBJECTS`. The docstring is the schema's description, sent.
+class SelectionWire(BaseModel):
+    """The objects of the scene: one per required role, keyed by the role, then the others."""
+
+    model_config = _F
+    role_objects: dict[str, RoleObjectWire] = Field(
+        description="one object per required role, keyed by the role's name (its object id)",
+        json_schema_extra={KEYS: "required_roles"})
+    other_objects: list[OtherObjectWire] = Field(
+        max_length=MAX_OTHER_OBJECTS,
+        description="furniture that holds the role objects and objects typical of each room")
+
+    @model_validator(mode="after")
+    def _checked(self, info: ValidationInfo) -> SelectionWire:
+        vocabulary = (info.context or {}).get(CONTEXT_KEY) or {}
+        roles = vocabulary.get("roles")
+        unknown = [r for r in self.role_objects if isinstance(roles, list) and r not in roles]
+        if unknown:
+            raise ValueError(f"role_objects keys {unknown} are not roles of the task: use {roles}")
+        ids = [*self.role_objects, *(o.id for o in self.other_objects)]
+        twice = repeated(ids)
+        if twice:
+            raise ValueError(f"object ids must be unique (a role object's id is its role); repeated: {twice}")
+        if meaning.enabled(info.context):
+            problem = meaning.placement_problem([(o.id, o.placement) for o in self.draft().objects])
+            if problem:
+                raise MeaningError(problem)
+            missing = [r for r in vocabulary.get("required_roles") or [] if r not in self.role_objects]
+            if missing:
+                raise MeaningError(f"role(s) {missing} have no object: add each under role_objects")
+        return self
+
+    def draft(self) -> ObjectsReply:
+        roles = [ObjectDraft(id=role, role=role, **o.model_dump()) for role, o in self.role_objects.items()]
+        return ObjectsReply.model_construct(
+            objects=[*roles, *(ObjectDraft(**o.model_dump()) for o in self.other_objects)])
 
 
 class RelationDraft(BaseModel):
