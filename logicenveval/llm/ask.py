@@ -12,7 +12,7 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Any, TypeVar
 
-from jinja2 import Environment, PackageLoader, StrictUndefined, TemplateNotFound
+from jinja2 import Environment, PackageLoader, StrictUndefined, Template, TemplateNotFound
 from pydantic import BaseModel, ValidationError
 
 from logicenveval.atomic import atomic_write_text
@@ -20,7 +20,7 @@ from logicenveval.errors import ConfigError, ModelReplyError, ModelTruncatedErro
 from logicenveval.llm.base import ChatModel, ChatRequest, ModelStats, split_truncation
 from logicenveval.llm.jsonextract import JSONExtractionError, extract_json
 from logicenveval.llm.meaning import MEANING_KEY, meaningless
-from logicenveval.llm.vocab import CONTEXT_KEY, Vocabulary, specialise
+from logicenveval.llm.vocab import CONTEXT_KEY, Pattern, Vocabulary, specialise
 from logicenveval.redact import redact
 from logicenveval.validation import first_error
 
@@ -71,6 +71,23 @@ def reply_schema(reply_model: type[BaseModel]) -> dict[str, Any]:
     return schema
 
 
+VocabularyKey = tuple[tuple[str, "tuple[str, ...] | Pattern"], ...]
+
+
+def _vocabulary_key(vocabulary: Vocabulary | None) -> VocabularyKey:
+    return tuple((name, words if isinstance(words, Pattern) else tuple(words))
+                 for name, words in sorted((vocabulary or {}).items()))
+
+
+@lru_cache(maxsize=512)
+def _specialised(reply_model: type[BaseModel], vocabulary: VocabularyKey, bounds: bool) -> tuple[dict[str, Any], str]:
+    """The schema of a reply class specialised to a vocabulary, and its compact JSON text, built
+    once per (class, vocabulary): a unit asks many questions over the same words (every
+    `tree_step` of a task, every scene of a floor plan). Shared: read it, never change it."""
+    schema = specialise(reply_schema(reply_model), dict(vocabulary), bounds=bounds)
+    return schema, json.dumps(schema, separators=(",", ":"))
+
+
 def _without_titles(node: Any) -> Any:
     """The schema without pydantic's `title` keys: they repeat the field names, cost prompt
     tokens on every request and constrain nothing (a property *named* `title` is kept)."""
@@ -87,14 +104,23 @@ def render_messages(kind: str, payload: dict[str, Any], schema: dict[str, Any],
                     protocol: int = PROTOCOL) -> list[dict[str, str]]:
     """System + user messages of a request kind from `prompts/<kind>.j2`; from protocol 2 on the
     system message ends with `_reply_format.j2` (compact JSON: layout must not spend the bound)."""
+    return _render(kind, payload, json.dumps(schema, separators=(",", ":")), protocol)
+
+
+@lru_cache(maxsize=64)
+def _template(kind: str) -> Template:
+    """A request kind's prompt template, looked up once (jinja's own cache costs a lock and a
+    key per request)."""
     try:
-        template = _jinja().get_template(f"{kind}.j2")
+        return _jinja().get_template(f"{kind}.j2")
     except TemplateNotFound:
         raise ConfigError(f"no prompt template for request kind {kind!r}",
                           file=f"logicenveval/llm/prompts/{kind}.j2",
                           hint="add the template or use an existing kind") from None
-    text = template.render(payload=payload, schema=json.dumps(schema, separators=(",", ":")), json=json,
-                           protocol=protocol)
+
+
+def _render(kind: str, payload: dict[str, Any], schema_text: str, protocol: int) -> list[dict[str, str]]:
+    text = _template(kind).render(payload=payload, schema=schema_text, json=json, protocol=protocol)
     system, _, user = text.partition(_SPLIT)
     if protocol >= 2:
         system = system.strip() + "\n" + _reply_format()
@@ -216,8 +242,8 @@ def ask(
     under `run_dir/llm_errors/`. Counts per kind go to the model's `stats`.
     """
     protocol = protocol_of(model)
-    schema = specialise(reply_schema(reply_model), vocabulary, bounds=protocol >= 2)
-    first = render_messages(kind, payload, schema, protocol)
+    schema, schema_text = _specialised(reply_model, _vocabulary_key(vocabulary), protocol >= 2)
+    first = _render(kind, payload, schema_text, protocol)
     messages = first
     first_bound = max_tokens or bounds_of(kind, protocol, schema)
     bound = first_bound
