@@ -282,7 +282,7 @@ def test_a_keyed_selection_binds_each_role_to_the_object_under_its_name() -> Non
     (_selection(toy="floor", book="on:book"), "placed on:book, on or in itself"),
     (_selection(toy="floor", book="on:shelf_2"), "'shelf_2' is not an object of this reply"),
     ({**_selection(toy="floor", book="floor"), "other_objects": [
-        {"id": "toy", "category": "toy", "room": "living_room", "placement": "floor"}]}, r"repeated: \['toy'\]"),
+        {"id": "toy", "category": "toy", "room": "living_room", "placement": "on:shelf_1"}]}, r"repeated: \['toy'\]"),
     ({"role_objects": {"toy": {"category": "toy", "room": "living_room", "placement": "floor"},
                        "lamp": {"category": "toy", "room": "living_room", "placement": "floor"}},
       "other_objects": []}, r"\['lamp'\] are not roles of the task"),
@@ -314,3 +314,41 @@ def test_the_offline_model_builds_the_same_environments_keyed_or_listed() -> Non
                                 rng=np.random.default_rng(unit_seed(0, "logicenvgen", task.id)))
         envs[protocol] = [e.model_dump_json() for e in make_generator("logicenvgen").generate(task.brief(), ctx).envs]
     assert envs[2] == envs[3] and envs[3]
+
+
+# Qwen2.5-Coder-1.5B's first protocol-3 `select_objects` reply for kitchen_dish_cleanup (recorded
+# in reports/real/qwen2.5-coder-1.5b-instruct-q4_k_m/llm_cache.sqlite)
+QWEN_KEYED = ('{"role_objects":{"cabinet":{"category":"cabinet","room":"kitchen","placement":"on:kitchen_counter",'
+              '"attributes":{"dirty":"true"},"states":{"dirty":true}},"cloth":{"category":"cloth","room":"kitchen",'
+              '"placement":"on:kitchen_counter","attributes":{"dirty":"true"},"states":{"dirty":true}},"counter":'
+              '{"category":"kitchen_counter","room":"kitchen","placement":"on:kitchen_counter","attributes":{"dirty":'
+              '"true"},"states":{"dirty":true}},"dishwasher":{"category":"dishwasher","room":"kitchen","placement":'
+              '"on:kitchen_counter","attributes":{"dirty":"true"},"states":{"dirty":true}},"plate":{"category":"plate",'
+              '"room":"kitchen","placement":"on:kitchen_counter","attributes":{"dirty":"true"},"states":{"dirty":true}},'
+              '"sink":{"category":"sink","room":"kitchen","placement":"on:kitchen_counter","attributes":{"dirty":"true"},'
+              '"states":{"dirty":true}},"sponge":{"category":"sponge","room":"kitchen","placement":"on:kitchen_counter",'
+              '"attributes":{"dirty":"true"},"states":{"dirty":true}}},"other_objects":[{"id":"sink","category":"sink",'
+              '"room":"kitchen","placement":"on:kitchen_counter","attributes":{"dirty":"true"},"states":{"dirty":true}}]}')
+
+
+def test_a_keyed_selection_is_read_where_only_one_reading_exists() -> None:
+    """Qwen listed its `sink` role again under other_objects, field for field, and placed every
+    object `on:kitchen_counter`, the category of its one counter: the repeat is that object,
+    the category names the counter, and what is left to change is said: the counter on itself."""
+    from logicenveval.llm.replies import SelectionWire
+
+    roles = ["cabinet", "cloth", "counter", "dishwasher", "plate", "sink", "sponge"]
+    context = {MEANING_KEY: True, CONTEXT_KEY: {"roles": roles, "required_roles": roles}}
+    with pytest.raises(ValidationError, match="'counter' is placed on:counter, on or in itself"):
+        SelectionWire.model_validate_json(QWEN_KEYED, context=context)
+    fixed = json.loads(QWEN_KEYED)
+    fixed["role_objects"]["counter"]["placement"] = "floor"
+    reply = SelectionWire.model_validate(fixed, context=context).draft()
+    assert [o.id for o in reply.objects] == roles  # the repeated sink is the role's
+    assert {o.id: o.placement for o in reply.objects}["plate"] == "on:counter"
+    fixed["other_objects"][0]["placement"] = "floor"  # a second sink is a second object: refused
+    with pytest.raises(ValidationError, match=r"repeated: \['sink'\]"):
+        SelectionWire.model_validate(fixed, context=context)
+    fixed["other_objects"] = [{"id": "counter_2", "category": "kitchen_counter", "room": "kitchen", "placement": "floor"}]
+    ambiguous = SelectionWire.model_validate(fixed, context={CONTEXT_KEY: {"roles": roles}})
+    assert {o.id: o.placement for o in ambiguous.draft().objects}["plate"] == "on:kitchen_counter"  # two counters

@@ -240,18 +240,45 @@ class SelectionWire(BaseModel):
         unknown = [r for r in self.role_objects if isinstance(roles, list) and r not in roles]
         if unknown:
             raise ValueError(f"role_objects keys {unknown} are not roles of the task: use {roles}")
-        ids = [*self.role_objects, *(o.id for o in self.other_objects)]
+        reply = self._read()
+        ids = [*reply.role_objects, *(o.id for o in reply.other_objects)]
         twice = repeated(ids)
         if twice:
             raise ValueError(f"object ids must be unique (a role object's id is its role); repeated: {twice}")
         if meaning.enabled(info.context):
-            problem = meaning.placement_problem([(o.id, o.placement) for o in self.draft().objects])
+            problem = meaning.placement_problem([(o.id, o.placement) for o in reply.draft().objects])
             if problem:
                 raise MeaningError(problem)
-            missing = [r for r in vocabulary.get("required_roles") or [] if r not in self.role_objects]
+            missing = [r for r in vocabulary.get("required_roles") or [] if r not in reply.role_objects]
             if missing:
                 raise MeaningError(f"role(s) {missing} have no object: add each under role_objects")
-        return self
+        return reply
+
+    def _read(self) -> SelectionWire:
+        """The reply as meant, where only one reading exists: an other object that repeats a
+        role object field for field is that object (Qwen2.5-Coder-1.5B listed its `sink` role
+        again under other_objects), and a placement target that is no object's id but the
+        category of exactly one object names that object (it placed the role objects
+        `on:kitchen_counter`, the category of its one counter, `counter`)."""
+        others = [o for o in self.other_objects if o.id not in self.role_objects
+                  or o.model_dump(exclude={"id"}) != self.role_objects[o.id].model_dump()]
+        objects = [*((r, o.category) for r, o in self.role_objects.items()), *((o.id, o.category) for o in others)]
+        ids = {oid for oid, _ in objects}
+        holders: dict[str, list[str]] = {}
+        for oid, category in objects:
+            holders.setdefault(category, []).append(oid)
+
+        def read(placement: str) -> str:
+            kind, _, target = placement.partition(":")
+            if kind in ("on", "inside") and target not in ids | meaning.SURFACES and len(holders.get(target, [])) == 1:
+                return f"{kind}:{holders[target][0]}"
+            return placement
+
+        role_objects = {r: o.model_copy(update={"placement": read(o.placement)}) for r, o in self.role_objects.items()}
+        other_objects = [o.model_copy(update={"placement": read(o.placement)}) for o in others]
+        if role_objects == self.role_objects and other_objects == self.other_objects:
+            return self
+        return self.model_copy(update={"role_objects": role_objects, "other_objects": other_objects})
 
     def draft(self) -> ObjectsReply:
         roles = [ObjectDraft(id=role, role=role, **o.model_dump()) for role, o in self.role_objects.items()]
