@@ -352,3 +352,56 @@ def test_a_keyed_selection_is_read_where_only_one_reading_exists() -> None:
     fixed["other_objects"] = [{"id": "counter_2", "category": "kitchen_counter", "room": "kitchen", "placement": "floor"}]
     ambiguous = SelectionWire.model_validate(fixed, context={CONTEXT_KEY: {"roles": roles}})
     assert {o.id: o.placement for o in ambiguous.draft().objects}["plate"] == "on:kitchen_counter"  # two counters
+
+
+def _kitchen_selection_schema() -> tuple[dict[str, Any], dict[str, Any]]:
+    from logicenveval.benchmark import load_task
+    from logicenveval.domain.catalog import load_catalog
+    from logicenveval.generators.construction import selection_words
+    from logicenveval.llm.ask import reply_schema
+    from logicenveval.llm.replies import SelectionWire
+    from logicenveval.llm.vocab import specialise
+
+    task, catalog = load_task("kitchen_dish_cleanup"), load_catalog()
+    roles = sorted(task.roles)
+    words = {**scene_vocabulary(task.rooms, roles, catalog.generator_categories()), "required_roles": roles,
+             **selection_words(task.brief(), roles, catalog)}
+    return specialise(reply_schema(SelectionWire), words), words
+
+
+def test_each_role_object_is_of_its_category_and_rests_where_it_can_never_on_itself() -> None:
+    """Qwen2.5-Coder-1.5B's keyed kitchen put every object `on:kitchen_counter` (a category),
+    the counter included, and listed the dishwasher and sink there too: protocol 3's grammar
+    gives each role its own category and the places it may rest, which the validator also checks
+    for servers that do not enforce the schema."""
+    import re
+
+    from logicenveval.llm.grammar import to_gbnf, to_regex
+    from logicenveval.llm.replies import SelectionWire
+
+    schema, words = _kitchen_selection_schema()
+    roles = schema["properties"]["role_objects"]["properties"]
+    assert roles["counter"]["properties"]["category"]["enum"] == ["kitchen_counter"]
+    counter = roles["counter"]["properties"]["placement"]["pattern"]
+    plate = roles["plate"]["properties"]["placement"]["pattern"]
+    assert not re.fullmatch(counter, "on:counter") and re.fullmatch(plate, "on:counter")
+    assert re.fullmatch(plate, "inside:cabinet") and re.fullmatch(plate, "on:side_table_1")
+    assert not re.fullmatch(plate, "on:plate") and not re.fullmatch(plate, "on:kitchen_counter")
+    assert not re.fullmatch(plate, "inside:cloth")  # a cloth is no container
+    assert "RoleObjectWire" not in schema.get("$defs", {})  # every role's copy is inlined
+    grammar = to_regex(schema)  # what llama.cpp is sent (`grammar=compact`) accepts the same
+    assert to_gbnf(schema)
+    qwen = json.loads(QWEN_KEYED)
+    assert not re.fullmatch(grammar, json.dumps(qwen, separators=(",", ":")))
+    context = {MEANING_KEY: True, CONTEXT_KEY: words}
+    with pytest.raises(ValidationError, match=r"role_objects.cabinet.placement\n.*'on:kitchen_counter' is not a valid"):
+        SelectionWire.model_validate(qwen, context=context)
+    for o in qwen["role_objects"].values():
+        o["placement"] = "floor"
+    qwen["other_objects"] = []
+    qwen["role_objects"]["counter"]["placement"] = "on:counter"  # a word of the task, not of the counter's
+    with pytest.raises(ValidationError, match="role_objects.counter: placement 'on:counter' is not allowed"):
+        SelectionWire.model_validate(qwen, context=context)
+    qwen["role_objects"]["counter"]["placement"] = "floor"
+    assert re.fullmatch(grammar, json.dumps(qwen, separators=(",", ":")))
+    assert len(SelectionWire.model_validate(qwen, context=context).draft().objects) == 7

@@ -194,7 +194,7 @@ def task_objects(task: Mapping[str, Any], facts: list[str], catalog: Catalog) ->
         placement = c.placement or "floor"
         room = c.room or task["rooms"][0]
         if placement == NEEDS_SURFACE:
-            extra.setdefault(room, f"side_table_{room}")
+            extra.setdefault(room, f"side_table_{room}_1")
             placement = f"on:{extra[room]}"
         objects.append({"id": role, "category": roles[role]["category"], "room": room, "role": role,
                         "placement": placement, "attributes": c.attributes, "states": c.states,

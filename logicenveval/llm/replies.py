@@ -6,14 +6,15 @@ model must produce, in the condition language of DESIGN.md §3 where conditions 
 
 from __future__ import annotations
 
-from typing import Annotated, Literal, Union
+import re
+from typing import Annotated, Any, Literal, Union
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, model_validator
 
 from logicenveval.llm import meaning
 from logicenveval.llm.meaning import MeaningError
 from logicenveval.llm.structured import Conjunction, Goal, LiteralDraft, to_text
-from logicenveval.llm.vocab import AT_LEAST, CONTEXT_KEY, COUNT, KEYS, OTHERS, Vocab
+from logicenveval.llm.vocab import AT_LEAST, CONTEXT_KEY, COUNT, KEYS, OTHERS, Pattern, Vocab
 from logicenveval.model.repeats import repeated
 
 _F = ConfigDict(frozen=True, extra="ignore")
@@ -218,6 +219,19 @@ class OtherObjectWire(BaseModel):
 MAX_OTHER_OBJECTS = 17
 
 
+def _role_word(vocabulary: dict[str, Any], name: str, role: str, value: str) -> str | None:
+    """Why `value` is not one of `role`'s own words `name@role` (the role's category, where its
+    object may rest), None when it is or the request gives none."""
+    words = vocabulary.get(f"{name}@{role}")
+    if isinstance(words, Pattern):
+        if re.fullmatch(words.regex, value):
+            return None
+        return f"role_objects.{role}: {name[:-1] if name.endswith('s') else name} {value!r} is not allowed (must match {words.regex})"
+    if words and value not in words:
+        return f"role_objects.{role}: {value!r} is not one of {list(words)}"
+    return None
+
+
 # The objects of a scene from protocol 3 on. A list of objects with an optional `role` let
 # Qwen2.5-Coder-1.5B repeat one object eight times and leave roles out; keyed by role (grammar:
 # one required property per role the situation requires, `KEYS`), every role is written once and
@@ -241,6 +255,11 @@ class SelectionWire(BaseModel):
         if unknown:
             raise ValueError(f"role_objects keys {unknown} are not roles of the task: use {roles}")
         reply = self._read()
+        for role, o in reply.role_objects.items():
+            problem = _role_word(vocabulary, "categories", role, o.category) or _role_word(
+                vocabulary, "placements", role, o.placement)
+            if problem:
+                raise ValueError(problem)
         ids = [*reply.role_objects, *(o.id for o in reply.other_objects)]
         twice = repeated(ids)
         if twice:

@@ -14,6 +14,7 @@ strings.
 
 from __future__ import annotations
 
+import json
 import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
@@ -108,14 +109,14 @@ def specialise(schema: dict[str, Any], vocabulary: Vocabulary | None, *, bounds:
     and specialised in one pass over the JSON data
     (`copy.deepcopy` of the schema took most of this per request: ~0.2 s of LogicEnvGen's
     generation per run)."""
-    vocabulary = vocabulary or {}
+    defs = schema.get("$defs") or {}
 
-    def walk(node: Any) -> Any:
+    def walk(node: Any, vocabulary: Vocabulary) -> Any:
         if isinstance(node, list):
-            return [walk(value) for value in node]
+            return [walk(value, vocabulary) for value in node]
         if not isinstance(node, dict):
             return node
-        out = {key: walk(value) for key, value in node.items()}
+        out = {key: walk(value, vocabulary) for key, value in node.items()}
         name = out.get(MARK)
         words = vocabulary.get(name) if isinstance(name, str) else None
         if isinstance(words, Pattern):
@@ -134,7 +135,8 @@ def specialise(schema: dict[str, Any], vocabulary: Vocabulary | None, *, bounds:
         keys = vocabulary.get(keyed) if isinstance(keyed, str) and bounds else None
         if keys is not None and not isinstance(keys, Pattern):
             value = out.pop("additionalProperties", {})
-            out["properties"] = {word: value for word in dict.fromkeys(keys)}
+            out["properties"] = {word: _per_key(node.get("additionalProperties"), word, vocabulary) or value
+                                 for word in dict.fromkeys(keys)}
             out["required"] = list(dict.fromkeys(keys))
             out["additionalProperties"] = False
         least = out.pop(AT_LEAST, None)
@@ -143,8 +145,35 @@ def specialise(schema: dict[str, Any], vocabulary: Vocabulary | None, *, bounds:
             out["minItems"] = max(int(out.get("minItems", 0)), len(set(each)))
         return out
 
-    result: dict[str, Any] = walk(schema)
+    def _per_key(value: Any, word: str, vocabulary: Vocabulary) -> dict[str, Any] | None:
+        """A `KEYS` map's value schema for one key, inlined and specialised with the key's own
+        words (`name@key` entries of the vocabulary); None when the key has none."""
+        own = {name.rpartition("@")[0]: words for name, words in vocabulary.items() if name.endswith(f"@{word}")}
+        ref = value.get("$ref") if isinstance(value, dict) else None
+        if not own or not isinstance(ref, str) or not ref.startswith("#/$defs/"):
+            return None
+        inlined: dict[str, Any] = _bare(walk(defs[ref.removeprefix("#/$defs/")], {**vocabulary, **own}))
+        return inlined
+
+    result: dict[str, Any] = walk(schema, vocabulary or {})
+    if isinstance(result.get("$defs"), dict):  # a def every key inlined is sent no more
+        text = json.dumps({k: v for k, v in result.items() if k != "$defs"}) + json.dumps(
+            [d for d in result["$defs"].values()])
+        result["$defs"] = {k: d for k, d in result["$defs"].items() if f'"#/$defs/{k}"' in text}
+        if not result["$defs"]:
+            del result["$defs"]
     return result
+
+
+def _bare(node: Any) -> Any:
+    """A schema without descriptions and vocabulary marks: what a key's inlined copy sends (its
+    words say it; the shared definition says the rest once)."""
+    if isinstance(node, list):
+        return [_bare(value) for value in node]
+    if not isinstance(node, dict):
+        return node
+    return {key: {name: _bare(sub) for name, sub in value.items()} if key == "properties" else _bare(value)
+            for key, value in node.items() if key not in ("description", MARK)}
 
 
 #: `floor`, `wall`, `ceiling`, `on:<object id>`, `inside:<object id>`
