@@ -405,3 +405,14 @@ def test_each_role_object_is_of_its_category_and_rests_where_it_can_never_on_its
     qwen["role_objects"]["counter"]["placement"] = "floor"
     assert re.fullmatch(grammar, json.dumps(qwen, separators=(",", ":")))
     assert len(SelectionWire.model_validate(qwen, context=context).draft().objects) == 7
+
+
+def test_from_protocol_3_a_re_ask_names_the_finding_without_quoting_the_reply() -> None:
+    """Quoted back, Qwen2.5-Coder-1.5B wrote its invalid keyed selection again, byte for byte."""
+    bad = json.dumps({"subtasks": [{"id": "tidy_toy", "description": "Put the toy in its box.", "roles": ["lamp"]}]})
+    for protocol, quoted in ((2, True), (3, False)):
+        model = Scripted([bad, json.dumps(GOOD_DECOMPOSE)], reply_protocol=protocol)
+        ask(model, "decompose_task", BRIEF, DecomposeWire, vocabulary={"roles": sorted(ROLES), "ids": []})
+        reask = model.requests[1].messages
+        assert any(m["role"] == "assistant" for m in reask) is quoted
+        assert "'lamp' is not one of the roles" in reask[-1]["content"]

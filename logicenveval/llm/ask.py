@@ -210,6 +210,10 @@ def _reask_messages(messages: list[dict[str, str]], raw: str, problem: str,
                 f"Your previous reply was cut off at max_tokens={max_tokens} before its JSON was "
                 "complete. Reply again with a shorter JSON value that satisfies the schema: no "
                 "repetition, short strings."}]
+    if protocol >= 3:  # quoted, Qwen2.5-Coder-1.5B wrote its invalid selection again (2 of 2)
+        return [*messages, {"role": "user", "content": f"Your previous reply was invalid: {problem}. "
+                            "Reply again with only one JSON value that satisfies the schema and "
+                            "changes what this names."}]
     quoted = raw if len(raw) <= QUOTE_CHARS else raw[:QUOTE_CHARS] + " ...(cut)"
     return [*messages, {"role": "assistant", "content": quoted},
             {"role": "user", "content": f"Your reply is invalid: {problem}. Reply again with only "
