@@ -407,12 +407,13 @@ def test_each_role_object_is_of_its_category_and_rests_where_it_can_never_on_its
     assert len(SelectionWire.model_validate(qwen, context=context).draft().objects) == 7
 
 
-def test_from_protocol_3_a_re_ask_names_the_finding_without_quoting_the_reply() -> None:
-    """Quoted back, Qwen2.5-Coder-1.5B wrote its invalid keyed selection again, byte for byte."""
+def test_a_re_ask_may_name_the_finding_without_quoting_the_reply() -> None:
+    """Quoted back, Qwen2.5-Coder-1.5B wrote its invalid keyed selection again, byte for byte:
+    protocol 3's selection is re-asked with the finding alone (`quote=False`)."""
     bad = json.dumps({"subtasks": [{"id": "tidy_toy", "description": "Put the toy in its box.", "roles": ["lamp"]}]})
-    for protocol, quoted in ((2, True), (3, False)):
-        model = Scripted([bad, json.dumps(GOOD_DECOMPOSE)], reply_protocol=protocol)
-        ask(model, "decompose_task", BRIEF, DecomposeWire, vocabulary={"roles": sorted(ROLES), "ids": []})
+    for quote in (True, False):
+        model = Scripted([bad, json.dumps(GOOD_DECOMPOSE)], reply_protocol=3)
+        ask(model, "decompose_task", BRIEF, DecomposeWire, vocabulary={"roles": sorted(ROLES), "ids": []}, quote=quote)
         reask = model.requests[1].messages
-        assert any(m["role"] == "assistant" for m in reask) is quoted
+        assert any(m["role"] == "assistant" for m in reask) is quote
         assert "'lamp' is not one of the roles" in reask[-1]["content"]

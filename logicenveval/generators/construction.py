@@ -171,8 +171,9 @@ class EnvironmentBuilder:
             vocabulary = {**self._vocabulary([r["id"] for r in rooms]), "required_roles": required}
             if protocol_of(self.ctx.model) >= 3:
                 vocabulary.update(selection_words(self.brief, required, self.ctx.catalog))
+                # quoted back, Qwen2.5-Coder-1.5B wrote its invalid selection again (2 of 2)
                 reply = ask(self.ctx.model, "select_objects", payload, SelectionWire, seed=self.ctx.seed,
-                            vocabulary=vocabulary).draft()
+                            vocabulary=vocabulary, quote=False).draft()
             else:
                 reply = ask(self.ctx.model, "select_objects", payload, ObjectsReply, seed=self.ctx.seed,
                             vocabulary=vocabulary)

@@ -197,9 +197,9 @@ def grown_bound(bound: int, first: int) -> int:
 
 def _reask_messages(messages: list[dict[str, str]], raw: str, problem: str,
                     truncated: bool, max_tokens: int | None,
-                    protocol: int = PROTOCOL, grown: int | None = None) -> list[dict[str, str]]:
+                    protocol: int = PROTOCOL, grown: int | None = None, quote: bool = True) -> list[dict[str, str]]:
     """The first request plus one exchange about the last invalid reply (the prompt never grows
-    with the number of attempts)."""
+    with the number of attempts); `quote=False` names the finding without quoting the reply."""
     if truncated and protocol >= 2:
         return [*messages, {"role": "user", "content":
                 f"Your previous reply was cut off at max_tokens={max_tokens} before its JSON was "
@@ -210,7 +210,7 @@ def _reask_messages(messages: list[dict[str, str]], raw: str, problem: str,
                 f"Your previous reply was cut off at max_tokens={max_tokens} before its JSON was "
                 "complete. Reply again with a shorter JSON value that satisfies the schema: no "
                 "repetition, short strings."}]
-    if protocol >= 3:  # quoted, Qwen2.5-Coder-1.5B wrote its invalid selection again (2 of 2)
+    if not quote:
         return [*messages, {"role": "user", "content": f"Your previous reply was invalid: {problem}. "
                             "Reply again with only one JSON value that satisfies the schema and "
                             "changes what this names."}]
@@ -232,6 +232,7 @@ def ask(
     run_dir: Path | None = None,
     vocabulary: Vocabulary | None = None,
     max_tokens: int | None = None,
+    quote: bool = True,
 ) -> T:
     """Ask `model` a `kind` question and return the validated reply.
 
@@ -241,7 +242,7 @@ def ask(
     each time with the validator's message and a higher temperature and another seed, so no
     attempt repeats an identical request; from protocol 2 on (`PROTOCOL`) a cut reply is re-asked
     with a larger bound (`grown_bound`) and meaning checks (`llm.meaning`) run as part of
-    validation; then `ModelReplyError` (`ModelTruncatedError` when the
+    validation; a re-ask quotes the invalid reply unless `quote=False`; then `ModelReplyError` (`ModelTruncatedError` when the
     last reply was cut) names the kind, the model and the problem, and the raw replies are saved
     under `run_dir/llm_errors/`. Counts per kind go to the model's `stats`.
     """
@@ -291,7 +292,7 @@ def ask(
             if stats is not None:
                 stats.add(reasks=1)
             grown = grown_bound(bound, first_bound) if truncated and protocol >= 2 else bound
-            messages = _reask_messages(first, raw, problem, truncated, bound, protocol, grown)
+            messages = _reask_messages(first, raw, problem, truncated, bound, protocol, grown, quote)
             bound = grown
     if stats is not None and protocol >= 2:
         stats.count(kind, answered=1)  # a question is answered once its attempts are spent
