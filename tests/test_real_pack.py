@@ -49,15 +49,16 @@ def test_replaying_a_stability_seed_run_reproduces_it(results: Path, tmp_path: P
 
 def test_a_pack_replays_with_the_protocol_it_was_recorded_with() -> None:
     """Packs recorded before issue 39 name no protocol and replay with protocol 1 (their request
-    texts); a pack recorded with `--model-args ...,protocol=2` replays with protocol 2."""
+    texts); a pack recorded with `--model-args ...,protocol=N` replays with protocol N."""
     from llm_validity import pack_protocol
 
     assert pack_protocol({"model_args": "threads=1,parallel=2"}) == 1
     assert pack_protocol({"model_args": "threads=2,ctx=20480,protocol=2"}) == 2
+    assert pack_protocol({"model_args": "threads=1,parallel=3,ctx=20480,protocol=3"}) == 3
     recorded = {pack.name: pack_protocol(json.loads((pack / "config.json").read_text(encoding="utf-8")))
                 for pack in PACKS}
     assert recorded.get("SmolLM2-135M-Instruct.Q4_1", 1) == 1  # recorded before issue 39
-    assert recorded.get("qwen2.5-coder-1.5b-instruct-q4_k_m", 2) == 2  # recorded with protocol=2
+    assert recorded.get("qwen2.5-coder-1.5b-instruct-q4_k_m", 3) == 3  # recorded with protocol=3
 
 
 @pytest.mark.skipif(not SEED_RUNS, reason="no stability seed runs committed under reports/real/stability/")
