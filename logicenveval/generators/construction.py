@@ -207,6 +207,8 @@ class EnvironmentBuilder:
 
         payload_objects = [o.model_dump() for o in objects]
         vocab = self._vocabulary(sorted({o.room for o in objects}), [o.id for o in objects])
+        if protocol_of(self.ctx.model) >= 3:  # at most one relation per object: a looping reply ends
+            vocab["relation_slots"] = [o.id for o in objects]
         reply = ask(self.ctx.model, "spatial_relations", self._payload(objects=payload_objects, feedback=[]),
                     RelationsReply, seed=self.ctx.seed, vocabulary=vocab)
         relations = list(reply.relations)

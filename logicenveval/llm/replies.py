@@ -14,7 +14,16 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, model_validat
 from logicenveval.llm import meaning
 from logicenveval.llm.meaning import MeaningError
 from logicenveval.llm.structured import Conjunction, Goal, LiteralDraft, to_text
-from logicenveval.llm.vocab import AT_LEAST, CONTEXT_KEY, COUNT, KEYS, OTHERS, Pattern, Vocab
+from logicenveval.llm.vocab import (
+    AT_LEAST,
+    AT_MOST,
+    CONTEXT_KEY,
+    COUNT,
+    KEYS,
+    OTHERS,
+    Pattern,
+    Vocab,
+)
 from logicenveval.model.repeats import repeated
 
 _F = ConfigDict(frozen=True, extra="ignore")
@@ -327,7 +336,27 @@ class RelationDraft(BaseModel):
 
 class RelationsReply(BaseModel):
     model_config = _F
-    relations: list[RelationDraft] = Field(default_factory=list, max_length=80)
+    relations: list[RelationDraft] = Field(default_factory=list, max_length=80,
+                                           json_schema_extra={AT_MOST: "relation_slots"})
+
+    @model_validator(mode="after")
+    def _meaningful(self, info: ValidationInfo) -> RelationsReply:
+        """No relation of an object with itself (Qwen2.5-Coder-1.5B wrote `on(table, table)` and
+        then `on(medicine_cabinet, medicine_cabinet)` until its bound); a relation written twice
+        is one relation."""
+        if not meaning.enabled(info.context):
+            return self
+        for r in self.relations:
+            if len(r.args) == 2 and r.args[0] == r.args[1]:
+                raise MeaningError(f"relation {r.type}({r.args[0]}, {r.args[1]}) relates {r.args[0]!r} "
+                                   "to itself; name two different objects")
+        seen: set[tuple[str, tuple[str, ...]]] = set()
+        kept = []
+        for r in self.relations:
+            if (r.type, tuple(r.args)) not in seen:
+                seen.add((r.type, tuple(r.args)))
+                kept.append(r)
+        return self if len(kept) == len(self.relations) else self.model_copy(update={"relations": kept})
 
 
 class PlacedObject(ObjectDraft):

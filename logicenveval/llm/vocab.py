@@ -42,6 +42,11 @@ AT_LEAST = "x-at-least"
 #: per word, so a grammar writes each key once and none other. Removed from the schema sent;
 #: a bound like `OTHERS` (`specialise(..., bounds=True)`); without it the map is open
 KEYS = "x-keys"
+#: JSON-schema key of a list of at most one item per word of a vocabulary that only some requests
+#: give (`maxItems`; the relations of a scene: at most one per object, from protocol 3 on, whose
+#: requests give `relation_slots`). Removed from the schema sent, so a request without the
+#: vocabulary sends the schema it always did
+AT_MOST = "x-at-most"
 #: validation-context key under which `ask` passes the vocabulary
 CONTEXT_KEY = "vocabulary"
 
@@ -139,6 +144,10 @@ def specialise(schema: dict[str, Any], vocabulary: Vocabulary | None, *, bounds:
                                  for word in dict.fromkeys(keys)}
             out["required"] = list(dict.fromkeys(keys))
             out["additionalProperties"] = False
+        most = out.pop(AT_MOST, None)
+        slots = vocabulary.get(most) if isinstance(most, str) else None
+        if slots and not isinstance(slots, Pattern):
+            out["maxItems"] = min(int(out.get("maxItems", len(slots))), len(slots))
         least = out.pop(AT_LEAST, None)
         each = vocabulary.get(least) if isinstance(least, str) and bounds else None
         if each and not isinstance(each, Pattern):
