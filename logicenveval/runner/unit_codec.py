@@ -13,6 +13,7 @@ lines; rows `[tick, node, path number, status(, ports)]` without `trace_steps`; 
 
 from __future__ import annotations
 
+import contextlib
 import re
 from typing import Any
 
@@ -136,10 +137,8 @@ def _killed_as_numbers(payload: dict[str, Any]) -> list[Any]:
     for sample in payload.get("samples") or []:
         killed = sample.get("killed_mutants") if isinstance(sample, dict) else None
         if killed and isinstance(killed, list):
-            try:  # ids only (a number, or anything unhashable, names no mutant)
+            with contextlib.suppress(KeyError, TypeError):  # a number or a list names no mutant
                 sample = {**sample, "killed_mutants": [number[m] for m in killed]}
-            except (KeyError, TypeError):
-                pass
         out.append(sample)
     return out
 
