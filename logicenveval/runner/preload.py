@@ -9,6 +9,7 @@ import importlib
 import sys
 
 import logicenveval.llm.registry  # noqa: F401
+import logicenveval.logic.reference  # noqa: F401  (a unit's figures: JI's closest cover)
 import logicenveval.physics.render  # noqa: F401
 import logicenveval.runner.evaluation  # noqa: F401
 import logicenveval.runner.unit  # noqa: F401
