@@ -79,7 +79,7 @@ def run(args: argparse.Namespace) -> int:
     from logicenveval.runner.executors import prestart
 
     if not args.debug:
-        prestart(args.executor, args.workers)
+        prestart(args.executor, args.workers, preload=("logicenveval.reporting.unit_page",))
     from logicenveval.runner.config import RunConfig
     from logicenveval.runner.run import run as run_benchmark
 
