@@ -76,10 +76,11 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from logicenveval.commands.run_start import PAGE_MODULES
     from logicenveval.runner.executors import prestart
 
-    if not args.debug:
-        prestart(args.executor, args.workers, preload=("logicenveval.reporting.unit_page",))
+    if not args.debug:  # started already by `cli.main` (`run_start`) unless that read nothing
+        prestart(args.executor, args.workers, preload=PAGE_MODULES)
     from logicenveval.runner.config import RunConfig
     from logicenveval.runner.run import run as run_benchmark
 
