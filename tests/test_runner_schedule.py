@@ -86,3 +86,20 @@ def test_a_worker_reads_a_task_once_and_again_after_an_edit(tmp_path: Path) -> N
     assert edited is not first and edited.description.endswith(" Edited.")
     with pytest.raises(TaskFormatError, match="not a task id"):
         _task("../clean_living_room", str(tmp_path))  # a miss is load_task's, checks included
+
+
+def test_a_unit_takes_the_catalog_its_process_checked_clean(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Two dumps of the catalog per unit were ~0.15 s of a run: the catalog the last check found
+    unchanged is taken as it is; a different catalog object (restored, reloaded) is checked."""
+    from logicenveval.domain.catalog import load_catalog, reload_catalogs
+    from logicenveval.runner import unit
+
+    dumps: list[int] = []
+    real = unit._digest
+    monkeypatch.setattr(unit, "_digest", lambda c: dumps.append(1) or real(c))
+    catalog, changed = unit.shared_catalog()  # after a generator: checked
+    assert not changed and len(dumps) >= 1
+    before = len(dumps)
+    assert unit.unit_catalog() is catalog and len(dumps) == before  # the next unit: no dump
+    reload_catalogs()  # another catalog object: checked again
+    assert unit.unit_catalog() is load_catalog() and len(dumps) == before + 1
