@@ -177,7 +177,7 @@ def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0,
     conditions = set(atomic_conditions(task))
     met = {tuple(c) for s in good for c in s.conditions} & conditions
     realised = {s.trajectory for s in good if s.trajectory is not None}
-    generated = set(reported) if reported and all(_is_trajectory(task, k) for k in reported) else None
+    generated = set(reported) if reported and all(_is_trajectory(task, k, keys) for k in reported) else None
     compared = realised if generated is None else generated
     closest = closest_reference(task, compared)
     valid = [s for s in samples if _is_valid(s)]
@@ -224,10 +224,10 @@ def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0,
     )
 
 
-def _is_trajectory(task: Task, key: str) -> bool:
-    """Is `key` a trajectory key of the task's GT trees (one path per subtask, in order)?"""
+def _is_trajectory(task: Task, key: str, paths: set[str]) -> bool:
+    """Is `key` a trajectory key of the task's GT trees (one path per subtask, in order)?
+    `paths`: the keys of the task's decision paths (`all_path_keys`, worked out once a task)."""
     parts = key.split(" | ")
-    paths = set(all_path_keys(task))
     return len(parts) == len(task.subtasks) and all(
         p in paths and p.split(":", 1)[0] == st.id for p, st in zip(parts, task.subtasks, strict=True))
 
