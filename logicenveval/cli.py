@@ -68,8 +68,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     except LogicEnvEvalError as exc:
         print(f"error: {redact(str(exc))}", file=sys.stderr)
         return exc.exit_code
+    given = list(argv) if argv is not None else sys.argv[1:]
+    from logicenveval.commands.run_start import start_early
+
+    start_early(given)  # `run`'s workers start importing while the parser below is built
     parser = build_parser()
-    args = parser.parse_args(list(argv) if argv is not None else None)
+    args = parser.parse_args(given)
     if getattr(args, "debug", False):  # every exception with its traceback, for a debugger
         try:
             debug_code: int = args._run(args)

@@ -65,3 +65,24 @@ def test_prestart_starts_the_fork_server_only_for_several_process_workers(
             "print(f._forkserver._forkserver_pid is not None)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True, timeout=120)
     assert out.stdout.strip() == str(started)
+
+
+@pytest.mark.parametrize(("argv", "started"), [
+    (["run", "--workers", "2"], True),
+    (["run", "--workers", "2", "--tasks", "clean_living_room"], True),
+    (["run", "--workers", "1"], False),
+    (["run", "--workers", "2", "--executor", "inprocess"], False),
+    (["run", "--workers", "2", "--debug"], False),
+    (["run", "--workers", "2", "--help"], False),
+    (["run", "--workers", "two"], False),
+    (["report", "--workers", "2"], False),
+])
+def test_run_starts_its_fork_server_before_the_full_parser(argv: list[str], started: bool) -> None:
+    """`cli.main` starts `run`'s fork server from the few options that decide it, before the
+    parser imports every command; anything it cannot read starts nothing (the parser says why)."""
+    code = ("import sys, multiprocessing.forkserver as f\n"
+            "from logicenveval.commands.run_start import start_early\n"
+            f"said = start_early({argv!r})\n"
+            "print(said, f._forkserver._forkserver_pid is not None, 'logicenveval.commands.run' in sys.modules)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True, timeout=120)
+    assert out.stdout.split() == [str(started), str(started), "False"]

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 from logicenveval.runner.schedule import hand_offs, unit_cost
 from logicenveval.runner.unit import UnitSpec
 
@@ -63,3 +65,41 @@ def test_a_worker_parses_a_bt_once_and_again_after_an_edit(tmp_path: Path) -> No
     assert _policy(load, path) == _policy(load, path) == "one" and calls == ["one"]
     path.write_text("two, longer")
     assert _policy(load, path) == "two, longer" and calls == ["one", "two, longer"]
+
+
+def test_a_worker_reads_a_task_once_and_again_after_an_edit(tmp_path: Path) -> None:
+    import json
+    import shutil
+
+    from logicenveval.benchmark import tasks_dir
+    from logicenveval.errors import TaskFormatError
+    from logicenveval.runner.unit import _task
+
+    shutil.copytree(tasks_dir() / "clean_living_room", tmp_path / "clean_living_room")
+    first = _task("clean_living_room", str(tmp_path))
+    assert _task("clean_living_room", str(tmp_path)) is first  # units and figures share one parse
+    path = tmp_path / "clean_living_room" / "task.json"
+    data = json.loads(path.read_text())
+    data["description"] += " Edited."
+    path.write_text(json.dumps(data))
+    edited = _task("clean_living_room", str(tmp_path))
+    assert edited is not first and edited.description.endswith(" Edited.")
+    with pytest.raises(TaskFormatError, match="not a task id"):
+        _task("../clean_living_room", str(tmp_path))  # a miss is load_task's, checks included
+
+
+def test_a_unit_takes_the_catalog_its_process_checked_clean(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Two dumps of the catalog per unit were ~0.15 s of a run: the catalog the last check found
+    unchanged is taken as it is; a different catalog object (restored, reloaded) is checked."""
+    from logicenveval.domain.catalog import load_catalog, reload_catalogs
+    from logicenveval.runner import unit
+
+    dumps: list[int] = []
+    real = unit._digest
+    monkeypatch.setattr(unit, "_digest", lambda c: dumps.append(1) or real(c))
+    catalog, changed = unit.shared_catalog()  # after a generator: checked
+    assert not changed and len(dumps) >= 1
+    before = len(dumps)
+    assert unit.unit_catalog() is catalog and len(dumps) == before  # the next unit: no dump
+    reload_catalogs()  # another catalog object: checked again
+    assert unit.unit_catalog() is load_catalog() and len(dumps) == before + 1

@@ -76,12 +76,11 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from logicenveval.commands.run_start import PAGE_MODULES
     from logicenveval.runner.executors import prestart
 
-    if not args.debug:
-        prestart(args.executor, args.workers)
-    from logicenveval.reporting.publish import publish
-    from logicenveval.reporting.terminal import path_lines
+    if not args.debug:  # started already by `cli.main` (`run_start`) unless that read nothing
+        prestart(args.executor, args.workers, preload=PAGE_MODULES)
     from logicenveval.runner.config import RunConfig
     from logicenveval.runner.run import run as run_benchmark
 
@@ -120,6 +119,9 @@ def run(args: argparse.Namespace) -> int:
         from logicenveval.runner.seeds import run_seeds
 
         multi = run_seeds(config, args.seeds, show_progress=not args.quiet)
+        from logicenveval.reporting.publish import publish
+        from logicenveval.reporting.terminal import path_lines
+
         if formats:
             from logicenveval.scene.export_files import export_run
 
@@ -139,7 +141,11 @@ def run(args: argparse.Namespace) -> int:
 
     # each unit's report page is written by the worker that ran it (`reporting.unit_page`)
     pages = partial(write_unit_page, run_id=config.resolved_run_id(), model=config.model)
-    outcome = run_benchmark(config, show_progress=not args.quiet, on_commit=pages)
+    outcome = run_benchmark(config, show_progress=not args.quiet, on_commit=pages,
+                            meanwhile=_load_report)
+    from logicenveval.reporting.publish import publish
+    from logicenveval.reporting.terminal import path_lines
+
     if formats:
         from logicenveval.scene.export_files import export_run
 
@@ -152,6 +158,14 @@ def run(args: argparse.Namespace) -> int:
     print_size(outcome.run_dir)
     _say_stale(outcome.stale, outcome.records, args.debug)
     return report_failures(outcome.records)
+
+
+def _load_report() -> None:
+    """What the command needs once the units are done (the leaderboards), imported while they
+    run (`runner.run.run`'s `meanwhile`) instead of before them: the workers wait for this
+    process's set-up, not for its report."""
+    import logicenveval.reporting.publish  # noqa: F401
+    import logicenveval.reporting.terminal  # noqa: F401
 
 
 def _say_stale(stale: dict[str, int], records: Sequence[UnitRecord], debug: bool) -> None:

@@ -20,17 +20,18 @@ from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Mapping, Sequence
-from typing import Any, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
-import pandas as pd
 from pydantic import BaseModel, ConfigDict, Field, computed_field
 
 from logicenveval.errors import MetricsError
-from logicenveval.logic.reference import closest_reference, jaccard, reference_set
 from logicenveval.metrics.records import EnvSample
 from logicenveval.model.repeats import repeated
 from logicenveval.model.task import FAULTY_KINDS, POLICY_KINDS, Task
 from logicenveval.model.tree import all_path_keys, atomic_conditions
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 
 class TaskMetrics(BaseModel):
@@ -168,13 +169,15 @@ def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0,
     `reported`: the trajectory each attempt set out to realise (`Attempt.target`), JI's set when
     every one is a trajectory of the task's GT trees (the paper's generated set), else the
     realised trajectories are."""
+    from logicenveval.logic.reference import closest_reference, jaccard, reference_set
+
     keys = _check_samples(task, samples, n_failed)
     good = [s for s in samples if s.well_formed]
     covered = {k for s in good for k in s.covered_paths}
     conditions = set(atomic_conditions(task))
     met = {tuple(c) for s in good for c in s.conditions} & conditions
     realised = {s.trajectory for s in good if s.trajectory is not None}
-    generated = set(reported) if reported and all(_is_trajectory(task, k) for k in reported) else None
+    generated = set(reported) if reported and all(_is_trajectory(task, k, keys) for k in reported) else None
     compared = realised if generated is None else generated
     closest = closest_reference(task, compared)
     valid = [s for s in samples if _is_valid(s)]
@@ -221,10 +224,10 @@ def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0,
     )
 
 
-def _is_trajectory(task: Task, key: str) -> bool:
-    """Is `key` a trajectory key of the task's GT trees (one path per subtask, in order)?"""
+def _is_trajectory(task: Task, key: str, paths: set[str]) -> bool:
+    """Is `key` a trajectory key of the task's GT trees (one path per subtask, in order)?
+    `paths`: the keys of the task's decision paths (`all_path_keys`, worked out once a task)."""
     parts = key.split(" | ")
-    paths = set(all_path_keys(task))
     return len(parts) == len(task.subtasks) and all(
         p in paths and p.split(":", 1)[0] == st.id for p, st in zip(parts, task.subtasks, strict=True))
 
@@ -240,6 +243,12 @@ def _mutation_score(valid: Sequence[EnvSample], mutants: Mapping[str, str] | Non
     return {"faudr_mut": len(killed) / len(mutants), "faudr_mut_by_class": by_class}
 
 
+def load_aggregation() -> None:
+    """Import what `aggregate` needs (pandas, ~0.4 s): a run does it while its units run, so
+    neither its start, which the workers wait for, nor its end pays for it."""
+    import pandas  # noqa: F401
+
+
 def aggregate(per_task: Sequence[TaskMetrics]) -> GeneratorMetrics:
     """Shares over all attempted environments (PhyPR, SceVR) and means over tasks (the rest)."""
     if not per_task:
@@ -253,6 +262,8 @@ def aggregate(per_task: Sequence[TaskMetrics]) -> GeneratorMetrics:
             field="per_task",
             hint="pass one TaskMetrics per task",
         )
+    import pandas as pd  # here, not at the top: a run's start does not need it (load_aggregation)
+
     df = pd.DataFrame([t.model_dump() for t in per_task])
     for kind in FAULTY_KINDS:
         df[f"faudr_{kind}"] = [t.faudr[kind] for t in per_task]
@@ -287,6 +298,8 @@ def aggregate(per_task: Sequence[TaskMetrics]) -> GeneratorMetrics:
 
 def _mean_present(column: pd.Series) -> float | None:
     """Mean over the tasks that have the figure; None when none has it."""
+    import pandas as pd
+
     values = pd.to_numeric(column, errors="coerce").dropna()
     return float(values.mean()) if len(values) else None
 

@@ -12,10 +12,12 @@ read right.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from pathlib import Path
 from xml.sax.saxutils import escape
 
+import shapely
 from PIL import Image, ImageDraw, ImageFont
 
 from logicenveval.model.envspec import EnvSpec
@@ -50,7 +52,7 @@ def _scene(env: EnvSpec, report: PhysicsReport | None) -> list[_Shape]:
     shapes = [_Shape("room", [(p[0], p[1]) for p in r.polygon], r.id, r.id in bad)
               for r in env.rooms if r.polygon is not None and len(r.polygon) >= 3]
     for body in sorted(build_bodies(env).values(), key=lambda b: (b.top, b.id)):
-        pts = [(float(x), float(z)) for x, z in list(body.footprint.exterior.coords)[:-1]]
+        pts = [(x, z) for x, z in shapely.get_coordinates(body.footprint.exterior)[:-1].tolist()]
         if pts:
             shapes.append(_Shape("object", pts, labels.get(body.id, body.id), body.id in bad))
     shapes += [_Shape("door", [(p[0], p[1]) for p in d.segment], d.id, d.id in bad)
@@ -207,11 +209,13 @@ class _Mark:
     anchor: str = "start"  # start | middle
 
 
-def _legend_marks(v: _View) -> list[_Mark]:
-    """Axes (+x right, +z up), a 1 m scale bar and the colour legend, under the plan."""
-    out = [_Mark("line", ((0, v.plan_height), (v.width, v.plan_height)), stroke="#dddddd")]
-    for i, row in enumerate(v.legend):
-        y = v.plan_height + 8 + _LEGEND_ROW * i + _LEGEND_ROW / 2
+def _legend_marks(width: int, plan_height: int, scale: float,
+                  legend: list[list[tuple[str, str, float]]]) -> list[_Mark]:
+    """Axes (+x right, +z up), a 1 m scale bar and the colour legend, under the plan (a
+    `_View`'s width, plan height, scale and legend rows)."""
+    out = [_Mark("line", ((0, plan_height), (width, plan_height)), stroke="#dddddd")]
+    for i, row in enumerate(legend):
+        y = plan_height + 8 + _LEGEND_ROW * i + _LEGEND_ROW / 2
         for kind, text, x in row:
             if kind == "axes":  # an L: +x to the right, +z up
                 ox, oy = x + 4, y + 7
@@ -222,10 +226,10 @@ def _legend_marks(v: _View) -> list[_Mark]:
                         _Mark("line", ((ox - 3, oy - 11), (ox, oy - 16), (ox + 3, oy - 11)), stroke=_INK),
                         _Mark("text", ((ox + 5, oy - 13),), fill=_INK, text="+z")]
             elif kind == "scale":
-                out += [_Mark("line", ((x, y + 4), (x + v.scale, y + 4)), stroke=_INK, width=2),
+                out += [_Mark("line", ((x, y + 4), (x + scale, y + 4)), stroke=_INK, width=2),
                         _Mark("line", ((x, y), (x, y + 8)), stroke=_INK),
-                        _Mark("line", ((x + v.scale, y), (x + v.scale, y + 8)), stroke=_INK),
-                        _Mark("text", ((x + v.scale / 2, y - 4),), fill=_INK, text=text, anchor="middle")]
+                        _Mark("line", ((x + scale, y), (x + scale, y + 8)), stroke=_INK),
+                        _Mark("text", ((x + scale / 2, y - 4),), fill=_INK, text=text, anchor="middle")]
             else:
                 box = ((x, y - 6), (x + _SWATCH, y + 6))
                 if kind == "failed":
@@ -262,11 +266,13 @@ def render_svg(env: EnvSpec, report: PhysicsReport | None = None) -> str:
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{v.width}" height="{v.height}" '
            f'viewBox="0 0 {v.width} {v.height}" font-family="sans-serif">',
            f'<rect width="{v.width}" height="{v.height}" fill="white"/>']
+    x0, z1, scale, margin = v.x0, v.z1, v.scale, v.margin  # `v.px`, inlined: ~9 points a shape
     for s in shapes:
         fill, stroke, width = _STYLE[s.kind]
         stroke = _RED if s.failed else stroke
         fill = _RED_FILL if s.failed and s.kind == "object" else fill
-        pts = " ".join(f"{x},{y}" for x, y in (v.px(p) for p in s.points))
+        pts = " ".join(f"{round((x - x0) * scale + margin, 2)},{round((z1 - z) * scale + margin, 2)}"
+                       for x, z in s.points)
         if s.kind in ("room", "object"):
             out.append(f'<polygon points="{pts}" fill="{fill}" stroke="{stroke}" stroke-width="{width}"/>')
         else:
@@ -282,9 +288,17 @@ def render_svg(env: EnvSpec, report: PhysicsReport | None = None) -> str:
         out.append(f'<text x="{lb.x}" y="{lb.y}"{size} fill="{lb.color}">{escape(lb.text)}</text>')
     out.append("</g>")
     out.append(f'<g fill="none" stroke="{_INK}" font-size="11" dominant-baseline="middle">')
-    out += [_svg_mark(m) for m in _legend_marks(v)]
+    out.append(_legend_svg(v.width, v.plan_height, v.scale, v.margin))
     out += ["</g>", "</svg>"]
     return "\n".join(out) + "\n"
+
+
+@functools.lru_cache(maxsize=256)
+def _legend_svg(width: int, plan_height: int, scale: float, margin: float) -> str:
+    """The legend band's SVG lines: a function of the picture's size alone, and environments of
+    one task share their size (a run draws ~650 renders)."""
+    marks = _legend_marks(width, plan_height, scale, _legend_rows(width, margin, scale))
+    return "\n".join(_svg_mark(m) for m in marks)
 
 
 def render_png(env: EnvSpec, path: str | Path, report: PhysicsReport | None = None) -> None:
@@ -307,7 +321,7 @@ def render_png(env: EnvSpec, path: str | Path, report: PhysicsReport | None = No
         if label.leader is not None:
             draw.line([label.leader, (label.x, label.y)], fill="#9a9a9a", width=1)
         draw.text((label.x, label.y), label.text, fill=label.color, font=font, anchor="mm")
-    for m in _legend_marks(v):
+    for m in _legend_marks(v.width, v.plan_height, v.scale, v.legend):
         if m.kind == "rect":
             draw.rectangle(m.points, fill=m.fill, outline=m.stroke, width=m.width)
         elif m.kind == "line":

@@ -18,7 +18,7 @@ import re
 from collections.abc import Collection, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, NamedTuple
 
 from markupsafe import Markup
 
@@ -280,8 +280,9 @@ def env_href(assets: Assets, generator: str, task: str, env_id: str) -> str | No
     return assets.place(path, None if assets.in_place else _read(path, _MAX_ENV_BYTES))
 
 
-@dataclass(frozen=True)
-class TickRow:
+class TickRow(NamedTuple):
+    """One row of a tick table (a tuple: a page has ~500 of them, made per line)."""
+
     tick: str
     node: str
     status: str
@@ -299,6 +300,24 @@ def _with_ports(node: str, ports: str | None) -> str:
     return f"{node} {ports}" if ports else node
 
 
+#: lines of the common form already matched in this process: the four BTs of an environment,
+#: and environments of one situation, repeat most of their lines (bounded: `_plain` clears it)
+_PLAIN: dict[str, tuple[str, str, str, str, str | None] | None] = {}
+
+
+def _plain(line: str) -> tuple[str, str, str, str, str | None] | None:
+    """(tick, node, path, status, ports) of a line of the common form, else None."""
+    try:
+        return _PLAIN[line]
+    except KeyError:
+        pass
+    if len(_PLAIN) >= 200_000:
+        _PLAIN.clear()
+    m = _TRACE_LINE.fullmatch(line.strip())
+    got = _PLAIN[line] = None if m is None else (m[1], m[2], m[3], m[4], m[5])
+    return got
+
+
 def trace_rows(lines: Sequence[str]) -> tuple[list[TickRow], list[str]]:
     """Tick-table rows of a recorded trace, and the lines that are not tick entries (kept as text).
 
@@ -310,13 +329,14 @@ def trace_rows(lines: Sequence[str]) -> tuple[list[TickRow], list[str]]:
     other: list[str] = []
     ports: dict[str, str] = {}
     for line in lines:
-        text = line.strip()
-        plain = _TRACE_LINE.fullmatch(text)
+        plain = _plain(line)
         if plain is not None:
-            if plain[5]:
-                ports[plain[3]] = plain[5]
-            rows.append(TickRow(plain[1], _with_ports(plain[2], ports.get(plain[3])), plain[4], plain[3]))
+            tick, node, path, status, own = plain
+            if own:
+                ports[path] = own
+            rows.append(TickRow(tick, _with_ports(node, ports.get(path)), status, path))
             continue
+        text = line.strip()
         entry: object = None
         if text.startswith("{") and len(text) <= _MAX_TRACE_LINE:
             try:
@@ -353,6 +373,8 @@ def tick_data(envs: Sequence[EnvView]) -> TickData:
 
     paths = PathTable()
     steps: dict[tuple[str, str, int], int] = {}
+    #: (node, status, path) -> its step: a path is numbered where its first step is
+    step_of: dict[tuple[str, str, str], int] = {}
     traces: list[list[int | str]] = []
     at: list[list[int | None]] = []
     for e in envs:
@@ -362,9 +384,12 @@ def tick_data(envs: Sequence[EnvView]) -> TickData:
                 numbers.append(None)
                 continue
             flat: list[int | str] = []
-            for r in v.rows:
-                key = (r.node, r.status, paths.number(r.path))
-                flat += (int(r.tick) if r.tick.isdigit() else r.tick, steps.setdefault(key, len(steps)))
+            for tick, node, status, path in v.rows:
+                step = step_of.get((node, status, path))
+                if step is None:
+                    step = step_of[(node, status, path)] = steps.setdefault(
+                        (node, status, paths.number(path)), len(steps))
+                flat += (int(tick) if tick.isdigit() else tick, step)
             numbers.append(len(traces))
             traces.append(flat)
         at.append(numbers)

@@ -172,10 +172,11 @@ def _index_row(row: TaskRow, not_measured: set[str]) -> IndexRow:
 
 def write_details(out: Path, srcs: Sequence[Source], generators: Sequence[str],
                   env: Environment, *, paged: Collection[tuple[str, str]] = (),
-                  shared: bool = True) -> Collected:
+                  shared: bool = True, index: bool = True) -> Collected:
     """Write every (generator, task) page of `srcs` under `out/details/`, but those in `paged`
     (written where their unit was computed: `unit_page`); return the index. `shared`: also the
-    style and script every page links."""
+    style and script every page links. `index=False`: the pages only, the index left empty (a
+    worker writing its unit's page: the run's process makes the index)."""
     from logicenveval.reporting.details import Assets, task_rows
 
     got = Collected([], [], {}, {}, set())
@@ -199,6 +200,8 @@ def write_details(out: Path, srcs: Sequence[Source], generators: Sequence[str],
                     run_id=results.get("run_id", ""), model=results.get("model", ""),
                     measured=row.task not in not_measured and is_measured(values))
                 atomic_write_text(path, html, durable=False)
+            if not index:
+                continue
             got.rows.append(_index_row(row, not_measured))
             for e in row.envs:
                 key = (row.generator, row.task, e.env_id, source.seed)

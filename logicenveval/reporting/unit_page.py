@@ -41,4 +41,4 @@ def write_unit_page(spec: UnitSpec, record: UnitRecord, metrics: TaskMetrics | N
     run_dir = Path(spec.run_dir)
     source = Source(run_dir, unit_results(record, metrics, run_id, model),
                     records={(record.generator, record.task_id): record})
-    write_details(run_dir, [source], [record.generator], jinja(), shared=False)
+    write_details(run_dir, [source], [record.generator], jinja(), shared=False, index=False)

@@ -64,6 +64,9 @@ class InProcessExecutor:
 
 #: imported once in the fork server, so that every worker starts with them loaded
 PRELOAD: tuple[str, ...] = ("logicenveval.runner.preload",)
+#: modules of higher layers the fork server imports too (`prestart`'s `preload`: the command
+#: layer's report page, which every unit's `on_commit` hook writes)
+_MORE_PRELOAD: list[str] = []
 #: exit status of a worker whose unit ignored its time bound (`runner.unit`'s watchdog)
 EXIT_TIMED_OUT = 86
 
@@ -77,7 +80,7 @@ def _context() -> multiprocessing.context.BaseContext:
     """
     if "forkserver" in multiprocessing.get_all_start_methods():
         ctx = multiprocessing.get_context("forkserver")
-        ctx.set_forkserver_preload(list(PRELOAD))
+        ctx.set_forkserver_preload([*PRELOAD, *_MORE_PRELOAD])
         return ctx
     return multiprocessing.get_context("spawn")
 
@@ -437,12 +440,15 @@ _EXECUTORS: dict[str, str] = {
 }
 
 
-def prestart(name: str, workers: int) -> None:
+def prestart(name: str, workers: int, preload: Sequence[str] = ()) -> None:
     """Start the fork server of a `process` executor with several workers at once, before the
     caller imports the run's own modules: the two import in parallel (about 1 s of a 2-worker
     run's wall on 2 cores, when the fork server was started only once the run was set up). A
     later executor reuses the running server; one unneeded (a run of one unit) costs nothing
-    but a background process that ends with the caller."""
+    but a background process that ends with the caller. `preload`: modules the fork server
+    imports besides `PRELOAD` (what the caller's `on_commit` hook needs), so that each worker
+    does not import them on its first unit."""
+    _MORE_PRELOAD[:] = preload
     if name == "process" and workers > 1:
         ProcessExecutor(workers=workers).warm_up()
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 import contextlib
 import os
 import tempfile
+import threading
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -20,7 +21,7 @@ from logicenveval.benchmark_validation import situation_count
 from logicenveval.errors import ConfigError, RunFailedError
 from logicenveval.generators.plugins import GeneratorRef, NotConstructed, resolve_generator
 from logicenveval.limits import current as current_limits
-from logicenveval.metrics.compute import TaskMetrics
+from logicenveval.metrics.compute import TaskMetrics, load_aggregation
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.model.task import POLICY_KINDS, Task
 from logicenveval.runner.config import RunConfig, selected_tasks
@@ -158,11 +159,16 @@ def _prepare_dir(run_dir: Path) -> None:
 
 
 def run(config: RunConfig, *, console: Console | None = None, show_progress: bool = True,
-        on_commit: Callable[..., None] | None = None) -> RunOutcome:
+        on_commit: Callable[..., None] | None = None,
+        meanwhile: Callable[[], None] | None = None) -> RunOutcome:
     """Run (or resume) the units of `config`; a managed local model (`llamacpp:`) is served by
     one server for the whole run, stopped when the run ends however it ends (llm.llamacpp).
     `on_commit(spec, record, metrics)` runs where each computed unit was committed
-    (`UnitSpec.on_commit`: the command layer writes the unit's report page there)."""
+    (`UnitSpec.on_commit`: the command layer writes the unit's report page there).
+    `meanwhile()` runs in a background thread of this process while the units run, and is
+    awaited before results.json is written: the imports the run's end needs (pandas for the
+    aggregation, here; the report for the command layer) are then no serial work after the
+    units, nor before them, where this process's set-up is what the workers wait for."""
     from logicenveval.llm.llamacpp import serving
 
     limits = current_limits()  # once, before any work: every unit runs under these values
@@ -179,12 +185,13 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
     with serving(config.model, config.model_args,
                  log_path=config.run_dir() / "llama-server.log") as model_args:
         return _run(config, model_args, refs, ids, tasks, limits, console=console,
-                    show_progress=show_progress, on_commit=on_commit)
+                    show_progress=show_progress, on_commit=on_commit, meanwhile=meanwhile)
 
 
 def _run(config: RunConfig, model_args: str, refs: list[GeneratorRef], ids: list[str],
          tasks: list[Task], limits: dict[str, int], *, console: Console | None,
-         show_progress: bool, on_commit: Callable[..., None] | None = None) -> RunOutcome:
+         show_progress: bool, on_commit: Callable[..., None] | None = None,
+         meanwhile: Callable[[], None] | None = None) -> RunOutcome:
     with phases.phase("start-up"):
         executor = make_executor("inprocess" if config.debug else config.executor, config.workers)
         warm_up = getattr(executor, "warm_up", None)
@@ -197,7 +204,7 @@ def _run(config: RunConfig, model_args: str, refs: list[GeneratorRef], ids: list
         store.claim(config.identity())  # held until the run ends: one run per folder at a time
     try:
         return _run_units(config, refs, ids, tasks, run_dir, store, executor, console, show_progress,
-                          model_args, limits, on_commit)
+                          model_args, limits, on_commit, meanwhile)
     finally:
         store.unlock()
 
@@ -225,10 +232,31 @@ def _crashed(chunk: tuple[UnitSpec, ...], why: str) -> list[Committed]:
     return [Committed(r) for r in records]
 
 
+class _Background:
+    """Imports the end of a run needs, done in a thread while the units run (`run`'s
+    `meanwhile`): this process only waits for its workers then. A failure is left to the
+    import that needs the module, which raises it where it is used."""
+
+    def __init__(self, meanwhile: Callable[[], None] | None) -> None:
+        self._meanwhile = meanwhile
+        self._thread = threading.Thread(target=self._work, name="logicenveval-imports", daemon=True)
+        self._thread.start()
+
+    def _work(self) -> None:
+        with contextlib.suppress(Exception):
+            load_aggregation()
+            if self._meanwhile is not None:
+                self._meanwhile()
+
+    def join(self) -> None:
+        self._thread.join()
+
+
 def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], tasks: list[Task],
                run_dir: Path, store: RunStore, executor: Executor, console: Console | None,
                show_progress: bool, model_args: str, limits: dict[str, int],
-               on_commit: Callable[..., None] | None) -> RunOutcome:
+               on_commit: Callable[..., None] | None,
+               meanwhile: Callable[[], None] | None = None) -> RunOutcome:
     store.remove_stale_temp_files()
     specs = [
         UnitSpec(generator=r.name, generator_target=r.target, generator_path=r.search_path, task_id=t,
@@ -290,25 +318,29 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
         chunks = executor.map_unordered(run_units, hand_offs(pending, config.workers),
                                         budget=_budget(config), on_crash=_crashed,
                                         split=lambda chunk: [(s,) for s in chunk])
-        with contextlib.closing(chunks) as finished:  # type: ignore[type-var]  # generators have close()
-            for _, chunk in finished:
-                for done in chunk:
-                    record = done.record
-                    key = (record.generator, record.task_id)
-                    records[key] = record
-                    if done.metrics is not None:
-                        computed[key] = done.metrics
-                    if done.paged:
-                        paged.add(key)
-                    progress.advance(bars[record.generator])
-                    streak = streak + 1 if record.error_kind == "infrastructure" else 0
-                    if config.max_infra_failures and streak >= config.max_infra_failures:
-                        raise RunFailedError(
-                            f"stopped after {streak} consecutive infrastructure failures; last: "
-                            f"{record.error}", file=str(run_dir),
-                            hint="fix the endpoint or cache, then re-run the same command: "
-                            "finished units are kept and the failed ones are recomputed "
-                            "(--max-infra-failures 0 never stops)")
+        background = _Background(meanwhile)
+        try:
+            with contextlib.closing(chunks) as finished:  # type: ignore[type-var]  # generators have close()
+                for _, chunk in finished:
+                    for done in chunk:
+                        record = done.record
+                        key = (record.generator, record.task_id)
+                        records[key] = record
+                        if done.metrics is not None:
+                            computed[key] = done.metrics
+                        if done.paged:
+                            paged.add(key)
+                        progress.advance(bars[record.generator])
+                        streak = streak + 1 if record.error_kind == "infrastructure" else 0
+                        if config.max_infra_failures and streak >= config.max_infra_failures:
+                            raise RunFailedError(
+                                f"stopped after {streak} consecutive infrastructure failures; last: "
+                                f"{record.error}", file=str(run_dir),
+                                hint="fix the endpoint or cache, then re-run the same command: "
+                                "finished units are kept and the failed ones are recomputed "
+                                "(--max-infra-failures 0 never stops)")
+        finally:  # before the report's imports are needed, or the process ends
+            background.join()
     ordered = [records[(s.generator, s.task_id)] for s in specs]
     with phases.phase("results"):
         results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start,

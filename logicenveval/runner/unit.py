@@ -25,7 +25,7 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from logicenveval import phases
 from logicenveval.atomic import atomic_write_text
-from logicenveval.benchmark import load_task, policy_path
+from logicenveval.benchmark import load_task, policy_path, tasks_dir
 from logicenveval.domain.catalog import DEFAULT_CATALOG, Catalog, load_catalog, reload_catalogs
 from logicenveval.envfiles import env_from_dict, env_to_json
 from logicenveval.errors import (
@@ -53,7 +53,7 @@ from logicenveval.llm.fewshot import FewShotModel
 from logicenveval.metrics.compute import TaskMetrics
 from logicenveval.metrics.records import EnvDetail, EnvSample, UnitRecord
 from logicenveval.model.envspec import EnvSpec
-from logicenveval.model.task import POLICY_KINDS, TaskBrief
+from logicenveval.model.task import POLICY_KINDS, Task, TaskBrief
 from logicenveval.paths import child, name_problem, shown
 from logicenveval.redact import redact
 from logicenveval.runner import executors
@@ -348,10 +348,27 @@ def shared_catalog() -> tuple[Catalog, bool]:
         _BASELINE.append(_digest(Catalog.model_validate_json(DEFAULT_CATALOG.read_text("utf-8"))))
     catalog = load_catalog()
     if _digest(catalog) == _BASELINE[0]:
+        _CHECKED[:] = [catalog]
         return catalog, False
+    _CHECKED.clear()
     _CHANGED.append(catalog)
     reload_catalogs()
     return load_catalog(), True
+
+
+#: the catalog the last check in this process found as its file defines it (`shared_catalog`)
+_CHECKED: list[Catalog] = []
+
+
+def unit_catalog() -> Catalog:
+    """The catalog a unit starts from. Every unit checks the catalog after its generator ran
+    (`shared_catalog`), and between that check and the next unit only the harness runs (judging,
+    the unit's page), which never changes it: so a unit whose process checked this very catalog
+    clean takes it without dumping it again (two dumps per unit were ~0.15 s of a default run);
+    the first unit of a process, or one after a restore, checks it."""
+    if _CHECKED and load_catalog() is _CHECKED[0]:
+        return _CHECKED[0]
+    return shared_catalog()[0]
 
 
 def run_unit(spec: UnitSpec) -> UnitRecord:
@@ -394,8 +411,8 @@ def _run_unit(spec: UnitSpec) -> UnitRecord:
     from logicenveval.sim.loader import load_policy
 
     with phases.phase("tasks"):
-        task = load_task(spec.task_id, spec.tasks_dir)
-        catalog, _ = shared_catalog()
+        task = _task(spec.task_id, spec.tasks_dir)
+        catalog = unit_catalog()
         policies = {k: _policy(load_policy, policy_path(task, k, spec.tasks_dir)) for k in POLICY_KINDS}
     run_dir = Path(spec.run_dir)
     start = time.perf_counter()
@@ -559,7 +576,7 @@ def committed(spec: UnitSpec, record: UnitRecord) -> Committed:
         metrics = None
         if record.measured:  # a unit its figures cannot be worked out of: the run's process
             with phases.phase("results"), contextlib.suppress(Exception):  # tries and says why
-                metrics = unit_metrics(load_task(spec.task_id, spec.tasks_dir), record)
+                metrics = unit_metrics(_task(spec.task_id, spec.tasks_dir), record)
         paged = False
         if spec.on_commit is not None and (metrics is not None or not record.measured):
             with phases.phase("report"), contextlib.suppress(Exception):
@@ -575,6 +592,27 @@ def _write(run_dir: Path, rel: Path, text: str, files: dict[str, str]) -> None:
     with phases.phase("writing"):
         atomic_write_text(run_dir / rel, text, durable=False)
     files[rel.as_posix()] = text_digest(text)
+
+
+#: parsed tasks of this process by (folder, id, inode, size, mtime): a worker reads a task once
+#: for all its units (a task's units travel together, `runner.schedule`) and their figures
+_TASKS: dict[tuple[str | None, str, int, int, int], Task] = {}
+
+
+def _task(task_id: str, directory: str | None) -> Task:
+    """`load_task`, cached while its task.json is unchanged (a miss is always `load_task`'s, so
+    a bad id or file is reported by it, as before)."""
+    try:
+        st = (tasks_dir(directory) / task_id / "task.json").stat()
+    except (OSError, ValueError):
+        return load_task(task_id, directory)
+    key = (directory, task_id, st.st_ino, st.st_size, st.st_mtime_ns)
+    hit = _TASKS.get(key)
+    if hit is None:
+        if len(_TASKS) > 256:
+            _TASKS.clear()
+        hit = _TASKS[key] = load_task(task_id, directory)
+    return hit
 
 
 #: parsed policies of this process by (path, inode, size, mtime): a worker parses a task's four

@@ -13,6 +13,7 @@ lines; rows `[tick, node, path number, status(, ports)]` without `trace_steps`; 
 
 from __future__ import annotations
 
+import contextlib
 import re
 from typing import Any
 
@@ -92,19 +93,19 @@ def encode_unit(payload: dict[str, Any]) -> dict[str, Any]:
     pairs and its samples' killed mutants as numbers."""
     paths = PathTable()
     steps: dict[tuple[str, int, str, tuple[str, ...]], int] = {}
+    #: each distinct line is matched once (a unit's traces repeat most of their lines: the four
+    #: BTs of an environment, environments of one situation); numbering follows first use as before
+    seen: dict[str, Any] = {}
+
+    def first(line: str) -> Any:
+        pair = seen[line] = _pair(line, paths, steps)
+        return pair
+
     details = []
     for detail in payload.get("details") or []:
         traces = {}
         for kind, verdict in (detail.get("traces") or {}).items():
-            lines: list[Any] = []
-            for line in verdict.get("trace") or []:
-                m = _LINE.fullmatch(line)
-                ports = () if m is None or m[5] is None else (m[5],)
-                if m is None or _line(int(m[1]), m[2], m[3], m[4], list(ports)) != line:
-                    lines.append(line)
-                    continue
-                step = (m[2], paths.number(m[3]), m[4], ports)
-                lines.append([int(m[1]), steps.setdefault(step, len(steps))])
+            lines = [seen.get(line) or first(line) for line in verdict.get("trace") or []]
             traces[kind] = {**verdict, "trace": lines}
         details.append({**detail, "traces": traces})
     out = {**payload, "samples": _killed_as_numbers(payload)} if "samples" in payload else payload
@@ -120,13 +121,24 @@ def encode_unit(payload: dict[str, Any]) -> dict[str, Any]:
             STEPS: [[node, at, status, *ports] for node, at, status, ports in steps]}
 
 
+def _pair(line: str, paths: PathTable, steps: dict[tuple[str, int, str, tuple[str, ...]], int]) -> Any:
+    """`[tick, step number]` of a trace line, or the line itself when it has no exact pair form."""
+    m = _LINE.fullmatch(line)
+    ports = () if m is None or m[5] is None else (m[5],)
+    if m is None or _line(int(m[1]), m[2], m[3], m[4], list(ports)) != line:
+        return line
+    step = (m[2], paths.number(m[3]), m[4], ports)
+    return [int(m[1]), steps.setdefault(step, len(steps))]
+
+
 def _killed_as_numbers(payload: dict[str, Any]) -> list[Any]:
     number = {m: i for i, m in enumerate(sorted(payload.get("mutants") or {}))}
     out = []
     for sample in payload.get("samples") or []:
         killed = sample.get("killed_mutants") if isinstance(sample, dict) else None
-        if killed and all(isinstance(m, str) and m in number for m in killed):
-            sample = {**sample, "killed_mutants": [number[m] for m in killed]}
+        if killed and isinstance(killed, list):
+            with contextlib.suppress(KeyError, TypeError):  # a number or a list names no mutant
+                sample = {**sample, "killed_mutants": [number[m] for m in killed]}
         out.append(sample)
     return out
 
