@@ -417,3 +417,28 @@ def test_a_re_ask_may_name_the_finding_without_quoting_the_reply() -> None:
         reask = model.requests[1].messages
         assert any(m["role"] == "assistant" for m in reask) is quote
         assert "'lamp' is not one of the roles" in reask[-1]["content"]
+
+
+def test_relations_are_at_most_one_per_object_and_malformed_ones_go_to_the_checker() -> None:
+    """Qwen2.5-Coder-1.5B's relations: `on(table, table)` among 26, a refinement repeating
+    `on(medicine_cabinet, medicine_cabinet)` until its bound, `center(counter, sink)` with two
+    objects. From protocol 3 on a scene's relations are at most one per object (`x-at-most`), and
+    a relation of an object with itself or of the wrong arity is a finding of the checker (refined,
+    then dropped) instead of refusing the reply; without `relation_slots` the schema is the old one."""
+    from logicenveval.llm.ask import reply_schema
+    from logicenveval.llm.replies import RelationsReply, RelationsWire
+    from logicenveval.llm.vocab import AT_MOST, specialise
+
+    ids = ["table", "toy", "book"]
+    words = scene_vocabulary(["living_room"], sorted(ROLES), list(ROLES.values()), ids)
+    assert specialise(reply_schema(RelationsWire), {**words, "relation_slots": ids})["properties"]["relations"]["maxItems"] == 3
+    old = specialise(reply_schema(RelationsReply), words)["properties"]["relations"]
+    assert old["maxItems"] == 80 and AT_MOST not in old
+    reply = RelationsWire.model_validate({"relations": [
+        {"type": "on", "args": ["toy", "table"]}, {"type": "on", "args": ["table", "table"]},
+        {"type": "center", "args": ["table", "toy"]}, {"type": "on", "args": ["toy", "table"]}]},
+        context={MEANING_KEY: True, CONTEXT_KEY: words})
+    good, bad = reply.split()
+    assert [(r.type, r.args) for r in good] == [("on", ["toy", "table"])]
+    assert [why for _, why in bad] == ["on(table, table) relates table to itself; name two different objects",
+                                       "center(table, toy) takes 1 object id(s), not 2"]

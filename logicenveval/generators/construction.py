@@ -32,6 +32,7 @@ from logicenveval.llm.replies import (
     PlacementReply,
     RelationDraft,
     RelationsReply,
+    RelationsWire,
     SelectionWire,
 )
 from logicenveval.llm.vocab import Pattern, Words, scene_vocabulary
@@ -207,27 +208,31 @@ class EnvironmentBuilder:
 
         payload_objects = [o.model_dump() for o in objects]
         vocab = self._vocabulary(sorted({o.room for o in objects}), [o.id for o in objects])
-        if protocol_of(self.ctx.model) >= 3:  # at most one relation per object: a looping reply ends
+        keyed = protocol_of(self.ctx.model) >= 3
+        if keyed:  # at most one relation per object: a looping reply ends
             vocab["relation_slots"] = [o.id for o in objects]
-        reply = ask(self.ctx.model, "spatial_relations", self._payload(objects=payload_objects, feedback=[]),
-                    RelationsReply, seed=self.ctx.seed, vocabulary=vocab)
-        relations = list(reply.relations)
+
+        def asked(kind: str, payload: dict[str, Any]) -> tuple[list[RelationDraft], list[tuple[dict[str, Any], str]]]:
+            if keyed:
+                return ask(self.ctx.model, kind, payload, RelationsWire, seed=self.ctx.seed, vocabulary=vocab).split()
+            return list(ask(self.ctx.model, kind, payload, RelationsReply, seed=self.ctx.seed,
+                            vocabulary=vocab).relations), []
+
+        relations, malformed = asked("spatial_relations", self._payload(objects=payload_objects, feedback=[]))
         for attempt in range(self.max_refinements):
             problems = check_relations(objects, relations, self.ctx.catalog)
-            if not problems:
+            if not problems and not malformed:
                 return relations
-            reasons = [p.reason for p in problems]
+            reasons = [p.reason for p in problems] + [why for _, why in malformed]
             log.add("spatial_relations", "refine", env_id=env_id, attempt=attempt, problems=reasons)
-            reply = ask(self.ctx.model, "refine_relations", self._payload(
+            relations, malformed = asked("refine_relations", self._payload(
                 objects=payload_objects, feedback=reasons,
-                rejected=[r.model_dump() for p in problems for r in p.relations]), RelationsReply,
-                seed=self.ctx.seed, vocabulary=vocab)
-            relations = list(reply.relations)
+                rejected=[r.model_dump() for p in problems for r in p.relations] + [r for r, _ in malformed]))
         remaining = check_relations(objects, relations, self.ctx.catalog)
-        if remaining:
+        if remaining or malformed:
             bad = {id(r) for p in remaining for r in p.relations}
             log.add("spatial_relations", "dropped relations the checker still rejects", env_id=env_id,
-                    problems=[p.reason for p in remaining])
+                    problems=[p.reason for p in remaining] + [why for _, why in malformed])
             relations = [r for r in relations if id(r) not in bad]
         return relations
 

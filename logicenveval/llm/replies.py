@@ -336,27 +336,49 @@ class RelationDraft(BaseModel):
 
 class RelationsReply(BaseModel):
     model_config = _F
-    relations: list[RelationDraft] = Field(default_factory=list, max_length=80,
-                                           json_schema_extra={AT_MOST: "relation_slots"})
+    relations: list[RelationDraft] = Field(default_factory=list, max_length=80)
 
-    @model_validator(mode="after")
-    def _meaningful(self, info: ValidationInfo) -> RelationsReply:
-        """No relation of an object with itself (Qwen2.5-Coder-1.5B wrote `on(table, table)` and
-        then `on(medicine_cabinet, medicine_cabinet)` until its bound); a relation written twice
-        is one relation."""
-        if not meaning.enabled(info.context):
-            return self
-        for r in self.relations:
-            if len(r.args) == 2 and r.args[0] == r.args[1]:
-                raise MeaningError(f"relation {r.type}({r.args[0]}, {r.args[1]}) relates {r.args[0]!r} "
-                                   "to itself; name two different objects")
+
+class RelationItemWire(BaseModel):
+    """A relation as written (protocol 3): its arity and its objects are judged with the
+    checker's other findings (`RelationsWire.split`), not by refusing the whole reply."""
+
+    model_config = _F
+    type: Annotated[str, Vocab("relation_types")] = Field(
+        description="edge, center, wall_mounted, on, inside, near, far, above, "
+        "in_front_of, side_of, center_aligned, face_to")
+    args: list[Annotated[str, Vocab("object_ids")]] = Field(min_length=1, max_length=2,
+                                                            description="object ids")
+
+
+# A scene's relations from protocol 3 on: at most one per object (`AT_MOST` over
+# `relation_slots`), so a looping reply ends. Qwen2.5-Coder-1.5B wrote `on(sofa_1, sofa_1)`
+# at the end of a good reply, then only that in two re-asks, and `center(counter, sink)` with
+# two objects: refusing the reply lost the scene; the paper's checker refines and then drops a
+# relation it rejects, and so these are judged with its findings.
+class RelationsWire(BaseModel):
+    model_config = _F
+    relations: list[RelationItemWire] = Field(default_factory=list, max_length=80,
+                                              json_schema_extra={AT_MOST: "relation_slots"})
+
+    def split(self) -> tuple[list[RelationDraft], list[tuple[dict[str, Any], str]]]:
+        """The well-formed relations, each once, and the others with why: (relation, reason)."""
+        from logicenveval.model.envspec import RELATION_TYPES
+
+        good: list[RelationDraft] = []
+        bad: list[tuple[dict[str, Any], str]] = []
         seen: set[tuple[str, tuple[str, ...]]] = set()
-        kept = []
         for r in self.relations:
-            if (r.type, tuple(r.args)) not in seen:
+            wanted = RELATION_TYPES.get(r.type)
+            text = f"{r.type}({', '.join(r.args)})"
+            if wanted is not None and len(r.args) != wanted:
+                bad.append((r.model_dump(), f"{text} takes {wanted} object id(s), not {len(r.args)}"))
+            elif len(r.args) == 2 and r.args[0] == r.args[1]:
+                bad.append((r.model_dump(), f"{text} relates {r.args[0]} to itself; name two different objects"))
+            elif (r.type, tuple(r.args)) not in seen:
                 seen.add((r.type, tuple(r.args)))
-                kept.append(r)
-        return self if len(kept) == len(self.relations) else self.model_copy(update={"relations": kept})
+                good.append(RelationDraft(type=r.type, args=list(r.args)))
+        return good, bad
 
 
 class PlacedObject(ObjectDraft):
