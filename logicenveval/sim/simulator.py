@@ -82,6 +82,12 @@ class CompiledPolicy:
             j for j, k in enumerate(kinds) if k is Control.state)}
         self._stateful_at = {j: i for i, j in enumerate(
             j for j, k in enumerate(kinds) if k is not BTNode.state and k is not Control.state)}
+        # an episode starts with every node reset: plain attributes set in C loops, `reset_all`
+        # called only where it does more
+        resets = [type(n).reset_all for n in self._nodes]
+        self._zeroed = [n for n, r in zip(self._nodes, resets, strict=True) if r is Control.reset_all]
+        self._resetting = [n for n, r in zip(self._nodes, resets, strict=True)
+                           if r is not BTNode.reset_all and r is not Control.reset_all]
 
     @property
     def nodes(self) -> list[BTNode]:
@@ -96,14 +102,20 @@ class CompiledPolicy:
         i = self._indexed_at.get(j)
         return snapshot.statuses[j] if i is None else (snapshot.statuses[j], snapshot.indices[i])
 
+    def _reset(self) -> None:
+        """`reset_all` every node (the start of an episode)."""
+        deque(map(setattr, self._nodes, repeat("status"), repeat(IDLE)), maxlen=0)
+        deque(map(setattr, self._zeroed, repeat("idx"), repeat(0)), maxlen=0)
+        for node in self._resetting:
+            node.reset_all()
+
     def status(self, world: World, goal: Cond | None, *, tick_limit: int = 50) -> str:
         """The verdict status of one episode on `world` (mutated in place: pass a copy).
 
         Same judgement as `run` without building a `Verdict` (no trace, no final-state digest),
         for callers that run many policies and only need the outcome (mutation scoring).
         """
-        for node in self._nodes:
-            node.reset_all()
+        self._reset()
         ep = self.root.binding.ep = Episode(world)
         return self._judge(ep, goal, tick_limit)
 
@@ -111,8 +123,7 @@ class CompiledPolicy:
         """`status` of one episode, plus every leaf tick and the state at the start of every
         root tick (so that an episode of a tree that differs only where this one had not yet
         gone can start there: `resume`)."""
-        for node in self._nodes:
-            node.reset_all()
+        self._reset()
         ticks: list[tuple[int, BTNode, Status]] = []
         ep = self.root.binding.ep = Episode(world, ticks=ticks)
         snapshots: list[Snapshot] = []
@@ -182,8 +193,7 @@ class CompiledPolicy:
     def run(self, world: World, goal: Cond | None, *, tick_limit: int = 50,
             trace: bool = False) -> Verdict:
         """Run one episode on `world` (mutated in place: pass a copy)."""
-        for node in self._nodes:
-            node.reset_all()
+        self._reset()
         ep = self.root.binding.ep = Episode(world, trace=[] if trace else None)
         try:
             status = self._tick_until_done(ep, tick_limit)
