@@ -395,3 +395,27 @@ def test_a_reused_tree_starts_every_episode_reset() -> None:
     assert [reused.run(world.copy(), goal, tick_limit=n).model_dump() for n in range(1, 14)] == fresh
     assert [reused.run(world.copy(), goal, tick_limit=n).model_dump()
             for n in reversed(range(1, 14))] == fresh[::-1]
+
+
+def test_verdicts_are_what_validation_gives_and_the_digest_is_optional() -> None:
+    """`CompiledPolicy.run` builds its verdicts without re-validating them: each equals its own
+    validated JSON round trip, for every verdict kind; `final_state=False` only leaves the
+    final-state digest out (the report's traced runs do not keep it)."""
+    from logicenveval.sim.simulator import CompiledPolicy, task_goal
+
+    world = World.from_env(ENV, CAT)
+    goal = task_goal(TASK, world)
+    bodies = {"passed": TIDY, "precondition_violation": '<Pick obj="toy"/>',
+              "tree_failure": '<Holding obj="toy"/>', "goal_unmet": '<Walk target="toy"/>',
+              "tick_limit": '<KeepRunningUntilFailure><AlwaysSuccess/></KeepRunningUntilFailure>'}
+    for status, body in bodies.items():
+        xml = f'<root BTCPP_format="4"><BehaviorTree ID="Main"><Sequence>{body}</Sequence></BehaviorTree></root>'
+        cp = CompiledPolicy(policy_from_xml(xml, roles=TASK.roles))
+        for goal_ in (goal, None):
+            full = cp.run(world.copy(), goal_, trace=True)
+            assert full.status == (status if goal_ is not None or status not in ("passed", "goal_unmet")
+                                   else "ill_formed")
+            assert Verdict.model_validate_json(full.model_dump_json()) == full
+            assert full.final_state and full.final_state["roles"]
+            bare = cp.run(world.copy(), goal_, trace=True, final_state=False)
+            assert bare.final_state == {} and bare.model_copy(update={"final_state": full.final_state}) == full

@@ -138,7 +138,7 @@ def _traced(policy: Any, catalog: Catalog, key: str, world: World,
     hit = _TRACED.get(memo)
     if hit is not None and hit[0] is policy and hit[1] is catalog:
         return hit[2], hit[3]
-    verdict = compiled(policy).run(world.copy(), goal, trace=True)
+    verdict = compiled(policy).run(world.copy(), goal, trace=True, final_state=False)
     trace = VerdictTrace(status=verdict.status, message=verdict.message or "",
                          trace=[str(t) for t in verdict.trace])
     if len(_TRACED) >= 4096:
