@@ -472,3 +472,31 @@ def test_bodies_build_fcl_objects_only_for_pairs_the_broad_phase_keeps() -> None
         assert alone.footprint.equals_exact(bodies[o.id].footprint, 0.0)
         assert list(alone.footprint.exterior.coords) == list(bodies[o.id].footprint.exterior.coords)
         assert (alone.aabb_min == bodies[o.id].aabb_min).all() and (alone.aabb_max == bodies[o.id].aabb_max).all()
+
+
+def test_vectorised_room_and_door_tests_equal_the_per_body_ones() -> None:
+    """`check_entities` tests all footprints against their rooms, and takes all their bounds for
+    the door broad phase, in one shapely call each: the same answers as body by body."""
+    from logicenveval.envfiles import load_env
+    from logicenveval.physics.entity import _door_candidates, _inside_rooms, swing_areas
+    from logicenveval.physics.floorplan import check_floor_plan, room_band
+    from logicenveval.physics.geometry import build_bodies, rect_pairs
+    from logicenveval.physics.report import DEFAULT_TOLERANCES as TOL
+
+    files = sorted((Path(__file__).parents[1] / "reports" / "reference" / "envs").glob("*/*/*-*.json"))
+    if not files:
+        pytest.skip("no committed reference run")
+    outside = 0
+    for path in files[::5]:
+        env = load_env(path)
+        _, polys = check_floor_plan(env, TOL)
+        grown = {rid: room_band(env, rid, poly, TOL.room_margin) for rid, poly in polys.items()}
+        bodies = list(build_bodies(env).values())
+        inside = _inside_rooms(bodies, grown)
+        assert inside == [b.obj.room not in grown or grown[b.obj.room].contains(b.footprint) for b in bodies]
+        outside += inside.count(False)
+        doors = swing_areas(env)
+        pairs = rect_pairs([b.footprint.bounds for b in bodies], [a.bounds for _, a in doors])
+        assert _door_candidates(bodies, doors) == {
+            i: [d for j, d in pairs if j == i] for i in sorted({i for i, _ in pairs})}
+    assert outside  # the sample holds footprints that leave their rooms
