@@ -13,7 +13,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from logicenveval.envfiles import env_from_dict
-from logicenveval.model.envspec import EnvObject
+from logicenveval.model.envspec import EnvObject, EnvSpec
 from logicenveval.physics import (
     DimensionReport,
     PhysicsFailure,
@@ -449,3 +449,54 @@ def test_label_cover_is_the_sum_of_the_overlaps_to_the_last_bit(placed, box) -> 
 
     assert _covered(box, placed) == sum(_overlap(box, b) for b in placed)
     assert _covered(box, placed) == 0 or any(_overlap(box, b) > 0 for b in placed)
+
+
+def test_bodies_build_fcl_objects_only_for_pairs_the_broad_phase_keeps() -> None:
+    """Two boxes apart never reach fcl, so neither builds its fcl objects; a touching pair
+    does, with the same shapes as a body built alone (footprints come out of one vectorised
+    step for all boxes)."""
+    from logicenveval.physics.geometry import build_bodies, clear_body_cache
+
+    objs = [EnvObject(id="a", category="x", room="r", position=(0, 0.5, 0), size=(1, 1, 1), yaw=30),
+            EnvObject(id="b", category="x", room="r", position=(5, 0.5, 0), size=(1, 1, 1)),
+            EnvObject(id="c", category="x", room="r", position=(0.4, 0.5, 0.2), size=(0.5, 1, 0.5), yaw=-12.5)]
+    env = EnvSpec.model_validate({"task_id": "t", "env_id": "e", "rooms": [{"id": "r"}],
+                                  "objects": [o.model_dump() for o in objs]})
+    clear_body_cache()
+    bodies = build_bodies(env)
+    assert all("collision" not in b.__dict__ for b in bodies.values())
+    check_env(env)
+    assert {k for k, b in bodies.items() if "collision" in b.__dict__} == {"a", "c"}
+    for o in objs:
+        alone = build_body(o)
+        assert alone.footprint.equals_exact(bodies[o.id].footprint, 0.0)
+        assert list(alone.footprint.exterior.coords) == list(bodies[o.id].footprint.exterior.coords)
+        assert (alone.aabb_min == bodies[o.id].aabb_min).all() and (alone.aabb_max == bodies[o.id].aabb_max).all()
+
+
+def test_vectorised_room_and_door_tests_equal_the_per_body_ones() -> None:
+    """`check_entities` tests all footprints against their rooms, and takes all their bounds for
+    the door broad phase, in one shapely call each: the same answers as body by body."""
+    from logicenveval.envfiles import load_env
+    from logicenveval.physics.entity import _door_candidates, _inside_rooms, swing_areas
+    from logicenveval.physics.floorplan import check_floor_plan, room_band
+    from logicenveval.physics.geometry import build_bodies, rect_pairs
+    from logicenveval.physics.report import DEFAULT_TOLERANCES as TOL
+
+    files = sorted((Path(__file__).parents[1] / "reports" / "reference" / "envs").glob("*/*/*-*.json"))
+    if not files:
+        pytest.skip("no committed reference run")
+    outside = 0
+    for path in files[::5]:
+        env = load_env(path)
+        _, polys = check_floor_plan(env, TOL)
+        grown = {rid: room_band(env, rid, poly, TOL.room_margin) for rid, poly in polys.items()}
+        bodies = list(build_bodies(env).values())
+        inside = _inside_rooms(bodies, grown)
+        assert inside == [b.obj.room not in grown or grown[b.obj.room].contains(b.footprint) for b in bodies]
+        outside += inside.count(False)
+        doors = swing_areas(env)
+        pairs = rect_pairs([b.footprint.bounds for b in bodies], [a.bounds for _, a in doors])
+        assert _door_candidates(bodies, doors) == {
+            i: [d for j, d in pairs if j == i] for i in sorted({i for i, _ in pairs})}
+    assert outside  # the sample holds footprints that leave their rooms

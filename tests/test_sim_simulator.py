@@ -343,3 +343,79 @@ def test_random_trees_round_trip_through_py_trees(tree: tuple[str, bool]) -> Non
     exported = tree_to_xml(tree_from_xml(text, roles=TASK.roles))
     assert policy_from_xml(exported, roles=TASK.roles) == policy_from_xml(text, roles=TASK.roles)
     assert run(tree[0]) == simulate(policy_from_xml(exported), ENV, TASK, CAT)
+
+
+def test_leaves_call_the_py_trees_lifecycle_hooks_only_where_overridden() -> None:
+    """A leaf tick skips py_trees' no-op `initialise`/`terminate`, but a leaf class that
+    defines them still gets both, at the moments py_trees' `Behaviour.tick` calls them."""
+    import py_trees
+
+    from logicenveval.sim.nodes import ActionNode, ConditionNode, ConstNode, Leaf
+
+    assert not (ActionNode.hooks or ConditionNode.hooks or ConstNode.hooks)
+    calls: list[str] = []
+
+    class Hooked(Leaf):
+        def __init__(self) -> None:
+            super().__init__("hooked")
+            self.script = [py_trees.common.Status.RUNNING, py_trees.common.Status.SUCCESS]
+
+        def initialise(self) -> None:
+            calls.append("initialise")
+
+        def update(self) -> py_trees.common.Status:
+            return self.script.pop(0)
+
+        def terminate(self, new_status: py_trees.common.Status) -> None:
+            calls.append(f"terminate {new_status.value}")
+
+    leaf = Hooked()
+    assert leaf.hooks
+    leaf.binding = type("B", (), {"ep": None})()  # type: ignore[assignment]
+    leaf.tick_once()
+    leaf.tick_once()
+    assert calls == ["initialise", "terminate SUCCESS"]
+
+
+def test_a_reused_tree_starts_every_episode_reset() -> None:
+    """`CompiledPolicy` resets its nodes in bulk between episodes (statuses, child indices,
+    loop counters): an episode after any other ends as on a freshly built tree."""
+    from logicenveval.sim.simulator import CompiledPolicy, task_goal
+
+    xml = ('<root BTCPP_format="4"><BehaviorTree ID="Main"><Sequence>'
+           '<RetryUntilSuccessful num_attempts="3"><Sequence><Walk target="toy"/>'
+           '<Holding obj="toy"/></Sequence></RetryUntilSuccessful>' + TIDY +
+           '</Sequence></BehaviorTree></root>')
+    policy = policy_from_xml(xml, roles=TASK.roles)
+    world = World.from_env(ENV, CAT)
+    goal = task_goal(TASK, world)
+    fresh = [CompiledPolicy(policy).run(world.copy(), goal, tick_limit=n).model_dump()
+             for n in range(1, 14)]
+    reused = CompiledPolicy(policy)
+    assert [reused.run(world.copy(), goal, tick_limit=n).model_dump() for n in range(1, 14)] == fresh
+    assert [reused.run(world.copy(), goal, tick_limit=n).model_dump()
+            for n in reversed(range(1, 14))] == fresh[::-1]
+
+
+def test_verdicts_are_what_validation_gives_and_the_digest_is_optional() -> None:
+    """`CompiledPolicy.run` builds its verdicts without re-validating them: each equals its own
+    validated JSON round trip, for every verdict kind; `final_state=False` only leaves the
+    final-state digest out (the report's traced runs do not keep it)."""
+    from logicenveval.sim.simulator import CompiledPolicy, task_goal
+
+    world = World.from_env(ENV, CAT)
+    goal = task_goal(TASK, world)
+    bodies = {"passed": TIDY, "precondition_violation": '<Pick obj="toy"/>',
+              "tree_failure": '<Holding obj="toy"/>', "goal_unmet": '<Walk target="toy"/>',
+              "tick_limit": '<KeepRunningUntilFailure><AlwaysSuccess/></KeepRunningUntilFailure>'}
+    for status, body in bodies.items():
+        xml = f'<root BTCPP_format="4"><BehaviorTree ID="Main"><Sequence>{body}</Sequence></BehaviorTree></root>'
+        cp = CompiledPolicy(policy_from_xml(xml, roles=TASK.roles))
+        for goal_ in (goal, None):
+            full = cp.run(world.copy(), goal_, trace=True)
+            assert full.status == (status if goal_ is not None or status not in ("passed", "goal_unmet")
+                                   else "ill_formed")
+            assert Verdict.model_validate_json(full.model_dump_json()) == full
+            assert full.final_state and full.final_state["roles"]
+            bare = cp.run(world.copy(), goal_, trace=True, final_state=False)
+            assert bare.final_state == {} and bare.model_copy(update={"final_state": full.final_state}) == full

@@ -6,6 +6,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+import shapely
 from shapely.geometry import Point, Polygon
 
 from logicenveval.domain.catalog import Catalog
@@ -245,10 +246,26 @@ def swing_areas(env: EnvSpec) -> list[tuple[str, Polygon]]:
 def _door_candidates(bodies: list[Body], doors: list[tuple[str, Polygon]]) -> dict[int, list[int]]:
     """Body index -> the doors (in order) whose swing square's bounds meet its footprint's: the
     broad phase of the door test (a body far from every door costs no polygon intersection)."""
-    pairs = rect_pairs([b.footprint.bounds for b in bodies], [area.bounds for _, area in doors])
+    if not bodies or not doors:
+        return {}
+    boxes = shapely.bounds(np.array([b.footprint for b in bodies], dtype=object)).tolist()
+    pairs = rect_pairs([tuple(r) for r in boxes], [area.bounds for _, area in doors])
     out: dict[int, list[int]] = {}
     for i, d in pairs:
         out.setdefault(i, []).append(d)
+    return out
+
+
+def _inside_rooms(bodies: list[Body], grown: dict[str, Polygon]) -> list[bool]:
+    """Whether each body's footprint lies in its room's grown outline (True where the room
+    has none): one vectorised test for the whole environment."""
+    at = [k for k, b in enumerate(bodies) if b.obj.room in grown]
+    out = [True] * len(bodies)
+    if at:
+        rooms = np.array([grown[bodies[k].obj.room] for k in at], dtype=object)
+        feet = np.array([bodies[k].footprint for k in at], dtype=object)
+        for k, ok in zip(at, shapely.contains(rooms, feet).tolist(), strict=True):
+            out[k] = ok
     return out
 
 
@@ -285,6 +302,7 @@ def check_entities(env: EnvSpec, bodies: dict[str, Body], polys: dict[str, Polyg
     doors = swing_areas(env)
     grown = {rid: room_band(env, rid, poly, tol.room_margin) for rid, poly in polys.items()}
     blocking = _door_candidates(list(bodies.values()), doors)
+    inside = _inside_rooms(list(bodies.values()), grown)
     for k, b in enumerate(bodies.values()):
         fails += _catalog_size(b, catalog, tol)
         fails += _support(b, env, bodies, polys, catalog, tol)
@@ -292,7 +310,7 @@ def check_entities(env: EnvSpec, bodies: dict[str, Body], polys: dict[str, Polyg
             fails.append(_fail("above_ceiling", f"{b.id} top {b.top:.2f} m is above the wall height "
                                f"{env.wall_height} m", [b.id], measured=b.top, tolerance=env.wall_height))
         poly = polys.get(b.obj.room)
-        if poly is not None and not grown[b.obj.room].contains(b.footprint):
+        if poly is not None and not inside[k]:
             out = max(float(poly.distance(Point(c))) for c in b.footprint.exterior.coords)
             fails.append(_fail("outside_room", f"{b.id} footprint leaves room {b.obj.room} by {out:.3f} m",
                                [b.id], rooms=[b.obj.room], measured=out, tolerance=tol.room_margin))

@@ -11,10 +11,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 from pathlib import Path
 
 import fcl
 import numpy as np
+import shapely
 from shapely.geometry import LineString, Polygon
 from shapely.geometry.base import BaseGeometry
 
@@ -34,7 +36,10 @@ def yaw_matrix(yaw_deg: float) -> np.ndarray:
 
 @dataclass(frozen=True)
 class Body:
-    """One object with geometry: oriented box frame, footprint and fcl collision object."""
+    """One object with geometry: oriented box frame, footprint and fcl collision object.
+
+    The fcl objects (`collision`, `parts`) are built on first use: only the pairs the broad
+    phase cannot call apart reach fcl, a few of an environment's objects."""
 
     obj: EnvObject
     center: np.ndarray      # (3,)
@@ -45,10 +50,23 @@ class Body:
     top: float
     aabb_min: np.ndarray
     aabb_max: np.ndarray
-    collision: fcl.CollisionObject
-    is_box: bool = True     # False: the convex hull of a mesh file
-    #: the solid parts of the box where its shape says only parts are solid (domain.shapes)
-    parts: tuple[fcl.CollisionObject, ...] | None = None
+    #: the convex hull of the mesh file (None: the box is the shape)
+    hull: fcl.CollisionGeometry | None = None
+
+    @property
+    def is_box(self) -> bool:
+        """False: the convex hull of a mesh file."""
+        return self.hull is None
+
+    @cached_property
+    def collision(self) -> fcl.CollisionObject:
+        geom = self.hull if self.hull is not None else fcl.Box(*(2.0 * self.half))
+        return fcl.CollisionObject(geom, fcl.Transform(self.rot, self.center))
+
+    @cached_property
+    def parts(self) -> tuple[fcl.CollisionObject, ...] | None:
+        """The solid parts of the box where its shape says only parts are solid (domain.shapes)."""
+        return _solid_parts(self.obj, self.center, self.half, self.rot) if self.hull is None else None
 
     @property
     def id(self) -> str:
@@ -105,38 +123,50 @@ def _mesh_vertices(obj: EnvObject, base_dir: Path | None) -> np.ndarray | None:
 
 def build_body(obj: EnvObject, mesh_dir: Path | None = None) -> Body:
     """Geometry of one object; the caller ensures `position` and `size` are set."""
-    assert obj.position is not None and obj.size is not None
-    center = np.asarray(obj.position, float)
-    half = np.asarray(obj.size, float) / 2.0
-    rot = yaw_matrix(obj.yaw)
-    tf = fcl.Transform(rot, center)
-    verts = _mesh_vertices(obj, mesh_dir)
-    if verts is None:
-        local = _SIGNS * half
-        geom: fcl.CollisionGeometry = fcl.Box(*(2.0 * half))
-    else:
-        import trimesh
+    return _build([obj], mesh_dir)[0]
 
-        local = verts
-        hull = trimesh.Trimesh(vertices=verts).convex_hull
-        model = fcl.BVHModel()
-        model.beginModel(len(hull.vertices), len(hull.faces))
-        model.addSubModel(np.asarray(hull.vertices, float), np.asarray(hull.faces, np.int32))
-        model.endModel()
-        geom = model
-    world = center + local @ rot.T
-    if verts is None:
-        footprint = Polygon(world[_BOX_FOOTPRINT, ::2])  # x and z of the bottom corners
-    else:
-        hull = Polygon(world[:, [0, 2]]).convex_hull
-        footprint = hull if isinstance(hull, Polygon) else Polygon()
-    lo, hi = world.min(axis=0), world.max(axis=0)
-    return Body(
-        obj=obj, center=center, half=half, rot=rot, footprint=footprint,
-        bottom=float(lo[1]), top=float(hi[1]), aabb_min=lo, aabb_max=hi,
-        collision=fcl.CollisionObject(geom, tf), is_box=verts is None,
-        parts=_solid_parts(obj, center, half, rot) if verts is None else None,
-    )
+
+def _build(objects: list[EnvObject], mesh_dir: Path | None) -> list[Body]:
+    """`build_body` of each object: per object its frame and corners, then the footprints and
+    bounds of all boxes in one vectorised step each (the same numbers, fewer calls)."""
+    frames = []
+    for obj in objects:
+        assert obj.position is not None and obj.size is not None
+        center = np.asarray(obj.position, float)
+        half = np.asarray(obj.size, float) / 2.0
+        rot = yaw_matrix(obj.yaw)
+        verts = _mesh_vertices(obj, mesh_dir)
+        local = _SIGNS * half if verts is None else verts
+        frames.append((obj, center, half, rot, verts, center + local @ rot.T))
+    boxes = [k for k, f in enumerate(frames) if f[4] is None]
+    footprints: list[Polygon] = [Polygon()] * len(frames)
+    lo: list[np.ndarray] = [np.zeros(3)] * len(frames)
+    hi = list(lo)
+    if boxes:
+        corners = np.stack([frames[k][5] for k in boxes])
+        rects = shapely.polygons(corners[:, _BOX_FOOTPRINT][:, :, ::2])  # x, z of the bottom
+        lows, highs = corners.min(axis=1), corners.max(axis=1)
+        for n, k in enumerate(boxes):
+            footprints[k], lo[k], hi[k] = rects[n], lows[n], highs[n]
+    out = []
+    for k, (obj, center, half, rot, verts, world) in enumerate(frames):
+        hull_geom: fcl.CollisionGeometry | None = None
+        if verts is not None:
+            import trimesh
+
+            hull = trimesh.Trimesh(vertices=verts).convex_hull
+            model = fcl.BVHModel()
+            model.beginModel(len(hull.vertices), len(hull.faces))
+            model.addSubModel(np.asarray(hull.vertices, float), np.asarray(hull.faces, np.int32))
+            model.endModel()
+            hull_geom = model
+            outline = Polygon(world[:, [0, 2]]).convex_hull
+            footprints[k] = outline if isinstance(outline, Polygon) else Polygon()
+            lo[k], hi[k] = world.min(axis=0), world.max(axis=0)
+        out.append(Body(obj=obj, center=center, half=half, rot=rot, footprint=footprints[k],
+                        bottom=float(lo[k][1]), top=float(hi[k][1]), aabb_min=lo[k],
+                        aabb_max=hi[k], hull=hull_geom))
+    return out
 
 
 def _solid_parts(obj: EnvObject, center: np.ndarray, half: np.ndarray, rot: np.ndarray
@@ -292,6 +322,6 @@ def build_bodies(env: EnvSpec, mesh_dir: Path | None = None) -> dict[str, Body]:
     objects = [o for o in env.objects if has_geometry(o)]
     if _LAST and _LAST[0][0] == mesh_dir and _LAST[0][1] == objects:
         return _LAST[0][2]
-    bodies = {o.id: build_body(o, mesh_dir) for o in objects}
+    bodies = {b.id: b for b in _build(objects, mesh_dir)}
     _LAST[:] = [(mesh_dir, objects, bodies)]
     return bodies

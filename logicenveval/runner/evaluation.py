@@ -94,9 +94,10 @@ def evaluate_env(
     sim_ms: dict[str, float] = {}
     sim_ticks: dict[str, int] = {}
     traces: dict[str, VerdictTrace] = {}
+    memo_key = (key, None if goal is None else to_text(goal))
     for kind, policy in policies.items():
         with phase("traces"):
-            traces[kind], sim_ticks[kind] = _traced(policy, catalog, key, world, goal)
+            traces[kind], sim_ticks[kind] = _traced(policy, catalog, memo_key, world, goal)
         with phase("simulation"):
             start = time.perf_counter()
             verdicts[kind] = simulate(policy, env, task, catalog).status
@@ -127,18 +128,18 @@ def evaluate_env(
 _TRACED: dict[tuple[int, int, str, str | None], tuple[Any, Catalog, VerdictTrace, int]] = {}
 
 
-def _traced(policy: Any, catalog: Catalog, key: str, world: World,
+def _traced(policy: Any, catalog: Catalog, key: tuple[str, str | None], world: World,
             goal: Cond | None) -> tuple[VerdictTrace, int]:
     """`simulate(policy, env, task, catalog, trace=True)` as the report shows it (`key` is
-    `symbolic_key(env)`, `world` its initial world, `goal` the task's goal there), also the
-    warm-up of the timed episode. An episode sees nothing but the symbolic world, so one already
+    `symbolic_key(env)` and the goal's text, `world` its initial world, `goal` the task's goal
+    there), also the warm-up of the timed episode. An episode sees nothing but the symbolic world, so one already
     traced in this process (another generator's environment that realises the same situation
     with the same objects) is not run again: the warm-up it was is still warm."""
-    memo = (id(policy), id(catalog), key, None if goal is None else to_text(goal))
+    memo = (id(policy), id(catalog), *key)
     hit = _TRACED.get(memo)
     if hit is not None and hit[0] is policy and hit[1] is catalog:
         return hit[2], hit[3]
-    verdict = compiled(policy).run(world.copy(), goal, trace=True)
+    verdict = compiled(policy).run(world.copy(), goal, trace=True, final_state=False)
     trace = VerdictTrace(status=verdict.status, message=verdict.message or "",
                          trace=[str(t) for t in verdict.trace])
     if len(_TRACED) >= 4096:

@@ -148,15 +148,26 @@ class Leaf(BTNode):
     #: an `IfThenElse` that failed on it, stays finished until a parent resets it); conditions
     #: and `AlwaysSuccess`/`AlwaysFailure` are evaluated on every tick
     keeps_result: bool = False
+    #: whether the class overrides py_trees' `initialise` or `terminate` (no-ops otherwise,
+    #: not called: a leaf tick is a few attribute reads, two calls were a fifth of it)
+    hooks: bool = False
+
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        base = py_trees.behaviour.Behaviour
+        cls.hooks = cls.initialise is not base.initialise or cls.terminate is not base.terminate
 
     def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
         st = self.status
         if not (self.keeps_result and (st is SUCCESS or st is FAILURE)):
-            if st is not RUNNING:
-                self.initialise()
-            st = self.update()
-            if st is not RUNNING:
-                self.terminate(st)
+            if self.hooks:
+                if st is not RUNNING:
+                    self.initialise()
+                st = self.update()
+                if st is not RUNNING:
+                    self.terminate(st)
+            else:
+                st = self.update()
             self.status = st
         ep = self.binding.ep
         if ep is not None and ep.ticks is not None:
@@ -617,6 +628,16 @@ class ForceFailure(Decorator):
 
 class SubTree(Decorator):
     """The root of another BehaviorTree of the file, expanded in place (BT.CPP `SubTree`)."""
+
+    def tick(self) -> Iterator[py_trees.behaviour.Behaviour]:
+        """`Decorator.tick` with the identity `map` left out (a SubTree ticks on every path)."""
+        yield from self.decorated.tick()
+        st = self.decorated.status
+        if st is RUNNING:
+            self.status = RUNNING
+        else:
+            self.stop(st)
+        yield self
 
 
 class KeepRunningUntilFailure(Decorator):

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from itertools import repeat
 from operator import attrgetter
 from pathlib import Path
+from typing import Any
 
 from py_trees.common import Status
 
@@ -82,6 +83,12 @@ class CompiledPolicy:
             j for j, k in enumerate(kinds) if k is Control.state)}
         self._stateful_at = {j: i for i, j in enumerate(
             j for j, k in enumerate(kinds) if k is not BTNode.state and k is not Control.state)}
+        # an episode starts with every node reset: plain attributes set in C loops, `reset_all`
+        # called only where it does more
+        resets = [type(n).reset_all for n in self._nodes]
+        self._zeroed = [n for n, r in zip(self._nodes, resets, strict=True) if r is Control.reset_all]
+        self._resetting = [n for n, r in zip(self._nodes, resets, strict=True)
+                           if r is not BTNode.reset_all and r is not Control.reset_all]
 
     @property
     def nodes(self) -> list[BTNode]:
@@ -96,14 +103,20 @@ class CompiledPolicy:
         i = self._indexed_at.get(j)
         return snapshot.statuses[j] if i is None else (snapshot.statuses[j], snapshot.indices[i])
 
+    def _reset(self) -> None:
+        """`reset_all` every node (the start of an episode)."""
+        deque(map(setattr, self._nodes, repeat("status"), repeat(IDLE)), maxlen=0)
+        deque(map(setattr, self._zeroed, repeat("idx"), repeat(0)), maxlen=0)
+        for node in self._resetting:
+            node.reset_all()
+
     def status(self, world: World, goal: Cond | None, *, tick_limit: int = 50) -> str:
         """The verdict status of one episode on `world` (mutated in place: pass a copy).
 
         Same judgement as `run` without building a `Verdict` (no trace, no final-state digest),
         for callers that run many policies and only need the outcome (mutation scoring).
         """
-        for node in self._nodes:
-            node.reset_all()
+        self._reset()
         ep = self.root.binding.ep = Episode(world)
         return self._judge(ep, goal, tick_limit)
 
@@ -111,8 +124,7 @@ class CompiledPolicy:
         """`status` of one episode, plus every leaf tick and the state at the start of every
         root tick (so that an episode of a tree that differs only where this one had not yet
         gone can start there: `resume`)."""
-        for node in self._nodes:
-            node.reset_all()
+        self._reset()
         ticks: list[tuple[int, BTNode, Status]] = []
         ep = self.root.binding.ep = Episode(world, ticks=ticks)
         snapshots: list[Snapshot] = []
@@ -180,37 +192,40 @@ class CompiledPolicy:
         return "passed" if evaluate(goal, world.holds) else "goal_unmet"
 
     def run(self, world: World, goal: Cond | None, *, tick_limit: int = 50,
-            trace: bool = False) -> Verdict:
-        """Run one episode on `world` (mutated in place: pass a copy)."""
-        for node in self._nodes:
-            node.reset_all()
+            trace: bool = False, final_state: bool = True) -> Verdict:
+        """Run one episode on `world` (mutated in place: pass a copy); `final_state=False`
+        leaves the final-state digest empty (a caller that keeps only the trace)."""
+        self._reset()
         ep = self.root.binding.ep = Episode(world, trace=[] if trace else None)
         try:
             status = self._tick_until_done(ep, tick_limit)
         except Violation as v:
-            return Verdict(status="precondition_violation", fault_node=v.node.bt_name or v.node.label,
-                           fault_path=v.node.path, message=v.message, ticks=ep.tick,
-                           trace=ep.trace or [], final_state=world.summary())
+            return _verdict(ep, final_state, status="precondition_violation",
+                            fault_node=v.node.bt_name or v.node.label, fault_path=v.node.path,
+                            message=v.message)
         if status is RUNNING:
-            return Verdict(status="tick_limit", ticks=ep.tick, trace=ep.trace or [],
-                           message=f"root still RUNNING after {tick_limit} ticks",
-                           final_state=world.summary())
+            return _verdict(ep, final_state, status="tick_limit",
+                            message=f"root still RUNNING after {tick_limit} ticks")
         if status is FAILURE:
             last = _last_failed_leaf(ep)
-            return Verdict(status="tree_failure", ticks=ep.tick, trace=ep.trace or [],
-                           fault_node=last[0], fault_path=last[1],
-                           message="the root returned FAILURE" + (
-                               f" (last failing leaf: {last[1]})" if last[1] else ""),
-                           final_state=world.summary())
+            return _verdict(ep, final_state, status="tree_failure", fault_node=last[0],
+                            fault_path=last[1], message="the root returned FAILURE" + (
+                                f" (last failing leaf: {last[1]})" if last[1] else ""))
         if goal is None:
-            return Verdict(status="ill_formed", ticks=ep.tick, trace=ep.trace or [],
-                           message="some GT tree reaches no leaf on the initial state, so the "
-                                   "environment has no goal", final_state=world.summary())
+            return _verdict(ep, final_state, status="ill_formed",
+                            message="some GT tree reaches no leaf on the initial state, so the "
+                                    "environment has no goal")
         ok = evaluate(goal, world.holds)
-        return Verdict(status="passed" if ok else "goal_unmet", ticks=ep.tick,
-                       trace=ep.trace or [], goal_holds=ok, goal=to_text(goal),
-                       message="" if ok else f"goal {to_text(goal)} is false at the end",
-                       final_state=world.summary())
+        text = to_text(goal)
+        return _verdict(ep, final_state, status="passed" if ok else "goal_unmet", goal_holds=ok,
+                        goal=text, message="" if ok else f"goal {text} is false at the end")
+
+
+def _verdict(ep: Episode, final_state: bool, **fields: Any) -> Verdict:
+    """The verdict of a finished episode, built without validation: every field is made here,
+    of its declared type (validating a long trace's events cost a fifth of a traced run)."""
+    return Verdict.model_construct(ticks=ep.tick, trace=ep.trace or [],
+                                   final_state=ep.world.summary() if final_state else {}, **fields)
 
 
 def _last_failed_leaf(ep: Episode) -> tuple[str | None, str | None]:
