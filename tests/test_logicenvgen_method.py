@@ -46,8 +46,9 @@ class Counting:
         reply = self.inner.complete(request)
         if request.kind == "select_objects" and self.drop:
             data = json.loads(reply)
-            for o in data["objects"]:
-                if o["id"] == self.drop:
+            keyed = data.get("role_objects", {})  # protocol 3: the role objects keyed by role
+            for o in [*data.get("objects", []), *([keyed[self.drop]] if self.drop in keyed else [])]:
+                if o.get("id", self.drop) == self.drop:
                     o["placement"] = "on:table" if o["placement"] == "floor" else "floor"
             reply = json.dumps(data)
         return reply
