@@ -442,3 +442,18 @@ def test_relations_are_at_most_one_per_object_and_malformed_ones_go_to_the_check
     assert [(r.type, r.args) for r in good] == [("on", ["toy", "table"])]
     assert [why for _, why in bad] == ["on(table, table) relates table to itself; name two different objects",
                                        "center(table, toy) takes 1 object id(s), not 2"]
+
+
+def test_a_holodeck_scene_room_names_only_the_other_rooms_and_is_re_asked_unquoted() -> None:
+    """Qwen2.5-Coder-1.5B's Holodeck-like scene of the one-room kitchen listed the kitchen as
+    its own neighbour in 3 of 3 attempts, each re-ask quoting it back: from protocol 2 on the
+    grammar bounds `adjacent_to` to the other rooms; from protocol 3 on the re-ask quotes nothing."""
+    from logicenveval.baselines.replies import HolodeckSceneReply
+    from logicenveval.llm.ask import reply_schema
+    from logicenveval.llm.vocab import specialise
+
+    words = scene_vocabulary(["kitchen"], ["plate"], ["plate"], required_roles=["plate"])
+    room = specialise(reply_schema(HolodeckSceneReply), words)["$defs"]["RoomDraft"]["properties"]["adjacent_to"]
+    assert room["maxItems"] == 0
+    assert "maxItems" not in specialise(reply_schema(HolodeckSceneReply), words, bounds=False)["$defs"]["RoomDraft"][
+        "properties"]["adjacent_to"]

@@ -283,6 +283,37 @@ def block_validity() -> str:
     return "\n".join(out) if out else "(no real-model pack committed)"
 
 
+def block_validity_before() -> str:
+    """Per request kind, a pack's valid replies under the protocol it was recorded with next to
+    those its cache holds from protocol 2 (the replies recorded before protocol 3's keyed scene,
+    replayed with `llm_validity.replay(..., protocol=2)`: questions never recorded under 2 are
+    not measured); packs recorded before protocol 3 have no such column."""
+    from llm_validity import pack_protocol, replay  # type: ignore[import-not-found]
+
+    out: list[str] = []
+    for path in sorted(REAL.glob("*/results.json")):
+        config = json.loads((path.parent / "config.json").read_text())
+        if pack_protocol(config) < 3:
+            continue
+        after = json.loads(path.read_text()).get("llm", {})
+        with tempfile.TemporaryDirectory() as tmp:
+            before = replay(path.parent, Path(tmp), protocol=2).get("llm", {})
+        head = ("| method | request kind | protocol 2: questions | valid first (%) | valid (%) | cut | "
+                "protocol 3: questions | valid first (%) | valid (%) | cut |\n"
+                "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|")
+        rows = [head]
+        for gen in after:
+            for kind in sorted(set(after[gen]) | set(before.get(gen, {}))):
+                cells = []
+                for side in (before.get(gen, {}).get(kind), after[gen].get(kind)):
+                    cells += (["-"] * 4 if not side else
+                              [str(side["questions"]), f"{100 * side['valid_first_share']:.1f}",
+                               f"{100 * side['valid_share']:.1f}", str(side["truncated"])])
+                rows.append(f"| {gen} | {kind} | " + " | ".join(cells) + " |")
+        out += [*([""] if out else []), f"*{_model_label(json.loads(path.read_text()))}*", "", *rows]
+    return "\n".join(out) if out else "(no pack recorded with protocol 3)"
+
+
 def block_stability() -> str:
     """Paper App. C: per method, mean ± sd (range) of each metric over the committed seed runs of
     a real model (`reports/real/stability/<model>/seed*/results.json`, `benchmarks/stability.py`)."""
@@ -427,7 +458,7 @@ BLOCKS: dict[str, Callable[[], str]] = {
     "reference": block_reference, "ablation": block_ablation, "oracle": block_oracle,
     "brief": block_brief, "faudr-mut": block_faudr_mut, "baselines": block_baselines,
     "task-stats": block_task_stats, "selectors": block_selectors, "real": block_real,
-    "stability": block_stability, "validity": block_validity,
+    "stability": block_stability, "validity": block_validity, "validity_before": block_validity_before,
 }
 
 

@@ -37,7 +37,7 @@ from logicenveval.generators.base import (
     GenerationResult,
 )
 from logicenveval.generators.construction import placement_fields
-from logicenveval.llm.ask import ask
+from logicenveval.llm.ask import ask, protocol_of
 from logicenveval.llm.replies import ObjectDraft
 from logicenveval.llm.vocab import scene_vocabulary
 from logicenveval.model.envspec import EnvSpec
@@ -70,7 +70,7 @@ class Holodeck:
             scene = ask(ctx.model, "holodeck_scene", payload, HolodeckSceneReply, seed=ctx.seed,
                         vocabulary=scene_vocabulary(brief.rooms, sorted(brief.roles), [
                             *payload["categories"], *(r.category for r in brief.roles.values())],
-                            required_roles=sorted(brief.roles)))
+                            required_roles=sorted(brief.roles)), quote=protocol_of(ctx.model) < 3)
             env, log = build_scene(brief, scene, ctx.catalog, ctx.rng, env_id=env_id, generator=self.name,
                                    grid=self.grid, max_nodes=self.max_nodes)
         except LogicEnvEvalError as exc:
