@@ -8,6 +8,7 @@ it covers few decision paths, but it is physically valid by construction.
 
 from __future__ import annotations
 
+import re
 from typing import Any
 
 import numpy as np
@@ -25,7 +26,7 @@ from logicenveval.baselines.holodeck_solver import (
     surface_spot,
     wall_spots,
 )
-from logicenveval.baselines.replies import HolodeckSceneReply
+from logicenveval.baselines.replies import HolodeckSceneReply, HolodeckSceneWire
 from logicenveval.domain.catalog import Catalog
 from logicenveval.domain.shapes import load_shapes
 from logicenveval.envfiles import env_from_dict
@@ -39,7 +40,8 @@ from logicenveval.generators.base import (
 from logicenveval.generators.construction import placement_fields
 from logicenveval.llm.ask import ask, protocol_of
 from logicenveval.llm.replies import ObjectDraft
-from logicenveval.llm.vocab import scene_vocabulary
+from logicenveval.llm.scene_words import OTHER_ID, selection_words
+from logicenveval.llm.vocab import Pattern, scene_vocabulary
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import TaskBrief
 from logicenveval.scene.guessed_layout import typical_size
@@ -67,10 +69,17 @@ class Holodeck:
         env_id = f"{self.name}-00"
         ctx.plan_attempts(1)
         try:
-            scene = ask(ctx.model, "holodeck_scene", payload, HolodeckSceneReply, seed=ctx.seed,
-                        vocabulary=scene_vocabulary(brief.rooms, sorted(brief.roles), [
-                            *payload["categories"], *(r.category for r in brief.roles.values())],
-                            required_roles=sorted(brief.roles)), quote=protocol_of(ctx.model) < 3)
+            vocabulary = scene_vocabulary(brief.rooms, sorted(brief.roles), [
+                *payload["categories"], *(r.category for r in brief.roles.values())], required_roles=sorted(brief.roles))
+            if protocol_of(ctx.model) >= 3:  # the scene's objects keyed by role, as LogicEnvGen's
+                vocabulary.update(selection_words(brief, sorted(brief.roles), ctx.catalog))
+                # its relations name role objects as well as the others
+                vocabulary["object_ids"] = Pattern(f"^({'|'.join([*map(re.escape, sorted(brief.roles)), OTHER_ID])})$")
+                scene = ask(ctx.model, "holodeck_scene", payload, HolodeckSceneWire, seed=ctx.seed,
+                            vocabulary=vocabulary, quote=False).draft()
+            else:
+                scene = ask(ctx.model, "holodeck_scene", payload, HolodeckSceneReply, seed=ctx.seed,
+                            vocabulary=vocabulary)
             env, log = build_scene(brief, scene, ctx.catalog, ctx.rng, env_id=env_id, generator=self.name,
                                    grid=self.grid, max_nodes=self.max_nodes)
         except LogicEnvEvalError as exc:

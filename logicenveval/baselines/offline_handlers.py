@@ -27,6 +27,7 @@ from logicenveval.generators.realise import task_objects
 from logicenveval.llm.analysis import Factor, analyse
 from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.offline import handler
+from logicenveval.llm.scene_words import keyed, keyed_selection
 from logicenveval.model.rooms import room_type_of
 from logicenveval.scene.guessed_layout import guess_coordinates
 
@@ -225,7 +226,10 @@ def holodeck_scene(payload: dict[str, Any], request: ChatRequest) -> dict[str, A
             objects.append({"id": f"{cat}_{room['id']}_{k}", "category": cat, "room": room["id"], "role": None,
                             "placement": catalog.categories[cat].placement[0], "attributes": {},
                             "states": dict(catalog.categories[cat].default_states)})
-    return {"rooms": rooms, "objects": objects, "relations": _relations(objects, catalog)}
+    relations = _relations(objects, catalog)
+    if keyed(request):  # protocol 3: the same objects, keyed by role
+        return {"rooms": rooms, **keyed_selection(objects), "relations": relations}
+    return {"rooms": rooms, "objects": objects, "relations": relations}
 
 
 def _relations(objects: list[dict[str, Any]], catalog: Catalog) -> list[dict[str, Any]]:

@@ -16,12 +16,17 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, model_validat
 from logicenveval.llm import meaning
 from logicenveval.llm.meaning import MeaningError
 from logicenveval.llm.replies import (
+    MAX_OTHER_OBJECTS,
     ObjectDraft,
+    OtherObjectWire,
     PlacedObject,
     RelationDraft,
+    RoleObjectWire,
     RoomDraft,
+    SelectionWire,
     bind_objects,
 )
+from logicenveval.llm.vocab import KEYS
 
 _F = ConfigDict(frozen=True, extra="ignore")
 
@@ -92,3 +97,38 @@ class HolodeckSceneReply(BaseModel):
                 raise MeaningError(problem)
         bound = bind_objects(list(self.objects), info)
         return self if bound == list(self.objects) else self.model_copy(update={"objects": bound})
+
+
+class HolodeckSceneWire(BaseModel):
+    """Holodeck's language stages in one reply: floor plan, objects (one per required role, keyed
+    by the role, then the others), spatial relations (no coordinates: its own constraint solver
+    places the objects)."""
+
+    model_config = ConfigDict(frozen=True, extra="ignore")
+    rooms: list[RoomDraft] = Field(min_length=1)
+    role_objects: dict[str, RoleObjectWire] = Field(
+        description="one object per required role, keyed by the role's name (its object id)",
+        json_schema_extra={KEYS: "required_roles"})
+    other_objects: list[OtherObjectWire] = Field(
+        max_length=MAX_OTHER_OBJECTS,
+        description="furniture that holds the role objects and objects typical of each room")
+    relations: list[RelationDraft] = Field(default_factory=list)
+
+    @model_validator(mode="after")
+    def _meaningful(self, info: ValidationInfo) -> HolodeckSceneWire:
+        """The objects read and checked as LogicEnvGen's keyed selection (`SelectionWire`), no room
+        adjacent to itself: protocol 3 asks every method's scene the same way."""
+        if meaning.enabled(info.context):
+            problem = meaning.adjacency_problem([(r.id, r.adjacent_to) for r in self.rooms])
+            if problem:
+                raise MeaningError(problem)
+        selection = SelectionWire.model_validate(
+            {"role_objects": self.role_objects, "other_objects": self.other_objects}, context=info.context)
+        if selection.role_objects == self.role_objects and selection.other_objects == self.other_objects:
+            return self
+        return self.model_copy(update={"role_objects": selection.role_objects, "other_objects": selection.other_objects})
+
+    def draft(self) -> HolodeckSceneReply:
+        objects = SelectionWire.model_construct(role_objects=self.role_objects,
+                                                other_objects=self.other_objects).draft().objects
+        return HolodeckSceneReply.model_construct(rooms=self.rooms, objects=objects, relations=self.relations)

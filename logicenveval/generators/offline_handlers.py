@@ -18,6 +18,7 @@ from logicenveval.generators.realise import task_objects
 from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.offline import handler
 from logicenveval.llm.placement import described_placements
+from logicenveval.llm.scene_words import keyed, keyed_selection
 from logicenveval.model.rooms import room_type_of
 
 #: typical floor area (m²) per room type
@@ -200,19 +201,9 @@ def select_objects(payload: dict[str, Any], request: ChatRequest) -> dict[str, A
                 "placement": catalog.categories[cat].placement[0], "attributes": {}, "states": {},
                 "description": f"a {cat.replace('_', ' ')} typical of a {rtype}",
             })
-    return _selection_wire(objects) if _keyed(request) else {"objects": objects}
+    return keyed_selection(objects) if keyed(request) else {"objects": objects}
 
 
-def _keyed(request: ChatRequest) -> bool:
-    """Whether the request asks for the role objects keyed by role (protocol 3)."""
-    return "role_objects" in ((request.schema or {}).get("properties") or {})
-
-
-def _selection_wire(objects: list[dict[str, Any]]) -> dict[str, Any]:
-    """`objects` in the keyed shape of protocol 3: a role object's id is its role's name."""
-    fields = ("category", "room", "placement", "attributes", "states")
-    return {"role_objects": {o["role"]: {k: o[k] for k in fields} for o in objects if o["role"]},
-            "other_objects": [{"id": o["id"], **{k: o[k] for k in fields}} for o in objects if not o["role"]]}
 
 
 @handler("spatial_relations")
