@@ -26,7 +26,7 @@ from logicenveval.llm.replies import (
     SelectionWire,
     bind_objects,
 )
-from logicenveval.llm.vocab import KEYS
+from logicenveval.llm.vocab import AT_MOST, KEYS
 
 _F = ConfigDict(frozen=True, extra="ignore")
 
@@ -112,7 +112,8 @@ class HolodeckSceneWire(BaseModel):
     other_objects: list[OtherObjectWire] = Field(
         max_length=MAX_OTHER_OBJECTS,
         description="furniture that holds the role objects and objects typical of each room")
-    relations: list[RelationDraft] = Field(default_factory=list)
+    #: at most one per object it may list (`relation_slots`): a looping reply ends
+    relations: list[RelationDraft] = Field(default_factory=list, json_schema_extra={AT_MOST: "relation_slots"})
 
     @model_validator(mode="after")
     def _meaningful(self, info: ValidationInfo) -> HolodeckSceneWire:
