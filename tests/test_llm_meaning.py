@@ -357,9 +357,9 @@ def test_a_keyed_selection_is_read_where_only_one_reading_exists() -> None:
 def _kitchen_selection_schema() -> tuple[dict[str, Any], dict[str, Any]]:
     from logicenveval.benchmark import load_task
     from logicenveval.domain.catalog import load_catalog
-    from logicenveval.llm.scene_words import selection_words
     from logicenveval.llm.ask import reply_schema
     from logicenveval.llm.replies import SelectionWire
+    from logicenveval.llm.scene_words import selection_words
     from logicenveval.llm.vocab import specialise
 
     task, catalog = load_task("kitchen_dish_cleanup"), load_catalog()
