@@ -458,7 +458,7 @@ BLOCKS: dict[str, Callable[[], str]] = {
     "reference": block_reference, "ablation": block_ablation, "oracle": block_oracle,
     "brief": block_brief, "faudr-mut": block_faudr_mut, "baselines": block_baselines,
     "task-stats": block_task_stats, "selectors": block_selectors, "real": block_real,
-    "stability": block_stability, "validity": block_validity, "validity_before": block_validity_before,
+    "stability": block_stability, "validity": block_validity, "validity-before": block_validity_before,
 }
 
 
