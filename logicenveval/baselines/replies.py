@@ -16,17 +16,16 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, model_validat
 from logicenveval.llm import meaning
 from logicenveval.llm.meaning import MeaningError
 from logicenveval.llm.replies import (
-    MAX_OTHER_OBJECTS,
     ObjectDraft,
-    OtherObjectWire,
+    OtherObjects,
     PlacedObject,
     RelationDraft,
-    RoleObjectWire,
+    RoleObjects,
     RoomDraft,
     SelectionWire,
     bind_objects,
 )
-from logicenveval.llm.vocab import AT_MOST, KEYS
+from logicenveval.llm.vocab import AT_MOST
 
 _F = ConfigDict(frozen=True, extra="ignore")
 
@@ -106,12 +105,8 @@ class HolodeckSceneWire(BaseModel):
 
     model_config = ConfigDict(frozen=True, extra="ignore")
     rooms: list[RoomDraft] = Field(min_length=1)
-    role_objects: dict[str, RoleObjectWire] = Field(
-        description="one object per required role, keyed by the role's name (its object id)",
-        json_schema_extra={KEYS: "required_roles"})
-    other_objects: list[OtherObjectWire] = Field(
-        max_length=MAX_OTHER_OBJECTS,
-        description="furniture that holds the role objects and objects typical of each room")
+    role_objects: RoleObjects
+    other_objects: OtherObjects
     #: at most one per object it may list (`relation_slots`): a looping reply ends
     relations: list[RelationDraft] = Field(default_factory=list, json_schema_extra={AT_MOST: "relation_slots"})
 

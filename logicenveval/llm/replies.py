@@ -199,14 +199,20 @@ class ObjectsReply(BaseModel):
         return self if bound == list(self.objects) else self.model_copy(update={"objects": bound})
 
 
+#: the fields a scene object's wire shares (protocol 3): one place, the same schema for each
+SceneCategory = Annotated[str, Vocab("categories"), Field(description="a catalog category name")]
+SceneRoom = Annotated[str, Vocab("rooms")]
+ScenePlacement = Annotated[str, Vocab("placements"), Field(
+    description="'floor', 'wall', 'ceiling', 'on:<object id>' or 'inside:<object id>'")]
+
+
 class RoleObjectWire(BaseModel):
     """The object of one role (its id and role are the role's name)."""
 
     model_config = _F
-    category: Annotated[str, Vocab("categories")] = Field(description="a catalog category name")
-    room: Annotated[str, Vocab("rooms")]
-    placement: Annotated[str, Vocab("placements")] = Field(
-        description="'floor', 'wall', 'ceiling', 'on:<object id>' or 'inside:<object id>'")
+    category: SceneCategory
+    room: SceneRoom
+    placement: ScenePlacement
     attributes: dict[str, str] = Field(default_factory=dict)
     states: dict[str, bool] = Field(default_factory=dict)
 
@@ -216,10 +222,9 @@ class OtherObjectWire(BaseModel):
 
     model_config = _F
     id: Annotated[str, Vocab("object_ids")] = Field(description="unique object id, e.g. 'sofa_1'")
-    category: Annotated[str, Vocab("categories")] = Field(description="a catalog category name")
-    room: Annotated[str, Vocab("rooms")]
-    placement: Annotated[str, Vocab("placements")] = Field(
-        description="'floor', 'wall', 'ceiling', 'on:<object id>' or 'inside:<object id>'")
+    category: SceneCategory
+    room: SceneRoom
+    placement: ScenePlacement
     attributes: dict[str, str] = Field(default_factory=dict)
     states: dict[str, bool] = Field(default_factory=dict)
 
@@ -228,6 +233,15 @@ class OtherObjectWire(BaseModel):
 #: selection over all 25 tasks has 11 (lamp_or_pillow_fetch, `benchmarks/reply_bounds.py`), times
 #: 1.5 as every measured bound; a looping reply ends here
 MAX_OTHER_OBJECTS = 17
+
+
+#: a scene's objects from protocol 3 on (LogicEnvGen's selection, Holodeck-like's scene)
+RoleObjects = Annotated[dict[str, RoleObjectWire], Field(
+    description="one object per required role, keyed by the role's name (its object id)",
+    json_schema_extra={KEYS: "required_roles"})]
+OtherObjects = Annotated[list[OtherObjectWire], Field(
+    max_length=MAX_OTHER_OBJECTS,
+    description="furniture that holds the role objects and objects typical of each room")]
 
 
 def _role_word(vocabulary: dict[str, Any], name: str, role: str, value: str) -> str | None:
@@ -251,12 +265,8 @@ class SelectionWire(BaseModel):
     """The objects of the scene: one per required role, keyed by the role, then the others."""
 
     model_config = _F
-    role_objects: dict[str, RoleObjectWire] = Field(
-        description="one object per required role, keyed by the role's name (its object id)",
-        json_schema_extra={KEYS: "required_roles"})
-    other_objects: list[OtherObjectWire] = Field(
-        max_length=MAX_OTHER_OBJECTS,
-        description="furniture that holds the role objects and objects typical of each room")
+    role_objects: RoleObjects
+    other_objects: OtherObjects
 
     @model_validator(mode="after")
     def _checked(self, info: ValidationInfo) -> SelectionWire:
@@ -316,13 +326,17 @@ class SelectionWire(BaseModel):
             objects=[*roles, *(ObjectDraft(**o.model_dump()) for o in self.other_objects)])
 
 
+#: a relation's fields, the same in every reply that writes relations
+RelationType = Annotated[str, Vocab("relation_types"), Field(
+    description="edge, center, wall_mounted, on, inside, near, far, above, in_front_of, side_of, center_aligned, face_to")]
+RelationArgs = Annotated[list[Annotated[str, Vocab("object_ids")]], Field(min_length=1, max_length=2,
+                                                                          description="object ids")]
+
+
 class RelationDraft(BaseModel):
     model_config = _F
-    type: Annotated[str, Vocab("relation_types")] = Field(
-        description="edge, center, wall_mounted, on, inside, near, far, above, "
-        "in_front_of, side_of, center_aligned, face_to")
-    args: list[Annotated[str, Vocab("object_ids")]] = Field(min_length=1, max_length=2,
-                                                            description="object ids")
+    type: RelationType
+    args: RelationArgs
 
     @model_validator(mode="after")
     def _arity(self) -> RelationDraft:
@@ -346,11 +360,8 @@ class RelationItemWire(BaseModel):
     checker's other findings (`RelationsWire.split`), not by refusing the whole reply."""
 
     model_config = _F
-    type: Annotated[str, Vocab("relation_types")] = Field(
-        description="edge, center, wall_mounted, on, inside, near, far, above, "
-        "in_front_of, side_of, center_aligned, face_to")
-    args: list[Annotated[str, Vocab("object_ids")]] = Field(min_length=1, max_length=2,
-                                                            description="object ids")
+    type: RelationType
+    args: RelationArgs
 
 
 # A scene's relations from protocol 3 on: at most one per object (`AT_MOST` over
