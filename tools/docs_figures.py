@@ -295,7 +295,8 @@ def block_validity_before() -> str:
         config = json.loads((path.parent / "config.json").read_text())
         if pack_protocol(config) < 3:
             continue
-        after = json.loads(path.read_text()).get("llm", {})
+        recorded = json.loads(path.read_text())
+        after = recorded.get("llm", {})
         with tempfile.TemporaryDirectory() as tmp:
             before = replay(path.parent, Path(tmp), protocol=2).get("llm", {})
         head = ("| method | request kind | protocol 2: questions | valid first (%) | valid (%) | cut | "
@@ -310,7 +311,7 @@ def block_validity_before() -> str:
                               [str(side["questions"]), f"{100 * side['valid_first_share']:.1f}",
                                f"{100 * side['valid_share']:.1f}", str(side["truncated"])])
                 rows.append(f"| {gen} | {kind} | " + " | ".join(cells) + " |")
-        out += [*([""] if out else []), f"*{_model_label(json.loads(path.read_text()))}*", "", *rows]
+        out += [*([""] if out else []), f"*{_model_label(recorded)}*", "", *rows]
     return "\n".join(out) if out else "(no pack recorded with protocol 3)"
 
 

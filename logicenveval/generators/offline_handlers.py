@@ -204,8 +204,6 @@ def select_objects(payload: dict[str, Any], request: ChatRequest) -> dict[str, A
     return keyed_selection(objects) if keyed(request) else {"objects": objects}
 
 
-
-
 @handler("spatial_relations")
 def spatial_relations(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
     """Household conventions: big furniture against walls, companions near their anchor."""

@@ -6,7 +6,6 @@ model must produce, in the condition language of DESIGN.md §3 where conditions 
 
 from __future__ import annotations
 
-import re
 from typing import Annotated, Any, Literal, Union
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, model_validator
@@ -23,6 +22,7 @@ from logicenveval.llm.vocab import (
     OTHERS,
     Pattern,
     Vocab,
+    admits,
 )
 from logicenveval.model.repeats import repeated
 
@@ -248,13 +248,11 @@ def _role_word(vocabulary: dict[str, Any], name: str, role: str, value: str) -> 
     """Why `value` is not one of `role`'s own words `name@role` (the role's category, where its
     object may rest), None when it is or the request gives none."""
     words = vocabulary.get(f"{name}@{role}")
+    if words is None or admits(words, value):
+        return None
     if isinstance(words, Pattern):
-        if re.fullmatch(words.regex, value):
-            return None
         return f"role_objects.{role}: {name[:-1] if name.endswith('s') else name} {value!r} is not allowed (must match {words.regex})"
-    if words and value not in words:
-        return f"role_objects.{role}: {value!r} is not one of {list(words)}"
-    return None
+    return f"role_objects.{role}: {value!r} is not one of {list(words)}"
 
 
 # The objects of a scene from protocol 3 on. A list of objects with an optional `role` let

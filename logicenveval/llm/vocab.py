@@ -65,19 +65,23 @@ Vocabulary = Mapping[str, Words]
 SNAKE = Pattern(r"^[a-z][a-z0-9_]{0,39}$")
 
 
+def admits(words: Words, value: str) -> bool:
+    """Whether `value` is one of `words` (matches it, for a pattern; an empty list admits all)."""
+    if isinstance(words, Pattern):
+        return re.fullmatch(words.regex, value) is not None
+    return not words or value in words
+
+
 def _check(name: str) -> Any:
     def check(value: str, info: ValidationInfo) -> str:
         vocabulary = (info.context or {}).get(CONTEXT_KEY) or {}
         words = vocabulary.get(name)
-        if words is None:
+        if words is None or admits(words, value):
             return value
         if isinstance(words, Pattern):
-            if not re.fullmatch(words.regex, value):
-                raise ValueError(f"{value!r} is not a valid {name} (must match {words.regex})")
-        elif words and value not in words:
-            shown = ", ".join(list(words)[:40]) + (", ..." if len(words) > 40 else "")
-            raise ValueError(f"{value!r} is not one of the {name}: {shown}")
-        return value
+            raise ValueError(f"{value!r} is not a valid {name} (must match {words.regex})")
+        shown = ", ".join(list(words)[:40]) + (", ..." if len(words) > 40 else "")
+        raise ValueError(f"{value!r} is not one of the {name}: {shown}")
 
     return check
 
@@ -115,6 +119,7 @@ def specialise(schema: dict[str, Any], vocabulary: Vocabulary | None, *, bounds:
     (`copy.deepcopy` of the schema took most of this per request: ~0.2 s of LogicEnvGen's
     generation per run)."""
     defs = schema.get("$defs") or {}
+    inlined_defs: set[str] = set()
 
     def walk(node: Any, vocabulary: Vocabulary) -> Any:
         if isinstance(node, list):
@@ -161,11 +166,12 @@ def specialise(schema: dict[str, Any], vocabulary: Vocabulary | None, *, bounds:
         ref = value.get("$ref") if isinstance(value, dict) else None
         if not own or not isinstance(ref, str) or not ref.startswith("#/$defs/"):
             return None
+        inlined_defs.add(ref.removeprefix("#/$defs/"))
         inlined: dict[str, Any] = _bare(walk(defs[ref.removeprefix("#/$defs/")], {**vocabulary, **own}))
         return inlined
 
     result: dict[str, Any] = walk(schema, vocabulary or {})
-    if isinstance(result.get("$defs"), dict):  # a def every key inlined is sent no more
+    if inlined_defs and isinstance(result.get("$defs"), dict):  # a def every key inlined is sent no more
         text = json.dumps({k: v for k, v in result.items() if k != "$defs"}) + json.dumps(
             [d for d in result["$defs"].values()])
         result["$defs"] = {k: d for k, d in result["$defs"].items() if f'"#/$defs/{k}"' in text}
