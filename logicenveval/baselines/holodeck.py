@@ -69,15 +69,15 @@ class Holodeck:
         env_id = f"{self.name}-00"
         ctx.plan_attempts(1)
         try:
-            roles = sorted(brief.roles)
-            vocabulary = scene_vocabulary(brief.rooms, roles, [
-                *payload["categories"], *(r.category for r in brief.roles.values())], required_roles=roles)
+            role_names = sorted(brief.roles)
+            vocabulary = scene_vocabulary(brief.rooms, role_names, [
+                *payload["categories"], *(r.category for r in brief.roles.values())], required_roles=role_names)
             if protocol_of(ctx.model) >= 3:  # the scene's objects keyed by role, as LogicEnvGen's
-                vocabulary.update(selection_words(brief, roles, ctx.catalog))
+                vocabulary.update(selection_words(brief, role_names, ctx.catalog))
                 # its relations name role objects as well as the others
-                vocabulary["object_ids"] = Pattern(f"^({'|'.join([*map(re.escape, roles), OTHER_ID])})$")
+                vocabulary["object_ids"] = Pattern(f"^({'|'.join([*map(re.escape, role_names), OTHER_ID])})$")
                 # one relation per object it may list: its roles and at most MAX_OTHER_OBJECTS others
-                vocabulary["relation_slots"] = [*roles, *(f"other_{k}" for k in range(MAX_OTHER_OBJECTS))]
+                vocabulary["relation_slots"] = [*role_names, *(f"other_{k}" for k in range(MAX_OTHER_OBJECTS))]
                 scene = ask(ctx.model, "holodeck_scene", payload, HolodeckSceneWire, seed=ctx.seed,
                             vocabulary=vocabulary, quote=False).draft()
             else:
