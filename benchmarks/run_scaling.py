@@ -10,7 +10,9 @@ units: the index and main page, the task pages being written by the workers; and
 page), the `report RUN_DIR` time, and, last,
 `speedup_2_workers=<x> report_share=<r> total_s=<s>`: the 1-worker / 2-worker wall-time ratio,
 the leaderboard time / the 2-worker wall time, and the 2-worker wall time of the full default
-run (25 tasks x 4 generators). On a machine shared with other work, wall-time ratios understate
+run (25 tasks x 5 generators). The package is byte-compiled first (`--no-compile` leaves it),
+so the figures are those of an installed package, not of a checkout whose environment forbids
+writing bytecode. On a machine shared with other work, wall-time ratios understate
 the speed-up; compare it with the capacity line.
 
 Where the time goes (issue 38), from the run's own instrumentation (results.json `timing`:
@@ -122,12 +124,31 @@ def leaderboard_seconds(run_dir: Path) -> tuple[float, float]:
     return tail, time.perf_counter() - start
 
 
+def byte_compile() -> str:
+    """Byte-compile the package's modules into `__pycache__`, as `pip install` does for an
+    installed package and as any earlier run does unless writing bytecode is off: with
+    PYTHONDONTWRITEBYTECODE=1 and no `.pyc`, every process of a run (the run's, the fork
+    server's) compiles ~150 modules again, ~0.3 s of the serial start-up the workers wait for."""
+    import compileall
+
+    import logicenveval
+
+    root = Path(logicenveval.__file__).parent
+    ok = compileall.compile_dir(root, quiet=1)
+    return f"bytecode=compiled ({root.name}/**/__pycache__, ok={bool(ok)})"
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--tasks", default="all")
+    parser.add_argument("--no-compile", action="store_true",
+                        help="leave the package's bytecode as it is (with PYTHONDONTWRITEBYTECODE=1 "
+                             "and no .pyc, every process compiles the package's modules)")
     args = parser.parse_args()
     extra = ["--tasks", args.tasks]
     print("load (1, 5, 15 min): " + " ".join(f"{x:.2f}" for x in os.getloadavg()) + f"; cores {os.cpu_count()}")
+    print(f"bytecode=as found (PYTHONDONTWRITEBYTECODE={os.environ.get('PYTHONDONTWRITEBYTECODE', '')!r})"
+          if args.no_compile else byte_compile())
     print(f"machine_2_process_capacity={capacity():.2f}")
     walls: dict[int, float] = {}
     run_dir = ""

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from logicenveval.atomic import atomic_write_text
-from logicenveval.errors import RunStoreError
+from logicenveval.errors import ConfigError, RunStoreError
 from logicenveval.metrics.records import EnvSample, PhysicsSummary, UnitRecord
 from logicenveval.reporting.compare import compare_results
 from logicenveval.runner.config import RunConfig
@@ -28,6 +28,21 @@ def test_save_load_round_trip(tmp_path: Path) -> None:
     store.save(_record())
     assert store.load("g", "t1") == _record()
     assert not list(tmp_path.rglob("*.tmp"))
+
+
+def test_save_meanwhile_writes_what_save_writes_and_raises_at_wait(tmp_path: Path) -> None:
+    """The background commit: the same bytes as `save`, durable when `wait` returns; a write
+    that fails (here the unit's path is a folder) raises from `wait`, naming the path."""
+    RunStore(tmp_path / "a").save(_record())
+    wait = RunStore(tmp_path / "b").save_meanwhile(_record())
+    wait()
+    same = [RunStore(tmp_path / x).unit_path("g", "t1").read_bytes() for x in ("a", "b")]
+    assert same[0] == same[1]
+    blocked = RunStore(tmp_path / "c")
+    blocked.unit_path("g", "t1").mkdir(parents=True)
+    wait = blocked.save_meanwhile(_record())
+    with pytest.raises(ConfigError, match="not a regular file"):
+        wait()
 
 
 @pytest.mark.parametrize("damage", ["truncate", "edit", "garbage", "wrong_unit"])

@@ -98,6 +98,29 @@ class _Kind:
     purposes: set[str] = field(default_factory=set)
 
 
+#: the catalog's phrase tables by `id` (with the catalog, so an id is never reused): ~500 names
+#: and synonyms, the same for every description the process reads
+_PHRASES: dict[int, tuple[Catalog, dict[tuple[str, ...], str], dict[str, list[str]], int]] = {}
+
+
+def _phrase_tables(catalog: Catalog) -> tuple[dict[tuple[str, ...], str], dict[str, list[str]], int]:
+    """Each category name and synonym as words -> its category; last word -> the categories it
+    ends; the longest phrase's length. Callers only read them."""
+    hit = _PHRASES.get(id(catalog))
+    if hit is None or hit[0] is not catalog:
+        phrases: dict[tuple[str, ...], str] = {}
+        heads: dict[str, list[str]] = {}
+        for name, cat in catalog.categories.items():
+            for text in (name, *cat.synonyms):
+                phrase = words_of(text)
+                phrases.setdefault(phrase, name)
+                heads.setdefault(phrase[-1], []).append(name)
+        if len(_PHRASES) > 8:
+            _PHRASES.clear()
+        hit = _PHRASES[id(catalog)] = (catalog, phrases, heads, max(len(p) for p in phrases))
+    return hit[1], hit[2], hit[3]
+
+
 def name_objects(description: str, catalog: Catalog, rooms: Iterable[str] = ()) -> list[dict[str, Any]]:
     """Catalog categories and synonyms named in the description (longest match), read as a careful
     reader would: a bare noun means a kind already named ("the box" after "the red toy box") or,
@@ -105,14 +128,7 @@ def name_objects(description: str, catalog: Catalog, rooms: Iterable[str] = ()) 
     objects of one kind told apart by colour ("a red one", "the blue toy box"), by purpose ("two
     pet bowls, one for food and one for water"), as a spare ("the spare roll") or as levels of a
     shelf become one object each, named for what tells them apart, with the colour as attribute."""
-    phrases: dict[tuple[str, ...], str] = {}
-    heads: dict[str, list[str]] = {}
-    for name, cat in catalog.categories.items():
-        for text in (name, *cat.synonyms):
-            phrase = words_of(text)
-            phrases.setdefault(phrase, name)
-            heads.setdefault(phrase[-1], []).append(name)
-    longest = max(len(p) for p in phrases)
+    phrases, heads, longest = _phrase_tables(catalog)
     text = description.lower()
     toks = tokens(description)
     words = [w for w, _, _ in toks]

@@ -60,14 +60,14 @@ def _too_deep(text: str) -> bool:
 def _depth(value: Any) -> int:
     """How deep `value`'s containers nest (a scalar 0): for a parsed JSON text, the depth of its
     brackets outside strings, which `_too_deep` counts."""
+    if not isinstance(value, (dict, list)):
+        return 0
     deepest, level = 0, [(value, 1)]
     while level:
         node, depth = level.pop()
-        items = node.values() if isinstance(node, dict) else node if isinstance(node, list) else None
-        if items is None:
-            continue
         deepest = max(deepest, depth)
-        level.extend((item, depth + 1) for item in items)
+        items = node.values() if isinstance(node, dict) else node
+        level.extend((item, depth + 1) for item in items if isinstance(item, (dict, list)))
     return deepest
 
 

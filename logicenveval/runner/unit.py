@@ -562,7 +562,8 @@ def run_units(specs: tuple[UnitSpec, ...]) -> list[Committed]:
 def committed(spec: UnitSpec, record: UnitRecord) -> Committed:
     """The record with its inputs and figures, written to `units/` (atomic, durable) by the
     process that computed it when `spec.commit` (workers commit in parallel, the run's process
-    only gathers), then handed to `spec.on_commit`. The record handed back counts the write as
+    only gathers), then handed to `spec.on_commit`; the write's waits on the disk overlap the
+    figures and the hook, and it is done before the record is handed back. The record handed back counts the write as
     its `saving` phase (a file cannot time its own write), its figures as `results` and the hook
     as `report`; figures or a page that fail here are left to the run's process (a measured
     unit's page is not written without its figures)."""
@@ -572,7 +573,7 @@ def committed(spec: UnitSpec, record: UnitRecord) -> Committed:
     spent = dict(record.phases)
     with phases.collect() as more:
         with phases.phase("saving"):
-            RunStore(Path(spec.run_dir)).save(record)
+            saved = RunStore(Path(spec.run_dir)).save_meanwhile(record)
         metrics = None
         if record.measured:  # a unit its figures cannot be worked out of: the run's process
             with phases.phase("results"), contextlib.suppress(Exception):  # tries and says why
@@ -582,6 +583,8 @@ def committed(spec: UnitSpec, record: UnitRecord) -> Committed:
             with phases.phase("report"), contextlib.suppress(Exception):
                 spec.on_commit(spec, record, metrics)
                 paged = True
+        with phases.phase("saving"):
+            saved()
     for name, seconds in more.items():
         spent[name] = round(spent.get(name, 0.0) + seconds, 4)
     return Committed(record.model_copy(update={"phases": spent}), metrics, paged)
