@@ -1,12 +1,14 @@
 """The `auto` layout backend: picks Z3 or CP-SAT per sub-problem (floor, surface, walls) by measurement.
 
-Both backends enforce the same constraints, so the choice only moves time. Measured per floor with
-`benchmarks/layout.py --crossover` (5 rooms per size and area factor, three runs, 2026-11-23,
-docs/scene.md): on sparse floors of 4-7 boxes (6-8 % of the floor covered) Z3 is consistently
-faster (median time 0.60-0.82x CP-SAT's); on crowded ones (18-33 % covered) it is a toss-up
-(0.51-1.44x, differing between runs); from 8 boxes on CP-SAT wins (Z3 1.2-4.9x, minutes on large
-dense floors); 3 boxes are a tie. CP-SAT is faster on every surface, container, ceiling and wall
-sub-problem measured (Z3 3-13x slower: its model building dominates these ~1 ms solves).
+Both backends enforce the same constraints, so the choice only moves time. The rule is what
+`benchmarks/layout.py --crossover` measures. On 2026-11-23 (load 2-3.4) Z3 was faster on sparse
+floors of 4-7 boxes, so `auto` sent those to Z3. Since then exclusive walkway strips made CP-SAT's
+floor model a third to a half cheaper; re-measured on an idle machine (2026-11-27, 3-5 rooms per
+size, area factors 1, 0.35 and 0.25, docs/scene.md) Z3's median time is 1.05-1.92x CP-SAT's on
+every floor size and fill (3-8 boxes, 6-54 % covered) and up to 5.9x on 8 boxes; CP-SAT was
+already faster on every surface, container, ceiling and wall sub-problem (Z3 3-13x slower). So
+`auto` now sends every sub-problem to CP-SAT, as the default does, until a measurement finds a
+sub-problem where Z3 wins.
 """
 
 from __future__ import annotations
@@ -26,21 +28,11 @@ from logicenveval.scene.layout import (
 )
 from logicenveval.scene.relax import Dropped
 
-#: floors (packings with a walkway) of this many boxes go to Z3 when they are sparse
-Z3_FLOOR_BOXES = range(4, 8)
-#: ... i.e. when the boxes' footprints cover less than this share of the floor: between the
-#: measured sparse floors (6-8 %, Z3 faster in every run) and the crowded ones (18-33 %, no
-#: consistent winner, so CP-SAT stays); nothing was measured in between
-Z3_FLOOR_FILL = 0.15
-
 
 def choose(frame: tuple[int, int], boxes: Sequence[Box], walkway: int) -> Solver:
-    """The backend `auto` uses for one packing: Z3 for small sparse floors, CP-SAT otherwise."""
-    if not walkway or len(boxes) not in Z3_FLOOR_BOXES:
-        return "cpsat"
-    area = frame[0] * frame[1]
-    fill = sum(b.cells[0] * b.cells[1] for b in boxes) / area if area else 1.0
-    return "z3" if fill < Z3_FLOOR_FILL else "cpsat"
+    """The backend `auto` uses for one packing: CP-SAT, faster on every floor, surface and wall
+    sub-problem measured (see the module docstring)."""
+    return "cpsat"
 
 
 def pack(frame: tuple[int, int], boxes: Sequence[Box], *, seed: int, timeout_s: float,
