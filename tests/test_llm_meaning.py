@@ -457,3 +457,34 @@ def test_a_holodeck_scene_room_names_only_the_other_rooms_and_is_re_asked_unquot
     assert room["maxItems"] == 0
     assert "maxItems" not in specialise(reply_schema(HolodeckSceneReply), words, bounds=False)["$defs"]["RoomDraft"][
         "properties"]["adjacent_to"]
+
+
+def test_cot_environments_are_at_most_the_number_its_prompt_allows_from_protocol_4() -> None:
+    """CoT's prompt says "at most N environments"; from protocol 4 the grammar says it too
+    (`maxItems`), so a model repeating environments stops there. Protocols 1-3 send the schema
+    they always sent (their packs replay), and the offline model, which writes at most 9
+    environments a task, builds the same environments under 3 and 4."""
+    import numpy as np
+
+    from logicenveval.benchmark import load_task
+    from logicenveval.domain.catalog import load_catalog
+    from logicenveval.generators.base import GenerationContext, make_generator, unit_seed
+    from logicenveval.llm.offline import OfflineModel
+
+    task, catalog = load_task("kitchen_dish_cleanup"), load_catalog()
+    envs, schemas = {}, {}
+    for protocol in (3, 4):
+        model = OfflineModel()
+        model.reply_protocol = protocol  # type: ignore[attr-defined]
+        sent: list[ChatRequest] = []
+        complete = model.complete
+        model.complete = lambda request, _c=complete, _s=sent: (_s.append(request), _c(request))[1]  # type: ignore[method-assign]
+        ctx = GenerationContext(model=model, catalog=catalog, seed=0,
+                                rng=np.random.default_rng(unit_seed(0, "cot", task.id)))
+        envs[protocol] = [e.model_dump_json() for e in make_generator("cot").generate(task.brief(), ctx).envs]
+        (request,) = sent
+        schemas[protocol] = request.schema
+        assert "x-at-most" not in request.messages[0]["content"] + request.messages[1]["content"]
+    assert schemas[4]["properties"]["environments"]["maxItems"] == 12  # CoT's max_environments
+    assert "maxItems" not in schemas[3]["properties"]["environments"]
+    assert envs[3] == envs[4] and envs[4]

@@ -17,7 +17,7 @@ from logicenveval.generators.base import (
     GenerationFailure,
     GenerationResult,
 )
-from logicenveval.llm.ask import ask
+from logicenveval.llm.ask import ask, protocol_of
 from logicenveval.model.task import TaskBrief
 
 
@@ -39,7 +39,8 @@ class CoT:
         ids = [f"{self.name}-{i:02d}" for i in range(self.max_environments)]
         ctx.plan_attempts(self.max_environments)
         try:
-            reply = ask(ctx.model, "cot_environments", payload, WrittenEnvironmentsReply, seed=ctx.seed)
+            reply = ask(ctx.model, "cot_environments", payload, WrittenEnvironmentsReply, seed=ctx.seed,
+                        vocabulary={"environment_slots": ids} if protocol_of(ctx.model) >= 4 else None)
         except LogicEnvEvalError as exc:
             return GenerationResult(
                 failures=[GenerationFailure(stage="cot_environments", message=str(exc))],

@@ -74,7 +74,9 @@ class WrittenEnvironmentsReply(BaseModel):
 
     model_config = _F
     reasoning: str = Field(default="", description="step-by-step reasoning about the situations")
-    environments: list[WrittenEnvironment] = Field(min_length=1)
+    #: at most one per environment slot the request gives (`environment_slots`, protocol 4 on):
+    #: the prompt's "at most N" in the grammar, so a looping reply ends
+    environments: list[WrittenEnvironment] = Field(min_length=1, json_schema_extra={AT_MOST: "environment_slots"})
 
 
 class HolodeckSceneReply(BaseModel):

@@ -35,12 +35,14 @@ _SPLIT = "=== user ==="
 #: (`MAX_TOKENS`), a cut reply re-asked with a larger bound, meaning checks (`llm.meaning`).
 #: 3: as 2, and the objects of a scene are asked keyed by role (`replies.SelectionWire`: one
 #: required object per role the situation requires, then at most `MAX_OTHER_OBJECTS` others).
+#: 4: as 3, and CoT's environments are a list of at most the number its prompt allows
+#: (`maxItems`, `baselines.cot`): Qwen2.5-Coder-1.5B wrote CoT replies past 16,700 tokens.
 #: A model built with `--model-args protocol=N` (`registry.make_model`) carries `reply_protocol`.
 #: Protocol 1 also keeps LogicEnvGen's question flow of those packs (`generators.plan`,
 #: `generators.construction`): no rule-(a) re-ask of the decomposition and one floor plan per
 #: task, since each extra question is a request the packs never recorded.
-PROTOCOL = 3
-PROTOCOLS = (1, 2, 3)
+PROTOCOL = 4
+PROTOCOLS = (1, 2, 3, 4)
 
 
 def protocol_of(model: Any) -> int:
