@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 import pytest
@@ -459,32 +460,68 @@ def test_a_holodeck_scene_room_names_only_the_other_rooms_and_is_re_asked_unquot
         "properties"]["adjacent_to"]
 
 
-def test_cot_environments_are_at_most_the_number_its_prompt_allows_from_protocol_4() -> None:
-    """CoT's prompt says "at most N environments"; from protocol 4 the grammar says it too
-    (`maxItems`), so a model repeating environments stops there. Protocols 1-3 send the schema
-    they always sent (their packs replay), and the offline model, which writes at most 9
-    environments a task, builds the same environments under 3 and 4."""
+def test_written_environments_are_bounded_from_protocol_4_and_never_cut_the_offline_content() -> None:
+    """CoT's prompt says "at most N environments", IFG asks one per intent; from protocol 4 the
+    grammar says so too, and bounds each environment's objects and relations to one per object
+    slot (`written_slots`), so a model repeating them stops. Protocols 1-3 send the schema they
+    always sent (their packs replay). The bounds hold all the offline model writes: on every task
+    CoT and IFG build the same environments under protocols 3 and 4."""
     import numpy as np
 
-    from logicenveval.benchmark import load_task
+    from logicenveval.benchmark import load_task, task_ids
     from logicenveval.domain.catalog import load_catalog
     from logicenveval.generators.base import GenerationContext, make_generator, unit_seed
     from logicenveval.llm.offline import OfflineModel
 
-    task, catalog = load_task("kitchen_dish_cleanup"), load_catalog()
-    envs, schemas = {}, {}
-    for protocol in (3, 4):
-        model = OfflineModel()
-        model.reply_protocol = protocol  # type: ignore[attr-defined]
-        sent: list[ChatRequest] = []
-        complete = model.complete
-        model.complete = lambda request, _c=complete, _s=sent: (_s.append(request), _c(request))[1]  # type: ignore[method-assign]
-        ctx = GenerationContext(model=model, catalog=catalog, seed=0,
-                                rng=np.random.default_rng(unit_seed(0, "cot", task.id)))
-        envs[protocol] = [e.model_dump_json() for e in make_generator("cot").generate(task.brief(), ctx).envs]
-        (request,) = sent
-        schemas[protocol] = request.schema
-        assert "x-at-most" not in request.messages[0]["content"] + request.messages[1]["content"]
-    assert schemas[4]["properties"]["environments"]["maxItems"] == 12  # CoT's max_environments
-    assert "maxItems" not in schemas[3]["properties"]["environments"]
-    assert envs[3] == envs[4] and envs[4]
+    catalog = load_catalog()
+    for task_id in task_ids():
+        task = load_task(task_id)
+        for generator in ("cot", "ifg"):
+            envs, schemas = {}, {}
+            for protocol in (3, 4):
+                model = OfflineModel()
+                model.reply_protocol = protocol  # type: ignore[attr-defined]
+                sent: list[ChatRequest] = []
+                complete = model.complete
+                model.complete = lambda r, _c=complete, _s=sent: (_s.append(r), _c(r))[1]  # type: ignore[method-assign]
+                ctx = GenerationContext(model=model, catalog=catalog, seed=0,
+                                        rng=np.random.default_rng(unit_seed(0, generator, task.id)))
+                envs[protocol] = [e.model_dump_json() for e in make_generator(generator).generate(task.brief(), ctx).envs]
+                request = sent[-1]
+                schemas[protocol] = request.schema
+                assert "x-at-most" not in request.messages[0]["content"] + request.messages[1]["content"]
+            assert envs[3] == envs[4] and envs[4], (task_id, generator)
+            bounded = schemas[4]["$defs"]["WrittenEnvironment"]["properties"]
+            assert schemas[4]["properties"]["environments"]["maxItems"] == (12 if generator == "cot" else 1)
+            assert bounded["objects"]["maxItems"] == bounded["relations"]["maxItems"] == len(task.roles) + 17
+            assert "maxItems" not in schemas[3]["properties"]["environments"]
+
+
+QWEN_CACHE = (Path(__file__).resolve().parents[1] / "reports" / "real" / "qwen2.5-coder-1.5b-instruct-q4_k_m"
+              / "llm_cache.sqlite")
+
+
+@pytest.mark.skipif(not QWEN_CACHE.is_file(), reason="the Qwen pack's reply cache is not committed")
+def test_protocol_4_bounds_what_a_real_model_repeated_under_protocol_3() -> None:
+    """Qwen2.5-Coder-1.5B's `ifg_environment` replies under protocol 3 (the pack's reply cache)
+    ran to their token bound repeating things: 11 environments begun where one was asked, and
+    228 relations (`on(plate, counter)`, `on(plate, sink)`, ...) in one kitchen. Protocol 4's
+    grammar closes those lists at 1 environment and one relation per object slot."""
+    import sqlite3
+
+    from logicenveval.baselines.replies import WrittenEnvironmentsReply, written_slots
+    from logicenveval.benchmark import load_task
+    from logicenveval.llm.ask import reply_schema
+    from logicenveval.llm.base import TRUNCATION_MARK
+    from logicenveval.llm.vocab import specialise
+
+    with sqlite3.connect(f"file:{QWEN_CACHE}?mode=ro", uri=True) as db:
+        cut = [r for (r,) in db.execute("SELECT reply FROM replies WHERE kind = 'ifg_environment'")
+               if r.endswith(TRUNCATION_MARK)]
+    kitchen = load_task("kitchen_dish_cleanup")
+    schema = specialise(reply_schema(WrittenEnvironmentsReply), written_slots(sorted(kitchen.roles), 1))
+    most_relations = schema["$defs"]["WrittenEnvironment"]["properties"]["relations"]["maxItems"]
+    assert schema["properties"]["environments"]["maxItems"] == 1
+    assert most_relations == len(kitchen.roles) + 17
+    assert any(r.count('"rooms":') > 1 for r in cut)  # a second environment begun: not from protocol 4
+    assert any(r.count('"args":') > most_relations and '"id":"kitchen"' in r for r in cut)

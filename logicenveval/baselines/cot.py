@@ -9,7 +9,7 @@ mistakes, the floor plan's included, are part of what the benchmark measures.
 from __future__ import annotations
 
 from logicenveval.baselines.drafts import env_from_draft
-from logicenveval.baselines.replies import WrittenEnvironmentsReply
+from logicenveval.baselines.replies import WrittenEnvironmentsReply, written_slots
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.base import (
     Attempt,
@@ -40,7 +40,8 @@ class CoT:
         ctx.plan_attempts(self.max_environments)
         try:
             reply = ask(ctx.model, "cot_environments", payload, WrittenEnvironmentsReply, seed=ctx.seed,
-                        vocabulary={"environment_slots": ids} if protocol_of(ctx.model) >= 4 else None)
+                        vocabulary=written_slots(sorted(brief.roles), self.max_environments)
+                        if protocol_of(ctx.model) >= 4 else None)
         except LogicEnvEvalError as exc:
             return GenerationResult(
                 failures=[GenerationFailure(stage="cot_environments", message=str(exc))],

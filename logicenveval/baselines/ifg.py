@@ -10,7 +10,7 @@ run's generator, so a run is reproducible and different runs sample differently.
 from __future__ import annotations
 
 from logicenveval.baselines.drafts import env_from_draft
-from logicenveval.baselines.replies import WrittenEnvironmentsReply
+from logicenveval.baselines.replies import WrittenEnvironmentsReply, written_slots
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.base import (
     Attempt,
@@ -18,7 +18,7 @@ from logicenveval.generators.base import (
     GenerationFailure,
     GenerationResult,
 )
-from logicenveval.llm.ask import ask
+from logicenveval.llm.ask import ask, protocol_of
 from logicenveval.llm.replies import TrajectoriesReply
 from logicenveval.model.task import TaskBrief
 
@@ -57,6 +57,8 @@ class IFG:
                 failures=[GenerationFailure(stage="ifg_intents", message=str(exc))],
                 attempts=[Attempt(id=i, stage="ifg_intents", reason=str(exc)) for i in ids])
         categories = ctx.catalog.generator_categories()
+        # one environment per intent, bounded from protocol 4 on (`written_slots`)
+        slots = written_slots(sorted(brief.roles), 1) if protocol_of(ctx.model) >= 4 else None
         envs = []
         failures = []
         attempts = []
@@ -66,7 +68,8 @@ class IFG:
             try:
                 reply = ask(ctx.model, "ifg_environment", {"task": task, "intent": list(intent.facts),
                                                            "categories": categories},
-                            WrittenEnvironmentsReply, temperature=self.env_temperature, seed=seeds[i + 1])
+                            WrittenEnvironmentsReply, temperature=self.env_temperature, seed=seeds[i + 1],
+                            vocabulary=slots)
                 draft = reply.environments[0]
                 envs.append(env_from_draft(brief, env_id=env_id, generator=self.name, draft=draft,
                                            extra={"intent": list(intent.facts), "situation": intent.description}))

@@ -9,6 +9,7 @@ placements only: its own solver places them.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, model_validator
@@ -16,6 +17,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, model_validat
 from logicenveval.llm import meaning
 from logicenveval.llm.meaning import MeaningError
 from logicenveval.llm.replies import (
+    MAX_OTHER_OBJECTS,
     ObjectDraft,
     OtherObjects,
     PlacedObject,
@@ -65,8 +67,11 @@ class WrittenEnvironment(BaseModel):
     rooms: list[WrittenRoom] = Field(min_length=1)
     doors: list[WrittenDoor] = Field(default_factory=list)
     windows: list[WrittenWindow] = Field(default_factory=list)
-    objects: list[PlacedObject] = Field(min_length=1, description="positions in the same world frame as the rooms")
-    relations: list[RelationDraft] = Field(default_factory=list)
+    #: objects and relations at most one per object slot (`object_slots`: the roles and
+    #: `MAX_OTHER_OBJECTS` others, protocol 4 on; `written_slots`), so a looping reply ends
+    objects: list[PlacedObject] = Field(min_length=1, description="positions in the same world frame as the rooms",
+                                        json_schema_extra={AT_MOST: "object_slots"})
+    relations: list[RelationDraft] = Field(default_factory=list, json_schema_extra={AT_MOST: "object_slots"})
 
 
 class WrittenEnvironmentsReply(BaseModel):
@@ -74,9 +79,18 @@ class WrittenEnvironmentsReply(BaseModel):
 
     model_config = _F
     reasoning: str = Field(default="", description="step-by-step reasoning about the situations")
-    #: at most one per environment slot the request gives (`environment_slots`, protocol 4 on):
-    #: the prompt's "at most N" in the grammar, so a looping reply ends
+    #: at most as many as the request asks for (`environment_slots`, protocol 4 on: CoT's "at
+    #: most N", IFG's one per intent), so a model repeating environments stops
     environments: list[WrittenEnvironment] = Field(min_length=1, json_schema_extra={AT_MOST: "environment_slots"})
+
+
+def written_slots(roles: Sequence[str], environments: int) -> dict[str, list[str]]:
+    """The bounds of a `WrittenEnvironmentsReply` from request protocol 4 on (`AT_MOST`): at most
+    `environments` environments, each with at most one object, and one relation, per role plus
+    `MAX_OTHER_OBJECTS` others. Qwen2.5-Coder-1.5B's IFG replies under protocol 3 repeated a whole
+    environment, or `on(plate, counter)`, `on(plate, sink)`, ... until their token bound."""
+    return {"environment_slots": [f"environment_{k}" for k in range(environments)],
+            "object_slots": [*roles, *(f"other_{k}" for k in range(MAX_OTHER_OBJECTS))]}
 
 
 class HolodeckSceneReply(BaseModel):

@@ -35,8 +35,11 @@ _SPLIT = "=== user ==="
 #: (`MAX_TOKENS`), a cut reply re-asked with a larger bound, meaning checks (`llm.meaning`).
 #: 3: as 2, and the objects of a scene are asked keyed by role (`replies.SelectionWire`: one
 #: required object per role the situation requires, then at most `MAX_OTHER_OBJECTS` others).
-#: 4: as 3, and CoT's environments are a list of at most the number its prompt allows
-#: (`maxItems`, `baselines.cot`): Qwen2.5-Coder-1.5B wrote CoT replies past 16,700 tokens.
+#: 4: as 3, and the environments CoT and IFG write are bounded in the grammar
+#: (`baselines.replies.written_slots`): at most as many environments as asked for (CoT's "at
+#: most N", IFG's one per intent), and per environment at most one object, and one relation, per
+#: role plus `MAX_OTHER_OBJECTS` others (Qwen2.5-Coder-1.5B's protocol-3 replies repeated
+#: environments and relations until their token bound).
 #: A model built with `--model-args protocol=N` (`registry.make_model`) carries `reply_protocol`.
 #: Protocol 1 also keeps LogicEnvGen's question flow of those packs (`generators.plan`,
 #: `generators.construction`): no rule-(a) re-ask of the decomposition and one floor plan per

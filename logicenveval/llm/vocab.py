@@ -44,9 +44,9 @@ AT_LEAST = "x-at-least"
 KEYS = "x-keys"
 #: JSON-schema key of a list of at most one item per word of a vocabulary that only some requests
 #: give (`maxItems`; the relations of a scene: at most one per object, from protocol 3 on, whose
-#: requests give `relation_slots`; CoT's environments, at most as many as its prompt allows, from
-#: protocol 4 on: `environment_slots`). Removed from the schema sent, so a request without the
-#: vocabulary sends the schema it always did
+#: requests give `relation_slots`; the environments CoT and IFG write, and their objects and
+#: relations, from protocol 4 on: `environment_slots`, `object_slots`). Removed from the schema
+#: sent, so a request without the vocabulary sends the schema it always did
 AT_MOST = "x-at-most"
 #: validation-context key under which `ask` passes the vocabulary
 CONTEXT_KEY = "vocabulary"
