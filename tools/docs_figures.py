@@ -284,8 +284,8 @@ def block_validity() -> str:
 
 
 def block_validity_before() -> str:
-    """Per request kind, a pack's valid replies under the protocol it was recorded with next to
-    those its cache holds from protocol 2 (the replies recorded before protocol 3's keyed scene,
+    """Per request kind, a pack's valid replies under the protocol it was recorded with (3 on) next
+    to those its cache holds from protocol 2 (the replies recorded before protocol 3's keyed scene,
     replayed with `llm_validity.replay(..., protocol=2)`: questions never recorded under 2 are
     not measured); packs recorded before protocol 3 have no such column."""
     from llm_validity import pack_protocol, replay  # type: ignore[import-not-found]
@@ -300,7 +300,7 @@ def block_validity_before() -> str:
         with tempfile.TemporaryDirectory() as tmp:
             before = replay(path.parent, Path(tmp), protocol=2).get("llm", {})
         head = ("| method | request kind | protocol 2: questions | valid first (%) | valid (%) | cut | "
-                "protocol 3: questions | valid first (%) | valid (%) | cut |\n"
+                f"protocol {pack_protocol(config)}: questions | valid first (%) | valid (%) | cut |\n"
                 "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|")
         rows = [head]
         for gen in after:
