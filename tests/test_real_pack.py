@@ -58,7 +58,7 @@ def test_a_pack_replays_with_the_protocol_it_was_recorded_with() -> None:
     recorded = {pack.name: pack_protocol(json.loads((pack / "config.json").read_text(encoding="utf-8")))
                 for pack in PACKS}
     assert recorded.get("SmolLM2-135M-Instruct.Q4_1", 1) == 1  # recorded before issue 39
-    assert recorded.get("qwen2.5-coder-1.5b-instruct-q4_k_m", 3) == 3  # recorded with protocol=3
+    assert recorded.get("qwen2.5-coder-1.5b-instruct-q4_k_m", 4) == 4  # recorded with protocol=4
 
 
 @pytest.mark.skipif(not SEED_RUNS, reason="no stability seed runs committed under reports/real/stability/")

@@ -286,8 +286,9 @@ def block_validity() -> str:
 def block_validity_before() -> str:
     """Per request kind, a pack's valid replies under the protocol it was recorded with (3 on) next
     to those its cache holds from protocol 2 (the replies recorded before protocol 3's keyed scene,
-    replayed with `llm_validity.replay(..., protocol=2)`: questions never recorded under 2 are
-    not measured); packs recorded before protocol 3 have no such column."""
+    replayed with `llm_validity.replay(..., protocol=2)`): per side the questions answered (a
+    question never recorded under protocol 2 is a cache miss, not measured, so not counted);
+    packs recorded before protocol 3 have no such column."""
     from llm_validity import pack_protocol, replay  # type: ignore[import-not-found]
 
     out: list[str] = []
@@ -299,16 +300,16 @@ def block_validity_before() -> str:
         after = recorded.get("llm", {})
         with tempfile.TemporaryDirectory() as tmp:
             before = replay(path.parent, Path(tmp), protocol=2).get("llm", {})
-        head = ("| method | request kind | protocol 2: questions | valid first (%) | valid (%) | cut | "
-                f"protocol {pack_protocol(config)}: questions | valid first (%) | valid (%) | cut |\n"
+        head = ("| method | request kind | protocol 2: answered | valid first (%) | valid (%) | cut | "
+                f"protocol {pack_protocol(config)}: answered | valid first (%) | valid (%) | cut |\n"
                 "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|")
         rows = [head]
         for gen in after:
             for kind in sorted(set(after[gen]) | set(before.get(gen, {}))):
                 cells = []
                 for side in (before.get(gen, {}).get(kind), after[gen].get(kind)):
-                    cells += (["-"] * 4 if not side else
-                              [str(side["questions"]), f"{100 * side['valid_first_share']:.1f}",
+                    cells += (["-"] * 4 if not side or not side.get("answered", side["questions"]) else
+                              [str(side.get("answered", side["questions"])), f"{100 * side['valid_first_share']:.1f}",
                                f"{100 * side['valid_share']:.1f}", str(side["truncated"])])
                 rows.append(f"| {gen} | {kind} | " + " | ".join(cells) + " |")
         out += [*([""] if out else []), f"*{_model_label(recorded)}*", "", *rows]
