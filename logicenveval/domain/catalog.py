@@ -7,10 +7,12 @@ synonyms and attribute domains.
 
 from __future__ import annotations
 
+import functools
 import json
+from collections.abc import Callable
 from functools import lru_cache
 from pathlib import Path
-from typing import Literal
+from typing import Literal, TypeVar
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
@@ -93,3 +95,24 @@ def reload_catalogs() -> None:
     """Forget every loaded catalog, so the next `load_catalog` reads its file again (the runner
     restores a catalog that a generator changed in place)."""
     _load.cache_clear()
+
+
+_T = TypeVar("_T")
+
+
+def per_catalog(build: Callable[[Catalog], _T]) -> Callable[[Catalog], _T]:
+    """`build(catalog)` done once per catalog object (by identity: a catalog is a pydantic model,
+    costly to hash and equal to its copies); the last 8 catalogs of the process are kept."""
+    built: list[tuple[Catalog, _T]] = []
+
+    @functools.wraps(build)
+    def once(catalog: Catalog) -> _T:
+        for cat, value in built:
+            if cat is catalog:
+                return value
+        value = build(catalog)
+        built.insert(0, (catalog, value))
+        del built[8:]
+        return value
+
+    return once

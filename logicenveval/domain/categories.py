@@ -34,7 +34,7 @@ from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
-from logicenveval.domain.catalog import Catalog
+from logicenveval.domain.catalog import Catalog, per_catalog
 from logicenveval.model.envspec import EnvSpec
 
 How = Literal["key", "synonym", "ai2thor_type"]
@@ -196,18 +196,10 @@ class Vocabulary:
         return {snake(n) for n in (category, *(cat.synonyms if cat else ()))}
 
 
-_VOCABULARIES: list[tuple[Catalog, Vocabulary]] = []
-
-
+@per_catalog
 def vocabulary(catalog: Catalog) -> Vocabulary:
     """The vocabulary of `catalog`, built once (the few catalogs of a process are kept)."""
-    for cat, vocab in _VOCABULARIES:
-        if cat is catalog:
-            return vocab
-    vocab = Vocabulary(catalog)
-    _VOCABULARIES.insert(0, (catalog, vocab))
-    del _VOCABULARIES[8:]
-    return vocab
+    return Vocabulary(catalog)
 
 
 class CategoryReport(BaseModel):

@@ -19,7 +19,7 @@ from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
-from logicenveval.domain.catalog import Catalog, load_catalog
+from logicenveval.domain.catalog import Catalog, load_catalog, per_catalog
 from logicenveval.domain.categories import vocabulary
 from logicenveval.llm.ask import ask
 from logicenveval.llm.base import ChatModel, ChatRequest
@@ -98,27 +98,19 @@ class _Kind:
     purposes: set[str] = field(default_factory=set)
 
 
-#: the catalog's phrase tables by `id` (with the catalog, so an id is never reused): ~500 names
-#: and synonyms, the same for every description the process reads
-_PHRASES: dict[int, tuple[Catalog, dict[tuple[str, ...], str], dict[str, list[str]], int]] = {}
-
-
+@per_catalog
 def _phrase_tables(catalog: Catalog) -> tuple[dict[tuple[str, ...], str], dict[str, list[str]], int]:
     """Each category name and synonym as words -> its category; last word -> the categories it
-    ends; the longest phrase's length. Callers only read them."""
-    hit = _PHRASES.get(id(catalog))
-    if hit is None or hit[0] is not catalog:
-        phrases: dict[tuple[str, ...], str] = {}
-        heads: dict[str, list[str]] = {}
-        for name, cat in catalog.categories.items():
-            for text in (name, *cat.synonyms):
-                phrase = words_of(text)
-                phrases.setdefault(phrase, name)
-                heads.setdefault(phrase[-1], []).append(name)
-        if len(_PHRASES) > 8:
-            _PHRASES.clear()
-        hit = _PHRASES[id(catalog)] = (catalog, phrases, heads, max(len(p) for p in phrases))
-    return hit[1], hit[2], hit[3]
+    ends; the longest phrase's length: ~500 names, the same for every description the process
+    reads. Callers only read them."""
+    phrases: dict[tuple[str, ...], str] = {}
+    heads: dict[str, list[str]] = {}
+    for name, cat in catalog.categories.items():
+        for text in (name, *cat.synonyms):
+            phrase = words_of(text)
+            phrases.setdefault(phrase, name)
+            heads.setdefault(phrase[-1], []).append(name)
+    return phrases, heads, max(len(p) for p in phrases)
 
 
 def name_objects(description: str, catalog: Catalog, rooms: Iterable[str] = ()) -> list[dict[str, Any]]:
