@@ -308,8 +308,9 @@ def block_validity_before() -> str:
             for kind in sorted(set(after[gen]) | set(before.get(gen, {}))):
                 cells = []
                 for side in (before.get(gen, {}).get(kind), after[gen].get(kind)):
-                    cells += (["-"] * 4 if not side or not side.get("answered", side["questions"]) else
-                              [str(side.get("answered", side["questions"])), f"{100 * side['valid_first_share']:.1f}",
+                    answered = side.get("answered", side["questions"]) if side else 0
+                    cells += (["-"] * 4 if not answered else
+                              [str(answered), f"{100 * side['valid_first_share']:.1f}",
                                f"{100 * side['valid_share']:.1f}", str(side["truncated"])])
                 rows.append(f"| {gen} | {kind} | " + " | ".join(cells) + " |")
         out += [*([""] if out else []), f"*{_model_label(recorded)}*", "", *rows]

@@ -39,7 +39,7 @@ from logicenveval.generators.base import (
 )
 from logicenveval.generators.construction import placement_fields
 from logicenveval.llm.ask import ask, protocol_of
-from logicenveval.llm.replies import MAX_OTHER_OBJECTS, ObjectDraft
+from logicenveval.llm.replies import ObjectDraft, object_slots
 from logicenveval.llm.scene_words import OTHER_ID, selection_words
 from logicenveval.llm.vocab import Pattern, scene_vocabulary
 from logicenveval.model.envspec import EnvSpec
@@ -77,7 +77,7 @@ class Holodeck:
                 # its relations name role objects as well as the others
                 vocabulary["object_ids"] = Pattern(f"^({'|'.join([*map(re.escape, role_names), OTHER_ID])})$")
                 # one relation per object it may list: its roles and at most MAX_OTHER_OBJECTS others
-                vocabulary["relation_slots"] = [*role_names, *(f"other_{k}" for k in range(MAX_OTHER_OBJECTS))]
+                vocabulary["relation_slots"] = object_slots(role_names)
                 scene = ask(ctx.model, "holodeck_scene", payload, HolodeckSceneWire, seed=ctx.seed,
                             vocabulary=vocabulary, quote=False).draft()
             else:

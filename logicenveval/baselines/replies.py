@@ -17,7 +17,6 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, model_validat
 from logicenveval.llm import meaning
 from logicenveval.llm.meaning import MeaningError
 from logicenveval.llm.replies import (
-    MAX_OTHER_OBJECTS,
     ObjectDraft,
     OtherObjects,
     PlacedObject,
@@ -26,6 +25,7 @@ from logicenveval.llm.replies import (
     RoomDraft,
     SelectionWire,
     bind_objects,
+    object_slots,
 )
 from logicenveval.llm.vocab import AT_MOST
 
@@ -90,7 +90,7 @@ def written_slots(roles: Sequence[str], environments: int) -> dict[str, list[str
     `MAX_OTHER_OBJECTS` others. Qwen2.5-Coder-1.5B's IFG replies under protocol 3 repeated a whole
     environment, or `on(plate, counter)`, `on(plate, sink)`, ... until their token bound."""
     return {"environment_slots": [f"environment_{k}" for k in range(environments)],
-            "object_slots": [*roles, *(f"other_{k}" for k in range(MAX_OTHER_OBJECTS))]}
+            "object_slots": object_slots(roles)}
 
 
 class HolodeckSceneReply(BaseModel):

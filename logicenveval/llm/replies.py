@@ -6,6 +6,7 @@ model must produce, in the condition language of DESIGN.md §3 where conditions 
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import Annotated, Any, Literal, Union
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, model_validator
@@ -233,6 +234,12 @@ class OtherObjectWire(BaseModel):
 #: selection over all 25 tasks has 11 (lamp_or_pillow_fetch, `benchmarks/reply_bounds.py`), times
 #: 1.5 as every measured bound; a looping reply ends here
 MAX_OTHER_OBJECTS = 17
+
+
+def object_slots(roles: Sequence[str]) -> list[str]:
+    """One word per object a scene may list from protocol 3 on, its roles then `MAX_OTHER_OBJECTS`
+    others: the vocabulary of an `AT_MOST` bound of one item per object."""
+    return [*roles, *(f"other_{k}" for k in range(MAX_OTHER_OBJECTS))]
 
 
 #: a scene's objects from protocol 3 on (LogicEnvGen's selection, Holodeck-like's scene)
