@@ -18,8 +18,9 @@ restricts the built-in row to the 12 tasks the reworded set rewords, for a like-
 Every run is computed afresh (`fresh=True`: a stored unit is never reused, since the run's
 fingerprint does not cover the reader's code) with the offline model's reply cache off.
 
-    python benchmarks/reader_generalisation.py            # all three sets (~5 min on 2 idle cores)
+    python benchmarks/reader_generalisation.py            # all three sets (~1-2 min on 2 cores)
     python benchmarks/reader_generalisation.py --smoke    # two tasks per set (~1 min)
+    python benchmarks/reader_generalisation.py --why      # and why each task lost environments
 
 Last line: `reader_generalisation built_in=<LogCov>/<SceVR>/<FauDR> reworded=... new=...`.
 """
@@ -53,14 +54,25 @@ def originals() -> list[str]:
 
 
 def run_set(tasks_dir: Path | None, ids: list[str], seed: int, workers: int,
-            output: Path) -> dict[str, dict[str, Any]]:
-    """Per-task metrics of offline LogicEnvGen on `ids` of `tasks_dir`."""
+            output: Path) -> tuple[dict[str, dict[str, Any]], dict[str, str]]:
+    """Per-task metrics of offline LogicEnvGen on `ids` of `tasks_dir`, and per task the first
+    reason an environment was lost (a failed generation, an ill-formed environment or a violated
+    constraint), so the weak spots can be read without opening the run."""
     config = RunConfig(model="offline", generators=(GENERATOR,), tasks=tuple(ids),
                        tasks_dir=None if tasks_dir is None else str(tasks_dir), seed=seed,
                        workers=workers, output=str(output), no_cache=True, fresh=True)
     outcome = run(config, show_progress=False)
     per_task: dict[str, dict[str, Any]] = outcome.results["per_task"][GENERATOR]
-    return per_task
+    why: dict[str, str] = {}
+    for failure in outcome.results["failures"].get(GENERATOR, []):
+        why.setdefault(failure["task"], failure["message"])
+    with (outcome.run_dir / "samples.jsonl").open(encoding="utf-8") as lines:
+        for line in lines:
+            sample = json.loads(line)
+            lost = sample.get("problems") or sample.get("violations")
+            if lost:
+                why.setdefault(sample["task_id"], str(lost[0]))
+    return per_task, why
 
 
 def task_row(m: dict[str, Any]) -> tuple[float, float, float]:
@@ -91,16 +103,18 @@ def main() -> None:
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--workers", type=int, default=1)
     ap.add_argument("--work", default=None, help="run folders go here (default: a temporary folder)")
+    ap.add_argument("--why", action="store_true", help="under each task, the first reason an environment was lost")
     ap.add_argument("--json", default=None, help="also write every figure to this JSON file")
     args = ap.parse_args()
     work = Path(args.work) if args.work else Path(tempfile.mkdtemp(prefix="reader_generalisation-"))
     start = time.perf_counter()
     results: dict[str, dict[str, dict[str, Any]]] = {}
+    why: dict[str, dict[str, str]] = {}
     for name, folder in SETS:
         ids = task_ids(folder)
         if args.smoke:
             ids = ids[:2]
-        results[name] = run_set(folder, ids, args.seed, args.workers, work / name)
+        results[name], why[name] = run_set(folder, ids, args.seed, args.workers, work / name)
     rows = {name: aggregate(per) for name, per in results.items()}
     base = {k: v for k, v in results["built-in"].items() if k in originals()}
     if base:
@@ -112,6 +126,8 @@ def main() -> None:
         for task_id, m in per.items():
             lc, sv, fd = task_row(m)
             print(f"  {name:9s} {task_id:32s} {pct(lc):>6s} {pct(sv):>6s} {pct(fd):>6s}")
+            if args.why and task_id in why[name]:
+                print(f"      first loss: {why[name][task_id][:200]}")
     print()
     print(f"  {'row':30s} {'tasks':>5s} {'LogCov':>6s} {'SceVR':>6s} {'FauDR':>6s}")
     for name, (lc, sv, fd) in rows.items():

@@ -105,3 +105,19 @@ def test_a_dev_task_validates(folder: Path, task_id: str) -> None:
 def test_every_dev_task_validates(folder: Path) -> None:
     problems = [str(p) for tid in task_ids(folder) for p in validate_task(tid, folder).problems]
     assert not problems, problems[:10]
+
+
+@pytest.mark.slow
+def test_the_benchmark_aggregates_as_the_library_does(tmp_path: Path) -> None:
+    """benchmarks/reader_generalisation.py recomputes the rows from per-task figures; they must be
+    the run's own LogCov, SceVR and FauDR."""
+    import sys
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
+    import reader_generalisation as bench
+
+    per_task, why = bench.run_set(NEW, ["bathroom_after_bath", "garage_lock_up"], 0, 1, tmp_path)
+    (results_file,) = tmp_path.glob("*/results.json")
+    got = json.loads(results_file.read_text(encoding="utf-8"))["results"][bench.GENERATOR]
+    assert bench.aggregate(per_task) == pytest.approx((got["logcov"], got["scevr"], got["faudr"]["avg"]))
+    assert set(why) <= set(per_task)
