@@ -39,7 +39,10 @@ def main() -> None:
     ap.add_argument("--run", default=None, help="a run folder (with samples.jsonl and envs/)")
     ap.add_argument("--tasks", default="clean_living_room,hallway_coat_and_bag,kitchen_dish_cleanup,"
                     "lamp_or_pillow_fetch,multi_room_pet_care")
+    ap.add_argument("--smoke", action="store_true", help="seconds, not minutes: a small case of the same code path (tests/test_benchmarks_smoke.py); the figures are not the documented ones")
     args = ap.parse_args()
+    if args.smoke:
+        args.tasks = "lamp_or_pillow_fetch"
     if args.run is None:
         out = Path(tempfile.mkdtemp(prefix="mutation_overhead_"))
         cli_main(["run", "--model", "offline", "--tasks", args.tasks, "--executor", "inprocess",
