@@ -98,8 +98,8 @@ def _nice_max(top: float) -> float:
     """A round upper end of the axis at or above `top` (1, 2, 2.5 or 5 times a power of ten)."""
     if top <= 0 or not math.isfinite(top):
         return 1.0
-    power = 10 ** math.floor(math.log10(top))
-    return next(m * power for m in (1, 2, 2.5, 5, 10) if m * power >= top)
+    power = 10.0 ** math.floor(math.log10(top))
+    return float(next(m * power for m in (1.0, 2.0, 2.5, 5.0, 10.0) if m * power >= top))
 
 
 def chart(results: dict[str, Any], title: str, path: tuple[str, ...], percent: bool, higher: bool) -> Chart:
