@@ -81,6 +81,11 @@ class Chart:
     def width(self) -> int:
         return WIDTH
 
+    @property
+    def whiskers(self) -> bool:
+        """Whether any bar has an interval (the caption says what the whiskers are, or that none are)."""
+        return any(b.lo is not None for b in self.bars)
+
 
 def _interval(values: dict[str, Any], path: tuple[str, ...]) -> tuple[float, float] | None:
     cur: Any = values.get("ci95")
