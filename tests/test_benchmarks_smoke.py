@@ -23,6 +23,8 @@ QUICK: dict[tuple[str, ...], str] = {
     ("holodeck_solver.py",): "placed_ratio=",
     ("hostile_inputs.py",): "worst_refusal_ms=",
     ("layout.py",): "DEFAULT_SOLVER='cpsat'",
+    ("layout.py", "--objects", "10", "--dense"): "objects=10 dense_median_s=",
+    ("layout.py", "--crossover"): "cpsat",
     ("mutation_overhead.py",): "in_run_ratio=",
     ("paraphrase_coverage.py",): "original_logcov=",
     ("physics_check.py",): "objects=100 pile_s=",
