@@ -111,3 +111,12 @@ def test_a_multi_seed_run_gets_a_seed_column(capsys: pytest.CaptureFixture[str],
     tasks = tasks_frame(tmp_path / "two")
     assert len(tasks) == 2 and set(tasks["seed"]) == {"0", "1"}
     assert len(methods_frame(tmp_path / "two")) == 1
+
+
+def test_export_csv_never_writes_into_a_special_file(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    import os
+
+    os.mkfifo(tmp_path / "samples.csv")
+    code, _, err = cli(capsys, "export", str(REFERENCE), "--csv", "--out", str(tmp_path))
+    assert code == 2 and "not a regular file" in err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["samples.csv"]  # nothing half-written beside it
