@@ -100,3 +100,22 @@ def test_a_single_task_run_has_bars_without_whiskers(results: dict[str, Any]) ->
     for c in headline_charts(data):
         assert all(b.lo is None and b.hi is None and b.width > 0 or b.text in ("0.00", "–") for b in c.bars)
         assert all("no interval" in b.tooltip for b in c.bars)
+
+
+def test_a_merged_report_charts_every_run_and_method(tmp_path: Path) -> None:
+    """`report RUN RUN`: one bar per (run, method) row, named by both, the method's name kept
+    whole even where a long label is shortened."""
+    from logicenveval.reporting.merged import write_merged
+
+    packs = [ROOT / "reports" / "real" / name for name in
+             ("SmolLM2-135M-Instruct.Q4_1", "qwen2.5-coder-1.5b-instruct-q4_k_m")]
+    runs = write_merged(packs, tmp_path / "merged")
+    svgs = _svgs((tmp_path / "merged" / "leaderboard.html").read_text())
+    assert len(svgs) == len(HEADLINE)
+    rows = sum(len(results["results"]) for _, results in runs)
+    for svg in svgs.values():
+        bars = svg.findall(f"{SVG}g")
+        assert len(bars) == rows == 8
+        for g in bars:
+            method = g.get("data-method").rsplit(" · ", 1)[1]
+            assert g.find(f"{SVG}text").text.endswith(method)

@@ -13,6 +13,7 @@ and says so in the bar's tooltip.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -28,9 +29,9 @@ HEADLINE: tuple[tuple[str, tuple[str, ...], bool, bool], ...] = (
 )
 
 #: the drawing's layout, in SVG user units
-WIDTH = 360
-LABEL_W = 130  # method names, left of the axis
-LABEL_CHARS = 21  # of a method's name at the labels' font size
+PLOT_W = 180  # the bars' axis
+CHAR_W = 6.6  # of a label character at the labels' font size (11 px sans-serif)
+LABEL_CHARS = 44  # a longer label is shortened in its middle (the tooltip has it whole)
 VALUE_W = 52  # the value's text, right of the plot
 BAR_H = 14
 GAP = 8
@@ -55,8 +56,12 @@ class Bar:
 
     @property
     def short(self) -> str:
-        """The label as it fits left of the axis (the tooltip has it whole)."""
-        return self.label if len(self.label) <= LABEL_CHARS else self.label[:LABEL_CHARS - 1] + "…"
+        """The label as drawn: whole up to `LABEL_CHARS`, else its start and its end (a merged
+        report's labels end with the method's name) around an ellipsis."""
+        if len(self.label) <= LABEL_CHARS:
+            return self.label
+        tail = LABEL_CHARS // 2
+        return self.label[:LABEL_CHARS - tail - 1] + "…" + self.label[-tail:]
 
 
 @dataclass(frozen=True)
@@ -72,14 +77,11 @@ class Chart:
     height: float
     plot_x: float
     plot_w: float
+    width: float
     bars: list[Bar]
     ticks: list[Tick]
     #: id of the metric for tests and anchors (`chart-logcov`)
     key: str
-
-    @property
-    def width(self) -> int:
-        return WIDTH
 
     @property
     def whiskers(self) -> bool:
@@ -107,32 +109,31 @@ def _nice_max(top: float) -> float:
     return float(next(m * power for m in (1.0, 2.0, 2.5, 5.0, 10.0) if m * power >= top))
 
 
-def chart(results: dict[str, Any], title: str, path: tuple[str, ...], percent: bool, higher: bool) -> Chart:
-    """One metric's chart over the rows of `results` in the run's order."""
-    rows = list(results["results"].items())
-    values = {gen: (metric(v, path) if is_measured(v) else None) for gen, v in rows}
-    intervals = {gen: _interval(v, path) for gen, v in rows}
+def chart(rows: Sequence[tuple[str, dict[str, Any]]], title: str, path: tuple[str, ...], percent: bool,
+          higher: bool) -> Chart:
+    """One metric's chart over `rows` (label, results.json values of a method), in their order."""
+    values = [metric(v, path) if is_measured(v) else None for _, v in rows]
+    intervals = [_interval(v, path) for _, v in rows]
     scale_top = 1.0 if percent else _nice_max(max(
-        [x for x in values.values() if x is not None]
-        + [hi for iv in intervals.values() if iv is not None for hi in iv[1:]], default=1.0))
-    plot_x, plot_w = LABEL_W, WIDTH - LABEL_W - VALUE_W
+        [x for x in values if x is not None] + [iv[1] for iv in intervals if iv is not None], default=1.0))
+    longest = max(min(len(label), LABEL_CHARS) for label, _ in rows)
+    plot_x, plot_w = round(8 + CHAR_W * longest), PLOT_W  # room for the labels, then the axis
 
     def x_of(v: float) -> float:
         return plot_x + plot_w * min(max(v / scale_top, 0.0), 1.0)
 
     bars = []
-    for k, (gen, raw) in enumerate(rows):
-        value, iv = values[gen], intervals[gen]
-        label = row_label(gen, raw, results)
+    for k, ((label, raw), value, iv) in enumerate(zip(rows, values, intervals, strict=True)):
         y = TOP + k * (BAR_H + GAP)
+        colour = PALETTE[k % len(PALETTE)]
         if value is None:
             text = "–" if is_measured(raw) else "not measured"
-            bars.append(Bar(label, PALETTE[k % len(PALETTE)], y, 0.0, text, f"{label}: {title} {text}"))
+            bars.append(Bar(label, colour, y, 0.0, text, f"{label}: {title} {text}"))
             continue
         shown = fmt(value, percent)
         ci = (f"[{fmt(iv[0], percent)}, {fmt(iv[1], percent)}]" if iv is not None
               else "no interval (deterministic or fewer than 2 tasks)")
-        bars.append(Bar(label, PALETTE[k % len(PALETTE)], y, x_of(value) - plot_x, shown,
+        bars.append(Bar(label, colour, y, x_of(value) - plot_x, shown,
                         f"{label}: {title} {shown}{' %' if percent else ''} {ci}",
                         x_of(iv[0]) if iv else None, x_of(iv[1]) if iv else None))
     steps = 4
@@ -142,14 +143,20 @@ def chart(results: dict[str, Any], title: str, path: tuple[str, ...], percent: b
     height = TOP + len(rows) * (BAR_H + GAP) + AXIS_H
     note = ("%, " if percent else "") + ("higher is better" if higher else "lower is better")
     key = "-".join(path).replace("_", "-")
-    return Chart(title, note, height, plot_x, plot_w, bars, ticks, key)
+    return Chart(title, note, height, plot_x, plot_w, plot_x + plot_w + VALUE_W, bars, ticks, key)
+
+
+def charts_of(rows: Sequence[tuple[str, dict[str, Any]]]) -> list[Chart]:
+    """One chart per headline metric over `rows` (label, a method's results.json values)."""
+    if not rows:
+        return []
+    return [chart(rows, title, path, percent, higher) for title, path, percent, higher in HEADLINE]
 
 
 def headline_charts(results: dict[str, Any]) -> list[Chart]:
-    """The charts of the leaderboard page, one per headline metric (none for a run without rows)."""
-    if not results.get("results"):
-        return []
-    return [chart(results, title, path, percent, higher) for title, path, percent, higher in HEADLINE]
+    """The charts of a run's leaderboard page: its methods, labelled as its table labels them."""
+    return charts_of([(row_label(gen, values, results), values)
+                      for gen, values in (results.get("results") or {}).items()])
 
 
-__all__ = ["HEADLINE", "Bar", "Chart", "Tick", "chart", "headline_charts"]
+__all__ = ["HEADLINE", "Bar", "Chart", "Tick", "chart", "charts_of", "headline_charts"]
