@@ -46,7 +46,8 @@ def main() -> None:
     if args.run is None:
         out = Path(tempfile.mkdtemp(prefix="mutation_overhead_"))
         cli_main(["run", "--model", "offline", "--tasks", args.tasks, "--executor", "inprocess",
-                  "--output", str(out), "--quiet", "--no-cache"])
+                  "--output", str(out), "--quiet", "--no-cache",
+                  *(["--generators", "logicenvgen"] if args.smoke else [])])
         run = next(p for p in out.iterdir() if p.is_dir())
         clear_cache()  # time a cold worker, not the trees the run just built
     else:
