@@ -99,7 +99,7 @@ def page_path(source: Source, generator: str, task: str) -> str:
     return f"details/{source.prefix}{slug(generator)}/{slug(task)}.html"
 
 
-def _samples_file(run_dir: Path) -> dict[tuple[str, str], list[dict[str, Any]]]:
+def samples_file(run_dir: Path) -> dict[tuple[str, str], list[dict[str, Any]]]:
     """A run folder's samples.jsonl grouped by (generator, task), for folders without units."""
     import json
 
@@ -145,7 +145,7 @@ class UnitReader:
             by_id = {d.env_id: d for d in unit.details}
             return [(s.model_dump(mode="json"), by_id.get(s.env_id)) for s in unit.samples]
         if self._loose is None:  # a folder without units (e.g. a published reference run)
-            self._loose = _samples_file(self.source.run_dir)
+            self._loose = samples_file(self.source.run_dir)
         return [(s, None) for s in self._loose.get((generator, task), [])]
 
 
