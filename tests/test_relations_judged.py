@@ -14,7 +14,12 @@ import pytest
 
 from logicenveval.benchmark import load_task
 from logicenveval.domain.catalog import load_catalog
-from logicenveval.generators.base import GenerationContext, GenerationResult, make_generator, unit_seed
+from logicenveval.generators.base import (
+    GenerationContext,
+    GenerationResult,
+    make_generator,
+    unit_seed,
+)
 from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.offline import OfflineModel
 from logicenveval.llm.replies import RelationsWire, judged_relations

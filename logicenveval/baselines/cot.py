@@ -9,7 +9,11 @@ mistakes, the floor plan's included, are part of what the benchmark measures.
 from __future__ import annotations
 
 from logicenveval.baselines.drafts import env_from_draft
-from logicenveval.baselines.replies import WrittenEnvironmentsReply, dropped_relations, written_slots
+from logicenveval.baselines.replies import (
+    WrittenEnvironmentsReply,
+    dropped_relations,
+    written_slots,
+)
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.base import (
     Attempt,

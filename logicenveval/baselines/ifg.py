@@ -10,7 +10,11 @@ run's generator, so a run is reproducible and different runs sample differently.
 from __future__ import annotations
 
 from logicenveval.baselines.drafts import env_from_draft
-from logicenveval.baselines.replies import WrittenEnvironmentsReply, dropped_relations, written_slots
+from logicenveval.baselines.replies import (
+    WrittenEnvironmentsReply,
+    dropped_relations,
+    written_slots,
+)
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.base import (
     Attempt,

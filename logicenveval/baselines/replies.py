@@ -17,10 +17,10 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, model_validat
 from logicenveval.llm import meaning
 from logicenveval.llm.meaning import MeaningError
 from logicenveval.llm.replies import (
+    JudgedRelations,
     ObjectDraft,
     OtherObjects,
     PlacedObject,
-    JudgedRelations,
     RelationDraft,
     RoleObjects,
     RoomDraft,

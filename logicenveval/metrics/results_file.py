@@ -76,6 +76,8 @@ class ResultsFile(BaseModel):
     seeds: list[int] | None = None
     runs: dict[str, str] | None = Field(default=None, description="run --seeds: seed -> sub-folder")
     brief: str = "roles"
+    protocol: int | None = Field(default=None, description="the request protocol the model was asked in "
+                                 "(docs/llm.md); absent in runs made before it was recorded")
     tasks: list[str]
     benchmark: Benchmark = Field(default_factory=Benchmark)
     versions: dict[str, str] = Field(default_factory=dict)

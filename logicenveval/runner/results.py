@@ -18,6 +18,7 @@ from typing import Any, Protocol
 
 from logicenveval.atomic import atomic_write_text
 from logicenveval.llm.base import KIND_PREFIX
+from logicenveval.llm.registry import request_protocol
 from logicenveval.metrics.compute import TaskMetrics, aggregate, null_metrics, task_metrics
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.metrics.uncertainty import ci95
@@ -136,6 +137,9 @@ def build_results(
         "model": config.model,
         "seed": config.seed,
         "brief": config.brief,
+        # a model's run: the protocol its requests were asked in (what a replay must ask)
+        **({"protocol": request_protocol(model_args)}
+           if isinstance(model_args := getattr(config, "model_args", None), str) else {}),
         "tasks": [t.id for t in tasks],
         "benchmark": {"task_sha256": task_hashes(tasks)},
         "versions": package_versions(),
