@@ -74,7 +74,8 @@ class ResultsConfig(Protocol):
 def unit_metrics(task: Task, unit: UnitRecord) -> TaskMetrics:
     """A measured unit's figures (results.json `per_task`), a pure function of the unit."""
     return task_metrics(task, unit.samples, n_failed=unit.n_failed, mutants=unit.mutants or None,
-                        reported=[a.target for a in unit.attempts])
+                        reported=[a.target for a in unit.attempts],
+                        claims_realised=[a.realised for a in unit.attempts if a.realised is not None])
 
 
 def per_task_entry(metrics: TaskMetrics, unit: UnitRecord) -> dict[str, Any]:
