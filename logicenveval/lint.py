@@ -32,7 +32,7 @@ from logicenveval.domain.roles import matches, parse_role_map, prepare_env
 from logicenveval.envfiles import load_env
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.metrics.evaluate import constraint_problems, coverage
-from logicenveval.model.envspec import EnvSpec
+from logicenveval.model.envspec import EnvSpec, unknown_state_flags
 from logicenveval.model.task import Task
 from logicenveval.sim.world import holds_initial
 
@@ -71,6 +71,7 @@ def lint_env(env: EnvSpec, task: Task, catalog: Catalog, report: FileReport,
         report.notes.append(("category", f"category {name!r} fits {', '.join(options)}: "
                              f"read as {cats.mapped[name]}"))
     report.problems += [("binding", p) for p in prepared.binding.problems]
+    report.problems += [("states", p) for p in unknown_state_flags(judged)]
     holds = holds_initial(judged, catalog)
     cov = coverage(task, holds, judged.roles, prepared.binding)
     report.problems += [("binding", p) for p in cov.problems]

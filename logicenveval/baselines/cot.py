@@ -9,7 +9,11 @@ mistakes, the floor plan's included, are part of what the benchmark measures.
 from __future__ import annotations
 
 from logicenveval.baselines.drafts import env_from_draft
-from logicenveval.baselines.replies import WrittenEnvironmentsReply, written_slots
+from logicenveval.baselines.replies import (
+    WrittenEnvironmentsReply,
+    dropped_relations,
+    written_slots,
+)
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.base import (
     Attempt,
@@ -61,4 +65,5 @@ class CoT:
                 continue
             attempts.append(Attempt(id=env_id, target=draft.situation, env_id=env_id))
         return GenerationResult(envs=envs, failures=failures, attempts=attempts, artifacts={
-            "reasoning": reply.reasoning, "situations": [d.situation for d in reply.environments]})
+            "reasoning": reply.reasoning, "situations": [d.situation for d in reply.environments],
+            **dropped_relations(zip(ids, drafts, strict=False))})

@@ -10,7 +10,11 @@ run's generator, so a run is reproducible and different runs sample differently.
 from __future__ import annotations
 
 from logicenveval.baselines.drafts import env_from_draft
-from logicenveval.baselines.replies import WrittenEnvironmentsReply, written_slots
+from logicenveval.baselines.replies import (
+    WrittenEnvironmentsReply,
+    dropped_relations,
+    written_slots,
+)
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.base import (
     Attempt,
@@ -62,6 +66,7 @@ class IFG:
         envs = []
         failures = []
         attempts = []
+        written = []
         for i, intent in enumerate(intents):
             env_id = ids[i]
             target = " & ".join(intent.facts)
@@ -71,6 +76,7 @@ class IFG:
                             WrittenEnvironmentsReply, temperature=self.env_temperature, seed=seeds[i + 1],
                             vocabulary=slots)
                 draft = reply.environments[0]
+                written.append((env_id, draft))
                 envs.append(env_from_draft(brief, env_id=env_id, generator=self.name, draft=draft,
                                            extra={"intent": list(intent.facts), "situation": intent.description}))
             except LogicEnvEvalError as exc:
@@ -81,4 +87,5 @@ class IFG:
         missing = f"the intents reply gave {len(intents)} of the {self.k} intents asked for"
         attempts += [Attempt(id=i, stage="ifg_intents", reason=missing) for i in ids[len(intents):]]
         return GenerationResult(envs=envs, failures=failures, attempts=attempts, artifacts={
-            "k": self.k, "seeds": seeds, "intents": [t.model_dump(mode="json") for t in intents]})
+            "k": self.k, "seeds": seeds, "intents": [t.model_dump(mode="json") for t in intents],
+            **dropped_relations(written)})

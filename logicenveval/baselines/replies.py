@@ -9,14 +9,15 @@ placements only: its own solver places them.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-from typing import Literal
+from collections.abc import Iterable, Sequence
+from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, model_validator
 
 from logicenveval.llm import meaning
 from logicenveval.llm.meaning import MeaningError
 from logicenveval.llm.replies import (
+    JudgedRelations,
     ObjectDraft,
     OtherObjects,
     PlacedObject,
@@ -61,7 +62,7 @@ class WrittenWindow(BaseModel):
     state: Literal["open", "closed"] = "closed"
 
 
-class WrittenEnvironment(BaseModel):
+class WrittenEnvironment(JudgedRelations):
     model_config = _F
     situation: str = Field(default="", description="the situation this environment tests")
     rooms: list[WrittenRoom] = Field(min_length=1)
@@ -93,6 +94,15 @@ def written_slots(roles: Sequence[str], environments: int) -> dict[str, list[str
             "object_slots": object_slots(roles)}
 
 
+def dropped_relations(written: Iterable[tuple[str, JudgedRelations]]) -> dict[str, Any]:
+    """The relations each written environment lost (`judged_relations`), for a generator's
+    artifacts (plan.json): `{"dropped_relations": {env_id: [[relation, why], ...]}}`, or nothing
+    when none was dropped, so plans of replies without such relations stay as they were."""
+    dropped = {env_id: [[r, why] for r, why in part.dropped_relations]
+               for env_id, part in written if part.dropped_relations}
+    return {"dropped_relations": dropped} if dropped else {}
+
+
 class HolodeckSceneReply(BaseModel):
     """Holodeck's language stages in one reply: floor plan, objects, spatial relations (no coordinates:
     its own constraint solver places the objects)."""
@@ -114,7 +124,7 @@ class HolodeckSceneReply(BaseModel):
         return self if bound == list(self.objects) else self.model_copy(update={"objects": bound})
 
 
-class HolodeckSceneWire(BaseModel):
+class HolodeckSceneWire(JudgedRelations):
     """Holodeck's language stages in one reply: floor plan, objects (one per required role, keyed
     by the role, then the others), spatial relations (no coordinates: its own constraint solver
     places the objects)."""

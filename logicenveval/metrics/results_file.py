@@ -37,8 +37,9 @@ class FailureEntry(BaseModel):
     env_id: str | None = None
     kind: str | None = Field(default=None, description="infrastructure, generation or internal (units)")
     seed: int | None = Field(default=None, description="the seed run it came from (run --seeds)")
-    attempts: int | None = Field(default=None, description="failed attempts of a unit that "
-                                 "failed as a whole (stage `unit`): what the reasons count")
+    attempts: int | None = Field(default=None, description="the failed attempts this entry's reason "
+                                 "counts: of a unit that failed as a whole (stage `unit`), or of "
+                                 "attempts that failed with no generation failure stating why")
 
 
 class Timing(BaseModel):
@@ -76,6 +77,8 @@ class ResultsFile(BaseModel):
     seeds: list[int] | None = None
     runs: dict[str, str] | None = Field(default=None, description="run --seeds: seed -> sub-folder")
     brief: str = "roles"
+    protocol: int | None = Field(default=None, description="the request protocol the model was asked in "
+                                 "(docs/llm.md); absent in runs made before it was recorded")
     tasks: list[str]
     benchmark: Benchmark = Field(default_factory=Benchmark)
     versions: dict[str, str] = Field(default_factory=dict)
