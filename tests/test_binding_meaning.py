@@ -220,3 +220,33 @@ def test_unseen_objects_that_nothing_tells_apart_stay_ambiguous(
         roles: dict[str, Role], objects: list[tuple[str, str, dict[str, str]]]) -> None:
     b = bind_roles(_objects(*objects), roles, CATALOG)
     assert not b.well_formed and b.candidates
+
+
+HOUSES = Path(__file__).parent / "fixtures" / "houses"
+
+
+@pytest.mark.parametrize(("roles", "says"), [
+    ("pann=a", "'pann' is not a role of the task"),
+    ("pan=a,pan=b", "role 'pan' is given twice"),
+    ("pan", "'pan' is not ROLE=ID"),
+])
+@pytest.mark.parametrize("command", ["lint", "evaluate", "import-house"])
+def test_bad_roles_option_is_one_clear_error_with_exit_2_in_every_command(
+        command: str, roles: str, says: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """Unknown, repeated or malformed ROLEs are bad input for all three commands alike: never
+    ignored, never last-wins, never a per-file finding (issue 50, item 4)."""
+    from tests.cli_support import cli
+
+    task = "kitchen_breakfast_prep"
+    assert "pan" in load_task(task).roles
+    folder = tmp_path / "envs" / task
+    folder.mkdir(parents=True)
+    (folder / "e.json").write_text(_reference(task))
+    argv = {"lint": ["lint", str(tmp_path / "envs")],
+            "evaluate": ["evaluate", str(tmp_path / "envs"), "--output", str(tmp_path / "out")],
+            "import-house": ["import-house", str(HOUSES / "kitchen_breakfast.json"), "--task", task,
+                             "--out", str(tmp_path / "house.json")]}[command]
+    code, out, err = cli(capsys, *argv, "--roles", roles)
+    assert code == 2, (out, err)
+    assert says in err and err.count("error") == 1
+    assert not (tmp_path / "out").exists() and not (tmp_path / "house.json").exists()
