@@ -268,12 +268,22 @@ def bind_roles(env: EnvSpec, roles: Mapping[str, Role], catalog: Catalog | None 
     by_id = {o.id: o for o in env.objects}
     free = [o for o in env.objects if o.id not in taken]
     cands: dict[str, list[str]] = {}
+    decisive: set[str] = set()
     for name, role in roles.items():
         if name in explicit:
             continue
         agree = [o for o in free if matches(o, role, cat)]
         cands[name] = _narrow(agree, name, role, cat)
-    decided, ambiguous = _decide(cands)
+        if len(cands[name]) == 1 and _evidence(by_id[cands[name][0]], name, role, cat) != "category":
+            decisive.add(name)
+    # roles that evidence singles an object out for bind first; the others share what is left
+    # (one toilet roll named spare_roll: spare_roll plays it, roll is left without one)
+    decided, ambiguous = _decide({n: ids for n, ids in cands.items() if n in decisive})
+    taken_now = {oid for oid in decided.values() if oid is not None}
+    rest, undecided = _decide({n: [i for i in ids if i not in taken_now] for n, ids in cands.items()
+                               if n not in decisive})
+    decided.update(rest)
+    ambiguous.update(undecided)
     problems = []
     for name, left in ambiguous.items():
         if len(left) > 1:
