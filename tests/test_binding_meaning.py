@@ -250,3 +250,17 @@ def test_bad_roles_option_is_one_clear_error_with_exit_2_in_every_command(
     assert code == 2, (out, err)
     assert says in err and err.count("error") == 1
     assert not (tmp_path / "out").exists() and not (tmp_path / "house.json").exists()
+
+
+def test_lint_refuses_a_forged_roles_option(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """`lint --roles table=<the sofa>` said ok (issue 50, item 2): the map is checked."""
+    from tests.cli_support import cli
+
+    task = "clean_living_room"
+    env = EnvSpec.model_validate_json(_reference(task))
+    sofa = next(o.id for o in env.objects if o.category == "sofa")
+    folder = tmp_path / "envs" / task
+    folder.mkdir(parents=True)
+    (folder / "e.json").write_text(_reference(task))
+    code, out, _ = cli(capsys, "lint", str(tmp_path / "envs"), "--roles", f"table={sofa}")
+    assert code == 1 and f"table={sofa}: table is mapped to {sofa}, a sofa, but the task's table is a" in out

@@ -54,7 +54,7 @@ complete map).
 from __future__ import annotations
 
 import difflib
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
 from functools import lru_cache
 from typing import Literal
@@ -220,10 +220,18 @@ def matches(obj: EnvObject, role: Role, catalog: Catalog) -> bool:
     return _same_category(obj, role, catalog) and not attribute_gaps(obj, role)
 
 
+def role_named(object_id: str, roles: Iterable[str]) -> str | None:
+    """The role whose name `object_id` is (`Red Box`, `red_box` for `red_box`), if any: an object
+    so named plays that role for every method (the judge's id rule; `llm.replies.bind_objects`
+    applies the same rule to a reply before the judge sees it)."""
+    key = snake(object_id)
+    return next((r for r in roles if r == key), None)
+
+
 def _evidence(obj: EnvObject, name: str, role: Role, catalog: Catalog) -> Reason:
     """The strongest reason `obj` plays `name` (rule 3), `category` when nothing but its
     category and agreeing attributes speak for it."""
-    if snake(obj.id) == name:
+    if role_named(obj.id, (name,)):
         return "id"
     if _states_all(obj, role):
         return "attribute"
@@ -326,7 +334,7 @@ def _narrow(agree: list[EnvObject], name: str, role: Role, cat: Catalog) -> list
     """The candidates of a role after the evidence of rule 3 (id, stated attributes, name
     words: the first that singles out one object decides); all of them when none does."""
     tests: tuple[Callable[[EnvObject], bool], ...] = (
-        lambda o: snake(o.id) == name, lambda o: _states_all(o, role),
+        lambda o: role_named(o.id, (name,)) is not None, lambda o: _states_all(o, role),
         lambda o: _says_name(o, name, role, cat))
     for test in tests:
         hit = [o.id for o in agree if test(o)]
