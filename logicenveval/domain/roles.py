@@ -17,10 +17,11 @@ generator's run share (`prepare_env`):
    the attribute with the same value, or it does not state it and its name says the value
    (``red toy box`` or id ``red_box`` say ``color=red``; ``novel_shelf`` says
    ``purpose=novels``). Words are compared lemmatised (lemminflect), in any order.
-3. Of several candidates, evidence decides, in this order: the object whose **id** is the
-   role's name; the one that **states the role's attributes** (`"purpose": "novels"`); the one
+3. Of several candidates, evidence decides, in this order: the one that **states the role's
+   attributes** (`"purpose": "novels"`); the object whose **id** is the role's name; the one
    whose **name words** hold the role name's distinctive words (``novel_shelf`` and
-   ``shelf for novels`` for role ``shelf_novels``).
+   ``shelf for novels`` for role ``shelf_novels``). Roles that evidence singles an object out
+   for are bound before those that only their category speaks for.
 4. One candidate: the role binds to it. Objects bound to a role are no longer candidates of the
    others; this is repeated until nothing changes, so a role left with one candidate after the
    others took theirs is bound too. When two roles are left with the same single object,
@@ -231,10 +232,10 @@ def role_named(object_id: str, roles: Iterable[str]) -> str | None:
 def _evidence(obj: EnvObject, name: str, role: Role, catalog: Catalog) -> Reason:
     """The strongest reason `obj` plays `name` (rule 3), `category` when nothing but its
     category and agreeing attributes speak for it."""
-    if role_named(obj.id, (name,)):
-        return "id"
     if _states_all(obj, role):
         return "attribute"
+    if role_named(obj.id, (name,)):
+        return "id"
     if _says_name(obj, name, role, catalog) or (role.attributes and named_attributes(obj, role)):
         return "name words"
     return "category"
@@ -331,10 +332,10 @@ def bind_roles(env: EnvSpec, roles: Mapping[str, Role], catalog: Catalog | None 
 
 
 def _narrow(agree: list[EnvObject], name: str, role: Role, cat: Catalog) -> list[str]:
-    """The candidates of a role after the evidence of rule 3 (id, stated attributes, name
+    """The candidates of a role after the evidence of rule 3 (stated attributes, id, name
     words: the first that singles out one object decides); all of them when none does."""
     tests: tuple[Callable[[EnvObject], bool], ...] = (
-        lambda o: role_named(o.id, (name,)) is not None, lambda o: _states_all(o, role),
+        lambda o: _states_all(o, role), lambda o: role_named(o.id, (name,)) is not None,
         lambda o: _says_name(o, name, role, cat))
     for test in tests:
         hit = [o.id for o in agree if test(o)]
