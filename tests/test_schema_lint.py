@@ -124,8 +124,17 @@ def test_lint_passes_clean_files_and_names_the_unbound_role(tmp_path: Path,
         d["objects"] = [o for o in d["objects"] if o["category"] != "mop"]
 
     _edit(first, no_mop)
-    _edit(second, lambda d: d["objects"].append({**next(o for o in d["objects"] if o["category"] == "sofa"),
-                                                 "id": "sofa_2", "category": "Couch"}))
+    def two_sofas(d: dict[str, Any]) -> None:
+        """Two sofas, neither with the role's name as its id (that one would play it)."""
+        sofa = next(o for o in d["objects"] if o["category"] == "sofa")
+        d["objects"].append({**sofa, "id": "sofa_2", "category": "Couch"})
+        for o in d["objects"]:
+            o.update({k: "couch_a" for k in ("support", "container") if o.get(k) == sofa["id"]})
+        for r in d.get("relations", []):
+            r["args"] = ["couch_a" if a == sofa["id"] else a for a in r["args"]]
+        sofa["id"] = "couch_a"
+
+    _edit(second, two_sofas)
 
     def on_the_toy(d: dict[str, Any]) -> None:
         book = next(o for o in d["objects"] if o["category"] == "book")

@@ -183,8 +183,8 @@ def build_scene(brief: TaskBrief, scene: HolodeckSceneReply, catalog: Catalog, r
         "rooms": [{"id": r.id, "type": d.type, "polygon": r.polygon} for r, d in zip(rects, scene.rooms, strict=True)],
         "doors": doors, "windows": windows, "objects": [placed[i] for i in drafts if i in placed],
         "relations": _holding_relations(scene, placed, floor_poses),
-        "roles": {role: next((o.id for o in scene.objects if o.role == role and o.id in placed), None)
-                  for role in brief.roles},
+        # only roles with a placed object: the others are bound by the judge (`domain.roles`)
+        "roles": {o.role: o.id for o in reversed(scene.objects) if o.role in brief.roles and o.id in placed},
         "agent": {"room": brief.rooms[0] if brief.rooms[0] in by_room else rects[0].id},
     }, source=env_id)
     return env, log

@@ -20,6 +20,7 @@ from pydantic import (
     model_validator,
 )
 
+from logicenveval.domain.roles import role_named
 from logicenveval.llm import meaning
 from logicenveval.llm.meaning import MeaningError
 from logicenveval.llm.structured import Conjunction, Goal, LiteralDraft, to_text
@@ -171,7 +172,9 @@ def bind_objects(objects: list[ObjectDraft], info: ValidationInfo) -> list[Objec
     from protocol 2 on; otherwise returned as they are).
 
     An object whose id is a role's name and that gives no `role` plays that role (Qwen2.5 named
-    one object per role after the role and left the optional field out); no object may rest on
+    one object per role after the role and left the optional field out): the judge's id rule,
+    `domain.roles.role_named`, which binds every method's environments afterwards with the rest
+    of the one rule (`domain.roles.prepare_env`); no object may rest on
     or in itself; and every role the request requires (`required_roles` of the vocabulary)
     must end up with an object, else the re-ask names the roles left without one."""
     if not meaning.enabled(info.context):
@@ -180,7 +183,8 @@ def bind_objects(objects: list[ObjectDraft], info: ValidationInfo) -> list[Objec
     roles = vocabulary.get("roles")
     roles = list(roles) if isinstance(roles, list) else []
     taken = {o.role for o in objects if o.role}
-    bound = [o.model_copy(update={"role": o.id}) if o.role is None and o.id in roles and o.id not in taken
+    named = {o.id: role_named(o.id, roles) for o in objects if o.role is None}
+    bound = [o.model_copy(update={"role": named[o.id]}) if named.get(o.id) and named[o.id] not in taken
              else o for o in objects]
     problem = meaning.placement_problem([(o.id, o.placement) for o in bound])
     if problem:

@@ -445,6 +445,9 @@ class EnvView:
     #: the render and the environment file, relative to the report folder (None: absent)
     render: str | None = None
     env_file: str | None = None
+    #: role -> "object (reason)" as the judge bound it (`EnvSample.binding`); refused map entries
+    binding: list[tuple[str, str]] = field(default_factory=list)
+    refused: list[str] = field(default_factory=list)
 
     @property
     def search(self) -> str:
@@ -541,7 +544,19 @@ def env_view(assets: Assets | None, generator: str, task: str, sample: dict[str,
         problems=[str(p) for p in [*(sample.get("problems") or []), *(sample.get("violations") or [])]],
         physics=dims, extra=extra,
         covered_paths=[str(p) for p in sample.get("covered_paths") or []], claimed=claim,
-        verdicts=verdicts, reasons_text=_reasons_text(sample, verdicts))
+        verdicts=verdicts, reasons_text=_reasons_text(sample, verdicts),
+        binding=_binding(sample), refused=[str(m) for m in sample.get("refused_roles") or []])
+
+
+def _binding(sample: Mapping[str, Any]) -> list[tuple[str, str]]:
+    """Role -> `object (reason)` of a sample (samples written before the binding was recorded
+    have none)."""
+    out = []
+    for role, choice in sorted((sample.get("binding") or {}).items()):
+        if isinstance(choice, dict):
+            oid = choice.get("object")
+            out.append((str(role), f"{oid if oid is not None else '—'} ({choice.get('reason', '?')})"))
+    return out
 
 
 @dataclass(frozen=True)

@@ -120,6 +120,8 @@ def evaluate_env(
         sim_ticks=sim_ticks,
         categories=prepared.categories.mapped,
         unknown_categories=prepared.categories.unknown,
+        binding=binding.record(),
+        refused_roles=list(binding.refused),
     )
     return Evaluation(sample=sample, env=env, physics=report, traces=traces, world=world, key=key)
 
