@@ -37,7 +37,10 @@ class CoT:
 
     def generate(self, brief: TaskBrief, ctx: GenerationContext) -> GenerationResult:
         """One attempt per draft the model wrote; a reply that never validates fails all
-        `max_environments` drafts it could have written, so failing never beats answering."""
+        `max_environments` drafts it could have written, so failing never beats answering. A
+        draft that repeats an earlier one (its situation aside) is a failed attempt named as a
+        copy: the method was asked for distinct environments, and copies would count as
+        coverage-neutral environments that raise PhyPR and SceVR for free."""
         payload = {"task": brief.model_dump(mode="json"), "n_environments": self.max_environments,
                    "categories": ctx.catalog.generator_categories()}
         ids = [f"{self.name}-{i:02d}" for i in range(self.max_environments)]
@@ -55,7 +58,15 @@ class CoT:
         envs = []
         failures = []
         attempts = []
+        written: dict[str, str] = {}  # a draft's content (its situation aside) -> the first env id
         for env_id, draft in zip(ids, drafts, strict=False):
+            content = draft.model_dump_json(exclude={"situation"})
+            if content in written:  # Qwen2.5-Coder-1.5B copied one environment 12 times
+                why = f"a copy of {written[content]}: the same rooms, objects and relations written again"
+                failures.append(GenerationFailure(stage="distinct", message=why, env_id=env_id))
+                attempts.append(Attempt(id=env_id, target=draft.situation, stage="distinct", reason=why))
+                continue
+            written[content] = env_id
             try:
                 envs.append(env_from_draft(brief, env_id=env_id, generator=self.name, draft=draft,
                                            extra={"situation": draft.situation}))
