@@ -28,6 +28,7 @@ from logicenveval.llm.replies import (
     bind_objects,
     object_slots,
 )
+from logicenveval.llm.structured import LiteralDraft, literal_text
 from logicenveval.llm.vocab import AT_MOST
 
 _F = ConfigDict(frozen=True, extra="ignore")
@@ -83,6 +84,32 @@ class WrittenEnvironmentsReply(BaseModel):
     #: at most as many as the request asks for (`environment_slots`, protocol 4 on: CoT's "at
     #: most N", IFG's one per intent), so a model repeating environments stops
     environments: list[WrittenEnvironment] = Field(min_length=1, json_schema_extra={AT_MOST: "environment_slots"})
+
+
+class IntentWire(BaseModel):
+    """One intent of IFG's stage 1 (protocol 5): a situation of the task, as the literals that
+    hold initially, each bound to the task's roles, rooms and flags like LogicEnvGen's factors
+    (`llm.structured`), so `not attr(cabinet, opened)` cannot be written; a literal stated both
+    ways is refused (re-asked) as no situation."""
+
+    model_config = _F
+    description: str = Field(max_length=300, description="the situation in words")
+    facts: list[LiteralDraft] = Field(default_factory=list, max_length=24,
+                                      description="what holds initially in this situation")
+
+    @model_validator(mode="after")
+    def _consistent(self, info: ValidationInfo) -> IntentWire:
+        if meaning.enabled(info.context):
+            texts = [literal_text(f) for f in self.facts]
+            both = sorted({t for t in texts if f"not {t}" in texts})
+            if both:
+                raise MeaningError(f"the intent states {both[0]} and its negation: write one situation, "
+                                   "each literal once")
+        return self
+
+    def texts(self) -> list[str]:
+        """The facts in the condition language, each once."""
+        return list(dict.fromkeys(literal_text(f) for f in self.facts))
 
 
 def written_slots(roles: Sequence[str], environments: int) -> dict[str, list[str]]:
