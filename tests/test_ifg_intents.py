@@ -14,7 +14,12 @@ from pydantic import ValidationError
 from logicenveval.baselines.replies import IntentWire
 from logicenveval.benchmark import load_task
 from logicenveval.domain.catalog import load_catalog
-from logicenveval.generators.base import GenerationContext, GenerationResult, make_generator, unit_seed
+from logicenveval.generators.base import (
+    GenerationContext,
+    GenerationResult,
+    make_generator,
+    unit_seed,
+)
 from logicenveval.generators.plan import plan_vocabulary
 from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.meaning import MEANING_KEY
