@@ -104,3 +104,39 @@ def test_an_intent_stating_a_literal_both_ways_is_refused() -> None:
         IntentWire.model_validate({"description": "d", "facts": [on, {**on, "negated": True}]}, context=_context())
     ok = IntentWire.model_validate({"description": "d", "facts": [on, on]}, context=_context())
     assert ok.texts() == ["on(toy, floor)"]
+
+
+class SelfSupporting(Seen):
+    """CoT's first reply puts its first object on itself (Qwen's bathroom drafts put the
+    medicine cabinet inside itself), then answers as the offline model."""
+
+    def complete(self, request: ChatRequest) -> str:
+        self.requests.append(request)
+        reply = json.loads(self.inner.complete(request))
+        if request.kind == "cot_environments" and len(self.requests) == 1:
+            first = reply["environments"][0]["objects"][0]
+            first["placement"] = f"inside:{first['id']}"
+        return json.dumps(reply)
+
+
+def _cot(model: Any) -> GenerationResult:
+    task = load_task(TASK)
+    ctx = GenerationContext(model=model, catalog=load_catalog(), seed=0,
+                            rng=np.random.default_rng(unit_seed(0, "cot", task.id)))
+    return make_generator("cot").generate(task.brief(), ctx)
+
+
+def test_written_environments_get_the_scene_s_words_and_checks_from_protocol_5() -> None:
+    """The same setup for every method (issue 46): a written environment's categories, rooms,
+    roles and placements are in the grammar, and an object on itself is re-asked as in
+    LogicEnvGen's and Holodeck-like's scenes; under protocol 4 it was a final failure."""
+    new, old = SelfSupporting(5), SelfSupporting(4)
+    built, failed = _cot(new), _cot(old)
+    assert [r.kind for r in new.requests] == ["cot_environments"] * 2  # re-asked once
+    assert "inside" in new.requests[1].messages[-1]["content"]
+    assert all(a.built for a in built.attempts) and len(built.envs) == len(_cot(Seen(5)).envs)
+    assert [r.kind for r in old.requests] == ["cot_environments"]
+    assert not all(a.built for a in failed.attempts)
+    placed = new.requests[0].schema["$defs"]["PlacedObject"]["properties"]
+    assert "enum" in placed["category"] and "enum" in placed["room"]
+    assert "enum" not in old.requests[0].schema["$defs"]["PlacedObject"]["properties"]["category"]

@@ -13,6 +13,7 @@ from logicenveval.baselines.replies import (
     WrittenEnvironmentsReply,
     dropped_relations,
     written_slots,
+    written_words,
 )
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.base import (
@@ -46,9 +47,12 @@ class CoT:
         ids = [f"{self.name}-{i:02d}" for i in range(self.max_environments)]
         ctx.plan_attempts(self.max_environments)
         try:
+            protocol = protocol_of(ctx.model)
+            vocabulary = written_slots(sorted(brief.roles), self.max_environments) if protocol >= 4 else None
+            if vocabulary is not None and protocol >= 5:  # the scene's words, as every method's
+                vocabulary.update(written_words(brief, ctx.catalog.generator_categories()))
             reply = ask(ctx.model, "cot_environments", payload, WrittenEnvironmentsReply, seed=ctx.seed,
-                        vocabulary=written_slots(sorted(brief.roles), self.max_environments)
-                        if protocol_of(ctx.model) >= 4 else None)
+                        vocabulary=vocabulary)
         except LogicEnvEvalError as exc:
             return GenerationResult(
                 failures=[GenerationFailure(stage="cot_environments", message=str(exc))],

@@ -17,6 +17,7 @@ from logicenveval.baselines.replies import (
     WrittenEnvironmentsReply,
     dropped_relations,
     written_slots,
+    written_words,
 )
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.base import (
@@ -77,6 +78,8 @@ class IFG:
         categories = ctx.catalog.generator_categories()
         # one environment per intent, bounded from protocol 4 on (`written_slots`)
         slots = written_slots(sorted(brief.roles), 1) if protocol_of(ctx.model) >= 4 else None
+        if slots is not None and protocol_of(ctx.model) >= 5:  # the scene's words, as every method's
+            slots.update(written_words(brief, categories))
         envs = []
         failures = []
         attempts = []

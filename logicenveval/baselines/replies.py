@@ -29,7 +29,9 @@ from logicenveval.llm.replies import (
     object_slots,
 )
 from logicenveval.llm.structured import LiteralDraft, literal_text
-from logicenveval.llm.vocab import AT_MOST
+from logicenveval.llm.vocab import AT_MOST, CONTEXT_KEY, scene_vocabulary
+from logicenveval.model.repeats import repeated
+from logicenveval.model.task import TaskBrief
 
 _F = ConfigDict(frozen=True, extra="ignore")
 
@@ -74,6 +76,32 @@ class WrittenEnvironment(JudgedRelations):
     objects: list[PlacedObject] = Field(min_length=1, description="positions in the same world frame as the rooms",
                                         json_schema_extra={AT_MOST: "object_slots"})
     relations: list[RelationDraft] = Field(default_factory=list, json_schema_extra={AT_MOST: "object_slots"})
+
+    @model_validator(mode="after")
+    def _meaningful(self, info: ValidationInfo) -> WrittenEnvironment:
+        """From request protocol 5 on (its requests give the scene's words, `written_words`),
+        a written environment is checked as LogicEnvGen's and Holodeck-like's scenes are: ids
+        unique, no object on or in itself, an object named after a role plays it
+        (`llm.replies.bind_objects`); a finding is re-asked with the same budget. The paper's
+        "same problem setup" for every method (issue 46): before, a self-supporting object was a
+        final failure on this path only."""
+        vocabulary = (info.context or {}).get(CONTEXT_KEY) or {}
+        if not meaning.enabled(info.context) or "categories" not in vocabulary:
+            return self
+        twice = repeated([o.id for o in self.objects])
+        if twice:
+            raise MeaningError(f"object ids must be unique in an environment; repeated: {twice}")
+        bound = bind_objects(list(self.objects), info)
+        return self if bound == list(self.objects) else self.model_copy(update={"objects": bound})
+
+
+def written_words(brief: TaskBrief, categories: Sequence[str]) -> dict[str, Any]:
+    """The scene's words a written environment is asked in from protocol 5 on, as LogicEnvGen's
+    selection and Holodeck-like's scene are (`llm.vocab.scene_vocabulary`): the task's rooms,
+    room types, the catalog's and the roles' categories, the roles, placements and relation types
+    in the grammar; no role is required (a CoT or IFG situation may lack an object)."""
+    return scene_vocabulary(list(brief.rooms), sorted(brief.roles),
+                            [*categories, *(r.category for r in brief.roles.values())])
 
 
 class WrittenEnvironmentsReply(BaseModel):
