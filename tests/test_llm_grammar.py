@@ -78,7 +78,7 @@ def test_every_offline_reply_is_in_its_compact_grammar_and_layout_is_not(
         assert not language.fullmatch(json.dumps(value, indent=2)), kind
         kinds.add(kind)
     assert {"decompose_task", "identify_factors", "tree_step", "tree_leaves", "floor_plan",
-            "select_objects", "holodeck_scene", "cot_environments", "ifg_intents"} <= kinds
+            "select_objects", "holodeck_scene", "cot_environments", "ifg_intent"} <= kinds
 
 
 def test_the_grammar_has_no_whitespace_rule_and_defines_what_it_uses(

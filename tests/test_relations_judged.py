@@ -94,3 +94,23 @@ def test_the_same_split_for_every_reply_kind() -> None:
     data, dropped = judged_relations({"relations": relations}, Info())  # type: ignore[arg-type]
     good, bad = RelationsWire.model_validate({"relations": relations}).split()
     assert data["relations"] == [r.model_dump() for r in good] and dropped == bad
+
+
+def test_a_cot_draft_that_copies_an_earlier_one_is_a_failed_attempt_named_as_a_copy() -> None:
+    """Qwen2.5-Coder-1.5B's CoT replies copied one environment 12 times (issue 46); 12 copies
+    counted as 12 environments, raising PhyPR and SceVR for nothing new."""
+
+    class Copying(WithBadRelations):
+        def complete(self, request: ChatRequest) -> str:
+            reply = json.loads(self.inner.complete(request))
+            if request.kind == "cot_environments":
+                first = reply["environments"][0]
+                reply["environments"] = [first, {**first, "situation": "another words"}, *reply["environments"][1:]]
+            return json.dumps(reply)
+
+    clean = _generate(OfflineModel(), "cot")
+    copied = _generate(Copying(), "cot")
+    assert len(copied.envs) == len(clean.envs)
+    failed = [a for a in copied.attempts if not a.built]
+    assert [(a.id, a.stage) for a in failed] == [("cot-01", "distinct")]
+    assert failed[0].reason is not None and failed[0].reason.startswith("a copy of cot-00")

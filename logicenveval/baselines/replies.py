@@ -28,7 +28,10 @@ from logicenveval.llm.replies import (
     bind_objects,
     object_slots,
 )
-from logicenveval.llm.vocab import AT_MOST
+from logicenveval.llm.structured import LiteralDraft, literal_text
+from logicenveval.llm.vocab import AT_MOST, CONTEXT_KEY, scene_vocabulary
+from logicenveval.model.repeats import repeated
+from logicenveval.model.task import TaskBrief
 
 _F = ConfigDict(frozen=True, extra="ignore")
 
@@ -74,6 +77,32 @@ class WrittenEnvironment(JudgedRelations):
                                         json_schema_extra={AT_MOST: "object_slots"})
     relations: list[RelationDraft] = Field(default_factory=list, json_schema_extra={AT_MOST: "object_slots"})
 
+    @model_validator(mode="after")
+    def _meaningful(self, info: ValidationInfo) -> WrittenEnvironment:
+        """From request protocol 5 on (its requests give the scene's words, `written_words`),
+        a written environment is checked as LogicEnvGen's and Holodeck-like's scenes are: ids
+        unique, no object on or in itself, an object named after a role plays it
+        (`llm.replies.bind_objects`); a finding is re-asked with the same budget. The paper's
+        "same problem setup" for every method (issue 46): before, a self-supporting object was a
+        final failure on this path only."""
+        vocabulary = (info.context or {}).get(CONTEXT_KEY) or {}
+        if not meaning.enabled(info.context) or "categories" not in vocabulary:
+            return self
+        twice = repeated([o.id for o in self.objects])
+        if twice:
+            raise MeaningError(f"object ids must be unique in an environment; repeated: {twice}")
+        bound = bind_objects(list(self.objects), info)
+        return self if bound == list(self.objects) else self.model_copy(update={"objects": bound})
+
+
+def written_words(brief: TaskBrief, categories: Sequence[str]) -> dict[str, Any]:
+    """The scene's words a written environment is asked in from protocol 5 on, as LogicEnvGen's
+    selection and Holodeck-like's scene are (`llm.vocab.scene_vocabulary`): the task's rooms,
+    room types, the catalog's and the roles' categories, the roles, placements and relation types
+    in the grammar; no role is required (a CoT or IFG situation may lack an object)."""
+    return scene_vocabulary(list(brief.rooms), sorted(brief.roles),
+                            [*categories, *(r.category for r in brief.roles.values())])
+
 
 class WrittenEnvironmentsReply(BaseModel):
     """Several complete test environments (CoT) or one (IFG stage 2), floor plans included."""
@@ -83,6 +112,32 @@ class WrittenEnvironmentsReply(BaseModel):
     #: at most as many as the request asks for (`environment_slots`, protocol 4 on: CoT's "at
     #: most N", IFG's one per intent), so a model repeating environments stops
     environments: list[WrittenEnvironment] = Field(min_length=1, json_schema_extra={AT_MOST: "environment_slots"})
+
+
+class IntentWire(BaseModel):
+    """One intent of IFG's stage 1 (protocol 5): a situation of the task, as the literals that
+    hold initially, each bound to the task's roles, rooms and flags like LogicEnvGen's factors
+    (`llm.structured`), so `not attr(cabinet, opened)` cannot be written; a literal stated both
+    ways is refused (re-asked) as no situation."""
+
+    model_config = _F
+    description: str = Field(max_length=300, description="the situation in words")
+    facts: list[LiteralDraft] = Field(default_factory=list, max_length=24,
+                                      description="what holds initially in this situation")
+
+    @model_validator(mode="after")
+    def _consistent(self, info: ValidationInfo) -> IntentWire:
+        if meaning.enabled(info.context):
+            texts = [literal_text(f) for f in self.facts]
+            both = sorted({t for t in texts if f"not {t}" in texts})
+            if both:
+                raise MeaningError(f"the intent states {both[0]} and its negation: write one situation, "
+                                   "each literal once")
+        return self
+
+    def texts(self) -> list[str]:
+        """The facts in the condition language, each once."""
+        return list(dict.fromkeys(literal_text(f) for f in self.facts))
 
 
 def written_slots(roles: Sequence[str], environments: int) -> dict[str, list[str]]:

@@ -56,6 +56,10 @@ class Timing(BaseModel):
     run_phases: dict[str, float] = Field(
         default_factory=dict, description="seconds of the run's own phases in its main process "
         "(tasks, start-up, resume scan, units: running or awaiting them, saving: committing them, results)")
+    per_task: dict[str, dict[str, dict[str, float]]] = Field(
+        default_factory=dict, description="per generator and task: generation seconds, model "
+        "requests (sent, answered from the cache), re-asks, prompt and completion tokens and model "
+        "latency, to plan a run on a slow model")
     per_seed: dict[str, Any] | None = Field(default=None, description="run --seeds: each seed's timing")
 
 

@@ -168,8 +168,21 @@ def build_results(
             "generation_seconds": gen_seconds,
             "llm": llm,
             "phases": phase_seconds(records, list(gen_seconds)),
+            "per_task": {gen: {u.task_id: unit_cost(u) for u in records if u.generator == gen}
+                         for gen in gen_seconds},
         },
     }
+
+
+#: what one unit cost, per generator and task (results.json `timing.per_task`)
+COST_KEYS = ("requests", "cache_hits", "reasks", "prompt_tokens", "completion_tokens", "latency_s")
+
+
+def unit_cost(unit: UnitRecord) -> dict[str, float]:
+    """A unit's generation seconds and model traffic: a user planning a run on a slow model
+    reads what each method asked of a task (a 1.5B model on 2 cores: hours per method)."""
+    return {"generation_seconds": round(unit.gen_seconds, 3),
+            **{k: round(float(unit.llm.get(k, 0.0)), 3) for k in COST_KEYS}}
 
 
 def phase_seconds(records: Sequence[UnitRecord], generators: Sequence[str]) -> dict[str, dict[str, float]]:
