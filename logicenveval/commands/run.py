@@ -188,16 +188,26 @@ def print_size(run_dir: Path) -> None:
 
 
 def report_failures(records: Sequence[UnitRecord]) -> int:
-    """Exit status of a finished run: 1 with a summary when a generator has no valid unit."""
-    from logicenveval.runner.failures import failed_generators, summary
+    """Exit status of a finished run: `EXIT_GENERATOR_RAISED` (3) with the exceptions and the
+    generator's own frames when a generator raised in any unit; else 1 with a summary when a
+    generator has no valid unit; else 0 (docs/security.md, "Exit codes")."""
+    from logicenveval.runner.failures import (
+        EXIT_GENERATOR_RAISED,
+        failed_generators,
+        raised_summary,
+        summary,
+    )
 
     dead = failed_generators(records)
-    if not dead:
-        return 0
-    print(f"error: {len(dead)} generator(s) produced no environment in any unit\n(a row of failed "
-          "attempts is still a measurement; infrastructure failures are 'not measured'):\n"
-          + summary(records, dead), file=sys.stderr)
-    return 1
+    if dead:
+        print(f"error: {len(dead)} generator(s) produced no environment in any unit\n(a row of "
+              "failed attempts is still a measurement; infrastructure failures are 'not "
+              "measured'):\n" + summary(records, dead), file=sys.stderr)
+    bugs = raised_summary(records)
+    if bugs:
+        print(bugs, file=sys.stderr)
+        return EXIT_GENERATOR_RAISED
+    return 1 if dead else 0
 
 
 def _generator_args(items: Sequence[tuple[str, dict[str, Any]]]) -> dict[str, dict[str, Any]]:
