@@ -70,3 +70,73 @@ def test_a_plugin_that_raises_in_some_units_exits_3_naming_its_own_frame(
            "kitchen_fridge_restock" in err
     assert "internal error: IndexError…" not in proc.stdout + proc.stderr
     assert max(len(line) for line in proc.stderr.splitlines()) <= 100
+
+
+def _edit_helper(plugin: Path, text: str = "\nEDITED = 1\n") -> None:
+    (plugin / "helper.py").write_text(HELPER.replace('"kitchen"', '"nothing"') + text, encoding="utf-8")
+
+
+def test_edit_rerun_compare_keeps_the_old_run(plugin: Path, tmp_path: Path) -> None:
+    """Edit a helper, run the same command, compare OLD NEW: the old run is still there."""
+    _edit_helper(plugin)
+    out = tmp_path / "out"
+    first = cli(plugin, *run_args(out))
+    assert first.returncode == 0, first.stderr
+    (old,) = out.iterdir()
+    before = (old / "results.json").read_bytes()
+    _edit_helper(plugin, "\nEDITED = 2\n")
+    second = cli(plugin, *run_args(out))
+    assert second.returncode == 0, second.stderr
+    new = out / f"{old.name}-2"
+    assert (old / "results.json").read_bytes() == before  # the finished run is kept as it was
+    assert (new / "results.json").is_file()
+    text = " ".join(second.stdout.split())
+    assert f"kept the finished run made by other inputs (generator mygen's code), not replaced: " \
+           f"{old}" in text
+    assert "computed 3 unit(s), reused 0" in text  # every unit of mygen: its helper changed
+    assert "recomputed 3 unit(s): generator mygen's code changed" in text
+    third = cli(plugin, *run_args(out))  # the same inputs again: the new folder, all reused
+    assert "computed 0 unit(s), reused 3" in third.stdout and sorted(out.iterdir()) == [old, new]
+    compared = cli(plugin, "compare", str(old), str(new))
+    lines = [line for line in compared.stdout.splitlines() if "code of mygen" in line]
+    assert len(lines) == 1 and "differs" in lines[0]
+    assert "warning" not in compared.stdout
+    same = cli(plugin, "compare", str(new), str(new))
+    assert "warning: A and B have the same configuration and the same fingerprints" in same.stdout
+
+
+def test_a_named_finished_run_is_refused_with_the_commands_to_keep_or_replace_it(
+        plugin: Path, tmp_path: Path) -> None:
+    _edit_helper(plugin)
+    out = tmp_path / "out"
+    args = run_args(out, "--run-id", "floor-v1")
+    assert cli(plugin, *args).returncode == 0
+    before = {p: p.read_bytes() for p in (out / "floor-v1").rglob("*") if p.is_file()}
+    _edit_helper(plugin, "\nEDITED = 2\n")
+    refused = cli(plugin, *args)
+    assert refused.returncode == 2
+    err = " ".join(refused.stderr.split())
+    assert "floor-v1: the run folder holds a finished run made by other inputs (generator " \
+           "mygen's code); it is kept, not replaced" in err
+    keep = "python -m logicenveval " + " ".join(args).replace("floor-v1", "floor-v1-2")
+    assert f"keep it and run under a new id: {keep} ;" in err
+    assert "or replace it: python -m logicenveval " + " ".join([*args, "--replace"]) in err
+    assert {p: p.read_bytes() for p in (out / "floor-v1").rglob("*") if p.is_file()} == before
+    assert sorted(p.name for p in out.iterdir()) == ["floor-v1"]  # nothing else was made
+    replaced = cli(plugin, *args, "--replace")
+    assert replaced.returncode == 0 and "recomputed 3 unit(s)" in replaced.stdout
+
+
+def test_an_unfinished_run_resumes_in_place(plugin: Path, tmp_path: Path) -> None:
+    """A run with no results.json is not finished: a re-run resumes it, edited or not."""
+    _edit_helper(plugin)
+    out = tmp_path / "out"
+    assert cli(plugin, *run_args(out)).returncode == 0
+    (folder,) = out.iterdir()
+    (folder / "results.json").unlink()  # as if killed before the end
+    again = cli(plugin, *run_args(out))
+    assert "computed 0 unit(s), reused 3" in again.stdout and list(out.iterdir()) == [folder]
+    (folder / "results.json").unlink()
+    _edit_helper(plugin, "\nEDITED = 3\n")
+    edited = cli(plugin, *run_args(out))
+    assert "computed 3 unit(s), reused 0" in edited.stdout and list(out.iterdir()) == [folder]

@@ -4,17 +4,21 @@ from __future__ import annotations
 
 import argparse
 import os
+import shlex
 import sys
 from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from logicenveval.commands import options
+from logicenveval.errors import LogicEnvEvalError
 from logicenveval.runner.config import DEFAULT_GENERATORS, DEFAULT_UNIT_TIMEOUT, MAX_COUNT
 from logicenveval.scene.layout import DEFAULT_SOLVER, SOLVERS
 
 if TYPE_CHECKING:
     from logicenveval.metrics.records import UnitRecord
+    from logicenveval.runner.config import RunConfig
+    from logicenveval.runner.placement import FinishedRunError
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
@@ -65,6 +69,10 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--fresh", action="store_true",
                    help="recompute every unit (by default a unit is reused only when the "
                    "configuration, harness, generator code, task files and catalog are unchanged)")
+    p.add_argument("--replace", action="store_true",
+                   help="let this run replace a finished run of other code, tasks or catalog in its "
+                   "folder (by default such a run goes to a new folder <run>-2, or is refused "
+                   "under --run-id; docs/runner.md)")
     p.add_argument("--debug", action="store_true",
                    help="run in this process and re-raise a generator's exception with its "
                    "traceback (for a debugger: python -m pdb -m logicenveval run --debug ...); "
@@ -82,7 +90,6 @@ def run(args: argparse.Namespace) -> int:
     if not args.debug:  # started already by `cli.main` (`run_start`) unless that read nothing
         prestart(args.executor, args.workers, preload=PAGE_MODULES)
     from logicenveval.runner.config import RunConfig
-    from logicenveval.runner.run import run as run_benchmark
 
     config = RunConfig(
         model=args.model,
@@ -105,6 +112,7 @@ def run(args: argparse.Namespace) -> int:
         generator_args=_generator_args(args.generator_args),
         fresh=args.fresh,
         debug=args.debug,
+        replace=args.replace,
     )
     formats = [f.strip() for f in args.export.split(",") if f.strip()]
     if formats:
@@ -115,6 +123,17 @@ def run(args: argparse.Namespace) -> int:
         if unknown:
             raise ConfigError(f"unknown export format(s) {unknown}", field="--export",
                               hint=f"use a comma-separated subset of {', '.join(SUFFIX)}")
+    try:
+        return _run(args, config, formats)
+    except LogicEnvEvalError as exc:
+        from logicenveval.runner.placement import FinishedRunError
+
+        if isinstance(exc, FinishedRunError):
+            raise _with_commands(exc, getattr(args, "argv", None)) from None
+        raise
+
+
+def _run(args: argparse.Namespace, config: RunConfig, formats: list[str]) -> int:
     if args.seeds is not None:
         from logicenveval.runner.seeds import run_seeds
 
@@ -132,15 +151,18 @@ def run(args: argparse.Namespace) -> int:
         print(f"computed {multi.computed} unit(s), reused {multi.reused} over "
               f"{len(multi.seed_dirs)} seed run(s) (seed<N>/ in the run folder)")
         print("\n".join(path_lines("run folder:", multi.run_dir)))
+        if multi.note:
+            print(multi.note)
         print_size(multi.run_dir)
         _say_stale(multi.stale, multi.records, args.debug)
         return report_failures(multi.records)
     from functools import partial
 
     from logicenveval.reporting.unit_page import write_unit_page
+    from logicenveval.runner.run import run as run_benchmark
 
     # each unit's report page is written by the worker that ran it (`reporting.unit_page`)
-    pages = partial(write_unit_page, run_id=config.resolved_run_id(), model=config.model)
+    pages = partial(write_unit_page, model=config.model)
     outcome = run_benchmark(config, show_progress=not args.quiet, on_commit=pages,
                             meanwhile=_load_report)
     from logicenveval.reporting.publish import publish
@@ -155,9 +177,42 @@ def run(args: argparse.Namespace) -> int:
     print(shown.summary)
     print(f"computed {outcome.computed} unit(s), reused {outcome.reused}")
     print("\n".join(path_lines("run folder:", outcome.run_dir)))
+    if outcome.note:
+        print(outcome.note)
     print_size(outcome.run_dir)
     _say_stale(outcome.stale, outcome.records, args.debug)
     return report_failures(outcome.records)
+
+
+def _with_commands(exc: FinishedRunError, argv: Sequence[str] | None) -> FinishedRunError:
+    """The refusal with the two exact commands: keep the finished run (a new id) or replace it."""
+    from logicenveval.runner.placement import FinishedRunError
+
+    if not argv:
+        return exc
+    keep = "python -m logicenveval " + shlex.join(_with_option(list(argv), "--run-id", exc.free_id))
+    replace = "python -m logicenveval " + shlex.join([*argv, "--replace"])
+    out = FinishedRunError(exc.run_dir, exc.changed, exc.free_id)
+    out.hint = f"keep it and run under a new id: {keep} ; or replace it: {replace}"
+    out.args = (out._format(),)
+    return out
+
+
+def _with_option(argv: list[str], option: str, value: str) -> list[str]:
+    """`argv` with `option`'s value set to `value` (both `--opt v` and `--opt=v` forms)."""
+    out, skip = [], False
+    for i, item in enumerate(argv):
+        if skip:
+            skip = False
+            continue
+        if item == option and i + 1 < len(argv):
+            out += [option, value]
+            skip = True
+        elif item.startswith(option + "="):
+            out.append(f"{option}={value}")
+        else:
+            out.append(item)
+    return out
 
 
 def _load_report() -> None:

@@ -18,6 +18,8 @@ refused unless the comparison is restricted to the unchanged ones.
 
 from __future__ import annotations
 
+import hashlib
+import json
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -140,6 +142,23 @@ class Pair:
         return self.gen_a if self.gen_a == self.gen_b else f"{self.gen_a} (A) → {self.gen_b} (B)"
 
 
+#: what a side shows for a fingerprint its results.json does not record (an older harness)
+UNRECORDED = "not recorded"
+
+
+@dataclass(frozen=True)
+class Fingerprint:
+    """One input of both sides (results.json `inputs`, runner.placement): what made A and B."""
+
+    what: str  # harness, catalog, "code of <generator>", "<n> task(s)"
+    a: str
+    b: str
+
+    @property
+    def same(self) -> bool:
+        return self.a == self.b != UNRECORDED
+
+
 @dataclass(frozen=True)
 class Comparison:
     tasks: list[str]
@@ -149,6 +168,27 @@ class Comparison:
     new: list[str] = field(default_factory=list)
     allow_missing: bool = False
     tolerance: float = 0.02
+    #: the fingerprints of both sides' inputs (harness, catalog, each pair's code, the tasks)
+    fingerprints: list[Fingerprint] = field(default_factory=list)
+    #: the two sides' configurations (results.json `config`) are the same
+    same_config: bool = False
+
+    @property
+    def same_inputs(self) -> bool:
+        """Every fingerprint is recorded on both sides and equal: the same code, tasks, catalog."""
+        return bool(self.fingerprints) and all(f.same for f in self.fingerprints)
+
+    @property
+    def warning(self) -> str:
+        """Why the comparison may compare nothing ("" when the inputs differ)."""
+        if not self.same_inputs:
+            return ""
+        if self.same_config:
+            return ("warning: A and B have the same configuration and the same fingerprints: they "
+                    "are one computation and can differ only in timings (did a re-run with "
+                    "--replace overwrite the run meant as A? docs/runner.md, 'Finished runs')")
+        return ("warning: A and B have the same fingerprints (harness, generator code, tasks, "
+                "catalog): any difference comes from their configurations, not from the code")
 
     @property
     def deltas(self) -> list[Delta]:
@@ -180,6 +220,9 @@ class Comparison:
             "new_in_b": self.new,
             "regressions": len(self.regressions), "improvements": len(self.improvements),
             "inconclusive": len(self.inconclusive), "failed": self.failed,
+            "fingerprints": [{"input": f.what, "a": f.a, "b": f.b, "same": f.same}
+                             for f in self.fingerprints],
+            "same_inputs": self.same_inputs, "warning": self.warning or None,
         }
 
 
@@ -243,7 +286,48 @@ def compare_results(
                     for t in tasks if t in ta and t not in tb]
         shared = [t for t in tasks if t in ta and t in tb]
         out.append(_pair(x, y, va, vb, ca, cb, shared, tolerance, judge_timing, n_bootstrap))
-    return Comparison(tasks, out, missing, new, allow_missing, tolerance)
+    return Comparison(tasks, out, missing, new, allow_missing, tolerance,
+                      fingerprints(a, b, pairs, tasks), a.get("config") == b.get("config"))
+
+
+def fingerprints(a: dict[str, Any], b: dict[str, Any], pairs: list[tuple[str, str]],
+                 tasks: list[str]) -> list[Fingerprint]:
+    """The fingerprints of what made each side: harness, catalog, each compared generator's
+    code, and one digest over the compared tasks' files (`UNRECORDED` where a side has none)."""
+    ia, ib = _inputs(a), _inputs(b)
+    out = [Fingerprint(key, _short(ia.get(key)), _short(ib.get(key))) for key in ("harness", "catalog")]
+    for x, y in pairs:
+        label = f"code of {x}" if x == y else f"code of {x} (A) / {y} (B)"
+        out.append(Fingerprint(label, _short(_get(ia, "generators", x)),
+                               _short(_get(ib, "generators", y))))
+    out.append(Fingerprint(f"{len(tasks)} task(s)", _tasks_digest(ia, tasks),
+                           _tasks_digest(ib, tasks)))
+    return out
+
+
+def _inputs(results: dict[str, Any]) -> dict[str, Any]:
+    inputs = results.get("inputs")
+    return inputs if isinstance(inputs, dict) else {}
+
+
+def _get(inputs: dict[str, Any], key: str, name: str) -> Any:
+    group = inputs.get(key)
+    return group.get(name) if isinstance(group, dict) else None
+
+
+def _short(value: Any) -> str:
+    """A fingerprint as a person reads it (digests cut to 8 hex digits), or `UNRECORDED`."""
+    if not isinstance(value, str):
+        return UNRECORDED
+    return " ".join(w[:8] if len(w) > 8 and all(c in "0123456789abcdef" for c in w) else
+                    (w[:12] if w.startswith("src:") else w) for w in value.split())
+
+
+def _tasks_digest(inputs: dict[str, Any], tasks: list[str]) -> str:
+    found = {t: _get(inputs, "tasks", t) for t in tasks}
+    if not found or any(not isinstance(v, str) for v in found.values()):
+        return UNRECORDED
+    return hashlib.sha256(json.dumps(found, sort_keys=True).encode()).hexdigest()[:8]
 
 
 def _pair(x: str, y: str, va: dict[str, Any], vb: dict[str, Any], ca: dict[tuple[str, int], Any],

@@ -67,6 +67,10 @@ class RunConfig(BaseModel):
     fresh: bool = False
     #: re-raise a generator's exception in this process, for a debugger (`--debug`; not identity)
     debug: bool = False
+    #: let a run of other inputs replace the finished run in its folder (`--replace`; not
+    #: identity): by default it goes to a new folder, or is refused under `--run-id`
+    #: (runner.placement)
+    replace: bool = False
 
     @model_validator(mode="before")
     @classmethod

@@ -8,7 +8,7 @@ import tempfile
 import threading
 import time
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -27,12 +27,15 @@ from logicenveval.model.task import POLICY_KINDS, Task
 from logicenveval.runner.config import RunConfig, selected_tasks
 from logicenveval.runner.executors import Executor, make_executor
 from logicenveval.runner.fingerprint import (
+    catalog_fingerprint,
     changed_inputs,
     generator_fingerprint,
+    harness_fingerprint,
     stale_reason,
     task_fingerprint,
     unit_inputs,
 )
+from logicenveval.runner.placement import Placement, adopt, place, run_inputs
 from logicenveval.runner.results import build_results, write_outputs
 from logicenveval.runner.schedule import hand_offs
 from logicenveval.runner.store import RunStore
@@ -50,6 +53,8 @@ class RunOutcome:
     stale: dict[str, int] = field(default_factory=dict)
     #: (generator, task) of the units whose `on_commit` hook (their report page) ran in a worker
     paged: frozenset[tuple[str, str]] = frozenset()
+    #: which finished run of other inputs was kept, and where this run went ("" if none)
+    note: str = ""
 
     def stale_text(self) -> str:
         """One line per reason stored units were recomputed ("" when none was)."""
@@ -120,6 +125,19 @@ def _resolved(item: str, own: dict[str, Any] | None, by_row: dict[str, dict[str,
     return ref
 
 
+def current_inputs(config: RunConfig, refs: list[GeneratorRef], ids: list[str]) -> dict[str, Any]:
+    """The fingerprints of everything a run of `refs` on `ids` is made by (results.json
+    `inputs`; `runner.placement`)."""
+    return run_inputs(harness_fingerprint(), catalog_fingerprint(),
+                      {r.name: generator_fingerprint(r) for r in refs},
+                      {t: task_fingerprint(t, config.tasks_dir) for t in ids})
+
+
+def check_tasks(config: RunConfig) -> list[str]:
+    """The task ids a run of `config` covers (`--tasks`, `--limit`), checked."""
+    return _check(config)
+
+
 def _check(config: RunConfig) -> list[str]:
     if not config.generators:
         raise ConfigError("no generator selected", field="--generators",
@@ -160,7 +178,7 @@ def _prepare_dir(run_dir: Path) -> None:
 
 def run(config: RunConfig, *, console: Console | None = None, show_progress: bool = True,
         on_commit: Callable[..., None] | None = None,
-        meanwhile: Callable[[], None] | None = None) -> RunOutcome:
+        meanwhile: Callable[[], None] | None = None, previous: Path | None = None) -> RunOutcome:
     """Run (or resume) the units of `config`; a managed local model (`llamacpp:`) is served by
     one server for the whole run, stopped when the run ends however it ends (llm.llamacpp).
     `on_commit(spec, record, metrics)` runs where each computed unit was committed
@@ -168,7 +186,12 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
     `meanwhile()` runs in a background thread of this process while the units run, and is
     awaited before results.json is written: the imports the run's end needs (pandas for the
     aggregation, here; the report for the command layer) are then no serial work after the
-    units, nor before them, where this process's set-up is what the workers wait for."""
+    units, nor before them, where this process's set-up is what the workers wait for.
+
+    A finished run of other inputs in the configured folder is never replaced: the run goes to a
+    new version of the folder, or is refused under `--run-id` (`runner.placement`).
+    `previous`: the run folder whose unchanged units to copy, decided by the caller (a seed run
+    of `--seeds`, whose parent folder was placed); then no placement is done here."""
     from logicenveval.llm.llamacpp import serving
 
     limits = current_limits()  # once, before any work: every unit runs under these values
@@ -182,15 +205,23 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
             for kind in POLICY_KINDS:
                 policy_path(task, kind, config.tasks_dir)
             situation_count(task)
+        inputs = current_inputs(config, refs, ids)
+    placement = Placement(config.run_dir(), previous) if previous is not None else \
+        place(config.run_dir(), inputs, named=config.run_id is not None, replace=config.replace)
+    if placement.run_dir != config.run_dir():
+        config = config.model_copy(update={"run_id": placement.run_dir.name})
     with serving(config.model, config.model_args,
                  log_path=config.run_dir() / "llama-server.log") as model_args:
-        return _run(config, model_args, refs, ids, tasks, limits, console=console,
-                    show_progress=show_progress, on_commit=on_commit, meanwhile=meanwhile)
+        outcome = _run(config, model_args, refs, ids, tasks, limits, inputs, placement,
+                       console=console, show_progress=show_progress, on_commit=on_commit,
+                       meanwhile=meanwhile)
+    return replace(outcome, note=placement.note() if previous is None else "")
 
 
 def _run(config: RunConfig, model_args: str, refs: list[GeneratorRef], ids: list[str],
-         tasks: list[Task], limits: dict[str, int], *, console: Console | None,
-         show_progress: bool, on_commit: Callable[..., None] | None = None,
+         tasks: list[Task], limits: dict[str, int], inputs: dict[str, Any], placement: Placement,
+         *, console: Console | None, show_progress: bool,
+         on_commit: Callable[..., None] | None = None,
          meanwhile: Callable[[], None] | None = None) -> RunOutcome:
     with phases.phase("start-up"):
         executor = make_executor("inprocess" if config.debug else config.executor, config.workers)
@@ -204,9 +235,21 @@ def _run(config: RunConfig, model_args: str, refs: list[GeneratorRef], ids: list
         store.claim(config.identity())  # held until the run ends: one run per folder at a time
     try:
         return _run_units(config, refs, ids, tasks, run_dir, store, executor, console, show_progress,
-                          model_args, limits, on_commit, meanwhile)
+                          model_args, limits, on_commit, meanwhile, inputs, placement.previous)
     finally:
         store.unlock()
+
+
+def _adopted(earlier: RunStore | None, store: RunStore, record: UnitRecord) -> bool:
+    """Copy an unchanged unit of the kept finished run into this run's folder: the files it
+    wrote, its renders when they are there (a missing one is re-drawn), then the unit itself."""
+    if earlier is None or not adopt(earlier.run_dir, store.run_dir, list(record.files)):
+        return False
+    for detail in record.details:
+        if detail.render is not None:
+            adopt(earlier.run_dir, store.run_dir, [detail.render])
+    store.save(record)
+    return True
 
 
 def _budget(config: RunConfig) -> Callable[[tuple[UnitSpec, ...]], float | None]:
@@ -256,7 +299,8 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
                run_dir: Path, store: RunStore, executor: Executor, console: Console | None,
                show_progress: bool, model_args: str, limits: dict[str, int],
                on_commit: Callable[..., None] | None,
-               meanwhile: Callable[[], None] | None = None) -> RunOutcome:
+               meanwhile: Callable[[], None] | None, run_fingerprints: dict[str, Any],
+               previous: Path | None) -> RunOutcome:
     store.remove_stale_temp_files()
     specs = [
         UnitSpec(generator=r.name, generator_target=r.target, generator_path=r.search_path, task_id=t,
@@ -267,8 +311,7 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
                  limits=limits)
         for r in refs for t in ids
     ]
-    code = {r.name: generator_fingerprint(r) for r in refs}
-    files = {t: task_fingerprint(t, config.tasks_dir) for t in ids}
+    code, files = run_fingerprints["generators"], run_fingerprints["tasks"]
     by_name = {r.name: r for r in refs}
     inputs = {(s.generator, s.task_id): unit_inputs(by_name[s.generator], s.task_id, config.tasks_dir,
                                                     generator=code[s.generator], task=files[s.task_id])
@@ -276,11 +319,14 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
     records: dict[tuple[str, str], UnitRecord] = {}
     pending: list[UnitSpec] = []
     stale: dict[str, int] = {}
+    earlier = RunStore(previous) if previous is not None else None
     with phases.phase("resume scan"):
         for spec in specs:
             key = (spec.generator, spec.task_id)
-            stored = store.load(spec.generator, spec.task_id)
-            if stored is None or stored.error_kind == "infrastructure" or not store.files_intact(stored) \
+            stored, source = store.load(spec.generator, spec.task_id), store
+            if stored is None and earlier is not None:  # the kept finished run's unit
+                stored, source = earlier.load(spec.generator, spec.task_id), earlier
+            if stored is None or stored.error_kind == "infrastructure" or not source.files_intact(stored) \
                     or any(limits.get(k) != v for k, v in stored.limits.items()):
                 pending.append(spec)  # never computed, corrupt, edited, failed for a reason outside
                 # it, or shaped by a limit whose value has changed since
@@ -294,8 +340,10 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
                     why = ("--debug re-runs a generator that raised" if what == "debug" else
                            stale_reason(what, spec.generator, spec.task_id, stored.inputs, inputs[key]))
                     stale[why] = stale.get(why, 0) + 1
-            else:
+            elif source is store or _adopted(earlier, store, stored):
                 records[key] = stored
+            else:
+                pending.append(spec)
     reused = len(records)
     pending = [s.model_copy(update={"inputs": inputs[(s.generator, s.task_id)], "commit": True,
                                     "on_commit": on_commit})
@@ -346,6 +394,7 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
         results = build_results(config, tasks, ordered, wall_seconds=time.perf_counter() - start,
                                 generators=[r.name for r in refs], computed=computed)
     results["timing"]["run_phases"] = phases.take()
+    results["inputs"] = run_fingerprints
     write_outputs(run_dir, results, ordered)
     return RunOutcome(run_dir=run_dir, results=results, computed=len(pending), reused=reused,
                       records=tuple(ordered), stale=stale, paged=frozenset(paged))
