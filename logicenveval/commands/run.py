@@ -28,30 +28,43 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                    "llamacpp:<model.gguf> (a managed local llama.cpp server) | "
                    "noisy:<model> (a model whose replies are perturbed; rate= in --model-args); "
                    "default offline (docs/llm.md)")
-    p.add_argument("--model-args", default="", help="key=value,... e.g. base_url=...,api_key_env=...")
+    p.add_argument("--model-args", default="",
+                   help="key=value,... e.g. base_url=...,api_key_env=... (default: none; docs/llm.md)")
     p.add_argument("--generators", default=DEFAULT_GENERATORS, type=options.name_list,
                    help="comma-separated: built-in names (ablations by name), installed plug-ins, "
                    f"or PKG.MODULE:ATTR (default {','.join(DEFAULT_GENERATORS)}; see "
                    "`python -m logicenveval generators list`, docs/own-generator.md)")
-    p.add_argument("--tasks", default=(), type=options.task_list, help="all or comma-separated task ids")
+    p.add_argument("--tasks", default=(), type=options.task_list,
+                   help="all or comma-separated task ids (default all; `python -m logicenveval "
+                   "tasks list`)")
     p.add_argument("--tasks-dir", default=None, help="folder of <task_id>/task.json (default: the benchmark)")
-    p.add_argument("--limit", type=options.int_range(1, MAX_COUNT), default=None, help="only the first N tasks")
-    p.add_argument("--seed", type=options.int_range(0, options.MAX_SEED), default=0)
+    p.add_argument("--limit", type=options.int_range(1, MAX_COUNT), default=None,
+                   help="only the first N tasks (default: every selected task)")
+    p.add_argument("--seed", type=options.int_range(0, options.MAX_SEED), default=0,
+                   help="seed of every random choice (generators, layouts, the noisy model): the "
+                   "same seed gives the same results.json (default 0)")
     p.add_argument("--seeds", default=None, type=options.seed_list,
                    help="comma-separated seeds: one run per seed, aggregated with intervals over "
-                   "tasks and seeds (overrides --seed)")
+                   "tasks and seeds (overrides --seed; default: one run, of --seed)")
     p.add_argument("--layout-solver", default=DEFAULT_SOLVER, choices=SOLVERS,
                    help=f"layout backend of solver-based generators (default {DEFAULT_SOLVER}; docs/scene.md)")
-    p.add_argument("--workers", type=options.workers, default=os.cpu_count() or 1)
-    p.add_argument("--executor", default="process", choices=["process", "inprocess", "ray"])
-    p.add_argument("--output", default="reports", help="parent folder of run folders")
+    p.add_argument("--workers", type=options.workers, default=os.cpu_count() or 1,
+                   help="parallel worker processes of --executor process or ray (default: the "
+                   f"number of cores, here {os.cpu_count() or 1}); results do not depend on it")
+    p.add_argument("--executor", default="process", choices=["process", "inprocess", "ray"],
+                   help="process: a pool of --workers processes (default); inprocess: this process, "
+                   "for debugging and profiling; ray: Ray tasks, local or RAY_ADDRESS "
+                   "(docs/runner.md)")
+    p.add_argument("--output", default="reports",
+                   help="parent folder of run folders (default reports)")
     p.add_argument("--run-id", default=None, type=options.folder_name,
                    help="run folder name inside --output (default: derived from the config)")
     p.add_argument("--max-infra-failures", type=options.int_range(0, MAX_COUNT), default=5,
                    help="stop after N consecutive units failed for infrastructure reasons "
                    "(endpoint, cache, disk); 0 never stops (default 5)")
     cache = p.add_mutually_exclusive_group()
-    cache.add_argument("--cache", default=None, help="SQLite cache of LLM replies")
+    cache.add_argument("--cache", default=None,
+                       help="SQLite cache of LLM replies (default <output>/llm_cache.sqlite)")
     cache.add_argument("--no-cache", action="store_true", help="bypass the LLM reply cache")
     p.add_argument("--brief", default=None, choices=["roles", "description"],
                    help="what generators get: as in the paper, only id, description and rooms, with the "
@@ -65,7 +78,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--generator-args", action="append", default=[], type=options.generator_args,
                    metavar="NAME:key=value,...",
                    help="keyword arguments of a generator's factory (repeat per generator; NAME as "
-                   "in --generators); part of the run's identity (docs/own-generator.md)")
+                   "in --generators); part of the run's identity (default: none; "
+                   "docs/own-generator.md)")
     p.add_argument("--fresh", action="store_true",
                    help="recompute every unit (by default a unit is reused only when the "
                    "configuration, harness, generator code, task files and catalog are unchanged)")
@@ -80,7 +94,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--quiet", action="store_true", help="no progress bars")
     p.add_argument("--export", default="", metavar="FORMATS",
                    help="also write procthor and/or glb files next to every environment "
-                        "(e.g. procthor,glb)")
+                        "(e.g. procthor,glb; default: none)")
 
 
 def run(args: argparse.Namespace) -> int:

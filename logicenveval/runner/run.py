@@ -7,13 +7,20 @@ import os
 import tempfile
 import threading
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
 from rich.console import Console
-from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
+from rich.progress import (
+    BarColumn,
+    MofNCompleteColumn,
+    Progress,
+    TaskID,
+    TextColumn,
+    TimeRemainingColumn,
+)
 
 from logicenveval import phases
 from logicenveval.benchmark import load_tasks, policy_path, task_ids
@@ -38,7 +45,7 @@ from logicenveval.runner.fingerprint import (
 from logicenveval.runner.placement import Placement, adopt, place, run_inputs
 from logicenveval.runner.results import build_results, write_outputs
 from logicenveval.runner.schedule import hand_offs
-from logicenveval.runner.store import RunStore
+from logicenveval.runner.store import RunStore, new_folders, remove_created
 from logicenveval.runner.unit import Committed, UnitSpec, planned_failures, run_units
 
 
@@ -223,12 +230,12 @@ def _run(config: RunConfig, model_args: str, refs: list[GeneratorRef], ids: list
          *, console: Console | None, show_progress: bool,
          on_commit: Callable[..., None] | None = None,
          meanwhile: Callable[[], None] | None = None) -> RunOutcome:
-    with phases.phase("start-up"):
+    run_dir = config.run_dir()
+    with phases.phase("start-up"), _undone_if_refused(new_folders(run_dir)):
         executor = make_executor("inprocess" if config.debug else config.executor, config.workers)
         warm_up = getattr(executor, "warm_up", None)
         if callable(warm_up):
             warm_up()  # workers' imports overlap the preflight and resume scan below
-        run_dir = config.run_dir()
         _prepare_dir(run_dir)
         _preflight(config, run_dir, model_args)
         store = RunStore(run_dir)
@@ -238,6 +245,15 @@ def _run(config: RunConfig, model_args: str, refs: list[GeneratorRef], ids: list
                           model_args, limits, on_commit, meanwhile, inputs, placement.previous)
     finally:
         store.unlock()
+
+
+def _plain_progress(console: Console, progress: Progress, bar: TaskID, start: float) -> None:
+    """The line a generator gets when its last unit is done, where no bar is drawn."""
+    task = next(t for t in progress.tasks if t.id == bar)
+    if task.total is not None and task.completed == task.total:
+        console.print(f"{task.description}: {int(task.completed)}/{int(task.total)} unit(s) done "
+                      f"({time.perf_counter() - start:.0f} s)", markup=False, highlight=False,
+                      soft_wrap=True)
 
 
 def _adopted(earlier: RunStore | None, store: RunStore, record: UnitRecord) -> bool:
@@ -250,6 +266,18 @@ def _adopted(earlier: RunStore | None, store: RunStore, record: UnitRecord) -> b
             adopt(earlier.run_dir, store.run_dir, [detail.render])
     store.save(record)
     return True
+
+
+@contextlib.contextmanager
+def _undone_if_refused(created: list[Path]) -> Iterator[None]:
+    """A start-up that is refused (an unknown model, an unreachable endpoint: exit 2) leaves
+    no run folder behind: the folders in `created` (none existed before it) are removed again
+    when empty, deepest first (`store.remove_created`)."""
+    try:
+        yield
+    except BaseException:
+        remove_created(created)
+        raise
 
 
 def _budget(config: RunConfig) -> Callable[[tuple[UnitSpec, ...]], float | None]:
@@ -352,9 +380,12 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
     paged: set[tuple[str, str]] = set()
     start = time.perf_counter()
     console = console or Console(stderr=True)
+    # bars only on a terminal: piped into a log, a bar is one line as wide as rich guesses
+    # (~150 columns) redrawn; there each generator gets one plain line when its units are done
+    bars_shown = show_progress and console.is_terminal
     with phases.phase("units"), Progress(  # the units, run (and committed) here or awaited
         TextColumn("[bold]{task.description:<14}"), BarColumn(), MofNCompleteColumn(),
-        TimeRemainingColumn(), console=console, disable=not show_progress, transient=False,
+        TimeRemainingColumn(), console=console, disable=not bars_shown, transient=False,
     ) as progress:
         bars = {
             r.name: progress.add_task(r.name, total=len(ids),
@@ -379,6 +410,8 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
                         if done.paged:
                             paged.add(key)
                         progress.advance(bars[record.generator])
+                        if show_progress and not bars_shown:
+                            _plain_progress(console, progress, bars[record.generator], start)
                         streak = streak + 1 if record.error_kind == "infrastructure" else 0
                         if config.max_infra_failures and streak >= config.max_infra_failures:
                             raise RunFailedError(

@@ -28,7 +28,7 @@ from logicenveval.runner.config import RunConfig
 from logicenveval.runner.placement import Placement, place
 from logicenveval.runner.results import RESULTS_SCHEMA, row_status
 from logicenveval.runner.run import check_tasks, current_inputs, resolve_generators, run
-from logicenveval.runner.store import RunStore
+from logicenveval.runner.store import RunStore, new_folders, remove_created
 
 
 @dataclass(frozen=True)
@@ -71,10 +71,17 @@ def run_seeds(config: RunConfig, seeds: Sequence[int], *, console: Console | Non
     placement = place(seeds_run_dir(config, seeds), inputs, named=config.run_id is not None,
                       replace=config.replace)
     parent = placement.run_dir
+    created = new_folders(parent)
     store = RunStore(parent)
     store.claim(seeds_identity(config, seeds))  # the parent folder is this run's until it ends
     try:
         return _run_seeds(config, seeds, placement, inputs, console, show_progress)
+    except BaseException:
+        if created:  # refused before any seed ran (exit 2): no empty run folder is left
+            store.unlock()
+            store.discard_if_unused()
+            remove_created(created[1:])
+        raise
     finally:
         store.unlock()
 
