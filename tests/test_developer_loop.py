@@ -210,3 +210,26 @@ def test_piped_output_has_no_progress_bar(plugin: Path, tmp_path: Path) -> None:
     lines = [line for line in (proc.stdout + proc.stderr).splitlines()
              if str(tmp_path) not in line]  # a path is never cut, it is there to be copied
     assert max(len(line) for line in lines) <= 100
+
+
+def test_compare_says_which_tasks_st_leaves_out(plugin: Path, tmp_path: Path) -> None:
+    """A side that built nothing in a task has no ST there: the paired ST leaves the task out,
+    and compare says so with the leaderboard's figure beside its own (issue 48)."""
+    out = tmp_path / "out"
+    assert cli(plugin, *run_args(out)).returncode == 3  # raises on the two kitchen tasks
+    (old,) = out.iterdir()
+    _edit_helper(plugin)
+    assert cli(plugin, *run_args(out)).returncode == 0
+    new = out / f"{old.name}-2"
+    compared = cli(plugin, "compare", str(old), str(new))
+    text = " ".join(compared.stdout.split())
+    assert "note: mygen: ST (ms), ST (ticks) and Redundancy are paired over the 1 task(s) where " \
+           "both sides built an environment; left out: kitchen_dish_cleanup (A built nothing), " \
+           "kitchen_fridge_restock (A built nothing). Each leaderboard averages its own tasks: " \
+           "ST (ms) A " in text
+    import json
+
+    data = json.loads(cli(plugin, "compare", str(old), str(new), "--json").stdout)
+    assert [e["task"] for e in data["pairs"][0]["left_out_of_st"]] == [
+        "kitchen_dish_cleanup", "kitchen_fridge_restock"]
+    assert {f["input"]: f["same"] for f in data["fingerprints"]}["code of mygen"] is False

@@ -136,10 +136,41 @@ class Pair:
     deltas: list[Delta]
     #: the interval is over this many tasks (< 2: n/a)
     n_tasks: int = 0
+    #: (task, side that built nothing there: "A" or "B"): paired tasks left out of ST and
+    #: Redundancy, which exist only where environments do (`uncertainty.paired_cells`)
+    left_out: tuple[tuple[str, str], ...] = ()
+    #: (A, B) ST (ms) as each side's own leaderboard averages it, over its own tasks
+    own_st: tuple[float | None, float | None] = (None, None)
 
     @property
     def title(self) -> str:
         return self.gen_a if self.gen_a == self.gen_b else f"{self.gen_a} (A) → {self.gen_b} (B)"
+
+    @property
+    def left_out_text(self) -> str:
+        """Which tasks ST and Redundancy leave out and why the figures differ from the
+        leaderboards' ("" when none is left out)."""
+        if not self.left_out:
+            return ""
+        named = ", ".join(f"{t} ({side} built nothing)" for t, side in self.left_out[:MAX_NAMED])
+        more = len(self.left_out) - MAX_NAMED
+        text = (f"note: {self.title}: ST (ms), ST (ticks) and Redundancy are paired over the "
+                f"{self.n_tasks - len(self.left_out)} task(s) where both sides built an environment; "
+                f"left out: {named}" + (f", +{more} more" if more > 0 else ""))
+        st = next((d for d in self.deltas if d.path == ("st_ms",)), None)
+        own_a, own_b = self.own_st
+        if st is not None and own_a is not None and own_b is not None:
+            text += (f". Each leaderboard averages its own tasks: ST (ms) A {own_a:.2f} and B "
+                     f"{own_b:.2f} there, {_fmt(st.before)} and {_fmt(st.after)} here")
+        return text
+
+
+#: tasks named in a note before "+N more"
+MAX_NAMED = 5
+
+
+def _fmt(value: float | None) -> str:
+    return "–" if value is None else f"{value:.2f}"
 
 
 #: what a side shows for a fingerprint its results.json does not record (an older harness)
@@ -215,7 +246,9 @@ class Comparison:
         return {
             "tasks": self.tasks, "tolerance": self.tolerance, "allow_missing": self.allow_missing,
             "pairs": [{"a": p.gen_a, "b": p.gen_b, "n_tasks": p.n_tasks,
-                       "metrics": [d.to_json() for d in p.deltas]} for p in self.pairs],
+                       "metrics": [d.to_json() for d in p.deltas],
+                       "left_out_of_st": [{"task": t, "built_nothing": side}
+                                          for t, side in p.left_out]} for p in self.pairs],
             "missing": [{"generator": m.generator, "task": m.task or None, "why": m.why} for m in self.missing],
             "new_in_b": self.new,
             "regressions": len(self.regressions), "improvements": len(self.improvements),
@@ -335,7 +368,9 @@ def _pair(x: str, y: str, va: dict[str, Any], vb: dict[str, Any], ca: dict[tuple
           n_bootstrap: int) -> Pair:
     paired: dict[tuple[str, ...], tuple[float, float | None, float | None]] = {}
     point_a = point_b = None
+    left_out: list[tuple[str, str]] = []
     if shared:
+        left_out = _left_out(ca, cb, shared)
         ca = {k: c for k, c in ca.items() if k[0] in set(shared)}
         cb = {k: c for k, c in cb.items() if k[0] in set(shared)}
         ca, cb = paired_cells(ca, cb)  # ST and Redundancy over the tasks both sides have them
@@ -354,4 +389,20 @@ def _pair(x: str, y: str, va: dict[str, Any], vb: dict[str, Any], ca: dict[tuple
         way = direction(path, judge_timing)
         deltas.append(Delta(x, y, header, before, after, verdict(diff, ci, tolerance, way), ci, pct,
                             path, way))
-    return Pair(x, y, shared, deltas, len(shared))
+    return Pair(x, y, shared, deltas, len(shared), tuple(left_out),
+                (metric(va, ("st_ms",)), metric(vb, ("st_ms",))))
+
+
+def _left_out(ca: dict[tuple[str, int], Any], cb: dict[tuple[str, int], Any],
+              shared: list[str]) -> list[tuple[str, str]]:
+    """Paired tasks where one side has no ST (it built no environment there) and the other has:
+    the paired ST and Redundancy leave them out, each side's leaderboard does not."""
+    def lacking(cells: dict[tuple[str, int], Any], task: str) -> bool:
+        return any(c.get("st_ms", 0.0) is None for (t, _), c in cells.items() if t == task)
+
+    out = []
+    for task in shared:
+        a, b = lacking(ca, task), lacking(cb, task)
+        if a != b:
+            out.append((task, "A" if a else "B"))
+    return out

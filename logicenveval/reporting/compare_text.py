@@ -86,6 +86,7 @@ def comparison_text(c: Comparison, run_a: str, run_b: str) -> str:
     for pair in c.pairs:
         console.print(pair_table(pair))
     lines = [c.warning] if c.warning else []
+    lines += [p.left_out_text for p in c.pairs if p.left_out_text]
     if c.new:
         lines.append("only in B (not compared): " + ", ".join(c.new))
     if c.missing:
