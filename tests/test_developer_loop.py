@@ -233,3 +233,7 @@ def test_compare_says_which_tasks_st_leaves_out(plugin: Path, tmp_path: Path) ->
     assert [e["task"] for e in data["pairs"][0]["left_out_of_st"]] == [
         "kitchen_dish_cleanup", "kitchen_fridge_restock"]
     assert {f["input"]: f["same"] for f in data["fingerprints"]}["code of mygen"] is False
+    page = tmp_path / "compare.html"
+    assert cli(plugin, "compare", str(old), str(new), "--html", str(page)).returncode == 0
+    html = page.read_text(encoding="utf-8")
+    assert "What made A and B (fingerprints)" in html and "kitchen_dish_cleanup (A built nothing)" in html
