@@ -237,3 +237,19 @@ def test_compare_says_which_tasks_st_leaves_out(plugin: Path, tmp_path: Path) ->
     assert cli(plugin, "compare", str(old), str(new), "--html", str(page)).returncode == 0
     html = page.read_text(encoding="utf-8")
     assert "What made A and B (fingerprints)" in html and "kitchen_dish_cleanup (A built nothing)" in html
+
+
+def test_a_multi_seed_run_of_other_inputs_goes_to_a_new_parent(plugin: Path, tmp_path: Path) -> None:
+    _edit_helper(plugin)
+    out = tmp_path / "out"
+    args = ["run", "--generators", "mygen:MyGen", "--tasks", "clean_living_room", "--seeds", "0,1",
+            "--executor", "inprocess", "--quiet", "--output", str(out)]
+    assert cli(plugin, *args).returncode == 0
+    (old,) = out.iterdir()
+    before = (old / "results.json").read_bytes()
+    _edit_helper(plugin, "\nEDITED = 2\n")
+    again = cli(plugin, *args)
+    assert again.returncode == 0 and "kept the finished run made by other inputs" in again.stdout
+    assert (old / "results.json").read_bytes() == before
+    assert sorted(p.name for p in (out / f"{old.name}-2").iterdir()) == [
+        ".lock", "config.json", "leaderboard.html", "leaderboard.md", "results.json", "seed0", "seed1"]
