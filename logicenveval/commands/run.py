@@ -213,20 +213,22 @@ def _with_commands(exc: FinishedRunError, argv: Sequence[str] | None) -> Finishe
 
 
 def _with_option(argv: list[str], option: str, value: str) -> list[str]:
-    """`argv` with `option`'s value set to `value` (both `--opt v` and `--opt=v` forms)."""
-    out, skip = [], False
+    """`argv` with `option`'s value set to `value` (`--opt v` and `--opt=v` forms replaced; else
+    appended, which also overrides an abbreviation such as `--run`: the last one wins)."""
+    out, skip, found = [], False, False
     for i, item in enumerate(argv):
         if skip:
             skip = False
             continue
         if item == option and i + 1 < len(argv):
             out += [option, value]
-            skip = True
+            skip = found = True
         elif item.startswith(option + "="):
             out.append(f"{option}={value}")
+            found = True
         else:
             out.append(item)
-    return out
+    return out if found else [*out, option, value]
 
 
 def _load_report() -> None:

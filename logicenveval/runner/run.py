@@ -142,10 +142,6 @@ def current_inputs(config: RunConfig, refs: list[GeneratorRef], ids: list[str]) 
 
 def check_tasks(config: RunConfig) -> list[str]:
     """The task ids a run of `config` covers (`--tasks`, `--limit`), checked."""
-    return _check(config)
-
-
-def _check(config: RunConfig) -> list[str]:
     if not config.generators:
         raise ConfigError("no generator selected", field="--generators",
                           hint="name at least one generator (see docs/own-generator.md)")
@@ -205,7 +201,7 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
     phases.take()  # the run's own phases (`timing.run_phases`) start here
     with phases.phase("start-up"):
         refs = resolve_generators(config)  # the whole spec, before a server starts (minutes)
-        ids = _check(config)
+        ids = check_tasks(config)
     with phases.phase("tasks"):
         tasks = load_tasks(config.tasks_dir, ids)
         for task in tasks:  # before any unit: policy paths confined, situation count bounded
