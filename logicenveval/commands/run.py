@@ -169,7 +169,7 @@ def _run(args: argparse.Namespace, config: RunConfig, formats: list[str]) -> int
             print(multi.note)
         print_size(multi.run_dir)
         _say_stale(multi.stale, multi.records, args.debug)
-        return report_failures(multi.records)
+        return report_failures(multi.records)  # the seeds' units are in seed<S>/
     from functools import partial
 
     from logicenveval.reporting.unit_page import write_unit_page
@@ -195,7 +195,7 @@ def _run(args: argparse.Namespace, config: RunConfig, formats: list[str]) -> int
         print(outcome.note)
     print_size(outcome.run_dir)
     _say_stale(outcome.stale, outcome.records, args.debug)
-    return report_failures(outcome.records)
+    return report_failures(outcome.records, outcome.run_dir)
 
 
 def _with_commands(exc: FinishedRunError, argv: Sequence[str] | None) -> FinishedRunError:
@@ -258,7 +258,7 @@ def print_size(run_dir: Path) -> None:
     print(f"run folder size: {size_text(folder_bytes(run_dir), parts=3)}")  # fits 100 columns
 
 
-def report_failures(records: Sequence[UnitRecord]) -> int:
+def report_failures(records: Sequence[UnitRecord], run_dir: Path | None = None) -> int:
     """Exit status of a finished run: `EXIT_GENERATOR_RAISED` (3) with the exceptions and the
     generator's own frames when a generator raised in any unit; else 1 with a summary when a
     generator has no valid unit; else 0 (docs/security.md, "Exit codes")."""
@@ -274,7 +274,7 @@ def report_failures(records: Sequence[UnitRecord]) -> int:
         print(f"error: {len(dead)} generator(s) produced no environment in any unit\n(a row of "
               "failed attempts is still a measurement; infrastructure failures are 'not "
               "measured'):\n" + summary(records, dead), file=sys.stderr)
-    bugs = raised_summary(records)
+    bugs = raised_summary(records, run_dir)
     if bugs:
         print(bugs, file=sys.stderr)
         return EXIT_GENERATOR_RAISED

@@ -105,9 +105,10 @@ def _exception(record: UnitRecord) -> str:
     return text.removeprefix("internal error: ")
 
 
-def raised_summary(records: Sequence[UnitRecord]) -> str:
+def raised_summary(records: Sequence[UnitRecord], run_dir: Path | None = None) -> str:
     """Per generator that raised: how many units, each distinct exception with the generator's
-    own frame and the tasks it failed, and where the whole traceback is ("" when none raised)."""
+    own frame and the tasks it failed, and where the whole traceback is (the unit file, in
+    `run_dir` when given) ("" when none raised)."""
     lines: list[str] = []
     by_gen: dict[str, list[UnitRecord]] = {}
     for r in records:
@@ -127,8 +128,11 @@ def raised_summary(records: Sequence[UnitRecord]) -> str:
             where = f"at {frame}" if frame else "no traceback (it returned or exited)"
             lines += _wrapped(f"{where} — {len(tasks)} unit(s): {named}", "    ", "      ")
         first = next((u for u in bad if u.traceback), bad[0])
-        lines += _wrapped(f"whole traceback: units/{gen}/{first.task_id}.json (\"traceback\"), the "
-                          "task's page in leaderboard.html, or re-run with --debug", "  ", "    ")
+        unit = Path("units", gen, f"{first.task_id}.json")
+        lines += ["  whole traceback: \"traceback\" of", f"    {run_dir / unit}" if run_dir else
+                  f"    {unit} in the seed<S>/ folders of the run folder"]
+        lines += _wrapped("(also on the task's page of leaderboard.html; --debug re-raises it)",
+                          "    ", "    ")
     if not lines:
         return ""
     return ("error: a generator raised (a bug in the generator, not a measurement; exit "
