@@ -40,6 +40,9 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                    help=f"layout backend of solver-based generators (default {DEFAULT_SOLVER}; docs/scene.md)")
     p.add_argument("--workers", type=options.workers, default=os.cpu_count() or 1)
     p.add_argument("--executor", default="process", choices=["process", "inprocess", "ray"])
+    p.add_argument("--ray-address", default=None, metavar="HOST:PORT",
+                   help="with --executor ray: the cluster to run on (default RAY_ADDRESS, else a "
+                   "local Ray instance); it sets the number of workers (docs/cluster.md)")
     p.add_argument("--output", default="reports", help="parent folder of run folders")
     p.add_argument("--run-id", default=None, type=options.folder_name,
                    help="run folder name inside --output (default: derived from the config)")
@@ -95,6 +98,7 @@ def run(args: argparse.Namespace) -> int:
         layout_solver=args.layout_solver,
         workers=args.workers,
         executor=args.executor,
+        ray_address=args.ray_address,
         output=args.output,
         cache=args.cache,
         no_cache=args.no_cache,

@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 import contextlib
+import functools
 import os
 import tempfile
 import threading
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -25,7 +26,7 @@ from logicenveval.metrics.compute import TaskMetrics, load_aggregation
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.model.task import POLICY_KINDS, Task
 from logicenveval.runner.config import RunConfig, selected_tasks
-from logicenveval.runner.executors import Executor, make_executor
+from logicenveval.runner.executors import Executor, RayExecutor, make_executor
 from logicenveval.runner.fingerprint import (
     changed_inputs,
     generator_fingerprint,
@@ -37,6 +38,14 @@ from logicenveval.runner.results import build_results, write_outputs
 from logicenveval.runner.schedule import hand_offs
 from logicenveval.runner.store import RunStore
 from logicenveval.runner.unit import Committed, UnitSpec, planned_failures, run_units
+
+
+@dataclass(frozen=True)
+class HandBack:
+    """Units come back with their files, which this process writes (runner.cluster); their new
+    replies go to `cache` (None: the run keeps no reply cache)."""
+
+    cache: str | None
 
 
 @dataclass(frozen=True)
@@ -193,7 +202,8 @@ def _run(config: RunConfig, model_args: str, refs: list[GeneratorRef], ids: list
          show_progress: bool, on_commit: Callable[..., None] | None = None,
          meanwhile: Callable[[], None] | None = None) -> RunOutcome:
     with phases.phase("start-up"):
-        executor = make_executor("inprocess" if config.debug else config.executor, config.workers)
+        executor = make_executor("inprocess" if config.debug else config.executor, config.workers,
+                                 ray_address=config.ray_address)
         warm_up = getattr(executor, "warm_up", None)
         if callable(warm_up):
             warm_up()  # workers' imports overlap the preflight and resume scan below
@@ -203,10 +213,38 @@ def _run(config: RunConfig, model_args: str, refs: list[GeneratorRef], ids: list
         store = RunStore(run_dir)
         store.claim(config.identity())  # held until the run ends: one run per folder at a time
     try:
-        return _run_units(config, refs, ids, tasks, run_dir, store, executor, console, show_progress,
-                          model_args, limits, on_commit, meanwhile)
+        with _nodes_ready(executor, config, refs, ids, model_args, run_dir) as hand_back:
+            return _run_units(config, refs, ids, tasks, run_dir, store, executor, console,
+                              show_progress, model_args, limits, on_commit, meanwhile, hand_back)
     finally:
         store.unlock()
+
+
+@contextlib.contextmanager
+def _nodes_ready(executor: Executor, config: RunConfig, refs: list[GeneratorRef], ids: list[str],
+                 model_args: str, run_dir: Path) -> Iterator[HandBack | None]:
+    """For an executor whose workers may be on other machines (`hands_back`: Ray), connect,
+    ship the code and data, and check every node (runner.cluster); yields how units come back
+    (None: the executor's workers write the run folder themselves)."""
+    if not isinstance(executor, RayExecutor):
+        yield None
+        return
+    from logicenveval.runner import cluster
+
+    with phases.phase("start-up"), tempfile.TemporaryDirectory(prefix="logicenveval-ship-") as staging:
+        cache = cluster.reply_cache(config.model, config.cache, config.no_cache, run_dir)
+        shipment = cluster.make_shipment(tasks_dir=config.tasks_dir, ids=ids, model=config.model,
+                                         cache=cache)
+        executor.start(runtime_env=cluster.project_runtime_env(refs, Path(staging)), shared=shipment,
+                       setup=cluster.receive)
+    try:
+        with phases.phase("start-up"):
+            probe = functools.partial(cluster.node_report, refs, config.model, model_args)
+            cluster.check_nodes(executor.on_each_node(probe),
+                                cluster.node_report(refs))
+        yield HandBack(cache)
+    finally:
+        executor.close()
 
 
 def _budget(config: RunConfig) -> Callable[[tuple[UnitSpec, ...]], float | None]:
@@ -256,7 +294,10 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
                run_dir: Path, store: RunStore, executor: Executor, console: Console | None,
                show_progress: bool, model_args: str, limits: dict[str, int],
                on_commit: Callable[..., None] | None,
-               meanwhile: Callable[[], None] | None = None) -> RunOutcome:
+               meanwhile: Callable[[], None] | None = None,
+               hand_back: HandBack | None = None) -> RunOutcome:
+    """`hand_back`: None when workers commit their units; else units come back with their
+    files and are written here (runner.cluster)."""
     store.remove_stale_temp_files()
     specs = [
         UnitSpec(generator=r.name, generator_target=r.target, generator_path=r.search_path, task_id=t,
@@ -315,7 +356,11 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
         }
         streak = 0
         # closing(): stopping early stops the pool at once and drops the queued units
-        chunks = executor.map_unordered(run_units, hand_offs(pending, config.workers),
+        if hand_back is not None:
+            from logicenveval.runner.cluster import run_units_remote, write_back
+        chunks = executor.map_unordered(run_units if hand_back is None else run_units_remote,
+                                        hand_offs(pending, config.workers if hand_back is None
+                                                  else executor.workers),
                                         budget=_budget(config), on_crash=_crashed,
                                         split=lambda chunk: [(s,) for s in chunk])
         background = _Background(meanwhile)
@@ -323,6 +368,9 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
             with contextlib.closing(chunks) as finished:  # type: ignore[type-var]  # generators have close()
                 for _, chunk in finished:
                     for done in chunk:
+                        if hand_back is not None and done.files:
+                            with phases.phase("saving"):
+                                write_back(run_dir, done, hand_back.cache)
                         record = done.record
                         key = (record.generator, record.task_id)
                         records[key] = record
