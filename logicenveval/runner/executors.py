@@ -411,7 +411,9 @@ def check_reachable(address: str, timeout: float = RAY_CONNECT_TIMEOUT) -> None:
 
 
 _ADDRESS_HINT = ("start the head node with `ray start --head --port=6379` and pass the address it "
-                 "prints (--ray-address HOST:6379 or RAY_ADDRESS=HOST:6379); see docs/cluster.md")
+                 "prints (--ray-address HOST:6379 or RAY_ADDRESS=HOST:6379); a cluster with token "
+                 "authentication also needs its token here (RAY_AUTH_MODE=token and RAY_AUTH_TOKEN, "
+                 "or ~/.ray/auth_token); see docs/cluster.md")
 
 
 class RayExecutor:
@@ -453,8 +455,10 @@ class RayExecutor:
                 ray.init(address=self.address, runtime_env=runtime_env or None,
                          include_dashboard=False, log_to_driver=False, **local)
             except (ConnectionError, RuntimeError, ValueError, TimeoutError) as exc:
-                raise ConfigError(f"cannot connect to the Ray cluster at {self.address or 'a new local instance'}: "
-                                  f"{str(exc).strip().splitlines()[0][:300] if str(exc).strip() else type(exc).__name__}",
+                why = " ".join(f"{str(e).strip().splitlines()[0][:300]}" for e in (exc, exc.__cause__)
+                               if e is not None and str(e).strip()) or type(exc).__name__
+                raise ConfigError(f"cannot connect to the Ray cluster at "
+                                  f"{self.address or 'a new local instance'}: {why}",
                                   field="--ray-address", hint=_ADDRESS_HINT) from None
             self._started_here = True
         cpus = int(ray.cluster_resources().get("CPU", 0))
@@ -481,7 +485,8 @@ class RayExecutor:
         refs = {}
         for node in self.nodes():
             strategy = NodeAffinitySchedulingStrategy(node_id=node["NodeID"], soft=False)
-            refs[node.get("NodeManagerAddress", node["NodeID"])] = remote.options(
+            where = f"{node.get('NodeManagerAddress', '?')} (node {node['NodeID'][:8]})"
+            refs[where] = remote.options(
                 num_cpus=0, scheduling_strategy=strategy, max_retries=0).remote(
                 fn, self._setup, self._shared)
         out: list[tuple[str, R | BaseException]] = []
