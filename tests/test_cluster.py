@@ -97,6 +97,16 @@ def test_the_reply_cache_a_run_writes() -> None:
     assert cluster.reply_cache("openai:m", None, True, run) is None
 
 
+def test_a_loopback_endpoint_serves_only_nodes_on_this_machine() -> None:
+    local = "base_url=http://127.0.0.1:8080/v1,model_sha256=ab"
+    cluster.check_endpoint_reach(local, "10.0.0.1", ["10.0.0.1", "10.0.0.1"])
+    cluster.check_endpoint_reach("base_url=http://10.0.0.1:8080/v1", "10.0.0.1", ["10.0.0.2"])
+    cluster.check_endpoint_reach("", "10.0.0.1", ["10.0.0.2"])
+    with pytest.raises(ConfigError, match="node.s. at 10.0.0.2 cannot reach") as err:
+        cluster.check_endpoint_reach(local, "10.0.0.1", ["10.0.0.1", "10.0.0.2"])
+    assert "llama-server --host 0.0.0.0" in (err.value.hint or "")
+
+
 def test_a_node_with_other_code_is_refused() -> None:
     here = cluster.node_report([GeneratorRef(spec="cot", name="cot", target="cot")])
     cluster.check_nodes([("10.0.0.2 (node a)", dict(here))], here)

@@ -319,6 +319,30 @@ def node_report(refs: Sequence[GeneratorRef], model: str = "offline", model_args
     return out
 
 
+LOOPBACK = ("127.0.0.1", "localhost", "::1", "[::1]")
+
+
+def check_endpoint_reach(model_args: str, driver_ip: str, node_ips: Iterable[str]) -> None:
+    """A model endpoint on this machine's loopback (a managed `llamacpp:` server, or a
+    `base_url=http://127.0.0.1:...`) serves only nodes on this machine: refused, with the
+    one-endpoint route, when a node is elsewhere (its units would all fail to connect)."""
+    from urllib.parse import urlsplit
+
+    from logicenveval.llm.registry import parse_model_args
+
+    url = parse_model_args(model_args).get("base_url")
+    if not isinstance(url, str) or urlsplit(url).hostname not in LOOPBACK:
+        return
+    elsewhere = sorted({ip for ip in node_ips if ip != driver_ip})
+    if elsewhere:
+        raise ConfigError(
+            f"the model is served on this machine's loopback ({urlsplit(url).netloc}), which the "
+            f"Ray node(s) at {', '.join(elsewhere)} cannot reach", field="--model-args base_url",
+            hint="serve the model where every node reaches it (e.g. `llama-server --host 0.0.0.0 "
+            "--port 8080 -m MODEL.gguf --parallel N` on one host) and pass "
+            "base_url=http://HOST:8080/v1 (docs/cluster.md, 'Real models')")
+
+
 def reply_cache(model: str, cache: str | None, no_cache: bool, run_dir: Path) -> str | None:
     """The reply cache the run's units write (`llm.registry.make_model`'s choice), or None."""
     from logicenveval.llm.registry import CACHED

@@ -471,6 +471,10 @@ class RayExecutor:
         self._shared = [] if shared is None else [ray.put(shared)]  # boxed: Ray leaves it unfetched
         self._setup = setup
 
+    def driver_ip(self) -> str:
+        """This process's address as the cluster sees it."""
+        return str(self._ray.util.get_node_ip_address())
+
     def nodes(self) -> list[dict[str, Any]]:
         """The cluster's alive nodes (Ray's `ray.nodes()` entries)."""
         return [n for n in self._ray.nodes() if n.get("Alive")]

@@ -239,6 +239,8 @@ def _nodes_ready(executor: Executor, config: RunConfig, refs: list[GeneratorRef]
                        setup=cluster.receive)
     try:
         with phases.phase("start-up"):
+            cluster.check_endpoint_reach(model_args, executor.driver_ip(),
+                                         [str(n.get("NodeManagerAddress")) for n in executor.nodes()])
             probe = functools.partial(cluster.node_report, refs, config.model, model_args)
             cluster.check_nodes(executor.on_each_node(probe),
                                 cluster.node_report(refs))
