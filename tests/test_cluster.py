@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import socket
+import sqlite3
 import subprocess
 import sys
 from pathlib import Path
@@ -19,6 +21,7 @@ from logicenveval.runner.executors import check_reachable, ray_address
 from logicenveval.runner.unit import Committed, UnitSpec
 
 ROOT = Path(__file__).resolve().parents[1]
+FAKE = ROOT / "tests" / "data" / "fake_llama_server.py"
 TASKS = sorted(p.name for p in (ROOT / "benchmark_data" / "tasks").iterdir())[:2]
 
 
@@ -160,6 +163,11 @@ def _figures(run_dir: Path) -> dict[str, object]:
     return data
 
 
+def _cache_keys(output: Path) -> set[str]:
+    with contextlib.closing(sqlite3.connect(output / "llm_cache.sqlite")) as conn:
+        return {row[0] for row in conn.execute("SELECT key FROM replies")}
+
+
 def _files(run_dir: Path) -> dict[str, bytes]:
     """The run's environment, render and page files (unit files hold timings)."""
     return {p.relative_to(run_dir).as_posix(): p.read_bytes() for p in sorted(run_dir.rglob("*"))
@@ -184,6 +192,20 @@ def test_a_two_node_cluster_run_equals_the_process_executors(tmp_path: Path) -> 
         again = _cli(*run, env=ray_cluster.env)
         assert again.returncode == 0, again.stderr
         assert "computed 1 unit(s), reused 9" in again.stdout
+        # a managed llama.cpp model (the stand-in server) on the driver's machine: one endpoint
+        # for every worker; the replies the units added reach the driver's reply cache
+        gguf = tmp_path / "tiny-model.gguf"
+        gguf.write_bytes(b"GGUF" + bytes(60))
+        model = ["--model", f"llamacpp:{gguf}", "--model-args", f"server={FAKE},threads=1",
+                 "--tasks", TASKS[0], "--generators", "holodeck,cot", "--brief", "roles",
+                 "--quiet", "--run-id", "m"]
+        on_cluster = _cli(*model, "--executor", "ray", "--ray-address", ray_cluster.address,
+                          "--output", str(tmp_path / "mc"), env=ray_cluster.env)
+        assert on_cluster.returncode in (0, 1), on_cluster.stderr  # `{}` is no valid reply
+    here = _cli(*model, "--workers", "2", "--output", str(tmp_path / "ml"))
+    assert here.returncode in (0, 1), here.stderr
+    assert _cache_keys(tmp_path / "mc") == _cache_keys(tmp_path / "ml") != set()
+    assert _figures(tmp_path / "mc" / "m") == _figures(tmp_path / "ml" / "m")
     assert _figures(tmp_path / "cluster" / "r") == _figures(tmp_path / "local" / "r")
     assert _files(tmp_path / "cluster" / "r") == _files(tmp_path / "local" / "r")
     details = sorted(p.name for p in (tmp_path / "cluster" / "r" / "details").rglob("*.html"))

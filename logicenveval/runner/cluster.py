@@ -154,6 +154,13 @@ def _shipment() -> Shipment:
     return next(iter(_RECEIVED.values()))
 
 
+def forget(run_key: str) -> None:
+    """Remove a finished run's folders from this node (the workers' scratch run folders and the
+    node's copy of the reply cache; shipped data stays for later runs of the same data)."""
+    shutil.rmtree(NODE_ROOT / "runs" / run_key, ignore_errors=True)
+    _RECEIVED.clear()
+
+
 def _scratch(shipment: Shipment) -> Path:
     """This worker process's scratch run folder (removed when the process exits)."""
     path = NODE_ROOT / "runs" / shipment.run_key / str(os.getpid()) / "run"
@@ -184,10 +191,9 @@ def _node_cache(shipment: Shipment) -> Path | None:
 def localized(spec: UnitSpec, shipment: Shipment, scratch: Path, cache: Path | None) -> UnitSpec:
     """`spec` with the driver's paths replaced by this node's copies."""
     update: dict[str, Any] = {"run_dir": str(scratch)}
-    if spec.tasks_dir in shipment.tasks or spec.tasks_dir is None:
-        digest = shipment.tasks.get(spec.tasks_dir)
-        if digest is not None:
-            update["tasks_dir"] = str(NODE_ROOT / "shipped" / digest / "tasks")
+    digest = shipment.tasks.get(spec.tasks_dir)
+    if digest is not None:
+        update["tasks_dir"] = str(NODE_ROOT / "shipped" / digest / "tasks")
     pack = replay_path(spec.model)
     if pack is not None and pack in shipment.files:
         local = NODE_ROOT / "shipped" / shipment.files[pack] / "file"

@@ -11,6 +11,7 @@ import ctypes
 import ctypes.util
 import gc
 import importlib
+import logging
 import multiprocessing
 import os
 import signal
@@ -453,7 +454,8 @@ class RayExecutor:
             local = {} if self.address is not None else {"num_cpus": self.workers}
             try:
                 ray.init(address=self.address, runtime_env=runtime_env or None,
-                         include_dashboard=False, log_to_driver=False, **local)
+                         include_dashboard=False, log_to_driver=False,
+                         logging_level=logging.WARNING, **local)
             except (ConnectionError, RuntimeError, ValueError, TimeoutError) as exc:
                 why = " ".join(f"{str(e).strip().splitlines()[0][:300]}" for e in (exc, exc.__cause__)
                                if e is not None and str(e).strip()) or type(exc).__name__
@@ -512,7 +514,8 @@ class RayExecutor:
                       split: Callable[[T], Sequence[T]] | None = None) -> Iterator[tuple[T, R]]:
         """A task whose worker dies gets `on_crash`'s result; one past its budget is cancelled."""
         ray = self._ray
-        if not ray.is_initialized():
+        own = not ray.is_initialized()  # not started by the caller: started and closed here
+        if own:
             self.start()
         pending: dict[Any, tuple[T, float | None]] = {}
         try:
@@ -545,7 +548,8 @@ class RayExecutor:
             for ref in pending:  # stopped early (Ctrl-C, too many failures): drop the rest
                 with contextlib.suppress(Exception):
                     ray.cancel(ref, force=True)
-            self.close()
+            if own:
+                self.close()
 
 
 #: a Ray task's set-up: (key naming the shared data, function fetching it) -> None

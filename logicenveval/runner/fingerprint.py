@@ -125,10 +125,11 @@ def generator_fingerprint(ref: GeneratorRef) -> str:
 
 def generator_module(ref: GeneratorRef) -> Path | None:
     """The plug-in's top-level package folder or single module file (what a Ray cluster ships
-    to its nodes, runner.cluster); None for a built-in or a factory of unknown source."""
+    to its nodes, runner.cluster); None for a built-in, a script's (`__main__`) or a factory
+    of unknown source."""
     module = _module_of(ref)
-    if module is None or module.split(".")[0] == _PACKAGE:
-        return None
+    if module is None or module == "__main__" or module.split(".")[0] == _PACKAGE:
+        return None  # a script's own factories cannot be imported by a worker under that name
     sources = _module_sources(module)
     if sources is None or not sources[1]:
         return None

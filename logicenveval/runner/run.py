@@ -223,9 +223,9 @@ def _run(config: RunConfig, model_args: str, refs: list[GeneratorRef], ids: list
 @contextlib.contextmanager
 def _nodes_ready(executor: Executor, config: RunConfig, refs: list[GeneratorRef], ids: list[str],
                  model_args: str, run_dir: Path) -> Iterator[HandBack | None]:
-    """For an executor whose workers may be on other machines (`hands_back`: Ray), connect,
-    ship the code and data, and check every node (runner.cluster); yields how units come back
-    (None: the executor's workers write the run folder themselves)."""
+    """For an executor whose workers may be on other machines (Ray): connect, ship the code and
+    data, and check every node (runner.cluster); yields how units come back (None: the
+    executor's workers write the run folder themselves); disconnects when the run ends."""
     if not isinstance(executor, RayExecutor):
         yield None
         return
@@ -245,6 +245,9 @@ def _nodes_ready(executor: Executor, config: RunConfig, refs: list[GeneratorRef]
             cluster.check_nodes(executor.on_each_node(probe),
                                 cluster.node_report(refs))
         yield HandBack(cache)
+        # the run's folders on the nodes go; after a failure they stay (the cluster may be gone)
+        with phases.phase("results"):
+            executor.on_each_node(functools.partial(cluster.forget, shipment.run_key))
     finally:
         executor.close()
 
