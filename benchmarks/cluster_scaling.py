@@ -14,7 +14,9 @@ Prints the load average before and after each run and the machine's 2-process ca
 (`run_scaling.capacity`: ~2.0 on an idle 2-core machine, ~1.0 when other work takes a core), one
 line per run (wall time of the command, the run's own start-up and units phases from
 results.json `timing.run_phases`), and last
-`cluster_speedup_2_nodes=<x> one_node_s=<s> two_nodes_s=<s> replay_two_nodes_s=<s> replay_same=<b>`.
+`cluster_speedup_2_nodes=<x> units_speedup=<x> one_node_s=<s> two_nodes_s=<s> replay_two_nodes_s=<s>
+replay_same=<b>` (the wall-time ratio of one node to two, and the same ratio of the units phase
+alone, without the start-up of connecting, shipping and probing).
 Both nodes share this machine's cores: on a shared machine the ratio understates what two
 machines give; compare it with the capacity line. `--quick`: 2 tasks, no replay (a smoke run).
 """
@@ -100,8 +102,10 @@ def main() -> int:
                 replay_same = same_metrics(recorded, replayed)
         same = same_metrics(one_res, two_res)
     print(f"one-node and two-node figures equal: {same}")
-    print(f"cluster_speedup_2_nodes={one_s / two_s:.2f} one_node_s={one_s:.1f} two_nodes_s={two_s:.1f} "
-          f"replay_two_nodes_s={replay_s:.1f} replay_same={replay_same}")
+    units = [r["timing"]["run_phases"].get("units", float("nan")) for r in (one_res, two_res)]
+    print(f"cluster_speedup_2_nodes={one_s / two_s:.2f} units_speedup={units[0] / units[1]:.2f} "
+          f"one_node_s={one_s:.1f} two_nodes_s={two_s:.1f} replay_two_nodes_s={replay_s:.1f} "
+          f"replay_same={replay_same}")
     return 0 if same and replay_same is not False else 1
 
 

@@ -21,6 +21,7 @@ from __future__ import annotations
 import atexit
 import contextlib
 import hashlib
+import importlib
 import io
 import os
 import shutil
@@ -309,9 +310,17 @@ def project_runtime_env(refs: Iterable[GeneratorRef], staging: Path) -> dict[str
     return env
 
 
-def node_report(refs: Sequence[GeneratorRef], model: str = "offline", model_args: str = "") -> dict[str, str]:
+def node_report(refs: Sequence[GeneratorRef], model: str = "offline", model_args: str = "", *,
+                warm: bool = False) -> dict[str, str]:
     """What a node would run units with: the harness's fingerprint and each generator's; with a
-    model endpoint (`base_url`), that the node reaches it (its `preflight` raises otherwise)."""
+    model endpoint (`base_url`), that the node reaches it (its `preflight` raises otherwise).
+    `warm`: also import what units need (`executors.PRELOAD`), so that the Ray worker that runs
+    the probe, which Ray then reuses for units, does not import it on its first unit."""
+    if warm:
+        from logicenveval.runner.executors import PRELOAD
+
+        for module in PRELOAD:
+            importlib.import_module(module)
     out = {"harness": harness_fingerprint()}
     for ref in refs:
         ensure_importable(ref.target, ref.search_path)

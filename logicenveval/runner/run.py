@@ -241,7 +241,7 @@ def _nodes_ready(executor: Executor, config: RunConfig, refs: list[GeneratorRef]
         with phases.phase("start-up"):
             cluster.check_endpoint_reach(model_args, executor.driver_ip(),
                                          [str(n.get("NodeManagerAddress")) for n in executor.nodes()])
-            probe = functools.partial(cluster.node_report, refs, config.model, model_args)
+            probe = functools.partial(cluster.node_report, refs, config.model, model_args, warm=True)
             cluster.check_nodes(executor.on_each_node(probe),
                                 cluster.node_report(refs))
         yield HandBack(cache)
