@@ -9,6 +9,7 @@ import socket
 import sqlite3
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -179,19 +180,33 @@ def test_a_two_node_cluster_run_equals_the_process_executors(tmp_path: Path) -> 
     pytest.importorskip("ray")
     from logicenveval.runner.local_cluster import local_cluster
 
-    common = ["--tasks", ",".join(TASKS), "--quiet", "--run-id", "r"]
+    tasks = sorted(p.name for p in (ROOT / "benchmark_data" / "tasks").iterdir())[:4]
+    common = ["--tasks", ",".join(tasks), "--quiet", "--run-id", "r"]
     local = _cli(*common, "--workers", "2", "--output", str(tmp_path / "local"))
     assert local.returncode == 0, local.stderr
+    units = tmp_path / "cluster" / "r" / "units"
     with local_cluster((1, 1), log_dir=tmp_path) as ray_cluster:
         run = [*common, "--executor", "ray", "--ray-address", ray_cluster.address,
                "--output", str(tmp_path / "cluster")]
-        first = _cli(*run, env=ray_cluster.env)
-        assert first.returncode == 0, first.stderr
-        assert "computed 10 unit(s), reused 0" in first.stdout
-        (tmp_path / "cluster" / "r" / "units" / "cot" / f"{TASKS[0]}.json").unlink()  # as if killed
+        # killed (SIGKILL) once some units are committed: the next run keeps them
+        killed = subprocess.Popen([sys.executable, "-m", "logicenveval", "run", *run],
+                                  env={**os.environ, "PYTHONPATH": str(ROOT), **ray_cluster.env},
+                                  stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        deadline = time.monotonic() + 300
+        while killed.poll() is None and len(list(units.rglob("*.json"))) < 3 \
+                and time.monotonic() < deadline:
+            time.sleep(0.05)
+        killed.kill()
+        killed.wait(timeout=60)
+        kept = len(list(units.rglob("*.json")))
+        assert 3 <= kept < 20  # killed mid-run
         again = _cli(*run, env=ray_cluster.env)
         assert again.returncode == 0, again.stderr
-        assert "computed 1 unit(s), reused 9" in again.stdout
+        assert f"computed {20 - kept} unit(s), reused {kept}" in again.stdout  # none redone
+        (units / "cot" / f"{tasks[0]}.json").unlink()  # a unit lost: only it is recomputed
+        last = _cli(*run, env=ray_cluster.env)
+        assert last.returncode == 0, last.stderr
+        assert "computed 1 unit(s), reused 19" in last.stdout
         # a managed llama.cpp model (the stand-in server) on the driver's machine: one endpoint
         # for every worker; the replies the units added reach the driver's reply cache
         gguf = tmp_path / "tiny-model.gguf"
