@@ -225,3 +225,14 @@ def test_a_two_node_cluster_run_equals_the_process_executors(tmp_path: Path) -> 
     assert _files(tmp_path / "cluster" / "r") == _files(tmp_path / "local" / "r")
     details = sorted(p.name for p in (tmp_path / "cluster" / "r" / "details").rglob("*.html"))
     assert details == sorted(p.name for p in (tmp_path / "local" / "r" / "details").rglob("*.html"))
+
+
+def test_evaluate_refuses_a_cluster_address(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                            capsys: pytest.CaptureFixture[str]) -> None:
+    pytest.importorskip("ray")
+    from logicenveval.cli import main
+
+    monkeypatch.setenv("RAY_ADDRESS", f"127.0.0.1:{_closed_port()}")
+    envs = ROOT / "reports" / "reference" / "envs" / "holodeck"
+    assert main(["evaluate", str(envs), "--executor", "ray", "--output", str(tmp_path)]) == 2
+    assert "evaluate runs on this machine only" in capsys.readouterr().err
