@@ -411,6 +411,10 @@ def check_reachable(address: str, timeout: float = RAY_CONNECT_TIMEOUT) -> None:
                           f"{exc})", field="--ray-address", hint=_ADDRESS_HINT) from None
 
 
+#: seconds a node may take to run the start-up probe (the first use of a run's code on a node
+#: sets up its `runtime_env`: unpacking the shipped project)
+PROBE_TIMEOUT = 600.0
+
 _ADDRESS_HINT = ("start the head node with `ray start --head --port=6379` and pass the address it "
                  "prints (--ray-address HOST:6379 or RAY_ADDRESS=HOST:6379); a cluster with token "
                  "authentication also needs its token here (RAY_AUTH_MODE=token and RAY_AUTH_TOKEN, "
@@ -497,8 +501,8 @@ class RayExecutor:
                 fn, self._setup, self._shared)
         out: list[tuple[str, R | BaseException]] = []
         for where, ref in refs.items():
-            try:
-                out.append((where, ray.get(ref)))
+            try:  # bounded: a node that never runs the probe is reported, not waited on forever
+                out.append((where, ray.get(ref, timeout=PROBE_TIMEOUT)))
             except Exception as exc:  # the probe's own failure, wrapped by Ray
                 out.append((where, getattr(exc, "cause", None) or exc))
         return out
