@@ -176,9 +176,13 @@ def _files(run_dir: Path) -> dict[str, bytes]:
 
 
 @pytest.mark.slow
-def test_a_two_node_cluster_run_equals_the_process_executors(tmp_path: Path) -> None:
+def test_a_two_node_cluster_run_equals_the_process_executors(tmp_path: Path,
+                                                              monkeypatch: pytest.MonkeyPatch) -> None:
     pytest.importorskip("ray")
     from logicenveval.runner.local_cluster import local_cluster
+
+    starts = tmp_path / "server-starts"  # each stand-in llama-server writes its pid here
+    monkeypatch.setenv("FAKE_LLAMA_STARTS", str(starts))  # inherited by the nodes
 
     tasks = sorted(p.name for p in (ROOT / "benchmark_data" / "tasks").iterdir())[:4]
     common = ["--tasks", ",".join(tasks), "--quiet", "--run-id", "r"]
@@ -207,8 +211,8 @@ def test_a_two_node_cluster_run_equals_the_process_executors(tmp_path: Path) -> 
         last = _cli(*run, env=ray_cluster.env)
         assert last.returncode == 0, last.stderr
         assert "computed 1 unit(s), reused 19" in last.stdout
-        # a managed llama.cpp model (the stand-in server) on the driver's machine: one endpoint
-        # for every worker; the replies the units added reach the driver's reply cache
+        # a managed llama.cpp model (the stand-in server): one server per node, none here; the
+        # replies the units added reach the driver's reply cache
         gguf = tmp_path / "tiny-model.gguf"
         gguf.write_bytes(b"GGUF" + bytes(60))
         model = ["--model", f"llamacpp:{gguf}", "--model-args", f"server={FAKE},threads=1",
@@ -217,6 +221,11 @@ def test_a_two_node_cluster_run_equals_the_process_executors(tmp_path: Path) -> 
         on_cluster = _cli(*model, "--executor", "ray", "--ray-address", ray_cluster.address,
                           "--output", str(tmp_path / "mc"), env=ray_cluster.env)
         assert on_cluster.returncode in (0, 1), on_cluster.stderr  # `{}` is no valid reply
+        servers = [int(line) for line in starts.read_text().split()]
+        assert len(servers) == 2  # one per node
+    for pid in servers:  # stopped with the run
+        with pytest.raises(ProcessLookupError):
+            os.kill(pid, 0)
     here = _cli(*model, "--workers", "2", "--output", str(tmp_path / "ml"))
     assert here.returncode in (0, 1), here.stderr
     assert _cache_keys(tmp_path / "mc") == _cache_keys(tmp_path / "ml") != set()

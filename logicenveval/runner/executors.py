@@ -474,7 +474,12 @@ class RayExecutor:
                               field="--ray-address",
                               hint="start its nodes with --num-cpus=N (N >= 1)")
         self.workers = cpus
-        self._shared = [] if shared is None else [ray.put(shared)]  # boxed: Ray leaves it unfetched
+        if shared is not None:
+            self.share(shared, setup)
+
+    def share(self, shared: Any, setup: Setup | None) -> None:
+        """Put `shared` in the object store once for every later task's `setup` (`start`)."""
+        self._shared = [self._ray.put(shared)]  # boxed: Ray leaves it unfetched in a task's args
         self._setup = setup
 
     def driver_ip(self) -> str:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import functools
 import os
 import tempfile
@@ -191,16 +192,31 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
             for kind in POLICY_KINDS:
                 policy_path(task, kind, config.tasks_dir)
             situation_count(task)
-    with serving(config.model, config.model_args,
-                 log_path=config.run_dir() / "llama-server.log") as model_args:
+    per_node = served_per_node(config)
+    with serving(config.model, config.model_args, log_path=config.run_dir() / "llama-server.log",
+                 start=not per_node) as model_args:
         return _run(config, model_args, refs, ids, tasks, limits, console=console,
-                    show_progress=show_progress, on_commit=on_commit, meanwhile=meanwhile)
+                    show_progress=show_progress, on_commit=on_commit, meanwhile=meanwhile,
+                    per_node=per_node)
+
+
+def served_per_node(config: RunConfig) -> bool:
+    """Whether each node of the run's Ray cluster serves its managed `llamacpp:` model itself
+    (one server per node, shared by its workers; runner.cluster.NodeServer) instead of one server
+    on this machine: a managed model (no `base_url`) on a cluster named by an address."""
+    from logicenveval.llm.llamacpp import managed_path
+    from logicenveval.llm.registry import parse_model_args
+    from logicenveval.runner.executors import ray_address
+
+    return (config.executor == "ray" and not config.debug and ray_address(config.ray_address) is not None
+            and managed_path(config.model) is not None
+            and "base_url" not in parse_model_args(config.model_args))
 
 
 def _run(config: RunConfig, model_args: str, refs: list[GeneratorRef], ids: list[str],
          tasks: list[Task], limits: dict[str, int], *, console: Console | None,
          show_progress: bool, on_commit: Callable[..., None] | None = None,
-         meanwhile: Callable[[], None] | None = None) -> RunOutcome:
+         meanwhile: Callable[[], None] | None = None, per_node: bool = False) -> RunOutcome:
     with phases.phase("start-up"):
         executor = make_executor("inprocess" if config.debug else config.executor, config.workers,
                                  ray_address=config.ray_address)
@@ -209,11 +225,12 @@ def _run(config: RunConfig, model_args: str, refs: list[GeneratorRef], ids: list
             warm_up()  # workers' imports overlap the preflight and resume scan below
         run_dir = config.run_dir()
         _prepare_dir(run_dir)
-        _preflight(config, run_dir, model_args)
+        if not per_node:  # else each node's server is checked when it starts (runner.cluster)
+            _preflight(config, run_dir, model_args)
         store = RunStore(run_dir)
         store.claim(config.identity())  # held until the run ends: one run per folder at a time
     try:
-        with _nodes_ready(executor, config, refs, ids, model_args, run_dir) as hand_back:
+        with _nodes_ready(executor, config, refs, ids, model_args, run_dir, per_node) as hand_back:
             return _run_units(config, refs, ids, tasks, run_dir, store, executor, console,
                               show_progress, model_args, limits, on_commit, meanwhile, hand_back)
     finally:
@@ -222,7 +239,7 @@ def _run(config: RunConfig, model_args: str, refs: list[GeneratorRef], ids: list
 
 @contextlib.contextmanager
 def _nodes_ready(executor: Executor, config: RunConfig, refs: list[GeneratorRef], ids: list[str],
-                 model_args: str, run_dir: Path) -> Iterator[HandBack | None]:
+                 model_args: str, run_dir: Path, per_node: bool) -> Iterator[HandBack | None]:
     """For an executor whose workers may be on other machines (Ray): connect, ship the code and
     data, and check every node (runner.cluster); yields how units come back (None: the
     executor's workers write the run folder themselves); disconnects when the run ends."""
@@ -235,10 +252,16 @@ def _nodes_ready(executor: Executor, config: RunConfig, refs: list[GeneratorRef]
         cache = cluster.reply_cache(config.model, config.cache, config.no_cache, run_dir)
         shipment = cluster.make_shipment(tasks_dir=config.tasks_dir, ids=ids, model=config.model,
                                          cache=cache)
-        executor.start(runtime_env=cluster.project_runtime_env(refs, Path(staging)), shared=shipment,
-                       setup=cluster.receive)
+        executor.start(runtime_env=cluster.project_runtime_env(refs, Path(staging)))
+    stops: list[Callable[[], None]] = []  # the nodes' model servers
     try:
         with phases.phase("start-up"):
+            if per_node:  # `per_node`: one managed server on every node
+                node_args, stop = cluster.serve_on_each_node(executor, config.model, config.model_args,
+                                                                model_args)
+                stops.append(stop)
+                shipment = dataclasses.replace(shipment, node_model_args=node_args)
+            executor.share(shipment, cluster.receive)
             cluster.check_endpoint_reach(model_args, executor.driver_ip(),
                                          [str(n.get("NodeManagerAddress")) for n in executor.nodes()])
             probe = functools.partial(cluster.node_report, refs, config.model, model_args, warm=True)
@@ -249,6 +272,8 @@ def _nodes_ready(executor: Executor, config: RunConfig, refs: list[GeneratorRef]
         with phases.phase("results"):
             executor.on_each_node(functools.partial(cluster.forget, shipment.run_key))
     finally:
+        for stop in stops:
+            stop()
         executor.close()
 
 
