@@ -18,7 +18,8 @@ results.json `timing.run_phases`), and last
 replay_same=<b>` (the wall-time ratio of one node to two, and the same ratio of the units phase
 alone, without the start-up of connecting, shipping and probing).
 Both nodes share this machine's cores: on a shared machine the ratio understates what two
-machines give; compare it with the capacity line. `--quick`: 2 tasks, no replay (a smoke run).
+machines give; compare it with the capacity line. `--smoke` (or `--quick`): 2 tasks, no
+replay (a smoke run).
 """
 
 from __future__ import annotations
@@ -70,7 +71,8 @@ def _run(args: list[str], env: dict[str, str] | None, output: Path, label: str) 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--limit", type=int, default=10, help="tasks of the offline run (default 10)")
-    parser.add_argument("--quick", action="store_true", help="2 tasks, no replay run (a smoke run)")
+    parser.add_argument("--quick", "--smoke", action="store_true",
+                        help="2 tasks, no replay run (a smoke run)")
     parser.add_argument("--process", action="store_true",
                         help="also the process executor with 2 workers, for reference")
     args = parser.parse_args()

@@ -67,7 +67,8 @@ def _wait_for_nodes(address: str, env: dict[str, str], count: int, deadline: flo
 def local_cluster(cpus: Sequence[int] = (1, 1), *, log_dir: Path | None = None) -> Iterator[LocalCluster]:
     """Start a head node and one worker node per further entry of `cpus` (their CPU counts),
     yield the cluster, stop every node it started however the block ends."""
-    root = Path(tempfile.mkdtemp(prefix="lee-ray-"))  # short: Ray's socket paths are bounded
+    # short, so under /tmp even when TMPDIR is deep: Ray's socket paths (~107 bytes) live in it
+    root = Path(tempfile.mkdtemp(prefix="lee-ray-", dir="/tmp" if Path("/tmp").is_dir() else None))
     logs = log_dir or root
     port = _free_port()
     address = f"127.0.0.1:{port}"
