@@ -41,6 +41,7 @@ SLOW: dict[tuple[str, ...], str] = {
     ("llm_validity.py",): "metrics_reproduced=true",
     ("robustness.py",): "rises_beyond_interval=0",
     ("run_scaling.py",): "speedup_2_workers=",
+    ("cluster_scaling.py",): "cluster_speedup_2_nodes=",
 }
 
 

@@ -53,8 +53,11 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                    f"number of cores, here {os.cpu_count() or 1}); results do not depend on it")
     p.add_argument("--executor", default="process", choices=["process", "inprocess", "ray"],
                    help="process: a pool of --workers processes (default); inprocess: this process, "
-                   "for debugging and profiling; ray: Ray tasks, local or RAY_ADDRESS "
-                   "(docs/runner.md)")
+                   "for debugging and profiling; ray: Ray tasks, on a local instance or the "
+                   "cluster of --ray-address / RAY_ADDRESS (docs/runner.md, docs/cluster.md)")
+    p.add_argument("--ray-address", default=None, metavar="HOST:PORT",
+                   help="with --executor ray: the cluster to run on (default RAY_ADDRESS, else a "
+                   "local Ray instance); it sets the number of workers (docs/cluster.md)")
     p.add_argument("--output", default="reports",
                    help="parent folder of run folders (default reports)")
     p.add_argument("--run-id", default=None, type=options.folder_name,
@@ -116,6 +119,7 @@ def run(args: argparse.Namespace) -> int:
         layout_solver=args.layout_solver,
         workers=args.workers,
         executor=args.executor,
+        ray_address=args.ray_address,
         output=args.output,
         cache=args.cache,
         no_cache=args.no_cache,

@@ -49,6 +49,9 @@ class RunConfig(BaseModel):
     layout_solver: Solver = DEFAULT_SOLVER
     workers: int = Field(default=1, ge=1)
     executor: str = "process"
+    #: the Ray cluster of `--executor ray` (`--ray-address`; default `RAY_ADDRESS`, else a local
+    #: instance started for the run); not identity: where units run does not change them
+    ray_address: str | None = None
     output: str = "reports"
     cache: str | None = None
     no_cache: bool = False

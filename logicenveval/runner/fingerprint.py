@@ -112,6 +112,20 @@ def generator_fingerprint(ref: GeneratorRef) -> str:
     return f"{origin} src:{_digest_files(*sources)}"
 
 
+def generator_module(ref: GeneratorRef) -> Path | None:
+    """The plug-in's top-level package folder or single module file (what a Ray cluster ships
+    to its nodes, runner.cluster); None for a built-in, a script's (`__main__`) or a factory
+    of unknown source."""
+    module = _module_of(ref)
+    if module is None or module == "__main__" or module.split(".")[0] == _PACKAGE:
+        return None  # a script's own factories cannot be imported by a worker under that name
+    sources = _module_sources(module)
+    if sources is None or not sources[1]:
+        return None
+    folder = sources[0] / module.split(".")[0]
+    return folder if folder.is_dir() else sources[1][0]
+
+
 def task_fingerprint(task_id: str, directory: str | Path | None) -> str:
     """A digest of every file of the task's folder (task.json, the policies, anything else),
     whatever its name: a task may name a policy `policies/.correct.xml`."""

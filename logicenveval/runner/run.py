@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import contextlib
+import dataclasses
+import functools
 import os
 import tempfile
 import threading
@@ -32,7 +34,7 @@ from logicenveval.metrics.compute import TaskMetrics, load_aggregation
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.model.task import POLICY_KINDS, Task
 from logicenveval.runner.config import RunConfig, selected_tasks
-from logicenveval.runner.executors import Executor, make_executor
+from logicenveval.runner.executors import Executor, RayExecutor, make_executor
 from logicenveval.runner.fingerprint import (
     catalog_fingerprint,
     changed_inputs,
@@ -47,6 +49,14 @@ from logicenveval.runner.results import build_results, write_outputs
 from logicenveval.runner.schedule import hand_offs
 from logicenveval.runner.store import RunStore, new_folders, remove_created
 from logicenveval.runner.unit import Committed, UnitSpec, planned_failures, run_units
+
+
+@dataclass(frozen=True)
+class HandBack:
+    """Units come back with their files, which this process writes (runner.cluster); their new
+    replies go to `cache` (None: the run keeps no reply cache)."""
+
+    cache: str | None
 
 
 @dataclass(frozen=True)
@@ -213,32 +223,50 @@ def run(config: RunConfig, *, console: Console | None = None, show_progress: boo
         place(config.run_dir(), inputs, named=config.run_id is not None, replace=config.replace)
     if placement.run_dir != config.run_dir():
         config = config.model_copy(update={"run_id": placement.run_dir.name})
-    with serving(config.model, config.model_args,
-                 log_path=config.run_dir() / "llama-server.log") as model_args:
+    per_node = served_per_node(config)
+    with serving(config.model, config.model_args, log_path=config.run_dir() / "llama-server.log",
+                 start=not per_node) as model_args:
         outcome = _run(config, model_args, refs, ids, tasks, limits, inputs, placement,
                        console=console, show_progress=show_progress, on_commit=on_commit,
-                       meanwhile=meanwhile)
+                       meanwhile=meanwhile, per_node=per_node)
     return replace(outcome, note=placement.note() if previous is None else "")
+
+
+def served_per_node(config: RunConfig) -> bool:
+    """Whether each node of the run's Ray cluster serves its managed `llamacpp:` model itself
+    (one server per node, shared by its workers; runner.cluster.NodeServer) instead of one server
+    on this machine: a managed model (no `base_url`) on a cluster named by an address."""
+    from logicenveval.llm.llamacpp import managed_path
+    from logicenveval.llm.registry import parse_model_args
+    from logicenveval.runner.executors import ray_address
+
+    return (config.executor == "ray" and not config.debug and ray_address(config.ray_address) is not None
+            and managed_path(config.model) is not None
+            and "base_url" not in parse_model_args(config.model_args))
 
 
 def _run(config: RunConfig, model_args: str, refs: list[GeneratorRef], ids: list[str],
          tasks: list[Task], limits: dict[str, int], inputs: dict[str, Any], placement: Placement,
          *, console: Console | None, show_progress: bool,
          on_commit: Callable[..., None] | None = None,
-         meanwhile: Callable[[], None] | None = None) -> RunOutcome:
+         meanwhile: Callable[[], None] | None = None, per_node: bool = False) -> RunOutcome:
     run_dir = config.run_dir()
     with phases.phase("start-up"), _undone_if_refused(new_folders(run_dir)):
-        executor = make_executor("inprocess" if config.debug else config.executor, config.workers)
+        executor = make_executor("inprocess" if config.debug else config.executor, config.workers,
+                                 ray_address=config.ray_address)
         warm_up = getattr(executor, "warm_up", None)
         if callable(warm_up):
             warm_up()  # workers' imports overlap the preflight and resume scan below
         _prepare_dir(run_dir)
-        _preflight(config, run_dir, model_args)
+        if not per_node:  # else each node's server is checked when it starts (runner.cluster)
+            _preflight(config, run_dir, model_args)
         store = RunStore(run_dir)
         store.claim(config.identity())  # held until the run ends: one run per folder at a time
     try:
-        return _run_units(config, refs, ids, tasks, run_dir, store, executor, console, show_progress,
-                          model_args, limits, on_commit, meanwhile, inputs, placement.previous)
+        with _nodes_ready(executor, config, refs, ids, model_args, run_dir, per_node) as hand_back:
+            return _run_units(config, refs, ids, tasks, run_dir, store, executor, console,
+                              show_progress, model_args, limits, on_commit, meanwhile, inputs,
+                              placement.previous, hand_back)
     finally:
         store.unlock()
 
@@ -274,6 +302,46 @@ def _undone_if_refused(created: list[Path]) -> Iterator[None]:
     except BaseException:
         remove_created(created)
         raise
+
+
+@contextlib.contextmanager
+def _nodes_ready(executor: Executor, config: RunConfig, refs: list[GeneratorRef], ids: list[str],
+                 model_args: str, run_dir: Path, per_node: bool) -> Iterator[HandBack | None]:
+    """For an executor whose workers may be on other machines (Ray): connect, ship the code and
+    data, and check every node (runner.cluster); yields how units come back (None: the
+    executor's workers write the run folder themselves); disconnects when the run ends."""
+    if not isinstance(executor, RayExecutor):
+        yield None
+        return
+    from logicenveval.runner import cluster
+
+    with phases.phase("start-up"), tempfile.TemporaryDirectory(prefix="logicenveval-ship-") as staging:
+        cache = cluster.reply_cache(config.model, config.cache, config.no_cache, run_dir)
+        shipment = cluster.make_shipment(tasks_dir=config.tasks_dir, ids=ids, model=config.model,
+                                         cache=cache)
+        executor.start(runtime_env=cluster.project_runtime_env(refs, Path(staging)))
+    stops: list[Callable[[], None]] = []  # the nodes' model servers
+    try:
+        with phases.phase("start-up"):
+            if per_node:  # `per_node`: one managed server on every node
+                node_args, stop = cluster.serve_on_each_node(executor, config.model, config.model_args,
+                                                                model_args)
+                stops.append(stop)
+                shipment = dataclasses.replace(shipment, node_model_args=node_args)
+            executor.share(shipment, cluster.receive)
+            cluster.check_endpoint_reach(model_args, executor.driver_ip(),
+                                         [str(n.get("NodeManagerAddress")) for n in executor.nodes()])
+            probe = functools.partial(cluster.node_report, refs, config.model, model_args, warm=True)
+            cluster.check_nodes(executor.on_each_node(probe),
+                                cluster.node_report(refs))
+        yield HandBack(cache)
+        # the run's folders on the nodes go; after a failure they stay (the cluster may be gone)
+        with phases.phase("results"):
+            executor.on_each_node(functools.partial(cluster.forget, shipment.run_key))
+    finally:
+        for stop in stops:
+            stop()
+        executor.close()
 
 
 def _budget(config: RunConfig) -> Callable[[tuple[UnitSpec, ...]], float | None]:
@@ -324,7 +392,9 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
                show_progress: bool, model_args: str, limits: dict[str, int],
                on_commit: Callable[..., None] | None,
                meanwhile: Callable[[], None] | None, run_fingerprints: dict[str, Any],
-               previous: Path | None) -> RunOutcome:
+               previous: Path | None, hand_back: HandBack | None = None) -> RunOutcome:
+    """`hand_back`: None when workers commit their units; else units come back with their
+    files and are written here (runner.cluster)."""
     store.remove_stale_temp_files()
     specs = [
         UnitSpec(generator=r.name, generator_target=r.target, generator_path=r.search_path, task_id=t,
@@ -390,7 +460,11 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
         }
         streak = 0
         # closing(): stopping early stops the pool at once and drops the queued units
-        chunks = executor.map_unordered(run_units, hand_offs(pending, config.workers),
+        if hand_back is not None:
+            from logicenveval.runner.cluster import run_units_remote, write_back
+        chunks = executor.map_unordered(run_units if hand_back is None else run_units_remote,
+                                        hand_offs(pending, config.workers if hand_back is None
+                                                  else executor.workers),
                                         budget=_budget(config), on_crash=_crashed,
                                         split=lambda chunk: [(s,) for s in chunk])
         background = _Background(meanwhile)
@@ -398,6 +472,9 @@ def _run_units(config: RunConfig, refs: list[GeneratorRef], ids: list[str], task
             with contextlib.closing(chunks) as finished:  # type: ignore[type-var]  # generators have close()
                 for _, chunk in finished:
                     for done in chunk:
+                        if hand_back is not None and done.files:
+                            with phases.phase("saving"):
+                                write_back(run_dir, done, hand_back.cache)
                         record = done.record
                         key = (record.generator, record.task_id)
                         records[key] = record
