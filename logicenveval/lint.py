@@ -27,12 +27,13 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from logicenveval.benchmark import load_task, task_ids
+from logicenveval.domain.attributes import attribute_keys
 from logicenveval.domain.catalog import Catalog, load_catalog
 from logicenveval.domain.roles import matches, parse_role_map, prepare_env, unknown_roles
 from logicenveval.envfiles import load_env
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.metrics.evaluate import constraint_problems, coverage
-from logicenveval.model.envspec import EnvSpec, unknown_state_flags
+from logicenveval.model.envspec import EnvSpec, unknown_attribute_keys, unknown_state_flags
 from logicenveval.model.task import Task
 from logicenveval.sim.world import holds_initial
 
@@ -72,6 +73,7 @@ def lint_env(env: EnvSpec, task: Task, catalog: Catalog, report: FileReport,
                              f"read as {cats.mapped[name]}"))
     report.problems += [("binding", p) for p in prepared.binding.problems]
     report.problems += [("states", p) for p in unknown_state_flags(judged)]
+    report.problems += [("attributes", p) for p in unknown_attribute_keys(judged, attribute_keys(task, catalog))]
     holds = holds_initial(judged, catalog)
     cov = coverage(task, holds, judged.roles, prepared.binding)
     report.problems += [("binding", p) for p in cov.problems]

@@ -196,3 +196,21 @@ def test_schema_words_in_states_are_a_problem_of_the_environment(
     from logicenveval.envfiles import load_env
 
     assert unknown_state_flags(load_env(sorted(folder.glob("*.json"))[1])) == []
+
+
+def test_schema_words_in_attributes_are_a_problem_too(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """`"attributes": {"additionalProperties": ""}` (Qwen2.5-Coder-1.5B): a key no task
+    condition, role or catalog category reads. The keys the task's own conditions read (`kind`,
+    `ripeness`), the catalog's (`color`, `material`) and `purpose` stay allowed."""
+    from logicenveval.benchmark import load_task
+    from logicenveval.domain.attributes import attribute_keys
+    from logicenveval.domain.catalog import load_catalog
+
+    keys = attribute_keys(load_task(TASK), load_catalog())
+    assert {"kind", "color", "material", "purpose"} <= keys and "additionalProperties" not in keys
+    folder = _folder(tmp_path)
+    first = sorted(folder.glob("*.json"))[0]
+    _edit(first, lambda d: d["objects"][0].update(attributes={"additionalProperties": "", "color": "red"}))
+    assert main(["lint", str(folder.parent)]) == 1
+    out = capsys.readouterr().out
+    assert "attributes: object" in out and "unknown attribute(s) ['additionalProperties']" in out

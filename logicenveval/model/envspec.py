@@ -8,6 +8,7 @@ Unknown fields are kept (generators may add fields) and ignored by the checker.
 
 from __future__ import annotations
 
+from collections.abc import Collection
 from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
@@ -217,3 +218,11 @@ def unknown_state_flags(env: EnvSpec) -> list[str]:
     return [f"object {o.id} states unknown state flag(s) {sorted(set(o.states) - known)} "
             f"(state flags are {', '.join(STATE_FLAGS)})"
             for o in env.objects if set(o.states) - known]
+
+
+def unknown_attribute_keys(env: EnvSpec, known: Collection[str]) -> list[str]:
+    """One problem per object that states an attribute key outside `known` (for a task:
+    `domain.attributes.attribute_keys`), as `unknown_state_flags` does for state flags."""
+    return [f"object {o.id} states unknown attribute(s) {sorted(set(o.attributes) - set(known))} "
+            f"(attributes a task can read: {', '.join(sorted(known))})"
+            for o in env.objects if set(o.attributes) - set(known)]

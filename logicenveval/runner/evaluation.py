@@ -11,12 +11,13 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from logicenveval.domain.attributes import attribute_keys
 from logicenveval.domain.catalog import Catalog
 from logicenveval.domain.roles import prepare_env
 from logicenveval.metrics.evaluate import constraint_problems, coverage
 from logicenveval.metrics.records import EnvSample, PhysicsSummary, VerdictTrace
 from logicenveval.model.conditions import Cond, to_text
-from logicenveval.model.envspec import EnvSpec, unknown_state_flags
+from logicenveval.model.envspec import EnvSpec, unknown_attribute_keys, unknown_state_flags
 from logicenveval.model.task import Task
 from logicenveval.phases import phase
 from logicenveval.physics import PhysicsReport, check_env
@@ -70,7 +71,7 @@ def evaluate_env(
         prepared = prepare_env(env, task.roles, catalog, given)
         env, binding = prepared.env, prepared.binding
         report = check_env(env, catalog)
-        flags = unknown_state_flags(env)
+        flags = unknown_state_flags(env) + unknown_attribute_keys(env, attribute_keys(task, catalog))
     failures = [
         f.model_dump(mode="json")
         for dim in (report.floor_plan, report.entity, report.relation)
