@@ -119,6 +119,8 @@ def _death(codes: Sequence[int | None]) -> str:
             return f"its worker process was killed by {name}{oom}"
     if dead:
         return f"its worker process exited with status {dead[0]}"
+    if 0 in codes:  # os._exit(0) inside the unit: no exception, no result
+        return "its worker process exited with status 0 before the unit finished"
     return "its worker process died"
 
 
@@ -201,8 +203,10 @@ class ProcessExecutor:
     def map_unordered(self, fn: Callable[[T], R], items: Sequence[T], *,
                       budget: Budget | None = None, on_crash: OnCrash | None = None,
                       split: Callable[[T], Sequence[T]] | None = None) -> Iterator[tuple[T, R]]:
-        if self.workers == 1 or len(items) <= 1:
+        if self.workers == 1:  # several workers isolate every unit, even a run of one
             yield from InProcessExecutor().map_unordered(fn, items)
+            return
+        if not items:
             return
         self.warm_up()
         ctx = self._ctx or _context()
@@ -444,8 +448,8 @@ def prestart(name: str, workers: int, preload: Sequence[str] = ()) -> None:
     """Start the fork server of a `process` executor with several workers at once, before the
     caller imports the run's own modules: the two import in parallel (about 1 s of a 2-worker
     run's wall on 2 cores, when the fork server was started only once the run was set up). A
-    later executor reuses the running server; one unneeded (a run of one unit) costs nothing
-    but a background process that ends with the caller. `preload`: modules the fork server
+    later executor reuses the running server; one unneeded (a resumed run with nothing left)
+    costs nothing but a background process that ends with the caller. `preload`: modules the fork server
     imports besides `PRELOAD` (what the caller's `on_commit` hook needs), so that each worker
     does not import them on its first unit."""
     _MORE_PRELOAD[:] = preload
