@@ -204,3 +204,6 @@ def parse_json(text: str, *, file: str, error: type[LogicEnvEvalError]) -> Any:
     except RecursionError:
         raise error("JSON nested too deeply to read", file=file,
                     hint="flatten the file; no LogicEnvEval format nests more than a few levels") from None
+    except ValueError:  # an integer of more than 4,300 digits (Python's conversion limit)
+        raise error("JSON holds a number with thousands of digits", file=file,
+                    hint="no LogicEnvEval value is that large: the file was edited or damaged") from None

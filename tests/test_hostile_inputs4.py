@@ -208,3 +208,119 @@ def test_optional_true_is_still_accepted(tmp_path: Path) -> None:
 
     task = load_task_file(task_copy(tmp_path, edit))
     assert any(r.optional for r in task.roles.values())
+
+
+# ----- 5. integers of hundreds of digits ---------------------------------------------------
+
+REFERENCE = HERE.parent / "reports" / "reference"
+
+
+def _edited_run(root: Path, name: str, edit: Any) -> Path:
+    run = root / name
+    shutil.copytree(REFERENCE, run)
+    data = json.loads((run / "results.json").read_text())
+    edit(data)
+    (run / "results.json").write_text(json.dumps(data))
+    return run
+
+
+@pytest.mark.parametrize("edit", [
+    lambda d: d["results"]["cot"]["faudr"].update(avg=10**400),
+    lambda d: d["llm"]["cot"]["all"].update(questions=10**400),
+    lambda d: d["timing"].update(wall_seconds=-(10**400)),
+    lambda d: d.update(seed=10**400),
+])
+def test_huge_integers_in_results_are_one_error(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                                edit: Any) -> None:
+    from cli_support import cli
+
+    good = tmp_path / "good"
+    shutil.copytree(REFERENCE, good, ignore=shutil.ignore_patterns("envs", "renders", "units"))
+    bad = _edited_run(tmp_path, "bad", edit)
+    for argv in (["report", str(bad)], ["compare", str(good), str(bad)]):
+        code, _, err = cli(capsys, *argv)
+        assert code == 2 and "out of range" in err and len(err) < 600, err
+
+
+def test_thousands_of_digits_are_one_error(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from cli_support import cli
+
+    bad = tmp_path / "bad"
+    shutil.copytree(REFERENCE, bad, ignore=shutil.ignore_patterns("envs", "renders", "units"))
+    text = (bad / "results.json").read_text().replace('"seed": 0', '"seed": ' + "9" * 5000, 1)
+    (bad / "results.json").write_text(text)
+    code, _, err = cli(capsys, "report", str(bad))
+    assert code == 2 and "thousands of digits" in err
+
+
+@pytest.mark.parametrize("command", ["import-house", "check-house"])
+def test_huge_integers_in_a_house_are_one_error(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                                command: str) -> None:
+    from cli_support import cli
+
+    data = json.loads((HERE / "fixtures" / "houses" / "kitchen_breakfast.json").read_text())
+    data["objects"][0]["position"]["x"] = 10**400
+    house = tmp_path / "house.json"
+    house.write_text(json.dumps(data))
+    argv = [command, str(house)] + (["--task", "kitchen_breakfast_prep", "--out",
+                                     str(tmp_path / "env.json")] if command == "import-house" else [])
+    code, out, err = cli(capsys, *argv)
+    assert code in (1, 2) and "objects" in out + err
+    assert ("out of range" in err) if command == "import-house" else ("hundreds of digits" in out)
+    assert not (tmp_path / "env.json").exists()
+
+
+# ----- 7. symbolic links inside a run folder -----------------------------------------------
+
+def _plug_run(out: Path) -> subprocess.CompletedProcess[str]:
+    return sub("run", "--generators", "hostile_generators:WithArgs", "--tasks", TASK,
+               "--executor", "inprocess", "--output", str(out), "--run-id", "r", "--quiet")
+
+
+@pytest.mark.parametrize("inside", ["units/with-args", "envs/with-args", "details"])
+def test_a_symlinked_sub_folder_is_refused_on_resume(tmp_path: Path, inside: str) -> None:
+    out = tmp_path / "out"
+    assert _plug_run(out).returncode == 0
+    run, target = out / "r", tmp_path / "elsewhere"
+    shutil.move(str(run / inside), target)
+    (run / inside).symlink_to(target, target_is_directory=True)
+    before = sorted(p.relative_to(target) for p in target.rglob("*"))
+    shutil.rmtree(target)
+    target.mkdir()  # the link's target: empty, and must stay so
+    proc = _plug_run(out)
+    assert proc.returncode == 2 and "is a symbolic link" in proc.stderr and inside in proc.stderr
+    assert "Traceback" not in proc.stderr
+    assert not list(target.iterdir()), before
+    if inside == "details":
+        report = sub("report", str(run))
+        assert report.returncode == 2 and "is a symbolic link" in report.stderr
+        assert not list(target.iterdir())
+
+
+# ----- 8. links of `compare --html` ----------------------------------------------------------
+
+def test_relative_urls_are_percent_encoded() -> None:
+    from logicenveval.reporting.compare_html import relative_url
+
+    assert relative_url(Path("javascript:alert(1)/A/details/x.html")) == \
+        "javascript%3Aalert%281%29/A/details/x.html"
+    assert relative_url(Path("../a#b/c?d/e f.html")) == "../a%23b/c%3Fd/e%20f.html"
+
+
+def test_compare_html_links_from_hostile_folder_names(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                                      monkeypatch: pytest.MonkeyPatch) -> None:
+    from urllib.parse import unquote
+
+    from cli_support import cli
+
+    monkeypatch.chdir(tmp_path)
+    for name in ("javascript:alert(1)/A", "x#y?z/B"):
+        shutil.copytree(REFERENCE, tmp_path / name, ignore=shutil.ignore_patterns("envs", "renders"))
+    code, _, _ = cli(capsys, "compare", "javascript:alert(1)/A", "x#y?z/B", "--html", "page.html")
+    assert code in (0, 1)
+    html = (tmp_path / "page.html").read_text()
+    hrefs = [h.split('"')[0] for h in html.split('href="')[1:]]
+    assert hrefs and not any(h.lower().startswith("javascript:") for h in hrefs)
+    for href in hrefs:  # every link resolves to the detail page it names
+        assert "#" not in href and "?" not in href
+        assert (tmp_path / unquote(href)).is_file(), href

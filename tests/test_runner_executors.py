@@ -36,6 +36,7 @@ def test_a_killed_worker_is_named_by_its_signal_every_time() -> None:
     ([-signal.SIGTERM], "killed by SIGTERM"),
     ([0, 3], "exited with status 3"),
     ([None, 0], "its worker process died"),
+    ([0], "exited with status 0 before the unit finished"),  # os._exit(0) in a generator
 ])
 def test_the_cause_is_not_the_pools_own_sigterm(codes: list[int | None], reason: str) -> None:
     assert reason in _death(codes)

@@ -119,7 +119,7 @@ def _death(codes: Sequence[int | None]) -> str:
             return f"its worker process was killed by {name}{oom}"
     if dead:
         return f"its worker process exited with status {dead[0]}"
-    if 0 in codes:  # os._exit(0) inside the unit: no exception, no result
+    if codes and all(c == 0 for c in codes):  # os._exit(0) in the unit: no exception, no result
         return "its worker process exited with status 0 before the unit finished"
     return "its worker process died"
 
