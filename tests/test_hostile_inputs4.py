@@ -324,3 +324,43 @@ def test_compare_html_links_from_hostile_folder_names(tmp_path: Path, capsys: py
     for href in hrefs:  # every link resolves to the detail page it names
         assert "#" not in href and "?" not in href
         assert (tmp_path / unquote(href)).is_file(), href
+
+
+# ----- 10. roles and constraints per task ----------------------------------------------------
+
+def _many_roles(n: int) -> Any:
+    def edit(data: dict[str, Any]) -> None:
+        for i in range(n):
+            data["roles"][f"extra_{i}"] = {"category": "book", "optional": True}
+    return edit
+
+
+def test_roles_beyond_the_bound_are_one_clear_error(tmp_path: Path) -> None:
+    from logicenveval.limits import limit
+
+    cap = limit("max_task_roles")
+    path = task_copy(tmp_path, _many_roles(cap))  # the task's own roles come on top
+    with pytest.raises(TaskFormatError, match=f"more than the limit of {cap}") as caught:
+        load_task_file(path)
+    assert "LOGICENVEVAL_MAX_TASK_ROLES" in str(caught.value) and "roles" in str(caught.value)
+
+
+def test_constraints_beyond_the_bound_are_one_clear_error(tmp_path: Path) -> None:
+    from logicenveval.limits import limit
+
+    cap = limit("max_task_constraints")
+
+    def edit(data: dict[str, Any]) -> None:
+        data["constraints"] = [data["constraints"][0]] * (cap + 1)
+
+    with pytest.raises(TaskFormatError, match=f"{cap + 1} constraints, more than the limit"):
+        load_task_file(task_copy(tmp_path, edit))
+
+
+def test_the_role_bound_can_be_raised(tmp_path: Path) -> None:
+    from logicenveval.limits import limit, pinned
+
+    cap = limit("max_task_roles")
+    path = task_copy(tmp_path, _many_roles(cap))
+    with pinned({"max_task_roles": 2 * cap}):
+        assert len(load_task_file(path).roles) > cap

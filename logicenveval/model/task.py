@@ -9,10 +9,11 @@ from __future__ import annotations
 
 import re
 from collections.abc import Mapping
-from typing import Annotated, Any, Union
+from typing import Annotated, Any, TypeVar, Union
 
 from pydantic import BaseModel, ConfigDict, Field, StrictBool, field_validator, model_validator
 
+from logicenveval.limits import limit, raise_hint
 from logicenveval.model.conditions import (
     AGENT_PREDICATES,
     Cond,
@@ -152,6 +153,16 @@ class Task(BaseModel):
     #: facts the description fixes in every situation (docs/task-format.md, "Constraints")
     constraints: list[Constraint] = Field(default_factory=list)
 
+    @field_validator("roles")
+    @classmethod
+    def _few_roles(cls, roles: dict[str, Role]) -> dict[str, Role]:
+        return _bounded(roles, "roles", "max_task_roles")
+
+    @field_validator("constraints")
+    @classmethod
+    def _few_constraints(cls, constraints: list[Constraint]) -> list[Constraint]:
+        return _bounded(constraints, "constraints", "max_task_constraints")
+
     @model_validator(mode="after")
     def _references(self) -> Task:
         ids = [s.id for s in self.subtasks]
@@ -249,6 +260,19 @@ FUNCTION_WORDS = frozenset(_FUNCTION_WORDS.split())
 def content_words(text: str) -> list[str]:
     """The words of `text` that are not function words (`FUNCTION_WORDS`)."""
     return [w for w in _words(text).split() if w not in FUNCTION_WORDS]
+
+
+_Sized = TypeVar("_Sized", dict[str, Role], list[Constraint])
+
+
+def _bounded(items: _Sized, what: str, name: str) -> _Sized:
+    """`items`, unless there are more than the limit `name` of them (every situation of the
+    task is solved with all of them: their number drives the time of validation and of units)."""
+    cap = limit(name)
+    if len(items) > cap:
+        raise ValueError(f"{len(items)} {what}, more than the limit of {cap}; "
+                         + raise_hint(name))
+    return items
 
 
 def _words(text: str) -> str:
