@@ -58,7 +58,10 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("--rooms", type=int, default=60)
     ap.add_argument("--seed", type=int, default=0)
+    ap.add_argument("--smoke", action="store_true", help="seconds, not minutes: a small case of the same code path (tests/test_benchmarks_smoke.py); the figures are not the documented ones")
     args = ap.parse_args()
+    if args.smoke:
+        args.rooms = 3
     totals = {"dfs": [0, 0], "greedy": [0, 0]}
     n_items = n_near = 0
     for k, (width, depth, items) in enumerate(_rooms(args.rooms, args.seed)):

@@ -56,7 +56,8 @@ traceback. Each a fresh CLI process with a 120 s deadline. Last line:
 `round4: cases=<int> failures=<int> worst_seconds=<float>`.
 
 `python benchmarks/hostile_inputs.py round3` runs only the third pass's three blocks;
-`round4` only the fourth pass's.
+`round4` only the fourth pass's; `--smoke` only the hostile-file block on inputs 1000x smaller
+(seconds: the smoke test).
 """
 
 from __future__ import annotations
@@ -162,6 +163,17 @@ def _ms(fn: Callable[[], object], repeat: int = 5) -> float:
 def main() -> None:
     house_cases()  # first: each case's peak RSS includes this process's pages at the fork
     large_correct_bts()
+    refusals()
+    llm_cases_round3()
+    resources()
+    io_cases()
+    plugin_cases()
+    round4_cases()
+
+
+def refusals(scale: int = 1000) -> None:
+    """The hostile-file block; `scale` divides the big inputs' sizes (1000: 50 MB files; 1 000 000
+    with `--smoke`: the same loaders on 50 B-50 kB inputs, for the smoke test)."""
     folder = DEFAULT_TASKS_DIR / TASK
     task = json.loads((folder / "task.json").read_text())
     with tempfile.TemporaryDirectory() as tmp:
@@ -179,16 +191,16 @@ def main() -> None:
         add("sequence_500_deep", '<root BTCPP_format="4"><BehaviorTree ID="M">' + "<Sequence>" * 500
             + "<AlwaysSuccess/>" + "</Sequence>" * 500 + "</BehaviorTree></root>", load_policy, ".xml")
         add("attribute_50MB", '<root BTCPP_format="4"><BehaviorTree ID="M"><Sequence name="'
-            + "a" * 50_000_000 + '"/></BehaviorTree></root>', load_policy, ".xml")
+            + "a" * (50_000 * scale) + '"/></BehaviorTree></root>', load_policy, ".xml")
         add("xml_utf16", (folder / "policies" / "correct.xml").read_text().encode("utf-16"), load_policy, ".xml")
-        big = dict(task, description="There may be a toy on the floor. " * 1_500_000)
+        big = dict(task, description="There may be a toy on the floor. " * (1_500 * scale))
         (d / "desc" / TASK).mkdir(parents=True)
         (d / "desc" / TASK / "task.json").write_text(json.dumps(big))
         files["description_50MB"] = (d / "desc" / TASK / "task.json", load_task_file)
         paren = dict(task)
         paren["variables"] = dict(task["variables"])
         paren["variables"]["toy_on_floor"] = {"question": "?", "values": {
-            "yes": "(" * 50_000 + "on(toy, floor)" + ")" * 50_000, "no": "not on(toy, floor)"}}
+            "yes": "(" * (50 * scale) + "on(toy, floor)" + ")" * (50 * scale), "no": "not on(toy, floor)"}}
         (d / "paren" / TASK).mkdir(parents=True)
         (d / "paren" / TASK / "task.json").write_text(json.dumps(paren))
         files["parentheses_50k"] = (d / "paren" / TASK / "task.json", load_task_file)
@@ -203,11 +215,6 @@ def main() -> None:
             print(f"{name:<24} {path.stat().st_size:>12} {ms:>14.1f}")
     print(f"baseline (load one real task + policy): {baseline:.1f} ms")
     print(f"worst_refusal_ms={worst:.1f} baseline_ms={baseline:.1f} ratio={worst / baseline:.2f}")
-    llm_cases_round3()
-    resources()
-    io_cases()
-    plugin_cases()
-    round4_cases()
 
 
 TESTS = Path(__file__).resolve().parents[1] / "tests"
@@ -786,5 +793,7 @@ if __name__ == "__main__":
         plugin_cases()
     elif sys.argv[1:] == ["io"]:
         io_cases()
+    elif sys.argv[1:] == ["--smoke"]:  # tests/test_benchmarks_smoke.py: the refusal block, small inputs
+        refusals(scale=1)
     else:
         main()

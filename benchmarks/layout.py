@@ -260,7 +260,12 @@ def main() -> None:
     ap.add_argument("--crossover-sizes", default="6,8,10,12,14,16,18,20,24")
     ap.add_argument("--crossover-factors", default=f"1,{DENSE},0.25",
                     help="room area factors of the crossover (1 = normal; 0.25 crowds 4-7-box floors)")
+    ap.add_argument("--smoke", action="store_true", help="seconds, not minutes: a small case of the same code path (tests/test_benchmarks_smoke.py); the figures are not the documented ones")
     args = ap.parse_args()
+    if args.smoke:  # one 6-object room per setting and backend; 10 objects in the dense table
+        args.rooms, args.sizes, args.mono_timeout = 1, "6", 5.0
+        args.growth, args.growth_rooms, args.z3_max = "10", 1, 10
+        args.crossover_sizes, args.crossover_factors = "6", "1"
     catalog = load_catalog()
     construct_environment(room_spec(10, 0), catalog=catalog, rng=np.random.default_rng(0), solver="cpsat")  # warm-up
     if args.crossover:

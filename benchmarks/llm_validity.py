@@ -27,6 +27,9 @@ from logicenveval.runner.config import RunConfig
 from logicenveval.runner.results import load_results, write_outputs
 from logicenveval.runner.run import RunOutcome, run
 
+#: the committed SmolLM2 replay pack: the default pack (and `--smoke`'s)
+SMOKE_PACK = Path(__file__).resolve().parents[1] / "reports" / "real" / "SmolLM2-135M-Instruct.Q4_1"
+
 
 def replay(pack: Path, output: Path, cache: Path | None = None, protocol: int | None = None) -> dict[str, Any]:
     """results.json of the pack's configuration replayed from its reply cache (`cache`: one
@@ -123,7 +126,10 @@ def validity_table(llm: dict[str, Any]) -> tuple[list[str], dict[str, int]]:
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("pack", type=Path, help="a run folder holding llm_cache.sqlite")
+    parser.add_argument("pack", type=Path, nargs="?", default=SMOKE_PACK,
+                        help="a run folder holding llm_cache.sqlite (default: the committed SmolLM2 pack)")
+    parser.add_argument("--smoke", action="store_true",
+                        help="accepted for tests/test_benchmarks_smoke.py: replaying a pack takes seconds")
     parser.add_argument("--rescore", action="store_true",
                         help="score the pack again with this code (its derived files rewritten)")
     parser.add_argument("--cache", type=Path, help="the reply cache, when it is not the pack's own")

@@ -39,11 +39,15 @@ def main() -> None:
     ap.add_argument("--run", default=None, help="a run folder (with samples.jsonl and envs/)")
     ap.add_argument("--tasks", default="clean_living_room,hallway_coat_and_bag,kitchen_dish_cleanup,"
                     "lamp_or_pillow_fetch,multi_room_pet_care")
+    ap.add_argument("--smoke", action="store_true", help="seconds, not minutes: a small case of the same code path (tests/test_benchmarks_smoke.py); the figures are not the documented ones")
     args = ap.parse_args()
+    if args.smoke:
+        args.tasks = "lamp_or_pillow_fetch"
     if args.run is None:
         out = Path(tempfile.mkdtemp(prefix="mutation_overhead_"))
         cli_main(["run", "--model", "offline", "--tasks", args.tasks, "--executor", "inprocess",
-                  "--output", str(out), "--quiet", "--no-cache"])
+                  "--output", str(out), "--quiet", "--no-cache",
+                  *(["--generators", "logicenvgen"] if args.smoke else [])])
         run = next(p for p in out.iterdir() if p.is_dir())
         clear_cache()  # time a cold worker, not the trees the run just built
     else:

@@ -65,7 +65,10 @@ def main() -> None:
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--work", default="/tmp/paraphrase_coverage")
     ap.add_argument("--show-missing", action="store_true", help="list uncovered GT paths per text")
+    ap.add_argument("--smoke", action="store_true", help="seconds, not minutes: a small case of the same code path (tests/test_benchmarks_smoke.py); the figures are not the documented ones")
     args = ap.parse_args()
+    if args.smoke:
+        args.tasks = "lamp_or_pillow_fetch"
     tasks = load_tasks(None, None if args.tasks == "all" else args.tasks.split(","))
     orig: list[float] = []
     para: list[float] = []

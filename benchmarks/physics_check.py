@@ -9,6 +9,8 @@
    it is cheap (up to 500 objects; at 2,000 in a pile it takes minutes and GBs). `import_only`
    is the RSS of a process that only imported the checker.
 Last line: `objects=2000 pile_s=<float> pile_peak_mb=<float> spread_s=<float> checks_per_s=<float>`.
+`--smoke` (tests/test_benchmarks_smoke.py): the same code paths in seconds — 0.2 s rates and
+scaling at 20 and 100 objects; its last line names 100 objects.
 """
 
 from __future__ import annotations
@@ -21,6 +23,7 @@ import numpy as np
 from shapely.geometry import box as shp_box
 
 from logicenveval.domain.catalog import load_catalog
+from logicenveval.domain.shapes import load_shapes
 from logicenveval.envfiles import env_from_dict
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.physics import check_env
@@ -62,15 +65,22 @@ def build_env(rng: np.random.Generator, per_room: int = 10) -> EnvSpec:
             jx, jz = (1.4 - size[0]) / 2, (1.2 - size[2]) / 2
             px, pz = cx + float(rng.uniform(-jx, jx)), cz + float(rng.uniform(-jz, jz))
             oid = f"{rid}_{name}_{k}"
+            yaw = float(rng.choice([0.0, 180.0]))
             objects.append({"id": oid, "category": name, "room": rid, "position": [px, size[1] / 2, pz],
-                            "size": size, "yaw": float(rng.choice([0.0, 180.0]))})
+                            "size": size, "yaw": yaw})
             if k < 2:
                 sname = str(rng.choice(small))
                 s = cat.categories[sname]
                 ssize = [float(rng.uniform(lo, hi)) for lo, hi in zip(s.size_min, s.size_max, strict=True)]
                 sid = f"{rid}_{sname}_on{k}"
+                # things rest where the support holds them: a chair's seat, in front of its back
+                # strip, not the top of its box (the backrest; docs/physics.md "Shapes")
+                shape = load_shapes().of(name)
+                level, back = shape.surface() if shape is not None else (1.0, 0.0)
+                local_z = -size[2] / 2 + size[2] * (back + 1.0) / 2  # the usable area's centre
+                sz = pz + (local_z if yaw == 0.0 else -local_z)  # yaw 180 turns the back round
                 objects.append({"id": sid, "category": sname, "room": rid, "support": oid,
-                                "position": [px, size[1] + ssize[1] / 2, pz], "size": ssize})
+                                "position": [px, level * size[1] + ssize[1] / 2, sz], "size": ssize})
                 relations.append({"type": "on", "args": [sid, oid]})
                 relations.append({"type": "near", "args": [sid, oid]})
     return env_from_dict({"task_id": "bench", "env_id": "bench40", "rooms": rooms, "doors": doors,
@@ -138,22 +148,24 @@ def _measure(kind: str, n: int, path: str) -> dict[str, Any]:
     return result
 
 
-def scaling() -> dict[tuple[str, int, str], dict[str, Any]]:
+def scaling(sizes: tuple[int, int] = (500, 2000)) -> dict[tuple[str, int, str], dict[str, Any]]:
+    """Seconds and peak RSS per case; the all-pairs baseline only at the smaller size."""
+    small, _ = sizes
     base = _measure("import_only", 0, "broad")
     print(f"import_only peak_mb={base['peak_mb']:.0f}")
     print(f"{'case':<8} {'objects':>7} {'path':<9} {'seconds':>8} {'peak MB':>8} {'failures':>9} passed")
     results = {}
     for kind in ("spread", "pile"):
-        for n in (500, 2000):
+        for n in sizes:
             for path in ("broad", "allpairs"):
-                if path == "allpairs" and n > 500:
+                if path == "allpairs" and n > small:
                     continue  # the old quadratic path: minutes and GBs on the 2,000-object pile
                 r = results[kind, n, path] = _measure(kind, n, path)
                 print(f"{kind:<8} {n:>7} {path:<9} {r['s']:>8.2f} {r['peak_mb']:>8.0f} {r['failures']:>9} "
                       f"{r['passed']}")
     for kind in ("spread", "pile"):
-        b, a = results[kind, 500, "broad"], results[kind, 500, "allpairs"]
-        print(f"{kind} 500: all-pairs / broad phase time {a['s'] / b['s']:.1f}x")
+        b, a = results[kind, small, "broad"], results[kind, small, "allpairs"]
+        print(f"{kind} {small}: all-pairs / broad phase time {a['s'] / b['s']:.1f}x")
     return results
 
 
@@ -164,18 +176,25 @@ def main() -> None:
     if len(sys.argv) == 5 and sys.argv[1] == "--one":
         _one(sys.argv[2], int(sys.argv[3]), sys.argv[4])
         return
+    smoke = sys.argv[1:] == ["--smoke"]
+    if sys.argv[1:] and not smoke:
+        raise SystemExit("usage: physics_check.py [--smoke]")
+    seconds, sizes = (0.2, (20, 100)) if smoke else (3.0, (500, 2000))
     print("load (1, 5, 15 min): " + " ".join(f"{x:.2f}" for x in os.getloadavg()))
     env = build_env(np.random.default_rng(20261123))
     report = check_env(env)
-    assert report.passed, [f.message for f in report.failures()]
-    naive = _rate(env, broad_phase=False)
-    fast = _rate(env, broad_phase=True)
+    if not report.passed:  # the benchmark's own environment must be valid, or the rate means nothing
+        raise SystemExit("the 40-object environment fails PhyPR: "
+                         + "; ".join(f.message for f in report.failures()))
+    naive = _rate(env, broad_phase=False, seconds=seconds)
+    fast = _rate(env, broad_phase=True, seconds=seconds)
     print(f"rooms={len(env.rooms)} objects={len(env.objects)} passed={report.passed}")
     print(f"naive_all_pairs_checks_per_s={naive:.1f}")
     print(f"broad_phase_speedup={fast / naive:.2f}x")
-    scaled = scaling()
-    pile, spread = scaled["pile", 2000, "broad"], scaled["spread", 2000, "broad"]
-    print(f"objects=2000 pile_s={pile['s']:.2f} pile_peak_mb={pile['peak_mb']:.0f} spread_s={spread['s']:.2f} "
+    scaled = scaling(sizes)
+    big = sizes[1]
+    pile, spread = scaled["pile", big, "broad"], scaled["spread", big, "broad"]
+    print(f"objects={big} pile_s={pile['s']:.2f} pile_peak_mb={pile['peak_mb']:.0f} spread_s={spread['s']:.2f} "
           f"checks_per_s={fast:.1f}")
 
 

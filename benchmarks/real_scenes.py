@@ -33,7 +33,11 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--tasks", default=",".join(TASKS))
     parser.add_argument("--procthor-db", default=None)
     parser.add_argument("--rooms", action="store_true", help="print the room-level import report")
+    parser.add_argument("--smoke", action="store_true", help="seconds, not minutes: a small case of the same code path (tests/test_benchmarks_smoke.py); the figures are not the documented ones")
     args = parser.parse_args(argv)
+    if args.smoke:  # the smallest house, one task
+        args.houses = [min(args.houses, key=lambda p: Path(p).stat().st_size)]
+        args.tasks = TASKS[0]
     db = load_procthor_db(args.procthor_db) if args.procthor_db else installed_procthor_db()
     if db is None:
         print("ProcTHOR's databases are not installed: pip install 'logicenveval[procthor]' or --procthor-db",

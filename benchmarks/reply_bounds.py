@@ -120,7 +120,10 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--tasks", default="", help="comma-separated task ids (default: all)")
     parser.add_argument("--generators", default=",".join(GENERATORS))
+    parser.add_argument("--smoke", action="store_true", help="seconds, not minutes: a small case of the same code path (tests/test_benchmarks_smoke.py); the figures are not the documented ones")
     args = parser.parse_args(argv)
+    if args.smoke:
+        args.tasks = args.tasks or "lamp_or_pillow_fetch"
     tasks = [t for t in args.tasks.split(",") if t] or list(task_ids())
     measured = measure(tasks, [g for g in args.generators.split(",") if g])
     lines, short = table(measured.largest)

@@ -144,12 +144,19 @@ def main() -> None:
     parser.add_argument("--no-compile", action="store_true",
                         help="leave the package's bytecode as it is (with PYTHONDONTWRITEBYTECODE=1 "
                              "and no .pyc, every process compiles the package's modules)")
+    parser.add_argument("--smoke", action="store_true",
+                        help="seconds, not minutes: one task, two generators, no byte-compiling, a short "
+                        "capacity loop (tests/test_benchmarks_smoke.py); the figures are not the documented ones")
     args = parser.parse_args()
     extra = ["--tasks", args.tasks]
+    spin = 10_000_000
+    if args.smoke:
+        extra = ["--tasks", "lamp_or_pillow_fetch", "--generators", "logicenvgen,holodeck"]
+        args.no_compile, spin = True, 200_000
     print("load (1, 5, 15 min): " + " ".join(f"{x:.2f}" for x in os.getloadavg()) + f"; cores {os.cpu_count()}")
     print(f"bytecode=as found (PYTHONDONTWRITEBYTECODE={os.environ.get('PYTHONDONTWRITEBYTECODE', '')!r})"
           if args.no_compile else byte_compile())
-    print(f"machine_2_process_capacity={capacity():.2f}")
+    print(f"machine_2_process_capacity={capacity(spin):.2f}")
     walls: dict[int, float] = {}
     run_dir = ""
     with tempfile.TemporaryDirectory() as tmp:
@@ -174,7 +181,7 @@ def main() -> None:
                        stdout=subprocess.DEVNULL)
         print(f"report_command_s={time.perf_counter() - start:.2f} (interpreter start included)")
     print("load after: " + " ".join(f"{x:.2f}" for x in os.getloadavg())
-          + f"; machine_2_process_capacity={capacity():.2f}")
+          + f"; machine_2_process_capacity={capacity(spin):.2f}")
     print(f"speedup_2_workers={walls[1] / walls[2]:.2f} report_share={report_s / walls[2]:.3f} "
           f"total_s={walls[2]:.2f}")
 

@@ -28,12 +28,16 @@ def main() -> None:
     ap.add_argument("--catalog", default=None)
     ap.add_argument("--seconds", type=float, default=3.0, help="time budget of the fast loop")
     ap.add_argument("--max-situations", type=int, default=64, help="per task")
+    ap.add_argument("--smoke", action="store_true", help="seconds, not minutes: a small case of the same code path (tests/test_benchmarks_smoke.py); the figures are not the documented ones")
     args = ap.parse_args()
+    if args.smoke:
+        args.seconds, args.max_situations = 0.2, 2
     catalog = load_catalog(args.catalog)
     cases = []  # (compiled policy, world, goal, policy, env, task)
     skipped = 0
     t0 = time.perf_counter()
-    for task in load_tasks(args.tasks_dir):
+    tasks = load_tasks(args.tasks_dir)
+    for task in tasks[:5] if args.smoke else tasks:
         try:
             policies = [load_policy(policy_path(task, k, args.tasks_dir), task.roles, task.rooms)
                         for k in task.policies]

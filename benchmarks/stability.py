@@ -21,6 +21,8 @@ from llm_validity import portable_model
 
 from logicenveval.runner.results import load_results
 
+COMMITTED = Path(__file__).resolve().parents[1] / "reports" / "real" / "stability" / "SmolLM2-135M-Instruct.Q4_1"
+
 #: (label, where in results.json: a path under `results.<method>`, or a function of the run and method)
 METRICS: tuple[tuple[str, Any], ...] = (
     ("PhyPR", ("phypr", "avg")), ("LogCov", ("logcov",)), ("SceVR", ("scevr",)),
@@ -83,7 +85,11 @@ def table(runs: list[dict[str, Any]]) -> list[str]:
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("folder", type=Path, help="the parent folder of a `run --seeds` run")
+    parser.add_argument("folder", type=Path, nargs="?", default=COMMITTED,
+                        help="the parent folder of a `run --seeds` run (default: the committed SmolLM2 one)")
+    parser.add_argument("--smoke", action="store_true",
+                        help="accepted for tests/test_benchmarks_smoke.py: the script only reads results "
+                        "and is quick as it is")
     args = parser.parse_args(argv)
     runs = load_runs(args.folder)
     lines = table(runs)

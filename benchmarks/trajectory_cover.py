@@ -46,6 +46,8 @@ from logicenveval.model.tree import DecisionPath, task_paths, tree_paths  # noqa
 
 CASES = [(6, 4), (8, 5), (10, 6)]
 HEADLINE = (8, 5)
+#: `--smoke`: one small forest, the headline of the smoke test (tests/test_benchmarks_smoke.py)
+SMOKE_CASES = [(4, 3)]
 PRODUCT_MAX = 500_000
 MTSA_BUDGET_S = 20.0
 #: the random forests' budget for the exhaustive search (the generator's default is larger)
@@ -80,13 +82,14 @@ def median_ms(fn: Callable[[], object], repeat: int = 1) -> float:
     return statistics.median(times)
 
 
-def run_forests(seed: int) -> int:
+def run_forests(seed: int, cases: list[tuple[int, int]] = CASES,
+                headline_case: tuple[int, int] = HEADLINE) -> int:
     rng = np.random.default_rng(seed)
     headline: tuple[float, int, int] | None = None
     print(f"seed={seed}; exact timed as the median of 50 runs, MTSA once (budget {MTSA_BUDGET_S:.0f} s)")
     print(f"{'case':>6} {'product':>12} {'all of product':>22} {'mtsa':>22} {'exhaustive search':>30} "
           f"{'exact':>18}")
-    for n, k in CASES:
+    for n, k in cases:
         forest = random_forest(rng, n, k)
         product = math.prod(len(p) for p in forest)
         ex_txt = f"skipped ({product:,})"
@@ -112,7 +115,7 @@ def run_forests(seed: int) -> int:
               f"{len(exact):>3} in {exact_ms:.3f} ms")
         if mt is not None:
             assert not uncovered(mt, forest) and len(exact) <= len(mt)
-        if (n, k) == HEADLINE:
+        if (n, k) == headline_case:
             if mt is None:
                 print("mtsa did not finish on the headline case", file=sys.stderr)
                 return 1
@@ -295,7 +298,16 @@ def main() -> int:
     parser.add_argument("--only", default="", help="comma-separated task ids (--plans)")
     parser.add_argument("--plain-subsets", type=int, default=2_000_000,
                         help="subsets the plain-loop baseline tests per task (--plans)")
+    parser.add_argument("--smoke", action="store_true",
+                        help="seconds, not minutes: one 4x3 forest (with --tasks: 3 tasks; with "
+                        "--forbidden: 2 small draws); the figures are not the documented ones")
     args = parser.parse_args()
+    if args.smoke and args.plans:
+        return run_plans(args.tasks_dir, args.max_subsets, ["clean_living_room"], 10_000)
+    if args.smoke and args.forbidden is not None:
+        return run_forbidden(args.seed, args.forbidden, 4, 4, 2, 2.0)
+    if args.smoke and not args.tasks:
+        return run_forests(args.seed, SMOKE_CASES, SMOKE_CASES[0])
     if args.plans:
         return run_plans(args.tasks_dir, args.max_subsets, [t for t in args.only.split(",") if t],
                          args.plain_subsets)

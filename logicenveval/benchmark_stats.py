@@ -95,7 +95,7 @@ COLUMNS: tuple[str, ...] = tuple(f.name for f in fields(TaskStats))
 
 
 def to_markdown(rows: list[TaskStats]) -> str:
-    """The stats table in GitHub Markdown, with a totals row (for the README)."""
+    """The stats table in GitHub Markdown, with a totals row (for docs/benchmark.md)."""
     head = "| " + " | ".join(COLUMNS) + " |"
     sep = "|" + "|".join("---" if c == "task" else "---:" for c in COLUMNS) + "|"
     lines = [head, sep]

@@ -28,11 +28,11 @@ from pathlib import Path
 
 from logicenveval.benchmark import load_task, task_ids
 from logicenveval.domain.catalog import Catalog, load_catalog
-from logicenveval.domain.roles import matches, parse_role_map, prepare_env
+from logicenveval.domain.roles import matches, parse_role_map, prepare_env, unknown_roles
 from logicenveval.envfiles import load_env
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.metrics.evaluate import constraint_problems, coverage
-from logicenveval.model.envspec import EnvSpec
+from logicenveval.model.envspec import EnvSpec, unknown_state_flags
 from logicenveval.model.task import Task
 from logicenveval.sim.world import holds_initial
 
@@ -71,6 +71,7 @@ def lint_env(env: EnvSpec, task: Task, catalog: Catalog, report: FileReport,
         report.notes.append(("category", f"category {name!r} fits {', '.join(options)}: "
                              f"read as {cats.mapped[name]}"))
     report.problems += [("binding", p) for p in prepared.binding.problems]
+    report.problems += [("states", p) for p in unknown_state_flags(judged)]
     holds = holds_initial(judged, catalog)
     cov = coverage(task, holds, judged.roles, prepared.binding)
     report.problems += [("binding", p) for p in cov.problems]
@@ -116,9 +117,12 @@ def lint_folder(envs_dir: str | Path, tasks_dir: str | Path | None = None,
         raise ConfigError("no folder named after a task", file=str(root),
                           hint="lay out ENVS_DIR/<task_id>/*.json; task ids: `python -m logicenveval tasks list`")
     cat = catalog or load_catalog()
+    tasks = [load_task(folder.name, tasks_dir) for folder in folders]
+    # malformed, repeated or unknown ROLEs are bad input (exit 2), not a problem of each file
+    unknown_roles(roles, [t.roles for t in tasks])
     reports = []
-    for folder in folders:
-        task = load_task(folder.name, tasks_dir)
+    for folder, task in zip(folders, tasks, strict=True):
+        given = parse_role_map(roles, task.roles, strict=False)
         seen: dict[str, str] = {}
         for path in env_files(folder):
             report = FileReport(path=str(path), task_id=task.id)
@@ -137,7 +141,6 @@ def lint_folder(envs_dir: str | Path, tasks_dir: str | Path | None = None,
                 report.problems.append(("file", f"env_id {env.env_id!r} is also used by {seen[env.env_id]}"))
             seen.setdefault(env.env_id, path.name)
             try:
-                given = parse_role_map(roles, task.roles)
                 lint_env(env, task, cat, report, given)
             except ConfigError as exc:
                 report.problems.append(("binding", str(exc)))

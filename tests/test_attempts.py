@@ -343,3 +343,18 @@ def test_a_budget_hit_is_recorded_per_task_and_labels_the_row(tmp_path: Path) ->
     assert plan["exhaustive"]["optimal"] is False and plan["exhaustive"]["subsets_tested"] == 10
     write_outputs(run_dir, res, [])
     assert load_results(run_dir)["results"]["tiny-exhaustive"]["budget_hit_tasks"] == [TASK, "kitchen_fridge_restock"]
+
+
+def test_every_failed_attempt_s_reason_is_on_record_counted() -> None:
+    """A failed attempt no generation failure states (IFG's intents a reply did not give: 21 of
+    Qwen2.5-Coder-1.5B's 24) is listed in results.json `failures` with how many it counts, and
+    so in the leaderboard and the terminal's reasons; a stated one is listed once."""
+    stated = GenerationFailure(stage="construct", message="no layout", env_id="x0")
+    unit = _unit([_sample(0)], failed=3, failures=[stated])
+    unit = unit.model_copy(update={"attempts": [*unit.attempts, Attempt(id="y", stage="ifg_intents",
+                                                                        reason="1 of 8 intents")]})
+    entries = _results([unit])["failures"]["g"]
+    assert [(e["stage"], e["message"], e.get("attempts")) for e in entries] == [
+        ("construct", "no layout", None), ("ifg_intents", "1 of 8 intents", 1)]
+    bare = _results([_unit([_sample(0)], failed=3)])["failures"]["g"]
+    assert [(e["message"], e["attempts"]) for e in bare] == [("no layout", 3)]

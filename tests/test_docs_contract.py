@@ -47,3 +47,42 @@ def test_no_doc_sends_the_reader_outside_the_repo(path: Path) -> None:
     assert "DESIGN.md" not in text and "shared/" not in text
     for ref in re.findall(r"docs/[A-Za-z_.-]+\.md", text):
         assert (ROOT / ref).is_file(), f"{path.name} names {ref}, which does not exist"
+
+
+README = ROOT / "README.md"
+
+
+def _quick_start() -> list[str]:
+    text = README.read_text()
+    section = text[text.index("## Quick start"):]
+    block = re.search(r"```bash\n(.*?)```", section, re.S)
+    assert block is not None, "the README's quick start has no bash block"
+    return [line for line in block.group(1).splitlines() if line.strip()]
+
+
+def test_readme_is_short_and_has_a_contents_list_whose_links_resolve() -> None:
+    """A newcomer's page (issue 48): under 15 KB, a contents list, every section it names there."""
+    text = README.read_text()
+    assert len(text.encode()) < 15_000, f"README.md is {len(text.encode())} bytes"
+    headings = {re.sub(r"[^\w\- ]", "", h).strip().lower().replace(" ", "-")
+                for h in re.findall(r"^## (.+)$", text, re.M)}
+    contents = text[text.index("**Contents:**"):].split("\n\n")[0]
+    anchors = re.findall(r"\]\(#([\w-]+)\)", contents)
+    assert len(anchors) >= 6 and set(anchors) <= headings, (anchors, headings)
+    for ref in re.findall(r"`((?:docs|reports|benchmarks|examples|tools)/[\w./<>-]*|CHANGELOG\.md)`", text):
+        path = ref.split("<")[0]
+        assert (ROOT / path).exists(), f"README.md names {ref}, which does not exist"
+
+
+def test_quick_start_runs_with_the_plain_install_and_tests_with_dev() -> None:
+    run, test = _quick_start()
+    assert run == "pip install -e . && python -m logicenveval run --model offline"
+    assert test == "pip install -e '.[dev]' && python -m pytest -q"
+
+
+def test_ci_runs_exactly_the_readmes_test_command() -> None:
+    _, test = _quick_start()
+    install, pytest_cmd = (part.strip() for part in test.split("&&"))
+    ci = [line.strip() for line in (ROOT / ".ci" / "run").read_text().splitlines()]
+    assert install in ci and pytest_cmd in ci
+    assert ci.index(install) < ci.index(pytest_cmd)

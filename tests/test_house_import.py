@@ -83,8 +83,9 @@ def test_two_room_house_doors_and_ambiguous_roles() -> None:
     assert rep.chosen["GarbageCan"] == "trash_can" and rep.chosen["GarbageBag"] == "trash_bag"
     assert {o.room for o in env.objects if o.id.startswith("Garbage")} == {"kitchen"}
     b = bind_roles(env, load_task("multi_room_trash_run").roles, CATALOG)
-    assert b.candidates == {"full_bag": ["GarbageBag_3_1", "GarbageBag_3_2"],
-                            "spare_bag": ["GarbageBag_3_1", "GarbageBag_3_2"]}
+    # neither bag says it is the spare one (`purpose`): the full one is either, the spare none
+    assert b.candidates == {"full_bag": ["GarbageBag_3_1", "GarbageBag_3_2"]}
+    assert b.roles["spare_bag"] is None and "has no purpose" in b.why["spare_bag"]
     assert b.roles["newspaper"] == "small_2_0" and b.roles["trash_can"] == "GarbageCan_3_0"
 
 

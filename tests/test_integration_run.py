@@ -20,7 +20,7 @@ TASKS = "clean_living_room,hallway_entry_tidy,kitchen_fridge_restock"
 GENERATORS = "logicenvgen,cot,ifg,holodeck"
 KEYS = {"phypr", "logcov", "ld", "scevr", "faudr", "st_ms", "st_ticks", "ji", "ji_fixed", "redundancy", "n_envs",
         "plausibility", "faudr_mut", "faudr_mut_by_class", "ci95", "n_attempted", "n_failed", "measured",
-        "not_measured_tasks", "budget_hit_tasks"}
+        "not_measured_tasks", "budget_hit_tasks", "realised_share"}
 
 
 def _run(out: Path, *extra: str) -> int:
@@ -78,6 +78,12 @@ def test_outputs_and_result_keys(first_run: Path) -> None:
     assert results["brief"] == "description"
     clr = results["per_task"]["logicenvgen"]["clean_living_room"]
     assert clr["logcov"] >= 0.8 and clr["n_envs"] >= 2
+    # what each method cost per task, to plan a run on a slow model (issue 46)
+    cost = results["timing"]["per_task"]
+    assert set(cost) == set(GENERATORS.split(",")) and set(cost["logicenvgen"]) == set(TASKS.split(","))
+    assert set(cost["logicenvgen"]["clean_living_room"]) == {
+        "generation_seconds", "requests", "cache_hits", "reasks", "prompt_tokens", "completion_tokens", "latency_s"}
+    assert results["protocol"] == 5 and results["results"]["logicenvgen"]["realised_share"] == 1.0
 
 
 def test_same_command_same_results_and_resume(first_run: Path, tmp_path: Path) -> None:

@@ -42,9 +42,7 @@ def _shaped(value: Any, node: dict[str, Any], defs: dict[str, Any]) -> Any:
             if re.fullmatch(to_regex({**option, "$defs": defs}), json.dumps(shaped, separators=(",", ":"))):
                 return shaped
     if isinstance(value, dict) and node.get("properties"):
-        props, required = node["properties"], [k for k in node["properties"] if k in node.get("required", [])]
-        order = required + [k for k in props if k not in required]
-        return {k: _shaped(value[k], props[k], defs) for k in order if k in value}
+        return {k: _shaped(value[k], v, defs) for k, v in node["properties"].items() if k in value}
     if isinstance(value, list) and isinstance(node.get("items"), dict):
         return [_shaped(v, node["items"], defs) for v in value]
     if isinstance(value, list) and node.get("prefixItems"):
@@ -80,7 +78,7 @@ def test_every_offline_reply_is_in_its_compact_grammar_and_layout_is_not(
         assert not language.fullmatch(json.dumps(value, indent=2)), kind
         kinds.add(kind)
     assert {"decompose_task", "identify_factors", "tree_step", "tree_leaves", "floor_plan",
-            "select_objects", "holodeck_scene", "cot_environments", "ifg_intents"} <= kinds
+            "select_objects", "holodeck_scene", "cot_environments", "ifg_intent"} <= kinds
 
 
 def test_the_grammar_has_no_whitespace_rule_and_defines_what_it_uses(
@@ -117,3 +115,22 @@ def test_llamacpp_gets_the_grammar_instead_of_the_schema() -> None:
     assert "response_format" not in compact and compact["grammar"].startswith("root ::= ")
     plain = OpenAIChatModel("m", base_url="http://127.0.0.1:9/v1")._body(request)
     assert "grammar" not in plain and plain["response_format"]["json_schema"]["schema"] == schema
+
+
+def test_properties_are_written_in_the_schema_s_order() -> None:
+    """CoT's reasoning comes before its environments, an object's role before its coordinates
+    (issue 46): with required ones first, Qwen2.5-Coder-1.5B wrote no reasoning in 3 of 3 CoT
+    replies and no role, situation or states in any environment."""
+    schema = {"type": "object", "required": ["b", "d"], "properties": {
+        "a": {"type": "integer"}, "b": {"type": "integer"}, "c": {"type": "integer"}, "d": {"type": "integer"}}}
+    language = re.compile(to_regex(schema))
+    for text in ('{"a":1,"b":2,"c":3,"d":4}', '{"b":2,"d":4}', '{"a":1,"b":2,"d":4}', '{"b":2,"c":3,"d":4}'):
+        assert language.fullmatch(text), text
+    for text in ('{"b":2,"d":4,"a":1}', '{"d":4,"b":2}', '{"a":1,"d":4}', '{,"b":2,"d":4}', '{"a":1"b":2,"d":4}'):
+        assert not language.fullmatch(text), text
+    from logicenveval.baselines.replies import WrittenEnvironmentsReply
+    from logicenveval.llm.ask import reply_schema
+
+    cot = re.compile(to_regex(reply_schema(WrittenEnvironmentsReply)))
+    assert cot.pattern.index('"reasoning"') < cot.pattern.index('"environments"')
+    assert cot.pattern.index('"role"') < cot.pattern.index('"position"')

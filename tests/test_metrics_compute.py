@@ -136,7 +136,7 @@ def test_results_shape_has_exactly_design_keys(task: Task) -> None:
     dumped = json.loads(g.model_dump_json())
     assert set(dumped) == {
         "phypr", "logcov", "ld", "scevr", "faudr", "st_ms", "st_ticks", "ji", "ji_fixed", "redundancy", "n_envs",
-        "plausibility", "faudr_mut", "faudr_mut_by_class", "n_attempted", "n_failed",
+        "plausibility", "faudr_mut", "faudr_mut_by_class", "n_attempted", "n_failed", "realised_share",
     }
     assert set(dumped["plausibility"]) == {"rate", "codes"}
     assert set(dumped["phypr"]) == {"floor_plan", "entity", "relation", "avg"}

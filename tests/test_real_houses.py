@@ -69,8 +69,12 @@ def test_real_house_counts_and_room_report() -> None:
     rep = _import("ai2thor_procthor_train_1")
     assert len(rep.env.objects) == 177 and len(rep.env.rooms) == 10
     assert rep.size_sources == {"asset database": 177}
-    opens = [d for d in rep.env.doors if d.type == "open"]  # two open boundaries join three rooms
+    opens = [d for d in rep.env.doors if d.id.startswith("open_")]  # two "empty" wall pairs join three rooms
     assert sorted(d.rooms for d in opens) == [("living_room", "living_room_2"), ("living_room_2", "living_room_3")]
+    # the file keeps 20 of the house's walls (those its doors, windows and open boundaries name):
+    # where two rooms share a boundary with no wall listed, nothing stands between them
+    bare = [d for d in rep.env.doors if d.id.startswith("bare_")]
+    assert len(bare) == 12 and all(d.type == "open" for d in bare)
     house = house_report(rep, CAT)
     assert house.objects == 177 and house.entity_failed == 2
     bath = next(r for r in house.rooms if r.room == "bathroom")
@@ -178,6 +182,25 @@ def test_open_boundaries_connect_rooms(empty: bool) -> None:
     if empty:
         (d,) = env.doors
         assert d.type == "open" and d.rooms == ("kitchen", "living_room") and d.segment == ((3, 0), (3, 3))
+
+
+@pytest.mark.parametrize("walls", ["none", "part"])
+def test_a_boundary_with_no_wall_on_it_is_open(walls: str) -> None:
+    """Nothing stands between two rooms where no wall is listed at all (issue 45, point 5): the
+    bare stretch of their shared boundary is an opening, not a closed wall."""
+    house = _two_rooms(False)
+    if walls == "none":
+        house["walls"] = []
+    else:  # walls on z in [0, 1] only: the stretch from z=1 to z=3 is bare
+        for w in house["walls"]:
+            for p in w["polygon"]:
+                p["z"] = min(p["z"], 1.0)
+    env = import_house(house, task_id="t", env_id="e", catalog=CAT, assets=our_assets()).env
+    report = check_env(env, CAT)
+    assert not [f for f in report.extended.failures if f.code == "unreachable_room"]
+    (d,) = env.doors
+    assert d.type == "open" and set(d.rooms) == {"kitchen", "living_room"}
+    assert sorted(d.segment) == ([(3, 0), (3, 3)] if walls == "none" else [(3, 1), (3, 3)])
 
 
 def test_derive_shapes_from_scene_metadata() -> None:

@@ -271,16 +271,16 @@ def run_dir(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 def test_run_ends_with_the_reasons(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    # description mode: two trash bags the offline names cannot tell apart leave roles ambiguous
-    assert main(["run", "--model", "offline", "--tasks", "multi_room_trash_run", "--generators", "logicenvgen",
+    # CoT writes doors off the walls of this task's rooms: the reasons name the PhyPR finding
+    assert main(["run", "--model", "offline", "--tasks", "multi_room_trash_run", "--generators", "cot",
                  "--executor", "inprocess", "--quiet", "--output", str(tmp_path)]) == 0
     out = capsys.readouterr().out
     why = out[out.index("Why (count × reason; examples in leaderboard.html)"):]
-    assert "logicenvgen: " in why and "role … is ambiguous" in why
+    assert "cot: " in why and "door_not_on_wall" in why
     # the terminal summary fits 100 columns (issue 36); a long path gets a line of its own, whole
     assert max(len(line) for line in out.splitlines() if not line.startswith(str(tmp_path))) <= 100
     page = (_only_dir(tmp_path) / "leaderboard.html").read_text(encoding="utf-8")
-    assert "role full_bag is ambiguous" in page  # the examples are on the page
+    assert "door_not_on_wall" in page  # the examples are on the page
 
 
 def test_same_environments_under_two_names_same_interval(run_dir: Path, tmp_path: Path) -> None:
@@ -473,10 +473,26 @@ def _found(filter_text: str, typed: str) -> bool:
 def faulty_run(tmp_path_factory: pytest.TempPathFactory) -> Path:
     """A run with every kind of reason: ill-formed, a failing correct BT, PhyPR codes, extra checks."""
     out = tmp_path_factory.mktemp("faulty")
+    tasks = _without_spare_bag_purpose(tmp_path_factory.mktemp("tasks"))
     assert main(["run", "--model", "offline", "--tasks", "bathroom_towel_refresh,multi_room_trash_run",
                  "--generators", "cot,holodeck,logicenvgen", "--executor", "inprocess", "--quiet",
-                 "--output", str(out)]) == 0
+                 "--tasks-dir", str(tasks), "--output", str(out)]) == 0
     return _only_dir(out)
+
+
+def _without_spare_bag_purpose(folder: Path) -> Path:
+    """The benchmark tasks with multi_room_trash_run's two trash-bag roles told apart by nothing:
+    an environment with one bag leaves both ambiguous (ill-formed), as before issue 45."""
+    from logicenveval.benchmark import tasks_dir
+
+    tasks = folder / "tasks"
+    shutil.copytree(tasks_dir(), tasks)
+    path = tasks / "multi_room_trash_run" / "task.json"
+    data = json.loads(path.read_text(encoding="utf-8"))
+    data["roles"]["spare_bag"].pop("attributes")
+    data["constraints"] = [c for c in data["constraints"] if "spare_bag, purpose" not in c["fact"]]
+    path.write_text(json.dumps(data), encoding="utf-8")
+    return tasks
 
 
 def test_the_filters_find_every_reason_word_and_code_shown(faulty_run: Path) -> None:

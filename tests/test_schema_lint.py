@@ -124,8 +124,17 @@ def test_lint_passes_clean_files_and_names_the_unbound_role(tmp_path: Path,
         d["objects"] = [o for o in d["objects"] if o["category"] != "mop"]
 
     _edit(first, no_mop)
-    _edit(second, lambda d: d["objects"].append({**next(o for o in d["objects"] if o["category"] == "sofa"),
-                                                 "id": "sofa_2", "category": "Couch"}))
+    def two_sofas(d: dict[str, Any]) -> None:
+        """Two sofas, neither with the role's name as its id (that one would play it)."""
+        sofa = next(o for o in d["objects"] if o["category"] == "sofa")
+        d["objects"].append({**sofa, "id": "sofa_2", "category": "Couch"})
+        for o in d["objects"]:
+            o.update({k: "couch_a" for k in ("support", "container") if o.get(k) == sofa["id"]})
+        for r in d.get("relations", []):
+            r["args"] = ["couch_a" if a == sofa["id"] else a for a in r["args"]]
+        sofa["id"] = "couch_a"
+
+    _edit(second, two_sofas)
 
     def on_the_toy(d: dict[str, Any]) -> None:
         book = next(o for o in d["objects"] if o["category"] == "book")
@@ -158,3 +167,32 @@ def test_lint_bad_input_exits_2(tmp_path: Path, capsys: pytest.CaptureFixture[st
     assert main(["lint", str(tmp_path)]) == 1
     out = capsys.readouterr().out
     assert "file: not a valid EnvSpec" in out and "task_id 'multi_room_trash_run'" in out
+
+
+def test_schema_words_in_states_are_a_problem_of_the_environment(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """Qwen2.5-Coder-1.5B's scenes carried `"states": {"additionalProperties": false}`: `lint`
+    names the object and the flag, and `evaluate` counts the environment ill-formed."""
+    from logicenveval.model.envspec import unknown_state_flags
+
+    folder = _folder(tmp_path)
+    first = sorted(folder.glob("*.json"))[0]
+
+    def schema_words(d: dict[str, Any]) -> None:
+        d["objects"][0]["states"] = {"additionalProperties": False, "dirty": True}
+
+    _edit(first, schema_words)
+    assert main(["lint", str(folder.parent)]) == 1
+    out = capsys.readouterr().out
+    assert "states: object" in out and "unknown state flag(s) ['additionalProperties']" in out
+    assert "2 of 3 file(s) without problems" in out
+    out_dir = tmp_path / "scored"
+    assert main(["evaluate", str(folder.parent), "--output", str(out_dir), "--run-id", "x", "--executor", "inprocess"]) in (0, 1)
+    samples = [json.loads(line) for line in (out_dir / "x" / "samples.jsonl").read_text().splitlines()]
+    bad = [s for s in samples if s["env_id"] == json.loads(first.read_text())["env_id"]]
+    assert len(bad) == 1 and not bad[0]["well_formed"]
+    assert any("additionalProperties" in p for p in bad[0]["problems"])
+    assert all(s["well_formed"] for s in samples if s is not bad[0])
+    from logicenveval.envfiles import load_env
+
+    assert unknown_state_flags(load_env(sorted(folder.glob("*.json"))[1])) == []

@@ -12,8 +12,8 @@ Sources: `reports/reference/results.json` (the default generators), `reports/fig
 results.json` (the ablation, oracle and `--brief roles` runs: only their results are
 committed), `reports/real/*/results.json` (the real-model replay packs), `reports/real/stability/
 <model>/seed*/results.json` (repeated real-model runs, paper App. C), and the task folders
-(`tasks stats`, trajectory selectors, shipped killable-mutant lists). Benchmark timings (the
-"Performance" table, `benchmarks/*.py`) are measurements of a machine, not data, and stay
+(`tasks stats`, trajectory selectors, shipped killable-mutant lists). Benchmark timings
+(`docs/performance.md`, `benchmarks/*.py`) are measurements of a machine, not data, and stay
 hand-written.
 
     python tools/docs_figures.py            # rewrite the marked tables and figures in place

@@ -9,7 +9,12 @@ mistakes, the floor plan's included, are part of what the benchmark measures.
 from __future__ import annotations
 
 from logicenveval.baselines.drafts import env_from_draft
-from logicenveval.baselines.replies import WrittenEnvironmentsReply, written_slots
+from logicenveval.baselines.replies import (
+    WrittenEnvironmentsReply,
+    dropped_relations,
+    written_slots,
+    written_words,
+)
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.base import (
     Attempt,
@@ -33,15 +38,21 @@ class CoT:
 
     def generate(self, brief: TaskBrief, ctx: GenerationContext) -> GenerationResult:
         """One attempt per draft the model wrote; a reply that never validates fails all
-        `max_environments` drafts it could have written, so failing never beats answering."""
+        `max_environments` drafts it could have written, so failing never beats answering. A
+        draft that repeats an earlier one (its situation aside) is a failed attempt named as a
+        copy: the method was asked for distinct environments, and copies would count as
+        coverage-neutral environments that raise PhyPR and SceVR for free."""
         payload = {"task": brief.model_dump(mode="json"), "n_environments": self.max_environments,
                    "categories": ctx.catalog.generator_categories()}
         ids = [f"{self.name}-{i:02d}" for i in range(self.max_environments)]
         ctx.plan_attempts(self.max_environments)
         try:
+            protocol = protocol_of(ctx.model)
+            vocabulary = written_slots(sorted(brief.roles), self.max_environments) if protocol >= 4 else None
+            if vocabulary is not None and protocol >= 5:  # the scene's words, as every method's
+                vocabulary.update(written_words(brief, ctx.catalog.generator_categories()))
             reply = ask(ctx.model, "cot_environments", payload, WrittenEnvironmentsReply, seed=ctx.seed,
-                        vocabulary=written_slots(sorted(brief.roles), self.max_environments)
-                        if protocol_of(ctx.model) >= 4 else None)
+                        vocabulary=vocabulary)
         except LogicEnvEvalError as exc:
             return GenerationResult(
                 failures=[GenerationFailure(stage="cot_environments", message=str(exc))],
@@ -51,7 +62,15 @@ class CoT:
         envs = []
         failures = []
         attempts = []
+        written: dict[str, str] = {}  # a draft's content (its situation aside) -> the first env id
         for env_id, draft in zip(ids, drafts, strict=False):
+            content = draft.model_dump_json(exclude={"situation"})
+            if content in written:  # Qwen2.5-Coder-1.5B copied one environment 12 times
+                why = f"a copy of {written[content]}: the same rooms, objects and relations written again"
+                failures.append(GenerationFailure(stage="distinct", message=why, env_id=env_id))
+                attempts.append(Attempt(id=env_id, target=draft.situation, stage="distinct", reason=why))
+                continue
+            written[content] = env_id
             try:
                 envs.append(env_from_draft(brief, env_id=env_id, generator=self.name, draft=draft,
                                            extra={"situation": draft.situation}))
@@ -61,4 +80,5 @@ class CoT:
                 continue
             attempts.append(Attempt(id=env_id, target=draft.situation, env_id=env_id))
         return GenerationResult(envs=envs, failures=failures, attempts=attempts, artifacts={
-            "reasoning": reply.reasoning, "situations": [d.situation for d in reply.environments]})
+            "reasoning": reply.reasoning, "situations": [d.situation for d in reply.environments],
+            **dropped_relations(zip(ids, drafts, strict=False))})

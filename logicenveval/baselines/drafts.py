@@ -70,15 +70,19 @@ def _door_segment(rect: RoomRect, door: DoorDraft, by_id: dict[str, RoomRect], o
 
 def env_from_draft(brief: TaskBrief, *, env_id: str, generator: str, draft: WrittenEnvironment,
                    extra: dict[str, Any] | None = None) -> EnvSpec:
-    """The EnvSpec of a written environment, coordinates exactly as the model wrote them."""
+    """The EnvSpec of a written environment, coordinates exactly as the model wrote them.
+
+    `roles` holds only the roles the draft gives an object (`role` of an object): a role the
+    draft leaves out is not written as null (which would say "absent" and stop the judge), so
+    the harness binds it by meaning (`domain.roles`) exactly as for every other method."""
     objects: list[dict[str, Any]] = []
-    roles: dict[str, str | None] = {r: None for r in brief.roles}
+    roles: dict[str, str | None] = {}
     for o in draft.objects:
         support, container = placement_fields(o.placement)
         objects.append({"id": o.id, "category": o.category, "room": o.room, "position": list(o.position),
                         "size": list(o.size), "yaw": o.yaw, "support": support, "container": container,
                         "attributes": dict(o.attributes), "states": dict(o.states)})
-        if o.role in roles and roles[o.role] is None:
+        if o.role in brief.roles and o.role not in roles:
             roles[o.role] = o.id
     room_ids = [r.id for r in draft.rooms]
     data = {

@@ -26,7 +26,7 @@ from logicenveval.baselines.holodeck_solver import (
     surface_spot,
     wall_spots,
 )
-from logicenveval.baselines.replies import HolodeckSceneReply, HolodeckSceneWire
+from logicenveval.baselines.replies import HolodeckSceneReply, HolodeckSceneWire, dropped_relations
 from logicenveval.domain.catalog import Catalog
 from logicenveval.domain.shapes import load_shapes
 from logicenveval.envfiles import env_from_dict
@@ -78,9 +78,12 @@ class Holodeck:
                 vocabulary["object_ids"] = Pattern(f"^({'|'.join([*map(re.escape, role_names), OTHER_ID])})$")
                 # one relation per object it may list: its roles and at most MAX_OTHER_OBJECTS others
                 vocabulary["relation_slots"] = object_slots(role_names)
-                scene = ask(ctx.model, "holodeck_scene", payload, HolodeckSceneWire, seed=ctx.seed,
-                            vocabulary=vocabulary, quote=False).draft()
+                wire = ask(ctx.model, "holodeck_scene", payload, HolodeckSceneWire, seed=ctx.seed,
+                           vocabulary=vocabulary, quote=False)
+                dropped = dropped_relations([(env_id, wire)])
+                scene = wire.draft()
             else:
+                dropped = {}
                 scene = ask(ctx.model, "holodeck_scene", payload, HolodeckSceneReply, seed=ctx.seed,
                             vocabulary=vocabulary)
             env, log = build_scene(brief, scene, ctx.catalog, ctx.rng, env_id=env_id, generator=self.name,
@@ -89,7 +92,7 @@ class Holodeck:
             return GenerationResult(
                 failures=[GenerationFailure(stage="holodeck", message=str(exc), env_id=env_id)],
                 attempts=[Attempt(id=env_id, stage="holodeck", reason=str(exc))])
-        artifacts = {"scene": scene.model_dump(mode="json"), "layout": log}
+        artifacts = {"scene": scene.model_dump(mode="json"), "layout": log, **dropped}
         roles = {o.id: o.role for o in scene.objects if o.role}
         failures = [GenerationFailure(stage="layout", env_id=env_id,
                                       message=f"role object {oid!r} could not be placed and was left out")
@@ -180,8 +183,8 @@ def build_scene(brief: TaskBrief, scene: HolodeckSceneReply, catalog: Catalog, r
         "rooms": [{"id": r.id, "type": d.type, "polygon": r.polygon} for r, d in zip(rects, scene.rooms, strict=True)],
         "doors": doors, "windows": windows, "objects": [placed[i] for i in drafts if i in placed],
         "relations": _holding_relations(scene, placed, floor_poses),
-        "roles": {role: next((o.id for o in scene.objects if o.role == role and o.id in placed), None)
-                  for role in brief.roles},
+        # only roles with a placed object: the others are bound by the judge (`domain.roles`)
+        "roles": {o.role: o.id for o in reversed(scene.objects) if o.role in brief.roles and o.id in placed},
         "agent": {"room": brief.rooms[0] if brief.rooms[0] in by_room else rects[0].id},
     }, source=env_id)
     return env, log

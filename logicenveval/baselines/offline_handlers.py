@@ -8,6 +8,7 @@ handlers use:
   writer's own coarse geometry), object coordinates from `scene.guessed_layout`.
 - `ifg_intents`: k intents sampled with `default_rng(request.seed)`, each factor's value drawn
   from a softmax over a prior that prefers the first-described value, sharpened by 1/temperature.
+- `ifg_intent` (protocol 5): one such intent under the request's own seed, as literals.
 - `ifg_environment`: one environment realising the intent, the same floor plan rule, coordinates
   from `scene.guessed_layout` with a temperature-scaled, seeded wall gap.
 - `holodeck_scene`: the default room of the description — every role object in its typical
@@ -28,6 +29,7 @@ from logicenveval.llm.analysis import Factor, analyse
 from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.offline import handler
 from logicenveval.llm.scene_words import keyed, keyed_selection
+from logicenveval.llm.structured import literals_of
 from logicenveval.model.rooms import room_type_of
 from logicenveval.scene.guessed_layout import guess_coordinates
 
@@ -193,6 +195,15 @@ def ifg_intents(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]
         intents.append({"description": ", ".join(f"{k}={v}" for k, v in picks.items()) or "the described room",
                         "facts": [f.values[picks[f.id]] for f in factors]})
     return {"trajectories": intents}
+
+
+@handler("ifg_intent")
+def ifg_intent(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
+    """One intent (protocol 5): the `ifg_intents` draw with k = 1 under this request's own
+    seed, its facts as structured literals."""
+    intent = ifg_intents({**payload, "k": 1}, request)["trajectories"][0]
+    return {"description": intent["description"][:300],
+            "facts": [lit for fact in intent["facts"] for lit in literals_of(fact)]}
 
 
 @handler("ifg_environment")

@@ -9,14 +9,15 @@ placements only: its own solver places them.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-from typing import Literal
+from collections.abc import Iterable, Sequence
+from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, model_validator
 
 from logicenveval.llm import meaning
 from logicenveval.llm.meaning import MeaningError
 from logicenveval.llm.replies import (
+    JudgedRelations,
     ObjectDraft,
     OtherObjects,
     PlacedObject,
@@ -27,7 +28,10 @@ from logicenveval.llm.replies import (
     bind_objects,
     object_slots,
 )
-from logicenveval.llm.vocab import AT_MOST
+from logicenveval.llm.structured import LiteralDraft, literal_text
+from logicenveval.llm.vocab import AT_MOST, CONTEXT_KEY, scene_vocabulary
+from logicenveval.model.repeats import repeated
+from logicenveval.model.task import TaskBrief
 
 _F = ConfigDict(frozen=True, extra="ignore")
 
@@ -61,7 +65,7 @@ class WrittenWindow(BaseModel):
     state: Literal["open", "closed"] = "closed"
 
 
-class WrittenEnvironment(BaseModel):
+class WrittenEnvironment(JudgedRelations):
     model_config = _F
     situation: str = Field(default="", description="the situation this environment tests")
     rooms: list[WrittenRoom] = Field(min_length=1)
@@ -72,6 +76,32 @@ class WrittenEnvironment(BaseModel):
     objects: list[PlacedObject] = Field(min_length=1, description="positions in the same world frame as the rooms",
                                         json_schema_extra={AT_MOST: "object_slots"})
     relations: list[RelationDraft] = Field(default_factory=list, json_schema_extra={AT_MOST: "object_slots"})
+
+    @model_validator(mode="after")
+    def _meaningful(self, info: ValidationInfo) -> WrittenEnvironment:
+        """From request protocol 5 on (its requests give the scene's words, `written_words`),
+        a written environment is checked as LogicEnvGen's and Holodeck-like's scenes are: ids
+        unique, no object on or in itself, an object named after a role plays it
+        (`llm.replies.bind_objects`); a finding is re-asked with the same budget. The paper's
+        "same problem setup" for every method (issue 46): before, a self-supporting object was a
+        final failure on this path only."""
+        vocabulary = (info.context or {}).get(CONTEXT_KEY) or {}
+        if not meaning.enabled(info.context) or "categories" not in vocabulary:
+            return self
+        twice = repeated([o.id for o in self.objects])
+        if twice:
+            raise MeaningError(f"object ids must be unique in an environment; repeated: {twice}")
+        bound = bind_objects(list(self.objects), info)
+        return self if bound == list(self.objects) else self.model_copy(update={"objects": bound})
+
+
+def written_words(brief: TaskBrief, categories: Sequence[str]) -> dict[str, Any]:
+    """The scene's words a written environment is asked in from protocol 5 on, as LogicEnvGen's
+    selection and Holodeck-like's scene are (`llm.vocab.scene_vocabulary`): the task's rooms,
+    room types, the catalog's and the roles' categories, the roles, placements and relation types
+    in the grammar; no role is required (a CoT or IFG situation may lack an object)."""
+    return scene_vocabulary(list(brief.rooms), sorted(brief.roles),
+                            [*categories, *(r.category for r in brief.roles.values())])
 
 
 class WrittenEnvironmentsReply(BaseModel):
@@ -84,6 +114,32 @@ class WrittenEnvironmentsReply(BaseModel):
     environments: list[WrittenEnvironment] = Field(min_length=1, json_schema_extra={AT_MOST: "environment_slots"})
 
 
+class IntentWire(BaseModel):
+    """One intent of IFG's stage 1 (protocol 5): a situation of the task, as the literals that
+    hold initially, each bound to the task's roles, rooms and flags like LogicEnvGen's factors
+    (`llm.structured`), so `not attr(cabinet, opened)` cannot be written; a literal stated both
+    ways is refused (re-asked) as no situation."""
+
+    model_config = _F
+    description: str = Field(max_length=300, description="the situation in words")
+    facts: list[LiteralDraft] = Field(default_factory=list, max_length=24,
+                                      description="what holds initially in this situation")
+
+    @model_validator(mode="after")
+    def _consistent(self, info: ValidationInfo) -> IntentWire:
+        if meaning.enabled(info.context):
+            texts = [literal_text(f) for f in self.facts]
+            both = sorted({t for t in texts if f"not {t}" in texts})
+            if both:
+                raise MeaningError(f"the intent states {both[0]} and its negation: write one situation, "
+                                   "each literal once")
+        return self
+
+    def texts(self) -> list[str]:
+        """The facts in the condition language, each once."""
+        return list(dict.fromkeys(literal_text(f) for f in self.facts))
+
+
 def written_slots(roles: Sequence[str], environments: int) -> dict[str, list[str]]:
     """The bounds of a `WrittenEnvironmentsReply` from request protocol 4 on (`AT_MOST`): at most
     `environments` environments, each with at most one object, and one relation, per role plus
@@ -91,6 +147,15 @@ def written_slots(roles: Sequence[str], environments: int) -> dict[str, list[str
     environment, or `on(plate, counter)`, `on(plate, sink)`, ... until their token bound."""
     return {"environment_slots": [f"environment_{k}" for k in range(environments)],
             "object_slots": object_slots(roles)}
+
+
+def dropped_relations(written: Iterable[tuple[str, JudgedRelations]]) -> dict[str, Any]:
+    """The relations each written environment lost (`judged_relations`), for a generator's
+    artifacts (plan.json): `{"dropped_relations": {env_id: [[relation, why], ...]}}`, or nothing
+    when none was dropped, so plans of replies without such relations stay as they were."""
+    dropped = {env_id: [[r, why] for r, why in part.dropped_relations]
+               for env_id, part in written if part.dropped_relations}
+    return {"dropped_relations": dropped} if dropped else {}
 
 
 class HolodeckSceneReply(BaseModel):
@@ -114,7 +179,7 @@ class HolodeckSceneReply(BaseModel):
         return self if bound == list(self.objects) else self.model_copy(update={"objects": bound})
 
 
-class HolodeckSceneWire(BaseModel):
+class HolodeckSceneWire(JudgedRelations):
     """Holodeck's language stages in one reply: floor plan, objects (one per required role, keyed
     by the role, then the others), spatial relations (no coordinates: its own constraint solver
     places the objects)."""

@@ -33,7 +33,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     mu.add_argument("--write", action="store_true",
                     help="also write each task folder's killable_mutants.json (read by run/evaluate)")
     st = sub.add_parser("stats", help="per-task logical and policy sizes, with totals")
-    st.add_argument("--markdown", action="store_true", help="print a Markdown table (for the README)")
+    st.add_argument("--markdown", action="store_true", help="print a Markdown table (as in docs/benchmark.md)")
     for q in (ls, show, val, mu, st):
         q.add_argument("--tasks-dir", default=None, help="folder of <task_id>/task.json (default: benchmark)")
 

@@ -1,31 +1,42 @@
-"""Binding task roles to the objects of an environment that does not name them.
+"""Binding task roles to the objects of an environment: one rule for every method and command.
 
 Environments made by other tools (another generator, an imported ProcTHOR house, an LLM told
 only the description) usually carry no `roles` map, yet the GT trees and the policies speak
-about roles. The harness binds them from what the environment says of each object — its
-category, its attributes and its *name* (the object id and the category as written) — by a rule
-that never guesses:
+about roles. The harness binds them by what the environment says of each object, by one rule
+that never guesses and that `evaluate`, `lint`, `import-house`, `simulate --env` and every
+generator's run share (`prepare_env`):
 
-* A role that the EnvSpec already maps (to an object id or to null), or that `given` maps
-  (`--roles ROLE=ID`), keeps its mapping.
-* Any other role is a *candidate match* for an object when the object's category names the
-  role's category in the one vocabulary (`domain.categories`: the catalog key, a synonym, an
-  AI2-THOR type, in any case, spacing or plural: ``Toy Chest``, ``toy_chests`` and ``toy_box``
-  all name ``toy_box``) and the object agrees with every attribute of the role: it has the
-  attribute with the same value, or it has no such attribute and its name says the value
-  (``red toy box`` or id ``red_box`` say ``color=red``). An object with another value, or with
-  neither the attribute nor the word, does not agree.
-* Of several candidates, the one whose name holds every word of the role's name (id
-  ``red_box``, ``Red Box 1`` for role ``red_box``) is the generator's own choice and binds.
-* One candidate: the role binds to it. None: the role stays unbound (null), which the GT
-  evaluation accepts only for an optional role or where the reached path says the role does
-  not exist; `why` then says in one message what the nearest objects lack.
-* Objects bound to a role are no longer candidates of the others; this is repeated until
-  nothing changes, so a role left with one candidate after the others took theirs is bound too.
-  When two roles are left with the same single object, neither is bound.
-* Several candidates: the role stays unbound and the binding reports one problem naming the
-  role and every candidate; the environment is then not well-formed (the harness never picks one
-  silently, and a role that the EnvSpec maps itself is never second-guessed).
+1. **Explicit map, checked.** A role that the EnvSpec's `roles` (or `--roles ROLE=ID`, `given`)
+   maps keeps its mapping when the object is of the role's category and plays no other role;
+   a mapping to null says the role is absent. An entry of the EnvSpec that fails the check is
+   refused (`refused` says why) and the role is bound by meaning as if unmapped, so a forged map
+   gains nothing; a failing `--roles` entry is bad input (`ConfigError`).
+2. **Category.** An object is a *candidate* of a role when its category names the role's
+   category in the one vocabulary (`domain.categories`: ``Toy Chest``, ``toy_chests`` and
+   ``toy_box`` all name ``toy_box``) and it agrees with every attribute of the role: it states
+   the attribute with the same value, or it does not state it and its name says the value
+   (``red toy box`` or id ``red_box`` say ``color=red``; ``novel_shelf`` says
+   ``purpose=novels``). Words are compared lemmatised (lemminflect), in any order.
+3. Of several candidates, evidence decides, in this order: the one that **states the role's
+   attributes** (`"purpose": "novels"`); the object whose **id** is the role's name; the one
+   whose **name words** hold the role name's distinctive words (``novel_shelf`` and
+   ``shelf for novels`` for role ``shelf_novels``). Roles that evidence singles an object out
+   for are bound before those that only their category speaks for.
+4. One candidate: the role binds to it. Objects bound to a role are no longer candidates of the
+   others; this is repeated until nothing changes, so a role left with one candidate after the
+   others took theirs is bound too. When two roles are left with the same single object,
+   neither is bound.
+5. Several candidates and nothing to tell them apart (shelves named only top/middle/bottom for
+   roles without attributes): the role is *ambiguous*, one problem names it and its candidates,
+   and the environment is not well-formed: the judge never picks one silently. No candidate
+   (shelves that state no `purpose` for roles that have one): the role stays unbound (null),
+   which the GT evaluation accepts only for an optional role or where the reached path says the
+   role does not exist; `why` then says in one message what the objects there lack (`top has
+   no purpose; ... state purpose on the object meant`).
+
+Every role's outcome is on record (`RoleBinding.record`): the object and the reason
+(``explicit map``, ``id``, ``attribute``, ``name words``, ``category``: the one candidate left),
+written to each sample of `samples.jsonl` and shown on the per-task page.
 
 Public API::
 
@@ -34,18 +45,22 @@ Public API::
 
 `roles` is `task.roles` or `brief.roles` (a generator only sees the brief). `RoleBinding` has
 `roles` (the complete map, given and bound), `bound` (only the roles bound here), `candidates`
-(role -> object ids for every role with several), `problems` (one message per ambiguous role),
+(role -> object ids for every ambiguous role), `problems` (one message per ambiguous role),
 `why` (one message per role left unbound with no candidate: what the nearest objects lack),
-`well_formed` and `apply(env) -> EnvSpec` (the env with `roles` replaced by the complete map).
+`refused` (one message per explicit entry refused), `reasons` (role -> why it has its object),
+`well_formed`, `record` and `apply(env) -> EnvSpec` (the env with `roles` replaced by the
+complete map).
 """
 
 from __future__ import annotations
 
 import difflib
-from collections.abc import Mapping
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
 from functools import lru_cache
+from typing import Literal
 
+from lemminflect import getLemma
 from pydantic import BaseModel, ConfigDict, Field
 
 from logicenveval.domain.catalog import Catalog, load_catalog
@@ -61,9 +76,21 @@ from logicenveval.model.envspec import EnvObject, EnvSpec
 from logicenveval.model.task import Role
 
 #: words of an object's name that say nothing about which object it is
-_NOISE = frozenset({"a", "an", "the", "of", "obj", "object", "item", "with", "and"})
+_NOISE = frozenset({"a", "an", "the", "of", "obj", "object", "item", "with", "and", "for", "to", "in",
+                    "on", "at", "by"})
 #: how many nearest objects an unbound role's message names
 _NEAREST = 3
+
+#: why a role has its object (or none), as recorded in every sample
+Reason = Literal["explicit map", "id", "attribute", "name words", "category", "absent", "ambiguous"]
+
+
+class RoleChoice(BaseModel):
+    """One role's outcome: the object that plays it (None: nobody) and the reason."""
+
+    model_config = ConfigDict(frozen=True)
+    object: str | None = None
+    reason: Reason
 
 
 class RoleBinding(BaseModel):
@@ -76,10 +103,19 @@ class RoleBinding(BaseModel):
     problems: list[str] = Field(default_factory=list)
     #: role left unbound with no candidate -> what the nearest objects lack (one message)
     why: dict[str, str] = Field(default_factory=dict)
+    #: one message per entry of the EnvSpec's own map that the check refused
+    refused: list[str] = Field(default_factory=list)
+    #: role -> why it has its object (`Reason`), for every role of the task
+    reasons: dict[str, Reason] = Field(default_factory=dict)
 
     @property
     def well_formed(self) -> bool:
         return not self.problems
+
+    def record(self) -> dict[str, RoleChoice]:
+        """Role -> object and reason, for every role bound here or mapped explicitly."""
+        return {name: RoleChoice(object=self.roles.get(name), reason=reason)
+                for name, reason in self.reasons.items()}
 
     def apply(self, env: EnvSpec) -> EnvSpec:
         """`env` with its `roles` map replaced by the complete one (unchanged when equal)."""
@@ -94,7 +130,7 @@ def category_names(category: str, catalog: Catalog) -> set[str]:
 
 
 def name_words(obj: EnvObject) -> frozenset[str]:
-    """The words an object's name says: its id and its category as written (singular forms)."""
+    """The words an object's name says: its id and its category as written (lemmas)."""
     written = getattr(obj, "source_category", None)
     text = " ".join(str(t) for t in (obj.id, written or obj.category))
     return _words(text)
@@ -102,37 +138,79 @@ def name_words(obj: EnvObject) -> frozenset[str]:
 
 @lru_cache(maxsize=8192)  # pure; every object's name is read for every role it may bind
 def _words(text: str) -> frozenset[str]:
-    out: set[str] = set()
-    for word in snake(text).split("_"):
-        if word and not word.isdigit() and word not in _NOISE:
-            out |= {word, singular(word)}
-    return frozenset(out)
+    """The lemmas of the words of `text` (`shelf for novels` -> {shelf, novel}), noise and
+    numbers left out, so that names compare in any order and any number."""
+    return frozenset(_lemma(w) for w in snake(text).split("_")
+                     if w and not w.isdigit() and w not in _NOISE)
+
+
+@lru_cache(maxsize=8192)
+def _lemma(word: str) -> str:
+    """The noun lemma of `word` (lemminflect: a maintained dictionary plus rules), else the
+    likeliest singular."""
+    found = getLemma(word, upos="NOUN")
+    return str(found[0]) if found else singular(word)
 
 
 def _same_category(obj: EnvObject, role: Role, catalog: Catalog) -> bool:
     return vocabulary(catalog).canonical(obj.category, (role.category,)) == role.category
 
 
+def _stated(obj: EnvObject) -> dict[str, frozenset[str]]:
+    return {snake(k): _words(v) for k, v in obj.attributes.items()}
+
+
 def attribute_gaps(obj: EnvObject, role: Role) -> list[str]:
     """What `obj` lacks of the role's attributes: `no color` or `color=blue`; [] when it agrees.
 
-    An attribute the object does not state agrees when its name says the value."""
-    have = {snake(k): snake(v) for k, v in obj.attributes.items()}
+    A stated value agrees when its words hold the value's (lemmas: `Novels` and `novel` agree
+    with `novels`, `other books` with `other`); an attribute the object does not state agrees
+    when its name says the value."""
+    have = _stated(obj)
     words = name_words(obj)
     gaps = []
     for key, value in role.attributes.items():
         got = have.get(snake(key))
-        if got == snake(value) or (got is None and _words(value) <= words):
+        if _words(value) <= (words if got is None else got):
             continue
-        gaps.append(f"no {key}" if got is None else f"{key}={got}")
+        gaps.append(f"no {key}" if got is None else f"{key}={obj.attributes[_key(obj, key)]}")
     return gaps
 
 
+def _key(obj: EnvObject, key: str) -> str:
+    return next(k for k in obj.attributes if snake(k) == snake(key))
+
+
+def _states_all(obj: EnvObject, role: Role) -> bool:
+    have = _stated(obj)
+    return bool(role.attributes) and all(_words(v) <= have.get(snake(k), frozenset())
+                                         for k, v in role.attributes.items())
+
+
+def _says_name(obj: EnvObject, name: str, role: Role, catalog: Catalog) -> bool:
+    """Does the object's name hold the role name's distinctive words (those that do not name
+    the category: `novel` of `shelf_novels`)? A role name of category words only (`table`)
+    distinguishes nothing."""
+    common = set().union(*(_words(n) for n in category_names(role.category, catalog)))
+    distinctive = _words(name) - common
+    return bool(distinctive) and distinctive <= name_words(obj)
+
+
 def named_attributes(obj: EnvObject, role: Role) -> dict[str, str]:
-    """The role attributes `obj` states only through its name (to add to its attributes)."""
-    have = {snake(k) for k in obj.attributes}
+    """The role attributes `obj` says otherwise than the role writes them — through its name
+    (`red_box`) or in other words (`"purpose": "other books"` for `purpose=other`) — as the role
+    writes them, to put in its attributes: the trees, constraints and simulator compare values
+    exactly."""
+    have = {snake(k): (k, v) for k, v in obj.attributes.items()}
     words = name_words(obj)
-    return {k: v for k, v in role.attributes.items() if snake(k) not in have and _words(v) <= words}
+    out = {}
+    for key, value in role.attributes.items():
+        got = have.get(snake(key))
+        if got is None and _words(value) <= words:
+            out[key] = value
+        elif got is not None and got[1] != value and _words(value) <= _words(got[1]):
+            out[got[0]] = value
+    return out
 
 
 def matches(obj: EnvObject, role: Role, catalog: Catalog) -> bool:
@@ -143,35 +221,127 @@ def matches(obj: EnvObject, role: Role, catalog: Catalog) -> bool:
     return _same_category(obj, role, catalog) and not attribute_gaps(obj, role)
 
 
-def bind_roles(env: EnvSpec, roles: Mapping[str, Role], catalog: Catalog | None = None) -> RoleBinding:
-    """Bind every role of `roles` that `env.roles` does not map (rule in the module docstring)."""
-    cat = catalog if catalog is not None else load_catalog()
-    taken = {oid for oid in env.roles.values() if oid is not None}
+def role_named(object_id: str, roles: Iterable[str]) -> str | None:
+    """The role whose name `object_id` is (`Red Box`, `red_box` for `red_box`), if any: an object
+    so named plays that role for every method (the judge's id rule; `llm.replies.bind_objects`
+    applies the same rule to a reply before the judge sees it)."""
+    key = snake(object_id)
+    return next((r for r in roles if r == key), None)
+
+
+def _evidence(obj: EnvObject, name: str, role: Role, catalog: Catalog) -> Reason:
+    """The strongest reason `obj` plays `name` (rule 3), `category` when nothing but its
+    category and agreeing attributes speak for it."""
+    if _states_all(obj, role):
+        return "attribute"
+    if role_named(obj.id, (name,)):
+        return "id"
+    if _says_name(obj, name, role, catalog) or (role.attributes and named_attributes(obj, role)):
+        return "name words"
+    return "category"
+
+
+def check_map(env: EnvSpec, mapping: Mapping[str, str | None], roles: Mapping[str, Role],
+              catalog: Catalog) -> dict[str, str]:
+    """Role -> why its entry of `mapping` is refused: an object that is not there, of another
+    category than the role's, or given to several roles (each of them refused)."""
     by_id = {o.id: o for o in env.objects}
-    cands = {}
-    for name, role in roles.items():
-        if name in env.roles:
+    refused: dict[str, str] = {}
+    owners: dict[str, list[str]] = {}
+    for name, oid in mapping.items():
+        if name not in roles or oid is None:
             continue
-        ids = [o.id for o in env.objects if o.id not in taken and matches(o, role, cat)]
-        own = [i for i in ids if _words(name) <= name_words(by_id[i])]
-        cands[name] = own if len(own) == 1 else ids
-    decided, ambiguous = _decide(cands)
+        obj = by_id.get(oid)
+        if obj is None:
+            refused[name] = f"{name} is mapped to {oid!r}, which is not an object of {env.env_id}"
+        elif not _same_category(obj, roles[name], catalog):
+            shown = vocabulary(catalog).canonical(obj.category) or repr(obj.category)
+            refused[name] = (f"{name} is mapped to {oid}, a {shown}, but the task's {name} is a "
+                             f"{roles[name].category}")
+        else:
+            owners.setdefault(oid, []).append(name)
+    for oid, names in owners.items():
+        if len(names) > 1:
+            for name in names:
+                refused[name] = (f"{name} is mapped to {oid}, which is also mapped to "
+                                 f"{', '.join(n for n in names if n != name)}: one object plays at most one role")
+    return refused
+
+
+def bind_roles(env: EnvSpec, roles: Mapping[str, Role], catalog: Catalog | None = None) -> RoleBinding:
+    """Bind every role of `roles` (rule in the module docstring); `env.roles` is checked first."""
+    cat = catalog if catalog is not None else load_catalog()
+    refused = check_map(env, env.roles, roles, cat)
+    explicit = {n: oid for n, oid in env.roles.items() if n not in refused}
+    taken = {oid for n, oid in explicit.items() if oid is not None}
+    by_id = {o.id: o for o in env.objects}
+    free = [o for o in env.objects if o.id not in taken]
+    cands: dict[str, list[str]] = {}
+    decisive: set[str] = set()
+    for name, role in roles.items():
+        if name in explicit:
+            continue
+        agree = [o for o in free if matches(o, role, cat)]
+        cands[name] = _narrow(agree, name, role, cat)
+        if len(cands[name]) == 1 and _evidence(by_id[cands[name][0]], name, role, cat) != "category":
+            decisive.add(name)
+    # roles that evidence singles an object out for bind first; the others share what is left
+    # (one toilet roll named spare_roll: spare_roll plays it, roll is left without one)
+    decided, ambiguous = _decide({n: ids for n, ids in cands.items() if n in decisive})
+    taken_now = {oid for oid in decided.values() if oid is not None}
+    rest, undecided = _decide({n: [i for i in ids if i not in taken_now] for n, ids in cands.items()
+                               if n not in decisive})
+    decided.update(rest)
+    ambiguous.update(undecided)
     problems = []
     for name, left in ambiguous.items():
         if len(left) > 1:
-            why = f"{len(left)} objects qualify ({', '.join(left)})"
+            why = f"{len(left)} objects qualify ({', '.join(left)}) and nothing tells them apart"
         else:
             rivals = sorted(n for n, ids in ambiguous.items() if n != name and ids == left)
             why = f"its one candidate {left[0]} is also the one candidate of {', '.join(rivals)}"
-        problems.append(f"role {name} is ambiguous: {why}; add \"roles\": "
-                        f"{{\"{name}\": \"<object id>\"}} to the EnvSpec (or --roles "
-                        f"{name}=<object id>) to choose")
+        problems.append(f"role {name} is ambiguous: {why}; state the distinguishing attribute on "
+                        f"the object meant, or add \"roles\": {{\"{name}\": \"<object id>\"}} to the "
+                        f"EnvSpec (or --roles {name}=<object id>) to choose")
     bound = {name: decided.get(name) for name in cands}
-    full = {**env.roles, **bound}
+    full = {**env.roles, **{n: None for n in refused}, **bound}
+    reasons: dict[str, Reason] = {}
+    for name in roles:
+        oid = full.get(name)
+        if name in explicit:
+            reasons[name] = "explicit map" if oid is not None else "absent"
+        elif name in ambiguous:
+            reasons[name] = "ambiguous"
+        elif oid is None:
+            reasons[name] = "absent"
+        else:
+            reasons[name] = _evidence(by_id[oid], name, roles[name], cat)
     used = {oid for oid in full.values() if oid is not None}
     nearest = {name: _nearest(name, roles[name], env, full, used, cat)
                for name, oid in bound.items() if oid is None and name not in ambiguous}
-    return RoleBinding(roles=full, bound=bound, candidates=ambiguous, problems=problems, why=nearest)
+    for name, oid in explicit.items():
+        if oid is None and name in roles:
+            same = [o.id for o in env.objects if _same_category(o, roles[name], cat)]
+            there = (f": {', '.join(same[:_NEAREST])} {'is a' if len(same) == 1 else 'are'} "
+                     f"{roles[name].category}{'' if len(same) == 1 else 's'} (map one, or leave "
+                     f"{name} out of the map for the harness to bind it)" if same else "")
+            nearest[name] = f"the EnvSpec's roles map {name} to null (absent){there}"
+    return RoleBinding(roles=full, bound=bound, candidates=ambiguous, problems=problems, why=nearest,
+                       refused=[refused[n] + "; refused, bound by meaning instead" for n in sorted(refused)],
+                       reasons=reasons)
+
+
+def _narrow(agree: list[EnvObject], name: str, role: Role, cat: Catalog) -> list[str]:
+    """The candidates of a role after the evidence of rule 3 (stated attributes, id, name
+    words: the first that singles out one object decides); all of them when none does."""
+    tests: tuple[Callable[[EnvObject], bool], ...] = (
+        lambda o: _states_all(o, role), lambda o: role_named(o.id, (name,)) is not None,
+        lambda o: _says_name(o, name, role, cat))
+    for test in tests:
+        hit = [o.id for o in agree if test(o)]
+        if len(hit) == 1:
+            return hit
+    return [o.id for o in agree]
 
 
 def _nearest(name: str, role: Role, env: EnvSpec, full: Mapping[str, str | None],
@@ -248,10 +418,12 @@ def _decide(cands: Mapping[str, list[str]]) -> tuple[dict[str, str | None], dict
 
 def parse_role_map(text: str | None, roles: Mapping[str, Role] | None = None, *,
                    strict: bool = True) -> dict[str, str]:
-    """`--roles ROLE=ID,...` as a map (`ConfigError` on a malformed item). With `roles`, each
-    ROLE must be one of them (`strict`) or is left out (not strict: several tasks share a
-    `--roles`, each takes its own)."""
+    """`--roles ROLE=ID,...` as a map (`ConfigError` on a malformed item or a ROLE given twice:
+    neither is silently last-wins). With `roles`, each ROLE must be one of them (`strict`) or is
+    left out (not strict: several tasks share a `--roles`, each takes its own; the command then
+    checks with `unknown_roles` that every ROLE is a role of some task)."""
     out: dict[str, str] = {}
+    seen: dict[str, str] = {}
     for item in (text or "").split(","):
         if not item.strip():
             continue
@@ -259,6 +431,10 @@ def parse_role_map(text: str | None, roles: Mapping[str, Role] | None = None, *,
         if not sep or not role or not oid:
             raise ConfigError(f"{item.strip()!r} is not ROLE=ID", field="--roles",
                               hint="write --roles red_box=box_2,toy=doll_1")
+        if role in seen:
+            raise ConfigError(f"role {role!r} is given twice ({role}={seen[role]} and {role}={oid})",
+                              field="--roles", hint=f"give each role once: --roles {role}=<object id>")
+        seen[role] = oid
         if roles is not None and role not in roles:
             if not strict:
                 continue
@@ -266,6 +442,18 @@ def parse_role_map(text: str | None, roles: Mapping[str, Role] | None = None, *,
                               hint=f"roles: {', '.join(sorted(roles))}")
         out[role] = oid
     return out
+
+
+def unknown_roles(text: str | None, role_sets: list[Mapping[str, Role]]) -> None:
+    """`ConfigError` when a ROLE of `--roles` is a role of none of the tasks (a typo such as
+    `red_bx` would otherwise bind nothing, silently)."""
+    known = set().union(*(set(r) for r in role_sets)) if role_sets else set()
+    for role in parse_role_map(text):
+        if role not in known:
+            close = difflib.get_close_matches(role, sorted(known), n=1)
+            raise ConfigError(f"{role!r} is not a role of the task(s)", field="--roles",
+                              hint=(f"did you mean {close[0]}? " if close else "")
+                              + f"roles: {', '.join(sorted(known)[:20])}")
 
 
 @dataclass(frozen=True)
@@ -298,7 +486,14 @@ def prepare_env(env: EnvSpec, roles: Mapping[str, Role], catalog: Catalog | None
         if oid not in ids:
             raise ConfigError(f"{role}={oid}: the environment {env.env_id} has no object {oid!r}",
                               field="--roles", hint=f"object ids: {', '.join(sorted(ids)[:12])}")
-    own = {**{name: oid for name, oid in env.roles.items() if name in roles}, **(given or {})}
+    bad = check_map(env, dict(given or {}), roles, cat)
+    if bad:
+        role = min(bad)
+        raise ConfigError(f"{role}={(given or {})[role]}: {bad[role]}", field="--roles",
+                          hint="map each role to one object of the role's category")
+    chosen = set((given or {}).values())
+    own = {**{name: oid for name, oid in env.roles.items() if name in roles and oid not in chosen},
+           **(given or {})}
     binding = bind_roles(env.model_copy(update={"roles": own}), roles, cat)
     merged = {**env.roles, **binding.roles}
     if merged != dict(env.roles):

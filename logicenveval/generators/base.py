@@ -58,6 +58,10 @@ class Attempt(BaseModel):
     #: where and why it failed (both None when built)
     stage: str | None = None
     reason: str | None = None
+    #: whether the built environment realises the trajectory the generator set out to realise,
+    #: in the generator's own plan, as the generator checked it (`realised_share` in
+    #: results.json); None when it claims none or was not built
+    realised: bool | None = None
 
     @model_validator(mode="after")
     def _built_or_failed(self) -> Attempt:

@@ -19,6 +19,7 @@ from logicenveval.envfiles import env_from_dict
 from logicenveval.errors import EnvSpecError, TrajectoryError
 from logicenveval.generators.base import GenerationContext
 from logicenveval.generators.plan import PlanLog
+from logicenveval.generators.settle import settle
 from logicenveval.llm.ask import ask, protocol_of
 from logicenveval.llm.meaning import present_roles
 from logicenveval.llm.replies import (
@@ -88,6 +89,8 @@ class EnvironmentBuilder:
         self.max_refinements = max_refinements
         self.reselect = reselect
         self._first_plan: FloorPlanReply | None = None
+        #: built environments that do not realise the trajectory they claim (`_check_claim`)
+        self.unrealised: set[str] = set()
 
     @property
     def _reselecting(self) -> bool:
@@ -138,7 +141,7 @@ class EnvironmentBuilder:
                         violated_facts(sym, facts, self.ctx.catalog)]
             if not feedback:
                 return objects
-            if not self._reselecting:  # the paper checks no facts here: the environment says what it is
+            if not self._reselecting:
                 log.add("select_objects", "situation facts not realised", env_id=env_id, problems=feedback)
                 return objects
             log.add("select_objects", "refine", env_id=env_id, attempt=attempt, problems=feedback)
@@ -197,6 +200,7 @@ class EnvironmentBuilder:
         for attempt in range(self.max_refinements + 1 if self._reselecting else 1):
             objects = self.select_objects(env_id, rooms, facts, log, feedback)
             relations = self.relations(env_id, objects, log)
+            objects, relations = self._settled(env_id, rooms, facts, objects, relations, log)
             try:
                 if self.use_solver:
                     env = self._solve(env_id, rooms, objects, relations, claim, log)
@@ -214,15 +218,39 @@ class EnvironmentBuilder:
             self._check_claim(env, plan_task, claim, log)
         return env
 
+    def _settled(self, env_id: str, rooms: list[dict[str, Any]], facts: list[str], objects: list[ObjectDraft],
+                 relations: list[RelationDraft], log: PlanLog) -> tuple[list[ObjectDraft], list[RelationDraft]]:
+        """The arrangement follows the situation's constraints (§3.3: "object placements align
+        with task-specific requirements and trajectory constraints"): what a fact the selection
+        left false says of one object is set (`generators.settle`), and a relation placing such
+        an object elsewhere gives way to it, as the solver's relaxation gives task constraints
+        priority. Done after the relations are asked, so the requests are those the selection
+        makes (recorded replies replay)."""
+        sym = symbolic_env(self.brief, env_id, self.generator, rooms, objects)
+        settled = settle(objects, violated_facts(sym, facts, self.ctx.catalog))
+        if not settled.set:
+            return objects, relations
+        before = {o.id: o.placement for o in objects}
+        after = {o.id: o.placement for o in settled.objects}
+        moved = {oid for oid, placement in before.items() if after.get(oid) != placement}
+        kept = [r for r in relations if all(a in after for a in r.args)
+                and not (r.type in ("on", "inside") and r.args[0] in moved)]
+        log.add("construct", "situation facts set by construction", env_id=env_id, facts=settled.set,
+                **({"dropped_relations": [f"{r.type}({', '.join(r.args)})" for r in relations if r not in kept]}
+                   if len(kept) < len(relations) else {}))
+        return settled.objects, kept
+
     def _check_claim(self, env: EnvSpec, plan_task: Task, claim: dict[str, dict[str, str]],
                      log: PlanLog) -> None:
-        """The environment must reach, in the generator's own trees, the leaves it claims."""
+        """The environment must reach, in the generator's own trees, the leaves it claims
+        (`unrealised`: the environments that do not, for `Attempt.realised`)."""
         from logicenveval.sim.world import holds_initial
 
         reached = {o.subtask: (o.path.assignment() if o.path else None)
                    for o in evaluate_task(plan_task, holds_initial(env, self.ctx.catalog))}
         wrong = [s for s, a in claim.items() if reached.get(s) != a]
         if wrong:
+            self.unrealised.add(env.env_id)
             log.add("construct", f"{env.env_id} does not realise its trajectory in subtasks {wrong}",
                     env_id=env.env_id, failure=True)
 

@@ -84,7 +84,8 @@ class LogicEnvGen:
                 attempts.append(Attempt(id=env_id, target=targets[i], stage="construct", reason=str(exc)))
                 continue
             envs.append(env)
-            attempts.append(Attempt(id=env_id, target=targets[i], env_id=env.env_id))
+            attempts.append(Attempt(id=env_id, target=targets[i], env_id=env.env_id,
+                                    realised=None if claims[i] is None else env.env_id not in builder.unrealised))
         artifacts["construction_log"] = log.events
         failures += [GenerationFailure(stage=e["stage"], message=e["message"], env_id=e.get("env_id"))
                      for e in log.events if e.get("failure")]

@@ -44,8 +44,12 @@ _SPLIT = "=== user ==="
 #: Protocol 1 also keeps LogicEnvGen's question flow of those packs (`generators.plan`,
 #: `generators.construction`): no rule-(a) re-ask of the decomposition and one floor plan per
 #: task, since each extra question is a request the packs never recorded.
-PROTOCOL = 4
-PROTOCOLS = (1, 2, 3, 4)
+#: 5: as 4, and IFG samples each intent in its own request (`ifg_intent`, the intent
+#: temperature, a seed of its own) as structured literals bound to the task's vocabulary
+#: (`baselines.replies.IntentWire`), as IFG samples i ~ M(p) once per intent; under 4 one
+#: `ifg_intents` request asked for all k as free strings, and Qwen2.5-Coder-1.5B gave 1 of 8.
+PROTOCOL = 5
+PROTOCOLS = (1, 2, 3, 4, 5)
 
 
 def protocol_of(model: Any) -> int:
@@ -162,7 +166,7 @@ DEFAULT_MAX_TOKENS = 2500
 #: ifg_intents 3,889; every other kind fits its protocol-1 bound). A CoT reply of 16,700 tokens
 #: needs a context of at least that plus its prompt: `llamacpp:` takes `ctx=20480` (docs/llm.md)
 MAX_TOKENS: dict[str, int] = {**MAX_TOKENS_V1, "cot_environments": 16700, "trajectories_direct": 4000,
-                              "ifg_intents": 1700, "tree_step": 100}
+                              "ifg_intents": 1700, "tree_step": 100, "ifg_intent": 1000}
 #: kinds whose top-level list has as many items as the request fixes (`maxItems`): the list's
 #: key and the tokens one item may take (largest measured item x 1.5, `benchmarks/reply_bounds.py`)
 PER_ITEM_TOKENS: dict[str, tuple[str, int]] = {"tree_leaves": ("leaves", 100)}

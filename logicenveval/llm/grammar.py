@@ -7,7 +7,7 @@ indentation (Qwen2.5-Coder-1.5B did, and lost 3 of 4 factors). The server also t
 `grammar` instead of a schema; this module writes one for the schemas of `llm.replies`, with no
 whitespace at all, so every token of a reply is content.
 
-Covered: objects (properties in order, required first, optional ones each omissible),
+Covered: objects (properties in the schema's order, optional ones each omissible),
 `additionalProperties` maps, arrays (`items`, `prefixItems`, `minItems`/`maxItems`), `enum`,
 `const`, strings (`maxLength`, and `pattern` in the regex subset the vocabularies use), numbers,
 integers, booleans, null, `anyOf`/`oneOf`, local `$ref`s. Numeric bounds are left to validation
@@ -157,10 +157,20 @@ class _Builder:
             return Seq((Lit(json.dumps(key) + ":"), self.node(props[key])))
 
         if required:
+            # in the schema's order, so a reply is written in the order its model declares (CoT's
+            # reasoning before its environments, an object's role and states before its
+            # coordinates): optional keys before the first required one each carry their comma
+            # after them, the others before them
             parts: list[Node] = [Lit("{")]
-            for i, key in enumerate(required):
-                parts += [Lit(",")] * (i > 0) + [kv(key)]
-            parts += [Rep(Seq((Lit(","), kv(key))), 0, 1) for key in optional]
+            seen_required = False
+            for key in props:
+                if key in required:
+                    parts += [Lit(",")] * seen_required + [kv(key)]
+                    seen_required = True
+                elif seen_required:
+                    parts.append(Rep(Seq((Lit(","), kv(key))), 0, 1))
+                else:
+                    parts.append(Rep(Seq((kv(key), Lit(","))), 0, 1))
             return Seq((*parts, Lit("}")))
         # all optional: the first one present has no comma before it
         tail: Node = Lit("")

@@ -96,6 +96,12 @@ def _replay_target(cache: ReplyCache, wanted: Any) -> tuple[str, str]:
     return pairs[0]
 
 
+def request_protocol(model_args: str | dict[str, Any] | None) -> int:
+    """The request protocol a run with these model arguments asks in (`protocol=N`, else the
+    default `llm.ask.PROTOCOL`): what its replies answer, so what a replay of them must ask."""
+    return _protocol(parse_model_args(model_args).get("protocol"))
+
+
 def _protocol(value: Any) -> int:
     """The request protocol of `--model-args protocol=N` (`llm.ask.PROTOCOL` by default)."""
     from logicenveval.llm.ask import PROTOCOL, PROTOCOLS

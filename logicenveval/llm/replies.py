@@ -9,8 +9,18 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Annotated, Any, Literal, Union
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, model_validator
+from pydantic import (
+    BaseModel,
+    ConfigDict,
+    Field,
+    ModelWrapValidatorHandler,
+    PrivateAttr,
+    ValidationError,
+    ValidationInfo,
+    model_validator,
+)
 
+from logicenveval.domain.roles import role_named
 from logicenveval.llm import meaning
 from logicenveval.llm.meaning import MeaningError
 from logicenveval.llm.structured import Conjunction, Goal, LiteralDraft, to_text
@@ -162,7 +172,9 @@ def bind_objects(objects: list[ObjectDraft], info: ValidationInfo) -> list[Objec
     from protocol 2 on; otherwise returned as they are).
 
     An object whose id is a role's name and that gives no `role` plays that role (Qwen2.5 named
-    one object per role after the role and left the optional field out); no object may rest on
+    one object per role after the role and left the optional field out): the judge's id rule,
+    `domain.roles.role_named`, which binds every method's environments afterwards with the rest
+    of the one rule (`domain.roles.prepare_env`); no object may rest on
     or in itself; and every role the request requires (`required_roles` of the vocabulary)
     must end up with an object, else the re-ask names the roles left without one."""
     if not meaning.enabled(info.context):
@@ -171,7 +183,8 @@ def bind_objects(objects: list[ObjectDraft], info: ValidationInfo) -> list[Objec
     roles = vocabulary.get("roles")
     roles = list(roles) if isinstance(roles, list) else []
     taken = {o.role for o in objects if o.role}
-    bound = [o.model_copy(update={"role": o.id}) if o.role is None and o.id in roles and o.id not in taken
+    named = {o.id: role_named(o.id, roles) for o in objects if o.role is None}
+    bound = [o.model_copy(update={"role": named[o.id]}) if named.get(o.id) and named[o.id] not in taken
              else o for o in objects]
     problem = meaning.placement_problem([(o.id, o.placement) for o in bound])
     if problem:
@@ -397,6 +410,52 @@ class RelationsWire(BaseModel):
                 seen.add((r.type, tuple(r.args)))
                 good.append(RelationDraft(type=r.type, args=list(r.args)))
         return good, bad
+
+
+#: a relation the reply wrote that no checker can use, with why: (relation as written, reason)
+DroppedRelation = tuple[dict[str, Any], str]
+
+
+def judged_relations(data: Any, info: ValidationInfo) -> tuple[Any, list[DroppedRelation]]:
+    """A reply's `relations` as the grammar lets a model write them, with the ones of the wrong
+    arity or relating an object to itself taken out and said why (`RelationsWire.split`).
+
+    The grammar lets every relation type take one or two objects; refusing a whole scene for one
+    `edge(vase, side_table)` (seen live with Qwen2.5-Coder-1.5B on Holodeck-like's scene) lost
+    every object of it, where LogicEnvGen's path drops the one relation. Every reply that writes
+    relations reads them here, so the grammar and the validator agree for every method. Relations
+    that do not parse at all are left in place: the reply's own validation words that error."""
+    if not isinstance(data, dict) or not isinstance(data.get("relations"), list):
+        return data, []
+    try:
+        wire = RelationsWire.model_validate({"relations": data["relations"]}, context=info.context)
+    except ValidationError:
+        return data, []
+    good, bad = wire.split()
+    if not bad:
+        return data, []
+    return {**data, "relations": [r.model_dump() for r in good]}, bad
+
+
+class JudgedRelations(BaseModel):
+    """A reply part whose relations are read by `judged_relations`: the dropped ones stay on
+    record (`dropped_relations`), for the generator's log and the reasons a user reads."""
+
+    _dropped: list[DroppedRelation] = PrivateAttr(default_factory=list)
+
+    @model_validator(mode="wrap")
+    @classmethod
+    def _judge_relations(cls, data: Any, handler: ModelWrapValidatorHandler[Any],
+                         info: ValidationInfo) -> Any:
+        data, dropped = judged_relations(data, info)
+        out = handler(data)
+        if dropped:
+            out._dropped = dropped
+        return out
+
+    @property
+    def dropped_relations(self) -> list[DroppedRelation]:
+        return list(self._dropped)
 
 
 class PlacedObject(ObjectDraft):

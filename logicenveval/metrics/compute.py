@@ -71,6 +71,10 @@ class TaskMetrics(BaseModel):
     faudr_mut: float | None = None
     #: the same share per fault class (classes without killable mutants are left out)
     faudr_mut_by_class: dict[str, float] = Field(default_factory=dict)
+    #: built environments that claim a trajectory of the generator's own plan, and those that
+    #: realise it (`Attempt.realised`): what `realised_share` divides
+    n_claimed: int = 0
+    n_realised: int = 0
     covered_paths: list[str] = Field(default_factory=list)
     realised_trajectories: list[str] = Field(default_factory=list)
     #: the minimum cover JI compares with: the one closest to `realised_trajectories`
@@ -131,6 +135,9 @@ class GeneratorMetrics(BaseModel):
     #: mutation score (issue 22): mean over scored tasks; None when no task was scored
     faudr_mut: float | None = None
     faudr_mut_by_class: dict[str, float] = Field(default_factory=dict)
+    #: share of the built environments claiming a trajectory of the generator's own plan that
+    #: realise it (issue 46); None when none claims one (CoT, IFG, Holodeck-like)
+    realised_share: float | None = None
 
 
 def _is_valid(sample: EnvSample) -> bool:
@@ -164,11 +171,13 @@ def _check_samples(task: Task, samples: Sequence[EnvSample], n_failed: int) -> s
 
 
 def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0,
-                 mutants: Mapping[str, str] | None = None, reported: Sequence[str] = ()) -> TaskMetrics:
+                 mutants: Mapping[str, str] | None = None, reported: Sequence[str] = (),
+                 claims_realised: Sequence[bool] = ()) -> TaskMetrics:
     """Figures of one task; `mutants` (killable id -> fault class) enables `faudr_mut`;
     `reported`: the trajectory each attempt set out to realise (`Attempt.target`), JI's set when
     every one is a trajectory of the task's GT trees (the paper's generated set), else the
-    realised trajectories are."""
+    realised trajectories are; `claims_realised`: per built environment that claims a trajectory of
+    the generator's own plan, whether it realises it (`Attempt.realised`)."""
     from logicenveval.logic.reference import closest_reference, jaccard, reference_set
 
     keys = _check_samples(task, samples, n_failed)
@@ -218,6 +227,8 @@ def task_metrics(task: Task, samples: Sequence[EnvSample], n_failed: int = 0,
         n_extended_ok=sum(s.physics.extended for s in samples),
         extended_codes=dict(sorted(codes.items())),
         **_mutation_score(valid, mutants),
+        n_claimed=len(claims_realised),
+        n_realised=sum(claims_realised),
         covered_paths=sorted(covered),
         realised_trajectories=sorted(realised),
         reference_trajectories=[t.key for t in closest.trajectories],
@@ -293,6 +304,8 @@ def aggregate(per_task: Sequence[TaskMetrics]) -> GeneratorMetrics:
             codes=dict(sorted(sum((Counter(t.extended_codes) for t in per_task), Counter()).items())),
         ),
         **_mean_mutation_score(per_task),
+        realised_share=(float(df["n_realised"].sum()) / claimed
+                        if (claimed := int(df["n_claimed"].sum())) else None),
     )
 
 

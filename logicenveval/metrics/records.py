@@ -9,6 +9,7 @@ from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
+from logicenveval.domain.roles import RoleChoice
 from logicenveval.generators.base import Attempt, GenerationFailure
 
 
@@ -56,6 +57,11 @@ class EnvSample(BaseModel):
     categories: dict[str, str] = Field(default_factory=dict)
     #: written categories that name no catalog category -> object ids (judged as obstacles)
     unknown_categories: dict[str, list[str]] = Field(default_factory=dict)
+    #: task role -> the object that played it and why (`domain.roles`: explicit map, id,
+    #: attribute, name words, category, absent, ambiguous), so a verdict can be replayed
+    binding: dict[str, RoleChoice] = Field(default_factory=dict)
+    #: entries of the EnvSpec's own role map the check refused (bound by meaning instead)
+    refused_roles: list[str] = Field(default_factory=list)
 
 
 class VerdictTrace(BaseModel):

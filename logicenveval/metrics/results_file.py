@@ -37,8 +37,9 @@ class FailureEntry(BaseModel):
     env_id: str | None = None
     kind: str | None = Field(default=None, description="infrastructure, generation or internal (units)")
     seed: int | None = Field(default=None, description="the seed run it came from (run --seeds)")
-    attempts: int | None = Field(default=None, description="failed attempts of a unit that "
-                                 "failed as a whole (stage `unit`): what the reasons count")
+    attempts: int | None = Field(default=None, description="the failed attempts this entry's reason "
+                                 "counts: of a unit that failed as a whole (stage `unit`), or of "
+                                 "attempts that failed with no generation failure stating why")
 
 
 class Timing(BaseModel):
@@ -55,6 +56,10 @@ class Timing(BaseModel):
     run_phases: dict[str, float] = Field(
         default_factory=dict, description="seconds of the run's own phases in its main process "
         "(tasks, start-up, resume scan, units: running or awaiting them, saving: committing them, results)")
+    per_task: dict[str, dict[str, dict[str, float]]] = Field(
+        default_factory=dict, description="per generator and task: generation seconds, model "
+        "requests (sent, answered from the cache), re-asks, prompt and completion tokens and model "
+        "latency, to plan a run on a slow model")
     per_seed: dict[str, Any] | None = Field(default=None, description="run --seeds: each seed's timing")
 
 
@@ -76,6 +81,8 @@ class ResultsFile(BaseModel):
     seeds: list[int] | None = None
     runs: dict[str, str] | None = Field(default=None, description="run --seeds: seed -> sub-folder")
     brief: str = "roles"
+    protocol: int | None = Field(default=None, description="the request protocol the model was asked in "
+                                 "(docs/llm.md); absent in runs made before it was recorded")
     tasks: list[str]
     benchmark: Benchmark = Field(default_factory=Benchmark)
     versions: dict[str, str] = Field(default_factory=dict)

@@ -99,7 +99,7 @@ def page_path(source: Source, generator: str, task: str) -> str:
     return f"details/{source.prefix}{slug(generator)}/{slug(task)}.html"
 
 
-def _samples_file(run_dir: Path) -> dict[tuple[str, str], list[dict[str, Any]]]:
+def samples_file(run_dir: Path) -> dict[tuple[str, str], list[dict[str, Any]]]:
     """A run folder's samples.jsonl grouped by (generator, task), for folders without units."""
     import json
 
@@ -145,7 +145,7 @@ class UnitReader:
             by_id = {d.env_id: d for d in unit.details}
             return [(s.model_dump(mode="json"), by_id.get(s.env_id)) for s in unit.samples]
         if self._loose is None:  # a folder without units (e.g. a published reference run)
-            self._loose = _samples_file(self.source.run_dir)
+            self._loose = samples_file(self.source.run_dir)
         return [(s, None) for s in self._loose.get((generator, task), [])]
 
 
@@ -445,6 +445,9 @@ class EnvView:
     #: the render and the environment file, relative to the report folder (None: absent)
     render: str | None = None
     env_file: str | None = None
+    #: role -> "object (reason)" as the judge bound it (`EnvSample.binding`); refused map entries
+    binding: list[tuple[str, str]] = field(default_factory=list)
+    refused: list[str] = field(default_factory=list)
 
     @property
     def search(self) -> str:
@@ -541,7 +544,19 @@ def env_view(assets: Assets | None, generator: str, task: str, sample: dict[str,
         problems=[str(p) for p in [*(sample.get("problems") or []), *(sample.get("violations") or [])]],
         physics=dims, extra=extra,
         covered_paths=[str(p) for p in sample.get("covered_paths") or []], claimed=claim,
-        verdicts=verdicts, reasons_text=_reasons_text(sample, verdicts))
+        verdicts=verdicts, reasons_text=_reasons_text(sample, verdicts),
+        binding=_binding(sample), refused=[str(m) for m in sample.get("refused_roles") or []])
+
+
+def _binding(sample: Mapping[str, Any]) -> list[tuple[str, str]]:
+    """Role -> `object (reason)` of a sample (samples written before the binding was recorded
+    have none)."""
+    out = []
+    for role, choice in sorted((sample.get("binding") or {}).items()):
+        if isinstance(choice, dict):
+            oid = choice.get("object")
+            out.append((str(role), f"{oid if oid is not None else '—'} ({choice.get('reason', '?')})"))
+    return out
 
 
 @dataclass(frozen=True)

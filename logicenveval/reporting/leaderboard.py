@@ -23,6 +23,7 @@ from jinja2 import Environment, PackageLoader, select_autoescape
 from logicenveval.atomic import atomic_write_text
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.model.task import FAULTY_KINDS
+from logicenveval.reporting.charts import headline_charts
 from logicenveval.reporting.details import (
     KIND_SHORT,
     Source,
@@ -256,7 +257,8 @@ def render_main(results: dict[str, Any], collected: Collected, env: Environment)
     return env.get_template("leaderboard.html.j2").render(
         results=results, top=top, sub=sub, rows=table_rows(results, why=why), legend=LEGEND,
         note=interval_note(results), why=why, hrefs=collected.hrefs,
-        groups=group_rows(collected.rows), seeded=bool(results.get("runs")), llm=llm_validity(results))
+        groups=group_rows(collected.rows), seeded=bool(results.get("runs")), llm=llm_validity(results),
+        charts=headline_charts(results))
 
 
 def _rebase(got: Collected, sub: str, seed: str) -> Collected:

@@ -16,6 +16,7 @@ from typing import Any
 
 from logicenveval.atomic import atomic_write_text
 from logicenveval.errors import ConfigError
+from logicenveval.reporting.charts import charts_of
 from logicenveval.reporting.details import sources
 from logicenveval.reporting.leaderboard import (
     Collected,
@@ -97,6 +98,7 @@ def write_merged(run_dirs: Sequence[Path], out: Path) -> list[tuple[Path, dict[s
     table: list[TableRow] = []
     groups: list[dict[str, Any]] = []
     why: list[tuple[str, GeneratorReasons, dict[Where, str]]] = []
+    charted: list[tuple[str, dict[str, Any]]] = []  # (run · method, values): the charts' bars
     written: set[Path] = set()
     for k, (label, (run_dir, results)) in enumerate(zip(labels, runs, strict=True)):
         scope = f"run{k}"
@@ -107,6 +109,8 @@ def write_merged(run_dirs: Sequence[Path], out: Path) -> list[tuple[Path, dict[s
         run_why = reasons(got.samples, results.get("failures", {}), messages=got.messages,
                           scores=results["results"])
         table += table_rows(results, lead, scope, run_why)
+        charted += [(f"{label} · {row_label(gen, values, results)}", values)
+                    for gen, values in results["results"].items()]
         groups += [{**grp, "run": label} for grp in group_rows(got.rows, scope)]
         why += [(label, g, got.hrefs) for g in run_why]
     remove_stale(out / "details", written)
@@ -116,7 +120,7 @@ def write_merged(run_dirs: Sequence[Path], out: Path) -> list[tuple[Path, dict[s
     html = env.get_template("merged.html.j2").render(
         top=top, sub=sub, rows=table, runs=[(label, str(d)) for label, (d, _) in zip(labels, runs, strict=True)],
         n_tasks=len(runs[0][1].get("tasks", [])), legend=LEGEND, groups=groups, why=why,
-        seeded=any(r.get("runs") for _, r in runs))
+        seeded=any(r.get("runs") for _, r in runs), charts=charts_of(charted))
     atomic_write_text(out / "leaderboard.md", merged_markdown(runs))
     atomic_write_text(out / "leaderboard.html", html)
     atomic_write_text(out / "runs.json", json.dumps([str(d) for d, _ in runs], indent=2) + "\n")

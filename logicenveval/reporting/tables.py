@@ -247,7 +247,9 @@ def markdown(results: dict[str, Any]) -> str:
     lines += ["| " + " | ".join(md_escape(c) for c in r) + " |" for r in rows(results)]
     fails = {g: len(f) for g, f in results.get("failures", {}).items() if f}
     if fails:
-        lines += ["", "Recorded generation failures: "
+        lines += ["", "Failure entries in results.json `failures` (why attempts failed, counted by "
+                  "their `attempts`, and problems of environments that were built; not the failed "
+                  "column): "
                   + ", ".join(f"{md_escape(g)}: {n}" for g, n in sorted(fails.items()))]
     for key, what in (("not_measured_tasks", "Not measured (infrastructure failures; left out of "
                        "the row)"), ("budget_hit_tasks", "Search budget hit (MTSA's cover used)")):

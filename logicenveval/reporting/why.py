@@ -204,9 +204,9 @@ def reasons(samples: Iterable[Mapping[str, Any]],
         for f in items:
             where = (gen, str(f.get("task", "")), str(f.get("env_id") or ""), _seed(f))
             returned = where in built
-            # a unit that failed as a whole counts its failed attempts (results.json `attempts`)
-            stage = str(f.get("stage") or "unit")
-            n = f.get("attempts") if stage == "unit" and isinstance(f.get("attempts"), int) else 1
+            # an entry counts the failed attempts it states (results.json `attempts`): a unit
+            # that failed as a whole, or attempts no generation failure stated
+            n = f.get("attempts") if isinstance(f.get("attempts"), int) else 1
             n = max(1, n or 1)
             g.n_failed += 0 if returned else n
             g.n_short += returned

@@ -71,9 +71,19 @@ class RunConfig(BaseModel):
     @model_validator(mode="before")
     @classmethod
     def _default_brief(cls, data: Any) -> Any:
-        """No brief given: the paper's (description), except for the oracle, which needs roles."""
-        if isinstance(data, dict) and data.get("brief") is None:
-            data = {**data, "brief": "roles" if data.get("model") == "oracle" else "description"}
+        """No brief given: the paper's (description), except for the oracle, which needs roles,
+        and a replay of a run folder, which asks what that run asked (`recorded_setup`): its
+        brief, and its request protocol unless `--model-args protocol=N` says otherwise."""
+        if not isinstance(data, dict):
+            return data
+        recorded = recorded_setup(data.get("model"))
+        if data.get("brief") is None:
+            brief = recorded.brief if recorded else "roles" if data.get("model") == "oracle" else "description"
+            data = {**data, "brief": brief}
+        if recorded and "protocol" not in _model_args(data.get("model_args")):
+            args = str(data.get("model_args") or "")
+            data = {**data, "model_args": f"{args},protocol={recorded.protocol}" if args else
+                    f"protocol={recorded.protocol}"}
         return data
 
     @model_validator(mode="after")
@@ -123,6 +133,53 @@ class RunConfig(BaseModel):
 
     def run_dir(self) -> Path:
         return Path(self.output) / self.resolved_run_id()
+
+
+def _model_args(args: object) -> dict[str, Any]:
+    """The model arguments as parsed, or none where they do not parse (building the model then
+    says what is wrong with them)."""
+    from logicenveval.llm.registry import parse_model_args
+
+    try:
+        return parse_model_args(args if isinstance(args, str | dict) else None)
+    except ConfigError:
+        return {}
+
+
+class RecordedSetup(BaseModel):
+    """What a recorded run asked its model: the replies in its cache answer these requests only."""
+
+    model_config = ConfigDict(frozen=True)
+    brief: Literal["roles", "description"]
+    protocol: int
+    source: str
+
+
+def recorded_setup(model: object) -> RecordedSetup | None:
+    """For `replay:FILE` where FILE is a run folder's reply cache (a replay pack,
+    `reports/real/<model>/llm_cache.sqlite`), the brief and request protocol that run was
+    recorded with, read from its `results.json` (or `config.json`): a pack replays with the
+    README's command as written, whatever the defaults became since. Protocol: `results.json`'s
+    `protocol`, else the run's `protocol=` model argument, else 1 (a pack recorded before
+    protocols were named, issue 39). None for any other model or a cache outside a run folder."""
+    if not isinstance(model, str) or not model.startswith("replay:"):
+        return None
+    folder = Path(model.partition(":")[2]).parent
+    for name in ("results.json", "config.json"):
+        path = folder / name
+        try:
+            data = json.loads(path.read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            continue
+        config = data.get("config", data) if isinstance(data, dict) else None
+        if not isinstance(config, dict) or config.get("brief") not in ("roles", "description"):
+            continue
+        protocol = data.get("protocol")
+        if not isinstance(protocol, int) or isinstance(protocol, bool):
+            match = re.search(r"(?:^|,)\s*protocol\s*=\s*(\d+)", str(config.get("model_args") or ""))
+            protocol = int(match.group(1)) if match else 1
+        return RecordedSetup(brief=config["brief"], protocol=protocol, source=str(path))
+    return None
 
 
 def _redact(model_args: str) -> str:

@@ -16,7 +16,7 @@ from logicenveval.domain.roles import prepare_env
 from logicenveval.metrics.evaluate import constraint_problems, coverage
 from logicenveval.metrics.records import EnvSample, PhysicsSummary, VerdictTrace
 from logicenveval.model.conditions import Cond, to_text
-from logicenveval.model.envspec import EnvSpec
+from logicenveval.model.envspec import EnvSpec, unknown_state_flags
 from logicenveval.model.task import Task
 from logicenveval.phases import phase
 from logicenveval.physics import PhysicsReport, check_env
@@ -70,6 +70,7 @@ def evaluate_env(
         prepared = prepare_env(env, task.roles, catalog, given)
         env, binding = prepared.env, prepared.binding
         report = check_env(env, catalog)
+        flags = unknown_state_flags(env)
     failures = [
         f.model_dump(mode="json")
         for dim in (report.floor_plan, report.entity, report.relation)
@@ -110,8 +111,8 @@ def evaluate_env(
         covered_paths=list(cov.covered_paths),
         trajectory=cov.trajectory,
         conditions=[tuple(c) for c in cov.conditions],
-        well_formed=cov.well_formed and binding.well_formed,
-        problems=binding.problems + list(cov.problems),
+        well_formed=cov.well_formed and binding.well_formed and not flags,
+        problems=binding.problems + list(cov.problems) + flags,
         violations=violations,
         physics=physics,
         verdicts=verdicts,
@@ -119,6 +120,8 @@ def evaluate_env(
         sim_ticks=sim_ticks,
         categories=prepared.categories.mapped,
         unknown_categories=prepared.categories.unknown,
+        binding=binding.record(),
+        refused_roles=list(binding.refused),
     )
     return Evaluation(sample=sample, env=env, physics=report, traces=traces, world=world, key=key)
 

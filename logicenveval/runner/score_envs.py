@@ -28,7 +28,7 @@ from pydantic import BaseModel, ConfigDict, Field
 from logicenveval.atomic import atomic_write_text
 from logicenveval.benchmark import load_task, load_tasks, policy_path, task_ids
 from logicenveval.domain.catalog import load_catalog
-from logicenveval.domain.roles import parse_role_map
+from logicenveval.domain.roles import parse_role_map, unknown_roles
 from logicenveval.envfiles import env_to_json, load_env
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.base import Attempt, GenerationFailure
@@ -257,6 +257,7 @@ def evaluate_envs(config: EvaluateConfig) -> EvaluateOutcome:
     """Score `config.envs_dir` into `config.run_dir()` (resuming committed task units)."""
     ids, skipped = _task_ids(config)
     tasks = load_tasks(config.tasks_dir, ids)
+    unknown_roles(config.roles, [t.roles for t in tasks])  # a typo binds nothing: bad input
     run_dir = config.run_dir()
     store = RunStore(run_dir)
     store.claim(config.identity())  # held until the end: one run per folder at a time

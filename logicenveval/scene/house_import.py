@@ -40,8 +40,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 from shapely import STRtree
-from shapely.geometry import Point, Polygon
+from shapely.geometry import LineString, Point, Polygon
+from shapely.geometry.base import BaseGeometry
+from shapely.ops import unary_union
 
 from logicenveval.domain.catalog import Catalog
 from logicenveval.domain.categories import Resolution, snake, vocabulary
@@ -346,6 +349,31 @@ class _Importer:
                             "height": round(height, 4), "type": "open", "state": "open"})
         return out
 
+    def bare_boundaries(self, height: float) -> list[dict[str, Any]]:
+        """Boundaries with no wall at all: two rooms whose floor polygons share a stretch that no
+        wall of the house stands on (empty or not) have nothing between them there. Each such
+        stretch (one per straight piece, at least `_MIN_OPENING` long) becomes a door of type
+        `open` between the two rooms, as an `"empty": true` wall pair does (`openings`)."""
+        walls = []
+        for i, w in self.walls.values():
+            poly = w.get("polygon") if isinstance(w, dict) else None
+            if isinstance(poly, list) and len(poly) >= 2:
+                walls.append(LineString([_xz(poly[0], f"walls[{i}].polygon[0]"),
+                                         _xz(poly[1], f"walls[{i}].polygon[1]")]))
+        out: list[dict[str, Any]] = []
+        with np.errstate(all="ignore"):  # a mangled house's huge coordinates: no piece, no noise
+            standing = unary_union(walls).buffer(_ON_WALL, cap_style="flat") if walls else None
+            ids = sorted(self.polys)
+            for k, r0 in enumerate(ids):
+                for r1 in ids[k + 1:]:
+                    shared = self.polys[r0].boundary.intersection(self.polys[r1].boundary)
+                    bare = shared if standing is None else shared.difference(standing)
+                    for a, b in _straight_pieces(bare):
+                        out.append({"id": _ident(f"bare_{r0}_{r1}_{len(out)}"), "rooms": [r0, r1],
+                                    "segment": (a, b), "height": round(height, 4), "type": "open",
+                                    "state": "open"})
+        return out
+
     def windows(self) -> list[dict[str, Any]]:
         out = []
         for i, w in enumerate(_list(self.house, "windows", "")):
@@ -547,6 +575,7 @@ def import_house(house: dict[str, Any], *, task_id: str, env_id: str, catalog: C
         imp.where = "walls"
         height = imp.ceiling()
         doors += imp.openings(height)
+        doors += imp.bare_boundaries(height)
         imp.where = "metadata.agent"
         agent = imp.agent()
     except EnvSpecError as exc:
@@ -585,3 +614,23 @@ def load_house(path: str | Path) -> dict[str, Any]:
         raise EnvSpecError(f"a house is a JSON object, not {type(data).__name__}", file=str(path),
                            hint="export the house with AI2-THOR/ProcTHOR (schema 1.0.0)")
     return data
+
+
+#: how far (m) a boundary point may be from a wall's line and still be under the wall
+_ON_WALL = 0.01
+#: the shortest stretch of bare boundary that counts as an opening (m): shorter ones are the
+#: rounding of two polygons' corners, not a way through
+_MIN_OPENING = 0.3
+
+
+def _straight_pieces(geom: BaseGeometry) -> list[tuple[tuple[float, float], tuple[float, float]]]:
+    """The straight segments of at least `_MIN_OPENING` of a (multi)line geometry, as
+    ((x, z), (x, z)) rounded to 0.1 mm; points and shorter pieces are left out."""
+    lines = [g for g in getattr(geom, "geoms", [geom]) if isinstance(g, LineString)]
+    out = []
+    for line in lines:
+        coords = list(line.coords)
+        for (ax, az), (bx, bz) in zip(coords, coords[1:], strict=False):
+            if math.hypot(bx - ax, bz - az) >= _MIN_OPENING:
+                out.append(((round(ax, 4), round(az, 4)), (round(bx, 4), round(bz, 4))))
+    return out

@@ -1,0 +1,83 @@
+"""Write the reworded built-in tasks of the reader's development set as complete task folders.
+
+`tests/data/reader_dev/rewordings.json` holds each rewording once: its new task id, the built-in
+task it rewords, its register, the new description and, for every constraint fact of the
+original, the words of the new description that assert it (`says` must quote the description,
+docs/task-format.md). A task's policies must lie inside its own folder (`benchmark.policy_path`),
+so each folder gets a copy of the original's four BTs; `tests/test_reader_dev_data.py` checks that
+every copy still equals its original and that nothing but `id`, `description` and the constraints'
+`says` differs.
+
+    python tools/build_reworded_tasks.py            # (re)write tests/data/reader_dev/tasks_reworded/
+    python tools/build_reworded_tasks.py --mutants  # also ship killable_mutants.json (minutes)
+
+Folders of ids no longer listed are removed, so the directory always equals the JSON.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+from typing import Any
+
+ROOT = Path(__file__).resolve().parents[1]
+DEV = ROOT / "tests" / "data" / "reader_dev"
+SOURCE = DEV / "rewordings.json"
+OUT = DEV / "tasks_reworded"
+BUILTIN = ROOT / "benchmark_data" / "tasks"
+
+
+def reworded_task(entry: dict[str, Any]) -> dict[str, Any]:
+    """The original task.json with the rewording's id, description and constraint quotes."""
+    original = json.loads((BUILTIN / entry["original"] / "task.json").read_text(encoding="utf-8"))
+    says: dict[str, str] = entry["says"]
+    facts = [c["fact"] for c in original.get("constraints", [])]
+    if set(says) != set(facts):
+        sys.exit(f"{entry['id']}: `says` must quote exactly the original's constraint facts; "
+                 f"missing {sorted(set(facts) - set(says))}, unknown {sorted(set(says) - set(facts))}")
+    task = dict(original)
+    task["id"] = entry["id"]
+    task["description"] = entry["description"]
+    if facts:
+        task["constraints"] = [{**c, "says": says[c["fact"]]} for c in original["constraints"]]
+    return task
+
+
+def build(entries: list[dict[str, Any]]) -> list[str]:
+    """Write every folder; returns the ids written."""
+    ids = [e["id"] for e in entries]
+    if len(set(ids)) != len(ids):
+        sys.exit("rewording ids must be unique")
+    OUT.mkdir(parents=True, exist_ok=True)
+    for stale in sorted(p for p in OUT.iterdir() if p.is_dir() and p.name not in ids):
+        shutil.rmtree(stale)
+    for entry in entries:
+        folder = OUT / entry["id"]
+        folder.mkdir(exist_ok=True)
+        text = json.dumps(reworded_task(entry), indent=2, ensure_ascii=False) + "\n"
+        (folder / "task.json").write_text(text, encoding="utf-8")
+        if (folder / "policies").exists():
+            shutil.rmtree(folder / "policies")
+        shutil.copytree(BUILTIN / entry["original"] / "policies", folder / "policies")
+    return ids
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--mutants", action="store_true",
+                    help="also write each folder's killable_mutants.json (`tasks mutants --write`)")
+    args = ap.parse_args()
+    entries: list[dict[str, Any]] = json.loads(SOURCE.read_text(encoding="utf-8"))["rewordings"]
+    ids = build(entries)
+    print(f"wrote {len(ids)} task folders under {OUT.relative_to(ROOT)}")
+    if args.mutants:
+        subprocess.run([sys.executable, "-m", "logicenveval", "tasks", "mutants", "--write",
+                        "--tasks-dir", str(OUT)], check=True)
+
+
+if __name__ == "__main__":
+    main()
