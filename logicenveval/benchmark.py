@@ -7,7 +7,7 @@ from pathlib import Path
 
 from pydantic import ValidationError
 
-from logicenveval.errors import ConditionSyntaxError, TaskFormatError
+from logicenveval.errors import ConditionSyntaxError, TaskFormatError, did_you_mean
 from logicenveval.limits import limit, parse_json, raise_hint, read_text
 from logicenveval.model.task import Task
 from logicenveval.validation import first_error
@@ -86,7 +86,8 @@ def load_task(task_id: str, directory: str | Path | None = None) -> Task:
                               "list them with `python -m logicenveval tasks list`")
     path = d / task_id / "task.json"
     if not path.exists():
-        raise TaskFormatError(f"unknown task {task_id!r}", file=str(d),
+        raise TaskFormatError(f"unknown task {task_id!r}{did_you_mean(task_id, task_ids(d))}",
+                              file=str(d),
                               hint="list tasks with `python -m logicenveval tasks list`")
     return load_task_file(path)
 

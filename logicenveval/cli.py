@@ -76,6 +76,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     start_early(given)  # `run`'s workers start importing while the parser below is built
     parser = build_parser()
     args = parser.parse_args(given)
+    args.argv = given  # for messages that quote the exact command to type next
     if getattr(args, "debug", False):  # every exception with its traceback, for a debugger
         sys.excepthook = _redacted_traceback
         try:

@@ -7,6 +7,8 @@ results, never exceptions.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
+
 #: characters of each part of a message (what, file, field, fix): an input echoed into a
 #: message (a 100 kB task id, path or option value) is cut in its middle, so an error stays a
 #: line a user can read, and a log line stays small
@@ -20,6 +22,17 @@ def clip(text: str, limit: int) -> str:
     keep = max(limit - len(f" ...[{len(text)} characters cut]... "), 2)
     mark = f" ...[{len(text) - keep} characters cut]... "
     return text[: keep // 2 + keep % 2] + mark + text[len(text) - keep // 2:]
+
+
+def did_you_mean(word: str, choices: Iterable[str]) -> str:
+    """` (did you mean 'x'?)` for a misspelt name, the closest of `choices`; "" when none is
+    close (difflib's ratio of at least 0.6, as `get_close_matches` judges)."""
+    import difflib
+
+    close = difflib.get_close_matches(word, list(choices), n=2)
+    if not close:
+        return ""
+    return " (did you mean " + " or ".join(repr(c) for c in close) + "?)"
 
 
 class LogicEnvEvalError(Exception):

@@ -284,6 +284,8 @@ def test_cot_reply_that_never_validates_fails_every_draft_it_could_write() -> No
 
 
 def test_ifg_intents_missing_from_the_reply_are_failed_attempts(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Under request protocol 4 one reply gives every intent (protocol 5 asks each on its own:
+    tests/test_ifg_intents.py)."""
     import numpy as np
 
     import logicenveval.baselines.ifg as ifg
@@ -298,7 +300,7 @@ def test_ifg_intents_missing_from_the_reply_are_failed_attempts(monkeypatch: pyt
         return reply.model_copy(update={"trajectories": reply.trajectories[:2]}) if kind == "ifg_intents" else reply
 
     monkeypatch.setattr(ifg, "ask", fewer)
-    ctx = GenerationContext(model=make_model("offline", "", no_cache=True), catalog=load_catalog(),
+    ctx = GenerationContext(model=make_model("offline", "protocol=4", no_cache=True), catalog=load_catalog(),
                             rng=np.random.default_rng(0))
     result = ifg.IFG(k=4).generate(load_task(TASK).brief(), ctx)
     assert [a.built for a in result.attempts] == [True, True, False, False]

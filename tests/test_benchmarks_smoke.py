@@ -36,11 +36,14 @@ QUICK: dict[tuple[str, ...], str] = {
     ("trajectory_cover.py", "--tasks"): "exhaustive/mtsa =",
     ("trajectory_cover.py", "--forbidden", "0.15"): "proven=2/2",
     ("trajectory_cover.py", "--plans"): "budget_hit=0",
+    ("role_binding.py",): "indistinct: refused",
 }
 SLOW: dict[tuple[str, ...], str] = {
     ("llm_validity.py",): "metrics_reproduced=true",
     ("robustness.py",): "rises_beyond_interval=0",
     ("run_scaling.py",): "speedup_2_workers=",
+    ("cluster_scaling.py",): "cluster_speedup_2_nodes=",
+    ("reader_generalisation.py",): "reader_generalisation ",
 }
 
 

@@ -74,7 +74,7 @@ def test_failed_attempts_are_counted_per_cause(plug: Path, tmp_path: Path) -> No
 
 def test_debug_reraises_in_process_and_recomputes_the_failed_unit(
         plug: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    assert main(_args(tmp_path)) == 1  # crash built nothing
+    assert main(_args(tmp_path)) == 3  # crash raised
     out = capsys.readouterr().out
     assert "crash: 3 × generation: unit (internal): internal error: RuntimeError: boom" in out
     with pytest.raises(RuntimeError, match="boom"):  # what a post-mortem debugger stops at
@@ -84,7 +84,7 @@ def test_debug_reraises_in_process_and_recomputes_the_failed_unit(
 def test_debug_prints_stored_tracebacks(plug: Path, tmp_path: Path,
                                         capsys: pytest.CaptureFixture[str]) -> None:
     plug.write_text(PLUGIN.replace("        _helper()", "        raise SystemExit(3)"), encoding="utf-8")
-    assert main([*_args(tmp_path), "--debug"]) == 1
+    assert main([*_args(tmp_path), "--debug"]) == 3
     err = capsys.readouterr().err
     assert f"--- crash on {TASK}: the generator called sys.exit(3)" in err
     assert f'File "{plug}", line 11, in generate' in err

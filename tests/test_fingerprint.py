@@ -141,3 +141,61 @@ def test_evaluate_rejudges_units_when_the_harness_or_a_task_changed(
     assert (again.computed, list(again.stale.values())) == (1, [1])
     monkeypatch.setattr(fingerprint, "harness_fingerprint", lambda: "9.9.9 src:bumped")
     assert evaluate_envs(config).computed == 2
+
+
+HELPED = '''
+from fp_helper import N_ENVS
+from logicenveval.baselines.cot import CoT
+
+
+class Helped(CoT):
+    def __init__(self) -> None:
+        super().__init__(name="helped", max_environments=N_ENVS)
+'''
+
+
+def test_a_sibling_helper_module_is_part_of_a_one_file_plugin(world: Path) -> None:
+    """Issue 48: editing `helper.py` beside a one-file plug-in recomputes its units."""
+    plugs = world / "plugs"
+    (plugs / "fp_helped.py").write_text(HELPED, encoding="utf-8")
+    (plugs / "fp_helper.py").write_text("N_ENVS = 1\n", encoding="utf-8")
+    (plugs / "fp_unused.py").write_text("X = 1\n", encoding="utf-8")
+    ref = resolve_generator("fp_helped:Helped")
+    before = fingerprint.generator_fingerprint(ref)
+    (plugs / "fp_unused.py").write_text("X = 2\n", encoding="utf-8")  # not imported: no change
+    assert fingerprint.generator_fingerprint(ref) == before
+    (plugs / "fp_helper.py").write_text("N_ENVS = 2\n", encoding="utf-8")
+    assert fingerprint.generator_fingerprint(ref) != before
+
+
+def test_imports_are_followed_transitively_and_lazily_but_not_into_the_environment(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from logicenveval.generators.plugin_code import own_code
+
+    (tmp_path / "pk").mkdir()
+    (tmp_path / "pk" / "__init__.py").write_text("from .sub import f\n", encoding="utf-8")
+    (tmp_path / "pk" / "sub.py").write_text("import json\nimport numpy\n", encoding="utf-8")
+    (tmp_path / "fp_top.py").write_text(
+        "import logicenveval.baselines.cot\n\ndef g():\n    from fp_mid import x\n", encoding="utf-8")
+    (tmp_path / "fp_mid.py").write_text("from pk import sub\nfrom . import nothing\n", encoding="utf-8")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    found = own_code("fp_top")
+    assert found is not None
+    root, files = found
+    assert root == tmp_path.resolve()
+    assert sorted(p.relative_to(root).as_posix() for p in files) == [
+        "fp_mid.py", "fp_top.py", "pk/__init__.py", "pk/sub.py"]
+    assert "fp_mid" not in sys.modules and "pk" not in sys.modules  # nothing was imported
+
+
+def test_a_dot_named_policy_file_is_part_of_the_task(world: Path) -> None:
+    """Issue 48: a task naming `policies/.correct.xml` recomputes when that file changes."""
+    folder = world / "tasks" / TASKS[0]
+    (folder / "policies" / "correct.xml").rename(folder / "policies" / ".correct.xml")
+    task_json = folder / "task.json"
+    task_json.write_text(task_json.read_text(encoding="utf-8").replace(
+        '"policies/correct.xml"', '"policies/.correct.xml"'), encoding="utf-8")
+    before = fingerprint.task_fingerprint(TASKS[0], world / "tasks")
+    policy = folder / "policies" / ".correct.xml"
+    policy.write_text(policy.read_text(encoding="utf-8") + "\n", encoding="utf-8")
+    assert fingerprint.task_fingerprint(TASKS[0], world / "tasks") != before

@@ -203,7 +203,7 @@ class AlwaysFails:
         raise RuntimeError("the flux capacitor is unplugged")
 
 
-def test_generator_that_always_raises_exits_1_and_names_the_reason(
+def test_generator_that_always_raises_exits_3_and_names_the_reason(
         tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch) -> None:
     from logicenveval.generators.base import register
 
@@ -212,14 +212,15 @@ def test_generator_that_always_raises_exits_1_and_names_the_reason(
     code, out, err = cli(capsys, "run", "--generators", "cot,always_fails", "--tasks",
                          f"{TASK},hallway_entry_tidy", "--executor", "inprocess",
                          "--output", str(tmp_path), "--quiet")
-    assert code == 1
+    assert code == 3  # it raised: a bug (docs/security.md), besides measuring nothing
     assert "always_fails: 2 of 2 unit(s) failed" in err
+    assert f"at {__file__}:203 in generate" in err and "always_fails: raised in 2 of 2 unit(s)" in err
     assert "the flux capacitor is unplugged" in err
     assert "cot" not in err.split("not measured'):")[1]  # the healthy generator is not blamed
     assert re.search(r"^cot +\d", out, re.M)  # and still reported
 
 
-def test_seeds_run_that_always_fails_exits_1(
+def test_seeds_run_that_always_fails_exits_3(
         tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch) -> None:
     from logicenveval.generators.base import register
 
@@ -227,7 +228,7 @@ def test_seeds_run_that_always_fails_exits_1(
     register("always_fails", f"{__name__}:AlwaysFails")
     code, _, err = cli(capsys, "run", "--generators", "always_fails", "--tasks", TASK, "--seeds", "0,1",
                        "--executor", "inprocess", "--output", str(tmp_path), "--quiet")
-    assert code == 1
+    assert code == 3
     assert "always_fails: 2 of 2 unit(s) failed" in err and "the flux capacitor is unplugged" in err
 
 

@@ -276,7 +276,9 @@ def test_run_ends_with_the_reasons(tmp_path: Path, capsys: pytest.CaptureFixture
                  "--executor", "inprocess", "--quiet", "--output", str(tmp_path)]) == 0
     out = capsys.readouterr().out
     why = out[out.index("Why (count × reason; examples in leaderboard.html)"):]
+    # in the words of its first example, wrapped, never shortened to its shape (issue 48)
     assert "cot: " in why and "door_not_on_wall" in why
+    assert "…" not in why
     # the terminal summary fits 100 columns (issue 36); a long path gets a line of its own, whole
     assert max(len(line) for line in out.splitlines() if not line.startswith(str(tmp_path))) <= 100
     page = (_only_dir(tmp_path) / "leaderboard.html").read_text(encoding="utf-8")

@@ -144,7 +144,7 @@ def _mutants(args: argparse.Namespace) -> int:
     from rich.table import Table
 
     from logicenveval.benchmark import task_ids
-    from logicenveval.errors import ConfigError
+    from logicenveval.errors import ConfigError, did_you_mean
     from logicenveval.faults.classify import classify_tasks
     from logicenveval.sim.worlds import DEFAULT_WORLDS
 
@@ -152,7 +152,8 @@ def _mutants(args: argparse.Namespace) -> int:
     ids = list(args.tasks) or known
     unknown = [t for t in ids if t not in known]
     if unknown:
-        raise ConfigError(f"unknown task id(s) {unknown}", field="--tasks",
+        raise ConfigError(f"unknown task id(s) {unknown}"
+                          + "".join(did_you_mean(t, known) for t in unknown[:5]), field="--tasks",
                           hint=f"use all or some of: {', '.join(known)}")
     reports = classify_tasks(ids, args.tasks_dir, worlds=args.worlds or DEFAULT_WORLDS)
     if args.write:

@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from logicenveval.errors import ConfigError
+from logicenveval.errors import ConfigError, did_you_mean
 from logicenveval.generators.base import (
     Overdue,
     canonical_name,
@@ -116,7 +116,8 @@ def resolve_generator(spec: str, args: dict[str, Any] | None = None, *,
         from logicenveval.generators.base import registered
 
         raise ConfigError(
-            f"unknown generator {spec!r}", field="--generators",
+            f"unknown generator {spec!r}{did_you_mean(spec, [*registered(), *eps])}",
+            field="--generators",
             hint="use a built-in name (" + ", ".join(registered()) + "), an installed plug-in ("
             + (", ".join(sorted(eps)) or f"none installed in group {ENTRY_POINT_GROUP}")
             + "), or PKG.MODULE:ATTR (docs/own-generator.md)")

@@ -459,11 +459,14 @@ def managed_path(spec: str) -> str | None:
 
 
 @contextlib.contextmanager
-def serving(spec: str, model_args: str, *, log_path: Path | None = None) -> Iterator[str]:
+def serving(spec: str, model_args: str, *, log_path: Path | None = None,
+            start: bool = True) -> Iterator[str]:
     """For a run: start the server of a `llamacpp:` spec (also under `noisy:`) once, yield the
     model arguments the units must use (its `base_url` and the model file's hash), stop it when
     the run ends, however it ends. The whole spec is checked first (every model argument, by
-    building the model against a placeholder URL), so a typo costs no server start."""
+    building the model against a placeholder URL), so a typo costs no server start. `start`
+    False: check and hash only (a Ray cluster whose nodes serve the model themselves:
+    runner.cluster); the arguments yielded then have no `base_url`."""
     from logicenveval.llm.registry import make_model, parse_model_args
 
     path = managed_path(spec)
@@ -475,6 +478,9 @@ def serving(spec: str, model_args: str, *, log_path: Path | None = None) -> Iter
     extra = f"model_sha256={model_digest(settings.model)}"
     check = ",".join(filter(None, [model_args.strip(), extra, "base_url=http://127.0.0.1:9/v1"]))
     make_model(spec, check, no_cache=True)  # raises the ConfigError of a bad argument
+    if not start:
+        yield ",".join(filter(None, [model_args.strip(), extra]))
+        return
     if log_path is not None:
         log_path.parent.mkdir(parents=True, exist_ok=True)
     server = LlamaServer(settings, log_path=log_path)

@@ -6,6 +6,7 @@ dependency only matters for the provider that needs it.
 
 from __future__ import annotations
 
+import difflib
 import importlib
 from pathlib import Path
 from typing import Any
@@ -115,6 +116,17 @@ def _protocol(value: Any) -> int:
     return int(value)
 
 
+def _model_guess(spec: str, provider: str, name: str) -> str:
+    """` (did you mean ...?)` for a misspelt model: a provider close to the one written
+    (`ofline`, `openia:gpt-4o`), else, for a bare name like `gpt4`, the same name served by an
+    OpenAI-compatible endpoint (`openai:gpt4`)."""
+    names = ["offline", "oracle", "openai", "llamacpp", "replay", "noisy"]
+    close = difflib.get_close_matches(provider, names, n=1)
+    if close:
+        return f" (did you mean {close[0] + (':' + name if name else '')!r}?)"
+    return "" if name or not spec else f" (did you mean 'openai:{spec}'?)"
+
+
 def make_model(
     spec: str,
     args: str | dict[str, Any] | None = None,
@@ -165,7 +177,8 @@ def make_model(
             default = Path(run_dir).parent / "llm_cache.sqlite" if run_dir else Path("llm_cache.sqlite")
             model = CachedModel(model, ReplyCache(cache_path or default), provider, stats)
     else:
-        raise ConfigError(f"unknown model {spec!r}", field="--model",
+        raise ConfigError(f"unknown model {spec!r}{_model_guess(spec, provider, name)}",
+                          field="--model",
                           hint="use offline, oracle, openai:<model>, llamacpp:<model.gguf>, "
                           "replay:<cache.sqlite> or noisy:<model>")
     model.run_dir = Path(run_dir) if run_dir else None

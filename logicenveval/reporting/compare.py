@@ -18,6 +18,8 @@ refused unless the comparison is restricted to the unchanged ones.
 
 from __future__ import annotations
 
+import hashlib
+import json
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -134,10 +136,58 @@ class Pair:
     deltas: list[Delta]
     #: the interval is over this many tasks (< 2: n/a)
     n_tasks: int = 0
+    #: (task, side that built nothing there: "A" or "B"): paired tasks left out of ST and
+    #: Redundancy, which exist only where environments do (`uncertainty.paired_cells`)
+    left_out: tuple[tuple[str, str], ...] = ()
+    #: (A, B) ST (ms) as each side's own leaderboard averages it, over its own tasks
+    own_st: tuple[float | None, float | None] = (None, None)
 
     @property
     def title(self) -> str:
         return self.gen_a if self.gen_a == self.gen_b else f"{self.gen_a} (A) → {self.gen_b} (B)"
+
+    @property
+    def left_out_text(self) -> str:
+        """Which tasks ST and Redundancy leave out and why the figures differ from the
+        leaderboards' ("" when none is left out)."""
+        if not self.left_out:
+            return ""
+        named = ", ".join(f"{t} ({side} built nothing)" for t, side in self.left_out[:MAX_NAMED])
+        more = len(self.left_out) - MAX_NAMED
+        text = (f"note: {self.title}: ST (ms), ST (ticks) and Redundancy are paired over the "
+                f"{self.n_tasks - len(self.left_out)} task(s) where both sides built an environment; "
+                f"left out: {named}" + (f", +{more} more" if more > 0 else ""))
+        st = next((d for d in self.deltas if d.path == ("st_ms",)), None)
+        own_a, own_b = self.own_st
+        if st is not None and own_a is not None and own_b is not None:
+            text += (f". Each leaderboard averages its own tasks: ST (ms) A {own_a:.2f} and B "
+                     f"{own_b:.2f} there, {_fmt(st.before)} and {_fmt(st.after)} here")
+        return text
+
+
+#: tasks named in a note before "+N more"
+MAX_NAMED = 5
+
+
+def _fmt(value: float | None) -> str:
+    return "–" if value is None else f"{value:.2f}"
+
+
+#: what a side shows for a fingerprint its results.json does not record (an older harness)
+UNRECORDED = "not recorded"
+
+
+@dataclass(frozen=True)
+class Fingerprint:
+    """One input of both sides (results.json `inputs`, runner.placement): what made A and B."""
+
+    what: str  # harness, catalog, "code of <generator>", "<n> task(s)"
+    a: str
+    b: str
+
+    @property
+    def same(self) -> bool:
+        return self.a == self.b != UNRECORDED
 
 
 @dataclass(frozen=True)
@@ -149,6 +199,27 @@ class Comparison:
     new: list[str] = field(default_factory=list)
     allow_missing: bool = False
     tolerance: float = 0.02
+    #: the fingerprints of both sides' inputs (harness, catalog, each pair's code, the tasks)
+    fingerprints: list[Fingerprint] = field(default_factory=list)
+    #: the two sides' configurations (results.json `config`) are the same
+    same_config: bool = False
+
+    @property
+    def same_inputs(self) -> bool:
+        """Every fingerprint is recorded on both sides and equal: the same code, tasks, catalog."""
+        return bool(self.fingerprints) and all(f.same for f in self.fingerprints)
+
+    @property
+    def warning(self) -> str:
+        """Why the comparison may compare nothing ("" when the inputs differ)."""
+        if not self.same_inputs:
+            return ""
+        if self.same_config:
+            return ("warning: A and B have the same configuration and the same fingerprints: they "
+                    "are one computation and can differ only in timings (did a re-run with "
+                    "--replace overwrite the run meant as A? docs/runner.md, 'Finished runs')")
+        return ("warning: A and B have the same fingerprints (harness, generator code, tasks, "
+                "catalog): any difference comes from their configurations, not from the code")
 
     @property
     def deltas(self) -> list[Delta]:
@@ -175,11 +246,16 @@ class Comparison:
         return {
             "tasks": self.tasks, "tolerance": self.tolerance, "allow_missing": self.allow_missing,
             "pairs": [{"a": p.gen_a, "b": p.gen_b, "n_tasks": p.n_tasks,
-                       "metrics": [d.to_json() for d in p.deltas]} for p in self.pairs],
+                       "metrics": [d.to_json() for d in p.deltas],
+                       "left_out_of_st": [{"task": t, "built_nothing": side}
+                                          for t, side in p.left_out]} for p in self.pairs],
             "missing": [{"generator": m.generator, "task": m.task or None, "why": m.why} for m in self.missing],
             "new_in_b": self.new,
             "regressions": len(self.regressions), "improvements": len(self.improvements),
             "inconclusive": len(self.inconclusive), "failed": self.failed,
+            "fingerprints": [{"input": f.what, "a": f.a, "b": f.b, "same": f.same}
+                             for f in self.fingerprints],
+            "same_inputs": self.same_inputs, "warning": self.warning or None,
         }
 
 
@@ -243,7 +319,48 @@ def compare_results(
                     for t in tasks if t in ta and t not in tb]
         shared = [t for t in tasks if t in ta and t in tb]
         out.append(_pair(x, y, va, vb, ca, cb, shared, tolerance, judge_timing, n_bootstrap))
-    return Comparison(tasks, out, missing, new, allow_missing, tolerance)
+    return Comparison(tasks, out, missing, new, allow_missing, tolerance,
+                      fingerprints(a, b, pairs, tasks), a.get("config") == b.get("config"))
+
+
+def fingerprints(a: dict[str, Any], b: dict[str, Any], pairs: list[tuple[str, str]],
+                 tasks: list[str]) -> list[Fingerprint]:
+    """The fingerprints of what made each side: harness, catalog, each compared generator's
+    code, and one digest over the compared tasks' files (`UNRECORDED` where a side has none)."""
+    ia, ib = _inputs(a), _inputs(b)
+    out = [Fingerprint(key, _short(ia.get(key)), _short(ib.get(key))) for key in ("harness", "catalog")]
+    for x, y in pairs:
+        label = f"code of {x}" if x == y else f"code of {x} (A) / {y} (B)"
+        out.append(Fingerprint(label, _short(_get(ia, "generators", x)),
+                               _short(_get(ib, "generators", y))))
+    out.append(Fingerprint(f"{len(tasks)} task(s)", _tasks_digest(ia, tasks),
+                           _tasks_digest(ib, tasks)))
+    return out
+
+
+def _inputs(results: dict[str, Any]) -> dict[str, Any]:
+    inputs = results.get("inputs")
+    return inputs if isinstance(inputs, dict) else {}
+
+
+def _get(inputs: dict[str, Any], key: str, name: str) -> Any:
+    group = inputs.get(key)
+    return group.get(name) if isinstance(group, dict) else None
+
+
+def _short(value: Any) -> str:
+    """A fingerprint as a person reads it (digests cut to 8 hex digits), or `UNRECORDED`."""
+    if not isinstance(value, str):
+        return UNRECORDED
+    return " ".join(w[:8] if len(w) > 8 and all(c in "0123456789abcdef" for c in w) else
+                    (w[:12] if w.startswith("src:") else w) for w in value.split())
+
+
+def _tasks_digest(inputs: dict[str, Any], tasks: list[str]) -> str:
+    found = {t: _get(inputs, "tasks", t) for t in tasks}
+    if not found or any(not isinstance(v, str) for v in found.values()):
+        return UNRECORDED
+    return hashlib.sha256(json.dumps(found, sort_keys=True).encode()).hexdigest()[:8]
 
 
 def _pair(x: str, y: str, va: dict[str, Any], vb: dict[str, Any], ca: dict[tuple[str, int], Any],
@@ -251,7 +368,9 @@ def _pair(x: str, y: str, va: dict[str, Any], vb: dict[str, Any], ca: dict[tuple
           n_bootstrap: int) -> Pair:
     paired: dict[tuple[str, ...], tuple[float, float | None, float | None]] = {}
     point_a = point_b = None
+    left_out: list[tuple[str, str]] = []
     if shared:
+        left_out = _left_out(ca, cb, shared)
         ca = {k: c for k, c in ca.items() if k[0] in set(shared)}
         cb = {k: c for k, c in cb.items() if k[0] in set(shared)}
         ca, cb = paired_cells(ca, cb)  # ST and Redundancy over the tasks both sides have them
@@ -270,4 +389,20 @@ def _pair(x: str, y: str, va: dict[str, Any], vb: dict[str, Any], ca: dict[tuple
         way = direction(path, judge_timing)
         deltas.append(Delta(x, y, header, before, after, verdict(diff, ci, tolerance, way), ci, pct,
                             path, way))
-    return Pair(x, y, shared, deltas, len(shared))
+    return Pair(x, y, shared, deltas, len(shared), tuple(left_out),
+                (metric(va, ("st_ms",)), metric(vb, ("st_ms",))))
+
+
+def _left_out(ca: dict[tuple[str, int], Any], cb: dict[tuple[str, int], Any],
+              shared: list[str]) -> list[tuple[str, str]]:
+    """Paired tasks where one side has no ST (it built no environment there) and the other has:
+    the paired ST and Redundancy leave them out, each side's leaderboard does not."""
+    def lacking(cells: dict[tuple[str, int], Any], task: str) -> bool:
+        return any(c.get("st_ms", 0.0) is None for (t, _), c in cells.items() if t == task)
+
+    out = []
+    for task in shared:
+        a, b = lacking(ca, task), lacking(cb, task)
+        if a != b:
+            out.append((task, "A" if a else "B"))
+    return out

@@ -16,6 +16,7 @@ from logicenveval.reporting.compare import (
     IMPROVED,
     INCONCLUSIVE,
     REGRESSION,
+    UNRECORDED,
     Comparison,
     Delta,
     Pair,
@@ -59,6 +60,18 @@ def pair_table(pair: Pair) -> Table:
     return table
 
 
+def fingerprint_table(c: Comparison) -> Table:
+    """What made each side (results.json `inputs`): the harness, the catalog, each compared
+    generator's code, the compared tasks' files."""
+    table = Table(title="What made A and B (fingerprints)", title_justify="left")
+    for col in ("input", "A", "B", ""):
+        table.add_column(col)
+    for f in c.fingerprints:
+        table.add_row(f.what, f.a, f.b,
+                      "same" if f.same else "" if UNRECORDED in (f.a, f.b) else "differs")
+    return table
+
+
 def comparison_text(c: Comparison, run_a: str, run_b: str) -> str:
     buf = io.StringIO()
     console = Console(file=buf, width=_WIDTH, no_color=True, highlight=False)
@@ -68,9 +81,12 @@ def comparison_text(c: Comparison, run_a: str, run_b: str) -> str:
                   "'inconclusive': the interval holds 0 but reaches beyond the tolerance; "
                   "'not judged': a metric without a direction (Redundancy, ST, Envs).",
                   markup=False)
+    if c.fingerprints:
+        console.print(fingerprint_table(c))
     for pair in c.pairs:
         console.print(pair_table(pair))
-    lines = []
+    lines = [c.warning] if c.warning else []
+    lines += [p.left_out_text for p in c.pairs if p.left_out_text]
     if c.new:
         lines.append("only in B (not compared): " + ", ".join(c.new))
     if c.missing:

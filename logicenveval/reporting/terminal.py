@@ -1,7 +1,9 @@
 """What `run` and `evaluate` print at the end: a summary a person reads at a glance.
 
 At most `WIDTH` columns: per method the paper's headline figures (PhyPR, LogCov, SceVR, FauDR
-averages) and its failed/attempted environments, then one line of its most frequent reasons, then
+averages) and its failed/attempted environments, then its most frequent reasons, each in the words
+of its first example (`role full_bag is ambiguous: 2 objects fit (...)`, not the shape the
+reasons are grouped by, `role … is ambiguous: # objects … (…, …, …)`) and wrapped, never cut, then
 where the full leaderboard is. The full table (every column, intervals) stays in leaderboard.md
 and leaderboard.html; the reasons with examples in leaderboard.html.
 """
@@ -9,6 +11,7 @@ and leaderboard.html; the reasons with examples in leaderboard.html.
 from __future__ import annotations
 
 import io
+import textwrap
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
@@ -17,7 +20,7 @@ from rich.console import Console
 from rich.table import Table
 
 from logicenveval.reporting.tables import NOT_MEASURED, fmt, is_measured, metric, row_label
-from logicenveval.reporting.why import GeneratorReasons
+from logicenveval.reporting.why import GeneratorReasons, Reason, reason_key
 
 #: the terminal summary's width in columns (the whole printout fits it)
 WIDTH = 100
@@ -26,12 +29,8 @@ HEADLINE: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("PhyPR", ("phypr", "avg")), ("LogCov", ("logcov",)), ("SceVR", ("scevr",)),
     ("FauDR", ("faudr", "avg")),
 )
-#: reasons named on a method's line before "…"
+#: reasons listed per method before "+N more"
 MAX_REASONS = 3
-
-
-def _clip(text: str, width: int) -> str:
-    return text if len(text) <= width else text[: width - 1] + "…"
 
 
 def path_lines(label: str, path: Path | str, width: int = WIDTH) -> list[str]:
@@ -41,13 +40,34 @@ def path_lines(label: str, path: Path | str, width: int = WIDTH) -> list[str]:
     return [line] if len(line) <= width else [label, str(path)]
 
 
-def reasons_line(g: GeneratorReasons) -> str:
-    """The method's reasons on one line: counts and shapes, most frequent kinds first."""
+def spelled(r: Reason) -> str:
+    """A reason in words: its shape with the first example's words put back, and where that
+    example is (the shape alone when it has no placeholder, or the example does not fit it)."""
+    shaped = reason_key(r.example)
+    if ("…" not in r.key and "#" not in r.key) or not shaped or not r.key.endswith(shaped):
+        return r.label
+    where = f" ({'first: ' if r.count > 1 else ''}{r.where})" if r.where else ""
+    return f"{r.kind}: {r.key[: len(r.key) - len(shaped)]}{r.example}{where}"
+
+
+def reason_lines(g: GeneratorReasons, width: int = WIDTH) -> list[str]:
+    """The method's most frequent reasons, a line each (wrapped), most frequent kinds first."""
     if g.clean:
-        return f"{g.generator}: {g.n_envs} environment(s), none rejected, failed or implausible"
-    parts = [f"{r.count} × {r.label}" for r in g.reasons[:MAX_REASONS]]
+        return _wrap(f"{g.generator}: {g.n_envs} environment(s), none rejected, failed or "
+                     "implausible", width)
+    lines: list[str] = []
+    for i, r in enumerate(g.reasons[:MAX_REASONS]):
+        lines += _wrap(f"{g.generator}: " * (i == 0) + f"{r.count} × {spelled(r)}", width,
+                       first="  " if i == 0 else "    ")
     more = len(g.reasons) - MAX_REASONS
-    return f"{g.generator}: " + "; ".join(parts) + (f"; +{more} more" if more > 0 else "")
+    if more > 0:
+        lines.append(f"    +{more} more reason(s) (leaderboard.html)")
+    return lines
+
+
+def _wrap(text: str, width: int, first: str = "  ") -> list[str]:
+    return textwrap.wrap(text, width, initial_indent=first, subsequent_indent=first + "    ",
+                         break_long_words=False, break_on_hyphens=False) or [first]
 
 
 def summary_table(results: dict[str, Any]) -> Table:
@@ -75,6 +95,6 @@ def terminal_summary(results: dict[str, Any], why: Sequence[GeneratorReasons], r
     console = Console(file=buf, width=width, no_color=True, highlight=False, emoji=False)
     console.print(summary_table(results))
     lines = ["Why (count × reason; examples in leaderboard.html):"]
-    lines += [_clip("  " + reasons_line(g), width) for g in why]
+    lines += [line for g in why for line in reason_lines(g, width)]
     lines += path_lines("leaderboard:", run_dir / "leaderboard.html", width)
     return "\n".join(line.rstrip() for line in buf.getvalue().splitlines()) + "\n" + "\n".join(lines)

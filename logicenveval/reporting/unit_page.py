@@ -34,11 +34,13 @@ def unit_results(unit: UnitRecord, metrics: TaskMetrics | None, run_id: str, mod
 
 
 def write_unit_page(spec: UnitSpec, record: UnitRecord, metrics: TaskMetrics | None, *,
-                    run_id: str, model: str) -> None:
+                    model: str, run_id: str | None = None) -> None:
     """`details/<generator>/<task>.html` of one committed unit (an `on_commit` hook: bind
-    `run_id` and `model` with `functools.partial`; `committed` calls it with the figures of a
-    measured unit)."""
+    `model` with `functools.partial`; `committed` calls it with the figures of a measured
+    unit). The run id is the run folder's name unless given (a run may be placed in a new
+    version of its folder after the hook was bound: runner.placement)."""
     run_dir = Path(spec.run_dir)
+    run_id = run_id or run_dir.name
     source = Source(run_dir, unit_results(record, metrics, run_id, model),
                     records={(record.generator, record.task_id): record})
     write_details(run_dir, [source], [record.generator], jinja(), shared=False, index=False)

@@ -15,7 +15,7 @@ from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
-from logicenveval.errors import ConfigError
+from logicenveval.errors import ConfigError, did_you_mean
 from logicenveval.model.repeats import repeated
 from logicenveval.redact import is_secret_name, strip_url_credentials
 from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
@@ -49,6 +49,9 @@ class RunConfig(BaseModel):
     layout_solver: Solver = DEFAULT_SOLVER
     workers: int = Field(default=1, ge=1)
     executor: str = "process"
+    #: the Ray cluster of `--executor ray` (`--ray-address`; default `RAY_ADDRESS`, else a local
+    #: instance started for the run); not identity: where units run does not change them
+    ray_address: str | None = None
     output: str = "reports"
     cache: str | None = None
     no_cache: bool = False
@@ -67,6 +70,10 @@ class RunConfig(BaseModel):
     fresh: bool = False
     #: re-raise a generator's exception in this process, for a debugger (`--debug`; not identity)
     debug: bool = False
+    #: let a run of other inputs replace the finished run in its folder (`--replace`; not
+    #: identity): by default it goes to a new folder, or is refused under `--run-id`
+    #: (runner.placement)
+    replace: bool = False
 
     @model_validator(mode="before")
     @classmethod
@@ -201,6 +208,7 @@ def selected_tasks(tasks: Sequence[str], known: Sequence[str]) -> list[str]:
         raise ConfigError(f"task(s) listed twice: {dup}", field="--tasks", hint="list each task once")
     missing = [t for t in tasks if t not in known]
     if missing:
-        raise ConfigError(f"unknown task(s) {missing}", field="--tasks",
+        hints = "".join(did_you_mean(t, known) for t in missing[:5])
+        raise ConfigError(f"unknown task(s) {missing}{hints}", field="--tasks",
                           hint="see `python -m logicenveval tasks list`")
     return list(tasks)

@@ -11,6 +11,7 @@ import ctypes
 import ctypes.util
 import gc
 import importlib
+import logging
 import multiprocessing
 import os
 import signal
@@ -37,6 +38,7 @@ OnCrash = Callable[[Any, str], Any]
 
 class Executor(Protocol):
     name: str
+    workers: int  # units at a time (a Ray executor's: its cluster's CPUs, once started)
 
     def map_unordered(self, fn: Callable[[T], R], items: Sequence[T], *,
                       budget: Budget | None = None, on_crash: OnCrash | None = None,
@@ -381,8 +383,55 @@ def _die_with_parent() -> None:
     threading.Thread(target=watch, daemon=True, name="die-with-parent").start()
 
 
+#: seconds a cluster address may take to accept a TCP connection before it is called unreachable
+#: (Ray itself retries an unreachable address for minutes before it gives up)
+RAY_CONNECT_TIMEOUT = 5.0
+
+
+def ray_address(address: str | None) -> str | None:
+    """The cluster to connect to: `--ray-address`, else `RAY_ADDRESS`, else None (a local Ray
+    instance is started for the run)."""
+    return address or os.environ.get("RAY_ADDRESS") or None
+
+
+def check_reachable(address: str, timeout: float = RAY_CONNECT_TIMEOUT) -> None:
+    """A `host:port` address that accepts no TCP connection within `timeout` is one clear error
+    (`auto` and `ray://` addresses are left to Ray, which reports them at once)."""
+    if address == "auto" or "://" in address:
+        return
+    host, sep, port = address.rpartition(":")
+    if not sep or not host or not port.isdigit():
+        raise ConfigError(f"the Ray address {address!r} is not HOST:PORT", field="--ray-address",
+                          hint=_ADDRESS_HINT)
+    import socket
+
+    try:
+        with socket.create_connection((host.strip("[]"), int(port)), timeout=timeout):
+            pass
+    except (OSError, ValueError) as exc:
+        raise ConfigError(f"no Ray cluster answers at {address} ({exc.__class__.__name__}: "
+                          f"{exc})", field="--ray-address", hint=_ADDRESS_HINT) from None
+
+
+#: seconds a node may take to run the start-up probe (the first use of a run's code on a node
+#: sets up its `runtime_env`: unpacking the shipped project)
+PROBE_TIMEOUT = 600.0
+
+_ADDRESS_HINT = ("start the head node with `ray start --head --port=6379` and pass the address it "
+                 "prints (--ray-address HOST:6379 or RAY_ADDRESS=HOST:6379); a cluster with token "
+                 "authentication also needs its token here (RAY_AUTH_MODE=token and RAY_AUTH_TOKEN, "
+                 "or ~/.ray/auth_token); see docs/cluster.md")
+
+
 class RayExecutor:
-    """Ray tasks, for users with a cluster (`pip install -e '.[ray]'`)."""
+    """Ray tasks on a cluster (`--ray-address`/`RAY_ADDRESS`) or on a local Ray instance started
+    for the run (`pip install -e '.[ray]'`; docs/cluster.md).
+
+    Connected to a cluster it takes its size from the cluster (its CPUs: one unit per CPU at a
+    time) and passes none of the local-only arguments Ray refuses for a cluster (`num_cpus`).
+    Ray workers may run on other machines: the caller ships what they need through `start`
+    (`runtime_env`: the code; `shared`: data every task receives, put in the object store once)
+    and has each task hand its files back (runner.cluster)."""
 
     name = "ray"
 
@@ -392,24 +441,100 @@ class RayExecutor:
         except ModuleNotFoundError:
             raise ConfigError("the ray executor needs Ray", field="--executor",
                               hint="pip install -e '.[ray]'") from None
-        self.workers = workers
-        self.address = address
+        self.workers = max(1, workers)
+        self.address = ray_address(address)
+        self._started_here = False
+        self._shared: list[Any] = []
+        self._setup: Setup | None = None
+
+    def start(self, *, runtime_env: dict[str, Any] | None = None, shared: Any = None,
+              setup: Setup | None = None) -> None:
+        """Connect (or start the local instance) with `runtime_env`, then size the executor from
+        the cluster. `shared` goes to the object store once; a task's worker runs
+        `setup(key, load)` before its item (`load()` fetches `shared`, `key` names it: a worker
+        that already has it need not fetch it again). `setup` is a module-level function."""
+        ray = self._ray
+        if not ray.is_initialized():
+            if self.address is not None:
+                check_reachable(self.address)
+            local = {} if self.address is not None else {"num_cpus": self.workers}
+            try:
+                ray.init(address=self.address, runtime_env=runtime_env or None,
+                         include_dashboard=False, log_to_driver=False,
+                         logging_level=logging.WARNING, **local)
+            except (ConnectionError, RuntimeError, ValueError, TimeoutError) as exc:
+                why = " ".join(f"{str(e).strip().splitlines()[0][:300]}" for e in (exc, exc.__cause__)
+                               if e is not None and str(e).strip()) or type(exc).__name__
+                raise ConfigError(f"cannot connect to the Ray cluster at "
+                                  f"{self.address or 'a new local instance'}: {why}",
+                                  field="--ray-address", hint=_ADDRESS_HINT) from None
+            self._started_here = True
+        cpus = int(ray.cluster_resources().get("CPU", 0))
+        if cpus < 1:
+            self.close()
+            raise ConfigError(f"the Ray cluster at {self.address} has no CPU to run units on",
+                              field="--ray-address",
+                              hint="start its nodes with --num-cpus=N (N >= 1)")
+        self.workers = cpus
+        if shared is not None:
+            self.share(shared, setup)
+
+    def share(self, shared: Any, setup: Setup | None) -> None:
+        """Put `shared` in the object store once for every later task's `setup` (`start`)."""
+        self._shared = [self._ray.put(shared)]  # boxed: Ray leaves it unfetched in a task's args
+        self._setup = setup
+
+    def driver_ip(self) -> str:
+        """This process's address as the cluster sees it."""
+        return str(self._ray.util.get_node_ip_address())
+
+    def nodes(self) -> list[dict[str, Any]]:
+        """The cluster's alive nodes (Ray's `ray.nodes()` entries)."""
+        return [n for n in self._ray.nodes() if n.get("Alive")]
+
+    def on_each_node(self, fn: Callable[[], R]) -> list[tuple[str, R | BaseException]]:
+        """`fn()` once on every alive node (the node's address, its result or what it raised),
+        after the task's `setup`: a start-up probe that every node can run units."""
+        ray = self._ray
+        from ray.util.scheduling_strategies import NodeAffinitySchedulingStrategy
+
+        remote = ray.remote(_ray_probe)
+        refs = {}
+        for node in self.nodes():
+            strategy = NodeAffinitySchedulingStrategy(node_id=node["NodeID"], soft=False)
+            where = f"{node.get('NodeManagerAddress', '?')} (node {node['NodeID'][:8]})"
+            refs[where] = remote.options(
+                num_cpus=0, scheduling_strategy=strategy, max_retries=0).remote(
+                fn, self._setup, self._shared)
+        out: list[tuple[str, R | BaseException]] = []
+        for where, ref in refs.items():
+            try:  # bounded: a node that never runs the probe is reported, not waited on forever
+                out.append((where, ray.get(ref, timeout=PROBE_TIMEOUT)))
+            except Exception as exc:  # the probe's own failure, wrapped by Ray
+                out.append((where, getattr(exc, "cause", None) or exc))
+        return out
+
+    def close(self) -> None:
+        """Disconnect (a local instance started for the run stops with it)."""
+        if self._started_here:
+            self._started_here = False
+            self._ray.shutdown()
 
     def map_unordered(self, fn: Callable[[T], R], items: Sequence[T], *,
                       budget: Budget | None = None, on_crash: OnCrash | None = None,
                       split: Callable[[T], Sequence[T]] | None = None) -> Iterator[tuple[T, R]]:
         """A task whose worker dies gets `on_crash`'s result; one past its budget is cancelled."""
         ray = self._ray
-        started_here = not ray.is_initialized()
-        if started_here:
-            ray.init(address=self.address, num_cpus=None if self.address else self.workers,
-                     include_dashboard=False, log_to_driver=False)
+        own = not ray.is_initialized()  # not started by the caller: started and closed here
+        if own:
+            self.start()
+        pending: dict[Any, tuple[T, float | None]] = {}
         try:
-            remote = ray.remote(fn)
-            pending: dict[Any, tuple[T, float | None]] = {}
+            remote = ray.remote(_ray_call).options(max_retries=0)
             for item in items:
                 limit = budget(item) if budget else None
-                pending[remote.remote(item)] = (item, None if limit is None else time.monotonic() + limit)
+                ref = remote.remote(fn, item, self._setup, self._shared)
+                pending[ref] = (item, None if limit is None else time.monotonic() + limit)
             while pending:
                 deadlines = [d for _, d in pending.values() if d is not None]
                 wait_s = max(0.0, min(deadlines) - time.monotonic()) if deadlines else None
@@ -431,8 +556,35 @@ class RayExecutor:
                         result = _crashed(on_crash, item, f"its Ray worker failed: {type(exc).__name__}")
                     yield item, result
         finally:
-            if started_here:
-                ray.shutdown()
+            for ref in pending:  # stopped early (Ctrl-C, too many failures): drop the rest
+                with contextlib.suppress(Exception):
+                    ray.cancel(ref, force=True)
+            if own:
+                self.close()
+
+
+#: a Ray task's set-up: (key naming the shared data, function fetching it) -> None
+Setup = Callable[[str, Callable[[], Any]], None]
+
+
+def _set_up(setup: Setup | None, shared: list[Any]) -> None:
+    if setup is not None and shared:
+        import ray
+
+        ref = shared[0]
+        setup(ref.hex(), lambda: ray.get(ref))
+
+
+def _ray_call(fn: Callable[[T], R], item: T, setup: Setup | None, shared: list[Any]) -> R:
+    """A Ray task: the caller's `setup` (`RayExecutor.start`), then `fn(item)`."""
+    _set_up(setup, shared)
+    return fn(item)
+
+
+def _ray_probe(fn: Callable[[], R], setup: Setup | None, shared: list[Any]) -> R:
+    """`_ray_call` of a function of no item (`RayExecutor.on_each_node`)."""
+    _set_up(setup, shared)
+    return fn()
 
 
 _EXECUTORS: dict[str, str] = {
@@ -455,10 +607,12 @@ def prestart(name: str, workers: int, preload: Sequence[str] = ()) -> None:
         ProcessExecutor(workers=workers).warm_up()
 
 
-def make_executor(name: str, workers: int) -> Executor:
+def make_executor(name: str, workers: int, *, ray_address: str | None = None) -> Executor:
+    """The executor `name` (`ray_address`: the `ray` executor's cluster, `--ray-address`)."""
     if name not in _EXECUTORS:
         raise ConfigError(f"unknown executor {name!r}", field="--executor",
                           hint="use one of " + ", ".join(sorted(_EXECUTORS)))
     module, attr = _EXECUTORS[name].split(":")
-    executor: Executor = getattr(importlib.import_module(module), attr)(workers=workers)
+    options: dict[str, Any] = {"address": ray_address} if name == "ray" else {}
+    executor: Executor = getattr(importlib.import_module(module), attr)(workers=workers, **options)
     return executor

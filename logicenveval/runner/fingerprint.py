@@ -12,15 +12,15 @@ from __future__ import annotations
 import functools
 import hashlib
 import importlib.metadata
-import importlib.util
+import os
 import re
-import sys
 from collections.abc import Iterable, Mapping
 from pathlib import Path
 
 from logicenveval.benchmark import tasks_dir
 from logicenveval.domain.catalog import DEFAULT_CATALOG
 from logicenveval.generators.base import registry_entry
+from logicenveval.generators.plugin_code import locate, own_code
 from logicenveval.generators.plugins import GeneratorRef
 
 #: the inputs a unit records, in the order the run names them when they changed
@@ -30,10 +30,11 @@ _SKIPPED_DIRS = frozenset({"__pycache__", ".git", ".mypy_cache", ".pytest_cache"
 
 
 def _digest_files(root: Path, files: Iterable[Path]) -> str:
-    """One digest over the files' paths (relative to `root`) and bytes, in sorted order."""
+    """One digest over the files' paths (relative to `root`, `../` for files beside it) and
+    bytes, in sorted order."""
     h = hashlib.sha256()
     for path in sorted(files):
-        h.update(path.relative_to(root).as_posix().encode() + b"\0")
+        h.update(Path(os.path.relpath(path, root)).as_posix().encode() + b"\0")
         try:
             h.update(path.read_bytes())
         except OSError:
@@ -42,15 +43,15 @@ def _digest_files(root: Path, files: Iterable[Path]) -> str:
     return h.hexdigest()[:16]
 
 
-def _tree(root: Path, suffixes: tuple[str, ...] | None = None) -> list[Path]:
-    """Regular files under `root` (caches and hidden files left out), optionally by suffix."""
+def _tree(root: Path, hidden: bool = False) -> list[Path]:
+    """Regular files under `root`, caches left out, and hidden ones too unless `hidden`."""
     out = []
     for path in root.rglob("*"):
         rel = path.relative_to(root).parts
-        if any(p in _SKIPPED_DIRS or p.startswith(".") for p in rel) or not path.is_file():
+        if any(p in _SKIPPED_DIRS or (p.startswith(".") and not hidden) for p in rel) \
+                or not path.is_file():
             continue
-        if suffixes is None or path.suffix in suffixes:
-            out.append(path)
+        out.append(path)
     return out
 
 
@@ -84,25 +85,13 @@ def _module_of(ref: GeneratorRef) -> str | None:
 
 
 def _module_sources(module: str) -> tuple[Path, list[Path]] | None:
-    """(root, Python files) of the code a generator module stands for: a built-in module's own
-    file, a plug-in's whole top-level package (its helpers included) or its single file."""
-    if module == "__main__":
-        main = getattr(sys.modules.get("__main__"), "__file__", None)
-        return (Path(main).resolve().parent, [Path(main).resolve()]) if main else None
-    top = module.split(".")[0] if not module.startswith(_PACKAGE + ".") else module
-    try:
-        spec = importlib.util.find_spec(top)
-    except (ImportError, ValueError):
-        return None
-    if spec is None:
-        return None
-    if spec.submodule_search_locations:
-        root = Path(next(iter(spec.submodule_search_locations))).resolve()
-        return root.parent, _tree(root, (".py",))
-    if spec.origin and Path(spec.origin).is_file():
-        origin = Path(spec.origin).resolve()
-        return origin.parent, [origin]
-    return None
+    """(root, files) of the code a generator module stands for: a built-in module's own file
+    (the harness fingerprint covers the rest), or a plug-in's own code: its package or file and
+    every module it imports from outside the installed environment (`plugin_code.own_code`)."""
+    if module.startswith(_PACKAGE + "."):
+        found = locate(module)
+        return (found[0].parent, [found[0]]) if found is not None else None
+    return own_code(module)
 
 
 def generator_fingerprint(ref: GeneratorRef) -> str:
@@ -123,10 +112,25 @@ def generator_fingerprint(ref: GeneratorRef) -> str:
     return f"{origin} src:{_digest_files(*sources)}"
 
 
+def generator_module(ref: GeneratorRef) -> Path | None:
+    """The plug-in's top-level package folder or single module file (what a Ray cluster ships
+    to its nodes, runner.cluster); None for a built-in, a script's (`__main__`) or a factory
+    of unknown source."""
+    module = _module_of(ref)
+    if module is None or module == "__main__" or module.split(".")[0] == _PACKAGE:
+        return None  # a script's own factories cannot be imported by a worker under that name
+    sources = _module_sources(module)
+    if sources is None or not sources[1]:
+        return None
+    folder = sources[0] / module.split(".")[0]
+    return folder if folder.is_dir() else sources[1][0]
+
+
 def task_fingerprint(task_id: str, directory: str | Path | None) -> str:
-    """A digest of every file of the task's folder (task.json, the policies, anything else)."""
+    """A digest of every file of the task's folder (task.json, the policies, anything else),
+    whatever its name: a task may name a policy `policies/.correct.xml`."""
     root = tasks_dir(directory) / task_id
-    return _digest_files(root, _tree(root))
+    return _digest_files(root, _tree(root, hidden=True))
 
 
 @functools.cache

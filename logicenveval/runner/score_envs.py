@@ -303,6 +303,11 @@ def _score(config: EvaluateConfig, ids: list[str], skipped: list[str], tasks: li
     reused = len(records)
     start = time.perf_counter()
     executor = make_executor(config.executor, config.workers)
+    if getattr(executor, "address", None) is not None:  # its workers write the run folder
+        raise ConfigError("evaluate runs on this machine only: --executor ray with a cluster "
+                          "address (RAY_ADDRESS) is supported by `run`", field="--executor",
+                          hint="unset RAY_ADDRESS (a local Ray instance is started) or use "
+                          "--executor process (docs/cluster.md)")
     for spec, record in executor.map_unordered(score_unit, pending, on_crash=_crashed):
         record = record.model_copy(update={"inputs": inputs[spec.task_id]})
         store.save(record)

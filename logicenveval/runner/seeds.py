@@ -25,9 +25,10 @@ from logicenveval.metrics.compute import null_metrics
 from logicenveval.metrics.records import UnitRecord
 from logicenveval.metrics.uncertainty import ci95, point_metrics
 from logicenveval.runner.config import RunConfig
+from logicenveval.runner.placement import Placement, place
 from logicenveval.runner.results import RESULTS_SCHEMA, row_status
-from logicenveval.runner.run import run
-from logicenveval.runner.store import RunStore
+from logicenveval.runner.run import check_tasks, current_inputs, resolve_generators, run
+from logicenveval.runner.store import RunStore, new_folders, remove_created
 
 
 @dataclass(frozen=True)
@@ -40,6 +41,8 @@ class SeedsOutcome:
     records: tuple[UnitRecord, ...] = ()  # every unit of every seed, seed by seed
     #: why stored units were recomputed -> how many (summed over the seeds; `RunOutcome.stale`)
     stale: dict[str, int] = field(default_factory=dict)
+    #: which finished run of other inputs was kept, and where this run went (`RunOutcome.note`)
+    note: str = ""
 
 
 def seeds_identity(config: RunConfig, seeds: Sequence[int]) -> dict[str, object]:
@@ -63,24 +66,41 @@ def run_seeds(config: RunConfig, seeds: Sequence[int], *, console: Console | Non
     if not seeds or len(set(seeds)) != len(seeds):
         raise ConfigError(f"--seeds needs distinct seeds, got {list(seeds)}", field="--seeds",
                           hint="e.g. --seeds 0,1,2")
-    parent = seeds_run_dir(config, seeds)
+    # a finished multi-seed run of other inputs is kept, as a single run is (runner.placement)
+    inputs = current_inputs(config, resolve_generators(config), check_tasks(config))
+    placement = place(seeds_run_dir(config, seeds), inputs, named=config.run_id is not None,
+                      replace=config.replace)
+    parent = placement.run_dir
+    created = new_folders(parent)
     store = RunStore(parent)
     store.claim(seeds_identity(config, seeds))  # the parent folder is this run's until it ends
     try:
-        return _run_seeds(config, seeds, parent, console, show_progress)
+        return _run_seeds(config, seeds, placement, inputs, console, show_progress)
+    except BaseException:
+        if created:  # refused before any seed ran (exit 2): no empty run folder is left
+            store.unlock()
+            store.discard_if_unused()
+            remove_created(created[1:])
+        raise
     finally:
         store.unlock()
 
 
-def _run_seeds(config: RunConfig, seeds: Sequence[int], parent: Path, console: Console | None,
+def _run_seeds(config: RunConfig, seeds: Sequence[int], placement: Placement,
+               inputs: dict[str, Any], console: Console | None,
                show_progress: bool) -> SeedsOutcome:
+    parent = placement.run_dir
     per_seed = []
     records: list[UnitRecord] = []
     computed = reused = 0
     stale: dict[str, int] = {}
     for seed in seeds:
-        one = config.model_copy(update={"seed": seed, "output": str(parent), "run_id": f"seed{seed}"})
-        outcome = run(one, console=console, show_progress=show_progress)
+        # the parent was placed: its seed runs resume or replace in place, and copy the
+        # unchanged units of the kept finished run's seed runs
+        one = config.model_copy(update={"seed": seed, "output": str(parent), "run_id": f"seed{seed}",
+                                        "replace": True})
+        earlier = placement.previous / f"seed{seed}" if placement.previous is not None else None
+        outcome = run(one, console=console, show_progress=show_progress, previous=earlier)
         per_seed.append(outcome.results)
         records.extend(outcome.records)
         computed += outcome.computed
@@ -88,10 +108,11 @@ def _run_seeds(config: RunConfig, seeds: Sequence[int], parent: Path, console: C
         for why, n in outcome.stale.items():
             stale[why] = stale.get(why, 0) + n
     results = combine_seeds(parent.name, seeds_identity(config, seeds), per_seed)
+    results["inputs"] = inputs
     atomic_write_text(parent / "results.json", json.dumps(results, indent=2, sort_keys=True) + "\n")
     return SeedsOutcome(run_dir=parent, results=results,
                         seed_dirs=[parent / f"seed{s}" for s in seeds], computed=computed,
-                        reused=reused, records=tuple(records), stale=stale)
+                        reused=reused, records=tuple(records), stale=stale, note=placement.note())
 
 
 def combine_seeds(run_id: str, identity: dict[str, object],

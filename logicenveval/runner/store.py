@@ -131,6 +131,20 @@ class RunStore:
                 hint="use another --output/--run-id, or delete the folder to start over",
             )
 
+    def discard_if_unused(self) -> None:
+        """Remove the folder when it holds nothing but this store's own `.lock` and
+        `config.json` (a run refused before its first unit leaves no empty run folder)."""
+        try:
+            entries = {p.name for p in self.run_dir.iterdir()}
+        except OSError:
+            return
+        if entries <= {".lock", "config.json"}:
+            for name in entries:
+                with contextlib.suppress(OSError):
+                    (self.run_dir / name).unlink()
+            with contextlib.suppress(OSError):
+                self.run_dir.rmdir()
+
     def remove_stale_temp_files(self) -> int:
         """Delete temp files left by a writer that was killed before its rename."""
         removed = 0
@@ -208,6 +222,27 @@ class RunStore:
             if hashlib.sha256(data).hexdigest() != digest:
                 return False
         return True
+
+
+def new_folders(path: Path) -> list[Path]:
+    """`path` and the folders above it that do not exist yet, deepest first."""
+    out = []
+    for folder in (path, *path.parents):
+        if folder.exists() or folder.is_symlink():
+            break
+        out.append(folder)
+    return out
+
+
+def remove_created(created: list[Path]) -> None:
+    """Remove what a refused start-up created (`created`: none existed before it), in order:
+    files, and folders only when empty."""
+    for path in created:
+        with contextlib.suppress(OSError):
+            if path.is_dir() and not path.is_symlink():
+                path.rmdir()
+            elif path.exists() or path.is_symlink():
+                path.unlink()
 
 
 def _run_file(path: Path) -> bytes:

@@ -16,7 +16,7 @@ import threading
 import time
 import traceback
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal
 
@@ -558,11 +558,15 @@ def _settled(attempts: list[Attempt], unjudged: list[tuple[str, str, str]]) -> l
 class Committed:
     """A finished unit as its worker hands it back: the record, its figures when it was measured
     (`runner.results.unit_metrics`: results.json needs them, so they are worked out in parallel
-    too) and whether its `on_commit` hook (the report page) ran."""
+    too) and whether its `on_commit` hook (the report page) ran. A unit computed on another
+    machine (`runner.cluster`) also brings the files it wrote (run-folder-relative path ->
+    bytes) and the replies its model added to the reply cache, for the run's process to write."""
 
     record: UnitRecord
     metrics: TaskMetrics | None = None
     paged: bool = False
+    files: dict[str, bytes] = field(default_factory=dict)
+    replies: tuple[tuple[str, str, str, str, str], ...] = ()
 
 
 def run_units(specs: tuple[UnitSpec, ...]) -> list[Committed]:
