@@ -47,8 +47,17 @@ Then round 3 (issue 37) — plug-in loading, `--generator-args`, numeric options
 one line without a traceback within 60 s. Last line:
 `plugins3: cases=<int> failures=<int> worst_seconds=<float>`.
 
+Last, round 4 (issue 50, `round4_cases`): a server dripping its headers (preflight and chat),
+a reply holding a lone surrogate, 400-digit integers in results.json and a house, symbolic links
+inside a run folder on resume, `compare --html` of folders named `javascript:alert(1)` and
+`x#y?z`, one-unit runs with two workers of a plug-in calling `os._exit(0)` or blocking SIGALRM,
+80/300 roles and 200 constraints, a one-word quote, loose booleans, a secret in a `--debug`
+traceback. Each a fresh CLI process with a 120 s deadline. Last line:
+`round4: cases=<int> failures=<int> worst_seconds=<float>`.
+
 `python benchmarks/hostile_inputs.py round3` runs only the third pass's three blocks;
-`--smoke` only the hostile-file block on inputs 1000x smaller (seconds: the smoke test).
+`round4` only the fourth pass's; `--smoke` only the hostile-file block on inputs 1000x smaller
+(seconds: the smoke test).
 """
 
 from __future__ import annotations
@@ -159,6 +168,7 @@ def main() -> None:
     resources()
     io_cases()
     plugin_cases()
+    round4_cases()
 
 
 def refusals(scale: int = 1000) -> None:
@@ -621,8 +631,163 @@ def plugin_cases() -> None:
     print(f"plugins3: cases={len(cases)} failures={failures} worst_seconds={worst:.2f}")
 
 
+# ----- round 4 (issue 50): dripping headers, huge integers, links, isolation, task bounds -----
+
+def _edited_task(root: Path, edit: Callable[[dict[str, Any]], None]) -> Path:
+    """A tasks folder holding clean_living_room with its task.json edited."""
+    shutil.copytree(DEFAULT_TASKS_DIR / TASK, root / TASK)
+    path = root / TASK / "task.json"
+    data = json.loads(path.read_text())
+    edit(data)
+    path.write_text(json.dumps(data))
+    return root
+
+
+def _tree(root: Path) -> list[tuple[str, int]]:
+    return sorted((p.relative_to(root).as_posix(), p.stat().st_size)
+                  for p in root.rglob("*") if p.is_file())
+
+
+def round4_cases() -> None:
+    """Issue 50 classes 1, 5-13: each case a fresh CLI process that must give its documented
+    exit code, no traceback and the words of its message within 120 s, and leave the targets of
+    links and the folders outside the output untouched (`check`)."""
+    sys.path.insert(0, str(TESTS))
+    from hostile_generators4 import SECRET
+    from loopback import Loopback
+
+    reference = Path(__file__).resolve().parents[1] / "reports" / "reference"
+    with tempfile.TemporaryDirectory() as tmp, \
+            Loopback(get_mode="dripheaders", trickle_s=1.0) as drip_get, \
+            Loopback(modes=["dripheaders"], trickle_s=1.0) as drip_post, \
+            Loopback(modes=["surrogate"]) as surrogate:
+        d = Path(tmp)
+        checks: dict[str, Callable[[], bool]] = {}
+
+        def run(*argv: str, out: str = "out") -> list[str]:
+            return ["run", *argv, "--output", str(d / out), "--quiet"]
+
+        # run folders: a reference copy with a 400-digit integer; a plug-in run whose
+        # sub-folders are made symbolic links to folders outside the output
+        huge = d / "huge"
+        shutil.copytree(reference, huge, ignore=shutil.ignore_patterns("envs", "renders", "units"))
+        data = json.loads((huge / "results.json").read_text())
+        data["results"]["cot"]["faudr"]["avg"] = 10**400
+        (huge / "results.json").write_text(json.dumps(data))
+        house = json.loads((TESTS / "fixtures" / "houses" / "kitchen_breakfast.json").read_text())
+        house["objects"][0]["position"]["x"] = 10**400
+        (d / "house.json").write_text(json.dumps(house))
+        plug = ["--generators", "hostile_generators:WithArgs", "--tasks", TASK, "--executor",
+                "inprocess", "--run-id", "r"]
+        subprocess.run([sys.executable, "-m", "logicenveval", *run(*plug, out="base")], cwd=TESTS,
+                       capture_output=True, check=True)
+        for inside in ("units/with-args", "envs/with-args", "details"):
+            name = inside.replace("/", "_")
+            shutil.copytree(d / "base", d / name)
+            target = d / f"target_{name}"
+            target.mkdir()
+            shutil.rmtree(d / name / "r" / inside)
+            (d / name / "r" / inside).symlink_to(target, target_is_directory=True)
+            checks[f"symlinked {inside} on resume"] = lambda t=target: not any(t.iterdir())
+        for name in ("javascript:alert(1)/A", "x#y?z/B"):
+            shutil.copytree(reference, d / name, ignore=shutil.ignore_patterns("envs", "renders"))
+
+        def safe_links() -> bool:
+            html = (d / "page.html").read_text()
+            hrefs = [h.split('"')[0] for h in html.split('href="')[1:]]
+            return bool(hrefs) and all(":" not in h.split("/")[0] and "#" not in h and "?" not in h
+                                       for h in hrefs)
+        checks["compare --html javascript: folder"] = safe_links
+        roles80 = _edited_task(d / "roles80", lambda t: t["roles"].update(
+            {f"extra_{i}": {"category": "book", "optional": True} for i in range(80)}))
+        roles300 = _edited_task(d / "roles300", lambda t: t["roles"].update(
+            {f"extra_{i}": {"category": "book", "optional": True} for i in range(300)}))
+        cons = _edited_task(d / "cons", lambda t: t.update(constraints=t["constraints"][:1] * 200))
+        the = _edited_task(d / "the", lambda t: t["constraints"][0].update(says="the"))
+        yes = _edited_task(d / "yes", lambda t: t["roles"]["toy"].update(optional="yes"))
+        one = _edited_task(d / "one", lambda t: t["roles"]["toy"].update(optional=1))
+
+        def validate(folder: Path) -> list[str]:
+            return ["tasks", "validate", "--tasks-dir", str(folder)]
+
+        #: name -> (argv, expected exit code, words of stderr (stdout for `tasks validate`))
+        cases: dict[str, tuple[list[str], int, str]] = {
+            "preflight, headers drip": (run("--model", "openai:m", "--model-args",
+                                            f"base_url={drip_get.url}", "--generators", "cot",
+                                            "--tasks", TASK), 2, "no complete reply in time"),
+            "chat, headers drip (timeout=5)": (run(
+                "--model", "openai:m", "--model-args", f"base_url={drip_post.url},timeout=5",
+                "--generators", "cot", "--tasks", TASK, "--brief", "description",
+                "--unit-timeout", "20", "--workers", "1"), 1, "request"),
+            "reply with a lone surrogate": (run(
+                "--model", "openai:m", "--model-args", f"base_url={surrogate.url}", "--generators",
+                "cot", "--tasks", TASK, "--brief", "roles", "--workers", "1", out="sur"), 1,
+                "stayed invalid after 3 attempt(s)"),
+            "results.json 400 digits: report": (["report", str(huge)], 2, "out of range"),
+            "results.json 400 digits: compare": (["compare", str(reference), str(huge)], 2,
+                                                 "out of range"),
+            "house 400 digits: import-house": (["import-house", str(d / "house.json"), "--task",
+                                                "kitchen_breakfast_prep", "--out",
+                                                str(d / "env.json")], 2, "out of range"),
+            **{f"symlinked {inside} on resume": (run(*plug, out=inside.replace("/", "_")), 2,
+                                                 "is a symbolic link")
+               for inside in ("units/with-args", "envs/with-args", "details")},
+            "compare --html javascript: folder": (["compare", "javascript:alert(1)/A", "x#y?z/B",
+                                                   "--html", "page.html"], 0, ""),
+            "one unit, workers 2, os._exit(0)": (run(
+                "--generators", "hostile_generators4:ExitsQuietly", "--tasks", TASK, "--workers",
+                "2", out="exit0"), 1, "exited with status 0"),
+            "one unit, workers 2, blocks SIGALRM": (run(
+                "--generators", "hostile_generators:Stubborn", "--tasks", TASK, "--workers", "2",
+                "--unit-timeout", "5", out="alarm"), 1, "ignored its time bound"),
+            "80 optional roles: validate": (validate(roles80), 1, "more than the limit of 48"),
+            "300 roles: one-unit run": (run("--tasks-dir", str(roles300), "--generators", "cot",
+                                            "--tasks", TASK, out="r300"), 2, "limit of 48"),
+            "200 constraints: validate": (validate(cons), 1, "more than the limit of 64"),
+            "says 'the': validate": (validate(the), 1, "content words"),
+            "optional 'yes': validate": (validate(yes), 1, "without quotes"),
+            "optional 1: validate": (validate(one), 1, "without quotes"),
+            "--debug, secret in exception": (run(
+                "--generators", "hostile_generators4:LeaksSecret", "--tasks", TASK, "--debug",
+                out="debug"), 1, "RuntimeError: request failed"),
+        }
+
+        def not_internal() -> bool:  # an invalid reply is a measurement, not a harness bug
+            (results,) = list((d / "sur").glob("*/results.json"))
+            failures = json.loads(results.read_text())["failures"]
+            return bool(failures) and '"internal"' not in json.dumps(failures)
+        checks["reply with a lone surrogate"] = not_internal
+        outside = _tree(d / "base")
+        print(f"\n{'round 4 case (issue 50)':<38} {'seconds':>8} {'exit':>5}  message")
+        failures, worst = 0, 0.0
+        for name, (argv, expected, words) in cases.items():
+            start = time.perf_counter()
+            try:
+                proc = subprocess.run([sys.executable, "-m", "logicenveval", *argv], cwd=TESTS
+                                      if "compare --html" not in name else d, capture_output=True,
+                                      text=True, timeout=120)
+                code, text = proc.returncode, proc.stderr + proc.stdout
+            except subprocess.TimeoutExpired:
+                code, text = -1, "hung (no answer within 120 s)"
+            seconds = time.perf_counter() - start
+            worst = max(worst, seconds)
+            traceback_ok = "Traceback" not in text or name.startswith("--debug")
+            ok = code == expected and traceback_ok and words in text and SECRET not in text \
+                and checks.get(name, lambda: True)()
+            failures += not ok
+            lines = [line for line in proc.stderr.splitlines() if line.strip()] if code != -1 else [text]
+            print(f"{name:<38} {seconds:>8.2f} {code:>5}  {'' if ok else 'FAILED '}"
+                  f"{(lines[-1] if lines else '')[:90]}")
+        if _tree(d / "base") != outside:
+            failures += 1
+            print("FAILED: the run folder the links were copied from changed")
+    print(f"round4: cases={len(cases)} failures={failures} worst_seconds={worst:.2f}")
+
+
 if __name__ == "__main__":
-    if sys.argv[1:] == ["round3"]:  # only the third pass's cases (issue 37)
+    if sys.argv[1:] == ["round4"]:  # only the fourth pass's cases (issue 50)
+        round4_cases()
+    elif sys.argv[1:] == ["round3"]:  # only the third pass's cases (issue 37)
         io_cases()
         llm_cases_round3()
         plugin_cases()

@@ -11,7 +11,9 @@ import contextlib
 import importlib
 import os
 import sys
+import traceback
 from collections.abc import Sequence
+from types import TracebackType
 from typing import NoReturn
 
 from logicenveval.atomic import RESOURCE_ERRNOS
@@ -76,6 +78,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = parser.parse_args(given)
     args.argv = given  # for messages that quote the exact command to type next
     if getattr(args, "debug", False):  # every exception with its traceback, for a debugger
+        sys.excepthook = _redacted_traceback
         try:
             debug_code: int = args._run(args)
         except BrokenPipeError:
@@ -99,6 +102,14 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(f"interrupted;{kept or ' nothing was written partially'}", file=sys.stderr)
         return 130
     return code
+
+
+def _redacted_traceback(kind: type[BaseException], exc: BaseException,
+                        tb: TracebackType | None) -> None:
+    """Print an uncaught exception's traceback as Python does, with secrets masked (`--debug`
+    re-raises a generator's exception, whose message may hold a key: docs/security.md). A
+    debugger (`python -m pdb`) still gets the exception itself: it catches it before this hook."""
+    sys.stderr.write(redact("".join(traceback.format_exception(kind, exc, tb))))
 
 
 #: exit status after the reader of our output went away (`... | head`): the output is

@@ -29,6 +29,9 @@ DEFAULTS: dict[str, tuple[int, str]] = {
     "max_task_bytes": (2_000_000, "size of a task.json"),
     "max_description_chars": (20_000, "characters of a task description"),
     "max_tree_depth": (60, "depth of a task's decision tree"),
+    "max_task_roles": (48, "roles of one task (4x the largest shipped task; each situation's z3 "
+                           "encoding grows with the square of the roles)"),
+    "max_task_constraints": (64, "constraints of one task (8x the largest shipped task)"),
     "max_condition_depth": (50, "parenthesis nesting of a condition"),
     "max_xml_bytes": (2_000_000, "size of a BT XML file"),
     "max_xml_depth": (100, "element nesting of a BT XML file"),
@@ -204,3 +207,6 @@ def parse_json(text: str, *, file: str, error: type[LogicEnvEvalError]) -> Any:
     except RecursionError:
         raise error("JSON nested too deeply to read", file=file,
                     hint="flatten the file; no LogicEnvEval format nests more than a few levels") from None
+    except ValueError:  # an integer of more than 4,300 digits (Python's conversion limit)
+        raise error("JSON holds a number with thousands of digits", file=file,
+                    hint="no LogicEnvEval value is that large: the file was edited or damaged") from None

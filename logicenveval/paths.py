@@ -12,6 +12,7 @@ folder records (render paths, the files a unit vouches for) are checked the same
 
 from __future__ import annotations
 
+import os
 import unicodedata
 from pathlib import Path, PurePosixPath
 
@@ -76,3 +77,29 @@ def safe_relative(rel: object) -> PurePosixPath | None:
     if any(name_problem(part) is not None for part in path.parts):
         return None
     return path
+
+
+def refuse_links(root: Path, *, error: type[LogicEnvEvalError] = ConfigError) -> None:
+    """Refuse a folder that holds a symbolic link anywhere inside (the folder itself may be one).
+
+    A run folder's `units/<generator>`, `envs/<generator>` or `details` made a link (by hand,
+    or by an unpacked archive) would have a resumed run or a report write its units, EnvSpecs
+    and pages into the link's target, outside the output folder; the harness never makes a link
+    there, so one is refused before anything is written. One `lstat` per entry, no link followed.
+    """
+    pending = [root]
+    while pending:
+        folder = pending.pop()
+        try:
+            entries = list(os.scandir(folder))
+        except OSError:
+            continue  # unreadable or gone: the write that needs it reports it
+        for entry in entries:
+            if entry.is_symlink():
+                rel = Path(entry.path).relative_to(root).as_posix()
+                raise error(f"{rel!r} inside the output folder is a symbolic link; nothing is "
+                            "written through it", file=str(root),
+                            hint="replace the link with a real folder (or copy the run folder) "
+                            "and re-run the command")
+            if entry.is_dir(follow_symlinks=False):
+                pending.append(Path(entry.path))

@@ -48,6 +48,8 @@ def _describe(err: Any) -> tuple[str, str]:
         msg = str(err.get("msg", "invalid value"))
         if msg.startswith("Value error, "):
             msg = msg[len("Value error, ") :]
+        if err.get("type") == "bool_type":  # a strict boolean given "yes", "true" or 1
+            msg += f" (got {err.get('input')!r:.40}; write true or false, without quotes)"
     return loc, msg
 
 

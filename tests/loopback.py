@@ -24,8 +24,9 @@ class Loopback:
     trickle (one byte per `trickle_s`), echo (a good reply followed by the request headers), huge
     (a 3 MB reply), badusage (a good reply whose `usage` is malformed, cycling through shapes),
     deep (a reply whose content is JSON nested 100,000 deep), deepbody (the HTTP body itself nested
-    that deep). `get_mode` shapes every GET: ok, drip (one byte per `trickle_s` for a minute),
-    huge (a 50 MB body)."""
+    that deep), dripheaders (the status line, then one header line per `trickle_s` for a minute),
+    surrogate (a reply whose content is a lone surrogate, `"\\ud800"`). `get_mode` shapes every
+    GET: ok, drip (one byte per `trickle_s` for a minute), dripheaders, huge (a 50 MB body)."""
 
     def __init__(self, *, replies: dict[str, str] | None = None, modes: list[str] | None = None,
                  get_status: int = 200, echo: bool = False, hang_s: float = 6.0,
@@ -66,9 +67,21 @@ class Loopback:
                 self.end_headers()
                 self.wfile.write(body)
 
+            def _drip_headers(self) -> None:
+                self.wfile.write(b"HTTP/1.1 200 OK\r\n")
+                self.wfile.flush()
+                for k in range(int(60 / server.trickle_s)):
+                    if server._stop.wait(server.trickle_s):
+                        break
+                    self.wfile.write(f"X-Drip-{k}: {k}\r\n".encode())
+                    self.wfile.flush()
+
             def do_GET(self) -> None:
                 server.gets += 1
                 try:
+                    if server.get_mode == "dripheaders":
+                        self._drip_headers()
+                        return
                     if server.get_mode == "drip":
                         self.send_response(200)
                         self.send_header("Content-Length", "100000")
@@ -115,6 +128,10 @@ class Loopback:
                                 break
                             self.wfile.write(b" ")
                             self.wfile.flush()
+                    elif mode == "dripheaders":
+                        self._drip_headers()
+                    elif mode == "surrogate":
+                        self._send(200, b'{"choices": [{"message": {"content": "\\ud800"}}]}')
                     elif mode == "huge":
                         self._send(200, b'{"choices": [{"message": {"content": "' + b"x" * 3_000_000 + b'"}}]}')
                     elif mode == "deep":

@@ -36,6 +36,7 @@ def test_a_killed_worker_is_named_by_its_signal_every_time() -> None:
     ([-signal.SIGTERM], "killed by SIGTERM"),
     ([0, 3], "exited with status 3"),
     ([None, 0], "its worker process died"),
+    ([0], "exited with status 0 before the unit finished"),  # os._exit(0) in a generator
 ])
 def test_the_cause_is_not_the_pools_own_sigterm(codes: list[int | None], reason: str) -> None:
     assert reason in _death(codes)
@@ -55,8 +56,8 @@ def test_workers_collect_garbage_less_often_than_the_default() -> None:
 
 
 @pytest.mark.parametrize(("executor", "workers", "started"),
-                         [("process", 2, True), ("process", 1, False), ("inprocess", 2, False)])
-def test_prestart_starts_the_fork_server_only_for_several_process_workers(
+                         [("process", 2, True), ("process", 1, True), ("inprocess", 2, False)])
+def test_prestart_starts_the_fork_server_only_for_the_process_executor(
         executor: str, workers: int, started: bool) -> None:
     """`run` starts the fork server before importing its own modules, so both import at once."""
     code = ("import multiprocessing.forkserver as f\n"
@@ -70,7 +71,7 @@ def test_prestart_starts_the_fork_server_only_for_several_process_workers(
 @pytest.mark.parametrize(("argv", "started"), [
     (["run", "--workers", "2"], True),
     (["run", "--workers", "2", "--tasks", "clean_living_room"], True),
-    (["run", "--workers", "1"], False),
+    (["run", "--workers", "1"], True),  # one worker process isolates the units too
     (["run", "--workers", "2", "--executor", "inprocess"], False),
     (["run", "--workers", "2", "--debug"], False),
     (["run", "--workers", "2", "--help"], False),

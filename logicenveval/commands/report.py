@@ -19,10 +19,14 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     dirs = [Path(d) for d in args.run_dirs]
     if len(dirs) == 1 and args.out is None:
+        from logicenveval.errors import RunStoreError
+        from logicenveval.paths import refuse_links
         from logicenveval.reporting.leaderboard import write_leaderboards
         from logicenveval.runner.results import load_results
 
-        pages = write_leaderboards(dirs[0], load_results(dirs[0])).rows
+        results = load_results(dirs[0])
+        refuse_links(dirs[0], error=RunStoreError)  # pages are never written through a link
+        pages = write_leaderboards(dirs[0], results).rows
         print(f"wrote {dirs[0] / 'leaderboard.md'}, {dirs[0] / 'leaderboard.html'} and "
               f"{len(pages)} task page(s) under details/")
         return 0

@@ -21,7 +21,7 @@ PAGE_MODULES = ("logicenveval.reporting.unit_page",)
 
 def start_early(argv: Sequence[str]) -> bool:
     """Start the fork server for a `run ...` command line (`argv` without the program name)
-    that asks for the process executor with several workers; True when one was started."""
+    that asks for the process executor; True when one was started."""
     if list(argv[:1]) != ["run"] or any(a in ("-h", "--help", "--debug") for a in argv):
         return False
     early = argparse.ArgumentParser(add_help=False, allow_abbrev=False)
@@ -32,7 +32,7 @@ def start_early(argv: Sequence[str]) -> bool:
         workers = int(known.workers) if known.workers is not None else (os.cpu_count() or 1)
     except (SystemExit, ValueError):
         return False
-    if known.executor != "process" or workers <= 1:
+    if known.executor != "process" or workers < 1:
         return False
     from logicenveval.runner.executors import prestart
 

@@ -17,7 +17,7 @@ from pydantic import BaseModel, ValidationError
 
 from logicenveval.atomic import atomic_write_text
 from logicenveval.errors import ConfigError, ModelReplyError, ModelTruncatedError
-from logicenveval.llm.base import ChatModel, ChatRequest, ModelStats, split_truncation
+from logicenveval.llm.base import ChatModel, ChatRequest, ModelStats, split_truncation, well_formed
 from logicenveval.llm.jsonextract import JSONExtractionError, extract_json
 from logicenveval.llm.meaning import MEANING_KEY, meaningless
 from logicenveval.llm.vocab import CONTEXT_KEY, Pattern, Vocabulary, specialise
@@ -276,7 +276,7 @@ def ask(
                               temperature=temperature if attempt == 0 else
                               min(2.0, temperature + REASK_TEMPERATURE_STEP * attempt),
                               seed=step_seed, max_tokens=bound)
-        raw, truncated = split_truncation(model.complete(request))
+        raw, truncated = split_truncation(well_formed(model.complete(request)))
         replies.append(raw)
         if stats is not None:
             stats.count(kind, attempts=1, truncated=int(truncated))

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 import threading
 from dataclasses import dataclass, field
 from typing import Any, Protocol, runtime_checkable
@@ -23,6 +24,19 @@ class ChatRequest:
 #: appended by providers to a reply cut at its token bound (`finish_reason: length`); it travels
 #: through the reply cache with the text, so a replayed run sees the same truncation
 TRUNCATION_MARK = "\n<<logicenveval:finish_reason=length>>"
+
+
+#: a UTF-16 surrogate code point: in a Python str it is always unpaired (JSON's "\\ud83d\\ude00"
+#: decodes to one character), so it is no character at all and cannot be encoded as UTF-8
+_SURROGATE = re.compile("[\ud800-\udfff]")
+
+
+def well_formed(reply: str) -> str:
+    """`reply` with every lone surrogate (a server's `"\\ud800"`) replaced by U+FFFD, as a UTF-8
+    decoder replaces a broken byte. Such a reply is still the model's answer, judged like any
+    other (an invalid reply is re-asked and counted), and never an encoding error in the cache,
+    a saved raw reply or a page that would fail the unit as a harness bug."""
+    return _SURROGATE.sub("\ufffd", reply) if _SURROGATE.search(reply) else reply
 
 
 def split_truncation(reply: str) -> tuple[str, bool]:

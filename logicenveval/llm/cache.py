@@ -22,7 +22,7 @@ from pathlib import Path
 from typing import TypeVar
 
 from logicenveval.errors import CacheMissError, ConfigError
-from logicenveval.llm.base import ChatModel, ChatRequest, ModelStats
+from logicenveval.llm.base import ChatModel, ChatRequest, ModelStats, well_formed
 
 _SCHEMA = """
 CREATE TABLE IF NOT EXISTS replies (
@@ -197,7 +197,7 @@ class CachedModel:
             self.stats.add(cache_hits=1)
             return hit
         self.stats.add(cache_misses=1)
-        reply = self.inner.complete(request)
+        reply = well_formed(self.inner.complete(request))
         self.cache.put(key, self.provider, self.cache_name, request.kind, reply)
         return reply
 

@@ -315,7 +315,9 @@ class LlamaServer:
         _RUNNING.add(self)
         deadline = time.monotonic() + self.settings.startup_timeout
         root = f"http://127.0.0.1:{self.port}"
-        with httpx.Client() as client:
+        from logicenveval.llm.deadline import client as deadline_client
+
+        with deadline_client() as client:  # a probe ends within its bound (`bounded_get`)
             while time.monotonic() < deadline:
                 code = self.process.poll() if self.process is not None else -1
                 if code is not None:

@@ -21,7 +21,9 @@ import numpy as np
 
 from logicenveval.errors import ConfigError, ModelConnectionError, UnitBudgetError
 from logicenveval.limits import limit, raise_hint
-from logicenveval.llm.base import TRUNCATION_MARK, ChatRequest, ModelStats
+from logicenveval.llm.base import TRUNCATION_MARK, ChatRequest, ModelStats, well_formed
+from logicenveval.llm.deadline import client as deadline_client
+from logicenveval.llm.deadline import deadline as overall_deadline
 from logicenveval.redact import redact, register_secret, strip_url_credentials
 
 log = logging.getLogger(__name__)
@@ -96,7 +98,9 @@ def bounded_get(client: httpx.Client, url: str, *, headers: dict[str, str] | Non
                 seconds: float | None = None, cap: int = PROBE_BYTES) -> tuple[int, bytes]:
     """GET `url`: its status and at most `cap` bytes of its body, all within `seconds` in total
     (a server dripping one byte a second, or sending 400 MB, cannot hold or flood the caller).
-    Raises httpx.TimeoutException when the time runs out, ValueError when the body is larger."""
+    Connecting and the headers count too on a client made by `llm.deadline.client` (a server
+    dripping one header line a second). Raises httpx.TimeoutException when the time runs out,
+    ValueError when the body is larger."""
     seconds = PROBE_SECONDS if seconds is None else seconds
     deadline = time.monotonic() + seconds
 
@@ -107,7 +111,8 @@ def bounded_get(client: httpx.Client, url: str, *, headers: dict[str, str] | Non
         return remaining
 
     timeout = httpx.Timeout(min(10.0, left()), connect=min(5.0, left()))
-    with client.stream("GET", url, headers=headers, timeout=timeout) as response:
+    with overall_deadline(deadline), client.stream("GET", url, headers=headers,
+                                                   timeout=timeout) as response:
         chunks: list[bytes] = []
         size = 0
         for chunk in response.iter_bytes():
@@ -221,7 +226,9 @@ class OpenAIChatModel:
         #: every request of this model instance (one per unit) ends by this monotonic time
         self._unit_deadline = time.monotonic() + _number("unit_timeout", unit_timeout, low=0.001)
         self.stats = stats or ModelStats()
-        self._client = httpx.Client(timeout=self.timeout)
+        #: every socket operation of a request ends by the request's deadline (`_post`): a
+        #: server dripping its headers cannot hold a request past it
+        self._client = deadline_client(timeout=self.timeout)
 
     def __repr__(self) -> str:  # never shows the key
         return f"OpenAIChatModel(model={self.name!r}, base_url={self._shown_url!r})"
@@ -284,8 +291,9 @@ class OpenAIChatModel:
         return max(self.request_timeout, (bound or 0) * self.seconds_per_token)
 
     def _post(self, url: str, body: dict[str, Any]) -> _Reply:
-        """One POST whose total time is bounded (a trickling server cannot hold it) and whose
-        reply size is bounded."""
+        """One POST whose total time — connecting, sending, headers and body — is bounded (a
+        server trickling its body or dripping its headers cannot hold it) and whose reply size
+        is bounded."""
         allowed = self.timeout_for(body)
         deadline = min(time.monotonic() + allowed, self._unit_deadline)
         cap = limit("max_reply_bytes")
@@ -298,8 +306,8 @@ class OpenAIChatModel:
 
         timeout = httpx.Timeout(min(max(self.timeout.read or 60.0, allowed), remaining()),
                                 connect=min(self.timeout.connect or 10.0, remaining()))
-        with self._client.stream("POST", url, json=body, headers=self._headers(),
-                                 timeout=timeout) as response:
+        with overall_deadline(deadline), self._client.stream(
+                "POST", url, json=body, headers=self._headers(), timeout=timeout) as response:
             chunks: list[bytes] = []
             size = 0
             for chunk in response.iter_bytes():  # decoded: a compressed bomb counts in full
@@ -380,7 +388,7 @@ class OpenAIChatModel:
             prompt_tokens=_count(usage, "prompt_tokens"),
             completion_tokens=_count(usage, "completion_tokens"),
         )
-        text = redact(str(content or ""))  # a server echoing our headers must not leak the key
+        text = redact(well_formed(str(content or "")))  # a server echoing our headers must not leak the key
         return text + TRUNCATION_MARK if finish == "length" else text
 
     def preflight(self) -> None:

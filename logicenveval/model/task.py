@@ -9,10 +9,11 @@ from __future__ import annotations
 
 import re
 from collections.abc import Mapping
-from typing import Annotated, Any, Union
+from typing import Annotated, Any, TypeVar, Union
 
-from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
+from pydantic import BaseModel, ConfigDict, Field, StrictBool, field_validator, model_validator
 
+from logicenveval.limits import limit, raise_hint
 from logicenveval.model.conditions import (
     AGENT_PREDICATES,
     Cond,
@@ -43,8 +44,10 @@ class Role(BaseModel):
     attributes: dict[str, str] = Field(default_factory=dict)
     description: str | None = None
     #: the description lets the object be absent ("may", "if there are any", "if available"):
-    #: an environment without it is well-formed and every predicate about it is false
-    optional: bool = False
+    #: an environment without it is well-formed and every predicate about it is false. Strict:
+    #: `"yes"`, `"false"` or `1` are refused, not read as a truth value (a typo must not make
+    #: a required role optional)
+    optional: StrictBool = False
 
 
 class Constraint(BaseModel):
@@ -150,6 +153,16 @@ class Task(BaseModel):
     #: facts the description fixes in every situation (docs/task-format.md, "Constraints")
     constraints: list[Constraint] = Field(default_factory=list)
 
+    @field_validator("roles")
+    @classmethod
+    def _few_roles(cls, roles: dict[str, Role]) -> dict[str, Role]:
+        return _bounded(roles, "roles", "max_task_roles")
+
+    @field_validator("constraints")
+    @classmethod
+    def _few_constraints(cls, constraints: list[Constraint]) -> list[Constraint]:
+        return _bounded(constraints, "constraints", "max_task_constraints")
+
     @model_validator(mode="after")
     def _references(self) -> Task:
         ids = [s.id for s in self.subtasks]
@@ -162,6 +175,10 @@ class Task(BaseModel):
             if _words(c.says) not in said:
                 raise ValueError(f"constraints.{k}.says: {c.says!r} is not in the task description; "
                                  "quote the words of the description that assert the fact")
+            if len(content_words(c.says)) < MIN_QUOTE_WORDS:
+                raise ValueError(f"constraints.{k}.says: {c.says!r} quotes fewer than "
+                                 f"{MIN_QUOTE_WORDS} content words; quote the phrase of the "
+                                 "description that asserts the fact, not a word it happens to hold")
         for name, var in self.variables.items():
             for value, text in var.values.items():
                 _check_args(parse(text), known, f"variables.{name}.values.{value}")
@@ -223,6 +240,39 @@ class Task(BaseModel):
                 for text in self.variables[node.var].values.values():
                     roles |= subject_roles(parse(text))
         return roles & set(self.roles)
+
+
+#: content words a constraint's `says` must hold at least: one word ("the", "kitchen") occurs in
+#: almost any description, so it would let a fact be invented; every shipped quote names at least
+#: an object and what is said of it ("a ceiling lamp", "The floor is stained")
+MIN_QUOTE_WORDS = 2
+#: function words that carry no content of their own (articles, pronouns, prepositions,
+#: conjunctions, auxiliaries): a quote of only these asserts nothing
+_FUNCTION_WORDS = """
+a an the this that these those it its they them their there here he she his her we our
+you your i me my one ones some any all each every no not of in on at to into onto from by with
+for as and or but if then so than is are was were be been being am has have had do does did
+can could may might must shall should will would s t d ll re ve m
+"""
+FUNCTION_WORDS = frozenset(_FUNCTION_WORDS.split())
+
+
+def content_words(text: str) -> list[str]:
+    """The words of `text` that are not function words (`FUNCTION_WORDS`)."""
+    return [w for w in _words(text).split() if w not in FUNCTION_WORDS]
+
+
+_Sized = TypeVar("_Sized", dict[str, Role], list[Constraint])
+
+
+def _bounded(items: _Sized, what: str, name: str) -> _Sized:
+    """`items`, unless there are more than the limit `name` of them (every situation of the
+    task is solved with all of them: their number drives the time of validation and of units)."""
+    cap = limit(name)
+    if len(items) > cap:
+        raise ValueError(f"{len(items)} {what}, more than the limit of {cap}; "
+                         + raise_hint(name))
+    return items
 
 
 def _words(text: str) -> str:

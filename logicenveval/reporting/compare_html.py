@@ -5,6 +5,7 @@ so a regression is followed down to the environments that moved."""
 from __future__ import annotations
 
 import os
+import urllib.parse
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -50,7 +51,14 @@ def detail_href(run_dir: Path, results: dict[str, Any], generator: str, task: st
     target = run_dir / "details" / f"{prefix}{slug(generator)}" / f"{slug(task)}.html"
     if not target.is_file():
         return None
-    return Path(os.path.relpath(target.resolve(), page.resolve().parent)).as_posix()
+    return relative_url(Path(os.path.relpath(target.resolve(), page.resolve().parent)))
+
+
+def relative_url(path: Path) -> str:
+    """A relative path as a URL path: each segment percent-encoded, so that a folder named
+    `javascript:alert(1)` is never read as a scheme (`:` is `%3A`) and `#` or `?` in a folder
+    name do not end the path (they are `%23` and `%3F`)."""
+    return "/".join(urllib.parse.quote(part, safe="") for part in path.as_posix().split("/"))
 
 
 def task_diffs(pair: Pair, a: dict[str, Any], b: dict[str, Any], run_a: Path, run_b: Path,

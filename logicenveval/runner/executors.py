@@ -46,7 +46,8 @@ class Executor(Protocol):
 
 
 class InProcessExecutor:
-    """Runs units one after another in this process (debugging, profiling).
+    """Runs units one after another in this process (debugging, profiling; the process
+    executor never runs units here, even with one worker or one unit).
 
     Nothing can stop a unit from outside here: a unit that never returns holds the run (the
     runner's in-unit time bound, `runner.unit`, stops Python code that returns to the
@@ -121,6 +122,8 @@ def _death(codes: Sequence[int | None]) -> str:
             return f"its worker process was killed by {name}{oom}"
     if dead:
         return f"its worker process exited with status {dead[0]}"
+    if codes and all(c == 0 for c in codes):  # os._exit(0) in the unit: no exception, no result
+        return "its worker process exited with status 0 before the unit finished"
     return "its worker process died"
 
 
@@ -192,7 +195,7 @@ class ProcessExecutor:
 
     def warm_up(self) -> None:
         """Start the fork server now, so its imports overlap the caller's own start-up work."""
-        if self.workers > 1 and self._ctx is None:
+        if self._ctx is None:
             self._ctx = _context()
             if self._ctx.get_start_method() == "forkserver":
                 from multiprocessing import forkserver
@@ -203,9 +206,8 @@ class ProcessExecutor:
     def map_unordered(self, fn: Callable[[T], R], items: Sequence[T], *,
                       budget: Budget | None = None, on_crash: OnCrash | None = None,
                       split: Callable[[T], Sequence[T]] | None = None) -> Iterator[tuple[T, R]]:
-        if self.workers == 1 or len(items) <= 1:
-            yield from InProcessExecutor().map_unordered(fn, items)
-            return
+        if not items:  # every unit runs in a worker, whatever the workers and units: a unit
+            return  # that calls os._exit or blocks the alarm cannot take the run with it
         self.warm_up()
         ctx = self._ctx or _context()
         queue: deque[T] = deque(items)
@@ -593,15 +595,15 @@ _EXECUTORS: dict[str, str] = {
 
 
 def prestart(name: str, workers: int, preload: Sequence[str] = ()) -> None:
-    """Start the fork server of a `process` executor with several workers at once, before the
+    """Start the fork server of a `process` executor at once, before the
     caller imports the run's own modules: the two import in parallel (about 1 s of a 2-worker
     run's wall on 2 cores, when the fork server was started only once the run was set up). A
-    later executor reuses the running server; one unneeded (a run of one unit) costs nothing
-    but a background process that ends with the caller. `preload`: modules the fork server
+    later executor reuses the running server; one unneeded (a resumed run with nothing left)
+    costs nothing but a background process that ends with the caller. `preload`: modules the fork server
     imports besides `PRELOAD` (what the caller's `on_commit` hook needs), so that each worker
     does not import them on its first unit."""
     _MORE_PRELOAD[:] = preload
-    if name == "process" and workers > 1:
+    if name == "process" and workers >= 1:
         ProcessExecutor(workers=workers).warm_up()
 
 

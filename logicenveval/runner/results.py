@@ -303,8 +303,21 @@ def _need(ok: bool, field: str, what: str) -> None:
         raise _Damaged(field, what)
 
 
+#: the largest integer a results file holds (counts, seeds < 2**63): JSON lets an integer have
+#: hundreds of digits, which no float can hold (OverflowError wherever it is computed with)
+MAX_INT = 2**63
+
+
 def _is_number(v: object) -> bool:
-    return isinstance(v, int | float) and not isinstance(v, bool) and math.isfinite(v)
+    if isinstance(v, int) and not isinstance(v, bool):
+        return -MAX_INT <= v <= MAX_INT
+    return isinstance(v, float) and math.isfinite(v)
+
+
+def _not_finite(v: object) -> str:
+    if isinstance(v, int):  # never printed: a 400-digit number floods the message
+        return f"an integer of {v.bit_length()} bits is out of range (at most 2**63)"
+    return f"{v!r} is not a finite number"
 
 
 def _check_leaves(where: str, value: object) -> None:
@@ -317,11 +330,14 @@ def _check_leaves(where: str, value: object) -> None:
         elif isinstance(v, list):
             stack += [(f"{at}.{i}", x) for i, x in enumerate(v)]
         else:
-            _need(not isinstance(v, float) or math.isfinite(v), at, f"{v!r} is not a finite number")
+            _need(not isinstance(v, int | float) or isinstance(v, bool) or _is_number(v), at,
+                  _not_finite(v))
 
 
 def _check_top(data: dict[str, Any]) -> None:
     _need(isinstance(data["results"], dict), "results", "must be an object of generators")
+    for key, section in data.items():  # every section a report shows (llm, timing, ...) too
+        _check_leaves(key, section)
     order = data.get("generators", [])
     _need(isinstance(order, list) and all(isinstance(g, str) for g in order), "generators",
           "must be a list of generator names (the row order)")

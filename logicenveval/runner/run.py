@@ -108,7 +108,7 @@ def resolve_generators(config: RunConfig) -> list[GeneratorRef]:
     if len(set(names)) != len(names):
         raise ConfigError(f"two generators share a name in {names}", field="--generators",
                           hint="list each generator once; plug-ins need distinct `name`s")
-    parallel = config.executor == "ray" or (config.executor == "process" and config.workers > 1)
+    parallel = config.executor in ("ray", "process")  # units run in worker processes
     for r in refs:
         if parallel and not r.portable:
             raise ConfigError(

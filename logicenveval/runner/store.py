@@ -22,7 +22,7 @@ from logicenveval.atomic import atomic_write_text
 from logicenveval.errors import LogicEnvEvalError, RunStoreError
 from logicenveval.limits import read_bytes
 from logicenveval.metrics.records import UnitRecord
-from logicenveval.paths import child, safe_relative
+from logicenveval.paths import child, refuse_links, safe_relative
 from logicenveval.runner.unit_codec import decode_unit, encode_unit
 
 
@@ -47,9 +47,11 @@ class RunStore:
         return child(self.units_dir, generator, task_id, suffix=".json", what="unit name")
 
     def claim(self, identity: dict[str, Any]) -> None:
-        """`lock` the folder, then `bind_config`: what a run does before its first unit."""
+        """`lock` the folder, then `bind_config`: what a run does before its first unit. A folder
+        holding a symbolic link is refused (`paths.refuse_links`: nothing written through it)."""
         self.lock(identity)
         try:
+            refuse_links(self.run_dir, error=RunStoreError)
             self.bind_config(identity)
         except BaseException:
             self.unlock()

@@ -147,10 +147,13 @@ class Checked:
     rejected: list[tuple[str, str, str]]  # env_id, stage, reason of each environment not kept
 
 
-def call_generator(generator: Generator, brief: TaskBrief, ctx: GenerationContext, *,
-                   task_id: str, timeout: float | None) -> Checked:
+def call_generator(generator: Generator, brief: TaskBrief | Callable[[], TaskBrief],
+                   ctx: GenerationContext, *, task_id: str, timeout: float | None) -> Checked:
     """Run `generator.generate` behind the one boundary every unit uses.
 
+    `brief` may be made here (a callable: `--brief description` asks the model for the objects
+    the description names), so that its model request is inside the unit's time bound and
+    watchdog too: a server that never finishes its reply cannot hold the unit past its bound.
     The generator gets its own copy of the brief; its wall time is bounded (`_time_bound`);
     anything it raises besides an ordinary exception (SystemExit, KeyboardInterrupt, other
     BaseExceptions) and anything it returns that is not a `GenerationResult` of EnvSpecs with
@@ -161,7 +164,8 @@ def call_generator(generator: Generator, brief: TaskBrief, ctx: GenerationContex
     with _interrupts() as interrupted:
         try:
             with _time_bound(timeout):
-                result = generator.generate(brief.model_copy(deep=True), ctx)
+                given = brief() if callable(brief) else brief
+                result = generator.generate(given.model_copy(deep=True), ctx)
         except UnitTimeout:
             raise GeneratorBroke(_late(timeout), "generation") from None
         except KeyboardInterrupt:
@@ -438,8 +442,16 @@ def _run_unit(spec: UnitSpec) -> UnitRecord:
             layout_solver=spec.layout_solver,
         )
         with phases.phase("generation"):
-            brief = generator_brief(task, spec.brief, model, seed=spec.seed)
-            result = call_generator(generator, brief, ctx, task_id=task.id, timeout=spec.unit_timeout)
+            briefs: list[TaskBrief] = []
+
+            def make_brief() -> TaskBrief:
+                assert model is not None
+                briefs.append(generator_brief(task, spec.brief, model, seed=spec.seed))
+                return briefs[0]
+
+            result = call_generator(generator, make_brief, ctx, task_id=task.id,
+                                    timeout=spec.unit_timeout)
+            brief = briefs[0]
     except GeneratorBroke as exc:
         shared_catalog()
         cause = exc.__context__ if exc.kind == "internal" else None

@@ -67,12 +67,18 @@ def _objects(objs: Any, where: str) -> Iterator[tuple[str, dict[str, Any]]]:
             stack += [(f"{here}.children[{j}]", c) for j, c in enumerate(kids)][::-1]
 
 
+#: bits of the largest integer a house may hold (2**63: ids, counts; coordinates are far smaller)
+MAX_INT_BITS = 63
+
+
 def _non_finite(data: Any) -> Iterator[str]:
-    """JSON paths of NaN and infinite numbers (AI2-THOR cannot place them; JSON has no NaN)."""
+    """JSON paths of NaN and infinite numbers (AI2-THOR cannot place them; JSON has no NaN), and
+    of integers too large for a float (JSON allows 400 digits; no coordinate is that large)."""
     stack: list[tuple[Any, str]] = [(data, "")]
     while stack:
         value, here = stack.pop()
-        if isinstance(value, float) and not math.isfinite(value):
+        if (isinstance(value, float) and not math.isfinite(value)) or \
+                (isinstance(value, int) and value.bit_length() > MAX_INT_BITS):
             yield here or "$"
         elif isinstance(value, dict):
             stack += [(v, f"{here}.{k}" if here else str(k)) for k, v in value.items()]
@@ -230,5 +236,6 @@ def check_house(house: Any, db: ProcthorDB, *, authoritative: bool = True) -> Ho
             if k in o:
                 bad(f"{where}.{k}", f"AI2-THOR does not read {k!r} (isOn, isDirty, openness)")
     for where in sorted(_non_finite(house))[:50]:
-        bad(where, "not a finite number (AI2-THOR cannot place NaN or infinity)")
+        bad(where, "not a finite number (AI2-THOR cannot place NaN, infinity or a number of "
+            "hundreds of digits)")
     return HouseReport(against=db.source, problems=problems, warnings=warnings, **counts)

@@ -97,6 +97,9 @@ def _num(value: Any, where: str, default: float | None = None) -> float:
         return default
     if isinstance(value, bool) or not isinstance(value, int | float):
         raise EnvSpecError(f"expected a number, got {show(value)}", field=where, hint=_LAYOUT)
+    if isinstance(value, int) and value.bit_length() > 63:  # float() of it: OverflowError
+        raise EnvSpecError(f"an integer of {value.bit_length()} bits is out of range", field=where,
+                           hint="coordinates, sizes and angles are finite numbers (metres, degrees)")
     if not math.isfinite(value):
         raise EnvSpecError(f"non-finite number {value}", field=where,
                            hint="coordinates, sizes and angles are finite numbers (metres, degrees)")
