@@ -140,3 +140,28 @@ def test_written_environments_get_the_scene_s_words_and_checks_from_protocol_5()
     placed = new.requests[0].schema["$defs"]["PlacedObject"]["properties"]
     assert "enum" in placed["category"] and "enum" in placed["room"]
     assert "enum" not in old.requests[0].schema["$defs"]["PlacedObject"]["properties"]["category"]
+
+
+def test_state_keys_are_the_flags_from_protocol_5() -> None:
+    """Qwen2.5-Coder-1.5B wrote its schema's words as state keys (`"states":
+    {"additionalProperties": false}`, 9 of 11 scenes): from protocol 5 on a scene object's
+    `states` has the condition language's flags as its only (optional) keys in the grammar, and a
+    reply with another key is re-asked; under protocol 4 the schema is what it always was."""
+    from logicenveval.llm.replies import SelectionWire
+    from logicenveval.model.conditions import STATE_FLAGS
+
+    seen = {p: Seen(p) for p in (4, 5)}
+    for model in seen.values():
+        task = load_task(TASK)
+        ctx = GenerationContext(model=model, catalog=load_catalog(), seed=0,
+                                rng=np.random.default_rng(unit_seed(0, "logicenvgen", task.id)))
+        assert make_generator("logicenvgen").generate(task.brief(), ctx).envs
+    first = {p: next(r for r in m.requests if r.kind == "select_objects") for p, m in seen.items()}
+    states = first[5].schema["$defs"]["OtherObjectWire"]["properties"]["states"]
+    assert list(states["properties"]) == list(STATE_FLAGS) and states["additionalProperties"] is False
+    assert "properties" not in first[4].schema["$defs"]["OtherObjectWire"]["properties"]["states"]
+    assert "x-some-keys" not in json.dumps(first[4].schema) + json.dumps(first[5].schema)
+    reply = json.loads(seen[5].inner.complete(first[5]))
+    reply["other_objects"][0]["states"] = {"additionalProperties": False}
+    with pytest.raises(ValidationError, match="not state flags"):
+        SelectionWire.model_validate(reply, context={CONTEXT_KEY: {"state_flags": list(STATE_FLAGS)}})

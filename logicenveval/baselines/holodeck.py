@@ -42,6 +42,7 @@ from logicenveval.llm.ask import ask, protocol_of
 from logicenveval.llm.replies import ObjectDraft, object_slots
 from logicenveval.llm.scene_words import OTHER_ID, selection_words
 from logicenveval.llm.vocab import Pattern, scene_vocabulary
+from logicenveval.model.conditions import STATE_FLAGS
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import TaskBrief
 from logicenveval.scene.guessed_layout import typical_size
@@ -78,6 +79,8 @@ class Holodeck:
                 vocabulary["object_ids"] = Pattern(f"^({'|'.join([*map(re.escape, role_names), OTHER_ID])})$")
                 # one relation per object it may list: its roles and at most MAX_OTHER_OBJECTS others
                 vocabulary["relation_slots"] = object_slots(role_names)
+                if protocol_of(ctx.model) >= 5:  # states keyed by the flags only (`SOME_KEYS`)
+                    vocabulary["state_flags"] = list(STATE_FLAGS)
                 wire = ask(ctx.model, "holodeck_scene", payload, HolodeckSceneWire, seed=ctx.seed,
                            vocabulary=vocabulary, quote=False)
                 dropped = dropped_relations([(env_id, wire)])

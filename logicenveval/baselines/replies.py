@@ -30,6 +30,7 @@ from logicenveval.llm.replies import (
 )
 from logicenveval.llm.structured import LiteralDraft, literal_text
 from logicenveval.llm.vocab import AT_MOST, CONTEXT_KEY, scene_vocabulary
+from logicenveval.model.conditions import STATE_FLAGS
 from logicenveval.model.repeats import repeated
 from logicenveval.model.task import TaskBrief
 
@@ -98,10 +99,11 @@ class WrittenEnvironment(JudgedRelations):
 def written_words(brief: TaskBrief, categories: Sequence[str]) -> dict[str, Any]:
     """The scene's words a written environment is asked in from protocol 5 on, as LogicEnvGen's
     selection and Holodeck-like's scene are (`llm.vocab.scene_vocabulary`): the task's rooms,
-    room types, the catalog's and the roles' categories, the roles, placements and relation types
-    in the grammar; no role is required (a CoT or IFG situation may lack an object)."""
-    return scene_vocabulary(list(brief.rooms), sorted(brief.roles),
-                            [*categories, *(r.category for r in brief.roles.values())])
+    room types, the catalog's and the roles' categories, the roles, placements, relation types and
+    state flags in the grammar; no role is required (a CoT or IFG situation may lack an object)."""
+    return {**scene_vocabulary(list(brief.rooms), sorted(brief.roles),
+                               [*categories, *(r.category for r in brief.roles.values())]),
+            "state_flags": list(STATE_FLAGS)}
 
 
 class WrittenEnvironmentsReply(BaseModel):

@@ -35,7 +35,7 @@ from logicenveval.llm.replies import (
 )
 from logicenveval.llm.scene_words import selection_words
 from logicenveval.llm.vocab import Words, scene_vocabulary
-from logicenveval.model.conditions import evaluate, parse
+from logicenveval.model.conditions import STATE_FLAGS, evaluate, parse
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import Task, TaskBrief
 from logicenveval.model.tree import evaluate_task
@@ -127,6 +127,8 @@ class EnvironmentBuilder:
             payload = self._payload(rooms=rooms, facts=facts, categories=categories, feedback=feedback)
             required = present_roles(sorted(self.brief.roles), facts)
             vocabulary = {**self._vocabulary([r["id"] for r in rooms]), "required_roles": required}
+            if protocol_of(self.ctx.model) >= 5:  # states keyed by the flags only (`SOME_KEYS`)
+                vocabulary["state_flags"] = list(STATE_FLAGS)
             if protocol_of(self.ctx.model) >= 3:
                 vocabulary.update(selection_words(self.brief, required, self.ctx.catalog))
                 # quoted back, Qwen2.5-Coder-1.5B wrote its invalid selection again (2 of 2)

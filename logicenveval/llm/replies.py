@@ -10,6 +10,7 @@ from collections.abc import Sequence
 from typing import Annotated, Any, Literal, Union
 
 from pydantic import (
+    AfterValidator,
     BaseModel,
     ConfigDict,
     Field,
@@ -31,6 +32,7 @@ from logicenveval.llm.vocab import (
     COUNT,
     KEYS,
     OTHERS,
+    SOME_KEYS,
     Pattern,
     Vocab,
     admits,
@@ -153,6 +155,20 @@ class FloorPlanReply(BaseModel):
     rooms: list[RoomDraft] = Field(min_length=1)
 
 
+def _known_flags(value: dict[str, bool], info: ValidationInfo) -> dict[str, bool]:
+    """States keyed by the request's state flags only, where it gives them (`SOME_KEYS`)."""
+    words = ((info.context or {}).get(CONTEXT_KEY) or {}).get("state_flags")
+    unknown = sorted(set(value) - set(words)) if isinstance(words, list) else []
+    if unknown:
+        raise ValueError(f"{unknown} are not state flags: use only {words}")
+    return value
+
+
+#: an object's state flags; from protocol 5 on its keys are the condition language's flags
+StateFlags = Annotated[dict[str, bool], AfterValidator(_known_flags),
+                       Field(json_schema_extra={SOME_KEYS: "state_flags"})]
+
+
 class ObjectDraft(BaseModel):
     model_config = _F
     id: Annotated[str, Vocab("object_ids")] = Field(description="unique object id, e.g. 'sofa_1'")
@@ -163,7 +179,7 @@ class ObjectDraft(BaseModel):
     placement: Annotated[str, Vocab("placements")] = Field(
         description="'floor', 'wall', 'ceiling', 'on:<object id>' or 'inside:<object id>'")
     attributes: dict[str, str] = Field(default_factory=dict)
-    states: dict[str, bool] = Field(default_factory=dict)
+    states: StateFlags = Field(default_factory=dict)
     description: str = ""
 
 
@@ -228,7 +244,7 @@ class RoleObjectWire(BaseModel):
     room: SceneRoom
     placement: ScenePlacement
     attributes: dict[str, str] = Field(default_factory=dict)
-    states: dict[str, bool] = Field(default_factory=dict)
+    states: StateFlags = Field(default_factory=dict)
 
 
 class OtherObjectWire(BaseModel):
@@ -240,7 +256,7 @@ class OtherObjectWire(BaseModel):
     room: SceneRoom
     placement: ScenePlacement
     attributes: dict[str, str] = Field(default_factory=dict)
-    states: dict[str, bool] = Field(default_factory=dict)
+    states: StateFlags = Field(default_factory=dict)
 
 
 #: objects besides the roles' in one selection reply (protocol 3): the offline model's largest

@@ -48,6 +48,13 @@ KEYS = "x-keys"
 #: relations, from protocol 4 on: `environment_slots`, `object_slots`). Removed from the schema
 #: sent, so a request without the vocabulary sends the schema it always did
 AT_MOST = "x-at-most"
+#: JSON-schema key of a map whose keys may only be words of a vocabulary that only some
+#: requests give (an object's `states`: the condition language's state flags, from protocol 5
+#: on, `state_flags`): sent as one optional property per word and no other, so a grammar cannot
+#: write its own schema's words as keys (Qwen2.5-Coder-1.5B's `"states": {"additionalProperties":
+#: false}`, 9 of 11 scenes). Removed from the schema sent, so a request without the vocabulary
+#: sends the schema it always did
+SOME_KEYS = "x-some-keys"
 #: validation-context key under which `ask` passes the vocabulary
 CONTEXT_KEY = "vocabulary"
 
@@ -149,6 +156,12 @@ def specialise(schema: dict[str, Any], vocabulary: Vocabulary | None, *, bounds:
             out["properties"] = {word: _per_key(node.get("additionalProperties"), word, vocabulary) or value
                                  for word in dict.fromkeys(keys)}
             out["required"] = list(dict.fromkeys(keys))
+            out["additionalProperties"] = False
+        some = out.pop(SOME_KEYS, None)
+        allowed = vocabulary.get(some) if isinstance(some, str) else None
+        if allowed and not isinstance(allowed, Pattern):
+            value = out.pop("additionalProperties", {})
+            out["properties"] = {word: value for word in dict.fromkeys(allowed)}
             out["additionalProperties"] = False
         most = out.pop(AT_MOST, None)
         slots = vocabulary.get(most) if isinstance(most, str) else None
