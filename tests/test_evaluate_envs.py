@@ -24,8 +24,13 @@ def _results(run_dir: Path) -> dict[str, Any]:
     return data
 
 
+#: what only the generator that built an environment can say (`Attempt.realised`: does it
+#: realise the trajectory of its own plan it claims); `evaluate` scores files without it
+GENERATOR_SAID = ("realised_share", "n_claimed", "n_realised")
+
+
 def _untimed(values: dict[str, Any]) -> dict[str, Any]:
-    return {k: v for k, v in values.items() if k != "st_ms"}
+    return {k: v for k, v in values.items() if k != "st_ms" and k not in GENERATOR_SAID}
 
 
 def _samples(run_dir: Path) -> dict[tuple[str, str], dict[str, Any]]:
