@@ -16,10 +16,6 @@ from logicenveval.offline import baseline_answers, naming, plan, scene_answers  
 from logicenveval.offline.handlers import _HANDLERS
 
 
-def handled_kinds() -> list[str]:
-    return sorted(_HANDLERS)
-
-
 class OfflineModel:
     """A ChatModel whose replies are computed by rule-based handlers (no network)."""
 
