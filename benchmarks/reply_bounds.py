@@ -22,8 +22,9 @@ from collections.abc import Sequence
 
 from logicenveval.llm.ask import PER_ITEM_TOKENS
 from logicenveval.llm.base import ChatRequest
-from logicenveval.llm.offline import _HANDLERS, OfflineModel
 from logicenveval.llm.replies import MAX_OTHER_OBJECTS
+from logicenveval.offline.handlers import _HANDLERS
+from logicenveval.offline.model import OfflineModel
 
 CHARS_PER_TOKEN = 3.5
 #: head-room of a bound over the largest measured reply (models write longer ids and sentences

@@ -10,7 +10,6 @@ import numpy as np
 import pytest
 
 from logicenveval import domain
-from logicenveval.baselines import offline_handlers as oh
 from logicenveval.baselines.holodeck_solver import Box
 from logicenveval.benchmark import load_task
 from logicenveval.domain.catalog import Catalog, load_catalog
@@ -23,8 +22,9 @@ from logicenveval.generators.base import (
 )
 from logicenveval.generators.logicenvgen import LogicEnvGen
 from logicenveval.llm.base import ChatRequest
-from logicenveval.llm.offline import OfflineModel
 from logicenveval.model.envspec import EnvSpec
+from logicenveval.offline import baseline_answers as oh
+from logicenveval.offline.model import OfflineModel
 from logicenveval.runner.config import RunConfig
 
 TASKS = Path(__file__).resolve().parents[1] / "benchmark_data" / "tasks"

@@ -8,13 +8,13 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from logicenveval.baselines.geometry import layout_rooms, room_dims
-from logicenveval.baselines.offline_handlers import (
+from logicenveval.domain.catalog import Catalog
+from logicenveval.offline.analysis import Factor
+from logicenveval.offline.baseline_answers import (
     door_stretches,
     flat_situations,
     written_floor_plan,
 )
-from logicenveval.domain.catalog import Catalog
-from logicenveval.llm.analysis import Factor
 from logicenveval.scene.guessed_layout import footprint, guess_coordinates, typical_size
 
 CAT = Catalog.model_validate({"categories": {

@@ -13,11 +13,12 @@ from logicenveval.benchmark import load_task
 from logicenveval.cli import main
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.generators.base import GenerationContext, make_generator
-from logicenveval.generators.brief import BriefMode, generator_brief, name_objects
+from logicenveval.generators.brief import BriefMode, generator_brief
 from logicenveval.llm.base import ChatModel, ChatRequest
 from logicenveval.llm.fewshot import FewShotModel, few_shot_example
-from logicenveval.llm.offline import OfflineModel
 from logicenveval.model.task import Role, Task
+from logicenveval.offline.model import OfflineModel
+from logicenveval.offline.naming import name_objects
 from logicenveval.runner.config import DEFAULT_GENERATORS
 
 TASKS = Path(__file__).resolve().parents[1] / "benchmark_data" / "tasks"

@@ -20,7 +20,7 @@ from logicenveval.benchmark import load_task, task_ids
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.generators.base import GenerationContext, make_generator, unit_seed
 from logicenveval.llm.base import ChatRequest
-from logicenveval.llm.offline import OfflineModel
+from logicenveval.offline.model import OfflineModel
 
 SECRET = "sk-fault-injection-SECRET-abcdef0123456789"
 GENERATOR = "cot"  # one request per unit: each fault maps to one unit

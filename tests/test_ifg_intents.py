@@ -23,8 +23,8 @@ from logicenveval.generators.base import (
 from logicenveval.generators.plan import plan_vocabulary
 from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.meaning import MEANING_KEY
-from logicenveval.llm.offline import OfflineModel
 from logicenveval.llm.vocab import CONTEXT_KEY
+from logicenveval.offline.model import OfflineModel
 
 TASK = "clean_living_room"
 

@@ -7,7 +7,7 @@ from typing import Any
 import pytest
 
 from logicenveval.domain.catalog import Catalog
-from logicenveval.llm.analysis import analyse, nest
+from logicenveval.offline.analysis import analyse, nest
 
 CATALOG = Catalog.model_validate({"categories": {
     name: {"size_min": [0.1, 0.1, 0.1], "size_max": [1, 1, 1], "placement": ["floor"], **extra}
@@ -116,7 +116,7 @@ def test_absence_and_certain_scene_facts() -> None:
 
 
 def test_analysis_is_memoised_per_brief_and_callers_get_copies() -> None:
-    from logicenveval.llm import analysis
+    from logicenveval.offline import analysis
 
     b = brief("If there is a toy on the floor, put it into the toy chest.", {"toy": ["toy"]})
     first = analyse(b, CATALOG)

@@ -11,8 +11,8 @@ from logicenveval.benchmark import load_task, tasks_dir
 from logicenveval.generators.brief import generator_brief
 from logicenveval.llm.ask import ask
 from logicenveval.llm.bounds import fit_arrays
-from logicenveval.llm.offline import OfflineModel
 from logicenveval.llm.replies import DecomposeWire
+from logicenveval.offline.model import OfflineModel
 
 SCHEMA: dict[str, Any] = DecomposeWire.model_json_schema()
 

@@ -15,8 +15,8 @@ from hypothesis import strategies as st
 
 from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.grammar import pattern_node, to_gbnf, to_regex
-from logicenveval.llm.offline import OfflineModel
 from logicenveval.llm.vocab import PLACEMENT, SNAKE
+from logicenveval.offline.model import OfflineModel
 
 
 class Recording(OfflineModel):

@@ -305,7 +305,7 @@ def test_the_offline_model_builds_the_same_environments_keyed_or_listed() -> Non
     from logicenveval.benchmark import load_task
     from logicenveval.domain.catalog import load_catalog
     from logicenveval.generators.base import GenerationContext, make_generator, unit_seed
-    from logicenveval.llm.offline import OfflineModel
+    from logicenveval.offline.model import OfflineModel
 
     task, catalog = load_task("kitchen_dish_cleanup"), load_catalog()
     envs = {}
@@ -472,7 +472,7 @@ def test_written_environments_are_bounded_from_protocol_4_and_never_cut_the_offl
     from logicenveval.benchmark import load_task, task_ids
     from logicenveval.domain.catalog import load_catalog
     from logicenveval.generators.base import GenerationContext, make_generator, unit_seed
-    from logicenveval.llm.offline import OfflineModel
+    from logicenveval.offline.model import OfflineModel
 
     catalog = load_catalog()
     for task_id in task_ids():

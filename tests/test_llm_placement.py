@@ -1,4 +1,4 @@
-"""The offline model reads the placements a description states (llm.placement) and the realiser
+"""The offline model reads the placements a description states (offline.placement) and the realiser
 puts those objects there unless a situation fact places them (issue 34, the 12 placement facts)."""
 
 from __future__ import annotations
@@ -11,11 +11,11 @@ from hypothesis import strategies as st
 
 from logicenveval.benchmark import load_task
 from logicenveval.domain.catalog import load_catalog
-from logicenveval.generators.offline_handlers import misfits
-from logicenveval.generators.realise import realise
-from logicenveval.llm.analysis import analyse
-from logicenveval.llm.placement import described_placements
 from logicenveval.model.conditions import Pred, parse
+from logicenveval.offline.analysis import analyse
+from logicenveval.offline.placement import described_placements
+from logicenveval.offline.realise import realise
+from logicenveval.offline.scene_answers import misfits
 
 CATALOG = load_catalog()
 
@@ -186,7 +186,7 @@ def test_where_a_thing_is_kept_stays_askable_when_the_text_speaks_of_elsewhere()
 def test_described_placements_are_remembered_per_brief_and_kinds(monkeypatch: pytest.MonkeyPatch) -> None:
     """A brief is read once per (catalog, brief, kinds): the same facts as a fresh reading, a
     copy the caller may change, another brief or other kinds read anew."""
-    from logicenveval.llm import placement
+    from logicenveval.offline import placement
 
     brief = _brief("The bedroom has a bed and a nightstand with a lamp.", ["bedroom"],
                    bed="bed", nightstand="nightstand", lamp="table_lamp")

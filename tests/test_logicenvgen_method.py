@@ -18,13 +18,14 @@ from logicenveval.domain.catalog import load_catalog
 from logicenveval.domain.roles import prepare_env
 from logicenveval.envfiles import env_from_dict
 from logicenveval.generators.base import GenerationContext, make_generator
-from logicenveval.generators.brief import generator_brief, name_objects
-from logicenveval.generators.offline_handlers import misfits
+from logicenveval.generators.brief import generator_brief
 from logicenveval.generators.plan import derive_plan
 from logicenveval.llm.base import ChatRequest
-from logicenveval.llm.lexicon import singular
-from logicenveval.llm.offline import OfflineModel
 from logicenveval.model.rooms import room_type_of
+from logicenveval.offline.lexicon import singular
+from logicenveval.offline.model import OfflineModel
+from logicenveval.offline.naming import name_objects
+from logicenveval.offline.scene_answers import misfits
 from logicenveval.runner.config import RunConfig
 
 
@@ -186,7 +187,7 @@ def test_coloured_boxes_bind_to_their_roles_by_attribute(task_id: str) -> None:
 
 
 def test_offline_floor_plan_sizes_rooms_for_the_objects_they_must_hold() -> None:
-    from logicenveval.generators.offline_handlers import AREA, room_areas
+    from logicenveval.offline.scene_answers import AREA, room_areas
 
     catalog = load_catalog()
     small = {"rooms": ["bathroom"], "roles": {"toilet": {"category": "toilet"}}}

@@ -21,8 +21,8 @@ from logicenveval.generators.base import (
     unit_seed,
 )
 from logicenveval.llm.base import ChatRequest
-from logicenveval.llm.offline import OfflineModel
 from logicenveval.llm.replies import RelationsWire, judged_relations
+from logicenveval.offline.model import OfflineModel
 
 TASK = "clean_living_room"
 

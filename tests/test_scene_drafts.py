@@ -46,7 +46,7 @@ def test_construct_from_drafts_builds_a_valid_env() -> None:
 def test_env_from_placed_keeps_model_coordinates_and_openings() -> None:
     """No CAS: objects, doors and windows where the model put them; an opening it left out has no
     segment, which the floor-plan check reports (nothing is repaired)."""
-    from logicenveval.generators.offline_handlers import spread_openings
+    from logicenveval.offline.scene_answers import spread_openings
     from logicenveval.scene.construct import room_requests
     from logicenveval.scene.floorplan import plan_floor
 

@@ -7,6 +7,7 @@ it did and where it failed, so that a missed decision path can be traced to its 
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import importlib
 import warnings
@@ -20,6 +21,7 @@ from pydantic import BaseModel, ConfigDict, Field, model_validator
 
 from logicenveval.domain.catalog import Catalog
 from logicenveval.errors import ConfigError
+from logicenveval.generators.registry import ALIASES, BUILTIN
 from logicenveval.model.envspec import EnvSpec
 from logicenveval.model.task import TaskBrief
 from logicenveval.scene.layout import DEFAULT_SOLVER, Solver
@@ -315,6 +317,11 @@ def _short(value: object, quote: bool = True, n: int = 200) -> str:
     return text if len(text) <= n else text[:n - 3] + "..."
 
 
+@functools.cache
 def _load_builtin() -> None:
-    """Import the modules that register the built-in generators (cheap: no heavy imports)."""
-    importlib.import_module("logicenveval.generators.registry")
+    """Register the built-in generators' names and old names, once (cheap: no generator module is
+    imported before it is made)."""
+    for name, entry in BUILTIN.items():
+        register(name, entry)
+    for old, new in ALIASES.items():
+        register_alias(old, new)

@@ -1,6 +1,6 @@
-"""Names of the built-in generators; each module is imported only when its generator is made."""
-
-from logicenveval.generators.base import register, register_alias
+"""Names of the built-in generators; each module is imported only when its generator is made.
+Data only: `generators.base` registers these names on first use (this module imports nothing, so
+the two never import each other)."""
 
 BUILTIN: dict[str, str] = {
     "logicenvgen": "logicenveval.generators.logicenvgen:LogicEnvGen",
@@ -20,8 +20,3 @@ BUILTIN: dict[str, str] = {
 #: `logicenvgen-exact`) and `logicenvgen-exhaustive` (was the Cartesian product, now the paper's
 #: exponential search: the old row is `logicenvgen-no-mtsa`).
 ALIASES: dict[str, str] = {"logicenvgen-mtsa": "logicenvgen"}
-
-for _name, _entry in BUILTIN.items():
-    register(_name, _entry)
-for _old, _new in ALIASES.items():
-    register_alias(_old, _new)

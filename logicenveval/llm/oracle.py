@@ -14,8 +14,8 @@ from typing import Any
 
 from logicenveval.benchmark import load_task
 from logicenveval.errors import ConfigError
-from logicenveval.llm.base import ChatRequest, ModelStats
-from logicenveval.llm.offline import OfflineModel
+from logicenveval.llm.base import ChatModel, ChatRequest, ModelStats
+from logicenveval.llm.registry import provider_factory
 from logicenveval.llm.structured import literals_of
 from logicenveval.model.task import Leaf, Node, Task
 from logicenveval.model.tree import task_paths
@@ -36,7 +36,7 @@ class OracleModel:
     def __init__(self, *, tasks_dir: str | None = None, stats: ModelStats | None = None) -> None:
         self.tasks_dir = Path(tasks_dir) if tasks_dir else None
         self.stats = stats or ModelStats()
-        self._offline = OfflineModel(stats=self.stats)
+        self._offline: ChatModel = provider_factory("offline")(stats=self.stats)  # by name: offline is above llm
 
     def _task(self, payload: dict[str, Any]) -> Task:
         try:

@@ -16,13 +16,20 @@ from logicenveval.llm.base import ChatModel, ModelStats
 from logicenveval.llm.cache import ReplyCache
 
 PROVIDERS: dict[str, str] = {
-    "offline": "logicenveval.llm.offline:OfflineModel",
+    "offline": "logicenveval.offline.model:OfflineModel",
     "oracle": "logicenveval.llm.oracle:OracleModel",
     "openai": "logicenveval.llm.openai_http:OpenAIChatModel",
     "llamacpp": "logicenveval.llm.llamacpp:make_llamacpp",
 }
 #: providers whose replies are cached (HTTP models; the rule-based ones are faster than a lookup)
 CACHED = frozenset({"openai", "llamacpp"})
+
+
+def provider_factory(provider: str) -> Any:
+    """The factory of a provider of `PROVIDERS`, imported only now: a target string is no import
+    statement, so `llm` never imports the packages above it (the embedded model, `offline`)."""
+    module, attr = PROVIDERS[provider].split(":")
+    return getattr(importlib.import_module(module), attr)
 
 
 def _typed(value: str) -> Any:
@@ -166,8 +173,7 @@ def make_model(
         target_provider, target_model = _replay_target(cache, kwargs.pop("replay_model", None))
         model = ReplayModel(cache, target_provider, target_model, stats)
     elif provider in PROVIDERS:
-        module, attr = PROVIDERS[provider].split(":")
-        factory = getattr(importlib.import_module(module), attr)
+        factory = provider_factory(provider)
         try:
             model = factory(name, stats=stats, **kwargs) if provider in CACHED else factory(stats=stats, **kwargs)
         except TypeError as exc:

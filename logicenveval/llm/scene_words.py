@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import re
 from collections.abc import Sequence
-from typing import Any
 
 from logicenveval.domain.catalog import Catalog, Category
 from logicenveval.llm.vocab import Pattern, Words
@@ -55,16 +54,3 @@ def _furniture(c: Category) -> bool:
 def _holds(catalog: Catalog, brief: TaskBrief, role: str, how: str) -> bool:
     c = catalog.get(brief.roles[role].category)
     return c is not None and bool(getattr(c, how))
-
-
-def keyed_selection(objects: list[dict[str, Any]]) -> dict[str, Any]:
-    """A scene's objects (dicts with a `role`) in the keyed shape of protocol 3: a role object's
-    id is its role's name (the offline model answers either shape with the same objects)."""
-    fields = ("category", "room", "placement", "attributes", "states")
-    return {"role_objects": {o["role"]: {k: o[k] for k in fields} for o in objects if o["role"]},
-            "other_objects": [{"id": o["id"], **{k: o[k] for k in fields}} for o in objects if not o["role"]]}
-
-
-def keyed(request: Any) -> bool:
-    """Whether a request (`llm.base.ChatRequest`) asks for the role objects keyed by role."""
-    return "role_objects" in ((getattr(request, "schema", None) or {}).get("properties") or {})

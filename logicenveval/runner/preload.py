@@ -9,11 +9,9 @@ import importlib
 import sys
 
 import logicenveval.faults.score  # noqa: F401  (what a unit imports when it first needs it: mutants,
-import logicenveval.generators.realise  # noqa: F401  the offline model's replies, the layout, ...)
-import logicenveval.llm.analysis  # noqa: F401
-import logicenveval.llm.placement  # noqa: F401
-import logicenveval.llm.registry  # noqa: F401
+import logicenveval.llm.registry  # noqa: F401  the layout, ...)
 import logicenveval.logic.reference  # noqa: F401  (a unit's figures: JI's closest cover)
+import logicenveval.offline.model  # noqa: F401  (the embedded model: it imports the reader and registers its answers)
 import logicenveval.physics.render  # noqa: F401
 import logicenveval.runner.evaluation  # noqa: F401
 import logicenveval.runner.unit  # noqa: F401
@@ -22,7 +20,6 @@ import logicenveval.scene.layout_cpsat  # noqa: F401  (the default layout backen
 import logicenveval.sim.loader  # noqa: F401
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.generators.registry import BUILTIN
-from logicenveval.llm.offline import handled_kinds
 from logicenveval.runner.executors import kill_me_with_parent
 
 if "multiprocessing.forkserver" in sys.modules and sys.argv[:1] == ["-c"]:
@@ -30,7 +27,6 @@ if "multiprocessing.forkserver" in sys.modules and sys.argv[:1] == ["-c"]:
 load_catalog()
 for _entry in BUILTIN.values():
     importlib.import_module(_entry.partition(":")[0])
-handled_kinds()  # imports the offline model's handler modules
 # what is loaded now is shared by every forked worker: keep the workers' collector off it, so it
 # neither scans it nor copies its pages (copy-on-write) — the use gc.freeze documents
 gc.freeze()

@@ -17,8 +17,15 @@ from collections.abc import Mapping
 from typing import Any
 
 from logicenveval.domain.catalog import Catalog, load_catalog
-from logicenveval.llm.analysis import ACTIONS, PREP_IN, PREP_ON, STATE_WORDS, _expand, _sentences
-from logicenveval.llm.lexicon import COLOR_WORDS, Lexicon, Mention, tokens
+from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, tokens
+from logicenveval.offline.sentences import (
+    ACTIONS,
+    PREP_IN,
+    PREP_ON,
+    STATE_WORDS,
+    expand,
+    split_sentences,
+)
 
 #: "it's kept in the vanity", "we keep spares in the vanity", "it lives in the vanity"
 KEEP_VERBS = frozenset({"keep", "keeps", "kept", "live", "lives", "lived"})
@@ -86,7 +93,7 @@ def _read(brief: Mapping[str, Any], catalog: Catalog, kinds: frozenset[str]) -> 
     held: dict[str, str] = {}
     rooms: dict[str, str] = {}
     recent: list[str] = []
-    for sentence in _sentences(_expand(str(brief.get("description", "")))):
+    for sentence in split_sentences(expand(str(brief.get("description", "")))):
         toks = tokens(sentence)
         low = sentence.lower()
         raw = [low[a:b] for _, a, b in toks]

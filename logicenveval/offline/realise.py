@@ -13,9 +13,9 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from logicenveval.domain.catalog import Catalog
-from logicenveval.llm.placement import described_placements
 from logicenveval.model.conditions import And, Cond, Const, Not, Or, Pred, parse
 from logicenveval.model.rooms import room_type_of
+from logicenveval.offline.placement import described_placements
 
 #: placement of an object that must rest on some surface when its room has none among the roles
 NEEDS_SURFACE = "on:?"
@@ -109,7 +109,7 @@ def _described(choice: dict[str, RoleChoice], brief: Mapping[str, Any], facts: l
                catalog: Catalog) -> None:
     """Placements the description states ("a nightstand with a lamp", "the drying rack out on the
     balcony"), for objects whose place no situation fact speaks of, held by an object present and
-    not ruled out (`llm.placement`): a reader of the text puts them there."""
+    not ruled out (`offline.placement`): a reader of the text puts them there."""
     placed = {pred.args[0] for text in facts for pred, _ in _literals(parse(text)) if pred.name in _WHERE}
     for text in described_placements(brief, catalog):
         for pred, pos in _literals(parse(text)):

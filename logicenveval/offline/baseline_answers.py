@@ -24,13 +24,13 @@ import numpy as np
 
 from logicenveval.baselines.geometry import room_dims
 from logicenveval.domain.catalog import Catalog, load_catalog
-from logicenveval.generators.realise import task_objects
-from logicenveval.llm.analysis import Factor, analyse
 from logicenveval.llm.base import ChatRequest
-from logicenveval.llm.offline import handler
-from logicenveval.llm.scene_words import keyed, keyed_selection
 from logicenveval.llm.structured import literals_of
 from logicenveval.model.rooms import room_type_of
+from logicenveval.offline.analysis import Factor, analyse
+from logicenveval.offline.handlers import handler
+from logicenveval.offline.keyed import keyed, keyed_selection
+from logicenveval.offline.realise import task_objects
 from logicenveval.scene.guessed_layout import guess_coordinates
 
 #: typical floor area (m²) per room type

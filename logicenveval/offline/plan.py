@@ -8,11 +8,11 @@ from __future__ import annotations
 
 from typing import Any
 
-from logicenveval.llm.analysis import Factor, TaskAnalysis, analyse, nest
 from logicenveval.llm.base import ChatRequest
-from logicenveval.llm.offline import handler
 from logicenveval.llm.structured import literals_of
 from logicenveval.model.conditions import parse
+from logicenveval.offline.analysis import Factor, TaskAnalysis, analyse, nest
+from logicenveval.offline.handlers import handler
 
 _KIND_OF_PRED = {"exists": "exists", "on": "location", "inside": "location", "in_room": "location",
                  "state": "state", "attr": "attr"}

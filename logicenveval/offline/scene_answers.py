@@ -14,12 +14,12 @@ import re
 from typing import Any
 
 from logicenveval.domain.catalog import Catalog, load_catalog
-from logicenveval.generators.realise import task_objects
 from logicenveval.llm.base import ChatRequest
-from logicenveval.llm.offline import handler
-from logicenveval.llm.placement import described_placements
-from logicenveval.llm.scene_words import keyed, keyed_selection
 from logicenveval.model.rooms import room_type_of
+from logicenveval.offline.handlers import handler
+from logicenveval.offline.keyed import keyed, keyed_selection
+from logicenveval.offline.placement import described_placements
+from logicenveval.offline.realise import task_objects
 
 #: typical floor area (m²) per room type
 AREA = {"LivingRoom": 22.0, "Kitchen": 13.0, "Bedroom": 15.0, "Bathroom": 7.0, "Study": 11.0,

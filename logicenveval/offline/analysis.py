@@ -20,26 +20,17 @@ from dataclasses import dataclass, field, replace
 from typing import Any
 
 from logicenveval.domain.catalog import Catalog, load_catalog
-from logicenveval.llm.lexicon import COLOR_WORDS, Lexicon, Mention, tokens
+from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, tokens
+from logicenveval.offline.placement import described_placements
+from logicenveval.offline.sentences import (
+    ACTIONS,
+    PREP_IN,
+    PREP_ON,
+    STATE_WORDS,
+    expand,
+    split_sentences,
+)
 
-#: adjective/participle -> (state flag, polarity)
-STATE_WORDS: dict[str, tuple[str, bool]] = {
-    "open": ("open", True), "opened": ("open", True), "ajar": ("open", True),
-    "closed": ("open", False), "shut": ("open", False),
-    "on": ("toggled_on", True), "lit": ("toggled_on", True), "running": ("toggled_on", True),
-    "burning": ("toggled_on", True), "off": ("toggled_on", False),
-    "dirty": ("dirty", True), "stained": ("dirty", True), "messy": ("dirty", True),
-    "dusty": ("dirty", True), "muddy": ("dirty", True), "greasy": ("dirty", True),
-    "sticky": ("dirty", True), "used": ("dirty", True), "clean": ("dirty", False),
-    "spotless": ("dirty", False), "wet": ("wet", True), "damp": ("wet", True),
-    "soaked": ("wet", True), "soggy": ("wet", True), "dry": ("wet", False),
-    "full": ("filled", True), "filled": ("filled", True), "empty": ("filled", False),
-    "cooked": ("cooked", True), "raw": ("cooked", False), "sliced": ("sliced", True),
-    "out": ("toggled_on", False), "extinguished": ("toggled_on", False),
-    "ringing": ("toggled_on", True), "beeping": ("toggled_on", True), "playing": ("toggled_on", True),
-    "silent": ("toggled_on", False), "stopped": ("toggled_on", False), "idle": ("toggled_on", False),
-    "broken": ("broken", True), "cracked": ("broken", True),
-}
 #: words between a subject and its predicate that describe a current situation
 DESCRIPTIVE = frozenset(
     ["is", "are", "was", "were", "be", "been", "being", "am", "seem", "seems", "seemed", "look", "looks", "appear", "appears", "still", "already", "currently", "left", "lying", "lie", "lies", "sitting", "sit", "sits", "standing", "stand", "stands", "kept", "found", "dropped", "fallen", "ended", "up", "have", "has", "had", "got", "gotten", "remain", "remains", "remained", "now", "itself", "themselves", "just", "somehow", "accidentally", "again", "there", "here", "turned", "switched", "scattered", "sitting", "lays", "fell", "slipped", "rolled", "may", "might", "could", "possibly", "perhaps", "maybe", "probably", "sometimes", "will",
@@ -52,11 +43,6 @@ MOTION = frozenset(
      "laid", "thrown", "tossed", "loaded", "folded", "filed", "shelved", "stowed", "sorted", "tucked",
      "packed", "stacked", "transferred", "binned", "hanged", "set", "parked", "wiped", "refilled",
      "end"]  # "should end up on the rack"
-)
-#: action verbs before an object: a location after the object is a goal
-ACTIONS = frozenset(
-    ["put", "place", "move", "take", "bring", "return", "carry", "drop", "set", "lay", "stand", "hang", "throw", "toss", "tuck", "store", "stow", "leave", "fold", "bin", "transfer", "slide", "shove", "push", "pour", "empty", "fill", "refill", "sort", "give", "file", "load", "unload", "shelve",
-     "pack", "stack", "deliver"]
 )
 ARTICLES = frozenset({"the", "a", "an", "any", "some", "one", "of", "its", "their", "this", "that",
                       "these", "those", "every", "each", "your", "my", "our"})
@@ -82,26 +68,10 @@ SOURCE_VERBS = frozenset({"fill", "refill", "pour", "top", "water", "feed"})
 #: words that say an object is absent: "the roll is missing"
 ABSENT = frozenset({"missing", "absent", "gone", "lacking", "unavailable"})
 AVAILABILITY = frozenset({"available", "any", "present", "possible", "exist", "exists", "there"})
-PREP_ON = frozenset({"on", "onto", "atop", "upon"})
-PREP_IN = frozenset({"in", "inside", "into", "within"})
 SCENE_START = re.compile(r"^\W*([a-z' ,]{0,50}?\bthere (is|are)\b(?! (no|not|maybe|possibly))|you are\b|we are\b)",
                          re.I)
 
-_CONTRACTIONS = [
-    (r"\b(it|that|there|what|he|she)'s\b", r"\1 is"), (r"\b(they|we|you)'re\b", r"\1 are"),
-    (r"\bcan't\b", "can not"), (r"\bwon't\b", "will not"), (r"n't\b", " not"),
-    (r"\b(i|you|we|they)'ve\b", r"\1 have"), (r"\b(i|you|we|they|it)'ll\b", r"\1 will"),
-    (r"\b(\w+)s'(\s)", r"\1s\2"), (r"\b(\w+)'s\b", r"\1"),
-]
-_SENT = re.compile(r"(?<=[.!?;:])\s+|\n+|(?<=\))\s+(?=[A-Z])")
-_ABBREV = re.compile(r"\b(e\.g|i\.e|etc|approx|vs)\.", re.I)
 
-
-def _expand(text: str) -> str:
-    out = text.replace("\u2019", "'")
-    for pat, repl in _CONTRACTIONS:
-        out = re.sub(pat, repl, out, flags=re.I)
-    return out
 
 
 @dataclass(frozen=True)
@@ -167,11 +137,6 @@ class TaskAnalysis:
     group_roles: list[set[str]]
     other_roles: set[str]
 
-
-def _sentences(text: str) -> list[str]:
-    protected = _ABBREV.sub(lambda m: m.group(0).replace(".", "\u2024"), text)
-    parts = [p.strip().replace("\u2024", ".") for p in _SENT.split(protected)]
-    return [p for p in parts if p]
 
 
 _GENERIC = (r"whatever|anything|everything|something|all|(?:any|the|all the)\s+(?:items?|things?|objects?|stuff)"
@@ -379,7 +344,7 @@ class _Reader:
         return found
 
     def facts(self, text: str) -> tuple[list[Fact], tuple[str, ...]]:
-        toks = tokens(_expand(text))
+        toks = tokens(expand(text))
         words = [t[0] for t in toks]
         mentions = self.mentions(words, toks)
         subjects = [m for m in mentions if m.kind in ("role", "pronoun")]
@@ -692,7 +657,7 @@ class _Reader:
 
     def attribute_classes(self, text: str) -> dict[tuple[str, str], list[str]]:
         """Attribute values used as classes (`a red box for dolls`, `novels go on shelf one`)."""
-        toks = tokens(_expand(text))
+        toks = tokens(expand(text))
         words = [t[0] for t in toks]
         mentions = self.lex.find_mentions(toks)
         covered = {i for mm in mentions for i in range(mm.start, mm.end)}
@@ -780,14 +745,14 @@ def _copy(a: TaskAnalysis) -> TaskAnalysis:
 def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     lex = Lexicon.build(brief, catalog)
     reader = _Reader(lex)
-    sentences = _sentences(str(brief["description"]))
+    sentences = split_sentences(str(brief["description"]))
     clauses: list[Clause] = []
     grammatical = 0  # pieces split at ':' or ';' still belong to one sentence for grouping
     for si, sent in enumerate(sentences):
         for text, cue, role in _subsplit(_split_clauses(_apposition(sent))):
             # "should there be an umbrella: ..." - the cue itself says the object may be absent
             # "if we still have one (it lives in the vanity - ...)": a closing aside says where the
-            # object is kept (llm.placement), it asks nothing
+            # object is kept (offline.placement), it asks nothing
             said = _ASIDE.sub("", text) if role == "condition" and _ASIDE.sub("", text).strip() else text
             facts, names = reader.facts("there is " + said if cue == "should there be" else said)
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
@@ -930,14 +895,13 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
 
 def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Catalog,
                    slot_factor: dict[tuple[str, str, str], Factor]) -> list[Factor]:
-    """A placement the description states (`llm.placement`: "a coffee table with a mug on it", "a
+    """A placement the description states (`offline.placement`: "a coffee table with a mug on it", "a
     kitchen with a stove") is no uncertain location: its yes/no factor is dropped. So is where an
     object is kept ("it's kept in the vanity, unless someone stuffed it into the medicine
     cabinet"), and a factor listing the places it may be has no "elsewhere" — unless the text
     speaks of one ("wherever else it may be lying")."""
-    from logicenveval.llm.placement import described_placements  # reads sentences with this module
 
-    low = " ".join(w for w, _, _ in tokens(_expand(str(brief.get("description", "")))))
+    low = " ".join(w for w, _, _ in tokens(expand(str(brief.get("description", "")))))
     elsewhere = any(re.search(rf"\b{cue}\b", low) for cue in ELSEWHERE + ("wherever",))
     settled = set(described_placements(brief, catalog, kinds=frozenset({"settled"} | (
         set() if elsewhere else {"kept"}))))
@@ -963,7 +927,7 @@ def _contrasted(clauses: list[Clause], text: str) -> set[tuple[str, str]]:
     `other` objects of its sort (`any other document`)."""
     polarity: dict[tuple[str, str], set[bool]] = {}
     out: set[tuple[str, str]] = set()
-    low = " " + " ".join(w for w, _, _ in tokens(_expand(text))) + " "
+    low = " " + " ".join(w for w, _, _ in tokens(expand(text))) + " "
     for cl in clauses:
         for f in cl.facts:
             if not f.derived:

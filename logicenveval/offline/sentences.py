@@ -1,0 +1,57 @@
+"""Word tables and sentence splitting both readers of a description share: the factor reader
+(`offline.analysis`) and the placement reader (`offline.placement`) read with the same states,
+action verbs, prepositions, contractions and sentences."""
+
+from __future__ import annotations
+
+import re
+
+#: adjective/participle -> (state flag, polarity)
+STATE_WORDS: dict[str, tuple[str, bool]] = {
+    "open": ("open", True), "opened": ("open", True), "ajar": ("open", True),
+    "closed": ("open", False), "shut": ("open", False),
+    "on": ("toggled_on", True), "lit": ("toggled_on", True), "running": ("toggled_on", True),
+    "burning": ("toggled_on", True), "off": ("toggled_on", False),
+    "dirty": ("dirty", True), "stained": ("dirty", True), "messy": ("dirty", True),
+    "dusty": ("dirty", True), "muddy": ("dirty", True), "greasy": ("dirty", True),
+    "sticky": ("dirty", True), "used": ("dirty", True), "clean": ("dirty", False),
+    "spotless": ("dirty", False), "wet": ("wet", True), "damp": ("wet", True),
+    "soaked": ("wet", True), "soggy": ("wet", True), "dry": ("wet", False),
+    "full": ("filled", True), "filled": ("filled", True), "empty": ("filled", False),
+    "cooked": ("cooked", True), "raw": ("cooked", False), "sliced": ("sliced", True),
+    "out": ("toggled_on", False), "extinguished": ("toggled_on", False),
+    "ringing": ("toggled_on", True), "beeping": ("toggled_on", True), "playing": ("toggled_on", True),
+    "silent": ("toggled_on", False), "stopped": ("toggled_on", False), "idle": ("toggled_on", False),
+    "broken": ("broken", True), "cracked": ("broken", True),
+}
+#: action verbs before an object: a location after the object is a goal
+ACTIONS = frozenset(
+    ["put", "place", "move", "take", "bring", "return", "carry", "drop", "set", "lay", "stand", "hang", "throw", "toss", "tuck", "store", "stow", "leave", "fold", "bin", "transfer", "slide", "shove", "push", "pour", "empty", "fill", "refill", "sort", "give", "file", "load", "unload", "shelve",
+     "pack", "stack", "deliver"]
+)
+PREP_ON = frozenset({"on", "onto", "atop", "upon"})
+PREP_IN = frozenset({"in", "inside", "into", "within"})
+
+_CONTRACTIONS = [
+    (r"\b(it|that|there|what|he|she)'s\b", r"\1 is"), (r"\b(they|we|you)'re\b", r"\1 are"),
+    (r"\bcan't\b", "can not"), (r"\bwon't\b", "will not"), (r"n't\b", " not"),
+    (r"\b(i|you|we|they)'ve\b", r"\1 have"), (r"\b(i|you|we|they|it)'ll\b", r"\1 will"),
+    (r"\b(\w+)s'(\s)", r"\1s\2"), (r"\b(\w+)'s\b", r"\1"),
+]
+_SENT = re.compile(r"(?<=[.!?;:])\s+|\n+|(?<=\))\s+(?=[A-Z])")
+_ABBREV = re.compile(r"\b(e\.g|i\.e|etc|approx|vs)\.", re.I)
+
+
+def expand(text: str) -> str:
+    """The text with contractions spelled out ("it's" -> "it is") and possessives dropped."""
+    out = text.replace("\u2019", "'")
+    for pat, repl in _CONTRACTIONS:
+        out = re.sub(pat, repl, out, flags=re.I)
+    return out
+
+
+def split_sentences(text: str) -> list[str]:
+    """The text's sentences (and `;`/`:`-separated parts), abbreviations kept whole."""
+    protected = _ABBREV.sub(lambda m: m.group(0).replace(".", "\u2024"), text)
+    parts = [p.strip().replace("\u2024", ".") for p in _SENT.split(protected)]
+    return [p for p in parts if p]
