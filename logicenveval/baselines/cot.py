@@ -12,8 +12,7 @@ from logicenveval.baselines.drafts import env_from_draft
 from logicenveval.baselines.replies import (
     WrittenEnvironmentsReply,
     dropped_relations,
-    written_slots,
-    written_words,
+    written_vocabulary,
 )
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.base import (
@@ -42,17 +41,15 @@ class CoT:
         draft that repeats an earlier one (its situation aside) is a failed attempt named as a
         copy: the method was asked for distinct environments, and copies would count as
         coverage-neutral environments that raise PhyPR and SceVR for free."""
+        categories = ctx.catalog.generator_categories()
         payload = {"task": brief.model_dump(mode="json"), "n_environments": self.max_environments,
-                   "categories": ctx.catalog.generator_categories()}
+                   "categories": categories}
         ids = [f"{self.name}-{i:02d}" for i in range(self.max_environments)]
         ctx.plan_attempts(self.max_environments)
         try:
-            protocol = protocol_of(ctx.model)
-            vocabulary = written_slots(sorted(brief.roles), self.max_environments) if protocol >= 4 else None
-            if vocabulary is not None and protocol >= 5:  # the scene's words, as every method's
-                vocabulary.update(written_words(brief, ctx.catalog.generator_categories()))
             reply = ask(ctx.model, "cot_environments", payload, WrittenEnvironmentsReply, seed=ctx.seed,
-                        vocabulary=vocabulary)
+                        vocabulary=written_vocabulary(brief, self.max_environments, categories,
+                                                      protocol_of(ctx.model)))
         except LogicEnvEvalError as exc:
             return GenerationResult(
                 failures=[GenerationFailure(stage="cot_environments", message=str(exc))],

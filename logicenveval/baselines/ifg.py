@@ -16,8 +16,7 @@ from logicenveval.baselines.replies import (
     IntentWire,
     WrittenEnvironmentsReply,
     dropped_relations,
-    written_slots,
-    written_words,
+    written_vocabulary,
 )
 from logicenveval.errors import ConfigError, LogicEnvEvalError
 from logicenveval.generators.base import (
@@ -58,7 +57,8 @@ class IFG:
         seeds = [int(s) for s in ctx.rng.integers(0, 2**31 - 1, size=self.k + 1)]
         ids = [f"{self.name}-{i:02d}" for i in range(self.k)]
         ctx.plan_attempts(self.k)
-        if protocol_of(ctx.model) >= 5:
+        protocol = protocol_of(ctx.model)
+        if protocol >= 5:
             # one request per intent, each with a seed of its own (drawn after the k + 1 above,
             # so the environments' seeds are those of earlier protocols)
             intent_seeds = [int(s) for s in ctx.rng.integers(0, 2**31 - 1, size=self.k)]
@@ -76,10 +76,8 @@ class IFG:
             missing = f"the intents reply gave {len(intents)} of the {self.k} intents asked for"
             lost = {i: missing for i in range(len(intents), self.k)}
         categories = ctx.catalog.generator_categories()
-        # one environment per intent, bounded from protocol 4 on (`written_slots`)
-        slots = written_slots(sorted(brief.roles), 1) if protocol_of(ctx.model) >= 4 else None
-        if slots is not None and protocol_of(ctx.model) >= 5:  # the scene's words, as every method's
-            slots.update(written_words(brief, categories))
+        # one environment per intent
+        slots = written_vocabulary(brief, 1, categories, protocol)
         envs = []
         failures = []
         attempts = []
@@ -101,7 +99,7 @@ class IFG:
                 attempts.append(Attempt(id=env_id, target=target, stage="ifg_environment", reason=str(exc)))
                 continue
             attempts.append(Attempt(id=env_id, target=target, env_id=env_id))
-        stage = "ifg_intent" if protocol_of(ctx.model) >= 5 else "ifg_intents"
+        stage = "ifg_intent" if protocol >= 5 else "ifg_intents"
         attempts += [Attempt(id=ids[i], stage=stage, reason=why) for i, why in lost.items()]
         attempts.sort(key=lambda a: ids.index(a.id))
         if stage == "ifg_intent":  # each lost intent failed on its own request: said apiece

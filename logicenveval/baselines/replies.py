@@ -27,11 +27,11 @@ from logicenveval.llm.replies import (
     SelectionWire,
     bind_objects,
     object_slots,
+    unique_bound,
 )
 from logicenveval.llm.structured import LiteralDraft, literal_text
 from logicenveval.llm.vocab import AT_MOST, CONTEXT_KEY, scene_vocabulary
 from logicenveval.model.conditions import STATE_FLAGS
-from logicenveval.model.repeats import repeated
 from logicenveval.model.task import TaskBrief
 
 _F = ConfigDict(frozen=True, extra="ignore")
@@ -89,11 +89,21 @@ class WrittenEnvironment(JudgedRelations):
         vocabulary = (info.context or {}).get(CONTEXT_KEY) or {}
         if not meaning.enabled(info.context) or "categories" not in vocabulary:
             return self
-        twice = repeated([o.id for o in self.objects])
-        if twice:
-            raise MeaningError(f"object ids must be unique in an environment; repeated: {twice}")
-        bound = bind_objects(list(self.objects), info)
+        bound = unique_bound(self.objects, info, error=MeaningError)
         return self if bound == list(self.objects) else self.model_copy(update={"objects": bound})
+
+
+def written_vocabulary(brief: TaskBrief, environments: int, categories: Sequence[str],
+                       protocol: int) -> dict[str, Any] | None:
+    """What CoT's and IFG's written-environment requests are asked in: nothing before protocol
+    4, its bounds (`written_slots`) from 4 on, and the scene's words too (`written_words`) from
+    5 on, as every method's scene is."""
+    if protocol < 4:
+        return None
+    vocabulary: dict[str, Any] = written_slots(sorted(brief.roles), environments)
+    if protocol >= 5:
+        vocabulary.update(written_words(brief, categories))
+    return vocabulary
 
 
 def written_words(brief: TaskBrief, categories: Sequence[str]) -> dict[str, Any]:

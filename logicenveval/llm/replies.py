@@ -213,19 +213,25 @@ def bind_objects(objects: list[ObjectDraft], info: ValidationInfo) -> list[Objec
     return bound
 
 
+def unique_bound(objects: Sequence[ObjectDraft], info: ValidationInfo, *,
+                 error: type[ValueError] = ValueError) -> list[ObjectDraft]:
+    """A scene's objects under unique ids (else `error` names the repeated ones: two objects
+    under one id cannot both be placed; a real small model named two objects `living_room`),
+    with every role bound (`bind_objects`): the check of every method's scene objects."""
+    twice = repeated([o.id for o in objects])
+    if twice:
+        raise error(f"object ids must be unique; repeated: {twice}")
+    return bind_objects(list(objects), info)
+
+
 class ObjectsReply(BaseModel):
     model_config = _F
     objects: list[ObjectDraft] = Field(min_length=1, max_length=60, json_schema_extra={AT_LEAST: "required_roles"})
 
     @model_validator(mode="after")
     def _unique_ids(self, info: ValidationInfo) -> ObjectsReply:
-        """Two objects under one id cannot both be placed: refused here, so the model is asked
-        again (a real small model named two objects `living_room`)."""
-        ids = [o.id for o in self.objects]
-        twice = repeated(ids)
-        if twice:
-            raise ValueError(f"object ids must be unique; repeated: {twice}")
-        bound = bind_objects(list(self.objects), info)
+        """Refused here (`unique_bound`), so the model is asked again."""
+        bound = unique_bound(self.objects, info)
         return self if bound == list(self.objects) else self.model_copy(update={"objects": bound})
 
 
