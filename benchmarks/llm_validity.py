@@ -94,10 +94,11 @@ def portable_model(spec: str) -> str:
 
 def pack_protocol(config: dict[str, Any]) -> int:
     """The request protocol a pack was recorded with (`llm.ask.PROTOCOL`): its `--model-args
-    protocol=N`, or 1 for a pack recorded before issue 39, whose config names none."""
-    from logicenveval.llm.registry import parse_model_args
+    protocol=N`, or 1 for a pack recorded before issue 39, whose config names none
+    (`runner.config.recorded_protocol`, what `replay:` of the pack asks with)."""
+    from logicenveval.runner.config import recorded_protocol
 
-    return int(parse_model_args(config.get("model_args") or "").get("protocol", 1))
+    return recorded_protocol(config)
 
 
 def same_metrics(a: dict[str, Any], b: dict[str, Any]) -> bool:

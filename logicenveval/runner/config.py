@@ -9,7 +9,7 @@ from __future__ import annotations
 import hashlib
 import json
 import re
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any, Literal
 
@@ -181,12 +181,20 @@ def recorded_setup(model: object) -> RecordedSetup | None:
         config = data.get("config", data) if isinstance(data, dict) else None
         if not isinstance(config, dict) or config.get("brief") not in ("roles", "description"):
             continue
-        protocol = data.get("protocol")
-        if not isinstance(protocol, int) or isinstance(protocol, bool):
-            match = re.search(r"(?:^|,)\s*protocol\s*=\s*(\d+)", str(config.get("model_args") or ""))
-            protocol = int(match.group(1)) if match else 1
-        return RecordedSetup(brief=config["brief"], protocol=protocol, source=str(path))
+        return RecordedSetup(brief=config["brief"], protocol=recorded_protocol(data), source=str(path))
     return None
+
+
+def recorded_protocol(data: Mapping[str, Any]) -> int:
+    """The request protocol of a recorded run, from its `results.json` (or `config.json`) data:
+    its `protocol`, else its `protocol=` model argument, else 1 (a run recorded before protocols
+    were named, issue 39)."""
+    protocol = data.get("protocol")
+    if isinstance(protocol, int) and not isinstance(protocol, bool):
+        return protocol
+    config = data.get("config", data)
+    named = _model_args(config.get("model_args") if isinstance(config, Mapping) else None).get("protocol", 1)
+    return named if isinstance(named, int) and not isinstance(named, bool) else 1
 
 
 def _redact(model_args: str) -> str:
