@@ -9,7 +9,7 @@ the environment, like an unknown state flag (`model.envspec.unknown_state_flags`
 
 from __future__ import annotations
 
-from logicenveval.domain.catalog import Catalog
+from logicenveval.domain.catalog import Catalog, per_catalog
 from logicenveval.model.conditions import atoms, parse
 from logicenveval.model.task import Task
 
@@ -17,12 +17,17 @@ from logicenveval.model.task import Task
 ALWAYS = frozenset({"purpose"})
 
 
+@per_catalog
+def _catalog_keys(catalog: Catalog) -> frozenset[str]:
+    """Every category's attribute domain keys, worked out once per catalog (the scorer asks for
+    each environment it judges)."""
+    return frozenset(key for category in catalog.categories.values() for key in category.attributes or {})
+
+
 def attribute_keys(task: Task, catalog: Catalog) -> frozenset[str]:
     """The catalog's attribute domains (every category's), the task's roles' attributes and the
     keys its conditions (variables and constraints) read, and `ALWAYS`."""
-    keys = set(ALWAYS)
-    for category in catalog.categories.values():
-        keys |= set(category.attributes or {})
+    keys = set(ALWAYS) | _catalog_keys(catalog)
     for role in task.roles.values():
         keys |= set(role.attributes)
     texts = [text for var in task.variables.values() for text in var.values.values()]

@@ -214,15 +214,23 @@ def unknown_state_flags(env: EnvSpec) -> list[str]:
     replies put their schema's own words there (`"states": {"additionalProperties": false}`:
     9 of Qwen2.5-Coder-1.5B's 11 scenes). A problem of the environment, as an unbound role is:
     `lint` reports it and the scorer counts the environment ill-formed."""
-    known = set(STATE_FLAGS)
-    return [f"object {o.id} states unknown state flag(s) {sorted(set(o.states) - known)} "
-            f"(state flags are {', '.join(STATE_FLAGS)})"
-            for o in env.objects if set(o.states) - known]
+    return _unknown(env, "states", STATE_FLAGS, "state flag(s)", f"state flags are {', '.join(STATE_FLAGS)}")
 
 
 def unknown_attribute_keys(env: EnvSpec, known: Collection[str]) -> list[str]:
     """One problem per object that states an attribute key outside `known` (for a task:
     `domain.attributes.attribute_keys`), as `unknown_state_flags` does for state flags."""
-    return [f"object {o.id} states unknown attribute(s) {sorted(set(o.attributes) - set(known))} "
-            f"(attributes a task can read: {', '.join(sorted(known))})"
-            for o in env.objects if set(o.attributes) - set(known)]
+    return _unknown(env, "attributes", known, "attribute(s)",
+                    f"attributes a task can read: {', '.join(sorted(known))}")
+
+
+def _unknown(env: EnvSpec, field: Literal["states", "attributes"], known: Collection[str], what: str,
+             listed: str) -> list[str]:
+    """`object <id> states unknown <what> [...] (<listed>)` per object whose `field` has keys
+    outside `known`."""
+    out = []
+    for o in env.objects:
+        unknown = sorted(set(getattr(o, field)) - set(known))
+        if unknown:
+            out.append(f"object {o.id} states unknown {what} {unknown} ({listed})")
+    return out
