@@ -17,6 +17,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, model_validat
 from logicenveval.llm import meaning
 from logicenveval.llm.meaning import MeaningError
 from logicenveval.llm.replies import (
+    FactTrajectoryWire,
     JudgedRelations,
     ObjectDraft,
     OtherObjects,
@@ -29,7 +30,7 @@ from logicenveval.llm.replies import (
     object_slots,
     unique_bound,
 )
-from logicenveval.llm.structured import LiteralDraft, literal_text
+from logicenveval.llm.structured import literal_text
 from logicenveval.llm.vocab import AT_MOST, CONTEXT_KEY, scene_vocabulary
 from logicenveval.model.conditions import STATE_FLAGS
 from logicenveval.model.task import TaskBrief
@@ -126,16 +127,11 @@ class WrittenEnvironmentsReply(BaseModel):
     environments: list[WrittenEnvironment] = Field(min_length=1, json_schema_extra={AT_MOST: "environment_slots"})
 
 
-class IntentWire(BaseModel):
+class IntentWire(FactTrajectoryWire):
     """One intent of IFG's stage 1 (protocol 5): a situation of the task, as the literals that
     hold initially, each bound to the task's roles, rooms and flags like LogicEnvGen's factors
     (`llm.structured`), so `not attr(cabinet, opened)` cannot be written; a literal stated both
     ways is refused (re-asked) as no situation."""
-
-    model_config = _F
-    description: str = Field(max_length=300, description="the situation in words")
-    facts: list[LiteralDraft] = Field(default_factory=list, max_length=24,
-                                      description="what holds initially in this situation")
 
     @model_validator(mode="after")
     def _consistent(self, info: ValidationInfo) -> IntentWire:
