@@ -101,3 +101,14 @@ def test_run_records_the_brief_and_binds_roles(tmp_path: Path) -> None:
 def test_description_brief_with_the_oracle_is_refused(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["run", "--model", "oracle", "--brief", "description", "--tasks", TASK]) == 2
     assert "--brief description cannot be used with --model oracle" in capsys.readouterr().err
+
+
+def test_the_oracle_reads_the_runs_own_tasks_folder(tmp_path: Path) -> None:
+    """`run --model oracle --tasks-dir D` answers from D's GT plans without `--model-args
+    tasks_dir=`: a task only D holds gets its GT trees (LogCov 100 with the oracle)."""
+    folder = Path(__file__).parent / "data" / "reader_dev" / "tasks_new"
+    out = tmp_path / "runs"
+    assert main(["run", "--model", "oracle", "--tasks-dir", str(folder), "--tasks", "garage_lock_up",
+                 "--generators", "logicenvgen", "--output", str(out), "--run-id", "o", "--quiet"]) == 0
+    results = json.loads((out / "o" / "results.json").read_text(encoding="utf-8"))
+    assert results["results"]["logicenvgen"]["logcov"] == pytest.approx(1.0)

@@ -423,8 +423,8 @@ def _run_unit(spec: UnitSpec) -> UnitRecord:
     model: ChatModel | None = None
     ctx: GenerationContext | None = None
     try:
-        watched = _Watched(make_model(spec.model, with_unit_budget(spec.model, spec.model_args,
-                                                                   spec.unit_timeout),
+        watched = _Watched(make_model(spec.model, _oracle_tasks(spec, with_unit_budget(
+                                          spec.model, spec.model_args, spec.unit_timeout)),
                                       cache_path=spec.cache,
                                       no_cache=spec.no_cache, run_dir=run_dir))
         model = watched
@@ -616,6 +616,15 @@ def _write(run_dir: Path, rel: Path, text: str, files: dict[str, str]) -> None:
 #: parsed tasks of this process by (folder, id, inode, size, mtime): a worker reads a task once
 #: for all its units (a task's units travel together, `runner.schedule`) and their figures
 _TASKS: dict[tuple[str | None, str, int, int, int], Task] = {}
+
+
+def _oracle_tasks(spec: UnitSpec, kwargs: dict[str, Any]) -> dict[str, Any]:
+    """The oracle reads its GT plans from the run's own tasks folder (`--tasks-dir`), unless
+    `--model-args tasks_dir=` says otherwise: a run of another folder answered from the built-in
+    tasks would be refused for an unknown task, or worse, score another task's plans."""
+    if spec.model == "oracle" and spec.tasks_dir and "tasks_dir" not in kwargs:
+        return {**kwargs, "tasks_dir": spec.tasks_dir}
+    return kwargs
 
 
 def _task(task_id: str, directory: str | None) -> Task:
