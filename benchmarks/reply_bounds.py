@@ -23,7 +23,7 @@ from collections.abc import Sequence
 from logicenveval.llm.ask import PER_ITEM_TOKENS
 from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.replies import MAX_OTHER_OBJECTS
-from logicenveval.offline.handlers import _HANDLERS
+from logicenveval.offline.handlers import answer_for
 from logicenveval.offline.model import OfflineModel
 
 CHARS_PER_TOKEN = 3.5
@@ -49,7 +49,7 @@ class Measuring(OfflineModel):
             self.largest[kind] = (size, self.task)
 
     def complete(self, request: ChatRequest) -> str:
-        handler = _HANDLERS.get(request.kind)
+        handler = answer_for(request.kind)
         if handler is not None:
             reply = handler(request.payload, request)
             self._keep(request.kind, len(json.dumps(reply, separators=(",", ":"))))

@@ -21,3 +21,13 @@ def handler(kind: str) -> Callable[[Handler], Handler]:
         return fn
 
     return register
+
+
+def answer_for(kind: str) -> Handler | None:
+    """The registered answer to `kind`, or None (the model names the known kinds in its error)."""
+    return _HANDLERS.get(kind)
+
+
+def known_kinds() -> list[str]:
+    """Every request kind the offline model answers, sorted."""
+    return sorted(_HANDLERS)

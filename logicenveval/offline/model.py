@@ -13,7 +13,7 @@ from logicenveval.errors import ConfigError
 from logicenveval.llm.base import ChatRequest, ModelStats
 from logicenveval.llm.bounds import fit_arrays
 from logicenveval.offline import baseline_answers, naming, plan, scene_answers  # noqa: F401  (they register their answers)
-from logicenveval.offline.handlers import _HANDLERS
+from logicenveval.offline.handlers import answer_for, known_kinds
 
 
 class OfflineModel:
@@ -25,11 +25,11 @@ class OfflineModel:
         self.stats = stats or ModelStats()
 
     def complete(self, request: ChatRequest) -> str:
-        fn = _HANDLERS.get(request.kind)
+        fn = answer_for(request.kind)
         if fn is None:
             raise ConfigError(f"the offline model cannot answer {request.kind!r} requests",
                               field="--model",
-                              hint="known kinds: " + ", ".join(sorted(_HANDLERS)))
+                              hint="known kinds: " + ", ".join(known_kinds()))
         self.stats.add(requests=1)
         # within the schema's list bounds, as a grammar-constrained model must write (llm.bounds)
         return json.dumps(fit_arrays(fn(request.payload, request), request.schema))
