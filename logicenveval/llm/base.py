@@ -65,6 +65,12 @@ class ModelStats:
     prompt_tokens: int = 0
     completion_tokens: int = 0
     latency_s: float = 0.0
+    #: what the replies served from a cache cost when they were recorded (`llm.cache`): replies
+    #: with a known cost, their tokens and seconds (a replayed pack reports its recording's cost)
+    recorded_replies: int = 0
+    recorded_prompt_tokens: int = 0
+    recorded_completion_tokens: int = 0
+    recorded_seconds: float = 0.0
     #: per request kind: questions asked, attempts sent, valid first replies, valid after
     #: re-asks, attempts cut at max_tokens (`ask` counts them; reported as results.json `llm`)
     by_kind: dict[str, dict[str, int]] = field(default_factory=dict)

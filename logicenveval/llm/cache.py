@@ -5,6 +5,13 @@ no lock or side file is created), so replaying never changes its input, even on 
 
 The key is a SHA-256 of the canonical JSON of (provider, model, kind, messages, schema,
 temperature, seed), so any change to a prompt template or schema is a miss, never a stale hit.
+
+Each reply keeps what it cost when it was recorded (prompt and completion tokens, seconds): a
+replay serves the reply at no cost, and reports the recorded cost beside it (`recorded_*`
+counters, results.json `timing.per_task`), so a user planning a run on a slow model reads what
+each method asked of each task from any pack. Caches written before these columns serve as
+before (their recorded cost is unknown and counted as such) and gain the columns when opened
+for writing.
 """
 
 from __future__ import annotations
@@ -18,6 +25,7 @@ import threading
 import time
 import urllib.parse
 from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 from typing import TypeVar
 
@@ -31,8 +39,13 @@ CREATE TABLE IF NOT EXISTS replies (
   model TEXT NOT NULL,
   kind TEXT NOT NULL,
   reply TEXT NOT NULL,
-  created REAL NOT NULL
+  created REAL NOT NULL,
+  prompt_tokens INTEGER,
+  completion_tokens INTEGER,
+  seconds REAL
 )"""
+#: what a reply cost when it was recorded (nullable: added after the first packs were written)
+COST_COLUMNS = (("prompt_tokens", "INTEGER"), ("completion_tokens", "INTEGER"), ("seconds", "REAL"))
 #: the columns a reply cache must have to serve replies
 COLUMNS = frozenset({"key", "provider", "model", "reply"})
 
@@ -126,15 +139,41 @@ class ReplyCache:
         return conn
 
     def get(self, key: str) -> str | None:
-        row = _retrying(lambda: self._conn().execute(
-            "SELECT reply FROM replies WHERE key = ?", (key,)).fetchone())
-        return None if row is None else str(row[0])
+        hit = self.get_recorded(key)
+        return None if hit is None else hit[0]
 
-    def put(self, key: str, provider: str, model: str, kind: str, reply: str) -> None:
+    def get_recorded(self, key: str) -> tuple[str, RecordedCost | None] | None:
+        """The reply and what it cost when recorded (None when the cache predates the columns
+        or the model reported no usage)."""
+        def read() -> tuple[str, RecordedCost | None] | None:
+            conn = self._conn()
+            if not self._has_cost(conn):
+                row = conn.execute("SELECT reply FROM replies WHERE key = ?", (key,)).fetchone()
+                return None if row is None else (str(row[0]), None)
+            row = conn.execute("SELECT reply, prompt_tokens, completion_tokens, seconds FROM replies "
+                               "WHERE key = ?", (key,)).fetchone()
+            if row is None:
+                return None
+            cost = None if row[3] is None else RecordedCost(int(row[1] or 0), int(row[2] or 0), float(row[3]))
+            return str(row[0]), cost
+        return _retrying(read)
+
+    def _has_cost(self, conn: sqlite3.Connection) -> bool:
+        known: bool | None = getattr(self._local, "has_cost", None)
+        if known is None or getattr(self._local, "cost_conn", None) is not conn:
+            columns = {str(row[1]) for row in conn.execute("PRAGMA table_info(replies)")}
+            known = all(name in columns for name, _ in COST_COLUMNS)
+            self._local.has_cost, self._local.cost_conn = known, conn
+        return known
+
+    def put(self, key: str, provider: str, model: str, kind: str, reply: str,
+            cost: RecordedCost | None = None) -> None:
+        c = cost or RecordedCost(None, None, None)
         _retrying(lambda: self._conn().execute(
-            "INSERT OR REPLACE INTO replies (key, provider, model, kind, reply, created) "
-            "VALUES (?, ?, ?, ?, ?, ?)",
-            (key, provider, model, kind, reply, time.time()),
+            "INSERT OR REPLACE INTO replies (key, provider, model, kind, reply, created, "
+            "prompt_tokens, completion_tokens, seconds) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
+            (key, provider, model, kind, reply, time.time(), c.prompt_tokens, c.completion_tokens,
+             None if c.seconds is None else round(c.seconds, 3)),
         ))
 
     def __len__(self) -> int:
@@ -169,12 +208,33 @@ class ReplyCache:
 
 
 def _prepare(conn: sqlite3.Connection) -> None:
-    """WAL mode (set once per file: it persists), then the table."""
+    """WAL mode (set once per file: it persists), then the table, with the cost columns added to
+    a cache written before them (its rows keep a null cost)."""
     mode = conn.execute("PRAGMA journal_mode").fetchone()[0]
     if str(mode).lower() != "wal":
         conn.execute("PRAGMA journal_mode=WAL")
     conn.execute("PRAGMA synchronous=NORMAL")
     conn.execute(_SCHEMA)
+    columns = {str(row[1]) for row in conn.execute("PRAGMA table_info(replies)")}
+    for name, sql_type in COST_COLUMNS:
+        if name not in columns:
+            conn.execute(f"ALTER TABLE replies ADD COLUMN {name} {sql_type}")
+
+
+@dataclass(frozen=True)
+class RecordedCost:
+    """What one reply cost the model that wrote it: tokens as its server counted them, seconds
+    of the request (retries included)."""
+
+    prompt_tokens: int | None
+    completion_tokens: int | None
+    seconds: float | None
+
+    def counters(self) -> dict[str, float]:
+        """The `recorded_*` counters of `ModelStats` for one reply served from the cache."""
+        return {"recorded_replies": 1, "recorded_prompt_tokens": self.prompt_tokens or 0,
+                "recorded_completion_tokens": self.completion_tokens or 0,
+                "recorded_seconds": self.seconds or 0.0}
 
 
 class CachedModel:
@@ -192,13 +252,18 @@ class CachedModel:
 
     def complete(self, request: ChatRequest) -> str:
         key = cache_key(self.provider, self.cache_name, request)
-        hit = self.cache.get(key)
+        hit = self.cache.get_recorded(key)
         if hit is not None:
-            self.stats.add(cache_hits=1)
-            return hit
+            self.stats.add(cache_hits=1, **(hit[1].counters() if hit[1] else {}))
+            return hit[0]
         self.stats.add(cache_misses=1)
+        before = (self.stats.prompt_tokens, self.stats.completion_tokens)
+        start = time.perf_counter()
         reply = well_formed(self.inner.complete(request))
-        self.cache.put(key, self.provider, self.cache_name, request.kind, reply)
+        # the unit's counters around the request: one model per unit asks one request at a time
+        cost = RecordedCost(self.stats.prompt_tokens - before[0], self.stats.completion_tokens - before[1],
+                            time.perf_counter() - start)
+        self.cache.put(key, self.provider, self.cache_name, request.kind, reply, cost)
         return reply
 
     def preflight(self) -> None:
@@ -218,7 +283,7 @@ class ReplayModel:
         self.stats = stats
 
     def complete(self, request: ChatRequest) -> str:
-        hit = self.cache.get(cache_key(self.provider, self.name, request))
+        hit = self.cache.get_recorded(cache_key(self.provider, self.name, request))
         if hit is None:
             self.stats.add(cache_misses=1)
             raise CacheMissError(
@@ -227,8 +292,8 @@ class ReplayModel:
                 hint="replay with the same model args, seed and prompts as the recorded run "
                 "(pass replay_model=<provider:model> if it differs)",
             )
-        self.stats.add(cache_hits=1)
-        return hit
+        self.stats.add(cache_hits=1, **(hit[1].counters() if hit[1] else {}))
+        return hit[0]
 
     def preflight(self) -> None:
         self.cache.check(writable=False)

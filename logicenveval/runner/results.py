@@ -175,7 +175,8 @@ def build_results(
 
 
 #: what one unit cost, per generator and task (results.json `timing.per_task`)
-COST_KEYS = ("requests", "cache_hits", "reasks", "prompt_tokens", "completion_tokens", "latency_s")
+COST_KEYS = ("requests", "cache_hits", "reasks", "prompt_tokens", "completion_tokens", "latency_s",
+             "recorded_replies", "recorded_prompt_tokens", "recorded_completion_tokens", "recorded_seconds")
 
 
 def unit_cost(unit: UnitRecord) -> dict[str, float]:
