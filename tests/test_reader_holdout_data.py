@@ -19,6 +19,8 @@ from test_reader_dev_data import _mentions, _names
 
 from logicenveval.benchmark import load_task, load_tasks, task_ids
 from logicenveval.benchmark_validation import validate_task
+from logicenveval.domain.catalog import load_catalog
+from logicenveval.faults.score import shipped_is_current
 
 DATA = Path(__file__).parent / "data"
 HOLDOUT = DATA / "reader_holdout"
@@ -107,6 +109,14 @@ def test_every_task_ships_its_four_policies() -> None:
     for folder in (REWORDED, NEW):
         for task in load_tasks(folder):
             assert set(task.policies) == {"correct", "counterfactual", "unreachable", "lackbranch"}, task.id
+
+
+def test_every_task_ships_a_current_mutant_list() -> None:
+    """`killable_mutants.json` is keyed by the task (its description too): a rewording edited
+    without `tasks mutants --write` would make every run classify it afresh."""
+    stale = [f"{folder.name}/{task.id}" for folder in (REWORDED, NEW) for task in load_tasks(folder)
+             if not shipped_is_current(task, folder, load_catalog())]
+    assert not stale, f"run `python -m logicenveval tasks mutants --write --tasks-dir ...` for {stale}"
 
 
 @pytest.mark.parametrize(("folder", "task_id"), [(NEW, "den_game_night"), (REWORDED, "laundry_sorting_h1")])
