@@ -27,7 +27,8 @@ HOLDOUT = DATA / "reader_holdout"
 REWORDED = HOLDOUT / "tasks_reworded"
 NEW = HOLDOUT / "tasks_new"
 DEV = DATA / "reader_dev"
-BUILTIN = Path(__file__).resolve().parents[1] / "benchmark_data" / "tasks"
+ROOT = Path(__file__).resolve().parents[1]
+BUILTIN = ROOT / "benchmark_data" / "tasks"
 ENTRIES: list[dict[str, object]] = json.loads((HOLDOUT / "rewordings.json").read_text(encoding="utf-8"))["rewordings"]
 DEV_ENTRIES: list[dict[str, object]] = json.loads((DEV / "rewordings.json").read_text(encoding="utf-8"))["rewordings"]
 
@@ -50,8 +51,19 @@ def test_ids_do_not_collide_with_the_dev_set_or_the_builtin_tasks() -> None:
     assert not (set(task_ids(REWORDED)) | set(task_ids(NEW))) & taken
 
 
-def test_reworded_folders_are_built_from_the_json() -> None:
+def test_reworded_folders_are_built_from_the_json(tmp_path: Path) -> None:
+    """The folders are exactly what `tools/build_reworded_tasks.py --set reader_holdout` writes."""
+    import importlib.util
+
     assert sorted(str(e["id"]) for e in ENTRIES) == task_ids(REWORDED)
+    spec = importlib.util.spec_from_file_location("build_reworded_tasks", ROOT / "tools" / "build_reworded_tasks.py")
+    assert spec is not None and spec.loader is not None
+    tool = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(tool)
+    tool.build(ENTRIES, tmp_path)
+    for entry in ENTRIES:
+        built = (tmp_path / str(entry["id"]) / "task.json").read_bytes()
+        assert built == (REWORDED / str(entry["id"]) / "task.json").read_bytes(), entry["id"]
 
 
 @pytest.mark.parametrize("entry", ENTRIES, ids=[str(e["id"]) for e in ENTRIES])
