@@ -1,14 +1,16 @@
-"""Write the reworded built-in tasks of the reader's development set as complete task folders.
+"""Write the reworded built-in tasks of the reader's test sets as complete task folders.
 
-`tests/data/reader_dev/rewordings.json` holds each rewording once: its new task id, the built-in
+A set is a folder under `tests/data/`: the development set `reader_dev` (the default) or the
+held-out set `reader_holdout`. Its `rewordings.json` holds each rewording once: its new task id, the built-in
 task it rewords, its register, the new description and, for every constraint fact of the
 original, the words of the new description that assert it (`says` must quote the description,
 docs/task-format.md). A task's policies must lie inside its own folder (`benchmark.policy_path`),
-so each folder gets a copy of the original's four BTs; `tests/test_reader_dev_data.py` checks that
-every copy still equals its original and that nothing but `id`, `description` and the constraints'
-`says` differs.
+so each folder gets a copy of the original's four BTs; `tests/test_reader_dev_data.py` and
+`tests/test_reader_holdout_data.py` check that every copy still equals its original and that
+nothing but `id`, `description` and the constraints' `says` differs.
 
     python tools/build_reworded_tasks.py            # (re)write tests/data/reader_dev/tasks_reworded/
+    python tools/build_reworded_tasks.py --set reader_holdout   # the held-out set's folders
     python tools/build_reworded_tasks.py --mutants  # also ship killable_mutants.json (minutes)
 
 Folders of ids no longer listed are removed, so the directory always equals the JSON.
@@ -25,9 +27,9 @@ from pathlib import Path
 from typing import Any
 
 ROOT = Path(__file__).resolve().parents[1]
-DEV = ROOT / "tests" / "data" / "reader_dev"
-SOURCE = DEV / "rewordings.json"
-OUT = DEV / "tasks_reworded"
+DATA = ROOT / "tests" / "data"
+#: the sets whose rewordings this tool writes (a folder under tests/data/ each)
+SETS = ("reader_dev", "reader_holdout")
 BUILTIN = ROOT / "benchmark_data" / "tasks"
 
 
@@ -47,16 +49,16 @@ def reworded_task(entry: dict[str, Any]) -> dict[str, Any]:
     return task
 
 
-def build(entries: list[dict[str, Any]]) -> list[str]:
-    """Write every folder; returns the ids written."""
+def build(entries: list[dict[str, Any]], out: Path) -> list[str]:
+    """Write every folder under `out`; returns the ids written."""
     ids = [e["id"] for e in entries]
     if len(set(ids)) != len(ids):
         sys.exit("rewording ids must be unique")
-    OUT.mkdir(parents=True, exist_ok=True)
-    for stale in sorted(p for p in OUT.iterdir() if p.is_dir() and p.name not in ids):
+    out.mkdir(parents=True, exist_ok=True)
+    for stale in sorted(p for p in out.iterdir() if p.is_dir() and p.name not in ids):
         shutil.rmtree(stale)
     for entry in entries:
-        folder = OUT / entry["id"]
+        folder = out / entry["id"]
         folder.mkdir(exist_ok=True)
         text = json.dumps(reworded_task(entry), indent=2, ensure_ascii=False) + "\n"
         (folder / "task.json").write_text(text, encoding="utf-8")
@@ -68,15 +70,19 @@ def build(entries: list[dict[str, Any]]) -> list[str]:
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--set", default="reader_dev", choices=SETS, dest="set_name",
+                    help="the set under tests/data/ whose rewordings.json to build (default: reader_dev)")
     ap.add_argument("--mutants", action="store_true",
                     help="also write each folder's killable_mutants.json (`tasks mutants --write`)")
     args = ap.parse_args()
-    entries: list[dict[str, Any]] = json.loads(SOURCE.read_text(encoding="utf-8"))["rewordings"]
-    ids = build(entries)
-    print(f"wrote {len(ids)} task folders under {OUT.relative_to(ROOT)}")
+    source = DATA / args.set_name / "rewordings.json"
+    out = DATA / args.set_name / "tasks_reworded"
+    entries: list[dict[str, Any]] = json.loads(source.read_text(encoding="utf-8"))["rewordings"]
+    ids = build(entries, out)
+    print(f"wrote {len(ids)} task folders under {out.relative_to(ROOT)}")
     if args.mutants:
         subprocess.run([sys.executable, "-m", "logicenveval", "tasks", "mutants", "--write",
-                        "--tasks-dir", str(OUT)], check=True)
+                        "--tasks-dir", str(out)], check=True)
 
 
 if __name__ == "__main__":
