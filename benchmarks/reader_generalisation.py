@@ -14,11 +14,10 @@ prints LogCov / SceVR / FauDR for each, then per task:
   rooms and with objects neither the built-in tasks nor the development set use.
 
 Both development sets were written before the offline model's reader was changed and were never
-run through it while being written, so the gap between the rows measures how the reader
-generalises; the reader is developed against them with no rule keyed on one of their phrases. The held-out sets are stricter still: the reader
-is tuned on the development set and the built-in tasks only, and those who change it never read
-or run the held-out texts, so only the held-out rows say whether its rules carry to text nobody
-tuned them on. A further row, `built-in (reworded originals)`, restricts the built-in row to the
+run through it while being written; the reader is developed against them, with no rule keyed on
+one of their phrases. The held-out sets are stricter still: the reader is tuned on the development
+set and the built-in tasks only, and those who change it never read or run the held-out texts, so
+only the held-out rows say whether its rules carry to text nobody tuned them on. A further row, `built-in (reworded originals)`, restricts the built-in row to the
 12 tasks the reworded set rewords, for a like-for-like gap.
 
 Every run is computed afresh (`fresh=True`: a stored unit is never reused, since the run's
