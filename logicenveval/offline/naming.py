@@ -347,8 +347,9 @@ class _Reader:
                 purpose = rest[0] if rest else None
             before = item[:item.index("for")] if "for" in item else item
             stop = next((k for k, w in enumerate(before) if w == "one" or w == head), len(before))
-            modifiers = [w for w in before[:stop] if w not in _DETERMINERS and w not in _FILLER
-                         and w not in COLOR_WORDS and w != head and w not in _PREPOSITIONS]
+            modifiers = [w for w in before[:stop] if w not in _ARTICLES and w not in _FILLER
+                         and w not in COLOR_WORDS and w != head and w not in _PREPOSITIONS
+                         and (w != "other" or purpose is None)]  # "the other for the umbrella"
             if purpose is None and (not modifiers or not count) and color is None:
                 continue  # without a count, a list tells objects apart by colour or purpose only
             if ordinal_at is None and "for" not in item and color is None and (
