@@ -12,6 +12,8 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 from typing import Any
 
+from lemminflect import getAllLemmas, getLemma
+
 from logicenveval.domain.catalog import Catalog
 
 WORD = re.compile(r"[a-z0-9]+(?:'[a-z]+)?")
@@ -21,21 +23,19 @@ COLOR_WORDS = frozenset(
 )
 
 
-_VERB_IES = frozenset({"lies", "dies", "ties"})
-
-
 @lru_cache(maxsize=16384)
 def singular(word: str) -> str:
-    """Crude English singular, good enough for household nouns (boxes, dishes, shelves, toys)."""
-    if len(word) <= 3 or word.endswith("ss"):
+    """The noun lemma of `word`: lemminflect's dictionary (irregular plurals: shelves, knives,
+    children), then its rules for a word it does not know that ends in -s ("tins"). Words of
+    three letters or fewer ("was", "has", "its") stay as written."""
+    if len(word) <= 3:
         return word
-    if word in _VERB_IES or word.endswith("shoes"):
-        return word[:-1]  # "lies" is the verb "lie", not a plural of "ly"; "shoes" is not "sho" + es
-    for suffix, repl in (("ies", "y"), ("ves", "f"), ("xes", "x"), ("ches", "ch"), ("shes", "sh"),
-                         ("sses", "ss"), ("oes", "o")):
-        if word.endswith(suffix):
-            return word[: -len(suffix)] + repl
-    return word[:-1] if word.endswith("s") and not word.endswith("us") else word
+    known = getAllLemmas(word, upos="NOUN").get("NOUN")
+    if known:
+        return str(known[0])
+    if word.endswith("s") and not word.endswith("ss"):
+        return str(getLemma(word, upos="NOUN")[0])
+    return word
 
 
 def tokens(text: str) -> list[tuple[str, int, int]]:
