@@ -7,6 +7,7 @@ from __future__ import annotations
 import pytest
 
 from logicenveval.domain.catalog import load_catalog
+from logicenveval.offline.lexicon import singular
 from logicenveval.offline.naming import name_objects
 
 
@@ -123,3 +124,22 @@ def test_a_name_followed_by_a_generic_head_is_one_object(text: str, kept: str, d
 def test_verbs_that_are_also_nouns_are_not_objects() -> None:
     kinds = {c for c, _ in _named("Lamp left on: switch it off. Plate dirty, set it in the sink.").values()}
     assert "light_switch" not in kinds and "television" not in kinds
+
+
+def test_a_class_of_things_a_part_is_for_is_no_object_but_a_definite_thing_is() -> None:
+    kinds = {c for c, _ in _named("Two toy boxes: red for dolls, white for other toys.").values()}
+    assert "doll" not in kinds
+    kinds = {c for c, _ in _named("The bookshelf has three levels - novels on one, essays on the next, "
+                                  "and every other book on the last.", ("bedroom",)).values()}
+    assert "novel" not in kinds
+    kinds = {c for c, _ in _named("There are two coat hooks: one for the jacket and one for the hat.").values()}
+    assert {"jacket", "hat"} <= kinds
+
+
+@pytest.mark.parametrize(("word", "lemma"), [
+    ("shelves", "shelf"), ("knives", "knife"), ("boxes", "box"), ("dishes", "dish"), ("potatoes", "potato"),
+    ("leaves", "leaf"), ("glasses", "glass"), ("shoes", "shoe"), ("tins", "tin"), ("clothes", "clothes"),
+    ("was", "was"), ("its", "its"), ("children", "child"),
+])
+def test_word_forms_come_from_the_lemmatiser(word: str, lemma: str) -> None:
+    assert singular(word) == lemma

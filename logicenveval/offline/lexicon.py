@@ -26,13 +26,15 @@ COLOR_WORDS = frozenset(
 @lru_cache(maxsize=16384)
 def singular(word: str) -> str:
     """The noun lemma of `word`: lemminflect's dictionary (irregular plurals: shelves, knives,
-    children), then its rules for a word it does not know that ends in -s ("tins"). Words of
+    children; of two, the one that is not a verb's: leaves -> leaf), then its rules for a word it does not know that ends in -s ("tins"). Words of
     three letters or fewer ("was", "has", "its") stay as written."""
     if len(word) <= 3:
         return word
     known = getAllLemmas(word, upos="NOUN").get("NOUN")
     if known:
-        return str(known[0])
+        # "leaves": the noun "leaf", not the verb "leave" (read as an action elsewhere)
+        verbs = set(getAllLemmas(word, upos="VERB").get("VERB", ()))
+        return str(next((lemma for lemma in known if lemma not in verbs and lemma != word), known[0]))
     if word.endswith("s") and not word.endswith("ss"):
         return str(getLemma(word, upos="NOUN")[0])
     return word

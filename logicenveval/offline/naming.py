@@ -335,16 +335,15 @@ class _Reader:
             if item[0] in _HOLDING and len(item) > 1 and not out:
                 item, a = item[1:], a + 1  # "hold novels, essays and ..."
             color = next((w for w in item if w in COLOR_WORDS and w in allowed), None)
-            purpose = None
+            at: int | None = None  # the purpose's word in the item
             if "for" in item:
-                rest = [w for w in item[item.index("for") + 1:] if w not in _ARTICLES]
-                purpose = rest[0] if rest else None
+                at = next((k for k in range(item.index("for") + 1, len(item)) if item[k] not in _ARTICLES), None)
             ordinal_at = next((k for k, w in enumerate(item) if w in _ORDINALS and k > 0
                                and item[k - 1] in ("on", "in", "the")), None)
-            if purpose is None and ordinal_at is not None:
-                rest = [w for w in item[:ordinal_at] if w not in _ARTICLES and w not in _FILLER
-                        and w not in _PREPOSITIONS]
-                purpose = rest[0] if rest else None
+            if at is None and ordinal_at is not None:
+                at = next((k for k in range(ordinal_at) if item[k] not in _ARTICLES
+                           and item[k] not in _FILLER and item[k] not in _PREPOSITIONS), None)
+            purpose = None if at is None else item[at]
             before = item[:item.index("for")] if "for" in item else item
             stop = next((k for k, w in enumerate(before) if w == "one" or w == head), len(before))
             modifiers = [w for w in before[:stop] if w not in _ARTICLES and w not in _FILLER
@@ -355,9 +354,12 @@ class _Reader:
             if ordinal_at is None and "for" not in item and color is None and (
                     len(item) > 4 or any(w in _PREPOSITIONS or w in _HOLDING or w in STATE_WORDS for w in item)):
                 continue  # a clause, not an item ("are in the kitchen")
-            # the words read are the item's up to "for" (a purpose may be an object: "one for
-            # the jacket") and none of "novels on one" (the novels are objects too)
+            # the words read: the item's up to "for", and the purpose when it is a class of things
+            # (a bare plural: "for dolls", "novels on one"), not when it is an object ("one for
+            # the jacket")
             read = [] if ordinal_at is not None else list(range(a, a + len(before)))
+            if at is not None and self.text.raw[a + at] != purpose and (at == 0 or item[at - 1] not in _ARTICLES):
+                read.append(a + at)
             if color is not None:
                 out.append((f"{color}_{category}", {"color": color}, read))
                 continue
