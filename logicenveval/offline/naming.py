@@ -121,8 +121,8 @@ class _Text:
 
 @per_catalog
 def _phrase_tables(catalog: Catalog) -> tuple[dict[tuple[str, ...], str], dict[str, list[str]], int]:
-    """Each category name and synonym as words -> its category; last word -> the categories it
-    ends; the longest phrase's length: ~500 names, the same for every description the process
+    """Each category name and synonym as words -> its category; head noun -> the categories it
+    heads; the longest phrase's length: ~500 names, the same for every description the process
     reads. Callers only read them."""
     phrases: dict[tuple[str, ...], str] = {}
     heads: dict[str, list[str]] = {}
@@ -130,7 +130,8 @@ def _phrase_tables(catalog: Catalog) -> tuple[dict[tuple[str, ...], str], dict[s
         for text in (name, *cat.synonyms):
             phrase = words_of(text)
             phrases.setdefault(phrase, name)
-            heads.setdefault(phrase[-1], []).append(name)
+            # the head noun: the last word, or the one before "of" ("chest of drawers" is a chest)
+            heads.setdefault(phrase[phrase.index("of") - 1] if "of" in phrase[1:] else phrase[-1], []).append(name)
     return phrases, heads, max(len(p) for p in phrases)
 
 
