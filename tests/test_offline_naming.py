@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 
 from logicenveval.domain.catalog import load_catalog
-from logicenveval.offline.lexicon import singular
+from logicenveval.offline.lexicon import Lexicon, singular, tokens
 from logicenveval.offline.naming import name_objects
 
 
@@ -143,3 +143,13 @@ def test_a_class_of_things_a_part_is_for_is_no_object_but_a_definite_thing_is() 
 ])
 def test_word_forms_come_from_the_lemmatiser(word: str, lemma: str) -> None:
     assert singular(word) == lemma
+
+
+def test_an_object_named_by_two_telling_words_is_found_by_either() -> None:
+    """The names `name_objects` gives ("upper_tin_shelf", "top_novel_shelf") are found in the
+    text by either telling word with the noun, and as "the shelf for tins"."""
+    roles = {"upper_tin_shelf": {"category": "pantry_shelf"}, "lower_boxed_shelf": {"category": "pantry_shelf"},
+             "top_novel_shelf": {"category": "wall_shelf"}}
+    lex = Lexicon.build({"roles": roles, "rooms": ["pantry"]}, load_catalog())
+    found = lex.find_mentions(tokens("Put it on the upper shelf, the shelf for novels, then the boxed shelf."))
+    assert [m.roles for m in found] == [("upper_tin_shelf",), ("top_novel_shelf",), ("lower_boxed_shelf",)]

@@ -87,6 +87,14 @@ class Lexicon:
                 # a role named after an attribute + noun ("red_box") is also found by its noun
                 if len(words_of(n)) > 1 and words_of(n)[0] in COLOR_WORDS:
                     lex.phrases.setdefault(words_of(n)[1:], set()).add(name)
+            # a role named by two words that tell it apart ("upper_tin_shelf": the upper one, for
+            # tins) is found by either with its noun ("the upper shelf", "the tin shelf") and as
+            # "the shelf for tins"
+            *told, noun = words_of(name)
+            if cat is not None and len(told) > 1 and noun == words_of(role["category"])[-1]:
+                for word in told:
+                    lex.phrases.setdefault((word, noun), set()).add(name)
+                    lex.phrases.setdefault((noun, "for", word), set()).add(name)
             lex.domains[name] = {k: [v.lower() for v in vs] for k, vs in (cat.attributes if cat else {}).items()}
             lex.fixed[name] = {k: str(v).lower() for k, v in role.get("attributes", {}).items()}
             if cat is not None and cat.container and not cat.surface:
