@@ -153,3 +153,14 @@ def test_an_object_named_by_two_telling_words_is_found_by_either() -> None:
     lex = Lexicon.build({"roles": roles, "rooms": ["pantry"]}, load_catalog())
     found = lex.find_mentions(tokens("Put it on the upper shelf, the shelf for novels, then the boxed shelf."))
     assert [m.roles for m in found] == [("upper_tin_shelf",), ("top_novel_shelf",), ("lower_boxed_shelf",)]
+
+
+@pytest.mark.parametrize(("text", "colors"), [
+    ("There is a red and a white toy box by the sofa.", ["red", "white"]),
+    ("The red, blue and green toy boxes stand in a row.", ["red", "blue", "green"]),
+    ("The sofa is red and the blue toy box is by it.", ["blue"]),
+    ("The sofa is red, the blue toy box is by it.", ["blue"]),
+])
+def test_coordinated_colours_before_a_noun_name_one_object_each(text: str, colors: list[str]) -> None:
+    boxes = {n: a for n, (c, a) in _named(text).items() if c == "toy_box"}
+    assert boxes == {f"{c}_toy_box": {"color": c} for c in colors}

@@ -368,6 +368,33 @@ class _Reader:
             out.append(("_".join([*parts, head]), {}, read))
         return out
 
+    def coordinated(self, j: int, allowed: list[str]) -> list[str]:
+        """The colour at word `j` and those coordinated before it, in order ("a red and a white
+        toy box", "the red, blue and green boxes")."""
+        words, gaps = self.text.words, self.text.gaps
+        out = [words[j]]
+        joined = False  # a comma joins colours only before an "and" ("red, blue and green")
+        while True:
+            k = j - 1
+            while k >= 0 and words[k] in _ARTICLES:
+                k -= 1
+            if k >= 0 and words[k] in ("and", "or"):
+                joined = True
+                k -= 1
+                while k >= 0 and words[k] in _ARTICLES:
+                    k -= 1
+            elif not (joined and k + 1 < len(words) and "," in gaps[k + 1]):
+                break
+            if k < 0 or words[k] not in allowed:
+                break
+            out.insert(0, words[k])
+            j = k
+        # the first colour of the list must describe a noun phrase: "the sofa is red and the
+        # blue toy box" is one box
+        if len(out) > 1 and (j == 0 or words[j - 1] not in _DETERMINERS and words[j - 1] not in _COUNTS):
+            return out[-1:]
+        return out
+
     # -- the whole text --------------------------------------------------------------------
 
     def read(self) -> list[dict[str, Any]]:
@@ -409,7 +436,8 @@ class _Reader:
             allowed = self.catalog.categories[category].attributes.get("color", [])
             last = words[i + n - 1] if words[i + n - 1] not in _PACKAGING else words_of(category)[-1]
             if prev in COLOR_WORDS and prev in allowed:
-                self.instance(category, f"{prev}_{category}", {"color": prev})
+                for color in self.coordinated(i - 1, allowed):
+                    self.instance(category, f"{color}_{category}", {"color": color})
                 last_colored = category
             elif prev in _SPARE or prev in _FRESH and known and kind.generic:
                 if not any(name.startswith("spare_") for name in kind.instances):
