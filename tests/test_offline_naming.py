@@ -164,3 +164,13 @@ def test_an_object_named_by_two_telling_words_is_found_by_either() -> None:
 def test_coordinated_colours_before_a_noun_name_one_object_each(text: str, colors: list[str]) -> None:
     boxes = {n: a for n, (c, a) in _named(text).items() if c == "toy_box"}
     assert boxes == {f"{c}_toy_box": {"color": c} for c in colors}
+
+
+@pytest.mark.parametrize("text", ["Take a spare from the dresser.", "That's where the spares are kept.",
+                                  "No extra? Then skip it."])
+def test_a_spare_is_found_by_its_word_alone(text: str) -> None:
+    roles = {"spare_roll": {"category": "toilet_paper"}, "extra_bag": {"category": "trash_bag"},
+             "toilet_paper": {"category": "toilet_paper"}}
+    lex = Lexicon.build({"roles": roles, "rooms": ["bathroom"]}, load_catalog())
+    found = [r for m in lex.find_mentions(tokens(text)) for r in m.roles]
+    assert found and set(found) <= {"spare_roll", "extra_bag"}

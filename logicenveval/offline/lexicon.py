@@ -18,6 +18,9 @@ from logicenveval.domain.catalog import Catalog
 
 WORD = re.compile(r"[a-z0-9]+(?:'[a-z]+)?")
 
+#: words that tell a spare from the one in use ("the spare roll", "an extra bag")
+SPARE_WORDS = frozenset({"spare", "extra", "backup", "replacement"})
+
 COLOR_WORDS = frozenset(
     ["red", "blue", "green", "yellow", "white", "black", "grey", "gray", "brown", "pink", "purple", "orange", "beige", "silver", "gold"]
 )
@@ -90,6 +93,9 @@ class Lexicon:
             # a role named by two words that tell it apart ("upper_tin_shelf": the upper one, for
             # tins) is found by either with its noun ("the upper shelf", "the tin shelf") and as
             # "the shelf for tins"
+            # a spare is also named by its word alone ("take a spare", "where the spares are kept")
+            if words_of(name)[0] in SPARE_WORDS and len(words_of(name)) > 1:
+                lex.phrases.setdefault(words_of(name)[:1], set()).add(name)
             *told, noun = words_of(name)
             if cat is not None and len(told) > 1 and noun == words_of(role["category"])[-1]:
                 for word in told:

@@ -23,7 +23,7 @@ from logicenveval.domain.catalog import Catalog, load_catalog, per_catalog
 from logicenveval.llm.base import ChatRequest
 from logicenveval.model.rooms import room_type_of
 from logicenveval.offline.handlers import handler
-from logicenveval.offline.lexicon import COLOR_WORDS, tokens, words_of
+from logicenveval.offline.lexicon import COLOR_WORDS, SPARE_WORDS, tokens, words_of
 from logicenveval.offline.sentences import STATE_WORDS, expand
 
 
@@ -46,7 +46,7 @@ _PREPOSITIONS = frozenset({"on", "onto", "in", "into", "inside", "from", "by", "
                            "to", "at", "beside", "behind", "with"})
 _COUNTS = {"two": 2, "three": 3, "four": 4, "five": 5, "both": 2}
 #: "a fresh bag ... no spare bag": one more of the kind, told apart from the one in use
-_SPARE = frozenset({"spare", "extra", "backup", "replacement"})
+_SPARE = SPARE_WORDS
 #: "a fresh bag": the spare when the kind was already named in use ("the full bag"), else the
 #: one in use ("a fresh diaper is lying on the changing table")
 _FRESH = frozenset({"fresh", "new"})
