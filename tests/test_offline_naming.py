@@ -174,3 +174,12 @@ def test_a_spare_is_found_by_its_word_alone(text: str) -> None:
     lex = Lexicon.build({"roles": roles, "rooms": ["bathroom"]}, load_catalog())
     found = [r for m in lex.find_mentions(tokens(text)) for r in m.roles]
     assert found and set(found) <= {"spare_roll", "extra_bag"}
+
+
+@pytest.mark.parametrize(("text", "category", "names"), [
+    ("There is a lamp on the desk and another lamp by the bed.", "desk_lamp", ["desk_lamp", "other_lamp"]),
+    ("Take a towel from the rack; if it is wet, get another towel.", "towel", ["towel", "other_towel"]),
+    ("Put another towel on the rack.", "towel", ["towel"]),
+])
+def test_another_of_a_kind_already_named_is_a_second_object(text: str, category: str, names: list[str]) -> None:
+    assert _of(text, category, ("bedroom", "bathroom")) == names

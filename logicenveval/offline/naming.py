@@ -50,6 +50,8 @@ _SPARE = SPARE_WORDS
 #: "a fresh bag": the spare when the kind was already named in use ("the full bag"), else the
 #: one in use ("a fresh diaper is lying on the changing table")
 _FRESH = frozenset({"fresh", "new"})
+#: "a lamp on the desk and another lamp by the bed": a second object of a kind already named
+_ANOTHER = frozenset({"another", "second"})
 #: "a bag of pet food", "a pack of wipes", "the pet food bag": the contents are the object
 _PACKAGING = frozenset({"bag", "pack", "packet", "carton"})
 #: nouns that are verbs as often ("you can use", "switch it off"): objects only after a determiner
@@ -442,6 +444,8 @@ class _Reader:
             elif prev in _SPARE or prev in _FRESH and known and kind.generic:
                 if not any(name.startswith("spare_") for name in kind.instances):
                     self.instance(category, f"spare_{last}", {})
+            elif prev in _ANOTHER and known and kind.generic:
+                self.instance(category, f"other_{last}", {})  # "a lamp on the desk and another lamp"
             else:
                 kind.generic = True
                 if prev in _COUNTS:
