@@ -183,3 +183,13 @@ def test_a_spare_is_found_by_its_word_alone(text: str) -> None:
 ])
 def test_another_of_a_kind_already_named_is_a_second_object(text: str, category: str, names: list[str]) -> None:
     assert _of(text, category, ("bedroom", "bathroom")) == names
+
+
+def test_items_that_are_kinds_of_their_own_are_those_objects() -> None:
+    named = _named("Two toys are on the floor: a doll and a ball.")
+    assert {"doll", "ball"} <= {c for c, _ in named.values()} and "doll_toy" not in named
+    assert _of("There are two books on the table, a novel and a dictionary.", "novel") == ["novel"]
+    # a class of things a part holds is no object of its own ("three levels hold novels, ...")
+    shelves = _of("The bookshelf's three levels hold novels, essays, and other books respectively.",
+                  "wall_shelf", ("bedroom",))
+    assert shelves == ["novel_shelf", "essay_shelf", "other_shelf"]

@@ -354,6 +354,8 @@ class _Reader:
                          and (w != "other" or purpose is None)]  # "the other for the umbrella"
             if purpose is None and (not modifiers or not count) and color is None:
                 continue  # without a count, a list tells objects apart by colour or purpose only
+            if self.own_kind(a, a + len(before), head):
+                continue  # "two toys: a doll and a ball" names a doll and a ball
             if ordinal_at is None and "for" not in item and color is None and (
                     len(item) > 4 or any(w in _PREPOSITIONS or w in _HOLDING or w in STATE_WORDS for w in item)):
                 continue  # a clause, not an item ("are in the kitchen")
@@ -369,6 +371,17 @@ class _Reader:
             parts = modifiers[:1] + ([purpose] if purpose and purpose not in modifiers[:1] else [])
             out.append(("_".join([*parts, head]), {}, read))
         return out
+
+    def own_kind(self, a: int, b: int, head: str) -> bool:
+        """Whether words `a`..`b` of an item name one thing of a kind of its own, with another
+        head noun ("a doll" in "two toys: a doll and a ball"; not "a tea cup" in "two cups: ...",
+        nor the class of things a part holds: "three levels hold novels, essays, ...")."""
+        words = self.text.words
+        k = next((k for k in range(a, b) if words[k] not in _DETERMINERS and words[k] not in COLOR_WORDS), None)
+        if k is None or k == a or words[k - 1] not in _ARTICLES or self.text.raw[b - 1] != words[b - 1]:
+            return False
+        n, category = self.match(k)
+        return category is not None and k + n == b and words[b - 1] != head
 
     def coordinated(self, j: int, allowed: list[str]) -> list[str]:
         """The colour at word `j` and those coordinated before it, in order ("a red and a white
