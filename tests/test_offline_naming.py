@@ -193,3 +193,10 @@ def test_items_that_are_kinds_of_their_own_are_those_objects() -> None:
     shelves = _of("The bookshelf's three levels hold novels, essays, and other books respectively.",
                   "wall_shelf", ("bedroom",))
     assert shelves == ["novel_shelf", "essay_shelf", "other_shelf"]
+
+
+@pytest.mark.parametrize(("rooms", "category"), [(("bedroom",), "wall_shelf"), (("kitchen", "pantry"), "pantry_shelf")])
+def test_levels_are_shelves_of_the_rooms_kind_even_when_the_furniture_is_not_named(
+        rooms: tuple[str, ...], category: str) -> None:
+    text = "Jars are sorted by kind: jams are kept on the first level, pickles on the second and the rest on the third."
+    assert len(_of(text, category, rooms)) == 3

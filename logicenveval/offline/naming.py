@@ -45,8 +45,6 @@ _NOUN_LEADS = frozenset({"with", "and", "or", "plus"})
 _PREPOSITIONS = frozenset({"on", "onto", "in", "into", "inside", "from", "by", "near", "under", "of",
                            "to", "at", "beside", "behind", "with"})
 _COUNTS = {"two": 2, "three": 3, "four": 4, "five": 5, "both": 2}
-#: "a fresh bag ... no spare bag": one more of the kind, told apart from the one in use
-_SPARE = SPARE_WORDS
 #: "a fresh bag": the spare when the kind was already named in use ("the full bag"), else the
 #: one in use ("a fresh diaper is lying on the changing table")
 _FRESH = frozenset({"fresh", "new"})
@@ -67,8 +65,7 @@ _ORDINALS = frozenset({"first", "second", "third", "fourth", "next", "last", "to
 _HOLDING = frozenset({"hold", "keep", "store", "contain", "take", "carry", "be", "are", "is", "for"})
 #: words of an item that say nothing of which one it is
 _FILLER = frozenset({"respectively", "one", "and", "or", "then", "also", "each", "s", "is", "are",
-                     "kept", "stored", "go", "goes", "put", "placed", "shelved", "book", "thing", "stuff",
-                     "item"})
+                     "kept", "stored", "go", "goes", "put", "placed", "shelved"})
 #: what separates the items of an enumeration
 _ITEM_BREAK = re.compile(r"[,;:(]|\s-+\s|\u2013|\u2014")
 #: what ends a heading a list follows ("Bookshelf levels: top for novels, ...")
@@ -307,7 +304,10 @@ class _Reader:
             return 1, None
         part = _PARTS.get(words[j])
         if part is not None and words[j] != part:
-            options = [c for c in dict.fromkeys(self.heads.get(part, [])) if c not in self.named]
+            # kinds that are shelves by their own name (a wall shelf, a pantry shelf), never a
+            # piece of furniture named in the text (the bookshelf the levels are of)
+            options = [c for c in dict.fromkeys(self.heads.get(part, []))
+                       if c not in self.named and words_of(c)[-1] == part]
             return 1, self.part_kind(options, self.phrases.get((part,)))
         n, category = self.kind_at(j)
         if category is not None:
@@ -315,12 +315,12 @@ class _Reader:
         return n, category
 
     def part_kind(self, options: list[str], exact: str | None) -> str | None:
-        """Of the shelf kinds, one of the task's rooms that the context fits best (the exact word
-        wins ties): a pantry's levels are pantry shelves, a bedroom's are wall shelves."""
-        def score(c: str) -> tuple[bool, int, bool]:
+        """Of the shelf kinds, the one that fits most of the task's rooms, then the context (the
+        exact word wins ties): a pantry's levels are pantry shelves, a bedroom's wall shelves."""
+        def score(c: str) -> tuple[int, int, bool]:
             cat = self.catalog.categories[c]
             others = {w for t in (c, *cat.synonyms) for w in words_of(t)} - {"shelf"}
-            return bool(set(cat.rooms) & self.room_types), len(others & self.context), c == exact
+            return len(set(cat.rooms) & self.room_types), len(others & self.context), c == exact
 
         return max(options, key=score, default=None)
 
@@ -368,7 +368,10 @@ class _Reader:
             if color is not None:
                 out.append((f"{color}_{category}", {"color": color}, read))
                 continue
-            parts = modifiers[:1] + ([purpose] if purpose and purpose not in modifiers[:1] else [])
+            # named for its position and its purpose ("upper_tin_shelf"), a ranked item for its
+            # purpose only ("novels on the first level": the rank says only which comes next)
+            parts = [] if ordinal_at is not None else modifiers[:1]
+            parts += [purpose] if purpose and purpose not in parts else []
             out.append(("_".join([*parts, head]), {}, read))
         return out
 
@@ -430,7 +433,7 @@ class _Reader:
                 self.instance(last_colored, f"{prev}_{last_colored}", {"color": prev})
                 i += 1
                 continue
-            if words[i] in _SPARE and prev in _DETERMINERS and (
+            if words[i] in SPARE_WORDS and prev in _DETERMINERS and (
                     i + 1 == len(words) or words[i + 1] not in self.heads and self.match(i + 1)[1] is None):
                 # "a spare" as a noun: "fetch a spare from the dresser", "we store the spares"
                 spare = next((c for c in reversed(self.recent) if self.catalog.categories[c].pickable), None)
@@ -454,7 +457,7 @@ class _Reader:
                 for color in self.coordinated(i - 1, allowed):
                     self.instance(category, f"{color}_{category}", {"color": color})
                 last_colored = category
-            elif prev in _SPARE or prev in _FRESH and known and kind.generic:
+            elif prev in SPARE_WORDS or prev in _FRESH and known and kind.generic:
                 if not any(name.startswith("spare_") for name in kind.instances):
                     self.instance(category, f"spare_{last}", {})
             elif prev in _ANOTHER and known and kind.generic:
