@@ -9,8 +9,10 @@ objects of one kind told apart by an enumeration ("two bowls: a food bowl and a 
 "three levels - novels on one, essays on the next", "two toy boxes: red for dolls, white for
 toys", "three levels hold novels, essays and other books respectively"); a spare told from the
 one in use ("the full bag ... a fresh bag ... no spare bag" is two bags, "a fresh diaper ... if
-there isn't one, fetch a spare" is two diapers). Its word lists are the data tables below,
-beside the code that applies them."""
+there isn't one, fetch a spare" is two diapers); "another lamp" after a lamp is a second lamp;
+coordinated colours ("a red and a white toy box") one object each. Its word lists are the data
+tables below, beside the code that applies them; tests/test_offline_naming.py tries each rule on
+sentences of several texts."""
 
 from __future__ import annotations
 
