@@ -200,3 +200,12 @@ def test_levels_are_shelves_of_the_rooms_kind_even_when_the_furniture_is_not_nam
         rooms: tuple[str, ...], category: str) -> None:
     text = "Jars are sorted by kind: jams are kept on the first level, pickles on the second and the rest on the third."
     assert len(_of(text, category, rooms)) == 3
+
+
+@pytest.mark.parametrize(("word", "category"), [
+    ("telly", "television"), ("worktop", "kitchen_counter"), ("dustbin", "trash_can"), ("rubbish bin", "trash_can"),
+    ("cellphone", "cell_phone"), ("night stand", "nightstand"), ("comforter", "blanket"), ("loo roll", "toilet_paper"),
+    ("nappy", "diaper"), ("bin bag", "garbage_bag"), ("couch", "sofa"),
+])
+def test_british_and_american_words_are_the_catalogs_synonyms(word: str, category: str) -> None:
+    assert [c for c, _ in _named(f"Please put the {word} back.").values()] == [category]
