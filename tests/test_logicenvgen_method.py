@@ -164,7 +164,7 @@ def test_objects_told_apart_by_colour_purpose_spare_or_level_are_named_apart() -
     rolls = _named("bathroom_towel_refresh")  # "no roll by the toilet, take the spare roll"
     assert [n for n, (c, _) in rolls.items() if c == "toilet_paper"] == ["toilet_paper", "spare_roll"]
     shelves = _named("bedroom_bookshelf_sorting")  # "three levels hold novels, essays, and other books"
-    assert [n for n, (c, _) in shelves.items() if c == "wall_shelf"] == ["shelf_novels", "shelf_essays", "shelf_other"]
+    assert [n for n, (c, _) in shelves.items() if c == "wall_shelf"] == ["novel_shelf", "essay_shelf", "other_shelf"]
     assert _named("bedroom_morning_tidy")["table_lamp"][0] == "table_lamp"  # "a nightstand with a lamp"
     assert "shoe" in _named("hallway_entry_tidy")
     bags = _named("multi_room_trash_run")  # "the full bag", "a fresh bag", "no spare bag"

@@ -12,30 +12,35 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 from typing import Any
 
+from lemminflect import getAllLemmas, getLemma
+
 from logicenveval.domain.catalog import Catalog
 
 WORD = re.compile(r"[a-z0-9]+(?:'[a-z]+)?")
+
+#: words that tell a spare from the one in use ("the spare roll", "an extra bag")
+SPARE_WORDS = frozenset({"spare", "extra", "backup", "replacement"})
 
 COLOR_WORDS = frozenset(
     ["red", "blue", "green", "yellow", "white", "black", "grey", "gray", "brown", "pink", "purple", "orange", "beige", "silver", "gold"]
 )
 
 
-_VERB_IES = frozenset({"lies", "dies", "ties"})
-
-
 @lru_cache(maxsize=16384)
 def singular(word: str) -> str:
-    """Crude English singular, good enough for household nouns (boxes, dishes, shelves, toys)."""
-    if len(word) <= 3 or word.endswith("ss"):
+    """The noun lemma of `word`: lemminflect's dictionary (irregular plurals: shelves, knives,
+    children; of two, the one that is not a verb's: leaves -> leaf), then its rules for a word it does not know that ends in -s ("tins"). Words of
+    three letters or fewer ("was", "has", "its") stay as written."""
+    if len(word) <= 3:
         return word
-    if word in _VERB_IES or word.endswith("shoes"):
-        return word[:-1]  # "lies" is the verb "lie", not a plural of "ly"; "shoes" is not "sho" + es
-    for suffix, repl in (("ies", "y"), ("ves", "f"), ("xes", "x"), ("ches", "ch"), ("shes", "sh"),
-                         ("sses", "ss"), ("oes", "o")):
-        if word.endswith(suffix):
-            return word[: -len(suffix)] + repl
-    return word[:-1] if word.endswith("s") and not word.endswith("us") else word
+    known = getAllLemmas(word, upos="NOUN").get("NOUN")
+    if known:
+        # "leaves": the noun "leaf", not the verb "leave" (read as an action elsewhere)
+        verbs = set(getAllLemmas(word, upos="VERB").get("VERB", ()))
+        return str(next((lemma for lemma in known if lemma not in verbs and lemma != word), known[0]))
+    if word.endswith("s") and not word.endswith("ss"):
+        return str(getLemma(word, upos="NOUN")[0])
+    return word
 
 
 def tokens(text: str) -> list[tuple[str, int, int]]:
@@ -85,6 +90,17 @@ class Lexicon:
                 # a role named after an attribute + noun ("red_box") is also found by its noun
                 if len(words_of(n)) > 1 and words_of(n)[0] in COLOR_WORDS:
                     lex.phrases.setdefault(words_of(n)[1:], set()).add(name)
+            # a role named by two words that tell it apart ("upper_tin_shelf": the upper one, for
+            # tins) is found by either with its noun ("the upper shelf", "the tin shelf") and as
+            # "the shelf for tins"
+            # a spare is also named by its word alone ("take a spare", "where the spares are kept")
+            if words_of(name)[0] in SPARE_WORDS and len(words_of(name)) > 1:
+                lex.phrases.setdefault(words_of(name)[:1], set()).add(name)
+            *told, noun = words_of(name)
+            if cat is not None and len(told) > 1 and noun == words_of(role["category"])[-1]:
+                for word in told:
+                    lex.phrases.setdefault((word, noun), set()).add(name)
+                    lex.phrases.setdefault((noun, "for", word), set()).add(name)
             lex.domains[name] = {k: [v.lower() for v in vs] for k, vs in (cat.attributes if cat else {}).items()}
             lex.fixed[name] = {k: str(v).lower() for k, v in role.get("attributes", {}).items()}
             if cat is not None and cat.container and not cat.surface:

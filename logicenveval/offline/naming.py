@@ -1,7 +1,18 @@
 """The offline model's answer to `name_objects`: the objects a description names, read as a
 careful reader would list them (the request every method asks first under `--brief description`,
-`generators.brief`). Its rules (determiners, counts, spare/packaging words, verbs that are also
-nouns) are the data tables below, beside the code that applies them."""
+`generators.brief`).
+
+It reads structure, not phrases: noun phrases (longest catalog name or synonym, a bare head noun
+resolved by the kind last named, by an adjacent modifier, by its exact name, then by context);
+a compound of two names as one object ("the vanity cabinet", "the pet food bag"); a group of
+objects of one kind told apart by an enumeration ("two bowls: a food bowl and a water bowl",
+"three levels - novels on one, essays on the next", "two toy boxes: red for dolls, white for
+toys", "three levels hold novels, essays and other books respectively"); a spare told from the
+one in use ("the full bag ... a fresh bag ... no spare bag" is two bags, "a fresh diaper ... if
+there isn't one, fetch a spare" is two diapers); "another lamp" after a lamp is a second lamp;
+coordinated colours ("a red and a white toy box") one object each. Its word lists are the data
+tables below, beside the code that applies them; tests/test_offline_naming.py tries each rule on
+sentences of several texts."""
 
 from __future__ import annotations
 
@@ -11,11 +22,11 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from logicenveval.domain.catalog import Catalog, load_catalog, per_catalog
-from logicenveval.domain.categories import vocabulary
 from logicenveval.llm.base import ChatRequest
 from logicenveval.model.rooms import room_type_of
 from logicenveval.offline.handlers import handler
-from logicenveval.offline.lexicon import COLOR_WORDS, tokens, words_of
+from logicenveval.offline.lexicon import COLOR_WORDS, SPARE_WORDS, tokens, words_of
+from logicenveval.offline.sentences import STATE_WORDS, expand
 
 
 @handler("name_objects")
@@ -26,20 +37,42 @@ def _offline_name_objects(payload: dict[str, Any], request: ChatRequest) -> dict
 
 
 #: words before a noun that say which one, not what it is like
-_DETERMINERS = frozenset({"a", "an", "the", "no", "any", "some", "its", "their", "our", "my", "your",
-                          "this", "that", "each", "every", "one", "other"})
-_COUNTS = {"two": 2, "three": 3, "four": 4}
-#: "a fresh bag ... no spare bag": one more of the kind, told apart from the one in use
-_SPARE = frozenset({"spare", "fresh", "new", "extra"})
-#: "a bag of pet food", "a pack of wipes": the contents are the object
+_ARTICLES = frozenset({"a", "an", "the", "any", "some", "its", "their", "our", "my", "your", "this",
+                       "that", "each", "every", "all", "both", "his", "her"})
+_DETERMINERS = _ARTICLES | {"no", "one", "other"}
+#: words after which a bare noun starts a noun phrase as after a determiner ("a nightstand with
+#: lamp", "bed, wardrobe and lamp")
+_NOUN_LEADS = frozenset({"with", "and", "or", "plus"})
+#: prepositions: an item holding one is a clause, not a noun phrase ("are in the kitchen")
+_PREPOSITIONS = frozenset({"on", "onto", "in", "into", "inside", "from", "by", "near", "under", "of",
+                           "to", "at", "beside", "behind", "with"})
+_COUNTS = {"two": 2, "three": 3, "four": 4, "five": 5, "both": 2}
+#: "a fresh bag": the spare when the kind was already named in use ("the full bag"), else the
+#: one in use ("a fresh diaper is lying on the changing table")
+_FRESH = frozenset({"fresh", "new"})
+#: "a lamp on the desk and another lamp by the bed": a second object of a kind already named
+_ANOTHER = frozenset({"another", "second"})
+#: "a bag of pet food", "a pack of wipes", "the pet food bag": the contents are the object
 _PACKAGING = frozenset({"bag", "pack", "packet", "carton"})
 #: nouns that are verbs as often ("you can use", "switch it off"): objects only after a determiner
 _ALSO_VERBS = frozenset({"can", "throw", "stand", "switch", "set", "press", "iron", "watch", "hook"})
 #: words too common to say which of several categories a bare noun means
 _NOT_CONTEXT = frozenset({"floor", "wall", "ceiling", "room"})
-#: "the bookshelf's three levels hold novels, essays and other books"
-_LEVELS = re.compile(r"(?:two|three|four) (?:levels|shelves|shelf levels) (?:hold|are for|keep) "
-                     r"([a-z ,]+?)(?: respectively)?[.;]")
+#: words naming a part of a piece of furniture that holds things, and the kind each part is
+_PARTS = {"level": "shelf", "tier": "shelf", "shelf": "shelf"}
+#: words that rank parts or say which one ("on the next", "the top one")
+_ORDINALS = frozenset({"first", "second", "third", "fourth", "next", "last", "top", "middle", "bottom",
+                       "upper", "lower", "left", "right", "other", "one", "front", "back"})
+#: verbs that lead a list of what each part holds ("three levels hold novels, essays and ...")
+_HOLDING = frozenset({"hold", "keep", "store", "contain", "take", "carry", "be", "are", "is", "for"})
+#: words of an item that say nothing of which one it is
+_FILLER = frozenset({"respectively", "one", "and", "or", "then", "also", "each", "s", "is", "are",
+                     "kept", "stored", "go", "goes", "put", "placed", "shelved"})
+#: what separates the items of an enumeration
+_ITEM_BREAK = re.compile(r"[,;:(]|\s-+\s|\u2013|\u2014")
+#: what ends a heading a list follows ("Bookshelf levels: top for novels, ...")
+_HEADING = re.compile(r":|\s-+\s|\u2013|\u2014")
+_SENTENCE_END = re.compile(r"[.!?]|\n")
 
 
 @dataclass
@@ -50,13 +83,47 @@ class _Kind:
     count: int = 0
     #: (name, attributes) of each instance, in order of first mention
     instances: dict[str, dict[str, str]] = field(default_factory=dict)
-    purposes: set[str] = field(default_factory=set)
+
+
+@dataclass
+class _Text:
+    """The description as words: singular forms, the words as written, and what stands between
+    a word and the one before it (punctuation tells items and sentences apart)."""
+
+    words: list[str]
+    raw: list[str]
+    gaps: list[str]
+
+    def sentence_end(self, i: int) -> int:
+        """Index of the first word of the next sentence after word `i`."""
+        j = i + 1
+        while j < len(self.words) and not _SENTENCE_END.search(self.gaps[j]):
+            j += 1
+        return j
+
+    def sentence_start(self, i: int) -> int:
+        j = i
+        while j > 0 and not _SENTENCE_END.search(self.gaps[j]):
+            j -= 1
+        return j
+
+    def items(self, start: int, end: int) -> list[tuple[int, int]]:
+        """Word spans of the items of a list between `start` and `end` (split at commas,
+        semicolons, colons, dashes, "and" and "or")."""
+        out: list[tuple[int, int]] = []
+        a = start
+        for j in range(start, end + 1):
+            if j == end or j > a and (_ITEM_BREAK.search(self.gaps[j]) or self.words[j] in ("and", "or")):
+                if j > a:
+                    out.append((a, j))
+                a = j + 1 if j < end and self.words[j] in ("and", "or") else j
+        return out
 
 
 @per_catalog
 def _phrase_tables(catalog: Catalog) -> tuple[dict[tuple[str, ...], str], dict[str, list[str]], int]:
-    """Each category name and synonym as words -> its category; last word -> the categories it
-    ends; the longest phrase's length: ~500 names, the same for every description the process
+    """Each category name and synonym as words -> its category; head noun -> the categories it
+    heads; the longest phrase's length: ~500 names, the same for every description the process
     reads. Callers only read them."""
     phrases: dict[tuple[str, ...], str] = {}
     heads: dict[str, list[str]] = {}
@@ -64,127 +131,362 @@ def _phrase_tables(catalog: Catalog) -> tuple[dict[tuple[str, ...], str], dict[s
         for text in (name, *cat.synonyms):
             phrase = words_of(text)
             phrases.setdefault(phrase, name)
-            heads.setdefault(phrase[-1], []).append(name)
+            # the head noun: the last word, or the one before "of" ("chest of drawers" is a chest)
+            heads.setdefault(phrase[phrase.index("of") - 1] if "of" in phrase[1:] else phrase[-1], []).append(name)
     return phrases, heads, max(len(p) for p in phrases)
 
 
-def name_objects(description: str, catalog: Catalog, rooms: Iterable[str] = ()) -> list[dict[str, Any]]:
-    """Catalog categories and synonyms named in the description (longest match), read as a careful
-    reader would: a bare noun means a kind already named ("the box" after "the red toy box") or,
-    among several kinds, the one its context fits ("a nightstand with a lamp": a bedside lamp);
-    objects of one kind told apart by colour ("a red one", "the blue toy box"), by purpose ("two
-    pet bowls, one for food and one for water"), as a spare ("the spare roll") or as levels of a
-    shelf become one object each, named for what tells them apart, with the colour as attribute."""
-    phrases, heads, longest = _phrase_tables(catalog)
-    text = description.lower()
-    toks = tokens(description)
-    words = [w for w, _, _ in toks]
-    raw = [text[a:b] for _, a, b in toks]
-    context = _context(words, phrases, longest, catalog)
-    room_types = {room_type_of(r) for r in rooms}
-    kinds: dict[str, _Kind] = {}
-    last_counted: tuple[str, int] | None = None  # (category, token index) of "two <kind>"
-    last_colored: str | None = None
-    recent: list[str] = []  # kinds in order of their last mention
+class _Reader:
+    """One reading of one description (the state `name_objects` builds up word by word)."""
 
-    def instance(category: str, name: str, attrs: dict[str, str]) -> None:
-        kinds.setdefault(category, _Kind()).instances.setdefault(name, attrs)
+    def __init__(self, description: str, catalog: Catalog, rooms: Iterable[str]) -> None:
+        self.catalog = catalog
+        self.phrases, self.heads, self.longest = _phrase_tables(catalog)
+        text = expand(description)
+        toks = tokens(text)
+        self.text = _Text([w for w, _, _ in toks], [text[a:b].lower() for _, a, b in toks],
+                          [text[toks[k - 1][2] if k else 0:toks[k][1]] for k in range(len(toks))])
+        self.named: set[str] = set()  # kinds named outright (by a full name or synonym)
+        self.context = self._context()
+        self.room_types = {room_type_of(r) for r in rooms}
+        self.kinds: dict[str, _Kind] = {}
+        self.recent: list[str] = []  # kinds in order of their last mention
+        #: kind -> the head nouns the text named it by ("the box" then means the red toy box)
+        self.used: dict[str, set[str]] = {}
+        self.consumed: set[int] = set()  # words an enumeration has read
 
-    shelf = vocabulary(catalog).canonical("shelf")
-    for m in _LEVELS.finditer(text):
-        for item in re.split(r",\s*(?:and\s+)?|\s+and\s+", m.group(1).strip()):
-            if item.split() and shelf is not None:
-                instance(shelf, f"shelf_{item.split()[0]}", {})
-    i = 0
-    while i < len(words):
-        prev = words[i - 1] if i > 0 else ""
-        if words[i] == "one" and prev in COLOR_WORDS and last_colored is not None:
-            instance(last_colored, f"{prev}_{last_colored}", {"color": prev})
-            i += 1
-            continue
-        if words[i] == "one" and i + 2 < len(words) and words[i + 1] == "for" and last_counted \
-                and i - last_counted[1] <= 12:
-            counted, purpose = last_counted[0], raw[i + 2]
-            kinds[counted].purposes.add(purpose)
-            instance(counted, f"{purpose}_{words_of(counted)[-1]}", {})
-            i += 3
-            continue
-        category: str | None
-        n, category = next(((n, phrases[tuple(words[i:i + n])]) for n in range(min(longest, len(words) - i), 0, -1)
-                            if tuple(words[i:i + n]) in phrases), (1, None))
-        if n == 1:
-            if (words[i] in _PACKAGING and i + 1 < len(words) and words[i + 1] == "of"
-                    or words[i] in _ALSO_VERBS and prev not in _DETERMINERS and prev not in COLOR_WORDS):
+    # -- noun phrases ----------------------------------------------------------------------
+
+    def match(self, i: int) -> tuple[int, str | None]:
+        """(length, category) of the longest catalog name starting at word `i`."""
+        words = self.text.words
+        return next(((n, self.phrases[tuple(words[i:i + n])])
+                     for n in range(min(self.longest, len(words) - i), 0, -1)
+                     if tuple(words[i:i + n]) in self.phrases), (1, None))
+
+    def leads_noun(self, i: int, strict: bool = False) -> bool:
+        """Whether word `i` stands where a noun phrase starts: after a determiner, a colour or a
+        count, or (unless `strict`: a word that is as often a verb) at the start of a sentence or
+        list item or after "with", "and"."""
+        prev = self.text.words[i - 1] if i > 0 else ""
+        if prev in _DETERMINERS or prev in COLOR_WORDS or prev in _COUNTS:
+            return True
+        return not strict and (i == 0 or prev in _NOUN_LEADS or bool(
+            _ITEM_BREAK.search(self.text.gaps[i]) or _SENTENCE_END.search(self.text.gaps[i])))
+
+    def kind_at(self, i: int) -> tuple[int, str | None]:
+        """The kind the noun phrase at word `i` names, and its length in words."""
+        words = self.text.words
+        n, category = self.match(i)
+        if n > 1:
+            return n, category
+        word = words[i]
+        nxt = words[i + 1] if i + 1 < len(words) else ""
+        if word in _PACKAGING and nxt == "of":
+            return 1, None
+        if word in _ALSO_VERBS and not self.leads_noun(i, strict=True):
+            return 1, None
+        return 1, self.bare_noun(i, category)
+
+    def bare_noun(self, i: int, exact: str | None) -> str | None:
+        """The kind a one-word noun means: the kind last named that it ends; else the kind whose
+        name holds the word before it ("the full bag": a full trash bag); else the kind it is the
+        name of ("the chair", "the stool"); else the kind whose other name words its sentence holds
+        most ("the pantry has two shelves": pantry shelves); else the kind it is a synonym of ("the
+        bin"); else the kind whose other name words the names of the kinds named hold most ("a
+        nightstand (bedside table) with a lamp": a bedside lamp); then the kind most specific to the
+        task's rooms. A noun that names no kind itself must start a noun phrase."""
+        word = self.text.words[i]
+        options = list(dict.fromkeys(self.heads.get(word, [])))
+        named = [c for c in reversed(self.recent) if c in options and word in self.used.get(c, ())]
+        if named:
+            return named[0]
+        if exact is None and (not options or not self.leads_noun(i)):
+            return None
+        prev = self.text.words[i - 1] if i > 0 else ""
+        candidates = options if options else [exact]
+        said = set(self.text.words[self.text.sentence_start(i):self.text.sentence_end(i)]) - _NOT_CONTEXT
+
+        def score(category: str | None) -> tuple[bool, bool, int, bool, int, int]:
+            assert category is not None
+            cat = self.catalog.categories[category]
+            others = {w for text in (category, *cat.synonyms) for w in words_of(text)} - {word}
+            rooms = set(cat.rooms)
+            return (prev in others, words_of(category) == (word,), len(others & said),
+                    category == exact, len(others & self.context),
+                    -len(rooms) if rooms & self.room_types else -1000)
+
+        return max(candidates, key=score)
+
+    def _context(self) -> set[str]:
+        """The description's words and the words of every name of the kinds it names outright
+        (by a name that is not the head noun of several kinds: "shelf" names no kind outright)."""
+        words = self.text.words
+        out = set(words)
+        for i in range(len(words)):
+            n, category = self.match(i)
+            if category is None or n == 1 and words[i] in _ALSO_VERBS and not self.leads_noun(i, strict=True):
+                continue
+            if n > 1 or len(set(self.heads.get(words[i], []))) == 1:
+                self.named.add(category)
+                for text in (category, *self.catalog.categories[category].synonyms):
+                    out.update(words_of(text))
+        return out - _NOT_CONTEXT
+
+    # -- instances -------------------------------------------------------------------------
+
+    def instance(self, category: str, name: str, attrs: dict[str, str]) -> None:
+        self.kinds.setdefault(category, _Kind()).instances.setdefault(_snake(name), attrs)
+
+    def mention(self, category: str, head: str) -> None:
+        """`category` was just named, by a noun phrase ending in `head`."""
+        self.recent = [c for c in self.recent if c != category] + [category]
+        self.used.setdefault(category, set()).add(head)
+
+    def compound(self, i: int, n: int, category: str) -> tuple[int, str]:
+        """"the vanity cabinet", "the pet food bag": a name followed at once by a head noun of
+        several kinds (or a packaging word) is one object, of the kind named first; a head
+        noun of one kind after it ("the sofa cushion") is the object."""
+        words = self.text.words
+        j = i + n
+        if j >= len(words) or self.text.gaps[j].strip():
+            return n, category
+        m, second = self.match(j)
+        if second is None or m > 1:
+            return n, category
+        kinds = set(self.heads.get(words[j], []))
+        if words[j] in _PACKAGING or len(kinds) > 1:
+            return n + 1, category
+        return n, category
+
+    # -- enumerations ----------------------------------------------------------------------
+
+    def enumerations(self) -> None:
+        """Objects of one kind told apart by a list: "two bowls: a food bowl and a water bowl",
+        "two coat hooks: one for the jacket and one for the hat", "two toy boxes: red for dolls,
+        white for other toys", "bookshelf levels: top for novels, middle for essays", "three
+        levels - novels on one, essays on the next", "novels are kept on the first level,
+        essays on the second", "three levels hold novels, essays and other books respectively"."""
+        words = self.text.words
+        i = 0
+        while i < len(words):
+            count = _COUNTS.get(words[i], 0)
+            j = i + 1 if count else i
+            n, category = self.group_kind(j)
+            if category is None:
                 i += 1
                 continue
-            category = _bare_noun(words[i], category, prev, heads, recent, context, room_types, catalog)
-        if category is None:
+            k = j + n  # the word after the noun phrase
+            plural = self.text.raw[k - 1] != words[k - 1]
+            listed = plural and k < len(words) and bool(_HEADING.search(self.text.gaps[k]))
+            ordinal_part = words[k - 1] in _PARTS and i > 0 and words[i - 1] in _ORDINALS
+            if not (count or listed or ordinal_part):
+                i += 1
+                continue
+            if ordinal_part:
+                start, end = self.text.sentence_start(i), self.text.sentence_end(i)
+            else:
+                start, end = j + n, self.text.sentence_end(j + n - 1)
+            found = self.read_items(category, start, end, count)
+            if len(found) >= max(2, count):
+                self.kinds.setdefault(category, _Kind()).generic = True
+                for name, attrs, span in found[:count or None]:
+                    self.instance(category, name, attrs)
+                    self.consumed.update(span)
+                i = end
+                continue
             i += 1
-            continue
-        kind = kinds.setdefault(category, _Kind())
-        recent = [c for c in recent if c != category] + [category]
-        allowed = catalog.categories[category].attributes.get("color", [])
-        if prev in COLOR_WORDS and prev in allowed:
-            instance(category, f"{prev}_{category}", {"color": prev})
-            last_colored = category
-        elif prev in _SPARE:
-            instance(category, f"spare_{words[i + n - 1]}", {})
-        elif prev in kind.purposes:
-            instance(category, f"{prev}_{words[i + n - 1]}", {})
-        else:
-            kind.generic = True
-            if prev in _COUNTS:
-                kind.count = _COUNTS[prev]
-                last_counted = (category, i)
-                if allowed:
-                    last_colored = category
-        i += n
-    found: list[dict[str, Any]] = []
-    for category, kind in kinds.items():
-        told_apart = len(kind.instances) >= max(2, kind.count)
-        if kind.generic and not told_apart:
-            found.append({"name": _snake(category), "category": category, "attributes": {}})
-        found += [{"name": _snake(name), "category": category, "attributes": attrs}
-                  for name, attrs in kind.instances.items()]
-    return list({o["name"]: o for o in found}.values())
+
+    def group_kind(self, j: int) -> tuple[int, str | None]:
+        """The kind of the noun phrase at word `j` that may head a list: a catalog kind, or a part
+        word ("levels", "tiers") of the kind of shelf the context fits best, never the piece of
+        furniture named just before, of which they are the parts."""
+        words = self.text.words
+        if j >= len(words):
+            return 1, None
+        part = _PARTS.get(words[j])
+        if part is not None and words[j] != part:
+            # kinds that are shelves by their own name (a wall shelf, a pantry shelf), never a
+            # piece of furniture named in the text (the bookshelf the levels are of)
+            options = [c for c in dict.fromkeys(self.heads.get(part, []))
+                       if c not in self.named and words_of(c)[-1] == part]
+            return 1, self.part_kind(options, self.phrases.get((part,)))
+        n, category = self.kind_at(j)
+        if category is not None:
+            self.mention(category, words[j + n - 1])
+        return n, category
+
+    def part_kind(self, options: list[str], exact: str | None) -> str | None:
+        """Of the shelf kinds, the one that fits most of the task's rooms, then the context (the
+        exact word wins ties): a pantry's levels are pantry shelves, a bedroom's wall shelves."""
+        def score(c: str) -> tuple[int, int, bool]:
+            cat = self.catalog.categories[c]
+            others = {w for t in (c, *cat.synonyms) for w in words_of(t)} - {"shelf"}
+            return len(set(cat.rooms) & self.room_types), len(others & self.context), c == exact
+
+        return max(options, key=score, default=None)
+
+    def read_items(self, category: str, start: int, end: int,
+                   count: int) -> list[tuple[str, dict[str, str], list[int]]]:
+        """(name, attributes, words read) of each item of the list between `start` and `end`
+        that tells one object apart: a colour, "for X", "X on the next", a modifier before
+        "one" or before the kind's head noun, or a bare word."""
+        words = self.text.words
+        head = words_of(category)[-1]
+        allowed = self.catalog.categories[category].attributes.get("color", [])
+        out: list[tuple[str, dict[str, str], list[int]]] = []
+        for a, b in self.text.items(start, end):
+            item = words[a:b]
+            if item[0] in _HOLDING and len(item) > 1 and not out:
+                item, a = item[1:], a + 1  # "hold novels, essays and ..."
+            color = next((w for w in item if w in COLOR_WORDS and w in allowed), None)
+            at: int | None = None  # the purpose's word in the item
+            if "for" in item:
+                at = next((k for k in range(item.index("for") + 1, len(item)) if item[k] not in _ARTICLES), None)
+            ordinal_at = next((k for k, w in enumerate(item) if w in _ORDINALS and k > 0
+                               and item[k - 1] in ("on", "in", "the")), None)
+            if at is None and ordinal_at is not None:
+                at = next((k for k in range(ordinal_at) if item[k] not in _ARTICLES
+                           and item[k] not in _FILLER and item[k] not in _PREPOSITIONS), None)
+            purpose = None if at is None else item[at]
+            before = item[:item.index("for")] if "for" in item else item
+            stop = next((k for k, w in enumerate(before) if w == "one" or w == head), len(before))
+            modifiers = [w for w in before[:stop] if w not in _ARTICLES and w not in _FILLER
+                         and w not in COLOR_WORDS and w != head and w not in _PREPOSITIONS
+                         and (w != "other" or purpose is None)]  # "the other for the umbrella"
+            if purpose is None and (not modifiers or not count) and color is None:
+                continue  # without a count, a list tells objects apart by colour or purpose only
+            if self.own_kind(a, a + len(before), head):
+                continue  # "two toys: a doll and a ball" names a doll and a ball
+            if ordinal_at is None and "for" not in item and color is None and (
+                    len(item) > 4 or any(w in _PREPOSITIONS or w in _HOLDING or w in STATE_WORDS for w in item)):
+                continue  # a clause, not an item ("are in the kitchen")
+            # the words read: the item's up to "for", and the purpose when it is a class of things
+            # (a bare plural: "for dolls", "novels on one"), not when it is an object ("one for
+            # the jacket")
+            read = [] if ordinal_at is not None else list(range(a, a + len(before)))
+            if at is not None and self.text.raw[a + at] != purpose and (at == 0 or item[at - 1] not in _ARTICLES):
+                read.append(a + at)
+            if color is not None:
+                out.append((f"{color}_{category}", {"color": color}, read))
+                continue
+            # named for its position and its purpose ("upper_tin_shelf"), a ranked item for its
+            # purpose only ("novels on the first level": the rank says only which comes next)
+            parts = [] if ordinal_at is not None else modifiers[:1]
+            parts += [purpose] if purpose and purpose not in parts else []
+            out.append(("_".join([*parts, head]), {}, read))
+        return out
+
+    def own_kind(self, a: int, b: int, head: str) -> bool:
+        """Whether words `a`..`b` of an item name one thing of a kind of its own, with another
+        head noun ("a doll" in "two toys: a doll and a ball"; not "a tea cup" in "two cups: ...",
+        nor the class of things a part holds: "three levels hold novels, essays, ...")."""
+        words = self.text.words
+        k = next((k for k in range(a, b) if words[k] not in _DETERMINERS and words[k] not in COLOR_WORDS), None)
+        if k is None or k == a or words[k - 1] not in _ARTICLES or self.text.raw[b - 1] != words[b - 1]:
+            return False
+        n, category = self.match(k)
+        return category is not None and k + n == b and words[b - 1] != head
+
+    def coordinated(self, j: int, allowed: list[str]) -> list[str]:
+        """The colour at word `j` and those coordinated before it, in order ("a red and a white
+        toy box", "the red, blue and green boxes")."""
+        words, gaps = self.text.words, self.text.gaps
+        out = [words[j]]
+        joined = False  # a comma joins colours only before an "and" ("red, blue and green")
+        while True:
+            k = j - 1
+            while k >= 0 and words[k] in _ARTICLES:
+                k -= 1
+            if k >= 0 and words[k] in ("and", "or"):
+                joined = True
+                k -= 1
+                while k >= 0 and words[k] in _ARTICLES:
+                    k -= 1
+            elif not (joined and k + 1 < len(words) and "," in gaps[k + 1]):
+                break
+            if k < 0 or words[k] not in allowed:
+                break
+            out.insert(0, words[k])
+            j = k
+        # the first colour of the list must describe a noun phrase: "the sofa is red and the
+        # blue toy box" is one box
+        if len(out) > 1 and (j == 0 or words[j - 1] not in _DETERMINERS and words[j - 1] not in _COUNTS):
+            return out[-1:]
+        return out
+
+    # -- the whole text --------------------------------------------------------------------
+
+    def read(self) -> list[dict[str, Any]]:
+        self.enumerations()
+        self.recent, self.used = [], {}
+        words = self.text.words
+        last_colored: str | None = None
+        i = 0
+        while i < len(words):
+            prev = words[i - 1] if i > 0 else ""
+            if i in self.consumed:
+                n, category = self.match(i)
+                if category is not None:
+                    self.mention(category, words[i + n - 1])
+                i += 1
+                continue
+            if words[i] == "one" and prev in COLOR_WORDS and last_colored is not None:
+                self.instance(last_colored, f"{prev}_{last_colored}", {"color": prev})
+                i += 1
+                continue
+            if words[i] in SPARE_WORDS and prev in _DETERMINERS and (
+                    i + 1 == len(words) or words[i + 1] not in self.heads and self.match(i + 1)[1] is None):
+                # "a spare" as a noun: "fetch a spare from the dresser", "we store the spares"
+                spare = next((c for c in reversed(self.recent) if self.catalog.categories[c].pickable), None)
+                if spare is not None:
+                    kind = self.kinds.setdefault(spare, _Kind())
+                    if not any(name.startswith("spare_") for name in kind.instances):
+                        self.instance(spare, f"spare_{words_of(spare)[-1]}", {})
+                i += 1
+                continue
+            n, category = self.kind_at(i)
+            if category is None:
+                i += 1
+                continue
+            n, category = self.compound(i, n, category)
+            kind = self.kinds.setdefault(category, _Kind())
+            known = category in self.recent
+            self.mention(category, words[i + n - 1])
+            allowed = self.catalog.categories[category].attributes.get("color", [])
+            last = words[i + n - 1] if words[i + n - 1] not in _PACKAGING else words_of(category)[-1]
+            if prev in COLOR_WORDS and prev in allowed:
+                for color in self.coordinated(i - 1, allowed):
+                    self.instance(category, f"{color}_{category}", {"color": color})
+                last_colored = category
+            elif prev in SPARE_WORDS or prev in _FRESH and known and kind.generic:
+                if not any(name.startswith("spare_") for name in kind.instances):
+                    self.instance(category, f"spare_{last}", {})
+            elif prev in _ANOTHER and known and kind.generic:
+                self.instance(category, f"other_{last}", {})  # "a lamp on the desk and another lamp"
+            else:
+                kind.generic = True
+                if prev in _COUNTS:
+                    kind.count = max(kind.count, _COUNTS[prev])
+                    if allowed:
+                        last_colored = category
+            i += n
+        found: list[dict[str, Any]] = []
+        for category, kind in self.kinds.items():
+            told_apart = len(kind.instances) >= max(2, kind.count)
+            if kind.generic and not told_apart:
+                found.append({"name": _snake(category), "category": category, "attributes": {}})
+            found += [{"name": name, "category": category, "attributes": attrs}
+                      for name, attrs in kind.instances.items()]
+        return list({o["name"]: o for o in found}.values())
+
+
+def name_objects(description: str, catalog: Catalog, rooms: Iterable[str] = ()) -> list[dict[str, Any]]:
+    """Catalog categories and synonyms named in the description, read as a careful reader would
+    (the module docstring): one object per kind named, or one per instance where the text tells
+    several apart, named for what tells them apart, with the colour as attribute."""
+    return _Reader(description, catalog, rooms).read()
 
 
 def _snake(name: str) -> str:
     return re.sub(r"[^a-z0-9_]", "_", name)
-
-
-def _context(words: list[str], phrases: dict[tuple[str, ...], str], longest: int,
-             catalog: Catalog) -> set[str]:
-    """The description's words and the words of every name of the kinds it names outright."""
-    out = set(words)
-    for i in range(len(words)):
-        for n in range(min(longest, len(words) - i), 0, -1):
-            category = phrases.get(tuple(words[i:i + n]))
-            if category is not None:
-                for text in (category, *catalog.categories[category].synonyms):
-                    out.update(words_of(text))
-                break
-    return out - _NOT_CONTEXT
-
-
-def _bare_noun(word: str, exact: str | None, prev: str, heads: dict[str, list[str]], recent: list[str],
-               context: set[str], room_types: set[str], catalog: Catalog) -> str | None:
-    """The kind a one-word noun means: the kind last named that it ends, else the kind whose other
-    name words its context holds most (the exact name wins ties; then the kind most specific to
-    the task's rooms). A noun that names no kind itself must follow a determiner ("a lamp")."""
-    options = list(dict.fromkeys(heads.get(word, [])))
-    named = [c for c in reversed(recent) if c in options]
-    if named:
-        return named[0]
-    if exact is None and (not options or prev not in _DETERMINERS):
-        return None
-
-    def score(category: str) -> tuple[int, int, int]:
-        cat = catalog.categories[category]
-        others = {w for text in (category, *cat.synonyms) for w in words_of(text)} - {word}
-        rooms = set(cat.rooms)
-        return (len(others & context), category == exact,
-                -len(rooms) if rooms & room_types else -1000)
-
-    candidates = options if options else ([exact] if exact is not None else [])
-    return max(candidates, key=score)
