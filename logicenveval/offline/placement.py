@@ -96,6 +96,8 @@ LIST_GLUE = frozenset({",", "and", "or", "plus", "as", "well"}) | ARTICLES
 #: words that point back to a place or a thing already named
 PLACE_PRONOUNS = frozenset({"there", "here"})
 THING_PRONOUNS = frozenset({"it", "that", "this", "they"})
+#: prepositions that name where a thing comes from, not a place spoken of ("from the dining room")
+SOURCE = frozenset({"from", "of", "off", "than"})
 #: subjects of an active clause that name no object of the task ("someone left a mark on the floor")
 SUBJECT_PRONOUNS = frozenset({"someone", "somebody", "we", "i", "you", "they", "he", "she", "kids",
                               "children", "everyone", "nobody"})
@@ -749,7 +751,8 @@ def _where(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, ca
         if before and _noun_tail(gap):
             antecedent = before[-1]
         elif set(words[max(clause.start, lead - 3):lead]) & THING_PRONOUNS:
-            antecedent = _pointed(sent, clause, lex, catalog, reading)
+            pronoun = next(w for w in words[max(clause.start, lead - 3):lead] if w in THING_PRONOUNS)
+            antecedent = _pointed(sent, clause, lex, catalog, reading, pronoun)
         if antecedent is None or antecedent.kind == "role" and len(antecedent.roles) != 1:
             continue
         stop = next((k for k in range(i + 1, clause.end) if words[k] in (",",) and k + 1 < clause.end
@@ -777,13 +780,18 @@ def _noun_tail(gap: list[str]) -> bool:
                                                 | _PUNCT | DOUBT | SUBORDINATORS | THING_PRONOUNS)
 
 
-def _pointed(sent: _Sentence, clause: _Clause, lex: Lexicon, catalog: Catalog,
-             reading: _Reading) -> Mention | None:
-    """What "that" / "it" in "that's where ..." points back to: the subject of the last statement,
-    else the nearest noun before it, else the place last named, the first of them that can hold
-    things (a room, a surface or a container)."""
+def _pointed(sent: _Sentence, clause: _Clause, lex: Lexicon, catalog: Catalog, reading: _Reading,
+             pronoun: str) -> Mention | None:
+    """What the pronoun of "it's where ..." / "that's where ..." points back to, the first of these
+    that can hold things (a room, a surface or a container): for "it", the subject of the last
+    statement, then the nearest noun before it; for "that" / "this", the nearest noun, unless it
+    is named as a source ("through from the dining room"): then that subject first."""
     near = [m for m in sent.mentions if m.end <= clause.start and m.kind in ("role", "room")]
-    for m in (reading.last_subject, near[-1] if near else None, reading.last_holder):
+    nearest = near[-1] if near else None
+    source = nearest is not None and _prep_before(sent.words, nearest.start) in SOURCE
+    first_subject = pronoun == "it" or source
+    order = (reading.last_subject, nearest) if first_subject else (nearest, reading.last_subject)
+    for m in (*order, reading.last_holder):
         if m is None or m.kind == "floor":
             continue
         if m.kind == "room" or len(m.roles) == 1 and m.roles[0] in lex.holders:
@@ -926,11 +934,12 @@ def _resting(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, 
             continue
         if _moved(words, a.start, clause):
             continue
-        if clause.mood == "condition" and not _described_subject(words, a.start, b.end, clause):
+        described = clause.mood == "condition" and _described_subject(words, a.start, b.end, clause)
+        if clause.mood == "condition" and not described:
             continue
         fact = _contain(catalog, lex, a.roles[0], b.roles[0], between[0])
-        if fact is not None:
-            reading.place("presumed", a.roles[0], fact)
+        if fact is not None:  # a condition on its state takes its place for granted: a statement
+            reading.place("settled" if described else "presumed", a.roles[0], fact)
 
 
 def _described_subject(words: list[str], start: int, end: int, clause: _Clause) -> bool:
