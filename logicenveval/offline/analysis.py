@@ -919,6 +919,12 @@ def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Cat
             continue
         if f.kind == "location" and "elsewhere" in f.values and kept & values and not elsewhere:
             f.values.pop("elsewhere")
+            # the home takes the "elsewhere" cases, so the responses still cover every case
+            home = next(k for k, v in f.values.items() if v in kept)
+            others = [v for k, v in f.values.items() if k != home]
+            if others:
+                f.values[home] = " and ".join(f"not ({v})" if " " in v.split("(", 1)[0] else f"not {v}"
+                                              for v in others)
         out.append(f)
     return out
 

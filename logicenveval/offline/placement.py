@@ -75,6 +75,12 @@ DOUBT = frozenset({"may", "might", "could", "maybe", "perhaps", "possibly", "pro
 #: words that open a subordinate clause: a condition or a time, not a statement about the scene
 SUBORDINATORS = frozenset({"if", "when", "whenever", "unless", "once", "while", "whether", "should",
                            "until", "before", "after", "otherwise", "else", "though", "although"})
+#: subordinators that are modal verbs elsewhere ("the shirt should be in the basket")
+MODAL_SUBORDINATORS = frozenset({"should"})
+#: modal and semi-modal words before a verb group that make it a norm or a goal, not a fact
+#: ("the shirt should be in the basket", "it needs to go on the desk", "is to be put away")
+NORMATIVE = frozenset({"should", "must", "ought", "shall", "would", "will", "can", "to", "needs", "need",
+                       "has", "have", "wants", "want"})
 #: words that open a new clause after a comma or "and" (a subject pronoun or a sentence adverb)
 CLAUSE_OPENERS = frozenset({"it", "they", "we", "i", "you", "someone", "somebody", "he", "she", "then",
                             "but", "so", "or", "which", "that", "where", "this"})
@@ -241,8 +247,9 @@ def _clauses(words: list[str], lo: int, hi: int) -> list[_Clause]:
         nxt = words[i + 1] if i + 1 < hi else ""
         if w in _HARD:
             cuts += [i, i + 1]
-        elif w in SUBORDINATORS and i > lo and words[i - 1] not in ("in", "case"):
-            cuts.append(i)
+        elif w in SUBORDINATORS and i > lo and words[i - 1] not in ("in", "case") and (
+                w not in MODAL_SUBORDINATORS or words[i - 1] in _PUNCT | {"and", "but", "or", "then"}):
+            cuts.append(i)  # "should" opens a condition only inverted: "..., should the bin be full"
         elif w == "case" and i > lo and words[i - 1] == "in":
             cuts.append(i - 1)
         elif w in (",", "and") and (nxt in CLAUSE_OPENERS or nxt in SUBORDINATORS or nxt in IMPERATIVES
@@ -263,10 +270,12 @@ def _clauses(words: list[str], lo: int, hi: int) -> list[_Clause]:
         heading = b < len(words) and words[b] == ":" and not set(body) & (BE | PERFECT | HAVE_VERBS | STATIVE)
         first = next((w for w in body if w not in ("and", "then", "please", "just", "also", "so", "now",
                                                     "first", "last", "oh", "right", "but", "or")), "")
-        if first in SUBORDINATORS or body[:2] == ["in", "case"] or question or heading:
+        if first in SUBORDINATORS or body[:2] == ["in", "case"] or question:
             mood = "condition"
         elif first in IMPERATIVES or body[0] in REQUESTS and body[1:2] == ["you"]:
             mood = "instruction"
+        elif heading:
+            mood = "condition"
         else:
             mood = "statement"
         out.append(_Clause(a, b, mood, _doubts(body)))
@@ -309,8 +318,9 @@ def _read_sentence(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Re
         ms = [m for m in sent.mentions if clause.start <= m.start < clause.end]
         if clause.mood != "condition":
             _locative(sent, clause, ms, lex, catalog, reading)
-        if clause.mood == "statement" and not clause.doubted:
+        if clause.mood == "statement":  # a doubt in a list leaves out only what it covers
             _possessive(sent, clause, ms, lex, catalog, reading)
+        if clause.mood == "statement" and not clause.doubted:
             _existential(sent, clause, ms, lex, catalog, reading)
             _where(sent, clause, ms, lex, catalog, reading)
         if clause.mood != "condition" and not clause.doubted:
@@ -349,11 +359,21 @@ def _np_list(sent: _Sentence, ms: list[Mention], lo: int, hi: int) -> list[Menti
     "and", articles and adjectives, each not the object of a preposition ("the pantry next to the
     kitchen": the pantry), and none after a doubt word ("a dirty mark, and possibly a book")."""
     out = []
+    doubt_from: int | None = None  # where a doubt began ("possibly a book, a clock or a phone")
     for m in ms:
         if not lo <= m.start < hi or m.end > hi:
             continue
-        if _doubts(sent.words[lo:m.start]):
-            break
+        words = sent.words
+        if doubt_from is None:
+            doubt_from = next((k for k in range(lo, m.start) if _doubts(words[k:k + 2])), None)
+        if doubt_from is not None:
+            # the doubt ends with the "or" chain it opens: at a comma after an "or" has been seen
+            nxt = next((n.start for n in ms if n.start > m.start), hi)
+            sep = words[m.end:min(nxt, hi)]
+            if "or" in words[doubt_from:m.end] and "or" not in sep and "," in sep:
+                doubt_from = None
+                lo = m.end
+            continue
         prep = _prep_before(sent.words, m.start)
         if prep is not None and prep not in ("of",) and lo <= _prep_index(sent.words, m.start):
             continue
@@ -574,6 +594,13 @@ def _locative(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon,
         end, group = _verb_group(words, i, clause.end)
         start, i = i, end
         kind = _verb_kind(group)
+        k = start - 1
+        while k > clause.start and words[k] in ADVERBS:
+            k -= 1
+        before = words[k] if k >= clause.start else ""
+        if before in NORMATIVE and not (before in PERFECT and group[:1] == ["been"]) or before in ("you", "we", "i") \
+                and not set(group) & KEEP_VERBS:
+            continue  # a norm or a goal ("should be in"), or what someone does ("which you hang on")
         if kind is None or clause.mood == "instruction" and _finite(group):
             continue  # an instruction places only through its noun phrases ("the coat the kids dumped ...")
         subjects = _np_list(sent, ms, lo, start)
@@ -904,7 +931,7 @@ def _in_room(sent: _Sentence, clause: _Clause, ms: list[Mention], reading: _Read
             continue
         if _moved(words, a.start, clause) or _indefinite_doubt(sent, a):
             continue
-        reading.room("settled" if clause.mood == "statement" else "presumed", a.roles[0], b.roles[0])
+        reading.room("settled", a.roles[0], b.roles[0])  # a noun phrase's own place, whatever the mood
 
 
 def _moved(words: list[str], start: int, clause: _Clause) -> bool:

@@ -112,7 +112,8 @@ def _described(choice: dict[str, RoleChoice], brief: Mapping[str, Any], facts: l
     """Placements the description states ("a nightstand with a lamp", "the drying rack out on the
     balcony"), for objects whose place no situation fact speaks of, held by an object present and
     not ruled out (`offline.placement`): a reader of the text puts them there."""
-    placed = {pred.args[0] for text in facts for pred, _ in _literals(parse(text)) if pred.name in _WHERE}
+    # a negated placement says where the object is not; the description may still say where it is
+    placed = {pred.args[0] for text in facts for pred, pos in _literals(parse(text)) if pred.name in _WHERE and pos}
     for text in described_placements(brief, catalog):
         for pred, pos in _literals(parse(text)):
             c = choice.get(pred.args[0])
