@@ -195,3 +195,45 @@ def test_the_realiser_drops_a_placement_the_scene_grammar_rules_out() -> None:
     assert choice["sofa"].placement == "floor"
     assert choice["phone"].placement != "on:book"
     assert choice["book"].placement == "inside:toy_box"
+
+
+@pytest.mark.parametrize(("text", "roles", "placed", "left_out"), [
+    ("The bedroom has a bed, possibly with a book or a pen on it, along with a nightstand and a desk.",
+     ("bed", "book", "pen", "nightstand", "desk"), {"nightstand", "desk", "bed"}, {"book", "pen"}),
+    ("The study contains a desk, maybe a laptop or a tablet, and a chair.",
+     ("desk", "laptop", "tablet", "chair"), {"desk", "chair"}, {"laptop", "tablet"}),
+    ("On the floor: a dirty mark, and possibly a book or a pen.", ("mark", "book", "pen"), {"mark"}, {"book", "pen"}),
+])
+def test_a_doubt_in_a_list_covers_its_or_chain_only(text: str, roles: tuple[str, ...], placed: set[str],
+                                                     left_out: set[str]) -> None:
+    subjects = {f.split("(")[1].split(",")[0] for f in _read(text, *roles)}
+    assert placed <= subjects and not left_out & subjects
+
+
+@pytest.mark.parametrize(("text", "roles"), [
+    ("The mug should be on the counter.", ("mug", "counter")),
+    ("The plate should be in the cabinet; if it isn't, put it there.", ("plate", "cabinet")),
+    ("The tablet needs to go on the desk.", ("tablet", "desk")),
+    ("Otherwise use the plate, which you then put on the counter.", ("plate", "counter")),
+    ("Take the mug, which we then leave on the counter.", ("mug", "counter")),
+])
+def test_a_norm_a_goal_or_what_someone_does_places_nothing(text: str, roles: tuple[str, ...]) -> None:
+    assert not [f for f in _read(text, *roles) if f.startswith(("on(", "inside("))]
+
+
+def test_a_home_with_other_places_keeps_the_factor_exhaustive() -> None:
+    """"The shampoo is kept in the wall cabinet. It has probably been left in the bathtub": where
+    it may be is asked (tub or its home), and the home takes every other case, so the responses
+    cover every environment; the realiser then puts it in its home unless it is in the tub."""
+    from logicenveval.offline.analysis import analyse
+
+    brief = {"id": "t", "rooms": ["bathroom"],
+             "description": "The shampoo is kept in the wall cabinet. The shampoo has probably been left in "
+                            "the bathtub again - if it has, put it back in the cabinet.",
+             "roles": {"shampoo": {"category": "shampoo"}, "wall_cabinet": {"category": "wall_cabinet"},
+                       "bathtub": {"category": "bathtub"}}}
+    factor = next(f for f in analyse(brief).factors if f.subject == "shampoo")
+    assert "elsewhere" not in factor.values
+    assert sorted(factor.values.values()) == ["inside(shampoo, bathtub)", "not inside(shampoo, bathtub)"]
+    assert realise(brief, ["not inside(shampoo, bathtub)"], CATALOG)["shampoo"].placement == "inside:wall_cabinet"
+    assert realise(brief, ["inside(shampoo, bathtub)"], CATALOG)["shampoo"].placement == "inside:bathtub"

@@ -267,12 +267,17 @@ def _clauses(words: list[str], lo: int, hi: int) -> list[_Clause]:
         question = (b < len(words) and words[b] == "?" or (b - 1 >= a and words[b - 1] == "?")) and not (
             body[0] in REQUESTS and body[1:2] == ["you"])
         # "Plate on the table: ..." (a verbless checklist item), not "The pantry has two shelves: ..."
-        heading = b < len(words) and words[b] == ":" and not set(body) & (BE | PERFECT | HAVE_VERBS | STATIVE)
+        heading = b < len(words) and words[b] == ":" and not set(body) & VERBS
+        # "... should go where it belongs - the book on the couch": a verbless part after a dash or a
+        # colon goes on with the clause before it (here a goal), not a statement of its own
+        follows_goal = (a > 0 and words[a - 1] in ("-", ":") and not set(body) & VERBS and bool(out)
+                        and (out[-1].mood == "instruction" or bool(set(words[out[-1].start:out[-1].end])
+                                                                    & (MOTION | NORMATIVE))))
         first = next((w for w in body if w not in ("and", "then", "please", "just", "also", "so", "now",
                                                     "first", "last", "oh", "right", "but", "or")), "")
         if first in SUBORDINATORS or body[:2] == ["in", "case"] or question:
             mood = "condition"
-        elif first in IMPERATIVES or body[0] in REQUESTS and body[1:2] == ["you"]:
+        elif first in IMPERATIVES or body[0] in REQUESTS and body[1:2] == ["you"] or follows_goal:
             mood = "instruction"
         elif heading:
             mood = "condition"
@@ -400,6 +405,8 @@ def _prep_before(words: list[str], start: int) -> str | None:
     if j < 0:
         return None
     w = words[j]
+    if w == "with" and j > 0 and words[j - 1] in ("along", "together"):
+        return None  # "along with a nightstand": a list goes on
     if w in PREP_IN | PREP_ON or w in ("to", "by", "from", "of", "near", "beside", "behind", "under",
                                        "at", "with", "for", "against", "into", "onto", "through", "off"):
         return w
@@ -508,8 +515,8 @@ def _heading(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Reading)
     prep = next((w for w in filler if w in AT), "in")
     if place.kind == "role" and prep not in AT:
         return 0
-    if place.kind == "role" and not filler:
-        return 0  # "Plate: ..." is a checklist item about the plate, not a place
+    if place.kind == "role" and not set(filler) & AT:
+        return 0  # "Plate: ...", "Two toy boxes: ...": the thing spoken of, not a place
     body = [m for m in sent.mentions if m.start > colon]
     for clause in _clauses(words, colon + 1, len(words)):
         if clause.mood == "condition" and place.kind != "room":
@@ -731,12 +738,37 @@ def _possessive(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexico
             return
         if before and before[0].start > clause.start and words[before[0].start - 1] in ("we", "i", "you"):
             return
+        if before and not _modifies(words[owner.end:i]):
+            return  # "the bookshelf's three levels hold ...": the subject is another noun
         items = _np_list(sent, ms, i + 1, clause.end)
         for m in items:
+            if _generic(sent, m):
+                continue  # "hold novels, essays and other books": kinds, not things
             for role in _roles(m, sent):
                 if role != owner.roles[0]:
                     _put(reading, "settled", catalog, lex, role, owner, "in")
         return
+
+
+#: words that open a modifier after a noun ("the pantry next to the kitchen", "the kitchen, …, has")
+MODIFIER_OPENERS = frozenset({",", "next", "near", "beside", "behind", "by", "opposite", "off", "through",
+                              "just", "right"}) | AT | PREP_IN | PREP_ON
+
+
+def _modifies(gap: list[str]) -> bool:
+    """Whether the words between a noun and its verb only modify the noun: none, adverbs, an
+    apposition between commas, or a prepositional phrase; not a head noun of their own."""
+    rest = [w for w in gap if w not in ADVERBS]
+    return not rest or rest[0] in MODIFIER_OPENERS
+
+
+def _generic(sent: _Sentence, m: Mention) -> bool:
+    """A bare plural ("novels", "other books"): a kind of thing, not the things of the scene."""
+    last = sent.toks[m.end - 1]
+    j = m.start - 1
+    while j >= 0 and (sent.words[j] in COLOR_WORDS or sent.words[j] in STATE_WORDS or sent.words[j] in ("other",)):
+        j -= 1
+    return last.word != last.lemma and not (j >= 0 and sent.words[j] in ARTICLES)
 
 
 def _existential(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, catalog: Catalog,
