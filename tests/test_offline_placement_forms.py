@@ -237,3 +237,26 @@ def test_a_home_with_other_places_keeps_the_factor_exhaustive() -> None:
     assert sorted(factor.values.values()) == ["inside(shampoo, bathtub)", "not inside(shampoo, bathtub)"]
     assert realise(brief, ["not inside(shampoo, bathtub)"], CATALOG)["shampoo"].placement == "inside:wall_cabinet"
     assert realise(brief, ["inside(shampoo, bathtub)"], CATALOG)["shampoo"].placement == "inside:bathtub"
+
+
+@pytest.mark.parametrize(("text", "roles"), [
+    # the owner of a possessive is its head noun, not a noun modifying it
+    ("The bookshelf's three levels hold novels, essays and other books respectively.", ("shelf", "book")),
+    ("The desk's drawer has a pen in it.", ("desk", "pen")),
+    # a bare plural is a kind of thing
+    ("The cabinet holds plates and mugs.", ("cabinet", "plate")),
+    # a verbless part after a dash goes on with the goal before it
+    ("Anything on the floor should go where it belongs - the book on the sofa, the pen on the desk.",
+     ("book", "sofa")),
+    ("Put things back: the pen on the desk, the book on the sofa.", ("pen", "desk")),
+    # a heading naming a thing without a preposition is the thing spoken of, not a place
+    ("Two toy boxes: a red one for dolls, a white one for the other toys.", ("wardrobe", "book")),
+])
+def test_what_only_looks_like_a_placement(text: str, roles: tuple[str, ...]) -> None:
+    assert not [f for f in _read(text, *roles) if f.startswith(("on(", "inside("))]
+
+
+def test_a_list_goes_on_after_along_with() -> None:
+    facts = _read("The study has a desk, possibly with a pen or a book on it, along with a chair and a lamp.",
+                  "desk", "pen", "book", "chair", "lamp")
+    assert {"in_room(desk, study)", "in_room(chair, study)", "in_room(lamp, study)"} <= set(facts)

@@ -192,6 +192,7 @@ class _Clause:
     end: int
     mood: str  # "statement" | "condition" | "instruction"
     doubted: bool
+    goal: bool = False  # a verbless part going on with a goal ("- the book on the couch")
 
 
 @dataclass
@@ -283,7 +284,7 @@ def _clauses(words: list[str], lo: int, hi: int) -> list[_Clause]:
             mood = "condition"
         else:
             mood = "statement"
-        out.append(_Clause(a, b, mood, _doubts(body)))
+        out.append(_Clause(a, b, mood, _doubts(body), follows_goal))
     return out
 
 
@@ -382,8 +383,20 @@ def _np_list(sent: _Sentence, ms: list[Mention], lo: int, hi: int) -> list[Menti
         prep = _prep_before(sent.words, m.start)
         if prep is not None and prep not in ("of",) and lo <= _prep_index(sent.words, m.start):
             continue
+        if prep == "of" and out and out[-1].end == _prep_index(sent.words, m.start):
+            # "a box of cereal": one thing, the complement when it names the head too
+            if _names_head(sent, out[-1], m):
+                out[-1] = m
+            continue
         out.append(m)
     return out
+
+
+def _names_head(sent: _Sentence, head: Mention, complement: Mention) -> bool:
+    """Whether the complement of "<head> of <complement>" names the head noun too ("a box of
+    cereal" is the cereal box; "the bag of pet food" is a bag)."""
+    word = sent.toks[head.end - 1].lemma
+    return len(complement.roles) == 1 and word in complement.roles[0].split("_")
 
 
 def _prep_index(words: list[str], start: int) -> int:
@@ -991,7 +1004,7 @@ def _resting(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, 
         cat = catalog.get(str(lex.roles[a.roles[0]]["category"]))
         if cat is None or not cat.pickable or a.start == 0 or words[a.start - 1] != "the":
             continue
-        if _moved(words, a.start, clause):
+        if _moved(words, a.start, clause) or clause.goal:
             continue
         described = clause.mood == "condition" and _described_subject(words, a.start, b.end, clause)
         if clause.mood == "condition" and not described:
