@@ -364,7 +364,7 @@ def _np_list(sent: _Sentence, ms: list[Mention], lo: int, hi: int) -> list[Menti
     """The role mentions of a noun-phrase list within tokens [lo, hi): nouns joined by commas,
     "and", articles and adjectives, each not the object of a preposition ("the pantry next to the
     kitchen": the pantry), and none after a doubt word ("a dirty mark, and possibly a book")."""
-    out = []
+    out: list[Mention] = []
     doubt_from: int | None = None  # where a doubt began ("possibly a book, a clock or a phone")
     for m in ms:
         if not lo <= m.start < hi or m.end > hi:
