@@ -260,22 +260,3 @@ def test_a_list_goes_on_after_along_with() -> None:
     facts = _read("The study has a desk, possibly with a pen or a book on it, along with a chair and a lamp.",
                   "desk", "pen", "book", "chair", "lamp")
     assert {"in_room(desk, study)", "in_room(chair, study)", "in_room(lamp, study)"} <= set(facts)
-
-
-def test_a_wall_a_task_object_hangs_on_gets_no_decor_besides() -> None:
-    """The selection adds furniture typical of each room and one wall object; a room whose task
-    objects already hang on its walls (a curtain in a nursery) gets no wall decor besides: the
-    room's size is reckoned for the task's wall objects only (`room_areas`)."""
-    from logicenveval.llm.base import ChatRequest
-    from logicenveval.offline.scene_answers import select_objects
-
-    def wall_objects(roles: dict[str, str], room_type: str) -> list[str]:
-        task = {"id": "t", "description": "", "rooms": ["room"],
-                "roles": {r: {"category": c} for r, c in roles.items()}}
-        payload = {"task": task, "facts": [], "rooms": [{"id": "room", "type": room_type, "area_m2": 13.0}]}
-        reply = select_objects(payload, ChatRequest("select_objects", payload, [], None, seed=0))
-        return [o["id"] for o in reply["objects"] if o["placement"] == "wall"]
-
-    assert wall_objects({"curtain": "curtain", "crib": "crib"}, "KidsRoom") == ["curtain"]
-    assert wall_objects({"mirror": "mirror", "towel": "towel"}, "Bathroom") == ["mirror"]
-    assert len(wall_objects({"crib": "crib"}, "KidsRoom")) == 1  # one typical wall object

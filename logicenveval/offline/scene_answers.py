@@ -177,9 +177,7 @@ def misfits(objects: list[dict[str, Any]], catalog: Catalog) -> list[str]:
 
 @handler("select_objects")
 def select_objects(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
-    """The task objects placed as the situation requires, plus furniture typical of each room and
-    one wall object where no task object hangs on its walls already (`room_areas` sizes a room
-    for the task's wall objects only: a nursery's curtain and a poster did not fit its walls)."""
+    """The task objects placed as the situation requires, plus furniture typical of each room."""
     catalog = load_catalog()
     objects = _task_objects(payload)
     used = {o["category"] for o in objects}
@@ -195,8 +193,7 @@ def select_objects(payload: dict[str, Any], request: ChatRequest) -> dict[str, A
         n_floor = 1 if area < 10 else 2
         start = _stable(payload["task"]["id"], room["id"], request.seed)
         picks = [floor_like[(start + k * 7) % len(floor_like)] for k in range(min(n_floor, len(floor_like)))]
-        hung = any(o["room"] == room["id"] and o["placement"] == "wall" for o in objects)
-        if wall_like and not hung:
+        if wall_like:
             picks.append(wall_like[start % len(wall_like)])
         for k, cat in enumerate(dict.fromkeys(picks)):
             objects.append({
