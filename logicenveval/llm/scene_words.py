@@ -20,7 +20,7 @@ def selection_words(brief: TaskBrief, required: Sequence[str], catalog: Catalog)
     """The words of a protocol-3 selection (`replies.SelectionWire`): each role's object is of the
     role's category (`categories@<role>`) and rests (`placements@<role>`) on the floor, on a wall
     or the ceiling where the catalog lets its category hang, and, unless it is furniture
-    (`_furniture`), on another role that is a surface, inside another role that is a container,
+    (`furniture`), on another role that is a surface, inside another role that is a container,
     or on or inside an object that plays no role, whose ids are a name and a number: never on
     itself, nor on a category's name. Qwen2.5-Coder-1.5B put every object of a kitchen, the
     counter and the dishwasher included, `on:kitchen_counter`."""
@@ -35,7 +35,7 @@ def selection_words(brief: TaskBrief, required: Sequence[str], catalog: Catalog)
             continue
         options = ["floor", *(k for k in ("wall", "ceiling") if k in c.placement)]
         words[f"categories@{role}"] = [category]
-        if _furniture(c):  # it holds things and stands where its category stands
+        if furniture(c):  # it holds things and stands where its category stands
             words[f"placements@{role}"] = Pattern(f"^({'|'.join(options)})$")
             continue
         options += [f"on:{r}" for r in targets if r != role and _holds(catalog, brief, r, "surface")]
@@ -44,7 +44,7 @@ def selection_words(brief: TaskBrief, required: Sequence[str], catalog: Catalog)
     return words
 
 
-def _furniture(c: Category) -> bool:
+def furniture(c: Category) -> bool:
     """A category that holds things and is not carried, placed only on the floor, a wall or the
     ceiling (a counter, a sink, a dishwasher): its object rests on nothing. Given a way to name
     any other object, Qwen2.5-Coder-1.5B put its counter `on:counterery_household_..._1`."""

@@ -906,16 +906,25 @@ def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Cat
     settled = set(described_placements(brief, catalog, kinds=frozenset({"settled"} | (
         set() if elsewhere else {"kept"}))))
     kept = set(described_placements(brief, catalog, kinds=frozenset({"kept"})))
+    # an object the text places outright ("On the floor: a dirty mark") is nowhere else in question
+    placed = {f.split("(", 1)[1].split(",", 1)[0] for f in described_placements(
+        brief, catalog, kinds=frozenset({"settled"})) if f.startswith(("on(", "inside("))}
     out: list[Factor] = []
     for f in factors:
         values = set(f.values.values())
-        if f.kind == "location" and set(f.values) == {"yes", "no"} and settled & values:
+        if f.kind == "location" and set(f.values) == {"yes", "no"} and (settled & values or f.subject in placed):
             for slot, g in list(slot_factor.items()):
                 if g is f:
                     del slot_factor[slot]
             continue
         if f.kind == "location" and "elsewhere" in f.values and kept & values and not elsewhere:
             f.values.pop("elsewhere")
+            # the home takes the "elsewhere" cases, so the responses still cover every case
+            home = next(k for k, v in f.values.items() if v in kept)
+            others = [v for k, v in f.values.items() if k != home]
+            if others:
+                f.values[home] = " and ".join(f"not ({v})" if " " in v.split("(", 1)[0] else f"not {v}"
+                                              for v in others)
         out.append(f)
     return out
 

@@ -1,10 +1,23 @@
 """Where the description says things are, read as a careful reader (an LLM) reads it.
 
-A description states some placements outright, whatever the situation: "a nightstand with a
-lamp", "the drying rack out on the balcony", "the kitchen, where the dishwasher, the sink ... are",
-"In the study the laptop belongs on the desk", "it's kept in the vanity". A model asked to build
-the scene puts those objects there unless the situation it builds says otherwise. Like the
-analyser, this reads only the brief (description, rooms, roles), never ground truth.
+A description states some placements outright, whatever the situation, in many grammatical
+forms: a copular or locative clause ("the cardboard box is on the floor", "the bath mat lies on
+the floor", "the dishwasher, the sink and a cabinet are in the kitchen"), a possessive ("the
+kitchen has the dishwasher, ...", "the basket also holds a box of cereal", "a nightstand with a
+lamp on it"), an existential ("there is a dirty mark on the floor"), a relative clause ("a
+nightstand on which a lamp stands", "the bucket, which stands on the floor", "the kitchen, where
+the fridge is"), a heading ("Bedroom: the table lamp, ...", "On the floor: a dirty mark"), a
+framing phrase ("In the kitchen there are two pet bowls"), a room word before a noun ("the
+bedroom wardrobe"). Where an object is *kept* ("the spares are kept in the vanity", "we store it
+in the vanity", "it's where the flashlight lives") is its home, which the text may still doubt,
+and is read apart from where it *is*; nothing is placed from a condition, a question, an
+instruction (where a thing goes) or a doubted clause ("there might be a book on the floor").
+
+The reader works on clauses (`_clauses`): a sentence is cut at semicolons, dashes, brackets and
+before a subordinate clause, each clause gets its mood (a statement, a condition, an
+instruction), and the subject of a statement is the noun-phrase list before its verb, not the
+nearest noun. The words each form turns on are the data tables below. Like the analyser, this
+reads only the brief (description, rooms, roles), never ground truth.
 """
 
 from __future__ import annotations
@@ -14,45 +27,101 @@ import re
 import threading
 from collections import OrderedDict
 from collections.abc import Mapping
+from dataclasses import dataclass
 from typing import Any
 
 from logicenveval.domain.catalog import Catalog, load_catalog
-from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, tokens
-from logicenveval.offline.sentences import (
-    ACTIONS,
-    PREP_IN,
-    PREP_ON,
-    STATE_WORDS,
-    expand,
-    split_sentences,
-)
+from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, singular
+from logicenveval.offline.sentences import ACTIONS, PREP_IN, PREP_ON, STATE_WORDS, expand
 
-#: "it's kept in the vanity", "we keep spares in the vanity", "it lives in the vanity"
-KEEP_VERBS = frozenset({"keep", "keeps", "kept", "live", "lives", "lived"})
-#: words between an object and "in/on <room>" that still describe where it is
-#: ("the drying rack out on the balcony", "the nearest sink is in the kitchen")
-_BETWEEN = frozenset({"out", "over", "down", "up", "is", "are", "be", "still", "always"})
-#: words before an object that make what follows a condition or a possibility, not a statement
-#: ("if there is a pan in the kitchen", "a pan may be in the kitchen")
-_UNSURE = frozenset({"if", "whether", "unless", "when", "case", "may", "might", "maybe", "perhaps",
-                     "possibly", "could", "once", "while"})
-_MODAL = frozenset({"may", "might", "could", "maybe", "perhaps", "possibly"})
-#: prepositions of where a thing is (not "into"/"onto", which say where it goes)
-_AT = frozenset({"on", "in", "inside", "atop", "upon"})
-#: words that let a room introduce a list of what it holds ("a kitchen with a stove, ...",
-#: "the bedroom has a bed, ...", "the kitchen, where the sink ... are", "in the kitchen there are ...")
-_ROOM_LIST = frozenset({"with", "has", "have", "where", "there"})
-_LEADS = frozenset({"over", "out", "down", "up", "and", "then", "also"})
-_ARTICLES = frozenset({"a", "an", "the", "some", "any", "its", "their", "our", "my", "your", "this", "that"})
-_INDEFINITE = frozenset({"a", "an"})
+# ---------------------------------------------------------------------------------------------
+# Reading rules (data tables). Each names a class of words, never a task's phrase or object.
+# ---------------------------------------------------------------------------------------------
+
+#: verbs that say where a thing belongs rather than where it is now ("it's kept in the vanity",
+#: "we store the spares in the vanity", "the cloth lives in the vanity")
+KEEP_VERBS = frozenset({"keep", "keeps", "kept", "store", "stores", "stored", "live", "lives", "lived",
+                        "sleep", "sleeps"})
+#: forms of "be" and of verbs of resting that state where a thing is ("is", "lies", "is lying",
+#: "stands", "sits", "rests", "hangs", "stays")
+BE = frozenset({"is", "are", "was", "were", "be", "been", "being", "am"})
+STATIVE = frozenset({"lie", "lies", "lay", "lying", "sit", "sits", "sat", "sitting", "stand", "stands",
+                     "stood", "standing", "rest", "rests", "resting", "hang", "hangs", "hanging",
+                     "stay", "stays", "wait", "waits", "waiting", "leaning", "lean",
+                     "leans", "propped"})
+#: participles that state a result ("has been left on the floor", "are found in the kitchen"):
+#: after a perfect ("has/have been") all of these state a place; after a plain "is/are" only the
+#: `PASSIVE_STATIVE` ones do ("is put on the bed" is an instruction in the passive voice)
+RESULT = frozenset({"left", "dropped", "put", "placed", "thrown", "set", "found", "located", "knocked",
+                    "kept", "stored", "dumped", "abandoned", "forgotten", "parked", "stuck"})
+PASSIVE_STATIVE = frozenset({"found", "located", "kept", "stored", "situated", "seated"})
+PERFECT = frozenset({"has", "have", "had"})
+#: verbs whose subject holds what follows ("the kitchen has the dishwasher", "it contains a bed",
+#: "the basket also holds a box of cereal")
+HAVE_VERBS = frozenset({"has", "have", "had", "contains", "contain", "holds", "hold", "got", "includes",
+                        "include", "houses"})
+#: verbs of motion and of belonging a terse clause may carry ("a newspaper on the floor goes in the bin")
+MOTION = frozenset({"go", "goes", "went", "belong", "belongs", "get", "gets", "come", "comes", "need",
+                    "needs", "should", "must", "want", "wants"})
+#: words that may stand inside a verb group without ending it ("is still lying", "has probably
+#: been left", "are both kept")
+ADVERBS = frozenset({"still", "already", "always", "usually", "normally", "often", "again", "also",
+                     "just", "both", "all", "then", "now", "currently", "out", "over", "down", "up",
+                     "back", "there", "here", "too", "each", "mostly", "generally", "typically"})
+VERBS = BE | PERFECT | STATIVE | RESULT | KEEP_VERBS | HAVE_VERBS | MOTION
+#: words that make a clause (or the rest of a list) doubtful: nothing after them is placed
+DOUBT = frozenset({"may", "might", "could", "maybe", "perhaps", "possibly", "probably", "likely",
+                   "sometimes", "whether", "any", "think", "guess", "somewhere"})
+#: words that open a subordinate clause: a condition or a time, not a statement about the scene
+SUBORDINATORS = frozenset({"if", "when", "whenever", "unless", "once", "while", "whether", "should",
+                           "until", "before", "after", "otherwise", "else", "though", "although"})
+#: subordinators that are modal verbs elsewhere ("the shirt should be in the basket")
+MODAL_SUBORDINATORS = frozenset({"should"})
+#: modal and semi-modal words before a verb group that make it a norm or a goal, not a fact
+#: ("the shirt should be in the basket", "it needs to go on the desk", "is to be put away")
+NORMATIVE = frozenset({"should", "must", "ought", "shall", "would", "will", "can", "to", "needs", "need",
+                       "has", "have", "wants", "want"})
+#: words that open a new clause after a comma or "and" (a subject pronoun or a sentence adverb)
+CLAUSE_OPENERS = frozenset({"it", "they", "we", "i", "you", "someone", "somebody", "he", "she", "then",
+                            "but", "so", "or", "which", "that", "where", "this"})
+#: verbs that open an instruction (the imperative mood): a place after its object is a goal
+IMPERATIVES = ACTIONS | frozenset({
+    "check", "clean", "wipe", "close", "open", "shut", "switch", "turn", "grab", "fetch", "use", "pop",
+    "chuck", "get", "look", "mop", "scrub", "rinse", "wash", "dry", "hang", "make", "go", "find",
+    "pick", "lock", "tidy", "clear", "collect", "gather", "do", "keep", "see", "water", "mist", "spray",
+    "feed", "lay", "replace", "swap", "dump", "stash", "pull", "remove", "straighten", "fix", "don't",
+    "let", "try", "give", "pour", "empty", "toss", "please"})
+#: where a thing rests (not "into"/"onto", which say where it goes)
+AT = frozenset({"on", "in", "inside", "atop", "upon"})
+#: relative pronouns and the prepositions that lead into them ("on which", "in which")
+RELATIVE = frozenset({"which", "that", "who"})
+ARTICLES = frozenset({"a", "an", "the", "some", "its", "their", "our", "my", "your", "this", "that",
+                      "his", "her", "these", "those", "two", "three", "four", "one", "both", "another"})
+#: words that may stand between the nouns of a list ("the sink, the fridge and a cabinet")
+LIST_GLUE = frozenset({",", "and", "or", "plus", "as", "well"}) | ARTICLES
+#: words that point back to a place or a thing already named
+PLACE_PRONOUNS = frozenset({"there", "here"})
+THING_PRONOUNS = frozenset({"it", "that", "this", "they"})
+#: prepositions that name where a thing comes from, not a place spoken of ("from the dining room")
+SOURCE = frozenset({"from", "of", "off", "than"})
+#: subjects of an active clause that name no object of the task ("someone left a mark on the floor")
+SUBJECT_PRONOUNS = frozenset({"someone", "somebody", "we", "i", "you", "they", "he", "she", "kids",
+                              "children", "everyone", "nobody"})
+#: words before a room that let it frame the rest of its sentence ("In the kitchen, ...", "Over in
+#: the living room there ...")
+_LEADS = frozenset({"over", "out", "down", "up", "and", "then", "also", "back", "now", "next"})
+_PUNCT = frozenset({",", ";", ":", "(", ")", "-", "?"})
+_HARD = frozenset({";", "(", ")", "-", "?", ":"})
+#: how a polite request opens ("Could you sort out the coat ...?"): a question that is an instruction
+REQUESTS = frozenset({"could", "can", "would", "will"})
 
 
-#: what a phrase says of a place: `settled` (a statement: "a nightstand with a lamp", "a kitchen
-#: with a stove", "the drying rack out on the balcony"), `kept` (where it belongs: "it's kept in
-#: the vanity", which the text may still doubt: "wherever else it may be lying"), `presumed` (a
-#: noun phrase takes it for granted: "check the towel on the drying rack")
+#: what a phrase says of a place: `settled` (a statement: "a nightstand with a lamp", "the
+#: kitchen has a stove", "the cardboard box is on the floor"), `kept` (where it belongs: "it's
+#: kept in the vanity", which the text may still doubt: "wherever else it may be lying"),
+#: `presumed` (a noun phrase takes it for granted: "check the towel on the drying rack")
 KINDS = frozenset({"settled", "kept", "presumed"})
-
+_ORDER = ("settled", "kept", "presumed")
 
 #: `described_placements` per (catalog, brief, kinds), most recent last: the same brief is read
 #: once per situation and per request of a task (measured: 367 readings of 25 briefs per run,
@@ -65,8 +134,10 @@ _READ_LOCK = threading.Lock()
 def described_placements(brief: Mapping[str, Any], catalog: Catalog | None = None, *,
                          kinds: frozenset[str] = KINDS) -> list[str]:
     """Facts (condition language) placing the brief's roles where its description says they are:
-    `on(lamp, nightstand)`, `inside(old_towel, vanity)`, `in_room(drying_rack, balcony)`, from the
-    phrases of `kinds`. One fact per object; on/inside wins over a room; the first phrase wins."""
+    `on(lamp, nightstand)`, `inside(old_towel, vanity)`, `on(mark, floor)`, `in_room(drying_rack,
+    balcony)`, from the phrases of `kinds`. One on/inside per object, and one room for an object
+    not on or in another role; a statement wins over a home, a home over a presumption, and
+    within one kind the first phrase wins."""
     catalog = catalog or load_catalog()
     if not brief.get("roles"):
         return []
@@ -88,174 +159,865 @@ def described_placements(brief: Mapping[str, Any], catalog: Catalog | None = Non
     return facts
 
 
-def _read(brief: Mapping[str, Any], catalog: Catalog, kinds: frozenset[str]) -> list[str]:
-    lex = Lexicon.build(brief, catalog)
-    held: dict[str, str] = {}
-    rooms: dict[str, str] = {}
-    recent: list[str] = []
-    for sentence in split_sentences(expand(str(brief.get("description", "")))):
-        toks = tokens(sentence)
-        low = sentence.lower()
-        raw = [low[a:b] for _, a, b in toks]
-        mentions = [m for m in lex.find_mentions(toks) if len(m.roles) == 1]
-        if "kept" in kinds:
-            _kept(catalog, lex, raw, mentions, recent, held)
-        if "settled" in kinds:
-            _with(lex, raw, toks, low, mentions, catalog, held)
-        if "presumed" in kinds:
-            _resting(catalog, lex, raw, mentions, held)
-        if "settled" in kinds:
-            _room_lists(raw, toks, low, mentions, rooms)
-            _in_room(raw, mentions, rooms)
-        recent += [m.roles[0] for m in mentions if m.kind == "role"]
-    out = list(held.values())
-    out += [f"in_room({role}, {room})" for role, room in rooms.items() if role not in held]
+# ---------------------------------------------------------------------------------------------
+# Tokens, mentions, clauses
+# ---------------------------------------------------------------------------------------------
+
+_TOKEN = re.compile(r"[a-z0-9]+(?:'[a-z]+)?|[,;:()?]|(?<=\s)[-\u2013\u2014](?=\s)|\n")
+_SENTENCE_END = re.compile(r"(?<=[.!])\s+|\n+")
+_ABBREV = re.compile(r"\b(e\.g|i\.e|etc|approx|vs)\.", re.I)
+
+
+@dataclass(frozen=True)
+class _Token:
+    word: str  # lower-case surface form
+    lemma: str  # singular form, used to match names
+    start: int
+    end: int
+
+
+@dataclass
+class _Sentence:
+    toks: list[_Token]
+    mentions: list[Mention]  # role, room and floor mentions (token indices)
+
+    @property
+    def words(self) -> list[str]:
+        return [t.word for t in self.toks]
+
+
+@dataclass
+class _Clause:
+    start: int  # token range of the sentence
+    end: int
+    mood: str  # "statement" | "condition" | "instruction"
+    doubted: bool
+    goal: bool = False  # a verbless part going on with a goal ("- the book on the couch")
+
+
+@dataclass
+class _Reading:
+    """Facts found so far, per kind: `held[kind][role]` (on/inside/floor), `rooms[kind][role]`."""
+
+    held: dict[str, dict[str, str]]
+    rooms: dict[str, dict[str, str]]
+    context_room: str | None = None  # the room the text last spoke of as a whole
+    last_subject: Mention | None = None  # the subject of the last statement (for "it", "that")
+    last_holder: Mention | None = None  # the last place named (for "there")
+
+    def place(self, kind: str, role: str, fact: str) -> None:
+        self.held[kind].setdefault(role, fact)
+
+    def room(self, kind: str, role: str, room: str) -> None:
+        self.rooms[kind].setdefault(role, room)
+
+
+def _sentences(text: str, lex: Lexicon) -> list[_Sentence]:
+    protected = _ABBREV.sub(lambda m: m.group(0).replace(".", "\u2024"), expand(text))
+    out = []
+    for part in _SENTENCE_END.split(protected):
+        part = part.strip().replace("\u2024", ".")
+        if not part:
+            continue
+        low = part.lower()
+        toks = [_Token(m.group(0), singular(m.group(0)) if m.group(0)[0].isalnum() else m.group(0),
+                       m.start(), m.end()) for m in _TOKEN.finditer(low)]
+        toks = [t for t in toks if t.word != "\n"]
+        mentions = lex.find_mentions([(t.lemma, t.start, t.end) for t in toks])
+        out.append(_Sentence(toks, _with_room_word(toks, mentions, lex)))
     return out
 
 
-def _kept(catalog: Catalog, lex: Lexicon, raw: list[str], mentions: list[Mention], recent: list[str],
-          held: dict[str, str]) -> None:
-    """"it's kept in the vanity", "(we keep spares in the vanity cabinet)": the object spoken of
-    last (or the one named after the verb) is kept in/on the holder named after a preposition."""
-    for i, word in enumerate(raw):
-        if word not in KEEP_VERBS:
+def _with_room_word(toks: list[_Token], mentions: list[Mention], lex: Lexicon) -> list[Mention]:
+    """"the room" (or "the place") names the room the task is in when it has only one."""
+    if len(lex.rooms) != 1:
+        return mentions
+    taken = {i for m in mentions for i in range(m.start, m.end)}
+    extra = [Mention((lex.rooms[0],), i, i + 1, "room") for i, t in enumerate(toks)
+             if t.word == "room" and i not in taken and i > 0 and toks[i - 1].word in ("the", "this")]
+    return sorted(mentions + extra, key=lambda m: m.start)
+
+
+def _clauses(words: list[str], lo: int, hi: int) -> list[_Clause]:
+    """The clauses of words[lo:hi]: cut at hard punctuation (`;`, a dash, brackets, `?`), before a
+    subordinator, and at a comma or "and" that a clause opener or an imperative verb follows. A
+    clause opened by a subordinator runs to its comma; a clause ending in "?" is a question."""
+    cuts = [lo]
+    for i in range(lo, hi):
+        w = words[i]
+        nxt = words[i + 1] if i + 1 < hi else ""
+        if w in _HARD:
+            cuts += [i, i + 1]
+        elif w in SUBORDINATORS and i > lo and words[i - 1] not in ("in", "case") and (
+                w not in MODAL_SUBORDINATORS or words[i - 1] in _PUNCT | {"and", "but", "or", "then"}):
+            cuts.append(i)  # "should" opens a condition only inverted: "..., should the bin be full"
+        elif w == "case" and i > lo and words[i - 1] == "in":
+            cuts.append(i - 1)
+        elif w in (",", "and") and (nxt in CLAUSE_OPENERS or nxt in SUBORDINATORS or nxt in IMPERATIVES
+                                    or (nxt in ("in",) and i + 2 < hi and words[i + 2] == "case")):
+            cuts.append(i + 1 if w == "," else i)
+        elif w == "," and any(c > lo and words[c] in SUBORDINATORS | {"in"} for c in cuts[-1:]):
+            cuts.append(i + 1)  # the end of a fronted condition: "If the pan is hot, ..."
+    cuts.append(hi)
+    out: list[_Clause] = []
+    bounds = sorted(set(cuts))
+    for a, b in zip(bounds, bounds[1:], strict=False):
+        body = [w for w in words[a:b] if w not in _PUNCT]
+        if not body:
             continue
-        after = [m for m in mentions if m.kind == "role" and i < m.start <= i + 6]
-        holder = next((m for m in after if _prep_before(raw, m.start) is not None), None)
-        if holder is None:
+        question = (b < len(words) and words[b] == "?" or (b - 1 >= a and words[b - 1] == "?")) and not (
+            body[0] in REQUESTS and body[1:2] == ["you"])
+        # "Plate on the table: ..." (a verbless checklist item), not "The pantry has two shelves: ..."
+        heading = b < len(words) and words[b] == ":" and not set(body) & VERBS
+        # "... should go where it belongs - the book on the couch": a verbless part after a dash or a
+        # colon goes on with the clause before it (here a goal), not a statement of its own
+        follows_goal = (a > 0 and words[a - 1] in ("-", ":") and not set(body) & VERBS and bool(out)
+                        and (out[-1].mood == "instruction" or bool(set(words[out[-1].start:out[-1].end])
+                                                                    & (MOTION | NORMATIVE))))
+        first = next((w for w in body if w not in ("and", "then", "please", "just", "also", "so", "now",
+                                                    "first", "last", "oh", "right", "but", "or")), "")
+        if first in SUBORDINATORS or body[:2] == ["in", "case"] or question:
+            mood = "condition"
+        elif first in IMPERATIVES or body[0] in REQUESTS and body[1:2] == ["you"] or follows_goal:
+            mood = "instruction"
+        elif heading:
+            mood = "condition"
+        else:
+            mood = "statement"
+        out.append(_Clause(a, b, mood, _doubts(body), follows_goal))
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
+# The reading
+# ---------------------------------------------------------------------------------------------
+
+
+def _read(brief: Mapping[str, Any], catalog: Catalog, kinds: frozenset[str]) -> list[str]:
+    lex = Lexicon.build(brief, catalog)
+    reading = _Reading({k: {} for k in _ORDER}, {k: {} for k in _ORDER})
+    if len(lex.rooms) == 1:
+        reading.context_room = lex.rooms[0]
+    for sent in _sentences(str(brief.get("description", "")), lex):
+        _read_sentence(sent, lex, catalog, reading)
+    held: dict[str, str] = {}
+    rooms: dict[str, str] = {}
+    for kind in _ORDER:
+        if kind not in kinds:
             continue
-        named = [m.roles[0] for m in after if m.start < holder.start]
-        before = [m.roles[0] for m in mentions if m.kind == "role" and m.end <= i]
-        earlier = [r for r in recent + before if r != holder.roles[0]]
-        item = named[0] if named else (earlier[-1] if earlier else None)
-        prep = _prep_before(raw, holder.start)
-        if item is not None and prep is not None:
-            fact = _contain(catalog, lex, item, holder.roles[0], prep)
-            if fact is not None:
-                held.setdefault(item, fact)
+        for role, fact in reading.held[kind].items():
+            held.setdefault(role, fact)
+        for role, room in reading.rooms[kind].items():
+            rooms.setdefault(role, room)
+    out = list(held.values())
+    out += [f"in_room({role}, {room})" for role, room in rooms.items()
+            if role not in held or held[role].endswith(", floor)")]
+    return out
+
+
+def _read_sentence(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Reading) -> None:
+    words = sent.words
+    body_start = _heading(sent, lex, catalog, reading)
+    _frame(sent, reading, body_start)
+    _room_words(sent, lex, reading)
+    for clause in _clauses(words, body_start, len(words)):
+        ms = [m for m in sent.mentions if clause.start <= m.start < clause.end]
+        if clause.mood != "condition":
+            _locative(sent, clause, ms, lex, catalog, reading)
+        if clause.mood == "statement":  # a doubt in a list leaves out only what it covers
+            _possessive(sent, clause, ms, lex, catalog, reading)
+        if clause.mood == "statement" and not clause.doubted:
+            _existential(sent, clause, ms, lex, catalog, reading)
+            _where(sent, clause, ms, lex, catalog, reading)
+        if clause.mood != "condition" and not clause.doubted:
+            _kept(sent, clause, ms, lex, catalog, reading)
+        if clause.mood == "statement" and not clause.doubted:
+            _with(sent, clause, ms, lex, catalog, reading)
+        _in_room(sent, clause, ms, reading)
+        _resting(sent, clause, ms, lex, catalog, reading)
+        subjects = [m for m in ms if m.kind in ("role", "room")]
+        if clause.mood == "statement" and subjects:
+            reading.last_subject = subjects[0]
+        holders = [m for m in ms if _prep_before(words, m.start) in AT | {"from", "of"}]
+        if holders:
+            reading.last_holder = holders[-1]
+
+
+def _doubts(words: list[str]) -> bool:
+    """Whether the words carry a doubt ("may", "possibly", "probably"); "could you" opens a request."""
+    return any(w in DOUBT and not (w in REQUESTS and words[k + 1:k + 2] == ["you"]) for k, w in enumerate(words))
+
+
+def _roles(m: Mention, sent: _Sentence) -> tuple[str, ...]:
+    """The roles a mention names: its one role, or all of them when the word is plural ("two pet
+    bowls", "the toy boxes") and so names every one."""
+    if m.kind != "role":
+        return ()
+    if len(m.roles) == 1:
+        return m.roles
+    last = sent.toks[m.end - 1]
+    plural = last.word != last.lemma or (m.start > 0 and sent.toks[m.start - 1].word in ("two", "three", "both"))
+    return m.roles if plural else ()
+
+
+def _np_list(sent: _Sentence, ms: list[Mention], lo: int, hi: int) -> list[Mention]:
+    """The role mentions of a noun-phrase list within tokens [lo, hi): nouns joined by commas,
+    "and", articles and adjectives, each not the object of a preposition ("the pantry next to the
+    kitchen": the pantry), and none after a doubt word ("a dirty mark, and possibly a book")."""
+    out: list[Mention] = []
+    doubt_from: int | None = None  # where a doubt began ("possibly a book, a clock or a phone")
+    for m in ms:
+        if not lo <= m.start < hi or m.end > hi:
+            continue
+        words = sent.words
+        if doubt_from is None:
+            doubt_from = next((k for k in range(lo, m.start) if _doubts(words[k:k + 2])), None)
+        if doubt_from is not None:
+            # the doubt ends with the "or" chain it opens: at a comma after an "or" has been seen
+            nxt = next((n.start for n in ms if n.start > m.start), hi)
+            sep = words[m.end:min(nxt, hi)]
+            if "or" in words[doubt_from:m.end] and "or" not in sep and "," in sep:
+                doubt_from = None
+                lo = m.end
+            continue
+        prep = _prep_before(sent.words, m.start)
+        if prep is not None and prep not in ("of",) and lo <= _prep_index(sent.words, m.start):
+            continue
+        if prep == "of" and out and out[-1].end == _prep_index(sent.words, m.start):
+            # "a box of cereal": one thing, the complement when it names the head too
+            if _names_head(sent, out[-1], m):
+                out[-1] = m
+            continue
+        out.append(m)
+    return out
+
+
+def _names_head(sent: _Sentence, head: Mention, complement: Mention) -> bool:
+    """Whether the complement of "<head> of <complement>" names the head noun too ("a box of
+    cereal" is the cereal box; "the bag of pet food" is a bag)."""
+    word = sent.toks[head.end - 1].lemma
+    return len(complement.roles) == 1 and word in complement.roles[0].split("_")
+
+
+def _prep_index(words: list[str], start: int) -> int:
+    """Where the word `_prep_before` looks at stands (articles and adjectives skipped)."""
+    j = start - 1
+    while j >= 0 and (words[j] in ARTICLES or words[j] in COLOR_WORDS or words[j] in STATE_WORDS
+                      and words[j] not in ("on", "out", "off")):
+        j -= 1
+    return j
+
+
+def _prep_before(words: list[str], start: int) -> str | None:
+    """The preposition right before a mention, articles and adjectives skipped ("in the vanity",
+    "next to the stool")."""
+    j = start - 1
+    while j >= 0 and (words[j] in ARTICLES or words[j] in COLOR_WORDS or words[j] in STATE_WORDS
+                      and words[j] not in ("on", "out", "off")):
+        j -= 1
+    if j < 0:
+        return None
+    w = words[j]
+    if w == "with" and j > 0 and words[j - 1] in ("along", "together"):
+        return None  # "along with a nightstand": a list goes on
+    if w in PREP_IN | PREP_ON or w in ("to", "by", "from", "of", "near", "beside", "behind", "under",
+                                       "at", "with", "for", "against", "into", "onto", "through", "off"):
+        return w
+    return None
+
+
+def _verb_group(words: list[str], i: int, hi: int) -> tuple[int, list[str]]:
+    """The verb group starting at token i (auxiliaries, adverbs, verbs), as (end, its words)."""
+    j = i
+    while j < hi and (words[j] in BE | PERFECT | STATIVE | RESULT | KEEP_VERBS | ADVERBS | DOUBT
+                      or words[j] in ("not", "never", "usually", "often") or words[j].endswith("ly")):
+        j += 1
+    return j, words[i:j]
+
+
+def _verb_kind(group: list[str]) -> str | None:
+    """What a verb group says of a place: `settled` ("is", "lies", "has been left", "are found"),
+    `kept` ("are kept", "lives", "we store"), None for a goal ("is put", "goes") or no verb."""
+    verbs = [w for w in group if w not in ADVERBS]
+    if not verbs or set(verbs) & {"not", "never"}:
+        return None
+    if set(verbs) & KEEP_VERBS:
+        return "kept"
+    last = verbs[-1]
+    if last in BE or last in STATIVE:
+        return "settled"
+    if last in RESULT:
+        perfect = bool(set(verbs) & PERFECT) and "been" in verbs
+        active_past = len(verbs) == 1  # "someone left a mark on the floor" (with its subject)
+        return "settled" if perfect or last in PASSIVE_STATIVE or active_past else None
+    return None
+
+
+def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[str, Mention] | None:
+    """(preposition, place) when tokens from j read "on/in [the ...] <place>"."""
+    words = sent.words
+    if j >= hi or words[j] not in AT:
+        return None
+    k = j + 1
+    while k < hi and (words[k] in ARTICLES or words[k] in COLOR_WORDS or words[k] in STATE_WORDS):
+        k += 1
+    m = next((m for m in ms if m.start == k), None)
+    return (words[j], m) if m is not None else None
+
+
+def _put(reading: _Reading, kind: str, catalog: Catalog, lex: Lexicon, item: str, holder: Mention,
+         prep: str) -> None:
+    """Record `item` at `holder` (a role, a room or the floor) under `kind`."""
+    if holder.kind == "room":
+        if item not in lex.rooms:
+            reading.room(kind, item, holder.roles[0])
+        return
+    if holder.kind == "floor":
+        cat = catalog.get(str(lex.roles[item]["category"]))
+        if cat is not None and "floor" in cat.placement or cat is not None and cat.pickable:
+            reading.place(kind, item, f"on({item}, floor)")
+            room = _floor_room(holder, lex)
+            if room is not None:
+                reading.room(kind, item, room)
+        return
+    if len(holder.roles) != 1:
+        return
+    fact = _contain(catalog, lex, item, holder.roles[0], prep)
+    if fact is not None:
+        reading.place(kind, item, fact)
+
+
+def _floor_room(floor: Mention, lex: Lexicon) -> str | None:
+    """The room of "the kitchen floor" (a floor mention longer than one word), if any."""
+    if floor.end - floor.start < 2:
+        return None
+    return next((r for r in lex.rooms if floor.end - floor.start - 1 == len(r.split("_"))), None)
 
 
 def _contain(catalog: Catalog, lex: Lexicon, item: str, holder: str, prep: str) -> str | None:
-    """`inside(...)` for a container said "in" (or one that is no surface), `on(...)` for a surface."""
+    """`inside(...)` for a container said "in" (or one that is no surface), `on(...)` for a
+    surface; None when the item is furniture (it stands on the floor) or the holder holds nothing."""
     cat = catalog.get(str(lex.roles[holder]["category"]))
+    item_cat = catalog.get(str(lex.roles[item]["category"]))
     if item == holder or cat is None or not (cat.container or cat.surface):
         return None
+    if item_cat is not None and not item_cat.pickable and (item_cat.surface or item_cat.container):
+        return None  # furniture rests on the floor, not on another piece
     inside = cat.container and (prep in PREP_IN or not cat.surface)
     return f"{'inside' if inside else 'on'}({item}, {holder})"
 
 
-def _prep_before(raw: list[str], start: int) -> str | None:
-    """The preposition right before a mention, articles skipped ("in the vanity")."""
-    j = start - 1
-    while j >= 0 and raw[j] in _ARTICLES:
-        j -= 1
-    return raw[j] if j >= 0 and raw[j] in PREP_IN | PREP_ON else None
+# --- the forms -------------------------------------------------------------------------------
 
 
-def _with(lex: Lexicon, raw: list[str], toks: list[tuple[str, int, int]], low: str, mentions: list[Mention],
-          catalog: Catalog, held: dict[str, str]) -> None:
-    """"a nightstand with a lamp", "a coffee table with a mug on it": an item on its holder (not "a
-    table with a mop leaning against it", which says where the mop stands, not that it is on top)."""
-    for a, b in zip(mentions, mentions[1:], strict=False):
-        if a.kind != "role" or b.kind != "role" or raw[a.end:b.start] not in (["with", "a"], ["with", "an"]):
+def _heading(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Reading) -> int:
+    """"Bedroom: the table lamp, ...", "Kitchen: two pet bowls", "On the floor: a dirty mark, and
+    possibly a book", "In the room: a sofa; a table": a heading naming a room or a place before a
+    colon, and the list after it. Returns where the body starts (0 without a heading)."""
+    words = sent.words
+    if ":" not in words:
+        return 0
+    colon = words.index(":")
+    head = [m for m in sent.mentions if m.end <= colon]
+    if len(head) != 1 or head[0].kind == "role" and len(head[0].roles) != 1:
+        return 0
+    place = head[0]
+    filler = [w for i, w in enumerate(words[:colon]) if not place.start <= i < place.end]
+    if not all(w in AT | ARTICLES | _LEADS for w in filler):
+        return 0
+    prep = next((w for w in filler if w in AT), "in")
+    if place.kind == "role" and prep not in AT:
+        return 0
+    if place.kind == "role" and not set(filler) & AT:
+        return 0  # "Plate: ...", "Two toy boxes: ...": the thing spoken of, not a place
+    body = [m for m in sent.mentions if m.start > colon]
+    for clause in _clauses(words, colon + 1, len(words)):
+        if clause.mood == "condition" and place.kind != "room":
             continue
-        if a.start == 0 or raw[a.start - 1] not in _INDEFINITE:
+        for m in _np_list(sent, [b for b in body if clause.start <= b.start < clause.end],
+                          clause.start, clause.end) if place.kind != "room" else [
+                b for b in body if clause.start <= b.start < clause.end and not _indefinite_doubt(sent, b)]:
+            for role in _roles(m, sent):
+                if role != place.roles[0]:
+                    _put(reading, "settled", catalog, lex, role, place, prep)
+        if place.kind != "room" and clause.doubted:
+            break
+    if place.kind == "room":
+        reading.context_room = place.roles[0]
+    return colon + 1
+
+
+def _indefinite_doubt(sent: _Sentence, m: Mention) -> bool:
+    """"there might be a shirt", "possibly a pack of wipes", "if there is a pan": an object whose
+    presence is in doubt (an indefinite under a modal or a condition a few words before)."""
+    before = sent.words[max(0, m.start - 5):m.start]
+    return bool(set(before) & (DOUBT | SUBORDINATORS | {"case"})) and (
+        "a" in before or "an" in before or "any" in before or "there" in before or "some" in before)
+
+
+def _frame(sent: _Sentence, reading: _Reading, lo: int) -> None:
+    """"In the kitchen there are two pet bowls", "In the bedroom, turn off the table lamp", "Over
+    in the living room, clean the pet bed": a room opening its sentence frames every object the
+    sentence names, but an object only possibly there ("there might be a pan")."""
+    words = sent.words
+    rooms = [m for m in sent.mentions if m.kind == "room" and m.start >= lo]
+    if not rooms:
+        return
+    first = rooms[0]
+    lead = words[lo:first.start]
+    if not (lead[-2:] == ["in", "the"] and all(w in _LEADS for w in lead[:-2])):
+        return
+    for later in sent.mentions:
+        if later.start < first.end:
+            continue
+        if later.kind == "room":
+            break
+        if later.kind == "role" and not _indefinite_doubt(sent, later) and _named(words, later.start):
+            for role in _roles(later, sent):
+                reading.room("settled", role, first.roles[0])
+    reading.context_room = first.roles[0]
+
+
+def _named(words: list[str], start: int) -> bool:
+    """A noun phrase with its determiner ("the wardrobe", "two pet bowls"), not a verb ("bin the wipe")."""
+    return any(w in ARTICLES for w in words[max(0, start - 2):start])
+
+
+def _room_words(sent: _Sentence, lex: Lexicon, reading: _Reading) -> None:
+    """"the bedroom wardrobe", "the kitchen sink", "the kitchen counter": a room's name before a
+    noun (or starting the object's own name) says which room it is in."""
+    for a, b in zip(sent.mentions, sent.mentions[1:], strict=False):
+        if a.kind == "room" and b.kind == "role" and b.start == a.end and len(b.roles) == 1:
+            reading.room("settled", b.roles[0], a.roles[0])
+    for m in sent.mentions:
+        if m.kind != "role" or len(m.roles) != 1:
+            continue
+        for room in lex.rooms:
+            parts = room.split("_")
+            if m.end - m.start > len(parts) and [t.lemma for t in sent.toks[m.start:m.start + len(parts)]] == parts:
+                reading.room("settled", m.roles[0], room)
+
+
+def _locative(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, catalog: Catalog,
+              reading: _Reading) -> None:
+    """"The cardboard box is on the floor next to the stool", "the dishwasher, the sink and a
+    cabinet are in the kitchen", "The bath mat lies on the floor", "A dirty mark has been left on
+    the floor", "Two pet bowls are kept in the kitchen": the noun-phrase list before a verb of
+    being, resting or result is at the place after it; later ", <list> in <place>" parts share the
+    verb ("..., a sofa and a coffee table in the living room")."""
+    words = sent.words
+    i = lo = clause.start
+    while i < clause.end:
+        if words[i] not in BE | PERFECT | STATIVE | RESULT | KEEP_VERBS:
+            i += 1
+            continue
+        end, group = _verb_group(words, i, clause.end)
+        start, i = i, end
+        kind = _verb_kind(group)
+        k = start - 1
+        while k > clause.start and words[k] in ADVERBS:
+            k -= 1
+        before = words[k] if k >= clause.start else ""
+        if before in NORMATIVE and not (before in PERFECT and group[:1] == ["been"]) or before in ("you", "we", "i") \
+                and not set(group) & KEEP_VERBS:
+            continue  # a norm or a goal ("should be in"), or what someone does ("which you hang on")
+        if kind is None or clause.mood == "instruction" and _finite(group):
+            continue  # an instruction places only through its noun phrases ("the coat the kids dumped ...")
+        subjects = _np_list(sent, ms, lo, start)
+        if not _finite(group):
+            who = start - 1
+            while who > lo and words[who] in ADVERBS:
+                who -= 1
+            if subjects and subjects[-1].end == start:  # "the keys lying on the floor": a modifier
+                kind = "presumed" if _definite(sent.words, subjects[-1].start) else ""
+                subjects = subjects[-1:]
+            elif who >= lo and words[who] in SUBJECT_PRONOUNS and group[-1] in RESULT:
+                at = next((k for k in range(end, clause.end) if words[k] in AT), clause.end)
+                after = _np_list(sent, ms, end, at)
+                # "someone left a mark on the floor"; "the coat the kids dumped in the hallway"
+                subjects, end = (after, at) if after else (_np_list(sent, ms, lo, who), end)
+                kind = kind if clause.mood == "statement" else "presumed"
+            else:
+                continue
+            if not kind:
+                continue
+        found = _holder_after(sent, ms, end, clause.end)
+        if found is None:
+            continue
+        if words[clause.start] in RELATIVE and not subjects:
+            back = _antecedent(sent, clause)
+            subjects = [back] if back is not None else []
+        first = subjects[0].start if subjects else start
+        if not subjects or words[clause.start] == "there" or _doubts(words[max(lo, first - 3):found[1].end]):
+            lo = found[1].end
+            continue  # no subject, an existential (`_existential`) or a doubt ("may have been put")
+        prep, holder = found
+        for m in subjects:
+            for role in _roles(m, sent):
+                _put(reading, kind, catalog, lex, role, holder, prep)
+        lo = _gapped(sent, clause, ms, holder.end, kind, lex, catalog, reading)
+    if clause.mood == "statement":
+        _fragment(sent, clause, ms, lex, catalog, reading)
+
+
+def _fragment(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, catalog: Catalog,
+              reading: _Reading) -> None:
+    """"Dirty mark on the floor.", "Bath mat on the floor, by the tub": a verbless statement (the
+    terse register), a noun-phrase list and its place."""
+    words = sent.words
+    j = next((k for k in range(clause.start, clause.end) if words[k] in AT), None)
+    if j is None:
+        return
+    subjects = _np_list(sent, ms, clause.start, j)
+    found = _holder_after(sent, ms, j, clause.end)
+    body = set(words[clause.start:clause.end])
+    if not subjects or found is None or body & (DOUBT | VERBS | {"or"}):
+        return  # doubted, a choice of places ("on the floor or on the sofa"), or it has a verb
+    covered = {k for m in subjects for k in range(m.start, m.end)}
+    if not all(k in covered or w in LIST_GLUE or w in COLOR_WORDS or w in STATE_WORDS
+               for k, w in enumerate(words[clause.start:j], clause.start)):
+        return
+    for m in subjects:
+        for role in _roles(m, sent):
+            _put(reading, "settled", catalog, lex, role, found[1], found[0])
+
+
+def _finite(group: list[str]) -> bool:
+    """A verb group with a finite verb ("is lying", "lies", "has been left", "are kept"), not a
+    bare participle ("lying", "left", "found") that modifies the noun before it."""
+    verbs = [w for w in group if w not in ADVERBS and w not in DOUBT]
+    return bool(set(verbs) & (BE | PERFECT)) or any(
+        (w in STATIVE or w in KEEP_VERBS) and not w.endswith(("ing", "ed")) and w not in RESULT for w in verbs)
+
+
+def _definite(words: list[str], start: int) -> bool:
+    """A noun phrase opened by "the" or a possessive ("the keys", "my phone")."""
+    j = start - 1
+    while j >= 0 and (words[j] in COLOR_WORDS or words[j] in STATE_WORDS):
+        j -= 1
+    return j >= 0 and words[j] in ("the", "my", "our", "your", "his", "her", "their", "its")
+
+
+def _antecedent(sent: _Sentence, clause: _Clause) -> Mention | None:
+    """The noun a relative clause ("..., which stands on the floor") speaks of: the last mention
+    before it in its sentence."""
+    before = [m for m in sent.mentions if m.end <= clause.start and m.kind == "role"]
+    return before[-1] if before else None
+
+
+def _gapped(sent: _Sentence, clause: _Clause, ms: list[Mention], after: int, kind: str, lex: Lexicon,
+            catalog: Catalog, reading: _Reading) -> int:
+    """", a sofa and a coffee table in the living room, and the front door at the end of the
+    hallway": a list and a place after the place of a locative clause, its verb left out."""
+    words = sent.words
+    i = after
+    while i < clause.end:
+        if words[i] != ",":
+            i += 1
+            continue
+        j = i + 1
+        while j < clause.end and words[j] not in AT and words[j] != ",":
+            j += 1
+        found = _holder_after(sent, ms, j, clause.end)
+        subjects = _np_list(sent, ms, i + 1, j)
+        if found is not None and subjects and all(w in LIST_GLUE or w in COLOR_WORDS
+                                                  or any(m.start <= k < m.end for m in subjects)
+                                                  for k, w in enumerate(words[i + 1:j], i + 1)):
+            for m in subjects:
+                for role in _roles(m, sent):
+                    _put(reading, kind, catalog, lex, role, found[1], found[0])
+            i = found[1].end
+            after = i
+        else:
+            i = j
+    return after
+
+
+def _possessive(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, catalog: Catalog,
+                reading: _Reading) -> None:
+    """"The kitchen, next door to the dining room, has the dishwasher, the sink ...", "It contains a
+    bed, a wardrobe ...", "The basket also holds a box of cereal", "The pantry has two shelves":
+    the clause's subject (its first noun not after a preposition; "it" for the room or thing last
+    spoken of) holds the list after the verb."""
+    words = sent.words
+    for i in range(clause.start, clause.end):
+        if words[i] not in HAVE_VERBS or words[i + 1: i + 2] == ["been"] or words[i + 1: i + 2] == ["to"]:
+            continue
+        before = _np_list(sent, [m for m in ms if m.kind in ("role", "room")], clause.start, i)
+        owner: Mention | None = before[0] if before else None
+        if owner is None and set(words[clause.start:i]) & THING_PRONOUNS:
+            owner = reading.last_subject
+        if owner is None or owner.kind == "role" and len(owner.roles) != 1:
+            return
+        if before and before[0].start > clause.start and words[before[0].start - 1] in ("we", "i", "you"):
+            return
+        if before and not _modifies(words[owner.end:i]):
+            return  # "the bookshelf's three levels hold ...": the subject is another noun
+        items = _np_list(sent, ms, i + 1, clause.end)
+        for m in items:
+            if _generic(sent, m):
+                continue  # "hold novels, essays and other books": kinds, not things
+            for role in _roles(m, sent):
+                if role != owner.roles[0]:
+                    _put(reading, "settled", catalog, lex, role, owner, "in")
+        return
+
+
+#: words that open a modifier after a noun ("the pantry next to the kitchen", "the kitchen, …, has")
+MODIFIER_OPENERS = frozenset({",", "next", "near", "beside", "behind", "by", "opposite", "off", "through",
+                              "just", "right"}) | AT | PREP_IN | PREP_ON
+
+
+def _modifies(gap: list[str]) -> bool:
+    """Whether the words between a noun and its verb only modify the noun: none, adverbs, an
+    apposition between commas, or a prepositional phrase; not a head noun of their own."""
+    rest = [w for w in gap if w not in ADVERBS]
+    return not rest or rest[0] in MODIFIER_OPENERS
+
+
+def _generic(sent: _Sentence, m: Mention) -> bool:
+    """A bare plural ("novels", "other books"): a kind of thing, not the things of the scene."""
+    last = sent.toks[m.end - 1]
+    j = m.start - 1
+    while j >= 0 and (sent.words[j] in COLOR_WORDS or sent.words[j] in STATE_WORDS or sent.words[j] in ("other",)):
+        j -= 1
+    return last.word != last.lemma and not (j >= 0 and sent.words[j] in ARTICLES)
+
+
+def _existential(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, catalog: Catalog,
+                 reading: _Reading) -> None:
+    """"There is a dirty mark on the floor", "There are a pan and a pot on the stove": the listed
+    objects are at the place that ends the list."""
+    words = sent.words
+    for i in range(clause.start, clause.end - 1):
+        if words[i] != "there" or words[i + 1] not in BE:
+            continue
+        j = i + 2
+        while j < clause.end and words[j] not in AT:
+            j += 1
+        found = _holder_after(sent, ms, j, clause.end)
+        if found is None:
+            return
+        for m in _np_list(sent, ms, i + 2, j):
+            for role in _roles(m, sent):
+                _put(reading, "settled", catalog, lex, role, found[1], found[0])
+        return
+
+
+def _where(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, catalog: Catalog,
+           reading: _Reading) -> None:
+    """"the kitchen, where the dishwasher, the sink ... are", "a nightstand on which a lamp
+    stands", "that's where the dishwasher ... are", "it's where the flashlight lives", "the
+    vanity, where the spares are kept": the list of the relative clause is at its antecedent (the
+    noun before it, or what "that"/"it" points back to); a keeping verb makes it a home."""
+    words = sent.words
+    for i in range(clause.start, clause.end):
+        rel = words[i] == "where" or (words[i] in RELATIVE and i > 0 and words[i - 1] in AT)
+        if not rel:
+            continue
+        lead = i - 1 if words[i] in RELATIVE else i  # "on which": the preposition
+        prep = words[lead] if words[i] in RELATIVE else "in"
+        before = [m for m in sent.mentions if m.end <= lead and m.kind in ("role", "room")]
+        antecedent: Mention | None = None
+        gap = words[before[-1].end:lead] if before else []
+        if before and _noun_tail(gap):
+            antecedent = before[-1]
+        elif set(words[max(clause.start, lead - 3):lead]) & THING_PRONOUNS:
+            pronoun = next(w for w in words[max(clause.start, lead - 3):lead] if w in THING_PRONOUNS)
+            antecedent = _pointed(sent, clause, lex, catalog, reading, pronoun)
+        if antecedent is None or antecedent.kind == "role" and len(antecedent.roles) != 1:
+            continue
+        stop = next((k for k in range(i + 1, clause.end) if words[k] in (",",) and k + 1 < clause.end
+                     and words[k + 1] in IMPERATIVES), clause.end)
+        if _doubts(words[i + 1:stop]) or not set(words[i + 1:stop]) & (BE | STATIVE | KEEP_VERBS):
+            continue  # "where a pan may be"; "where a dirty mug goes" (a goal)
+        kind = "kept" if set(words[i + 1:stop]) & KEEP_VERBS else "settled"
+        items = _np_list(sent, ms, i + 1, stop)
+        for m in items:
+            for role in _roles(m, sent):
+                if role != antecedent.roles[0]:
+                    _put(reading, kind, catalog, lex, role, antecedent, prep)
+        if not items and kind == "kept":
+            item = _unnamed_item(sent, lex, i + 1, stop, exclude=antecedent.roles[0])
+            if item is not None:
+                _put(reading, kind, catalog, lex, item, antecedent, prep)
+        return
+
+
+def _noun_tail(gap: list[str]) -> bool:
+    """Words between a mention and its relative pronoun that still end its noun phrase: a comma,
+    or a word or two of a longer name than the one matched ("the vanity cabinet, where ...")."""
+    tail = gap[:-1] if gap[-1:] == [","] else gap
+    return len(tail) <= 2 and not set(tail) & (BE | PERFECT | STATIVE | RESULT | KEEP_VERBS | AT | ARTICLES
+                                                | _PUNCT | DOUBT | SUBORDINATORS | THING_PRONOUNS)
+
+
+def _pointed(sent: _Sentence, clause: _Clause, lex: Lexicon, catalog: Catalog, reading: _Reading,
+             pronoun: str) -> Mention | None:
+    """What the pronoun of "it's where ..." / "that's where ..." points back to, the first of these
+    that can hold things (a room, a surface or a container): for "it", the subject of the last
+    statement, then the nearest noun before it; for "that" / "this", the nearest noun, unless it
+    is named as a source ("through from the dining room"): then that subject first."""
+    near = [m for m in sent.mentions if m.end <= clause.start and m.kind in ("role", "room")]
+    nearest = near[-1] if near else None
+    source = nearest is not None and _prep_before(sent.words, nearest.start) in SOURCE
+    first_subject = pronoun == "it" or source
+    order = (reading.last_subject, nearest) if first_subject else (nearest, reading.last_subject)
+    for m in (*order, reading.last_holder):
+        if m is None or m.kind == "floor":
+            continue
+        if m.kind == "room" or len(m.roles) == 1 and m.roles[0] in lex.holders:
+            return m
+    return None
+
+
+def _unnamed_item(sent: _Sentence, lex: Lexicon, lo: int, hi: int, exclude: str) -> str | None:
+    """The role a noun no name matches stands for ("the spares" for the spare roll): a word of
+    exactly one role's name."""
+    for t in sent.toks[lo:hi]:
+        if t.lemma in ARTICLES or t.lemma in _PUNCT or len(t.lemma) < 3:
+            continue
+        owners = [r for r in lex.roles if r != exclude and t.lemma in r.split("_")]
+        if len(owners) == 1:
+            return owners[0]
+    return None
+
+
+def _kept(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, catalog: Catalog,
+          reading: _Reading) -> None:
+    """"it's kept in the vanity", "we store the spares in the vanity cabinet", "the cloth lives in
+    the vanity", "(spares are kept there)": the object (named after the verb, else the clause's
+    subject, else what "it" points back to) has its home at the place after the preposition (or
+    at the place last named, for "there")."""
+    words = sent.words
+    for i in range(clause.start, clause.end):
+        if words[i] not in KEEP_VERBS:
+            continue
+        if clause.mood == "instruction" and words[clause.start:i + 1][-1] == words[clause.start]:
+            return  # "keep the door shut": an instruction
+        j = i + 1
+        while j < clause.end and words[j] not in AT | PLACE_PRONOUNS:
+            j += 1
+        if j >= clause.end:
+            return
+        holder: Mention | None
+        prep = "in"
+        if words[j] in PLACE_PRONOUNS:
+            holder = reading.last_holder
+        else:
+            found = _holder_after(sent, ms, j, clause.end)
+            if found is None:
+                return
+            prep, holder = found
+        if holder is None or holder.kind == "role" and len(holder.roles) != 1:
+            return
+        named = [r for m in _np_list(sent, ms, i + 1, j) for r in _roles(m, sent)]
+        subject = [r for m in _np_list(sent, ms, clause.start, i) for r in _roles(m, sent)]
+        items = named or subject
+        if not items:
+            unnamed = _unnamed_item(sent, lex, clause.start, j, exclude=holder.roles[0])
+            if unnamed is not None:
+                items = [unnamed]
+        if not items and set(words[clause.start:j]) & THING_PRONOUNS:
+            back = [m for m in sent.mentions if m.end <= clause.start and m.kind == "role"
+                    and len(m.roles) == 1 and m.roles[0] != holder.roles[0]]
+            if back:
+                items = [back[-1].roles[0]]
+            elif reading.last_subject is not None and reading.last_subject.kind == "role":
+                items = list(_roles(reading.last_subject, sent) or reading.last_subject.roles[:1])
+        for role in items:
+            if role in lex.roles and role != holder.roles[0]:
+                _put(reading, "kept", catalog, lex, role, holder, prep)
+        return
+
+
+def _with(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, catalog: Catalog,
+          reading: _Reading) -> None:
+    """"a nightstand with a lamp", "the nightstand with a lamp on it", "nightstand with lamp": a
+    carried thing on (or in) the piece it is said to come with (not "a table with a mop leaning
+    against it", which says where the mop stands; not "wipe it with the sponge", an instrument)."""
+    words = sent.words
+    for a in ms:
+        if a.kind == "room" and a.end < clause.end and words[a.end] == "with":
+            stop = next((m.start for m in ms if m.start > a.end and m.kind == "room"), clause.end)
+            for m in _np_list(sent, ms, a.end + 1, stop):
+                for role in _roles(m, sent):
+                    reading.room("settled", role, a.roles[0])
+    for a, b in zip(ms, ms[1:], strict=False):
+        if a.kind != "role" or b.kind != "role" or len(a.roles) != 1 or len(b.roles) != 1:
+            continue
+        between = words[a.end:b.start]
+        if not between or between[0] != "with" or not all(w in ARTICLES for w in between[1:]):
             continue
         cat = catalog.get(str(lex.roles[b.roles[0]]["category"]))
-        if cat is None or not cat.pickable or not _list_ends(raw, toks, low, b.end):
+        if cat is None or not cat.pickable:
             continue
-        fact = _contain(catalog, lex, b.roles[0], a.roles[0], "on")
+        after = words[b.end:b.end + 2]
+        if b.end < clause.end and not (after in (["on", "it"], ["in", "it"]) or words[b.end] in _PUNCT | {"and"}):
+            continue
+        if b.end < len(words) and words[b.end] in STATIVE | {"leaning", "propped"}:
+            continue
+        fact = _contain(catalog, lex, b.roles[0], a.roles[0], "in" if after == ["in", "it"] else "on")
         if fact is not None:
-            held.setdefault(b.roles[0], fact)
+            reading.place("settled", b.roles[0], fact)
 
 
-def _list_ends(raw: list[str], toks: list[tuple[str, int, int]], low: str, end: int) -> bool:
-    """The noun phrase ending at token `end` is a list item: the sentence, a comma or "and" follows,
-    or "on it" / "in it"."""
-    if end >= len(raw) or raw[end] == "and" or raw[end:end + 2] in (["on", "it"], ["in", "it"]):
-        return True
-    return bool(re.search(r"[,;()]", low[toks[end - 1][2]:toks[end][1]]))
-
-
-def _room_lists(raw: list[str], toks: list[tuple[str, int, int]], low: str, mentions: list[Mention],
-                rooms: dict[str, str]) -> None:
-    """Objects a room is said to hold: "a kitchen with a stove, a counter and a sink", "the
-    bedroom has a bed, ...", "the kitchen, where the dishwasher ... are", "In the bedroom, turn off
-    the table lamp ... and close the wardrobe". The list ends at the next room or parenthesis."""
-    for n, m in enumerate(mentions):
-        if m.kind != "room":
+def _in_room(sent: _Sentence, clause: _Clause, ms: list[Mention], reading: _Reading) -> None:
+    """"the drying rack out on the balcony", "the table lamp in the bedroom", "the nearest sink is
+    in the kitchen": a definite object named right before "in/on <room>" (a noun modifier),
+    unless an instruction moves it there ("put the mug in the kitchen") or it is only possibly
+    there ("if there is a pan in the kitchen")."""
+    words = sent.words
+    for a, b in zip(ms, ms[1:], strict=False):
+        if a.kind != "role" or b.kind != "room" or len(a.roles) != 1:
             continue
-        lead = raw[:m.start]
-        opens = (m.end < len(raw) and raw[m.end] in _ROOM_LIST) or (
-            bool(lead) and lead[-1:] == ["the"] and lead[-2:-1] == ["in"]
-            and all(w in _LEADS for w in lead[:-2]))
-        if not opens:
+        between = [w for w in words[a.end:b.start] if w != "the"]
+        if not between or between[-1] not in AT or not all(w in BE | ADVERBS for w in between[:-1]):
             continue
-        for later in mentions[n + 1:]:
-            if later.kind == "room" or "(" in low[toks[m.end - 1][2]:toks[later.start][1]] \
-                    or ")" in low[toks[m.end - 1][2]:toks[later.start][1]]:
-                break
-            if later.kind == "role" and _named(raw, later.start) and not _doubted(raw, later):
-                rooms.setdefault(later.roles[0], m.roles[0])
-
-
-def _doubted(raw: list[str], m: Mention) -> bool:
-    """"where a pan may be", "where there might be a pan": the object only possibly there."""
-    return bool(set(raw[m.end:m.end + 2]) & _MODAL or set(raw[max(0, m.start - 4):m.start]) & _UNSURE)
-
-
-def _named(raw: list[str], start: int) -> bool:
-    """A noun phrase with its article ("the wardrobe", "a potted plant"), not a verb ("bin the wipe")."""
-    return any(w in _ARTICLES for w in raw[max(0, start - 2):start])
-
-
-def _in_room(raw: list[str], mentions: list[Mention], rooms: dict[str, str]) -> None:
-    """"the drying rack out on the balcony", "the nearest sink is in the kitchen": an object named
-    right before "in/on <room>", unless an instruction moves it there ("put the mug in the kitchen")."""
-    for a, b in zip(mentions, mentions[1:], strict=False):
-        if a.kind != "role" or b.kind != "room":
+        if _moved(words, a.start, clause) or _indefinite_doubt(sent, a):
             continue
-        between = raw[a.end:b.start]
-        if not between or between[-1] not in ("the",) and between[-1] not in PREP_IN | PREP_ON:
-            continue
-        words = between[:-1] if between[-1] == "the" else between
-        if not words or words[-1] not in PREP_IN | PREP_ON or not all(w in _BETWEEN for w in words[:-1]):
-            continue
-        if _moved_or_unsure(raw, a.start):
-            continue
-        rooms.setdefault(a.roles[0], b.roles[0])
+        reading.room("settled", a.roles[0], b.roles[0])  # a noun phrase's own place, whatever the mood
 
 
-def _moved_or_unsure(raw: list[str], start: int) -> bool:
-    """The object at `start` follows an instruction verb ("put the mug ...") or a condition /
-    possibility cue a few words before ("if there is a pan ...")."""
+def _moved(words: list[str], start: int, clause: _Clause) -> bool:
+    """The object at `start` follows an instruction verb ("put the clean mug ...")."""
     j = start - 1
-    while j >= 0 and (raw[j] in _ARTICLES or raw[j] in STATE_WORDS or raw[j] in COLOR_WORDS
-                      or re.fullmatch(r"[a-z]+(ed|est)", raw[j])):
-        j -= 1  # "put a clean lunch box in the kitchen cabinet"
-    return j >= 0 and raw[j] in ACTIONS or bool(set(raw[max(0, start - 4):start]) & _UNSURE)
+    while j >= clause.start and (words[j] in ARTICLES or words[j] in STATE_WORDS or words[j] in COLOR_WORDS
+                                 or re.fullmatch(r"[a-z]+(ed|est)", words[j])):
+        j -= 1
+    return j >= clause.start and words[j] in ACTIONS
 
 
-def _resting(catalog: Catalog, lex: Lexicon, raw: list[str], mentions: list[Mention],
-             held: dict[str, str]) -> None:
-    """"check the towel on the drying rack": an item named right before "on/in <holder>" rests
-    there, unless an instruction moves it ("hang the shirt on the rack") or a cue makes it a
-    condition ("if the mug on the table is dirty" still says where the mug is; "if there is a pan
-    in the kitchen" does not)."""
-    for a, b in zip(mentions, mentions[1:], strict=False):
-        if a.kind != "role" or b.kind != "role":
+def _resting(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, catalog: Catalog,
+             reading: _Reading) -> None:
+    """"check the towel on the drying rack", "if the mug on the coffee table is dirty": a definite
+    carried thing named right before "on/in <holder>" is presumed to rest there, unless an
+    instruction moves it ("hang the shirt on the rack") or the clause asks where it is ("is the
+    mug on the table?", "if there is a mug on the table")."""
+    words = sent.words
+    for a, b in zip(ms, ms[1:], strict=False):
+        if a.kind != "role" or b.kind != "role" or len(a.roles) != 1 or len(b.roles) != 1:
             continue
-        between = raw[a.end:b.start]
-        if not between or between[0] not in _AT or not all(w in _ARTICLES for w in between[1:]):
+        between = words[a.end:b.start]
+        if not between or between[0] not in AT or not all(w in ARTICLES for w in between[1:]):
             continue
         cat = catalog.get(str(lex.roles[a.roles[0]]["category"]))
-        if cat is None or not cat.pickable or _moved_or_unsure(raw, a.start) and not _described_subject(raw, a.start):
+        if cat is None or not cat.pickable or a.start == 0 or words[a.start - 1] != "the":
+            continue
+        if _moved(words, a.start, clause) or clause.goal:
+            continue
+        described = clause.mood == "condition" and _described_subject(words, a.start, b.end, clause)
+        if clause.mood == "condition" and not described:
             continue
         fact = _contain(catalog, lex, a.roles[0], b.roles[0], between[0])
-        if fact is not None:
-            held.setdefault(a.roles[0], fact)
+        if fact is not None:  # a condition on its state takes its place for granted: a statement
+            reading.place("settled" if described else "presumed", a.roles[0], fact)
 
 
-def _described_subject(raw: list[str], start: int) -> bool:
-    """"if the mug on the coffee table is dirty": a definite object whose state is in question."""
-    return start > 0 and raw[start - 1] == "the" and start > 1 and raw[start - 2] in ("if", "whether", "when")
+def _described_subject(words: list[str], start: int, end: int, clause: _Clause) -> bool:
+    """"if the mug on the coffee table is dirty", "Is the lamp on the nightstand still on?": a
+    definite object whose state (not place) is in question: a state word follows its place."""
+    j = end
+    while j < clause.end and (words[j] in ADVERBS or words[j] in BE):
+        j += 1
+    return start - 1 >= clause.start and j < clause.end and words[j] in STATE_WORDS

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from logicenveval.domain.catalog import Catalog
+from logicenveval.llm.scene_words import furniture
 from logicenveval.model.conditions import And, Cond, Const, Not, Or, Pred, parse
 from logicenveval.model.rooms import room_type_of
 from logicenveval.offline.placement import described_placements
@@ -56,6 +57,7 @@ def realise(brief: Mapping[str, Any], facts: list[str], catalog: Catalog) -> dic
         for pred, pos in _literals(parse(text)):
             _apply(choice, pred, pos)
     _described(choice, brief, facts, catalog)
+    _possible(choice, roles, catalog)
     for r, c in choice.items():
         cat = catalog.get(roles[r]["category"])
         fixed = {k: str(v) for k, v in roles[r].get("attributes", {}).items()}
@@ -110,7 +112,8 @@ def _described(choice: dict[str, RoleChoice], brief: Mapping[str, Any], facts: l
     """Placements the description states ("a nightstand with a lamp", "the drying rack out on the
     balcony"), for objects whose place no situation fact speaks of, held by an object present and
     not ruled out (`offline.placement`): a reader of the text puts them there."""
-    placed = {pred.args[0] for text in facts for pred, _ in _literals(parse(text)) if pred.name in _WHERE}
+    # a negated placement says where the object is not; the description may still say where it is
+    placed = {pred.args[0] for text in facts for pred, pos in _literals(parse(text)) if pred.name in _WHERE and pos}
     for text in described_placements(brief, catalog):
         for pred, pos in _literals(parse(text)):
             c = choice.get(pred.args[0])
@@ -123,6 +126,23 @@ def _described(choice: dict[str, RoleChoice], brief: Mapping[str, Any], facts: l
                     or f"{pred.name}:{pred.args[1]}" in c.banned_places):
                 continue
             _apply(choice, pred, pos)
+
+
+def _possible(choice: dict[str, RoleChoice], roles: dict[str, Any], catalog: Catalog) -> None:
+    """A placement the scene's words rule out (`llm.scene_words`: furniture rests on nothing, an
+    item goes on a role that is a surface or inside one that is a container) is dropped, and the
+    object goes to its typical place: a model constrained by the request's grammar cannot write it,
+    whatever fact (a misread one: "the sofa inside the toy box") asked for it."""
+    for r, c in choice.items():
+        how, _, holder = (c.placement or "").partition(":")
+        if how not in ("on", "inside"):
+            continue
+        item, host = catalog.get(roles[r]["category"]), catalog.get(roles[holder]["category"]) if holder in roles else None
+        if item is None or holder not in roles:
+            continue
+        if furniture(item) or host is None or not (host.surface if how == "on" else host.container):
+            c.banned_places.add(str(c.placement))
+            c.placement = None
 
 
 def _home_room(category: str, rooms: list[str], catalog: Catalog) -> str:
