@@ -19,6 +19,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
 
+from lemminflect import getAllLemmas
+
 from logicenveval.domain.catalog import Catalog, load_catalog
 from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, tokens
 from logicenveval.offline.placement import described_placements
@@ -54,6 +56,11 @@ PRONOUNS = frozenset({"it", "they", "them", "one", "ones", "its", "their", "whos
 SITUATION_PARTICIPLES = frozenset({"left", "lying", "lie", "lies", "sitting", "found", "dropped", "fallen", "fell",
                                    "slipped", "rolled",
                                    "scattered", "forgotten", "standing", "kept", "ended"})
+#: determiners of an object already known to be there ("the", "my"): see `Fact.definite`
+DEFINITE = frozenset({"the", "my", "our", "your", "his", "her", "its", "their", "this", "that", "these",
+                      "those"})
+#: prepositions before a place or a goal: an object after them is not what a clause speaks of
+PLACE_PREPS = frozenset({"on", "onto", "in", "into", "inside", "to", "from", "by", "near", "under"})
 INDEFINITE = frozenset({"a", "an", "any", "every", "each", "some", "no"})
 NEGATIONS = frozenset({"not", "no", "none", "never", "without", "nothing", "nobody", "nowhere"})
 UNCERTAIN = frozenset({"may", "might", "possibly", "possible", "perhaps", "maybe", "could", "sometimes",
@@ -64,6 +71,8 @@ CONDITIONAL = ("depending on whether", "depending on if", "in case", "as long as
 ELSE_CUES = ("otherwise", "else", "failing that", "if not", "if there is not", "if there are not")
 ELSEWHERE = ("anywhere else", "elsewhere", "somewhere else", "any other place", "not there")
 #: verbs whose "from" names a source ("fill the bowl from the bag"), not a location
+#: verb particles between an object and its place ("rolled out onto the floor")
+PARTICLES = frozenset({"out", "down", "over", "around", "away", "about"})
 SOURCE_VERBS = frozenset({"fill", "refill", "pour", "top", "water", "feed"})
 #: words that say an object is absent: "the roll is missing"
 ABSENT = frozenset({"missing", "absent", "gone", "lacking", "unavailable"})
@@ -88,6 +97,9 @@ class Fact:
     #: an attribute the catalog has no domain for, read from the wording ("a ripe one", "it is a
     #: bill"); kept only when the text contrasts it (see `_contrasted`)
     derived: bool = False
+    #: said of a definite object ("the tablet is lying on the chair"): in a plain statement a
+    #: fact the environment keeps, not an uncertain factor
+    definite: bool = False
 
 
 @dataclass(frozen=True)
@@ -166,6 +178,8 @@ def _first_cue(low: str, cues: tuple[str, ...]) -> tuple[int, str] | None:
     best: tuple[int, str] | None = None
     for cue in cues:
         pattern = rf"(?<![a-z]){re.escape(cue)}\b"
+        if cue in ("once", "while"):  # a conjunction only before its clause: not "a once-over"
+            pattern = rf"(?<![a-z-]){cue}(?=\s+[a-z])"
         if cue == "should":  # only the inverted conditional: "should the hamper be full, ..."
             pattern = r"(?:^|[,;:(-]\s*|\b(?:and|or|but)\s+)should\b(?=\s+(?:the|there|a|an|it|they|any|one|your|my|our|its|their|this|that|these|those|some|no)\b)"
         m = re.search(pattern, low)
@@ -177,8 +191,58 @@ def _first_cue(low: str, cues: tuple[str, ...]) -> tuple[int, str] | None:
     return best
 
 
+#: words that make a segment a clause of its own (a finite verb, its subject, an existential),
+#: so that it is no verbless heading: "Lamp left on:" is a heading, "the box has two drawers:" not
+CLAUSE_WORDS = frozenset({
+    "is", "are", "was", "were", "am", "be", "been", "has", "have", "had", "do", "does", "did",
+    "will", "would", "can", "could", "shall", "should", "may", "might", "must", "need", "needs",
+    "keep", "keeps", "i", "you", "we", "he", "she", "they", "someone", "somebody", "everyone",
+    "there", "please", "let", "make", "get"})
+#: words after a base-form verb that make it an imperative with its object ("clean it", "put
+#: the", "pick up"), not an adjective or noun opening a heading ("clean - ...", "water bowl ...")
+OBJECT_STARTS = ARTICLES | frozenset({"it", "them", "up", "out", "back", "away", "down", "off", "over",
+                                      "with", "at", "from", "onto", "into"})
+#: a heading ends where its instruction starts: at a colon, a question mark or a spaced dash
+_HEADING = re.compile(r"^(?P<head>[^:?\u2013]+?)(?P<mark>\?|:|\s+(?:-|\u2013)\s+)(?P<rest>.*)$", re.S)
+
+
+def _imperative(words: list[str]) -> bool:
+    """The segment opens with a verb in its base form followed by its object or particle."""
+    if len(words) < 2:
+        return False
+    lemmas = getAllLemmas(words[0]).get("VERB", ())
+    return words[0] in lemmas and words[1] in OBJECT_STARTS
+
+
+def _heading(sentence: str) -> tuple[str, str, str] | None:
+    """A verbless heading and its instruction: "Pillow on the floor: back on the bed", "Mirror
+    dirty? Clean it", "dirty - into the hamper", "Table dirty:" (the instruction in the next piece).
+    Returns (heading, mark, rest), or None when the first segment is a clause of its own (it has a
+    finite verb, a subject, a conditional cue) or an instruction (an imperative)."""
+    m = _HEADING.match(sentence.strip())
+    if m is None:
+        return None
+    head, rest = m.group("head").strip(" ,"), m.group("rest").strip()
+    words = [w for w, _, _ in tokens(expand(head))]
+    if not words or len(words) > 10 or set(words) & CLAUSE_WORDS or _imperative(words):
+        return None
+    if _first_cue(head.lower(), CONDITIONAL) or any(w in UNCERTAIN for w in words):
+        return None
+    mark = m.group("mark").strip()
+    if mark == "-" and not rest:
+        return None
+    return head, mark, rest
+
+
 def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
-    """(text, cue, role) pieces of a sentence, recursively for chained conditionals."""
+    """(text, cue, role) pieces of a sentence, recursively for chained conditionals; a verbless
+    heading (`_heading`) is a `heading` piece, its instruction read after it."""
+    heading = _heading(sentence)
+    if heading is not None:
+        label, mark, instruction = heading
+        answer = [(t, c, "consequence" if r in ("statement", "scene") else r)
+                  for t, c, r in _split_clauses(instruction)] if instruction.strip(" .!") else []
+        return [(label, mark, "heading"), *answer]
     low = sentence.lower()
     for cue in ELSE_CUES:
         m = re.match(rf"^\W*{re.escape(cue)}\b", low)
@@ -203,7 +267,7 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
                             else "statement"))
         return out
     start, cue = best
-    after = re.match(r"\W*([a-z' ]{0,30}?)\W*(?:$|[,;]|\s-\s)", low[start + len(cue):])
+    after = re.match(r"\W*([a-z' ]{0,30}?)\W*(?:$|[,;]|\s-\s)", expand(low[start + len(cue):]))
     if cue in ("if", "in case") and after and set(after.group(1).split()) & AVAILABILITY \
             and len(after.group(1).split()) <= 3 and not set(after.group(1).split()) & NEGATIONS:
         return [(sentence, "if available", "uncertain")]
@@ -244,7 +308,7 @@ def _subsplit(pieces: list[tuple[str, str | None, str]]) -> list[tuple[str, str 
     out: list[tuple[str, str | None, str]] = []
     for text, cue, role in pieces:
         splitter = r",\s*(?:and|but|then)\s+" + (r"|,\s*(?=the\s)" if role == "consequence" else "")
-        parts = [p for p in re.split(splitter, text) if p.strip()]
+        parts = [p for p in re.split(splitter, text) if p.strip()] or ([text] if role == "condition" else [])
         for i, part in enumerate(parts):
             out.append((part, cue, role if i == 0 or role != "condition" else "consequence"))
     return out
@@ -338,7 +402,10 @@ class _Reader:
         for m in found:
             if m.kind in ("role", "pronoun"):
                 self.recent = [r for r in self.recent if r not in m.roles] + list(m.roles)
-        first = next((m for m in found if m.kind in ("role", "floor", "pronoun")), None)
+        # the topic is what the clause speaks of, not where something goes ("Wet: into the
+        # laundry basket. Dry: ..." keeps speaking of the towel)
+        first = next((m for m in found if m.kind in ("role", "floor", "pronoun")
+                      and not set(words[max(0, m.start - 3) : m.start]) & PLACE_PREPS), None)
         if first is not None and first.kind != "pronoun":
             self.topic, self.topic_kind = first.roles, first.kind
         return found
@@ -512,7 +579,9 @@ class _Reader:
 
     def _is_goal(self, words: list[str], m: Mention, skipped: list[str]) -> bool:
         before = words[max(0, m.start - 4) : m.start]
-        return bool(set(skipped) & MOTION) or any(w in ACTIONS for w in before)
+        # "pop it on the desk": where an imperative's object goes
+        return bool(set(skipped) & MOTION) or any(w in ACTIONS for w in before) or (
+            m.start > 0 and _imperative(words) and all(w in ARTICLES for w in words[1 : m.start]))
 
     def _location(self, words: list[str], mentions: list[Mention], idx: int, negated: bool) -> list[Fact]:
         m = mentions[idx]
@@ -521,10 +590,12 @@ class _Reader:
             return []  # the last item of a list carries the location
         k = m.end
         skipped: list[str] = []
-        while k < len(words) and (words[k] in DESCRIPTIVE | MOTION | NEGATIONS | PARTS
+        while k < len(words) and (words[k] in DESCRIPTIVE | MOTION | NEGATIONS | PARTS | PARTICLES
                                   | {"top", "of", "straight", "that", "which"}) and words[k] not in PREP_ON | PREP_IN:
             skipped.append(words[k])
             k += 1
+            if skipped[-1] == "of" and k < len(words) and self._unknown(words[k]):
+                k += 1  # "a tin of food in the basket", "a bar of soap in the tub"
         if k >= len(words) or words[k] not in PREP_ON | PREP_IN | {"from"} or (
                 skipped and skipped[-1] in ("switched", "turned")):  # "switched on" is not a place
             return []
@@ -534,6 +605,8 @@ class _Reader:
         goal = words[k] != "from" and (self._is_goal(words, m, skipped) or (
             words[k] in ("into", "onto") and not set(skipped) & SITUATION_PARTICIPLES))
         article = words[m.start - 1] if m.start > 0 else ""
+        # where a thing is kept is a norm `_settle_stated` weighs against the rest of the text
+        definite = article in DEFINITE and "kept" not in skipped
         described = bool(set(skipped) & SITUATION_PARTICIPLES) or (
             not skipped and (article in INDEFINITE or article not in ARTICLES)) or (
             skipped[:1] in (["that"], ["which"]) and article in INDEFINITE)  # "any toy that is on the floor"
@@ -560,7 +633,7 @@ class _Reader:
                     else:
                         cond = f"inside({s}, {t})"
                     out.append(Fact(s, cond, "location", t, negated=negated and not goal, goal=goal,
-                                    modifier=modifier))
+                                    modifier=modifier, definite=definite))
             k = target.end
             while k < len(words) and words[k] in {"or", "and", "either", "the", "a"}:
                 k += 1
@@ -742,19 +815,85 @@ def _copy(a: TaskAnalysis) -> TaskAnalysis:
     )
 
 
+#: the words of a condition that only points back ("if so", "if it has", "should that be the
+#: case", "when that happens", "if they are"): its content is the clause before it
+ANAPHORIC = frozenset({"so", "that", "this", "it", "they", "them", "is", "are", "was", "were", "has",
+                       "have", "had", "do", "does", "did", "be", "been", "being", "the", "case",
+                       "happen", "happens", "happened", "true", "indeed", "still", "again", "really"})
+
+
+#: people who act: a condition about what they do ("when you put it away") is no situation
+AGENTS = frozenset({"you", "we", "i"})
+#: adverbs of a norm ("Normally a fresh diaper is lying on the changing table"): a statement
+#: with one says how things should be, not what the situation is
+NORMS = frozenset({"normally", "usually", "generally", "ordinarily", "typically"})
+
+
+def _norm(clause: Clause) -> bool:
+    return bool({w for w, _, _ in tokens(clause.text)} & NORMS)
+
+
+def _anaphoric(text: str, facts: list[Fact]) -> bool:
+    """A condition with no fact of its own whose words only point back."""
+    return not any(not f.goal for f in facts) and all(
+        w in ANAPHORIC for w, _, _ in tokens(expand(text)))
+
+
+def _antecedent(clauses: list[Clause], sentence: int) -> tuple[list[Fact], tuple[str, ...]]:
+    """What an anaphoric condition points back to: the situation described by the nearest clause
+    of this or the previous sentence that describes one ("Someone keeps leaving the fan running;
+    if so, ..."). That clause is then no instruction of its own: it is relabelled a statement."""
+    for j in range(len(clauses) - 1, -1, -1):
+        cl = clauses[j]
+        if cl.sentence < sentence - 1:
+            break
+        said = [replace(f, modifier=False, definite=False) for f in cl.facts if not f.goal]
+        if said:
+            if cl.role == "consequence":
+                clauses[j] = replace(cl, role="statement", cue=None)
+            return said, tuple(dict.fromkeys(f.subject for f in said))
+    return [], ()
+
+
+def _read_heading(reader: _Reader, text: str) -> tuple[list[Fact], tuple[str, ...]]:
+    """A heading's facts. A heading without its own subject is said of the object spoken of
+    ("Shoes - wet:", "Keys - on the floor or on the console table:"): it reads as `it is ...`."""
+    toks = tokens(expand(text))
+    words = [w for w, _, _ in toks]
+    subject = any(m.kind == "role" and not set(words[max(0, m.start - 3) : m.start]) & PLACE_PREPS
+                  for m in reader.lex.find_mentions(toks))
+    return reader.facts(text if subject or not reader.topic else "it is " + text)
+
+
 def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     lex = Lexicon.build(brief, catalog)
     reader = _Reader(lex)
     sentences = split_sentences(str(brief["description"]))
     clauses: list[Clause] = []
     grammatical = 0  # pieces split at ':' or ';' still belong to one sentence for grouping
+    headed = -1  # the sentence whose heading ("Shirt on the floor:") the pieces after it answer
     for si, sent in enumerate(sentences):
         for text, cue, role in _subsplit(_split_clauses(_apposition(sent))):
+            if role == "heading":
+                facts, names = _read_heading(reader, text)
+                role = "condition" if any(not f.goal for f in facts) else "statement"
+                headed = grammatical if role == "condition" else headed
+                clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
+                continue
+            if role in ("statement", "scene") and headed == grammatical:
+                role = "consequence"
             # "should there be an umbrella: ..." - the cue itself says the object may be absent
             # "if we still have one (it lives in the vanity - ...)": a closing aside says where the
             # object is kept (offline.placement), it asks nothing
             said = _ASIDE.sub("", text) if role == "condition" and _ASIDE.sub("", text).strip() else text
             facts, names = reader.facts("there is " + said if cue == "should there be" else said)
+            if role == "condition" and _anaphoric(said, facts):
+                facts, names = _antecedent(clauses, grammatical)
+            elif role == "condition" and facts and all(f.goal for f in facts) and not set(
+                    w for w, _, _ in tokens(said)) & AGENTS:
+                # "if it has been thrown on the floor", "whenever the jacket ends up on the
+                # floor": in a condition a moved object's place is the situation, not a goal
+                facts = [replace(f, goal=False) for f in facts]
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
         if sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences):
             grammatical += 1
@@ -804,7 +943,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         for f in cl.facts:
             if f.derived and (f.subject, f.key) not in contrasted:
                 continue
-            if f.goal or not (conditional or (f.modifier and cl.role not in ("scene",))
+            if f.goal or not (conditional or (f.modifier and cl.role not in ("scene",)
+                                              # "The tablet is lying on the chair.": stated, kept
+                                              and not ((f.definite or _norm(cl)) and cl.role == "statement"))
                               or (cl.role == "else" and f.kind != "location")):
                 continue
             slot = (f.subject, f.kind, f.key if f.kind in ("state", "attr") else "")

@@ -23,6 +23,9 @@ STATE_WORDS: dict[str, tuple[str, bool]] = {
     "ringing": ("toggled_on", True), "beeping": ("toggled_on", True), "playing": ("toggled_on", True),
     "silent": ("toggled_on", False), "stopped": ("toggled_on", False), "idle": ("toggled_on", False),
     "broken": ("broken", True), "cracked": ("broken", True),
+    "spinning": ("toggled_on", True), "whirring": ("toggled_on", True), "unlit": ("toggled_on", False),
+    "grubby": ("dirty", True), "filthy": ("dirty", True), "soiled": ("dirty", True),
+    "grimy": ("dirty", True), "smudged": ("dirty", True), "mucky": ("dirty", True),
 }
 #: action verbs before an object: a location after the object is a goal
 ACTIONS = frozenset(
