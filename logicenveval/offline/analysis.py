@@ -321,6 +321,12 @@ def _joined(words: list[str], a: Mention, b: Mention) -> bool:
                                           for w in between)
 
 
+def _placed(words: list[str], m: Mention) -> bool:
+    """The mention names a place or a goal: a preposition stands before it ("on the table",
+    "from the big dresser")."""
+    return bool(set(words[max(0, m.start - 3) : m.start]) & PLACE_PREPS)
+
+
 def _negation(word: str) -> bool:
     return word in NEGATIONS
 
@@ -369,6 +375,11 @@ class _Reader:
                 # clause's subject, not a place named after a preposition
                 subj = [m for m in before if m.start == 0 or words[m.start - 1] not in PREP_ON | PREP_IN]
                 before = subj[:1] or before
+            elif i > 0 and words[i - 1] in ACTIONS and any(_placed(words, m) for m in before):
+                # "fetch a spare from the dresser, lay it on the table": what is moved is a thing
+                # spoken of, not a place it comes from or goes to
+                moved = [m for m in before if not _placed(words, m)]
+                before = moved or ([] if self.topic_kind == "role" and self.topic else before)
             elif i > 0 and words[i - 1] in PREP_ON | PREP_IN and before:
                 # "a book or a phone on it": not the listed objects themselves
                 listed = [before[-1]]
@@ -405,7 +416,7 @@ class _Reader:
         # the topic is what the clause speaks of, not where something goes ("Wet: into the
         # laundry basket. Dry: ..." keeps speaking of the towel)
         first = next((m for m in found if m.kind in ("role", "floor", "pronoun")
-                      and not set(words[max(0, m.start - 3) : m.start]) & PLACE_PREPS), None)
+                      and not _placed(words, m)), None)
         if first is not None and first.kind != "pronoun":
             self.topic, self.topic_kind = first.roles, first.kind
         return found
@@ -860,8 +871,7 @@ def _read_heading(reader: _Reader, text: str) -> tuple[list[Fact], tuple[str, ..
     ("Shoes - wet:", "Keys - on the floor or on the console table:"): it reads as `it is ...`."""
     toks = tokens(expand(text))
     words = [w for w, _, _ in toks]
-    subject = any(m.kind == "role" and not set(words[max(0, m.start - 3) : m.start]) & PLACE_PREPS
-                  for m in reader.lex.find_mentions(toks))
+    subject = any(m.kind == "role" and not _placed(words, m) for m in reader.lex.find_mentions(toks))
     return reader.facts(text if subject or not reader.topic else "it is " + text)
 
 
