@@ -321,6 +321,24 @@ def _joined(words: list[str], a: Mention, b: Mention) -> bool:
                                           for w in between)
 
 
+#: words that open a verb's object: a one-word mention right before one is the verb ("stand it in
+#: the umbrella stand", "if you spot it there", "water the plant")
+VERB_OBJECTS = frozenset({"it", "them", "the", "a", "an", "this", "these", "those", "its", "their", "my",
+                          "your", "our"})
+
+
+def _verb_read(toks: list[tuple[str, int, int]], m: Mention) -> bool:
+    """A one-word mention that is a verb in its context: a base or present form right before its
+    object (no punctuation between: "a book, an alarm clock" lists two things)."""
+    if m.end - m.start != 1 or m.end >= len(toks) or toks[m.end][0] not in VERB_OBJECTS \
+            or toks[m.end][1] - toks[m.start][2] > 1 \
+            or m.start > 0 and toks[m.start - 1][0] in ARTICLES | INDEFINITE | NEGATIONS | PLACE_PREPS | set(STATE_WORDS):
+        return False  # "on the counter it must ...", "a dirty plate the ...": a noun after all
+    word = toks[m.start][0]
+    verbs = getAllLemmas(word).get("VERB", ())
+    return bool(verbs) and (word in verbs or word.endswith("s") and word[:-1] in verbs)
+
+
 def _placed(words: list[str], m: Mention) -> bool:
     """The mention names a place or a goal: a preposition stands before it ("on the table",
     "from the big dresser")."""
@@ -353,7 +371,7 @@ class _Reader:
         return Mention((known[-1],), m.start, m.end, m.kind) if known else m
 
     def mentions(self, words: list[str], toks: list[tuple[str, int, int]]) -> list[Mention]:
-        found = [self._recent_first(m) for m in self.lex.find_mentions(toks)]
+        found = [self._recent_first(m) for m in self.lex.find_mentions(toks) if not _verb_read(toks, m)]
         covered = {i for m in found for i in range(m.start, m.end)}
         for i, w in enumerate(words):
             if i in covered or w not in PRONOUNS:
