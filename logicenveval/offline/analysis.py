@@ -36,7 +36,8 @@ from logicenveval.offline.sentences import (
 #: words between a subject and its predicate that describe a current situation
 DESCRIPTIVE = frozenset(
     ["is", "are", "was", "were", "be", "been", "being", "am", "seem", "seems", "seemed", "look", "looks", "appear", "appears", "still", "already", "currently", "left", "lying", "lie", "lies", "sitting", "sit", "sits", "standing", "stand", "stands", "kept", "found", "dropped", "fallen", "ended", "up", "have", "has", "had", "got", "gotten", "remain", "remains", "remained", "now", "itself", "themselves", "just", "somehow", "accidentally", "again", "there", "here", "turned", "switched", "scattered", "sitting", "lays", "fell", "slipped", "rolled", "may", "might", "could", "possibly", "perhaps", "maybe", "probably", "sometimes", "will",
-     "also", "too", "even"]
+     "also", "too", "even", "lives", "live", "stays", "stay", "keep", "keeps", "rolling", "falling",
+     "ending"]
 )
 #: verbs after a subject that announce where it must go (a goal, not a condition)
 MOTION = frozenset(
@@ -52,10 +53,14 @@ PARTS = frozenset({"door", "lid", "leaf", "screen", "soil", "surface", "top", "i
                    "content", "bottom", "side", "handle", "shelf", "drawer", "bag", "glass", "bottle",
                    "box", "pack", "packet", "jar", "carton", "tub", "container", "roll"})
 PRONOUNS = frozenset({"it", "they", "them", "one", "ones", "its", "their", "whose"})
+#: verbs that say where a thing belongs ("it is kept in the vanity", "the remote lives on the
+#: stand"): said of a definite object they are still askable (see `Fact.definite`)
+HOMES = frozenset({"kept", "lives", "live"})
 #: participles that turn a noun phrase into a description of the current situation
 SITUATION_PARTICIPLES = frozenset({"left", "lying", "lie", "lies", "sitting", "found", "dropped", "fallen", "fell",
                                    "slipped", "rolled",
-                                   "scattered", "forgotten", "standing", "kept", "ended"})
+                                   "scattered", "forgotten", "standing", "ended", "rolling", "falling",
+                                   "ending"}) | HOMES
 #: determiners of an object already known to be there ("the", "my"): see `Fact.definite`
 DEFINITE = frozenset({"the", "my", "our", "your", "his", "her", "its", "their", "this", "that", "these",
                       "those"})
@@ -521,10 +526,16 @@ class _Reader:
         """`unless it is already there / on`: the condition is the previous instruction's result."""
         if "already" not in words or any(m.kind == "role" for m in mentions) or len(words) > 6:
             return None
-        said = {r for m in mentions if m.kind == "pronoun" for r in m.roles}
+        pronouns = [m for m in mentions if m.kind == "pronoun"]
+        said = set(pronouns[0].roles) if pronouns else set()
         after = [w for w in words[words.index("already") + 1 :] if w not in {"is", "are", "be", "was", "were"}]
-        if after[:1] in (["there"], ["here"]) and self.last_goal is not None and (
-                not said or self.last_goal.subject in said):
+        # what the clause says besides its subject: "there" / "on it" / nothing at all ("unless
+        # it is on it already", "if it is not already") is where the previous instruction put it
+        content = [w for i, w in enumerate(words) if w not in ALREADY_FILLER
+                   and not (pronouns and i == pronouns[0].start)]
+        there = after[:1] in (["there"], ["here"]) or set(content) <= {"there", "here"} or (
+            content[0] in PREP_ON | PREP_IN and all(w in PRONOUNS | ARTICLES for w in content[1:]))
+        if there and self.last_goal is not None and (not said or self.last_goal.subject in said):
             g = self.last_goal
             return Fact(g.subject, g.condition, "location", g.key, negated=negated)
         if after and after[0] in STATE_WORDS:
@@ -634,8 +645,9 @@ class _Reader:
         goal = words[k] != "from" and (self._is_goal(words, m, skipped) or (
             words[k] in ("into", "onto") and not set(skipped) & SITUATION_PARTICIPLES))
         article = words[m.start - 1] if m.start > 0 else ""
-        # where a thing is kept is a norm `_settle_stated` weighs against the rest of the text
-        definite = article in DEFINITE and "kept" not in skipped
+        # where a thing is kept or lives is a norm `_settle_stated` weighs against the rest of
+        # the text
+        definite = article in DEFINITE and not set(skipped) & HOMES
         described = bool(set(skipped) & SITUATION_PARTICIPLES) or (
             not skipped and (article in INDEFINITE or article not in ARTICLES)) or (
             skipped[:1] in (["that"], ["which"]) and article in INDEFINITE)  # "any toy that is on the floor"
@@ -783,6 +795,8 @@ class _Reader:
         return found
 
 
+#: words of an "already" clause that say nothing of a place or a state
+ALREADY_FILLER = frozenset({"already", "is", "are", "be", "was", "were", "been", "not", "still", "yet"})
 _RANK = {"exists": 0, "location": 1, "state": 2, "attr": 3}
 #: words that end a predicate adjective: "one that is not ripe yet belongs in the bowl"
 _AFTER_PREDICATE = frozenset({"yet", "enough", "anymore", "already", "now", "and", "or", "but"}) | MOTION
