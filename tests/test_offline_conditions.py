@@ -222,3 +222,37 @@ def test_one_instruction_for_two_objects_gives_distinct_subtasks() -> None:
     reply = decompose({"task": task}, request)
     descriptions = [s["description"] for s in reply["subtasks"]]
     assert len(descriptions) == 2 and len(set(descriptions)) == 2
+
+
+# ----- a place heading is the place of what follows it -----------------------------------------
+
+@pytest.mark.parametrize("text", [
+    "On the floor: a jacket, and possibly a wallet. Put the wallet in the handbag.",
+    "In the hallway.\nOn the floor: maybe a wallet.\nTo do: the wallet goes in the handbag.",
+])
+def test_a_place_heading_places_what_follows(text: str) -> None:
+    got = factors(text, "jacket", "wallet", "handbag")
+    assert got == {"wallet_on_floor": {"on(wallet, floor)", "not on(wallet, floor)"}}
+
+
+def test_a_place_heading_after_an_object_heading_is_said_of_the_object() -> None:
+    text = "Umbrella - on the floor or on the console table: into the umbrella stand; anywhere else: leave it."
+    got = factors(text, "umbrella", "console_table", "umbrella_stand")
+    assert {"on(umbrella, floor)", "on(umbrella, console_table)"} <= got["umbrella_location"]
+
+
+# ----- "they" is the nearest thing named in the plural, unless the last clause joined things ----
+
+@pytest.mark.parametrize(("text", "condition"), [
+    ("The mug is washed - with the sponges if they are on the desk, otherwise with a towel.",
+     "on(sponge, desk)"),
+    ("Wash the mug, using the sponges when they are on the desk.", "on(sponge, desk)"),
+])
+def test_they_means_the_nearest_plural(text: str, condition: str) -> None:
+    assert condition in asked(text, "mug", "sponge", "desk")
+
+
+def test_they_after_a_coordination_means_the_joined_things() -> None:
+    text = "There may be sponges on the desk. Put the mug in the hamper and the shirt on the chair if they are on the floor."
+    got = asked(text, "mug", "shirt", "sponge", "desk", "hamper", "chair")
+    assert "on(sponge, floor)" not in got

@@ -367,6 +367,10 @@ class _Reader:
         #: "switch the toaster on"), for "unless it is already there / on"
         self.last_goal: Fact | None = None
         self.last_state: dict[str, Fact] = {}
+        #: roles last named in the plural ("the wet wipes"), for "they" / "them"
+        self.plural: set[str] = set()
+        #: the last clause joined things with "and" ("the pillow ... and the toy ..."): "they" is them
+        self.coordinated = False
 
     def _recent_first(self, m: Mention) -> Mention:
         """An ambiguous singular mention (`the rack`) means the candidate mentioned last."""
@@ -422,9 +426,18 @@ class _Reader:
                 prior = [p for p in found if p.kind == "pronoun" and p.start < i]
                 things = [r for r in self.recent if r not in self.lex.holders] or self.recent
                 found.append(Mention(prior[-1].roles if prior else (things[-1],), i, i + 1, "pronoun"))
+            elif w in ("they", "them") and self.topic_kind == "role" and not self.plural & set(self.topic) \
+                    and not self.coordinated and any(r in self.plural for r in self.recent):
+                # "The mark is cleaned - with the wet wipes if they are on the table": a plural
+                # pronoun means the nearest thing named in the plural, not a singular topic
+                found.append(Mention((next(r for r in reversed(self.recent) if r in self.plural),), i, i + 1,
+                                     "pronoun"))
             elif self.topic:
                 found.append(Mention(self.topic, i, i + 1, "pronoun" if self.topic_kind == "role" else "floor"))
         found.sort(key=lambda m: m.start)
+        things = {r for m in found if m.kind == "role" and not _placed(words, m) for r in m.roles}
+        if found:
+            self.coordinated = "and" in words and len(things) > 1
         for n, m in enumerate(found):
             # "use the sponge in case it lies on the counter": a thing is not on itself
             later = {r for x in found[n + 1:] if x.kind == "role"
@@ -445,9 +458,17 @@ class _Reader:
         return found
 
     def facts(self, text: str) -> tuple[list[Fact], tuple[str, ...]]:
-        toks = tokens(expand(text))
+        said = expand(text).lower()
+        toks = tokens(said)
         words = [t[0] for t in toks]
         mentions = self.mentions(words, toks)
+        for m in mentions:
+            if m.kind == "role" and len(m.roles) == 1:
+                surface = said[toks[m.end - 1][1] : toks[m.end - 1][2]]
+                if surface != words[m.end - 1] and surface.endswith("s"):
+                    self.plural.add(m.roles[0])
+                else:
+                    self.plural.discard(m.roles[0])
         subjects = [m for m in mentions if m.kind in ("role", "pronoun")]
         negated = any(_negation(w) for w in words)
         already = self._already(words, mentions, negated)
@@ -619,8 +640,10 @@ class _Reader:
 
     def _is_goal(self, words: list[str], m: Mention, skipped: list[str]) -> bool:
         before = words[max(0, m.start - 4) : m.start]
-        # "pop it on the desk": where an imperative's object goes
-        return bool(set(skipped) & MOTION) or any(w in ACTIONS for w in before) or (
+        # "pop it on the desk": where an imperative's object goes ("a pack of wipes on the
+        # table" is no action: the word after an article is a noun)
+        verbs = [w for i, w in enumerate(before) if w in ACTIONS and not (i > 0 and before[i - 1] in ARTICLES)]
+        return bool(set(skipped) & MOTION) or bool(verbs) or (
             m.start > 0 and _imperative(words) and all(w in ARTICLES for w in words[1 : m.start]))
 
     def _location(self, words: list[str], mentions: list[Mention], idx: int, negated: bool) -> list[Fact]:
@@ -898,6 +921,13 @@ def _antecedent(clauses: list[Clause], sentence: int) -> tuple[list[Fact], tuple
     return [], ()
 
 
+def _place_heading(reader: _Reader, text: str) -> bool:
+    """The heading is a place and nothing else ("On the floor", "In the kitchen")."""
+    toks = tokens(expand(text))
+    return bool(toks) and toks[0][0] in PLACE_PREPS and not any(
+        m.kind == "role" and not _placed([w for w, _, _ in toks], m) for m in reader.lex.find_mentions(toks))
+
+
 def _read_heading(reader: _Reader, text: str) -> tuple[list[Fact], tuple[str, ...]]:
     """A heading's facts. A heading without its own subject is said of the object spoken of
     ("Shoes - wet:", "Keys - on the floor or on the console table:"): it reads as `it is ...`."""
@@ -914,12 +944,20 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     clauses: list[Clause] = []
     grammatical = 0  # pieces split at ':' or ';' still belong to one sentence for grouping
     headed = -1  # the sentence whose heading ("Shirt on the floor:") the pieces after it answer
+    named = -1  # the sentence whose heading named an object ("Keys - on the floor: ...")
+    place: tuple[int, str] = (-1, "")  # a place heading ("On the floor: ...") and its sentence
     for si, sent in enumerate(sentences):
         for text, cue, role in _subsplit(_split_clauses(_apposition(sent))):
             if role == "heading":
+                if _place_heading(reader, text) and named != grammatical:
+                    # "On the floor: a dirty mark, and possibly a book": the place of what follows
+                    place = (grammatical, text)
+                    clauses.append(Clause(text, grammatical, cue, "statement", (), ()))
+                    continue
                 facts, names = _read_heading(reader, text)
                 role = "condition" if any(not f.goal for f in facts) else "statement"
                 headed = grammatical if role == "condition" else headed
+                named = grammatical if names else named
                 clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
                 continue
             if role in ("statement", "scene") and headed == grammatical:
@@ -928,6 +966,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             # "if we still have one (it lives in the vanity - ...)": a closing aside says where the
             # object is kept (offline.placement), it asks nothing
             said = _ASIDE.sub("", text) if role == "condition" and _ASIDE.sub("", text).strip() else text
+            if place[0] == grammatical:
+                said = f"{said.rstrip(' .;,')} {place[1]}"
+                role = "scene" if role == "statement" else role
             facts, names = reader.facts("there is " + said if cue == "should there be" else said)
             if role == "condition" and _anaphoric(said, facts):
                 facts, names = _antecedent(clauses, grammatical)
