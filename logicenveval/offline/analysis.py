@@ -435,9 +435,9 @@ class _Reader:
             elif self.topic:
                 found.append(Mention(self.topic, i, i + 1, "pronoun" if self.topic_kind == "role" else "floor"))
         found.sort(key=lambda m: m.start)
-        things = {r for m in found if m.kind == "role" and not _placed(words, m) for r in m.roles}
+        named = {r for m in found if m.kind == "role" and not _placed(words, m) for r in m.roles}
         if found:
-            self.coordinated = "and" in words and len(things) > 1
+            self.coordinated = "and" in words and len(named) > 1
         for n, m in enumerate(found):
             # "use the sponge in case it lies on the counter": a thing is not on itself
             later = {r for x in found[n + 1:] if x.kind == "role"
