@@ -17,6 +17,7 @@ CATALOG = Catalog.model_validate({"categories": {
     name: {"size_min": [0.1, 0.1, 0.1], "size_max": [1, 1, 1], "placement": ["floor"], **extra}
     for name, extra in {
         "ceiling_fan": {"toggleable": True, "synonyms": ["fan"]},
+        "television": {"toggleable": True, "synonyms": ["tv"]},
         "heater": {"toggleable": True},
         "hair_dryer": {"toggleable": True, "pickable": True},
         "flashlight": {"toggleable": True, "pickable": True},
@@ -256,3 +257,42 @@ def test_they_after_a_coordination_means_the_joined_things() -> None:
     text = "There may be sponges on the desk. Put the mug in the hamper and the shirt on the chair if they are on the floor."
     got = asked(text, "mug", "shirt", "sponge", "desk", "hamper", "chair")
     assert "on(sponge, floor)" not in got
+
+
+# ----- "if it isn't": the opposite of the clause pointed back to --------------------------------
+
+@pytest.mark.parametrize(("text", "roles", "condition"), [
+    ("The TV should be off, so switch it off if it isn't.", ("television",), "state(television, toggled_on)"),
+    ("The wardrobe might already be open, and if it isn't, open it.", ("wardrobe",), "state(wardrobe, open)"),
+])
+def test_a_negated_pointer_takes_the_opposite(text: str, roles: tuple[str, ...], condition: str) -> None:
+    values = factors(text, *roles)
+    assert any({condition, f"not {condition}"} <= v for v in values.values()), values
+
+
+def test_two_pointers_share_their_antecedent() -> None:
+    text = ("Check whether the wallet is still inside the handbag. If it isn't, fine. If it is, take it out "
+            "and if it is dirty, wipe it.")
+    a = analyse(brief(text, "wallet", "handbag"), CATALOG)
+    conditions = [c for c in a.clauses if c.role == "condition" and c.text.strip() in ("it isn't", "it is")]
+    assert [[(f.condition, f.negated) for f in c.facts] for c in conditions] == [
+        [("inside(wallet, handbag)", True)], [("inside(wallet, handbag)", False)]]
+
+
+# ----- "elsewhere" with no place said yet is away from where the instruction puts it -------------
+
+@pytest.mark.parametrize("text", [
+    "The blanket is returned to the armchair if it has been left anywhere else.",
+    "Bring the blanket back to the armchair in case it is somewhere else.",
+])
+def test_elsewhere_is_away_from_the_goal(text: str) -> None:
+    assert "not on(blanket, armchair)" in asked(text, "blanket", "armchair")
+
+
+@pytest.mark.parametrize("text", [
+    "Candle on the coffee table still lit: put it out.",
+    "If the lamp on the desk is still on, switch it off.",
+])
+def test_a_state_after_a_place_is_the_things_not_the_places(text: str) -> None:
+    got = asked(text, "candle", "coffee_table", "table_lamp", "desk")
+    assert not any(c.startswith(("state(coffee_table", "state(desk")) for c in got), got

@@ -66,6 +66,8 @@ DEFINITE = frozenset({"the", "my", "our", "your", "his", "her", "its", "their", 
                       "those"})
 #: prepositions before a place or a goal: an object after them is not what a clause speaks of
 PLACE_PREPS = frozenset({"on", "onto", "in", "into", "inside", "to", "from", "by", "near", "under"})
+#: prepositions of where a thing is now (not where it goes: "into", "onto", "to")
+WHERE_PREPS = frozenset({"on", "in", "inside", "by", "near", "under"})
 INDEFINITE = frozenset({"a", "an", "any", "every", "each", "some", "no"})
 NEGATIONS = frozenset({"not", "no", "none", "never", "without", "nothing", "nobody", "nowhere"})
 UNCERTAIN = frozenset({"may", "might", "possibly", "possible", "perhaps", "maybe", "could", "sometimes",
@@ -474,8 +476,9 @@ class _Reader:
         already = self._already(words, mentions, negated)
         if already is not None:
             return [already], (already.subject,)
+        goal_of = {self.last_goal.subject} if self.last_goal is not None else set()
         if subjects and subjects[0].kind == "pronoun" and any(p in " ".join(words) for p in ELSEWHERE) and not (
-                set(subjects[0].roles) & set(self.last_location)) and not any(
+                set(subjects[0].roles) & (set(self.last_location) | goal_of)) and not any(
                 x.kind in ("role", "floor", "room") for x in mentions):
             # "if it is somewhere else": the thing whose place was just spoken of
             placed = [r for r in self.recent if r in self.last_location]
@@ -489,12 +492,22 @@ class _Reader:
             if m.kind not in ("role", "pronoun"):
                 continue
             facts += self._location(words, mentions, idx, negated)
-            facts += self._state(words, m, negated)
+            if not (m.kind == "role" and set(words[max(0, m.start - 3) : m.start]) & WHERE_PREPS and any(
+                    x.kind in ("role", "pronoun") and x.end <= m.start for x in mentions)
+                    and words[m.end : m.end + 1] not in (["which"], ["that"])):
+                # "Candle on the coffee table still lit": the state is the candle's, not its place's
+                # (unless a relative clause speaks of the place: "in the wardrobe, which is open")
+                facts += self._state(words, m, negated)
             facts += self._attribute(words, m, negated)
         if any(p in " ".join(words) for p in ELSEWHERE) and subjects:
             for r in subjects[0].roles:
-                if r in self.last_location:
-                    base = self.last_location[r]
+                base = self.last_location.get(r)
+                if base is None and r in goal_of and self.last_goal is not None and not any(
+                        f.subject == r and f.kind == "location" and not f.goal for f in facts):
+                    # "The remote is returned to the stand if it has been left anywhere else": with
+                    # no place said of it, "elsewhere" is away from where the instruction puts it
+                    base = self.last_goal
+                if base is not None:
                     facts.append(Fact(r, base.condition, "location", base.key, negated=True))
         facts += self._fronted_place(words, mentions)
         facts += self._derived_attributes(words, mentions)
@@ -659,9 +672,11 @@ class _Reader:
             k += 1
             if skipped[-1] == "of" and k < len(words) and self._unknown(words[k]):
                 k += 1  # "a tin of food in the basket", "a bar of soap in the tub"
-        if k >= len(words) or words[k] not in PREP_ON | PREP_IN | {"from"} or (
+        if k >= len(words) or words[k] not in PREP_ON | PREP_IN | {"from", "to"} or (
                 skipped and skipped[-1] in ("switched", "turned")):  # "switched on" is not a place
             return []
+        if words[k] == "to" and not self._is_goal(words, m, skipped):
+            return []  # "to" names a place only where something is moved: "returned to the armchair"
         if words[k] == "from" and (skipped or m.kind != "role" or set(words[max(0, m.start - 4) : m.start]) & SOURCE_VERBS):
             return []  # "fill it from the bag" names a source, not where the object is
         # "the wipes from the table": where the object is now, whatever verb precedes it
@@ -677,7 +692,7 @@ class _Reader:
         modifier = not goal and described
         subjects = self._subjects(words, mentions, idx)
         out: list[Fact] = []
-        while k < len(words) and words[k] in PREP_ON | PREP_IN | {"from"}:
+        while k < len(words) and words[k] in PREP_ON | PREP_IN | {"from", "to"}:
             prep = words[k]
             if prep == "on" and words[k + 1 : k + 3] == ["top", "of"]:
                 k += 2
@@ -692,7 +707,7 @@ class _Reader:
                         continue
                     if target.kind == "room":
                         cond = f"in_room({s}, {t})"
-                    elif prep in PREP_ON or t == "floor" or (prep == "from" and t not in self.lex.containers):
+                    elif prep in PREP_ON or t == "floor" or (prep in ("from", "to") and t not in self.lex.containers):
                         cond = f"on({s}, {t})"
                     else:
                         cond = f"inside({s}, {t})"
@@ -900,19 +915,23 @@ def _norm(clause: Clause) -> bool:
 
 
 def _anaphoric(text: str, facts: list[Fact]) -> bool:
-    """A condition with no fact of its own whose words only point back."""
+    """A condition with no fact of its own whose words only point back ("if it is not" too)."""
     return not any(not f.goal for f in facts) and all(
-        w in ANAPHORIC for w, _, _ in tokens(expand(text)))
+        w in ANAPHORIC | {"not"} for w, _, _ in tokens(expand(text)))
 
 
-def _antecedent(clauses: list[Clause], sentence: int) -> tuple[list[Fact], tuple[str, ...]]:
+def _antecedent(clauses: list[Clause], sentence: int, pointing: set[int]) -> tuple[list[Fact], tuple[str, ...]]:
     """What an anaphoric condition points back to: the situation described by the nearest clause
     of this or the previous sentence that describes one ("Someone keeps leaving the fan running;
     if so, ..."). That clause is then no instruction of its own: it is relabelled a statement."""
+    reach = sentence - 1
     for j in range(len(clauses) - 1, -1, -1):
         cl = clauses[j]
-        if cl.sentence < sentence - 1:
+        if cl.sentence < reach:
             break
+        if j in pointing:  # "If it isn't, fine. If it is, ...": both point to the same clause
+            reach = min(reach, cl.sentence - 1)
+            continue
         said = [replace(f, modifier=False, definite=False) for f in cl.facts if not f.goal]
         if said:
             if cl.role == "consequence":
@@ -946,6 +965,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     headed = -1  # the sentence whose heading ("Shirt on the floor:") the pieces after it answer
     named = -1  # the sentence whose heading named an object ("Keys - on the floor: ...")
     place: tuple[int, str] = (-1, "")  # a place heading ("On the floor: ...") and its sentence
+    pointing: set[int] = set()  # clauses that point back ("if it isn't"): never an antecedent
     for si, sent in enumerate(sentences):
         for text, cue, role in _subsplit(_split_clauses(_apposition(sent))):
             if role == "heading":
@@ -971,7 +991,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 role = "scene" if role == "statement" else role
             facts, names = reader.facts("there is " + said if cue == "should there be" else said)
             if role == "condition" and _anaphoric(said, facts):
-                facts, names = _antecedent(clauses, grammatical)
+                facts, names = _antecedent(clauses, grammatical, pointing)
+                pointing.add(len(clauses))
+                if "not" in {w for w, _, _ in tokens(expand(said))}:
+                    # "the drawer might already be open, and if it isn't, open it": the opposite
+                    facts = [replace(f, negated=not f.negated) for f in facts]
             elif role == "condition" and facts and all(f.goal for f in facts) and not set(
                     w for w, _, _ in tokens(said)) & AGENTS:
                 # "if it has been thrown on the floor", "whenever the jacket ends up on the
