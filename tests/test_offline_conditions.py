@@ -296,3 +296,18 @@ def test_elsewhere_is_away_from_the_goal(text: str) -> None:
 def test_a_state_after_a_place_is_the_things_not_the_places(text: str) -> None:
     got = asked(text, "candle", "coffee_table", "table_lamp", "desk")
     assert not any(c.startswith(("state(coffee_table", "state(desk")) for c in got), got
+
+
+# ----- where a thing is kept is its norm: the factor asks about the other places ---------------
+
+@pytest.mark.parametrize(("text", "roles", "subject", "place"), [
+    ("The shampoo and the soap are kept in the wall cabinet. The shampoo has probably been left in the "
+     "bathtub again - if it has, put it back in the cabinet.", ("shampoo", "soap", "wall_cabinet", "bathtub"),
+     "shampoo", "bathtub"),
+    ("The mug is kept in the dresser. It may have been left on the desk; if so, put it back.",
+     ("mug", "dresser", "desk"), "mug", "desk"),
+])
+def test_a_kept_place_is_not_asked(text: str, roles: tuple[str, ...], subject: str, place: str) -> None:
+    got = {k: v for k, v in factors(text, *roles).items() if k.startswith(subject)}
+    pred = "on" if place == "desk" else "inside"
+    assert list(got.values()) == [{f"{pred}({subject}, {place})", f"not {pred}({subject}, {place})"}], got

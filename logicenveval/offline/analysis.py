@@ -1129,7 +1129,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         factor.places = set(e.get("places", set()))
         slot_factor[(subject, kind, key)] = factor
         factors.append(factor)
-    factors = _settle_stated(factors, brief, catalog, slot_factor)
+    homes = {f.condition for cl in clauses if cl.role == "statement" and {w for w, _, _ in tokens(cl.text)} & HOMES
+             for f in cl.facts if f.kind == "location" and not f.goal}
+    factors = _settle_stated(factors, brief, catalog, slot_factor, homes)
     for factor in factors:
         for slot_c, negated, value in factor.raw_context:
             dep = slot_factor.get(slot_c)
@@ -1142,18 +1144,20 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
 
 
 def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Catalog,
-                   slot_factor: dict[tuple[str, str, str], Factor]) -> list[Factor]:
+                   slot_factor: dict[tuple[str, str, str], Factor], homes: set[str]) -> list[Factor]:
     """A placement the description states (`offline.placement`: "a coffee table with a mug on it", "a
     kitchen with a stove") is no uncertain location: its yes/no factor is dropped. So is where an
     object is kept ("it's kept in the vanity, unless someone stuffed it into the medicine
-    cabinet"), and a factor listing the places it may be has no "elsewhere" — unless the text
-    speaks of one ("wherever else it may be lying")."""
+    cabinet"): a factor listing the places it may be asks about the others (`_drop_home`) —
+    unless the text speaks of somewhere else ("wherever else it may be lying")."""
 
     low = " ".join(w for w, _, _ in tokens(expand(str(brief.get("description", "")))))
     elsewhere = any(re.search(rf"\b{cue}\b", low) for cue in ELSEWHERE + ("wherever",))
     settled = set(described_placements(brief, catalog, kinds=frozenset({"settled"} | (
         set() if elsewhere else {"kept"}))))
-    kept = set(described_placements(brief, catalog, kinds=frozenset({"kept"})))
+    # where the placement reader or this reader ("The shampoo and the soap are kept in the wall
+    # cabinet") finds a thing kept
+    kept = set(described_placements(brief, catalog, kinds=frozenset({"kept"}))) | homes
     out: list[Factor] = []
     for f in factors:
         values = set(f.values.values())
@@ -1163,9 +1167,25 @@ def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Cat
                     del slot_factor[slot]
             continue
         if f.kind == "location" and "elsewhere" in f.values and kept & values and not elsewhere:
-            f.values.pop("elsewhere")
+            _drop_home(f, kept)
         out.append(f)
     return out
+
+
+def _drop_home(f: Factor, kept: set[str]) -> None:
+    """Where a thing is kept is its norm, not what is uncertain about it ("The soap is kept in
+    the wall cabinet. There may be a bar of soap in the tub"): the factor asks about the other
+    places, and stays exhaustive (a yes/no for one place, else the places and "elsewhere")."""
+    rest = {k: v for k, v in f.values.items() if k != "elsewhere" and v not in kept}
+    if not rest:
+        return
+    if len(rest) == 1:
+        ((target, cond),) = rest.items()
+        f.values = {"yes": cond, "no": f"not {cond}"}
+        f.id = f"{f.subject}_{cond.split('(')[0]}_{target}"
+    else:
+        f.values = {**rest, "elsewhere": " and ".join(f"not {c}" for c in rest.values())}
+    f.question = _question(f.subject, "location", "", list(rest))
 
 
 def _contrasted(clauses: list[Clause], text: str) -> set[tuple[str, str]]:
