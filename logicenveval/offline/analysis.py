@@ -75,6 +75,11 @@ UNCERTAIN = frozenset({"may", "might", "possibly", "possible", "perhaps", "maybe
 CONDITIONAL = ("depending on whether", "depending on if", "in case", "as long as", "provided that",
                "only if", "if not", "if so", "whether", "if", "unless", "whenever", "when", "while", "once",
                "should there be", "should")
+#: words that open a sentence without saying anything of the scene ("Then, if ...", "Oh, and
+#: should ...")
+DISCOURSE = frozenset({"then", "and", "also", "so", "first", "second", "third", "next", "finally", "last",
+                       "lastly", "oh", "but", "now", "plus", "afterwards", "after", "that", "right", "okay",
+                       "ok", "well"})
 ELSE_CUES = ("otherwise", "else", "failing that", "if not", "if there is not", "if there are not")
 ELSEWHERE = ("anywhere else", "elsewhere", "somewhere else", "any other place", "not there")
 #: verbs whose "from" names a source ("fill the bowl from the bag"), not a location
@@ -279,6 +284,8 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
             and len(after.group(1).split()) <= 3 and not set(after.group(1).split()) & NEGATIONS:
         return [(sentence, "if available", "uncertain")]
     head = sentence[:start].strip(" ,-")
+    if set(re.findall(r"[a-z]+", head.lower())) <= DISCOURSE:
+        head = ""  # "Then, unless it is in the box, put it in": the condition opens the sentence
     tail = sentence[start + len(cue):]
     pieces: list[tuple[str, str | None, str]] = []
     if head:
@@ -359,8 +366,10 @@ def _negation(word: str) -> bool:
 class _Reader:
     """Extracts facts clause by clause, remembering topics for pronouns."""
 
-    def __init__(self, lex: Lexicon) -> None:
+    def __init__(self, lex: Lexicon, capable: Mapping[str, frozenset[str]] | None = None) -> None:
         self.lex = lex
+        #: role -> the state flags its kind can take (`FITTED`), from the catalog
+        self.capable = dict(capable or {})
         self.topic: tuple[str, ...] = ()
         self.topic_kind = "role"
         self.recent: list[str] = []
@@ -383,6 +392,12 @@ class _Reader:
 
     def mentions(self, words: list[str], toks: list[tuple[str, int, int]]) -> list[Mention]:
         found = [self._recent_first(m) for m in self.lex.find_mentions(toks) if not _verb_read(toks, m)]
+        relative = words[:1] in (["which"], ["who"]) and bool(self.recent) and self.topic_kind == "role"
+        if relative:
+            # "... hung in the wardrobe, which is opened first if its door is closed": a clause
+            # opening with a relative pronoun speaks of the thing named last, now the topic
+            self.topic = (self.recent[-1],)
+            found.append(Mention(self.topic, 0, 1, "pronoun"))
         covered = {i for m in found for i in range(m.start, m.end)}
         for i, w in enumerate(words):
             if i in covered or w not in PRONOUNS:
@@ -546,6 +561,8 @@ class _Reader:
                     facts += [Fact(r, f"state({r}, {flag})", "state", flag, negated=negated != (not pol))
                               for r in self.topic]
                     break
+        said_by_pronoun = {r for m in mentions if m.kind == "pronoun" for r in m.roles}
+        facts = [self._fit(f) if f.kind == "state" and f.subject in said_by_pronoun else f for f in facts]
         for f in facts:
             if f.kind == "location" and not f.goal:
                 self.last_location[f.subject] = f
@@ -555,6 +572,17 @@ class _Reader:
                 self.last_state[f.key] = f
         names = tuple(dict.fromkeys(r for m in subjects for r in m.roles))
         return list(dict.fromkeys(facts)), names
+
+    def _fit(self, f: Fact) -> Fact:
+        """A pronoun's state said of a thing that cannot take it ("hang the shirt in the wardrobe
+        - open it first if its doors are shut") means the nearest thing that can."""
+        if f.key not in FITTED or f.key in self.capable.get(f.subject, FITTED):
+            return f
+        fitting = [r for r in reversed(self.recent) if r != f.subject and f.key in self.capable.get(r, ())]
+        if not fitting:
+            return f
+        r = fitting[0]
+        return replace(f, subject=r, condition=f"state({r}, {f.key})")
 
     def _already(self, words: list[str], mentions: list[Mention], negated: bool) -> Fact | None:
         """`unless it is already there / on`: the condition is the previous instruction's result."""
@@ -956,9 +984,25 @@ def _read_heading(reader: _Reader, text: str) -> tuple[list[Fact], tuple[str, ..
     return reader.facts(text if subject or not reader.topic else "it is " + text)
 
 
+#: state flags only some kinds of thing take (a shirt does not open, a towel is not switched on),
+#: with the catalog capability that allows each
+FITTED_BY = {"open": "openable", "toggled_on": "toggleable"}
+FITTED = frozenset(FITTED_BY)
+
+
+def _capabilities(brief: Mapping[str, Any], catalog: Catalog) -> dict[str, frozenset[str]]:
+    """Role -> the `FITTED` flags its category takes (roles of unknown categories are left out)."""
+    out: dict[str, frozenset[str]] = {}
+    for name, role in dict(brief.get("roles") or {}).items():
+        cat = catalog.get(str(role.get("category", "")))
+        if cat is not None:
+            out[name] = frozenset(flag for flag, attr in FITTED_BY.items() if getattr(cat, attr))
+    return out
+
+
 def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     lex = Lexicon.build(brief, catalog)
-    reader = _Reader(lex)
+    reader = _Reader(lex, _capabilities(brief, catalog))
     sentences = split_sentences(str(brief["description"]))
     clauses: list[Clause] = []
     grammatical = 0  # pieces split at ':' or ';' still belong to one sentence for grouping
@@ -1064,7 +1108,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             entry.setdefault("places", set()).add((cl.sentence, ci))
             if cl.role == "condition":
                 value = f.condition.rsplit(", ", 1)[1][:-1] if f.kind == "attr" else f.key
-                added.append((slot, f.negated, value))
+                # "unless it is already in the box, put it in: open the box first if ...": what
+                # follows an "unless" happens when its condition does not hold
+                added.append((slot, f.negated != (cl.cue == "unless"), value))
             if f.kind == "location" and f.key not in entry["targets"]:
                 entry["targets"].append(f.key)
                 entry.setdefault("conds", {})[f.key] = f.condition
