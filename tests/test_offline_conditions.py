@@ -349,3 +349,37 @@ def test_a_relative_clause_speaks_of_the_thing_named_last(text: str) -> None:
 def test_a_pronouns_state_fits_the_thing(text: str, roles: tuple[str, ...], fitted: str, unfit: str) -> None:
     got = asked(text, *roles)
     assert fitted in got and unfit not in got, got
+
+
+# ----- existence said of "one" ---------------------------------------------------------------
+
+@pytest.mark.parametrize("text", [
+    "If the mirror is dirty, the sponge is used if one is still to be had - it is kept in the dresser.",
+    "If the mirror is dirty, clean it with the sponge if we've still got one.",
+    "If the mirror is dirty, clean it with the sponge if we have one.",
+])
+def test_one_still_to_be_had_asks_whether_the_thing_exists(text: str) -> None:
+    a = analyse(brief(text, "mirror", "sponge", "dresser"), CATALOG)
+    by_id = {f.id: f for f in a.factors}
+    assert by_id["sponge_present"].context == [("mirror_dirty", frozenset({"yes"}))]
+    assert "sponge_dirty" not in by_id  # "the sponge is used": the passive of "use", not a used sponge
+
+
+def test_a_new_sentence_with_its_own_situation_carries_no_conditions() -> None:
+    text = ("If no wallet is to be found on the desk, close the dresser. Finally, a dirty mirror is cleaned: "
+            "the sponge is used if one is still to be had.")
+    a = analyse(brief(text, "wallet", "desk", "dresser", "mirror", "sponge"), CATALOG)
+    assert {f.id: f.context for f in a.factors}["sponge_present"] == []
+
+
+# ----- an instruction that is only a place: where the thing spoken of goes ----------------------
+
+@pytest.mark.parametrize(("text", "condition"), [
+    ("Throw blanket: dirty - into the hamper; clean - onto the armchair, unless it's already there.",
+     "on(blanket, armchair)"),
+    ("Shoes - wet: on the drying rack; dry: on the shoe rack (leave them if they're already there).",
+     "on(shoe, shoe_rack)"),
+])
+def test_a_bare_place_instruction_is_a_goal(text: str, condition: str) -> None:
+    got = asked(text, "blanket", "hamper", "armchair", "shoe", "drying_rack", "shoe_rack")
+    assert condition in got, got

@@ -170,7 +170,8 @@ _APPOSITION = re.compile(rf"^(?P<lead>\W*)(?:{_GENERIC})\s+(?:that\s+|which\s+)?
 
 
 #: "if we still have one": the household owns the object, or not
-_WE_HAVE = re.compile(r"\b(?:we|you|i)(?: still| also| even)? have(?: (?:a|an|any|some))?$")
+_WE_HAVE = re.compile(r"\b(?:we|you|i)(?: still| also| even)? (?:have|has)(?: still| also)?(?: got)?"
+                      r"(?: (?:a|an|any|some))?$")
 _ASIDE = re.compile(r"\s*\([^()]*\)\W*$")
 _WITHOUT = re.compile(r"^(\W*)(?:without|with no)\s+(?:a|an|any|the)?\s*(?=\w[^,]*,)", re.I)
 
@@ -405,7 +406,7 @@ class _Reader:
             if w == "it" and words[i + 1 : i + 2] in (["is"], ["was"], ["seems"], ["may"], ["might"], ["could"]) \
                     and "that" in words[i + 2 : i + 5]:
                 continue  # "it is possible that my toothbrush fell": an empty subject, not a reference
-            if w in ("one", "ones") and (i == 0 and words[1:2] not in (["that"], ["which"]) or i > 0 and words[i - 1] in {"no", "any", "each", "every", "which",
+            if w in ("one", "ones") and (i == 0 and words[1:2] not in (["that"], ["which"], ["is"], ["are"], ["can"]) or i > 0 and words[i - 1] in {"no", "any", "each", "every", "which",
                                                                    "this", "that"}
                                           or words[i + 1 : i + 2] == ["of"]):
                 continue  # "one of the cushions", "each one": not an anaphoric "one"
@@ -436,7 +437,9 @@ class _Reader:
             if before:
                 found.append(Mention(before[-1].roles, i, i + 1,
                                      "pronoun" if before[-1].kind == "role" else before[-1].kind))
-            elif w == "one" and {"there", "have", "has"} & set(words[max(0, i - 3) : i]) and self.recent:
+            elif w == "one" and ({"there", "have", "has", "got"} & set(words[max(0, i - 3) : i]) or i == 0 and words[
+                    1:2] in (["is"], ["are"], ["can"])) and self.recent:
+                # "if one is still to be had": the subject "one" is the thing named last
                 # "... with the cloth if there is one" / "if we still have one": the object named
                 # last, not the topic,
                 # unless the clause already spoke of something ("if it is elsewhere or there is none")
@@ -534,9 +537,10 @@ class _Reader:
                 # "the roll by the toilet is missing", "we are out of bread"
                 facts += [Fact(r, f"exists({r})", "exists", negated=True) for r in m.roles]
                 break
-            # "there may or may not be a loaf", "if we still have one"
+            # "there may or may not be a loaf", "if we still have one", "if one is still to be had"
             before = words[max(0, m.start - 8) : m.start]
-            if "there" in before or "no" in before[-2:] or _WE_HAVE.search(" ".join(before[-4:])):
+            if "there" in before or "no" in before[-2:] or _WE_HAVE.search(" ".join(before[-4:])) or (
+                    m.start == 0 and m.kind == "pronoun" and words[0] == "one"):
                 facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
                 break
         else:
@@ -771,6 +775,8 @@ class _Reader:
             if w in ("on", "off") and k + 1 < len(words) and words[k + 1] in ARTICLES | PRONOUNS | {"floor"} \
                     and not (skipped and skipped[-1] in ("switched", "turned")):
                 break  # `on the table` is a place, not `switched on`
+            if w == "used":
+                break  # "the cloth is used": the passive of "use"; only "a used cloth" is dirty
             found.append((w, local_neg, relative))
             k += 1
             j = k
@@ -968,6 +974,20 @@ def _antecedent(clauses: list[Clause], sentence: int, pointing: set[int]) -> tup
     return [], ()
 
 
+_DASH = re.compile(r"\s+[-\u2013]\s+")
+
+
+def _goes(reader: _Reader, text: str) -> bool:
+    """An instruction that is only a place ("on the shoe rack", "back into the hamper"): where
+    the thing spoken of goes."""
+    toks = tokens(expand(text))
+    words = [w for w, _, _ in toks]
+    lead = 1 if words[:1] == ["back"] else 0
+    return len(words) > lead and words[lead] in PLACE_PREPS - {"from", "by", "near"} and reader.topic_kind == "role" \
+        and bool(reader.topic) and not any(m.kind == "role" and not _placed(words, m)
+                                           for m in reader.lex.find_mentions(toks))
+
+
 def _place_heading(reader: _Reader, text: str) -> bool:
     """The heading is a place and nothing else ("On the floor", "In the kitchen")."""
     toks = tokens(expand(text))
@@ -1030,6 +1050,10 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             # "if we still have one (it lives in the vanity - ...)": a closing aside says where the
             # object is kept (offline.placement), it asks nothing
             said = _ASIDE.sub("", text) if role == "condition" and _ASIDE.sub("", text).strip() else text
+            if role == "condition" and _DASH.split(said)[0].strip():
+                said = _DASH.split(said)[0]  # "if one is still to be had - it is kept in the vanity"
+            if role == "consequence" and _goes(reader, said):
+                said = f"it goes {said}"  # "dry: on the shoe rack", "clean - onto the armchair"
             if place[0] == grammatical:
                 said = f"{said.rstrip(' .;,')} {place[1]}"
                 role = "scene" if role == "statement" else role
@@ -1063,7 +1087,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     carried: list[tuple[tuple[str, str, str], bool, str]] = []
     for ci, cl in enumerate(clauses):
         if cl.sentence != current_sentence:
-            carried = context if cl.role in ("statement", "consequence") else []
+            # ... unless it speaks of a situation of its own ("Finally, a dirty mirror is cleaned:")
+            carried = context if cl.role in ("statement", "consequence") and not any(
+                not f.goal and not f.derived for f in cl.facts) else []
             current_sentence, context = cl.sentence, []
         elif (cl.role == "condition" and ci >= 2 and clauses[ci - 1].role == "consequence"
               and clauses[ci - 2].role == "condition" and clauses[ci - 2].sentence == cl.sentence
