@@ -383,3 +383,21 @@ def test_a_new_sentence_with_its_own_situation_carries_no_conditions() -> None:
 def test_a_bare_place_instruction_is_a_goal(text: str, condition: str) -> None:
     got = asked(text, "blanket", "hamper", "armchair", "shoe", "drying_rack", "shoe_rack")
     assert condition in got, got
+
+
+# ----- an indefinite thing with no place or state said: whether there is one -------------------
+
+@pytest.mark.parametrize("text", [
+    "If an umbrella has been left, it is stood in the umbrella stand when it is wet.",
+    "In case an umbrella has turned up, put it in the umbrella stand if it is wet.",
+])
+def test_an_indefinite_thing_left_somewhere_is_an_existence_factor(text: str) -> None:
+    a = analyse(brief(text, "umbrella", "umbrella_stand"), CATALOG)
+    by_id = {f.id: f for f in a.factors}
+    assert by_id["umbrella_present"].values == {"yes": "exists(umbrella)", "no": "not exists(umbrella)"}
+    assert by_id["umbrella_wet"].context == [("umbrella_present", frozenset({"yes"}))]
+
+
+def test_lying_there_is_a_place_not_an_existence() -> None:
+    got = factors("A mug may have fallen on the floor, and a shirt may be lying there too.", "mug", "shirt")
+    assert "shirt_present" not in got

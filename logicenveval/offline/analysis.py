@@ -86,6 +86,8 @@ ELSEWHERE = ("anywhere else", "elsewhere", "somewhere else", "any other place", 
 #: verb particles between an object and its place ("rolled out onto the floor")
 PARTICLES = frozenset({"out", "down", "over", "around", "away", "about"})
 SOURCE_VERBS = frozenset({"fill", "refill", "pour", "top", "water", "feed"})
+#: verbs that say a thing has come to be there ("if a parcel has arrived")
+ARRIVALS = frozenset({"arrived", "come", "turned", "appeared", "shown", "showed", "been", "behind"})
 #: words that say an object is absent: "the roll is missing"
 ABSENT = frozenset({"missing", "absent", "gone", "lacking", "unavailable"})
 AVAILABILITY = frozenset({"available", "any", "present", "possible", "exist", "exists", "there"})
@@ -209,7 +211,7 @@ def _first_cue(low: str, cues: tuple[str, ...]) -> tuple[int, str] | None:
 CLAUSE_WORDS = frozenset({
     "is", "are", "was", "were", "am", "be", "been", "has", "have", "had", "do", "does", "did",
     "will", "would", "can", "could", "shall", "should", "may", "might", "must", "need", "needs",
-    "keep", "keeps", "i", "you", "we", "he", "she", "they", "someone", "somebody", "everyone",
+    "keep", "keeps", "i", "you", "we", "he", "she", "it", "they", "someone", "somebody", "everyone",
     "there", "please", "let", "make", "get"})
 #: words after a base-form verb that make it an imperative with its object ("clean it", "put
 #: the", "pick up"), not an adjective or noun opening a heading ("clean - ...", "water bowl ...")
@@ -549,6 +551,15 @@ class _Reader:
             if none is not None and subjects and subjects[0].start < none:
                 # "if it is anywhere else, or we have none": the thing spoken of may be absent
                 facts += [Fact(r, f"exists({r})", "exists", negated=True) for r in subjects[0].roles]
+        for m in subjects:
+            # "if an umbrella has been left", "in case a letter has turned up": an indefinite
+            # thing whose predicate says neither where nor how it is - whether there is one
+            rest = words[m.end :]
+            if m.kind == "role" and m.start > 0 and words[m.start - 1] in INDEFINITE - {"no"} and rest and all(
+                    w in DESCRIPTIVE | SITUATION_PARTICIPLES | PARTICLES | ARRIVALS for w in rest) and not {
+                    "there", "here"} & set(rest) and not any(
+                    f.subject in m.roles for f in facts):
+                facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
         if not subjects and self.topic and self.topic_kind == "role":
             # "The potted plant: dusty leaves get misted ..." - a state of a part of the topic
             for i, w in enumerate(words[:-1]):
@@ -597,7 +608,7 @@ class _Reader:
         after = [w for w in words[words.index("already") + 1 :] if w not in {"is", "are", "be", "was", "were"}]
         # what the clause says besides its subject: "there" / "on it" / nothing at all ("unless
         # it is on it already", "if it is not already") is where the previous instruction put it
-        content = [w for i, w in enumerate(words) if w not in ALREADY_FILLER
+        content = [w for i, w in enumerate(words) if w not in ALREADY_FILLER | SITUATION_PARTICIPLES
                    and not (pronouns and i == pronouns[0].start)]
         there = after[:1] in (["there"], ["here"]) or set(content) <= {"there", "here"} or (
             content[0] in PREP_ON | PREP_IN and all(w in PRONOUNS | ARTICLES for w in content[1:]))
