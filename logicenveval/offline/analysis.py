@@ -381,6 +381,9 @@ class _Reader:
         #: "switch the toaster on"), for "unless it is already there / on"
         self.last_goal: Fact | None = None
         self.last_state: dict[str, Fact] = {}
+        #: the thing last spoken of, not a place it goes to ("Bath towel on the floor? Wet: into
+        #: the basket. Dry: ..."): what a heading without a subject is said of
+        self.heading_topic: tuple[str, ...] = ()
         #: roles last named in the plural ("the wet wipes"), for "they" / "them"
         self.plural: set[str] = set()
         #: the last clause joined things with "and" ("the pillow ... and the toy ..."): "they" is them
@@ -471,12 +474,12 @@ class _Reader:
         for m in found:
             if m.kind in ("role", "pronoun"):
                 self.recent = [r for r in self.recent if r not in m.roles] + list(m.roles)
-        # the topic is what the clause speaks of, not where something goes ("Wet: into the
-        # laundry basket. Dry: ..." keeps speaking of the towel)
-        first = next((m for m in found if m.kind in ("role", "floor", "pronoun")
-                      and not _placed(words, m)), None)
+        first = next((m for m in found if m.kind in ("role", "floor", "pronoun")), None)
         if first is not None and first.kind != "pronoun":
             self.topic, self.topic_kind = first.roles, first.kind
+        thing = next((m for m in found if m.kind == "role" and not _placed(words, m)), None)
+        if thing is not None:
+            self.heading_topic = thing.roles  # the thing spoken of, not a place it goes to
         return found
 
     def facts(self, text: str) -> tuple[list[Fact], tuple[str, ...]]:
@@ -611,7 +614,7 @@ class _Reader:
         content = [w for i, w in enumerate(words) if w not in ALREADY_FILLER | SITUATION_PARTICIPLES
                    and not (pronouns and i == pronouns[0].start)]
         there = after[:1] in (["there"], ["here"]) or set(content) <= {"there", "here"} or (
-            content[0] in PREP_ON | PREP_IN and all(w in PRONOUNS | ARTICLES for w in content[1:]))
+            len(content) > 1 and content[0] in PREP_ON | PREP_IN and all(w in PRONOUNS | ARTICLES for w in content[1:]))
         if there and self.last_goal is not None and (not said or self.last_goal.subject in said):
             g = self.last_goal
             return Fact(g.subject, g.condition, "location", g.key, negated=negated)
@@ -1000,10 +1003,12 @@ def _goes(reader: _Reader, text: str) -> bool:
 
 
 def _place_heading(reader: _Reader, text: str) -> bool:
-    """The heading is a place and nothing else ("On the floor", "In the kitchen")."""
+    """The heading is a place where things lie and nothing else ("On the floor", "On the table";
+    a room, "In the kitchen:", only says where the instructions happen)."""
     toks = tokens(expand(text))
-    return bool(toks) and toks[0][0] in PLACE_PREPS and not any(
-        m.kind == "role" and not _placed([w for w, _, _ in toks], m) for m in reader.lex.find_mentions(toks))
+    mentions = reader.lex.find_mentions(toks)
+    return bool(toks) and toks[0][0] in PLACE_PREPS and any(m.kind in ("role", "floor") for m in mentions) and not any(
+        m.kind == "room" or m.kind == "role" and not _placed([w for w, _, _ in toks], m) for m in mentions)
 
 
 def _read_heading(reader: _Reader, text: str) -> tuple[list[Fact], tuple[str, ...]]:
@@ -1012,7 +1017,14 @@ def _read_heading(reader: _Reader, text: str) -> tuple[list[Fact], tuple[str, ..
     toks = tokens(expand(text))
     words = [w for w, _, _ in toks]
     subject = any(m.kind == "role" and not _placed(words, m) for m in reader.lex.find_mentions(toks))
-    return reader.facts(text if subject or not reader.topic else "it is " + text)
+    if subject or not (reader.heading_topic or reader.topic):
+        facts, names = reader.facts(text)
+        reader.heading_topic = names[:1] or reader.heading_topic
+        return facts, names
+    # "Bath towel on the floor? Wet: into the basket. Dry: ...": said of the last heading's
+    # object, whatever the instructions between named
+    reader.topic, reader.topic_kind = reader.heading_topic or reader.topic, "role"
+    return reader.facts("it is " + text)
 
 
 #: state flags only some kinds of thing take (a shirt does not open, a towel is not switched on),
@@ -1146,8 +1158,10 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             if cl.role == "condition":
                 value = f.condition.rsplit(", ", 1)[1][:-1] if f.kind == "attr" else f.key
                 # "unless it is already in the box, put it in: open the box first if ...": what
-                # follows an "unless" happens when its condition does not hold
-                added.append((slot, f.negated != (cl.cue == "unless"), value))
+                # follows a leading "unless" happens when its condition does not hold (a trailing
+                # one, "the pillow, unless there is a pan - in that case ...", ends its instruction)
+                leading = ci == 0 or clauses[ci - 1].sentence != cl.sentence or clauses[ci - 1].role != "consequence"
+                added.append((slot, f.negated != (cl.cue == "unless" and leading), value))
             if f.kind == "location" and f.key not in entry["targets"]:
                 entry["targets"].append(f.key)
                 entry.setdefault("conds", {})[f.key] = f.condition
