@@ -23,6 +23,8 @@ CATALOG = Catalog.model_validate({"categories": {
         "flashlight": {"toggleable": True, "pickable": True},
         "table_lamp": {"toggleable": True, "synonyms": ["lamp"]},
         "shampoo": {"pickable": True},
+        "soap": {"pickable": True},
+        "wall_cabinet": {"container": True, "openable": True},
         "bathtub": {"container": True, "synonyms": ["tub"]},
         "ball": {"pickable": True},
         "toy_box": {"container": True, "synonyms": ["toy chest"]},
@@ -401,3 +403,11 @@ def test_an_indefinite_thing_left_somewhere_is_an_existence_factor(text: str) ->
 def test_lying_there_is_a_place_not_an_existence() -> None:
     got = factors("A mug may have fallen on the floor, and a shirt may be lying there too.", "mug", "shirt")
     assert "shirt_present" not in got
+
+
+@pytest.mark.parametrize(("text", "condition"), [
+    ("If there's a bar of soap in the bathtub, put it in the wall cabinet.", "inside(soap, bathtub)"),
+    ("Should a pack of shampoo be lying in the bathtub, put it back.", "inside(shampoo, bathtub)"),
+])
+def test_a_thing_of_something_has_a_place(text: str, condition: str) -> None:
+    assert condition in asked(text, "soap", "shampoo", "bathtub", "wall_cabinet")

@@ -716,7 +716,8 @@ class _Reader:
                                   | {"top", "of", "straight", "that", "which"}) and words[k] not in PREP_ON | PREP_IN:
             skipped.append(words[k])
             k += 1
-            if skipped[-1] == "of" and k < len(words) and self._unknown(words[k]):
+            if skipped[-1] == "of" and k < len(words) and words[k].isalpha() and words[k] not in PREP_ON | PREP_IN \
+                    and not any(x.start == k for x in mentions):
                 k += 1  # "a tin of food in the basket", "a bar of soap in the tub"
         if k >= len(words) or words[k] not in PREP_ON | PREP_IN | {"from", "to"} or (
                 skipped and skipped[-1] in ("switched", "turned")):  # "switched on" is not a place
