@@ -24,6 +24,7 @@ CATALOG = Catalog.model_validate({"categories": {
         "table_lamp": {"toggleable": True, "synonyms": ["lamp"]},
         "shampoo": {"pickable": True},
         "soap": {"pickable": True},
+        "trash_can": {"container": True},
         "wall_cabinet": {"container": True, "openable": True},
         "bathtub": {"container": True, "synonyms": ["tub"]},
         "ball": {"pickable": True},
@@ -411,3 +412,12 @@ def test_lying_there_is_a_place_not_an_existence() -> None:
 ])
 def test_a_thing_of_something_has_a_place(text: str, condition: str) -> None:
     assert condition in asked(text, "soap", "shampoo", "bathtub", "wall_cabinet")
+
+
+@pytest.mark.parametrize("text", [
+    "Jobs:\n- Trash can full: empty it into the hamper.\n- Mug dirty: wash it.",
+    "To do:\n- Recycling bin full - empty it.\n- Mug dirty - wash it.",
+])
+def test_list_items_are_headings_and_a_title_is_none(text: str) -> None:
+    got = factors(text, "recycling_bin", "trash_can", "hamper", "mug")
+    assert set(got) in ({"recycling_bin_filled", "mug_dirty"}, {"trash_can_filled", "mug_dirty"}), got

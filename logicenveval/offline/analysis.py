@@ -208,9 +208,10 @@ def _first_cue(low: str, cues: tuple[str, ...]) -> tuple[int, str] | None:
 
 #: words that make a segment a clause of its own (a finite verb, its subject, an existential),
 #: so that it is no verbless heading: "Lamp left on:" is a heading, "the box has two drawers:" not
+#: ("can" is left out: "Trash can full:" is a heading; "can you ...?" has its subject)
 CLAUSE_WORDS = frozenset({
     "is", "are", "was", "were", "am", "be", "been", "has", "have", "had", "do", "does", "did",
-    "will", "would", "can", "could", "shall", "should", "may", "might", "must", "need", "needs",
+    "will", "would", "could", "shall", "should", "may", "might", "must", "need", "needs",
     "keep", "keeps", "i", "you", "we", "he", "she", "it", "they", "someone", "somebody", "everyone",
     "there", "please", "let", "make", "get"})
 #: words after a base-form verb that make it an imperative with its object ("clean it", "put
@@ -1063,7 +1064,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                     clauses.append(Clause(text, grammatical, cue, "statement", (), ()))
                     continue
                 facts, names = _read_heading(reader, text)
-                role = "condition" if any(not f.goal for f in facts) else "statement"
+                role = "condition" if any(not f.goal and not f.derived for f in facts) else "statement"
                 headed = grammatical if role == "condition" else headed
                 named = grammatical if names else named
                 clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
