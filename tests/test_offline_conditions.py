@@ -421,3 +421,18 @@ def test_a_thing_of_something_has_a_place(text: str, condition: str) -> None:
 def test_list_items_are_headings_and_a_title_is_none(text: str) -> None:
     got = factors(text, "recycling_bin", "trash_can", "hamper", "mug")
     assert set(got) in ({"recycling_bin_filled", "mug_dirty"}, {"trash_can_filled", "mug_dirty"}), got
+
+
+@pytest.mark.parametrize("text", [
+    "If the shirt is clean, hang it in the wardrobe (open the wardrobe if the door's shut) and close it after.",
+    "If the shirt is clean, it goes in the wardrobe; you may need to open it first if the doors are closed.",
+])
+def test_a_parts_state_is_its_things(text: str) -> None:
+    assert "state(wardrobe, open)" in asked(text, "shirt", "wardrobe")
+
+
+def test_a_nouns_s_before_a_state_is_the_verb() -> None:
+    from logicenveval.offline.sentences import expand
+
+    assert expand("the door's shut, the pillow's been moved, the cat's ball") == (
+        "the door is shut, the pillow has been moved, the cat ball")

@@ -572,6 +572,17 @@ class _Reader:
                     facts += [Fact(r, f"state({r}, {flag})", "state", flag, negated=not pol, modifier=True)
                               for r in self.topic]
                     break
+                # "if the door is shut": a part's state is its thing's - the nearest that can take it
+                j = i + 1
+                while j < len(words) and words[j] in DESCRIPTIVE | NEGATIONS:
+                    j += 1
+                if w in PARTS and j > i + 1 and j < len(words) and words[j] in STATE_WORDS and words[j] not in (
+                        "on", "off", "out"):
+                    flag, pol = STATE_WORDS[words[j]]
+                    neg = any(_negation(x) for x in words[i + 1 : j]) != (not pol)
+                    facts += [self._fit(Fact(r, f"state({r}, {flag})", "state", flag, negated=neg))
+                              for r in self.topic]
+                    break
         if not subjects and not facts and self.topic and self.topic_kind == "role" and len(words) <= 4:
             # an elliptic condition about the topic: "when dry, ...", "if not ripe, ..."
             for w in words:
@@ -1077,6 +1088,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             said = _ASIDE.sub("", text) if role == "condition" and _ASIDE.sub("", text).strip() else text
             if role == "condition" and _DASH.split(said)[0].strip():
                 said = _DASH.split(said)[0]  # "if one is still to be had - it is kept in the vanity"
+            if role == "condition" and ")" in said and "(" not in said.split(")")[0]:
+                said = said.split(")")[0]  # "(open the wardrobe if the door's shut) and shut it": the aside ends
             if role == "consequence" and _goes(reader, said):
                 said = f"it goes {said}"  # "dry: on the shoe rack", "clean - onto the armchair"
             if place[0] == grammatical:
