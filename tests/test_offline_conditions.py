@@ -10,7 +10,7 @@ import pytest
 
 from logicenveval.domain.catalog import Catalog
 from logicenveval.llm.base import ChatRequest
-from logicenveval.offline.analysis import analyse
+from logicenveval.offline.analysis import analyse, nest
 from logicenveval.offline.plan import decompose
 
 CATALOG = Catalog.model_validate({"categories": {
@@ -24,6 +24,7 @@ CATALOG = Catalog.model_validate({"categories": {
         "table_lamp": {"toggleable": True, "synonyms": ["lamp"]},
         "shampoo": {"pickable": True},
         "soap": {"pickable": True},
+        "cardboard_box": {"container": True, "openable": True},
         "trash_can": {"container": True},
         "wall_cabinet": {"container": True, "openable": True},
         "bathtub": {"container": True, "synonyms": ["tub"]},
@@ -436,3 +437,17 @@ def test_a_nouns_s_before_a_state_is_the_verb() -> None:
 
     assert expand("the door's shut, the pillow's been moved, the cat's ball") == (
         "the door is shut, the pillow has been moved, the cat ball")
+
+
+@pytest.mark.parametrize(("text", "first", "then"), [
+    ("If the flashlight is on, switch it off. Then, unless it's already in the cardboard box, put it in there.",
+     "flashlight_inside_cardboard_box", "flashlight_toggled_on"),
+    ("If the blanket is clean, move it onto the armchair unless it's already lying on it.",
+     "blanket_on_armchair", "blanket_dirty"),
+])
+def test_a_place_the_task_moves_a_thing_to_keeps_asking_about_it(text: str, first: str, then: str) -> None:
+    """"unless it's already in the box": the thing not being there is the case the task handles,
+    so its other factors are still asked there (unlike "if the toy is on the floor")."""
+    a = analyse(brief(text, "flashlight", "cardboard_box", "blanket", "armchair"), CATALOG)
+    tree = nest([f for f in a.factors if f.id in (first, then)])
+    assert tree["var"] == first and tree["branches"]["no"].get("var") == then, tree

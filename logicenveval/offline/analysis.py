@@ -143,6 +143,9 @@ class Factor:
     raw_context: list[tuple[tuple[str, str, str], bool, str]] = field(default_factory=list, repr=False)
     #: every (sentence, clause) where the factor's condition is stated, not only the first
     places: set[tuple[int, int]] = field(default_factory=set, repr=False)
+    #: a location whose "no" leaves the thing out of the task ("if the toy is on the floor"), not
+    #: one the task moves it to ("unless it is already in the box": its "no" is the main case)
+    stops: bool = True
 
 
 def _allowed(dep: Factor, negated: bool, value: str) -> frozenset[str]:
@@ -1177,6 +1180,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # one, "the pillow, unless there is a pan - in that case ...", ends its instruction)
                 leading = ci == 0 or clauses[ci - 1].sentence != cl.sentence or clauses[ci - 1].role != "consequence"
                 added.append((slot, f.negated != (cl.cue == "unless" and leading), value))
+            if f.kind == "location" and cl.role == "condition" and (
+                    cl.cue == "unless" or re.search(r"\balready\b", cl.text.lower()) is not None):
+                entry["reached"] = True  # where the instruction puts it: see `Factor.stops`
             if f.kind == "location" and f.key not in entry["targets"]:
                 entry["targets"].append(f.key)
                 entry.setdefault("conds", {})[f.key] = f.condition
@@ -1239,6 +1245,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                         set(e.get("roles", set())))
         factor.raw_context = e.get("context", [])
         factor.places = set(e.get("places", set()))
+        factor.stops = not e.get("reached", False)
         slot_factor[(subject, kind, key)] = factor
         factors.append(factor)
     homes = {f.condition for cl in clauses if cl.role == "statement" and {w for w, _, _ in tokens(cl.text)} & HOMES
@@ -1375,7 +1382,7 @@ def nest(factors: list[Factor]) -> dict[str, Any]:
         f = ordered[i]
         branches = {}
         for value in f.values:
-            stop = f.kind in ("location", "exists") and value in ("no", "elsewhere")
+            stop = f.kind in ("location", "exists") and value in ("no", "elsewhere") and f.stops
             branches[value] = build(i + 1, skipped | {f.subject} if stop else skipped, {**path, f.id: value})
             if not f.consequences:
                 continue
