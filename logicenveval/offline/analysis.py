@@ -19,6 +19,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
 
+from lemminflect import getAllLemmas
+
 from logicenveval.domain.catalog import Catalog, load_catalog
 from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, tokens
 from logicenveval.offline.placement import described_placements
@@ -34,7 +36,8 @@ from logicenveval.offline.sentences import (
 #: words between a subject and its predicate that describe a current situation
 DESCRIPTIVE = frozenset(
     ["is", "are", "was", "were", "be", "been", "being", "am", "seem", "seems", "seemed", "look", "looks", "appear", "appears", "still", "already", "currently", "left", "lying", "lie", "lies", "sitting", "sit", "sits", "standing", "stand", "stands", "kept", "found", "dropped", "fallen", "ended", "up", "have", "has", "had", "got", "gotten", "remain", "remains", "remained", "now", "itself", "themselves", "just", "somehow", "accidentally", "again", "there", "here", "turned", "switched", "scattered", "sitting", "lays", "fell", "slipped", "rolled", "may", "might", "could", "possibly", "perhaps", "maybe", "probably", "sometimes", "will",
-     "also", "too", "even"]
+     "also", "too", "even", "lives", "live", "stays", "stay", "keep", "keeps", "rolling", "falling",
+     "ending"]
 )
 #: verbs after a subject that announce where it must go (a goal, not a condition)
 MOTION = frozenset(
@@ -50,10 +53,21 @@ PARTS = frozenset({"door", "lid", "leaf", "screen", "soil", "surface", "top", "i
                    "content", "bottom", "side", "handle", "shelf", "drawer", "bag", "glass", "bottle",
                    "box", "pack", "packet", "jar", "carton", "tub", "container", "roll"})
 PRONOUNS = frozenset({"it", "they", "them", "one", "ones", "its", "their", "whose"})
+#: verbs that say where a thing belongs ("it is kept in the vanity", "the remote lives on the
+#: stand"): said of a definite object they are still askable (see `Fact.definite`)
+HOMES = frozenset({"kept", "lives", "live"})
 #: participles that turn a noun phrase into a description of the current situation
 SITUATION_PARTICIPLES = frozenset({"left", "lying", "lie", "lies", "sitting", "found", "dropped", "fallen", "fell",
                                    "slipped", "rolled",
-                                   "scattered", "forgotten", "standing", "kept", "ended"})
+                                   "scattered", "forgotten", "standing", "ended", "rolling", "falling",
+                                   "ending"}) | HOMES
+#: determiners of an object already known to be there ("the", "my"): see `Fact.definite`
+DEFINITE = frozenset({"the", "my", "our", "your", "his", "her", "its", "their", "this", "that", "these",
+                      "those"})
+#: prepositions before a place or a goal: an object after them is not what a clause speaks of
+PLACE_PREPS = frozenset({"on", "onto", "in", "into", "inside", "to", "from", "by", "near", "under"})
+#: prepositions of where a thing is now (not where it goes: "into", "onto", "to")
+WHERE_PREPS = frozenset({"on", "in", "inside", "by", "near", "under"})
 INDEFINITE = frozenset({"a", "an", "any", "every", "each", "some", "no"})
 NEGATIONS = frozenset({"not", "no", "none", "never", "without", "nothing", "nobody", "nowhere"})
 UNCERTAIN = frozenset({"may", "might", "possibly", "possible", "perhaps", "maybe", "could", "sometimes",
@@ -61,10 +75,19 @@ UNCERTAIN = frozenset({"may", "might", "possibly", "possible", "perhaps", "maybe
 CONDITIONAL = ("depending on whether", "depending on if", "in case", "as long as", "provided that",
                "only if", "if not", "if so", "whether", "if", "unless", "whenever", "when", "while", "once",
                "should there be", "should")
+#: words that open a sentence without saying anything of the scene ("Then, if ...", "Oh, and
+#: should ...")
+DISCOURSE = frozenset({"then", "and", "also", "so", "first", "second", "third", "next", "finally", "last",
+                       "lastly", "oh", "but", "now", "plus", "afterwards", "after", "that", "right", "okay",
+                       "ok", "well"})
 ELSE_CUES = ("otherwise", "else", "failing that", "if not", "if there is not", "if there are not")
 ELSEWHERE = ("anywhere else", "elsewhere", "somewhere else", "any other place", "not there")
 #: verbs whose "from" names a source ("fill the bowl from the bag"), not a location
+#: verb particles between an object and its place ("rolled out onto the floor")
+PARTICLES = frozenset({"out", "down", "over", "around", "away", "about"})
 SOURCE_VERBS = frozenset({"fill", "refill", "pour", "top", "water", "feed"})
+#: verbs that say a thing has come to be there ("if a parcel has arrived")
+ARRIVALS = frozenset({"arrived", "come", "turned", "appeared", "shown", "showed", "been", "behind"})
 #: words that say an object is absent: "the roll is missing"
 ABSENT = frozenset({"missing", "absent", "gone", "lacking", "unavailable"})
 AVAILABILITY = frozenset({"available", "any", "present", "possible", "exist", "exists", "there"})
@@ -88,6 +111,9 @@ class Fact:
     #: an attribute the catalog has no domain for, read from the wording ("a ripe one", "it is a
     #: bill"); kept only when the text contrasts it (see `_contrasted`)
     derived: bool = False
+    #: said of a definite object ("the tablet is lying on the chair"): in a plain statement a
+    #: fact the environment keeps, not an uncertain factor
+    definite: bool = False
 
 
 @dataclass(frozen=True)
@@ -117,6 +143,9 @@ class Factor:
     raw_context: list[tuple[tuple[str, str, str], bool, str]] = field(default_factory=list, repr=False)
     #: every (sentence, clause) where the factor's condition is stated, not only the first
     places: set[tuple[int, int]] = field(default_factory=set, repr=False)
+    #: a location whose "no" leaves the thing out of the task ("if the toy is on the floor"), not
+    #: one the task moves it to ("unless it is already in the box": its "no" is the main case)
+    stops: bool = True
 
 
 def _allowed(dep: Factor, negated: bool, value: str) -> frozenset[str]:
@@ -146,7 +175,8 @@ _APPOSITION = re.compile(rf"^(?P<lead>\W*)(?:{_GENERIC})\s+(?:that\s+|which\s+)?
 
 
 #: "if we still have one": the household owns the object, or not
-_WE_HAVE = re.compile(r"\b(?:we|you|i)(?: still| also| even)? have(?: (?:a|an|any|some))?$")
+_WE_HAVE = re.compile(r"\b(?:we|you|i)(?: still| also| even)? (?:have|has)(?: still| also)?(?: got)?"
+                      r"(?: (?:a|an|any|some))?$")
 _ASIDE = re.compile(r"\s*\([^()]*\)\W*$")
 _WITHOUT = re.compile(r"^(\W*)(?:without|with no)\s+(?:a|an|any|the)?\s*(?=\w[^,]*,)", re.I)
 
@@ -166,6 +196,8 @@ def _first_cue(low: str, cues: tuple[str, ...]) -> tuple[int, str] | None:
     best: tuple[int, str] | None = None
     for cue in cues:
         pattern = rf"(?<![a-z]){re.escape(cue)}\b"
+        if cue in ("once", "while"):  # a conjunction only before its clause: not "a once-over"
+            pattern = rf"(?<![a-z-]){cue}(?=\s+[a-z])"
         if cue == "should":  # only the inverted conditional: "should the hamper be full, ..."
             pattern = r"(?:^|[,;:(-]\s*|\b(?:and|or|but)\s+)should\b(?=\s+(?:the|there|a|an|it|they|any|one|your|my|our|its|their|this|that|these|those|some|no)\b)"
         m = re.search(pattern, low)
@@ -177,8 +209,59 @@ def _first_cue(low: str, cues: tuple[str, ...]) -> tuple[int, str] | None:
     return best
 
 
+#: words that make a segment a clause of its own (a finite verb, its subject, an existential),
+#: so that it is no verbless heading: "Lamp left on:" is a heading, "the box has two drawers:" not
+#: ("can" is left out: "Trash can full:" is a heading; "can you ...?" has its subject)
+CLAUSE_WORDS = frozenset({
+    "is", "are", "was", "were", "am", "be", "been", "has", "have", "had", "do", "does", "did",
+    "will", "would", "could", "shall", "should", "may", "might", "must", "need", "needs",
+    "keep", "keeps", "i", "you", "we", "he", "she", "it", "they", "someone", "somebody", "everyone",
+    "there", "please", "let", "make", "get"})
+#: words after a base-form verb that make it an imperative with its object ("clean it", "put
+#: the", "pick up"), not an adjective or noun opening a heading ("clean - ...", "water bowl ...")
+OBJECT_STARTS = ARTICLES | frozenset({"it", "them", "up", "out", "back", "away", "down", "off", "over",
+                                      "with", "at", "from", "onto", "into"})
+#: a heading ends where its instruction starts: at a colon, a question mark or a spaced dash
+_HEADING = re.compile(r"^(?P<head>[^:?\u2013]+?)(?P<mark>\?|:|\s+(?:-|\u2013)\s+)(?P<rest>.*)$", re.S)
+
+
+def _imperative(words: list[str]) -> bool:
+    """The segment opens with a verb in its base form followed by its object or particle."""
+    if len(words) < 2:
+        return False
+    lemmas = getAllLemmas(words[0]).get("VERB", ())
+    return words[0] in lemmas and words[1] in OBJECT_STARTS
+
+
+def _heading(sentence: str) -> tuple[str, str, str] | None:
+    """A verbless heading and its instruction: "Pillow on the floor: back on the bed", "Mirror
+    dirty? Clean it", "dirty - into the hamper", "Table dirty:" (the instruction in the next piece).
+    Returns (heading, mark, rest), or None when the first segment is a clause of its own (it has a
+    finite verb, a subject, a conditional cue) or an instruction (an imperative)."""
+    m = _HEADING.match(sentence.strip())
+    if m is None:
+        return None
+    head, rest = m.group("head").strip(" ,"), m.group("rest").strip()
+    words = [w for w, _, _ in tokens(expand(head))]
+    if not words or len(words) > 10 or set(words) & CLAUSE_WORDS or _imperative(words):
+        return None
+    if _first_cue(head.lower(), CONDITIONAL) or any(w in UNCERTAIN for w in words):
+        return None
+    mark = m.group("mark").strip()
+    if mark == "-" and not rest:
+        return None
+    return head, mark, rest
+
+
 def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
-    """(text, cue, role) pieces of a sentence, recursively for chained conditionals."""
+    """(text, cue, role) pieces of a sentence, recursively for chained conditionals; a verbless
+    heading (`_heading`) is a `heading` piece, its instruction read after it."""
+    heading = _heading(sentence)
+    if heading is not None:
+        label, mark, instruction = heading
+        answer = [(t, c, "consequence" if r in ("statement", "scene") else r)
+                  for t, c, r in _split_clauses(instruction)] if instruction.strip(" .!") else []
+        return [(label, mark, "heading"), *answer]
     low = sentence.lower()
     for cue in ELSE_CUES:
         m = re.match(rf"^\W*{re.escape(cue)}\b", low)
@@ -203,11 +286,13 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
                             else "statement"))
         return out
     start, cue = best
-    after = re.match(r"\W*([a-z' ]{0,30}?)\W*(?:$|[,;]|\s-\s)", low[start + len(cue):])
+    after = re.match(r"\W*([a-z' ]{0,30}?)\W*(?:$|[,;]|\s-\s)", expand(low[start + len(cue):]))
     if cue in ("if", "in case") and after and set(after.group(1).split()) & AVAILABILITY \
             and len(after.group(1).split()) <= 3 and not set(after.group(1).split()) & NEGATIONS:
         return [(sentence, "if available", "uncertain")]
     head = sentence[:start].strip(" ,-")
+    if set(re.findall(r"[a-z]+", head.lower())) <= DISCOURSE:
+        head = ""  # "Then, unless it is in the box, put it in": the condition opens the sentence
     tail = sentence[start + len(cue):]
     pieces: list[tuple[str, str | None, str]] = []
     if head:
@@ -244,7 +329,7 @@ def _subsplit(pieces: list[tuple[str, str | None, str]]) -> list[tuple[str, str 
     out: list[tuple[str, str | None, str]] = []
     for text, cue, role in pieces:
         splitter = r",\s*(?:and|but|then)\s+" + (r"|,\s*(?=the\s)" if role == "consequence" else "")
-        parts = [p for p in re.split(splitter, text) if p.strip()]
+        parts = [p for p in re.split(splitter, text) if p.strip()] or ([text] if role == "condition" else [])
         for i, part in enumerate(parts):
             out.append((part, cue, role if i == 0 or role != "condition" else "consequence"))
     return out
@@ -257,6 +342,30 @@ def _joined(words: list[str], a: Mention, b: Mention) -> bool:
                                           for w in between)
 
 
+#: words that open a verb's object: a one-word mention right before one is the verb ("stand it in
+#: the umbrella stand", "if you spot it there", "water the plant")
+VERB_OBJECTS = frozenset({"it", "them", "the", "a", "an", "this", "these", "those", "its", "their", "my",
+                          "your", "our"})
+
+
+def _verb_read(toks: list[tuple[str, int, int]], m: Mention) -> bool:
+    """A one-word mention that is a verb in its context: a base or present form right before its
+    object (no punctuation between: "a book, an alarm clock" lists two things)."""
+    if m.end - m.start != 1 or m.end >= len(toks) or toks[m.end][0] not in VERB_OBJECTS \
+            or toks[m.end][1] - toks[m.start][2] > 1 \
+            or m.start > 0 and toks[m.start - 1][0] in ARTICLES | INDEFINITE | NEGATIONS | PLACE_PREPS | set(STATE_WORDS):
+        return False  # "on the counter it must ...", "a dirty plate the ...": a noun after all
+    word = toks[m.start][0]
+    verbs = getAllLemmas(word).get("VERB", ())
+    return bool(verbs) and (word in verbs or word.endswith("s") and word[:-1] in verbs)
+
+
+def _placed(words: list[str], m: Mention) -> bool:
+    """The mention names a place or a goal: a preposition stands before it ("on the table",
+    "from the big dresser")."""
+    return bool(set(words[max(0, m.start - 3) : m.start]) & PLACE_PREPS)
+
+
 def _negation(word: str) -> bool:
     return word in NEGATIONS
 
@@ -264,8 +373,10 @@ def _negation(word: str) -> bool:
 class _Reader:
     """Extracts facts clause by clause, remembering topics for pronouns."""
 
-    def __init__(self, lex: Lexicon) -> None:
+    def __init__(self, lex: Lexicon, capable: Mapping[str, frozenset[str]] | None = None) -> None:
         self.lex = lex
+        #: role -> the state flags its kind can take (`FITTED`), from the catalog
+        self.capable = dict(capable or {})
         self.topic: tuple[str, ...] = ()
         self.topic_kind = "role"
         self.recent: list[str] = []
@@ -274,6 +385,13 @@ class _Reader:
         #: "switch the toaster on"), for "unless it is already there / on"
         self.last_goal: Fact | None = None
         self.last_state: dict[str, Fact] = {}
+        #: the thing last spoken of, not a place it goes to ("Bath towel on the floor? Wet: into
+        #: the basket. Dry: ..."): what a heading without a subject is said of
+        self.heading_topic: tuple[str, ...] = ()
+        #: roles last named in the plural ("the wet wipes"), for "they" / "them"
+        self.plural: set[str] = set()
+        #: the last clause joined things with "and" ("the pillow ... and the toy ..."): "they" is them
+        self.coordinated = False
 
     def _recent_first(self, m: Mention) -> Mention:
         """An ambiguous singular mention (`the rack`) means the candidate mentioned last."""
@@ -283,7 +401,13 @@ class _Reader:
         return Mention((known[-1],), m.start, m.end, m.kind) if known else m
 
     def mentions(self, words: list[str], toks: list[tuple[str, int, int]]) -> list[Mention]:
-        found = [self._recent_first(m) for m in self.lex.find_mentions(toks)]
+        found = [self._recent_first(m) for m in self.lex.find_mentions(toks) if not _verb_read(toks, m)]
+        relative = words[:1] in (["which"], ["who"]) and bool(self.recent) and self.topic_kind == "role"
+        if relative:
+            # "... hung in the wardrobe, which is opened first if its door is closed": a clause
+            # opening with a relative pronoun speaks of the thing named last, now the topic
+            self.topic = (self.recent[-1],)
+            found.append(Mention(self.topic, 0, 1, "pronoun"))
         covered = {i for m in found for i in range(m.start, m.end)}
         for i, w in enumerate(words):
             if i in covered or w not in PRONOUNS:
@@ -291,7 +415,7 @@ class _Reader:
             if w == "it" and words[i + 1 : i + 2] in (["is"], ["was"], ["seems"], ["may"], ["might"], ["could"]) \
                     and "that" in words[i + 2 : i + 5]:
                 continue  # "it is possible that my toothbrush fell": an empty subject, not a reference
-            if w in ("one", "ones") and (i == 0 and words[1:2] not in (["that"], ["which"]) or i > 0 and words[i - 1] in {"no", "any", "each", "every", "which",
+            if w in ("one", "ones") and (i == 0 and words[1:2] not in (["that"], ["which"], ["is"], ["are"], ["can"]) or i > 0 and words[i - 1] in {"no", "any", "each", "every", "which",
                                                                    "this", "that"}
                                           or words[i + 1 : i + 2] == ["of"]):
                 continue  # "one of the cushions", "each one": not an anaphoric "one"
@@ -305,6 +429,11 @@ class _Reader:
                 # clause's subject, not a place named after a preposition
                 subj = [m for m in before if m.start == 0 or words[m.start - 1] not in PREP_ON | PREP_IN]
                 before = subj[:1] or before
+            elif i > 0 and words[i - 1] in ACTIONS and any(_placed(words, m) for m in before):
+                # "fetch a spare from the dresser, lay it on the table": what is moved is a thing
+                # spoken of, not a place it comes from or goes to
+                moved = [m for m in before if not _placed(words, m)]
+                before = moved or ([] if self.topic_kind == "role" and self.topic else before)
             elif i > 0 and words[i - 1] in PREP_ON | PREP_IN and before:
                 # "a book or a phone on it": not the listed objects themselves
                 listed = [before[-1]]
@@ -317,16 +446,27 @@ class _Reader:
             if before:
                 found.append(Mention(before[-1].roles, i, i + 1,
                                      "pronoun" if before[-1].kind == "role" else before[-1].kind))
-            elif w == "one" and {"there", "have", "has"} & set(words[max(0, i - 3) : i]) and self.recent:
+            elif w == "one" and ({"there", "have", "has", "got"} & set(words[max(0, i - 3) : i]) or i == 0 and words[
+                    1:2] in (["is"], ["are"], ["can"])) and self.recent:
+                # "if one is still to be had": the subject "one" is the thing named last
                 # "... with the cloth if there is one" / "if we still have one": the object named
                 # last, not the topic,
                 # unless the clause already spoke of something ("if it is elsewhere or there is none")
                 prior = [p for p in found if p.kind == "pronoun" and p.start < i]
                 things = [r for r in self.recent if r not in self.lex.holders] or self.recent
                 found.append(Mention(prior[-1].roles if prior else (things[-1],), i, i + 1, "pronoun"))
+            elif w in ("they", "them") and self.topic_kind == "role" and not self.plural & set(self.topic) \
+                    and not self.coordinated and any(r in self.plural for r in self.recent):
+                # "The mark is cleaned - with the wet wipes if they are on the table": a plural
+                # pronoun means the nearest thing named in the plural, not a singular topic
+                found.append(Mention((next(r for r in reversed(self.recent) if r in self.plural),), i, i + 1,
+                                     "pronoun"))
             elif self.topic:
                 found.append(Mention(self.topic, i, i + 1, "pronoun" if self.topic_kind == "role" else "floor"))
         found.sort(key=lambda m: m.start)
+        named = {r for m in found if m.kind == "role" and not _placed(words, m) for r in m.roles}
+        if found:
+            self.coordinated = "and" in words and len(named) > 1
         for n, m in enumerate(found):
             # "use the sponge in case it lies on the counter": a thing is not on itself
             later = {r for x in found[n + 1:] if x.kind == "role"
@@ -341,19 +481,31 @@ class _Reader:
         first = next((m for m in found if m.kind in ("role", "floor", "pronoun")), None)
         if first is not None and first.kind != "pronoun":
             self.topic, self.topic_kind = first.roles, first.kind
+        thing = next((m for m in found if m.kind == "role" and not _placed(words, m)), None)
+        if thing is not None:
+            self.heading_topic = thing.roles  # the thing spoken of, not a place it goes to
         return found
 
     def facts(self, text: str) -> tuple[list[Fact], tuple[str, ...]]:
-        toks = tokens(expand(text))
+        said = expand(text).lower()
+        toks = tokens(said)
         words = [t[0] for t in toks]
         mentions = self.mentions(words, toks)
+        for m in mentions:
+            if m.kind == "role" and len(m.roles) == 1:
+                surface = said[toks[m.end - 1][1] : toks[m.end - 1][2]]
+                if surface != words[m.end - 1] and surface.endswith("s"):
+                    self.plural.add(m.roles[0])
+                else:
+                    self.plural.discard(m.roles[0])
         subjects = [m for m in mentions if m.kind in ("role", "pronoun")]
         negated = any(_negation(w) for w in words)
         already = self._already(words, mentions, negated)
         if already is not None:
             return [already], (already.subject,)
+        goal_of = {self.last_goal.subject} if self.last_goal is not None else set()
         if subjects and subjects[0].kind == "pronoun" and any(p in " ".join(words) for p in ELSEWHERE) and not (
-                set(subjects[0].roles) & set(self.last_location)) and not any(
+                set(subjects[0].roles) & (set(self.last_location) | goal_of)) and not any(
                 x.kind in ("role", "floor", "room") for x in mentions):
             # "if it is somewhere else": the thing whose place was just spoken of
             placed = [r for r in self.recent if r in self.last_location]
@@ -367,12 +519,22 @@ class _Reader:
             if m.kind not in ("role", "pronoun"):
                 continue
             facts += self._location(words, mentions, idx, negated)
-            facts += self._state(words, m, negated)
+            if not (m.kind == "role" and set(words[max(0, m.start - 3) : m.start]) & WHERE_PREPS and any(
+                    x.kind in ("role", "pronoun") and x.end <= m.start for x in mentions)
+                    and words[m.end : m.end + 1] not in (["which"], ["that"])):
+                # "Candle on the coffee table still lit": the state is the candle's, not its place's
+                # (unless a relative clause speaks of the place: "in the wardrobe, which is open")
+                facts += self._state(words, m, negated)
             facts += self._attribute(words, m, negated)
         if any(p in " ".join(words) for p in ELSEWHERE) and subjects:
             for r in subjects[0].roles:
-                if r in self.last_location:
-                    base = self.last_location[r]
+                base = self.last_location.get(r)
+                if base is None and r in goal_of and self.last_goal is not None and not any(
+                        f.subject == r and f.kind == "location" and not f.goal for f in facts):
+                    # "The remote is returned to the stand if it has been left anywhere else": with
+                    # no place said of it, "elsewhere" is away from where the instruction puts it
+                    base = self.last_goal
+                if base is not None:
                     facts.append(Fact(r, base.condition, "location", base.key, negated=True))
         facts += self._fronted_place(words, mentions)
         facts += self._derived_attributes(words, mentions)
@@ -384,9 +546,10 @@ class _Reader:
                 # "the roll by the toilet is missing", "we are out of bread"
                 facts += [Fact(r, f"exists({r})", "exists", negated=True) for r in m.roles]
                 break
-            # "there may or may not be a loaf", "if we still have one"
+            # "there may or may not be a loaf", "if we still have one", "if one is still to be had"
             before = words[max(0, m.start - 8) : m.start]
-            if "there" in before or "no" in before[-2:] or _WE_HAVE.search(" ".join(before[-4:])):
+            if "there" in before or "no" in before[-2:] or _WE_HAVE.search(" ".join(before[-4:])) or (
+                    m.start == 0 and m.kind == "pronoun" and words[0] == "one"):
                 facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
                 break
         else:
@@ -395,12 +558,32 @@ class _Reader:
             if none is not None and subjects and subjects[0].start < none:
                 # "if it is anywhere else, or we have none": the thing spoken of may be absent
                 facts += [Fact(r, f"exists({r})", "exists", negated=True) for r in subjects[0].roles]
+        for m in subjects:
+            # "if an umbrella has been left", "in case a letter has turned up": an indefinite
+            # thing whose predicate says neither where nor how it is - whether there is one
+            rest = words[m.end :]
+            if m.kind == "role" and m.start > 0 and words[m.start - 1] in INDEFINITE - {"no"} and rest and all(
+                    w in DESCRIPTIVE | SITUATION_PARTICIPLES | PARTICLES | ARRIVALS for w in rest) and not {
+                    "there", "here"} & set(rest) and not any(
+                    f.subject in m.roles for f in facts):
+                facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
         if not subjects and self.topic and self.topic_kind == "role":
             # "The potted plant: dusty leaves get misted ..." - a state of a part of the topic
             for i, w in enumerate(words[:-1]):
                 if w in STATE_WORDS and w not in ("on", "off", "out") and words[i + 1] in PARTS:
                     flag, pol = STATE_WORDS[w]
                     facts += [Fact(r, f"state({r}, {flag})", "state", flag, negated=not pol, modifier=True)
+                              for r in self.topic]
+                    break
+                # "if the door is shut": a part's state is its thing's - the nearest that can take it
+                j = i + 1
+                while j < len(words) and words[j] in DESCRIPTIVE | NEGATIONS:
+                    j += 1
+                if w in PARTS and j > i + 1 and j < len(words) and words[j] in STATE_WORDS and words[j] not in (
+                        "on", "off", "out"):
+                    flag, pol = STATE_WORDS[words[j]]
+                    neg = any(_negation(x) for x in words[i + 1 : j]) != (not pol)
+                    facts += [self._fit(Fact(r, f"state({r}, {flag})", "state", flag, negated=neg))
                               for r in self.topic]
                     break
         if not subjects and not facts and self.topic and self.topic_kind == "role" and len(words) <= 4:
@@ -411,6 +594,8 @@ class _Reader:
                     facts += [Fact(r, f"state({r}, {flag})", "state", flag, negated=negated != (not pol))
                               for r in self.topic]
                     break
+        said_by_pronoun = {r for m in mentions if m.kind == "pronoun" for r in m.roles}
+        facts = [self._fit(f) if f.kind == "state" and f.subject in said_by_pronoun else f for f in facts]
         for f in facts:
             if f.kind == "location" and not f.goal:
                 self.last_location[f.subject] = f
@@ -421,14 +606,31 @@ class _Reader:
         names = tuple(dict.fromkeys(r for m in subjects for r in m.roles))
         return list(dict.fromkeys(facts)), names
 
+    def _fit(self, f: Fact) -> Fact:
+        """A pronoun's state said of a thing that cannot take it ("hang the shirt in the wardrobe
+        - open it first if its doors are shut") means the nearest thing that can."""
+        if f.key not in FITTED or f.key in self.capable.get(f.subject, FITTED):
+            return f
+        fitting = [r for r in reversed(self.recent) if r != f.subject and f.key in self.capable.get(r, ())]
+        if not fitting:
+            return f
+        r = fitting[0]
+        return replace(f, subject=r, condition=f"state({r}, {f.key})")
+
     def _already(self, words: list[str], mentions: list[Mention], negated: bool) -> Fact | None:
         """`unless it is already there / on`: the condition is the previous instruction's result."""
         if "already" not in words or any(m.kind == "role" for m in mentions) or len(words) > 6:
             return None
-        said = {r for m in mentions if m.kind == "pronoun" for r in m.roles}
+        pronouns = [m for m in mentions if m.kind == "pronoun"]
+        said = set(pronouns[0].roles) if pronouns else set()
         after = [w for w in words[words.index("already") + 1 :] if w not in {"is", "are", "be", "was", "were"}]
-        if after[:1] in (["there"], ["here"]) and self.last_goal is not None and (
-                not said or self.last_goal.subject in said):
+        # what the clause says besides its subject: "there" / "on it" / nothing at all ("unless
+        # it is on it already", "if it is not already") is where the previous instruction put it
+        content = [w for i, w in enumerate(words) if w not in ALREADY_FILLER | SITUATION_PARTICIPLES
+                   and not (pronouns and i == pronouns[0].start)]
+        there = after[:1] in (["there"], ["here"]) or set(content) <= {"there", "here"} or (
+            len(content) > 1 and content[0] in PREP_ON | PREP_IN and all(w in PRONOUNS | ARTICLES for w in content[1:]))
+        if there and self.last_goal is not None and (not said or self.last_goal.subject in said):
             g = self.last_goal
             return Fact(g.subject, g.condition, "location", g.key, negated=negated)
         if after and after[0] in STATE_WORDS:
@@ -512,7 +714,11 @@ class _Reader:
 
     def _is_goal(self, words: list[str], m: Mention, skipped: list[str]) -> bool:
         before = words[max(0, m.start - 4) : m.start]
-        return bool(set(skipped) & MOTION) or any(w in ACTIONS for w in before)
+        # "pop it on the desk": where an imperative's object goes ("a pack of wipes on the
+        # table" is no action: the word after an article is a noun)
+        verbs = [w for i, w in enumerate(before) if w in ACTIONS and not (i > 0 and before[i - 1] in ARTICLES)]
+        return bool(set(skipped) & MOTION) or bool(verbs) or (
+            m.start > 0 and _imperative(words) and all(w in ARTICLES for w in words[1 : m.start]))
 
     def _location(self, words: list[str], mentions: list[Mention], idx: int, negated: bool) -> list[Fact]:
         m = mentions[idx]
@@ -521,26 +727,34 @@ class _Reader:
             return []  # the last item of a list carries the location
         k = m.end
         skipped: list[str] = []
-        while k < len(words) and (words[k] in DESCRIPTIVE | MOTION | NEGATIONS | PARTS
+        while k < len(words) and (words[k] in DESCRIPTIVE | MOTION | NEGATIONS | PARTS | PARTICLES
                                   | {"top", "of", "straight", "that", "which"}) and words[k] not in PREP_ON | PREP_IN:
             skipped.append(words[k])
             k += 1
-        if k >= len(words) or words[k] not in PREP_ON | PREP_IN | {"from"} or (
+            if skipped[-1] == "of" and k < len(words) and words[k].isalpha() and words[k] not in PREP_ON | PREP_IN \
+                    and not any(x.start == k for x in mentions):
+                k += 1  # "a tin of food in the basket", "a bar of soap in the tub"
+        if k >= len(words) or words[k] not in PREP_ON | PREP_IN | {"from", "to"} or (
                 skipped and skipped[-1] in ("switched", "turned")):  # "switched on" is not a place
             return []
+        if words[k] == "to" and not self._is_goal(words, m, skipped):
+            return []  # "to" names a place only where something is moved: "returned to the armchair"
         if words[k] == "from" and (skipped or m.kind != "role" or set(words[max(0, m.start - 4) : m.start]) & SOURCE_VERBS):
             return []  # "fill it from the bag" names a source, not where the object is
         # "the wipes from the table": where the object is now, whatever verb precedes it
         goal = words[k] != "from" and (self._is_goal(words, m, skipped) or (
             words[k] in ("into", "onto") and not set(skipped) & SITUATION_PARTICIPLES))
         article = words[m.start - 1] if m.start > 0 else ""
+        # where a thing is kept or lives is a norm `_settle_stated` weighs against the rest of
+        # the text
+        definite = article in DEFINITE and not set(skipped) & HOMES
         described = bool(set(skipped) & SITUATION_PARTICIPLES) or (
             not skipped and (article in INDEFINITE or article not in ARTICLES)) or (
             skipped[:1] in (["that"], ["which"]) and article in INDEFINITE)  # "any toy that is on the floor"
         modifier = not goal and described
         subjects = self._subjects(words, mentions, idx)
         out: list[Fact] = []
-        while k < len(words) and words[k] in PREP_ON | PREP_IN | {"from"}:
+        while k < len(words) and words[k] in PREP_ON | PREP_IN | {"from", "to"}:
             prep = words[k]
             if prep == "on" and words[k + 1 : k + 3] == ["top", "of"]:
                 k += 2
@@ -555,12 +769,12 @@ class _Reader:
                         continue
                     if target.kind == "room":
                         cond = f"in_room({s}, {t})"
-                    elif prep in PREP_ON or t == "floor" or (prep == "from" and t not in self.lex.containers):
+                    elif prep in PREP_ON or t == "floor" or (prep in ("from", "to") and t not in self.lex.containers):
                         cond = f"on({s}, {t})"
                     else:
                         cond = f"inside({s}, {t})"
                     out.append(Fact(s, cond, "location", t, negated=negated and not goal, goal=goal,
-                                    modifier=modifier))
+                                    modifier=modifier, definite=definite))
             k = target.end
             while k < len(words) and words[k] in {"or", "and", "either", "the", "a"}:
                 k += 1
@@ -591,6 +805,8 @@ class _Reader:
             if w in ("on", "off") and k + 1 < len(words) and words[k + 1] in ARTICLES | PRONOUNS | {"floor"} \
                     and not (skipped and skipped[-1] in ("switched", "turned")):
                 break  # `on the table` is a place, not `switched on`
+            if w == "used":
+                break  # "the cloth is used": the passive of "use"; only "a used cloth" is dirty
             found.append((w, local_neg, relative))
             k += 1
             j = k
@@ -681,6 +897,8 @@ class _Reader:
         return found
 
 
+#: words of an "already" clause that say nothing of a place or a state
+ALREADY_FILLER = frozenset({"already", "is", "are", "be", "was", "were", "been", "not", "still", "yet"})
 _RANK = {"exists": 0, "location": 1, "state": 2, "attr": 3}
 #: words that end a predicate adjective: "one that is not ripe yet belongs in the bowl"
 _AFTER_PREDICATE = frozenset({"yet", "enough", "anymore", "already", "now", "and", "or", "but"}) | MOTION
@@ -742,19 +960,156 @@ def _copy(a: TaskAnalysis) -> TaskAnalysis:
     )
 
 
+#: the words of a condition that only points back ("if so", "if it has", "should that be the
+#: case", "when that happens", "if they are"): its content is the clause before it
+ANAPHORIC = frozenset({"so", "that", "this", "it", "they", "them", "is", "are", "was", "were", "has",
+                       "have", "had", "do", "does", "did", "be", "been", "being", "the", "case",
+                       "happen", "happens", "happened", "true", "indeed", "still", "again", "really"})
+
+
+#: people who act: a condition about what they do ("when you put it away") is no situation
+AGENTS = frozenset({"you", "we", "i"})
+#: adverbs of a norm ("Normally a fresh diaper is lying on the changing table"): a statement
+#: with one says how things should be, not what the situation is
+NORMS = frozenset({"normally", "usually", "generally", "ordinarily", "typically"})
+
+
+def _norm(clause: Clause) -> bool:
+    return bool({w for w, _, _ in tokens(clause.text)} & NORMS)
+
+
+def _anaphoric(text: str, facts: list[Fact]) -> bool:
+    """A condition with no fact of its own whose words only point back ("if it is not" too)."""
+    return not any(not f.goal for f in facts) and all(
+        w in ANAPHORIC | {"not"} for w, _, _ in tokens(expand(text)))
+
+
+def _antecedent(clauses: list[Clause], sentence: int, pointing: set[int]) -> tuple[list[Fact], tuple[str, ...]]:
+    """What an anaphoric condition points back to: the situation described by the nearest clause
+    of this or the previous sentence that describes one ("Someone keeps leaving the fan running;
+    if so, ..."). That clause is then no instruction of its own: it is relabelled a statement."""
+    reach = sentence - 1
+    for j in range(len(clauses) - 1, -1, -1):
+        cl = clauses[j]
+        if cl.sentence < reach:
+            break
+        if j in pointing:  # "If it isn't, fine. If it is, ...": both point to the same clause
+            reach = min(reach, cl.sentence - 1)
+            continue
+        said = [replace(f, modifier=False, definite=False) for f in cl.facts if not f.goal]
+        if said:
+            if cl.role == "consequence":
+                clauses[j] = replace(cl, role="statement", cue=None)
+            return said, tuple(dict.fromkeys(f.subject for f in said))
+    return [], ()
+
+
+_DASH = re.compile(r"\s+[-\u2013]\s+")
+
+
+def _goes(reader: _Reader, text: str) -> bool:
+    """An instruction that is only a place ("on the shoe rack", "back into the hamper"): where
+    the thing spoken of goes."""
+    toks = tokens(expand(text))
+    words = [w for w, _, _ in toks]
+    lead = 1 if words[:1] == ["back"] else 0
+    return len(words) > lead and words[lead] in PLACE_PREPS - {"from", "by", "near"} and reader.topic_kind == "role" \
+        and bool(reader.topic) and not any(m.kind == "role" and not _placed(words, m)
+                                           for m in reader.lex.find_mentions(toks))
+
+
+def _place_heading(reader: _Reader, text: str) -> bool:
+    """The heading is a place where things lie and nothing else ("On the floor", "On the table";
+    a room, "In the kitchen:", only says where the instructions happen)."""
+    toks = tokens(expand(text))
+    mentions = reader.lex.find_mentions(toks)
+    return bool(toks) and toks[0][0] in PLACE_PREPS and any(m.kind in ("role", "floor") for m in mentions) and not any(
+        m.kind == "room" or m.kind == "role" and not _placed([w for w, _, _ in toks], m) for m in mentions)
+
+
+def _read_heading(reader: _Reader, text: str) -> tuple[list[Fact], tuple[str, ...]]:
+    """A heading's facts. A heading without its own subject is said of the object spoken of
+    ("Shoes - wet:", "Keys - on the floor or on the console table:"): it reads as `it is ...`."""
+    toks = tokens(expand(text))
+    words = [w for w, _, _ in toks]
+    subject = any(m.kind == "role" and not _placed(words, m) for m in reader.lex.find_mentions(toks))
+    if subject or not (reader.heading_topic or reader.topic):
+        facts, names = reader.facts(text)
+        reader.heading_topic = names[:1] or reader.heading_topic
+        return facts, names
+    # "Bath towel on the floor? Wet: into the basket. Dry: ...": said of the last heading's
+    # object, whatever the instructions between named
+    reader.topic, reader.topic_kind = reader.heading_topic or reader.topic, "role"
+    return reader.facts("it is " + text)
+
+
+#: state flags only some kinds of thing take (a shirt does not open, a towel is not switched on),
+#: with the catalog capability that allows each
+FITTED_BY = {"open": "openable", "toggled_on": "toggleable"}
+FITTED = frozenset(FITTED_BY)
+
+
+def _capabilities(brief: Mapping[str, Any], catalog: Catalog) -> dict[str, frozenset[str]]:
+    """Role -> the `FITTED` flags its category takes (roles of unknown categories are left out)."""
+    out: dict[str, frozenset[str]] = {}
+    for name, role in dict(brief.get("roles") or {}).items():
+        cat = catalog.get(str(role.get("category", "")))
+        if cat is not None:
+            out[name] = frozenset(flag for flag, attr in FITTED_BY.items() if getattr(cat, attr))
+    return out
+
+
 def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     lex = Lexicon.build(brief, catalog)
-    reader = _Reader(lex)
+    reader = _Reader(lex, _capabilities(brief, catalog))
     sentences = split_sentences(str(brief["description"]))
     clauses: list[Clause] = []
     grammatical = 0  # pieces split at ':' or ';' still belong to one sentence for grouping
+    headed = -1  # the sentence whose heading ("Shirt on the floor:") the pieces after it answer
+    named = -1  # the sentence whose heading named an object ("Keys - on the floor: ...")
+    place: tuple[int, str] = (-1, "")  # a place heading ("On the floor: ...") and its sentence
+    pointing: set[int] = set()  # clauses that point back ("if it isn't"): never an antecedent
     for si, sent in enumerate(sentences):
         for text, cue, role in _subsplit(_split_clauses(_apposition(sent))):
+            if role == "heading":
+                if _place_heading(reader, text) and named != grammatical:
+                    # "On the floor: a dirty mark, and possibly a book": the place of what follows
+                    place = (grammatical, text)
+                    clauses.append(Clause(text, grammatical, cue, "statement", (), ()))
+                    continue
+                facts, names = _read_heading(reader, text)
+                role = "condition" if any(not f.goal and not f.derived for f in facts) else "statement"
+                headed = grammatical if role == "condition" else headed
+                named = grammatical if names else named
+                clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
+                continue
+            if role in ("statement", "scene") and headed == grammatical:
+                role = "consequence"
             # "should there be an umbrella: ..." - the cue itself says the object may be absent
             # "if we still have one (it lives in the vanity - ...)": a closing aside says where the
             # object is kept (offline.placement), it asks nothing
             said = _ASIDE.sub("", text) if role == "condition" and _ASIDE.sub("", text).strip() else text
+            if role == "condition" and _DASH.split(said)[0].strip():
+                said = _DASH.split(said)[0]  # "if one is still to be had - it is kept in the vanity"
+            if role == "condition" and ")" in said and "(" not in said.split(")")[0]:
+                said = said.split(")")[0]  # "(open the wardrobe if the door's shut) and shut it": the aside ends
+            if role == "consequence" and _goes(reader, said):
+                said = f"it goes {said}"  # "dry: on the shoe rack", "clean - onto the armchair"
+            if place[0] == grammatical:
+                said = f"{said.rstrip(' .;,')} {place[1]}"
+                role = "scene" if role == "statement" else role
             facts, names = reader.facts("there is " + said if cue == "should there be" else said)
+            if role == "condition" and _anaphoric(said, facts):
+                facts, names = _antecedent(clauses, grammatical, pointing)
+                pointing.add(len(clauses))
+                if "not" in {w for w, _, _ in tokens(expand(said))}:
+                    # "the drawer might already be open, and if it isn't, open it": the opposite
+                    facts = [replace(f, negated=not f.negated) for f in facts]
+            elif role == "condition" and facts and all(f.goal for f in facts) and not set(
+                    w for w, _, _ in tokens(said)) & AGENTS:
+                # "if it has been thrown on the floor", "whenever the jacket ends up on the
+                # floor": in a condition a moved object's place is the situation, not a goal
+                facts = [replace(f, goal=False) for f in facts]
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
         if sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences):
             grammatical += 1
@@ -773,7 +1128,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     carried: list[tuple[tuple[str, str, str], bool, str]] = []
     for ci, cl in enumerate(clauses):
         if cl.sentence != current_sentence:
-            carried = context if cl.role in ("statement", "consequence") else []
+            # ... unless it speaks of a situation of its own ("Finally, a dirty mirror is cleaned:")
+            carried = context if cl.role in ("statement", "consequence") and not any(
+                not f.goal and not f.derived for f in cl.facts) else []
             current_sentence, context = cl.sentence, []
         elif (cl.role == "condition" and ci >= 2 and clauses[ci - 1].role == "consequence"
               and clauses[ci - 2].role == "condition" and clauses[ci - 2].sentence == cl.sentence
@@ -804,7 +1161,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         for f in cl.facts:
             if f.derived and (f.subject, f.key) not in contrasted:
                 continue
-            if f.goal or not (conditional or (f.modifier and cl.role not in ("scene",))
+            if f.goal or not (conditional or (f.modifier and cl.role not in ("scene",)
+                                              # "The tablet is lying on the chair.": stated, kept
+                                              and not ((f.definite or _norm(cl)) and cl.role == "statement"))
                               or (cl.role == "else" and f.kind != "location")):
                 continue
             slot = (f.subject, f.kind, f.key if f.kind in ("state", "attr") else "")
@@ -816,7 +1175,14 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             entry.setdefault("places", set()).add((cl.sentence, ci))
             if cl.role == "condition":
                 value = f.condition.rsplit(", ", 1)[1][:-1] if f.kind == "attr" else f.key
-                added.append((slot, f.negated, value))
+                # "unless it is already in the box, put it in: open the box first if ...": what
+                # follows a leading "unless" happens when its condition does not hold (a trailing
+                # one, "the pillow, unless there is a pan - in that case ...", ends its instruction)
+                leading = ci == 0 or clauses[ci - 1].sentence != cl.sentence or clauses[ci - 1].role != "consequence"
+                added.append((slot, f.negated != (cl.cue == "unless" and leading), value))
+            if f.kind == "location" and cl.role == "condition" and (
+                    cl.cue == "unless" or re.search(r"\balready\b", cl.text.lower()) is not None):
+                entry["reached"] = True  # where the instruction puts it: see `Factor.stops`
             if f.kind == "location" and f.key not in entry["targets"]:
                 entry["targets"].append(f.key)
                 entry.setdefault("conds", {})[f.key] = f.condition
@@ -879,9 +1245,12 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                         set(e.get("roles", set())))
         factor.raw_context = e.get("context", [])
         factor.places = set(e.get("places", set()))
+        factor.stops = not e.get("reached", False)
         slot_factor[(subject, kind, key)] = factor
         factors.append(factor)
-    factors = _settle_stated(factors, brief, catalog, slot_factor)
+    homes = {f.condition for cl in clauses if cl.role == "statement" and {w for w, _, _ in tokens(cl.text)} & HOMES
+             for f in cl.facts if f.kind == "location" and not f.goal}
+    factors = _settle_stated(factors, brief, catalog, slot_factor, homes)
     for factor in factors:
         for slot_c, negated, value in factor.raw_context:
             dep = slot_factor.get(slot_c)
@@ -894,18 +1263,20 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
 
 
 def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Catalog,
-                   slot_factor: dict[tuple[str, str, str], Factor]) -> list[Factor]:
+                   slot_factor: dict[tuple[str, str, str], Factor], homes: set[str]) -> list[Factor]:
     """A placement the description states (`offline.placement`: "a coffee table with a mug on it", "a
     kitchen with a stove") is no uncertain location: its yes/no factor is dropped. So is where an
     object is kept ("it's kept in the vanity, unless someone stuffed it into the medicine
-    cabinet"), and a factor listing the places it may be has no "elsewhere" — unless the text
-    speaks of one ("wherever else it may be lying")."""
+    cabinet"): a factor listing the places it may be asks about the others (`_drop_home`) —
+    unless the text speaks of somewhere else ("wherever else it may be lying")."""
 
     low = " ".join(w for w, _, _ in tokens(expand(str(brief.get("description", "")))))
     elsewhere = any(re.search(rf"\b{cue}\b", low) for cue in ELSEWHERE + ("wherever",))
     settled = set(described_placements(brief, catalog, kinds=frozenset({"settled"} | (
         set() if elsewhere else {"kept"}))))
-    kept = set(described_placements(brief, catalog, kinds=frozenset({"kept"})))
+    # where the placement reader or this reader ("The shampoo and the soap are kept in the wall
+    # cabinet") finds a thing kept
+    kept = set(described_placements(brief, catalog, kinds=frozenset({"kept"}))) | homes
     # an object the text places outright ("On the floor: a dirty mark") is nowhere else in question
     placed = {f.split("(", 1)[1].split(",", 1)[0] for f in described_placements(
         brief, catalog, kinds=frozenset({"settled"})) if f.startswith(("on(", "inside("))}
@@ -918,15 +1289,25 @@ def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Cat
                     del slot_factor[slot]
             continue
         if f.kind == "location" and "elsewhere" in f.values and kept & values and not elsewhere:
-            f.values.pop("elsewhere")
-            # the home takes the "elsewhere" cases, so the responses still cover every case
-            home = next(k for k, v in f.values.items() if v in kept)
-            others = [v for k, v in f.values.items() if k != home]
-            if others:
-                f.values[home] = " and ".join(f"not ({v})" if " " in v.split("(", 1)[0] else f"not {v}"
-                                              for v in others)
+            _drop_home(f, kept)
         out.append(f)
     return out
+
+
+def _drop_home(f: Factor, kept: set[str]) -> None:
+    """Where a thing is kept is its norm, not what is uncertain about it ("The soap is kept in
+    the wall cabinet. There may be a bar of soap in the tub"): the factor asks about the other
+    places, and stays exhaustive (a yes/no for one place, else the places and "elsewhere")."""
+    rest = {k: v for k, v in f.values.items() if k != "elsewhere" and v not in kept}
+    if not rest:
+        return
+    if len(rest) == 1:
+        ((target, cond),) = rest.items()
+        f.values = {"yes": cond, "no": f"not {cond}"}
+        f.id = f"{f.subject}_{cond.split('(')[0]}_{target}"
+    else:
+        f.values = {**rest, "elsewhere": " and ".join(f"not {c}" for c in rest.values())}
+    f.question = _question(f.subject, "location", "", list(rest))
 
 
 def _contrasted(clauses: list[Clause], text: str) -> set[tuple[str, str]]:
@@ -1004,7 +1385,7 @@ def nest(factors: list[Factor]) -> dict[str, Any]:
         f = ordered[i]
         branches = {}
         for value in f.values:
-            stop = f.kind in ("location", "exists") and value in ("no", "elsewhere")
+            stop = f.kind in ("location", "exists") and value in ("no", "elsewhere") and f.stops
             branches[value] = build(i + 1, skipped | {f.subject} if stop else skipped, {**path, f.id: value})
             if not f.consequences:
                 continue

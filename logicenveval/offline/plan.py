@@ -6,6 +6,7 @@ independent (as with a real LLM) and nothing but the payload is read.
 
 from __future__ import annotations
 
+import re
 from typing import Any
 
 from logicenveval.llm.base import ChatRequest
@@ -22,6 +23,11 @@ def _analysis(payload: dict[str, Any]) -> TaskAnalysis:
     return analyse(payload["task"])
 
 
+def _gist(text: str) -> str:
+    """A description's words, as the reply check compares them (punctuation and case aside)."""
+    return " ".join(re.findall(r"[a-z0-9]+", text.lower()))
+
+
 def _subtask_id(index: int, subject: str) -> str:
     return f"handle_{subject}" if index == 0 else f"handle_{subject}_{index}"
 
@@ -31,12 +37,19 @@ def decompose(payload: dict[str, Any], request: ChatRequest) -> dict[str, Any]:
     a = _analysis(payload)
     by_id = {f.id: f for f in a.factors}
     subtasks = []
+    said: set[str] = set()
     for group, roles in zip(a.groups, a.group_roles, strict=True):
         subject = by_id[group[0]].subject
         clauses = [c for f in group for c in by_id[f].consequences]
+        description = clauses[0].strip() if clauses else ""
+        if not description or _gist(description) in said:
+            # "Bottle empty: into the recycling bin. Newspaper: into the recycling bin.": one
+            # instruction for two objects, each subtask says which it deals with
+            description = f"deal with the {subject.replace('_', ' ')}" + (f": {description}" if description else "")
+        said.add(_gist(description))
         subtasks.append({
             "id": _subtask_id(0, subject),
-            "description": clauses[0] if clauses else f"deal with the {subject.replace('_', ' ')}",
+            "description": description,
             "roles": [subject] + sorted(roles - {subject}),
         })
     if not subtasks:  # an unconditional task: one subtask doing everything

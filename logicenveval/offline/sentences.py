@@ -23,6 +23,9 @@ STATE_WORDS: dict[str, tuple[str, bool]] = {
     "ringing": ("toggled_on", True), "beeping": ("toggled_on", True), "playing": ("toggled_on", True),
     "silent": ("toggled_on", False), "stopped": ("toggled_on", False), "idle": ("toggled_on", False),
     "broken": ("broken", True), "cracked": ("broken", True),
+    "spinning": ("toggled_on", True), "whirring": ("toggled_on", True), "unlit": ("toggled_on", False),
+    "grubby": ("dirty", True), "filthy": ("dirty", True), "soiled": ("dirty", True),
+    "grimy": ("dirty", True), "smudged": ("dirty", True), "mucky": ("dirty", True),
 }
 #: action verbs before an object: a location after the object is a goal
 ACTIONS = frozenset(
@@ -32,8 +35,15 @@ ACTIONS = frozenset(
 PREP_ON = frozenset({"on", "onto", "atop", "upon"})
 PREP_IN = frozenset({"in", "inside", "into", "within"})
 
+#: words after a noun's "'s" that make it the verb, not a possessive: "the door's shut", "the
+#: pillow's been moved", "the dishwasher's already on" (but "the cat's ball")
+_HAS_AFTER = ("been", "got", "gotten")
+_IS_AFTER = tuple(STATE_WORDS) + ("already", "still", "not", "probably", "just", "now", "in", "on", "under",
+                                  "lying", "sitting", "left", "gone", "missing", "there", "here")
 _CONTRACTIONS = [
-    (r"\b(it|that|there|what|he|she)'s\b", r"\1 is"), (r"\b(they|we|you)'re\b", r"\1 are"),
+    (r"\b(it|that|there|what|where|who|how|here|he|she)'s\b", r"\1 is"), (r"\b(they|we|you)'re\b", r"\1 are"),
+    (rf"\b(\w+)'s(?=\s+(?:{'|'.join(_HAS_AFTER)})\b)", r"\1 has"),
+    (rf"\b(\w+)'s(?=\s+(?:{'|'.join(_IS_AFTER)})\b)", r"\1 is"),
     (r"\bcan't\b", "can not"), (r"\bwon't\b", "will not"), (r"n't\b", " not"),
     (r"\b(i|you|we|they)'ve\b", r"\1 have"), (r"\b(i|you|we|they|it)'ll\b", r"\1 will"),
     (r"\b(\w+)s'(\s)", r"\1s\2"), (r"\b(\w+)'s\b", r"\1"),
