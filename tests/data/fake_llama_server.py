@@ -3,7 +3,7 @@
 
 Accepts llama-server's command line, listens on 127.0.0.1:--port, answers GET /health, GET
 /v1/models (its `--alias` as the model id, as llama-server does) and POST /v1/chat/completions with the text in $FAKE_LLAMA_REPLY (default `{}`), and writes its pid to
-$FAKE_LLAMA_PIDFILE (and a line per start to $FAKE_LLAMA_STARTS). $FAKE_LLAMA_EXIT=1 makes it exit at once (a server that cannot load);
+$FAKE_LLAMA_PIDFILE (and a line per start to $FAKE_LLAMA_STARTS). $FAKE_LLAMA_EXIT=1 makes it exit at once (a server that cannot load), =SIGILL die of SIGILL;
 $FAKE_LLAMA_DELAY=S makes each completion take S seconds; $FAKE_LLAMA_POSTS names a file that
 gets a line per completion request when it arrives (a test can wait until a unit is asking).
 """
@@ -11,6 +11,7 @@ gets a line per completion request when it arrives (a test can wait until a unit
 import argparse
 import json
 import os
+import signal
 import sys
 import time
 from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
@@ -19,6 +20,8 @@ parser = argparse.ArgumentParser()
 parser.add_argument("--port", type=int, required=True)
 parser.add_argument("--alias", default="")
 args, _ = parser.parse_known_args()
+if os.environ.get("FAKE_LLAMA_EXIT") == "SIGILL":  # a build for instructions this CPU refuses
+    os.kill(os.getpid(), signal.SIGILL)
 if os.environ.get("FAKE_LLAMA_EXIT"):
     print("error: failed to load model", file=sys.stderr)
     sys.exit(1)
