@@ -14,7 +14,7 @@ from logicenveval.domain.catalog import load_catalog
 from logicenveval.model.conditions import Pred, parse
 from logicenveval.offline.analysis import analyse
 from logicenveval.offline.placement import described_placements
-from logicenveval.offline.realise import realise
+from logicenveval.offline.realise import realise, task_objects
 from logicenveval.offline.scene_answers import misfits
 
 CATALOG = load_catalog()
@@ -112,6 +112,38 @@ def test_the_realiser_follows_the_description_unless_the_situation_places_the_ob
     assert lamp.placement == "on:nightstand"
     towel = realise(_task_brief("bathroom_counter_sort"), ["inside(old_towel, medicine_cabinet)"], CATALOG)
     assert towel["old_towel"].placement == "inside:medicine_cabinet"
+
+
+def test_the_realiser_keeps_a_stated_floor_placement() -> None:
+    """"My handbag is on the floor by the door", "The cardboard box is on the floor next to the
+    stool": the floor is no role, yet the text says where the thing is; without a situation fact
+    on it, the realiser puts it there (not on the first surface of the room)."""
+    bag = _brief("Two coat hooks hang by the door. My handbag is on the floor by the door.",
+                 ["entryway"], hook="coat_hook", handbag="handbag")
+    assert realise(bag, [], CATALOG)["handbag"].placement == "floor"
+    box = _brief("The cardboard box is on the floor next to the stool.", ["garage"],
+                 stool="stool", box="cardboard_box")
+    assert realise(box, [], CATALOG)["box"].placement == "floor"
+    assert realise(box, ["not on(box, floor)"], CATALOG)["box"].placement != "floor"
+
+
+def test_an_item_ruled_off_a_crowded_side_table_gets_another() -> None:
+    """Items that must be off the floor in a room with no surface among the roles go on an added
+    side table; one the layout found too crowded for it (`not on(x, side_table_<room>_1)`) goes on
+    a second, so that the feedback loop can converge (the jacket and hat of an entryway, two
+    books of a hallway)."""
+    brief = _brief("Hang the jacket and the hat.", ["entryway"], jacket="jacket", hat="hat")
+    facts = ["not on(jacket, floor)", "not on(hat, floor)"]
+    first = {o["id"]: o["placement"] for o in task_objects(brief, facts, CATALOG)}
+    assert first["jacket"] == first["hat"] == "on:side_table_entryway_1"
+    again = {o["id"]: o["placement"] for o in
+             task_objects(brief, [*facts, "not on(hat, side_table_entryway_1)"], CATALOG)}
+    assert again["hat"] == "on:side_table_entryway_2" and "side_table_entryway_2" in again
+    books = _brief("Tidy the hallway.", ["hallway"], book="book", magazine="magazine")
+    placed = {o["id"]: o["placement"] for o in task_objects(
+        books, ["not on(book, floor)", "not on(magazine, floor)", "not on(magazine, side_table_hallway_1)"],
+        CATALOG)}
+    assert placed["magazine"] == "on:side_table_hallway_2"
 
 
 def test_a_stated_placement_is_no_uncertain_factor() -> None:
