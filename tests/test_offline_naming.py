@@ -209,3 +209,31 @@ def test_levels_are_shelves_of_the_rooms_kind_even_when_the_furniture_is_not_nam
 ])
 def test_british_and_american_words_are_the_catalogs_synonyms(word: str, category: str) -> None:
     assert [c for c, _ in _named(f"Please put the {word} back.").values()] == [category]
+
+
+@pytest.mark.parametrize(("text", "roles", "phrase", "meant"), [
+    # "fresh" in a text that opens with it is the one in use; "a spare" is the spare
+    ("Normally a fresh diaper is lying on the changing table; if there isn't one, fetch a spare.",
+     {"diaper": "diaper", "spare_diaper": "diaper"}, "fresh diaper", "diaper"),
+    ("A fresh towel hangs on the rail; if it is gone, take a spare towel from the cupboard.",
+     {"towel": "towel", "spare_towel": "towel"}, "spare towel", "spare_towel"),
+    ("A fresh towel hangs on the rail; if it is gone, take a spare towel from the cupboard.",
+     {"towel": "towel", "spare_towel": "towel"}, "fresh towel", "towel"),
+    # "fresh" after the kind was named in use is the spare
+    ("If the can is full, take the full bag out and put a fresh bag in.",
+     {"trash_bag": "trash_bag", "spare_bag": "trash_bag"}, "fresh bag", "spare_bag"),
+    ("Swap the empty roll for a new roll.", {"toilet_paper": "toilet_paper", "spare_roll": "toilet_paper"},
+     "new roll", "spare_roll"),
+])
+def test_fresh_and_spare_tell_the_spare_from_the_one_in_use(text: str, roles: dict[str, str], phrase: str,
+                                                             meant: str) -> None:
+    """The lexicon (`FRESH_WORDS`, as the naming step reads them): a mention after "spare" is the
+    spare role; after "fresh"/"new", the spare where the kind was first named without it, else the
+    one in use; other mentions stay ambiguous (resolved by recency)."""
+    lex = Lexicon.build({"description": text, "roles": {n: {"category": c} for n, c in roles.items()},
+                         "rooms": ["bathroom"]}, load_catalog())
+    toks = tokens(text)
+    words = [w for w, _, _ in toks]
+    at = next(k for k in range(len(words)) if tuple(words[k:k + 2]) == tuple(singular(w) for w in phrase.split()))
+    mention = next(m for m in lex.find_mentions(toks) if m.start <= at + 1 < m.end)
+    assert mention.roles == (meant,)
