@@ -237,3 +237,22 @@ def test_fresh_and_spare_tell_the_spare_from_the_one_in_use(text: str, roles: di
     at = next(k for k in range(len(words)) if tuple(words[k:k + 2]) == tuple(singular(w) for w in phrase.split()))
     mention = next(m for m in lex.find_mentions(toks) if m.start <= at + 1 < m.end)
     assert mention.roles == (meant,)
+
+
+@pytest.mark.parametrize(("text", "named", "not_named"), [
+    ("If there's a toy on the floor, it goes in a toy box depending on what it is: dolls in the red toy "
+     "box, toy cars in the blue box, and everything else in the green box.", {"toy"}, {"doll", "toy_car"}),
+    ("There is a toy on the rug. Balls go in the basket, dolls on the shelf.", {"toy", "basket"},
+     {"ball", "doll"}),
+    ("A book may lie on the bed: novels go on the shelf, magazines in the basket.", {"book"},
+     {"novel", "magazine"}),
+])
+def test_a_bare_plural_of_a_named_things_kind_is_a_class_not_an_object(text: str, named: set[str],
+                                                                        not_named: set[str]) -> None:
+    """A bare plural that is a value of the `kind` attribute of a thing named before it ("a toy
+    ... dolls in the red box, toy cars in the blue box") sorts that thing; a doll or a toy car named
+    with a determiner is still an object."""
+    names = {o["name"] for o in name_objects(text, load_catalog(), ["kids_room"])}
+    assert named <= names and not names & not_named, names
+    assert {"doll", "toy_car"} <= {o["name"] for o in name_objects(
+        "A doll and a toy car lie on the floor next to a toy.", load_catalog(), ["kids_room"])}
