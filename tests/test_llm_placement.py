@@ -265,3 +265,21 @@ def test_described_placements_are_remembered_per_brief_and_kinds(monkeypatch: py
     assert len(readings) == 3
     copy = CATALOG.model_copy(deep=True)  # another catalog object: read again
     assert described_placements(brief, copy) == fresh and len(readings) == 4
+
+
+@pytest.mark.parametrize(("description", "roles", "factor"), [
+    ("Document on the desk? A bill goes into the filing cabinet; any other document goes on the bookshelf.",
+     {"desk": "desk", "document": "document", "filing_cabinet": "filing_cabinet", "bookshelf": "bookshelf"},
+     {"bill": "attr(document, kind, bill)", "other": "not attr(document, kind, bill)"}),
+    ("If there is a book on the desk: a cookbook goes on the wall shelf, every other book on the bookshelf.",
+     {"desk": "desk", "book": "book", "shelf": "wall_shelf", "bookshelf": "bookshelf"},
+     {"cookbook": "attr(book, kind, cookbook)", "other": "not attr(book, kind, cookbook)"}),
+])
+def test_an_indefinite_set_against_any_other_thing_is_a_kind_of_it(description: str, roles: dict[str, str],
+                                                                   factor: dict[str, str]) -> None:
+    """"A bill goes into the filing cabinet; any other document goes on the bookshelf": the bill is
+    a kind of document (`analysis.CONTRAST`), asked like "if it is a bill"."""
+    factors = analyse(_brief(description, ["study"], **roles), CATALOG).factors
+    assert factor in [f.values for f in factors], [f.values for f in factors]
+    plain = analyse(_brief("The document on the desk goes on the bookshelf.", ["study"], **roles), CATALOG)
+    assert not [f for f in plain.factors if f.kind == "attr"]

@@ -907,9 +907,35 @@ class _Reader:
                 values = found.setdefault((role, hit[0]), [])
                 if hit[1] not in values:
                     values.append(hit[1])
+        for (role, key), value in self._contrasted_kinds(text):
+            values = found.setdefault((role, key), [])
+            if value not in values:
+                values.append(value)
         return found
 
+    def _contrasted_kinds(self, text: str) -> list[tuple[tuple[str, str], str]]:
+        """"A bill goes into the filing cabinet; any other document goes on the bookshelf", "a
+        novel belongs on the top shelf, every other book on the lower one": an indefinite noun no
+        role names, the subject of a clause, set against "other <thing>" later in its sentence, is
+        a kind of that thing (a derived `kind`, as in "it is a bill")."""
+        out: list[tuple[tuple[str, str], str]] = []
+        for sentence in re.split(r"(?<=[.!?])\s+", expand(text)):
+            toks = tokens(sentence)
+            words = [t[0] for t in toks]
+            mentions = self.lex.find_mentions(toks)
+            covered = {i for m in mentions for i in range(m.start, m.end)}
+            for m in mentions:
+                if m.kind != "role" or m.start < 1 or words[m.start - 1] not in CONTRAST:
+                    continue
+                for i in range(m.start - 3):
+                    if (words[i] in ("a", "an") and i + 1 not in covered and self._unknown(words[i + 1])
+                            and words[i + 2] in MOTION | DESCRIPTIVE):
+                        out += [((r, "kind"), words[i + 1]) for r in m.roles]
+        return out
 
+
+#: words that set a thing against the kinds named before it ("any other document")
+CONTRAST = frozenset({"other"})
 #: words of an "already" clause that say nothing of a place or a state
 ALREADY_FILLER = frozenset({"already", "is", "are", "be", "was", "were", "been", "not", "still", "yet"})
 _RANK = {"exists": 0, "location": 1, "state": 2, "attr": 3}
