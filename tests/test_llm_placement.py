@@ -14,7 +14,7 @@ from logicenveval.domain.catalog import load_catalog
 from logicenveval.model.conditions import Pred, parse
 from logicenveval.offline.analysis import analyse
 from logicenveval.offline.placement import described_placements
-from logicenveval.offline.realise import realise
+from logicenveval.offline.realise import realise, task_objects
 from logicenveval.offline.scene_answers import misfits
 
 CATALOG = load_catalog()
@@ -112,6 +112,59 @@ def test_the_realiser_follows_the_description_unless_the_situation_places_the_ob
     assert lamp.placement == "on:nightstand"
     towel = realise(_task_brief("bathroom_counter_sort"), ["inside(old_towel, medicine_cabinet)"], CATALOG)
     assert towel["old_towel"].placement == "inside:medicine_cabinet"
+
+
+def test_the_realiser_keeps_a_stated_floor_placement() -> None:
+    """"My handbag is on the floor by the door", "The cardboard box is on the floor next to the
+    stool": the floor is no role, yet the text says where the thing is; without a situation fact
+    on it, the realiser puts it there (not on the first surface of the room)."""
+    bag = _brief("Two coat hooks hang by the door. My handbag is on the floor by the door.",
+                 ["entryway"], hook="coat_hook", handbag="handbag")
+    assert realise(bag, [], CATALOG)["handbag"].placement == "floor"
+    box = _brief("The cardboard box is on the floor next to the stool.", ["garage"],
+                 stool="stool", box="cardboard_box")
+    assert realise(box, [], CATALOG)["box"].placement == "floor"
+    assert realise(box, ["not on(box, floor)"], CATALOG)["box"].placement != "floor"
+
+
+def test_an_item_ruled_off_a_crowded_side_table_gets_another() -> None:
+    """Items that must be off the floor in a room with no surface among the roles go on an added
+    side table; one the layout found too crowded for it (`not on(x, side_table_<room>_1)`) goes on
+    a second, so that the feedback loop can converge (the jacket and hat of an entryway, two
+    books of a hallway)."""
+    brief = _brief("Hang the jacket and the hat.", ["entryway"], jacket="jacket", hat="hat")
+    facts = ["not on(jacket, floor)", "not on(hat, floor)"]
+    first = {o["id"]: o["placement"] for o in task_objects(brief, facts, CATALOG)}
+    assert first["jacket"] == first["hat"] == "on:side_table_entryway_1"
+    again = {o["id"]: o["placement"] for o in
+             task_objects(brief, [*facts, "not on(hat, side_table_entryway_1)"], CATALOG)}
+    assert again["hat"] == "on:side_table_entryway_2" and "side_table_entryway_2" in again
+    books = _brief("Tidy the hallway.", ["hallway"], book="book", magazine="magazine")
+    placed = {o["id"]: o["placement"] for o in task_objects(
+        books, ["not on(book, floor)", "not on(magazine, floor)", "not on(magazine, side_table_hallway_1)"],
+        CATALOG)}
+    assert placed["magazine"] == "on:side_table_hallway_2"
+
+
+@pytest.mark.parametrize(("description", "roles", "thing"), [
+    ("If the lamp is on, fetch a book from the dresser (that's where the books are kept) and read it.",
+     {"book": "book", "dresser": "dresser", "lamp": "table_lamp"}, "book"),
+    ("Should the sink be full, grab a sponge from the cabinet - it's where the sponges are kept - and wipe "
+     "the counter.", {"sponge": "sponge", "cabinet": "cabinet", "sink": "sink", "counter": "kitchen_counter"},
+     "sponge"),
+    # development set (nursery_bedtime)
+    ("Normally a fresh diaper is lying on the changing table; if there isn't one, fetch a spare from the "
+     "dresser (that's where the spares are kept), lay it on the changing table.",
+     {"diaper": "diaper", "spare_diaper": "diaper", "changing_table": "changing_table", "dresser": "dresser"},
+     "spare_diaper"),
+])
+def test_a_thing_taken_from_where_it_is_kept_is_not_asked_on_or_in_it(description: str, roles: dict[str, str],
+                                                                       thing: str) -> None:
+    """"a book from the dresser (that's where the books are kept)": the text places the thing in
+    the holder, so "from the dresser" asks nothing, whether the reader took it as on or in (a
+    dresser and a cabinet are both a surface and a container)."""
+    factors = analyse(_brief(description, ["kitchen"], **roles), CATALOG).factors
+    assert not [f for f in factors if f.subject == thing and f.kind == "location"], factors
 
 
 def test_a_stated_placement_is_no_uncertain_factor() -> None:
@@ -212,3 +265,21 @@ def test_described_placements_are_remembered_per_brief_and_kinds(monkeypatch: py
     assert len(readings) == 3
     copy = CATALOG.model_copy(deep=True)  # another catalog object: read again
     assert described_placements(brief, copy) == fresh and len(readings) == 4
+
+
+@pytest.mark.parametrize(("description", "roles", "factor"), [
+    ("Document on the desk? A bill goes into the filing cabinet; any other document goes on the bookshelf.",
+     {"desk": "desk", "document": "document", "filing_cabinet": "filing_cabinet", "bookshelf": "bookshelf"},
+     {"bill": "attr(document, kind, bill)", "other": "not attr(document, kind, bill)"}),
+    ("If there is a book on the desk: a cookbook goes on the wall shelf, every other book on the bookshelf.",
+     {"desk": "desk", "book": "book", "shelf": "wall_shelf", "bookshelf": "bookshelf"},
+     {"cookbook": "attr(book, kind, cookbook)", "other": "not attr(book, kind, cookbook)"}),
+])
+def test_an_indefinite_set_against_any_other_thing_is_a_kind_of_it(description: str, roles: dict[str, str],
+                                                                   factor: dict[str, str]) -> None:
+    """"A bill goes into the filing cabinet; any other document goes on the bookshelf": the bill is
+    a kind of document (`analysis.CONTRAST`), asked like "if it is a bill"."""
+    factors = analyse(_brief(description, ["study"], **roles), CATALOG).factors
+    assert factor in [f.values for f in factors], [f.values for f in factors]
+    plain = analyse(_brief("The document on the desk goes on the bookshelf.", ["study"], **roles), CATALOG)
+    assert not [f for f in plain.factors if f.kind == "attr"]

@@ -198,6 +198,48 @@ def test_offline_floor_plan_sizes_rooms_for_the_objects_they_must_hold() -> None
     assert room_areas(crowded, catalog)["bathroom"] > AREA["Bathroom"]
 
 
+@pytest.mark.parametrize(("room", "roles"), [
+    # a nursery: crib, changing table and dresser against the walls, and the curtain of the task
+    ("nursery", {"crib": "crib", "changing_table": "changing_table", "dresser": "dresser",
+                 "curtain": "curtain"}),
+    # a bedroom: bed, wardrobe, dresser and desk, and a wall shelf of the task
+    ("bedroom", {"bed": "bed", "wardrobe": "wardrobe", "dresser": "dresser", "desk": "desk",
+                 "shelf": "wall_shelf"}),
+])
+def test_offline_selection_leaves_the_wall_a_hung_task_object_needs(room: str, roles: dict[str, str]) -> None:
+    """Where a task object hangs on a wall, the furniture the selection adds takes no more wall
+    than the task's own objects leave (`scene_answers._spared`): the layout can drop an added piece
+    that does not fit, but not for a wall object the floor furniture already blocks."""
+    import math
+
+    from logicenveval.llm.base import ChatRequest
+    from logicenveval.model.rooms import room_type_of
+    from logicenveval.offline.scene_answers import (
+        WALL_PER_WIDTH,
+        _needs,
+        room_areas,
+        select_objects,
+    )
+
+    catalog = load_catalog()
+    task = {"id": "t", "description": "", "rooms": [room], "roles": {n: {"category": c} for n, c in roles.items()}}
+    area = room_areas(task, catalog)[room]
+    _, _, taken = _needs(task, catalog)
+    spare = 4 * math.sqrt(area) - taken[room]
+    for seed in range(6):
+        payload = {"task": task, "facts": [], "rooms": [{"id": room, "type": room_type_of(room), "area_m2": area}]}
+        added = [o for o in select_objects(payload, ChatRequest("select_objects", payload, [], None, seed=seed))["objects"]
+                 if o["role"] is None]
+        used = sum(catalog.categories[o["category"]].size_max[0]
+                   * (WALL_PER_WIDTH if o["placement"] == "wall" else 1.0) for o in added)
+        assert used <= spare + 1e-9, (seed, [o["category"] for o in added], spare)
+    # with nothing hung on a wall, the selection adds its typical furniture as before
+    bare = {**task, "roles": {n: r for n, r in task["roles"].items() if catalog.categories[r["category"]].placement[0] != "wall"}}
+    payload = {"task": bare, "facts": [], "rooms": [{"id": room, "type": room_type_of(room), "area_m2": area}]}
+    assert len([o for o in select_objects(payload, ChatRequest("select_objects", payload, [], None, seed=0))["objects"]
+                if o["role"] is None]) >= 2
+
+
 def test_st_times_an_episode_only_after_its_warm_up(monkeypatch: pytest.MonkeyPatch) -> None:
     """The timed (untraced) run of each policy follows a traced run of the same episode in the
     same process, which pays for tree building and caches (issue 34: a unit's first episode

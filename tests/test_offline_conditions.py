@@ -83,6 +83,30 @@ def asked(description: str, *roles: str) -> set[str]:
 # ----- a condition that points back ("if so", "should that be the case", "when that happens") ---
 
 @pytest.mark.parametrize(("text", "roles", "condition"), [
+    ("My ball keeps ending up on the floor. Put it in the toy chest.", ("ball", "toy_box"), "on(ball, floor)"),
+    ("The jacket tends to end up on the floor; if so, hang it on the hook.", ("jacket", "coat_hook"),
+     "on(jacket, floor)"),
+    ("The shoes are often lying on the floor. Put them on the shoe rack.", ("shoe", "shoe_rack"),
+     "on(shoe, floor)"),
+    ("The blanket usually gets left on the sofa. When that happens, fold it onto the armchair.",
+     ("blanket", "sofa", "armchair"), "on(blanket, sofa)"),
+])
+def test_a_habit_is_what_may_be_so_not_a_fact_of_the_scene(text: str, roles: tuple[str, ...],
+                                                           condition: str) -> None:
+    """"keeps ending up", "tends to", "often", "usually gets left" (`sentences.habitual`): the
+    place is asked, never settled (the placement reader places nothing from a habit)."""
+    values = factors(text, *roles)
+    assert any({condition, f"not {condition}"} <= v for v in values.values()), values
+
+
+def test_a_norm_is_still_a_fact_not_a_habit() -> None:
+    """"Normally ... is lying on", "usually lives in": a norm with a verb of being or a home asks
+    nothing (only a norm adverb with a verb of an event is a habit)."""
+    assert not factors("Normally a fresh diaper is lying on the changing table.", "diaper", "changing_table")
+    assert not factors("The ball usually lives in the toy chest.", "ball", "toy_box")
+
+
+@pytest.mark.parametrize(("text", "roles", "condition"), [
     ("Someone keeps leaving the fan running; if so, turn it off.", ("ceiling_fan",),
      "state(ceiling_fan, toggled_on)"),
     ("The heater has probably been left on again. If that's the case, switch it off.", ("heater",),
@@ -107,7 +131,8 @@ def test_an_anaphoric_condition_takes_the_clause_it_points_back_to(text: str, ro
 
 def test_the_clause_pointed_back_to_is_no_instruction_of_its_own() -> None:
     a = analyse(brief("Someone keeps leaving the fan running; if so, turn it off.", "ceiling_fan"), CATALOG)
-    assert [c.role for c in a.clauses] == ["statement", "condition", "consequence"]
+    # the habit is an uncertain remark (`sentences.habitual`), not an instruction
+    assert [c.role for c in a.clauses] == ["uncertain", "condition", "consequence"]
     assert a.factors[0].consequences == ["turn it off."]
 
 

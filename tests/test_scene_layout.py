@@ -322,3 +322,24 @@ def test_things_put_on_a_seat_rest_on_its_seat_in_front_of_its_back(solver: Solv
         for x, z in corners:  # every corner over the seat, in front of the back strip
             ahead = (x - s.position[0]) * front[0] + (z - s.position[2]) * front[1]
             assert ahead >= (back - 0.5) * s.size[2] - 1e-6
+
+
+@pytest.mark.parametrize("solver", SOLVERS)
+def test_an_added_wall_object_with_no_free_wall_is_dropped_a_task_one_raises(solver: Solver) -> None:
+    """A small bedroom whose walls the bed, wardrobe and dresser take: a curtain the selection added
+    (not a task object) that finds no free wall is dropped like any enrichment object; the same
+    curtain as a task object fails the layout (z3 finds no wall for it; the other solvers may)."""
+    def build(task: bool) -> set[str]:
+        objs = [ObjectRequest(id=c, category=c, room="bedroom", role=c) for c in ("bed", "wardrobe", "dresser")]
+        objs.append(ObjectRequest(id="curtain", category="curtain", room="bedroom", placement="wall", task=task,
+                                  role="curtain" if task else None))
+        spec = SceneSpec(task_id="t", env_id="e", rooms=[RoomRequest(id="bedroom", type="Bedroom", area=8)],
+                         objects=objs)
+        env = construct_environment(spec, catalog=CAT, rng=np.random.default_rng(0), solver=solver).env
+        return {o.id for o in env.objects}
+
+    assert {"bed", "wardrobe", "dresser"} <= build(False)
+    if solver == "z3":
+        assert "curtain" not in build(False)
+        with pytest.raises(EnvSpecError, match="wall-mounted task objects"):
+            build(True)

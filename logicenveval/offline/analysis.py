@@ -26,10 +26,14 @@ from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, tokens
 from logicenveval.offline.placement import described_placements
 from logicenveval.offline.sentences import (
     ACTIONS,
+    EVENT_VERBS,
+    HABITUAL_WORDS,
     PREP_IN,
     PREP_ON,
     STATE_WORDS,
+    TEND,
     expand,
+    habitual,
     split_sentences,
 )
 
@@ -282,8 +286,9 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
                     re.search(r"\bif\b", p.lower()) or set(re.findall(r"[a-z]+", p.lower())) & UNCERTAIN):
                 out.append((p, None, "scene"))
             else:
-                out.append((p, None, "uncertain" if any(w in UNCERTAIN for w in re.findall(r"[a-z]+", p.lower()))
-                            else "statement"))
+                said = re.findall(r"[a-z]+", p.lower())
+                # "The ball often ends up on the floor": a habitual statement says what may be so
+                out.append((p, None, "uncertain" if set(said) & UNCERTAIN or habitual(said) else "statement"))
         return out
     start, cue = best
     after = re.match(r"\W*([a-z' ]{0,30}?)\W*(?:$|[,;]|\s-\s)", expand(low[start + len(cue):]))
@@ -727,8 +732,14 @@ class _Reader:
             return []  # the last item of a list carries the location
         k = m.end
         skipped: list[str] = []
-        while k < len(words) and (words[k] in DESCRIPTIVE | MOTION | NEGATIONS | PARTS | PARTICLES
-                                  | {"top", "of", "straight", "that", "which"}) and words[k] not in PREP_ON | PREP_IN:
+        # "keeps ending up on", "tends to end up on", "usually gets left on": the habitual form's
+        # words lead to the place, and its event verb moves nothing (`sentences.habitual`)
+        habit = habitual(words[m.end:])
+        aspect = (HABITUAL_WORDS - {"to"}) | EVENT_VERBS if habit else frozenset()
+        while k < len(words) and (words[k] in DESCRIPTIVE | MOTION | NEGATIONS | PARTS | PARTICLES | aspect
+                                  | {"top", "of", "straight", "that", "which"}
+                                  or words[k] == "to" and bool(skipped) and skipped[-1] in TEND
+                                  ) and words[k] not in PREP_ON | PREP_IN:
             skipped.append(words[k])
             k += 1
             if skipped[-1] == "of" and k < len(words) and words[k].isalpha() and words[k] not in PREP_ON | PREP_IN \
@@ -737,6 +748,8 @@ class _Reader:
         if k >= len(words) or words[k] not in PREP_ON | PREP_IN | {"from", "to"} or (
                 skipped and skipped[-1] in ("switched", "turned")):  # "switched on" is not a place
             return []
+        if habit:
+            skipped = [w for w in skipped if w not in aspect and w != "to"]
         if words[k] == "to" and not self._is_goal(words, m, skipped):
             return []  # "to" names a place only where something is moved: "returned to the armchair"
         if words[k] == "from" and (skipped or m.kind != "role" or set(words[max(0, m.start - 4) : m.start]) & SOURCE_VERBS):
@@ -894,9 +907,35 @@ class _Reader:
                 values = found.setdefault((role, hit[0]), [])
                 if hit[1] not in values:
                     values.append(hit[1])
+        for (role, key), value in self._contrasted_kinds(text):
+            values = found.setdefault((role, key), [])
+            if value not in values:
+                values.append(value)
         return found
 
+    def _contrasted_kinds(self, text: str) -> list[tuple[tuple[str, str], str]]:
+        """"A bill goes into the filing cabinet; any other document goes on the bookshelf", "a
+        novel belongs on the top shelf, every other book on the lower one": an indefinite noun no
+        role names, the subject of a clause, set against "other <thing>" later in its sentence, is
+        a kind of that thing (a derived `kind`, as in "it is a bill")."""
+        out: list[tuple[tuple[str, str], str]] = []
+        for sentence in re.split(r"(?<=[.!?])\s+", expand(text)):
+            toks = tokens(sentence)
+            words = [t[0] for t in toks]
+            mentions = self.lex.find_mentions(toks)
+            covered = {i for m in mentions for i in range(m.start, m.end)}
+            for m in mentions:
+                if m.kind != "role" or m.start < 1 or words[m.start - 1] not in CONTRAST:
+                    continue
+                for i in range(m.start - 3):
+                    if (words[i] in ("a", "an") and i + 1 not in covered and self._unknown(words[i + 1])
+                            and words[i + 2] in MOTION | DESCRIPTIVE):
+                        out += [((r, "kind"), words[i + 1]) for r in m.roles]
+        return out
 
+
+#: words that set a thing against the kinds named before it ("any other document")
+CONTRAST = frozenset({"other"})
 #: words of an "already" clause that say nothing of a place or a state
 ALREADY_FILLER = frozenset({"already", "is", "are", "be", "was", "were", "been", "not", "still", "yet"})
 _RANK = {"exists": 0, "location": 1, "state": 2, "attr": 3}
@@ -1280,10 +1319,14 @@ def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Cat
     # an object the text places outright ("On the floor: a dirty mark") is nowhere else in question
     placed = {f.split("(", 1)[1].split(",", 1)[0] for f in described_placements(
         brief, catalog, kinds=frozenset({"settled"})) if f.startswith(("on(", "inside("))}
+    # "fetch a spare from the dresser (that's where the spares are kept)": a thing the text places
+    # on or in a holder that is both (a dresser, a cabinet) is asked neither on it nor in it
+    held = {_at(x) for x in settled} - {None}
     out: list[Factor] = []
     for f in factors:
         values = set(f.values.values())
-        if f.kind == "location" and set(f.values) == {"yes", "no"} and (settled & values or f.subject in placed):
+        if f.kind == "location" and set(f.values) == {"yes", "no"} and (
+                settled & values or f.subject in placed or {_at(v) for v in values} & held):
             for slot, g in list(slot_factor.items()):
                 if g is f:
                     del slot_factor[slot]
@@ -1292,6 +1335,15 @@ def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Cat
             _drop_home(f, kept)
         out.append(f)
     return out
+
+
+_AT = re.compile(r"^(?:on|inside)\((\w+), (\w+)\)$")
+
+
+def _at(fact: str) -> tuple[str, str] | None:
+    """(thing, holder) of an `on`/`inside` fact, whichever of the two it says."""
+    m = _AT.match(fact)
+    return (m.group(1), m.group(2)) if m else None
 
 
 def _drop_home(f: Factor, kept: set[str]) -> None:

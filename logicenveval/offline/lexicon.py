@@ -20,6 +20,10 @@ WORD = re.compile(r"[a-z0-9]+(?:'[a-z]+)?")
 
 #: words that tell a spare from the one in use ("the spare roll", "an extra bag")
 SPARE_WORDS = frozenset({"spare", "extra", "backup", "replacement"})
+#: "a fresh bag": the spare where the kind was first named without it ("the full bag ... a fresh
+#: bag"), the one in use where the text opens with it ("a fresh diaper is lying on the changing
+#: table; if there isn't one, fetch a spare"): the naming step's rule (`offline.naming`)
+FRESH_WORDS = frozenset({"fresh", "new"})
 
 COLOR_WORDS = frozenset(
     ["red", "blue", "green", "yellow", "white", "black", "grey", "gray", "brown", "pink", "purple", "orange", "beige", "silver", "gold"]
@@ -46,6 +50,12 @@ def singular(word: str) -> str:
 def tokens(text: str) -> list[tuple[str, int, int]]:
     """(normalised word, start, end) with words singularised for matching."""
     return [(singular(m.group(0)), m.start(), m.end()) for m in WORD.finditer(text.lower())]
+
+
+def _spare(role: str) -> bool:
+    """A role named as the spare of its kind ("spare_roll", "spare_bag")."""
+    told = words_of(role)
+    return len(told) > 1 and told[0] in SPARE_WORDS
 
 
 def words_of(name: str) -> tuple[str, ...]:
@@ -75,6 +85,8 @@ class Lexicon:
     containers: set[str] = field(default_factory=set)
     #: roles things can rest on or in (surfaces and containers)
     holders: set[str] = field(default_factory=set)
+    #: spare roles a "fresh" mention denotes (`FRESH_WORDS`)
+    fresh_spares: set[str] = field(default_factory=set)
 
     @classmethod
     def build(cls, brief: Mapping[str, Any], catalog: Catalog) -> Lexicon:
@@ -121,6 +133,12 @@ class Lexicon:
         for head, names in heads.items():
             if head not in lex.phrases:
                 lex.phrases[head] = set(names)  # ambiguous heads are resolved by recency
+        text = [w for w, _, _ in tokens(str(brief.get("description", "")))]
+        for spare in (r for r in roles if _spare(r)):
+            kin = [p for p, names in lex.phrases.items() if spare in names and len(names) > 1]
+            first = next((k for k in range(len(text)) for p in kin if tuple(text[k:k + len(p)]) == p), None)
+            if first is None or text[first - 1:first] not in ([w] for w in FRESH_WORDS):
+                lex.fresh_spares.add(spare)
         return lex
 
     def role_words(self) -> set[str]:
@@ -163,6 +181,13 @@ class Lexicon:
         cands = sorted(candidates)
         if len(cands) == 1:
             return tuple(cands)
+        # "a spare roll", "a fresh diaper" (`FRESH_WORDS`): the spare or the one in use of a kind
+        spares = [r for r in cands if _spare(r)]
+        prev = words[i - 1] if i > 0 else ""
+        if spares and len(spares) < len(cands) and (prev in SPARE_WORDS or prev in FRESH_WORDS):
+            if prev in SPARE_WORDS or set(spares) <= self.fresh_spares:
+                return tuple(spares)
+            return tuple(r for r in cands if r not in spares)
         window = set(words[max(0, i - 3) : i])
         picked = [r for r in cands if set(self.fixed.get(r, {}).values()) & window]
         return tuple(picked or cands)

@@ -56,6 +56,9 @@ _ANOTHER = frozenset({"another", "second"})
 _PACKAGING = frozenset({"bag", "pack", "packet", "carton"})
 #: nouns that are verbs as often ("you can use", "switch it off"): objects only after a determiner
 _ALSO_VERBS = frozenset({"can", "throw", "stand", "switch", "set", "press", "iron", "watch", "hook"})
+#: attributes whose values say what a thing is (a toy's kind: doll, car, ball): a bare plural
+#: of such a value after the thing is named is a class of it (`_Reader.kind_value`)
+KIND_ATTRIBUTES = ("kind",)
 #: words too common to say which of several categories a bare noun means
 _NOT_CONTEXT = frozenset({"floor", "wall", "ceiling", "room"})
 #: words naming a part of a piece of furniture that holds things, and the kind each part is
@@ -377,6 +380,18 @@ class _Reader:
             out.append(("_".join([*parts, head]), {}, read))
         return out
 
+    def kind_value(self, i: int, n: int, prev: str) -> bool:
+        """Whether the bare plural at word `i` (`n` words: "dolls", "toy cars") is a class of a
+        kind named before it, one of the values of its `kind` attribute (`KIND_ATTRIBUTES`; a toy
+        is a doll, a car, a ball ...): what a distribution sorts ("dolls in the red box, toy cars
+        in the blue box, everything else in the green one"), not an object of its own."""
+        words = self.text.words
+        if self.text.raw[i + n - 1] == words[i + n - 1] or prev in _DETERMINERS or prev in _COUNTS:
+            return False
+        head = words[i + n - 1]
+        return any(head in self.catalog.categories[c].attributes.get(key, ())
+                   for c in self.recent for key in KIND_ATTRIBUTES)
+
     def own_kind(self, a: int, b: int, head: str) -> bool:
         """Whether words `a`..`b` of an item name one thing of a kind of its own, with another
         head noun ("a doll" in "two toys: a doll and a ball"; not "a tea cup" in "two cups: ...",
@@ -450,6 +465,9 @@ class _Reader:
                 i += 1
                 continue
             n, category = self.compound(i, n, category)
+            if self.kind_value(i, n, prev):
+                i += n  # "a toy on the floor ... dolls in the red box, toy cars in the blue box"
+                continue
             kind = self.kinds.setdefault(category, _Kind())
             known = category in self.recent
             self.mention(category, words[i + n - 1])

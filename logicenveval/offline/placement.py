@@ -32,7 +32,7 @@ from typing import Any
 
 from logicenveval.domain.catalog import Catalog, load_catalog
 from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, singular
-from logicenveval.offline.sentences import ACTIONS, PREP_IN, PREP_ON, STATE_WORDS, expand
+from logicenveval.offline.sentences import ACTIONS, PREP_IN, PREP_ON, STATE_WORDS, expand, habitual
 
 # ---------------------------------------------------------------------------------------------
 # Reading rules (data tables). Each names a class of words, never a task's phrase or object.
@@ -284,7 +284,8 @@ def _clauses(words: list[str], lo: int, hi: int) -> list[_Clause]:
             mood = "condition"
         else:
             mood = "statement"
-        out.append(_Clause(a, b, mood, _doubts(body), follows_goal))
+        # a habitual statement ("the ball keeps ending up on the floor") is doubted like "may"
+        out.append(_Clause(a, b, mood, _doubts(body) or habitual(body), follows_goal))
     return out
 
 
@@ -648,9 +649,10 @@ def _locative(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon,
             back = _antecedent(sent, clause)
             subjects = [back] if back is not None else []
         first = subjects[0].start if subjects else start
-        if not subjects or words[clause.start] == "there" or _doubts(words[max(lo, first - 3):found[1].end]):
+        said = words[max(lo, first - 3):found[1].end]
+        if not subjects or words[clause.start] == "there" or _doubts(said) or habitual(said):
             lo = found[1].end
-            continue  # no subject, an existential (`_existential`) or a doubt ("may have been put")
+            continue  # no subject, an existential (`_existential`), a doubt ("may have been put") or a habit
         prep, holder = found
         for m in subjects:
             for role in _roles(m, sent):

@@ -121,7 +121,10 @@ def _described(choice: dict[str, RoleChoice], brief: Mapping[str, Any], facts: l
                 continue
             if pred.name == "in_room" and pred.args[1] in c.banned_rooms:
                 continue
-            if pred.name in ("on", "inside") and (
+            if pred.name == "on" and pred.args[1] == "floor":
+                if "floor" in c.banned_places:
+                    continue
+            elif pred.name in ("on", "inside") and (
                     pred.args[1] not in choice or not choice[pred.args[1]].present
                     or f"{pred.name}:{pred.args[1]}" in c.banned_places):
                 continue
@@ -204,22 +207,26 @@ def _places(choice: dict[str, RoleChoice], roles: dict[str, Any], catalog: Catal
 
 def task_objects(task: Mapping[str, Any], facts: list[str], catalog: Catalog) -> list[dict[str, Any]]:
     """Object drafts for the task's roles (id = role name) realising `facts`; a side table is added
-    when an item needs a surface its room lacks."""
+    when an item needs a surface its room lacks, and a second one when the first is ruled out for
+    it (`not on(hat, side_table_entryway_1)`: the layout found the first too crowded)."""
     roles = task["roles"]
     objects: list[dict[str, Any]] = []
-    extra: dict[str, str] = {}
+    tables: dict[str, str] = {}  # side table added -> its room
     for role, c in realise(task, facts, catalog).items():
         if not c.present:
             continue
         placement = c.placement or "floor"
         room = c.room or task["rooms"][0]
         if placement == NEEDS_SURFACE:
-            extra.setdefault(room, f"side_table_{room}_1")
-            placement = f"on:{extra[room]}"
+            # a side table the situation or the layout ruled out (too crowded) makes room for another
+            table = next(f"side_table_{room}_{k}" for k in range(1, len(roles) + 2)
+                         if f"on:side_table_{room}_{k}" not in c.banned_places)
+            tables.setdefault(table, room)
+            placement = f"on:{table}"
         objects.append({"id": role, "category": roles[role]["category"], "room": room, "role": role,
                         "placement": placement, "attributes": c.attributes, "states": c.states,
                         "description": f"the {role.replace('_', ' ')}"})
-    for room, oid in extra.items():
+    for oid, room in tables.items():
         objects.append({"id": oid, "category": "side_table", "room": room, "role": None,
                         "placement": "floor", "attributes": {}, "states": {},
                         "description": "a side table to put things on"})

@@ -78,6 +78,18 @@ def room_areas(task: dict[str, Any], catalog: Catalog) -> dict[str, float]:
     """Whole square metres per room: the typical area of its type, or more when the task's objects
     that belong there (at their largest catalog sizes) need more floor or wall (a designer who has
     read the task sizes the rooms for what they must hold)."""
+    floor, wall, taken = _needs(task, catalog)
+    out = {}
+    for r in task["rooms"]:
+        need = max(FLOOR_PER_FOOTPRINT * floor[r], (taken[r] / 4) ** 2)
+        out[r] = float(min(80, max(AREA.get(room_type_of(r), 12.0), math.ceil(need))))
+    return out
+
+
+def _needs(task: dict[str, Any], catalog: Catalog) -> tuple[dict[str, float], dict[str, float], dict[str, float]]:
+    """Per room, what the task's furniture needs at its largest catalog sizes: the floor it covers
+    (m²), the width of its wall-mounted objects (m) and the metres of wall it takes (twice the
+    wall-mounted objects' and the openings' widths, plus the floor furniture against the walls)."""
     rooms = list(task["rooms"])
     floor = dict.fromkeys(rooms, 0.0)
     along = dict.fromkeys(rooms, 0.0)  # metres of wall the floor furniture stands against
@@ -92,12 +104,7 @@ def room_areas(task: dict[str, Any], catalog: Catalog) -> dict[str, float]:
             along[room] += cat.size_max[0]
         elif cat.placement[0] == "wall":
             wall[room] += cat.size_max[0]
-    out = {}
-    for r in rooms:
-        perimeter = WALL_PER_WIDTH * (wall[r] + OPENINGS_M) + along[r]
-        need = max(FLOOR_PER_FOOTPRINT * floor[r], (perimeter / 4) ** 2)
-        out[r] = float(min(80, max(AREA.get(room_type_of(r), 12.0), math.ceil(need))))
-    return out
+    return floor, wall, {r: WALL_PER_WIDTH * (wall[r] + OPENINGS_M) + along[r] for r in rooms}
 
 
 _TOO_BIG = re.compile(r"(\w+) \(\w+\) is larger than the top of (\w+)")
@@ -181,6 +188,7 @@ def select_objects(payload: dict[str, Any], request: ChatRequest) -> dict[str, A
     catalog = load_catalog()
     objects = _task_objects(payload)
     used = {o["category"] for o in objects}
+    _, hung, taken = _needs(payload["task"], catalog)
     for room in payload["rooms"]:
         rtype, area = room["type"], float(room.get("area_m2", 12.0))
         floor_like = sorted(
@@ -195,6 +203,8 @@ def select_objects(payload: dict[str, Any], request: ChatRequest) -> dict[str, A
         picks = [floor_like[(start + k * 7) % len(floor_like)] for k in range(min(n_floor, len(floor_like)))]
         if wall_like:
             picks.append(wall_like[start % len(wall_like)])
+        if hung.get(room["id"]):
+            picks = _spared(picks, 4 * math.sqrt(area) - taken[room["id"]], catalog)
         for k, cat in enumerate(dict.fromkeys(picks)):
             objects.append({
                 "id": f"{cat}_{room['id']}_{k}", "category": cat, "room": room["id"], "role": None,
@@ -202,6 +212,22 @@ def select_objects(payload: dict[str, Any], request: ChatRequest) -> dict[str, A
                 "description": f"a {cat.replace('_', ' ')} typical of a {rtype}",
             })
     return keyed_selection(objects) if keyed(request) else {"objects": objects}
+
+
+def _spared(picks: list[str], spare: float, catalog: Catalog) -> list[str]:
+    """The added furniture of a room where a task object hangs on a wall, as far as the wall the
+    task's own objects leave (`_needs`) allows: floor furniture stands against a wall and a wall
+    object takes twice its width, while the layout can drop neither for a curtain or a mirror of
+    the task that finds no free wall (a crib, a changing table, a dresser and a curtain fill a
+    nursery's walls; a nightstand and a desk added beside them left the curtain no room)."""
+    out = []
+    for name in picks:
+        cat = catalog.categories[name]
+        cost = cat.size_max[0] * (WALL_PER_WIDTH if cat.placement[0] == "wall" else 1.0)
+        if cost <= spare:
+            out.append(name)
+            spare -= cost
+    return out
 
 
 @handler("spatial_relations")

@@ -33,6 +33,32 @@ ACTIONS = frozenset(
      "pack", "stack", "deliver"]
 )
 PREP_ON = frozenset({"on", "onto", "atop", "upon"})
+
+#: habitual aspect: a statement of what keeps happening ("my ball keeps ending up on the floor",
+#: "the scarf tends to slip off the hook", "the remote often lies on the rug", "the towel usually
+#: gets left on the floor") says what may be so in a scene, not a fact of this one. Frequency
+#: adverbs always make it; adverbs of a norm only with a verb of an event ("usually gets left"),
+#: since with one of being they state the norm ("Normally a fresh diaper is lying on the table")
+FREQUENCY = frozenset({"often", "frequently", "regularly", "repeatedly", "constantly", "sometimes",
+                       "occasionally", "forever"})
+NORM_ADVERBS = frozenset({"usually", "normally", "generally", "typically", "always"})
+EVENT_VERBS = frozenset({"get", "gets", "got", "getting", "end", "ends", "ended", "ending", "wind", "winds",
+                         "wound", "fall", "falls", "roll", "rolls", "slip", "slips", "turn", "turns"})
+#: "tends to <verb>"; "keeps <verb>-ing"
+TEND = frozenset({"tend", "tends", "tended"})
+KEEP = frozenset({"keep", "keeps", "kept"})
+#: the words of a habitual form, which say nothing of the place or the state themselves
+HABITUAL_WORDS = FREQUENCY | NORM_ADVERBS | TEND | KEEP | {"to"}
+
+
+def habitual(words: list[str]) -> bool:
+    """Whether a clause's words are in the habitual aspect (see `FREQUENCY`)."""
+    for k, w in enumerate(words):
+        nxt = words[k + 1] if k + 1 < len(words) else ""
+        if (w in FREQUENCY or w in TEND and nxt == "to" or w in KEEP and len(nxt) > 4 and nxt.endswith("ing")
+                or w in NORM_ADVERBS and bool(set(words[k + 1:k + 3]) & EVENT_VERBS)):
+            return True
+    return False
 PREP_IN = frozenset({"in", "inside", "into", "within"})
 
 #: words after a noun's "'s" that make it the verb, not a possessive: "the door's shut", "the

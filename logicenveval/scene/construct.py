@@ -511,7 +511,10 @@ class _Builder:
             bottom = min(max(1.5 - sy / 2, 0.3), h - 0.1 - sy)
             boxes.append(WallBox(o.id, cells(sx, g), _r(max(bottom, 0.05)), sy, o.id in self.hard))
         placed, dropped = self.solver.pack_walls(walls, boxes, seed=self._seed(), timeout_s=self.spec.room_timeout_s)
-        if not placed and boxes:
+        gone = {d.tracked.item for d in dropped if d.tracked.kind == "object"}
+        # all of them dropped (a curtain the selection added and no free wall for it) is a layout,
+        # not a failure; a wall object that is neither placed nor droppable is
+        if any(b.id not in placed and b.id not in gone for b in boxes):
             raise EnvSpecError(f"room {room}: the wall-mounted task objects do not fit its free walls",
                                field=f"rooms.{room}", hint="request a larger room or fewer wall objects")
         self._take(room, dropped, {})
