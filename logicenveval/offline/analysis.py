@@ -21,7 +21,7 @@ from typing import Any
 
 from lemminflect import getAllLemmas
 
-from logicenveval.domain.catalog import Catalog, load_catalog
+from logicenveval.domain.catalog import Catalog, Category, load_catalog
 from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, tokens
 from logicenveval.offline.placement import described_placements
 from logicenveval.offline.sentences import (
@@ -32,6 +32,7 @@ from logicenveval.offline.sentences import (
     expand,
     split_sentences,
 )
+from logicenveval.scene.compat import can_hold
 
 #: words between a subject and its predicate that describe a current situation
 DESCRIPTIVE = frozenset(
@@ -114,6 +115,8 @@ class Fact:
     #: said of a definite object ("the tablet is lying on the chair"): in a plain statement a
     #: fact the environment keeps, not an uncertain factor
     definite: bool = False
+    #: where the thing is kept or lives (`HOMES`): its norm, never a situation to ask about
+    home: bool = False
 
 
 @dataclass(frozen=True)
@@ -289,6 +292,12 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
     after = re.match(r"\W*([a-z' ]{0,30}?)\W*(?:$|[,;]|\s-\s)", expand(low[start + len(cue):]))
     if cue in ("if", "in case") and after and set(after.group(1).split()) & AVAILABILITY \
             and len(after.group(1).split()) <= 3 and not set(after.group(1).split()) & NEGATIONS:
+        # "with the wipes if there are any, else with the mop": the alternative is its own piece
+        other = re.search(r"[,;]\s*(?:otherwise|else|or else|failing that)\b", sentence[start:], re.I)
+        if other is not None:
+            cut = start + other.start()
+            return [(sentence[:cut], "if available", "uncertain"),
+                    (sentence[start + other.end():].strip(" ,"), "otherwise", "else")]
         return [(sentence, "if available", "uncertain")]
     head = sentence[:start].strip(" ,-")
     if set(re.findall(r"[a-z]+", head.lower())) <= DISCOURSE:
@@ -338,8 +347,13 @@ def _subsplit(pieces: list[tuple[str, str | None, str]]) -> list[tuple[str, str 
 def _joined(words: list[str], a: Mention, b: Mention) -> bool:
     """Mentions `a` and `b` are items of one list (`a book or a toy`, `cups, plates and bowls`)."""
     between = words[a.end : b.start]
-    return 0 < len(between) <= 3 and all(w in {"or", "and", "a", "an", "the", "some", "any", "either"}
-                                          for w in between)
+    return 0 < len(between) <= 3 and all(w in LIST_WORDS for w in between)
+
+
+#: words that may stand between two items of one list: conjunctions and determiners, possessive
+#: ones included ("a book, my alarm clock or my phone")
+LIST_WORDS = frozenset({"or", "and", "a", "an", "the", "some", "any", "either", "my", "your", "our", "his",
+                        "her", "their"})
 
 
 #: words that open a verb's object: a one-word mention right before one is the verb ("stand it in
@@ -373,10 +387,13 @@ def _negation(word: str) -> bool:
 class _Reader:
     """Extracts facts clause by clause, remembering topics for pronouns."""
 
-    def __init__(self, lex: Lexicon, capable: Mapping[str, frozenset[str]] | None = None) -> None:
+    def __init__(self, lex: Lexicon, capable: Mapping[str, frozenset[str]] | None = None,
+                 kinds: Mapping[str, Category] | None = None) -> None:
         self.lex = lex
         #: role -> the state flags its kind can take (`FITTED`), from the catalog
         self.capable = dict(capable or {})
+        #: role -> its catalog category, to tell a placement the scene can hold from a misreading
+        self.kinds = dict(kinds or {})
         self.topic: tuple[str, ...] = ()
         self.topic_kind = "role"
         self.recent: list[str] = []
@@ -461,6 +478,11 @@ class _Reader:
                 # pronoun means the nearest thing named in the plural, not a singular topic
                 found.append(Mention((next(r for r in reversed(self.recent) if r in self.plural),), i, i + 1,
                                      "pronoun"))
+            elif w in ("it", "its") and any(p.kind == "pronoun" and p.start < i for p in found):
+                # "if there is one (it is kept in the vanity)": with nothing named before it, a
+                # pronoun speaks of what the clause's earlier pronoun meant
+                prior = [p for p in found if p.kind == "pronoun" and p.start < i]
+                found.append(Mention(prior[-1].roles, i, i + 1, "pronoun"))
             elif self.topic:
                 found.append(Mention(self.topic, i, i + 1, "pronoun" if self.topic_kind == "role" else "floor"))
         found.sort(key=lambda m: m.start)
@@ -595,7 +617,8 @@ class _Reader:
                               for r in self.topic]
                     break
         said_by_pronoun = {r for m in mentions if m.kind == "pronoun" for r in m.roles}
-        facts = [self._fit(f) if f.kind == "state" and f.subject in said_by_pronoun else f for f in facts]
+        facts = [self._fit(f) if f.kind == "state" and f.subject in said_by_pronoun else f for f in facts
+                 if self._holds(f)]
         for f in facts:
             if f.kind == "location" and not f.goal:
                 self.last_location[f.subject] = f
@@ -605,6 +628,15 @@ class _Reader:
                 self.last_state[f.key] = f
         names = tuple(dict.fromkeys(r for m in subjects for r in m.roles))
         return list(dict.fromkeys(facts)), names
+
+    def _holds(self, f: Fact) -> bool:
+        """A thing on or in a role that cannot hold it (a sofa in a toy box, a phone on a book:
+        `scene.compat.can_hold` on their catalog sizes and kinds) is a misreading, not a fact."""
+        relation = f.condition.split("(", 1)[0]
+        item, holder = self.kinds.get(f.subject), self.kinds.get(f.key)
+        if f.kind != "location" or relation not in ("on", "inside") or item is None or holder is None:
+            return True
+        return can_hold(item, holder, relation)
 
     def _fit(self, f: Fact) -> Fact:
         """A pronoun's state said of a thing that cannot take it ("hang the shirt in the wardrobe
@@ -707,7 +739,10 @@ class _Reader:
     def _subjects(self, words: list[str], mentions: list[Mention], idx: int) -> list[str]:
         group = [idx]
         j = idx - 1
-        while j >= 0 and mentions[j].kind in ("role", "pronoun") and _joined(words, mentions[j], mentions[j + 1]):
+        while j >= 0 and mentions[j].kind in ("role", "pronoun") and _joined(words, mentions[j], mentions[j + 1]) \
+                and not _placed(words, mentions[j]):
+            # "the book on the couch, a toy in the box": a place named before a new item is no
+            # item of its list (the comma is gone from the words)
             group.insert(0, j)
             j -= 1
         return [r for g in group for r in mentions[g].roles]
@@ -742,7 +777,12 @@ class _Reader:
         if words[k] == "from" and (skipped or m.kind != "role" or set(words[max(0, m.start - 4) : m.start]) & SOURCE_VERBS):
             return []  # "fill it from the bag" names a source, not where the object is
         # "the wipes from the table": where the object is now, whatever verb precedes it
-        goal = words[k] != "from" and (self._is_goal(words, m, skipped) or (
+        # "a book is placed on the sofa and a toy in its toy box": a second item after a place
+        # shares the first one's verb (the verb is gapped), and so its goal
+        prev = mentions[idx - 1] if idx > 0 else None
+        gapped = prev is not None and _placed(words, prev) and _joined(words, prev, m) and bool(
+            set(words[: prev.start]) & MOTION)
+        goal = words[k] != "from" and (self._is_goal(words, m, skipped) or gapped or (
             words[k] in ("into", "onto") and not set(skipped) & SITUATION_PARTICIPLES))
         article = words[m.start - 1] if m.start > 0 else ""
         # where a thing is kept or lives is a norm `_settle_stated` weighs against the rest of
@@ -774,7 +814,7 @@ class _Reader:
                     else:
                         cond = f"inside({s}, {t})"
                     out.append(Fact(s, cond, "location", t, negated=negated and not goal, goal=goal,
-                                    modifier=modifier, definite=definite))
+                                    modifier=modifier, definite=definite, home=bool(set(skipped) & HOMES)))
             k = target.end
             while k < len(words) and words[k] in {"or", "and", "either", "the", "a"}:
                 k += 1
@@ -1018,6 +1058,16 @@ def _goes(reader: _Reader, text: str) -> bool:
                                            for m in reader.lex.find_mentions(toks))
 
 
+def _elaborates(clauses: list[Clause], sentence: int, text: str) -> bool:
+    """The piece has no verb of its own (no finite or modal verb, no action) and follows, in the
+    same sentence, a clause whose verb moves things (`MOTION`): it lists what goes where."""
+    if not clauses or clauses[-1].sentence != sentence or clauses[-1].role not in ("statement", "consequence"):
+        return False
+    words = {w for w, _, _ in tokens(expand(text))}
+    before = {w for w, _, _ in tokens(expand(clauses[-1].text))}
+    return bool(before & MOTION) and not words & (CLAUSE_WORDS | ACTIONS | MOTION | DESCRIPTIVE | UNCERTAIN)
+
+
 def _place_heading(reader: _Reader, text: str) -> bool:
     """The heading is a place where things lie and nothing else ("On the floor", "On the table";
     a room, "In the kitchen:", only says where the instructions happen)."""
@@ -1061,7 +1111,9 @@ def _capabilities(brief: Mapping[str, Any], catalog: Catalog) -> dict[str, froze
 
 def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     lex = Lexicon.build(brief, catalog)
-    reader = _Reader(lex, _capabilities(brief, catalog))
+    kinds = {name: cat for name, role in dict(brief.get("roles") or {}).items()
+             if (cat := catalog.get(str(role.get("category", "")))) is not None}
+    reader = _Reader(lex, _capabilities(brief, catalog), kinds)
     sentences = split_sentences(str(brief["description"]))
     clauses: list[Clause] = []
     grammatical = 0  # pieces split at ':' or ';' still belong to one sentence for grouping
@@ -1105,10 +1157,16 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 if "not" in {w for w, _, _ in tokens(expand(said))}:
                     # "the drawer might already be open, and if it isn't, open it": the opposite
                     facts = [replace(f, negated=not f.negated) for f in facts]
-            elif role == "condition" and facts and all(f.goal for f in facts) and not set(
-                    w for w, _, _ in tokens(said)) & AGENTS:
+            elif role == "statement" and _elaborates(clauses, grammatical, said):
+                # "anything on the floor should go where it belongs - the book on the couch, a toy
+                # in the toy box": a verbless list after a clause that moves things says where each
+                # goes, not where it is
+                facts = [replace(f, goal=True) if f.kind == "location" else f for f in facts]
+            elif (role == "condition" or role == "uncertain" and "been" in {w for w, _, _ in tokens(said)}) \
+                    and facts and all(f.goal for f in facts) and not set(w for w, _, _ in tokens(said)) & AGENTS:
                 # "if it has been thrown on the floor", "whenever the jacket ends up on the
-                # floor": in a condition a moved object's place is the situation, not a goal
+                # floor": in a condition a moved object's place is the situation, not a goal; so
+                # in a guess at what has happened ("wet wipes may have been put on the table")
                 facts = [replace(f, goal=False) for f in facts]
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
         if sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences):
@@ -1159,7 +1217,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                         for f in cl.facts if not f.goal}
             context = [c for c in context if (c[0], c[1]) not in restated]
         for f in cl.facts:
-            if f.derived and (f.subject, f.key) not in contrasted:
+            if f.derived and (f.subject, f.key) not in contrasted or f.home and cl.role in (
+                    "condition", "consequence", "else"):
+                # "if there is one (it is kept in the vanity)", "(spares are kept there)": where a
+                # thing is kept, said in a condition or an instruction, asks nothing (a stated home
+                # is weighed against the rest of the text by `_settle_stated`)
                 continue
             if f.goal or not (conditional or (f.modifier and cl.role not in ("scene",)
                                               # "The tablet is lying on the chair.": stated, kept

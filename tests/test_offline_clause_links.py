@@ -1,0 +1,167 @@
+"""How the offline reader links the parts of a clause (issue 47 item 2): list items and the places
+between them, gapped verbs, pronouns within a clause, alternatives after "if there are any", the
+spare of a kind, homes said in passing, and placements the catalog rules out. Each rule is tested
+on a sentence written for this file and one of the reader's development set
+(tests/data/reader_dev/), so on at least two different texts."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+
+from logicenveval.domain.catalog import load_catalog
+from logicenveval.offline.analysis import analyse
+from logicenveval.offline.lexicon import Lexicon
+from logicenveval.scene.compat import can_hold
+
+CATALOG = load_catalog()
+
+
+def brief(description: str, roles: dict[str, str], rooms: tuple[str, ...] = ("living_room",)) -> dict[str, Any]:
+    return {"id": "t", "description": description, "rooms": list(rooms),
+            "roles": {name: {"category": cat, "attributes": {}} for name, cat in roles.items()}}
+
+
+def asked(description: str, roles: dict[str, str]) -> set[str]:
+    """Every condition a factor of the reading may take."""
+    return {v for f in analyse(brief(description, roles), CATALOG).factors for v in f.values.values()}
+
+
+LIVING = {"book": "book", "sofa": "sofa", "toy": "toy", "toy_box": "toy_box", "coffee_table": "coffee_table",
+          "mop": "mop", "wet_wipe": "wet_wipe", "mug": "mug", "desk": "desk", "ball": "ball"}
+
+
+# ----- a place named before a new list item is no item of the list ------------------------------
+
+@pytest.mark.parametrize("text", [
+    # development set (clean_living_room_r2)
+    "I think a book or a toy might be lying on the floor somewhere. So: anything on the floor should go where "
+    "it belongs - the book on the couch, a toy in the toy box.",
+    "A mug or a ball may be on the floor. Put away whatever is down there - the mug on the desk, a ball in the "
+    "toy box.",
+])
+def test_a_verbless_list_after_a_moving_clause_says_where_things_go(text: str) -> None:
+    got = asked(text, LIVING)
+    assert not any(c.startswith(("inside(sofa", "inside(desk", "on(book, sofa)", "on(mug, desk)"))
+                   or "toy_box)" in c for c in got), got
+    assert {"on(book, floor)", "on(toy, floor)"} <= got or {"on(mug, floor)", "on(ball, floor)"} <= got
+
+
+@pytest.mark.parametrize("text", [
+    # development set (clean_living_room_r4)
+    "A book or a toy may have been dropped on the floor. Anything lying on the floor is to be put away: a book "
+    "is placed on the sofa and a toy in its toy box.",
+    "A mug or a ball may have been dropped on the floor. The mug is put on the desk and a ball in the toy box.",
+])
+def test_a_gapped_item_shares_the_goal_of_the_first(text: str) -> None:
+    got = asked(text, LIVING)
+    assert not any("toy_box)" in c or c.startswith("inside(sofa") for c in got), got
+
+
+# ----- the catalog rules out a placement a reading proposes -------------------------------------
+
+def test_can_hold_follows_the_catalogs_kinds_and_sizes() -> None:
+    cat = CATALOG.categories
+    assert not can_hold(cat["sofa"], cat["toy_box"], "inside")  # too big
+    assert not can_hold(cat["cell_phone"], cat["book"], "on")  # a book is no surface
+    assert can_hold(cat["toy"], cat["toy_box"], "inside")
+    assert can_hold(cat["cell_phone"], cat["desk"], "on")
+
+
+@pytest.mark.parametrize(("text", "roles", "ruled_out"), [
+    ("Maybe the sofa ended up inside the toy box.", {"sofa": "sofa", "toy_box": "toy_box"}, "inside(sofa, toy_box)"),
+    ("The phone might be lying on the book.", {"phone": "cell_phone", "book": "book"}, "on(phone, book)"),
+])
+def test_a_placement_the_catalog_rules_out_is_no_factor(text: str, roles: dict[str, str], ruled_out: str) -> None:
+    assert ruled_out not in asked(text, roles)
+
+
+# ----- possessive determiners inside a list ------------------------------------------------------
+
+@pytest.mark.parametrize(("text", "roles", "place"), [
+    # development set (bedroom_bookshelf_sorting_r2)
+    ("Could you clear off my bed? There might be a book, my alarm clock or my phone lying on it.",
+     {"bed": "bed", "book": "book", "alarm_clock": "alarm_clock", "phone": "cell_phone"}, "bed"),
+    ("Please tidy the desk. Your pen, your notebook or your mug may be lying on it.",
+     {"desk": "desk", "pen": "pen", "notebook": "notebook", "mug": "mug"}, "desk"),
+])
+def test_a_list_with_possessives_is_one_list(text: str, roles: dict[str, str], place: str) -> None:
+    got = asked(text, roles)
+    things = [r for r in roles if r != place]
+    assert {f"on({t}, {place})" for t in things} <= got, got
+
+
+# ----- "if there are any, else ...": the alternative is no absence ------------------------------
+
+@pytest.mark.parametrize(("text", "roles", "absent"), [
+    # development set (clean_living_room_r1)
+    ("Possibly a pack of wet wipes on the table. Clean the mark with the wet wipes from the table if there are "
+     "any, else with the wet mop.", {"wet_wipe": "wet_wipe", "coffee_table": "coffee_table", "mop": "mop"}, "mop"),
+    ("There may be a sponge on the desk. Wipe the mug with the sponge if there is one, otherwise with the cloth.",
+     {"sponge": "sponge", "desk": "desk", "mug": "mug", "cloth": "cloth"}, "cloth"),
+])
+def test_the_alternative_of_if_there_are_any_is_not_asked(text: str, roles: dict[str, str], absent: str) -> None:
+    got = asked(text, roles)
+    assert f"exists({absent})" not in got, got
+    assert any(c.startswith("on(") for c in got), got
+
+
+# ----- a spare role is meant only where a spare word says so -------------------------------------
+
+@pytest.mark.parametrize(("text", "roles", "meant"), [
+    # development set (bathroom_towel_refresh_r1)
+    ("No toilet roll by the toilet? Take the spare roll out of the vanity cabinet and put it on the toilet tank.",
+     {"roll": "toilet_paper", "spare_roll": "toilet_paper", "toilet": "toilet", "vanity": "bathroom_vanity"},
+     "roll"),
+    ("If there is no trash bag in the trash can, put the spare bag in.",
+     {"bag": "trash_bag", "spare_bag": "trash_bag", "trash_can": "trash_can"}, "bag"),
+])
+def test_a_plain_name_is_not_the_spare(text: str, roles: dict[str, str], meant: str) -> None:
+    lex = Lexicon.build(brief(text, roles), CATALOG)
+    assert lex._disambiguate(["spare_" + meant, meant], ["no", "toilet"], 2) == (meant,)
+    assert lex._disambiguate(["spare_" + meant, meant], ["the", "spare"], 2) == ("spare_" + meant,)
+    assert not any(c.startswith(f"exists(spare_{meant}") for c in asked(text, roles))
+
+
+# ----- a pronoun after a pronoun; a home said in passing asks nothing ----------------------------
+
+@pytest.mark.parametrize(("text", "roles", "thing"), [
+    # development set (bathroom_towel_refresh_r1)
+    ("Mirror dirty? Clean it with the microfibre cloth if there is one (it is kept in the vanity; return it "
+     "there and close the vanity); if not, use the hand towel.",
+     {"mirror": "mirror", "cloth": "cloth", "vanity": "bathroom_vanity", "hand_towel": "hand_towel"}, "cloth"),
+    ("Is the desk dusty? Wipe it with the sponge if there is one (it lives in the cupboard; put it back "
+     "afterwards); if not, use the cloth.",
+     {"desk": "desk", "sponge": "sponge", "cupboard": "cabinet", "cloth": "cloth"}, "sponge"),
+])
+def test_a_pronoun_after_a_pronoun_means_the_same_thing(text: str, roles: dict[str, str], thing: str) -> None:
+    got = asked(text, roles)
+    assert f"exists({thing})" in got, got
+    assert not any(c.startswith(("inside(mirror", "inside(desk", f"inside({thing}")) for c in got), got
+
+
+@pytest.mark.parametrize(("text", "roles", "thing"), [
+    # development set (bathroom_towel_refresh_r3)
+    ("No roll by the toilet: spare roll out of the vanity (spares are kept there) onto the toilet tank, close "
+     "the vanity.", {"roll": "toilet_paper", "spare_roll": "toilet_paper", "toilet": "toilet",
+                     "vanity": "bathroom_vanity"}, "spare_roll"),
+    ("Mug on the floor: mug out of the cabinet (mugs are kept there) onto the desk.",
+     {"mug": "mug", "cabinet": "cabinet", "desk": "desk"}, "mug"),
+])
+def test_a_home_said_in_an_instruction_is_not_asked(text: str, roles: dict[str, str], thing: str) -> None:
+    got = asked(text, roles)
+    assert not any(c.startswith(f"on({thing}, {'toilet' if thing == 'spare_roll' else 'desk'})") for c in got), got
+
+
+# ----- a guess at what has happened is a situation -----------------------------------------------
+
+@pytest.mark.parametrize(("text", "roles", "condition"), [
+    # development set (clean_living_room_r4)
+    ("A packet of wet wipes may have been put on the table. The mark is cleaned with them.",
+     {"wet_wipe": "wet_wipe", "table": "coffee_table"}, "on(wet_wipe, table)"),
+    ("The remote might have been put on the sofa; bring it back to the TV stand.",
+     {"remote": "remote_control", "sofa": "sofa", "tv_stand": "tv_stand"}, "on(remote, sofa)"),
+])
+def test_may_have_been_put_is_a_situation(text: str, roles: dict[str, str], condition: str) -> None:
+    assert condition in asked(text, roles)
