@@ -13,6 +13,7 @@ import pytest
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.offline.analysis import analyse
 from logicenveval.offline.lexicon import Lexicon
+from logicenveval.offline.naming import name_objects
 from logicenveval.scene.compat import can_hold
 
 CATALOG = load_catalog()
@@ -165,3 +166,27 @@ def test_a_home_said_in_an_instruction_is_not_asked(text: str, roles: dict[str, 
 ])
 def test_may_have_been_put_is_a_situation(text: str, roles: dict[str, str], condition: str) -> None:
     assert condition in asked(text, roles)
+
+
+# ----- a bare plural that is a value of another named kind's attribute is a class --------------
+
+@pytest.mark.parametrize(("text", "values"), [
+    # development set (kids_room_toy_cleanup_r1)
+    ("If there's a toy on the floor, it goes in a toy box depending on what it is: dolls in the red toy box, toy "
+     "cars in the blue box, and everything else in the green box.", {"doll", "car"}),
+    ("A toy may be lying under the bed. Balls go in the basket and dolls on the shelf; leave other toys.",
+     {"ball", "doll"}),
+])
+def test_a_bare_plural_kind_of_a_named_thing_is_a_class_not_an_object(text: str, values: set[str]) -> None:
+    named = name_objects(text, CATALOG, rooms=["kids_room"])
+    cats = {o["category"] for o in named}
+    assert "toy" in cats and not cats & {"doll", "toy_car", "ball"}, named
+    roles = {o["name"]: o["category"] for o in named}
+    got = {v for f in analyse(brief(text, roles, ("kids_room",)), CATALOG).factors if f.kind == "attr"
+           for v in f.values.values()}
+    assert {f"attr(toy, kind, {v})" for v in values} <= got, got
+
+
+def test_a_determined_kind_is_still_an_object() -> None:
+    named = name_objects("A toy and a doll are on the floor.", CATALOG, rooms=["kids_room"])
+    assert {"toy", "doll"} <= {o["category"] for o in named}

@@ -377,6 +377,22 @@ class _Reader:
             out.append(("_".join([*parts, head]), {}, read))
         return out
 
+    def class_of(self, i: int, n: int, category: str) -> bool:
+        """Whether the noun phrase at word `i` is a bare plural ("dolls", "toy cars": no
+        determiner or count before it) whose last word is a value of an attribute of another kind
+        the text names, the rest of its words that kind's name ("toy cars" and a toy's kind
+        "car"): a class of that kind's objects the text sorts by, not an object of its own."""
+        words, raw = self.text.words, self.text.raw
+        prev = words[i - 1] if i > 0 else ""
+        if raw[i + n - 1] == words[i + n - 1] or prev in _DETERMINERS or prev in _COUNTS:
+            return False
+        *rest, value = words[i:i + n]
+        for other in self.named - {category}:
+            if set(rest) <= set(words_of(other)) and any(
+                    value in (v.lower() for v in values) for values in self.catalog.categories[other].attributes.values()):
+                return True
+        return False
+
     def own_kind(self, a: int, b: int, head: str) -> bool:
         """Whether words `a`..`b` of an item name one thing of a kind of its own, with another
         head noun ("a doll" in "two toys: a doll and a ball"; not "a tea cup" in "two cups: ...",
@@ -450,6 +466,9 @@ class _Reader:
                 i += 1
                 continue
             n, category = self.compound(i, n, category)
+            if self.class_of(i, n, category):
+                i += n  # "dolls into the red box, toy cars into the blue one": a kind of toy
+                continue
             kind = self.kinds.setdefault(category, _Kind())
             known = category in self.recent
             self.mention(category, words[i + n - 1])
