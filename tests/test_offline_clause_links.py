@@ -190,3 +190,18 @@ def test_a_bare_plural_kind_of_a_named_thing_is_a_class_not_an_object(text: str,
 def test_a_determined_kind_is_still_an_object() -> None:
     named = name_objects("A toy and a doll are on the floor.", CATALOG, rooms=["kids_room"])
     assert {"toy", "doll"} <= {o["category"] for o in named}
+
+
+# ----- a place heading with a doubt asks where the listed things are ----------------------------
+
+@pytest.mark.parametrize(("text", "roles", "conditions"), [
+    # development set (bedroom_bookshelf_sorting_r1)
+    ("Bedroom: bed, nightstand. On the bed, maybe: a book, an alarm clock, a phone. Clear the bed.",
+     {"bed": "bed", "nightstand": "nightstand", "book": "book", "alarm_clock": "alarm_clock", "phone": "cell_phone"},
+     {"on(book, bed)", "on(alarm_clock, bed)", "on(phone, bed)"}),
+    ("On the desk, possibly: a mug, a pen. Put them away.", {"desk": "desk", "mug": "mug", "pen": "pen"},
+     {"on(mug, desk)", "on(pen, desk)"}),
+])
+def test_a_place_heading_with_a_doubt_asks_where_things_are(text: str, roles: dict[str, str],
+                                                             conditions: set[str]) -> None:
+    assert conditions <= asked(text, roles)

@@ -248,8 +248,8 @@ def _heading(sentence: str) -> tuple[str, str, str] | None:
     words = [w for w, _, _ in tokens(expand(head))]
     if not words or len(words) > 10 or set(words) & CLAUSE_WORDS or _imperative(words):
         return None
-    if _first_cue(head.lower(), CONDITIONAL) or any(w in UNCERTAIN for w in words):
-        return None
+    if _first_cue(head.lower(), CONDITIONAL) or any(w in UNCERTAIN for w in words) and words[0] not in PLACE_PREPS:
+        return None  # (a place may carry a doubt: "On the bed, maybe: a book, a phone")
     mark = m.group("mark").strip()
     if mark == "-" and not rest:
         return None
@@ -1149,7 +1149,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 said = f"it goes {said}"  # "dry: on the shoe rack", "clean - onto the armchair"
             if place[0] == grammatical:
                 said = f"{said.rstrip(' .;,')} {place[1]}"
-                role = "scene" if role == "statement" else role
+                doubt = bool({w for w, _, _ in tokens(place[1])} & UNCERTAIN)
+                role = ("uncertain" if doubt else "scene") if role == "statement" else role
             facts, names = reader.facts("there is " + said if cue == "should there be" else said)
             if role == "condition" and _anaphoric(said, facts):
                 facts, names = _antecedent(clauses, grammatical, pointing)
