@@ -205,3 +205,16 @@ def test_a_determined_kind_is_still_an_object() -> None:
 def test_a_place_heading_with_a_doubt_asks_where_things_are(text: str, roles: dict[str, str],
                                                              conditions: set[str]) -> None:
     assert conditions <= asked(text, roles)
+
+
+# ----- a verb and its particle that say a state ---------------------------------------------------
+
+@pytest.mark.parametrize("text", [
+    # development set (study_desk_cleanup_r1)
+    "Document on the desk? A bill goes into the filing cabinet (open the drawer unless it's already pulled out, "
+    "and shut it afterwards).",
+    "File the bill in the filing cabinet: open the drawer, unless it has already been pulled out.",
+])
+def test_pulled_out_is_open(text: str) -> None:
+    assert "state(filing_cabinet, open)" in asked(text, {"document": "document", "desk": "desk",
+                                                         "filing_cabinet": "filing_cabinet"})

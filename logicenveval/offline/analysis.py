@@ -184,6 +184,14 @@ _ASIDE = re.compile(r"\s*\([^()]*\)\W*$")
 _WITHOUT = re.compile(r"^(\W*)(?:without|with no)\s+(?:a|an|any|the)?\s*(?=\w[^,]*,)", re.I)
 
 
+#: a verb and its particle that together say a state ("the drawer may be pulled out" is open):
+#: read as the state word (`STATE_WORDS`) before the clause is read
+PHRASAL_STATES = tuple((re.compile(rf"\b(?:{verbs}) (?:{particles})\b"), state) for verbs, particles, state in (
+    ("pulled|drawn|slid", "out|open", "open"),
+    ("pushed|slid", "in|shut|back in", "shut"),
+))
+
+
 def _apposition(sentence: str) -> str:
     """`Whatever is lying on it - a book, a clock, a phone - goes ...`: the listed objects are the
     subject of the generic word's predicate (`a book, a clock, a phone is lying on it - goes ...`);
@@ -510,6 +518,8 @@ class _Reader:
 
     def facts(self, text: str) -> tuple[list[Fact], tuple[str, ...]]:
         said = expand(text).lower()
+        for pattern, state in PHRASAL_STATES:
+            said = pattern.sub(state, said)
         toks = tokens(said)
         words = [t[0] for t in toks]
         mentions = self.mentions(words, toks)
