@@ -218,3 +218,33 @@ def test_a_place_heading_with_a_doubt_asks_where_things_are(text: str, roles: di
 def test_pulled_out_is_open(text: str) -> None:
     assert "state(filing_cabinet, open)" in asked(text, {"document": "document", "desk": "desk",
                                                          "filing_cabinet": "filing_cabinet"})
+
+
+# ----- a place per state; "- else ..." as a later part; "if any" with no place said --------------
+
+BATH = {"towel": "towel", "laundry_basket": "laundry_basket", "towel_rack": "towel_rack", "mirror": "mirror",
+        "cloth": "cloth", "vanity": "bathroom_vanity", "hand_towel": "hand_towel", "shirt": "shirt",
+        "hamper": "hamper", "wardrobe": "wardrobe"}
+
+
+@pytest.mark.parametrize(("text", "thing", "state"), [
+    # development set (bathroom_towel_refresh_r3)
+    ("Bath towel on the floor: wet to the laundry basket, dry to the towel rack.", "towel", "wet"),
+    ("Shirt on the floor: dirty into the hamper, clean back in the wardrobe.", "shirt", "dirty"),
+])
+def test_a_place_per_state_asks_the_state(text: str, thing: str, state: str) -> None:
+    a = analyse(brief(text, BATH), CATALOG)
+    by_id = {f.id: f for f in a.factors}
+    assert by_id[f"{thing}_{state}"].context == [(f"{thing}_on_floor", frozenset({"yes"}))]
+
+
+@pytest.mark.parametrize(("text", "thing"), [
+    # development set (bathroom_towel_refresh_r3)
+    ("Dirty mirror: clean with the microfibre cloth if any - the cloth lives in the vanity; return it, close the "
+     "vanity - else with the hand towel, then hang it on the towel rack.", "cloth"),
+    ("Mirror dirty: wipe it with the hand towel if any; put it back - otherwise with the cloth.", "hand_towel"),
+])
+def test_if_any_asks_whether_there_is_one(text: str, thing: str) -> None:
+    a = analyse(brief(text, BATH), CATALOG)
+    by_id = {f.id: f for f in a.factors}
+    assert by_id[f"{thing}_present"].context == [("mirror_dirty", frozenset({"yes"}))], by_id

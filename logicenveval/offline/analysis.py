@@ -264,9 +264,27 @@ def _heading(sentence: str) -> tuple[str, str, str] | None:
     return head, mark, rest
 
 
+def _state_places(instruction: str) -> list[tuple[str, str | None, str]]:
+    """An instruction listing a place per state of the thing spoken of ("wet to the laundry
+    basket, dry to the towel rack", "dirty into the hamper, clean back in the wardrobe"): each
+    state is a subjectless heading (a condition on that thing) and its place the instruction.
+    Empty unless every comma-separated item (two or more) opens with a state word and a place."""
+    items = [i.strip(" .!") for i in re.split(r",\s*(?:and\s+)?|;\s*", instruction) if i.strip(" .!")]
+    out: list[tuple[str, str | None, str]] = []
+    for item in items:
+        words = item.split()
+        if len(words) < 3 or words[0].lower() not in STATE_WORDS or words[1].lower() not in PLACE_PREPS | {"back"}:
+            return []
+        out += [(words[0], ":", "heading"), (" ".join(words[1:]), None, "consequence")]
+    return out if len(items) > 1 else []
+
+
 def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
     """(text, cue, role) pieces of a sentence, recursively for chained conditionals; a verbless
     heading (`_heading`) is a `heading` piece, its instruction read after it."""
+    states = _state_places(sentence)
+    if states:
+        return states  # "Bath towel on the floor: wet to the basket, dry to the rack"
     heading = _heading(sentence)
     if heading is not None:
         label, mark, instruction = heading
@@ -288,6 +306,12 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
             r",\s*(?:and|but|while)\s+|\s+but\s+|;\s*|:\s+|\s+-\s+|\s+while\s+", sentence) if p and p.strip()]
         out: list[tuple[str, str | None, str]] = []
         for p in parts:
+            alternative = re.match(rf"^\W*({'|'.join(re.escape(c) for c in ELSE_CUES[:3])})\b", p.lower())
+            if alternative is not None and out:
+                # "return it, close the vanity - else with the hand towel": a later part may be the
+                # alternative of what came before
+                out.append((p[alternative.end():].strip(" ,"), alternative.group(1), "else"))
+                continue
             if SCENE_START.match(p) or re.search(r"\b(has|have|contains)\b(?!\s+(?:been|\w+(?:ed|en))\b)",
                                                  p.lower()) and not (
                     re.search(r"\bif\b", p.lower()) or set(re.findall(r"[a-z]+", p.lower())) & UNCERTAIN):
@@ -1068,6 +1092,17 @@ def _goes(reader: _Reader, text: str) -> bool:
                                            for m in reader.lex.find_mentions(toks))
 
 
+def _available(reader: _Reader, text: str) -> list[Fact]:
+    """"clean it with the microfibre cloth if any": with no place said, whether there is one of
+    the thing named last before the cue (not a place it is used on or kept in)."""
+    low = expand(text).lower()
+    cue = re.search(r"\b(?:if|in case)\b", low)
+    toks = tokens(low[: cue.start()] if cue else low)
+    words = [w for w, _, _ in toks]
+    things = [m for m in reader.lex.find_mentions(toks) if m.kind == "role" and not _placed(words, m)]
+    return [Fact(r, f"exists({r})", "exists") for r in things[-1].roles] if things else []
+
+
 def _elaborates(clauses: list[Clause], sentence: int, text: str) -> bool:
     """The piece has no verb of its own (no finite or modal verb, no action) and follows, in the
     same sentence, a clause whose verb moves things (`MOTION`): it lists what goes where."""
@@ -1162,6 +1197,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 doubt = bool({w for w, _, _ in tokens(place[1])} & UNCERTAIN)
                 role = ("uncertain" if doubt else "scene") if role == "statement" else role
             facts, names = reader.facts("there is " + said if cue == "should there be" else said)
+            if cue == "if available" and not any(f.kind in ("location", "exists") for f in facts):
+                facts += _available(reader, said)
             if role == "condition" and _anaphoric(said, facts):
                 facts, names = _antecedent(clauses, grammatical, pointing)
                 pointing.add(len(clauses))
