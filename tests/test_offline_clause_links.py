@@ -248,3 +248,16 @@ def test_if_any_asks_whether_there_is_one(text: str, thing: str) -> None:
     a = analyse(brief(text, BATH), CATALOG)
     by_id = {f.id: f for f in a.factors}
     assert by_id[f"{thing}_present"].context == [("mirror_dirty", frozenset({"yes"}))], by_id
+
+
+# ----- a participle after "been" belongs to the verb group ---------------------------------------
+
+@pytest.mark.parametrize(("text", "roles", "condition"), [
+    # development set (bedroom_morning_tidy_r4)
+    ("If the pillow has been knocked onto the floor, it is put back on the bed.", {"pillow": "pillow", "bed": "bed"},
+     "on(pillow, floor)"),
+    ("Should the mug have been pushed onto the desk, bring it back to the sofa.",
+     {"mug": "mug", "desk": "desk", "sofa": "sofa"}, "on(mug, desk)"),
+])
+def test_a_participle_after_been_is_part_of_the_verb(text: str, roles: dict[str, str], condition: str) -> None:
+    assert condition in asked(text, roles)

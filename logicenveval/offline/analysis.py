@@ -406,6 +406,14 @@ def _verb_read(toks: list[tuple[str, int, int]], m: Mention) -> bool:
     return bool(verbs) and (word in verbs or word.endswith("s") and word[:-1] in verbs)
 
 
+def _participle(words: list[str], k: int) -> bool:
+    """Word `k` is a verb's past participle after "been" ("has been knocked onto the floor",
+    "may have been shoved under the bed"): part of the verb group, not the end of the clause."""
+    if k == 0 or words[k - 1] != "been" or not words[k].endswith(("ed", "en", "wn", "ung")):
+        return False
+    return any(lemma != words[k] for lemma in getAllLemmas(words[k]).get("VERB", ()))
+
+
 def _placed(words: list[str], m: Mention) -> bool:
     """The mention names a place or a goal: a preposition stands before it ("on the table",
     "from the big dresser")."""
@@ -797,7 +805,8 @@ class _Reader:
         k = m.end
         skipped: list[str] = []
         while k < len(words) and (words[k] in DESCRIPTIVE | MOTION | NEGATIONS | PARTS | PARTICLES
-                                  | {"top", "of", "straight", "that", "which"}) and words[k] not in PREP_ON | PREP_IN:
+                                  | {"top", "of", "straight", "that", "which"} or _participle(words, k)) \
+                and words[k] not in PREP_ON | PREP_IN:
             skipped.append(words[k])
             k += 1
             if skipped[-1] == "of" and k < len(words) and words[k].isalpha() and words[k] not in PREP_ON | PREP_IN \
