@@ -823,8 +823,9 @@ class _Reader:
         # "a book is placed on the sofa and a toy in its toy box": a second item after a place
         # shares the first one's verb (the verb is gapped), and so its goal
         prev = mentions[idx - 1] if idx > 0 else None
-        gapped = prev is not None and _placed(words, prev) and _joined(words, prev, m) and bool(
-            set(words[: prev.start]) & MOTION)
+        gapped = prev is not None and _placed(words, prev) and 0 < m.start - prev.end <= 4 and all(
+            w in LIST_WORDS or w in STATE_WORDS for w in words[prev.end : m.start]) and bool(
+            set(words[: prev.start]) & MOTION)  # (its adjectives too: "... and a clean one on the counter")
         goal = words[k] != "from" and (self._is_goal(words, m, skipped) or gapped or (
             words[k] in ("into", "onto") and not set(skipped) & SITUATION_PARTICIPLES))
         article = words[m.start - 1] if m.start > 0 else ""
