@@ -459,6 +459,8 @@ class _Reader:
 
     def mentions(self, words: list[str], toks: list[tuple[str, int, int]]) -> list[Mention]:
         found = [self._recent_first(m) for m in self.lex.find_mentions(toks) if not _verb_read(toks, m)]
+        # "the kitchen sink", "the bathroom mirror": a room's name right before a thing's names the thing
+        found = [m for m in found if m.kind != "room" or not any(x.start == m.end and x.kind == "role" for x in found)]
         relative = words[:1] in (["which"], ["who"]) and bool(self.recent) and self.topic_kind == "role"
         if relative:
             # "... hung in the wardrobe, which is opened first if its door is closed": a clause

@@ -142,8 +142,6 @@ class Lexicon:
             for n in range(min(longest, len(words) - i), 0, -1):
                 key = tuple(words[i : i + n])
                 if key in self.room_phrases and n > 0:
-                    if tuple(words[i + n : i + n + 1]) in self.phrases:
-                        break  # "the kitchen sink", "the bathroom mirror": the room names the thing after it
                     if words[i + n : i + n + 1] == ["floor"]:  # "the laundry room floor"
                         found = Mention(("floor",), i, i + n + 1, "floor")
                     else:
