@@ -280,3 +280,16 @@ def test_a_room_word_before_a_thing_names_the_thing(text: str, roles: dict[str, 
     assert said.get(goal) is True, said
     assert not any(c.startswith("in_room(") and not g for c, g in said.items()), said
     assert not any("counter" in v or "in_room" in v for f in a.factors for v in f.values.values())
+
+
+# ----- "lives" is a verb of a home, whatever the noun lemmatiser makes of it ----------------------
+
+@pytest.mark.parametrize(("text", "roles", "condition"), [
+    # development set (living_room_evening_reset_r2)
+    ("The TV remote lives on the TV stand, so if it's anywhere else, put it back.",
+     {"remote": "remote_control", "tv_stand": "tv_stand"}, "on(remote, tv_stand)"),
+    ("The mug lives on the desk; if it is anywhere else, bring it back.", {"mug": "mug", "desk": "desk"},
+     "on(mug, desk)"),
+])
+def test_lives_is_a_home_asked_against_elsewhere(text: str, roles: dict[str, str], condition: str) -> None:
+    assert condition in asked(text, roles)

@@ -22,7 +22,7 @@ from typing import Any
 from lemminflect import getAllLemmas
 
 from logicenveval.domain.catalog import Catalog, Category, load_catalog
-from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, tokens
+from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, singular, tokens
 from logicenveval.offline.placement import described_placements
 from logicenveval.offline.sentences import (
     ACTIONS,
@@ -57,6 +57,9 @@ PRONOUNS = frozenset({"it", "they", "them", "one", "ones", "its", "their", "whos
 #: verbs that say where a thing belongs ("it is kept in the vanity", "the remote lives on the
 #: stand"): said of a definite object they are still askable (see `Fact.definite`)
 HOMES = frozenset({"kept", "lives", "live"})
+#: the words as `tokens` gives them: the noun lemma of a verb form ("lives" -> "life")
+HOMES |= frozenset(singular(w) for w in HOMES)
+DESCRIPTIVE |= frozenset(singular(w) for w in HOMES)
 #: participles that turn a noun phrase into a description of the current situation
 SITUATION_PARTICIPLES = frozenset({"left", "lying", "lie", "lies", "sitting", "found", "dropped", "fallen", "fell",
                                    "slipped", "rolled",
@@ -1209,7 +1212,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 doubt = bool({w for w, _, _ in tokens(place[1])} & UNCERTAIN)
                 role = ("uncertain" if doubt else "scene") if role == "statement" else role
             facts, names = reader.facts("there is " + said if cue == "should there be" else said)
-            if cue == "if available" and not any(f.kind in ("location", "exists") for f in facts):
+            if cue == "if available" and not any(f.kind in ("location", "exists") and not f.home for f in facts):
                 facts += _available(reader, said)
             if role == "condition" and _anaphoric(said, facts):
                 facts, names = _antecedent(clauses, grammatical, pointing)
@@ -1278,7 +1281,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             context = [c for c in context if (c[0], c[1]) not in restated]
         for f in cl.facts:
             if f.derived and (f.subject, f.key) not in contrasted or f.home and cl.role in (
-                    "condition", "consequence", "else"):
+                    "condition", "consequence", "else", "uncertain"):
                 # "if there is one (it is kept in the vanity)", "(spares are kept there)": where a
                 # thing is kept, said in a condition or an instruction, asks nothing (a stated home
                 # is weighed against the rest of the text by `_settle_stated`)
