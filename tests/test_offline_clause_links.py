@@ -293,3 +293,29 @@ def test_a_room_word_before_a_thing_names_the_thing(text: str, roles: dict[str, 
 ])
 def test_lives_is_a_home_asked_against_elsewhere(text: str, roles: dict[str, str], condition: str) -> None:
     assert condition in asked(text, roles)
+
+
+@pytest.mark.parametrize(("text", "roles", "absent"), [
+    # issue-22 paraphrase set (living_room_toy_boxes)
+    ("The stain on the floor has to be cleaned: use the wet wipes from the tea table in case there are some, and "
+     "otherwise the wet mop leaning against the wall.", {"wet_wipe": "wet_wipe", "table": "coffee_table",
+                                                          "mop": "mop", "stain": "floor_stain"}, "mop"),
+    ("Wipe the desk with the sponge if there is one, and otherwise with the cloth.",
+     {"sponge": "sponge", "desk": "desk", "cloth": "cloth"}, "cloth"),
+])
+def test_and_otherwise_is_the_alternative(text: str, roles: dict[str, str], absent: str) -> None:
+    a = analyse(brief(text, roles), CATALOG)
+    assert any(cl.role == "else" for cl in a.clauses), a.clauses
+    assert f"exists({absent})" not in {v for f in a.factors for v in f.values.values()}
+
+
+def test_a_home_in_an_instruction_keeps_the_sentence_under_the_conditions_before() -> None:
+    """issue-22 paraphrase set (bathroom_towel_refresh) and a sentence written for the test."""
+    for text, thing in (
+            ("The mirror: clean it if it is dirty. Use the microfibre cloth, which lives in the vanity, if we still "
+             "have it; if there is no cloth, use the hand towel.", "cloth"),
+            ("The mirror: clean it if it is dirty. Use the sponge, which is kept in the vanity, if we still have "
+             "it; otherwise use the hand towel.", "sponge")):
+        roles = {"mirror": "mirror", thing: thing, "vanity": "bathroom_vanity", "hand_towel": "hand_towel"}
+        by_id = {f.id: f for f in analyse(brief(text, roles), CATALOG).factors}
+        assert by_id[f"{thing}_present"].context == [("mirror_dirty", frozenset({"yes"}))], by_id

@@ -375,6 +375,10 @@ def _subsplit(pieces: list[tuple[str, str | None, str]]) -> list[tuple[str, str 
         splitter = r",\s*(?:and|but|then)\s+" + (r"|,\s*(?=the\s)" if role == "consequence" else "")
         parts = [p for p in re.split(splitter, text) if p.strip()] or ([text] if role == "condition" else [])
         for i, part in enumerate(parts):
+            alternative = re.match(rf"^\W*({'|'.join(re.escape(c) for c in ELSE_CUES[:3])})\b", part.lower())
+            if i > 0 and alternative is not None:  # "... if there are some, and otherwise the mop"
+                out.append((part[alternative.end():].strip(" ,"), alternative.group(1), "else"))
+                continue
             out.append((part, cue, role if i == 0 or role != "condition" else "consequence"))
     return out
 
@@ -1251,7 +1255,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         if cl.sentence != current_sentence:
             # ... unless it speaks of a situation of its own ("Finally, a dirty mirror is cleaned:")
             carried = context if cl.role in ("statement", "consequence") and not any(
-                not f.goal and not f.derived for f in cl.facts) else []
+                not f.goal and not f.derived and not f.home for f in cl.facts) else []
             current_sentence, context = cl.sentence, []
         elif (cl.role == "condition" and ci >= 2 and clauses[ci - 1].role == "consequence"
               and clauses[ci - 2].role == "condition" and clauses[ci - 2].sentence == cl.sentence
