@@ -21,8 +21,8 @@ from typing import Any
 
 from lemminflect import getAllLemmas
 
-from logicenveval.domain.catalog import Catalog, load_catalog
-from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, tokens
+from logicenveval.domain.catalog import Catalog, Category, load_catalog
+from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, singular, tokens
 from logicenveval.offline.placement import described_placements
 from logicenveval.offline.sentences import (
     ACTIONS,
@@ -36,6 +36,7 @@ from logicenveval.offline.sentences import (
     habitual,
     split_sentences,
 )
+from logicenveval.scene.compat import can_hold
 
 #: words between a subject and its predicate that describe a current situation
 DESCRIPTIVE = frozenset(
@@ -60,6 +61,9 @@ PRONOUNS = frozenset({"it", "they", "them", "one", "ones", "its", "their", "whos
 #: verbs that say where a thing belongs ("it is kept in the vanity", "the remote lives on the
 #: stand"): said of a definite object they are still askable (see `Fact.definite`)
 HOMES = frozenset({"kept", "lives", "live"})
+#: the words as `tokens` gives them: the noun lemma of a verb form ("lives" -> "life")
+HOMES |= frozenset(singular(w) for w in HOMES)
+DESCRIPTIVE |= frozenset(singular(w) for w in HOMES)
 #: participles that turn a noun phrase into a description of the current situation
 SITUATION_PARTICIPLES = frozenset({"left", "lying", "lie", "lies", "sitting", "found", "dropped", "fallen", "fell",
                                    "slipped", "rolled",
@@ -118,6 +122,8 @@ class Fact:
     #: said of a definite object ("the tablet is lying on the chair"): in a plain statement a
     #: fact the environment keeps, not an uncertain factor
     definite: bool = False
+    #: where the thing is kept or lives (`HOMES`): its norm, never a situation to ask about
+    home: bool = False
 
 
 @dataclass(frozen=True)
@@ -185,6 +191,14 @@ _ASIDE = re.compile(r"\s*\([^()]*\)\W*$")
 _WITHOUT = re.compile(r"^(\W*)(?:without|with no)\s+(?:a|an|any|the)?\s*(?=\w[^,]*,)", re.I)
 
 
+#: a verb and its particle that together say a state ("the drawer may be pulled out" is open):
+#: read as the state word (`STATE_WORDS`) before the clause is read
+PHRASAL_STATES = tuple((re.compile(rf"\b(?:{verbs}) (?:{particles})\b"), state) for verbs, particles, state in (
+    ("pulled|drawn|slid", "out|open", "open"),
+    ("pushed|slid", "in|shut|back in", "shut"),
+))
+
+
 def _apposition(sentence: str) -> str:
     """`Whatever is lying on it - a book, a clock, a phone - goes ...`: the listed objects are the
     subject of the generic word's predicate (`a book, a clock, a phone is lying on it - goes ...`);
@@ -249,17 +263,35 @@ def _heading(sentence: str) -> tuple[str, str, str] | None:
     words = [w for w, _, _ in tokens(expand(head))]
     if not words or len(words) > 10 or set(words) & CLAUSE_WORDS or _imperative(words):
         return None
-    if _first_cue(head.lower(), CONDITIONAL) or any(w in UNCERTAIN for w in words):
-        return None
+    if _first_cue(head.lower(), CONDITIONAL) or any(w in UNCERTAIN for w in words) and words[0] not in PLACE_PREPS:
+        return None  # (a place may carry a doubt: "On the bed, maybe: a book, a phone")
     mark = m.group("mark").strip()
     if mark == "-" and not rest:
         return None
     return head, mark, rest
 
 
+def _state_places(instruction: str) -> list[tuple[str, str | None, str]]:
+    """An instruction listing a place per state of the thing spoken of ("wet to the laundry
+    basket, dry to the towel rack", "dirty into the hamper, clean back in the wardrobe"): each
+    state is a subjectless heading (a condition on that thing) and its place the instruction.
+    Empty unless every comma-separated item (two or more) opens with a state word and a place."""
+    items = [i.strip(" .!") for i in re.split(r",\s*(?:and\s+)?|;\s*", instruction) if i.strip(" .!")]
+    out: list[tuple[str, str | None, str]] = []
+    for item in items:
+        words = item.split()
+        if len(words) < 3 or words[0].lower() not in STATE_WORDS or words[1].lower() not in PLACE_PREPS | {"back"}:
+            return []
+        out += [(words[0], ":", "heading"), (" ".join(words[1:]), None, "consequence")]
+    return out if len(items) > 1 else []
+
+
 def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
     """(text, cue, role) pieces of a sentence, recursively for chained conditionals; a verbless
     heading (`_heading`) is a `heading` piece, its instruction read after it."""
+    states = _state_places(sentence)
+    if states:
+        return states  # "Bath towel on the floor: wet to the basket, dry to the rack"
     heading = _heading(sentence)
     if heading is not None:
         label, mark, instruction = heading
@@ -281,6 +313,12 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
             r",\s*(?:and|but|while)\s+|\s+but\s+|;\s*|:\s+|\s+-\s+|\s+while\s+", sentence) if p and p.strip()]
         out: list[tuple[str, str | None, str]] = []
         for p in parts:
+            alternative = re.match(rf"^\W*({'|'.join(re.escape(c) for c in ELSE_CUES[:3])})\b", p.lower())
+            if alternative is not None and out:
+                # "return it, close the vanity - else with the hand towel": a later part may be the
+                # alternative of what came before
+                out.append((p[alternative.end():].strip(" ,"), alternative.group(1), "else"))
+                continue
             if SCENE_START.match(p) or re.search(r"\b(has|have|contains)\b(?!\s+(?:been|\w+(?:ed|en))\b)",
                                                  p.lower()) and not (
                     re.search(r"\bif\b", p.lower()) or set(re.findall(r"[a-z]+", p.lower())) & UNCERTAIN):
@@ -294,6 +332,12 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
     after = re.match(r"\W*([a-z' ]{0,30}?)\W*(?:$|[,;]|\s-\s)", expand(low[start + len(cue):]))
     if cue in ("if", "in case") and after and set(after.group(1).split()) & AVAILABILITY \
             and len(after.group(1).split()) <= 3 and not set(after.group(1).split()) & NEGATIONS:
+        # "with the wipes if there are any, else with the mop": the alternative is its own piece
+        other = re.search(r"[,;]\s*(?:otherwise|else|or else|failing that)\b", sentence[start:], re.I)
+        if other is not None:
+            cut = start + other.start()
+            return [(sentence[:cut], "if available", "uncertain"),
+                    (sentence[start + other.end():].strip(" ,"), "otherwise", "else")]
         return [(sentence, "if available", "uncertain")]
     head = sentence[:start].strip(" ,-")
     if set(re.findall(r"[a-z]+", head.lower())) <= DISCOURSE:
@@ -336,6 +380,10 @@ def _subsplit(pieces: list[tuple[str, str | None, str]]) -> list[tuple[str, str 
         splitter = r",\s*(?:and|but|then)\s+" + (r"|,\s*(?=the\s)" if role == "consequence" else "")
         parts = [p for p in re.split(splitter, text) if p.strip()] or ([text] if role == "condition" else [])
         for i, part in enumerate(parts):
+            alternative = re.match(rf"^\W*({'|'.join(re.escape(c) for c in ELSE_CUES[:3])})\b", part.lower())
+            if i > 0 and alternative is not None:  # "... if there are some, and otherwise the mop"
+                out.append((part[alternative.end():].strip(" ,"), alternative.group(1), "else"))
+                continue
             out.append((part, cue, role if i == 0 or role != "condition" else "consequence"))
     return out
 
@@ -343,8 +391,13 @@ def _subsplit(pieces: list[tuple[str, str | None, str]]) -> list[tuple[str, str 
 def _joined(words: list[str], a: Mention, b: Mention) -> bool:
     """Mentions `a` and `b` are items of one list (`a book or a toy`, `cups, plates and bowls`)."""
     between = words[a.end : b.start]
-    return 0 < len(between) <= 3 and all(w in {"or", "and", "a", "an", "the", "some", "any", "either"}
-                                          for w in between)
+    return 0 < len(between) <= 3 and all(w in LIST_WORDS for w in between)
+
+
+#: words that may stand between two items of one list: conjunctions and determiners, possessive
+#: ones included ("a book, my alarm clock or my phone")
+LIST_WORDS = frozenset({"or", "and", "a", "an", "the", "some", "any", "either", "my", "your", "our", "his",
+                        "her", "their"})
 
 
 #: words that open a verb's object: a one-word mention right before one is the verb ("stand it in
@@ -365,6 +418,14 @@ def _verb_read(toks: list[tuple[str, int, int]], m: Mention) -> bool:
     return bool(verbs) and (word in verbs or word.endswith("s") and word[:-1] in verbs)
 
 
+def _participle(words: list[str], k: int) -> bool:
+    """Word `k` is a verb's past participle after "been" ("has been knocked onto the floor",
+    "may have been shoved under the bed"): part of the verb group, not the end of the clause."""
+    if k == 0 or words[k - 1] != "been" or not words[k].endswith(("ed", "en", "wn", "ung")):
+        return False
+    return any(lemma != words[k] for lemma in getAllLemmas(words[k]).get("VERB", ()))
+
+
 def _placed(words: list[str], m: Mention) -> bool:
     """The mention names a place or a goal: a preposition stands before it ("on the table",
     "from the big dresser")."""
@@ -378,10 +439,13 @@ def _negation(word: str) -> bool:
 class _Reader:
     """Extracts facts clause by clause, remembering topics for pronouns."""
 
-    def __init__(self, lex: Lexicon, capable: Mapping[str, frozenset[str]] | None = None) -> None:
+    def __init__(self, lex: Lexicon, capable: Mapping[str, frozenset[str]] | None = None,
+                 kinds: Mapping[str, Category] | None = None) -> None:
         self.lex = lex
         #: role -> the state flags its kind can take (`FITTED`), from the catalog
         self.capable = dict(capable or {})
+        #: role -> its catalog category, to tell a placement the scene can hold from a misreading
+        self.kinds = dict(kinds or {})
         self.topic: tuple[str, ...] = ()
         self.topic_kind = "role"
         self.recent: list[str] = []
@@ -407,6 +471,8 @@ class _Reader:
 
     def mentions(self, words: list[str], toks: list[tuple[str, int, int]]) -> list[Mention]:
         found = [self._recent_first(m) for m in self.lex.find_mentions(toks) if not _verb_read(toks, m)]
+        # "the kitchen sink", "the bathroom mirror": a room's name right before a thing's names the thing
+        found = [m for m in found if m.kind != "room" or not any(x.start == m.end and x.kind == "role" for x in found)]
         relative = words[:1] in (["which"], ["who"]) and bool(self.recent) and self.topic_kind == "role"
         if relative:
             # "... hung in the wardrobe, which is opened first if its door is closed": a clause
@@ -466,6 +532,11 @@ class _Reader:
                 # pronoun means the nearest thing named in the plural, not a singular topic
                 found.append(Mention((next(r for r in reversed(self.recent) if r in self.plural),), i, i + 1,
                                      "pronoun"))
+            elif w in ("it", "its") and any(p.kind == "pronoun" and p.start < i for p in found):
+                # "if there is one (it is kept in the vanity)": with nothing named before it, a
+                # pronoun speaks of what the clause's earlier pronoun meant
+                prior = [p for p in found if p.kind == "pronoun" and p.start < i]
+                found.append(Mention(prior[-1].roles, i, i + 1, "pronoun"))
             elif self.topic:
                 found.append(Mention(self.topic, i, i + 1, "pronoun" if self.topic_kind == "role" else "floor"))
         found.sort(key=lambda m: m.start)
@@ -493,6 +564,8 @@ class _Reader:
 
     def facts(self, text: str) -> tuple[list[Fact], tuple[str, ...]]:
         said = expand(text).lower()
+        for pattern, state in PHRASAL_STATES:
+            said = pattern.sub(state, said)
         toks = tokens(said)
         words = [t[0] for t in toks]
         mentions = self.mentions(words, toks)
@@ -600,7 +673,8 @@ class _Reader:
                               for r in self.topic]
                     break
         said_by_pronoun = {r for m in mentions if m.kind == "pronoun" for r in m.roles}
-        facts = [self._fit(f) if f.kind == "state" and f.subject in said_by_pronoun else f for f in facts]
+        facts = [self._fit(f) if f.kind == "state" and f.subject in said_by_pronoun else f for f in facts
+                 if self._holds(f)]
         for f in facts:
             if f.kind == "location" and not f.goal:
                 self.last_location[f.subject] = f
@@ -610,6 +684,15 @@ class _Reader:
                 self.last_state[f.key] = f
         names = tuple(dict.fromkeys(r for m in subjects for r in m.roles))
         return list(dict.fromkeys(facts)), names
+
+    def _holds(self, f: Fact) -> bool:
+        """A thing on or in a role that cannot hold it (a sofa in a toy box, a phone on a book:
+        `scene.compat.can_hold` on their catalog sizes and kinds) is a misreading, not a fact."""
+        relation = f.condition.split("(", 1)[0]
+        item, holder = self.kinds.get(f.subject), self.kinds.get(f.key)
+        if f.kind != "location" or relation not in ("on", "inside") or item is None or holder is None:
+            return True
+        return can_hold(item, holder, relation)
 
     def _fit(self, f: Fact) -> Fact:
         """A pronoun's state said of a thing that cannot take it ("hang the shirt in the wardrobe
@@ -712,7 +795,10 @@ class _Reader:
     def _subjects(self, words: list[str], mentions: list[Mention], idx: int) -> list[str]:
         group = [idx]
         j = idx - 1
-        while j >= 0 and mentions[j].kind in ("role", "pronoun") and _joined(words, mentions[j], mentions[j + 1]):
+        while j >= 0 and mentions[j].kind in ("role", "pronoun") and _joined(words, mentions[j], mentions[j + 1]) \
+                and not _placed(words, mentions[j]):
+            # "the book on the couch, a toy in the box": a place named before a new item is no
+            # item of its list (the comma is gone from the words)
             group.insert(0, j)
             j -= 1
         return [r for g in group for r in mentions[g].roles]
@@ -739,7 +825,7 @@ class _Reader:
         while k < len(words) and (words[k] in DESCRIPTIVE | MOTION | NEGATIONS | PARTS | PARTICLES | aspect
                                   | {"top", "of", "straight", "that", "which"}
                                   or words[k] == "to" and bool(skipped) and skipped[-1] in TEND
-                                  ) and words[k] not in PREP_ON | PREP_IN:
+                                  or _participle(words, k)) and words[k] not in PREP_ON | PREP_IN:
             skipped.append(words[k])
             k += 1
             if skipped[-1] == "of" and k < len(words) and words[k].isalpha() and words[k] not in PREP_ON | PREP_IN \
@@ -755,7 +841,13 @@ class _Reader:
         if words[k] == "from" and (skipped or m.kind != "role" or set(words[max(0, m.start - 4) : m.start]) & SOURCE_VERBS):
             return []  # "fill it from the bag" names a source, not where the object is
         # "the wipes from the table": where the object is now, whatever verb precedes it
-        goal = words[k] != "from" and (self._is_goal(words, m, skipped) or (
+        # "a book is placed on the sofa and a toy in its toy box": a second item after a place
+        # shares the first one's verb (the verb is gapped), and so its goal
+        prev = mentions[idx - 1] if idx > 0 else None
+        gapped = prev is not None and _placed(words, prev) and 0 < m.start - prev.end <= 4 and all(
+            w in LIST_WORDS or w in STATE_WORDS for w in words[prev.end : m.start]) and bool(
+            set(words[: prev.start]) & MOTION)  # (its adjectives too: "... and a clean one on the counter")
+        goal = words[k] != "from" and (self._is_goal(words, m, skipped) or gapped or (
             words[k] in ("into", "onto") and not set(skipped) & SITUATION_PARTICIPLES))
         article = words[m.start - 1] if m.start > 0 else ""
         # where a thing is kept or lives is a norm `_settle_stated` weighs against the rest of
@@ -787,7 +879,7 @@ class _Reader:
                     else:
                         cond = f"inside({s}, {t})"
                     out.append(Fact(s, cond, "location", t, negated=negated and not goal, goal=goal,
-                                    modifier=modifier, definite=definite))
+                                    modifier=modifier, definite=definite, home=bool(set(skipped) & HOMES)))
             k = target.end
             while k < len(words) and words[k] in {"or", "and", "either", "the", "a"}:
                 k += 1
@@ -1057,6 +1149,27 @@ def _goes(reader: _Reader, text: str) -> bool:
                                            for m in reader.lex.find_mentions(toks))
 
 
+def _available(reader: _Reader, text: str) -> list[Fact]:
+    """"clean it with the microfibre cloth if any": with no place said, whether there is one of
+    the thing named last before the cue (not a place it is used on or kept in)."""
+    low = expand(text).lower()
+    cue = re.search(r"\b(?:if|in case)\b", low)
+    toks = tokens(low[: cue.start()] if cue else low)
+    words = [w for w, _, _ in toks]
+    things = [m for m in reader.lex.find_mentions(toks) if m.kind == "role" and not _placed(words, m)]
+    return [Fact(r, f"exists({r})", "exists") for r in things[-1].roles] if things else []
+
+
+def _elaborates(clauses: list[Clause], sentence: int, text: str) -> bool:
+    """The piece has no verb of its own (no finite or modal verb, no action) and follows, in the
+    same sentence, a clause whose verb moves things (`MOTION`): it lists what goes where."""
+    if not clauses or clauses[-1].sentence != sentence or clauses[-1].role not in ("statement", "consequence"):
+        return False
+    words = {w for w, _, _ in tokens(expand(text))}
+    before = {w for w, _, _ in tokens(expand(clauses[-1].text))}
+    return bool(before & MOTION) and not words & (CLAUSE_WORDS | ACTIONS | MOTION | DESCRIPTIVE | UNCERTAIN)
+
+
 def _place_heading(reader: _Reader, text: str) -> bool:
     """The heading is a place where things lie and nothing else ("On the floor", "On the table";
     a room, "In the kitchen:", only says where the instructions happen)."""
@@ -1100,7 +1213,9 @@ def _capabilities(brief: Mapping[str, Any], catalog: Catalog) -> dict[str, froze
 
 def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     lex = Lexicon.build(brief, catalog)
-    reader = _Reader(lex, _capabilities(brief, catalog))
+    kinds = {name: cat for name, role in dict(brief.get("roles") or {}).items()
+             if (cat := catalog.get(str(role.get("category", "")))) is not None}
+    reader = _Reader(lex, _capabilities(brief, catalog), kinds)
     sentences = split_sentences(str(brief["description"]))
     clauses: list[Clause] = []
     grammatical = 0  # pieces split at ':' or ';' still belong to one sentence for grouping
@@ -1136,18 +1251,27 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 said = f"it goes {said}"  # "dry: on the shoe rack", "clean - onto the armchair"
             if place[0] == grammatical:
                 said = f"{said.rstrip(' .;,')} {place[1]}"
-                role = "scene" if role == "statement" else role
+                doubt = bool({w for w, _, _ in tokens(place[1])} & UNCERTAIN)
+                role = ("uncertain" if doubt else "scene") if role == "statement" else role
             facts, names = reader.facts("there is " + said if cue == "should there be" else said)
+            if cue == "if available" and not any(f.kind in ("location", "exists") and not f.home for f in facts):
+                facts += _available(reader, said)
             if role == "condition" and _anaphoric(said, facts):
                 facts, names = _antecedent(clauses, grammatical, pointing)
                 pointing.add(len(clauses))
                 if "not" in {w for w, _, _ in tokens(expand(said))}:
                     # "the drawer might already be open, and if it isn't, open it": the opposite
                     facts = [replace(f, negated=not f.negated) for f in facts]
-            elif role == "condition" and facts and all(f.goal for f in facts) and not set(
-                    w for w, _, _ in tokens(said)) & AGENTS:
+            elif role == "statement" and _elaborates(clauses, grammatical, said):
+                # "anything on the floor should go where it belongs - the book on the couch, a toy
+                # in the toy box": a verbless list after a clause that moves things says where each
+                # goes, not where it is
+                facts = [replace(f, goal=True) if f.kind == "location" else f for f in facts]
+            elif (role == "condition" or role == "uncertain" and "been" in {w for w, _, _ in tokens(said)}) \
+                    and facts and all(f.goal for f in facts) and not set(w for w, _, _ in tokens(said)) & AGENTS:
                 # "if it has been thrown on the floor", "whenever the jacket ends up on the
-                # floor": in a condition a moved object's place is the situation, not a goal
+                # floor": in a condition a moved object's place is the situation, not a goal; so
+                # in a guess at what has happened ("wet wipes may have been put on the table")
                 facts = [replace(f, goal=False) for f in facts]
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
         if sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences):
@@ -1169,7 +1293,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         if cl.sentence != current_sentence:
             # ... unless it speaks of a situation of its own ("Finally, a dirty mirror is cleaned:")
             carried = context if cl.role in ("statement", "consequence") and not any(
-                not f.goal and not f.derived for f in cl.facts) else []
+                not f.goal and not f.derived and not f.home for f in cl.facts) else []
             current_sentence, context = cl.sentence, []
         elif (cl.role == "condition" and ci >= 2 and clauses[ci - 1].role == "consequence"
               and clauses[ci - 2].role == "condition" and clauses[ci - 2].sentence == cl.sentence
@@ -1198,7 +1322,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                         for f in cl.facts if not f.goal}
             context = [c for c in context if (c[0], c[1]) not in restated]
         for f in cl.facts:
-            if f.derived and (f.subject, f.key) not in contrasted:
+            if f.derived and (f.subject, f.key) not in contrasted or f.home and cl.role in (
+                    "condition", "consequence", "else", "uncertain"):
+                # "if there is one (it is kept in the vanity)", "(spares are kept there)": where a
+                # thing is kept, said in a condition or an instruction, asks nothing (a stated home
+                # is weighed against the rest of the text by `_settle_stated`)
                 continue
             if f.goal or not (conditional or (f.modifier and cl.role not in ("scene",)
                                               # "The tablet is lying on the chair.": stated, kept

@@ -190,6 +190,11 @@ class Lexicon:
             return tuple(r for r in cands if r not in spares)
         window = set(words[max(0, i - 3) : i])
         picked = [r for r in cands if set(self.fixed.get(r, {}).values()) & window]
+        if not picked:
+            # "no toilet roll by the toilet" is the roll in use, "the spare roll" the spare: a
+            # role named a spare is meant only where a spare word says so
+            spare = [r for r in cands if words_of(r)[0] in SPARE_WORDS]
+            picked = spare if window & SPARE_WORDS else [r for r in cands if r not in spare]
         return tuple(picked or cands)
 
     def attribute_of(self, role: str, word: str) -> tuple[str, str] | None:

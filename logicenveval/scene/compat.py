@@ -50,6 +50,16 @@ def _vol(s: tuple[float, float, float]) -> float:
     return s[0] * s[1] * s[2]
 
 
+def can_hold(item: Category, holder: Category, relation: str) -> bool:
+    """Whether an `item` of its category can be `on` or `inside` a `holder` of its category at
+    all (a surface / a container it fits in, its smallest size against the holder's largest):
+    the same tests `check_relations` applies, for a reader that must not propose what it rules out."""
+    if relation == "on":
+        return holder.surface and _fits(item.size_min, holder.size_max, with_height=False) \
+            and _vol(item.size_min) <= _vol(holder.size_max)
+    return holder.container and _fits(item.size_min, holder.size_max, with_height=True)
+
+
 def check_relations(objects: Sequence[ObjectLike], relations: Sequence[RelationLike],
                     catalog: Catalog) -> list[Incompatibility]:
     """Every contradiction among placements and relations; empty when compatible."""
