@@ -82,7 +82,8 @@ def test_outputs_and_result_keys(first_run: Path) -> None:
     cost = results["timing"]["per_task"]
     assert set(cost) == set(GENERATORS.split(",")) and set(cost["logicenvgen"]) == set(TASKS.split(","))
     assert set(cost["logicenvgen"]["clean_living_room"]) == {
-        "generation_seconds", "requests", "cache_hits", "reasks", "prompt_tokens", "completion_tokens", "latency_s"}
+        "generation_seconds", "requests", "cache_hits", "reasks", "prompt_tokens", "completion_tokens", "latency_s",
+        "recorded_replies", "recorded_prompt_tokens", "recorded_completion_tokens", "recorded_seconds"}
     assert results["protocol"] == 5 and results["results"]["logicenvgen"]["realised_share"] == 1.0
 
 
