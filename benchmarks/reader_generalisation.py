@@ -9,6 +9,8 @@ prints LogCov / SceVR / FauDR for each, then per task:
   roles, trees, constraints and BTs as their originals (tools/build_reworded_tasks.py);
 - `new`: tests/data/reader_dev/tasks_new/ — tasks written from scratch in rooms and with objects
   the built-in tasks do not use;
+- `dev2 new`: tests/data/reader_dev2/tasks_new/ — the second development set (the first has been
+  tuned on): new tasks in other registers (a voice transcript, a house-sitter's note, ...);
 - `held-out reworded` and `held-out new`: tests/data/reader_holdout/ — the held-out counterparts,
   rewordings of the 13 built-in descriptions the development set leaves out and new tasks in
   rooms and with objects neither the built-in tasks nor the development set use.
@@ -51,10 +53,12 @@ from logicenveval.runner.run import run
 
 ROOT = Path(__file__).resolve().parents[1]
 DEV = ROOT / "tests" / "data" / "reader_dev"
+DEV2 = ROOT / "tests" / "data" / "reader_dev2"
 HOLDOUT = ROOT / "tests" / "data" / "reader_holdout"
 #: (row name, tasks folder; None = the built-in tasks)
 SETS: tuple[tuple[str, Path | None], ...] = (
     ("built-in", None), ("reworded", DEV / "tasks_reworded"), ("new", DEV / "tasks_new"),
+    ("dev2 new", DEV2 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
 )
 #: rows that show only their aggregate: per-task figures and `--why` reasons of the held-out sets
