@@ -135,6 +135,9 @@ class ReplyCache:
         conn: sqlite3.Connection | None = getattr(self._local, "conn", None)
         if conn is None or getattr(self._local, "pid", None) != os.getpid():
             conn = self._open()
+            # whether rows carry a recorded cost: a read-only pack written before the columns has none
+            columns = {str(row[1]) for row in conn.execute("PRAGMA table_info(replies)")}
+            self._local.has_cost = all(name in columns for name, _ in COST_COLUMNS)
             self._local.conn, self._local.pid = conn, os.getpid()
         return conn
 
@@ -147,7 +150,7 @@ class ReplyCache:
         or the model reported no usage)."""
         def read() -> tuple[str, RecordedCost | None] | None:
             conn = self._conn()
-            if not self._has_cost(conn):
+            if not self._local.has_cost:
                 row = conn.execute("SELECT reply FROM replies WHERE key = ?", (key,)).fetchone()
                 return None if row is None else (str(row[0]), None)
             row = conn.execute("SELECT reply, prompt_tokens, completion_tokens, seconds FROM replies "
@@ -157,14 +160,6 @@ class ReplyCache:
             cost = None if row[3] is None else RecordedCost(int(row[1] or 0), int(row[2] or 0), float(row[3]))
             return str(row[0]), cost
         return _retrying(read)
-
-    def _has_cost(self, conn: sqlite3.Connection) -> bool:
-        known: bool | None = getattr(self._local, "has_cost", None)
-        if known is None or getattr(self._local, "cost_conn", None) is not conn:
-            columns = {str(row[1]) for row in conn.execute("PRAGMA table_info(replies)")}
-            known = all(name in columns for name, _ in COST_COLUMNS)
-            self._local.has_cost, self._local.cost_conn = known, conn
-        return known
 
     def put(self, key: str, provider: str, model: str, kind: str, reply: str,
             cost: RecordedCost | None = None) -> None:

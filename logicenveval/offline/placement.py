@@ -412,10 +412,7 @@ def _prep_index(words: list[str], start: int) -> int:
 def _prep_before(words: list[str], start: int) -> str | None:
     """The preposition right before a mention, articles and adjectives skipped ("in the vanity",
     "next to the stool")."""
-    j = start - 1
-    while j >= 0 and (words[j] in ARTICLES or words[j] in COLOR_WORDS or words[j] in STATE_WORDS
-                      and words[j] not in ("on", "out", "off")):
-        j -= 1
+    j = _prep_index(words, start)
     if j < 0:
         return None
     w = words[j]
