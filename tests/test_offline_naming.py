@@ -256,3 +256,21 @@ def test_a_bare_plural_of_a_named_things_kind_is_a_class_not_an_object(text: str
     assert named <= names and not names & not_named, names
     assert {"doll", "toy_car"} <= {o["name"] for o in name_objects(
         "A doll and a toy car lie on the floor next to a toy.", load_catalog(), ["kids_room"])}
+
+
+@pytest.mark.parametrize(("text", "category", "names"), [
+    # dev2 (a kitchenette checklist): a numeral, and words about the group before the colon
+    ("[ ] 2 cups left out today: Dave's cup and Priya's cup. Each one: if dirty, wash it.", "cup",
+     ["dave_cup", "priya_cup"]),
+    # written here: a bathroom, a numeral and a heading that says where the group hangs
+    ("There are 2 towels hanging by the shower: Tom's towel and Anna's towel.", "towel",
+     ["tom_towel", "anna_towel"]),
+    # written here: a count word, the heading after a dash
+    ("Three laundry baskets stand in the utility room - a white basket, a black basket and a red "
+     "basket.", "laundry_basket", ["white_laundry_basket", "black_laundry_basket", "red_laundry_basket"]),
+])
+def test_a_counted_list_starts_after_its_heading(text: str, category: str, names: list[str]) -> None:
+    """A count (a word or a numeral) and the colon or dash that ends the group's heading: what
+    stands between the counted noun and the colon ("left out today", "hanging by the shower")
+    says more of the whole group and names no object; the items come after it."""
+    assert _of(text, category) == names

@@ -46,7 +46,7 @@ _NOUN_LEADS = frozenset({"with", "and", "or", "plus"})
 #: prepositions: an item holding one is a clause, not a noun phrase ("are in the kitchen")
 _PREPOSITIONS = frozenset({"on", "onto", "in", "into", "inside", "from", "by", "near", "under", "of",
                            "to", "at", "beside", "behind", "with"})
-_COUNTS = {"two": 2, "three": 3, "four": 4, "five": 5, "both": 2}
+_COUNTS = {"two": 2, "three": 3, "four": 4, "five": 5, "both": 2, "2": 2, "3": 3, "4": 4, "5": 5}
 #: "a fresh bag": the spare when the kind was already named in use ("the full bag"), else the
 #: one in use ("a fresh diaper is lying on the changing table")
 _FRESH = frozenset({"fresh", "new"})
@@ -290,6 +290,8 @@ class _Reader:
                 start, end = self.text.sentence_start(i), self.text.sentence_end(i)
             else:
                 start, end = j + n, self.text.sentence_end(j + n - 1)
+                if count:
+                    start = self.after_heading(start, end)
             found = self.read_items(category, start, end, count)
             if len(found) >= max(2, count):
                 self.kinds.setdefault(category, _Kind()).generic = True
@@ -299,6 +301,14 @@ class _Reader:
                 i = end
                 continue
             i += 1
+
+    def after_heading(self, start: int, end: int) -> int:
+        """Where the items of a counted list start: after the colon or dash that ends its heading
+        ("2 cups left out today: Dave's cup and Priya's cup", "three bins by the back door - one
+        for paper, ..."): what stands between the counted noun and the colon says more of the
+        whole group, no item of it. Without such a break, right after the noun."""
+        colon = next((k for k in range(start, end) if _HEADING.search(self.text.gaps[k])), None)
+        return start if colon is None or colon == start else colon
 
     def group_kind(self, j: int) -> tuple[int, str | None]:
         """The kind of the noun phrase at word `j` that may head a list: a catalog kind, or a part
