@@ -476,3 +476,33 @@ def test_a_place_the_task_moves_a_thing_to_keeps_asking_about_it(text: str, firs
     a = analyse(brief(text, "flashlight", "cardboard_box", "blanket", "armchair"), CATALOG)
     tree = nest([f for f in a.factors if f.id in (first, then)])
     assert tree["var"] == first and tree["branches"]["no"].get("var") == then, tree
+
+
+# ----- a distributive phrase, "if not <place>" -------------------------------------------------
+
+def _real_factors(description: str, rooms: list[str], **roles: str) -> dict[str, set[str]]:
+    from logicenveval.domain.catalog import load_catalog
+
+    b = {"id": "t", "description": description, "rooms": rooms,
+         "roles": {r: {"category": c, "attributes": {}} for r, c in roles.items()}}
+    return {f.id: set(f.values.values()) for f in analyse(b, load_catalog()).factors}
+
+
+@pytest.mark.parametrize(("text", "rooms", "roles", "conditions"), [
+    # dev2 (a kitchenette checklist)
+    ("[ ] 2 cups left out today: Dave's cup and Priya's cup. Each one: if dirty, wash it & put in "
+     "dish rack; otherwise leave it be.", ["kitchenette"],
+     {"dave_cup": "cup", "priya_cup": "cup", "dish_rack": "dish_rack"},
+     {"state(dave_cup, dirty)", "state(priya_cup, dirty)"}),
+    # written here: a bathroom, two towels, "each of them" opening the instruction
+    ("Two towels hang by the shower: Tom's towel and Anna's towel. Each of them: if it is wet, "
+     "put it in the laundry basket.", ["bathroom"],
+     {"tom_towel": "towel", "anna_towel": "towel", "laundry_basket": "laundry_basket"},
+     {"state(tom_towel, wet)", "state(anna_towel, wet)"}),
+])
+def test_each_one_distributes_a_condition_over_the_group_just_named(
+        text: str, rooms: list[str], roles: dict[str, str], conditions: set[str]) -> None:
+    """"Each one:", "each of them", "both": what the sentence then says of "it" is said of every
+    member of the group named last (the items of an enumeration), one factor each."""
+    asked = {v for values in _real_factors(text, rooms, **roles).values() for v in values}
+    assert conditions <= asked, asked

@@ -1211,11 +1211,46 @@ def _capabilities(brief: Mapping[str, Any], catalog: Catalog) -> dict[str, froze
     return out
 
 
+#: a phrase that distributes what follows over the members of a group just named ("2 cups ...:
+#: Dave's cup and Priya's cup. Each one: if dirty, wash it"; "Both of them: if wet, hang them up")
+DISTRIBUTIVE = re.compile(r"^\W*(?:for\s+)?(?:each|every|both)(?:\s+(?:one|ones|of\s+them|of\s+these|of\s+those))?\b",
+                          re.I)
+
+
+def _members(clauses: list[Clause], kinds: Mapping[str, str]) -> tuple[str, ...]:
+    """The roles of the group last named: the latest clause naming two or more roles of one
+    category (the items of an enumeration)."""
+    for cl in reversed(clauses):
+        by_kind: dict[str, list[str]] = {}
+        for r in cl.mentions:
+            if r in kinds:
+                by_kind.setdefault(kinds[r], []).append(r)
+        group = max(by_kind.values(), key=len, default=[])
+        if len(group) > 1:
+            return tuple(group)
+    return ()
+
+
+def _distributed(facts: tuple[Fact, ...], members: tuple[str, ...]) -> tuple[Fact, ...]:
+    """`facts` said of one member of a group, said of every member (a pronoun of a distributive
+    clause resolves to one of them)."""
+    out = list(facts)
+    for f in facts:
+        if f.subject not in members:
+            continue
+        for other in members:
+            if other != f.subject:
+                swap = re.compile(rf"\b{re.escape(f.subject)}\b")
+                out.append(replace(f, subject=other, condition=swap.sub(other, f.condition)))
+    return tuple(dict.fromkeys(out))
+
+
 def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     lex = Lexicon.build(brief, catalog)
     kinds = {name: cat for name, role in dict(brief.get("roles") or {}).items()
              if (cat := catalog.get(str(role.get("category", "")))) is not None}
     reader = _Reader(lex, _capabilities(brief, catalog), kinds)
+    categories = {name: str(role.get("category", "")) for name, role in dict(brief.get("roles") or {}).items()}
     sentences = split_sentences(str(brief["description"]))
     clauses: list[Clause] = []
     grammatical = 0  # pieces split at ':' or ';' still belong to one sentence for grouping
@@ -1223,8 +1258,12 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     named = -1  # the sentence whose heading named an object ("Keys - on the floor: ...")
     place: tuple[int, str] = (-1, "")  # a place heading ("On the floor: ...") and its sentence
     pointing: set[int] = set()  # clauses that point back ("if it isn't"): never an antecedent
+    #: (sentence, members) of a distributive phrase: its sentence's facts hold for each member
+    spread: tuple[int, tuple[str, ...]] = (-1, ())
     for si, sent in enumerate(sentences):
         for text, cue, role in _subsplit(_split_clauses(_apposition(sent))):
+            if DISTRIBUTIVE.match(text) and (members := _members(clauses, categories)):
+                spread = (grammatical, members)
             if role == "heading":
                 if _place_heading(reader, text) and named != grammatical:
                     # "On the floor: a dirty mark, and possibly a book": the place of what follows
@@ -1232,6 +1271,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                     clauses.append(Clause(text, grammatical, cue, "statement", (), ()))
                     continue
                 facts, names = _read_heading(reader, text)
+                if spread[0] == grammatical:
+                    facts = list(_distributed(tuple(facts), spread[1]))
                 role = "condition" if any(not f.goal and not f.derived for f in facts) else "statement"
                 headed = grammatical if role == "condition" else headed
                 named = grammatical if names else named
@@ -1273,6 +1314,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # floor": in a condition a moved object's place is the situation, not a goal; so
                 # in a guess at what has happened ("wet wipes may have been put on the table")
                 facts = [replace(f, goal=False) for f in facts]
+            if spread[0] == grammatical:
+                facts = list(_distributed(tuple(facts), spread[1]))
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
         if sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences):
             grammatical += 1
