@@ -506,3 +506,19 @@ def test_each_one_distributes_a_condition_over_the_group_just_named(
     member of the group named last (the items of an enumeration), one factor each."""
     asked = {v for values in _real_factors(text, rooms, **roles).values() for v in values}
     assert conditions <= asked, asked
+
+
+@pytest.mark.parametrize(("text", "rooms", "roles", "condition"), [
+    # dev2 (a kitchenette checklist)
+    ("[ ] Knife - if not in the dish rack, put it in.", ["kitchenette"],
+     {"knife": "knife", "dish_rack": "dish_rack"}, "inside(knife, dish_rack)"),
+    # written here: a study, a heading with a colon
+    ("Stapler: if not on the desk, bring it back to the desk.", ["study"],
+     {"stapler": "stapler", "desk": "desk"}, "on(stapler, desk)"),
+])
+def test_if_not_before_a_place_is_a_negated_place_not_an_else(
+        text: str, rooms: list[str], roles: dict[str, str], condition: str) -> None:
+    """"if not in the dish rack, put it in" is elliptic for "if it is not in the dish rack": the
+    thing's place is asked; a bare "if not," stays the alternative of what came before."""
+    values = _real_factors(text, rooms, **roles)
+    assert any({condition, f"not {condition}"} <= v for v in values.values()), values

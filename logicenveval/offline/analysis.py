@@ -304,6 +304,10 @@ def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
         if m:
             if cue.startswith("if there"):
                 return [(sentence, cue, "condition")]
+            if cue == "if not" and re.match(r"\s*(?:already\s+|yet\s+)?(?:on|in|inside|at|by|under|near)\b", low[m.end():]):
+                # "Knife - if not in the dish rack, put it in": a negated place of the thing spoken
+                # of, elliptic for "if it is not in the dish rack" (a bare "if not," is the else)
+                return _split_clauses(f"if it is not{sentence[m.end():]}")
             return [(sentence[m.end():].strip(" ,"), cue, "else")]
     best = _first_cue(low, CONDITIONAL)
     if best is None and low.rstrip().endswith("?"):
