@@ -522,3 +522,23 @@ def test_if_not_before_a_place_is_a_negated_place_not_an_else(
     thing's place is asked; a bare "if not," stays the alternative of what came before."""
     values = _real_factors(text, rooms, **roles)
     assert any({condition, f"not {condition}"} <= v for v in values.values()), values
+
+
+@pytest.mark.parametrize(("text", "rooms", "roles", "condition"), [
+    # dev2 (a non-native speaker's message)
+    ("Her scarf maybe is somewhere on the floor; should you find it there, put it on the bed.",
+     ["guest_bedroom"], {"scarf": "scarf", "bed": "bed"}, "on(scarf, floor)"),
+    # written here: a garage, "if you spot them"
+    ("The gloves might be lying somewhere on the workbench. If you spot them there, hang them up.",
+     ["garage"], {"gloves": "gloves", "workbench": "workbench"}, "on(gloves, workbench)"),
+    # written here: a study, "in case you come across it"
+    ("The stapler may be somewhere on the floor; in case you come across it, put it in the drawer.",
+     ["study"], {"stapler": "stapler"}, "on(stapler, floor)"),
+])
+def test_coming_upon_a_thing_points_back_to_where_it_was_said_to_be(
+        text: str, rooms: list[str], roles: dict[str, str], condition: str) -> None:
+    """"should you find it there", "if you spot them there", "in case you come across it"
+    (`DISCOVERY`, with the inverted "should you"): no act of the reader's but the situation just
+    described ("is somewhere on the floor": `somewhere` is a vague place, not what is there)."""
+    values = _real_factors(text, rooms, **roles)
+    assert any({condition, f"not {condition}"} <= v for v in values.values()), values

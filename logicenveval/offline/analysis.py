@@ -42,7 +42,7 @@ from logicenveval.scene.compat import can_hold
 DESCRIPTIVE = frozenset(
     ["is", "are", "was", "were", "be", "been", "being", "am", "seem", "seems", "seemed", "look", "looks", "appear", "appears", "still", "already", "currently", "left", "lying", "lie", "lies", "sitting", "sit", "sits", "standing", "stand", "stands", "kept", "found", "dropped", "fallen", "ended", "up", "have", "has", "had", "got", "gotten", "remain", "remains", "remained", "now", "itself", "themselves", "just", "somehow", "accidentally", "again", "there", "here", "turned", "switched", "scattered", "sitting", "lays", "fell", "slipped", "rolled", "may", "might", "could", "possibly", "perhaps", "maybe", "probably", "sometimes", "will",
      "also", "too", "even", "lives", "live", "stays", "stay", "keep", "keeps", "rolling", "falling",
-     "ending"]
+     "ending", "somewhere"]
 )
 #: verbs after a subject that announce where it must go (a goal, not a condition)
 MOTION = frozenset(
@@ -217,7 +217,7 @@ def _first_cue(low: str, cues: tuple[str, ...]) -> tuple[int, str] | None:
         if cue in ("once", "while"):  # a conjunction only before its clause: not "a once-over"
             pattern = rf"(?<![a-z-]){cue}(?=\s+[a-z])"
         if cue == "should":  # only the inverted conditional: "should the hamper be full, ..."
-            pattern = r"(?:^|[,;:(-]\s*|\b(?:and|or|but)\s+)should\b(?=\s+(?:the|there|a|an|it|they|any|one|your|my|our|its|their|this|that|these|those|some|no)\b)"
+            pattern = r"(?:^|[,;:(-]\s*|\b(?:and|or|but)\s+)should\b(?=\s+(?:the|there|a|an|it|they|any|one|your|my|our|its|their|this|that|these|those|some|no|you|we)\b)"
         m = re.search(pattern, low)
         if m is None:
             continue
@@ -1113,10 +1113,18 @@ def _norm(clause: Clause) -> bool:
     return bool({w for w, _, _ in tokens(clause.text)} & NORMS)
 
 
+#: verbs of coming upon a thing: "should you find it there", "if you spot them", "in case you see
+#: it" say no more than "if it is there" (what was just said of it), not what someone does
+DISCOVERY = frozenset({"find", "spot", "see", "notice", "discover", "come", "across", "upon"})
+
+
 def _anaphoric(text: str, facts: list[Fact]) -> bool:
-    """A condition with no fact of its own whose words only point back ("if it is not" too)."""
-    return not any(not f.goal for f in facts) and all(
-        w in ANAPHORIC | {"not"} for w, _, _ in tokens(expand(text)))
+    """A condition with no fact of its own whose words only point back ("if it is not" too; "should
+    you find it there": an agent coming upon the thing, `DISCOVERY`)."""
+    words = {w for w, _, _ in tokens(expand(text))}
+    found = words & DISCOVERY and words & AGENTS
+    return not any(not f.goal for f in facts) and words <= ANAPHORIC | {"not"} | (
+        DISCOVERY | AGENTS | {"there", "here"} if found else set())
 
 
 def _antecedent(clauses: list[Clause], sentence: int, pointing: set[int]) -> tuple[list[Fact], tuple[str, ...]]:
