@@ -274,3 +274,21 @@ def test_a_counted_list_starts_after_its_heading(text: str, category: str, names
     stands between the counted noun and the colon ("left out today", "hanging by the shower")
     says more of the whole group and names no object; the items come after it."""
     assert _of(text, category) == names
+
+
+@pytest.mark.parametrize(("text", "rooms"), [
+    # dev2 (a non-native speaker's message)
+    ("Light switch: if the light is on, switch off, we don't waste.", ("guest_bedroom",)),
+    # written here: a bathroom, the switch named in a statement first
+    ("The light switch is by the door. If the light was left on, turn it off.", ("bathroom",)),
+])
+def test_the_light_of_a_light_switch_is_the_switch(text: str, rooms: tuple[str, ...]) -> None:
+    """A control named for what it controls (`CONTROL_HEADS`: a light switch): "the light" after
+    it is the switch's light, no desk lamp of its own; the factor reader finds it likewise."""
+    from logicenveval.offline.analysis import analyse
+
+    named = _named(text, rooms)
+    assert set(named) == {"light_switch"}, named
+    brief = {"id": "t", "description": text, "rooms": list(rooms),
+             "roles": {n: {"category": c, "attributes": a} for n, (c, a) in named.items()}}
+    assert {f.id for f in analyse(brief, load_catalog()).factors} == {"light_switch_toggled_on"}

@@ -25,7 +25,7 @@ from logicenveval.domain.catalog import Catalog, load_catalog, per_catalog
 from logicenveval.llm.base import ChatRequest
 from logicenveval.model.rooms import room_type_of
 from logicenveval.offline.handlers import handler
-from logicenveval.offline.lexicon import COLOR_WORDS, SPARE_WORDS, tokens, words_of
+from logicenveval.offline.lexicon import COLOR_WORDS, CONTROL_HEADS, SPARE_WORDS, tokens, words_of
 from logicenveval.offline.sentences import STATE_WORDS, expand
 
 
@@ -204,6 +204,10 @@ class _Reader:
         named = [c for c in reversed(self.recent) if c in options and word in self.used.get(c, ())]
         if named:
             return named[0]
+        control = [c for c in self.recent if words_of(c) == (word, *words_of(c)[1:])
+                   and len(words_of(c)) == 2 and words_of(c)[1] in CONTROL_HEADS]
+        if control and exact is None:
+            return control[-1]  # "Light switch: if the light is on": the light the switch works
         if exact is None and (not options or not self.leads_noun(i)):
             return None
         prev = self.text.words[i - 1] if i > 0 else ""
