@@ -542,3 +542,20 @@ def test_coming_upon_a_thing_points_back_to_where_it_was_said_to_be(
     described ("is somewhere on the floor": `somewhere` is a vague place, not what is there)."""
     values = _real_factors(text, rooms, **roles)
     assert any({condition, f"not {condition}"} <= v for v in values.values()), values
+
+
+@pytest.mark.parametrize(("text", "rooms", "roles", "condition"), [
+    # dev2 (a message from an elderly relative)
+    ("The stapler lives on the desk too; if it has wandered off, bring it back.", ["library"],
+     {"stapler": "stapler", "desk": "desk"}, "on(stapler, desk)"),
+    # written here: a living room, "walked off" of a remote
+    ("The remote lives on the TV stand. If it has walked off again, put it back there.",
+     ["living_room"], {"remote_control": "remote_control", "tv_stand": "tv_stand"},
+     "on(remote_control, tv_stand)"),
+])
+def test_a_thing_that_has_wandered_off_is_away_from_its_home(
+        text: str, rooms: list[str], roles: dict[str, str], condition: str) -> None:
+    """"if it has wandered off", "walked off", "gone astray" (`ELSEWHERE`): the thing is not where
+    the text keeps it, so its home is asked (a home alone asks nothing)."""
+    values = _real_factors(text, rooms, **roles)
+    assert any({condition, f"not {condition}"} <= v for v in values.values()), values

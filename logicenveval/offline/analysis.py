@@ -89,7 +89,9 @@ DISCOURSE = frozenset({"then", "and", "also", "so", "first", "second", "third", 
                        "lastly", "oh", "but", "now", "plus", "afterwards", "after", "that", "right", "okay",
                        "ok", "well"})
 ELSE_CUES = ("otherwise", "else", "failing that", "if not", "if there is not", "if there are not")
-ELSEWHERE = ("anywhere else", "elsewhere", "somewhere else", "any other place", "not there")
+ELSEWHERE = ("anywhere else", "elsewhere", "somewhere else", "any other place", "not there",
+             # a thing that has left its place on its own: "if it has wandered off, bring it back"
+             "wandered off", "wandered away", "walked off", "walked away", "gone astray", "strayed")
 #: verbs whose "from" names a source ("fill the bowl from the bag"), not a location
 #: verb particles between an object and its place ("rolled out onto the floor")
 PARTICLES = frozenset({"out", "down", "over", "around", "away", "about"})
