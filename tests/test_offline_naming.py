@@ -292,3 +292,17 @@ def test_the_light_of_a_light_switch_is_the_switch(text: str, rooms: tuple[str, 
     brief = {"id": "t", "description": text, "rooms": list(rooms),
              "roles": {n: {"category": c, "attributes": a} for n, (c, a) in named.items()}}
     assert {f.id for f in analyse(brief, load_catalog()).factors} == {"light_switch_toggled_on"}
+
+
+@pytest.mark.parametrize(("text", "rooms", "names"), [
+    # dev2 (a message from an elderly relative)
+    ("The essay collection is on the desk as well, that's a library book, so leave it there.",
+     ("library",), {"essay_collection", "desk"}),
+    # written here: an office, "it is a ..." after a semicolon
+    ("The tablet is on the desk; it is a work laptop, so leave it there.", ("office",),
+     {"tablet", "desk"}),
+])
+def test_a_predicate_noun_names_no_other_object(text: str, rooms: tuple[str, ...], names: set[str]) -> None:
+    """"that's a library book", "it is a work laptop" said of a thing the sentence named: what
+    that thing is, not a second object (a book, a laptop) in the scene."""
+    assert set(_named(text, rooms)) == names

@@ -61,6 +61,9 @@ _ALSO_VERBS = frozenset({"can", "throw", "stand", "switch", "set", "press", "iro
 KIND_ATTRIBUTES = ("kind",)
 #: words too common to say which of several categories a bare noun means
 _NOT_CONTEXT = frozenset({"floor", "wall", "ceiling", "room"})
+#: "that is a ...", "it was a ...": a predicate noun of a thing already named (`predicate_noun`)
+_POINTERS = frozenset({"that", "it", "this", "which"})
+_COPULAS = frozenset({"is", "was"})
 #: words naming a part of a piece of furniture that holds things, and the kind each part is
 _PARTS = {"level": "shelf", "tier": "shelf", "shelf": "shelf"}
 #: words that rank parts or say which one ("on the next", "the top one")
@@ -394,6 +397,19 @@ class _Reader:
             out.append(("_".join([*parts, head]), {}, read))
         return out
 
+    def predicate_noun(self, i: int) -> bool:
+        """Whether the noun phrase at word `i` is the predicate of "that is a ...", "it is a ...",
+        "this was a ..." said of a thing the sentence already named ("The essay collection is on
+        the desk, that's a library book"): it says what that thing is, it names no other object."""
+        words = self.text.words
+        k = i - 1
+        while k >= 0 and i - k <= 3 and words[k] not in ("a", "an"):
+            k -= 1
+        if k < 2 or words[k] not in ("a", "an") or words[k - 1] not in _COPULAS or words[k - 2] not in _POINTERS:
+            return False
+        start = self.text.sentence_start(i)
+        return any(self.kind_at(j)[1] is not None for j in range(start, k - 2))
+
     def kind_value(self, i: int, n: int, prev: str) -> bool:
         """Whether the bare plural at word `i` (`n` words: "dolls", "toy cars") is a class of a
         kind named before it, one of the values of its `kind` attribute (`KIND_ATTRIBUTES`; a toy
@@ -479,6 +495,9 @@ class _Reader:
                 i += 1
                 continue
             n, category = self.compound(i, n, category)
+            if self.predicate_noun(i):
+                i += n  # "The essay collection is on the desk, that's a library book"
+                continue
             if self.kind_value(i, n, prev):
                 i += n  # "a toy on the floor ... dolls in the red box, toy cars in the blue box"
                 continue
