@@ -26,6 +26,7 @@ from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, singular
 from logicenveval.offline.placement import described_placements
 from logicenveval.offline.sentences import (
     ACTIONS,
+    ARROW,
     EVENT_VERBS,
     HABITUAL_WORDS,
     PREP_IN,
@@ -291,6 +292,8 @@ def _state_places(instruction: str) -> list[tuple[str, str | None, str]]:
 def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
     """(text, cue, role) pieces of a sentence, recursively for chained conditionals; a verbless
     heading (`_heading`) is a `heading` piece, its instruction read after it."""
+    # "still on? -> switch OFF.", "Laptop on the floor -> put it on the desk": the arrow is "then"
+    sentence = ARROW.sub(" - ", re.sub(rf"([?:!]){ARROW.pattern}", r"\1 ", sentence))
     states = _state_places(sentence)
     if states:
         return states  # "Bath towel on the floor: wet to the basket, dry to the rack"
