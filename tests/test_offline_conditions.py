@@ -559,3 +559,28 @@ def test_a_thing_that_has_wandered_off_is_away_from_its_home(
     the text keeps it, so its home is asked (a home alone asks nothing)."""
     values = _real_factors(text, rooms, **roles)
     assert any({condition, f"not {condition}"} <= v for v in values.values()), values
+
+
+@pytest.mark.parametrize(("text", "rooms", "roles", "conditions"), [
+    # dev2 (a message from an elderly relative): an inverted "should either of them"
+    ("He keeps two folders, a blue one and a green one, for the bills and the letters "
+     "respectively. Should either of them have fallen on the floor, pick it up and put it back on "
+     "the desk.", ["library"], {"blue_folder": "folder", "green_folder": "folder", "desk": "desk"},
+     {"on(blue_folder, floor)", "on(green_folder, floor)"}),
+    # written here: a bathroom, the same inversion with a state
+    ("Two towels hang in the bathroom: a white towel and a green towel. Should either of them be "
+     "wet, hang it on the rack.", ["bathroom"],
+     {"white_towel": "towel", "green_towel": "towel", "towel_rack": "towel_rack"},
+     {"state(white_towel, wet)", "state(green_towel, wet)"}),
+    # written here: "if either of them"
+    ("Two towels hang in the bathroom: a white towel and a green towel. If either of them is wet, "
+     "hang it on the rack.", ["bathroom"],
+     {"white_towel": "towel", "green_towel": "towel", "towel_rack": "towel_rack"},
+     {"state(white_towel, wet)", "state(green_towel, wet)"}),
+])
+def test_either_of_them_asks_each_member_of_the_group(
+        text: str, rooms: list[str], roles: dict[str, str], conditions: set[str]) -> None:
+    """"either of them", "any of these", "one of the two" (`ANY_OF`, and "should either ..." as an
+    inverted conditional): the condition is asked of each member of the group named last."""
+    asked = {v for values in _real_factors(text, rooms, **roles).values() for v in values}
+    assert conditions <= asked, asked

@@ -220,7 +220,7 @@ def _first_cue(low: str, cues: tuple[str, ...]) -> tuple[int, str] | None:
         if cue in ("once", "while"):  # a conjunction only before its clause: not "a once-over"
             pattern = rf"(?<![a-z-]){cue}(?=\s+[a-z])"
         if cue == "should":  # only the inverted conditional: "should the hamper be full, ..."
-            pattern = r"(?:^|[,;:(-]\s*|\b(?:and|or|but)\s+)should\b(?=\s+(?:the|there|a|an|it|they|any|one|your|my|our|its|their|this|that|these|those|some|no|you|we)\b)"
+            pattern = r"(?:^|[,;:(-]\s*|\b(?:and|or|but)\s+)should\b(?=\s+(?:the|there|a|an|it|they|any|one|your|my|our|its|their|this|that|these|those|some|no|you|we|either|neither|each|both)\b)"
         m = re.search(pattern, low)
         if m is None:
             continue
@@ -1234,6 +1234,11 @@ DISTRIBUTIVE = re.compile(r"^\W*(?:for\s+)?(?:each|every|both)(?:\s+(?:one|ones|
                           re.I)
 
 
+#: "either of them", "any of these", "one of the two": a condition on whichever member of the group
+#: just named, asked of each of them as "each one" is
+ANY_OF = re.compile(r"\b(?:either|neither|any|one|each|both|all)\s+of\s+(?:them|these|those|the\s+two)\b", re.I)
+
+
 def _members(clauses: list[Clause], kinds: Mapping[str, str]) -> tuple[str, ...]:
     """The roles of the group last named: the latest clause naming two or more roles of one
     category (the items of an enumeration)."""
@@ -1279,7 +1284,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     spread: tuple[int, tuple[str, ...]] = (-1, ())
     for si, sent in enumerate(sentences):
         for text, cue, role in _subsplit(_split_clauses(_apposition(sent))):
-            if DISTRIBUTIVE.match(text) and (members := _members(clauses, categories)):
+            if (DISTRIBUTIVE.match(text) or ANY_OF.search(text)) and (members := _members(clauses, categories)):
                 spread = (grammatical, members)
             if role == "heading":
                 if _place_heading(reader, text) and named != grammatical:
