@@ -584,3 +584,13 @@ def test_either_of_them_asks_each_member_of_the_group(
     inverted conditional): the condition is asked of each member of the group named last."""
     asked = {v for values in _real_factors(text, rooms, **roles).values() for v in values}
     assert conditions <= asked, asked
+
+
+def test_a_time_phrase_distributes_nothing() -> None:
+    """"Every evening, ..." opens an instruction with a time, not a distribution: a condition on
+    one member of a group is asked of that member only."""
+    text = ("Two cups are left out: Dave's cup and Priya's cup. Every evening, if Dave's cup is "
+            "dirty, wash it.")
+    asked = {v for values in _real_factors(text, ["kitchen"], dave_cup="cup", priya_cup="cup").values()
+             for v in values}
+    assert "state(dave_cup, dirty)" in asked and "state(priya_cup, dirty)" not in asked, asked

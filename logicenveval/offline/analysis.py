@@ -1120,7 +1120,8 @@ def _norm(clause: Clause) -> bool:
 
 #: verbs of coming upon a thing: "should you find it there", "if you spot them", "in case you see
 #: it" say no more than "if it is there" (what was just said of it), not what someone does
-DISCOVERY = frozenset({"find", "spot", "see", "notice", "discover", "come", "across", "upon"})
+DISCOVERY = frozenset({"find", "found", "spot", "spotted", "see", "saw", "seen", "notice", "noticed", "discover",
+                       "discovered", "come", "came", "across", "upon"})
 
 
 def _anaphoric(text: str, facts: list[Fact]) -> bool:
@@ -1230,8 +1231,9 @@ def _capabilities(brief: Mapping[str, Any], catalog: Catalog) -> dict[str, froze
 
 #: a phrase that distributes what follows over the members of a group just named ("2 cups ...:
 #: Dave's cup and Priya's cup. Each one: if dirty, wash it"; "Both of them: if wet, hang them up")
-DISTRIBUTIVE = re.compile(r"^\W*(?:for\s+)?(?:each|every|both)(?:\s+(?:one|ones|of\s+them|of\s+these|of\s+those))?\b",
-                          re.I)
+#: (the phrase alone, before its instruction: "Every evening, ..." distributes nothing)
+DISTRIBUTIVE = re.compile(r"^\W*(?:for\s+)?(?:each|every|both)(?:\s+(?:one|ones|of\s+them|of\s+these|of\s+those))?"
+                          r"(?=\W*$|\s*[:,;\-\u2013])", re.I)
 
 
 #: "either of them", "any of these", "one of the two": a condition on whichever member of the group
@@ -1239,10 +1241,12 @@ DISTRIBUTIVE = re.compile(r"^\W*(?:for\s+)?(?:each|every|both)(?:\s+(?:one|ones|
 ANY_OF = re.compile(r"\b(?:either|neither|any|one|each|both|all)\s+of\s+(?:them|these|those|the\s+two)\b", re.I)
 
 
-def _members(clauses: list[Clause], kinds: Mapping[str, str]) -> tuple[str, ...]:
-    """The roles of the group last named: the latest clause naming two or more roles of one
-    category (the items of an enumeration)."""
+def _members(clauses: list[Clause], kinds: Mapping[str, str], sentence: int) -> tuple[str, ...]:
+    """The roles of the group last named: the latest clause of this sentence or the one before
+    naming two or more roles of one category (the items of an enumeration)."""
     for cl in reversed(clauses):
+        if cl.sentence < sentence - 1:
+            break
         by_kind: dict[str, list[str]] = {}
         for r in cl.mentions:
             if r in kinds:
@@ -1284,7 +1288,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     spread: tuple[int, tuple[str, ...]] = (-1, ())
     for si, sent in enumerate(sentences):
         for text, cue, role in _subsplit(_split_clauses(_apposition(sent))):
-            if (DISTRIBUTIVE.match(text) or ANY_OF.search(text)) and (members := _members(clauses, categories)):
+            if (DISTRIBUTIVE.match(text) or ANY_OF.search(text)) and (members := _members(clauses, categories, grammatical)):
                 spread = (grammatical, members)
             if role == "heading":
                 if _place_heading(reader, text) and named != grammatical:
