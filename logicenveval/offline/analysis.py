@@ -30,6 +30,7 @@ from logicenveval.offline.clauses import (
     PLACE_PREPS,
     UNCERTAIN,
     imperative,
+    points_back,
     split_clauses,
 )
 from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, singular, tokens
@@ -888,13 +889,6 @@ def _copy(a: TaskAnalysis) -> TaskAnalysis:
     )
 
 
-#: the words of a condition that only points back ("if so", "if it has", "should that be the
-#: case", "when that happens", "if they are"): its content is the clause before it
-ANAPHORIC = frozenset({"so", "that", "this", "it", "they", "them", "is", "are", "was", "were", "has",
-                       "have", "had", "do", "does", "did", "be", "been", "being", "the", "case",
-                       "happen", "happens", "happened", "true", "indeed", "still", "again", "really"})
-
-
 #: people who act: a condition about what they do ("when you put it away") is no situation
 AGENTS = frozenset({"you", "we", "i"})
 #: adverbs of a norm ("Normally a fresh diaper is lying on the changing table"): a statement
@@ -908,8 +902,7 @@ def _norm(clause: Clause) -> bool:
 
 def _anaphoric(text: str, facts: list[Fact]) -> bool:
     """A condition with no fact of its own whose words only point back ("if it is not" too)."""
-    return not any(not f.goal for f in facts) and all(
-        w in ANAPHORIC | {"not"} for w, _, _ in tokens(expand(text)))
+    return not any(not f.goal for f in facts) and points_back(text)
 
 
 def _antecedent(clauses: list[Clause], sentence: int, pointing: set[int]) -> tuple[list[Fact], tuple[str, ...]]:

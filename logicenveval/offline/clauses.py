@@ -308,6 +308,20 @@ def _subsplit(pieces: list[tuple[str, str | None, str]]) -> list[tuple[str, str 
     return out
 
 
+#: the words of a condition that only points back ("if so", "if it has", "should that be the
+#: case", "when that happens", "if they are"): its content is the clause before it
+ANAPHORIC = frozenset({"so", "that", "this", "it", "they", "them", "is", "are", "was", "were", "has",
+                       "have", "had", "do", "does", "did", "be", "been", "being", "the", "case",
+                       "happen", "happens", "happened", "true", "indeed", "still", "again", "really"})
+
+
+def points_back(text: str) -> bool:
+    """Whether a condition's words only point back to a clause before it ("if so", "if it is not",
+    "should that be the case", "when that happens"): its content is that clause's, which the
+    reader links it to (an empty condition, the text of "if so", points back too)."""
+    return all(w in ANAPHORIC | {"not"} for w, _, _ in tokens(expand(text)))
+
+
 # ---------------------------------------------------------------------------------------------
 # The placement reader's cut: token spans with their mood
 # ---------------------------------------------------------------------------------------------

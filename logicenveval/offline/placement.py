@@ -41,7 +41,15 @@ from logicenveval.offline.clauses import (
     doubts,
 )
 from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, singular
-from logicenveval.offline.sentences import ACTIONS, PREP_IN, PREP_ON, STATE_WORDS, expand, habitual
+from logicenveval.offline.sentences import (
+    ACTIONS,
+    PREP_IN,
+    PREP_ON,
+    STATE_WORDS,
+    expand,
+    habitual,
+    split_sentences,
+)
 
 # ---------------------------------------------------------------------------------------------
 # Reading rules (data tables). Each names a class of words, never a task's phrase or object.
@@ -151,8 +159,6 @@ def described_placements(brief: Mapping[str, Any], catalog: Catalog | None = Non
 # ---------------------------------------------------------------------------------------------
 
 _TOKEN = re.compile(r"[a-z0-9]+(?:'[a-z]+)?|[,;:()?]|(?<=\s)[-\u2013\u2014](?=\s)|\n")
-_SENTENCE_END = re.compile(r"(?<=[.!])\s+|\n+")
-_ABBREV = re.compile(r"\b(e\.g|i\.e|etc|approx|vs)\.", re.I)
 
 
 @dataclass(frozen=True)
@@ -191,12 +197,8 @@ class _Reading:
 
 
 def _sentences(text: str, lex: Lexicon) -> list[_Sentence]:
-    protected = _ABBREV.sub(lambda m: m.group(0).replace(".", "\u2024"), expand(text))
     out = []
-    for part in _SENTENCE_END.split(protected):
-        part = part.strip().replace("\u2024", ".")
-        if not part:
-            continue
+    for part in split_sentences(expand(text), full_stops_only=True):
         low = part.lower()
         toks = [_Token(m.group(0), singular(m.group(0)) if m.group(0)[0].isalnum() else m.group(0),
                        m.start(), m.end()) for m in _TOKEN.finditer(low)]
