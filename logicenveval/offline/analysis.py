@@ -1,8 +1,8 @@
 """A small natural-language analyser of task descriptions (the offline model's reading).
 
 It reads only what an LLM would read (the brief: description, rooms, roles) and finds sentences
-and clauses (cut by `offline.clauses.split_clauses`); conditional and uncertainty cues ("if",
-"unless", "in case", "whether", "should there be", "otherwise", "may", "if available", ...); mentions grounded to roles (names, catalog
+and clauses; conditional and uncertainty cues ("if", "unless", "in case", "whether", "should
+there be", "otherwise", "may", "if available", ...); mentions grounded to roles (names, catalog
 categories and synonyms, colour words, pronouns resolved to the sentence topic); and facts in the
 condition language (on/inside/in_room/state/attr/exists). A fact is a *condition* when it
 describes the current situation (`if the bottle is empty`, `a toy lying on the floor`,

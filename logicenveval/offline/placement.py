@@ -13,11 +13,11 @@ in the vanity", "it's where the flashlight lives") is its home, which the text m
 and is read apart from where it *is*; nothing is placed from a condition, a question, an
 instruction (where a thing goes) or a doubted clause ("there might be a book on the floor").
 
-The reader works on clauses (`_clauses`, cut by `offline.clauses.clause_spans`): a sentence is
-cut at semicolons, dashes, brackets and before a subordinate clause, each clause gets its mood (a
-statement, a condition, an instruction), and the subject of a statement is the noun-phrase list before its verb, not the
-nearest noun. The words each form turns on are the data tables below. Like the analyser, this
-reads only the brief (description, rooms, roles), never ground truth.
+The reader works on clauses (`_clauses`, cut by `offline.clauses.clause_spans`): a sentence is cut
+at semicolons, dashes, brackets and before a subordinate clause, each clause gets its mood (a
+statement, a condition, an instruction), and the subject of a statement is the noun-phrase list
+before its verb, not the nearest noun. The words each form turns on are the data tables below. Like
+the analyser, this reads only the brief (description, rooms, roles), never ground truth.
 """
 
 from __future__ import annotations
