@@ -37,14 +37,17 @@ from logicenveval.offline.sentences import ACTIONS, STATE_WORDS, expand, habitua
 # Word tables (data). Each names a class of words, never a task's phrase or object.
 # ---------------------------------------------------------------------------------------------
 
+#: determiners and the like before a noun (after a base-form verb they open its object: `OBJECT_STARTS`)
 ARTICLES = frozenset({"the", "a", "an", "any", "some", "one", "of", "its", "their", "this", "that",
                       "these", "those", "every", "each", "your", "my", "our"})
 #: prepositions before a place or a goal: an object after them is not what a clause speaks of
 PLACE_PREPS = frozenset({"on", "onto", "in", "into", "inside", "to", "from", "by", "near", "under"})
+#: words that negate what a clause says ("if there is no roll", "the lamp is not on")
 NEGATIONS = frozenset({"not", "no", "none", "never", "without", "nothing", "nobody", "nowhere"})
+#: words that make a statement uncertain (an `uncertain` piece, not a fact)
 UNCERTAIN = frozenset({"may", "might", "possibly", "possible", "perhaps", "maybe", "could", "sometimes",
                        "occasionally", "potentially", "probably", "likely"})
-#: cues that open a condition (longest first where one contains another: "if not" before "if")
+#: cues that open a condition (the earliest in a sentence wins, the longest at one place: `_first_cue`)
 CONDITIONAL = ("depending on whether", "depending on if", "in case", "as long as", "provided that",
                "only if", "if not", "if so", "whether", "if", "unless", "whenever", "when", "while", "once",
                "should there be", "should")
