@@ -13,29 +13,36 @@ prints LogCov / SceVR / FauDR for each, then per task:
   tuned on): new tasks in other registers (a voice transcript, a house-sitter's note, ...);
 - `held-out reworded` and `held-out new`: tests/data/reader_holdout/ — the held-out counterparts,
   rewordings of the 13 built-in descriptions the development set leaves out and new tasks in
-  rooms and with objects neither the built-in tasks nor the development set use.
+  rooms and with objects neither the built-in tasks nor the development set use;
+- `dev3 reworded` and `dev3 new`: tests/data/reader_dev3/ — a second unseen set, written after the
+  development sets had been tuned on: one rewording each of 12 built-in descriptions, each in a
+  register of its own (a voice transcript with a self-correction, a work order, a text thread, a
+  FAQ, ...), and five new tasks in rooms and with objects none of the sets above use as theirs.
 
 Both development sets were written before the offline model's reader was changed and were never
 run through it while being written; the reader is developed against them, with no rule keyed on
 one of their phrases. The held-out sets are stricter still: the reader is tuned on the development
 set and the built-in tasks only, and those who change it never read or run the held-out texts, so
-only the held-out rows say whether its rules carry to text nobody tuned them on. A further row, `built-in (reworded originals)`, restricts the built-in row to the
-12 tasks the reworded set rewords, for a like-for-like gap.
+only the held-out rows (and the dev3 rows, written under the same rule by someone who did not read
+the reader) say whether its rules carry to text nobody tuned them on. A further row, `built-in
+(reworded originals)`, restricts the built-in row to the 12 tasks the reworded set rewords, for a
+like-for-like gap.
 
 Every run is computed afresh (`fresh=True`: a stored unit is never reused, since the run's
 fingerprint does not cover the reader's code) with the offline model's reply cache off.
 
-    python benchmarks/reader_generalisation.py            # all five sets (~2-3 min on 2 cores)
+    python benchmarks/reader_generalisation.py            # all eight sets (~2-3 min on 2 cores)
     python benchmarks/reader_generalisation.py --smoke    # two tasks per set (~1 min)
     python benchmarks/reader_generalisation.py --why      # and why each task lost environments
-    python benchmarks/reader_generalisation.py --dev-only # without the held-out sets (for tuning)
+    python benchmarks/reader_generalisation.py --dev-only # without the held-out and dev3 sets (for tuning)
 
-The held-out rows show their aggregate only: no per-task line, no `--why` reason and no per-task
-entry in `--json`, so running the benchmark gives whoever tunes the reader nothing to tune on
-(they run `--dev-only`, which skips the held-out sets altogether).
+The held-out and dev3 rows show their aggregate only: no per-task line, no `--why` reason and no
+per-task entry in `--json`, so running the benchmark gives whoever tunes the reader nothing to tune
+on (they run `--dev-only`, which skips those sets altogether).
 
 Last line: `reader_generalisation built_in=<LogCov>/<SceVR>/<FauDR> reworded=... new=...
-held_out_reworded=... held_out_new=...`.
+dev2_new=... held_out_reworded=... held_out_new=... dev3_reworded=... dev3_new=...` (with
+`--dev-only`, the first four only).
 """
 
 from __future__ import annotations
@@ -55,15 +62,17 @@ ROOT = Path(__file__).resolve().parents[1]
 DEV = ROOT / "tests" / "data" / "reader_dev"
 DEV2 = ROOT / "tests" / "data" / "reader_dev2"
 HOLDOUT = ROOT / "tests" / "data" / "reader_holdout"
+DEV3 = ROOT / "tests" / "data" / "reader_dev3"
 #: (row name, tasks folder; None = the built-in tasks)
 SETS: tuple[tuple[str, Path | None], ...] = (
     ("built-in", None), ("reworded", DEV / "tasks_reworded"), ("new", DEV / "tasks_new"),
     ("dev2 new", DEV2 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
+    ("dev3 reworded", DEV3 / "tasks_reworded"), ("dev3 new", DEV3 / "tasks_new"),
 )
-#: rows that show only their aggregate: per-task figures and `--why` reasons of the held-out sets
-#: would be a tuning signal for whoever changes the reader (they run `--dev-only`)
-HELD_OUT = frozenset({"held-out reworded", "held-out new"})
+#: the unseen sets' rows, which show only their aggregate: their per-task figures and `--why`
+#: reasons would be a tuning signal for whoever changes the reader (they run `--dev-only`)
+UNSEEN = frozenset({"held-out reworded", "held-out new", "dev3 reworded", "dev3 new"})
 GENERATOR = "logicenvgen"
 
 
@@ -126,11 +135,11 @@ def main() -> None:
     ap.add_argument("--why", action="store_true", help="under each task, the first reason an environment was lost")
     ap.add_argument("--json", default=None, help="also write every figure to this JSON file")
     ap.add_argument("--dev-only", action="store_true",
-                    help="skip the held-out sets (whoever tunes the reader must not run it on them)")
+                    help="skip the held-out and dev3 sets (whoever tunes the reader must not run it on them)")
     args = ap.parse_args()
     work = Path(args.work) if args.work else Path(tempfile.mkdtemp(prefix="reader_generalisation-"))
     start = time.perf_counter()
-    sets = [(name, folder) for name, folder in SETS if not (args.dev_only and name in HELD_OUT)]
+    sets = [(name, folder) for name, folder in SETS if not (args.dev_only and name in UNSEEN)]
     results: dict[str, dict[str, dict[str, Any]]] = {}
     why: dict[str, dict[str, str]] = {}
     for name, folder in sets:
@@ -138,16 +147,16 @@ def main() -> None:
         if args.smoke:
             ids = ids[:2]
         results[name], why[name] = run_set(folder, ids, args.seed, args.workers, work / name.replace(" ", "_"))
-    rows = {name: aggregate(per) for name, per in results.items() if name not in HELD_OUT}
+    rows = {name: aggregate(per) for name, per in results.items() if name not in UNSEEN}
     base = {k: v for k, v in results["built-in"].items() if k in originals()}
     if base:
         rows["built-in (reworded originals)"] = aggregate(base)
-    rows.update({name: aggregate(per) for name, per in results.items() if name in HELD_OUT})
+    rows.update({name: aggregate(per) for name, per in results.items() if name in UNSEEN})
 
     print("per task (offline LogicEnvGen, --brief description):")
     print(f"  {'set':9s} {'task':32s} {'LogCov':>6s} {'SceVR':>6s} {'FauDR':>6s}")
     for name, per in results.items():
-        if name in HELD_OUT:
+        if name in UNSEEN:
             continue
         for task_id, m in per.items():
             lc, sv, fd = task_row(m)
@@ -164,7 +173,7 @@ def main() -> None:
         Path(args.json).write_text(json.dumps({
             "rows": {k: {"logcov": v[0], "scevr": v[1], "faudr": v[2]} for k, v in rows.items()},
             "per_task": {s: {t: dict(zip(("logcov", "scevr", "faudr"), task_row(m), strict=True))
-                             for t, m in per.items()} for s, per in results.items() if s not in HELD_OUT},
+                             for t, m in per.items()} for s, per in results.items() if s not in UNSEEN},
         }, indent=1) + "\n", encoding="utf-8")
     print("reader_generalisation " + " ".join(
         f"{name.replace('-', '_').replace(' ', '_')}={'/'.join(pct(x).strip() for x in rows[name])}"

@@ -22,11 +22,22 @@ from typing import Any
 from lemminflect import getAllLemmas
 
 from logicenveval.domain.catalog import Catalog, Category, load_catalog
+from logicenveval.offline.clauses import (
+    ANAPHORIC,
+    ARTICLES,
+    AVAILABILITY,
+    CLAUSE_WORDS,
+    NEGATIONS,
+    PLACE_PREPS,
+    UNCERTAIN,
+    imperative,
+    points_back,
+    split_clauses,
+)
 from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, singular, tokens
 from logicenveval.offline.placement import described_placements
 from logicenveval.offline.sentences import (
     ACTIONS,
-    ARROW,
     EVENT_VERBS,
     HABITUAL_WORDS,
     PREP_IN,
@@ -53,8 +64,6 @@ MOTION = frozenset(
      "packed", "stacked", "transferred", "binned", "hanged", "set", "parked", "wiped", "refilled",
      "end"]  # "should end up on the rack"
 )
-ARTICLES = frozenset({"the", "a", "an", "any", "some", "one", "of", "its", "their", "this", "that",
-                      "these", "those", "every", "each", "your", "my", "our"})
 PARTS = frozenset({"door", "lid", "leaf", "screen", "soil", "surface", "top", "inside", "water",
                    "content", "bottom", "side", "handle", "shelf", "drawer", "bag", "glass", "bottle",
                    "box", "pack", "packet", "jar", "carton", "tub", "container", "roll"})
@@ -73,23 +82,9 @@ SITUATION_PARTICIPLES = frozenset({"left", "lying", "lie", "lies", "sitting", "f
 #: determiners of an object already known to be there ("the", "my"): see `Fact.definite`
 DEFINITE = frozenset({"the", "my", "our", "your", "his", "her", "its", "their", "this", "that", "these",
                       "those"})
-#: prepositions before a place or a goal: an object after them is not what a clause speaks of
-PLACE_PREPS = frozenset({"on", "onto", "in", "into", "inside", "to", "from", "by", "near", "under"})
 #: prepositions of where a thing is now (not where it goes: "into", "onto", "to")
 WHERE_PREPS = frozenset({"on", "in", "inside", "by", "near", "under"})
 INDEFINITE = frozenset({"a", "an", "any", "every", "each", "some", "no"})
-NEGATIONS = frozenset({"not", "no", "none", "never", "without", "nothing", "nobody", "nowhere"})
-UNCERTAIN = frozenset({"may", "might", "possibly", "possible", "perhaps", "maybe", "could", "sometimes",
-                       "occasionally", "potentially", "probably", "likely"})
-CONDITIONAL = ("depending on whether", "depending on if", "in case", "as long as", "provided that",
-               "only if", "if not", "if so", "whether", "if", "unless", "whenever", "when", "while", "once",
-               "should there be", "should")
-#: words that open a sentence without saying anything of the scene ("Then, if ...", "Oh, and
-#: should ...")
-DISCOURSE = frozenset({"then", "and", "also", "so", "first", "second", "third", "next", "finally", "last",
-                       "lastly", "oh", "but", "now", "plus", "afterwards", "after", "that", "right", "okay",
-                       "ok", "well"})
-ELSE_CUES = ("otherwise", "else", "failing that", "if not", "if there is not", "if there are not")
 ELSEWHERE = ("anywhere else", "elsewhere", "somewhere else", "any other place", "not there",
              # a thing that has left its place on its own: "if it has wandered off, bring it back"
              "wandered off", "wandered away", "walked off", "walked away", "gone astray", "strayed")
@@ -101,9 +96,6 @@ SOURCE_VERBS = frozenset({"fill", "refill", "pour", "top", "water", "feed"})
 ARRIVALS = frozenset({"arrived", "come", "turned", "appeared", "shown", "showed", "been", "behind"})
 #: words that say an object is absent: "the roll is missing"
 ABSENT = frozenset({"missing", "absent", "gone", "lacking", "unavailable"})
-AVAILABILITY = frozenset({"available", "any", "present", "possible", "exist", "exists", "there"})
-SCENE_START = re.compile(r"^\W*([a-z' ,]{0,50}?\bthere (is|are)\b(?! (no|not|maybe|possibly))|you are\b|we are\b)",
-                         re.I)
 
 
 
@@ -181,17 +173,12 @@ class TaskAnalysis:
 
 
 
-_GENERIC = (r"whatever|anything|everything|something|all|(?:any|the|all the)\s+(?:items?|things?|objects?|stuff)"
-            r"|items|things|objects|stuff")
-_APPOSITION = re.compile(rf"^(?P<lead>\W*)(?:{_GENERIC})\s+(?:that\s+|which\s+)?(?P<pred>[^:\u2013-]+?)\s*(?:\s-|\u2013|:)\s+"
-                         r"(?P<list>[^:\u2013-]+?(?:,|\bor\b|\band\b)[^:\u2013-]+?)\s+(?:-|\u2013)\s+(?P<rest>.+)$", re.I)
 
 
 #: "if we still have one": the household owns the object, or not
 _WE_HAVE = re.compile(r"\b(?:we|you|i)(?: still| also| even)? (?:have|has)(?: still| also)?(?: got)?"
                       r"(?: (?:a|an|any|some))?$")
 _ASIDE = re.compile(r"\s*\([^()]*\)\W*$")
-_WITHOUT = re.compile(r"^(\W*)(?:without|with no)\s+(?:a|an|any|the)?\s*(?=\w[^,]*,)", re.I)
 
 
 #: a verb and its particle that together say a state ("the drawer may be pulled out" is open):
@@ -200,201 +187,6 @@ PHRASAL_STATES = tuple((re.compile(rf"\b(?:{verbs}) (?:{particles})\b"), state) 
     ("pulled|drawn|slid", "out|open", "open"),
     ("pushed|slid", "in|shut|back in", "shut"),
 ))
-
-
-def _apposition(sentence: str) -> str:
-    """`Whatever is lying on it - a book, a clock, a phone - goes ...`: the listed objects are the
-    subject of the generic word's predicate (`a book, a clock, a phone is lying on it - goes ...`);
-    a fronted `without a sponge, ...` is the condition `if there is no sponge, ...`."""
-    sentence = _WITHOUT.sub(r"\1if there is no ", sentence)  # "without a sponge, use ...": a condition
-    m = _APPOSITION.match(sentence)
-    if m is None:
-        return sentence
-    return f"{m.group('lead')}{m.group('list')} {m.group('pred')} - {m.group('rest')}"
-
-
-def _first_cue(low: str, cues: tuple[str, ...]) -> tuple[int, str] | None:
-    best: tuple[int, str] | None = None
-    for cue in cues:
-        pattern = rf"(?<![a-z]){re.escape(cue)}\b"
-        if cue in ("once", "while"):  # a conjunction only before its clause: not "a once-over"
-            pattern = rf"(?<![a-z-]){cue}(?=\s+[a-z])"
-        if cue == "should":  # only the inverted conditional: "should the hamper be full, ..."
-            pattern = r"(?:^|[,;:(-]\s*|\b(?:and|or|but)\s+)should\b(?=\s+(?:the|there|a|an|it|they|any|one|your|my|our|its|their|this|that|these|those|some|no|you|we|either|neither|each|both)\b)"
-        m = re.search(pattern, low)
-        if m is None:
-            continue
-        start = m.end() - len(cue)
-        if best is None or start < best[0] or (start == best[0] and len(cue) > len(best[1])):
-            best = (start, cue)
-    return best
-
-
-#: words that make a segment a clause of its own (a finite verb, its subject, an existential),
-#: so that it is no verbless heading: "Lamp left on:" is a heading, "the box has two drawers:" not
-#: ("can" is left out: "Trash can full:" is a heading; "can you ...?" has its subject)
-CLAUSE_WORDS = frozenset({
-    "is", "are", "was", "were", "am", "be", "been", "has", "have", "had", "do", "does", "did",
-    "will", "would", "could", "shall", "should", "may", "might", "must", "need", "needs",
-    "keep", "keeps", "i", "you", "we", "he", "she", "it", "they", "someone", "somebody", "everyone",
-    "there", "please", "let", "make", "get"})
-#: words after a base-form verb that make it an imperative with its object ("clean it", "put
-#: the", "pick up"), not an adjective or noun opening a heading ("clean - ...", "water bowl ...")
-OBJECT_STARTS = ARTICLES | frozenset({"it", "them", "up", "out", "back", "away", "down", "off", "over",
-                                      "with", "at", "from", "onto", "into"})
-#: a heading ends where its instruction starts: at a colon, a question mark or a spaced dash
-_HEADING = re.compile(r"^(?P<head>[^:?\u2013]+?)(?P<mark>\?|:|\s+(?:-|\u2013)\s+)(?P<rest>.*)$", re.S)
-
-
-def _imperative(words: list[str]) -> bool:
-    """The segment opens with a verb in its base form followed by its object or particle."""
-    if len(words) < 2:
-        return False
-    lemmas = getAllLemmas(words[0]).get("VERB", ())
-    return words[0] in lemmas and words[1] in OBJECT_STARTS
-
-
-def _heading(sentence: str) -> tuple[str, str, str] | None:
-    """A verbless heading and its instruction: "Pillow on the floor: back on the bed", "Mirror
-    dirty? Clean it", "dirty - into the hamper", "Table dirty:" (the instruction in the next piece).
-    Returns (heading, mark, rest), or None when the first segment is a clause of its own (it has a
-    finite verb, a subject, a conditional cue) or an instruction (an imperative)."""
-    m = _HEADING.match(sentence.strip())
-    if m is None:
-        return None
-    head, rest = m.group("head").strip(" ,"), m.group("rest").strip()
-    words = [w for w, _, _ in tokens(expand(head))]
-    if not words or len(words) > 10 or set(words) & CLAUSE_WORDS or _imperative(words):
-        return None
-    if _first_cue(head.lower(), CONDITIONAL) or any(w in UNCERTAIN for w in words) and words[0] not in PLACE_PREPS:
-        return None  # (a place may carry a doubt: "On the bed, maybe: a book, a phone")
-    mark = m.group("mark").strip()
-    if mark == "-" and not rest:
-        return None
-    return head, mark, rest
-
-
-def _state_places(instruction: str) -> list[tuple[str, str | None, str]]:
-    """An instruction listing a place per state of the thing spoken of ("wet to the laundry
-    basket, dry to the towel rack", "dirty into the hamper, clean back in the wardrobe"): each
-    state is a subjectless heading (a condition on that thing) and its place the instruction.
-    Empty unless every comma-separated item (two or more) opens with a state word and a place."""
-    items = [i.strip(" .!") for i in re.split(r",\s*(?:and\s+)?|;\s*", instruction) if i.strip(" .!")]
-    out: list[tuple[str, str | None, str]] = []
-    for item in items:
-        words = item.split()
-        if len(words) < 3 or words[0].lower() not in STATE_WORDS or words[1].lower() not in PLACE_PREPS | {"back"}:
-            return []
-        out += [(words[0], ":", "heading"), (" ".join(words[1:]), None, "consequence")]
-    return out if len(items) > 1 else []
-
-
-def _split_clauses(sentence: str) -> list[tuple[str, str | None, str]]:
-    """(text, cue, role) pieces of a sentence, recursively for chained conditionals; a verbless
-    heading (`_heading`) is a `heading` piece, its instruction read after it."""
-    # "still on? -> switch OFF.", "Laptop on the floor -> put it on the desk": the arrow is "then"
-    sentence = ARROW.sub(" - ", re.sub(rf"([?:!]){ARROW.pattern}", r"\1 ", sentence))
-    states = _state_places(sentence)
-    if states:
-        return states  # "Bath towel on the floor: wet to the basket, dry to the rack"
-    heading = _heading(sentence)
-    if heading is not None:
-        label, mark, instruction = heading
-        answer = [(t, c, "consequence" if r in ("statement", "scene") else r)
-                  for t, c, r in _split_clauses(instruction)] if instruction.strip(" .!") else []
-        return [(label, mark, "heading"), *answer]
-    low = sentence.lower()
-    for cue in ELSE_CUES:
-        m = re.match(rf"^\W*{re.escape(cue)}\b", low)
-        if m:
-            if cue.startswith("if there"):
-                return [(sentence, cue, "condition")]
-            if cue == "if not" and re.match(r"\s*(?:already\s+|yet\s+)?(?:on|in|inside|at|by|under|near)\b", low[m.end():]):
-                # "Knife - if not in the dish rack, put it in": a negated place of the thing spoken
-                # of, elliptic for "if it is not in the dish rack" (a bare "if not," is the else)
-                return _split_clauses(f"if it is not{sentence[m.end():]}")
-            return [(sentence[m.end():].strip(" ,"), cue, "else")]
-    best = _first_cue(low, CONDITIONAL)
-    if best is None and low.rstrip().endswith("?"):
-        return [(sentence, "?", "condition")]  # "Are the keys on the floor?" asks about the situation
-    if best is None:
-        parts: list[str] = [str(p) for p in re.split(
-            r",\s*(?:and|but|while)\s+|\s+but\s+|;\s*|:\s+|\s+-\s+|\s+while\s+", sentence) if p and p.strip()]
-        out: list[tuple[str, str | None, str]] = []
-        for p in parts:
-            alternative = re.match(rf"^\W*({'|'.join(re.escape(c) for c in ELSE_CUES[:3])})\b", p.lower())
-            if alternative is not None and out:
-                # "return it, close the vanity - else with the hand towel": a later part may be the
-                # alternative of what came before
-                out.append((p[alternative.end():].strip(" ,"), alternative.group(1), "else"))
-                continue
-            if SCENE_START.match(p) or re.search(r"\b(has|have|contains)\b(?!\s+(?:been|\w+(?:ed|en))\b)",
-                                                 p.lower()) and not (
-                    re.search(r"\bif\b", p.lower()) or set(re.findall(r"[a-z]+", p.lower())) & UNCERTAIN):
-                out.append((p, None, "scene"))
-            else:
-                said = re.findall(r"[a-z]+", p.lower())
-                # "The ball often ends up on the floor": a habitual statement says what may be so
-                out.append((p, None, "uncertain" if set(said) & UNCERTAIN or habitual(said) else "statement"))
-        return out
-    start, cue = best
-    after = re.match(r"\W*([a-z' ]{0,30}?)\W*(?:$|[,;]|\s-\s)", expand(low[start + len(cue):]))
-    if cue in ("if", "in case") and after and set(after.group(1).split()) & AVAILABILITY \
-            and len(after.group(1).split()) <= 3 and not set(after.group(1).split()) & NEGATIONS:
-        # "with the wipes if there are any, else with the mop": the alternative is its own piece
-        other = re.search(r"[,;]\s*(?:otherwise|else|or else|failing that)\b", sentence[start:], re.I)
-        if other is not None:
-            cut = start + other.start()
-            return [(sentence[:cut], "if available", "uncertain"),
-                    (sentence[start + other.end():].strip(" ,"), "otherwise", "else")]
-        return [(sentence, "if available", "uncertain")]
-    head = sentence[:start].strip(" ,-")
-    if set(re.findall(r"[a-z]+", head.lower())) <= DISCOURSE:
-        head = ""  # "Then, unless it is in the box, put it in": the condition opens the sentence
-    tail = sentence[start + len(cue):]
-    pieces: list[tuple[str, str | None, str]] = []
-    if head:
-        pieces += _split_clauses(head) if _first_cue(head.lower(), CONDITIONAL) else [(head, cue, "consequence")]
-        if pieces and pieces[-1][2] in ("statement", "scene"):
-            pieces[-1] = (pieces[-1][0], cue, "consequence")
-    m = re.search(r",\s*(then\s+)?|\bthen\b|\s+-\s+|:\s*", tail)
-    if head and not (m and re.match(r"\s*(then\b|,\s*[a-z]+ (it|them)\b)", tail[m.start():].lower())):
-        other = re.search(r"[,;]?\s*\b(otherwise|(?<!where )(?<!thing )else|or else|instead)\b", tail)
-        cond = tail[: other.start()] if other else tail
-        nested = _first_cue(cond.lower()[1:], CONDITIONAL)
-        if nested:
-            cut = nested[0] + 1
-            pieces.append((cond[:cut], cue, "condition"))
-            pieces += _split_clauses(cond[cut:])
-        else:
-            pieces.append((cond, cue, "condition"))
-        if other:
-            pieces.append((tail[other.end():], "otherwise", "else"))
-        return pieces
-    cond, cons = (tail[: m.start()], tail[m.end():]) if m else (tail, "")
-    alt = re.match(r"\s*or\s+[^,;]*,\s*", cons, re.I) if m and tail[m.start()] == "," else None
-    if alt and m:  # "if it is elsewhere, or we are out of it, skip it": one condition with two alternatives
-        cond, cons = tail[: m.start() + 1] + " " + cons[: alt.end()].rstrip(" ,"), cons[alt.end():]
-    pieces.append((cond, cue, "condition"))
-    if cons.strip():
-        rest = _split_clauses(cons)
-        pieces += [(t, c or cue, "consequence" if r in ("statement", "scene") else r) for t, c, r in rest]
-    return pieces
-
-
-def _subsplit(pieces: list[tuple[str, str | None, str]]) -> list[tuple[str, str | None, str]]:
-    """`it is on, and close the wardrobe`: a condition ends at `, and`; what follows is an action."""
-    out: list[tuple[str, str | None, str]] = []
-    for text, cue, role in pieces:
-        splitter = r",\s*(?:and|but|then)\s+" + (r"|,\s*(?=the\s)" if role == "consequence" else "")
-        parts = [p for p in re.split(splitter, text) if p.strip()] or ([text] if role == "condition" else [])
-        for i, part in enumerate(parts):
-            alternative = re.match(rf"^\W*({'|'.join(re.escape(c) for c in ELSE_CUES[:3])})\b", part.lower())
-            if i > 0 and alternative is not None:  # "... if there are some, and otherwise the mop"
-                out.append((part[alternative.end():].strip(" ,"), alternative.group(1), "else"))
-                continue
-            out.append((part, cue, role if i == 0 or role != "condition" else "consequence"))
-    return out
 
 
 def _joined(words: list[str], a: Mention, b: Mention) -> bool:
@@ -818,7 +610,7 @@ class _Reader:
         # table" is no action: the word after an article is a noun)
         verbs = [w for i, w in enumerate(before) if w in ACTIONS and not (i > 0 and before[i - 1] in ARTICLES)]
         return bool(set(skipped) & MOTION) or bool(verbs) or (
-            m.start > 0 and _imperative(words) and all(w in ARTICLES for w in words[1 : m.start]))
+            m.start > 0 and imperative(words) and all(w in ARTICLES for w in words[1 : m.start]))
 
     def _location(self, words: list[str], mentions: list[Mention], idx: int, negated: bool) -> list[Fact]:
         m = mentions[idx]
@@ -1100,13 +892,6 @@ def _copy(a: TaskAnalysis) -> TaskAnalysis:
     )
 
 
-#: the words of a condition that only points back ("if so", "if it has", "should that be the
-#: case", "when that happens", "if they are"): its content is the clause before it
-ANAPHORIC = frozenset({"so", "that", "this", "it", "they", "them", "is", "are", "was", "were", "has",
-                       "have", "had", "do", "does", "did", "be", "been", "being", "the", "case",
-                       "happen", "happens", "happened", "true", "indeed", "still", "again", "really"})
-
-
 #: people who act: a condition about what they do ("when you put it away") is no situation
 AGENTS = frozenset({"you", "we", "i"})
 #: adverbs of a norm ("Normally a fresh diaper is lying on the changing table"): a statement
@@ -1127,10 +912,12 @@ DISCOVERY = frozenset({"find", "found", "spot", "spotted", "see", "saw", "seen",
 def _anaphoric(text: str, facts: list[Fact]) -> bool:
     """A condition with no fact of its own whose words only point back ("if it is not" too; "should
     you find it there": an agent coming upon the thing, `DISCOVERY`)."""
+    if any(not f.goal for f in facts):
+        return False
     words = {w for w, _, _ in tokens(expand(text))}
-    found = words & DISCOVERY and words & AGENTS
-    return not any(not f.goal for f in facts) and words <= ANAPHORIC | {"not"} | (
-        DISCOVERY | AGENTS | {"there", "here"} if found else set())
+    if words & DISCOVERY and words & AGENTS:
+        return words <= ANAPHORIC | {"not"} | DISCOVERY | AGENTS | {"there", "here"}
+    return points_back(text)
 
 
 def _antecedent(clauses: list[Clause], sentence: int, pointing: set[int]) -> tuple[list[Fact], tuple[str, ...]]:
@@ -1287,7 +1074,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     #: (sentence, members) of a distributive phrase: its sentence's facts hold for each member
     spread: tuple[int, tuple[str, ...]] = (-1, ())
     for si, sent in enumerate(sentences):
-        for text, cue, role in _subsplit(_split_clauses(_apposition(sent))):
+        for text, cue, role in split_clauses(sent):
             if (DISTRIBUTIVE.match(text) or ANY_OF.search(text)) and (members := _members(clauses, categories, grammatical)):
                 spread = (grammatical, members)
             if role == "heading":

@@ -13,11 +13,11 @@ in the vanity", "it's where the flashlight lives") is its home, which the text m
 and is read apart from where it *is*; nothing is placed from a condition, a question, an
 instruction (where a thing goes) or a doubted clause ("there might be a book on the floor").
 
-The reader works on clauses (`_clauses`): a sentence is cut at semicolons, dashes, brackets and
-before a subordinate clause, each clause gets its mood (a statement, a condition, an
-instruction), and the subject of a statement is the noun-phrase list before its verb, not the
-nearest noun. The words each form turns on are the data tables below. Like the analyser, this
-reads only the brief (description, rooms, roles), never ground truth.
+The reader works on clauses (`_clauses`, cut by `offline.clauses.clause_spans`): a sentence is cut
+at semicolons, dashes, brackets and before a subordinate clause, each clause gets its mood (a
+statement, a condition, an instruction), and the subject of a statement is the noun-phrase list
+before its verb, not the nearest noun. The words each form turns on are the data tables below. Like
+the analyser, this reads only the brief (description, rooms, roles), never ground truth.
 """
 
 from __future__ import annotations
@@ -31,8 +31,25 @@ from dataclasses import dataclass
 from typing import Any
 
 from logicenveval.domain.catalog import Catalog, load_catalog
+from logicenveval.offline.clauses import (
+    DOUBT,
+    IMPERATIVES,
+    PUNCT,
+    SUBORDINATORS,
+    Span,
+    clause_spans,
+    doubts,
+)
 from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, singular
-from logicenveval.offline.sentences import ACTIONS, PREP_IN, PREP_ON, STATE_WORDS, expand, habitual
+from logicenveval.offline.sentences import (
+    ACTIONS,
+    PREP_IN,
+    PREP_ON,
+    STATE_WORDS,
+    expand,
+    habitual,
+    split_sentences,
+)
 
 # ---------------------------------------------------------------------------------------------
 # Reading rules (data tables). Each names a class of words, never a task's phrase or object.
@@ -69,28 +86,10 @@ ADVERBS = frozenset({"still", "already", "always", "usually", "normally", "often
                      "just", "both", "all", "then", "now", "currently", "out", "over", "down", "up",
                      "back", "there", "here", "too", "each", "mostly", "generally", "typically"})
 VERBS = BE | PERFECT | STATIVE | RESULT | KEEP_VERBS | HAVE_VERBS | MOTION
-#: words that make a clause (or the rest of a list) doubtful: nothing after them is placed
-DOUBT = frozenset({"may", "might", "could", "maybe", "perhaps", "possibly", "probably", "likely",
-                   "sometimes", "whether", "any", "think", "guess", "somewhere"})
-#: words that open a subordinate clause: a condition or a time, not a statement about the scene
-SUBORDINATORS = frozenset({"if", "when", "whenever", "unless", "once", "while", "whether", "should",
-                           "until", "before", "after", "otherwise", "else", "though", "although"})
-#: subordinators that are modal verbs elsewhere ("the shirt should be in the basket")
-MODAL_SUBORDINATORS = frozenset({"should"})
 #: modal and semi-modal words before a verb group that make it a norm or a goal, not a fact
 #: ("the shirt should be in the basket", "it needs to go on the desk", "is to be put away")
 NORMATIVE = frozenset({"should", "must", "ought", "shall", "would", "will", "can", "to", "needs", "need",
                        "has", "have", "wants", "want"})
-#: words that open a new clause after a comma or "and" (a subject pronoun or a sentence adverb)
-CLAUSE_OPENERS = frozenset({"it", "they", "we", "i", "you", "someone", "somebody", "he", "she", "then",
-                            "but", "so", "or", "which", "that", "where", "this"})
-#: verbs that open an instruction (the imperative mood): a place after its object is a goal
-IMPERATIVES = ACTIONS | frozenset({
-    "check", "clean", "wipe", "close", "open", "shut", "switch", "turn", "grab", "fetch", "use", "pop",
-    "chuck", "get", "look", "mop", "scrub", "rinse", "wash", "dry", "hang", "make", "go", "find",
-    "pick", "lock", "tidy", "clear", "collect", "gather", "do", "keep", "see", "water", "mist", "spray",
-    "feed", "lay", "replace", "swap", "dump", "stash", "pull", "remove", "straighten", "fix", "don't",
-    "let", "try", "give", "pour", "empty", "toss", "please"})
 #: where a thing rests (not "into"/"onto", which say where it goes)
 AT = frozenset({"on", "in", "inside", "atop", "upon"})
 #: relative pronouns and the prepositions that lead into them ("on which", "in which")
@@ -110,10 +109,6 @@ SUBJECT_PRONOUNS = frozenset({"someone", "somebody", "we", "i", "you", "they", "
 #: words before a room that let it frame the rest of its sentence ("In the kitchen, ...", "Over in
 #: the living room there ...")
 _LEADS = frozenset({"over", "out", "down", "up", "and", "then", "also", "back", "now", "next"})
-_PUNCT = frozenset({",", ";", ":", "(", ")", "-", "?"})
-_HARD = frozenset({";", "(", ")", "-", "?", ":"})
-#: how a polite request opens ("Could you sort out the coat ...?"): a question that is an instruction
-REQUESTS = frozenset({"could", "can", "would", "will"})
 
 
 #: what a phrase says of a place: `settled` (a statement: "a nightstand with a lamp", "the
@@ -164,8 +159,6 @@ def described_placements(brief: Mapping[str, Any], catalog: Catalog | None = Non
 # ---------------------------------------------------------------------------------------------
 
 _TOKEN = re.compile(r"[a-z0-9]+(?:'[a-z]+)?|[,;:()?]|(?<=\s)[-\u2013\u2014](?=\s)|\n")
-_SENTENCE_END = re.compile(r"(?<=[.!])\s+|\n+")
-_ABBREV = re.compile(r"\b(e\.g|i\.e|etc|approx|vs)\.", re.I)
 
 
 @dataclass(frozen=True)
@@ -187,15 +180,6 @@ class _Sentence:
 
 
 @dataclass
-class _Clause:
-    start: int  # token range of the sentence
-    end: int
-    mood: str  # "statement" | "condition" | "instruction"
-    doubted: bool
-    goal: bool = False  # a verbless part going on with a goal ("- the book on the couch")
-
-
-@dataclass
 class _Reading:
     """Facts found so far, per kind: `held[kind][role]` (on/inside/floor), `rooms[kind][role]`."""
 
@@ -213,12 +197,8 @@ class _Reading:
 
 
 def _sentences(text: str, lex: Lexicon) -> list[_Sentence]:
-    protected = _ABBREV.sub(lambda m: m.group(0).replace(".", "\u2024"), expand(text))
     out = []
-    for part in _SENTENCE_END.split(protected):
-        part = part.strip().replace("\u2024", ".")
-        if not part:
-            continue
+    for part in split_sentences(expand(text), full_stops_only=True):
         low = part.lower()
         toks = [_Token(m.group(0), singular(m.group(0)) if m.group(0)[0].isalnum() else m.group(0),
                        m.start(), m.end()) for m in _TOKEN.finditer(low)]
@@ -238,55 +218,10 @@ def _with_room_word(toks: list[_Token], mentions: list[Mention], lex: Lexicon) -
     return sorted(mentions + extra, key=lambda m: m.start)
 
 
-def _clauses(words: list[str], lo: int, hi: int) -> list[_Clause]:
-    """The clauses of words[lo:hi]: cut at hard punctuation (`;`, a dash, brackets, `?`), before a
-    subordinator, and at a comma or "and" that a clause opener or an imperative verb follows. A
-    clause opened by a subordinator runs to its comma; a clause ending in "?" is a question."""
-    cuts = [lo]
-    for i in range(lo, hi):
-        w = words[i]
-        nxt = words[i + 1] if i + 1 < hi else ""
-        if w in _HARD:
-            cuts += [i, i + 1]
-        elif w in SUBORDINATORS and i > lo and words[i - 1] not in ("in", "case") and (
-                w not in MODAL_SUBORDINATORS or words[i - 1] in _PUNCT | {"and", "but", "or", "then"}):
-            cuts.append(i)  # "should" opens a condition only inverted: "..., should the bin be full"
-        elif w == "case" and i > lo and words[i - 1] == "in":
-            cuts.append(i - 1)
-        elif w in (",", "and") and (nxt in CLAUSE_OPENERS or nxt in SUBORDINATORS or nxt in IMPERATIVES
-                                    or (nxt in ("in",) and i + 2 < hi and words[i + 2] == "case")):
-            cuts.append(i + 1 if w == "," else i)
-        elif w == "," and any(c > lo and words[c] in SUBORDINATORS | {"in"} for c in cuts[-1:]):
-            cuts.append(i + 1)  # the end of a fronted condition: "If the pan is hot, ..."
-    cuts.append(hi)
-    out: list[_Clause] = []
-    bounds = sorted(set(cuts))
-    for a, b in zip(bounds, bounds[1:], strict=False):
-        body = [w for w in words[a:b] if w not in _PUNCT]
-        if not body:
-            continue
-        question = (b < len(words) and words[b] == "?" or (b - 1 >= a and words[b - 1] == "?")) and not (
-            body[0] in REQUESTS and body[1:2] == ["you"])
-        # "Plate on the table: ..." (a verbless checklist item), not "The pantry has two shelves: ..."
-        heading = b < len(words) and words[b] == ":" and not set(body) & VERBS
-        # "... should go where it belongs - the book on the couch": a verbless part after a dash or a
-        # colon goes on with the clause before it (here a goal), not a statement of its own
-        follows_goal = (a > 0 and words[a - 1] in ("-", ":") and not set(body) & VERBS and bool(out)
-                        and (out[-1].mood == "instruction" or bool(set(words[out[-1].start:out[-1].end])
-                                                                    & (MOTION | NORMATIVE))))
-        first = next((w for w in body if w not in ("and", "then", "please", "just", "also", "so", "now",
-                                                    "first", "last", "oh", "right", "but", "or")), "")
-        if first in SUBORDINATORS or body[:2] == ["in", "case"] or question:
-            mood = "condition"
-        elif first in IMPERATIVES or body[0] in REQUESTS and body[1:2] == ["you"] or follows_goal:
-            mood = "instruction"
-        elif heading:
-            mood = "condition"
-        else:
-            mood = "statement"
-        # a habitual statement ("the ball keeps ending up on the floor") is doubted like "may"
-        out.append(_Clause(a, b, mood, _doubts(body) or habitual(body), follows_goal))
-    return out
+def _clauses(words: list[str], lo: int, hi: int) -> list[Span]:
+    """The clauses of words[lo:hi] (`clause_spans`), with this reader's verbs: a part with none of
+    `VERBS` is verbless, and one of `MOTION` or `NORMATIVE` says where things go."""
+    return clause_spans(words, lo, hi, verbs=VERBS, goal_words=MOTION | NORMATIVE)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -344,11 +279,6 @@ def _read_sentence(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Re
             reading.last_holder = holders[-1]
 
 
-def _doubts(words: list[str]) -> bool:
-    """Whether the words carry a doubt ("may", "possibly", "probably"); "could you" opens a request."""
-    return any(w in DOUBT and not (w in REQUESTS and words[k + 1:k + 2] == ["you"]) for k, w in enumerate(words))
-
-
 def _roles(m: Mention, sent: _Sentence) -> tuple[str, ...]:
     """The roles a mention names: its one role, or all of them when the word is plural ("two pet
     bowls", "the toy boxes") and so names every one."""
@@ -372,7 +302,7 @@ def _np_list(sent: _Sentence, ms: list[Mention], lo: int, hi: int) -> list[Menti
             continue
         words = sent.words
         if doubt_from is None:
-            doubt_from = next((k for k in range(lo, m.start) if _doubts(words[k:k + 2])), None)
+            doubt_from = next((k for k in range(lo, m.start) if doubts(words[k:k + 2])), None)
         if doubt_from is not None:
             # the doubt ends with the "or" chain it opens: at a comma after an "or" has been seen
             nxt = next((n.start for n in ms if n.start > m.start), hi)
@@ -596,7 +526,7 @@ def _room_words(sent: _Sentence, lex: Lexicon, reading: _Reading) -> None:
                 reading.room("settled", m.roles[0], room)
 
 
-def _locative(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, catalog: Catalog,
+def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
               reading: _Reading) -> None:
     """"The cardboard box is on the floor next to the stool", "the dishwasher, the sink and a
     cabinet are in the kitchen", "The bath mat lies on the floor", "A dirty mark has been left on
@@ -647,7 +577,7 @@ def _locative(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon,
             subjects = [back] if back is not None else []
         first = subjects[0].start if subjects else start
         said = words[max(lo, first - 3):found[1].end]
-        if not subjects or words[clause.start] == "there" or _doubts(said) or habitual(said):
+        if not subjects or words[clause.start] == "there" or doubts(said) or habitual(said):
             lo = found[1].end
             continue  # no subject, an existential (`_existential`), a doubt ("may have been put") or a habit
         prep, holder = found
@@ -659,7 +589,7 @@ def _locative(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon,
         _fragment(sent, clause, ms, lex, catalog, reading)
 
 
-def _fragment(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, catalog: Catalog,
+def _fragment(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
               reading: _Reading) -> None:
     """"Dirty mark on the floor.", "Bath mat on the floor, by the tub": a verbless statement (the
     terse register), a noun-phrase list and its place."""
@@ -697,14 +627,14 @@ def _definite(words: list[str], start: int) -> bool:
     return j >= 0 and words[j] in ("the", "my", "our", "your", "his", "her", "their", "its")
 
 
-def _antecedent(sent: _Sentence, clause: _Clause) -> Mention | None:
+def _antecedent(sent: _Sentence, clause: Span) -> Mention | None:
     """The noun a relative clause ("..., which stands on the floor") speaks of: the last mention
     before it in its sentence."""
     before = [m for m in sent.mentions if m.end <= clause.start and m.kind == "role"]
     return before[-1] if before else None
 
 
-def _gapped(sent: _Sentence, clause: _Clause, ms: list[Mention], after: int, kind: str, lex: Lexicon,
+def _gapped(sent: _Sentence, clause: Span, ms: list[Mention], after: int, kind: str, lex: Lexicon,
             catalog: Catalog, reading: _Reading) -> int:
     """", a sofa and a coffee table in the living room, and the front door at the end of the
     hallway": a list and a place after the place of a locative clause, its verb left out."""
@@ -732,7 +662,7 @@ def _gapped(sent: _Sentence, clause: _Clause, ms: list[Mention], after: int, kin
     return after
 
 
-def _possessive(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, catalog: Catalog,
+def _possessive(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
                 reading: _Reading) -> None:
     """"The kitchen, next door to the dining room, has the dishwasher, the sink ...", "It contains a
     bed, a wardrobe ...", "The basket also holds a box of cereal", "The pantry has two shelves":
@@ -783,7 +713,7 @@ def _generic(sent: _Sentence, m: Mention) -> bool:
     return last.word != last.lemma and not (j >= 0 and sent.words[j] in ARTICLES)
 
 
-def _existential(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, catalog: Catalog,
+def _existential(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
                  reading: _Reading) -> None:
     """"There is a dirty mark on the floor", "There are a pan and a pot on the stove": the listed
     objects are at the place that ends the list."""
@@ -803,7 +733,7 @@ def _existential(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexic
         return
 
 
-def _where(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, catalog: Catalog,
+def _where(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
            reading: _Reading) -> None:
     """"the kitchen, where the dishwasher, the sink ... are", "a nightstand on which a lamp
     stands", "that's where the dishwasher ... are", "it's where the flashlight lives", "the
@@ -828,7 +758,7 @@ def _where(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, ca
             continue
         stop = next((k for k in range(i + 1, clause.end) if words[k] in (",",) and k + 1 < clause.end
                      and words[k + 1] in IMPERATIVES), clause.end)
-        if _doubts(words[i + 1:stop]) or not set(words[i + 1:stop]) & (BE | STATIVE | KEEP_VERBS):
+        if doubts(words[i + 1:stop]) or not set(words[i + 1:stop]) & (BE | STATIVE | KEEP_VERBS):
             continue  # "where a pan may be"; "where a dirty mug goes" (a goal)
         kind = "kept" if set(words[i + 1:stop]) & KEEP_VERBS else "settled"
         items = _np_list(sent, ms, i + 1, stop)
@@ -848,10 +778,10 @@ def _noun_tail(gap: list[str]) -> bool:
     or a word or two of a longer name than the one matched ("the vanity cabinet, where ...")."""
     tail = gap[:-1] if gap[-1:] == [","] else gap
     return len(tail) <= 2 and not set(tail) & (BE | PERFECT | STATIVE | RESULT | KEEP_VERBS | AT | ARTICLES
-                                                | _PUNCT | DOUBT | SUBORDINATORS | THING_PRONOUNS)
+                                                | PUNCT | DOUBT | SUBORDINATORS | THING_PRONOUNS)
 
 
-def _pointed(sent: _Sentence, clause: _Clause, lex: Lexicon, catalog: Catalog, reading: _Reading,
+def _pointed(sent: _Sentence, clause: Span, lex: Lexicon, catalog: Catalog, reading: _Reading,
              pronoun: str) -> Mention | None:
     """What the pronoun of "it's where ..." / "that's where ..." points back to, the first of these
     that can hold things (a room, a surface or a container): for "it", the subject of the last
@@ -874,7 +804,7 @@ def _unnamed_item(sent: _Sentence, lex: Lexicon, lo: int, hi: int, exclude: str)
     """The role a noun no name matches stands for ("the spares" for the spare roll): a word of
     exactly one role's name."""
     for t in sent.toks[lo:hi]:
-        if t.lemma in ARTICLES or t.lemma in _PUNCT or len(t.lemma) < 3:
+        if t.lemma in ARTICLES or t.lemma in PUNCT or len(t.lemma) < 3:
             continue
         owners = [r for r in lex.roles if r != exclude and t.lemma in r.split("_")]
         if len(owners) == 1:
@@ -882,7 +812,7 @@ def _unnamed_item(sent: _Sentence, lex: Lexicon, lo: int, hi: int, exclude: str)
     return None
 
 
-def _kept(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, catalog: Catalog,
+def _kept(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
           reading: _Reading) -> None:
     """"it's kept in the vanity", "we store the spares in the vanity cabinet", "the cloth lives in
     the vanity", "(spares are kept there)": the object (named after the verb, else the clause's
@@ -930,7 +860,7 @@ def _kept(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, cat
         return
 
 
-def _with(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, catalog: Catalog,
+def _with(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
           reading: _Reading) -> None:
     """"a nightstand with a lamp", "the nightstand with a lamp on it", "nightstand with lamp": a
     carried thing on (or in) the piece it is said to come with (not "a table with a mop leaning
@@ -952,7 +882,7 @@ def _with(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, cat
         if cat is None or not cat.pickable:
             continue
         after = words[b.end:b.end + 2]
-        if b.end < clause.end and not (after in (["on", "it"], ["in", "it"]) or words[b.end] in _PUNCT | {"and"}):
+        if b.end < clause.end and not (after in (["on", "it"], ["in", "it"]) or words[b.end] in PUNCT | {"and"}):
             continue
         if b.end < len(words) and words[b.end] in STATIVE | {"leaning", "propped"}:
             continue
@@ -961,7 +891,7 @@ def _with(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, cat
             reading.place("settled", b.roles[0], fact)
 
 
-def _in_room(sent: _Sentence, clause: _Clause, ms: list[Mention], reading: _Reading) -> None:
+def _in_room(sent: _Sentence, clause: Span, ms: list[Mention], reading: _Reading) -> None:
     """"the drying rack out on the balcony", "the table lamp in the bedroom", "the nearest sink is
     in the kitchen": a definite object named right before "in/on <room>" (a noun modifier),
     unless an instruction moves it there ("put the mug in the kitchen") or it is only possibly
@@ -978,7 +908,7 @@ def _in_room(sent: _Sentence, clause: _Clause, ms: list[Mention], reading: _Read
         reading.room("settled", a.roles[0], b.roles[0])  # a noun phrase's own place, whatever the mood
 
 
-def _moved(words: list[str], start: int, clause: _Clause) -> bool:
+def _moved(words: list[str], start: int, clause: Span) -> bool:
     """The object at `start` follows an instruction verb ("put the clean mug ...")."""
     j = start - 1
     while j >= clause.start and (words[j] in ARTICLES or words[j] in STATE_WORDS or words[j] in COLOR_WORDS
@@ -987,7 +917,7 @@ def _moved(words: list[str], start: int, clause: _Clause) -> bool:
     return j >= clause.start and words[j] in ACTIONS
 
 
-def _resting(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, catalog: Catalog,
+def _resting(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
              reading: _Reading) -> None:
     """"check the towel on the drying rack", "if the mug on the coffee table is dirty": a definite
     carried thing named right before "on/in <holder>" is presumed to rest there, unless an
@@ -1013,7 +943,7 @@ def _resting(sent: _Sentence, clause: _Clause, ms: list[Mention], lex: Lexicon, 
             reading.place("settled" if described else "presumed", a.roles[0], fact)
 
 
-def _described_subject(words: list[str], start: int, end: int, clause: _Clause) -> bool:
+def _described_subject(words: list[str], start: int, end: int, clause: Span) -> bool:
     """"if the mug on the coffee table is dirty", "Is the lamp on the nightstand still on?": a
     definite object whose state (not place) is in question: a state word follows its place."""
     j = end

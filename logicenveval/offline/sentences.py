@@ -78,6 +78,7 @@ _CONTRACTIONS = [
 #: still on? -> switch OFF.", "Lamp on => off"), never a sentence of its own
 ARROW = re.compile(r"\s*(?:->|=>|\u2192)\s*")
 _SENT = re.compile(r"(?<=[.!?;:])\s+(?!->|=>|\u2192)|\n+|(?<=\))\s+(?=[A-Z])")
+_FULL_STOP = re.compile(r"(?<=[.!])\s+|\n+")
 _ABBREV = re.compile(r"\b(e\.g|i\.e|etc|approx|vs)\.", re.I)
 
 
@@ -89,8 +90,10 @@ def expand(text: str) -> str:
     return out
 
 
-def split_sentences(text: str) -> list[str]:
-    """The text's sentences (and `;`/`:`-separated parts), abbreviations kept whole."""
+def split_sentences(text: str, *, full_stops_only: bool = False) -> list[str]:
+    """The text's sentences (and `;`/`:`-separated parts), abbreviations kept whole. With
+    `full_stops_only`, only at a full stop, "!" or a line break: for a reader that cuts the rest
+    itself (`offline.clauses.clause_spans` cuts at ";", ":", "?" and brackets)."""
     protected = _ABBREV.sub(lambda m: m.group(0).replace(".", "\u2024"), text)
-    parts = [p.strip().replace("\u2024", ".") for p in _SENT.split(protected)]
+    parts = [p.strip().replace("\u2024", ".") for p in (_FULL_STOP if full_stops_only else _SENT).split(protected)]
     return [p for p in parts if p]

@@ -1,0 +1,405 @@
+"""Sentences into clauses, for both readers of a description: the factor reader
+(`offline.analysis`) and the placement reader (`offline.placement`).
+
+A clause comes with its *mood* and its *link* to the clauses around it. Two cuts of one sentence
+are given, one per reader, with the same cue words:
+
+- `split_clauses` cuts the text of a sentence into `Piece`s (text, cue, role). The role is the
+  mood the factor reader needs: a `condition` (what the text is unsure of: "if the bin is full",
+  a question, a heading "Mirror dirty?"), a `consequence` (what follows under it), an `else` (the
+  alternative: "otherwise ..."), an `uncertain` statement ("a book may be on the floor", "the ball
+  often ends up there"), a `scene` ("there is a sink", "the box has two drawers") or a plain
+  `statement`. The cue is the link: the word that opened the condition a consequence or an
+  alternative depends on ("if", "unless", "otherwise", "?", ":"), so chained conditionals read
+  in order.
+- `clause_spans` cuts a sentence's tokens into `Span`s (token range, mood, doubt, link) for the
+  placement reader, whose moods are `statement`, `condition` (a subordinate clause, a question, a
+  verbless heading) and `instruction` (the imperative mood, a polite request, a verbless part
+  going on with an instruction before it: its `goal` link).
+
+The word tables are the data below; one table of cues (`CONDITIONAL`, `ELSE_CUES`, `TIME_CUES`)
+opens a condition in both cuts (`SUBORDINATORS` is its one-word part). What a clause then says of
+the scene is each reader's own business.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import NamedTuple
+
+from lemminflect import getAllLemmas
+
+from logicenveval.offline.lexicon import tokens
+from logicenveval.offline.sentences import ACTIONS, ARROW, STATE_WORDS, expand, habitual
+
+# ---------------------------------------------------------------------------------------------
+# Word tables (data). Each names a class of words, never a task's phrase or object.
+# ---------------------------------------------------------------------------------------------
+
+#: determiners and the like before a noun (after a base-form verb they open its object: `OBJECT_STARTS`)
+ARTICLES = frozenset({"the", "a", "an", "any", "some", "one", "of", "its", "their", "this", "that",
+                      "these", "those", "every", "each", "your", "my", "our"})
+#: prepositions before a place or a goal: an object after them is not what a clause speaks of
+PLACE_PREPS = frozenset({"on", "onto", "in", "into", "inside", "to", "from", "by", "near", "under"})
+#: words that negate what a clause says ("if there is no roll", "the lamp is not on")
+NEGATIONS = frozenset({"not", "no", "none", "never", "without", "nothing", "nobody", "nowhere"})
+#: words that make a statement uncertain (an `uncertain` piece, not a fact)
+UNCERTAIN = frozenset({"may", "might", "possibly", "possible", "perhaps", "maybe", "could", "sometimes",
+                       "occasionally", "potentially", "probably", "likely"})
+#: cues that open a condition (the earliest in a sentence wins, the longest at one place: `_first_cue`)
+CONDITIONAL = ("depending on whether", "depending on if", "in case", "as long as", "provided that",
+               "only if", "if not", "if so", "whether", "if", "unless", "whenever", "when", "while", "once",
+               "should there be", "should")
+#: words that open a sentence without saying anything of the scene ("Then, if ...", "Oh, and
+#: should ...")
+DISCOURSE = frozenset({"then", "and", "also", "so", "first", "second", "third", "next", "finally", "last",
+                       "lastly", "oh", "but", "now", "plus", "afterwards", "after", "that", "right", "okay",
+                       "ok", "well"})
+#: cues that open the alternative of the condition before ("otherwise", "if not")
+ELSE_CUES = ("otherwise", "else", "failing that", "if not", "if there is not", "if there are not")
+#: words after "if" that make it a condition of availability ("if there are any")
+AVAILABILITY = frozenset({"available", "any", "present", "possible", "exist", "exists", "there"})
+#: how a sentence that sets the scene opens ("there is ...", "you are in ...")
+SCENE_START = re.compile(r"^\W*([a-z' ,]{0,50}?\bthere (is|are)\b(?! (no|not|maybe|possibly))|you are\b|we are\b)",
+                         re.I)
+
+#: subordinators that open a clause of time or concession, not a condition on the scene (for the
+#: placement reader: nothing in them is placed)
+TIME_CUES = frozenset({"until", "before", "after", "though", "although"})
+#: words that open a subordinate clause: a condition or a time, not a statement about the scene
+#: (the one-word cues of `CONDITIONAL` and `ELSE_CUES`, and `TIME_CUES`)
+SUBORDINATORS = frozenset(c for c in CONDITIONAL + ELSE_CUES if " " not in c) | TIME_CUES
+#: subordinators that are modal verbs elsewhere ("the shirt should be in the basket")
+MODAL_SUBORDINATORS = frozenset({"should"})
+#: words that open a new clause after a comma or "and" (a subject pronoun or a sentence adverb)
+CLAUSE_OPENERS = frozenset({"it", "they", "we", "i", "you", "someone", "somebody", "he", "she", "then",
+                            "but", "so", "or", "which", "that", "where", "this"})
+#: verbs that open an instruction (the imperative mood): a place after its object is a goal
+IMPERATIVES = ACTIONS | frozenset({
+    "check", "clean", "wipe", "close", "open", "shut", "switch", "turn", "grab", "fetch", "use", "pop",
+    "chuck", "get", "look", "mop", "scrub", "rinse", "wash", "dry", "hang", "make", "go", "find",
+    "pick", "lock", "tidy", "clear", "collect", "gather", "do", "keep", "see", "water", "mist", "spray",
+    "feed", "lay", "replace", "swap", "dump", "stash", "pull", "remove", "straighten", "fix", "don't",
+    "let", "try", "give", "pour", "empty", "toss", "please"})
+#: words that make a clause (or the rest of a list) doubtful: nothing after them is placed
+DOUBT = frozenset({"may", "might", "could", "maybe", "perhaps", "possibly", "probably", "likely",
+                   "sometimes", "whether", "any", "think", "guess", "somewhere"})
+#: how a polite request opens ("Could you sort out the coat ...?"): a question that is an instruction
+REQUESTS = frozenset({"could", "can", "would", "will"})
+#: punctuation tokens; the hard ones always end a clause (a comma only before a new clause)
+PUNCT = frozenset({",", ";", ":", "(", ")", "-", "?"})
+_HARD = frozenset({";", "(", ")", "-", "?", ":"})
+#: words before a clause's first word that say nothing of its mood ("and then put ...")
+_LEAD_INS = frozenset({"and", "then", "please", "just", "also", "so", "now", "first", "last", "oh", "right",
+                       "but", "or"})
+
+
+# ---------------------------------------------------------------------------------------------
+# The factor reader's cut: text pieces with their role and cue
+# ---------------------------------------------------------------------------------------------
+
+
+class Piece(NamedTuple):
+    """A clause of a sentence as the factor reader reads it (see the module's docstring)."""
+
+    text: str
+    cue: str | None
+    role: str  # "condition" | "consequence" | "else" | "uncertain" | "statement" | "scene" | "heading"
+
+
+def split_clauses(sentence: str) -> list[Piece]:
+    """The clauses of one sentence (as `split_sentences` gives it), in order, with their role and
+    cue: a listed apposition and a fronted "without" rewritten first (`_apposition`), then the
+    sentence cut at its cues (`_split`), then a condition cut where an action follows (`_subsplit`)."""
+    return [Piece(*p) for p in _subsplit(_split(_apposition(sentence)))]
+
+
+_GENERIC = (r"whatever|anything|everything|something|all|(?:any|the|all the)\s+(?:items?|things?|objects?|stuff)"
+            r"|items|things|objects|stuff")
+_APPOSITION = re.compile(rf"^(?P<lead>\W*)(?:{_GENERIC})\s+(?:that\s+|which\s+)?(?P<pred>[^:\u2013-]+?)\s*(?:\s-|\u2013|:)\s+"
+                         r"(?P<list>[^:\u2013-]+?(?:,|\bor\b|\band\b)[^:\u2013-]+?)\s+(?:-|\u2013)\s+(?P<rest>.+)$", re.I)
+_WITHOUT = re.compile(r"^(\W*)(?:without|with no)\s+(?:a|an|any|the)?\s*(?=\w[^,]*,)", re.I)
+
+
+def _apposition(sentence: str) -> str:
+    """`Whatever is lying on it - a book, a clock, a phone - goes ...`: the listed objects are the
+    subject of the generic word's predicate (`a book, a clock, a phone is lying on it - goes ...`);
+    a fronted `without a sponge, ...` is the condition `if there is no sponge, ...`."""
+    sentence = _WITHOUT.sub(r"\1if there is no ", sentence)  # "without a sponge, use ...": a condition
+    m = _APPOSITION.match(sentence)
+    if m is None:
+        return sentence
+    return f"{m.group('lead')}{m.group('list')} {m.group('pred')} - {m.group('rest')}"
+
+
+def _first_cue(low: str, cues: tuple[str, ...]) -> tuple[int, str] | None:
+    best: tuple[int, str] | None = None
+    for cue in cues:
+        pattern = rf"(?<![a-z]){re.escape(cue)}\b"
+        if cue in ("once", "while"):  # a conjunction only before its clause: not "a once-over"
+            pattern = rf"(?<![a-z-]){cue}(?=\s+[a-z])"
+        if cue == "should":  # only the inverted conditional: "should the hamper be full, ..."
+            pattern = r"(?:^|[,;:(-]\s*|\b(?:and|or|but)\s+)should\b(?=\s+(?:the|there|a|an|it|they|any|one|your|my|our|its|their|this|that|these|those|some|no|you|we|either|neither|each|both)\b)"
+        m = re.search(pattern, low)
+        if m is None:
+            continue
+        start = m.end() - len(cue)
+        if best is None or start < best[0] or (start == best[0] and len(cue) > len(best[1])):
+            best = (start, cue)
+    return best
+
+
+#: words that make a segment a clause of its own (a finite verb, its subject, an existential),
+#: so that it is no verbless heading: "Lamp left on:" is a heading, "the box has two drawers:" not
+#: ("can" is left out: "Trash can full:" is a heading; "can you ...?" has its subject)
+CLAUSE_WORDS = frozenset({
+    "is", "are", "was", "were", "am", "be", "been", "has", "have", "had", "do", "does", "did",
+    "will", "would", "could", "shall", "should", "may", "might", "must", "need", "needs",
+    "keep", "keeps", "i", "you", "we", "he", "she", "it", "they", "someone", "somebody", "everyone",
+    "there", "please", "let", "make", "get"})
+#: words after a base-form verb that make it an imperative with its object ("clean it", "put
+#: the", "pick up"), not an adjective or noun opening a heading ("clean - ...", "water bowl ...")
+OBJECT_STARTS = ARTICLES | frozenset({"it", "them", "up", "out", "back", "away", "down", "off", "over",
+                                      "with", "at", "from", "onto", "into"})
+#: a heading ends where its instruction starts: at a colon, a question mark or a spaced dash
+_HEADING = re.compile(r"^(?P<head>[^:?\u2013]+?)(?P<mark>\?|:|\s+(?:-|\u2013)\s+)(?P<rest>.*)$", re.S)
+
+
+def imperative(words: list[str]) -> bool:
+    """The segment opens with a verb in its base form followed by its object or particle."""
+    if len(words) < 2:
+        return False
+    lemmas = getAllLemmas(words[0]).get("VERB", ())
+    return words[0] in lemmas and words[1] in OBJECT_STARTS
+
+
+def _heading(sentence: str) -> tuple[str, str, str] | None:
+    """A verbless heading and its instruction: "Pillow on the floor: back on the bed", "Mirror
+    dirty? Clean it", "dirty - into the hamper", "Table dirty:" (the instruction in the next piece).
+    Returns (heading, mark, rest), or None when the first segment is a clause of its own (it has a
+    finite verb, a subject, a conditional cue) or an instruction (an imperative)."""
+    m = _HEADING.match(sentence.strip())
+    if m is None:
+        return None
+    head, rest = m.group("head").strip(" ,"), m.group("rest").strip()
+    words = [w for w, _, _ in tokens(expand(head))]
+    if not words or len(words) > 10 or set(words) & CLAUSE_WORDS or imperative(words):
+        return None
+    if _first_cue(head.lower(), CONDITIONAL) or any(w in UNCERTAIN for w in words) and words[0] not in PLACE_PREPS:
+        return None  # (a place may carry a doubt: "On the bed, maybe: a book, a phone")
+    mark = m.group("mark").strip()
+    if mark == "-" and not rest:
+        return None
+    return head, mark, rest
+
+
+def _state_places(instruction: str) -> list[tuple[str, str | None, str]]:
+    """An instruction listing a place per state of the thing spoken of ("wet to the laundry
+    basket, dry to the towel rack", "dirty into the hamper, clean back in the wardrobe"): each
+    state is a subjectless heading (a condition on that thing) and its place the instruction.
+    Empty unless every comma-separated item (two or more) opens with a state word and a place."""
+    items = [i.strip(" .!") for i in re.split(r",\s*(?:and\s+)?|;\s*", instruction) if i.strip(" .!")]
+    out: list[tuple[str, str | None, str]] = []
+    for item in items:
+        words = item.split()
+        if len(words) < 3 or words[0].lower() not in STATE_WORDS or words[1].lower() not in PLACE_PREPS | {"back"}:
+            return []
+        out += [(words[0], ":", "heading"), (" ".join(words[1:]), None, "consequence")]
+    return out if len(items) > 1 else []
+
+
+def _split(sentence: str) -> list[tuple[str, str | None, str]]:
+    """(text, cue, role) pieces of a sentence, recursively for chained conditionals; a verbless
+    heading (`_heading`) is a `heading` piece, its instruction read after it."""
+    # "still on? -> switch OFF.", "Laptop on the floor -> put it on the desk": the arrow is "then"
+    sentence = ARROW.sub(" - ", re.sub(rf"([?:!]){ARROW.pattern}", r"\1 ", sentence))
+    states = _state_places(sentence)
+    if states:
+        return states  # "Bath towel on the floor: wet to the basket, dry to the rack"
+    heading = _heading(sentence)
+    if heading is not None:
+        label, mark, instruction = heading
+        answer = [(t, c, "consequence" if r in ("statement", "scene") else r)
+                  for t, c, r in _split(instruction)] if instruction.strip(" .!") else []
+        return [(label, mark, "heading"), *answer]
+    low = sentence.lower()
+    for cue in ELSE_CUES:
+        m = re.match(rf"^\W*{re.escape(cue)}\b", low)
+        if m:
+            if cue.startswith("if there"):
+                return [(sentence, cue, "condition")]
+            if cue == "if not" and re.match(r"\s*(?:already\s+|yet\s+)?(?:on|in|inside|at|by|under|near)\b", low[m.end():]):
+                # "Knife - if not in the dish rack, put it in": a negated place of the thing spoken
+                # of, elliptic for "if it is not in the dish rack" (a bare "if not," is the else)
+                return _split(f"if it is not{sentence[m.end():]}")
+            return [(sentence[m.end():].strip(" ,"), cue, "else")]
+    best = _first_cue(low, CONDITIONAL)
+    if best is None and low.rstrip().endswith("?"):
+        return [(sentence, "?", "condition")]  # "Are the keys on the floor?" asks about the situation
+    if best is None:
+        parts: list[str] = [str(p) for p in re.split(
+            r",\s*(?:and|but|while)\s+|\s+but\s+|;\s*|:\s+|\s+-\s+|\s+while\s+", sentence) if p and p.strip()]
+        out: list[tuple[str, str | None, str]] = []
+        for p in parts:
+            alternative = re.match(rf"^\W*({'|'.join(re.escape(c) for c in ELSE_CUES[:3])})\b", p.lower())
+            if alternative is not None and out:
+                # "return it, close the vanity - else with the hand towel": a later part may be the
+                # alternative of what came before
+                out.append((p[alternative.end():].strip(" ,"), alternative.group(1), "else"))
+                continue
+            if SCENE_START.match(p) or re.search(r"\b(has|have|contains)\b(?!\s+(?:been|\w+(?:ed|en))\b)",
+                                                 p.lower()) and not (
+                    re.search(r"\bif\b", p.lower()) or set(re.findall(r"[a-z]+", p.lower())) & UNCERTAIN):
+                out.append((p, None, "scene"))
+            else:
+                said = re.findall(r"[a-z]+", p.lower())
+                # "The ball often ends up on the floor": a habitual statement says what may be so
+                out.append((p, None, "uncertain" if set(said) & UNCERTAIN or habitual(said) else "statement"))
+        return out
+    start, cue = best
+    after = re.match(r"\W*([a-z' ]{0,30}?)\W*(?:$|[,;]|\s-\s)", expand(low[start + len(cue):]))
+    if cue in ("if", "in case") and after and set(after.group(1).split()) & AVAILABILITY \
+            and len(after.group(1).split()) <= 3 and not set(after.group(1).split()) & NEGATIONS:
+        # "with the wipes if there are any, else with the mop": the alternative is its own piece
+        other = re.search(r"[,;]\s*(?:otherwise|else|or else|failing that)\b", sentence[start:], re.I)
+        if other is not None:
+            cut = start + other.start()
+            return [(sentence[:cut], "if available", "uncertain"),
+                    (sentence[start + other.end():].strip(" ,"), "otherwise", "else")]
+        return [(sentence, "if available", "uncertain")]
+    head = sentence[:start].strip(" ,-")
+    if set(re.findall(r"[a-z]+", head.lower())) <= DISCOURSE:
+        head = ""  # "Then, unless it is in the box, put it in": the condition opens the sentence
+    tail = sentence[start + len(cue):]
+    pieces: list[tuple[str, str | None, str]] = []
+    if head:
+        pieces += _split(head) if _first_cue(head.lower(), CONDITIONAL) else [(head, cue, "consequence")]
+        if pieces and pieces[-1][2] in ("statement", "scene"):
+            pieces[-1] = (pieces[-1][0], cue, "consequence")
+    m = re.search(r",\s*(then\s+)?|\bthen\b|\s+-\s+|:\s*", tail)
+    if head and not (m and re.match(r"\s*(then\b|,\s*[a-z]+ (it|them)\b)", tail[m.start():].lower())):
+        other = re.search(r"[,;]?\s*\b(otherwise|(?<!where )(?<!thing )else|or else|instead)\b", tail)
+        cond = tail[: other.start()] if other else tail
+        nested = _first_cue(cond.lower()[1:], CONDITIONAL)
+        if nested:
+            cut = nested[0] + 1
+            pieces.append((cond[:cut], cue, "condition"))
+            pieces += _split(cond[cut:])
+        else:
+            pieces.append((cond, cue, "condition"))
+        if other:
+            pieces.append((tail[other.end():], "otherwise", "else"))
+        return pieces
+    cond, cons = (tail[: m.start()], tail[m.end():]) if m else (tail, "")
+    alt = re.match(r"\s*or\s+[^,;]*,\s*", cons, re.I) if m and tail[m.start()] == "," else None
+    if alt and m:  # "if it is elsewhere, or we are out of it, skip it": one condition with two alternatives
+        cond, cons = tail[: m.start() + 1] + " " + cons[: alt.end()].rstrip(" ,"), cons[alt.end():]
+    pieces.append((cond, cue, "condition"))
+    if cons.strip():
+        rest = _split(cons)
+        pieces += [(t, c or cue, "consequence" if r in ("statement", "scene") else r) for t, c, r in rest]
+    return pieces
+
+
+def _subsplit(pieces: list[tuple[str, str | None, str]]) -> list[tuple[str, str | None, str]]:
+    """`it is on, and close the wardrobe`: a condition ends at `, and`; what follows is an action."""
+    out: list[tuple[str, str | None, str]] = []
+    for text, cue, role in pieces:
+        splitter = r",\s*(?:and|but|then)\s+" + (r"|,\s*(?=the\s)" if role == "consequence" else "")
+        parts = [p for p in re.split(splitter, text) if p.strip()] or ([text] if role == "condition" else [])
+        for i, part in enumerate(parts):
+            alternative = re.match(rf"^\W*({'|'.join(re.escape(c) for c in ELSE_CUES[:3])})\b", part.lower())
+            if i > 0 and alternative is not None:  # "... if there are some, and otherwise the mop"
+                out.append((part[alternative.end():].strip(" ,"), alternative.group(1), "else"))
+                continue
+            out.append((part, cue, role if i == 0 or role != "condition" else "consequence"))
+    return out
+
+
+#: the words of a condition that only points back ("if so", "if it has", "should that be the
+#: case", "when that happens", "if they are"): its content is the clause before it
+ANAPHORIC = frozenset({"so", "that", "this", "it", "they", "them", "is", "are", "was", "were", "has",
+                       "have", "had", "do", "does", "did", "be", "been", "being", "the", "case",
+                       "happen", "happens", "happened", "true", "indeed", "still", "again", "really"})
+
+
+def points_back(text: str) -> bool:
+    """Whether a condition's words only point back to a clause before it ("if so", "if it is not",
+    "should that be the case", "when that happens"): its content is that clause's, which the
+    reader links it to (an empty condition, the text of "if so", points back too)."""
+    return all(w in ANAPHORIC | {"not"} for w, _, _ in tokens(expand(text)))
+
+
+# ---------------------------------------------------------------------------------------------
+# The placement reader's cut: token spans with their mood
+# ---------------------------------------------------------------------------------------------
+
+
+@dataclass
+class Span:
+    """A clause of a sentence as the placement reader reads it (see the module's docstring)."""
+
+    start: int  # token range of the sentence
+    end: int
+    mood: str  # "statement" | "condition" | "instruction"
+    doubted: bool
+    goal: bool = False  # a verbless part going on with a goal ("- the book on the couch")
+
+
+def clause_spans(words: list[str], lo: int, hi: int, *, verbs: frozenset[str],
+                 goal_words: frozenset[str]) -> list[Span]:
+    """The clauses of words[lo:hi]: cut at hard punctuation (`;`, a dash, brackets, `?`), before a
+    subordinator, and at a comma or "and" that a clause opener or an imperative verb follows. A
+    clause opened by a subordinator runs to its comma; a clause ending in "?" is a question.
+    `verbs` are the reader's verbs (a part without one is verbless: a heading, or the goal of the
+    instruction before it) and `goal_words` the words that make a clause say where things go."""
+    cuts = [lo]
+    for i in range(lo, hi):
+        w = words[i]
+        nxt = words[i + 1] if i + 1 < hi else ""
+        if w in _HARD:
+            cuts += [i, i + 1]
+        elif w in SUBORDINATORS and i > lo and words[i - 1] not in ("in", "case") and (
+                w not in MODAL_SUBORDINATORS or words[i - 1] in PUNCT | {"and", "but", "or", "then"}):
+            cuts.append(i)  # "should" opens a condition only inverted: "..., should the bin be full"
+        elif w == "case" and i > lo and words[i - 1] == "in":
+            cuts.append(i - 1)
+        elif w in (",", "and") and (nxt in CLAUSE_OPENERS or nxt in SUBORDINATORS or nxt in IMPERATIVES
+                                    or (nxt in ("in",) and i + 2 < hi and words[i + 2] == "case")):
+            cuts.append(i + 1 if w == "," else i)
+        elif w == "," and any(c > lo and words[c] in SUBORDINATORS | {"in"} for c in cuts[-1:]):
+            cuts.append(i + 1)  # the end of a fronted condition: "If the pan is hot, ..."
+    cuts.append(hi)
+    out: list[Span] = []
+    bounds = sorted(set(cuts))
+    for a, b in zip(bounds, bounds[1:], strict=False):
+        body = [w for w in words[a:b] if w not in PUNCT]
+        if not body:
+            continue
+        question = (b < len(words) and words[b] == "?" or (b - 1 >= a and words[b - 1] == "?")) and not (
+            body[0] in REQUESTS and body[1:2] == ["you"])
+        # "Plate on the table: ..." (a verbless checklist item), not "The pantry has two shelves: ..."
+        heading = b < len(words) and words[b] == ":" and not set(body) & verbs
+        # "... should go where it belongs - the book on the couch": a verbless part after a dash or a
+        # colon goes on with the clause before it (here a goal), not a statement of its own
+        follows_goal = (a > 0 and words[a - 1] in ("-", ":") and not set(body) & verbs and bool(out)
+                        and (out[-1].mood == "instruction" or bool(set(words[out[-1].start:out[-1].end])
+                                                                    & goal_words)))
+        first = next((w for w in body if w not in _LEAD_INS), "")
+        if first in SUBORDINATORS or body[:2] == ["in", "case"] or question:
+            mood = "condition"
+        elif first in IMPERATIVES or body[0] in REQUESTS and body[1:2] == ["you"] or follows_goal:
+            mood = "instruction"
+        elif heading:
+            mood = "condition"
+        else:
+            mood = "statement"
+        # a habitual statement ("the ball keeps ending up on the floor") is doubted like "may"
+        out.append(Span(a, b, mood, doubts(body) or habitual(body), follows_goal))
+    return out
+
+
+def doubts(words: list[str]) -> bool:
+    """Whether the words carry a doubt ("may", "possibly", "probably"); "could you" opens a request."""
+    return any(w in DOUBT and not (w in REQUESTS and words[k + 1:k + 2] == ["you"]) for k, w in enumerate(words))
