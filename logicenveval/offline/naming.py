@@ -411,16 +411,23 @@ class _Reader:
         return any(self.kind_at(j)[1] is not None for j in range(start, k - 2))
 
     def kind_value(self, i: int, n: int, prev: str) -> bool:
-        """Whether the bare plural at word `i` (`n` words: "dolls", "toy cars") is a class of a
-        kind named before it, one of the values of its `kind` attribute (`KIND_ATTRIBUTES`; a toy
+        """Whether the bare plural at word `i` (`n` words: "dolls", "toy cars"), or an indefinite
+        singular set against "any other <kind>", is a class of a kind named before it, one of the values of its `kind` attribute (`KIND_ATTRIBUTES`; a toy
         is a doll, a car, a ball ...): what a distribution sorts ("dolls in the red box, toy cars
         in the blue box, everything else in the green one"), not an object of its own."""
         words = self.text.words
-        if self.text.raw[i + n - 1] == words[i + n - 1] or prev in _DETERMINERS or prev in _COUNTS:
-            return False
         head = words[i + n - 1]
-        return any(head in self.catalog.categories[c].attributes.get(key, ())
-                   for c in self.recent for key in KIND_ATTRIBUTES)
+        kinds = [c for c in self.recent for key in KIND_ATTRIBUTES
+                 if head in self.catalog.categories[c].attributes.get(key, ())]
+        if prev in ("a", "an") and self.text.raw[i + n - 1] == head:
+            # "a doll into the red toy box; ... any other toy into the green one": an indefinite
+            # one set against "other <kind>" in its sentence is a class of that kind too
+            said = words[self.text.sentence_start(i):self.text.sentence_end(i)]
+            return any(w == "other" and set(said[k + 1:k + 3]) & set(words_of(c))
+                       for c in kinds for k, w in enumerate(said))
+        if self.text.raw[i + n - 1] == head or prev in _DETERMINERS or prev in _COUNTS:
+            return False
+        return bool(kinds)
 
     def own_kind(self, a: int, b: int, head: str) -> bool:
         """Whether words `a`..`b` of an item name one thing of a kind of its own, with another
