@@ -18,6 +18,7 @@ from pydantic import BaseModel, ValidationError
 from logicenveval.atomic import atomic_write_text
 from logicenveval.errors import ConfigError, ModelReplyError, ModelTruncatedError
 from logicenveval.llm.base import ChatModel, ChatRequest, ModelStats, split_truncation, well_formed
+from logicenveval.llm.bounds import fit_numbers
 from logicenveval.llm.jsonextract import JSONExtractionError, extract_json
 from logicenveval.llm.meaning import MEANING_KEY, meaningless
 from logicenveval.llm.vocab import CONTEXT_KEY, Pattern, Vocabulary, specialise
@@ -283,7 +284,10 @@ def ask(
         try:
             if truncated:
                 raise JSONExtractionError(f"the reply was cut at max_tokens={bound}")
-            reply = reply_model.model_validate(extract_json(raw), context=context)
+            value, clamped = fit_numbers(extract_json(raw), schema)
+            if clamped and stats is not None:
+                stats.count(kind, clamped=len(clamped))
+            reply = reply_model.model_validate(value, context=context)
         except JSONExtractionError as exc:
             problem = str(exc)
         except ValidationError as exc:

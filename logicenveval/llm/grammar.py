@@ -10,8 +10,9 @@ whitespace at all, so every token of a reply is content.
 Covered: objects (properties in the schema's order, optional ones each omissible),
 `additionalProperties` maps, arrays (`items`, `prefixItems`, `minItems`/`maxItems`), `enum`,
 `const`, strings (`maxLength`, and `pattern` in the regex subset the vocabularies use), numbers,
-integers, booleans, null, `anyOf`/`oneOf`, local `$ref`s. Numeric bounds are left to validation
-(llama.cpp's own converter bounds integers only). The same tree is also written as a Python regex
+integers, booleans, null, `anyOf`/`oneOf`, local `$ref`s. Numeric bounds are not written
+(llama.cpp's own converter bounds integers only): the reply reader sets a number outside them to
+the bound (`llm.bounds.fit_numbers`), so what the grammar allows is taken. The same tree is also written as a Python regex
 (`to_regex`), for tests: the schemas are not recursive.
 """
 
