@@ -189,10 +189,15 @@ PHRASAL_STATES = tuple((re.compile(rf"\b(?:{verbs}) (?:{particles})\b"), state) 
 ))
 
 
-def _joined(words: list[str], a: Mention, b: Mention) -> bool:
-    """Mentions `a` and `b` are items of one list (`a book or a toy`, `cups, plates and bowls`)."""
+def _joined(words: list[str], a: Mention, b: Mention, commas: frozenset[int] = frozenset()) -> bool:
+    """Mentions `a` and `b` are items of one list (`a book or a toy`, `cups, plates and bowls`);
+    two bare names of things (no determiner) with only a comma between (`commas`: the words a
+    comma stands before) are items of a terse list ("On bed maybe: book, alarm clock, phone";
+    not "clean the mark, wet wipes from the table are best", two clauses run together)."""
     between = words[a.end : b.start]
-    return 0 < len(between) <= 3 and all(w in LIST_WORDS for w in between)
+    if not between:
+        return a.kind == b.kind == "role" and b.start in commas and (a.start == 0 or words[a.start - 1] not in LIST_WORDS)
+    return len(between) <= 3 and all(w in LIST_WORDS for w in between)
 
 
 #: words that may stand between two items of one list: conjunctions and determiners, possessive
@@ -262,6 +267,8 @@ class _Reader:
         self.plural: set[str] = set()
         #: the last clause joined things with "and" ("the pillow ... and the toy ..."): "they" is them
         self.coordinated = False
+        #: the words of the clause being read that a comma stands before (`_joined`)
+        self.commas: frozenset[int] = frozenset()
 
     def _recent_first(self, m: Mention) -> Mention:
         """An ambiguous singular mention (`the rack`) means the candidate mentioned last."""
@@ -310,7 +317,7 @@ class _Reader:
                 # "a book or a phone on it": not the listed objects themselves
                 listed = [before[-1]]
                 for m in reversed(before[:-1]):
-                    if not _joined(words, m, listed[-1]):
+                    if not _joined(words, m, listed[-1], self.commas):
                         break
                     listed.append(m)
                 # the place spoken about first in the clause ("the floor ... a toy on it")
@@ -369,6 +376,7 @@ class _Reader:
             said = pattern.sub(state, said)
         toks = tokens(said)
         words = [t[0] for t in toks]
+        self.commas = frozenset(k for k in range(1, len(toks)) if "," in said[toks[k - 1][2]:toks[k][1]])
         mentions = self.mentions(words, toks)
         for m in mentions:
             if m.kind == "role" and len(m.roles) == 1:
@@ -596,7 +604,8 @@ class _Reader:
     def _subjects(self, words: list[str], mentions: list[Mention], idx: int) -> list[str]:
         group = [idx]
         j = idx - 1
-        while j >= 0 and mentions[j].kind in ("role", "pronoun") and _joined(words, mentions[j], mentions[j + 1]) \
+        while j >= 0 and mentions[j].kind in ("role", "pronoun") and _joined(words, mentions[j], mentions[j + 1],
+                                                                             self.commas) \
                 and not _placed(words, mentions[j]):
             # "the book on the couch, a toy in the box": a place named before a new item is no
             # item of its list (the comma is gone from the words)
@@ -615,7 +624,7 @@ class _Reader:
     def _location(self, words: list[str], mentions: list[Mention], idx: int, negated: bool) -> list[Fact]:
         m = mentions[idx]
         if idx + 1 < len(mentions) and mentions[idx + 1].kind in ("role", "pronoun") and _joined(
-                words, m, mentions[idx + 1]):
+                words, m, mentions[idx + 1], self.commas):
             return []  # the last item of a list carries the location
         k = m.end
         skipped: list[str] = []
@@ -943,6 +952,18 @@ def _antecedent(clauses: list[Clause], sentence: int, pointing: set[int]) -> tup
 _DASH = re.compile(r"\s+[-\u2013]\s+")
 
 
+def _instructs(reader: _Reader, text: str) -> bool:
+    """The piece after a place heading is an instruction, not what lies there ("On the chair /
+    on the floor -> onto the desk", "On the rug: pick it up"): the heading is then a condition
+    on the thing spoken of, as a subjectless heading is (`_read_heading`)."""
+    toks = tokens(expand(text))
+    words = [w for w, _, _ in toks]
+    lead = 1 if words[:1] == ["back"] else 0
+    goal = len(words) > lead and words[lead] in PLACE_PREPS - {"from", "by", "near", "on", "in"}
+    return (goal or imperative(words)) and not any(
+        m.kind == "role" and not _placed(words, m) for m in reader.lex.find_mentions(toks))
+
+
 def _goes(reader: _Reader, text: str) -> bool:
     """An instruction that is only a place ("on the shoe rack", "back into the hamper"): where
     the thing spoken of goes."""
@@ -1073,12 +1094,17 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     pointing: set[int] = set()  # clauses that point back ("if it isn't"): never an antecedent
     #: (sentence, members) of a distributive phrase: its sentence's facts hold for each member
     spread: tuple[int, tuple[str, ...]] = (-1, ())
+    cut = [split_clauses(sent) for sent in sentences]
     for si, sent in enumerate(sentences):
-        for text, cue, role in split_clauses(sent):
+        pieces = cut[si]
+        # the piece after each (a heading's answer may open the next part: "On the floor: into ...")
+        after = [p.text for p in pieces[1:]] + [cut[si + 1][0].text if si + 1 < len(cut) and cut[si + 1] and not
+                                                sent.rstrip().endswith((".", "!", "?")) else ""]
+        for pi, (text, cue, role) in enumerate(pieces):
             if (DISTRIBUTIVE.match(text) or ANY_OF.search(text)) and (members := _members(clauses, categories, grammatical)):
                 spread = (grammatical, members)
             if role == "heading":
-                if _place_heading(reader, text) and named != grammatical:
+                if _place_heading(reader, text) and named != grammatical and not _instructs(reader, after[pi]):
                     # "On the floor: a dirty mark, and possibly a book": the place of what follows
                     place = (grammatical, text)
                     clauses.append(Clause(text, grammatical, cue, "statement", (), ()))

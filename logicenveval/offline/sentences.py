@@ -82,9 +82,15 @@ _FULL_STOP = re.compile(r"(?<=[.!])\s+|\n+")
 _ABBREV = re.compile(r"\b(e\.g|i\.e|etc|approx|vs)\.", re.I)
 
 
+#: a slash between two words offers alternatives, as "or" does ("on the chair / on the floor",
+#: "wet/dirty"; "and/or" is "and or")
+_SLASH = re.compile(r"(?<=[a-z])\s*/\s*(?=[a-z])", re.I)
+
+
 def expand(text: str) -> str:
-    """The text with contractions spelled out ("it's" -> "it is") and possessives dropped."""
-    out = text.replace("\u2019", "'")
+    """The text with contractions spelled out ("it's" -> "it is"), possessives dropped and a
+    slash between words read as "or"."""
+    out = _SLASH.sub(" or ", text.replace("\u2019", "'"))
     for pat, repl in _CONTRACTIONS:
         out = re.sub(pat, repl, out, flags=re.I)
     return out

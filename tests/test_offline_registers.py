@@ -1,0 +1,91 @@
+"""Rules from the fourth development set's rewordings (`tests/data/reader_dev4/tasks_reworded/`):
+each is a feature of a register (terse notes, bullet shorthand, legalistic clauses, ...), tried on
+the development set's sentence and on one written here in another room with other objects."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+
+from logicenveval.domain.catalog import load_catalog
+from logicenveval.offline.analysis import analyse
+from logicenveval.offline.naming import name_objects
+
+
+def _brief(text: str, rooms: tuple[str, ...]) -> dict[str, Any]:
+    roles: dict[str, Any] = {}
+    for o in name_objects(text, load_catalog(), rooms=rooms):
+        roles.setdefault(o["name"], {"category": o["category"], "attributes": o["attributes"]})
+    return {"id": "t", "description": text, "rooms": list(rooms), "roles": roles}
+
+
+def _factors(text: str, rooms: tuple[str, ...]) -> dict[str, set[str]]:
+    return {f.id: set(f.values.values()) for f in analyse(_brief(text, rooms), load_catalog()).factors}
+
+
+# ----- "respectively" pairs each item of a list with a part, as a count would --------------------
+
+@pytest.mark.parametrize(("text", "rooms", "names"), [
+    # dev4 (very terse)
+    ("Bedroom: bed, bookshelf, nightstand, desk. Bookshelf levels: novels, essays, other books respectively.",
+     ("bedroom",), {"novel_shelf", "essay_shelf", "other_shelf"}),
+    # written here: a kitchen's pantry shelves
+    ("Kitchen: pantry. Pantry shelves: tins, jars, cereal boxes respectively.", ("kitchen",),
+     {"tin_shelf", "jar_shelf", "cereal_shelf"}),
+])
+def test_respectively_tells_the_parts_of_an_uncounted_list_apart(text: str, rooms: tuple[str, ...],
+                                                                  names: set[str]) -> None:
+    """"Bookshelf levels: novels, essays, other books respectively": a list closed by
+    "respectively" gives each part what it holds, one object per item, as "three levels: ..."
+    would; without it an uncounted list of bare plurals tells no parts apart."""
+    assert names <= set(_brief(text, rooms)["roles"])
+    plain = _brief("Pantry shelves: tins, jars, cereal boxes.", ("kitchen",))["roles"]
+    assert not {"tin_shelf", "jar_shelf"} & set(plain)
+
+
+# ----- a terse list of bare names, with only commas between ---------------------------------------
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev4 (very terse)
+    ("Bedroom: bed, bookshelf, nightstand, desk. On bed maybe: book, alarm clock, phone. Clear bed.",
+     ("bedroom",), {"book_on_bed", "alarm_clock_on_bed", "cell_phone_on_bed"}),
+    # written here: a hallway bench
+    ("Hallway: bench, shoe rack. On bench maybe: umbrella, wallet, backpack. Clear bench.",
+     ("hallway",), {"umbrella_on_bench", "wallet_on_bench", "backpack_on_bench"}),
+])
+def test_a_terse_list_of_bare_names_shares_its_place(text: str, rooms: tuple[str, ...], asked: set[str]) -> None:
+    """Bare names with only commas between ("book, alarm clock, phone") are the items of one
+    list: the place said of the list holds for each, as with "a book, an alarm clock or a phone"."""
+    assert asked <= set(_factors(text, rooms))
+
+
+def test_two_clauses_run_together_are_no_list() -> None:
+    """A comma between a name with its determiner and the next ("clean the mark, wet wipes from
+    the table are best": a note without full stops) joins two clauses, not two items."""
+    text = ("theres a dirty mark on the floor and u may find a pack of wet wipes on the table. "
+            "clean the mark, wet wipes from the table are best if there are any.")
+    values = set().union(*_factors(text, ("living_room",)).values())
+    assert not any(v.startswith("on(floor_stain, coffee_table") for v in values), values
+
+
+# ----- a place heading answered by an instruction is a condition on the thing spoken of -----------
+
+@pytest.mark.parametrize(("text", "rooms", "subject", "places"), [
+    # dev4 (bullet shorthand with arrows and a slash)
+    ("* Study: laptop belongs on the desk. On the office chair / on the floor -> onto the desk. "
+     "Anywhere else -> leave it.", ("study",), "laptop", {"office_chair", "floor"}),
+    # written here: a hallway, a colon and "or"
+    ("Hallway: the umbrella belongs in the umbrella stand. On the floor or on the bench: into the stand. "
+     "Anywhere else: leave it.", ("hallway",), "umbrella", {"floor", "bench"}),
+])
+def test_a_place_heading_with_an_instruction_is_a_condition(text: str, rooms: tuple[str, ...], subject: str,
+                                                            places: set[str]) -> None:
+    """"On the office chair / on the floor -> onto the desk": what follows the place is where a
+    thing goes, not what lies there, so the heading asks where the thing spoken of is (as
+    "if it is lying on the office chair or on the floor, put it on the desk"), and places
+    nothing on the chair; a slash between words offers alternatives, as "or" does."""
+    got = _factors(text, rooms)
+    location = got.get(f"{subject}_location", set())
+    assert {f"on({subject}, {p})" for p in places} <= location, got
+    assert not any(f.startswith(tuple(f"{p}_" for p in places)) for f in got), got
