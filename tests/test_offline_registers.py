@@ -89,3 +89,38 @@ def test_a_place_heading_with_an_instruction_is_a_condition(text: str, rooms: tu
     location = got.get(f"{subject}_location", set())
     assert {f"on({subject}, {p})" for p in places} <= location, got
     assert not any(f.startswith(tuple(f"{p}_" for p in places)) for f in got), got
+
+
+# ----- legal drafting: "shall, if clean, be", "where", "subject to ... being", "in the absence of" --
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev4 (legalistic clauses)
+    ("A plate left on the dining table shall, if clean, be placed in the cabinet; if dirty, it shall be "
+     "placed in the dishwasher, provided that, where the dishwasher is already running, it shall instead be "
+     "placed in the sink.", ("dining_room", "kitchen"),
+     {"plate_on_dining_table", "plate_dirty", "dishwasher_toggled_on"}),
+    ("Where the milk carton remains on the table, it shall be returned to the fridge.", ("kitchen",),
+     {"milk_carton_on_dining_table"}),
+    ("Subject to the table being dirty, it shall be wiped down with the sponge; in the absence of a sponge, "
+     "a paper towel shall be used.", ("kitchen",), {"dining_table_dirty", "sponge_present"}),
+    # written here: a bathroom
+    ("A towel left on the floor shall, if wet, be hung on the towel rack; where the laundry basket is full, "
+     "it shall instead be left on the bathtub.", ("bathroom",),
+     {"towel_on_floor", "towel_wet", "laundry_basket_filled"}),
+    ("Subject to the mirror being dirty, it shall be wiped with the sponge; in the absence of a sponge, "
+     "a towel shall be used.", ("bathroom",), {"mirror_dirty", "sponge_present"}),
+])
+def test_legal_drafting_reads_as_plain_conditions(text: str, rooms: tuple[str, ...], asked: set[str]) -> None:
+    """Legal drafting's conditions are the plain ones: a condition between a modal and its verb
+    ("shall, if clean, be placed", the clause's subject elided) is the whole clause's; a clause
+    opening with "where" is "if" (a relative "where" follows its noun: "the kitchen, where the
+    sink is" asks nothing); "subject to X being Y" is "if X is Y"; "in the absence of a sponge"
+    is "if there is no sponge"; "provided that, where ..." is the proviso's condition."""
+    got = set(_factors(text, rooms))
+    assert asked <= got, got
+    assert not any(f.startswith(("cabinet_", "kitchen_counter_")) for f in got), got
+
+
+def test_a_relative_where_asks_nothing() -> None:
+    text = "The dining room opens onto the kitchen, where the dishwasher and the sink are."
+    assert _factors(text, ("dining_room", "kitchen")) == {}
