@@ -175,8 +175,8 @@ class TaskAnalysis:
 
 
 
-#: "if we still have one": the household owns the object, or not
-_WE_HAVE = re.compile(r"\b(?:we|you|i)(?: still| also| even)? (?:have|has)(?: still| also)?(?: got)?"
+#: "if we still have one", "if we don't have a spare": the household owns the object, or not
+_WE_HAVE = re.compile(r"\b(?:we|you|i)(?: still| also| even)?(?: do| does| did)?(?: not)? (?:have|has)(?: still| also)?(?: got)?"
                       r"(?: (?:a|an|any|some))?$")
 _ASIDE = re.compile(r"\s*\([^()]*\)\W*$")
 
@@ -187,6 +187,12 @@ PHRASAL_STATES = tuple((re.compile(rf"\b(?:{verbs}) (?:{particles})\b"), state) 
     ("pulled|drawn|slid", "out|open", "open"),
     ("pushed|slid", "in|shut|back in", "shut"),
 ))
+
+
+#: a verb that raises its subject before "to be" says what the subject is, as "is" does ("it
+#: turns out to be a bill", "the jar happens to be empty", "the lamp seems to be on")
+RAISING = re.compile(r"\b(?:turns? out|turned out|happens?|happened|seems?|seemed|appears?|appeared|proves?"
+                     r"|proved) to be\b")
 
 
 def _joined(words: list[str], a: Mention, b: Mention, commas: frozenset[int] = frozenset()) -> bool:
@@ -269,6 +275,8 @@ class _Reader:
         self.coordinated = False
         #: the words of the clause being read that a comma stands before (`_joined`)
         self.commas: frozenset[int] = frozenset()
+        #: the words of the clause being read where a thing's name starts (`_state`)
+        self.starts: frozenset[int] = frozenset()
 
     def _recent_first(self, m: Mention) -> Mention:
         """An ambiguous singular mention (`the rack`) means the candidate mentioned last."""
@@ -374,10 +382,12 @@ class _Reader:
         said = expand(text).lower()
         for pattern, state in PHRASAL_STATES:
             said = pattern.sub(state, said)
+        said = RAISING.sub("is", said)
         toks = tokens(said)
         words = [t[0] for t in toks]
         self.commas = frozenset(k for k in range(1, len(toks)) if "," in said[toks[k - 1][2]:toks[k][1]])
         mentions = self.mentions(words, toks)
+        self.starts = frozenset(x.start for x in mentions if x.kind == "role")
         for m in mentions:
             if m.kind == "role" and len(m.roles) == 1:
                 surface = said[toks[m.end - 1][1] : toks[m.end - 1][2]]
@@ -435,7 +445,7 @@ class _Reader:
                 break
             # "there may or may not be a loaf", "if we still have one", "if one is still to be had"
             before = words[max(0, m.start - 8) : m.start]
-            if "there" in before or "no" in before[-2:] or _WE_HAVE.search(" ".join(before[-4:])) or (
+            if "there" in before or "no" in before[-2:] or _WE_HAVE.search(" ".join(before[-6:])) or (
                     m.start == 0 and m.kind == "pronoun" and words[0] == "one"):
                 facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
                 break
@@ -722,6 +732,8 @@ class _Reader:
                 break  # `on the table` is a place, not `switched on`
             if w == "used":
                 break  # "the cloth is used": the passive of "use"; only "a used cloth" is dirty
+            if k in self.starts:
+                break  # "clean the mark, wet wipes ...": the first word of another thing's name
             found.append((w, local_neg, relative))
             k += 1
             j = k
@@ -952,6 +964,14 @@ def _antecedent(clauses: list[Clause], sentence: int, pointing: set[int]) -> tup
 _DASH = re.compile(r"\s+[-\u2013]\s+")
 
 
+def _speaker(reader: _Reader, text: str) -> bool:
+    """A heading that is a speaker's label in a transcript or a Q&A ("DAD:", "ME:", "Q:", "A:"):
+    one word written in capitals that names no thing, room or place of the task."""
+    label = text.strip()
+    toks = tokens(expand(label))
+    return len(toks) == 1 and label.isalpha() and label.isupper() and not reader.lex.find_mentions(toks)
+
+
 def _instructs(reader: _Reader, text: str) -> bool:
     """The piece after a place heading is an instruction, not what lies there ("On the chair /
     on the floor -> onto the desk", "On the rug: pick it up"): the heading is then a condition
@@ -1103,6 +1123,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         for pi, (text, cue, role) in enumerate(pieces):
             if (DISTRIBUTIVE.match(text) or ANY_OF.search(text)) and (members := _members(clauses, categories, grammatical)):
                 spread = (grammatical, members)
+            if role == "heading" and _speaker(reader, text):
+                clauses.append(Clause(text, grammatical, cue, "statement", (), ()))
+                continue  # "DAD: ...", "ME: ...", "Q: ...": who speaks, nothing of the scene
             if role == "heading":
                 if _place_heading(reader, text) and named != grammatical and not _instructs(reader, after[pi]):
                     # "On the floor: a dirty mark, and possibly a book": the place of what follows

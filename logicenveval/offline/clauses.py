@@ -260,8 +260,11 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
     if best is None and low.rstrip().endswith("?"):
         return [(sentence, "?", "condition")]  # "Are the keys on the floor?" asks about the situation
     if best is None:
+        # (" and you may find ...": in a note without commas, "and" before a subject pronoun
+        # starts a clause of its own)
         parts: list[str] = [str(p) for p in re.split(
-            r",\s*(?:and|but|while)\s+|\s+but\s+|;\s*|:\s+|\s+-\s+|\s+while\s+", sentence) if p and p.strip()]
+            r",\s*(?:and|but|while)\s+|\s+but\s+|;\s*|:\s+|\s+-\s+|\s+while\s+"
+            r"|\s+and\s+(?=(?:you|u|we|i|they|he|she|someone)\s)", sentence) if p and p.strip()]
         out: list[tuple[str, str | None, str]] = []
         for p in parts:
             alternative = re.match(rf"^\W*({'|'.join(re.escape(c) for c in ELSE_CUES[:3])})\b", p.lower())

@@ -479,7 +479,8 @@ class _Reader:
         last_colored: str | None = None
         i = 0
         while i < len(words):
-            prev = words[i - 1] if i > 0 else ""
+            # (a word of the sentence before is no determiner: "... the right one. Dolls go in ...")
+            prev = words[i - 1] if i > 0 and not _SENTENCE_END.search(self.text.gaps[i]) else ""
             if i in self.consumed:
                 n, category = self.match(i)
                 if category is not None:

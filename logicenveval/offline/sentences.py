@@ -73,6 +73,13 @@ _CONTRACTIONS = [
     (r"\bcan't\b", "can not"), (r"\bwon't\b", "will not"), (r"n't\b", " not"),
     (r"\b(i|you|we|they)'ve\b", r"\1 have"), (r"\b(i|you|we|they|it)'ll\b", r"\1 will"),
     (r"\b(\w+)s'(\s)", r"\1s\2"), (r"\b(\w+)'s\b", r"\1"),
+    # the same contractions typed without their apostrophe ("theres a mark", "if there arent any"),
+    # only where the form is no English word of its own ("were", "well", "its", "wed" are)
+    (r"\b(there|that|what|where|who|here)s\b", r"\1 is"), (r"\b(they|you)re\b", r"\1 are"),
+    (r"\b(is|are|was|were|do|does|did|has|have|had|should|could|would|must|need)nt\b", r"\1 not"),
+    (r"\bcant\b", "can not"), (r"\bwont\b", "will not"), (r"\b(you|they|we)ve\b", r"\1 have"),
+    # texting's "u" for "you" (not a letter of a name: "u-bend", "U-shaped")
+    (r"(?<![\w'-])u(?![\w'-])", "you"),
 ]
 #: an arrow says "then": what follows it is the instruction of what came before ("Coffee machine:
 #: still on? -> switch OFF.", "Lamp on => off"), never a sentence of its own
