@@ -221,3 +221,26 @@ def test_a_word_of_the_sentence_before_is_no_determiner(text: str, rooms: tuple[
 def test_we_do_not_have_one_asks_whether_there_is_one(text: str, rooms: tuple[str, ...], asked: str) -> None:
     """"if we don't have a spare bag", as "if we still have one": whether there is one."""
     assert asked in _factors(text, rooms)
+
+
+# ----- the sentences of one bullet item are one unit of the list --------------------------------
+
+@pytest.mark.parametrize(("text", "rooms", "together", "apart"), [
+    # dev4 (bullet shorthand)
+    ("Bedtime check.\n* TV -> off (unless already off).\n* Bedroom: table lamp on? -> off. Wardrobe doors open? "
+     "-> close.", ("living_room", "bedroom"), {"table_lamp_toggled_on", "wardrobe_open"}, "television_toggled_on"),
+    # written here: a kitchen and a hall
+    ("Before leaving:\n- Hall: lamp on? -> off.\n- Kitchen: kettle on? -> off. Fridge open? -> close.",
+     ("hallway", "kitchen"), {"kettle_toggled_on", "fridge_open"}, "table_lamp_toggled_on"),
+    # written here: items without full stops still end at their line
+    ("quick list\n- mug on the desk? into the sink\n- lamp on? switch it off", ("study",), {"mug_on_desk"},
+     "table_lamp_toggled_on"),
+])
+def test_the_sentences_of_one_bullet_item_are_one_unit(text: str, rooms: tuple[str, ...], together: set[str],
+                                                       apart: str) -> None:
+    """"* Bedroom: table lamp on? -> off. Wardrobe doors open? -> close.": the sentences of one
+    bullet item (one line opening with "*", "-" or "•", in a list of two or more) are grouped as
+    the clauses of one sentence are: one subtask; another item stays apart, full stop or not."""
+    groups = [set(g) for g in analyse(_brief(text, rooms), load_catalog()).groups]
+    assert any(together <= g for g in groups), groups
+    assert all(apart not in g for g in groups if together <= g), groups

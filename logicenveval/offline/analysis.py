@@ -964,6 +964,30 @@ def _antecedent(clauses: list[Clause], sentence: int, pointing: set[int]) -> tup
 _DASH = re.compile(r"\s+[-\u2013]\s+")
 
 
+#: how an item of a bulleted list opens its line ("* ", "- ", "• ")
+BULLET = re.compile(r"^\s*[*\u2022\u2023\u25e6-]\s+")
+
+
+def _bullet_items(text: str, sentences: list[str]) -> list[int | None]:
+    """Per sentence, the bullet item (its line's number) it belongs to, or None outside a
+    bulleted list (fewer than two bullet lines): the sentences of one bullet item are one unit
+    of the list, as the clauses of one sentence are ("* Bedroom: table lamp on? -> off.
+    Wardrobe doors open? -> close." is one item, said of one room)."""
+    lines = text.splitlines()
+    if sum(1 for line in lines if BULLET.match(line)) < 2:
+        return [None] * len(sentences)
+    out: list[int | None] = []
+    line, cursor = 0, 0
+    for sent in sentences:
+        while line < len(lines) and sent not in lines[line][cursor:]:
+            line, cursor = line + 1, 0
+        if line == len(lines):
+            return [None] * len(sentences)
+        cursor = lines[line].index(sent, cursor) + len(sent)
+        out.append(line if BULLET.match(lines[line]) else None)
+    return out
+
+
 def _speaker(reader: _Reader, text: str) -> bool:
     """A heading that is a speaker's label in a transcript or a Q&A ("DAD:", "ME:", "Q:", "A:"):
     one word written in capitals that names no thing, room or place of the task."""
@@ -1115,6 +1139,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     #: (sentence, members) of a distributive phrase: its sentence's facts hold for each member
     spread: tuple[int, tuple[str, ...]] = (-1, ())
     cut = [split_clauses(sent) for sent in sentences]
+    bullets = _bullet_items(str(brief["description"]), sentences)
     for si, sent in enumerate(sentences):
         pieces = cut[si]
         # the piece after each (a heading's answer may open the next part: "On the floor: into ...")
@@ -1179,7 +1204,10 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             if spread[0] == grammatical:
                 facts = list(_distributed(tuple(facts), spread[1]))
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
-        if sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences):
+        if bullets[si] is not None and si + 1 < len(sentences) and bullets[si + 1] == bullets[si]:
+            continue  # "* Bedroom: table lamp on? -> off. Wardrobe doors open? -> close.": one item
+        if bullets[si] is not None or sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences):
+            # (a bullet item ends its unit, full stop or not: "- racket too if its lying on the floor")
             grammatical += 1
 
     contrasted = _contrasted(clauses, str(brief["description"]))
