@@ -251,7 +251,8 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
         if m:
             if cue.startswith("if there"):
                 return [(sentence, cue, "condition")]
-            if cue == "if not" and re.match(r"\s*(?:already\s+|yet\s+)?(?:on|in|inside|at|by|under|near)\b", low[m.end():]):
+            if cue == "if not" and re.match(r"\s*(?:already\s+|yet\s+)?(?:on|in(?!\s+case\b)|inside|at|by|under|near)\b",
+                                              low[m.end():]):  # ("if not in case ...": a cue, no place)
                 # "Knife - if not in the dish rack, put it in": a negated place of the thing spoken
                 # of, elliptic for "if it is not in the dish rack" (a bare "if not," is the else)
                 return _split(f"if it is not{sentence[m.end():]}")
