@@ -247,3 +247,9 @@ def test_clause_spans_tile_the_range(fragments: list[str], data: st.DataObject) 
 def test_a_piece_is_a_tuple_of_text_cue_role() -> None:
     text, cue, role = Piece("the bin is full", "if", "condition")
     assert (text, cue, role) == ("the bin is full", "if", "condition")
+
+
+def test_if_not_before_in_case_invents_no_place() -> None:
+    """"if not in case": "in case" is a cue, not a place, so no "it is not" is written in
+    (the property test above found it)."""
+    assert all("it is" not in p.text for p in split_clauses("if not in case"))

@@ -175,8 +175,8 @@ class TaskAnalysis:
 
 
 
-#: "if we still have one": the household owns the object, or not
-_WE_HAVE = re.compile(r"\b(?:we|you|i)(?: still| also| even)? (?:have|has)(?: still| also)?(?: got)?"
+#: "if we still have one", "if we don't have a spare": the household owns the object, or not
+_WE_HAVE = re.compile(r"\b(?:we|you|i)(?: still| also| even)?(?: do| does| did)?(?: not)? (?:have|has)(?: still| also)?(?: got)?"
                       r"(?: (?:a|an|any|some))?$")
 _ASIDE = re.compile(r"\s*\([^()]*\)\W*$")
 
@@ -189,10 +189,21 @@ PHRASAL_STATES = tuple((re.compile(rf"\b(?:{verbs}) (?:{particles})\b"), state) 
 ))
 
 
-def _joined(words: list[str], a: Mention, b: Mention) -> bool:
-    """Mentions `a` and `b` are items of one list (`a book or a toy`, `cups, plates and bowls`)."""
+#: a verb that raises its subject before "to be" says what the subject is, as "is" does ("it
+#: turns out to be a bill", "the jar happens to be empty", "the lamp seems to be on")
+RAISING = re.compile(r"\b(?:turns? out|turned out|happens?|happened|seems?|seemed|appears?|appeared|proves?"
+                     r"|proved) to be\b")
+
+
+def _joined(words: list[str], a: Mention, b: Mention, commas: frozenset[int] = frozenset()) -> bool:
+    """Mentions `a` and `b` are items of one list (`a book or a toy`, `cups, plates and bowls`);
+    two bare names of things (no determiner) with only a comma between (`commas`: the words a
+    comma stands before) are items of a terse list ("On bed maybe: book, alarm clock, phone";
+    not "clean the mark, wet wipes from the table are best", two clauses run together)."""
     between = words[a.end : b.start]
-    return 0 < len(between) <= 3 and all(w in LIST_WORDS for w in between)
+    if not between:
+        return a.kind == b.kind == "role" and b.start in commas and (a.start == 0 or words[a.start - 1] not in LIST_WORDS)
+    return len(between) <= 3 and all(w in LIST_WORDS for w in between)
 
 
 #: words that may stand between two items of one list: conjunctions and determiners, possessive
@@ -262,6 +273,10 @@ class _Reader:
         self.plural: set[str] = set()
         #: the last clause joined things with "and" ("the pillow ... and the toy ..."): "they" is them
         self.coordinated = False
+        #: the words of the clause being read that a comma stands before (`_joined`)
+        self.commas: frozenset[int] = frozenset()
+        #: the words of the clause being read where a thing's name starts (`_state`)
+        self.starts: frozenset[int] = frozenset()
 
     def _recent_first(self, m: Mention) -> Mention:
         """An ambiguous singular mention (`the rack`) means the candidate mentioned last."""
@@ -310,7 +325,7 @@ class _Reader:
                 # "a book or a phone on it": not the listed objects themselves
                 listed = [before[-1]]
                 for m in reversed(before[:-1]):
-                    if not _joined(words, m, listed[-1]):
+                    if not _joined(words, m, listed[-1], self.commas):
                         break
                     listed.append(m)
                 # the place spoken about first in the clause ("the floor ... a toy on it")
@@ -367,9 +382,12 @@ class _Reader:
         said = expand(text).lower()
         for pattern, state in PHRASAL_STATES:
             said = pattern.sub(state, said)
+        said = RAISING.sub("is", said)
         toks = tokens(said)
         words = [t[0] for t in toks]
+        self.commas = frozenset(k for k in range(1, len(toks)) if "," in said[toks[k - 1][2]:toks[k][1]])
         mentions = self.mentions(words, toks)
+        self.starts = frozenset(x.start for x in mentions if x.kind == "role")
         for m in mentions:
             if m.kind == "role" and len(m.roles) == 1:
                 surface = said[toks[m.end - 1][1] : toks[m.end - 1][2]]
@@ -427,7 +445,7 @@ class _Reader:
                 break
             # "there may or may not be a loaf", "if we still have one", "if one is still to be had"
             before = words[max(0, m.start - 8) : m.start]
-            if "there" in before or "no" in before[-2:] or _WE_HAVE.search(" ".join(before[-4:])) or (
+            if "there" in before or "no" in before[-2:] or _WE_HAVE.search(" ".join(before[-6:])) or (
                     m.start == 0 and m.kind == "pronoun" and words[0] == "one"):
                 facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
                 break
@@ -596,7 +614,8 @@ class _Reader:
     def _subjects(self, words: list[str], mentions: list[Mention], idx: int) -> list[str]:
         group = [idx]
         j = idx - 1
-        while j >= 0 and mentions[j].kind in ("role", "pronoun") and _joined(words, mentions[j], mentions[j + 1]) \
+        while j >= 0 and mentions[j].kind in ("role", "pronoun") and _joined(words, mentions[j], mentions[j + 1],
+                                                                             self.commas) \
                 and not _placed(words, mentions[j]):
             # "the book on the couch, a toy in the box": a place named before a new item is no
             # item of its list (the comma is gone from the words)
@@ -615,7 +634,7 @@ class _Reader:
     def _location(self, words: list[str], mentions: list[Mention], idx: int, negated: bool) -> list[Fact]:
         m = mentions[idx]
         if idx + 1 < len(mentions) and mentions[idx + 1].kind in ("role", "pronoun") and _joined(
-                words, m, mentions[idx + 1]):
+                words, m, mentions[idx + 1], self.commas):
             return []  # the last item of a list carries the location
         k = m.end
         skipped: list[str] = []
@@ -713,6 +732,8 @@ class _Reader:
                 break  # `on the table` is a place, not `switched on`
             if w == "used":
                 break  # "the cloth is used": the passive of "use"; only "a used cloth" is dirty
+            if k in self.starts:
+                break  # "clean the mark, wet wipes ...": the first word of another thing's name
             found.append((w, local_neg, relative))
             k += 1
             j = k
@@ -943,6 +964,50 @@ def _antecedent(clauses: list[Clause], sentence: int, pointing: set[int]) -> tup
 _DASH = re.compile(r"\s+[-\u2013]\s+")
 
 
+#: how an item of a bulleted list opens its line ("* ", "- ", "• ")
+BULLET = re.compile(r"^\s*[*\u2022\u2023\u25e6-]\s+")
+
+
+def _bullet_items(text: str, sentences: list[str]) -> list[int | None]:
+    """Per sentence, the bullet item (its line's number) it belongs to, or None outside a
+    bulleted list (fewer than two bullet lines): the sentences of one bullet item are one unit
+    of the list, as the clauses of one sentence are ("* Bedroom: table lamp on? -> off.
+    Wardrobe doors open? -> close." is one item, said of one room)."""
+    lines = text.splitlines()
+    if sum(1 for line in lines if BULLET.match(line)) < 2:
+        return [None] * len(sentences)
+    out: list[int | None] = []
+    line, cursor = 0, 0
+    for sent in sentences:
+        while line < len(lines) and sent not in lines[line][cursor:]:
+            line, cursor = line + 1, 0
+        if line == len(lines):
+            return [None] * len(sentences)
+        cursor = lines[line].index(sent, cursor) + len(sent)
+        out.append(line if BULLET.match(lines[line]) else None)
+    return out
+
+
+def _speaker(reader: _Reader, text: str) -> bool:
+    """A heading that is a speaker's label in a transcript or a Q&A ("DAD:", "ME:", "Q:", "A:"):
+    one word written in capitals that names no thing, room or place of the task."""
+    label = text.strip()
+    toks = tokens(expand(label))
+    return len(toks) == 1 and label.isalpha() and label.isupper() and not reader.lex.find_mentions(toks)
+
+
+def _instructs(reader: _Reader, text: str) -> bool:
+    """The piece after a place heading is an instruction, not what lies there ("On the chair /
+    on the floor -> onto the desk", "On the rug: pick it up"): the heading is then a condition
+    on the thing spoken of, as a subjectless heading is (`_read_heading`)."""
+    toks = tokens(expand(text))
+    words = [w for w, _, _ in toks]
+    lead = 1 if words[:1] == ["back"] else 0
+    goal = len(words) > lead and words[lead] in PLACE_PREPS - {"from", "by", "near", "on", "in"}
+    return (goal or imperative(words)) and not any(
+        m.kind == "role" and not _placed(words, m) for m in reader.lex.find_mentions(toks))
+
+
 def _goes(reader: _Reader, text: str) -> bool:
     """An instruction that is only a place ("on the shoe rack", "back into the hamper"): where
     the thing spoken of goes."""
@@ -1073,12 +1138,21 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     pointing: set[int] = set()  # clauses that point back ("if it isn't"): never an antecedent
     #: (sentence, members) of a distributive phrase: its sentence's facts hold for each member
     spread: tuple[int, tuple[str, ...]] = (-1, ())
+    cut = [split_clauses(sent) for sent in sentences]
+    bullets = _bullet_items(str(brief["description"]), sentences)
     for si, sent in enumerate(sentences):
-        for text, cue, role in split_clauses(sent):
+        pieces = cut[si]
+        # the piece after each (a heading's answer may open the next part: "On the floor: into ...")
+        after = [p.text for p in pieces[1:]] + [cut[si + 1][0].text if si + 1 < len(cut) and cut[si + 1] and not
+                                                sent.rstrip().endswith((".", "!", "?")) else ""]
+        for pi, (text, cue, role) in enumerate(pieces):
             if (DISTRIBUTIVE.match(text) or ANY_OF.search(text)) and (members := _members(clauses, categories, grammatical)):
                 spread = (grammatical, members)
+            if role == "heading" and _speaker(reader, text):
+                clauses.append(Clause(text, grammatical, cue, "statement", (), ()))
+                continue  # "DAD: ...", "ME: ...", "Q: ...": who speaks, nothing of the scene
             if role == "heading":
-                if _place_heading(reader, text) and named != grammatical:
+                if _place_heading(reader, text) and named != grammatical and not _instructs(reader, after[pi]):
                     # "On the floor: a dirty mark, and possibly a book": the place of what follows
                     place = (grammatical, text)
                     clauses.append(Clause(text, grammatical, cue, "statement", (), ()))
@@ -1130,7 +1204,10 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             if spread[0] == grammatical:
                 facts = list(_distributed(tuple(facts), spread[1]))
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
-        if sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences):
+        if bullets[si] is not None and si + 1 < len(sentences) and bullets[si + 1] == bullets[si]:
+            continue  # "* Bedroom: table lamp on? -> off. Wardrobe doors open? -> close.": one item
+        if bullets[si] is not None or sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences):
+            # (a bullet item ends its unit, full stop or not: "- racket too if its lying on the floor")
             grammatical += 1
 
     contrasted = _contrasted(clauses, str(brief["description"]))

@@ -119,7 +119,20 @@ _GENERIC = (r"whatever|anything|everything|something|all|(?:any|the|all the)\s+(
             r"|items|things|objects|stuff")
 _APPOSITION = re.compile(rf"^(?P<lead>\W*)(?:{_GENERIC})\s+(?:that\s+|which\s+)?(?P<pred>[^:\u2013-]+?)\s*(?:\s-|\u2013|:)\s+"
                          r"(?P<list>[^:\u2013-]+?(?:,|\bor\b|\band\b)[^:\u2013-]+?)\s+(?:-|\u2013)\s+(?P<rest>.+)$", re.I)
-_WITHOUT = re.compile(r"^(\W*)(?:without|with no)\s+(?:a|an|any|the)?\s*(?=\w[^,]*,)", re.I)
+_WITHOUT = re.compile(r"^(\W*)(?:without|with no|in the absence of|absent|failing)\s+(?:a|an|any|the)?\s*(?=\w[^,]*,)",
+                      re.I)
+#: legal drafting's conditions, as plain ones: "Subject to the table being dirty, ..." (if the
+#: table is dirty), "Where the carton remains on the table, ..." (a clause-opening "where" is
+#: "if": a relative "where" follows its noun), "provided that, where ..." (the proviso is its
+#: condition)
+_SUBJECT_TO = re.compile(r"^(\W*)subject to\s+((?:the|a|an|its|their|your|my|our)\s+[^,;]+?)\s+being\b", re.I)
+_WHERE = re.compile(r"^(\W*)where\b(?=[^?]*,[^?]*$)", re.I)
+_PROVISO = re.compile(r"\bprovided that,?\s+(?:where|if|when|in case)\b", re.I)
+#: "A plate left on the table shall, if clean, be placed in the cabinet": a condition put between
+#: a modal and its verb is the condition of the whole clause
+_INTERPOSED = re.compile(r"^(?P<head>.+?\b(?:shall|must|will|should|is to|are to|has to|have to|needs to|need to))"
+                         r"\s*,\s*(?P<cue>if|unless|when|where|once)\s+(?P<cond>[^,;]+?)\s*,\s*(?P<rest>[^,;]+?)"
+                         r"(?P<end>[;.!]?\s*)$", re.I)
 
 
 def _apposition(sentence: str) -> str:
@@ -127,6 +140,15 @@ def _apposition(sentence: str) -> str:
     subject of the generic word's predicate (`a book, a clock, a phone is lying on it - goes ...`);
     a fronted `without a sponge, ...` is the condition `if there is no sponge, ...`."""
     sentence = _WITHOUT.sub(r"\1if there is no ", sentence)  # "without a sponge, use ...": a condition
+    sentence = _SUBJECT_TO.sub(r"\1if \2 is", sentence)
+    sentence = _PROVISO.sub("but if", _WHERE.sub(r"\1if", sentence))
+    interposed = _INTERPOSED.match(sentence)
+    if interposed is not None:
+        cond = interposed.group("cond")
+        if set(cond.lower().split()) <= set(STATE_WORDS) | {"not", "still", "already"}:
+            cond = f"it is {cond}"  # "if clean": the clause's subject is
+        sentence = (f"{interposed.group('head')} {interposed.group('rest')} {interposed.group('cue')} {cond}"
+                    f"{interposed.group('end')}")
     m = _APPOSITION.match(sentence)
     if m is None:
         return sentence
@@ -229,7 +251,8 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
         if m:
             if cue.startswith("if there"):
                 return [(sentence, cue, "condition")]
-            if cue == "if not" and re.match(r"\s*(?:already\s+|yet\s+)?(?:on|in|inside|at|by|under|near)\b", low[m.end():]):
+            if cue == "if not" and re.match(r"\s*(?:already\s+|yet\s+)?(?:on|in(?!\s+case\b)|inside|at|by|under|near)\b",
+                                              low[m.end():]):  # ("if not in case ...": a cue, no place)
                 # "Knife - if not in the dish rack, put it in": a negated place of the thing spoken
                 # of, elliptic for "if it is not in the dish rack" (a bare "if not," is the else)
                 return _split(f"if it is not{sentence[m.end():]}")
@@ -238,8 +261,11 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
     if best is None and low.rstrip().endswith("?"):
         return [(sentence, "?", "condition")]  # "Are the keys on the floor?" asks about the situation
     if best is None:
+        # (" and you may find ...": in a note without commas, "and" before a subject pronoun
+        # starts a clause of its own)
         parts: list[str] = [str(p) for p in re.split(
-            r",\s*(?:and|but|while)\s+|\s+but\s+|;\s*|:\s+|\s+-\s+|\s+while\s+", sentence) if p and p.strip()]
+            r",\s*(?:and|but|while)\s+|\s+but\s+|;\s*|:\s+|\s+-\s+|\s+while\s+"
+            r"|\s+and\s+(?=(?:you|u|we|i|they|he|she|someone)\s)", sentence) if p and p.strip()]
         out: list[tuple[str, str | None, str]] = []
         for p in parts:
             alternative = re.match(rf"^\W*({'|'.join(re.escape(c) for c in ELSE_CUES[:3])})\b", p.lower())

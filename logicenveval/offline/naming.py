@@ -299,7 +299,10 @@ class _Reader:
                 start, end = j + n, self.text.sentence_end(j + n - 1)
                 if count:
                     start = self.after_heading(start, end)
-            found = self.read_items(category, start, end, count)
+            # "Bookshelf levels: novels, essays, other books respectively": a list closed by
+            # "respectively" pairs each item with one of the things it follows, as a count would
+            paired = count or (len(self.text.items(start, end)) if "respectively" in words[start:end] else 0)
+            found = self.read_items(category, start, end, paired)
             if len(found) >= max(2, count):
                 self.kinds.setdefault(category, _Kind()).generic = True
                 for name, attrs, span in found[:count or None]:
@@ -476,7 +479,8 @@ class _Reader:
         last_colored: str | None = None
         i = 0
         while i < len(words):
-            prev = words[i - 1] if i > 0 else ""
+            # (a word of the sentence before is no determiner: "... the right one. Dolls go in ...")
+            prev = words[i - 1] if i > 0 and not _SENTENCE_END.search(self.text.gaps[i]) else ""
             if i in self.consumed:
                 n, category = self.match(i)
                 if category is not None:

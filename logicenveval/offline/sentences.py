@@ -73,6 +73,13 @@ _CONTRACTIONS = [
     (r"\bcan't\b", "can not"), (r"\bwon't\b", "will not"), (r"n't\b", " not"),
     (r"\b(i|you|we|they)'ve\b", r"\1 have"), (r"\b(i|you|we|they|it)'ll\b", r"\1 will"),
     (r"\b(\w+)s'(\s)", r"\1s\2"), (r"\b(\w+)'s\b", r"\1"),
+    # the same contractions typed without their apostrophe ("theres a mark", "if there arent any"),
+    # only where the form is no English word of its own ("were", "well", "its", "wed" are)
+    (r"\b(there|that|what|where|who|here)s\b", r"\1 is"), (r"\b(they|you)re\b", r"\1 are"),
+    (r"\b(is|are|was|were|do|does|did|has|have|had|should|could|would|must|need)nt\b", r"\1 not"),
+    (r"\bcant\b", "can not"), (r"\bwont\b", "will not"), (r"\b(you|they|we)ve\b", r"\1 have"),
+    # texting's "u" for "you" (not a letter of a name: "u-bend", "U-shaped")
+    (r"(?<![\w'-])u(?![\w'-])", "you"),
 ]
 #: an arrow says "then": what follows it is the instruction of what came before ("Coffee machine:
 #: still on? -> switch OFF.", "Lamp on => off"), never a sentence of its own
@@ -82,9 +89,15 @@ _FULL_STOP = re.compile(r"(?<=[.!])\s+|\n+")
 _ABBREV = re.compile(r"\b(e\.g|i\.e|etc|approx|vs)\.", re.I)
 
 
+#: a slash between two words offers alternatives, as "or" does ("on the chair / on the floor",
+#: "wet/dirty"; "and/or" is "and or")
+_SLASH = re.compile(r"(?<=[a-z])\s*/\s*(?=[a-z])", re.I)
+
+
 def expand(text: str) -> str:
-    """The text with contractions spelled out ("it's" -> "it is") and possessives dropped."""
-    out = text.replace("\u2019", "'")
+    """The text with contractions spelled out ("it's" -> "it is"), possessives dropped and a
+    slash between words read as "or"."""
+    out = _SLASH.sub(" or ", text.replace("\u2019", "'"))
     for pat, repl in _CONTRACTIONS:
         out = re.sub(pat, repl, out, flags=re.I)
     return out
