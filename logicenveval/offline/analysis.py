@@ -47,6 +47,7 @@ from logicenveval.offline.sentences import (
     expand,
     habitual,
     split_sentences,
+    unquote,
 )
 from logicenveval.scene.compat import can_hold
 
@@ -189,6 +190,18 @@ PHRASAL_STATES = tuple((re.compile(rf"\b(?:{verbs}) (?:{particles})\b"), state) 
 ))
 
 
+#: what a container is filled with: "there is still wine in it" says the bottle is full, not that
+#: there is a wine bottle ("wine" also names the bottle); read as the state before the clause is
+LIQUIDS = ("water", "wine", "milk", "juice", "coffee", "tea", "beer", "soup", "oil", "soda", "liquid", "drink")
+_CONTENTS = re.compile(rf"\bthere (?:is|are) (?:still |some |any )*(no |not any )?(?:{'|'.join(LIQUIDS)})"
+                       rf"(?: left)? (?:in|inside) (it|them)\b")
+
+
+def _contents(said: str) -> str:
+    """"there is still wine in it" -> "it is full"; "there is no water left in it" -> "it is empty"."""
+    return _CONTENTS.sub(lambda m: f"{m.group(2)} is {'empty' if m.group(1) else 'full'}", said)
+
+
 def _joined(words: list[str], a: Mention, b: Mention) -> bool:
     """Mentions `a` and `b` are items of one list (`a book or a toy`, `cups, plates and bowls`)."""
     between = words[a.end : b.start]
@@ -220,9 +233,10 @@ def _verb_read(toks: list[tuple[str, int, int]], m: Mention) -> bool:
 
 
 def _participle(words: list[str], k: int) -> bool:
-    """Word `k` is a verb's past participle after "been" ("has been knocked onto the floor",
-    "may have been shoved under the bed"): part of the verb group, not the end of the clause."""
-    if k == 0 or words[k - 1] != "been" or not words[k].endswith(("ed", "en", "wn", "ung")):
+    """Word `k` is a verb's past participle after "been" or a perfect's "have" ("has been knocked
+    onto the floor", "may have been shoved under the bed", "if they've blown onto the floor"): part
+    of the verb group, not the end of the clause."""
+    if k == 0 or words[k - 1] not in ("been", "has", "have", "had") or not words[k].endswith(("ed", "en", "wn", "ung")):
         return False
     return any(lemma != words[k] for lemma in getAllLemmas(words[k]).get("VERB", ()))
 
@@ -367,6 +381,7 @@ class _Reader:
         said = expand(text).lower()
         for pattern, state in PHRASAL_STATES:
             said = pattern.sub(state, said)
+        said = _contents(said)
         toks = tokens(said)
         words = [t[0] for t in toks]
         mentions = self.mentions(words, toks)
@@ -507,9 +522,18 @@ class _Reader:
         return replace(f, subject=r, condition=f"state({r}, {f.key})")
 
     def _already(self, words: list[str], mentions: list[Mention], negated: bool) -> Fact | None:
-        """`unless it is already there / on`: the condition is the previous instruction's result."""
-        if "already" not in words or any(m.kind == "role" for m in mentions) or len(words) > 6:
+        """`unless it is already there / on`: the condition is the previous instruction's result;
+        so is a place said only as "in there" / "on there" of a pronoun ("leo's car goes in the
+        toy box. if it's not in there put it in there", "the mugs go on the rack; if they are not
+        on there, ..."): "there" is where the instruction before put it."""
+        if any(m.kind == "role" for m in mentions) or len(words) > 6:
             return None
+        if "already" not in words:
+            rest = [w for w in words if w not in ALREADY_FILLER and w not in PRONOUNS]
+            if len(rest) != 2 or rest[0] not in PREP_ON | PREP_IN or rest[1] != "there" or not any(
+                    m.kind == "pronoun" for m in mentions):
+                return None
+            words = [*words, "already"]  # read as "it is (not) already in there"
         pronouns = [m for m in mentions if m.kind == "pronoun"]
         said = set(pronouns[0].roles) if pronouns else set()
         after = [w for w in words[words.index("already") + 1 :] if w not in {"is", "are", "be", "was", "were"}]
@@ -518,7 +542,8 @@ class _Reader:
         content = [w for i, w in enumerate(words) if w not in ALREADY_FILLER | SITUATION_PARTICIPLES
                    and not (pronouns and i == pronouns[0].start)]
         there = after[:1] in (["there"], ["here"]) or set(content) <= {"there", "here"} or (
-            len(content) > 1 and content[0] in PREP_ON | PREP_IN and all(w in PRONOUNS | ARTICLES for w in content[1:]))
+            len(content) > 1 and content[0] in PREP_ON | PREP_IN and all(w in PRONOUNS | ARTICLES | {"there"}
+                                                                         for w in content[1:]))
         if there and self.last_goal is not None and (not said or self.last_goal.subject in said):
             g = self.last_goal
             return Fact(g.subject, g.condition, "location", g.key, negated=negated)
@@ -1024,8 +1049,10 @@ DISTRIBUTIVE = re.compile(r"^\W*(?:for\s+)?(?:each|every|both)(?:\s+(?:one|ones|
 
 
 #: "either of them", "any of these", "one of the two": a condition on whichever member of the group
-#: just named, asked of each of them as "each one" is
-ANY_OF = re.compile(r"\b(?:either|neither|any|one|each|both|all)\s+of\s+(?:them|these|those|the\s+two)\b", re.I)
+#: just named, asked of each of them as "each one" is; so is "either one" / "neither one" ("Marco's
+#: glass and Lena's glass ... If either one is dirty")
+ANY_OF = re.compile(r"\b(?:(?:either|neither|any|one|each|both|all)\s+of\s+(?:them|these|those|the\s+two)"
+                    r"|(?:either|neither)\s+one)\b", re.I)
 
 
 def _members(clauses: list[Clause], kinds: Mapping[str, str], sentence: int) -> tuple[str, ...]:
@@ -1064,7 +1091,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
              if (cat := catalog.get(str(role.get("category", "")))) is not None}
     reader = _Reader(lex, _capabilities(brief, catalog), kinds)
     categories = {name: str(role.get("category", "")) for name, role in dict(brief.get("roles") or {}).items()}
-    sentences = split_sentences(str(brief["description"]))
+    sentences = split_sentences(unquote(str(brief["description"])))
     clauses: list[Clause] = []
     grammatical = 0  # pieces split at ':' or ';' still belong to one sentence for grouping
     headed = -1  # the sentence whose heading ("Shirt on the floor:") the pieces after it answer
@@ -1133,7 +1160,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         if sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences):
             grammatical += 1
 
-    contrasted = _contrasted(clauses, str(brief["description"]))
+    contrasted = _contrasted(clauses, unquote(str(brief["description"])))
     # collect condition facts per (subject, kind, key)
     found: dict[tuple[str, str, str], dict[str, Any]] = {}
     last_key: tuple[str, str, str] | None = None
@@ -1219,7 +1246,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         if cl.role in ("consequence", "else") and last_key is not None:
             found[last_key].setdefault("consequences", []).append(cl.text)
             found[last_key].setdefault("roles", set()).update(cl.mentions)
-    for (role, attr_key), classes in reader.attribute_classes(str(brief["description"])).items():
+    for (role, attr_key), classes in reader.attribute_classes(unquote(str(brief["description"]))).items():
         entry = found.setdefault((role, "attr", attr_key), {"order": len(clauses), "sentence": -1,
                                                             "clause": -1, "targets": [], "values": []})
         entry["values"] += [v for v in classes if v not in entry["values"]]
@@ -1293,7 +1320,7 @@ def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Cat
     cabinet"): a factor listing the places it may be asks about the others (`_drop_home`) —
     unless the text speaks of somewhere else ("wherever else it may be lying")."""
 
-    low = " ".join(w for w, _, _ in tokens(expand(str(brief.get("description", "")))))
+    low = " ".join(w for w, _, _ in tokens(expand(unquote(str(brief.get("description", ""))))))
     elsewhere = any(re.search(rf"\b{cue}\b", low) for cue in ELSEWHERE + ("wherever",))
     settled = set(described_placements(brief, catalog, kinds=frozenset({"settled"} | (
         set() if elsewhere else {"kept"}))))

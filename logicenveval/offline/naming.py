@@ -33,7 +33,7 @@ from logicenveval.offline.lexicon import (
     tokens,
     words_of,
 )
-from logicenveval.offline.sentences import STATE_WORDS, expand
+from logicenveval.offline.sentences import STATE_WORDS, expand, unquote
 
 
 @handler("name_objects")
@@ -162,7 +162,7 @@ class _Reader:
     def __init__(self, description: str, catalog: Catalog, rooms: Iterable[str]) -> None:
         self.catalog = catalog
         self.phrases, self.heads, self.longest = _phrase_tables(catalog)
-        text = expand(description)
+        text = expand(unquote(description))
         toks = tokens(text)
         self.text = _Text([w for w, _, _ in toks], [text[a:b].lower() for _, a, b in toks],
                           [text[toks[k - 1][2] if k else 0:toks[k][1]] for k in range(len(toks))])

@@ -49,6 +49,7 @@ from logicenveval.offline.sentences import (
     expand,
     habitual,
     split_sentences,
+    unquote,
 )
 
 # ---------------------------------------------------------------------------------------------
@@ -234,7 +235,7 @@ def _read(brief: Mapping[str, Any], catalog: Catalog, kinds: frozenset[str]) -> 
     reading = _Reading({k: {} for k in _ORDER}, {k: {} for k in _ORDER})
     if len(lex.rooms) == 1:
         reading.context_room = lex.rooms[0]
-    for sent in _sentences(str(brief.get("description", "")), lex):
+    for sent in _sentences(unquote(str(brief.get("description", ""))), lex):
         _read_sentence(sent, lex, catalog, reading)
     held: dict[str, str] = {}
     rooms: dict[str, str] = {}

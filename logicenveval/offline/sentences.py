@@ -70,6 +70,9 @@ _CONTRACTIONS = [
     (r"\b(it|that|there|what|where|who|how|here|he|she)'s\b", r"\1 is"), (r"\b(they|we|you)'re\b", r"\1 are"),
     (rf"\b(\w+)'s(?=\s+(?:{'|'.join(_HAS_AFTER)})\b)", r"\1 has"),
     (rf"\b(\w+)'s(?=\s+(?:{'|'.join(_IS_AFTER)})\b)", r"\1 is"),
+    # typed or dictated without the apostrophe ("if its not in there", "if its dirty"): "its",
+    # "thats", "theres" before what follows "is" are "it is", never a possessive
+    (rf"\b(it|that|there|what|where)s(?=\s+(?:{'|'.join(_IS_AFTER)})\b)", r"\1 is"),
     (r"\bcan't\b", "can not"), (r"\bwon't\b", "will not"), (r"n't\b", " not"),
     (r"\b(i|you|we|they)'ve\b", r"\1 have"), (r"\b(i|you|we|they|it)'ll\b", r"\1 will"),
     (r"\b(\w+)s'(\s)", r"\1s\2"), (r"\b(\w+)'s\b", r"\1"),
@@ -80,6 +83,18 @@ ARROW = re.compile(r"\s*(?:->|=>|\u2192)\s*")
 _SENT = re.compile(r"(?<=[.!?;:])\s+(?!->|=>|\u2192)|\n+|(?<=\))\s+(?=[A-Z])")
 _FULL_STOP = re.compile(r"(?<=[.!])\s+|\n+")
 _ABBREV = re.compile(r"\b(e\.g|i\.e|etc|approx|vs)\.", re.I)
+
+
+#: an email's quoting: the attribution line above a quoted message ("On Monday, Jo wrote:") and
+#: the ">" that opens each quoted line; neither says anything of the scene
+_ATTRIBUTION = re.compile(r"^[ \t>]*On\b[^\n]{0,80}\bwrote:[ \t]*$", re.M)
+_QUOTE_MARK = re.compile(r"^[ \t]*(?:>[ \t]?)+", re.M)
+
+
+def unquote(text: str) -> str:
+    """The text without an email's quoting marks: a reply above a quoted message reads as one
+    text ("> On Monday, Jo wrote:" is no sentence; "> Could you tidy ..." is "Could you tidy ...")."""
+    return _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", text))
 
 
 def expand(text: str) -> str:
