@@ -69,6 +69,10 @@ PARTS = frozenset({"door", "lid", "leaf", "screen", "soil", "surface", "top", "i
                    "content", "bottom", "side", "handle", "shelf", "drawer", "bag", "glass", "bottle",
                    "box", "pack", "packet", "jar", "carton", "tub", "container", "roll"})
 PRONOUNS = frozenset({"it", "they", "them", "one", "ones", "its", "their", "whose"})
+#: kinds of thing that depict a person or an animal, which a child calls "she" or "he", and the
+#: pronouns that may then mean them (`_Reader.mentions`)
+PERSONIFIED = frozenset({"doll", "teddy_bear"})
+PERSON_PRONOUNS = frozenset({"she", "he", "her", "him"})
 #: verbs that say where a thing belongs ("it is kept in the vanity", "the remote lives on the
 #: stand"): said of a definite object they are still askable (see `Fact.definite`)
 HOMES = frozenset({"kept", "lives", "live"})
@@ -296,6 +300,14 @@ class _Reader:
             found.append(Mention(self.topic, 0, 1, "pronoun"))
         covered = {i for m in found for i in range(m.start, m.end)}
         for i, w in enumerate(words):
+            if i not in covered and w in PERSON_PRONOUNS and not any(m.start == i + 1 for m in found):
+                # "my doll sleeps on the bed but if she fell on the floor put her back": a child
+                # speaks of a doll or a teddy as of a person (never "her" before a noun: "her doll")
+                dolls = [r for r in self.recent + [r for m in found if m.end <= i for r in m.roles]
+                         if str(self.lex.roles.get(r, {}).get("category", "")) in PERSONIFIED]
+                if dolls:
+                    found.append(Mention((dolls[-1],), i, i + 1, "pronoun"))
+                continue
             if i in covered or w not in PRONOUNS:
                 continue
             if w == "it" and words[i + 1 : i + 2] in (["is"], ["was"], ["seems"], ["may"], ["might"], ["could"]) \
