@@ -304,3 +304,22 @@ def test_an_appliance_that_stands_on_a_counter_holds_nothing_by_default(
     item, how = list(roles)[-1], "on" if CATALOG.categories[standing].surface else "inside"
     placed = realise(_brief(description, rooms, **roles), [f"{how}({item}, {standing})"], CATALOG)
     assert placed[item].placement == f"{how}:{standing}"
+
+
+@pytest.mark.parametrize(("text", "roles", "fact"), [
+    # dev4 porch_closing_recipe and one written here: a norm adverb with a verb of resting says
+    # where a thing belongs, not where it is
+    ("What's out there: a wooden bench and a bunch of flowers that normally sit on the bench.",
+     {"flower": "flower", "bench": "bench"}, "on(flower, bench)"),
+    ("The towel usually hangs on the towel rack.", {"towel": "towel", "towel_rack": "towel_rack"},
+     "on(towel, towel_rack)"),
+])
+def test_a_norm_adverb_with_a_resting_verb_is_a_home(text: str, roles: dict[str, str], fact: str) -> None:
+    brief = {"id": "t", "description": text, "rooms": ["living_room"],
+             "roles": {r: {"category": c, "attributes": {}} for r, c in roles.items()}}
+    catalog = load_catalog()
+    assert fact in described_placements(brief, catalog, kinds=frozenset({"kept"}))
+    assert fact not in described_placements(brief, catalog, kinds=frozenset({"settled"}))
+    # without the adverb it is where the thing is now
+    plain = dict(brief, description=text.replace("normally ", "").replace("usually ", ""))
+    assert fact in described_placements(plain, catalog, kinds=frozenset({"settled"}))

@@ -43,6 +43,7 @@ from logicenveval.offline.clauses import (
 from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, singular
 from logicenveval.offline.sentences import (
     ACTIONS,
+    NORM_ADVERBS,
     PREP_IN,
     PREP_ON,
     STATE_WORDS,
@@ -552,6 +553,8 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
             continue  # a norm or a goal ("should be in"), or what someone does ("which you hang on")
         if kind is None or clause.mood == "instruction" and _finite(group):
             continue  # an instruction places only through its noun phrases ("the coat the kids dumped ...")
+        if kind == "settled" and group[-1] in STATIVE and (set(group) | set(words[k + 1:start])) & NORM_ADVERBS:
+            kind = "kept"  # "flowers that normally sit on the bench": where they belong, not where they are
         subjects = _np_list(sent, ms, lo, start)
         if not _finite(group):
             who = start - 1
