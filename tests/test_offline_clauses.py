@@ -253,3 +253,31 @@ def test_if_not_before_in_case_invents_no_place() -> None:
     """"if not in case": "in case" is a cue, not a place, so no "it is not" is written in
     (the property test above found it)."""
     assert all("it is" not in p.text for p in split_clauses("if not in case"))
+
+
+# -- a condition typed without a comma runs into its instruction (the fourth development set) ---
+
+@pytest.mark.parametrize(("sentence", "condition", "consequence"), [
+    ("if its not in there put it in there.", "its not in there", "put it in there."),  # dev4, a child's message
+    ("if the lamp is still on turn it off.", "the lamp is still on", "turn it off."),  # dev4, the same text
+    ("If the oven door is open close it please", "the oven door is open", "close it please"),
+    ("the towel, if dirty wash it", "dirty", "wash it"),
+])
+def test_a_condition_without_a_comma_ends_at_its_imperative(sentence: str, condition: str,
+                                                            consequence: str) -> None:
+    pieces = split_clauses(sentence)
+    assert [p.text.strip() for p in pieces if p.role == "condition"] == [condition]
+    assert [p.text.strip() for p in pieces if p.role == "consequence"][-1] == consequence
+
+
+@pytest.mark.parametrize("sentence", [
+    "if you put it back thank you",  # the verb has its subject
+    "If the mug is dirty, wash it.",  # the comma already cuts
+    "if it is set aside leave it",  # a participle after a copula, not an imperative
+])
+def test_no_cut_at_a_verb_with_its_subject_or_after_a_copula(sentence: str) -> None:
+    pieces = split_clauses(sentence)
+    condition = next(p.text for p in pieces if p.role == "condition")
+    assert not condition.strip().startswith(("put", "wash", "set"))
+    if sentence.startswith("if it is set"):
+        assert condition.strip() == "it is set aside"

@@ -47,6 +47,7 @@ from logicenveval.offline.sentences import (
     expand,
     habitual,
     split_sentences,
+    unquote,
 )
 from logicenveval.scene.compat import can_hold
 
@@ -68,6 +69,10 @@ PARTS = frozenset({"door", "lid", "leaf", "screen", "soil", "surface", "top", "i
                    "content", "bottom", "side", "handle", "shelf", "drawer", "bag", "glass", "bottle",
                    "box", "pack", "packet", "jar", "carton", "tub", "container", "roll"})
 PRONOUNS = frozenset({"it", "they", "them", "one", "ones", "its", "their", "whose"})
+#: kinds of thing that depict a person or an animal, which a child calls "she" or "he", and the
+#: pronouns that may then mean them (`_Reader.mentions`)
+PERSONIFIED = frozenset({"doll", "teddy_bear"})
+PERSON_PRONOUNS = frozenset({"she", "he", "her", "him"})
 #: verbs that say where a thing belongs ("it is kept in the vanity", "the remote lives on the
 #: stand"): said of a definite object they are still askable (see `Fact.definite`)
 HOMES = frozenset({"kept", "lives", "live"})
@@ -189,6 +194,18 @@ PHRASAL_STATES = tuple((re.compile(rf"\b(?:{verbs}) (?:{particles})\b"), state) 
 ))
 
 
+#: what a container is filled with: "there is still wine in it" says the bottle is full, not that
+#: there is a wine bottle ("wine" also names the bottle); read as the state before the clause is
+LIQUIDS = ("water", "wine", "milk", "juice", "coffee", "tea", "beer", "soup", "oil", "soda", "liquid", "drink")
+_CONTENTS = re.compile(rf"\bthere (?:is|are) (?:still |some |any )*(no |not any )?(?:{'|'.join(LIQUIDS)})"
+                       rf"(?: left)? (?:in|inside) (it|them)\b")
+
+
+def _contents(said: str) -> str:
+    """"there is still wine in it" -> "it is full"; "there is no water left in it" -> "it is empty"."""
+    return _CONTENTS.sub(lambda m: f"{m.group(2)} is {'empty' if m.group(1) else 'full'}", said)
+
+
 #: a verb that raises its subject before "to be" says what the subject is, as "is" does ("it
 #: turns out to be a bill", "the jar happens to be empty", "the lamp seems to be on")
 RAISING = re.compile(r"\b(?:turns? out|turned out|happens?|happened|seems?|seemed|appears?|appeared|proves?"
@@ -231,9 +248,10 @@ def _verb_read(toks: list[tuple[str, int, int]], m: Mention) -> bool:
 
 
 def _participle(words: list[str], k: int) -> bool:
-    """Word `k` is a verb's past participle after "been" ("has been knocked onto the floor",
-    "may have been shoved under the bed"): part of the verb group, not the end of the clause."""
-    if k == 0 or words[k - 1] != "been" or not words[k].endswith(("ed", "en", "wn", "ung")):
+    """Word `k` is a verb's past participle after "been" or a perfect's "have" ("has been knocked
+    onto the floor", "may have been shoved under the bed", "if they've blown onto the floor"): part
+    of the verb group, not the end of the clause."""
+    if k == 0 or words[k - 1] not in ("been", "has", "have", "had") or not words[k].endswith(("ed", "en", "wn", "ung")):
         return False
     return any(lemma != words[k] for lemma in getAllLemmas(words[k]).get("VERB", ()))
 
@@ -297,6 +315,14 @@ class _Reader:
             found.append(Mention(self.topic, 0, 1, "pronoun"))
         covered = {i for m in found for i in range(m.start, m.end)}
         for i, w in enumerate(words):
+            if i not in covered and w in PERSON_PRONOUNS and not any(m.start == i + 1 for m in found):
+                # "my doll sleeps on the bed but if she fell on the floor put her back": a child
+                # speaks of a doll or a teddy as of a person (never "her" before a noun: "her doll")
+                dolls = [r for r in self.recent + [r for m in found if m.end <= i for r in m.roles]
+                         if str(self.lex.roles.get(r, {}).get("category", "")) in PERSONIFIED]
+                if dolls:
+                    found.append(Mention((dolls[-1],), i, i + 1, "pronoun"))
+                continue
             if i in covered or w not in PRONOUNS:
                 continue
             if w == "it" and words[i + 1 : i + 2] in (["is"], ["was"], ["seems"], ["may"], ["might"], ["could"]) \
@@ -383,6 +409,7 @@ class _Reader:
         for pattern, state in PHRASAL_STATES:
             said = pattern.sub(state, said)
         said = RAISING.sub("is", said)
+        said = _contents(said)
         toks = tokens(said)
         words = [t[0] for t in toks]
         self.commas = frozenset(k for k in range(1, len(toks)) if "," in said[toks[k - 1][2]:toks[k][1]])
@@ -525,9 +552,18 @@ class _Reader:
         return replace(f, subject=r, condition=f"state({r}, {f.key})")
 
     def _already(self, words: list[str], mentions: list[Mention], negated: bool) -> Fact | None:
-        """`unless it is already there / on`: the condition is the previous instruction's result."""
-        if "already" not in words or any(m.kind == "role" for m in mentions) or len(words) > 6:
+        """`unless it is already there / on`: the condition is the previous instruction's result;
+        so is a place said only as "in there" / "on there" of a pronoun ("leo's car goes in the
+        toy box. if it's not in there put it in there", "the mugs go on the rack; if they are not
+        on there, ..."): "there" is where the instruction before put it."""
+        if any(m.kind == "role" for m in mentions) or len(words) > 6:
             return None
+        if "already" not in words:
+            rest = [w for w in words if w not in ALREADY_FILLER and w not in PRONOUNS]
+            if len(rest) != 2 or rest[0] not in PREP_ON | PREP_IN or rest[1] != "there" or not any(
+                    m.kind == "pronoun" for m in mentions):
+                return None
+            words = [*words, "already"]  # read as "it is (not) already in there"
         pronouns = [m for m in mentions if m.kind == "pronoun"]
         said = set(pronouns[0].roles) if pronouns else set()
         after = [w for w in words[words.index("already") + 1 :] if w not in {"is", "are", "be", "was", "were"}]
@@ -536,7 +572,8 @@ class _Reader:
         content = [w for i, w in enumerate(words) if w not in ALREADY_FILLER | SITUATION_PARTICIPLES
                    and not (pronouns and i == pronouns[0].start)]
         there = after[:1] in (["there"], ["here"]) or set(content) <= {"there", "here"} or (
-            len(content) > 1 and content[0] in PREP_ON | PREP_IN and all(w in PRONOUNS | ARTICLES for w in content[1:]))
+            len(content) > 1 and content[0] in PREP_ON | PREP_IN and all(w in PRONOUNS | ARTICLES | {"there"}
+                                                                         for w in content[1:]))
         if there and self.last_goal is not None and (not said or self.last_goal.subject in said):
             g = self.last_goal
             return Fact(g.subject, g.condition, "location", g.key, negated=negated)
@@ -1089,8 +1126,10 @@ DISTRIBUTIVE = re.compile(r"^\W*(?:for\s+)?(?:each|every|both)(?:\s+(?:one|ones|
 
 
 #: "either of them", "any of these", "one of the two": a condition on whichever member of the group
-#: just named, asked of each of them as "each one" is
-ANY_OF = re.compile(r"\b(?:either|neither|any|one|each|both|all)\s+of\s+(?:them|these|those|the\s+two)\b", re.I)
+#: just named, asked of each of them as "each one" is; so is "either one" / "neither one" ("Marco's
+#: glass and Lena's glass ... If either one is dirty")
+ANY_OF = re.compile(r"\b(?:(?:either|neither|any|one|each|both|all)\s+of\s+(?:them|these|those|the\s+two)"
+                    r"|(?:either|neither)\s+one)\b", re.I)
 
 
 def _members(clauses: list[Clause], kinds: Mapping[str, str], sentence: int) -> tuple[str, ...]:
@@ -1129,7 +1168,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
              if (cat := catalog.get(str(role.get("category", "")))) is not None}
     reader = _Reader(lex, _capabilities(brief, catalog), kinds)
     categories = {name: str(role.get("category", "")) for name, role in dict(brief.get("roles") or {}).items()}
-    sentences = split_sentences(str(brief["description"]))
+    sentences = split_sentences(unquote(str(brief["description"])))
     clauses: list[Clause] = []
     grammatical = 0  # pieces split at ':' or ';' still belong to one sentence for grouping
     headed = -1  # the sentence whose heading ("Shirt on the floor:") the pieces after it answer
@@ -1210,7 +1249,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             # (a bullet item ends its unit, full stop or not: "- racket too if its lying on the floor")
             grammatical += 1
 
-    contrasted = _contrasted(clauses, str(brief["description"]))
+    contrasted = _contrasted(clauses, unquote(str(brief["description"])))
     # collect condition facts per (subject, kind, key)
     found: dict[tuple[str, str, str], dict[str, Any]] = {}
     last_key: tuple[str, str, str] | None = None
@@ -1296,7 +1335,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         if cl.role in ("consequence", "else") and last_key is not None:
             found[last_key].setdefault("consequences", []).append(cl.text)
             found[last_key].setdefault("roles", set()).update(cl.mentions)
-    for (role, attr_key), classes in reader.attribute_classes(str(brief["description"])).items():
+    for (role, attr_key), classes in reader.attribute_classes(unquote(str(brief["description"]))).items():
         entry = found.setdefault((role, "attr", attr_key), {"order": len(clauses), "sentence": -1,
                                                             "clause": -1, "targets": [], "values": []})
         entry["values"] += [v for v in classes if v not in entry["values"]]
@@ -1370,7 +1409,7 @@ def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Cat
     cabinet"): a factor listing the places it may be asks about the others (`_drop_home`) —
     unless the text speaks of somewhere else ("wherever else it may be lying")."""
 
-    low = " ".join(w for w, _, _ in tokens(expand(str(brief.get("description", "")))))
+    low = " ".join(w for w, _, _ in tokens(expand(unquote(str(brief.get("description", ""))))))
     elsewhere = any(re.search(rf"\b{cue}\b", low) for cue in ELSEWHERE + ("wherever",))
     settled = set(described_placements(brief, catalog, kinds=frozenset({"settled"} | (
         set() if elsewhere else {"kept"}))))

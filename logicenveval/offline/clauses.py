@@ -313,11 +313,17 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
             pieces.append((cond[:cut], cue, "condition"))
             pieces += _split(cond[cut:])
         else:
-            pieces.append((cond, cue, "condition"))
+            imp = _imperative_cut(cond)
+            pieces.append((cond if imp is None else cond[:imp], cue, "condition"))
+            if imp is not None:  # "the towel, if dirty wash it": the instruction follows
+                pieces.append((cond[imp:], cue, "consequence"))
         if other:
             pieces.append((tail[other.end():], "otherwise", "else"))
         return pieces
     cond, cons = (tail[: m.start()], tail[m.end():]) if m else (tail, "")
+    imp = None if m else _imperative_cut(cond)
+    if imp is not None:  # "if its not in there put it in there": no comma
+        cond, cons = cond[:imp], cond[imp:]
     alt = re.match(r"\s*or\s+[^,;]*,\s*", cons, re.I) if m and tail[m.start()] == "," else None
     if alt and m:  # "if it is elsewhere, or we are out of it, skip it": one condition with two alternatives
         cond, cons = tail[: m.start() + 1] + " " + cons[: alt.end()].rstrip(" ,"), cons[alt.end():]
@@ -326,6 +332,43 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
         rest = _split(cons)
         pieces += [(t, c or cue, "consequence" if r in ("statement", "scene") else r) for t, c, r in rest]
     return pieces
+
+
+#: words after which a verb's base form is no imperative: its subject, a modal, "to", a copula
+#: ("if you put it back", "if it is set aside", "if we can leave it")
+_NO_IMPERATIVE_AFTER = frozenset({
+    "i", "you", "we", "they", "he", "she", "it", "someone", "somebody", "kids", "to", "will", "would",
+    "can", "could", "should", "shall", "must", "may", "might", "not", "do", "does", "did", "let", "is",
+    "are", "was", "were", "be", "been", "being", "am", "has", "have", "had", "and", "or", "please",
+    # a determiner or a preposition: the word is a noun ("on the floor it goes", "no sponge a ..."),
+    # but for "on", as often the state ("if the lamp is still on turn it off")
+    "the", "a", "an", "no", "any", "some", "each", "every", "my", "your", "his", "her", "our", "their",
+    "its", "this", "that", "these", "those", "in", "into", "onto", "at", "by", "of", "for", "from",
+    "with", "under", "near", "behind", "beside", "next"})
+#: what makes the words before a cut a condition of their own: a copula, "there", a state word
+_PREDICATES = frozenset({"is", "are", "was", "were", "has", "have", "had", "there"}) | frozenset(STATE_WORDS)
+
+
+def _imperative_cut(cond: str) -> int | None:
+    """Where a condition typed without a comma runs into its instruction ("if its not in there
+    put it in there", "if the lamp is still on turn it off", "if empty bin it"): before the first
+    imperative (a base-form verb and its object or particle, `imperative`) that follows a
+    predicate (a copula, "there" or a state word), not its subject or a modal. None if there is
+    no such verb (the whole text is the condition)."""
+    said = expand(cond).lower()
+    ws = list(re.finditer(r"[a-z]+", said))
+    for k in range(1, len(ws) - 1):
+        gap = said[ws[k - 1].end():ws[k].start()]
+        if gap.strip() or ws[k - 1].group() in _NO_IMPERATIVE_AFTER:
+            continue
+        if not {w.group() for w in ws[:k]} & _PREDICATES:
+            continue
+        if imperative([ws[k].group(), ws[k + 1].group()]):
+            # the same words in the text as written (the expansion only lengthens what is before)
+            rest = said[ws[k].start():]
+            at = cond.lower().rfind(rest)
+            return at if at > 0 else None
+    return None
 
 
 def _subsplit(pieces: list[tuple[str, str | None, str]]) -> list[tuple[str, str | None, str]]:

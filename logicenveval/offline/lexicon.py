@@ -33,13 +33,18 @@ COLOR_WORDS = frozenset(
 )
 
 
+#: the plural of a two-letter initialism: two consonants and an "s" ("cds", "tvs")
+_INITIALISM_PLURAL = re.compile(r"[b-df-hj-np-tv-z]{2}s")
+
+
 @lru_cache(maxsize=16384)
 def singular(word: str) -> str:
     """The noun lemma of `word`: lemminflect's dictionary (irregular plurals: shelves, knives,
     children; of two, the one that is not a verb's: leaves -> leaf), then its rules for a word it does not know that ends in -s ("tins"). Words of
-    three letters or fewer ("was", "has", "its") stay as written."""
+    three letters or fewer ("was", "has", "its") stay as written, but for the plural of a
+    two-letter initialism ("cds", "tvs", "pcs": no vowel before the "s"), which is its letters."""
     if len(word) <= 3:
-        return word
+        return word[:2] if _INITIALISM_PLURAL.fullmatch(word) else word
     known = getAllLemmas(word, upos="NOUN").get("NOUN")
     if known:
         # "leaves": the noun "leaf", not the verb "leave" (read as an action elsewhere)

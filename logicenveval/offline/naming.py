@@ -25,8 +25,15 @@ from logicenveval.domain.catalog import Catalog, load_catalog, per_catalog
 from logicenveval.llm.base import ChatRequest
 from logicenveval.model.rooms import room_type_of
 from logicenveval.offline.handlers import handler
-from logicenveval.offline.lexicon import COLOR_WORDS, CONTROL_HEADS, SPARE_WORDS, tokens, words_of
-from logicenveval.offline.sentences import STATE_WORDS, expand
+from logicenveval.offline.lexicon import (
+    COLOR_WORDS,
+    CONTROL_HEADS,
+    SPARE_WORDS,
+    singular,
+    tokens,
+    words_of,
+)
+from logicenveval.offline.sentences import STATE_WORDS, expand, unquote
 
 
 @handler("name_objects")
@@ -71,6 +78,10 @@ _ORDINALS = frozenset({"first", "second", "third", "fourth", "next", "last", "to
                        "upper", "lower", "left", "right", "other", "one", "front", "back"})
 #: verbs that lead a list of what each part holds ("three levels hold novels, essays and ...")
 _HOLDING = frozenset({"hold", "keep", "store", "contain", "take", "carry", "be", "are", "is", "for"})
+#: personal pronouns that are a clause's subject: an item holding one is a relative clause on
+#: the counted noun ("the two CDs I lent Ben (the jazz one and ...)", "the three mugs we bought"),
+#: no item of the list
+_SUBJECT_PRONOUNS = frozenset({"i", "we", "you", "he", "she", "they"})
 #: words of an item that say nothing of which one it is
 _FILLER = frozenset({"respectively", "one", "and", "or", "then", "also", "each", "s", "is", "are",
                      "kept", "stored", "go", "goes", "put", "placed", "shelved"})
@@ -79,6 +90,9 @@ _ITEM_BREAK = re.compile(r"[,;:(]|\s-+\s|\u2013|\u2014")
 #: what ends a heading a list follows ("Bookshelf levels: top for novels, ...")
 _HEADING = re.compile(r":|\s-+\s|\u2013|\u2014")
 _SENTENCE_END = re.compile(r"[.!?]|\n")
+#: a person's name as a possessive before a noun ("Marco's glass", "Priya's cup"): capitalised,
+#: since "the dog's bowl" or "the lamp's switch" own nothing
+_POSSESSOR = re.compile(r"\b([A-Z][a-z]+)'s\s+[a-z]")
 
 
 @dataclass
@@ -148,18 +162,25 @@ class _Reader:
     def __init__(self, description: str, catalog: Catalog, rooms: Iterable[str]) -> None:
         self.catalog = catalog
         self.phrases, self.heads, self.longest = _phrase_tables(catalog)
-        text = expand(description)
+        text = expand(unquote(description))
         toks = tokens(text)
         self.text = _Text([w for w, _, _ in toks], [text[a:b].lower() for _, a, b in toks],
                           [text[toks[k - 1][2] if k else 0:toks[k][1]] for k in range(len(toks))])
         self.named: set[str] = set()  # kinds named outright (by a full name or synonym)
         self.context = self._context()
         self.room_types = {room_type_of(r) for r in rooms}
+        #: the head words of the task's room ids ("home_bar": "bar"): a bare noun that names no
+        #: kind by itself and is one of them names the room ("tidy the home bar", "Re: the bar")
+        self.room_heads = {words_of(r)[-1] for r in rooms if words_of(r)}
         self.kinds: dict[str, _Kind] = {}
         self.recent: list[str] = []  # kinds in order of their last mention
         #: kind -> the head nouns the text named it by ("the box" then means the red toy box)
         self.used: dict[str, set[str]] = {}
         self.consumed: set[int] = set()  # words an enumeration has read
+        #: people named as owners ("Marco's glass": `expand` drops the "'s", so they are read
+        #: off the text as written) and, per kind, the owners of its mentions in order
+        self.possessors = {m.group(1).lower() for m in _POSSESSOR.finditer(description.replace("\u2019", "'"))}
+        self.owners: dict[str, list[str]] = {}
 
     # -- noun phrases ----------------------------------------------------------------------
 
@@ -211,22 +232,49 @@ class _Reader:
                    and len(words_of(c)) == 2 and words_of(c)[1] in CONTROL_HEADS]
         if control and exact is None:
             return control[-1]  # "Light switch: if the light is on": the light the switch works
-        if exact is None and (not options or not self.leads_noun(i)):
+        if exact is None and (not options or not self.leads_noun(i) or word in self.room_heads):
             return None
         prev = self.text.words[i - 1] if i > 0 else ""
         candidates = options if options else [exact]
+        written = self.text.raw[i]
+        if written == word:  # a singular never names a plural-only kind: "Marco's glass" is no spectacles
+            candidates = [c for c in candidates if c is None or not self.plural_only(c, word)] or candidates
         said = set(self.text.words[self.text.sentence_start(i):self.text.sentence_end(i)]) - _NOT_CONTEXT
 
-        def score(category: str | None) -> tuple[bool, bool, int, bool, int, int]:
+        def score(category: str | None) -> tuple[bool, bool, int, bool, bool, int, int]:
             assert category is not None
             cat = self.catalog.categories[category]
             others = {w for text in (category, *cat.synonyms) for w in words_of(text)} - {word}
             rooms = set(cat.rooms)
             return (prev in others, words_of(category) == (word,), len(others & said),
-                    category == exact, len(others & self.context),
+                    written != word and self.plural_named(category, word), category == exact,
+                    len(others & self.context),
                     -len(rooms) if rooms & self.room_types else -1000)
 
         return max(candidates, key=score)
+
+    def plural_names(self, category: str, word: str) -> list[bool]:
+        """For each name of `category` headed by `word` (singular), whether it is written in the
+        plural ("glasses", "open shelves", "headphones")."""
+        out = []
+        for text in (category, *self.catalog.categories[category].synonyms):
+            written = re.findall(r"[a-z0-9]+", text.lower().replace("_", " "))
+            head = written[written.index("of") - 1] if "of" in written[1:] else written[-1]
+            if singular(head) == word:
+                out.append(head != word)
+        return out
+
+    def plural_only(self, category: str, word: str) -> bool:
+        """Whether every name of `category` headed by `word` is a plural (a plurale tantum such as
+        "glasses", "scissors"): a singular "glass" names a drinking glass, never spectacles."""
+        names = self.plural_names(category, word)
+        return bool(names) and all(names)
+
+    def plural_named(self, category: str, word: str) -> bool:
+        """Whether a name of `category` is the plural of `word`: a plural bare noun ("put it on
+        the shelves") fits best the kind the catalog names in the plural (a shelving unit, "open
+        shelves"), where no other word of the sentence or a modifier tells the kinds apart."""
+        return any(self.plural_names(category, word))
 
     def _context(self) -> set[str]:
         """The description's words and the words of every name of the kinds it names outright
@@ -316,8 +364,11 @@ class _Reader:
         """Where the items of a counted list start: after the colon or dash that ends its heading
         ("2 cups left out today: Dave's cup and Priya's cup", "three bins by the back door - one
         for paper, ..."): what stands between the counted noun and the colon says more of the
-        whole group, no item of it. Without such a break, right after the noun."""
-        colon = next((k for k in range(start, end) if _HEADING.search(self.text.gaps[k])), None)
+        whole group, no item of it. Without such a break, right after the noun; a dash inside a
+        bracket is the aside's own ("the two CDs I lent Ben (the jazz one and the folk one - the
+        folk one has the cracked case)"), so the search stops at an opening bracket."""
+        opening = next((k for k in range(start, end) if "(" in self.text.gaps[k]), end)
+        colon = next((k for k in range(start, opening) if _HEADING.search(self.text.gaps[k])), None)
         return start if colon is None or colon == start else colon
 
     def group_kind(self, j: int) -> tuple[int, str | None]:
@@ -382,8 +433,9 @@ class _Reader:
             if self.own_kind(a, a + len(before), head):
                 continue  # "two toys: a doll and a ball" names a doll and a ball
             if ordinal_at is None and "for" not in item and color is None and (
-                    len(item) > 4 or any(w in _PREPOSITIONS or w in _HOLDING or w in STATE_WORDS for w in item)):
-                continue  # a clause, not an item ("are in the kitchen")
+                    len(item) > 4 or any(w in _PREPOSITIONS or w in _HOLDING or w in STATE_WORDS
+                                         or w in _SUBJECT_PRONOUNS for w in item)):
+                continue  # a clause, not an item ("are in the kitchen", "the two CDs I lent Ben")
             # the words read: the item's up to "for", and the purpose when it is a class of things
             # (a bare plural: "for dolls", "novels on one"), not when it is an object ("one for
             # the jacket")
@@ -528,11 +580,18 @@ class _Reader:
                 self.instance(category, f"other_{last}", {})  # "a lamp on the desk and another lamp"
             else:
                 kind.generic = True
+                if prev in self.possessors and self.match(i - 1)[1] is None:
+                    self.owners.setdefault(category, []).append(prev)
                 if prev in _COUNTS:
                     kind.count = max(kind.count, _COUNTS[prev])
                     if allowed:
                         last_colored = category
             i += n
+        for category, owners in self.owners.items():
+            if len(set(owners)) >= 2 and not self.kinds[category].instances:
+                # "Marco's glass and Lena's glass": one object per owner, told apart by whose it is
+                for owner in dict.fromkeys(owners):
+                    self.instance(category, f"{owner}_{words_of(category)[-1]}", {"owner": owner})
         found: list[dict[str, Any]] = []
         for category, kind in self.kinds.items():
             told_apart = len(kind.instances) >= max(2, kind.count)

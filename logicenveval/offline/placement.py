@@ -43,12 +43,14 @@ from logicenveval.offline.clauses import (
 from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, singular
 from logicenveval.offline.sentences import (
     ACTIONS,
+    NORM_ADVERBS,
     PREP_IN,
     PREP_ON,
     STATE_WORDS,
     expand,
     habitual,
     split_sentences,
+    unquote,
 )
 
 # ---------------------------------------------------------------------------------------------
@@ -234,7 +236,7 @@ def _read(brief: Mapping[str, Any], catalog: Catalog, kinds: frozenset[str]) -> 
     reading = _Reading({k: {} for k in _ORDER}, {k: {} for k in _ORDER})
     if len(lex.rooms) == 1:
         reading.context_room = lex.rooms[0]
-    for sent in _sentences(str(brief.get("description", "")), lex):
+    for sent in _sentences(unquote(str(brief.get("description", ""))), lex):
         _read_sentence(sent, lex, catalog, reading)
     held: dict[str, str] = {}
     rooms: dict[str, str] = {}
@@ -256,6 +258,7 @@ def _read_sentence(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Re
     body_start = _heading(sent, lex, catalog, reading)
     _frame(sent, reading, body_start)
     _room_words(sent, lex, reading)
+    _identifying_aside(sent, lex, catalog, reading)
     for clause in _clauses(words, body_start, len(words)):
         ms = [m for m in sent.mentions if clause.start <= m.start < clause.end]
         if clause.mood != "condition":
@@ -277,6 +280,26 @@ def _read_sentence(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Re
         holders = [m for m in ms if _prep_before(words, m.start) in AT | {"from", "of"}]
         if holders:
             reading.last_holder = holders[-1]
+
+
+def _identifying_aside(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Reading) -> None:
+    """"The desktop computer (the old one on the desk, ...)", "the lamp (the one on the
+    nightstand)": a bracket right after a thing that tells which one it is by where it stands
+    states where it is."""
+    words = sent.words
+    for m in sent.mentions:
+        if m.kind != "role" or len(m.roles) != 1 or m.end + 1 >= len(words) or words[m.end] != "(":
+            continue
+        k = m.end + 1
+        if words[k] != "the":
+            continue
+        one = next((j for j in range(k + 1, min(k + 4, len(words))) if words[j] == "one"), None)
+        if one is None or any(w in VERBS or w in ("(", ")", ",") for w in words[k + 1:one]):
+            continue  # "(the one we use)": no place
+        close = next((j for j in range(one, len(words)) if words[j] in (")", ",")), len(words))
+        found = _holder_after(sent, [x for x in sent.mentions if one < x.start < close], one + 1, close)
+        if found is not None and found[1].roles != m.roles:
+            _put(reading, "settled", catalog, lex, m.roles[0], found[1], found[0])
 
 
 def _roles(m: Mention, sent: _Sentence) -> tuple[str, ...]:
@@ -551,6 +574,8 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
             continue  # a norm or a goal ("should be in"), or what someone does ("which you hang on")
         if kind is None or clause.mood == "instruction" and _finite(group):
             continue  # an instruction places only through its noun phrases ("the coat the kids dumped ...")
+        if kind == "settled" and group[-1] in STATIVE and (set(group) | set(words[k + 1:start])) & NORM_ADVERBS:
+            kind = "kept"  # "flowers that normally sit on the bench": where they belong, not where they are
         subjects = _np_list(sent, ms, lo, start)
         if not _finite(group):
             who = start - 1

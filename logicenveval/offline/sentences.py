@@ -70,6 +70,9 @@ _CONTRACTIONS = [
     (r"\b(it|that|there|what|where|who|how|here|he|she)'s\b", r"\1 is"), (r"\b(they|we|you)'re\b", r"\1 are"),
     (rf"\b(\w+)'s(?=\s+(?:{'|'.join(_HAS_AFTER)})\b)", r"\1 has"),
     (rf"\b(\w+)'s(?=\s+(?:{'|'.join(_IS_AFTER)})\b)", r"\1 is"),
+    # typed or dictated without the apostrophe ("if its not in there", "if its dirty"): "its",
+    # "thats", "theres" before what follows "is" are "it is", never a possessive
+    (rf"\b(it|that|there|what|where)s(?=\s+(?:{'|'.join(_IS_AFTER)})\b)", r"\1 is"),
     (r"\bcan't\b", "can not"), (r"\bwon't\b", "will not"), (r"n't\b", " not"),
     (r"\b(i|you|we|they)'ve\b", r"\1 have"), (r"\b(i|you|we|they|it)'ll\b", r"\1 will"),
     (r"\b(\w+)s'(\s)", r"\1s\2"), (r"\b(\w+)'s\b", r"\1"),
@@ -92,6 +95,85 @@ _ABBREV = re.compile(r"\b(e\.g|i\.e|etc|approx|vs)\.", re.I)
 #: a slash between two words offers alternatives, as "or" does ("on the chair / on the floor",
 #: "wet/dirty"; "and/or" is "and or")
 _SLASH = re.compile(r"(?<=[a-z])\s*/\s*(?=[a-z])", re.I)
+
+
+#: an email's quoting: the attribution line above a quoted message ("On Monday, Jo wrote:") and
+#: the ">" that opens each quoted line; neither says anything of the scene
+_ATTRIBUTION = re.compile(r"^[ \t>]*On\b[^\n]{0,80}\bwrote:[ \t]*$", re.M)
+_QUOTE_MARK = re.compile(r"^[ \t]*(?:>[ \t]?)+", re.M)
+
+
+def unquote(text: str) -> str:
+    """The text without an email's quoting marks: a reply above a quoted message reads as one
+    text ("> On Monday, Jo wrote:" is no sentence; "> Could you tidy ..." is "Could you tidy ...");
+    a table of items and places as its sentences (`detable`)."""
+    return detable(_QUOTE_MARK.sub("", _ATTRIBUTION.sub("", text)))
+
+
+#: a table's column of item names and its column of places ("Item | Location | Notes"), and the
+#: columns that only number the rows ("No.", "#")
+_ITEM_HEADS = frozenset({"item", "items", "object", "thing", "what"})
+_PLACE_HEADS = frozenset({"location", "place", "where", "position"})
+_EMPTY_CELL = frozenset({"", "-", "\u2013", "\u2014", "n/a", "none"})
+#: "As item 4.", "Same as 4": a row whose notes are another row's
+_AS_ROW = re.compile(r"^(?:as|same as)\s+(?:item|no\.?|row|#)?\s*(\d+)\.?$", re.I)
+_PLACE_DOUBT = re.compile(r"\b(?:if|unless|when|should)\b[^.;]*?\b(?:on|in|inside|under|at)\s+[a-z]", re.I)
+_PLACE_START = re.compile(r"^(?:on|in|inside|under|by|near|next|beside|behind|at|against|above|below)\b", re.I)
+
+
+def _cells(line: str) -> list[str]:
+    return [c.strip() for c in line.strip().strip("|").split("|")]
+
+
+def detable(text: str) -> str:
+    """A table of items and where they are ("No. | Item | Location | Notes" then "2 | First aid kit
+    | on the shelving unit | To be kept closed.") as the sentences it stands for: "First aid kit is
+    on the shelving unit. To be kept closed." A place cell without a preposition is on or by what
+    it names ("back wall", "shelving unit, top shelf"); "As item 4." repeats row 4's notes. Text
+    that holds no such table is returned as it is."""
+    lines = text.split("\n")
+    out: list[str] = []
+    header: list[str] | None = None
+    notes_of: dict[str, str] = {}
+    for line in lines:
+        if line.count("|") < 2:
+            header = None
+            out.append(line)
+            continue
+        cells = _cells(line)
+        heads = [c.lower().rstrip(".:") for c in cells]
+        if header is None:
+            if set(heads) & _ITEM_HEADS and set(heads) & _PLACE_HEADS:
+                header = heads
+                continue
+            out.append(line)
+            continue
+        if set(re.sub(r"[-:| ]", "", line)) <= {""}:
+            continue  # a "---|---" rule under the header
+        row = dict(zip(header, cells, strict=False))
+        item = next((row[h] for h in header if h in _ITEM_HEADS), "")
+        place = next((row[h] for h in header if h in _PLACE_HEADS), "")
+        number = next((row[h] for h in header if h in ("no", "#", "number")), "")
+        note = " ".join(row[h] for h in header if h not in _ITEM_HEADS | _PLACE_HEADS | {"no", "#", "number"}
+                        and row.get(h, "").lower() not in _EMPTY_CELL)
+        again = _AS_ROW.match(note)
+        if again is not None:
+            note = notes_of.get(again.group(1), "")
+        notes_of[number] = note
+        sentence = ""
+        if item and place.lower() not in _EMPTY_CELL:
+            where = place if _PLACE_START.match(place) else (
+                f"on the {place}" if not place.lower().endswith("wall") else f"against the {place}")
+            # a row whose notes ask where the item is ("If not on the shelving unit, ...") lists
+            # where it belongs, not where it is
+            verb = "belongs" if _PLACE_DOUBT.search(note) else "is"
+            sentence = f"The {item[0].lower()}{item[1:]} {verb} {where}."
+        elif item:
+            sentence = f"The {item[0].lower()}{item[1:]}."
+        if note:
+            sentence += " " + (note if note.endswith((".", "!", "?")) else note + ".")
+        out.append(sentence.strip())
+    return "\n".join(out)
 
 
 def expand(text: str) -> str:
