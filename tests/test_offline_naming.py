@@ -256,3 +256,32 @@ def test_a_bare_plural_of_a_named_things_kind_is_a_class_not_an_object(text: str
     assert named <= names and not names & not_named, names
     assert {"doll", "toy_car"} <= {o["name"] for o in name_objects(
         "A doll and a toy car lie on the floor next to a toy.", load_catalog(), ["kids_room"])}
+
+
+@pytest.mark.parametrize(("text", "not_named"), [
+    # issue 47's sentence, and the same form in other rooms: a verb after a subject or a modal
+    ("There may be a stain on the floor; if you spot it there, wipe it up.", {"wet_wipe"}),
+    ("A mug may be on the desk; if you spot it, take it to the kitchen.", {"floor_stain"}),
+    ("Should you spot a toy on the stairs, put it in the toy box.", {"floor_stain"}),
+    # an imperative before its object or its particle and object
+    ("If the mirror is dirty, wipe it down.", {"wet_wipe"}),
+    ("Vacuum the rug if it is dusty.", {"vacuum_cleaner"}),
+    ("If the lamp is on, switch it off and mop up the water.", {"mop"}),
+    ("Tape the box shut.", {"tape"}),
+    # a name never runs across punctuation ("wet, mop" is no wet mop)
+    ("If the floor is wet, mop it.", {"mop"}),
+])
+def test_a_name_used_as_a_verb_names_no_object(text: str, not_named: set[str]) -> None:
+    assert not {c for c, _ in _named(text).values()} & not_named
+
+
+@pytest.mark.parametrize(("text", "category"), [
+    ("The mop is in the closet; a spot on the floor needs the mop.", "floor_stain"),
+    ("Wipes, a sponge and tape are on the shelf.", "wet_wipe"),
+    ("Wipes, a sponge and tape are on the shelf.", "tape"),
+    ("Books the kids left on the floor go on the shelf.", "book"),
+    ("Tape the box shut and put the tape in the drawer.", "tape"),
+    ("Put the toy-box by the bed.", "toy_box"),
+])
+def test_the_same_words_as_nouns_still_name_objects(text: str, category: str) -> None:
+    assert category in {c for c, _ in _named(text).values()}

@@ -33,7 +33,14 @@ from logicenveval.offline.clauses import (
     points_back,
     split_clauses,
 )
-from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, singular, tokens
+from logicenveval.offline.lexicon import (
+    COLOR_WORDS,
+    VERB_OBJECTS,
+    Lexicon,
+    Mention,
+    singular,
+    tokens,
+)
 from logicenveval.offline.placement import described_placements
 from logicenveval.offline.sentences import (
     ACTIONS,
@@ -196,12 +203,6 @@ def _joined(words: list[str], a: Mention, b: Mention) -> bool:
 #: ones included ("a book, my alarm clock or my phone")
 LIST_WORDS = frozenset({"or", "and", "a", "an", "the", "some", "any", "either", "my", "your", "our", "his",
                         "her", "their"})
-
-
-#: words that open a verb's object: a one-word mention right before one is the verb ("stand it in
-#: the umbrella stand", "if you spot it there", "water the plant")
-VERB_OBJECTS = frozenset({"it", "them", "the", "a", "an", "this", "these", "those", "its", "their", "my",
-                          "your", "our"})
 
 
 def _verb_read(toks: list[tuple[str, int, int]], m: Mention) -> bool:

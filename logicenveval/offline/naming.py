@@ -25,7 +25,7 @@ from logicenveval.domain.catalog import Catalog, load_catalog, per_catalog
 from logicenveval.llm.base import ChatRequest
 from logicenveval.model.rooms import room_type_of
 from logicenveval.offline.handlers import handler
-from logicenveval.offline.lexicon import COLOR_WORDS, SPARE_WORDS, tokens, words_of
+from logicenveval.offline.lexicon import COLOR_WORDS, SPARE_WORDS, tokens, verb_at, words_of
 from logicenveval.offline.sentences import STATE_WORDS, expand
 
 
@@ -76,6 +76,8 @@ _ITEM_BREAK = re.compile(r"[,;:(]|\s-+\s|\u2013|\u2014")
 #: what ends a heading a list follows ("Bookshelf levels: top for novels, ...")
 _HEADING = re.compile(r":|\s-+\s|\u2013|\u2014")
 _SENTENCE_END = re.compile(r"[.!?]|\n")
+#: punctuation no name runs across (a hyphen inside a word does not count: "toy-box")
+_BREAK = re.compile(r"[,;:.!?()\u2013\u2014\n]|\s-|-\s")
 
 
 @dataclass
@@ -161,10 +163,12 @@ class _Reader:
     # -- noun phrases ----------------------------------------------------------------------
 
     def match(self, i: int) -> tuple[int, str | None]:
-        """(length, category) of the longest catalog name starting at word `i`."""
-        words = self.text.words
+        """(length, category) of the longest catalog name starting at word `i`, within one
+        stretch of words without punctuation ("the floor is wet, mop it" names no wet mop)."""
+        words, gaps = self.text.words, self.text.gaps
+        stretch = next((k for k in range(i + 1, len(words)) if _BREAK.search(gaps[k])), len(words)) - i
         return next(((n, self.phrases[tuple(words[i:i + n])])
-                     for n in range(min(self.longest, len(words) - i), 0, -1)
+                     for n in range(min(self.longest, len(words) - i, stretch), 0, -1)
                      if tuple(words[i:i + n]) in self.phrases), (1, None))
 
     def leads_noun(self, i: int, strict: bool = False) -> bool:
@@ -187,9 +191,24 @@ class _Reader:
         nxt = words[i + 1] if i + 1 < len(words) else ""
         if word in _PACKAGING and nxt == "of":
             return 1, None
-        if word in _ALSO_VERBS and not self.leads_noun(i, strict=True):
+        if self.verb(i):
             return 1, None
         return 1, self.bare_noun(i, category)
+
+    def verb(self, i: int) -> bool:
+        """Whether the one-word name at word `i` is a verb where it stands ("if you spot it",
+        "mop up the water", "you can use", "switch it off": `lexicon.verb_at`; a word of
+        `_ALSO_VERBS` names a thing only after a determiner)."""
+        if self.text.words[i] in _ALSO_VERBS and not self.leads_noun(i, strict=True):
+            return True
+        raw, gaps = self.text.raw, self.text.gaps
+        prev = raw[i - 1] if i > 0 and not gaps[i].strip() else ""
+        nxt: list[str] = []
+        for k in (i + 1, i + 2):  # the next words up to punctuation
+            if k >= len(raw) or gaps[k].strip():
+                break
+            nxt.append(raw[k])
+        return verb_at(raw[i], prev, nxt)
 
     def bare_noun(self, i: int, exact: str | None) -> str | None:
         """The kind a one-word noun means: the kind last named that it ends; else the kind whose
@@ -228,7 +247,7 @@ class _Reader:
         out = set(words)
         for i in range(len(words)):
             n, category = self.match(i)
-            if category is None or n == 1 and words[i] in _ALSO_VERBS and not self.leads_noun(i, strict=True):
+            if category is None or n == 1 and self.verb(i):
                 continue
             if n > 1 or len(set(self.heads.get(words[i], []))) == 1:
                 self.named.add(category)
