@@ -47,6 +47,8 @@ def spans(text: str) -> list[tuple[str, str, bool, bool]]:
 
 @pytest.mark.parametrize(("text", "role"), [
     ("There is a plate in the sink.", "scene"),
+    ("There's a dirty plate in the sink.", "scene"),  # a contracted existential (issue 47)
+    ("There're two towels on the rack.", "scene"),
     ("The box has two drawers.", "scene"),
     ("A book may be on the floor.", "uncertain"),
     ("The ball often ends up under the sofa.", "uncertain"),  # habitual: what may be so

@@ -1121,7 +1121,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 continue
             if f.goal or not (conditional or (f.modifier and cl.role not in ("scene",)
                                               # "The tablet is lying on the chair.": stated, kept
-                                              and not ((f.definite or _norm(cl)) and cl.role == "statement"))
+                                              and not ((f.definite or _norm(cl)) and cl.role == "statement")
+                                              # "A dirty mug is sitting on the desk": a thing the
+                                              # statement places outright is as it describes it
+                                              and not (cl.role == "statement"
+                                                       and f.subject in _placed_outright(brief, catalog, cl.text)))
                               or (cl.role == "else" and f.kind != "location")):
                 continue
             slot = (f.subject, f.kind, f.key if f.kind in ("state", "attr") else "")
@@ -1218,6 +1222,15 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     groups, group_roles = _group(factors)
     covered = set().union(*group_roles) if group_roles else set()
     return TaskAnalysis(sentences, clauses, factors, groups, group_roles, set(lex.roles) - covered)
+
+
+def _placed_outright(brief: Mapping[str, Any], catalog: Catalog, text: str) -> set[str]:
+    """The roles a plain statement places outright (`offline.placement`'s settled placements:
+    "A dirty mug is sitting on the desk", "There's a wet towel on the floor"; not "A dirty plate
+    on the table goes into the dishwasher", whose verb moves it): the statement asserts the
+    thing as it describes it, so the states its noun phrase gives it are facts, not factors."""
+    told = described_placements({**brief, "description": text}, catalog, kinds=frozenset({"settled"}))
+    return {f.split("(", 1)[1].split(",", 1)[0] for f in told if f.startswith(("on(", "inside(", "in_room("))}
 
 
 def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Catalog,

@@ -61,8 +61,8 @@ ELSE_CUES = ("otherwise", "else", "failing that", "if not", "if there is not", "
 #: words after "if" that make it a condition of availability ("if there are any")
 AVAILABILITY = frozenset({"available", "any", "present", "possible", "exist", "exists", "there"})
 #: how a sentence that sets the scene opens ("there is ...", "you are in ...")
-SCENE_START = re.compile(r"^\W*([a-z' ,]{0,50}?\bthere (is|are)\b(?! (no|not|maybe|possibly))|you are\b|we are\b)",
-                         re.I)
+SCENE_START = re.compile(r"^\W*([a-z' ,]{0,50}?\bthere(?: is| are|['\u2019]s|['\u2019]re)\b(?! (no|not|maybe|possibly))"
+                         r"|you are\b|we are\b|you['\u2019]re\b|we['\u2019]re\b)", re.I)
 
 #: subordinators that open a clause of time or concession, not a condition on the scene (for the
 #: placement reader: nothing in them is placed)
