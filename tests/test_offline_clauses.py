@@ -185,6 +185,24 @@ def test_a_verbless_list_after_a_goal_goes_on_with_it() -> None:
     assert not spans("The lamp is on - the door is shut.")[-1][3]  # a clause of its own: no link
 
 
+@pytest.mark.parametrize("text", [
+    "The pantry has two shelves: one for cans, one for jars.",  # the splitter helper's sentence
+    "The kitchen has a counter: a kettle and a toaster on it.",
+    "The hallway has two hooks - one for coats, one for hats.",
+])
+def test_a_possessive_before_a_colon_is_no_goal(text: str) -> None:
+    # "has" says where things must go only before "to" (`clauses.SEMI_MODALS`)
+    assert [(mood, goal) for _, mood, _, goal in spans(text)] == [("statement", False), ("statement", False)]
+
+
+@pytest.mark.parametrize("text", [
+    "The laptop has to go on the desk - the charger in the drawer.",
+    "The kettle needs to go on the counter: the toaster in the cabinet.",
+])
+def test_a_semi_modal_before_to_still_links_a_goal(text: str) -> None:
+    assert spans(text)[-1][3]
+
+
 @pytest.mark.parametrize(("text", "doubted"), [
     ("A book may be on the floor.", True), ("The ball keeps ending up under the sofa.", True),
     ("The book is on the floor.", False), ("Could you put the book on the shelf?", False),

@@ -378,8 +378,8 @@ def clause_spans(words: list[str], lo: int, hi: int, *, verbs: frozenset[str],
         # "... should go where it belongs - the book on the couch": a verbless part after a dash or a
         # colon goes on with the clause before it (here a goal), not a statement of its own
         follows_goal = (a > 0 and words[a - 1] in ("-", ":") and not set(body) & verbs and bool(out)
-                        and (out[-1].mood == "instruction" or bool(set(words[out[-1].start:out[-1].end])
-                                                                    & goal_words)))
+                        and (out[-1].mood == "instruction" or _says_goal(words[out[-1].start:out[-1].end],
+                                                                           goal_words)))
         first = next((w for w in body if w not in _LEAD_INS), "")
         if first in SUBORDINATORS or body[:2] == ["in", "case"] or question:
             mood = "condition"
@@ -392,6 +392,19 @@ def clause_spans(words: list[str], lo: int, hi: int, *, verbs: frozenset[str],
         # a habitual statement ("the ball keeps ending up on the floor") is doubted like "may"
         out.append(Span(a, b, mood, doubts(body) or habitual(body), follows_goal))
     return out
+
+
+#: verbs that say where a thing must go only before "to" ("it has to go on the desk", "the
+#: kettle needs to go on the counter"); before an object they are possessive or say a want ("the
+#: kitchen has a counter: a kettle on it" states where the kettle is)
+SEMI_MODALS = frozenset({"has", "have", "need", "needs", "want", "wants"})
+
+
+def _says_goal(words: list[str], goal_words: frozenset[str]) -> bool:
+    """Whether a clause's words say where things must go (`goal_words`, a semi-modal only
+    before "to": `SEMI_MODALS`)."""
+    return any(w in goal_words and (w not in SEMI_MODALS or words[k + 1:k + 2] == ["to"])
+               for k, w in enumerate(words))
 
 
 def doubts(words: list[str]) -> bool:
