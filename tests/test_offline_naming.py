@@ -85,6 +85,14 @@ def test_a_fuse_named_twice_is_one_fuse_unless_it_is_the_spare() -> None:
     assert _of("There's a spare fuse in the drawer; replace the fuse that is blown with it.",
                "fuse") in (["fuse", "spare_fuse"], [])  # one in use, one spare (when the catalog has fuses)
     assert _of("The light bulb in the lamp is blown. Swap the bulb.", "light_bulb") == ["light_bulb"]
+    # issue 47's form with kinds the catalog has: a spare and the one in use are two objects ...
+    assert _of("There is a spare bulb in the drawer; a bulb that is blown gets replaced with it.",
+               "light_bulb") == ["light_bulb", "spare_bulb"]
+    assert _of("We keep a spare towel in the wardrobe. A towel that is dirty goes in the hamper.",
+               "towel") == ["towel", "spare_towel"]
+    # ... and one thing named twice without "spare" is one object
+    assert _of("A towel may be on the floor. A towel that is dirty goes in the hamper.", "towel") == ["towel"]
+    assert _of("A mug is on the desk. The mug on the desk is dirty, so wash the mug.", "mug") == ["mug"]
 
 
 @pytest.mark.parametrize(("text", "category"), [
