@@ -267,3 +267,30 @@ def test_clause_spans_tile_the_range(fragments: list[str], data: st.DataObject) 
 def test_a_piece_is_a_tuple_of_text_cue_role() -> None:
     text, cue, role = Piece("the bin is full", "if", "condition")
     assert (text, cue, role) == ("the bin is full", "if", "condition")
+
+
+# ----- the two cuts agree (issue 47: one splitting rule for both readers) -----------------------
+
+@pytest.mark.parametrize(("text", "alternative"), [
+    ("Unless the toy box is full, put the toy in it, otherwise leave it on the shelf.", "leave it on the shelf"),
+    ("If the mug is dirty, put it in the sink, otherwise put it in the cabinet.", "put it in the cabinet"),
+    ("If the towel is wet, hang it on the rack, or else fold it.", "fold it"),
+])
+def test_an_alternative_after_a_comma_ends_the_consequence_in_both_cuts(text: str, alternative: str) -> None:
+    got = pieces(text)
+    assert got[-1][0] == alternative and got[-1][2] == "else"
+    assert alternative not in got[-2][0]
+    assert spans(text)[-1][0].endswith(alternative) and spans(text)[-1][1] != "statement"
+
+
+@pytest.mark.parametrize(("text", "heading"), [
+    ("Lamp left on: switch it off.", True),  # a participle is no finite verb
+    ("Towel lying on the floor: hang it up.", True),
+    ("Dog bowl empty: fill it.", True),
+    ("Towel lies on the floor: hang it up.", False),  # a finite verb makes a clause
+    ("The pantry has two shelves: one for cans, one for jars.", False),
+    ("The coat hangs on the hook: leave it there.", False),
+])
+def test_both_cuts_tell_a_verbless_heading_alike(text: str, heading: bool) -> None:
+    assert (pieces(text)[0][2] == "heading") is heading
+    assert (spans(text)[0][1] == "condition") is heading

@@ -30,7 +30,7 @@ from typing import NamedTuple
 
 from lemminflect import getAllLemmas
 
-from logicenveval.offline.lexicon import tokens
+from logicenveval.offline.lexicon import WORD, tokens
 from logicenveval.offline.sentences import ACTIONS, STATE_WORDS, expand, habitual
 
 # ---------------------------------------------------------------------------------------------
@@ -57,7 +57,9 @@ DISCOURSE = frozenset({"then", "and", "also", "so", "first", "second", "third", 
                        "lastly", "oh", "but", "now", "plus", "afterwards", "after", "that", "right", "okay",
                        "ok", "well"})
 #: cues that open the alternative of the condition before ("otherwise", "if not")
-ELSE_CUES = ("otherwise", "else", "failing that", "if not", "if there is not", "if there are not")
+ELSE_CUES = ("or else", "otherwise", "else", "failing that", "if not", "if there is not", "if there are not")
+#: the cues of `ELSE_CUES` that open an alternative wherever a clause starts (not "if not ...")
+ALTERNATIVES = ELSE_CUES[:4]
 #: words after "if" that make it a condition of availability ("if there are any")
 AVAILABILITY = frozenset({"available", "any", "present", "possible", "exist", "exists", "there"})
 #: how a sentence that sets the scene opens ("there is ...", "you are in ...")
@@ -158,6 +160,21 @@ CLAUSE_WORDS = frozenset({
     "will", "would", "could", "shall", "should", "may", "might", "must", "need", "needs",
     "keep", "keeps", "i", "you", "we", "he", "she", "it", "they", "someone", "somebody", "everyone",
     "there", "please", "let", "make", "get"})
+#: finite forms of the verbs of resting, moving, belonging and holding ("Towel lies on the floor:"
+#: is a clause, "Towel lying on the floor:" a heading): a participle is no finite verb
+FINITE_VERBS = frozenset({"lies", "lay", "sits", "sat", "stands", "stood", "rests", "hangs", "stays", "waits",
+                          "leans", "goes", "went", "belongs", "comes", "gets", "got", "contains", "holds",
+                          "includes", "houses", "lives", "sleeps", "stores", "keeps"})
+
+
+def verbless(words: list[str]) -> bool:
+    """Whether a segment has no finite verb, no subject and no imperative (`CLAUSE_WORDS`,
+    `FINITE_VERBS`, `imperative`): "Lamp left on", "Towel lying on the floor", "Dog bowl empty"
+    are verbless; "The pantry has two shelves", "Towel lies on the floor", "Put it away" are
+    not. Both readers tell a heading before a colon by it."""
+    return not set(words) & (CLAUSE_WORDS | FINITE_VERBS) and not imperative(words)
+
+
 #: words after a base-form verb that make it an imperative with its object ("clean it", "put
 #: the", "pick up"), not an adjective or noun opening a heading ("clean - ...", "water bowl ...")
 OBJECT_STARTS = ARTICLES | frozenset({"it", "them", "up", "out", "back", "away", "down", "off", "over",
@@ -184,8 +201,8 @@ def _heading(sentence: str) -> tuple[str, str, str] | None:
         return None
     head, rest = m.group("head").strip(" ,"), m.group("rest").strip()
     words = [w for w, _, _ in tokens(expand(head))]
-    if not words or len(words) > 10 or set(words) & CLAUSE_WORDS or imperative(words):
-        return None
+    if not words or len(words) > 10 or not verbless(WORD.findall(expand(head).lower())):
+        return None  # (the words as written: "lies" is a verb, its noun lemma "lie" is not)
     if _first_cue(head.lower(), CONDITIONAL) or any(w in UNCERTAIN for w in words) and words[0] not in PLACE_PREPS:
         return None  # (a place may carry a doubt: "On the bed, maybe: a book, a phone")
     mark = m.group("mark").strip()
@@ -236,7 +253,7 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
             r",\s*(?:and|but|while)\s+|\s+but\s+|;\s*|:\s+|\s+-\s+|\s+while\s+", sentence) if p and p.strip()]
         out: list[tuple[str, str | None, str]] = []
         for p in parts:
-            alternative = re.match(rf"^\W*({'|'.join(re.escape(c) for c in ELSE_CUES[:3])})\b", p.lower())
+            alternative = re.match(rf"^\W*({'|'.join(re.escape(c) for c in ALTERNATIVES)})\b", p.lower())
             if alternative is not None and out:
                 # "return it, close the vanity - else with the hand towel": a later part may be the
                 # alternative of what came before
@@ -300,10 +317,12 @@ def _subsplit(pieces: list[tuple[str, str | None, str]]) -> list[tuple[str, str 
     """`it is on, and close the wardrobe`: a condition ends at `, and`; what follows is an action."""
     out: list[tuple[str, str | None, str]] = []
     for text, cue, role in pieces:
-        splitter = r",\s*(?:and|but|then)\s+" + (r"|,\s*(?=the\s)" if role == "consequence" else "")
+        # ", otherwise ..." ends a consequence as it ends a clause span: the alternative is its own piece
+        splitter = r",\s*(?:and|but|then)\s+|,\s*(?=(?:otherwise|else|or else|failing that)\b)" + (
+            r"|,\s*(?=the\s)" if role == "consequence" else "")
         parts = [p for p in re.split(splitter, text) if p.strip()] or ([text] if role == "condition" else [])
         for i, part in enumerate(parts):
-            alternative = re.match(rf"^\W*({'|'.join(re.escape(c) for c in ELSE_CUES[:3])})\b", part.lower())
+            alternative = re.match(rf"^\W*({'|'.join(re.escape(c) for c in ALTERNATIVES)})\b", part.lower())
             if i > 0 and alternative is not None:  # "... if there are some, and otherwise the mop"
                 out.append((part[alternative.end():].strip(" ,"), alternative.group(1), "else"))
                 continue
@@ -374,7 +393,7 @@ def clause_spans(words: list[str], lo: int, hi: int, *, verbs: frozenset[str],
         question = (b < len(words) and words[b] == "?" or (b - 1 >= a and words[b - 1] == "?")) and not (
             body[0] in REQUESTS and body[1:2] == ["you"])
         # "Plate on the table: ..." (a verbless checklist item), not "The pantry has two shelves: ..."
-        heading = b < len(words) and words[b] == ":" and not set(body) & verbs
+        heading = b < len(words) and words[b] == ":" and verbless(body)
         # "... should go where it belongs - the book on the couch": a verbless part after a dash or a
         # colon goes on with the clause before it (here a goal), not a statement of its own
         follows_goal = (a > 0 and words[a - 1] in ("-", ":") and not set(body) & verbs and bool(out)
