@@ -319,3 +319,21 @@ def test_a_home_in_an_instruction_keeps_the_sentence_under_the_conditions_before
         roles = {"mirror": "mirror", thing: thing, "vanity": "bathroom_vanity", "hand_towel": "hand_towel"}
         by_id = {f.id: f for f in analyse(brief(text, roles), CATALOG).factors}
         assert by_id[f"{thing}_present"].context == [("mirror_dirty", frozenset({"yes"}))], by_id
+
+
+@pytest.mark.parametrize(("text", "roles", "rooms", "factor", "instruction"), [
+    # dev2 (a kitchenette checklist): an arrow after a question, past the question mark
+    ("[ ] Coffee machine: still on? -> switch OFF.", {"coffee_maker": "coffee_maker"}, ("kitchenette",),
+     "coffee_maker_toggled_on", "switch OFF."),
+    # written here: a study, an arrow between a verbless heading and its instruction
+    ("Desk lamp on? -> switch it off. Laptop on the floor -> put it on the desk.",
+     {"desk_lamp": "desk_lamp", "laptop": "laptop", "desk": "desk"}, ("study",),
+     "laptop_on_floor", "put it on the desk."),
+])
+def test_an_arrow_is_then(text: str, roles: dict[str, str], rooms: tuple[str, ...], factor: str,
+                          instruction: str) -> None:
+    """"still on? -> switch OFF.", "Laptop on the floor -> put it on the desk" (`ARROW`): what
+    follows the arrow is the instruction of the condition before it, in the same sentence (a
+    question mark before an arrow ends no sentence)."""
+    found = {f.id: f.consequences for f in analyse(brief(text, roles, rooms), CATALOG).factors}
+    assert instruction in found[factor], found

@@ -206,6 +206,9 @@ def test_a_thing_a_statement_places_outright_is_as_it_is_described(text: str, ro
      "state(plate, dirty)"),
     ("A dirty mug may be on the desk.", ("mug", "desk"), "state(mug, dirty)"),
     ("If a wet towel is on the floor, hang it on the towel rack.", ("towel", "towel_rack"), "state(towel, wet)"),
+    # a relative clause restricts a class the sentence gives a rule for
+    ("A clean mug that is wet stays on the drying rack.", ("mug", "drying_rack"), "state(mug, wet)"),
+    ("A towel which is dirty sits in the hamper until laundry day.", ("towel", "hamper"), "state(towel, dirty)"),
 ])
 def test_a_described_thing_a_statement_does_not_place_is_still_asked(text: str, roles: tuple[str, ...],
                                                                      state: str) -> None:
@@ -512,3 +515,121 @@ def test_a_place_the_task_moves_a_thing_to_keeps_asking_about_it(text: str, firs
     a = analyse(brief(text, "flashlight", "cardboard_box", "blanket", "armchair"), CATALOG)
     tree = nest([f for f in a.factors if f.id in (first, then)])
     assert tree["var"] == first and tree["branches"]["no"].get("var") == then, tree
+
+
+# ----- a distributive phrase, "if not <place>" -------------------------------------------------
+
+def _real_factors(description: str, rooms: list[str], **roles: str) -> dict[str, set[str]]:
+    from logicenveval.domain.catalog import load_catalog
+
+    b = {"id": "t", "description": description, "rooms": rooms,
+         "roles": {r: {"category": c, "attributes": {}} for r, c in roles.items()}}
+    return {f.id: set(f.values.values()) for f in analyse(b, load_catalog()).factors}
+
+
+@pytest.mark.parametrize(("text", "rooms", "roles", "conditions"), [
+    # dev2 (a kitchenette checklist)
+    ("[ ] 2 cups left out today: Dave's cup and Priya's cup. Each one: if dirty, wash it & put in "
+     "dish rack; otherwise leave it be.", ["kitchenette"],
+     {"dave_cup": "cup", "priya_cup": "cup", "dish_rack": "dish_rack"},
+     {"state(dave_cup, dirty)", "state(priya_cup, dirty)"}),
+    # written here: a bathroom, two towels, "each of them" opening the instruction
+    ("Two towels hang by the shower: Tom's towel and Anna's towel. Each of them: if it is wet, "
+     "put it in the laundry basket.", ["bathroom"],
+     {"tom_towel": "towel", "anna_towel": "towel", "laundry_basket": "laundry_basket"},
+     {"state(tom_towel, wet)", "state(anna_towel, wet)"}),
+])
+def test_each_one_distributes_a_condition_over_the_group_just_named(
+        text: str, rooms: list[str], roles: dict[str, str], conditions: set[str]) -> None:
+    """"Each one:", "each of them", "both": what the sentence then says of "it" is said of every
+    member of the group named last (the items of an enumeration), one factor each."""
+    asked = {v for values in _real_factors(text, rooms, **roles).values() for v in values}
+    assert conditions <= asked, asked
+
+
+@pytest.mark.parametrize(("text", "rooms", "roles", "condition"), [
+    # dev2 (a kitchenette checklist)
+    ("[ ] Knife - if not in the dish rack, put it in.", ["kitchenette"],
+     {"knife": "knife", "dish_rack": "dish_rack"}, "inside(knife, dish_rack)"),
+    # written here: a study, a heading with a colon
+    ("Stapler: if not on the desk, bring it back to the desk.", ["study"],
+     {"stapler": "stapler", "desk": "desk"}, "on(stapler, desk)"),
+])
+def test_if_not_before_a_place_is_a_negated_place_not_an_else(
+        text: str, rooms: list[str], roles: dict[str, str], condition: str) -> None:
+    """"if not in the dish rack, put it in" is elliptic for "if it is not in the dish rack": the
+    thing's place is asked; a bare "if not," stays the alternative of what came before."""
+    values = _real_factors(text, rooms, **roles)
+    assert any({condition, f"not {condition}"} <= v for v in values.values()), values
+
+
+@pytest.mark.parametrize(("text", "rooms", "roles", "condition"), [
+    # dev2 (a non-native speaker's message)
+    ("Her scarf maybe is somewhere on the floor; should you find it there, put it on the bed.",
+     ["guest_bedroom"], {"scarf": "scarf", "bed": "bed"}, "on(scarf, floor)"),
+    # written here: a garage, "if you spot them"
+    ("The gloves might be lying somewhere on the workbench. If you spot them there, hang them up.",
+     ["garage"], {"gloves": "gloves", "workbench": "workbench"}, "on(gloves, workbench)"),
+    # written here: a study, "in case you come across it"
+    ("The stapler may be somewhere on the floor; in case you come across it, put it in the drawer.",
+     ["study"], {"stapler": "stapler"}, "on(stapler, floor)"),
+])
+def test_coming_upon_a_thing_points_back_to_where_it_was_said_to_be(
+        text: str, rooms: list[str], roles: dict[str, str], condition: str) -> None:
+    """"should you find it there", "if you spot them there", "in case you come across it"
+    (`DISCOVERY`, with the inverted "should you"): no act of the reader's but the situation just
+    described ("is somewhere on the floor": `somewhere` is a vague place, not what is there)."""
+    values = _real_factors(text, rooms, **roles)
+    assert any({condition, f"not {condition}"} <= v for v in values.values()), values
+
+
+@pytest.mark.parametrize(("text", "rooms", "roles", "condition"), [
+    # dev2 (a message from an elderly relative)
+    ("The stapler lives on the desk too; if it has wandered off, bring it back.", ["library"],
+     {"stapler": "stapler", "desk": "desk"}, "on(stapler, desk)"),
+    # written here: a living room, "walked off" of a remote
+    ("The remote lives on the TV stand. If it has walked off again, put it back there.",
+     ["living_room"], {"remote_control": "remote_control", "tv_stand": "tv_stand"},
+     "on(remote_control, tv_stand)"),
+])
+def test_a_thing_that_has_wandered_off_is_away_from_its_home(
+        text: str, rooms: list[str], roles: dict[str, str], condition: str) -> None:
+    """"if it has wandered off", "walked off", "gone astray" (`ELSEWHERE`): the thing is not where
+    the text keeps it, so its home is asked (a home alone asks nothing)."""
+    values = _real_factors(text, rooms, **roles)
+    assert any({condition, f"not {condition}"} <= v for v in values.values()), values
+
+
+@pytest.mark.parametrize(("text", "rooms", "roles", "conditions"), [
+    # dev2 (a message from an elderly relative): an inverted "should either of them"
+    ("He keeps two folders, a blue one and a green one, for the bills and the letters "
+     "respectively. Should either of them have fallen on the floor, pick it up and put it back on "
+     "the desk.", ["library"], {"blue_folder": "folder", "green_folder": "folder", "desk": "desk"},
+     {"on(blue_folder, floor)", "on(green_folder, floor)"}),
+    # written here: a bathroom, the same inversion with a state
+    ("Two towels hang in the bathroom: a white towel and a green towel. Should either of them be "
+     "wet, hang it on the rack.", ["bathroom"],
+     {"white_towel": "towel", "green_towel": "towel", "towel_rack": "towel_rack"},
+     {"state(white_towel, wet)", "state(green_towel, wet)"}),
+    # written here: "if either of them"
+    ("Two towels hang in the bathroom: a white towel and a green towel. If either of them is wet, "
+     "hang it on the rack.", ["bathroom"],
+     {"white_towel": "towel", "green_towel": "towel", "towel_rack": "towel_rack"},
+     {"state(white_towel, wet)", "state(green_towel, wet)"}),
+])
+def test_either_of_them_asks_each_member_of_the_group(
+        text: str, rooms: list[str], roles: dict[str, str], conditions: set[str]) -> None:
+    """"either of them", "any of these", "one of the two" (`ANY_OF`, and "should either ..." as an
+    inverted conditional): the condition is asked of each member of the group named last."""
+    asked = {v for values in _real_factors(text, rooms, **roles).values() for v in values}
+    assert conditions <= asked, asked
+
+
+def test_a_time_phrase_distributes_nothing() -> None:
+    """"Every evening, ..." opens an instruction with a time, not a distribution: a condition on
+    one member of a group is asked of that member only."""
+    text = ("Two cups are left out: Dave's cup and Priya's cup. Every evening, if Dave's cup is "
+            "dirty, wash it.")
+    asked = {v for values in _real_factors(text, ["kitchen"], dave_cup="cup", priya_cup="cup").values()
+             for v in values}
+    assert "state(dave_cup, dirty)" in asked and "state(priya_cup, dirty)" not in asked, asked

@@ -283,3 +283,24 @@ def test_an_indefinite_set_against_any_other_thing_is_a_kind_of_it(description: 
     assert factor in [f.values for f in factors], [f.values for f in factors]
     plain = analyse(_brief("The document on the desk goes on the bookshelf.", ["study"], **roles), CATALOG)
     assert not [f for f in plain.factors if f.kind == "attr"]
+
+
+@pytest.mark.parametrize(("description", "rooms", "roles", "standing"), [
+    # dev2 (a kitchenette checklist): the coffee machine is no item of the dish rack
+    ("Coffee machine: still on? -> switch OFF. Knife - if not in the dish rack, put it in.",
+     ["kitchenette"], {"coffee_maker": "coffee_maker", "dish_rack": "dish_rack", "knife": "knife"},
+     "dish_rack"),
+    # written here: a toaster is no item of the dish rack either, nor a bowl
+    ("Unplug the toaster if it is on. Rinse the bowl and leave it to dry in the drainer.",
+     ["kitchen"], {"toaster": "toaster", "dish_rack": "dish_rack", "bowl": "bowl"}, "dish_rack"),
+])
+def test_an_appliance_that_stands_on_a_counter_holds_nothing_by_default(
+        description: str, rooms: list[str], roles: dict[str, str], standing: str) -> None:
+    """A thing that itself rests on a surface (its catalog placement is `surface`: a dish rack, a
+    microwave) is no default surface for the other objects: stacking a coffee machine and a
+    cutting board on a dish rack left no layout. A stated placement still puts a thing on it."""
+    choice = realise(_brief(description, rooms, **roles), [], CATALOG)
+    assert all(c.placement not in (f"on:{standing}", f"inside:{standing}") for c in choice.values())
+    item, how = list(roles)[-1], "on" if CATALOG.categories[standing].surface else "inside"
+    placed = realise(_brief(description, rooms, **roles), [f"{how}({item}, {standing})"], CATALOG)
+    assert placed[item].placement == f"{how}:{standing}"

@@ -23,6 +23,7 @@ from lemminflect import getAllLemmas
 
 from logicenveval.domain.catalog import Catalog, Category, load_catalog
 from logicenveval.offline.clauses import (
+    ANAPHORIC,
     ARTICLES,
     AVAILABILITY,
     CLAUSE_WORDS,
@@ -60,7 +61,7 @@ from logicenveval.scene.compat import can_hold
 DESCRIPTIVE = frozenset(
     ["is", "are", "was", "were", "be", "been", "being", "am", "seem", "seems", "seemed", "look", "looks", "appear", "appears", "still", "already", "currently", "left", "lying", "lie", "lies", "sitting", "sit", "sits", "standing", "stand", "stands", "kept", "found", "dropped", "fallen", "ended", "up", "have", "has", "had", "got", "gotten", "remain", "remains", "remained", "now", "itself", "themselves", "just", "somehow", "accidentally", "again", "there", "here", "turned", "switched", "scattered", "sitting", "lays", "fell", "slipped", "rolled", "may", "might", "could", "possibly", "perhaps", "maybe", "probably", "sometimes", "will",
      "also", "too", "even", "lives", "live", "stays", "stay", "keep", "keeps", "rolling", "falling",
-     "ending"]
+     "ending", "somewhere"]
 )
 #: verbs after a subject that announce where it must go (a goal, not a condition)
 MOTION = frozenset(
@@ -91,7 +92,9 @@ DEFINITE = frozenset({"the", "my", "our", "your", "his", "her", "its", "their", 
 #: prepositions of where a thing is now (not where it goes: "into", "onto", "to")
 WHERE_PREPS = frozenset({"on", "in", "inside", "by", "near", "under"})
 INDEFINITE = frozenset({"a", "an", "any", "every", "each", "some", "no"})
-ELSEWHERE = ("anywhere else", "elsewhere", "somewhere else", "any other place", "not there")
+ELSEWHERE = ("anywhere else", "elsewhere", "somewhere else", "any other place", "not there",
+             # a thing that has left its place on its own: "if it has wandered off, bring it back"
+             "wandered off", "wandered away", "walked off", "walked away", "gone astray", "strayed")
 #: verbs whose "from" names a source ("fill the bowl from the bag"), not a location
 #: verb particles between an object and its place ("rolled out onto the floor")
 PARTICLES = frozenset({"out", "down", "over", "around", "away", "about"})
@@ -901,9 +904,21 @@ def _norm(clause: Clause) -> bool:
     return bool({w for w, _, _ in tokens(clause.text)} & NORMS)
 
 
+#: verbs of coming upon a thing: "should you find it there", "if you spot them", "in case you see
+#: it" say no more than "if it is there" (what was just said of it), not what someone does
+DISCOVERY = frozenset({"find", "found", "spot", "spotted", "see", "saw", "seen", "notice", "noticed", "discover",
+                       "discovered", "come", "came", "across", "upon"})
+
+
 def _anaphoric(text: str, facts: list[Fact]) -> bool:
-    """A condition with no fact of its own whose words only point back ("if it is not" too)."""
-    return not any(not f.goal for f in facts) and points_back(text)
+    """A condition with no fact of its own whose words only point back ("if it is not" too; "should
+    you find it there": an agent coming upon the thing, `DISCOVERY`)."""
+    if any(not f.goal for f in facts):
+        return False
+    words = {w for w, _, _ in tokens(expand(text))}
+    if words & DISCOVERY and words & AGENTS:
+        return words <= ANAPHORIC | {"not"} | DISCOVERY | AGENTS | {"there", "here"}
+    return points_back(text)
 
 
 def _antecedent(clauses: list[Clause], sentence: int, pointing: set[int]) -> tuple[list[Fact], tuple[str, ...]]:
@@ -1002,11 +1017,54 @@ def _capabilities(brief: Mapping[str, Any], catalog: Catalog) -> dict[str, froze
     return out
 
 
+#: a phrase that distributes what follows over the members of a group just named ("2 cups ...:
+#: Dave's cup and Priya's cup. Each one: if dirty, wash it"; "Both of them: if wet, hang them up")
+#: (the phrase alone, before its instruction: "Every evening, ..." distributes nothing)
+DISTRIBUTIVE = re.compile(r"^\W*(?:for\s+)?(?:each|every|both)(?:\s+(?:one|ones|of\s+them|of\s+these|of\s+those))?"
+                          r"(?=\W*$|\s*[:,;\-\u2013])", re.I)
+
+
+#: "either of them", "any of these", "one of the two": a condition on whichever member of the group
+#: just named, asked of each of them as "each one" is
+ANY_OF = re.compile(r"\b(?:either|neither|any|one|each|both|all)\s+of\s+(?:them|these|those|the\s+two)\b", re.I)
+
+
+def _members(clauses: list[Clause], kinds: Mapping[str, str], sentence: int) -> tuple[str, ...]:
+    """The roles of the group last named: the latest clause of this sentence or the one before
+    naming two or more roles of one category (the items of an enumeration)."""
+    for cl in reversed(clauses):
+        if cl.sentence < sentence - 1:
+            break
+        by_kind: dict[str, list[str]] = {}
+        for r in cl.mentions:
+            if r in kinds:
+                by_kind.setdefault(kinds[r], []).append(r)
+        group = max(by_kind.values(), key=len, default=[])
+        if len(group) > 1:
+            return tuple(group)
+    return ()
+
+
+def _distributed(facts: tuple[Fact, ...], members: tuple[str, ...]) -> tuple[Fact, ...]:
+    """`facts` said of one member of a group, said of every member (a pronoun of a distributive
+    clause resolves to one of them)."""
+    out = list(facts)
+    for f in facts:
+        if f.subject not in members:
+            continue
+        for other in members:
+            if other != f.subject:
+                swap = re.compile(rf"\b{re.escape(f.subject)}\b")
+                out.append(replace(f, subject=other, condition=swap.sub(other, f.condition)))
+    return tuple(dict.fromkeys(out))
+
+
 def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     lex = Lexicon.build(brief, catalog)
     kinds = {name: cat for name, role in dict(brief.get("roles") or {}).items()
              if (cat := catalog.get(str(role.get("category", "")))) is not None}
     reader = _Reader(lex, _capabilities(brief, catalog), kinds)
+    categories = {name: str(role.get("category", "")) for name, role in dict(brief.get("roles") or {}).items()}
     sentences = split_sentences(str(brief["description"]))
     clauses: list[Clause] = []
     grammatical = 0  # pieces split at ':' or ';' still belong to one sentence for grouping
@@ -1014,8 +1072,12 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     named = -1  # the sentence whose heading named an object ("Keys - on the floor: ...")
     place: tuple[int, str] = (-1, "")  # a place heading ("On the floor: ...") and its sentence
     pointing: set[int] = set()  # clauses that point back ("if it isn't"): never an antecedent
+    #: (sentence, members) of a distributive phrase: its sentence's facts hold for each member
+    spread: tuple[int, tuple[str, ...]] = (-1, ())
     for si, sent in enumerate(sentences):
         for text, cue, role in split_clauses(sent):
+            if (DISTRIBUTIVE.match(text) or ANY_OF.search(text)) and (members := _members(clauses, categories, grammatical)):
+                spread = (grammatical, members)
             if role == "heading":
                 if _place_heading(reader, text) and named != grammatical:
                     # "On the floor: a dirty mark, and possibly a book": the place of what follows
@@ -1023,6 +1085,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                     clauses.append(Clause(text, grammatical, cue, "statement", (), ()))
                     continue
                 facts, names = _read_heading(reader, text)
+                if spread[0] == grammatical:
+                    facts = list(_distributed(tuple(facts), spread[1]))
                 role = "condition" if any(not f.goal and not f.derived for f in facts) else "statement"
                 headed = grammatical if role == "condition" else headed
                 named = grammatical if names else named
@@ -1064,6 +1128,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # floor": in a condition a moved object's place is the situation, not a goal; so
                 # in a guess at what has happened ("wet wipes may have been put on the table")
                 facts = [replace(f, goal=False) for f in facts]
+            if spread[0] == grammatical:
+                facts = list(_distributed(tuple(facts), spread[1]))
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
         if sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences):
             grammatical += 1
@@ -1224,11 +1290,19 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     return TaskAnalysis(sentences, clauses, factors, groups, group_roles, set(lex.roles) - covered)
 
 
+#: relative pronouns: a noun phrase with a relative clause ("a plate that is wet") names a class
+#: the sentence gives a rule for, not a thing it places
+RESTRICTIVE = frozenset({"that", "which", "who", "whichever", "whatever"})
+
+
 def _placed_outright(brief: Mapping[str, Any], catalog: Catalog, text: str) -> set[str]:
     """The roles a plain statement places outright (`offline.placement`'s settled placements:
     "A dirty mug is sitting on the desk", "There's a wet towel on the floor"; not "A dirty plate
     on the table goes into the dishwasher", whose verb moves it): the statement asserts the
-    thing as it describes it, so the states its noun phrase gives it are facts, not factors."""
+    thing as it describes it, so the states its noun phrase gives it are facts, not factors. A
+    sentence with a relative clause (`RESTRICTIVE`) gives a rule for a class, and places nothing."""
+    if {w for w, _, _ in tokens(text)} & RESTRICTIVE:
+        return set()  # "A clean plate that is wet stays on the table": a relative clause restricts, a rule
     told = described_placements({**brief, "description": text}, catalog, kinds=frozenset({"settled"}))
     return {f.split("(", 1)[1].split(",", 1)[0] for f in told if f.startswith(("on(", "inside(", "in_room("))}
 

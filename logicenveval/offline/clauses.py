@@ -31,7 +31,7 @@ from typing import NamedTuple
 from lemminflect import getAllLemmas
 
 from logicenveval.offline.lexicon import WORD, tokens
-from logicenveval.offline.sentences import ACTIONS, STATE_WORDS, expand, habitual
+from logicenveval.offline.sentences import ACTIONS, ARROW, STATE_WORDS, expand, habitual
 
 # ---------------------------------------------------------------------------------------------
 # Word tables (data). Each names a class of words, never a task's phrase or object.
@@ -142,7 +142,7 @@ def _first_cue(low: str, cues: tuple[str, ...]) -> tuple[int, str] | None:
         if cue in ("once", "while"):  # a conjunction only before its clause: not "a once-over"
             pattern = rf"(?<![a-z-]){cue}(?=\s+[a-z])"
         if cue == "should":  # only the inverted conditional: "should the hamper be full, ..."
-            pattern = r"(?:^|[,;:(-]\s*|\b(?:and|or|but)\s+)should\b(?=\s+(?:the|there|a|an|it|they|any|one|your|my|our|its|their|this|that|these|those|some|no)\b)"
+            pattern = r"(?:^|[,;:(-]\s*|\b(?:and|or|but)\s+)should\b(?=\s+(?:the|there|a|an|it|they|any|one|your|my|our|its|their|this|that|these|those|some|no|you|we|either|neither|each|both)\b)"
         m = re.search(pattern, low)
         if m is None:
             continue
@@ -229,6 +229,8 @@ def _state_places(instruction: str) -> list[tuple[str, str | None, str]]:
 def _split(sentence: str) -> list[tuple[str, str | None, str]]:
     """(text, cue, role) pieces of a sentence, recursively for chained conditionals; a verbless
     heading (`_heading`) is a `heading` piece, its instruction read after it."""
+    # "still on? -> switch OFF.", "Laptop on the floor -> put it on the desk": the arrow is "then"
+    sentence = ARROW.sub(" - ", re.sub(rf"([?:!]){ARROW.pattern}", r"\1 ", sentence))
     states = _state_places(sentence)
     if states:
         return states  # "Bath towel on the floor: wet to the basket, dry to the rack"
@@ -244,6 +246,10 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
         if m:
             if cue.startswith("if there"):
                 return [(sentence, cue, "condition")]
+            if cue == "if not" and re.match(r"\s*(?:already\s+|yet\s+)?(?:on|in|inside|at|by|under|near)\b", low[m.end():]):
+                # "Knife - if not in the dish rack, put it in": a negated place of the thing spoken
+                # of, elliptic for "if it is not in the dish rack" (a bare "if not," is the else)
+                return _split(f"if it is not{sentence[m.end():]}")
             return [(sentence[m.end():].strip(" ,"), cue, "else")]
     best = _first_cue(low, CONDITIONAL)
     if best is None and low.rstrip().endswith("?"):

@@ -24,6 +24,9 @@ SPARE_WORDS = frozenset({"spare", "extra", "backup", "replacement"})
 #: bag"), the one in use where the text opens with it ("a fresh diaper is lying on the changing
 #: table; if there isn't one, fetch a spare"): the naming step's rule (`offline.naming`)
 FRESH_WORDS = frozenset({"fresh", "new"})
+#: head nouns of a control named for what it controls ("light switch"): "the light is on" is said
+#: of the switch, the one thing of the scene whose state it is (`Lexicon.build`, the naming step)
+CONTROL_HEADS = frozenset({"switch"})
 
 #: words that open a verb's object: a one-word name right before one is the verb ("stand it in
 #: the umbrella stand", "if you spot it there", "water the plant", "wipe the mirror")
@@ -175,6 +178,10 @@ class Lexicon:
         for head, names in heads.items():
             if head not in lex.phrases:
                 lex.phrases[head] = set(names)  # ambiguous heads are resolved by recency
+        for name, role in roles.items():
+            phrase = words_of(role["category"])
+            if len(phrase) == 2 and phrase[1] in CONTROL_HEADS and phrase[:1] not in lex.phrases:
+                lex.phrases[phrase[:1]] = {name}  # "the light" of a light switch
         text = [w for w, _, _ in tokens(str(brief.get("description", "")))]
         for spare in (r for r in roles if _spare(r)):
             kin = [p for p, names in lex.phrases.items() if spare in names and len(names) > 1]

@@ -25,7 +25,14 @@ from logicenveval.domain.catalog import Catalog, load_catalog, per_catalog
 from logicenveval.llm.base import ChatRequest
 from logicenveval.model.rooms import room_type_of
 from logicenveval.offline.handlers import handler
-from logicenveval.offline.lexicon import COLOR_WORDS, SPARE_WORDS, tokens, verb_at, words_of
+from logicenveval.offline.lexicon import (
+    COLOR_WORDS,
+    CONTROL_HEADS,
+    SPARE_WORDS,
+    tokens,
+    verb_at,
+    words_of,
+)
 from logicenveval.offline.sentences import STATE_WORDS, expand
 
 
@@ -46,7 +53,7 @@ _NOUN_LEADS = frozenset({"with", "and", "or", "plus"})
 #: prepositions: an item holding one is a clause, not a noun phrase ("are in the kitchen")
 _PREPOSITIONS = frozenset({"on", "onto", "in", "into", "inside", "from", "by", "near", "under", "of",
                            "to", "at", "beside", "behind", "with"})
-_COUNTS = {"two": 2, "three": 3, "four": 4, "five": 5, "both": 2}
+_COUNTS = {"two": 2, "three": 3, "four": 4, "five": 5, "both": 2, "2": 2, "3": 3, "4": 4, "5": 5}
 #: "a fresh bag": the spare when the kind was already named in use ("the full bag"), else the
 #: one in use ("a fresh diaper is lying on the changing table")
 _FRESH = frozenset({"fresh", "new"})
@@ -61,6 +68,9 @@ _ALSO_VERBS = frozenset({"can", "throw", "stand", "switch", "set", "press", "iro
 KIND_ATTRIBUTES = ("kind",)
 #: words too common to say which of several categories a bare noun means
 _NOT_CONTEXT = frozenset({"floor", "wall", "ceiling", "room"})
+#: "that is a ...", "it was a ...": a predicate noun of a thing already named (`predicate_noun`)
+_POINTERS = frozenset({"that", "it", "this", "which"})
+_COPULAS = frozenset({"is", "was"})
 #: words naming a part of a piece of furniture that holds things, and the kind each part is
 _PARTS = {"level": "shelf", "tier": "shelf", "shelf": "shelf"}
 #: words that rank parts or say which one ("on the next", "the top one")
@@ -223,6 +233,10 @@ class _Reader:
         named = [c for c in reversed(self.recent) if c in options and word in self.used.get(c, ())]
         if named:
             return named[0]
+        control = [c for c in self.recent if words_of(c) == (word, *words_of(c)[1:])
+                   and len(words_of(c)) == 2 and words_of(c)[1] in CONTROL_HEADS]
+        if control and exact is None:
+            return control[-1]  # "Light switch: if the light is on": the light the switch works
         if exact is None and (not options or not self.leads_noun(i)):
             return None
         prev = self.text.words[i - 1] if i > 0 else ""
@@ -309,6 +323,8 @@ class _Reader:
                 start, end = self.text.sentence_start(i), self.text.sentence_end(i)
             else:
                 start, end = j + n, self.text.sentence_end(j + n - 1)
+                if count:
+                    start = self.after_heading(start, end)
             found = self.read_items(category, start, end, count)
             if len(found) >= max(2, count):
                 self.kinds.setdefault(category, _Kind()).generic = True
@@ -318,6 +334,14 @@ class _Reader:
                 i = end
                 continue
             i += 1
+
+    def after_heading(self, start: int, end: int) -> int:
+        """Where the items of a counted list start: after the colon or dash that ends its heading
+        ("2 cups left out today: Dave's cup and Priya's cup", "three bins by the back door - one
+        for paper, ..."): what stands between the counted noun and the colon says more of the
+        whole group, no item of it. Without such a break, right after the noun."""
+        colon = next((k for k in range(start, end) if _HEADING.search(self.text.gaps[k])), None)
+        return start if colon is None or colon == start else colon
 
     def group_kind(self, j: int) -> tuple[int, str | None]:
         """The kind of the noun phrase at word `j` that may head a list: a catalog kind, or a part
@@ -399,17 +423,37 @@ class _Reader:
             out.append(("_".join([*parts, head]), {}, read))
         return out
 
+    def predicate_noun(self, i: int) -> bool:
+        """Whether the noun phrase at word `i` is the predicate of "that is a ...", "it is a ...",
+        "this was a ..." said of a thing the sentence already named ("The essay collection is on
+        the desk, that's a library book"): it says what that thing is, it names no other object."""
+        words = self.text.words
+        k = i - 1
+        while k >= 0 and i - k <= 3 and words[k] not in ("a", "an"):
+            k -= 1
+        if k < 2 or words[k] not in ("a", "an") or words[k - 1] not in _COPULAS or words[k - 2] not in _POINTERS:
+            return False
+        start = self.text.sentence_start(i)
+        return any(self.kind_at(j)[1] is not None for j in range(start, k - 2))
+
     def kind_value(self, i: int, n: int, prev: str) -> bool:
-        """Whether the bare plural at word `i` (`n` words: "dolls", "toy cars") is a class of a
-        kind named before it, one of the values of its `kind` attribute (`KIND_ATTRIBUTES`; a toy
+        """Whether the bare plural at word `i` (`n` words: "dolls", "toy cars"), or an indefinite
+        singular set against "any other <kind>", is a class of a kind named before it, one of the values of its `kind` attribute (`KIND_ATTRIBUTES`; a toy
         is a doll, a car, a ball ...): what a distribution sorts ("dolls in the red box, toy cars
         in the blue box, everything else in the green one"), not an object of its own."""
         words = self.text.words
-        if self.text.raw[i + n - 1] == words[i + n - 1] or prev in _DETERMINERS or prev in _COUNTS:
-            return False
         head = words[i + n - 1]
-        return any(head in self.catalog.categories[c].attributes.get(key, ())
-                   for c in self.recent for key in KIND_ATTRIBUTES)
+        kinds = [c for c in self.recent for key in KIND_ATTRIBUTES
+                 if head in self.catalog.categories[c].attributes.get(key, ())]
+        if prev in ("a", "an") and self.text.raw[i + n - 1] == head:
+            # "a doll into the red toy box; ... any other toy into the green one": an indefinite
+            # one set against "other <kind>" in its sentence is a class of that kind too
+            said = words[self.text.sentence_start(i):self.text.sentence_end(i)]
+            return any(w == "other" and set(said[k + 1:k + 3]) & set(words_of(c))
+                       for c in kinds for k, w in enumerate(said))
+        if self.text.raw[i + n - 1] == head or prev in _DETERMINERS or prev in _COUNTS:
+            return False
+        return bool(kinds)
 
     def own_kind(self, a: int, b: int, head: str) -> bool:
         """Whether words `a`..`b` of an item name one thing of a kind of its own, with another
@@ -484,6 +528,9 @@ class _Reader:
                 i += 1
                 continue
             n, category = self.compound(i, n, category)
+            if self.predicate_noun(i):
+                i += n  # "The essay collection is on the desk, that's a library book"
+                continue
             if self.kind_value(i, n, prev):
                 i += n  # "a toy on the floor ... dolls in the red box, toy cars in the blue box"
                 continue

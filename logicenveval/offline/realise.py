@@ -188,8 +188,11 @@ def _places(choice: dict[str, RoleChoice], roles: dict[str, Any], catalog: Catal
             ocat = catalog.get(roles[other]["category"])
             if other == r or ocat is None or not oc.present or oc.room != c.room:
                 continue
-            if oc.placement and oc.placement.startswith(("on:", "inside:")):
-                continue  # no stacking on objects that themselves rest on others
+            if oc.placement and oc.placement.startswith(("on:", "inside:")) or ocat.placement[0] == "surface":
+                # no stacking on objects that themselves rest on others, placed yet or not: a
+                # dish rack or a microwave stands on a counter, it is no counter for the coffee
+                # machine (only a fact or the text puts a thing on or in one)
+                continue
             if ocat.surface and not ocat.pickable:
                 holders.append(f"on:{other}")
             elif ocat.container and not ocat.openable and not ocat.pickable:

@@ -74,7 +74,10 @@ _CONTRACTIONS = [
     (r"\b(i|you|we|they)'ve\b", r"\1 have"), (r"\b(i|you|we|they|it)'ll\b", r"\1 will"),
     (r"\b(\w+)s'(\s)", r"\1s\2"), (r"\b(\w+)'s\b", r"\1"),
 ]
-_SENT = re.compile(r"(?<=[.!?;:])\s+|\n+|(?<=\))\s+(?=[A-Z])")
+#: an arrow says "then": what follows it is the instruction of what came before ("Coffee machine:
+#: still on? -> switch OFF.", "Lamp on => off"), never a sentence of its own
+ARROW = re.compile(r"\s*(?:->|=>|\u2192)\s*")
+_SENT = re.compile(r"(?<=[.!?;:])\s+(?!->|=>|\u2192)|\n+|(?<=\))\s+(?=[A-Z])")
 _FULL_STOP = re.compile(r"(?<=[.!])\s+|\n+")
 _ABBREV = re.compile(r"\b(e\.g|i\.e|etc|approx|vs)\.", re.I)
 
