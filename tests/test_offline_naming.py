@@ -362,3 +362,21 @@ def test_an_indefinite_one_set_against_any_other_kind_is_a_class(text: str, room
     assert not absent & set(named), named
     assert {"doll", "toy_car"} <= set(_named("A doll and a toy car are on the floor; put the toy away.",
                                              ("kids_room",)))
+
+
+@pytest.mark.parametrize(("word", "lemma"), [("cds", "cd"), ("tvs", "tv"), ("pcs", "pc"),
+                                             ("was", "was"), ("has", "has"), ("its", "its"), ("bus", "bus")])
+def test_the_plural_of_a_two_letter_abbreviation_is_singularised(word: str, lemma: str) -> None:
+    assert singular(word) == lemma
+
+
+@pytest.mark.parametrize(("text", "rooms", "category", "names"), [
+    ("Bookshelf levels: novels, essays, other books respectively.", ("bedroom",), "wall_shelf",
+     ["novel_shelf", "essay_shelf", "other_shelf"]),
+    ("Pantry shelves: tins, jars respectively.", ("pantry",), "pantry_shelf", ["tin_shelf", "jar_shelf"]),
+    ("The study has a bookcase. Its tiers: novels, essays, magazines respectively.", ("study",), "wall_shelf",
+     ["novel_shelf", "essay_shelf", "magazine_shelf"]),
+])
+def test_respectively_counts_the_parts_of_a_list_without_a_count(text: str, rooms: tuple[str, ...], category: str,
+                                                                 names: list[str]) -> None:
+    assert _of(text, category, rooms) == names

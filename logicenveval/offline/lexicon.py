@@ -48,8 +48,13 @@ COLOR_WORDS = frozenset(
 def singular(word: str) -> str:
     """The noun lemma of `word`: lemminflect's dictionary (irregular plurals: shelves, knives,
     children; of two, the one that is not a verb's: leaves -> leaf), then its rules for a word it does not know that ends in -s ("tins"). Words of
-    three letters or fewer ("was", "has", "its") stay as written."""
+    three letters or fewer ("was", "has", "its") stay as written, but for the plural of a
+    two-letter abbreviation ("cds", "tvs")."""
     if len(word) <= 3:
+        # "cds", "tvs", "pcs": the plural of an abbreviation lemminflect does not know as a word
+        # (it knows "was", "has", "its", "bus", "yes" and they stay as written)
+        if len(word) == 3 and word.endswith("s") and word[1] != "s" and not getAllLemmas(word):
+            return word[:-1]
         return word
     known = getAllLemmas(word, upos="NOUN").get("NOUN")
     if known:

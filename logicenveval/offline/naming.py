@@ -325,6 +325,10 @@ class _Reader:
                 start, end = j + n, self.text.sentence_end(j + n - 1)
                 if count:
                     start = self.after_heading(start, end)
+            if not count and "respectively" in words[start:end]:
+                # "Bookshelf levels: novels, essays, other books respectively": as many parts as
+                # items, as a count would say
+                count = len(self.text.items(start, end))
             found = self.read_items(category, start, end, count)
             if len(found) >= max(2, count):
                 self.kinds.setdefault(category, _Kind()).generic = True
