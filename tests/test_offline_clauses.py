@@ -22,7 +22,7 @@ from logicenveval.offline.clauses import (
     points_back,
     split_clauses,
 )
-from logicenveval.offline.sentences import split_sentences
+from logicenveval.offline.sentences import expand, split_sentences
 
 #: a small verb lexicon of a reader (the placement reader passes its own `VERBS`)
 VERBS = frozenset({"is", "are", "has", "have", "goes", "go", "should", "lies", "be"})
@@ -294,3 +294,23 @@ def test_an_alternative_after_a_comma_ends_the_consequence_in_both_cuts(text: st
 def test_both_cuts_tell_a_verbless_heading_alike(text: str, heading: bool) -> None:
     assert (pieces(text)[0][2] == "heading") is heading
     assert (spans(text)[0][1] == "condition") is heading
+
+
+@pytest.mark.parametrize(("text", "first", "second"), [
+    ("There's a mug on the desk and you might find a plate on the chair.", "scene", "uncertain"),
+    ("theres a dirty mark on the floor and u may find a pack of wet wipes on the table", "scene", "uncertain"),
+    ("The lamp is on and we may have left the fan running.", "statement", "uncertain"),
+])
+def test_and_before_a_subject_starts_a_clause_in_both_cuts(text: str, first: str, second: str) -> None:
+    assert [r for _, _, r in pieces(text)] == [first, second]
+    assert len(spans(text)) == 2
+
+
+@pytest.mark.parametrize(("text", "expanded"), [
+    ("theres a mark on the floor", "there is a mark on the floor"),
+    ("if there arent any wipes, dont worry", "if there are not any wipes, do not worry"),
+    ("u can leave it, thats fine", "you can leave it, that is fine"),
+    ("its lid is shut and the dog wont mind", "its lid is shut and the dog wont mind"),  # words left alone
+])
+def test_the_texting_register_s_contractions_are_spelled_out(text: str, expanded: str) -> None:
+    assert expand(text) == expanded

@@ -63,7 +63,7 @@ ALTERNATIVES = ELSE_CUES[:4]
 #: words after "if" that make it a condition of availability ("if there are any")
 AVAILABILITY = frozenset({"available", "any", "present", "possible", "exist", "exists", "there"})
 #: how a sentence that sets the scene opens ("there is ...", "you are in ...")
-SCENE_START = re.compile(r"^\W*([a-z' ,]{0,50}?\bthere(?: is| are|['\u2019]s|['\u2019]re)\b(?! (no|not|maybe|possibly))"
+SCENE_START = re.compile(r"^\W*([a-z' ,]{0,50}?\bthere(?: is| are|['\u2019]?s|['\u2019]re)\b(?! (no|not|maybe|possibly))"
                          r"|you are\b|we are\b|you['\u2019]re\b|we['\u2019]re\b)", re.I)
 
 #: subordinators that open a clause of time or concession, not a condition on the scene (for the
@@ -74,9 +74,10 @@ TIME_CUES = frozenset({"until", "before", "after", "though", "although"})
 SUBORDINATORS = frozenset(c for c in CONDITIONAL + ELSE_CUES if " " not in c) | TIME_CUES
 #: subordinators that are modal verbs elsewhere ("the shirt should be in the basket")
 MODAL_SUBORDINATORS = frozenset({"should"})
+#: subject pronouns ("u": the texting register's "you"): after "and" they open a clause of its own in both cuts
+SUBJECTS = frozenset({"they", "we", "i", "you", "u", "someone", "somebody", "he", "she"})
 #: words that open a new clause after a comma or "and" (a subject pronoun or a sentence adverb)
-CLAUSE_OPENERS = frozenset({"it", "they", "we", "i", "you", "someone", "somebody", "he", "she", "then",
-                            "but", "so", "or", "which", "that", "where", "this"})
+CLAUSE_OPENERS = SUBJECTS | frozenset({"it", "then", "but", "so", "or", "which", "that", "where", "this"})
 #: verbs that open an instruction (the imperative mood): a place after its object is a goal
 IMPERATIVES = ACTIONS | frozenset({
     "check", "clean", "wipe", "close", "open", "shut", "switch", "turn", "grab", "fetch", "use", "pop",
@@ -255,8 +256,11 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
     if best is None and low.rstrip().endswith("?"):
         return [(sentence, "?", "condition")]  # "Are the keys on the floor?" asks about the situation
     if best is None:
+        # (as `clause_spans` does: "and" before a subject pronoun starts a clause of its own, "there's
+        # a mark on the floor and you may find wipes on the table")
         parts: list[str] = [str(p) for p in re.split(
-            r",\s*(?:and|but|while)\s+|\s+but\s+|;\s*|:\s+|\s+-\s+|\s+while\s+", sentence) if p and p.strip()]
+            r",\s*(?:and|but|while)\s+|\s+but\s+|;\s*|:\s+|\s+-\s+|\s+while\s+"
+            rf"|\s+and\s+(?=(?:{'|'.join(sorted(SUBJECTS))})\b)", sentence) if p and p.strip()]
         out: list[tuple[str, str | None, str]] = []
         for p in parts:
             alternative = re.match(rf"^\W*({'|'.join(re.escape(c) for c in ALTERNATIVES)})\b", p.lower())

@@ -73,6 +73,12 @@ _CONTRACTIONS = [
     (r"\bcan't\b", "can not"), (r"\bwon't\b", "will not"), (r"n't\b", " not"),
     (r"\b(i|you|we|they)'ve\b", r"\1 have"), (r"\b(i|you|we|they|it)'ll\b", r"\1 will"),
     (r"\b(\w+)s'(\s)", r"\1s\2"), (r"\b(\w+)'s\b", r"\1"),
+    # the texting register's contractions without an apostrophe ("theres a mark", "if there arent
+    # any", "dont"), and "u" for "you"; words that are also words ("its", "were", "wont", "ill")
+    # are left alone
+    (r"\b(there|that|what|where|here)s\b", r"\1 is"), (r"\b(you|they)re\b", r"\1 are"),
+    (r"\b(is|are|was|were|do|does|did|has|have|had|could|should|would|must)nt\b", r"\1 not"),
+    (r"\bdont\b", "do not"), (r"\bcant\b", "can not"), (r"\bu\b", "you"),
 ]
 #: an arrow says "then": what follows it is the instruction of what came before ("Coffee machine:
 #: still on? -> switch OFF.", "Lamp on => off"), never a sentence of its own
