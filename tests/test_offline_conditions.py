@@ -12,6 +12,7 @@ from logicenveval.domain.catalog import Catalog, load_catalog
 from logicenveval.llm.base import ChatRequest
 from logicenveval.offline.analysis import analyse, nest
 from logicenveval.offline.plan import decompose
+from logicenveval.offline.sentences import expand
 
 CATALOG = Catalog.model_validate({"categories": {
     name: {"size_min": [0.1, 0.1, 0.1], "size_max": [1, 1, 1], "placement": ["floor"], **extra}
@@ -633,3 +634,29 @@ def test_a_time_phrase_distributes_nothing() -> None:
     asked = {v for values in _real_factors(text, ["kitchen"], dave_cup="cup", priya_cup="cup").values()
              for v in values}
     assert "state(dave_cup, dirty)" in asked and "state(priya_cup, dirty)" not in asked, asked
+
+
+@pytest.mark.parametrize(("text", "subject", "places"), [
+    ("Mug: it belongs in the cabinet. On the desk / on the chair -> into the cabinet.", "mug",
+     {"on(mug, desk)", "on(mug, chair)"}),
+    ("Keys: they belong on the key hook. On the console table / on the floor -> onto the hook.", "keys",
+     {"on(keys, console_table)", "on(keys, floor)"}),
+    ("Study: laptop belongs on the desk. On the office chair or on the floor: onto the desk.", "laptop",
+     {"on(laptop, office_chair)", "on(laptop, floor)"}),
+])
+def test_a_place_heading_followed_only_by_a_goal_is_the_situation_of_the_thing_spoken_of(
+        text: str, subject: str, places: set[str]) -> None:
+    b = {**brief(text), "rooms": ["living_room", "study", "hallway", "kitchen"],
+         "roles": {r: {"category": c} for r, c in {"mug": "mug", "cabinet": "cabinet", "desk": "desk",
+                                                   "chair": "chair", "keys": "keys", "key_hook": "key_hook",
+                                                   "console_table": "console_table", "laptop": "laptop",
+                                                   "office_chair": "office_chair"}.items() if r in text.lower()
+                   or c.replace("_", " ") in text.lower()}}
+    got = {f.subject: set(f.values.values()) for f in analyse(b, load_catalog()).factors}
+    assert places <= got[subject]
+    assert all(s == subject for s in got)  # no place of the goal read as a situation ("desk on the floor")
+
+
+def test_a_slash_between_words_offers_alternatives() -> None:
+    assert expand("on the office chair / on the floor") == "on the office chair or on the floor"
+    assert expand("the wet/dry towel") == "the wet or dry towel"

@@ -976,6 +976,16 @@ def _elaborates(clauses: list[Clause], sentence: int, text: str) -> bool:
     return bool(before & MOTION) and not words & (CLAUSE_WORDS | ACTIONS | MOTION | DESCRIPTIVE | UNCERTAIN)
 
 
+def _only_goes(reader: _Reader, after: list[str]) -> bool:
+    """What follows a place heading only says where to take something ("On the office chair / on
+    the floor -> onto the desk"): the heading is then the situation of the thing spoken of, not a
+    place whose things are listed after it ("On the floor: a dirty mark, and possibly a book")."""
+    return bool(after) and _goes(reader, after[0]) and not any(
+        m.kind == "role" and not _placed(words, m)
+        for text in after for toks in [tokens(expand(text))] for words in [[w for w, _, _ in toks]]
+        for m in reader.lex.find_mentions(toks))
+
+
 def _place_heading(reader: _Reader, text: str) -> bool:
     """The heading is a place where things lie and nothing else ("On the floor", "On the table";
     a room, "In the kitchen:", only says where the instructions happen)."""
@@ -1075,11 +1085,16 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     #: (sentence, members) of a distributive phrase: its sentence's facts hold for each member
     spread: tuple[int, tuple[str, ...]] = (-1, ())
     for si, sent in enumerate(sentences):
-        for text, cue, role in split_clauses(sent):
+        pieces = split_clauses(sent)
+        for k, (text, cue, role) in enumerate(pieces):
             if (DISTRIBUTIVE.match(text) or ANY_OF.search(text)) and (members := _members(clauses, categories, grammatical)):
                 spread = (grammatical, members)
             if role == "heading":
-                if _place_heading(reader, text) and named != grammatical:
+                # (what follows a heading may be the next part: `split_sentences` cuts at a colon)
+                after = [p.text for p in pieces[k + 1:]] or (
+                    [p.text for p in split_clauses(sentences[si + 1])]
+                    if si + 1 < len(sentences) and sent.rstrip().endswith(":") else [])
+                if _place_heading(reader, text) and named != grammatical and not _only_goes(reader, after):
                     # "On the floor: a dirty mark, and possibly a book": the place of what follows
                     place = (grammatical, text)
                     clauses.append(Clause(text, grammatical, cue, "statement", (), ()))

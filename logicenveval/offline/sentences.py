@@ -79,6 +79,8 @@ _CONTRACTIONS = [
     (r"\b(there|that|what|where|here)s\b", r"\1 is"), (r"\b(you|they)re\b", r"\1 are"),
     (r"\b(is|are|was|were|do|does|did|has|have|had|could|should|would|must)nt\b", r"\1 not"),
     (r"\bdont\b", "do not"), (r"\bcant\b", "can not"), (r"\bu\b", "you"),
+    # a slash between words offers alternatives ("on the office chair / on the floor")
+    (r"(?<=[a-z])\s*/\s*(?=[a-z])", " or "),
 ]
 #: an arrow says "then": what follows it is the instruction of what came before ("Coffee machine:
 #: still on? -> switch OFF.", "Lamp on => off"), never a sentence of its own
