@@ -314,3 +314,25 @@ def test_and_before_a_subject_starts_a_clause_in_both_cuts(text: str, first: str
 ])
 def test_the_texting_register_s_contractions_are_spelled_out(text: str, expanded: str) -> None:
     assert expand(text) == expanded
+
+
+@pytest.mark.parametrize(("text", "condition"), [
+    ("Where the milk carton remains on the table, it shall be returned to the fridge.",
+     "the milk carton remains on the table"),
+    ("Where a towel is found on the floor, it shall be placed in the hamper.", "a towel is found on the floor"),
+    ("Subject to the table being dirty, it shall be wiped down.", "the table is dirty"),
+    ("Subject to the lamp being on, it shall be switched off.", "the lamp is on"),
+    ("In the absence of a sponge, a paper towel shall be used.", "there is no sponge"),
+    ("In the absence of spare batteries, the torch shall be left on the shelf.", "there is no spare batteries"),
+])
+def test_the_formal_register_s_conditions_read_as_if(text: str, condition: str) -> None:
+    got = pieces(text)
+    assert got[0] == (condition, "if", "condition") and got[1][2] == "consequence"
+
+
+@pytest.mark.parametrize("text", [
+    "The dining room opens onto the kitchen, where the sink is.",  # a relative "where" stays a statement
+    "Put the book where it belongs.",
+])
+def test_a_relative_where_is_no_condition(text: str) -> None:
+    assert all(r != "condition" for _, _, r in pieces(text))

@@ -122,7 +122,15 @@ _GENERIC = (r"whatever|anything|everything|something|all|(?:any|the|all the)\s+(
             r"|items|things|objects|stuff")
 _APPOSITION = re.compile(rf"^(?P<lead>\W*)(?:{_GENERIC})\s+(?:that\s+|which\s+)?(?P<pred>[^:\u2013-]+?)\s*(?:\s-|\u2013|:)\s+"
                          r"(?P<list>[^:\u2013-]+?(?:,|\bor\b|\band\b)[^:\u2013-]+?)\s+(?:-|\u2013)\s+(?P<rest>.+)$", re.I)
-_WITHOUT = re.compile(r"^(\W*)(?:without|with no)\s+(?:a|an|any|the)?\s*(?=\w[^,]*,)", re.I)
+_WITHOUT = re.compile(r"^(\W*)(?:without|with no|in the absence of|absent|lacking)\s+(?:a|an|any|the)?\s*(?=\w[^,]*,)",
+                      re.I)
+#: the formal register's conditions, each rewritten to its plain "if" form before the cut:
+#: "Where the carton remains on the table, ..." (a fronted "where" before a clause: not the
+#: relative ", where the sink is"), "Subject to the table being dirty, ..."
+_FORMAL = (
+    (re.compile(r"^(\W*)where\s+(?=(?:the|a|an|it|they|there|any|no|your|my|our)\b[^,]*,)", re.I), r"\1if "),
+    (re.compile(r"^(\W*)(?:subject to|in the event of|on condition of)\s+(.+?)\s+being\b", re.I), r"\1if \2 is"),
+)
 
 
 def _apposition(sentence: str) -> str:
@@ -130,6 +138,8 @@ def _apposition(sentence: str) -> str:
     subject of the generic word's predicate (`a book, a clock, a phone is lying on it - goes ...`);
     a fronted `without a sponge, ...` is the condition `if there is no sponge, ...`."""
     sentence = _WITHOUT.sub(r"\1if there is no ", sentence)  # "without a sponge, use ...": a condition
+    for pattern, plain in _FORMAL:
+        sentence = pattern.sub(plain, sentence)
     m = _APPOSITION.match(sentence)
     if m is None:
         return sentence
