@@ -380,3 +380,16 @@ def test_the_plural_of_a_two_letter_abbreviation_is_singularised(word: str, lemm
 def test_respectively_counts_the_parts_of_a_list_without_a_count(text: str, rooms: tuple[str, ...], category: str,
                                                                  names: list[str]) -> None:
     assert _of(text, category, rooms) == names
+
+
+@pytest.mark.parametrize(("text", "category"), [
+    ("Marco's glass and Lena's glass are on the bar stool.", "drinking_glass"),
+    ("Put the glass in the sink.", "drinking_glass"),
+    ("Leave a clean glass on the shelf.", "drinking_glass"),
+    ("My glasses are on the nightstand, I need them to read.", "glasses"),
+    ("The chairs are by the table.", "chair"),
+])
+def test_a_name_singularised_into_another_kind_s_name_does_not_take_its_word(text: str, category: str) -> None:
+    # "glasses" (spectacles) singularises to "glass", a drinking glass's name as written
+    assert category in {c for c, _ in _named(text, ("kitchen", "bedroom")).values()}
+    assert not ({"glasses", "drinking_glass"} - {category}) & {c for c, _ in _named(text, ("kitchen", "bedroom")).values()}

@@ -142,6 +142,12 @@ def _phrase_tables(catalog: Catalog) -> tuple[dict[tuple[str, ...], str], dict[s
     reads. Callers only read them."""
     phrases: dict[tuple[str, ...], str] = {}
     heads: dict[str, list[str]] = {}
+    # a name written as its words' lemmas ("glass") wins its phrase over a name singularised
+    # into it ("glasses", the spectacles): "Marco's glass" is a drinking glass
+    for name, cat in catalog.categories.items():
+        for text in (name, *cat.synonyms):
+            if _lemma_named(text):
+                phrases.setdefault(words_of(text), name)
     for name, cat in catalog.categories.items():
         for text in (name, *cat.synonyms):
             phrase = words_of(text)
@@ -248,7 +254,10 @@ class _Reader:
             cat = self.catalog.categories[category]
             others = {w for text in (category, *cat.synonyms) for w in words_of(text)} - {word}
             rooms = set(cat.rooms)
-            return (prev in others, words_of(category) == (word,), len(others & said),
+            # its own name: written as the text writes it ("glasses"), or the word's lemma ("chairs")
+            # when the name is a lemma (not "glasses" for "glass", a drinking glass)
+            own = category.replace("_", " ") == self.text.raw[i] or words_of(category) == (word,) and _lemma_named(category)
+            return (prev in others, own, len(others & said),
                     category == exact, len(others & self.context),
                     -len(rooms) if rooms & self.room_types else -1000)
 
@@ -574,6 +583,12 @@ def name_objects(description: str, catalog: Catalog, rooms: Iterable[str] = ()) 
     (the module docstring): one object per kind named, or one per instance where the text tells
     several apart, named for what tells them apart, with the colour as attribute."""
     return _Reader(description, catalog, rooms).read()
+
+
+def _lemma_named(name: str) -> bool:
+    """Whether a name is written as its words' lemmas ("glass", "chair"; not "glasses", the
+    spectacles, whose lemma is another kind's name): only such a name is a word's own kind."""
+    return words_of(name) == tuple(re.findall(r"[a-z0-9]+", name.lower().replace("_", " ")))
 
 
 def _snake(name: str) -> str:
