@@ -336,3 +336,21 @@ def test_the_formal_register_s_conditions_read_as_if(text: str, condition: str) 
 ])
 def test_a_relative_where_is_no_condition(text: str) -> None:
     assert all(r != "condition" for _, _, r in pieces(text))
+
+
+@pytest.mark.parametrize(("text", "last"), [
+    ("If the bin is full, empty it, the bag is in the cupboard.", ("the bag is in the cupboard", "statement")),
+    ("If the mug is dirty, take it to the kitchen, the sink is there.", ("the sink is there", "statement")),
+])
+def test_a_comma_before_a_subject_and_its_verb_ends_an_instruction_in_both_cuts(
+        text: str, last: tuple[str, str]) -> None:
+    assert spans(text)[-1][:2] == last
+    assert pieces(text)[-1][0] == last[0]
+
+
+@pytest.mark.parametrize("text", [
+    "Put the book on the shelf, the pen on the desk.",  # a verbless part goes on with its verb
+    "The dishwasher, the sink, the fridge and the bin are in the kitchen.",  # a list is one clause
+])
+def test_a_comma_before_a_verbless_part_or_in_a_list_does_not_cut(text: str) -> None:
+    assert len(spans(text)) == 1

@@ -403,6 +403,12 @@ def clause_spans(words: list[str], lo: int, hi: int, *, verbs: frozenset[str],
             cuts.append(i + 1 if w == "," else i)
         elif w == "," and any(c > lo and words[c] in SUBORDINATORS | {"in"} for c in cuts[-1:]):
             cuts.append(i + 1)  # the end of a fronted condition: "If the pan is hot, ..."
+        elif w == "," and nxt in ("the", "a", "an") and _finite_after(words, i + 1, hi, verbs) and next(
+                (x for x in words[cuts[-1]:i] if x not in _LEAD_INS and x not in PUNCT), "") in IMPERATIVES:
+            # "empty it, the bag is in the cupboard": after an instruction, a comma before a subject
+            # and its verb ends a clause, as the text cut ends a consequence there (a verbless ", the
+            # pen on the desk" goes on with its verb; a list "the sink, the fridge ... are" is one)
+            cuts.append(i + 1)
     cuts.append(hi)
     out: list[Span] = []
     bounds = sorted(set(cuts))
@@ -444,6 +450,17 @@ def _says_goal(words: list[str], goal_words: frozenset[str]) -> bool:
     before "to": `SEMI_MODALS`)."""
     return any(w in goal_words and (w not in SEMI_MODALS or words[k + 1:k + 2] == ["to"])
                for k, w in enumerate(words))
+
+
+def _finite_after(words: list[str], start: int, hi: int, verbs: frozenset[str]) -> bool:
+    """Whether the words from `start` to the next punctuation hold a finite verb of `verbs`
+    (`FINITE_VERBS` or a form of "be")."""
+    for w in words[start:hi]:
+        if w in PUNCT:
+            return False
+        if w in verbs and (w in FINITE_VERBS or w in ("is", "are", "was", "were")):
+            return True
+    return False
 
 
 def doubts(words: list[str]) -> bool:
