@@ -1205,7 +1205,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                                               and not ((f.definite or _norm(cl)) and cl.role == "statement")
                                               # "A dirty mug is sitting on the desk": a thing the
                                               # statement places outright is as it describes it
-                                              and not (cl.role == "statement"
+                                              and not (cl.role == "statement" and not f.home
                                                        and f.subject in _placed_outright(brief, catalog, cl.text)))
                               or (cl.role == "else" and f.kind != "location")):
                 continue
