@@ -244,6 +244,18 @@ def test_a_home_with_other_places_keeps_the_factor_exhaustive() -> None:
     assert realise(brief, ["inside(shampoo, bathtub)"], CATALOG)["shampoo"].placement == "inside:bathtub"
 
 
+@pytest.mark.parametrize(("text", "roles", "facts"), [
+    ("The kitchen has a counter: a kettle and a mug on it.", ("counter", "kettle", "mug"),
+     {"on(kettle, counter)", "on(mug, counter)"}),
+    ("The bedroom has a nightstand - a lamp on it.", ("nightstand", "lamp"), {"on(lamp, nightstand)"}),
+    ("The living room has a coffee table: a vase and a newspaper on it.", ("coffee_table", "vase", "newspaper"),
+     {"on(vase, coffee_table)", "on(newspaper, coffee_table)"}),
+])
+def test_a_verbless_list_on_it_after_a_colon_is_on_the_holder_named_before(
+        text: str, roles: tuple[str, ...], facts: set[str]) -> None:
+    assert facts <= set(_read(text, *roles))
+
+
 @pytest.mark.parametrize(("text", "roles"), [
     # the owner of a possessive is its head noun, not a noun modifying it
     ("The bookshelf's three levels hold novels, essays and other books respectively.", ("shelf", "book")),

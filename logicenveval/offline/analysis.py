@@ -34,7 +34,14 @@ from logicenveval.offline.clauses import (
     points_back,
     split_clauses,
 )
-from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, singular, tokens
+from logicenveval.offline.lexicon import (
+    COLOR_WORDS,
+    VERB_OBJECTS,
+    Lexicon,
+    Mention,
+    singular,
+    tokens,
+)
 from logicenveval.offline.placement import described_placements
 from logicenveval.offline.sentences import (
     ACTIONS,
@@ -227,12 +234,6 @@ def _joined(words: list[str], a: Mention, b: Mention, commas: frozenset[int] = f
 #: ones included ("a book, my alarm clock or my phone")
 LIST_WORDS = frozenset({"or", "and", "a", "an", "the", "some", "any", "either", "my", "your", "our", "his",
                         "her", "their"})
-
-
-#: words that open a verb's object: a one-word mention right before one is the verb ("stand it in
-#: the umbrella stand", "if you spot it there", "water the plant")
-VERB_OBJECTS = frozenset({"it", "them", "the", "a", "an", "this", "these", "those", "its", "their", "my",
-                          "your", "our"})
 
 
 def _verb_read(toks: list[tuple[str, int, int]], m: Mention) -> bool:
@@ -1302,7 +1303,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 continue
             if f.goal or not (conditional or (f.modifier and cl.role not in ("scene",)
                                               # "The tablet is lying on the chair.": stated, kept
-                                              and not ((f.definite or _norm(cl)) and cl.role == "statement"))
+                                              and not ((f.definite or _norm(cl)) and cl.role == "statement")
+                                              # "A dirty mug is sitting on the desk": a thing the
+                                              # statement places outright is as it describes it
+                                              and not (cl.role == "statement" and not f.home
+                                                       and f.subject in _placed_outright(brief, catalog, cl.text)))
                               or (cl.role == "else" and f.kind != "location")):
                 continue
             slot = (f.subject, f.kind, f.key if f.kind in ("state", "attr") else "")
@@ -1399,6 +1404,23 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     groups, group_roles = _group(factors)
     covered = set().union(*group_roles) if group_roles else set()
     return TaskAnalysis(sentences, clauses, factors, groups, group_roles, set(lex.roles) - covered)
+
+
+#: relative pronouns: a noun phrase with a relative clause ("a plate that is wet") names a class
+#: the sentence gives a rule for, not a thing it places
+RESTRICTIVE = frozenset({"that", "which", "who", "whichever", "whatever"})
+
+
+def _placed_outright(brief: Mapping[str, Any], catalog: Catalog, text: str) -> set[str]:
+    """The roles a plain statement places outright (`offline.placement`'s settled placements:
+    "A dirty mug is sitting on the desk", "There's a wet towel on the floor"; not "A dirty plate
+    on the table goes into the dishwasher", whose verb moves it): the statement asserts the
+    thing as it describes it, so the states its noun phrase gives it are facts, not factors. A
+    sentence with a relative clause (`RESTRICTIVE`) gives a rule for a class, and places nothing."""
+    if {w for w, _, _ in tokens(text)} & RESTRICTIVE:
+        return set()  # "A clean plate that is wet stays on the table": a relative clause restricts, a rule
+    told = described_placements({**brief, "description": text}, catalog, kinds=frozenset({"settled"}))
+    return {f.split("(", 1)[1].split(",", 1)[0] for f in told if f.startswith(("on(", "inside(", "in_room("))}
 
 
 def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Catalog,

@@ -30,7 +30,7 @@ from typing import NamedTuple
 
 from lemminflect import getAllLemmas
 
-from logicenveval.offline.lexicon import tokens
+from logicenveval.offline.lexicon import WORD, tokens
 from logicenveval.offline.sentences import ACTIONS, ARROW, STATE_WORDS, expand, habitual
 
 # ---------------------------------------------------------------------------------------------
@@ -57,12 +57,14 @@ DISCOURSE = frozenset({"then", "and", "also", "so", "first", "second", "third", 
                        "lastly", "oh", "but", "now", "plus", "afterwards", "after", "that", "right", "okay",
                        "ok", "well"})
 #: cues that open the alternative of the condition before ("otherwise", "if not")
-ELSE_CUES = ("otherwise", "else", "failing that", "if not", "if there is not", "if there are not")
+ELSE_CUES = ("or else", "otherwise", "else", "failing that", "if not", "if there is not", "if there are not")
+#: the cues of `ELSE_CUES` that open an alternative wherever a clause starts (not "if not ...")
+ALTERNATIVES = ELSE_CUES[:4]
 #: words after "if" that make it a condition of availability ("if there are any")
 AVAILABILITY = frozenset({"available", "any", "present", "possible", "exist", "exists", "there"})
 #: how a sentence that sets the scene opens ("there is ...", "you are in ...")
-SCENE_START = re.compile(r"^\W*([a-z' ,]{0,50}?\bthere (is|are)\b(?! (no|not|maybe|possibly))|you are\b|we are\b)",
-                         re.I)
+SCENE_START = re.compile(r"^\W*([a-z' ,]{0,50}?\bthere(?: is| are|['\u2019]?s|['\u2019]re)\b(?! (no|not|maybe|possibly))"
+                         r"|you are\b|we are\b|you['\u2019]re\b|we['\u2019]re\b)", re.I)
 
 #: subordinators that open a clause of time or concession, not a condition on the scene (for the
 #: placement reader: nothing in them is placed)
@@ -72,9 +74,10 @@ TIME_CUES = frozenset({"until", "before", "after", "though", "although"})
 SUBORDINATORS = frozenset(c for c in CONDITIONAL + ELSE_CUES if " " not in c) | TIME_CUES
 #: subordinators that are modal verbs elsewhere ("the shirt should be in the basket")
 MODAL_SUBORDINATORS = frozenset({"should"})
+#: subject pronouns ("u": the texting register's "you"): after "and" they open a clause of its own in both cuts
+SUBJECTS = frozenset({"they", "we", "i", "you", "u", "someone", "somebody", "he", "she"})
 #: words that open a new clause after a comma or "and" (a subject pronoun or a sentence adverb)
-CLAUSE_OPENERS = frozenset({"it", "they", "we", "i", "you", "someone", "somebody", "he", "she", "then",
-                            "but", "so", "or", "which", "that", "where", "this"})
+CLAUSE_OPENERS = SUBJECTS | frozenset({"it", "then", "but", "so", "or", "which", "that", "where", "this"})
 #: verbs that open an instruction (the imperative mood): a place after its object is a goal
 IMPERATIVES = ACTIONS | frozenset({
     "check", "clean", "wipe", "close", "open", "shut", "switch", "turn", "grab", "fetch", "use", "pop",
@@ -119,13 +122,13 @@ _GENERIC = (r"whatever|anything|everything|something|all|(?:any|the|all the)\s+(
             r"|items|things|objects|stuff")
 _APPOSITION = re.compile(rf"^(?P<lead>\W*)(?:{_GENERIC})\s+(?:that\s+|which\s+)?(?P<pred>[^:\u2013-]+?)\s*(?:\s-|\u2013|:)\s+"
                          r"(?P<list>[^:\u2013-]+?(?:,|\bor\b|\band\b)[^:\u2013-]+?)\s+(?:-|\u2013)\s+(?P<rest>.+)$", re.I)
-_WITHOUT = re.compile(r"^(\W*)(?:without|with no|in the absence of|absent|failing)\s+(?:a|an|any|the)?\s*(?=\w[^,]*,)",
+_WITHOUT = re.compile(r"^(\W*)(?:without|with no|in the absence of|absent|failing|lacking)\s+(?:a|an|any|the)?\s*(?=\w[^,]*,)",
                       re.I)
 #: legal drafting's conditions, as plain ones: "Subject to the table being dirty, ..." (if the
-#: table is dirty), "Where the carton remains on the table, ..." (a clause-opening "where" is
-#: "if": a relative "where" follows its noun), "provided that, where ..." (the proviso is its
-#: condition)
-_SUBJECT_TO = re.compile(r"^(\W*)subject to\s+((?:the|a|an|its|their|your|my|our)\s+[^,;]+?)\s+being\b", re.I)
+#: table is dirty; so "in the event of" / "on condition of" X being Y), "Where the carton remains
+#: on the table, ..." (a clause-opening "where" is "if": a relative "where" follows its noun),
+#: "provided that, where ..." (the proviso is its condition)
+_SUBJECT_TO = re.compile(r"^(\W*)(?:subject to|in the event of|on condition of)\s+((?:the|a|an|its|their|your|my|our)\s+[^,;]+?)\s+being\b", re.I)
 _WHERE = re.compile(r"^(\W*)where\b(?=[^?]*,[^?]*$)", re.I)
 _PROVISO = re.compile(r"\bprovided that,?\s+(?:where|if|when|in case)\b", re.I)
 #: "A plate left on the table shall, if clean, be placed in the cabinet": a condition put between
@@ -180,6 +183,21 @@ CLAUSE_WORDS = frozenset({
     "will", "would", "could", "shall", "should", "may", "might", "must", "need", "needs",
     "keep", "keeps", "i", "you", "we", "he", "she", "it", "they", "someone", "somebody", "everyone",
     "there", "please", "let", "make", "get"})
+#: finite forms of the verbs of resting, moving, belonging and holding ("Towel lies on the floor:"
+#: is a clause, "Towel lying on the floor:" a heading): a participle is no finite verb
+FINITE_VERBS = frozenset({"lies", "lay", "sits", "sat", "stands", "stood", "rests", "hangs", "stays", "waits",
+                          "leans", "goes", "went", "belongs", "comes", "gets", "got", "contains", "holds",
+                          "includes", "houses", "lives", "sleeps", "stores", "keeps"})
+
+
+def verbless(words: list[str]) -> bool:
+    """Whether a segment has no finite verb, no subject and no imperative (`CLAUSE_WORDS`,
+    `FINITE_VERBS`, `imperative`): "Lamp left on", "Towel lying on the floor", "Dog bowl empty"
+    are verbless; "The pantry has two shelves", "Towel lies on the floor", "Put it away" are
+    not. Both readers tell a heading before a colon by it."""
+    return not set(words) & (CLAUSE_WORDS | FINITE_VERBS) and not imperative(words)
+
+
 #: words after a base-form verb that make it an imperative with its object ("clean it", "put
 #: the", "pick up"), not an adjective or noun opening a heading ("clean - ...", "water bowl ...")
 OBJECT_STARTS = ARTICLES | frozenset({"it", "them", "up", "out", "back", "away", "down", "off", "over",
@@ -206,8 +224,8 @@ def _heading(sentence: str) -> tuple[str, str, str] | None:
         return None
     head, rest = m.group("head").strip(" ,"), m.group("rest").strip()
     words = [w for w, _, _ in tokens(expand(head))]
-    if not words or len(words) > 10 or set(words) & CLAUSE_WORDS or imperative(words):
-        return None
+    if not words or len(words) > 10 or not verbless(WORD.findall(expand(head).lower())):
+        return None  # (the words as written: "lies" is a verb, its noun lemma "lie" is not)
     if _first_cue(head.lower(), CONDITIONAL) or any(w in UNCERTAIN for w in words) and words[0] not in PLACE_PREPS:
         return None  # (a place may carry a doubt: "On the bed, maybe: a book, a phone")
     mark = m.group("mark").strip()
@@ -261,14 +279,14 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
     if best is None and low.rstrip().endswith("?"):
         return [(sentence, "?", "condition")]  # "Are the keys on the floor?" asks about the situation
     if best is None:
-        # (" and you may find ...": in a note without commas, "and" before a subject pronoun
-        # starts a clause of its own)
+        # (as `clause_spans` does: "and" before a subject pronoun starts a clause of its own, "there's
+        # a mark on the floor and you may find wipes on the table")
         parts: list[str] = [str(p) for p in re.split(
             r",\s*(?:and|but|while)\s+|\s+but\s+|;\s*|:\s+|\s+-\s+|\s+while\s+"
-            r"|\s+and\s+(?=(?:you|u|we|i|they|he|she|someone)\s)", sentence) if p and p.strip()]
+            rf"|\s+and\s+(?=(?:{'|'.join(sorted(SUBJECTS))})\b)", sentence) if p and p.strip()]
         out: list[tuple[str, str | None, str]] = []
         for p in parts:
-            alternative = re.match(rf"^\W*({'|'.join(re.escape(c) for c in ELSE_CUES[:3])})\b", p.lower())
+            alternative = re.match(rf"^\W*({'|'.join(re.escape(c) for c in ALTERNATIVES)})\b", p.lower())
             if alternative is not None and out:
                 # "return it, close the vanity - else with the hand towel": a later part may be the
                 # alternative of what came before
@@ -375,10 +393,12 @@ def _subsplit(pieces: list[tuple[str, str | None, str]]) -> list[tuple[str, str 
     """`it is on, and close the wardrobe`: a condition ends at `, and`; what follows is an action."""
     out: list[tuple[str, str | None, str]] = []
     for text, cue, role in pieces:
-        splitter = r",\s*(?:and|but|then)\s+" + (r"|,\s*(?=the\s)" if role == "consequence" else "")
+        # ", otherwise ..." ends a consequence as it ends a clause span: the alternative is its own piece
+        splitter = r",\s*(?:and|but|then)\s+|,\s*(?=(?:otherwise|else|or else|failing that)\b)" + (
+            r"|,\s*(?=the\s)" if role == "consequence" else "")
         parts = [p for p in re.split(splitter, text) if p.strip()] or ([text] if role == "condition" else [])
         for i, part in enumerate(parts):
-            alternative = re.match(rf"^\W*({'|'.join(re.escape(c) for c in ELSE_CUES[:3])})\b", part.lower())
+            alternative = re.match(rf"^\W*({'|'.join(re.escape(c) for c in ALTERNATIVES)})\b", part.lower())
             if i > 0 and alternative is not None:  # "... if there are some, and otherwise the mop"
                 out.append((part[alternative.end():].strip(" ,"), alternative.group(1), "else"))
                 continue
@@ -439,6 +459,12 @@ def clause_spans(words: list[str], lo: int, hi: int, *, verbs: frozenset[str],
             cuts.append(i + 1 if w == "," else i)
         elif w == "," and any(c > lo and words[c] in SUBORDINATORS | {"in"} for c in cuts[-1:]):
             cuts.append(i + 1)  # the end of a fronted condition: "If the pan is hot, ..."
+        elif w == "," and nxt in ("the", "a", "an") and _finite_after(words, i + 1, hi, verbs) and next(
+                (x for x in words[cuts[-1]:i] if x not in _LEAD_INS and x not in PUNCT), "") in IMPERATIVES:
+            # "empty it, the bag is in the cupboard": after an instruction, a comma before a subject
+            # and its verb ends a clause, as the text cut ends a consequence there (a verbless ", the
+            # pen on the desk" goes on with its verb; a list "the sink, the fridge ... are" is one)
+            cuts.append(i + 1)
     cuts.append(hi)
     out: list[Span] = []
     bounds = sorted(set(cuts))
@@ -449,12 +475,12 @@ def clause_spans(words: list[str], lo: int, hi: int, *, verbs: frozenset[str],
         question = (b < len(words) and words[b] == "?" or (b - 1 >= a and words[b - 1] == "?")) and not (
             body[0] in REQUESTS and body[1:2] == ["you"])
         # "Plate on the table: ..." (a verbless checklist item), not "The pantry has two shelves: ..."
-        heading = b < len(words) and words[b] == ":" and not set(body) & verbs
+        heading = b < len(words) and words[b] == ":" and verbless(body)
         # "... should go where it belongs - the book on the couch": a verbless part after a dash or a
         # colon goes on with the clause before it (here a goal), not a statement of its own
         follows_goal = (a > 0 and words[a - 1] in ("-", ":") and not set(body) & verbs and bool(out)
-                        and (out[-1].mood == "instruction" or bool(set(words[out[-1].start:out[-1].end])
-                                                                    & goal_words)))
+                        and (out[-1].mood == "instruction" or _says_goal(words[out[-1].start:out[-1].end],
+                                                                           goal_words)))
         first = next((w for w in body if w not in _LEAD_INS), "")
         if first in SUBORDINATORS or body[:2] == ["in", "case"] or question:
             mood = "condition"
@@ -467,6 +493,30 @@ def clause_spans(words: list[str], lo: int, hi: int, *, verbs: frozenset[str],
         # a habitual statement ("the ball keeps ending up on the floor") is doubted like "may"
         out.append(Span(a, b, mood, doubts(body) or habitual(body), follows_goal))
     return out
+
+
+#: verbs that say where a thing must go only before "to" ("it has to go on the desk", "the
+#: kettle needs to go on the counter"); before an object they are possessive or say a want ("the
+#: kitchen has a counter: a kettle on it" states where the kettle is)
+SEMI_MODALS = frozenset({"has", "have", "need", "needs", "want", "wants"})
+
+
+def _says_goal(words: list[str], goal_words: frozenset[str]) -> bool:
+    """Whether a clause's words say where things must go (`goal_words`, a semi-modal only
+    before "to": `SEMI_MODALS`)."""
+    return any(w in goal_words and (w not in SEMI_MODALS or words[k + 1:k + 2] == ["to"])
+               for k, w in enumerate(words))
+
+
+def _finite_after(words: list[str], start: int, hi: int, verbs: frozenset[str]) -> bool:
+    """Whether the words from `start` to the next punctuation hold a finite verb of `verbs`
+    (`FINITE_VERBS` or a form of "be")."""
+    for w in words[start:hi]:
+        if w in PUNCT:
+            return False
+        if w in verbs and (w in FINITE_VERBS or w in ("is", "are", "was", "were")):
+            return True
+    return False
 
 
 def doubts(words: list[str]) -> bool:

@@ -28,6 +28,17 @@ FRESH_WORDS = frozenset({"fresh", "new"})
 #: of the switch, the one thing of the scene whose state it is (`Lexicon.build`, the naming step)
 CONTROL_HEADS = frozenset({"switch"})
 
+#: words that open a verb's object: a one-word name right before one is the verb ("stand it in
+#: the umbrella stand", "if you spot it there", "water the plant", "wipe the mirror")
+VERB_OBJECTS = frozenset({"it", "them", "the", "a", "an", "this", "these", "those", "its", "their", "my",
+                          "your", "our"})
+#: words after which a word is a verb, never a noun: a subject pronoun, "to" and the modals
+#: ("if you spot it", "someone has to mop", "please vacuum")
+VERB_LEADS = frozenset({"you", "we", "i", "they", "he", "she", "someone", "somebody", "to", "please", "can",
+                        "could", "will", "would", "should", "must", "might", "don't", "let's"})
+#: particles a verb may take before its object ("mop up the water", "wipe down the table")
+VERB_PARTICLES = frozenset({"up", "down", "off", "out", "over", "away"})
+
 COLOR_WORDS = frozenset(
     ["red", "blue", "green", "yellow", "white", "black", "grey", "gray", "brown", "pink", "purple", "orange", "beige", "silver", "gold"]
 )
@@ -53,6 +64,37 @@ def singular(word: str) -> str:
     if word.endswith("s") and not word.endswith("ss"):
         return str(getLemma(word, upos="NOUN")[0])
     return word
+
+
+def verb_form(word: str) -> bool:
+    """Whether `word` as written is a form of a verb (lemminflect): "spot", "wipes", "mopping"."""
+    return bool(getAllLemmas(word, upos="VERB").get("VERB"))
+
+
+def verb_at(word: str, prev: str, nxt: list[str]) -> bool:
+    """Whether `word` (as written) is a verb where it stands, not the noun it is also the name
+    of: after a subject, "to" or a modal (`VERB_LEADS`: "if you spot it there"); or in its base
+    form right before its object, or a particle and its object (`VERB_OBJECTS`,
+    `VERB_PARTICLES`: "mop up the water", "wipe it down"), unless a determiner, a preposition,
+    a count or a state stands right before it ("the spot", "on a tape", "a dirty mop the ...").
+    `prev` is the word before and `nxt` the (up to two) words after, as written; a caller
+    leaves out those beyond punctuation (a list "a mop, the bucket" is two things)."""
+    if not verb_form(word):
+        return False
+    if prev in VERB_LEADS:
+        return True
+    if not nxt or word not in getAllLemmas(word, upos="VERB").get("VERB", ()):
+        return False
+    if prev in VERB_OBJECTS or prev in NOT_BEFORE_VERBS:
+        return False
+    return nxt[0] in VERB_OBJECTS or nxt[0] in VERB_PARTICLES and nxt[1:2] != [] and nxt[1] in VERB_OBJECTS
+
+
+#: words before a noun, never before an imperative: determiners, counts, prepositions
+NOT_BEFORE_VERBS = frozenset({"a", "an", "any", "some", "no", "each", "every", "one", "two", "three", "of",
+                              "on", "onto", "in", "into", "inside", "from", "by", "near", "under", "at",
+                              "with", "for", "dirty", "clean", "wet", "dry", "full", "empty", "spare", "new",
+                              "fresh", "old", "extra"})
 
 
 def tokens(text: str) -> list[tuple[str, int, int]]:

@@ -31,6 +31,7 @@ from logicenveval.offline.lexicon import (
     SPARE_WORDS,
     singular,
     tokens,
+    verb_at,
     words_of,
 )
 from logicenveval.offline.sentences import STATE_WORDS, expand, unquote
@@ -93,6 +94,8 @@ _SENTENCE_END = re.compile(r"[.!?]|\n")
 #: a person's name as a possessive before a noun ("Marco's glass", "Priya's cup"): capitalised,
 #: since "the dog's bowl" or "the lamp's switch" own nothing
 _POSSESSOR = re.compile(r"\b([A-Z][a-z]+)'s\s+[a-z]")
+#: punctuation no name runs across (a hyphen inside a word does not count: "toy-box")
+_BREAK = re.compile(r"[,;:.!?()\u2013\u2014\n]|\s-|-\s")
 
 
 @dataclass
@@ -147,6 +150,12 @@ def _phrase_tables(catalog: Catalog) -> tuple[dict[tuple[str, ...], str], dict[s
     reads. Callers only read them."""
     phrases: dict[tuple[str, ...], str] = {}
     heads: dict[str, list[str]] = {}
+    # a name written as its words' lemmas ("glass") wins its phrase over a name singularised
+    # into it ("glasses", the spectacles): "Marco's glass" is a drinking glass
+    for name, cat in catalog.categories.items():
+        for text in (name, *cat.synonyms):
+            if _lemma_named(text):
+                phrases.setdefault(words_of(text), name)
     for name, cat in catalog.categories.items():
         for text in (name, *cat.synonyms):
             phrase = words_of(text)
@@ -185,10 +194,12 @@ class _Reader:
     # -- noun phrases ----------------------------------------------------------------------
 
     def match(self, i: int) -> tuple[int, str | None]:
-        """(length, category) of the longest catalog name starting at word `i`."""
-        words = self.text.words
+        """(length, category) of the longest catalog name starting at word `i`, within one
+        stretch of words without punctuation ("the floor is wet, mop it" names no wet mop)."""
+        words, gaps = self.text.words, self.text.gaps
+        stretch = next((k for k in range(i + 1, len(words)) if _BREAK.search(gaps[k])), len(words)) - i
         return next(((n, self.phrases[tuple(words[i:i + n])])
-                     for n in range(min(self.longest, len(words) - i), 0, -1)
+                     for n in range(min(self.longest, len(words) - i, stretch), 0, -1)
                      if tuple(words[i:i + n]) in self.phrases), (1, None))
 
     def leads_noun(self, i: int, strict: bool = False) -> bool:
@@ -211,9 +222,24 @@ class _Reader:
         nxt = words[i + 1] if i + 1 < len(words) else ""
         if word in _PACKAGING and nxt == "of":
             return 1, None
-        if word in _ALSO_VERBS and not self.leads_noun(i, strict=True):
+        if self.verb(i):
             return 1, None
         return 1, self.bare_noun(i, category)
+
+    def verb(self, i: int) -> bool:
+        """Whether the one-word name at word `i` is a verb where it stands ("if you spot it",
+        "mop up the water", "you can use", "switch it off": `lexicon.verb_at`; a word of
+        `_ALSO_VERBS` names a thing only after a determiner)."""
+        if self.text.words[i] in _ALSO_VERBS and not self.leads_noun(i, strict=True):
+            return True
+        raw, gaps = self.text.raw, self.text.gaps
+        prev = raw[i - 1] if i > 0 and not gaps[i].strip() else ""
+        nxt: list[str] = []
+        for k in (i + 1, i + 2):  # the next words up to punctuation
+            if k >= len(raw) or gaps[k].strip():
+                break
+            nxt.append(raw[k])
+        return verb_at(raw[i], prev, nxt)
 
     def bare_noun(self, i: int, exact: str | None) -> str | None:
         """The kind a one-word noun means: the kind last named that it ends; else the kind whose
@@ -246,7 +272,10 @@ class _Reader:
             cat = self.catalog.categories[category]
             others = {w for text in (category, *cat.synonyms) for w in words_of(text)} - {word}
             rooms = set(cat.rooms)
-            return (prev in others, words_of(category) == (word,), len(others & said),
+            # its own name: written as the text writes it ("glasses"), or the word's lemma ("chairs")
+            # when the name is a lemma (not "glasses" for "glass", a drinking glass)
+            own = category.replace("_", " ") == self.text.raw[i] or words_of(category) == (word,) and _lemma_named(category)
+            return (prev in others, own, len(others & said),
                     written != word and self.plural_named(category, word), category == exact,
                     len(others & self.context),
                     -len(rooms) if rooms & self.room_types else -1000)
@@ -283,7 +312,7 @@ class _Reader:
         out = set(words)
         for i in range(len(words)):
             n, category = self.match(i)
-            if category is None or n == 1 and words[i] in _ALSO_VERBS and not self.leads_noun(i, strict=True):
+            if category is None or n == 1 and self.verb(i):
                 continue
             if n > 1 or len(set(self.heads.get(words[i], []))) == 1:
                 self.named.add(category)
@@ -607,6 +636,12 @@ def name_objects(description: str, catalog: Catalog, rooms: Iterable[str] = ()) 
     (the module docstring): one object per kind named, or one per instance where the text tells
     several apart, named for what tells them apart, with the colour as attribute."""
     return _Reader(description, catalog, rooms).read()
+
+
+def _lemma_named(name: str) -> bool:
+    """Whether a name is written as its words' lemmas ("glass", "chair"; not "glasses", the
+    spectacles, whose lemma is another kind's name): only such a name is a word's own kind."""
+    return words_of(name) == tuple(re.findall(r"[a-z0-9]+", name.lower().replace("_", " ")))
 
 
 def _snake(name: str) -> str:

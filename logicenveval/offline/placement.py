@@ -624,6 +624,12 @@ def _fragment(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         return
     subjects = _np_list(sent, ms, clause.start, j)
     found = _holder_after(sent, ms, j, clause.end)
+    if found is None and words[j + 1:j + 2] == ["it"] and clause.start > 0 and words[clause.start - 1] in (":", "-"):
+        # "The kitchen has a counter: a kettle and a toaster on it": "it" is the holder the clause
+        # before the colon or dash last named
+        held = [m for m in sent.mentions if m.end <= clause.start and m.kind == "role" and len(m.roles) == 1
+                and m.roles[0] in lex.holders]
+        found = (words[j], held[-1]) if held else None
     body = set(words[clause.start:clause.end])
     if not subjects or found is None or body & (DOUBT | VERBS | {"or"}):
         return  # doubted, a choice of places ("on the floor or on the sofa"), or it has a verb
