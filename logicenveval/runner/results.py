@@ -216,7 +216,7 @@ def reply_validity(units: Sequence[UnitRecord]) -> dict[str, dict[str, float]]:
         asked = row.get("answered", row.get("questions", 0))
         for counter in ("questions", "attempts", "valid_first", "valid", "truncated"):
             row[counter] = int(row.get(counter, 0))
-        for counter in ("answered", "meaningless"):
+        for counter in ("answered", "meaningless", "clamped"):
             if counter in row:
                 row[counter] = int(row[counter])
         row["valid_first_share"] = round(row["valid_first"] / asked, 4) if asked else 0.0
