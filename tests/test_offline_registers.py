@@ -11,6 +11,7 @@ import pytest
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.offline.analysis import analyse
 from logicenveval.offline.naming import name_objects
+from logicenveval.offline.placement import described_placements
 
 
 def _brief(text: str, rooms: tuple[str, ...]) -> dict[str, Any]:
@@ -78,6 +79,9 @@ def test_two_clauses_run_together_are_no_list() -> None:
     # written here: a hallway, a colon and "or"
     ("Hallway: the umbrella belongs in the umbrella stand. On the floor or on the bench: into the stand. "
      "Anywhere else: leave it.", ("hallway",), "umbrella", {"floor", "bench"}),
+    # issue 47: a home said in a sentence of its own, the answer opened by "back"
+    ("The remote lives on the TV stand. On the sofa or on the floor: back onto the stand.", ("living_room",),
+     "remote_control", {"sofa", "floor"}),
 ])
 def test_a_place_heading_with_an_instruction_is_a_condition(text: str, rooms: tuple[str, ...], subject: str,
                                                             places: set[str]) -> None:
@@ -244,3 +248,62 @@ def test_the_sentences_of_one_bullet_item_are_one_unit(text: str, rooms: tuple[s
     groups = [set(g) for g in analyse(_brief(text, rooms), load_catalog()).groups]
     assert any(together <= g for g in groups), groups
     assert all(apart not in g for g in groups if together <= g), groups
+
+
+# ----- "on the office chair or the floor": the second place shares the first one's preposition ---
+
+@pytest.mark.parametrize(("text", "rooms", "subject", "places"), [
+    # issue 47
+    ("The laptop lives on the desk. In case it's on the office chair or the floor, put it on the desk.",
+     ("study",), "laptop", {"office_chair", "floor"}),
+    # written here: a hallway
+    ("The umbrella belongs in the umbrella stand. If it is on the bench or the floor, put it in the stand.",
+     ("hallway",), "umbrella", {"bench", "floor"}),
+])
+def test_a_place_after_or_without_its_preposition_is_a_second_place(text: str, rooms: tuple[str, ...],
+                                                                     subject: str, places: set[str]) -> None:
+    got = _factors(text, rooms)
+    assert {f"on({subject}, {p})" for p in places} <= got.get(f"{subject}_location", set()), got
+
+
+def test_a_clause_after_or_keeps_its_own_subject() -> None:
+    # "or the plate is dirty" opens a clause: the plate is no second place of the mug
+    got = _factors("If the mug is on the table or the plate is dirty, wash it.", ("kitchen",))
+    assert not any("mug, plate" in v for vs in got.values() for v in vs), got
+    assert any("state(plate, dirty)" in vs for vs in got.values()), got
+
+
+# ----- a heading followed by its own condition only says what is spoken of and where it is --------
+
+@pytest.mark.parametrize(("text", "rooms", "stated", "asked"), [
+    # dev4 (a text message with bullets)
+    ("- dumbbell on the floor? put it on the shelves thx\n"
+     "- towel on the shelves: if its dirty -> laundry basket. not dirty = leave it", ("gym",),
+     "towel_on_shelving_unit", {"towel_dirty", "dumbbell_on_floor"}),
+    # written here: a kitchen note
+    ("Mug on the desk: if it's dirty, take it to the sink. Plate on the floor? Put it in the sink.", ("study",),
+     "mug_on_desk", {"mug_dirty"}),
+])
+def test_a_heading_answered_by_a_condition_is_stated(text: str, rooms: tuple[str, ...], stated: str,
+                                                     asked: set[str]) -> None:
+    """"towel on the shelves: if it's dirty -> ...": the condition is said after the heading, so
+    the heading is no question (a question ends with "?", or is answered by an instruction)."""
+    got = _factors(text, rooms)
+    assert stated not in got and asked <= set(got), got
+
+
+def test_a_heading_answered_by_an_instruction_is_still_a_condition() -> None:
+    assert "shirt_on_floor" in _factors("Shirt on the floor: put it in the hamper.", ("bedroom",))
+
+
+@pytest.mark.parametrize(("text", "rooms", "placed"), [
+    ("- towel on the shelves: if its dirty -> laundry basket. not dirty = leave it", ("gym",),
+     "on(towel, shelving_unit)"),
+    ("Mug on the desk: if it's dirty, take it to the sink.", ("study",), "on(mug, desk)"),
+])
+def test_a_heading_answered_by_a_condition_places_its_thing(text: str, rooms: tuple[str, ...], placed: str) -> None:
+    assert placed in described_placements(_brief(text, rooms), load_catalog())
+
+
+def test_a_heading_answered_by_an_instruction_places_nothing() -> None:
+    assert not described_placements(_brief("Shirt on the floor: put it in the hamper.", ("bedroom",)), load_catalog())

@@ -30,6 +30,7 @@ from logicenveval.offline.clauses import (
     NEGATIONS,
     PLACE_PREPS,
     UNCERTAIN,
+    Piece,
     imperative,
     points_back,
     split_clauses,
@@ -717,10 +718,15 @@ class _Reader:
         modifier = not goal and described
         subjects = self._subjects(words, mentions, idx)
         out: list[Fact] = []
-        while k < len(words) and words[k] in PREP_ON | PREP_IN | {"from", "to"}:
-            prep = words[k]
-            if prep == "on" and words[k + 1 : k + 3] == ["top", "of"]:
-                k += 2
+        prep = ""
+        elided = False  # "on the office chair or the floor": the second place shares the first's preposition
+        while k < len(words) and (words[k] in PREP_ON | PREP_IN | {"from", "to"} or elided):
+            if elided:
+                k -= 1  # no preposition of its own: the place is found from the word before it
+            else:
+                prep = words[k]
+                if prep == "on" and words[k + 1 : k + 3] == ["top", "of"]:
+                    k += 2
             target = next((t for t in mentions if t.start > k and (
                 t.kind in ("role", "room", "floor") or t.kind == "pronoun" and words[t.start] in ("it", "them"))),
                 None)
@@ -739,9 +745,19 @@ class _Reader:
                     out.append(Fact(s, cond, "location", t, negated=negated and not goal, goal=goal,
                                     modifier=modifier, definite=definite, home=bool(set(skipped) & HOMES)))
             k = target.end
+            alternative = k < len(words) and words[k] == "or"
             while k < len(words) and words[k] in {"or", "and", "either", "the", "a"}:
                 k += 1
+            elided = alternative and self._elided_place(words, mentions, k)
         return out
+
+    def _elided_place(self, words: list[str], mentions: list[Mention], k: int) -> bool:
+        """After "on the office chair or", a place with no preposition of its own ("the floor")
+        is a second place the first preposition governs, when nothing but the clause's end, a
+        comma or another "or" follows it (else it opens a clause: "... or the plate is dirty")."""
+        m = next((t for t in mentions if t.start == k), None)
+        return m is not None and m.kind in ("role", "floor") and (
+            m.end == len(words) or m.end in self.commas or words[m.end] == "or")
 
     def _state(self, words: list[str], m: Mention, negated: bool) -> list[Fact]:
         k = m.end
@@ -1087,6 +1103,15 @@ def _place_heading(reader: _Reader, text: str) -> bool:
         m.kind == "room" or m.kind == "role" and not _placed([w for w, _, _ in toks], m) for m in mentions)
 
 
+def _role_after(cut: list[list[Piece]], si: int, pi: int) -> str:
+    """The role of the piece after piece `pi` of sentence `si`, whether it ends the sentence's
+    heading (the next sentence goes on after a colon) or not; "" after a full stop."""
+    if pi + 1 < len(cut[si]):
+        return cut[si][pi + 1].role
+    ended = not cut[si] or cut[si][-1].text.rstrip().endswith((".", "!", "?"))
+    return cut[si + 1][0].role if si + 1 < len(cut) and cut[si + 1] and not ended else ""
+
+
 def _read_heading(reader: _Reader, text: str) -> tuple[list[Fact], tuple[str, ...]]:
     """A heading's facts. A heading without its own subject is said of the object spoken of
     ("Shoes - wet:", "Keys - on the floor or on the console table:"): it reads as `it is ...`."""
@@ -1201,6 +1226,12 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 if spread[0] == grammatical:
                     facts = list(_distributed(tuple(facts), spread[1]))
                 role = "condition" if any(not f.goal and not f.derived for f in facts) else "statement"
+                if role == "condition" and names and _role_after(cut, si, pi) == "condition":
+                    # "towel on the shelves: if it's dirty -> ...": the condition comes after the
+                    # heading, which only says what is spoken of and where it is (a question
+                    # would end with "?": "dumbbell on the floor? put it ...")
+                    role = "statement"
+                    facts = [replace(f, modifier=False) for f in facts]  # a heading drops its articles
                 headed = grammatical if role == "condition" else headed
                 named = grammatical if names else named
                 clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))

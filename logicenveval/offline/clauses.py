@@ -486,7 +486,7 @@ def clause_spans(words: list[str], lo: int, hi: int, *, verbs: frozenset[str],
             mood = "condition"
         elif first in IMPERATIVES or body[0] in REQUESTS and body[1:2] == ["you"] or follows_goal:
             mood = "instruction"
-        elif heading:
+        elif heading and not _conditional_after(words, b + 1, hi):
             mood = "condition"
         else:
             mood = "statement"
@@ -506,6 +506,13 @@ def _says_goal(words: list[str], goal_words: frozenset[str]) -> bool:
     before "to": `SEMI_MODALS`)."""
     return any(w in goal_words and (w not in SEMI_MODALS or words[k + 1:k + 2] == ["to"])
                for k, w in enumerate(words))
+
+
+def _conditional_after(words: list[str], start: int, hi: int) -> bool:
+    """Whether the clause from `start` opens with a conditional ("towel on the shelves: if it's
+    dirty -> ..."): the heading before it then only says what is spoken of and where it is."""
+    body = [w for w in words[start:hi] if w not in PUNCT and w not in _LEAD_INS]
+    return bool(body) and (body[0] in SUBORDINATORS or body[:2] == ["in", "case"])
 
 
 def _finite_after(words: list[str], start: int, hi: int, verbs: frozenset[str]) -> bool:
