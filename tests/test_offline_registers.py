@@ -307,3 +307,24 @@ def test_a_heading_answered_by_a_condition_places_its_thing(text: str, rooms: tu
 
 def test_a_heading_answered_by_an_instruction_places_nothing() -> None:
     assert not described_placements(_brief("Shirt on the floor: put it in the hamper.", ("bedroom",)), load_catalog())
+
+
+# ----- "X goes in Y, unless someone already did it": whether X is already in Y ---------------------
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev4 (a recipe)
+    ("The bin bag goes in the bin, unless Maya already took it down.", ("porch",), "inside(garbage_bag, trash_can)"),
+    # written here: a kitchen
+    ("The milk carton goes in the fridge, unless Tom already put it away.", ("kitchen",),
+     "inside(milk_carton, fridge)"),
+])
+def test_an_action_already_done_asks_whether_the_thing_is_there(text: str, rooms: tuple[str, ...],
+                                                               asked: str) -> None:
+    values = set().union(*_factors(text, rooms).values())
+    assert asked in values, values
+
+
+def test_already_without_a_move_before_asks_nothing_new() -> None:
+    # no clause before moves the thing: "already" alone gives no place
+    got = _factors("Tom already took the milk carton out. If it is dirty, wash it.", ("kitchen",))
+    assert not any("inside(milk_carton" in v for vs in got.values() for v in vs), got

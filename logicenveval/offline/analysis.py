@@ -1103,6 +1103,20 @@ def _place_heading(reader: _Reader, text: str) -> bool:
         m.kind == "room" or m.kind == "role" and not _placed([w for w, _, _ in toks], m) for m in mentions)
 
 
+#: words that say an action is done before the instruction is carried out
+DONE_WORDS = frozenset({"already"})
+
+
+def _done_before(clauses: list[Clause], sentence: int, said: str, names: tuple[str, ...]) -> list[Fact]:
+    """For a factless condition saying an action is already done to a thing the clause before
+    (in the same sentence) moves, that move's goal read as the situation ("unless Maya already
+    took it down" = "unless it is already in the bin"); else nothing."""
+    if not clauses or clauses[-1].sentence != sentence or not {w for w, _, _ in tokens(expand(said))} & DONE_WORDS:
+        return []
+    return [replace(f, goal=False, definite=False) for f in clauses[-1].facts
+            if f.goal and f.kind == "location" and f.subject in names]
+
+
 def _role_after(cut: list[list[Piece]], si: int, pi: int) -> str:
     """The role of the piece after piece `pi` of sentence `si`, whether it ends the sentence's
     heading (the next sentence goes on after a colon) or not; "" after a full stop."""
@@ -1255,6 +1269,10 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             facts, names = reader.facts("there is " + said if cue == "should there be" else said)
             if cue == "if available" and not any(f.kind in ("location", "exists") and not f.home for f in facts):
                 facts += _available(reader, said)
+            if role == "condition" and not facts and (done := _done_before(clauses, grammatical, said, names)):
+                # "the bin bag goes in the bin, unless Maya already took it down": an action some
+                # agent has already done to the thing moved asks whether it is already there
+                facts = done
             if role == "condition" and _anaphoric(said, facts):
                 facts, names = _antecedent(clauses, grammatical, pointing)
                 pointing.add(len(clauses))
