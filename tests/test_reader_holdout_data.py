@@ -1,36 +1,39 @@
 """The reader's held-out test set (tests/data/reader_holdout/, issue 47): the counterpart of the
 development set, measured by benchmarks/reader_generalisation.py and never tuned to.
 
-The same honesty checks as tests/test_reader_dev_data.py, on the held-out data: rewordings that
-change only the wording and still name every object, BTs byte-identical to their originals, new
-tasks about objects and rooms neither the built-in tasks nor the development set use, and every
-task valid (one of each kind in the default run, all in the slow run). Nothing here runs the
-offline model: these tests keep the data honest, not the reader's scores.
+The honesty checks every set has (`reader_sets`), on the held-out data: rewordings that change
+only the wording and still name every object, BTs byte-identical to their originals, new tasks
+about objects and rooms neither the built-in tasks nor the development set use, and every task
+valid (one of each kind in the default run, all in the slow run).
 """
 
 from __future__ import annotations
 
-import json
-import re
 from pathlib import Path
 
 import pytest
-from test_reader_dev_data import _mentions, _names
+from reader_sets import (
+    DATA,
+    check_all_validate,
+    check_built_from_json,
+    check_mutant_lists_current,
+    check_new_tasks_are_fresh,
+    check_not_templated,
+    check_policies,
+    check_rewording_changes_only_the_wording,
+    check_rewording_names_every_object,
+    check_validates,
+    rewordings,
+)
 
-from logicenveval.benchmark import load_task, load_tasks, task_ids
-from logicenveval.benchmark_validation import validate_task
-from logicenveval.domain.catalog import load_catalog
-from logicenveval.faults.score import shipped_is_current
+from logicenveval.benchmark import task_ids
 
-DATA = Path(__file__).parent / "data"
 HOLDOUT = DATA / "reader_holdout"
 REWORDED = HOLDOUT / "tasks_reworded"
 NEW = HOLDOUT / "tasks_new"
 DEV = DATA / "reader_dev"
-ROOT = Path(__file__).resolve().parents[1]
-BUILTIN = ROOT / "benchmark_data" / "tasks"
-ENTRIES: list[dict[str, object]] = json.loads((HOLDOUT / "rewordings.json").read_text(encoding="utf-8"))["rewordings"]
-DEV_ENTRIES: list[dict[str, object]] = json.loads((DEV / "rewordings.json").read_text(encoding="utf-8"))["rewordings"]
+ENTRIES = rewordings(HOLDOUT)
+DEV_ENTRIES = rewordings(DEV)
 
 
 def test_the_set_rewords_every_builtin_task_the_dev_set_leaves_out() -> None:
@@ -52,93 +55,42 @@ def test_ids_do_not_collide_with_the_dev_set_or_the_builtin_tasks() -> None:
 
 
 def test_reworded_folders_are_built_from_the_json(tmp_path: Path) -> None:
-    """The folders are exactly what `tools/build_reworded_tasks.py --set reader_holdout` writes."""
-    import importlib.util
-
-    assert sorted(str(e["id"]) for e in ENTRIES) == task_ids(REWORDED)
-    spec = importlib.util.spec_from_file_location("build_reworded_tasks", ROOT / "tools" / "build_reworded_tasks.py")
-    assert spec is not None and spec.loader is not None
-    tool = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(tool)
-    tool.build(ENTRIES, tmp_path)
-    for entry in ENTRIES:
-        built = (tmp_path / str(entry["id"]) / "task.json").read_bytes()
-        assert built == (REWORDED / str(entry["id"]) / "task.json").read_bytes(), entry["id"]
+    check_built_from_json("reader_holdout", ENTRIES, REWORDED, tmp_path)
 
 
 @pytest.mark.parametrize("entry", ENTRIES, ids=[str(e["id"]) for e in ENTRIES])
 def test_a_rewording_changes_only_the_wording(entry: dict[str, str]) -> None:
-    """Same rooms, roles, variables, trees, constraint facts and BTs as the original; only the
-    id, the description and the constraints' quotes differ."""
-    original = json.loads((BUILTIN / entry["original"] / "task.json").read_text(encoding="utf-8"))
-    reworded = json.loads((REWORDED / entry["id"] / "task.json").read_text(encoding="utf-8"))
-    assert reworded["description"] == entry["description"] != original["description"]
-    for key in set(original) | set(reworded):
-        if key not in ("id", "description", "constraints"):
-            assert reworded[key] == original[key], key
-    assert [c["fact"] for c in reworded.get("constraints", [])] == [c["fact"] for c in original.get("constraints", [])]
-    originals = sorted((BUILTIN / entry["original"] / "policies").glob("*.xml"))
-    assert [p.name for p in originals] == sorted(p.name for p in (REWORDED / entry["id"] / "policies").glob("*.xml"))
-    for path in originals:
-        assert (REWORDED / entry["id"] / "policies" / path.name).read_bytes() == path.read_bytes()
-    load_task(entry["id"], REWORDED)  # parses: every `says` quotes the new description
+    check_rewording_changes_only_the_wording(entry, REWORDED)
 
 
 @pytest.mark.parametrize("entry", ENTRIES, ids=[str(e["id"]) for e in ENTRIES])
 def test_a_rewording_still_names_every_object_its_original_names(entry: dict[str, str]) -> None:
-    original = load_task(entry["original"])
-    for role, spec in original.roles.items():
-        names = _names(role, spec.category)
-        if _mentions(original.description, names):
-            assert _mentions(entry["description"], names), (role, sorted(names))
+    check_rewording_names_every_object(entry)
 
 
 def test_new_tasks_are_about_objects_and_rooms_nobody_used_before() -> None:
-    """Mostly categories neither the built-in tasks nor the dev set's new tasks use, in room ids
-    neither uses (every room type is already taken, so a new room is a new id of a known type),
-    and every object named in the description."""
-    seen = [*load_tasks(), *load_tasks(DEV / "tasks_new")]
-    used = {spec.category for t in seen for spec in t.roles.values()}
-    used_rooms = {room for t in seen for room in t.rooms}
-    for task in load_tasks(NEW):
-        categories = [spec.category for spec in task.roles.values()]
-        fresh = [c for c in categories if c not in used]
-        assert len(fresh) * 2 >= len(categories), (task.id, fresh)
-        assert set(task.rooms) - used_rooms, (task.id, task.rooms)
-        for role, spec in task.roles.items():
-            assert _mentions(task.description, _names(role, spec.category)), (task.id, role)
+    """Every room type is already taken, so a new room is a new id of a known type."""
+    check_new_tasks_are_fresh(NEW, [DEV / "tasks_new"])
 
 
 def test_new_tasks_are_not_written_in_the_benchmark_template() -> None:
-    """Written as a person would, not as "If the X is Y, ..." sentences."""
-    for task in load_tasks(NEW):
-        sentences = [s for s in re.split(r"(?<=[.!?])\s+", task.description) if s]
-        templated = [s for s in sentences if re.match(r"If the \w+( \w+)? is \w+,", s)]
-        assert len(templated) * 4 < len(sentences), (task.id, templated)
+    check_not_templated(NEW)
 
 
 def test_every_task_ships_its_four_policies() -> None:
-    for folder in (REWORDED, NEW):
-        for task in load_tasks(folder):
-            assert set(task.policies) == {"correct", "counterfactual", "unreachable", "lackbranch"}, task.id
+    check_policies((REWORDED, NEW))
 
 
 def test_every_task_ships_a_current_mutant_list() -> None:
-    """`killable_mutants.json` is keyed by the task (its description too): a rewording edited
-    without `tasks mutants --write` would make every run classify it afresh."""
-    stale = [f"{folder.name}/{task.id}" for folder in (REWORDED, NEW) for task in load_tasks(folder)
-             if not shipped_is_current(task, folder, load_catalog())]
-    assert not stale, f"run `python -m logicenveval tasks mutants --write --tasks-dir ...` for {stale}"
+    check_mutant_lists_current((REWORDED, NEW))
 
 
 @pytest.mark.parametrize(("folder", "task_id"), [(NEW, "den_game_night"), (REWORDED, "laundry_sorting_h1")])
 def test_a_holdout_task_validates(folder: Path, task_id: str) -> None:
-    report = validate_task(task_id, folder, worlds=2)
-    assert not report.problems, [str(p) for p in report.problems]
+    check_validates(folder, task_id)
 
 
 @pytest.mark.slow
 @pytest.mark.parametrize("folder", [NEW, REWORDED], ids=["new", "reworded"])
 def test_every_holdout_task_validates(folder: Path) -> None:
-    problems = [str(p) for tid in task_ids(folder) for p in validate_task(tid, folder).problems]
-    assert not problems, problems[:10]
+    check_all_validate(folder)
