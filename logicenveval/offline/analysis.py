@@ -111,8 +111,6 @@ ARRIVALS = frozenset({"arrived", "come", "turned", "appeared", "shown", "showed"
 ABSENT = frozenset({"missing", "absent", "gone", "lacking", "unavailable"})
 
 
-
-
 @dataclass(frozen=True)
 class Fact:
     """An atomic condition on the initial state found in the text."""
@@ -183,9 +181,6 @@ class TaskAnalysis:
     groups: list[list[str]]  # factor ids per independent subtask
     group_roles: list[set[str]]
     other_roles: set[str]
-
-
-
 
 
 #: "if we still have one", "if we don't have a spare": the household owns the object, or not
