@@ -31,7 +31,14 @@ from typing import NamedTuple
 from lemminflect import getAllLemmas
 
 from logicenveval.offline.lexicon import WORD, tokens
-from logicenveval.offline.sentences import ACTIONS, ARROW, STATE_WORDS, expand, habitual
+from logicenveval.offline.sentences import (
+    ACTIONS,
+    ARROW,
+    PERSONAL_SUBJECTS,
+    STATE_WORDS,
+    expand,
+    habitual,
+)
 
 # ---------------------------------------------------------------------------------------------
 # Word tables (data). Each names a class of words, never a task's phrase or object.
@@ -75,7 +82,7 @@ SUBORDINATORS = frozenset(c for c in CONDITIONAL + ELSE_CUES if " " not in c) | 
 #: subordinators that are modal verbs elsewhere ("the shirt should be in the basket")
 MODAL_SUBORDINATORS = frozenset({"should"})
 #: subject pronouns ("u": the texting register's "you"): after "and" they open a clause of its own in both cuts
-SUBJECTS = frozenset({"they", "we", "i", "you", "u", "someone", "somebody", "he", "she"})
+SUBJECTS = PERSONAL_SUBJECTS | frozenset({"u", "someone", "somebody"})
 #: words that open a new clause after a comma or "and" (a subject pronoun or a sentence adverb)
 CLAUSE_OPENERS = SUBJECTS | frozenset({"it", "then", "but", "so", "or", "which", "that", "where", "this"})
 #: verbs that open an instruction (the imperative mood): a place after its object is a goal

@@ -34,7 +34,7 @@ from logicenveval.offline.lexicon import (
     verb_at,
     words_of,
 )
-from logicenveval.offline.sentences import STATE_WORDS, expand, unquote
+from logicenveval.offline.sentences import PERSONAL_SUBJECTS, STATE_WORDS, expand, unquote
 
 
 @handler("name_objects")
@@ -79,10 +79,6 @@ _ORDINALS = frozenset({"first", "second", "third", "fourth", "next", "last", "to
                        "upper", "lower", "left", "right", "other", "one", "front", "back"})
 #: verbs that lead a list of what each part holds ("three levels hold novels, essays and ...")
 _HOLDING = frozenset({"hold", "keep", "store", "contain", "take", "carry", "be", "are", "is", "for"})
-#: personal pronouns that are a clause's subject: an item holding one is a relative clause on
-#: the counted noun ("the two CDs I lent Ben (the jazz one and ...)", "the three mugs we bought"),
-#: no item of the list
-_SUBJECT_PRONOUNS = frozenset({"i", "we", "you", "he", "she", "they"})
 #: words of an item that say nothing of which one it is
 _FILLER = frozenset({"respectively", "one", "and", "or", "then", "also", "each", "s", "is", "are",
                      "kept", "stored", "go", "goes", "put", "placed", "shelved"})
@@ -463,7 +459,7 @@ class _Reader:
                 continue  # "two toys: a doll and a ball" names a doll and a ball
             if ordinal_at is None and "for" not in item and color is None and (
                     len(item) > 4 or any(w in _PREPOSITIONS or w in _HOLDING or w in STATE_WORDS
-                                         or w in _SUBJECT_PRONOUNS for w in item)):
+                                         or w in PERSONAL_SUBJECTS for w in item)):
                 continue  # a clause, not an item ("are in the kitchen", "the two CDs I lent Ben")
             # the words read: the item's up to "for", and the purpose when it is a class of things
             # (a bare plural: "for dolls", "novels on one"), not when it is an object ("one for

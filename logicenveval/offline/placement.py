@@ -44,6 +44,7 @@ from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, singular
 from logicenveval.offline.sentences import (
     ACTIONS,
     NORM_ADVERBS,
+    PERSONAL_SUBJECTS,
     PREP_IN,
     PREP_ON,
     STATE_WORDS,
@@ -106,8 +107,7 @@ THING_PRONOUNS = frozenset({"it", "that", "this", "they"})
 #: prepositions that name where a thing comes from, not a place spoken of ("from the dining room")
 SOURCE = frozenset({"from", "of", "off", "than"})
 #: subjects of an active clause that name no object of the task ("someone left a mark on the floor")
-SUBJECT_PRONOUNS = frozenset({"someone", "somebody", "we", "i", "you", "they", "he", "she", "kids",
-                              "children", "everyone", "nobody"})
+SUBJECT_PRONOUNS = PERSONAL_SUBJECTS | frozenset({"someone", "somebody", "kids", "children", "everyone", "nobody"})
 #: words before a room that let it frame the rest of its sentence ("In the kitchen, ...", "Over in
 #: the living room there ...")
 _LEADS = frozenset({"over", "out", "down", "up", "and", "then", "also", "back", "now", "next"})

@@ -27,6 +27,9 @@ STATE_WORDS: dict[str, tuple[str, bool]] = {
     "grubby": ("dirty", True), "filthy": ("dirty", True), "soiled": ("dirty", True),
     "grimy": ("dirty", True), "smudged": ("dirty", True), "mucky": ("dirty", True),
 }
+#: the personal pronouns that can be a clause's subject; each reader adds the other subjects it
+#: needs (`clauses.SUBJECTS`, `placement.SUBJECT_PRONOUNS`, `naming`'s relative-clause test)
+PERSONAL_SUBJECTS = frozenset({"i", "we", "you", "he", "she", "they"})
 #: action verbs before an object: a location after the object is a goal
 ACTIONS = frozenset(
     ["put", "place", "move", "take", "bring", "return", "carry", "drop", "set", "lay", "stand", "hang", "throw", "toss", "tuck", "store", "stow", "leave", "fold", "bin", "transfer", "slide", "shove", "push", "pour", "empty", "fill", "refill", "sort", "give", "file", "load", "unload", "shelve",
