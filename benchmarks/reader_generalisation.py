@@ -41,7 +41,7 @@ like-for-like gap.
 Every run is computed afresh (`fresh=True`: a stored unit is never reused, since the run's
 fingerprint does not cover the reader's code) with the offline model's reply cache off.
 
-    python benchmarks/reader_generalisation.py            # all twelve sets (~4-5 min on 2 cores)
+    python benchmarks/reader_generalisation.py            # all twelve sets (~2-5 min on 2 cores)
     python benchmarks/reader_generalisation.py --smoke    # two tasks per set (~1 min)
     python benchmarks/reader_generalisation.py --why      # and why each task lost environments
     python benchmarks/reader_generalisation.py --dev-only # without the held-out sets (for tuning)
