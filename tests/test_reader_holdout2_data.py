@@ -1,0 +1,110 @@
+"""The reader's second held-out set (tests/data/reader_holdout2/): new tasks and rewordings written
+after every other set, without reading the offline reader or running it on them, in registers no
+earlier set used.
+
+The honesty checks every set has (`reader_sets`): rewordings that change only the wording and
+still name every object, BTs byte-identical to their originals, new tasks about objects and rooms
+the built-in tasks, the development sets and the first held-out set do not use, every object
+named, a current mutant list, and every task valid (one of each kind in the default run, all in
+the slow run). Nothing here runs the reader.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from reader_sets import (
+    DATA,
+    check_all_validate,
+    check_built_from_json,
+    check_mutant_lists_current,
+    check_new_tasks_are_fresh,
+    check_not_templated,
+    check_policies,
+    check_rewording_changes_only_the_wording,
+    check_rewording_names_every_object,
+    check_validates,
+    rewordings,
+)
+
+from logicenveval.benchmark import load_tasks, task_ids
+
+HOLDOUT2 = DATA / "reader_holdout2"
+REWORDED = HOLDOUT2 / "tasks_reworded"
+NEW = HOLDOUT2 / "tasks_new"
+#: the sets tuned on: their new tasks' objects and rooms are not "fresh"
+TUNED_NEW = tuple(DATA / name / "tasks_new" for name in ("reader_dev", "reader_dev2", "reader_dev3", "reader_dev4"))
+#: the first held-out set's new tasks: not tuned on, but this set must not repeat them either
+EARLIER_NEW = (*TUNED_NEW, DATA / "reader_holdout" / "tasks_new")
+#: every other set's task folders, whose ids this set's must not reuse
+OTHER_FOLDERS = (*EARLIER_NEW, *(DATA / name / "tasks_reworded" for name in ("reader_dev", "reader_holdout", "reader_dev3", "reader_dev4")))
+#: the registers of the earlier sets' rewordings (this set's are all new)
+EARLIER_REWORDINGS = ("reader_dev", "reader_holdout", "reader_dev3", "reader_dev4")
+ENTRIES = rewordings(HOLDOUT2)
+
+
+def test_the_set_rewords_twelve_builtin_tasks_each_in_a_register_of_its_own() -> None:
+    originals = [str(e["original"]) for e in ENTRIES]
+    assert len(ENTRIES) >= 12
+    assert len(set(originals)) == len(originals)
+    assert set(originals) <= set(task_ids())
+    registers = [str(e["register"]) for e in ENTRIES]
+    assert len(set(registers)) == len(registers)
+    earlier = {str(e["register"]) for name in EARLIER_REWORDINGS for e in rewordings(DATA / name)}
+    assert not set(registers) & earlier
+    assert all(str(e["id"]) == f"{e['original']}_ho2" for e in ENTRIES)
+    assert len(task_ids(NEW)) >= 8
+
+
+def test_ids_do_not_collide_with_any_other_set() -> None:
+    taken = set(task_ids())
+    for folder in OTHER_FOLDERS:
+        taken |= set(task_ids(folder))
+    assert not (set(task_ids(REWORDED)) | set(task_ids(NEW))) & taken
+
+
+def test_reworded_folders_are_built_from_the_json(tmp_path: Path) -> None:
+    check_built_from_json("reader_holdout2", ENTRIES, REWORDED, tmp_path)
+
+
+@pytest.mark.parametrize("entry", ENTRIES, ids=[str(e["id"]) for e in ENTRIES])
+def test_a_rewording_changes_only_the_wording(entry: dict[str, str]) -> None:
+    check_rewording_changes_only_the_wording(entry, REWORDED)
+
+
+@pytest.mark.parametrize("entry", ENTRIES, ids=[str(e["id"]) for e in ENTRIES])
+def test_a_rewording_still_names_every_object_its_original_names(entry: dict[str, str]) -> None:
+    check_rewording_names_every_object(entry)
+
+
+def test_new_tasks_are_about_objects_and_rooms_no_earlier_set_uses() -> None:
+    check_new_tasks_are_fresh(NEW, EARLIER_NEW)
+
+
+def test_new_tasks_have_a_few_independent_factors_and_a_stated_fact() -> None:
+    """2-4 uncertain factors per task, and at least one fact the description states that is no
+    factor."""
+    for task in load_tasks(NEW):
+        assert 2 <= len(task.variables) <= 4, (task.id, sorted(task.variables))
+        assert task.constraints, task.id
+
+
+def test_new_tasks_are_not_written_in_the_benchmark_template() -> None:
+    check_not_templated(NEW, breaks=r"[.!?\n]")
+
+
+def test_every_task_ships_its_four_policies_and_a_current_mutant_list() -> None:
+    check_policies((REWORDED, NEW))
+    check_mutant_lists_current((REWORDED, NEW))
+
+
+@pytest.mark.parametrize(("folder", "task_id"), [(NEW, "foyer_note_from_morag"), (REWORDED, "lamp_or_pillow_fetch_ho2")])
+def test_a_holdout2_task_validates(folder: Path, task_id: str) -> None:
+    check_validates(folder, task_id)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("folder", [NEW, REWORDED], ids=["new", "reworded"])
+def test_every_holdout2_task_validates(folder: Path) -> None:
+    check_all_validate(folder)
