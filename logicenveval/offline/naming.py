@@ -23,7 +23,7 @@ from typing import Any
 
 from logicenveval.domain.catalog import Catalog, load_catalog, per_catalog
 from logicenveval.llm.base import ChatRequest
-from logicenveval.model.rooms import room_type_of
+from logicenveval.model.rooms import known_room_type, room_type_of
 from logicenveval.offline.handlers import handler
 from logicenveval.offline.lexicon import (
     COLOR_WORDS,
@@ -174,6 +174,9 @@ class _Reader:
         self.named: set[str] = set()  # kinds named outright (by a full name or synonym)
         self.context = self._context()
         self.room_types = {room_type_of(r) for r in rooms}
+        #: the room types the room ids name (not the fallback of an id naming none, "fitness_room"):
+        #: what tells a bare noun's kinds apart by the rooms they belong in (`bare_noun`)
+        self.known_room_types = {t for t in map(known_room_type, rooms) if t is not None}
         #: the head words of the task's room ids ("home_bar": "bar"): a bare noun that names no
         #: kind by itself and is one of them names the room ("tidy the home bar", "Re: the bar")
         self.room_heads = {words_of(r)[-1] for r in rooms if words_of(r)}
@@ -202,11 +205,24 @@ class _Reader:
         """Whether word `i` stands where a noun phrase starts: after a determiner, a colour or a
         count, or (unless `strict`: a word that is as often a verb) at the start of a sentence or
         list item or after "with", "and"."""
-        prev = self.text.words[i - 1] if i > 0 else ""
+        lead = self.compound_start(i)
+        prev = self.text.words[lead - 1] if lead > 0 else ""
         if prev in _DETERMINERS or prev in COLOR_WORDS or prev in _COUNTS:
             return True
         return not strict and (i == 0 or prev in _NOUN_LEADS or bool(
             _ITEM_BREAK.search(self.text.gaps[i]) or _SENTENCE_END.search(self.text.gaps[i])))
+
+    def compound_start(self, i: int) -> int:
+        """The first word of a hyphenated modifier right before word `i` ("the check-in
+        computer", "the lost-property cart", "an end-of-day list"), else `i`: such a modifier
+        stands between a determiner and its noun as one adjective does."""
+        gaps = self.text.gaps
+        k = i - 1
+        if k < 1 or gaps[i].strip() or gaps[k] != "-":
+            return i
+        while k > 0 and gaps[k] == "-":
+            k -= 1
+        return k
 
     def kind_at(self, i: int) -> tuple[int, str | None]:
         """The kind the noun phrase at word `i` names, and its length in words."""
@@ -244,7 +260,9 @@ class _Reader:
         most ("the pantry has two shelves": pantry shelves); else the kind it is a synonym of ("the
         bin"); else the kind whose other name words the names of the kinds named hold most ("a
         nightstand (bedside table) with a lamp": a bedside lamp); then the kind most specific to the
-        task's rooms. A noun that names no kind itself must start a noun phrase."""
+        task's rooms (the rooms whose ids name a known type: a guessed type says nothing); then the
+        kind whose name (not a synonym) it heads. A noun that names no kind itself must start a
+        noun phrase."""
         word = self.text.words[i]
         options = list(dict.fromkeys(self.heads.get(word, [])))
         named = [c for c in reversed(self.recent) if c in options and word in self.used.get(c, ())]
@@ -263,7 +281,7 @@ class _Reader:
             candidates = [c for c in candidates if c is None or not self.plural_only(c, word)] or candidates
         said = set(self.text.words[self.text.sentence_start(i):self.text.sentence_end(i)]) - _NOT_CONTEXT
 
-        def score(category: str | None) -> tuple[bool, bool, int, bool, bool, int, int]:
+        def score(category: str | None) -> tuple[bool, bool, int, bool, bool, int, int, bool]:
             assert category is not None
             cat = self.catalog.categories[category]
             others = {w for text in (category, *cat.synonyms) for w in words_of(text)} - {word}
@@ -274,7 +292,10 @@ class _Reader:
             return (prev in others, own, len(others & said),
                     written != word and self.plural_named(category, word), category == exact,
                     len(others & self.context),
-                    -len(rooms) if rooms & self.room_types else -1000)
+                    -len(rooms) if rooms & self.known_room_types else -1000,
+                    # last, the kind the word heads the name of, not only a synonym ("computer":
+                    # a desktop computer, not a laptop's "notebook computer")
+                    words_of(category)[-1] == word)
 
         return max(candidates, key=score)
 
