@@ -328,3 +328,64 @@ def test_already_without_a_move_before_asks_nothing_new() -> None:
     # no clause before moves the thing: "already" alone gives no place
     got = _factors("Tom already took the milk carton out. If it is dirty, wash it.", ("kitchen",))
     assert not any("inside(milk_carton" in v for vs in got.values() for v in vs), got
+
+
+# ===== rules from the third development set's new tasks (`tests/data/reader_dev3/tasks_new/`) =====
+
+# ----- a hyphenated modifier is one word between a preposition and its place ---------------------
+
+@pytest.mark.parametrize(("text", "rooms", "goal"), [
+    # dev3 (a work order)
+    ("In case a water bottle has been left on the bench, place it on the lost-property cart.",
+     ("fitness_room",), "on(water_bottle, cart)"),
+    # written here: a living room
+    ("If the cushion is on the floor, put it back on the second-hand sofa.", ("living_room",),
+     "on(sofa_pillow, sofa)"),
+])
+def test_a_hyphenated_modifier_does_not_hide_the_place(text: str, rooms: tuple[str, ...], goal: str) -> None:
+    goals = {f.condition for c in analyse(_brief(text, rooms), load_catalog()).clauses for f in c.facts if f.goal}
+    assert goal in goals, goals
+
+
+# ----- "respectively" pairs things and places in order; "if they're already there" asks each -----
+
+@pytest.mark.parametrize(("text", "rooms", "asked", "not_asked"), [
+    # dev3 (a note from a roommate)
+    ("• my bat and my racket go in the storage bin and on the bench, respectively. if they're "
+     "already there, don't sweat it", ("sunroom",),
+     {"baseball_bat_inside_storage_box", "tennis_racket_on_bench"}, "on(baseball_bat, bench)"),
+    # written here: a kitchen
+    ("The mug and the plate go in the sink and on the dish rack, respectively. If they're already "
+     "there, leave them.", ("kitchen",), {"mug_inside_sink", "plate_on_dish_rack"}, "on(mug, dish_rack)"),
+])
+def test_respectively_pairs_things_with_places(text: str, rooms: tuple[str, ...], asked: set[str],
+                                               not_asked: str) -> None:
+    a = analyse(_brief(text, rooms), load_catalog())
+    got = {f.id for f in a.factors}
+    assert asked <= got, got
+    assert not any(f.condition == not_asked for c in a.clauses for f in c.facts), a.clauses
+
+
+def test_they_already_there_asks_each_thing_of_an_instruction_about_its_own_goal() -> None:
+    # written here: no "respectively", one instruction with a goal per thing
+    got = _factors("Put the shoes on the shoe rack and the umbrella in the umbrella stand, unless they are "
+                   "already there.", ("hallway",))
+    assert {"shoe_on_shoe_rack", "umbrella_inside_umbrella_stand"} <= set(got), got
+
+
+# ----- "the little statue on the side table": the determiner before a plain adjective -----------
+
+@pytest.mark.parametrize(("text", "rooms", "placed"), [
+    # dev3 (a note from a roommate)
+    ("• heads up, the little statue on the side table is my mom's. do NOT touch it lol", ("sunroom",),
+     "on(statue, side_table)"),
+    # written here: a hallway
+    ("Careful: the old vase on the side table belongs to my grandma. If the mug is on the floor, put it "
+     "in the sink.", ("hallway",), "on(vase, side_table)"),
+])
+def test_a_definite_thing_with_an_adjective_resting_somewhere_is_stated(text: str, rooms: tuple[str, ...],
+                                                                        placed: str) -> None:
+    """A definite thing named before its place is presumed to rest there ("the statue on the side
+    table is ..."): a plain adjective between "the" and the noun changes nothing."""
+    assert placed in described_placements(_brief(text, rooms), load_catalog())
+    assert not any(placed in vs for vs in _factors(text, rooms).values())

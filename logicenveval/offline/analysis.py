@@ -52,6 +52,7 @@ from logicenveval.offline.sentences import (
     PREP_ON,
     STATE_WORDS,
     TEND,
+    determiner,
     expand,
     habitual,
     split_sentences,
@@ -280,6 +281,9 @@ class _Reader:
         #: the last goal location and the last state spoken of ("put the pan on the stove",
         #: "switch the toaster on"), for "unless it is already there / on"
         self.last_goal: Fact | None = None
+        #: every goal location of the last clause that had one (one per thing after
+        #: "respectively"), for "unless they are already there"
+        self.last_goals: list[Fact] = []
         self.last_state: dict[str, Fact] = {}
         #: the thing last spoken of, not a place it goes to ("Bath towel on the floor? Wet: into
         #: the basket. Dry: ..."): what a heading without a subject is said of
@@ -290,6 +294,10 @@ class _Reader:
         self.coordinated = False
         #: the words of the clause being read that a comma stands before (`_joined`)
         self.commas: frozenset[int] = frozenset()
+        #: the words of the clause being read that a hyphen joins to the word before ("the
+        #: lost-property cart"): a hyphenated modifier counts as one word between a preposition
+        #: and its place (`_location`)
+        self.hyphens: frozenset[int] = frozenset()
         #: the words of the clause being read where a thing's name starts (`_state`)
         self.starts: frozenset[int] = frozenset()
 
@@ -410,6 +418,7 @@ class _Reader:
         toks = tokens(said)
         words = [t[0] for t in toks]
         self.commas = frozenset(k for k in range(1, len(toks)) if "," in said[toks[k - 1][2]:toks[k][1]])
+        self.hyphens = frozenset(k for k in range(1, len(toks)) if said[toks[k - 1][2]:toks[k][1]] == "-")
         mentions = self.mentions(words, toks)
         self.starts = frozenset(x.start for x in mentions if x.kind == "role")
         for m in mentions:
@@ -422,8 +431,8 @@ class _Reader:
         subjects = [m for m in mentions if m.kind in ("role", "pronoun")]
         negated = any(_negation(w) for w in words)
         already = self._already(words, mentions, negated)
-        if already is not None:
-            return [already], (already.subject,)
+        if already:
+            return already, tuple(dict.fromkeys(f.subject for f in already))
         goal_of = {self.last_goal.subject} if self.last_goal is not None else set()
         if subjects and subjects[0].kind == "pronoun" and any(p in " ".join(words) for p in ELSEWHERE) and not (
                 set(subjects[0].roles) & (set(self.last_location) | goal_of)) and not any(
@@ -515,9 +524,14 @@ class _Reader:
                     facts += [Fact(r, f"state({r}, {flag})", "state", flag, negated=negated != (not pol))
                               for r in self.topic]
                     break
+        if "respectively" in words:
+            facts = _respectively(facts)
         said_by_pronoun = {r for m in mentions if m.kind == "pronoun" for r in m.roles}
         facts = [self._fit(f) if f.kind == "state" and f.subject in said_by_pronoun else f for f in facts
                  if self._holds(f)]
+        goals = [f for f in facts if f.kind == "location" and f.goal]
+        if goals:
+            self.last_goals = goals
         for f in facts:
             if f.kind == "location" and not f.goal:
                 self.last_location[f.subject] = f
@@ -548,18 +562,18 @@ class _Reader:
         r = fitting[0]
         return replace(f, subject=r, condition=f"state({r}, {f.key})")
 
-    def _already(self, words: list[str], mentions: list[Mention], negated: bool) -> Fact | None:
+    def _already(self, words: list[str], mentions: list[Mention], negated: bool) -> list[Fact]:
         """`unless it is already there / on`: the condition is the previous instruction's result;
         so is a place said only as "in there" / "on there" of a pronoun ("leo's car goes in the
         toy box. if it's not in there put it in there", "the mugs go on the rack; if they are not
         on there, ..."): "there" is where the instruction before put it."""
         if any(m.kind == "role" for m in mentions) or len(words) > 6:
-            return None
+            return []
         if "already" not in words:
             rest = [w for w in words if w not in ALREADY_FILLER and w not in PRONOUNS]
             if len(rest) != 2 or rest[0] not in PREP_ON | PREP_IN or rest[1] != "there" or not any(
                     m.kind == "pronoun" for m in mentions):
-                return None
+                return []
             words = [*words, "already"]  # read as "it is (not) already in there"
         pronouns = [m for m in mentions if m.kind == "pronoun"]
         said = set(pronouns[0].roles) if pronouns else set()
@@ -571,18 +585,24 @@ class _Reader:
         there = after[:1] in (["there"], ["here"]) or set(content) <= {"there", "here"} or (
             len(content) > 1 and content[0] in PREP_ON | PREP_IN and all(w in PRONOUNS | ARTICLES | {"there"}
                                                                          for w in content[1:]))
+        # "my bat and my racket go in the bin and on the bench, respectively. If they're already
+        # there, ...": a plural pronoun after an instruction with a goal per thing asks each
+        # thing whether it is at its own goal
+        plural = [g for g in self.last_goals if pronouns and words[pronouns[0].start] in ("they", "them")]
+        if there and len({g.subject for g in plural}) > 1 and (not said or said & {g.subject for g in plural}):
+            return [Fact(g.subject, g.condition, "location", g.key, negated=negated) for g in plural]
         if there and self.last_goal is not None and (not said or self.last_goal.subject in said):
             g = self.last_goal
-            return Fact(g.subject, g.condition, "location", g.key, negated=negated)
+            return [Fact(g.subject, g.condition, "location", g.key, negated=negated)]
         if after and after[0] in STATE_WORDS:
             flag, pol = STATE_WORDS[after[0]]
             st = self.last_state.get(flag)
             if st is not None:  # pronouns before "already on" are often the sentence topic: trust the state
-                return Fact(st.subject, st.condition, "state", flag, negated=negated != (not pol))
+                return [Fact(st.subject, st.condition, "state", flag, negated=negated != (not pol))]
             if self.recent:  # "opening the wardrobe first, unless the door is already open"
                 r = self.recent[-1]
-                return Fact(r, f"state({r}, {flag})", "state", flag, negated=negated != (not pol))
-        return None
+                return [Fact(r, f"state({r}, {flag})", "state", flag, negated=negated != (not pol))]
+        return []
 
     def _unknown(self, word: str) -> bool:
         """A word the analyser has no meaning for: not a role, room, state, cue or function word."""
@@ -703,7 +723,7 @@ class _Reader:
             set(words[: prev.start]) & MOTION)  # (its adjectives too: "... and a clean one on the counter")
         goal = words[k] != "from" and (self._is_goal(words, m, skipped) or gapped or (
             words[k] in ("into", "onto") and not set(skipped) & SITUATION_PARTICIPLES))
-        article = words[m.start - 1] if m.start > 0 else ""
+        article = determiner(words, m.start)
         # where a thing is kept or lives is a norm `_settle_stated` weighs against the rest of
         # the text
         definite = article in DEFINITE and not set(skipped) & HOMES
@@ -725,7 +745,7 @@ class _Reader:
             target = next((t for t in mentions if t.start > k and (
                 t.kind in ("role", "room", "floor") or t.kind == "pronoun" and words[t.start] in ("it", "them"))),
                 None)
-            if target is None or target.start - k > 3:
+            if target is None or target.start - k - len(self.hyphens & set(range(k + 1, target.start))) > 3:
                 break
             for s in dict.fromkeys(subjects):
                 for t in target.roles:
@@ -915,6 +935,23 @@ _KNOWN_WORDS = (frozenset(STATE_WORDS) | DESCRIPTIVE | MOTION | ACTIONS | ARTICL
                      "first", "second", "third", "kind", "sort", "type", "need", "time", "for",
                      "with", "without", "from", "place", "way", "lot", "mess", "problem", "close",
                      "switch", "turn", "shut", "check", "use", "wipe", "clean", "empty", "fill"}))
+
+
+def _respectively(facts: list[Fact]) -> list[Fact]:
+    """"my bat and my racket go in the storage bin and on the bench, respectively": a list of
+    things and a list of places as long pair in order, the first thing with the first place; the
+    places of one reading (goals or conditions) and their things are paired apart. Lists of
+    unequal length pair nothing (each thing keeps every place)."""
+    out: list[Fact] = []
+    for goal in (False, True):
+        placed = [f for f in facts if f.kind == "location" and f.goal == goal]
+        things = list(dict.fromkeys(f.subject for f in placed))
+        places = list(dict.fromkeys(f.key for f in placed))
+        if len(things) < 2 or len(things) != len(places):
+            out += placed
+            continue
+        out += [f for f in placed if things.index(f.subject) == places.index(f.key)]
+    return [f for f in facts if f.kind != "location"] + [f for f in facts if f in out]
 
 
 def _question(subject: str, kind: str, key: str, targets: list[str]) -> str:

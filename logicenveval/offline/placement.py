@@ -48,6 +48,7 @@ from logicenveval.offline.sentences import (
     PREP_IN,
     PREP_ON,
     STATE_WORDS,
+    determiner,
     expand,
     habitual,
     split_sentences,
@@ -962,7 +963,7 @@ def _resting(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, cat
         if not between or between[0] not in AT or not all(w in ARTICLES for w in between[1:]):
             continue
         cat = catalog.get(str(lex.roles[a.roles[0]]["category"]))
-        if cat is None or not cat.pickable or a.start == 0 or words[a.start - 1] != "the":
+        if cat is None or not cat.pickable or determiner(words, a.start) != "the":
             continue
         if _moved(words, a.start, clause) or clause.goal:
             continue

@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import re
 
+from logicenveval.offline.lexicon import COLOR_WORDS, verb_form
+
 #: adjective/participle -> (state flag, polarity)
 STATE_WORDS: dict[str, tuple[str, bool]] = {
     "open": ("open", True), "opened": ("open", True), "ajar": ("open", True),
@@ -36,6 +38,21 @@ ACTIONS = frozenset(
      "pack", "stack", "deliver"]
 )
 PREP_ON = frozenset({"on", "onto", "atop", "upon"})
+#: words that open a noun phrase and say which one is meant (`determiner`)
+DETERMINERS = frozenset({"the", "a", "an", "my", "our", "your", "his", "her", "its", "their", "this",
+                         "that", "these", "those", "any", "every", "each", "some", "no"})
+
+
+def determiner(words: list[str], start: int) -> str:
+    """The word that determines the noun phrase whose noun starts at `start`: the word before
+    it, or the determiner before one plain adjective ("the little statue", "my old lamp"): not a
+    state word ("a dirty plate": the state may be the condition itself), a colour, a preposition
+    or a verb form."""
+    before = words[start - 1] if start > 0 else ""
+    if start > 1 and words[start - 2] in DETERMINERS and before.isalpha() and before not in (
+            DETERMINERS | PREP_ON | PREP_IN | STATE_WORDS.keys() | COLOR_WORDS) and not verb_form(before):
+        return words[start - 2]
+    return before
 
 #: habitual aspect: a statement of what keeps happening ("my ball keeps ending up on the floor",
 #: "the scarf tends to slip off the hook", "the remote often lies on the rug", "the towel usually
