@@ -389,3 +389,108 @@ def test_a_definite_thing_with_an_adjective_resting_somewhere_is_stated(text: st
     table is ..."): a plain adjective between "the" and the noun changes nothing."""
     assert placed in described_placements(_brief(text, rooms), load_catalog())
     assert not any(placed in vs for vs in _factors(text, rooms).values())
+
+
+# ----- a chat: speakers' names open its turns, each turn a unit of its own -------------------------
+
+@pytest.mark.parametrize(("text", "rooms", "apart"), [
+    # dev3 (a chat between two flatmates)
+    ("Priya: the wine bottle on the table, is it empty?\nSam: haven't looked yet\n"
+     "Priya: ok if it's empty it goes in the recycling bin. if there's still wine in it, put it in the "
+     "sideboard, we'll finish it friday\nSam: 👍\nPriya: the salt and pepper shakers live in the sideboard "
+     "too. if either of them is still out on the table, pop it back in\nSam: got it", ("formal_dining_room",),
+     ("wine_bottle_filled", "salt_shaker_on_dining_table")),
+    # written here: a kitchen
+    ("Mum: if the kettle is empty fill it\nLeo: ok\nMum: if the mug is on the counter, put it in the sink\n"
+     "Leo: fine", ("kitchen",), ("kettle_filled", "mug_on_kitchen_counter")),
+])
+def test_a_speakers_turn_ends_what_the_turn_before_left_open(text: str, rooms: tuple[str, ...],
+                                                             apart: tuple[str, str]) -> None:
+    """A line without a full stop goes on into the next, but a speaker's label ("Priya:",
+    "Mum:": a capitalised word opening two or more lines that means nothing to the reader) starts
+    a new turn: the condition of one turn is no context of the next; the label is no attribute."""
+    a = analyse(_brief(text, rooms), load_catalog())
+    got = {f.id: f for f in a.factors}
+    assert set(apart) <= set(got), got
+    assert not got[apart[1]].context, got[apart[1]].context
+    assert not any(f.id.endswith("ness") for f in a.factors)
+
+
+def test_a_heading_word_the_reader_knows_is_no_speaker() -> None:
+    # "Wet:" / "Dry:" open lines but are states of the towel spoken of
+    text = "Towel on the floor?\nWet: into the laundry basket.\nDry: back on the towel rack.\nWet: wring it first."
+    assert "towel_wet" in _factors(text, ("bathroom",))
+
+
+# ----- "the salt and pepper shakers ... if either of them": the group is what a clause is said of ---
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev3 (a chat)
+    ("the salt and pepper shakers live in the sideboard too. if either of them is still out on the table, "
+     "pop it back in", ("formal_dining_room",), {"salt_shaker_on_dining_table", "pepper_shaker_on_dining_table"}),
+    # written here: a study
+    ("The desk and floor lamps live in the study. If either of them is still on, switch it off.", ("study",),
+     {"desk_lamp_toggled_on", "floor_lamp_toggled_on"}),
+])
+def test_either_of_them_is_each_thing_a_clause_was_said_of(text: str, rooms: tuple[str, ...], asked: set[str]) -> None:
+    """"still out on the table": "out" before a place says where, it is no switched-off state."""
+    got = _factors(text, rooms)
+    assert asked <= set(got), got
+    assert not any("toggled_on" in f for f in got if "shaker" in f), got
+
+
+# ----- "the X on the Y, is it Z?": the place is taken for granted, the state asked -----------------
+
+@pytest.mark.parametrize(("text", "rooms", "placed", "asked"), [
+    # dev3 (a chat)
+    ("Priya: the wine bottle on the table, is it empty?\nSam: haven't looked yet\nPriya: ok if it's empty it "
+     "goes in the recycling bin", ("formal_dining_room",), "on(wine_bottle, dining_table)", "wine_bottle_filled"),
+    # written here: a study, another state
+    ("The lamp on the nightstand, is it still on? Switch it off.", ("bedroom",), "on(table_lamp, nightstand)",
+     "table_lamp_toggled_on"),
+])
+def test_a_thing_put_first_and_asked_of_by_a_pronoun_is_where_it_is_said_to_be(
+        text: str, rooms: tuple[str, ...], placed: str, asked: str) -> None:
+    """The pronoun's state is the thing's (the table is not filled: a state goes to the nearest
+    thing that can take it, `FITTED_BY`), and its place is no question."""
+    got = _factors(text, rooms)
+    assert asked in got and not any(placed in vs for vs in got.values()), got
+    assert placed in described_placements(_brief(text, rooms), load_catalog())
+
+
+# ----- the form a thing comes in, a ranked shelf, a heading answered by a verb of place ------------
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev3 (a checklist)
+    ("- Cart\n  - Tin foil: in case the roll has fallen on the floor, put it back on the cart.", ("craft_room",),
+     "aluminum_foil_on_floor"),
+    # written here: a bathroom
+    ("Shampoo - if the bottle is empty, put it in the trash can.", ("bathroom",), "shampoo_filled"),
+])
+def test_the_form_a_thing_comes_in_is_the_thing_spoken_of(text: str, rooms: tuple[str, ...], asked: str) -> None:
+    assert asked in _factors(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms", "placed"), [
+    # dev3 (a checklist)
+    ("- Shelving unit\n  - The storage box lives on the bottom shelf – leave it there.", ("craft_room",),
+     "on(storage_box, shelving_unit)"),
+    # written here: a study
+    ("- Bookcase\n  - The photo frame sits on the top shelf - leave it there.", ("study",),
+     "on(photo_frame, bookshelf)"),
+])
+def test_a_ranked_shelf_is_its_piece_of_furniture(text: str, rooms: tuple[str, ...], placed: str) -> None:
+    assert placed in described_placements(_brief(text, rooms), load_catalog())
+    assert not any(placed in vs for vs in _factors(text, rooms).values())
+
+
+@pytest.mark.parametrize(("text", "rooms", "placed"), [
+    # dev3 (a checklist)
+    ("- Desk\n  - Desk lamp: stays on the desk. Whenever it's been left on, switch it off.", ("craft_room",),
+     "on(desk_lamp, desk)"),
+    # written here: a bathroom, a dash
+    ("- Towel - stays on the towel rack. If it is wet, hang it up.", ("bathroom",), "on(towel, towel_rack)"),
+])
+def test_a_heading_answered_by_a_subjectless_verb_of_place_places_its_thing(text: str, rooms: tuple[str, ...],
+                                                                            placed: str) -> None:
+    assert placed in described_placements(_brief(text, rooms), load_catalog())

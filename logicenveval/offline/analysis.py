@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import json
 import re
+from collections import Counter
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
@@ -47,6 +48,7 @@ from logicenveval.offline.placement import described_placements
 from logicenveval.offline.sentences import (
     ACTIONS,
     EVENT_VERBS,
+    FORMS,
     HABITUAL_WORDS,
     PREP_IN,
     PREP_ON,
@@ -327,6 +329,13 @@ class _Reader:
                          if str(self.lex.roles.get(r, {}).get("category", "")) in PERSONIFIED]
                 if dolls:
                     found.append(Mention((dolls[-1],), i, i + 1, "pronoun"))
+                continue
+            if i not in covered and w in FORMS and i > 0 and words[i - 1] == "the" and words[i - 2 : i - 1] not in (
+                    [p] for p in PLACE_PREPS) \
+                    and self.topic_kind == "role" and self.topic and not set(words[i + 1:i + 2]) & {"of", "for"}:
+                # "Tin foil: in case the roll has fallen on the floor": no thing is named by the
+                # word, so it is the topic's own roll or bottle (`offline.naming` names no other)
+                found.append(Mention(self.topic, i, i + 1, "pronoun"))
                 continue
             if i in covered or w not in PRONOUNS:
                 continue
@@ -796,6 +805,8 @@ class _Reader:
             w = words[k]
             if w == "out" and not set(skipped) & {"is", "are", "was", "were", "already", "still"}:
                 break  # `take it out` is an action, `it is out` a state
+            if w == "out" and k + 1 < len(words) and words[k + 1] in PREP_ON | PREP_IN | {"of", "there", "here"}:
+                break  # "still out on the table", "out of the box": where it is, not switched off
             if w in ("on", "off") and k + 1 < len(words) and words[k + 1] in ARTICLES | PRONOUNS | {"floor"} \
                     and not (skipped and skipped[-1] in ("switched", "turned")):
                 break  # `on the table` is a place, not `switched on`
@@ -1074,12 +1085,32 @@ def _bullet_items(text: str, sentences: list[str]) -> list[int | None]:
     return out
 
 
-def _speaker(reader: _Reader, text: str) -> bool:
-    """A heading that is a speaker's label in a transcript or a Q&A ("DAD:", "ME:", "Q:", "A:"):
-    one word written in capitals that names no thing, room or place of the task."""
+def _speaker(reader: _Reader, text: str, speakers: frozenset[str] = frozenset()) -> bool:
+    """A heading that is a speaker's label in a transcript, a chat or a Q&A ("DAD:", "ME:", "Q:",
+    "Priya:"): one word that names no thing, room or place of the task, written in capitals, or
+    one of `speakers` (`_speakers`)."""
     label = text.strip()
     toks = tokens(expand(label))
-    return len(toks) == 1 and label.isalpha() and label.isupper() and not reader.lex.find_mentions(toks)
+    return len(toks) == 1 and label.isalpha() and (label.isupper() or label in speakers) and not (
+        reader.lex.find_mentions(toks))
+
+
+#: a line opened by a capitalised word and a colon ("Priya: morning!!")
+_LINE_LABEL = re.compile(r"^[ \t]*([A-Z][a-z]+):", re.M)
+
+
+def _speakers(reader: _Reader, text: str) -> frozenset[str]:
+    """The names of a chat's speakers: capitalised words that open two or more lines before a
+    colon ("Priya: ...", "Sam: ...") and mean nothing to the reader (not "Wet:", "Dry:", "Note:"
+    ... a word it knows)."""
+    counts = Counter(_LINE_LABEL.findall(text))
+    return frozenset(w for w, n in counts.items() if n >= 2 and reader._unknown(w.lower()))
+
+
+def _turn_starts(reader: _Reader, pieces: list[Piece], speakers: frozenset[str]) -> bool:
+    """Whether a sentence is a speaker's label alone ("Priya:"): a new turn of a transcript, so
+    whatever the turn before left open (a line without a full stop) ends there."""
+    return len(pieces) == 1 and pieces[0].role == "heading" and _speaker(reader, pieces[0].text, speakers)
 
 
 def _instructs(reader: _Reader, text: str) -> bool:
@@ -1176,7 +1207,7 @@ def _read_heading(reader: _Reader, text: str) -> tuple[list[Fact], tuple[str, ..
 
 #: state flags only some kinds of thing take (a shirt does not open, a towel is not switched on),
 #: with the catalog capability that allows each
-FITTED_BY = {"open": "openable", "toggled_on": "toggleable"}
+FITTED_BY = {"open": "openable", "toggled_on": "toggleable", "filled": "fillable"}
 FITTED = frozenset(FITTED_BY)
 
 
@@ -1206,7 +1237,9 @@ ANY_OF = re.compile(r"\b(?:(?:either|neither|any|one|each|both|all)\s+of\s+(?:th
 
 def _members(clauses: list[Clause], kinds: Mapping[str, str], sentence: int) -> tuple[str, ...]:
     """The roles of the group last named: the latest clause of this sentence or the one before
-    naming two or more roles of one category (the items of an enumeration)."""
+    naming two or more roles of one category (the items of an enumeration), or else saying one
+    thing of two or more things ("the salt and pepper shakers live in the sideboard", "the doll
+    and the teddy are on the bed": what its facts are said of)."""
     for cl in reversed(clauses):
         if cl.sentence < sentence - 1:
             break
@@ -1217,6 +1250,9 @@ def _members(clauses: list[Clause], kinds: Mapping[str, str], sentence: int) -> 
         group = max(by_kind.values(), key=len, default=[])
         if len(group) > 1:
             return tuple(group)
+        said_of = list(dict.fromkeys(f.subject for f in cl.facts if f.subject in kinds))
+        if len(said_of) > 1 and len({f.condition.replace(f.subject, "") for f in cl.facts}) == 1:
+            return tuple(said_of)
     return ()
 
 
@@ -1251,6 +1287,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     spread: tuple[int, tuple[str, ...]] = (-1, ())
     cut = [split_clauses(sent) for sent in sentences]
     bullets = _bullet_items(str(brief["description"]), sentences)
+    speakers = _speakers(reader, unquote(str(brief["description"])))
     for si, sent in enumerate(sentences):
         pieces = cut[si]
         # the piece after each (a heading's answer may open the next part: "On the floor: into ...")
@@ -1259,7 +1296,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         for pi, (text, cue, role) in enumerate(pieces):
             if (DISTRIBUTIVE.match(text) or ANY_OF.search(text)) and (members := _members(clauses, categories, grammatical)):
                 spread = (grammatical, members)
-            if role == "heading" and _speaker(reader, text):
+            if role == "heading" and _speaker(reader, text, speakers):
                 clauses.append(Clause(text, grammatical, cue, "statement", (), ()))
                 continue  # "DAD: ...", "ME: ...", "Q: ...": who speaks, nothing of the scene
             if role == "heading":
@@ -1327,7 +1364,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
         if bullets[si] is not None and si + 1 < len(sentences) and bullets[si + 1] == bullets[si]:
             continue  # "* Bedroom: table lamp on? -> off. Wardrobe doors open? -> close.": one item
-        if bullets[si] is not None or sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences):
+        if bullets[si] is not None or sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences) or (
+                _turn_starts(reader, cut[si + 1], speakers)):
             # (a bullet item ends its unit, full stop or not: "- racket too if its lying on the floor")
             grammatical += 1
 

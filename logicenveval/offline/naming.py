@@ -34,7 +34,7 @@ from logicenveval.offline.lexicon import (
     verb_at,
     words_of,
 )
-from logicenveval.offline.sentences import PERSONAL_SUBJECTS, STATE_WORDS, expand, unquote
+from logicenveval.offline.sentences import FORMS, PERSONAL_SUBJECTS, STATE_WORDS, expand, unquote
 
 
 @handler("name_objects")
@@ -363,6 +363,48 @@ class _Reader:
             return n + 1, category
         return n, category
 
+    def part_of_named(self, i: int, prev: str) -> bool:
+        """Whether word `i` is a ranked part ("the bottom shelf", "the top level") of a piece of
+        furniture already named whose names say it has such parts (a shelving unit, "open
+        shelves"; a bookshelf): a part of it, no object of its own."""
+        part = _PARTS.get(self.text.words[i])
+        if part is None or prev not in _ORDINALS - {"one", "other", "next", "last"}:
+            return False
+        return any(part in {w for text in (c, *self.catalog.categories[c].synonyms) for w in words_of(text)}
+                   and not self.catalog.categories[c].pickable for c in self.recent)
+
+    def packaging_of_topic(self, i: int) -> bool:
+        """Whether word `i` is "the <form>" (`_FORMS`: roll, bottle, tube ...) said of the thing
+        its sentence named just before, a carried thing ("Tin foil: in case the roll has fallen
+        on the floor", "Shampoo - if the bottle is empty, ..."): the thing's own roll or bottle,
+        not a thing of another kind. Not after a
+        preposition ("put them in the box": a place), nor a word a kind was already named by."""
+        words = self.text.words
+        if words[i] not in FORMS or i < 2 or words[i - 1] != "the" or words[i - 2] in _PREPOSITIONS:
+            return False
+        if any(words[i] in used for used in self.used.values()) or not self.recent:
+            return False
+        topic = self.recent[-1]
+        start = self.text.sentence_start(i)
+        said = any(self.match(k)[1] == topic for k in range(start, i))
+        return said and self.catalog.categories[topic].pickable
+
+    def shared_head(self, i: int) -> str | None:
+        """The kind word `i` names with the head noun of the next name: "the salt and pepper
+        shakers" are a salt shaker and a pepper shaker, "the tea or coffee cups" a tea cup and a
+        coffee cup, "the desk and floor lamps" a desk lamp and a floor lamp (a determiner, the
+        modifier before "and"/"or", then a name of two or more words whose head is written in
+        the plural, all within one stretch without punctuation)."""
+        words, gaps = self.text.words, self.text.gaps
+        if i < 1 or words[i - 1] not in _DETERMINERS or i + 3 >= len(words) or words[i + 1] not in ("and", "or") or any(
+                gaps[k].strip() for k in (i + 1, i + 2)):
+            return None
+        n, category = self.match(i + 2)
+        end = i + 2 + n
+        if category is None or n < 2 or self.text.raw[end - 1] == words[end - 1]:
+            return None
+        return self.phrases.get((words[i], *words[i + 3:end]))
+
     # -- enumerations ----------------------------------------------------------------------
 
     def enumerations(self) -> None:
@@ -599,11 +641,19 @@ class _Reader:
                         self.instance(spare, f"spare_{words_of(spare)[-1]}", {})
                 i += 1
                 continue
-            n, category = self.kind_at(i)
+            if self.part_of_named(i, prev):
+                i += 1  # "Shelving unit - the storage box lives on the bottom shelf": its shelf
+                continue
+            if self.packaging_of_topic(i):
+                i += 1  # "Tin foil: in case the roll has fallen ...": the foil's roll, no toilet roll
+                continue
+            shared = self.shared_head(i)
+            n, category = (1, shared) if shared is not None else self.kind_at(i)
             if category is None:
                 i += 1
                 continue
-            n, category = self.compound(i, n, category)
+            if shared is None:
+                n, category = self.compound(i, n, category)
             if self.predicate_noun(i):
                 i += n  # "The essay collection is on the desk, that's a library book"
                 continue
