@@ -351,9 +351,12 @@ class _Reader:
             if w in ("one", "ones"):  # "a dirty one": the kind the clause or sentence is about
                 before = [m for m in before if all(x in ARTICLES | set(STATE_WORDS) or self._unknown(x)
                                                    for x in words[: m.start])]
-            elif w == "it" and words[i + 1 : i + 3] in (["is", "a"], ["is", "an"]) and len(before) > 1:
+            elif (w == "it" and words[i + 1 : i + 3] in (["is", "a"], ["is", "an"])
+                  or w in ("it", "they") and i > 0 and words[i - 1] in ("is", "are", "was", "were")
+                  and i - 1 in self.commas) and len(before) > 1:
                 # "a document on the desk and it is a bill": the pronoun of a predicate noun is the
-                # clause's subject, not a place named after a preposition
+                # clause's subject, not a place named after a preposition; so is the pronoun of a
+                # question asked of a thing put first ("the wine bottle on the table, is it empty?")
                 subj = [m for m in before if m.start == 0 or words[m.start - 1] not in PREP_ON | PREP_IN]
                 before = subj[:1] or before
             elif i > 0 and words[i - 1] in ACTIONS and any(_placed(words, m) for m in before):
@@ -1207,7 +1210,7 @@ def _read_heading(reader: _Reader, text: str) -> tuple[list[Fact], tuple[str, ..
 
 #: state flags only some kinds of thing take (a shirt does not open, a towel is not switched on),
 #: with the catalog capability that allows each
-FITTED_BY = {"open": "openable", "toggled_on": "toggleable", "filled": "fillable"}
+FITTED_BY = {"open": "openable", "toggled_on": "toggleable"}
 FITTED = frozenset(FITTED_BY)
 
 
