@@ -552,3 +552,7 @@ def test_a_ranked_shelf_of_a_named_piece_of_furniture_is_its_part(text: str, roo
 
 def test_a_ranked_shelf_with_no_shelved_furniture_named_is_a_shelf() -> None:
     assert "wall_shelf" in {c for c, _ in _named("Put the novels on the top shelf.", ("study",)).values()}
+
+
+def test_a_form_word_without_a_heading_is_a_thing_of_its_own() -> None:
+    assert "trash_bag" in {c for c, _ in _named("Take the mug; if the bag is full, take it out.", ("kitchen",)).values()}

@@ -374,11 +374,12 @@ class _Reader:
                    and not self.catalog.categories[c].pickable for c in self.recent)
 
     def packaging_of_topic(self, i: int) -> bool:
-        """Whether word `i` is "the <form>" (`_FORMS`: roll, bottle, tube ...) said of the thing
-        its sentence named just before, a carried thing ("Tin foil: in case the roll has fallen
-        on the floor", "Shampoo - if the bottle is empty, ..."): the thing's own roll or bottle,
-        not a thing of another kind. Not after a
-        preposition ("put them in the box": a place), nor a word a kind was already named by."""
+        """Whether word `i` is "the <form>" (`sentences.FORMS`: roll, bottle, tube ...) said of the
+        carried thing named in the heading its clause answers ("Tin foil: in case the roll has
+        fallen on the floor", "Shampoo - if the bottle is empty, ..."): the thing's own roll or
+        bottle, not a thing of another kind. Not after a preposition ("put them in the box": a
+        place), nor a word a kind was already named by, nor without a heading ("Take the mug; if
+        the bag is full, ...": a bag of its own)."""
         words = self.text.words
         if words[i] not in FORMS or i < 2 or words[i - 1] != "the" or words[i - 2] in _PREPOSITIONS:
             return False
@@ -386,8 +387,10 @@ class _Reader:
             return False
         topic = self.recent[-1]
         start = self.text.sentence_start(i)
-        said = any(self.match(k)[1] == topic for k in range(start, i))
-        return said and self.catalog.categories[topic].pickable
+        # named in the heading the clause answers: before a colon or dash between it and the word
+        headed = any(self.match(k)[1] == topic and any(_HEADING.search(self.text.gaps[j]) for j in range(k + 1, i))
+                     for k in range(start, i))
+        return headed and self.catalog.categories[topic].pickable
 
     def shared_head(self, i: int) -> str | None:
         """The kind word `i` names with the head noun of the next name: "the salt and pepper
