@@ -498,3 +498,25 @@ def test_a_ranked_shelf_is_its_piece_of_furniture(text: str, rooms: tuple[str, .
 def test_a_heading_answered_by_a_subjectless_verb_of_place_places_its_thing(text: str, rooms: tuple[str, ...],
                                                                             placed: str) -> None:
     assert placed in described_placements(_brief(text, rooms), load_catalog())
+
+
+# ----- "put it back" with no place: back where the text said the thing lives ----------------------
+
+def _goals(text: str, rooms: tuple[str, ...]) -> set[str]:
+    return {f.condition for c in analyse(_brief(text, rooms), load_catalog()).clauses for f in c.facts if f.goal}
+
+
+@pytest.mark.parametrize(("text", "rooms", "goals"), [
+    # dev3 (a chat)
+    ("Priya: the salt and pepper shakers live in the sideboard too. if either of them is still out on the "
+     "table, pop it back in\nSam: got it", ("formal_dining_room",),
+     {"inside(salt_shaker, sideboard)", "inside(pepper_shaker, sideboard)"}),
+    # written here: a study
+    ("The stapler is kept on the desk. If it is on the floor, put it back.", ("study",), {"on(stapler, desk)"}),
+])
+def test_put_it_back_sends_a_thing_to_where_it_lives(text: str, rooms: tuple[str, ...], goals: set[str]) -> None:
+    assert _goals(text, rooms) == goals
+
+
+def test_put_it_back_without_a_home_said_has_no_goal() -> None:
+    assert not _goals("If the stapler is on the floor, put it back.", ("study",))

@@ -286,6 +286,8 @@ class _Reader:
         #: every goal location of the last clause that had one (one per thing after
         #: "respectively"), for "unless they are already there"
         self.last_goals: list[Fact] = []
+        #: where each thing is kept or lives, as the text said (`HOMES`): where "put it back" goes
+        self.homes: dict[str, Fact] = {}
         self.last_state: dict[str, Fact] = {}
         #: the thing last spoken of, not a place it goes to ("Bath towel on the floor? Wet: into
         #: the basket. Dry: ..."): what a heading without a subject is said of
@@ -541,10 +543,13 @@ class _Reader:
         said_by_pronoun = {r for m in mentions if m.kind == "pronoun" for r in m.roles}
         facts = [self._fit(f) if f.kind == "state" and f.subject in said_by_pronoun else f for f in facts
                  if self._holds(f)]
+        facts += self._back_home(words, mentions, facts)
         goals = [f for f in facts if f.kind == "location" and f.goal]
         if goals:
             self.last_goals = goals
         for f in facts:
+            if f.kind == "location" and f.home:
+                self.homes[f.subject] = f
             if f.kind == "location" and not f.goal:
                 self.last_location[f.subject] = f
             if f.kind == "location" and f.goal:
@@ -553,6 +558,19 @@ class _Reader:
                 self.last_state[f.key] = f
         names = tuple(dict.fromkeys(r for m in subjects for r in m.roles))
         return list(dict.fromkeys(facts)), names
+
+    def _back_home(self, words: list[str], mentions: list[Mention], facts: list[Fact]) -> list[Fact]:
+        """"put it back", "pop them back in": an instruction that moves a thing back and names no
+        place sends it to where the text said it is kept or lives ("the salt and pepper shakers
+        live in the sideboard ... pop it back in")."""
+        if "back" not in words or any(f.kind == "location" for f in facts) or not imperative(words):
+            return []
+        k = words.index("back")
+        if any(m.kind in ("role", "room", "floor") and m.start > k for m in mentions):
+            return []
+        moved = [r for m in mentions if m.kind == "pronoun" and m.end <= k for r in m.roles]
+        return [replace(self.homes[r], goal=True, negated=False, definite=False, home=False, modifier=False)
+                for r in dict.fromkeys(moved) if r in self.homes]
 
     def _holds(self, f: Fact) -> bool:
         """A thing on or in a role that cannot hold it (a sofa in a toy box, a phone on a book:
