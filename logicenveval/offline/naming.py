@@ -189,6 +189,9 @@ class _Reader:
         #: off the text as written) and, per kind, the owners of its mentions in order
         self.possessors = {m.group(1).lower() for m in _POSSESSOR.finditer(description.replace("\u2019", "'"))}
         self.owners: dict[str, list[str]] = {}
+        #: kinds named at least once as a particular thing (after a determiner or a count, or in
+        #: the singular), not only by a bare plural (`class_of_named`)
+        self.particular: set[str] = set()
 
     # -- noun phrases ----------------------------------------------------------------------
 
@@ -362,6 +365,16 @@ class _Reader:
         if words[j] in _PACKAGING or len(kinds) > 1:
             return n + 1, category
         return n, category
+
+    def class_of_named(self, category: str) -> bool:
+        """Whether `category` was named only by a bare plural ("Toys are kept in the toy box")
+        and the text names things of kinds of its own that are values of its kind attribute (a
+        doll, a toy car: a toy's kinds are doll, car ...): the class those things belong to, no
+        object of its own."""
+        if category in self.particular:
+            return False
+        values = {v for key in KIND_ATTRIBUTES for v in self.catalog.categories[category].attributes.get(key, ())}
+        return any(c != category and set(words_of(c)) & values for c in self.kinds)
 
     def part_of_named(self, i: int, prev: str) -> bool:
         """Whether word `i` is a ranked part ("the bottom shelf", "the top level") of a piece of
@@ -679,6 +692,8 @@ class _Reader:
                 self.instance(category, f"other_{last}", {})  # "a lamp on the desk and another lamp"
             else:
                 kind.generic = True
+                if prev in _DETERMINERS or prev in _COUNTS or self.text.raw[i + n - 1] == words[i + n - 1]:
+                    self.particular.add(category)
                 if prev in self.possessors and self.match(i - 1)[1] is None:
                     self.owners.setdefault(category, []).append(prev)
                 if prev in _COUNTS:
@@ -694,6 +709,8 @@ class _Reader:
         found: list[dict[str, Any]] = []
         for category, kind in self.kinds.items():
             told_apart = len(kind.instances) >= max(2, kind.count)
+            if kind.generic and not told_apart and not kind.instances and self.class_of_named(category):
+                continue  # "Toys are kept in the toy box. Should the doll or the toy car ...": the class
             if kind.generic and not told_apart:
                 found.append({"name": _snake(category), "category": category, "attributes": {}})
             found += [{"name": name, "category": category, "attributes": attrs}
