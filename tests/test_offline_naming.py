@@ -469,3 +469,113 @@ def test_a_name_singularised_into_another_kind_s_name_does_not_take_its_word(tex
     # "glasses" (spectacles) singularises to "glass", a drinking glass's name as written
     assert category in {c for c, _ in _named(text, ("kitchen", "bedroom")).values()}
     assert not ({"glasses", "drinking_glass"} - {category}) & {c for c, _ in _named(text, ("kitchen", "bedroom")).values()}
+
+
+# -- rules from the third development set's new tasks ------------------------------------------
+
+@pytest.mark.parametrize(("text", "rooms", "category"), [
+    # dev3 fitness_room_work_order: a work order
+    ("The check-in computer must be shut down, provided that it is still switched on.", ("fitness_room",),
+     "desktop_computer"),
+    # written here: a bathroom
+    ("Hang the towel on the over-the-door rack.", ("bathroom",), "towel_rack"),
+])
+def test_a_hyphenated_modifier_stands_between_a_determiner_and_its_noun(text: str, rooms: tuple[str, ...],
+                                                                        category: str) -> None:
+    """"the check-in computer": a noun that names no kind by itself must start a noun phrase;
+    a hyphenated modifier after the determiner keeps it one."""
+    assert category in {c for c, _ in _named(text, rooms).values()}
+
+
+@pytest.mark.parametrize(("text", "rooms", "category"), [
+    # dev3 fitness_room_work_order: "fitness_room" names no room type (the fallback is a guess)
+    ("The check-in computer must be shut down, provided that it is still switched on.", ("fitness_room",),
+     "desktop_computer"),
+    # written here: another room id naming no type; the word heads a desktop computer's name and
+    # only a laptop's synonym ("notebook computer")
+    ("Turn off the computer before you leave.", ("music_room",), "desktop_computer"),
+    # a room type the id does name still tells the kinds apart: a study's computer is a laptop
+    ("Turn off the computer before you leave.", ("study",), "laptop"),
+])
+def test_a_room_id_naming_no_type_says_nothing_of_a_bare_noun_s_kind(text: str, rooms: tuple[str, ...],
+                                                                      category: str) -> None:
+    assert {c for c, _ in _named(text, rooms).values()} == {category}
+
+
+@pytest.mark.parametrize(("text", "rooms", "categories"), [
+    # dev3 dining_room_party_texts: a chat
+    ("Priya: the salt and pepper shakers live in the sideboard too.", ("formal_dining_room",),
+     {"salt_shaker", "pepper_shaker", "sideboard"}),
+    # written here: a hallway, and a first word that names a kind by itself (a coat, a desk)
+    ("The coat and key hooks are by the door.", ("hallway",), {"coat_hook", "key_hook"}),
+    ("The desk and floor lamps live in the study.", ("study",), {"desk_lamp", "floor_lamp"}),
+])
+def test_two_modifiers_share_a_plural_head(text: str, rooms: tuple[str, ...], categories: set[str]) -> None:
+    """"the salt and pepper shakers": a salt shaker and a pepper shaker, not a pepper shaker alone
+    (nor a coat and a key hook, a desk and a floor lamp)."""
+    assert {c for c, _ in _named(text, rooms).values()} == categories
+
+
+def test_two_things_each_with_its_own_determiner_are_not_one_head() -> None:
+    assert {c for c, _ in _named("Put the desk and the floor lamp away.", ("study",)).values()} == {"desk", "floor_lamp"}
+
+
+@pytest.mark.parametrize(("text", "rooms", "categories"), [
+    # dev3 craft_room_checklist: a checklist
+    ("- Cart\n  - Tin foil: in case the roll has fallen on the floor, put it back on the cart.", ("craft_room",),
+     {"cart", "aluminum_foil"}),
+    # written here: a bathroom
+    ("Shampoo - if the bottle is empty, put it in the trash can.", ("bathroom",), {"shampoo", "trash_can"}),
+])
+def test_the_form_a_thing_comes_in_is_that_thing(text: str, rooms: tuple[str, ...], categories: set[str]) -> None:
+    """"Tin foil: in case the roll has fallen": the foil's roll (no toilet roll); "Shampoo - if
+    the bottle is empty": the shampoo's bottle (no bottle of its own)."""
+    assert {c for c, _ in _named(text, rooms).values()} == categories
+
+
+def test_a_form_word_after_a_preposition_is_a_place() -> None:
+    # "Toys: put them in the box": the box is where they go, a thing of its own
+    assert len(_named("Toy car: put it in the box.", ("kids_room",))) == 2
+
+
+@pytest.mark.parametrize(("text", "rooms", "categories"), [
+    # dev3 craft_room_checklist
+    ("- Shelving unit\n  - The storage box lives on the bottom shelf – leave it there.", ("craft_room",),
+     {"shelving_unit", "storage_box"}),
+    # written here: a study's bookcase
+    ("The bookcase is by the window. Put the novels on the top shelf.", ("study",), {"bookshelf", "novel"}),
+])
+def test_a_ranked_shelf_of_a_named_piece_of_furniture_is_its_part(text: str, rooms: tuple[str, ...],
+                                                                  categories: set[str]) -> None:
+    assert {c for c, _ in _named(text, rooms).values()} == categories
+
+
+def test_a_ranked_shelf_with_no_shelved_furniture_named_is_a_shelf() -> None:
+    assert "wall_shelf" in {c for c, _ in _named("Put the novels on the top shelf.", ("study",)).values()}
+
+
+def test_a_form_word_without_a_heading_is_a_thing_of_its_own() -> None:
+    assert "trash_bag" in {c for c, _ in _named("Take the mug; if the bag is full, take it out.", ("kitchen",)).values()}
+
+
+@pytest.mark.parametrize(("text", "rooms", "categories"), [
+    # dev3 childrens_room_guest_manual: a guest manual
+    ("Toys are kept in the toy box. Should the doll or the toy car be found on the bunk bed, it is to be "
+     "returned to the toy box.", ("childrens_room",), {"toy_box", "doll", "toy_car", "bunk_bed"}),
+    # written here: a kids' room, other toys
+    ("Toys belong in the toy box. If the teddy bear or the ball is on the bed, put it back.", ("kids_room",),
+     {"toy_box", "teddy_bear", "ball", "bed"}),
+])
+def test_a_bare_plural_class_of_named_things_is_no_object(text: str, rooms: tuple[str, ...],
+                                                          categories: set[str]) -> None:
+    """"Toys are kept in the toy box" before a doll and a toy car: the class they belong to (a
+    toy's kinds are doll, car, ...), not a toy of its own."""
+    assert {c for c, _ in _named(text, rooms).values()} == categories
+
+
+@pytest.mark.parametrize("text", [
+    "Toys belong in the toy box. If a toy is on the bed, put it in the box.",  # a toy itself
+    "The toys go in the toy box; the doll is on the floor.",  # a determiner: the toys there are
+])
+def test_a_class_named_as_a_thing_is_still_an_object(text: str) -> None:
+    assert "toy" in {c for c, _ in _named(text, ("kids_room",)).values()}

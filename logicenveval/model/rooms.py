@@ -58,7 +58,14 @@ _BY_SNAKE = {_snake(t): t for t in ROOM_TYPES}
 
 
 def room_type_of(room_id: str) -> str:
-    """Best room type for a room id: `living_room` -> `LivingRoom`, `bedroom_2` -> `Bedroom`."""
+    """Best room type for a room id: `living_room` -> `LivingRoom`, `bedroom_2` -> `Bedroom`;
+    `LivingRoom` for an id that names no known type ("fitness_room")."""
+    return known_room_type(room_id) or "LivingRoom"
+
+
+def known_room_type(room_id: str) -> str | None:
+    """The room type a room id names (`room_type_of`), or None when it names none: then the
+    type `room_type_of` falls back on is a guess, no evidence of what the room holds."""
     if room_id in ROOM_TYPES:
         return room_id
     key = re.sub(r"_?\d+$", "", room_id.lower())
@@ -72,7 +79,7 @@ def room_type_of(room_id: str) -> str:
     for alias, rtype in _ALIASES.items():
         if alias in key:
             return rtype
-    return "LivingRoom"
+    return None
 
 
 def is_room_type(name: str) -> bool:

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import json
 import re
+from collections import Counter
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
@@ -47,11 +48,13 @@ from logicenveval.offline.placement import described_placements
 from logicenveval.offline.sentences import (
     ACTIONS,
     EVENT_VERBS,
+    FORMS,
     HABITUAL_WORDS,
     PREP_IN,
     PREP_ON,
     STATE_WORDS,
     TEND,
+    determiner,
     expand,
     habitual,
     split_sentences,
@@ -280,6 +283,11 @@ class _Reader:
         #: the last goal location and the last state spoken of ("put the pan on the stove",
         #: "switch the toaster on"), for "unless it is already there / on"
         self.last_goal: Fact | None = None
+        #: every goal location of the last clause that had one (one per thing after
+        #: "respectively"), for "unless they are already there"
+        self.last_goals: list[Fact] = []
+        #: where each thing is kept or lives, as the text said (`HOMES`): where "put it back" goes
+        self.homes: dict[str, Fact] = {}
         self.last_state: dict[str, Fact] = {}
         #: the thing last spoken of, not a place it goes to ("Bath towel on the floor? Wet: into
         #: the basket. Dry: ..."): what a heading without a subject is said of
@@ -290,6 +298,10 @@ class _Reader:
         self.coordinated = False
         #: the words of the clause being read that a comma stands before (`_joined`)
         self.commas: frozenset[int] = frozenset()
+        #: the words of the clause being read that a hyphen joins to the word before ("the
+        #: lost-property cart"): a hyphenated modifier counts as one word between a preposition
+        #: and its place (`_location`)
+        self.hyphens: frozenset[int] = frozenset()
         #: the words of the clause being read where a thing's name starts (`_state`)
         self.starts: frozenset[int] = frozenset()
 
@@ -320,6 +332,13 @@ class _Reader:
                 if dolls:
                     found.append(Mention((dolls[-1],), i, i + 1, "pronoun"))
                 continue
+            if i not in covered and w in FORMS and i > 0 and words[i - 1] == "the" and words[i - 2 : i - 1] not in (
+                    [p] for p in PLACE_PREPS) \
+                    and self.topic_kind == "role" and self.topic and not set(words[i + 1:i + 2]) & {"of", "for"}:
+                # "Tin foil: in case the roll has fallen on the floor": no thing is named by the
+                # word, so it is the topic's own roll or bottle (`offline.naming` names no other)
+                found.append(Mention(self.topic, i, i + 1, "pronoun"))
+                continue
             if i in covered or w not in PRONOUNS:
                 continue
             if w == "it" and words[i + 1 : i + 2] in (["is"], ["was"], ["seems"], ["may"], ["might"], ["could"]) \
@@ -334,9 +353,12 @@ class _Reader:
             if w in ("one", "ones"):  # "a dirty one": the kind the clause or sentence is about
                 before = [m for m in before if all(x in ARTICLES | set(STATE_WORDS) or self._unknown(x)
                                                    for x in words[: m.start])]
-            elif w == "it" and words[i + 1 : i + 3] in (["is", "a"], ["is", "an"]) and len(before) > 1:
+            elif (w == "it" and words[i + 1 : i + 3] in (["is", "a"], ["is", "an"])
+                  or w in ("it", "they") and i > 0 and words[i - 1] in ("is", "are", "was", "were")
+                  and i - 1 in self.commas) and len(before) > 1:
                 # "a document on the desk and it is a bill": the pronoun of a predicate noun is the
-                # clause's subject, not a place named after a preposition
+                # clause's subject, not a place named after a preposition; so is the pronoun of a
+                # question asked of a thing put first ("the wine bottle on the table, is it empty?")
                 subj = [m for m in before if m.start == 0 or words[m.start - 1] not in PREP_ON | PREP_IN]
                 before = subj[:1] or before
             elif i > 0 and words[i - 1] in ACTIONS and any(_placed(words, m) for m in before):
@@ -410,6 +432,7 @@ class _Reader:
         toks = tokens(said)
         words = [t[0] for t in toks]
         self.commas = frozenset(k for k in range(1, len(toks)) if "," in said[toks[k - 1][2]:toks[k][1]])
+        self.hyphens = frozenset(k for k in range(1, len(toks)) if said[toks[k - 1][2]:toks[k][1]] == "-")
         mentions = self.mentions(words, toks)
         self.starts = frozenset(x.start for x in mentions if x.kind == "role")
         for m in mentions:
@@ -422,8 +445,8 @@ class _Reader:
         subjects = [m for m in mentions if m.kind in ("role", "pronoun")]
         negated = any(_negation(w) for w in words)
         already = self._already(words, mentions, negated)
-        if already is not None:
-            return [already], (already.subject,)
+        if already:
+            return already, tuple(dict.fromkeys(f.subject for f in already))
         goal_of = {self.last_goal.subject} if self.last_goal is not None else set()
         if subjects and subjects[0].kind == "pronoun" and any(p in " ".join(words) for p in ELSEWHERE) and not (
                 set(subjects[0].roles) & (set(self.last_location) | goal_of)) and not any(
@@ -515,10 +538,18 @@ class _Reader:
                     facts += [Fact(r, f"state({r}, {flag})", "state", flag, negated=negated != (not pol))
                               for r in self.topic]
                     break
+        if "respectively" in words:
+            facts = _respectively(facts)
         said_by_pronoun = {r for m in mentions if m.kind == "pronoun" for r in m.roles}
         facts = [self._fit(f) if f.kind == "state" and f.subject in said_by_pronoun else f for f in facts
                  if self._holds(f)]
+        facts += self._back_home(words, mentions, facts)
+        goals = [f for f in facts if f.kind == "location" and f.goal]
+        if goals:
+            self.last_goals = goals
         for f in facts:
+            if f.kind == "location" and f.home:
+                self.homes[f.subject] = f
             if f.kind == "location" and not f.goal:
                 self.last_location[f.subject] = f
             if f.kind == "location" and f.goal:
@@ -527,6 +558,19 @@ class _Reader:
                 self.last_state[f.key] = f
         names = tuple(dict.fromkeys(r for m in subjects for r in m.roles))
         return list(dict.fromkeys(facts)), names
+
+    def _back_home(self, words: list[str], mentions: list[Mention], facts: list[Fact]) -> list[Fact]:
+        """"put it back", "pop them back in": an instruction that moves a thing back and names no
+        place sends it to where the text said it is kept or lives ("the salt and pepper shakers
+        live in the sideboard ... pop it back in")."""
+        if "back" not in words or any(f.kind == "location" for f in facts) or not imperative(words):
+            return []
+        k = words.index("back")
+        if any(m.kind in ("role", "room", "floor") and m.start > k for m in mentions):
+            return []
+        moved = [r for m in mentions if m.kind == "pronoun" and m.end <= k for r in m.roles]
+        return [replace(self.homes[r], goal=True, negated=False, definite=False, home=False, modifier=False)
+                for r in dict.fromkeys(moved) if r in self.homes]
 
     def _holds(self, f: Fact) -> bool:
         """A thing on or in a role that cannot hold it (a sofa in a toy box, a phone on a book:
@@ -548,18 +592,18 @@ class _Reader:
         r = fitting[0]
         return replace(f, subject=r, condition=f"state({r}, {f.key})")
 
-    def _already(self, words: list[str], mentions: list[Mention], negated: bool) -> Fact | None:
+    def _already(self, words: list[str], mentions: list[Mention], negated: bool) -> list[Fact]:
         """`unless it is already there / on`: the condition is the previous instruction's result;
         so is a place said only as "in there" / "on there" of a pronoun ("leo's car goes in the
         toy box. if it's not in there put it in there", "the mugs go on the rack; if they are not
         on there, ..."): "there" is where the instruction before put it."""
         if any(m.kind == "role" for m in mentions) or len(words) > 6:
-            return None
+            return []
         if "already" not in words:
             rest = [w for w in words if w not in ALREADY_FILLER and w not in PRONOUNS]
             if len(rest) != 2 or rest[0] not in PREP_ON | PREP_IN or rest[1] != "there" or not any(
                     m.kind == "pronoun" for m in mentions):
-                return None
+                return []
             words = [*words, "already"]  # read as "it is (not) already in there"
         pronouns = [m for m in mentions if m.kind == "pronoun"]
         said = set(pronouns[0].roles) if pronouns else set()
@@ -571,18 +615,24 @@ class _Reader:
         there = after[:1] in (["there"], ["here"]) or set(content) <= {"there", "here"} or (
             len(content) > 1 and content[0] in PREP_ON | PREP_IN and all(w in PRONOUNS | ARTICLES | {"there"}
                                                                          for w in content[1:]))
+        # "my bat and my racket go in the bin and on the bench, respectively. If they're already
+        # there, ...": a plural pronoun after an instruction with a goal per thing asks each
+        # thing whether it is at its own goal
+        plural = [g for g in self.last_goals if pronouns and words[pronouns[0].start] in ("they", "them")]
+        if there and len({g.subject for g in plural}) > 1 and (not said or said & {g.subject for g in plural}):
+            return [Fact(g.subject, g.condition, "location", g.key, negated=negated) for g in plural]
         if there and self.last_goal is not None and (not said or self.last_goal.subject in said):
             g = self.last_goal
-            return Fact(g.subject, g.condition, "location", g.key, negated=negated)
+            return [Fact(g.subject, g.condition, "location", g.key, negated=negated)]
         if after and after[0] in STATE_WORDS:
             flag, pol = STATE_WORDS[after[0]]
             st = self.last_state.get(flag)
             if st is not None:  # pronouns before "already on" are often the sentence topic: trust the state
-                return Fact(st.subject, st.condition, "state", flag, negated=negated != (not pol))
+                return [Fact(st.subject, st.condition, "state", flag, negated=negated != (not pol))]
             if self.recent:  # "opening the wardrobe first, unless the door is already open"
                 r = self.recent[-1]
-                return Fact(r, f"state({r}, {flag})", "state", flag, negated=negated != (not pol))
-        return None
+                return [Fact(r, f"state({r}, {flag})", "state", flag, negated=negated != (not pol))]
+        return []
 
     def _unknown(self, word: str) -> bool:
         """A word the analyser has no meaning for: not a role, room, state, cue or function word."""
@@ -703,7 +753,7 @@ class _Reader:
             set(words[: prev.start]) & MOTION)  # (its adjectives too: "... and a clean one on the counter")
         goal = words[k] != "from" and (self._is_goal(words, m, skipped) or gapped or (
             words[k] in ("into", "onto") and not set(skipped) & SITUATION_PARTICIPLES))
-        article = words[m.start - 1] if m.start > 0 else ""
+        article = determiner(words, m.start)
         # where a thing is kept or lives is a norm `_settle_stated` weighs against the rest of
         # the text
         definite = article in DEFINITE and not set(skipped) & HOMES
@@ -725,7 +775,7 @@ class _Reader:
             target = next((t for t in mentions if t.start > k and (
                 t.kind in ("role", "room", "floor") or t.kind == "pronoun" and words[t.start] in ("it", "them"))),
                 None)
-            if target is None or target.start - k > 3:
+            if target is None or target.start - k - len(self.hyphens & set(range(k + 1, target.start))) > 3:
                 break
             for s in dict.fromkeys(subjects):
                 for t in target.roles:
@@ -776,6 +826,8 @@ class _Reader:
             w = words[k]
             if w == "out" and not set(skipped) & {"is", "are", "was", "were", "already", "still"}:
                 break  # `take it out` is an action, `it is out` a state
+            if w == "out" and k + 1 < len(words) and words[k + 1] in PREP_ON | PREP_IN | {"of", "there", "here"}:
+                break  # "still out on the table", "out of the box": where it is, not switched off
             if w in ("on", "off") and k + 1 < len(words) and words[k + 1] in ARTICLES | PRONOUNS | {"floor"} \
                     and not (skipped and skipped[-1] in ("switched", "turned")):
                 break  # `on the table` is a place, not `switched on`
@@ -917,6 +969,23 @@ _KNOWN_WORDS = (frozenset(STATE_WORDS) | DESCRIPTIVE | MOTION | ACTIONS | ARTICL
                      "switch", "turn", "shut", "check", "use", "wipe", "clean", "empty", "fill"}))
 
 
+def _respectively(facts: list[Fact]) -> list[Fact]:
+    """"my bat and my racket go in the storage bin and on the bench, respectively": a list of
+    things and a list of places as long pair in order, the first thing with the first place; the
+    places of one reading (goals or conditions) and their things are paired apart. Lists of
+    unequal length pair nothing (each thing keeps every place)."""
+    out: list[Fact] = []
+    for goal in (False, True):
+        placed = [f for f in facts if f.kind == "location" and f.goal == goal]
+        things = list(dict.fromkeys(f.subject for f in placed))
+        places = list(dict.fromkeys(f.key for f in placed))
+        if len(things) < 2 or len(things) != len(places):
+            out += placed
+            continue
+        out += [f for f in placed if things.index(f.subject) == places.index(f.key)]
+    return [f for f in facts if f.kind != "location"] + [f for f in facts if f in out]
+
+
 def _question(subject: str, kind: str, key: str, targets: list[str]) -> str:
     s = subject.replace("_", " ")
     if kind == "exists":
@@ -1037,12 +1106,32 @@ def _bullet_items(text: str, sentences: list[str]) -> list[int | None]:
     return out
 
 
-def _speaker(reader: _Reader, text: str) -> bool:
-    """A heading that is a speaker's label in a transcript or a Q&A ("DAD:", "ME:", "Q:", "A:"):
-    one word written in capitals that names no thing, room or place of the task."""
+def _speaker(reader: _Reader, text: str, speakers: frozenset[str] = frozenset()) -> bool:
+    """A heading that is a speaker's label in a transcript, a chat or a Q&A ("DAD:", "ME:", "Q:",
+    "Priya:"): one word that names no thing, room or place of the task, written in capitals, or
+    one of `speakers` (`_speakers`)."""
     label = text.strip()
     toks = tokens(expand(label))
-    return len(toks) == 1 and label.isalpha() and label.isupper() and not reader.lex.find_mentions(toks)
+    return len(toks) == 1 and label.isalpha() and (label.isupper() or label in speakers) and not (
+        reader.lex.find_mentions(toks))
+
+
+#: a line opened by a capitalised word and a colon ("Priya: morning!!")
+_LINE_LABEL = re.compile(r"^[ \t]*([A-Z][a-z]+):", re.M)
+
+
+def _speakers(reader: _Reader, text: str) -> frozenset[str]:
+    """The names of a chat's speakers: capitalised words that open two or more lines before a
+    colon ("Priya: ...", "Sam: ...") and mean nothing to the reader (not "Wet:", "Dry:", "Note:"
+    ... a word it knows)."""
+    counts = Counter(_LINE_LABEL.findall(text))
+    return frozenset(w for w, n in counts.items() if n >= 2 and reader._unknown(w.lower()))
+
+
+def _turn_starts(reader: _Reader, pieces: list[Piece], speakers: frozenset[str]) -> bool:
+    """Whether a sentence is a speaker's label alone ("Priya:"): a new turn of a transcript, so
+    whatever the turn before left open (a line without a full stop) ends there."""
+    return len(pieces) == 1 and pieces[0].role == "heading" and _speaker(reader, pieces[0].text, speakers)
 
 
 def _instructs(reader: _Reader, text: str) -> bool:
@@ -1169,7 +1258,9 @@ ANY_OF = re.compile(r"\b(?:(?:either|neither|any|one|each|both|all)\s+of\s+(?:th
 
 def _members(clauses: list[Clause], kinds: Mapping[str, str], sentence: int) -> tuple[str, ...]:
     """The roles of the group last named: the latest clause of this sentence or the one before
-    naming two or more roles of one category (the items of an enumeration)."""
+    naming two or more roles of one category (the items of an enumeration), or else saying one
+    thing of two or more things ("the salt and pepper shakers live in the sideboard", "the doll
+    and the teddy are on the bed": what its facts are said of)."""
     for cl in reversed(clauses):
         if cl.sentence < sentence - 1:
             break
@@ -1180,6 +1271,9 @@ def _members(clauses: list[Clause], kinds: Mapping[str, str], sentence: int) -> 
         group = max(by_kind.values(), key=len, default=[])
         if len(group) > 1:
             return tuple(group)
+        said_of = list(dict.fromkeys(f.subject for f in cl.facts if f.subject in kinds))
+        if len(said_of) > 1 and len({f.condition.replace(f.subject, "") for f in cl.facts}) == 1:
+            return tuple(said_of)
     return ()
 
 
@@ -1214,6 +1308,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     spread: tuple[int, tuple[str, ...]] = (-1, ())
     cut = [split_clauses(sent) for sent in sentences]
     bullets = _bullet_items(str(brief["description"]), sentences)
+    speakers = _speakers(reader, unquote(str(brief["description"])))
     for si, sent in enumerate(sentences):
         pieces = cut[si]
         # the piece after each (a heading's answer may open the next part: "On the floor: into ...")
@@ -1222,7 +1317,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         for pi, (text, cue, role) in enumerate(pieces):
             if (DISTRIBUTIVE.match(text) or ANY_OF.search(text)) and (members := _members(clauses, categories, grammatical)):
                 spread = (grammatical, members)
-            if role == "heading" and _speaker(reader, text):
+            if role == "heading" and _speaker(reader, text, speakers):
                 clauses.append(Clause(text, grammatical, cue, "statement", (), ()))
                 continue  # "DAD: ...", "ME: ...", "Q: ...": who speaks, nothing of the scene
             if role == "heading":
@@ -1290,7 +1385,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
         if bullets[si] is not None and si + 1 < len(sentences) and bullets[si + 1] == bullets[si]:
             continue  # "* Bedroom: table lamp on? -> off. Wardrobe doors open? -> close.": one item
-        if bullets[si] is not None or sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences):
+        if bullets[si] is not None or sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences) or (
+                _turn_starts(reader, cut[si + 1], speakers)):
             # (a bullet item ends its unit, full stop or not: "- racket too if its lying on the floor")
             grammatical += 1
 

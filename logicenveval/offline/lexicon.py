@@ -39,6 +39,9 @@ VERB_LEADS = frozenset({"you", "we", "i", "they", "he", "she", "someone", "someb
 #: particles a verb may take before its object ("mop up the water", "wipe down the table")
 VERB_PARTICLES = frozenset({"up", "down", "off", "out", "over", "away"})
 
+#: determiners before "the salt and pepper shakers" (`Lexicon._shared_head`)
+_SHARED_LEADS = frozenset({"the", "my", "our", "your", "their", "both", "a", "some", "any"})
+
 COLOR_WORDS = frozenset(
     ["red", "blue", "green", "yellow", "white", "black", "grey", "gray", "brown", "pink", "purple", "orange", "beige", "silver", "gold"]
 )
@@ -210,8 +213,8 @@ class Lexicon:
         i = 0
         longest = max((len(p) for p in self.phrases), default=1)
         while i < len(words):
-            found: Mention | None = None
-            for n in range(min(longest, len(words) - i), 0, -1):
+            found: Mention | None = self._shared_head(words, i, longest)
+            for n in range(min(longest, len(words) - i), 0, -1) if found is None else ():
                 key = tuple(words[i : i + n])
                 if key in self.room_phrases and n > 0:
                     if words[i + n : i + n + 1] == ["floor"]:  # "the laundry room floor"
@@ -230,6 +233,18 @@ class Lexicon:
             else:
                 i += 1
         return out
+
+    def _shared_head(self, words: list[str], i: int, longest: int) -> Mention | None:
+        """"the salt and pepper shakers", "the desk and floor lamps": after a determiner, the
+        modifier before "and"/"or" with the next name's head names a thing of its own (when the
+        task has one of that name: `offline.naming` names it)."""
+        if i < 1 or words[i - 1] not in _SHARED_LEADS or words[i + 1 : i + 2] not in (["and"], ["or"]):
+            return None
+        for n in range(min(longest, len(words) - i - 2), 1, -1):
+            shared = (words[i], *words[i + 3 : i + 2 + n])
+            if tuple(words[i + 2 : i + 2 + n]) in self.phrases and shared in self.phrases:
+                return Mention(self._disambiguate(self.phrases[shared], words, i), i, i + 1)
+        return None
 
     def _disambiguate(self, candidates: Iterable[str], words: list[str], i: int) -> tuple[str, ...]:
         cands = sorted(candidates)

@@ -23,7 +23,7 @@ from typing import Any
 
 from logicenveval.domain.catalog import Catalog, load_catalog, per_catalog
 from logicenveval.llm.base import ChatRequest
-from logicenveval.model.rooms import room_type_of
+from logicenveval.model.rooms import known_room_type, room_type_of
 from logicenveval.offline.handlers import handler
 from logicenveval.offline.lexicon import (
     COLOR_WORDS,
@@ -34,7 +34,7 @@ from logicenveval.offline.lexicon import (
     verb_at,
     words_of,
 )
-from logicenveval.offline.sentences import PERSONAL_SUBJECTS, STATE_WORDS, expand, unquote
+from logicenveval.offline.sentences import FORMS, PERSONAL_SUBJECTS, STATE_WORDS, expand, unquote
 
 
 @handler("name_objects")
@@ -174,6 +174,9 @@ class _Reader:
         self.named: set[str] = set()  # kinds named outright (by a full name or synonym)
         self.context = self._context()
         self.room_types = {room_type_of(r) for r in rooms}
+        #: the room types the room ids name (not the fallback of an id naming none, "fitness_room"):
+        #: what tells a bare noun's kinds apart by the rooms they belong in (`bare_noun`)
+        self.known_room_types = {t for t in map(known_room_type, rooms) if t is not None}
         #: the head words of the task's room ids ("home_bar": "bar"): a bare noun that names no
         #: kind by itself and is one of them names the room ("tidy the home bar", "Re: the bar")
         self.room_heads = {words_of(r)[-1] for r in rooms if words_of(r)}
@@ -186,6 +189,9 @@ class _Reader:
         #: off the text as written) and, per kind, the owners of its mentions in order
         self.possessors = {m.group(1).lower() for m in _POSSESSOR.finditer(description.replace("\u2019", "'"))}
         self.owners: dict[str, list[str]] = {}
+        #: kinds named at least once as a particular thing (after a determiner or a count, or in
+        #: the singular), not only by a bare plural (`class_of_named`)
+        self.particular: set[str] = set()
 
     # -- noun phrases ----------------------------------------------------------------------
 
@@ -202,11 +208,24 @@ class _Reader:
         """Whether word `i` stands where a noun phrase starts: after a determiner, a colour or a
         count, or (unless `strict`: a word that is as often a verb) at the start of a sentence or
         list item or after "with", "and"."""
-        prev = self.text.words[i - 1] if i > 0 else ""
+        lead = self.compound_start(i)
+        prev = self.text.words[lead - 1] if lead > 0 else ""
         if prev in _DETERMINERS or prev in COLOR_WORDS or prev in _COUNTS:
             return True
         return not strict and (i == 0 or prev in _NOUN_LEADS or bool(
             _ITEM_BREAK.search(self.text.gaps[i]) or _SENTENCE_END.search(self.text.gaps[i])))
+
+    def compound_start(self, i: int) -> int:
+        """The first word of a hyphenated modifier right before word `i` ("the check-in
+        computer", "the lost-property cart", "an end-of-day list"), else `i`: such a modifier
+        stands between a determiner and its noun as one adjective does."""
+        gaps = self.text.gaps
+        k = i - 1
+        if k < 1 or gaps[i].strip() or gaps[k] != "-":
+            return i
+        while k > 0 and gaps[k] == "-":
+            k -= 1
+        return k
 
     def kind_at(self, i: int) -> tuple[int, str | None]:
         """The kind the noun phrase at word `i` names, and its length in words."""
@@ -244,7 +263,9 @@ class _Reader:
         most ("the pantry has two shelves": pantry shelves); else the kind it is a synonym of ("the
         bin"); else the kind whose other name words the names of the kinds named hold most ("a
         nightstand (bedside table) with a lamp": a bedside lamp); then the kind most specific to the
-        task's rooms. A noun that names no kind itself must start a noun phrase."""
+        task's rooms (the rooms whose ids name a known type: a guessed type says nothing); then the
+        kind whose name (not a synonym) it heads. A noun that names no kind itself must start a
+        noun phrase."""
         word = self.text.words[i]
         options = list(dict.fromkeys(self.heads.get(word, [])))
         named = [c for c in reversed(self.recent) if c in options and word in self.used.get(c, ())]
@@ -263,7 +284,7 @@ class _Reader:
             candidates = [c for c in candidates if c is None or not self.plural_only(c, word)] or candidates
         said = set(self.text.words[self.text.sentence_start(i):self.text.sentence_end(i)]) - _NOT_CONTEXT
 
-        def score(category: str | None) -> tuple[bool, bool, int, bool, bool, int, int]:
+        def score(category: str | None) -> tuple[bool, bool, int, bool, bool, int, int, bool]:
             assert category is not None
             cat = self.catalog.categories[category]
             others = {w for text in (category, *cat.synonyms) for w in words_of(text)} - {word}
@@ -274,7 +295,10 @@ class _Reader:
             return (prev in others, own, len(others & said),
                     written != word and self.plural_named(category, word), category == exact,
                     len(others & self.context),
-                    -len(rooms) if rooms & self.room_types else -1000)
+                    -len(rooms) if rooms & self.known_room_types else -1000,
+                    # last, the kind the word heads the name of, not only a synonym ("computer":
+                    # a desktop computer, not a laptop's "notebook computer")
+                    words_of(category)[-1] == word)
 
         return max(candidates, key=score)
 
@@ -341,6 +365,61 @@ class _Reader:
         if words[j] in _PACKAGING or len(kinds) > 1:
             return n + 1, category
         return n, category
+
+    def class_of_named(self, category: str) -> bool:
+        """Whether `category` was named only by a bare plural ("Toys are kept in the toy box")
+        and the text names things of kinds of its own that are values of its kind attribute (a
+        doll, a toy car: a toy's kinds are doll, car ...): the class those things belong to, no
+        object of its own."""
+        if category in self.particular:
+            return False
+        values = {v for key in KIND_ATTRIBUTES for v in self.catalog.categories[category].attributes.get(key, ())}
+        return any(c != category and set(words_of(c)) & values for c in self.kinds)
+
+    def part_of_named(self, i: int, prev: str) -> bool:
+        """Whether word `i` is a ranked part ("the bottom shelf", "the top level") of a piece of
+        furniture already named whose names say it has such parts (a shelving unit, "open
+        shelves"; a bookshelf): a part of it, no object of its own."""
+        part = _PARTS.get(self.text.words[i])
+        if part is None or prev not in _ORDINALS - {"one", "other", "next", "last"}:
+            return False
+        return any(part in {w for text in (c, *self.catalog.categories[c].synonyms) for w in words_of(text)}
+                   and not self.catalog.categories[c].pickable for c in self.recent)
+
+    def packaging_of_topic(self, i: int) -> bool:
+        """Whether word `i` is "the <form>" (`sentences.FORMS`: roll, bottle, tube ...) said of the
+        carried thing named in the heading its clause answers ("Tin foil: in case the roll has
+        fallen on the floor", "Shampoo - if the bottle is empty, ..."): the thing's own roll or
+        bottle, not a thing of another kind. Not after a preposition ("put them in the box": a
+        place), nor a word a kind was already named by, nor without a heading ("Take the mug; if
+        the bag is full, ...": a bag of its own)."""
+        words = self.text.words
+        if words[i] not in FORMS or i < 2 or words[i - 1] != "the" or words[i - 2] in _PREPOSITIONS:
+            return False
+        if any(words[i] in used for used in self.used.values()) or not self.recent:
+            return False
+        topic = self.recent[-1]
+        start = self.text.sentence_start(i)
+        # named in the heading the clause answers: before a colon or dash between it and the word
+        headed = any(self.match(k)[1] == topic and any(_HEADING.search(self.text.gaps[j]) for j in range(k + 1, i))
+                     for k in range(start, i))
+        return headed and self.catalog.categories[topic].pickable
+
+    def shared_head(self, i: int) -> str | None:
+        """The kind word `i` names with the head noun of the next name: "the salt and pepper
+        shakers" are a salt shaker and a pepper shaker, "the tea or coffee cups" a tea cup and a
+        coffee cup, "the desk and floor lamps" a desk lamp and a floor lamp (a determiner, the
+        modifier before "and"/"or", then a name of two or more words whose head is written in
+        the plural, all within one stretch without punctuation)."""
+        words, gaps = self.text.words, self.text.gaps
+        if i < 1 or words[i - 1] not in _DETERMINERS or i + 3 >= len(words) or words[i + 1] not in ("and", "or") or any(
+                gaps[k].strip() for k in (i + 1, i + 2)):
+            return None
+        n, category = self.match(i + 2)
+        end = i + 2 + n
+        if category is None or n < 2 or self.text.raw[end - 1] == words[end - 1]:
+            return None
+        return self.phrases.get((words[i], *words[i + 3:end]))
 
     # -- enumerations ----------------------------------------------------------------------
 
@@ -578,11 +657,19 @@ class _Reader:
                         self.instance(spare, f"spare_{words_of(spare)[-1]}", {})
                 i += 1
                 continue
-            n, category = self.kind_at(i)
+            if self.part_of_named(i, prev):
+                i += 1  # "Shelving unit - the storage box lives on the bottom shelf": its shelf
+                continue
+            if self.packaging_of_topic(i):
+                i += 1  # "Tin foil: in case the roll has fallen ...": the foil's roll, no toilet roll
+                continue
+            shared = self.shared_head(i)
+            n, category = (1, shared) if shared is not None else self.kind_at(i)
             if category is None:
                 i += 1
                 continue
-            n, category = self.compound(i, n, category)
+            if shared is None:
+                n, category = self.compound(i, n, category)
             if self.predicate_noun(i):
                 i += n  # "The essay collection is on the desk, that's a library book"
                 continue
@@ -605,6 +692,8 @@ class _Reader:
                 self.instance(category, f"other_{last}", {})  # "a lamp on the desk and another lamp"
             else:
                 kind.generic = True
+                if prev in _DETERMINERS or prev in _COUNTS or self.text.raw[i + n - 1] == words[i + n - 1]:
+                    self.particular.add(category)
                 if prev in self.possessors and self.match(i - 1)[1] is None:
                     self.owners.setdefault(category, []).append(prev)
                 if prev in _COUNTS:
@@ -620,6 +709,8 @@ class _Reader:
         found: list[dict[str, Any]] = []
         for category, kind in self.kinds.items():
             told_apart = len(kind.instances) >= max(2, kind.count)
+            if kind.generic and not told_apart and not kind.instances and self.class_of_named(category):
+                continue  # "Toys are kept in the toy box. Should the doll or the toy car ...": the class
             if kind.generic and not told_apart:
                 found.append({"name": _snake(category), "category": category, "attributes": {}})
             found += [{"name": name, "category": category, "attributes": attrs}

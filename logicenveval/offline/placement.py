@@ -48,6 +48,7 @@ from logicenveval.offline.sentences import (
     PREP_IN,
     PREP_ON,
     STATE_WORDS,
+    determiner,
     expand,
     habitual,
     split_sentences,
@@ -65,6 +66,11 @@ KEEP_VERBS = frozenset({"keep", "keeps", "kept", "store", "stores", "stored", "l
 #: forms of "be" and of verbs of resting that state where a thing is ("is", "lies", "is lying",
 #: "stands", "sits", "rests", "hangs", "stays")
 BE = frozenset({"is", "are", "was", "were", "be", "been", "being", "am"})
+#: words that rank the parts of a thing ("on the bottom shelf", "in the top drawer"): the part is
+#: the thing's, so the place is the thing ("the top of the ..." is not: "of" follows)
+RANKS = frozenset({"top", "bottom", "middle", "upper", "lower", "first", "second", "third"})
+#: pronouns that take up a thing put first ("the mug on the desk, is it dirty?")
+RESUMPTIVE = frozenset({"it", "they"})
 STATIVE = frozenset({"lie", "lies", "lay", "lying", "sit", "sits", "sat", "sitting", "stand", "stands",
                      "stood", "standing", "rest", "rests", "resting", "hang", "hangs", "hanging",
                      "stay", "stays", "wait", "waits", "waiting", "leaning", "lean",
@@ -410,7 +416,8 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
     if j >= hi or words[j] not in AT:
         return None
     k = j + 1
-    while k < hi and (words[k] in ARTICLES or words[k] in COLOR_WORDS or words[k] in STATE_WORDS):
+    while k < hi and (words[k] in ARTICLES or words[k] in COLOR_WORDS or words[k] in STATE_WORDS
+                      or words[k] in RANKS and k + 1 < hi and words[k + 1] not in ("of", ",")):
         k += 1
     m = next((m for m in ms if m.start == k), None)
     return (words[j], m) if m is not None else None
@@ -962,7 +969,7 @@ def _resting(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, cat
         if not between or between[0] not in AT or not all(w in ARTICLES for w in between[1:]):
             continue
         cat = catalog.get(str(lex.roles[a.roles[0]]["category"]))
-        if cat is None or not cat.pickable or a.start == 0 or words[a.start - 1] != "the":
+        if cat is None or not cat.pickable or determiner(words, a.start) != "the":
             continue
         if _moved(words, a.start, clause) or clause.goal:
             continue
@@ -978,6 +985,14 @@ def _described_subject(words: list[str], start: int, end: int, clause: Span) -> 
     """"if the mug on the coffee table is dirty", "Is the lamp on the nightstand still on?": a
     definite object whose state (not place) is in question: a state word follows its place."""
     j = end
+    put_first = j < clause.end and words[j] == ","
+    j += put_first
     while j < clause.end and (words[j] in ADVERBS or words[j] in BE):
         j += 1
+    if put_first and j < clause.end and words[j - 1] in BE and words[j] in RESUMPTIVE:
+        # "the wine bottle on the table, is it empty?": the thing put first, then asked of by
+        # a pronoun after the inverted verb
+        j += 1
+        while j < clause.end and words[j] in ADVERBS:
+            j += 1
     return start - 1 >= clause.start and j < clause.end and words[j] in STATE_WORDS

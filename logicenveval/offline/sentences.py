@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import re
 
+from logicenveval.offline.lexicon import COLOR_WORDS, verb_form
+
 #: adjective/participle -> (state flag, polarity)
 STATE_WORDS: dict[str, tuple[str, bool]] = {
     "open": ("open", True), "opened": ("open", True), "ajar": ("open", True),
@@ -36,6 +38,25 @@ ACTIONS = frozenset(
      "pack", "stack", "deliver"]
 )
 PREP_ON = frozenset({"on", "onto", "atop", "upon"})
+#: what a carried thing comes in: "Tin foil: in case the roll has fallen", "Sunscreen - if the
+#: bottle is empty": the thing spoken of, in its roll or bottle (`naming`, `analysis.mentions`)
+FORMS = frozenset({"bag", "pack", "packet", "carton", "roll", "bottle", "tube", "jar", "tub", "can",
+                   "container", "box", "spray"})
+#: words that open a noun phrase and say which one is meant (`determiner`)
+DETERMINERS = frozenset({"the", "a", "an", "my", "our", "your", "his", "her", "its", "their", "this",
+                         "that", "these", "those", "any", "every", "each", "some", "no"})
+
+
+def determiner(words: list[str], start: int) -> str:
+    """The word that determines the noun phrase whose noun starts at `start`: the word before
+    it, or the determiner before one plain adjective ("the little statue", "my old lamp"): not a
+    state word ("a dirty plate": the state may be the condition itself), a colour, a preposition
+    or a verb form."""
+    before = words[start - 1] if start > 0 else ""
+    if start > 1 and words[start - 2] in DETERMINERS and before.isalpha() and before not in (
+            DETERMINERS | PREP_ON | PREP_IN | STATE_WORDS.keys() | COLOR_WORDS) and not verb_form(before):
+        return words[start - 2]
+    return before
 
 #: habitual aspect: a statement of what keeps happening ("my ball keeps ending up on the floor",
 #: "the scarf tends to slip off the hook", "the remote often lies on the rug", "the towel usually
@@ -109,8 +130,19 @@ _QUOTE_MARK = re.compile(r"^[ \t]*(?:>[ \t]?)+", re.M)
 def unquote(text: str) -> str:
     """The text without an email's quoting marks: a reply above a quoted message reads as one
     text ("> On Monday, Jo wrote:" is no sentence; "> Could you tidy ..." is "Could you tidy ...");
-    a table of items and places as its sentences (`detable`)."""
-    return detable(_QUOTE_MARK.sub("", _ATTRIBUTION.sub("", text)))
+    a table of items and places as its sentences (`detable`); a heading answered by a verb with no
+    subject of its own with the heading as that subject (`_SUBJECTLESS`)."""
+    return _SUBJECTLESS.sub(r"\1\2\3the \2 \4", detable(_QUOTE_MARK.sub("", _ATTRIBUTION.sub("", text))))
+
+
+#: "Desk lamp: stays on the desk.", "- Sunscreen - lives in the cabinet": a line's heading of a few
+#: words, answered by a verb of where a thing is or goes with no subject of its own and a place
+#: after it, is said of the heading's thing ("the desk lamp stays on the desk"), so every reader
+#: reads the place as in a sentence
+_SUBJECTLESS = re.compile(r"(^[ \t]*(?:[-*\u2022]|\d+[.)])?[ \t]*)([A-Za-z][A-Za-z']*(?: [A-Za-z][A-Za-z']*){0,3})"
+                          r"(\s*(?::|[-\u2013\u2014])\s*)(stays|lives|sits|stands|lies|belongs|goes|hangs|remains)"
+                          r"(?=\s+(?:on|in|inside|into|onto|under|by|near|next|beside|behind|at|back|there|here)\b)",
+                          re.I | re.M)
 
 
 #: a table's column of item names and its column of places ("Item | Location | Notes"), and the
