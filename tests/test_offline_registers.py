@@ -328,3 +328,97 @@ def test_already_without_a_move_before_asks_nothing_new() -> None:
     # no clause before moves the thing: "already" alone gives no place
     got = _factors("Tom already took the milk carton out. If it is dirty, wash it.", ("kitchen",))
     assert not any("inside(milk_carton" in v for vs in got.values() for v in vs), got
+
+
+# ----- third development set (`tests/data/reader_dev3/tasks_reworded/`) -----------------------------
+
+# ----- a lettered or numbered item's label says nothing and hides no heading -----------------------
+
+@pytest.mark.parametrize(("text", "rooms", "placed"), [
+    # dev3 (a facilities work order)
+    ("(a) Television: to be switched off unless already off.\n(b) Bedroom: table lamp to be turned off "
+     "if it is on. Bedroom wardrobe to be closed if its doors are open.", ("living_room", "bedroom"),
+     "in_room(table_lamp, bedroom)"),
+    # written here: a numbered checklist of two rooms
+    ("1) Hallway: umbrella into the umbrella stand.\n2) Kitchen: kettle to be switched off if it is on.",
+     ("hallway", "kitchen"), "in_room(kettle, kitchen)"),
+])
+def test_an_items_label_hides_no_room_heading(text: str, rooms: tuple[str, ...], placed: str) -> None:
+    assert placed in described_placements(_brief(text, rooms), load_catalog())
+
+
+# ----- a condition with its subject and copula elided: "if found on the chair" ----------------------
+
+@pytest.mark.parametrize(("text", "rooms", "asked", "values"), [
+    # dev3 (a facilities work order)
+    ("Study: the laptop's designated place is on the study desk. If found on the office chair or on the "
+     "floor, relocate it to the desk; if found elsewhere, no action is to be taken.", ("study",),
+     "laptop_location", {"on(laptop, office_chair)", "on(laptop, floor)"}),
+    ("Bedroom: table lamp to be turned off if found on.", ("bedroom",), "table_lamp_toggled_on",
+     {"state(table_lamp, toggled_on)"}),
+    # written here: a kitchen manual
+    ("The kettle is to be unplugged when left on. The tea towel, if spotted on the floor, is to be hung "
+     "on the oven door.", ("kitchen",), "kettle_toggled_on", {"state(kettle, toggled_on)"}),
+])
+def test_a_condition_with_its_subject_elided(text: str, rooms: tuple[str, ...], asked: str,
+                                            values: set[str]) -> None:
+    got = _factors(text, rooms)
+    assert values <= got.get(asked, set()), got
+
+
+# ----- "Check the bed for my phone": the thing may be there ----------------------------------------
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev3 (numbered steps)
+    ("1. Check the bed for my phone. If it's there and switched on, place it on the nightstand.", ("bedroom",),
+     {"cell_phone_on_bed", "cell_phone_toggled_on"}),
+    ("3. Check the floor for my glasses. If they are there, place them on the nightstand.", ("bedroom",),
+     {"glasses_on_floor"}),
+    # written here: a kitchen, a container (inside, not on)
+    ("Look in the fridge for the milk carton. If it is there, put it on the kitchen counter.", ("kitchen",),
+     {"milk_carton_inside_fridge"}),
+])
+def test_checking_a_place_for_a_thing_asks_whether_it_is_there(text: str, rooms: tuple[str, ...],
+                                                                asked: set[str]) -> None:
+    assert asked <= set(_factors(text, rooms)), _factors(text, rooms)
+
+
+def test_checking_for_something_unnamed_is_left_as_written() -> None:
+    # "for a while" names nothing: no thing may be on the stove
+    got = _factors("Check the stove for a while. If the kettle is on, switch it off.", ("kitchen",))
+    assert not any(k.endswith("_on_stove") for k in got), got
+
+
+# ----- "open the drawer" after "the nightstand drawer": the furniture's own drawer -----------------
+
+@pytest.mark.parametrize(("text", "rooms", "asked", "not_asked"), [
+    # dev3 (numbered steps)
+    ("Any other book goes in the nightstand drawer: open the drawer first unless it is already open, and "
+     "close it afterwards.", ("bedroom",), "nightstand_open", "book_open"),
+    # written here: a cabinet's door, for a thing that opens too
+    ("The laptop goes in the cabinet. Open the door first if it is shut, and close it after.",
+     ("study",), "cabinet_open", "laptop_open"),
+])
+def test_a_drawer_or_door_said_alone_is_the_last_furniture_that_opens(text: str, rooms: tuple[str, ...],
+                                                                      asked: str, not_asked: str) -> None:
+    got = _factors(text, rooms)
+    assert asked in got and not_asked not in got, got
+
+
+# ----- a run of sentences sorting by kind ("A novel goes ... Any other book goes ...") ---------------
+
+@pytest.mark.parametrize(("text", "rooms", "thing", "absent", "values"), [
+    # dev3 (numbered steps)
+    ("Check the nightstand for a book. A novel goes on the bookshelf. A textbook goes on the desk. Any "
+     "other book goes in the nightstand drawer.", ("bedroom",), "book", "novel",
+     {"attr(book, kind, novel)", "attr(book, kind, textbook)"}),
+    # written here: a kids' room sorting toys
+    ("There may be a toy on the bed. A doll goes in the toy box. A ball goes in the basket. Any other "
+     "toy goes on the shelf.", ("kids_room",), "toy", "ball",
+     {"attr(toy, kind, doll)", "attr(toy, kind, ball)"}),
+])
+def test_a_run_of_sentences_sorting_by_kind_names_classes(text: str, rooms: tuple[str, ...], thing: str,
+                                                          absent: str, values: set[str]) -> None:
+    brief = _brief(text, rooms)
+    assert absent not in brief["roles"], brief["roles"]
+    assert values <= _factors(text, rooms).get(f"{thing}_kind", set()), _factors(text, rooms)

@@ -77,6 +77,9 @@ PARTS = frozenset({"door", "lid", "leaf", "screen", "soil", "surface", "top", "i
                    "content", "bottom", "side", "handle", "shelf", "drawer", "bag", "glass", "bottle",
                    "box", "pack", "packet", "jar", "carton", "tub", "container", "roll"})
 PRONOUNS = frozenset({"it", "they", "them", "one", "ones", "its", "their", "whose"})
+#: the parts by which a piece of furniture opens: said alone ("open the drawer"), they mean the
+#: piece last named that opens (`_Reader._opener`)
+OPENING_PARTS = frozenset({"drawer", "door"})
 #: kinds of thing that depict a person or an animal, which a child calls "she" or "he", and the
 #: pronouns that may then mean them (`_Reader.mentions`)
 PERSONIFIED = frozenset({"doll", "teddy_bear"})
@@ -300,6 +303,15 @@ class _Reader:
         known = [r for r in self.recent if r in m.roles]
         return Mention((known[-1],), m.start, m.end, m.kind) if known else m
 
+    def _opener(self, before: list[str]) -> str | None:
+        """The furniture piece last named (in the clause, else before it) whose kind opens and
+        is not carried about: what a drawer or a door said alone belongs to."""
+        for role in reversed(self.recent + before):
+            kind = self.kinds.get(role)
+            if kind is not None and kind.openable and not kind.pickable:
+                return role
+        return None
+
     def mentions(self, words: list[str], toks: list[tuple[str, int, int]]) -> list[Mention]:
         found = [self._recent_first(m) for m in self.lex.find_mentions(toks) if not _verb_read(toks, m)]
         # "the kitchen sink", "the bathroom mirror": a room's name right before a thing's names the thing
@@ -311,6 +323,14 @@ class _Reader:
             self.topic = (self.recent[-1],)
             found.append(Mention(self.topic, 0, 1, "pronoun"))
         covered = {i for m in found for i in range(m.start, m.end)}
+        for i, w in enumerate(words):
+            if i not in covered and w in OPENING_PARTS and i > 0 and words[i - 1] in ARTICLES | {"its", "their"}:
+                # "Any other book goes in the nightstand drawer: open the drawer first": a drawer
+                # or a door said alone is that of the furniture piece last named that opens
+                owner = self._opener([r for m in found if m.end <= i for r in m.roles])
+                if owner is not None:
+                    found.append(Mention((owner,), i, i + 1, "role"))
+                    covered.add(i)
         for i, w in enumerate(words):
             if i not in covered and w in PERSON_PRONOUNS and not any(m.start == i + 1 for m in found):
                 # "my doll sleeps on the bed but if she fell on the floor put her back": a child
@@ -1197,13 +1217,39 @@ def _distributed(facts: tuple[Fact, ...], members: tuple[str, ...]) -> tuple[Fac
     return tuple(dict.fromkeys(out))
 
 
+#: "Check the bed for my phone", "Search the floor for the keys", "Look in the drawer for a pen":
+#: an instruction to look at a place for a thing says the thing may be there, and a later "if
+#: it's there" asks it; the verbs that look, with the preposition each may take before the place
+_CHECK = re.compile(r"^(?P<lead>\W*(?:please\s+|now\s+|then\s+|first\s+)?)(?:check|search|inspect|"
+                    r"look\s+(?:on|in|under|at|over|through|inside))\s+(?P<place>[^,;.!?]+?)\s+for\s+"
+                    r"(?P<thing>[^,;.!?]+?)(?P<end>\s*[.!;]?\s*)$", re.I)
+
+
+def _checked(sentence: str, lex: Lexicon, kinds: Mapping[str, Category]) -> str:
+    """A sentence that looks at a place for a thing ("Check the bed for my phone.") as the doubt
+    it implies ("My phone may be on the bed."): in a container that is no surface the thing is
+    inside, elsewhere on it. Only when the place is a named object or the floor and the thing a
+    named object; any other sentence is returned as it is."""
+    m = _CHECK.match(sentence)
+    if m is None:
+        return sentence
+    places = lex.find_mentions(tokens(expand(m.group("place"))))
+    things = lex.find_mentions(tokens(expand(m.group("thing"))))
+    if len(places) != 1 or places[0].kind not in ("role", "floor") or not any(t.kind == "role" for t in things):
+        return sentence
+    kind = kinds.get(places[0].roles[0]) if places[0].kind == "role" else None
+    prep = "in" if kind is not None and kind.container and not kind.surface else "on"
+    thing = m.group("thing").strip()
+    return f"{m.group('lead')}{thing[:1].upper()}{thing[1:]} may be {prep} {m.group('place').strip()}{m.group('end')}"
+
+
 def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     lex = Lexicon.build(brief, catalog)
     kinds = {name: cat for name, role in dict(brief.get("roles") or {}).items()
              if (cat := catalog.get(str(role.get("category", "")))) is not None}
     reader = _Reader(lex, _capabilities(brief, catalog), kinds)
     categories = {name: str(role.get("category", "")) for name, role in dict(brief.get("roles") or {}).items()}
-    sentences = split_sentences(unquote(str(brief["description"])))
+    sentences = [_checked(sent, lex, kinds) for sent in split_sentences(unquote(str(brief["description"])))]
     clauses: list[Clause] = []
     grammatical = 0  # pieces split at ':' or ';' still belong to one sentence for grouping
     headed = -1  # the sentence whose heading ("Shirt on the floor:") the pieces after it answer

@@ -67,6 +67,10 @@ _ALSO_VERBS = frozenset({"can", "throw", "stand", "switch", "set", "press", "iro
 #: attributes whose values say what a thing is (a toy's kind: doll, car, ball): a bare plural
 #: of such a value after the thing is named is a class of it (`_Reader.kind_value`)
 KIND_ATTRIBUTES = ("kind",)
+#: the openers of a run of parallel sentences that sort things by kind, one kind each ("A novel
+#: goes ... A textbook goes ... Any other book goes ..."), and how many sentences a run may take
+_RUN_OPENERS = frozenset({"a", "an", "any"})
+_RUN = 4
 #: words too common to say which of several categories a bare noun means
 _NOT_CONTEXT = frozenset({"floor", "wall", "ceiling", "room"})
 #: "that is a ...", "it was a ...": a predicate noun of a thing already named (`predicate_noun`)
@@ -501,8 +505,15 @@ class _Reader:
                  if head in self.catalog.categories[c].attributes.get(key, ())]
         if prev in ("a", "an") and self.text.raw[i + n - 1] == head:
             # "a doll into the red toy box; ... any other toy into the green one": an indefinite
-            # one set against "other <kind>" in its sentence is a class of that kind too
-            said = words[self.text.sentence_start(i):self.text.sentence_end(i)]
+            # one set against "other <kind>" in its sentence is a class of that kind too, or in a
+            # run of sentences that each open with one ("A novel goes on the bookshelf. A
+            # textbook goes on the desk. Any other book goes in the drawer.")
+            end = self.text.sentence_end(i)
+            for _ in range(_RUN):
+                if end >= len(words) or words[end] not in _RUN_OPENERS:
+                    break
+                end = self.text.sentence_end(end)
+            said = words[self.text.sentence_start(i):end]
             return any(w == "other" and set(said[k + 1:k + 3]) & set(words_of(c))
                        for c in kinds for k, w in enumerate(said))
         if self.text.raw[i + n - 1] == head or prev in _DETERMINERS or prev in _COUNTS:

@@ -63,6 +63,9 @@ def habitual(words: list[str]) -> bool:
             return True
     return False
 PREP_IN = frozenset({"in", "inside", "into", "within"})
+#: participles that say where or how a thing was come upon; after a bare conditional they are the
+#: condition's verb with its subject elided ("if found on the floor", "unless left open")
+FOUND_PARTICIPLES = frozenset({"found", "left", "seen", "spotted", "discovered", "located", "noticed"})
 
 #: words after a noun's "'s" that make it the verb, not a possessive: "the door's shut", "the
 #: pillow's been moved", "the dishwasher's already on" (but "the cat's ball")
@@ -106,11 +109,27 @@ _ATTRIBUTION = re.compile(r"^[ \t>]*On\b[^\n]{0,80}\bwrote:[ \t]*$", re.M)
 _QUOTE_MARK = re.compile(r"^[ \t]*(?:>[ \t]?)+", re.M)
 
 
+#: the label of a lettered or numbered item at a line's start ("(b) Bedroom: ...", "c) ...",
+#: "2. Check ...", "(iv) ..."): it orders the items and says nothing, and left in place it hides a
+#: heading after it ("(b) Bedroom:" is no room heading)
+_ITEM_LABEL = re.compile(r"^[ \t]*(?:\((?:[a-z]|[ivx]+|\d{1,2})\)|(?:[a-z]|[ivx]+|\d{1,2})\)|\d{1,2}\.)[ \t]+",
+                         re.M | re.I)
+
+
+#: a condition with its subject and copula elided before a participle of finding or leaving (a
+#: work order's "if found on the chair", a manual's "when left open"): "if it is found ..."
+_ELIDED_SUBJECT = re.compile(
+    rf"\b(if|unless|when|whenever|once|while)\s+(?=(?:{'|'.join(sorted(FOUND_PARTICIPLES))})\b)", re.I)
+
+
 def unquote(text: str) -> str:
     """The text without an email's quoting marks: a reply above a quoted message reads as one
     text ("> On Monday, Jo wrote:" is no sentence; "> Could you tidy ..." is "Could you tidy ...");
-    a table of items and places as its sentences (`detable`)."""
-    return detable(_QUOTE_MARK.sub("", _ATTRIBUTION.sub("", text)))
+    without the labels of lettered or numbered items; a condition's elided subject spelled out
+    ("if found on" -> "if it is found on"); a table of items and places as its sentences
+    (`detable`)."""
+    plain = _ITEM_LABEL.sub("", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", text)))
+    return detable(_ELIDED_SUBJECT.sub(r"\1 it is ", plain))
 
 
 #: a table's column of item names and its column of places ("Item | Location | Notes"), and the
