@@ -422,3 +422,46 @@ def test_a_run_of_sentences_sorting_by_kind_names_classes(text: str, rooms: tupl
     brief = _brief(text, rooms)
     assert absent not in brief["roles"], brief["roles"]
     assert values <= _factors(text, rooms).get(f"{thing}_kind", set()), _factors(text, rooms)
+
+
+# ----- "present" is a predicate of being somewhere ------------------------------------------------
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev3 (a passive manual)
+    ("A book or a toy may be present on the floor, and a pack of wet wipes may be present on the table.",
+     ("living_room",), {"book_on_floor", "toy_on_floor", "wet_wipe_on_coffee_table"}),
+    # written here: a study
+    ("A mug may be present on the desk. If so, it is to be taken to the kitchen.", ("study", "kitchen"),
+     {"mug_on_desk"}),
+])
+def test_may_be_present_on_a_place_asks_whether_it_is_there(text: str, rooms: tuple[str, ...],
+                                                             asked: set[str]) -> None:
+    assert asked <= set(_factors(text, rooms)), _factors(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms", "placed"), [
+    ("Room inventory: one sofa. A toy box is present on the floor. The remote control is present on the sofa.",
+     ("living_room",), "on(remote_control, sofa)"),
+    ("The kettle is present on the kitchen counter. It is to be switched off.", ("kitchen",),
+     "on(kettle, kitchen_counter)"),
+])
+def test_is_present_on_a_place_states_it(text: str, rooms: tuple[str, ...], placed: str) -> None:
+    assert placed in described_placements(_brief(text, rooms), load_catalog())
+
+
+# ----- a state question answered by a bare name of a holder: where the thing goes ------------------
+
+@pytest.mark.parametrize(("text", "rooms", "asked", "not_asked"), [
+    # dev3 (American slang)
+    ("my mug might be sitting on the desk too. take it to the kitchen. dirty? kitchen sink. clean? kitchen "
+     "counter.", ("study", "kitchen"), "mug_dirty", "sink_dirty"),
+    # written here: a bathroom towel and a kitchen plate
+    ("a towel might be lying on the floor. wet? laundry basket. dry? towel rack.", ("bathroom",),
+     "towel_wet", "laundry_basket_wet"),
+    ("the plate might be on the dining table. bring it here. dirty? dishwasher. clean? cabinet.", ("kitchen",),
+     "plate_dirty", "dishwasher_dirty"),
+])
+def test_a_state_question_answered_by_a_bare_holder_is_where_the_thing_goes(
+        text: str, rooms: tuple[str, ...], asked: str, not_asked: str) -> None:
+    got = _factors(text, rooms)
+    assert asked in got and not_asked not in got, got

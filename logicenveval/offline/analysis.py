@@ -63,7 +63,9 @@ from logicenveval.scene.compat import can_hold
 DESCRIPTIVE = frozenset(
     ["is", "are", "was", "were", "be", "been", "being", "am", "seem", "seems", "seemed", "look", "looks", "appear", "appears", "still", "already", "currently", "left", "lying", "lie", "lies", "sitting", "sit", "sits", "standing", "stand", "stands", "kept", "found", "dropped", "fallen", "ended", "up", "have", "has", "had", "got", "gotten", "remain", "remains", "remained", "now", "itself", "themselves", "just", "somehow", "accidentally", "again", "there", "here", "turned", "switched", "scattered", "sitting", "lays", "fell", "slipped", "rolled", "may", "might", "could", "possibly", "perhaps", "maybe", "probably", "sometimes", "will",
      "also", "too", "even", "lives", "live", "stays", "stay", "keep", "keeps", "rolling", "falling",
-     "ending", "somewhere"]
+     "ending", "somewhere",
+     # a predicate adjective of presence ("a book may be present on the floor", a manual's register)
+     "present"]
 )
 #: verbs after a subject that announce where it must go (a goal, not a condition)
 MOTION = frozenset(
@@ -1088,6 +1090,26 @@ def _goes(reader: _Reader, text: str) -> bool:
                                            for m in reader.lex.find_mentions(toks))
 
 
+def _bare_goal(reader: _Reader, text: str) -> str | None:
+    """An instruction that is only the name of something that holds things ("dirty? kitchen
+    sink.", "wet -> laundry basket", a note's shorthand): where the thing spoken of goes, as if
+    its preposition were said ("in" a container that is no surface, else "on"); None for any other
+    text, or when nothing is spoken of."""
+    toks = tokens(expand(text))
+    words = [w for w, _, _ in toks]
+    found = reader.lex.find_mentions(toks)
+    roles = [m for m in found if m.kind == "role"]
+    covered = {i for m in found for i in range(m.start, m.end)}
+    if len(roles) != 1 or len(roles[0].roles) != 1 or reader.topic_kind != "role" or not reader.topic \
+            or roles[0].roles[0] in reader.topic \
+            or any(i not in covered and w not in ARTICLES | {"back", "instead"} for i, w in enumerate(words)):
+        return None
+    kind = reader.kinds.get(roles[0].roles[0])
+    if kind is None or not (kind.container or kind.surface):
+        return None
+    return "in" if kind.container and not kind.surface else "on"
+
+
 def _available(reader: _Reader, text: str) -> list[Fact]:
     """"clean it with the microfibre cloth if any": with no place said, whether there is one of
     the thing named last before the cue (not a place it is used on or kept in)."""
@@ -1303,6 +1325,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 said = said.split(")")[0]  # "(open the wardrobe if the door's shut) and shut it": the aside ends
             if role == "consequence" and _goes(reader, said):
                 said = f"it goes {said}"  # "dry: on the shoe rack", "clean - onto the armchair"
+            elif (role == "consequence" or role == "statement" and clauses and clauses[-1].role == "condition"
+                  and clauses[-1].cue == "?") and (prep := _bare_goal(reader, said)):
+                said = f"it goes {prep} {said}"  # "dirty? kitchen sink.", "wet -> laundry basket"
             if place[0] == grammatical:
                 said = f"{said.rstrip(' .;,')} {place[1]}"
                 doubt = bool({w for w, _, _ in tokens(place[1])} & UNCERTAIN)

@@ -73,8 +73,9 @@ STATIVE = frozenset({"lie", "lies", "lay", "lying", "sit", "sits", "sat", "sitti
 #: after a perfect ("has/have been") all of these state a place; after a plain "is/are" only the
 #: `PASSIVE_STATIVE` ones do ("is put on the bed" is an instruction in the passive voice)
 RESULT = frozenset({"left", "dropped", "put", "placed", "thrown", "set", "found", "located", "knocked",
-                    "kept", "stored", "dumped", "abandoned", "forgotten", "parked", "stuck"})
-PASSIVE_STATIVE = frozenset({"found", "located", "kept", "stored", "situated", "seated"})
+                    "kept", "stored", "dumped", "abandoned", "forgotten", "parked", "stuck", "present"})
+PASSIVE_STATIVE = frozenset({"found", "located", "kept", "stored", "situated", "seated",
+                             "present"})  # "a dirty mark is present on the floor"
 PERFECT = frozenset({"has", "have", "had"})
 #: verbs whose subject holds what follows ("the kitchen has the dishwasher", "it contains a bed",
 #: "the basket also holds a box of cereal")
