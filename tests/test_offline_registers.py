@@ -12,6 +12,7 @@ from logicenveval.domain.catalog import load_catalog
 from logicenveval.offline.analysis import analyse
 from logicenveval.offline.naming import name_objects
 from logicenveval.offline.placement import described_placements
+from logicenveval.offline.sentences import unquote
 
 
 def _brief(text: str, rooms: tuple[str, ...]) -> dict[str, Any]:
@@ -463,5 +464,60 @@ def test_is_present_on_a_place_states_it(text: str, rooms: tuple[str, ...], plac
 ])
 def test_a_state_question_answered_by_a_bare_holder_is_where_the_thing_goes(
         text: str, rooms: tuple[str, ...], asked: str, not_asked: str) -> None:
+    got = _factors(text, rooms)
+    assert asked in got and not_asked not in got, got
+
+
+# ----- slang: a dropped "g" and "chilling" as a verb of resting ------------------------------------
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev3 (American slang)
+    ("oh and my mug might be chillin' on the desk too. take it to the kitchen.", ("study", "kitchen"),
+     "mug_on_desk"),
+    # written here: a living room, another verb with its "g" dropped
+    ("my sneakers might be sittin' on the sofa. if so, put them on the shoe rack.", ("living_room",),
+     "shoe_on_sofa"),
+])
+def test_slang_verbs_of_resting_with_a_dropped_g(text: str, rooms: tuple[str, ...], asked: str) -> None:
+    assert asked in _factors(text, rooms), _factors(text, rooms)
+
+
+def test_chilling_states_a_place() -> None:
+    text = "the remote is chillin' on the sofa. if the TV is on, turn it off."
+    assert "on(remote_control, sofa)" in described_placements(_brief(text, ("living_room",)), load_catalog())
+
+
+# ----- a speaker's self-correction: only the place meant is read -----------------------------------
+
+@pytest.mark.parametrize(("text", "rooms", "meant", "dropped"), [
+    # dev3 (a voice transcript)
+    ("there might be a shirt on the floor too. if it's dirty, throw it in the wardrobe, no wait, sorry, in "
+     "the hamper.", ("bedroom",), "in the hamper", "wardrobe"),
+    # written here: a study, "I mean"
+    ("if the mug is dirty, put it on the desk - I mean in the sink.", ("study",), "in the sink", "desk"),
+])
+def test_a_corrected_place_is_dropped(text: str, rooms: tuple[str, ...], meant: str, dropped: str) -> None:
+    said = unquote(text)
+    assert meant in said and dropped not in said, said
+
+
+def test_a_retracting_word_before_no_place_is_kept() -> None:
+    said = unquote("put it on the table, actually the plate is dirty.")
+    assert "on the table" in said
+
+
+# ----- a bare state word as a subject: "dirty goes in the hamper" ---------------------------------
+
+@pytest.mark.parametrize(("text", "rooms", "asked", "not_asked"), [
+    # dev3 (a voice transcript)
+    ("then, uh, there might be a shirt on the floor too. if it's dirty, throw it in the wardrobe, no wait, sorry, "
+     "in the hamper. dirty goes in the hamper. if it's clean hang it in the wardrobe.",
+     ("bedroom",), "shirt_dirty", "hamper_dirty"),
+    # written here: towels on a bathroom floor, a plural verb
+    ("towels might be lying on the floor. wet go in the laundry basket, dry go on the towel rack.",
+     ("bathroom",), "towel_wet", "laundry_basket_wet"),
+])
+def test_a_bare_state_as_subject_is_the_things_condition(text: str, rooms: tuple[str, ...], asked: str,
+                                                         not_asked: str) -> None:
     got = _factors(text, rooms)
     assert asked in got and not_asked not in got, got

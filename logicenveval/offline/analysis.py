@@ -65,7 +65,9 @@ DESCRIPTIVE = frozenset(
      "also", "too", "even", "lives", "live", "stays", "stay", "keep", "keeps", "rolling", "falling",
      "ending", "somewhere",
      # a predicate adjective of presence ("a book may be present on the floor", a manual's register)
-     "present"]
+     "present",
+     # slang verbs of resting ("my mug might be chilling on the desk")
+     "chill", "chills", "chilling"]
 )
 #: verbs after a subject that announce where it must go (a goal, not a condition)
 MOTION = frozenset(

@@ -68,7 +68,9 @@ BE = frozenset({"is", "are", "was", "were", "be", "been", "being", "am"})
 STATIVE = frozenset({"lie", "lies", "lay", "lying", "sit", "sits", "sat", "sitting", "stand", "stands",
                      "stood", "standing", "rest", "rests", "resting", "hang", "hangs", "hanging",
                      "stay", "stays", "wait", "waits", "waiting", "leaning", "lean",
-                     "leans", "propped"})
+                     "leans", "propped",
+                     # slang ("chilling on the desk")
+                     "chill", "chills", "chilling"})
 #: participles that state a result ("has been left on the floor", "are found in the kitchen"):
 #: after a perfect ("has/have been") all of these state a place; after a plain "is/are" only the
 #: `PASSIVE_STATIVE` ones do ("is put on the bed" is an instruction in the passive voice)

@@ -87,6 +87,9 @@ _CONTRACTIONS = [
     (r"\b(there|that|what|where|who|here)s\b", r"\1 is"), (r"\b(they|you)re\b", r"\1 are"),
     (r"\b(is|are|was|were|do|does|did|has|have|had|should|could|would|must|need)nt\b", r"\1 not"),
     (r"\bcant\b", "can not"), (r"\bwont\b", "will not"), (r"\b(you|they|we)ve\b", r"\1 have"),
+    # a dropped "g" written with an apostrophe, as slang is typed ("chillin' on the desk",
+    # "sittin' there"): the "-ing" form
+    (r"\b([a-z]{2,}in)'(?![\w'])", r"\1g"),
     # texting's "u" for "you" (not a letter of a name: "u-bend", "U-shaped")
     (r"(?<![\w'-])u(?![\w'-])", "you"),
 ]
@@ -122,14 +125,38 @@ _ELIDED_SUBJECT = re.compile(
     rf"\b(if|unless|when|whenever|once|while)\s+(?=(?:{'|'.join(sorted(FOUND_PARTICIPLES))})\b)", re.I)
 
 
+#: a speaker correcting a place as they say it ("throw it in the wardrobe, no wait, sorry, in the
+#: hamper", "put it on the desk - I mean on the shelf"): the corrected place, with the words that
+#: retract it, is dropped, so only the place meant is read
+_PLACE_PREP = r"(?:in|on|into|onto|to|under|inside|next to|by)\b"
+_RETRACT = r"(?:no,?\s+wait|wait,?\s+no|no,?\s+sorry|sorry|i mean|or rather|scratch that|actually|correction)"
+_SELF_CORRECTION = re.compile(rf"\b{_PLACE_PREP}[^,.;:!?()]{{1,40}}?[\s,\-\u2013\u2014]+"
+                              rf"(?:{_RETRACT}[\s,\-\u2013\u2014]+)+(?={_PLACE_PREP})", re.I)
+
+
+#: a bare state word as the subject of a verb of going ("dirty goes in the hamper", "wet go on the
+#: rack": a note or a speaker naming the thing by its state): the condition on the thing spoken of
+_STATE_SUBJECT = re.compile(
+    rf"(?:(?<=^)|(?<=[.!?;:\n]))(\s*)({'|'.join(w for w, (flag, _) in STATE_WORDS.items() if flag in ('dirty', 'wet'))})"
+    r"\s+(goes|belongs|go|belong)\b", re.I | re.M)
+
+
+def _state_subject(m: re.Match[str]) -> str:
+    plural = m.group(3).lower() in ("go", "belong")
+    return f"{m.group(1)}if {'they are' if plural else 'it is'} {m.group(2)}, {'they' if plural else 'it'} {m.group(3)}"
+
+
 def unquote(text: str) -> str:
     """The text without an email's quoting marks: a reply above a quoted message reads as one
     text ("> On Monday, Jo wrote:" is no sentence; "> Could you tidy ..." is "Could you tidy ...");
-    without the labels of lettered or numbered items; a condition's elided subject spelled out
+    without the labels of lettered or numbered items; a place the speaker corrects dropped for the
+    one meant ("in the wardrobe, no wait, in the hamper"); a bare state as a subject read as the
+    condition it is ("dirty goes in the hamper": "if it is dirty, it goes ..."); a condition's
+    elided subject spelled out
     ("if found on" -> "if it is found on"); a table of items and places as its sentences
     (`detable`)."""
-    plain = _ITEM_LABEL.sub("", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", text)))
-    return detable(_ELIDED_SUBJECT.sub(r"\1 it is ", plain))
+    plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", text))))
+    return detable(_STATE_SUBJECT.sub(_state_subject, _ELIDED_SUBJECT.sub(r"\1 it is ", plain)))
 
 
 #: a table's column of item names and its column of places ("Item | Location | Notes"), and the
