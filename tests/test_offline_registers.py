@@ -521,3 +521,130 @@ def test_a_bare_state_as_subject_is_the_things_condition(text: str, rooms: tuple
                                                          not_asked: str) -> None:
     got = _factors(text, rooms)
     assert asked in got and not_asked not in got, got
+
+
+# ----- an adjective after a place: "if it's on the counter and ripe" -------------------------------
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev3 (a first-person narrative)
+    ("I think I also bought a tomato. If it's on the counter and ripe, it goes in the fridge, and if it's not "
+     "ripe yet, it goes in the fruit bowl.", ("kitchen",), "tomato_ripeness"),
+    # written here: a banana in a fruit bowl
+    ("There may be a banana in the fruit bowl. If it's in the bowl and overripe, throw it in the trash can; if "
+     "it's not overripe, leave it.", ("kitchen",), "banana_overripeness"),
+])
+def test_an_adjective_after_a_place_is_the_things(text: str, rooms: tuple[str, ...], asked: str) -> None:
+    assert asked in _factors(text, rooms), _factors(text, rooms)
+
+
+# ----- an indirect question about an action: the state it leaves ----------------------------------
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev3 (a first-person narrative)
+    ("I can't remember whether I shut the fridge door, so you might have to open it, and please close the "
+     "fridge when you're done.", ("kitchen",), "fridge_open"),
+    # written here: a bedroom, "we closed"
+    ("I can't remember whether we closed the wardrobe before we left. Please check it.", ("bedroom",),
+     "wardrobe_open"),
+])
+def test_whether_i_did_something_asks_the_state_it_leaves(text: str, rooms: tuple[str, ...], asked: str) -> None:
+    assert asked in _factors(text, rooms), _factors(text, rooms)
+
+
+def test_if_you_do_something_is_no_question() -> None:
+    # a condition on what the listener does is no indirect question
+    assert unquote("If you open the fridge, close it after.") == "If you open the fridge, close it after."
+
+
+# ----- "not sure I even got bread": whether there is any ------------------------------------------
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev3 (a first-person narrative)
+    ("I'm not sure I even got bread this time, but if there's a loaf on the counter, put it away in the cabinet "
+     "and shut the cabinet.", ("kitchen",), {"bread_present", "bread_on_kitchen_counter"}),
+    # written here: a bathroom, "can't remember if we bought"
+    ("I can't remember if we bought any shampoo. If there's a bottle on the bathtub, put it in the wall cabinet.",
+     ("bathroom",), {"shampoo_present"}),
+])
+def test_a_doubt_about_having_got_a_thing_asks_whether_there_is_one(text: str, rooms: tuple[str, ...],
+                                                                     asked: set[str]) -> None:
+    assert asked <= set(_factors(text, rooms)), _factors(text, rooms)
+
+
+def test_a_remark_before_but_if_is_no_instruction_of_the_condition() -> None:
+    # "there may or may not be a towel, but if ...": the remark keeps its doubt (written here)
+    got = _factors("There may or may not be a towel, but if there's one on the floor, hang it on the towel rack.",
+                   ("bathroom",))
+    assert {"towel_present", "towel_on_floor"} <= set(got), got
+
+
+# ----- "or if we haven't got any": whether there is one -------------------------------------------
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev3 (a FAQ)
+    ("Q: What if the detergent bottle has ended up on the floor?\nA: Put it back on the shelf. If it's somewhere "
+     "else, or if we haven't got any, leave it.", ("laundry_room",), "laundry_detergent_present"),
+    # written here: a bathroom
+    ("The soap bar may be lying in the bathtub. If it's anywhere else, or we don't have any, skip it.",
+     ("bathroom",), "soap_bar_present"),
+])
+def test_not_having_any_asks_whether_there_is_one(text: str, rooms: tuple[str, ...], asked: str) -> None:
+    assert asked in _factors(text, rooms), _factors(text, rooms)
+
+
+# ----- "a dirty white one": the value before "one" says which of its kind is meant -----------------
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev3 (a FAQ)
+    ("Q: What do I do with a shirt lying on the floor?\nA: That depends on whether it's dirty. A dirty white one "
+     "goes in the washing machine: open it, load the shirt, close the door. A dirty shirt of any other colour "
+     "goes in the hamper.", ("laundry_room",), "attr(shirt, color, white)"),
+    # written here: a towel in a bathroom
+    ("There may be a towel on the floor. A blue one goes on the towel rack, any other towel in the laundry "
+     "basket.", ("bathroom",), "attr(towel, color, blue)"),
+])
+def test_a_value_before_an_indefinite_one_is_asked(text: str, rooms: tuple[str, ...], asked: str) -> None:
+    values = set().union(*_factors(text, rooms).values())
+    assert asked in values, values
+
+
+# ----- a room id said in full names the room, not the kind of its first word -----------------------
+
+@pytest.mark.parametrize(("text", "rooms", "absent", "named"), [
+    # dev3 (a FAQ)
+    ("Laundry room - FAQ\nQ: What do I do with a shirt lying on the floor?", ("laundry_room",), "dirty_clothes",
+     "shirt"),
+    # written here: a TV room and a toy room
+    ("TV room checklist: the remote goes on the sofa.", ("tv_room",), "television", "remote_control"),
+    ("Toy room checklist: the ball goes in the box.", ("toy_room",), "toy", "ball"),
+])
+def test_a_room_said_in_full_names_no_object(text: str, rooms: tuple[str, ...], absent: str, named: str) -> None:
+    roles = _brief(text, rooms)["roles"]
+    assert absent not in roles and any(named in r for r in roles), roles
+
+
+# ----- whether the container a thing goes into is open belongs to that move's subtask ---------------
+
+def _groups(text: str, rooms: tuple[str, ...]) -> list[set[str]]:
+    return [set(g) for g in analyse(_brief(text, rooms), load_catalog()).groups]
+
+
+@pytest.mark.parametrize(("text", "rooms", "together"), [
+    # dev3 (a first-person narrative)
+    ("I may have left the milk carton sitting on the counter; if I did, it needs to go into the fridge. I can't "
+     "remember whether I shut the fridge door, so you might have to open it, and please close the fridge when "
+     "you're done.", ("kitchen",), {"milk_carton_on_kitchen_counter", "fridge_open"}),
+    # written here: a bedroom wardrobe
+    ("A shirt may be lying on the bed; if so, it goes into the wardrobe. I don't know whether the wardrobe is "
+     "shut, so you may have to open it.", ("bedroom",), {"shirt_on_bed", "wardrobe_open"}),
+])
+def test_whether_the_goal_container_is_open_joins_the_move(text: str, rooms: tuple[str, ...],
+                                                           together: set[str]) -> None:
+    assert any(together <= g for g in _groups(text, rooms)), _groups(text, rooms)
+
+
+def test_an_unrelated_open_state_stays_apart() -> None:
+    # the window is no container the shirt goes into: its own subtask
+    groups = _groups("A shirt may be lying on the bed; if so, it goes into the wardrobe. If the window is open, "
+                     "close it.", ("bedroom",))
+    assert not any({"shirt_on_bed", "window_open"} <= g for g in groups), groups

@@ -498,8 +498,11 @@ class _Reader:
                 facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
                 break
         else:
-            none = next((i for i, w in enumerate(words) if w == "none" and i > 0
-                         and words[i - 1] in {"have", "has", "is", "are", "there"}), None)
+            none = next((i for i, w in enumerate(words) if i > 0 and (
+                w == "none" and words[i - 1] in {"have", "has", "is", "are", "there"}
+                # "or we haven't got any", "if we do not have any": "none" said with a negation
+                or w == "any" and words[i - 1] in {"have", "has", "got"} and any(_negation(x) for x in words[:i]))),
+                None)
             if none is not None and subjects and subjects[0].start < none:
                 # "if it is anywhere else, or we have none": the thing spoken of may be absent
                 facts += [Fact(r, f"exists({r})", "exists", negated=True) for r in subjects[0].roles]
@@ -628,10 +631,14 @@ class _Reader:
                     x.kind in ("role", "pronoun") and x.end <= j for x in mentions):
                 continue  # "the banana on the table is overripe" speaks of the banana
             k = m.end
-            while k < len(words) and (words[k] in DESCRIPTIVE | NEGATIONS | {"that", "which"} or self._pp_at(words, k)):
+            placed = False  # a place said before the adjective: "if it's on the counter and ripe"
+            while k < len(words) and (words[k] in DESCRIPTIVE | NEGATIONS | {"that", "which"} or self._pp_at(words, k)
+                                      or placed and words[k] == "and" and self._unknown(words[k + 1:k + 2][0] if
+                                                                                       k + 1 < len(words) else "")):
+                placed = bool(self._pp_at(words, k))
                 k = self._pp_at(words, k) or k + 1
             neg = any(_negation(w) for w in words[m.end : k])
-            if k > m.end and k < len(words) and words[k - 1] in DESCRIPTIVE | NEGATIONS:
+            if k > m.end and k < len(words) and (words[k - 1] in DESCRIPTIVE | NEGATIONS or words[k - 1] == "and"):
                 if words[k] in ("a", "an") and k + 2 == len(words) and self._unknown(words[k + 1]):
                     # "... and it is a bill": a kind of the object (the clause ends with the noun)
                     out += [Fact(r, f"attr({r}, kind, {words[k + 1]})", "attr", "kind", negated=neg,
@@ -867,8 +874,12 @@ class _Reader:
                 hit = self.lex.attribute_of(r, w)
                 if hit is not None:
                     key, value = hit
+                    # "a dirty white one goes in the washing machine": an indefinite "one" with
+                    # the value before it describes which of its kind is meant, as "a ripe one" does
+                    one = bool(before) and w == before[0] and words[m.start] in ("one", "ones") and any(
+                        x in ("a", "an") for x in words[max(0, m.start - 3):m.start - 1])
                     out.append(Fact(r, f"attr({r}, {key}, {value})", "attr", key,
-                                    negated=negated and bool(after) and w == after[0]))
+                                    negated=negated and bool(after) and w == after[0], modifier=one))
         return out
 
     def attribute_classes(self, text: str) -> dict[tuple[str, str], list[str]]:
@@ -1640,6 +1651,15 @@ def _group(factors: list[Factor]) -> tuple[list[list[str]], list[set[str]]]:
                 # restated later in a sentence that makes them depend ("a dirty shirt goes into the
                 # machine, unless the machine is running")
                 parent[find(b.subject)] = find(a.subject)
+    for b in factors:
+        # "... it needs to go into the fridge. I can't remember whether the fridge door is shut,
+        # so you might have to open it": whether the container a thing is moved into in the
+        # sentence before is open is asked for that move, in its subtask
+        if b.kind == "state" and any(v.startswith(f"state({b.subject}, open)") for v in b.values.values()):
+            before = [a for a in factors if a.sentence == b.sentence - 1 >= 0 and a.subject != b.subject
+                      and b.subject in a.roles]
+            if before:
+                parent[find(b.subject)] = find(before[-1].subject)
     subject_of = {f.id: f.subject for f in factors}
     for f in factors:  # a factor asked only under another's value belongs to its subtask
         for dep, _ in f.context:

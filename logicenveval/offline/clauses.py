@@ -324,6 +324,15 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
         head = ""  # "Then, unless it is in the box, put it in": the condition opens the sentence
     tail = sentence[start + len(cue):]
     pieces: list[tuple[str, str | None, str]] = []
+    coordinated = re.search(r"[,;]?\s*\b(?:but|and|so)$", head, re.I)
+    own = _split(head[:coordinated.start()]) if coordinated and head[:coordinated.start()].strip() \
+        and re.search(r",\s*\S", tail) and not _first_cue(head.lower(), CONDITIONAL) else []
+    if own and all(r in ("uncertain", "scene") for _, _, r in own):
+        # "There may or may not be bread, but if there is a loaf on the counter, put it away": a
+        # remark on the scene joined to a condition that has its own instruction is no
+        # instruction of it
+        pieces += own
+        head = ""
     if head:
         pieces += _split(head) if _first_cue(head.lower(), CONDITIONAL) else [(head, cue, "consequence")]
         if pieces and pieces[-1][2] in ("statement", "scene"):

@@ -181,6 +181,9 @@ class _Reader:
         #: the head words of the task's room ids ("home_bar": "bar"): a bare noun that names no
         #: kind by itself and is one of them names the room ("tidy the home bar", "Re: the bar")
         self.room_heads = {words_of(r)[-1] for r in rooms if words_of(r)}
+        #: the words of the task's room ids ("laundry_room": laundry, room): said in full they name
+        #: the room, not the kind their first words name ("the laundry room" holds no laundry)
+        self.room_ids = {words_of(r) for r in rooms if len(words_of(r)) > 1}
         self.kinds: dict[str, _Kind] = {}
         self.recent: list[str] = []  # kinds in order of their last mention
         #: kind -> the head nouns the text named it by ("the box" then means the red toy box)
@@ -594,6 +597,10 @@ class _Reader:
                 i += 1
                 continue
             n, category = self.compound(i, n, category)
+            room = next((len(r) for r in self.room_ids if tuple(words[i:i + len(r)]) == r and len(r) > n), 0)
+            if room:
+                i += room  # "Laundry room - FAQ": the task's room, no laundry in it
+                continue
             if self.predicate_noun(i):
                 i += n  # "The essay collection is on the desk, that's a library book"
                 continue

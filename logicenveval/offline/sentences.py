@@ -146,17 +146,58 @@ def _state_subject(m: re.Match[str]) -> str:
     return f"{m.group(1)}if {'they are' if plural else 'it is'} {m.group(2)}, {'they' if plural else 'it'} {m.group(3)}"
 
 
+#: an indirect question about an action whose result is a state ("I can't remember whether I shut
+#: the fridge door", "not sure if we switched the heater off"): the question is the state of the
+#: thing acted on ("whether the fridge door is shut"), as a direct question would put it
+_DOER = r"(?:i|we|you|they|he|she|someone|somebody|anyone|anybody)"
+_THING = r"(?P<thing>(?:the|my|our|your)\s+[a-z]+(?:\s+[a-z]+){0,2}?)"
+_CLAUSE_END = r"(?=\s*(?:[,.;:!?)]|$|\s(?:or|and|so|but|when|before|after)\b))"
+_ACTED_STATE = re.compile(
+    rf"\b(?P<cue>whether|if)\s+{_DOER}\s+(?:(?:already|actually|even|ever)\s+)?(?:"
+    rf"(?P<verb>{'|'.join(w for w, (flag, _) in STATE_WORDS.items() if flag == 'open' and w != 'ajar')})\s+{_THING}"
+    rf"|(?:turned|switched)\s+(?P<pre>on|off)\s+{_THING.replace('thing', 'thing2')}"
+    rf"|(?:turned|switched)\s+{_THING.replace('thing', 'thing3')}\s+(?P<post>on|off)){_CLAUSE_END}", re.I | re.M)
+
+
+#: what makes an "if" clause an indirect question ("not sure if", "can't remember if", "check if"),
+#: not a condition on what the listener does ("if you open the fridge, close it after")
+_ASKING = re.compile(r"\b(?:remember|recall|know|sure|certain|wonder|check|see|idea|forget|forgot)\W+$", re.I)
+
+
+def _acted_state(m: re.Match[str]) -> str:
+    if m.group("cue").lower() == "if" and not _ASKING.search(m.string[max(0, m.start() - 30):m.start()]):
+        return m.group(0)
+    thing = m.group("thing") or m.group("thing2") or m.group("thing3")
+    state = m.group("verb") or m.group("pre") or m.group("post")
+    return f"{m.group('cue')} {thing} is {state}"
+
+
+#: a doubt about having got a thing at all ("I'm not sure I even got bread", "can't remember if we
+#: bought any milk"): whether there is one, as "there may or may not be bread" says
+_GOT_DOUBT = re.compile(
+    r"\b(?:(?:i'?m|i am|we'?re|we are)\s+)?(?:not sure|unsure|not certain|can'?t remember|cannot remember|don'?t know|don'?t remember)\s+"
+    rf"(?:(?:if|whether|that)\s+)?{_DOER}\s+(?:(?:even|actually|ever|really)\s+)?"
+    r"(?:got|bought|picked up|brought|fetched|have|had)\s+(?:(?:any|some|a|an)\s+)?"
+    r"(?P<thing>[a-z]+(?:\s+(?!(?:this|that|today|yesterday|at|in|on|for|when|or|and|but|too|either|again|"
+    r"after|before|from)\b)[a-z]+)?)", re.I)
+
+
 def unquote(text: str) -> str:
     """The text without an email's quoting marks: a reply above a quoted message reads as one
     text ("> On Monday, Jo wrote:" is no sentence; "> Could you tidy ..." is "Could you tidy ...");
     without the labels of lettered or numbered items; a place the speaker corrects dropped for the
     one meant ("in the wardrobe, no wait, in the hamper"); a bare state as a subject read as the
-    condition it is ("dirty goes in the hamper": "if it is dirty, it goes ..."); a condition's
-    elided subject spelled out
+    condition it is ("dirty goes in the hamper": "if it is dirty, it goes ..."); an indirect
+    question about an action as the state it leaves ("whether I shut the fridge door": "whether
+    the fridge door is shut"), and a doubt about having got a thing as one about whether there is
+    one ("not sure I even got bread": "there may or may not be bread"); a condition's elided
+    subject spelled out
     ("if found on" -> "if it is found on"); a table of items and places as its sentences
     (`detable`)."""
     plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", text))))
-    return detable(_STATE_SUBJECT.sub(_state_subject, _ELIDED_SUBJECT.sub(r"\1 it is ", plain)))
+    plain = _ACTED_STATE.sub(_acted_state, _ELIDED_SUBJECT.sub(r"\1 it is ", plain))
+    plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)
+    return detable(_STATE_SUBJECT.sub(_state_subject, plain))
 
 
 #: a table's column of item names and its column of places ("Item | Location | Notes"), and the
