@@ -1654,8 +1654,9 @@ def _group(factors: list[Factor]) -> tuple[list[list[str]], list[set[str]]]:
     for b in factors:
         # "... it needs to go into the fridge. I can't remember whether the fridge door is shut,
         # so you might have to open it": whether the container a thing is moved into in the
-        # sentence before is open is asked for that move, in its subtask
-        if b.kind == "state" and any(v.startswith(f"state({b.subject}, open)") for v in b.values.values()):
+        # sentence before is open, asked alone in a sentence of its own, is asked for that move
+        alone = not any(a.sentence == b.sentence and a.subject != b.subject for a in factors)
+        if alone and b.kind == "state" and any(v.startswith(f"state({b.subject}, open)") for v in b.values.values()):
             before = [a for a in factors if a.sentence == b.sentence - 1 >= 0 and a.subject != b.subject
                       and b.subject in a.roles]
             if before:
