@@ -648,3 +648,31 @@ def test_an_unrelated_open_state_stays_apart() -> None:
     groups = _groups("A shirt may be lying on the bed; if so, it goes into the wardrobe. If the window is open, "
                      "close it.", ("bedroom",))
     assert not any({"shirt_on_bed", "window_open"} <= g for g in groups), groups
+
+
+# ----- shorthand: an initialism of a named role, "w/", a verb after an arrow -----------------------
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev3 (a sticky note)
+    ("plate on counter:\n  dirty -> dishwasher (DW already running? -> sink instead).", ("kitchen",),
+     "dishwasher_toggled_on"),
+    # written here: a laundry room's washing machine
+    ("Load the towel into the washing machine. WM still running? -> leave the towel on the shelf.",
+     ("laundry_room",), "washing_machine_toggled_on"),
+])
+def test_an_initialism_names_the_role_it_abbreviates(text: str, rooms: tuple[str, ...], asked: str) -> None:
+    assert asked in _factors(text, rooms), _factors(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms", "verb", "tool"), [
+    # dev3 (a sticky note)
+    ("counter dirty? -> wipe w/ sponge if sponge is on the counter, else dish cloth.", ("kitchen",), "wet_wipe",
+     "sponge"),
+    # written here: a bathroom mirror, a kitchen floor
+    ("mirror dirty? -> wipe w/ cloth.", ("bathroom",), "wet_wipe", "cloth"),
+    ("floor sticky? -> mop w/ the sponge.", ("kitchen",), "mop", "sponge"),
+])
+def test_a_verb_after_an_arrow_with_w_slash_names_no_thing(text: str, rooms: tuple[str, ...], verb: str,
+                                                           tool: str) -> None:
+    roles = _brief(text, rooms)["roles"]
+    assert verb not in roles and tool in roles, roles

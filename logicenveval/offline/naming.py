@@ -34,7 +34,7 @@ from logicenveval.offline.lexicon import (
     verb_at,
     words_of,
 )
-from logicenveval.offline.sentences import PERSONAL_SUBJECTS, STATE_WORDS, expand, unquote
+from logicenveval.offline.sentences import ARROW, PERSONAL_SUBJECTS, STATE_WORDS, expand, unquote
 
 
 @handler("name_objects")
@@ -242,6 +242,8 @@ class _Reader:
             if k >= len(raw) or gaps[k].strip():
                 break
             nxt.append(raw[k])
+        if ARROW.search(gaps[i]) and nxt[:1] == ["with"] and verb_at(raw[i], "to", nxt):
+            return True  # "counter dirty? -> wipe w/ sponge": after an arrow, an instruction's verb
         return verb_at(raw[i], prev, nxt)
 
     def bare_noun(self, i: int, exact: str | None) -> str | None:

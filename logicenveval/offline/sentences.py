@@ -104,6 +104,8 @@ _ABBREV = re.compile(r"\b(e\.g|i\.e|etc|approx|vs)\.", re.I)
 #: a slash between two words offers alternatives, as "or" does ("on the chair / on the floor",
 #: "wet/dirty"; "and/or" is "and or")
 _SLASH = re.compile(r"(?<=[a-z])\s*/\s*(?=[a-z])", re.I)
+#: shorthand's "w/" is "with" ("wipe w/ sponge"), not "w or ..."
+_WITH = re.compile(r"\bw/\s*", re.I)
 
 
 #: an email's quoting: the attribution line above a quoted message ("On Monday, Jo wrote:") and
@@ -267,9 +269,9 @@ def detable(text: str) -> str:
 
 
 def expand(text: str) -> str:
-    """The text with contractions spelled out ("it's" -> "it is"), possessives dropped and a
-    slash between words read as "or"."""
-    out = _SLASH.sub(" or ", text.replace("\u2019", "'"))
+    """The text with contractions spelled out ("it's" -> "it is"), possessives dropped, "w/" read
+    as "with" and a slash between words as "or"."""
+    out = _SLASH.sub(" or ", _WITH.sub("with ", text.replace("\u2019", "'")))
     for pat, repl in _CONTRACTIONS:
         out = re.sub(pat, repl, out, flags=re.I)
     return out
