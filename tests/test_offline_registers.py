@@ -676,3 +676,17 @@ def test_a_verb_after_an_arrow_with_w_slash_names_no_thing(text: str, rooms: tup
                                                            tool: str) -> None:
     roles = _brief(text, rooms)["roles"]
     assert verb not in roles and tool in roles, roles
+
+
+@pytest.mark.parametrize(("text", "rooms", "together"), [
+    # dev3 (numbered steps): the move and the question in one sentence of their own
+    ("Check the nightstand for a book. A novel goes on the bookshelf. A textbook goes on the desk. Any other book "
+     "goes in the nightstand drawer: open the drawer first unless it is already open, and close it afterwards.",
+     ("bedroom",), {"book_on_nightstand", "nightstand_open"}),
+    # written here: a toy into a toy box
+    ("Check the floor for a toy. A ball goes on the shelf. Any other toy goes in the toy box: open the box first "
+     "unless it is already open.", ("kids_room",), {"toy_on_floor", "toy_box_open"}),
+])
+def test_a_container_opened_for_a_move_in_its_sentence_joins_the_move(text: str, rooms: tuple[str, ...],
+                                                                      together: set[str]) -> None:
+    assert any(together <= g for g in _groups(text, rooms)), _groups(text, rooms)

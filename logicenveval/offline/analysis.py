@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import json
 import re
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -1529,7 +1529,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             if dep is not None and dep is not factor:
                 factor.context.append((dep.id, _allowed(dep, negated, value)))
     factors.sort(key=lambda f: (f.order, _RANK[f.kind], f.id))
-    groups, group_roles = _group(factors)
+    groups, group_roles = _group(factors, _moves_into(factors, clauses))
     covered = set().union(*group_roles) if group_roles else set()
     return TaskAnalysis(sentences, clauses, factors, groups, group_roles, set(lex.roles) - covered)
 
@@ -1630,10 +1630,35 @@ def _contrasted(clauses: list[Clause], text: str) -> set[tuple[str, str]]:
     return out | {s for s, pols in polarity.items() if len(pols) == 2}
 
 
-def _group(factors: list[Factor]) -> tuple[list[list[str]], list[set[str]]]:
+def _moves_into(factors: list[Factor], clauses: list[Clause]) -> list[tuple[str, str]]:
+    """(thing, container) for each container whose being open is asked alone in its sentence
+    while that sentence or the one before moves a thing into it (a goal fact, or an instruction
+    under a factor of the thing that names the container): "... it needs to go into the
+    fridge. I can't remember whether I shut the fridge door, so you might have to open it", "Any
+    other book goes in the nightstand drawer: open the drawer first unless it is already open".
+    Whether the container is open is asked for that move, in the thing's subtask."""
+    out: list[tuple[str, str]] = []
+    for b in factors:
+        if b.kind != "state" or not any(v.startswith(f"state({b.subject}, open)") for v in b.values.values()) \
+                or any(a.sentence == b.sentence and a.subject != b.subject for a in factors):
+            continue
+        moved = [f.subject for c in clauses if c.sentence in (b.sentence - 1, b.sentence) for f in c.facts
+                 if f.goal and f.kind == "location" and f.key == b.subject and f.subject != b.subject
+                 and f.condition.startswith("inside(")]
+        # or an instruction of the sentence before, under a factor of the thing, names the container
+        moved = moved or [a.subject for a in factors if a.sentence == b.sentence - 1 >= 0
+                          and a.subject != b.subject and b.subject in a.roles]
+        if moved:
+            out.append((moved[-1], b.subject))
+    return out
+
+
+def _group(factors: list[Factor],
+           moves: Iterable[tuple[str, str]] = ()) -> tuple[list[list[str]], list[set[str]]]:
     """Independent subtasks: factors on one subject, joined with factors of other subjects that
     the same sentence makes depend on them (`a dirty plate goes into the dishwasher, but when the
-    dishwasher is running ...`). Subjects listed in one clause stay independent."""
+    dishwasher is running ...`), and a container's being open with the thing moved into it
+    (`_moves_into`). Subjects listed in one clause stay independent."""
     parent: dict[str, str] = {f.subject: f.subject for f in factors}
 
     def find(x: str) -> str:
@@ -1651,16 +1676,9 @@ def _group(factors: list[Factor]) -> tuple[list[list[str]], list[set[str]]]:
                 # restated later in a sentence that makes them depend ("a dirty shirt goes into the
                 # machine, unless the machine is running")
                 parent[find(b.subject)] = find(a.subject)
-    for b in factors:
-        # "... it needs to go into the fridge. I can't remember whether the fridge door is shut,
-        # so you might have to open it": whether the container a thing is moved into in the
-        # sentence before is open, asked alone in a sentence of its own, is asked for that move
-        alone = not any(a.sentence == b.sentence and a.subject != b.subject for a in factors)
-        if alone and b.kind == "state" and any(v.startswith(f"state({b.subject}, open)") for v in b.values.values()):
-            before = [a for a in factors if a.sentence == b.sentence - 1 >= 0 and a.subject != b.subject
-                      and b.subject in a.roles]
-            if before:
-                parent[find(b.subject)] = find(before[-1].subject)
+    for moved, container in moves:
+        if moved in parent and container in parent:
+            parent[find(container)] = find(moved)
     subject_of = {f.id: f.subject for f in factors}
     for f in factors:  # a factor asked only under another's value belongs to its subtask
         for dep, _ in f.context:
