@@ -690,3 +690,25 @@ def test_a_verb_after_an_arrow_with_w_slash_names_no_thing(text: str, rooms: tup
 def test_a_container_opened_for_a_move_in_its_sentence_joins_the_move(text: str, rooms: tuple[str, ...],
                                                                       together: set[str]) -> None:
     assert any(together <= g for g in _groups(text, rooms)), _groups(text, rooms)
+
+
+# ----- an answer's factor joins the subtask of the thing its question asked about -------------------
+
+@pytest.mark.parametrize(("text", "rooms", "together"), [
+    # dev3 (a FAQ)
+    ("Q: What about a towel in the dryer?\nA: Once the dryer has stopped, take the towel out, put it on the shelf "
+     "and close the dryer door. While the dryer is still running, leave it alone.", ("laundry_room",),
+     {"towel_inside_dryer", "dryer_toggled_on"}),
+    # written here: a kitchen, a plate and the dishwasher
+    ("Is there a plate on the counter? If the dishwasher is running, put the plate in the sink.", ("kitchen",),
+     {"plate_on_kitchen_counter", "dishwasher_toggled_on"}),
+])
+def test_an_answer_acting_on_the_asked_thing_joins_its_subtask(text: str, rooms: tuple[str, ...],
+                                                               together: set[str]) -> None:
+    assert any(together <= g for g in _groups(text, rooms)), _groups(text, rooms)
+
+
+def test_an_instruction_on_another_thing_stays_apart() -> None:
+    # the lamp's sentence does nothing to the plate: two subtasks (written here)
+    groups = _groups("Is there a plate on the counter? If the lamp is on, switch it off.", ("kitchen",))
+    assert not any({"plate_on_kitchen_counter", "table_lamp_toggled_on"} <= g for g in groups), groups

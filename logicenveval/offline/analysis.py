@@ -1529,7 +1529,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             if dep is not None and dep is not factor:
                 factor.context.append((dep.id, _allowed(dep, negated, value)))
     factors.sort(key=lambda f: (f.order, _RANK[f.kind], f.id))
-    groups, group_roles = _group(factors, _moves_into(factors, clauses))
+    groups, group_roles = _group(factors, _moves_into(factors, clauses) + _answers(factors))
     covered = set().union(*group_roles) if group_roles else set()
     return TaskAnalysis(sentences, clauses, factors, groups, group_roles, set(lex.roles) - covered)
 
@@ -1650,6 +1650,23 @@ def _moves_into(factors: list[Factor], clauses: list[Clause]) -> list[tuple[str,
                           and a.subject != b.subject and b.subject in a.roles]
         if moved:
             out.append((moved[-1], b.subject))
+    return out
+
+
+def _answers(factors: list[Factor]) -> list[tuple[str, str]]:
+    """(thing, other) for each factor on another object, asked alone in its sentence, whose
+    instruction acts on a thing whose place or presence is asked in the sentence just before (not
+    a place a thing goes to, whose state was asked there) ("Q: What about a towel in
+    the dryer? A: Once the dryer has stopped, take the towel out ..."): the sentence answers the
+    question about the thing, so its factor is asked in the thing's subtask."""
+    out: list[tuple[str, str]] = []
+    for b in factors:
+        if any(a.sentence == b.sentence and a.subject != b.subject for a in factors):
+            continue
+        asked = [a.subject for a in factors if a.sentence == b.sentence - 1 >= 0 and a.subject != b.subject
+                 and a.kind in ("location", "exists") and a.subject in b.roles]
+        if asked:
+            out.append((asked[-1], b.subject))
     return out
 
 
