@@ -712,3 +712,18 @@ def test_an_instruction_on_another_thing_stays_apart() -> None:
     # the lamp's sentence does nothing to the plate: two subtasks (written here)
     groups = _groups("Is there a plate on the counter? If the lamp is on, switch it off.", ("kitchen",))
     assert not any({"plate_on_kitchen_counter", "table_lamp_toggled_on"} <= g for g in groups), groups
+
+
+# ----- a state and its opposite offered together: the speaker does not know which ----------------
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev3 (a sticky note)
+    ("plate on counter:\n  dirty -> dishwasher (DW already running? -> sink instead). DW door open or shut, "
+     "doesn't matter, but CLOSED at the end.", ("kitchen",), "dishwasher_open"),
+    # written here: a bedroom wardrobe, a laundry room's machine
+    ("The wardrobe door open or shut, doesn't matter, but closed at the end.", ("bedroom",), "wardrobe_open"),
+    ("Washing machine on or off, doesn't matter, but off at the end.", ("laundry_room",),
+     "washing_machine_toggled_on"),
+])
+def test_a_state_or_its_opposite_is_uncertain(text: str, rooms: tuple[str, ...], asked: str) -> None:
+    assert asked in _factors(text, rooms), _factors(text, rooms)
