@@ -16,7 +16,7 @@ from __future__ import annotations
 import json
 import re
 from collections import Counter
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -66,7 +66,11 @@ from logicenveval.scene.compat import can_hold
 DESCRIPTIVE = frozenset(
     ["is", "are", "was", "were", "be", "been", "being", "am", "seem", "seems", "seemed", "look", "looks", "appear", "appears", "still", "already", "currently", "left", "lying", "lie", "lies", "sitting", "sit", "sits", "standing", "stand", "stands", "kept", "found", "dropped", "fallen", "ended", "up", "have", "has", "had", "got", "gotten", "remain", "remains", "remained", "now", "itself", "themselves", "just", "somehow", "accidentally", "again", "there", "here", "turned", "switched", "scattered", "sitting", "lays", "fell", "slipped", "rolled", "may", "might", "could", "possibly", "perhaps", "maybe", "probably", "sometimes", "will",
      "also", "too", "even", "lives", "live", "stays", "stay", "keep", "keeps", "rolling", "falling",
-     "ending", "somewhere"]
+     "ending", "somewhere",
+     # a predicate adjective of presence ("a book may be present on the floor", a manual's register)
+     "present",
+     # slang verbs of resting ("my mug might be chilling on the desk")
+     "chill", "chills", "chilling"]
 )
 #: verbs after a subject that announce where it must go (a goal, not a condition)
 MOTION = frozenset(
@@ -80,6 +84,9 @@ PARTS = frozenset({"door", "lid", "leaf", "screen", "soil", "surface", "top", "i
                    "content", "bottom", "side", "handle", "shelf", "drawer", "bag", "glass", "bottle",
                    "box", "pack", "packet", "jar", "carton", "tub", "container", "roll"})
 PRONOUNS = frozenset({"it", "they", "them", "one", "ones", "its", "their", "whose"})
+#: the parts by which a piece of furniture opens: said alone ("open the drawer"), they mean the
+#: piece last named that opens (`_Reader._opener`)
+OPENING_PARTS = frozenset({"drawer", "door"})
 #: kinds of thing that depict a person or an animal, which a child calls "she" or "he", and the
 #: pronouns that may then mean them (`_Reader.mentions`)
 PERSONIFIED = frozenset({"doll", "teddy_bear"})
@@ -312,6 +319,15 @@ class _Reader:
         known = [r for r in self.recent if r in m.roles]
         return Mention((known[-1],), m.start, m.end, m.kind) if known else m
 
+    def _opener(self, before: list[str]) -> str | None:
+        """The furniture piece last named (in the clause, else before it) whose kind opens and
+        is not carried about: what a drawer or a door said alone belongs to."""
+        for role in reversed(self.recent + before):
+            kind = self.kinds.get(role)
+            if kind is not None and kind.openable and not kind.pickable:
+                return role
+        return None
+
     def mentions(self, words: list[str], toks: list[tuple[str, int, int]]) -> list[Mention]:
         found = [self._recent_first(m) for m in self.lex.find_mentions(toks) if not _verb_read(toks, m)]
         # "the kitchen sink", "the bathroom mirror": a room's name right before a thing's names the thing
@@ -323,6 +339,14 @@ class _Reader:
             self.topic = (self.recent[-1],)
             found.append(Mention(self.topic, 0, 1, "pronoun"))
         covered = {i for m in found for i in range(m.start, m.end)}
+        for i, w in enumerate(words):
+            if i not in covered and w in OPENING_PARTS and i > 0 and words[i - 1] in ARTICLES | {"its", "their"}:
+                # "Any other book goes in the nightstand drawer: open the drawer first": a drawer
+                # or a door said alone is that of the furniture piece last named that opens
+                owner = self._opener([r for m in found if m.end <= i for r in m.roles])
+                if owner is not None:
+                    found.append(Mention((owner,), i, i + 1, "role"))
+                    covered.add(i)
         for i, w in enumerate(words):
             if i not in covered and w in PERSON_PRONOUNS and not any(m.start == i + 1 for m in found):
                 # "my doll sleeps on the bed but if she fell on the floor put her back": a child
@@ -497,8 +521,11 @@ class _Reader:
                 facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
                 break
         else:
-            none = next((i for i, w in enumerate(words) if w == "none" and i > 0
-                         and words[i - 1] in {"have", "has", "is", "are", "there"}), None)
+            none = next((i for i, w in enumerate(words) if i > 0 and (
+                w == "none" and words[i - 1] in {"have", "has", "is", "are", "there"}
+                # "or we haven't got any", "if we do not have any": "none" said with a negation
+                or w == "any" and words[i - 1] in {"have", "has", "got"} and any(_negation(x) for x in words[:i]))),
+                None)
             if none is not None and subjects and subjects[0].start < none:
                 # "if it is anywhere else, or we have none": the thing spoken of may be absent
                 facts += [Fact(r, f"exists({r})", "exists", negated=True) for r in subjects[0].roles]
@@ -654,10 +681,14 @@ class _Reader:
                     x.kind in ("role", "pronoun") and x.end <= j for x in mentions):
                 continue  # "the banana on the table is overripe" speaks of the banana
             k = m.end
-            while k < len(words) and (words[k] in DESCRIPTIVE | NEGATIONS | {"that", "which"} or self._pp_at(words, k)):
+            placed = False  # a place said before the adjective: "if it's on the counter and ripe"
+            while k < len(words) and (words[k] in DESCRIPTIVE | NEGATIONS | {"that", "which"} or self._pp_at(words, k)
+                                      or placed and words[k] == "and" and self._unknown(words[k + 1:k + 2][0] if
+                                                                                       k + 1 < len(words) else "")):
+                placed = bool(self._pp_at(words, k))
                 k = self._pp_at(words, k) or k + 1
             neg = any(_negation(w) for w in words[m.end : k])
-            if k > m.end and k < len(words) and words[k - 1] in DESCRIPTIVE | NEGATIONS:
+            if k > m.end and k < len(words) and (words[k - 1] in DESCRIPTIVE | NEGATIONS or words[k - 1] == "and"):
                 if words[k] in ("a", "an") and k + 2 == len(words) and self._unknown(words[k + 1]):
                     # "... and it is a bill": a kind of the object (the clause ends with the noun)
                     out += [Fact(r, f"attr({r}, kind, {words[k + 1]})", "attr", "kind", negated=neg,
@@ -895,8 +926,12 @@ class _Reader:
                 hit = self.lex.attribute_of(r, w)
                 if hit is not None:
                     key, value = hit
+                    # "a dirty white one goes in the washing machine": an indefinite "one" with
+                    # the value before it describes which of its kind is meant, as "a ripe one" does
+                    one = bool(before) and w == before[0] and words[m.start] in ("one", "ones") and any(
+                        x in ("a", "an") for x in words[max(0, m.start - 3):m.start - 1])
                     out.append(Fact(r, f"attr({r}, {key}, {value})", "attr", key,
-                                    negated=negated and bool(after) and w == after[0]))
+                                    negated=negated and bool(after) and w == after[0], modifier=one))
         return out
 
     def attribute_classes(self, text: str) -> dict[tuple[str, str], list[str]]:
@@ -1157,6 +1192,26 @@ def _goes(reader: _Reader, text: str) -> bool:
                                            for m in reader.lex.find_mentions(toks))
 
 
+def _bare_goal(reader: _Reader, text: str) -> str | None:
+    """An instruction that is only the name of something that holds things ("dirty? kitchen
+    sink.", "wet -> laundry basket", a note's shorthand): where the thing spoken of goes, as if
+    its preposition were said ("in" a container that is no surface, else "on"); None for any other
+    text, or when nothing is spoken of."""
+    toks = tokens(expand(text))
+    words = [w for w, _, _ in toks]
+    found = reader.lex.find_mentions(toks)
+    roles = [m for m in found if m.kind == "role"]
+    covered = {i for m in found for i in range(m.start, m.end)}
+    if len(roles) != 1 or len(roles[0].roles) != 1 or reader.topic_kind != "role" or not reader.topic \
+            or roles[0].roles[0] in reader.topic \
+            or any(i not in covered and w not in ARTICLES | {"back", "instead"} for i, w in enumerate(words)):
+        return None
+    kind = reader.kinds.get(roles[0].roles[0])
+    if kind is None or not (kind.container or kind.surface):
+        return None
+    return "in" if kind.container and not kind.surface else "on"
+
+
 def _available(reader: _Reader, text: str) -> list[Fact]:
     """"clean it with the microfibre cloth if any": with no place said, whether there is one of
     the thing named last before the cue (not a place it is used on or kept in)."""
@@ -1291,13 +1346,39 @@ def _distributed(facts: tuple[Fact, ...], members: tuple[str, ...]) -> tuple[Fac
     return tuple(dict.fromkeys(out))
 
 
+#: "Check the bed for my phone", "Search the floor for the keys", "Look in the drawer for a pen":
+#: an instruction to look at a place for a thing says the thing may be there, and a later "if
+#: it's there" asks it; the verbs that look, with the preposition each may take before the place
+_CHECK = re.compile(r"^(?P<lead>\W*(?:please\s+|now\s+|then\s+|first\s+)?)(?:check|search|inspect|"
+                    r"look\s+(?:on|in|under|at|over|through|inside))\s+(?P<place>[^,;.!?]+?)\s+for\s+"
+                    r"(?P<thing>[^,;.!?]+?)(?P<end>\s*[.!;]?\s*)$", re.I)
+
+
+def _checked(sentence: str, lex: Lexicon, kinds: Mapping[str, Category]) -> str:
+    """A sentence that looks at a place for a thing ("Check the bed for my phone.") as the doubt
+    it implies ("My phone may be on the bed."): in a container that is no surface the thing is
+    inside, elsewhere on it. Only when the place is a named object or the floor and the thing a
+    named object; any other sentence is returned as it is."""
+    m = _CHECK.match(sentence)
+    if m is None:
+        return sentence
+    places = lex.find_mentions(tokens(expand(m.group("place"))))
+    things = lex.find_mentions(tokens(expand(m.group("thing"))))
+    if len(places) != 1 or places[0].kind not in ("role", "floor") or not any(t.kind == "role" for t in things):
+        return sentence
+    kind = kinds.get(places[0].roles[0]) if places[0].kind == "role" else None
+    prep = "in" if kind is not None and kind.container and not kind.surface else "on"
+    thing = m.group("thing").strip()
+    return f"{m.group('lead')}{thing[:1].upper()}{thing[1:]} may be {prep} {m.group('place').strip()}{m.group('end')}"
+
+
 def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     lex = Lexicon.build(brief, catalog)
     kinds = {name: cat for name, role in dict(brief.get("roles") or {}).items()
              if (cat := catalog.get(str(role.get("category", "")))) is not None}
     reader = _Reader(lex, _capabilities(brief, catalog), kinds)
     categories = {name: str(role.get("category", "")) for name, role in dict(brief.get("roles") or {}).items()}
-    sentences = split_sentences(unquote(str(brief["description"])))
+    sentences = [_checked(sent, lex, kinds) for sent in split_sentences(unquote(str(brief["description"])))]
     clauses: list[Clause] = []
     grammatical = 0  # pieces split at ':' or ';' still belong to one sentence for grouping
     headed = -1  # the sentence whose heading ("Shirt on the floor:") the pieces after it answer
@@ -1352,6 +1433,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 said = said.split(")")[0]  # "(open the wardrobe if the door's shut) and shut it": the aside ends
             if role == "consequence" and _goes(reader, said):
                 said = f"it goes {said}"  # "dry: on the shoe rack", "clean - onto the armchair"
+            elif (role == "consequence" or role == "statement" and clauses and clauses[-1].role == "condition"
+                  and clauses[-1].cue == "?") and (prep := _bare_goal(reader, said)):
+                said = f"it goes {prep} {said}"  # "dirty? kitchen sink.", "wet -> laundry basket"
             if place[0] == grammatical:
                 said = f"{said.rstrip(' .;,')} {place[1]}"
                 doubt = bool({w for w, _, _ in tokens(place[1])} & UNCERTAIN)
@@ -1541,7 +1625,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             if dep is not None and dep is not factor:
                 factor.context.append((dep.id, _allowed(dep, negated, value)))
     factors.sort(key=lambda f: (f.order, _RANK[f.kind], f.id))
-    groups, group_roles = _group(factors)
+    groups, group_roles = _group(factors, _moves_into(factors, clauses) + _answers(factors))
     covered = set().union(*group_roles) if group_roles else set()
     return TaskAnalysis(sentences, clauses, factors, groups, group_roles, set(lex.roles) - covered)
 
@@ -1642,10 +1726,52 @@ def _contrasted(clauses: list[Clause], text: str) -> set[tuple[str, str]]:
     return out | {s for s, pols in polarity.items() if len(pols) == 2}
 
 
-def _group(factors: list[Factor]) -> tuple[list[list[str]], list[set[str]]]:
+def _moves_into(factors: list[Factor], clauses: list[Clause]) -> list[tuple[str, str]]:
+    """(thing, container) for each container whose being open is asked alone in its sentence
+    while that sentence or the one before moves a thing into it (a goal fact, or an instruction
+    under a factor of the thing that names the container): "... it needs to go into the
+    fridge. I can't remember whether I shut the fridge door, so you might have to open it", "Any
+    other book goes in the nightstand drawer: open the drawer first unless it is already open".
+    Whether the container is open is asked for that move, in the thing's subtask."""
+    out: list[tuple[str, str]] = []
+    for b in factors:
+        if b.kind != "state" or not any(v.startswith(f"state({b.subject}, open)") for v in b.values.values()) \
+                or any(a.sentence == b.sentence and a.subject != b.subject for a in factors):
+            continue
+        moved = [f.subject for c in clauses if c.sentence in (b.sentence - 1, b.sentence) for f in c.facts
+                 if f.goal and f.kind == "location" and f.key == b.subject and f.subject != b.subject
+                 and f.condition.startswith("inside(")]
+        # or an instruction of the sentence before, under a factor of the thing, names the container
+        moved = moved or [a.subject for a in factors if a.sentence == b.sentence - 1 >= 0
+                          and a.subject != b.subject and b.subject in a.roles]
+        if moved:
+            out.append((moved[-1], b.subject))
+    return out
+
+
+def _answers(factors: list[Factor]) -> list[tuple[str, str]]:
+    """(thing, other) for each factor on another object, asked alone in its sentence, whose
+    instruction acts on a thing whose place or presence is asked in the sentence just before (not
+    a place a thing goes to, whose state was asked there) ("Q: What about a towel in
+    the dryer? A: Once the dryer has stopped, take the towel out ..."): the sentence answers the
+    question about the thing, so its factor is asked in the thing's subtask."""
+    out: list[tuple[str, str]] = []
+    for b in factors:
+        if any(a.sentence == b.sentence and a.subject != b.subject for a in factors):
+            continue
+        asked = [a.subject for a in factors if a.sentence == b.sentence - 1 >= 0 and a.subject != b.subject
+                 and a.kind in ("location", "exists") and a.subject in b.roles]
+        if asked:
+            out.append((asked[-1], b.subject))
+    return out
+
+
+def _group(factors: list[Factor],
+           moves: Iterable[tuple[str, str]] = ()) -> tuple[list[list[str]], list[set[str]]]:
     """Independent subtasks: factors on one subject, joined with factors of other subjects that
     the same sentence makes depend on them (`a dirty plate goes into the dishwasher, but when the
-    dishwasher is running ...`). Subjects listed in one clause stay independent."""
+    dishwasher is running ...`), and a container's being open with the thing moved into it
+    (`_moves_into`). Subjects listed in one clause stay independent."""
     parent: dict[str, str] = {f.subject: f.subject for f in factors}
 
     def find(x: str) -> str:
@@ -1663,6 +1789,9 @@ def _group(factors: list[Factor]) -> tuple[list[list[str]], list[set[str]]]:
                 # restated later in a sentence that makes them depend ("a dirty shirt goes into the
                 # machine, unless the machine is running")
                 parent[find(b.subject)] = find(a.subject)
+    for moved, container in moves:
+        if moved in parent and container in parent:
+            parent[find(container)] = find(moved)
     subject_of = {f.id: f.subject for f in factors}
     for f in factors:  # a factor asked only under another's value belongs to its subtask
         for dep, _ in f.context:

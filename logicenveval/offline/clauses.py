@@ -306,7 +306,8 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
             else:
                 said = re.findall(r"[a-z]+", p.lower())
                 # "The ball often ends up on the floor": a habitual statement says what may be so
-                out.append((p, None, "uncertain" if set(said) & UNCERTAIN or habitual(said) else "statement"))
+                out.append((p, None, "uncertain" if set(said) & UNCERTAIN or habitual(said) or either_state(said)
+                            else "statement"))
         return out
     start, cue = best
     after = re.match(r"\W*([a-z' ]{0,30}?)\W*(?:$|[,;]|\s-\s)", expand(low[start + len(cue):]))
@@ -324,6 +325,15 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
         head = ""  # "Then, unless it is in the box, put it in": the condition opens the sentence
     tail = sentence[start + len(cue):]
     pieces: list[tuple[str, str | None, str]] = []
+    coordinated = re.search(r"[,;]?\s*\b(?:but|and|so)$", head, re.I)
+    own = _split(head[:coordinated.start()]) if coordinated and head[:coordinated.start()].strip() \
+        and re.search(r",\s*\S", tail) and not _first_cue(head.lower(), CONDITIONAL) else []
+    if own and all(r in ("uncertain", "scene") for _, _, r in own):
+        # "There may or may not be bread, but if there is a loaf on the counter, put it away": a
+        # remark on the scene joined to a condition that has its own instruction is no
+        # instruction of it
+        pieces += own
+        head = ""
     if head:
         pieces += _split(head) if _first_cue(head.lower(), CONDITIONAL) else [(head, cue, "consequence")]
         if pieces and pieces[-1][2] in ("statement", "scene"):
@@ -418,6 +428,16 @@ def _subsplit(pieces: list[tuple[str, str | None, str]]) -> list[tuple[str, str 
 ANAPHORIC = frozenset({"so", "that", "this", "it", "they", "them", "is", "are", "was", "were", "has",
                        "have", "had", "do", "does", "did", "be", "been", "being", "the", "case",
                        "happen", "happens", "happened", "true", "indeed", "still", "again", "really"})
+
+
+def either_state(words: list[str]) -> bool:
+    """Whether the words offer a state and its opposite ("DW door open or shut, doesn't matter",
+    "the lamp may be on or off"): the speaker does not know which, so the remark is uncertain."""
+    for k in range(1, len(words) - 1):
+        a, b = STATE_WORDS.get(words[k - 1]), STATE_WORDS.get(words[k + 1])
+        if words[k] == "or" and a is not None and b is not None and a[0] == b[0] and a[1] != b[1]:
+            return True
+    return False
 
 
 def points_back(text: str) -> bool:

@@ -123,6 +123,28 @@ class Mention:
     kind: str = "role"  # "role" | "room" | "floor"
 
 
+#: a word of two or three capitals ("DW", "WM"): an initialism, when it abbreviates one role's name
+_INITIALISM = re.compile(r"\b[A-Z]{2,3}\b")
+
+
+def _abbreviates(short: str, category: str) -> bool:
+    """Whether `short` ("dw") is an initialism of a name ("dishwasher", "washing_machine"): the
+    initials of its words, or for a one-word compound its first letter and then, in order, the
+    first letters of its parts ("dish|washer"; a part starts at any later letter)."""
+    words = category.lower().split("_")
+    if len(words) > 1:
+        return short == "".join(w[0] for w in words)
+    word = words[0]
+    if len(short) < 2 or word[:1] != short[0]:
+        return False
+    at = 1
+    for letter in short[1:]:
+        at = word.find(letter, at + 1)
+        if at < 0:
+            return False
+    return True
+
+
 @dataclass
 class Lexicon:
     roles: dict[str, dict[str, Any]]
@@ -190,6 +212,12 @@ class Lexicon:
             phrase = words_of(role["category"])
             if len(phrase) == 2 and phrase[1] in CONTROL_HEADS and phrase[:1] not in lex.phrases:
                 lex.phrases[phrase[:1]] = {name}  # "the light" of a light switch
+        for short in set(_INITIALISM.findall(str(brief.get("description", "")))):
+            # "DW already running?", "WM door": a note's initialism of a role's name
+            if (short.lower(),) not in lex.phrases:
+                meant = {name for name, role in roles.items() if _abbreviates(short.lower(), role["category"])}
+                if len(meant) == 1:
+                    lex.phrases[(short.lower(),)] = meant
         text = [w for w, _, _ in tokens(str(brief.get("description", "")))]
         for spare in (r for r in roles if _spare(r)):
             kin = [p for p, names in lex.phrases.items() if spare in names and len(names) > 1]

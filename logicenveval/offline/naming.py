@@ -34,7 +34,14 @@ from logicenveval.offline.lexicon import (
     verb_at,
     words_of,
 )
-from logicenveval.offline.sentences import FORMS, PERSONAL_SUBJECTS, STATE_WORDS, expand, unquote
+from logicenveval.offline.sentences import (
+    ARROW,
+    FORMS,
+    PERSONAL_SUBJECTS,
+    STATE_WORDS,
+    expand,
+    unquote,
+)
 
 
 @handler("name_objects")
@@ -67,6 +74,10 @@ _ALSO_VERBS = frozenset({"can", "throw", "stand", "switch", "set", "press", "iro
 #: attributes whose values say what a thing is (a toy's kind: doll, car, ball): a bare plural
 #: of such a value after the thing is named is a class of it (`_Reader.kind_value`)
 KIND_ATTRIBUTES = ("kind",)
+#: the openers of a run of parallel sentences that sort things by kind, one kind each ("A novel
+#: goes ... A textbook goes ... Any other book goes ..."), and how many sentences a run may take
+_RUN_OPENERS = frozenset({"a", "an", "any"})
+_RUN = 4
 #: words too common to say which of several categories a bare noun means
 _NOT_CONTEXT = frozenset({"floor", "wall", "ceiling", "room"})
 #: "that is a ...", "it was a ...": a predicate noun of a thing already named (`predicate_noun`)
@@ -180,6 +191,9 @@ class _Reader:
         #: the head words of the task's room ids ("home_bar": "bar"): a bare noun that names no
         #: kind by itself and is one of them names the room ("tidy the home bar", "Re: the bar")
         self.room_heads = {words_of(r)[-1] for r in rooms if words_of(r)}
+        #: the words of the task's room ids ("laundry_room": laundry, room): said in full they name
+        #: the room, not the kind their first words name ("the laundry room" holds no laundry)
+        self.room_ids = {words_of(r) for r in rooms if len(words_of(r)) > 1}
         self.kinds: dict[str, _Kind] = {}
         self.recent: list[str] = []  # kinds in order of their last mention
         #: kind -> the head nouns the text named it by ("the box" then means the red toy box)
@@ -254,6 +268,8 @@ class _Reader:
             if k >= len(raw) or gaps[k].strip():
                 break
             nxt.append(raw[k])
+        if ARROW.search(gaps[i]) and nxt[:1] == ["with"] and verb_at(raw[i], "to", nxt):
+            return True  # "counter dirty? -> wipe w/ sponge": after an arrow, an instruction's verb
         return verb_at(raw[i], prev, nxt)
 
     def bare_noun(self, i: int, exact: str | None) -> str | None:
@@ -580,8 +596,15 @@ class _Reader:
                  if head in self.catalog.categories[c].attributes.get(key, ())]
         if prev in ("a", "an") and self.text.raw[i + n - 1] == head:
             # "a doll into the red toy box; ... any other toy into the green one": an indefinite
-            # one set against "other <kind>" in its sentence is a class of that kind too
-            said = words[self.text.sentence_start(i):self.text.sentence_end(i)]
+            # one set against "other <kind>" in its sentence is a class of that kind too, or in a
+            # run of sentences that each open with one ("A novel goes on the bookshelf. A
+            # textbook goes on the desk. Any other book goes in the drawer.")
+            end = self.text.sentence_end(i)
+            for _ in range(_RUN):
+                if end >= len(words) or words[end] not in _RUN_OPENERS:
+                    break
+                end = self.text.sentence_end(end)
+            said = words[self.text.sentence_start(i):end]
             return any(w == "other" and set(said[k + 1:k + 3]) & set(words_of(c))
                        for c in kinds for k, w in enumerate(said))
         if self.text.raw[i + n - 1] == head or prev in _DETERMINERS or prev in _COUNTS:
@@ -670,6 +693,10 @@ class _Reader:
                 continue
             if shared is None:
                 n, category = self.compound(i, n, category)
+            room = next((len(r) for r in self.room_ids if tuple(words[i:i + len(r)]) == r and len(r) > n), 0)
+            if room:
+                i += room  # "Laundry room - FAQ": the task's room, no laundry in it
+                continue
             if self.predicate_noun(i):
                 i += n  # "The essay collection is on the desk, that's a library book"
                 continue

@@ -74,13 +74,16 @@ RESUMPTIVE = frozenset({"it", "they"})
 STATIVE = frozenset({"lie", "lies", "lay", "lying", "sit", "sits", "sat", "sitting", "stand", "stands",
                      "stood", "standing", "rest", "rests", "resting", "hang", "hangs", "hanging",
                      "stay", "stays", "wait", "waits", "waiting", "leaning", "lean",
-                     "leans", "propped"})
+                     "leans", "propped",
+                     # slang ("chilling on the desk")
+                     "chill", "chills", "chilling"})
 #: participles that state a result ("has been left on the floor", "are found in the kitchen"):
 #: after a perfect ("has/have been") all of these state a place; after a plain "is/are" only the
 #: `PASSIVE_STATIVE` ones do ("is put on the bed" is an instruction in the passive voice)
 RESULT = frozenset({"left", "dropped", "put", "placed", "thrown", "set", "found", "located", "knocked",
-                    "kept", "stored", "dumped", "abandoned", "forgotten", "parked", "stuck"})
-PASSIVE_STATIVE = frozenset({"found", "located", "kept", "stored", "situated", "seated"})
+                    "kept", "stored", "dumped", "abandoned", "forgotten", "parked", "stuck", "present"})
+PASSIVE_STATIVE = frozenset({"found", "located", "kept", "stored", "situated", "seated",
+                             "present"})  # "a dirty mark is present on the floor"
 PERFECT = frozenset({"has", "have", "had"})
 #: verbs whose subject holds what follows ("the kitchen has the dishwasher", "it contains a bed",
 #: "the basket also holds a box of cereal")

@@ -84,6 +84,9 @@ def habitual(words: list[str]) -> bool:
             return True
     return False
 PREP_IN = frozenset({"in", "inside", "into", "within"})
+#: participles that say where or how a thing was come upon; after a bare conditional they are the
+#: condition's verb with its subject elided ("if found on the floor", "unless left open")
+FOUND_PARTICIPLES = frozenset({"found", "left", "seen", "spotted", "discovered", "located", "noticed"})
 
 #: words after a noun's "'s" that make it the verb, not a possessive: "the door's shut", "the
 #: pillow's been moved", "the dishwasher's already on" (but "the cat's ball")
@@ -105,6 +108,9 @@ _CONTRACTIONS = [
     (r"\b(there|that|what|where|who|here)s\b", r"\1 is"), (r"\b(they|you)re\b", r"\1 are"),
     (r"\b(is|are|was|were|do|does|did|has|have|had|should|could|would|must|need)nt\b", r"\1 not"),
     (r"\bcant\b", "can not"), (r"\bwont\b", "will not"), (r"\b(you|they|we)ve\b", r"\1 have"),
+    # a dropped "g" written with an apostrophe, as slang is typed ("chillin' on the desk",
+    # "sittin' there"): the "-ing" form
+    (r"\b([a-z]{2,}in)'(?![\w'])", r"\1g"),
     # texting's "u" for "you" (not a letter of a name: "u-bend", "U-shaped")
     (r"(?<![\w'-])u(?![\w'-])", "you"),
 ]
@@ -119,6 +125,8 @@ _ABBREV = re.compile(r"\b(e\.g|i\.e|etc|approx|vs)\.", re.I)
 #: a slash between two words offers alternatives, as "or" does ("on the chair / on the floor",
 #: "wet/dirty"; "and/or" is "and or")
 _SLASH = re.compile(r"(?<=[a-z])\s*/\s*(?=[a-z])", re.I)
+#: shorthand's "w/" is "with" ("wipe w/ sponge"), not "w or ..."
+_WITH = re.compile(r"\bw/\s*", re.I)
 
 
 #: an email's quoting: the attribution line above a quoted message ("On Monday, Jo wrote:") and
@@ -127,12 +135,93 @@ _ATTRIBUTION = re.compile(r"^[ \t>]*On\b[^\n]{0,80}\bwrote:[ \t]*$", re.M)
 _QUOTE_MARK = re.compile(r"^[ \t]*(?:>[ \t]?)+", re.M)
 
 
+#: the label of a lettered or numbered item at a line's start ("(b) Bedroom: ...", "c) ...",
+#: "2. Check ...", "(iv) ..."): it orders the items and says nothing, and left in place it hides a
+#: heading after it ("(b) Bedroom:" is no room heading)
+_ITEM_LABEL = re.compile(r"^[ \t]*(?:\((?:[a-z]|[ivx]+|\d{1,2})\)|(?:[a-z]|[ivx]+|\d{1,2})\)|\d{1,2}\.)[ \t]+",
+                         re.M | re.I)
+
+
+#: a condition with its subject and copula elided before a participle of finding or leaving (a
+#: work order's "if found on the chair", a manual's "when left open"): "if it is found ..."
+_ELIDED_SUBJECT = re.compile(
+    rf"\b(if|unless|when|whenever|once|while)\s+(?=(?:{'|'.join(sorted(FOUND_PARTICIPLES))})\b)", re.I)
+
+
+#: a speaker correcting a place as they say it ("throw it in the wardrobe, no wait, sorry, in the
+#: hamper", "put it on the desk - I mean on the shelf"): the corrected place, with the words that
+#: retract it, is dropped, so only the place meant is read
+_PLACE_PREP = r"(?:in|on|into|onto|to|under|inside|next to|by)\b"
+_RETRACT = r"(?:no,?\s+wait|wait,?\s+no|no,?\s+sorry|sorry|i mean|or rather|scratch that|actually|correction)"
+_SELF_CORRECTION = re.compile(rf"\b{_PLACE_PREP}[^,.;:!?()]{{1,40}}?[\s,\-\u2013\u2014]+"
+                              rf"(?:{_RETRACT}[\s,\-\u2013\u2014]+)+(?={_PLACE_PREP})", re.I)
+
+
+#: a bare state word as the subject of a verb of going ("dirty goes in the hamper", "wet go on the
+#: rack": a note or a speaker naming the thing by its state): the condition on the thing spoken of
+_STATE_SUBJECT = re.compile(
+    rf"(?:(?<=^)|(?<=[.!?;:\n]))(\s*)({'|'.join(w for w, (flag, _) in STATE_WORDS.items() if flag in ('dirty', 'wet'))})"
+    r"\s+(goes|belongs|go|belong)\b", re.I | re.M)
+
+
+def _state_subject(m: re.Match[str]) -> str:
+    plural = m.group(3).lower() in ("go", "belong")
+    return f"{m.group(1)}if {'they are' if plural else 'it is'} {m.group(2)}, {'they' if plural else 'it'} {m.group(3)}"
+
+
+#: an indirect question about an action whose result is a state ("I can't remember whether I shut
+#: the fridge door", "not sure if we switched the heater off"): the question is the state of the
+#: thing acted on ("whether the fridge door is shut"), as a direct question would put it
+_DOER = r"(?:i|we|you|they|he|she|someone|somebody|anyone|anybody)"
+_THING = r"(?P<thing>(?:the|my|our|your)\s+[a-z]+(?:\s+[a-z]+){0,2}?)"
+_CLAUSE_END = r"(?=\s*(?:[,.;:!?)]|$|\s(?:or|and|so|but|when|before|after)\b))"
+_ACTED_STATE = re.compile(
+    rf"\b(?P<cue>whether|if)\s+{_DOER}\s+(?:(?:already|actually|even|ever)\s+)?(?:"
+    rf"(?P<verb>{'|'.join(w for w, (flag, _) in STATE_WORDS.items() if flag == 'open' and w != 'ajar')})\s+{_THING}"
+    rf"|(?:turned|switched)\s+(?P<pre>on|off)\s+{_THING.replace('thing', 'thing2')}"
+    rf"|(?:turned|switched)\s+{_THING.replace('thing', 'thing3')}\s+(?P<post>on|off)){_CLAUSE_END}", re.I | re.M)
+
+
+#: what makes an "if" clause an indirect question ("not sure if", "can't remember if", "check if"),
+#: not a condition on what the listener does ("if you open the fridge, close it after")
+_ASKING = re.compile(r"\b(?:remember|recall|know|sure|certain|wonder|check|see|idea|forget|forgot)\W+$", re.I)
+
+
+def _acted_state(m: re.Match[str]) -> str:
+    if m.group("cue").lower() == "if" and not _ASKING.search(m.string[max(0, m.start() - 30):m.start()]):
+        return m.group(0)
+    thing = m.group("thing") or m.group("thing2") or m.group("thing3")
+    state = m.group("verb") or m.group("pre") or m.group("post")
+    return f"{m.group('cue')} {thing} is {state}"
+
+
+#: a doubt about having got a thing at all ("I'm not sure I even got bread", "can't remember if we
+#: bought any milk"): whether there is one, as "there may or may not be bread" says
+_GOT_DOUBT = re.compile(
+    r"\b(?:(?:i'?m|i am|we'?re|we are)\s+)?(?:not sure|unsure|not certain|can'?t remember|cannot remember|don'?t know|don'?t remember)\s+"
+    rf"(?:(?:if|whether|that)\s+)?{_DOER}\s+(?:(?:even|actually|ever|really)\s+)?"
+    r"(?:got|bought|picked up|brought|fetched|have|had)\s+(?:(?:any|some|a|an)\s+)?"
+    r"(?P<thing>[a-z]+(?:\s+(?!(?:this|that|today|yesterday|at|in|on|for|when|or|and|but|too|either|again|"
+    r"after|before|from)\b)[a-z]+)?)", re.I)
+
+
 def unquote(text: str) -> str:
     """The text without an email's quoting marks: a reply above a quoted message reads as one
     text ("> On Monday, Jo wrote:" is no sentence; "> Could you tidy ..." is "Could you tidy ...");
-    a table of items and places as its sentences (`detable`); a heading answered by a verb with no
-    subject of its own with the heading as that subject (`_SUBJECTLESS`)."""
-    return _SUBJECTLESS.sub(r"\1\2\3the \2 \4", detable(_QUOTE_MARK.sub("", _ATTRIBUTION.sub("", text))))
+    without the labels of lettered or numbered items; a place the speaker corrects dropped for the
+    one meant ("in the wardrobe, no wait, in the hamper"); a bare state as a subject read as the
+    condition it is ("dirty goes in the hamper": "if it is dirty, it goes ..."); an indirect
+    question about an action as the state it leaves ("whether I shut the fridge door": "whether
+    the fridge door is shut"), and a doubt about having got a thing as one about whether there is
+    one ("not sure I even got bread": "there may or may not be bread"); a condition's elided
+    subject spelled out
+    ("if found on" -> "if it is found on"); a table of items and places as its sentences
+    (`detable`); a heading answered by a verb with no subject of its own with the heading as that
+    subject (`_SUBJECTLESS`)."""
+    plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", text))))
+    plain = _ACTED_STATE.sub(_acted_state, _ELIDED_SUBJECT.sub(r"\1 it is ", plain))
+    plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)
+    return _SUBJECTLESS.sub(r"\1\2\3the \2 \4", detable(_STATE_SUBJECT.sub(_state_subject, plain)))
 
 
 #: "Desk lamp: stays on the desk.", "- Sunscreen - lives in the cabinet": a line's heading of a few
@@ -212,9 +301,9 @@ def detable(text: str) -> str:
 
 
 def expand(text: str) -> str:
-    """The text with contractions spelled out ("it's" -> "it is"), possessives dropped and a
-    slash between words read as "or"."""
-    out = _SLASH.sub(" or ", text.replace("\u2019", "'"))
+    """The text with contractions spelled out ("it's" -> "it is"), possessives dropped, "w/" read
+    as "with" and a slash between words as "or"."""
+    out = _SLASH.sub(" or ", _WITH.sub("with ", text.replace("\u2019", "'")))
     for pat, repl in _CONTRACTIONS:
         out = re.sub(pat, repl, out, flags=re.I)
     return out
