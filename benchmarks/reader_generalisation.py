@@ -25,6 +25,13 @@ prints LogCov / SceVR / FauDR for each, then per task:
   FAQ, ...), and five new tasks in rooms and with objects none of the sets above use as theirs.
   Measured three times in aggregate only, then made a development set (the fourth session), when
   a fresh unseen set took its place;
+- `dev5 reworded` and `dev5 new`: tests/data/reader_dev5/ — the fifth development set, for the
+  next round of reader rules: one rewording each of 16 built-in descriptions (the 13 the first
+  development set leaves out, so development covers all 25, and three more), each in a register
+  no earlier development set's rewordings use (a decision table, pseudo-code, RFC-style MUST/MAY,
+  a text-adventure, a flowchart, ...), and eight new tasks in rooms none of the sets above use (a
+  coach's pep talk, an RA's email, an office memo, a church-hall rota, a chore chart, ...). Tuned
+  on, like the development rows above;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -41,7 +48,7 @@ like-for-like gap.
 Every run is computed afresh (`fresh=True`: a stored unit is never reused, since the run's
 fingerprint does not cover the reader's code) with the offline model's reply cache off.
 
-    python benchmarks/reader_generalisation.py            # all twelve sets (~2-5 min on 2 cores)
+    python benchmarks/reader_generalisation.py            # all fourteen sets (~3-6 min on 2 cores)
     python benchmarks/reader_generalisation.py --smoke    # two tasks per set (~1 min)
     python benchmarks/reader_generalisation.py --why      # and why each task lost environments
     python benchmarks/reader_generalisation.py --dev-only # without the held-out sets (for tuning)
@@ -51,9 +58,9 @@ per-task entry in `--json`, so running the benchmark gives whoever tunes the rea
 on (they run `--dev-only`, which skips those sets altogether).
 
 Last line: `reader_generalisation built_in=<LogCov>/<SceVR>/<FauDR> reworded=... new=...
-dev2_new=... dev4_reworded=... dev4_new=... dev3_reworded=... dev3_new=... held_out_reworded=...
-held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the first eight
-only).
+dev2_new=... dev4_reworded=... dev4_new=... dev3_reworded=... dev3_new=... dev5_reworded=...
+dev5_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with
+`--dev-only`, the first ten only).
 """
 
 from __future__ import annotations
@@ -75,6 +82,7 @@ DEV2 = ROOT / "tests" / "data" / "reader_dev2"
 HOLDOUT = ROOT / "tests" / "data" / "reader_holdout"
 DEV3 = ROOT / "tests" / "data" / "reader_dev3"
 DEV4 = ROOT / "tests" / "data" / "reader_dev4"
+DEV5 = ROOT / "tests" / "data" / "reader_dev5"
 HOLDOUT2 = ROOT / "tests" / "data" / "reader_holdout2"
 #: (row name, tasks folder; None = the built-in tasks)
 SETS: tuple[tuple[str, Path | None], ...] = (
@@ -82,6 +90,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
     ("dev2 new", DEV2 / "tasks_new"),
     ("dev4 reworded", DEV4 / "tasks_reworded"), ("dev4 new", DEV4 / "tasks_new"),
     ("dev3 reworded", DEV3 / "tasks_reworded"), ("dev3 new", DEV3 / "tasks_new"),
+    ("dev5 reworded", DEV5 / "tasks_reworded"), ("dev5 new", DEV5 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
     ("held-out2 reworded", HOLDOUT2 / "tasks_reworded"), ("held-out2 new", HOLDOUT2 / "tasks_new"),
 )
