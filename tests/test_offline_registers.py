@@ -12,7 +12,7 @@ from logicenveval.domain.catalog import load_catalog
 from logicenveval.offline.analysis import analyse
 from logicenveval.offline.naming import name_objects
 from logicenveval.offline.placement import described_placements
-from logicenveval.offline.sentences import unquote
+from logicenveval.offline.sentences import binned, unquote
 
 
 def _brief(text: str, rooms: tuple[str, ...]) -> dict[str, Any]:
@@ -919,3 +919,96 @@ def test_an_instruction_on_another_thing_stays_apart() -> None:
 ])
 def test_a_state_or_its_opposite_is_uncertain(text: str, rooms: tuple[str, ...], asked: str) -> None:
     assert asked in _factors(text, rooms), _factors(text, rooms)
+
+
+# =================================================================================================
+# Rules from the fifth development set's rewordings (`tests/data/reader_dev5/tasks_reworded/`)
+# =================================================================================================
+
+# ----- a decision table: its condition column's header opens each row's conditional ---------------
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev5 (a Markdown decision table)
+    ("Bathroom - what to do:\n\n| If you find... | Do this |\n|---|---|\n"
+     "| the medicine bottle standing on the vanity | put it away in the medicine cabinet |\n"
+     "| my toothbrush on the floor | put it back on the vanity |", ("bathroom",),
+     {"medicine_bottle_on_bathroom_vanity", "toothbrush_on_floor"}),
+    # written here: a study's table headed by a bare "Situation"
+    ("Study:\n\n| Situation | Action |\n| --- | --- |\n| the desk lamp is on | switch it off |\n"
+     "| a mug is on the desk | take it to the kitchen sink |", ("study", "kitchen"),
+     {"desk_lamp_toggled_on", "mug_on_desk"}),
+])
+def test_a_decision_tables_rows_are_conditionals(text: str, rooms: tuple[str, ...], asked: set[str]) -> None:
+    """"| If you find... | Do this |": a table whose first column's header opens or names a
+    condition is read row by row as "If you find <cell>, <cell>.", as anyone reads a table of
+    cases; without the rule its rows are no sentences and ask nothing."""
+    assert asked <= set(_factors(text, rooms))
+    assert unquote("| Situation | Action |\n|---|---|\n| the oven is on | - |") == "If the oven is on."
+
+
+# ----- ", and it's dirty": a clause of the situation after a condition's comma goes on with it -----
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev5 (a decision table's row, as read)
+    ("If you find my toothbrush on the floor, and it's dirty, bin it.", ("bathroom",), "toothbrush_dirty"),
+    # written here: a study's mug
+    ("If you find the mug on the desk, and it is empty, take it to the kitchen sink.", ("study", "kitchen"),
+     "mug_filled"),
+])
+def test_and_a_clause_of_the_situation_after_a_conditions_comma_is_more_condition(
+        text: str, rooms: tuple[str, ...], asked: str) -> None:
+    """"If you find X on the floor, and it's dirty, bin it": after the condition's comma, "and"
+    with a subject and a copula says more of the situation, not the action; "..., and close the
+    door" (an imperative) stays the action."""
+    assert asked in _factors(text, rooms)
+    assert "wardrobe_open" not in _factors("If the lamp is on the desk, and close the wardrobe.", ("bedroom",))
+
+
+# ----- "bin it": the verb puts the thing in a bin, which it so names ---------------------------------
+
+@pytest.mark.parametrize(("text", "rooms"), [
+    # dev5 (a decision table's row)
+    ("If you find my toothbrush on the floor, and it's dirty, bin it.", ("bathroom",)),
+    # written here: a garage's old rags
+    ("Garage: if the rag on the workbench is dirty, just bin the rag afterwards.", ("garage",)),
+])
+def test_bin_as_a_verb_names_the_bin(text: str, rooms: tuple[str, ...]) -> None:
+    """"bin it" is "put it in the bin": the trash can the action needs is an object of the
+    scene, as it is when the bin is named as a noun."""
+    assert "trash_can" in {r["category"] for r in _brief(text, rooms)["roles"].values()}
+    assert "put the rag in the bin afterwards" in binned("so bin the rag afterwards.")
+
+
+# ----- a note-taker's shorthand: "resp.", "poss.", "&", "acc. to", "1st", "X = 3 levels" ------------
+
+@pytest.mark.parametrize(("text", "rooms", "names"), [
+    # dev5 (a note-taker's abbreviations)
+    ("Bedroom: bed (poss. w/ a book on it), bookshelf & desk. Bookshelf = 3 levels: novels, essays & "
+     "other books resp. To do: clear the bed.", ("bedroom",), {"novel_shelf", "essay_shelf", "other_shelf"}),
+    # written here: a kitchen's pantry
+    ("Kitchen: pantry & fridge. Pantry = 2 shelves: tins & jars resp. Sort acc. to kind.", ("kitchen",),
+     {"tin_shelf", "jar_shelf"}),
+])
+def test_a_note_takers_shorthand_reads_as_its_words(text: str, rooms: tuple[str, ...], names: set[str]) -> None:
+    """"Bookshelf = 3 levels: novels, essays & other books resp.": "=" before a count is "has",
+    "&" is "and", "resp." is "respectively" (and its full stop still ends the sentence before a
+    capital), so the parts are told apart as in the spelled-out sentence."""
+    assert names <= set(_brief(text, rooms)["roles"])
+    assert unquote("tins & jars resp. To do: sort.") == "tins and jars respectively. To do: sort."
+    assert unquote("poss. w/ a mug") == "possibly w/ a mug"
+
+
+# ----- "(silence it first if ringing)": a bracket's elided subject is the "it" it acts on ----------
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev5 (a note-taker's abbreviations)
+    ("Bedroom: bed, nightstand. alarm clock -> nightstand (silence it first if ringing)", ("bedroom",),
+     "alarm_clock_toggled_on"),
+    # written here: a study's desk lamp
+    ("Study: desk, bookshelf. desk lamp -> bookshelf (switch it off first if on)", ("study",), "desk_lamp_toggled_on"),
+])
+def test_a_brackets_condition_with_its_subject_elided_is_said_of_the_thing_acted_on(
+        text: str, rooms: tuple[str, ...], asked: str) -> None:
+    """"alarm clock -> nightstand (silence it 1st if ringing)": "if ringing" is "if it is
+    ringing", the thing the bracket's instruction acts on, not the place named last."""
+    assert asked in _factors(text, rooms)

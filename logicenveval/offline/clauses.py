@@ -409,7 +409,7 @@ def _imperative_cut(cond: str) -> int | None:
 def _subsplit(pieces: list[tuple[str, str | None, str]]) -> list[tuple[str, str | None, str]]:
     """`it is on, and close the wardrobe`: a condition ends at `, and`; what follows is an action."""
     out: list[tuple[str, str | None, str]] = []
-    for text, cue, role in pieces:
+    for text, cue, role in _more_conditions(pieces):
         # ", otherwise ..." ends a consequence as it ends a clause span: the alternative is its own piece
         splitter = r",\s*(?:and|but|then)\s+|,\s*(?=(?:otherwise|else|or else|failing that)\b)" + (
             r"|,\s*(?=the\s)" if role == "consequence" else "")
@@ -420,6 +420,29 @@ def _subsplit(pieces: list[tuple[str, str | None, str]]) -> list[tuple[str, str 
                 out.append((part[alternative.end():].strip(" ,"), alternative.group(1), "else"))
                 continue
             out.append((part, cue, role if i == 0 or role != "condition" else "consequence"))
+    return out
+
+
+#: "If you find the mug on the desk, and it's empty, ...": after a condition's ", and", a
+#: clause with a subject of its own and a copula (a pronoun or a definite noun, then "is", "are",
+#: "has", "was") says more of the situation; an imperative there ("..., and close the door") is
+#: the action
+_MORE_CONDITION = re.compile(r"^\W*(?:it|they|he|she|the\s+[a-z]+(?:\s+[a-z]+)?)\s+"
+                             r"(?:is|are|was|were|has|have|had|looks?|seems?)\b", re.I)
+
+
+def _more_conditions(pieces: list[tuple[str, str | None, str]]) -> list[tuple[str, str | None, str]]:
+    """A consequence that opens with "and" or "but" and a clause of the situation up to its comma
+    (`_MORE_CONDITION`: "..., and it's dirty, bin it") is that clause as more of the condition,
+    then the rest as the consequence."""
+    out: list[tuple[str, str | None, str]] = []
+    for text, cue, role in pieces:
+        joined = re.match(r"^\W*(?:and|but)\s+([^,;]+),\s*(\S.*)$", text, re.I | re.S)
+        if (role == "consequence" and out and out[-1][2] == "condition" and joined is not None
+                and _MORE_CONDITION.match(expand(joined.group(1))) is not None):
+            out += [(joined.group(1), cue, "condition"), (joined.group(2), cue, "consequence")]
+            continue
+        out.append((text, cue, role))
     return out
 
 

@@ -39,6 +39,7 @@ from logicenveval.offline.sentences import (
     FORMS,
     PERSONAL_SUBJECTS,
     STATE_WORDS,
+    binned,
     expand,
     unquote,
 )
@@ -178,7 +179,7 @@ class _Reader:
     def __init__(self, description: str, catalog: Catalog, rooms: Iterable[str]) -> None:
         self.catalog = catalog
         self.phrases, self.heads, self.longest = _phrase_tables(catalog)
-        text = expand(unquote(description))
+        text = expand(binned(unquote(description)))
         toks = tokens(text)
         self.text = _Text([w for w, _, _ in toks], [text[a:b].lower() for _, a, b in toks],
                           [text[toks[k - 1][2] if k else 0:toks[k][1]] for k in range(len(toks))])

@@ -5,6 +5,7 @@ action verbs, prepositions, contractions and sentences."""
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 
 from logicenveval.offline.lexicon import COLOR_WORDS, verb_form
 
@@ -146,6 +147,12 @@ _ITEM_LABEL = re.compile(r"^[ \t]*(?:\((?:[a-z]|[ivx]+|\d{1,2})\)|(?:[a-z]|[ivx]
 #: work order's "if found on the chair", a manual's "when left open"): "if it is found ..."
 _ELIDED_SUBJECT = re.compile(
     rf"\b(if|unless|when|whenever|once|while)\s+(?=(?:{'|'.join(sorted(FOUND_PARTICIPLES))})\b)", re.I)
+#: the same before a state word that ends its clause inside brackets or after an arrow's answer
+#: ("alarm clock -> nightstand (silence it first if ringing)", "(wash it first if dirty)"): the
+#: elided subject is the "it" the bracket's instruction acts on, not the place named last
+_ELIDED_STATE = re.compile(
+    rf"(\([^()]*?\b(?:if|unless|when|whenever|once|while))\s+(?=(?:{'|'.join(sorted(w for w in STATE_WORDS if ' ' not in w))})\s*\))",
+    re.I)
 
 
 #: a speaker correcting a place as they say it ("throw it in the wardrobe, no wait, sorry, in the
@@ -205,6 +212,54 @@ _GOT_DOUBT = re.compile(
     r"after|before|from)\b)[a-z]+)?)", re.I)
 
 
+#: "bin it", "if empty bin it", "bin the wipe afterwards": "bin" as a verb (after a clause's start,
+#: punctuation, an arrow or a word that leads an imperative, then its object) puts the thing in
+#: a bin, which the text so names as an object of the scene as "put it in the bin" would (but
+#: says nothing of where that bin stands, so only the naming reads it: `binned`)
+_BIN_VERB = re.compile(
+    r"(?P<lead>(?:^|[,.;:!?()\u2192>-]|\b(?:and|then|just|please|simply|or|so|empty|dirty|broken|used|old))\s*)"
+    r"bin\s+(?P<obj>it|them|(?:the|this|that|these|those|my|your|our|his|her|their)\s[a-z ]+?)"
+    r"(?=\s+(?:afterwards|after|then|and|when|if|unless|too|as well|straight away)\b|\s*[,.;:!?()\n]|\s*$)",
+    re.I | re.M)
+
+
+#: a note-taker's shorthand for ordinary words ("poss. w/ a book", "novels, essays & other books
+#: resp.", "acc. to kind", "silence it 1st"), and "=" before a count as "has" ("Bookshelf = 3
+#: levels: ..."): read as the words they stand for, so that the rules for those words apply and
+#: an abbreviation's full stop ends no sentence
+_SHORTHAND = (
+    (re.compile(r"\bresp\.(?=\W|$)", re.I), "respectively"),
+    (re.compile(r"\bposs\.(?=\W|$)", re.I), "possibly"),
+    (re.compile(r"\bacc\.(?=\s+to\b)", re.I), "according"),
+    (re.compile(r"(?<=\s)&(?=\s)"), "and"),
+    (re.compile(r"\b1st\b", re.I), "first"), (re.compile(r"\b2nd\b", re.I), "second"),
+    (re.compile(r"\b3rd\b", re.I), "third"),
+    (re.compile(r"(?<=\w)\s*=\s*(?=(?:\d+|two|three|four|five|six)\s+[a-z])", re.I), " has "),
+)
+
+
+def _unabbreviated(text: str) -> str:
+    """The text with a note-taker's shorthand spelled out (`_SHORTHAND`)."""
+    for pattern, words in _SHORTHAND:
+        text = pattern.sub(_spelled(words), text)
+    return text
+
+
+def _spelled(words: str) -> Callable[[re.Match[str]], str]:
+    """The words for an abbreviation, with its full stop kept where it also ends the sentence
+    (before a capital or a line's end)."""
+    def spell(m: re.Match[str]) -> str:
+        ends = m.group().endswith(".") and re.match(r"\s*(?:$|\n|[A-Z])", m.string[m.end():]) is not None
+        return words + "." * ends
+    return spell
+
+
+def binned(text: str) -> str:
+    """The text with "bin" as a verb spelled out as the move it stands for ("bin it": "put it in
+    the bin", `_BIN_VERB`), for the reader that names the scene's objects."""
+    return _BIN_VERB.sub(lambda m: f"{m.group('lead')}put {m.group('obj')} in the bin", text)
+
+
 def unquote(text: str) -> str:
     """The text without an email's quoting marks: a reply above a quoted message reads as one
     text ("> On Monday, Jo wrote:" is no sentence; "> Could you tidy ..." is "Could you tidy ...");
@@ -212,14 +267,15 @@ def unquote(text: str) -> str:
     one meant ("in the wardrobe, no wait, in the hamper"); a bare state as a subject read as the
     condition it is ("dirty goes in the hamper": "if it is dirty, it goes ..."); an indirect
     question about an action as the state it leaves ("whether I shut the fridge door": "whether
-    the fridge door is shut"), and a doubt about having got a thing as one about whether there is
+    the fridge door is shut"), a note-taker's shorthand spelled out ("resp.", "&", `_SHORTHAND`), and a doubt about having got a thing as one about whether there is
     one ("not sure I even got bread": "there may or may not be bread"); a condition's elided
     subject spelled out
     ("if found on" -> "if it is found on"); a table of items and places as its sentences
     (`detable`); a heading answered by a verb with no subject of its own with the heading as that
     subject (`_SUBJECTLESS`)."""
     plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", text))))
-    plain = _ACTED_STATE.sub(_acted_state, _ELIDED_SUBJECT.sub(r"\1 it is ", plain))
+    plain = _unabbreviated(plain)
+    plain = _ACTED_STATE.sub(_acted_state, _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", plain)))
     plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)
     return _SUBJECTLESS.sub(r"\1\2\3the \2 \4", detable(_STATE_SUBJECT.sub(_state_subject, plain)))
 
@@ -243,6 +299,9 @@ _EMPTY_CELL = frozenset({"", "-", "\u2013", "\u2014", "n/a", "none"})
 _AS_ROW = re.compile(r"^(?:as|same as)\s+(?:item|no\.?|row|#)?\s*(\d+)\.?$", re.I)
 _PLACE_DOUBT = re.compile(r"\b(?:if|unless|when|should)\b[^.;]*?\b(?:on|in|inside|under|at)\s+[a-z]", re.I)
 _PLACE_START = re.compile(r"^(?:on|in|inside|under|by|near|next|beside|behind|at|against|above|below)\b", re.I)
+#: a decision table's condition column: its header opens a condition ("If you find...", "When")
+#: or names one ("Condition", "Situation", "Case")
+_CONDITION_HEAD = re.compile(r"^(?:(?P<cue>(?:if|when|whenever|in case)\b[^|]*?)|condition|situation|case)\W*$", re.I)
 
 
 def _cells(line: str) -> list[str]:
@@ -253,8 +312,10 @@ def detable(text: str) -> str:
     """A table of items and where they are ("No. | Item | Location | Notes" then "2 | First aid kit
     | on the shelving unit | To be kept closed.") as the sentences it stands for: "First aid kit is
     on the shelving unit. To be kept closed." A place cell without a preposition is on or by what
-    it names ("back wall", "shelving unit, top shelf"); "As item 4." repeats row 4's notes. Text
-    that holds no such table is returned as it is."""
+    it names ("back wall", "shelving unit, top shelf"); "As item 4." repeats row 4's notes. A
+    decision table, whose first column's header opens or names a condition ("If you find... | Do
+    this", "Situation | Action"), is its rows' conditionals ("If you find <cell>, <cell>."), as
+    a table of cases is read by anyone. Text that holds no such table is returned as it is."""
     lines = text.split("\n")
     out: list[str] = []
     header: list[str] | None = None
@@ -270,10 +331,19 @@ def detable(text: str) -> str:
             if set(heads) & _ITEM_HEADS and set(heads) & _PLACE_HEADS:
                 header = heads
                 continue
+            cue = _CONDITION_HEAD.match(cells[0].rstrip(".\u2026: "))
+            if cue is not None and len(cells) >= 2:
+                header = ["if " if cue.group("cue") is None else cue.group("cue").strip() + " "]
+                continue
             out.append(line)
             continue
         if set(re.sub(r"[-:| ]", "", line)) <= {""}:
             continue  # a "---|---" rule under the header
+        if len(header) == 1:
+            # a decision table's row: "If you find <its condition>, <its action>."
+            action = "; ".join(c for c in cells[1:] if c.lower() not in _EMPTY_CELL).rstrip(".")
+            out.append(f"{header[0][0].upper()}{header[0][1:]}{cells[0].rstrip('.')}{', ' * bool(action)}{action}.")
+            continue
         row = dict(zip(header, cells, strict=False))
         item = next((row[h] for h in header if h in _ITEM_HEADS), "")
         place = next((row[h] for h in header if h in _PLACE_HEADS), "")
