@@ -1012,3 +1012,53 @@ def test_a_brackets_condition_with_its_subject_elided_is_said_of_the_thing_acted
     """"alarm clock -> nightstand (silence it 1st if ringing)": "if ringing" is "if it is
     ringing", the thing the bracket's instruction acts on, not the place named last."""
     assert asked in _factors(text, rooms)
+
+
+# ----- a typographic arrow ("→") is the typed "->" ---------------------------------------------------
+
+@pytest.mark.parametrize(("text", "rooms", "named", "not_named"), [
+    # dev5 (an emoji-laden text)
+    ("coat: dirty → laundry basket. clean → wardrobe.", ("hallway",), "laundry_basket", "dirty_clothes"),
+    # written here: a utility room's towels, with a double arrow
+    ("towel: dirty ⇒ laundry basket. clean ⇒ shelf.", ("laundry_room",), "laundry_basket", "dirty_clothes"),
+])
+def test_a_typographic_arrow_reads_as_the_typed_one(text: str, rooms: tuple[str, ...], named: str,
+                                                    not_named: str) -> None:
+    """"dirty → laundry basket": the arrow a phone or word processor gives is "->", so "dirty" and
+    "laundry" on either side of it are no "dirty laundry"."""
+    kinds = {r["category"] for r in _brief(text, rooms)["roles"].values()}
+    assert named in kinds and not_named not in kinds
+
+
+# ----- an emoji between words ends a sentence ----------------------------------------------------------
+
+@pytest.mark.parametrize(("text", "rooms", "unasked"), [
+    # dev5 (an emoji-laden text)
+    ("the kids dumped their coat and school bag in the hallway again 🙄 can u sort?", ("hallway",),
+     "coat_in_room_hallway"),
+    # written here: a kitchen's pet bed, with a skin-toned emoji
+    ("the dog dragged its pet bed into the kitchen again 🤦🏽\u200d♀️ can u fix?", ("kitchen", "living_room"),
+     "pet_bed_in_room_kitchen"),
+])
+def test_an_emoji_between_words_ends_the_sentence(text: str, rooms: tuple[str, ...], unasked: str) -> None:
+    """"... in the hallway again 🙄 can u sort?": in a text message an emoji closes what was
+    said, so the statement before it is no part of the question after it (no factor)."""
+    assert unasked not in _factors(text, rooms)
+    assert unquote("fine 👍 if yes, go") == "fine. if yes, go"
+    assert unquote("shut the door after 🚪)") == "shut the door after)"
+
+
+# ----- "clean -> cabinet, dirty -> dishwasher": a comma before the next "state ->" case ------------------
+
+@pytest.mark.parametrize(("text", "rooms", "asked", "unasked"), [
+    # dev5 (an emoji-laden text)
+    ("lunch box: clean -> kitchen cabinet, dirty -> dishwasher", ("kitchen",), "lunch_box_dirty", "cabinet_dirty"),
+    # written here: a bedroom's shirt
+    ("shirt: clean -> wardrobe, dirty -> hamper", ("bedroom",), "shirt_dirty", "wardrobe_dirty"),
+])
+def test_a_comma_before_the_next_case_closes_the_answer(text: str, rooms: tuple[str, ...], asked: str,
+                                                         unasked: str) -> None:
+    """"clean -> kitchen cabinet, dirty -> dishwasher": the state after the comma is the next case
+    of the thing spoken of, not the state of the place just named."""
+    factors = _factors(text, rooms)
+    assert asked in factors and unasked not in factors

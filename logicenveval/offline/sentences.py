@@ -260,8 +260,33 @@ def binned(text: str) -> str:
     return _BIN_VERB.sub(lambda m: f"{m.group('lead')}put {m.group('obj')} in the bin", text)
 
 
+#: typographic arrows ("→", "⇒", "⟶", "➔", "➡️") are the typed "->": what follows is the
+#: instruction for what came before, whichever arrow the keyboard or phone gave
+_ARROWS = re.compile(r"\s*[\u2192\u21d2\u27f6\u27f9\u2794\u279c\u27a1\u21e8]\ufe0f?\s*")
+
+
+#: a pictograph (an emoji, with its skin tone, variation selector and joiners): in a text message
+#: it closes what was said ("dumped their bag in the hallway again 🙄 can u sort?", "fine 👍 if
+#: yes, ..."), so between two words it is a sentence's end; elsewhere it says nothing
+_EMOJI = re.compile(r"[ \t]*[\U0001F000-\U0001FAFF\u2764\u263a][\U0001F000-\U0001FAFF\ufe0f\u200d\u2600-\u27bf]*[ \t]*")
+
+
+#: "clean -> kitchen cabinet, dirty -> dishwasher": a comma before a bare state word and an arrow
+#: closes the answer before it, so the state is the case of the thing spoken of, not of the place
+#: just named; read as the ";" between two cases
+_CASE_AFTER_COMMA = re.compile(
+    rf",\s*(?=(?:not\s+)?(?:{'|'.join(sorted(w for w in STATE_WORDS if ' ' not in w))})\s*->)", re.I)
+
+
+def _emoji(m: re.Match[str]) -> str:
+    before, after = m.string[:m.start()], m.string[m.end():]
+    return ". " if before[-1:].isalnum() and after[:1].isalpha() else " " * bool(before[-1:].isalnum() and after[:1].isalnum())
+
+
 def unquote(text: str) -> str:
-    """The text without an email's quoting marks: a reply above a quoted message reads as one
+    """The text with a typographic arrow as "->" (`_ARROWS`), an emoji between words as a
+    sentence's end (`_EMOJI`), a comma before the next "state ->" case as ";"
+    (`_CASE_AFTER_COMMA`), without an email's quoting marks: a reply above a quoted message reads as one
     text ("> On Monday, Jo wrote:" is no sentence; "> Could you tidy ..." is "Could you tidy ...");
     without the labels of lettered or numbered items; a place the speaker corrects dropped for the
     one meant ("in the wardrobe, no wait, in the hamper"); a bare state as a subject read as the
@@ -273,7 +298,8 @@ def unquote(text: str) -> str:
     ("if found on" -> "if it is found on"); a table of items and places as its sentences
     (`detable`); a heading answered by a verb with no subject of its own with the heading as that
     subject (`_SUBJECTLESS`)."""
-    plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", text))))
+    plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
+    plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", plain))))
     plain = _unabbreviated(plain)
     plain = _ACTED_STATE.sub(_acted_state, _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", plain)))
     plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)
