@@ -1062,3 +1062,20 @@ def test_a_comma_before_the_next_case_closes_the_answer(text: str, rooms: tuple[
     of the thing spoken of, not the state of the place just named."""
     factors = _factors(text, rooms)
     assert asked in factors and unasked not in factors
+
+
+# ----- "The plate on the counter, if there is one: ...": whether there is one there ------------------
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev5 (RFC-style requirements)
+    ("1. The plate on the counter, if there is one: a dirty plate MUST be placed in the dishwasher. If there "
+     "is no plate on the counter, this step MUST be skipped.", ("kitchen",), "plate_on_kitchen_counter"),
+    # written here: a study's mug, as a bullet
+    ("- The mug on the desk, if any: a dirty mug goes to the kitchen sink. If there is no mug on the desk, "
+     "skip this.", ("study", "kitchen"), "mug_on_desk"),
+])
+def test_a_thing_at_a_place_with_if_there_is_one_is_asked(text: str, rooms: tuple[str, ...], asked: str) -> None:
+    """"The plate on the counter, if there is one: ...": a heading naming a thing at a place, then
+    a doubt that there is one, asks whether it is there; it is no stated placement that would
+    settle the question the later "if there is no plate on the counter" asks."""
+    assert asked in _factors(text, rooms)

@@ -278,6 +278,21 @@ _CASE_AFTER_COMMA = re.compile(
     rf",\s*(?=(?:not\s+)?(?:{'|'.join(sorted(w for w in STATE_WORDS if ' ' not in w))})\s*->)", re.I)
 
 
+#: "1. The plate on the counter, if there is one: ...": a thing at a place heading its clause,
+#: followed by a doubt that there is one, asks whether there is one there, as "if there is a
+#: plate on the counter" does; it states no placement
+_IF_ANY = re.compile(
+    r"(?P<lead>^[ \t]*(?:\d{1,2}[.)][ \t]*|[-*\u2022][ \t]*)?|[.;:!?][ \t]+)(?:the|a|an|any)\s+(?P<np>[a-z][a-z ]{0,30}?\s(?:on|in|inside|under|by|near)\s+(?:the|a|my|your|our)"
+    r"\s+[a-z]+(?:\s[a-z]+)?)\s*,\s*if\s+(?:there\s+is|there's|there\s+are|any)(?:\s+one|\s+any)?(?=\s*:)",
+    re.I | re.M)
+
+
+def _if_any(m: re.Match[str]) -> str:
+    said = f"if there is a {m.group('np')}"
+    opens = m.group()[len(m.group("lead"))]
+    return m.group("lead") + (said[0].upper() + said[1:] if opens.isupper() else said)
+
+
 def _emoji(m: re.Match[str]) -> str:
     before, after = m.string[:m.start()], m.string[m.end():]
     return ". " if before[-1:].isalnum() and after[:1].isalpha() else " " * bool(before[-1:].isalnum() and after[:1].isalnum())
@@ -286,7 +301,8 @@ def _emoji(m: re.Match[str]) -> str:
 def unquote(text: str) -> str:
     """The text with a typographic arrow as "->" (`_ARROWS`), an emoji between words as a
     sentence's end (`_EMOJI`), a comma before the next "state ->" case as ";"
-    (`_CASE_AFTER_COMMA`), without an email's quoting marks: a reply above a quoted message reads as one
+    (`_CASE_AFTER_COMMA`), "the X on the Y, if there is one" as "if there is an X on the Y"
+    (`_IF_ANY`), without an email's quoting marks: a reply above a quoted message reads as one
     text ("> On Monday, Jo wrote:" is no sentence; "> Could you tidy ..." is "Could you tidy ...");
     without the labels of lettered or numbered items; a place the speaker corrects dropped for the
     one meant ("in the wardrobe, no wait, in the hamper"); a bare state as a subject read as the
@@ -299,6 +315,7 @@ def unquote(text: str) -> str:
     (`detable`); a heading answered by a verb with no subject of its own with the heading as that
     subject (`_SUBJECTLESS`)."""
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
+    plain = _IF_ANY.sub(_if_any, plain)
     plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", plain))))
     plain = _unabbreviated(plain)
     plain = _ACTED_STATE.sub(_acted_state, _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", plain)))
