@@ -1079,3 +1079,18 @@ def test_a_thing_at_a_place_with_if_there_is_one_is_asked(text: str, rooms: tupl
     a doubt that there is one, asks whether it is there; it is no stated placement that would
     settle the question the later "if there is no plate on the counter" asks."""
     assert asked in _factors(text, rooms)
+
+
+# ----- "its designated spot": a thing's usual place, no stain -----------------------------------------
+
+@pytest.mark.parametrize(("text", "rooms"), [
+    # dev5 (a note-taker's abbreviations)
+    ("To do: clear the bed and put each item in its designated spot - phone -> desk.", ("bedroom",)),
+    # written here: a kitchen's pans
+    ("Kitchen: put the pans back in their spot on the stove.", ("kitchen",)),
+])
+def test_a_spot_after_a_possessive_is_a_place_not_a_stain(text: str, rooms: tuple[str, ...]) -> None:
+    """"put each item in its designated spot": after a possessive, "spot" is where a thing goes;
+    "a spot on the rug" is still a stain."""
+    assert "floor_stain" not in {r["category"] for r in _brief(text, rooms)["roles"].values()}
+    assert "floor_stain" in {r["category"] for r in _brief("There is a spot on the rug.", ("living_room",))["roles"].values()}

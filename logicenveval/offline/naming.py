@@ -72,6 +72,10 @@ _ANOTHER = frozenset({"another", "second"})
 _PACKAGING = frozenset({"bag", "pack", "packet", "carton"})
 #: nouns that are verbs as often ("you can use", "switch it off"): objects only after a determiner
 _ALSO_VERBS = frozenset({"can", "throw", "stand", "switch", "set", "press", "iron", "watch", "hook"})
+#: nouns that are also a thing's usual place ("put each item in its designated spot", "back in
+#: their spot"): after a possessive, with at most one word between, they name a place, no object
+_PLACE_SENSES = frozenset({"spot"})
+_POSSESSIVES = frozenset({"its", "their", "his", "her", "your", "my", "our"})
 #: attributes whose values say what a thing is (a toy's kind: doll, car, ball): a bare plural
 #: of such a value after the thing is named is a class of it (`_Reader.kind_value`)
 KIND_ATTRIBUTES = ("kind",)
@@ -252,9 +256,14 @@ class _Reader:
         nxt = words[i + 1] if i + 1 < len(words) else ""
         if word in _PACKAGING and nxt == "of":
             return 1, None
-        if self.verb(i):
+        if self.verb(i) or self.place_sense(i):
             return 1, None
         return 1, self.bare_noun(i, category)
+
+    def place_sense(self, i: int) -> bool:
+        """Whether the one-word name at word `i` is a thing's usual place ("its designated spot",
+        `_PLACE_SENSES`), not an object."""
+        return self.text.words[i] in _PLACE_SENSES and bool(_POSSESSIVES & set(self.text.words[max(0, i - 2):i]))
 
     def verb(self, i: int) -> bool:
         """Whether the one-word name at word `i` is a verb where it stands ("if you spot it",
@@ -349,7 +358,7 @@ class _Reader:
         out = set(words)
         for i in range(len(words)):
             n, category = self.match(i)
-            if category is None or n == 1 and self.verb(i):
+            if category is None or n == 1 and (self.verb(i) or self.place_sense(i)):
                 continue
             if n > 1 or len(set(self.heads.get(words[i], []))) == 1:
                 self.named.add(category)
