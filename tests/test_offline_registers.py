@@ -919,3 +919,87 @@ def test_an_instruction_on_another_thing_stays_apart() -> None:
 ])
 def test_a_state_or_its_opposite_is_uncertain(text: str, rooms: tuple[str, ...], asked: str) -> None:
     assert asked in _factors(text, rooms), _factors(text, rooms)
+
+
+# ----- fifth development set's new tasks (`tests/data/reader_dev5/tasks_new/`) -------------------
+
+def _placed(text: str, rooms: tuple[str, ...]) -> list[str]:
+    return described_placements(_brief(text, rooms), load_catalog())
+
+
+@pytest.mark.parametrize(("text", "rooms", "placed"), [
+    # dev5 church_hall_clear_up_rota (a volunteers' rota)
+    ("Two cups were left on the trolley: a blue one and a white one. Each one: if it's dirty, wash it.",
+     ("church_hall",), {"on(blue_cup, cart)", "on(white_cup, cart)"}),
+    # written here: a living room's remote, a hallway's umbrella
+    ("The remote was left on the sofa. If the TV is on, switch it off.", ("living_room",),
+     {"on(remote_control, sofa)"}),
+    ("An umbrella was dropped on the bench yesterday; if it is wet, hang it on the hook.", ("hallway",),
+     {"on(umbrella, bench)"}),
+])
+def test_a_past_passive_of_leaving_states_the_place(text: str, rooms: tuple[str, ...], placed: set[str]) -> None:
+    """"Two cups were left on the trolley": a past passive reports what was done, so the place is
+    stated (a present passive, "the cup is put on the shelf", may be an instruction)."""
+    assert placed <= set(_placed(text, rooms)), _placed(text, rooms)
+    assert not {f for f in _factors(text, rooms) if f.endswith(("_on_cart", "_on_sofa", "_on_bench"))}
+
+
+def test_a_present_passive_of_putting_states_no_place() -> None:
+    assert not _placed("The cup is put on the shelf once it is dry.", ("kitchen",))
+
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev5 reception_closing_memo (an interoffice memo)
+    ("Unless it has already been shut down, the desktop computer on the reception desk is to be switched off.",
+     ("reception",), "desktop_computer_toggled_on"),
+    # written here: a study lamp, a kitchen kettle
+    ("If it is still on, switch off the lamp on the desk.", ("study",), "desk_lamp_toggled_on"),
+    ("In case they are dirty, the plates on the table go in the sink.", ("kitchen",), "plate_dirty"),
+])
+def test_a_pronoun_in_a_condition_put_first_speaks_of_the_thing_after_it(text: str, rooms: tuple[str, ...],
+                                                                        asked: str) -> None:
+    """"Unless it has already been shut down, the computer ... is to be switched off": with nothing
+    named before it, the pronoun of a condition put first speaks of the thing its main clause
+    names (not a place after a preposition)."""
+    assert asked in _factors(text, rooms), _factors(text, rooms)
+
+
+def test_a_pronoun_with_a_thing_before_it_keeps_its_antecedent() -> None:
+    # the main clause names only a place: the torch said before is still what "it" means
+    assert "flashlight_toggled_on" in _factors("The torch is on the step stool. If it's on, put it on the shelf.",
+                                               ("attic",))
+
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev5 reception_closing_memo
+    ("Unless it has already been shut down, the desktop computer on the reception desk is to be switched off.",
+     ("reception",), "desktop_computer_toggled_on"),
+    # written here: a study's laptop, powered down
+    ("If the laptop has not been powered down, do it now.", ("study",), "laptop_toggled_on"),
+])
+def test_a_machine_shut_down_is_off_not_closed(text: str, rooms: tuple[str, ...], asked: str) -> None:
+    """"shut down", "powered down": a machine switched off, not a door or lid shut."""
+    factors = _factors(text, rooms)
+    assert asked in factors and not any(f.endswith("_open") for f in factors), factors
+
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev5 en_suite_text_from_partner (a partner's text)
+    ("toothpaste and soap - if either of them has ended up on the floor again (I know) pop it back on the vanity",
+     ("en_suite",), {"toothpaste_on_floor", "soap_bar_on_floor"}),
+    # dev5 reception_closing_memo: "either" alone
+    ("The stapler and the tape belong on the shelving unit and in the wire basket, respectively. If either has "
+     "been left out on the reception desk, please return it to its place.", ("reception",),
+     {"stapler_on_desk", "tape_on_desk"}),
+    # written here: a hallway's keys and wallet, a kitchen's kettle and toaster
+    ("Keys and wallet: if either of them is on the floor, put it on the shelf.", ("hallway",),
+     {"keys_on_floor", "wallet_on_floor"}),
+    ("The kettle and the toaster live on the counter. If either is left on, switch it off.", ("kitchen",),
+     {"kettle_toggled_on", "toaster_toggled_on"}),
+])
+def test_either_takes_up_the_things_listed_before_it(text: str, rooms: tuple[str, ...], asked: set[str]) -> None:
+    """"toothpaste and soap - if either of them ...", "The stapler and the tape belong ... If either
+    has been left out ...": a condition on "either" (with or without "of them") holds for each of
+    the things a clause listed first, whatever their kinds."""
+    assert asked <= set(_factors(text, rooms)), _factors(text, rooms)
+

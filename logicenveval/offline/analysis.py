@@ -204,6 +204,9 @@ _ASIDE = re.compile(r"\s*\([^()]*\)\W*$")
 PHRASAL_STATES = tuple((re.compile(rf"\b(?:{verbs}) (?:{particles})\b"), state) for verbs, particles, state in (
     ("pulled|drawn|slid", "out|open", "open"),
     ("pushed|slid", "in|shut|back in", "shut"),
+    # a machine "shut down" or "powered down/off" is off, not shut like a door
+    ("shut|shuts|shutting|powered|powers|power", "down", "off"),
+    ("powered|powers|power", "off", "off"),
 ))
 
 
@@ -1256,6 +1259,27 @@ def _done_before(clauses: list[Clause], sentence: int, said: str, names: tuple[s
             if f.goal and f.kind == "location" and f.subject in names]
 
 
+def _cataphor(reader: _Reader, condition: str, main: str) -> tuple[str, ...] | None:
+    """The thing a pronoun of a condition put first speaks of when nothing was named just before
+    it (the caller's test) and the condition names nothing itself: the first thing its main
+    clause names, not after a preposition of place ("If it is still on, switch off the lamp on
+    the desk": the lamp, not the desk). None when the condition names a thing, has no "it"/"they", or the main clause names no
+    such thing (a thing named in the sentence before stays the pronoun's: "The torch is on the
+    stool. If it's on, ...")."""
+    toks = tokens(expand(condition).lower())
+    if not {w for w, _, _ in toks} & {"it", "they"} or any(
+            m.kind == "role" for m in reader.lex.find_mentions(toks)):
+        return None
+    words = [w for w, _, _ in tokens(expand(main).lower())]
+    for m in reader.lex.find_mentions(tokens(expand(main).lower())):
+        lead = m.start - 1
+        while lead >= 0 and words[lead] in ARTICLES:
+            lead -= 1
+        if m.kind == "role" and not (lead >= 0 and words[lead] in PREP_ON | PREP_IN | PLACE_PREPS | {"at"}):
+            return m.roles
+    return None
+
+
 def _role_after(cut: list[list[Piece]], si: int, pi: int) -> str:
     """The role of the piece after piece `pi` of sentence `si`, whether it ends the sentence's
     heading (the next sentence goes on after a colon) or not; "" after a full stop."""
@@ -1308,14 +1332,40 @@ DISTRIBUTIVE = re.compile(r"^\W*(?:for\s+)?(?:each|every|both)(?:\s+(?:one|ones|
 #: just named, asked of each of them as "each one" is; so is "either one" / "neither one" ("Marco's
 #: glass and Lena's glass ... If either one is dirty")
 ANY_OF = re.compile(r"\b(?:(?:either|neither|any|one|each|both|all)\s+of\s+(?:them|these|those|the\s+two)"
-                    r"|(?:either|neither)\s+one)\b", re.I)
+                    r"|(?:either|neither)\s+one)\b|" + r"\b(?:either|neither)(?=\s+(?:has|have|is|was|are|were|gets|got|"
+                    r"ends|ended|falls|fell|seems|looks|should|may|might)\b)", re.I)
+#: "If either has been left out": "either" alone as the subject, read as "either of them" so that
+#: its pronoun takes up the group
+_BARE_EITHER = re.compile(r"\b(either|neither)(?=\s+(?:has|have|is|was|are|were|gets|got|ends|ended|falls|fell|"
+                          r"seems|looks|should|may|might)\b)", re.I)
 
 
-def _members(clauses: list[Clause], kinds: Mapping[str, str], sentence: int) -> tuple[str, ...]:
+def _listed(lex: Lexicon, text: str) -> tuple[str, ...]:
+    """The things a clause lists first, joined by "and", "or" or commas with nothing but articles
+    between ("toothpaste and soap -", "The stapler and the tape belong on ..."), not after a
+    preposition: a group a later "either of them" may take up."""
+    toks = tokens(expand(text).lower())
+    words = [w for w, _, _ in toks]
+    things = [m for m in lex.find_mentions(toks) if m.kind == "role" and len(m.roles) == 1]
+    run: list[Mention] = []
+    for m in things:
+        gap = words[run[-1].end:m.start] if run else words[:m.start]
+        if run and gap and set(gap) <= {"and", "or"} | ARTICLES | {"your", "my", "our", "his", "her", "their"}:
+            run.append(m)
+        elif run:
+            break
+        elif not set(gap) & (PREP_ON | PREP_IN | PLACE_PREPS):
+            run = [m]
+    return tuple(r for m in run for r in m.roles) if len(run) > 1 else ()
+
+
+def _members(clauses: list[Clause], kinds: Mapping[str, str], sentence: int,
+             lex: Lexicon | None = None) -> tuple[str, ...]:
     """The roles of the group last named: the latest clause of this sentence or the one before
     naming two or more roles of one category (the items of an enumeration), or else saying one
     thing of two or more things ("the salt and pepper shakers live in the sideboard", "the doll
-    and the teddy are on the bed": what its facts are said of)."""
+    and the teddy are on the bed": what its facts are said of), or else listing two or more
+    things first ("toothpaste and soap - if either of them ...": `_listed`)."""
     for cl in reversed(clauses):
         if cl.sentence < sentence - 1:
             break
@@ -1329,6 +1379,8 @@ def _members(clauses: list[Clause], kinds: Mapping[str, str], sentence: int) -> 
         said_of = list(dict.fromkeys(f.subject for f in cl.facts if f.subject in kinds))
         if len(said_of) > 1 and len({f.condition.replace(f.subject, "") for f in cl.facts}) == 1:
             return tuple(said_of)
+        if lex is not None and (listed := _listed(lex, cl.text)):
+            return listed
     return ()
 
 
@@ -1396,7 +1448,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         after = [p.text for p in pieces[1:]] + [cut[si + 1][0].text if si + 1 < len(cut) and cut[si + 1] and not
                                                 sent.rstrip().endswith((".", "!", "?")) else ""]
         for pi, (text, cue, role) in enumerate(pieces):
-            if (DISTRIBUTIVE.match(text) or ANY_OF.search(text)) and (members := _members(clauses, categories, grammatical)):
+            if (DISTRIBUTIVE.match(text) or ANY_OF.search(text)) and (members := _members(clauses, categories, grammatical, lex)):
                 spread = (grammatical, members)
             if role == "heading" and _speaker(reader, text, speakers):
                 clauses.append(Clause(text, grammatical, cue, "statement", (), ()))
@@ -1440,6 +1492,14 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 said = f"{said.rstrip(' .;,')} {place[1]}"
                 doubt = bool({w for w, _, _ in tokens(place[1])} & UNCERTAIN)
                 role = ("uncertain" if doubt else "scene") if role == "statement" else role
+            if role == "condition" and pi == 0 and pi + 1 < len(pieces) \
+                    and not any(cl.mentions for cl in clauses if cl.sentence >= grammatical - 1) \
+                    and (ahead := _cataphor(reader, said, pieces[pi + 1].text)) is not None:
+                # "Unless it has already been shut down, the computer on the desk is to be switched
+                # off": a pronoun in a condition put first, with nothing named in its sentence or
+                # the one before, speaks of the thing its main clause names
+                reader.topic, reader.topic_kind = ahead, "role"
+            said = _BARE_EITHER.sub(r"\1 of them", said)
             facts, names = reader.facts("there is " + said if cue == "should there be" else said)
             if cue == "if available" and not any(f.kind in ("location", "exists") and not f.home for f in facts):
                 facts += _available(reader, said)

@@ -85,6 +85,8 @@ RESULT = frozenset({"left", "dropped", "put", "placed", "thrown", "set", "found"
 PASSIVE_STATIVE = frozenset({"found", "located", "kept", "stored", "situated", "seated",
                              "present"})  # "a dirty mark is present on the floor"
 PERFECT = frozenset({"has", "have", "had"})
+#: the past forms of "be": before a result participle they report a past event ("was left")
+PAST_BE = frozenset({"was", "were"})
 #: verbs whose subject holds what follows ("the kitchen has the dishwasher", "it contains a bed",
 #: "the basket also holds a box of cereal")
 HAVE_VERBS = frozenset({"has", "have", "had", "contains", "contain", "holds", "hold", "got", "includes",
@@ -409,7 +411,10 @@ def _verb_kind(group: list[str]) -> str | None:
     if last in RESULT:
         perfect = bool(set(verbs) & PERFECT) and "been" in verbs
         active_past = len(verbs) == 1  # "someone left a mark on the floor" (with its subject)
-        return "settled" if perfect or last in PASSIVE_STATIVE or active_past else None
+        # a past passive reports what was done, where a present one may instruct ("two cups were
+        # left on the trolley", "the keys were dropped on the mat"; not "the plate is put away")
+        past = len(verbs) == 2 and verbs[0] in PAST_BE
+        return "settled" if perfect or last in PASSIVE_STATIVE or active_past or past else None
     return None
 
 
