@@ -1003,3 +1003,70 @@ def test_either_takes_up_the_things_listed_before_it(text: str, rooms: tuple[str
     the things a clause listed first, whatever their kinds."""
     assert asked <= set(_factors(text, rooms)), _factors(text, rooms)
 
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev5 box_room_chore_chart (a child's chore chart)
+    ("Your doll sleeps on the bed. Put her there, unless she's already on it!", ("box_room",), "doll_on_bed"),
+    # written here: a teddy in an attic's basket, a remote on a TV stand
+    ("The teddy sleeps in the basket. Put him there unless he is already in it.", ("attic",),
+     "teddy_bear_inside_basket"),
+    ("The remote lives on the TV stand. Put it there, unless it is already on it.", ("living_room",),
+     "remote_control_on_tv_stand"),
+])
+def test_put_it_there_unless_already_on_it_asks_whether_the_thing_is_home(text: str, rooms: tuple[str, ...],
+                                                                         asked: str) -> None:
+    """"Your doll sleeps on the bed. Put her there, unless she's already on it": where a thing
+    lives or sleeps is its home; "put her there" (a doll is "her", a teddy "him") sends it home;
+    and "unless ... already on it" asks whether it is there, which a home does not settle."""
+    factors = _factors(text, rooms)
+    assert asked in factors and not any(f.endswith("_toggled_on") for f in factors), factors
+
+
+def test_a_home_nobody_doubts_asks_nothing() -> None:
+    # written here: the home is stated and nothing asks whether the thing is there
+    assert not _factors("The remote lives on the TV stand. If the TV is on, switch it off.",
+                        ("living_room",)).keys() - {"television_toggled_on"}
+
+
+@pytest.mark.parametrize(("text", "rooms", "placed", "asked"), [
+    # dev5 mudroom_coach_pep_talk (a coach's pep talk)
+    ("Third: see that water bottle on the bench? Is it empty? Bin it.", ("mudroom",), "on(water_bottle, bench)",
+     "water_bottle_filled"),
+    # written here: a study's mug, a living room's remote
+    ("Do you notice that mug on the desk? If it's dirty, take it to the sink.", ("study",), "on(mug, desk)",
+     "mug_dirty"),
+    ("See the remote on the sofa? If the batteries are dead, put it on the TV stand.", ("living_room",),
+     "on(remote_control, sofa)", None),
+])
+def test_a_thing_pointed_out_by_a_question_of_seeing_is_where_it_is_said(
+        text: str, rooms: tuple[str, ...], placed: str, asked: str | None) -> None:
+    """"see that water bottle on the bench?": a question whether the listener sees a definite or
+    demonstrative thing takes for granted that it is there; its place is stated, not asked."""
+    assert placed in _placed(text, rooms), _placed(text, rooms)
+    factors = _factors(text, rooms)
+    assert not any(f.endswith(("_on_bench", "_on_desk", "_on_sofa")) for f in factors), factors
+    assert asked is None or asked in factors
+
+
+def test_seeing_an_indefinite_thing_still_asks() -> None:
+    # written here: "a mug" is not pointed out; whether there is one on the desk is asked
+    assert "mug_on_desk" in _factors("See a mug on the desk? If it's dirty, take it to the sink.", ("study",))
+
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev5 conservatory_viewing_brief (an estate agent's brief)
+    ("Light is everything in there: the curtains should be open, so if they've been drawn, open them right up.",
+     ("conservatory",), "curtain_open"),
+    # written here: a bedroom's wardrobe, a study's desk lamp
+    ("The wardrobe: if it has been left like that, shut it.", ("bedroom",), "wardrobe_open"),
+    ("The desk lamp: if somebody left it that way, switch it off.", ("study",), "desk_lamp_toggled_on"),
+])
+def test_a_condition_read_off_the_state_its_instruction_sets(text: str, rooms: tuple[str, ...], asked: str) -> None:
+    """"if they've been drawn, open them": a condition the reader cannot read, answered by an
+    instruction that sets a state of the same thing, asks whether the thing is in that state."""
+    assert asked in _factors(text, rooms), _factors(text, rooms)
+
+
+def test_an_instruction_on_another_thing_reads_no_state_into_a_condition() -> None:
+    # written here: "it" is the weather; the instruction names the window outright
+    assert not _factors("If it has been raining, shut the window.", ("bedroom",))

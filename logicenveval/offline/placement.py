@@ -977,16 +977,35 @@ def _resting(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, cat
         if not between or between[0] not in AT or not all(w in ARTICLES for w in between[1:]):
             continue
         cat = catalog.get(str(lex.roles[a.roles[0]]["category"]))
-        if cat is None or not cat.pickable or determiner(words, a.start) != "the":
+        pointed = _pointed_out(words, a.start, clause)
+        if cat is None or not cat.pickable or determiner(words, a.start) != "the" and not pointed:
             continue
         if _moved(words, a.start, clause) or clause.goal:
             continue
-        described = clause.mood == "condition" and _described_subject(words, a.start, b.end, clause)
+        described = clause.mood == "condition" and (_described_subject(words, a.start, b.end, clause) or pointed)
         if clause.mood == "condition" and not described:
             continue
         fact = _contain(catalog, lex, a.roles[0], b.roles[0], between[0])
         if fact is not None:  # a condition on its state takes its place for granted: a statement
             reading.place("settled" if described else "presumed", a.roles[0], fact)
+
+
+#: verbs of seeing that point a thing out to the listener ("see that bottle on the bench?")
+PERCEIVE = frozenset({"see", "notice", "spot", "seen", "noticed", "spotted"})
+#: the words a question that points a thing out may open with ("do you see", "can you spot")
+_ASKED_SEEING = frozenset({"do", "did", "can", "you", "u", "ya", "see", "notice", "spot", "seen", "noticed",
+                           "spotted", "have", "just"})
+
+
+def _pointed_out(words: list[str], start: int, clause: Span) -> bool:
+    """"see that water bottle on the bench?", "Do you see the mug on the desk?": a question that
+    asks whether the listener sees a definite or demonstrative thing takes for granted that it is
+    there; only where a verb of seeing and its auxiliaries come before the thing ("Is there a mug
+    on the desk?" and "see a mug?" still ask)."""
+    lead = [w for w in words[clause.start:start] if w not in ("the", "that", "this", "those", "these")]
+    det = words[start - 1] if start > 0 else ""
+    return det in ("the", "that", "this", "those", "these") and bool(set(lead) & PERCEIVE) and all(
+        w in _ASKED_SEEING for w in lead)
 
 
 def _described_subject(words: list[str], start: int, end: int, clause: Span) -> bool:
