@@ -921,7 +921,9 @@ def test_a_state_or_its_opposite_is_uncertain(text: str, rooms: tuple[str, ...],
     assert asked in _factors(text, rooms), _factors(text, rooms)
 
 
-# =================================================================================================
+# ==========================================================================================
+
+
 # Rules from the fifth development set's rewordings (`tests/data/reader_dev5/tasks_reworded/`)
 # =================================================================================================
 
@@ -1094,3 +1096,153 @@ def test_a_spot_after_a_possessive_is_a_place_not_a_stain(text: str, rooms: tupl
     "a spot on the rug" is still a stain."""
     assert "floor_stain" not in {r["category"] for r in _brief(text, rooms)["roles"].values()}
     assert "floor_stain" in {r["category"] for r in _brief("There is a spot on the rug.", ("living_room",))["roles"].values()}
+
+# ----- fifth development set's new tasks (`tests/data/reader_dev5/tasks_new/`) -------------------
+
+def _placed(text: str, rooms: tuple[str, ...]) -> list[str]:
+    return described_placements(_brief(text, rooms), load_catalog())
+
+
+@pytest.mark.parametrize(("text", "rooms", "placed"), [
+    # dev5 church_hall_clear_up_rota (a volunteers' rota)
+    ("Two cups were left on the trolley: a blue one and a white one. Each one: if it's dirty, wash it.",
+     ("church_hall",), {"on(blue_cup, cart)", "on(white_cup, cart)"}),
+    # written here: a living room's remote, a hallway's umbrella
+    ("The remote was left on the sofa. If the TV is on, switch it off.", ("living_room",),
+     {"on(remote_control, sofa)"}),
+    ("An umbrella was dropped on the bench yesterday; if it is wet, hang it on the hook.", ("hallway",),
+     {"on(umbrella, bench)"}),
+])
+def test_a_past_passive_of_leaving_states_the_place(text: str, rooms: tuple[str, ...], placed: set[str]) -> None:
+    """"Two cups were left on the trolley": a past passive reports what was done, so the place is
+    stated (a present passive, "the cup is put on the shelf", may be an instruction)."""
+    assert placed <= set(_placed(text, rooms)), _placed(text, rooms)
+    assert not {f for f in _factors(text, rooms) if f.endswith(("_on_cart", "_on_sofa", "_on_bench"))}
+
+
+def test_a_present_passive_of_putting_states_no_place() -> None:
+    assert not _placed("The cup is put on the shelf once it is dry.", ("kitchen",))
+
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev5 reception_closing_memo (an interoffice memo)
+    ("Unless it has already been shut down, the desktop computer on the reception desk is to be switched off.",
+     ("reception",), "desktop_computer_toggled_on"),
+    # written here: a study lamp, a kitchen kettle
+    ("If it is still on, switch off the lamp on the desk.", ("study",), "desk_lamp_toggled_on"),
+    ("In case they are dirty, the plates on the table go in the sink.", ("kitchen",), "plate_dirty"),
+])
+def test_a_pronoun_in_a_condition_put_first_speaks_of_the_thing_after_it(text: str, rooms: tuple[str, ...],
+                                                                        asked: str) -> None:
+    """"Unless it has already been shut down, the computer ... is to be switched off": with nothing
+    named before it, the pronoun of a condition put first speaks of the thing its main clause
+    names (not a place after a preposition)."""
+    assert asked in _factors(text, rooms), _factors(text, rooms)
+
+
+def test_a_pronoun_with_a_thing_before_it_keeps_its_antecedent() -> None:
+    # the main clause names only a place: the torch said before is still what "it" means
+    assert "flashlight_toggled_on" in _factors("The torch is on the step stool. If it's on, put it on the shelf.",
+                                               ("attic",))
+
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev5 reception_closing_memo
+    ("Unless it has already been shut down, the desktop computer on the reception desk is to be switched off.",
+     ("reception",), "desktop_computer_toggled_on"),
+    # written here: a study's laptop, powered down
+    ("If the laptop has not been powered down, do it now.", ("study",), "laptop_toggled_on"),
+])
+def test_a_machine_shut_down_is_off_not_closed(text: str, rooms: tuple[str, ...], asked: str) -> None:
+    """"shut down", "powered down": a machine switched off, not a door or lid shut."""
+    factors = _factors(text, rooms)
+    assert asked in factors and not any(f.endswith("_open") for f in factors), factors
+
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev5 en_suite_text_from_partner (a partner's text)
+    ("toothpaste and soap - if either of them has ended up on the floor again (I know) pop it back on the vanity",
+     ("en_suite",), {"toothpaste_on_floor", "soap_bar_on_floor"}),
+    # dev5 reception_closing_memo: "either" alone
+    ("The stapler and the tape belong on the shelving unit and in the wire basket, respectively. If either has "
+     "been left out on the reception desk, please return it to its place.", ("reception",),
+     {"stapler_on_desk", "tape_on_desk"}),
+    # written here: a hallway's keys and wallet, a kitchen's kettle and toaster
+    ("Keys and wallet: if either of them is on the floor, put it on the shelf.", ("hallway",),
+     {"keys_on_floor", "wallet_on_floor"}),
+    ("The kettle and the toaster live on the counter. If either is left on, switch it off.", ("kitchen",),
+     {"kettle_toggled_on", "toaster_toggled_on"}),
+])
+def test_either_takes_up_the_things_listed_before_it(text: str, rooms: tuple[str, ...], asked: set[str]) -> None:
+    """"toothpaste and soap - if either of them ...", "The stapler and the tape belong ... If either
+    has been left out ...": a condition on "either" (with or without "of them") holds for each of
+    the things a clause listed first, whatever their kinds."""
+    assert asked <= set(_factors(text, rooms)), _factors(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev5 box_room_chore_chart (a child's chore chart)
+    ("Your doll sleeps on the bed. Put her there, unless she's already on it!", ("box_room",), "doll_on_bed"),
+    # written here: a teddy in an attic's basket, a remote on a TV stand
+    ("The teddy sleeps in the basket. Put him there unless he is already in it.", ("attic",),
+     "teddy_bear_inside_basket"),
+    ("The remote lives on the TV stand. Put it there, unless it is already on it.", ("living_room",),
+     "remote_control_on_tv_stand"),
+])
+def test_put_it_there_unless_already_on_it_asks_whether_the_thing_is_home(text: str, rooms: tuple[str, ...],
+                                                                         asked: str) -> None:
+    """"Your doll sleeps on the bed. Put her there, unless she's already on it": where a thing
+    lives or sleeps is its home; "put her there" (a doll is "her", a teddy "him") sends it home;
+    and "unless ... already on it" asks whether it is there, which a home does not settle."""
+    factors = _factors(text, rooms)
+    assert asked in factors and not any(f.endswith("_toggled_on") for f in factors), factors
+
+
+def test_a_home_nobody_doubts_asks_nothing() -> None:
+    # written here: the home is stated and nothing asks whether the thing is there
+    assert not _factors("The remote lives on the TV stand. If the TV is on, switch it off.",
+                        ("living_room",)).keys() - {"television_toggled_on"}
+
+
+@pytest.mark.parametrize(("text", "rooms", "placed", "asked"), [
+    # dev5 mudroom_coach_pep_talk (a coach's pep talk)
+    ("Third: see that water bottle on the bench? Is it empty? Bin it.", ("mudroom",), "on(water_bottle, bench)",
+     "water_bottle_filled"),
+    # written here: a study's mug, a living room's remote
+    ("Do you notice that mug on the desk? If it's dirty, take it to the sink.", ("study",), "on(mug, desk)",
+     "mug_dirty"),
+    ("See the remote on the sofa? If the batteries are dead, put it on the TV stand.", ("living_room",),
+     "on(remote_control, sofa)", None),
+])
+def test_a_thing_pointed_out_by_a_question_of_seeing_is_where_it_is_said(
+        text: str, rooms: tuple[str, ...], placed: str, asked: str | None) -> None:
+    """"see that water bottle on the bench?": a question whether the listener sees a definite or
+    demonstrative thing takes for granted that it is there; its place is stated, not asked."""
+    assert placed in _placed(text, rooms), _placed(text, rooms)
+    factors = _factors(text, rooms)
+    assert not any(f.endswith(("_on_bench", "_on_desk", "_on_sofa")) for f in factors), factors
+    assert asked is None or asked in factors
+
+
+def test_seeing_an_indefinite_thing_still_asks() -> None:
+    # written here: "a mug" is not pointed out; whether there is one on the desk is asked
+    assert "mug_on_desk" in _factors("See a mug on the desk? If it's dirty, take it to the sink.", ("study",))
+
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev5 conservatory_viewing_brief (an estate agent's brief)
+    ("Light is everything in there: the curtains should be open, so if they've been drawn, open them right up.",
+     ("conservatory",), "curtain_open"),
+    # written here: a bedroom's wardrobe, a study's desk lamp
+    ("The wardrobe: if it has been left like that, shut it.", ("bedroom",), "wardrobe_open"),
+    ("The desk lamp: if somebody left it that way, switch it off.", ("study",), "desk_lamp_toggled_on"),
+])
+def test_a_condition_read_off_the_state_its_instruction_sets(text: str, rooms: tuple[str, ...], asked: str) -> None:
+    """"if they've been drawn, open them": a condition the reader cannot read, answered by an
+    instruction that sets a state of the same thing, asks whether the thing is in that state."""
+    assert asked in _factors(text, rooms), _factors(text, rooms)
+
+
+def test_an_instruction_on_another_thing_reads_no_state_into_a_condition() -> None:
+    # written here: "it" is the weather; the instruction names the window outright
+    assert not _factors("If it has been raining, shut the window.", ("bedroom",))

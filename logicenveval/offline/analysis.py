@@ -93,7 +93,9 @@ PERSONIFIED = frozenset({"doll", "teddy_bear"})
 PERSON_PRONOUNS = frozenset({"she", "he", "her", "him"})
 #: verbs that say where a thing belongs ("it is kept in the vanity", "the remote lives on the
 #: stand"): said of a definite object they are still askable (see `Fact.definite`)
-HOMES = frozenset({"kept", "lives", "live"})
+HOMES = frozenset({"kept", "lives", "live",
+                   # where a doll or a pet sleeps is its place (`placement.KEEP_VERBS` reads it so)
+                   "sleeps", "sleep"})
 #: the words as `tokens` gives them: the noun lemma of a verb form ("lives" -> "life")
 HOMES |= frozenset(singular(w) for w in HOMES)
 DESCRIPTIVE |= frozenset(singular(w) for w in HOMES)
@@ -204,6 +206,9 @@ _ASIDE = re.compile(r"\s*\([^()]*\)\W*$")
 PHRASAL_STATES = tuple((re.compile(rf"\b(?:{verbs}) (?:{particles})\b"), state) for verbs, particles, state in (
     ("pulled|drawn|slid", "out|open", "open"),
     ("pushed|slid", "in|shut|back in", "shut"),
+    # a machine "shut down" or "powered down/off" is off, not shut like a door
+    ("shut|shuts|shutting|powered|powers|power", "down", "off"),
+    ("powered|powers|power", "off", "off"),
 ))
 
 
@@ -295,6 +300,8 @@ class _Reader:
         self.last_goals: list[Fact] = []
         #: where each thing is kept or lives, as the text said (`HOMES`): where "put it back" goes
         self.homes: dict[str, Fact] = {}
+        #: places asked by "unless it's already there" (`_already`): a home does not settle them
+        self.asked_already: set[str] = set()
         self.last_state: dict[str, Fact] = {}
         #: the thing last spoken of, not a place it goes to ("Bath towel on the floor? Wet: into
         #: the basket. Dry: ..."): what a heading without a subject is said of
@@ -470,6 +477,7 @@ class _Reader:
         negated = any(_negation(w) for w in words)
         already = self._already(words, mentions, negated)
         if already:
+            self.asked_already |= {f.condition for f in already if f.kind == "location"}
             return already, tuple(dict.fromkeys(f.subject for f in already))
         goal_of = {self.last_goal.subject} if self.last_goal is not None else set()
         if subjects and subjects[0].kind == "pronoun" and any(p in " ".join(words) for p in ELSEWHERE) and not (
@@ -587,12 +595,15 @@ class _Reader:
         return list(dict.fromkeys(facts)), names
 
     def _back_home(self, words: list[str], mentions: list[Mention], facts: list[Fact]) -> list[Fact]:
-        """"put it back", "pop them back in": an instruction that moves a thing back and names no
-        place sends it to where the text said it is kept or lives ("the salt and pepper shakers
-        live in the sideboard ... pop it back in")."""
-        if "back" not in words or any(f.kind == "location" for f in facts) or not imperative(words):
+        """"put it back", "pop them back in", "put her there": an instruction that moves a thing
+        back (or "there", right after it) and names no place sends it to where the text said it
+        is kept or lives ("the salt and pepper shakers live in the sideboard ... pop it back in",
+        "your doll sleeps on the bed. Put her there")."""
+        there = [k for k in range(1, len(words)) if words[k] == "there" and any(
+            m.end == k and m.kind == "pronoun" for m in mentions)]
+        if "back" not in words and not there or any(f.kind == "location" for f in facts) or not imperative(words):
             return []
-        k = words.index("back")
+        k = words.index("back") if "back" in words else there[0]
         if any(m.kind in ("role", "room", "floor") and m.start > k for m in mentions):
             return []
         moved = [r for m in mentions if m.kind == "pronoun" and m.end <= k for r in m.roles]
@@ -1256,6 +1267,53 @@ def _done_before(clauses: list[Clause], sentence: int, said: str, names: tuple[s
             if f.goal and f.kind == "location" and f.subject in names]
 
 
+def _cataphor(reader: _Reader, condition: str, main: str) -> tuple[str, ...] | None:
+    """The thing a pronoun of a condition put first speaks of when nothing was named just before
+    it (the caller's test) and the condition names nothing itself: the first thing its main
+    clause names, not after a preposition of place ("If it is still on, switch off the lamp on
+    the desk": the lamp, not the desk). None when the condition names a thing, has no "it"/"they", or the main clause names no
+    such thing (a thing named in the sentence before stays the pronoun's: "The torch is on the
+    stool. If it's on, ...")."""
+    toks = tokens(expand(condition).lower())
+    if not {w for w, _, _ in toks} & {"it", "they"} or any(
+            m.kind == "role" for m in reader.lex.find_mentions(toks)):
+        return None
+    words = [w for w, _, _ in tokens(expand(main).lower())]
+    for m in reader.lex.find_mentions(tokens(expand(main).lower())):
+        lead = m.start - 1
+        while lead >= 0 and words[lead] in ARTICLES:
+            lead -= 1
+        if m.kind == "role" and not (lead >= 0 and words[lead] in PREP_ON | PREP_IN | PLACE_PREPS | {"at"}):
+            return m.roles
+    return None
+
+
+#: verbs of an instruction whose particle says the state it leaves ("switch it off", "turn it on")
+_SETTERS = frozenset({"switch", "turn", "flick", "put", "shut", "power"})
+_OBJECT_PRONOUNS = frozenset({"it", "them"})
+
+
+def _undone(reader: _Reader, condition: str, instruction: str) -> list[Fact]:
+    """The state a condition with no fact of its own (or only a made-up attribute, "drawn") asks,
+    read off its answer: an instruction
+    that sets a state of the thing the condition's pronoun means ("if they've been drawn, open
+    them": not open; "if it's been left like that, switch it off": on). Only when both clauses
+    speak of the thing by a pronoun, the thing is the topic and can take the state."""
+    said = {w for w, _, _ in tokens(expand(condition).lower())}
+    words = [w for w, _, _ in tokens(expand(instruction).lower())]
+    if not said & {"it", "they"} or not reader.topic or reader.topic_kind != "role" or len(words) < 2:
+        return []
+    if words[0] in STATE_WORDS and words[1] in _OBJECT_PRONOUNS:
+        state = STATE_WORDS[words[0]]  # "open them", "shut it"
+    elif words[0] in _SETTERS and words[1] in _OBJECT_PRONOUNS and words[2:3] and words[2] in STATE_WORDS:
+        state = STATE_WORDS[words[2]]  # "switch it off", "turn them on"
+    else:
+        return []
+    flag, result = state
+    return [Fact(r, f"state({r}, {flag})", "state", flag, negated=result)
+            for r in reader.topic if flag in reader.capable.get(r, frozenset())]
+
+
 def _role_after(cut: list[list[Piece]], si: int, pi: int) -> str:
     """The role of the piece after piece `pi` of sentence `si`, whether it ends the sentence's
     heading (the next sentence goes on after a colon) or not; "" after a full stop."""
@@ -1308,14 +1366,40 @@ DISTRIBUTIVE = re.compile(r"^\W*(?:for\s+)?(?:each|every|both)(?:\s+(?:one|ones|
 #: just named, asked of each of them as "each one" is; so is "either one" / "neither one" ("Marco's
 #: glass and Lena's glass ... If either one is dirty")
 ANY_OF = re.compile(r"\b(?:(?:either|neither|any|one|each|both|all)\s+of\s+(?:them|these|those|the\s+two)"
-                    r"|(?:either|neither)\s+one)\b", re.I)
+                    r"|(?:either|neither)\s+one)\b|" + r"\b(?:either|neither)(?=\s+(?:has|have|is|was|are|were|gets|got|"
+                    r"ends|ended|falls|fell|seems|looks|should|may|might)\b)", re.I)
+#: "If either has been left out": "either" alone as the subject, read as "either of them" so that
+#: its pronoun takes up the group
+_BARE_EITHER = re.compile(r"\b(either|neither)(?=\s+(?:has|have|is|was|are|were|gets|got|ends|ended|falls|fell|"
+                          r"seems|looks|should|may|might)\b)", re.I)
 
 
-def _members(clauses: list[Clause], kinds: Mapping[str, str], sentence: int) -> tuple[str, ...]:
+def _listed(lex: Lexicon, text: str) -> tuple[str, ...]:
+    """The things a clause lists first, joined by "and", "or" or commas with nothing but articles
+    between ("toothpaste and soap -", "The stapler and the tape belong on ..."), not after a
+    preposition: a group a later "either of them" may take up."""
+    toks = tokens(expand(text).lower())
+    words = [w for w, _, _ in toks]
+    things = [m for m in lex.find_mentions(toks) if m.kind == "role" and len(m.roles) == 1]
+    run: list[Mention] = []
+    for m in things:
+        gap = words[run[-1].end:m.start] if run else words[:m.start]
+        if run and gap and set(gap) <= {"and", "or"} | ARTICLES | {"your", "my", "our", "his", "her", "their"}:
+            run.append(m)
+        elif run:
+            break
+        elif not set(gap) & (PREP_ON | PREP_IN | PLACE_PREPS):
+            run = [m]
+    return tuple(r for m in run for r in m.roles) if len(run) > 1 else ()
+
+
+def _members(clauses: list[Clause], kinds: Mapping[str, str], sentence: int,
+             lex: Lexicon | None = None) -> tuple[str, ...]:
     """The roles of the group last named: the latest clause of this sentence or the one before
     naming two or more roles of one category (the items of an enumeration), or else saying one
     thing of two or more things ("the salt and pepper shakers live in the sideboard", "the doll
-    and the teddy are on the bed": what its facts are said of)."""
+    and the teddy are on the bed": what its facts are said of), or else listing two or more
+    things first ("toothpaste and soap - if either of them ...": `_listed`)."""
     for cl in reversed(clauses):
         if cl.sentence < sentence - 1:
             break
@@ -1329,6 +1413,8 @@ def _members(clauses: list[Clause], kinds: Mapping[str, str], sentence: int) -> 
         said_of = list(dict.fromkeys(f.subject for f in cl.facts if f.subject in kinds))
         if len(said_of) > 1 and len({f.condition.replace(f.subject, "") for f in cl.facts}) == 1:
             return tuple(said_of)
+        if lex is not None and (listed := _listed(lex, cl.text)):
+            return listed
     return ()
 
 
@@ -1396,7 +1482,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         after = [p.text for p in pieces[1:]] + [cut[si + 1][0].text if si + 1 < len(cut) and cut[si + 1] and not
                                                 sent.rstrip().endswith((".", "!", "?")) else ""]
         for pi, (text, cue, role) in enumerate(pieces):
-            if (DISTRIBUTIVE.match(text) or ANY_OF.search(text)) and (members := _members(clauses, categories, grammatical)):
+            if (DISTRIBUTIVE.match(text) or ANY_OF.search(text)) and (members := _members(clauses, categories, grammatical, lex)):
                 spread = (grammatical, members)
             if role == "heading" and _speaker(reader, text, speakers):
                 clauses.append(Clause(text, grammatical, cue, "statement", (), ()))
@@ -1440,9 +1526,23 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 said = f"{said.rstrip(' .;,')} {place[1]}"
                 doubt = bool({w for w, _, _ in tokens(place[1])} & UNCERTAIN)
                 role = ("uncertain" if doubt else "scene") if role == "statement" else role
+            if role == "condition" and pi == 0 and pi + 1 < len(pieces) \
+                    and not any(cl.mentions for cl in clauses if cl.sentence >= grammatical - 1) \
+                    and (ahead := _cataphor(reader, said, pieces[pi + 1].text)) is not None:
+                # "Unless it has already been shut down, the computer on the desk is to be switched
+                # off": a pronoun in a condition put first, with nothing named in its sentence or
+                # the one before, speaks of the thing its main clause names
+                reader.topic, reader.topic_kind = ahead, "role"
+            said = _BARE_EITHER.sub(r"\1 of them", said)
             facts, names = reader.facts("there is " + said if cue == "should there be" else said)
             if cue == "if available" and not any(f.kind in ("location", "exists") and not f.home for f in facts):
                 facts += _available(reader, said)
+            if role == "condition" and all(f.derived for f in facts) and pi + 1 < len(pieces) and (
+                    undone := _undone(reader, said, pieces[pi + 1].text)):
+                # "if they've been drawn, open them right up": a condition the reader cannot read,
+                # answered by an instruction that sets a state of the same thing, says that the
+                # thing is not yet in that state
+                facts = undone
             if role == "condition" and not facts and (done := _done_before(clauses, grammatical, said, names)):
                 # "the bin bag goes in the bin, unless Maya already took it down": an action some
                 # agent has already done to the thing moved asks whether it is already there
@@ -1618,7 +1718,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         factors.append(factor)
     homes = {f.condition for cl in clauses if cl.role == "statement" and {w for w, _, _ in tokens(cl.text)} & HOMES
              for f in cl.facts if f.kind == "location" and not f.goal}
-    factors = _settle_stated(factors, brief, catalog, slot_factor, homes)
+    factors = _settle_stated(factors, brief, catalog, slot_factor, homes, reader.asked_already)
     for factor in factors:
         for slot_c, negated, value in factor.raw_context:
             dep = slot_factor.get(slot_c)
@@ -1648,12 +1748,15 @@ def _placed_outright(brief: Mapping[str, Any], catalog: Catalog, text: str) -> s
 
 
 def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Catalog,
-                   slot_factor: dict[tuple[str, str, str], Factor], homes: set[str]) -> list[Factor]:
+                   slot_factor: dict[tuple[str, str, str], Factor], homes: set[str],
+                   asked: frozenset[str] | set[str] = frozenset()) -> list[Factor]:
     """A placement the description states (`offline.placement`: "a coffee table with a mug on it", "a
     kitchen with a stove") is no uncertain location: its yes/no factor is dropped. So is where an
     object is kept ("it's kept in the vanity, unless someone stuffed it into the medicine
     cabinet"): a factor listing the places it may be asks about the others (`_drop_home`) —
-    unless the text speaks of somewhere else ("wherever else it may be lying")."""
+    unless the text speaks of somewhere else ("wherever else it may be lying"). A home asked with
+    "already" (`asked`: "Your doll sleeps on the bed. Put her there, unless she's already on it")
+    is doubted: its factor stays."""
 
     low = " ".join(w for w, _, _ in tokens(expand(unquote(str(brief.get("description", ""))))))
     elsewhere = any(re.search(rf"\b{cue}\b", low) for cue in ELSEWHERE + ("wherever",))
@@ -1668,11 +1771,13 @@ def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Cat
     # "fetch a spare from the dresser (that's where the spares are kept)": a thing the text places
     # on or in a holder that is both (a dresser, a cabinet) is asked neither on it nor in it
     held = {_at(x) for x in settled} - {None}
+    proper = set(described_placements(brief, catalog, kinds=frozenset({"settled"})))  # stated, not a home
     out: list[Factor] = []
     for f in factors:
         values = set(f.values.values())
         if f.kind == "location" and set(f.values) == {"yes", "no"} and (
-                settled & values or f.subject in placed or {_at(v) for v in values} & held):
+                settled & values or f.subject in placed or {_at(v) for v in values} & held) and not (
+                    values & set(asked) and not values & proper):
             for slot, g in list(slot_factor.items()):
                 if g is f:
                     del slot_factor[slot]

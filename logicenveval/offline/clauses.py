@@ -208,7 +208,9 @@ def verbless(words: list[str]) -> bool:
 #: words after a base-form verb that make it an imperative with its object ("clean it", "put
 #: the", "pick up"), not an adjective or noun opening a heading ("clean - ...", "water bowl ...")
 OBJECT_STARTS = ARTICLES | frozenset({"it", "them", "up", "out", "back", "away", "down", "off", "over",
-                                      "with", "at", "from", "onto", "into"})
+                                      "with", "at", "from", "onto", "into",
+                                      # a doll or a teddy spoken of as a person ("put her there")
+                                      "her", "him"})
 #: a heading ends where its instruction starts: at a colon, a question mark or a spaced dash
 _HEADING = re.compile(r"^(?P<head>[^:?\u2013]+?)(?P<mark>\?|:|\s+(?:-|\u2013)\s+)(?P<rest>.*)$", re.S)
 

@@ -308,7 +308,7 @@ class _Reader:
         written = self.text.raw[i]
         if written == word:  # a singular never names a plural-only kind: "Marco's glass" is no spectacles
             candidates = [c for c in candidates if c is None or not self.plural_only(c, word)] or candidates
-        said = set(self.text.words[self.text.sentence_start(i):self.text.sentence_end(i)]) - _NOT_CONTEXT
+        said = self.sentence_context(i)
 
         def score(category: str | None) -> tuple[bool, bool, int, bool, bool, int, int, bool]:
             assert category is not None
@@ -327,6 +327,21 @@ class _Reader:
                     words_of(category)[-1] == word)
 
         return max(candidates, key=score)
+
+    def sentence_context(self, i: int) -> set[str]:
+        """The words of word `i`'s sentence that may tell its kinds apart: not the words of another
+        thing's name written there in full ("stand it on the dish rack; otherwise it goes up on
+        the shelf": "rack" is the dish rack's, no hint of a shoe rack)."""
+        words = self.text.words
+        start, end = self.text.sentence_start(i), self.text.sentence_end(i)
+        taken: set[int] = set()
+        k = start
+        while k < end:
+            n, category = self.match(k)
+            if n > 1 and category is not None and not k <= i < k + n:
+                taken.update(range(k, k + n))
+            k += n
+        return {words[k] for k in range(start, end) if k not in taken} - _NOT_CONTEXT
 
     def plural_names(self, category: str, word: str) -> list[bool]:
         """For each name of `category` headed by `word` (singular), whether it is written in the

@@ -85,6 +85,8 @@ RESULT = frozenset({"left", "dropped", "put", "placed", "thrown", "set", "found"
 PASSIVE_STATIVE = frozenset({"found", "located", "kept", "stored", "situated", "seated",
                              "present"})  # "a dirty mark is present on the floor"
 PERFECT = frozenset({"has", "have", "had"})
+#: the past forms of "be": before a result participle they report a past event ("was left")
+PAST_BE = frozenset({"was", "were"})
 #: verbs whose subject holds what follows ("the kitchen has the dishwasher", "it contains a bed",
 #: "the basket also holds a box of cereal")
 HAVE_VERBS = frozenset({"has", "have", "had", "contains", "contain", "holds", "hold", "got", "includes",
@@ -409,7 +411,10 @@ def _verb_kind(group: list[str]) -> str | None:
     if last in RESULT:
         perfect = bool(set(verbs) & PERFECT) and "been" in verbs
         active_past = len(verbs) == 1  # "someone left a mark on the floor" (with its subject)
-        return "settled" if perfect or last in PASSIVE_STATIVE or active_past else None
+        # a past passive reports what was done, where a present one may instruct ("two cups were
+        # left on the trolley", "the keys were dropped on the mat"; not "the plate is put away")
+        past = len(verbs) == 2 and verbs[0] in PAST_BE
+        return "settled" if perfect or last in PASSIVE_STATIVE or active_past or past else None
     return None
 
 
@@ -972,16 +977,35 @@ def _resting(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, cat
         if not between or between[0] not in AT or not all(w in ARTICLES for w in between[1:]):
             continue
         cat = catalog.get(str(lex.roles[a.roles[0]]["category"]))
-        if cat is None or not cat.pickable or determiner(words, a.start) != "the":
+        pointed = _pointed_out(words, a.start, clause)
+        if cat is None or not cat.pickable or determiner(words, a.start) != "the" and not pointed:
             continue
         if _moved(words, a.start, clause) or clause.goal:
             continue
-        described = clause.mood == "condition" and _described_subject(words, a.start, b.end, clause)
+        described = clause.mood == "condition" and (_described_subject(words, a.start, b.end, clause) or pointed)
         if clause.mood == "condition" and not described:
             continue
         fact = _contain(catalog, lex, a.roles[0], b.roles[0], between[0])
         if fact is not None:  # a condition on its state takes its place for granted: a statement
             reading.place("settled" if described else "presumed", a.roles[0], fact)
+
+
+#: verbs of seeing that point a thing out to the listener ("see that bottle on the bench?")
+PERCEIVE = frozenset({"see", "notice", "spot", "seen", "noticed", "spotted"})
+#: the words a question that points a thing out may open with ("do you see", "can you spot")
+_ASKED_SEEING = frozenset({"do", "did", "can", "you", "u", "ya", "see", "notice", "spot", "seen", "noticed",
+                           "spotted", "have", "just"})
+
+
+def _pointed_out(words: list[str], start: int, clause: Span) -> bool:
+    """"see that water bottle on the bench?", "Do you see the mug on the desk?": a question that
+    asks whether the listener sees a definite or demonstrative thing takes for granted that it is
+    there; only where a verb of seeing and its auxiliaries come before the thing ("Is there a mug
+    on the desk?" and "see a mug?" still ask)."""
+    lead = [w for w in words[clause.start:start] if w not in ("the", "that", "this", "those", "these")]
+    det = words[start - 1] if start > 0 else ""
+    return det in ("the", "that", "this", "those", "these") and bool(set(lead) & PERCEIVE) and all(
+        w in _ASKED_SEEING for w in lead)
 
 
 def _described_subject(words: list[str], start: int, end: int, clause: Span) -> bool:
