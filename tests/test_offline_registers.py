@@ -919,3 +919,82 @@ def test_an_instruction_on_another_thing_stays_apart() -> None:
 ])
 def test_a_state_or_its_opposite_is_uncertain(text: str, rooms: tuple[str, ...], asked: str) -> None:
     assert asked in _factors(text, rooms), _factors(text, rooms)
+
+
+# ----- the fifth development set's rewordings (`reader_dev5/tasks_reworded/`, branch d5_rw2) --------
+
+@pytest.mark.parametrize(("text", "rooms", "thing"), [
+    # dev5 (very polite, hedged requests)
+    ("The kitchen has two pet bowls - one is for food, one for water. If the water bowl isn't empty but "
+     "it's dirty, might you scrub it with the sponge and put the sponge back on the kitchen counter - or, "
+     "should there be no sponge, perhaps wipe it out with a paper towel.",
+     ("kitchen",), "water_bowl"),
+    # written here: a bathroom mirror and a cloth
+    ("The bathroom has a mirror and a towel rack. If the mirror is dirty, might you wipe it with the cloth "
+     "and hang the cloth on the towel rack - or, should there be no cloth, use a paper towel.", ("bathroom",),
+     "mirror"),
+])
+def test_a_modal_before_you_is_a_request_not_a_doubt(text: str, rooms: tuple[str, ...], thing: str) -> None:
+    """"might you scrub it ...": a modal right before "you" asks the listener to act (as "could
+    you" does); it doubts nothing of the scene, so the thing acted on is no uncertain existence."""
+    factors = _factors(text, rooms)
+    assert f"{thing}_present" not in factors, factors
+    assert any(k.startswith(thing) for k in factors), factors
+
+
+def test_a_modal_before_a_thing_still_doubts() -> None:
+    """"the sponge might be on the counter": the modal says what may be so (no request)."""
+    factors = _factors("The sponge might be on the kitchen counter. If it is, put it in the sink.", ("kitchen",))
+    assert "sponge_on_kitchen_counter" in factors, factors
+
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev5 (first-person plural to a child)
+    ("We've got the sofa and the tea table. Our wet mop is leaning against the wall, and maybe there are "
+     "some wet wipes on the tea table.", ("living_room",), "wet_wipe_on_coffee_table"),
+    # written here: a hallway bench
+    ("The hallway has a bench and a shoe rack. Our boots are by the door, and perhaps there is an "
+     "umbrella on the bench.", ("hallway",), "umbrella_on_bench"),
+])
+def test_a_doubt_before_there_is_makes_the_scene_uncertain(text: str, rooms: tuple[str, ...], asked: str) -> None:
+    """"maybe there are some wipes on the table": a doubt word before "there is" says what may be
+    so, as "there may be" does; it sets no scene, so where the thing is stays a question."""
+    assert asked in _factors(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms", "asked", "not_asked"), [
+    # dev5 (a third-person job description)
+    ("The study contains a potted plant and a desk. When the soil is dry, the helper brings the plant the "
+     "watering can, filled (filling it at the bathroom sink first if it is empty).", ("study",),
+     "watering_can_filled", "potted_plant_filled"),
+    # written here: a bedroom vase, an imperative
+    ("The bedroom has a vase and a nightstand. Each evening, bring the vase the watering can - refill it at "
+     "the sink if it is empty.", ("bedroom",), "watering_can_filled", "vase_filled"),
+])
+def test_the_second_object_of_a_verb_of_giving_is_the_thing_carried(text: str, rooms: tuple[str, ...],
+                                                                    asked: str, not_asked: str) -> None:
+    """"brings the plant the watering can": of two objects after a verb of giving the first is the
+    receiver, the second the thing carried, which a pronoun after it means ("filling it ...")."""
+    factors = _factors(text, rooms)
+    assert asked in factors and not_asked not in factors, factors
+
+
+def test_a_verb_of_giving_with_one_object_and_a_receiver_after_to() -> None:
+    """"bring the watering can to the vase": one object, the receiver after "to"."""
+    factors = _factors("The bedroom has a vase and a nightstand. Each evening, bring the watering can to the vase - "
+                       "refill it at the sink if it is empty.", ("bedroom",))
+    assert "watering_can_filled" in factors, factors
+
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev5 (old-fashioned formal English)
+    ("The laundry room has a dryer and a laundry basket. If the shirt is wet and the dryer is free, dry it in "
+     "the dryer. Whilst the dryer is already running, however, the shirt is instead to be hung upon the "
+     "drying rack out on the balcony.", ("laundry_room", "balcony"), "dryer_toggled_on"),
+    # written here: a living room television
+    ("The living room has a TV, a sofa and a TV stand. Whilst the TV is still on, leave the remote on the sofa; "
+     "otherwise put it on the TV stand.", ("living_room",), "television_toggled_on"),
+])
+def test_whilst_is_while(text: str, rooms: tuple[str, ...], asked: str) -> None:
+    """British "whilst" (`sentences.VARIANTS`) opens a condition of time as "while" does."""
+    assert asked in _factors(text, rooms)

@@ -35,6 +35,7 @@ from logicenveval.offline.clauses import (
     imperative,
     points_back,
     split_clauses,
+    uncertain_words,
 )
 from logicenveval.offline.lexicon import (
     COLOR_WORDS,
@@ -263,6 +264,29 @@ def _participle(words: list[str], k: int) -> bool:
     return any(lemma != words[k] for lemma in getAllLemmas(words[k]).get("VERB", ()))
 
 
+#: verbs of giving that take two objects, the receiver first ("bring the plant the can", "hand
+#: the guest a towel"): the second object is the thing moved
+GIVING = frozenset({"bring", "give", "hand", "pass", "fetch", "take", "send", "offer"})
+
+
+def _direct_object(words: list[str], found: list[Mention], first: Mention | None) -> Mention | None:
+    """The thing a clause speaks of when its first mention is the receiver of a verb of giving
+    with two objects ("the helper brings the plant the watering can, filled"): the second object,
+    right after the first (its determiner between), is what is carried and what a pronoun after
+    it means ("filling it at the sink"); otherwise the first mention itself."""
+    if first is None or first.kind != "role" or first.start < 1:
+        return first
+    k = first.start - 1 if words[first.start - 1] in ARTICLES else first.start
+    verb = words[k - 1] if k >= 1 else ""
+    if not GIVING & set(getAllLemmas(verb).get("VERB", ())):
+        return first
+    second = next((m for m in found if m.kind == "role" and m.start > first.end), None)
+    if second is None or second.start - first.end > 1 or words[first.end:second.start] not in ([], ["the"], ["a"],
+                                                                                               ["an"], ["your"], ["my"]):
+        return first
+    return second
+
+
 def _placed(words: list[str], m: Mention) -> bool:
     """The mention names a place or a goal: a preposition stands before it ("on the table",
     "from the big dresser")."""
@@ -440,6 +464,7 @@ class _Reader:
             if m.kind in ("role", "pronoun"):
                 self.recent = [r for r in self.recent if r not in m.roles] + list(m.roles)
         first = next((m for m in found if m.kind in ("role", "floor", "pronoun")), None)
+        first = _direct_object(words, found, first)
         if first is not None and first.kind != "pronoun":
             self.topic, self.topic_kind = first.roles, first.kind
         thing = next((m for m in found if m.kind == "role" and not _placed(words, m)), None)
@@ -1510,7 +1535,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             context[-1] = (slot0, not neg0, key0)
         # "put it in the fridge - the fridge door may already be open": an uncertain remark
         conditional = cl.role in ("condition", "uncertain") or (
-            cl.role == "consequence" and bool(set(re.findall(r"[a-z]+", cl.text.lower())) & UNCERTAIN))
+            cl.role == "consequence" and bool(uncertain_words(re.findall(r"[a-z]+", cl.text.lower()))))
         added: list[tuple[tuple[str, str, str], bool, str]] = []
         if cl.role == "condition":
             # "when it is dirty, ...; when it is clean and wet, ...": a condition restating an
