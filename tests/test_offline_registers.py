@@ -998,3 +998,54 @@ def test_a_verb_of_giving_with_one_object_and_a_receiver_after_to() -> None:
 def test_whilst_is_while(text: str, rooms: tuple[str, ...], asked: str) -> None:
     """British "whilst" (`sentences.VARIANTS`) opens a condition of time as "while" does."""
     assert asked in _factors(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms", "asked", "not_asked"), [
+    # dev5 (a programmer's pseudo-code note)
+    ("laundry room:\n\nif shirt on floor:\n    if shirt is white: open washing machine; put shirt in; close door\n",
+     ("laundry_room",), "shirt_color", "washing_machine_open"),
+    # written here: a bedroom note with its articles dropped
+    ("Bedroom. If the jacket is on the bed: open wardrobe, hang jacket inside, close wardrobe.", ("bedroom",),
+     "jacket_on_bed", "wardrobe_open"),
+])
+def test_an_instruction_with_its_article_dropped_is_no_state(text: str, rooms: tuple[str, ...], asked: str,
+                                                             not_asked: str) -> None:
+    """"open washing machine": a verb that is also a state word, right before a bare noun in a
+    clause with no verb of its own, is an instruction with its article dropped (as notes drop it),
+    not the thing's state now ("an open wardrobe")."""
+    factors = _factors(text, rooms)
+    assert asked in factors and not_asked not in factors, factors
+
+
+def test_a_state_word_before_a_noun_in_a_clause_with_its_verb_is_still_a_state() -> None:
+    """A state word said of the thing by a clause with a verb ("if the cabinet is open") stays a state."""
+    factors = _factors("The kitchen has a cabinet. If the cabinet is open, close it. Dirty plates go in the sink.",
+                       ("kitchen",))
+    assert "cabinet_open" in factors, factors
+
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev5 (South African English)
+    ("The living room has a sofa and an armchair. If one of the sofa cushions landed up on the floor, put it "
+     "back on the sofa; otherwise leave the cushions.", ("living_room",), "sofa_pillow_on_floor"),
+    # written here: a hallway hat
+    ("The hallway has a bench and a coat hook. If the hat landed on the floor, hang it on the coat hook.",
+     ("hallway",), "hat_on_floor"),
+])
+def test_landed_up_is_ended_up(text: str, rooms: tuple[str, ...], asked: str) -> None:
+    """"landed (up) on the floor" says where a thing came to rest, as "ended up" does."""
+    assert asked in _factors(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), [
+    # dev5 (a textbook exercise)
+    ("A living room contains a potted plant and a TV. If its leaves are dusty, mist them clean with the plant "
+     "mister, filling the mister at the sink first if it is empty.", ("living_room",), "plant_mister_filled"),
+    # written here: a kitchen table and a sponge
+    ("The kitchen has a table and a sink. If the table is sticky, wipe it with the sponge, rinsing the sponge at "
+     "the sink first if it is dirty.", ("kitchen",), "sponge_dirty"),
+])
+def test_a_pronoun_after_a_participle_clause_is_its_object(text: str, rooms: tuple[str, ...], asked: str) -> None:
+    """"..., filling the mister at the sink first if it is empty": a participle clause after a comma
+    speaks of its own object, which the pronoun of the condition after it means."""
+    assert asked in _factors(text, rooms)

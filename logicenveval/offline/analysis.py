@@ -20,7 +20,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
 
-from lemminflect import getAllLemmas
+from lemminflect import getAllLemmas, getInflection
 
 from logicenveval.domain.catalog import Catalog, Category, load_catalog
 from logicenveval.offline.clauses import (
@@ -28,7 +28,9 @@ from logicenveval.offline.clauses import (
     ARTICLES,
     AVAILABILITY,
     CLAUSE_WORDS,
+    FINITE_VERBS,
     NEGATIONS,
+    OBJECT_STARTS,
     PLACE_PREPS,
     UNCERTAIN,
     Piece,
@@ -71,7 +73,9 @@ DESCRIPTIVE = frozenset(
      # a predicate adjective of presence ("a book may be present on the floor", a manual's register)
      "present",
      # slang verbs of resting ("my mug might be chilling on the desk")
-     "chill", "chills", "chilling"]
+     "chill", "chills", "chilling",
+     # "land (up)" for "end up" (British, South African: "if a cushion landed up on the floor")
+     "landed", "lands", "landing"]
 )
 #: verbs after a subject that announce where it must go (a goal, not a condition)
 MOTION = frozenset(
@@ -100,7 +104,7 @@ HOMES |= frozenset(singular(w) for w in HOMES)
 DESCRIPTIVE |= frozenset(singular(w) for w in HOMES)
 #: participles that turn a noun phrase into a description of the current situation
 SITUATION_PARTICIPLES = frozenset({"left", "lying", "lie", "lies", "sitting", "found", "dropped", "fallen", "fell",
-                                   "slipped", "rolled",
+                                   "slipped", "rolled", "landed",
                                    "scattered", "forgotten", "standing", "ended", "rolling", "falling",
                                    "ending"}) | HOMES
 #: determiners of an object already known to be there ("the", "my"): see `Fact.definite`
@@ -287,6 +291,26 @@ def _direct_object(words: list[str], found: list[Mention], first: Mention | None
     return second
 
 
+def _later_object(words: list[str], found: list[Mention], commas: frozenset[int]) -> Mention | None:
+    """The object of a participle clause after a comma that ends a clause ("mist them with the
+    mister, filling the mister at the sink first if it is empty"): what the clause spoke of last,
+    so a pronoun after it (in a condition put after it) means that thing, not the clause's first
+    mention. None without such a clause."""
+    for c in sorted(commas, reverse=True):
+        if c >= len(words) or not words[c].endswith("ing") or words[c] not in _verb_forms(words[c]):
+            continue
+        obj = next((m for m in found if m.kind == "role" and c < m.start <= c + 2
+                    and all(w in ARTICLES for w in words[c + 1:m.start])), None)
+        if obj is not None:
+            return obj
+    return None
+
+
+def _verb_forms(word: str) -> set[str]:
+    """The -ing forms of `word`'s verb lemmas (lemminflect): "filling" is a form of "fill"."""
+    return {f for lemma in getAllLemmas(word).get("VERB", ()) for f in getInflection(lemma, "VBG")}
+
+
 def _placed(words: list[str], m: Mention) -> bool:
     """The mention names a place or a goal: a preposition stands before it ("on the table",
     "from the big dresser")."""
@@ -465,6 +489,7 @@ class _Reader:
                 self.recent = [r for r in self.recent if r not in m.roles] + list(m.roles)
         first = next((m for m in found if m.kind in ("role", "floor", "pronoun")), None)
         first = _direct_object(words, found, first)
+        first = _later_object(words, found, self.commas) or first
         if first is not None and first.kind != "pronoun":
             self.topic, self.topic_kind = first.roles, first.kind
         thing = next((m for m in found if m.kind == "role" and not _placed(words, m)), None)
@@ -1206,6 +1231,28 @@ def _instructs(reader: _Reader, text: str) -> bool:
         m.kind == "role" and not _placed(words, m) for m in reader.lex.find_mentions(toks))
 
 
+#: an instruction's opening verb and the bare noun after it, its article dropped as notes drop
+#: it ("open washing machine; put shirt in; close door")
+_TELEGRAPHIC = re.compile(r"^(\W*)([A-Za-z]+)(\s+)(?=[A-Za-z])")
+
+
+def _telegraphic(m: re.Match[str]) -> str:
+    """The instruction with "the" before the bare noun after its opening verb when that verb is
+    also a state word ("open washing machine", "empty bin") and the clause has no other verb: the
+    state is what the instruction brings about, not the thing's state now, as with "open the
+    washing machine". A state word before an article, a pronoun or a particle, that is no verb,
+    or in a clause with a finite verb of its own ("clean towels go on the rack"), is left alone."""
+    verb = m.group(2).lower()
+    rest = m.string[m.end():].split(maxsplit=1)
+    nxt = rest[0].lower().strip(",.;:") if rest else ""
+    if set(re.findall(r"[a-z]+", expand(m.string).lower())) & (CLAUSE_WORDS | FINITE_VERBS):
+        return m.group(0)  # "clean towels are on the shelf": a clause with its own verb, its subject's state
+    if verb not in STATE_WORDS or verb not in getAllLemmas(verb).get("VERB", ()) or not nxt or (
+            nxt in OBJECT_STARTS | PRONOUNS | PREP_ON | PREP_IN or nxt in STATE_WORDS):
+        return m.group(0)
+    return f"{m.group(1)}{m.group(2)}{m.group(3)}the "
+
+
 def _goes(reader: _Reader, text: str) -> bool:
     """An instruction that is only a place ("on the shoe rack", "back into the hamper"): where
     the thing spoken of goes."""
@@ -1456,6 +1503,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 said = _DASH.split(said)[0]  # "if one is still to be had - it is kept in the vanity"
             if role == "condition" and ")" in said and "(" not in said.split(")")[0]:
                 said = said.split(")")[0]  # "(open the wardrobe if the door's shut) and shut it": the aside ends
+            if role in ("consequence", "else", "statement"):
+                said = _TELEGRAPHIC.sub(_telegraphic, said)  # "open washing machine": "open the washing machine"
             if role == "consequence" and _goes(reader, said):
                 said = f"it goes {said}"  # "dry: on the shoe rack", "clean - onto the armchair"
             elif (role == "consequence" or role == "statement" and clauses and clauses[-1].role == "condition"
