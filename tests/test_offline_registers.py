@@ -1049,3 +1049,23 @@ def test_a_pronoun_after_a_participle_clause_is_its_object(text: str, rooms: tup
     """"..., filling the mister at the sink first if it is empty": a participle clause after a comma
     speaks of its own object, which the pronoun of the condition after it means."""
     assert asked in _factors(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms", "placed"), [
+    # dev5 (old-fashioned formal English)
+    ("The balcony has a drying rack. Whilst you are out upon the balcony, be good enough to examine the towel "
+     "on the drying rack: once it is dry, bring it in.", ("balcony",), "on(towel, drying_rack)"),
+    # written here: a hallway, "inspect" after a time clause
+    ("The hallway has a bench and a shoe rack. While you are in the hallway, inspect the umbrella on the bench: "
+     "if it is wet, leave it there.", ("hallway",), "on(umbrella, bench)"),
+    # written here: "be so kind as to"
+    ("The hallway has a bench and a shoe rack. When you come in, be so kind as to look at the backpack on the "
+     "bench: if it is open, close it.", ("hallway",), "on(backpack, bench)"),
+])
+def test_an_instruction_after_a_time_clause_states_where_its_object_is(text: str, rooms: tuple[str, ...],
+                                                                       placed: str) -> None:
+    """"While you are out, examine the towel on the rack": "examine" and "inspect" open an
+    instruction as "check" does (`clauses.IMPERATIVES`), and "be good enough to" / "be so kind as
+    to" before a verb is a formula of politeness (`sentences._POLITE`); the instruction's object
+    rests where it is said to, outside the time clause."""
+    assert placed in described_placements(_brief(text, rooms), load_catalog())

@@ -92,7 +92,7 @@ IMPERATIVES = ACTIONS | frozenset({
     "chuck", "get", "look", "mop", "scrub", "rinse", "wash", "dry", "hang", "make", "go", "find",
     "pick", "lock", "tidy", "clear", "collect", "gather", "do", "keep", "see", "water", "mist", "spray",
     "feed", "lay", "replace", "swap", "dump", "stash", "pull", "remove", "straighten", "fix", "don't",
-    "let", "try", "give", "pour", "empty", "toss", "please"})
+    "let", "try", "give", "pour", "empty", "toss", "please", "examine", "inspect"})
 #: words that make a clause (or the rest of a list) doubtful: nothing after them is placed
 DOUBT = frozenset({"may", "might", "could", "maybe", "perhaps", "possibly", "probably", "likely",
                    "sometimes", "whether", "any", "think", "guess", "somewhere"})

@@ -211,6 +211,11 @@ VARIANTS = {"whilst": "while", "amongst": "among", "amidst": "amid", "unto": "to
 _VARIANT = re.compile(rf"\b(?:{'|'.join(VARIANTS)})\b", re.I)
 
 
+#: a formula of politeness before an instruction's verb ("be good enough to examine the towel",
+#: "be so kind as to shut it"): it asks the listener to act, as the bare verb does, and is dropped
+_POLITE = re.compile(r"\bbe (?:so )?(?:good|kind)(?: enough to| as to)\s+", re.I)
+
+
 def _match_case(said: str, word: str) -> str:
     """`word` with the first letter's case of `said` (a sentence's opening word stays capitalised)."""
     return word.capitalize() if said[:1].isupper() else word
@@ -218,7 +223,7 @@ def _match_case(said: str, word: str) -> str:
 
 def unquote(text: str) -> str:
     """The text with British and older spellings of function words in their common form
-    (`VARIANTS`), without an email's quoting marks: a reply above a quoted message reads as one
+    (`VARIANTS`) and without a formula of politeness before a verb (`_POLITE`), without an email's quoting marks: a reply above a quoted message reads as one
     text ("> On Monday, Jo wrote:" is no sentence; "> Could you tidy ..." is "Could you tidy ...");
     without the labels of lettered or numbered items; a place the speaker corrects dropped for the
     one meant ("in the wardrobe, no wait, in the hamper"); a bare state as a subject read as the
@@ -230,7 +235,7 @@ def unquote(text: str) -> str:
     ("if found on" -> "if it is found on"); a table of items and places as its sentences
     (`detable`); a heading answered by a verb with no subject of its own with the heading as that
     subject (`_SUBJECTLESS`)."""
-    text = _VARIANT.sub(lambda m: _match_case(m.group(0), VARIANTS[m.group(0).lower()]), text)
+    text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), VARIANTS[m.group(0).lower()]), text))
     plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", text))))
     plain = _ACTED_STATE.sub(_acted_state, _ELIDED_SUBJECT.sub(r"\1 it is ", plain))
     plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)
