@@ -20,7 +20,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
 
-from lemminflect import getAllLemmas
+from lemminflect import getAllLemmas, getInflection
 
 from logicenveval.domain.catalog import Catalog, Category, load_catalog
 from logicenveval.offline.clauses import (
@@ -28,13 +28,16 @@ from logicenveval.offline.clauses import (
     ARTICLES,
     AVAILABILITY,
     CLAUSE_WORDS,
+    FINITE_VERBS,
     NEGATIONS,
+    OBJECT_STARTS,
     PLACE_PREPS,
     UNCERTAIN,
     Piece,
     imperative,
     points_back,
     split_clauses,
+    uncertain_words,
 )
 from logicenveval.offline.lexicon import (
     COLOR_WORDS,
@@ -70,7 +73,9 @@ DESCRIPTIVE = frozenset(
      # a predicate adjective of presence ("a book may be present on the floor", a manual's register)
      "present",
      # slang verbs of resting ("my mug might be chilling on the desk")
-     "chill", "chills", "chilling"]
+     "chill", "chills", "chilling",
+     # "land (up)" for "end up" (British, South African: "if a cushion landed up on the floor")
+     "landed", "lands", "landing"]
 )
 #: verbs after a subject that announce where it must go (a goal, not a condition)
 MOTION = frozenset(
@@ -101,7 +106,7 @@ HOMES |= frozenset(singular(w) for w in HOMES)
 DESCRIPTIVE |= frozenset(singular(w) for w in HOMES)
 #: participles that turn a noun phrase into a description of the current situation
 SITUATION_PARTICIPLES = frozenset({"left", "lying", "lie", "lies", "sitting", "found", "dropped", "fallen", "fell",
-                                   "slipped", "rolled",
+                                   "slipped", "rolled", "landed",
                                    "scattered", "forgotten", "standing", "ended", "rolling", "falling",
                                    "ending"}) | HOMES
 #: determiners of an object already known to be there ("the", "my"): see `Fact.definite`
@@ -266,6 +271,49 @@ def _participle(words: list[str], k: int) -> bool:
     if k == 0 or words[k - 1] not in ("been", "has", "have", "had") or not words[k].endswith(("ed", "en", "wn", "ung")):
         return False
     return any(lemma != words[k] for lemma in getAllLemmas(words[k]).get("VERB", ()))
+
+
+#: verbs of giving that take two objects, the receiver first ("bring the plant the can", "hand
+#: the guest a towel"): the second object is the thing moved
+GIVING = frozenset({"bring", "give", "hand", "pass", "fetch", "take", "send", "offer"})
+
+
+def _direct_object(words: list[str], found: list[Mention], first: Mention | None) -> Mention | None:
+    """The thing a clause speaks of when its first mention is the receiver of a verb of giving
+    with two objects ("the helper brings the plant the watering can, filled"): the second object,
+    right after the first (its determiner between), is what is carried and what a pronoun after
+    it means ("filling it at the sink"); otherwise the first mention itself."""
+    if first is None or first.kind != "role" or first.start < 1:
+        return first
+    k = first.start - 1 if words[first.start - 1] in ARTICLES else first.start
+    verb = words[k - 1] if k >= 1 else ""
+    if not GIVING & set(getAllLemmas(verb).get("VERB", ())):
+        return first
+    second = next((m for m in found if m.kind == "role" and m.start > first.end), None)
+    if second is None or second.start - first.end > 1 or words[first.end:second.start] not in ([], ["the"], ["a"],
+                                                                                               ["an"], ["your"], ["my"]):
+        return first
+    return second
+
+
+def _later_object(words: list[str], found: list[Mention], commas: frozenset[int]) -> Mention | None:
+    """The object of a participle clause after a comma that ends a clause ("mist them with the
+    mister, filling the mister at the sink first if it is empty"): what the clause spoke of last,
+    so a pronoun after it (in a condition put after it) means that thing, not the clause's first
+    mention. None without such a clause."""
+    for c in sorted(commas, reverse=True):
+        if c >= len(words) or not words[c].endswith("ing") or words[c] not in _verb_forms(words[c]):
+            continue
+        obj = next((m for m in found if m.kind == "role" and c < m.start <= c + 2
+                    and all(w in ARTICLES for w in words[c + 1:m.start])), None)
+        if obj is not None:
+            return obj
+    return None
+
+
+def _verb_forms(word: str) -> set[str]:
+    """The -ing forms of `word`'s verb lemmas (lemminflect): "filling" is a form of "fill"."""
+    return {f for lemma in getAllLemmas(word).get("VERB", ()) for f in getInflection(lemma, "VBG")}
 
 
 def _placed(words: list[str], m: Mention) -> bool:
@@ -447,6 +495,8 @@ class _Reader:
             if m.kind in ("role", "pronoun"):
                 self.recent = [r for r in self.recent if r not in m.roles] + list(m.roles)
         first = next((m for m in found if m.kind in ("role", "floor", "pronoun")), None)
+        first = _direct_object(words, found, first)
+        first = _later_object(words, found, self.commas) or first
         if first is not None and first.kind != "pronoun":
             self.topic, self.topic_kind = first.roles, first.kind
         thing = next((m for m in found if m.kind == "role" and not _placed(words, m)), None)
@@ -1192,6 +1242,28 @@ def _instructs(reader: _Reader, text: str) -> bool:
         m.kind == "role" and not _placed(words, m) for m in reader.lex.find_mentions(toks))
 
 
+#: an instruction's opening verb and the bare noun after it, its article dropped as notes drop
+#: it ("open washing machine; put shirt in; close door")
+_TELEGRAPHIC = re.compile(r"^(\W*)([A-Za-z]+)(\s+)(?=[A-Za-z])")
+
+
+def _telegraphic(m: re.Match[str]) -> str:
+    """The instruction with "the" before the bare noun after its opening verb when that verb is
+    also a state word ("open washing machine", "empty bin") and the clause has no other verb: the
+    state is what the instruction brings about, not the thing's state now, as with "open the
+    washing machine". A state word before an article, a pronoun or a particle, that is no verb,
+    or in a clause with a finite verb of its own ("clean towels go on the rack"), is left alone."""
+    verb = m.group(2).lower()
+    rest = m.string[m.end():].split(maxsplit=1)
+    nxt = rest[0].lower().strip(",.;:") if rest else ""
+    if set(re.findall(r"[a-z]+", expand(m.string).lower())) & (CLAUSE_WORDS | FINITE_VERBS):
+        return m.group(0)  # "clean towels are on the shelf": a clause with its own verb, its subject's state
+    if verb not in STATE_WORDS or verb not in getAllLemmas(verb).get("VERB", ()) or not nxt or (
+            nxt in OBJECT_STARTS | PRONOUNS | PREP_ON | PREP_IN or nxt in STATE_WORDS):
+        return m.group(0)
+    return f"{m.group(1)}{m.group(2)}{m.group(3)}the "
+
+
 def _goes(reader: _Reader, text: str) -> bool:
     """An instruction that is only a place ("on the shoe rack", "back into the hamper"): where
     the thing spoken of goes."""
@@ -1517,6 +1589,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 said = _DASH.split(said)[0]  # "if one is still to be had - it is kept in the vanity"
             if role == "condition" and ")" in said and "(" not in said.split(")")[0]:
                 said = said.split(")")[0]  # "(open the wardrobe if the door's shut) and shut it": the aside ends
+            if role in ("consequence", "else", "statement"):
+                said = _TELEGRAPHIC.sub(_telegraphic, said)  # "open washing machine": "open the washing machine"
             if role == "consequence" and _goes(reader, said):
                 said = f"it goes {said}"  # "dry: on the shoe rack", "clean - onto the armchair"
             elif (role == "consequence" or role == "statement" and clauses and clauses[-1].role == "condition"
@@ -1610,7 +1684,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             context[-1] = (slot0, not neg0, key0)
         # "put it in the fridge - the fridge door may already be open": an uncertain remark
         conditional = cl.role in ("condition", "uncertain") or (
-            cl.role == "consequence" and bool(set(re.findall(r"[a-z]+", cl.text.lower())) & UNCERTAIN))
+            cl.role == "consequence" and bool(uncertain_words(re.findall(r"[a-z]+", cl.text.lower()))))
         added: list[tuple[tuple[str, str, str], bool, str]] = []
         if cl.role == "condition":
             # "when it is dirty, ...; when it is clean and wet, ...": a condition restating an

@@ -69,7 +69,8 @@ ELSE_CUES = ("or else", "otherwise", "else", "failing that", "if not", "if there
 ALTERNATIVES = ELSE_CUES[:4]
 #: words after "if" that make it a condition of availability ("if there are any")
 AVAILABILITY = frozenset({"available", "any", "present", "possible", "exist", "exists", "there"})
-#: how a sentence that sets the scene opens ("there is ...", "you are in ...")
+#: how a sentence that sets the scene opens ("there is ...", "you are in ..."); a doubt before it
+#: ("maybe there are some wipes ...") makes the piece uncertain instead (`_split`)
 SCENE_START = re.compile(r"^\W*([a-z' ,]{0,50}?\bthere(?: is| are|['\u2019]?s|['\u2019]re)\b(?! (no|not|maybe|possibly))"
                          r"|you are\b|we are\b|you['\u2019]re\b|we['\u2019]re\b)", re.I)
 
@@ -91,12 +92,13 @@ IMPERATIVES = ACTIONS | frozenset({
     "chuck", "get", "look", "mop", "scrub", "rinse", "wash", "dry", "hang", "make", "go", "find",
     "pick", "lock", "tidy", "clear", "collect", "gather", "do", "keep", "see", "water", "mist", "spray",
     "feed", "lay", "replace", "swap", "dump", "stash", "pull", "remove", "straighten", "fix", "don't",
-    "let", "try", "give", "pour", "empty", "toss", "please"})
+    "let", "try", "give", "pour", "empty", "toss", "please", "examine", "inspect"})
 #: words that make a clause (or the rest of a list) doubtful: nothing after them is placed
 DOUBT = frozenset({"may", "might", "could", "maybe", "perhaps", "possibly", "probably", "likely",
                    "sometimes", "whether", "any", "think", "guess", "somewhere"})
-#: how a polite request opens ("Could you sort out the coat ...?"): a question that is an instruction
-REQUESTS = frozenset({"could", "can", "would", "will"})
+#: how a polite request opens ("Could you sort out the coat ...?", "might you wipe it ..."): a
+#: question that is an instruction; the modal before "you" is no doubt about the scene
+REQUESTS = frozenset({"could", "can", "would", "will", "might"})
 #: punctuation tokens; the hard ones always end a clause (a comma only before a new clause)
 PUNCT = frozenset({",", ";", ":", "(", ")", "-", "?"})
 _HARD = frozenset({";", "(", ")", "-", "?", ":"})
@@ -301,14 +303,15 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
                 # alternative of what came before
                 out.append((p[alternative.end():].strip(" ,"), alternative.group(1), "else"))
                 continue
-            if SCENE_START.match(p) or re.search(r"\b(has|have|contains)\b(?!\s+(?:been|\w+(?:ed|en))\b)",
+            scene = SCENE_START.match(p)
+            if scene and not uncertain_words(re.findall(r"[a-z]+", scene.group(0).lower())) or re.search(r"\b(has|have|contains)\b(?!\s+(?:been|\w+(?:ed|en))\b)",
                                                  p.lower()) and not (
                     re.search(r"\bif\b", p.lower()) or set(re.findall(r"[a-z]+", p.lower())) & UNCERTAIN):
                 out.append((p, None, "scene"))
             else:
                 said = re.findall(r"[a-z]+", p.lower())
                 # "The ball often ends up on the floor": a habitual statement says what may be so
-                out.append((p, None, "uncertain" if set(said) & UNCERTAIN or habitual(said) or either_state(said)
+                out.append((p, None, "uncertain" if uncertain_words(said) or habitual(said) or either_state(said)
                             else "statement"))
         return out
     start, cue = best
@@ -578,6 +581,18 @@ def _finite_after(words: list[str], start: int, hi: int, verbs: frozenset[str]) 
     return False
 
 
+def uncertain_words(words: list[str]) -> set[str]:
+    """The words of `UNCERTAIN` that make a clause doubtful: a modal that opens a polite request
+    ("might you scrub it", "could you wipe it") asks the listener to act, it doubts nothing of
+    the scene ("the bowl might be dirty" still does)."""
+    return {w for k, w in enumerate(words) if w in UNCERTAIN and not request_modal(words, k)}
+
+
+def request_modal(words: list[str], k: int) -> bool:
+    """Whether `words[k]` is the modal of a polite request: one of `REQUESTS` right before "you"."""
+    return words[k] in REQUESTS and words[k + 1:k + 2] == ["you"]
+
+
 def doubts(words: list[str]) -> bool:
     """Whether the words carry a doubt ("may", "possibly", "probably"); "could you" opens a request."""
-    return any(w in DOUBT and not (w in REQUESTS and words[k + 1:k + 2] == ["you"]) for k, w in enumerate(words))
+    return any(w in DOUBT and not request_modal(words, k) for k, w in enumerate(words))

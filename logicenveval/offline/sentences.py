@@ -298,8 +298,26 @@ def _emoji(m: re.Match[str]) -> str:
     return ". " if before[-1:].isalnum() and after[:1].isalpha() else " " * bool(before[-1:].isalnum() and after[:1].isalnum())
 
 
+#: British and older spellings of function words, read as the common form every word table
+#: holds ("Whilst the dryer is running" is "While the dryer is running")
+VARIANTS = {"whilst": "while", "amongst": "among", "amidst": "amid", "unto": "to"}
+_VARIANT = re.compile(rf"\b(?:{'|'.join(VARIANTS)})\b", re.I)
+
+
+#: a formula of politeness before an instruction's verb ("be good enough to examine the towel",
+#: "be so kind as to shut it"): it asks the listener to act, as the bare verb does, and is dropped
+_POLITE = re.compile(r"\bbe (?:so )?(?:good|kind)(?: enough to| as to)\s+", re.I)
+
+
+def _match_case(said: str, word: str) -> str:
+    """`word` with the first letter's case of `said` (a sentence's opening word stays capitalised)."""
+    return word.capitalize() if said[:1].isupper() else word
+
+
 def unquote(text: str) -> str:
-    """The text with a typographic arrow as "->" (`_ARROWS`), an emoji between words as a
+    """The text with British and older spellings of function words in their common form
+    (`VARIANTS`) and without a formula of politeness before a verb (`_POLITE`), with a typographic
+    arrow as "->" (`_ARROWS`), an emoji between words as a
     sentence's end (`_EMOJI`), a comma before the next "state ->" case as ";"
     (`_CASE_AFTER_COMMA`), "the X on the Y, if there is one" as "if there is an X on the Y"
     (`_IF_ANY`), without an email's quoting marks: a reply above a quoted message reads as one
@@ -314,6 +332,7 @@ def unquote(text: str) -> str:
     ("if found on" -> "if it is found on"); a table of items and places as its sentences
     (`detable`); a heading answered by a verb with no subject of its own with the heading as that
     subject (`_SUBJECTLESS`)."""
+    text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), VARIANTS[m.group(0).lower()]), text))
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
     plain = _IF_ANY.sub(_if_any, plain)
     plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", plain))))
