@@ -824,3 +824,10 @@ def test_a_state_participle_before_a_direction_is_where_it_went() -> None:
     found = asked_in_full_catalog("The vase sits on the shelf. If it has smashed onto the floor, sweep it up.",
                                   "vase", "wall_shelf")
     assert not any("broken" in c for c in found)
+    # without the perfect a state before a comma and a direction stays a state (built-in
+    # multi_room_laundry_collect: "when the machine is already running, into the hamper")
+    found = asked_in_full_catalog("If it's dirty, it goes into the washing machine or, when the machine is "
+                                  "already running, into the hamper - and should the hamper be full, into "
+                                  "the laundry basket instead.", "shirt", "washing_machine", "hamper",
+                                  "laundry_basket")
+    assert {"state(washing_machine, toggled_on)", "state(hamper, filled)"} <= found

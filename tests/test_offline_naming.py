@@ -49,6 +49,19 @@ def test_the_drawers_of_a_piece_of_furniture_are_named_for_what_they_hold(
     assert _of(text, furniture) == [furniture]
 
 
+@pytest.mark.parametrize("text", [
+    # built-in bedroom_nightstand_reset and study_desk_cleanup, and one written here
+    "Any other kind of book goes into the nightstand drawer - open it unless it's already open.",
+    "If it's a bill, file it in the filing cabinet - the drawer may already be pulled out, otherwise "
+    "open it - and shut the drawer.",
+    "Put the socks in the dresser and close the drawer.",
+])
+def test_the_drawer_of_an_openable_piece_of_furniture_named_with_it_is_its_part(text: str) -> None:
+    assert _of(text, "drawer") == []
+    # a count, "a drawer" or a drawer said with no furniture are drawers of their own
+    assert _of(f"{text} There is a drawer in the dresser too.", "drawer") == ["drawer"]
+
+
 def test_colours_in_an_enumeration_are_attributes() -> None:
     named = _named("Two toy boxes: red for dolls, white for other toys.")
     assert named["red_toy_box"] == ("toy_box", {"color": "red"})
