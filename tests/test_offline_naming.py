@@ -55,6 +55,8 @@ def test_the_drawers_of_a_piece_of_furniture_are_named_for_what_they_hold(
     "If it's a bill, file it in the filing cabinet - the drawer may already be pulled out, otherwise "
     "open it - and shut the drawer.",
     "Put the socks in the dresser and close the drawer.",
+    # dev3 study_desk_cleanup_d3: the furniture in the sentence before
+    "If it's a bill, stick it in the filing cabinet. The drawer might already be pulled out, if not, open it.",
 ])
 def test_the_drawer_of_an_openable_piece_of_furniture_named_with_it_is_its_part(text: str) -> None:
     assert _of(text, "drawer") == []

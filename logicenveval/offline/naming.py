@@ -392,8 +392,9 @@ class _Reader:
     def part_of_its_furniture(self, i: int, n: int, category: str, prev: str) -> bool:
         """Whether the kind at words `i`..`i+n` is a part of a piece of furniture (a kind the
         catalog places only inside one: a drawer) said in the singular, without a count or "a",
-        of an openable piece of furniture it fits in that the same sentence names ("file it in
-        the filing cabinet - the drawer may be pulled out", "goes into the nightstand drawer"):
+        of an openable piece of furniture it fits in that its sentence or the one before names ("file
+        it in the filing cabinet - the drawer may be pulled out", "stick it in the filing cabinet.
+        the drawer might already be pulled out", "goes into the nightstand drawer"):
         that furniture's own drawer, whose opening is the furniture's (the catalog's nightstand
         is openable for its drawer), no object of its own. "Two drawers", "a drawer" or a drawer
         no furniture is named with are drawers of their own."""
@@ -402,7 +403,9 @@ class _Reader:
         if cat.placement != ["inside"] or prev in _COUNTS or prev in _INDEFINITE or \
                 self.text.raw[last] != self.text.words[last]:
             return False
-        for j in range(self.text.sentence_start(i), last):
+        start = self.text.sentence_start(i)
+        start = self.text.sentence_start(start - 1) if start > 0 else start  # or the one before
+        for j in range(start, last):
             other = self.match(j)[1]
             holder = self.catalog.categories.get(other) if other not in (None, category) else None
             if holder is not None and holder.container and holder.openable and not holder.pickable \
