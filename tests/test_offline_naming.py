@@ -35,6 +35,35 @@ def test_an_enumeration_after_a_count_names_one_object_per_item(text: str, categ
     assert _of(text, category) == names
 
 
+@pytest.mark.parametrize(("text", "furniture", "drawers"), [
+    ("The cabinet has two drawers: one for forks, one for spoons.", "cabinet",  # issue 47
+     ["fork_drawer", "spoon_drawer"]),
+    ("The dresser in the bedroom has three drawers: one for socks, one for shirts, one for scarves.",
+     "dresser", ["sock_drawer", "shirt_drawer", "scarf_drawer"]),
+    ("The bathroom vanity has two drawers, one for the hairbrush and one for the toothpaste.",
+     "bathroom_vanity", ["hairbrush_drawer", "toothpaste_drawer"]),
+])
+def test_the_drawers_of_a_piece_of_furniture_are_named_for_what_they_hold(
+        text: str, furniture: str, drawers: list[str]) -> None:
+    assert _of(text, "drawer") == drawers
+    assert _of(text, furniture) == [furniture]
+
+
+@pytest.mark.parametrize("text", [
+    # built-in bedroom_nightstand_reset and study_desk_cleanup, and one written here
+    "Any other kind of book goes into the nightstand drawer - open it unless it's already open.",
+    "If it's a bill, file it in the filing cabinet - the drawer may already be pulled out, otherwise "
+    "open it - and shut the drawer.",
+    "Put the socks in the dresser and close the drawer.",
+    # dev3 study_desk_cleanup_d3: the furniture in the sentence before
+    "If it's a bill, stick it in the filing cabinet. The drawer might already be pulled out, if not, open it.",
+])
+def test_the_drawer_of_an_openable_piece_of_furniture_named_with_it_is_its_part(text: str) -> None:
+    assert _of(text, "drawer") == []
+    # a count, "a drawer" or a drawer said with no furniture are drawers of their own
+    assert _of(f"{text} There is a drawer in the dresser too.", "drawer") == ["drawer"]
+
+
 def test_colours_in_an_enumeration_are_attributes() -> None:
     named = _named("Two toy boxes: red for dolls, white for other toys.")
     assert named["red_toy_box"] == ("toy_box", {"color": "red"})
@@ -81,11 +110,18 @@ def test_a_spare_is_told_from_the_one_in_use(text: str, category: str, names: li
     assert _of(text, category) == names
 
 
-def test_a_fuse_named_twice_is_one_fuse_unless_it_is_the_spare() -> None:
-    # the catalog has no fuse: nothing is invented for it (the spare/in-use pair is tested on
-    # bulbs, towels and mugs, kinds the catalog has)
-    named = _named("There's a spare fuse in the drawer; replace the fuse that is blown with it.", ())
-    assert not [n for n in named if "fuse" in n]  # no fuse as another kind either
+@pytest.mark.parametrize("text", [
+    "Replace the fuse if it is blown; a spare fuse is in the drawer.",  # issue 47
+    "There's a spare fuse in the drawer; replace the fuse that is blown with it.",
+    "Is the fuse blown? Then replace it with the spare fuse from the kitchen drawer.",
+])
+def test_a_fuse_named_twice_is_one_fuse_unless_it_is_the_spare(text: str) -> None:
+    # the catalog's `fuse` (issue 47): the one in use and the spare, each named once, and the drawer
+    assert _of(text, "fuse") == ["fuse", "spare_fuse"]
+    assert _of(text, "drawer") == ["drawer"]
+    # in a garage, beside a shelf: a spare said as "a new fuse" is the spare too
+    assert _of("The fuse box in the garage: if a fuse has blown, put a new fuse in from the shelf.",
+               "fuse", ("garage",)) == ["fuse", "spare_fuse"]
     assert _of("The light bulb in the lamp is blown. Swap the bulb.", "light_bulb") == ["light_bulb"]
     # issue 47's form with kinds the catalog has: a spare and the one in use are two objects ...
     assert _of("There is a spare bulb in the drawer; a bulb that is blown gets replaced with it.",

@@ -343,3 +343,65 @@ def test_an_added_wall_object_with_no_free_wall_is_dropped_a_task_one_raises(sol
         assert "curtain" not in build(False)
         with pytest.raises(EnvSpecError, match="wall-mounted task objects"):
             build(True)
+
+
+def _drawer_room(furniture: str, drawer_placement: str, room: str = "Kitchen") -> SceneSpec:
+    """A room with a piece of furniture, a drawer placed as given and a fork in the drawer."""
+    rooms = [RoomRequest(id="r", type=room, area=12)]
+    objs = [ObjectRequest(id="unit", category=furniture, room="r", role="unit"),
+            ObjectRequest(id="drawer", category="drawer", room="r", role="drawer", placement=drawer_placement),
+            ObjectRequest(id="fork", category="fork", room="r", role="fork", placement="inside:drawer")]
+    return SceneSpec(task_id="t", env_id="e", rooms=rooms, objects=objs)
+
+
+@pytest.mark.parametrize("solver", SOLVERS)
+@pytest.mark.parametrize("furniture", ["cabinet", "dresser", "nightstand", "filing_cabinet"])
+def test_a_drawer_lies_inside_its_furniture_with_things_in_it(solver: Solver, furniture: str) -> None:
+    """AI2-THOR's Drawer is part of its furniture: placed inside a cabinet, dresser, nightstand or
+    filing cabinet it passes the physics checker, and what lies in it is enclosed by both."""
+    env = construct_environment(_drawer_room(furniture, "inside:unit"), catalog=CAT,
+                                rng=np.random.default_rng(1), solver=solver).env
+    assert geometric_failures(env, CAT) == []
+    assert env.obj("drawer").container == "unit" and env.obj("drawer").support is None
+    assert env.obj("fork").container == "drawer"
+    assert env.obj("drawer").states.get("open") is False
+
+
+@pytest.mark.parametrize(("furniture", "placement", "reason"), [
+    ("cabinet", "floor", "part of a piece of furniture"),  # a drawer standing on its own
+    ("dining_table", "on:unit", "part of a piece of furniture"),  # a drawer on a table
+    ("desk", "inside:unit", "not a container"),  # the catalog's desk is a surface, not a box
+    ("sofa", "inside:unit", "not a container"),
+])
+def test_a_drawer_outside_any_furniture_is_refused(furniture: str, placement: str, reason: str) -> None:
+    with pytest.raises(EnvSpecError, match=reason):
+        construct_environment(_drawer_room(furniture, placement, room="LivingRoom"), catalog=CAT,
+                              rng=np.random.default_rng(0))
+
+
+def test_the_physics_checker_refuses_a_drawer_that_is_not_in_its_furniture() -> None:
+    env = construct_environment(_drawer_room("dresser", "inside:unit", room="Bedroom"), catalog=CAT,
+                                rng=np.random.default_rng(2)).env
+    assert geometric_failures(env, CAT) == []
+    drawer = env.obj("drawer")
+    assert drawer.position is not None and drawer.size is not None
+    # taken out of the dresser onto the floor: a part of furniture standing on its own
+    loose = env.model_copy(update={"objects": [
+        o.model_copy(update={"container": None, "support": "floor",
+                             "position": (o.position[0] + 3.0, o.size[1] / 2, o.position[2])})
+        if o.id == "drawer" and o.position is not None and o.size is not None else o
+        for o in env.objects]})
+    codes = {(f.code, tuple(f.objects)) for f in check_env(loose, CAT).entity.failures}
+    assert ("not_supported", ("drawer",)) in codes
+    # a drawer pulled half out of the dresser's box sticks out of its furniture
+    pulled = env.model_copy(update={"objects": [
+        o.model_copy(update={"position": (o.position[0], o.position[1], o.position[2] + drawer.size[2] / 2)})
+        if o.id == "drawer" and o.position is not None else o for o in env.objects]})
+    assert ("not_contained", ("drawer", "unit")) in {(f.code, tuple(f.objects))
+                                                     for f in check_env(pulled, CAT).entity.failures}
+    # a 2 m drawer is no drawer
+    huge = env.model_copy(update={"objects": [
+        o.model_copy(update={"size": (2.0, drawer.size[1], drawer.size[2])}) if o.id == "drawer" else o
+        for o in env.objects]})
+    report = check_env(huge, CAT)
+    assert "size_out_of_range" in {f.code for f in (*report.entity.failures, *report.extended.failures)}

@@ -104,6 +104,11 @@ HOMES = frozenset({"kept", "lives", "live",
 #: the words as `tokens` gives them: the noun lemma of a verb form ("lives" -> "life")
 HOMES |= frozenset(singular(w) for w in HOMES)
 DESCRIPTIVE |= frozenset(singular(w) for w in HOMES)
+#: prepositions of direction: after one, a participle of the perfect that is also a state word
+#: ("has blown onto", "have smashed into") says where the thing went, not its state ("the fuse
+#: has blown", "a smashed cup"); "when it is running, into the hamper" keeps its state
+TOWARDS = frozenset({"onto", "into", "off", "away", "down", "across"})
+PERFECT = frozenset({"have", "has", "had", "'ve", "ve"})
 #: participles that turn a noun phrase into a description of the current situation
 SITUATION_PARTICIPLES = frozenset({"left", "lying", "lie", "lies", "sitting", "found", "dropped", "fallen", "fell",
                                    "slipped", "rolled", "landed",
@@ -925,6 +930,8 @@ class _Reader:
                 break  # `on the table` is a place, not `switched on`
             if w == "used":
                 break  # "the cloth is used": the passive of "use"; only "a used cloth" is dirty
+            if k + 1 < len(words) and words[k + 1] in TOWARDS and set(skipped) & PERFECT:
+                break  # "has blown onto the floor", "have smashed into it": a motion, not a state
             if k in self.starts:
                 break  # "clean the mark, wet wipes ...": the first word of another thing's name
             found.append((w, local_neg, relative))

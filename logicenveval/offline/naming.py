@@ -43,6 +43,7 @@ from logicenveval.offline.sentences import (
     expand,
     unquote,
 )
+from logicenveval.scene.compat import can_hold
 
 
 @handler("name_objects")
@@ -62,6 +63,8 @@ _NOUN_LEADS = frozenset({"with", "and", "or", "plus"})
 #: prepositions: an item holding one is a clause, not a noun phrase ("are in the kitchen")
 _PREPOSITIONS = frozenset({"on", "onto", "in", "into", "inside", "from", "by", "near", "under", "of",
                            "to", "at", "beside", "behind", "with"})
+#: words that make a noun phrase indefinite: a thing of its own, not a part of one named
+_INDEFINITE = frozenset({"a", "an", "another", "some", "any"})
 _COUNTS = {"two": 2, "three": 3, "four": 4, "five": 5, "both": 2, "2": 2, "3": 3, "4": 4, "5": 5}
 #: "a fresh bag": the spare when the kind was already named in use ("the full bag"), else the
 #: one in use ("a fresh diaper is lying on the changing table")
@@ -427,6 +430,30 @@ class _Reader:
         return any(part in {w for text in (c, *self.catalog.categories[c].synonyms) for w in words_of(text)}
                    and not self.catalog.categories[c].pickable for c in self.recent)
 
+    def part_of_its_furniture(self, i: int, n: int, category: str, prev: str) -> bool:
+        """Whether the kind at words `i`..`i+n` is a part of a piece of furniture (a kind the
+        catalog places only inside one: a drawer) said in the singular, without a count or "a",
+        of an openable piece of furniture it fits in that its sentence or the one before names ("file
+        it in the filing cabinet - the drawer may be pulled out", "stick it in the filing cabinet.
+        the drawer might already be pulled out", "goes into the nightstand drawer"):
+        that furniture's own drawer, whose opening is the furniture's (the catalog's nightstand
+        is openable for its drawer), no object of its own. "Two drawers", "a drawer" or a drawer
+        no furniture is named with are drawers of their own."""
+        cat = self.catalog.categories[category]
+        last = i + n - 1
+        if cat.placement != ["inside"] or prev in _COUNTS or prev in _INDEFINITE or \
+                self.text.raw[last] != self.text.words[last]:
+            return False
+        start = self.text.sentence_start(i)
+        start = self.text.sentence_start(start - 1) if start > 0 else start  # or the one before
+        for j in range(start, last):
+            other = self.match(j)[1]
+            holder = self.catalog.categories.get(other) if other not in (None, category) else None
+            if holder is not None and holder.container and holder.openable and not holder.pickable \
+                    and can_hold(cat, holder, "inside"):
+                return True
+        return False
+
     def packaging_of_topic(self, i: int) -> bool:
         """Whether word `i` is "the <form>" (`sentences.FORMS`: roll, bottle, tube ...) said of the
         carried thing named in the heading its clause answers ("Tin foil: in case the roll has
@@ -721,6 +748,9 @@ class _Reader:
             room = next((len(r) for r in self.room_ids if tuple(words[i:i + len(r)]) == r and len(r) > n), 0)
             if room:
                 i += room  # "Laundry room - FAQ": the task's room, no laundry in it
+                continue
+            if self.part_of_its_furniture(i, n, category, prev):
+                i += n  # "file it in the filing cabinet - the drawer may be pulled out": its drawer
                 continue
             if self.predicate_noun(i):
                 i += n  # "The essay collection is on the desk, that's a library book"

@@ -89,6 +89,11 @@ def _support(b: Body, env: EnvSpec, bodies: dict[str, Body], polys: dict[str, Po
             if excess > tol.containment:
                 out.append(_fail("not_contained", f"{o.id} sticks {excess:.3f} m out of its container "
                                  f"{o.container}", [o.id, o.container], measured=excess, tolerance=tol.containment))
+    cat = catalog.get(o.category)
+    if o.container is None and cat is not None and cat.placement == ["inside"]:
+        # a part of a piece of furniture (AI2-THOR's Drawer): it lies in a container or nowhere
+        out.append(_fail("not_supported", f"{o.id} ({o.category}) is not inside a container, but the "
+                         "catalog places it only inside one (a part of its furniture)", [o.id]))
     sup = o.support
     if sup is None:
         if o.container is None:

@@ -69,6 +69,11 @@ def check_relations(objects: Sequence[ObjectLike], relations: Sequence[RelationL
     on: dict[str, list[tuple[str, Any]]] = {}
     inside: dict[str, list[tuple[str, Any]]] = {}
     for o in objects:
+        c_o = cats[o.id]
+        if c_o is not None and c_o.placement == ["inside"] and not o.placement.startswith("inside:"):
+            out.append(Incompatibility("needs_a_container", f"{o.id} ({o.category}) is part of a piece of "
+                                       f"furniture and cannot be placed {o.placement}; put it inside a "
+                                       "container such as a cabinet or dresser", (o.id,)))
         if o.placement.startswith("on:"):
             on.setdefault(o.id, []).append((o.placement[3:], None))
         elif o.placement.startswith("inside:"):

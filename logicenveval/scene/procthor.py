@@ -63,6 +63,9 @@ STAND_IN_TYPES = {
     "food_can": "Cup", "pet_food": "Bowl", "cutting_board": "Plate", "blender": "CoffeeMachine",
     "flower": "Vase", "first_aid_kit": "Box", "mop": "Plunger", "broom": "Plunger",
     "dustpan": "ScrubBrush", "bucket": "GarbageCan", "umbrella_stand": "GarbageCan",
+    # AI2-THOR's Drawer is a part of its furniture, with no asset of its own in ProcTHOR: a Box
+    # (an openable receptacle of a drawer's size) stands in for one exported on its own
+    "drawer": "Box",
 }
 #: AI2-THOR object types that are not household things a task names: the obstacle class an
 #: imported one is kept as (category = its snake-case type, judged for collisions and support
@@ -73,7 +76,6 @@ OBSTACLE_CLASSES: dict[str, tuple[str, str]] = {
     "Doorway": ("opening", "a doorway: imported as a door of type doorway, not an object"),
     "Window": ("opening", "a window: imported as a window, not an object"),
     "Floor": ("structure", "the floor itself (AI2-THOR's scenes list it as an object)"),
-    "Drawer": ("part", "a drawer of a dresser, desk or counter: part of its furniture, inside its box"),
     "SinkBasin": ("part", "the basin of a sink: part of the sink"),
     "BathtubBasin": ("part", "the basin of a bathtub: part of the bathtub"),
     "Faucet": ("fixture", "mounted on a sink or bathtub; never moved"),

@@ -26,6 +26,25 @@ def _box(o: EnvObject) -> tuple[float, float, float, float, float, float]:
     return (x - ex / 2, y - o.size[1] / 2, z - ez / 2, x + ex / 2, y + o.size[1] / 2, z + ez / 2)
 
 
+def _holders(oid: str, objs: dict[str, EnvObject]) -> set[str]:
+    """The containers `oid` lies in, transitively through containers and supports (a fork in a
+    drawer in a cabinet lies in the cabinet too), as the physics checker's `enclosing` reads them."""
+    out: set[str] = set()
+    seen: set[str] = set()
+    todo = [oid]
+    while todo:
+        o = objs.get(todo.pop())
+        if o is None or o.id in seen:
+            continue
+        seen.add(o.id)
+        if o.container is not None:
+            out.add(o.container)
+            todo.append(o.container)
+        if o.support not in (None, "floor", "wall", "ceiling"):
+            todo.append(o.support)
+    return out
+
+
 def _room_rect(env: EnvSpec, rid: str) -> tuple[float, float, float, float]:
     poly = next(r.polygon for r in env.rooms if r.id == rid)
     if poly is None:
@@ -107,8 +126,9 @@ def geometric_failures(env: EnvSpec, catalog: Catalog) -> list[str]:
             for sq in squares:
                 if min(b[3], sq[2]) - max(b[0], sq[0]) > TOL and min(b[5], sq[3]) - max(b[2], sq[1]) > TOL:
                     bad.append(f"{o.id} blocks a door")
+    holders = {o.id: _holders(o.id, objs) for o in env.objects}
     for oa, oc in itertools.combinations(env.objects, 2):
-        if oa.support == oc.id or oc.support == oa.id or oa.container == oc.id or oc.container == oa.id:
+        if oa.support == oc.id or oc.support == oa.id or oc.id in holders[oa.id] or oa.id in holders[oc.id]:
             continue
         ba, bc = boxes[oa.id], boxes[oc.id]
         if all(min(ba[k + 3], bc[k + 3]) - max(ba[k], bc[k]) > TOL for k in range(3)):
