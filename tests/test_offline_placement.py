@@ -146,6 +146,19 @@ def test_an_item_ruled_off_a_crowded_side_table_gets_another() -> None:
     assert placed["magazine"] == "on:side_table_hallway_2"
 
 
+def test_a_drawer_goes_inside_furniture_it_fits_in_or_a_cabinet_added_for_it() -> None:
+    """A drawer is part of a piece of furniture (the catalog places it only inside one): the
+    realiser puts it in an openable piece of the room it fits in, a dresser or a nightstand, or
+    adds a cabinet for it as it adds a side table for a thing with no surface, never on the floor."""
+    with_dresser = _brief("Close the drawer.", ["bedroom"], drawer="drawer", dresser="dresser")
+    placed = {o["id"]: o["placement"] for o in task_objects(with_dresser, [], CATALOG)}
+    assert placed == {"drawer": "inside:dresser", "dresser": "floor"}
+    alone = _brief("Put the scissors in the drawer.", ["kitchen"], drawer="drawer", scissors="scissors")
+    objects = {o["id"]: o for o in task_objects(alone, [], CATALOG)}
+    assert objects["drawer"]["placement"] == "inside:cabinet_kitchen_1"
+    assert objects["cabinet_kitchen_1"]["category"] == "cabinet" and objects["cabinet_kitchen_1"]["role"] is None
+
+
 @pytest.mark.parametrize(("description", "roles", "thing"), [
     ("If the lamp is on, fetch a book from the dresser (that's where the books are kept) and read it.",
      {"book": "book", "dresser": "dresser", "lamp": "table_lamp"}, "book"),

@@ -21,7 +21,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Any
 
-from logicenveval.domain.catalog import Catalog, load_catalog, per_catalog
+from logicenveval.domain.catalog import Catalog, Category, load_catalog, per_catalog
 from logicenveval.llm.base import ChatRequest
 from logicenveval.model.rooms import known_room_type, room_type_of
 from logicenveval.offline.handlers import handler
@@ -432,27 +432,41 @@ class _Reader:
 
     def part_of_its_furniture(self, i: int, n: int, category: str, prev: str) -> bool:
         """Whether the kind at words `i`..`i+n` is a part of a piece of furniture (a kind the
-        catalog places only inside one: a drawer) said in the singular, without a count or "a",
+        catalog places only inside one: a drawer) said without a count or "a",
         of an openable piece of furniture it fits in that its sentence or the one before names ("file
         it in the filing cabinet - the drawer may be pulled out", "stick it in the filing cabinet.
-        the drawer might already be pulled out", "goes into the nightstand drawer"):
+        the drawer might already be pulled out", "goes into the nightstand drawer", "should the
+        dresser drawers be open, close them"):
         that furniture's own drawer, whose opening is the furniture's (the catalog's nightstand
         is openable for its drawer), no object of its own. "Two drawers", "a drawer" or a drawer
         no furniture is named with are drawers of their own."""
         cat = self.catalog.categories[category]
         last = i + n - 1
-        if cat.placement != ["inside"] or prev in _COUNTS or prev in _INDEFINITE or \
-                self.text.raw[last] != self.text.words[last]:
+        if cat.placement != ["inside"] or prev in _COUNTS or prev in _INDEFINITE:
             return False
         start = self.text.sentence_start(i)
         start = self.text.sentence_start(start - 1) if start > 0 else start  # or the one before
-        for j in range(start, last):
-            other = self.match(j)[1]
-            holder = self.catalog.categories.get(other) if other not in (None, category) else None
-            if holder is not None and holder.container and holder.openable and not holder.pickable \
-                    and can_hold(cat, holder, "inside"):
-                return True
-        return False
+        # the kinds named before it, also as a modifier of a name the catalog gives the drawer as
+        # a whole ("the dresser drawers")
+        named = [self.match(j)[1] for j in range(start, i)]
+        named += [h for k in range(start, last) for h in self.heads.get(self.text.words[k], [])]
+        return any(self.holds_as_part(cat, other) for other in named if other not in (None, category))
+
+    def holder_in_name(self, i: int, n: int, category: str) -> str | None:
+        """The piece of furniture a part's own name starts with ("the dresser drawers", a name the
+        catalog gives the drawer as a whole): what the text names is that furniture, whose
+        opening is its drawers' (as "the nightstand drawer" names the nightstand)."""
+        cat = self.catalog.categories[category]
+        if cat.placement != ["inside"] or n < 2:
+            return None
+        return next((h for h in self.heads.get(self.text.words[i], []) if h != category and self.holds_as_part(cat, h)),
+                    None)
+
+    def holds_as_part(self, part: Category, holder_kind: str | None) -> bool:
+        """Whether a kind is an openable piece of furniture `part` (a drawer) fits in."""
+        holder = self.catalog.categories.get(holder_kind) if holder_kind is not None else None
+        return holder is not None and holder.container and holder.openable and not holder.pickable \
+            and can_hold(part, holder, "inside")
 
     def packaging_of_topic(self, i: int) -> bool:
         """Whether word `i` is "the <form>" (`sentences.FORMS`: roll, bottle, tube ...) said of the
@@ -749,7 +763,9 @@ class _Reader:
             if room:
                 i += room  # "Laundry room - FAQ": the task's room, no laundry in it
                 continue
-            if self.part_of_its_furniture(i, n, category, prev):
+            if (holder := self.holder_in_name(i, n, category)) is not None:
+                category = holder  # "the dresser drawers": the dresser
+            elif self.part_of_its_furniture(i, n, category, prev):
                 i += n  # "file it in the filing cabinet - the drawer may be pulled out": its drawer
                 continue
             if self.predicate_noun(i):

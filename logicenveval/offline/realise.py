@@ -17,9 +17,14 @@ from logicenveval.llm.scene_words import furniture
 from logicenveval.model.conditions import And, Cond, Const, Not, Or, Pred, parse
 from logicenveval.model.rooms import room_type_of
 from logicenveval.offline.placement import described_placements
+from logicenveval.scene.compat import can_hold
 
 #: placement of an object that must rest on some surface when its room has none among the roles
 NEEDS_SURFACE = "on:?"
+#: a part of furniture (a drawer: the catalog places it only inside one) whose room has no piece
+#: it fits in: `task_objects` adds a cabinet for it, as it adds a side table for a thing with no
+#: surface
+NEEDS_CONTAINER = "inside:?"
 
 
 @dataclass
@@ -188,6 +193,12 @@ def _places(choice: dict[str, RoleChoice], roles: dict[str, Any], catalog: Catal
             ocat = catalog.get(roles[other]["category"])
             if other == r or ocat is None or not oc.present or oc.room != c.room:
                 continue
+            if typical == ["inside"]:
+                # a drawer is part of a piece of furniture it fits in, openable or not (a dresser,
+                # a nightstand): no surface or loose place will do
+                if cat is not None and ocat.container and not ocat.pickable and can_hold(cat, ocat, "inside"):
+                    holders.append(f"inside:{other}")
+                continue
             if oc.placement and oc.placement.startswith(("on:", "inside:")) or ocat.placement[0] == "surface":
                 # no stacking on objects that themselves rest on others, placed yet or not: a
                 # dish rack or a microwave stands on a counter, it is no counter for the coffee
@@ -204,6 +215,8 @@ def _places(choice: dict[str, RoleChoice], roles: dict[str, Any], catalog: Catal
         options = surfaces or preferred
         if options:
             c.placement = options[0]
+        elif typical == ["inside"]:
+            c.placement = NEEDS_CONTAINER
         else:
             c.placement = "floor" if "floor" not in c.banned_places else NEEDS_SURFACE
 
@@ -211,10 +224,12 @@ def _places(choice: dict[str, RoleChoice], roles: dict[str, Any], catalog: Catal
 def task_objects(task: Mapping[str, Any], facts: list[str], catalog: Catalog) -> list[dict[str, Any]]:
     """Object drafts for the task's roles (id = role name) realising `facts`; a side table is added
     when an item needs a surface its room lacks, and a second one when the first is ruled out for
-    it (`not on(hat, side_table_entryway_1)`: the layout found the first too crowded)."""
+    it (`not on(hat, side_table_entryway_1)`: the layout found the first too crowded), and a cabinet
+    for a drawer its room has no furniture for."""
     roles = task["roles"]
     objects: list[dict[str, Any]] = []
     tables: dict[str, str] = {}  # side table added -> its room
+    cabinets: dict[str, str] = {}  # cabinet added for a part of furniture -> its room
     for role, c in realise(task, facts, catalog).items():
         if not c.present:
             continue
@@ -226,6 +241,10 @@ def task_objects(task: Mapping[str, Any], facts: list[str], catalog: Catalog) ->
                          if f"on:side_table_{room}_{k}" not in c.banned_places)
             tables.setdefault(table, room)
             placement = f"on:{table}"
+        elif placement == NEEDS_CONTAINER:
+            cabinet = f"cabinet_{room}_1"
+            cabinets.setdefault(cabinet, room)
+            placement = f"inside:{cabinet}"
         objects.append({"id": role, "category": roles[role]["category"], "room": room, "role": role,
                         "placement": placement, "attributes": c.attributes, "states": c.states,
                         "description": f"the {role.replace('_', ' ')}"})
@@ -233,4 +252,8 @@ def task_objects(task: Mapping[str, Any], facts: list[str], catalog: Catalog) ->
         objects.append({"id": oid, "category": "side_table", "room": room, "role": None,
                         "placement": "floor", "attributes": {}, "states": {},
                         "description": "a side table to put things on"})
+    for oid, room in cabinets.items():
+        objects.append({"id": oid, "category": "cabinet", "room": room, "role": None,
+                        "placement": "floor", "attributes": {}, "states": {},
+                        "description": "a cabinet its drawers belong to"})
     return objects
