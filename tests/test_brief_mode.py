@@ -112,3 +112,36 @@ def test_the_oracle_reads_the_runs_own_tasks_folder(tmp_path: Path) -> None:
                  "--generators", "logicenvgen", "--output", str(out), "--run-id", "o", "--quiet"]) == 0
     results = json.loads((out / "o" / "results.json").read_text(encoding="utf-8"))
     assert results["results"]["logicenvgen"]["logcov"] == pytest.approx(1.0)
+
+
+def test_named_objects_are_of_the_catalogs_kinds_and_a_word_outside_it_is_re_asked() -> None:
+    """Qwen2.5-Coder-1.5B named a kitchen's plate, sponge and counter "container" (free categories);
+    every scene built on them failed. The request binds a category to the catalog's kinds (all of
+    them: a text may name a kind generators are not offered unasked) and re-asks a word outside."""
+    from dataclasses import dataclass, field
+
+    from logicenveval.llm.base import ModelStats
+
+    @dataclass
+    class Scripted:
+        replies: list[str]
+        name: str = "scripted"
+        reply_protocol: int = 5
+        stats: ModelStats = field(default_factory=ModelStats)
+        run_dir: object = None
+        requests: list[ChatRequest] = field(default_factory=list)
+
+        def complete(self, request: ChatRequest) -> str:
+            self.requests.append(request)
+            return self.replies[len(self.requests) - 1]
+
+    model = Scripted([json.dumps({"objects": [{"name": "plate", "category": "container"}]}),
+                      json.dumps({"objects": [{"name": "plate", "category": "plate"},
+                                              {"name": "drawer", "category": "drawer"}]})])
+    brief = generator_brief(load_task("kitchen_dish_cleanup", TASKS), "description", model, seed=0)
+    assert {n: r.category for n, r in brief.roles.items()} == {"plate": "plate", "drawer": "drawer"}
+    assert len(model.requests) == 2 and "container" in json.dumps(model.requests[1].messages)
+    schema = model.requests[0].schema
+    assert schema is not None
+    kinds = json.dumps(schema)
+    assert '"drawer"' in kinds and '"plate"' in kinds and '"container"' not in kinds

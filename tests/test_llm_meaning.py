@@ -18,7 +18,7 @@ from logicenveval.llm.ask import ask
 from logicenveval.llm.base import ChatRequest, ModelStats
 from logicenveval.llm.meaning import MEANING_KEY, factor_problem, present_roles
 from logicenveval.llm.replies import DecomposeWire, FactorsWire, FloorPlanWire, ObjectsReply
-from logicenveval.llm.vocab import CONTEXT_KEY, scene_vocabulary
+from logicenveval.llm.vocab import CONTEXT_KEY, Pattern, scene_vocabulary
 
 # SmolLM2-135M's replies, as recorded in reports/real/SmolLM2-135M-Instruct.Q4_1/llm_cache.sqlite
 SMOL_FACTOR = ('{"factors":[{"id":"toy_on_floor", "question":"Is there a toy on the floor?","responses":[{"response":'
@@ -526,3 +526,24 @@ def test_protocol_4_bounds_what_a_real_model_repeated_under_protocol_3() -> None
     assert most_relations == len(kitchen.roles) + 17
     assert any(r.count('"rooms":') > 1 for r in cut)  # a second environment begun: not from protocol 4
     assert any(r.count('"args":') > most_relations and '"id":"kitchen"' in r for r in cut)
+
+
+def test_a_role_of_a_kind_the_catalog_lacks_still_never_rests_on_itself() -> None:
+    """Under the description brief a role's category is the model's own word; Qwen2.5-Coder-1.5B's
+    "container" counter got only the generic pattern, wrote `inside:counter` in every attempt and
+    was refused by the validator each time: the grammar now refuses it as the validator does."""
+    import re
+
+    from logicenveval.domain.catalog import load_catalog
+    from logicenveval.llm.scene_words import selection_words
+    from logicenveval.model.task import Role, TaskBrief
+
+    brief = TaskBrief(id="t", description="d", rooms=["kitchen"],
+                      roles={"counter": Role(category="container"), "plate": Role(category="plate"),
+                             "cabinet": Role(category="cabinet")})
+    words = selection_words(brief, ["cabinet", "counter", "plate"], load_catalog())
+    counter = words["placements@counter"]
+    assert isinstance(counter, Pattern)
+    assert not re.fullmatch(counter.regex, "inside:counter") and not re.fullmatch(counter.regex, "on:counter")
+    assert re.fullmatch(counter.regex, "floor") and re.fullmatch(counter.regex, "inside:cabinet")
+    assert "categories@counter" not in words and words["categories@plate"] == ["plate"]

@@ -12,12 +12,14 @@ oracle's): `task.brief()` — id, description, rooms and the named roles the pol
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Annotated, Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
+from logicenveval.domain.catalog import Catalog, load_catalog
 from logicenveval.llm.ask import ask
 from logicenveval.llm.base import ChatModel
+from logicenveval.llm.vocab import Vocab
 from logicenveval.model.task import Role, Task, TaskBrief
 
 BriefMode = Literal["roles", "description"]
@@ -27,7 +29,9 @@ BRIEF_MODES: tuple[BriefMode, ...] = ("roles", "description")
 class NamedObject(BaseModel):
     model_config = ConfigDict(frozen=True)
     name: str = Field(pattern=r"^[a-z][a-z0-9_]*$", description="snake_case name, unique")
-    category: str = Field(min_length=1, description="asset catalog category")
+    # bound to the catalog's kinds, as every later request's categories are: free, Qwen2.5-Coder-1.5B
+    # named "container", "furniture", "tool" and "item", and every scene built on them failed
+    category: Annotated[str, Vocab("categories")] = Field(min_length=1, description="asset catalog category")
     attributes: dict[str, str] = Field(default_factory=dict, description="attributes the text fixes")
 
 
@@ -41,13 +45,17 @@ def description_brief(task: Task) -> TaskBrief:
     return TaskBrief(id=task.id, description=task.description, rooms=task.rooms, roles={})
 
 
-def generator_brief(task: Task, mode: BriefMode, model: ChatModel, *, seed: int | None = None) -> TaskBrief:
-    """The brief a generator receives in `mode` (see the module docstring)."""
+def generator_brief(task: Task, mode: BriefMode, model: ChatModel, *, seed: int | None = None,
+                    catalog: Catalog | None = None) -> TaskBrief:
+    """The brief a generator receives in `mode` (see the module docstring). Under the description
+    brief an object's category is one of the catalog's kinds (all of them: a text may name a kind
+    generators are not offered unasked, a drawer)."""
     if mode == "roles":
         return task.brief()
     brief = description_brief(task)
+    kinds = sorted((catalog or load_catalog()).categories)
     reply = ask(model, "name_objects", {"task": brief.model_dump(mode="json")}, NamedObjectsReply,
-                seed=seed)
+                seed=seed, vocabulary={"categories": kinds})
     roles: dict[str, Role] = {}
     for obj in reply.objects:
         if obj.name not in roles:

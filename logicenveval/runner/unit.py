@@ -446,7 +446,7 @@ def _run_unit(spec: UnitSpec) -> UnitRecord:
 
             def make_brief() -> TaskBrief:
                 assert model is not None
-                briefs.append(generator_brief(task, spec.brief, model, seed=spec.seed))
+                briefs.append(generator_brief(task, spec.brief, model, seed=spec.seed, catalog=catalog))
                 return briefs[0]
 
             result = call_generator(generator, make_brief, ctx, task_id=task.id,
