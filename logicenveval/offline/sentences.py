@@ -162,6 +162,23 @@ _ELIDED_STATE = re.compile(
 #: retract it, is dropped, so only the place meant is read
 _PLACE_PREP = r"(?:in|on|into|onto|to|under|inside|next to|by)\b"
 _RETRACT = r"(?:no,?\s+wait|wait,?\s+no|no,?\s+sorry|sorry|i mean|or rather|scratch that|actually|correction)"
+#: "Unless Maya already took it down, the bag goes in the bin", "If it's not already in the
+#: basket, put the towel there": a condition put first that asks, of a thing it names only by a
+#: pronoun, whether it is already where or as its main clause makes it. The pronoun points forward
+#: and "already" to a result not said yet, so the sentence is read in the usual order, the main
+#: clause first ("The bag goes in the bin, unless Maya already took it down"), where "already"
+#: takes up the place or state just given
+_FRONTED_ALREADY = re.compile(
+    r"(?P<lead>^|(?<=[.!?])[ \t]+)(?P<cue>Unless|If|unless|if)\s+"
+    r"(?P<cond>(?=[^,.;:!?\n]*\b(?:it|they|them)\b)(?=[^,.;:!?\n]*\balready\b)[^,.;:!?\n]+),\s*"
+    r"(?P<main>[^,.;:!?\n][^.;:!?\n]*?)(?P<end>[.;!?]|$)", re.M)
+
+
+def _postposed(m: re.Match[str]) -> str:
+    main = m.group("main")
+    return f"{m.group('lead')}{main[:1].upper()}{main[1:]}, {m.group('cue').lower()} {m.group('cond')}{m.group('end')}"
+
+
 _SELF_CORRECTION = re.compile(rf"\b{_PLACE_PREP}[^,.;:!?()]{{1,40}}?[\s,\-\u2013\u2014]+"
                               rf"(?:{_RETRACT}[\s,\-\u2013\u2014]+)+(?={_PLACE_PREP})", re.I)
 
@@ -322,7 +339,8 @@ def unquote(text: str) -> str:
     arrow as "->" (`_ARROWS`), an emoji between words as a
     sentence's end (`_EMOJI`), a comma before the next "state ->" case as ";"
     (`_CASE_AFTER_COMMA`), "the X on the Y, if there is one" as "if there is an X on the Y"
-    (`_IF_ANY`), without an email's quoting marks: a reply above a quoted message reads as one
+    (`_IF_ANY`), a condition put first whose pronoun points forward to a result not said yet after
+    its main clause (`_FRONTED_ALREADY`), without an email's quoting marks: a reply above a quoted message reads as one
     text ("> On Monday, Jo wrote:" is no sentence; "> Could you tidy ..." is "Could you tidy ...");
     without the labels of lettered or numbered items; a place the speaker corrects dropped for the
     one meant ("in the wardrobe, no wait, in the hamper"); a bare state as a subject read as the
@@ -337,6 +355,7 @@ def unquote(text: str) -> str:
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), VARIANTS[m.group(0).lower()]), text))
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
     plain = _IF_ANY.sub(_if_any, plain)
+    plain = _FRONTED_ALREADY.sub(_postposed, plain)
     plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", plain))))
     plain = _unabbreviated(plain)
     plain = _ACTED_STATE.sub(_acted_state, _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", plain)))
