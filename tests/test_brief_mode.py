@@ -8,6 +8,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from scripted import Scripted
 
 from logicenveval.benchmark import load_task
 from logicenveval.cli import main
@@ -118,26 +119,9 @@ def test_named_objects_are_of_the_catalogs_kinds_and_a_word_outside_it_is_re_ask
     """Qwen2.5-Coder-1.5B named a kitchen's plate, sponge and counter "container" (free categories);
     every scene built on them failed. The request binds a category to the catalog's kinds (all of
     them: a text may name a kind generators are not offered unasked) and re-asks a word outside."""
-    from dataclasses import dataclass, field
-
-    from logicenveval.llm.base import ModelStats
-
-    @dataclass
-    class Scripted:
-        replies: list[str]
-        name: str = "scripted"
-        reply_protocol: int = 5
-        stats: ModelStats = field(default_factory=ModelStats)
-        run_dir: object = None
-        requests: list[ChatRequest] = field(default_factory=list)
-
-        def complete(self, request: ChatRequest) -> str:
-            self.requests.append(request)
-            return self.replies[len(self.requests) - 1]
-
     model = Scripted([json.dumps({"objects": [{"name": "plate", "category": "container"}]}),
                       json.dumps({"objects": [{"name": "plate", "category": "plate"},
-                                              {"name": "drawer", "category": "drawer"}]})])
+                                              {"name": "drawer", "category": "drawer"}]})], reply_protocol=5)
     brief = generator_brief(load_task("kitchen_dish_cleanup", TASKS), "description", model, seed=0)
     assert {n: r.category for n, r in brief.roles.items()} == {"plate": "plate", "drawer": "drawer"}
     assert len(model.requests) == 2 and "container" in json.dumps(model.requests[1].messages)

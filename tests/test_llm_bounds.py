@@ -6,6 +6,7 @@ from typing import Any
 
 from hypothesis import given
 from hypothesis import strategies as st
+from scripted import Scripted
 
 from logicenveval.benchmark import load_task, tasks_dir
 from logicenveval.generators.brief import generator_brief
@@ -85,27 +86,13 @@ def test_a_reply_with_a_door_too_wide_is_taken_and_the_clamp_counted() -> None:
     grammar, which bounds no decimal; the reply was refused whole."""
     import json
 
-    from logicenveval.llm.base import ModelStats
     from logicenveval.llm.replies import FloorPlanReply
     from logicenveval.llm.vocab import scene_vocabulary
 
-    class Scripted:
-        name = "scripted"
-        reply_protocol = 5
-        run_dir = None
-
-        def __init__(self) -> None:
-            self.stats = ModelStats()
-            self.sent = 0
-
-        def complete(self, request: Any) -> str:
-            self.sent += 1
-            return json.dumps({"rooms": [{"id": "kitchen", "type": "Kitchen", "area_m2": 30,
-                                          "doors": [{"to": "exterior", "width": 2.4}]}]})
-
-    model = Scripted()
+    model = Scripted([json.dumps({"rooms": [{"id": "kitchen", "type": "Kitchen", "area_m2": 30,
+                                             "doors": [{"to": "exterior", "width": 2.4}]}]})], reply_protocol=5)
     brief = generator_brief(load_task("kitchen_dish_cleanup", tasks_dir()), "description", OfflineModel())
     reply = ask(model, "floor_plan", {"task": brief.model_dump(mode="json"), "situation": []}, FloorPlanReply,
                 vocabulary=scene_vocabulary(["kitchen"], sorted(brief.roles), ["plate"], None))
-    assert reply.rooms[0].doors[0].width == 2.0 and model.sent == 1
+    assert reply.rooms[0].doors[0].width == 2.0 and len(model.requests) == 1
     assert model.stats.by_kind["floor_plan"]["clamped"] == 1

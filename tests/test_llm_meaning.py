@@ -4,7 +4,6 @@ usable are re-asked with a finding naming the element to change, and counted apa
 from __future__ import annotations
 
 import json
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -12,10 +11,11 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from pydantic import ValidationError
+from scripted import Scripted
 
 from logicenveval.errors import ModelReplyError
 from logicenveval.llm.ask import ask
-from logicenveval.llm.base import ChatRequest, ModelStats
+from logicenveval.llm.base import ChatRequest
 from logicenveval.llm.meaning import MEANING_KEY, factor_problem, present_roles
 from logicenveval.llm.replies import DecomposeWire, FactorsWire, FloorPlanWire, ObjectsReply
 from logicenveval.llm.vocab import CONTEXT_KEY, Pattern, scene_vocabulary
@@ -48,20 +48,6 @@ BRIEF = {"task": {"id": "clean_living_room", "description": "Tidy the living roo
 ON = {MEANING_KEY: True}
 
 
-@dataclass
-class Scripted:
-    """A stand-in ChatModel answering with recorded replies, one per request, and keeping them."""
-
-    replies: list[str]
-    name: str = "scripted"
-    reply_protocol: int = 2
-    stats: ModelStats = field(default_factory=ModelStats)
-    run_dir: Any = None
-    requests: list[ChatRequest] = field(default_factory=list)
-
-    def complete(self, request: ChatRequest) -> str:
-        self.requests.append(request)
-        return self.replies[len(self.requests) - 1]
 
 
 def _finding(request: ChatRequest) -> str:
