@@ -101,6 +101,16 @@ def check_new_tasks_are_fresh(new: Path, earlier: Sequence[Path], *, fresh_rooms
             assert mentions(task.description, names_of(role, spec.category)), (task.id, role)
 
 
+def check_a_few_factors_and_a_stated_fact(new: Path, *, min_objects: int = 0) -> None:
+    """2-4 uncertain factors per new task (issue 47's "in any register" is about reading, not
+    size), at least `min_objects` objects, and at least one fact the description states that is
+    no factor."""
+    for task in load_tasks(new):
+        assert 2 <= len(task.variables) <= 4, (task.id, sorted(task.variables))
+        assert len(task.roles) >= min_objects, task.id
+        assert task.constraints, task.id
+
+
 def check_not_templated(new: Path, breaks: str = "[.!?]") -> None:
     """Written as a person would, not as "If the X is Y, ..." sentences (`breaks`: the
     characters a sentence ends with; a list-like set also breaks at line ends)."""
