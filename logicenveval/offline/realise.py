@@ -230,6 +230,8 @@ def task_objects(task: Mapping[str, Any], facts: list[str], catalog: Catalog) ->
     objects: list[dict[str, Any]] = []
     tables: dict[str, str] = {}  # side table added -> its room
     cabinets: dict[str, str] = {}  # cabinet added for a part of furniture -> its room
+    added = {("side_table", "a side table to put things on"): tables,
+             ("cabinet", "a cabinet its drawers belong to"): cabinets}
     for role, c in realise(task, facts, catalog).items():
         if not c.present:
             continue
@@ -248,12 +250,7 @@ def task_objects(task: Mapping[str, Any], facts: list[str], catalog: Catalog) ->
         objects.append({"id": role, "category": roles[role]["category"], "room": room, "role": role,
                         "placement": placement, "attributes": c.attributes, "states": c.states,
                         "description": f"the {role.replace('_', ' ')}"})
-    for oid, room in tables.items():
-        objects.append({"id": oid, "category": "side_table", "room": room, "role": None,
-                        "placement": "floor", "attributes": {}, "states": {},
-                        "description": "a side table to put things on"})
-    for oid, room in cabinets.items():
-        objects.append({"id": oid, "category": "cabinet", "room": room, "role": None,
-                        "placement": "floor", "attributes": {}, "states": {},
-                        "description": "a cabinet its drawers belong to"})
+    for (category, description), rooms in added.items():
+        objects += [{"id": oid, "category": category, "room": room, "role": None, "placement": "floor",
+                     "attributes": {}, "states": {}, "description": description} for oid, room in rooms.items()]
     return objects
