@@ -2,13 +2,13 @@
 
 A set is a folder under `tests/data/`: the development set `reader_dev` (the default), the
 held-out set `reader_holdout`, the second unseen set `reader_dev3`, the fourth development set `reader_dev4`, the second
-held-out set `reader_holdout2` or the fifth development set `reader_dev5`. Its `rewordings.json` holds each rewording once: its new task id, the built-in
+held-out set `reader_holdout2`, the fifth development set `reader_dev5` or the sixth development set `reader_dev6`. Its `rewordings.json` holds each rewording once: its new task id, the built-in
 task it rewords, its register, the new description and, for every constraint fact of the
 original, the words of the new description that assert it (`says` must quote the description,
 docs/task-format.md). A task's policies must lie inside its own folder (`benchmark.policy_path`),
 so each folder gets a copy of the original's four BTs; `tests/test_reader_dev_data.py` and
 `tests/test_reader_holdout_data.py`, `tests/test_reader_dev3_data.py`, `tests/test_reader_dev4_data.py`,
-`tests/test_reader_holdout2_data.py` and `tests/test_reader_dev5_data.py` check that every copy still equals its original and that
+`tests/test_reader_holdout2_data.py`, `tests/test_reader_dev5_data.py` and `tests/test_reader_dev6_data.py` check that every copy still equals its original and that
 nothing but `id`, `description` and the constraints' `says` differs.
 
     python tools/build_reworded_tasks.py            # (re)write tests/data/reader_dev/tasks_reworded/
@@ -17,6 +17,7 @@ nothing but `id`, `description` and the constraints' `says` differs.
     python tools/build_reworded_tasks.py --set reader_dev4      # the fourth development set's folders
     python tools/build_reworded_tasks.py --set reader_holdout2  # the second held-out set's folders
     python tools/build_reworded_tasks.py --set reader_dev5      # the fifth development set's folders
+    python tools/build_reworded_tasks.py --set reader_dev6      # the sixth development set's folders
     python tools/build_reworded_tasks.py --mutants  # also ship killable_mutants.json (minutes)
 
 Folders of ids no longer listed are removed, so the directory always equals the JSON.
@@ -35,7 +36,8 @@ from typing import Any
 ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT / "tests" / "data"
 #: the sets whose rewordings this tool writes (a folder under tests/data/ each)
-SETS = ("reader_dev", "reader_holdout", "reader_dev3", "reader_dev4", "reader_holdout2", "reader_dev5")
+SETS = ("reader_dev", "reader_holdout", "reader_dev3", "reader_dev4", "reader_holdout2", "reader_dev5",
+        "reader_dev6")
 BUILTIN = ROOT / "benchmark_data" / "tasks"
 
 
