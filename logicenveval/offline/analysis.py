@@ -984,6 +984,8 @@ class _Reader:
         while k < len(words) and words[k] in DESCRIPTIVE | {"made", "of", "kind", "type", "sort", "a", "an"}:
             k += 1
         after = words[k : k + 1]
+        if after and after[0] in STATE_WORDS and words[k + 1:k + 2] in (["and"], ["but"]):
+            after = words[k + 2 : k + 3]  # "if it's dirty and white": a value joined to a state
         before = words[max(0, m.start - 1) : m.start]
         fixed = {v for attrs in self.lex.fixed.values() for v in attrs.values()}
         out = []
@@ -1398,7 +1400,9 @@ def _role_after(cut: list[list[Piece]], si: int, pi: int) -> str:
     heading (the next sentence goes on after a colon) or not; "" after a full stop."""
     if pi + 1 < len(cut[si]):
         return cut[si][pi + 1].role
-    ended = not cut[si] or cut[si][-1].text.rstrip().endswith((".", "!", "?"))
+    # (a question mark ends a heading: "Towel on the floor? If wet, ..." asks where the towel is)
+    ended = not cut[si] or cut[si][-1].text.rstrip().endswith((".", "!", "?")) or (
+        cut[si][-1].role == "heading" and cut[si][-1].cue == "?")
     return cut[si + 1][0].role if si + 1 < len(cut) and cut[si + 1] and not ended else ""
 
 
@@ -1537,6 +1541,64 @@ def _checked(sentence: str, lex: Lexicon, kinds: Mapping[str, Category]) -> str:
     return f"{m.group('lead')}{thing[:1].upper()}{thing[1:]} may be {prep} {m.group('place').strip()}{m.group('end')}"
 
 
+def _parallel(said: str, facts: list[Fact], clauses: list[Clause], sentence: int) -> list[Fact]:
+    """"If it's dirty and white, put it in the washing machine: open the machine, ... If it's
+    dirty and coloured, put it in the hamper": a condition opening its sentence whose pronoun asks
+    a state the condition of the sentence before asked of another thing speaks of that thing, not
+    of one its instruction named in between."""
+    words = [w for w, _, _ in tokens(expand(said))]
+    if not words or words[0] not in ("it", "they") or clauses and clauses[-1].sentence == sentence:
+        return facts  # (only a condition opening its sentence: "turn off the lamp if it's on" is the lamp)
+    before = next((cl for cl in reversed(clauses) if cl.role == "condition"), None)
+    if before is None or before.sentence != sentence - 1:
+        return facts
+    asked = {f.key: f.subject for f in before.facts if f.kind == "state" and not f.goal}
+    out = []
+    for f in facts:
+        s = asked.get(f.key) if f.kind == "state" and not f.goal else None
+        if s is not None and s != f.subject:
+            f = replace(f, subject=s, condition=f.condition.replace(f"({f.subject},", f"({s},", 1))
+        out.append(f)
+    return out
+
+
+#: prepositions of a place "there" may take up (the place, not where something goes through)
+_THERE_PREPS = {"on": "on", "onto": "on", "in": "in", "into": "in", "inside": "in"}
+_BE_WORDS = frozenset({"is", "are", "was", "were", "be", "been"})
+
+
+def _there_named(reader: _Reader, said: str, clauses: list[Clause], sentence: int) -> str:
+    """"Pillows are not to be left on the floor. Should a pillow have fallen there, ...", "Keep
+    the lead off the sofa; if the lead has been dropped there, ...": in a condition that names
+    a thing but no place, "there" after its verb is the place last named in the clause before (of
+    this sentence or the one before), read as that place. Not "there is" nor "is it there"."""
+    text = expand(said)
+    toks = tokens(text)
+    words = [w for w, _, _ in toks]
+    if "there" not in words:
+        return said
+    k = words.index("there")
+    mentions = reader.lex.find_mentions(toks)
+    if k == 0 or words[k + 1:k + 2] and words[k + 1] in _BE_WORDS or words[k - 1] in CLAUSE_WORDS \
+            or not any(m.kind == "role" and m.end <= k for m in mentions) \
+            or any(m.kind in ("role", "floor") and m.start > k for m in mentions):
+        return said
+    for cl in reversed(clauses):
+        if cl.sentence < sentence - 1:
+            break
+        ctoks = tokens(expand(cl.text))
+        cwords = [w for w, _, _ in ctoks]
+        places = [m for m in reader.lex.find_mentions(ctoks) if m.kind in ("role", "floor")]
+        for m in reversed(places):
+            j = m.start - 1
+            while j >= 0 and cwords[j] in ARTICLES:
+                j -= 1
+            if j >= 0 and cwords[j] in _THERE_PREPS:
+                name = " ".join(cwords[m.start:m.end])
+                return f"{text[:toks[k][1]]}{_THERE_PREPS[cwords[j]]} the {name}{text[toks[k][2]:]}"
+    return said
+
+
 def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     lex = Lexicon.build(brief, catalog)
     kinds = {name: cat for name, role in dict(brief.get("roles") or {}).items()
@@ -1615,7 +1677,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # the one before, speaks of the thing its main clause names
                 reader.topic, reader.topic_kind = ahead, "role"
             said = _BARE_EITHER.sub(r"\1 of them", said)
+            if role == "condition":
+                said = _there_named(reader, said, clauses, grammatical)
             facts, names = reader.facts("there is " + said if cue == "should there be" else said)
+            if role == "condition":
+                facts = _parallel(said, facts, clauses, grammatical)
             if cue == "if available" and not any(f.kind in ("location", "exists") and not f.home for f in facts):
                 facts += _available(reader, said)
             if role == "condition" and all(f.derived for f in facts) and pi + 1 < len(pieces) and (
@@ -1670,7 +1736,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     for ci, cl in enumerate(clauses):
         if cl.sentence != current_sentence:
             # ... unless it speaks of a situation of its own ("Finally, a dirty mirror is cleaned:")
-            carried = context if cl.role in ("statement", "consequence") and not any(
+            # ("Mirror dirty? Clean it. Use the cloth if we still have one.": an instruction
+            # standing alone after a question passes its conditions on)
+            carried = (context or carried) if cl.role in ("statement", "consequence") and not any(
                 not f.goal and not f.derived and not f.home for f in cl.facts) else []
             current_sentence, context = cl.sentence, []
         elif (cl.role == "condition" and ci >= 2 and clauses[ci - 1].role == "consequence"
@@ -1722,6 +1790,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                                                f.kind == "exists" and c[0][0] == f.subject)]
                                            or [c for c in carried if c[0] != slot and f.kind == "exists"]})
             entry.setdefault("places", set()).add((cl.sentence, ci))
+            entry["home"] = entry.get("home", True) and f.home and cl.role == "statement" and not (
+                {w for w, _, _ in tokens(cl.text)} & {"it", "they", "them", "one"})
             if cl.role == "condition":
                 value = f.condition.rsplit(", ", 1)[1][:-1] if f.kind == "attr" else f.key
                 # "unless it is already in the box, put it in: open the box first if ...": what
@@ -1752,7 +1822,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
 
     factors: list[Factor] = []
     slot_factor: dict[tuple[str, str, str], Factor] = {}
-    subjects_with_location = {s for (s, k, _) in found if k == "location"}
+    # (where a thing is kept is no place it is expected now: "Use the cloth if we still have one.
+    # The cloth lives in the vanity." still asks whether there is one)
+    subjects_with_location = {s for (s, k, _), e in found.items() if k == "location" and not e.get("home")}
     absence_stated = {f.subject for cl in clauses if cl.role in ("condition", "uncertain") for f in cl.facts
                       if f.kind == "exists" and not f.goal and (
                           f.negated and cl.role == "uncertain"
@@ -1897,16 +1969,21 @@ def _drop_home(f: Factor, kept: set[str]) -> None:
 def _contrasted(clauses: list[Clause], text: str) -> set[tuple[str, str]]:
     """(subject, key) of derived attributes the text contrasts, so that they decide something:
     an adjective said of the object both positively and negated (`a ripe one ..., one that is not
-    ripe ...`, `ripe` / `unripe`), a kind stated in a condition (`if it is a bill`) or set against
+    ripe ...`, `ripe` / `unripe`, `if it's ripe, ...; otherwise ...`), a kind stated in a condition (`if it is a bill`) or set against
     `other` objects of its sort (`any other document`)."""
     polarity: dict[tuple[str, str], set[bool]] = {}
     out: set[tuple[str, str]] = set()
     low = " " + " ".join(w for w, _, _ in tokens(expand(text))) + " "
-    for cl in clauses:
+    for ci, cl in enumerate(clauses):
+        # "if it's ripe, put it in the fridge; otherwise ...": an alternative answers the condition
+        answered = cl.role == "condition" and bool(cl.facts) and all(f.derived for f in cl.facts) and any(
+            c.role == "else" and c.sentence == cl.sentence for c in clauses[ci + 1:])
         for f in cl.facts:
             if not f.derived:
                 continue
             polarity.setdefault((f.subject, f.key), set()).add(f.negated)
+            if answered:
+                polarity[(f.subject, f.key)].add(not f.negated)
             if f.key == "kind" and (cl.role == "condition" or f" other {f.subject.replace('_', ' ')} " in low):
                 out.add((f.subject, f.key))
     return out | {s for s, pols in polarity.items() if len(pols) == 2}
