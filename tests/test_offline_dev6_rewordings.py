@@ -355,3 +355,33 @@ def test_an_adjective_beside_a_state_in_a_condition_is_not_asked_for_its_alterna
 def test_a_value_joined_to_a_state_is_asked(text: str, rooms: tuple[str, ...], asked: str) -> None:
     """"if it's dirty and white": the colour after the state is asked as well."""
     assert asked in {v for vs in _factors(text, rooms).values() for v in vs}
+
+
+@pytest.mark.parametrize(("text", "rooms"), [
+    # dev6's sentence with a verb the reader does not know as one of putting
+    ("If the mug is dirty it goes in the dishwasher, unless the dishwasher is running, then just chuck it in the "
+     "sink.", ("kitchen",)),
+    # written here
+    ("If the towel is dirty it goes in the washing machine, unless the washing machine is running, then just dump "
+     "it in the bathtub.", ("bathroom", "laundry_room")),
+    ("If the mug is clean it goes in the cabinet, unless the cabinet is full, then just dump it on the kitchen "
+     "counter.", ("kitchen",)),
+])
+def test_no_piece_of_furniture_is_asked_in_another(text: str, rooms: tuple[str, ...]) -> None:
+    """A piece of furniture (a surface or container nobody carries) is never on or in another role,
+    whatever the sizes allow: such a reading is dropped, not planned (it left no layout)."""
+    values = {v for vs in _factors(text, rooms).values() for v in vs}
+    assert not any(v.startswith(("inside(dishwasher", "inside(washing_machine", "on(cabinet")) for v in values)
+
+
+@pytest.mark.parametrize(("text", "rooms", "thing"), [
+    # dev6's construction ("then just stick it in the sink") with another verb
+    ("If the mug is dirty, just chuck it in the sink.", ("kitchen",), "mug"),
+    # written here
+    ("If the sock is dirty, just dump it in the laundry basket.", ("bedroom",), "sock"),
+])
+def test_just_before_an_instruction_keeps_it_an_instruction(text: str, rooms: tuple[str, ...], thing: str) -> None:
+    """"just chuck it in the sink": a softener before the verb; the place is where it goes, not a
+    condition on where it is."""
+    values = {v for vs in _factors(text, rooms).values() for v in vs}
+    assert not any(v.startswith(("inside(", "on(")) for v in values)

@@ -32,6 +32,7 @@ from logicenveval.offline.clauses import (
     NEGATIONS,
     OBJECT_STARTS,
     PLACE_PREPS,
+    SOFTENERS,
     UNCERTAIN,
     Piece,
     imperative,
@@ -667,11 +668,16 @@ class _Reader:
 
     def _holds(self, f: Fact) -> bool:
         """A thing on or in a role that cannot hold it (a sofa in a toy box, a phone on a book:
-        `scene.compat.can_hold` on their catalog sizes and kinds) is a misreading, not a fact."""
+        `scene.compat.can_hold` on their catalog sizes and kinds) is a misreading, not a fact; so
+        is a piece of furniture (a surface or container nobody carries: a dishwasher) on or in
+        another, which the sizes alone may allow ("unless the dishwasher is running, then just
+        chuck it in the sink" is no dishwasher in the sink)."""
         relation = f.condition.split("(", 1)[0]
         item, holder = self.kinds.get(f.subject), self.kinds.get(f.key)
         if f.kind != "location" or relation not in ("on", "inside") or item is None or holder is None:
             return True
+        if not item.pickable and (item.surface or item.container):
+            return False
         return can_hold(item, holder, relation)
 
     def _fit(self, f: Fact) -> Fact:
@@ -809,8 +815,9 @@ class _Reader:
         # "pop it on the desk": where an imperative's object goes ("a pack of wipes on the
         # table" is no action: the word after an article is a noun)
         verbs = [w for i, w in enumerate(before) if w in ACTIONS and not (i > 0 and before[i - 1] in ARTICLES)]
+        first = 2 if words[:1] and words[0] in SOFTENERS else 1  # "just dump it in the basket"
         return bool(set(skipped) & MOTION) or bool(verbs) or (
-            m.start > 0 and imperative(words) and all(w in ARTICLES for w in words[1 : m.start]))
+            m.start >= first and imperative(words) and all(w in ARTICLES for w in words[first : m.start]))
 
     def _location(self, words: list[str], mentions: list[Mention], idx: int, negated: bool) -> list[Fact]:
         m = mentions[idx]

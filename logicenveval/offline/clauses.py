@@ -217,8 +217,14 @@ OBJECT_STARTS = ARTICLES | frozenset({"it", "them", "up", "out", "back", "away",
 _HEADING = re.compile(r"^(?P<head>[^:?\u2013]+?)(?P<mark>\?|:|\s+(?:-|\u2013)\s+)(?P<rest>.*)$", re.S)
 
 
+#: adverbs that may open an instruction before its verb ("just stick it in the sink")
+SOFTENERS = frozenset({"just", "simply"})
+
+
 def imperative(words: list[str]) -> bool:
     """The segment opens with a verb in its base form followed by its object or particle."""
+    if words[:1] and words[0] in SOFTENERS:
+        words = words[1:]  # "just chuck it in the sink", "simply hang it up"
     if len(words) < 2:
         return False
     lemmas = getAllLemmas(words[0]).get("VERB", ())
