@@ -385,3 +385,22 @@ def test_just_before_an_instruction_keeps_it_an_instruction(text: str, rooms: tu
     condition on where it is."""
     values = {v for vs in _factors(text, rooms).values() for v in vs}
     assert not any(v.startswith(("inside(", "on(")) for v in values)
+
+
+@pytest.mark.parametrize(("text", "rooms", "inside", "state"), [
+    # dev6 (a how-to)
+    ("Step 3: Check the dryer. If there's a towel inside and the dryer has stopped, take the towel out, put it on "
+     "the shelf and close the dryer door.", ("laundry_room",), "inside(towel, dryer)", "state(dryer, toggled_on)"),
+    # written here
+    ("Look in the fridge. If there's a milk carton inside and the fridge is open, take the milk carton out.",
+     ("kitchen",), "inside(milk_carton, fridge)", "state(fridge, open)"),
+])
+def test_inside_with_no_object_is_the_holder_spoken_of(text: str, rooms: tuple[str, ...], inside: str,
+                                                       state: str) -> None:
+    """"If there's a towel inside and the dryer has stopped": "inside" before "and" does not make
+    the dryer after it a place, so the clause after "and" says the dryer's state, and the towel's
+    place in the dryer and the dryer's state are one subtask."""
+    a = analyse(_brief(text, rooms), load_catalog())
+    by_value = {v: f.id for f in a.factors for v in f.values.values()}
+    assert inside in by_value and state in by_value
+    assert any(by_value[inside] in g and by_value[state] in g for g in a.groups)

@@ -324,8 +324,16 @@ def _verb_forms(word: str) -> set[str]:
 
 def _placed(words: list[str], m: Mention) -> bool:
     """The mention names a place or a goal: a preposition stands before it ("on the table",
-    "from the big dresser")."""
-    return bool(set(words[max(0, m.start - 3) : m.start]) & PLACE_PREPS)
+    "from the big dresser"); not one with no object of its own ("a towel inside and the dryer
+    has stopped")."""
+    return _prep_within(words, m, PLACE_PREPS)
+
+
+def _prep_within(words: list[str], m: Mention, preps: frozenset[str] | set[str]) -> bool:
+    """One of `preps` within three words before the mention, and not one with no object of its
+    own, right before "and" / "but" ("a towel inside and the dryer has stopped")."""
+    before = words[max(0, m.start - 3) : m.start]
+    return any(w in preps and before[i + 1:i + 2] not in (["and"], ["but"]) for i, w in enumerate(before))
 
 
 def _negation(word: str) -> bool:
@@ -551,7 +559,7 @@ class _Reader:
             if m.kind not in ("role", "pronoun"):
                 continue
             facts += self._location(words, mentions, idx, negated)
-            if not (m.kind == "role" and set(words[max(0, m.start - 3) : m.start]) & WHERE_PREPS and any(
+            if not (m.kind == "role" and _prep_within(words, m, WHERE_PREPS) and any(
                     x.kind in ("role", "pronoun") and x.end <= m.start for x in mentions)
                     and words[m.end : m.end + 1] not in (["which"], ["that"])):
                 # "Candle on the coffee table still lit": the state is the candle's, not its place's
@@ -2041,7 +2049,9 @@ def _group(factors: list[Factor],
     """Independent subtasks: factors on one subject, joined with factors of other subjects that
     the same sentence makes depend on them (`a dirty plate goes into the dishwasher, but when the
     dishwasher is running ...`), and a container's being open with the thing moved into it
-    (`_moves_into`). Subjects listed in one clause stay independent."""
+    (`_moves_into`), and a thing's place in a holder with the holder's state asked in the same
+    clause ("if there's a towel inside and the dryer has stopped"). Subjects listed in one clause
+    otherwise stay independent."""
     parent: dict[str, str] = {f.subject: f.subject for f in factors}
 
     def find(x: str) -> str:
@@ -2058,6 +2068,13 @@ def _group(factors: list[Factor],
                                                 for sb, cb in b.places):
                 # restated later in a sentence that makes them depend ("a dirty shirt goes into the
                 # machine, unless the machine is running")
+                parent[find(b.subject)] = find(a.subject)
+    for a in factors:
+        # "if there's a towel inside and the dryer has stopped": a thing's place in a holder and
+        # the holder's own state, asked in one clause, are one subtask
+        held = {x for v in a.values.values() for x in re.findall(r"\b(?:on|inside)\(\w+, (\w+)\)", v)}
+        for b in factors:
+            if a.kind == "location" and b.kind == "state" and b.subject in held and a.places & b.places:
                 parent[find(b.subject)] = find(a.subject)
     for moved, container in moves:
         if moved in parent and container in parent:
