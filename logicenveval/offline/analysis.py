@@ -32,6 +32,7 @@ from logicenveval.offline.clauses import (
     NEGATIONS,
     OBJECT_STARTS,
     PLACE_PREPS,
+    SOFTENERS,
     UNCERTAIN,
     Piece,
     imperative,
@@ -323,8 +324,16 @@ def _verb_forms(word: str) -> set[str]:
 
 def _placed(words: list[str], m: Mention) -> bool:
     """The mention names a place or a goal: a preposition stands before it ("on the table",
-    "from the big dresser")."""
-    return bool(set(words[max(0, m.start - 3) : m.start]) & PLACE_PREPS)
+    "from the big dresser"); not one with no object of its own ("a towel inside and the dryer
+    has stopped")."""
+    return _prep_within(words, m, PLACE_PREPS)
+
+
+def _prep_within(words: list[str], m: Mention, preps: frozenset[str] | set[str]) -> bool:
+    """One of `preps` within three words before the mention, and not one with no object of its
+    own, right before "and" / "but" ("a towel inside and the dryer has stopped")."""
+    before = words[max(0, m.start - 3) : m.start]
+    return any(w in preps and before[i + 1:i + 2] not in (["and"], ["but"]) for i, w in enumerate(before))
 
 
 def _negation(word: str) -> bool:
@@ -550,7 +559,7 @@ class _Reader:
             if m.kind not in ("role", "pronoun"):
                 continue
             facts += self._location(words, mentions, idx, negated)
-            if not (m.kind == "role" and set(words[max(0, m.start - 3) : m.start]) & WHERE_PREPS and any(
+            if not (m.kind == "role" and _prep_within(words, m, WHERE_PREPS) and any(
                     x.kind in ("role", "pronoun") and x.end <= m.start for x in mentions)
                     and words[m.end : m.end + 1] not in (["which"], ["that"])):
                 # "Candle on the coffee table still lit": the state is the candle's, not its place's
@@ -667,11 +676,16 @@ class _Reader:
 
     def _holds(self, f: Fact) -> bool:
         """A thing on or in a role that cannot hold it (a sofa in a toy box, a phone on a book:
-        `scene.compat.can_hold` on their catalog sizes and kinds) is a misreading, not a fact."""
+        `scene.compat.can_hold` on their catalog sizes and kinds) is a misreading, not a fact; so
+        is a piece of furniture (a surface or container nobody carries: a dishwasher) on or in
+        another, which the sizes alone may allow ("unless the dishwasher is running, then just
+        chuck it in the sink" is no dishwasher in the sink)."""
         relation = f.condition.split("(", 1)[0]
         item, holder = self.kinds.get(f.subject), self.kinds.get(f.key)
         if f.kind != "location" or relation not in ("on", "inside") or item is None or holder is None:
             return True
+        if not item.pickable and (item.surface or item.container):
+            return False
         return can_hold(item, holder, relation)
 
     def _fit(self, f: Fact) -> Fact:
@@ -809,8 +823,9 @@ class _Reader:
         # "pop it on the desk": where an imperative's object goes ("a pack of wipes on the
         # table" is no action: the word after an article is a noun)
         verbs = [w for i, w in enumerate(before) if w in ACTIONS and not (i > 0 and before[i - 1] in ARTICLES)]
+        first = 2 if words[:1] and words[0] in SOFTENERS else 1  # "just dump it in the basket"
         return bool(set(skipped) & MOTION) or bool(verbs) or (
-            m.start > 0 and imperative(words) and all(w in ARTICLES for w in words[1 : m.start]))
+            m.start >= first and imperative(words) and all(w in ARTICLES for w in words[first : m.start]))
 
     def _location(self, words: list[str], mentions: list[Mention], idx: int, negated: bool) -> list[Fact]:
         m = mentions[idx]
@@ -984,6 +999,8 @@ class _Reader:
         while k < len(words) and words[k] in DESCRIPTIVE | {"made", "of", "kind", "type", "sort", "a", "an"}:
             k += 1
         after = words[k : k + 1]
+        if after and after[0] in STATE_WORDS and words[k + 1:k + 2] in (["and"], ["but"]):
+            after = words[k + 2 : k + 3]  # "if it's dirty and white": a value joined to a state
         before = words[max(0, m.start - 1) : m.start]
         fixed = {v for attrs in self.lex.fixed.values() for v in attrs.values()}
         out = []
@@ -1398,7 +1415,9 @@ def _role_after(cut: list[list[Piece]], si: int, pi: int) -> str:
     heading (the next sentence goes on after a colon) or not; "" after a full stop."""
     if pi + 1 < len(cut[si]):
         return cut[si][pi + 1].role
-    ended = not cut[si] or cut[si][-1].text.rstrip().endswith((".", "!", "?"))
+    # (a question mark ends a heading: "Towel on the floor? If wet, ..." asks where the towel is)
+    ended = not cut[si] or cut[si][-1].text.rstrip().endswith((".", "!", "?")) or (
+        cut[si][-1].role == "heading" and cut[si][-1].cue == "?")
     return cut[si + 1][0].role if si + 1 < len(cut) and cut[si + 1] and not ended else ""
 
 
@@ -1537,6 +1556,64 @@ def _checked(sentence: str, lex: Lexicon, kinds: Mapping[str, Category]) -> str:
     return f"{m.group('lead')}{thing[:1].upper()}{thing[1:]} may be {prep} {m.group('place').strip()}{m.group('end')}"
 
 
+def _parallel(said: str, facts: list[Fact], clauses: list[Clause], sentence: int) -> list[Fact]:
+    """"If it's dirty and white, put it in the washing machine: open the machine, ... If it's
+    dirty and coloured, put it in the hamper": a condition opening its sentence whose pronoun asks
+    a state the condition of the sentence before asked of another thing speaks of that thing, not
+    of one its instruction named in between."""
+    words = [w for w, _, _ in tokens(expand(said))]
+    if not words or words[0] not in ("it", "they") or clauses and clauses[-1].sentence == sentence:
+        return facts  # (only a condition opening its sentence: "turn off the lamp if it's on" is the lamp)
+    before = next((cl for cl in reversed(clauses) if cl.role == "condition"), None)
+    if before is None or before.sentence != sentence - 1:
+        return facts
+    asked = {f.key: f.subject for f in before.facts if f.kind == "state" and not f.goal}
+    out = []
+    for f in facts:
+        s = asked.get(f.key) if f.kind == "state" and not f.goal else None
+        if s is not None and s != f.subject:
+            f = replace(f, subject=s, condition=f.condition.replace(f"({f.subject},", f"({s},", 1))
+        out.append(f)
+    return out
+
+
+#: prepositions of a place "there" may take up (the place, not where something goes through)
+_THERE_PREPS = {"on": "on", "onto": "on", "in": "in", "into": "in", "inside": "in"}
+_BE_WORDS = frozenset({"is", "are", "was", "were", "be", "been"})
+
+
+def _there_named(reader: _Reader, said: str, clauses: list[Clause], sentence: int) -> str:
+    """"Pillows are not to be left on the floor. Should a pillow have fallen there, ...", "Keep
+    the lead off the sofa; if the lead has been dropped there, ...": in a condition that names
+    a thing but no place, "there" after its verb is the place last named in the clause before (of
+    this sentence or the one before), read as that place. Not "there is" nor "is it there"."""
+    text = expand(said)
+    toks = tokens(text)
+    words = [w for w, _, _ in toks]
+    if "there" not in words:
+        return said
+    k = words.index("there")
+    mentions = reader.lex.find_mentions(toks)
+    if k == 0 or words[k + 1:k + 2] and words[k + 1] in _BE_WORDS or words[k - 1] in CLAUSE_WORDS \
+            or not any(m.kind == "role" and m.end <= k for m in mentions) \
+            or any(m.kind in ("role", "floor") and m.start > k for m in mentions):
+        return said
+    for cl in reversed(clauses):
+        if cl.sentence < sentence - 1:
+            break
+        ctoks = tokens(expand(cl.text))
+        cwords = [w for w, _, _ in ctoks]
+        places = [m for m in reader.lex.find_mentions(ctoks) if m.kind in ("role", "floor")]
+        for m in reversed(places):
+            j = m.start - 1
+            while j >= 0 and cwords[j] in ARTICLES:
+                j -= 1
+            if j >= 0 and cwords[j] in _THERE_PREPS:
+                name = " ".join(cwords[m.start:m.end])
+                return f"{text[:toks[k][1]]}{_THERE_PREPS[cwords[j]]} the {name}{text[toks[k][2]:]}"
+    return said
+
+
 def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     lex = Lexicon.build(brief, catalog)
     kinds = {name: cat for name, role in dict(brief.get("roles") or {}).items()
@@ -1615,7 +1692,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # the one before, speaks of the thing its main clause names
                 reader.topic, reader.topic_kind = ahead, "role"
             said = _BARE_EITHER.sub(r"\1 of them", said)
+            if role == "condition":
+                said = _there_named(reader, said, clauses, grammatical)
             facts, names = reader.facts("there is " + said if cue == "should there be" else said)
+            if role == "condition":
+                facts = _parallel(said, facts, clauses, grammatical)
             if cue == "if available" and not any(f.kind in ("location", "exists") and not f.home for f in facts):
                 facts += _available(reader, said)
             if role == "condition" and all(f.derived for f in facts) and pi + 1 < len(pieces) and (
@@ -1670,7 +1751,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     for ci, cl in enumerate(clauses):
         if cl.sentence != current_sentence:
             # ... unless it speaks of a situation of its own ("Finally, a dirty mirror is cleaned:")
-            carried = context if cl.role in ("statement", "consequence") and not any(
+            # ("Mirror dirty? Clean it. Use the cloth if we still have one.": an instruction
+            # standing alone after a question passes its conditions on)
+            carried = (context or carried) if cl.role in ("statement", "consequence") and not any(
                 not f.goal and not f.derived and not f.home for f in cl.facts) else []
             current_sentence, context = cl.sentence, []
         elif (cl.role == "condition" and ci >= 2 and clauses[ci - 1].role == "consequence"
@@ -1722,6 +1805,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                                                f.kind == "exists" and c[0][0] == f.subject)]
                                            or [c for c in carried if c[0] != slot and f.kind == "exists"]})
             entry.setdefault("places", set()).add((cl.sentence, ci))
+            entry["home"] = entry.get("home", True) and f.home and cl.role == "statement" and not (
+                {w for w, _, _ in tokens(cl.text)} & {"it", "they", "them", "one"})
             if cl.role == "condition":
                 value = f.condition.rsplit(", ", 1)[1][:-1] if f.kind == "attr" else f.key
                 # "unless it is already in the box, put it in: open the box first if ...": what
@@ -1752,7 +1837,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
 
     factors: list[Factor] = []
     slot_factor: dict[tuple[str, str, str], Factor] = {}
-    subjects_with_location = {s for (s, k, _) in found if k == "location"}
+    # (where a thing is kept is no place it is expected now: "Use the cloth if we still have one.
+    # The cloth lives in the vanity." still asks whether there is one)
+    subjects_with_location = {s for (s, k, _), e in found.items() if k == "location" and not e.get("home")}
     absence_stated = {f.subject for cl in clauses if cl.role in ("condition", "uncertain") for f in cl.facts
                       if f.kind == "exists" and not f.goal and (
                           f.negated and cl.role == "uncertain"
@@ -1897,16 +1984,21 @@ def _drop_home(f: Factor, kept: set[str]) -> None:
 def _contrasted(clauses: list[Clause], text: str) -> set[tuple[str, str]]:
     """(subject, key) of derived attributes the text contrasts, so that they decide something:
     an adjective said of the object both positively and negated (`a ripe one ..., one that is not
-    ripe ...`, `ripe` / `unripe`), a kind stated in a condition (`if it is a bill`) or set against
+    ripe ...`, `ripe` / `unripe`, `if it's ripe, ...; otherwise ...`), a kind stated in a condition (`if it is a bill`) or set against
     `other` objects of its sort (`any other document`)."""
     polarity: dict[tuple[str, str], set[bool]] = {}
     out: set[tuple[str, str]] = set()
     low = " " + " ".join(w for w, _, _ in tokens(expand(text))) + " "
-    for cl in clauses:
+    for ci, cl in enumerate(clauses):
+        # "if it's ripe, put it in the fridge; otherwise ...": an alternative answers the condition
+        answered = cl.role == "condition" and bool(cl.facts) and all(f.derived for f in cl.facts) and any(
+            c.role == "else" and c.sentence == cl.sentence for c in clauses[ci + 1:])
         for f in cl.facts:
             if not f.derived:
                 continue
             polarity.setdefault((f.subject, f.key), set()).add(f.negated)
+            if answered:
+                polarity[(f.subject, f.key)].add(not f.negated)
             if f.key == "kind" and (cl.role == "condition" or f" other {f.subject.replace('_', ' ')} " in low):
                 out.add((f.subject, f.key))
     return out | {s for s, pols in polarity.items() if len(pols) == 2}
@@ -1957,7 +2049,9 @@ def _group(factors: list[Factor],
     """Independent subtasks: factors on one subject, joined with factors of other subjects that
     the same sentence makes depend on them (`a dirty plate goes into the dishwasher, but when the
     dishwasher is running ...`), and a container's being open with the thing moved into it
-    (`_moves_into`). Subjects listed in one clause stay independent."""
+    (`_moves_into`), and a thing's place in a holder with the holder's state asked in the same
+    clause ("if there's a towel inside and the dryer has stopped"). Subjects listed in one clause
+    otherwise stay independent."""
     parent: dict[str, str] = {f.subject: f.subject for f in factors}
 
     def find(x: str) -> str:
@@ -1974,6 +2068,13 @@ def _group(factors: list[Factor],
                                                 for sb, cb in b.places):
                 # restated later in a sentence that makes them depend ("a dirty shirt goes into the
                 # machine, unless the machine is running")
+                parent[find(b.subject)] = find(a.subject)
+    for a in factors:
+        # "if there's a towel inside and the dryer has stopped": a thing's place in a holder and
+        # the holder's own state, asked in one clause, are one subtask
+        held = {x for v in a.values.values() for x in re.findall(r"\b(?:on|inside)\(\w+, (\w+)\)", v)}
+        for b in factors:
+            if a.kind == "location" and b.kind == "state" and b.subject in held and a.places & b.places:
                 parent[find(b.subject)] = find(a.subject)
     for moved, container in moves:
         if moved in parent and container in parent:

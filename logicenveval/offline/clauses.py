@@ -217,8 +217,14 @@ OBJECT_STARTS = ARTICLES | frozenset({"it", "them", "up", "out", "back", "away",
 _HEADING = re.compile(r"^(?P<head>[^:?\u2013]+?)(?P<mark>\?|:|\s+(?:-|\u2013)\s+)(?P<rest>.*)$", re.S)
 
 
+#: adverbs that may open an instruction before its verb ("just stick it in the sink")
+SOFTENERS = frozenset({"just", "simply"})
+
+
 def imperative(words: list[str]) -> bool:
     """The segment opens with a verb in its base form followed by its object or particle."""
+    if words[:1] and words[0] in SOFTENERS:
+        words = words[1:]  # "just chuck it in the sink", "simply hang it up"
     if len(words) < 2:
         return False
     lemmas = getAllLemmas(words[0]).get("VERB", ())
@@ -386,6 +392,8 @@ _NO_IMPERATIVE_AFTER = frozenset({
     "its", "this", "that", "these", "those", "in", "into", "onto", "at", "by", "of", "for", "from",
     "with", "under", "near", "behind", "beside", "next"})
 #: what makes the words before a cut a condition of their own: a copula, "there", a state word
+#: prepositions of motion that open an instruction whose verb is dropped ("into the basket")
+DIRECTIONS = frozenset({"into", "onto"})
 _PREDICATES = frozenset({"is", "are", "was", "were", "has", "have", "had", "there"}) | frozenset(STATE_WORDS)
 
 
@@ -403,7 +411,10 @@ def _imperative_cut(cond: str) -> int | None:
             continue
         if not {w.group() for w in ws[:k]} & _PREDICATES:
             continue
-        if imperative([ws[k].group(), ws[k + 1].group()]):
+        # a terse instruction with its verb dropped after a bare state ("if wet into laundry
+        # basket", "IF DIRTY ONTO THE PILE"): the direction starts it (`DIRECTIONS`)
+        bare = ws[k].group() in DIRECTIONS and ws[k - 1].group() in STATE_WORDS
+        if bare or imperative([ws[k].group(), ws[k + 1].group()]):
             # the same words in the text as written (the expansion only lengthens what is before)
             rest = said[ws[k].start():]
             at = cond.lower().rfind(rest)

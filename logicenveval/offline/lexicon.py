@@ -111,6 +111,11 @@ def _spare(role: str) -> bool:
     return len(told) > 1 and told[0] in SPARE_WORDS
 
 
+#: nouns of time that make the name before them a time ("on bin day", "on trash day", "at bath
+#: time", "laundry day"): a noun modifying its head, which names no object
+TIME_HEADS = frozenset({"day", "night", "week", "morning", "evening", "time", "weekend"})
+
+
 def words_of(name: str) -> tuple[str, ...]:
     return tuple(singular(w) for w in WORD.findall(name.lower().replace("_", " ")))
 
@@ -255,6 +260,10 @@ class Lexicon:
                     break
             if found is None and words[i] == "floor":
                 found = Mention(("floor",), i, i + 1, "floor")
+            if found is not None and found.kind == "role" and words[found.end:found.end + 1] and \
+                    words[found.end] in TIME_HEADS:
+                i = found.end + 1  # "on trash day", "bath time": a time, not the thing
+                continue
             if found is not None:
                 out.append(found)
                 i = found.end

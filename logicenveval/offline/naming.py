@@ -84,7 +84,10 @@ _POSSESSIVES = frozenset({"its", "their", "his", "her", "your", "my", "our"})
 KIND_ATTRIBUTES = ("kind",)
 #: the openers of a run of parallel sentences that sort things by kind, one kind each ("A novel
 #: goes ... A textbook goes ... Any other book goes ..."), and how many sentences a run may take
-_RUN_OPENERS = frozenset({"a", "an", "any"})
+_RUN_OPENERS = frozenset({"a", "an", "any", "every", "each"})
+#: determiners of a singular that may stand for its whole class ("a doll", "every doll goes into
+#: the red box")
+_GENERIC_ONE = frozenset({"a", "an", "every", "each"})
 _RUN = 4
 #: words too common to say which of several categories a bare noun means
 _NOT_CONTEXT = frozenset({"floor", "wall", "ceiling", "room"})
@@ -660,7 +663,7 @@ class _Reader:
         head = words[i + n - 1]
         kinds = [c for c in self.recent for key in KIND_ATTRIBUTES
                  if head in self.catalog.categories[c].attributes.get(key, ())]
-        if prev in ("a", "an") and self.text.raw[i + n - 1] == head:
+        if prev in _GENERIC_ONE and self.text.raw[i + n - 1] == head:
             # "a doll into the red toy box; ... any other toy into the green one": an indefinite
             # one set against "other <kind>" in its sentence is a class of that kind too, or in a
             # run of sentences that each open with one ("A novel goes on the bookshelf. A

@@ -278,7 +278,9 @@ def _read_sentence(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Re
             _possessive(sent, clause, ms, lex, catalog, reading)
         if clause.mood == "statement" and not clause.doubted:
             _existential(sent, clause, ms, lex, catalog, reading)
-            _where(sent, clause, ms, lex, catalog, reading)
+        if clause.mood != "condition" and not clause.doubted:
+            # in an instruction only a home: "take a spare roll from the vanity where spares are kept"
+            _where(sent, clause, ms, lex, catalog, reading, homes_only=clause.mood == "instruction")
         if clause.mood != "condition" and not clause.doubted:
             _kept(sent, clause, ms, lex, catalog, reading)
         if clause.mood == "statement" and not clause.doubted:
@@ -609,7 +611,9 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
                 continue
             if not kind:
                 continue
-        found = _holder_after(sent, ms, end, clause.end)
+        found = _holder_after(sent, ms, end, clause.end) or _pronoun_holder(sent, clause, end, lex, reading)
+        if found is None and kind == "settled" and group[-1] in PLACE_PRONOUNS and subjects:
+            found = _place_back(sent, subjects[0].start)
         if found is None:
             continue
         if words[clause.start] in RELATIVE and not subjects:
@@ -653,8 +657,37 @@ def _fragment(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
                for k, w in enumerate(words[clause.start:j], clause.start)):
         return
     for m in subjects:
+        if _generic(sent, m):
+            continue  # "Toys on the floor!": a heading about a class, no statement of where one is
         for role in _roles(m, sent):
             _put(reading, "settled", catalog, lex, role, found[1], found[0])
+
+
+def _pronoun_holder(sent: _Sentence, clause: Span, j: int, lex: Lexicon,
+                    reading: _Reading) -> tuple[str, Mention] | None:
+    """(preposition, place) for "on it" / "in it" after a verb of resting: "a nightstand (the lamp
+    stands on it)", "There is a shelf by the door. The keys lie on it.": the nearest thing before
+    the clause that can hold things (in its sentence, else the last statement's subject)."""
+    words = sent.words
+    if j + 1 >= clause.end or words[j] not in AT or words[j + 1] != "it":
+        return None
+    before = [m for m in sent.mentions if m.end <= clause.start and m.kind == "role"]
+    for m in (*reversed(before), reading.last_subject):
+        if m is not None and m.kind == "role" and len(m.roles) == 1 and m.roles[0] in lex.holders:
+            return words[j], Mention(m.roles, j + 1, j + 2, m.kind)  # where "it" stands
+    return None
+
+
+def _place_back(sent: _Sentence, before: int) -> tuple[str, Mention] | None:
+    """("in", room) for a statement ending in "there": "Back of house is the kitchen, straight
+    through from the dining room: the sink, a cabinet and the bin are all back there", "The
+    garage is behind the hallway; the bike and the mower are out there": the nearest room named
+    before the statement's subject in its sentence, but one named as a source ("from the dining
+    room")."""
+    for m in reversed([m for m in sent.mentions if m.end <= before and m.kind == "room"]):
+        if _prep_before(sent.words, m.start) not in SOURCE:
+            return "in", m
+    return None
 
 
 def _finite(group: list[str]) -> bool:
@@ -715,27 +748,50 @@ def _possessive(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, 
     the clause's subject (its first noun not after a preposition; "it" for the room or thing last
     spoken of) holds the list after the verb."""
     words = sent.words
+    lo = clause.start
     for i in range(clause.start, clause.end):
-        if words[i] not in HAVE_VERBS or words[i + 1: i + 2] == ["been"] or words[i + 1: i + 2] == ["to"]:
+        if i < lo or words[i] not in HAVE_VERBS or words[i + 1: i + 2] == ["been"] or words[i + 1: i + 2] == ["to"]:
             continue
-        before = _np_list(sent, [m for m in ms if m.kind in ("role", "room")], clause.start, i)
+        before = _np_list(sent, [m for m in ms if m.kind in ("role", "room")], lo, i)
         owner: Mention | None = before[0] if before else None
-        if owner is None and set(words[clause.start:i]) & THING_PRONOUNS:
+        if owner is None and set(words[lo:i]) & THING_PRONOUNS:
             owner = reading.last_subject
         if owner is None or owner.kind == "role" and len(owner.roles) != 1:
             return
-        if before and before[0].start > clause.start and words[before[0].start - 1] in ("we", "i", "you"):
+        if before and before[0].start > lo and words[before[0].start - 1] in ("we", "i", "you"):
             return
         if before and not _modifies(words[owner.end:i]):
             return  # "the bookshelf's three levels hold ...": the subject is another noun
-        items = _np_list(sent, ms, i + 1, clause.end)
+        stop = _next_owner(sent, ms, i + 1, clause.end)
+        items = _np_list(sent, ms, i + 1, stop)
         for m in items:
             if _generic(sent, m):
                 continue  # "hold novels, essays and other books": kinds, not things
             for role in _roles(m, sent):
                 if role != owner.roles[0]:
                     _put(reading, "settled", catalog, lex, role, owner, "in")
-        return
+        if stop == clause.end:
+            return
+        lo = stop
+
+
+def _next_owner(sent: _Sentence, ms: list[Mention], lo: int, hi: int) -> int:
+    """Where the list after a possessive verb ends: at a comma or "and" before another subject
+    and its own possessive verb ("the kitchen holds the bin and the fridge, the living room has a
+    sofa"); `hi` when none follows."""
+    words = sent.words
+    for m in ms:
+        if m.start < lo or m.kind not in ("room", "role"):
+            continue
+        j = m.end
+        while j < hi and words[j] in ADVERBS:
+            j += 1
+        k = m.start - 1
+        while k >= lo and words[k] in ARTICLES:
+            k -= 1
+        if j < hi and words[j] in HAVE_VERBS and k >= lo and words[k] in (",", "and", ";"):
+            return k
+    return hi
 
 
 #: words that open a modifier after a noun ("the pantry next to the kitchen", "the kitchen, …, has")
@@ -780,7 +836,7 @@ def _existential(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon,
 
 
 def _where(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
-           reading: _Reading) -> None:
+           reading: _Reading, *, homes_only: bool = False) -> None:
     """"the kitchen, where the dishwasher, the sink ... are", "a nightstand on which a lamp
     stands", "that's where the dishwasher ... are", "it's where the flashlight lives", "the
     vanity, where the spares are kept": the list of the relative clause is at its antecedent (the
@@ -807,6 +863,8 @@ def _where(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catal
         if doubts(words[i + 1:stop]) or not set(words[i + 1:stop]) & (BE | STATIVE | KEEP_VERBS):
             continue  # "where a pan may be"; "where a dirty mug goes" (a goal)
         kind = "kept" if set(words[i + 1:stop]) & KEEP_VERBS else "settled"
+        if homes_only and kind != "kept":
+            continue
         items = _np_list(sent, ms, i + 1, stop)
         for m in items:
             for role in _roles(m, sent):

@@ -38,7 +38,10 @@ PERSONAL_SUBJECTS = frozenset({"i", "we", "you", "he", "she", "they"})
 #: action verbs before an object: a location after the object is a goal
 ACTIONS = frozenset(
     ["put", "place", "move", "take", "bring", "return", "carry", "drop", "set", "lay", "stand", "hang", "throw", "toss", "tuck", "store", "stow", "leave", "fold", "bin", "transfer", "slide", "shove", "push", "pour", "empty", "fill", "refill", "sort", "give", "file", "load", "unload", "shelve",
-     "pack", "stack", "deliver"]
+     "pack", "stack", "deliver",
+     # informal "put" (Oxford: stick, "put (something) somewhere in a quick or careless way"):
+     # "then just stick it in the sink"
+     "stick"]
 )
 PREP_ON = frozenset({"on", "onto", "atop", "upon"})
 #: what a carried thing comes in: "Tin foil: in case the roll has fallen", "Sunscreen - if the
@@ -195,6 +198,23 @@ def _state_subject(m: re.Match[str]) -> str:
     return f"{m.group(1)}if {'they are' if plural else 'it is'} {m.group(2)}, {'they' if plural else 'it'} {m.group(3)}"
 
 
+#: a bare state word and a comma before an instruction ("If there's an umbrella: wet, stand it in
+#: the umbrella stand; dry, lay it on the console table"): the case of the thing spoken of, as
+#: "if it is wet, ..." (the verb of putting after the comma, `ACTIONS`)
+_STATE_CASE = re.compile(
+    rf"(?:(?<=^)|(?<=[.!?;:\n]))(\s*)({'|'.join(w for w, (flag, _) in STATE_WORDS.items() if flag in ('dirty', 'wet'))})"
+    rf",\s+(?=(?:just\s+)?(?:{'|'.join(sorted(ACTIONS))})\b)", re.I | re.M)
+
+
+#: "any other kind of toy", "every other sort of book": the class itself ("any other toy")
+_KIND_OF = re.compile(r"\b(other)\s+(?:kind|sort|type)s?\s+of\s+", re.I)
+
+
+def _state_case(m: re.Match[str]) -> str:
+    plural = re.match(r"\s*(?:just\s+)?[a-z]+\s+them\b", m.string[m.end():], re.I) is not None
+    return f"{m.group(1)}if {'they are' if plural else 'it is'} {m.group(2)}, "
+
+
 #: an indirect question about an action whose result is a state ("I can't remember whether I shut
 #: the fridge door", "not sure if we switched the heater off"): the question is the state of the
 #: thing acted on ("whether the fridge door is shut"), as a direct question would put it
@@ -328,6 +348,42 @@ _VARIANT = re.compile(rf"\b(?:{'|'.join(VARIANTS)})\b", re.I)
 _POLITE = re.compile(r"\bbe (?:so )?(?:good|kind)(?: enough to| as to)\s+", re.I)
 
 
+#: state words that are states only as a predicate, after a form of "be" at a clause's end: "the
+#: dishwasher's already going", "if it's still going" (Merriam-Webster, "going" adj.: "running,
+#: working"); elsewhere they are verbs ("it's going in the bin", "going to bed")
+PREDICATE_STATES = {"going": "running"}
+_PREDICATE_STATE = re.compile(
+    rf"((?:\b(?:is|are|was|were|be)|'s|\u2019s)(?:\s+(?:still|already|just|now))*\s+|\b(?:still|already)\s+)"
+    rf"({'|'.join(PREDICATE_STATES)})"
+    r"(?=\s*(?:[,.;:!?)]|$|\s(?:then|and|or|but|so)\b))", re.I | re.M)
+
+
+#: a telegram's words for its punctuation (Oxford: stop, "(in telegrams) a full stop"; query,
+#: "a question mark"), read only in a text that ends two sentences or more with "STOP" in capitals
+TELEGRAM_MARKS = {"STOP": ".", "QUERY": "?"}
+_TELEGRAM_MARK = re.compile(rf"\s+\b({'|'.join(TELEGRAM_MARKS)})\b(?=\s|$)")
+
+
+def _telegram(text: str) -> str:
+    """A telegram's "STOP" and "QUERY" as the full stop and question mark they stand for."""
+    if len(re.findall(r"\bSTOP\b", text)) < 2:
+        return text
+    return _TELEGRAM_MARK.sub(lambda m: TELEGRAM_MARKS[m.group(1)], text)
+
+
+#: "No roll by the toilet then take a spare", "no bag in the bin then fetch one": a sentence that
+#: opens with "no" and a noun phrase, then "then" and an instruction, asks whether there is one
+#: (as "No roll by the toilet? Then take a spare" does)
+_NO_THEN = re.compile(r"(^|[.!?;:]\s+|\n\s*)(no\s+[a-z]+(?:\s+[a-z]+){0,5}?)\s+then\s+(?=[a-z])", re.I)
+
+
+def _no_then(m: re.Match[str]) -> str:
+    words = m.group(2).lower().split()
+    if set(words[1:]) & (ACTIONS | {"is", "are", "was", "were", "need", "needs", "one", "way", "matter"}):
+        return m.group(0)  # "No need to ... then", "no matter then": no noun phrase
+    return f"{m.group(1)}{m.group(2)}? {_match_case(m.group(0)[len(m.group(1)):], 'then')} "
+
+
 def _match_case(said: str, word: str) -> str:
     """`word` with the first letter's case of `said` (a sentence's opening word stays capitalised)."""
     return word.capitalize() if said[:1].isupper() else word
@@ -349,17 +405,24 @@ def unquote(text: str) -> str:
     the fridge door is shut"), a note-taker's shorthand spelled out ("resp.", "&", `_SHORTHAND`), and a doubt about having got a thing as one about whether there is
     one ("not sure I even got bread": "there may or may not be bread"); a condition's elided
     subject spelled out
-    ("if found on" -> "if it is found on"); a table of items and places as its sentences
+    ("if found on" -> "if it is found on"); a telegram's "STOP" and "QUERY" as "." and "?"
+    (`TELEGRAM_MARKS`); "No X by the Y then ..." as the question "No X by the Y? Then ..."
+    (`_NO_THEN`); a bare state and a comma before an instruction as its condition ("wet, stand
+    it in the stand": `_STATE_CASE`); "other kind of toy" as "other toy" (`_KIND_OF`); a state word said only as a predicate in its state's
+    common word ("the dishwasher's already going": "running", `PREDICATE_STATES`); a table of items and places as its sentences
     (`detable`); a heading answered by a verb with no subject of its own with the heading as that
     subject (`_SUBJECTLESS`)."""
+    text = _NO_THEN.sub(_no_then, _telegram(text))
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), VARIANTS[m.group(0).lower()]), text))
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
     plain = _IF_ANY.sub(_if_any, plain)
     plain = _FRONTED_ALREADY.sub(_postposed, plain)
     plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", plain))))
     plain = _unabbreviated(plain)
+    plain = _PREDICATE_STATE.sub(lambda m: m.group(1) + PREDICATE_STATES[m.group(2).lower()], plain)
     plain = _ACTED_STATE.sub(_acted_state, _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", plain)))
     plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)
+    plain = _KIND_OF.sub(r"\1 ", _STATE_CASE.sub(_state_case, plain))
     return _SUBJECTLESS.sub(r"\1\2\3the \2 \4", detable(_STATE_SUBJECT.sub(_state_subject, plain)))
 
 
