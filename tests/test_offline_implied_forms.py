@@ -11,7 +11,7 @@ from typing import Any
 import pytest
 
 from logicenveval.domain.catalog import load_catalog
-from logicenveval.offline.analysis import analyse
+from logicenveval.offline.analysis import _ensured, analyse
 from logicenveval.offline.naming import name_objects
 from logicenveval.offline.placement import described_placements
 
@@ -130,6 +130,8 @@ def test_that_someone_used_a_thing_says_it_is_dirty(text: str, rooms: tuple[str,
 
 def test_using_a_thing_in_an_instruction_says_nothing_of_its_dirt() -> None:
     assert not _asks("Use the cloth to wipe the desk if the desk is dirty.", ("study",), "state(cloth, dirty)")
+    # nor using a machine: a used dishwasher is no dirty one
+    assert not _asks("If you used the dishwasher, empty it.", ("kitchen",), "state(dishwasher, dirty)")
 
 
 def test_then_before_an_imperative_keeps_its_goal() -> None:
@@ -225,3 +227,11 @@ def test_it_after_a_plural_topic_taken_up_as_it_stays_the_topic() -> None:
                                                 "It is dirty? Wash it.", ("bedroom",)), load_catalog()).clauses
             for f in c.facts}
     assert not any("wardrobe, dirty" in f for f in said)
+
+
+def test_make_sure_of_a_place_or_seeing_a_state_asks_no_state() -> None:
+    """"make sure the book is on the shelf" says where it goes, "see that the TV is on?" points a
+    thing out: neither reads as "if it is not on" (`analysis._ENSURE`)."""
+    assert _ensured("Make sure the book is on the shelf.") == "Make sure the book is on the shelf."
+    assert _ensured("See that the TV is on? Switch it off.") == "See that the TV is on? Switch it off."
+    assert _ensured("Make sure the lamp is off.").startswith("if the lamp is not off")

@@ -1001,8 +1001,10 @@ class _Reader:
             return []
         before = [w for w in words[:j] if w not in LEAD_INS]
         if before[-1:] and before[-1] in USERS or not before and words[j] == "used":
-            return [Fact(r, f"state({r}, dirty)", "state", "dirty", negated=negated)
-                    for r in m.roles if "dirty" not in FITTED or "dirty" in self.capable.get(r, FITTED)]
+            # (a carried thing: a used towel or mug is dirty, a used dishwasher is not)
+            return [Fact(r, f"state({r}, dirty)", "state", "dirty", negated=negated) for r in m.roles
+                    if ("dirty" not in FITTED or "dirty" in self.capable.get(r, FITTED))
+                    and (kind := self.kinds.get(r)) is not None and kind.pickable]
         return []
 
     def _pp_at(self, words: list[str], k: int) -> int:
@@ -1595,10 +1597,13 @@ def _checked(sentence: str, lex: Lexicon, kinds: Mapping[str, Category]) -> str:
 #: "please make sure it's switched off before you leave", "ensure the curtains are open": an
 #: instruction to see that a thing is in a state says it may not be, as "if it is not switched
 #: off, make it switched off" does; the verbs that ask it and the states they ask of
-_ENSURE = re.compile(r"(?P<lead>^\W*|\s[-\u2013\u2014]\s+|[;:,]\s*)(?:please\s+)?(?:make sure|ensure|see to it|see that|"
+#: ("see that the TV is on?" points a thing out, `placement.PERCEIVE`; "make sure the book is on
+#: the shelf" says where it goes: no state before a place)
+_ENSURE = re.compile(r"(?P<lead>^\W*|\s[-\u2013\u2014]\s+|[;:,]\s*)(?:please\s+)?(?:make sure|ensure|see to it|"
                      r"check that)\s+(?:that\s+)?(?P<subj>it|they|(?:the|your|my)\s+[a-z][a-z ]*?)"
                      r"(?:\s+(?P<be>is|are)|(?P<short>['\u2019](?:s|re)))\s+(?P<state>(?:switched|turned|left|shut|powered)\s+(?:off|on|open|down)"
-                     r"|off|on|open|closed|shut|locked|unlocked)\b[^.;!?]*", re.I)
+                     r"|off|on|open|closed|shut|locked|unlocked)\b(?!\s+(?:the|a|an|its|their|your|my|top|to|of)\b)"
+                     r"[^.;!?]*", re.I)
 
 
 def _ensured(sentence: str) -> str:
