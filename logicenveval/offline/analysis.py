@@ -29,6 +29,7 @@ from logicenveval.offline.clauses import (
     AVAILABILITY,
     CLAUSE_WORDS,
     FINITE_VERBS,
+    LEAD_INS,
     NEGATIONS,
     OBJECT_STARTS,
     PLACE_PREPS,
@@ -128,6 +129,10 @@ ELSEWHERE = ("anywhere else", "elsewhere", "somewhere else", "any other place", 
 #: verb particles between an object and its place ("rolled out onto the floor")
 PARTICLES = frozenset({"out", "down", "over", "around", "away", "about"})
 SOURCE_VERBS = frozenset({"fill", "refill", "pour", "top", "water", "feed"})
+#: the forms of "use" and what may stand before them when someone's using a thing is said
+#: (`_Reader._used`: "if you didn't use it", "have you used the mug?")
+USING = frozenset({"used", "use", "using"})
+USERS = frozenset({"you", "i", "we", "they", "someone", "somebody", "not", "never", "have", "has", "had", "been"})
 #: verbs that say a thing has come to be there ("if a parcel has arrived")
 ARRIVALS = frozenset({"arrived", "come", "turned", "appeared", "shown", "showed", "been", "behind"})
 #: words that say an object is absent: "the roll is missing"
@@ -370,6 +375,12 @@ class _Reader:
         self.heading_topic: tuple[str, ...] = ()
         #: roles last named in the plural ("the wet wipes"), for "they" / "them"
         self.plural: set[str] = set()
+        #: role -> whether the last pronoun that took it up was plural ("them", not "it"): a topic
+        #: named in the plural and still taken up so is none an "it" speaks of
+        self.plural_ref: dict[str, bool] = {}
+        #: the clause read starts with the reader's own "it" ("dry:" read as "it is dry", "-> on
+        #: the rack" as "it goes on the rack"): the topic it set, whatever its number
+        self.own_it = False
         #: the last clause joined things with "and" ("the pillow ... and the toy ..."): "they" is them
         self.coordinated = False
         #: the words of the clause being read that a comma stands before (`_joined`)
@@ -491,6 +502,15 @@ class _Reader:
                 # pronoun speaks of what the clause's earlier pronoun meant
                 prior = [p for p in found if p.kind == "pronoun" and p.start < i]
                 found.append(Mention(prior[-1].roles, i, i + 1, "pronoun"))
+            elif w in ("it", "its") and not (self.own_it and i == 0) and self.topic_kind == "role" \
+                    and set(self.topic) <= self.plural \
+                    and all(self.plural_ref.get(r, True) for r in self.topic) \
+                    and self.recent and self.recent[-1] not in self.plural and self.recent[-1] not in self.topic:
+                # "Sandy jandals on the floor? Biff them in the bucket. It's the red one": "it" is
+                # the nearest thing named in the singular, not a topic named in the plural; the
+                # clause's later "one", "it" speak of it too
+                self.topic = (self.recent[-1],)
+                found.append(Mention(self.topic, i, i + 1, "pronoun"))
             elif self.topic:
                 found.append(Mention(self.topic, i, i + 1, "pronoun" if self.topic_kind == "role" else "floor"))
         found.sort(key=lambda m: m.start)
@@ -508,6 +528,11 @@ class _Reader:
         for m in found:
             if m.kind in ("role", "pronoun"):
                 self.recent = [r for r in self.recent if r not in m.roles] + list(m.roles)
+            for r in m.roles if m.kind in ("role", "pronoun") else ():
+                if m.kind == "pronoun":
+                    self.plural_ref[r] = words[m.start] in ("they", "them", "their", "ones")
+                else:
+                    self.plural_ref.pop(r, None)
         first = next((m for m in found if m.kind in ("role", "floor", "pronoun")), None)
         first = _direct_object(words, found, first)
         first = _later_object(words, found, self.commas) or first
@@ -566,6 +591,7 @@ class _Reader:
                 # (unless a relative clause speaks of the place: "in the wardrobe, which is open")
                 facts += self._state(words, m, negated)
             facts += self._attribute(words, m, negated)
+            facts += self._used(words, m, negated)
         if any(p in " ".join(words) for p in ELSEWHERE) and subjects:
             for r in subjects[0].roles:
                 base = self.last_location.get(r)
@@ -823,9 +849,10 @@ class _Reader:
         # "pop it on the desk": where an imperative's object goes ("a pack of wipes on the
         # table" is no action: the word after an article is a noun)
         verbs = [w for i, w in enumerate(before) if w in ACTIONS and not (i > 0 and before[i - 1] in ARTICLES)]
-        first = 2 if words[:1] and words[0] in SOFTENERS else 1  # "just dump it in the basket"
+        # (after words that say nothing of the mood: "Then pop it in the laundry basket", "simply hang it up")
+        lead = next((i for i, w in enumerate(words) if w not in LEAD_INS | SOFTENERS), len(words))
         return bool(set(skipped) & MOTION) or bool(verbs) or (
-            m.start >= first and imperative(words) and all(w in ARTICLES for w in words[first : m.start]))
+            m.start > lead and imperative(words[lead:]) and all(w in ARTICLES for w in words[lead + 1 : m.start]))
 
     def _location(self, words: list[str], mentions: list[Mention], idx: int, negated: bool) -> list[Fact]:
         m = mentions[idx]
@@ -975,6 +1002,24 @@ class _Reader:
                 out.append(Fact(r, f"state({r}, {flag})", "state", flag, negated=neg != (not pol),
                                 modifier=modifier))
         return out
+
+    def _used(self, words: list[str], m: Mention, negated: bool) -> list[Fact]:
+        """"Used the bath towel?", "if you didn't use it", "have you used the mug?": that someone
+        used a thing says it is dirty, as "a used towel" does (`STATE_WORDS`): a verb of using
+        (`USING`) right before the thing, opening the clause or after its subject or negation
+        ("use the sponge" is an instruction, "the cloth is used" a passive: neither)."""
+        j = m.start - 1
+        while j >= 0 and words[j] in ARTICLES:
+            j -= 1
+        if m.kind not in ("role", "pronoun") or j < 0 or words[j] not in USING:
+            return []
+        before = [w for w in words[:j] if w not in LEAD_INS]
+        if before[-1:] and before[-1] in USERS or not before and words[j] == "used":
+            # (a carried thing: a used towel or mug is dirty, a used dishwasher is not)
+            return [Fact(r, f"state({r}, dirty)", "state", "dirty", negated=negated) for r in m.roles
+                    if ("dirty" not in FITTED or "dirty" in self.capable.get(r, FITTED))
+                    and (kind := self.kinds.get(r)) is not None and kind.pickable]
+        return []
 
     def _pp_at(self, words: list[str], k: int) -> int:
         """End of a short prepositional phrase `on the coffee table` starting at k, else 0."""
@@ -1299,11 +1344,18 @@ def _goes(reader: _Reader, text: str) -> bool:
                                            for m in reader.lex.find_mentions(toks))
 
 
-def _bare_goal(reader: _Reader, text: str) -> str | None:
+#: a purpose after a bare goal ("Dirty -> laundry basket for wardrobe dept."): who or what the
+#: place is for, no second thing spoken of
+_PURPOSE = re.compile(r"\s+for\s+[^,;:.!?]*?(?=[.!;]?\s*$)", re.I)
+
+
+def _bare_goal(reader: _Reader, text: str) -> tuple[str, str] | None:
     """An instruction that is only the name of something that holds things ("dirty? kitchen
-    sink.", "wet -> laundry basket", a note's shorthand): where the thing spoken of goes, as if
-    its preposition were said ("in" a container that is no surface, else "on"); None for any other
-    text, or when nothing is spoken of."""
+    sink.", "wet -> laundry basket", a note's shorthand, "Dirty -> laundry basket for wardrobe
+    dept.": its purpose `_PURPOSE` dropped): where the thing spoken of goes, as if its
+    preposition were said ("in" a container that is no surface, else "on"), and the text without
+    the purpose; None for any other text, or when nothing is spoken of."""
+    text = _PURPOSE.sub("", text)
     toks = tokens(expand(text))
     words = [w for w, _, _ in toks]
     found = reader.lex.find_mentions(toks)
@@ -1316,7 +1368,7 @@ def _bare_goal(reader: _Reader, text: str) -> str | None:
     kind = reader.kinds.get(roles[0].roles[0])
     if kind is None or not (kind.container or kind.surface):
         return None
-    return "in" if kind.container and not kind.surface else "on"
+    return ("in" if kind.container and not kind.surface else "on"), text
 
 
 def _available(reader: _Reader, text: str) -> list[Fact]:
@@ -1434,7 +1486,11 @@ def _read_heading(reader: _Reader, text: str) -> tuple[list[Fact], tuple[str, ..
     # "Bath towel on the floor? Wet: into the basket. Dry: ...": said of the last heading's
     # object, whatever the instructions between named
     reader.topic, reader.topic_kind = reader.heading_topic or reader.topic, "role"
-    return reader.facts("it is " + text)
+    reader.own_it = True
+    try:
+        return reader.facts("it is " + text)
+    finally:
+        reader.own_it = False
 
 
 #: state flags only some kinds of thing take (a shirt does not open, a towel is not switched on),
@@ -1614,13 +1670,35 @@ def _there_named(reader: _Reader, said: str, clauses: list[Clause], sentence: in
     return said
 
 
+#: "please make sure it's switched off before you leave", "ensure the curtains are open": an
+#: instruction to see that a thing is in a state says it may not be, as "if it is not switched
+#: off, make it switched off" does; the verbs that ask it and the states they ask of
+#: ("see that the TV is on?" points a thing out, `placement.PERCEIVE`; "make sure the book is on
+#: the shelf" says where it goes: no state before a place)
+_ENSURE = re.compile(r"(?P<lead>^\W*|\s[-\u2013\u2014]\s+|[;:,]\s*)(?:please\s+)?(?:make sure|ensure|see to it|"
+                     r"check that)\s+(?:that\s+)?(?P<subj>it|they|(?:the|your|my)\s+[a-z][a-z ]*?)"
+                     r"(?:\s+(?P<be>is|are)|(?P<short>['\u2019](?:s|re)))\s+(?P<state>(?:switched|turned|left|shut|powered)\s+(?:off|on|open|down)"
+                     r"|off|on|open|closed|shut|locked|unlocked)\b(?!\s+(?:the|a|an|its|their|your|my|top|to|of)\b)"
+                     r"[^.;!?]*", re.I)
+
+
+def _ensured(sentence: str) -> str:
+    """"... - please make sure it's switched off before you leave." as the condition it implies,
+    "... - if it is not switched off, make it switched off." (`_ENSURE`)."""
+    def plain(m: re.Match[str]) -> str:
+        be = m.group("be") or ("is" if m.group("short")[1:].lower() == "s" else "are")
+        subj, state = m.group("subj"), m.group("state")
+        return f"{m.group('lead')}if {subj} {be} not {state}, make {subj} {state}"
+    return _ENSURE.sub(plain, sentence)
+
+
 def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     lex = Lexicon.build(brief, catalog)
     kinds = {name: cat for name, role in dict(brief.get("roles") or {}).items()
              if (cat := catalog.get(str(role.get("category", "")))) is not None}
     reader = _Reader(lex, _capabilities(brief, catalog), kinds)
     categories = {name: str(role.get("category", "")) for name, role in dict(brief.get("roles") or {}).items()}
-    sentences = [_checked(sent, lex, kinds) for sent in split_sentences(unquote(str(brief["description"])))]
+    sentences = [_ensured(_checked(sent, lex, kinds)) for sent in split_sentences(unquote(str(brief["description"])))]
     clauses: list[Clause] = []
     grammatical = 0  # pieces split at ':' or ';' still belong to one sentence for grouping
     headed = -1  # the sentence whose heading ("Shirt on the floor:") the pieces after it answer
@@ -1675,11 +1753,12 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 said = said.split(")")[0]  # "(open the wardrobe if the door's shut) and shut it": the aside ends
             if role in ("consequence", "else", "statement"):
                 said = _TELEGRAPHIC.sub(_telegraphic, said)  # "open washing machine": "open the washing machine"
+            own = False  # the reader's own "it" (`_Reader.own_it`)
             if role == "consequence" and _goes(reader, said):
-                said = f"it goes {said}"  # "dry: on the shoe rack", "clean - onto the armchair"
+                said, own = f"it goes {said}", True  # "dry: on the shoe rack", "clean - onto the armchair"
             elif (role == "consequence" or role == "statement" and clauses and clauses[-1].role == "condition"
-                  and clauses[-1].cue == "?") and (prep := _bare_goal(reader, said)):
-                said = f"it goes {prep} {said}"  # "dirty? kitchen sink.", "wet -> laundry basket"
+                  and clauses[-1].cue == "?") and (bare := _bare_goal(reader, said)):
+                said, own = f"it goes {bare[0]} {bare[1]}", True  # "dirty? kitchen sink.", "wet -> laundry basket"
             if place[0] == grammatical:
                 said = f"{said.rstrip(' .;,')} {place[1]}"
                 doubt = bool({w for w, _, _ in tokens(place[1])} & UNCERTAIN)
@@ -1692,9 +1771,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # the one before, speaks of the thing its main clause names
                 reader.topic, reader.topic_kind = ahead, "role"
             said = _BARE_EITHER.sub(r"\1 of them", said)
+            reader.own_it = own
             if role == "condition":
                 said = _there_named(reader, said, clauses, grammatical)
             facts, names = reader.facts("there is " + said if cue == "should there be" else said)
+            reader.own_it = False
             if role == "condition":
                 facts = _parallel(said, facts, clauses, grammatical)
             if cue == "if available" and not any(f.kind in ("location", "exists") and not f.home for f in facts):

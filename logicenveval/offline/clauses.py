@@ -103,7 +103,7 @@ REQUESTS = frozenset({"could", "can", "would", "will", "might"})
 PUNCT = frozenset({",", ";", ":", "(", ")", "-", "?"})
 _HARD = frozenset({";", "(", ")", "-", "?", ":"})
 #: words before a clause's first word that say nothing of its mood ("and then put ...")
-_LEAD_INS = frozenset({"and", "then", "please", "just", "also", "so", "now", "first", "last", "oh", "right",
+LEAD_INS = frozenset({"and", "then", "please", "just", "also", "so", "now", "first", "last", "oh", "right",
                        "but", "or"})
 
 
@@ -526,7 +526,7 @@ def clause_spans(words: list[str], lo: int, hi: int, *, verbs: frozenset[str],
         elif w == "," and any(c > lo and words[c] in SUBORDINATORS | {"in"} for c in cuts[-1:]):
             cuts.append(i + 1)  # the end of a fronted condition: "If the pan is hot, ..."
         elif w == "," and nxt in ("the", "a", "an") and _finite_after(words, i + 1, hi, verbs) and next(
-                (x for x in words[cuts[-1]:i] if x not in _LEAD_INS and x not in PUNCT), "") in IMPERATIVES:
+                (x for x in words[cuts[-1]:i] if x not in LEAD_INS and x not in PUNCT), "") in IMPERATIVES:
             # "empty it, the bag is in the cupboard": after an instruction, a comma before a subject
             # and its verb ends a clause, as the text cut ends a consequence there (a verbless ", the
             # pen on the desk" goes on with its verb; a list "the sink, the fridge ... are" is one)
@@ -547,7 +547,7 @@ def clause_spans(words: list[str], lo: int, hi: int, *, verbs: frozenset[str],
         follows_goal = (a > 0 and words[a - 1] in ("-", ":") and not set(body) & verbs and bool(out)
                         and (out[-1].mood == "instruction" or _says_goal(words[out[-1].start:out[-1].end],
                                                                            goal_words)))
-        first = next((w for w in body if w not in _LEAD_INS), "")
+        first = next((w for w in body if w not in LEAD_INS), "")
         if first in SUBORDINATORS or body[:2] == ["in", "case"] or question:
             mood = "condition"
         elif first in IMPERATIVES or body[0] in REQUESTS and body[1:2] == ["you"] or follows_goal:
@@ -577,7 +577,7 @@ def _says_goal(words: list[str], goal_words: frozenset[str]) -> bool:
 def _conditional_after(words: list[str], start: int, hi: int) -> bool:
     """Whether the clause from `start` opens with a conditional ("towel on the shelves: if it's
     dirty -> ..."): the heading before it then only says what is spoken of and where it is."""
-    body = [w for w in words[start:hi] if w not in PUNCT and w not in _LEAD_INS]
+    body = [w for w in words[start:hi] if w not in PUNCT and w not in LEAD_INS]
     return bool(body) and (body[0] in SUBORDINATORS or body[:2] == ["in", "case"])
 
 

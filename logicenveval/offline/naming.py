@@ -89,6 +89,17 @@ _RUN_OPENERS = frozenset({"a", "an", "any", "every", "each"})
 #: the red box")
 _GENERIC_ONE = frozenset({"a", "an", "every", "each"})
 _RUN = 4
+#: words whose sense in a regional variety of English is another catalog kind than the one they
+#: name elsewhere, with the words that mark a text as written in that variety (each found in
+#: that variety only): (marks, {word: kind}). Dictionary senses: in Australian and New Zealand
+#: English "bench" is a kitchen worktop (Oxford English Dictionary; Macquarie Dictionary); the
+#: marks "arvo" (afternoon), "jandal" (flip-flop), "chilly bin" (cool box), "servo" (petrol
+#: station), "chur" (thanks), "kia ora" (hello) are Australian or New Zealand words (Oxford
+#: Dictionary of New Zealand English; Macquarie Dictionary)
+REGIONAL_SENSES: tuple[tuple[frozenset[str], dict[str, str]], ...] = (
+    (frozenset({"arvo", "jandal", "chilly bin", "servo", "chur", "kia ora"}),
+     {"bench": "kitchen_counter"}),
+)
 #: words too common to say which of several categories a bare noun means
 _NOT_CONTEXT = frozenset({"floor", "wall", "ceiling", "room"})
 #: "that is a ...", "it was a ...": a predicate noun of a thing already named (`predicate_noun`)
@@ -217,6 +228,15 @@ class _Reader:
         #: kinds named at least once as a particular thing (after a determiner or a count, or in
         #: the singular), not only by a bare plural (`class_of_named`)
         self.particular: set[str] = set()
+        #: word -> kind, for the words a regional variety the text is written in gives another
+        #: sense (`REGIONAL_SENSES`); such a kind's object is named by the word ("bench")
+        said = " " + " ".join(self.text.words) + " "
+        self.senses = {word: kind for marks, senses in REGIONAL_SENSES
+                       if any(f" {mark} " in said for mark in marks) for word, kind in senses.items()
+                       if kind in catalog.categories}
+        self.said_as: dict[str, str] = {}
+        #: kind -> the colour "it is the red one" gives its one object
+        self.colors: dict[str, str] = {}
 
     # -- noun phrases ----------------------------------------------------------------------
 
@@ -264,6 +284,9 @@ class _Reader:
             return 1, None
         if self.verb(i) or self.place_sense(i):
             return 1, None
+        if word in self.senses:  # "left it out on the bench" in a New Zealand note: the worktop
+            self.said_as[self.senses[word]] = word
+            return 1, self.senses[word]
         return 1, self.bare_noun(i, category)
 
     def place_sense(self, i: int) -> bool:
@@ -307,7 +330,7 @@ class _Reader:
                    and len(words_of(c)) == 2 and words_of(c)[1] in CONTROL_HEADS]
         if control and exact is None:
             return control[-1]  # "Light switch: if the light is on": the light the switch works
-        if exact is None and (not options or not self.leads_noun(i) or word in self.room_heads):
+        if exact is None and (not options or not (self.leads_noun(i) or self.modified(i)) or word in self.room_heads):
             return None
         prev = self.text.words[i - 1] if i > 0 else ""
         candidates = options if options else [exact]
@@ -333,6 +356,16 @@ class _Reader:
                     words_of(category)[-1] == word)
 
         return max(candidates, key=score)
+
+    def modified(self, i: int) -> bool:
+        """Whether word `i` follows a determiner and one modifier that names no kind and is no
+        verb ("on the props table", "the wooden box"): a noun phrase, as after the determiner
+        alone (a head noun of several kinds is then one of them, `bare_noun`)."""
+        words, gaps = self.text.words, self.text.gaps
+        if i < 2 or words[i - 2] not in _ARTICLES or gaps[i].strip() or gaps[i - 1].strip():
+            return False
+        return self.match(i - 1)[1] is None and not self.verb(i - 1) and words[i - 1].isalpha() \
+            and words[i - 1] not in _PREPOSITIONS and words[i - 1] not in _DETERMINERS
 
     def sentence_context(self, i: int) -> set[str]:
         """The words of word `i`'s sentence that may tell its kinds apart: not the words of another
@@ -739,6 +772,14 @@ class _Reader:
                 self.instance(last_colored, f"{prev}_{last_colored}", {"color": prev})
                 i += 1
                 continue
+            if words[i] == "one" and prev in COLOR_WORDS and words[i - 3:i - 1] in (["is", "the"], ["was", "the"]) \
+                    and self.recent and not self.kinds[self.recent[-1]].instances \
+                    and prev in self.catalog.categories[self.recent[-1]].attributes.get("color", []):
+                # "Biff them in the bucket. It's the red one by the slider": a predicate saying
+                # which one the thing named last is gives its colour
+                self.colors[self.recent[-1]] = prev
+                i += 1
+                continue
             if words[i] in SPARE_WORDS and prev in _DETERMINERS and (
                     i + 1 == len(words) or words[i + 1] not in self.heads and self.match(i + 1)[1] is None):
                 # "a spare" as a noun: "fetch a spare from the dresser", "we store the spares"
@@ -813,7 +854,8 @@ class _Reader:
             if kind.generic and not told_apart and not kind.instances and self.class_of_named(category):
                 continue  # "Toys are kept in the toy box. Should the doll or the toy car ...": the class
             if kind.generic and not told_apart:
-                found.append({"name": _snake(category), "category": category, "attributes": {}})
+                found.append({"name": _snake(self.said_as.get(category, category)), "category": category,
+                              "attributes": {"color": self.colors[category]} if category in self.colors else {}})
             found += [{"name": name, "category": category, "attributes": attrs}
                       for name, attrs in kind.instances.items()]
         return list({o["name"]: o for o in found}.values())

@@ -108,6 +108,9 @@ NORMATIVE = frozenset({"should", "must", "ought", "shall", "would", "will", "can
 AT = frozenset({"on", "in", "inside", "atop", "upon"})
 #: relative pronouns and the prepositions that lead into them ("on which", "in which")
 RELATIVE = frozenset({"which", "that", "who"})
+#: words after an article that are no modifier of a place ("on the top of", "in the middle of")
+PREP_OF_PLACE = frozenset({"top", "middle", "side", "end", "edge", "back", "front", "corner", "bottom", "left",
+                           "right", "same", "other", "one", "floor"})
 ARTICLES = frozenset({"a", "an", "the", "some", "its", "their", "our", "my", "your", "this", "that",
                       "his", "her", "these", "those", "two", "three", "four", "one", "both", "another"})
 #: words that may stand between the nouns of a list ("the sink, the fridge and a cabinet")
@@ -274,6 +277,8 @@ def _read_sentence(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Re
         ms = [m for m in sent.mentions if clause.start <= m.start < clause.end]
         if clause.mood != "condition":
             _locative(sent, clause, ms, lex, catalog, reading)
+        else:
+            _relative_place(sent, clause, ms, lex, catalog, reading)
         if clause.mood == "statement":  # a doubt in a list leaves out only what it covers
             _possessive(sent, clause, ms, lex, catalog, reading)
         if clause.mood == "statement" and not clause.doubted:
@@ -293,6 +298,26 @@ def _read_sentence(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Re
         holders = [m for m in ms if _prep_before(words, m.start) in AT | {"from", "of"}]
         if holders:
             reading.last_holder = holders[-1]
+
+
+def _relative_place(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
+                    reading: _Reading) -> None:
+    """"Used the bath towel that was hanging on the towel rail?", "if the mug which is sitting on
+    the desk is dirty": in a question or condition, a relative clause of being or resting said of
+    a definite thing tells which one is meant by where it is, which the question takes for
+    granted: a statement of its place (what the question asks is read by the factor reader)."""
+    words = sent.words
+    for m in ms:
+        k = m.end
+        if m.kind != "role" or len(m.roles) != 1 or determiner(words, m.start) != "the" \
+                or k >= clause.end or words[k] not in RELATIVE:
+            continue
+        end, group = _verb_group(words, k + 1, clause.end)
+        if not group or group[0] not in BE or _verb_kind(group) != "settled":
+            continue
+        found = _holder_after(sent, ms, end, clause.end)
+        if found is not None:
+            _put(reading, "settled", catalog, lex, m.roles[0], found[1], found[0])
 
 
 def _identifying_aside(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Reading) -> None:
@@ -430,6 +455,15 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
                       or words[k] in RANKS and k + 1 < hi and words[k + 1] not in ("of", ",")):
         k += 1
     m = next((m for m in ms if m.start == k), None)
+    if m is None and k > j + 1 and words[k - 1] in ARTICLES and k + 1 < hi and words[k].isalpha() \
+            and words[k] not in AT | PREP_OF_PLACE and not any(t.start <= k < t.end for t in ms):
+        # "lives on the props table", "on the wooden box": one modifier that names nothing
+        # between the article and the place (as the naming step reads it, `naming.modified`)
+        m = next((t for t in ms if t.start == k + 1 and t.kind == "role"), None)
+    if m is not None and m.kind == "room":
+        # "sits on the cloakroom counter", "on the bedroom dresser": a room's name before a thing's
+        # names which one (`_room_words`); the place is the thing
+        m = next((t for t in ms if t.start == m.end and t.kind == "role"), m)
     return (words[j], m) if m is not None else None
 
 

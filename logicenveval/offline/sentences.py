@@ -39,9 +39,11 @@ PERSONAL_SUBJECTS = frozenset({"i", "we", "you", "he", "she", "they"})
 ACTIONS = frozenset(
     ["put", "place", "move", "take", "bring", "return", "carry", "drop", "set", "lay", "stand", "hang", "throw", "toss", "tuck", "store", "stow", "leave", "fold", "bin", "transfer", "slide", "shove", "push", "pour", "empty", "fill", "refill", "sort", "give", "file", "load", "unload", "shelve",
      "pack", "stack", "deliver",
-     # informal "put" (Oxford: stick, "put (something) somewhere in a quick or careless way"):
-     # "then just stick it in the sink"
-     "stick"]
+     # informal verbs of putting, by their dictionary senses: "stick" (Oxford: "put (something)
+     # somewhere in a quick or careless way": "then just stick it in the sink"), "biff"
+     # (NZ/Australian English, to throw: Collins English Dictionary), "plonk" and "bung" (British
+     # informal, to put down carelessly / to throw: Oxford Learner's Dictionaries)
+     "stick", "biff", "plonk", "bung"]
 )
 PREP_ON = frozenset({"on", "onto", "atop", "upon"})
 #: what a carried thing comes in: "Tin foil: in case the roll has fallen", "Sunscreen - if the
