@@ -281,3 +281,16 @@ def test_if_not_before_its_own_instruction_still_asks_where_the_thing_is() -> No
     factors = _factors("Knife - if not in the dish rack, put it in.", ("kitchen",))
     assert any("inside(knife, dish_rack)" in v or "on(knife, dish_rack)" in v
                for values in factors.values() for v in values), factors
+
+
+@pytest.mark.parametrize(("text", "rooms"), [
+    # dev6 workshop_leaving_sign
+    ("IF EITHER IS ON THE WORKBENCH, RETURN IT TO THE STORAGE BOX (BOTTOM SHELF OF THE METAL RACK).", ("workshop",)),
+    # written here: a study
+    ("Put the pens in the metal storage box on the desk.", ("study",)),
+])
+def test_an_attribute_value_right_before_another_things_name_is_that_things(text: str,
+                                                                          rooms: tuple[str, ...]) -> None:
+    """"the metal rack", "the metal storage box": the material describes the thing it precedes
+    (which has no material to ask), not the desk named elsewhere in the text."""
+    assert "desk_material" not in _factors(text, rooms)
