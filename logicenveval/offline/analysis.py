@@ -1080,10 +1080,12 @@ class _Reader:
                 hit = self.lex.attribute_of(role, w)
                 if hit is None:
                     continue
+                near = [mm for mm in mentions if 0 < mm.start - i <= 2]
                 if w in COLOR_WORDS:
-                    near = [mm for mm in mentions if 0 < mm.start - i <= 2]
                     if not near or role not in near[0].roles:
                         continue  # a colour word only describes the object it precedes
+                elif near and near[0].start == i + 1 and role not in near[0].roles:
+                    continue  # "the metal rack": a value right before another thing's name is that thing's
                 values = found.setdefault((role, hit[0]), [])
                 if hit[1] not in values:
                     values.append(hit[1])

@@ -58,6 +58,14 @@ UNCERTAIN = frozenset({"may", "might", "possibly", "possible", "perhaps", "maybe
 CONDITIONAL = ("depending on whether", "depending on if", "in case", "as long as", "provided that",
                "only if", "if not", "if so", "whether", "if", "unless", "whenever", "when", "while", "once",
                "should there be", "should")
+#: cues that are a whole condition by themselves, pointing back ("if so")
+POINTING_CUES = frozenset({"if so"})
+#: time cues that, before what the reader does ("when you're done", "once you leave"), only say
+#: when a question is asked of the scene ("Is the light on when you're done for the day? Then
+#: switch it off"): the question is the condition, the time clause none
+AGENT_TIMES = frozenset({"when", "whenever", "once", "while"})
+#: who acts in such a time clause
+AGENTS = frozenset({"you", "we", "i", "u"})
 #: words that open a sentence without saying anything of the scene ("Then, if ...", "Oh, and
 #: should ...")
 DISCOURSE = frozenset({"then", "and", "also", "so", "first", "second", "third", "next", "finally", "last",
@@ -266,11 +274,19 @@ def _state_places(instruction: str) -> list[tuple[str, str | None, str]]:
     return out if len(items) > 1 else []
 
 
+#: "put it in the sink, if not in the cupboard": after an instruction, "if not" and a place that
+#: ends the sentence is the alternative, its verb elided ("Knife - if not in the dish rack, put it
+#: in" asks where the knife is: an instruction follows its comma)
+_IF_NOT_PLACE = re.compile(r",\s*if not\s+(?=(?:on|in|into|onto|inside|under)\s+(?:the|a|an|my|your|our|his|her|their)\b"
+                           r"(?![^,;]*\b(?:already|yet|still)\b)[^,;]*$)", re.I)
+
+
 def _split(sentence: str) -> list[tuple[str, str | None, str]]:
     """(text, cue, role) pieces of a sentence, recursively for chained conditionals; a verbless
     heading (`_heading`) is a `heading` piece, its instruction read after it."""
     # "still on? -> switch OFF.", "Laptop on the floor -> put it on the desk": the arrow is "then"
     sentence = ARROW.sub(" - ", re.sub(rf"([?:!]){ARROW.pattern}", r"\1 ", sentence))
+    sentence = _IF_NOT_PLACE.sub(", otherwise ", sentence)
     states = _state_places(sentence)
     if states:
         return states  # "Bath towel on the floor: wet to the basket, dry to the rack"
@@ -293,6 +309,9 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
                 return _split(f"if it is not{sentence[m.end():]}")
             return [(sentence[m.end():].strip(" ,"), cue, "else")]
     best = _first_cue(low, CONDITIONAL)
+    if best is not None and best[1] in AGENT_TIMES and low.rstrip().endswith("?") and best[0] > 0 \
+            and re.match(rf"\W*(?:{'|'.join(sorted(AGENTS))})\b", expand(low[best[0] + len(best[1]):])):
+        best = None  # "is it on when you're done for the day?": asked of the scene at a time of the agent's
     if best is None and low.rstrip().endswith("?"):
         return [(sentence, "?", "condition")]  # "Are the keys on the floor?" asks about the situation
     if best is None:
@@ -339,6 +358,11 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
     coordinated = re.search(r"[,;]?\s*\b(?:but|and|so)$", head, re.I)
     own = _split(head[:coordinated.start()]) if coordinated and head[:coordinated.start()].strip() \
         and re.search(r",\s*\S", tail) and not _first_cue(head.lower(), CONDITIONAL) else []
+    if not own and head and not _first_cue(head.lower(), CONDITIONAL) and not re.search(r",\s*$", sentence[:start]):
+        # "and theres a coffee mug on the table - if its dirty put it in the sink": a thing the
+        # scene has, said before a condition, is no instruction of it (a dash or a full stop apart)
+        remark = _split(head)
+        own = remark if remark and all(r == "scene" for _, _, r in remark) else []
     if own and all(r in ("uncertain", "scene") for _, _, r in own):
         # "There may or may not be bread, but if there is a loaf on the counter, put it away": a
         # remark on the scene joined to a condition that has its own instruction is no
@@ -350,7 +374,10 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
         if pieces and pieces[-1][2] in ("statement", "scene"):
             pieces[-1] = (pieces[-1][0], cue, "consequence")
     m = re.search(r",\s*(then\s+)?|\bthen\b|\s+-\s+|:\s*", tail)
-    if head and not (m and re.match(r"\s*(then\b|,\s*[a-z]+ (it|them)\b)", tail[m.start():].lower())):
+    # "he always does - if so, off please": a condition that only points back has nothing before
+    # its comma, so what follows is its instruction, however short
+    pointer = m is not None and not tail[:m.start()].strip() and cue in POINTING_CUES
+    if head and not pointer and not (m and re.match(r"\s*(then\b|,\s*[a-z]+ (it|them)\b)", tail[m.start():].lower())):
         other = re.search(r"[,;]?\s*\b(otherwise|(?<!where )(?<!thing )else|or else|instead)\b", tail)
         cond = tail[: other.start()] if other else tail
         nested = _first_cue(cond.lower()[1:], CONDITIONAL)
@@ -367,9 +394,13 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
             pieces.append((tail[other.end():], "otherwise", "else"))
         return pieces
     cond, cons = (tail[: m.start()], tail[m.end():]) if m else (tail, "")
-    imp = None if m else _imperative_cut(cond)
-    if imp is not None:  # "if its not in there put it in there": no comma
-        cond, cons = cond[:imp], cond[imp:]
+    # "if its not in there put it in there": no comma; or before the comma of an alternative ("if
+    # its dirty put it in the sink, otherwise in the cupboard": the instruction came before it)
+    before_else = m is not None and re.match(
+        rf",\s*(?:{'|'.join(re.escape(c) for c in ALTERNATIVES)})\b", tail[m.start():], re.I) is not None
+    imp = _imperative_cut(cond) if m is None or before_else else None
+    if imp is not None:
+        cond, cons = cond[:imp], cond[imp:] + (tail[m.start():] if m else "")
     alt = re.match(r"\s*or\s+[^,;]*,\s*", cons, re.I) if m and tail[m.start()] == "," else None
     if alt and m:  # "if it is elsewhere, or we are out of it, skip it": one condition with two alternatives
         cond, cons = tail[: m.start() + 1] + " " + cons[: alt.end()].rstrip(" ,"), cons[alt.end():]
@@ -401,20 +432,25 @@ def _imperative_cut(cond: str) -> int | None:
     """Where a condition typed without a comma runs into its instruction ("if its not in there
     put it in there", "if the lamp is still on turn it off", "if empty bin it"): before the first
     imperative (a base-form verb and its object or particle, `imperative`) that follows a
-    predicate (a copula, "there" or a state word), not its subject or a modal. None if there is
-    no such verb (the whole text is the condition)."""
+    predicate (a copula, "there" or a state word), not its subject or a modal, or before a
+    request ("if it still is can you shut it"). None if there is no such verb (the whole text is
+    the condition)."""
     said = expand(cond).lower()
     ws = list(re.finditer(r"[a-z]+", said))
     for k in range(1, len(ws) - 1):
         gap = said[ws[k - 1].end():ws[k].start()]
-        if gap.strip() or ws[k - 1].group() in _NO_IMPERATIVE_AFTER:
+        # "if it still is can you shut it": a request ("can you", "could you") opens the
+        # instruction even after a copula
+        request = ws[k].group() in REQUESTS and ws[k + 1].group() == "you" and k + 2 < len(ws) \
+            and imperative([w.group() for w in ws[k + 2:k + 4]])
+        if gap.strip() or ws[k - 1].group() in _NO_IMPERATIVE_AFTER and not request:
             continue
         if not {w.group() for w in ws[:k]} & _PREDICATES:
             continue
         # a terse instruction with its verb dropped after a bare state ("if wet into laundry
         # basket", "IF DIRTY ONTO THE PILE"): the direction starts it (`DIRECTIONS`)
         bare = ws[k].group() in DIRECTIONS and ws[k - 1].group() in STATE_WORDS
-        if bare or imperative([ws[k].group(), ws[k + 1].group()]):
+        if request or bare or imperative([ws[k].group(), ws[k + 1].group()]):
             # the same words in the text as written (the expansion only lengthens what is before)
             rest = said[ws[k].start():]
             at = cond.lower().rfind(rest)

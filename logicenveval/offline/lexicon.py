@@ -14,7 +14,7 @@ from typing import Any
 
 from lemminflect import getAllLemmas, getLemma
 
-from logicenveval.domain.catalog import Catalog
+from logicenveval.domain.catalog import Catalog, per_catalog
 
 WORD = re.compile(r"[a-z0-9]+(?:'[a-z]+)?")
 
@@ -150,6 +150,13 @@ def _abbreviates(short: str, category: str) -> bool:
     return True
 
 
+@per_catalog
+def _one_word_names(catalog: Catalog) -> frozenset[tuple[str, ...]]:
+    """Every catalog name and synonym of one word ("bench", "chair")."""
+    return frozenset(words_of(n) for name, cat in catalog.categories.items() for n in (name, *cat.synonyms)
+                     if len(words_of(n)) == 1)
+
+
 @dataclass
 class Lexicon:
     roles: dict[str, dict[str, Any]]
@@ -213,6 +220,19 @@ class Lexicon:
         for head, names in heads.items():
             if head not in lex.phrases:
                 lex.phrases[head] = set(names)  # ambiguous heads are resolved by recency
+        # "the workbench ... the bench": a one-word name ending in another one-word catalog name is
+        # also found by that tail, when no role is named so (`offline.naming` reads it alike)
+        tails = {p[0] for p in _one_word_names(catalog)}
+        closed: dict[tuple[str, ...], set[str]] = {}
+        for name, role in roles.items():
+            cat = catalog.get(role["category"])
+            for n in {role["category"], *(cat.synonyms if cat else ())}:
+                if len(words_of(n)) == 1:
+                    word = words_of(n)[0]
+                    for tail in tails:
+                        if len(word) > len(tail) + 2 and word.endswith(tail) and (tail,) not in lex.phrases:
+                            closed.setdefault((tail,), set()).add(name)
+        lex.phrases.update(closed)
         for name, role in roles.items():
             phrase = words_of(role["category"])
             if len(phrase) == 2 and phrase[1] in CONTROL_HEADS and phrase[:1] not in lex.phrases:

@@ -17,6 +17,7 @@ sentences of several texts."""
 from __future__ import annotations
 
 import re
+from collections import Counter
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Any
@@ -326,10 +327,19 @@ class _Reader:
         named = [c for c in reversed(self.recent) if c in options and word in self.used.get(c, ())]
         if named:
             return named[0]
+        # the tail of a closed compound named before ("the workbench ... the bench", "the
+        # armchair ... the chair"): the same thing, said short
+        tail = [c for c in reversed(self.recent) if word in self.heads
+                and any(len(h) > len(word) + 2 and h.endswith(word) for h in self.used.get(c, ()))]
+        if tail and self.leads_noun(i):
+            return tail[0]
         control = [c for c in self.recent if words_of(c) == (word, *words_of(c)[1:])
                    and len(words_of(c)) == 2 and words_of(c)[1] in CONTROL_HEADS]
         if control and exact is None:
             return control[-1]  # "Light switch: if the light is on": the light the switch works
+        ahead = self.controls_ahead(i)
+        if ahead is not None and exact is None:
+            return ahead  # "And the light - is it on? Then flick off the switch": one thing
         if exact is None and (not options or not (self.leads_noun(i) or self.modified(i)) or word in self.room_heads):
             return None
         prev = self.text.words[i - 1] if i > 0 else ""
@@ -350,7 +360,7 @@ class _Reader:
             return (prev in others, own, len(others & said),
                     written != word and self.plural_named(category, word), category == exact,
                     len(others & self.context),
-                    -len(rooms) if rooms & self.known_room_types else -1000,
+                    -len(rooms) if rooms & self.room_evidence() else -1000,
                     # last, the kind the word heads the name of, not only a synonym ("computer":
                     # a desktop computer, not a laptop's "notebook computer")
                     words_of(category)[-1] == word)
@@ -366,6 +376,32 @@ class _Reader:
             return False
         return self.match(i - 1)[1] is None and not self.verb(i - 1) and words[i - 1].isalpha() \
             and words[i - 1] not in _PREPOSITIONS and words[i - 1] not in _DETERMINERS
+
+    def controls_ahead(self, i: int) -> str | None:
+        """The control kind named for the word at `i` ("light switch" for "light") when its
+        sentence or the next says its head alone ("the switch"): the thing the text switches,
+        the switch, as when it is named first (`CONTROL_HEADS`)."""
+        word = self.text.words[i]
+        kinds = [c for c in self.catalog.categories if len(words_of(c)) == 2 and words_of(c)[0] == word
+                 and words_of(c)[1] in CONTROL_HEADS]
+        if len(kinds) != 1:
+            return None
+        end = self.text.sentence_end(self.text.sentence_end(i))
+        head = words_of(kinds[0])[1]
+        return kinds[0] if any(self.text.words[k] == head and self.text.words[k - 1] != word
+                               for k in range(i + 1, min(end, len(self.text.words)))) else None
+
+    def room_evidence(self) -> set[str]:
+        """The room types that tell a bare noun's kinds apart: those the task's room ids name; for
+        ids naming none ("staff_room"), the room type most of the kinds the text names outright
+        belong in (a microwave, a toaster, a fridge: a kitchen), when one leads."""
+        if self.known_room_types or not self.named:
+            return self.known_room_types
+        votes = Counter(r for c in self.named for r in self.catalog.categories[c].rooms)
+        ranked = votes.most_common(2)
+        if not ranked or len(ranked) > 1 and ranked[1][1] == ranked[0][1]:
+            return set()
+        return {ranked[0][0]}
 
     def sentence_context(self, i: int) -> set[str]:
         """The words of word `i`'s sentence that may tell its kinds apart: not the words of another
@@ -553,11 +589,13 @@ class _Reader:
             count = _COUNTS.get(words[i], 0)
             j = i + 1 if count else i
             n, category = self.group_kind(j)
+            if category is None and count and words[i] != "both":
+                n, category = 0, self.counted_before(i)  # "Tea towels. There are two, a green one and ..."
             if category is None:
                 i += 1
                 continue
             k = j + n  # the word after the noun phrase
-            plural = self.text.raw[k - 1] != words[k - 1]
+            plural = n > 0 and self.text.raw[k - 1] != words[k - 1]
             listed = plural and k < len(words) and bool(_HEADING.search(self.text.gaps[k]))
             ordinal_part = words[k - 1] in _PARTS and i > 0 and words[i - 1] in _ORDINALS
             if not (count or listed or ordinal_part):
@@ -581,6 +619,25 @@ class _Reader:
                 i = end
                 continue
             i += 1
+
+    def counted_before(self, i: int) -> str | None:
+        """The kind a count standing alone counts ("Tea towels. There are two, a green one and a
+        white one", "Mugs: we have three - ..."): a count with no noun after it, before a comma,
+        colon or dash, counts the things the text just named in the plural (in its sentence or
+        the one before)."""
+        words, gaps = self.text.words, self.text.gaps
+        if i + 1 >= len(words) or not _ITEM_BREAK.search(gaps[i + 1]):
+            return None
+        start = self.text.sentence_start(i)
+        start = self.text.sentence_start(start - 1) if start > 0 else start
+        found: str | None = None
+        k = start
+        while k < i:
+            n, category = self.match(k)
+            if category is not None and k + n <= i and self.text.raw[k + n - 1] != words[k + n - 1]:
+                found = category  # the last plural name before the count, read in full
+            k += n
+        return found
 
     def after_heading(self, start: int, end: int) -> int:
         """Where the items of a counted list start: after the colon or dash that ends its heading
@@ -853,7 +910,12 @@ class _Reader:
             told_apart = len(kind.instances) >= max(2, kind.count)
             if kind.generic and not told_apart and not kind.instances and self.class_of_named(category):
                 continue  # "Toys are kept in the toy box. Should the doll or the toy car ...": the class
-            if kind.generic and not told_apart:
+            if kind.generic and not told_apart and kind.instances and category not in self.particular \
+                    and all(name.startswith("spare_") for name in kind.instances):
+                generic = False  # "THE SPARE BULB ... BROKEN BULBS GO IN THE BIN": a rule for the spare
+            else:
+                generic = kind.generic and not told_apart
+            if generic:
                 found.append({"name": _snake(self.said_as.get(category, category)), "category": category,
                               "attributes": {"color": self.colors[category]} if category in self.colors else {}})
             found += [{"name": name, "category": category, "attributes": attrs}

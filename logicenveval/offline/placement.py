@@ -69,6 +69,9 @@ BE = frozenset({"is", "are", "was", "were", "be", "been", "being", "am"})
 #: words that rank the parts of a thing ("on the bottom shelf", "in the top drawer"): the part is
 #: the thing's, so the place is the thing ("the top of the ..." is not: "of" follows)
 RANKS = frozenset({"top", "bottom", "middle", "upper", "lower", "first", "second", "third"})
+#: parts of a piece of furniture a bracket may place a thing in ("(bottom shelf of the metal rack)":
+#: on an open rack, inside a cabinet; `_contain` tells them apart by the furniture)
+FURNITURE_PARTS = frozenset({"shelf", "level", "tier", "drawer", "compartment"})
 #: pronouns that take up a thing put first ("the mug on the desk, is it dirty?")
 RESUMPTIVE = frozenset({"it", "they"})
 STATIVE = frozenset({"lie", "lies", "lay", "lying", "sit", "sits", "sat", "sitting", "stand", "stands",
@@ -323,12 +326,17 @@ def _relative_place(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexic
 def _identifying_aside(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Reading) -> None:
     """"The desktop computer (the old one on the desk, ...)", "the lamp (the one on the
     nightstand)": a bracket right after a thing that tells which one it is by where it stands
-    states where it is."""
+    states where it is; so does a bracket that is only a place ("the storage box (bottom shelf of
+    the metal rack)", "the first-aid kit (on the top shelf)": `_bracketed_place`)."""
     words = sent.words
     for m in sent.mentions:
         if m.kind != "role" or len(m.roles) != 1 or m.end + 1 >= len(words) or words[m.end] != "(":
             continue
         k = m.end + 1
+        place = _bracketed_place(sent, lex, k)
+        if place is not None and place[1].roles != m.roles:
+            _put(reading, "settled", catalog, lex, m.roles[0], place[1], place[0])
+            continue
         if words[k] != "the":
             continue
         one = next((j for j in range(k + 1, min(k + 4, len(words))) if words[j] == "one"), None)
@@ -338,6 +346,28 @@ def _identifying_aside(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading:
         found = _holder_after(sent, [x for x in sent.mentions if one < x.start < close], one + 1, close)
         if found is not None and found[1].roles != m.roles:
             _put(reading, "settled", catalog, lex, m.roles[0], found[1], found[0])
+
+
+def _bracketed_place(sent: _Sentence, lex: Lexicon, k: int) -> tuple[str, Mention] | None:
+    """(preposition, place) when the bracket opening at word `k` holds only a place: "on/in the
+    <place>", or a part of a piece of furniture named by its rank ("bottom shelf of the metal
+    rack", "top drawer of the dresser": `FURNITURE_PARTS`), which puts the thing in that furniture,
+    or on it when it has no inside (an open rack)."""
+    words = sent.words
+    close = next((j for j in range(k, len(words)) if words[j] == ")"), None)
+    if close is None:
+        return None
+    ms = [x for x in sent.mentions if k <= x.start < close]
+    if words[k] in AT:
+        found = _holder_after(sent, ms, k, close)
+        return found if found is not None and found[1].end == close else None
+    part = k + (words[k] in ARTICLES)
+    part += words[part] in RANKS
+    if part + 1 >= close or words[part] not in FURNITURE_PARTS or words[part + 1] != "of":
+        return None
+    # the furniture's name ends the bracket, with what describes it before ("the metal rack")
+    m = next((x for x in ms if x.start >= part + 2 and x.end == close), None)
+    return ("in", m) if m is not None and m.kind == "role" else None
 
 
 def _roles(m: Mention, sent: _Sentence) -> tuple[str, ...]:
@@ -628,6 +658,9 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         if kind == "settled" and group[-1] in STATIVE and (set(group) | set(words[k + 1:start])) & NORM_ADVERBS:
             kind = "kept"  # "flowers that normally sit on the bench": where they belong, not where they are
         subjects = _np_list(sent, ms, lo, start)
+        if not subjects and _finite(group) and words[lo:k + 1] == ["it"] and reading.last_subject is not None \
+                and reading.last_subject.kind == "role" and len(reading.last_subject.roles) == 1:
+            subjects = [reading.last_subject]  # "Broom. ... Not agreed; it stays standing on the floor"
         if not _finite(group):
             who = start - 1
             while who > lo and words[who] in ADVERBS:

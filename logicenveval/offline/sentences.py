@@ -391,6 +391,53 @@ def _match_case(said: str, word: str) -> str:
     return word.capitalize() if said[:1].isupper() else word
 
 
+#: a chat or log line's time stamp ("[08:02] Dana: ...", "[9:15 pm]", "14:02 Sam: ..."): when, not
+#: what, so the line reads from its speaker on
+_TIME_STAMP = re.compile(r"^([ \t]*)(?:\[\d{1,2}[:.]\d{2}(?:[:.]\d{2})?(?:\s*[ap]\.?m\.?)?\]|\d{1,2}:\d{2}(?=\s+[A-Z][\w.' ]{0,30}:))[ \t]*",
+                         re.M | re.I)
+#: a chat line (after its time stamp and speaker) that corrects the line before, as chat writers
+#: do: a star right before a word ("*sink not dishwasher, dishwasher's broken", "*the fridge door")
+_STARRED = re.compile(r"^(?P<lead>\s*(?:\[[^\]\n]*\]\s*)?(?:[A-Z][\w.' ]{0,30}:\s*)?)\*(?=\w)(?P<fix>[^\n]*)$", re.M)
+#: "X not Y": the word meant, then the word it replaces, and the reason after a comma
+_INSTEAD = re.compile(r"^(?P<meant>[^,;]+?)\s+not\s+(?P<wrong>[^,;]+?)\s*(?:[,;]\s*(?P<why>.*))?$", re.I)
+
+
+def starred(text: str) -> str:
+    """Each chat correction made in the line before it and dropped: "*sink not dishwasher" puts
+    "sink" for the last "dishwasher" there (its reason after a comma stays, as a line of its own);
+    "*the fridge door" puts the correction for the longest run of its first words the line before
+    says ("the fridge" -> "the fridge door"). A correction that matches nothing stays as it is."""
+    lines: list[str | None] = list(text.split("\n"))
+    for n in range(1, len(lines)):
+        m = _STARRED.match(lines[n] or "")
+        if m is None:
+            continue
+        prev = next((k for k in range(n - 1, -1, -1) if (lines[k] or "").strip()), None)
+        if prev is None:
+            continue
+        before = str(lines[prev])
+        fix = m.group("fix").strip().rstrip(".!")
+        instead = _INSTEAD.match(fix)
+        if instead is not None:
+            wrong = re.escape(instead.group("wrong"))
+            found = list(re.finditer(rf"\b{wrong}\b", before, re.I))
+            if not found:
+                continue
+            at = found[-1]
+            lines[prev] = before[:at.start()] + instead.group("meant") + before[at.end():]
+            why = instead.group("why")
+            lines[n] = f"{m.group('lead')}{why}." if why else None
+            continue
+        words = fix.split()
+        for k in range(len(words) - 1, 0, -1):
+            said = re.search(rf"\b{re.escape(' '.join(words[:k]))}\b", before, re.I)
+            if said is not None and any(w.lower() not in ("the", "a", "an", "my", "your", "that") for w in words[:k]):
+                lines[prev] = before[:said.start()] + fix + before[said.end():]
+                lines[n] = None
+                break
+    return "\n".join(line for line in lines if line is not None)
+
+
 def unquote(text: str) -> str:
     """The text with British and older spellings of function words in their common form
     (`VARIANTS`) and without a formula of politeness before a verb (`_POLITE`), with a typographic
@@ -413,9 +460,11 @@ def unquote(text: str) -> str:
     it in the stand": `_STATE_CASE`); "other kind of toy" as "other toy" (`_KIND_OF`); a state word said only as a predicate in its state's
     common word ("the dishwasher's already going": "running", `PREDICATE_STATES`); a table of items and places as its sentences
     (`detable`); a heading answered by a verb with no subject of its own with the heading as that
-    subject (`_SUBJECTLESS`)."""
+    subject (`_SUBJECTLESS`); a chat message's `*`-correction made in the message it corrects
+    (`starred`), without a chat line's time stamp (`_TIME_STAMP`)."""
     text = _NO_THEN.sub(_no_then, _telegram(text))
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), VARIANTS[m.group(0).lower()]), text))
+    text = starred(_TIME_STAMP.sub(r"\1", text))
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
     plain = _IF_ANY.sub(_if_any, plain)
     plain = _FRONTED_ALREADY.sub(_postposed, plain)
@@ -428,12 +477,12 @@ def unquote(text: str) -> str:
     return _SUBJECTLESS.sub(r"\1\2\3the \2 \4", detable(_STATE_SUBJECT.sub(_state_subject, plain)))
 
 
-#: "Desk lamp: stays on the desk.", "- Sunscreen - lives in the cabinet": a line's heading of a few
-#: words, answered by a verb of where a thing is or goes with no subject of its own and a place
-#: after it, is said of the heading's thing ("the desk lamp stays on the desk"), so every reader
-#: reads the place as in a sentence
+#: "Desk lamp: stays on the desk.", "- Sunscreen - lives in the cabinet", "Washing powder. Stays on
+#: the shelf": a line's heading of a few words, answered by a verb of where a thing is or goes
+#: with no subject of its own and a place after it, is said of the heading's thing ("the desk
+#: lamp stays on the desk"), so every reader reads the place as in a sentence
 _SUBJECTLESS = re.compile(r"(^[ \t]*(?:[-*\u2022]|\d+[.)])?[ \t]*)([A-Za-z][A-Za-z']*(?: [A-Za-z][A-Za-z']*){0,3})"
-                          r"(\s*(?::|[-\u2013\u2014])\s*)(stays|lives|sits|stands|lies|belongs|goes|hangs|remains)"
+                          r"(\s*(?::|\.|[-\u2013\u2014])\s*)(stays|lives|sits|stands|lies|belongs|goes|hangs|remains)"
                           r"(?=\s+(?:on|in|inside|into|onto|under|by|near|next|beside|behind|at|back|there|here)\b)",
                           re.I | re.M)
 
