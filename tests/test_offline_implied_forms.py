@@ -6,9 +6,10 @@ development sentence and on one written here in another room with other objects.
 
 from __future__ import annotations
 
-from typing import Any
-
 import pytest
+from reading import brief as _brief
+from reading import factors as _factors
+from reading import placed as _placed
 
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.offline.analysis import _ensured, analyse
@@ -18,21 +19,6 @@ from logicenveval.offline.placement import described_placements
 
 def _named(text: str, rooms: tuple[str, ...]) -> dict[str, tuple[str, dict[str, str]]]:
     return {o["name"]: (o["category"], o["attributes"]) for o in name_objects(text, load_catalog(), rooms)}
-
-
-def _brief(text: str, rooms: tuple[str, ...]) -> dict[str, Any]:
-    roles: dict[str, Any] = {}
-    for o in name_objects(text, load_catalog(), rooms=rooms):
-        roles.setdefault(o["name"], {"category": o["category"], "attributes": o["attributes"]})
-    return {"id": "t", "description": text, "rooms": list(rooms), "roles": roles}
-
-
-def _factors(text: str, rooms: tuple[str, ...]) -> dict[str, set[str]]:
-    return {f.id: set(f.values.values()) for f in analyse(_brief(text, rooms), load_catalog()).factors}
-
-
-def _placed(text: str, rooms: tuple[str, ...]) -> list[str]:
-    return described_placements(_brief(text, rooms), load_catalog())
 
 
 def _asks(text: str, rooms: tuple[str, ...], condition: str) -> bool:

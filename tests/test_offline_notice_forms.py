@@ -6,15 +6,15 @@ catalogue of rules)."""
 
 from __future__ import annotations
 
-from typing import Any
-
 import pytest
+from reading import brief as _brief
+from reading import factors as _factors
+from reading import placed as _placed
 
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.offline.analysis import analyse
 from logicenveval.offline.lexicon import Lexicon, tokens
 from logicenveval.offline.naming import name_objects
-from logicenveval.offline.placement import described_placements
 from logicenveval.offline.sentences import unquote
 
 CATALOG = load_catalog()
@@ -23,21 +23,6 @@ CATALOG = load_catalog()
 def _named(text: str, rooms: tuple[str, ...] = ()) -> dict[str, str]:
     """name -> category of the objects the reader names."""
     return {o["name"]: o["category"] for o in name_objects(text, CATALOG, rooms)}
-
-
-def _brief(text: str, rooms: tuple[str, ...]) -> dict[str, Any]:
-    """The brief the offline model builds from its own naming (roles named as it names them)."""
-    return {"id": "t", "description": text, "rooms": list(rooms),
-            "roles": {o["name"]: {"category": o["category"], "attributes": o["attributes"]}
-                      for o in name_objects(text, CATALOG, rooms)}}
-
-
-def _factors(text: str, rooms: tuple[str, ...]) -> dict[str, set[str]]:
-    return {f.id: set(f.values.values()) for f in analyse(_brief(text, rooms), CATALOG).factors}
-
-
-def _placed(text: str, rooms: tuple[str, ...]) -> list[str]:
-    return described_placements(_brief(text, rooms), CATALOG)
 
 
 # ----- naming ---------------------------------------------------------------------------------

@@ -4,27 +4,15 @@ the development set's sentence and on one written here in another room with othe
 
 from __future__ import annotations
 
-from typing import Any
-
 import pytest
+from reading import brief as _brief
+from reading import factors as _factors
+from reading import placed as _placed
 
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.offline.analysis import analyse
-from logicenveval.offline.naming import name_objects
 from logicenveval.offline.placement import described_placements
 from logicenveval.offline.sentences import binned, unquote
-
-
-def _brief(text: str, rooms: tuple[str, ...]) -> dict[str, Any]:
-    roles: dict[str, Any] = {}
-    for o in name_objects(text, load_catalog(), rooms=rooms):
-        roles.setdefault(o["name"], {"category": o["category"], "attributes": o["attributes"]})
-    return {"id": "t", "description": text, "rooms": list(rooms), "roles": roles}
-
-
-def _factors(text: str, rooms: tuple[str, ...]) -> dict[str, set[str]]:
-    return {f.id: set(f.values.values()) for f in analyse(_brief(text, rooms), load_catalog()).factors}
-
 
 # ----- "respectively" pairs each item of a list with a part, as a count would --------------------
 
@@ -924,8 +912,6 @@ def test_a_state_or_its_opposite_is_uncertain(text: str, rooms: tuple[str, ...],
 # ===================================================================================
 
 
-
-
 # Rules from the fifth development set's rewordings (`tests/data/reader_dev5/tasks_reworded/`)
 # =================================================================================================
 
@@ -1100,9 +1086,6 @@ def test_a_spot_after_a_possessive_is_a_place_not_a_stain(text: str, rooms: tupl
     assert "floor_stain" in {r["category"] for r in _brief("There is a spot on the rug.", ("living_room",))["roles"].values()}
 
 # ----- fifth development set's new tasks (`tests/data/reader_dev5/tasks_new/`) -------------------
-
-def _placed(text: str, rooms: tuple[str, ...]) -> list[str]:
-    return described_placements(_brief(text, rooms), load_catalog())
 
 
 @pytest.mark.parametrize(("text", "rooms", "placed"), [

@@ -1,0 +1,32 @@
+"""What the offline reader makes of a text, for the reader's rule tests: the brief the offline
+model builds from its own naming (roles named as it names them, the first naming of a name kept),
+the factors it asks and the placements it reads as stated. One copy, so that every rule test reads
+a sentence the way the model does."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from logicenveval.domain.catalog import load_catalog
+from logicenveval.offline.analysis import analyse
+from logicenveval.offline.naming import name_objects
+from logicenveval.offline.placement import described_placements
+
+CATALOG = load_catalog()
+
+
+def brief(text: str, rooms: tuple[str, ...]) -> dict[str, Any]:
+    roles: dict[str, Any] = {}
+    for o in name_objects(text, CATALOG, rooms=rooms):
+        roles.setdefault(o["name"], {"category": o["category"], "attributes": o["attributes"]})
+    return {"id": "t", "description": text, "rooms": list(rooms), "roles": roles}
+
+
+def factors(text: str, rooms: tuple[str, ...]) -> dict[str, set[str]]:
+    """factor id -> the conditions of its values."""
+    return {f.id: set(f.values.values()) for f in analyse(brief(text, rooms), CATALOG).factors}
+
+
+def placed(text: str, rooms: tuple[str, ...]) -> set[str]:
+    """The placements the text states (`on(x, y)`, `inside(x, y)`, `in_room(x, r)`)."""
+    return set(described_placements(brief(text, rooms), CATALOG))
