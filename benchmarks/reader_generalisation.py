@@ -40,6 +40,14 @@ prints LogCov / SceVR / FauDR for each, then per task:
   a stage manager's show report, a workshop sign in capitals, house-meeting minutes, a postcard, a
   rhyming note, a wedding run sheet, chat messages with *-corrections, ...). Tuned on, like the
   development rows above;
+- `dev7 reworded` and `dev7 new`: tests/data/reader_dev7/ — the seventh development set, again
+  weighted to new tasks: one rewording each of 6 built-in descriptions, each in a register no
+  earlier set's rewordings use (a hotel turndown card, a screenplay, a babysitting job sheet, an
+  Irish granny's note, a numbered social-media thread, a Scottish note), and ten new tasks in rooms
+  none of the sets above use (a choir secretary's email, a yacht's logbook, a museum invigilator's
+  checklist, a host's reply to a review, a camp counselor's list, a children's club rules, a yoga
+  teacher's closing words, an allotment committee notice, a darkroom risk assessment, a caravan's
+  visitors' book). Tuned on, like the development rows above;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -56,7 +64,7 @@ like-for-like gap.
 Every run is computed afresh (`fresh=True`: a stored unit is never reused, since the run's
 fingerprint does not cover the reader's code) with the offline model's reply cache off.
 
-    python benchmarks/reader_generalisation.py            # all sixteen sets (~3-6 min on 2 cores)
+    python benchmarks/reader_generalisation.py            # all eighteen sets (~3-6 min on 2 cores)
     python benchmarks/reader_generalisation.py --smoke    # two tasks per set (~1 min)
     python benchmarks/reader_generalisation.py --why      # and why each task lost environments
     python benchmarks/reader_generalisation.py --dev-only # without the held-out sets (for tuning)
@@ -67,8 +75,9 @@ on (they run `--dev-only`, which skips those sets altogether).
 
 Last line: `reader_generalisation built_in=<LogCov>/<SceVR>/<FauDR> reworded=... new=...
 dev2_new=... dev4_reworded=... dev4_new=... dev3_reworded=... dev3_new=... dev5_reworded=...
-dev5_new=... dev6_reworded=... dev6_new=... held_out_reworded=... held_out_new=...
-held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the first twelve only).
+dev5_new=... dev6_reworded=... dev6_new=... dev7_reworded=... dev7_new=... held_out_reworded=...
+held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the first fourteen
+only).
 """
 
 from __future__ import annotations
@@ -92,6 +101,7 @@ DEV3 = ROOT / "tests" / "data" / "reader_dev3"
 DEV4 = ROOT / "tests" / "data" / "reader_dev4"
 DEV5 = ROOT / "tests" / "data" / "reader_dev5"
 DEV6 = ROOT / "tests" / "data" / "reader_dev6"
+DEV7 = ROOT / "tests" / "data" / "reader_dev7"
 HOLDOUT2 = ROOT / "tests" / "data" / "reader_holdout2"
 #: (row name, tasks folder; None = the built-in tasks)
 SETS: tuple[tuple[str, Path | None], ...] = (
@@ -101,6 +111,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
     ("dev3 reworded", DEV3 / "tasks_reworded"), ("dev3 new", DEV3 / "tasks_new"),
     ("dev5 reworded", DEV5 / "tasks_reworded"), ("dev5 new", DEV5 / "tasks_new"),
     ("dev6 reworded", DEV6 / "tasks_reworded"), ("dev6 new", DEV6 / "tasks_new"),
+    ("dev7 reworded", DEV7 / "tasks_reworded"), ("dev7 new", DEV7 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
     ("held-out2 reworded", HOLDOUT2 / "tasks_reworded"), ("held-out2 new", HOLDOUT2 / "tasks_new"),
 )

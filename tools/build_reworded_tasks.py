@@ -37,7 +37,7 @@ ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT / "tests" / "data"
 #: the sets whose rewordings this tool writes (a folder under tests/data/ each)
 SETS = ("reader_dev", "reader_holdout", "reader_dev3", "reader_dev4", "reader_holdout2", "reader_dev5",
-        "reader_dev6")
+        "reader_dev6", "reader_dev7")
 BUILTIN = ROOT / "benchmark_data" / "tasks"
 
 
