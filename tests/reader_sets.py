@@ -101,6 +101,48 @@ def check_new_tasks_are_fresh(new: Path, earlier: Sequence[Path], *, fresh_rooms
             assert mentions(task.description, names_of(role, spec.category)), (task.id, role)
 
 
+def set_folders(sets: Sequence[str], kind: str) -> list[Path]:
+    """The `kind` folders (`tasks_new`, `tasks_reworded`) of the named sets that have one."""
+    return [DATA / s / kind for s in sets if (DATA / s / kind).is_dir()]
+
+
+def check_registers_new(entries: Sequence[dict[str, Any]], sets: Sequence[str]) -> None:
+    """No rewording's register repeats one of the `sets`' rewordings."""
+    earlier = {str(e["register"]).lower() for s in sets if (DATA / s / "rewordings.json").exists()
+               for e in rewordings(DATA / s)}
+    assert not {str(e["register"]).lower() for e in entries} & earlier
+
+
+def check_ids_new(folders: Sequence[Path], sets: Sequence[str]) -> None:
+    """No task id of `folders` is a built-in task's or one of the `sets`' tasks'."""
+    taken = set(task_ids())
+    for folder in set_folders(sets, "tasks_reworded") + set_folders(sets, "tasks_new"):
+        taken |= set(task_ids(folder))
+    ours = {i for folder in folders for i in task_ids(folder)}
+    assert not ours & taken
+
+
+def check_fresh_rooms_with_a_new_kind(new: Path, sets: Sequence[str]) -> None:
+    """Each new task: a room id neither the built-in tasks nor the `sets` use (and no two new
+    tasks share one), at least one object kind no built-in task uses, every object named in the
+    description. (Later sets promise one new kind only: the catalog's pool of unused kinds is
+    nearly exhausted.)"""
+    builtin = load_tasks()
+    builtin_kinds = {spec.category for t in builtin for spec in t.roles.values()}
+    used_rooms = {room for t in builtin for room in t.rooms}
+    for folder in set_folders(sets, "tasks_reworded") + set_folders(sets, "tasks_new"):
+        used_rooms |= {room for t in load_tasks(folder) for room in t.rooms}
+    fresh_rooms: list[str] = []
+    for task in load_tasks(new):
+        assert {spec.category for spec in task.roles.values()} - builtin_kinds, task.id
+        fresh = set(task.rooms) - used_rooms
+        assert fresh, (task.id, task.rooms)
+        fresh_rooms += sorted(fresh)
+        for role, spec in task.roles.items():
+            assert mentions(task.description, names_of(role, spec.category)), (task.id, role)
+    assert len(set(fresh_rooms)) == len(fresh_rooms)
+
+
 def check_a_few_factors_and_a_stated_fact(new: Path, *, min_objects: int = 0) -> None:
     """2-4 uncertain factors per new task (issue 47's "in any register" is about reading, not
     size), at least `min_objects` objects, and at least one fact the description states that is

@@ -8,7 +8,8 @@ original, the words of the new description that assert it (`says` must quote the
 docs/task-format.md). A task's policies must lie inside its own folder (`benchmark.policy_path`),
 so each folder gets a copy of the original's four BTs; `tests/test_reader_dev_data.py` and
 `tests/test_reader_holdout_data.py`, `tests/test_reader_dev3_data.py`, `tests/test_reader_dev4_data.py`,
-`tests/test_reader_holdout2_data.py`, `tests/test_reader_dev5_data.py` and `tests/test_reader_dev6_data.py` check that every copy still equals its original and that
+`tests/test_reader_holdout2_data.py` and `tests/test_reader_later_dev_sets_data.py` check
+that every copy still equals its original and that
 nothing but `id`, `description` and the constraints' `says` differs.
 
     python tools/build_reworded_tasks.py            # (re)write tests/data/reader_dev/tasks_reworded/

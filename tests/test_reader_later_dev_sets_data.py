@@ -1,0 +1,154 @@
+"""The reader's fifth, sixth and seventh development sets (tests/data/reader_dev5/, reader_dev6/,
+reader_dev7/): new tasks and rewordings written from the task format, the catalog and the
+built-in tasks, without reading the offline reader or running it on them, for rounds of reader
+rules to be tuned on. One table of what differs between them; the same checks for each.
+
+The honesty checks every set has (`reader_sets`): rewordings that change only the wording and
+still name every object, BTs byte-identical to their originals, every object named, a current
+mutant list, and every task valid (one of each kind in the default run, all in the slow run).
+What these sets promise beyond the earlier ones: each new task is in a register and a room id no
+earlier development set uses, with at least one object kind no built-in task uses (the catalog's
+pool of kinds no set uses being nearly exhausted); the rewordings' registers repeat no earlier
+set's. dev 5's rewordings cover the 13 built-in tasks the first development set leaves out, so
+development covers every built-in task; dev 6 and dev 7 put their weight on new tasks, since the
+held-out sets' new tasks lagged while every development row had reached 100.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import pytest
+from reader_sets import (
+    DATA,
+    check_a_few_factors_and_a_stated_fact,
+    check_all_validate,
+    check_built_from_json,
+    check_fresh_rooms_with_a_new_kind,
+    check_ids_new,
+    check_mutant_lists_current,
+    check_not_templated,
+    check_policies,
+    check_registers_new,
+    check_rewording_changes_only_the_wording,
+    check_rewording_names_every_object,
+    check_validates,
+    rewordings,
+)
+
+from logicenveval.benchmark import task_ids
+
+
+@dataclass(frozen=True)
+class DevSet:
+    name: str
+    suffix: str
+    min_rewordings: int
+    min_new: int
+    #: a new task and a rewording validated in the default run (all are in the slow run)
+    samples: tuple[str, str]
+
+    @property
+    def reworded(self) -> Path:
+        return DATA / self.name / "tasks_reworded"
+
+    @property
+    def new(self) -> Path:
+        return DATA / self.name / "tasks_new"
+
+    @property
+    def earlier(self) -> tuple[str, ...]:
+        """The development sets written before it (the held-out sets are never opened here)."""
+        n = int(self.name.removeprefix("reader_dev"))
+        return ("reader_dev", *(f"reader_dev{k}" for k in range(2, n)))
+
+
+SETS = (
+    DevSet("reader_dev5", "_d5", 16, 8, ("church_hall_clear_up_rota", "kitchen_dish_cleanup_d5")),
+    DevSet("reader_dev6", "_d6", 10, 10, ("cloakroom_wedding_run_sheet", "dining_table_clear_d6")),
+    DevSet("reader_dev7", "_d7", 6, 10, ("cabin_yacht_logbook", "living_room_toy_boxes_d7")),
+)
+IDS = [s.name for s in SETS]
+ENTRIES = {s.name: rewordings(DATA / s.name) for s in SETS}
+ALL_ENTRIES = [(s, e) for s in SETS for e in ENTRIES[s.name]]
+
+
+@pytest.mark.parametrize("dev", SETS, ids=IDS)
+def test_the_set_rewords_builtin_tasks_each_in_its_own_register_and_writes_new_ones(dev: DevSet) -> None:
+    entries = ENTRIES[dev.name]
+    originals = [str(e["original"]) for e in entries]
+    assert len(entries) >= dev.min_rewordings
+    assert len(set(originals)) == len(originals)
+    assert set(originals) <= set(task_ids())
+    registers = [str(e["register"]) for e in entries]
+    assert len(set(registers)) == len(registers)
+    assert all(str(e["id"]) == f"{e['original']}{dev.suffix}" for e in entries)
+    assert len(task_ids(dev.new)) >= dev.min_new
+
+
+def test_dev5_rewords_every_builtin_task_the_first_development_set_leaves_out() -> None:
+    """Development then covers all 25 built-in descriptions, not only the first set's twelve."""
+    first = {str(e["original"]) for e in rewordings(DATA / "reader_dev")}
+    assert set(task_ids()) - first <= {str(e["original"]) for e in ENTRIES["reader_dev5"]}
+
+
+@pytest.mark.parametrize("dev", SETS, ids=IDS)
+def test_no_register_repeats_one_of_the_earlier_development_sets(dev: DevSet) -> None:
+    check_registers_new(ENTRIES[dev.name], dev.earlier)
+
+
+@pytest.mark.parametrize("dev", SETS, ids=IDS)
+def test_ids_do_not_collide_with_the_builtin_tasks_or_the_earlier_development_sets(dev: DevSet) -> None:
+    check_ids_new((dev.reworded, dev.new), dev.earlier)
+
+
+@pytest.mark.parametrize("dev", SETS, ids=IDS)
+def test_reworded_folders_are_built_from_the_json(dev: DevSet, tmp_path: Path) -> None:
+    check_built_from_json(dev.name, ENTRIES[dev.name], dev.reworded, tmp_path)
+
+
+@pytest.mark.parametrize(("dev", "entry"), ALL_ENTRIES, ids=[str(e["id"]) for _, e in ALL_ENTRIES])
+def test_a_rewording_changes_only_the_wording(dev: DevSet, entry: dict[str, Any]) -> None:
+    check_rewording_changes_only_the_wording(entry, dev.reworded)
+
+
+@pytest.mark.parametrize(("dev", "entry"), ALL_ENTRIES, ids=[str(e["id"]) for _, e in ALL_ENTRIES])
+def test_a_rewording_still_names_every_object_its_original_names(dev: DevSet, entry: dict[str, Any]) -> None:
+    check_rewording_names_every_object(entry)
+
+
+@pytest.mark.parametrize("dev", SETS, ids=IDS)
+def test_new_tasks_are_in_fresh_rooms_with_a_kind_no_builtin_task_uses(dev: DevSet) -> None:
+    check_fresh_rooms_with_a_new_kind(dev.new, dev.earlier)
+
+
+@pytest.mark.parametrize("dev", SETS, ids=IDS)
+def test_new_tasks_have_a_few_independent_factors_and_a_stated_fact(dev: DevSet) -> None:
+    check_a_few_factors_and_a_stated_fact(dev.new, min_objects=3)
+
+
+@pytest.mark.parametrize("dev", SETS, ids=IDS)
+def test_new_tasks_are_not_written_in_the_benchmark_template(dev: DevSet) -> None:
+    check_not_templated(dev.new, breaks=r"[.!?\n]")
+
+
+@pytest.mark.parametrize("dev", SETS, ids=IDS)
+def test_every_task_ships_its_four_policies_and_a_current_mutant_list(dev: DevSet) -> None:
+    check_policies((dev.reworded, dev.new))
+    check_mutant_lists_current((dev.reworded, dev.new))
+
+
+@pytest.mark.parametrize(("dev", "kind"), [(s, k) for s in SETS for k in ("new", "reworded")],
+                         ids=[f"{s.name}-{k}" for s in SETS for k in ("new", "reworded")])
+def test_a_sample_task_of_each_kind_validates(dev: DevSet, kind: str) -> None:
+    folder, task_id = (dev.new, dev.samples[0]) if kind == "new" else (dev.reworded, dev.samples[1])
+    check_validates(folder, task_id)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(("dev", "kind"), [(s, k) for s in SETS for k in ("new", "reworded")],
+                         ids=[f"{s.name}-{k}" for s in SETS for k in ("new", "reworded")])
+def test_every_task_validates(dev: DevSet, kind: str) -> None:
+    check_all_validate(dev.new if kind == "new" else dev.reworded)
