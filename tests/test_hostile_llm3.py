@@ -86,6 +86,23 @@ def test_a_server_that_is_not_ours_is_refused_by_its_nonce(gguf: Path,
     assert not server.alive()
 
 
+def test_a_server_that_exits_because_another_service_took_its_port_names_that_service(
+        gguf: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The same race, seen after ours gave up: a llama-server that cannot bind the port exits at
+    once, and the message names the service that answers there, not only the exit code (whichever
+    the start loop sees first)."""
+    exits = shutil.which("false")
+    assert exits is not None
+    monkeypatch.setattr(llamacpp, "_port_free", lambda port: True)
+    with Loopback() as other:
+        settings, _ = llamacpp._split_args(str(gguf), {"server": exits, "port": _port(other.url),
+                                                       "startup_timeout": 20})
+        server = llamacpp.LlamaServer(settings)
+        with pytest.raises(ServerStartError, match="answered by another service"):
+            server.start()
+    assert not server.alive()
+
+
 def test_our_server_reports_our_nonce(gguf: Path) -> None:
     settings, _ = llamacpp._split_args(str(gguf), {"server": str(FAKE)})
     server = llamacpp.LlamaServer(settings)

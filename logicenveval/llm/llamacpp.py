@@ -328,10 +328,13 @@ class LlamaServer:
         with deadline_client() as client:  # a probe ends within its bound (`bounded_get`)
             while time.monotonic() < deadline:
                 code = self.process.poll() if self.process is not None else -1
-                if code is not None:
+                healthy = _probe(client, f"{root}/health", deadline)[0] == 200
+                if code is not None and not healthy:
                     self.stop()
                     return f"it exited with code {code} while loading{self._log_tail()}"
-                if _probe(client, f"{root}/health", deadline)[0] == 200:
+                if healthy:
+                    # (also when ours has exited: a server that could not bind the port, taken
+                    # between the check and the bind, exits while the other service answers)
                     served = _served_models(client, f"{root}/v1/models", deadline)
                     if self.nonce in served and self.alive():
                         return ""
