@@ -73,6 +73,15 @@ The held-out rows show their aggregate only: no per-task line, no `--why` reason
 per-task entry in `--json`, so running the benchmark gives whoever tunes the reader nothing to tune
 on (they run `--dev-only`, which skips those sets altogether).
 
+Before a reader rule is merged, check it per task on every development set, not only the one it
+was written for (a rule too wide shows as a task of another set falling):
+
+    python benchmarks/reader_generalisation.py --dev-only --json before.json   # on main
+    python benchmarks/reader_generalisation.py --dev-only --compare before.json # with the rule
+
+`--compare OLD.json` lists every development task whose LogCov, SceVR or FauDR moved against an
+earlier `--json` file, a fall marked `FALL`, and exits 1 when any task fell.
+
 Last line: `reader_generalisation built_in=<LogCov>/<SceVR>/<FauDR> reworded=... new=...
 dev2_new=... dev4_reworded=... dev4_new=... dev3_reworded=... dev3_new=... dev5_reworded=...
 dev5_new=... dev6_reworded=... dev6_new=... dev7_reworded=... dev7_new=... held_out_reworded=...
@@ -171,6 +180,25 @@ def pct(x: float) -> str:
     return f"{100 * x:5.1f}"
 
 
+def compare(old: dict[str, Any], new: dict[str, Any]) -> tuple[list[str], int]:
+    """The lines of every task in both `--json` files whose figures moved, and how many fell. A
+    task of a set the old file lacks is new, not moved."""
+    lines, fell = [], 0
+    for row, tasks in new["per_task"].items():
+        for task_id, m in tasks.items():
+            before = old["per_task"].get(row, {}).get(task_id)
+            if before is None:
+                continue
+            moved = {k: (before[k], v) for k, v in m.items() if abs(v - before[k]) > 1e-9}
+            if not moved:
+                continue
+            down = any(v < b for b, v in moved.values())
+            fell += down
+            lines.append(f"  {'FALL' if down else 'gain'} {row:13s} {task_id:32s} " + " ".join(
+                f"{k} {pct(b).strip()} -> {pct(v).strip()}" for k, (b, v) in moved.items()))
+    return lines, fell
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--smoke", action="store_true", help="two tasks per set, for a quick check")
@@ -179,6 +207,8 @@ def main() -> None:
     ap.add_argument("--work", default=None, help="run folders go here (default: a temporary folder)")
     ap.add_argument("--why", action="store_true", help="under each task, the first reason an environment was lost")
     ap.add_argument("--json", default=None, help="also write every figure to this JSON file")
+    ap.add_argument("--compare", default=None, metavar="OLD.json",
+                    help="list the development tasks whose figures moved against an earlier --json file; exit 1 if any fell")
     ap.add_argument("--dev-only", action="store_true",
                     help="skip the held-out sets (whoever tunes the reader must not run it on them)")
     args = ap.parse_args()
@@ -214,15 +244,23 @@ def main() -> None:
         n = len(base) if name.startswith("built-in (") else len(results[name])
         print(f"  {name:30s} {n:5d} {pct(lc):>6s} {pct(sv):>6s} {pct(fd):>6s}")
     print(f"seconds={time.perf_counter() - start:.0f} runs={work}")
+    per_task = {s: {t: dict(zip(("logcov", "scevr", "faudr"), task_row(m), strict=True))
+                    for t, m in per.items()} for s, per in results.items() if s not in UNSEEN}
     if args.json:
         Path(args.json).write_text(json.dumps({
             "rows": {k: {"logcov": v[0], "scevr": v[1], "faudr": v[2]} for k, v in rows.items()},
-            "per_task": {s: {t: dict(zip(("logcov", "scevr", "faudr"), task_row(m), strict=True))
-                             for t, m in per.items()} for s, per in results.items() if s not in UNSEEN},
+            "per_task": per_task,
         }, indent=1) + "\n", encoding="utf-8")
     print("reader_generalisation " + " ".join(
         f"{name.replace('-', '_').replace(' ', '_')}={'/'.join(pct(x).strip() for x in rows[name])}"
         for name, _ in sets))
+    if args.compare:
+        lines, fell = compare(json.loads(Path(args.compare).read_text(encoding="utf-8")), {"per_task": per_task})
+        print(f"against {args.compare}:")
+        print("\n".join(lines) or "  no development task moved")
+        print(f"tasks that fell: {fell}")
+        if fell:
+            raise SystemExit(1)
 
 
 if __name__ == "__main__":

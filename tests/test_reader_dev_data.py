@@ -86,3 +86,24 @@ def test_the_benchmark_aggregates_as_the_library_does(tmp_path: Path) -> None:
     got = json.loads(results_file.read_text(encoding="utf-8"))["results"][bench.GENERATOR]
     assert bench.aggregate(per_task) == pytest.approx((got["logcov"], got["scevr"], got["faudr"]["avg"]))
     assert set(why) <= set(per_task)
+
+
+def test_the_benchmarks_compare_lists_every_moved_task_and_counts_the_falls() -> None:
+    """`--compare OLD.json` (the per-task check before a reader rule is merged): a task that fell
+    in any figure is a fall, one that only rose a gain, an unmoved task or one of a set the old
+    file lacks says nothing."""
+    import sys
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
+    import reader_generalisation as bench
+
+    def fig(lc: float, sv: float, fd: float) -> dict[str, float]:
+        return {"logcov": lc, "scevr": sv, "faudr": fd}
+
+    old = {"per_task": {"new": {"a": fig(1, 1, 1), "b": fig(0.5, 1, 0.5), "c": fig(1, 1, 1)}}}
+    new = {"per_task": {"new": {"a": fig(1, 0.5, 1), "b": fig(1, 1, 0.5), "c": fig(1, 1, 1)},
+                        "dev9 new": {"d": fig(0, 0, 0)}}}
+    lines, fell = bench.compare(old, new)
+    assert fell == 1
+    assert [line.split()[:3] for line in lines] == [["FALL", "new", "a"], ["gain", "new", "b"]]
+    assert "scevr 100.0 -> 50.0" in lines[0] and "logcov 50.0 -> 100.0" in lines[1]
