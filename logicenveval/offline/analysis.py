@@ -65,6 +65,7 @@ from logicenveval.offline.sentences import (
     split_sentences,
     unquote,
 )
+from logicenveval.offline.vocabulary import reading_catalog
 from logicenveval.scene.compat import can_hold
 
 #: words between a subject and its predicate that describe a current situation
@@ -1695,7 +1696,7 @@ def _ensured(sentence: str) -> str:
 
 
 def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
-    lex = Lexicon.build(brief, catalog)
+    lex = Lexicon.build(brief, reading_catalog(catalog))
     kinds = {name: cat for name, role in dict(brief.get("roles") or {}).items()
              if (cat := catalog.get(str(role.get("category", "")))) is not None}
     reader = _Reader(lex, _capabilities(brief, catalog), kinds)

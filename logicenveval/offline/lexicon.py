@@ -15,6 +15,7 @@ from typing import Any
 from lemminflect import getAllLemmas, getLemma
 
 from logicenveval.domain.catalog import Catalog, per_catalog
+from logicenveval.offline.wordnet import is_wordnet_name
 
 WORD = re.compile(r"[a-z0-9]+(?:'[a-z]+)?")
 
@@ -215,7 +216,7 @@ class Lexicon:
             cat = catalog.get(role["category"])
             for n in {role["category"], *(cat.synonyms if cat else ())}:
                 phrase = words_of(n)
-                if len(phrase) > 1:
+                if len(phrase) > 1 and not is_wordnet_name(n):
                     heads.setdefault(phrase[-1:], set()).add(name)
         for head, names in heads.items():
             if head not in lex.phrases:
@@ -227,7 +228,7 @@ class Lexicon:
         for name, role in roles.items():
             cat = catalog.get(role["category"])
             for n in {role["category"], *(cat.synonyms if cat else ())}:
-                if len(words_of(n)) == 1:
+                if len(words_of(n)) == 1 and not is_wordnet_name(n):
                     word = words_of(n)[0]
                     for tail in tails:
                         if len(word) > len(tail) + 2 and word.endswith(tail) and (tail,) not in lex.phrases:

@@ -44,6 +44,8 @@ from logicenveval.offline.sentences import (
     expand,
     unquote,
 )
+from logicenveval.offline.vocabulary import reading_catalog
+from logicenveval.offline.wordnet import is_wordnet_name
 from logicenveval.scene.compat import can_hold
 
 
@@ -190,6 +192,8 @@ def _phrase_tables(catalog: Catalog) -> tuple[dict[tuple[str, ...], str], dict[s
         for text in (name, *cat.synonyms):
             phrase = words_of(text)
             phrases.setdefault(phrase, name)
+            if is_wordnet_name(text):
+                continue  # a last-resort name: matched whole, lends no head noun
             # the head noun: the last word, or the one before "of" ("chest of drawers" is a chest)
             heads.setdefault(phrase[phrase.index("of") - 1] if "of" in phrase[1:] else phrase[-1], []).append(name)
     return phrases, heads, max(len(p) for p in phrases)
@@ -927,7 +931,7 @@ def name_objects(description: str, catalog: Catalog, rooms: Iterable[str] = ()) 
     """Catalog categories and synonyms named in the description, read as a careful reader would
     (the module docstring): one object per kind named, or one per instance where the text tells
     several apart, named for what tells them apart, with the colour as attribute."""
-    return _Reader(description, catalog, rooms).read()
+    return _Reader(description, reading_catalog(catalog), rooms).read()
 
 
 def _lemma_named(name: str) -> bool:

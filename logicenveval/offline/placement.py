@@ -54,6 +54,7 @@ from logicenveval.offline.sentences import (
     split_sentences,
     unquote,
 )
+from logicenveval.offline.vocabulary import reading_catalog
 
 # ---------------------------------------------------------------------------------------------
 # Reading rules (data tables). Each names a class of words, never a task's phrase or object.
@@ -249,7 +250,7 @@ def _clauses(words: list[str], lo: int, hi: int) -> list[Span]:
 
 
 def _read(brief: Mapping[str, Any], catalog: Catalog, kinds: frozenset[str]) -> list[str]:
-    lex = Lexicon.build(brief, catalog)
+    lex = Lexicon.build(brief, reading_catalog(catalog))
     reading = _Reading({k: {} for k in _ORDER}, {k: {} for k in _ORDER})
     if len(lex.rooms) == 1:
         reading.context_room = lex.rooms[0]

@@ -1,0 +1,27 @@
+"""The WordNet names of the catalog's kinds (`wordnet_names.json`, beside this module; WordNet 3.1,
+licence in `WORDNET_LICENSE`), the offline reader's last-resort vocabulary (`offline.vocabulary`).
+
+Built by `tools/wordnet_names.py` from the hand-checked senses in
+`benchmark_data/wordnet_senses.json` (docs/reader.md)."""
+
+from __future__ import annotations
+
+import json
+from functools import lru_cache
+from pathlib import Path
+
+WORDNET_NAMES = Path(__file__).with_name("wordnet_names.json")
+
+
+@lru_cache(maxsize=1)
+def wordnet_names() -> dict[str, str]:
+    """Word (spaces between words) -> catalog kind."""
+    names: dict[str, str] = json.loads(WORDNET_NAMES.read_text(encoding="utf-8"))["names"]
+    return names
+
+
+def is_wordnet_name(text: str) -> bool:
+    """Whether a synonym of the reading catalog is a WordNet name (not the catalog's own): such
+    a name is matched as a whole phrase only, never lends its head noun ("lady's slipper", a
+    flower, must not make every "slipper" a flower)."""
+    return text in wordnet_names()
