@@ -86,6 +86,15 @@ def test_a_wordnet_compound_lends_no_head_noun() -> None:
     assert "flower" not in _categories("A slipper is under the bed.")
 
 
+@pytest.mark.parametrize(("text", "category"), [
+    ("Where the milk carton remains on the table, it shall be returned to the fridge.", "dining_table"),
+    ("If the milk is still out on the table after breakfast, put it back in the fridge.", "dining_table"),
+])
+def test_wordnet_names_lend_no_context_words(text: str, category: str) -> None:
+    # "low-fat milk" (a milk in WordNet) must not make "the table" the "low table", a coffee table
+    assert category in _categories(text)
+
+
 def test_reading_catalog_appends_after_the_catalogs_own_synonyms() -> None:
     catalog = load_catalog()
     reading = reading_catalog(catalog)

@@ -356,7 +356,7 @@ class _Reader:
         def score(category: str | None) -> tuple[bool, bool, int, bool, bool, int, int, bool]:
             assert category is not None
             cat = self.catalog.categories[category]
-            others = {w for text in (category, *cat.synonyms) for w in words_of(text)} - {word}
+            others = {w for text in (category, *_own(cat)) for w in words_of(text)} - {word}
             rooms = set(cat.rooms)
             # its own name: written as the text writes it ("glasses"), or the word's lemma ("chairs")
             # when the name is a lemma (not "glasses" for "glass", a drinking glass)
@@ -426,7 +426,7 @@ class _Reader:
         """For each name of `category` headed by `word` (singular), whether it is written in the
         plural ("glasses", "open shelves", "headphones")."""
         out = []
-        for text in (category, *self.catalog.categories[category].synonyms):
+        for text in (category, *_own(self.catalog.categories[category])):
             written = re.findall(r"[a-z0-9]+", text.lower().replace("_", " "))
             head = written[written.index("of") - 1] if "of" in written[1:] else written[-1]
             if singular(head) == word:
@@ -456,7 +456,7 @@ class _Reader:
                 continue
             if n > 1 or len(set(self.heads.get(words[i], []))) == 1:
                 self.named.add(category)
-                for text in (category, *self.catalog.categories[category].synonyms):
+                for text in (category, *_own(self.catalog.categories[category])):
                     out.update(words_of(text))
         return out - _NOT_CONTEXT
 
@@ -503,7 +503,7 @@ class _Reader:
         part = _PARTS.get(self.text.words[i])
         if part is None or prev not in _ORDINALS - {"one", "other", "next", "last"}:
             return False
-        return any(part in {w for text in (c, *self.catalog.categories[c].synonyms) for w in words_of(text)}
+        return any(part in {w for text in (c, *_own(self.catalog.categories[c])) for w in words_of(text)}
                    and not self.catalog.categories[c].pickable for c in self.recent)
 
     def part_of_its_furniture(self, i: int, n: int, category: str, prev: str) -> bool:
@@ -678,7 +678,7 @@ class _Reader:
         exact word wins ties): a pantry's levels are pantry shelves, a bedroom's wall shelves."""
         def score(c: str) -> tuple[int, int, bool]:
             cat = self.catalog.categories[c]
-            others = {w for t in (c, *cat.synonyms) for w in words_of(t)} - {"shelf"}
+            others = {w for t in (c, *_own(cat)) for w in words_of(t)} - {"shelf"}
             return len(set(cat.rooms) & self.room_types), len(others & self.context), c == exact
 
         return max(options, key=score, default=None)
@@ -932,6 +932,13 @@ def name_objects(description: str, catalog: Catalog, rooms: Iterable[str] = ()) 
     (the module docstring): one object per kind named, or one per instance where the text tells
     several apart, named for what tells them apart, with the colour as attribute."""
     return _Reader(description, reading_catalog(catalog), rooms).read()
+
+
+def _own(cat: Category) -> list[str]:
+    """A kind's catalog synonyms without the WordNet names the reading catalog appends: those name
+    a thing as a whole phrase only, and lend no words to the context that tells kinds apart ("low"
+    of "low-fat milk" must not make "the table" the coffee table, "low table")."""
+    return [s for s in cat.synonyms if not is_wordnet_name(s)]
 
 
 def _lemma_named(name: str) -> bool:
