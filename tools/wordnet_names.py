@@ -21,7 +21,9 @@ only when, mechanically (the walk does not enter another kind's own synset: "dol
 (c) it is not already a catalog kind name or synonym (the catalog's own names always win);
 (d) that sense lies in lexicographer file noun.artifact (06), noun.food (13) or noun.plant (20):
     household things, foods and plants, never a person, place, substance or proper noun of other
-    files; lemmas with a capital letter (brands, proper nouns) or a digit are dropped too;
+    files; lemmas with a capital letter (brands, proper nouns) or a digit are dropped too, and so
+    is a word one of whose other senses is a proper noun ("murphy", a potato, is also Murphy;
+    "derby", a hat, is also Derby);
 (e) no word of a compound is a catalog name or synonym of another kind ("toilet bowl", a bowl
     in WordNet, would take the toilet's word; "paper cup" the newspaper's).
 
@@ -171,7 +173,7 @@ def build(senses: dict[str, list[dict[str, object]]], catalog: dict[str, dict[st
             collected.add(offset)
             if depth < DEPTH:
                 frontier += [(h, depth + 1) for h in data[offset].hyponyms]
-        for offset in collected:
+        for offset in sorted(collected):
             syn = data[offset]
             if syn.lex_file not in HOUSEHOLD_LEX_FILES:
                 continue
@@ -180,7 +182,9 @@ def build(senses: dict[str, list[dict[str, object]]], catalog: dict[str, dict[st
                 if word != word.lower() or any(ch.isdigit() for ch in word):
                     continue
                 first = (index.get(word.lower()) or [None])[0]
-                if first in collected and word.lower() not in not_nouns:
+                proper = any(lemma.split("(")[0] != word and lemma.split("(")[0].lower() == word
+                             for other in index.get(word, []) for lemma in data[other].lemmas)
+                if first in collected and word.lower() not in not_nouns and not proper:
                     claims.setdefault(_bare(lemma), set()).add(kind)
     names: dict[str, str] = {}
     for word, kinds in sorted(claims.items()):
