@@ -17,6 +17,7 @@ from reader_sets import (
     check_a_few_factors_and_a_stated_fact,
     check_all_validate,
     check_built_from_json,
+    check_ids_new,
     check_mutant_lists_current,
     check_new_tasks_are_fresh,
     check_not_templated,
@@ -49,10 +50,7 @@ def test_the_set_rewords_twelve_builtin_tasks_each_in_its_own_register() -> None
 
 
 def test_ids_do_not_collide_with_the_builtin_tasks_or_the_development_sets() -> None:
-    taken = set(task_ids()) | set(task_ids(DATA / "reader_dev" / "tasks_reworded"))
-    for folder in TUNED_NEW:
-        taken |= set(task_ids(folder))
-    assert not (set(task_ids(REWORDED)) | set(task_ids(NEW))) & taken
+    check_ids_new((REWORDED, NEW), ("reader_dev", "reader_dev2"))
 
 
 def test_reworded_folders_are_built_from_the_json(tmp_path: Path) -> None:

@@ -19,10 +19,12 @@ from reader_sets import (
     check_a_few_factors_and_a_stated_fact,
     check_all_validate,
     check_built_from_json,
+    check_ids_new,
     check_mutant_lists_current,
     check_new_tasks_are_fresh,
     check_not_templated,
     check_policies,
+    check_registers_new,
     check_rewording_changes_only_the_wording,
     check_rewording_names_every_object,
     check_validates,
@@ -38,8 +40,6 @@ NEW = HOLDOUT2 / "tasks_new"
 TUNED_NEW = tuple(DATA / name / "tasks_new" for name in ("reader_dev", "reader_dev2", "reader_dev3", "reader_dev4"))
 #: the first held-out set's new tasks: not tuned on, but this set must not repeat them either
 EARLIER_NEW = (*TUNED_NEW, DATA / "reader_holdout" / "tasks_new")
-#: every other set's task folders, whose ids this set's must not reuse
-OTHER_FOLDERS = (*EARLIER_NEW, *(DATA / name / "tasks_reworded" for name in ("reader_dev", "reader_holdout", "reader_dev3", "reader_dev4")))
 #: the registers of the earlier sets' rewordings (this set's are all new)
 EARLIER_REWORDINGS = ("reader_dev", "reader_holdout", "reader_dev3", "reader_dev4")
 ENTRIES = rewordings(HOLDOUT2)
@@ -52,17 +52,13 @@ def test_the_set_rewords_twelve_builtin_tasks_each_in_a_register_of_its_own() ->
     assert set(originals) <= set(task_ids())
     registers = [str(e["register"]) for e in ENTRIES]
     assert len(set(registers)) == len(registers)
-    earlier = {str(e["register"]) for name in EARLIER_REWORDINGS for e in rewordings(DATA / name)}
-    assert not set(registers) & earlier
+    check_registers_new(ENTRIES, EARLIER_REWORDINGS)
     assert all(str(e["id"]) == f"{e['original']}_ho2" for e in ENTRIES)
     assert len(task_ids(NEW)) >= 8
 
 
 def test_ids_do_not_collide_with_any_other_set() -> None:
-    taken = set(task_ids())
-    for folder in OTHER_FOLDERS:
-        taken |= set(task_ids(folder))
-    assert not (set(task_ids(REWORDED)) | set(task_ids(NEW))) & taken
+    check_ids_new((REWORDED, NEW), ("reader_dev", "reader_dev2", "reader_dev3", "reader_dev4", "reader_holdout"))
 
 
 def test_reworded_folders_are_built_from_the_json(tmp_path: Path) -> None:
