@@ -176,6 +176,18 @@ class _Text:
 
 
 @per_catalog
+def _control_kinds(catalog: Catalog) -> dict[str, tuple[str, ...]]:
+    """The two-word control kinds by the thing they work ("light" -> ("light_switch",)): a head
+    in `CONTROL_HEADS` after the word."""
+    out: dict[str, tuple[str, ...]] = {}
+    for c in catalog.categories:
+        w = words_of(c)
+        if len(w) == 2 and w[1] in CONTROL_HEADS:
+            out[w[0]] = (*out.get(w[0], ()), c)
+    return out
+
+
+@per_catalog
 def _phrase_tables(catalog: Catalog) -> tuple[dict[tuple[str, ...], str], dict[str, list[str]], int]:
     """Each category name and synonym as words -> its category; head noun -> the categories it
     heads; the longest phrase's length: ~500 names, the same for every description the process
@@ -205,6 +217,7 @@ class _Reader:
     def __init__(self, description: str, catalog: Catalog, rooms: Iterable[str]) -> None:
         self.catalog = catalog
         self.phrases, self.heads, self.longest = _phrase_tables(catalog)
+        self.controls = _control_kinds(catalog)
         text = expand(binned(unquote(description)))
         toks = tokens(text)
         self.text = _Text([w for w, _, _ in toks], [text[a:b].lower() for _, a, b in toks],
@@ -337,13 +350,13 @@ class _Reader:
                 and any(len(h) > len(word) + 2 and h.endswith(word) for h in self.used.get(c, ()))]
         if tail and self.leads_noun(i):
             return tail[0]
-        control = [c for c in self.recent if words_of(c) == (word, *words_of(c)[1:])
-                   and len(words_of(c)) == 2 and words_of(c)[1] in CONTROL_HEADS]
-        if control and exact is None:
-            return control[-1]  # "Light switch: if the light is on": the light the switch works
-        ahead = self.controls_ahead(i)
-        if ahead is not None and exact is None:
-            return ahead  # "And the light - is it on? Then flick off the switch": one thing
+        if exact is None:
+            control = [c for c in self.recent if c in self.controls.get(word, ())]
+            if control:
+                return control[-1]  # "Light switch: if the light is on": the light the switch works
+            ahead = self.controls_ahead(i)
+            if ahead is not None:
+                return ahead  # "And the light - is it on? Then flick off the switch": one thing
         if exact is None and (not options or not (self.leads_noun(i) or self.modified(i)) or word in self.room_heads):
             return None
         prev = self.text.words[i - 1] if i > 0 else ""
@@ -386,8 +399,7 @@ class _Reader:
         sentence or the next says its head alone ("the switch"): the thing the text switches,
         the switch, as when it is named first (`CONTROL_HEADS`)."""
         word = self.text.words[i]
-        kinds = [c for c in self.catalog.categories if len(words_of(c)) == 2 and words_of(c)[0] == word
-                 and words_of(c)[1] in CONTROL_HEADS]
+        kinds = self.controls.get(word, ())
         if len(kinds) != 1:
             return None
         end = self.text.sentence_end(self.text.sentence_end(i))
