@@ -103,6 +103,11 @@ def test_a_part_said_of_a_piece_of_furniture_names_that_piece() -> None:
     text = "The first aid kit lives on the top shelf of the bookcase."
     assert kinds(text) == {"first_aid_kit", "bookshelf"}
     assert placed(text, ("studio",)) == {"on(first_aid_kit, bookshelf)"}
+    # the part is inside a piece that holds things inside, whatever the preposition
+    assert placed("The spray bottle is on the lower shelf of the wardrobe.", ("bedroom",)) == {
+        "inside(spray_bottle, wardrobe)"}
+    assert placed("Check the spray bottle on the lower shelf of the wardrobe.", ("bedroom",)) == {
+        "inside(spray_bottle, wardrobe)"}
     text = "The sock is in the top drawer of the dresser."
     assert kinds(text, ("bedroom",)) == {"sock", "dresser"}
     assert placed(text, ("bedroom",)) == {"inside(sock, dresser)"}
@@ -130,3 +135,36 @@ def test_the_subject_of_a_relative_clause_of_keeping_is_the_thing_before_it() ->
 def test_on_top_of_is_on() -> None:
     assert placed("The cardboard box is on top of the piano.", ("vestry",)) == {"on(cardboard_box, piano)"}
     assert placed("Your alarm clock is on top of the dresser.", ("dorm_room",)) == {"on(alarm_clock, dresser)"}
+
+
+# -- from dev 7's rewordings -----------------------------------------------------------------------
+
+
+def test_and_or_is_the_inclusive_or() -> None:
+    # dev 7 (a babysitting job sheet)
+    assert set(factors("A sofa pillow and/or a toy may be on the floor.", ("living_room",))) == {
+        "sofa_pillow_on_floor", "toy_on_floor"}
+    # written for the test
+    assert set(factors("A mug and/or a plate might be on the desk.", ("study",))) == {"mug_on_desk", "plate_on_desk"}
+
+
+def test_a_place_before_an_arrow_is_the_situation_its_instruction_answers() -> None:
+    # dev 7: "Pillow on the floor -> back on the sofa." states nothing: it asks
+    text = "Tasks:\n1. Pillow on the floor -> back on the sofa."
+    assert placed(text, ("living_room",)) == set()
+    assert set(factors(text, ("living_room",))) == {"pillow_on_floor"}
+    # written for the test
+    assert placed("Mug on the desk -> into the sink.", ("study",)) == set()
+
+
+def test_bare_singular_headings_sorting_by_kind_are_classes() -> None:
+    # dev 7 (a hotel's turndown card): "Novel:" is a kind of book, no novel of its own
+    text = ("Nightstand: a book may be on the nightstand. Novel: to the bookshelf. Textbook: to the desk. "
+            "Any other book: into the nightstand drawer.")
+    assert "novel" not in kinds(text, ("bedroom",))
+    assert factors(text, ("bedroom",))["book_kind"] == {
+        "attr(book, kind, novel)", "attr(book, kind, textbook)",
+        "not attr(book, kind, novel) and not attr(book, kind, textbook)"}
+    # written for the test
+    text = "Toy on the floor? Doll: into the red toy box. Ball: into the basket. Any other toy: into the green toy box."
+    assert kinds(text, ("kids_room",)) == {"toy", "toy_box", "basket"}

@@ -894,14 +894,15 @@ class _Reader:
         head = words[i + n - 1]
         kinds = [c for c in self.recent for key in KIND_ATTRIBUTES
                  if head in self.catalog.categories[c].attributes.get(key, ())]
-        if prev in _GENERIC_ONE and self.text.raw[i + n - 1] == head:
+        if (prev in _GENERIC_ONE or self.bare_heading(i, n)) and self.text.raw[i + n - 1] == head:
             # "a doll into the red toy box; ... any other toy into the green one": an indefinite
             # one set against "other <kind>" in its sentence is a class of that kind too, or in a
             # run of sentences that each open with one ("A novel goes on the bookshelf. A
-            # textbook goes on the desk. Any other book goes in the drawer.")
+            # textbook goes on the desk. Any other book goes in the drawer."), or with a bare
+            # singular heading ("Novel: to the bookshelf. Textbook: to the desk. Any other book: ...")
             end = self.text.sentence_end(i)
             for _ in range(_RUN):
-                if end >= len(words) or words[end] not in _RUN_OPENERS:
+                if end >= len(words) or words[end] not in _RUN_OPENERS and not self.bare_heading(end, 1):
                     break
                 end = self.text.sentence_end(end)
             said = words[self.text.sentence_start(i):end]
@@ -910,6 +911,15 @@ class _Reader:
         if self.text.raw[i + n - 1] == head or prev in _DETERMINERS or prev in _COUNTS:
             return False
         return bool(kinds)
+
+    def bare_heading(self, i: int, n: int) -> bool:
+        """Whether the `n` words at `i` are a heading of their own: a bare singular noun opening its
+        sentence, right before a colon ("Novel: to the bookshelf", "Textbook: to the desk"), said
+        of what is of that kind, as "a novel" is."""
+        words, gaps = self.text.words, self.text.gaps
+        end = i + n
+        return (i == 0 or bool(_SENTENCE_END.search(gaps[i]))) and end < len(words) and ":" in gaps[end] \
+            and self.text.raw[end - 1] == words[end - 1]
 
     def own_kind(self, a: int, b: int, head: str) -> bool:
         """Whether words `a`..`b` of an item name one thing of a kind of its own, with another

@@ -43,6 +43,7 @@ from logicenveval.offline.clauses import (
 from logicenveval.offline.lexicon import COLOR_WORDS, FURNITURE_PARTS, Lexicon, Mention, singular
 from logicenveval.offline.sentences import (
     ACTIONS,
+    ARROW,
     NORM_ADVERBS,
     PERSONAL_SUBJECTS,
     PREP_IN,
@@ -216,7 +217,10 @@ class _Reading:
 def _sentences(text: str, lex: Lexicon) -> list[_Sentence]:
     out = []
     for part in split_sentences(expand(text), full_stops_only=True):
-        low = part.lower()
+        # "Pillow on the floor -> back on the sofa": the arrow is "then", what comes before it the
+        # situation its instruction answers, as a heading before a colon (`clause_spans`), no
+        # statement of where the pillow is
+        low = ARROW.sub(" : ", part).lower()
         toks = [_Token(m.group(0), singular(m.group(0)) if m.group(0)[0].isalnum() else m.group(0),
                        m.start(), m.end()) for m in _TOKEN.finditer(low)]
         toks = [t for t in toks if t.word != "\n"]
@@ -489,7 +493,9 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
         k += 1
     whole = _part_of(sent, ms, k, hi)
     if whole is not None:
-        return words[j], whole  # "on the lower shelf of the metal rack": on the rack
+        # "on the lower shelf of the metal rack": on the rack; "on the top shelf of the wardrobe":
+        # in it (a part is inside a container, on an open piece: `_contain`, as in a bracket)
+        return "in", whole
     m = next((m for m in ms if m.start == k), None)
     if m is None and k > j + 1 and words[k - 1] in ARTICLES and k + 1 < hi and words[k].isalpha() \
             and words[k] not in AT | PREP_OF_PLACE and not any(t.start <= k < t.end for t in ms):
@@ -1130,7 +1136,10 @@ def _resting(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, cat
         if a.kind != "role" or b.kind != "role" or len(a.roles) != 1 or len(b.roles) != 1:
             continue
         between = words[a.end:b.start]
-        whole = _part_of(sent, ms, b.start, clause.end) if between[:1] in ([w] for w in AT) else None
+        part = a.end + 1
+        while part < clause.end and (words[part] in ARTICLES or words[part] in RANKS):
+            part += 1
+        whole = _part_of(sent, ms, part, clause.end) if between[:1] in ([w] for w in AT) else None
         if whole is not None:
             b = whole  # "the brown bottle on the lower shelf of the metal rack": on the rack
         elif not between or between[0] not in AT or not all(w in ARTICLES or w in RANKS for w in between[1:]):
@@ -1144,7 +1153,7 @@ def _resting(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, cat
         described = clause.mood == "condition" and (_described_subject(words, a.start, b.end, clause) or pointed)
         if clause.mood == "condition" and not described:
             continue
-        fact = _contain(catalog, lex, a.roles[0], b.roles[0], between[0])
+        fact = _contain(catalog, lex, a.roles[0], b.roles[0], "in" if whole is not None else between[0])
         if fact is not None:  # a condition on its state takes its place for granted: a statement
             reading.place("settled" if described else "presumed", a.roles[0], fact)
 

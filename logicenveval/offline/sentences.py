@@ -131,8 +131,12 @@ _ABBREV = re.compile(r"\b(e\.g|i\.e|etc|approx|vs)\.", re.I)
 
 
 #: a slash between two words offers alternatives, as "or" does ("on the chair / on the floor",
-#: "wet/dirty"; "and/or" is "and or")
+#: "wet/dirty")
 _SLASH = re.compile(r"(?<=[a-z])\s*/\s*(?=[a-z])", re.I)
+#: "and/or" is one connective, the inclusive "or" (Merriam-Webster: "used as a function word to
+#: indicate that two words or expressions are to be taken together or individually"): "A sofa
+#: pillow and/or a toy may be on the floor" doubts each, as "or" does (not "and or or")
+_AND_OR = re.compile(r"\band\s*/\s*or\b", re.I)
 #: shorthand's "w/" is "with" ("wipe w/ sponge"), not "w or ..."
 _WITH = re.compile(r"\bw/\s*", re.I)
 
@@ -574,8 +578,8 @@ def detable(text: str) -> str:
 
 def expand(text: str) -> str:
     """The text with contractions spelled out ("it's" -> "it is"), possessives dropped, "w/" read
-    as "with" and a slash between words as "or"."""
-    out = _SLASH.sub(" or ", _WITH.sub("with ", text.replace("\u2019", "'")))
+    as "with", "and/or" as "or" and a slash between words as "or"."""
+    out = _SLASH.sub(" or ", _AND_OR.sub("or", _WITH.sub("with ", text.replace("\u2019", "'"))))
     for pat, repl in _CONTRACTIONS:
         out = re.sub(pat, repl, out, flags=re.I)
     return out
