@@ -61,8 +61,9 @@ def test_a_word_and_a_number_alone_are_a_reading_not_a_thing() -> None:
     assert kinds("Weather at noon: wind NW 4, clock 0815, temp 14.", ("porch",)) == set()
 
 
-def test_a_numbered_thing_after_a_preposition_is_still_a_thing() -> None:
+def test_a_numbered_thing_is_still_a_thing() -> None:
     assert kinds("Put the jar in drawer 3.") == {"drawer"}
+    assert kinds("Make up tonight: bed 2, bed 5.", ("dormitory",)) == {"bed"}
 
 
 # -- which one a thing is, by its colour -----------------------------------------------------------
@@ -75,6 +76,9 @@ def test_a_bracket_saying_which_one_gives_its_colour() -> None:
     # written for the test
     assert named("Put the towels in the laundry basket by the stairs (the blue wicker one).")[
         "laundry_basket"] == ("laundry_basket", {"color": "blue"})
+    assert named("Stand it in the bucket (the red one by the tap).")["bucket"] == ("bucket", {"color": "red"})
+    # a bracket that is a clause of its own says no more of the thing
+    assert named("Put the mug in the bucket (the red one is mine).")["bucket"] == ("bucket", {})
 
 
 def test_a_colour_before_a_modifier_naming_nothing_is_the_heads() -> None:

@@ -317,16 +317,21 @@ class _Reader:
 
     def reading_label(self, i: int) -> bool:
         """Whether the one-word noun at word `i` labels a reading, no object: it opens its item
-        (no determiner, preposition or verb before it) and a number alone follows it up to a
-        comma, full stop or the line's end ("Wind SW 3, bar 1016, vis good": the barometer;
-        "temp 21, pressure 1008"). A number before a colon heads what is said of a thing
-        ("Shelf 2: novels"), and "in drawer 3", "clear table 5" name one."""
+        (no determiner, preposition or verb before it) and a measured value alone follows it up to
+        a comma, full stop or the line's end ("Wind SW 3, bar 1016, vis good": the barometer;
+        "clock 0815"). A value is a number of three digits or more, or with a decimal point: a
+        small whole number numbers the thing ("Make up tonight: bed 2, bed 5"); a number before a colon
+        heads what is said of a thing ("Shelf 2: novels"), and "in drawer 3" names one."""
         words, gaps = self.text.words, self.text.gaps
         k = i + 1
         if k >= len(words) or gaps[k].strip() or not _NUMBER.fullmatch(self.text.raw[k]):
             return False
+        measured = len(self.text.raw[k]) >= 3
         while k + 1 < len(words) and gaps[k + 1] == "." and _NUMBER.fullmatch(self.text.raw[k + 1]):
             k += 1  # "4.2": one number
+            measured = True
+        if not measured:
+            return False
         ends = k + 1 == len(words) or bool(_READING_END.match(gaps[k + 1]))
         return ends and (i == 0 or bool(_ITEM_BREAK.search(gaps[i]) or _SENTENCE_END.search(gaps[i])))
 
@@ -574,7 +579,10 @@ class _Reader:
                 for k, w in zip(range(the + 1, i), said, strict=True)):
             return None
         predicate = words[the - 1] in _COPULAS and not gaps[the].strip()
-        return color if predicate or "(" in gaps[the] else None
+        # a bracket that only tells which one: it closes after "one" or goes on with a place ("(the
+        # red one by the window)"), not a clause of its own ("(the red one is mine)")
+        closes = i + 1 == len(words) or ")" in gaps[i + 1] or words[i + 1] in _PREPOSITIONS
+        return color if predicate or "(" in gaps[the] and closes else None
 
     def class_of_named(self, category: str) -> bool:
         """Whether `category` was named only by a bare plural ("Toys are kept in the toy box")
