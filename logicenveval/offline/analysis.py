@@ -585,7 +585,7 @@ class _Reader:
             if m.kind not in ("role", "pronoun"):
                 continue
             facts += self._location(words, mentions, idx, negated)
-            if not (m.kind == "role" and _prep_within(words, m, WHERE_PREPS) and any(
+            if not (m.kind == "role" and _prep_within(words, m, WHERE_PREPS | SPATIAL_PREPS) and any(
                     x.kind in ("role", "pronoun") and x.end <= m.start for x in mentions)
                     and words[m.end : m.end + 1] not in (["which"], ["that"])):
                 # "Candle on the coffee table still lit": the state is the candle's, not its place's
@@ -1023,8 +1023,10 @@ class _Reader:
         return []
 
     def _pp_at(self, words: list[str], k: int) -> int:
-        """End of a short prepositional phrase `on the coffee table` starting at k, else 0."""
-        if words[k] not in PREP_ON | PREP_IN | {"at", "by", "near", "under", "next"}:
+        """End of a short prepositional phrase `on the coffee table` starting at k, else 0; after a
+        preposition of place only (`SPATIAL_PREPS`), also without an article, as notes write it
+        ("Desk lamp over chart table left on": the state is the lamp's)."""
+        if words[k] not in PREP_ON | PREP_IN | {"at", "by", "near", "under", "next"} | SPATIAL_PREPS:
             return 0
         toks = [(w, 0, 0) for w in words[k + 1 : k + 6]]
         for m in self.lex.find_mentions(toks):
@@ -1038,7 +1040,7 @@ class _Reader:
         while end < min(j + 2, len(words)) and words[end].isalpha() and words[end] not in (
                 STATE_WORDS.keys() | DESCRIPTIVE | NEGATIONS | MOTION | PREP_ON | PREP_IN | {"and", "or", "but"}):
             end += 1
-        return end if j > k + 1 and end > j else 0
+        return end if (j > k + 1 or words[k] in SPATIAL_PREPS) and end > j else 0
 
     def _attribute(self, words: list[str], m: Mention, negated: bool) -> list[Fact]:
         k = m.end
@@ -1498,6 +1500,10 @@ def _read_heading(reader: _Reader, text: str) -> tuple[list[Fact], tuple[str, ..
 
 #: state flags only some kinds of thing take (a shirt does not open, a towel is not switched on),
 #: with the catalog capability that allows each
+#: prepositions with a sense of place only (not "on", "in": "left on", "plugged in"), after which
+#: a bare noun phrase is a place even without an article ("lamp over chart table", "kettle
+#: beside sink": `_pp_at`)
+SPATIAL_PREPS = frozenset({"over", "above", "below", "beneath", "beside", "behind", "under", "near"})
 FITTED_BY = {"open": "openable", "toggled_on": "toggleable"}
 FITTED = frozenset(FITTED_BY)
 

@@ -112,6 +112,11 @@ def _spare(role: str) -> bool:
     return len(told) > 1 and told[0] in SPARE_WORDS
 
 
+#: parts of a piece of furniture that holds things ("the bottom shelf of the metal rack", "the top
+#: drawer of the dresser"): said "of" a thing, the part names that thing, no object of its own
+#: (`offline.naming`), and a thing put on or in the part is on or in the thing (`offline.placement`)
+FURNITURE_PARTS = frozenset({"shelf", "level", "tier", "drawer", "compartment"})
+
 #: nouns of time that make the name before them a time ("on bin day", "on trash day", "at bath
 #: time", "laundry day"): a noun modifying its head, which names no object
 TIME_HEADS = frozenset({"day", "night", "week", "morning", "evening", "time", "weekend"})

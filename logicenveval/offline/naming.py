@@ -29,7 +29,9 @@ from logicenveval.offline.handlers import handler
 from logicenveval.offline.lexicon import (
     COLOR_WORDS,
     CONTROL_HEADS,
+    FURNITURE_PARTS,
     SPARE_WORDS,
+    TIME_HEADS,
     singular,
     tokens,
     verb_at,
@@ -126,6 +128,9 @@ _SENTENCE_END = re.compile(r"[.!?]|\n")
 #: a person's name as a possessive before a noun ("Marco's glass", "Priya's cup"): capitalised,
 #: since "the dog's bowl" or "the lamp's switch" own nothing
 _POSSESSOR = re.compile(r"\b([A-Z][a-z]+)'s\s+[a-z]")
+#: a number as written, and what may end the reading a label and a number make ("bar 1016,")
+_NUMBER = re.compile(r"\d+")
+_READING_END = re.compile(r"\s*(?:[,;.]|\n|$)")
 #: punctuation no name runs across (a hyphen inside a word does not count: "toy-box")
 _BREAK = re.compile(r"[,;:.!?()\u2013\u2014\n]|\s-|-\s")
 
@@ -255,6 +260,9 @@ class _Reader:
         self.said_as: dict[str, str] = {}
         #: kind -> the colour "it is the red one" gives its one object
         self.colors: dict[str, str] = {}
+        #: the head word of "the <part> of the <N>" -> the part ("the lower shelf of the metal
+        #: rack": a rack with shelves, `part_said_of`)
+        self.part_for: dict[int, str] = {}
 
     # -- noun phrases ----------------------------------------------------------------------
 
@@ -300,12 +308,32 @@ class _Reader:
         nxt = words[i + 1] if i + 1 < len(words) else ""
         if word in _PACKAGING and nxt == "of":
             return 1, None
-        if self.verb(i) or self.place_sense(i):
+        if self.verb(i) or self.place_sense(i) or self.reading_label(i):
             return 1, None
         if word in self.senses:  # "left it out on the bench" in a New Zealand note: the worktop
             self.said_as[self.senses[word]] = word
             return 1, self.senses[word]
         return 1, self.bare_noun(i, category)
+
+    def reading_label(self, i: int) -> bool:
+        """Whether the one-word noun at word `i` labels a reading, no object: it opens its item
+        (no determiner, preposition or verb before it) and a measured value alone follows it up to
+        a comma, full stop or the line's end ("Wind SW 3, bar 1016, vis good": the barometer;
+        "clock 0815"). A value is a number of three digits or more, or with a decimal point: a
+        small whole number numbers the thing ("Make up tonight: bed 2, bed 5"); a number before a colon
+        heads what is said of a thing ("Shelf 2: novels"), and "in drawer 3" names one."""
+        words, gaps = self.text.words, self.text.gaps
+        k = i + 1
+        if k >= len(words) or gaps[k].strip() or not _NUMBER.fullmatch(self.text.raw[k]):
+            return False
+        measured = len(self.text.raw[k]) >= 3
+        while k + 1 < len(words) and gaps[k + 1] == "." and _NUMBER.fullmatch(self.text.raw[k + 1]):
+            k += 1  # "4.2": one number
+            measured = True
+        if not measured:
+            return False
+        ends = k + 1 == len(words) or bool(_READING_END.match(gaps[k + 1]))
+        return ends and (i == 0 or bool(_ITEM_BREAK.search(gaps[i]) or _SENTENCE_END.search(gaps[i])))
 
     def place_sense(self, i: int) -> bool:
         """Whether the one-word name at word `i` is a thing's usual place ("its designated spot",
@@ -341,6 +369,10 @@ class _Reader:
         noun phrase."""
         word = self.text.words[i]
         options = list(dict.fromkeys(self.heads.get(word, [])))
+        part = self.part_for.get(i)
+        if part is not None:  # "the lower shelf of the metal rack": a rack with shelves, for no use unsaid
+            having = [c for c in options if self.has_part(c, part)]
+            options = [c for c in having if not self.marked(c, word)] or having or options
         named = [c for c in reversed(self.recent) if c in options and word in self.used.get(c, ())]
         if named:
             return named[0]
@@ -498,6 +530,60 @@ class _Reader:
             return n + 1, category
         return n, category
 
+    def modifies_next(self, i: int, n: int) -> bool:
+        """Whether the one-word noun at word `i` modifies the noun right after it, the head of an
+        English noun compound ("the collection basket" is a basket, "the chart table drawer" a
+        drawer): it names no kind by a name of its own (its kind was only a guess among the longer
+        names it heads: "collection" of "essay collection", "table" of "bedside table"), and the next
+        word, with nothing between, is a kind's own name used as a noun. A name of its own before
+        a generic head stays the object ("the vanity cabinet", `compound`)."""
+        words = self.text.words
+        j = i + n
+        if n != 1 or j >= len(words) or self.text.gaps[j].strip() or self.match(i)[1] is not None:
+            return False
+        if words[j] in _PACKAGING or words[j] in TIME_HEADS:
+            return False
+        m, second = self.match(j)
+        return second is not None and not (m == 1 and (self.verb(j) or self.place_sense(j)))
+
+    def color_before(self, i: int) -> int | None:
+        """Where the colour of the noun phrase whose head is word `i` stands: right before it, or
+        before one modifier that names no kind ("the black music folders", "a red plastic
+        bucket": the colour is the head's, the modifier says more of it)."""
+        words, gaps = self.text.words, self.text.gaps
+        if i > 0 and words[i - 1] in COLOR_WORDS and not _SENTENCE_END.search(gaps[i]):
+            return i - 1
+        if i > 1 and words[i - 2] in COLOR_WORDS and not gaps[i].strip() and not gaps[i - 1].strip() \
+                and words[i - 1].isalpha() and self.match(i - 1)[1] is None and not self.verb(i - 1) \
+                and words[i - 1] not in _PREPOSITIONS and words[i - 1] not in _DETERMINERS:
+            return i - 2
+        return None
+
+    def which_one_color(self, i: int) -> str | None:
+        """The colour "the <colour> one" at word `i` ("one") gives the thing named last, when it
+        says which one that thing is: as a predicate ("It's the red one by the slider") or as a
+        bracket right after it ("the collection basket by the door (the grey plastic one)"), with
+        at most one more word that names no kind between "the" and "one" ("plastic", "big"), and
+        the thing's kind comes in that colour with no instances told apart."""
+        words, gaps = self.text.words, self.text.gaps
+        if words[i] != "one" or not self.recent or self.kinds.get(self.recent[-1], _Kind()).instances:
+            return None
+        the = next((k for k in (i - 2, i - 3) if k > 0 and words[k] == "the"), None)
+        if the is None or any(gaps[k].strip() for k in range(the + 1, i + 1)):
+            return None
+        said = words[the + 1:i]
+        color = next((w for w in said if w in COLOR_WORDS), None)
+        allowed = self.catalog.categories[self.recent[-1]].attributes.get("color", [])
+        if color is None or color not in allowed or any(
+                w != color and (self.match(k)[1] is not None or w in _DETERMINERS)
+                for k, w in zip(range(the + 1, i), said, strict=True)):
+            return None
+        predicate = words[the - 1] in _COPULAS and not gaps[the].strip()
+        # a bracket that only tells which one: it closes after "one" or goes on with a place ("(the
+        # red one by the window)"), not a clause of its own ("(the red one is mine)")
+        closes = i + 1 == len(words) or ")" in gaps[i + 1] or words[i + 1] in _PREPOSITIONS
+        return color if predicate or "(" in gaps[the] and closes else None
+
     def class_of_named(self, category: str) -> bool:
         """Whether `category` was named only by a bare plural ("Toys are kept in the toy box")
         and the text names things of kinds of its own that are values of its kind attribute (a
@@ -507,6 +593,46 @@ class _Reader:
             return False
         values = {v for key in KIND_ATTRIBUTES for v in self.catalog.categories[category].attributes.get(key, ())}
         return any(c != category and set(words_of(c)) & values for c in self.kinds)
+
+    def part_said_of(self, i: int) -> bool:
+        """Whether word `i` is a part of a piece of furniture said "of" it ("the lower shelf of the
+        metal rack", "the top drawer of the dresser", `FURNITURE_PARTS`): the part names no object
+        of its own; the phrase after "of" names the furniture, of a kind that has such parts
+        (`has_part`, read by `bare_noun` through `part_for`)."""
+        words, gaps = self.text.words, self.text.gaps
+        if words[i] not in FURNITURE_PARTS or i + 2 >= len(words) or words[i + 1] != "of" \
+                or any(gaps[k].strip() for k in (i + 1, i + 2)) or words[i + 2] not in _ARTICLES:
+            return False
+        k = i + 3
+        while k < min(i + 6, len(words)) and not gaps[k].strip():
+            n, category = self.match(k)
+            if category is not None or words[k] in self.heads:
+                self.part_for[k + n - 1] = words[i]
+                return True
+            k += 1
+        return False
+
+    def has_part(self, category: str, part: str) -> bool:
+        """Whether a kind of furniture has parts of the kind `part` names: shelves (levels, tiers)
+        when one of its names says so ("storage rack" is the utility shelf's, "shoe shelf" the shoe
+        rack's), drawers when a drawer fits in it as a part (`holds_as_part`)."""
+        cat = self.catalog.categories[category]
+        if _PARTS.get(part) == "shelf":
+            return any("shelf" in words_of(text) or words_of(text)[-1].endswith("shelf")
+                       for text in (category, *_own(cat)))
+        drawer = self.catalog.categories.get("drawer")
+        return drawer is not None and self.holds_as_part(drawer, category)
+
+    def marked(self, category: str, word: str) -> bool:
+        """Whether every name of `category` that `word` heads says a use the text does not: a
+        room's ("pantry rack": a pantry's) or another kind's, what it holds ("shoe rack"), with
+        that word nowhere in the text. A bare "rack" with shelves is then the unmarked one, the
+        "storage rack" (a utility shelf)."""
+        said = set(self.text.words)
+        names = [words_of(text) for text in (category, *_own(self.catalog.categories[category]))]
+        headed = [n for n in names if len(n) > 1 and n[-1] == word]
+        return bool(headed) and all(any((known_room_type(w) is not None or (w,) in self.phrases) and w not in said
+                                        for w in n[:-1]) for n in headed)
 
     def part_of_named(self, i: int, prev: str) -> bool:
         """Whether word `i` is a ranked part ("the bottom shelf", "the top level") of a piece of
@@ -537,7 +663,14 @@ class _Reader:
         # the kinds named before it, also as a modifier of a name the catalog gives the drawer as
         # a whole ("the dresser drawers")
         named = [self.match(j)[1] for j in range(start, i)]
-        named += [h for k in range(start, last) for h in self.heads.get(self.text.words[k], [])]
+        # (a word that names a kind by no name of its own, "the chart table drawer", names no piece
+        # of furniture: `modifies_next`), or the thing such a word named before ("the nightstand
+        # ... the table drawer")
+        named += [h for k in range(start, last) if k >= i or self.match(k)[1] is not None
+                  for h in self.heads.get(self.text.words[k], [])]
+        if i > start:
+            before = self.text.words[i - 1]
+            named += [c for c in self.recent if before in self.used.get(c, ())]
         return any(self.holds_as_part(cat, other) for other in named if other not in (None, category))
 
     def holder_in_name(self, i: int, n: int, category: str) -> str | None:
@@ -769,14 +902,15 @@ class _Reader:
         head = words[i + n - 1]
         kinds = [c for c in self.recent for key in KIND_ATTRIBUTES
                  if head in self.catalog.categories[c].attributes.get(key, ())]
-        if prev in _GENERIC_ONE and self.text.raw[i + n - 1] == head:
+        if (prev in _GENERIC_ONE or self.bare_heading(i, n)) and self.text.raw[i + n - 1] == head:
             # "a doll into the red toy box; ... any other toy into the green one": an indefinite
             # one set against "other <kind>" in its sentence is a class of that kind too, or in a
             # run of sentences that each open with one ("A novel goes on the bookshelf. A
-            # textbook goes on the desk. Any other book goes in the drawer.")
+            # textbook goes on the desk. Any other book goes in the drawer."), or with a bare
+            # singular heading ("Novel: to the bookshelf. Textbook: to the desk. Any other book: ...")
             end = self.text.sentence_end(i)
             for _ in range(_RUN):
-                if end >= len(words) or words[end] not in _RUN_OPENERS:
+                if end >= len(words) or words[end] not in _RUN_OPENERS and not self.bare_heading(end, 1):
                     break
                 end = self.text.sentence_end(end)
             said = words[self.text.sentence_start(i):end]
@@ -785,6 +919,15 @@ class _Reader:
         if self.text.raw[i + n - 1] == head or prev in _DETERMINERS or prev in _COUNTS:
             return False
         return bool(kinds)
+
+    def bare_heading(self, i: int, n: int) -> bool:
+        """Whether the `n` words at `i` are a heading of their own: a bare singular noun opening its
+        sentence, right before a colon ("Novel: to the bookshelf", "Textbook: to the desk"), said
+        of what is of that kind, as "a novel" is."""
+        words, gaps = self.text.words, self.text.gaps
+        end = i + n
+        return (i == 0 or bool(_SENTENCE_END.search(gaps[i]))) and end < len(words) and ":" in gaps[end] \
+            and self.text.raw[end - 1] == words[end - 1]
 
     def own_kind(self, a: int, b: int, head: str) -> bool:
         """Whether words `a`..`b` of an item name one thing of a kind of its own, with another
@@ -845,12 +988,11 @@ class _Reader:
                 self.instance(last_colored, f"{prev}_{last_colored}", {"color": prev})
                 i += 1
                 continue
-            if words[i] == "one" and prev in COLOR_WORDS and words[i - 3:i - 1] in (["is", "the"], ["was", "the"]) \
-                    and self.recent and not self.kinds[self.recent[-1]].instances \
-                    and prev in self.catalog.categories[self.recent[-1]].attributes.get("color", []):
-                # "Biff them in the bucket. It's the red one by the slider": a predicate saying
-                # which one the thing named last is gives its colour
-                self.colors[self.recent[-1]] = prev
+            color = self.which_one_color(i)
+            if color is not None:
+                # "Biff them in the bucket. It's the red one by the slider", "into the basket by the
+                # door (the grey plastic one)": saying which one the thing named last is gives its colour
+                self.colors[self.recent[-1]] = color
                 i += 1
                 continue
             if words[i] in SPARE_WORDS and prev in _DETERMINERS and (
@@ -863,6 +1005,9 @@ class _Reader:
                         self.instance(spare, f"spare_{words_of(spare)[-1]}", {})
                 i += 1
                 continue
+            if self.part_said_of(i):
+                i += 1  # "the lower shelf of the metal rack": the rack's shelf, no object
+                continue
             if self.part_of_named(i, prev):
                 i += 1  # "Shelving unit - the storage box lives on the bottom shelf": its shelf
                 continue
@@ -873,6 +1018,9 @@ class _Reader:
             n, category = (1, shared) if shared is not None else self.kind_at(i)
             if category is None:
                 i += 1
+                continue
+            if shared is None and self.modifies_next(i, n):
+                i += n  # "the collection basket", "the chart table drawer": the last noun is the head
                 continue
             if shared is None:
                 n, category = self.compound(i, n, category)
@@ -896,8 +1044,9 @@ class _Reader:
             self.mention(category, words[i + n - 1])
             allowed = self.catalog.categories[category].attributes.get("color", [])
             last = words[i + n - 1] if words[i + n - 1] not in _PACKAGING else words_of(category)[-1]
-            if prev in COLOR_WORDS and prev in allowed:
-                for color in self.coordinated(i - 1, allowed):
+            told = self.color_before(i)
+            if told is not None and words[told] in allowed:
+                for color in self.coordinated(told, allowed):
                     self.instance(category, f"{color}_{category}", {"color": color})
                 last_colored = category
             elif prev in SPARE_WORDS or prev in _FRESH and known and kind.generic:

@@ -40,9 +40,10 @@ from logicenveval.offline.clauses import (
     clause_spans,
     doubts,
 )
-from logicenveval.offline.lexicon import COLOR_WORDS, Lexicon, Mention, singular
+from logicenveval.offline.lexicon import COLOR_WORDS, FURNITURE_PARTS, Lexicon, Mention, singular
 from logicenveval.offline.sentences import (
     ACTIONS,
+    ARROW,
     NORM_ADVERBS,
     PERSONAL_SUBJECTS,
     PREP_IN,
@@ -70,9 +71,6 @@ BE = frozenset({"is", "are", "was", "were", "be", "been", "being", "am"})
 #: words that rank the parts of a thing ("on the bottom shelf", "in the top drawer"): the part is
 #: the thing's, so the place is the thing ("the top of the ..." is not: "of" follows)
 RANKS = frozenset({"top", "bottom", "middle", "upper", "lower", "first", "second", "third"})
-#: parts of a piece of furniture a bracket may place a thing in ("(bottom shelf of the metal rack)":
-#: on an open rack, inside a cabinet; `_contain` tells them apart by the furniture)
-FURNITURE_PARTS = frozenset({"shelf", "level", "tier", "drawer", "compartment"})
 #: pronouns that take up a thing put first ("the mug on the desk, is it dirty?")
 RESUMPTIVE = frozenset({"it", "they"})
 STATIVE = frozenset({"lie", "lies", "lay", "lying", "sit", "sits", "sat", "sitting", "stand", "stands",
@@ -219,7 +217,10 @@ class _Reading:
 def _sentences(text: str, lex: Lexicon) -> list[_Sentence]:
     out = []
     for part in split_sentences(expand(text), full_stops_only=True):
-        low = part.lower()
+        # "Pillow on the floor -> back on the sofa": the arrow is "then", what comes before it the
+        # situation its instruction answers, as a heading before a colon (`clause_spans`), no
+        # statement of where the pillow is
+        low = ARROW.sub(" : ", part).lower()
         toks = [_Token(m.group(0), singular(m.group(0)) if m.group(0)[0].isalnum() else m.group(0),
                        m.start(), m.end()) for m in _TOKEN.finditer(low)]
         toks = [t for t in toks if t.word != "\n"]
@@ -281,7 +282,7 @@ def _read_sentence(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Re
         ms = [m for m in sent.mentions if clause.start <= m.start < clause.end]
         if clause.mood != "condition":
             _locative(sent, clause, ms, lex, catalog, reading)
-        else:
+        if clause.mood != "statement":
             _relative_place(sent, clause, ms, lex, catalog, reading)
         if clause.mood == "statement":  # a doubt in a list leaves out only what it covers
             _possessive(sent, clause, ms, lex, catalog, reading)
@@ -307,9 +308,11 @@ def _read_sentence(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Re
 def _relative_place(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
                     reading: _Reading) -> None:
     """"Used the bath towel that was hanging on the towel rail?", "if the mug which is sitting on
-    the desk is dirty": in a question or condition, a relative clause of being or resting said of
-    a definite thing tells which one is meant by where it is, which the question takes for
-    granted: a statement of its place (what the question asks is read by the factor reader)."""
+    the desk is dirty", "put it back in the cardboard box that lives on top of the piano": in a
+    question, condition or instruction, a relative clause of being, resting or keeping said of a
+    definite thing tells which one is meant by where it is, which the question or instruction
+    takes for granted: a statement of its place, or its home for a verb of keeping ("that lives
+    on", "which is kept in"); what the question asks is read by the factor reader."""
     words = sent.words
     for m in ms:
         k = m.end
@@ -317,11 +320,12 @@ def _relative_place(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexic
                 or k >= clause.end or words[k] not in RELATIVE:
             continue
         end, group = _verb_group(words, k + 1, clause.end)
-        if not group or group[0] not in BE or _verb_kind(group) != "settled":
+        kind = _verb_kind(group) if group else None
+        if kind is None or group[0] not in BE | STATIVE | KEEP_VERBS or doubts(group):
             continue
         found = _holder_after(sent, ms, end, clause.end)
         if found is not None:
-            _put(reading, "settled", catalog, lex, m.roles[0], found[1], found[0])
+            _put(reading, kind, catalog, lex, m.roles[0], found[1], found[0])
 
 
 def _identifying_aside(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Reading) -> None:
@@ -482,9 +486,16 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
     if j >= hi or words[j] not in AT:
         return None
     k = j + 1
+    if words[j] == "on" and words[k:k + 2] == ["top", "of"]:
+        k += 2  # "on top of the piano": on it
     while k < hi and (words[k] in ARTICLES or words[k] in COLOR_WORDS or words[k] in STATE_WORDS
                       or words[k] in RANKS and k + 1 < hi and words[k + 1] not in ("of", ",")):
         k += 1
+    whole = _part_of(sent, ms, k, hi)
+    if whole is not None:
+        # "on the lower shelf of the metal rack": on the rack; "on the top shelf of the wardrobe":
+        # in it (a part is inside a container, on an open piece: `_contain`, as in a bracket)
+        return "in", whole
     m = next((m for m in ms if m.start == k), None)
     if m is None and k > j + 1 and words[k - 1] in ARTICLES and k + 1 < hi and words[k].isalpha() \
             and words[k] not in AT | PREP_OF_PLACE and not any(t.start <= k < t.end for t in ms):
@@ -496,6 +507,24 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
         # names which one (`_room_words`); the place is the thing
         m = next((t for t in ms if t.start == m.end and t.kind == "role"), m)
     return (words[j], m) if m is not None else None
+
+
+def _part_of(sent: _Sentence, ms: list[Mention], k: int, hi: int) -> Mention | None:
+    """The thing of "<part> of the <thing>" when word `k` is a part of a piece of furniture
+    (`FURNITURE_PARTS`: "the lower shelf of the metal rack", "the top drawer of the dresser"): a
+    thing on or in the part is on or in the thing (`_contain` tells which by the thing); the name
+    of the thing may follow one modifier that names nothing ("the metal rack")."""
+    words = sent.words
+    if k + 2 >= hi or words[k] not in FURNITURE_PARTS and sent.toks[k].lemma not in FURNITURE_PARTS \
+            or words[k + 1] != "of":
+        return None
+    j = k + 2
+    while j < hi and words[j] in ARTICLES:
+        j += 1
+    m = next((x for x in ms if x.start in (j, j + 1) and x.kind == "role" and len(x.roles) == 1), None)
+    if m is None or m.start == j + 1 and (j == k + 2 or any(x.start <= j < x.end for x in ms) or not words[j].isalpha()):
+        return None
+    return m
 
 
 def _put(reading: _Reading, kind: str, catalog: Catalog, lex: Lexicon, item: str, holder: Mention,
@@ -1014,6 +1043,13 @@ def _kept(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalo
             return
         named = [r for m in _np_list(sent, ms, i + 1, j) for r in _roles(m, sent)]
         subject = [r for m in _np_list(sent, ms, clause.start, i) for r in _roles(m, sent)]
+        rel = i - 1
+        while rel > clause.start and (words[rel] in BE or words[rel] in ADVERBS):
+            rel -= 1
+        if words[rel] in RELATIVE:
+            # "into the basket which is kept on the shelf": the relative clause's subject is the
+            # thing right before it, not the instruction's object
+            subject = [r for m in ms if m.end == rel for r in _roles(m, sent)]
         items = named or subject
         if not items:
             unnamed = _unnamed_item(sent, lex, clause.start, j, exclude=holder.roles[0])
@@ -1100,7 +1136,13 @@ def _resting(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, cat
         if a.kind != "role" or b.kind != "role" or len(a.roles) != 1 or len(b.roles) != 1:
             continue
         between = words[a.end:b.start]
-        if not between or between[0] not in AT or not all(w in ARTICLES for w in between[1:]):
+        part = a.end + 1
+        while part < clause.end and (words[part] in ARTICLES or words[part] in RANKS):
+            part += 1
+        whole = _part_of(sent, ms, part, clause.end) if between[:1] in ([w] for w in AT) else None
+        if whole is not None:
+            b = whole  # "the brown bottle on the lower shelf of the metal rack": on the rack
+        elif not between or between[0] not in AT or not all(w in ARTICLES or w in RANKS for w in between[1:]):
             continue
         cat = catalog.get(str(lex.roles[a.roles[0]]["category"]))
         pointed = _pointed_out(words, a.start, clause)
@@ -1111,7 +1153,7 @@ def _resting(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, cat
         described = clause.mood == "condition" and (_described_subject(words, a.start, b.end, clause) or pointed)
         if clause.mood == "condition" and not described:
             continue
-        fact = _contain(catalog, lex, a.roles[0], b.roles[0], between[0])
+        fact = _contain(catalog, lex, a.roles[0], b.roles[0], "in" if whole is not None else between[0])
         if fact is not None:  # a condition on its state takes its place for granted: a statement
             reading.place("settled" if described else "presumed", a.roles[0], fact)
 

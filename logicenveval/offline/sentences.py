@@ -131,8 +131,12 @@ _ABBREV = re.compile(r"\b(e\.g|i\.e|etc|approx|vs)\.", re.I)
 
 
 #: a slash between two words offers alternatives, as "or" does ("on the chair / on the floor",
-#: "wet/dirty"; "and/or" is "and or")
+#: "wet/dirty")
 _SLASH = re.compile(r"(?<=[a-z])\s*/\s*(?=[a-z])", re.I)
+#: "and/or" is one connective, the inclusive "or" (Merriam-Webster: "used as a function word to
+#: indicate that two words or expressions are to be taken together or individually"): "A sofa
+#: pillow and/or a toy may be on the floor" doubts each, as "or" does (not "and or or")
+_AND_OR = re.compile(r"\band\s*/\s*or\b", re.I)
 #: shorthand's "w/" is "with" ("wipe w/ sponge"), not "w or ..."
 _WITH = re.compile(r"\bw/\s*", re.I)
 
@@ -342,7 +346,12 @@ def _emoji(m: re.Match[str]) -> str:
 #: British and older spellings of function words, read as the common form every word table
 #: holds ("Whilst the dryer is running" is "While the dryer is running")
 VARIANTS = {"whilst": "while", "amongst": "among", "amidst": "amid", "unto": "to"}
-_VARIANT = re.compile(rf"\b(?:{'|'.join(VARIANTS)})\b", re.I)
+#: British spellings of the words the catalog spells the American way, its attribute values
+#: among them ("the grey plastic one" is the catalog's `gray`; Merriam-Webster, "grey": chiefly
+#: British spelling of gray)
+SPELLINGS = {"grey": "gray"}
+_SPELLED = {**VARIANTS, **SPELLINGS}
+_VARIANT = re.compile(rf"\b(?:{'|'.join(_SPELLED)})\b", re.I)
 
 
 #: a formula of politeness before an instruction's verb ("be good enough to examine the towel",
@@ -440,7 +449,7 @@ def starred(text: str) -> str:
 
 def unquote(text: str) -> str:
     """The text with British and older spellings of function words in their common form
-    (`VARIANTS`) and without a formula of politeness before a verb (`_POLITE`), with a typographic
+    (`VARIANTS`) and British spellings of catalog words in the catalog's (`SPELLINGS`) and without a formula of politeness before a verb (`_POLITE`), with a typographic
     arrow as "->" (`_ARROWS`), an emoji between words as a
     sentence's end (`_EMOJI`), a comma before the next "state ->" case as ";"
     (`_CASE_AFTER_COMMA`), "the X on the Y, if there is one" as "if there is an X on the Y"
@@ -463,7 +472,7 @@ def unquote(text: str) -> str:
     subject (`_SUBJECTLESS`); a chat message's `*`-correction made in the message it corrects
     (`starred`), without a chat line's time stamp (`_TIME_STAMP`)."""
     text = _NO_THEN.sub(_no_then, _telegram(text))
-    text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), VARIANTS[m.group(0).lower()]), text))
+    text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), _SPELLED[m.group(0).lower()]), text))
     text = starred(_TIME_STAMP.sub(r"\1", text))
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
     plain = _IF_ANY.sub(_if_any, plain)
@@ -569,8 +578,8 @@ def detable(text: str) -> str:
 
 def expand(text: str) -> str:
     """The text with contractions spelled out ("it's" -> "it is"), possessives dropped, "w/" read
-    as "with" and a slash between words as "or"."""
-    out = _SLASH.sub(" or ", _WITH.sub("with ", text.replace("\u2019", "'")))
+    as "with", "and/or" as "or" and a slash between words as "or"."""
+    out = _SLASH.sub(" or ", _AND_OR.sub("or", _WITH.sub("with ", text.replace("\u2019", "'"))))
     for pat, repl in _CONTRACTIONS:
         out = re.sub(pat, repl, out, flags=re.I)
     return out
