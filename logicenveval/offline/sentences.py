@@ -160,6 +160,20 @@ _ELIDED_SUBJECT = re.compile(
 _ELIDED_STATE = re.compile(
     rf"(\([^()]*?\b(?:if|unless|when|whenever|once|while))\s+(?=(?:{'|'.join(sorted(w for w in STATE_WORDS if ' ' not in w))})\s*\))",
     re.I)
+#: the same at the end of an instruction's clause, after its verb ("Tablet on the plinth: power
+#: off if still on.", "Heater by the door: switch off if running"): an instruction whose condition
+#: is a bare state, with or without "still" / "already", speaks of the thing it acts on, "if it is
+#: still on"; a bare state opening a sentence ("If dirty, ...") is read elsewhere
+_ELIDED_END_STATE = re.compile(
+    rf"(?<=\w)(\s+(?:if|unless|when|whenever|once|while))\s+(?=(?:(?:still|already)\s+)?"
+    rf"(?:{'|'.join(sorted(w for w in STATE_WORDS if ' ' not in w))})\s*(?:[.;!]|$))",
+    re.I | re.M)
+
+
+#: an emphatic "do" before a verb of habit ("the folders do tend to end up on the floor", "the
+#: ball does keep rolling under the sofa"): it stresses the habit and is no verb of its own, but
+#: left in place it makes the remark a clause with a finite verb that the habit rules do not read
+_EMPHATIC_DO = re.compile(rf"(?<=\w)\s+(?:do|does|did)(?=\s+(?:{'|'.join(sorted(TEND | KEEP))})\b)", re.I)
 
 
 #: a speaker correcting a place as they say it ("throw it in the wardrobe, no wait, sorry, in the
@@ -471,7 +485,9 @@ def unquote(text: str) -> str:
     plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", plain))))
     plain = _unabbreviated(plain)
     plain = _PREDICATE_STATE.sub(lambda m: m.group(1) + PREDICATE_STATES[m.group(2).lower()], plain)
-    plain = _ACTED_STATE.sub(_acted_state, _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", plain)))
+    plain = _EMPHATIC_DO.sub("", plain)
+    plain = _ELIDED_END_STATE.sub(r"\1 it is ", _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", plain)))
+    plain = _ACTED_STATE.sub(_acted_state, plain)
     plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)
     plain = _KIND_OF.sub(r"\1 ", _STATE_CASE.sub(_state_case, plain))
     return _SUBJECTLESS.sub(r"\1\2\3the \2 \4", detable(_STATE_SUBJECT.sub(_state_subject, plain)))

@@ -1,0 +1,163 @@
+"""Conditions said without the benchmark's "If the X is Y, ...", from the seventh development set's
+new tasks (`tests/data/reader_dev7/tasks_new/`): a check with its "that" left out, "make sure it's
+off" after "but do", an obligation to a state, "if need be" after an instruction, a bare state
+ending an instruction ("power off if still on"), "any on the floor" after a plural heading, "if
+found there" and "if you find one there" after a habit. Each is tried on the development sentence
+and on one written here in another room with other objects."""
+
+from __future__ import annotations
+
+import pytest
+from reading import factors as _factors
+
+from logicenveval.offline.implied import any_at, implied
+from logicenveval.offline.sentences import unquote
+
+
+def _asks(text: str, rooms: tuple[str, ...], condition: str) -> bool:
+    return any({condition, f"not {condition}"} <= values for values in _factors(text, rooms).values())
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # dev7 annex_host_review_reply (a host's reply to a review)
+    ("On the checkout points you raised: please check the hair dryer is off before you go, it has been "
+     "left running more than once.", ("annex",), "state(hair_dryer, toggled_on)"),
+    # written here: a study, "double-check", a plural
+    ("Before you lock up, double-check the desk lamp is switched off.", ("study",), "state(desk_lamp, toggled_on)"),
+])
+def test_a_check_with_its_that_left_out_asks_the_state(text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"check the X is off" is "check that the X is off" (`analysis._ENSURE`): whether it is off is
+    in doubt."""
+    assert _asks(text, rooms, condition)
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # dev7 caravan_visitors_book_letter (a caravan's visitors' book)
+    ("The gas fireplace is lovely of an evening but do make sure it's turned off before you leave.",
+     ("caravan",), "state(fireplace, toggled_on)"),
+    # written here: "and", a door left open
+    ("The fridge is new and please do make sure it's closed after use.", ("kitchen",), "state(fridge, open)"),
+])
+def test_make_sure_after_but_or_and_with_an_emphatic_do_asks_the_state(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"... but do make sure it's turned off": a clause about the thing, then "make sure" after a
+    conjunction and an emphatic "do", speaking of it by a pronoun (`analysis._ENSURE`)."""
+    assert _asks(text, rooms, condition)
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # dev7 treehouse_secret_club_rules (a children's secret-club rules, spelling kept)
+    ("3. The torch has to be turnd off when you go or the batterys run out (AGAIN).", ("treehouse",),
+     "state(flashlight, toggled_on)"),
+    # written here: "must", a bedroom lamp
+    ("The lamp must be switched off when you leave.", ("bedroom",), "state(table_lamp, toggled_on)"),
+    # written here: "need to", a state of opening
+    ("The curtains need to be closed before dark.", ("bedroom",), "state(curtain, open)"),
+])
+def test_an_obligation_to_a_state_asks_it(text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"The torch has to be turned off when you go": the state the thing must be in may not hold
+    yet (`implied._OBLIGED`), as with "make sure"."""
+    assert _asks(text, rooms, condition)
+
+
+def test_an_obligation_the_text_answers_itself_is_left_to_its_condition() -> None:
+    """With a condition of its own after it ("must be off - if it's on, switch it off"), the
+    obligation is left as it is: the condition says it."""
+    text = "The heater must be off when you go - if it's on, switch it off."
+    assert implied(text) == text
+    assert implied("The shelf must be on the wall.") == "The shelf must be on the wall."  # a place, no state
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # dev7 vestry_choir_secretary_email (a choir secretary's email)
+    ("The kettle has been left on twice this month, so do check it and switch it off at the wall if need be.",
+     ("vestry",), "state(kettle, toggled_on)"),
+    # written here: "if necessary", a bare verb of closing
+    ("The wardrobe sticks; close it if necessary.", ("bedroom",), "state(wardrobe, open)"),
+    # written here: "if needed", the thing named in the instruction
+    ("On your way out, turn the television off if needed.", ("living_room",), "state(television, toggled_on)"),
+])
+def test_if_need_be_after_an_instruction_asks_whether_its_result_holds(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"switch it off at the wall if need be": the instruction holds only when the state it sets
+    does not yet (`implied._IF_NEED_BE`)."""
+    assert _asks(text, rooms, condition)
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # dev7 gallery_invigilator_checklist (a tick-box checklist)
+    ("[ ] Tablet on the plinth by the entrance (interactive map): power off if still on. Do NOT unplug",
+     ("gallery",), "state(tablet, toggled_on)"),
+    # written here
+    ("The tablet is on the desk: power off if still on.", ("office",), "state(tablet, toggled_on)"),
+    ("Fan by the door: switch off if running.", ("office",), "state(ceiling_fan, toggled_on)"),
+])
+def test_a_bare_state_ending_an_instruction_is_said_of_the_thing_it_acts_on(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"power off if still on": the instruction's condition with its subject and copula elided
+    (`sentences._ELIDED_END_STATE`), "if it is still on"."""
+    assert "if it is still on" in unquote("Lamp: power off if still on.")
+    assert _asks(text, rooms, condition)
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # dev7 bunkhouse_counselor_duty_list (a camp counselor's list)
+    ("* Ceiling fan - if it's running, turn it off.\n"
+     "* Tennis rackets: any on the floor go in the gear bin (the blue storage box by the door).\n"
+     "* Flashlights are fine.", ("bunkhouse",), "on(tennis_racket, floor)"),
+    # written here: books, "back on"
+    ("Books: any on the floor go back on the shelf.", ("living_room",), "on(book, floor)"),
+    # written here: a dash, "left"
+    ("Towels - any left on the floor go in the laundry basket.", ("bathroom",), "on(towel, floor)"),
+])
+def test_any_at_a_place_after_a_plural_heading_asks_where_the_things_are(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"Tennis rackets: any on the floor go in the box": "any" is any of the heading's things,
+    and the place after it the condition (`implied._ANY_AT`)."""
+    assert any_at("Books: any on the floor go back.") == "Books: any books on the floor go back."
+    assert _asks(text, rooms, condition)
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # dev7 darkroom_risk_assessment (a risk-assessment row)
+    ("Scissors not to be left out on the counter. If found there, return them to the drawer under the sink.",
+     ("darkroom",), "on(scissors, kitchen_counter)"),
+    # written here
+    ("The remote is not to be left on the sofa. If found there, put it back on the shelf.", ("living_room",),
+     "on(remote_control, sofa)"),
+])
+def test_if_found_there_is_the_place_named_before(text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"If found there": a participle of finding with its subject elided; "there" is the place the
+    sentence before named (`analysis._there_named`, `_THERE_SUBJECTS`)."""
+    assert _asks(text, rooms, condition)
+
+
+def test_if_theyre_already_there_is_not_the_place_named_before() -> None:
+    """"if they're already there" after two goals asks each thing about its own goal, not about
+    the place named last (dev3 `sunroom_note_from_roommate`)."""
+    text = ("my bat and my racket go in the storage bin and on the bench, respectively. if they're already "
+            "there, don't sweat it")
+    assert _asks(text, ("sunroom",), "inside(baseball_bat, storage_box)")
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # dev7 vestry_choir_secretary_email
+    ("The black music folders do tend to end up on the floor under the chairs - if you find one there, "
+     "would you put it back in the cardboard box?", ("vestry",), "on(folder, floor)"),
+    # written here: "tend", cushions, a sofa
+    ("The cushions tend to end up on the floor - if you find one there, put it on the sofa.", ("living_room",),
+     "on(sofa_pillow, floor)"),
+    # written here: an emphatic "do", a request after the condition's comma
+    ("Mugs do tend to end up on the desk - if you find one there, could you take it to the sink?", ("office",),
+     "on(mug, desk)"),
+    ("The red dog toys tend to end up on the sofa - if you find one there, could you put it in the basket?",
+     ("living_room",), "on(toy, sofa)"),
+])
+def test_finding_one_there_after_a_habit_asks_the_habits_place(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"if you find one there" points back to the things the habit before says may be there
+    (`analysis.FOUND_ONE`), not to whether one exists; an emphatic "do" before "tend" keeps the
+    habit (`sentences._EMPHATIC_DO`); a request after the condition's comma is its instruction."""
+    found = _factors(text, rooms)
+    assert _asks(text, rooms, condition)
+    assert not any(v.startswith("exists(") for values in found.values() for v in values)
