@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import pytest
 from reading import factors as _factors
+from reading import placed as _placed
 
 from logicenveval.offline.implied import any_at, implied
 from logicenveval.offline.sentences import unquote
@@ -161,3 +162,66 @@ def test_finding_one_there_after_a_habit_asks_the_habits_place(
     found = _factors(text, rooms)
     assert _asks(text, rooms, condition)
     assert not any(v.startswith("exists(") for values in found.values() for v in values)
+
+
+# ----- from dev 7's rewordings -------------------------------------------------------------------
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # dev7 study_desk_cleanup_d7 (a Scottish note)
+    ("Ma mug might be on the desk an aw. Take it through tae the kitchen: a dirty mug in the kitchen sink, "
+     "a clean yin on the kitchen counter.", ("study", "kitchen"), "state(mug, dirty)"),
+    # written here: "bring", a towel's wetness
+    ("Bring the towel down to the laundry room: a wet towel on the drying rack, a dry one in the hamper.",
+     ("laundry_room",), "state(towel, wet)"),
+])
+def test_a_verbless_list_after_taking_a_thing_asks_which_case_it_is(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"Take it to the kitchen: a dirty mug in the sink, a clean one on the counter": after a verb
+    of carrying (`analysis._TAKING`) the list says where each case goes (`_elaborates`), so its
+    places are goals, and the state that tells the cases apart is asked (`_moved`), not stated."""
+    assert _asks(text, rooms, condition)
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # dev7 hallway_coat_and_bag_d7 (an Irish granny's note)
+    ("A clean lunch box goes in the kitchen cabinet, a dirty one in the dishwasher - but if the dishwasher's "
+     "going already, just leave it on the kitchen counter, sure.", ("hallway", "kitchen"),
+     "state(dishwasher, toggled_on)"),
+    # written here
+    ("If the washing machine's going still, put the shirt in the basket.", ("laundry_room",),
+     "state(washing_machine, toggled_on)"),
+])
+def test_going_before_already_or_still_is_running(text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"the dishwasher's going already": "going" as a predicate (`sentences.PREDICATE_STATES`)
+    with "already" / "still" after it, as before it."""
+    assert _asks(text, rooms, condition)
+
+
+@pytest.mark.parametrize(("text", "rooms", "conditions"), [
+    # dev7 living_room_toy_boxes_d7 (a babysitting job sheet)
+    ("Notes: the floor has a stain on it. A sofa pillow and/or a toy may be on the floor.", ("living_room",),
+     ("on(sofa_pillow, floor)", "on(toy, floor)")),
+    # written here
+    ("A book and/or a mug may have been left on the desk.", ("study",), ("on(book, desk)", "on(mug, desk)")),
+])
+def test_and_or_between_things_in_doubt_asks_each(text: str, rooms: tuple[str, ...],
+                                                 conditions: tuple[str, ...]) -> None:
+    """"A sofa pillow and/or a toy may be on the floor" is read as "a sofa pillow or a toy"
+    (`sentences._AND_OR`): each may be there."""
+    for condition in conditions:
+        assert _asks(text, rooms, condition)
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # dev7 living_room_toy_boxes_d7 (a babysitting job sheet)
+    ("Tasks:\n1. Pillow on the floor -> back on the sofa.\n2. Toy on the floor -> into the right toy box.",
+     ("living_room",), "on(pillow, floor)"),
+    # written here
+    ("Mug on the desk -> back in the cupboard.", ("office",), "on(mug, desk)"),
+])
+def test_a_heading_answered_after_an_arrow_is_a_condition_not_a_placement(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"Pillow on the floor -> back on the sofa": the arrow cuts as a colon does
+    (`placement._THEN_ARROW`), so the heading is the instruction's condition: asked, not placed."""
+    assert _asks(text, rooms, condition)
+    assert condition not in _placed(text, rooms)

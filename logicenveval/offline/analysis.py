@@ -1397,6 +1397,11 @@ def _available(reader: _Reader, text: str) -> list[Fact]:
     return [Fact(r, f"exists({r})", "exists") for r in things[-1].roles] if things else []
 
 
+#: verbs of carrying a thing somewhere, whose list after a colon says where each kind of it goes
+#: ("Take it through to the kitchen: a dirty mug in the sink, a clean one on the counter")
+_TAKING = frozenset({"take", "bring", "carry"})
+
+
 def _elaborates(clauses: list[Clause], sentence: int, text: str) -> bool:
     """The piece has no verb of its own (no finite or modal verb, no action) and follows, in the
     same sentence, a clause whose verb moves things (`MOTION`): it lists what goes where."""
@@ -1404,7 +1409,7 @@ def _elaborates(clauses: list[Clause], sentence: int, text: str) -> bool:
         return False
     words = {w for w, _, _ in tokens(expand(text))}
     before = {w for w, _, _ in tokens(expand(clauses[-1].text))}
-    return bool(before & MOTION) and not words & (CLAUSE_WORDS | ACTIONS | MOTION | DESCRIPTIVE | UNCERTAIN)
+    return bool(before & (MOTION | _TAKING)) and not words & (CLAUSE_WORDS | ACTIONS | MOTION | DESCRIPTIVE | UNCERTAIN)
 
 
 def _place_heading(reader: _Reader, text: str) -> bool:
@@ -1913,7 +1918,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                                               # "A dirty mug is sitting on the desk": a thing the
                                               # statement places outright is as it describes it
                                               and not (cl.role == "statement" and not f.home
-                                                       and f.subject in _placed_outright(brief, catalog, cl.text)))
+                                                       and f.subject in _placed_outright(brief, catalog, cl.text)
+                                                       # "Take it to the kitchen: a dirty mug in the
+                                                       # sink, a clean one on the counter": a list
+                                                       # saying where each goes places nothing
+                                                       and not _moved(cl, f.subject)))
                               or (cl.role == "else" and f.kind != "location")):
                 continue
             slot = (f.subject, f.kind, f.key if f.kind in ("state", "attr") else "")
@@ -2018,6 +2027,12 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
 
 #: relative pronouns: a noun phrase with a relative clause ("a plate that is wet") names a class
 #: the sentence gives a rule for, not a thing it places
+def _moved(clause: Clause, subject: str) -> bool:
+    """Whether the clause says where `subject` goes (a location goal of it): a verbless list
+    after an instruction that moves things (`_elaborates`) reads its places as goals."""
+    return any(f.goal and f.kind == "location" and f.subject == subject for f in clause.facts)
+
+
 RESTRICTIVE = frozenset({"that", "which", "who", "whichever", "whatever"})
 
 

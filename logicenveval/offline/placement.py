@@ -216,10 +216,16 @@ class _Reading:
         self.rooms[kind].setdefault(role, room)
 
 
+#: an arrow after a part that asks no question: "then", the answer of what comes before it, cut
+#: as a colon is ("Pillow on the floor -> back on the sofa" is a heading answered by an
+#: instruction, a condition, as "Pillow on the floor: back on the sofa" is; after "?" it is dropped)
+_THEN_ARROW = re.compile(r"(?<![?:!])\s*(?:->|=>|\u2192)\s*")
+
+
 def _sentences(text: str, lex: Lexicon) -> list[_Sentence]:
     out = []
     for part in split_sentences(expand(text), full_stops_only=True):
-        low = part.lower()
+        low = _THEN_ARROW.sub(": ", part.lower())
         toks = [_Token(m.group(0), singular(m.group(0)) if m.group(0)[0].isalnum() else m.group(0),
                        m.start(), m.end()) for m in _TOKEN.finditer(low)]
         toks = [t for t in toks if t.word != "\n"]

@@ -131,8 +131,11 @@ _ABBREV = re.compile(r"\b(e\.g|i\.e|etc|approx|vs)\.", re.I)
 
 
 #: a slash between two words offers alternatives, as "or" does ("on the chair / on the floor",
-#: "wet/dirty"; "and/or" is "and or")
+#: "wet/dirty"; "and/or" is "or", `_AND_OR`)
 _SLASH = re.compile(r"(?<=[a-z])\s*/\s*(?=[a-z])", re.I)
+#: "A sofa pillow and/or a toy may be on the floor": either, or both, as each alone is said with
+#: "or" ("a pillow or a toy may be ..."); read as "or", not as "and or", which joins no list
+_AND_OR = re.compile(r"\band\s*/\s*or\b", re.I)
 #: shorthand's "w/" is "with" ("wipe w/ sponge"), not "w or ..."
 _WITH = re.compile(r"\bw/\s*", re.I)
 
@@ -371,7 +374,7 @@ PREDICATE_STATES = {"going": "running"}
 _PREDICATE_STATE = re.compile(
     rf"((?:\b(?:is|are|was|were|be)|'s|\u2019s)(?:\s+(?:still|already|just|now))*\s+|\b(?:still|already)\s+)"
     rf"({'|'.join(PREDICATE_STATES)})"
-    r"(?=\s*(?:[,.;:!?)]|$|\s(?:then|and|or|but|so)\b))", re.I | re.M)
+    r"(?=\s*(?:[,.;:!?)]|$|\s(?:then|and|or|but|so|already|still|now|again)\b))", re.I | re.M)
 
 
 #: a telegram's words for its punctuation (Oxford: stop, "(in telegrams) a full stop"; query,
@@ -586,7 +589,7 @@ def detable(text: str) -> str:
 def expand(text: str) -> str:
     """The text with contractions spelled out ("it's" -> "it is"), possessives dropped, "w/" read
     as "with" and a slash between words as "or"."""
-    out = _SLASH.sub(" or ", _WITH.sub("with ", text.replace("\u2019", "'")))
+    out = _SLASH.sub(" or ", _AND_OR.sub("or", _WITH.sub("with ", text.replace("\u2019", "'"))))
     for pat, repl in _CONTRACTIONS:
         out = re.sub(pat, repl, out, flags=re.I)
     return out
