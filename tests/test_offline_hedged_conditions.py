@@ -225,3 +225,52 @@ def test_a_heading_answered_after_an_arrow_is_a_condition_not_a_placement(
     (`placement._THEN_ARROW`), so the heading is the instruction's condition: asked, not placed."""
     assert _asks(text, rooms, condition)
     assert condition not in _placed(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # dev7 study_desk_cleanup_d7 (a Scottish note)
+    ("If there's a document on the desk an it's a bill, file it in the filing cabinet - the drawer might be "
+     "pulled oot already, if no open it - an shut the drawer efter.", ("study",), "state(filing_cabinet, open)"),
+    # written here: a bedroom
+    ("The nightstand drawer might be pulled oot; if it is, push it in efter.", ("bedroom",),
+     "state(nightstand, open)"),
+])
+def test_scots_spellings_read_as_their_english_words(text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"pulled oot" is "pulled out" (open) in a text with two Scots spellings or more
+    (`sentences.SCOTS`); one such word alone is left as written."""
+    assert _asks(text, rooms, condition)
+    assert unquote("Balance, yin and yang.") == "Balance, yin and yang."
+
+
+@pytest.mark.parametrize(("text", "rooms", "table"), [
+    # dev7 cabin_yacht_logbook (a yacht's logbook)
+    ("- Desk lamp over chart table left on last night - batteries low. Check, OFF if on.\n"
+     "- Torch found on the port bunk again. Belongs in the chart table drawer; if on bunk, stow it there.",
+     ("cabin",), "coffee_table"),
+    # written here: a television over a dresser
+    ("Television over the dresser left on last night - check it, off if on.", ("bedroom",), "dresser"),
+])
+def test_a_state_said_next_to_a_thing_that_cannot_take_it_is_not_asked_of_it(
+        text: str, rooms: tuple[str, ...], table: str) -> None:
+    """"Desk lamp over chart table left on": the piece of furniture beside the lamp, which the
+    catalog says cannot be switched on, is asked nothing when the clause says the state of a thing
+    that can take it (`FITTED`, `_capabilities`); the lamp still is."""
+    found = _factors(text, rooms)
+    assert not any(f"state({table}, toggled_on)" in v for values in found.values() for v in values)
+    lamp = "desk_lamp" if "lamp" in text else "television"
+    assert _asks(text, rooms, f"state({lamp}, toggled_on)")
+
+
+@pytest.mark.parametrize(("text", "rooms", "thing"), [
+    # dev7 vestry_choir_secretary_email
+    ("If you find one there, would you put it back in the cardboard box that lives on top of the piano?",
+     ("vestry",), "cardboard_box"),
+    # written here
+    ("If you find one there, could you put it back in the basket that sits on top of the wardrobe?", ("bedroom",),
+     "basket"),
+])
+def test_on_top_of_is_a_place_not_the_state_on(text: str, rooms: tuple[str, ...], thing: str) -> None:
+    """"on top of" is read as "on" (`implied._ON_TOP`): its "on" is no switched-on state of the
+    thing it is said with."""
+    found = _factors(text, rooms)
+    assert not any(f"state({thing}, toggled_on)" in v for values in found.values() for v in values)

@@ -669,8 +669,8 @@ class _Reader:
         if "respectively" in words:
             facts = _respectively(facts)
         said_by_pronoun = {r for m in mentions if m.kind == "pronoun" for r in m.roles}
-        facts = [self._fit(f) if f.kind == "state" and f.subject in said_by_pronoun else f for f in facts
-                 if self._holds(f)]
+        facts = [self._fit(f) if f.kind == "state" and f.subject in said_by_pronoun else self._fit_named(f, mentions)
+                 for f in facts if self._holds(f)]
         facts += self._back_home(words, mentions, facts)
         goals = [f for f in facts if f.kind == "location" and f.goal]
         if goals:
@@ -727,6 +727,18 @@ class _Reader:
             return f
         r = fitting[0]
         return replace(f, subject=r, condition=f"state({r}, {f.key})")
+
+    def _fit_named(self, f: Fact, mentions: list[Mention]) -> Fact:
+        """"Desk lamp over chart table left on last night": an on/open state read of a thing named
+        in the clause that cannot take it (the table, the nearest noun) is the state of the one
+        thing the clause names that can (the lamp); with none or several, as read."""
+        if f.kind != "state" or f.key not in FITTED or f.key in self.capable.get(f.subject, FITTED):
+            return f
+        fitting = list(dict.fromkeys(r for m in mentions if m.kind == "role" for r in m.roles
+                                     if r != f.subject and f.key in self.capable.get(r, ())))
+        if len(fitting) != 1:
+            return f
+        return replace(f, subject=fitting[0], condition=f"state({fitting[0]}, {f.key})")
 
     def _already(self, words: list[str], mentions: list[Mention], negated: bool) -> list[Fact]:
         """`unless it is already there / on`: the condition is the previous instruction's result;

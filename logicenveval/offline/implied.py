@@ -80,8 +80,13 @@ def any_at(text: str) -> str:
                                  f"{m.group('head').lower()} ", text)
 
 
+#: "on top of" is the preposition "on" ("the cardboard box that lives on top of the piano"); left
+#: as it is, its "on" reads as the state (the box switched on) in a condition
+_ON_TOP = re.compile(r"\bon\s+top\s+of\b", re.I)
+
+
 def implied(sentence: str) -> str:
     """`sentence` with the conditions its grammar implies spelled out as conditionals: an
     instruction that holds "if need be" (`_IF_NEED_BE`) and an obligation to a state
-    (`_OBLIGED`); any other sentence as it is."""
-    return _OBLIGED.sub(_obliged, _IF_NEED_BE.sub(_if_needed, sentence))
+    (`_OBLIGED`); "on top of" as "on" (`_ON_TOP`); any other sentence as it is."""
+    return _OBLIGED.sub(_obliged, _IF_NEED_BE.sub(_if_needed, _ON_TOP.sub("on", sentence)))

@@ -455,6 +455,21 @@ def starred(text: str) -> str:
     return "\n".join(line for line in lines if line is not None)
 
 
+#: Scots spellings of English words that English spells otherwise and uses in no other sense
+#: (Dictionary of the Scots Language, dsl.ac.uk: "oot" out, "doon" down, "aboot" about, "efter"
+#: after, "hoose" house, "yin" one): in a text with two of them or more, each reads as its English
+#: word ("the drawer might be pulled oot already" is pulled out, open; "shut it doon" shut down)
+SCOTS = {"oot": "out", "doon": "down", "aboot": "about", "efter": "after", "hoose": "house", "yin": "one"}
+_SCOTS = re.compile(rf"\b(?:{'|'.join(SCOTS)})\b", re.I)
+
+
+def _scots(text: str) -> str:
+    """`text` with its Scots spellings (`SCOTS`) as English, when it has two of them or more."""
+    if len({m.group(0).lower() for m in _SCOTS.finditer(text)}) < 2:
+        return text
+    return _SCOTS.sub(lambda m: _match_case(m.group(0), SCOTS[m.group(0).lower()]), text)
+
+
 def unquote(text: str) -> str:
     """The text with British and older spellings of function words in their common form
     (`VARIANTS`) and without a formula of politeness before a verb (`_POLITE`), with a typographic
@@ -479,7 +494,7 @@ def unquote(text: str) -> str:
     (`detable`); a heading answered by a verb with no subject of its own with the heading as that
     subject (`_SUBJECTLESS`); a chat message's `*`-correction made in the message it corrects
     (`starred`), without a chat line's time stamp (`_TIME_STAMP`)."""
-    text = _NO_THEN.sub(_no_then, _telegram(text))
+    text = _NO_THEN.sub(_no_then, _scots(_telegram(text)))
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), VARIANTS[m.group(0).lower()]), text))
     text = starred(_TIME_STAMP.sub(r"\1", text))
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
