@@ -11,6 +11,7 @@ import pytest
 from reading import factors as _factors
 from reading import placed as _placed
 
+from logicenveval.offline.analysis import _ensured
 from logicenveval.offline.implied import any_at, implied
 from logicenveval.offline.sentences import unquote
 
@@ -44,6 +45,18 @@ def test_make_sure_after_but_or_and_with_an_emphatic_do_asks_the_state(
     """"... but do make sure it's turned off": a clause about the thing, then "make sure" after a
     conjunction and an emphatic "do", speaking of it by a pronoun (`analysis._ENSURE`)."""
     assert _asks(text, rooms, condition)
+
+
+@pytest.mark.parametrize("text", [
+    # built-in kitchen_breakfast_prep
+    "in case a loaf of bread is on the counter, put it on the plate and make sure the toaster is switched on.",
+    # written here
+    "If the kids are home, feed the cat and make sure the fan is off.",
+])
+def test_make_sure_after_and_in_a_conditions_instruction_is_left_to_it(text: str) -> None:
+    """After a condition earlier in its sentence, "and make sure ..." is part of that condition's
+    instruction, not a condition of its own (`analysis._IN_CONDITION`)."""
+    assert _ensured(text) == text
 
 
 @pytest.mark.parametrize(("text", "rooms", "condition"), [
