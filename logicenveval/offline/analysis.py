@@ -41,6 +41,7 @@ from logicenveval.offline.clauses import (
     split_clauses,
     uncertain_words,
 )
+from logicenveval.offline.implied import any_at, implied
 from logicenveval.offline.lexicon import (
     COLOR_WORDS,
     VERB_OBJECTS,
@@ -54,6 +55,7 @@ from logicenveval.offline.sentences import (
     ACTIONS,
     EVENT_VERBS,
     FORMS,
+    FOUND_PARTICIPLES,
     HABITUAL_WORDS,
     PREP_IN,
     PREP_ON,
@@ -667,8 +669,8 @@ class _Reader:
         if "respectively" in words:
             facts = _respectively(facts)
         said_by_pronoun = {r for m in mentions if m.kind == "pronoun" for r in m.roles}
-        facts = [self._fit(f) if f.kind == "state" and f.subject in said_by_pronoun else f for f in facts
-                 if self._holds(f)]
+        facts = [self._fit(f) if f.kind == "state" and f.subject in said_by_pronoun else self._fit_named(f, mentions)
+                 for f in facts if self._holds(f)]
         facts += self._back_home(words, mentions, facts)
         goals = [f for f in facts if f.kind == "location" and f.goal]
         if goals:
@@ -725,6 +727,18 @@ class _Reader:
             return f
         r = fitting[0]
         return replace(f, subject=r, condition=f"state({r}, {f.key})")
+
+    def _fit_named(self, f: Fact, mentions: list[Mention]) -> Fact:
+        """"Desk lamp over chart table left on last night": an on/open state read of a thing named
+        in the clause that cannot take it (the table, the nearest noun) is the state of the one
+        thing the clause names that can (the lamp); with none or several, as read."""
+        if f.kind != "state" or f.key not in FITTED or f.key in self.capable.get(f.subject, FITTED):
+            return f
+        fitting = list(dict.fromkeys(r for m in mentions if m.kind == "role" for r in m.roles
+                                     if r != f.subject and f.key in self.capable.get(r, ())))
+        if len(fitting) != 1:
+            return f
+        return replace(f, subject=fitting[0], condition=f"state({fitting[0]}, {f.key})")
 
     def _already(self, words: list[str], mentions: list[Mention], negated: bool) -> list[Fact]:
         """`unless it is already there / on`: the condition is the previous instruction's result;
@@ -1218,14 +1232,24 @@ DISCOVERY = frozenset({"find", "found", "spot", "spotted", "see", "saw", "seen",
                        "discovered", "come", "came", "across", "upon"})
 
 
+_HERE = frozenset({"there", "here"})
+#: the indefinite pronouns of "if you find one there", "should you spot any there": one of the
+#: things the clause before said may be there, not whether such a thing exists at all
+FOUND_ONE = frozenset({"one", "ones", "any", "some"})
+
+
 def _anaphoric(text: str, facts: list[Fact]) -> bool:
     """A condition with no fact of its own whose words only point back ("if it is not" too; "should
     you find it there": an agent coming upon the thing, `DISCOVERY`)."""
+    words = {w for w, _, _ in tokens(expand(text))}
+    if words & DISCOVERY and words & AGENTS and words & _HERE and words & FOUND_ONE \
+            and all(f.goal or f.kind == "exists" for f in facts):
+        # "if you find one there": the one found is one of the things just said to be there
+        return words <= ANAPHORIC | {"not"} | DISCOVERY | AGENTS | _HERE | FOUND_ONE
     if any(not f.goal for f in facts):
         return False
-    words = {w for w, _, _ in tokens(expand(text))}
     if words & DISCOVERY and words & AGENTS:
-        return words <= ANAPHORIC | {"not"} | DISCOVERY | AGENTS | {"there", "here"}
+        return words <= ANAPHORIC | {"not"} | DISCOVERY | AGENTS | _HERE
     return points_back(text)
 
 
@@ -1387,6 +1411,11 @@ def _available(reader: _Reader, text: str) -> list[Fact]:
     return [Fact(r, f"exists({r})", "exists") for r in things[-1].roles] if things else []
 
 
+#: verbs of carrying a thing somewhere, whose list after a colon says where each kind of it goes
+#: ("Take it through to the kitchen: a dirty mug in the sink, a clean one on the counter")
+_TAKING = frozenset({"take", "bring", "carry"})
+
+
 def _elaborates(clauses: list[Clause], sentence: int, text: str) -> bool:
     """The piece has no verb of its own (no finite or modal verb, no action) and follows, in the
     same sentence, a clause whose verb moves things (`MOTION`): it lists what goes where."""
@@ -1394,7 +1423,7 @@ def _elaborates(clauses: list[Clause], sentence: int, text: str) -> bool:
         return False
     words = {w for w, _, _ in tokens(expand(text))}
     before = {w for w, _, _ in tokens(expand(clauses[-1].text))}
-    return bool(before & MOTION) and not words & (CLAUSE_WORDS | ACTIONS | MOTION | DESCRIPTIVE | UNCERTAIN)
+    return bool(before & (MOTION | _TAKING)) and not words & (CLAUSE_WORDS | ACTIONS | MOTION | DESCRIPTIVE | UNCERTAIN)
 
 
 def _place_heading(reader: _Reader, text: str) -> bool:
@@ -1645,12 +1674,18 @@ def _parallel(said: str, facts: list[Fact], clauses: list[Clause], sentence: int
 #: prepositions of a place "there" may take up (the place, not where something goes through)
 _THERE_PREPS = {"on": "on", "onto": "on", "in": "in", "into": "in", "inside": "in"}
 _BE_WORDS = frozenset({"is", "are", "was", "were", "be", "been"})
+#: pronoun subjects of such a condition before a participle of finding or leaving: "If found
+#: there" (its subject elided, read "if it is found there", `sentences._ELIDED_SUBJECT`) after
+#: "Scissors are not to be left out on the counter" ("if they're already there" is no such place:
+#: it asks whether they are where the instruction before put them)
+_THERE_SUBJECTS = frozenset({"it", "they"})
 
 
 def _there_named(reader: _Reader, said: str, clauses: list[Clause], sentence: int) -> str:
     """"Pillows are not to be left on the floor. Should a pillow have fallen there, ...", "Keep
     the lead off the sofa; if the lead has been dropped there, ...": in a condition that names
-    a thing but no place, "there" after its verb is the place last named in the clause before (of
+    a thing (or speaks of it by a pronoun: "If found there, return them to the drawer") but no
+    place, "there" after its verb is the place last named in the clause before (of
     this sentence or the one before), read as that place. Not "there is" nor "is it there"."""
     text = expand(said)
     toks = tokens(text)
@@ -1660,7 +1695,8 @@ def _there_named(reader: _Reader, said: str, clauses: list[Clause], sentence: in
     k = words.index("there")
     mentions = reader.lex.find_mentions(toks)
     if k == 0 or words[k + 1:k + 2] and words[k + 1] in _BE_WORDS or words[k - 1] in CLAUSE_WORDS \
-            or not any(m.kind == "role" and m.end <= k for m in mentions) \
+            or not (any(m.kind == "role" and m.end <= k for m in mentions)
+                    or set(words[:k]) & _THERE_SUBJECTS and words[k - 1] in FOUND_PARTICIPLES) \
             or any(m.kind in ("role", "floor") and m.start > k for m in mentions):
         return said
     for cl in reversed(clauses):
@@ -1679,22 +1715,33 @@ def _there_named(reader: _Reader, said: str, clauses: list[Clause], sentence: in
     return said
 
 
-#: "please make sure it's switched off before you leave", "ensure the curtains are open": an
+#: "please make sure it's switched off before you leave", "ensure the curtains are open",
+#: "check the hair dryer is off" (a check with its "that" left out), "... is lovely but do make sure
+#: it's turned off" (after "but", "and" or "so", with an emphatic "do"): an
 #: instruction to see that a thing is in a state says it may not be, as "if it is not switched
 #: off, make it switched off" does; the verbs that ask it and the states they ask of
 #: ("see that the TV is on?" points a thing out, `placement.PERCEIVE`; "make sure the book is on
 #: the shelf" says where it goes: no state before a place)
-_ENSURE = re.compile(r"(?P<lead>^\W*|\s[-\u2013\u2014]\s+|[;:,]\s*)(?:please\s+)?(?:make sure|ensure|see to it|"
-                     r"check that)\s+(?:that\s+)?(?P<subj>it|they|(?:the|your|my)\s+[a-z][a-z ]*?)"
+_ENSURE = re.compile(r"(?P<lead>^\W*|\s[-\u2013\u2014]\s+|[;:,]\s*|\s(?:but|and|so)\s+)(?:please\s+)?(?:do\s+)?"
+                     r"(?:make sure|ensure|see to it|(?:double[- ]?)?check)\s+(?:that\s+)?(?P<subj>it|they|(?:the|your|my)\s+[a-z][a-z ]*?)"
                      r"(?:\s+(?P<be>is|are)|(?P<short>['\u2019](?:s|re)))\s+(?P<state>(?:switched|turned|left|shut|powered)\s+(?:off|on|open|down)"
                      r"|off|on|open|closed|shut|locked|unlocked)\b(?!\s+(?:the|a|an|its|their|your|my|top|to|of)\b)"
                      r"[^.;!?]*", re.I)
+
+
+#: the conjunctions "make sure" may follow ("... is lovely but do make sure it's off"); after a
+#: condition earlier in the sentence (`_IN_CONDITION`) it is part of that condition's instruction
+#: and asks nothing of its own
+_ENSURE_JOINS = frozenset({"but", "and", "so"})
+_IN_CONDITION = re.compile(r"\b(?:if|in case|unless|when|whenever|should|once)\b", re.I)
 
 
 def _ensured(sentence: str) -> str:
     """"... - please make sure it's switched off before you leave." as the condition it implies,
     "... - if it is not switched off, make it switched off." (`_ENSURE`)."""
     def plain(m: re.Match[str]) -> str:
+        if m.group("lead").strip().lower() in _ENSURE_JOINS and _IN_CONDITION.search(sentence[:m.start()]):
+            return m.group(0)  # "in case the bread is out, put it on the plate and make sure ...": its instruction
         be = m.group("be") or ("is" if m.group("short")[1:].lower() == "s" else "are")
         subj, state = m.group("subj"), m.group("state")
         return f"{m.group('lead')}if {subj} {be} not {state}, make {subj} {state}"
@@ -1707,7 +1754,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
              if (cat := catalog.get(str(role.get("category", "")))) is not None}
     reader = _Reader(lex, _capabilities(brief, catalog), kinds)
     categories = {name: str(role.get("category", "")) for name, role in dict(brief.get("roles") or {}).items()}
-    sentences = [_ensured(_checked(sent, lex, kinds)) for sent in split_sentences(unquote(str(brief["description"])))]
+    # the conditions a sentence implies without a cue are spelled out after its bullet item is
+    # found (`_bullet_items` finds a sentence by its words in the text)
+    found_in_text = [_ensured(_checked(sent, lex, kinds))
+                     for sent in split_sentences(any_at(unquote(str(brief["description"]))))]
+    sentences = [implied(sent) for sent in found_in_text]
     clauses: list[Clause] = []
     grammatical = 0  # pieces split at ':' or ';' still belong to one sentence for grouping
     headed = -1  # the sentence whose heading ("Shirt on the floor:") the pieces after it answer
@@ -1717,7 +1768,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     #: (sentence, members) of a distributive phrase: its sentence's facts hold for each member
     spread: tuple[int, tuple[str, ...]] = (-1, ())
     cut = [split_clauses(sent) for sent in sentences]
-    bullets = _bullet_items(str(brief["description"]), sentences)
+    bullets = _bullet_items(any_at(str(brief["description"])), found_in_text)
     speakers = _speakers(reader, unquote(str(brief["description"])))
     for si, sent in enumerate(sentences):
         pieces = cut[si]
@@ -1885,7 +1936,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                                               # "A dirty mug is sitting on the desk": a thing the
                                               # statement places outright is as it describes it
                                               and not (cl.role == "statement" and not f.home
-                                                       and f.subject in _placed_outright(brief, catalog, cl.text)))
+                                                       and f.subject in _placed_outright(brief, catalog, cl.text)
+                                                       # "Take it to the kitchen: a dirty mug in the
+                                                       # sink, a clean one on the counter": a list
+                                                       # saying where each goes places nothing
+                                                       and not _moved(cl, f.subject)))
                               or (cl.role == "else" and f.kind != "location")):
                 continue
             slot = (f.subject, f.kind, f.key if f.kind in ("state", "attr") else "")
@@ -1990,6 +2045,12 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
 
 #: relative pronouns: a noun phrase with a relative clause ("a plate that is wet") names a class
 #: the sentence gives a rule for, not a thing it places
+def _moved(clause: Clause, subject: str) -> bool:
+    """Whether the clause says where `subject` goes (a location goal of it): a verbless list
+    after an instruction that moves things (`_elaborates`) reads its places as goals."""
+    return any(f.goal and f.kind == "location" and f.subject == subject for f in clause.facts)
+
+
 RESTRICTIVE = frozenset({"that", "which", "who", "whichever", "whatever"})
 
 

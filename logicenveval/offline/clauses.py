@@ -377,7 +377,10 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
     # "he always does - if so, off please": a condition that only points back has nothing before
     # its comma, so what follows is its instruction, however short
     pointer = m is not None and not tail[:m.start()].strip() and cue in POINTING_CUES
-    if head and not pointer and not (m and re.match(r"\s*(then\b|,\s*[a-z]+ (it|them)\b)", tail[m.start():].lower())):
+    # (after its comma, a verb and a pronoun or a request opens the condition's instruction: "...
+    # - if you find one there, put it back", "... - if you find one there, would you put it back?")
+    if head and not pointer and not (m and re.match(
+            rf"\s*(then\b|,\s*[a-z]+ (it|them)\b|,\s*(?:{'|'.join(sorted(REQUESTS))}) you\b)", tail[m.start():].lower())):
         other = re.search(r"[,;]?\s*\b(otherwise|(?<!where )(?<!thing )else|or else|instead)\b", tail)
         cond = tail[: other.start()] if other else tail
         nested = _first_cue(cond.lower()[1:], CONDITIONAL)

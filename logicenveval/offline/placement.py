@@ -43,7 +43,6 @@ from logicenveval.offline.clauses import (
 from logicenveval.offline.lexicon import COLOR_WORDS, FURNITURE_PARTS, Lexicon, Mention, singular
 from logicenveval.offline.sentences import (
     ACTIONS,
-    ARROW,
     NORM_ADVERBS,
     PERSONAL_SUBJECTS,
     PREP_IN,
@@ -214,13 +213,16 @@ class _Reading:
         self.rooms[kind].setdefault(role, room)
 
 
+#: an arrow after a part that asks no question: "then", the answer of what comes before it, cut
+#: as a colon is ("Pillow on the floor -> back on the sofa" is a heading answered by an
+#: instruction, a condition, as "Pillow on the floor: back on the sofa" is; after "?" it is dropped)
+_THEN_ARROW = re.compile(r"(?<![?:!])\s*(?:->|=>|\u2192)\s*")
+
+
 def _sentences(text: str, lex: Lexicon) -> list[_Sentence]:
     out = []
     for part in split_sentences(expand(text), full_stops_only=True):
-        # "Pillow on the floor -> back on the sofa": the arrow is "then", what comes before it the
-        # situation its instruction answers, as a heading before a colon (`clause_spans`), no
-        # statement of where the pillow is
-        low = ARROW.sub(" : ", part).lower()
+        low = _THEN_ARROW.sub(": ", part.lower())
         toks = [_Token(m.group(0), singular(m.group(0)) if m.group(0)[0].isalnum() else m.group(0),
                        m.start(), m.end()) for m in _TOKEN.finditer(low)]
         toks = [t for t in toks if t.word != "\n"]

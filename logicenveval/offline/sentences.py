@@ -164,6 +164,20 @@ _ELIDED_SUBJECT = re.compile(
 _ELIDED_STATE = re.compile(
     rf"(\([^()]*?\b(?:if|unless|when|whenever|once|while))\s+(?=(?:{'|'.join(sorted(w for w in STATE_WORDS if ' ' not in w))})\s*\))",
     re.I)
+#: the same at the end of an instruction's clause, after its verb ("Tablet on the plinth: power
+#: off if still on.", "Heater by the door: switch off if running"): an instruction whose condition
+#: is a bare state, with or without "still" / "already", speaks of the thing it acts on, "if it is
+#: still on"; a bare state opening a sentence ("If dirty, ...") is read elsewhere
+_ELIDED_END_STATE = re.compile(
+    rf"(?<=\w)(\s+(?:if|unless|when|whenever|once|while))\s+(?=(?:(?:still|already)\s+)?"
+    rf"(?:{'|'.join(sorted(w for w in STATE_WORDS if ' ' not in w))})\s*(?:[.;!]|$))",
+    re.I | re.M)
+
+
+#: an emphatic "do" before a verb of habit ("the folders do tend to end up on the floor", "the
+#: ball does keep rolling under the sofa"): it stresses the habit and is no verb of its own, but
+#: left in place it makes the remark a clause with a finite verb that the habit rules do not read
+_EMPHATIC_DO = re.compile(rf"(?<=\w)\s+(?:do|does|did)(?=\s+(?:{'|'.join(sorted(TEND | KEEP))})\b)", re.I)
 
 
 #: a speaker correcting a place as they say it ("throw it in the wardrobe, no wait, sorry, in the
@@ -366,7 +380,7 @@ PREDICATE_STATES = {"going": "running"}
 _PREDICATE_STATE = re.compile(
     rf"((?:\b(?:is|are|was|were|be)|'s|\u2019s)(?:\s+(?:still|already|just|now))*\s+|\b(?:still|already)\s+)"
     rf"({'|'.join(PREDICATE_STATES)})"
-    r"(?=\s*(?:[,.;:!?)]|$|\s(?:then|and|or|but|so)\b))", re.I | re.M)
+    r"(?=\s*(?:[,.;:!?)]|$|\s(?:then|and|or|but|so|already|still|now|again)\b))", re.I | re.M)
 
 
 #: a telegram's words for its punctuation (Oxford: stop, "(in telegrams) a full stop"; query,
@@ -447,6 +461,21 @@ def starred(text: str) -> str:
     return "\n".join(line for line in lines if line is not None)
 
 
+#: Scots spellings of English words that English spells otherwise and uses in no other sense
+#: (Dictionary of the Scots Language, dsl.ac.uk: "oot" out, "doon" down, "aboot" about, "efter"
+#: after, "hoose" house, "yin" one): in a text with two of them or more, each reads as its English
+#: word ("the drawer might be pulled oot already" is pulled out, open; "shut it doon" shut down)
+SCOTS = {"oot": "out", "doon": "down", "aboot": "about", "efter": "after", "hoose": "house", "yin": "one"}
+_SCOTS = re.compile(rf"\b(?:{'|'.join(SCOTS)})\b", re.I)
+
+
+def _scots(text: str) -> str:
+    """`text` with its Scots spellings (`SCOTS`) as English, when it has two of them or more."""
+    if len({m.group(0).lower() for m in _SCOTS.finditer(text)}) < 2:
+        return text
+    return _SCOTS.sub(lambda m: _match_case(m.group(0), SCOTS[m.group(0).lower()]), text)
+
+
 def unquote(text: str) -> str:
     """The text with British and older spellings of function words in their common form
     (`VARIANTS`) and British spellings of catalog words in the catalog's (`SPELLINGS`) and without a formula of politeness before a verb (`_POLITE`), with a typographic
@@ -471,7 +500,7 @@ def unquote(text: str) -> str:
     (`detable`); a heading answered by a verb with no subject of its own with the heading as that
     subject (`_SUBJECTLESS`); a chat message's `*`-correction made in the message it corrects
     (`starred`), without a chat line's time stamp (`_TIME_STAMP`)."""
-    text = _NO_THEN.sub(_no_then, _telegram(text))
+    text = _NO_THEN.sub(_no_then, _scots(_telegram(text)))
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), _SPELLED[m.group(0).lower()]), text))
     text = starred(_TIME_STAMP.sub(r"\1", text))
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
@@ -480,7 +509,9 @@ def unquote(text: str) -> str:
     plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", plain))))
     plain = _unabbreviated(plain)
     plain = _PREDICATE_STATE.sub(lambda m: m.group(1) + PREDICATE_STATES[m.group(2).lower()], plain)
-    plain = _ACTED_STATE.sub(_acted_state, _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", plain)))
+    plain = _EMPHATIC_DO.sub("", plain)
+    plain = _ELIDED_END_STATE.sub(r"\1 it is ", _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", plain)))
+    plain = _ACTED_STATE.sub(_acted_state, plain)
     plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)
     plain = _KIND_OF.sub(r"\1 ", _STATE_CASE.sub(_state_case, plain))
     return _SUBJECTLESS.sub(r"\1\2\3the \2 \4", detable(_STATE_SUBJECT.sub(_state_subject, plain)))

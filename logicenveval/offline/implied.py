@@ -1,0 +1,92 @@
+"""Conditions a sentence implies without a conditional cue, spelled out for the factor reader.
+
+People rarely write "if the torch is on, switch it off". They write that it *has to be* off,
+that the instruction holds *if need be*, or that *any on the floor* go in the box; each says the
+situation is in doubt as plainly as an "if" does. Each rewrite here turns one such grammatical
+form into the conditional the analyser already reads (as `analysis._ensured` does for "make sure
+it is off"), so the form gets a factor and no new reading path. Only the factor reader reads
+these rewrites: the placement reader and the naming see the text as written.
+"""
+
+from __future__ import annotations
+
+import re
+
+#: the verbs of obligation before "be" that say a state must hold: "has to be", "must be",
+#: "needs to be" ("should be" is a norm the text often answers itself: "should be on - if it's
+#: off, ..."; "is not to be left" is a negative norm the analyser reads already)
+OBLIGATIONS = ("has to", "have to", "must", "needs to", "need to", "ought to")
+#: "The torch has to be turned off when you go", "The lamp must be switched off before you
+#: leave": a definite subject obliged to a state, with no condition of its own after it, reads as
+#: "if the torch is not turned off, make the torch turned off". A verb participle with its "e"
+#: dropped ("turnd", as a child or a fast typist writes it) is the participle.
+_OBLIGED = re.compile(
+    r"(?P<lead>^\W*|[;:,]\s*|\s[-\u2013\u2014]\s+|\b(?:and|but|so)\s+)"
+    r"(?P<subj>it|they|(?:the|your|my|our|his|her|their)\s+[a-z][a-z ]*?)\s+"
+    r"(?P<must>" + "|".join(o.replace(" ", r"\s+") for o in OBLIGATIONS) + r")\s+(?:always\s+)?be\s+"
+    r"(?P<state>(?:switch|turn|power)e?d\s+(?:off|on|down)|shut\s+(?:off|down)|off|on|open|closed|shut|locked|unlocked)\b"
+    r"(?!\s+(?:the|a|an|its|their|your|my|top|to|of|in|into|on|onto)\b)"
+    r"(?![^.;!?]*\b(?:if|unless|otherwise)\b)[^.;!?]*",
+    re.I)
+_PLURAL_OBLIGATIONS = frozenset({"have to", "need to"})
+
+
+def _obliged(m: re.Match[str]) -> str:
+    subj, must = m.group("subj"), " ".join(m.group("must").lower().split())
+    be = "are" if subj.lower() == "they" or must in _PLURAL_OBLIGATIONS else "is"
+    state = re.sub(r"^(switch|turn|power)e?d", r"\1ed", m.group("state"), flags=re.I)
+    return f"{m.group('lead')}if {subj} {be} not {state}, make {subj} {state}"
+
+
+#: the words that make an instruction hold only when it is needed: "switch it off at the wall if
+#: need be", "close it if necessary", "turn the heater off if needed", "if required"
+NEED_WORDS = ("need be", "needs be", "necessary", "needed", "required", "need")
+#: an instruction that sets a state and then says "if need be": the condition is that the state it
+#: sets does not hold yet ("switch it off at the wall if need be": if it is not off)
+_IF_NEED_BE = re.compile(
+    r"\b(?:(?P<verb>switch|turn|power|flick|shut)\s+(?P<obj>it|them|(?:the|your|my|our)\s+[a-z][a-z ]*?)\s+(?P<part>off|on|down)"
+    r"|(?P<bare>close|open|shut|lock|unlock)\s+(?P<bobj>it|them|(?:the|your|my|our)\s+[a-z][a-z ]*?))\b"
+    r"(?P<mid>[^.;!?]*?)\s*,?\s+if\s+(?:" + "|".join(w.replace(" ", r"\s+") for w in NEED_WORDS) + r")\b",
+    re.I)
+#: what each bare verb of "close it if necessary" leaves the thing
+_BARE_RESULT = {"close": "closed", "open": "open", "shut": "shut", "lock": "locked", "unlock": "unlocked"}
+
+
+def _if_needed(m: re.Match[str]) -> str:
+    if m.group("verb"):
+        obj, state = m.group("obj"), m.group("part").lower()
+        state = "off" if state == "down" else state
+    else:
+        obj, state = m.group("bobj"), _BARE_RESULT[m.group("bare").lower()]
+    be = "are" if obj.lower() == "them" else "is"
+    subj = "they" if obj.lower() == "them" else obj
+    return f"{m.group(0)[:m.start('mid') - m.start()]}{m.group('mid')} if {subj} {be} not {state}"
+
+
+#: "Tennis rackets: any on the floor go in the storage box", "Books - any left on the floor go
+#: back on the shelf": a plural heading and "any" with a place after it is a condition on each
+#: of the heading's things ("any tennis rackets on the floor go ..." is read as a thing in doubt
+#: at that place, as "a tennis racket on the floor goes ..." is)
+_ANY_AT = re.compile(
+    r"(?P<lead>^[ \t]*(?:[-*\u2022]\s*)?)(?P<head>[A-Za-z][A-Za-z' ]{1,40}?s)(?P<sep>\s*(?::|\s[-\u2013\u2014])\s*)"
+    r"(?P<any>any)\s+(?=(?:(?:left|lying|found|sitting|still)\s+)?(?:on|in|under|inside|by|near)\s)",
+    re.I | re.M)
+
+
+def any_at(text: str) -> str:
+    """`text` with "any" at a place after a plural heading given the heading's noun (`_ANY_AT`),
+    read before the text is cut into sentences, since the heading's colon ends one."""
+    return _ANY_AT.sub(lambda m: f"{m.group('lead')}{m.group('head')}{m.group('sep')}any "
+                                 f"{m.group('head').lower()} ", text)
+
+
+#: "on top of" is the preposition "on" ("the cardboard box that lives on top of the piano"); left
+#: as it is, its "on" reads as the state (the box switched on) in a condition
+_ON_TOP = re.compile(r"\bon\s+top\s+of\b", re.I)
+
+
+def implied(sentence: str) -> str:
+    """`sentence` with the conditions its grammar implies spelled out as conditionals: an
+    instruction that holds "if need be" (`_IF_NEED_BE`) and an obligation to a state
+    (`_OBLIGED`); "on top of" as "on" (`_ON_TOP`); any other sentence as it is."""
+    return _OBLIGED.sub(_obliged, _IF_NEED_BE.sub(_if_needed, _ON_TOP.sub("on", sentence)))
