@@ -157,7 +157,7 @@ def test_if_theyre_already_there_is_not_the_place_named_before() -> None:
 @pytest.mark.parametrize(("text", "rooms", "condition"), [
     # dev7 vestry_choir_secretary_email
     ("The black music folders do tend to end up on the floor under the chairs - if you find one there, "
-     "would you put it back in the cardboard box?", ("vestry",), "on(folder, floor)"),
+     "would you put it back in the cardboard box?", ("vestry",), "on(black_folder, floor)"),
     # written here: "tend", cushions, a sofa
     ("The cushions tend to end up on the floor - if you find one there, put it on the sofa.", ("living_room",),
      "on(sofa_pillow, floor)"),
@@ -165,7 +165,7 @@ def test_if_theyre_already_there_is_not_the_place_named_before() -> None:
     ("Mugs do tend to end up on the desk - if you find one there, could you take it to the sink?", ("office",),
      "on(mug, desk)"),
     ("The red dog toys tend to end up on the sofa - if you find one there, could you put it in the basket?",
-     ("living_room",), "on(toy, sofa)"),
+     ("living_room",), "on(red_toy, sofa)"),
 ])
 def test_finding_one_there_after_a_habit_asks_the_habits_place(
         text: str, rooms: tuple[str, ...], condition: str) -> None:
