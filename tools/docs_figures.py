@@ -45,6 +45,7 @@ sys.path.insert(0, str(ROOT / "benchmarks"))  # the benchmark scripts whose tabl
 
 from logicenveval.benchmark import load_task, task_ids, tasks_dir  # noqa: E402
 from logicenveval.benchmark_stats import benchmark_stats, to_markdown, totals  # noqa: E402
+from logicenveval.errors import RunFailedError  # noqa: E402
 from logicenveval.logic.constraints import task_constraints  # noqa: E402
 from logicenveval.logic.exact import exact_cover  # noqa: E402
 from logicenveval.logic.exhaustive import exhaustive_cover  # noqa: E402
@@ -249,8 +250,11 @@ def block_selectors() -> str:
 
 
 def _model_label(res: dict[str, Any]) -> str:
-    """`llamacpp:/x/SmolLM2-135M-Instruct.Q4_1.gguf` -> `SmolLM2-135M-Instruct.Q4_1`."""
-    return Path(str(res.get("model", "?")).split(":", 1)[-1]).name.removesuffix(".gguf")
+    """`llamacpp:/x/SmolLM2-135M-Instruct.Q4_1.gguf` -> `SmolLM2-135M-Instruct.Q4_1`, with the
+    brief the pack was recorded with (`--brief roles`, `--brief description`): one model's packs
+    recorded in both setups are told apart."""
+    name = Path(str(res.get("model", "?")).split(":", 1)[-1]).name.removesuffix(".gguf")
+    return f"{name}, brief {res.get('brief', 'roles')}"
 
 
 def block_real() -> str:
@@ -288,7 +292,8 @@ def block_validity_before() -> str:
     to those its cache holds from protocol 2 (the replies recorded before protocol 3's keyed scene,
     replayed with `llm_validity.replay(..., protocol=2)`): per side the questions answered (a
     question never recorded under protocol 2 is a cache miss, not measured, so not counted);
-    packs recorded before protocol 3 have no such column."""
+    packs recorded before protocol 3, and packs whose cache holds no protocol-2 reply (a run
+    stops on its cache misses), have no such column."""
     from llm_validity import pack_protocol, replay  # type: ignore[import-not-found]
 
     out: list[str] = []
@@ -299,7 +304,10 @@ def block_validity_before() -> str:
         recorded = json.loads(path.read_text())
         after = recorded.get("llm", {})
         with tempfile.TemporaryDirectory() as tmp:
-            before = replay(path.parent, Path(tmp), protocol=2).get("llm", {})
+            try:
+                before = replay(path.parent, Path(tmp), protocol=2).get("llm", {})
+            except RunFailedError:
+                continue  # recorded under protocol 3 on only: its cache holds no protocol-2 reply
         head = ("| method | request kind | protocol 2: answered | valid first (%) | valid (%) | cut | "
                 f"protocol {pack_protocol(config)}: answered | valid first (%) | valid (%) | cut |\n"
                 "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|")
@@ -440,7 +448,7 @@ def block_orderings() -> str:
     names: dict[str, str] = paper["methods"]
     llms = list(paper["models"])
     res = results("reference")
-    head = ["metric", *(f"paper, {m}" for m in llms), f"ours ({_model_label(res)}, brief {res.get('brief', 'roles')})",
+    head = ["metric", *(f"paper, {m}" for m in llms), f"ours ({_model_label(res)})",
             "same order as"]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for row, key, path, higher in ORDERED:
