@@ -94,6 +94,13 @@ def verb_at(word: str, prev: str, nxt: list[str]) -> bool:
     return nxt[0] in VERB_OBJECTS or nxt[0] in VERB_PARTICLES and nxt[1:2] != [] and nxt[1] in VERB_OBJECTS
 
 
+def adjective_only(word: str) -> bool:
+    """Whether `word` (as written) is an adjective and no other part of speech in the lemmatiser's
+    dictionary ("acoustic", "wooden"; not "metal", "red" or "live", also nouns or verbs)."""
+    lemmas = getAllLemmas(word)
+    return set(lemmas) == {"ADJ"} and word in lemmas["ADJ"]
+
+
 #: words before a noun, never before an imperative: determiners, counts, prepositions
 NOT_BEFORE_VERBS = frozenset({"a", "an", "any", "some", "no", "each", "every", "one", "two", "three", "of",
                               "on", "onto", "in", "into", "inside", "from", "by", "near", "under", "at",
