@@ -86,3 +86,33 @@ def test_a_bowl_of_water_or_food_where_an_animal_lives_is_its_bowl() -> None:
 def test_a_water_bowl_where_no_animal_lives_is_a_bowl() -> None:
     assert kinds("The water bowl in the sink needs rinsing.", ("kitchen",)) == {"bowl", "sink"}
     assert kinds("The cat sleeps on the sofa. Put the bowl in the sink.", ("living_room",)) >= {"bowl"}
+
+
+# -- a bare head nothing else tells apart is the kind whose name says no use unsaid ----------------
+
+
+def test_a_bare_rack_with_no_use_said_is_the_storage_rack() -> None:
+    # dev 8 (a chat about a household shelter): no shoes, coats, towels or drying are said
+    assert "utility_shelf" in kinds("also the vacuum i used already, i leave it on the floor in there. if it's on "
+                                    "the floor pls keep it on the rack, the metal one", ("household_shelter",))
+    # written for the test
+    assert kinds("The paint tins go on the rack in the back corner.", ("boiler_room",)) >= {"utility_shelf"}
+
+
+def test_a_use_the_text_says_keeps_its_kind() -> None:
+    assert "shoe_rack" in kinds("Muddy shoes off before you come in, and put them on the rack.", ("boiler_room",))
+    assert "coat_rack" in kinds("Hang your coat on the rack.", ("boiler_room",))
+
+
+# -- packaging whose contents name no kind is the thing ---------------------------------------------
+
+
+def test_packaging_of_things_no_kind_names_is_the_object() -> None:
+    # dev 8: "my carton of NS things" (national-service kit) is the carton
+    assert "cardboard_box" in kinds("my carton of NS things also, if the flaps open help me close",
+                                    ("household_shelter",))
+    # written for the test
+    assert "cardboard_box" in kinds("The carton of old photos is under the stairs; keep it shut.", ("hallway",))
+    # contents a kind names are the object, as before ("a bag of pet food")
+    assert kinds("Put a bag of pet food by the door.", ("kitchen",)) == {"pet_food"}
+    assert kinds("Put the carton of milk in the fridge.", ("kitchen",)) == {"milk_carton", "fridge"}

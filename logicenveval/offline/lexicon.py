@@ -101,6 +101,15 @@ def adjective_only(word: str) -> bool:
     return set(lemmas) == {"ADJ"} and word in lemmas["ADJ"]
 
 
+def gerund_of(word: str) -> str | None:
+    """The verb whose -ing form `word` is, when it is one ("drying": "dry"; "ceiling", "pudding"
+    are no verb's), else None."""
+    if not word.endswith("ing"):
+        return None
+    lemma = getLemma(word, upos="VERB", lemmatize_oov=False)
+    return lemma[0] if lemma and lemma[0] != word else None
+
+
 #: words before a noun, never before an imperative: determiners, counts, prepositions
 NOT_BEFORE_VERBS = frozenset({"a", "an", "any", "some", "no", "each", "every", "one", "two", "three", "of",
                               "on", "onto", "in", "into", "inside", "from", "by", "near", "under", "at",

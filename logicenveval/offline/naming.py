@@ -33,6 +33,7 @@ from logicenveval.offline.lexicon import (
     SPARE_WORDS,
     TIME_HEADS,
     adjective_only,
+    gerund_of,
     singular,
     tokens,
     verb_at,
@@ -327,14 +328,24 @@ class _Reader:
             return n, category
         word = words[i]
         nxt = words[i + 1] if i + 1 < len(words) else ""
-        if word in _PACKAGING and nxt == "of":
-            return 1, None
+        if word in _PACKAGING and nxt == "of" and self.contents_named(i + 2):
+            return 1, None  # "a bag of pet food": the food is the object
         if self.verb(i) or self.place_sense(i) or self.reading_label(i):
             return 1, None
         if word in self.senses:  # "left it out on the bench" in a New Zealand note: the worktop
             self.said_as[self.senses[word]] = word
             return 1, self.senses[word]
         return 1, self.bare_noun(i, category)
+
+    def contents_named(self, i: int) -> bool:
+        """Whether the words from `i`, after "<packaging> of", name a kind within three words
+        ("a bag of pet food", "a pack of the baby wipes"): then the contents are the object, as
+        the catalog keeps them; else the packaging is ("my carton of NS things", "a bag of old
+        clothes to give away": the carton, the bag)."""
+        words = self.text.words
+        end = next((k for k in range(i, min(i + 3, len(words))) if _BREAK.search(self.text.gaps[k]) and k > i),
+                   min(i + 3, len(words)))
+        return any(self.match(k)[1] is not None for k in range(i, end))
 
     def reading_label(self, i: int) -> bool:
         """Whether the one-word noun at word `i` labels a reading, no object: it opens its item
@@ -452,7 +463,7 @@ class _Reader:
             candidates = [c for c in candidates if c is None or not self.plural_only(c, word)] or candidates
         said = self.sentence_context(i)
 
-        def score(category: str | None) -> tuple[bool, bool, int, bool, bool, int, int, bool]:
+        def score(category: str | None) -> tuple[bool, bool, int, bool, bool, int, int, bool, bool]:
             assert category is not None
             cat = self.catalog.categories[category]
             others = {w for text in (category, *_own(cat)) for w in words_of(text)} - {word}
@@ -464,6 +475,9 @@ class _Reader:
                     written != word and self.plural_named(category, word), category == exact,
                     len(others & self.context),
                     -len(rooms) if rooms & self.room_evidence() else -1000,
+                    # then a kind whose name says no use the text does not ("keep it on the rack,
+                    # the metal one" with no shoes, coats or drying said: the storage rack)
+                    not self.marked(category, word),
                     # last, the kind the word heads the name of, not only a synonym ("computer":
                     # a desktop computer, not a laptop's "notebook computer")
                     words_of(category)[-1] == word)
@@ -694,14 +708,22 @@ class _Reader:
 
     def marked(self, category: str, word: str) -> bool:
         """Whether every name of `category` that `word` heads says a use the text does not: a
-        room's ("pantry rack": a pantry's) or another kind's, what it holds ("shoe rack"), with
-        that word nowhere in the text. A bare "rack" with shelves is then the unmarked one, the
-        "storage rack" (a utility shelf)."""
+        room's ("pantry rack": a pantry's) or another kind's, what it holds ("shoe rack"), or an
+        activity ("drying rack": drying, `lexicon.gerund_of`), with that word nowhere in the text.
+        A bare "rack" with shelves is then the unmarked one, the "storage rack" (a utility shelf);
+        so is a bare "rack" nothing else tells apart (`bare_noun`)."""
         said = set(self.text.words)
         names = [words_of(text) for text in (category, *_own(self.catalog.categories[category]))]
         headed = [n for n in names if len(n) > 1 and n[-1] == word]
-        return bool(headed) and all(any((known_room_type(w) is not None or (w,) in self.phrases) and w not in said
-                                        for w in n[:-1]) for n in headed)
+
+        def use(w: str) -> bool:
+            """A room, a kind, or an activity ("drying": a verb's -ing form) the text does not say."""
+            doing = gerund_of(w)
+            if doing is not None:
+                return doing not in said and w not in said
+            return (known_room_type(w) is not None or (w,) in self.phrases) and w not in said
+
+        return bool(headed) and all(any(use(w) for w in n[:-1]) for n in headed)
 
     def part_of_named(self, i: int, prev: str) -> bool:
         """Whether word `i` is a ranked part ("the bottom shelf", "the top level") of a piece of
