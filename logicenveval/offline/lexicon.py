@@ -94,6 +94,22 @@ def verb_at(word: str, prev: str, nxt: list[str]) -> bool:
     return nxt[0] in VERB_OBJECTS or nxt[0] in VERB_PARTICLES and nxt[1:2] != [] and nxt[1] in VERB_OBJECTS
 
 
+def adjective_only(word: str) -> bool:
+    """Whether `word` (as written) is an adjective and no other part of speech in the lemmatiser's
+    dictionary ("acoustic", "wooden"; not "metal", "red" or "live", also nouns or verbs)."""
+    lemmas = getAllLemmas(word)
+    return set(lemmas) == {"ADJ"} and word in lemmas["ADJ"]
+
+
+def gerund_of(word: str) -> str | None:
+    """The verb whose -ing form `word` is, when it is one ("drying": "dry"; "ceiling", "pudding"
+    are no verb's), else None."""
+    if not word.endswith("ing"):
+        return None
+    lemma = getLemma(word, upos="VERB", lemmatize_oov=False)
+    return lemma[0] if lemma and lemma[0] != word else None
+
+
 #: words before a noun, never before an imperative: determiners, counts, prepositions
 NOT_BEFORE_VERBS = frozenset({"a", "an", "any", "some", "no", "each", "every", "one", "two", "three", "of",
                               "on", "onto", "in", "into", "inside", "from", "by", "near", "under", "at",

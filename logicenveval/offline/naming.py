@@ -32,6 +32,8 @@ from logicenveval.offline.lexicon import (
     FURNITURE_PARTS,
     SPARE_WORDS,
     TIME_HEADS,
+    adjective_only,
+    gerund_of,
     singular,
     tokens,
     verb_at,
@@ -78,6 +80,10 @@ _FRESH = frozenset({"fresh", "new"})
 _ANOTHER = frozenset({"another", "second"})
 #: "a bag of pet food", "a pack of wipes", "the pet food bag": the contents are the object
 _PACKAGING = frozenset({"bag", "pack", "packet", "carton"})
+#: vessels: a thing one picks up named before one is what it holds, the object as the catalog
+#: keeps it ("the detergent bottle" is the detergent, "the soap dish" the soap's): no noun
+#: compound whose head names the object (`modifies_next`)
+_VESSELS = _PACKAGING | {"bottle", "jar", "tub", "tin", "can", "box", "jug", "tube", "pot", "dish", "sachet"}
 #: nouns that are verbs as often ("you can use", "switch it off"): objects only after a determiner
 _ALSO_VERBS = frozenset({"can", "throw", "stand", "switch", "set", "press", "iron", "watch", "hook"})
 #: nouns that are also a thing's usual place ("put each item in its designated spot", "back in
@@ -105,6 +111,12 @@ REGIONAL_SENSES: tuple[tuple[frozenset[str], dict[str, str]], ...] = (
     (frozenset({"arvo", "jandal", "chilly bin", "servo", "chur", "kia ora"}),
      {"bench": "kitchen_counter"}),
 )
+#: words naming an animal kept at home, as the catalog's kinds for one are named ("pet bowl",
+#: "dog bowl", "cat bed") and as a text names the animal ("the cat flap", "walk the dog")
+ANIMAL_WORDS = frozenset({"pet", "dog", "cat", "puppy", "kitten", "rabbit", "hamster", "guinea",
+                          "budgie", "parrot", "tortoise", "ferret"})
+#: what an animal's bowl holds ("the water bowl", "a bowl of food": `animal_kind`)
+FEED_WORDS = frozenset({"water", "food", "feed", "drinking", "feeding", "kibble", "biscuit"})
 #: words too common to say which of several categories a bare noun means
 _NOT_CONTEXT = frozenset({"floor", "wall", "ceiling", "room"})
 #: "that is a ...", "it was a ...": a predicate noun of a thing already named (`predicate_noun`)
@@ -213,6 +225,16 @@ def _phrase_tables(catalog: Catalog) -> tuple[dict[tuple[str, ...], str], dict[s
                 continue  # a last-resort name: matched whole, lends no head noun
             # the head noun: the last word, or the one before "of" ("chest of drawers" is a chest)
             heads.setdefault(phrase[phrase.index("of") - 1] if "of" in phrase[1:] else phrase[-1], []).append(name)
+    # an English compound is written open, hyphenated or closed ("air con", "air-con", "aircon";
+    # "log book", "logbook"): a two-word catalog name (not a WordNet name) is also its closed
+    # form, after every name of its own, so a closed form that is a name keeps its kind
+    for name, cat in catalog.categories.items():
+        for text in (name, *_own(cat)):
+            phrase = words_of(text)
+            if len(phrase) == 2 and "of" not in phrase:
+                closed = singular("".join(phrase))
+                if (closed,) not in phrases and closed not in heads:
+                    phrases[(closed,)] = name
     return phrases, heads, max(len(p) for p in phrases)
 
 
@@ -306,14 +328,24 @@ class _Reader:
             return n, category
         word = words[i]
         nxt = words[i + 1] if i + 1 < len(words) else ""
-        if word in _PACKAGING and nxt == "of":
-            return 1, None
+        if word in _PACKAGING and nxt == "of" and self.contents_named(i + 2):
+            return 1, None  # "a bag of pet food": the food is the object
         if self.verb(i) or self.place_sense(i) or self.reading_label(i):
             return 1, None
         if word in self.senses:  # "left it out on the bench" in a New Zealand note: the worktop
             self.said_as[self.senses[word]] = word
             return 1, self.senses[word]
         return 1, self.bare_noun(i, category)
+
+    def contents_named(self, i: int) -> bool:
+        """Whether the words from `i`, after "<packaging> of", name a kind within three words
+        ("a bag of pet food", "a pack of the baby wipes"): then the contents are the object, as
+        the catalog keeps them; else the packaging is ("my carton of NS things", "a bag of old
+        clothes to give away": the carton, the bag)."""
+        words = self.text.words
+        end = next((k for k in range(i, min(i + 3, len(words))) if _BREAK.search(self.text.gaps[k]) and k > i),
+                   min(i + 3, len(words)))
+        return any(self.match(k)[1] is not None for k in range(i, end))
 
     def reading_label(self, i: int) -> bool:
         """Whether the one-word noun at word `i` labels a reading, no object: it opens its item
@@ -347,6 +379,8 @@ class _Reader:
         if self.text.words[i] in _ALSO_VERBS and not self.leads_noun(i, strict=True):
             return True
         raw, gaps = self.text.raw, self.text.gaps
+        if self.adjective_before(i):
+            return False  # "the acoustic curtain over the window": a noun after an article and adjective
         prev = raw[i - 1] if i > 0 and not gaps[i].strip() else ""
         nxt: list[str] = []
         for k in (i + 1, i + 2):  # the next words up to punctuation
@@ -356,6 +390,34 @@ class _Reader:
         if ARROW.search(gaps[i]) and nxt[:1] == ["with"] and verb_at(raw[i], "to", nxt):
             return True  # "counter dirty? -> wipe w/ sponge": after an arrow, an instruction's verb
         return verb_at(raw[i], prev, nxt)
+
+    def animal_kind(self, i: int, options: list[str]) -> str | None:
+        """The kind among `options` named for an animal (`ANIMAL_WORDS`: "pet bowl", "dog bowl",
+        "cat bowl") that the head noun at word `i` means when it holds an animal's food or water
+        (`FEED_WORDS` right before it, "the water bowl", or "of" one after it, "a bowl of food")
+        and the text names an animal kept at home ("the cat flap", "for the kitten") or a pet: a
+        water bowl where a cat lives is its bowl, a water bowl in a text naming none a plain bowl."""
+        words = self.text.words
+        fed = i > 0 and words[i - 1] in FEED_WORDS and not self.text.gaps[i].strip() or \
+            i + 2 < len(words) and words[i + 1] == "of" and words[i + 2] in FEED_WORDS
+        if not fed:
+            return None
+        if not ANIMAL_WORDS & set(words):
+            return None
+        animal = [c for c in options
+                  if {w for text in (c, *_own(self.catalog.categories[c])) for w in words_of(text)} & ANIMAL_WORDS]
+        return animal[0] if len(set(animal)) == 1 else None
+
+    def adjective_before(self, i: int) -> bool:
+        """Whether word `i` follows an article and one adjective (a word whose only part of speech
+        is an adjective, `lexicon.adjective_only`) with nothing between: "the acoustic curtain over
+        the window", "a wooden spoon in the drawer" are noun phrases, where a verb and its particle
+        ("curtain over the ...") would read the noun as an instruction. No imperative follows an
+        article and an adjective; a plural noun there may be a subject ("the kids mop up") and is
+        no adjective."""
+        words, gaps = self.text.words, self.text.gaps
+        return i >= 2 and words[i - 2] in _ARTICLES and not gaps[i].strip() and not gaps[i - 1].strip() \
+            and adjective_only(self.text.raw[i - 1])
 
     def bare_noun(self, i: int, exact: str | None) -> str | None:
         """The kind a one-word noun means: the kind last named that it ends; else the kind whose
@@ -376,6 +438,9 @@ class _Reader:
         named = [c for c in reversed(self.recent) if c in options and word in self.used.get(c, ())]
         if named:
             return named[0]
+        fed = self.animal_kind(i, options)
+        if fed is not None:
+            return fed  # "Biscuit's water bowl ... he comes in through the cat flap": the pet's bowl
         # the tail of a closed compound named before ("the workbench ... the bench", "the
         # armchair ... the chair"): the same thing, said short
         tail = [c for c in reversed(self.recent) if word in self.heads
@@ -398,7 +463,7 @@ class _Reader:
             candidates = [c for c in candidates if c is None or not self.plural_only(c, word)] or candidates
         said = self.sentence_context(i)
 
-        def score(category: str | None) -> tuple[bool, bool, int, bool, bool, int, int, bool]:
+        def score(category: str | None) -> tuple[bool, bool, int, bool, bool, int, int, bool, bool]:
             assert category is not None
             cat = self.catalog.categories[category]
             others = {w for text in (category, *_own(cat)) for w in words_of(text)} - {word}
@@ -410,6 +475,9 @@ class _Reader:
                     written != word and self.plural_named(category, word), category == exact,
                     len(others & self.context),
                     -len(rooms) if rooms & self.room_evidence() else -1000,
+                    # then a kind whose name says no use the text does not ("keep it on the rack,
+                    # the metal one" with no shoes, coats or drying said: the storage rack)
+                    not self.marked(category, word),
                     # last, the kind the word heads the name of, not only a synonym ("computer":
                     # a desktop computer, not a laptop's "notebook computer")
                     words_of(category)[-1] == word)
@@ -418,10 +486,16 @@ class _Reader:
 
     def modified(self, i: int) -> bool:
         """Whether word `i` follows a determiner and one modifier that names no kind and is no
-        verb ("on the props table", "the wooden box"): a noun phrase, as after the determiner
+        verb ("on the props table", "the wooden box"), or such a modifier opening its sentence or
+        list item ("* fly spray lives on that shelf"): a noun phrase, as after the determiner
         alone (a head noun of several kinds is then one of them, `bare_noun`)."""
         words, gaps = self.text.words, self.text.gaps
-        if i < 2 or words[i - 2] not in _ARTICLES or gaps[i].strip() or gaps[i - 1].strip():
+        if i < 1 or gaps[i].strip():
+            return False
+        # the modifier after an article, or opening its sentence or list item ("* fly spray lives
+        # on that shelf": a noun phrase as "the fly spray" is)
+        opens = i == 1 or bool(_SENTENCE_END.search(gaps[i - 1]) or _ITEM_BREAK.search(gaps[i - 1]))
+        if not (i >= 2 and words[i - 2] in _ARTICLES and not gaps[i - 1].strip() or opens):
             return False
         return self.match(i - 1)[1] is None and not self.verb(i - 1) and words[i - 1].isalpha() \
             and words[i - 1] not in _PREPOSITIONS and words[i - 1] not in _DETERMINERS
@@ -536,15 +610,24 @@ class _Reader:
         drawer): it names no kind by a name of its own (its kind was only a guess among the longer
         names it heads: "collection" of "essay collection", "table" of "bedside table"), and the next
         word, with nothing between, is a kind's own name used as a noun. A name of its own before
-        a generic head stays the object ("the vanity cabinet", `compound`)."""
+        a generic head stays the object ("the vanity cabinet", `compound`), unless it names a thing
+        one picks up ("the bread knife": a knife for bread, no bread)."""
         words = self.text.words
         j = i + n
-        if n != 1 or j >= len(words) or self.text.gaps[j].strip() or self.match(i)[1] is not None:
+        if n != 1 or j >= len(words) or self.text.gaps[j].strip():
             return False
         if words[j] in _PACKAGING or words[j] in TIME_HEADS:
             return False
         m, second = self.match(j)
-        return second is not None and not (m == 1 and (self.verb(j) or self.place_sense(j)))
+        if second is None or m == 1 and (self.verb(j) or self.place_sense(j)):
+            return False
+        first = self.match(i)[1]
+        # a thing one picks up, named by its own name, before a head noun of several kinds says
+        # what the head is for ("the bread knife" is a knife, no bread), where a
+        # piece of furniture before one is the thing ("the vanity cabinet", `compound`) and so is
+        # the contents before a vessel ("the detergent bottle", `_VESSELS`)
+        return first is None or m == 1 and words[j] not in _VESSELS and len(set(self.heads.get(words[j], []))) > 1 \
+            and self.catalog.categories[first].pickable and self.text.raw[i] == words[i]
 
     def color_before(self, i: int) -> int | None:
         """Where the colour of the noun phrase whose head is word `i` stands: right before it, or
@@ -625,14 +708,22 @@ class _Reader:
 
     def marked(self, category: str, word: str) -> bool:
         """Whether every name of `category` that `word` heads says a use the text does not: a
-        room's ("pantry rack": a pantry's) or another kind's, what it holds ("shoe rack"), with
-        that word nowhere in the text. A bare "rack" with shelves is then the unmarked one, the
-        "storage rack" (a utility shelf)."""
+        room's ("pantry rack": a pantry's) or another kind's, what it holds ("shoe rack"), or an
+        activity ("drying rack": drying, `lexicon.gerund_of`), with that word nowhere in the text.
+        A bare "rack" with shelves is then the unmarked one, the "storage rack" (a utility shelf);
+        so is a bare "rack" nothing else tells apart (`bare_noun`)."""
         said = set(self.text.words)
         names = [words_of(text) for text in (category, *_own(self.catalog.categories[category]))]
         headed = [n for n in names if len(n) > 1 and n[-1] == word]
-        return bool(headed) and all(any((known_room_type(w) is not None or (w,) in self.phrases) and w not in said
-                                        for w in n[:-1]) for n in headed)
+
+        def use(w: str) -> bool:
+            """A room, a kind, or an activity ("drying": a verb's -ing form) the text does not say."""
+            doing = gerund_of(w)
+            if doing is not None:
+                return doing not in said and w not in said
+            return (known_room_type(w) is not None or (w,) in self.phrases) and w not in said
+
+        return bool(headed) and all(any(use(w) for w in n[:-1]) for n in headed)
 
     def part_of_named(self, i: int, prev: str) -> bool:
         """Whether word `i` is a ranked part ("the bottom shelf", "the top level") of a piece of
