@@ -717,28 +717,28 @@ class _Reader:
             return False
         return can_hold(item, holder, relation)
 
+    def _misfit(self, f: Fact) -> bool:
+        """Whether `f` is an on/open state (`FITTED`) of a thing that cannot take it."""
+        return f.kind == "state" and f.key in FITTED and f.key not in self.capable.get(f.subject, FITTED)
+
+    def _can_take(self, f: Fact, roles: Iterable[str]) -> list[str]:
+        """The roles among `roles`, other than `f`'s subject, that can take `f`'s state, in order,
+        each once."""
+        return list(dict.fromkeys(r for r in roles if r != f.subject and f.key in self.capable.get(r, ())))
+
     def _fit(self, f: Fact) -> Fact:
         """A pronoun's state said of a thing that cannot take it ("hang the shirt in the wardrobe
         - open it first if its doors are shut") means the nearest thing that can."""
-        if f.key not in FITTED or f.key in self.capable.get(f.subject, FITTED):
-            return f
-        fitting = [r for r in reversed(self.recent) if r != f.subject and f.key in self.capable.get(r, ())]
-        if not fitting:
-            return f
-        r = fitting[0]
-        return replace(f, subject=r, condition=f"state({r}, {f.key})")
+        fitting = self._can_take(f, reversed(self.recent)) if self._misfit(f) else []
+        return _state_of(f, fitting[0]) if fitting else f
 
     def _fit_named(self, f: Fact, mentions: list[Mention]) -> Fact:
         """"Desk lamp over chart table left on last night": an on/open state read of a thing named
         in the clause that cannot take it (the table, the nearest noun) is the state of the one
         thing the clause names that can (the lamp); with none or several, as read."""
-        if f.kind != "state" or f.key not in FITTED or f.key in self.capable.get(f.subject, FITTED):
-            return f
-        fitting = list(dict.fromkeys(r for m in mentions if m.kind == "role" for r in m.roles
-                                     if r != f.subject and f.key in self.capable.get(r, ())))
-        if len(fitting) != 1:
-            return f
-        return replace(f, subject=fitting[0], condition=f"state({fitting[0]}, {f.key})")
+        fitting = self._can_take(f, (r for m in mentions if m.kind == "role" for r in m.roles)) \
+            if self._misfit(f) else []
+        return _state_of(f, fitting[0]) if len(fitting) == 1 else f
 
     def _already(self, words: list[str], mentions: list[Mention], negated: bool) -> list[Fact]:
         """`unless it is already there / on`: the condition is the previous instruction's result;
@@ -1238,6 +1238,11 @@ _HERE = frozenset({"there", "here"})
 FOUND_ONE = frozenset({"one", "ones", "any", "some"})
 
 
+def _state_of(f: Fact, role: str) -> Fact:
+    """The state fact `f` said of `role` instead of its subject."""
+    return replace(f, subject=role, condition=f"state({role}, {f.key})")
+
+
 def _anaphoric(text: str, facts: list[Fact]) -> bool:
     """A condition with no fact of its own whose words only point back ("if it is not" too; "should
     you find it there": an agent coming upon the thing, `DISCOVERY`)."""
@@ -1529,12 +1534,12 @@ def _read_heading(reader: _Reader, text: str) -> tuple[list[Fact], tuple[str, ..
 
 #: state flags only some kinds of thing take (a shirt does not open, a towel is not switched on),
 #: with the catalog capability that allows each
+FITTED_BY = {"open": "openable", "toggled_on": "toggleable"}
+FITTED = frozenset(FITTED_BY)
 #: prepositions with a sense of place only (not "on", "in": "left on", "plugged in"), after which
 #: a bare noun phrase is a place even without an article ("lamp over chart table", "kettle
 #: beside sink": `_pp_at`)
 SPATIAL_PREPS = frozenset({"over", "above", "below", "beneath", "beside", "behind", "under", "near"})
-FITTED_BY = {"open": "openable", "toggled_on": "toggleable"}
-FITTED = frozenset(FITTED_BY)
 
 
 def _capabilities(brief: Mapping[str, Any], catalog: Catalog) -> dict[str, frozenset[str]]:
@@ -1715,6 +1720,10 @@ def _there_named(reader: _Reader, said: str, clauses: list[Clause], sentence: in
     return said
 
 
+#: the conjunctions "make sure" may follow ("... is lovely but do make sure it's off"); after a
+#: condition earlier in the sentence (`_IN_CONDITION`) it is part of that condition's instruction
+#: and asks nothing of its own
+_ENSURE_JOINS = frozenset({"but", "and", "so"})
 #: "please make sure it's switched off before you leave", "ensure the curtains are open",
 #: "check the hair dryer is off" (a check with its "that" left out), "... is lovely but do make sure
 #: it's turned off" (after "but", "and" or "so", with an emphatic "do"): an
@@ -1722,17 +1731,14 @@ def _there_named(reader: _Reader, said: str, clauses: list[Clause], sentence: in
 #: off, make it switched off" does; the verbs that ask it and the states they ask of
 #: ("see that the TV is on?" points a thing out, `placement.PERCEIVE`; "make sure the book is on
 #: the shelf" says where it goes: no state before a place)
-_ENSURE = re.compile(r"(?P<lead>^\W*|\s[-\u2013\u2014]\s+|[;:,]\s*|\s(?:but|and|so)\s+)(?:please\s+)?(?:do\s+)?"
+_ENSURE = re.compile(rf"(?P<lead>^\W*|\s[-\u2013\u2014]\s+|[;:,]\s*|\s(?:{'|'.join(sorted(_ENSURE_JOINS))})\s+)(?:please\s+)?(?:do\s+)?"
                      r"(?:make sure|ensure|see to it|(?:double[- ]?)?check)\s+(?:that\s+)?(?P<subj>it|they|(?:the|your|my)\s+[a-z][a-z ]*?)"
                      r"(?:\s+(?P<be>is|are)|(?P<short>['\u2019](?:s|re)))\s+(?P<state>(?:switched|turned|left|shut|powered)\s+(?:off|on|open|down)"
                      r"|off|on|open|closed|shut|locked|unlocked)\b(?!\s+(?:the|a|an|its|their|your|my|top|to|of)\b)"
                      r"[^.;!?]*", re.I)
 
 
-#: the conjunctions "make sure" may follow ("... is lovely but do make sure it's off"); after a
-#: condition earlier in the sentence (`_IN_CONDITION`) it is part of that condition's instruction
-#: and asks nothing of its own
-_ENSURE_JOINS = frozenset({"but", "and", "so"})
+#: a cue of a condition before "make sure" in its sentence (`_ENSURE_JOINS`)
 _IN_CONDITION = re.compile(r"\b(?:if|in case|unless|when|whenever|should|once)\b", re.I)
 
 
@@ -2043,14 +2049,14 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     return TaskAnalysis(sentences, clauses, factors, groups, group_roles, set(lex.roles) - covered)
 
 
-#: relative pronouns: a noun phrase with a relative clause ("a plate that is wet") names a class
-#: the sentence gives a rule for, not a thing it places
 def _moved(clause: Clause, subject: str) -> bool:
     """Whether the clause says where `subject` goes (a location goal of it): a verbless list
     after an instruction that moves things (`_elaborates`) reads its places as goals."""
     return any(f.goal and f.kind == "location" and f.subject == subject for f in clause.facts)
 
 
+#: relative pronouns: a noun phrase with a relative clause ("a plate that is wet") names a class
+#: the sentence gives a rule for, not a thing it places
 RESTRICTIVE = frozenset({"that", "which", "who", "whichever", "whatever"})
 
 

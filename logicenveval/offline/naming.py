@@ -20,6 +20,7 @@ import re
 from collections import Counter
 from collections.abc import Iterable
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Any
 
 from logicenveval.domain.catalog import Catalog, Category, load_catalog, per_catalog
@@ -165,6 +166,12 @@ class _Text:
     words: list[str]
     raw: list[str]
     gaps: list[str]
+
+    @cached_property
+    def said(self) -> frozenset[str]:
+        """Every word of the text (singular forms), once: what the rules asking whether the text
+        says a word anywhere (`_Reader.marked`, `_Reader.animal_kind`) look in."""
+        return frozenset(self.words)
 
     def sentence_end(self, i: int) -> int:
         """Index of the first word of the next sentence after word `i`."""
@@ -402,7 +409,7 @@ class _Reader:
             i + 2 < len(words) and words[i + 1] == "of" and words[i + 2] in FEED_WORDS
         if not fed:
             return None
-        if not ANIMAL_WORDS & set(words):
+        if not ANIMAL_WORDS & self.text.said:
             return None
         animal = [c for c in options
                   if {w for text in (c, *_own(self.catalog.categories[c])) for w in words_of(text)} & ANIMAL_WORDS]
@@ -712,7 +719,7 @@ class _Reader:
         activity ("drying rack": drying, `lexicon.gerund_of`), with that word nowhere in the text.
         A bare "rack" with shelves is then the unmarked one, the "storage rack" (a utility shelf);
         so is a bare "rack" nothing else tells apart (`bare_noun`)."""
-        said = set(self.text.words)
+        said = self.text.said
         names = [words_of(text) for text in (category, *_own(self.catalog.categories[category]))]
         headed = [n for n in names if len(n) > 1 and n[-1] == word]
 
