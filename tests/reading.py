@@ -27,6 +27,21 @@ def factors(text: str, rooms: tuple[str, ...]) -> dict[str, set[str]]:
     return {f.id: set(f.values.values()) for f in analyse(brief(text, rooms), CATALOG).factors}
 
 
+def named(text: str, rooms: tuple[str, ...] = ("studio",)) -> dict[str, tuple[str, dict[str, str]]]:
+    """The objects the offline model names in `text`: name -> (category, attributes)."""
+    return {o["name"]: (o["category"], o["attributes"]) for o in name_objects(text, CATALOG, rooms=rooms)}
+
+
+def kinds(text: str, rooms: tuple[str, ...] = ("studio",)) -> set[str]:
+    """The categories of the objects the offline model names in `text`."""
+    return {category for category, _ in named(text, rooms).values()}
+
+
+def asks(text: str, rooms: tuple[str, ...], condition: str) -> bool:
+    """Whether some factor of `text` has `condition` and its negation among its values."""
+    return any({condition, f"not {condition}"} <= values for values in factors(text, rooms).values())
+
+
 def placed(text: str, rooms: tuple[str, ...]) -> set[str]:
     """The placements the text states (`on(x, y)`, `inside(x, y)`, `in_room(x, r)`)."""
     return set(described_placements(brief(text, rooms), CATALOG))

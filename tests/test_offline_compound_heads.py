@@ -6,18 +6,7 @@ another room with other objects; each test fails without its rule."""
 
 from __future__ import annotations
 
-from reading import CATALOG, factors, placed
-
-from logicenveval.offline.naming import name_objects
-
-
-def named(text: str, rooms: tuple[str, ...] = ("studio",)) -> dict[str, tuple[str, dict[str, str]]]:
-    return {o["name"]: (o["category"], o["attributes"]) for o in name_objects(text, CATALOG, rooms=rooms)}
-
-
-def kinds(text: str, rooms: tuple[str, ...] = ("studio",)) -> set[str]:
-    return {category for category, _ in named(text, rooms).values()}
-
+from reading import factors, kinds, named, placed
 
 # -- the head of a noun compound is its last noun --------------------------------------------------
 

@@ -6,14 +6,7 @@ each test fails without its rule."""
 
 from __future__ import annotations
 
-from reading import CATALOG
-
-from logicenveval.offline.naming import name_objects
-
-
-def kinds(text: str, rooms: tuple[str, ...] = ("studio",)) -> set[str]:
-    return {o["category"] for o in name_objects(text, CATALOG, rooms=rooms)}
-
+from reading import kinds
 
 # -- an English compound written closed ------------------------------------------------------------
 

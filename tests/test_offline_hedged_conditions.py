@@ -8,16 +8,13 @@ and on one written here in another room with other objects."""
 from __future__ import annotations
 
 import pytest
+from reading import asks as _asks
 from reading import factors as _factors
 from reading import placed as _placed
 
 from logicenveval.offline.analysis import _ensured
 from logicenveval.offline.implied import any_at, implied
 from logicenveval.offline.sentences import unquote
-
-
-def _asks(text: str, rooms: tuple[str, ...], condition: str) -> bool:
-    return any({condition, f"not {condition}"} <= values for values in _factors(text, rooms).values())
 
 
 @pytest.mark.parametrize(("text", "rooms", "condition"), [

@@ -7,23 +7,15 @@ development sentence and on one written here in another room with other objects.
 from __future__ import annotations
 
 import pytest
+from reading import asks as _asks
 from reading import brief as _brief
 from reading import factors as _factors
+from reading import named as _named
 from reading import placed as _placed
 
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.offline.analysis import _ensured, analyse
-from logicenveval.offline.naming import name_objects
 from logicenveval.offline.placement import described_placements
-
-
-def _named(text: str, rooms: tuple[str, ...]) -> dict[str, tuple[str, dict[str, str]]]:
-    return {o["name"]: (o["category"], o["attributes"]) for o in name_objects(text, load_catalog(), rooms)}
-
-
-def _asks(text: str, rooms: tuple[str, ...], condition: str) -> bool:
-    return any({condition, f"not {condition}"} <= values for values in _factors(text, rooms).values())
-
 
 # ----- naming: a regional word's sense, a dictionary synonym, "it's the red one" ------------------
 
