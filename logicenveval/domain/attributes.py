@@ -18,7 +18,7 @@ ALWAYS = frozenset({"purpose"})
 
 
 @per_catalog
-def _catalog_keys(catalog: Catalog) -> frozenset[str]:
+def catalog_attribute_keys(catalog: Catalog) -> frozenset[str]:
     """Every category's attribute domain keys, worked out once per catalog (the scorer asks for
     each environment it judges)."""
     return frozenset(key for category in catalog.categories.values() for key in category.attributes or {})
@@ -27,7 +27,7 @@ def _catalog_keys(catalog: Catalog) -> frozenset[str]:
 def attribute_keys(task: Task, catalog: Catalog) -> frozenset[str]:
     """The catalog's attribute domains (every category's), the task's roles' attributes and the
     keys its conditions (variables and constraints) read, and `ALWAYS`."""
-    keys = set(ALWAYS) | _catalog_keys(catalog)
+    keys = set(ALWAYS) | catalog_attribute_keys(catalog)
     for role in task.roles.values():
         keys |= set(role.attributes)
     texts = [text for var in task.variables.values() for text in var.values.values()]

@@ -49,7 +49,10 @@ _SPLIT = "=== user ==="
 #: temperature, a seed of its own) as structured literals bound to the task's vocabulary
 #: (`baselines.replies.IntentWire`), as IFG samples i ~ M(p) once per intent; under 4 one
 #: `ifg_intents` request asked for all k as free strings, and Qwen2.5-Coder-1.5B gave 1 of 8.
-PROTOCOL = 5
+#: 6: as 5, and a `name_objects` reply's category is retrieved by the object's name where the two
+#: contradict each other, its attribute keys no catalog domain knows dropped
+#: (`generators.brief.retrieve`); the requests are those of 5, the brief built from a reply differs.
+PROTOCOL = 6
 PROTOCOLS = (1, 2, 3, 4, 5)
 
 

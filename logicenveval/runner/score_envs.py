@@ -45,7 +45,7 @@ from logicenveval.runner.store import RunStore, text_digest
 from logicenveval.runner.unit import limited
 
 #: artefacts a run writes next to its environments; not EnvSpecs, so not scored
-ARTEFACTS = frozenset({"plan.json", "brief.json"})
+ARTEFACTS = frozenset({"plan.json", "brief.json", "retrieval.json"})
 
 
 class EvaluateConfig(BaseModel):

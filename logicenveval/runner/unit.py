@@ -16,7 +16,7 @@ import threading
 import time
 import traceback
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass, field
+from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any, Literal
 
@@ -45,7 +45,7 @@ from logicenveval.generators.base import (
     make_generator,
     unit_seed,
 )
-from logicenveval.generators.brief import BriefMode, generator_brief
+from logicenveval.generators.brief import BriefMode, NamedBrief, named_brief
 from logicenveval.generators.plugins import ensure_importable
 from logicenveval.limits import DEFAULTS, limit, pinned, raise_hint
 from logicenveval.llm.base import ChatModel, ChatRequest
@@ -442,16 +442,16 @@ def _run_unit(spec: UnitSpec) -> UnitRecord:
             layout_solver=spec.layout_solver,
         )
         with phases.phase("generation"):
-            briefs: list[TaskBrief] = []
+            briefs: list[NamedBrief] = []
 
             def make_brief() -> TaskBrief:
                 assert model is not None
-                briefs.append(generator_brief(task, spec.brief, model, seed=spec.seed, catalog=catalog))
-                return briefs[0]
+                briefs.append(named_brief(task, spec.brief, model, seed=spec.seed, catalog=catalog))
+                return briefs[0].brief
 
             result = call_generator(generator, make_brief, ctx, task_id=task.id,
                                     timeout=spec.unit_timeout)
-            brief = briefs[0]
+            brief, retrieved = briefs[0].brief, briefs[0].retrieved
     except GeneratorBroke as exc:
         shared_catalog()
         cause = exc.__context__ if exc.kind == "internal" else None
@@ -518,6 +518,9 @@ def _run_unit(spec: UnitSpec) -> UnitRecord:
         details.append(EnvDetail(env_id=env.env_id, render=render, traces=done.traces))
     if spec.brief != "roles":
         _write(run_dir, rel_dir / "brief.json", brief.model_dump_json(indent=2) + "\n", files)
+    if retrieved:  # what request protocol 6's retrieval changed in the name_objects reply
+        _write(run_dir, rel_dir / "retrieval.json",
+               json.dumps([asdict(r) for r in retrieved], indent=2) + "\n", files)
     if result.plan_text is not None:
         _write(run_dir, rel_dir / "plan.json", result.plan_text, files)
     error = None
