@@ -53,7 +53,7 @@ _SPLIT = "=== user ==="
 #: contradict each other, its attribute keys no catalog domain knows dropped
 #: (`generators.brief.retrieve`); the requests are those of 5, the brief built from a reply differs.
 PROTOCOL = 6
-PROTOCOLS = (1, 2, 3, 4, 5)
+PROTOCOLS = (1, 2, 3, 4, 5, 6)
 
 
 def protocol_of(model: Any) -> int:
