@@ -62,6 +62,12 @@ prints LogCov / SceVR / FauDR for each, then per task:
   US note) and eight new tasks in rooms none of the sets above use (a gliding club's checklist, an
   aunty's WhatsApp message, a teacher's cover notes, a radio log, a Discord message, a phone
   message slip, a note written as a prescription, a pirate note). Unseen until measured;
+- `dev10 reworded` and `dev10 new`: tests/data/reader_dev10/ — the tenth development set, written
+  while dev 9 was being measured: one rewording each of 4 built-in descriptions neither dev 8 nor
+  dev 9 rewords (a horoscope column, a TV weather forecast, a Cockney note with rhyming slang,
+  Shakespearean English) and eight new tasks in rooms none of the sets above use (a bug report, a
+  Jamaican Patois note, a sports commentary, a Taglish text, a bedtime story, a lab protocol, a
+  surfer's note, an automated job email with unfilled mail-merge fields). Unseen until measured;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -78,7 +84,7 @@ like-for-like gap.
 Every run is computed afresh (`fresh=True`: a stored unit is never reused, since the run's
 fingerprint does not cover the reader's code) with the offline model's reply cache off.
 
-    python benchmarks/reader_generalisation.py            # all twenty-two sets (~3-6 min on 2 cores)
+    python benchmarks/reader_generalisation.py            # all twenty-four sets (~3-6 min on 2 cores)
     python benchmarks/reader_generalisation.py --smoke    # two tasks per set (~1 min)
     python benchmarks/reader_generalisation.py --why      # and why each task lost environments
     python benchmarks/reader_generalisation.py --dev-only # without the held-out sets (for tuning)
@@ -99,9 +105,9 @@ earlier `--json` file, a fall marked `FALL`, and exits 1 when any task fell.
 Last line: `reader_generalisation built_in=<LogCov>/<SceVR>/<FauDR> reworded=... new=...
 dev2_new=... dev4_reworded=... dev4_new=... dev3_reworded=... dev3_new=... dev5_reworded=...
 dev5_new=... dev6_reworded=... dev6_new=... dev7_reworded=... dev7_new=... dev8_reworded=...
-dev8_new=... dev9_reworded=... dev9_new=... held_out_reworded=...
-held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the first
-eighteen only).
+dev8_new=... dev9_reworded=... dev9_new=... dev10_reworded=... dev10_new=...
+held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with
+`--dev-only`, the first twenty only).
 """
 
 from __future__ import annotations
@@ -128,6 +134,7 @@ DEV6 = ROOT / "tests" / "data" / "reader_dev6"
 DEV7 = ROOT / "tests" / "data" / "reader_dev7"
 DEV8 = ROOT / "tests" / "data" / "reader_dev8"
 DEV9 = ROOT / "tests" / "data" / "reader_dev9"
+DEV10 = ROOT / "tests" / "data" / "reader_dev10"
 HOLDOUT2 = ROOT / "tests" / "data" / "reader_holdout2"
 #: (row name, tasks folder; None = the built-in tasks)
 SETS: tuple[tuple[str, Path | None], ...] = (
@@ -140,6 +147,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
     ("dev7 reworded", DEV7 / "tasks_reworded"), ("dev7 new", DEV7 / "tasks_new"),
     ("dev8 reworded", DEV8 / "tasks_reworded"), ("dev8 new", DEV8 / "tasks_new"),
     ("dev9 reworded", DEV9 / "tasks_reworded"), ("dev9 new", DEV9 / "tasks_new"),
+    ("dev10 reworded", DEV10 / "tasks_reworded"), ("dev10 new", DEV10 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
     ("held-out2 reworded", HOLDOUT2 / "tasks_reworded"), ("held-out2 new", HOLDOUT2 / "tasks_new"),
 )

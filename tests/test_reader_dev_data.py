@@ -102,7 +102,7 @@ def test_the_benchmarks_compare_lists_every_moved_task_and_counts_the_falls() ->
 
     old = {"per_task": {"new": {"a": fig(1, 1, 1), "b": fig(0.5, 1, 0.5), "c": fig(1, 1, 1)}}}
     new = {"per_task": {"new": {"a": fig(1, 0.5, 1), "b": fig(1, 1, 0.5), "c": fig(1, 1, 1)},
-                        "dev9 new": {"d": fig(0, 0, 0)}}}
+                        "dev10 new": {"d": fig(0, 0, 0)}}}
     lines, fell = bench.compare(old, new)
     assert fell == 1
     assert [line.split()[:3] for line in lines] == [["FALL", "new", "a"], ["gain", "new", "b"]]
