@@ -8,9 +8,9 @@ name is mapped to a key exactly once, when an environment enters the harness
 
 1. The *forms* of the name, in order: the name itself, normalised (case, spaces, dashes,
    CamelCase and snake_case are one: `CoffeeTable` = `coffee table` = `coffee_table`, compared
-   without underscores so `toybox` = `toy_box`); its singulars (last word: irregular plurals such
-   as `knives`, then `-ies` → `-y`, `-ves` → `-f`/`-fe`, `-es`, `-s`; then every word); its
-   plurals (`key` → `keys`, for catalog keys that are plural).
+   without underscores so `toybox` = `toy_box`); its singulars by the lemmatiser (`domain.lemmas`:
+   the last word's noun lemmas, `knives` → `knife`, `glasses` → `glass`, `glasses`; then every
+   word's); its plurals (`key` → `keys`, for catalog keys that are plural).
 2. For the first form that names anything: a catalog key, else a catalog synonym, else an
    AI2-THOR object type (`ai2thor_type`).
 3. Else the longest tail of the name's words that names a category (`red toy box` ->
@@ -35,17 +35,11 @@ from typing import Literal
 from pydantic import BaseModel, ConfigDict, Field
 
 from logicenveval.domain.catalog import Catalog, per_catalog
+from logicenveval.domain.lemmas import noun_lemma, noun_lemmas, noun_plurals
 from logicenveval.model.envspec import EnvSpec
 
 How = Literal["key", "synonym", "ai2thor_type"]
 _RANK: dict[How, int] = {"key": 0, "synonym": 1, "ai2thor_type": 2}
-
-#: plural last words English forms no suffix rule gets right
-IRREGULAR = {"knives": "knife", "shelves": "shelf", "leaves": "leaf", "loaves": "loaf",
-             "halves": "half", "wolves": "wolf", "mice": "mouse", "children": "child",
-             "feet": "foot", "teeth": "tooth", "people": "person", "men": "man",
-             "women": "woman", "geese": "goose", "dice": "die", "cacti": "cactus"}
-
 
 @lru_cache(maxsize=8192)  # pure, and called per object and role on every environment judged
 def snake(text: str) -> str:
@@ -58,36 +52,10 @@ def _squash(key: str) -> str:
     return key.replace("_", "")
 
 
-def _singulars(word: str) -> list[str]:
-    out = []
-    if word in IRREGULAR:
-        out.append(IRREGULAR[word])
-    if word.endswith("ies") and len(word) > 4:
-        out.append(word[:-3] + "y")
-    if word.endswith("ves") and len(word) > 4:
-        out += [word[:-3] + "f", word[:-3] + "fe"]
-    if word.endswith("es") and len(word) > 3:
-        out.append(word[:-2])
-    if word.endswith("s") and not word.endswith("ss") and len(word) > 2:
-        out.append(word[:-1])
-    return out
-
-
 @lru_cache(maxsize=8192)
 def singular(name: str) -> str:
-    """The likeliest singular of every word: `toy_boxes` -> `toy_box`, `shoes` -> `shoe`."""
-    out = []
-    for word in snake(name).split("_"):
-        if word in IRREGULAR:
-            word = IRREGULAR[word]
-        elif word.endswith("ies") and len(word) > 4:
-            word = word[:-3] + "y"
-        elif re.search(r"(s|x|z|ch|sh)es$", word):
-            word = word[:-2]
-        elif word.endswith("s") and not word.endswith("ss") and len(word) > 2:
-            word = word[:-1]
-        out.append(word)
-    return "_".join(out)
+    """The noun lemma of every word (`domain.lemmas`): `toy_boxes` -> `toy_box`, `shoes` -> `shoe`."""
+    return "_".join(noun_lemma(w) for w in snake(name).split("_"))
 
 
 def forms(name: str) -> list[str]:
@@ -96,11 +64,9 @@ def forms(name: str) -> list[str]:
     if not key:
         return []
     *head, last = key.split("_")
-    out = [key, "_".join([*head, singular(last)])]
-    out += ["_".join([*head, s]) for s in _singulars(last)]
-    out.append(singular(key))
+    out = [key, *("_".join([*head, s]) for s in noun_lemmas(last)), singular(key)]
     if not key.endswith("s"):
-        out += [key + "s", key + "es"]
+        out += ["_".join([*head, p]) for p in noun_plurals(last)]
     return list(dict.fromkeys(out))
 
 

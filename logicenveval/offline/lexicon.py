@@ -9,12 +9,12 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
-from functools import lru_cache
 from typing import Any
 
 from lemminflect import getAllLemmas, getLemma
 
 from logicenveval.domain.catalog import Catalog, per_catalog
+from logicenveval.domain.lemmas import noun_lemma as singular
 from logicenveval.offline.wordnet import is_wordnet_name
 
 WORD = re.compile(r"[a-z0-9]+(?:'[a-z]+)?")
@@ -46,28 +46,6 @@ _SHARED_LEADS = frozenset({"the", "my", "our", "your", "their", "both", "a", "so
 COLOR_WORDS = frozenset(
     ["red", "blue", "green", "yellow", "white", "black", "grey", "gray", "brown", "pink", "purple", "orange", "beige", "silver", "gold"]
 )
-
-
-#: the plural of a two-letter initialism: two consonants and an "s" ("cds", "tvs")
-_INITIALISM_PLURAL = re.compile(r"[b-df-hj-np-tv-z]{2}s")
-
-
-@lru_cache(maxsize=16384)
-def singular(word: str) -> str:
-    """The noun lemma of `word`: lemminflect's dictionary (irregular plurals: shelves, knives,
-    children; of two, the one that is not a verb's: leaves -> leaf), then its rules for a word it does not know that ends in -s ("tins"). Words of
-    three letters or fewer ("was", "has", "its") stay as written, but for the plural of a
-    two-letter initialism ("cds", "tvs", "pcs": no vowel before the "s"), which is its letters."""
-    if len(word) <= 3:
-        return word[:2] if _INITIALISM_PLURAL.fullmatch(word) else word
-    known = getAllLemmas(word, upos="NOUN").get("NOUN")
-    if known:
-        # "leaves": the noun "leaf", not the verb "leave" (read as an action elsewhere)
-        verbs = set(getAllLemmas(word, upos="VERB").get("VERB", ()))
-        return str(next((lemma for lemma in known if lemma not in verbs and lemma != word), known[0]))
-    if word.endswith("s") and not word.endswith("ss"):
-        return str(getLemma(word, upos="NOUN")[0])
-    return word
 
 
 def verb_form(word: str) -> bool:
