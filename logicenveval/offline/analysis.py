@@ -669,7 +669,9 @@ class _Reader:
         if "respectively" in words:
             facts = _respectively(facts)
         said_by_pronoun = {r for m in mentions if m.kind == "pronoun" for r in m.roles}
-        facts = [self._fit(f) if f.kind == "state" and f.subject in said_by_pronoun else self._fit_named(f, mentions)
+        facts = [self._fit(f) if f.kind == "state" and f.subject in said_by_pronoun
+                 else self._fit_place(f) if f.kind == "location" and f.subject in said_by_pronoun
+                 else self._fit_named(f, mentions)
                  for f in facts if self._holds(f)]
         facts += self._back_home(words, mentions, facts)
         goals = [f for f in facts if f.kind == "location" and f.goal]
@@ -731,6 +733,22 @@ class _Reader:
         - open it first if its doors are shut") means the nearest thing that can."""
         fitting = self._can_take(f, reversed(self.recent)) if self._misfit(f) else []
         return _state_of(f, fitting[0]) if fitting else f
+
+    def _fit_place(self, f: Fact) -> Fact:
+        """A pronoun's place on the floor said of a piece of furniture that stands nowhere else (a
+        desk, a wardrobe: not carried, placed on the floor only) means the nearest thing named
+        before that is carried and may lie there ("Tech log: on the briefing desk. It's the blue
+        binder - if it's been knocked onto the floor, ...": the binder, not the desk; "the towel
+        hangs by the wardrobe; if it has fallen on the floor, ..."): of the furniture the question
+        has one answer, and the situations it plans cannot be built."""
+        kind = self.kinds.get(f.subject)
+        if f.condition != f"on({f.subject}, floor)" or kind is None or kind.pickable or kind.placement != ["floor"]:
+            return f
+        fitting = [r for r in reversed(self.recent) if r != f.subject and (k := self.kinds.get(r)) is not None
+                   and k.pickable]
+        if not fitting:
+            return f
+        return replace(f, subject=fitting[0], condition=f"on({fitting[0]}, floor)")
 
     def _fit_named(self, f: Fact, mentions: list[Mention]) -> Fact:
         """"Desk lamp over chart table left on last night": an on/open state read of a thing named

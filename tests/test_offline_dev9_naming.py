@@ -1,0 +1,22 @@
+"""Naming and placement rules from the ninth development set (docs/reader.md, "From dev 9"): what the
+reader names a thing by and where it places it. Each rule is a kind of sentence, tried on a
+development sentence and on sentences written for the test in other rooms with other objects;
+each test fails without its rule."""
+
+from __future__ import annotations
+
+from reading import asks
+
+# -- a pronoun's place on the floor is a carried thing's, not a piece of furniture's ----------------
+
+
+def test_a_pronouns_floor_place_is_the_nearest_carried_things() -> None:
+    # dev 9 (a gliding club's checklist): "it" after "ON BRIEFING DESK. It's the blue binder"
+    text = ("4. Tech log ............ ON BRIEFING DESK. It's the blue binder - if it's been knocked onto the "
+            "floor again, pick it up and put it back on the desk")
+    assert asks(text, ("clubhouse",), "on(blue_folder, floor)")
+    assert not asks(text, ("clubhouse",), "on(desk, floor)")
+    # written for the test: another room, a wardrobe named last
+    text = "The scarf usually hangs by the wardrobe. If it has slipped onto the floor, hang it up again."
+    assert asks(text, ("bedroom",), "on(scarf, floor)")
+    assert not asks(text, ("bedroom",), "on(wardrobe, floor)")
