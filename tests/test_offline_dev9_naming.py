@@ -20,3 +20,18 @@ def test_a_pronouns_floor_place_is_the_nearest_carried_things() -> None:
     text = "The scarf usually hangs by the wardrobe. If it has slipped onto the floor, hang it up again."
     assert asks(text, ("bedroom",), "on(scarf, floor)")
     assert not asks(text, ("bedroom",), "on(wardrobe, floor)")
+
+
+# -- "if there is one": a carried thing that holds things is a thing too ----------------------------
+
+
+def test_if_there_is_one_after_a_carried_holder_is_that_holder() -> None:
+    # dev 8 (a caretaker's log): a lunch box, a ceiling fan named before it
+    text = ("- ceiling fan. Hale leaves it going every day. If on -> off.\n  - Lunch box left on the floor most "
+            "days. If there is one, into the lost property box (big cardboard box by the door, flaps fold shut).")
+    assert asks(text, ("classroom",), "exists(lunch_box)")
+    assert not asks(text, ("classroom",), "exists(ceiling_fan)")
+    # written for the test: a bucket, a radiator named before it
+    text = "The radiator stays on. A bucket is often left on the landing. If there is one, carry it down to the kitchen."
+    assert asks(text, ("hallway",), "exists(bucket)")
+    assert not asks(text, ("hallway",), "exists(radiator)")

@@ -395,6 +395,11 @@ class _Reader:
         #: the words of the clause being read where a thing's name starts (`_state`)
         self.starts: frozenset[int] = frozenset()
 
+    def _carried(self, role: str) -> bool:
+        """Whether the role's kind is carried about (`Category.pickable`)."""
+        kind = self.kinds.get(role)
+        return kind is not None and kind.pickable
+
     def _recent_first(self, m: Mention) -> Mention:
         """An ambiguous singular mention (`the rack`) means the candidate mentioned last."""
         if m.kind != "role" or len(m.roles) < 2:
@@ -492,7 +497,10 @@ class _Reader:
                 # last, not the topic,
                 # unless the clause already spoke of something ("if it is elsewhere or there is none")
                 prior = [p for p in found if p.kind == "pronoun" and p.start < i]
-                things = [r for r in self.recent if r not in self.lex.holders] or self.recent
+                # (a thing carried about that holds things is one too: "Lunch box left on the floor.
+                # If there is one, into the lost property box" asks of the lunch box, not of a
+                # ceiling fan named before it)
+                things = [r for r in self.recent if r not in self.lex.holders or self._carried(r)] or self.recent
                 found.append(Mention(prior[-1].roles if prior else (things[-1],), i, i + 1, "pronoun"))
             elif w in ("they", "them") and self.topic_kind == "role" and not self.plural & set(self.topic) \
                     and not self.coordinated and any(r in self.plural for r in self.recent):
