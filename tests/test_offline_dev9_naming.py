@@ -5,7 +5,7 @@ each test fails without its rule."""
 
 from __future__ import annotations
 
-from reading import asks
+from reading import asks, factors
 
 # -- a pronoun's place on the floor is a carried thing's, not a piece of furniture's ----------------
 
@@ -20,6 +20,26 @@ def test_a_pronouns_floor_place_is_the_nearest_carried_things() -> None:
     text = "The scarf usually hangs by the wardrobe. If it has slipped onto the floor, hang it up again."
     assert asks(text, ("bedroom",), "on(scarf, floor)")
     assert not asks(text, ("bedroom",), "on(wardrobe, floor)")
+
+
+# -- "if it's there": whether the pronoun's thing is there, not a holder named after ---------------
+
+
+def test_if_its_there_asks_for_the_pronouns_thing_not_the_holder_after() -> None:
+    # dev 9 (a radio log): the wallet, repeated in clipped form
+    text = ("Three, somebody's reported a wallet left in there. If you find it, put it in the lost property basket "
+            "by the entrance. Over.\nCONTROL: Wallet. If it's there, lost property basket, by the entrance. Over.")
+    got = factors(text, ("hospitality_tent",))
+    assert {"exists(wallet)", "not exists(wallet)"} in got.values()
+    assert not any("exists(basket)" in values for values in got.values())
+    # written for the test: a torch, a drawer named after
+    text = "Somebody left a torch in the shed. Torch. If it's there, top drawer of the workbench."
+    assert not any("exists(drawer)" in values for values in factors(text, ("garage",)).values())
+
+
+def test_the_existential_there_still_asks_whether_a_thing_is_there() -> None:
+    assert asks("If there is a cloth on the counter, wipe the table with it.", ("kitchen",), "exists(cloth)") \
+        or asks("If there is a cloth on the counter, wipe the table with it.", ("kitchen",), "on(cloth, kitchen_counter)")
 
 
 # -- "if there is one": a carried thing that holds things is a thing too ----------------------------

@@ -625,7 +625,7 @@ class _Reader:
                 break
             # "there may or may not be a loaf", "if we still have one", "if one is still to be had"
             before = words[max(0, m.start - 8) : m.start]
-            if "there" in before or "no" in before[-2:] or _WE_HAVE.search(" ".join(before[-6:])) or (
+            if _existential(before) or "no" in before[-2:] or _WE_HAVE.search(" ".join(before[-6:])) or (
                     m.start == 0 and m.kind == "pronoun" and words[0] == "one"):
                 facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
                 break
@@ -1439,7 +1439,35 @@ def _available(reader: _Reader, text: str) -> list[Fact]:
     toks = tokens(low[: cue.start()] if cue else low)
     words = [w for w, _, _ in toks]
     things = [m for m in reader.lex.find_mentions(toks) if m.kind == "role" and not _placed(words, m)]
-    return [Fact(r, f"exists({r})", "exists") for r in things[-1].roles] if things else []
+    if things:
+        return [Fact(r, f"exists({r})", "exists") for r in things[-1].roles]
+    after = [w for w, _, _ in tokens(low[cue.end():])] if cue else []
+    if not words and after[:1] in (["it"], ["they"]) and reader.topic_kind == "role":
+        # "Wallet. If it's there, lost property basket": a cue opening the text with a pronoun
+        # subject asks whether the thing the pronoun speaks of is there at all
+        return [Fact(r, f"exists({r})", "exists") for r in reader.topic]
+    return []
+
+
+#: a subject before a form of "be": "there" right after them is a place ("it's there", "they are
+#: still there"), not the existential "there" ("there is a towel", "is there a towel")
+_THERE_SUBJECTS_BE = frozenset({"it", "they", "he", "she", "this", "that"})
+
+
+def _existential(before: list[str]) -> bool:
+    """Whether `before` holds an existential "there" ("there may or may not be a loaf", "is there
+    a cloth"), not the adverb of place after a subject and its verb ("if it is still there, the
+    basket": the basket is no thing whose presence is asked)."""
+    for k, w in enumerate(before):
+        if w != "there":
+            continue
+        j = k - 1
+        while j >= 0 and before[j] in ("still", "already", "not"):
+            j -= 1
+        if j >= 1 and before[j] in _BE_WORDS and before[j - 1] in _THERE_SUBJECTS_BE:
+            continue
+        return True
+    return False
 
 
 #: verbs of carrying a thing somewhere, whose list after a colon says where each kind of it goes
