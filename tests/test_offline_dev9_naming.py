@@ -5,7 +5,7 @@ each test fails without its rule."""
 
 from __future__ import annotations
 
-from reading import asks, factors
+from reading import CATALOG, asks, brief, factors
 
 # -- a pronoun's place on the floor is a carried thing's, not a piece of furniture's ----------------
 
@@ -55,3 +55,21 @@ def test_if_there_is_one_after_a_carried_holder_is_that_holder() -> None:
     text = "The radiator stays on. A bucket is often left on the landing. If there is one, carry it down to the kitchen."
     assert asks(text, ("hallway",), "exists(bucket)")
     assert not asks(text, ("hallway",), "exists(radiator)")
+
+
+# -- "X in there is Y": a there after a preposition is a place, not the existential there ----------
+
+
+def test_a_state_said_of_a_thing_in_there_is_the_things() -> None:
+    # dev 8's sentence "the ceiling fan in there spoil already" was read as "there is": a scene
+    from logicenveval.offline.analysis import analyse
+    text = "the ceiling fan in there spoil already, no need to on it"
+    roles = [c.role for c in analyse(brief(text, ("household_shelter",)), CATALOG).clauses]
+    assert "scene" not in roles
+    # written for the test: two rooms, two things
+    for text, rooms, fact in [("The ceiling fan in there is broken, so leave the switch alone.", ("bedroom",),
+                               "state(ceiling_fan, broken)"),
+                              ("Check the shed. The kettle in there is broken.", ("garage",),
+                               "state(kettle, broken)")]:
+        facts = {f.condition for c in analyse(brief(text, rooms), CATALOG).clauses for f in c.facts}
+        assert fact in facts

@@ -1068,6 +1068,8 @@ class _Reader:
         ("Desk lamp over chart table left on": the state is the lamp's)."""
         if words[k] not in PREP_ON | PREP_IN | {"at", "by", "near", "under", "next"} | SPATIAL_PREPS:
             return 0
+        if words[k + 1 : k + 2] in (["there"], ["here"]):
+            return k + 2  # "the ceiling fan in there is broken", "the mop out here is wet": the state is the fan's
         toks = [(w, 0, 0) for w in words[k + 1 : k + 6]]
         for m in self.lex.find_mentions(toks):
             if all(w in ARTICLES for w in words[k + 1 : k + 1 + m.start]):
