@@ -5,7 +5,7 @@ each test fails without its rule."""
 
 from __future__ import annotations
 
-from reading import CATALOG, asks, brief, factors
+from reading import CATALOG, asks, brief, factors, named
 
 # -- a pronoun's place on the floor is a carried thing's, not a piece of furniture's ----------------
 
@@ -73,3 +73,18 @@ def test_a_state_said_of_a_thing_in_there_is_the_things() -> None:
                                "state(kettle, broken)")]:
         facts = {f.condition for c in analyse(brief(text, rooms), CATALOG).clauses for f in c.facts}
         assert fact in facts
+
+
+# -- "it's the spare" says which one a thing is ------------------------------------------------------
+
+
+def test_it_is_the_spare_says_which_one_the_thing_is() -> None:
+    # dev 9 (a telephone message slip): one hard hat, the spare
+    assert named("He also chucked a hard hat on the floor by the heater; if it's still on the floor hang it on the "
+                 "hook behind the door (it's the spare, not his).", ("site_office",))["hat"][0] == "hat"
+    assert "spare_hat" not in named("He chucked a hard hat on the floor (it's the spare, not his).", ("site_office",))
+    # written for the test
+    got = named("There is a torch on the shelf by the door. It is the spare, so leave it there.", ("garage",))
+    assert [n for n, (k, _) in got.items() if k == "flashlight"] == ["flashlight"]
+    # "use the spare" still names a second one
+    assert "spare_kettle" in named("The kettle is broken; use the spare from the cupboard.", ("kitchen",))

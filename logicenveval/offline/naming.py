@@ -991,6 +991,15 @@ class _Reader:
         start = self.text.sentence_start(i)
         return any(self.kind_at(j)[1] is not None for j in range(start, k - 2))
 
+    def says_which(self, i: int) -> bool:
+        """Whether word `i` ("spare") is the predicate of "it is the spare", "that's a spare one"
+        said right after a thing: it says which one that thing is (the spare, not the one in use),
+        no second object of its kind. "Take a spare from the drawer" still names one."""
+        words = self.text.words
+        if i < 3 or words[i - 2] not in _COPULAS or words[i - 3] not in _POINTERS:
+            return False
+        return i + 1 == len(words) or words[i + 1] == "one" or self.match(i + 1)[1] is None
+
     def kind_value(self, i: int, n: int, prev: str) -> bool:
         """Whether the bare plural at word `i` (`n` words: "dolls", "toy cars"), or an indefinite
         singular set against "any other <kind>", is a class of a kind named before it, one of the values of its `kind` attribute (`KIND_ATTRIBUTES`; a toy
@@ -1092,6 +1101,9 @@ class _Reader:
                 # door (the grey plastic one)": saying which one the thing named last is gives its colour
                 self.colors[self.recent[-1]] = color
                 i += 1
+                continue
+            if words[i] in SPARE_WORDS and prev in _DETERMINERS and self.says_which(i):
+                i += 1  # "a hard hat on the floor (it's the spare, not his)": which one it is, no other
                 continue
             if words[i] in SPARE_WORDS and prev in _DETERMINERS and (
                     i + 1 == len(words) or words[i + 1] not in self.heads and self.match(i + 1)[1] is None):
