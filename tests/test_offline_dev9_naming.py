@@ -5,7 +5,7 @@ each test fails without its rule."""
 
 from __future__ import annotations
 
-from reading import CATALOG, asks, brief, factors, named
+from reading import CATALOG, asks, brief, factors, kinds, named
 
 # -- a pronoun's place on the floor is a carried thing's, not a piece of furniture's ----------------
 
@@ -88,3 +88,20 @@ def test_it_is_the_spare_says_which_one_the_thing_is() -> None:
     assert [n for n, (k, _) in got.items() if k == "flashlight"] == ["flashlight"]
     # "use the spare" still names a second one
     assert "spare_kettle" in named("The kettle is broken; use the spare from the cupboard.", ("kitchen",))
+
+
+# -- paper as a material -----------------------------------------------------------------------------
+
+
+def test_paper_as_a_material_is_a_sheet_not_a_newspaper() -> None:
+    # dev 9 (a telephone message slip; a pirate note): two texts
+    assert "document" in kinds("The paper drawings for Plot 7 are in the filing cabinet, leave them there.",
+                               ("site_office",))
+    assert "document" in kinds("The treasure map be on the little side table. 'Tis only paper, so leave it be.",
+                               ("wendy_house",))
+    # written for the test
+    assert "document" in kinds("The recipe card is on the counter. It is only paper, keep it dry.", ("kitchen",))
+    # with a determiner or an owner, the paper is a newspaper
+    assert "newspaper" in kinds("The paper is on the doormat; put it on the kitchen table.", ("hallway",))
+    assert "newspaper" in kinds("Dad's paper goes on the armchair.", ("living_room",))
+    assert kinds("If there is no sponge, use a paper towel.", ("kitchen",)) == {"sponge", "paper_towel"}

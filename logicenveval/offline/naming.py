@@ -23,6 +23,8 @@ from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Any
 
+from lemminflect import getAllLemmas
+
 from logicenveval.domain.catalog import Catalog, Category, load_catalog, per_catalog
 from logicenveval.llm.base import ChatRequest
 from logicenveval.model.rooms import known_room_type, room_type_of
@@ -87,6 +89,12 @@ _PACKAGING = frozenset({"bag", "pack", "packet", "carton"})
 _VESSELS = _PACKAGING | {"bottle", "jar", "tub", "tin", "can", "box", "jug", "tube", "pot", "dish", "sachet"}
 #: nouns that are verbs as often ("you can use", "switch it off"): objects only after a determiner
 _ALSO_VERBS = frozenset({"can", "throw", "stand", "switch", "set", "press", "iron", "watch", "hook"})
+#: words whose count sense the catalog names ("the paper", "today's paper": a newspaper) and whose
+#: mass sense is a material (WordNet's first sense of "paper": "a material made of cellulose
+#: pulp"): said without a determiner ("'Tis only paper", "Paper: into the recycling") or as the
+#: material of a plural noun that names no kind ("the paper drawings", "paper copies"), the thing
+#: is a sheet of it, the kind given here (`_Reader.material`)
+_MATERIAL_SENSES = {"paper": "document"}
 #: nouns that are also a thing's usual place ("put each item in its designated spot", "back in
 #: their spot"): after a possessive, with at most one word between, they name a place, no object
 _PLACE_SENSES = frozenset({"spot"})
@@ -339,6 +347,8 @@ class _Reader:
             return 1, None  # "a bag of pet food": the food is the object
         if self.verb(i) or self.place_sense(i) or self.reading_label(i):
             return 1, None
+        if self.material(i):  # "'Tis only paper", "the paper drawings": sheets of it, no newspaper
+            return 1, _MATERIAL_SENSES[word]
         if word in self.senses:  # "left it out on the bench" in a New Zealand note: the worktop
             self.said_as[self.senses[word]] = word
             return 1, self.senses[word]
@@ -373,6 +383,23 @@ class _Reader:
             return False
         ends = k + 1 == len(words) or bool(_READING_END.match(gaps[k + 1]))
         return ends and (i == 0 or bool(_ITEM_BREAK.search(gaps[i]) or _SENTENCE_END.search(gaps[i])))
+
+    def material(self, i: int) -> bool:
+        """Whether the singular word at `i` is a material (`_MATERIAL_SENSES`) where it stands: with
+        no determiner, count or owner before it ("'Tis only paper"), or right before a plural noun
+        that names no kind ("The paper drawings for Plot 7": drawings on paper). "The paper is on
+        the mat", "Dad's paper" are newspapers."""
+        words, raw, gaps = self.text.words, self.text.raw, self.text.gaps
+        word = words[i]
+        if word not in _MATERIAL_SENSES or _MATERIAL_SENSES[word] not in self.catalog.categories or raw[i] != word:
+            return False
+        j = i + 1
+        if j < len(words) and not gaps[j].strip() and raw[j].isalpha() and raw[j] != words[j] \
+                and self.match(j)[1] is None and words[j] not in self.heads and not getAllLemmas(raw[j], upos="VERB"):
+            return True  # a plural noun naming no kind (and no verb's form) after it: what the paper is made into
+        prev = words[i - 1] if i > 0 and not _SENTENCE_END.search(gaps[i]) else ""
+        return prev not in _DETERMINERS and prev not in _COUNTS and prev not in self.possessors \
+            and not (j < len(words) and not gaps[j].strip() and (self.match(j)[1] is not None or words[j] in self.heads))
 
     def place_sense(self, i: int) -> bool:
         """Whether the one-word name at word `i` is a thing's usual place ("its designated spot",
