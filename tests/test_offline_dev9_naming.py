@@ -105,3 +105,18 @@ def test_paper_as_a_material_is_a_sheet_not_a_newspaper() -> None:
     assert "newspaper" in kinds("The paper is on the doormat; put it on the kitchen table.", ("hallway",))
     assert "newspaper" in kinds("Dad's paper goes on the armchair.", ("living_room",))
     assert kinds("If there is no sponge, use a paper towel.", ("kitchen",)) == {"sponge", "paper_towel"}
+
+
+# -- what goes in the laundry hamper is laundry --------------------------------------------------------
+
+
+def test_a_heading_put_into_a_laundry_container_is_laundry() -> None:
+    # dev 9 (a prescription note)
+    got = named("1. Standing lamp - if o/e still on, switch OFF. Stat.\n2. Used scrubs - if found on floor, into "
+                "the laundry hamper. PRN.", ("on_call_room",))
+    assert ("dirty_clothes", {}) in got.values()
+    # written for the test: another room, a laundry basket
+    got = named("Sweaty leggings: into the laundry basket, please. Trainers on the rack.", ("home_gym",))
+    assert ("dirty_clothes", {}) in got.values()
+    # a heading put elsewhere names nothing
+    assert "dirty_clothes" not in kinds("Sweaty leggings: onto the drying rack, please.", ("home_gym",))

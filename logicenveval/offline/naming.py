@@ -347,6 +347,9 @@ class _Reader:
             return 1, None  # "a bag of pet food": the food is the object
         if self.verb(i) or self.place_sense(i) or self.reading_label(i):
             return 1, None
+        if (laundry := self.laundry_heading(i)) is not None:
+            self.said_as[laundry] = word  # "Used scrubs - ... into the laundry hamper": laundry
+            return 1, laundry
         if self.material(i):  # "'Tis only paper", "the paper drawings": sheets of it, no newspaper
             return 1, _MATERIAL_SENSES[word]
         if word in self.senses:  # "left it out on the bench" in a New Zealand note: the worktop
@@ -383,6 +386,32 @@ class _Reader:
             return False
         ends = k + 1 == len(words) or bool(_READING_END.match(gaps[k + 1]))
         return ends and (i == 0 or bool(_ITEM_BREAK.search(gaps[i]) or _SENTENCE_END.search(gaps[i])))
+
+    def laundry_heading(self, i: int) -> str | None:
+        """The kind the word "laundry" names (the catalog's dirty clothes), when word `i` is the plural
+        head of a heading that names no kind ("2. Used scrubs - if found on floor, into the laundry
+        hamper", "Muddy kits: into the laundry basket") and its sentence puts it in or into a thing
+        named for laundry: what goes in the laundry hamper is laundry, whatever the garment."""
+        words, raw, gaps = self.text.words, self.text.raw, self.text.gaps
+        laundry = self.phrases.get(("laundry",))
+        if laundry is None or raw[i] == words[i] or words[i] in self.heads or self.match(i)[1] is not None \
+                or i + 1 >= len(words) or not _HEADING.search(gaps[i + 1]):
+            return None
+        start = self.text.sentence_start(i)
+        if i - start > 2 or any(self.match(k)[1] is not None or words[k] in _DETERMINERS or not words[k].isalpha()
+                                for k in range(start, i)):
+            return None
+        end = self.text.sentence_end(i)
+        for k in range(i + 1, end):
+            if words[k] not in ("in", "into"):
+                continue
+            j = k + 1
+            while j < end and words[j] in _ARTICLES:
+                j += 1
+            n, kind = self.match(j) if j < end else (1, None)
+            if kind is not None and kind != laundry and "laundry" in words[j:j + n]:
+                return laundry
+        return None
 
     def material(self, i: int) -> bool:
         """Whether the singular word at `i` is a material (`_MATERIAL_SENSES`) where it stands: with
