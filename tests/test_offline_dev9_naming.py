@@ -120,3 +120,17 @@ def test_a_heading_put_into_a_laundry_container_is_laundry() -> None:
     assert ("dirty_clothes", {}) in got.values()
     # a heading put elsewhere names nothing
     assert "dirty_clothes" not in kinds("Sweaty leggings: onto the drying rack, please.", ("home_gym",))
+
+
+# -- a book one writes in is a notebook ---------------------------------------------------------------
+
+
+def test_a_book_one_writes_in_is_a_notebook() -> None:
+    # dev 8 (a lighthouse keeper's diary)
+    assert "notebook" in kinds("The log book is kept on the desk under the window as always, and he is to write "
+                               "in it before anything else.", ("watch_room",))
+    # written for the test
+    assert "notebook" in kinds("Visitors: please write your name in the book by the door.", ("hallway",))
+    assert "notebook" in kinds("The record book lives on the shelf.", ("porters_lodge",))
+    # a book one reads stays a book
+    assert "book" in kinds("The book on the sofa is a library book; put it on the shelf.", ("living_room",))

@@ -89,6 +89,11 @@ _PACKAGING = frozenset({"bag", "pack", "packet", "carton"})
 _VESSELS = _PACKAGING | {"bottle", "jar", "tub", "tin", "can", "box", "jug", "tube", "pot", "dish", "sachet"}
 #: nouns that are verbs as often ("you can use", "switch it off"): objects only after a determiner
 _ALSO_VERBS = frozenset({"can", "throw", "stand", "switch", "set", "press", "iron", "watch", "hook"})
+#: verbs of writing something down: a book one does so in ("the log book ... he is to write in
+#: it", "a record book", "jot it down in the book") is a book of blank pages for notes, the kind
+#: whose own name holds one of them ("notebook", "notepad": `_Reader.written_in`), not a book one
+#: reads
+_WRITING = frozenset({"write", "jot", "note", "record", "log", "scribble"})
 #: words whose count sense the catalog names ("the paper", "today's paper": a newspaper) and whose
 #: mass sense is a material (WordNet's first sense of "paper": "a material made of cellulose
 #: pulp"): said without a determiner ("'Tis only paper", "Paper: into the recycling") or as the
@@ -526,7 +531,9 @@ class _Reader:
             candidates = [c for c in candidates if c is None or not self.plural_only(c, word)] or candidates
         said = self.sentence_context(i)
 
-        def score(category: str | None) -> tuple[bool, bool, int, bool, bool, int, int, bool, bool]:
+        writing = self.written_in(i)
+
+        def score(category: str | None) -> tuple[bool, bool, bool, int, bool, bool, int, int, bool, bool]:
             assert category is not None
             cat = self.catalog.categories[category]
             others = {w for text in (category, *_own(cat)) for w in words_of(text)} - {word}
@@ -534,7 +541,9 @@ class _Reader:
             # its own name: written as the text writes it ("glasses"), or the word's lemma ("chairs")
             # when the name is a lemma (not "glasses" for "glass", a drinking glass)
             own = category.replace("_", " ") == self.text.raw[i] or words_of(category) == (word,) and _lemma_named(category)
-            return (prev in others, own, len(others & said),
+            # a book one writes in: the kind named for writing ("notebook") before the head's own
+            for_writing = writing and any(w.startswith(tuple(_WRITING)) for w in others)
+            return (for_writing, prev in others, own, len(others & said),
                     written != word and self.plural_named(category, word), category == exact,
                     len(others & self.context),
                     -len(rooms) if rooms & self.room_evidence() else -1000,
@@ -546,6 +555,27 @@ class _Reader:
                     words_of(category)[-1] == word)
 
         return max(candidates, key=score)
+
+    def written_in(self, i: int) -> bool:
+        """Whether the thing the noun at word `i` names is written in: a verb of writing
+        (`_WRITING`) before it as its modifier ("the log book", "a record book"), or in its sentence
+        or the next with "in" and the noun or "it" after ("he is to write in it", "note it down in
+        the book")."""
+        words, raw, gaps = self.text.words, self.text.raw, self.text.gaps
+
+        def writes(k: int) -> bool:
+            return bool(_WRITING & {raw[k], *getAllLemmas(raw[k], upos="VERB").get("VERB", ())})
+
+        if i > 0 and not gaps[i].strip() and writes(i - 1):
+            return True
+        start, end = self.text.sentence_start(i), self.text.sentence_end(self.text.sentence_end(i))
+        for k in range(start, min(end, len(words))):
+            if k != i - 1 and writes(k):
+                after = words[k + 1:k + 7]
+                if "in" in after and (after[after.index("in") + 1:after.index("in") + 2] == ["it"]
+                                      or words[i] in after[after.index("in") + 1:]):
+                    return True
+        return False
 
     def modified(self, i: int) -> bool:
         """Whether word `i` follows a determiner and one modifier that names no kind and is no
