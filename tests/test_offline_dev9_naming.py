@@ -5,7 +5,7 @@ each test fails without its rule."""
 
 from __future__ import annotations
 
-from reading import CATALOG, asks, brief, factors, kinds, named
+from reading import CATALOG, asks, brief, factors, kinds, named, placed
 
 # -- a pronoun's place on the floor is a carried thing's, not a piece of furniture's ----------------
 
@@ -134,3 +134,22 @@ def test_a_book_one_writes_in_is_a_notebook() -> None:
     assert "notebook" in kinds("The record book lives on the shelf.", ("porters_lodge",))
     # a book one reads stays a book
     assert "book" in kinds("The book on the sofa is a library book; put it on the shelf.", ("living_room",))
+
+
+# -- a thing keeps the name it was first called by ------------------------------------------------------
+
+
+def test_a_thing_named_by_a_later_predicate_keeps_its_first_name() -> None:
+    # dev 9 (a pirate note): the map is the paper, and where the map is, the object is
+    text = "The treasure map be on the little side table. 'Tis only paper, so leave it be."
+    assert named(text, ("wendy_house",))["map"] == ("document", {})
+    assert "on(map, side_table)" in placed(text, ("wendy_house",))
+    # written for the test
+    text = "The parcel is on the doormat. It is a cardboard box; carry it to the study."
+    assert named(text, ("hallway",))["parcel"] == ("cardboard_box", {})
+
+
+def test_tis_is_it_is() -> None:
+    from logicenveval.offline.sentences import expand
+    assert expand("'Tis only paper") == "it is only paper"
+    assert expand("'Twas left on the table") == "it was left on the table"

@@ -136,6 +136,9 @@ _NOT_CONTEXT = frozenset({"floor", "wall", "ceiling", "room"})
 #: "that is a ...", "it was a ...": a predicate noun of a thing already named (`predicate_noun`)
 _POINTERS = frozenset({"that", "it", "this", "which"})
 _COPULAS = frozenset({"is", "was"})
+#: verbs after a subject that say where it is or what it is ("The treasure map be on the table",
+#: "The rota is on the fridge door", "The card lives in the drawer": `unnamed_subject`)
+_SUBJECT_VERBS = frozenset({"is", "was", "be", "are", "lives", "sits", "stands", "lies", "stays"})
 #: words naming a part of a piece of furniture that holds things, and the kind each part is
 _PARTS = {"level": "shelf", "tier": "shelf", "shelf": "shelf"}
 #: words that rank parts or say which one ("on the next", "the top one")
@@ -1077,6 +1080,28 @@ class _Reader:
         start = self.text.sentence_start(i)
         return any(self.kind_at(j)[1] is not None for j in range(start, k - 2))
 
+    def unnamed_subject(self, i: int) -> str | None:
+        """The noun a thing was first called by, when the noun phrase at word `i` is the predicate of
+        "it is (only) <a kind>" opening its sentence and the sentence before has as its subject a
+        noun that names no kind ("The treasure map be on the little side table. 'Tis only paper":
+        the map is the paper; "The rota is on the fridge door. It's a sheet of paper"): the thing
+        keeps its first name, so that what the text said of it by that name is said of the object."""
+        words = self.text.words
+        k = i - 1
+        while k > 0 and words[k] in _ARTICLES | {"only", "just"}:
+            k -= 1
+        start = self.text.sentence_start(i)
+        if k < 1 or words[k] not in _COPULAS or words[k - 1] not in _POINTERS or k - 1 != start or start == 0:
+            return None
+        before = self.text.sentence_start(start - 1)
+        verb = next((v for v in range(before, start) if words[v] in _SUBJECT_VERBS), None)
+        if verb is None or verb - before < 2 or words[before] not in _ARTICLES:
+            return None
+        head = words[verb - 1]
+        if not head.isalpha() or head in self.heads or any(self.match(v)[1] is not None for v in range(before, verb)):
+            return None
+        return head
+
     def says_which(self, i: int) -> bool:
         """Whether word `i` ("spare") is the predicate of "it is the spare", "that's a spare one"
         said right after a thing: it says which one that thing is (the spare, not the one in use),
@@ -1236,6 +1261,8 @@ class _Reader:
                 i += n  # "a toy on the floor ... dolls in the red box, toy cars in the blue box"
                 continue
             kind = self.kinds.setdefault(category, _Kind())
+            if (subject := self.unnamed_subject(i)) is not None:
+                self.said_as.setdefault(category, subject)  # "The treasure map be on ... 'Tis only paper"
             known = category in self.recent
             self.mention(category, words[i + n - 1])
             allowed = self.catalog.categories[category].attributes.get("color", [])
