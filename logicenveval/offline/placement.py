@@ -227,7 +227,29 @@ def _sentences(text: str, lex: Lexicon) -> list[_Sentence]:
                        m.start(), m.end()) for m in _TOKEN.finditer(low)]
         toks = [t for t in toks if t.word != "\n"]
         mentions = lex.find_mentions([(t.lemma, t.start, t.end) for t in toks])
+        toks = _without_asides(toks, mentions)
+        mentions = lex.find_mentions([(t.lemma, t.start, t.end) for t in toks])
         out.append(_Sentence(toks, _with_room_word(toks, mentions, lex)))
+    return out
+
+
+def _without_asides(toks: list[_Token], mentions: list[Mention]) -> list[_Token]:
+    """The tokens without a bracket right after a thing's name that names nothing and states no
+    condition or doubt: an aside about the thing ("Mug (mine, the chipped one) lives on the bedside
+    table", "The vase (a gift from Gran) is on the piano") stands between the subject and its verb
+    and hides the statement; a bracket that names a place (`_identifying_aside`) or holds "if",
+    "maybe" is kept."""
+    out = list(toks)
+    for m in sorted(mentions, key=lambda x: -x.start):
+        if m.kind != "role" or m.end >= len(out) or out[m.end].word != "(":
+            continue
+        close = next((j for j in range(m.end + 1, len(out)) if out[j].word in (")", "(")), None)
+        if close is None or out[close].word != ")":
+            continue
+        inside = {t.word for t in out[m.end + 1:close]}
+        if any(m.end < x.start < close for x in mentions) or inside & (SUBORDINATORS | DOUBT | {"if", "unless"}):
+            continue
+        del out[m.end:close + 1]
     return out
 
 
