@@ -166,3 +166,13 @@ def test_an_aside_after_a_things_name_does_not_hide_its_place() -> None:
     assert "on(vase, piano)" in placed("The vase (a present from Gran) is on the piano.", ("living_room",))
     # a bracket with a condition is no aside
     assert not placed("The towel (if it is dry) is on the rail.", ("bathroom",))
+
+
+def test_a_bracket_saying_where_a_thing_is_kept_is_its_home() -> None:
+    # dev 8 (a care plan): its constraint is "inside(old_towel, vanity) or inside(old_towel, medicine_cabinet)"
+    text = ("If not, wipe the puddle with the old towel (normally kept in the vanity, or sometimes stuffed into the "
+            "medicine cabinet), drop the towel in the hamper.")
+    assert "inside(towel, bathroom_vanity)" in placed(text, ("bathroom",))
+    # written for the test
+    assert "inside(spare_bulb, cabinet)" in placed("If the bulb has blown, fit one of the spare bulbs (stored in the "
+                                                   "hall cupboard).", ("hallway",))
