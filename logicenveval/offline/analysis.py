@@ -678,7 +678,7 @@ class _Reader:
             facts = _respectively(facts)
         said_by_pronoun = {r for m in mentions if m.kind == "pronoun" for r in m.roles}
         facts = [self._fit(f) if f.kind == "state" and f.subject in said_by_pronoun
-                 else self._fit_place(f) if f.kind == "location" and f.subject in said_by_pronoun
+                 else self._fit_place(f, words) if f.kind == "location" and f.subject in said_by_pronoun
                  else self._fit_named(f, mentions)
                  for f in facts if self._holds(f)]
         facts += self._back_home(words, mentions, facts)
@@ -742,15 +742,18 @@ class _Reader:
         fitting = self._can_take(f, reversed(self.recent)) if self._misfit(f) else []
         return _state_of(f, fitting[0]) if fitting else f
 
-    def _fit_place(self, f: Fact) -> Fact:
-        """A pronoun's place on the floor said of a piece of furniture that stands nowhere else (a
-        desk, a wardrobe: not carried, placed on the floor only) means the nearest thing named
-        before that is carried and may lie there ("Tech log: on the briefing desk. It's the blue
-        binder - if it's been knocked onto the floor, ...": the binder, not the desk; "the towel
-        hangs by the wardrobe; if it has fallen on the floor, ..."): of the furniture the question
-        has one answer, and the situations it plans cannot be built."""
+    def _fit_place(self, f: Fact, words: list[str]) -> Fact:
+        """A pronoun's move to the floor ("onto the floor", "has fallen on the floor": `TOWARDS`, a
+        perfect) said of a piece of furniture that stands nowhere else (a desk, a wardrobe: not
+        carried, placed on the floor only) means the nearest thing named before that is carried
+        ("Tech log: on the briefing desk. It's the blue binder - if it's been knocked onto the
+        floor, ...": the binder, not the desk; "The scarf usually hangs by the wardrobe. If it has
+        slipped onto the floor, ...": the scarf): furniture is not knocked over onto the floor, and
+        the situations such a question plans cannot be built. "The hamper is the blue one, it stays
+        on the floor" still states the hamper's place."""
         kind = self.kinds.get(f.subject)
-        if f.condition != f"on({f.subject}, floor)" or kind is None or kind.pickable or kind.placement != ["floor"]:
+        if f.condition != f"on({f.subject}, floor)" or kind is None or kind.pickable or kind.placement != ["floor"] \
+                or not set(words) & (TOWARDS | PERFECT | {"been"}):
             return f
         fitting = [r for r in reversed(self.recent) if r != f.subject and (k := self.kinds.get(r)) is not None
                    and k.pickable]
