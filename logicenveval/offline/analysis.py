@@ -395,6 +395,11 @@ class _Reader:
         #: the words of the clause being read where a thing's name starts (`_state`)
         self.starts: frozenset[int] = frozenset()
 
+    def _carried(self, role: str) -> bool:
+        """Whether the role's kind is carried about (`Category.pickable`)."""
+        kind = self.kinds.get(role)
+        return kind is not None and kind.pickable
+
     def _recent_first(self, m: Mention) -> Mention:
         """An ambiguous singular mention (`the rack`) means the candidate mentioned last."""
         if m.kind != "role" or len(m.roles) < 2:
@@ -492,7 +497,10 @@ class _Reader:
                 # last, not the topic,
                 # unless the clause already spoke of something ("if it is elsewhere or there is none")
                 prior = [p for p in found if p.kind == "pronoun" and p.start < i]
-                things = [r for r in self.recent if r not in self.lex.holders] or self.recent
+                # (a thing carried about that holds things is one too: "Lunch box left on the floor.
+                # If there is one, into the lost property box" asks of the lunch box, not of a
+                # ceiling fan named before it)
+                things = [r for r in self.recent if r not in self.lex.holders or self._carried(r)] or self.recent
                 found.append(Mention(prior[-1].roles if prior else (things[-1],), i, i + 1, "pronoun"))
             elif w in ("they", "them") and self.topic_kind == "role" and not self.plural & set(self.topic) \
                     and not self.coordinated and any(r in self.plural for r in self.recent):
@@ -617,7 +625,7 @@ class _Reader:
                 break
             # "there may or may not be a loaf", "if we still have one", "if one is still to be had"
             before = words[max(0, m.start - 8) : m.start]
-            if "there" in before or "no" in before[-2:] or _WE_HAVE.search(" ".join(before[-6:])) or (
+            if _existential(before) or "no" in before[-2:] or _WE_HAVE.search(" ".join(before[-6:])) or (
                     m.start == 0 and m.kind == "pronoun" and words[0] == "one"):
                 facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
                 break
@@ -669,7 +677,9 @@ class _Reader:
         if "respectively" in words:
             facts = _respectively(facts)
         said_by_pronoun = {r for m in mentions if m.kind == "pronoun" for r in m.roles}
-        facts = [self._fit(f) if f.kind == "state" and f.subject in said_by_pronoun else self._fit_named(f, mentions)
+        facts = [self._fit(f) if f.kind == "state" and f.subject in said_by_pronoun
+                 else self._fit_place(f, words) if f.kind == "location" and f.subject in said_by_pronoun
+                 else self._fit_named(f, mentions)
                  for f in facts if self._holds(f)]
         facts += self._back_home(words, mentions, facts)
         goals = [f for f in facts if f.kind == "location" and f.goal]
@@ -731,6 +741,25 @@ class _Reader:
         - open it first if its doors are shut") means the nearest thing that can."""
         fitting = self._can_take(f, reversed(self.recent)) if self._misfit(f) else []
         return _state_of(f, fitting[0]) if fitting else f
+
+    def _fit_place(self, f: Fact, words: list[str]) -> Fact:
+        """A pronoun's move to the floor ("onto the floor", "has fallen on the floor": `TOWARDS`, a
+        perfect) said of a piece of furniture that stands nowhere else (a desk, a wardrobe: not
+        carried, placed on the floor only) means the nearest thing named before that is carried
+        ("Tech log: on the briefing desk. It's the blue binder - if it's been knocked onto the
+        floor, ...": the binder, not the desk; "The scarf usually hangs by the wardrobe. If it has
+        slipped onto the floor, ...": the scarf): furniture is not knocked over onto the floor, and
+        the situations such a question plans cannot be built. "The hamper is the blue one, it stays
+        on the floor" still states the hamper's place."""
+        kind = self.kinds.get(f.subject)
+        if f.condition != f"on({f.subject}, floor)" or kind is None or kind.pickable or kind.placement != ["floor"] \
+                or not set(words) & (TOWARDS | PERFECT | {"been"}):
+            return f
+        fitting = [r for r in reversed(self.recent) if r != f.subject and (k := self.kinds.get(r)) is not None
+                   and k.pickable]
+        if not fitting:
+            return f
+        return replace(f, subject=fitting[0], condition=f"on({fitting[0]}, floor)")
 
     def _fit_named(self, f: Fact, mentions: list[Mention]) -> Fact:
         """"Desk lamp over chart table left on last night": an on/open state read of a thing named
@@ -1042,6 +1071,8 @@ class _Reader:
         ("Desk lamp over chart table left on": the state is the lamp's)."""
         if words[k] not in PREP_ON | PREP_IN | {"at", "by", "near", "under", "next"} | SPATIAL_PREPS:
             return 0
+        if words[k + 1 : k + 2] in (["there"], ["here"]):
+            return k + 2  # "the ceiling fan in there is broken", "the mop out here is wet": the state is the fan's
         toks = [(w, 0, 0) for w in words[k + 1 : k + 6]]
         for m in self.lex.find_mentions(toks):
             if all(w in ARTICLES for w in words[k + 1 : k + 1 + m.start]):
@@ -1413,7 +1444,35 @@ def _available(reader: _Reader, text: str) -> list[Fact]:
     toks = tokens(low[: cue.start()] if cue else low)
     words = [w for w, _, _ in toks]
     things = [m for m in reader.lex.find_mentions(toks) if m.kind == "role" and not _placed(words, m)]
-    return [Fact(r, f"exists({r})", "exists") for r in things[-1].roles] if things else []
+    if things:
+        return [Fact(r, f"exists({r})", "exists") for r in things[-1].roles]
+    after = [w for w, _, _ in tokens(low[cue.end():])] if cue else []
+    if not words and after[:1] in (["it"], ["they"]) and reader.topic_kind == "role":
+        # "Wallet. If it's there, lost property basket": a cue opening the text with a pronoun
+        # subject asks whether the thing the pronoun speaks of is there at all
+        return [Fact(r, f"exists({r})", "exists") for r in reader.topic]
+    return []
+
+
+#: a subject before a form of "be": "there" right after them is a place ("it's there", "they are
+#: still there"), not the existential "there" ("there is a towel", "is there a towel")
+_THERE_SUBJECTS_BE = frozenset({"it", "they", "he", "she", "this", "that"})
+
+
+def _existential(before: list[str]) -> bool:
+    """Whether `before` holds an existential "there" ("there may or may not be a loaf", "is there
+    a cloth"), not the adverb of place after a subject and its verb ("if it is still there, the
+    basket": the basket is no thing whose presence is asked)."""
+    for k, w in enumerate(before):
+        if w != "there":
+            continue
+        j = k - 1
+        while j >= 0 and before[j] in ("still", "already", "not"):
+            j -= 1
+        if j >= 1 and before[j] in _BE_WORDS and before[j - 1] in _THERE_SUBJECTS_BE:
+            continue
+        return True
+    return False
 
 
 #: verbs of carrying a thing somewhere, whose list after a colon says where each kind of it goes

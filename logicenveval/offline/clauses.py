@@ -78,8 +78,11 @@ ALTERNATIVES = ELSE_CUES[:4]
 #: words after "if" that make it a condition of availability ("if there are any")
 AVAILABILITY = frozenset({"available", "any", "present", "possible", "exist", "exists", "there"})
 #: how a sentence that sets the scene opens ("there is ...", "you are in ..."); a doubt before it
-#: ("maybe there are some wipes ...") makes the piece uncertain instead (`_split`)
-SCENE_START = re.compile(r"^\W*([a-z' ,]{0,50}?\bthere(?: is| are|['\u2019]?s|['\u2019]re)\b(?! (no|not|maybe|possibly))"
+#: ("maybe there are some wipes ...") makes the piece uncertain instead (`_split`). A "there"
+#: after a preposition is a place, not the existential "there": "the ceiling fan in there is
+#: broken", "the mop out there is wet" state something of their subject
+SCENE_START = re.compile(r"^\W*([a-z' ,]{0,50}?(?<!\bin )(?<!\bout )(?<!\bup )(?<!\bdown )(?<!\bover )(?<!\bunder )"
+                         r"(?<!\bback )(?<!\bfrom )\bthere(?: is| are|['\u2019]?s|['\u2019]re)\b(?! (no|not|maybe|possibly))"
                          r"|you are\b|we are\b|you['\u2019]re\b|we['\u2019]re\b)", re.I)
 
 #: subordinators that open a clause of time or concession, not a condition on the scene (for the

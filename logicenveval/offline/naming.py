@@ -23,6 +23,8 @@ from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Any
 
+from lemminflect import getAllLemmas
+
 from logicenveval.domain.catalog import Catalog, Category, load_catalog, per_catalog
 from logicenveval.llm.base import ChatRequest
 from logicenveval.model.rooms import known_room_type, room_type_of
@@ -87,6 +89,17 @@ _PACKAGING = frozenset({"bag", "pack", "packet", "carton"})
 _VESSELS = _PACKAGING | {"bottle", "jar", "tub", "tin", "can", "box", "jug", "tube", "pot", "dish", "sachet"}
 #: nouns that are verbs as often ("you can use", "switch it off"): objects only after a determiner
 _ALSO_VERBS = frozenset({"can", "throw", "stand", "switch", "set", "press", "iron", "watch", "hook"})
+#: verbs of writing something down: a book one does so in ("the log book ... he is to write in
+#: it", "a record book", "jot it down in the book") is a book of blank pages for notes, the kind
+#: whose own name holds one of them ("notebook", "notepad": `_Reader.written_in`), not a book one
+#: reads
+_WRITING = frozenset({"write", "jot", "note", "record", "log", "scribble"})
+#: words whose count sense the catalog names ("the paper", "today's paper": a newspaper) and whose
+#: mass sense is a material (WordNet's first sense of "paper": "a material made of cellulose
+#: pulp"): said without a determiner ("'Tis only paper", "Paper: into the recycling") or as the
+#: material of a plural noun that names no kind ("the paper drawings", "paper copies"), the thing
+#: is a sheet of it, the kind given here (`_Reader.material`)
+_MATERIAL_SENSES = {"paper": "document"}
 #: nouns that are also a thing's usual place ("put each item in its designated spot", "back in
 #: their spot"): after a possessive, with at most one word between, they name a place, no object
 _PLACE_SENSES = frozenset({"spot"})
@@ -123,6 +136,9 @@ _NOT_CONTEXT = frozenset({"floor", "wall", "ceiling", "room"})
 #: "that is a ...", "it was a ...": a predicate noun of a thing already named (`predicate_noun`)
 _POINTERS = frozenset({"that", "it", "this", "which"})
 _COPULAS = frozenset({"is", "was"})
+#: verbs after a subject that say where it is or what it is ("The treasure map be on the table",
+#: "The rota is on the fridge door", "The card lives in the drawer": `unnamed_subject`)
+_SUBJECT_VERBS = frozenset({"is", "was", "be", "are", "lives", "sits", "stands", "lies", "stays"})
 #: words naming a part of a piece of furniture that holds things, and the kind each part is
 _PARTS = {"level": "shelf", "tier": "shelf", "shelf": "shelf"}
 #: words that rank parts or say which one ("on the next", "the top one")
@@ -339,6 +355,11 @@ class _Reader:
             return 1, None  # "a bag of pet food": the food is the object
         if self.verb(i) or self.place_sense(i) or self.reading_label(i):
             return 1, None
+        if (laundry := self.laundry_heading(i)) is not None:
+            self.said_as[laundry] = word  # "Used scrubs - ... into the laundry hamper": laundry
+            return 1, laundry
+        if self.material(i):  # "'Tis only paper", "the paper drawings": sheets of it, no newspaper
+            return 1, _MATERIAL_SENSES[word]
         if word in self.senses:  # "left it out on the bench" in a New Zealand note: the worktop
             self.said_as[self.senses[word]] = word
             return 1, self.senses[word]
@@ -373,6 +394,49 @@ class _Reader:
             return False
         ends = k + 1 == len(words) or bool(_READING_END.match(gaps[k + 1]))
         return ends and (i == 0 or bool(_ITEM_BREAK.search(gaps[i]) or _SENTENCE_END.search(gaps[i])))
+
+    def laundry_heading(self, i: int) -> str | None:
+        """The kind the word "laundry" names (the catalog's dirty clothes), when word `i` is the plural
+        head of a heading that names no kind ("2. Used scrubs - if found on floor, into the laundry
+        hamper", "Muddy kits: into the laundry basket") and its sentence puts it in or into a thing
+        named for laundry: what goes in the laundry hamper is laundry, whatever the garment."""
+        words, raw, gaps = self.text.words, self.text.raw, self.text.gaps
+        laundry = self.phrases.get(("laundry",))
+        if laundry is None or raw[i] == words[i] or words[i] in self.heads or self.match(i)[1] is not None \
+                or i + 1 >= len(words) or not _HEADING.search(gaps[i + 1]):
+            return None
+        start = self.text.sentence_start(i)
+        if i - start > 2 or any(self.match(k)[1] is not None or words[k] in _DETERMINERS or not words[k].isalpha()
+                                for k in range(start, i)):
+            return None
+        end = self.text.sentence_end(i)
+        for k in range(i + 1, end):
+            if words[k] not in ("in", "into"):
+                continue
+            j = k + 1
+            while j < end and words[j] in _ARTICLES:
+                j += 1
+            n, kind = self.match(j) if j < end else (1, None)
+            if kind is not None and kind != laundry and "laundry" in words[j:j + n]:
+                return laundry
+        return None
+
+    def material(self, i: int) -> bool:
+        """Whether the singular word at `i` is a material (`_MATERIAL_SENSES`) where it stands: with
+        no determiner, count or owner before it ("'Tis only paper"), or right before a plural noun
+        that names no kind ("The paper drawings for Plot 7": drawings on paper). "The paper is on
+        the mat", "Dad's paper" are newspapers."""
+        words, raw, gaps = self.text.words, self.text.raw, self.text.gaps
+        word = words[i]
+        if word not in _MATERIAL_SENSES or _MATERIAL_SENSES[word] not in self.catalog.categories or raw[i] != word:
+            return False
+        j = i + 1
+        if j < len(words) and not gaps[j].strip() and raw[j].isalpha() and raw[j] != words[j] \
+                and self.match(j)[1] is None and words[j] not in self.heads and not getAllLemmas(raw[j], upos="VERB"):
+            return True  # a plural noun naming no kind (and no verb's form) after it: what the paper is made into
+        prev = words[i - 1] if i > 0 and not _SENTENCE_END.search(gaps[i]) else ""
+        return prev not in _DETERMINERS and prev not in _COUNTS and prev not in self.possessors \
+            and not (j < len(words) and not gaps[j].strip() and (self.match(j)[1] is not None or words[j] in self.heads))
 
     def place_sense(self, i: int) -> bool:
         """Whether the one-word name at word `i` is a thing's usual place ("its designated spot",
@@ -470,7 +534,9 @@ class _Reader:
             candidates = [c for c in candidates if c is None or not self.plural_only(c, word)] or candidates
         said = self.sentence_context(i)
 
-        def score(category: str | None) -> tuple[bool, bool, int, bool, bool, int, int, bool, bool]:
+        writing = self.written_in(i)
+
+        def score(category: str | None) -> tuple[bool, bool, bool, int, bool, bool, int, int, bool, bool]:
             assert category is not None
             cat = self.catalog.categories[category]
             others = {w for text in (category, *_own(cat)) for w in words_of(text)} - {word}
@@ -478,7 +544,9 @@ class _Reader:
             # its own name: written as the text writes it ("glasses"), or the word's lemma ("chairs")
             # when the name is a lemma (not "glasses" for "glass", a drinking glass)
             own = category.replace("_", " ") == self.text.raw[i] or words_of(category) == (word,) and _lemma_named(category)
-            return (prev in others, own, len(others & said),
+            # a book one writes in: the kind named for writing ("notebook") before the head's own
+            for_writing = writing and any(w.startswith(tuple(_WRITING)) for w in others)
+            return (for_writing, prev in others, own, len(others & said),
                     written != word and self.plural_named(category, word), category == exact,
                     len(others & self.context),
                     -len(rooms) if rooms & self.room_evidence() else -1000,
@@ -490,6 +558,27 @@ class _Reader:
                     words_of(category)[-1] == word)
 
         return max(candidates, key=score)
+
+    def written_in(self, i: int) -> bool:
+        """Whether the thing the noun at word `i` names is written in: a verb of writing
+        (`_WRITING`) before it as its modifier ("the log book", "a record book"), or in its sentence
+        or the next with "in" and the noun or "it" after ("he is to write in it", "note it down in
+        the book")."""
+        words, raw, gaps = self.text.words, self.text.raw, self.text.gaps
+
+        def writes(k: int) -> bool:
+            return bool(_WRITING & {raw[k], *getAllLemmas(raw[k], upos="VERB").get("VERB", ())})
+
+        if i > 0 and not gaps[i].strip() and writes(i - 1):
+            return True
+        start, end = self.text.sentence_start(i), self.text.sentence_end(self.text.sentence_end(i))
+        for k in range(start, min(end, len(words))):
+            if k != i - 1 and writes(k):
+                after = words[k + 1:k + 7]
+                if "in" in after and (after[after.index("in") + 1:after.index("in") + 2] == ["it"]
+                                      or words[i] in after[after.index("in") + 1:]):
+                    return True
+        return False
 
     def modified(self, i: int) -> bool:
         """Whether word `i` follows a determiner and one modifier that names no kind and is no
@@ -991,6 +1080,37 @@ class _Reader:
         start = self.text.sentence_start(i)
         return any(self.kind_at(j)[1] is not None for j in range(start, k - 2))
 
+    def unnamed_subject(self, i: int) -> str | None:
+        """The noun a thing was first called by, when the noun phrase at word `i` is the predicate of
+        "it is (only) <a kind>" opening its sentence and the sentence before has as its subject a
+        noun that names no kind ("The treasure map be on the little side table. 'Tis only paper":
+        the map is the paper; "The rota is on the fridge door. It's a sheet of paper"): the thing
+        keeps its first name, so that what the text said of it by that name is said of the object."""
+        words = self.text.words
+        k = i - 1
+        while k > 0 and words[k] in _ARTICLES | {"only", "just"}:
+            k -= 1
+        start = self.text.sentence_start(i)
+        if k < 1 or words[k] not in _COPULAS or words[k - 1] not in _POINTERS or k - 1 != start or start == 0:
+            return None
+        before = self.text.sentence_start(start - 1)
+        verb = next((v for v in range(before, start) if words[v] in _SUBJECT_VERBS), None)
+        if verb is None or verb - before < 2 or words[before] not in _ARTICLES:
+            return None
+        head = words[verb - 1]
+        if not head.isalpha() or head in self.heads or any(self.match(v)[1] is not None for v in range(before, verb)):
+            return None
+        return head
+
+    def says_which(self, i: int) -> bool:
+        """Whether word `i` ("spare") is the predicate of "it is the spare", "that's a spare one"
+        said right after a thing: it says which one that thing is (the spare, not the one in use),
+        no second object of its kind. "Take a spare from the drawer" still names one."""
+        words = self.text.words
+        if i < 3 or words[i - 2] not in _COPULAS or words[i - 3] not in _POINTERS:
+            return False
+        return i + 1 == len(words) or words[i + 1] == "one" or self.match(i + 1)[1] is None
+
     def kind_value(self, i: int, n: int, prev: str) -> bool:
         """Whether the bare plural at word `i` (`n` words: "dolls", "toy cars"), or an indefinite
         singular set against "any other <kind>", is a class of a kind named before it, one of the values of its `kind` attribute (`KIND_ATTRIBUTES`; a toy
@@ -1093,6 +1213,9 @@ class _Reader:
                 self.colors[self.recent[-1]] = color
                 i += 1
                 continue
+            if words[i] in SPARE_WORDS and prev in _DETERMINERS and self.says_which(i):
+                i += 1  # "a hard hat on the floor (it's the spare, not his)": which one it is, no other
+                continue
             if words[i] in SPARE_WORDS and prev in _DETERMINERS and (
                     i + 1 == len(words) or words[i + 1] not in self.heads and self.match(i + 1)[1] is None):
                 # "a spare" as a noun: "fetch a spare from the dresser", "we store the spares"
@@ -1138,6 +1261,8 @@ class _Reader:
                 i += n  # "a toy on the floor ... dolls in the red box, toy cars in the blue box"
                 continue
             kind = self.kinds.setdefault(category, _Kind())
+            if (subject := self.unnamed_subject(i)) is not None:
+                self.said_as.setdefault(category, subject)  # "The treasure map be on ... 'Tis only paper"
             known = category in self.recent
             self.mention(category, words[i + n - 1])
             allowed = self.catalog.categories[category].attributes.get("color", [])

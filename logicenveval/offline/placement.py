@@ -227,7 +227,29 @@ def _sentences(text: str, lex: Lexicon) -> list[_Sentence]:
                        m.start(), m.end()) for m in _TOKEN.finditer(low)]
         toks = [t for t in toks if t.word != "\n"]
         mentions = lex.find_mentions([(t.lemma, t.start, t.end) for t in toks])
+        toks = _without_asides(toks, mentions)
+        mentions = lex.find_mentions([(t.lemma, t.start, t.end) for t in toks])
         out.append(_Sentence(toks, _with_room_word(toks, mentions, lex)))
+    return out
+
+
+def _without_asides(toks: list[_Token], mentions: list[Mention]) -> list[_Token]:
+    """The tokens without a bracket right after a thing's name that names nothing and states no
+    condition or doubt: an aside about the thing ("Mug (mine, the chipped one) lives on the bedside
+    table", "The vase (a gift from Gran) is on the piano") stands between the subject and its verb
+    and hides the statement; a bracket that names a place (`_identifying_aside`) or holds "if",
+    "maybe" is kept."""
+    out = list(toks)
+    for m in sorted(mentions, key=lambda x: -x.start):
+        if m.kind != "role" or m.end >= len(out) or out[m.end].word != "(":
+            continue
+        close = next((j for j in range(m.end + 1, len(out)) if out[j].word in (")", "(")), None)
+        if close is None or out[close].word != ")":
+            continue
+        inside = {t.word for t in out[m.end + 1:close]}
+        if any(m.end < x.start < close for x in mentions) or inside & (SUBORDINATORS | DOUBT | {"if", "unless"}):
+            continue
+        del out[m.end:close + 1]
     return out
 
 
@@ -344,6 +366,10 @@ def _identifying_aside(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading:
         if place is not None and place[1].roles != m.roles:
             _put(reading, "settled", catalog, lex, m.roles[0], place[1], place[0])
             continue
+        home = _bracketed_home(sent, k)
+        if home is not None and home[1].roles != m.roles:
+            _put(reading, "kept", catalog, lex, m.roles[0], home[1], home[0])
+            continue
         if words[k] != "the":
             continue
         one = next((j for j in range(k + 1, min(k + 4, len(words))) if words[j] == "one"), None)
@@ -353,6 +379,28 @@ def _identifying_aside(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading:
         found = _holder_after(sent, [x for x in sent.mentions if one < x.start < close], one + 1, close)
         if found is not None and found[1].roles != m.roles:
             _put(reading, "settled", catalog, lex, m.roles[0], found[1], found[0])
+
+
+#: the verbs of keeping that open a bracket of their own after a thing: a participle or a
+#: present with the thing as subject ("(kept in the vanity)", "(lives in the drawer)")
+_KEPT_ASIDE = frozenset({"kept", "stored", "lives", "sleeps"})
+
+
+def _bracketed_home(sent: _Sentence, k: int) -> tuple[str, Mention] | None:
+    """(preposition, place) when the bracket opening at word `k` says where the thing before it is
+    kept, with a norm adverb or none: "the old towel (normally kept in the vanity, or sometimes
+    stuffed into the medicine cabinet)", "the spare bulbs (stored in the hall cupboard)": its home,
+    the first place said (an alternative after "or" leaves it the usual one)."""
+    words = sent.words
+    close = next((j for j in range(k, len(words)) if words[j] == ")"), None)
+    if close is None:
+        return None
+    j = k + (words[k] in NORM_ADVERBS)
+    if words[j] not in _KEPT_ASIDE:
+        return None
+    end = next((x for x in range(j + 1, close) if words[x] in (",", "or", "and")), close)
+    found = _holder_after(sent, [x for x in sent.mentions if j < x.start < end], j + 1, end)
+    return found if found is not None and found[1].end == end else None
 
 
 def _bracketed_place(sent: _Sentence, lex: Lexicon, k: int) -> tuple[str, Mention] | None:

@@ -20,6 +20,7 @@ from logicenveval.offline.handlers import handler
 from logicenveval.offline.keyed import keyed, keyed_selection
 from logicenveval.offline.placement import described_placements
 from logicenveval.offline.realise import task_objects
+from logicenveval.scene.compat import can_hold
 
 #: typical floor area (m²) per room type
 AREA = {"LivingRoom": 22.0, "Kitchen": 13.0, "Bedroom": 15.0, "Bathroom": 7.0, "Study": 11.0,
@@ -166,9 +167,10 @@ def misfits(objects: list[dict[str, Any]], catalog: Catalog) -> list[str]:
         if item is None or host is None:
             continue
         pred = f"not {how}({o['id']}, {holder})"
-        inner = sorted(item.size_min if how == "inside" else item.size_min[::2])
-        outer = sorted(host.size_max if how == "inside" else host.size_max[::2])
-        if any(a > b + 1e-9 for a, b in zip(inner, outer, strict=True)):
+        if not can_hold(item, host, how):
+            # the layout's own test (`scene.compat`): the item's footprint against the holder's top
+            # or opening, and on a top its volume too ("the broom on the coat hook": a broom's
+            # footprint is narrow, but it is far bigger than a hook)
             out.append(pred)
             continue
         # the layout draws an item's size up to its holder's top, whatever else stands there

@@ -108,6 +108,7 @@ _CONTRACTIONS = [
     # typed or dictated without the apostrophe ("if its not in there", "if its dirty"): "its",
     # "thats", "theres" before what follows "is" are "it is", never a possessive
     (rf"\b(it|that|there|what|where)s(?=\s+(?:{'|'.join(_IS_AFTER)})\b)", r"\1 is"),
+    (r"(?<![\w'])'t(is|was)\b", r"it \1"),  # "'Tis only paper", "'twas left on": archaic "it is", "it was"
     (r"\bcan't\b", "can not"), (r"\bwon't\b", "will not"), (r"n't\b", " not"),
     (r"\b(i|you|we|they)'ve\b", r"\1 have"), (r"\b(i|you|we|they|it)'ll\b", r"\1 will"),
     (r"\b(\w+)s'(\s)", r"\1s\2"), (r"\b(\w+)'s\b", r"\1"),
