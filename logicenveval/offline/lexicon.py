@@ -14,7 +14,7 @@ from typing import Any
 from lemminflect import getAllLemmas, getLemma
 
 from logicenveval.domain.catalog import Catalog, per_catalog
-from logicenveval.domain.lemmas import noun_lemma as singular
+from logicenveval.domain.lemmas import noun_lemma
 from logicenveval.offline.wordnet import is_wordnet_name
 
 WORD = re.compile(r"[a-z0-9]+(?:'[a-z]+)?")
@@ -46,6 +46,11 @@ _SHARED_LEADS = frozenset({"the", "my", "our", "your", "their", "both", "a", "so
 COLOR_WORDS = frozenset(
     ["red", "blue", "green", "yellow", "white", "black", "grey", "gray", "brown", "pink", "purple", "orange", "beige", "silver", "gold"]
 )
+
+
+#: the noun lemma the reader compares words by: the judge's own (`domain.lemmas`), so that a
+#: name the reader matches is a name the judge resolves
+singular = noun_lemma
 
 
 def verb_form(word: str) -> bool:
