@@ -107,3 +107,15 @@ def test_the_benchmarks_compare_lists_every_moved_task_and_counts_the_falls() ->
     assert fell == 1
     assert [line.split()[:3] for line in lines] == [["FALL", "new", "a"], ["gain", "new", "b"]]
     assert "scevr 100.0 -> 50.0" in lines[0] and "logcov 50.0 -> 100.0" in lines[1]
+
+
+def test_skip_names_a_set_of_the_benchmark_or_stops_before_running() -> None:
+    """`--skip` keeps a fresh set unseen while others tune; a misspelt set must not silently run
+    it (nothing runs before the check, so this is quick)."""
+    import subprocess
+    import sys
+
+    script = Path(__file__).resolve().parents[1] / "benchmarks" / "reader_generalisation.py"
+    done = subprocess.run([sys.executable, str(script), "--dev-only", "--skip", "dev10 new,dev 10 new"],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 2 and "no set named dev 10 new" in done.stderr
