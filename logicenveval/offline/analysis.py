@@ -80,7 +80,9 @@ DESCRIPTIVE = frozenset(
      # slang verbs of resting ("my mug might be chilling on the desk")
      "chill", "chills", "chilling",
      # "land (up)" for "end up" (British, South African: "if a cushion landed up on the floor")
-     "landed", "lands", "landing"]
+     "landed", "lands", "landing",
+     # "wind up" for "end up" (American: "if that detergent bottle has wound up on the floor")
+     "wound", "winds", "wind", "winding"]
 )
 #: verbs after a subject that announce where it must go (a goal, not a condition)
 MOTION = frozenset(
@@ -116,7 +118,7 @@ TOWARDS = frozenset({"onto", "into", "off", "away", "down", "across"})
 PERFECT = frozenset({"have", "has", "had", "'ve", "ve"})
 #: participles that turn a noun phrase into a description of the current situation
 SITUATION_PARTICIPLES = frozenset({"left", "lying", "lie", "lies", "sitting", "found", "dropped", "fallen", "fell",
-                                   "slipped", "rolled", "landed",
+                                   "slipped", "rolled", "landed", "wound",
                                    "scattered", "forgotten", "standing", "ended", "rolling", "falling",
                                    "ending"}) | HOMES
 #: determiners of an object already known to be there ("the", "my"): see `Fact.definite`
