@@ -11,6 +11,8 @@ from __future__ import annotations
 import pytest
 from reading import asks as _asks
 
+from logicenveval.offline.sentences import expand
+
 
 @pytest.mark.parametrize(("text", "rooms", "condition"), [
     # dev9 laundry_sorting_d9 (a Southern US note)
@@ -23,4 +25,29 @@ from reading import asks as _asks
 def test_wound_up_is_ended_up(text: str, rooms: tuple[str, ...], condition: str) -> None:
     """"wind up" is "end up" (`analysis.DESCRIPTIVE`, `SITUATION_PARTICIPLES`): where the thing
     wound up is the situation asked."""
+    assert _asks(text, rooms, condition)
+
+
+@pytest.mark.parametrize(("said", "meant"), [
+    ("or we ain't got one", "or we have not got one"),
+    ("if it ain't on", "if it is not on"),
+    ("they ain't there", "they are not there"),
+    ("if she ain't got any", "if she has not got any"),
+])
+def test_aint_is_spelled_out_by_its_subject(said: str, meant: str) -> None:
+    """"ain't" is "have not" before "got", else the copula its subject takes (`sentences._CONTRACTIONS`)."""
+    assert expand(said) == meant
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # dev9 laundry_sorting_d9
+    ("If that detergent bottle has wound up on the floor, put it back on the shelf; if it's anywhere else, "
+     "or we ain't got one, just leave it be.", ("laundry_room",), "exists(laundry_detergent)"),
+    # written here: a bathroom, "haven't got"
+    ("If the soap is on the floor, put it back on the sink; if it's anywhere else, or we haven't got one, "
+     "leave it.", ("bathroom",), "exists(soap_bar)"),
+])
+def test_we_have_not_got_one_asks_whether_there_is_one(text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"we haven't got one" puts the negation after "have" ("we have not got"), as "we don't
+    have one" puts it before (`analysis._WE_HAVE`): whether the household has the thing."""
     assert _asks(text, rooms, condition)

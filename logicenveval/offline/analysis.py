@@ -217,10 +217,13 @@ class TaskAnalysis:
 
 
 #: "if we still have one", "if we don't have a spare": the household owns the object, or not
-_WE_HAVE = re.compile(r"\b(?:we|you|i)(?: still| also| even)?(?: do| does| did)?(?: not)? (?:have|has)(?: still| also)?(?: got)?"
+_WE_HAVE = re.compile(r"\b(?:we|you|i)(?: still| also| even)?(?: do| does| did)?(?: not)? (?:have|has)(?: not)?(?: still| also)?"
+                      r"(?: got)?"
                       r"(?: (?:a|an|any|some))?$")
 _ASIDE = re.compile(r"\s*\([^()]*\)\W*$")
 
+#: a dash between words, set off by spaces, that ends a clause as a comma does
+_DASHES = frozenset({"-", "\u2013", "\u2014", "--"})
 
 #: a verb and its particle that together say a state ("the drawer may be pulled out" is open):
 #: read as the state word (`STATE_WORDS`) before the clause is read

@@ -108,6 +108,11 @@ _CONTRACTIONS = [
     # typed or dictated without the apostrophe ("if its not in there", "if its dirty"): "its",
     # "thats", "theres" before what follows "is" are "it is", never a possessive
     (rf"\b(it|that|there|what|where)s(?=\s+(?:{'|'.join(_IS_AFTER)})\b)", r"\1 is"),
+    # "ain't" (American, dialect): "have not" before "got" ("we ain't got one"), else the copula
+    # its subject takes ("it ain't on", "they ain't there")
+    (r"\b(he|she|it|that|this) ain't(?=\s+(?:got|gotten)\b)", r"\1 has not"),
+    (r"\bain't(?=\s+(?:got|gotten)\b)", "have not"), (r"\b(we|you|they) ain't\b", r"\1 are not"),
+    (r"\bi ain't\b", "i am not"), (r"\bain't\b", "is not"),
     (r"\bcan't\b", "can not"), (r"\bwon't\b", "will not"), (r"n't\b", " not"),
     (r"\b(i|you|we|they)'ve\b", r"\1 have"), (r"\b(i|you|we|they|it)'ll\b", r"\1 will"),
     (r"\b(\w+)s'(\s)", r"\1s\2"), (r"\b(\w+)'s\b", r"\1"),
