@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import pytest
 from reading import asks as _asks
+from reading import factors as _factors
 
 from logicenveval.offline.sentences import expand
 
@@ -51,3 +52,30 @@ def test_we_have_not_got_one_asks_whether_there_is_one(text: str, rooms: tuple[s
     """"we haven't got one" puts the negation after "have" ("we have not got"), as "we don't
     have one" puts it before (`analysis._WE_HAVE`): whether the household has the thing."""
     assert _asks(text, rooms, condition)
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # dev9 multi_room_lights_off_d9 (a captain's announcement)
+    ("In the bedroom, please turn off the table lamp if it is on, and close the wardrobe should its doors be open.",
+     ("bedroom",), "state(wardrobe, open)"),
+    # written here: a study, "should anyone have"
+    ("Turn the heater off should anyone have left it on.", ("study",), "state(radiator, toggled_on)"),
+    # written here: a kitchen, a pronoun subject
+    ("Put the lid back on the bin should it be full.", ("kitchen",), "state(trash_can, filled)"),
+])
+def test_an_inverted_should_after_its_main_clause_is_a_condition(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"close the wardrobe should its doors be open": an inverted "should" (a subject, then "be",
+    "have" or "ever" within a few words) opens a condition after its main clause with no comma
+    before it (`clauses._LATE_SHOULD`)."""
+    assert _asks(text, rooms, condition)
+
+
+@pytest.mark.parametrize(("text", "rooms"), [
+    ("The shirt should be in the hamper.", ("bedroom",)),
+    ("Where should the box go?", ("attic",)),
+])
+def test_a_modal_should_or_a_question_opens_no_condition(text: str, rooms: tuple[str, ...]) -> None:
+    """Only the inverted form is a condition: "should be" after its subject is a modal, and "where
+    should the box go?" a question."""
+    assert _factors(text, rooms) == {}
