@@ -79,3 +79,14 @@ def test_a_modal_should_or_a_question_opens_no_condition(text: str, rooms: tuple
     """Only the inverted form is a condition: "should be" after its subject is a modal, and "where
     should the box go?" a question."""
     assert _factors(text, rooms) == {}
+
+
+@pytest.mark.parametrize(("said", "meant"), [
+    ("filling the mister at the sink first if it has run empty", "filling the mister at the sink first if it has been empty"),
+    ("once the flannel has already got wet", "once the flannel has already been wet"),
+    ("the milk has gone off", "the milk has gone off"),  # a particle: no state word
+    ("the cat has gone", "the cat has gone"),  # absence, read elsewhere
+])
+def test_a_verb_of_becoming_in_the_perfect_before_a_state_is_the_copula(said: str, meant: str) -> None:
+    """"has run empty", "has gone dry", "has got wet" say the thing is so now (`sentences._BECOME`)."""
+    assert expand(said) == meant

@@ -612,13 +612,21 @@ def detable(text: str) -> str:
     return "\n".join(out)
 
 
+#: a verb of becoming in the perfect before a state word is the copula: "if it has run empty",
+#: "if the vase has gone dry", "once the towel has got wet" say it is so now, as "has been" does
+#: (not "gone" alone, which is absence, nor a particle: "has gone off", "has turned on")
+_BECOME = re.compile(r"\b(has|have|had)\s+(?:(just|already|now)\s+)?(?:run|gone|got|gotten|become|turned|grown)\s+(?=(?:"
+                     + "|".join(w for w in STATE_WORDS if w not in ("on", "off", "out")) + r")\b)", re.I)
+
+
 def expand(text: str) -> str:
     """The text with contractions spelled out ("it's" -> "it is"), possessives dropped, "w/" read
-    as "with", "and/or" as "or" and a slash between words as "or"."""
+    as "with", "and/or" as "or", a slash between words as "or" and a verb of becoming in the
+    perfect before a state as "been" (`_BECOME`)."""
     out = _SLASH.sub(" or ", _AND_OR.sub("or", _WITH.sub("with ", text.replace("\u2019", "'"))))
     for pat, repl in _CONTRACTIONS:
         out = re.sub(pat, repl, out, flags=re.I)
-    return out
+    return _BECOME.sub(lambda m: f"{m.group(1)} {m.group(2) + ' ' if m.group(2) else ''}been ", out)
 
 
 def split_sentences(text: str, *, full_stops_only: bool = False) -> list[str]:
