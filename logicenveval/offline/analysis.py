@@ -393,6 +393,7 @@ class _Reader:
         self.coordinated = False
         #: the words of the clause being read that a comma stands before (`_joined`)
         self.commas: frozenset[int] = frozenset()
+        self.dashes: frozenset[int] = frozenset()
         #: the words of the clause being read that a hyphen joins to the word before ("the
         #: lost-property cart"): a hyphenated modifier counts as one word between a preposition
         #: and its place (`_location`)
@@ -543,7 +544,9 @@ class _Reader:
                     self.plural_ref.pop(r, None)
         first = next((m for m in found if m.kind in ("role", "floor", "pronoun")), None)
         first = _direct_object(words, found, first)
-        first = _later_object(words, found, self.commas) or first
+        # a participle clause set off by a dash as by a comma ("mists them with the plant mister -
+        # filling the mister at the sink first if it has run empty")
+        first = _later_object(words, found, self.commas | self.dashes) or first
         if first is not None and first.kind != "pronoun":
             self.topic, self.topic_kind = first.roles, first.kind
         thing = next((m for m in found if m.kind == "role" and not _placed(words, m)), None)
@@ -561,6 +564,8 @@ class _Reader:
         words = [t[0] for t in toks]
         self.commas = frozenset(k for k in range(1, len(toks)) if "," in said[toks[k - 1][2]:toks[k][1]])
         self.hyphens = frozenset(k for k in range(1, len(toks)) if said[toks[k - 1][2]:toks[k][1]] == "-")
+        self.dashes = frozenset(k for k in range(1, len(toks)) if said[toks[k - 1][2]:toks[k][1]].strip() in _DASHES
+                                and said[toks[k - 1][2]:toks[k][1]] != "-")
         mentions = self.mentions(words, toks)
         self.starts = frozenset(x.start for x in mentions if x.kind == "role")
         for m in mentions:
