@@ -122,3 +122,16 @@ def test_a_participle_clause_after_a_dash_is_what_a_later_pronoun_means(
     what the condition after it speaks of, not the topic named before."""
     assert _asks(text, rooms, condition)
     assert not _asks(text, rooms, not_asked)
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # dev8 tack_room_yard_whiteboard (a stables whiteboard)
+    ("Before you go:\n * kettle OFF if on (nearly had a fire Sat!!)", ("tack_room",), "state(kettle, toggled_on)"),
+    # written here: a living room, a television
+    ("Telly off if on (the neighbours complained).", ("living_room",), "state(television, toggled_on)"),
+])
+def test_a_bare_state_before_an_aside_in_brackets_is_the_things(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"kettle OFF if on (nearly had a fire)": an aside in brackets closing the clause leaves the
+    bare state the condition of the thing the instruction acts on (`sentences._ELIDED_END_STATE`)."""
+    assert _asks(text, rooms, condition)

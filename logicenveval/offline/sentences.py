@@ -172,10 +172,11 @@ _ELIDED_STATE = re.compile(
 #: the same at the end of an instruction's clause, after its verb ("Tablet on the plinth: power
 #: off if still on.", "Heater by the door: switch off if running"): an instruction whose condition
 #: is a bare state, with or without "still" / "already", speaks of the thing it acts on, "if it is
-#: still on"; a bare state opening a sentence ("If dirty, ...") is read elsewhere
+#: still on"; a bare state opening a sentence ("If dirty, ...") is read elsewhere. An aside in
+#: brackets may close the clause ("kettle OFF if on (nearly had a fire Sat!!)")
 _ELIDED_END_STATE = re.compile(
     rf"(?<=\w)(\s+(?:if|unless|when|whenever|once|while))\s+(?=(?:(?:still|already)\s+)?"
-    rf"(?:{'|'.join(sorted(w for w in STATE_WORDS if ' ' not in w))})\s*(?:[.;!]|$))",
+    rf"(?:{'|'.join(sorted(w for w in STATE_WORDS if ' ' not in w))})\s*(?:[.;!(]|$))",
     re.I | re.M)
 
 
