@@ -135,3 +135,30 @@ def test_a_bare_state_before_an_aside_in_brackets_is_the_things(
     """"kettle OFF if on (nearly had a fire)": an aside in brackets closing the clause leaves the
     bare state the condition of the thing the instruction acts on (`sentences._ELIDED_END_STATE`)."""
     assert _asks(text, rooms, condition)
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # dev8 reading_room_porter_round (a night porter's round)
+    ("Stop 4 - Carrels. Laptops get left behind. If you find one, lock it in the filing cabinet behind the issue "
+     "desk and log it on the lost property sheet.", ("reading_room",), "exists(laptop)"),
+    # dev9 hospitality_tent_radio_log (a radio log)
+    ("Three, somebody's reported a wallet left in there. If you find it, put it in the lost property basket by "
+     "the entrance. Over.", ("hospitality_tent",), "exists(wallet)"),
+    # written here: a hallway, umbrellas
+    ("Umbrellas get left behind after the meeting. If you find one, put it in the umbrella stand.", ("hallway",),
+     "exists(umbrella)"),
+])
+def test_finding_a_thing_only_said_to_be_left_asks_whether_it_is_there(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"If you find it / one" points back; when the clause it points to says nothing of where or
+    how the thing is, only that it was left, what is in doubt is whether it is there
+    (`analysis._come_upon`)."""
+    assert _asks(text, rooms, condition)
+
+
+def test_finding_one_after_a_habit_with_a_place_still_asks_the_place() -> None:
+    """With a place in the clause pointed to, "if you find one" (no "there") asks that place, as
+    "if you find one there" does (`analysis._anaphoric`), not whether there is one."""
+    text = "The cushions tend to end up on the floor - if you find one, put it back on the sofa."
+    assert _asks(text, ("living_room",), "on(sofa_pillow, floor)")
+    assert not _asks(text, ("living_room",), "exists(sofa_pillow)")

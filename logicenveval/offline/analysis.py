@@ -1264,8 +1264,26 @@ def _anaphoric(text: str, facts: list[Fact]) -> bool:
     if any(not f.goal for f in facts):
         return False
     if words & DISCOVERY and words & AGENTS:
-        return words <= ANAPHORIC | {"not"} | DISCOVERY | AGENTS | _HERE
+        # "if you find it", "if you find one": one of the things just spoken of
+        return words <= ANAPHORIC | {"not"} | DISCOVERY | AGENTS | _HERE | FOUND_ONE
     return points_back(text)
+
+
+def _come_upon(clauses: list[Clause], sentence: int, text: str) -> tuple[list[Fact], tuple[str, ...]]:
+    """What "if you find it / one" asks when the clause it points back to says nothing of where
+    or how the thing is ("Laptops get left behind. If you find one, ...", "somebody's reported a
+    wallet left in there. If you find it, ..."): whether the thing that clause names is there at
+    all. Nothing for a condition that is no coming upon, or with no such clause."""
+    words = {w for w, _, _ in tokens(expand(text))}
+    if not (words & DISCOVERY and words & AGENTS):
+        return [], ()
+    for cl in reversed(clauses):
+        if cl.sentence < sentence - 1:
+            break
+        if cl.mentions and cl.role in ("statement", "scene", "uncertain", "consequence"):
+            r = cl.mentions[0]
+            return [Fact(r, f"exists({r})", "exists")], (r,)
+    return [], ()
 
 
 def _antecedent(clauses: list[Clause], sentence: int, pointing: set[int]) -> tuple[list[Fact], tuple[str, ...]]:
@@ -1868,6 +1886,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 facts = done
             if role == "condition" and _anaphoric(said, facts):
                 facts, names = _antecedent(clauses, grammatical, pointing)
+                if not facts:
+                    facts, names = _come_upon(clauses, grammatical, said)
                 pointing.add(len(clauses))
                 if "not" in {w for w, _, _ in tokens(expand(said))}:
                     # "the drawer might already be open, and if it isn't, open it": the opposite
