@@ -2,8 +2,9 @@
 eighth set's tasks that still lost a factor (`tests/data/reader_dev8/`): "wound up" for "ended
 up", "ain't got" and "we haven't got one", an inverted "should" after its main clause with no
 comma, a verb of becoming in the perfect before a state ("has run empty"), a participle clause set
-off by a dash, a bare state before a closing aside in brackets, and "if you find it / one" after a
-clause that only says the thing was left. Each is tried on the development sentence and on one
+off by a dash, a bare state before a closing aside in brackets, "if you find it / one" after a
+clause that only says the thing was left, and where others habitually leave a thing as where a
+condition pointing back asks it may be. Each is tried on the development sentence and on one
 written here in another room with other objects."""
 
 from __future__ import annotations
@@ -12,6 +13,7 @@ import pytest
 from reading import asks as _asks
 from reading import factors as _factors
 
+from logicenveval.offline.implied import implied
 from logicenveval.offline.sentences import expand
 
 
@@ -162,3 +164,34 @@ def test_finding_one_after_a_habit_with_a_place_still_asks_the_place() -> None:
     text = "The cushions tend to end up on the floor - if you find one, put it back on the sofa."
     assert _asks(text, ("living_room",), "on(sofa_pillow, floor)")
     assert not _asks(text, ("living_room",), "exists(sofa_pillow)")
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # dev9 art_room_supply_cover_notes (a teacher's cover notes)
+    ("- The Y7s always manage to leave a pair of scissors on the floor. Any you find down there go in the grey "
+     "storage box on the side.", ("art_room",), "on(scissors, floor)"),
+    # dev8 control_room_studio_booking (a studio booking email)
+    ("- The red headphones are the client pair. The band kept dumping them on the floor last night - if they're "
+     "still down there, hang them back on the hook by the door.", ("control_room",), "on(red_headphones, floor)"),
+    # written here: a hallway, shoes
+    ("The kids always leave their shoes on the floor by the door. If you find any there, put them on the shoe rack.",
+     ("hallway",), "on(shoe, floor)"),
+])
+def test_where_others_habitually_leave_a_thing_is_where_it_may_be(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"The band kept dumping them on the floor - if they're still down there, ...": where someone
+    other than the reader habitually puts a thing is where a condition pointing back asks it may
+    be (`analysis._habit_of_others`), not a goal of the reader's; "down there" is "there"
+    (`implied._DIRECTED_THERE`), "if they're still there" points back to the place
+    (`analysis._there_named`), and "Any you find there go in ..." is "if you find any there,
+    they go in ..." (`implied._ANY_FOUND`)."""
+    assert _asks(text, rooms, condition)
+
+
+@pytest.mark.parametrize(("said", "meant"), [
+    ("Any you find down there go in the grey storage box.", "If you find any there, they go in the grey storage box."),
+    ("if they're still up there, hang them back", "if they're still there, hang them back"),
+])
+def test_any_found_there_and_down_there_are_spelled_out(said: str, meant: str) -> None:
+    """The factor reader's rewrites of the two forms (`offline.implied`)."""
+    assert implied(said) == meant

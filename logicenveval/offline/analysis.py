@@ -56,7 +56,9 @@ from logicenveval.offline.sentences import (
     EVENT_VERBS,
     FORMS,
     FOUND_PARTICIPLES,
+    FREQUENCY,
     HABITUAL_WORDS,
+    NORM_ADVERBS,
     PREP_IN,
     PREP_ON,
     STATE_WORDS,
@@ -1286,6 +1288,18 @@ def _come_upon(clauses: list[Clause], sentence: int, text: str) -> tuple[list[Fa
     return [], ()
 
 
+#: adverbs that make what someone does a habit ("always", "never" too: "the door never gets shut")
+_HABIT_ADVERBS = FREQUENCY | NORM_ADVERBS | {"never"}
+
+
+def _habit_of_others(text: str) -> bool:
+    """A clause saying what someone other than the reader habitually does ("The band kept
+    dumping them on the floor", "The Y7s always manage to leave a pair of scissors on the
+    floor"): a habit (`sentences.habitual`) or a frequency adverb, and no "you" acting."""
+    words = re.findall(r"[a-z']+", expand(text).lower())
+    return (habitual(words) or bool(set(words) & _HABIT_ADVERBS)) and not set(words) & {"you", "u"}
+
+
 def _antecedent(clauses: list[Clause], sentence: int, pointing: set[int]) -> tuple[list[Fact], tuple[str, ...]]:
     """What an anaphoric condition points back to: the situation described by the nearest clause
     of this or the previous sentence that describes one ("Someone keeps leaving the fan running;
@@ -1299,6 +1313,12 @@ def _antecedent(clauses: list[Clause], sentence: int, pointing: set[int]) -> tup
             reach = min(reach, cl.sentence - 1)
             continue
         said = [replace(f, modifier=False, definite=False) for f in cl.facts if not f.goal]
+        if not said and _habit_of_others(cl.text):
+            # "The band kept dumping them on the floor - if they're still there, ...", "The Y7s
+            # always manage to leave a pair of scissors on the floor. If you find any there": where
+            # others habitually put a thing is where it may be now, not a goal of the reader's
+            said = [replace(f, goal=False, modifier=False, definite=False) for f in cl.facts
+                    if f.goal and f.kind == "location"]
         if said:
             if cl.role == "consequence":
                 clauses[j] = replace(cl, role="statement", cue=None)
@@ -1707,7 +1727,8 @@ def _parallel(said: str, facts: list[Fact], clauses: list[Clause], sentence: int
 #: prepositions of a place "there" may take up (the place, not where something goes through)
 _THERE_PREPS = {"on": "on", "onto": "on", "in": "in", "into": "in", "inside": "in"}
 _BE_WORDS = frozenset({"is", "are", "was", "were", "be", "been"})
-#: pronoun subjects of such a condition before a participle of finding or leaving: "If found
+#: pronoun subjects of such a condition before a participle of finding or leaving, or "still"
+#: ("if they're still there": not "already", which asks of a goal, `_already`): "If found
 #: there" (its subject elided, read "if it is found there", `sentences._ELIDED_SUBJECT`) after
 #: "Scissors are not to be left out on the counter" ("if they're already there" is no such place:
 #: it asks whether they are where the instruction before put them)
@@ -1729,7 +1750,7 @@ def _there_named(reader: _Reader, said: str, clauses: list[Clause], sentence: in
     mentions = reader.lex.find_mentions(toks)
     if k == 0 or words[k + 1:k + 2] and words[k + 1] in _BE_WORDS or words[k - 1] in CLAUSE_WORDS \
             or not (any(m.kind == "role" and m.end <= k for m in mentions)
-                    or set(words[:k]) & _THERE_SUBJECTS and words[k - 1] in FOUND_PARTICIPLES) \
+                    or set(words[:k]) & _THERE_SUBJECTS and (words[k - 1] in FOUND_PARTICIPLES or words[k - 1] == "still")) \
             or any(m.kind in ("role", "floor") and m.start > k for m in mentions):
         return said
     for cl in reversed(clauses):

@@ -85,8 +85,28 @@ def any_at(text: str) -> str:
 _ON_TOP = re.compile(r"\bon\s+top\s+of\b", re.I)
 
 
+#: "down there", "up there", "over there" point back to a place as "there" does ("The band kept
+#: dumping them on the floor - if they're still down there, ..."); the direction only says where
+#: that place lies from the speaker
+_DIRECTED_THERE = re.compile(r"\b(?:down|up|over|out)\s+(?=there\b)", re.I)
+#: "Any you find there go in the grey box", "Any ones we spot down there belong in the bin": a
+#: relative clause of coming upon with "any" as its head is the condition "if you find any there",
+#: and what follows is its instruction
+_ANY_FOUND = re.compile(
+    r"\b(?P<any>any)(?:\s+ones?)?(?:\s+that)?\s+(?P<who>you|we|u)\s+(?P<verb>find|see|spot|notice)\s+there\s+"
+    r"(?P<go>go|goes|belong|belongs|should\s+go|get\s+put|are\s+to\s+go)\b",
+    re.I)
+
+
+def _any_found(m: re.Match[str]) -> str:
+    cue = "If" if m.group("any")[0].isupper() else "if"
+    return f"{cue} {m.group('who')} {m.group('verb')} any there, they {m.group('go')}"
+
+
 def implied(sentence: str) -> str:
     """`sentence` with the conditions its grammar implies spelled out as conditionals: an
-    instruction that holds "if need be" (`_IF_NEED_BE`) and an obligation to a state
-    (`_OBLIGED`); "on top of" as "on" (`_ON_TOP`); any other sentence as it is."""
-    return _OBLIGED.sub(_obliged, _IF_NEED_BE.sub(_if_needed, _ON_TOP.sub("on", sentence)))
+    instruction that holds "if need be" (`_IF_NEED_BE`), an obligation to a state (`_OBLIGED`)
+    and "any you find there go ..." (`_ANY_FOUND`); "on top of" as "on" (`_ON_TOP`), "down
+    there" as "there" (`_DIRECTED_THERE`); any other sentence as it is."""
+    said = _ANY_FOUND.sub(_any_found, _DIRECTED_THERE.sub("", _ON_TOP.sub("on", sentence)))
+    return _OBLIGED.sub(_obliged, _IF_NEED_BE.sub(_if_needed, said))
