@@ -195,3 +195,26 @@ def test_where_others_habitually_leave_a_thing_is_where_it_may_be(
 def test_any_found_there_and_down_there_are_spelled_out(said: str, meant: str) -> None:
     """The factor reader's rewrites of the two forms (`offline.implied`)."""
     assert implied(said) == meant
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # dev9 wendy_house_pirate_note (a dad's note in pirate speak)
+    ("The ship's lantern (that be the torch, ye landlubbers) - if she be still burnin', switch her off, or the "
+     "batteries be goin' to Davy Jones.", ("wendy_house",), "state(flashlight, toggled_on)"),
+    # written here: a kitchen, a kettle
+    ("The old kettle in the kitchen: if she's still on, switch her off.", ("kitchen",), "state(kettle, toggled_on)"),
+])
+def test_she_in_a_state_only_a_thing_can_be_in_is_the_thing(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"if she be still burning, switch her off": "she" as the subject of an on/open/full state
+    is the nearest thing named that can take it, as people speak of a lamp or an engine
+    (`analysis._Reader._machine`)."""
+    assert _asks(text, rooms, condition)
+
+
+def test_she_who_acts_is_no_thing() -> None:
+    """"Lena thinks she left the desktop on": "she" before a verb is a person; the state is the
+    desktop's, asked by the condition that follows."""
+    text = "Lena thinks she left the desktop on. If it's still running, shut it down."
+    assert set(_factors(text, ("control_room",))) == {"desktop_computer_toggled_on"}
+

@@ -224,6 +224,10 @@ _WE_HAVE = re.compile(r"\b(?:we|you|i)(?: still| also| even)?(?: do| does| did)?
                       r"(?: (?:a|an|any|some))?$")
 _ASIDE = re.compile(r"\s*\([^()]*\)\W*$")
 
+#: the verb and adverbs between "she" and a state ("if she be still burning", "if she's on")
+_SHE_BE = frozenset({"is", "be", "was", "still", "already", "left", "now"})
+#: states a thing can be in and a person, in these texts, is not said to be (not "dirty", "wet")
+_MACHINE_STATES = frozenset({"toggled_on", "open", "filled"})
 #: a dash between words, set off by spaces, that ends a clause as a comma does
 _DASHES = frozenset({"-", "\u2013", "\u2014", "--"})
 
@@ -446,6 +450,8 @@ class _Reader:
                          if str(self.lex.roles.get(r, {}).get("category", "")) in PERSONIFIED]
                 if dolls:
                     found.append(Mention((dolls[-1],), i, i + 1, "pronoun"))
+                elif (machine := self._machine(words, i, [r for m in found if m.end <= i for r in m.roles])):
+                    found.append(Mention((machine,), i, i + 1, "pronoun"))
                 continue
             if i not in covered and w in FORMS and i > 0 and words[i - 1] == "the" and words[i - 2 : i - 1] not in (
                     [p] for p in PLACE_PREPS) \
@@ -732,6 +738,19 @@ class _Reader:
     def _misfit(self, f: Fact) -> bool:
         """Whether `f` is an on/open state (`FITTED`) of a thing that cannot take it."""
         return f.kind == "state" and f.key in FITTED and f.key not in self.capable.get(f.subject, FITTED)
+
+    def _machine(self, words: list[str], i: int, before: list[str]) -> str | None:
+        """"The ship's lantern - if she be still burning, switch her off": "she" as the subject of
+        a state that a person cannot be in but a thing can (on, open, running, full) is the
+        nearest thing named that can take it, as people speak of a lamp, a boat or an engine;
+        None when no state follows or nothing named can take it."""
+        k = i + 1
+        while k < len(words) and words[k] in _SHE_BE:
+            k += 1
+        state = STATE_WORDS.get(words[k]) if k < len(words) and k > i + 1 else None
+        if state is None or state[0] not in _MACHINE_STATES:
+            return None
+        return next((r for r in reversed(self.recent + before) if state[0] in self.capable.get(r, ())), None)
 
     def _can_take(self, f: Fact, roles: Iterable[str]) -> list[str]:
         """The roles among `roles`, other than `f`'s subject, that can take `f`'s state, in order,
