@@ -218,3 +218,19 @@ def test_she_who_acts_is_no_thing() -> None:
     text = "Lena thinks she left the desktop on. If it's still running, shut it down."
     assert set(_factors(text, ("control_room",))) == {"desktop_computer_toggled_on"}
 
+
+@pytest.mark.parametrize(("text", "rooms", "conditions"), [
+    # dev8 multi_room_laundry_collect_d8 (a dad's texts), given an "if"
+    ("Bath towel: if dirty, into the laundry basket; if clean but wet, hang it on the towel rack.", ("bathroom",),
+     ("state(towel, dirty)", "state(towel, wet)")),
+    # written here: a bedroom, a duvet cover
+    ("The duvet cover: if clean and dry, fold it onto the shelf; if dirty, into the hamper.", ("bedroom",),
+     ("state(blanket, dirty)", "state(blanket, wet)")),
+])
+def test_an_elliptic_condition_of_two_states_asks_both(
+        text: str, rooms: tuple[str, ...], conditions: tuple[str, ...]) -> None:
+    """"if clean but wet": each state joined by "and" / "but" in a condition with no subject is
+    asked of the topic, not only the first."""
+    for condition in conditions:
+        assert _asks(text, rooms, condition)
+

@@ -677,13 +677,19 @@ class _Reader:
                               for r in self.topic]
                     break
         if not subjects and not facts and self.topic and self.topic_kind == "role" and len(words) <= 4:
-            # an elliptic condition about the topic: "when dry, ...", "if not ripe, ..."
-            for w in words:
-                if w in STATE_WORDS and w not in ("on", "off", "out"):
+            # an elliptic condition about the topic: "when dry, ...", "if not ripe, ..."; states
+            # joined by "and" / "but" are each asked ("if clean but wet", "clean and dry"), a later
+            # one negated only by its own "not"
+            flags: set[str] = set()
+            for k, w in enumerate(words):
+                if w in STATE_WORDS and w not in ("on", "off", "out") and STATE_WORDS[w][0] not in flags:
+                    if flags and words[k - 1] not in ("and", "but", "not", "still", "yet"):
+                        break
                     flag, pol = STATE_WORDS[w]
-                    facts += [Fact(r, f"state({r}, {flag})", "state", flag, negated=negated != (not pol))
+                    neg = negated if not flags else words[k - 1] == "not"
+                    facts += [Fact(r, f"state({r}, {flag})", "state", flag, negated=neg != (not pol))
                               for r in self.topic]
-                    break
+                    flags.add(flag)
         if "respectively" in words:
             facts = _respectively(facts)
         said_by_pronoun = {r for m in mentions if m.kind == "pronoun" for r in m.roles}
