@@ -234,3 +234,18 @@ def test_an_elliptic_condition_of_two_states_asks_both(
     for condition in conditions:
         assert _asks(text, rooms, condition)
 
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # dev8 multi_room_laundry_collect_d8, as written
+    ("Bath towel... a dirty one goes in the laundry basket... clean but wet, hang it on the towel rack... clean "
+     "and dry, leave it where it is... Love, Dad", ("bathroom",), "state(towel, wet)"),
+    # written here: a hallway, an umbrella
+    ("The umbrella: dirty and wet, stand it in the umbrella stand. Clean and dry, put it on the hook.", ("hallway",),
+     "state(umbrella, wet)"),
+])
+def test_two_bare_states_before_an_instruction_are_its_case(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"clean but wet, hang it on the towel rack": two bare states joined by "and" / "but" and a
+    comma before a verb of putting are one case of the thing spoken of, as one state is
+    (`sentences._STATE_CASE`)."""
+    assert _asks(text, rooms, condition)

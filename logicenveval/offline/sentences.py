@@ -226,9 +226,12 @@ def _state_subject(m: re.Match[str]) -> str:
 
 #: a bare state word and a comma before an instruction ("If there's an umbrella: wet, stand it in
 #: the umbrella stand; dry, lay it on the console table"): the case of the thing spoken of, as
-#: "if it is wet, ..." (the verb of putting after the comma, `ACTIONS`)
+#: "if it is wet, ..." (the verb of putting after the comma, `ACTIONS`); two states joined by
+#: "and" / "but" make one case ("clean but wet, hang it on the towel rack... clean and dry, leave
+#: it where it is")
+_CASE_STATES = "|".join(w for w, (flag, _) in STATE_WORDS.items() if flag in ("dirty", "wet"))
 _STATE_CASE = re.compile(
-    rf"(?:(?<=^)|(?<=[.!?;:\n]))(\s*)({'|'.join(w for w, (flag, _) in STATE_WORDS.items() if flag in ('dirty', 'wet'))})"
+    rf"(?:(?<=^)|(?<=[.!?;:\n]))(\s*)((?:{_CASE_STATES})(?:\s+(?:and|but)\s+(?:still\s+)?(?:{_CASE_STATES}))?)"
     rf",\s+(?=(?:just\s+)?(?:{'|'.join(sorted(ACTIONS))})\b)", re.I | re.M)
 
 
