@@ -12,6 +12,7 @@ from __future__ import annotations
 import pytest
 from reading import asks as _asks
 from reading import factors as _factors
+from reading import placed as _placed
 
 from logicenveval.offline.implied import implied
 from logicenveval.offline.sentences import expand
@@ -249,3 +250,16 @@ def test_two_bare_states_before_an_instruction_are_its_case(
     comma before a verb of putting are one case of the thing spoken of, as one state is
     (`sentences._STATE_CASE`)."""
     assert _asks(text, rooms, condition)
+
+
+@pytest.mark.parametrize(("text", "rooms", "thing", "place"), [
+    # dev7 vestry_choir_secretary_email, and a written one (`test_offline_compound_heads`)
+    ("Put it back in the cardboard box that lives on top of the piano.", ("vestry",), "cardboard_box", "piano"),
+    ("Your alarm clock is on top of the dresser.", ("dorm_room",), "alarm_clock", "dresser"),
+])
+def test_on_top_of_is_on_for_every_reader(text: str, rooms: tuple[str, ...], thing: str, place: str) -> None:
+    """"on top of" is read as "on" once, where the text is expanded (`sentences._ON_TOP`), so the
+    factor reader, the placement reader and the naming see the same words."""
+    assert expand(text) == text.replace("on top of", "on")
+    assert f"on({thing}, {place})" in _placed(text, rooms)
+

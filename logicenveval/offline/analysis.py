@@ -961,8 +961,6 @@ class _Reader:
                 k -= 1  # no preposition of its own: the place is found from the word before it
             else:
                 prep = words[k]
-                if prep == "on" and words[k + 1 : k + 3] == ["top", "of"]:
-                    k += 2
             target = next((t for t in mentions if t.start > k and (
                 t.kind in ("role", "room", "floor") or t.kind == "pronoun" and words[t.start] in ("it", "them"))),
                 None)

@@ -80,11 +80,6 @@ def any_at(text: str) -> str:
                                  f"{m.group('head').lower()} ", text)
 
 
-#: "on top of" is the preposition "on" ("the cardboard box that lives on top of the piano"); left
-#: as it is, its "on" reads as the state (the box switched on) in a condition
-_ON_TOP = re.compile(r"\bon\s+top\s+of\b", re.I)
-
-
 #: "down there", "up there", "over there" point back to a place as "there" does ("The band kept
 #: dumping them on the floor - if they're still down there, ..."); the direction only says where
 #: that place lies from the speaker
@@ -106,7 +101,8 @@ def _any_found(m: re.Match[str]) -> str:
 def implied(sentence: str) -> str:
     """`sentence` with the conditions its grammar implies spelled out as conditionals: an
     instruction that holds "if need be" (`_IF_NEED_BE`), an obligation to a state (`_OBLIGED`)
-    and "any you find there go ..." (`_ANY_FOUND`); "on top of" as "on" (`_ON_TOP`), "down
-    there" as "there" (`_DIRECTED_THERE`); any other sentence as it is."""
-    said = _ANY_FOUND.sub(_any_found, _DIRECTED_THERE.sub("", _ON_TOP.sub("on", sentence)))
+    and "any you find there go ..." (`_ANY_FOUND`); "down there" as "there"
+    (`_DIRECTED_THERE`); any other sentence as it is ("on top of" is "on" for every reader:
+    `sentences.expand`)."""
+    said = _ANY_FOUND.sub(_any_found, _DIRECTED_THERE.sub("", sentence))
     return _OBLIGED.sub(_obliged, _IF_NEED_BE.sub(_if_needed, said))

@@ -616,6 +616,10 @@ def detable(text: str) -> str:
     return "\n".join(out)
 
 
+#: "on top of" is the preposition "on" ("the cardboard box that lives on top of the piano", "the
+#: basket that sits on top of the wardrobe"): read so once, for every reader, so that its "on" is
+#: never the state (the box switched on) nor "top" a part or a thing
+_ON_TOP = re.compile(r"\bon\s+top\s+of\b", re.I)
 #: a verb of becoming in the perfect before a state word is the copula: "if it has run empty",
 #: "if the vase has gone dry", "once the towel has got wet" say it is so now, as "has been" does
 #: (not "gone" alone, which is absence, nor a particle: "has gone off", "has turned on")
@@ -626,8 +630,8 @@ _BECOME = re.compile(r"\b(has|have|had)\s+(?:(just|already|now)\s+)?(?:run|gone|
 def expand(text: str) -> str:
     """The text with contractions spelled out ("it's" -> "it is"), possessives dropped, "w/" read
     as "with", "and/or" as "or", a slash between words as "or" and a verb of becoming in the
-    perfect before a state as "been" (`_BECOME`)."""
-    out = _SLASH.sub(" or ", _AND_OR.sub("or", _WITH.sub("with ", text.replace("\u2019", "'"))))
+    perfect before a state as "been" (`_BECOME`), "on top of" as "on" (`_ON_TOP`)."""
+    out = _SLASH.sub(" or ", _AND_OR.sub("or", _WITH.sub("with ", _ON_TOP.sub("on", text.replace("\u2019", "'")))))
     for pat, repl in _CONTRACTIONS:
         out = re.sub(pat, repl, out, flags=re.I)
     return _BECOME.sub(lambda m: f"{m.group(1)} {m.group(2) + ' ' if m.group(2) else ''}been ", out)
