@@ -263,3 +263,18 @@ def test_on_top_of_is_on_for_every_reader(text: str, rooms: tuple[str, ...], thi
     assert expand(text) == text.replace("on top of", "on")
     assert f"on({thing}, {place})" in _placed(text, rooms)
 
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # dev8 laundry_drying_rack_d8 (a bullet journal)
+    ("• hang up the laundry\n   – washed shirt should be in the laundry basket in the laundry room\n"
+     "   – shirt not in the basket = nothing to do", ("laundry_room",), "inside(shirt, laundry_basket)"),
+    # written here: a study, "=" before an instruction
+    ("Desk lamp on = switch it off.", ("study",), "state(desk_lamp, toggled_on)"),
+    # written here: a kitchen, a door left open
+    ("Fridge open = close it.", ("kitchen",), "state(fridge, open)"),
+])
+def test_a_spaced_equals_sign_is_an_arrow(text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"shirt not in the basket = nothing to do": a spaced "=" between a verbless case and its
+    answer reads as "->" does (`implied._EQUALS`), and an en dash opening a line is a bullet as
+    "-" is (`implied._DASH_BULLET`)."""
+    assert _asks(text, rooms, condition)

@@ -98,11 +98,21 @@ def _any_found(m: re.Match[str]) -> str:
     return f"{cue} {m.group('who')} {m.group('verb')} any there, they {m.group('go')}"
 
 
+#: a spaced "=" between a verbless description and what to do ("shirt not in the basket = nothing
+#: to do", "lamp on = switch it off") reads as an arrow does: the case, then its answer
+_EQUALS = re.compile(r"(?<=[A-Za-z])\s+=\s+(?=[A-Za-z])")
+#: an en or em dash opening a line is a bullet, as "-" is ("– shirt not in the basket = nothing
+#: to do" in a bullet journal); left as it is, it hides the heading after it
+_DASH_BULLET = re.compile(r"^(\s*)[\u2013\u2014](?=\s)", re.M)
+
+
 def implied(sentence: str) -> str:
     """`sentence` with the conditions its grammar implies spelled out as conditionals: an
     instruction that holds "if need be" (`_IF_NEED_BE`), an obligation to a state (`_OBLIGED`)
     and "any you find there go ..." (`_ANY_FOUND`); "down there" as "there"
-    (`_DIRECTED_THERE`); any other sentence as it is ("on top of" is "on" for every reader:
+    (`_DIRECTED_THERE`), a spaced "=" as an arrow (`_EQUALS`), a dash opening a line as a bullet
+    (`_DASH_BULLET`); any other sentence as it is ("on top of" is "on" for every reader:
     `sentences.expand`)."""
-    said = _ANY_FOUND.sub(_any_found, _DIRECTED_THERE.sub("", sentence))
+    said = _EQUALS.sub(" -> ", _DASH_BULLET.sub(r"\1-", sentence))
+    said = _ANY_FOUND.sub(_any_found, _DIRECTED_THERE.sub("", said))
     return _OBLIGED.sub(_obliged, _IF_NEED_BE.sub(_if_needed, said))
