@@ -278,3 +278,25 @@ def test_a_spaced_equals_sign_is_an_arrow(text: str, rooms: tuple[str, ...], con
     answer reads as "->" does (`implied._EQUALS`), and an en dash opening a line is a bullet as
     "-" is (`implied._DASH_BULLET`)."""
     assert _asks(text, rooms, condition)
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition", "not_asked"), [
+    # dev8 bakehouse_closing_checklist (a bakery's closing checklist)
+    ("2. Bread knife, on the counter by the slicer: if it's dirty, wash it and put it away on the magnetic strip. "
+     "3. Unsold loaf left on the counter? It goes in the basket.", ("bakehouse",),
+     "state(knife, dirty)", "state(bread, dirty)"),
+    # written here: a kitchen, a cereal bowl
+    ("Cereal bowl on the table: if it's dirty, wash it. The cereal box goes back in the cabinet.", ("kitchen",),
+     "state(bowl, dirty)", "state(cereal_box, dirty)"),
+    # written here: a study, a laptop desk
+    ("Laptop desk by the window: if it's dusty, wipe it. The laptop goes in the drawer.", ("study",),
+     "state(desk, dirty)", "state(laptop, dirty)"),
+])
+def test_a_things_name_before_anothers_is_the_compounds_modifier(
+        text: str, rooms: tuple[str, ...], condition: str, not_asked: str) -> None:
+    """"Bread knife ...: if it's dirty": a thing's name right before another's, only a space
+    between, is the modifier of a compound whose head is the thing spoken of, so a pronoun after
+    it is the knife, not the bread (`analysis._Reader.mentions`)."""
+    assert _asks(text, rooms, condition)
+    assert not _asks(text, rooms, not_asked)
+
