@@ -300,3 +300,16 @@ def test_a_things_name_before_anothers_is_the_compounds_modifier(
     assert _asks(text, rooms, condition)
     assert not _asks(text, rooms, not_asked)
 
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # dev9 clubhouse_gliding_club_checklist (a challenge / response checklist)
+    ("4. Tech log ............ ON BRIEFING DESK. It's the blue binder - if it's been knocked onto the floor again, "
+     "pick it up and put it back on the desk", ("clubhouse",), "on(blue_folder, floor)"),
+    # written here: a hallway, a backpack
+    ("Jo's stuff is on the sofa. It's the blue backpack - if it's been knocked onto the floor, hang it on the hook.",
+     ("hallway",), "on(blue_backpack, floor)"),
+])
+def test_it_is_the_x_says_which_thing_is_spoken_of(text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"It's the blue binder - if it's been knocked onto the floor": "it is the X" names the thing
+    spoken of, and a pronoun after it is X, not the place named before (`analysis._IDENTIFYING`)."""
+    assert _asks(text, rooms, condition)

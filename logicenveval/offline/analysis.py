@@ -224,6 +224,8 @@ _WE_HAVE = re.compile(r"\b(?:we|you|i)(?: still| also| even)?(?: do| does| did)?
                       r"(?: (?:a|an|any|some))?$")
 _ASIDE = re.compile(r"\s*\([^()]*\)\W*$")
 
+#: "it is the X", "that's the X": a clause that says which thing was spoken of
+_IDENTIFYING = (["it", "is"], ["that", "is"], ["this", "is"], ["it", "was"])
 #: the verb and adverbs between "she" and a state ("if she be still burning", "if she's on")
 _SHE_BE = frozenset({"is", "be", "was", "still", "already", "left", "now"})
 #: states a thing can be in and a person, in these texts, is not said to be (not "dirty", "wet")
@@ -560,6 +562,12 @@ class _Reader:
         # a participle clause set off by a dash as by a comma ("mists them with the plant mister -
         # filling the mister at the sink first if it has run empty")
         first = _later_object(words, found, self.commas | self.dashes) or first
+        if words[:2] in _IDENTIFYING and words[2:3] and words[2] in ARTICLES:
+            # "Tech log ... ON BRIEFING DESK. It's the blue binder - if it's been knocked onto the
+            # floor, ...": "it is the X" says which thing was spoken of; what follows speaks of X
+            named_as = next((m for m in found if m.kind == "role" and m.start >= 2), None)
+            if named_as is not None and not any(w in PLACE_PREPS for w in words[2:named_as.start]):
+                first = named_as
         if first is not None and first.kind != "pronoun":
             self.topic, self.topic_kind = first.roles, first.kind
         thing = next((m for m in found if m.kind == "role" and not _placed(words, m)), None)
