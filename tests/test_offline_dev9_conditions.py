@@ -313,3 +313,19 @@ def test_it_is_the_x_says_which_thing_is_spoken_of(text: str, rooms: tuple[str, 
     """"It's the blue binder - if it's been knocked onto the floor": "it is the X" names the thing
     spoken of, and a pronoun after it is X, not the place named before (`analysis._IDENTIFYING`)."""
     assert _asks(text, rooms, condition)
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # dev8 granny_flat_neighbour_note (a neighbour's note)
+    ("There's been a light on in there every night since Sunday. I think it's the standing lamp by her armchair. "
+     "If it is still on, please switch it off, she worries about the bill.", ("granny_flat",),
+     "state(floor_lamp, toggled_on)"),
+    # written here: a kitchen, a guess with "reckon"
+    ("The kettle was making a noise all night. I reckon it's the coffee maker on the counter. If it's still on, "
+     "switch it off.", ("kitchen",), "state(coffee_maker, toggled_on)"),
+])
+def test_a_guess_which_thing_it_is_says_which_thing_is_spoken_of(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"I think it's the standing lamp": a guess before "it is the X" (`analysis._HEDGE_LEADS`)
+    still names the thing a later pronoun means."""
+    assert _asks(text, rooms, condition)

@@ -226,6 +226,9 @@ _ASIDE = re.compile(r"\s*\([^()]*\)\W*$")
 
 #: "it is the X", "that's the X": a clause that says which thing was spoken of
 _IDENTIFYING = (["it", "is"], ["that", "is"], ["this", "is"], ["it", "was"])
+#: a guess before it ("I think it's the standing lamp", "probably it's the red one")
+_HEDGE_LEADS = frozenset({"i", "think", "guess", "reckon", "believe", "suppose", "probably", "maybe", "pretty",
+                          "sure", "am"})
 #: the verb and adverbs between "she" and a state ("if she be still burning", "if she's on")
 _SHE_BE = frozenset({"is", "be", "was", "still", "already", "left", "now"})
 #: states a thing can be in and a person, in these texts, is not said to be (not "dirty", "wet")
@@ -562,11 +565,13 @@ class _Reader:
         # a participle clause set off by a dash as by a comma ("mists them with the plant mister -
         # filling the mister at the sink first if it has run empty")
         first = _later_object(words, found, self.commas | self.dashes) or first
-        if words[:2] in _IDENTIFYING and words[2:3] and words[2] in ARTICLES:
+        lead = next((k for k, w in enumerate(words) if w not in _HEDGE_LEADS), len(words))
+        if words[lead:lead + 2] in _IDENTIFYING and words[lead + 2:lead + 3] and words[lead + 2] in ARTICLES:
             # "Tech log ... ON BRIEFING DESK. It's the blue binder - if it's been knocked onto the
-            # floor, ...": "it is the X" says which thing was spoken of; what follows speaks of X
-            named_as = next((m for m in found if m.kind == "role" and m.start >= 2), None)
-            if named_as is not None and not any(w in PLACE_PREPS for w in words[2:named_as.start]):
+            # floor, ...", "I think it's the standing lamp by her armchair": "it is the X" says
+            # which thing was spoken of; what follows speaks of X
+            named_as = next((m for m in found if m.kind == "role" and m.start >= lead + 2), None)
+            if named_as is not None and not any(w in PLACE_PREPS for w in words[lead + 2:named_as.start]):
                 first = named_as
         if first is not None and first.kind != "pronoun":
             self.topic, self.topic_kind = first.roles, first.kind
