@@ -329,3 +329,21 @@ def test_a_guess_which_thing_it_is_says_which_thing_is_spoken_of(
     """"I think it's the standing lamp": a guess before "it is the X" (`analysis._HEDGE_LEADS`)
     still names the thing a later pronoun means."""
     assert _asks(text, rooms, condition)
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition", "not_asked"), [
+    # dev9 hospitality_tent_radio_log (a radio exchange, the job said again in clipped form)
+    ("CONTROL: Wallet. If it's there, lost property basket, by the entrance. Over.", ("hospitality_tent",),
+     "exists(wallet)", "exists(basket)"),
+    # written here: a hallway, an umbrella
+    ("Your umbrella. If it's there, umbrella stand, by the door.", ("hallway",), "exists(umbrella)",
+     "exists(umbrella_stand)"),
+])
+def test_if_its_there_asks_whether_the_thing_is_there(
+        text: str, rooms: tuple[str, ...], condition: str, not_asked: str) -> None:
+    """"If it's there" is no "if there are any" (`clauses._THING_PRONOUNS`): it asks whether the
+    thing its pronoun means is there (`analysis._THERE_ONLY`), not whether the holder named after
+    it exists."""
+    assert _asks(text, rooms, condition)
+    assert not _asks(text, rooms, not_asked)
+

@@ -224,6 +224,8 @@ _WE_HAVE = re.compile(r"\b(?:we|you|i)(?: still| also| even)?(?: do| does| did)?
                       r"(?: (?:a|an|any|some))?$")
 _ASIDE = re.compile(r"\s*\([^()]*\)\W*$")
 
+#: a condition that only says its thing is there ("if it's there", "if they're still there")
+_THERE_ONLY = re.compile(r"^\W*(?:it|they) (?:is|are) (?:still )?there\W*$")
 #: "it is the X", "that's the X": a clause that says which thing was spoken of
 _IDENTIFYING = (["it", "is"], ["that", "is"], ["this", "is"], ["it", "was"])
 #: a guess before it ("I think it's the standing lamp", "probably it's the red one")
@@ -1954,6 +1956,10 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 if "not" in {w for w, _, _ in tokens(expand(said))}:
                     # "the drawer might already be open, and if it isn't, open it": the opposite
                     facts = [replace(f, negated=not f.negated) for f in facts]
+            elif role == "condition" and not facts and names and _THERE_ONLY.match(expand(said).lower()):
+                # "Wallet. If it's there, lost property basket": with no place named before to
+                # point to, "it is there" asks whether the thing is there at all
+                facts = [Fact(r, f"exists({r})", "exists") for r in names[:1]]
             elif role == "statement" and _elaborates(clauses, grammatical, said):
                 # "anything on the floor should go where it belongs - the book on the couch, a toy
                 # in the toy box": a verbless list after a clause that moves things says where each

@@ -77,6 +77,8 @@ ELSE_CUES = ("or else", "otherwise", "else", "failing that", "if not", "if there
 ALTERNATIVES = ELSE_CUES[:4]
 #: words after "if" that make it a condition of availability ("if there are any")
 AVAILABILITY = frozenset({"available", "any", "present", "possible", "exist", "exists", "there"})
+#: pronouns of a thing: "if it's there" asks where that thing is, not whether there are any
+_THING_PRONOUNS = frozenset({"it", "they", "she", "he"})
 #: how a sentence that sets the scene opens ("there is ...", "you are in ..."); a doubt before it
 #: ("maybe there are some wipes ...") makes the piece uncertain instead (`_split`)
 SCENE_START = re.compile(r"^\W*([a-z' ,]{0,50}?\bthere(?: is| are|['\u2019]?s|['\u2019]re)\b(?! (no|not|maybe|possibly))"
@@ -360,7 +362,8 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
     start, cue = best
     after = re.match(r"\W*([a-z' ]{0,30}?)\W*(?:$|[,;]|\s-\s)", expand(low[start + len(cue):]))
     if cue in ("if", "in case") and after and set(after.group(1).split()) & AVAILABILITY \
-            and len(after.group(1).split()) <= 3 and not set(after.group(1).split()) & NEGATIONS:
+            and len(after.group(1).split()) <= 3 and not set(after.group(1).split()) & NEGATIONS \
+            and after.group(1).split()[0] not in _THING_PRONOUNS:
         # "with the wipes if there are any, else with the mop": the alternative is its own piece
         other = re.search(r"[,;]\s*(?:otherwise|else|or else|failing that)\b", sentence[start:], re.I)
         if other is not None:
