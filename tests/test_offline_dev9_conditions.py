@@ -347,3 +347,20 @@ def test_if_its_there_asks_whether_the_thing_is_there(
     assert _asks(text, rooms, condition)
     assert not _asks(text, rooms, not_asked)
 
+
+@pytest.mark.parametrize(("text", "rooms", "condition", "not_asked"), [
+    # dev8 kitchen_fridge_restock_d8 (a note on the back of a receipt)
+    ("Might be a tomato on the counter too: ripe one → fridge, not ripe yet → fruit bowl.", ("kitchen",),
+     "attr(tomato, ripeness, ripe)", ""),
+    # written here: a study, a mug
+    ("There may be a mug on the desk: dirty one -> sink, clean one -> shelf.", ("study",), "state(mug, dirty)",
+     "state(sink, dirty)"),
+])
+def test_the_cases_of_an_arrow_list_are_told_apart(
+        text: str, rooms: tuple[str, ...], condition: str, not_asked: str) -> None:
+    """"ripe one -> fridge, not ripe yet -> fruit bowl": a comma before a one-word case and its
+    arrow ends the answer before it (`sentences._CASE_AFTER_COMMA`), and a case said as "<adjective>
+    one" is "a <adjective> one", the thing spoken of (`implied._BARE_ONE`), not the place named
+    just before."""
+    assert _asks(text, rooms, condition)
+    assert not not_asked or not _asks(text, rooms, not_asked)

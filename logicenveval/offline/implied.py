@@ -106,13 +106,26 @@ _EQUALS = re.compile(r"(?<=[A-Za-z])\s+=\s+(?=[A-Za-z])")
 _DASH_BULLET = re.compile(r"^(\s*)[\u2013\u2014](?=\s)", re.M)
 
 
+#: the arrow of a case and its answer, as written ("ripe one -> fridge", "not ripe yet \u2192 fruit bowl")
+_ARROW = r"(?:->|=>|\u2192)"
+#: a case said as "<adjective> one" before its arrow, the article dropped as a note drops it
+#: ("dirty one -> sink", "ripe one -> fridge"): "a dirty one", so "one" is the thing spoken of
+_BARE_ONE = re.compile(rf"(^|[;:,]\s*)([a-z]+)(\s+ones?\s*{_ARROW})", re.I | re.M)
+
+
+def _cases(sentence: str) -> str:
+    """`sentence` with the article of an arrow list's cases restored (`_BARE_ONE`)."""
+    return _BARE_ONE.sub(lambda m: m.group(0) if m.group(2).lower() in ("a", "an", "the", "any", "each", "no")
+                         else f"{m.group(1)}a {m.group(2)}{m.group(3)}", sentence)
+
+
 def implied(sentence: str) -> str:
     """`sentence` with the conditions its grammar implies spelled out as conditionals: an
     instruction that holds "if need be" (`_IF_NEED_BE`), an obligation to a state (`_OBLIGED`)
     and "any you find there go ..." (`_ANY_FOUND`); "down there" as "there"
     (`_DIRECTED_THERE`), a spaced "=" as an arrow (`_EQUALS`), a dash opening a line as a bullet
-    (`_DASH_BULLET`); any other sentence as it is ("on top of" is "on" for every reader:
+    (`_DASH_BULLET`), "a" before a case "<adjective> one ->" (`_cases`); any other sentence as it is ("on top of" is "on" for every reader:
     `sentences.expand`)."""
-    said = _EQUALS.sub(" -> ", _DASH_BULLET.sub(r"\1-", sentence))
+    said = _cases(_EQUALS.sub(" -> ", _DASH_BULLET.sub(r"\1-", sentence)))
     said = _ANY_FOUND.sub(_any_found, _DIRECTED_THERE.sub("", said))
     return _OBLIGED.sub(_obliged, _IF_NEED_BE.sub(_if_needed, said))

@@ -341,9 +341,9 @@ _EMOJI = re.compile(r"[ \t]*[\U0001F000-\U0001FAFF\u2764\u263a][\U0001F000-\U000
 
 #: "clean -> kitchen cabinet, dirty -> dishwasher": a comma before a bare state word and an arrow
 #: closes the answer before it, so the state is the case of the thing spoken of, not of the place
-#: just named; read as the ";" between two cases
-_CASE_AFTER_COMMA = re.compile(
-    rf",\s*(?=(?:not\s+)?(?:{'|'.join(sorted(w for w in STATE_WORDS if ' ' not in w))})\s*->)", re.I)
+#: just named; read as the ";" between two cases. So for any one-word case, with "one" or "yet"
+#: after it ("ripe one -> fridge, not ripe yet -> fruit bowl")
+_CASE_AFTER_COMMA = re.compile(r",\s*(?=(?:not\s+)?[a-z]+(?:\s+(?:ones?|yet))?\s*->)", re.I)
 
 
 #: "1. The plate on the counter, if there is one: ...": a thing at a place heading its clause,
