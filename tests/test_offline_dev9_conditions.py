@@ -10,10 +10,12 @@ written here in another room with other objects."""
 from __future__ import annotations
 
 import pytest
+from reading import CATALOG, brief
 from reading import asks as _asks
 from reading import factors as _factors
 from reading import placed as _placed
 
+from logicenveval.offline.analysis import analyse
 from logicenveval.offline.implied import implied
 from logicenveval.offline.sentences import expand
 
@@ -364,3 +366,21 @@ def test_the_cases_of_an_arrow_list_are_told_apart(
     just before."""
     assert _asks(text, rooms, condition)
     assert not not_asked or not _asks(text, rooms, not_asked)
+
+
+@pytest.mark.parametrize(("text", "rooms", "group"), [
+    # dev8 multi_room_laundry_collect_d8 (a dad's texts)
+    ("Your shirt... if it's clean fold it away in the wardrobe in your bedroom... if it's dirty straight into the "
+     "washing machine... unless the machine's already running, then into the hamper... and if the hamper's full, "
+     "into the laundry basket instead... Love, Dad", ("bedroom", "laundry_room"),
+     ["shirt_dirty", "washing_machine_toggled_on", "hamper_filled"]),
+    # written here: a kitchen, a mug
+    ("Your mug... if it is dirty into the sink... unless the sink is full, then onto the counter... Love, Mum",
+     ("kitchen",), ["mug_dirty", "sink_filled"]),
+])
+def test_a_trailing_ellipsis_before_a_lower_case_word_goes_on_with_the_sentence(
+        text: str, rooms: tuple[str, ...], group: list[str]) -> None:
+    """"if it's dirty straight into the washing machine... unless the machine's already running":
+    a trailing ellipsis before a lower-case word is a pause, so the conditions after it depend on
+    those before it and LogicEnvGen plans their combinations (`analysis._TRAILING`)."""
+    assert group in analyse(brief(text, rooms), CATALOG).groups

@@ -226,6 +226,8 @@ _ASIDE = re.compile(r"\s*\([^()]*\)\W*$")
 
 #: a condition that only says its thing is there ("if it's there", "if they're still there")
 _THERE_ONLY = re.compile(r"^\W*(?:it|they) (?:is|are) (?:still )?there\W*$")
+#: a trailing ellipsis ("... if it's dirty straight into the washing machine...")
+_TRAILING = ("...", "\u2026")
 #: "it is the X", "that's the X": a clause that says which thing was spoken of
 _IDENTIFYING = (["it", "is"], ["that", "is"], ["this", "is"], ["it", "was"])
 #: a guess before it ("I think it's the standing lamp", "probably it's the red one")
@@ -1976,6 +1978,12 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
         if bullets[si] is not None and si + 1 < len(sentences) and bullets[si + 1] == bullets[si]:
             continue  # "* Bedroom: table lamp on? -> off. Wardrobe doors open? -> close.": one item
+        if bullets[si] is None and si + 1 < len(sentences) and sent.rstrip().endswith(_TRAILING) \
+                and sentences[si + 1].lstrip()[:1].islower():
+            # "if it's dirty straight into the washing machine... unless the machine's already
+            # running, then into the hamper...": a trailing ellipsis before a lower-case word is a
+            # pause, not a sentence end; the conditions go on
+            continue
         if bullets[si] is not None or sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences) or (
                 _turn_starts(reader, cut[si + 1], speakers)):
             # (a bullet item ends its unit, full stop or not: "- racket too if its lying on the floor")
