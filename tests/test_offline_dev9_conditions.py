@@ -303,6 +303,14 @@ def test_a_things_name_before_anothers_is_the_compounds_modifier(
     assert not _asks(text, rooms, not_asked)
 
 
+def test_a_two_word_name_before_a_generic_head_keeps_its_reading() -> None:
+    """"Air con unit ........ OFF, if running": a name of two words before "unit" is the thing
+    itself, not the modifier of a shelving unit."""
+    text = "3. Air con unit ........ OFF, if running\n5. First aid kit ....... The kit stays on the shelving unit."
+    assert _asks(text, ("clubhouse",), "state(air_conditioner, toggled_on)")
+    assert not _asks(text, ("clubhouse",), "state(shelving_unit, toggled_on)")
+
+
 @pytest.mark.parametrize(("text", "rooms", "condition"), [
     # dev9 clubhouse_gliding_club_checklist (a challenge / response checklist)
     ("4. Tech log ............ ON BRIEFING DESK. It's the blue binder - if it's been knocked onto the floor again, "

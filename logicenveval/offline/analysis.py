@@ -436,9 +436,11 @@ class _Reader:
         found = [self._recent_first(m) for m in self.lex.find_mentions(toks) if not _verb_read(toks, m)]
         # "the kitchen sink", "the bathroom mirror": a room's name right before a thing's names the thing
         found = [m for m in found if m.kind != "room" or not any(x.start == m.end and x.kind == "role" for x in found)]
-        # "Bread knife, on the counter ...: if it's dirty": a thing's name right before another's,
-        # with only a space between, is the compound's modifier; the thing is the head (the knife)
-        found = [m for m in found if m.kind != "role" or not any(
+        # "Bread knife, on the counter ...: if it's dirty": a one-word name of a thing right before
+        # another's, with only a space between, is the compound's modifier; the thing is the head
+        # (the knife). A name of two words keeps its own reading: in "Air con unit" the "unit" is
+        # the air conditioner's, no shelving unit
+        found = [m for m in found if m.kind != "role" or m.end - m.start > 1 or not any(
             x.start == m.end and x.kind == "role" and set(x.roles) != set(m.roles)
             and toks[m.end][1] - toks[m.end - 1][2] == 1 for x in found)]
         relative = words[:1] in (["which"], ["who"]) and bool(self.recent) and self.topic_kind == "role"
