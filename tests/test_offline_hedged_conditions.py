@@ -280,7 +280,7 @@ def test_a_state_said_next_to_a_thing_that_cannot_take_it_is_not_asked_of_it(
      "basket"),
 ])
 def test_on_top_of_is_a_place_not_the_state_on(text: str, rooms: tuple[str, ...], thing: str) -> None:
-    """"on top of" is read as "on" (`implied._ON_TOP`): its "on" is no switched-on state of the
+    """"on top of" is read as "on" (`sentences._ON_TOP`): its "on" is no switched-on state of the
     thing it is said with."""
     found = _factors(text, rooms)
     assert not any(f"state({thing}, toggled_on)" in v for values in found.values() for v in values)

@@ -56,7 +56,9 @@ from logicenveval.offline.sentences import (
     EVENT_VERBS,
     FORMS,
     FOUND_PARTICIPLES,
+    FREQUENCY,
     HABITUAL_WORDS,
+    NORM_ADVERBS,
     PREP_IN,
     PREP_ON,
     STATE_WORDS,
@@ -80,7 +82,9 @@ DESCRIPTIVE = frozenset(
      # slang verbs of resting ("my mug might be chilling on the desk")
      "chill", "chills", "chilling",
      # "land (up)" for "end up" (British, South African: "if a cushion landed up on the floor")
-     "landed", "lands", "landing"]
+     "landed", "lands", "landing",
+     # "wind up" for "end up" (American: "if that detergent bottle has wound up on the floor")
+     "wound", "winds", "wind", "winding"]
 )
 #: verbs after a subject that announce where it must go (a goal, not a condition)
 MOTION = frozenset(
@@ -116,7 +120,7 @@ TOWARDS = frozenset({"onto", "into", "off", "away", "down", "across"})
 PERFECT = frozenset({"have", "has", "had", "'ve", "ve"})
 #: participles that turn a noun phrase into a description of the current situation
 SITUATION_PARTICIPLES = frozenset({"left", "lying", "lie", "lies", "sitting", "found", "dropped", "fallen", "fell",
-                                   "slipped", "rolled", "landed",
+                                   "slipped", "rolled", "landed", "wound",
                                    "scattered", "forgotten", "standing", "ended", "rolling", "falling",
                                    "ending"}) | HOMES
 #: determiners of an object already known to be there ("the", "my"): see `Fact.definite`
@@ -215,10 +219,26 @@ class TaskAnalysis:
 
 
 #: "if we still have one", "if we don't have a spare": the household owns the object, or not
-_WE_HAVE = re.compile(r"\b(?:we|you|i)(?: still| also| even)?(?: do| does| did)?(?: not)? (?:have|has)(?: still| also)?(?: got)?"
+_WE_HAVE = re.compile(r"\b(?:we|you|i)(?: still| also| even)?(?: do| does| did)?(?: not)? (?:have|has)(?: not)?(?: still| also)?"
+                      r"(?: got)?"
                       r"(?: (?:a|an|any|some))?$")
 _ASIDE = re.compile(r"\s*\([^()]*\)\W*$")
 
+#: a condition that only says its thing is there ("if it's there", "if they're still there")
+_THERE_ONLY = re.compile(r"^\W*(?:it|they) (?:is|are) (?:still )?there\W*$")
+#: a trailing ellipsis ("... if it's dirty straight into the washing machine...")
+_TRAILING = ("...", "\u2026")
+#: "it is the X", "that's the X": a clause that says which thing was spoken of
+_IDENTIFYING = (["it", "is"], ["that", "is"], ["this", "is"], ["it", "was"])
+#: a guess before it ("I think it's the standing lamp", "probably it's the red one")
+_HEDGE_LEADS = frozenset({"i", "think", "guess", "reckon", "believe", "suppose", "probably", "maybe", "pretty",
+                          "sure", "am"})
+#: the verb and adverbs between "she" and a state ("if she be still burning", "if she's on")
+_SHE_BE = frozenset({"is", "be", "was", "still", "already", "left", "now"})
+#: states a thing can be in and a person, in these texts, is not said to be (not "dirty", "wet")
+_MACHINE_STATES = frozenset({"toggled_on", "open", "filled"})
+#: a dash between words, set off by spaces, that ends a clause as a comma does
+_DASHES = frozenset({"-", "\u2013", "\u2014", "--"})
 
 #: a verb and its particle that together say a state ("the drawer may be pulled out" is open):
 #: read as the state word (`STATE_WORDS`) before the clause is read
@@ -388,6 +408,7 @@ class _Reader:
         self.coordinated = False
         #: the words of the clause being read that a comma stands before (`_joined`)
         self.commas: frozenset[int] = frozenset()
+        self.dashes: frozenset[int] = frozenset()
         #: the words of the clause being read that a hyphen joins to the word before ("the
         #: lost-property cart"): a hyphenated modifier counts as one word between a preposition
         #: and its place (`_location`)
@@ -420,6 +441,13 @@ class _Reader:
         found = [self._recent_first(m) for m in self.lex.find_mentions(toks) if not _verb_read(toks, m)]
         # "the kitchen sink", "the bathroom mirror": a room's name right before a thing's names the thing
         found = [m for m in found if m.kind != "room" or not any(x.start == m.end and x.kind == "role" for x in found)]
+        # "Bread knife, on the counter ...: if it's dirty": a one-word name of a thing right before
+        # another's, with only a space between, is the compound's modifier; the thing is the head
+        # (the knife). A name of two words keeps its own reading: in "Air con unit" the "unit" is
+        # the air conditioner's, no shelving unit
+        found = [m for m in found if m.kind != "role" or m.end - m.start > 1 or not any(
+            x.start == m.end and x.kind == "role" and set(x.roles) != set(m.roles)
+            and toks[m.end][1] - toks[m.end - 1][2] == 1 for x in found)]
         relative = words[:1] in (["which"], ["who"]) and bool(self.recent) and self.topic_kind == "role"
         if relative:
             # "... hung in the wardrobe, which is opened first if its door is closed": a clause
@@ -443,6 +471,8 @@ class _Reader:
                          if str(self.lex.roles.get(r, {}).get("category", "")) in PERSONIFIED]
                 if dolls:
                     found.append(Mention((dolls[-1],), i, i + 1, "pronoun"))
+                elif (machine := self._machine(words, i, [r for m in found if m.end <= i for r in m.roles])):
+                    found.append(Mention((machine,), i, i + 1, "pronoun"))
                 continue
             if i not in covered and w in FORMS and i > 0 and words[i - 1] == "the" and words[i - 2 : i - 1] not in (
                     [p] for p in PLACE_PREPS) \
@@ -546,7 +576,17 @@ class _Reader:
                     self.plural_ref.pop(r, None)
         first = next((m for m in found if m.kind in ("role", "floor", "pronoun")), None)
         first = _direct_object(words, found, first)
-        first = _later_object(words, found, self.commas) or first
+        # a participle clause set off by a dash as by a comma ("mists them with the plant mister -
+        # filling the mister at the sink first if it has run empty")
+        first = _later_object(words, found, self.commas | self.dashes) or first
+        lead = next((k for k, w in enumerate(words) if w not in _HEDGE_LEADS), len(words))
+        if words[lead:lead + 2] in _IDENTIFYING and words[lead + 2:lead + 3] and words[lead + 2] in ARTICLES:
+            # "Tech log ... ON BRIEFING DESK. It's the blue binder - if it's been knocked onto the
+            # floor, ...", "I think it's the standing lamp by her armchair": "it is the X" says
+            # which thing was spoken of; what follows speaks of X
+            named_as = next((m for m in found if m.kind == "role" and m.start >= lead + 2), None)
+            if named_as is not None and not any(w in PLACE_PREPS for w in words[lead + 2:named_as.start]):
+                first = named_as
         if first is not None and first.kind != "pronoun":
             self.topic, self.topic_kind = first.roles, first.kind
         thing = next((m for m in found if m.kind == "role" and not _placed(words, m)), None)
@@ -564,6 +604,8 @@ class _Reader:
         words = [t[0] for t in toks]
         self.commas = frozenset(k for k in range(1, len(toks)) if "," in said[toks[k - 1][2]:toks[k][1]])
         self.hyphens = frozenset(k for k in range(1, len(toks)) if said[toks[k - 1][2]:toks[k][1]] == "-")
+        self.dashes = frozenset(k for k in range(1, len(toks)) if said[toks[k - 1][2]:toks[k][1]].strip() in _DASHES
+                                and said[toks[k - 1][2]:toks[k][1]] != "-")
         mentions = self.mentions(words, toks)
         self.starts = frozenset(x.start for x in mentions if x.kind == "role")
         for m in mentions:
@@ -667,13 +709,19 @@ class _Reader:
                               for r in self.topic]
                     break
         if not subjects and not facts and self.topic and self.topic_kind == "role" and len(words) <= 4:
-            # an elliptic condition about the topic: "when dry, ...", "if not ripe, ..."
-            for w in words:
-                if w in STATE_WORDS and w not in ("on", "off", "out"):
+            # an elliptic condition about the topic: "when dry, ...", "if not ripe, ..."; states
+            # joined by "and" / "but" are each asked ("if clean but wet", "clean and dry"), a later
+            # one negated only by its own "not"
+            flags: set[str] = set()
+            for k, w in enumerate(words):
+                if w in STATE_WORDS and w not in ("on", "off", "out") and STATE_WORDS[w][0] not in flags:
+                    if flags and words[k - 1] not in ("and", "but", "not", "still", "yet"):
+                        break
                     flag, pol = STATE_WORDS[w]
-                    facts += [Fact(r, f"state({r}, {flag})", "state", flag, negated=negated != (not pol))
+                    neg = negated if not flags else words[k - 1] == "not"
+                    facts += [Fact(r, f"state({r}, {flag})", "state", flag, negated=neg != (not pol))
                               for r in self.topic]
-                    break
+                    flags.add(flag)
         if "respectively" in words:
             facts = _respectively(facts)
         said_by_pronoun = {r for m in mentions if m.kind == "pronoun" for r in m.roles}
@@ -730,6 +778,19 @@ class _Reader:
     def _misfit(self, f: Fact) -> bool:
         """Whether `f` is an on/open state (`FITTED`) of a thing that cannot take it."""
         return f.kind == "state" and f.key in FITTED and f.key not in self.capable.get(f.subject, FITTED)
+
+    def _machine(self, words: list[str], i: int, before: list[str]) -> str | None:
+        """"The ship's lantern - if she be still burning, switch her off": "she" as the subject of
+        a state that a person cannot be in but a thing can (on, open, running, full) is the
+        nearest thing named that can take it, as people speak of a lamp, a boat or an engine;
+        None when no state follows or nothing named can take it."""
+        k = i + 1
+        while k < len(words) and words[k] in _SHE_BE:
+            k += 1
+        state = STATE_WORDS.get(words[k]) if k < len(words) and k > i + 1 else None
+        if state is None or state[0] not in _MACHINE_STATES:
+            return None
+        return next((r for r in reversed(self.recent + before) if state[0] in self.capable.get(r, ())), None)
 
     def _can_take(self, f: Fact, roles: Iterable[str]) -> list[str]:
         """The roles among `roles`, other than `f`'s subject, that can take `f`'s state, in order,
@@ -953,8 +1014,6 @@ class _Reader:
                 k -= 1  # no preposition of its own: the place is found from the word before it
             else:
                 prep = words[k]
-                if prep == "on" and words[k + 1 : k + 3] == ["top", "of"]:
-                    k += 2
             target = next((t for t in mentions if t.start > k and (
                 t.kind in ("role", "room", "floor") or t.kind == "pronoun" and words[t.start] in ("it", "them"))),
                 None)
@@ -1285,8 +1344,38 @@ def _anaphoric(text: str, facts: list[Fact]) -> bool:
     if any(not f.goal for f in facts):
         return False
     if words & DISCOVERY and words & AGENTS:
-        return words <= ANAPHORIC | {"not"} | DISCOVERY | AGENTS | _HERE
+        # "if you find it", "if you find one": one of the things just spoken of
+        return words <= ANAPHORIC | {"not"} | DISCOVERY | AGENTS | _HERE | FOUND_ONE
     return points_back(text)
+
+
+def _come_upon(clauses: list[Clause], sentence: int, text: str) -> tuple[list[Fact], tuple[str, ...]]:
+    """What "if you find it / one" asks when the clause it points back to says nothing of where
+    or how the thing is ("Laptops get left behind. If you find one, ...", "somebody's reported a
+    wallet left in there. If you find it, ..."): whether the thing that clause names is there at
+    all. Nothing for a condition that is no coming upon, or with no such clause."""
+    words = {w for w, _, _ in tokens(expand(text))}
+    if not (words & DISCOVERY and words & AGENTS):
+        return [], ()
+    for cl in reversed(clauses):
+        if cl.sentence < sentence - 1:
+            break
+        if cl.mentions and cl.role in ("statement", "scene", "uncertain", "consequence"):
+            r = cl.mentions[0]
+            return [Fact(r, f"exists({r})", "exists")], (r,)
+    return [], ()
+
+
+#: adverbs that make what someone does a habit ("always", "never" too: "the door never gets shut")
+_HABIT_ADVERBS = FREQUENCY | NORM_ADVERBS | {"never"}
+
+
+def _habit_of_others(text: str) -> bool:
+    """A clause saying what someone other than the reader habitually does ("The band kept
+    dumping them on the floor", "The Y7s always manage to leave a pair of scissors on the
+    floor"): a habit (`sentences.habitual`) or a frequency adverb, and no "you" acting."""
+    words = re.findall(r"[a-z']+", expand(text).lower())
+    return (habitual(words) or bool(set(words) & _HABIT_ADVERBS)) and not set(words) & {"you", "u"}
 
 
 def _antecedent(clauses: list[Clause], sentence: int, pointing: set[int]) -> tuple[list[Fact], tuple[str, ...]]:
@@ -1302,6 +1391,12 @@ def _antecedent(clauses: list[Clause], sentence: int, pointing: set[int]) -> tup
             reach = min(reach, cl.sentence - 1)
             continue
         said = [replace(f, modifier=False, definite=False) for f in cl.facts if not f.goal]
+        if not said and _habit_of_others(cl.text):
+            # "The band kept dumping them on the floor - if they're still there, ...", "The Y7s
+            # always manage to leave a pair of scissors on the floor. If you find any there": where
+            # others habitually put a thing is where it may be now, not a goal of the reader's
+            said = [replace(f, goal=False, modifier=False, definite=False) for f in cl.facts
+                    if f.goal and f.kind == "location"]
         if said:
             if cl.role == "consequence":
                 clauses[j] = replace(cl, role="statement", cue=None)
@@ -1738,7 +1833,8 @@ def _parallel(said: str, facts: list[Fact], clauses: list[Clause], sentence: int
 #: prepositions of a place "there" may take up (the place, not where something goes through)
 _THERE_PREPS = {"on": "on", "onto": "on", "in": "in", "into": "in", "inside": "in"}
 _BE_WORDS = frozenset({"is", "are", "was", "were", "be", "been"})
-#: pronoun subjects of such a condition before a participle of finding or leaving: "If found
+#: pronoun subjects of such a condition before a participle of finding or leaving, or "still"
+#: ("if they're still there": not "already", which asks of a goal, `_already`): "If found
 #: there" (its subject elided, read "if it is found there", `sentences._ELIDED_SUBJECT`) after
 #: "Scissors are not to be left out on the counter" ("if they're already there" is no such place:
 #: it asks whether they are where the instruction before put them)
@@ -1760,7 +1856,7 @@ def _there_named(reader: _Reader, said: str, clauses: list[Clause], sentence: in
     mentions = reader.lex.find_mentions(toks)
     if k == 0 or words[k + 1:k + 2] and words[k + 1] in _BE_WORDS or words[k - 1] in CLAUSE_WORDS \
             or not (any(m.kind == "role" and m.end <= k for m in mentions)
-                    or set(words[:k]) & _THERE_SUBJECTS and words[k - 1] in FOUND_PARTICIPLES) \
+                    or set(words[:k]) & _THERE_SUBJECTS and (words[k - 1] in FOUND_PARTICIPLES or words[k - 1] == "still")) \
             or any(m.kind in ("role", "floor") and m.start > k for m in mentions):
         return said
     for cl in reversed(clauses):
@@ -1917,10 +2013,16 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 facts = done
             if role == "condition" and _anaphoric(said, facts):
                 facts, names = _antecedent(clauses, grammatical, pointing)
+                if not facts:
+                    facts, names = _come_upon(clauses, grammatical, said)
                 pointing.add(len(clauses))
                 if "not" in {w for w, _, _ in tokens(expand(said))}:
                     # "the drawer might already be open, and if it isn't, open it": the opposite
                     facts = [replace(f, negated=not f.negated) for f in facts]
+            elif role == "condition" and not facts and names and _THERE_ONLY.match(expand(said).lower()):
+                # "Wallet. If it's there, lost property basket": with no place named before to
+                # point to, "it is there" asks whether the thing is there at all
+                facts = [Fact(r, f"exists({r})", "exists") for r in names[:1]]
             elif role == "statement" and _elaborates(clauses, grammatical, said):
                 # "anything on the floor should go where it belongs - the book on the couch, a toy
                 # in the toy box": a verbless list after a clause that moves things says where each
@@ -1937,6 +2039,12 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
         if bullets[si] is not None and si + 1 < len(sentences) and bullets[si + 1] == bullets[si]:
             continue  # "* Bedroom: table lamp on? -> off. Wardrobe doors open? -> close.": one item
+        if bullets[si] is None and si + 1 < len(sentences) and sent.rstrip().endswith(_TRAILING) \
+                and sentences[si + 1].lstrip()[:1].islower():
+            # "if it's dirty straight into the washing machine... unless the machine's already
+            # running, then into the hamper...": a trailing ellipsis before a lower-case word is a
+            # pause, not a sentence end; the conditions go on
+            continue
         if bullets[si] is not None or sent.rstrip().endswith((".", "!", "?")) or si + 1 == len(sentences) or (
                 _turn_starts(reader, cut[si + 1], speakers)):
             # (a bullet item ends its unit, full stop or not: "- racket too if its lying on the floor")

@@ -77,6 +77,8 @@ ELSE_CUES = ("or else", "otherwise", "else", "failing that", "if not", "if there
 ALTERNATIVES = ELSE_CUES[:4]
 #: words after "if" that make it a condition of availability ("if there are any")
 AVAILABILITY = frozenset({"available", "any", "present", "possible", "exist", "exists", "there"})
+#: pronouns of a thing: "if it's there" asks where that thing is, not whether there are any
+_THING_PRONOUNS = frozenset({"it", "they", "she", "he"})
 #: how a sentence that sets the scene opens ("there is ...", "you are in ..."); a doubt before it
 #: ("maybe there are some wipes ...") makes the piece uncertain instead (`_split`). A "there"
 #: after a preposition is a place, not the existential "there": "the ceiling fan in there is
@@ -178,6 +180,22 @@ def _apposition(sentence: str) -> str:
     return f"{m.group('lead')}{m.group('list')} {m.group('pred')} - {m.group('rest')}"
 
 
+#: what may follow an inverted "should" ("should the hamper be full", "should its doors be open")
+_INVERTING = ("the|there|a|an|it|they|any|one|your|my|our|its|their|this|that|these|those|some|no|you|we|"
+              "either|neither|each|both|anyone|someone|somebody|anybody")
+#: an inverted "should" after its main clause with no comma ("close the wardrobe should its doors
+#: be open", "put the cover back on should the rain start"): its subject, then "be" or a verb
+#: within a few words; a question asked with a wh-word ("where should the box go?") is none
+_LATE_SHOULD = re.compile(rf"(?<![a-z])should(?=\s+(?:{_INVERTING})(?:\s+[a-z'-]+){{0,3}}?\s+(?:be|have|ever)\b)")
+_WH = re.compile(r"\b(?:what|where|which|who|whom|whose|why|how|when)\b")
+
+
+def late_should(words: list[str], i: int) -> bool:
+    """Whether `words[i]` ("should") opens an inverted condition after its main clause with no
+    comma before it (`_LATE_SHOULD`), for the placement reader's cut."""
+    return bool(_LATE_SHOULD.match(" ".join(words[i:i + 6]))) and not _WH.search(" ".join(words[:i]))
+
+
 def _first_cue(low: str, cues: tuple[str, ...]) -> tuple[int, str] | None:
     best: tuple[int, str] | None = None
     for cue in cues:
@@ -185,8 +203,10 @@ def _first_cue(low: str, cues: tuple[str, ...]) -> tuple[int, str] | None:
         if cue in ("once", "while"):  # a conjunction only before its clause: not "a once-over"
             pattern = rf"(?<![a-z-]){cue}(?=\s+[a-z])"
         if cue == "should":  # only the inverted conditional: "should the hamper be full, ..."
-            pattern = r"(?:^|[,;:(-]\s*|\b(?:and|or|but)\s+)should\b(?=\s+(?:the|there|a|an|it|they|any|one|your|my|our|its|their|this|that|these|those|some|no|you|we|either|neither|each|both)\b)"
+            pattern = rf"(?:^|[,;:(-]\s*|\b(?:and|or|but)\s+)should\b(?=\s+(?:{_INVERTING})\b)"
         m = re.search(pattern, low)
+        if m is None and cue == "should":
+            m = next((x for x in _LATE_SHOULD.finditer(low) if not _WH.search(low[: x.start()])), None)
         if m is None:
             continue
         start = m.end() - len(cue)
@@ -345,7 +365,8 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
     start, cue = best
     after = re.match(r"\W*([a-z' ]{0,30}?)\W*(?:$|[,;]|\s-\s)", expand(low[start + len(cue):]))
     if cue in ("if", "in case") and after and set(after.group(1).split()) & AVAILABILITY \
-            and len(after.group(1).split()) <= 3 and not set(after.group(1).split()) & NEGATIONS:
+            and len(after.group(1).split()) <= 3 and not set(after.group(1).split()) & NEGATIONS \
+            and after.group(1).split()[0] not in _THING_PRONOUNS:
         # "with the wipes if there are any, else with the mop": the alternative is its own piece
         other = re.search(r"[,;]\s*(?:otherwise|else|or else|failing that)\b", sentence[start:], re.I)
         if other is not None:
@@ -558,7 +579,8 @@ def clause_spans(words: list[str], lo: int, hi: int, *, verbs: frozenset[str],
         if w in _HARD:
             cuts += [i, i + 1]
         elif w in SUBORDINATORS and i > lo and words[i - 1] not in ("in", "case") and (
-                w not in MODAL_SUBORDINATORS or words[i - 1] in PUNCT | {"and", "but", "or", "then"}):
+                w not in MODAL_SUBORDINATORS or words[i - 1] in PUNCT | {"and", "but", "or", "then"}
+                or late_should(words[lo:hi], i - lo)):
             cuts.append(i)  # "should" opens a condition only inverted: "..., should the bin be full"
         elif w == "case" and i > lo and words[i - 1] == "in":
             cuts.append(i - 1)

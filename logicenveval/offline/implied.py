@@ -80,13 +80,52 @@ def any_at(text: str) -> str:
                                  f"{m.group('head').lower()} ", text)
 
 
-#: "on top of" is the preposition "on" ("the cardboard box that lives on top of the piano"); left
-#: as it is, its "on" reads as the state (the box switched on) in a condition
-_ON_TOP = re.compile(r"\bon\s+top\s+of\b", re.I)
+#: "down there", "up there", "over there" point back to a place as "there" does ("The band kept
+#: dumping them on the floor - if they're still down there, ..."); the direction only says where
+#: that place lies from the speaker
+_DIRECTED_THERE = re.compile(r"\b(?:down|up|over|out)\s+(?=there\b)", re.I)
+#: "Any you find there go in the grey box", "Any ones we spot down there belong in the bin": a
+#: relative clause of coming upon with "any" as its head is the condition "if you find any there",
+#: and what follows is its instruction
+_ANY_FOUND = re.compile(
+    r"\b(?P<any>any)(?:\s+ones?)?(?:\s+that)?\s+(?P<who>you|we|u)\s+(?P<verb>find|see|spot|notice)\s+there\s+"
+    r"(?P<go>go|goes|belong|belongs|should\s+go|get\s+put|are\s+to\s+go)\b",
+    re.I)
+
+
+def _any_found(m: re.Match[str]) -> str:
+    cue = "If" if m.group("any")[0].isupper() else "if"
+    return f"{cue} {m.group('who')} {m.group('verb')} any there, they {m.group('go')}"
+
+
+#: a spaced "=" between a verbless description and what to do ("shirt not in the basket = nothing
+#: to do", "lamp on = switch it off") reads as an arrow does: the case, then its answer
+_EQUALS = re.compile(r"(?<=[A-Za-z])\s+=\s+(?=[A-Za-z])")
+#: an en or em dash opening a line is a bullet, as "-" is ("– shirt not in the basket = nothing
+#: to do" in a bullet journal); left as it is, it hides the heading after it
+_DASH_BULLET = re.compile(r"^(\s*)[\u2013\u2014](?=\s)", re.M)
+
+
+#: the arrow of a case and its answer, as written ("ripe one -> fridge", "not ripe yet \u2192 fruit bowl")
+_ARROW = r"(?:->|=>|\u2192)"
+#: a case said as "<adjective> one" before its arrow, the article dropped as a note drops it
+#: ("dirty one -> sink", "ripe one -> fridge"): "a dirty one", so "one" is the thing spoken of
+_BARE_ONE = re.compile(rf"(^|[;:,]\s*)([a-z]+)(\s+ones?\s*{_ARROW})", re.I | re.M)
+
+
+def _cases(sentence: str) -> str:
+    """`sentence` with the article of an arrow list's cases restored (`_BARE_ONE`)."""
+    return _BARE_ONE.sub(lambda m: m.group(0) if m.group(2).lower() in ("a", "an", "the", "any", "each", "no")
+                         else f"{m.group(1)}a {m.group(2)}{m.group(3)}", sentence)
 
 
 def implied(sentence: str) -> str:
     """`sentence` with the conditions its grammar implies spelled out as conditionals: an
-    instruction that holds "if need be" (`_IF_NEED_BE`) and an obligation to a state
-    (`_OBLIGED`); "on top of" as "on" (`_ON_TOP`); any other sentence as it is."""
-    return _OBLIGED.sub(_obliged, _IF_NEED_BE.sub(_if_needed, _ON_TOP.sub("on", sentence)))
+    instruction that holds "if need be" (`_IF_NEED_BE`), an obligation to a state (`_OBLIGED`)
+    and "any you find there go ..." (`_ANY_FOUND`); "down there" as "there"
+    (`_DIRECTED_THERE`), a spaced "=" as an arrow (`_EQUALS`), a dash opening a line as a bullet
+    (`_DASH_BULLET`), "a" before a case "<adjective> one ->" (`_cases`); any other sentence as it is ("on top of" is "on" for every reader:
+    `sentences.expand`)."""
+    said = _cases(_EQUALS.sub(" -> ", _DASH_BULLET.sub(r"\1-", sentence)))
+    said = _ANY_FOUND.sub(_any_found, _DIRECTED_THERE.sub("", said))
+    return _OBLIGED.sub(_obliged, _IF_NEED_BE.sub(_if_needed, said))

@@ -536,8 +536,6 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
     if j >= hi or words[j] not in AT:
         return None
     k = j + 1
-    if words[j] == "on" and words[k:k + 2] == ["top", "of"]:
-        k += 2  # "on top of the piano": on it
     while k < hi and (words[k] in ARTICLES or words[k] in COLOR_WORDS or words[k] in STATE_WORDS
                       or words[k] in RANKS and k + 1 < hi and words[k + 1] not in ("of", ",")):
         k += 1

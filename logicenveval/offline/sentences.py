@@ -109,6 +109,11 @@ _CONTRACTIONS = [
     # "thats", "theres" before what follows "is" are "it is", never a possessive
     (rf"\b(it|that|there|what|where)s(?=\s+(?:{'|'.join(_IS_AFTER)})\b)", r"\1 is"),
     (r"(?<![\w'])'t(is|was)\b", r"it \1"),  # "'Tis only paper", "'twas left on": archaic "it is", "it was"
+    # "ain't" (American, dialect): "have not" before "got" ("we ain't got one"), else the copula
+    # its subject takes ("it ain't on", "they ain't there")
+    (r"\b(he|she|it|that|this) ain't(?=\s+(?:got|gotten)\b)", r"\1 has not"),
+    (r"\bain't(?=\s+(?:got|gotten)\b)", "have not"), (r"\b(we|you|they) ain't\b", r"\1 are not"),
+    (r"\bi ain't\b", "i am not"), (r"\bain't\b", "is not"),
     (r"\bcan't\b", "can not"), (r"\bwon't\b", "will not"), (r"n't\b", " not"),
     (r"\b(i|you|we|they)'ve\b", r"\1 have"), (r"\b(i|you|we|they|it)'ll\b", r"\1 will"),
     (r"\b(\w+)s'(\s)", r"\1s\2"), (r"\b(\w+)'s\b", r"\1"),
@@ -168,10 +173,11 @@ _ELIDED_STATE = re.compile(
 #: the same at the end of an instruction's clause, after its verb ("Tablet on the plinth: power
 #: off if still on.", "Heater by the door: switch off if running"): an instruction whose condition
 #: is a bare state, with or without "still" / "already", speaks of the thing it acts on, "if it is
-#: still on"; a bare state opening a sentence ("If dirty, ...") is read elsewhere
+#: still on"; a bare state opening a sentence ("If dirty, ...") is read elsewhere. An aside in
+#: brackets may close the clause ("kettle OFF if on (nearly had a fire Sat!!)")
 _ELIDED_END_STATE = re.compile(
     rf"(?<=\w)(\s+(?:if|unless|when|whenever|once|while))\s+(?=(?:(?:still|already)\s+)?"
-    rf"(?:{'|'.join(sorted(w for w in STATE_WORDS if ' ' not in w))})\s*(?:[.;!]|$))",
+    rf"(?:{'|'.join(sorted(w for w in STATE_WORDS if ' ' not in w))})\s*(?:[.;!(]|$))",
     re.I | re.M)
 
 
@@ -221,9 +227,12 @@ def _state_subject(m: re.Match[str]) -> str:
 
 #: a bare state word and a comma before an instruction ("If there's an umbrella: wet, stand it in
 #: the umbrella stand; dry, lay it on the console table"): the case of the thing spoken of, as
-#: "if it is wet, ..." (the verb of putting after the comma, `ACTIONS`)
+#: "if it is wet, ..." (the verb of putting after the comma, `ACTIONS`); two states joined by
+#: "and" / "but" make one case ("clean but wet, hang it on the towel rack... clean and dry, leave
+#: it where it is")
+_CASE_STATES = "|".join(w for w, (flag, _) in STATE_WORDS.items() if flag in ("dirty", "wet"))
 _STATE_CASE = re.compile(
-    rf"(?:(?<=^)|(?<=[.!?;:\n]))(\s*)({'|'.join(w for w, (flag, _) in STATE_WORDS.items() if flag in ('dirty', 'wet'))})"
+    rf"(?:(?<=^)|(?<=[.!?;:\n]))(\s*)((?:{_CASE_STATES})(?:\s+(?:and|but)\s+(?:still\s+)?(?:{_CASE_STATES}))?)"
     rf",\s+(?=(?:just\s+)?(?:{'|'.join(sorted(ACTIONS))})\b)", re.I | re.M)
 
 
@@ -333,9 +342,9 @@ _EMOJI = re.compile(r"[ \t]*[\U0001F000-\U0001FAFF\u2764\u263a][\U0001F000-\U000
 
 #: "clean -> kitchen cabinet, dirty -> dishwasher": a comma before a bare state word and an arrow
 #: closes the answer before it, so the state is the case of the thing spoken of, not of the place
-#: just named; read as the ";" between two cases
-_CASE_AFTER_COMMA = re.compile(
-    rf",\s*(?=(?:not\s+)?(?:{'|'.join(sorted(w for w in STATE_WORDS if ' ' not in w))})\s*->)", re.I)
+#: just named; read as the ";" between two cases. So for any one-word case, with "one" or "yet"
+#: after it ("ripe one -> fridge, not ripe yet -> fruit bowl")
+_CASE_AFTER_COMMA = re.compile(r",\s*(?=(?:not\s+)?[a-z]+(?:\s+(?:ones?|yet))?\s*->)", re.I)
 
 
 #: "1. The plate on the counter, if there is one: ...": a thing at a place heading its clause,
@@ -608,13 +617,25 @@ def detable(text: str) -> str:
     return "\n".join(out)
 
 
+#: "on top of" is the preposition "on" ("the cardboard box that lives on top of the piano", "the
+#: basket that sits on top of the wardrobe"): read so once, for every reader, so that its "on" is
+#: never the state (the box switched on) nor "top" a part or a thing
+_ON_TOP = re.compile(r"\bon\s+top\s+of\b", re.I)
+#: a verb of becoming in the perfect before a state word is the copula: "if it has run empty",
+#: "if the vase has gone dry", "once the towel has got wet" say it is so now, as "has been" does
+#: (not "gone" alone, which is absence, nor a particle: "has gone off", "has turned on")
+_BECOME = re.compile(r"\b(has|have|had)\s+(?:(just|already|now)\s+)?(?:run|gone|got|gotten|become|turned|grown)\s+(?=(?:"
+                     + "|".join(w for w in STATE_WORDS if w not in ("on", "off", "out")) + r")\b)", re.I)
+
+
 def expand(text: str) -> str:
     """The text with contractions spelled out ("it's" -> "it is"), possessives dropped, "w/" read
-    as "with", "and/or" as "or" and a slash between words as "or"."""
-    out = _SLASH.sub(" or ", _AND_OR.sub("or", _WITH.sub("with ", text.replace("\u2019", "'"))))
+    as "with", "and/or" as "or", a slash between words as "or" and a verb of becoming in the
+    perfect before a state as "been" (`_BECOME`), "on top of" as "on" (`_ON_TOP`)."""
+    out = _SLASH.sub(" or ", _AND_OR.sub("or", _WITH.sub("with ", _ON_TOP.sub("on", text.replace("\u2019", "'")))))
     for pat, repl in _CONTRACTIONS:
         out = re.sub(pat, repl, out, flags=re.I)
-    return out
+    return _BECOME.sub(lambda m: f"{m.group(1)} {m.group(2) + ' ' if m.group(2) else ''}been ", out)
 
 
 def split_sentences(text: str, *, full_stops_only: bool = False) -> list[str]:
