@@ -5,7 +5,7 @@ in other rooms with other objects; each test fails without its rule."""
 
 from __future__ import annotations
 
-from reading import kinds
+from reading import kinds, placed
 
 # -- a noun that only modifies the noun after it names no object -----------------------------------
 
@@ -43,3 +43,20 @@ def test_a_compound_of_a_part_or_a_verb_still_names_the_thing() -> None:
     assert "doll" in kinds("Should the doll or the toy car be on the bed, put it away.", ("childrens_room",))
     assert "mug" in kinds("The mug will be in the sink.", ("kitchen",))
     assert "towel" in kinds("The towel stays on the rail.", ("bathroom",))
+
+
+# -- a thing on an outer part of a piece of furniture is on it, never inside ------------------------
+
+
+def test_a_thing_on_an_outer_part_of_a_container_is_not_inside_it() -> None:
+    # a fridge, a bath, a sink hold things inside only: on their door, side or edge is not in them
+    assert "inside(keys, fridge)" not in placed("The keys are on the fridge door.", ("kitchen",))
+    assert "inside(soap_bar, bathtub)" not in placed("The soap is on the bathtub edge.", ("bathroom",))
+    assert "inside(cloth, sink)" not in placed("The cloth is on the sink edge.", ("kitchen",))
+    # in the door is in it
+    assert "inside(keys, fridge)" in placed("The keys are in the fridge door.", ("kitchen",))
+
+
+def test_a_thing_on_an_outer_part_of_a_surface_is_on_it() -> None:
+    assert "on(book, desk)" in placed("The book is on the corner of the desk.", ("study",))
+    assert "on(mug, desk)" in placed("The mug is on the desk corner.", ("study",))
