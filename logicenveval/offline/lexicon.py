@@ -84,6 +84,27 @@ def adjective_only(word: str) -> bool:
     return set(lemmas) == {"ADJ"} and word in lemmas["ADJ"]
 
 
+#: closed-class words the lemmatiser's dictionary also lists as nouns ("or", a heraldic gold; "i",
+#: the letter): never the head of a noun compound (`compound_head`)
+FUNCTION_WORDS = frozenset({"or", "and", "but", "nor", "i", "me", "it", "itself", "them", "themselves", "us",
+                            "you", "he", "him", "she", "we", "they", "this", "that", "these", "those", "if",
+                            "as", "than", "who", "which", "what"})
+
+
+def compound_head(word: str, after_plural: bool) -> bool:
+    """Whether `word` (as written), right after a noun with nothing between, is the head noun of an
+    English noun compound the noun before modifies ("car park", "food bank", "light bill"): a noun
+    in the lemmatiser's dictionary and no auxiliary, adverb or adjective ("the lamp will", "the mug
+    today", "the lights out"); a verb's form there is a finite verb of the noun before ("the towel
+    stays", "the towels hang"), unless it is the bare form after a singular ("the car park").
+    `FUNCTION_WORDS` are never one."""
+    lemmas = getAllLemmas(word)
+    if word in FUNCTION_WORDS or "NOUN" not in lemmas or {"AUX", "ADV", "ADJ"} & set(lemmas):
+        return False
+    verb = lemmas.get("VERB", ())
+    return not verb or word in verb and not after_plural and word in lemmas["NOUN"]
+
+
 def gerund_of(word: str) -> str | None:
     """The verb whose -ing form `word` is, when it is one ("drying": "dry"; "ceiling", "pudding"
     are no verb's), else None."""

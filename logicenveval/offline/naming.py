@@ -32,10 +32,12 @@ from logicenveval.offline.handlers import handler
 from logicenveval.offline.lexicon import (
     COLOR_WORDS,
     CONTROL_HEADS,
+    FUNCTION_WORDS,
     FURNITURE_PARTS,
     SPARE_WORDS,
     TIME_HEADS,
     adjective_only,
+    compound_head,
     gerund_of,
     singular,
     tokens,
@@ -63,6 +65,13 @@ def _offline_name_objects(payload: dict[str, Any], request: ChatRequest) -> dict
     return {"objects": name_objects(task["description"], load_catalog(), rooms=task.get("rooms", ()))}
 
 
+#: head nouns that name a part of the thing before them, or the place right by it ("the fridge door",
+#: "the lamp cord", "the sink area"): such a compound still names that thing (`modifies_other`)
+PART_HEADS = frozenset({"door", "lid", "edge", "side", "top", "bottom", "back", "front", "handle", "cord",
+                        "cable", "plug", "shade", "leg", "seat", "arm", "base", "corner", "knob", "button",
+                        "screen", "cover", "cap", "strap", "wheel", "rim", "sill", "ledge", "panel", "hinge",
+                        "latch", "lock", "filter", "end", "surface", "area", "space", "zone", "inside",
+                        "outside", "wall", "floor"})
 #: words before a noun that say which one, not what it is like
 _ARTICLES = frozenset({"a", "an", "the", "any", "some", "its", "their", "our", "my", "your", "this",
                        "that", "each", "every", "all", "both", "his", "her"})
@@ -700,6 +709,30 @@ class _Reader:
             return n + 1, category
         return n, category
 
+    def modifies_other(self, i: int, n: int) -> bool:
+        """Whether the one-word name at word `i` only modifies the noun right after it, a noun that
+        names no kind ("Car park gate open", "for the food bank pick-up", "this month light bill",
+        "lights-out list"): the compound is a park, a bank, a bill, so the first noun names no object
+        of its kind. Joined by a hyphen, any word that names no kind makes one word with it; a part of
+        the thing or a place right by it ("the fridge door", "the sink area": `PART_HEADS`) keeps it."""
+        words, raw, gaps = self.text.words, self.text.raw, self.text.gaps
+        j = i + n
+        if n != 1 or j >= len(words) or gaps[j] not in (" ", "-"):
+            return False
+        nxt = words[j]
+        if nxt in self.heads or self.match(j)[1] is not None or nxt in PART_HEADS or nxt in FURNITURE_PARTS \
+                or nxt in TIME_HEADS or not raw[j].isalpha():
+            return False
+        if gaps[j] == "-":
+            return True
+        if self.material(i) or not compound_head(raw[j], raw[i] != words[i]) or self.verb(j):
+            return False
+        # a verb's bare form followed by its complement is the verb of a subject ("my bat and my
+        # racket go in the ..."), not a compound's head ("Car park gate open")
+        after = words[j + 1] if j + 1 < len(words) and gaps[j + 1] == " " else ""
+        return not (getAllLemmas(raw[j]).get("VERB") and (after in _PREPOSITIONS or after in _DETERMINERS
+                                                           or after in FUNCTION_WORDS))
+
     def modifies_next(self, i: int, n: int) -> bool:
         """Whether the one-word noun at word `i` modifies the noun right after it, the head of an
         English noun compound ("the collection basket" is a basket, "the chart table drawer" a
@@ -1239,6 +1272,9 @@ class _Reader:
             n, category = (1, shared) if shared is not None else self.kind_at(i)
             if category is None:
                 i += 1
+                continue
+            if shared is None and self.modifies_other(i, n):
+                i += n  # "Car park gate open", "the food bank pick-up": a park, a bank, no car or food
                 continue
             if shared is None and self.modifies_next(i, n):
                 i += n  # "the collection basket", "the chart table drawer": the last noun is the head

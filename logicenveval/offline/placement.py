@@ -112,6 +112,11 @@ RELATIVE = frozenset({"which", "that", "who"})
 #: words after an article that are no modifier of a place ("on the top of", "in the middle of")
 PREP_OF_PLACE = frozenset({"top", "middle", "side", "end", "edge", "back", "front", "corner", "bottom", "left",
                            "right", "same", "other", "one", "floor"})
+#: the outer parts of a thing ("on the fridge door", "on the side of the bath", "on the desk corner"):
+#: a thing on one is on that thing where it has a top to hold it, and never inside it (`_outer_part`)
+OUTER_PARTS = frozenset({"door", "side", "edge", "rim", "lid", "front", "back", "handle", "corner", "end"})
+#: the preposition `_holder_after` gives a place on an outer part (`_contain`: on a surface, else none)
+ON_PART = "on_part"
 ARTICLES = frozenset({"a", "an", "the", "some", "its", "their", "our", "my", "your", "this", "that",
                       "his", "her", "these", "those", "two", "three", "four", "one", "both", "another"})
 #: words that may stand between the nouns of a list ("the sink, the fridge and a cabinet")
@@ -539,6 +544,9 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
     while k < hi and (words[k] in ARTICLES or words[k] in COLOR_WORDS or words[k] in STATE_WORDS
                       or words[k] in RANKS and k + 1 < hi and words[k + 1] not in ("of", ",")):
         k += 1
+    outer = _outer_part(sent, ms, j, k, hi)
+    if outer is not None:
+        return ON_PART, outer
     whole = _part_of(sent, ms, k, hi)
     if whole is not None:
         # "on the lower shelf of the metal rack": on the rack; "on the top shelf of the wardrobe":
@@ -555,6 +563,24 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
         # names which one (`_room_words`); the place is the thing
         m = next((t for t in ms if t.start == m.end and t.kind == "role"), m)
     return (words[j], m) if m is not None else None
+
+
+def _outer_part(sent: _Sentence, ms: list[Mention], j: int, k: int, hi: int) -> Mention | None:
+    """The thing whose outer part (`OUTER_PARTS`) a place "on" names: "on the fridge door", "on the
+    side of the bath", "on the corner of the desk". A thing there is on the outside of that thing, not
+    in it, whatever a container said "on" otherwise means (`_contain`); "in the fridge door" is in it."""
+    words = sent.words
+    if words[j] not in ("on", "upon"):
+        return None
+    if k + 2 < hi and words[k] in OUTER_PARTS and words[k + 1] == "of":
+        n = k + 2
+        while n < hi and words[n] in ARTICLES:
+            n += 1
+        return next((m for m in ms if m.start == n and m.kind == "role" and len(m.roles) == 1), None)
+    m = next((m for m in ms if m.start == k and m.kind == "role" and len(m.roles) == 1), None)
+    if m is not None and m.end < hi and words[m.end] in OUTER_PARTS and words[m.end + 1:m.end + 2] != ["of"]:
+        return m
+    return None
 
 
 def _part_of(sent: _Sentence, ms: list[Mention], k: int, hi: int) -> Mention | None:
@@ -613,6 +639,8 @@ def _contain(catalog: Catalog, lex: Lexicon, item: str, holder: str, prep: str) 
         return None
     if item_cat is not None and not item_cat.pickable and (item_cat.surface or item_cat.container):
         return None  # furniture rests on the floor, not on another piece
+    if prep == ON_PART:  # "on the fridge door": on a thing with a top, never in it
+        return f"on({item}, {holder})" if cat.surface else None
     inside = cat.container and (prep in PREP_IN or not cat.surface)
     return f"{'inside' if inside else 'on'}({item}, {holder})"
 
