@@ -68,6 +68,12 @@ prints LogCov / SceVR / FauDR for each, then per task:
   Shakespearean English) and eight new tasks in rooms none of the sets above use (a bug report, a
   Jamaican Patois note, a sports commentary, a Taglish text, a bedtime story, a lab protocol, a
   surfer's note, an automated job email with unfilled mail-merge fields). Unseen until measured;
+- `dev11 reworded` and `dev11 new`: tests/data/reader_dev11/ — the eleventh development set,
+  written while dev 10 was being measured: one rewording each of 3 built-in descriptions neither
+  dev 9 nor dev 10 rewords (a sequence of limericks, a vicar's sermon, a press release) and six new
+  tasks in rooms none of the sets above use (a nature-documentary narration, a dungeon master's
+  session notes, a Hinglish note, a YAML file, a sea shanty, a hard-boiled detective's monologue).
+  Unseen until measured;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -84,7 +90,7 @@ like-for-like gap.
 Every run is computed afresh (`fresh=True`: a stored unit is never reused, since the run's
 fingerprint does not cover the reader's code) with the offline model's reply cache off.
 
-    python benchmarks/reader_generalisation.py            # all twenty-four sets (~3-6 min on 2 cores)
+    python benchmarks/reader_generalisation.py            # all twenty-six sets (~3-6 min on 2 cores)
     python benchmarks/reader_generalisation.py --smoke    # two tasks per set (~1 min)
     python benchmarks/reader_generalisation.py --why      # and why each task lost environments
     python benchmarks/reader_generalisation.py --dev-only # without the held-out sets (for tuning)
@@ -108,9 +114,9 @@ earlier `--json` file, a fall marked `FALL`, and exits 1 when any task fell.
 Last line: `reader_generalisation built_in=<LogCov>/<SceVR>/<FauDR> reworded=... new=...
 dev2_new=... dev4_reworded=... dev4_new=... dev3_reworded=... dev3_new=... dev5_reworded=...
 dev5_new=... dev6_reworded=... dev6_new=... dev7_reworded=... dev7_new=... dev8_reworded=...
-dev8_new=... dev9_reworded=... dev9_new=... dev10_reworded=... dev10_new=...
-held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with
-`--dev-only`, the first twenty only).
+dev8_new=... dev9_reworded=... dev9_new=... dev10_reworded=... dev10_new=... dev11_reworded=...
+dev11_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...`
+(with `--dev-only`, the first twenty-two only).
 """
 
 from __future__ import annotations
@@ -138,6 +144,7 @@ DEV7 = ROOT / "tests" / "data" / "reader_dev7"
 DEV8 = ROOT / "tests" / "data" / "reader_dev8"
 DEV9 = ROOT / "tests" / "data" / "reader_dev9"
 DEV10 = ROOT / "tests" / "data" / "reader_dev10"
+DEV11 = ROOT / "tests" / "data" / "reader_dev11"
 HOLDOUT2 = ROOT / "tests" / "data" / "reader_holdout2"
 #: (row name, tasks folder; None = the built-in tasks)
 SETS: tuple[tuple[str, Path | None], ...] = (
@@ -151,6 +158,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
     ("dev8 reworded", DEV8 / "tasks_reworded"), ("dev8 new", DEV8 / "tasks_new"),
     ("dev9 reworded", DEV9 / "tasks_reworded"), ("dev9 new", DEV9 / "tasks_new"),
     ("dev10 reworded", DEV10 / "tasks_reworded"), ("dev10 new", DEV10 / "tasks_new"),
+    ("dev11 reworded", DEV11 / "tasks_reworded"), ("dev11 new", DEV11 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
     ("held-out2 reworded", HOLDOUT2 / "tasks_reworded"), ("held-out2 new", HOLDOUT2 / "tasks_new"),
 )
