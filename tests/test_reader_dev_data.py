@@ -119,3 +119,21 @@ def test_skip_names_a_set_of_the_benchmark_or_stops_before_running() -> None:
     done = subprocess.run([sys.executable, str(script), "--dev-only", "--skip", "dev10 new,dev 10 new"],
                           capture_output=True, text=True, timeout=120)
     assert done.returncode == 2 and "no set named dev 10 new" in done.stderr
+
+
+def test_dev_only_leaves_out_the_held_out_and_the_fresh_sets() -> None:
+    """A tuner runs `--dev-only`: neither the held-out nor the fresh sets may show in it."""
+    import sys
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
+    import reader_generalisation as bench
+
+    def names(dev_only: bool, fresh: bool, skipped: set[str]) -> set[str]:
+        return {name for name, _ in bench.selected(dev_only, fresh, skipped)}
+
+    tuning = names(True, False, set())
+    assert "dev9 new" in tuning and not tuning & (bench.UNSEEN | bench.FRESH)
+    measuring = names(True, True, set())
+    assert measuring >= bench.FRESH and not measuring & bench.UNSEEN
+    everything = names(False, False, {"dev9 new"})
+    assert everything >= bench.UNSEEN | bench.FRESH and "dev9 new" not in everything
