@@ -230,3 +230,20 @@ def test_module_attr_with_the_ray_executor(tmp_path: Path) -> None:
     results = _results(tmp_path)
     assert list(results["results"]) == ["my-generator"] and results["failures"]["my-generator"] == []
     assert results["results"]["my-generator"]["n_envs"] == 6
+
+
+def test_swapping_the_registry_before_the_first_load_leaves_the_built_ins(tmp_path: Path) -> None:
+    """Order-dependent before: with a once-only load, a test that put a copy of the (still empty)
+    registry in place, made a generator, then restored it, left every later test of its worker
+    process with no built-in generator ("unknown generator 'cot'"). A fresh process, so that this
+    is the first load."""
+    code = ("from logicenveval.generators import base\n"
+            "saved = base._REGISTRY\n"
+            "base._REGISTRY = dict(saved)\n"
+            "base.registered()\n"
+            "base._REGISTRY = saved\n"
+            "print(','.join(base.registered()))\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120,
+                          cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    assert {"logicenvgen", "cot", "ifg", "holodeck"} <= set(done.stdout.strip().split(","))

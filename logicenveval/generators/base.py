@@ -7,7 +7,6 @@ it did and where it failed, so that a missed decision path can be traced to its 
 
 from __future__ import annotations
 
-import functools
 import hashlib
 import importlib
 import warnings
@@ -317,11 +316,12 @@ def _short(value: object, quote: bool = True, n: int = 200) -> str:
     return text if len(text) <= n else text[:n - 3] + "..."
 
 
-@functools.cache
 def _load_builtin() -> None:
-    """Register the built-in generators' names and old names, once (cheap: no generator module is
-    imported before it is made)."""
+    """Register the built-in generators' names and old names where missing (a few dict look-ups;
+    no generator module is imported before it is made). Not cached: with a once-only load, a
+    caller that swapped `_REGISTRY` for a copy before the first load (tests do, to register a
+    plug-in) left the restored registry empty for the rest of the process."""
     for name, entry in BUILTIN.items():
-        register(name, entry)
+        _REGISTRY.setdefault(name, entry)
     for old, new in ALIASES.items():
-        register_alias(old, new)
+        _ALIASES.setdefault(old, new)
