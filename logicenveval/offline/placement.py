@@ -82,9 +82,15 @@ STATIVE = frozenset({"lie", "lies", "lay", "lying", "sit", "sits", "sat", "sitti
 #: after a perfect ("has/have been") all of these state a place; after a plain "is/are" only the
 #: `PASSIVE_STATIVE` ones do ("is put on the bed" is an instruction in the passive voice)
 RESULT = frozenset({"left", "dropped", "put", "placed", "thrown", "set", "found", "located", "knocked",
-                    "kept", "stored", "dumped", "abandoned", "forgotten", "parked", "stuck", "present"})
+                    "kept", "stored", "dumped", "abandoned", "forgotten", "parked", "stuck", "present",
+                    "spread", "draped", "slung"})
 PASSIVE_STATIVE = frozenset({"found", "located", "kept", "stored", "situated", "seated",
-                             "present"})  # "a dirty mark is present on the floor"
+                             "present",  # "a dirty mark is present on the floor"
+                             "spread", "draped", "slung"})  # "the throw is draped over the sofa"
+#: verbs of covering and hanging after which "over" names the thing under, which holds it ("the
+#: blanket, spread over the bed", "a towel draped over the chair", "the coat hanging over the
+#: banister"): there "over" is "on" (elsewhere "over" is a particle: "knocked over", "fell over")
+COVERING = frozenset({"spread", "draped", "slung", "thrown", "hanging", "hangs", "hang"})
 PERFECT = frozenset({"has", "have", "had"})
 #: the past forms of "be": before a result participle they report a past event ("was left")
 PAST_BE = frozenset({"was", "were"})
@@ -538,6 +544,8 @@ def _verb_kind(group: list[str]) -> str | None:
 def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[str, Mention] | None:
     """(preposition, place) when tokens from j read "on/in [the ...] <place>"."""
     words = sent.words
+    if j < hi and _covers(words, j):
+        words = [*words[:j], "on", *words[j + 1:]]  # "spread over the bed": on the bed
     if j >= hi or words[j] not in AT:
         return None
     k = j + 1
@@ -565,12 +573,17 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
     return (words[j], m) if m is not None else None
 
 
+def _covers(words: list[str], j: int) -> bool:
+    """Whether words[j] is an "over" that names what a covering verb's thing lies on (`COVERING`)."""
+    return words[j] == "over" and j > 0 and words[j - 1] in COVERING
+
+
 def _outer_part(sent: _Sentence, ms: list[Mention], j: int, k: int, hi: int) -> Mention | None:
     """The thing whose outer part (`OUTER_PARTS`) a place "on" names: "on the fridge door", "on the
     side of the bath", "on the corner of the desk". A thing there is on the outside of that thing, not
     in it, whatever a container said "on" otherwise means (`_contain`); "in the fridge door" is in it."""
     words = sent.words
-    if words[j] not in ("on", "upon"):
+    if words[j] not in ("on", "upon") and not _covers(words, j):
         return None
     if k + 2 < hi and words[k] in OUTER_PARTS and words[k + 1] == "of":
         n = k + 2
@@ -750,6 +763,8 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
             i += 1
             continue
         end, group = _verb_group(words, i, clause.end)
+        if end > i + 1 and _covers(words, end - 1):
+            end, group = end - 1, group[:-1]  # "draped over the chair": "over" is the place's, not a particle
         start, i = i, end
         kind = _verb_kind(group)
         k = start - 1
@@ -780,6 +795,8 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
                 # "someone left a mark on the floor"; "the coat the kids dumped in the hallway"
                 subjects, end = (after, at) if after else (_np_list(sent, ms, lo, who), end)
                 kind = kind if clause.mood == "statement" else "presumed"
+            elif clause.mood == "statement" and words[who:who + 1] == [","] and _resting_participle(group):
+                subjects = _adjunct_subject(sent, ms, lo, who)  # "the telly's on, sitting on the stand"
             else:
                 continue
             if not kind:
@@ -861,6 +878,24 @@ def _place_back(sent: _Sentence, before: int) -> tuple[str, Mention] | None:
         if _prep_before(sent.words, m.start) not in SOURCE:
             return "in", m
     return None
+
+
+def _resting_participle(group: list[str]) -> bool:
+    """A bare participle of resting or covering ("sitting", "lying up there", "spread")."""
+    verbs = [w for w in group if w not in ADVERBS]
+    return len(verbs) == 1 and (verbs[0] in STATIVE and verbs[0].endswith("ing") or verbs[0] in COVERING)
+
+
+def _adjunct_subject(sent: _Sentence, ms: list[Mention], lo: int, comma: int) -> list[Mention]:
+    """The subject of a participle set off by a comma after a finished clause (a free adjunct: "The
+    telly's been on since kick-off, sitting up there on the TV stand", "The kettle is still warm,
+    standing on the hob"): English gives it the clause's subject, the noun-phrase list before the
+    clause's first finite verb; none when the clause has no such subject."""
+    words = sent.words
+    for f in range(lo, comma):
+        if words[f] in BE | PERFECT or words[f] in STATIVE and _finite([words[f]]):
+            return _np_list(sent, ms, lo, f) if f > lo and words[f - 1] not in PLACE_PRONOUNS else []
+    return []
 
 
 def _finite(group: list[str]) -> bool:
@@ -997,7 +1032,7 @@ def _existential(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon,
         if words[i] != "there" or words[i + 1] not in BE:
             continue
         j = i + 2
-        while j < clause.end and words[j] not in AT:
+        while j < clause.end and words[j] not in AT and not _covers(words, j):
             j += 1
         found = _holder_after(sent, ms, j, clause.end)
         if found is None:
