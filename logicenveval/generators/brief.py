@@ -24,7 +24,7 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from logicenveval.domain.attributes import ALWAYS, catalog_attribute_keys
 from logicenveval.domain.catalog import Catalog, load_catalog
-from logicenveval.domain.categories import Vocabulary, singular, snake, vocabulary
+from logicenveval.domain.categories import Vocabulary, singular, vocabulary
 from logicenveval.llm.ask import ask, protocol_of
 from logicenveval.llm.base import ChatModel
 from logicenveval.llm.vocab import Vocab
@@ -69,7 +69,7 @@ class NamedBrief:
 
 def _head(name: str) -> str:
     """A compound's head is its last word (`water_bowl` is a bowl, `tv_remote` a remote)."""
-    return singular(snake(name)).rsplit("_", 1)[-1]
+    return singular(name).rsplit("_", 1)[-1]
 
 
 def named_kind(obj: NamedObject, catalog: Catalog, words: Vocabulary) -> str | None:
@@ -100,10 +100,10 @@ def retrieve(objects: Sequence[NamedObject], catalog: Catalog) -> tuple[dict[str
     written as an attribute) are dropped: no task reads them, and an environment stating them is
     ill-formed (`model.envspec.unknown_attribute_keys`)."""
     words = vocabulary(catalog)
-    first: list[NamedObject] = []  # the first object of each name, in order
+    by_name: dict[str, NamedObject] = {}  # the first object of each name, in order
     for obj in objects:
-        if obj.name not in {o.name for o in first}:
-            first.append(obj)
+        by_name.setdefault(obj.name, obj)
+    first = list(by_name.values())
     kinds = {o.name: named_kind(o, catalog, words) for o in first}
     wrong = {o.name for o in first if contradicts(o, kinds[o.name], words)}
     retrieving = 2 * len(wrong) > sum(k is not None for k in kinds.values())

@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import re
 
+from logicenveval.offline.sentences import ARROW_MARK
+
 #: the verbs of obligation before "be" that say a state must hold: "has to be", "must be",
 #: "needs to be" ("should be" is a norm the text often answers itself: "should be on - if it's
 #: off, ..."; "is not to be left" is a negative norm the analyser reads already)
@@ -106,11 +108,9 @@ _EQUALS = re.compile(r"(?<=[A-Za-z])\s+=\s+(?=[A-Za-z])")
 _DASH_BULLET = re.compile(r"^(\s*)[\u2013\u2014](?=\s)", re.M)
 
 
-#: the arrow of a case and its answer, as written ("ripe one -> fridge", "not ripe yet \u2192 fruit bowl")
-_ARROW = r"(?:->|=>|\u2192)"
 #: a case said as "<adjective> one" before its arrow, the article dropped as a note drops it
 #: ("dirty one -> sink", "ripe one -> fridge"): "a dirty one", so "one" is the thing spoken of
-_BARE_ONE = re.compile(rf"(^|[;:,]\s*)([a-z]+)(\s+ones?\s*{_ARROW})", re.I | re.M)
+_BARE_ONE = re.compile(rf"(^|[;:,]\s*)([a-z]+)(\s+ones?\s*{ARROW_MARK})", re.I | re.M)
 
 
 def _cases(sentence: str) -> str:

@@ -43,6 +43,7 @@ from logicenveval.offline.clauses import (
 from logicenveval.offline.lexicon import COLOR_WORDS, FURNITURE_PARTS, Lexicon, Mention, singular
 from logicenveval.offline.sentences import (
     ACTIONS,
+    ARROW_MARK,
     NORM_ADVERBS,
     PERSONAL_SUBJECTS,
     PREP_IN,
@@ -227,7 +228,7 @@ class _Reading:
 #: an arrow after a part that asks no question: "then", the answer of what comes before it, cut
 #: as a colon is ("Pillow on the floor -> back on the sofa" is a heading answered by an
 #: instruction, a condition, as "Pillow on the floor: back on the sofa" is; after "?" it is dropped)
-_THEN_ARROW = re.compile(r"(?<![?:!])\s*(?:->|=>|\u2192)\s*")
+_THEN_ARROW = re.compile(rf"(?<![?:!])\s*{ARROW_MARK}\s*")
 
 
 def _sentences(text: str, lex: Lexicon) -> list[_Sentence]:

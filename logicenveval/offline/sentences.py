@@ -128,10 +128,13 @@ _CONTRACTIONS = [
     # texting's "u" for "you" (not a letter of a name: "u-bend", "U-shaped")
     (r"(?<![\w'-])u(?![\w'-])", "you"),
 ]
+#: an arrow as typed ("->", "=>", "\u2192"; the other typographic arrows become "->", `_ARROWS`):
+#: one spelling for every reader that cuts or reads at an arrow
+ARROW_MARK = r"(?:->|=>|\u2192)"
 #: an arrow says "then": what follows it is the instruction of what came before ("Coffee machine:
 #: still on? -> switch OFF.", "Lamp on => off"), never a sentence of its own
-ARROW = re.compile(r"\s*(?:->|=>|\u2192)\s*")
-_SENT = re.compile(r"(?<=[.!?;:])\s+(?!->|=>|\u2192)|\n+|(?<=\))\s+(?=[A-Z])")
+ARROW = re.compile(rf"\s*{ARROW_MARK}\s*")
+_SENT = re.compile(rf"(?<=[.!?;:])\s+(?!{ARROW_MARK})|\n+|(?<=\))\s+(?=[A-Z])")
 _FULL_STOP = re.compile(r"(?<=[.!])\s+|\n+")
 _ABBREV = re.compile(r"\b(e\.g|i\.e|etc|approx|vs)\.", re.I)
 
