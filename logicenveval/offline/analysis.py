@@ -65,6 +65,7 @@ from logicenveval.offline.sentences import (
     TEND,
     determiner,
     expand,
+    foreign,
     habitual,
     split_sentences,
     unquote,
@@ -84,7 +85,11 @@ DESCRIPTIVE = frozenset(
      # "land (up)" for "end up" (British, South African: "if a cushion landed up on the floor")
      "landed", "lands", "landing",
      # "wind up" for "end up" (American: "if that detergent bottle has wound up on the floor")
-     "wound", "winds", "wind", "winding"]
+     "wound", "winds", "wind", "winding",
+     # the British progressive of resting with the participle ("if they're already sat on the
+     # shoe rack", "if the laptop's sat on the sofa"): sitting ("stood" is also the passive of
+     # standing a thing somewhere: "it is stood in the umbrella stand", a goal)
+     "sat"]
 )
 #: verbs after a subject that announce where it must go (a goal, not a condition)
 MOTION = frozenset(
@@ -122,7 +127,7 @@ PERFECT = frozenset({"have", "has", "had", "'ve", "ve"})
 SITUATION_PARTICIPLES = frozenset({"left", "lying", "lie", "lies", "sitting", "found", "dropped", "fallen", "fell",
                                    "slipped", "rolled", "landed", "wound",
                                    "scattered", "forgotten", "standing", "ended", "rolling", "falling",
-                                   "ending"}) | HOMES
+                                   "ending", "sat"}) | HOMES
 #: determiners of an object already known to be there ("the", "my"): see `Fact.definite`
 DEFINITE = frozenset({"the", "my", "our", "your", "his", "her", "its", "their", "this", "that", "these",
                       "those"})
@@ -392,6 +397,9 @@ class _Reader:
         self.homes: dict[str, Fact] = {}
         #: places asked by "unless it's already there" (`_already`): a home does not settle them
         self.asked_already: set[str] = set()
+        #: placements said, then asked by a condition pointing back with "there" ("There's a plate
+        #: on the counter ... no plate there at all?", `_there_named`): no statement settles them
+        self.doubted: set[str] = set()
         self.last_state: dict[str, Fact] = {}
         #: the thing last spoken of, not a place it goes to ("Bath towel on the floor? Wet: into
         #: the basket. Dry: ..."): what a heading without a subject is said of
@@ -744,6 +752,43 @@ class _Reader:
                 self.last_state[f.key] = f
         names = tuple(dict.fromkeys(r for m in subjects for r in m.roles))
         return list(dict.fromkeys(facts)), names
+
+    def code_switched(self, text: str, thing: tuple[str, ...]) -> list[Fact]:
+        """A condition in another language's grammar with English words in it ("If naka-on pa",
+        "Agar abhi bhi on hai", "if it deh pon di floor", "If madumi pa (dirty)", a gloss in
+        brackets kept): read when the clause has a word of no English (`sentences.foreign`) and
+        its grammar gave nothing. The English words it carries still say what is asked: a state
+        word (`STATE_WORDS`, "on" too unless a place follows it) is the state asked, a place
+        noun with no English preposition before it (the floor, a surface or container named) is
+        where the thing may be (on the floor or a surface, inside a container). What is asked
+        about is a thing the clause names that is carried about, else `thing`: the item's topic
+        (what the reader last spoke of that is no place), which a pronoun or an elided subject
+        takes up."""
+        said = expand(text).lower()
+        toks = tokens(said)
+        words = [t[0] for t in toks]
+        if not any(foreign(w) for w in words):
+            return []
+        mentions = [m for m in self.lex.find_mentions(toks) if not _verb_read(toks, m)]
+        carried = [m for m in mentions if m.kind == "role" and len(m.roles) == 1 and self._carried(m.roles[0])]
+        subject = carried[0].roles if carried else thing
+        places = [m for m in mentions if m.kind == "floor" or m.kind == "role" and m not in carried]
+        negated = any(_negation(w) for w in words)
+        facts: list[Fact] = []
+        for k, w in enumerate(words):
+            if w not in STATE_WORDS or any(p.start in (k + 1, k + 2) for p in places):
+                continue  # ("on di floor": a place, not a state)
+            flag, pol = STATE_WORDS[w]
+            facts += [f for r in subject
+                      if not self._misfit(f := Fact(r, f"state({r}, {flag})", "state", flag, negated=negated != (not pol)))]
+        for p in places:
+            for r in subject:
+                for t in p.roles:
+                    relation = "inside" if t in self.lex.containers else "on"
+                    f = Fact(r, f"{relation}({r}, {t})", "location", t, negated=negated)
+                    if t != r and self._holds(f):
+                        facts.append(f)
+        return list(dict.fromkeys(facts))
 
     def _back_home(self, words: list[str], mentions: list[Mention], facts: list[Fact]) -> list[Fact]:
         """"put it back", "pop them back in", "put her there": an instruction that moves a thing
@@ -1859,6 +1904,18 @@ def _there_named(reader: _Reader, said: str, clauses: list[Clause], sentence: in
                     or set(words[:k]) & _THERE_SUBJECTS and (words[k - 1] in FOUND_PARTICIPLES or words[k - 1] == "still")) \
             or any(m.kind in ("role", "floor") and m.start > k for m in mentions):
         return said
+    thing = next((m for m in reversed(mentions) if m.kind == "role" and m.end <= k), None)
+    seen = reader.last_location.get(thing.roles[0]) if thing is not None and len(thing.roles) == 1 else None
+    if seen is not None and not seen.goal and not seen.negated and seen.key in reader.lex.roles:
+        # "There's a plate on the counter - ... put it into the sink; and no plate there at
+        # all?": "there" after a thing named is where the text said that thing is, before
+        # any place it was told to go since
+        name = seen.key.replace("_", " ")
+        grounded = [m for m in reader.lex.find_mentions(tokens(name)) if m.kind == "role"]
+        if grounded and grounded[0].roles == (seen.key,) and grounded[0].end == len(name.split()):
+            prep = "in" if seen.condition.startswith("inside") else "on"
+            reader.doubted.add(seen.condition)
+            return f"{text[:toks[k][1]]}{prep} the {name}{text[toks[k][2]:]}"
     for cl in reversed(clauses):
         if cl.sentence < sentence - 1:
             break
@@ -1995,8 +2052,13 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             reader.own_it = own
             if role == "condition":
                 said = _there_named(reader, said, clauses, grammatical)
+            thing = reader.heading_topic or (reader.topic if reader.topic_kind == "role" else ())
             facts, names = reader.facts("there is " + said if cue == "should there be" else said)
             reader.own_it = False
+            if role == "condition" and not facts and (mixed := reader.code_switched(text, thing)):
+                # "If naka-on pa, pakipatay lang": a condition in another language's grammar
+                # still asks what its English words say, of the item's topic
+                facts, names = mixed, tuple(dict.fromkeys(f.subject for f in mixed))
             if role == "condition":
                 facts = _parallel(said, facts, clauses, grammatical)
             if cue == "if available" and not any(f.kind in ("location", "exists") and not f.home for f in facts):
@@ -2204,7 +2266,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         factors.append(factor)
     homes = {f.condition for cl in clauses if cl.role == "statement" and {w for w, _, _ in tokens(cl.text)} & HOMES
              for f in cl.facts if f.kind == "location" and not f.goal}
-    factors = _settle_stated(factors, brief, catalog, slot_factor, homes, reader.asked_already)
+    factors = _settle_stated(factors, brief, catalog, slot_factor, homes, reader.asked_already, reader.doubted)
     for factor in factors:
         for slot_c, negated, value in factor.raw_context:
             dep = slot_factor.get(slot_c)
@@ -2241,14 +2303,16 @@ def _placed_outright(brief: Mapping[str, Any], catalog: Catalog, text: str) -> s
 
 def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Catalog,
                    slot_factor: dict[tuple[str, str, str], Factor], homes: set[str],
-                   asked: frozenset[str] | set[str] = frozenset()) -> list[Factor]:
+                   asked: frozenset[str] | set[str] = frozenset(),
+                   doubted: frozenset[str] | set[str] = frozenset()) -> list[Factor]:
     """A placement the description states (`offline.placement`: "a coffee table with a mug on it", "a
     kitchen with a stove") is no uncertain location: its yes/no factor is dropped. So is where an
     object is kept ("it's kept in the vanity, unless someone stuffed it into the medicine
     cabinet"): a factor listing the places it may be asks about the others (`_drop_home`) —
     unless the text speaks of somewhere else ("wherever else it may be lying"). A home asked with
     "already" (`asked`: "Your doll sleeps on the bed. Put her there, unless she's already on it")
-    is doubted: its factor stays."""
+    is doubted: its factor stays; so is a placement a later condition asks by "there" (`doubted`:
+    "There's a plate on the counter ... and no plate there at all?")."""
 
     low = " ".join(w for w, _, _ in tokens(expand(unquote(str(brief.get("description", ""))))))
     elsewhere = any(re.search(rf"\b{cue}\b", low) for cue in ELSEWHERE + ("wherever",))
@@ -2269,7 +2333,7 @@ def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Cat
         values = set(f.values.values())
         if f.kind == "location" and set(f.values) == {"yes", "no"} and (
                 settled & values or f.subject in placed or {_at(v) for v in values} & held) and not (
-                    values & set(asked) and not values & proper):
+                    values & set(asked) and not values & proper or values & set(doubted)):
             for slot, g in list(slot_factor.items()):
                 if g is f:
                     del slot_factor[slot]

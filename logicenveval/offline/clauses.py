@@ -304,6 +304,13 @@ _IF_NOT_PLACE = re.compile(r",\s*if not\s+(?=(?:on|in|into|onto|inside|under)\s+
                            r"(?![^,;]*\b(?:already|yet|still)\b)[^,;]*$)", re.I)
 
 
+#: a clause after a condition's comma that instructs in the passive, with a subject of its own
+#: and a modal ("the full bag will be taken out", "the lamp is to be switched off", "any spare
+#: should then be put back"): the condition's main clause, as an imperative after the comma is
+_PASSIVE_INSTRUCTION = (r",\s*(?:the|a|an|any|its|their|this|that|each|every)\s+(?:[a-z'-]+\s+){0,3}?"
+                        r"(?:will|shall|must|should|is\s+to|are\s+to)\s+(?:then\s+|also\s+|now\s+)?be\s+[a-z]+(?:ed|en|t)\b")
+
+
 def _split(sentence: str) -> list[tuple[str, str | None, str]]:
     """(text, cue, role) pieces of a sentence, recursively for chained conditionals; a verbless
     heading (`_heading`) is a `heading` piece, its instruction read after it."""
@@ -402,9 +409,12 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
     # its comma, so what follows is its instruction, however short
     pointer = m is not None and not tail[:m.start()].strip() and cue in POINTING_CUES
     # (after its comma, a verb and a pronoun or a request opens the condition's instruction: "...
-    # - if you find one there, put it back", "... - if you find one there, would you put it back?")
+    # - if you find one there, put it back", "... - if you find one there, would you put it back?";
+    # so does an instruction in the passive with a subject of its own: "Under the plan, if the
+    # trash can is full, the full bag will be taken out", `_PASSIVE_INSTRUCTION`)
     if head and not pointer and not (m and re.match(
-            rf"\s*(then\b|,\s*[a-z]+ (it|them)\b|,\s*(?:{'|'.join(sorted(REQUESTS))}) you\b)", tail[m.start():].lower())):
+            rf"\s*(then\b|,\s*[a-z]+ (it|them)\b|,\s*(?:{'|'.join(sorted(REQUESTS))}) you\b|{_PASSIVE_INSTRUCTION})",
+            tail[m.start():].lower())):
         other = re.search(r"[,;]?\s*\b(otherwise|(?<!where )(?<!thing )else|or else|instead)\b", tail)
         cond = tail[: other.start()] if other else tail
         nested = _first_cue(cond.lower()[1:], CONDITIONAL)

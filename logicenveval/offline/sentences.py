@@ -7,6 +7,8 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
+from lemminflect import getAllLemmas, getInflection
+
 from logicenveval.offline.lexicon import COLOR_WORDS, verb_form
 
 #: adjective/participle -> (state flag, polarity)
@@ -372,7 +374,7 @@ def _emoji(m: re.Match[str]) -> str:
 
 #: British and older spellings of function words, read as the common form every word table
 #: holds ("Whilst the dryer is running" is "While the dryer is running")
-VARIANTS = {"whilst": "while", "amongst": "among", "amidst": "amid", "unto": "to"}
+VARIANTS = {"whilst": "while", "amongst": "among", "amidst": "amid", "unto": "to", "upon": "on"}
 #: British spellings of the words the catalog spells the American way, its attribute values
 #: among them ("the grey plastic one" is the catalog's `gray`; Merriam-Webster, "grey": chiefly
 #: British spelling of gray)
@@ -489,6 +491,87 @@ def _scots(text: str) -> str:
     return _SCOTS.sub(lambda m: _match_case(m.group(0), SCOTS[m.group(0).lower()]), text)
 
 
+#: English's closed-class words (articles, pronouns, prepositions, conjunctions, auxiliaries),
+#: which lemminflect, a lexicon of open-class words, does not list: with it, what tells an
+#: English word from a word of another language in a code-switched text (`foreign`)
+ENGLISH_CLOSED = frozenset({
+    "a", "an", "the", "this", "that", "these", "those", "my", "your", "his", "her", "its", "our", "their",
+    "i", "you", "he", "she", "it", "we", "they", "me", "him", "us", "them", "if", "of", "and", "or", "but",
+    "nor", "so", "then", "than", "as", "at", "by", "for", "from", "in", "into", "on", "onto", "to", "with",
+    "without", "under", "over", "up", "down", "off", "out", "not", "no", "yes", "when", "while", "until",
+    "unless", "whether", "because", "is", "am", "are", "was", "were", "be", "been", "being", "do", "does",
+    "did", "has", "have", "had", "will", "would", "shall", "should", "can", "could", "may", "might", "must",
+    "ok", "okay", "pls", "please", "s", "t", "re", "ll", "ve", "d", "m",
+})
+
+
+def foreign(word: str) -> bool:
+    """Whether a lower-case word is of no English: neither a closed-class word (`ENGLISH_CLOSED`)
+    nor a form lemminflect lists ("abhi", "naka", "deh" are foreign; "on", "floor", "dirty" are
+    not). Only words of two letters or more count: a number, a name or a letter of an
+    abbreviation ("o/e", on examination) is neither."""
+    return len(word) > 1 and word.isalpha() and word.islower() and word not in ENGLISH_CLOSED \
+        and not getAllLemmas(word)
+
+
+#: The conditional conjunctions of languages English is often mixed with in writing, each with
+#: the word that may answer it as "then" ("" when it has none): Hindi-Urdu "agar ... toh"
+#: ("Agar abhi bhi on hai toh band kar dena"), Spanish and French "si" ("si no, you open it",
+#: "si no está maduro todavía"; "entonces", "alors"), Tagalog "kung" and "kapag", German "wenn ...
+#: dann", Malay and Indonesian "kalau" and "jika" ("maka"). A word English also has ("se", "als",
+#: "falls", "pag") is left out; "agar", an English noun too, opens a condition only in a clause
+#: with a word of no English after it (`_native_if`).
+NATIVE_IF = {"agar": ("toh",), "si": ("entonces", "alors"), "kung": (), "kapag": (), "wenn": ("dann",),
+             "kalau": ("maka",), "jika": ("maka",)}
+_NATIVE_THEN = frozenset(w for thens in NATIVE_IF.values() for w in thens)
+_NATIVE_IF = re.compile(rf"(?:^|(?<=[.!?,;:(\n])|(?<=[.!?,;:(]\s))[ \t]*({'|'.join(NATIVE_IF)})\b(?P<rest>[^.!?\n]*)",
+                        re.I | re.M)
+_THEN_WORD = re.compile(rf"\s*,?\s+\b({'|'.join(sorted(_NATIVE_THEN))})\b", re.I)
+
+
+def _native_if(m: re.Match[str]) -> str:
+    """A clause opened by another language's conditional conjunction (`NATIVE_IF`) as one opened
+    by "if", its "then" word as ", then"; kept as written when the conjunction is an English word
+    too and nothing after it in the sentence is of another language ("Agar plates go ...")."""
+    cue, rest = m.group(1), m.group("rest")
+    if not foreign(cue.lower()) and not any(foreign(w) for w in re.findall(r"[A-Za-z]+", rest)):
+        return m.group(0)
+    rest = _THEN_WORD.sub(", then", rest, count=1)
+    # "si no, you open it", "si no está maduro": the conjunction's "no" is "if not", English's
+    # "if no" asking a thing's absence only before a noun of its own
+    rest = re.sub(r"^(\s+)no\b(?=\s*,|\s+(\w+))", lambda n: n.group(1) + (
+        "not" if n.group(2) is None or foreign(n.group(2)) else "no"), rest)
+    lead = m.group(0)[: m.start(1) - m.start(0)]
+    return f"{lead}{'If' if cue[0].isupper() else 'if'}{rest}"
+
+
+#: Early Modern English's third person ("the plant needeth water", "a novel goeth onto the
+#: shelf", "a lamp doth sit", "it hath fallen"): "-eth" on a verb's stem for "-s", and its two
+#: irregular forms; a word is so read only when what is left is a verb lemminflect knows
+#: ("goeth": go; "maketh": make; "sitteth": sit) and the word is none of today's English, so
+#: "teeth" and "beneath" stay
+ARCHAIC_VERBS = {"doth": "does", "hath": "has"}
+_ETH = re.compile(r"\b([A-Za-z]{2,})eth\b")
+
+
+def _archaic(m: re.Match[str]) -> str:
+    """An "-eth" verb as its present third person (`ARCHAIC_VERBS`, `_ETH`)."""
+    stem = m.group(1).lower()
+    if getAllLemmas(m.group(0).lower()):
+        return m.group(0)  # a word of today's English ("teeth")
+    for base in (stem, stem + "e", stem[:-1] if len(stem) > 2 and stem[-1] == stem[-2] else ""):
+        if base and "VERB" in getAllLemmas(base) and (third := getInflection(base, "VBZ")):
+            return _match_case(m.group(0), third[0])
+    return m.group(0)
+
+
+def _modern(text: str) -> str:
+    """`text` with its Early Modern English verb forms as today's (`ARCHAIC_VERBS`, `_ETH`)."""
+    text = re.sub(rf"\b(?:{'|'.join(ARCHAIC_VERBS)})\b", lambda m: _match_case(
+        m.group(0), ARCHAIC_VERBS[m.group(0).lower()]), text, flags=re.I)
+    return _ETH.sub(_archaic, text)
+
+
 def unquote(text: str) -> str:
     """The text with British and older spellings of function words in their common form
     (`VARIANTS`) and British spellings of catalog words in the catalog's (`SPELLINGS`) and without a formula of politeness before a verb (`_POLITE`), with a typographic
@@ -513,7 +596,7 @@ def unquote(text: str) -> str:
     (`detable`); a heading answered by a verb with no subject of its own with the heading as that
     subject (`_SUBJECTLESS`); a chat message's `*`-correction made in the message it corrects
     (`starred`), without a chat line's time stamp (`_TIME_STAMP`)."""
-    text = _NO_THEN.sub(_no_then, _scots(_telegram(text)))
+    text = _NO_THEN.sub(_no_then, _scots(_telegram(_modern(_NATIVE_IF.sub(_native_if, text)))))
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), _SPELLED[m.group(0).lower()]), text))
     text = starred(_TIME_STAMP.sub(r"\1", text))
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
@@ -641,10 +724,18 @@ def expand(text: str) -> str:
     return _BECOME.sub(lambda m: f"{m.group(1)} {m.group(2) + ' ' if m.group(2) else ''}been ", out)
 
 
+#: a line break inside a sentence (verse, a wrapped line): after a word with no punctuation,
+#: before a line that opens with a conjunction or a finite "be" and asks no question ("The
+#: dishwasher door may be wide / or be shut", "if the sponge / is lying on the counter"); a
+#: chat's lines ("... leave it there / toothpaste and soap - ...") open with a sentence's own words
+_BROKEN_LINE = re.compile(r"(?<=[A-Za-z])[ \t]*\n[ \t]*(?=(?:or|and|but|nor|is|are|was|were)\s[^?\n]*$)", re.M)
+
+
 def split_sentences(text: str, *, full_stops_only: bool = False) -> list[str]:
-    """The text's sentences (and `;`/`:`-separated parts), abbreviations kept whole. With
-    `full_stops_only`, only at a full stop, "!" or a line break: for a reader that cuts the rest
-    itself (`offline.clauses.clause_spans` cuts at ";", ":", "?" and brackets)."""
-    protected = _ABBREV.sub(lambda m: m.group(0).replace(".", "\u2024"), text)
+    """The text's sentences (and `;`/`:`-separated parts), abbreviations kept whole, a line
+    broken inside a sentence joined (`_BROKEN_LINE`). With `full_stops_only`, only at a full
+    stop, "!" or a line break: for a reader that cuts the rest itself
+    (`offline.clauses.clause_spans` cuts at ";", ":", "?" and brackets)."""
+    protected = _ABBREV.sub(lambda m: m.group(0).replace(".", "\u2024"), _BROKEN_LINE.sub(" ", text))
     parts = [p.strip().replace("\u2024", ".") for p in (_FULL_STOP if full_stops_only else _SENT).split(protected)]
     return [p for p in parts if p]
