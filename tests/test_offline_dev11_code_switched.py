@@ -31,6 +31,7 @@ def test_another_languages_conditional_conjunction_is_if(said: str, meant: str) 
 
 @pytest.mark.parametrize("said", [
     "Agar plates go in the incubator.",  # "agar", an English noun too, in an English sentence
+    "Agar plates go in the fridge.",  # one word lemminflect does not list ("fridge") is no language
     "Si no cup is on the desk, fetch one.",  # "no" before an English noun is English's "no"
     "The wenner box stays on the shelf.",  # no conjunction: a word that only begins like one
 ])
@@ -218,3 +219,13 @@ def test_a_condition_after_its_main_clause_keeps_its_comma() -> None:
     from logicenveval.offline.clauses import split_clauses
     pieces = [(p.text, p.role) for p in split_clauses("Take the bag out, if the can is full, the bag that is by the door.")]
     assert pieces[0] == ("Take the bag out", "consequence") and pieces[1][1] == "condition"
+
+
+def test_an_english_clause_with_a_word_lemminflect_lacks_is_not_code_switched() -> None:
+    """Near miss (a paraphrase of a built-in task): "fridge" is no word lemminflect lists, but a
+    clause of English with it is not code-switched; its "turn on the stove" asks no egg on the
+    stove, and "it isn't" still points back to the pan on the stove."""
+    text = ("Eggs: should there be eggs in the fridge, open the fridge, make sure the frying pan is on the stove "
+            "(put it there if it isn't), move an egg into the pan, shut the fridge and turn on the stove.")
+    assert not _asks(text, ("kitchen",), "on(egg, stove)")
+    assert _asks(text, ("kitchen",), "on(pan, stove)")

@@ -63,9 +63,9 @@ from logicenveval.offline.sentences import (
     PREP_ON,
     STATE_WORDS,
     TEND,
+    code_switched,
     determiner,
     expand,
-    foreign,
     habitual,
     split_sentences,
     unquote,
@@ -756,8 +756,9 @@ class _Reader:
     def code_switched(self, text: str, thing: tuple[str, ...]) -> list[Fact]:
         """A condition in another language's grammar with English words in it ("If naka-on pa",
         "Agar abhi bhi on hai", "if it deh pon di floor", "If madumi pa (dirty)", a gloss in
-        brackets kept): read when the clause has a word of no English (`sentences.foreign`) and
-        its grammar gave nothing. The English words it carries still say what is asked: a state
+        brackets kept): read when a third of the clause's words or more are of no English
+        (`sentences.code_switched`, the names of things counted English) and its grammar gave
+        nothing. The English words it carries still say what is asked: a state
         word (`STATE_WORDS`, "on" too unless a place follows it) is the state asked, a place
         noun with no English preposition before it (the floor, a surface or container named) is
         where the thing may be (on the floor or a surface, inside a container). What is asked
@@ -767,9 +768,10 @@ class _Reader:
         said = expand(text).lower()
         toks = tokens(said)
         words = [t[0] for t in toks]
-        if not any(foreign(w) for w in words):
-            return []
         mentions = [m for m in self.lex.find_mentions(toks) if not _verb_read(toks, m)]
+        named = {i for m in mentions for i in range(m.start, m.end)}
+        if not code_switched([w if i not in named else "" for i, w in enumerate(words)]):
+            return []  # (a thing's name is English, whatever lemminflect lists: "the fridge")
         carried = [m for m in mentions if m.kind == "role" and len(m.roles) == 1 and self._carried(m.roles[0])]
         subject = carried[0].roles if carried else thing
         places = [m for m in mentions if m.kind == "floor" or m.kind == "role" and m not in carried]

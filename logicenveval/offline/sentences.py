@@ -514,13 +514,20 @@ def foreign(word: str) -> bool:
         and not getAllLemmas(word)
 
 
+def code_switched(words: list[str]) -> bool:
+    """Whether a clause's words are of another language in good part: a third of them or more
+    `foreign` ("abhi bhi on hai", "naka on pa", "it deh pon di floor"), not the odd word
+    lemminflect does not list in an English clause ("shut the fridge and turn on the stove")."""
+    return 3 * sum(foreign(w) for w in words) >= len(words) > 0 and any(foreign(w) for w in words)
+
+
 #: The conditional conjunctions of languages English is often mixed with in writing, each with
 #: the word that may answer it as "then" ("" when it has none): Hindi-Urdu "agar ... toh"
 #: ("Agar abhi bhi on hai toh band kar dena"), Spanish and French "si" ("si no, you open it",
 #: "si no está maduro todavía"; "entonces", "alors"), Tagalog "kung" and "kapag", German "wenn ...
 #: dann", Malay and Indonesian "kalau" and "jika" ("maka"). A word English also has ("se", "als",
 #: "falls", "pag") is left out; "agar", an English noun too, opens a condition only in a clause
-#: with a word of no English after it (`_native_if`).
+#: in good part of another language (`_native_if`, `code_switched`).
 NATIVE_IF = {"agar": ("toh",), "si": ("entonces", "alors"), "kung": (), "kapag": (), "wenn": ("dann",),
              "kalau": ("maka",), "jika": ("maka",)}
 _NATIVE_THEN = frozenset(w for thens in NATIVE_IF.values() for w in thens)
@@ -532,9 +539,10 @@ _THEN_WORD = re.compile(rf"\s*,?\s+\b({'|'.join(sorted(_NATIVE_THEN))})\b", re.I
 def _native_if(m: re.Match[str]) -> str:
     """A clause opened by another language's conditional conjunction (`NATIVE_IF`) as one opened
     by "if", its "then" word as ", then"; kept as written when the conjunction is an English word
-    too and nothing after it in the sentence is of another language ("Agar plates go ...")."""
+    too and the rest of its sentence is not in good part of another language (`code_switched`:
+    "Agar plates go in the fridge")."""
     cue, rest = m.group(1), m.group("rest")
-    if not foreign(cue.lower()) and not any(foreign(w) for w in re.findall(r"[A-Za-z]+", rest)):
+    if not foreign(cue.lower()) and not code_switched(re.findall(r"[A-Za-z]+", rest)):
         return m.group(0)
     rest = _THEN_WORD.sub(", then", rest, count=1)
     # "si no, you open it", "si no está maduro": the conjunction's "no" is "if not", English's
