@@ -510,7 +510,7 @@ def unquote(text: str) -> str:
     (`_NO_THEN`); a bare state and a comma before an instruction as its condition ("wet, stand
     it in the stand": `_STATE_CASE`); "other kind of toy" as "other toy" (`_KIND_OF`); a state word said only as a predicate in its state's
     common word ("the dishwasher's already going": "running", `PREDICATE_STATES`); a table of items and places as its sentences
-    (`detable`); a heading answered by a verb with no subject of its own with the heading as that
+    (`detable`); a rule written as a record of keyed lines as its conditional (`derecord`); a heading answered by a verb with no subject of its own with the heading as that
     subject (`_SUBJECTLESS`); a chat message's `*`-correction made in the message it corrects
     (`starred`), without a chat line's time stamp (`_TIME_STAMP`)."""
     text = _NO_THEN.sub(_no_then, _scots(_telegram(text)))
