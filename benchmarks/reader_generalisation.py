@@ -74,6 +74,18 @@ prints LogCov / SceVR / FauDR for each, then per task:
   tasks in rooms none of the sets above use (a nature-documentary narration, a dungeon master's
   session notes, a Hinglish note, a YAML file, a sea shanty, a hard-boiled detective's monologue).
   Unseen until measured;
+- `dev12 reworded` and `dev12 new`: tests/data/reader_dev12/ — the twelfth development set,
+  written in registers of speech and personal writing after dev 11 was measured: one
+  rewording each of 3 built-in descriptions (a love letter, an Italian-English voice message from
+  a nonna, a Geordie note) and six new tasks in rooms none of the sets above use (a Denglisch chat,
+  a radio phone-in transcript, a teenager's diary, an oral-history interview, a moving-out letter,
+  a "clean with me" vlog transcript). Unseen until measured;
+- `dev13 reworded` and `dev13 new`: tests/data/reader_dev13/ — the thirteenth development set,
+  written beside the twelfth in registers of documents, forms and genre writing: one rewording each
+  of 3 built-in descriptions (a sequence of haiku, a job advertisement, a board-game rulebook) and
+  six new tasks in rooms none of the sets above use (a knitting pattern, patent claims, a
+  choose-your-own-adventure gamebook, a software changelog, a mock royal proclamation, an
+  encyclopedia article). Unseen until measured;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -90,7 +102,7 @@ like-for-like gap.
 Every run is computed afresh (`fresh=True`: a stored unit is never reused, since the run's
 fingerprint does not cover the reader's code) with the offline model's reply cache off.
 
-    python benchmarks/reader_generalisation.py            # all twenty-six sets (~3-6 min on 2 cores)
+    python benchmarks/reader_generalisation.py            # all twenty-eight sets (~3-6 min on 2 cores)
     python benchmarks/reader_generalisation.py --smoke    # two tasks per set (~1 min)
     python benchmarks/reader_generalisation.py --why      # and why each task lost environments
     python benchmarks/reader_generalisation.py --dev-only # without the held-out sets (for tuning)
@@ -105,8 +117,8 @@ was written for (a rule too wide shows as a task of another set falling):
     python benchmarks/reader_generalisation.py --dev-only --json before.json   # on main
     python benchmarks/reader_generalisation.py --dev-only --compare before.json # with the rule
 
-`--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: none
-between rounds), so a tuner's runs never show them; `--dev-only --fresh` keeps them, to measure
+`--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: dev 12
+and dev 13 now), so a tuner's runs never show them; `--dev-only --fresh` keeps them, to measure
 them. `--skip 'dev9 reworded,dev9 new'` leaves any other rows' sets out as well.
 
 `--compare OLD.json` lists every development task whose LogCov, SceVR or FauDR moved against an
@@ -116,8 +128,8 @@ Last line: `reader_generalisation built_in=<LogCov>/<SceVR>/<FauDR> reworded=...
 dev2_new=... dev4_reworded=... dev4_new=... dev3_reworded=... dev3_new=... dev5_reworded=...
 dev5_new=... dev6_reworded=... dev6_new=... dev7_reworded=... dev7_new=... dev8_reworded=...
 dev8_new=... dev9_reworded=... dev9_new=... dev10_reworded=... dev10_new=... dev11_reworded=...
-dev11_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...`
-(with `--dev-only`, the first twenty-two only).
+dev11_new=... dev12_reworded=... dev12_new=... dev13_reworded=... dev13_new=... held_out_reworded=... held_out_new=...
+held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the first twenty-six only).
 """
 
 from __future__ import annotations
@@ -146,6 +158,8 @@ DEV8 = ROOT / "tests" / "data" / "reader_dev8"
 DEV9 = ROOT / "tests" / "data" / "reader_dev9"
 DEV10 = ROOT / "tests" / "data" / "reader_dev10"
 DEV11 = ROOT / "tests" / "data" / "reader_dev11"
+DEV12 = ROOT / "tests" / "data" / "reader_dev12"
+DEV13 = ROOT / "tests" / "data" / "reader_dev13"
 HOLDOUT2 = ROOT / "tests" / "data" / "reader_holdout2"
 #: (row name, tasks folder; None = the built-in tasks)
 SETS: tuple[tuple[str, Path | None], ...] = (
@@ -160,6 +174,8 @@ SETS: tuple[tuple[str, Path | None], ...] = (
     ("dev9 reworded", DEV9 / "tasks_reworded"), ("dev9 new", DEV9 / "tasks_new"),
     ("dev10 reworded", DEV10 / "tasks_reworded"), ("dev10 new", DEV10 / "tasks_new"),
     ("dev11 reworded", DEV11 / "tasks_reworded"), ("dev11 new", DEV11 / "tasks_new"),
+    ("dev12 reworded", DEV12 / "tasks_reworded"), ("dev12 new", DEV12 / "tasks_new"),
+    ("dev13 reworded", DEV13 / "tasks_reworded"), ("dev13 new", DEV13 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
     ("held-out2 reworded", HOLDOUT2 / "tasks_reworded"), ("held-out2 new", HOLDOUT2 / "tasks_new"),
 )
@@ -168,7 +184,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH: frozenset[str] = frozenset()
+FRESH = frozenset({"dev12 reworded", "dev12 new", "dev13 reworded", "dev13 new"})
 GENERATOR = "logicenvgen"
 
 

@@ -146,6 +146,21 @@ def test_an_item_ruled_off_a_crowded_side_table_gets_another() -> None:
     assert placed["magazine"] == "on:side_table_hallway_2"
 
 
+def test_a_thing_that_rests_only_on_the_floor_stays_there_when_a_fact_rules_it_out() -> None:
+    """Furniture (a fridge, a wardrobe: the reply schema lets it rest on nothing) is never set on a
+    table or an added side table, whatever the facts say: the selection stays valid and the
+    unrealisable fact simply fails; a pickable thing ruled off the floor still goes on a surface,
+    one the catalog keeps on the floor (a mop) too."""
+    for room, big, small in (("kitchen", "fridge", "mug"), ("bedroom", "wardrobe", "book")):
+        brief = _brief("Tidy up.", [room], big=big, table="side_table", small=small)
+        placed = {o["id"]: o["placement"] for o in task_objects(
+            brief, ["not on(big, floor)", "not on(small, floor)"], CATALOG)}
+        assert placed["big"] == "floor" and placed["small"] == "on:table"
+        assert CATALOG.get(big).placement == ["floor"]
+    mop = _brief("Tidy up.", ["bathroom"], mop="mop", table="side_table")
+    assert {o["id"]: o["placement"] for o in task_objects(mop, ["not on(mop, floor)"], CATALOG)}["mop"] == "on:table"
+
+
 def test_a_drawer_goes_inside_furniture_it_fits_in_or_a_cabinet_added_for_it() -> None:
     """A drawer is part of a piece of furniture (the catalog places it only inside one): the
     realiser puts it in an openable piece of the room it fits in, a dresser or a nightstand, or

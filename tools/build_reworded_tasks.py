@@ -4,7 +4,8 @@ A set is a folder under `tests/data/`: the development set `reader_dev` (the def
 held-out set `reader_holdout`, the second unseen set `reader_dev3`, the fourth development set `reader_dev4`, the second
 held-out set `reader_holdout2`, the fifth development set `reader_dev5`, the sixth development set `reader_dev6`, the seventh
 development set `reader_dev7`, the eighth development set `reader_dev8`, the ninth development set `reader_dev9`, the
-tenth development set `reader_dev10` or the eleventh development set `reader_dev11`. Its `rewordings.json` holds each rewording once: its new task id, the built-in
+tenth development set `reader_dev10`, the eleventh development set `reader_dev11`, the twelfth development set
+`reader_dev12` or the thirteenth `reader_dev13`. Its `rewordings.json` holds each rewording once: its new task id, the built-in
 task it rewords, its register, the new description and, for every constraint fact of the
 original, the words of the new description that assert it (`says` must quote the description,
 docs/task-format.md). A task's policies must lie inside its own folder (`benchmark.policy_path`),
@@ -26,6 +27,8 @@ nothing but `id`, `description` and the constraints' `says` differs.
     python tools/build_reworded_tasks.py --set reader_dev9      # the ninth development set's folders
     python tools/build_reworded_tasks.py --set reader_dev10     # the tenth development set's folders
     python tools/build_reworded_tasks.py --set reader_dev11     # the eleventh development set's folders
+    python tools/build_reworded_tasks.py --set reader_dev12     # the twelfth development set's folders
+    python tools/build_reworded_tasks.py --set reader_dev13     # the thirteenth development set's folders
     python tools/build_reworded_tasks.py --mutants  # also ship killable_mutants.json (minutes)
 
 Folders of ids no longer listed are removed, so the directory always equals the JSON.
@@ -45,7 +48,8 @@ ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT / "tests" / "data"
 #: the sets whose rewordings this tool writes (a folder under tests/data/ each)
 SETS = ("reader_dev", "reader_holdout", "reader_dev3", "reader_dev4", "reader_holdout2", "reader_dev5",
-        "reader_dev6", "reader_dev7", "reader_dev8", "reader_dev9", "reader_dev10", "reader_dev11")
+        "reader_dev6", "reader_dev7", "reader_dev8", "reader_dev9", "reader_dev10", "reader_dev11",
+        "reader_dev12", "reader_dev13")
 BUILTIN = ROOT / "benchmark_data" / "tasks"
 
 

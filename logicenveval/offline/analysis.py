@@ -86,6 +86,11 @@ DESCRIPTIVE = frozenset(
      "landed", "lands", "landing",
      # "wind up" for "end up" (American: "if that detergent bottle has wound up on the floor")
      "wound", "winds", "wind", "winding",
+     # a verb of posture before a state is the copula: "if its door is hanging open", as "the
+     # safe is standing open" (where a thing hangs is read by the location reader all the same)
+     "hanging", "hangs",
+     # verbs of falling (`FALLS`): "a pillow may have tumbled to the floor"
+     "tumbled", "tumbles", "toppled", "slid",
      # the British progressive of resting with the participle ("if they're already sat on the
      # shoe rack", "if the laptop's sat on the sofa"): sitting ("stood" is also the passive of
      # standing a thing somewhere: "it is stood in the umbrella stand", a goal)
@@ -123,11 +128,15 @@ DESCRIPTIVE |= frozenset(singular(w) for w in HOMES)
 #: has blown", "a smashed cup"); "when it is running, into the hamper" keeps its state
 TOWARDS = frozenset({"onto", "into", "off", "away", "down", "across"})
 PERFECT = frozenset({"have", "has", "had", "'ve", "ve"})
+#: verbs of falling: "to" after one says where the thing came to rest ("a pillow may have
+#: tumbled to the floor", "if the spoon has fallen to the floor"), not where someone moves it
+FALLS = frozenset({"fallen", "fell", "falls", "tumbled", "tumbles", "toppled", "dropped", "slipped", "slid",
+                   "rolled"})
 #: participles that turn a noun phrase into a description of the current situation
 SITUATION_PARTICIPLES = frozenset({"left", "lying", "lie", "lies", "sitting", "found", "dropped", "fallen", "fell",
                                    "slipped", "rolled", "landed", "wound",
                                    "scattered", "forgotten", "standing", "ended", "rolling", "falling",
-                                   "ending", "sat"}) | HOMES
+                                   "ending", "tumbled", "toppled", "slid", "sat"}) | HOMES
 #: determiners of an object already known to be there ("the", "my"): see `Fact.definite`
 DEFINITE = frozenset({"the", "my", "our", "your", "his", "her", "its", "their", "this", "that", "these",
                       "those"})
@@ -231,6 +240,22 @@ _ASIDE = re.compile(r"\s*\([^()]*\)\W*$")
 
 #: a condition that only says its thing is there ("if it's there", "if they're still there")
 _THERE_ONLY = re.compile(r"^\W*(?:it|they) (?:is|are) (?:still )?there\W*$")
+#: a condition of coming upon a thing it names ("if you find a wallet", "should we come across
+#: my headphones in here", "if you happen to spot a watch anywhere in the office"): an agent
+#: first, then a verb of discovery (`DISCOVERY`); said with no place or state of the thing, it asks
+#: whether the thing is there at all
+_FIND_NAMED = re.compile(r"^\W*(?:you|we|i)\s+(?:(?:ever|do|does|did|should|can|could|happen\s+to|manage\s+to|still)\s+)*"
+                         r"(?:find|spot|see|notice|discover|come\s+(?:across|upon)|stumble\s+(?:across|upon|on))\s+"
+                         r"(?!it\b|them\b|one\b|ones\b|any\b|some\b|that\b|this\b|out\b|time\b)")
+#: after a place put first, an agent who may come upon what follows ("On the floor we may find the
+#: game controller", "In the sink you will probably see a mug"): the things found may be at that
+#: place, as after "On the bed there may be" (a finding said outright, "you will find the lamp",
+#: is left to the placement reader)
+_FRONTED_FINDING = re.compile(r"(?:you|we|i)\s+(?:(?:can|will|would|should|also|still|often|sometimes)\s+)*"
+                              r"(?:may|might|could|probably|possibly|perhaps)\s+(?:(?:also|still|well|even)\s+)*"
+                              r"(?:find|spot|see|notice|discover)\b")
+#: a condition that only says its thing is or is not there ("if it isn't there")
+_THERE_OR_NOT = re.compile(r"^\W*(?:it|they) (?:is|are) (?:still )?(?:not )?there\W*$")
 #: a trailing ellipsis ("... if it's dirty straight into the washing machine...")
 _TRAILING = ("...", "\u2026")
 #: "it is the X", "that's the X": a clause that says which thing was spoken of
@@ -967,12 +992,22 @@ class _Reader:
                 for r in m.roles]
 
     def _fronted_place(self, words: list[str], mentions: list[Mention]) -> list[Fact]:
-        """`On the bed there may be a book, an alarm clock or a phone`: the place comes first."""
-        if not words or words[0] not in PREP_ON | PREP_IN or "there" not in words:
+        """`On the bed there may be a book, an alarm clock or a phone`: the place comes first; so
+        it does before an agent coming upon the things (`_FRONTED_FINDING`: "On the floor we may
+        find the game controller", "In the sink you might spot a mug")."""
+        if not words or words[0] not in PREP_ON | PREP_IN:
             return []
         place = next((m for m in mentions if m.kind in ("role", "floor")), None)
-        there = words.index("there")
-        if place is None or place.end > there or not all(w in ARTICLES for w in words[1 : place.start]):
+        if place is None or not all(w in ARTICLES for w in words[1 : place.start]):
+            return []
+        finding = _FRONTED_FINDING.match(" ".join(words[place.end:]))
+        if finding is not None:
+            there = place.end + len(finding.group(0).split()) - 1
+        elif "there" in words:
+            there = words.index("there")
+        else:
+            return []
+        if place.end > there:
             return []
         out = []
         for m in mentions:
@@ -1031,7 +1066,7 @@ class _Reader:
             return []
         if habit:
             skipped = [w for w in skipped if w not in aspect and w != "to"]
-        if words[k] == "to" and not self._is_goal(words, m, skipped):
+        if words[k] == "to" and not self._is_goal(words, m, skipped) and not set(skipped) & FALLS:
             return []  # "to" names a place only where something is moved: "returned to the armchair"
         if words[k] == "from" and (skipped or m.kind != "role" or set(words[max(0, m.start - 4) : m.start]) & SOURCE_VERBS):
             return []  # "fill it from the bag" names a source, not where the object is
@@ -1280,7 +1315,7 @@ _AFTER_PREDICATE = frozenset({"yet", "enough", "anymore", "already", "now", "and
 #: words with a meaning of their own, never an attribute read from the wording
 _KNOWN_WORDS = (frozenset(STATE_WORDS) | DESCRIPTIVE | MOTION | ACTIONS | ARTICLES | PARTS | PRONOUNS
                 | NEGATIONS | UNCERTAIN | ABSENT | AVAILABILITY | PREP_ON | PREP_IN | COLOR_WORDS
-                | SITUATION_PARTICIPLES | frozenset(
+                | SITUATION_PARTICIPLES | ARRIVALS | frozenset(
                     {"other", "another", "else", "same", "different", "done", "finished", "ready",
                      "sure", "fine", "alone", "there", "here", "where", "what", "whatever", "which",
                      "whichever", "yet", "enough", "anymore", "and", "but", "then", "also", "only",
@@ -1394,6 +1429,19 @@ def _anaphoric(text: str, facts: list[Fact]) -> bool:
         # "if you find it", "if you find one": one of the things just spoken of
         return words <= ANAPHORIC | {"not"} | DISCOVERY | AGENTS | _HERE | FOUND_ONE
     return points_back(text)
+
+
+def _presence_asked(clauses: list[Clause], sentence: int, names: tuple[str, ...]) -> tuple[str, ...]:
+    """Which of `names` a condition of this or the previous sentence asked the presence of
+    (`exists`, not negated: "if you find a wallet"), the nearest such condition first."""
+    for cl in reversed(clauses):
+        if cl.sentence < sentence - 1:
+            break
+        if cl.role == "condition":
+            asked = tuple(f.subject for f in cl.facts if f.kind == "exists" and f.subject in names)
+            if asked:
+                return asked
+    return ()
 
 
 def _come_upon(clauses: list[Clause], sentence: int, text: str) -> tuple[list[Fact], tuple[str, ...]]:
@@ -2083,9 +2131,21 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 if "not" in {w for w, _, _ in tokens(expand(said))}:
                     # "the drawer might already be open, and if it isn't, open it": the opposite
                     facts = [replace(f, negated=not f.negated) for f in facts]
+            elif role == "condition" and names and _THERE_OR_NOT.match(expand(said).lower()) and (
+                    asked := _presence_asked(clauses, grammatical, names)):
+                # "If you find a credit card anywhere in the office, put it on the desk ... If it
+                # isn't there, nothing to do": after a condition asking whether the thing is there
+                # at all, "there" is that presence, not the place the instruction put it
+                facts = [Fact(r, f"exists({r})", "exists", negated="not" in expand(said).lower().split())
+                         for r in asked]
             elif role == "condition" and not facts and names and _THERE_ONLY.match(expand(said).lower()):
                 # "Wallet. If it's there, lost property basket": with no place named before to
                 # point to, "it is there" asks whether the thing is there at all
+                facts = [Fact(r, f"exists({r})", "exists") for r in names[:1]]
+            elif role == "condition" and names and not any(not f.goal for f in facts) \
+                    and _FIND_NAMED.match(expand(said).lower()):
+                # "If you find a wallet, put it on the side table", "If you find a credit card
+                # anywhere in the office, ...": coming upon a thing named, nowhere in particular
                 facts = [Fact(r, f"exists({r})", "exists") for r in names[:1]]
             elif role == "statement" and _elaborates(clauses, grammatical, said):
                 # "anything on the floor should go where it belongs - the book on the couch, a toy

@@ -176,6 +176,39 @@ def _abbreviates(short: str, category: str) -> bool:
     return True
 
 
+#: titles a given name may open with ("Lady Rosabel", "Mr Snuggles", "Captain Fluff"): with one,
+#: a name may open its sentence
+TITLES = frozenset({"mr", "mrs", "ms", "miss", "lady", "lord", "sir", "dame", "captain", "doctor", "dr", "prince",
+                    "princess", "king", "queen", "aunt", "auntie", "uncle", "professor", "sergeant"})
+_NAME = r"[A-Z][a-z]+\.?(?:\s+[A-Z][a-z]+){0,2}"
+_NOUN = r"[a-z]+(?:\s+[a-z]+){0,2}?"
+_NOUN_END = r"(?=\s*(?:[,.;:!?)]|$)|\s+(?:who|which|that|is|was|has|had|sat|sits|lay|lies)\b)"
+#: a given name set beside a noun that names the thing, in apposition: "Lady Rosabel, her doll",
+#: "her doll, Lady Rosabel", "Mr Snuggles the teddy bear" (`_named_things`)
+_NAMED_BEFORE = re.compile(rf"(?P<name>{_NAME})(?:,\s+(?:her|his|my|our|their|your|the)|\s+the)\s+(?P<noun>{_NOUN}){_NOUN_END}")
+_NAMED_AFTER = re.compile(rf"\b(?:her|his|my|our|their|your|the)\s+(?P<noun>{_NOUN}),\s+(?P<name>{_NAME})(?=\s*[,.;:!?)]|$)")
+
+
+def _named_things(text: str, phrases: Mapping[tuple[str, ...], set[str]]) -> dict[tuple[str, ...], set[str]]:
+    """The given names a text calls one role by: a capitalised name in apposition with a noun
+    phrase that names exactly one role ("First, the princess had to find Lady Rosabel, her doll.
+    If Lady Rosabel had fallen on the floor ..."; "Captain Fluff, my teddy bear"), so that the
+    name, said alone later, is that role. A name opening its sentence counts only after a title
+    ("Then, the dog bed" names nothing); a name that is already a phrase is left as it is."""
+    out: dict[tuple[str, ...], set[str]] = {}
+    for m in (*_NAMED_BEFORE.finditer(text), *_NAMED_AFTER.finditer(text)):
+        name = m.group("name")
+        lead = text[:m.start("name")].rstrip(" \t")
+        opens = not lead or lead[-1] in ".!?:\n\"'(-*"
+        if opens and name.split()[0].lower().rstrip(".") not in TITLES:
+            continue
+        meant = phrases.get(words_of(m.group("noun")))
+        key = words_of(name)
+        if meant and len(meant) == 1 and key and key not in phrases:
+            out.setdefault(key, set()).update(meant)
+    return {k: v for k, v in out.items() if len(v) == 1}
+
+
 @per_catalog
 def _one_word_names(catalog: Catalog) -> frozenset[tuple[str, ...]]:
     """Every catalog name and synonym of one word ("bench", "chair")."""
@@ -269,6 +302,9 @@ class Lexicon:
                 meant = {name for name, role in roles.items() if _abbreviates(short.lower(), role["category"])}
                 if len(meant) == 1:
                     lex.phrases[(short.lower(),)] = meant
+        # "Lady Rosabel, her doll": a given name of one role
+        for key, meant in _named_things(str(brief.get("description", "")), lex.phrases).items():
+            lex.phrases.setdefault(key, meant)
         text = [w for w, _, _ in tokens(str(brief.get("description", "")))]
         for spare in (r for r in roles if _spare(r)):
             kin = [p for p, names in lex.phrases.items() if spare in names and len(names) > 1]

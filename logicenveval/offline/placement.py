@@ -101,7 +101,9 @@ HAVE_VERBS = frozenset({"has", "have", "had", "contains", "contain", "holds", "h
                         "include", "houses"})
 #: verbs of motion and of belonging a terse clause may carry ("a newspaper on the floor goes in the bin")
 MOTION = frozenset({"go", "goes", "went", "belong", "belongs", "get", "gets", "come", "comes", "need",
-                    "needs", "should", "must", "want", "wants"})
+                    "needs", "should", "must", "want", "wants",
+                    # a verb of going back ("a pillow on the floor returns to the bed")
+                    "return", "returns"})
 #: words that may stand inside a verb group without ending it ("is still lying", "has probably
 #: been left", "are both kept")
 ADVERBS = frozenset({"still", "already", "always", "usually", "normally", "often", "again", "also",

@@ -185,7 +185,13 @@ def _places(choice: dict[str, RoleChoice], roles: dict[str, Any], catalog: Catal
             continue
         cat = catalog.get(roles[r]["category"])
         typical = cat.placement if cat else ["floor"]
-        if typical[0] in ("floor", "wall", "ceiling") and typical[0] not in c.banned_places:
+        if typical[0] in ("floor", "wall", "ceiling") and (
+                typical[0] not in c.banned_places or cat is not None and furniture(cat)):
+            # furniture (a fridge, a wardrobe: `scene_words.furniture`, which rests on nothing in
+            # the reply schema) stays where it stands even when a fact rules that out ("not
+            # on(fridge, floor)"): a model that knows the assets never sets a fridge on a table,
+            # and the unrealisable fact then simply fails, instead of every attempt at the
+            # selection being refused; a mop ruled off the floor still goes on or in something
             c.placement = typical[0]
             continue
         holders = []

@@ -601,7 +601,7 @@ def unquote(text: str) -> str:
     (`_NO_THEN`); a bare state and a comma before an instruction as its condition ("wet, stand
     it in the stand": `_STATE_CASE`); "other kind of toy" as "other toy" (`_KIND_OF`); a state word said only as a predicate in its state's
     common word ("the dishwasher's already going": "running", `PREDICATE_STATES`); a table of items and places as its sentences
-    (`detable`); a heading answered by a verb with no subject of its own with the heading as that
+    (`detable`); a rule written as a record of keyed lines as its conditional (`derecord`); a heading answered by a verb with no subject of its own with the heading as that
     subject (`_SUBJECTLESS`); a chat message's `*`-correction made in the message it corrects
     (`starred`), without a chat line's time stamp (`_TIME_STAMP`)."""
     text = _NO_THEN.sub(_no_then, _scots(_telegram(_modern(_NATIVE_IF.sub(_native_if, text)))))
@@ -618,7 +618,7 @@ def unquote(text: str) -> str:
     plain = _ACTED_STATE.sub(_acted_state, plain)
     plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)
     plain = _KIND_OF.sub(r"\1 ", _STATE_CASE.sub(_state_case, plain))
-    return _SUBJECTLESS.sub(r"\1\2\3the \2 \4", detable(_STATE_SUBJECT.sub(_state_subject, plain)))
+    return _SUBJECTLESS.sub(r"\1\2\3the \2 \4", detable(derecord(_STATE_SUBJECT.sub(_state_subject, plain))))
 
 
 #: "Desk lamp: stays on the desk.", "- Sunscreen - lives in the cabinet", "Washing powder. Stays on
@@ -643,6 +643,75 @@ _PLACE_START = re.compile(r"^(?:on|in|inside|under|by|near|next|beside|behind|at
 #: a decision table's condition column: its header opens a condition ("If you find...", "When")
 #: or names one ("Condition", "Situation", "Case")
 _CONDITION_HEAD = re.compile(r"^(?:(?P<cue>(?:if|when|whenever|in case)\b[^|]*?)|condition|situation|case)\W*$", re.I)
+
+
+#: the fields of a rule written as a record of keyed lines (YAML, a config file, a form: "when:
+#: ..." / "do: ..." / "else: ..."), by what each says: its condition, its action, what to do
+#: otherwise and a note; the other fields ("name:", "id:") only label the record (`derecord`)
+RECORD_FIELDS = {
+    "condition": frozenset({"when", "if", "condition", "trigger", "case", "situation"}),
+    "action": frozenset({"do", "then", "action", "actions", "task", "run"}),
+    "else": frozenset({"else", "otherwise", "if_not", "elif_not"}),
+    "note": frozenset({"note", "notes", "comment"}),
+}
+_KEYED = re.compile(r"^(?P<indent>[ \t]*)(?P<dash>-[ \t]+)?(?P<key>[A-Za-z_]+)[ \t]*:(?:[ \t]+(?P<value>.*?))?[ \t]*$")
+_FIELD_COMMENT = re.compile(r"\s+#.*$")
+
+
+def _field(value: str) -> str:
+    """A field's value without a trailing comment or the quotes around it."""
+    return _FIELD_COMMENT.sub("", value).strip().strip("\"'").strip()
+
+
+def _record_sentences(fields: dict[str, str]) -> str | None:
+    """The sentences a record of fields stands for, or None when it is no rule (no condition or
+    no action): "If <condition>, <action>. Otherwise, <else>. <note>."."""
+    said = {kind: next((fields[k] for k in fields if k in keys and fields[k]), "") for kind, keys in RECORD_FIELDS.items()}
+    if not said["condition"] or not said["action"]:
+        return None
+    condition = re.sub(r"^(?:if|when)\s+", "", said["condition"], flags=re.I)
+    out = f"If {condition.rstrip('.')}, {said['action'].rstrip('.')}."
+    if said["else"]:
+        out += f" Otherwise, {said['else'].rstrip('.')}."
+    if said["note"]:
+        out += f" {said['note'][0].upper()}{said['note'][1:].rstrip('.')}."
+    return out
+
+
+def derecord(text: str) -> str:
+    """A rule written as a record of keyed lines, the way a YAML file or a config lists its
+    items ("- name: headphones" / "when: \"you find my headphones in here\"" / "do: put them on
+    the bookshelf" / "else: nothing"), as the conditional it stands for: "If you find my
+    headphones in here, put them on the bookshelf. Otherwise, nothing." A record is a run of
+    keyed lines, the first opened by "- " or each at one indentation; its fields are read by
+    `RECORD_FIELDS` (a label such as "name:" is dropped, a trailing "# comment" and quotes too).
+    A record with no condition or no action, and every other line, stays as it is."""
+    lines = text.split("\n")
+    out: list[str] = []
+    run: list[tuple[str, str, str]] = []  # (line, key, value) of the record being read
+    indent = ""
+
+    def flush() -> None:
+        fields: dict[str, str] = {}
+        for _, key, value in run:
+            fields.setdefault(key.lower(), _field(value))
+        sentence = _record_sentences(fields)
+        out.extend([sentence] if sentence is not None else [line for line, _, _ in run])
+        run.clear()
+
+    for line in lines:
+        m = _KEYED.match(line)
+        if m is None or not m.group("value"):
+            flush()
+            out.append(line)
+            continue
+        here = m.group("indent") + " " * len(m.group("dash") or "")
+        if m.group("dash") or here != indent:
+            flush()
+            indent = here
+        run.append((line, m.group("key"), m.group("value")))
+    flush()
+    return "\n".join(out)
 
 
 def _cells(line: str) -> list[str]:
