@@ -91,6 +91,15 @@ FUNCTION_WORDS = frozenset({"or", "and", "but", "nor", "i", "me", "it", "itself"
                             "as", "than", "who", "which", "what"})
 
 
+#: a proper name (two capitalised words or more: "Lady Rosabel", "Mr Snuggles") right before the
+#: kind it names, after a comma and a possessive ("Lady Rosabel, her doll") or after "the" ("Mr
+#: Snuggles the teddy bear"): a nickname of that thing (`Lexicon.build`)
+_NICKNAME = re.compile(r"\b(?P<name>[A-Z][a-z]+\.?(?: [A-Z][a-z]+){1,2})(?:, (?:her|his|my|our|their|your)| the) "
+                       r"(?P<kind>[a-z]+(?: [a-z]+){0,2})")
+#: a greeting's first word: "Hi Sam, your mug ..." names the reader, not the mug
+_GREETINGS = frozenset({"hi", "hey", "hello", "dear", "morning", "evening", "thanks", "cheers", "love", "yo"})
+
+
 def compound_head(word: str, after_plural: bool) -> bool:
     """Whether `word` (as written), right after a noun with nothing between, is the head noun of an
     English noun compound the noun before modifies ("car park", "food bank", "light bill"): a noun
@@ -269,6 +278,16 @@ class Lexicon:
                 meant = {name for name, role in roles.items() if _abbreviates(short.lower(), role["category"])}
                 if len(meant) == 1:
                     lex.phrases[(short.lower(),)] = meant
+        for said in _NICKNAME.finditer(str(brief.get("description", ""))):
+            # "Lady Rosabel, her doll", "Mr Snuggles the teddy bear": a name of two capitalised
+            # words or more right before the kind it names, is that thing's name too
+            nick = words_of(said.group("name"))
+            if nick[0] in _GREETINGS or nick in lex.phrases:
+                continue
+            kind = words_of(said.group("kind"))
+            meant = next((lex.phrases[kind[:n]] for n in range(len(kind), 0, -1) if kind[:n] in lex.phrases), set())
+            if len(meant) == 1:
+                lex.phrases[nick] = set(meant)
         text = [w for w, _, _ in tokens(str(brief.get("description", "")))]
         for spare in (r for r in roles if _spare(r)):
             kin = [p for p, names in lex.phrases.items() if spare in names and len(names) > 1]
