@@ -151,8 +151,10 @@ def test_a_thing_renamed_between_commas_is_one_object() -> None:
     # written for the test: an instruction naming the mug again, with its colour
     assert named("Take the mug, the red mug, to the sink.", ("kitchen",)) == {
         "mug": ("mug", {"color": "red"}), "sink": ("sink", {})}
-    # not when the second phrase is a clause's subject of its own: two mugs
+    # not when the second phrase is a clause's subject of its own, nor in a list going on: two mugs
     assert {"mug", "red_mug"} <= set(named("A mug is on the desk, the red mug is in the sink.", ("kitchen",)))
+    assert {"red_mug", "blue_mug"} <= set(named("Wash the mug, the red mug, the blue mug and a cup.", ("kitchen",)))
+    assert {"mug", "red_mug"} <= set(named("Wash the mug, the red mug, and the cup.", ("kitchen",)))
 
 
 # -- "kill it", "stop it": switching a running thing off --------------------------------------------

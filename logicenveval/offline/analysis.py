@@ -29,6 +29,7 @@ from logicenveval.offline.clauses import (
     AVAILABILITY,
     CLAUSE_WORDS,
     FINITE_VERBS,
+    FRONT_LEADS,
     LEAD_INS,
     NEGATIONS,
     OBJECT_STARTS,
@@ -348,9 +349,6 @@ def _later_object(words: list[str], found: list[Mention], commas: frozenset[int]
 #: verbs of finding that, after a fronted place, say what may be there ("On the floor we may find
 #: the game controller", "In the sink you might spot a mug")
 FINDING = frozenset({"find", "see", "spot", "notice", "discover"})
-#: words that may open a clause before its fronted place ("And here, draped across the sofa, the
-#: blanket", "Meanwhile, on the shelf lies the torch")
-_FRONT_LEADS = frozenset({"and", "here", "there", "then", "now", "meanwhile", "somewhere", "so"})
 #: prepositions of a fronted place, a covering verb's "across" and "over" included
 _FRONT_PREPS = frozenset({"on", "in", "inside", "upon", "atop", "across", "over"})
 
@@ -362,7 +360,7 @@ def _fronted_thing(words: list[str], found: list[Mention], first: Mention | None
     after it means that thing, not the place; otherwise `first`."""
     if first is None or first.kind not in ("role", "floor"):
         return first
-    lead = [w for w in words[:first.start] if w not in _FRONT_LEADS and w not in ARTICLES]
+    lead = [w for w in words[:first.start] if w not in FRONT_LEADS and w not in ARTICLES]
     if not lead or lead[-1] not in _FRONT_PREPS or len(lead) > 2 \
             or len(lead) == 2 and not _a_participle(lead[0]):
         return first

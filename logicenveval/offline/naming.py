@@ -785,7 +785,14 @@ class _Reader:
         if kind is None or kind.instances or words[the - 1] not in self.used.get(category, set()):
             return False
         end = i + n
-        return end == len(words) or "," in gaps[end] or bool(_SENTENCE_END.search(gaps[end]))
+        if end == len(words) or _SENTENCE_END.search(gaps[end]):
+            return True
+        nxt = end
+        while nxt < len(words) and (words[nxt] in _DETERMINERS or words[nxt] in COLOR_WORDS):
+            nxt += 1
+        # a list goes on after the comma ("the mug, the red mug, the blue mug and a cup"): no renaming
+        return "," in gaps[end] and words[end] not in _NOUN_LEADS and (
+            nxt == len(words) or self.match(nxt)[1] != category)
 
     def which_one_color(self, i: int) -> str | None:
         """The colour "the <colour> one" at word `i` ("one") gives the thing named last, when it

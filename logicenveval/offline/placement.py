@@ -35,6 +35,7 @@ from lemminflect import getAllLemmas
 from logicenveval.domain.catalog import Catalog, load_catalog
 from logicenveval.offline.clauses import (
     DOUBT,
+    FRONT_LEADS,
     IMPERATIVES,
     PUNCT,
     SUBORDINATORS,
@@ -1013,9 +1014,8 @@ def _gapped(sent: _Sentence, clause: Span, ms: list[Mention], after: int, kind: 
     return after
 
 
-#: words that may open a clause before its fronted place ("And here, draped across the sofa, the
-#: blanket", "Meanwhile, on the shelf lies the torch")
-_FRONT_LEADS = frozenset({"and", "here", "there", "then", "now", "meanwhile", "somewhere", ","})
+#: words that may open a clause before its fronted place, its commas included (`FRONT_LEADS`)
+_FRONT_LEADS = FRONT_LEADS | {","}
 #: determiners that open an epithet after a colon ("the blanket: his nest"), which says whose the
 #: thing is or what it is to someone, never where it goes
 _EPITHET = frozenset({"his", "her", "their", "its", "my", "our", "your"})
