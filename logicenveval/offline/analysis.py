@@ -29,6 +29,7 @@ from logicenveval.offline.clauses import (
     AVAILABILITY,
     CLAUSE_WORDS,
     FINITE_VERBS,
+    FRONT_LEADS,
     LEAD_INS,
     NEGATIONS,
     OBJECT_STARTS,
@@ -375,6 +376,31 @@ def _later_object(words: list[str], found: list[Mention], commas: frozenset[int]
     return None
 
 
+#: prepositions of a fronted place, a covering verb's "across" and "over" included
+_FRONT_PREPS = frozenset({"on", "in", "inside", "upon", "atop", "across", "over"})
+
+
+def _fronted_thing(words: list[str], found: list[Mention], first: Mention | None) -> Mention | None:
+    """The thing a clause speaks of when it opens with a place (locative inversion: "On the utility
+    shelf lies the flashlight", "draped across the sofa, the blanket", "On the floor we may find the
+    game controller"): the first thing named after the place and not itself a place, so a pronoun
+    after it means that thing, not the place; otherwise `first`."""
+    if first is None or first.kind not in ("role", "floor"):
+        return first
+    lead = [w for w in words[:first.start] if w not in FRONT_LEADS and w not in ARTICLES]
+    if not lead or lead[-1] not in _FRONT_PREPS or len(lead) > 2 \
+            or len(lead) == 2 and not _a_participle(lead[0]):
+        return first
+    thing = next((m for m in found if m.kind == "role" and m.start > first.end and not _placed(words, m)), None)
+    return thing or first
+
+
+def _a_participle(word: str) -> bool:
+    """Whether `word` is a participle of some verb (lemminflect): "draped", "lying", "spread"."""
+    return any(word in getInflection(lemma, tag) for lemma in getAllLemmas(word).get("VERB", ())
+               for tag in ("VBN", "VBG"))
+
+
 def _verb_forms(word: str) -> set[str]:
     """The -ing forms of `word`'s verb lemmas (lemminflect): "filling" is a form of "fill"."""
     return {f for lemma in getAllLemmas(word).get("VERB", ()) for f in getInflection(lemma, "VBG")}
@@ -612,6 +638,7 @@ class _Reader:
         # a participle clause set off by a dash as by a comma ("mists them with the plant mister -
         # filling the mister at the sink first if it has run empty")
         first = _later_object(words, found, self.commas | self.dashes) or first
+        first = _fronted_thing(words, found, first)
         lead = next((k for k, w in enumerate(words) if w not in _HEDGE_LEADS), len(words))
         if words[lead:lead + 2] in _IDENTIFYING and words[lead + 2:lead + 3] and words[lead + 2] in ARTICLES:
             # "Tech log ... ON BRIEFING DESK. It's the blue binder - if it's been knocked onto the
@@ -1726,6 +1753,9 @@ def _cataphor(reader: _Reader, condition: str, main: str) -> tuple[str, ...] | N
 
 #: verbs of an instruction whose particle says the state it leaves ("switch it off", "turn it on")
 _SETTERS = frozenset({"switch", "turn", "flick", "put", "shut", "power"})
+#: verbs that, said of a running device, switch it off with no particle ("if it's still going kill
+#: it", "if the fan is still whirring, stop it"): the state word they mean
+_STOPPERS = {"kill": "off", "stop": "off"}
 _OBJECT_PRONOUNS = frozenset({"it", "them"})
 
 
@@ -1743,6 +1773,8 @@ def _undone(reader: _Reader, condition: str, instruction: str) -> list[Fact]:
         state = STATE_WORDS[words[0]]  # "open them", "shut it"
     elif words[0] in _SETTERS and words[1] in _OBJECT_PRONOUNS and words[2:3] and words[2] in STATE_WORDS:
         state = STATE_WORDS[words[2]]  # "switch it off", "turn them on"
+    elif words[0] in _STOPPERS and words[1] in _OBJECT_PRONOUNS:
+        state = STATE_WORDS[_STOPPERS[words[0]]]  # "kill it", "stop it"
     else:
         return []
     flag, result = state

@@ -118,6 +118,9 @@ _HARD = frozenset({";", "(", ")", "-", "?", ":"})
 #: words before a clause's first word that say nothing of its mood ("and then put ...")
 LEAD_INS = frozenset({"and", "then", "please", "just", "also", "so", "now", "first", "last", "oh", "right",
                        "but", "or"})
+#: words that may open a clause before its fronted place, in both readers ("And here, draped across
+#: the sofa, the blanket", "Meanwhile, on the shelf lies the torch")
+FRONT_LEADS = frozenset({"and", "here", "there", "then", "now", "meanwhile", "somewhere", "so"})
 
 
 # ---------------------------------------------------------------------------------------------

@@ -91,6 +91,8 @@ FUNCTION_WORDS = frozenset({"or", "and", "but", "nor", "i", "me", "it", "itself"
                             "as", "than", "who", "which", "what"})
 
 
+
+
 def compound_head(word: str, after_plural: bool) -> bool:
     """Whether `word` (as written), right after a noun with nothing between, is the head noun of an
     English noun compound the noun before modifies ("car park", "food bank", "light bill"): a noun
@@ -180,6 +182,8 @@ def _abbreviates(short: str, category: str) -> bool:
 #: a name may open its sentence
 TITLES = frozenset({"mr", "mrs", "ms", "miss", "lady", "lord", "sir", "dame", "captain", "doctor", "dr", "prince",
                     "princess", "king", "queen", "aunt", "auntie", "uncle", "professor", "sergeant"})
+#: a greeting's first word: "Hi Sam, your mug ..." names the reader, not the mug
+_GREETINGS = frozenset({"hi", "hey", "hello", "dear", "morning", "evening", "thanks", "cheers", "love", "yo"})
 _NAME = r"[A-Z][a-z]+\.?(?:\s+[A-Z][a-z]+){0,2}"
 _NOUN = r"[a-z]+(?:\s+[a-z]+){0,2}?"
 _NOUN_END = r"(?=\s*(?:[,.;:!?)]|$)|\s+(?:who|which|that|is|was|has|had|sat|sits|lay|lies)\b)"
@@ -193,14 +197,16 @@ def _named_things(text: str, phrases: Mapping[tuple[str, ...], set[str]]) -> dic
     """The given names a text calls one role by: a capitalised name in apposition with a noun
     phrase that names exactly one role ("First, the princess had to find Lady Rosabel, her doll.
     If Lady Rosabel had fallen on the floor ..."; "Captain Fluff, my teddy bear"), so that the
-    name, said alone later, is that role. A name opening its sentence counts only after a title
-    ("Then, the dog bed" names nothing); a name that is already a phrase is left as it is."""
+    name, said alone later, is that role. A name opening its sentence counts only after a title or
+    as two capitalised words that are no greeting ("Old Faithful, his kettle"; "Then, the dog bed"
+    and "Hi Sam, your mug" name nothing); a name that is already a phrase is left as it is."""
     out: dict[tuple[str, ...], set[str]] = {}
     for m in (*_NAMED_BEFORE.finditer(text), *_NAMED_AFTER.finditer(text)):
         name = m.group("name")
         lead = text[:m.start("name")].rstrip(" \t")
         opens = not lead or lead[-1] in ".!?:\n\"'(-*"
-        if opens and name.split()[0].lower().rstrip(".") not in TITLES:
+        first = name.split()[0].lower().rstrip(".")
+        if opens and first not in TITLES and (len(name.split()) < 2 or first in _GREETINGS):
             continue
         meant = phrases.get(words_of(m.group("noun")))
         key = words_of(name)

@@ -771,6 +771,29 @@ class _Reader:
             return i - 2
         return None
 
+    def appositive(self, i: int, n: int, category: str) -> bool:
+        """Whether the noun phrase at words [i, i + n) renames the thing named right before it, set
+        off by commas ("Papa ka kurta, the white shirt, ...", "My jumper, the blue jumper, is on the
+        chair"): a definite phrase of the same kind, after a comma that follows that thing's
+        name, closed by a comma or the sentence's end; one object, told by the fuller name."""
+        words, gaps = self.text.words, self.text.gaps
+        start = self.color_before(i + n - 1)
+        the = (start if start is not None else i) - 1
+        if the < 1 or words[the] != "the" or "," not in gaps[the] or not self.recent or self.recent[-1] != category:
+            return False
+        kind = self.kinds.get(category)
+        if kind is None or kind.instances or words[the - 1] not in self.used.get(category, set()):
+            return False
+        end = i + n
+        if end == len(words) or _SENTENCE_END.search(gaps[end]):
+            return True
+        nxt = end
+        while nxt < len(words) and (words[nxt] in _DETERMINERS or words[nxt] in COLOR_WORDS):
+            nxt += 1
+        # a list goes on after the comma ("the mug, the red mug, the blue mug and a cup"): no renaming
+        return "," in gaps[end] and words[end] not in _NOUN_LEADS and (
+            nxt == len(words) or self.match(nxt)[1] != category)
+
     def which_one_color(self, i: int) -> str | None:
         """The colour "the <colour> one" at word `i` ("one") gives the thing named last, when it
         says which one that thing is: as a predicate ("It's the red one by the slider") or as a
@@ -1295,6 +1318,13 @@ class _Reader:
                 continue
             if self.kind_value(i, n, prev):
                 i += n  # "a toy on the floor ... dolls in the red box, toy cars in the blue box"
+                continue
+            if shared is None and self.appositive(i, n, category):
+                # "Papa ka kurta, the white shirt, ...": the shirt named again, its colour said
+                told = self.color_before(i + n - 1)
+                if told is not None and words[told] in self.catalog.categories[category].attributes.get("color", []):
+                    self.colors[category] = words[told]
+                i += n
                 continue
             kind = self.kinds.setdefault(category, _Kind())
             if (subject := self.unnamed_subject(i)) is not None:

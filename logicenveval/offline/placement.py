@@ -30,9 +30,12 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
+from lemminflect import getAllLemmas
+
 from logicenveval.domain.catalog import Catalog, load_catalog
 from logicenveval.offline.clauses import (
     DOUBT,
+    FRONT_LEADS,
     IMPERATIVES,
     PUNCT,
     SUBORDINATORS,
@@ -123,7 +126,9 @@ PREP_OF_PLACE = frozenset({"top", "middle", "side", "end", "edge", "back", "fron
                            "right", "same", "other", "one", "floor"})
 #: the outer parts of a thing ("on the fridge door", "on the side of the bath", "on the desk corner"):
 #: a thing on one is on that thing where it has a top to hold it, and never inside it (`_outer_part`)
-OUTER_PARTS = frozenset({"door", "side", "edge", "rim", "lid", "front", "back", "handle", "corner", "end"})
+OUTER_PARTS = frozenset({"door", "side", "edge", "rim", "lid", "front", "back", "handle", "corner", "end",
+                         # a seat's arms ("on the arm of the sofa", "on the armrest of the chair")
+                         "arm", "armrest"})
 #: the preposition `_holder_after` gives a place on an outer part (`_contain`: on a surface, else none)
 ON_PART = "on_part"
 ARTICLES = frozenset({"a", "an", "the", "some", "its", "their", "our", "my", "your", "this", "that",
@@ -326,6 +331,8 @@ def _read_sentence(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Re
             _possessive(sent, clause, ms, lex, catalog, reading)
         if clause.mood == "statement" and not clause.doubted:
             _existential(sent, clause, ms, lex, catalog, reading)
+        if clause.mood == "statement" and not clause.doubted or _epithet_heading(sent, clause):
+            _inverted(sent, clause, ms, lex, catalog, reading)
         if clause.mood != "condition" and not clause.doubted:
             # in an instruction only a home: "take a spare roll from the vanity where spares are kept"
             _where(sent, clause, ms, lex, catalog, reading, homes_only=clause.mood == "instruction")
@@ -576,9 +583,15 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
     return (words[j], m) if m is not None else None
 
 
+#: prepositions that, after a verb of covering, name the thing under ("draped over the chair",
+#: "spread across the bed")
+OVER = frozenset({"over", "across"})
+
+
 def _covers(words: list[str], j: int) -> bool:
-    """Whether words[j] is an "over" that names what a covering verb's thing lies on (`COVERING`)."""
-    return words[j] == "over" and j > 0 and words[j - 1] in COVERING
+    """Whether words[j] is an "over" or "across" that names what a covering verb's thing lies on
+    (`COVERING`, `OVER`)."""
+    return words[j] in OVER and j > 0 and words[j - 1] in COVERING
 
 
 def _outer_part(sent: _Sentence, ms: list[Mention], j: int, k: int, hi: int) -> Mention | None:
@@ -812,6 +825,9 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         if words[clause.start] in RELATIVE and not subjects:
             back = _antecedent(sent, clause)
             subjects = [back] if back is not None else []
+        if not subjects and _finite(group) and _code_switched(sent) and words[lo:k + 1] \
+                and words[lo] in ARTICLES and all(_foreign(w) for w in words[lo + 1:k + 1]):
+            subjects = _gloss(sent, ms, found[1].end, clause.end)  # "The kaldero is on the stove, yung big pot"
         first = subjects[0].start if subjects else start
         said = words[max(lo, first - 3):found[1].end]
         if not subjects or words[clause.start] == "there" or doubts(said) or habitual(said):
@@ -824,6 +840,49 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         lo = _gapped(sent, clause, ms, holder.end, kind, lex, catalog, reading)
     if clause.mood == "statement":
         _fragment(sent, clause, ms, lex, catalog, reading)
+
+
+#: English words the lemmatiser lists under no open class (articles, prepositions, pronouns,
+#: conjunctions): never a word of another language (`_foreign`)
+_CLOSED = ARTICLES | AT | RELATIVE | PLACE_PRONOUNS | THING_PRONOUNS | SUBJECT_PRONOUNS | SOURCE | frozenset({
+    "for", "to", "at", "by", "with", "from", "into", "onto", "and", "or", "but", "if", "of", "me", "him", "us",
+    "them", "what", "where", "who", "whose", "a", "an", "the", "yes", "no", "not", "ok", "okay", "pls", "please"})
+
+
+def _foreign(word: str) -> bool:
+    """Whether `word` is no English word: a word of another language in a code-switched text ("the
+    kaldero", "kursi pe pada hai"), which the lemmatiser's dictionary does not list."""
+    return word.isalpha() and word not in _CLOSED and not getAllLemmas(word)
+
+
+def _code_switched(sent: _Sentence) -> bool:
+    """Whether a sentence mixes English with another language: two words or more that are no
+    English words (`_foreign`)."""
+    return sum(_foreign(w) for w in sent.words) >= 2
+
+
+def _segments(words: list[str], lo: int, hi: int) -> list[tuple[int, int]]:
+    """The comma-delimited stretches of words[lo:hi], as (start, end)."""
+    cuts = [lo - 1, *(k for k in range(lo, hi) if words[k] == ","), hi]
+    return [(a + 1, b) for a, b in zip(cuts, cuts[1:], strict=False) if b > a + 1]
+
+
+def _gloss(sent: _Sentence, ms: list[Mention], lo: int, hi: int) -> list[Mention]:
+    """The thing an English noun phrase glosses in a code-switched sentence, when a subject said
+    in the other language names none ("The kaldero is still on the stove, yung big pot na ginamit
+    ko": the pot; "The sandok is in the drawer, the big ladle"): the one thing named in the first
+    stretch after the place, with only articles, adjectives and words of the other language before
+    it, and no verb in that stretch."""
+    words = sent.words
+    if lo >= hi or words[lo] != ",":
+        return []
+    end = next((k for k in range(lo + 1, hi) if words[k] == ","), hi)
+    found = [m for m in ms if lo < m.start and m.end <= end and m.kind == "role" and len(m.roles) == 1]
+    if len(found) != 1 or _prep_before(words, found[0].start) is not None \
+            or any(w in VERBS for w in words[lo + 1:end]):
+        return []  # a clause of its own ("..., the pot is in the sink"), or a place
+    return found if all(w in ARTICLES or _foreign(w) or w in COLOR_WORDS or getAllLemmas(w).get("ADJ")
+                        for w in words[lo + 1:found[0].start]) else []
 
 
 def _fragment(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
@@ -846,6 +905,11 @@ def _fragment(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
     if not subjects or found is None or body & (DOUBT | VERBS | {"or"}):
         return  # doubted, a choice of places ("on the floor or on the sofa"), or it has a verb
     covered = {k for m in subjects for k in range(m.start, m.end)}
+    if _code_switched(sent):
+        # "Papa ka kurta, the white shirt, kursi pe pada hai, on the chair": a stretch in the other
+        # language says, in its words, what the English ones say; the English ones are read
+        covered |= {k for a, b in _segments(words, clause.start, j) if any(_foreign(w) for w in words[a:b])
+                    for k in range(a, b)}
     if not all(k in covered or w in LIST_GLUE or w in COLOR_WORDS or w in STATE_WORDS
                for k, w in enumerate(words[clause.start:j], clause.start)):
         return
@@ -950,6 +1014,73 @@ def _gapped(sent: _Sentence, clause: Span, ms: list[Mention], after: int, kind: 
         else:
             i = j
     return after
+
+
+#: words that may open a clause before its fronted place, its commas included (`FRONT_LEADS`)
+_FRONT_LEADS = FRONT_LEADS | {","}
+#: determiners that open an epithet after a colon ("the blanket: his nest"), which says whose the
+#: thing is or what it is to someone, never where it goes
+_EPITHET = frozenset({"his", "her", "their", "its", "my", "our", "your"})
+
+
+def _inverted(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
+              reading: _Reading) -> None:
+    """Locative inversion, the place put first and the thing after it: "On the utility shelf lies the
+    flashlight", "In the fridge are the milk and the eggs" (a finite verb of being, resting or
+    keeping between them), and a fronted participle of resting or covering with its place, the thing
+    after a comma: "Draped across the sofa, the blanket", "Lying on the doormat, the newspaper". The
+    thing must follow at once (articles and adjectives only) and, after a participle, end the clause;
+    `_locative` reads the subject before its verb and so found none here."""
+    words = sent.words
+    j = clause.start
+    while j < clause.end and words[j] in _FRONT_LEADS:
+        j += 1
+    participle = j + 1 < clause.end and _resting_participle([words[j]])
+    found = _holder_after(sent, ms, j + 1 if participle else j, clause.end)
+    if found is None:
+        return
+    prep, holder = found
+    k = holder.end
+    kind = "settled"
+    if participle:
+        if k >= clause.end or words[k] != ",":
+            return
+        k += 1
+    else:
+        end, group = _verb_group(words, k, clause.end)
+        said = _verb_kind(group) if end > k and _finite(group) else None
+        if said is None:
+            return
+        kind, k = said, end
+    stop = next((n for n in range(k, clause.end) if words[n] == ","), clause.end)
+    subjects = _np_list(sent, ms, k, stop)
+    if not subjects or doubts(words[clause.start:stop]) or habitual(words[clause.start:stop]):
+        return
+    covered = {n for m in subjects for n in range(m.start, m.end)}
+    tail = stop if participle else subjects[0].start
+    if not all(n in covered or w in LIST_GLUE or w in COLOR_WORDS or w in STATE_WORDS
+               for n, w in enumerate(words[k:tail], k)):
+        return  # "On the shelf lies a note about the torch": the thing is not what follows the verb
+    for m in subjects:
+        for role in _roles(m, sent):
+            _put(reading, kind, catalog, lex, role, holder, prep)
+
+
+def _epithet_heading(sent: _Sentence, clause: Span) -> bool:
+    """Whether a verbless part before a colon (a heading, which the clause cut reads as the situation
+    its instruction answers) is instead answered by an epithet, a noun phrase opened by a possessive
+    and naming no thing or place ("And here, draped across the sofa, the blanket: his nest"): then
+    nothing is asked and the part states what it describes."""
+    words = sent.words
+    if clause.mood != "condition" or clause.end >= len(words) or words[clause.end] != ":" \
+            or next((w for w in words[clause.start:clause.end] if w not in _FRONT_LEADS), "") in SUBORDINATORS:
+        return False
+    rest = words[clause.end + 1:]
+    stop = next((n for n, w in enumerate(rest) if w in PUNCT), len(rest))
+    body = rest[:stop]
+    return bool(body) and body[0] in _EPITHET and not any(
+        clause.end < m.start for m in sent.mentions) and all(
+        w.isalpha() and w not in VERBS and w not in AT and w not in IMPERATIVES for w in body)
 
 
 def _possessive(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,

@@ -580,6 +580,28 @@ def _modern(text: str) -> str:
     return _ETH.sub(_archaic, text)
 
 
+#: function words that the English-lexified creoles of the Caribbean spell apart from English
+#: (Jamaican Patois and its neighbours: Cassidy & Le Page, Dictionary of Jamaican English; "di" the,
+#: "pon" upon, "inna" in, "wid" with) and their locative copula "deh" / "dey" (is, before a place):
+#: in a text with two of them or more, each reads as its English word ("Mi handbag deh pon di
+#: chair" is "Mi handbag is on the chair"); "deh" not before a place is "there" ("lef it right deh")
+CREOLE = {"di": "the", "pon": "on", "inna": "in", "wid": "with"}
+_CREOLE = re.compile(rf"\b(?:{'|'.join(CREOLE)}|deh|dey)\b", re.I)
+#: the locative copula before its place ("deh pon di chair", "dey inna di box")
+_CREOLE_BE = re.compile(rf"\b(deh|dey)(?=\s+(?:{'|'.join(CREOLE)}|on|in|under)\b)", re.I)
+
+
+def _creole(text: str) -> str:
+    """`text` with a Caribbean creole's function words (`CREOLE`) as English, when it has two
+    different ones or more."""
+    if len({m.group(0).lower() for m in _CREOLE.finditer(text)}) < 2:
+        return text
+    text = _CREOLE_BE.sub(lambda m: _match_case(m.group(0), "is"), text)
+    text = re.sub(r"\b(?:deh|dey)\b", lambda m: _match_case(m.group(0), "there"), text, flags=re.I)
+    return re.sub(rf"\b(?:{'|'.join(CREOLE)})\b", lambda m: _match_case(m.group(0), CREOLE[m.group(0).lower()]),
+                  text, flags=re.I)
+
+
 def unquote(text: str) -> str:
     """The text with British and older spellings of function words in their common form
     (`VARIANTS`) and British spellings of catalog words in the catalog's (`SPELLINGS`) and without a formula of politeness before a verb (`_POLITE`), with a typographic
@@ -604,7 +626,7 @@ def unquote(text: str) -> str:
     (`detable`); a rule written as a record of keyed lines as its conditional (`derecord`); a heading answered by a verb with no subject of its own with the heading as that
     subject (`_SUBJECTLESS`); a chat message's `*`-correction made in the message it corrects
     (`starred`), without a chat line's time stamp (`_TIME_STAMP`)."""
-    text = _NO_THEN.sub(_no_then, _scots(_telegram(_modern(_NATIVE_IF.sub(_native_if, text)))))
+    text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_modern(_NATIVE_IF.sub(_native_if, text))))))
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), _SPELLED[m.group(0).lower()]), text))
     text = starred(_TIME_STAMP.sub(r"\1", text))
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
