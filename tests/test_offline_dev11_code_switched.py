@@ -63,7 +63,8 @@ def test_a_word_of_no_english(word: str, other: bool) -> None:
     # dev10 dirty_kitchen_tita_taglish: a place noun with no English preposition
     ("3. Baka may sibuyas na nahulog sa floor, the onion, kasi butas yung plastic. If nasa floor siya, "
      "put it back in the basket.", ("dirty_kitchen",), "on(onion, floor)"),
-    # dev10 verandah_patois_note (Jamaican Patois): "it deh pon di floor"
+    # dev10 verandah_patois_note (Jamaican Patois): "it deh pon di floor" (since the merge with
+    # r2, `sentences._creole` spells the creole's words out first; the factor is the same)
     ("An di cushion, it always drop off a di armchair. If it deh pon di floor, put it back pon di armchair fi mi.",
      ("verandah",), "on(sofa_pillow, floor)"),
     # written here: Spanglish, a lamp in a bedroom
