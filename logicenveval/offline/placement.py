@@ -54,6 +54,7 @@ from logicenveval.offline.sentences import (
     STATE_WORDS,
     determiner,
     expand,
+    foreign,
     habitual,
     split_sentences,
     unquote,
@@ -826,7 +827,7 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
             back = _antecedent(sent, clause)
             subjects = [back] if back is not None else []
         if not subjects and _finite(group) and _code_switched(sent) and words[lo:k + 1] \
-                and words[lo] in ARTICLES and all(_foreign(w) for w in words[lo + 1:k + 1]):
+                and words[lo] in ARTICLES and all(foreign(w) for w in words[lo + 1:k + 1]):
             subjects = _gloss(sent, ms, found[1].end, clause.end)  # "The kaldero is on the stove, yung big pot"
         first = subjects[0].start if subjects else start
         said = words[max(lo, first - 3):found[1].end]
@@ -844,21 +845,10 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
 
 #: English words the lemmatiser lists under no open class (articles, prepositions, pronouns,
 #: conjunctions): never a word of another language (`_foreign`)
-_CLOSED = ARTICLES | AT | RELATIVE | PLACE_PRONOUNS | THING_PRONOUNS | SUBJECT_PRONOUNS | SOURCE | frozenset({
-    "for", "to", "at", "by", "with", "from", "into", "onto", "and", "or", "but", "if", "of", "me", "him", "us",
-    "them", "what", "where", "who", "whose", "a", "an", "the", "yes", "no", "not", "ok", "okay", "pls", "please"})
-
-
-def _foreign(word: str) -> bool:
-    """Whether `word` is no English word: a word of another language in a code-switched text ("the
-    kaldero", "kursi pe pada hai"), which the lemmatiser's dictionary does not list."""
-    return word.isalpha() and word not in _CLOSED and not getAllLemmas(word)
-
-
 def _code_switched(sent: _Sentence) -> bool:
     """Whether a sentence mixes English with another language: two words or more that are no
-    English words (`_foreign`)."""
-    return sum(_foreign(w) for w in sent.words) >= 2
+    English words (`sentences.foreign`)."""
+    return sum(foreign(w) for w in sent.words) >= 2
 
 
 def _segments(words: list[str], lo: int, hi: int) -> list[tuple[int, int]]:
@@ -881,7 +871,7 @@ def _gloss(sent: _Sentence, ms: list[Mention], lo: int, hi: int) -> list[Mention
     if len(found) != 1 or _prep_before(words, found[0].start) is not None \
             or any(w in VERBS for w in words[lo + 1:end]):
         return []  # a clause of its own ("..., the pot is in the sink"), or a place
-    return found if all(w in ARTICLES or _foreign(w) or w in COLOR_WORDS or getAllLemmas(w).get("ADJ")
+    return found if all(w in ARTICLES or foreign(w) or w in COLOR_WORDS or getAllLemmas(w).get("ADJ")
                         for w in words[lo + 1:found[0].start]) else []
 
 
@@ -908,7 +898,7 @@ def _fragment(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
     if _code_switched(sent):
         # "Papa ka kurta, the white shirt, kursi pe pada hai, on the chair": a stretch in the other
         # language says, in its words, what the English ones say; the English ones are read
-        covered |= {k for a, b in _segments(words, clause.start, j) if any(_foreign(w) for w in words[a:b])
+        covered |= {k for a, b in _segments(words, clause.start, j) if any(foreign(w) for w in words[a:b])
                     for k in range(a, b)}
     if not all(k in covered or w in LIST_GLUE or w in COLOR_WORDS or w in STATE_WORDS
                for k, w in enumerate(words[clause.start:j], clause.start)):

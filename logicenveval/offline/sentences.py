@@ -502,6 +502,10 @@ ENGLISH_CLOSED = frozenset({
     "unless", "whether", "because", "is", "am", "are", "was", "were", "be", "been", "being", "do", "does",
     "did", "has", "have", "had", "will", "would", "shall", "should", "can", "could", "may", "might", "must",
     "ok", "okay", "pls", "please", "s", "t", "re", "ll", "ve", "d", "m",
+    # words of place, quantity and reference lemminflect does not list
+    "here", "there", "inside", "atop", "upon", "what", "where", "which", "who", "whose", "one", "two",
+    "three", "four", "both", "some", "another", "someone", "somebody", "everyone", "nobody", "kids",
+    "children",
 })
 
 
