@@ -378,21 +378,36 @@ def _later_object(words: list[str], found: list[Mention], commas: frozenset[int]
 
 #: prepositions of a fronted place, a covering verb's "across" and "over" included
 _FRONT_PREPS = frozenset({"on", "in", "inside", "upon", "atop", "across", "over"})
+#: the words that tie a second place to a fronted place ("on the mantelpiece above the fireplace",
+#: "on the shelf next to the window", "in the drawer of the desk"): it says where the place is
+_PLACE_MODIFIERS = frozenset({"above", "below", "beneath", "beside", "behind", "under", "near", "over", "by",
+                              "next", "to", "of", "at", "in", "on", "inside", "front", "opposite"})
 
 
 def _fronted_thing(words: list[str], found: list[Mention], first: Mention | None) -> Mention | None:
     """The thing a clause speaks of when it opens with a place (locative inversion: "On the utility
     shelf lies the flashlight", "draped across the sofa, the blanket", "On the floor we may find the
     game controller"): the first thing named after the place and not itself a place, so a pronoun
-    after it means that thing, not the place; otherwise `first`."""
+    after it means that thing, not the place; otherwise `first`. A thing tied to the place by a
+    preposition of its own ("On the mantelpiece above the fireplace sits the candle", "On the bench
+    by the back door") says where the place is: it is no more the thing than the place is."""
     if first is None or first.kind not in ("role", "floor"):
         return first
     lead = [w for w in words[:first.start] if w not in FRONT_LEADS and w not in ARTICLES]
     if not lead or lead[-1] not in _FRONT_PREPS or len(lead) > 2 \
             or len(lead) == 2 and not _a_participle(lead[0]):
         return first
-    thing = next((m for m in found if m.kind == "role" and m.start > first.end and not _placed(words, m)), None)
-    return thing or first
+    end = first.end
+    for m in (m for m in found if m.kind == "role" and m.start >= first.end):
+        between = [w for w in words[end:m.start] if w not in ARTICLES]
+        if between and between[0] in _PLACE_MODIFIERS and len(between) <= 3 \
+                and not any(w in FINITE_VERBS or not w.isalpha() for w in between):
+            # "On the mantelpiece above the fireplace sits the candle": a thing named after the
+            # place's own preposition says where the place is; it is part of the place, not the thing
+            end = m.end
+        elif not _placed(words, m):
+            return m
+    return first
 
 
 def _a_participle(word: str) -> bool:

@@ -897,8 +897,10 @@ def _fragment(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
     covered = {k for m in subjects for k in range(m.start, m.end)}
     if _code_switched(sent):
         # "Papa ka kurta, the white shirt, kursi pe pada hai, on the chair": a stretch in the other
-        # language says, in its words, what the English ones say; the English ones are read
-        covered |= {k for a, b in _segments(words, clause.start, j) if any(foreign(w) for w in words[a:b])
+        # language says, in its words, what the English ones say; the English ones are read. Only
+        # a stretch a comma closes before the place: one running into the place holds its verb
+        # ("then hoy the towel in the hamper", a dialect's instruction, is no statement)
+        covered |= {k for a, b in _segments(words, clause.start, j) if b < j and any(foreign(w) for w in words[a:b])
                     for k in range(a, b)}
     if not all(k in covered or w in LIST_GLUE or w in COLOR_WORDS or w in STATE_WORDS
                for k, w in enumerate(words[clause.start:j], clause.start)):

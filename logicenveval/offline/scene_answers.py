@@ -138,7 +138,7 @@ def _task_objects(payload: dict[str, Any]) -> list[dict[str, Any]]:
     banned: list[str] = []
     objects = task_objects(payload["task"], facts, catalog)
     for _ in range(len(objects)):
-        new = [f for f in misfits(objects, catalog) if f not in banned and f[4:] not in told]
+        new = [f for f in misfits(objects, catalog, frozenset(told)) if f not in banned and f[4:] not in told]
         if not new:
             break
         banned += new
@@ -150,15 +150,20 @@ def _task_objects(payload: dict[str, Any]) -> list[dict[str, Any]]:
 GRID, FILL = 0.05, 0.8
 
 
-def misfits(objects: list[dict[str, Any]], catalog: Catalog) -> list[str]:
+def misfits(objects: list[dict[str, Any]], catalog: Catalog, told: frozenset[str] = frozenset()) -> list[str]:
     """Placements that cannot be laid out, as facts that rule them out: an item larger than its
     holder's largest top (or opening), or the items on one holder (or inside it: the layout packs
     the two apart), at the largest size the layout may draw for each, too many for its smallest top
-    (the last listed goes elsewhere)."""
+    (the last listed goes elsewhere). An item `told` there (the situation needs it, the text states
+    it: "the cardboard box is on the stool") that may fill the holder's top alone, even with the
+    holder drawn at its largest, leaves room for nothing else: every other item there goes
+    elsewhere, wherever it was listed (a towel stated on a shelving unit, which it never fills,
+    moves nothing: the layout finds room beside it)."""
     by_id = {o["id"]: o for o in objects}
     out: list[str] = []
     #: filled cells per (holder, on|inside): the layout packs a holder's top and inside apart
     load: dict[tuple[str, str], float] = {}
+    full: set[tuple[str, str]] = set()  # holders a told item fills alone
     for o in objects:
         how, _, holder = str(o["placement"]).partition(":")
         if how not in ("on", "inside") or holder not in by_id:
@@ -177,10 +182,18 @@ def misfits(objects: list[dict[str, Any]], catalog: Catalog) -> list[str]:
         top = [max(host.size_min[k], item.size_min[k]) for k in (0, 2)]
         cells = math.prod(math.ceil(min(item.size_max[k], t) / GRID) for k, t in zip((0, 2), top, strict=True))
         room = math.prod(math.floor(t / GRID) for t in top)
+        if pred[4:] in told and math.prod(math.ceil(min(item.size_max[k], host.size_max[k]) / GRID) for k in (0, 2)) \
+                > FILL * math.prod(math.floor(host.size_max[k] / GRID) for k in (0, 2)):
+            full.add((holder, how))  # the item at its largest fills the holder even at the holder's largest
         if load.get((holder, how), 0.0) + cells > FILL * room and load.get((holder, how)):
             out.append(pred)
             continue
         load[(holder, how)] = load.get((holder, how), 0.0) + cells
+    for o in objects:
+        how, _, holder = str(o["placement"]).partition(":")
+        pred = f"not {how}({o['id']}, {holder})"
+        if (holder, how) in full and pred[4:] not in told and pred not in out:
+            out.append(pred)
     return out
 
 
