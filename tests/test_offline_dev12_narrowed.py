@@ -87,3 +87,24 @@ def test_a_told_item_with_room_beside_it_moves_nothing() -> None:
         assert _moved(_drafts(holder, other, item), frozenset({f"on({item}, {holder})"})) == []
     # nothing told: the last listed goes elsewhere, as before
     assert misfits(_drafts("nightstand", "laptop", "table_lamp"), CATALOG) == ["not on(table_lamp, nightstand)"]
+
+
+# -- a room opening a clause of its own frames what the clause names ---------------------------------
+
+
+def test_a_room_opening_a_clause_after_a_comma_frames_its_objects() -> None:
+    # dev 12 (an Italian-English voice message): the kitchen's furniture listed after ", and there in
+    # the kitchen you have"
+    text = ("The dining room opens onto the cucina, the kitchen, and there in the kitchen you have the "
+            "dishwasher, the sink, the fridge, a cabinet and the recycling bin, capito?")
+    assert {"in_room(dishwasher, kitchen)", "in_room(cabinet, kitchen)",
+            "in_room(recycling_bin, kitchen)"} <= placed(text, ("dining_room", "kitchen"))
+    # written for the test: an estate agent's walk-through, a semicolon before the room
+    text = "The hall leads to the bathroom; in the bathroom you will find a bathtub and a towel rack."
+    assert {"in_room(bathtub, bathroom)", "in_room(towel_rack, bathroom)"} <= placed(text, ("hall", "bathroom"))
+
+
+def test_a_room_after_another_preposition_frames_nothing() -> None:
+    # near miss: a room that is a goal ("to the kitchen"), not a clause's frame
+    text = "Put the plate in the sink, then carry the mug to the kitchen and the cup to the hall."
+    assert not {f for f in placed(text, ("kitchen", "hall")) if f.startswith("in_room(cup")}

@@ -734,7 +734,10 @@ def _frame(sent: _Sentence, reading: _Reading, lo: int) -> None:
     first = rooms[0]
     lead = words[lo:first.start]
     if not (lead[-2:] == ["in", "the"] and all(w in _LEADS for w in lead[:-2])):
-        return
+        framed = next((m for m in rooms if _clause_frame(words, lo, m.start)), None)
+        if framed is None:
+            return
+        first = framed
     for later in sent.mentions:
         if later.start < first.end:
             continue
@@ -744,6 +747,19 @@ def _frame(sent: _Sentence, reading: _Reading, lo: int) -> None:
             for role in _roles(later, sent):
                 reading.room("settled", role, first.roles[0])
     reading.context_room = first.roles[0]
+
+
+def _clause_frame(words: list[str], lo: int, start: int) -> bool:
+    """Whether the room at `start` opens a clause of its own after a comma or a semicolon, as
+    `_frame` reads a room opening its sentence: "The dining room opens onto the kitchen, and there
+    in the kitchen you have the dishwasher, the sink ...", "The hall leads to the kitchen; in the
+    kitchen you will find a fridge and a sink"."""
+    if words[max(lo, start - 2):start] != ["in", "the"]:
+        return False
+    k = start - 3
+    while k >= lo and words[k] in _LEADS | {"there"}:
+        k -= 1
+    return k >= lo and words[k] in (",", ";")
 
 
 def _named(words: list[str], start: int) -> bool:
