@@ -108,3 +108,26 @@ def test_a_room_after_another_preposition_frames_nothing() -> None:
     # near miss: a room that is a goal ("to the kitchen"), not a clause's frame
     text = "Put the plate in the sink, then carry the mug to the kitchen and the cup to the hall."
     assert not {f for f in placed(text, ("kitchen", "hall")) if f.startswith("in_room(cup")}
+
+
+# -- a person's possessive before a modified noun is no pronoun ----------------------------------------
+
+
+def test_her_before_a_modified_noun_is_its_determiner_not_the_doll() -> None:
+    # dev 12 (a teenager's diary): after a teddy spoken of as "he", "Jade left her denim jacket here
+    # ... If it's still on my bed" asks the jacket's place, not the teddy's
+    text = ("Mr Buttons (my teddy bear) keeps ending up on the floor. If he's down there, he goes back on "
+            "my bed where he belongs.\nJade left her denim jacket here after film night. If it's still on "
+            "my bed, it gets hung over the back of my chair.")
+    found = factors(text, ("dormer_room",))
+    assert "jacket_on_bed" in found and "teddy_bear_on_floor" in found
+    # written for the test: a doll, then "her little blanket"
+    text = ("My doll keeps falling off the shelf. I left her little blanket on the floor. If it is still "
+            "on the floor, put it on the bed.")
+    assert "blanket_on_floor" in factors(text, ("bedroom",))
+
+
+def test_her_before_a_place_is_still_the_doll() -> None:
+    # near miss: "put her back on the shelf" speaks of the doll
+    text = "My doll keeps falling off the shelf. If she is on the floor, put her back on the shelf."
+    assert "doll_on_floor" in factors(text, ("bedroom",))

@@ -410,6 +410,16 @@ def _fronted_thing(words: list[str], found: list[Mention], first: Mention | None
     return first
 
 
+def _determines(words: list[str], i: int, m: Mention) -> bool:
+    """Whether the word at `i` ("her", "his") is the determiner of the mention `m`: right before it,
+    or with only modifiers between, words lemminflect lists as adjectives or nouns and as no verb
+    ("her doll", "her denim jacket", "his old coat"; not "put her on the bed")."""
+    between = words[i + 1:m.start]
+    return 0 <= len(between) <= 2 and all(
+        (lemmas := getAllLemmas(w)) and not lemmas.get("VERB") and (lemmas.get("ADJ") or lemmas.get("NOUN"))
+        for w in between)
+
+
 def _a_participle(word: str) -> bool:
     """Whether `word` is a participle of some verb (lemminflect): "draped", "lying", "spread"."""
     return any(word in getInflection(lemma, tag) for lemma in getAllLemmas(word).get("VERB", ())
@@ -538,9 +548,10 @@ class _Reader:
                     found.append(Mention((owner,), i, i + 1, "role"))
                     covered.add(i)
         for i, w in enumerate(words):
-            if i not in covered and w in PERSON_PRONOUNS and not any(m.start == i + 1 for m in found):
+            if i not in covered and w in PERSON_PRONOUNS and not any(_determines(words, i, m) for m in found):
                 # "my doll sleeps on the bed but if she fell on the floor put her back": a child
-                # speaks of a doll or a teddy as of a person (never "her" before a noun: "her doll")
+                # speaks of a doll or a teddy as of a person (never "her" before a noun: "her doll",
+                # "her denim jacket")
                 dolls = [r for r in self.recent + [r for m in found if m.end <= i for r in m.roles]
                          if str(self.lex.roles.get(r, {}).get("category", "")) in PERSONIFIED]
                 if dolls:
