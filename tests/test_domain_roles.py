@@ -276,3 +276,25 @@ def test_name_words_are_immutable_so_they_can_be_shared() -> None:
     words = name_words(obj)
     assert isinstance(words, frozenset) and {"red", "toy", "box"} <= words  # lemmas: boxes -> box
     assert name_words(obj) is words
+
+
+def test_the_object_the_environment_lists_as_a_task_object_settles_a_tie() -> None:
+    """A generator told only the description names roles its own way and may add clutter of the
+    same kind (Qwen2.5-Coder-1.5B's living room: `dirty_mark` in its roles map, `dirty_mark_1`
+    beside it; a kitchen whose map lists `mug_b` as its `coffee_mug`, with `mug_a` unmapped): the one its own map
+    lists as a task object plays the task's role. Two listed, or none, stay ambiguous."""
+    from logicenveval.domain.roles import prepare_env
+    mark = {"mark": Role(category="floor_stain")}
+    env = _env([{"id": "dirty_mark", "category": "floor_stain"}, {"id": "dirty_mark_1", "category": "floor_stain"}],
+               roles={"dirty_mark": "dirty_mark"})
+    prepared = prepare_env(env, mark, CATALOG)
+    assert prepared.binding.roles["mark"] == "dirty_mark" and prepared.binding.well_formed
+    assert prepared.binding.reasons["mark"] == "task object"
+    mugs = _env([{"id": "mug_a", "category": "mug"}, {"id": "mug_b", "category": "mug"}],
+                roles={"coffee_mug": "mug_b"})
+    assert prepare_env(mugs, {"mug": Role(category="mug")}, CATALOG).binding.roles["mug"] == "mug_b"
+    both = _env([{"id": "m1", "category": "mug"}, {"id": "m2", "category": "mug"}],
+                roles={"tea_mug": "m1", "coffee_mug": "m2"})
+    assert not prepare_env(both, {"mug": Role(category="mug")}, CATALOG).binding.well_formed
+    unmapped = _env([{"id": "m1", "category": "mug"}, {"id": "m2", "category": "mug"}])
+    assert prepare_env(unmapped, {"mug": Role(category="mug")}, CATALOG).binding.candidates == {"mug": ["m1", "m2"]}

@@ -20,8 +20,12 @@ generator's run share (`prepare_env`):
 3. Of several candidates, evidence decides, in this order: the one that **states the role's
    attributes** (`"purpose": "novels"`); the object whose **id** is the role's name; the one
    whose **name words** hold the role name's distinctive words (``novel_shelf`` and
-   ``shelf for novels`` for role ``shelf_novels``). Roles that evidence singles an object out
-   for are bound before those that only their category speaks for.
+   ``shelf for novels`` for role ``shelf_novels``); last, the one the environment's own map
+   lists as a task object under a name of its own (``task object``: a generator told only the
+   description names roles its own way, ``dirty_mark`` for the task's ``mark``, and may add a
+   second stain ``dirty_mark_1`` as clutter; what it said it made for the task decides, as a
+   shopper's list says which of two mugs is the one bought). Roles that evidence singles an
+   object out for are bound before those that only their category speaks for.
 4. One candidate: the role binds to it. Objects bound to a role are no longer candidates of the
    others; this is repeated until nothing changes, so a role left with one candidate after the
    others took theirs is bound too. When two roles are left with the same single object,
@@ -35,7 +39,8 @@ generator's run share (`prepare_env`):
    no purpose; ... state purpose on the object meant`).
 
 Every role's outcome is on record (`RoleBinding.record`): the object and the reason
-(``explicit map``, ``id``, ``attribute``, ``name words``, ``category``: the one candidate left),
+(``explicit map``, ``id``, ``attribute``, ``name words``, ``task object``, ``category``: the one
+candidate left),
 written to each sample of `samples.jsonl` and shown on the per-task page.
 
 Public API::
@@ -82,7 +87,7 @@ _NOISE = frozenset({"a", "an", "the", "of", "obj", "object", "item", "with", "an
 _NEAREST = 3
 
 #: why a role has its object (or none), as recorded in every sample
-Reason = Literal["explicit map", "id", "attribute", "name words", "category", "absent", "ambiguous"]
+Reason = Literal["explicit map", "id", "attribute", "name words", "task object", "category", "absent", "ambiguous"]
 
 
 class RoleChoice(BaseModel):
@@ -268,8 +273,11 @@ def check_map(env: EnvSpec, mapping: Mapping[str, str | None], roles: Mapping[st
     return refused
 
 
-def bind_roles(env: EnvSpec, roles: Mapping[str, Role], catalog: Catalog | None = None) -> RoleBinding:
-    """Bind every role of `roles` (rule in the module docstring); `env.roles` is checked first."""
+def bind_roles(env: EnvSpec, roles: Mapping[str, Role], catalog: Catalog | None = None, *,
+               declared: frozenset[str] = frozenset()) -> RoleBinding:
+    """Bind every role of `roles` (rule in the module docstring); `env.roles` is checked first.
+    `declared`: the objects the environment's own map lists under names that are no roles of the
+    task (`prepare_env` passes them), the last evidence between candidates."""
     cat = catalog if catalog is not None else load_catalog()
     refused = check_map(env, env.roles, roles, cat)
     explicit = {n: oid for n, oid in env.roles.items() if n not in refused}
@@ -278,12 +286,17 @@ def bind_roles(env: EnvSpec, roles: Mapping[str, Role], catalog: Catalog | None 
     free = [o for o in env.objects if o.id not in taken]
     cands: dict[str, list[str]] = {}
     decisive: set[str] = set()
+    declared_by: set[str] = set()  # roles whose candidates only the environment's own map told apart
     for name, role in roles.items():
         if name in explicit:
             continue
         agree = [o for o in free if matches(o, role, cat)]
         cands[name] = _narrow(agree, name, role, cat)
-        if len(cands[name]) == 1 and _evidence(by_id[cands[name][0]], name, role, cat) != "category":
+        if len(cands[name]) > 1 and len(own := [i for i in cands[name] if i in declared]) == 1:
+            cands[name] = own
+            declared_by.add(name)
+        if len(cands[name]) == 1 and (name in declared_by
+                                      or _evidence(by_id[cands[name][0]], name, role, cat) != "category"):
             decisive.add(name)
     # roles that evidence singles an object out for bind first; the others share what is left
     # (one toilet roll named spare_roll: spare_roll plays it, roll is left without one)
@@ -314,6 +327,8 @@ def bind_roles(env: EnvSpec, roles: Mapping[str, Role], catalog: Catalog | None 
             reasons[name] = "ambiguous"
         elif oid is None:
             reasons[name] = "absent"
+        elif name in declared_by:
+            reasons[name] = "task object"
         else:
             reasons[name] = _evidence(by_id[oid], name, roles[name], cat)
     used = {oid for oid in full.values() if oid is not None}
@@ -473,7 +488,8 @@ def prepare_env(env: EnvSpec, roles: Mapping[str, Role], catalog: Catalog | None
 
     Names the environment maps that are not roles of the task (a generator that was not told
     the roles names objects its own way: `--brief description`) neither bind nor block objects;
-    they stay in the map for the relations that use them. A role attribute that its object
+    they stay in the map for the relations that use them, and the objects they list are the
+    last evidence between a role's candidates (`declared`: the task objects it said it made). A role attribute that its object
     states only through its name (`red toy box` for `color=red`) is added to the object's
     attributes, so the trees, the constraints and the simulator read what the name says.
     Evaluation, `simulate --env`, `check-env` and `lint` all prepare environments here, so they
@@ -494,7 +510,8 @@ def prepare_env(env: EnvSpec, roles: Mapping[str, Role], catalog: Catalog | None
     chosen = set((given or {}).values())
     own = {**{name: oid for name, oid in env.roles.items() if name in roles and oid not in chosen},
            **(given or {})}
-    binding = bind_roles(env.model_copy(update={"roles": own}), roles, cat)
+    declared = frozenset(oid for name, oid in env.roles.items() if name not in roles and oid is not None)
+    binding = bind_roles(env.model_copy(update={"roles": own}), roles, cat, declared=declared)
     merged = {**env.roles, **binding.roles}
     if merged != dict(env.roles):
         env = env.model_copy(update={"roles": merged})
