@@ -86,6 +86,13 @@ prints LogCov / SceVR / FauDR for each, then per task:
   six new tasks in rooms none of the sets above use (a knitting pattern, patent claims, a
   choose-your-own-adventure gamebook, a software changelog, a mock royal proclamation, an
   encyclopedia article). Unseen until measured;
+- `dev14 reworded` and `dev14 new`: tests/data/reader_dev14/ — the fourteenth development set,
+  written after dev 12 and 13 in registers of neither family (performance, instructions for
+  machines and games, quizzes, signage, lists of other kinds, non-native English): one rewording
+  each of 3 built-in descriptions (a pantomime script, a multiple-choice quiz, a French speaker's
+  English) and six new tasks in rooms none of the sets above use (a stand-up comedy set, IFTTT-style
+  applets, labels stuck on the objects, a Russian speaker's English email, a clickbait listicle, a
+  video-game quest log). Unseen until measured;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -102,7 +109,7 @@ like-for-like gap.
 Every run is computed afresh (`fresh=True`: a stored unit is never reused, since the run's
 fingerprint does not cover the reader's code) with the offline model's reply cache off.
 
-    python benchmarks/reader_generalisation.py            # all twenty-eight sets (~3-6 min on 2 cores)
+    python benchmarks/reader_generalisation.py            # all thirty-two rows (~3-6 min on 2 cores)
     python benchmarks/reader_generalisation.py --smoke    # two tasks per set (~1 min)
     python benchmarks/reader_generalisation.py --why      # and why each task lost environments
     python benchmarks/reader_generalisation.py --dev-only # without the held-out sets (for tuning)
@@ -118,7 +125,7 @@ was written for (a rule too wide shows as a task of another set falling):
     python benchmarks/reader_generalisation.py --dev-only --compare before.json # with the rule
 
 `--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: dev 13
-now), so a tuner's runs never show them; `--dev-only --fresh` keeps them, to measure
+and dev 14 now), so a tuner's runs never show them; `--dev-only --fresh` keeps them, to measure
 them. `--skip 'dev9 reworded,dev9 new'` leaves any other rows' sets out as well.
 
 `--compare OLD.json` lists every development task whose LogCov, SceVR or FauDR moved against an
@@ -128,8 +135,9 @@ Last line: `reader_generalisation built_in=<LogCov>/<SceVR>/<FauDR> reworded=...
 dev2_new=... dev4_reworded=... dev4_new=... dev3_reworded=... dev3_new=... dev5_reworded=...
 dev5_new=... dev6_reworded=... dev6_new=... dev7_reworded=... dev7_new=... dev8_reworded=...
 dev8_new=... dev9_reworded=... dev9_new=... dev10_reworded=... dev10_new=... dev11_reworded=...
-dev11_new=... dev12_reworded=... dev12_new=... dev13_reworded=... dev13_new=... held_out_reworded=... held_out_new=...
-held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the first twenty-six only).
+dev11_new=... dev12_reworded=... dev12_new=... dev13_reworded=... dev13_new=... dev14_reworded=... dev14_new=...
+held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
+rows only).
 """
 
 from __future__ import annotations
@@ -160,6 +168,7 @@ DEV10 = ROOT / "tests" / "data" / "reader_dev10"
 DEV11 = ROOT / "tests" / "data" / "reader_dev11"
 DEV12 = ROOT / "tests" / "data" / "reader_dev12"
 DEV13 = ROOT / "tests" / "data" / "reader_dev13"
+DEV14 = ROOT / "tests" / "data" / "reader_dev14"
 HOLDOUT2 = ROOT / "tests" / "data" / "reader_holdout2"
 #: (row name, tasks folder; None = the built-in tasks)
 SETS: tuple[tuple[str, Path | None], ...] = (
@@ -176,6 +185,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
     ("dev11 reworded", DEV11 / "tasks_reworded"), ("dev11 new", DEV11 / "tasks_new"),
     ("dev12 reworded", DEV12 / "tasks_reworded"), ("dev12 new", DEV12 / "tasks_new"),
     ("dev13 reworded", DEV13 / "tasks_reworded"), ("dev13 new", DEV13 / "tasks_new"),
+    ("dev14 reworded", DEV14 / "tasks_reworded"), ("dev14 new", DEV14 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
     ("held-out2 reworded", HOLDOUT2 / "tasks_reworded"), ("held-out2 new", HOLDOUT2 / "tasks_new"),
 )
@@ -184,7 +194,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH = frozenset({"dev13 reworded", "dev13 new"})
+FRESH = frozenset({"dev13 reworded", "dev13 new", "dev14 reworded", "dev14 new"})
 GENERATOR = "logicenvgen"
 
 

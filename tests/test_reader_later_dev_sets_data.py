@@ -1,5 +1,6 @@
-"""The reader's fifth to thirteenth development sets (tests/data/reader_dev5/, reader_dev6/,
-reader_dev7/, reader_dev8/, reader_dev9/, reader_dev10/, reader_dev11/, reader_dev12/, reader_dev13/): new tasks and rewordings written from the task format, the
+"""The reader's fifth to fourteenth development sets (tests/data/reader_dev5/, reader_dev6/,
+reader_dev7/, reader_dev8/, reader_dev9/, reader_dev10/, reader_dev11/, reader_dev12/, reader_dev13/,
+reader_dev14/): new tasks and rewordings written from the task format, the
 catalog and the built-in tasks, without reading the offline reader or running it on them, for rounds of reader
 rules to be tuned on. One table of what differs between them; the same checks for each.
 
@@ -10,11 +11,13 @@ What these sets promise beyond the earlier ones: each new task is in a register 
 earlier development set uses, with at least one object kind no built-in task uses (the catalog's
 pool of kinds no set uses being nearly exhausted); the rewordings' registers repeat no earlier
 set's. dev 5's rewordings cover the 13 built-in tasks the first development set leaves out, so
-development covers every built-in task; dev 6 to dev 13 put their weight on new tasks, since
+development covers every built-in task; dev 6 to dev 14 put their weight on new tasks, since
 the held-out sets' new tasks lagged while every development row had reached 100. dev 12 and
 dev 13 were written side by side: dev 12 in registers of speech and personal writing and room ids
 beginning with a letter a-l, dev 13 in registers of documents, forms and genre writing and room
-ids beginning with a letter m-z.
+ids beginning with a letter m-z. dev 14 came after both, in registers of neither family
+(performance, instructions for machines and games, quizzes, signage, lists of other kinds,
+non-native English of speakers of languages no set used).
 """
 
 from __future__ import annotations
@@ -78,6 +81,7 @@ SETS = (
     DevSet("reader_dev11", "_d11", 3, 6, ("cellar_dungeon_master", "living_room_plant_care_d11")),
     DevSet("reader_dev12", "_d12", 3, 6, ("greenhouse_grandad_interview", "bathroom_counter_sort_d12")),
     DevSet("reader_dev13", "_d13", 3, 6, ("rec_room_gamebook", "kitchen_fridge_restock_d13")),
+    DevSet("reader_dev14", "_d14", 3, 6, ("pool_house_applets", "study_desk_cleanup_d14")),
 )
 IDS = [s.name for s in SETS]
 ENTRIES = {s.name: rewordings(DATA / s.name) for s in SETS}
