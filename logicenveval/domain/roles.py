@@ -489,9 +489,10 @@ def prepare_env(env: EnvSpec, roles: Mapping[str, Role], catalog: Catalog | None
     Names the environment maps that are not roles of the task (a generator that was not told
     the roles names objects its own way: `--brief description`) neither bind nor block objects;
     they stay in the map for the relations that use them, and the objects they list are the
-    last evidence between a role's candidates (`declared`: the task objects it said it made). A role attribute that its object
-    states only through its name (`red toy box` for `color=red`) is added to the object's
-    attributes, so the trees, the constraints and the simulator read what the name says.
+    last evidence between a role's candidates (`declared`: the task objects it said it made). A
+    role attribute that its object states only through its name (`red toy box` for `color=red`)
+    is added to the object's attributes, so the trees, the constraints and the simulator read what
+    the name says.
     Evaluation, `simulate --env`, `check-env` and `lint` all prepare environments here, so they
     agree on every binding.
     """

@@ -239,8 +239,6 @@ _WE_HAVE = re.compile(r"\b(?:we|you|i)(?: still| also| even)?(?: do| does| did)?
                       r"(?: (?:a|an|any|some))?$")
 _ASIDE = re.compile(r"\s*\([^()]*\)\W*$")
 
-#: a condition that only says its thing is there ("if it's there", "if they're still there")
-_THERE_ONLY = re.compile(r"^\W*(?:it|they) (?:is|are) (?:still )?there\W*$")
 #: a condition of coming upon a thing it names ("if you find a wallet", "should we come across
 #: my headphones in here", "if you happen to spot a watch anywhere in the office"): an agent
 #: first, then a verb of discovery (`DISCOVERY`); said with no place or state of the thing, it asks
@@ -255,8 +253,9 @@ _FIND_NAMED = re.compile(r"^\W*(?:you|we|i)\s+(?:(?:ever|do|does|did|should|can|
 _FRONTED_FINDING = re.compile(r"(?:you|we|i)\s+(?:(?:can|will|would|should|also|still|often|sometimes)\s+)*"
                               r"(?:may|might|could|probably|possibly|perhaps)\s+(?:(?:also|still|well|even)\s+)*"
                               r"(?:find|spot|see|notice|discover)\b")
-#: a condition that only says its thing is or is not there ("if it isn't there")
-_THERE_OR_NOT = re.compile(r"^\W*(?:it|they) (?:is|are) (?:still )?(?:not )?there\W*$")
+#: a condition that only says its thing is, or is not, there ("if it's there", "if they're still
+#: there", "if it isn't there")
+_THERE = re.compile(r"^\W*(?:it|they) (?:is|are) (?:still )?(?P<not>not )?there\W*$")
 #: a trailing ellipsis ("... if it's dirty straight into the washing machine...")
 _TRAILING = ("...", "\u2026")
 #: "it is the X", "that's the X": a clause that says which thing was spoken of
@@ -2181,6 +2180,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # "the bin bag goes in the bin, unless Maya already took it down": an action some
                 # agent has already done to the thing moved asks whether it is already there
                 facts = done
+            low = expand(said).lower() if role == "condition" else ""
+            there = _THERE.match(low)
             if role == "condition" and _anaphoric(said, facts):
                 facts, names = _antecedent(clauses, grammatical, pointing)
                 if not facts:
@@ -2189,19 +2190,17 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 if "not" in {w for w, _, _ in tokens(expand(said))}:
                     # "the drawer might already be open, and if it isn't, open it": the opposite
                     facts = [replace(f, negated=not f.negated) for f in facts]
-            elif role == "condition" and names and _THERE_OR_NOT.match(expand(said).lower()) and (
-                    asked := _presence_asked(clauses, grammatical, names)):
+            elif role == "condition" and names and there and (asked := _presence_asked(clauses, grammatical, names)):
                 # "If you find a credit card anywhere in the office, put it on the desk ... If it
                 # isn't there, nothing to do": after a condition asking whether the thing is there
                 # at all, "there" is that presence, not the place the instruction put it
-                facts = [Fact(r, f"exists({r})", "exists", negated="not" in expand(said).lower().split())
-                         for r in asked]
-            elif role == "condition" and not facts and names and _THERE_ONLY.match(expand(said).lower()):
+                facts = [Fact(r, f"exists({r})", "exists", negated=bool(there.group("not"))) for r in asked]
+            elif role == "condition" and not facts and names and there and not there.group("not"):
                 # "Wallet. If it's there, lost property basket": with no place named before to
                 # point to, "it is there" asks whether the thing is there at all
                 facts = [Fact(r, f"exists({r})", "exists") for r in names[:1]]
             elif role == "condition" and names and not any(not f.goal for f in facts) \
-                    and _FIND_NAMED.match(expand(said).lower()):
+                    and _FIND_NAMED.match(low):
                 # "If you find a wallet, put it on the side table", "If you find a credit card
                 # anywhere in the office, ...": coming upon a thing named, nowhere in particular
                 facts = [Fact(r, f"exists({r})", "exists") for r in names[:1]]

@@ -91,8 +91,6 @@ FUNCTION_WORDS = frozenset({"or", "and", "but", "nor", "i", "me", "it", "itself"
                             "as", "than", "who", "which", "what"})
 
 
-
-
 def compound_head(word: str, after_plural: bool) -> bool:
     """Whether `word` (as written), right after a noun with nothing between, is the head noun of an
     English noun compound the noun before modifies ("car park", "food bank", "light bill"): a noun

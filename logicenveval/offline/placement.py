@@ -247,8 +247,9 @@ def _sentences(text: str, lex: Lexicon) -> list[_Sentence]:
                        m.start(), m.end()) for m in _TOKEN.finditer(low)]
         toks = [t for t in toks if t.word != "\n"]
         mentions = lex.find_mentions([(t.lemma, t.start, t.end) for t in toks])
-        toks = _without_asides(toks, mentions)
-        mentions = lex.find_mentions([(t.lemma, t.start, t.end) for t in toks])
+        kept = _without_asides(toks, mentions)
+        if len(kept) < len(toks):  # an aside dropped: the mentions after it moved
+            toks, mentions = kept, lex.find_mentions([(t.lemma, t.start, t.end) for t in kept])
         out.append(_Sentence(toks, _with_room_word(toks, mentions, lex)))
     return out
 
@@ -859,8 +860,6 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         _fragment(sent, clause, ms, lex, catalog, reading)
 
 
-#: English words the lemmatiser lists under no open class (articles, prepositions, pronouns,
-#: conjunctions): never a word of another language (`_foreign`)
 def _code_switched(sent: _Sentence) -> bool:
     """Whether a sentence mixes English with another language: two words or more that are no
     English words (`sentences.foreign`)."""
