@@ -93,6 +93,13 @@ prints LogCov / SceVR / FauDR for each, then per task:
   English) and six new tasks in rooms none of the sets above use (a stand-up comedy set, IFTTT-style
   applets, labels stuck on the objects, a Russian speaker's English email, a clickbait listicle, a
   video-game quest log). Unseen until measured;
+- `dev15 reworded` and `dev15 new`: tests/data/reader_dev15/ — the fifteenth development set,
+  written after dev 14 in registers of workplace and trade writing, messaging formats, writing of
+  another period, speech written down and machine translation: one rewording each of 3 built-in
+  descriptions (a forum post quoting earlier posts, a recipe card, a police sergeant's briefing)
+  and six new tasks in rooms none of the sets above use (a plumber's job ticket, an email reply
+  chain with quoted lines, a Victorian household manual, a 1950s advertisement, a child's dictation
+  written down by her father, a careless machine translation from Japanese). Unseen until measured;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -136,6 +143,7 @@ dev2_new=... dev4_reworded=... dev4_new=... dev3_reworded=... dev3_new=... dev5_
 dev5_new=... dev6_reworded=... dev6_new=... dev7_reworded=... dev7_new=... dev8_reworded=...
 dev8_new=... dev9_reworded=... dev9_new=... dev10_reworded=... dev10_new=... dev11_reworded=...
 dev11_new=... dev12_reworded=... dev12_new=... dev13_reworded=... dev13_new=... dev14_reworded=... dev14_new=...
+dev15_reworded=... dev15_new=...
 held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
 rows only).
 """
@@ -169,6 +177,7 @@ DEV11 = ROOT / "tests" / "data" / "reader_dev11"
 DEV12 = ROOT / "tests" / "data" / "reader_dev12"
 DEV13 = ROOT / "tests" / "data" / "reader_dev13"
 DEV14 = ROOT / "tests" / "data" / "reader_dev14"
+DEV15 = ROOT / "tests" / "data" / "reader_dev15"
 HOLDOUT2 = ROOT / "tests" / "data" / "reader_holdout2"
 #: (row name, tasks folder; None = the built-in tasks)
 SETS: tuple[tuple[str, Path | None], ...] = (
@@ -186,6 +195,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
     ("dev12 reworded", DEV12 / "tasks_reworded"), ("dev12 new", DEV12 / "tasks_new"),
     ("dev13 reworded", DEV13 / "tasks_reworded"), ("dev13 new", DEV13 / "tasks_new"),
     ("dev14 reworded", DEV14 / "tasks_reworded"), ("dev14 new", DEV14 / "tasks_new"),
+    ("dev15 reworded", DEV15 / "tasks_reworded"), ("dev15 new", DEV15 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
     ("held-out2 reworded", HOLDOUT2 / "tasks_reworded"), ("held-out2 new", HOLDOUT2 / "tasks_new"),
 )
@@ -194,7 +204,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH = frozenset({"dev14 reworded", "dev14 new"})
+FRESH = frozenset({"dev14 reworded", "dev14 new", "dev15 reworded", "dev15 new"})
 GENERATOR = "logicenvgen"
 
 

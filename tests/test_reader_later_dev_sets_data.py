@@ -1,6 +1,6 @@
-"""The reader's fifth to fourteenth development sets (tests/data/reader_dev5/, reader_dev6/,
+"""The reader's fifth to fifteenth development sets (tests/data/reader_dev5/, reader_dev6/,
 reader_dev7/, reader_dev8/, reader_dev9/, reader_dev10/, reader_dev11/, reader_dev12/, reader_dev13/,
-reader_dev14/): new tasks and rewordings written from the task format, the
+reader_dev14/, reader_dev15/): new tasks and rewordings written from the task format, the
 catalog and the built-in tasks, without reading the offline reader or running it on them, for rounds of reader
 rules to be tuned on. One table of what differs between them; the same checks for each.
 
@@ -17,7 +17,11 @@ dev 13 were written side by side: dev 12 in registers of speech and personal wri
 beginning with a letter a-l, dev 13 in registers of documents, forms and genre writing and room
 ids beginning with a letter m-z. dev 14 came after both, in registers of neither family
 (performance, instructions for machines and games, quizzes, signage, lists of other kinds,
-non-native English of speakers of languages no set used).
+non-native English of speakers of languages no set used). dev 15 came after dev 14, in families
+barely touched before: workplace and trade writing (a plumber's job ticket, a police briefing),
+messaging formats with their own structure (an email reply chain, a forum post quoting earlier
+posts), writing of another period (a Victorian household manual, a 1950s advertisement), a child's
+dictation written down by an adult and a careless machine translation.
 """
 
 from __future__ import annotations
@@ -82,6 +86,7 @@ SETS = (
     DevSet("reader_dev12", "_d12", 3, 6, ("greenhouse_grandad_interview", "bathroom_counter_sort_d12")),
     DevSet("reader_dev13", "_d13", 3, 6, ("rec_room_gamebook", "kitchen_fridge_restock_d13")),
     DevSet("reader_dev14", "_d14", 3, 6, ("pool_house_applets", "study_desk_cleanup_d14")),
+    DevSet("reader_dev15", "_d15", 3, 6, ("still_room_household_manual", "laundry_drying_rack_d15")),
 )
 IDS = [s.name for s in SETS]
 ENTRIES = {s.name: rewordings(DATA / s.name) for s in SETS}
