@@ -5,8 +5,9 @@ one) and sentences written for the test in other rooms and registers; each fails
 from __future__ import annotations
 
 import numpy as np
-from reading import CATALOG, factors, placed
+from reading import CATALOG, brief, factors, placed
 
+from logicenveval.offline.analysis import analyse
 from logicenveval.offline.sentences import split_sentences, unquote
 from logicenveval.scene.construct import construct_environment
 from logicenveval.scene.spec import ObjectRequest, RoomRequest, SceneSpec
@@ -168,3 +169,20 @@ def test_things_on_one_small_holder_are_drawn_to_share_it() -> None:
     for seed in range(4):
         env = construct_environment(spec, catalog=CATALOG, rng=np.random.default_rng(seed)).env
         assert {o.id for o in env.objects} >= {"stool", "box", "jacket"}
+
+
+# -- labelled steps closed by a semicolon are steps of their own -----------------------------------
+
+
+def test_labelled_steps_closed_by_a_semicolon_are_separate_subtasks() -> None:
+    # dev 13 (patent claims, its wording), then a numbered routine (written for the test)
+    text = ("Steps for the night:\n(a) determining whether the lamp is on and, upon determining that it is on, "
+            "switching it off;\n(b) where the fridge has been left open, closing it; and\n(c) where the mug is "
+            "dirty, putting it in the sink.")
+    groups = analyse(brief(text, ("kitchen",)), CATALOG).groups
+    assert ["fridge_open"] in groups and not any("fridge_open" in g and len(g) > 1 for g in groups)
+    text = ("Evening routine\n1. if the desk lamp is on, switch it off;\n2. if the fridge is open, close it; or\n"
+            "3. if the mug is dirty, put it in the sink.")
+    assert analyse(brief(text, ("kitchen",)), CATALOG).groups == [["desk_lamp_toggled_on"], ["fridge_open"],
+                                                                  ["mug_dirty"]]
+    assert unquote("(a) wipe it;\n(b) dry it") == "wipe it.\ndry it"

@@ -170,6 +170,13 @@ _ITEM_LABEL = re.compile(r"^[ \t]*(?:\((?:[a-z]|[ivx]+|\d{1,2})\)|(?:[a-z]|[ivx]
                          re.M | re.I)
 
 
+#: a semicolon (and a closing "and" / "or") at the end of a labelled item's line before the next
+#: labelled item ("(a) ... switching said vacuum cleaner off;\n(b) where ... closing said box; and\n(c)
+#: where ..."): the items are steps of their own, as numbered lines are, not one sentence
+_ITEM_END = re.compile(r"[ \t]*;(?:[ \t]+(?:and|or))?[ \t]*\n(?=[ \t]*(?:\((?:[a-z]|[ivx]+|\d{1,2})\)"
+                       r"|(?:[a-z]|[ivx]+|\d{1,2})\)|\d{1,2}\.)[ \t]+)", re.I)
+
+
 #: a condition with its subject and copula elided before a participle of finding or leaving (a
 #: work order's "if found on the chair", a manual's "when left open"): "if it is found ..."
 _ELIDED_SUBJECT = re.compile(
@@ -631,7 +638,8 @@ def unquote(text: str) -> str:
     (`_IF_ANY`), a condition put first whose pronoun points forward to a result not said yet after
     its main clause (`_FRONTED_ALREADY`), without an email's quoting marks: a reply above a quoted message reads as one
     text ("> On Monday, Jo wrote:" is no sentence; "> Could you tidy ..." is "Could you tidy ...");
-    without the labels of lettered or numbered items; a place the speaker corrects dropped for the
+    without the labels of lettered or numbered items (an item's closing semicolon a full stop:
+    `_ITEM_END`); a place the speaker corrects dropped for the
     one meant ("in the wardrobe, no wait, in the hamper"); a bare state as a subject read as the
     condition it is ("dirty goes in the hamper": "if it is dirty, it goes ..."); an indirect
     question about an action as the state it leaves ("whether I shut the fridge door": "whether
@@ -653,7 +661,7 @@ def unquote(text: str) -> str:
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
     plain = _IF_ANY.sub(_if_any, plain)
     plain = _FRONTED_ALREADY.sub(_postposed, plain)
-    plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", plain))))
+    plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _ITEM_END.sub(".\n", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", plain)))))
     plain = _unabbreviated(plain)
     plain = _PREDICATE_STATE.sub(lambda m: m.group(1) + PREDICATE_STATES[m.group(2).lower()], plain)
     plain = _EMPHATIC_DO.sub("", plain)
