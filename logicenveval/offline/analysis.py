@@ -281,16 +281,29 @@ PHRASAL_STATES = tuple((re.compile(rf"\b(?:{verbs}) (?:{particles})\b"), state) 
 ))
 
 
-#: what a container is filled with: "there is still wine in it" says the bottle is full, not that
+#: what a container is filled with: "there is still wine in it", "if there's already water in it"
+#: say the bottle (the pot) is full, not that
 #: there is a wine bottle ("wine" also names the bottle); read as the state before the clause is
 LIQUIDS = ("water", "wine", "milk", "juice", "coffee", "tea", "beer", "soup", "oil", "soda", "liquid", "drink")
-_CONTENTS = re.compile(rf"\bthere (?:is|are) (?:still |some |any )*(no |not any )?(?:{'|'.join(LIQUIDS)})"
+_CONTENTS = re.compile(rf"\bthere (?:is|are) (?:still |some |any |already |now |even )*(no |not any )?(?:{'|'.join(LIQUIDS)})"
                        rf"(?: left)? (?:in|inside) (it|them)\b")
 
 
 def _contents(said: str) -> str:
     """"there is still wine in it" -> "it is full"; "there is no water left in it" -> "it is empty"."""
     return _CONTENTS.sub(lambda m: f"{m.group(2)} is {'empty' if m.group(1) else 'full'}", said)
+
+
+def _plural_only(word: str) -> bool:
+    """A noun with no singular, named in the plural ("scissors", "tongs", "pliers", "jeans"):
+    lemminflect gives it as its own plural, so "they" may take it up as it takes up "the cups"."""
+    return word.endswith("s") and not word.endswith("ss") and getInflection(word, "NNS")[:1] == (word,)
+
+
+#: words of operation: said of a thing, it is switched on ("if the oven is working", "the fan is
+#: still going"); `_Reader._offered` reads them as the state `OPERATION`, never as an attribute
+OPERATION = "toggled_on"
+OPERATION_WORDS = frozenset({"working", "operating", "functioning", "going", "running", "whirring", "humming"})
 
 
 #: a verb that raises its subject before "to be" says what the subject is, as "is" does ("it
@@ -696,7 +709,7 @@ class _Reader:
         for m in mentions:
             if m.kind == "role" and len(m.roles) == 1:
                 surface = said[toks[m.end - 1][1] : toks[m.end - 1][2]]
-                if surface != words[m.end - 1] and surface.endswith("s"):
+                if surface != words[m.end - 1] and surface.endswith("s") or _plural_only(surface):
                     self.plural.add(m.roles[0])
                 else:
                     self.plural.discard(m.roles[0])
@@ -814,6 +827,7 @@ class _Reader:
                  else self._fit_place(f, words) if f.kind == "location" and f.subject in said_by_pronoun
                  else self._fit_named(f, mentions)
                  for f in facts if self._holds(f)]
+        facts = [g for f in facts if (g := self._offered(f)) is not None]
         facts += self._back_home(words, mentions, facts)
         goals = [f for f in facts if f.kind == "location" and f.goal]
         if goals:
@@ -961,6 +975,9 @@ class _Reader:
         on there, ..."): "there" is where the instruction before put it."""
         if any(m.kind == "role" for m in mentions) or len(words) > 6:
             return []
+        if "already" not in words and "now" in words and set(words) & {"there", "here"}:
+            # "unless it's there now": "now" said of a thing at the place just named is "already"
+            words = ["already" if w == "now" else w for w in words]
         if "already" not in words:
             rest = [w for w in words if w not in ALREADY_FILLER and w not in PRONOUNS]
             if len(rest) != 2 or rest[0] not in PREP_ON | PREP_IN or rest[1] != "there" or not any(
@@ -1035,6 +1052,35 @@ class _Reader:
                     m.start == 1 or words[m.start - 2] in ARTICLES):
                 out += self._adjective(m, words[m.start - 1], False)  # "a ripe one", "an unripe one"
         return out
+
+    def _offered(self, f: Fact) -> Fact | None:
+        """`f` as the brief allows it (the one guard on the attributes this reader states or asks).
+        The prompts show the condition language's state flags (`open`, `toggled_on`, ...) and the
+        catalog's kinds; a kind's catalog attribute domain (`color`, `material`, `kind`, `size`)
+        bounds its values. So an attribute whose value is a word of a state (`STATE_WORDS`) or of
+        operation (`OPERATION`: "if the oven is working") is that state where the kind takes it
+        and nothing where it does not (never `attr(oven, workingness, working)`, which no brief
+        offers and which makes every environment refused), and a value outside the kind's domain
+        for one of its catalog keys is dropped. A key the catalog has for no kind, made from a
+        word the text contrasts ("a ripe one ... an unripe one": `ripeness`), stays: the prompts
+        bound no other key (the plan's schema takes any snake_case key)."""
+        if f.kind != "attr":
+            return f
+        value = f.condition.rsplit(", ", 1)[1][:-1]
+        role = self.lex.roles.get(f.subject) or {}
+        if dict(role.get("attributes") or {}).get(f.key) == value:
+            return f  # the brief's own attribute of the role
+        kind = self.kinds.get(f.subject)
+        domain = dict(kind.attributes or {}) if kind is not None else {}
+        if f.key in domain:
+            return f if value in domain[f.key] else None
+        flag, pol = STATE_WORDS.get(value) or ((OPERATION, True) if value in OPERATION_WORDS else ("", True))
+        if not flag:
+            return f
+        if flag in FITTED and flag not in self.capable.get(f.subject, frozenset({flag})):
+            return None  # a word of operation said of a thing that cannot be switched on
+        return replace(f, condition=f"state({f.subject}, {flag})", kind="state", key=flag,
+                       negated=f.negated != (not pol), derived=False)
 
     def _adjective(self, m: Mention, word: str, negated: bool) -> list[Fact]:
         if word.startswith("un") and len(word) > 5:
@@ -2365,7 +2411,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 values["elsewhere"] = " and ".join(f"not {e['conds'][t]}" for t in targets)
                 fid = f"{subject}_location"
         elif kind == "attr":
-            real = [v for v in e["values"] if v != "other"]
+            # a class the text names (`attribute_classes`) is bound by the kind's catalog domain
+            # as a stated value is (`_Reader._offered`)
+            cat = catalog.get(str(dict(dict(brief.get("roles") or {}).get(subject) or {}).get("category", "")))
+            domain = dict(cat.attributes or {}) if cat is not None else {}
+            real = [v for v in e["values"] if v != "other" and (key not in domain or v in domain[key])]
             if not real:
                 continue
             values = {v: f"attr({subject}, {key}, {v})" for v in real}

@@ -618,7 +618,7 @@ def clause_spans(words: list[str], lo: int, hi: int, *, verbs: frozenset[str],
         question = (b < len(words) and words[b] == "?" or (b - 1 >= a and words[b - 1] == "?")) and not (
             body[0] in REQUESTS and body[1:2] == ["you"])
         # "Plate on the table: ..." (a verbless checklist item), not "The pantry has two shelves: ..."
-        heading = b < len(words) and words[b] == ":" and verbless(body)
+        heading = b < len(words) and words[b] == ":" and verbless(body) and not set(body) & HOLDING
         # "... should go where it belongs - the book on the couch": a verbless part after a dash or a
         # colon goes on with the clause before it (here a goal), not a statement of its own
         follows_goal = (a > 0 and words[a - 1] in ("-", ":") and not set(body) & verbs and bool(out)
@@ -636,6 +636,12 @@ def clause_spans(words: list[str], lo: int, hi: int, *, verbs: frozenset[str],
         # a habitual statement ("the ball keeps ending up on the floor") is doubted like "may"
         out.append(Span(a, b, mood, doubts(body) or habitual(body), follows_goal))
     return out
+
+
+#: the participles of having that make a part before a colon a description of what a thing holds,
+#: not a checklist heading ("said mezzanine comprising a stool and a box disposed on it, the method
+#: comprising the steps of:", "A shelf holding two mugs and a jar: ...")
+HOLDING = frozenset({"comprising", "containing", "having", "holding", "housing"})
 
 
 #: verbs that say where a thing must go only before "to" ("it has to go on the desk", "the

@@ -86,12 +86,17 @@ STATIVE = frozenset({"lie", "lies", "lay", "lying", "sit", "sits", "sat", "sitti
 #: participles that state a result ("has been left on the floor", "are found in the kitchen"):
 #: after a perfect ("has/have been") all of these state a place; after a plain "is/are" only the
 #: `PASSIVE_STATIVE` ones do ("is put on the bed" is an instruction in the passive voice)
-RESULT = frozenset({"left", "dropped", "put", "placed", "thrown", "set", "found", "located", "knocked",
+#: participles of placement in a formal register (patents, inventories, specifications: "a box
+#: disposed on a stool", "the lamp is positioned on the desk", "a hook mounted on the door"): they
+#: say where a thing is, as "located" does, never where it should go
+PLACED = frozenset({"located", "situated", "disposed", "positioned", "arranged", "mounted", "received",
+                    "housed", "seated", "perched", "stationed"})
+RESULT = frozenset({"left", "dropped", "put", "placed", "thrown", "set", "found", "knocked",
                     "kept", "stored", "dumped", "abandoned", "forgotten", "parked", "stuck", "present",
-                    "spread", "draped", "slung"})
-PASSIVE_STATIVE = frozenset({"found", "located", "kept", "stored", "situated", "seated",
+                    "spread", "draped", "slung"}) | PLACED
+PASSIVE_STATIVE = frozenset({"found", "kept", "stored",
                              "present",  # "a dirty mark is present on the floor"
-                             "spread", "draped", "slung"})  # "the throw is draped over the sofa"
+                             "spread", "draped", "slung"}) | PLACED  # "the throw is draped over the sofa"
 #: verbs of covering and hanging after which "over" names the thing under, which holds it ("the
 #: blanket, spread over the bed", "a towel draped over the chair", "the coat hanging over the
 #: banister"): there "over" is "on" (elsewhere "over" is a particle: "knocked over", "fell over")
@@ -102,7 +107,9 @@ PAST_BE = frozenset({"was", "were"})
 #: verbs whose subject holds what follows ("the kitchen has the dishwasher", "it contains a bed",
 #: "the basket also holds a box of cereal")
 HAVE_VERBS = frozenset({"has", "have", "had", "contains", "contain", "holds", "hold", "got", "includes",
-                        "include", "houses"})
+                        "include", "houses",
+                        # the formal register's verb of having ("said room comprising a desk, ...")
+                        "comprises", "comprise", "comprising"})
 #: verbs of motion and of belonging a terse clause may carry ("a newspaper on the floor goes in the bin")
 MOTION = frozenset({"go", "goes", "went", "belong", "belongs", "get", "gets", "come", "comes", "need",
                     "needs", "should", "must", "want", "wants",
@@ -821,7 +828,10 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
             while who > lo and words[who] in ADVERBS:
                 who -= 1
             if subjects and subjects[-1].end == start:  # "the keys lying on the floor": a modifier
-                kind = "presumed" if _definite(sent.words, subjects[-1].start) else ""
+                if _definite(sent.words, subjects[-1].start):
+                    kind = "presumed"
+                elif not (clause.mood == "statement" and _held_list(words, clause, subjects[-1].start)):
+                    kind = ""
                 subjects = subjects[-1:]
             elif who >= lo and words[who] in SUBJECT_PRONOUNS and group[-1] in RESULT:
                 at = next((k for k in range(end, clause.end) if words[k] in AT), clause.end)
@@ -858,6 +868,16 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         lo = _gapped(sent, clause, ms, holder.end, kind, lex, catalog, reading)
     if clause.mood == "statement":
         _fragment(sent, clause, ms, lex, catalog, reading)
+
+
+def _held_list(words: list[str], clause: Span, start: int) -> bool:
+    """Whether the thing at `start` is listed as what a statement's subject holds ("The shed holds a
+    mower and a rake leaning on the wall", "said mezzanine comprising ..., a box disposed on a
+    stool, ..."): a verb of having (`HAVE_VERBS`) stands before it in its clause. There a
+    participle of resting or placement after an indefinite thing states where it is, as a list of
+    the scene's things does; elsewhere it describes one that may not be there ("pick up a toy
+    lying on the floor")."""
+    return any(w in HAVE_VERBS for w in words[clause.start:start])
 
 
 def _code_switched(sent: _Sentence) -> bool:
@@ -964,11 +984,20 @@ def _adjunct_subject(sent: _Sentence, ms: list[Mention], lo: int, comma: int) ->
     """The subject of a participle set off by a comma after a finished clause (a free adjunct: "The
     telly's been on since kick-off, sitting up there on the TV stand", "The kettle is still warm,
     standing on the hob"): English gives it the clause's subject, the noun-phrase list before the
-    clause's first finite verb; none when the clause has no such subject."""
+    clause's first finite verb; a verbless noun-phrase list is the subject itself; none when the
+    clause has neither."""
     words = sent.words
     for f in range(lo, comma):
         if words[f] in BE | PERFECT or words[f] in STATIVE and _finite([words[f]]):
             return _np_list(sent, ms, lo, f) if f > lo and words[f - 1] not in PLACE_PRONOUNS else []
+    # no verb: a list's item, a noun phrase alone before the comma ("1 wicker basket, sitting on
+    # the ironing board", "A spare towel, lying on the shelf"): the item is where it rests, as a
+    # verbless "Bath mat on the floor" is (`_fragment`)
+    subjects = _np_list(sent, ms, lo, comma)
+    covered = {k for m in subjects for k in range(m.start, m.end)}
+    if subjects and all(k in covered or w in LIST_GLUE or w in COLOR_WORDS or w in STATE_WORDS or w.isdigit()
+                        for k, w in enumerate(words[lo:comma], lo)):
+        return subjects
     return []
 
 
@@ -1369,12 +1398,15 @@ def _in_room(sent: _Sentence, clause: Span, ms: list[Mention], reading: _Reading
 
 
 def _moved(words: list[str], start: int, clause: Span) -> bool:
-    """The object at `start` follows an instruction verb ("put the clean mug ...")."""
+    """The object at `start` follows an instruction verb ("put the clean mug ...") or its -ing
+    form, the action named as a step ("the step comprises hanging the jacket on the hook",
+    "finish by putting the mug in the sink")."""
     j = start - 1
     while j >= clause.start and (words[j] in ARTICLES or words[j] in STATE_WORDS or words[j] in COLOR_WORDS
                                  or re.fullmatch(r"[a-z]+(ed|est)", words[j])):
         j -= 1
-    return j >= clause.start and words[j] in ACTIONS
+    return j >= clause.start and (words[j] in ACTIONS or words[j].endswith("ing") and any(
+        lemma in ACTIONS for lemma in getAllLemmas(words[j]).get("VERB", ())))
 
 
 def _resting(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,

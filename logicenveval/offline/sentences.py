@@ -156,6 +156,11 @@ _WITH = re.compile(r"\bw/\s*", re.I)
 #: the ">" that opens each quoted line; neither says anything of the scene
 _ATTRIBUTION = re.compile(r"^[ \t>]*On\b[^\n]{0,80}\bwrote:[ \t]*$", re.M)
 _QUOTE_MARK = re.compile(r"^[ \t]*(?:>[ \t]?)+", re.M)
+#: a reference work's marks after a word or a full stop (an encyclopedia article, a report: "shut
+#: afterwards.[3] The bat ...", "is meant to be displayed.[citation needed]", "on the bar[a]"):
+#: they say where a claim comes from, never what it claims, and hide the sentence's end
+_CITATION = re.compile(r"(?<=\S)\[(?:\d+(?:\s*[,\u2013-]\s*\d+)*|[a-z]|(?:citation|clarification) needed"
+                       r"|dubious(?: [^\]\n]{0,30})?|who\?|when\?|by whom\?|according to whom\?)\]", re.I)
 
 
 #: the label of a lettered or numbered item at a line's start ("(b) Bedroom: ...", "c) ...",
@@ -163,6 +168,13 @@ _QUOTE_MARK = re.compile(r"^[ \t]*(?:>[ \t]?)+", re.M)
 #: heading after it ("(b) Bedroom:" is no room heading)
 _ITEM_LABEL = re.compile(r"^[ \t]*(?:\((?:[a-z]|[ivx]+|\d{1,2})\)|(?:[a-z]|[ivx]+|\d{1,2})\)|\d{1,2}\.)[ \t]+",
                          re.M | re.I)
+
+
+#: a semicolon (and a closing "and" / "or") at the end of a labelled item's line before the next
+#: labelled item ("(a) ... switching said vacuum cleaner off;\n(b) where ... closing said box; and\n(c)
+#: where ..."): the items are steps of their own, as numbered lines are, not one sentence
+_ITEM_END = re.compile(r"[ \t]*;(?:[ \t]+(?:and|or))?[ \t]*\n(?=[ \t]*(?:\((?:[a-z]|[ivx]+|\d{1,2})\)"
+                       r"|(?:[a-z]|[ivx]+|\d{1,2})\)|\d{1,2}\.)[ \t]+)", re.I)
 
 
 #: a condition with its subject and copula elided before a participle of finding or leaving (a
@@ -577,8 +589,19 @@ def _archaic(m: re.Match[str]) -> str:
     return m.group(0)
 
 
+#: the legal register's anaphoric determiner ("a jacket draped over said stool", "closing said box",
+#: "the aforesaid lamp"): "said" or "aforesaid" as a determiner is "the". Only where no verb "said"
+#: can stand: after a preposition, a verb's -ing form, a comma or a sentence's start, and before a
+#: bare word ("Mum said the mug ...", "as I said, the mug", "having said that" keep theirs)
+_LEGAL_SAID = re.compile(r"(^[ \t]*|[.;:,(]\s+|\b(?:on|in|over|of|to|into|onto|from|under|by|with|inside|upon|at|"
+                         r"for)\s+|\b[a-z]+ing\s+)((?:afore)?said)\s+(?!(?:the|a|an|that|this|it|so|to|yes|no|"
+                         r"nothing|something|hello|goodbye|and|or|he|she|they|we|you|i)\b)(?-i:(?=[a-z]))", re.I | re.M)
+
+
 def _modern(text: str) -> str:
-    """`text` with its Early Modern English verb forms as today's (`ARCHAIC_VERBS`, `_ETH`)."""
+    """`text` with its Early Modern English verb forms as today's (`ARCHAIC_VERBS`, `_ETH`), and the
+    legal register's determiner "said" as "the" (`_LEGAL_SAID`)."""
+    text = _LEGAL_SAID.sub(lambda m: m.group(1) + _match_case(m.group(2), "the "), text)
     text = re.sub(rf"\b(?:{'|'.join(ARCHAIC_VERBS)})\b", lambda m: _match_case(
         m.group(0), ARCHAIC_VERBS[m.group(0).lower()]), text, flags=re.I)
     return _ETH.sub(_archaic, text)
@@ -615,7 +638,8 @@ def unquote(text: str) -> str:
     (`_IF_ANY`), a condition put first whose pronoun points forward to a result not said yet after
     its main clause (`_FRONTED_ALREADY`), without an email's quoting marks: a reply above a quoted message reads as one
     text ("> On Monday, Jo wrote:" is no sentence; "> Could you tidy ..." is "Could you tidy ...");
-    without the labels of lettered or numbered items; a place the speaker corrects dropped for the
+    without the labels of lettered or numbered items (an item's closing semicolon a full stop:
+    `_ITEM_END`); a place the speaker corrects dropped for the
     one meant ("in the wardrobe, no wait, in the hamper"); a bare state as a subject read as the
     condition it is ("dirty goes in the hamper": "if it is dirty, it goes ..."); an indirect
     question about an action as the state it leaves ("whether I shut the fridge door": "whether
@@ -629,14 +653,15 @@ def unquote(text: str) -> str:
     common word ("the dishwasher's already going": "running", `PREDICATE_STATES`); a table of items and places as its sentences
     (`detable`); a rule written as a record of keyed lines as its conditional (`derecord`); a heading answered by a verb with no subject of its own with the heading as that
     subject (`_SUBJECTLESS`); a chat message's `*`-correction made in the message it corrects
-    (`starred`), without a chat line's time stamp (`_TIME_STAMP`)."""
+    (`starred`), without a chat line's time stamp (`_TIME_STAMP`) and without a reference work's
+    citation marks (`_CITATION`)."""
     text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_modern(_NATIVE_IF.sub(_native_if, text))))))
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), _SPELLED[m.group(0).lower()]), text))
-    text = starred(_TIME_STAMP.sub(r"\1", text))
+    text = starred(_TIME_STAMP.sub(r"\1", _CITATION.sub("", text)))
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
     plain = _IF_ANY.sub(_if_any, plain)
     plain = _FRONTED_ALREADY.sub(_postposed, plain)
-    plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", plain))))
+    plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _ITEM_END.sub(".\n", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", plain)))))
     plain = _unabbreviated(plain)
     plain = _PREDICATE_STATE.sub(lambda m: m.group(1) + PREDICATE_STATES[m.group(2).lower()], plain)
     plain = _EMPHATIC_DO.sub("", plain)
@@ -831,14 +856,41 @@ def expand(text: str) -> str:
 #: before a line that opens with a conjunction or a finite "be" and asks no question ("The
 #: dishwasher door may be wide / or be shut", "if the sponge / is lying on the counter"); a
 #: chat's lines ("... leave it there / toothpaste and soap - ...") open with a sentence's own words
-_BROKEN_LINE = re.compile(r"(?<=[A-Za-z])[ \t]*\n[ \t]*(?=(?:or|and|but|nor|is|are|was|were)\s[^?\n]*$)", re.M)
+_BROKEN_LINE = re.compile(r"(?<=[A-Za-z])[ \t]*\n[ \t]*(?=(?:or|and|but|nor|is|are|was|were|"
+                          # the auxiliaries, modals and verbs of where a thing belongs that go on a
+                          # subject the line before opened ("Should a sofa cushion / have ended up on
+                          # the floor", "The TV remote / belongs on the TV stand", "the mug / should
+                          # go in the sink"); a line that opens with its own verb ("close it") stays
+                          r"has|have|had|should|must|will|would|can|could|may|might|shall|does|do|did|"
+                          r"needs|wants|belongs|goes|lives|stays|sits|lies|stands|hangs|remains)\s[^?\n]*$)",
+                          re.M)
+#: a line that ends in a comma goes on in the next when that opens with a small letter (verse, a
+#: wrapped line: "Should a cushion have ended up on the floor, / put it on the sofa."), and a
+#: line that ends in a verb of resting goes on in a next that opens with its place ("A clean one
+#: should lie / on the armchair"); a line that opens with a capital starts its own sentence, and
+#: one that asks a question stays apart, as in `_BROKEN_LINE` ("Candle on the table, / still
+#: burning?" asks of the candle, not of its place)
+_CONTINUED_LINE = re.compile(r"(?:,|\b(?P<verb>lie|lies|sit|sits|stand|stands|hang|hangs|stay|stays|rest|rests|"
+                             r"belong|belongs|live|lives|go|goes))[ \t]*\n[ \t]*(?P<next>[a-z]+)\b(?=[^?\n]*$)", re.M)
+
+
+def _continued(m: re.Match[str]) -> str:
+    """A line's break joined where `_CONTINUED_LINE` says the sentence goes on."""
+    if m.group("verb") and m.group("next") not in _LINE_PLACES:
+        return m.group(0)
+    return m.group(0)[: m.end(0) - m.start(0) - len(m.group("next"))].rstrip(" \t\n") + " " + m.group("next")
+
+
+#: the prepositions of place a line may open with to finish the line before's verb of resting
+_LINE_PLACES = frozenset({"on", "in", "inside", "under", "by", "near", "beside", "behind", "at", "onto", "into",
+                          "next", "against", "upon", "atop"})
 
 
 def split_sentences(text: str, *, full_stops_only: bool = False) -> list[str]:
     """The text's sentences (and `;`/`:`-separated parts), abbreviations kept whole, a line
-    broken inside a sentence joined (`_BROKEN_LINE`). With `full_stops_only`, only at a full
+    broken inside a sentence joined (`_BROKEN_LINE`, `_CONTINUED_LINE`). With `full_stops_only`, only at a full
     stop, "!" or a line break: for a reader that cuts the rest itself
     (`offline.clauses.clause_spans` cuts at ";", ":", "?" and brackets)."""
-    protected = _ABBREV.sub(lambda m: m.group(0).replace(".", "\u2024"), _BROKEN_LINE.sub(" ", text))
+    protected = _ABBREV.sub(lambda m: m.group(0).replace(".", "\u2024"), _BROKEN_LINE.sub(" ", _CONTINUED_LINE.sub(_continued, text)))
     parts = [p.strip().replace("\u2024", ".") for p in (_FULL_STOP if full_stops_only else _SENT).split(protected)]
     return [p for p in parts if p]

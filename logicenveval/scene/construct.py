@@ -192,6 +192,34 @@ class _Builder:
 
         for oid in sorted(self.objects, key=depth):
             self.sizes[oid] = self._size(self.objects[oid])
+        for pid in list(self.sizes):
+            for mode in ("on", "inside"):
+                self._share(pid, mode)
+
+    def _share(self, pid: str, mode: str) -> None:
+        """Things put together on (or in) one holder drawn so that they can share it: each size
+        is drawn alone, up to the holder's top, so two told items on a stool ("a cardboard box
+        disposed on a stool, a jacket draped over said stool") may each fill it. Only when the
+        drawn footprints exceed the holder's top in cells (no packing can hold them) are the
+        items without things of their own drawn at their smallest footprint; a layout that fits
+        is left as it is (no draw of the generator changes)."""
+        kids = [o.id for o in self.objects.values() if (o.support == pid if mode == "on" else o.container == pid)]
+        if len(kids) < 2:
+            return
+        ps = self.sizes[pid]
+        m = CONTAINER_MARGIN if mode == "inside" else 0.0
+        shape = load_shapes().of(self.objects[pid].category) if mode == "on" else None
+        back = shape.surface()[1] if shape is not None else 0.0
+        frame = math.floor((ps[0] - 2 * m) / self.g + 1e-6) * math.floor((ps[2] * (1 - back) - 2 * m) / self.g + 1e-6)
+        if sum(cells(self.sizes[k][0], self.g) * cells(self.sizes[k][2], self.g) for k in kids) <= frame:
+            return
+        held = {o.support for o in self.objects.values()} | {o.container for o in self.objects.values()}
+        for k in kids:
+            if k in held:
+                continue  # a holder of its own keeps the room its things need
+            cat, (x, y, z) = self.cats[k], self.sizes[k]
+            self.sizes[k] = (_snap_size(cat.size_min[0], cat.size_min[0], x, self.g), y,
+                             _snap_size(cat.size_min[2], cat.size_min[2], z, self.g))
 
     def _size(self, o: ObjectRequest) -> tuple[float, float, float]:
         cat = self.cats[o.id]
