@@ -45,6 +45,7 @@ from logicenveval.offline.clauses import (
 from logicenveval.offline.implied import any_at, implied
 from logicenveval.offline.lexicon import (
     COLOR_WORDS,
+    PART_TIES,
     VERB_OBJECTS,
     Lexicon,
     Mention,
@@ -256,6 +257,12 @@ _FRONTED_FINDING = re.compile(r"(?:you|we|i)\s+(?:(?:can|will|would|should|also|
 #: a condition that only says its thing is, or is not, there ("if it's there", "if they're still
 #: there", "if it isn't there")
 _THERE = re.compile(r"^\W*(?:it|they) (?:is|are) (?:still )?(?P<not>not )?there\W*$")
+#: a condition that only says its thing appears, or is anywhere at all ("if it turns up", "if they
+#: show up", "if it's anywhere", "if it is here at all"): whether the thing is there at all
+#: ("anywhere else" is a place, `ELSEWHERE`)
+_APPEARS = re.compile(r"^\W*(?:it|they) (?:(?:ever|still|does|do|did) )?"
+                      r"(?:turns? up|shows? up|turned up|showed up|(?:is|are) found|(?:re)?appears?|(?:re)?appeared"
+                      r"|(?:is|are) (?:anywhere|around|(?:here|there|around) at all))\W*$")
 #: a trailing ellipsis ("... if it's dirty straight into the washing machine...")
 _TRAILING = ("...", "\u2026")
 #: "it is the X", "that's the X": a clause that says which thing was spoken of
@@ -393,8 +400,11 @@ def _fronted_thing(words: list[str], found: list[Mention], first: Mention | None
     if first is None or first.kind not in ("role", "floor"):
         return first
     lead = [w for w in words[:first.start] if w not in FRONT_LEADS and w not in ARTICLES]
-    if not lead or lead[-1] not in _FRONT_PREPS or len(lead) > 2 \
-            or len(lead) == 2 and not _a_participle(lead[0]):
+    # "On the mantelpiece above the fireplace sits the candle" with no role for the mantelpiece
+    # (a part the catalog has no kind for, `lexicon.PART_TIES`): the place is the fireplace's part
+    tied = len(lead) == 3 and lead[0] in _FRONT_PREPS and lead[1].isalpha() and lead[2] in PART_TIES
+    if not tied and (not lead or lead[-1] not in _FRONT_PREPS or len(lead) > 2
+                     or len(lead) == 2 and not _a_participle(lead[0])):
         return first
     end = first.end
     for m in (m for m in found if m.kind == "role" and m.start >= first.end):
@@ -810,6 +820,8 @@ class _Reader:
         if "respectively" in words:
             facts = _respectively(facts)
         said_by_pronoun = {r for m in mentions if m.kind == "pronoun" for r in m.roles}
+        facts = [self._fitting_referent(f) if f.subject in said_by_pronoun and not self._holds(f) else f
+                 for f in facts]
         facts = [self._fit(f) if f.kind == "state" and f.subject in said_by_pronoun
                  else self._fit_place(f, words) if f.kind == "location" and f.subject in said_by_pronoun
                  else self._fit_named(f, mentions)
@@ -890,14 +902,34 @@ class _Reader:
         `scene.compat.can_hold` on their catalog sizes and kinds) is a misreading, not a fact; so
         is a piece of furniture (a surface or container nobody carries: a dishwasher) on or in
         another, which the sizes alone may allow ("unless the dishwasher is running, then just
-        chuck it in the sink" is no dishwasher in the sink)."""
+        chuck it in the sink" is no dishwasher in the sink), and a thing that lies on the floor
+        alone and is never carried (a puddle, a stain: catalog placement `floor`) inside
+        anything: the sizes of a flat puddle let it "fit" a cabinet."""
         relation = f.condition.split("(", 1)[0]
         item, holder = self.kinds.get(f.subject), self.kinds.get(f.key)
         if f.kind != "location" or relation not in ("on", "inside") or item is None or holder is None:
             return True
         if not item.pickable and (item.surface or item.container):
             return False
+        if relation == "inside" and not item.pickable and item.placement == ["floor"]:
+            return False
         return can_hold(item, holder, relation)
+
+    def _fitting_referent(self, f: Fact) -> Fact:
+        """A place a pronoun's referent cannot take (`_holds`) is said of the nearest thing
+        named before that can, carried about ("wipe the puddle with the old towel - it's kept in
+        the vanity, unless somebody's stuffed it in the cabinet": the towel, not the puddle the
+        item spoke of; "mop up the spill with the cloth, unless you left it in the bucket"):
+        pronouns go to the nearest fitting mention. `f` unchanged (and then dropped) when none
+        fits."""
+        relation = f.condition.split("(", 1)[0]
+        for r in reversed(self.recent):
+            if r in (f.subject, f.key) or not self._carried(r):
+                continue
+            other = replace(f, subject=r, condition=f"{relation}({r}, {f.key})")
+            if self._holds(other):
+                return other
+        return f
 
     def _misfit(self, f: Fact) -> bool:
         """Whether `f` is an on/open state (`FITTED`) of a thing that cannot take it."""
@@ -2195,6 +2227,10 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # isn't there, nothing to do": after a condition asking whether the thing is there
                 # at all, "there" is that presence, not the place the instruction put it
                 facts = [Fact(r, f"exists({r})", "exists", negated=bool(there.group("not"))) for r in asked]
+            elif role == "condition" and not facts and names and _APPEARS.match(low):
+                # "If it turns up, put it on the desk", "it'll be on the floor if it's anywhere":
+                # a thing spoken of that may turn up, or be anywhere at all, may be absent
+                facts = [Fact(r, f"exists({r})", "exists") for r in names[:1]]
             elif role == "condition" and not facts and names and there and not there.group("not"):
                 # "Wallet. If it's there, lost property basket": with no place named before to
                 # point to, "it is there" asks whether the thing is there at all
