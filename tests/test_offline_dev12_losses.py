@@ -120,3 +120,24 @@ def test_a_part_named_by_the_catalogs_own_word_stays_its_own_thing() -> None:
     assert "wall_shelf" in kinds(text, ("study",))
     assert "desk_lamp_toggled_on" in factors(text, ("study",))
     assert "on(desk_lamp, wall_shelf)" in placed("The lamp is on the shelf above the desk.", ("study",))
+
+
+# -- a remark after a comma in a bracketed aside ------------------------------------------------------
+
+
+def test_a_remark_in_an_aside_after_its_things_name_keeps_the_subject_with_its_verb() -> None:
+    # dev 12 (a teen's diary): the aside's commas cut the teddy from "keeps ending up on the floor"
+    text = ("Mr Buttons (my teddy bear, don't judge me, Diary) keeps ending up on the floor. If he's down "
+            "there, he goes back on my bed where he belongs.")
+    assert asks(text, ("dormer_room",), "on(teddy_bear, floor)")
+    # written for the test: a plant with a name and a remark in its aside
+    text = ("The cactus (my potted plant, yes, he has a name) keeps falling on the floor. If it is down there, "
+            "put it back on the windowsill.")
+    assert asks(text, ("bedroom",), "on(potted_plant, floor)")
+
+
+def test_an_aside_that_lists_things_stays_whole() -> None:
+    # near misses: a list in brackets, and an aside whose first part names nothing
+    assert "cup_dirty" in factors("Wash the dishes (the plates, the bowls, the cups) if they are dirty.", ("kitchen",))
+    text = "Ziggy (our cat, bless him, Sam) keeps knocking my mug off the desk. If the mug is on the floor, put it in the sink."
+    assert asks(text, ("kitchen",), "on(mug, floor)")

@@ -1975,6 +1975,27 @@ _CHECK = re.compile(r"^(?P<lead>\W*(?:please\s+|now\s+|then\s+|first\s+)?)(?:che
                     r"(?P<thing>[^,;.!?]+?)(?P<end>\s*[.!;]?\s*)$", re.I)
 
 
+#: a bracketed aside with a comma in it ("(my teddy bear, don't judge me, Diary)")
+_COMMA_ASIDE = re.compile(r"\((?P<head>[^(),]+)(?P<tail>(?:,[^(),]*)+)\)")
+
+
+def _remark_dropped(sentence: str, lex: Lexicon) -> str:
+    """A bracketed aside that names a thing, then goes on after a comma with words that name
+    nothing ("Mr Buttons (my teddy bear, don't judge me, Diary) keeps ending up on the floor",
+    "The cactus (Spike, yes, he has a name) sits on the sill") as its first part alone: the rest
+    is a remark to the reader, and its commas cut the subject from its verb. An aside whose later
+    parts name things too is a list ("(plates, bowls and cups)") and stays."""
+    def keep(m: re.Match[str]) -> str:
+        if not any(x.kind == "role" for x in lex.find_mentions(tokens(expand(m.group("head"))))):
+            return m.group(0)
+        rest = [p for p in m.group("tail").split(",") if p.strip()]
+        if any(lex.find_mentions(tokens(expand(p))) for p in rest):
+            return m.group(0)
+        return f"({m.group('head').strip()})"
+
+    return _COMMA_ASIDE.sub(keep, sentence)
+
+
 def _checked(sentence: str, lex: Lexicon, kinds: Mapping[str, Category]) -> str:
     """A sentence that looks at a place for a thing ("Check the bed for my phone.") as the doubt
     it implies ("My phone may be on the bed."): in a container that is no surface the thing is
@@ -2113,7 +2134,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     categories = {name: str(role.get("category", "")) for name, role in dict(brief.get("roles") or {}).items()}
     # the conditions a sentence implies without a cue are spelled out after its bullet item is
     # found (`_bullet_items` finds a sentence by its words in the text)
-    found_in_text = [_ensured(_checked(sent, lex, kinds))
+    found_in_text = [_ensured(_checked(_remark_dropped(sent, lex), lex, kinds))
                      for sent in split_sentences(any_at(unquote(str(brief["description"]))))]
     sentences = [implied(sent) for sent in found_in_text]
     clauses: list[Clause] = []
