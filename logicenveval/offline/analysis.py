@@ -1872,7 +1872,7 @@ def _read_heading(reader: _Reader, text: str) -> tuple[list[Fact], tuple[str, ..
 
 #: state flags only some kinds of thing take (a shirt does not open, a towel is not switched on),
 #: with the catalog capability that allows each
-FITTED_BY = {"open": "openable", "toggled_on": "toggleable"}
+FITTED_BY = {"open": "openable", "toggled_on": "toggleable", "filled": "fillable"}
 FITTED = frozenset(FITTED_BY)
 #: prepositions with a sense of place only (not "on", "in": "left on", "plugged in"), after which
 #: a bare noun phrase is a place even without an article ("lamp over chart table", "kettle
