@@ -187,3 +187,44 @@ def test_english_words_in_in_and_have_got_stay() -> None:
     assert expand("the cabin, the basin and Kevin") == "the cabin, the basin and Kevin"
     assert expand("we have got a spare") == "we have got a spare"
     assert expand("it has fallen and has been left") == "it has fallen and has been left"
+
+
+# -- "if you come across it" past a sentence that names nothing new -----------------------------------
+
+
+def test_coming_upon_it_reaches_past_a_sentence_that_names_nothing_new() -> None:
+    # dev 12 (a moving-out letter): a sentence of doubt between the key and "if you come across it"
+    text = ("I've left my spare key somewhere. I honestly can't remember whether I gave it back to the "
+            "landlord or not. If you come across it, put it on the bookshelf.")
+    assert asks(text, ("front_room",), "exists(spare_key)")
+    # written for the test: a terse note with a fragment between
+    assert asks("My watch went missing last week. No idea where. If you find it, put it on the desk.",
+                ("study",), "exists(watch)")
+
+
+def test_coming_upon_it_right_after_its_thing_still_asks_it() -> None:
+    # near miss: the sentence right before names the thing
+    assert asks("My watch went missing last week. If you find it, put it on the desk.", ("study",), "exists(watch)")
+
+
+# -- a room frames its sentence up to a question mark -------------------------------------------------
+
+
+def test_a_room_frames_its_sentence_only_up_to_a_question_mark() -> None:
+    # dev 12 (an Italian-English voice message): "capito?" ends the sentence; the dining table,
+    # named after it, is not in the kitchen
+    text = ("The dining room opens onto the cucina, the kitchen, and there in the kitchen you have the "
+            "dishwasher, the sink, the fridge, a cabinet and the recycling bin, capito? Now you clear the "
+            "dining table.")
+    found = placed(text, ("dining_room", "kitchen"))
+    assert "in_room(cabinet, kitchen)" in found and "in_room(dining_table, kitchen)" not in found
+    # written for the test: an American tag question
+    found = placed("In the kitchen you have the dishwasher and the sink, right? Now you clear the dining table.",
+                   ("dining_room", "kitchen"))
+    assert "in_room(sink, kitchen)" in found and "in_room(dining_table, kitchen)" not in found
+
+
+def test_a_room_still_frames_everything_its_sentence_names() -> None:
+    # near miss: no question mark, the whole sentence is framed
+    assert {"in_room(pet_bowl, kitchen)", "in_room(rug, kitchen)"} <= placed(
+        "In the kitchen there are two pet bowls and a mat.", ("kitchen", "hallway"))

@@ -1536,10 +1536,14 @@ def _come_upon(clauses: list[Clause], sentence: int, text: str) -> tuple[list[Fa
     words = {w for w, _, _ in tokens(expand(text))}
     if not (words & DISCOVERY and words & AGENTS):
         return [], ()
+    # the sentence before, or the one before that when it names nothing ("I've left my spare key
+    # somewhere. I can't remember whether I gave it back or not. If you come across it, ...")
+    said = [cl for cl in clauses if cl.mentions and cl.role in ("statement", "scene", "uncertain", "consequence")]
+    reach = sentence - 1 if any(cl.sentence == sentence - 1 for cl in said) else sentence - 2
     for cl in reversed(clauses):
-        if cl.sentence < sentence - 1:
+        if cl.sentence < reach:
             break
-        if cl.mentions and cl.role in ("statement", "scene", "uncertain", "consequence"):
+        if cl in said:
             r = cl.mentions[0]
             return [Fact(r, f"exists({r})", "exists")], (r,)
     return [], ()

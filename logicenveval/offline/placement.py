@@ -771,10 +771,13 @@ def _frame(sent: _Sentence, reading: _Reading, lo: int) -> None:
         if framed is None:
             return
         first = framed
+    # (a question mark ends the sentence the room frames: "... the sink, right? Now you clear the
+    # dining table", which this reader reads as one sentence, `_sentences`)
+    end = next((k for k in range(first.end, len(words)) if words[k] == "?"), len(words))
     for later in sent.mentions:
         if later.start < first.end:
             continue
-        if later.kind == "room":
+        if later.kind == "room" or later.start > end:
             break
         if later.kind == "role" and not _indefinite_doubt(sent, later) and _named(words, later.start):
             for role in _roles(later, sent):
