@@ -45,6 +45,7 @@ from logicenveval.offline.clauses import (
 from logicenveval.offline.implied import any_at, implied
 from logicenveval.offline.lexicon import (
     COLOR_WORDS,
+    PART_TIES,
     VERB_OBJECTS,
     Lexicon,
     Mention,
@@ -256,6 +257,12 @@ _FRONTED_FINDING = re.compile(r"(?:you|we|i)\s+(?:(?:can|will|would|should|also|
 #: a condition that only says its thing is, or is not, there ("if it's there", "if they're still
 #: there", "if it isn't there")
 _THERE = re.compile(r"^\W*(?:it|they) (?:is|are) (?:still )?(?P<not>not )?there\W*$")
+#: a condition that only says its thing appears, or is anywhere at all ("if it turns up", "if they
+#: show up", "if it's anywhere", "if it is here at all"): whether the thing is there at all
+#: ("anywhere else" is a place, `ELSEWHERE`)
+_APPEARS = re.compile(r"^\W*(?:it|they) (?:(?:ever|still|does|do|did) )?"
+                      r"(?:turns? up|shows? up|turned up|showed up|(?:is|are) found|(?:re)?appears?|(?:re)?appeared"
+                      r"|(?:is|are) (?:anywhere|around|(?:here|there|around) at all))\W*$")
 #: a trailing ellipsis ("... if it's dirty straight into the washing machine...")
 _TRAILING = ("...", "\u2026")
 #: "it is the X", "that's the X": a clause that says which thing was spoken of
@@ -406,8 +413,11 @@ def _fronted_thing(words: list[str], found: list[Mention], first: Mention | None
     if first is None or first.kind not in ("role", "floor"):
         return first
     lead = [w for w in words[:first.start] if w not in FRONT_LEADS and w not in ARTICLES]
-    if not lead or lead[-1] not in _FRONT_PREPS or len(lead) > 2 \
-            or len(lead) == 2 and not _a_participle(lead[0]):
+    # "On the mantelpiece above the fireplace sits the candle" with no role for the mantelpiece
+    # (a part the catalog has no kind for, `lexicon.PART_TIES`): the place is the fireplace's part
+    tied = len(lead) == 3 and lead[0] in _FRONT_PREPS and lead[1].isalpha() and lead[2] in PART_TIES
+    if not tied and (not lead or lead[-1] not in _FRONT_PREPS or len(lead) > 2
+                     or len(lead) == 2 and not _a_participle(lead[0])):
         return first
     end = first.end
     for m in (m for m in found if m.kind == "role" and m.start >= first.end):
@@ -823,6 +833,8 @@ class _Reader:
         if "respectively" in words:
             facts = _respectively(facts)
         said_by_pronoun = {r for m in mentions if m.kind == "pronoun" for r in m.roles}
+        facts = [self._fitting_referent(f) if f.subject in said_by_pronoun and not self._holds(f) else f
+                 for f in facts]
         facts = [self._fit(f) if f.kind == "state" and f.subject in said_by_pronoun
                  else self._fit_place(f, words) if f.kind == "location" and f.subject in said_by_pronoun
                  else self._fit_named(f, mentions)
@@ -904,14 +916,34 @@ class _Reader:
         `scene.compat.can_hold` on their catalog sizes and kinds) is a misreading, not a fact; so
         is a piece of furniture (a surface or container nobody carries: a dishwasher) on or in
         another, which the sizes alone may allow ("unless the dishwasher is running, then just
-        chuck it in the sink" is no dishwasher in the sink)."""
+        chuck it in the sink" is no dishwasher in the sink), and a thing that lies on the floor
+        alone and is never carried (a puddle, a stain: catalog placement `floor`) inside
+        anything: the sizes of a flat puddle let it "fit" a cabinet."""
         relation = f.condition.split("(", 1)[0]
         item, holder = self.kinds.get(f.subject), self.kinds.get(f.key)
         if f.kind != "location" or relation not in ("on", "inside") or item is None or holder is None:
             return True
         if not item.pickable and (item.surface or item.container):
             return False
+        if relation == "inside" and not item.pickable and item.placement == ["floor"]:
+            return False
         return can_hold(item, holder, relation)
+
+    def _fitting_referent(self, f: Fact) -> Fact:
+        """A place a pronoun's referent cannot take (`_holds`) is said of the nearest thing
+        named before that can, carried about ("wipe the puddle with the old towel - it's kept in
+        the vanity, unless somebody's stuffed it in the cabinet": the towel, not the puddle the
+        item spoke of; "mop up the spill with the cloth, unless you left it in the bucket"):
+        pronouns go to the nearest fitting mention. `f` unchanged (and then dropped) when none
+        fits."""
+        relation = f.condition.split("(", 1)[0]
+        for r in reversed(self.recent):
+            if r in (f.subject, f.key) or not self._carried(r):
+                continue
+            other = replace(f, subject=r, condition=f"{relation}({r}, {f.key})")
+            if self._holds(other):
+                return other
+        return f
 
     def _misfit(self, f: Fact) -> bool:
         """Whether `f` is an on/open state (`FITTED`) of a thing that cannot take it."""
@@ -1550,10 +1582,14 @@ def _come_upon(clauses: list[Clause], sentence: int, text: str) -> tuple[list[Fa
     words = {w for w, _, _ in tokens(expand(text))}
     if not (words & DISCOVERY and words & AGENTS):
         return [], ()
+    # the sentence before, or the one before that when it names nothing ("I've left my spare key
+    # somewhere. I can't remember whether I gave it back or not. If you come across it, ...")
+    said = [cl for cl in clauses if cl.mentions and cl.role in ("statement", "scene", "uncertain", "consequence")]
+    reach = sentence - 1 if any(cl.sentence == sentence - 1 for cl in said) else sentence - 2
     for cl in reversed(clauses):
-        if cl.sentence < sentence - 1:
+        if cl.sentence < reach:
             break
-        if cl.mentions and cl.role in ("statement", "scene", "uncertain", "consequence"):
+        if cl in said:
             r = cl.mentions[0]
             return [Fact(r, f"exists({r})", "exists")], (r,)
     return [], ()
@@ -1886,7 +1922,7 @@ def _read_heading(reader: _Reader, text: str) -> tuple[list[Fact], tuple[str, ..
 
 #: state flags only some kinds of thing take (a shirt does not open, a towel is not switched on),
 #: with the catalog capability that allows each
-FITTED_BY = {"open": "openable", "toggled_on": "toggleable"}
+FITTED_BY = {"open": "openable", "toggled_on": "toggleable", "filled": "fillable"}
 FITTED = frozenset(FITTED_BY)
 #: prepositions with a sense of place only (not "on", "in": "left on", "plugged in"), after which
 #: a bare noun phrase is a place even without an article ("lamp over chart table", "kettle
@@ -1987,6 +2023,27 @@ def _distributed(facts: tuple[Fact, ...], members: tuple[str, ...]) -> tuple[Fac
 _CHECK = re.compile(r"^(?P<lead>\W*(?:please\s+|now\s+|then\s+|first\s+)?)(?:check|search|inspect|"
                     r"look\s+(?:on|in|under|at|over|through|inside))\s+(?P<place>[^,;.!?]+?)\s+for\s+"
                     r"(?P<thing>[^,;.!?]+?)(?P<end>\s*[.!;]?\s*)$", re.I)
+
+
+#: a bracketed aside with a comma in it ("(my teddy bear, don't judge me, Diary)")
+_COMMA_ASIDE = re.compile(r"\((?P<head>[^(),]+)(?P<tail>(?:,[^(),]*)+)\)")
+
+
+def _remark_dropped(sentence: str, lex: Lexicon) -> str:
+    """A bracketed aside that names a thing, then goes on after a comma with words that name
+    nothing ("Mr Buttons (my teddy bear, don't judge me, Diary) keeps ending up on the floor",
+    "The cactus (Spike, yes, he has a name) sits on the sill") as its first part alone: the rest
+    is a remark to the reader, and its commas cut the subject from its verb. An aside whose later
+    parts name things too is a list ("(plates, bowls and cups)") and stays."""
+    def keep(m: re.Match[str]) -> str:
+        if not any(x.kind == "role" for x in lex.find_mentions(tokens(expand(m.group("head"))))):
+            return m.group(0)
+        rest = [p for p in m.group("tail").split(",") if p.strip()]
+        if any(lex.find_mentions(tokens(expand(p))) for p in rest):
+            return m.group(0)
+        return f"({m.group('head').strip()})"
+
+    return _COMMA_ASIDE.sub(keep, sentence)
 
 
 def _checked(sentence: str, lex: Lexicon, kinds: Mapping[str, Category]) -> str:
@@ -2127,7 +2184,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     categories = {name: str(role.get("category", "")) for name, role in dict(brief.get("roles") or {}).items()}
     # the conditions a sentence implies without a cue are spelled out after its bullet item is
     # found (`_bullet_items` finds a sentence by its words in the text)
-    found_in_text = [_ensured(_checked(sent, lex, kinds))
+    found_in_text = [_ensured(_checked(_remark_dropped(sent, lex), lex, kinds))
                      for sent in split_sentences(any_at(unquote(str(brief["description"]))))]
     sentences = [implied(sent) for sent in found_in_text]
     clauses: list[Clause] = []
@@ -2241,6 +2298,10 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # isn't there, nothing to do": after a condition asking whether the thing is there
                 # at all, "there" is that presence, not the place the instruction put it
                 facts = [Fact(r, f"exists({r})", "exists", negated=bool(there.group("not"))) for r in asked]
+            elif role == "condition" and not facts and names and _APPEARS.match(low):
+                # "If it turns up, put it on the desk", "it'll be on the floor if it's anywhere":
+                # a thing spoken of that may turn up, or be anywhere at all, may be absent
+                facts = [Fact(r, f"exists({r})", "exists") for r in names[:1]]
             elif role == "condition" and not facts and names and there and not there.group("not"):
                 # "Wallet. If it's there, lost property basket": with no place named before to
                 # point to, "it is there" asks whether the thing is there at all

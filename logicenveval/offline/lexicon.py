@@ -136,6 +136,11 @@ def _spare(role: str) -> bool:
 #: drawer of the dresser"): said "of" a thing, the part names that thing, no object of its own
 #: (`offline.naming`), and a thing put on or in the part is on or in the thing (`offline.placement`)
 FURNITURE_PARTS = frozenset({"shelf", "level", "tier", "drawer", "compartment"})
+#: what ties a part the catalog has no kind of its own for to the piece of furniture it is part of
+#: ("the mantelpiece above the fireplace", "the mantel of the fireplace", "the ledge over the
+#: sink"): the part names no object (`offline.naming`), a thing on it is on the furniture
+#: (`offline.placement`)
+PART_TIES = frozenset({"of", "above", "over"})
 
 #: nouns of time that make the name before them a time ("on bin day", "on trash day", "at bath
 #: time", "laundry day"): a noun modifying its head, which names no object

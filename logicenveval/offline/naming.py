@@ -34,6 +34,7 @@ from logicenveval.offline.lexicon import (
     CONTROL_HEADS,
     FUNCTION_WORDS,
     FURNITURE_PARTS,
+    PART_TIES,
     SPARE_WORDS,
     TIME_HEADS,
     adjective_only,
@@ -847,6 +848,27 @@ class _Reader:
             k += 1
         return False
 
+    def part_by_other_name(self, i: int, n: int, category: str) -> bool:
+        """Whether the `n` words at `i` name a piece of furniture by none of its catalog's own
+        names (a WordNet name only: "mantelpiece", a wall shelf) and are tied by "of", "above" or
+        "over" (`PART_TIES`) to a piece of furniture named by its own name: "the mantelpiece above
+        the fireplace" is part of the fireplace, which the catalog has no kind for, no object of
+        its own. "The shelf above the desk" (the catalog's own word) is a shelf."""
+        words, gaps = self.text.words, self.text.gaps
+        cat = self.catalog.categories[category]
+        end = i + n
+        if cat.pickable or any(words_of(t) == tuple(words[i:end]) for t in (category, *_own(cat))) \
+                or end + 1 >= len(words) or words[end] not in PART_TIES or gaps[end].strip():
+            return False
+        k = end + 1
+        while k < len(words) and words[k] in _ARTICLES and not gaps[k].strip():
+            k += 1
+        m, whole = self.match(k)
+        if whole is None or whole == category or gaps[k].strip() or self.catalog.categories[whole].pickable:
+            return False
+        own = self.catalog.categories[whole]
+        return any(words_of(t) == tuple(words[k:k + m]) for t in (whole, *_own(own)))
+
     def has_part(self, category: str, part: str) -> bool:
         """Whether a kind of furniture has parts of the kind `part` names: shelves (levels, tiers)
         when one of its names says so ("storage rack" is the utility shelf's, "shoe shelf" the shoe
@@ -1085,6 +1107,14 @@ class _Reader:
             if item[0] in _HOLDING and len(item) > 1 and not out:
                 item, a = item[1:], a + 1  # "hold novels, essays and ..."
             color = next((w for w in item if w in COLOR_WORDS and w in allowed), None)
+            ranked = self.ranked_holding(item, self.text.raw[a:b], head)
+            if ranked is not None and "for" not in item and color is None:
+                rank, held = ranked
+                read = list(range(a, a + held))
+                if self.text.raw[a + held] != item[held]:
+                    read.append(a + held)  # a class of things ("my novels"), no object of its own
+                out.append((f"{item[rank]}_{item[held]}_{head}", {}, read))
+                continue
             at: int | None = None  # the purpose's word in the item
             if "for" in item:
                 at = next((k for k in range(item.index("for") + 1, len(item)) if item[k] not in _ARTICLES), None)
@@ -1122,6 +1152,26 @@ class _Reader:
             parts += [purpose] if purpose and purpose not in parts else []
             out.append(("_".join([*parts, head]), {}, read))
         return out
+
+    @staticmethod
+    def ranked_holding(item: list[str], raw: list[str], head: str) -> tuple[int, int] | None:
+        """(rank, purpose) word positions when an item names a part by its rank, then what it
+        holds: "its top level holds my novels", "the middle one my essays" (the verb said once
+        for the list), "the bottom shelf every other book", "the top one holds forks": the rank
+        opens the item (after a determiner at most), the part's word or "one" follows it, then a
+        verb of holding or keeping at most and determiners, then the class held, a plural as
+        written ("other" when it is the rest). None for any other item ("the top shelf of the
+        fridge", "the middle one is empty")."""
+        k = 1 if item and item[0] in _ARTICLES else 0
+        if k + 2 >= len(item) or item[k] not in _ORDINALS - {"one", "other"} or \
+                item[k + 1] not in {*_PARTS, head, "one"}:
+            return None
+        m = k + 2
+        while m < len(item) and (item[m] in _HOLDING - {"for"} or item[m] in _ARTICLES):
+            m += 1
+        if m >= len(item) or not item[m].isalpha() or raw[m] == item[m] and item[m] != "other":
+            return None
+        return k, m
 
     def predicate_noun(self, i: int) -> bool:
         """Whether the noun phrase at word `i` is the predicate of "that is a ...", "it is a ...",
@@ -1295,6 +1345,9 @@ class _Reader:
             n, category = (1, shared) if shared is not None else self.kind_at(i)
             if category is None:
                 i += 1
+                continue
+            if shared is None and self.part_by_other_name(i, n, category):
+                i += n  # "the mantelpiece above the fireplace": the fireplace's, no wall shelf
                 continue
             if shared is None and self.modifies_other(i, n):
                 i += n  # "Car park gate open", "the food bank pick-up": a park, a bank, no car or food

@@ -43,7 +43,14 @@ from logicenveval.offline.clauses import (
     clause_spans,
     doubts,
 )
-from logicenveval.offline.lexicon import COLOR_WORDS, FURNITURE_PARTS, Lexicon, Mention, singular
+from logicenveval.offline.lexicon import (
+    COLOR_WORDS,
+    FURNITURE_PARTS,
+    PART_TIES,
+    Lexicon,
+    Mention,
+    singular,
+)
 from logicenveval.offline.sentences import (
     ACTIONS,
     ARROW_MARK,
@@ -232,6 +239,9 @@ class _Reading:
     context_room: str | None = None  # the room the text last spoke of as a whole
     last_subject: Mention | None = None  # the subject of the last statement (for "it", "that")
     last_holder: Mention | None = None  # the last place named (for "there")
+    #: the first carried thing a statement last spoke of (for "it will be on the floor if it is
+    #: anywhere": a thing that may be absent, not the bed it slipped behind)
+    last_carried: Mention | None = None
 
     def place(self, kind: str, role: str, fact: str) -> None:
         self.held[kind].setdefault(role, fact)
@@ -354,6 +364,9 @@ def _read_sentence(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Re
         subjects = [m for m in ms if m.kind in ("role", "room")]
         if clause.mood == "statement" and subjects:
             reading.last_subject = subjects[0]
+            carried = [m for m in subjects if m.kind == "role" and len(m.roles) == 1
+                       and (cat := catalog.get(str(lex.roles[m.roles[0]]["category"]))) is not None and cat.pickable]
+            reading.last_carried = carried[0] if carried else reading.last_carried
         holders = [m for m in ms if _prep_before(words, m.start) in AT | {"from", "of"}]
         if holders:
             reading.last_holder = holders[-1]
@@ -579,6 +592,9 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
         # "on the lower shelf of the metal rack": on the rack; "on the top shelf of the wardrobe":
         # in it (a part is inside a container, on an open piece: `_contain`, as in a bracket)
         return "in", whole
+    tied = _tied_whole(sent, ms, j, k, hi)
+    if tied is not None:
+        return ON_PART, tied
     m = next((m for m in ms if m.start == k), None)
     if m is None and k > j + 1 and words[k - 1] in ARTICLES and k + 1 < hi and words[k].isalpha() \
             and words[k] not in AT | PREP_OF_PLACE and not any(t.start <= k < t.end for t in ms):
@@ -590,6 +606,22 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
         # names which one (`_room_words`); the place is the thing
         m = next((t for t in ms if t.start == m.end and t.kind == "role"), m)
     return (words[j], m) if m is not None else None
+
+
+def _tied_whole(sent: _Sentence, ms: list[Mention], j: int, k: int, hi: int) -> Mention | None:
+    """The thing of "on the <part> above/of/over the <thing>" when the part names no role (a part
+    the catalog has no kind for, which the naming step names no object: "On the mantelpiece above
+    the fireplace sits the candle", "the vase is on the mantel of the fireplace"): a thing on the
+    part is on the thing it is part of where it has a top (as on an outer part, `ON_PART`: never in
+    it). A part that names a role is that role ("on the shelf above the desk")."""
+    words = sent.words
+    if words[j] not in ("on", "upon") or k + 2 >= hi or not words[k].isalpha() or words[k + 1] not in PART_TIES \
+            or any(t.start <= k < t.end for t in ms):
+        return None
+    n = k + 2
+    while n < hi and words[n] in ARTICLES:
+        n += 1
+    return next((m for m in ms if m.start == n and m.kind == "role" and len(m.roles) == 1), None)
 
 
 #: prepositions that, after a verb of covering, name the thing under ("draped over the chair",
@@ -746,10 +778,13 @@ def _frame(sent: _Sentence, reading: _Reading, lo: int) -> None:
         if framed is None:
             return
         first = framed
+    # (a question mark ends the sentence the room frames: "... the sink, right? Now you clear the
+    # dining table", which this reader reads as one sentence, `_sentences`)
+    end = next((k for k in range(first.end, len(words)) if words[k] == "?"), len(words))
     for later in sent.mentions:
         if later.start < first.end:
             continue
-        if later.kind == "room":
+        if later.kind == "room" or later.start > end:
             break
         if later.kind == "role" and not _indefinite_doubt(sent, later) and _named(words, later.start):
             for role in _roles(later, sent):
@@ -790,6 +825,25 @@ def _room_words(sent: _Sentence, lex: Lexicon, reading: _Reading) -> None:
                 reading.room("settled", m.roles[0], room)
 
 
+#: conjunctions that may open a clause before its subject ("so it'll be on the floor")
+_CLAUSE_LEADS = frozenset({"so", "and", "then", "but"})
+
+
+def _if_anywhere(words: list[str], at: int) -> bool:
+    """Whether the words from `at` are a condition that only asks whether the thing is there at all
+    ("if it is anywhere", "if they are here at all", "if anywhere"): then "it will be on the
+    floor" before it is the speaker's guess where the thing is, if it is there (a stated place of
+    a thing that may be absent), not a goal."""
+    rest = [w for w in words[at:at + 7] if w.isalpha()]
+    if rest[:1] != ["if"]:
+        return False
+    rest = rest[1:]
+    if rest[:1] in (["it"], ["they"]) and rest[1:2] in (["is"], ["are"]):
+        rest = rest[2:]
+    rest = [w for w in rest if w != "still"]
+    return rest[:1] == ["anywhere"] and rest[1:2] != ["else"] or rest[1:3] == ["at", "all"]
+
+
 def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
               reading: _Reading) -> None:
     """"The cardboard box is on the floor next to the stool", "the dishwasher, the sink and a
@@ -812,17 +866,20 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         while k > clause.start and words[k] in ADVERBS:
             k -= 1
         before = words[k] if k >= clause.start else ""
-        if before in NORMATIVE and not (before in PERFECT and group[:1] == ["been"]) or before in ("you", "we", "i") \
-                and not set(group) & KEEP_VERBS:
+        guessed = before == "will" and _if_anywhere(words, clause.end)
+        if before in NORMATIVE and not (before in PERFECT and group[:1] == ["been"]) and not guessed \
+                or before in ("you", "we", "i") and not set(group) & KEEP_VERBS:
             continue  # a norm or a goal ("should be in"), or what someone does ("which you hang on")
         if kind is None or clause.mood == "instruction" and _finite(group):
             continue  # an instruction places only through its noun phrases ("the coat the kids dumped ...")
         if kind == "settled" and group[-1] in STATIVE and (set(group) | set(words[k + 1:start])) & NORM_ADVERBS:
             kind = "kept"  # "flowers that normally sit on the bench": where they belong, not where they are
         subjects = _np_list(sent, ms, lo, start)
-        if not subjects and _finite(group) and words[lo:k + 1] == ["it"] and reading.last_subject is not None \
-                and reading.last_subject.kind == "role" and len(reading.last_subject.roles) == 1:
-            subjects = [reading.last_subject]  # "Broom. ... Not agreed; it stays standing on the floor"
+        said = [w for w in words[lo:k + 1] if not guessed or w not in _CLAUSE_LEADS and w != "will"]
+        last = reading.last_carried if guessed else reading.last_subject
+        if not subjects and (_finite(group) or guessed) and said == ["it"] and last is not None \
+                and last.kind == "role" and len(last.roles) == 1:
+            subjects = [last]  # "Broom. ... Not agreed; it stays standing on the floor"
         if not _finite(group):
             who = start - 1
             while who > lo and words[who] in ADVERBS:

@@ -7,7 +7,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
-from lemminflect import getAllLemmas, getInflection
+from lemminflect import getAllInflections, getAllLemmas, getInflection
 
 from logicenveval.offline.lexicon import COLOR_WORDS, verb_form
 
@@ -117,7 +117,7 @@ _CONTRACTIONS = [
     (r"\bain't(?=\s+(?:got|gotten)\b)", "have not"), (r"\b(we|you|they) ain't\b", r"\1 are not"),
     (r"\bi ain't\b", "i am not"), (r"\bain't\b", "is not"),
     (r"\bcan't\b", "can not"), (r"\bwon't\b", "will not"), (r"n't\b", " not"),
-    (r"\b(i|you|we|they)'ve\b", r"\1 have"), (r"\b(i|you|we|they|it)'ll\b", r"\1 will"),
+    (r"\b(i|you|we|they|might|must|should|could|would|may)'ve\b", r"\1 have"), (r"\b(i|you|we|they|it)'ll\b", r"\1 will"),
     (r"\b(\w+)s'(\s)", r"\1s\2"), (r"\b(\w+)'s\b", r"\1"),
     # the same contractions typed without their apostrophe ("theres a mark", "if there arent any"),
     # only where the form is no English word of its own ("were", "well", "its", "wed" are)
@@ -842,13 +842,56 @@ _BECOME = re.compile(r"\b(has|have|had)\s+(?:(just|already|now)\s+)?(?:run|gone|
                      + "|".join(w for w in STATE_WORDS if w not in ("on", "off", "out")) + r")\b)", re.I)
 
 
+#: a word that may be an "-ing" form with its "g" dropped and no apostrophe ("if the mop's standin
+#: on the floor", "it's lyin there"): `_g_restored` decides
+_DROPPED_G = re.compile(r"\b([A-Za-z]{2,}in)\b(?!')")
+
+
+def _g_restored(m: re.Match[str]) -> str:
+    """A word ending in "in" that lemminflect does not know, whose form with a "g" is a verb's
+    "-ing" form ("standin", "sittin", "goin"), is that form, as the apostrophe's "sittin'"
+    already is; an English word ("cabin", "begin", "basin") and a name ("Kevin") stay."""
+    word = m.group(1)
+    low = word.lower()
+    if getAllLemmas(low) or not getAllLemmas(low + "g").get("VERB"):
+        return word
+    return word + "g"
+
+
+#: a past tense after "have" as its participle, as dialects and casual speech say it ("might've fell
+#: on the floor", "it's went in the bin"): `_participle`
+_PAST_AS_PARTICIPLE = re.compile(r"\b((?:have|has|had|'ve|'s)\s+(?:(?:already|just|probably|maybe|never)\s+)?)"
+                                 r"([a-z]+)\b", re.I)
+
+
+def _participle(m: re.Match[str]) -> str:
+    """The participle of a verb whose simple past stands after "have" and is none of its
+    participles ("fell" -> "fallen", "went" -> "gone", "took" -> "taken"); "have got" is standard
+    British English (possession) and stays, as does every word that is a participle already."""
+    word = m.group(2)
+    low = word.lower()
+    if low == "got":
+        return m.group(0)
+    for lemma in getAllLemmas(low).get("VERB", ()):
+        forms = getAllInflections(lemma, "VERB")
+        if low in forms.get("VBN", ()):
+            return m.group(0)
+    for lemma in getAllLemmas(low).get("VERB", ()):
+        forms = getAllInflections(lemma, "VERB")
+        if low in forms.get("VBD", ()) and forms.get("VBN"):
+            return f"{m.group(1)}{forms['VBN'][0]}"
+    return m.group(0)
+
+
 def expand(text: str) -> str:
     """The text with contractions spelled out ("it's" -> "it is"), possessives dropped, "w/" read
-    as "with", "and/or" as "or", a slash between words as "or" and a verb of becoming in the
-    perfect before a state as "been" (`_BECOME`), "on top of" as "on" (`_ON_TOP`)."""
+    as "with", "and/or" as "or", a slash between words as "or", a dropped "g" restored
+    (`_g_restored`) and a verb of becoming in the perfect before a state as "been" (`_BECOME`),
+    "on top of" as "on" (`_ON_TOP`)."""
     out = _SLASH.sub(" or ", _AND_OR.sub("or", _WITH.sub("with ", _ON_TOP.sub("on", text.replace("\u2019", "'")))))
     for pat, repl in _CONTRACTIONS:
         out = re.sub(pat, repl, out, flags=re.I)
+    out = _PAST_AS_PARTICIPLE.sub(_participle, _DROPPED_G.sub(_g_restored, out))
     return _BECOME.sub(lambda m: f"{m.group(1)} {m.group(2) + ' ' if m.group(2) else ''}been ", out)
 
 
