@@ -1,6 +1,6 @@
-"""The reader's fifth to fifteenth development sets (tests/data/reader_dev5/, reader_dev6/,
+"""The reader's fifth to sixteenth development sets (tests/data/reader_dev5/, reader_dev6/,
 reader_dev7/, reader_dev8/, reader_dev9/, reader_dev10/, reader_dev11/, reader_dev12/, reader_dev13/,
-reader_dev14/, reader_dev15/): new tasks and rewordings written from the task format, the
+reader_dev14/, reader_dev15/, reader_dev16/): new tasks and rewordings written from the task format, the
 catalog and the built-in tasks, without reading the offline reader or running it on them, for rounds of reader
 rules to be tuned on. One table of what differs between them; the same checks for each.
 
@@ -21,7 +21,11 @@ non-native English of speakers of languages no set used). dev 15 came after dev 
 barely touched before: workplace and trade writing (a plumber's job ticket, a police briefing),
 messaging formats with their own structure (an email reply chain, a forum post quoting earlier
 posts), writing of another period (a Victorian household manual, a 1950s advertisement), a child's
-dictation written down by an adult and a careless machine translation.
+dictation written down by an adult and a careless machine translation. dev 16 came after dev 15,
+in registers no set used: documents of a tenancy (a check-in inventory, a landlord's letter in a
+deposit dispute), school and home life (a teacher's instructions to pupils, a dream journal), a
+voice other than the writer's (a letter from the family cat) and the English of Brazilian
+Portuguese and Dutch speakers.
 """
 
 from __future__ import annotations
@@ -87,6 +91,7 @@ SETS = (
     DevSet("reader_dev13", "_d13", 3, 6, ("rec_room_gamebook", "kitchen_fridge_restock_d13")),
     DevSet("reader_dev14", "_d14", 3, 6, ("pool_house_applets", "study_desk_cleanup_d14")),
     DevSet("reader_dev15", "_d15", 3, 6, ("still_room_household_manual", "laundry_drying_rack_d15")),
+    DevSet("reader_dev16", "_d16", 3, 6, ("boot_room_letter_from_the_cat", "lamp_or_pillow_fetch_d16")),
 )
 IDS = [s.name for s in SETS]
 ENTRIES = {s.name: rewordings(DATA / s.name) for s in SETS}
