@@ -694,6 +694,20 @@ class _Reader:
         self.recent = [c for c in self.recent if c != category] + [category]
         self.used.setdefault(category, set()).add(head)
 
+    def names_the_colored_one(self, i: int, n: int, kind: _Kind, prev: str) -> bool:
+        """Whether a plain singular mention of a kind is the one thing of it the text has already
+        named by its colour ("The blue cup is on the table. If the cup is dirty ...", "My blue cup
+        ... If cup is dirty"): a definite or bare mention after exactly one coloured instance and
+        no plain mention before it names that instance again, not a second thing. An indefinite
+        or counted mention ("a cup", "another cup", "two cups") or a plural one still names things
+        of its own."""
+        if kind.generic or kind.count > 1 or len(kind.instances) != 1:
+            return False
+        (attrs,) = kind.instances.values()
+        if set(attrs) != {"color"} or prev in _INDEFINITE | _ANOTHER | _COUNTS.keys() | {"no", "one", "other"}:
+            return False
+        return self.text.raw[i + n - 1].lower() == self.text.words[i + n - 1]
+
     def compound(self, i: int, n: int, category: str) -> tuple[int, str]:
         """"the vanity cabinet", "the pet food bag": a name followed at once by a head noun of
         several kinds (or a packaging word) is one object, of the kind named first; a head
@@ -1396,6 +1410,8 @@ class _Reader:
                     self.instance(category, f"spare_{last}", {})
             elif prev in _ANOTHER and known and kind.generic:
                 self.instance(category, f"other_{last}", {})  # "a lamp on the desk and another lamp"
+            elif self.names_the_colored_one(i, n, kind, prev):
+                pass  # "My blue cup is standing on kitchen table. If cup is dirty": the blue cup again
             else:
                 kind.generic = True
                 if prev in _DETERMINERS or prev in _COUNTS or self.text.raw[i + n - 1] == words[i + n - 1]:
