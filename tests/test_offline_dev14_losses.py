@@ -64,3 +64,22 @@ def test_an_adjective_in_a_verbless_subject_keeps_its_participle_of_placement() 
     # written for the test: a list item in a bedroom inventory
     assert "on(alarm_clock, nightstand)" in placed(
         "Your old alarm clock, sitting on the nightstand. If it is ringing, switch it off.", ("bedroom",))
+
+
+# -- a bracket naming a thing again by a fuller name of its kind -----------------------------------
+
+
+def test_a_bracket_with_a_fuller_name_of_the_same_kind_names_one_thing() -> None:
+    # dev 14 (the email): "Cupboard on wall (wall cabinet, over sink)" is the wall cabinet alone
+    text = ("Cupboard on wall (wall cabinet, over sink). Door of it is always opening by itself. "
+            "If it is open, close it.")
+    assert set(named(text, ("kitchen",))) == {"wall_cabinet", "sink"}
+    assert set(factors(text, ("kitchen",))) == {"wall_cabinet_open"}
+    # written for the test: a checklist, the bracket opening with "the"
+    text = "Check the cupboard (the wall cabinet over the sink): if it is open, close it."
+    assert set(factors(text, ("kitchen",))) == {"wall_cabinet_open"}
+
+
+def test_a_bracket_that_sets_another_thing_apart_keeps_both() -> None:
+    text = "The cabinet (not the wall cabinet) is open. Close the wall cabinet too."
+    assert {"cabinet", "wall_cabinet"} <= set(named(text, ("kitchen",)))

@@ -299,6 +299,7 @@ class _Reader:
         #: kind -> the head nouns the text named it by ("the box" then means the red toy box)
         self.used: dict[str, set[str]] = {}
         self.consumed: set[int] = set()  # words an enumeration has read
+        self.first_at: dict[str, int] = {}  # kind -> the word its first plain reading starts at
         #: people named as owners ("Marco's glass": `expand` drops the "'s", so they are read
         #: off the text as written) and, per kind, the owners of its mentions in order
         self.possessors = {m.group(1).lower() for m in _POSSESSOR.finditer(description.replace("\u2019", "'"))}
@@ -693,6 +694,24 @@ class _Reader:
         """`category` was just named, by a noun phrase ending in `head`."""
         self.recent = [c for c in self.recent if c != category] + [category]
         self.used.setdefault(category, set()).add(head)
+
+    def glossed(self, i: int, category: str) -> str | None:
+        """The kind a bracket opening at word `i` names again by a fuller name of its own kind:
+        "Cupboard on wall (wall cabinet, over sink)", "the rack (the towel rack)". The bracket
+        opens within three words of the thing's first and only reading, in its sentence, and its
+        first noun is a kind whose name ends in the head of that thing's kind and says more
+        ("wall cabinet" after "cupboard", a cabinet): one object, of the fuller kind."""
+        opens = i - (i > 0 and self.text.words[i - 1] in _ARTICLES)
+        if "(" not in self.text.gaps[opens] or not self.recent or self.recent[-1] == category:
+            return None
+        before = self.recent[-1]
+        kind, at = self.kinds.get(before), self.first_at.get(before)
+        if kind is None or kind.instances or kind.count > 1 or at is None or not kind.generic:
+            return None
+        if at < self.text.sentence_start(i) or i - at > 4 or len(self.used.get(before, ())) != 1:
+            return None
+        head, fuller = words_of(before), words_of(category)
+        return before if len(fuller) > len(head) and fuller[-len(head):] == head else None
 
     def names_the_colored_one(self, i: int, n: int, kind: _Kind, prev: str) -> bool:
         """Whether a plain singular mention of a kind is the one thing of it the text has already
@@ -1393,7 +1412,13 @@ class _Reader:
                     self.colors[category] = words[told]
                 i += n
                 continue
+            if shared is None and (glossed := self.glossed(i, category)) is not None:
+                # "Cupboard on wall (wall cabinet, over sink)": one thing, named by the fuller name
+                del self.kinds[glossed]
+                self.recent.remove(glossed)
+                self.particular.discard(glossed)
             kind = self.kinds.setdefault(category, _Kind())
+            self.first_at.setdefault(category, i)
             if (subject := self.unnamed_subject(i)) is not None:
                 self.said_as.setdefault(category, subject)  # "The treasure map be on ... 'Tis only paper"
             known = category in self.recent
