@@ -91,6 +91,8 @@ _COUNTS = {"two": 2, "three": 3, "four": 4, "five": 5, "both": 2, "2": 2, "3": 3
 _FRESH = frozenset({"fresh", "new"})
 #: "a lamp on the desk and another lamp by the bed": a second object of a kind already named
 _ANOTHER = frozenset({"another", "second"})
+#: words for what a trash bag holds ("a bag of rubbish" is one: `_Reader.other_contents`)
+_RUBBISH = frozenset({"trash", "rubbish", "garbage", "refuse", "waste", "litter"})
 #: "a bag of pet food", "a pack of wipes", "the pet food bag": the contents are the object
 _PACKAGING = frozenset({"bag", "pack", "packet", "carton"})
 #: vessels: a thing one picks up named before one is what it holds, the object as the catalog
@@ -364,6 +366,8 @@ class _Reader:
         nxt = words[i + 1] if i + 1 < len(words) else ""
         if word in _PACKAGING and nxt == "of" and self.contents_named(i + 2):
             return 1, None  # "a bag of pet food": the food is the object
+        if word in _PACKAGING and nxt == "of" and self.other_contents(i, category):
+            return 1, None  # "a whole bag of crisps": no trash bag
         if self.verb(i) or self.place_sense(i) or self.reading_label(i):
             return 1, None
         if (laundry := self.laundry_heading(i)) is not None:
@@ -375,6 +379,20 @@ class _Reader:
             self.said_as[self.senses[word]] = word
             return 1, self.senses[word]
         return 1, self.bare_noun(i, category)
+
+    def other_contents(self, i: int, category: str | None) -> bool:
+        """Whether "<packaging> of <X>" at word `i` holds something other than what the kind its
+        packaging word names is named for: the catalog's bags are a trash bag and a garbage bag,
+        named for their contents, and "a whole bag of crisps", "a bag of old clothes" are neither
+        (the kind's name is "<contents> <packaging>" and the word after "of" is not its contents).
+        Such a bag names no object; "a bag of rubbish" (the synonym "bag of trash") still does."""
+        kind = self.bare_noun(i, category)
+        if kind is None:
+            return False
+        name = words_of(kind)
+        if len(name) < 2 or name[-1] != self.text.words[i] or i + 2 >= len(self.text.words):
+            return False
+        return self.text.words[i + 2] not in {*name[:-1], *_RUBBISH}
 
     def contents_named(self, i: int) -> bool:
         """Whether the words from `i`, after "<packaging> of", name a kind within three words
