@@ -899,7 +899,10 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         subjects = _np_list(sent, ms, lo, start)
         said = [w for w in words[lo:k + 1] if not guessed or w not in _CLAUSE_LEADS and w != "will"]
         last = reading.last_carried if guessed else reading.last_subject
-        if not subjects and (_finite(group) or guessed) and said == ["it"] and last is not None \
+        earlier = [m for m in sent.mentions if m.end <= clause.start and m.kind == "role" and len(m.roles) == 1]
+        if not subjects and _finite(group) and not guessed and said == ["it"] and earlier:
+            subjects = earlier[-1:]  # "wipe the puddle with the old towel - it's kept in the vanity": the towel
+        elif not subjects and (_finite(group) or guessed) and said == ["it"] and last is not None \
                 and last.kind == "role" and len(last.roles) == 1:
             subjects = [last]  # "Broom. ... Not agreed; it stays standing on the floor"
         if not _finite(group):
