@@ -106,10 +106,10 @@ def test_a_bag_of_rubbish_and_a_bag_of_a_kind_keep_their_reading() -> None:
     assert "pet_food" in named("There is a bag of dog food on the floor. Put it in the cupboard.", ("kitchen",))
 
 
-# -- "it" in a statement after an instruction takes up the thing the sentence named last -----------
+# -- "it" after a sentence's own thing is not the last statement's subject ---------------------------
 
 
-def test_it_after_a_dash_takes_up_the_thing_its_sentence_named() -> None:
+def test_it_after_a_dash_is_not_the_last_statements_subject() -> None:
     # dev 12 (Geordie): the towel is kept in the vanity, not the toothbrush stated before
     text = ("Me toothbrush might've fell on the floor. If it's still clean, just put it back on the vanity. "
             "Wipe the puddle wi the old towel - it's kept in the vanity.")
@@ -117,3 +117,6 @@ def test_it_after_a_dash_takes_up_the_thing_its_sentence_named() -> None:
     # written for the test: a kitchen, a semicolon
     text = "The mug may be on the desk. Dry the cup with the tea towel; it is kept in the drawer."
     assert placed(text, ("kitchen",)) == {"inside(hand_towel, drawer)"}
+    # a sentence that names no thing before "it" still takes the last statement's subject
+    assert placed("The broom is by the door. Not agreed; it stays standing on the floor.",
+                  ("hallway",)) >= {"on(broom, floor)"}

@@ -899,11 +899,11 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         subjects = _np_list(sent, ms, lo, start)
         said = [w for w in words[lo:k + 1] if not guessed or w not in _CLAUSE_LEADS and w != "will"]
         last = reading.last_carried if guessed else reading.last_subject
-        earlier = [m for m in sent.mentions if m.end <= clause.start and m.kind == "role" and len(m.roles) == 1]
-        if not subjects and _finite(group) and not guessed and said == ["it"] and earlier:
-            subjects = earlier[-1:]  # "wipe the puddle with the old towel - it's kept in the vanity": the towel
-        elif not subjects and (_finite(group) or guessed) and said == ["it"] and last is not None \
-                and last.kind == "role" and len(last.roles) == 1:
+        # "wipe the puddle with the old towel - it's kept in the vanity": "it" is a thing its own
+        # sentence named (`_kept` reads that), not the last statement's subject
+        earlier = any(m.end <= clause.start and m.kind == "role" for m in sent.mentions)
+        if not subjects and (_finite(group) or guessed) and said == ["it"] and last is not None \
+                and last.kind == "role" and len(last.roles) == 1 and (guessed or not earlier):
             subjects = [last]  # "Broom. ... Not agreed; it stays standing on the floor"
         if not _finite(group):
             who = start - 1
