@@ -91,6 +91,8 @@ _COUNTS = {"two": 2, "three": 3, "four": 4, "five": 5, "both": 2, "2": 2, "3": 3
 _FRESH = frozenset({"fresh", "new"})
 #: "a lamp on the desk and another lamp by the bed": a second object of a kind already named
 _ANOTHER = frozenset({"another", "second"})
+#: words for what a trash bag holds ("a bag of rubbish" is one: `_Reader.other_contents`)
+_RUBBISH = frozenset({"trash", "rubbish", "garbage", "refuse", "waste", "litter"})
 #: "a bag of pet food", "a pack of wipes", "the pet food bag": the contents are the object
 _PACKAGING = frozenset({"bag", "pack", "packet", "carton"})
 #: vessels: a thing one picks up named before one is what it holds, the object as the catalog
@@ -299,6 +301,7 @@ class _Reader:
         #: kind -> the head nouns the text named it by ("the box" then means the red toy box)
         self.used: dict[str, set[str]] = {}
         self.consumed: set[int] = set()  # words an enumeration has read
+        self.first_at: dict[str, int] = {}  # kind -> the word its first plain reading starts at
         #: people named as owners ("Marco's glass": `expand` drops the "'s", so they are read
         #: off the text as written) and, per kind, the owners of its mentions in order
         self.possessors = {m.group(1).lower() for m in _POSSESSOR.finditer(description.replace("\u2019", "'"))}
@@ -363,6 +366,8 @@ class _Reader:
         nxt = words[i + 1] if i + 1 < len(words) else ""
         if word in _PACKAGING and nxt == "of" and self.contents_named(i + 2):
             return 1, None  # "a bag of pet food": the food is the object
+        if word in _PACKAGING and nxt == "of" and self.other_contents(i, category):
+            return 1, None  # "a whole bag of crisps": no trash bag
         if self.verb(i) or self.place_sense(i) or self.reading_label(i):
             return 1, None
         if (laundry := self.laundry_heading(i)) is not None:
@@ -374,6 +379,20 @@ class _Reader:
             self.said_as[self.senses[word]] = word
             return 1, self.senses[word]
         return 1, self.bare_noun(i, category)
+
+    def other_contents(self, i: int, category: str | None) -> bool:
+        """Whether "<packaging> of <X>" at word `i` holds something other than what the kind its
+        packaging word names is named for: the catalog's bags are a trash bag and a garbage bag,
+        named for their contents, and "a whole bag of crisps", "a bag of old clothes" are neither
+        (the kind's name is "<contents> <packaging>" and the word after "of" is not its contents).
+        Such a bag names no object; "a bag of rubbish" (the synonym "bag of trash") still does."""
+        kind = self.bare_noun(i, category)
+        if kind is None:
+            return False
+        name = words_of(kind)
+        if len(name) < 2 or name[-1] != self.text.words[i] or i + 2 >= len(self.text.words):
+            return False
+        return self.text.words[i + 2] not in {*name[:-1], *_RUBBISH}
 
     def contents_named(self, i: int) -> bool:
         """Whether the words from `i`, after "<packaging> of", name a kind within three words
@@ -693,6 +712,38 @@ class _Reader:
         """`category` was just named, by a noun phrase ending in `head`."""
         self.recent = [c for c in self.recent if c != category] + [category]
         self.used.setdefault(category, set()).add(head)
+
+    def glossed(self, i: int, category: str) -> str | None:
+        """The kind a bracket opening at word `i` names again by a fuller name of its own kind:
+        "Cupboard on wall (wall cabinet, over sink)", "the rack (the towel rack)". The bracket
+        opens within three words of the thing's first and only reading, in its sentence, and its
+        first noun is a kind whose name ends in the head of that thing's kind and says more
+        ("wall cabinet" after "cupboard", a cabinet): one object, of the fuller kind."""
+        opens = i - (i > 0 and self.text.words[i - 1] in _ARTICLES)
+        if "(" not in self.text.gaps[opens] or not self.recent or self.recent[-1] == category:
+            return None
+        before = self.recent[-1]
+        kind, at = self.kinds.get(before), self.first_at.get(before)
+        if kind is None or kind.instances or kind.count > 1 or at is None or not kind.generic:
+            return None
+        if at < self.text.sentence_start(i) or i - at > 4 or len(self.used.get(before, ())) != 1:
+            return None
+        head, fuller = words_of(before), words_of(category)
+        return before if len(fuller) > len(head) and fuller[-len(head):] == head else None
+
+    def names_the_colored_one(self, i: int, n: int, kind: _Kind, prev: str) -> bool:
+        """Whether a plain singular mention of a kind is the one thing of it the text has already
+        named by its colour ("The blue cup is on the table. If the cup is dirty ...", "My blue cup
+        ... If cup is dirty"): a definite or bare mention after exactly one coloured instance and
+        no plain mention before it names that instance again, not a second thing. An indefinite
+        or counted mention ("a cup", "another cup", "two cups") or a plural one still names things
+        of its own."""
+        if kind.generic or kind.count > 1 or len(kind.instances) != 1:
+            return False
+        (attrs,) = kind.instances.values()
+        if set(attrs) != {"color"} or prev in _INDEFINITE | _ANOTHER | _COUNTS.keys() | {"no", "one", "other"}:
+            return False
+        return self.text.raw[i + n - 1].lower() == self.text.words[i + n - 1]
 
     def compound(self, i: int, n: int, category: str) -> tuple[int, str]:
         """"the vanity cabinet", "the pet food bag": a name followed at once by a head noun of
@@ -1379,7 +1430,13 @@ class _Reader:
                     self.colors[category] = words[told]
                 i += n
                 continue
+            if shared is None and (glossed := self.glossed(i, category)) is not None:
+                # "Cupboard on wall (wall cabinet, over sink)": one thing, named by the fuller name
+                del self.kinds[glossed]
+                self.recent.remove(glossed)
+                self.particular.discard(glossed)
             kind = self.kinds.setdefault(category, _Kind())
+            self.first_at.setdefault(category, i)
             if (subject := self.unnamed_subject(i)) is not None:
                 self.said_as.setdefault(category, subject)  # "The treasure map be on ... 'Tis only paper"
             known = category in self.recent
@@ -1396,6 +1453,8 @@ class _Reader:
                     self.instance(category, f"spare_{last}", {})
             elif prev in _ANOTHER and known and kind.generic:
                 self.instance(category, f"other_{last}", {})  # "a lamp on the desk and another lamp"
+            elif self.names_the_colored_one(i, n, kind, prev):
+                pass  # "My blue cup is standing on kitchen table. If cup is dirty": the blue cup again
             else:
                 kind.generic = True
                 if prev in _DETERMINERS or prev in _COUNTS or self.text.raw[i + n - 1] == words[i + n - 1]:

@@ -50,6 +50,7 @@ from logicenveval.offline.lexicon import (
     Lexicon,
     Mention,
     singular,
+    verb_form,
 )
 from logicenveval.offline.sentences import (
     ACTIONS,
@@ -383,16 +384,37 @@ def _relative_place(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexic
     words = sent.words
     for m in ms:
         k = m.end
-        if m.kind != "role" or len(m.roles) != 1 or determiner(words, m.start) != "the" \
-                or k >= clause.end or words[k] not in RELATIVE:
+        if m.kind != "role" or len(m.roles) != 1 or k >= clause.end:
             continue
-        end, group = _verb_group(words, k + 1, clause.end)
+        reduced = words[k] in STATIVE and words[k].endswith("ing")
+        if words[k] in RELATIVE and determiner(words, m.start) == "the":
+            end, group = _verb_group(words, k + 1, clause.end)
+        elif reduced and _the_before(words, m.start):
+            end, group = k + 1, [words[k]]  # the relative reduced: "the towel hanging on the rack"
+        else:
+            continue
         kind = _verb_kind(group) if group else None
         if kind is None or group[0] not in BE | STATIVE | KEEP_VERBS or doubts(group):
             continue
         found = _holder_after(sent, ms, end, clause.end)
-        if found is not None:
-            _put(reading, kind, catalog, lex, m.roles[0], found[1], found[0])
+        if found is None:
+            continue
+        if reduced and (found[1].end >= clause.end or words[found[1].end] not in BE | PERFECT | _LINKING):
+            continue  # "if you see the mug sitting on the desk": the place is what is seen, the condition
+        _put(reading, kind, catalog, lex, m.roles[0], found[1], found[0])
+
+
+#: verbs that link a subject to a state as "is" does ("the towel on the rack looks dirty")
+_LINKING = frozenset({"look", "looks", "seem", "seems", "smell", "smells", "feel", "feels"})
+
+
+def _the_before(words: list[str], start: int) -> bool:
+    """A noun phrase opened by "the", right before the noun or before one noun modifier, which
+    may be a verb's form as well ("the pool towel", "the tea cup"): not a participle."""
+    if start > 0 and words[start - 1] == "the":
+        return True
+    return start > 1 and words[start - 2] == "the" and words[start - 1].isalpha() \
+        and not words[start - 1].endswith(("ing", "ed")) and words[start - 1] not in STATE_WORDS
 
 
 def _identifying_aside(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Reading) -> None:
@@ -877,8 +899,11 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         subjects = _np_list(sent, ms, lo, start)
         said = [w for w in words[lo:k + 1] if not guessed or w not in _CLAUSE_LEADS and w != "will"]
         last = reading.last_carried if guessed else reading.last_subject
+        # "wipe the puddle with the old towel - it's kept in the vanity": "it" is a thing its own
+        # sentence named (`_kept` reads that), not the last statement's subject
+        earlier = any(m.end <= clause.start and m.kind == "role" for m in sent.mentions)
         if not subjects and (_finite(group) or guessed) and said == ["it"] and last is not None \
-                and last.kind == "role" and len(last.roles) == 1:
+                and last.kind == "role" and len(last.roles) == 1 and (guessed or not earlier):
             subjects = [last]  # "Broom. ... Not agreed; it stays standing on the floor"
         if not _finite(group):
             who = start - 1
@@ -1052,6 +1077,13 @@ def _adjunct_subject(sent: _Sentence, ms: list[Mention], lo: int, comma: int) ->
     # verbless "Bath mat on the floor" is (`_fragment`)
     subjects = _np_list(sent, ms, lo, comma)
     covered = {k for m in subjects for k in range(m.start, m.end)}
+    for m in subjects:  # "your trusty water bottle, lying on ...": a plain adjective after the determiner
+        k = m.start - 1
+        while k >= lo and words[k].isalpha() and words[k] not in VERBS | AT | LIST_GLUE and not verb_form(words[k]) \
+                and m.start - k <= 2:
+            k -= 1
+        if lo <= k < m.start - 1 and words[k] in ARTICLES:
+            covered |= set(range(k + 1, m.start))
     if subjects and all(k in covered or w in LIST_GLUE or w in COLOR_WORDS or w in STATE_WORDS or w.isdigit()
                         for k, w in enumerate(words[lo:comma], lo)):
         return subjects
