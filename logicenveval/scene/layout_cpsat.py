@@ -14,7 +14,6 @@ a dense 40-box floor spent its time (two full searches of ~0.6-1.4 s each).
 from __future__ import annotations
 
 import math
-import time
 from collections.abc import Sequence
 from typing import Any
 
@@ -38,9 +37,14 @@ from logicenveval.scene.layout import (
     opening_rect,
     opening_start,
 )
-from logicenveval.scene.relax import Dropped, Status, Tracked, object_literals, relax
+from logicenveval.scene.relax import Dropped, Status, Tracked, object_literals, relax, wall_cap
 
 Lit = Any  # a CP-SAT Boolean literal (IntVar or its negation)
+
+#: CP-SAT deterministic time per second of a room's budget: the median ratio of deterministic to
+#: wall time over the layout solves of a 25-task offline run (0.19) on the calibrating machine
+#: (2 cores, load 5, 2026-11-30), rounded; a budget is so much deterministic work on any machine
+DET_PER_SECOND = 0.2
 
 
 class _Model(cp_model.CpModel):
@@ -59,8 +63,9 @@ class _Solve:
     CP-SAT's `sufficient_assumptions_for_infeasibility` is often not minimal (it may name a
     relation that conflicts with nothing), and relaxation drops a core's lowest-priority member,
     so the core is shrunk by deletion, lowest priority first, before it is returned. Each deletion
-    probe is capped in deterministic time (`PROBE_DET_TIME`), so the core does not depend on the
-    machine's speed; a probe that runs out keeps its item. Every solve after the first feasible
+    probe is capped in deterministic time (`PROBE_DET_TIME`), and the loop stops when the call's
+    deterministic work reaches its budget, so the core does not depend on the machine's speed; a
+    probe that runs out keeps its item. Every solve after the first feasible
     one is hinted with the last feasible assignment (probes of a core differ in one assumption, so
     it is often one repair away; measured: the second probe of a dense 60-object floor 1.4 s ->
     0.02 s).
@@ -77,30 +82,36 @@ class _Solve:
         #: the last feasible assignment of this model (every variable), the hint of the next solve
         self._last: list[int] | None = None
 
-    def __call__(self, active: list[Tracked], timeout_s: float) -> tuple[Status, list[Tracked]]:
-        deadline = time.monotonic() + timeout_s
-        status = self._solve(active, timeout_s)
+    def __call__(self, active: list[Tracked], budget: float) -> tuple[Status, list[Tracked], float]:
+        status = self._solve(active, budget)
+        spent = self._spent()
         if status != "unsat":
-            return status, []
+            return status, [], spent
         core = self._core(active)
         for t in sorted(core, key=lambda t: t.rank):
-            if len(core) == 1 or time.monotonic() >= deadline:
+            if len(core) == 1 or spent >= budget:
                 break
             trial = [c for c in core if c is not t]
-            if self._solve(trial, deadline - time.monotonic(), self.PROBE_DET_TIME) == "unsat":
+            probe = self._solve(trial, budget - spent, self.PROBE_DET_TIME)
+            spent += self._spent()
+            if probe == "unsat":
                 core = self._core(trial)
-        return "unsat", core  # in `active` order: every core is filtered from it in order
+        return "unsat", core, spent  # in `active` order: every core is filtered from it in order
 
-    def _solve(self, assumed: list[Tracked], timeout_s: float, det_time: float | None = None) -> Status:
+    def _spent(self) -> float:
+        """The last solve's deterministic work, in calibrated seconds (`DET_PER_SECOND`)."""
+        return float(self.solver.response_proto.deterministic_time) / DET_PER_SECOND
+
+    def _solve(self, assumed: list[Tracked], budget: float, det_time: float | None = None) -> Status:
         self.m.clear_assumptions()
         self.m.add_assumptions([t.lit for t in assumed])
         self.solver = cp_model.CpSolver()
         p = self.solver.parameters
         p.num_workers = 1
         p.random_seed = self.seed % 2**31
-        p.max_time_in_seconds = max(0.001, timeout_s)
-        if det_time is not None:
-            p.max_deterministic_time = det_time
+        det = max(1e-3, budget) * DET_PER_SECOND
+        p.max_deterministic_time = det if det_time is None else min(det, det_time)
+        p.max_time_in_seconds = wall_cap(budget)
         # measured on benchmarks/layout.py floors: presolve and LP relaxation cost more than they
         # prune on these small feasibility models (3-6x faster without them, docs/scene.md)
         p.cp_model_presolve = False
@@ -122,7 +133,8 @@ class _Solve:
         if status == cp_model.MODEL_INVALID:
             raise LogicEnvEvalError(f"the CP-SAT layout model is invalid: {self.m.validate()}",
                                     hint="report this as a bug; use solver='z3' meanwhile")
-        return "unknown"
+        return "unknown" if self.solver.response_proto.deterministic_time >= p.max_deterministic_time * 0.999 \
+            or self.solver.wall_time < p.max_time_in_seconds else "capped"
 
     def _core(self, assumed: list[Tracked]) -> list[Tracked]:
         core = set(self.solver.sufficient_assumptions_for_infeasibility())

@@ -26,7 +26,20 @@ from logicenveval.scene.layout import (
     opening_rect,
     opening_start,
 )
-from logicenveval.scene.relax import Check, Dropped, Status, Tracked, object_literals, relax
+from logicenveval.scene.relax import (
+    Check,
+    Dropped,
+    Status,
+    Tracked,
+    object_literals,
+    relax,
+    wall_cap,
+)
+
+#: Z3 resource units per second of a room's budget: the median ratio of `rlimit count` to wall
+#: time over the checks of a five-task offline run (2.1 M) on the calibrating machine (2 cores,
+#: load 5, 2026-11-30), rounded
+RLIMIT_PER_SECOND = 2_000_000
 
 
 class _Guard:
@@ -154,17 +167,31 @@ def _apart(a: tuple[Any, Any, Any, Any], b: tuple[Any, Any, Any, Any]) -> z3.Boo
 
 
 def _check(s: z3.Solver) -> Check:
-    """Z3's check under assumptions; the core is read by literal name."""
-    def check(active: list[Tracked], timeout_s: float) -> tuple[Status, list[Tracked]]:
-        s.set("timeout", max(1, int(timeout_s * 1000)))
+    """Z3's check under assumptions within a resource limit (`RLIMIT_PER_SECOND` per second of
+    budget: deterministic, unlike Z3's `timeout`); the core is read by literal name."""
+    def check(active: list[Tracked], budget: float) -> tuple[Status, list[Tracked], float]:
+        limit = max(1, int(max(1e-3, budget) * RLIMIT_PER_SECOND))
+        s.set("rlimit", limit)  # counted from this check's start
+        s.set("timeout", max(1, int(wall_cap(budget) * 1000)))
+        before = _rlimit_count(s)
         res = s.check(*[t.lit for t in active])
+        used = _rlimit_count(s) - before
+        spent = used / RLIMIT_PER_SECOND
         if res == z3.sat:
-            return "sat", []
+            return "sat", [], spent
         if res == z3.unsat:
             core = {str(c) for c in s.unsat_core()}
-            return "unsat", [t for t in active if str(t.lit) in core]
-        return "unknown", []
+            return "unsat", [t for t in active if str(t.lit) in core], spent
+        return ("unknown" if used >= limit else "capped"), [], spent  # both say "canceled"
     return check
+
+
+def _rlimit_count(s: z3.Solver) -> float:
+    """The resource units the solver has counted so far, over all its checks (0 before any)."""
+    try:
+        return float(s.statistics().get_key_value("rlimit count"))
+    except z3.Z3Exception:
+        return 0.0
 
 
 def _abs_le(e: z3.ArithRef, k: int) -> z3.BoolRef:

@@ -4,16 +4,34 @@ Priority (first dropped first): enrichment relations, enrichment objects, then t
 Task objects are never tracked: their constraints are hard. The loop is backend-neutral: a layout
 backend (Z3, CP-SAT) supplies a `Check` that solves under the active assumptions and names the
 tracked items of its core.
+
+The budget is counted in the solvers' own deterministic work (CP-SAT's deterministic time, Z3's
+resource count), converted to seconds of a calibrating machine, never in wall-clock time: a solve
+that runs out of budget runs out on every machine at the same point, so which item a timeout drops,
+hence the layout and every request built on it, does not depend on the machine's speed or load.
+A wall-clock cap (`WALL_CAP` times the budget) only guards against a machine far slower than the
+calibrating one; a solve it ends is reported as such (`CAPPED`), the one machine-dependent path.
 """
 
 from __future__ import annotations
 
-import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Literal, Protocol
 
-Status = Literal["sat", "unsat", "unknown"]
+Status = Literal["sat", "unsat", "unknown", "capped"]
+"""`unknown`: the deterministic budget ran out; `capped`: the wall-clock cap did first."""
+
+#: the wall-clock cap of a solve, as a multiple of its budget (at least 1 s of budget)
+WALL_CAP = 10.0
+
+#: the reason a drop records when the wall-clock cap, not the budget, ended the solve
+CAPPED = "solver wall-clock cap (this machine was too slow for the budget: results may differ elsewhere)"
+
+
+def wall_cap(budget: float) -> float:
+    """Seconds of wall clock a solve with `budget` may take before the cap ends it."""
+    return WALL_CAP * max(1.0, budget)
 
 
 @dataclass(eq=False)  # identity: backend literals overload `==`
@@ -57,20 +75,24 @@ def object_literals(boxes: Sequence[_Keyed], new_lit: Callable[[str], Any], pref
     return lit, tracked
 
 
-Check = Callable[[list[Tracked], float], tuple[Status, list[Tracked]]]
-"""Solve assuming every item of `active` within `timeout_s`; on unsat also the core's items (in `active` order)."""
+Check = Callable[[list[Tracked], float], tuple[Status, list[Tracked], float]]
+"""Solve assuming every item of `active` within a budget (calibrated seconds of deterministic work):
+the status, on unsat the core's items (in `active` order), and the budget the call spent."""
 
 
-def relax(check: Check, tracked: list[Tracked], timeout_s: float) -> tuple[bool, list[Dropped]]:
+def relax(check: Check, tracked: list[Tracked], budget: float) -> tuple[bool, list[Dropped]]:
     """Whether a solution honours as many tracked items as the priorities allow, and what was dropped.
 
-    On True the backend's last `check` call holds the solution.
+    `budget` is the room's (`SceneSpec.room_timeout_s`), in calibrated seconds of deterministic
+    work; a drop for lack of it grants a quarter of it again (at least 1). On True the backend's
+    last `check` call holds the solution.
     """
     active = list(tracked)
     dropped: list[Dropped] = []
-    deadline = time.monotonic() + timeout_s
+    left = budget
     while True:
-        res, cands = check(active, deadline - time.monotonic())
+        res, cands, spent = check(active, left)
+        left -= spent
         if res == "sat":
             return True, dropped
         if res == "unsat":
@@ -84,8 +106,8 @@ def relax(check: Check, tracked: list[Tracked], timeout_s: float) -> tuple[bool,
             if not active:
                 return False, dropped
             victim = min(reversed(active), key=lambda t: t.rank)
-            reason = "solver timeout"
-            deadline = time.monotonic() + max(1.0, timeout_s / 4)
+            reason = CAPPED if res == "capped" else "solver budget (deterministic work) spent"
+            left = max(1.0, budget / 4)
         active.remove(victim)
         dropped.append(Dropped(victim, reason))
         if victim.kind == "object":

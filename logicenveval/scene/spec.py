@@ -122,6 +122,8 @@ class SceneSpec(BaseModel):
     claimed_trajectory: dict[str, dict[str, str]] | None = None
     wall_height: float = Field(default=2.7, ge=2.2, le=5.0)
     grid: float = Field(default=0.05, ge=0.01, le=0.05)  # layout grid in metres (1–5 cm)
+    #: the layout budget of a room, in seconds of deterministic solver work as calibrated (not
+    #: wall clock: `scene.relax`), so a room that runs out does so on every machine alike
     room_timeout_s: float = Field(default=10.0, gt=0)
 
 
