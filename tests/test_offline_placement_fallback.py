@@ -132,3 +132,27 @@ def test_a_place_a_rule_read_is_kept() -> None:
     the piano's, not the shelf a later sentence's fronted form names."""
     got = _read("The vase is on the piano. On the shelf stands the vase, they say.", "vase", "piano", "shelf")
     assert "on(vase, piano)" in got and "on(vase, shelf)" not in got
+
+
+@pytest.mark.parametrize(("text", "roles", "fact"), [
+    ("Changelog v2: the laptop has moved to the desk and stays there.", ("laptop", "desk"), "on(laptop, desk)"),
+    ("Update - my books have now been moved onto the shelf.", ("book", "shelf"), "on(book, shelf)"),
+    ("FYI the plate has gone into the box for now", ("plate", "box"), "inside(plate, box)"),
+    # a thing after its holder and a comma, "on it"
+    ("A desk, a lamp on it.", ("desk", "lamp"), "on(lamp, desk)"),
+    ("In the corner: the old table, a plate on it, and two chairs.", ("table", "plate", "chair"),
+     "on(plate, table)"),
+])
+def test_a_perfect_of_moving_and_an_apposed_place(text: str, roles: tuple[str, ...], fact: str) -> None:
+    assert fact in _read(text, *roles, kinds=SETTLED)
+
+
+@pytest.mark.parametrize(("text", "roles", "fact"), [
+    ("The laptop has to move to the desk.", ("laptop", "desk"), "on(laptop, desk)"),
+    ("The laptop had moved to the desk before you came, I think.", ("laptop", "desk"), "on(laptop, desk)"),
+    ("Has the laptop moved to the desk?", ("laptop", "desk"), "on(laptop, desk)"),
+    ("If the book has gone into the box, leave it.", ("book", "box"), "inside(book, box)"),
+    ("A desk, put a lamp on it.", ("desk", "lamp"), "on(lamp, desk)"),
+])
+def test_near_misses_of_moving_and_apposition(text: str, roles: tuple[str, ...], fact: str) -> None:
+    assert fact not in _read(text, *roles, kinds=SETTLED)

@@ -1612,7 +1612,8 @@ def _fallback(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Reading
             lead = next((w for w in words[a:b] if w not in SUBJECT_LEADS), "")
             if not ms or habitual(words[a:b]) or lead in SUBORDINATORS | _WHERE_LEADS:
                 continue  # "where the carton remains on the table, ...": a condition's register
-            stated = not set(words[a:b]) & UNSTATED
+            # the "to" of "has moved to" is where the thing went, no goal
+            stated = not {w for k, w in enumerate(words[a:b], a) if w != "to" or words[k - 1] not in MOVED} & UNSTATED
             for kind, item, prep, holder in _fallback_forms(sent, ms, a, b, lex, stated):
                 _put_new(reading, kind, catalog, lex, item, holder, prep)
 
@@ -1637,11 +1638,12 @@ def _put_new(reading: _Reading, kind: str, catalog: Catalog, lex: Lexicon, item:
     _put(reading, kind, catalog, lex, item, holder, prep)
 
 
-def _place_at(sent: _Sentence, ms: list[Mention], j: int, hi: int, resting: bool) -> tuple[str, Mention] | None:
+def _place_at(sent: _Sentence, ms: list[Mention], j: int, hi: int, resting: bool,
+              at: str | None = None) -> tuple[str, Mention] | None:
     """(preposition, holder) when token j is a preposition of place (`FALLBACK_AT`, or after a verb
-    of resting "across"/"over") followed by a holder the brief names."""
+    of resting "across"/"over"; or any, read as `at`) followed by a holder the brief names."""
     word = sent.words[j] if j < hi else ""
-    at = FALLBACK_AT.get(word) or ("on" if resting and word in RESTING_OVER else None)
+    at = at or FALLBACK_AT.get(word) or ("on" if resting and word in RESTING_OVER else None)
     if at is None:
         return None
     toks = list(sent.toks)
@@ -1691,6 +1693,29 @@ def _finite_word(word: str) -> bool:
         word.endswith("s") and not word.endswith("ss") and verb_form(word))
 
 
+#: a perfect of moving says where a thing is now ("has moved to", "have been moved into")
+MOVED = frozenset({"moved", "gone", "migrated", "relocated"})
+#: where a perfect of moving goes, and the preposition of place it leaves the thing at
+MOVED_TO = {"to": "on", "onto": "on", "into": "in"}
+
+
+def _moved_to(words: list[str], i: int, hi: int) -> tuple[int, str] | None:
+    """(index of the place's preposition, the preposition it stands for) when words from i read
+    "has/have [now] [been] moved/gone to|onto|into": the thing is there now (not "has to move",
+    a norm, nor "had moved", a past that may have passed)."""
+    j = i
+    if j >= hi or words[j] not in ("has", "have"):
+        return None
+    j += 1
+    while j < hi and words[j] in ADVERBS:
+        j += 1
+    if j < hi and words[j] == "been":
+        j += 1
+    if j + 1 >= hi or words[j] not in MOVED or words[j + 1] not in MOVED_TO:
+        return None
+    return j + 1, MOVED_TO[words[j + 1]]
+
+
 def _gap_kind(gap: list[str]) -> str:
     return "kept" if set(gap) & KEEP_VERBS else "settled"
 
@@ -1713,6 +1738,20 @@ def _fallback_forms(sent: _Sentence, ms: list[Mention], a: int, b: int, lex: Lex
                 found = _place_at(sent, ms, end, b, bool(set(words[m.end:end]) & STATIVE))
                 if found is not None:
                     out.append((_gap_kind(words[m.end:end]), item, found[0], found[1]))
+        # the thing, a perfect of moving, where to: "the coffee maker has moved to the island"
+        if stated and subject and _prep_before(words, m.start) is None:
+            to = _moved_to(words, m.end, b)
+            if to is not None:
+                found = _place_at(sent, ms, to[0], b, False, at=to[1])
+                if found is not None:
+                    out.append(("settled", item, found[0], found[1]))
+        # "a desk, a desk lamp on it": a thing after its holder and a comma, its place "on it"
+        if stated and m.start >= 2 and words[m.end:m.end + 2] in ([w, "it"] for w in FALLBACK_AT) \
+                and (m.end + 2 >= b or words[m.end + 2] in PUNCT):
+            k = _prep_index(words, m.start)
+            holder = next((x for x in ms if x.end == k and x.kind == "role" and len(x.roles) == 1), None)
+            if k >= a and words[k] == "," and holder is not None:
+                out.append(("settled", item, FALLBACK_AT[words[m.end]], holder))
         # a holder, "whereon"/"wherein", the thing and its verb: "a desk whereon a lamp doth sit"
         if stated and m.start > a and any(x.end <= m.start for x in ms):
             k = _prep_index(words, m.start)
