@@ -143,6 +143,15 @@ was written for (a rule too wide shows as a task of another set falling):
 and dev 16 now), so a tuner's runs never show them; `--dev-only --fresh` keeps them, to measure
 them. `--skip 'dev9 reworded,dev9 new'` leaves any other rows' sets out as well.
 
+`--placements` measures instead the reader's recall of stated placements, without running a
+generator: per row, the share of the tasks' stated placement facts (each constraint whose `fact` is
+one `on(x, y)` or `inside(x, y)`, asserted by its `says` words) that the offline reader states as
+placements (`offline.placement.described_placements`) when given the task's own roles, so that the
+figure measures the placement stage, not the naming. With `--why` it lists every missed fact (task,
+fact, its `says`) of a development row; a held-out or fresh row shows its share only.
+
+    python benchmarks/reader_generalisation.py --dev-only --placements --why   # seconds
+
 `--compare OLD.json` lists every development task whose LogCov, SceVR or FauDR moved against an
 earlier `--json` file, a fall marked `FALL`, and exits 1 when any task fell.
 
@@ -160,12 +169,16 @@ from __future__ import annotations
 
 import argparse
 import json
+import re
 import tempfile
 import time
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from logicenveval.benchmark import task_ids
+from logicenveval.benchmark import load_tasks, task_ids
+from logicenveval.domain.catalog import load_catalog
+from logicenveval.offline.placement import described_placements
 from logicenveval.runner.config import RunConfig
 from logicenveval.runner.run import run
 
@@ -264,6 +277,63 @@ def aggregate(per_task: dict[str, dict[str, Any]]) -> tuple[float, float, float]
             sum(r[2] for r in rows) / len(rows))
 
 
+#: a constraint fact that states one placement: `on(x, y)` or `inside(x, y)`, nothing else
+_PLACEMENT = re.compile(r"^\s*(on|inside)\(\s*([a-z0-9_]+)\s*,\s*([a-z0-9_]+)\s*\)\s*$")
+
+
+@dataclass(frozen=True)
+class Recall:
+    """How many of a set's stated placement facts the reader states, and the ones it missed as
+    (task, fact, says)."""
+
+    read: int
+    stated: int
+    missed: tuple[tuple[str, str, str], ...]
+
+    @property
+    def share(self) -> float:
+        """Read over stated; 0.0 when the set states none (printed as `-`)."""
+        return self.read / self.stated if self.stated else 0.0
+
+
+def placement_recall(tasks_dir: Path | None, ids: list[str]) -> Recall:
+    """The reader's recall of the placements the tasks `ids` of `tasks_dir` state: each
+    constraint whose fact is one `on`/`inside` (`_PLACEMENT`) counts, read when
+    `described_placements` of the task's own brief (its roles, so naming is out of the figure)
+    states the same fact."""
+    catalog = load_catalog()
+    read, stated, missed = 0, 0, []
+    for task in load_tasks(tasks_dir, ids):
+        told = {re.sub(r"\s+", "", fact) for fact in described_placements(task.brief().model_dump(mode="json"), catalog)}
+        for constraint in task.constraints:
+            if not _PLACEMENT.match(constraint.fact):
+                continue
+            stated += 1
+            if re.sub(r"\s+", "", constraint.fact) in told:
+                read += 1
+            else:
+                missed.append((task.id, constraint.fact, constraint.says))
+    return Recall(read, stated, tuple(missed))
+
+
+def print_placements(sets: list[tuple[str, Path | None]], smoke: bool, why: bool) -> None:
+    """Per row, the share of stated placements read; with `why` each missed one, for development
+    rows only (a held-out or fresh row's facts would be a tuning signal)."""
+    print("stated placements the offline reader states (task roles, `described_placements`):")
+    print(f"  {'row':30s} {'read':>5s} {'stated':>6s} {'share':>6s}")
+    figures = []
+    for name, folder in sets:
+        ids = task_ids(folder)
+        recall = placement_recall(folder, ids[:2] if smoke else ids)
+        share = pct(recall.share) if recall.stated else "-"  # no stated placement: nothing to read
+        figures.append(f"{name.replace('-', '_').replace(' ', '_')}={share.strip()}")
+        print(f"  {name:30s} {recall.read:5d} {recall.stated:6d} {share:>6s}")
+        if why and name not in UNSEEN | FRESH:
+            for task_id, fact, says in recall.missed:
+                print(f"      missed {task_id}: {fact}  says: {says!r}")
+    print("placement_recall " + " ".join(figures))
+
+
 def pct(x: float) -> str:
     return f"{100 * x:5.1f}"
 
@@ -311,14 +381,20 @@ def main() -> None:
     ap.add_argument("--skip", default="", metavar="SET[,SET]",
                     help="also skip these rows' sets, e.g. 'dev10 reworded,dev10 new': a fresh set "
                          "kept unseen while others tune the reader")
+    ap.add_argument("--placements", action="store_true",
+                    help="print instead each row's recall of stated placements (no generator is run); "
+                         "with --why, each missed one (development rows only)")
     args = ap.parse_args()
     skipped = {s.strip() for s in args.skip.split(",") if s.strip()}
     unknown = skipped - {name for name, _ in SETS}
     if unknown:
         ap.error(f"--skip: no set named {', '.join(sorted(unknown))}")
+    sets = selected(args.dev_only, args.fresh, skipped)
+    if args.placements:
+        print_placements(sets, args.smoke, args.why)
+        return
     work = Path(args.work) if args.work else Path(tempfile.mkdtemp(prefix="reader_generalisation-"))
     start = time.perf_counter()
-    sets = selected(args.dev_only, args.fresh, skipped)
     results: dict[str, dict[str, dict[str, Any]]] = {}
     why: dict[str, dict[str, str]] = {}
     for name, folder in sets:

@@ -37,6 +37,7 @@ from logicenveval.offline.clauses import (
     DOUBT,
     FRONT_LEADS,
     IMPERATIVES,
+    LEAD_INS,
     PUNCT,
     SUBORDINATORS,
     Span,
@@ -318,8 +319,11 @@ def _read(brief: Mapping[str, Any], catalog: Catalog, kinds: frozenset[str]) -> 
     reading = _Reading({k: {} for k in _ORDER}, {k: {} for k in _ORDER})
     if len(lex.rooms) == 1:
         reading.context_room = lex.rooms[0]
-    for sent in _sentences(unquote(str(brief.get("description", ""))), lex):
+    sentences = _sentences(unquote(str(brief.get("description", ""))), lex)
+    for sent in sentences:
         _read_sentence(sent, lex, catalog, reading)
+    for sent in sentences:  # after every rule: a thing a rule placed keeps its place
+        _fallback(sent, lex, catalog, reading)
     held: dict[str, str] = {}
     rooms: dict[str, str] = {}
     for kind in _ORDER:
@@ -1564,3 +1568,278 @@ def _described_subject(words: list[str], start: int, end: int, clause: Span) -> 
         while j < clause.end and words[j] in ADVERBS:
             j += 1
     return start - 1 >= clause.start and j < clause.end and words[j] in STATE_WORDS
+
+
+# ---------------------------------------------------------------------------------------------
+# A structural fallback for stated placements
+# ---------------------------------------------------------------------------------------------
+
+#: the prepositions of place the fallback reads, and the one each stands for ("into"/"onto" say
+#: where a thing goes; "under", "behind", "beside" name no holder)
+FALLBACK_AT = {"on": "on", "upon": "on", "atop": "on", "in": "in", "inside": "inside", "within": "in"}
+#: after a verb of resting these name what the thing rests on ("a blanket lies across the ottoman")
+RESTING_OVER = frozenset({"across", "over"})
+#: relative words of place of the formal and archaic registers ("a desk whereon a lamp sits")
+WHERE_PREPS = {"whereon": "on", "whereupon": "on", "wherein": "in"}
+#: words that keep a clause from stating a fact: negation, modality, a goal, a hedge, a condition
+UNSTATED = frozenset({"not", "never", "no", "nothing", "should", "must", "ought", "shall", "would", "will",
+                      "can", "could", "might", "may", "to", "need", "needs", "want", "wants", "if", "unless",
+                      "whether", "anywhere", "somewhere", "when", "whenever", "once", "until", "let"}) | DOUBT
+#: words that may stand before a subject at the head of a clause ("and whereas on the piano ...")
+SUBJECT_LEADS = LEAD_INS | FRONT_LEADS | frozenset({",", "whereas", "while", "meanwhile", "as", "yes", "also"})
+#: words opening a clause that make it a condition or a relative, not a statement of its own
+_WHERE_LEADS = frozenset({"where", "wherever", "whenever", "once", "should", "what", "which", "who"})
+#: words of a verb gap that say where a thing goes or what someone does to it, not where it is
+_GAP_STOPS = (RESULT - PASSIVE_STATIVE) | MOTION | HAVE_VERBS | SUBJECT_PRONOUNS | frozenset(
+    {"you", "we", "i", "they", "he", "she", "moved", "move", "moves", "goes", "go"})
+
+
+def _fallback(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Reading) -> None:
+    """Where no rule read a placement, a declarative part of a statement that names a thing and a
+    holder joined by a preposition of place (`FALLBACK_AT`) states that the thing is there,
+    whatever its verb ("stands", "lies open", "does sit"), word order (a fronted place, "there"
+    insertion), relative clause ("that's on", "whereon"), possessive ("the floor has a stain on
+    it"), identification ("the basket is the wicker one on the bench") or a bracketed "it" after
+    the thing. A thing some rule already placed keeps that place; a part with a negation, a modal,
+    a hedge or a condition (`UNSTATED`) states nothing; conditions, questions and instructions
+    are never read (the clause moods)."""
+    words = sent.words
+    for clause in _clauses(words, 0, len(words)):
+        if clause.mood != "statement":
+            continue
+        for a, b in _parts(words, clause):
+            ms = [m for m in sent.mentions if a <= m.start and m.end <= b]
+            lead = next((w for w in words[a:b] if w not in SUBJECT_LEADS), "")
+            if not ms or habitual(words[a:b]) or lead in SUBORDINATORS | _WHERE_LEADS:
+                continue  # "where the carton remains on the table, ...": a condition's register
+            # the "to" of "has moved to" is where the thing went, no goal
+            stated = not {w for k, w in enumerate(words[a:b], a) if w != "to" or words[k - 1] not in MOVED} & UNSTATED
+            for kind, item, prep, holder in _fallback_forms(sent, ms, a, b, lex, stated):
+                _put_new(reading, kind, catalog, lex, item, holder, prep)
+
+
+def _parts(words: list[str], clause: Span) -> list[tuple[int, int]]:
+    """A statement clause cut where a new clause is joined on (", and", ", but", "and there"), so
+    that a doubt in one ("... and there may be a toy on it") leaves the other standing."""
+    cuts = [clause.start]
+    for i in range(clause.start + 1, clause.end - 1):
+        if words[i] == "," and words[i + 1] in ("and", "but", "while", "whereas") \
+                or words[i] == "and" and words[i + 1] == "there" and words[i - 1] != ",":
+            cuts.append(i + 1 if words[i] == "," else i)
+    cuts.append(clause.end)
+    return [(x, y) for x, y in zip(cuts, cuts[1:], strict=False) if y > x]
+
+
+def _put_new(reading: _Reading, kind: str, catalog: Catalog, lex: Lexicon, item: str, holder: Mention,
+             prep: str) -> None:
+    """`_put`, for a thing no rule has placed yet (in any kind, on a holder or in a room)."""
+    if any(item in held for held in reading.held.values()) or any(item in rooms for rooms in reading.rooms.values()):
+        return
+    _put(reading, kind, catalog, lex, item, holder, prep)
+
+
+def _place_at(sent: _Sentence, ms: list[Mention], j: int, hi: int, resting: bool,
+              at: str | None = None) -> tuple[str, Mention] | None:
+    """(preposition, holder) when token j is a preposition of place (`FALLBACK_AT`, or after a verb
+    of resting "across"/"over"; or any, read as `at`) followed by a holder the brief names."""
+    word = sent.words[j] if j < hi else ""
+    at = at or FALLBACK_AT.get(word) or ("on" if resting and word in RESTING_OVER else None)
+    if at is None:
+        return None
+    toks = list(sent.toks)
+    toks[j] = _Token(at, at, toks[j].start, toks[j].end)
+    return _holder_after(_Sentence(toks, sent.mentions), ms, j, hi)
+
+
+def _subject_at(words: list[str], start: int, lo: int) -> bool:
+    """Whether a noun phrase starting at `start` opens its part (after leads and its determiners and
+    up to three modifiers that are no verb): a subject, not an object."""
+    j, modifiers = start - 1, 0
+    while j >= lo and (words[j] in ARTICLES or words[j] in COLOR_WORDS or words[j] in STATE_WORDS
+                       or modifiers < 3 and words[j].isalpha() and not verb_form(words[j])
+                       and words[j] not in SUBJECT_LEADS and words[j] not in UNSTATED):
+        modifiers += words[j] not in ARTICLES
+        j -= 1
+    return j < lo or all(w in SUBJECT_LEADS for w in words[lo:j + 1])
+
+
+def _verb_gap(words: list[str], ms: list[Mention], i: int, hi: int) -> int | None:
+    """The end of a gap of one to four words from i that holds a verb of being or resting and names
+    nothing, nor says where a thing goes or who did something (`_GAP_STOPS`)."""
+    j = i
+    while j < hi and j - i < 4 and words[j].isalpha() and words[j] not in FALLBACK_AT \
+            and words[j] not in RESTING_OVER and words[j] not in _GAP_STOPS \
+            and not any(m.start <= j < m.end for m in ms):
+        j += 1
+    gap = words[i:j]
+    if not any(_finite_word(w) for w in gap):
+        return None  # "a book found on the floor is ...", "toys lying on the floor": a modifier
+    passive = next((k for k, w in enumerate(gap) if w in BE), None)
+    if passive is not None and any(w not in PASSIVE_STATIVE and (w in RESULT or w.endswith("ed"))
+                                   for w in gap[passive + 1:]):
+        return None  # "books are shelved on the bookshelf": what is done, a norm
+    return j
+
+
+#: finite forms of "be", of the auxiliaries and of verbs of resting in the past
+_FINITE = (BE - {"be", "been", "being"}) | frozenset(
+    {"does", "do", "did", "doth", "has", "have", "had", "sat", "stood", "lay", "rested", "hung", "stayed"})
+
+
+def _finite_word(word: str) -> bool:
+    """Whether `word` is a finite verb: "is", "does", "sat", an archaic "standeth", or a verb's
+    present third person ("stands", "remains"), not a participle ("lying", "found")."""
+    return word in _FINITE or word.endswith("eth") and len(word) > 4 or (
+        word.endswith("s") and not word.endswith("ss") and verb_form(word))
+
+
+#: a perfect of moving says where a thing is now ("has moved to", "have been moved into")
+MOVED = frozenset({"moved", "gone", "migrated", "relocated"})
+#: where a perfect of moving goes, and the preposition of place it leaves the thing at
+MOVED_TO = {"to": "on", "onto": "on", "into": "in"}
+
+
+def _moved_to(words: list[str], i: int, hi: int) -> tuple[int, str] | None:
+    """(index of the place's preposition, the preposition it stands for) when words from i read
+    "has/have [now] [been] moved/gone to|onto|into": the thing is there now (not "has to move",
+    a norm, nor "had moved", a past that may have passed)."""
+    j = i
+    if j >= hi or words[j] not in ("has", "have"):
+        return None
+    j += 1
+    while j < hi and words[j] in ADVERBS:
+        j += 1
+    if j < hi and words[j] == "been":
+        j += 1
+    if j + 1 >= hi or words[j] not in MOVED or words[j + 1] not in MOVED_TO:
+        return None
+    return j + 1, MOVED_TO[words[j + 1]]
+
+
+def _gap_kind(gap: list[str]) -> str:
+    return "kept" if set(gap) & KEEP_VERBS else "settled"
+
+
+def _fallback_forms(sent: _Sentence, ms: list[Mention], a: int, b: int, lex: Lexicon,
+                    stated: bool) -> list[tuple[str, str, str, Mention]]:
+    """(kind, thing, preposition, holder) of each form the fallback reads in the part [a, b)."""
+    words = sent.words
+    out: list[tuple[str, str, str, Mention]] = []
+    things = [m for m in ms if m.kind == "role" and len(m.roles) == 1]
+    for m in things:
+        item = m.roles[0]
+        subject = _subject_at(words, m.start, a) or words[a - 1:a] == ["("] and m.start == a
+        relative = m.end < b and words[m.end] in RELATIVE
+        # the thing, a verb of being or resting, the place: "a wine bottle stands on the bar",
+        # "visitors' book lies open on the desk", "the mug that's on the desk"
+        if stated and (subject or relative) and _prep_before(words, m.start) is None:
+            end = _verb_gap(words, ms, m.end, b)
+            if end is not None:
+                found = _place_at(sent, ms, end, b, bool(set(words[m.end:end]) & STATIVE))
+                if found is not None:
+                    out.append((_gap_kind(words[m.end:end]), item, found[0], found[1]))
+        # the thing, a perfect of moving, where to: "the coffee maker has moved to the island"
+        if stated and subject and _prep_before(words, m.start) is None:
+            to = _moved_to(words, m.end, b)
+            if to is not None:
+                found = _place_at(sent, ms, to[0], b, False, at=to[1])
+                if found is not None:
+                    out.append(("settled", item, found[0], found[1]))
+        # "a desk, a desk lamp on it": a thing after its holder and a comma, its place "on it"
+        if stated and m.start >= 2 and words[m.end:m.end + 2] in ([w, "it"] for w in FALLBACK_AT) \
+                and (m.end + 2 >= b or words[m.end + 2] in PUNCT):
+            k = _prep_index(words, m.start)
+            holder = next((x for x in ms if x.end == k and x.kind == "role" and len(x.roles) == 1), None)
+            if k >= a and words[k] == "," and holder is not None:
+                out.append(("settled", item, FALLBACK_AT[words[m.end]], holder))
+        # a holder, "whereon"/"wherein", the thing and its verb: "a desk whereon a lamp doth sit"
+        if stated and m.start > a and any(x.end <= m.start for x in ms):
+            k = _prep_index(words, m.start)
+            if k >= a and words[k] in WHERE_PREPS and _verb_gap(words, ms, m.end, b) is not None:
+                holder = next((x for x in ms if x.end == k and len(x.roles) == 1), None)
+                if holder is not None:
+                    out.append(("settled", item, WHERE_PREPS[words[k]], holder))
+        # a definite subject with its place, then its predicate: "the coffee machine on the
+        # worktop, to the left of the hob, takes a while": the place is taken for granted
+        if subject and determiner(words, m.start) == "the" and m.end < b and words[m.end] in FALLBACK_AT:
+            found = _place_at(sent, ms, m.end, b, False)
+            if found is not None and any(w in BE | STATIVE or verb_form(w) for w in words[found[1].end:b]):
+                out.append(("presumed", item, found[0], found[1]))
+    if not stated:
+        return out
+    out += _fronted(sent, ms, a, b) + _identified(sent, ms, a, b) + _resumed(sent, ms, a, b)
+    # "(it stays on the floor)" right after the thing's name: the bracket's "it" is that thing
+    if a >= 2 and words[a - 1] == "(" and words[a] in RESUMPTIVE:
+        before = next((x for x in sent.mentions if x.end == a - 1 and x.kind == "role" and len(x.roles) == 1), None)
+        end = _verb_gap(words, ms, a + 1, b)
+        if before is not None and end is not None:
+            found = _place_at(sent, ms, end, b, bool(set(words[a + 1:end]) & STATIVE))
+            if found is not None:
+                out.append((_gap_kind(words[a + 1:end]), before.roles[0], found[0], found[1]))
+    # "there is a stain on the floor" in a part its clause's doubt does not cover
+    for i in range(a, b - 1):
+        if words[i] == "there" and words[i + 1] in BE:
+            j = next((k for k in range(i + 2, b) if words[k] in FALLBACK_AT), b)
+            found = _place_at(sent, ms, j, b, False)
+            if found is not None:
+                out += [("settled", r, found[0], found[1]) for x in _np_list(sent, ms, i + 2, j) for r in _roles(x, sent)]
+    return out
+
+
+def _fronted(sent: _Sentence, ms: list[Mention], a: int, b: int) -> list[tuple[str, str, str, Mention]]:
+    """"And whereas on the piano stands our photo frame": a place first, a verb, then the things."""
+    words = sent.words
+    j = a
+    while j < b and words[j] in SUBJECT_LEADS:
+        j += 1
+    found = _place_at(sent, ms, j, b, False)
+    if found is None:
+        return []
+    end = _verb_gap(words, ms, found[1].end, b)
+    if end is None or end - found[1].end > 2:
+        return []
+    return [("settled", r, found[0], found[1]) for x in _np_list(sent, ms, end, b) for r in _roles(x, sent)]
+
+
+def _identified(sent: _Sentence, ms: list[Mention], a: int, b: int) -> list[tuple[str, str, str, Mention]]:
+    """"The basket is the wicker one on the bench", "it's the big desktop on the desk": a thing
+    identified, after "is", by a noun phrase its place ends."""
+    words = sent.words
+    out: list[tuple[str, str, str, Mention]] = []
+    for i in range(a, b - 2):
+        if not (words[i] in BE or words[i] == "its" and words[i + 1] in ARTICLES) or words[i + 1] not in ARTICLES:
+            continue
+        j = i + 2
+        while j < b and j - i < 6 and words[j].isalpha() and words[j] != "one" and words[j] not in FALLBACK_AT \
+                and not any(m.start == j for m in ms):
+            j += 1
+        named = next((m for m in ms if m.start == j and m.kind == "role" and len(m.roles) == 1), None)
+        if named is not None:
+            at = named.end
+        elif j < b and words[j] == "one":
+            before = [m for m in _np_list(sent, ms, a, i) if m.kind == "role" and len(m.roles) == 1]
+            named = before[-1] if before and _subject_at(words, before[-1].start, a) else None
+            at = j + 1
+        if named is None:
+            continue
+        found = _place_at(sent, ms, at, b, False)
+        if found is not None:
+            out.append(("settled", named.roles[0], found[0], found[1]))
+    return out
+
+
+def _resumed(sent: _Sentence, ms: list[Mention], a: int, b: int) -> list[tuple[str, str, str, Mention]]:
+    """"The floor has a stain on it", "the tray holds two cups in it": a holder, a verb of having,
+    the things, and a place taken up by "it"."""
+    words = sent.words
+    out: list[tuple[str, str, str, Mention]] = []
+    for holder in ms:
+        if len(holder.roles) != 1 or holder.end >= b or words[holder.end] not in HAVE_VERBS \
+                or not _subject_at(words, holder.start, a):
+            continue
+        j = next((k for k in range(holder.end + 1, b - 1) if words[k] in FALLBACK_AT), None)
+        if j is None or words[j + 1] not in RESUMPTIVE | {"them"}:
+            continue
+        for x in _np_list(sent, ms, holder.end + 1, j):
+            out += [("settled", r, FALLBACK_AT[words[j]], holder) for r in _roles(x, sent)]
+    return out
