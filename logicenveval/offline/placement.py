@@ -38,6 +38,7 @@ from logicenveval.offline.clauses import (
     FRONT_LEADS,
     IMPERATIVES,
     LEAD_INS,
+    NEGATIONS,
     PUNCT,
     SUBORDINATORS,
     Span,
@@ -898,6 +899,9 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
             continue  # a norm or a goal ("should be in"), or what someone does ("which you hang on")
         if kind is None or clause.mood == "instruction" and _finite(group):
             continue  # an instruction places only through its noun phrases ("the coat the kids dumped ...")
+        named_end = max((m.end for m in ms if lo <= m.start and m.end <= start), default=lo)
+        if set(words[named_end:start]) & NEGATIONS:
+            continue  # "the mug never ever stands on the table", "does not sit on": no place stated
         if kind == "settled" and group[-1] in STATIVE and (set(group) | set(words[k + 1:start])) & NORM_ADVERBS:
             kind = "kept"  # "flowers that normally sit on the bench": where they belong, not where they are
         subjects = _np_list(sent, ms, lo, start)
@@ -1223,6 +1227,8 @@ def _possessive(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, 
     for i in range(clause.start, clause.end):
         if i < lo or words[i] not in HAVE_VERBS or words[i + 1: i + 2] == ["been"] or words[i + 1: i + 2] == ["to"]:
             continue
+        if set(words[max(lo, i - 1):i + 2]) & NEGATIONS:
+            return  # "the shelf has no book on it", "has not got", "does not have": it holds none
         before = _np_list(sent, [m for m in ms if m.kind in ("role", "room")], lo, i)
         owner: Mention | None = before[0] if before else None
         if owner is None and set(words[lo:i]) & THING_PRONOUNS:
