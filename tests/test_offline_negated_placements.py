@@ -40,3 +40,14 @@ def test_a_holder_that_has_no_thing_holds_none(text: str) -> None:
 ])
 def test_the_affirmative_still_places(text: str, fact: str) -> None:
     assert {f for f in placed(text, ROOMS) if f.startswith(fact)}
+
+
+@pytest.mark.parametrize("text,kept,gone", [
+    ("The mug, not the cup, is on the table. If the mug is dirty, wash it.", "on(mug,", "on(cup,"),
+    ("the mug not the cup is on the table lol. if the mug is dirty wash it", "on(mug,", "on(cup,"),
+    ("Note: the mug, and not the cup, is on the table. If the mug is dirty, wash it.", "on(mug,", "on(cup,"),
+    ("The shelf has a mug on it and no cup. If the mug is dirty, wash it.", "on(mug,", "on(cup,"),
+])
+def test_a_thing_contrasted_away_in_a_subject_list_is_not_placed(text: str, kept: str, gone: str) -> None:
+    facts = placed(text, ROOMS)
+    assert {f for f in facts if f.startswith(kept)} and not {f for f in facts if f.startswith(gone)}

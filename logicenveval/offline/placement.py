@@ -530,6 +530,8 @@ def _np_list(sent: _Sentence, ms: list[Mention], lo: int, hi: int) -> list[Menti
         prep = _prep_before(sent.words, m.start)
         if prep is not None and prep not in ("of",) and lo <= _prep_index(sent.words, m.start):
             continue
+        if _negated(words, lo, m.start):
+            continue  # "the mug, not the cup, is on the table": the cup is contrasted away
         if prep == "of" and out and out[-1].end == _prep_index(sent.words, m.start):
             # "a box of cereal": one thing, the complement when it names the head too
             if _names_head(sent, out[-1], m):
@@ -537,6 +539,15 @@ def _np_list(sent: _Sentence, ms: list[Mention], lo: int, hi: int) -> list[Menti
             continue
         out.append(m)
     return out
+
+
+def _negated(words: list[str], lo: int, start: int) -> bool:
+    """Whether the noun phrase at `start` is negated by the word before it or before its article
+    ("not the cup", "never a plate", "no mug")."""
+    k = start - 1
+    if k > lo and words[k] in ARTICLES:
+        k -= 1
+    return k >= lo and words[k] in NEGATIONS
 
 
 def _names_head(sent: _Sentence, head: Mention, complement: Mention) -> bool:
