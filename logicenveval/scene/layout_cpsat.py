@@ -133,8 +133,9 @@ class _Solve:
         if status == cp_model.MODEL_INVALID:
             raise LogicEnvEvalError(f"the CP-SAT layout model is invalid: {self.m.validate()}",
                                     hint="report this as a bug; use solver='z3' meanwhile")
-        return "unknown" if self.solver.response_proto.deterministic_time >= p.max_deterministic_time * 0.999 \
-            or self.solver.wall_time < p.max_time_in_seconds else "capped"
+        ran_out = self.solver.response_proto.deterministic_time >= p.max_deterministic_time * 0.999
+        # the deterministic budget ran out (the same on every machine), else the wall-clock cap did
+        return "capped" if not ran_out and self.solver.wall_time >= p.max_time_in_seconds else "unknown"
 
     def _core(self, assumed: list[Tracked]) -> list[Tracked]:
         core = set(self.solver.sufficient_assumptions_for_infeasibility())
