@@ -403,7 +403,7 @@ def main() -> None:
             ids = ids[:2]
         results[name], why[name] = run_set(folder, ids, args.seed, args.workers, work / name.replace(" ", "_"))
     rows = {name: aggregate(per) for name, per in results.items() if name not in UNSEEN}
-    base = {k: v for k, v in results["built-in"].items() if k in originals()}
+    base = {k: v for k, v in results.get("built-in", {}).items() if k in originals()}
     if base:
         rows["built-in (reworded originals)"] = aggregate(base)
     rows.update({name: aggregate(per) for name, per in results.items() if name in UNSEEN})
