@@ -4,7 +4,8 @@ The LLM proposes subtasks, uncertain factors and trees (grown one question at a 
 task's own vocabulary); rule-guided verification checks
 (a) independence of subtasks (no shared factor, no shared tested role), (b) syntax/schema,
 (c) every internal node grounded in an identified factor, and (d) every factor value a condition
-on the task's roles (DESIGN.md §3). Violations go back to the LLM as feedback, a bounded number
+on the task's roles (DESIGN.md §3) that their kinds can meet (from request protocol 6 on:
+`generators.feasibility`). Violations go back to the LLM as feedback, a bounded number
 of times (rule (a): the decomposition is asked again with the dependent pairs named; rule (d):
 the factors are asked again); what still fails is repaired by rule (merge dependent subtasks,
 drop ungrounded factors) and logged, so the plan is always a valid `Task` built from the brief alone.
@@ -18,8 +19,10 @@ from typing import Any
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, create_model
 
+from logicenveval.domain.catalog import Catalog
 from logicenveval.errors import ConditionSyntaxError, LogicEnvEvalError, ModelReplyError
 from logicenveval.generators.base import GenerationContext
+from logicenveval.generators.feasibility import impossible
 from logicenveval.llm.ask import ask, protocol_of
 from logicenveval.llm.replies import (
     DecomposeWire,
@@ -53,8 +56,9 @@ def _payload(brief: TaskBrief, **extra: Any) -> dict[str, Any]:
     return {"task": brief.model_dump(mode="json"), **extra}
 
 
-def check_factor(brief: TaskBrief, factor: FactorDraft) -> list[str]:
-    """Rule (d): every value parses and speaks about the task's roles (or rooms/floor)."""
+def check_factor(brief: TaskBrief, factor: FactorDraft, catalog: Catalog | None = None) -> list[str]:
+    """Rule (d): every value parses and speaks about the task's roles (or rooms/floor); given the
+    catalog, every value can hold of the roles' kinds (`feasibility.impossible`)."""
     problems = []
     known = set(brief.roles) | set(brief.rooms) | set(ROOM_TYPES) | {"floor"}
     for value, text in factor.values.items():
@@ -72,6 +76,9 @@ def check_factor(brief: TaskBrief, factor: FactorDraft) -> list[str]:
                 if arg not in known:
                     problems.append(f"factor {factor.id!r} value {value!r} names {arg!r}, which is not "
                                     f"a role, a room or floor; roles are {sorted(brief.roles)}")
+        if catalog is not None:
+            problems += [f"factor {factor.id!r} value {value!r}: {why}; ask about something that can "
+                         "differ between environments of this task" for why in impossible(cond, brief.roles, catalog)]
     return problems
 
 
@@ -194,7 +201,10 @@ def _decompose(brief: TaskBrief, ctx: GenerationContext, vocab: dict[str, Words]
 
 def _identify(brief: TaskBrief, ctx: GenerationContext, vocab: dict[str, Words], log: PlanLog,
               st: SubtaskDraft, max_refinements: int) -> list[FactorDraft]:
-    """The subtask's factors, re-asked with rule (d)'s feedback; ungrounded ones dropped."""
+    """The subtask's factors, re-asked with rule (d)'s feedback; ungrounded ones dropped. Packs
+    recorded before protocol 6 were not asked again for a value their kinds cannot meet, so
+    their replay asks the same."""
+    catalog = ctx.catalog if protocol_of(ctx.model) >= 6 else None
     feedback: list[str] = []
     drafts: list[FactorDraft] = []
     for attempt in range(max_refinements + 1):
@@ -207,11 +217,11 @@ def _identify(brief: TaskBrief, ctx: GenerationContext, vocab: dict[str, Words],
                     subtask=st.id, error=exc.message)
             return []
         drafts = [f.draft() for f in reply.factors]
-        feedback = [p for f in drafts for p in check_factor(brief, f)]
+        feedback = [p for f in drafts for p in check_factor(brief, f, catalog)]
         if not feedback:
             break
         log.add("identify_factors", "refine", subtask=st.id, attempt=attempt, problems=feedback)
-    good = [f for f in drafts if not check_factor(brief, f)]
+    good = [f for f in drafts if not check_factor(brief, f, catalog)]
     dropped = [f.id for f in drafts if f not in good]
     if dropped:
         log.add("identify_factors", "dropped factors that stay ungrounded", subtask=st.id,
