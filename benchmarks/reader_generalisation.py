@@ -111,7 +111,7 @@ prints LogCov / SceVR / FauDR for each, then per task:
 - `dev18 reworded` and `dev18 new`: tests/data/reader_dev18/ — the eighteenth development set,
   written beside dev 17 (each in its own family of registers) in personal, literary and digital
   registers no set used: one rewording each of 3 built-in descriptions (a letter to one's future
-  self, a Homeric epic pastiche, an exported chat with an AI assistant) and six new tasks in rooms
+  self, a Homeric epic pastiche, a sonnet) and six new tasks in rooms
   none of the sets above use (a Korean speaker's KakaoTalk message, a Regency-novel pastiche, a
   Gothic tale, a speech-to-text dictation, an Instagram caption, a science-fiction captain's log).
   Unseen until measured;

@@ -28,8 +28,8 @@ voice other than the writer's (a letter from the family cat) and the English of 
 Portuguese and Dutch speakers. dev 18 was written beside dev 17 (each in its own family of
 registers): personal, literary and digital writing (a letter to one's future self, a Regency-novel
 and a Gothic-tale pastiche, a captain's log in the manner of science fiction, a Homeric epic, an
-Instagram caption, a speech-to-text dictation, an exported chat with an AI assistant) and the
-English of a Korean speaker, in room ids beginning with a letter n-z.
+Instagram caption, a speech-to-text dictation, a sonnet) and the English of a Korean speaker, in
+room ids beginning with a letter n-z.
 """
 
 from __future__ import annotations
