@@ -108,6 +108,13 @@ prints LogCov / SceVR / FauDR for each, then per task:
   inventory, a dream journal, a teacher's instructions to pupils, a landlord's letter in a
   deposit dispute, a Brazilian Portuguese speaker's English, a letter in the voice of the family
   cat). Unseen until measured;
+- `dev17 reworded` and `dev17 new`: tests/data/reader_dev17/ — the seventeenth development set,
+  written after dev 16, beside dev 18, in registers of spoken, broadcast, official and commercial
+  writing and the English of a Spanish speaker: one rewording each of 3 built-in descriptions (a
+  TV shopping-channel segment, a parliamentary question time in Hansard, a radio news bulletin)
+  and six new tasks in rooms none of the sets above use (courtroom testimony, an insurance claim
+  form, a building manager's notice to residents, a holiday cottage's support chatbot log, a
+  hotel's product-recall notice, a Spanish speaker's note). Fresh (`FRESH`) until measured;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -124,7 +131,7 @@ like-for-like gap.
 Every run is computed afresh (`fresh=True`: a stored unit is never reused, since the run's
 fingerprint does not cover the reader's code) with the offline model's reply cache off.
 
-    python benchmarks/reader_generalisation.py            # all thirty-seven rows (~3-6 min on 2 cores)
+    python benchmarks/reader_generalisation.py            # all thirty-nine rows (~3-6 min on 2 cores)
     python benchmarks/reader_generalisation.py --smoke    # two tasks per set (~1 min)
     python benchmarks/reader_generalisation.py --why      # and why each task lost environments
     python benchmarks/reader_generalisation.py --dev-only # without the held-out sets (for tuning)
@@ -139,8 +146,8 @@ was written for (a rule too wide shows as a task of another set falling):
     python benchmarks/reader_generalisation.py --dev-only --json before.json   # on main
     python benchmarks/reader_generalisation.py --dev-only --compare before.json # with the rule
 
-`--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: none
-at the start of the tenth session, when dev 15 and dev 16 left it), so a tuner's runs never show them; `--dev-only --fresh` keeps them, to measure
+`--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: dev 17
+and dev 18, written in the tenth session after dev 15 and dev 16 left it), so a tuner's runs never show them; `--dev-only --fresh` keeps them, to measure
 them. `--skip 'dev9 reworded,dev9 new'` leaves any other rows' sets out as well.
 
 `--placements` measures instead the reader's recall of stated placements, without running a
@@ -160,7 +167,7 @@ dev2_new=... dev4_reworded=... dev4_new=... dev3_reworded=... dev3_new=... dev5_
 dev5_new=... dev6_reworded=... dev6_new=... dev7_reworded=... dev7_new=... dev8_reworded=...
 dev8_new=... dev9_reworded=... dev9_new=... dev10_reworded=... dev10_new=... dev11_reworded=...
 dev11_new=... dev12_reworded=... dev12_new=... dev13_reworded=... dev13_new=... dev14_reworded=... dev14_new=...
-dev15_reworded=... dev15_new=... dev16_reworded=... dev16_new=...
+dev15_reworded=... dev15_new=... dev16_reworded=... dev16_new=... dev17_reworded=... dev17_new=...
 held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
 rows only).
 """
@@ -200,6 +207,7 @@ DEV13 = ROOT / "tests" / "data" / "reader_dev13"
 DEV14 = ROOT / "tests" / "data" / "reader_dev14"
 DEV15 = ROOT / "tests" / "data" / "reader_dev15"
 DEV16 = ROOT / "tests" / "data" / "reader_dev16"
+DEV17 = ROOT / "tests" / "data" / "reader_dev17"
 HOLDOUT2 = ROOT / "tests" / "data" / "reader_holdout2"
 #: (row name, tasks folder; None = the built-in tasks)
 SETS: tuple[tuple[str, Path | None], ...] = (
@@ -219,6 +227,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
     ("dev14 reworded", DEV14 / "tasks_reworded"), ("dev14 new", DEV14 / "tasks_new"),
     ("dev15 reworded", DEV15 / "tasks_reworded"), ("dev15 new", DEV15 / "tasks_new"),
     ("dev16 reworded", DEV16 / "tasks_reworded"), ("dev16 new", DEV16 / "tasks_new"),
+    ("dev17 reworded", DEV17 / "tasks_reworded"), ("dev17 new", DEV17 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
     ("held-out2 reworded", HOLDOUT2 / "tasks_reworded"), ("held-out2 new", HOLDOUT2 / "tasks_new"),
 )
@@ -227,7 +236,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH: frozenset[str] = frozenset()
+FRESH: frozenset[str] = frozenset({"dev17 reworded", "dev17 new"})
 GENERATOR = "logicenvgen"
 
 
