@@ -108,6 +108,13 @@ prints LogCov / SceVR / FauDR for each, then per task:
   inventory, a dream journal, a teacher's instructions to pupils, a landlord's letter in a
   deposit dispute, a Brazilian Portuguese speaker's English, a letter in the voice of the family
   cat). Unseen until measured;
+- `dev17 reworded` and `dev17 new`: tests/data/reader_dev17/ — the seventeenth development set,
+  written after dev 16, beside dev 18, in registers of spoken, broadcast, official and commercial
+  writing and the English of a Spanish speaker: one rewording each of 3 built-in descriptions (a
+  TV shopping-channel segment, a parliamentary question time in Hansard, a radio news bulletin)
+  and six new tasks in rooms none of the sets above use (courtroom testimony, an insurance claim
+  form, a building manager's notice to residents, a holiday cottage's support chatbot log, a
+  hotel's product-recall notice, a Spanish speaker's note). Fresh (`FRESH`) until measured;
 - `dev18 reworded` and `dev18 new`: tests/data/reader_dev18/ — the eighteenth development set,
   written beside dev 17 (each in its own family of registers) in personal, literary and digital
   registers no set used: one rewording each of 3 built-in descriptions (a letter to one's future
@@ -131,7 +138,7 @@ like-for-like gap.
 Every run is computed afresh (`fresh=True`: a stored unit is never reused, since the run's
 fingerprint does not cover the reader's code) with the offline model's reply cache off.
 
-    python benchmarks/reader_generalisation.py            # all thirty-nine rows (~3-6 min on 2 cores)
+    python benchmarks/reader_generalisation.py            # all forty-one rows (~3-6 min on 2 cores)
     python benchmarks/reader_generalisation.py --smoke    # two tasks per set (~1 min)
     python benchmarks/reader_generalisation.py --why      # and why each task lost environments
     python benchmarks/reader_generalisation.py --dev-only # without the held-out sets (for tuning)
@@ -167,8 +174,8 @@ dev2_new=... dev4_reworded=... dev4_new=... dev3_reworded=... dev3_new=... dev5_
 dev5_new=... dev6_reworded=... dev6_new=... dev7_reworded=... dev7_new=... dev8_reworded=...
 dev8_new=... dev9_reworded=... dev9_new=... dev10_reworded=... dev10_new=... dev11_reworded=...
 dev11_new=... dev12_reworded=... dev12_new=... dev13_reworded=... dev13_new=... dev14_reworded=... dev14_new=...
-dev15_reworded=... dev15_new=... dev16_reworded=... dev16_new=... dev18_reworded=... dev18_new=...
-held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
+dev15_reworded=... dev15_new=... dev16_reworded=... dev16_new=... dev17_reworded=... dev17_new=...
+dev18_reworded=... dev18_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
 rows only).
 """
 
@@ -207,6 +214,7 @@ DEV13 = ROOT / "tests" / "data" / "reader_dev13"
 DEV14 = ROOT / "tests" / "data" / "reader_dev14"
 DEV15 = ROOT / "tests" / "data" / "reader_dev15"
 DEV16 = ROOT / "tests" / "data" / "reader_dev16"
+DEV17 = ROOT / "tests" / "data" / "reader_dev17"
 DEV18 = ROOT / "tests" / "data" / "reader_dev18"
 HOLDOUT2 = ROOT / "tests" / "data" / "reader_holdout2"
 #: (row name, tasks folder; None = the built-in tasks)
@@ -227,6 +235,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
     ("dev14 reworded", DEV14 / "tasks_reworded"), ("dev14 new", DEV14 / "tasks_new"),
     ("dev15 reworded", DEV15 / "tasks_reworded"), ("dev15 new", DEV15 / "tasks_new"),
     ("dev16 reworded", DEV16 / "tasks_reworded"), ("dev16 new", DEV16 / "tasks_new"),
+    ("dev17 reworded", DEV17 / "tasks_reworded"), ("dev17 new", DEV17 / "tasks_new"),
     ("dev18 reworded", DEV18 / "tasks_reworded"), ("dev18 new", DEV18 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
     ("held-out2 reworded", HOLDOUT2 / "tasks_reworded"), ("held-out2 new", HOLDOUT2 / "tasks_new"),
@@ -236,7 +245,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH: frozenset[str] = frozenset({"dev18 reworded", "dev18 new"})
+FRESH: frozenset[str] = frozenset({"dev17 reworded", "dev17 new", "dev18 reworded", "dev18 new"})
 GENERATOR = "logicenvgen"
 
 

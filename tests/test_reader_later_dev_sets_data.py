@@ -1,6 +1,6 @@
-"""The reader's fifth to sixteenth and eighteenth development sets (tests/data/reader_dev5/, reader_dev6/,
+"""The reader's fifth to eighteenth development sets (tests/data/reader_dev5/, reader_dev6/,
 reader_dev7/, reader_dev8/, reader_dev9/, reader_dev10/, reader_dev11/, reader_dev12/, reader_dev13/,
-reader_dev14/, reader_dev15/, reader_dev16/, reader_dev18/): new tasks and rewordings written from the task format, the
+reader_dev14/, reader_dev15/, reader_dev16/, reader_dev17/, reader_dev18/): new tasks and rewordings written from the task format, the
 catalog and the built-in tasks, without reading the offline reader or running it on them, for rounds of reader
 rules to be tuned on. One table of what differs between them; the same checks for each.
 
@@ -25,8 +25,12 @@ dictation written down by an adult and a careless machine translation. dev 16 ca
 in registers no set used: documents of a tenancy (a check-in inventory, a landlord's letter in a
 deposit dispute), school and home life (a teacher's instructions to pupils, a dream journal), a
 voice other than the writer's (a letter from the family cat) and the English of Brazilian
-Portuguese and Dutch speakers. dev 18 was written beside dev 17 (each in its own family of
-registers): personal, literary and digital writing (a letter to one's future self, a Regency-novel
+Portuguese and Dutch speakers. dev 17 came after dev 16, beside dev 18: registers of spoken,
+broadcast, official and commercial writing (courtroom testimony, an insurance claim form, a
+building manager's notice, a support chatbot log, a product-recall notice, a TV shopping-channel
+segment, Hansard, a radio news bulletin) and a Spanish speaker's English, in room ids beginning
+with a-m (dev 18's begin with n-z). dev 18 was written beside dev 17 (each in its own family
+of registers): personal, literary and digital writing (a letter to one's future self, a Regency-novel
 and a Gothic-tale pastiche, a captain's log in the manner of science fiction, a Homeric epic, an
 Instagram caption, a speech-to-text dictation, a sonnet) and the English of a Korean speaker, in
 room ids beginning with a letter n-z.
@@ -96,6 +100,7 @@ SETS = (
     DevSet("reader_dev14", "_d14", 3, 6, ("pool_house_applets", "study_desk_cleanup_d14")),
     DevSet("reader_dev15", "_d15", 3, 6, ("still_room_household_manual", "laundry_drying_rack_d15")),
     DevSet("reader_dev16", "_d16", 3, 6, ("boot_room_letter_from_the_cat", "lamp_or_pillow_fetch_d16")),
+    DevSet("reader_dev17", "_d17", 3, 6, ("common_room_management_notice", "living_room_plant_care_d17")),
     DevSet("reader_dev18", "_d18", 3, 6, ("turret_gothic_tale", "multi_room_trash_run_d18")),
 )
 IDS = [s.name for s in SETS]
