@@ -25,7 +25,8 @@ ROLES = {
     "coffee_table": "coffee_table", "kettle": "kettle", "cup": "cup", "watch": "watch",
     "stain": "floor_stain", "mark": "floor_stain", "table": "dining_table", "mug": "mug",
     "developer": "bottle", "syrup": "bottle", "computer": "desktop_computer", "desk": "desk",
-    "remote": "remote_control", "toy": "toy",
+    "remote": "remote_control", "toy": "toy", "wine_bottle": "wine_bottle", "kitchen_counter": "kitchen_counter",
+    "flashlight": "flashlight", "utility_shelf": "utility_shelf",
 }
 
 
@@ -244,3 +245,37 @@ def test_a_thing_only_in_the_one_room_may_still_be_on_its_holder() -> None:
     assert "on(computer, desk)" in _read(TURN_OFF, "computer", "desk", rooms=["reception"])
     # with two rooms the room read first stands: the holder might be elsewhere
     assert "on(computer, desk)" not in _read(TURN_OFF, "computer", "desk", rooms=["reception", "kitchen"])
+
+
+# a word the text identifies as one of its things names it as a place ----------------------------
+
+@pytest.mark.parametrize(("text", "roles", "fact"), [
+    # a wiki article; a diary
+    ("Layout. The bar is a kitchen counter salvaged from the old kitchen. As of November, a wine bottle stands on"
+     " the bar.", ("wine_bottle", "kitchen_counter"), "on(wine_bottle, kitchen_counter)"),
+    ("Day 3. The plinth is a little side table I built myself. The tissue box sits on the plinth.",
+     ("tissue_box", "side_table"), "on(tissue_box, side_table)"),
+])
+def test_a_word_identified_as_a_thing_names_it_as_a_place(text: str, roles: tuple[str, ...], fact: str) -> None:
+    assert fact in _read(text, *roles)
+
+
+def test_a_word_identified_as_a_thing_in_an_instruction_places_nothing() -> None:
+    read = _read("The bar is a kitchen counter. Put the wine bottle on the bar.", "wine_bottle", "kitchen_counter")
+    assert "on(wine_bottle, kitchen_counter)" not in read
+
+
+# "next to" is a place, not a goal --------------------------------------------------------------
+
+@pytest.mark.parametrize(("text", "roles", "fact"), [
+    ("Our flashlight? It is on the utility shelf, close to the door.", ("flashlight", "utility_shelf"),
+     "on(flashlight, utility_shelf)"),
+    ("Sorry! Left my watch behind, it is on the armchair next to the window.", ("watch", "armchair"),
+     "on(watch, armchair)"),
+])
+def test_next_to_after_a_place_is_no_goal(text: str, roles: tuple[str, ...], fact: str) -> None:
+    assert fact in _read(text, *roles)
+
+
+def test_a_goal_with_to_still_places_nothing() -> None:
+    assert "on(watch, armchair)" not in _read("Firstly, the watch. It has to be on the armchair.", "watch", "armchair")

@@ -272,6 +272,36 @@ def _sentences(text: str, lex: Lexicon) -> list[_Sentence]:
             toks, mentions = kept, lex.find_mentions([(t.lemma, t.start, t.end) for t in kept])
         mentions = [m for m in mentions if not _verb_mention(toks, mentions, m)]
         out.append(_Sentence(toks, _with_room_word(toks, mentions, lex)))
+    return _with_aliases(out)
+
+
+def _with_aliases(sentences: list[_Sentence]) -> list[_Sentence]:
+    """A word the text identifies as one of its things ("The bar is a kitchen counter salvaged from
+    the refit") names that thing where it is later a place ("a wine bottle stands on the bar"):
+    "the <word> is a/an [modifiers] <thing>" in a statement, the word naming nothing itself."""
+    aliases: dict[str, Mention] = {}
+    for sent in sentences:
+        words = sent.words
+        for i in range(len(words) - 3):
+            if words[i] != "the" or not words[i + 1].isalpha() or words[i + 2] != "is" \
+                    or words[i + 3] not in ("a", "an") or any(m.start <= i + 1 < m.end for m in sent.mentions) \
+                    or i > 0 and words[i - 1] not in SUBJECT_LEADS:
+                continue
+            named = next((m for m in sent.mentions if m.kind == "role" and len(m.roles) == 1
+                          and i + 4 <= m.start <= i + 6
+                          and all(w.isalpha() and w not in VERBS for w in words[i + 4:m.start])), None)
+            if named is not None and (named.end >= len(words) or not words[named.end].isalpha()
+                                      or words[named.end] not in ("of", "for", "with")):
+                aliases.setdefault(sent.toks[i + 1].lemma, named)
+    if not aliases:
+        return sentences
+    out = []
+    for sent in sentences:
+        words = sent.words
+        extra = [Mention(aliases[sent.toks[k].lemma].roles, k, k + 1, "role") for k in range(2, len(words))
+                 if sent.toks[k].lemma in aliases and words[k - 1] == "the" and words[k - 2] in FALLBACK_AT
+                 and not any(m.start <= k < m.end for m in sent.mentions)]
+        out.append(_Sentence(sent.toks, sorted(sent.mentions + extra, key=lambda m: m.start)) if extra else sent)
     return out
 
 
@@ -1658,6 +1688,8 @@ UNSTATED = frozenset({"not", "never", "no", "nothing", "should", "must", "ought"
 SUBJECT_LEADS = LEAD_INS | FRONT_LEADS | frozenset({",", "whereas", "while", "meanwhile", "as", "yes", "also",
                                                     # interjections ("Uh-oh, the floor is stained!")
                                                     "uh", "oh", "ah", "oops", "whoops", "alas", "hey"})
+#: words before "to" that make it part of a place ("on the shelf next to the boiler"), not a goal
+PLACE_BEFORE_TO = frozenset({"next", "close", "adjacent", "beside"})
 #: words opening a clause that make it a condition or a relative, not a statement of its own
 _WHERE_LEADS = frozenset({"where", "wherever", "whenever", "once", "should", "what", "which", "who"})
 #: words of a verb gap that say where a thing goes or what someone does to it, not where it is
@@ -1704,8 +1736,9 @@ def _fallback(sent: _Sentence, before: _Before, lex: Lexicon, catalog: Catalog, 
             lead = next((w for w in words[a:b] if w not in SUBJECT_LEADS), "")
             if not ms or habitual(words[a:b]) or lead in SUBORDINATORS | _WHERE_LEADS:
                 continue  # "where the carton remains on the table, ...": a condition's register
-            # the "to" of "has moved to" is where the thing went, no goal
-            stated = not {w for k, w in enumerate(words[a:b], a) if w != "to" or words[k - 1] not in MOVED} & UNSTATED
+            # the "to" of "has moved to" is where the thing went, of "next to" where it is: no goal
+            stated = not {w for k, w in enumerate(words[a:b], a)
+                          if w != "to" or words[k - 1] not in MOVED | PLACE_BEFORE_TO} & UNSTATED
             for kind, item, prep, holder in _fallback_forms(sent, ms, a, b, lex, stated) \
                     + (_structures(sent, before, ms, a, b, lex) if stated else []):
                 _put_new(reading, kind, catalog, lex, item, holder, prep)
