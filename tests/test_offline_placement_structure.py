@@ -26,7 +26,7 @@ ROLES = {
     "stain": "floor_stain", "mark": "floor_stain", "table": "dining_table", "mug": "mug",
     "developer": "bottle", "syrup": "bottle", "computer": "desktop_computer", "desk": "desk",
     "remote": "remote_control", "toy": "toy", "wine_bottle": "wine_bottle", "kitchen_counter": "kitchen_counter",
-    "flashlight": "flashlight", "utility_shelf": "utility_shelf",
+    "flashlight": "flashlight", "utility_shelf": "utility_shelf", "coffee_maker": "coffee_maker",
 }
 
 
@@ -279,3 +279,30 @@ def test_next_to_after_a_place_is_no_goal(text: str, roles: tuple[str, ...], fac
 
 def test_a_goal_with_to_still_places_nothing() -> None:
     assert "on(watch, armchair)" not in _read("Firstly, the watch. It has to be on the armchair.", "watch", "armchair")
+
+
+# a question about what a thing is doing where it is takes the place for granted ----------------
+
+@pytest.mark.parametrize(("text", "roles", "fact"), [
+    # a fifties advert; a household chat message; a recipe card
+    ("STEP ONE! Is the Perk-O-Matic (that's your trusty coffee maker!) still perking away on the counter? Then"
+     " switch it OFF!", ("coffee_maker", "kitchen_counter"), "on(coffee_maker, kitchen_counter)"),
+    ("Is the television still blaring away on the TV stand? Then switch it off, please.", ("television", "tv_stand"),
+     "on(television, tv_stand)"),
+    ("STEP ONE! Is the kettle still boiling on the stove? Take it off the heat!", ("kettle", "stove"),
+     "on(kettle, stove)"),
+])
+def test_a_question_about_an_activity_takes_the_place_for_granted(text: str, roles: tuple[str, ...],
+                                                                  fact: str) -> None:
+    assert fact in _read(text, *roles)
+    assert fact not in _read(text, *roles, kinds=SETTLED)  # presumed: it settles no factor
+
+
+@pytest.mark.parametrize(("text", "roles", "fact"), [
+    ("Is the mug sitting on the desk? Then wash it.", ("mug", "desk"), "on(mug, desk)"),  # asks the place
+    ("Is the kettle on? Are you working on the desk?", ("kettle", "desk"), "on(kettle, desk)"),  # a person
+    ("If the kettle is boiling on the stove, turn it off.", ("kettle", "stove"), "on(kettle, stove)"),
+    ("Is the kettle maybe boiling on the stove?", ("kettle", "stove"), "on(kettle, stove)"),  # a doubt
+])
+def test_a_question_about_an_activity_near_misses(text: str, roles: tuple[str, ...], fact: str) -> None:
+    assert fact not in _read(text, *roles)

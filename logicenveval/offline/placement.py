@@ -1729,6 +1729,9 @@ def _fallback(sent: _Sentence, before: _Before, lex: Lexicon, catalog: Catalog, 
     are never read (the clause moods)."""
     words = sent.words
     for clause in _clauses(words, 0, len(words)):
+        if clause.mood == "condition" and clause.end < len(words) and words[clause.end] == "?":
+            for kind, item, prep, holder in _asked_activity(sent, clause):
+                _put_new(reading, kind, catalog, lex, item, holder, prep)
         if clause.mood != "statement":
             continue
         for a, b in _parts(words, clause):
@@ -2153,3 +2156,36 @@ def _marked(sent: _Sentence, ms: list[Mention], a: int, b: int, lex: Lexicon) ->
                 out.append(("settled", named[0].roles[0], "on", holder))
                 break
     return out
+
+
+#: particles that may follow a verb of activity before its place ("still perking away on the counter")
+_ACTIVITY_PARTICLES = frozenset({"away", "along", "quietly", "loudly"})
+
+
+def _asked_activity(sent: _Sentence, clause: Span) -> list[tuple[str, str, str, Mention]]:
+    """A yes/no question about what a thing is doing where it is ("Is the Perk-O-Matic (that's your
+    trusty coffee maker!) still perking away on the counter?", "Is the fan still whirring on the
+    desk?") asks about the activity and takes the place for granted: `presumed`. Not a verb of
+    resting, keeping or placing ("Is the mug sitting on the desk?" asks where it is), nor a person
+    ("Are you working on the desk?"), nor a doubt or condition."""
+    words = sent.words
+    if words[0] not in ("is", "are", "was", "were") or set(words[:clause.end]) & (CONDITION_CUES | DOUBT):
+        return []
+    ms = [m for m in sent.mentions if clause.start <= m.start and m.end <= clause.end]
+    for i in range(clause.start, clause.end):
+        w = words[i]
+        if not w.endswith("ing") or not verb_form(w) or w in STATIVE | KEEP_VERBS | RESULT | PERCEIVE \
+                or any(m.start <= i < m.end for m in sent.mentions):
+            continue
+        k = i + 1
+        while k < clause.end and (words[k] in _ACTIVITY_PARTICLES or words[k] in ADVERBS):
+            k += 1
+        found = _place_at(sent, ms, k, clause.end, False)
+        if found is None or found[1].kind != "role":
+            return []
+        before = [m for m in sent.mentions if m.end <= i and m.kind == "role" and len(m.roles) == 1
+                  and m.roles[0] not in found[1].roles]
+        if not before or set(words[before[-1].end:i]) & (SUBJECT_PRONOUNS | {"you", "we", "i", "they", "he", "she"}):
+            return []
+        return [("presumed", before[-1].roles[0], found[0], found[1])]
+    return []
