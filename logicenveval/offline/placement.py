@@ -270,8 +270,50 @@ def _sentences(text: str, lex: Lexicon) -> list[_Sentence]:
         kept = _without_asides(toks, mentions)
         if len(kept) < len(toks):  # an aside dropped: the mentions after it moved
             toks, mentions = kept, lex.find_mentions([(t.lemma, t.start, t.end) for t in kept])
+        mentions = [m for m in mentions if not _verb_mention(toks, mentions, m)]
         out.append(_Sentence(toks, _with_room_word(toks, mentions, lex)))
+    return _with_aliases(out)
+
+
+def _with_aliases(sentences: list[_Sentence]) -> list[_Sentence]:
+    """A word the text identifies as one of its things ("The bar is a kitchen counter salvaged from
+    the refit") names that thing where it is later a place ("a wine bottle stands on the bar"):
+    "the <word> is a/an [modifiers] <thing>" in a statement, the word naming nothing itself."""
+    aliases: dict[str, Mention] = {}
+    for sent in sentences:
+        words = sent.words
+        for i in range(len(words) - 3):
+            if words[i] != "the" or not words[i + 1].isalpha() or words[i + 2] != "is" \
+                    or words[i + 3] not in ("a", "an") or any(m.start <= i + 1 < m.end for m in sent.mentions) \
+                    or i > 0 and words[i - 1] not in SUBJECT_LEADS:
+                continue
+            named = next((m for m in sent.mentions if m.kind == "role" and len(m.roles) == 1
+                          and i + 4 <= m.start <= i + 6
+                          and all(w.isalpha() and w not in VERBS for w in words[i + 4:m.start])), None)
+            if named is not None and (named.end >= len(words) or not words[named.end].isalpha()
+                                      or words[named.end] not in ("of", "for", "with")):
+                aliases.setdefault(sent.toks[i + 1].lemma, named)
+    if not aliases:
+        return sentences
+    out = []
+    for sent in sentences:
+        words = sent.words
+        extra = [Mention(aliases[sent.toks[k].lemma].roles, k, k + 1, "role") for k in range(2, len(words))
+                 if sent.toks[k].lemma in aliases and words[k - 1] == "the" and words[k - 2] in FALLBACK_AT
+                 and not any(m.start <= k < m.end for m in sent.mentions)]
+        out.append(_Sentence(sent.toks, sorted(sent.mentions + extra, key=lambda m: m.start)) if extra else sent)
     return out
+
+
+def _verb_mention(toks: list[_Token], mentions: list[Mention], m: Mention) -> bool:
+    """Whether a one-word mention is a verb of resting in the third person after its subject ("it
+    stands on the TV stand": "stands" names no TV stand): a pronoun or a thing's name before it and
+    a place or an adverb after it."""
+    if m.end - m.start != 1 or m.start == 0 or m.end >= len(toks):
+        return False
+    word, prev, nxt = toks[m.start].word, toks[m.start - 1].word, toks[m.end].word
+    subject = prev in THING_PRONOUNS | PERSONAL_SUBJECTS or any(x.end == m.start and x.kind == "role" for x in mentions)
+    return word in STATIVE and word != toks[m.start].lemma and subject and nxt in AT | RESTING_OVER | ADVERBS
 
 
 def _without_asides(toks: list[_Token], mentions: list[Mention]) -> list[_Token]:
@@ -323,8 +365,10 @@ def _read(brief: Mapping[str, Any], catalog: Catalog, kinds: frozenset[str]) -> 
     sentences = _sentences(unquote(str(brief.get("description", ""))), lex)
     for sent in sentences:
         _read_sentence(sent, lex, catalog, reading)
+    before = _Before()
     for sent in sentences:  # after every rule: a thing a rule placed keeps its place
-        _fallback(sent, lex, catalog, reading)
+        _fallback(sent, before, lex, catalog, reading)
+        before.see(sent)
     held: dict[str, str] = {}
     rooms: dict[str, str] = {}
     for kind in _ORDER:
@@ -388,7 +432,7 @@ def _relative_place(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexic
     on", "which is kept in"); what the question asks is read by the factor reader."""
     words = sent.words
     for m in ms:
-        k = m.end
+        k = _of_complement(words, ms, m.end, clause.end)  # "the photo frame of Nana that's on the shelf"
         if m.kind != "role" or len(m.roles) != 1 or k >= clause.end:
             continue
         reduced = words[k] in STATIVE and words[k].endswith("ing")
@@ -882,6 +926,26 @@ def _if_anywhere(words: list[str], at: int) -> bool:
     return rest[:1] == ["anywhere"] and rest[1:2] != ["else"] or rest[1:3] == ["at", "all"]
 
 
+#: what a condition asks when it only asks whether a thing is there at all: "if it is there", "if
+#: she did leave it" (then "it will be on the armchair" after it is where the thing is, if it is)
+PRESENT = frozenset({"there", "here", "anywhere", "around", "about"})
+LEAVING = frozenset({"leave", "left", "forget", "forgot", "forgotten", "drop", "dropped", "lose", "lost"})
+
+
+def _if_present(words: list[str], start: int) -> bool:
+    """Whether the clause before token `start` is a condition that only asks whether the thing is
+    there ("If it is there, it will be on the armchair", "If she did leave it, it'll be on the
+    armchair"): `_if_anywhere` with the condition put first."""
+    cue = max((n for n in range(start) if words[n] == "if"), default=None)
+    if cue is None:
+        return False
+    asked = [w for w in words[cue + 1:start] if w.isalpha() and w != "still"]
+    if not 2 <= len(asked) <= 4 or set(asked) & NEGATIONS:
+        return False
+    return asked[:1] in (["it"], ["they"]) and asked[1:2] in (["is"], ["are"]) and asked[2:] in ([w] for w in PRESENT) \
+        or asked[-1] in ("it", "them") and bool(set(asked) & LEAVING)
+
+
 def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
               reading: _Reading) -> None:
     """"The cardboard box is on the floor next to the stool", "the dishwasher, the sink and a
@@ -904,7 +968,7 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         while k > clause.start and words[k] in ADVERBS:
             k -= 1
         before = words[k] if k >= clause.start else ""
-        guessed = before == "will" and _if_anywhere(words, clause.end)
+        guessed = before == "will" and (_if_anywhere(words, clause.end) or _if_present(words, clause.start))
         if before in NORMATIVE and not (before in PERFECT and group[:1] == ["been"]) and not guessed \
                 or before in ("you", "we", "i") and not set(group) & KEEP_VERBS:
             continue  # a norm or a goal ("should be in"), or what someone does ("which you hang on")
@@ -1252,15 +1316,25 @@ def _possessive(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, 
             return  # "the bookshelf's three levels hold ...": the subject is another noun
         stop = _next_owner(sent, ms, i + 1, clause.end)
         items = _np_list(sent, ms, i + 1, stop)
+        prep = _taken_up(words, items[-1].end, stop) if items else "in"
         for m in items:
             if _generic(sent, m):
                 continue  # "hold novels, essays and other books": kinds, not things
             for role in _roles(m, sent):
                 if role != owner.roles[0]:
-                    _put(reading, "settled", catalog, lex, role, owner, "in")
+                    _put(reading, "settled", catalog, lex, role, owner, prep)
         if stop == clause.end:
             return
         lo = stop
+
+
+def _taken_up(words: list[str], j: int, hi: int) -> str:
+    """The preposition a possessive's place is said with: "on" when the list is followed by "on it"
+    ("The dresser has the hair dryer on it": on the dresser, not in it), else "in" (what a thing
+    has, it holds)."""
+    if j + 1 < hi and words[j] in FALLBACK_AT and words[j + 1] in RESUMPTIVE | {"them"}:
+        return FALLBACK_AT[words[j]]
+    return "in"
 
 
 def _next_owner(sent: _Sentence, ms: list[Mention], lo: int, hi: int) -> int:
@@ -1434,6 +1508,14 @@ def _kept(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalo
             return
         named = [r for m in _np_list(sent, ms, i + 1, j) for r in _roles(m, sent)]
         subject = [r for m in _np_list(sent, ms, clause.start, i) for r in _roles(m, sent)]
+        if holder.roles[0] in named + subject:
+            # "Developer kept in the brown bottle on the lower shelf": the thing's own vessel (a
+            # word naming the thing itself) is passed through to the place after it
+            nxt = next((n for n in range(holder.end, clause.end) if words[n] in AT), None)
+            found = _holder_after(sent, ms, nxt, clause.end) if nxt is not None else None
+            if found is None:
+                return
+            prep, holder = found
         rel = i - 1
         while rel > clause.start and (words[rel] in BE or words[rel] in ADVERBS):
             rel -= 1
@@ -1603,7 +1685,11 @@ UNSTATED = frozenset({"not", "never", "no", "nothing", "should", "must", "ought"
                       "can", "could", "might", "may", "to", "need", "needs", "want", "wants", "if", "unless",
                       "whether", "anywhere", "somewhere", "when", "whenever", "once", "until", "let"}) | DOUBT
 #: words that may stand before a subject at the head of a clause ("and whereas on the piano ...")
-SUBJECT_LEADS = LEAD_INS | FRONT_LEADS | frozenset({",", "whereas", "while", "meanwhile", "as", "yes", "also"})
+SUBJECT_LEADS = LEAD_INS | FRONT_LEADS | frozenset({",", "whereas", "while", "meanwhile", "as", "yes", "also",
+                                                    # interjections ("Uh-oh, the floor is stained!")
+                                                    "uh", "oh", "ah", "oops", "whoops", "alas", "hey"})
+#: words before "to" that make it part of a place ("on the shelf next to the boiler"), not a goal
+PLACE_BEFORE_TO = frozenset({"next", "close", "adjacent", "beside"})
 #: words opening a clause that make it a condition or a relative, not a statement of its own
 _WHERE_LEADS = frozenset({"where", "wherever", "whenever", "once", "should", "what", "which", "who"})
 #: words of a verb gap that say where a thing goes or what someone does to it, not where it is
@@ -1611,7 +1697,28 @@ _GAP_STOPS = (RESULT - PASSIVE_STATIVE) | MOTION | HAVE_VERBS | SUBJECT_PRONOUNS
     {"you", "we", "i", "they", "he", "she", "moved", "move", "moves", "goes", "go"})
 
 
-def _fallback(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Reading) -> None:
+@dataclass
+class _Before:
+    """What the fallback knows of the text before the sentence it reads: the last sentence (a
+    pronoun or an elided subject whose own sentence names no fitting thing before it takes up the
+    nearest fitting mention there) and the thing that last spoke of itself ("I am the sideboard.
+    On top of me sits the table lamp": a label's "me")."""
+
+    last: _Sentence | None = None
+    speaker: Mention | None = None
+
+    def see(self, sent: _Sentence) -> None:
+        words = sent.words
+        for i in range(len(words) - 2):
+            if words[i] == "i" and words[i + 1] == "am" and words[i + 2] in ARTICLES:
+                named = next((m for m in sent.mentions if m.kind == "role" and len(m.roles) == 1
+                              and i + 3 <= m.start <= i + 5 and m.end == len(words)
+                              and all(w.isalpha() and w not in VERBS for w in words[i + 3:m.start])), None)
+                self.speaker = named or self.speaker
+        self.last = sent
+
+
+def _fallback(sent: _Sentence, before: _Before, lex: Lexicon, catalog: Catalog, reading: _Reading) -> None:
     """Where no rule read a placement, a declarative part of a statement that names a thing and a
     holder joined by a preposition of place (`FALLBACK_AT`) states that the thing is there,
     whatever its verb ("stands", "lies open", "does sit"), word order (a fronted place, "there"
@@ -1622,6 +1729,9 @@ def _fallback(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Reading
     are never read (the clause moods)."""
     words = sent.words
     for clause in _clauses(words, 0, len(words)):
+        if clause.mood == "condition" and clause.end < len(words) and words[clause.end] == "?":
+            for kind, item, prep, holder in _asked_activity(sent, clause):
+                _put_new(reading, kind, catalog, lex, item, holder, prep)
         if clause.mood != "statement":
             continue
         for a, b in _parts(words, clause):
@@ -1629,9 +1739,11 @@ def _fallback(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Reading
             lead = next((w for w in words[a:b] if w not in SUBJECT_LEADS), "")
             if not ms or habitual(words[a:b]) or lead in SUBORDINATORS | _WHERE_LEADS:
                 continue  # "where the carton remains on the table, ...": a condition's register
-            # the "to" of "has moved to" is where the thing went, no goal
-            stated = not {w for k, w in enumerate(words[a:b], a) if w != "to" or words[k - 1] not in MOVED} & UNSTATED
-            for kind, item, prep, holder in _fallback_forms(sent, ms, a, b, lex, stated):
+            # the "to" of "has moved to" is where the thing went, of "next to" where it is: no goal
+            stated = not {w for k, w in enumerate(words[a:b], a)
+                          if w != "to" or words[k - 1] not in MOVED | PLACE_BEFORE_TO} & UNSTATED
+            for kind, item, prep, holder in _fallback_forms(sent, ms, a, b, lex, stated) \
+                    + (_structures(sent, before, ms, a, b, lex) if stated else []):
                 _put_new(reading, kind, catalog, lex, item, holder, prep)
 
 
@@ -1649,8 +1761,12 @@ def _parts(words: list[str], clause: Span) -> list[tuple[int, int]]:
 
 def _put_new(reading: _Reading, kind: str, catalog: Catalog, lex: Lexicon, item: str, holder: Mention,
              prep: str) -> None:
-    """`_put`, for a thing no rule has placed yet (in any kind, on a holder or in a room)."""
-    if any(item in held for held in reading.held.values()) or any(item in rooms for rooms in reading.rooms.values()):
+    """`_put`, for a thing no rule has placed yet (in any kind, on a holder or in a room). A thing
+    only said to be in the one room of a one-room task ("the desktop computer on the reception
+    desk" also names the reception) may still be put on a holder there: that narrows its place."""
+    if any(item in held for held in reading.held.values()):
+        return
+    if any(item in rooms for rooms in reading.rooms.values()) and (len(lex.rooms) != 1 or holder.kind != "role"):
         return
     _put(reading, kind, catalog, lex, item, holder, prep)
 
@@ -1746,15 +1862,18 @@ def _fallback_forms(sent: _Sentence, ms: list[Mention], a: int, b: int, lex: Lex
     for m in things:
         item = m.roles[0]
         subject = _subject_at(words, m.start, a) or words[a - 1:a] == ["("] and m.start == a
-        relative = m.end < b and words[m.end] in RELATIVE
+        after = _of_complement(words, ms, m.end, b)  # "the photo frame of Nana that's on the shelf"
+        relative = after < b and words[after] in RELATIVE
         # the thing, a verb of being or resting, the place: "a wine bottle stands on the bar",
         # "visitors' book lies open on the desk", "the mug that's on the desk"
         if stated and (subject or relative) and _prep_before(words, m.start) is None:
-            end = _verb_gap(words, ms, m.end, b)
-            if end is not None:
-                found = _place_at(sent, ms, end, b, bool(set(words[m.end:end]) & STATIVE))
-                if found is not None:
-                    out.append((_gap_kind(words[m.end:end]), item, found[0], found[1]))
+            end = _verb_gap(words, ms, after, b)
+            found = _place_at(sent, ms, end, b, bool(set(words[after:end]) & STATIVE)) if end is not None else None
+            if found is None and subject and _definite(words, m.start):
+                end = _passive_state(sent, after, b)  # "The bag of my wife is put on the low table"
+                found = _place_at(sent, ms, end, b, False) if end is not None else None
+            if found is not None and end is not None:
+                out.append((_gap_kind(words[after:end]), item, found[0], found[1]))
         # the thing, a perfect of moving, where to: "the coffee maker has moved to the island"
         if stated and subject and _prep_before(words, m.start) is None:
             to = _moved_to(words, m.end, b)
@@ -1784,7 +1903,7 @@ def _fallback_forms(sent: _Sentence, ms: list[Mention], a: int, b: int, lex: Lex
                 out.append(("presumed", item, found[0], found[1]))
     if not stated:
         return out
-    out += _fronted(sent, ms, a, b) + _identified(sent, ms, a, b) + _resumed(sent, ms, a, b)
+    out += _identified(sent, ms, a, b) + _resumed(sent, ms, a, b)
     # "(it stays on the floor)" right after the thing's name: the bracket's "it" is that thing
     if a >= 2 and words[a - 1] == "(" and words[a] in RESUMPTIVE:
         before = next((x for x in sent.mentions if x.end == a - 1 and x.kind == "role" and len(x.roles) == 1), None)
@@ -1803,19 +1922,6 @@ def _fallback_forms(sent: _Sentence, ms: list[Mention], a: int, b: int, lex: Lex
     return out
 
 
-def _fronted(sent: _Sentence, ms: list[Mention], a: int, b: int) -> list[tuple[str, str, str, Mention]]:
-    """"And whereas on the piano stands our photo frame": a place first, a verb, then the things."""
-    words = sent.words
-    j = a
-    while j < b and words[j] in SUBJECT_LEADS:
-        j += 1
-    found = _place_at(sent, ms, j, b, False)
-    if found is None:
-        return []
-    end = _verb_gap(words, ms, found[1].end, b)
-    if end is None or end - found[1].end > 2:
-        return []
-    return [("settled", r, found[0], found[1]) for x in _np_list(sent, ms, end, b) for r in _roles(x, sent)]
 
 
 def _identified(sent: _Sentence, ms: list[Mention], a: int, b: int) -> list[tuple[str, str, str, Mention]]:
@@ -1860,3 +1966,226 @@ def _resumed(sent: _Sentence, ms: list[Mention], a: int, b: int) -> list[tuple[s
         for x in _np_list(sent, ms, holder.end + 1, j):
             out += [("settled", r, FALLBACK_AT[words[j]], holder) for r in _roles(x, sent)]
     return out
+
+
+# ---------------------------------------------------------------------------------------------
+# Placements by structure (tenth session): the fallback's forms read wherever they occur
+# ---------------------------------------------------------------------------------------------
+
+#: adverbs that make a place said of a thing its usual one, a home ("Upon the stove there commonly
+#: stands the saucepan", "On the hook usually hangs the key")
+NORMAL_ADVERBS = NORM_ADVERBS | frozenset({"commonly", "ordinarily", "customarily"})
+#: participles of placing whose present passive, right before the place and said of a definite
+#: thing, states where it is ("The bag of my wife is put on the low table"); "is put back in",
+#: "is to be put", "is put on the shelf once it is dry" (a procedure) do not (`_passive_state`)
+PUT_PASSIVES = frozenset({"put", "placed", "set", "laid", "stood", "left"})
+#: words after a place that make a present passive a procedure: a time or condition clause, a habit
+_PROCEDURE = SUBORDINATORS | _WHERE_LEADS | frozenset({"after", "before", "every", "each", "then", "until"})
+#: words before a part that put it under a condition ("if you have had it out and it is still
+#: standing on the floor"): a pronoun or elided subject there is no statement's
+CONDITION_CUES = frozenset({"if", "unless", "when", "whenever", "once", "should", "until", "whether"})
+#: a state adjective said of a holder that names a thing on it ("The floor is stained": a stain on
+#: the floor), and the nouns it may name (the brief's roles decide which, if any, is meant)
+MARKS = {"stained": ("stain",), "marked": ("mark", "stain"), "smudged": ("smudge", "mark"),
+         "scuffed": ("scuff", "mark"), "splattered": ("splatter", "stain"), "spattered": ("spatter", "stain"),
+         "muddied": ("mud",), "scratched": ("scratch",)}
+
+
+def _structures(sent: _Sentence, before: _Before, ms: list[Mention], a: int, b: int,
+                lex: Lexicon) -> list[tuple[str, str, str, Mention]]:
+    """The stated part [a, b)'s placements by structure: a place put first ("On the shoe rack sits
+    the Small One's hat"), a pronoun or an elided subject ("it stands on the TV stand", "- is on
+    top of the bookshelf", "Has a tissue box on it"), a state adjective naming a thing on its
+    holder ("The floor is stained")."""
+    return _fronted(sent, before, ms, a, b) + _taken_up_subject(sent, before, ms, a, b, lex) \
+        + _marked(sent, ms, a, b, lex)
+
+
+#: words that cannot stand among the determiners and modifiers of a noun phrase: a preposition
+#: opens another phrase ("On the shelf sits a note about the hat": the note sits there)
+_NOT_MODIFIERS = frozenset(FALLBACK_AT) | SOURCE | UNSTATED | RELATIVE | MODIFIER_OPENERS | frozenset(
+    {"about", "for", "with", "without", "like", "at", "to", "under", "above", "below", "over", "beneath"})
+
+
+def _fronted(sent: _Sentence, before: _Before, ms: list[Mention], a: int,
+             b: int) -> list[tuple[str, str, str, Mention]]:
+    """Locative inversion: a place first, optional "there" and adverbs, one finite verb of being or
+    resting, then the things after their determiners and modifiers ("And whereas on the piano
+    stands our photo frame", "On the shoe rack sits the Small One's hat", "Upon the stove there
+    commonly stands the copper saucepan": a usual place, a home). "On top of me" is the thing that
+    last spoke of itself ("I am the sideboard")."""
+    words = sent.words
+    j = a
+    while j < b and words[j] in SUBJECT_LEADS:
+        j += 1
+    found = _place_at(sent, ms, j, b, False)
+    if found is None and j + 1 < b and words[j] in FALLBACK_AT and words[j + 1] == "me" \
+            and before.speaker is not None:
+        found = (FALLBACK_AT[words[j]], Mention(before.speaker.roles, j + 1, j + 2, "role"))
+    if found is None:
+        return []
+    k, kind = found[1].end, "settled"
+    while k < b and (words[k] in ADVERBS or words[k] in NORMAL_ADVERBS):
+        kind = "kept" if words[k] in NORMAL_ADVERBS else kind
+        k += 1
+    if k >= b or not _finite_word(words[k]) or words[k] in _GAP_STOPS or any(m.start <= k < m.end for m in ms):
+        return []
+    kind = "kept" if words[k] in KEEP_VERBS else kind
+    things = _np_list(sent, ms, k + 1, b)
+    if not things:
+        return []
+    gap = words[k + 1:things[0].start]
+    if len(gap) > 4 or any(not w.isalpha() or w in VERBS or w in _NOT_MODIFIERS for w in gap):
+        return []  # "On the shelf sits a note about the torch": the thing is not what follows
+    return [(kind, r, found[0], found[1]) for x in things for r in _roles(x, sent)]
+
+
+def _taken_up_subject(sent: _Sentence, before: _Before, ms: list[Mention], a: int, b: int,
+                      lex: Lexicon) -> list[tuple[str, str, str, Mention]]:
+    """A part whose subject is "it" or elided takes up the nearest fitting mention before it (in
+    its sentence, else, when its sentence names no thing before it, the last sentence): "It is my
+    television, it stands on the TV stand", "It's the red one by the slider, it stays on the floor
+    there" (the bucket of the sentence before), "The class tablet - the iPad - is on top of the
+    bookshelf"; an elided possessive its holder: "5. Side table: pine. Has a tissue box on it".
+    A clause spliced on by a comma ("..., it stays on ...") is read as its own part."""
+    words = sent.words
+    if set(words[:a]) & CONDITION_CUES:
+        return []  # "if there is one and it is on the counter": "it" under the condition
+    j = a
+    while j < b and words[j] in SUBJECT_LEADS:
+        j += 1
+    starts = [j] + [p for p in range(j + 1, b - 1) if words[p] == "it" and words[p - 1] == ","]
+    for k in starts:
+        if k >= b:
+            continue
+        found = _taken_up_at(sent, before, ms, k, b, lex, elided=k == j and words[k] != "it")
+        if found:
+            return found
+    return []
+
+
+def _taken_up_at(sent: _Sentence, before: _Before, ms: list[Mention], j: int, b: int, lex: Lexicon, *,
+                 elided: bool) -> list[tuple[str, str, str, Mention]]:
+    """`_taken_up_subject` for the clause from token j ("it ..." or, `elided`, its verb)."""
+    words = sent.words
+    start = j if elided else j + 1
+    if elided and (j == 0 and before.last is None or not _finite_word(words[j])):
+        return []
+    if elided and words[start] in HAVE_VERBS:
+        k = next((n for n in range(start + 1, b - 1) if words[n] in FALLBACK_AT), None)
+        if k is None or words[k + 1] not in RESUMPTIVE | {"them"}:
+            return []
+        roles = [r for x in _np_list(sent, ms, start + 1, k) for r in _roles(x, sent)]
+        holder = _nearest(sent, before, j, lex, holder=True, exclude=set(roles))
+        if holder is None:
+            return []
+        return [("settled", r, FALLBACK_AT[words[k]], holder) for r in roles]
+    end = _verb_gap(words, ms, start, b)
+    if end is None or any(w in HAVE_VERBS for w in words[start:end]):
+        return []
+    found = _place_at(sent, ms, end, b, bool(set(words[start:end]) & STATIVE))
+    if found is None:
+        return []
+    thing = _nearest(sent, before, j, lex, holder=False, exclude=set(found[1].roles))
+    if thing is None:
+        return []
+    return [(_gap_kind(words[start:end]), thing.roles[0], found[0], found[1])]
+
+
+def _nearest(sent: _Sentence, before: _Before, pos: int, lex: Lexicon, *, holder: bool,
+             exclude: set[str]) -> Mention | None:
+    """The nearest mention before token `pos` that fits: one role, not `exclude`, one thing (its
+    word singular, for "it"), or a holder when a holder is wanted; in the sentence, else, when the
+    sentence names no thing before `pos`, in the last sentence."""
+    own = [(m, sent) for m in sent.mentions if m.end <= pos and m.kind == "role"]
+    pool = own or ([(m, before.last) for m in before.last.mentions if m.kind == "role"]
+                   if before.last is not None else [])
+    for m, where in reversed(pool):
+        if len(m.roles) != 1 or m.roles[0] in exclude:
+            continue
+        last = where.toks[m.end - 1]
+        if m.roles[0] in lex.holders if holder else last.word == last.lemma:
+            return m
+    return None
+
+
+def _of_complement(words: list[str], ms: list[Mention], j: int, hi: int) -> int:
+    """Where a thing's noun phrase ends after an "of" complement naming no thing ("the photo frame
+    of Nana", "the bag of my wife"): up to three words; `j` when there is none."""
+    if j >= hi or words[j] != "of":
+        return j
+    k = j + 1
+    while k < hi and k - j <= 3 and words[k].isalpha() and words[k] not in VERBS and words[k] not in RELATIVE \
+            and not any(m.start <= k < m.end for m in ms):
+        k += 1
+    return k if k > j + 1 and k < hi and (words[k] in RELATIVE or words[k] in BE) else j
+
+
+def _passive_state(sent: _Sentence, i: int, hi: int) -> int | None:
+    """The place's index when words from i read "is/are <put/placed/left ...> on|in": a present
+    passive of placing stated of a definite thing ("The bag of my wife is put on the low table"),
+    unless its sentence has a time or condition clause or a habit ("is put on the shelf once it
+    is dry", "after being silenced", "every evening"): a procedure, no fact."""
+    words = sent.words
+    if i + 2 >= hi or words[i] not in ("is", "are") or words[i + 1] not in PUT_PASSIVES \
+            or words[i + 2] not in FALLBACK_AT:
+        return None
+    if set(words) & _PROCEDURE:
+        return None
+    return i + 2
+
+
+def _marked(sent: _Sentence, ms: list[Mention], a: int, b: int, lex: Lexicon) -> list[tuple[str, str, str, Mention]]:
+    """"The floor is stained", "the table is badly marked": a holder, a form of "be" and a state
+    adjective (`MARKS`) that names a thing on it, when the brief names that thing (its noun as the
+    lexicon reads it)."""
+    words = sent.words
+    out: list[tuple[str, str, str, Mention]] = []
+    for holder in ms:
+        if holder.kind not in ("role", "floor") or len(holder.roles) != 1 or holder.end >= b \
+                or words[holder.end] not in BE or not _subject_at(words, holder.start, a):
+            continue
+        k = holder.end + 1
+        while k < b and (words[k] in ADVERBS or words[k].endswith("ly")):
+            k += 1
+        if k >= b or words[k] not in MARKS or k + 1 < b and words[k + 1] in ("with", "by"):
+            continue  # "stained with ink" names what stains, "marked by" who
+        for noun in MARKS[words[k]]:
+            named = [m for m in lex.find_mentions([(noun, 0, 1)]) if m.kind == "role" and len(m.roles) == 1]
+            if named:
+                out.append(("settled", named[0].roles[0], "on", holder))
+                break
+    return out
+
+
+#: particles that may follow a verb of activity before its place ("still perking away on the counter")
+_ACTIVITY_PARTICLES = frozenset({"away", "along", "quietly", "loudly"})
+
+
+def _asked_activity(sent: _Sentence, clause: Span) -> list[tuple[str, str, str, Mention]]:
+    """A yes/no question about what a thing is doing where it is ("Is the Perk-O-Matic (that's your
+    trusty coffee maker!) still perking away on the counter?", "Is the fan still whirring on the
+    desk?") asks about the activity and takes the place for granted: `presumed`. Not a verb of
+    resting, keeping or placing ("Is the mug sitting on the desk?" asks where it is), nor a person
+    ("Are you working on the desk?"), nor a doubt or condition."""
+    words = sent.words
+    if words[0] not in ("is", "are", "was", "were") or set(words[:clause.end]) & (CONDITION_CUES | DOUBT):
+        return []
+    ms = [m for m in sent.mentions if clause.start <= m.start and m.end <= clause.end]
+    for i in range(clause.start, clause.end):
+        w = words[i]
+        if not w.endswith("ing") or not verb_form(w) or w in STATIVE | KEEP_VERBS | RESULT | PERCEIVE \
+                or any(m.start <= i < m.end for m in sent.mentions):
+            continue
+        k = i + 1
+        while k < clause.end and (words[k] in _ACTIVITY_PARTICLES or words[k] in ADVERBS):
+            k += 1
+        found = _place_at(sent, ms, k, clause.end, False)
+        if found is None or found[1].kind != "role":
+            return []
+        before = [m for m in sent.mentions if m.end <= i and m.kind == "role" and len(m.roles) == 1
+                  and m.roles[0] not in found[1].roles]
+        if not before or set(words[before[-1].end:i]) & (SUBJECT_PRONOUNS | {"you", "we", "i", "they", "he", "she"}):
+            return []
+        return [("presumed", before[-1].roles[0], found[0], found[1])]
+    return []
