@@ -83,6 +83,11 @@ _NOUN_LEADS = frozenset({"with", "and", "or", "plus"})
 #: prepositions: an item holding one is a clause, not a noun phrase ("are in the kitchen")
 _PREPOSITIONS = frozenset({"on", "onto", "in", "into", "inside", "from", "by", "near", "under", "of",
                            "to", "at", "beside", "behind", "with"})
+#: the linking words and particles of a name made as a phrase ("bag of trash", "chest of drawers",
+#: "drying rack for dishes", "washing-up liquid"): no word of what the kind is, so no clue to it in
+#: a sentence ("if either of them has ended up on the floor" says nothing of a bag or a washing-up
+#: liquid: `_Reader.bare_noun`)
+_NAME_LINKS = _PREPOSITIONS | {"for", "up", "down", "out", "off", "over"}
 #: words that make a noun phrase indefinite: a thing of its own, not a part of one named
 _INDEFINITE = frozenset({"a", "an", "another", "some", "any"})
 _COUNTS = {"two": 2, "three": 3, "four": 4, "five": 5, "both": 2, "2": 2, "3": 3, "4": 4, "5": 5}
@@ -384,15 +389,25 @@ class _Reader:
         """Whether "<packaging> of <X>" at word `i` holds something other than what the kind its
         packaging word names is named for: the catalog's bags are a trash bag and a garbage bag,
         named for their contents, and "a whole bag of crisps", "a bag of old clothes" are neither
-        (the kind's name is "<contents> <packaging>" and the word after "of" is not its contents).
-        Such a bag names no object; "a bag of rubbish" (the synonym "bag of trash") still does."""
+        (a kind's name is "<contents> <packaging>" or "<packaging> of <contents>", and the word
+        after "of" is none of its contents). Such a bag names no object; "a bag of rubbish" (the
+        synonym "bag of trash") still does, and a bag of an owner ("the bag of my wife", "the bag
+        of her sister") is the owner's bag, whatever kind its word names."""
+        words = self.text.words
+        if i + 2 >= len(words) or words[i + 2] in _POSSESSIVES:
+            return False  # "the bag of my wife": the owner's bag
+        # a kind named in this very form ("bag of trash"): the words after "of" are its contents
+        phrased = [words_of(t) for c in dict.fromkeys(self.heads.get(words[i], []))
+                   for t in (c, *_own(self.catalog.categories[c])) if words_of(t)[:2] == (words[i], "of")]
+        if phrased:
+            return words[i + 2] not in {w for name in phrased for w in name[2:]} | _RUBBISH
         kind = self.bare_noun(i, category)
         if kind is None:
             return False
         name = words_of(kind)
-        if len(name) < 2 or name[-1] != self.text.words[i] or i + 2 >= len(self.text.words):
+        if len(name) < 2 or name[-1] != words[i]:
             return False
-        return self.text.words[i + 2] not in {*name[:-1], *_RUBBISH}
+        return words[i + 2] not in {*name[:-1], *_RUBBISH}
 
     def contents_named(self, i: int) -> bool:
         """Whether the words from `i`, after "<packaging> of", name a kind within three words
@@ -568,7 +583,10 @@ class _Reader:
         def score(category: str | None) -> tuple[bool, bool, bool, int, bool, bool, int, int, bool, bool]:
             assert category is not None
             cat = self.catalog.categories[category]
-            others = {w for text in (category, *_own(cat)) for w in words_of(text)} - {word}
+            # the other words of its names that say what it is: not a preposition of a name made
+            # as a phrase ("bag of trash", "drying rack for dishes"), which says nothing of the kind
+            # ("the mouth of the bag" is no bag of trash)
+            others = {w for text in (category, *_own(cat)) for w in words_of(text)} - {word} - _NAME_LINKS
             rooms = set(cat.rooms)
             # its own name: written as the text writes it ("glasses"), or the word's lemma ("chairs")
             # when the name is a lemma (not "glasses" for "glass", a drinking glass)

@@ -1,0 +1,37 @@
+"""Rules from dev 15's and dev 16's losses (the tenth session): each on the dev sentence and on
+sentences written for the test in other rooms and registers; each fails without its rule, and the
+near misses (which guard its edges) pass with and without it."""
+
+from __future__ import annotations
+
+from reading import named
+
+
+def test_a_names_linking_word_is_no_clue_to_its_kind() -> None:
+    # dev 15 washitsu_machine_translation: "the mouth of the bag" named a trash bag ("bag of trash")
+    text = ("The bag of my wife is put on the low table. When the mouth of the bag is opening, please "
+            "close it firmly.")
+    assert "handbag" in named(text, ("washitsu",)) and "trash_bag" not in named(text, ("washitsu",))
+    text = "Check the bottom of the bag: if the bag is wet, hang it on the hook."
+    assert "handbag" in named(text, ("hallway",)) and "trash_bag" not in named(text, ("hallway",))
+
+
+def test_a_name_made_as_a_phrase_still_names_its_kind() -> None:
+    assert "trash_bag" in named("Take the bag of trash out to the bin.", ("kitchen",))
+    assert "dish_rack" in named("Put the plates on the drying rack for dishes.", ("kitchen",))
+    # a particle said in the sentence is no clue either (dev 5 en_suite_text_from_partner: "washing-up
+    # liquid" is no soap for "ended up")
+    text = "toothpaste and soap - if either of them has ended up on the floor again, pop it back on the vanity"
+    assert "soap_bar" in named(text, ("en_suite",)) and "dish_soap" not in named(text, ("en_suite",))
+
+
+def test_a_bag_of_an_owner_is_the_owners_bag_and_a_bag_of_contents_names_nothing() -> None:
+    assert "handbag" in named("The bag of my sister is on the chair. If it is open, close it.", ("hallway",))
+    # dev 12 front_room_moving_out_letter: a bag of crisps is neither a trash bag nor a handbag
+    text = "And the rug. I dropped a whole bag of crisps on it. If it still looks dirty, hoover it."
+    assert not {"handbag", "trash_bag", "garbage_bag"} & set(named(text, ("front_room",)))
+    # dev 8 household_shelter_singlish_chat: no kind is named "carton of ...": the carton is the box
+    assert "cardboard_box" in named("my carton of NS things also, if the flaps open help me close", ("shelter",))
+    assert "cardboard_box" in named("The carton of old photos is on the shelf.", ("attic",))
+    assert "trash_bag" in named("A bag of rubbish is by the door; take it out.", ("kitchen",)) or \
+        "garbage_bag" in named("A bag of rubbish is by the door; take it out.", ("kitchen",))
