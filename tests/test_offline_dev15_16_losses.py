@@ -4,7 +4,7 @@ near misses (which guard its edges) pass with and without it."""
 
 from __future__ import annotations
 
-from reading import named
+from reading import asks, factors, named
 
 
 def test_a_names_linking_word_is_no_clue_to_its_kind() -> None:
@@ -35,3 +35,16 @@ def test_a_bag_of_an_owner_is_the_owners_bag_and_a_bag_of_contents_names_nothing
     assert "cardboard_box" in named("The carton of old photos is on the shelf.", ("attic",))
     assert "trash_bag" in named("A bag of rubbish is by the door; take it out.", ("kitchen",)) or \
         "garbage_bag" in named("A bag of rubbish is by the door; take it out.", ("kitchen",))
+
+
+def test_in_operation_is_running_and_opening_is_open_as_a_predicate() -> None:
+    assert asks("If the dishwasher is still in operation, leave it.", ("kitchen",), "state(dishwasher, toggled_on)")
+    text = ("The bag of my wife is put on the low table. When the mouth of the bag is opening, please close it "
+            "firmly. When it is closing, please do not touch.")
+    assert asks(text, ("washitsu",), "state(handbag, open)")
+    assert asks("The laptop is on the desk. If the lid is closing, open it.", ("study",), "state(laptop, open)")
+
+
+def test_in_operation_and_opening_elsewhere_ask_nothing() -> None:
+    assert not factors("The dishwasher is in operation in the evenings.", ("kitchen",))
+    assert not factors("The door is opening slowly, so mind the cat.", ("hallway",))

@@ -403,10 +403,19 @@ _POLITE = re.compile(r"\bbe (?:so )?(?:good|kind)(?: enough to| as to)\s+", re.I
 #: state words that are states only as a predicate, after a form of "be" at a clause's end: "the
 #: dishwasher's already going", "if it's still going" (Merriam-Webster, "going" adj.: "running,
 #: working"); elsewhere they are verbs ("it's going in the bin", "going to bed")
-PREDICATE_STATES = {"going": "running"}
+#: "in operation" (Merriam-Webster: "functioning, in use"; "the dryer is still in operation"), its
+#: article kept by a translated text ("if the air conditioner is still in the operation"); and
+#: the progressive of opening and closing said as the state it leaves, as learners and translated
+#: texts say it ("When the mouth of the bag is opening, please close it", "if the window is
+#: opening, shut it"): only as a predicate at a clause's end, where a thing's state is asked
+PREDICATE_STATES = {"going": "running", "in operation": "running", "opening": "open", "closing": "closed"}
+#: a predicate state's "in" may take an article (`PREDICATE_STATES`)
+_ARTICLE_OPTIONAL = re.compile(r"^in ")
+_IN_ARTICLE = r"in\\s+(?:the\\s+)?"
+_ARTICLE_IN = re.compile(r"in\s+(?:the\s+)?")
 _PREDICATE_STATE = re.compile(
     rf"((?:\b(?:is|are|was|were|be)|'s|\u2019s)(?:\s+(?:still|already|just|now))*\s+|\b(?:still|already)\s+)"
-    rf"({'|'.join(PREDICATE_STATES)})"
+    rf"({'|'.join(_ARTICLE_OPTIONAL.sub(_IN_ARTICLE, k) for k in PREDICATE_STATES)})"
     r"(?=\s*(?:[,.;:!?)]|$|\s(?:then|and|or|but|so|already|still|now|again)\b))", re.I | re.M)
 
 
@@ -663,7 +672,7 @@ def unquote(text: str) -> str:
     plain = _FRONTED_ALREADY.sub(_postposed, plain)
     plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _ITEM_END.sub(".\n", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", plain)))))
     plain = _unabbreviated(plain)
-    plain = _PREDICATE_STATE.sub(lambda m: m.group(1) + PREDICATE_STATES[m.group(2).lower()], plain)
+    plain = _PREDICATE_STATE.sub(lambda m: m.group(1) + PREDICATE_STATES[_ARTICLE_IN.sub("in ", m.group(2).lower())], plain)
     plain = _EMPHATIC_DO.sub("", plain)
     plain = _ELIDED_END_STATE.sub(r"\1 it is ", _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", plain)))
     plain = _ACTED_STATE.sub(_acted_state, plain)
