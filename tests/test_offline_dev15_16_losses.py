@@ -37,6 +37,21 @@ def test_a_bag_of_an_owner_is_the_owners_bag_and_a_bag_of_contents_names_nothing
         "garbage_bag" in named("A bag of rubbish is by the door; take it out.", ("kitchen",))
 
 
+def test_a_noun_of_occasion_opens_a_condition() -> None:
+    # dev 15 washitsu_machine_translation, a machine translation
+    text = "(1) Air conditioner. In the case the air conditioner is still in the operation, please stop it."
+    assert asks(text, ("washitsu",), "state(air_conditioner, toggled_on)")
+    text = "In the event that the dryer is still running, switch it off."
+    assert asks(text, ("laundry_room",), "state(dryer, toggled_on)")
+    text = "The kettle is on the stove. In the event the kettle is dirty, wash it."
+    assert asks(text, ("kitchen",), "state(kettle, dirty)")
+
+
+def test_a_case_or_event_that_is_no_clause_opens_no_condition() -> None:
+    assert not factors("In the case of fire, leave the kettle on the stove.", ("kitchen",))
+    assert not factors("Put the glasses in the case the optician gave you.", ("bedroom",))
+
+
 def test_in_operation_is_running_and_opening_is_open_as_a_predicate() -> None:
     assert asks("If the dishwasher is still in operation, leave it.", ("kitchen",), "state(dishwasher, toggled_on)")
     text = ("The bag of my wife is put on the low table. When the mouth of the bag is opening, please close it "

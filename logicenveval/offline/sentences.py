@@ -419,6 +419,20 @@ _PREDICATE_STATE = re.compile(
     r"(?=\s*(?:[,.;:!?)]|$|\s(?:then|and|or|but|so|already|still|now|again)\b))", re.I | re.M)
 
 
+#: "In the case the heater is on", "in the event that the tap is running": a condition opened by
+#: a noun of occasion ("in the case (that)", "in the event (that)"; Merriam-Webster, "in the event
+#: that": "if it happens that"), read as "if"; only where a clause starts (its sentence's or item's
+#: start, a comma or a conjunction before it) and not before "of" ("in the case of fire" is no
+#: clause; "put it in the case the optician gave you" puts it in a case)
+_OCCASION_IF = re.compile(r"(?:(?<=^)|(?<=[.!?;:,)\n])|(?<=[.!?;:,)]\s)|(?<=\band\s)|(?<=\bbut\s))[ \t]*\b"
+                          r"in\s+the\s+(?:case|event)(?:\s+that)?\b(?!\s+of\b)", re.I | re.M)
+
+
+def _occasion_if(m: re.Match[str]) -> str:
+    lead = m.group(0)[:len(m.group(0)) - len(m.group(0).lstrip(" \t"))]
+    return lead + ("If" if m.group(0).lstrip(" \t")[0].isupper() else "if")
+
+
 #: a telegram's words for its punctuation (Oxford: stop, "(in telegrams) a full stop"; query,
 #: "a question mark"), read only in a text that ends two sentences or more with "STOP" in capitals
 TELEGRAM_MARKS = {"STOP": ".", "QUERY": "?"}
@@ -664,6 +678,7 @@ def unquote(text: str) -> str:
     subject (`_SUBJECTLESS`); a chat message's `*`-correction made in the message it corrects
     (`starred`), without a chat line's time stamp (`_TIME_STAMP`) and without a reference work's
     citation marks (`_CITATION`)."""
+    text = _OCCASION_IF.sub(_occasion_if, text)
     text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_modern(_NATIVE_IF.sub(_native_if, text))))))
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), _SPELLED[m.group(0).lower()]), text))
     text = starred(_TIME_STAMP.sub(r"\1", _CITATION.sub("", text)))
