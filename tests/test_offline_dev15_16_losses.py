@@ -63,3 +63,15 @@ def test_in_operation_is_running_and_opening_is_open_as_a_predicate() -> None:
 def test_in_operation_and_opening_elsewhere_ask_nothing() -> None:
     assert not factors("The dishwasher is in operation in the evenings.", ("kitchen",))
     assert not factors("The door is opening slowly, so mind the cat.", ("hallway",))
+
+
+def test_a_thing_named_in_full_that_turns_up_may_be_absent() -> None:
+    # dev 16 sleepout_dream_journal: "if your wallet turns up" asked nothing (only "if it turns up" did)
+    text = '"And if your wallet turns up, you put it up on the shelf where you will see it."'
+    assert asks(text, ("sleepout",), "exists(wallet)")
+    assert asks("If the spare key shows up, hang it on the hook.", ("hallway",), "exists(spare_key)")
+    assert asks("If the red mug is found, put it in the sink.", ("kitchen",), "exists(red_mug)")
+
+
+def test_a_thing_named_in_full_at_a_place_is_still_asked_its_place() -> None:
+    assert asks("If the mug is on the desk, put it in the sink.", ("kitchen",), "on(mug, desk)")

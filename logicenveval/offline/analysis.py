@@ -259,8 +259,10 @@ _FRONTED_FINDING = re.compile(r"(?:you|we|i)\s+(?:(?:can|will|would|should|also|
 _THERE = re.compile(r"^\W*(?:it|they) (?:is|are) (?:still )?(?P<not>not )?there\W*$")
 #: a condition that only says its thing appears, or is anywhere at all ("if it turns up", "if they
 #: show up", "if it's anywhere", "if it is here at all"): whether the thing is there at all
-#: ("anywhere else" is a place, `ELSEWHERE`)
-_APPEARS = re.compile(r"^\W*(?:it|they) (?:(?:ever|still|does|do|did) )?"
+#: ("anywhere else" is a place, `ELSEWHERE`); its subject a pronoun or the thing's noun phrase
+#: ("if your wallet turns up", "if the spare key shows up": the condition names it)
+_APPEARS = re.compile(r"^\W*(?:it|they|(?:the|a|an|your|my|our|his|her|their|its)(?: [a-z'-]+){1,3}) "
+                      r"(?:(?:ever|still|does|do|did) )?"
                       r"(?:turns? up|shows? up|turned up|showed up|(?:is|are) found|(?:re)?appears?|(?:re)?appeared"
                       r"|(?:is|are) (?:anywhere|around|(?:here|there|around) at all))\W*$")
 #: a trailing ellipsis ("... if it's dirty straight into the washing machine...")
