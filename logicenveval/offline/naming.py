@@ -153,6 +153,10 @@ _NOT_CONTEXT = frozenset({"floor", "wall", "ceiling", "room"})
 #: "that is a ...", "it was a ...": a predicate noun of a thing already named (`predicate_noun`)
 _POINTERS = frozenset({"that", "it", "this", "which"})
 _COPULAS = frozenset({"is", "was"})
+#: verbs that, right after a noun phrase, make it the subject of a clause of its own
+#: (`_Reader.renamed_fuller`)
+_CLAUSE_VERBS = frozenset({"is", "was", "are", "were", "has", "had", "goes", "lives", "sits", "stands", "lies",
+                           "stays", "belongs", "needs", "should", "must", "will", "can", "may", "might"})
 #: verbs after a subject that say where it is or what it is ("The treasure map be on the table",
 #: "The rota is on the fridge door", "The card lives in the drawer": `unnamed_subject`)
 _SUBJECT_VERBS = frozenset({"is", "was", "be", "are", "lives", "sits", "stands", "lies", "stays"})
@@ -749,6 +753,38 @@ class _Reader:
         head, fuller = words_of(before), words_of(category)
         return before if len(fuller) > len(head) and fuller[-len(head):] == head else None
 
+    def renamed_fuller(self, i: int, n: int, category: str) -> str | None:
+        """The kind of the thing named last, when the noun phrase at words [i, i + n) names it
+        again by a fuller name that ends in the word it was called by: as the predicate of an
+        identifying "is" right after that word ("the bunny lamp is the little table lamp shaped
+        like a rabbit", "the box is the blue toy box") or set off by a comma after the clause
+        that named it ("Somebody's reading book has ended up on the floor again, the novel with
+        the dragon on the front": the novel's name "fiction book"). The thing was only ever called
+        by that one word, a head several kinds share, and no other kind was named since: one
+        object, of the fuller kind. A phrase after a comma that goes on with a verb of its own is
+        a clause of its own ("the book is on the desk, the novel is on the shelf")."""
+        words, gaps = self.text.words, self.text.gaps
+        the = i - 1
+        while the >= 0 and i - the <= 3 and words[the] != "the":
+            the -= 1
+        if the < 1 or words[the] != "the" or not self.recent or self.recent[-1] == category:
+            return None
+        before = self.recent[-1]
+        kind, said = self.kinds.get(before), self.used.get(before, set())
+        if kind is None or kind.instances or kind.count > 1 or before in self.named or len(said) != 1:
+            return None
+        (head,) = said
+        if any(self.match(k)[1] is not None for k in range(the + 1, i)):
+            return None
+        copular = the >= 2 and words[the - 1] in _COPULAS and words[the - 2] == head
+        end = i + n
+        goes_on = end < len(words) and not _BREAK.search(gaps[end]) and words[end] in _CLAUSE_VERBS
+        apposed = "," in gaps[the] and not goes_on and (self.first_at.get(before, -1) >= self.text.sentence_start(i))
+        if not (copular or apposed):
+            return None
+        names = (category, *_own(self.catalog.categories[category]))
+        return before if any(len(words_of(t)) > 1 and words_of(t)[-1] == head for t in names) else None
+
     def names_the_colored_one(self, i: int, n: int, kind: _Kind, prev: str) -> bool:
         """Whether a plain singular mention of a kind is the one thing of it the text has already
         named by its colour ("The blue cup is on the table. If the cup is dirty ...", "My blue cup
@@ -1245,12 +1281,15 @@ class _Reader:
     def predicate_noun(self, i: int) -> bool:
         """Whether the noun phrase at word `i` is the predicate of "that is a ...", "it is a ...",
         "this was a ..." said of a thing the sentence already named ("The essay collection is on
-        the desk, that's a library book"): it says what that thing is, it names no other object."""
+        the desk, that's a library book"), or with a possessive for its article ("the bunny lamp
+        is the little table lamp, it's her night light"): it says what that thing is, it names no
+        other object."""
         words = self.text.words
+        leads = {"a", "an", *_POSSESSIVES}
         k = i - 1
-        while k >= 0 and i - k <= 3 and words[k] not in ("a", "an"):
+        while k >= 0 and i - k <= 3 and words[k] not in leads:
             k -= 1
-        if k < 2 or words[k] not in ("a", "an") or words[k - 1] not in _COPULAS or words[k - 2] not in _POINTERS:
+        if k < 2 or words[k] not in leads or words[k - 1] not in _COPULAS or words[k - 2] not in _POINTERS:
             return False
         start = self.text.sentence_start(i)
         return any(self.kind_at(j)[1] is not None for j in range(start, k - 2))
@@ -1448,7 +1487,7 @@ class _Reader:
                     self.colors[category] = words[told]
                 i += n
                 continue
-            if shared is None and (glossed := self.glossed(i, category)) is not None:
+            if shared is None and (glossed := self.glossed(i, category) or self.renamed_fuller(i, n, category)) is not None:
                 # "Cupboard on wall (wall cabinet, over sink)": one thing, named by the fuller name
                 del self.kinds[glossed]
                 self.recent.remove(glossed)
