@@ -101,3 +101,16 @@ def test_a_fuller_name_that_is_a_clause_or_comes_after_another_thing_is_another_
 def test_a_possessive_predicate_says_what_the_thing_is() -> None:
     assert set(named("The grey mug is on the desk, it is my favourite cup.", ("kitchen",))) == {"gray_mug", "desk"}
     assert "mug" in named("It is my mug. Put it in the sink.", ("kitchen",))
+
+
+def test_a_verb_first_question_before_then_is_a_condition() -> None:
+    # dev 16 lamp_or_pillow_fetch_d16 (English written as Dutch): "is the mug ... dirty, then bring him"
+    text = ("The coffee table has a mug on it. Also: is the mug on the coffee table dirty, then bring him to the "
+            "sink in the kitchen.")
+    assert asks(text, ("living_room", "kitchen"), "state(mug, dirty)")
+    assert asks("Is the kettle dirty, then wash it.", ("kitchen",), "state(kettle, dirty)")
+    assert asks("Are the lights still on, then switch them off.", ("hallway",), "state(light_switch, toggled_on)")
+
+
+def test_a_be_clause_that_asks_nothing_before_then_stays_a_statement() -> None:
+    assert not factors("The mug is clean, then put it on the shelf.", ("kitchen",))

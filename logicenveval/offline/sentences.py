@@ -452,6 +452,17 @@ def _telegram(text: str) -> str:
 _NO_THEN = re.compile(r"(^|[.!?;:]\s+|\n\s*)(no\s+[a-z]+(?:\s+[a-z]+){0,5}?)\s+then\s+(?=[a-z])", re.I)
 
 
+#: "Is the mug on the coffee table dirty, then bring it to the sink", "Are the lights still on,
+#: then switch them off": a yes/no question whose answer opens the instruction after "then" (the
+#: conditional of a verb-first clause, as in Dutch and German, "Is er geen pan, dan ..."; older
+#: English "Is it raining, then take a coat") is the question "Is the mug ... dirty? Then ...", as
+#: `_NO_THEN` reads "No roll by the toilet then ...". Only a clause that opens its sentence (or
+#: follows a colon or semicolon) with a finite "be" and a subject, a comma before "then", and a
+#: word after it: "Is the mug dirty, then?" asks, and "is the mug dirty" in a clause stays
+_BE_THEN = re.compile(r"(^|[.!?;:]\s+|\n\s*)((?:is|are|was|were)\s+(?:the|a|an|there|your|my|our|his|her|their|its|it|they)"
+                      r"\b[^.!?;:,\n]{1,80}?)\s*,\s*then\s+(?=[a-z])", re.I)
+
+
 def _no_then(m: re.Match[str]) -> str:
     words = m.group(2).lower().split()
     if set(words[1:]) & (ACTIONS | {"is", "are", "was", "were", "need", "needs", "one", "way", "matter"}):
@@ -679,6 +690,7 @@ def unquote(text: str) -> str:
     (`starred`), without a chat line's time stamp (`_TIME_STAMP`) and without a reference work's
     citation marks (`_CITATION`)."""
     text = _OCCASION_IF.sub(_occasion_if, text)
+    text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
     text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_modern(_NATIVE_IF.sub(_native_if, text))))))
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), _SPELLED[m.group(0).lower()]), text))
     text = starred(_TIME_STAMP.sub(r"\1", _CITATION.sub("", text)))
