@@ -114,3 +114,21 @@ def test_a_verb_first_question_before_then_is_a_condition() -> None:
 
 def test_a_be_clause_that_asks_nothing_before_then_stays_a_statement() -> None:
     assert not factors("The mug is clean, then put it on the shelf.", ("kitchen",))
+
+
+def test_an_owned_spare_right_after_an_items_heading_is_the_headings_thing() -> None:
+    # dev 15 boiler_room_job_ticket: "- Torch. Left my spare one behind" named a torch and a spare
+    text = ("NOTES FOR CUSTOMER:\n- Torch. Left my spare one behind, it's on the utility shelf next to the "
+            "boiler. Can't remember if I turned it off - if it's still lit pls switch it off.")
+    assert set(named(text, ("boiler_room",))) == {"flashlight", "utility_shelf"}
+    assert asks(text, ("boiler_room",), "state(flashlight, toggled_on)")
+    text = "Phone charger. Left my spare one in the drawer."
+    assert [k for k, _ in named(text, ("study",)).values()].count("phone_charger") == 1
+
+
+def test_a_spare_after_the_thing_in_use_or_an_indefinite_spare_is_a_second_thing() -> None:
+    assert {"light_bulb", "spare_bulb"} <= set(named("Bulb. If it is blown, fetch the spare from the drawer.",
+                                                     ("hallway",)))
+    assert {"flashlight", "spare_flashlight"} <= set(named("Torch. Take a spare from the drawer.", ("hallway",)))
+    assert {"flashlight", "spare_flashlight"} <= set(named("The torch is on the shelf. My spare one is in the "
+                                                           "drawer.", ("hallway",)))

@@ -153,6 +153,8 @@ _NOT_CONTEXT = frozenset({"floor", "wall", "ceiling", "room"})
 #: "that is a ...", "it was a ...": a predicate noun of a thing already named (`predicate_noun`)
 _POINTERS = frozenset({"that", "it", "this", "which"})
 _COPULAS = frozenset({"is", "was"})
+#: the pronouns that take up a thing named before (`_Reader.heading_spare`)
+_THING_PRONOUNS = frozenset({"it", "its", "they", "them", "their"})
 #: verbs that, right after a noun phrase, make it the subject of a clause of its own
 #: (`_Reader.renamed_fuller`)
 _CLAUSE_VERBS = frozenset({"is", "was", "are", "were", "has", "had", "goes", "lives", "sits", "stands", "lies",
@@ -1325,6 +1327,27 @@ class _Reader:
             return False
         return i + 1 == len(words) or words[i + 1] == "one" or self.match(i + 1)[1] is None
 
+    def heading_spare(self, i: int) -> bool:
+        """Whether word `i` ("spare"), definite or owned ("my spare one", "the spare"), is the thing
+        the heading right before its sentence names: an item's heading ("- Torch.", "Phone
+        charger.") is a sentence of that name alone, its thing named nowhere before, and the body's
+        first word for it is the spare, no pronoun for the heading's thing before it ("Torch. Left
+        my spare one behind, it's on the shelf": one torch, the spare). "Bulb. If it's blown, fetch
+        the spare" (the bulb in use, then the spare) and "a spare" (indefinite) still name a
+        spare of their own."""
+        words = self.text.words
+        start = self.text.sentence_start(i)
+        if start < 1:
+            return False
+        head = self.text.sentence_start(start - 1)
+        at = head + (words[head] in _ARTICLES)
+        n, category = self.match(at)
+        kind = self.kinds.get(category) if category is not None else None
+        if kind is None or kind.instances or kind.count > 1 or self.first_at.get(category) != at \
+                or at + n != start or not self.catalog.categories[category].pickable:
+            return False
+        return not any(w in _THING_PRONOUNS for w in words[start:i])
+
     def kind_value(self, i: int, n: int, prev: str) -> bool:
         """Whether the bare plural at word `i` (`n` words: "dolls", "toy cars"), or an indefinite
         singular set against "any other <kind>", is a class of a kind named before it, one of the values of its `kind` attribute (`KIND_ATTRIBUTES`; a toy
@@ -1429,6 +1452,9 @@ class _Reader:
                 continue
             if words[i] in SPARE_WORDS and prev in _DETERMINERS and self.says_which(i):
                 i += 1  # "a hard hat on the floor (it's the spare, not his)": which one it is, no other
+                continue
+            if words[i] in SPARE_WORDS and (prev in _POSSESSIVES or prev == "the") and self.heading_spare(i):
+                i += 1  # "- Torch. Left my spare one behind, it's on the shelf": the heading's torch
                 continue
             if words[i] in SPARE_WORDS and prev in _DETERMINERS and (
                     i + 1 == len(words) or words[i + 1] not in self.heads and self.match(i + 1)[1] is None):
