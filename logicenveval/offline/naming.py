@@ -1343,7 +1343,7 @@ class _Reader:
         at = head + (words[head] in _ARTICLES)
         n, category = self.match(at)
         kind = self.kinds.get(category) if category is not None else None
-        if kind is None or kind.instances or kind.count > 1 or self.first_at.get(category) != at \
+        if category is None or kind is None or kind.instances or kind.count > 1 or self.first_at.get(category) != at \
                 or at + n != start or not self.catalog.categories[category].pickable:
             return False
         return not any(w in _THING_PRONOUNS for w in words[start:i])
