@@ -132,3 +132,17 @@ def test_a_spare_after_the_thing_in_use_or_an_indefinite_spare_is_a_second_thing
     assert {"flashlight", "spare_flashlight"} <= set(named("Torch. Take a spare from the drawer.", ("hallway",)))
     assert {"flashlight", "spare_flashlight"} <= set(named("The torch is on the shelf. My spare one is in the "
                                                            "drawer.", ("hallway",)))
+
+
+def test_anywhere_other_than_is_elsewhere_and_keeps_the_alternative_of_absence() -> None:
+    # dev 16 kitchen_breakfast_prep_d16: "anywhere other than the counter, or we have no bread at all"
+    text = ("If the bread is on the counter, put it on the plate. If the bread is anywhere other than the "
+            "counter, or we have no bread at all, skip it.")
+    assert asks(text, ("kitchen",), "exists(bread)") and asks(text, ("kitchen",), "on(bread, kitchen_counter)")
+    text = ("The remote lives on the TV stand. If the remote is somewhere other than the TV stand, or we have no "
+            "remote at all, skip it.")
+    assert asks(text, ("living_room",), "exists(remote_control)")
+
+
+def test_any_other_thing_is_still_a_class() -> None:
+    assert not factors("Put any other book on the shelf.", ("study",))

@@ -393,6 +393,11 @@ VARIANTS = {"whilst": "while", "amongst": "among", "amidst": "amid", "unto": "to
 SPELLINGS = {"grey": "gray"}
 _SPELLED = {**VARIANTS, **SPELLINGS}
 _VARIANT = re.compile(rf"\b(?:{'|'.join(_SPELLED)})\b", re.I)
+#: "anywhere other than the counter", "somewhere other than in the drawer": the common "else than"
+#: the elsewhere cues read ("anywhere else", `analysis.ELSEWHERE`), so that "other" is not read as
+#: "any other <kind>", a class ("If the bread is anywhere other than the counter, or we have no
+#: bread at all" lost its "no bread")
+_OTHER_THAN = re.compile(r"\b(anywhere|somewhere|everywhere|nowhere)\s+other\s+than\b", re.I)
 
 
 #: a formula of politeness before an instruction's verb ("be good enough to examine the towel",
@@ -692,6 +697,7 @@ def unquote(text: str) -> str:
     text = _OCCASION_IF.sub(_occasion_if, text)
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
     text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_modern(_NATIVE_IF.sub(_native_if, text))))))
+    text = _OTHER_THAN.sub(r"\1 else than", text)
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), _SPELLED[m.group(0).lower()]), text))
     text = starred(_TIME_STAMP.sub(r"\1", _CITATION.sub("", text)))
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
