@@ -4,7 +4,9 @@ near misses (which guard its edges) pass with and without it."""
 
 from __future__ import annotations
 
-from reading import asks, factors, named
+from reading import CATALOG, asks, brief, factors, named
+
+from logicenveval.offline.analysis import analyse
 
 
 def test_a_names_linking_word_is_no_clue_to_its_kind() -> None:
@@ -146,3 +148,26 @@ def test_anywhere_other_than_is_elsewhere_and_keeps_the_alternative_of_absence()
 
 def test_any_other_thing_is_still_a_class() -> None:
     assert not factors("Put any other book on the shelf.", ("study",))
+
+
+def _groups(text: str, rooms: tuple[str, ...]) -> list[set[str]]:
+    return [set(g) for g in analyse(brief(text, rooms), CATALOG).groups]
+
+
+def test_a_condition_on_where_a_thing_was_just_sent_that_moves_the_thing_is_in_its_subtask() -> None:
+    # dev 15 multi_room_laundry_collect_d15: the machine's factor was a subtask apart from the shirt's,
+    # so the plan never set a dirty shirt against a running machine and a full hamper
+    text = ("Item one, the shirt. If the shirt is clean, it is to be folded away in the bedroom wardrobe. If it is "
+            "dirty, it goes straight into the washing machine. Be advised: when the machine is already running, "
+            "the shirt goes into the hamper instead - and should the hamper be full, it goes into the laundry "
+            "basket.")
+    assert {"shirt_dirty", "washing_machine_toggled_on", "hamper_filled"} in _groups(text, ("bedroom", "laundry_room"))
+    text = "If the mug is dirty, put it in the dishwasher. If the dishwasher is running, put the mug in the sink instead."
+    assert {"mug_dirty", "dishwasher_toggled_on"} in _groups(text, ("kitchen",))
+
+
+def test_a_condition_whose_instruction_leaves_the_thing_alone_stays_a_subtask_of_its_own() -> None:
+    text = "If the mug is dirty, put it in the dishwasher. If the dishwasher is full, run it."
+    assert {"mug_dirty"} in _groups(text, ("kitchen",))
+    text = "If the mug is dirty, put it in the dishwasher. If the lamp is on, switch it off."
+    assert {"mug_dirty"} in _groups(text, ("kitchen",))

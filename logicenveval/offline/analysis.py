@@ -2655,6 +2655,16 @@ def _answers(factors: list[Factor]) -> list[tuple[str, str]]:
     question about the thing, so its factor is asked in the thing's subtask."""
     out: list[tuple[str, str]] = []
     for b in factors:
+        # the thing the sentence just before sends to b's subject, and b's instruction then acts
+        # on that thing ("If it is dirty, it goes straight into the washing machine. Be advised:
+        # when the machine is already running, the shirt goes into the hamper instead"): where the
+        # thing goes depends on both, one subtask, as when one sentence says both
+        sent = [a.subject for a in factors if b.sentence >= 1 and a.subject != b.subject
+                and (a.sentence == b.sentence - 1 or any(at == b.sentence - 1 for at, _ in a.places))
+                and b.subject in a.roles and a.subject in b.roles]
+        if sent:
+            out.append((sent[-1], b.subject))
+            continue
         if any(a.sentence == b.sentence and a.subject != b.subject for a in factors):
             continue
         asked = [a.subject for a in factors if a.sentence == b.sentence - 1 >= 0 and a.subject != b.subject
