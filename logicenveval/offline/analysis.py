@@ -259,8 +259,10 @@ _FRONTED_FINDING = re.compile(r"(?:you|we|i)\s+(?:(?:can|will|would|should|also|
 _THERE = re.compile(r"^\W*(?:it|they) (?:is|are) (?:still )?(?P<not>not )?there\W*$")
 #: a condition that only says its thing appears, or is anywhere at all ("if it turns up", "if they
 #: show up", "if it's anywhere", "if it is here at all"): whether the thing is there at all
-#: ("anywhere else" is a place, `ELSEWHERE`)
-_APPEARS = re.compile(r"^\W*(?:it|they) (?:(?:ever|still|does|do|did) )?"
+#: ("anywhere else" is a place, `ELSEWHERE`); its subject a pronoun or the thing's noun phrase
+#: ("if your wallet turns up", "if the spare key shows up": the condition names it)
+_APPEARS = re.compile(r"^\W*(?:it|they|(?:the|a|an|your|my|our|his|her|their|its)(?: [a-z'-]+){1,3}) "
+                      r"(?:(?:ever|still|does|do|did) )?"
                       r"(?:turns? up|shows? up|turned up|showed up|(?:is|are) found|(?:re)?appears?|(?:re)?appeared"
                       r"|(?:is|are) (?:anywhere|around|(?:here|there|around) at all))\W*$")
 #: a trailing ellipsis ("... if it's dirty straight into the washing machine...")
@@ -2653,6 +2655,16 @@ def _answers(factors: list[Factor]) -> list[tuple[str, str]]:
     question about the thing, so its factor is asked in the thing's subtask."""
     out: list[tuple[str, str]] = []
     for b in factors:
+        # the thing the sentence just before sends to b's subject, and b's instruction then acts
+        # on that thing ("If it is dirty, it goes straight into the washing machine. Be advised:
+        # when the machine is already running, the shirt goes into the hamper instead"): where the
+        # thing goes depends on both, one subtask, as when one sentence says both
+        sent = [a.subject for a in factors if b.sentence >= 1 and a.subject != b.subject
+                and (a.sentence == b.sentence - 1 or any(at == b.sentence - 1 for at, _ in a.places))
+                and b.subject in a.roles and a.subject in b.roles]
+        if sent:
+            out.append((sent[-1], b.subject))
+            continue
         if any(a.sentence == b.sentence and a.subject != b.subject for a in factors):
             continue
         asked = [a.subject for a in factors if a.sentence == b.sentence - 1 >= 0 and a.subject != b.subject

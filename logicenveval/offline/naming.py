@@ -83,6 +83,11 @@ _NOUN_LEADS = frozenset({"with", "and", "or", "plus"})
 #: prepositions: an item holding one is a clause, not a noun phrase ("are in the kitchen")
 _PREPOSITIONS = frozenset({"on", "onto", "in", "into", "inside", "from", "by", "near", "under", "of",
                            "to", "at", "beside", "behind", "with"})
+#: the linking words and particles of a name made as a phrase ("bag of trash", "chest of drawers",
+#: "drying rack for dishes", "washing-up liquid"): no word of what the kind is, so no clue to it in
+#: a sentence ("if either of them has ended up on the floor" says nothing of a bag or a washing-up
+#: liquid: `_Reader.bare_noun`)
+_NAME_LINKS = _PREPOSITIONS | {"for", "up", "down", "out", "off", "over"}
 #: words that make a noun phrase indefinite: a thing of its own, not a part of one named
 _INDEFINITE = frozenset({"a", "an", "another", "some", "any"})
 _COUNTS = {"two": 2, "three": 3, "four": 4, "five": 5, "both": 2, "2": 2, "3": 3, "4": 4, "5": 5}
@@ -148,6 +153,12 @@ _NOT_CONTEXT = frozenset({"floor", "wall", "ceiling", "room"})
 #: "that is a ...", "it was a ...": a predicate noun of a thing already named (`predicate_noun`)
 _POINTERS = frozenset({"that", "it", "this", "which"})
 _COPULAS = frozenset({"is", "was"})
+#: the pronouns that take up a thing named before (`_Reader.heading_spare`)
+_THING_PRONOUNS = frozenset({"it", "its", "they", "them", "their"})
+#: verbs that, right after a noun phrase, make it the subject of a clause of its own
+#: (`_Reader.renamed_fuller`)
+_CLAUSE_VERBS = frozenset({"is", "was", "are", "were", "has", "had", "goes", "lives", "sits", "stands", "lies",
+                           "stays", "belongs", "needs", "should", "must", "will", "can", "may", "might"})
 #: verbs after a subject that say where it is or what it is ("The treasure map be on the table",
 #: "The rota is on the fridge door", "The card lives in the drawer": `unnamed_subject`)
 _SUBJECT_VERBS = frozenset({"is", "was", "be", "are", "lives", "sits", "stands", "lies", "stays"})
@@ -384,15 +395,25 @@ class _Reader:
         """Whether "<packaging> of <X>" at word `i` holds something other than what the kind its
         packaging word names is named for: the catalog's bags are a trash bag and a garbage bag,
         named for their contents, and "a whole bag of crisps", "a bag of old clothes" are neither
-        (the kind's name is "<contents> <packaging>" and the word after "of" is not its contents).
-        Such a bag names no object; "a bag of rubbish" (the synonym "bag of trash") still does."""
+        (a kind's name is "<contents> <packaging>" or "<packaging> of <contents>", and the word
+        after "of" is none of its contents). Such a bag names no object; "a bag of rubbish" (the
+        synonym "bag of trash") still does, and a bag of an owner ("the bag of my wife", "the bag
+        of her sister") is the owner's bag, whatever kind its word names."""
+        words = self.text.words
+        if i + 2 >= len(words) or words[i + 2] in _POSSESSIVES:
+            return False  # "the bag of my wife": the owner's bag
+        # a kind named in this very form ("bag of trash"): the words after "of" are its contents
+        phrased = [words_of(t) for c in dict.fromkeys(self.heads.get(words[i], []))
+                   for t in (c, *_own(self.catalog.categories[c])) if words_of(t)[:2] == (words[i], "of")]
+        if phrased:
+            return words[i + 2] not in {w for name in phrased for w in name[2:]} | _RUBBISH
         kind = self.bare_noun(i, category)
         if kind is None:
             return False
         name = words_of(kind)
-        if len(name) < 2 or name[-1] != self.text.words[i] or i + 2 >= len(self.text.words):
+        if len(name) < 2 or name[-1] != words[i]:
             return False
-        return self.text.words[i + 2] not in {*name[:-1], *_RUBBISH}
+        return words[i + 2] not in {*name[:-1], *_RUBBISH}
 
     def contents_named(self, i: int) -> bool:
         """Whether the words from `i`, after "<packaging> of", name a kind within three words
@@ -568,7 +589,10 @@ class _Reader:
         def score(category: str | None) -> tuple[bool, bool, bool, int, bool, bool, int, int, bool, bool]:
             assert category is not None
             cat = self.catalog.categories[category]
-            others = {w for text in (category, *_own(cat)) for w in words_of(text)} - {word}
+            # the other words of its names that say what it is: not a preposition of a name made
+            # as a phrase ("bag of trash", "drying rack for dishes"), which says nothing of the kind
+            # ("the mouth of the bag" is no bag of trash)
+            others = {w for text in (category, *_own(cat)) for w in words_of(text)} - {word} - _NAME_LINKS
             rooms = set(cat.rooms)
             # its own name: written as the text writes it ("glasses"), or the word's lemma ("chairs")
             # when the name is a lemma (not "glasses" for "glass", a drinking glass)
@@ -730,6 +754,38 @@ class _Reader:
             return None
         head, fuller = words_of(before), words_of(category)
         return before if len(fuller) > len(head) and fuller[-len(head):] == head else None
+
+    def renamed_fuller(self, i: int, n: int, category: str) -> str | None:
+        """The kind of the thing named last, when the noun phrase at words [i, i + n) names it
+        again by a fuller name that ends in the word it was called by: as the predicate of an
+        identifying "is" right after that word ("the bunny lamp is the little table lamp shaped
+        like a rabbit", "the box is the blue toy box") or set off by a comma after the clause
+        that named it ("Somebody's reading book has ended up on the floor again, the novel with
+        the dragon on the front": the novel's name "fiction book"). The thing was only ever called
+        by that one word, a head several kinds share, and no other kind was named since: one
+        object, of the fuller kind. A phrase after a comma that goes on with a verb of its own is
+        a clause of its own ("the book is on the desk, the novel is on the shelf")."""
+        words, gaps = self.text.words, self.text.gaps
+        the = i - 1
+        while the >= 0 and i - the <= 3 and words[the] != "the":
+            the -= 1
+        if the < 1 or words[the] != "the" or not self.recent or self.recent[-1] == category:
+            return None
+        before = self.recent[-1]
+        kind, said = self.kinds.get(before), self.used.get(before, set())
+        if kind is None or kind.instances or kind.count > 1 or before in self.named or len(said) != 1:
+            return None
+        (head,) = said
+        if any(self.match(k)[1] is not None for k in range(the + 1, i)):
+            return None
+        copular = the >= 2 and words[the - 1] in _COPULAS and words[the - 2] == head
+        end = i + n
+        goes_on = end < len(words) and not _BREAK.search(gaps[end]) and words[end] in _CLAUSE_VERBS
+        apposed = "," in gaps[the] and not goes_on and (self.first_at.get(before, -1) >= self.text.sentence_start(i))
+        if not (copular or apposed):
+            return None
+        names = (category, *_own(self.catalog.categories[category]))
+        return before if any(len(words_of(t)) > 1 and words_of(t)[-1] == head for t in names) else None
 
     def names_the_colored_one(self, i: int, n: int, kind: _Kind, prev: str) -> bool:
         """Whether a plain singular mention of a kind is the one thing of it the text has already
@@ -1227,12 +1283,15 @@ class _Reader:
     def predicate_noun(self, i: int) -> bool:
         """Whether the noun phrase at word `i` is the predicate of "that is a ...", "it is a ...",
         "this was a ..." said of a thing the sentence already named ("The essay collection is on
-        the desk, that's a library book"): it says what that thing is, it names no other object."""
+        the desk, that's a library book"), or with a possessive for its article ("the bunny lamp
+        is the little table lamp, it's her night light"): it says what that thing is, it names no
+        other object."""
         words = self.text.words
+        leads = {"a", "an", *_POSSESSIVES}
         k = i - 1
-        while k >= 0 and i - k <= 3 and words[k] not in ("a", "an"):
+        while k >= 0 and i - k <= 3 and words[k] not in leads:
             k -= 1
-        if k < 2 or words[k] not in ("a", "an") or words[k - 1] not in _COPULAS or words[k - 2] not in _POINTERS:
+        if k < 2 or words[k] not in leads or words[k - 1] not in _COPULAS or words[k - 2] not in _POINTERS:
             return False
         start = self.text.sentence_start(i)
         return any(self.kind_at(j)[1] is not None for j in range(start, k - 2))
@@ -1267,6 +1326,27 @@ class _Reader:
         if i < 3 or words[i - 2] not in _COPULAS or words[i - 3] not in _POINTERS:
             return False
         return i + 1 == len(words) or words[i + 1] == "one" or self.match(i + 1)[1] is None
+
+    def heading_spare(self, i: int) -> bool:
+        """Whether word `i` ("spare"), definite or owned ("my spare one", "the spare"), is the thing
+        the heading right before its sentence names: an item's heading ("- Torch.", "Phone
+        charger.") is a sentence of that name alone, its thing named nowhere before, and the body's
+        first word for it is the spare, no pronoun for the heading's thing before it ("Torch. Left
+        my spare one behind, it's on the shelf": one torch, the spare). "Bulb. If it's blown, fetch
+        the spare" (the bulb in use, then the spare) and "a spare" (indefinite) still name a
+        spare of their own."""
+        words = self.text.words
+        start = self.text.sentence_start(i)
+        if start < 1:
+            return False
+        head = self.text.sentence_start(start - 1)
+        at = head + (words[head] in _ARTICLES)
+        n, category = self.match(at)
+        kind = self.kinds.get(category) if category is not None else None
+        if category is None or kind is None or kind.instances or kind.count > 1 or self.first_at.get(category) != at \
+                or at + n != start or not self.catalog.categories[category].pickable:
+            return False
+        return not any(w in _THING_PRONOUNS for w in words[start:i])
 
     def kind_value(self, i: int, n: int, prev: str) -> bool:
         """Whether the bare plural at word `i` (`n` words: "dolls", "toy cars"), or an indefinite
@@ -1373,6 +1453,9 @@ class _Reader:
             if words[i] in SPARE_WORDS and prev in _DETERMINERS and self.says_which(i):
                 i += 1  # "a hard hat on the floor (it's the spare, not his)": which one it is, no other
                 continue
+            if words[i] in SPARE_WORDS and (prev in _POSSESSIVES or prev == "the") and self.heading_spare(i):
+                i += 1  # "- Torch. Left my spare one behind, it's on the shelf": the heading's torch
+                continue
             if words[i] in SPARE_WORDS and prev in _DETERMINERS and (
                     i + 1 == len(words) or words[i + 1] not in self.heads and self.match(i + 1)[1] is None):
                 # "a spare" as a noun: "fetch a spare from the dresser", "we store the spares"
@@ -1430,7 +1513,7 @@ class _Reader:
                     self.colors[category] = words[told]
                 i += n
                 continue
-            if shared is None and (glossed := self.glossed(i, category)) is not None:
+            if shared is None and (glossed := self.glossed(i, category) or self.renamed_fuller(i, n, category)) is not None:
                 # "Cupboard on wall (wall cabinet, over sink)": one thing, named by the fuller name
                 del self.kinds[glossed]
                 self.recent.remove(glossed)

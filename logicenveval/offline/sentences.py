@@ -393,6 +393,11 @@ VARIANTS = {"whilst": "while", "amongst": "among", "amidst": "amid", "unto": "to
 SPELLINGS = {"grey": "gray"}
 _SPELLED = {**VARIANTS, **SPELLINGS}
 _VARIANT = re.compile(rf"\b(?:{'|'.join(_SPELLED)})\b", re.I)
+#: "anywhere other than the counter", "somewhere other than in the drawer": the common "else than"
+#: the elsewhere cues read ("anywhere else", `analysis.ELSEWHERE`), so that "other" is not read as
+#: "any other <kind>", a class ("If the bread is anywhere other than the counter, or we have no
+#: bread at all" lost its "no bread")
+_OTHER_THAN = re.compile(r"\b(anywhere|somewhere|everywhere|nowhere)\s+other\s+than\b", re.I)
 
 
 #: a formula of politeness before an instruction's verb ("be good enough to examine the towel",
@@ -403,11 +408,34 @@ _POLITE = re.compile(r"\bbe (?:so )?(?:good|kind)(?: enough to| as to)\s+", re.I
 #: state words that are states only as a predicate, after a form of "be" at a clause's end: "the
 #: dishwasher's already going", "if it's still going" (Merriam-Webster, "going" adj.: "running,
 #: working"); elsewhere they are verbs ("it's going in the bin", "going to bed")
-PREDICATE_STATES = {"going": "running"}
+#: "in operation" (Merriam-Webster: "functioning, in use"; "the dryer is still in operation"), its
+#: article kept by a translated text ("if the air conditioner is still in the operation"); and
+#: the progressive of opening and closing said as the state it leaves, as learners and translated
+#: texts say it ("When the mouth of the bag is opening, please close it", "if the window is
+#: opening, shut it"): only as a predicate at a clause's end, where a thing's state is asked
+PREDICATE_STATES = {"going": "running", "in operation": "running", "opening": "open", "closing": "closed"}
+#: a predicate state's "in" may take an article (`PREDICATE_STATES`)
+_ARTICLE_OPTIONAL = re.compile(r"^in ")
+_IN_ARTICLE = r"in\\s+(?:the\\s+)?"
+_ARTICLE_IN = re.compile(r"in\s+(?:the\s+)?")
 _PREDICATE_STATE = re.compile(
     rf"((?:\b(?:is|are|was|were|be)|'s|\u2019s)(?:\s+(?:still|already|just|now))*\s+|\b(?:still|already)\s+)"
-    rf"({'|'.join(PREDICATE_STATES)})"
+    rf"({'|'.join(_ARTICLE_OPTIONAL.sub(_IN_ARTICLE, k) for k in PREDICATE_STATES)})"
     r"(?=\s*(?:[,.;:!?)]|$|\s(?:then|and|or|but|so|already|still|now|again)\b))", re.I | re.M)
+
+
+#: "In the case the heater is on", "in the event that the tap is running": a condition opened by
+#: a noun of occasion ("in the case (that)", "in the event (that)"; Merriam-Webster, "in the event
+#: that": "if it happens that"), read as "if"; only where a clause starts (its sentence's or item's
+#: start, a comma or a conjunction before it) and not before "of" ("in the case of fire" is no
+#: clause; "put it in the case the optician gave you" puts it in a case)
+_OCCASION_IF = re.compile(r"(?:(?<=^)|(?<=[.!?;:,)\n])|(?<=[.!?;:,)]\s)|(?<=\band\s)|(?<=\bbut\s))[ \t]*\b"
+                          r"in\s+the\s+(?:case|event)(?:\s+that)?\b(?!\s+of\b)", re.I | re.M)
+
+
+def _occasion_if(m: re.Match[str]) -> str:
+    lead = m.group(0)[:len(m.group(0)) - len(m.group(0).lstrip(" \t"))]
+    return lead + ("If" if m.group(0).lstrip(" \t")[0].isupper() else "if")
 
 
 #: a telegram's words for its punctuation (Oxford: stop, "(in telegrams) a full stop"; query,
@@ -427,6 +455,17 @@ def _telegram(text: str) -> str:
 #: opens with "no" and a noun phrase, then "then" and an instruction, asks whether there is one
 #: (as "No roll by the toilet? Then take a spare" does)
 _NO_THEN = re.compile(r"(^|[.!?;:]\s+|\n\s*)(no\s+[a-z]+(?:\s+[a-z]+){0,5}?)\s+then\s+(?=[a-z])", re.I)
+
+
+#: "Is the mug on the coffee table dirty, then bring it to the sink", "Are the lights still on,
+#: then switch them off": a yes/no question whose answer opens the instruction after "then" (the
+#: conditional of a verb-first clause, as in Dutch and German, "Is er geen pan, dan ..."; older
+#: English "Is it raining, then take a coat") is the question "Is the mug ... dirty? Then ...", as
+#: `_NO_THEN` reads "No roll by the toilet then ...". Only a clause that opens its sentence (or
+#: follows a colon or semicolon) with a finite "be" and a subject, a comma before "then", and a
+#: word after it: "Is the mug dirty, then?" asks, and "is the mug dirty" in a clause stays
+_BE_THEN = re.compile(r"(^|[.!?;:]\s+|\n\s*)((?:is|are|was|were)\s+(?:the|a|an|there|your|my|our|his|her|their|its|it|they)"
+                      r"\b[^.!?;:,\n]{1,80}?)\s*,\s*then\s+(?=[a-z])", re.I)
 
 
 def _no_then(m: re.Match[str]) -> str:
@@ -655,7 +694,10 @@ def unquote(text: str) -> str:
     subject (`_SUBJECTLESS`); a chat message's `*`-correction made in the message it corrects
     (`starred`), without a chat line's time stamp (`_TIME_STAMP`) and without a reference work's
     citation marks (`_CITATION`)."""
+    text = _OCCASION_IF.sub(_occasion_if, text)
+    text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
     text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_modern(_NATIVE_IF.sub(_native_if, text))))))
+    text = _OTHER_THAN.sub(r"\1 else than", text)
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), _SPELLED[m.group(0).lower()]), text))
     text = starred(_TIME_STAMP.sub(r"\1", _CITATION.sub("", text)))
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
@@ -663,7 +705,7 @@ def unquote(text: str) -> str:
     plain = _FRONTED_ALREADY.sub(_postposed, plain)
     plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _ITEM_END.sub(".\n", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", plain)))))
     plain = _unabbreviated(plain)
-    plain = _PREDICATE_STATE.sub(lambda m: m.group(1) + PREDICATE_STATES[m.group(2).lower()], plain)
+    plain = _PREDICATE_STATE.sub(lambda m: m.group(1) + PREDICATE_STATES[_ARTICLE_IN.sub("in ", m.group(2).lower())], plain)
     plain = _EMPHATIC_DO.sub("", plain)
     plain = _ELIDED_END_STATE.sub(r"\1 it is ", _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", plain)))
     plain = _ACTED_STATE.sub(_acted_state, plain)
