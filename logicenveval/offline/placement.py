@@ -241,6 +241,8 @@ class _Reading:
     rooms: dict[str, dict[str, str]]
     context_room: str | None = None  # the room the text last spoke of as a whole
     last_subject: Mention | None = None  # the subject of the last statement (for "it", "that")
+    #: the sentence `last_subject` is a mention of: its token positions index that sentence only
+    last_subject_sent: _Sentence | None = None
     last_holder: Mention | None = None  # the last place named (for "there")
     #: the first carried thing a statement last spoke of (for "it will be on the floor if it is
     #: anywhere": a thing that may be absent, not the bed it slipped behind)
@@ -413,7 +415,7 @@ def _read_sentence(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Re
         _resting(sent, clause, ms, lex, catalog, reading)
         subjects = [m for m in ms if m.kind in ("role", "room")]
         if clause.mood == "statement" and subjects:
-            reading.last_subject = subjects[0]
+            reading.last_subject, reading.last_subject_sent = subjects[0], sent
             carried = [m for m in subjects if m.kind == "role" and len(m.roles) == 1
                        and (cat := catalog.get(str(lex.roles[m.roles[0]]["category"]))) is not None and cat.pickable]
             reading.last_carried = carried[0] if carried else reading.last_carried
@@ -1534,7 +1536,8 @@ def _kept(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalo
             if back:
                 items = [back[-1].roles[0]]
             elif reading.last_subject is not None and reading.last_subject.kind == "role":
-                items = list(_roles(reading.last_subject, sent) or reading.last_subject.roles[:1])
+                items = list(_roles(reading.last_subject, reading.last_subject_sent or sent)
+                             or reading.last_subject.roles[:1])
         for role in items:
             if role in lex.roles and role != holder.roles[0]:
                 _put(reading, "kept", catalog, lex, role, holder, prep)
