@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from logicenveval.offline.analysis import PLURAL_REFERENCE, _quantified
 from logicenveval.offline.clauses import verbless
-from tests.reading import factors, placed
+from tests.reading import factors, named, placed
 
 
 def _asked(text: str, rooms: tuple[str, ...]) -> set[str]:
@@ -110,6 +110,8 @@ def test_a_plural_verb_of_resting_before_a_colon_is_a_clause_not_a_heading() -> 
     assert not verbless(_words("the towels hang on the rail"))
     assert verbless(_words("towel on the floor"))
     assert not verbless(_words("hang the towels on the rail"))  # an imperative, still no heading
+    assert not verbless(_words("on the counter sit two mugs"))
+    assert verbless(_words("on the counter"))
 
 
 def test_a_placement_stated_of_an_enumerated_set_holds_for_every_member() -> None:
@@ -117,6 +119,9 @@ def test_a_placement_stated_of_an_enumerated_set_holds_for_every_member() -> Non
     assert {"on(tea_cup, desk)", "on(coffee_cup, desk)"} <= placed(text, ("office",))
     text = "Two towels hang on the towel rack: a bath towel and a hand towel."
     assert {"on(bath_towel, towel_rack)", "on(hand_towel, towel_rack)"} <= placed(text, ("bathroom",))
+    # a fronted place before the inverted verb and its counted subject
+    text = "On the counter sit two mugs: a blue mug and a red mug."
+    assert {"on(blue_mug, kitchen_counter)", "on(red_mug, kitchen_counter)"} <= placed(text, ("kitchen",))
 
 
 def test_a_placement_of_an_enumerated_set_asks_nothing() -> None:
@@ -137,3 +142,20 @@ def test_they_after_respectively_keeps_each_members_own_place() -> None:
             "If they are already there, leave them.")
     asked = _asked(text, ("bathroom",))
     assert "on(soap_bar, towel_rack)" not in asked and "inside(towel, cabinet)" not in asked
+
+
+# -- an enumeration told apart by a colour the kind has no attribute for ----------------------
+
+
+def test_a_colour_the_kind_lacks_still_tells_enumerated_items_apart() -> None:
+    # a cardboard box has no colour attribute: "red" and "blue" tell the two boxes apart by name
+    text = "There are two boxes in the room: a red box and a blue box. If the boxes are open, close them."
+    assert set(named(text, ("bedroom",))) == {"red_box", "blue_box"}
+    assert _asked(text, ("bedroom",)) == {"state(red_box, open)", "state(blue_box, open)"}
+
+
+def test_an_enumerated_item_is_named_by_its_own_word_for_the_kind() -> None:
+    # "bin" is the text's word for a trash can: a red_bin, not a red_can or a bin_can
+    text = "There are two bins in the kitchen: a red bin and a blue bin. Empty them if full."
+    assert set(named(text, ("kitchen",))) == {"red_bin", "blue_bin"}
+    assert _asked(text, ("kitchen",)) == {"state(red_bin, filled)", "state(blue_bin, filled)"}

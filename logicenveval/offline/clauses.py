@@ -240,10 +240,16 @@ PLURAL_FINITE = frozenset({"lie", "sit", "stand", "rest", "hang", "stay", "wait"
                            "contain"})
 
 
+#: the prepositions a fronted place opens with before an inverted verb ("On the counter sit two mugs")
+_FRONTED_PLACE = frozenset({"on", "in", "inside", "under", "by", "beside", "upon", "atop", "over", "behind"})
+
+
 def _plural_finite(words: list[str]) -> bool:
-    """Whether a bare verb of `PLURAL_FINITE` follows a plural noun ("cups sit", "towels hang")."""
-    return any(w in PLURAL_FINITE and k > 0 and len(words[k - 1]) > 3 and words[k - 1].endswith("s")
-               and not words[k - 1].endswith(("ss", "us", "is")) for k, w in enumerate(words))
+    """Whether a bare verb of `PLURAL_FINITE` follows a plural noun ("cups sit", "towels hang")
+    or, after a fronted place, comes before its subject ("On the counter sit two mugs")."""
+    return any(w in PLURAL_FINITE and k > 0 and (
+        len(words[k - 1]) > 3 and words[k - 1].endswith("s") and not words[k - 1].endswith(("ss", "us", "is"))
+        or words[0] in _FRONTED_PLACE and k > 2) for k, w in enumerate(words))
 
 
 def verbless(words: list[str]) -> bool:
