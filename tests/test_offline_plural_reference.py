@@ -159,3 +159,27 @@ def test_an_enumerated_item_is_named_by_its_own_word_for_the_kind() -> None:
     text = "There are two bins in the kitchen: a red bin and a blue bin. Empty them if full."
     assert set(named(text, ("kitchen",))) == {"red_bin", "blue_bin"}
     assert _asked(text, ("kitchen",)) == {"state(red_bin, filled)", "state(blue_bin, filled)"}
+
+
+# -- a plural pronoun whose topic is a thing outside the group --------------------------------
+
+
+def test_they_after_the_holder_of_an_enumeration_is_the_group_not_the_holder() -> None:
+    # the sentence before is about the cabinet; "they", "them", "each of them" are its drawers
+    enumerated = "The cabinet has two drawers: one for forks, one for spoons. "
+    for instruction in ("If they're open, shut them.", "Check each of them; if open, shut it.",
+                        "Are they open? Close them.", "Both should be closed if open."):
+        asked = _asked(enumerated + instruction, ("kitchen",))
+        assert asked == {"state(fork_drawer, open)", "state(spoon_drawer, open)"}, instruction
+
+
+def test_they_after_the_holder_in_an_office_note() -> None:
+    # a chatty office note: the filing cabinet (which opens too) has the drawers
+    text = ("Our filing cabinet has got two drawers, one for bills and one for letters. If they're left open, "
+            "shut them.")
+    assert _asked(text, ("office",)) == {"state(bill_drawer, open)", "state(letter_drawer, open)"}
+
+
+def test_a_state_word_between_the_quantifier_and_its_head() -> None:
+    text = "The dresser has two drawers: a top drawer and a bottom drawer. Any dirty drawer gets wiped."
+    assert _asked(text, ("bedroom",)) == {"state(top_drawer, dirty)", "state(bottom_drawer, dirty)"}

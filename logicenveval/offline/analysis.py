@@ -478,9 +478,10 @@ _QUANTIFIER_GAP = frozenset({"the", "of", "these", "those", "two", "three", "fou
 
 def _quantified(words: list[str], start: int) -> bool:
     """Whether a quantifier (`QUANTIFIERS`) opens the noun phrase whose head starts at `start`,
-    with only articles, "of" or a count between ("all of the drawers", "both the cups")."""
+    with only articles, "of", a count or a state word between ("all of the drawers", "both the
+    cups", "every open drawer")."""
     i = start - 1
-    while i >= 0 and words[i] in _QUANTIFIER_GAP:
+    while i >= 0 and (words[i] in _QUANTIFIER_GAP or words[i] in STATE_WORDS):
         i -= 1
     return i >= 0 and words[i] in QUANTIFIERS
 
@@ -542,6 +543,9 @@ class _Reader:
         #: the tokens of the clause read written in the plural ("mugs"): an ambiguous name so
         #: written means every thing it may name (`_recent_first`)
         self.plural_at: frozenset[int] = frozenset()
+        #: the members of the group the sentence read takes up as a whole (`PLURAL_REFERENCE`,
+        #: `_members`): what its "they" / "them" means when the topic is a thing outside it
+        self.group: tuple[str, ...] = ()
 
     def _carried(self, role: str) -> bool:
         """Whether the role's kind is carried about (`Category.pickable`)."""
@@ -663,6 +667,14 @@ class _Reader:
                 # ceiling fan named before it)
                 things = [r for r in self.recent if r not in self.lex.holders or self._carried(r)] or self.recent
                 found.append(Mention(prior[-1].roles if prior else (things[-1],), i, i + 1, "pronoun"))
+            elif w in ("they", "them") and self.group and self.topic_kind == "role" and self.topic \
+                    and not self.plural & set(self.topic) and not set(self.topic) <= set(self.group):
+                # "The cabinet has two drawers: one for forks, one for spoons. If they're open,
+                # shut them": a plural pronoun in a sentence that takes up a group (`PLURAL_REFERENCE`)
+                # is the group, not a singular topic outside it (the cabinet); so is an elided
+                # subject after it ("Check each of them; if open, ...")
+                self.topic = self.group
+                found.append(Mention(self.group, i, i + 1, "pronoun"))
             elif w in ("they", "them") and self.topic_kind == "role" and not self.plural & set(self.topic) \
                     and not self.coordinated and any(r in self.plural for r in self.recent):
                 # "The mark is cleaned - with the wet wipes if they are on the table": a plural
@@ -2300,6 +2312,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 reader.topic, reader.topic_kind = ahead, "role"
             said = _BARE_BOTH.sub(r"\1 of them", _BARE_EITHER.sub(r"\1 of them", said))
             reader.own_it = own
+            reader.group = spread[1] if spread[0] == grammatical else ()
             if role == "condition":
                 said = _there_named(reader, said, clauses, grammatical)
             thing = reader.heading_topic or (reader.topic if reader.topic_kind == "role" else ())
