@@ -469,6 +469,23 @@ def _prep_within(words: list[str], m: Mention, preps: frozenset[str] | set[str])
     return any(w in preps and before[i + 1:i + 2] not in (["and"], ["but"]) for i, w in enumerate(before))
 
 
+#: the words that open a noun phrase meaning every thing of its kind the text names ("any drawer
+#: that is open", "each cup", "every towel", "whichever box", "both drawers", "all (of) the
+#: drawers"): a condition on it is asked of each of them (`_Reader._recent_first`)
+QUANTIFIERS = frozenset({"any", "each", "every", "whichever", "both", "all"})
+_QUANTIFIER_GAP = frozenset({"the", "of", "these", "those", "two", "three", "four", "your", "my", "our"})
+
+
+def _quantified(words: list[str], start: int) -> bool:
+    """Whether a quantifier (`QUANTIFIERS`) opens the noun phrase whose head starts at `start`,
+    with only articles, "of", a count or a state word between ("all of the drawers", "both the
+    cups", "every open drawer")."""
+    i = start - 1
+    while i >= 0 and (words[i] in _QUANTIFIER_GAP or words[i] in STATE_WORDS):
+        i -= 1
+    return i >= 0 and words[i] in QUANTIFIERS
+
+
 def _negation(word: str) -> bool:
     return word in NEGATIONS
 
@@ -523,15 +540,24 @@ class _Reader:
         self.hyphens: frozenset[int] = frozenset()
         #: the words of the clause being read where a thing's name starts (`_state`)
         self.starts: frozenset[int] = frozenset()
+        #: the tokens of the clause read written in the plural ("mugs"): an ambiguous name so
+        #: written means every thing it may name (`_recent_first`)
+        self.plural_at: frozenset[int] = frozenset()
+        #: the members of the group the sentence read takes up as a whole (`PLURAL_REFERENCE`,
+        #: `_members`): what its "they" / "them" means when the topic is a thing outside it
+        self.group: tuple[str, ...] = ()
 
     def _carried(self, role: str) -> bool:
         """Whether the role's kind is carried about (`Category.pickable`)."""
         kind = self.kinds.get(role)
         return kind is not None and kind.pickable
 
-    def _recent_first(self, m: Mention) -> Mention:
-        """An ambiguous singular mention (`the rack`) means the candidate mentioned last."""
-        if m.kind != "role" or len(m.roles) < 2:
+    def _recent_first(self, m: Mention, words: list[str]) -> Mention:
+        """An ambiguous singular mention (`the rack`) means the candidate mentioned last; one a
+        quantifier opens (`any drawer that is open`, `each cup`, `both drawers`, `all the
+        drawers`: `_quantified`), or written in the plural ("if the mugs are dirty" with a blue
+        and a red mug), means every candidate."""
+        if m.kind != "role" or len(m.roles) < 2 or _quantified(words, m.start) or m.end - 1 in self.plural_at:
             return m
         known = [r for r in self.recent if r in m.roles]
         return Mention((known[-1],), m.start, m.end, m.kind) if known else m
@@ -546,7 +572,7 @@ class _Reader:
         return None
 
     def mentions(self, words: list[str], toks: list[tuple[str, int, int]]) -> list[Mention]:
-        found = [self._recent_first(m) for m in self.lex.find_mentions(toks) if not _verb_read(toks, m)]
+        found = [self._recent_first(m, words) for m in self.lex.find_mentions(toks) if not _verb_read(toks, m)]
         # "the kitchen sink", "the bathroom mirror": a room's name right before a thing's names the thing
         found = [m for m in found if m.kind != "room" or not any(x.start == m.end and x.kind == "role" for x in found)]
         # "Bread knife, on the counter ...: if it's dirty": a one-word name of a thing right before
@@ -641,6 +667,14 @@ class _Reader:
                 # ceiling fan named before it)
                 things = [r for r in self.recent if r not in self.lex.holders or self._carried(r)] or self.recent
                 found.append(Mention(prior[-1].roles if prior else (things[-1],), i, i + 1, "pronoun"))
+            elif w in ("they", "them") and self.group and self.topic_kind == "role" and self.topic \
+                    and not self.plural & set(self.topic) and not set(self.topic) <= set(self.group):
+                # "The cabinet has two drawers: one for forks, one for spoons. If they're open,
+                # shut them": a plural pronoun in a sentence that takes up a group (`PLURAL_REFERENCE`)
+                # is the group, not a singular topic outside it (the cabinet); so is an elided
+                # subject after it ("Check each of them; if open, ...")
+                self.topic = self.group
+                found.append(Mention(self.group, i, i + 1, "pronoun"))
             elif w in ("they", "them") and self.topic_kind == "role" and not self.plural & set(self.topic) \
                     and not self.coordinated and any(r in self.plural for r in self.recent):
                 # "The mark is cleaned - with the wet wipes if they are on the table": a plural
@@ -716,6 +750,7 @@ class _Reader:
         self.hyphens = frozenset(k for k in range(1, len(toks)) if said[toks[k - 1][2]:toks[k][1]] == "-")
         self.dashes = frozenset(k for k in range(1, len(toks)) if said[toks[k - 1][2]:toks[k][1]].strip() in _DASHES
                                 and said[toks[k - 1][2]:toks[k][1]] != "-")
+        self.plural_at = frozenset(k for k, (w, a, b) in enumerate(toks) if said[a:b] != w and said[a:b].endswith("s"))
         mentions = self.mentions(words, toks)
         self.starts = frozenset(x.start for x in mentions if x.kind == "role")
         for m in mentions:
@@ -1957,8 +1992,18 @@ ANY_OF = re.compile(r"\b(?:(?:either|neither|any|one|each|both|all)\s+of\s+(?:th
                     r"ends|ended|falls|fell|seems|looks|should|may|might)\b)", re.I)
 #: "If either has been left out": "either" alone as the subject, read as "either of them" so that
 #: its pronoun takes up the group
+#: a plural pronoun ("them", "they", "both", "each of them", "all of them"; not "one of them", a
+#: member, nor "either of them": `ANY_OF`) takes up the group just named as a whole: what its
+#: sentence says of it, it says of every member ("two cups on the tray: a tea cup and a coffee cup.
+#: Wash them if dirty"); `_distributed` spreads only facts said of a member, so a "them" that
+#: means one thing named in the plural ("the wet wipes") spreads nothing
+PLURAL_REFERENCE = re.compile(r"(?<!\bone of )(?<!\bnone of )\b(?:they|them|themselves|both)\b", re.I)
 _BARE_EITHER = re.compile(r"\b(either|neither)(?=\s+(?:has|have|is|was|are|were|gets|got|ends|ended|falls|fell|"
                           r"seems|looks|should|may|might)\b)", re.I)
+
+#: "If both are on": "both" alone as the subject, read as "both of them" (`PLURAL_REFERENCE`)
+_BARE_BOTH = re.compile(r"\b(both)(?=\s+(?:are|were|have|had|look|seem|need|get|got|end|ended|fall|fell|"
+                        r"should|may|might|still)\b)", re.I)
 
 
 def _listed(lex: Lexicon, text: str) -> tuple[str, ...]:
@@ -2007,7 +2052,11 @@ def _members(clauses: list[Clause], kinds: Mapping[str, str], sentence: int,
 
 def _distributed(facts: tuple[Fact, ...], members: tuple[str, ...]) -> tuple[Fact, ...]:
     """`facts` said of one member of a group, said of every member (a pronoun of a distributive
-    clause resolves to one of them)."""
+    clause resolves to one of them). Facts already said of every member ("the bat and the racket go
+    in the bin and on the bench, respectively. If they're already there": each its own place)
+    are left as they are."""
+    if set(members) <= {f.subject for f in facts}:
+        return facts
     out = list(facts)
     for f in facts:
         if f.subject not in members:
@@ -2206,7 +2255,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         after = [p.text for p in pieces[1:]] + [cut[si + 1][0].text if si + 1 < len(cut) and cut[si + 1] and not
                                                 sent.rstrip().endswith((".", "!", "?")) else ""]
         for pi, (text, cue, role) in enumerate(pieces):
-            if (DISTRIBUTIVE.match(text) or ANY_OF.search(text)) and (members := _members(clauses, categories, grammatical, lex)):
+            if (DISTRIBUTIVE.match(text) or ANY_OF.search(text) or PLURAL_REFERENCE.search(expand(text))) and (
+                    members := _members(clauses, categories, grammatical, lex)):
                 spread = (grammatical, members)
             if role == "heading" and _speaker(reader, text, speakers):
                 clauses.append(Clause(text, grammatical, cue, "statement", (), ()))
@@ -2260,8 +2310,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # off": a pronoun in a condition put first, with nothing named in its sentence or
                 # the one before, speaks of the thing its main clause names
                 reader.topic, reader.topic_kind = ahead, "role"
-            said = _BARE_EITHER.sub(r"\1 of them", said)
+            said = _BARE_BOTH.sub(r"\1 of them", _BARE_EITHER.sub(r"\1 of them", said))
             reader.own_it = own
+            reader.group = spread[1] if spread[0] == grammatical else ()
             if role == "condition":
                 said = _there_named(reader, said, clauses, grammatical)
             thing = reader.heading_topic or (reader.topic if reader.topic_kind == "role" else ())

@@ -233,12 +233,32 @@ FINITE_VERBS = frozenset({"lies", "lay", "sits", "sat", "stands", "stood", "rest
                           "includes", "houses", "lives", "sleeps", "stores", "keeps"})
 
 
+#: the bare forms of `FINITE_VERBS`' verbs of resting and holding: finite after a plural subject
+#: ("Two cups sit on the desk: a tea cup and a coffee cup", "the drawers hold ..."), where the
+#: same word opening a segment is an imperative ("Hang the towels on the rail:")
+PLURAL_FINITE = frozenset({"lie", "sit", "stand", "rest", "hang", "stay", "wait", "lean", "belong", "live", "hold",
+                           "contain"})
+
+
+#: the prepositions a fronted place opens with before an inverted verb ("On the counter sit two mugs")
+_FRONTED_PLACE = frozenset({"on", "in", "inside", "under", "by", "beside", "upon", "atop", "over", "behind"})
+
+
+def _plural_finite(words: list[str]) -> bool:
+    """Whether a bare verb of `PLURAL_FINITE` follows a plural noun ("cups sit", "towels hang")
+    or, after a fronted place, comes before its subject ("On the counter sit two mugs")."""
+    return any(w in PLURAL_FINITE and k > 0 and (
+        len(words[k - 1]) > 3 and words[k - 1].endswith("s") and not words[k - 1].endswith(("ss", "us", "is"))
+        or words[0] in _FRONTED_PLACE and k > 2) for k, w in enumerate(words))
+
+
 def verbless(words: list[str]) -> bool:
     """Whether a segment has no finite verb, no subject and no imperative (`CLAUSE_WORDS`,
-    `FINITE_VERBS`, `imperative`): "Lamp left on", "Towel lying on the floor", "Dog bowl empty"
-    are verbless; "The pantry has two shelves", "Towel lies on the floor", "Put it away" are
-    not. Both readers tell a heading before a colon by it."""
-    return not set(words) & (CLAUSE_WORDS | FINITE_VERBS) and not imperative(words)
+    `FINITE_VERBS`, `PLURAL_FINITE` after a plural, `imperative`): "Lamp left on", "Towel lying
+    on the floor", "Dog bowl empty" are verbless; "The pantry has two shelves", "Towel lies on
+    the floor", "Two cups sit on the desk", "Put it away" are not. Both readers tell a heading
+    before a colon by it."""
+    return not set(words) & (CLAUSE_WORDS | FINITE_VERBS) and not _plural_finite(words) and not imperative(words)
 
 
 #: words after a base-form verb that make it an imperative with its object ("clean it", "put

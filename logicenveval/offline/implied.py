@@ -94,6 +94,11 @@ _ANY_FOUND = re.compile(
     r"(?P<go>go|goes|belong|belongs|should\s+go|get\s+put|are\s+to\s+go)\b",
     re.I)
 
+#: "Whichever drawer is open, close it": a fronted free relative with "whichever" is the condition
+#: "if any drawer is open" (a quantified noun phrase: every drawer the text names is asked of)
+_WHICHEVER = re.compile(r"^(?P<lead>\W*)whichever\s+(?P<rest>[a-z][a-z' -]*?\s+(?:is|are|was|were|has|have|looks?|"
+                        r"seems?|gets?|got)\b[^,;:]*,)", re.I)
+
 
 def _any_found(m: re.Match[str]) -> str:
     cue = "If" if m.group("any")[0].isupper() else "if"
@@ -122,10 +127,12 @@ def _cases(sentence: str) -> str:
 def implied(sentence: str) -> str:
     """`sentence` with the conditions its grammar implies spelled out as conditionals: an
     instruction that holds "if need be" (`_IF_NEED_BE`), an obligation to a state (`_OBLIGED`)
-    and "any you find there go ..." (`_ANY_FOUND`); "down there" as "there"
+    "any you find there go ..." (`_ANY_FOUND`) and "whichever X is Y, ..." (`_WHICHEVER`); "down there" as "there"
     (`_DIRECTED_THERE`), a spaced "=" as an arrow (`_EQUALS`), a dash opening a line as a bullet
     (`_DASH_BULLET`), "a" before a case "<adjective> one ->" (`_cases`); any other sentence as it is ("on top of" is "on" for every reader:
     `sentences.expand`)."""
     said = _cases(_EQUALS.sub(" -> ", _DASH_BULLET.sub(r"\1-", sentence)))
     said = _ANY_FOUND.sub(_any_found, _DIRECTED_THERE.sub("", said))
+    said = _WHICHEVER.sub(lambda m: f"{m.group('lead')}{'I' if m.group(0).lstrip()[:1].isupper() else 'i'}f any "
+                                    f"{m.group('rest')}", said)
     return _OBLIGED.sub(_obliged, _IF_NEED_BE.sub(_if_needed, said))

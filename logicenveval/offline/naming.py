@@ -1232,9 +1232,15 @@ class _Reader:
                            and item[k] not in _FILLER and item[k] not in _PREPOSITIONS), None)
             purpose = None if at is None else item[at]
             before = item[:item.index("for")] if "for" in item else item
-            stop = next((k for k, w in enumerate(before) if w == "one" or w == head), len(before))
+            # the item's own word for the kind ("a red bin" for a trash can) ends its modifiers
+            # and names it ("red_bin"), as the catalog's head word would
+            stop = next((k for k, w in enumerate(before) if w == "one" or w == head
+                         or k > 0 and self.match(a + k) == (1, category)), len(before))
+            said_head = before[stop] if stop < len(before) and before[stop] not in ("one", head) else head
+            # (a colour the kind has no attribute for tells the item apart as any modifier does:
+            # "two boxes: a red box and a blue box" are a red_box and a blue_box)
             modifiers = [w for w in before[:stop] if w not in _ARTICLES and w not in _FILLER
-                         and w not in COLOR_WORDS and w != head and w not in _PREPOSITIONS
+                         and (w not in COLOR_WORDS or color is None) and w != head and w not in _PREPOSITIONS
                          and (w != "other" or purpose is None)]  # "the other for the umbrella"
             if purpose is None and (not modifiers or not count) and color is None:
                 continue  # without a count, a list tells objects apart by colour or purpose only
@@ -1257,7 +1263,7 @@ class _Reader:
             # purpose only ("novels on the first level": the rank says only which comes next)
             parts = [] if ordinal_at is not None else modifiers[:1]
             parts += [purpose] if purpose and purpose not in parts else []
-            out.append(("_".join([*parts, head]), {}, read))
+            out.append(("_".join([*parts, said_head]), {}, read))
         return out
 
     @staticmethod
