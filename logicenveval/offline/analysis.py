@@ -64,6 +64,8 @@ from logicenveval.offline.sentences import (
     PREP_IN,
     PREP_ON,
     STATE_WORDS,
+    TAKEN_WORDS,
+    TAKING_FROM,
     TEND,
     code_switched,
     determiner,
@@ -181,6 +183,10 @@ class Fact:
     definite: bool = False
     #: where the thing is kept or lives (`HOMES`): its norm, never a situation to ask about
     home: bool = False
+    #: the source of an instruction of taking ("take a spare fuse from the drawer"): the
+    #: instruction presupposes the thing is there, so in a plain instruction (no condition or
+    #: doubt governs it) it is a stated fact, not a factor
+    presupposed: bool = False
 
 
 @dataclass(frozen=True)
@@ -1244,7 +1250,8 @@ class _Reader:
                     else:
                         cond = f"inside({s}, {t})"
                     out.append(Fact(s, cond, "location", t, negated=negated and not goal, goal=goal,
-                                    modifier=modifier, definite=definite, home=bool(set(skipped) & HOMES)))
+                                    modifier=modifier, definite=definite, home=bool(set(skipped) & HOMES),
+                                    presupposed=prep == "from" and _taken(words, m.start)))
             k = target.end
             alternative = k < len(words) and words[k] == "or"
             while k < len(words) and words[k] in {"or", "and", "either", "the", "a"}:
@@ -1799,6 +1806,21 @@ def _existential(before: list[str]) -> bool:
             continue
         return True
     return False
+
+
+def _taken(words: list[str], start: int) -> bool:
+    """Whether the thing at `start` is the object of an instruction of taking (`TAKING_FROM`:
+    "take a spare fuse", "grab two clean towels", "get one of the bags"), its verb the clause's
+    first word after lead-ins; "if you take a fuse", "the kids take a fuse" are no instruction."""
+    j = start - 1
+    while j >= 0 and words[j] in TAKEN_WORDS:
+        j -= 1
+    if j < 0 or words[j] not in TAKING_FROM:
+        return False
+    lead = j - 1
+    while lead >= 0 and words[lead] in LEAD_INS | SOFTENERS:
+        lead -= 1
+    return lead < 0 or words[lead] in (",", ";", ":", "-", "(")
 
 
 #: verbs of carrying a thing somewhere, whose list after a colon says where each kind of it goes
@@ -2396,6 +2418,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             if f.goal or not (conditional or (f.modifier and cl.role not in ("scene",)
                                               # "The tablet is lying on the chair.": stated, kept
                                               and not ((f.definite or _norm(cl)) and cl.role == "statement")
+                                              # "Take a spare fuse from the drawer and ...": a
+                                              # plain instruction takes its source for granted
+                                              and not (f.presupposed and cl.role == "statement")
                                               # "A dirty mug is sitting on the desk": a thing the
                                               # statement places outright is as it describes it
                                               and not (cl.role == "statement" and not f.home
@@ -2406,6 +2431,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                                                        and not _moved(cl, f.subject)))
                               or (cl.role == "else" and f.kind != "location")):
                 continue
+            if conditional and f.kind == "location" and not f.goal and f.condition.startswith("in_room(") \
+                    and list(brief.get("rooms") or []) == [f.key]:
+                # "I believe I may have left my wristwatch in the flatlet. If it is there, ...": in a
+                # task of one room, being in that room is being there at all
+                f = Fact(f.subject, f"exists({f.subject})", "exists", negated=f.negated)
             slot = (f.subject, f.kind, f.key if f.kind in ("state", "attr") else "")
             entry = found.setdefault(slot, {"order": ci, "sentence": cl.sentence, "clause": ci,
                                            "targets": [], "values": [],

@@ -108,7 +108,10 @@ IMPERATIVES = ACTIONS | frozenset({
     "let", "try", "give", "pour", "empty", "toss", "please", "examine", "inspect"})
 #: words that make a clause (or the rest of a list) doubtful: nothing after them is placed
 DOUBT = frozenset({"may", "might", "could", "maybe", "perhaps", "possibly", "probably", "likely",
-                   "sometimes", "whether", "any", "think", "guess", "somewhere"})
+                   "sometimes", "whether", "any", "think", "guess", "somewhere",
+                   # a speaker's belief is a hedge too: "I believe I left my watch in the flat",
+                   # "I reckon the torch is in the shed", "I'm unsure it is on the shelf"
+                   "believe", "reckon", "suppose", "unsure"})
 #: how a polite request opens ("Could you sort out the coat ...?", "might you wipe it ..."): a
 #: question that is an instruction; the modal before "you" is no doubt about the scene
 REQUESTS = frozenset({"could", "can", "would", "will", "might"})
@@ -689,4 +692,5 @@ def request_modal(words: list[str], k: int) -> bool:
 
 def doubts(words: list[str]) -> bool:
     """Whether the words carry a doubt ("may", "possibly", "probably"); "could you" opens a request."""
-    return any(w in DOUBT and not request_modal(words, k) for k, w in enumerate(words))
+    return any(w in DOUBT and not request_modal(words, k) or w == "sure" and words[k - 1:k] == ["not"]
+               for k, w in enumerate(words))  # "I'm not sure": a hedge ("make sure" is none)

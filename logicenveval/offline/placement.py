@@ -62,6 +62,8 @@ from logicenveval.offline.sentences import (
     PREP_IN,
     PREP_ON,
     STATE_WORDS,
+    TAKEN_WORDS,
+    TAKING_FROM,
     determiner,
     expand,
     foreign,
@@ -392,8 +394,13 @@ def _read_sentence(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Re
     _frame(sent, reading, body_start)
     _room_words(sent, lex, reading)
     _identifying_aside(sent, lex, catalog, reading)
-    for clause in _clauses(words, body_start, len(words)):
+    spans = _clauses(words, body_start, len(words))
+    # a condition or a doubt anywhere in the sentence governs what its instructions take for granted
+    plain = not any(c.mood == "condition" or c.doubted for c in spans)
+    for clause in spans:
         ms = [m for m in sent.mentions if clause.start <= m.start < clause.end]
+        if clause.mood == "instruction" and plain:
+            _taken_from(sent, clause, ms, lex, catalog, reading)
         if clause.mood != "condition":
             _locative(sent, clause, ms, lex, catalog, reading)
         if clause.mood != "statement":
@@ -1589,6 +1596,8 @@ def _in_room(sent: _Sentence, clause: Span, ms: list[Mention], reading: _Reading
             continue
         if _moved(words, a.start, clause) or _indefinite_doubt(sent, a):
             continue
+        if clause.doubted and clause.mood == "statement":
+            continue  # "I believe I may have left my watch in the flat": a hedged place is open
         reading.room("settled", a.roles[0], b.roles[0])  # a noun phrase's own place, whatever the mood
 
 
@@ -1635,6 +1644,36 @@ def _resting(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, cat
         fact = _contain(catalog, lex, a.roles[0], b.roles[0], "in" if whole is not None else between[0])
         if fact is not None:  # a condition on its state takes its place for granted: a statement
             reading.place("settled" if described else "presumed", a.roles[0], fact)
+
+
+def _taken_from(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
+                reading: _Reading) -> None:
+    """"Take a spare fuse from the drawer", "grab a clean towel out of the cupboard": an
+    instruction of taking (`TAKING_FROM`, its verb opening the clause) presupposes the thing is
+    in or on its source, so the scene puts it there (`presumed`). Called only for a sentence with
+    no condition and no doubt ("if there's one in the drawer, take it", "take one from the drawer
+    if you can find one" leave it open)."""
+    words = sent.words
+    lead = clause.start
+    while lead < clause.end and (words[lead] in LEAD_INS or words[lead] in (",", "just", "simply")):
+        lead += 1
+    if lead >= clause.end or words[lead] not in TAKING_FROM:
+        return
+    for a, b in zip(ms, ms[1:], strict=False):
+        if a.kind != "role" or b.kind != "role" or len(a.roles) != 1 or len(b.roles) != 1:
+            continue
+        if not all(w in TAKEN_WORDS for w in words[lead + 1:a.start]):
+            continue  # the verb's own object only: "take the towel to the shelf from ..." is no source
+        between = [w for w in words[a.end:b.start] if w not in ARTICLES]
+        if between not in (["from"], ["out", "of"], ["off"]):
+            continue
+        cat = catalog.get(str(lex.roles[a.roles[0]]["category"]))
+        if cat is None or not cat.pickable:
+            continue
+        fact = _contain(catalog, lex, a.roles[0], b.roles[0], "on" if between == ["off"] else "in")
+        if fact is not None:
+            reading.place("presumed", a.roles[0], fact)
+        return
 
 
 #: verbs of seeing that point a thing out to the listener ("see that bottle on the bench?")

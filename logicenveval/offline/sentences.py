@@ -37,6 +37,13 @@ STATE_WORDS: dict[str, tuple[str, bool]] = {
 #: the personal pronouns that can be a clause's subject; each reader adds the other subjects it
 #: needs (`clauses.SUBJECTS`, `placement.SUBJECT_PRONOUNS`, `naming`'s relative-clause test)
 PERSONAL_SUBJECTS = frozenset({"i", "we", "you", "he", "she", "they"})
+#: verbs of taking a thing from where it is: an instruction "take a spare fuse from the drawer",
+#: "grab a clean towel from the cupboard" presupposes the thing is in or on its source, a stated
+#: fact and no question (`analysis.Fact.presupposed`, `placement._taken_from`)
+TAKING_FROM = frozenset({"take", "grab", "fetch", "get", "pull", "pick", "collect", "retrieve", "remove"})
+#: the words that may stand between such a verb and its thing ("take a spare one", "grab two new")
+TAKEN_WORDS = frozenset({"a", "an", "the", "one", "some", "two", "three", "spare", "new", "fresh", "clean", "another",
+                         "extra", "up", "out", "down", "of", "your", "my", "our"})
 #: action verbs before an object: a location after the object is a goal
 ACTIONS = frozenset(
     ["put", "place", "move", "take", "bring", "return", "carry", "drop", "set", "lay", "stand", "hang", "throw", "toss", "tuck", "store", "stow", "leave", "fold", "bin", "transfer", "slide", "shove", "push", "pour", "empty", "fill", "refill", "sort", "give", "file", "load", "unload", "shelve",
@@ -398,6 +405,11 @@ _VARIANT = re.compile(rf"\b(?:{'|'.join(_SPELLED)})\b", re.I)
 #: "any other <kind>", a class ("If the bread is anywhere other than the counter, or we have no
 #: bread at all" lost its "no bread")
 _OTHER_THAN = re.compile(r"\b(anywhere|somewhere|everywhere|nowhere)\s+other\s+than\b", re.I)
+#: a place said to be checked or confirmed ("1 towel, to be checked on the drying rack", "the
+#: spare key, still to be confirmed in the drawer") is left open, as "may be" leaves it: the
+#: writer does not know yet (read as "1 towel may be on the drying rack")
+_TO_BE_CHECKED = re.compile(r",?\s+(?:still\s+|yet\s+)?to\s+be\s+(?:checked|confirmed|verified|double-checked)"
+                            r"\s+(?=(?:on|in|inside|under|by|near|at)\s)", re.I)
 
 
 #: a formula of politeness before an instruction's verb ("be good enough to examine the towel",
@@ -692,12 +704,12 @@ def unquote(text: str) -> str:
     common word ("the dishwasher's already going": "running", `PREDICATE_STATES`); a table of items and places as its sentences
     (`detable`); a rule written as a record of keyed lines as its conditional (`derecord`); a heading answered by a verb with no subject of its own with the heading as that
     subject (`_SUBJECTLESS`); a chat message's `*`-correction made in the message it corrects
-    (`starred`), without a chat line's time stamp (`_TIME_STAMP`) and without a reference work's
+    (`starred`), a place "to be checked" as one that "may be" (`_TO_BE_CHECKED`), without a chat line's time stamp (`_TIME_STAMP`) and without a reference work's
     citation marks (`_CITATION`)."""
     text = _OCCASION_IF.sub(_occasion_if, text)
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
     text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_modern(_NATIVE_IF.sub(_native_if, text))))))
-    text = _OTHER_THAN.sub(r"\1 else than", text)
+    text = _TO_BE_CHECKED.sub(" may be ", _OTHER_THAN.sub(r"\1 else than", text))
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), _SPELLED[m.group(0).lower()]), text))
     text = starred(_TIME_STAMP.sub(r"\1", _CITATION.sub("", text)))
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))

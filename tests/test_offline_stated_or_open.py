@@ -1,0 +1,86 @@
+"""What a sentence asserts and what it leaves open (issue 47 item 2: a stated fact is a fact, a
+condition or a question is a factor), by structure: the source of an instruction of taking, a
+hedged place, a place "to be checked". Each rule on sentences of at least two texts, with near
+misses where a condition or a doubt governs the same words."""
+
+from __future__ import annotations
+
+from reading import asks, factors, placed
+
+# --- the source of an instruction of taking is presupposed --------------------------------------
+
+
+def test_the_source_of_an_instruction_of_taking_is_stated_not_asked() -> None:
+    # issue 47's garage: "a spare fuse ... from the drawer" was a yes/no factor
+    garage = "Take a spare fuse from the drawer and replace the fuse that is blown."
+    assert not asks(garage, ("garage",), "inside(spare_fuse, drawer)")
+    assert "inside(spare_fuse, drawer)" in placed(garage, ("garage",))
+    bathroom = "Please grab a fresh towel out of the cabinet and hang it on the rail."
+    assert "inside(towel, cabinet)" in placed(bathroom, ("bathroom",))
+    shelf = "Just grab a towel from the shelf, then hang it on the rail."
+    assert not any("on(towel, wall_shelf)" in v for v in factors(shelf, ("bathroom",)).values())
+
+
+def test_a_source_under_a_condition_or_a_doubt_stays_open() -> None:
+    for text in ("Take a spare fuse from the drawer if you can find one and replace the fuse that is blown.",
+                 "If there's one in the drawer, take a spare fuse from the drawer.",
+                 "Maybe take a spare fuse from the drawer."):
+        assert asks(text, ("garage",), "inside(spare_fuse, drawer)"), text
+        assert "inside(spare_fuse, drawer)" not in placed(text, ("garage",)), text
+    # someone's taking in a condition is no instruction
+    cond = "If you take a towel from the shelf, hang it on the rail."
+    assert asks(cond, ("bathroom",), "on(towel, wall_shelf)")
+    # a goal is no source
+    assert not placed("Take the towel to the shelf.", ("bathroom",))
+
+
+# --- a hedged place is open ---------------------------------------------------------------------
+
+
+def test_a_hedged_place_in_the_one_room_asks_whether_the_thing_is_there() -> None:
+    # dev 16 flatlet_tenancy_dispute_letter (a landlord's letter)
+    flatlet = ("Thirdly, I believe I may have left my wristwatch in the flatlet during the gas safety visit "
+               "on 12 November. If it is there, it will be on the armchair. Please put it on top of the "
+               "sideboard.")
+    assert asks(flatlet, ("flatlet",), "exists(watch)")
+    assert "in_room(watch, flatlet)" not in placed(flatlet, ("flatlet",))
+    for text in ("I think I may have left my wallet in the bathroom. If it is there, put it on the shelf.",
+                 "I'm not sure my wallet is in the bathroom. If it is there, put it on the shelf.",
+                 "I believe my wallet is in the bathroom; if it is, put it on the shelf."):
+        assert asks(text, ("bathroom",), "exists(wallet)"), text
+        assert "in_room(wallet, bathroom)" not in placed(text, ("bathroom",)), text
+
+
+def test_a_plain_place_is_stated_and_a_room_among_several_is_a_place() -> None:
+    plain = "My wallet is in the bathroom. Put it on the shelf."
+    assert "in_room(wallet, bathroom)" in placed(plain, ("bathroom",))
+    assert not factors(plain, ("bathroom",))
+    # with two rooms, being in one of them is a place, not presence
+    two = "I think I may have left my wallet in the bathroom. If it is there, put it on the shelf."
+    assert not asks(two, ("bathroom", "hall"), "exists(wallet)")
+    assert "in_room(wallet, bathroom)" not in placed(two, ("bathroom", "hall"))
+    # "make sure" is no hedge
+    assert "in_room(wallet, bathroom)" in placed("Make sure of this: my wallet is in the bathroom.",
+                                                  ("bathroom",))
+
+
+# --- a place to be checked is open --------------------------------------------------------------
+
+
+def test_a_place_to_be_checked_is_asked_not_stated() -> None:
+    # dev 15 laundry_drying_rack_d15 (a recipe's ingredients)
+    laundry = ("INGREDIENTS\n1 towel, to be checked on the drying rack\n\nMETHOD\n1. Once the towel is dry, "
+               "bring it in to the utility shelf; a wet towel stays on the rack.")
+    assert asks(laundry, ("laundry_room",), "on(towel, drying_rack)")
+    key = "The spare key, still to be confirmed in the drawer. If it is there, put it on the hook."
+    assert asks(key, ("hall",), "inside(spare_key, drawer)")
+    assert "inside(spare_key, drawer)" not in placed(key, ("hall",))
+
+
+def test_a_place_said_outright_or_a_check_of_something_else_is_no_doubt() -> None:
+    stated = "The towel is on the drying rack. Once it is dry, bring it in to the utility shelf."
+    assert "on(towel, drying_rack)" in placed(stated, ("laundry_room",))
+    assert not asks(stated, ("laundry_room",), "on(towel, drying_rack)")
+    # "to be checked" before no place leaves every place as it was
+    later = "The towel is to be checked on arrival. It hangs on the drying rack."
+    assert "on(towel, drying_rack)" in placed(later, ("laundry_room",))
