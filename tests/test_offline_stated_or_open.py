@@ -5,7 +5,9 @@ misses where a condition or a doubt governs the same words."""
 
 from __future__ import annotations
 
-from reading import asks, factors, placed
+from reading import CATALOG, asks, brief, factors, named, placed
+
+from logicenveval.offline.analysis import analyse
 
 # --- the source of an instruction of taking is presupposed --------------------------------------
 
@@ -84,3 +86,71 @@ def test_a_place_said_outright_or_a_check_of_something_else_is_no_doubt() -> Non
     # "to be checked" before no place leaves every place as it was
     later = "The towel is to be checked on arrival. It hangs on the drying rack."
     assert "on(towel, drying_rack)" in placed(later, ("laundry_room",))
+
+
+# --- a quoted report answered by "Then" is the reply's premise ----------------------------------
+
+
+def test_a_quoted_report_answered_by_then_is_asked() -> None:
+    # dev 15 guest_suite_email_chain (an email reply under a quoted message)
+    suite = ("On Fri, Sam wrote:\n> Also the curtains were open when I walked past this morning\n\n"
+             "Then could you close them? The Hendersons like it dark. If somebody has drawn them already, fine.")
+    assert asks(suite, ("guest_suite",), "state(curtain, open)")
+    fridge = "On Monday, Jo wrote:\n> the fridge was open when I left.\n\nThen please shut it."
+    assert asks(fridge, ("kitchen",), "state(fridge, open)")
+    telly = "> I think the telly was still on when I left\n\nThen switch it off please."
+    assert asks(telly, ("living_room",), "state(television, toggled_on)")
+
+
+def test_a_quoted_report_answered_without_then_or_a_plain_then_asks_nothing() -> None:
+    assert not factors("On Monday, Jo wrote:\n> the fridge was open when I left.\n\nPlease shut it.", ("kitchen",))
+    assert not factors("The fridge is open. Then close it.", ("kitchen",))
+
+
+# --- a forum quote's first person speaks of another home ----------------------------------------
+
+
+def test_a_forum_quotes_first_person_speaks_of_another_home() -> None:
+    # dev 15 bedroom_nightstand_reset_d15 (a forum reply)
+    forum = ("Quote from: nightowl_kat on November 29, 2026, 09:03:12 PM\n> Mine keeps shoving my phone in a drawer. "
+             "What do you put for the phone??\n\nHonestly the phone is the whole trick. My phone may be lying on "
+             "the bed. If it's switched on, it goes on the nightstand. Any other book goes into the nightstand "
+             "drawer - open the drawer unless it's already open.")
+    assert "drawer" not in named(forum, ("bedroom",))
+    assert asks(forum, ("bedroom",), "on(cell_phone, bed)")
+    assert asks(forum, ("bedroom",), "state(nightstand, open)")
+    mug = ("Quote from: mossy_pete on March 3, 2026\n> My robot keeps putting my mug in the cupboard. Any tips?\n\n"
+           "Sure. My mug may be on the desk. If it is dirty, it goes in the sink.")
+    assert asks(mug, ("kitchen",), "on(mug, desk)")
+    assert not any("inside(mug, cabinet)" in v for v in factors(mug, ("kitchen",)).values())
+
+
+def test_an_email_quotes_first_person_and_a_forum_quote_in_the_third_stay() -> None:
+    # an email quote between members of one household speaks of the same scene
+    telly = "On Monday, Jo wrote:\n> I think the telly was still on when I left\n\nThen switch it off please."
+    assert asks(telly, ("living_room",), "state(television, toggled_on)")
+    third = ("Quote from: mossy_pete on March 3, 2026\n> The keys keep ending up on the sofa.\n\n"
+             "If the keys are on the floor, the robot hangs them on the hook.")
+    assert any("on(keys, sofa)" in values for values in factors(third, ("hall",)).values())
+
+
+# --- a condition left without its consequence, answered by "Then ..." ---------------------------
+
+
+def _contexts(text: str, rooms: tuple[str, ...]) -> dict[str, list[tuple[str, frozenset[str]]]]:
+    return {f.id: f.context for f in analyse(brief(text, rooms), CATALOG).factors}
+
+
+def test_a_sentence_opening_with_then_answers_a_condition_left_open() -> None:
+    # dev 16 kitchen_breakfast_prep_d16 (a mission-control loop)
+    eggs = ("EGGS are conditional: only if there are eggs in the fridge. Then the sequence is: open the fridge; "
+            "put the frying pan on the stove, unless it is already there; take an egg and put it in the pan.")
+    assert _contexts(eggs, ("kitchen",))["pan_on_stove"] == [("egg_inside_fridge", frozenset({"yes"}))]
+    lamp = ("Only if the lamp is on. Then the steps are: switch it off; close the curtains unless they are "
+            "already closed.")
+    assert _contexts(lamp, ("bedroom",))["curtain_open"] == [("table_lamp_toggled_on", frozenset({"yes"}))]
+
+
+def test_then_after_a_condition_with_its_own_consequence_starts_afresh() -> None:
+    done = ("If the lamp is on, switch it off. Then close the curtains unless they are already closed.")
+    assert _contexts(done, ("bedroom",))["curtain_open"] == []

@@ -1808,6 +1808,10 @@ def _existential(before: list[str]) -> bool:
     return False
 
 
+#: a sentence opening with "then" (after a condition left without its consequence)
+_THEN_OPENS = re.compile(r"^\W*then\b", re.I)
+
+
 def _taken(words: list[str], start: int) -> bool:
     """Whether the thing at `start` is the object of an instruction of taking (`TAKING_FROM`:
     "take a spare fuse", "grab two clean towels", "get one of the bags"), its verb the clause's
@@ -2374,14 +2378,24 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     #: ("Clean the mirror if it is dirty. Use the cloth if we still have one; if there is no
     #: cloth, ..."): an absence stated there is only asked under those conditions
     carried: list[tuple[tuple[str, str, str], bool, str]] = []
+    roles_of: dict[int, set[str]] = {}
+    for cl in clauses:
+        roles_of.setdefault(cl.sentence, set()).add(cl.role)
     for ci, cl in enumerate(clauses):
         if cl.sentence != current_sentence:
+            # "EGGS are conditional: only if there are eggs in the fridge. Then the sequence is:
+            # ... put the frying pan on the stove, unless it is already there": a sentence of a
+            # condition with no consequence of its own, answered by a sentence opening with
+            # "Then", is that sentence's condition; its factors are asked under it
+            premise = cl.sentence == current_sentence + 1 and _THEN_OPENS.match(cl.text) is not None and (
+                "condition" in roles_of.get(current_sentence, set())
+                and not roles_of.get(current_sentence, set()) & {"consequence", "else"})
             # ... unless it speaks of a situation of its own ("Finally, a dirty mirror is cleaned:")
             # ("Mirror dirty? Clean it. Use the cloth if we still have one.": an instruction
             # standing alone after a question passes its conditions on)
             carried = (context or carried) if cl.role in ("statement", "consequence") and not any(
                 not f.goal and not f.derived and not f.home for f in cl.facts) else []
-            current_sentence, context = cl.sentence, []
+            current_sentence, context = cl.sentence, (context if premise else [])
         elif (cl.role == "condition" and ci >= 2 and clauses[ci - 1].role == "consequence"
               and clauses[ci - 2].role == "condition" and clauses[ci - 2].sentence == cl.sentence
               and (clauses[ci - 1].cue != cl.cue or (

@@ -163,6 +163,32 @@ _WITH = re.compile(r"\bw/\s*", re.I)
 #: the ">" that opens each quoted line; neither says anything of the scene
 _ATTRIBUTION = re.compile(r"^[ \t>]*On\b[^\n]{0,80}\bwrote:[ \t]*$", re.M)
 _QUOTE_MARK = re.compile(r"^[ \t]*(?:>[ \t]?)+", re.M)
+#: a quoted line that states something, answered by a reply opening with "Then" ("> Also the
+#: curtains were open when I walked past this morning" / "Then could you close them?"): the
+#: writer takes the other's report as the premise of the reply, not as a fact of their own, as
+#: "Curtains open? Then ..." does; read as a question ("... this morning? Then could you ...")
+#: a forum's quote of another member's post ("Quote from: nightowl_kat on November 29, ..." and the
+#: ">" lines under it): what its writer says in the first person ("Mine keeps shoving my phone in
+#: a drawer") speaks of their own home, not of the scene the reply describes, whose things the
+#: reply names as its own ("My phone may be lying on the bed"); those sentences are dropped
+_FORUM_QUOTE = re.compile(r"^[ \t]*Quote from:[^\n]*\n(?P<lines>(?:[ \t]*>[^\n]*(?:\n|$))+)", re.M | re.I)
+_FIRST_PERSON = re.compile(r"\b(?:i|i'm|i've|i'd|me|my|mine|we|we're|we've|our|ours)\b", re.I)
+_QUOTED_SENTENCE = re.compile(r"[^.!?\n]+(?:[.!?]+|$)")
+
+
+def _forum_quote(m: re.Match[str]) -> str:
+    """The quoted lines of `_FORUM_QUOTE` without their sentences in the first person."""
+    lines = []
+    for line in m.group("lines").splitlines():
+        body = _QUOTE_MARK.sub("", line)
+        kept = "".join(x for x in _QUOTED_SENTENCE.findall(body) if not _FIRST_PERSON.search(x)).strip()
+        if kept:
+            lines.append(f"> {kept}")
+    return "".join(f"{x}\n" for x in lines)
+
+
+_QUOTED_PREMISE = re.compile(r"^(?P<q>[ \t]*>[^\n]*?[^\s?!.:>])[ \t]*\.?[ \t]*(?P<gap>\n(?:[ \t]*\n)*)"
+                             r"(?=[ \t]*Then\b)", re.M)
 #: a reference work's marks after a word or a full stop (an encyclopedia article, a report: "shut
 #: afterwards.[3] The bat ...", "is meant to be displayed.[citation needed]", "on the bar[a]"):
 #: they say where a claim comes from, never what it claims, and hide the sentence's end
@@ -687,7 +713,7 @@ def unquote(text: str) -> str:
     sentence's end (`_EMOJI`), a comma before the next "state ->" case as ";"
     (`_CASE_AFTER_COMMA`), "the X on the Y, if there is one" as "if there is an X on the Y"
     (`_IF_ANY`), a condition put first whose pronoun points forward to a result not said yet after
-    its main clause (`_FRONTED_ALREADY`), without an email's quoting marks: a reply above a quoted message reads as one
+    its main clause (`_FRONTED_ALREADY`), without an email's quoting marks (a forum quote's sentences in the first person dropped: `_FORUM_QUOTE`; a quoted statement a reply answers with "Then" as a question: `_QUOTED_PREMISE`): a reply above a quoted message reads as one
     text ("> On Monday, Jo wrote:" is no sentence; "> Could you tidy ..." is "Could you tidy ...");
     without the labels of lettered or numbered items (an item's closing semicolon a full stop:
     `_ITEM_END`); a place the speaker corrects dropped for the
@@ -715,7 +741,8 @@ def unquote(text: str) -> str:
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
     plain = _IF_ANY.sub(_if_any, plain)
     plain = _FRONTED_ALREADY.sub(_postposed, plain)
-    plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _ITEM_END.sub(".\n", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", plain)))))
+    plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _ITEM_END.sub(".\n", _QUOTE_MARK.sub("", _QUOTED_PREMISE.sub(
+        r"\g<q>?\g<gap>", _FORUM_QUOTE.sub(_forum_quote, _ATTRIBUTION.sub("", plain)))))))
     plain = _unabbreviated(plain)
     plain = _PREDICATE_STATE.sub(lambda m: m.group(1) + PREDICATE_STATES[_ARTICLE_IN.sub("in ", m.group(2).lower())], plain)
     plain = _EMPHATIC_DO.sub("", plain)
