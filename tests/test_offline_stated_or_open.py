@@ -154,3 +154,25 @@ def test_a_sentence_opening_with_then_answers_a_condition_left_open() -> None:
 def test_then_after_a_condition_with_its_own_consequence_starts_afresh() -> None:
     done = ("If the lamp is on, switch it off. Then close the curtains unless they are already closed.")
     assert _contexts(done, ("bedroom",))["curtain_open"] == []
+
+
+# --- a speaker's belief hedges the factor reader too -------------------------------------------
+
+
+def test_a_speakers_belief_leaves_the_place_open() -> None:
+    shed = "I think I left the torch on the shelf. If it is there, put it in the box."
+    assert asks(shed, ("shed",), "on(flashlight, wall_shelf)")
+    kitchen = "I reckon the mug is on the desk. If it is there, put it in the sink."
+    assert asks(kitchen, ("kitchen",), "on(mug, desk)")
+    assert "on(mug, desk)" not in placed(kitchen, ("kitchen",))
+    unsure = "I'm not sure the torch is on the shelf. If it is there, put it in the box."
+    assert asks(unsure, ("shed",), "on(flashlight, wall_shelf)")
+
+
+def test_a_place_said_without_a_belief_is_stated() -> None:
+    plain = "The mug is on the desk. Put it in the sink."
+    assert "on(mug, desk)" in placed(plain, ("kitchen",))
+    assert not factors(plain, ("kitchen",))
+    # "make sure" is no doubt of the speaker's
+    sure = "Make sure the mug is in the sink. The mug is on the desk."
+    assert "on(mug, desk)" in placed(sure, ("kitchen",))

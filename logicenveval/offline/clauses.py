@@ -34,6 +34,7 @@ from logicenveval.offline.lexicon import WORD, tokens
 from logicenveval.offline.sentences import (
     ACTIONS,
     ARROW,
+    BELIEFS,
     PERSONAL_SUBJECTS,
     STATE_WORDS,
     expand,
@@ -682,7 +683,10 @@ def uncertain_words(words: list[str]) -> set[str]:
     """The words of `UNCERTAIN` that make a clause doubtful: a modal that opens a polite request
     ("might you scrub it", "could you wipe it") asks the listener to act, it doubts nothing of
     the scene ("the bowl might be dirty" still does)."""
-    return {w for k, w in enumerate(words) if w in UNCERTAIN and not request_modal(words, k)}
+    return {w for k, w in enumerate(words) if w in UNCERTAIN and not request_modal(words, k)
+            # a speaker's belief ("I think I left it on the shelf", "we reckon", "I'm not sure")
+            or w in BELIEFS and k > 0 and words[k - 1] in PERSONAL_SUBJECTS
+            or w == "sure" and words[k - 1:k] == ["not"]}
 
 
 def request_modal(words: list[str], k: int) -> bool:

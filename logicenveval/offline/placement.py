@@ -57,6 +57,7 @@ from logicenveval.offline.lexicon import (
 from logicenveval.offline.sentences import (
     ACTIONS,
     ARROW_MARK,
+    BELIEFS,
     NORM_ADVERBS,
     PERSONAL_SUBJECTS,
     PREP_IN,
@@ -1032,7 +1033,9 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
             subjects = _gloss(sent, ms, found[1].end, clause.end)  # "The kaldero is on the stove, yung big pot"
         first = subjects[0].start if subjects else start
         said = words[max(lo, first - 3):found[1].end]
-        if not subjects or words[clause.start] == "there" or doubts(said) or habitual(said):
+        # (a speaker's belief before the subject doubts it too: "I think I left the torch on the shelf")
+        believed = _believed(words[clause.start:first])
+        if not subjects or words[clause.start] == "there" or doubts(said) or habitual(said) or believed:
             lo = found[1].end
             continue  # no subject, an existential (`_existential`), a doubt ("may have been put") or a habit
         prep, holder = found
@@ -1042,6 +1045,13 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         lo = _gapped(sent, clause, ms, holder.end, kind, lex, catalog, reading)
     if clause.mood == "statement":
         _fragment(sent, clause, ms, lex, catalog, reading)
+
+
+def _believed(lead: list[str]) -> bool:
+    """Whether the words before a statement's subject are a speaker's belief (`BELIEFS` after a
+    subject pronoun: "I think", "we reckon", "I'm not sure"), which hedges what follows."""
+    return any(w in BELIEFS and k > 0 and lead[k - 1] in PERSONAL_SUBJECTS for k, w in enumerate(lead)) or (
+        "sure" in lead and "not" in lead)
 
 
 def _held_list(words: list[str], clause: Span, start: int) -> bool:

@@ -37,6 +37,9 @@ STATE_WORDS: dict[str, tuple[str, bool]] = {
 #: the personal pronouns that can be a clause's subject; each reader adds the other subjects it
 #: needs (`clauses.SUBJECTS`, `placement.SUBJECT_PRONOUNS`, `naming`'s relative-clause test)
 PERSONAL_SUBJECTS = frozenset({"i", "we", "you", "he", "she", "they"})
+#: verbs of a speaker's belief: after a subject pronoun ("I think", "we reckon", "I believe") they
+#: hedge what follows, as "may" does (`clauses.uncertain_words`, `placement._believed`)
+BELIEFS = frozenset({"think", "believe", "reckon", "suppose", "guess", "expect"})
 #: verbs of taking a thing from where it is: an instruction "take a spare fuse from the drawer",
 #: "grab a clean towel from the cupboard" presupposes the thing is in or on its source, a stated
 #: fact and no question (`analysis.Fact.presupposed`, `placement._taken_from`)
