@@ -176,3 +176,17 @@ def test_a_place_said_without_a_belief_is_stated() -> None:
     # "make sure" is no doubt of the speaker's
     sure = "Make sure the mug is in the sink. The mug is on the desk."
     assert "on(mug, desk)" in placed(sure, ("kitchen",))
+
+
+def test_the_state_a_thing_is_taken_in_from_its_source_is_presupposed() -> None:
+    towel = "Grab a clean towel from the cupboard and hang it on the rail."
+    assert not asks(towel, ("bathroom",), "state(towel, dirty)")
+    cloth = "Take a dry cloth out of the drawer and wipe the table."
+    assert not asks(cloth, ("kitchen",), "state(cloth, wet)")
+    assert "inside(cloth, drawer)" in placed(cloth, ("kitchen",))
+
+
+def test_a_state_with_no_source_or_under_a_condition_is_still_asked() -> None:
+    assert asks("Take a dirty towel to the hamper.", ("bathroom",), "state(towel, dirty)")
+    governed = "Take a clean towel from the cupboard if there is one and hang it on the rail."
+    assert asks(governed, ("bathroom",), "state(towel, dirty)")

@@ -1319,12 +1319,16 @@ class _Reader:
             if words[j] in STATE_WORDS:
                 found.append((words[j], False, True))
             j -= 1
+        # "grab a clean towel from the cupboard": the state a thing is taken in from its source is
+        # presupposed with the source (`Fact.presupposed`)
+        source = words[m.end:m.end + 1] == ["from"] or words[m.end:m.end + 2] == ["out", "of"]
+        taken = source and _taken(words, m.start)
         out = []
         for w, neg, modifier in found:
             flag, pol = STATE_WORDS[w]
             for r in m.roles:
                 out.append(Fact(r, f"state({r}, {flag})", "state", flag, negated=neg != (not pol),
-                                modifier=modifier))
+                                modifier=modifier, presupposed=taken and modifier))
         return out
 
     def _used(self, words: list[str], m: Mention, negated: bool) -> list[Fact]:
@@ -1817,8 +1821,8 @@ def _taken(words: list[str], start: int) -> bool:
     "take a spare fuse", "grab two clean towels", "get one of the bags"), its verb the clause's
     first word after lead-ins; "if you take a fuse", "the kids take a fuse" are no instruction."""
     j = start - 1
-    while j >= 0 and words[j] in TAKEN_WORDS:
-        j -= 1
+    while j >= 0 and (words[j] in TAKEN_WORDS or words[j] in STATE_WORDS and words[j] not in ("on", "off")):
+        j -= 1  # (a state it is taken in: "take a dry cloth")
     if j < 0 or words[j] not in TAKING_FROM:
         return False
     lead = j - 1
