@@ -64,6 +64,8 @@ from logicenveval.offline.sentences import (
     PREP_IN,
     PREP_ON,
     STATE_WORDS,
+    TAKEN_WORDS,
+    TAKING_FROM,
     TEND,
     code_switched,
     determiner,
@@ -181,6 +183,10 @@ class Fact:
     definite: bool = False
     #: where the thing is kept or lives (`HOMES`): its norm, never a situation to ask about
     home: bool = False
+    #: the source of an instruction of taking ("take a spare fuse from the drawer"): the
+    #: instruction presupposes the thing is there, so in a plain instruction (no condition or
+    #: doubt governs it) it is a stated fact, not a factor
+    presupposed: bool = False
 
 
 @dataclass(frozen=True)
@@ -1279,7 +1285,8 @@ class _Reader:
                     else:
                         cond = f"inside({s}, {t})"
                     out.append(Fact(s, cond, "location", t, negated=negated and not goal, goal=goal,
-                                    modifier=modifier, definite=definite, home=bool(set(skipped) & HOMES)))
+                                    modifier=modifier, definite=definite, home=bool(set(skipped) & HOMES),
+                                    presupposed=prep == "from" and _taken(words, m.start)))
             k = target.end
             alternative = k < len(words) and words[k] == "or"
             while k < len(words) and words[k] in {"or", "and", "either", "the", "a"}:
@@ -1347,12 +1354,16 @@ class _Reader:
             if words[j] in STATE_WORDS:
                 found.append((words[j], False, True))
             j -= 1
+        # "grab a clean towel from the cupboard": the state a thing is taken in from its source is
+        # presupposed with the source (`Fact.presupposed`)
+        source = words[m.end:m.end + 1] == ["from"] or words[m.end:m.end + 2] == ["out", "of"]
+        taken = source and _taken(words, m.start)
         out = []
         for w, neg, modifier in found:
             flag, pol = STATE_WORDS[w]
             for r in m.roles:
                 out.append(Fact(r, f"state({r}, {flag})", "state", flag, negated=neg != (not pol),
-                                modifier=modifier))
+                                modifier=modifier, presupposed=taken and modifier))
         return out
 
     def _used(self, words: list[str], m: Mention, negated: bool) -> list[Fact]:
@@ -1834,6 +1845,25 @@ def _existential(before: list[str]) -> bool:
             continue
         return True
     return False
+
+
+#: a sentence opening with "then" (after a condition left without its consequence)
+_THEN_OPENS = re.compile(r"^\W*then\b", re.I)
+
+
+def _taken(words: list[str], start: int) -> bool:
+    """Whether the thing at `start` is the object of an instruction of taking (`TAKING_FROM`:
+    "take a spare fuse", "grab two clean towels", "get one of the bags"), its verb the clause's
+    first word after lead-ins; "if you take a fuse", "the kids take a fuse" are no instruction."""
+    j = start - 1
+    while j >= 0 and (words[j] in TAKEN_WORDS or words[j] in STATE_WORDS and words[j] not in ("on", "off")):
+        j -= 1  # (a state it is taken in: "take a dry cloth")
+    if j < 0 or words[j] not in TAKING_FROM:
+        return False
+    lead = j - 1
+    while lead >= 0 and words[lead] in LEAD_INS | SOFTENERS:
+        lead -= 1
+    return lead < 0 or words[lead] in (",", ";", ":", "-", "(")
 
 
 #: verbs of carrying a thing somewhere, whose list after a colon says where each kind of it goes
@@ -2403,14 +2433,24 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     #: ("Clean the mirror if it is dirty. Use the cloth if we still have one; if there is no
     #: cloth, ..."): an absence stated there is only asked under those conditions
     carried: list[tuple[tuple[str, str, str], bool, str]] = []
+    roles_of: dict[int, set[str]] = {}
+    for cl in clauses:
+        roles_of.setdefault(cl.sentence, set()).add(cl.role)
     for ci, cl in enumerate(clauses):
         if cl.sentence != current_sentence:
+            # "EGGS are conditional: only if there are eggs in the fridge. Then the sequence is:
+            # ... put the frying pan on the stove, unless it is already there": a sentence of a
+            # condition with no consequence of its own, answered by a sentence opening with
+            # "Then", is that sentence's condition; its factors are asked under it
+            premise = cl.sentence == current_sentence + 1 and _THEN_OPENS.match(cl.text) is not None and (
+                "condition" in roles_of.get(current_sentence, set())
+                and not roles_of.get(current_sentence, set()) & {"consequence", "else"})
             # ... unless it speaks of a situation of its own ("Finally, a dirty mirror is cleaned:")
             # ("Mirror dirty? Clean it. Use the cloth if we still have one.": an instruction
             # standing alone after a question passes its conditions on)
             carried = (context or carried) if cl.role in ("statement", "consequence") and not any(
                 not f.goal and not f.derived and not f.home for f in cl.facts) else []
-            current_sentence, context = cl.sentence, []
+            current_sentence, context = cl.sentence, (context if premise else [])
         elif (cl.role == "condition" and ci >= 2 and clauses[ci - 1].role == "consequence"
               and clauses[ci - 2].role == "condition" and clauses[ci - 2].sentence == cl.sentence
               and (clauses[ci - 1].cue != cl.cue or (
@@ -2447,6 +2487,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             if f.goal or not (conditional or (f.modifier and cl.role not in ("scene",)
                                               # "The tablet is lying on the chair.": stated, kept
                                               and not ((f.definite or _norm(cl)) and cl.role == "statement")
+                                              # "Take a spare fuse from the drawer and ...": a
+                                              # plain instruction takes its source for granted
+                                              and not (f.presupposed and cl.role == "statement")
                                               # "A dirty mug is sitting on the desk": a thing the
                                               # statement places outright is as it describes it
                                               and not (cl.role == "statement" and not f.home
@@ -2457,6 +2500,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                                                        and not _moved(cl, f.subject)))
                               or (cl.role == "else" and f.kind != "location")):
                 continue
+            if conditional and f.kind == "location" and not f.goal and f.condition.startswith("in_room(") \
+                    and list(brief.get("rooms") or []) == [f.key]:
+                # "I believe I may have left my wristwatch in the flatlet. If it is there, ...": in a
+                # task of one room, being in that room is being there at all
+                f = Fact(f.subject, f"exists({f.subject})", "exists", negated=f.negated)
             slot = (f.subject, f.kind, f.key if f.kind in ("state", "attr") else "")
             entry = found.setdefault(slot, {"order": ci, "sentence": cl.sentence, "clause": ci,
                                            "targets": [], "values": [],

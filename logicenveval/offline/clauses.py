@@ -34,6 +34,7 @@ from logicenveval.offline.lexicon import WORD, tokens
 from logicenveval.offline.sentences import (
     ACTIONS,
     ARROW,
+    BELIEFS,
     PERSONAL_SUBJECTS,
     STATE_WORDS,
     expand,
@@ -108,7 +109,10 @@ IMPERATIVES = ACTIONS | frozenset({
     "let", "try", "give", "pour", "empty", "toss", "please", "examine", "inspect"})
 #: words that make a clause (or the rest of a list) doubtful: nothing after them is placed
 DOUBT = frozenset({"may", "might", "could", "maybe", "perhaps", "possibly", "probably", "likely",
-                   "sometimes", "whether", "any", "think", "guess", "somewhere"})
+                   "sometimes", "whether", "any", "think", "guess", "somewhere",
+                   # a speaker's belief is a hedge too: "I believe I left my watch in the flat",
+                   # "I reckon the torch is in the shed", "I'm unsure it is on the shelf"
+                   "believe", "reckon", "suppose", "unsure"})
 #: how a polite request opens ("Could you sort out the coat ...?", "might you wipe it ..."): a
 #: question that is an instruction; the modal before "you" is no doubt about the scene
 REQUESTS = frozenset({"could", "can", "would", "will", "might"})
@@ -699,7 +703,10 @@ def uncertain_words(words: list[str]) -> set[str]:
     """The words of `UNCERTAIN` that make a clause doubtful: a modal that opens a polite request
     ("might you scrub it", "could you wipe it") asks the listener to act, it doubts nothing of
     the scene ("the bowl might be dirty" still does)."""
-    return {w for k, w in enumerate(words) if w in UNCERTAIN and not request_modal(words, k)}
+    return {w for k, w in enumerate(words) if w in UNCERTAIN and not request_modal(words, k)
+            # a speaker's belief ("I think I left it on the shelf", "we reckon", "I'm not sure")
+            or w in BELIEFS and k > 0 and words[k - 1] in PERSONAL_SUBJECTS
+            or w == "sure" and words[k - 1:k] == ["not"]}
 
 
 def request_modal(words: list[str], k: int) -> bool:
@@ -709,4 +716,5 @@ def request_modal(words: list[str], k: int) -> bool:
 
 def doubts(words: list[str]) -> bool:
     """Whether the words carry a doubt ("may", "possibly", "probably"); "could you" opens a request."""
-    return any(w in DOUBT and not request_modal(words, k) for k, w in enumerate(words))
+    return any(w in DOUBT and not request_modal(words, k) or w == "sure" and words[k - 1:k] == ["not"]
+               for k, w in enumerate(words))  # "I'm not sure": a hedge ("make sure" is none)

@@ -57,11 +57,14 @@ from logicenveval.offline.lexicon import (
 from logicenveval.offline.sentences import (
     ACTIONS,
     ARROW_MARK,
+    BELIEFS,
     NORM_ADVERBS,
     PERSONAL_SUBJECTS,
     PREP_IN,
     PREP_ON,
     STATE_WORDS,
+    TAKEN_WORDS,
+    TAKING_FROM,
     determiner,
     expand,
     foreign,
@@ -392,8 +395,13 @@ def _read_sentence(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Re
     _frame(sent, reading, body_start)
     _room_words(sent, lex, reading)
     _identifying_aside(sent, lex, catalog, reading)
-    for clause in _clauses(words, body_start, len(words)):
+    spans = _clauses(words, body_start, len(words))
+    # a condition or a doubt anywhere in the sentence governs what its instructions take for granted
+    plain = not any(c.mood == "condition" or c.doubted for c in spans)
+    for clause in spans:
         ms = [m for m in sent.mentions if clause.start <= m.start < clause.end]
+        if clause.mood == "instruction" and plain:
+            _taken_from(sent, clause, ms, lex, catalog, reading)
         if clause.mood != "condition":
             _locative(sent, clause, ms, lex, catalog, reading)
         if clause.mood != "statement":
@@ -1025,7 +1033,9 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
             subjects = _gloss(sent, ms, found[1].end, clause.end)  # "The kaldero is on the stove, yung big pot"
         first = subjects[0].start if subjects else start
         said = words[max(lo, first - 3):found[1].end]
-        if not subjects or words[clause.start] == "there" or doubts(said) or habitual(said):
+        # (a speaker's belief before the subject doubts it too: "I think I left the torch on the shelf")
+        believed = _believed(words[clause.start:first])
+        if not subjects or words[clause.start] == "there" or doubts(said) or habitual(said) or believed:
             lo = found[1].end
             continue  # no subject, an existential (`_existential`), a doubt ("may have been put") or a habit
         prep, holder = found
@@ -1035,6 +1045,13 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         lo = _gapped(sent, clause, ms, holder.end, kind, lex, catalog, reading)
     if clause.mood == "statement":
         _fragment(sent, clause, ms, lex, catalog, reading)
+
+
+def _believed(lead: list[str]) -> bool:
+    """Whether the words before a statement's subject are a speaker's belief (`BELIEFS` after a
+    subject pronoun: "I think", "we reckon", "I'm not sure"), which hedges what follows."""
+    return any(w in BELIEFS and k > 0 and lead[k - 1] in PERSONAL_SUBJECTS for k, w in enumerate(lead)) or (
+        "sure" in lead and "not" in lead)
 
 
 def _held_list(words: list[str], clause: Span, start: int) -> bool:
@@ -1589,6 +1606,8 @@ def _in_room(sent: _Sentence, clause: Span, ms: list[Mention], reading: _Reading
             continue
         if _moved(words, a.start, clause) or _indefinite_doubt(sent, a):
             continue
+        if clause.doubted and clause.mood == "statement":
+            continue  # "I believe I may have left my watch in the flat": a hedged place is open
         reading.room("settled", a.roles[0], b.roles[0])  # a noun phrase's own place, whatever the mood
 
 
@@ -1635,6 +1654,36 @@ def _resting(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, cat
         fact = _contain(catalog, lex, a.roles[0], b.roles[0], "in" if whole is not None else between[0])
         if fact is not None:  # a condition on its state takes its place for granted: a statement
             reading.place("settled" if described else "presumed", a.roles[0], fact)
+
+
+def _taken_from(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
+                reading: _Reading) -> None:
+    """"Take a spare fuse from the drawer", "grab a clean towel out of the cupboard": an
+    instruction of taking (`TAKING_FROM`, its verb opening the clause) presupposes the thing is
+    in or on its source, so the scene puts it there (`presumed`). Called only for a sentence with
+    no condition and no doubt ("if there's one in the drawer, take it", "take one from the drawer
+    if you can find one" leave it open)."""
+    words = sent.words
+    lead = clause.start
+    while lead < clause.end and (words[lead] in LEAD_INS or words[lead] in (",", "just", "simply")):
+        lead += 1
+    if lead >= clause.end or words[lead] not in TAKING_FROM:
+        return
+    for a, b in zip(ms, ms[1:], strict=False):
+        if a.kind != "role" or b.kind != "role" or len(a.roles) != 1 or len(b.roles) != 1:
+            continue
+        if not all(w in TAKEN_WORDS or w in STATE_WORDS and w not in ("on", "off") for w in words[lead + 1:a.start]):
+            continue  # the verb's own object only: "take the towel to the shelf from ..." is no source
+        between = [w for w in words[a.end:b.start] if w not in ARTICLES]
+        if between not in (["from"], ["out", "of"], ["off"]):
+            continue
+        cat = catalog.get(str(lex.roles[a.roles[0]]["category"]))
+        if cat is None or not cat.pickable:
+            continue
+        fact = _contain(catalog, lex, a.roles[0], b.roles[0], "on" if between == ["off"] else "in")
+        if fact is not None:
+            reading.place("presumed", a.roles[0], fact)
+        return
 
 
 #: verbs of seeing that point a thing out to the listener ("see that bottle on the bench?")

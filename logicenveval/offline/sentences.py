@@ -37,6 +37,16 @@ STATE_WORDS: dict[str, tuple[str, bool]] = {
 #: the personal pronouns that can be a clause's subject; each reader adds the other subjects it
 #: needs (`clauses.SUBJECTS`, `placement.SUBJECT_PRONOUNS`, `naming`'s relative-clause test)
 PERSONAL_SUBJECTS = frozenset({"i", "we", "you", "he", "she", "they"})
+#: verbs of a speaker's belief: after a subject pronoun ("I think", "we reckon", "I believe") they
+#: hedge what follows, as "may" does (`clauses.uncertain_words`, `placement._believed`)
+BELIEFS = frozenset({"think", "believe", "reckon", "suppose", "guess", "expect"})
+#: verbs of taking a thing from where it is: an instruction "take a spare fuse from the drawer",
+#: "grab a clean towel from the cupboard" presupposes the thing is in or on its source, a stated
+#: fact and no question (`analysis.Fact.presupposed`, `placement._taken_from`)
+TAKING_FROM = frozenset({"take", "grab", "fetch", "get", "pull", "pick", "collect", "retrieve", "remove"})
+#: the words that may stand between such a verb and its thing ("take a spare one", "grab two new")
+TAKEN_WORDS = frozenset({"a", "an", "the", "one", "some", "two", "three", "spare", "new", "fresh", "clean", "another",
+                         "extra", "up", "out", "down", "of", "your", "my", "our"})
 #: action verbs before an object: a location after the object is a goal
 ACTIONS = frozenset(
     ["put", "place", "move", "take", "bring", "return", "carry", "drop", "set", "lay", "stand", "hang", "throw", "toss", "tuck", "store", "stow", "leave", "fold", "bin", "transfer", "slide", "shove", "push", "pour", "empty", "fill", "refill", "sort", "give", "file", "load", "unload", "shelve",
@@ -156,6 +166,32 @@ _WITH = re.compile(r"\bw/\s*", re.I)
 #: the ">" that opens each quoted line; neither says anything of the scene
 _ATTRIBUTION = re.compile(r"^[ \t>]*On\b[^\n]{0,80}\bwrote:[ \t]*$", re.M)
 _QUOTE_MARK = re.compile(r"^[ \t]*(?:>[ \t]?)+", re.M)
+#: a quoted line that states something, answered by a reply opening with "Then" ("> Also the
+#: curtains were open when I walked past this morning" / "Then could you close them?"): the
+#: writer takes the other's report as the premise of the reply, not as a fact of their own, as
+#: "Curtains open? Then ..." does; read as a question ("... this morning? Then could you ...")
+#: a forum's quote of another member's post ("Quote from: nightowl_kat on November 29, ..." and the
+#: ">" lines under it): what its writer says in the first person ("Mine keeps shoving my phone in
+#: a drawer") speaks of their own home, not of the scene the reply describes, whose things the
+#: reply names as its own ("My phone may be lying on the bed"); those sentences are dropped
+_FORUM_QUOTE = re.compile(r"^[ \t]*Quote from:[^\n]*\n(?P<lines>(?:[ \t]*>[^\n]*(?:\n|$))+)", re.M | re.I)
+_FIRST_PERSON = re.compile(r"\b(?:i|i'm|i've|i'd|me|my|mine|we|we're|we've|our|ours)\b", re.I)
+_QUOTED_SENTENCE = re.compile(r"[^.!?\n]+(?:[.!?]+|$)")
+
+
+def _forum_quote(m: re.Match[str]) -> str:
+    """The quoted lines of `_FORUM_QUOTE` without their sentences in the first person."""
+    lines = []
+    for line in m.group("lines").splitlines():
+        body = _QUOTE_MARK.sub("", line)
+        kept = "".join(x for x in _QUOTED_SENTENCE.findall(body) if not _FIRST_PERSON.search(x)).strip()
+        if kept:
+            lines.append(f"> {kept}")
+    return "".join(f"{x}\n" for x in lines)
+
+
+_QUOTED_PREMISE = re.compile(r"^(?P<q>[ \t]*>[^\n]*?[^\s?!.:>])[ \t]*\.?[ \t]*(?P<gap>\n(?:[ \t]*\n)*)"
+                             r"(?=[ \t]*Then\b)", re.M)
 #: a reference work's marks after a word or a full stop (an encyclopedia article, a report: "shut
 #: afterwards.[3] The bat ...", "is meant to be displayed.[citation needed]", "on the bar[a]"):
 #: they say where a claim comes from, never what it claims, and hide the sentence's end
@@ -398,6 +434,11 @@ _VARIANT = re.compile(rf"\b(?:{'|'.join(_SPELLED)})\b", re.I)
 #: "any other <kind>", a class ("If the bread is anywhere other than the counter, or we have no
 #: bread at all" lost its "no bread")
 _OTHER_THAN = re.compile(r"\b(anywhere|somewhere|everywhere|nowhere)\s+other\s+than\b", re.I)
+#: a place said to be checked or confirmed ("1 towel, to be checked on the drying rack", "the
+#: spare key, still to be confirmed in the drawer") is left open, as "may be" leaves it: the
+#: writer does not know yet (read as "1 towel may be on the drying rack")
+_TO_BE_CHECKED = re.compile(r",?\s+(?:still\s+|yet\s+)?to\s+be\s+(?:checked|confirmed|verified|double-checked)"
+                            r"\s+(?=(?:on|in|inside|under|by|near|at)\s)", re.I)
 
 
 #: a formula of politeness before an instruction's verb ("be good enough to examine the towel",
@@ -675,7 +716,7 @@ def unquote(text: str) -> str:
     sentence's end (`_EMOJI`), a comma before the next "state ->" case as ";"
     (`_CASE_AFTER_COMMA`), "the X on the Y, if there is one" as "if there is an X on the Y"
     (`_IF_ANY`), a condition put first whose pronoun points forward to a result not said yet after
-    its main clause (`_FRONTED_ALREADY`), without an email's quoting marks: a reply above a quoted message reads as one
+    its main clause (`_FRONTED_ALREADY`), without an email's quoting marks (a forum quote's sentences in the first person dropped: `_FORUM_QUOTE`; a quoted statement a reply answers with "Then" as a question: `_QUOTED_PREMISE`): a reply above a quoted message reads as one
     text ("> On Monday, Jo wrote:" is no sentence; "> Could you tidy ..." is "Could you tidy ...");
     without the labels of lettered or numbered items (an item's closing semicolon a full stop:
     `_ITEM_END`); a place the speaker corrects dropped for the
@@ -692,18 +733,19 @@ def unquote(text: str) -> str:
     common word ("the dishwasher's already going": "running", `PREDICATE_STATES`); a table of items and places as its sentences
     (`detable`); a rule written as a record of keyed lines as its conditional (`derecord`); a heading answered by a verb with no subject of its own with the heading as that
     subject (`_SUBJECTLESS`); a chat message's `*`-correction made in the message it corrects
-    (`starred`), without a chat line's time stamp (`_TIME_STAMP`) and without a reference work's
+    (`starred`), a place "to be checked" as one that "may be" (`_TO_BE_CHECKED`), without a chat line's time stamp (`_TIME_STAMP`) and without a reference work's
     citation marks (`_CITATION`)."""
     text = _OCCASION_IF.sub(_occasion_if, text)
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
     text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_modern(_NATIVE_IF.sub(_native_if, text))))))
-    text = _OTHER_THAN.sub(r"\1 else than", text)
+    text = _TO_BE_CHECKED.sub(" may be ", _OTHER_THAN.sub(r"\1 else than", text))
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), _SPELLED[m.group(0).lower()]), text))
     text = starred(_TIME_STAMP.sub(r"\1", _CITATION.sub("", text)))
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
     plain = _IF_ANY.sub(_if_any, plain)
     plain = _FRONTED_ALREADY.sub(_postposed, plain)
-    plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _ITEM_END.sub(".\n", _QUOTE_MARK.sub("", _ATTRIBUTION.sub("", plain)))))
+    plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _ITEM_END.sub(".\n", _QUOTE_MARK.sub("", _QUOTED_PREMISE.sub(
+        r"\g<q>?\g<gap>", _FORUM_QUOTE.sub(_forum_quote, _ATTRIBUTION.sub("", plain)))))))
     plain = _unabbreviated(plain)
     plain = _PREDICATE_STATE.sub(lambda m: m.group(1) + PREDICATE_STATES[_ARTICLE_IN.sub("in ", m.group(2).lower())], plain)
     plain = _EMPHATIC_DO.sub("", plain)
