@@ -186,6 +186,7 @@ import json
 import re
 import tempfile
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -256,10 +257,12 @@ def originals() -> list[str]:
 
 
 def run_set(tasks_dir: Path | None, ids: list[str], seed: int, workers: int,
-            output: Path) -> tuple[dict[str, dict[str, Any]], dict[str, str]]:
+            output: Path, records: dict[str, list[Record]] | None = None
+            ) -> tuple[dict[str, dict[str, Any]], dict[str, str]]:
     """Per-task metrics of offline LogicEnvGen on `ids` of `tasks_dir`, and per task the first
     reason an environment was lost (a failed generation, an ill-formed environment or a violated
-    constraint), so the weak spots can be read without opening the run."""
+    constraint), so the weak spots can be read without opening the run. With `records`, every
+    task's failures, problems, violations and correct-BT verdicts are added to it (for `losses`)."""
     config = RunConfig(model="offline", generators=(GENERATOR,), tasks=tuple(ids),
                        tasks_dir=None if tasks_dir is None else str(tasks_dir), seed=seed,
                        workers=workers, output=str(output), no_cache=True, fresh=True)
@@ -268,12 +271,17 @@ def run_set(tasks_dir: Path | None, ids: list[str], seed: int, workers: int,
     why: dict[str, str] = {}
     for failure in outcome.results["failures"].get(GENERATOR, []):
         why.setdefault(failure["task"], failure["message"])
+        if records is not None:
+            records.setdefault(failure["task"], []).append(
+                ("failure", f"{failure.get('stage') or 'unit'}: {failure['message']}"))
     with (outcome.run_dir / "samples.jsonl").open(encoding="utf-8") as lines:
         for line in lines:
             sample = json.loads(line)
             lost = sample.get("problems") or sample.get("violations")
             if lost:
                 why.setdefault(sample["task_id"], str(lost[0]))
+            if records is not None:
+                records.setdefault(sample["task_id"], []).extend(sample_records(sample))
     return per_task, why
 
 
@@ -352,6 +360,101 @@ def print_placements(sets: list[tuple[str, Path | None]], smoke: bool, why: bool
     print("placement_recall " + " ".join(figures))
 
 
+#: one thing a run recorded about a task: (source, message), the source one of `failure` (a
+#: generation failure, `stage: message`), `problem` (why an environment is ill-formed),
+#: `violation` (a stated fact the environment breaks) or `verdict` (the correct BT fails in it)
+Record = tuple[str, str]
+
+#: (source, pattern, loss class): a record counts in the class of the first entry whose source
+#: is its own and whose pattern it matches; extend by adding rows (more specific ones first)
+MESSAGE_CLASSES: tuple[tuple[str, re.Pattern[str], str], ...] = (
+    ("problem", re.compile(r"^role \S+ is not bound"), "unbound role"),
+    ("problem", re.compile(r"reaches no leaf"), "ill-formed: no leaf"),
+    ("problem", re.compile(r""), "ill-formed: other"),
+    ("violation", re.compile(r"constraint (?:on|inside)\(\s*\w+\s*,\s*\w+\s*\) \(the description"),
+     "fact violated: placement"),
+    ("violation", re.compile(r""), "fact violated: other fact"),
+    ("failure", re.compile(r"does not realise its trajectory"), "not realised"),
+    ("failure", re.compile(r"no layout"), "no layout"),
+    ("failure", re.compile(r""), "construction"),
+    ("verdict", re.compile(r""), "correct BT fails"),
+)
+
+
+def _faudr(m: dict[str, Any]) -> float:
+    return task_row(m)[2]
+
+
+#: (loss class, test on the task's metrics `task_row` and `TaskMetrics` fields): the classes the
+#: figures alone show
+METRIC_CLASSES: tuple[tuple[str, Callable[[dict[str, Any]], bool]], ...] = (
+    ("missed paths", lambda m: m["logcov"] < 1 and m["n_failed"] == 0 and m["n_valid"] == m["n_envs"]),
+    ("not realised", lambda m: m.get("n_realised", 0) < m.get("n_claimed", 0)),
+    ("faulty BT not revealed only", lambda m: _faudr(m) < 1 and task_row(m)[:2] == (1.0, 1.0)),
+    ("none", lambda m: task_row(m) == (1.0, 1.0, 1.0)),
+)
+#: every class, in the order `--losses` prints them; `unclassified`: a loss no row names
+LOSS_CLASSES: tuple[str, ...] = tuple(dict.fromkeys(
+    [c for _, _, c in MESSAGE_CLASSES] + [c for c, _ in METRIC_CLASSES] + ["unclassified"]))
+
+
+def sample_records(sample: dict[str, Any]) -> list[Record]:
+    """The records of one environment of `samples.jsonl`: its problems, its violations, and, when
+    it is well-formed and breaks no fact, a correct BT that does not pass."""
+    out: list[Record] = [("problem", str(p)) for p in sample.get("problems") or []]
+    out += [("violation", str(v)) for v in sample.get("violations") or []]
+    verdict = (sample.get("verdicts") or {}).get("correct")
+    if sample.get("well_formed") and not sample.get("violations") and verdict != "passed":
+        out.append(("verdict", f"correct BT: {verdict}"))
+    return out
+
+
+def record_class(record: Record) -> str:
+    """The loss class of one record (`MESSAGE_CLASSES`), `unclassified` when no row matches."""
+    source, message = record
+    return next((c for s, pattern, c in MESSAGE_CLASSES if s == source and pattern.search(message)),
+                "unclassified")
+
+
+def loss_classes(m: dict[str, Any], records: list[Record]) -> set[str]:
+    """Every class a task loses in (several at once), from its metrics `m` and its `records`;
+    `unclassified` when it is not 100/100/100 and neither its figures nor its records say why."""
+    classes = {record_class(r) for r in records}
+    classes |= {c for c, test in METRIC_CLASSES if test(m)}
+    if not classes:
+        classes.add("unclassified")
+    return classes
+
+
+def losses(results: dict[str, dict[str, dict[str, Any]]], records: dict[str, dict[str, list[Record]]]
+           ) -> dict[str, dict[str, list[str]]]:
+    """Per row, per loss class, the ids of the tasks counting in it."""
+    out: dict[str, dict[str, list[str]]] = {}
+    for name, per in results.items():
+        classes: dict[str, list[str]] = {c: [] for c in LOSS_CLASSES}
+        for task_id, m in per.items():
+            for c in sorted(loss_classes(m, records.get(name, {}).get(task_id, []))):
+                classes[c].append(task_id)
+        out[name] = classes
+    return out
+
+
+def print_losses(table: dict[str, dict[str, list[str]]], why: bool) -> None:
+    """Per row, how many tasks count in each loss class (counts only); with `why`, the task ids
+    per class of a development row (a held-out or fresh row's ids would be a tuning signal)."""
+    print("where tasks lose (offline LogicEnvGen; task counts per class, a task may count in several):")
+    for name, classes in table.items():
+        n = len({t for ids in classes.values() for t in ids})
+        counts = ", ".join(f"{c} {len(ids)}" for c, ids in classes.items() if ids)
+        print(f"  {name:20s} {n:3d} tasks: {counts}")
+        if why and name not in UNSEEN | FRESH:
+            for c, ids in classes.items():
+                if ids and c != "none":
+                    print(f"      {c}: {' '.join(ids)}")
+    totals = {c: sum(len(classes[c]) for classes in table.values()) for c in LOSS_CLASSES}
+    print("reader_losses " + " ".join(f"{c.replace(' ', '_').replace(':', '')}={n}" for c, n in totals.items()))
+
+
 def pct(x: float) -> str:
     return f"{100 * x:5.1f}"
 
@@ -382,6 +485,21 @@ def selected(dev_only: bool, fresh: bool, skipped: set[str]) -> list[tuple[str, 
             if not (dev_only and (name in UNSEEN or name in FRESH and not fresh)) and name not in skipped]
 
 
+def print_tasks(results: dict[str, dict[str, dict[str, Any]]], why: dict[str, dict[str, str]],
+                show_why: bool) -> None:
+    """Each task's figures (not a held-out row's), with `show_why` its first loss."""
+    print("per task (offline LogicEnvGen, --brief description):")
+    print(f"  {'set':13s} {'task':32s} {'LogCov':>6s} {'SceVR':>6s} {'FauDR':>6s}")
+    for name, per in results.items():
+        if name in UNSEEN:
+            continue
+        for task_id, m in per.items():
+            lc, sv, fd = task_row(m)
+            print(f"  {name:13s} {task_id:32s} {pct(lc):>6s} {pct(sv):>6s} {pct(fd):>6s}")
+            if show_why and task_id in why[name]:
+                print(f"      first loss: {why[name][task_id][:200]}")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--smoke", action="store_true", help="two tasks per set, for a quick check")
@@ -402,6 +520,9 @@ def main() -> None:
     ap.add_argument("--placements", action="store_true",
                     help="print instead each row's recall of stated placements (no generator is run); "
                          "with --why, each missed one (development rows only)")
+    ap.add_argument("--losses", action="store_true",
+                    help="instead of the per-task lines, per row how many tasks lose in each loss class "
+                         "(counts only); with --why, the task ids per class (development rows only)")
     args = ap.parse_args()
     skipped = {s.strip() for s in args.skip.split(",") if s.strip()}
     unknown = skipped - {name for name, _ in SETS}
@@ -415,27 +536,24 @@ def main() -> None:
     start = time.perf_counter()
     results: dict[str, dict[str, dict[str, Any]]] = {}
     why: dict[str, dict[str, str]] = {}
+    records: dict[str, dict[str, list[Record]]] = {}
     for name, folder in sets:
         ids = task_ids(folder)
         if args.smoke:
             ids = ids[:2]
-        results[name], why[name] = run_set(folder, ids, args.seed, args.workers, work / name.replace(" ", "_"))
+        records[name] = {}
+        results[name], why[name] = run_set(folder, ids, args.seed, args.workers, work / name.replace(" ", "_"),
+                                           records[name] if args.losses else None)
     rows = {name: aggregate(per) for name, per in results.items() if name not in UNSEEN}
     base = {k: v for k, v in results.get("built-in", {}).items() if k in originals()}
     if base:
         rows["built-in (reworded originals)"] = aggregate(base)
     rows.update({name: aggregate(per) for name, per in results.items() if name in UNSEEN})
 
-    print("per task (offline LogicEnvGen, --brief description):")
-    print(f"  {'set':13s} {'task':32s} {'LogCov':>6s} {'SceVR':>6s} {'FauDR':>6s}")
-    for name, per in results.items():
-        if name in UNSEEN:
-            continue
-        for task_id, m in per.items():
-            lc, sv, fd = task_row(m)
-            print(f"  {name:13s} {task_id:32s} {pct(lc):>6s} {pct(sv):>6s} {pct(fd):>6s}")
-            if args.why and task_id in why[name]:
-                print(f"      first loss: {why[name][task_id][:200]}")
+    if args.losses:
+        print_losses(losses(results, records), args.why)
+    else:
+        print_tasks(results, why, args.why)
     print()
     print(f"  {'row':30s} {'tasks':>5s} {'LogCov':>6s} {'SceVR':>6s} {'FauDR':>6s}")
     for name, (lc, sv, fd) in rows.items():
