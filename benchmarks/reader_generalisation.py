@@ -166,6 +166,35 @@ fact, its `says`) of a development row; a held-out or fresh row shows its share 
 
     python benchmarks/reader_generalisation.py --dev-only --placements --why   # seconds
 
+`--losses` runs the rows as usual but prints, instead of the per-task lines, per row how many of
+its tasks lose in each **loss class** (a task may count in several), so that the stage that loses
+on unseen text can be named without seeing any unseen text or per-task figure. The classes come
+from what the run records: a message row of `MESSAGE_CLASSES` (failures of `results["failures"]`,
+problems, violations and the correct BT's verdict of `samples.jsonl`; first matching row wins), or
+a figure test of `METRIC_CLASSES` on the task's metrics:
+
+- `unbound role`: a GT role no object binds (a naming loss: a thing named as the wrong kind or not
+  at all);
+- `ill-formed: no leaf` / `ill-formed: other`: an environment ill-formed otherwise (a variable
+  reaching no leaf of a GT tree; any other problem);
+- `fact violated: placement`: an environment breaks a stated `on(x, y)` / `inside(x, y)` fact (a
+  placement not read); `fact violated: other fact`: any other stated fact (a state, an attribute,
+  a compound fact);
+- `not realised`: an environment does not realise the trajectory it claims in the generator's own
+  plan (its construction log, or `n_realised < n_claimed`);
+- `no layout` / `construction`: an environment not built (no layout for the selected objects; any
+  other generation failure);
+- `correct BT fails`: a well-formed environment breaking no fact in which the correct BT fails;
+- `missed paths`: LogCov < 1 with every environment valid (a factor or branch not read or not
+  planned);
+- `faulty BT not revealed only`: FauDR < 1 with LogCov and SceVR at 100;
+- `none`: 100/100/100; `unclassified`: a loss neither the figures nor the records explain.
+
+With `--why` it lists under each development row the task ids per class (never a held-out or fresh
+row's). Last line: `reader_losses <class>=<tasks over all rows> ...`.
+
+    python benchmarks/reader_generalisation.py --dev-only --losses --why
+
 `--compare OLD.json` lists every development task whose LogCov, SceVR or FauDR moved against an
 earlier `--json` file, a fall marked `FALL`, and exits 1 when any task fell.
 
