@@ -186,7 +186,10 @@ a figure test of `METRIC_CLASSES` on the task's metrics:
   other generation failure);
 - `correct BT fails`: a well-formed environment breaking no fact in which the correct BT fails;
 - `missed paths`: LogCov < 1 with every environment valid (a factor or branch not read or not
-  planned);
+  planned), split into `missed paths: a value never set` (some GT condition, a variable's value on
+  a tree edge, is realised in no environment: a factor not read, or read but never varied) and
+  `missed paths: values set, paths not combined` (every value is set somewhere: the planner's
+  grouping or selection);
 - `faulty BT not revealed only`: FauDR < 1 with LogCov and SceVR at 100;
 - `none`: 100/100/100; `unclassified`: a loss neither the figures nor the records explain.
 
@@ -222,6 +225,8 @@ from typing import Any
 
 from logicenveval.benchmark import load_tasks, task_ids
 from logicenveval.domain.catalog import load_catalog
+from logicenveval.model.task import Task
+from logicenveval.model.tree import atomic_conditions
 from logicenveval.offline.placement import described_placements
 from logicenveval.runner.config import RunConfig
 from logicenveval.runner.run import run
@@ -303,6 +308,7 @@ def run_set(tasks_dir: Path | None, ids: list[str], seed: int, workers: int,
         if records is not None:
             records.setdefault(failure["task"], []).append(
                 ("failure", f"{failure.get('stage') or 'unit'}: {failure['message']}"))
+    realised: dict[str, set[str]] = {}
     with (outcome.run_dir / "samples.jsonl").open(encoding="utf-8") as lines:
         for line in lines:
             sample = json.loads(line)
@@ -311,6 +317,11 @@ def run_set(tasks_dir: Path | None, ids: list[str], seed: int, workers: int,
                 why.setdefault(sample["task_id"], str(lost[0]))
             if records is not None:
                 records.setdefault(sample["task_id"], []).extend(sample_records(sample))
+                realised.setdefault(sample["task_id"], set()).update(
+                    f"{var}={value}" for var, value in sample.get("conditions") or [])
+    if records is not None:
+        for task in load_tasks(tasks_dir, ids):
+            records.setdefault(task.id, []).extend(unset_records(task, realised.get(task.id, set())))
     return per_task, why
 
 
@@ -391,7 +402,8 @@ def print_placements(sets: list[tuple[str, Path | None]], smoke: bool, why: bool
 
 #: one thing a run recorded about a task: (source, message), the source one of `failure` (a
 #: generation failure, `stage: message`), `problem` (why an environment is ill-formed),
-#: `violation` (a stated fact the environment breaks) or `verdict` (the correct BT fails in it)
+#: `violation` (a stated fact the environment breaks), `verdict` (the correct BT fails in it) or
+#: `unset` (a GT condition no environment realises, `var=value`: only splits `missed paths`)
 Record = tuple[str, str]
 
 #: (source, pattern, loss class): a record counts in the class of the first entry whose source
@@ -422,9 +434,21 @@ METRIC_CLASSES: tuple[tuple[str, Callable[[dict[str, Any]], bool]], ...] = (
     ("faulty BT not revealed only", lambda m: _faudr(m) < 1 and task_row(m)[:2] == (1.0, 1.0)),
     ("none", lambda m: task_row(m) == (1.0, 1.0, 1.0)),
 )
+#: how `missed paths` splits, by whether some GT condition (a variable's value on a tree edge,
+#: C_total) is realised in no environment (`unset` records): a factor not read, or read but never
+#: varied, versus every value set somewhere but the paths not combined (the planner's grouping)
+MISSED_SPLIT = ("missed paths: a value never set", "missed paths: values set, paths not combined")
 #: every class, in the order `--losses` prints them; `unclassified`: a loss no row names
 LOSS_CLASSES: tuple[str, ...] = tuple(dict.fromkeys(
-    [c for _, _, c in MESSAGE_CLASSES] + [c for c, _ in METRIC_CLASSES] + ["unclassified"]))
+    [c for _, _, c in MESSAGE_CLASSES] + [c for c, _ in METRIC_CLASSES] + list(MISSED_SPLIT)
+    + ["unclassified"]))
+
+
+def unset_records(task: Task, realised: set[str]) -> list[Record]:
+    """One `unset` record per GT condition (C_total, `var=value`) no environment of the task
+    realises, given the `realised` ones (the samples' `conditions`)."""
+    return [("unset", f"{var}={value}") for var, value in atomic_conditions(task)
+            if f"{var}={value}" not in realised]
 
 
 def sample_records(sample: dict[str, Any]) -> list[Record]:
@@ -448,8 +472,10 @@ def record_class(record: Record) -> str:
 def loss_classes(m: dict[str, Any], records: list[Record]) -> set[str]:
     """Every class a task loses in (several at once), from its metrics `m` and its `records`;
     `unclassified` when it is not 100/100/100 and neither its figures nor its records say why."""
-    classes = {record_class(r) for r in records}
+    classes = {record_class(r) for r in records if r[0] != "unset"}
     classes |= {c for c, test in METRIC_CLASSES if test(m)}
+    if "missed paths" in classes:
+        classes.add(MISSED_SPLIT[0] if any(r[0] == "unset" for r in records) else MISSED_SPLIT[1])
     if not classes:
         classes.add("unclassified")
     return classes

@@ -55,7 +55,7 @@ def test_each_record_has_its_class(record: bench.Record, cls: str) -> None:
 
 def test_missed_paths_only_when_every_environment_is_valid() -> None:
     """LogCov < 1 with every environment valid is a missed path; with an invalid one it is not."""
-    assert bench.loss_classes(_m(logcov=0.5), []) == {"missed paths"}
+    assert "missed paths" in bench.loss_classes(_m(logcov=0.5), [])
     assert bench.loss_classes(_m(logcov=0.5, n_valid=1), [PLACED]) == {"fact violated: placement"}
     assert bench.loss_classes(_m(logcov=0.5, n_failed=1), [LAYOUT]) == {"no layout"}
 
@@ -99,10 +99,29 @@ def test_the_print_shows_counts_only_for_held_out_and_fresh_rows(capsys: pytest.
     bench.print_losses(table, why=True)
     out = capsys.readouterr().out
     assert "a task may count in several" in out.splitlines()[0]
-    assert out.count("task_alpha") == out.count("task_gamma") // 2 == 1
+    assert out.count("task_alpha") == out.count("task_gamma") == 2  # missed paths and its split
     assert "task_beta" not in out  # the "none" class lists no ids
     for name in hidden:
         line = next(x for x in out.splitlines() if x.split()[:len(name.split())] == name.split())
         assert line.split(":", 1)[1].strip() == ("unbound role 1, fact violated: placement 1, "
-                                                 "missed paths 1, none 1")
+                                                 "missed paths 1, none 1, "
+                                                 "missed paths: values set, paths not combined 1")
     assert out.splitlines()[-1].startswith(f"reader_losses unbound_role={len(rows)} ")
+
+
+def test_missed_paths_split_by_whether_a_value_was_never_set() -> None:
+    """A GT condition no environment realises (an `unset` record) marks a factor not read or not
+    varied; without one, every value was set and the paths were not combined."""
+    unset = ("unset", "mat_wet=wet")
+    assert bench.loss_classes(_m(logcov=0.5), [unset]) == {"missed paths", "missed paths: a value never set"}
+    assert bench.loss_classes(_m(logcov=0.5), []) == {"missed paths", "missed paths: values set, paths not combined"}
+    assert bench.loss_classes(_m(), [unset]) == {"none"}  # only splits missed paths
+
+
+def test_unset_records_name_each_gt_condition_no_environment_realises() -> None:
+    folder = Path(__file__).resolve().parent / "data" / "reader_dev" / "tasks_new"
+    task = bench.load_tasks(folder, ["bathroom_after_bath"])[0]
+    every = [f"{v}={x}" for v, x in bench.atomic_conditions(task)]
+    assert len(every) >= 2
+    assert bench.unset_records(task, set(every)) == []
+    assert bench.unset_records(task, set(every[1:])) == [("unset", every[0])]
