@@ -494,6 +494,10 @@ def losses(results: dict[str, dict[str, dict[str, Any]]], records: dict[str, dic
     return out
 
 
+#: what the last line's class keys replace by `_` (spaces, colons, commas)
+_WORDLESS = re.compile(r"\W+")
+
+
 def print_losses(table: dict[str, dict[str, list[str]]], why: bool) -> None:
     """Per row, how many tasks count in each loss class (counts only); with `why`, the task ids
     per class of a development row (a held-out or fresh row's ids would be a tuning signal)."""
@@ -507,7 +511,7 @@ def print_losses(table: dict[str, dict[str, list[str]]], why: bool) -> None:
                 if ids and c != "none":
                     print(f"      {c}: {' '.join(ids)}")
     totals = {c: sum(len(classes[c]) for classes in table.values()) for c in LOSS_CLASSES}
-    print("reader_losses " + " ".join(f"{c.replace(' ', '_').replace(':', '')}={n}" for c, n in totals.items()))
+    print("reader_losses " + " ".join(f"{_WORDLESS.sub('_', c)}={n}" for c, n in totals.items()))
 
 
 def pct(x: float) -> str:
