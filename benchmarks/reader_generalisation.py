@@ -537,7 +537,7 @@ def compare(old: dict[str, Any], new: dict[str, Any]) -> tuple[list[str], int]:
     return lines, fell
 
 
-def selected(dev_only: bool, fresh: bool, skipped: set[str]) -> list[tuple[str, Path]]:
+def selected(dev_only: bool, fresh: bool, skipped: set[str]) -> list[tuple[str, Path | None]]:
     """The sets a run measures: all, or with `dev_only` neither the held-out nor (unless `fresh`)
     the fresh ones; never the `skipped` ones."""
     return [(name, folder) for name, folder in SETS
