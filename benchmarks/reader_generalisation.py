@@ -546,7 +546,9 @@ def selected(dev_only: bool, fresh: bool, skipped: set[str]) -> list[tuple[str, 
 
 def print_tasks(results: dict[str, dict[str, dict[str, Any]]], why: dict[str, dict[str, str]],
                 show_why: bool) -> None:
-    """Each task's figures (not a held-out row's), with `show_why` its first loss."""
+    """Each task's figures (not a held-out row's), with `show_why` its first loss (not a fresh
+    row's: the reason would be a tuning signal, as a held-out row's would; measuring a fresh row
+    with `--fresh --why` shows its figures only)."""
     print("per task (offline LogicEnvGen, --brief description):")
     print(f"  {'set':13s} {'task':32s} {'LogCov':>6s} {'SceVR':>6s} {'FauDR':>6s}")
     for name, per in results.items():
@@ -555,7 +557,7 @@ def print_tasks(results: dict[str, dict[str, dict[str, Any]]], why: dict[str, di
         for task_id, m in per.items():
             lc, sv, fd = task_row(m)
             print(f"  {name:13s} {task_id:32s} {pct(lc):>6s} {pct(sv):>6s} {pct(fd):>6s}")
-            if show_why and task_id in why[name]:
+            if show_why and name not in FRESH and task_id in why[name]:
                 print(f"      first loss: {why[name][task_id][:200]}")
 
 

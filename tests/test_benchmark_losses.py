@@ -125,3 +125,14 @@ def test_unset_records_name_each_gt_condition_no_environment_realises() -> None:
     assert len(every) >= 2
     assert bench.unset_records(task, set(every)) == []
     assert bench.unset_records(task, set(every[1:])) == [("unset", every[0])]
+
+
+def test_a_fresh_rows_first_loss_is_never_printed(capsys: pytest.CaptureFixture[str]) -> None:
+    """`--fresh --why` measures a fresh row: its figures show, its first-loss reasons do not (they
+    would be a tuning signal); a development row's do."""
+    fresh = sorted(bench.FRESH)[0]
+    results = {fresh: {"t_fresh": _m(logcov=0.5)}, "dev2 new": {"t_dev": _m(logcov=0.5)}}
+    why = {fresh: {"t_fresh": "secret reason"}, "dev2 new": {"t_dev": "shown reason"}}
+    bench.print_tasks(results, why, True)
+    out = capsys.readouterr().out
+    assert "t_fresh" in out and "secret reason" not in out and "shown reason" in out
