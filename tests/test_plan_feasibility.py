@@ -13,7 +13,7 @@ from scripted import Scripted
 
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.generators.base import GenerationContext
-from logicenveval.generators.feasibility import furniture, impossible
+from logicenveval.generators.feasibility import floor_furniture, impossible
 from logicenveval.generators.plan import PlanLog, _identify, check_factor, plan_vocabulary
 from logicenveval.llm.replies import FactorDraft, SubtaskDraft
 from logicenveval.model.conditions import parse
@@ -60,8 +60,9 @@ def test_furniture_off_the_floor_and_flags_without_affordance_are_refused(text: 
 
 
 def test_furniture_holds_things_stands_only_on_the_floor_and_is_not_pickable() -> None:
-    assert furniture("kitchen_counter", CATALOG) and furniture("sofa", CATALOG) and furniture("trash_can", CATALOG)
-    assert not any(furniture(k, CATALOG) for k in ("water_puddle", "floor_stain", "rug", "book", "plate", "nope"))
+    assert floor_furniture("kitchen_counter", CATALOG) and floor_furniture("sofa", CATALOG) \
+        and floor_furniture("trash_can", CATALOG)
+    assert not any(floor_furniture(k, CATALOG) for k in ("water_puddle", "floor_stain", "rug", "book", "plate", "nope"))
 
 
 def _task_files() -> list[Path]:

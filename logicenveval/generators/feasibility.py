@@ -21,6 +21,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from logicenveval.domain.catalog import Catalog
+from logicenveval.llm.scene_words import furniture
 from logicenveval.model.conditions import And, Cond, Not, Pred
 from logicenveval.model.task import Role
 from logicenveval.sim.world import caps_of
@@ -44,30 +45,30 @@ def _literals(cond: Cond, negated: bool = False) -> Iterator[tuple[bool, Pred]]:
             yield from _literals(part)
 
 
-def furniture(category: str, catalog: Catalog) -> bool:
-    """A piece of furniture: a kind that holds things (a surface or a container), is not
-    pickable and is placed only on the floor. A puddle or a stain is not pickable and lies only
-    on the floor too, but "no puddle on the floor" is a situation: it holds nothing."""
+def floor_furniture(category: str, catalog: Catalog) -> bool:
+    """A piece of furniture (`llm.scene_words.furniture`: it holds things and is not carried)
+    placed only on the floor, so never anywhere else. A puddle or a stain is not pickable and lies
+    only on the floor too, but "no puddle on the floor" is a situation: it holds nothing. A wall
+    shelf is furniture, but off the floor."""
     cat = catalog.get(category)
-    return (cat is not None and not cat.pickable and cat.placement == ["floor"]
-            and (cat.surface or cat.container))
+    return cat is not None and furniture(cat) and cat.placement == ["floor"]
 
 
 def impossible(cond: Cond, roles: dict[str, Role], catalog: Catalog) -> list[str]:
-    """Why `cond` can never hold of the task's objects (one reason per literal), or []."""
+    """Why `cond` can never hold of the task's objects (one reason per literal), or []; a kind
+    the catalog does not know is not judged."""
     reasons = []
     for negated, pred in _literals(cond):
         role = roles.get(pred.args[0]) if pred.args else None
-        if role is None:
+        if role is None or catalog.get(role.category) is None:
             continue
         kind = role.category
         if pred.name == "state" and not negated and pred.args[1] in FLAG_NEEDS:
             need = FLAG_NEEDS[pred.args[1]]
-            caps = caps_of(kind, catalog)
-            if catalog.get(kind) is not None and not getattr(caps, need):
+            if not getattr(caps_of(kind, catalog), need):
                 reasons.append(f"{pred.name}({', '.join(pred.args)}) can never hold: a {kind} cannot be "
                                f"{_ABLE[need]} (the catalog)")
-        elif pred.name in ("on", "inside") and furniture(kind, catalog):
+        elif pred.name in ("on", "inside") and floor_furniture(kind, catalog):
             on_floor = pred.name == "on" and pred.args[1] == "floor"
             # a required piece of furniture is on the floor; an optional one may also be absent
             if on_floor and negated and not role.optional or not on_floor and not negated:

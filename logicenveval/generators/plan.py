@@ -206,7 +206,7 @@ def _identify(brief: TaskBrief, ctx: GenerationContext, vocab: dict[str, Words],
     their replay asks the same."""
     catalog = ctx.catalog if protocol_of(ctx.model) >= 6 else None
     feedback: list[str] = []
-    drafts: list[FactorDraft] = []
+    checked: list[tuple[FactorDraft, list[str]]] = []  # each draft with its problems
     for attempt in range(max_refinements + 1):
         try:
             reply = ask(ctx.model, "identify_factors",
@@ -216,13 +216,13 @@ def _identify(brief: TaskBrief, ctx: GenerationContext, vocab: dict[str, Words],
             log.add("identify_factors", "no valid reply; the subtask keeps no factors",
                     subtask=st.id, error=exc.message)
             return []
-        drafts = [f.draft() for f in reply.factors]
-        feedback = [p for f in drafts for p in check_factor(brief, f, catalog)]
+        checked = [(d, check_factor(brief, d, catalog)) for d in (f.draft() for f in reply.factors)]
+        feedback = [p for _, problems in checked for p in problems]
         if not feedback:
             break
         log.add("identify_factors", "refine", subtask=st.id, attempt=attempt, problems=feedback)
-    good = [f for f in drafts if not check_factor(brief, f, catalog)]
-    dropped = [f.id for f in drafts if f not in good]
+    good = [f for f, problems in checked if not problems]
+    dropped = [f.id for f, problems in checked if problems]
     if dropped:
         log.add("identify_factors", "dropped factors that stay ungrounded", subtask=st.id,
                 factors=dropped)
