@@ -64,7 +64,6 @@ from logicenveval.offline.sentences import (
     PREP_IN,
     PREP_ON,
     STATE_WORDS,
-    TAKEN_WORDS,
     TAKING_FROM,
     TEND,
     code_switched,
@@ -72,6 +71,7 @@ from logicenveval.offline.sentences import (
     expand,
     habitual,
     split_sentences,
+    taken_word,
     unquote,
 )
 from logicenveval.offline.vocabulary import reading_catalog
@@ -1856,8 +1856,8 @@ def _taken(words: list[str], start: int) -> bool:
     "take a spare fuse", "grab two clean towels", "get one of the bags"), its verb the clause's
     first word after lead-ins; "if you take a fuse", "the kids take a fuse" are no instruction."""
     j = start - 1
-    while j >= 0 and (words[j] in TAKEN_WORDS or words[j] in STATE_WORDS and words[j] not in ("on", "off")):
-        j -= 1  # (a state it is taken in: "take a dry cloth")
+    while j >= 0 and taken_word(words[j]):
+        j -= 1
     if j < 0 or words[j] not in TAKING_FROM:
         return False
     lead = j - 1

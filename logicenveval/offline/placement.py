@@ -63,13 +63,13 @@ from logicenveval.offline.sentences import (
     PREP_IN,
     PREP_ON,
     STATE_WORDS,
-    TAKEN_WORDS,
     TAKING_FROM,
     determiner,
     expand,
     foreign,
     habitual,
     split_sentences,
+    taken_word,
     unquote,
 )
 from logicenveval.offline.vocabulary import reading_catalog
@@ -1672,7 +1672,7 @@ def _taken_from(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, 
     for a, b in zip(ms, ms[1:], strict=False):
         if a.kind != "role" or b.kind != "role" or len(a.roles) != 1 or len(b.roles) != 1:
             continue
-        if not all(w in TAKEN_WORDS or w in STATE_WORDS and w not in ("on", "off") for w in words[lead + 1:a.start]):
+        if not all(taken_word(w) for w in words[lead + 1:a.start]):
             continue  # the verb's own object only: "take the towel to the shelf from ..." is no source
         between = [w for w in words[a.end:b.start] if w not in ARTICLES]
         if between not in (["from"], ["out", "of"], ["off"]):

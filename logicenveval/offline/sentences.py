@@ -47,6 +47,15 @@ TAKING_FROM = frozenset({"take", "grab", "fetch", "get", "pull", "pick", "collec
 #: the words that may stand between such a verb and its thing ("take a spare one", "grab two new")
 TAKEN_WORDS = frozenset({"a", "an", "the", "one", "some", "two", "three", "spare", "new", "fresh", "clean", "another",
                          "extra", "up", "out", "down", "of", "your", "my", "our"})
+
+
+def taken_word(word: str) -> bool:
+    """Whether `word` may stand between a verb of taking and its thing: one of `TAKEN_WORDS`, or a
+    state the thing is taken in ("take a dry cloth"), but not "on"/"off" (where it is). The one
+    test both readers of an instruction of taking use (`analysis._taken`, `placement._taken_from`)."""
+    return word in TAKEN_WORDS or word in STATE_WORDS and word not in ("on", "off")
+
+
 #: action verbs before an object: a location after the object is a goal
 ACTIONS = frozenset(
     ["put", "place", "move", "take", "bring", "return", "carry", "drop", "set", "lay", "stand", "hang", "throw", "toss", "tuck", "store", "stow", "leave", "fold", "bin", "transfer", "slide", "shove", "push", "pour", "empty", "fill", "refill", "sort", "give", "file", "load", "unload", "shelve",
