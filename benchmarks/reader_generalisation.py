@@ -392,7 +392,7 @@ def print_placements(sets: list[tuple[str, Path | None]], smoke: bool, why: bool
         ids = task_ids(folder)
         recall = placement_recall(folder, ids[:2] if smoke else ids)
         share = pct(recall.share) if recall.stated else "-"  # no stated placement: nothing to read
-        figures.append(f"{name.replace('-', '_').replace(' ', '_')}={share.strip()}")
+        figures.append(f"{row_key(name)}={share.strip()}")
         print(f"  {name:30s} {recall.read:5d} {recall.stated:6d} {share:>6s}")
         if why and name not in UNSEEN | FRESH:
             for task_id, fact, says in recall.missed:
@@ -514,6 +514,12 @@ def print_losses(table: dict[str, dict[str, list[str]]], why: bool) -> None:
     print("reader_losses " + " ".join(f"{_WORDLESS.sub('_', c)}={n}" for c, n in totals.items()))
 
 
+def row_key(name: str) -> str:
+    """A row's key on a last line (`reader_generalisation`, `placement_recall`): "dev17 new" is
+    `dev17_new`, "held-out reworded" `held_out_reworded`."""
+    return name.replace("-", "_").replace(" ", "_")
+
+
 def pct(x: float) -> str:
     return f"{100 * x:5.1f}"
 
@@ -629,7 +635,7 @@ def main() -> None:
             "per_task": per_task,
         }, indent=1) + "\n", encoding="utf-8")
     print("reader_generalisation " + " ".join(
-        f"{name.replace('-', '_').replace(' ', '_')}={'/'.join(pct(x).strip() for x in rows[name])}"
+        f"{row_key(name)}={'/'.join(pct(x).strip() for x in rows[name])}"
         for name, _ in sets))
     if args.compare:
         lines, fell = compare(json.loads(Path(args.compare).read_text(encoding="utf-8")), {"per_task": per_task})
