@@ -114,14 +114,15 @@ prints LogCov / SceVR / FauDR for each, then per task:
   TV shopping-channel segment, a parliamentary question time in Hansard, a radio news bulletin)
   and six new tasks in rooms none of the sets above use (courtroom testimony, an insurance claim
   form, a building manager's notice to residents, a holiday cottage's support chatbot log, a
-  hotel's product-recall notice, a Spanish speaker's note). Fresh (`FRESH`) until measured;
+  hotel's product-recall notice, a Spanish speaker's note). Fresh (`FRESH`) until measured four
+  times (tenth session, start of the eleventh), then a development set;
 - `dev18 reworded` and `dev18 new`: tests/data/reader_dev18/ — the eighteenth development set,
   written beside dev 17 (each in its own family of registers) in personal, literary and digital
   registers no set used: one rewording each of 3 built-in descriptions (a letter to one's future
   self, a Homeric epic pastiche, a sonnet) and six new tasks in rooms
   none of the sets above use (a Korean speaker's KakaoTalk message, a Regency-novel pastiche, a
   Gothic tale, a speech-to-text dictation, an Instagram caption, a science-fiction captain's log).
-  Unseen until measured;
+  Fresh until measured four times (tenth session, start of the eleventh), then a development set;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -153,8 +154,8 @@ was written for (a rule too wide shows as a task of another set falling):
     python benchmarks/reader_generalisation.py --dev-only --json before.json   # on main
     python benchmarks/reader_generalisation.py --dev-only --compare before.json # with the rule
 
-`--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: dev 17
-and dev 18, written in the tenth session after dev 15 and dev 16 left it), so a tuner's runs never show them; `--dev-only --fresh` keeps them, to measure
+`--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`; dev 17
+and dev 18 left it in the eleventh session), so a tuner's runs never show them; `--dev-only --fresh` keeps them, to measure
 them. `--skip 'dev9 reworded,dev9 new'` leaves any other rows' sets out as well.
 
 `--placements` measures instead the reader's recall of stated placements, without running a
@@ -280,7 +281,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH: frozenset[str] = frozenset({"dev17 reworded", "dev17 new", "dev18 reworded", "dev18 new"})
+FRESH: frozenset[str] = frozenset()
 GENERATOR = "logicenvgen"
 
 
