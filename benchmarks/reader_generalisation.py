@@ -123,6 +123,14 @@ prints LogCov / SceVR / FauDR for each, then per task:
   none of the sets above use (a Korean speaker's KakaoTalk message, a Regency-novel pastiche, a
   Gothic tale, a speech-to-text dictation, an Instagram caption, a science-fiction captain's log).
   Fresh until measured four times (tenth session, start of the eleventh), then a development set;
+- `dev19 reworded` and `dev19 new`: tests/data/reader_dev19/ — the nineteenth development set,
+  written in the eleventh session (beside dev 20, each in its own family of registers) in
+  registers of work, service and the trades and of science and technology, and the English of a
+  Mandarin Chinese speaker: one rewording each of 3 built-in descriptions (a chemical safety data
+  sheet, a call-centre agent's script, a scientific paper's Materials and Methods section) and six
+  new tasks in rooms none of the sets above use (a vet nurse's SBAR handover, a builder's
+  snagging list, an on-call runbook, a mathematician's claim and proof, an ecologist's field
+  record sheet, a Mandarin speaker's note). Fresh (`FRESH`) until measured;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -139,7 +147,7 @@ like-for-like gap.
 Every run is computed afresh (`fresh=True`: a stored unit is never reused, since the run's
 fingerprint does not cover the reader's code) with the offline model's reply cache off.
 
-    python benchmarks/reader_generalisation.py            # all forty-one rows (~3-6 min on 2 cores)
+    python benchmarks/reader_generalisation.py            # all forty-three rows (~3-6 min on 2 cores)
     python benchmarks/reader_generalisation.py --smoke    # two tasks per set (~1 min)
     python benchmarks/reader_generalisation.py --why      # and why each task lost environments
     python benchmarks/reader_generalisation.py --dev-only # without the held-out sets (for tuning)
@@ -154,8 +162,8 @@ was written for (a rule too wide shows as a task of another set falling):
     python benchmarks/reader_generalisation.py --dev-only --json before.json   # on main
     python benchmarks/reader_generalisation.py --dev-only --compare before.json # with the rule
 
-`--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`; dev 17
-and dev 18 left it in the eleventh session), so a tuner's runs never show them; `--dev-only --fresh` keeps them, to measure
+`--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: dev 19
+and dev 20, written in the eleventh session after dev 17 and dev 18 left it), so a tuner's runs never show them; `--dev-only --fresh` keeps them, to measure
 them. `--skip 'dev9 reworded,dev9 new'` leaves any other rows' sets out as well.
 
 `--placements` measures instead the reader's recall of stated placements, without running a
@@ -208,7 +216,7 @@ dev5_new=... dev6_reworded=... dev6_new=... dev7_reworded=... dev7_new=... dev8_
 dev8_new=... dev9_reworded=... dev9_new=... dev10_reworded=... dev10_new=... dev11_reworded=...
 dev11_new=... dev12_reworded=... dev12_new=... dev13_reworded=... dev13_new=... dev14_reworded=... dev14_new=...
 dev15_reworded=... dev15_new=... dev16_reworded=... dev16_new=... dev17_reworded=... dev17_new=...
-dev18_reworded=... dev18_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
+dev18_reworded=... dev18_new=... dev19_reworded=... dev19_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
 rows only).
 """
 
@@ -252,6 +260,7 @@ DEV15 = ROOT / "tests" / "data" / "reader_dev15"
 DEV16 = ROOT / "tests" / "data" / "reader_dev16"
 DEV17 = ROOT / "tests" / "data" / "reader_dev17"
 DEV18 = ROOT / "tests" / "data" / "reader_dev18"
+DEV19 = ROOT / "tests" / "data" / "reader_dev19"
 HOLDOUT2 = ROOT / "tests" / "data" / "reader_holdout2"
 #: (row name, tasks folder; None = the built-in tasks)
 SETS: tuple[tuple[str, Path | None], ...] = (
@@ -273,6 +282,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
     ("dev16 reworded", DEV16 / "tasks_reworded"), ("dev16 new", DEV16 / "tasks_new"),
     ("dev17 reworded", DEV17 / "tasks_reworded"), ("dev17 new", DEV17 / "tasks_new"),
     ("dev18 reworded", DEV18 / "tasks_reworded"), ("dev18 new", DEV18 / "tasks_new"),
+    ("dev19 reworded", DEV19 / "tasks_reworded"), ("dev19 new", DEV19 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
     ("held-out2 reworded", HOLDOUT2 / "tasks_reworded"), ("held-out2 new", HOLDOUT2 / "tasks_new"),
 )
@@ -281,7 +291,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH: frozenset[str] = frozenset()
+FRESH: frozenset[str] = frozenset({"dev19 reworded", "dev19 new"})
 GENERATOR = "logicenvgen"
 
 
