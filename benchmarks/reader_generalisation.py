@@ -122,6 +122,14 @@ prints LogCov / SceVR / FauDR for each, then per task:
   none of the sets above use (a Korean speaker's KakaoTalk message, a Regency-novel pastiche, a
   Gothic tale, a speech-to-text dictation, an Instagram caption, a science-fiction captain's log).
   Unseen until measured;
+- `dev20 reworded` and `dev20 new`: tests/data/reader_dev20/ — the twentieth development set,
+  written in the eleventh session beside dev 19 (each in its own family of registers) in family,
+  community, leisure and entertainment registers no set used and the English of a Greek speaker:
+  one rewording each of 3 built-in descriptions (a film-trailer voice-over, a square-dance
+  caller's calls, a Christmas round-robin letter) and six new tasks in rooms none of the sets
+  above use (a Greek grandfather's note, a Scout badge card, a fan-fiction chapter, a podcast's
+  opening housekeeping, a bingo caller's patter, a best man's speech). Fresh (`FRESH`) until
+  measured;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -154,7 +162,8 @@ was written for (a rule too wide shows as a task of another set falling):
     python benchmarks/reader_generalisation.py --dev-only --compare before.json # with the rule
 
 `--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: dev 17
-and dev 18, written in the tenth session after dev 15 and dev 16 left it), so a tuner's runs never show them; `--dev-only --fresh` keeps them, to measure
+and dev 18, written in the tenth session after dev 15 and dev 16 left it, and dev 20, written in the
+eleventh), so a tuner's runs never show them; `--dev-only --fresh` keeps them, to measure
 them. `--skip 'dev9 reworded,dev9 new'` leaves any other rows' sets out as well.
 
 `--placements` measures instead the reader's recall of stated placements, without running a
@@ -207,7 +216,7 @@ dev5_new=... dev6_reworded=... dev6_new=... dev7_reworded=... dev7_new=... dev8_
 dev8_new=... dev9_reworded=... dev9_new=... dev10_reworded=... dev10_new=... dev11_reworded=...
 dev11_new=... dev12_reworded=... dev12_new=... dev13_reworded=... dev13_new=... dev14_reworded=... dev14_new=...
 dev15_reworded=... dev15_new=... dev16_reworded=... dev16_new=... dev17_reworded=... dev17_new=...
-dev18_reworded=... dev18_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
+dev18_reworded=... dev18_new=... dev20_reworded=... dev20_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
 rows only).
 """
 
@@ -251,6 +260,7 @@ DEV15 = ROOT / "tests" / "data" / "reader_dev15"
 DEV16 = ROOT / "tests" / "data" / "reader_dev16"
 DEV17 = ROOT / "tests" / "data" / "reader_dev17"
 DEV18 = ROOT / "tests" / "data" / "reader_dev18"
+DEV20 = ROOT / "tests" / "data" / "reader_dev20"
 HOLDOUT2 = ROOT / "tests" / "data" / "reader_holdout2"
 #: (row name, tasks folder; None = the built-in tasks)
 SETS: tuple[tuple[str, Path | None], ...] = (
@@ -272,6 +282,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
     ("dev16 reworded", DEV16 / "tasks_reworded"), ("dev16 new", DEV16 / "tasks_new"),
     ("dev17 reworded", DEV17 / "tasks_reworded"), ("dev17 new", DEV17 / "tasks_new"),
     ("dev18 reworded", DEV18 / "tasks_reworded"), ("dev18 new", DEV18 / "tasks_new"),
+    ("dev20 reworded", DEV20 / "tasks_reworded"), ("dev20 new", DEV20 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
     ("held-out2 reworded", HOLDOUT2 / "tasks_reworded"), ("held-out2 new", HOLDOUT2 / "tasks_new"),
 )
@@ -280,7 +291,8 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH: frozenset[str] = frozenset({"dev17 reworded", "dev17 new", "dev18 reworded", "dev18 new"})
+FRESH: frozenset[str] = frozenset({"dev17 reworded", "dev17 new", "dev18 reworded", "dev18 new",
+                                   "dev20 reworded", "dev20 new"})
 GENERATOR = "logicenvgen"
 
 

@@ -1,6 +1,6 @@
-"""The reader's fifth to eighteenth development sets (tests/data/reader_dev5/, reader_dev6/,
+"""The reader's fifth to eighteenth and twentieth development sets (tests/data/reader_dev5/, reader_dev6/,
 reader_dev7/, reader_dev8/, reader_dev9/, reader_dev10/, reader_dev11/, reader_dev12/, reader_dev13/,
-reader_dev14/, reader_dev15/, reader_dev16/, reader_dev17/, reader_dev18/): new tasks and rewordings written from the task format, the
+reader_dev14/, reader_dev15/, reader_dev16/, reader_dev17/, reader_dev18/, reader_dev20/): new tasks and rewordings written from the task format, the
 catalog and the built-in tasks, without reading the offline reader or running it on them, for rounds of reader
 rules to be tuned on. One table of what differs between them; the same checks for each.
 
@@ -33,7 +33,12 @@ with a-m (dev 18's begin with n-z). dev 18 was written beside dev 17 (each in it
 of registers): personal, literary and digital writing (a letter to one's future self, a Regency-novel
 and a Gothic-tale pastiche, a captain's log in the manner of science fiction, a Homeric epic, an
 Instagram caption, a speech-to-text dictation, a sonnet) and the English of a Korean speaker, in
-room ids beginning with a letter n-z.
+room ids beginning with a letter n-z. dev 20 was written in the eleventh session beside dev 19 (each
+in its own family of registers): family, community, leisure and entertainment writing (a Scout
+badge card, a podcast's opening housekeeping, a fan-fiction chapter with author's notes, a bingo
+caller's patter, a best man's speech, a film-trailer voice-over, a square-dance caller's calls, a
+Christmas round-robin letter) and the English of a Greek speaker, in room ids beginning with a
+letter n-z (dev 19 is registered with its own family of registers once merged).
 """
 
 from __future__ import annotations
@@ -102,6 +107,7 @@ SETS = (
     DevSet("reader_dev16", "_d16", 3, 6, ("boot_room_letter_from_the_cat", "lamp_or_pillow_fetch_d16")),
     DevSet("reader_dev17", "_d17", 3, 6, ("common_room_management_notice", "living_room_plant_care_d17")),
     DevSet("reader_dev18", "_d18", 3, 6, ("turret_gothic_tale", "multi_room_trash_run_d18")),
+    DevSet("reader_dev20", "_d20", 3, 6, ("scout_hut_badge_card", "multi_room_lights_off_d20")),
 )
 IDS = [s.name for s in SETS]
 ENTRIES = {s.name: rewordings(DATA / s.name) for s in SETS}
