@@ -131,6 +131,14 @@ prints LogCov / SceVR / FauDR for each, then per task:
   new tasks in rooms none of the sets above use (a vet nurse's SBAR handover, a builder's
   snagging list, an on-call runbook, a mathematician's claim and proof, an ecologist's field
   record sheet, a Mandarin speaker's note). Fresh (`FRESH`) until measured;
+- `dev20 reworded` and `dev20 new`: tests/data/reader_dev20/ — the twentieth development set,
+  written in the eleventh session beside dev 19 (each in its own family of registers) in family,
+  community, leisure and entertainment registers no set used and the English of a Greek speaker:
+  one rewording each of 3 built-in descriptions (a film-trailer voice-over, a square-dance
+  caller's calls, a Christmas round-robin letter) and six new tasks in rooms none of the sets
+  above use (a Greek grandfather's note, a Scout badge card, a fan-fiction chapter, a podcast's
+  opening housekeeping, a bingo caller's patter, a best man's speech). Fresh (`FRESH`) until
+  measured;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -216,7 +224,7 @@ dev5_new=... dev6_reworded=... dev6_new=... dev7_reworded=... dev7_new=... dev8_
 dev8_new=... dev9_reworded=... dev9_new=... dev10_reworded=... dev10_new=... dev11_reworded=...
 dev11_new=... dev12_reworded=... dev12_new=... dev13_reworded=... dev13_new=... dev14_reworded=... dev14_new=...
 dev15_reworded=... dev15_new=... dev16_reworded=... dev16_new=... dev17_reworded=... dev17_new=...
-dev18_reworded=... dev18_new=... dev19_reworded=... dev19_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
+dev18_reworded=... dev18_new=... dev19_reworded=... dev19_new=... dev20_reworded=... dev20_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
 rows only).
 """
 
@@ -261,6 +269,7 @@ DEV16 = ROOT / "tests" / "data" / "reader_dev16"
 DEV17 = ROOT / "tests" / "data" / "reader_dev17"
 DEV18 = ROOT / "tests" / "data" / "reader_dev18"
 DEV19 = ROOT / "tests" / "data" / "reader_dev19"
+DEV20 = ROOT / "tests" / "data" / "reader_dev20"
 HOLDOUT2 = ROOT / "tests" / "data" / "reader_holdout2"
 #: (row name, tasks folder; None = the built-in tasks)
 SETS: tuple[tuple[str, Path | None], ...] = (
@@ -283,6 +292,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
     ("dev17 reworded", DEV17 / "tasks_reworded"), ("dev17 new", DEV17 / "tasks_new"),
     ("dev18 reworded", DEV18 / "tasks_reworded"), ("dev18 new", DEV18 / "tasks_new"),
     ("dev19 reworded", DEV19 / "tasks_reworded"), ("dev19 new", DEV19 / "tasks_new"),
+    ("dev20 reworded", DEV20 / "tasks_reworded"), ("dev20 new", DEV20 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
     ("held-out2 reworded", HOLDOUT2 / "tasks_reworded"), ("held-out2 new", HOLDOUT2 / "tasks_new"),
 )
@@ -291,7 +301,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH: frozenset[str] = frozenset({"dev19 reworded", "dev19 new"})
+FRESH: frozenset[str] = frozenset({"dev19 reworded", "dev19 new", "dev20 reworded", "dev20 new"})
 GENERATOR = "logicenvgen"
 
 

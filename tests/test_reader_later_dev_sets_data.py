@@ -1,6 +1,6 @@
-"""The reader's fifth to nineteenth development sets (tests/data/reader_dev5/, reader_dev6/,
+"""The reader's fifth to twentieth development sets (tests/data/reader_dev5/, reader_dev6/,
 reader_dev7/, reader_dev8/, reader_dev9/, reader_dev10/, reader_dev11/, reader_dev12/, reader_dev13/,
-reader_dev14/, reader_dev15/, reader_dev16/, reader_dev17/, reader_dev18/, reader_dev19/): new tasks and rewordings written from the task format, the
+reader_dev14/, reader_dev15/, reader_dev16/, reader_dev17/, reader_dev18/, reader_dev19/, reader_dev20/): new tasks and rewordings written from the task format, the
 catalog and the built-in tasks, without reading the offline reader or running it on them, for rounds of reader
 rules to be tuned on. One table of what differs between them; the same checks for each.
 
@@ -39,6 +39,12 @@ handover, a builder's snagging list, an on-call runbook, a mathematician's claim
 ecologist's field record sheet, a chemical safety data sheet, a call-centre script, a paper's
 Materials and Methods section) and the English of a Mandarin Chinese speaker, in room ids
 beginning with a letter a-m.
+dev 20 was written in the eleventh session beside dev 19 (each
+in its own family of registers): family, community, leisure and entertainment writing (a Scout
+badge card, a podcast's opening housekeeping, a fan-fiction chapter with author's notes, a bingo
+caller's patter, a best man's speech, a film-trailer voice-over, a square-dance caller's calls, a
+Christmas round-robin letter) and the English of a Greek speaker, in room ids beginning with a
+letter n-z.
 """
 
 from __future__ import annotations
@@ -108,6 +114,7 @@ SETS = (
     DevSet("reader_dev17", "_d17", 3, 6, ("common_room_management_notice", "living_room_plant_care_d17")),
     DevSet("reader_dev18", "_d18", 3, 6, ("turret_gothic_tale", "multi_room_trash_run_d18")),
     DevSet("reader_dev19", "_d19", 3, 6, ("mahjong_room_auntie_wang", "laundry_drying_rack_d19")),
+    DevSet("reader_dev20", "_d20", 3, 6, ("scout_hut_badge_card", "multi_room_lights_off_d20")),
 )
 IDS = [s.name for s in SETS]
 ENTRIES = {s.name: rewordings(DATA / s.name) for s in SETS}
