@@ -51,6 +51,7 @@ from logicenveval.offline.lexicon import (
     Mention,
     singular,
     tokens,
+    without_modifiers,
 )
 from logicenveval.offline.placement import described_placements
 from logicenveval.offline.sentences import (
@@ -577,17 +578,12 @@ class _Reader:
                 return role
         return None
 
-    def mentions(self, words: list[str], toks: list[tuple[str, int, int]]) -> list[Mention]:
+    def mentions(self, words: list[str], toks: list[tuple[str, int, int]], surface: list[str]) -> list[Mention]:
+        """The clause's mentions of things, pronouns resolved; `surface`: its words as written."""
         found = [self._recent_first(m, words) for m in self.lex.find_mentions(toks) if not _verb_read(toks, m)]
         # "the kitchen sink", "the bathroom mirror": a room's name right before a thing's names the thing
         found = [m for m in found if m.kind != "room" or not any(x.start == m.end and x.kind == "role" for x in found)]
-        # "Bread knife, on the counter ...: if it's dirty": a one-word name of a thing right before
-        # another's, with only a space between, is the compound's modifier; the thing is the head
-        # (the knife). A name of two words keeps its own reading: in "Air con unit" the "unit" is
-        # the air conditioner's, no shelving unit
-        found = [m for m in found if m.kind != "role" or m.end - m.start > 1 or not any(
-            x.start == m.end and x.kind == "role" and set(x.roles) != set(m.roles)
-            and toks[m.end][1] - toks[m.end - 1][2] == 1 for x in found)]
+        found = without_modifiers(found, toks, surface)
         relative = words[:1] in (["which"], ["who"]) and bool(self.recent) and self.topic_kind == "role"
         if relative:
             # "... hung in the wardrobe, which is opened first if its door is closed": a clause
@@ -757,7 +753,7 @@ class _Reader:
         self.dashes = frozenset(k for k in range(1, len(toks)) if said[toks[k - 1][2]:toks[k][1]].strip() in _DASHES
                                 and said[toks[k - 1][2]:toks[k][1]] != "-")
         self.plural_at = frozenset(k for k, (w, a, b) in enumerate(toks) if said[a:b] != w and said[a:b].endswith("s"))
-        mentions = self.mentions(words, toks)
+        mentions = self.mentions(words, toks, [said[a:b] for _, a, b in toks])
         self.starts = frozenset(x.start for x in mentions if x.kind == "role")
         for m in mentions:
             if m.kind == "role" and len(m.roles) == 1:

@@ -1,0 +1,35 @@
+"""Rules for the conditions the older development sets' new tasks lost (docs/reader.md, "Conditions
+in older sets' new tasks (eleventh session)"). Every sentence here is written for these tests, in at
+least two registers per rule, with near misses that must not be read so."""
+
+from __future__ import annotations
+
+from reading import asks, placed
+
+# -- a two-word name written closed names the role in a condition too ------------------------------
+
+
+def test_a_closed_compound_names_the_thing_the_condition_asks_of() -> None:
+    # an SMS and a shop's procedure: "aircon" is the air conditioner's "air con" written closed
+    assert asks("If the aircon is on, switch it off pls", ("office",), "state(air_conditioner, toggled_on)")
+    assert asks("5. Aircon off, if it's still running.", ("office",), "state(air_conditioner, toggled_on)")
+
+
+# -- a compound's modifier names no thing of its own -----------------------------------------------
+
+
+def test_a_modifier_naming_another_thing_is_not_that_thing_placed() -> None:
+    # a checklist: the bread knife is on the counter, the loaf is not said to be
+    text = "Bread knife, on the counter by the slicer. Loaf left on the counter? It goes in the basket."
+    assert "on(bread, kitchen_counter)" not in placed(text, ("kitchen",))
+    assert "on(knife, kitchen_counter)" in placed(text, ("kitchen",))
+    assert asks(text, ("kitchen",), "on(bread, kitchen_counter)")
+    # a letter: the coffee mug on the desk, the coffee in the cupboard
+    text = "The coffee mug is on the desk, and the coffee is in the cupboard."
+    assert "on(mug, desk)" in placed(text, ("office",))
+
+
+def test_a_verb_after_a_name_is_no_compound_head() -> None:
+    # "a lamp stands on it": the lamp stands, no lamp stand
+    assert "on(table_lamp, nightstand)" in placed("The bedroom has a nightstand; a lamp stands on it.", ("bedroom",))
+    assert "on(vase, wall_shelf)" in placed("Above the sofa hangs a shelf; a vase sits on it.", ("living_room",))
