@@ -4,7 +4,29 @@ least two registers per rule, with near misses that must not be read so."""
 
 from __future__ import annotations
 
-from reading import asks, placed
+from reading import asks, factors, placed
+
+# -- a stranded "on" / "off" is the state of an elided subject -------------------------------------
+
+
+def test_a_bare_on_or_off_after_if_is_the_topics_switch_state() -> None:
+    # a caretaker's terse log, a heading with a colon, a dash and an arrow
+    assert asks("Ceiling fan. Staff leave it going. If on -> off.", ("classroom",),
+                "state(ceiling_fan, toggled_on)")
+    assert asks("Heater: if on, switch it off.", ("office",), "state(radiator, toggled_on)")
+    # a chatty note: "if still off", the topic named in the sentence before
+    assert asks("The desk lamp is a pain. If still off, turn it on for Gran.", ("study",),
+                "state(desk_lamp, toggled_on)")
+
+
+def test_a_particle_with_an_object_or_a_bare_out_stays_a_place() -> None:
+    # "if on the desk" is where the mug is, never whether it is switched on
+    values = factors("Mug: if on the desk, put it in the sink.", ("study",))
+    assert not any(v.startswith("state(mug, toggled_on)") for vs in values.values() for v in vs)
+    # "if out": left out, no switch
+    assert not any("toggled_on" in v for vs in factors("The mug. If out, put it away.", ("kitchen",)).values()
+                   for v in vs)
+
 
 # -- a two-word name written closed names the role in a condition too ------------------------------
 

@@ -497,6 +497,19 @@ def _negation(word: str) -> bool:
     return word in NEGATIONS
 
 
+#: the state words that are also particles of place or of a phrasal verb ("on the table", "off
+#: the shelf", "out of the box"), and those of them that are a state where nothing follows them
+#: (`_stranded`); a stranded "out" stays a place ("the mug. If out, put it away": left out)
+PARTICLE_STATES = frozenset({"on", "off", "out"})
+STRANDED_STATES = frozenset({"on", "off"})
+
+
+def _stranded(words: list[str], k: int) -> bool:
+    """Whether the particle at `k` (`STRANDED_STATES`) ends its clause, with no object after it:
+    then it is the predicate of an elided "it is" ("Heater: if on, switch it off", "The lamp - if
+    still on -> off"), not a preposition ("if on the floor", "when off the hook")."""
+    return words[k] in STRANDED_STATES and k == len(words) - 1
+
 class _Reader:
     """Extracts facts clause by clause, remembering topics for pronouns."""
 
@@ -861,7 +874,8 @@ class _Reader:
             # one negated only by its own "not"
             flags: set[str] = set()
             for k, w in enumerate(words):
-                if w in STATE_WORDS and w not in ("on", "off", "out") and STATE_WORDS[w][0] not in flags:
+                if w in STATE_WORDS and (w not in PARTICLE_STATES or _stranded(words, k)) \
+                        and STATE_WORDS[w][0] not in flags:
                     if flags and words[k - 1] not in ("and", "but", "not", "still", "yet"):
                         break
                     flag, pol = STATE_WORDS[w]
