@@ -55,3 +55,21 @@ def test_a_verb_after_a_name_is_no_compound_head() -> None:
     # "a lamp stands on it": the lamp stands, no lamp stand
     assert "on(table_lamp, nightstand)" in placed("The bedroom has a nightstand; a lamp stands on it.", ("bedroom",))
     assert "on(vase, wall_shelf)" in placed("Above the sofa hangs a shelf; a vase sits on it.", ("living_room",))
+
+
+# -- a place said alone is an answer, not a new topic ----------------------------------------------
+
+
+def test_a_bare_place_answer_leaves_the_topic_for_the_next_pronoun() -> None:
+    # a stand-up set: a question, its place answer, then "it"
+    text = ("The remote. Where does it live? On the TV stand. If it's lying on the floor, "
+            "put it back on the TV stand.")
+    assert asks(text, ("living_room",), "on(remote_control, floor)")
+    # a house-sitter's note, the answer with an adverb of habit
+    text = "Then the mug. Where does it go? In the cupboard, normally. If it's dirty, wash it."
+    assert asks(text, ("kitchen",), "state(mug, dirty)")
+
+
+def test_a_place_with_a_verb_or_a_pronoun_is_no_bare_answer() -> None:
+    # "On the shelf sits the vase. If it's dusty ...": a clause with its verb speaks of the vase
+    assert asks("On the shelf sits the vase. If it's dusty, wipe it.", ("living_room",), "state(vase, dirty)")

@@ -497,6 +497,22 @@ def _negation(word: str) -> bool:
     return word in NEGATIONS
 
 
+#: what a clause that is only a place may hold besides its place: articles, a norm or frequency
+#: adverb, "usually" ("On the TV stand, usually.")
+_BARE_PLACE_WORDS = ARTICLES | NORM_ADVERBS | FREQUENCY | {"just", "right", "back", "over", "there"}
+
+
+def _bare_place(words: list[str], found: list[Mention]) -> bool:
+    """Whether the clause is a place and nothing else, opened by its preposition, with no verb or
+    other thing ("Where does it live? On the TV stand.", "Where's the remote? In the drawer,
+    normally."): the answer to where the thing spoken of is. Its place is no new topic: a later
+    "it" ("If it's lying on the floor, ...") is still the thing, not the TV stand."""
+    covered = {k for m in found for k in range(m.start, m.end)}
+    return bool(words) and words[0] in PLACE_PREPS and any(m.kind == "role" for m in found) and all(
+        m.kind != "pronoun" for m in found) and all(
+        k in covered or w in _BARE_PLACE_WORDS | PLACE_PREPS for k, w in enumerate(words))
+
+
 #: the state words that are also particles of place or of a phrasal verb ("on the table", "off
 #: the shelf", "out of the box"), and those of them that are a state where nothing follows them
 #: (`_stranded`); a stranded "out" stays a place ("the mug. If out, put it away": left out)
@@ -746,7 +762,7 @@ class _Reader:
             named_as = next((m for m in found if m.kind == "role" and m.start >= lead + 2), None)
             if named_as is not None and not any(w in PLACE_PREPS for w in words[lead + 2:named_as.start]):
                 first = named_as
-        if first is not None and first.kind != "pronoun":
+        if first is not None and first.kind != "pronoun" and not _bare_place(words, found):
             self.topic, self.topic_kind = first.roles, first.kind
         thing = next((m for m in found if m.kind == "role" and not _placed(words, m)), None)
         if thing is not None:
