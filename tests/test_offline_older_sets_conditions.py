@@ -73,3 +73,29 @@ def test_a_bare_place_answer_leaves_the_topic_for_the_next_pronoun() -> None:
 def test_a_place_with_a_verb_or_a_pronoun_is_no_bare_answer() -> None:
     # "On the shelf sits the vase. If it's dusty ...": a clause with its verb speaks of the vase
     assert asks("On the shelf sits the vase. If it's dusty, wipe it.", ("living_room",), "state(vase, dirty)")
+
+
+# -- another language's state words and a conditional after a dash ---------------------------------
+
+
+def test_a_code_switched_condition_asks_its_own_languages_state_word() -> None:
+    # Hindi-English: the state word is Hindi, the subject the item's topic
+    text = "Tiffin box, the lunch box on the table. Agar ganda hai toh sink mein rakh do."
+    assert asks(text, ("kitchen",), "state(lunch_box, dirty)")
+    # Spanish-English and Malay-English
+    assert asks("The towel, en el suelo. Si está mojado, hang it on the rack.", ("bathroom",), "state(towel, wet)")
+    assert asks("The water bottle - kalau kosong, fill it at the sink.", ("kitchen",),
+                "state(water_bottle, filled)")
+
+
+def test_a_conditional_after_a_dash_opens_the_condition() -> None:
+    # German-English: "wenn" after a dash; the German "an" of "noch an ist"
+    assert asks("Der Ventilator, the ceiling fan - wenn er noch an ist, bitte ausmachen.", ("bedroom",),
+                "state(ceiling_fan, toggled_on)")
+    assert asks("The desk lamp - wenn es noch on ist, turn it off.", ("study",), "state(desk_lamp, toggled_on)")
+
+
+def test_an_english_word_in_the_table_is_read_only_before_another_languages_word() -> None:
+    # "an" before an English noun is the article, no state
+    values = factors("If you find an apple on the floor, put it in the bin.", ("kitchen",))
+    assert not any("toggled_on" in v for vs in values.values() for v in vs)

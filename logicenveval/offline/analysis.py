@@ -70,6 +70,7 @@ from logicenveval.offline.sentences import (
     code_switched,
     determiner,
     expand,
+    foreign,
     habitual,
     split_sentences,
     taken_word,
@@ -495,6 +496,44 @@ def _quantified(words: list[str], start: int) -> bool:
 
 def _negation(word: str) -> bool:
     return word in NEGATIONS
+
+
+#: The state words of languages English is often mixed with in writing (those of `NATIVE_IF`, and
+#: Portuguese), as their English state word (`STATE_WORDS`): read only in a condition in good part
+#: of another language (`_Reader.code_switched`), where the English words the clause carries
+#: say what is asked and the other language's adjective may be all there is ("Agar ganda hai
+#: toh ...", "wenn sie noch an ist", "si está sucio"). Words that are as likely a conjunction,
+#: preposition or noun there (Hindi "band", German "auf", "zu") are left out.
+NATIVE_STATES = {
+    # Hindi-Urdu, romanised
+    "ganda": "dirty", "gandi": "dirty", "gande": "dirty", "saaf": "clean", "khaali": "empty", "khali": "empty",
+    "bhara": "full", "bhari": "full", "geela": "wet", "gila": "wet", "sukha": "dry", "khula": "open", "khuli": "open",
+    # German
+    "an": "on", "aus": "off", "offen": "open", "geschlossen": "closed", "schmutzig": "dirty", "dreckig": "dirty",
+    "sauber": "clean", "leer": "empty", "voll": "full", "nass": "wet", "trocken": "dry",
+    # Spanish
+    "sucio": "dirty", "sucia": "dirty", "limpio": "clean", "limpia": "clean", "vacio": "empty", "vacia": "empty",
+    "lleno": "full", "llena": "full", "mojado": "wet", "mojada": "wet", "seco": "dry", "seca": "dry",
+    "abierto": "open", "abierta": "open", "cerrado": "closed", "cerrada": "closed", "prendido": "on",
+    "encendido": "on", "apagado": "off",
+    # Portuguese
+    "sujo": "dirty", "suja": "dirty", "limpo": "clean", "vazio": "empty", "cheio": "full", "molhado": "wet",
+    "aberto": "open", "fechado": "closed", "ligado": "on", "desligado": "off",
+    # Tagalog, Malay and Indonesian
+    "marumi": "dirty", "malinis": "clean", "basa": "wet", "tuyo": "dry", "sarado": "closed",
+    "kotor": "dirty", "bersih": "clean", "basah": "wet", "kering": "dry", "kosong": "empty", "penuh": "full",
+    "tutup": "closed",
+}
+
+
+def _native_state(words: list[str], k: int) -> str | None:
+    """The English state word (`NATIVE_STATES`) another language's word at `k` is, when it is one
+    there: a word of no English (`sentences.foreign`), or one English has too ("an") only where
+    the word after it is also of no English or none follows ("noch an ist": not "an apple")."""
+    english = NATIVE_STATES.get(words[k])
+    if english is None or not foreign(words[k]) and k + 1 < len(words) and not foreign(words[k + 1]):
+        return None
+    return english
 
 
 #: what a clause that is only a place may hold besides its place: articles, a norm or frequency
@@ -950,6 +989,7 @@ class _Reader:
         negated = any(_negation(w) for w in words)
         facts: list[Fact] = []
         for k, w in enumerate(words):
+            w = _native_state(words, k) or w
             if w not in STATE_WORDS or any(p.start in (k + 1, k + 2) for p in places):
                 continue  # ("on di floor": a place, not a state)
             flag, pol = STATE_WORDS[w]
