@@ -4,7 +4,7 @@ least two registers per rule, with near misses that must not be read so."""
 
 from __future__ import annotations
 
-from reading import asks, factors, placed
+from reading import asks, factors, named, placed
 
 # -- a stranded "on" / "off" is the state of an elided subject -------------------------------------
 
@@ -99,3 +99,28 @@ def test_an_english_word_in_the_table_is_read_only_before_another_languages_word
     # "an" before an English noun is the article, no state
     values = factors("If you find an apple on the floor, put it in the bin.", ("kitchen",))
     assert not any("toggled_on" in v for vs in values.values() for v in vs)
+
+
+# -- a light said before its switch's whole name is the switch -------------------------------------
+
+
+def test_the_lights_before_the_light_switch_are_the_switch() -> None:
+    # a quest log and a club's closing notice: the condition asks the switch the instruction flicks
+    assert asks("If the lights are still on, flick the light switch off.", ("studio",),
+                "state(light_switch, toggled_on)")
+    assert asks("Last out? The light may be on - if so, press the light switch by the door.", ("hall",),
+                "state(light_switch, toggled_on)")
+
+
+def test_a_lamp_named_for_itself_stays_a_lamp_beside_the_switch() -> None:
+    values = factors("If the lamp is on, turn it off at the light switch.", ("study",))
+    assert not any("light_switch" in v for vs in values.values() for v in vs)
+
+
+def test_a_switching_verb_after_the_light_is_no_switch() -> None:
+    # a numbered notice and a text message: the verb opening the next item is no light switch
+    text = "The neighbours mind the light.\n3. Switch off the ceiling fan should it still be spinning."
+    assert asks(text, ("hall",), "state(ceiling_fan, toggled_on)")
+    assert "light_switch" not in {c for c, _ in named(text, ("hall",)).values()}
+    text = "sorry about the light!! switch off the telly if its still on x"
+    assert "light_switch" not in {c for c, _ in named(text, ("hall",)).values()}
