@@ -51,6 +51,7 @@ from logicenveval.offline.lexicon import (
     Mention,
     singular,
     tokens,
+    without_modifiers,
 )
 from logicenveval.offline.placement import described_placements
 from logicenveval.offline.sentences import (
@@ -69,6 +70,7 @@ from logicenveval.offline.sentences import (
     code_switched,
     determiner,
     expand,
+    foreign,
     habitual,
     split_sentences,
     taken_word,
@@ -496,6 +498,73 @@ def _negation(word: str) -> bool:
     return word in NEGATIONS
 
 
+#: The state words of languages English is often mixed with in writing (those of `NATIVE_IF`, and
+#: Portuguese), as their English state word (`STATE_WORDS`): read only in a condition in good part
+#: of another language (`_Reader.code_switched`), where the English words the clause carries
+#: say what is asked and the other language's adjective may be all there is ("Agar ganda hai
+#: toh ...", "wenn sie noch an ist", "si está sucio"). Words that are as likely a conjunction,
+#: preposition or noun there (Hindi "band", German "auf", "zu") are left out.
+NATIVE_STATES = {
+    # Hindi-Urdu, romanised
+    "ganda": "dirty", "gandi": "dirty", "gande": "dirty", "saaf": "clean", "khaali": "empty", "khali": "empty",
+    "bhara": "full", "bhari": "full", "geela": "wet", "gila": "wet", "sukha": "dry", "khula": "open", "khuli": "open",
+    # German
+    "an": "on", "aus": "off", "offen": "open", "geschlossen": "closed", "schmutzig": "dirty", "dreckig": "dirty",
+    "sauber": "clean", "leer": "empty", "voll": "full", "nass": "wet", "trocken": "dry",
+    # Spanish
+    "sucio": "dirty", "sucia": "dirty", "limpio": "clean", "limpia": "clean", "vacio": "empty", "vacia": "empty",
+    "lleno": "full", "llena": "full", "mojado": "wet", "mojada": "wet", "seco": "dry", "seca": "dry",
+    "abierto": "open", "abierta": "open", "cerrado": "closed", "cerrada": "closed", "prendido": "on",
+    "encendido": "on", "apagado": "off",
+    # Portuguese
+    "sujo": "dirty", "suja": "dirty", "limpo": "clean", "vazio": "empty", "cheio": "full", "molhado": "wet",
+    "aberto": "open", "fechado": "closed", "ligado": "on", "desligado": "off",
+    # Tagalog, Malay and Indonesian
+    "marumi": "dirty", "malinis": "clean", "basa": "wet", "tuyo": "dry", "sarado": "closed",
+    "kotor": "dirty", "bersih": "clean", "basah": "wet", "kering": "dry", "kosong": "empty", "penuh": "full",
+    "tutup": "closed",
+}
+
+
+def _native_state(words: list[str], k: int) -> str | None:
+    """The English state word (`NATIVE_STATES`) another language's word at `k` is, when it is one
+    there: a word of no English (`sentences.foreign`), or one English has too ("an") only where
+    the word after it is also of no English or none follows ("noch an ist": not "an apple")."""
+    english = NATIVE_STATES.get(words[k])
+    if english is None or not foreign(words[k]) and k + 1 < len(words) and not foreign(words[k + 1]):
+        return None
+    return english
+
+
+#: what a clause that is only a place may hold besides its place: articles, a norm or frequency
+#: adverb, "usually" ("On the TV stand, usually.")
+_BARE_PLACE_WORDS = ARTICLES | NORM_ADVERBS | FREQUENCY | {"just", "right", "back", "over", "there"}
+
+
+def _bare_place(words: list[str], found: list[Mention]) -> bool:
+    """Whether the clause is a place and nothing else, opened by its preposition, with no verb or
+    other thing ("Where does it live? On the TV stand.", "Where's the remote? In the drawer,
+    normally."): the answer to where the thing spoken of is. Its place is no new topic: a later
+    "it" ("If it's lying on the floor, ...") is still the thing, not the TV stand."""
+    covered = {k for m in found for k in range(m.start, m.end)}
+    return bool(words) and words[0] in PLACE_PREPS and any(m.kind == "role" for m in found) and all(
+        m.kind != "pronoun" for m in found) and all(
+        k in covered or w in _BARE_PLACE_WORDS | PLACE_PREPS for k, w in enumerate(words))
+
+
+#: the state words that are also particles of place or of a phrasal verb ("on the table", "off
+#: the shelf", "out of the box"), and those of them that are a state where nothing follows them
+#: (`_stranded`); a stranded "out" stays a place ("the mug. If out, put it away": left out)
+PARTICLE_STATES = frozenset({"on", "off", "out"})
+STRANDED_STATES = frozenset({"on", "off"})
+
+
+def _stranded(words: list[str], k: int) -> bool:
+    """Whether the particle at `k` (`STRANDED_STATES`) ends its clause, with no object after it:
+    then it is the predicate of an elided "it is" ("Heater: if on, switch it off", "The lamp - if
+    still on -> off"), not a preposition ("if on the floor", "when off the hook")."""
+    return words[k] in STRANDED_STATES and k == len(words) - 1
+
 class _Reader:
     """Extracts facts clause by clause, remembering topics for pronouns."""
 
@@ -577,17 +646,12 @@ class _Reader:
                 return role
         return None
 
-    def mentions(self, words: list[str], toks: list[tuple[str, int, int]]) -> list[Mention]:
+    def mentions(self, words: list[str], toks: list[tuple[str, int, int]], surface: list[str]) -> list[Mention]:
+        """The clause's mentions of things, pronouns resolved; `surface`: its words as written."""
         found = [self._recent_first(m, words) for m in self.lex.find_mentions(toks) if not _verb_read(toks, m)]
         # "the kitchen sink", "the bathroom mirror": a room's name right before a thing's names the thing
         found = [m for m in found if m.kind != "room" or not any(x.start == m.end and x.kind == "role" for x in found)]
-        # "Bread knife, on the counter ...: if it's dirty": a one-word name of a thing right before
-        # another's, with only a space between, is the compound's modifier; the thing is the head
-        # (the knife). A name of two words keeps its own reading: in "Air con unit" the "unit" is
-        # the air conditioner's, no shelving unit
-        found = [m for m in found if m.kind != "role" or m.end - m.start > 1 or not any(
-            x.start == m.end and x.kind == "role" and set(x.roles) != set(m.roles)
-            and toks[m.end][1] - toks[m.end - 1][2] == 1 for x in found)]
+        found = without_modifiers(found, toks, surface)
         relative = words[:1] in (["which"], ["who"]) and bool(self.recent) and self.topic_kind == "role"
         if relative:
             # "... hung in the wardrobe, which is opened first if its door is closed": a clause
@@ -737,7 +801,7 @@ class _Reader:
             named_as = next((m for m in found if m.kind == "role" and m.start >= lead + 2), None)
             if named_as is not None and not any(w in PLACE_PREPS for w in words[lead + 2:named_as.start]):
                 first = named_as
-        if first is not None and first.kind != "pronoun":
+        if first is not None and first.kind != "pronoun" and not _bare_place(words, found):
             self.topic, self.topic_kind = first.roles, first.kind
         thing = next((m for m in found if m.kind == "role" and not _placed(words, m)), None)
         if thing is not None:
@@ -757,7 +821,7 @@ class _Reader:
         self.dashes = frozenset(k for k in range(1, len(toks)) if said[toks[k - 1][2]:toks[k][1]].strip() in _DASHES
                                 and said[toks[k - 1][2]:toks[k][1]] != "-")
         self.plural_at = frozenset(k for k, (w, a, b) in enumerate(toks) if said[a:b] != w and said[a:b].endswith("s"))
-        mentions = self.mentions(words, toks)
+        mentions = self.mentions(words, toks, [said[a:b] for _, a, b in toks])
         self.starts = frozenset(x.start for x in mentions if x.kind == "role")
         for m in mentions:
             if m.kind == "role" and len(m.roles) == 1:
@@ -865,7 +929,8 @@ class _Reader:
             # one negated only by its own "not"
             flags: set[str] = set()
             for k, w in enumerate(words):
-                if w in STATE_WORDS and w not in ("on", "off", "out") and STATE_WORDS[w][0] not in flags:
+                if w in STATE_WORDS and (w not in PARTICLE_STATES or _stranded(words, k)) \
+                        and STATE_WORDS[w][0] not in flags:
                     if flags and words[k - 1] not in ("and", "but", "not", "still", "yet"):
                         break
                     flag, pol = STATE_WORDS[w]
@@ -924,6 +989,7 @@ class _Reader:
         negated = any(_negation(w) for w in words)
         facts: list[Fact] = []
         for k, w in enumerate(words):
+            w = _native_state(words, k) or w
             if w not in STATE_WORDS or any(p.start in (k + 1, k + 2) for p in places):
                 continue  # ("on di floor": a place, not a state)
             flag, pol = STATE_WORDS[w]

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from lemminflect import getAllLemmas, getLemma
@@ -225,6 +225,24 @@ def _one_word_names(catalog: Catalog) -> frozenset[tuple[str, ...]]:
                      if len(words_of(n)) == 1)
 
 
+def without_modifiers(found: list[Mention], toks: list[tuple[str, int, int]], surface: list[str]) -> list[Mention]:
+    """The mentions with a compound's modifier made part of its head's: in "Bread knife, on the
+    counter ...: if it's dirty" a one-word name of a thing right before another's, with only a
+    space between, is the compound's modifier and the thing is the head (the knife, not the
+    bread), for the condition reader (`offline.analysis`) and the placement reader alike, so that
+    neither reads the bread as a thing said to be there; the head's mention starts at the
+    modifier, so "the bread knife" is one noun phrase after its article. A name of two words
+    keeps its own reading: in "Air con unit" the "unit" is the air conditioner's, no shelving
+    unit; and a word that is no compound's head as written (`surface`, `compound_head`) is none
+    ("a lamp stands on it": the lamp stands, no lamp stand)."""
+    modifiers = {m.end: m.start for m in found if m.kind == "role" and m.end - m.start == 1 and m.end < len(toks)
+                 and toks[m.end][1] - toks[m.end - 1][2] == 1
+                 and compound_head(surface[m.end], surface[m.start] != toks[m.start][0]) and any(
+                     x.start == m.end and x.kind == "role" and set(x.roles) != set(m.roles) for x in found)}
+    return [replace(m, start=modifiers[m.start]) if m.kind == "role" and m.start in modifiers else m
+            for m in found if m.start + 1 not in modifiers or m.kind != "role" or m.end != m.start + 1]
+
+
 @dataclass
 class Lexicon:
     roles: dict[str, dict[str, Any]]
@@ -301,6 +319,15 @@ class Lexicon:
                         if len(word) > len(tail) + 2 and word.endswith(tail) and (tail,) not in lex.phrases:
                             closed.setdefault((tail,), set()).add(name)
         lex.phrases.update(closed)
+        # an English compound is written open or closed ("air con", "aircon"; "dish rack",
+        # "dishrack"): a two-word name of a role's kind is also its closed form, as
+        # `offline.naming` names it, when that form names no role of its own
+        for name, role in roles.items():
+            cat = catalog.get(role["category"])
+            for n in {role["category"], *(cat.synonyms if cat else ())}:
+                phrase = words_of(n)
+                if len(phrase) == 2 and "of" not in phrase and not is_wordnet_name(n):
+                    lex.phrases.setdefault((singular("".join(phrase)),), {name})
         for name, role in roles.items():
             phrase = words_of(role["category"])
             if len(phrase) == 2 and phrase[1] in CONTROL_HEADS and phrase[:1] not in lex.phrases:

@@ -651,15 +651,17 @@ class _Reader:
 
     def controls_ahead(self, i: int) -> str | None:
         """The control kind named for the word at `i` ("light switch" for "light") when its
-        sentence or the next says its head alone ("the switch"): the thing the text switches,
-        the switch, as when it is named first (`CONTROL_HEADS`)."""
+        sentence or the next says its head ("the switch", or the control's whole name: "If the
+        lights are still on, flick the light switch off", the name written as one, not "the
+        light. Switch off the fan"): the thing the text switches, the switch, as when it is named
+        first (`CONTROL_HEADS`)."""
         word = self.text.words[i]
         kinds = self.controls.get(word, ())
         if len(kinds) != 1:
             return None
         end = self.text.sentence_end(self.text.sentence_end(i))
         head = words_of(kinds[0])[1]
-        return kinds[0] if any(self.text.words[k] == head and self.text.words[k - 1] != word
+        return kinds[0] if any(self.text.words[k] == head and (self.text.words[k - 1] != word or self.text.gaps[k] == " ")
                                for k in range(i + 1, min(end, len(self.text.words)))) else None
 
     def room_evidence(self) -> set[str]:

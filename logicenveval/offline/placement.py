@@ -53,6 +53,7 @@ from logicenveval.offline.lexicon import (
     Mention,
     singular,
     verb_form,
+    without_modifiers,
 )
 from logicenveval.offline.sentences import (
     ACTIONS,
@@ -276,6 +277,7 @@ def _sentences(text: str, lex: Lexicon) -> list[_Sentence]:
         if len(kept) < len(toks):  # an aside dropped: the mentions after it moved
             toks, mentions = kept, lex.find_mentions([(t.lemma, t.start, t.end) for t in kept])
         mentions = [m for m in mentions if not _verb_mention(toks, mentions, m)]
+        mentions = without_modifiers(mentions, [(t.lemma, t.start, t.end) for t in toks], [t.word for t in toks])
         out.append(_Sentence(toks, _with_room_word(toks, mentions, lex)))
     return _with_aliases(out)
 

@@ -632,11 +632,14 @@ def code_switched(words: list[str]) -> bool:
 #: "si no está maduro todavía"; "entonces", "alors"), Tagalog "kung" and "kapag", German "wenn ...
 #: dann", Malay and Indonesian "kalau" and "jika" ("maka"). A word English also has ("se", "als",
 #: "falls", "pag") is left out; "agar", an English noun too, opens a condition only in a clause
-#: in good part of another language (`_native_if`, `code_switched`).
+#: in good part of another language (`_native_if`, `code_switched`). The conjunction opens its
+#: clause after a sentence's or a clause's mark, a dash too ("Die Stehlampe, the floor lamp -
+#: wenn sie noch an ist, ...": the English gloss, then the condition).
 NATIVE_IF = {"agar": ("toh",), "si": ("entonces", "alors"), "kung": (), "kapag": (), "wenn": ("dann",),
              "kalau": ("maka",), "jika": ("maka",)}
 _NATIVE_THEN = frozenset(w for thens in NATIVE_IF.values() for w in thens)
-_NATIVE_IF = re.compile(rf"(?:^|(?<=[.!?,;:(\n])|(?<=[.!?,;:(]\s))[ \t]*({'|'.join(NATIVE_IF)})\b(?P<rest>[^.!?\n]*)",
+_NATIVE_IF = re.compile(rf"(?:^|(?<=[.!?,;:(\n])|(?<=[.!?,;:(\-\u2013\u2014]\s))[ \t]*({'|'.join(NATIVE_IF)})\b"
+                        r"(?P<rest>[^.!?\n]*)",
                         re.I | re.M)
 _THEN_WORD = re.compile(rf"\s*,?\s+\b({'|'.join(sorted(_NATIVE_THEN))})\b", re.I)
 
