@@ -110,7 +110,10 @@ MOTION = frozenset(
 )
 PARTS = frozenset({"door", "lid", "leaf", "screen", "soil", "surface", "top", "inside", "water",
                    "content", "bottom", "side", "handle", "shelf", "drawer", "bag", "glass", "bottle",
-                   "box", "pack", "packet", "jar", "carton", "tub", "container", "roll"})
+                   "box", "pack", "packet", "jar", "carton", "tub", "container", "roll",
+                   # parts whose failure is their thing's: "unless its bulb is broken", "if the
+                   # torch's batteries are dead" ask the lamp's and the torch's state
+                   "bulb", "battery", "batteries", "wick", "lens"})
 PRONOUNS = frozenset({"it", "they", "them", "one", "ones", "its", "their", "whose"})
 #: the parts by which a piece of furniture opens: said alone ("open the drawer"), they mean the
 #: piece last named that opens (`_Reader._opener`)
