@@ -1,13 +1,16 @@
 """Values a task's trees ask that the offline reader never set (`--losses`: "a value never set"),
 from the built-in tasks that lost paths in the eleventh session and their rewordings: a state said
-of a thing's part. Each rule is tried on sentences written here, in at least two texts of other
+of a thing's part; an alternative put back where the thing it stands in for was asked. Each rule is tried on sentences written here, in at least two texts of other
 registers and rooms, and on near misses it must not misread."""
 
 from __future__ import annotations
 
 import pytest
+from reading import CATALOG, brief
 from reading import asks as _asks
 from reading import factors as _factors
+
+from logicenveval.offline.analysis import analyse
 
 
 @pytest.mark.parametrize(("text", "rooms", "condition"), [
@@ -34,3 +37,38 @@ def test_a_state_of_a_part_is_its_things(text: str, rooms: tuple[str, ...], cond
 ])
 def test_a_part_named_as_a_thing_asks_no_broken_state(text: str, rooms: tuple[str, ...]) -> None:
     assert not any("broken" in c for values in _factors(text, rooms).values() for c in values)
+
+
+@pytest.mark.parametrize(("text", "rooms", "factor", "under"), [
+    # a workshop note: "otherwise", "whichever ... back in"
+    ("If the workbench is dusty, brush it down with the brush if the brush is in the drawer; otherwise "
+     "use the rag. Put whichever you used back in the drawer.", ("study",),
+     "inside(cloth, drawer)", ("scrub_brush_inside_drawer", "no")),
+    # a formal passive, "or else", "whatever was used goes back on"
+    ("Should the mirror be dirty, clean it with the sponge if the sponge is on the shelf, or else with a "
+     "towel. Whatever was used goes back on the shelf.", ("bathroom",),
+     "on(towel, wall_shelf)", ("sponge_on_wall_shelf", "no")),
+    # a terse note: the absence restated as a condition ("and if it is not"), "whichever one"
+    ("Mirror dirty? Use the sponge if it is on the shelf, and if it is not, use a towel. Whichever one "
+     "you used, put it back on the shelf.", ("bathroom",), "on(towel, wall_shelf)", ("sponge_on_wall_shelf", "no")),
+])
+def test_an_alternative_put_back_is_asked_where_the_thing_is_not(
+        text: str, rooms: tuple[str, ...], factor: str, under: tuple[str, str]) -> None:
+    """"use X if X is on Y; otherwise Z. Put whichever you used back on Y": "back" says Z was on Y
+    as much as X was, so whether Z is on Y is asked when X is not (`analysis._alternatives_put_back`)."""
+    a = analyse(brief(text, rooms), CATALOG)
+    f = next((f for f in a.factors if factor in f.values.values()), None)
+    assert f is not None, [g.values for g in a.factors]
+    assert (under[0], frozenset({under[1]})) in f.context
+
+
+@pytest.mark.parametrize(("text", "rooms"), [
+    # the thing itself is put back: nothing says the alternative was there
+    ("Should the mirror be dirty, clean it with the sponge if the sponge is on the shelf; otherwise use a "
+     "towel. Put the sponge back on the shelf.", ("bathroom",)),
+    # whichever was used goes somewhere else, not back
+    ("Clean the mirror with the sponge if the sponge is on the shelf; otherwise use a towel. Whichever you "
+     "used, drop it in the hamper.", ("bathroom",)),
+])
+def test_an_alternative_not_put_back_there_is_not_asked(text: str, rooms: tuple[str, ...]) -> None:
+    assert not any("towel" in c for values in _factors(text, rooms).values() for c in values)

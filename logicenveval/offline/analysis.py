@@ -2606,10 +2606,59 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             dep = slot_factor.get(slot_c)
             if dep is not None and dep is not factor:
                 factor.context.append((dep.id, _allowed(dep, negated, value)))
+    factors += _alternatives_put_back(factors, clauses)
     factors.sort(key=lambda f: (f.order, _RANK[f.kind], f.id))
     groups, group_roles = _group(factors, _moves_into(factors, clauses) + _answers(factors))
     covered = set().union(*group_roles) if group_roles else set()
     return TaskAnalysis(sentences, clauses, factors, groups, group_roles, set(lex.roles) - covered)
+
+
+#: words by which a later instruction speaks of whichever of two alternatives was used ("put
+#: whichever you used back on the counter", "whatever was used goes back in the drawer")
+_EITHER_USED = re.compile(r"\b(?:whichever|whatever|either one|either of them)\b.*\bback\b")
+
+
+def _alternatives_put_back(factors: list[Factor], clauses: list[Clause]) -> list[Factor]:
+    """An alternative used when a thing is not at a place, later put back there with the thing
+    ("wipe it with the sponge if the sponge is on the counter; otherwise use the cloth. Put
+    whichever you used back on the counter"): "back" says the alternative was there too, as far as
+    the thing was, so whether it is there is asked where the thing is not (a factor under the
+    thing's "no"), as a reader asks what else lies on the counter."""
+    out: list[Factor] = []
+    asked = {(f.subject, v) for f in factors for v in f.values.values()}
+    for f in factors:
+        at = _at(f.values.get("yes", "")) if f.kind == "location" and set(f.values) == {"yes", "no"} else None
+        if at is None:
+            continue
+        thing, holder = at
+        for sentence, ci in sorted(f.places):
+            rest = [j for j in range(ci + 1, len(clauses)) if clauses[j].sentence == sentence]
+            # "otherwise use the cloth", "and if it's not, use the cloth": the instruction for the
+            # thing's absence
+            alternative = next((j for j in rest if clauses[j].role == "else" or (
+                clauses[j].role == "consequence" and clauses[j - 1].role == "condition" and any(
+                    x.negated and x.condition == f.values["yes"] for x in clauses[j - 1].facts))), None)
+            # the next two sentences, each read whole ("whichever u used -> back on counter": cut
+            # at the arrow)
+            later = {}
+            for cl in clauses[ci + 1:]:
+                if sentence < cl.sentence <= sentence + 2 or cl.sentence == sentence:
+                    text, mentions = later.get(cl.sentence, ("", set()))
+                    later[cl.sentence] = (f"{text} {cl.text.lower()}", mentions | set(cl.mentions))
+            back = any(_EITHER_USED.search(text) and holder in mentions for text, mentions in later.values())
+            if alternative is None or not back:
+                continue
+            for other in clauses[alternative].mentions:
+                cond = f.values["yes"].replace(f"({thing},", f"({other},", 1)
+                if other in (thing, holder) or (other, cond) in asked:
+                    continue
+                asked.add((other, cond))
+                g = Factor(f"{other}_{cond.split('(')[0]}_{holder}", other, _question(other, "location", "", [holder]),
+                           {"yes": cond, "no": f"not {cond}"}, "location", alternative, sentence, alternative,
+                           [clauses[alternative].text], set(clauses[alternative].mentions))
+                g.context = [*f.context, (f.id, frozenset({"no"}))]
+                out.append(g)
+    return out
 
 
 def _moved(clause: Clause, subject: str) -> bool:
