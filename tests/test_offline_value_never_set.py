@@ -72,3 +72,27 @@ def test_an_alternative_put_back_is_asked_where_the_thing_is_not(
 ])
 def test_an_alternative_not_put_back_there_is_not_asked(text: str, rooms: tuple[str, ...]) -> None:
     assert not any("towel" in c for values in _factors(text, rooms).values() for c in values)
+
+
+@pytest.mark.parametrize(("text", "rooms", "thing"), [
+    # a hallway note: "there's a stain on the floor"
+    ("Hallway: if there's a stain on the floor, scrub it with the brush.", ("hallway",), "floor_stain"),
+    # a formal "should" with a perfect tense and a place beside the floor
+    ("Should a puddle have formed on the floor by the sink, mop it up.", ("kitchen",), "water_puddle"),
+])
+def test_a_thing_only_ever_on_the_floor_is_asked_whether_it_is_there(
+        text: str, rooms: tuple[str, ...], thing: str) -> None:
+    """A thing that can be nowhere but on the floor and is never carried (`analysis._floor_bound`: a
+    puddle, a stain, a rug) is on the floor if it is at all: "is there a puddle on the floor" asks
+    whether there is one, not where it is."""
+    assert _asks(text, rooms, f"exists({thing})"), _factors(text, rooms)
+    assert not _asks(text, rooms, f"on({thing}, floor)")
+
+
+@pytest.mark.parametrize(("text", "thing"), [
+    # a mop and a towel are carried: off the floor they are elsewhere
+    ("If the mop is lying on the floor, stand it in the corner.", "mop"),
+    ("If the towel is on the floor, hang it on the rail.", "towel"),
+])
+def test_a_carried_thing_on_the_floor_is_still_asked_where_it_is(text: str, thing: str) -> None:
+    assert _asks(text, ("bathroom",), f"on({thing}, floor)"), _factors(text, ("bathroom",))

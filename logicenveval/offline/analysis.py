@@ -2508,6 +2508,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # "I believe I may have left my wristwatch in the flatlet. If it is there, ...": in a
                 # task of one room, being in that room is being there at all
                 f = Fact(f.subject, f"exists({f.subject})", "exists", negated=f.negated)
+            if conditional and f.kind == "location" and not f.goal and f.condition == f"on({f.subject}, floor)" \
+                    and _floor_bound(brief, catalog, f.subject):
+                # "in case there's a puddle on the floor": a thing that can be nowhere but on the
+                # floor and is never carried (a puddle, a stain, a rug) is there if it is at all
+                f = Fact(f.subject, f"exists({f.subject})", "exists", negated=f.negated)
             slot = (f.subject, f.kind, f.key if f.kind in ("state", "attr") else "")
             entry = found.setdefault(slot, {"order": ci, "sentence": cl.sentence, "clause": ci,
                                            "targets": [], "values": [],
@@ -2659,6 +2664,15 @@ def _alternatives_put_back(factors: list[Factor], clauses: list[Clause]) -> list
                 g.context = [*f.context, (f.id, frozenset({"no"}))]
                 out.append(g)
     return out
+
+
+def _floor_bound(brief: Mapping[str, Any], catalog: Catalog, role: str) -> bool:
+    """Whether the role's kind can be nowhere but on the floor and is neither carried nor a holder
+    (a puddle, a stain, a rug: no furniture, which a location never moves): where it is not on the
+    floor, it is not at all."""
+    cat = catalog.get(str(dict(dict(brief.get("roles") or {}).get(role) or {}).get("category", "")))
+    return cat is not None and not cat.pickable and set(cat.placement) == {"floor"} and not (
+        cat.surface or cat.container)
 
 
 def _moved(clause: Clause, subject: str) -> bool:
