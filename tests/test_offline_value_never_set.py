@@ -11,6 +11,7 @@ from reading import asks as _asks
 from reading import factors as _factors
 
 from logicenveval.offline.analysis import analyse
+from logicenveval.offline.implied import implied
 
 
 @pytest.mark.parametrize(("text", "rooms", "condition"), [
@@ -96,3 +97,31 @@ def test_a_thing_only_ever_on_the_floor_is_asked_whether_it_is_there(
 ])
 def test_a_carried_thing_on_the_floor_is_still_asked_where_it_is(text: str, thing: str) -> None:
     assert _asks(text, ("bathroom",), f"on({thing}, floor)"), _factors(text, ("bathroom",))
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # a host's note: "examine", a colon and a condition after it
+    ("Before you leave, examine the mug on the coffee table: if it's dirty, take it to the sink.",
+     ("living_room",), "on(mug, coffee_table)"),
+    # a polite request: "have a look at", "in", the case in the next sentence
+    ("Please have a look at the towel in the hamper. A wet one gets hung on the rail.", ("bathroom",),
+     "inside(towel, hamper)"),
+])
+def test_a_thing_checked_at_a_place_is_asked_whether_it_is_there(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"check the towel on the drying rack: once it's dry, ...": the one who looks finds whether
+    it is there (`implied._CHECK_AT`: "check the X if it is on the Y")."""
+    assert _asks(text, rooms, condition), _factors(text, rooms)
+
+
+@pytest.mark.parametrize("sentence", [
+    # a check that goes on is a check of a state ("check that the lamp on the desk is off")
+    "Check the lamp on the desk is off.",
+    "Check the lamp on the desk is off before bed.",
+    # no verb of looking: an instruction placing a thing
+    "Put the mug on the coffee table.",
+    # a place that is no thing's: "look at the weather in the morning" has no definite place noun
+    "Look at the bills in a minute.",
+])
+def test_other_sentences_are_not_read_as_a_check_at_a_place(sentence: str) -> None:
+    assert implied(sentence) == sentence
