@@ -125,3 +125,54 @@ def test_a_thing_checked_at_a_place_is_asked_whether_it_is_there(
 ])
 def test_other_sentences_are_not_read_as_a_check_at_a_place(sentence: str) -> None:
     assert implied(sentence) == sentence
+
+
+@pytest.mark.parametrize(("text", "rooms", "factor", "dep"), [
+    # a kitchen note: "whether ... dirty or clean decides where it goes", then the cases
+    ("Whether the mug on the desk is dirty or clean decides where it goes: a dirty red one goes in the "
+     "sink, any other dirty mug in the dishwasher.", ("kitchen",), "mug_color", "mug_dirty"),
+    # a chatty laundry note: "where it goes depends on whether it's wet or dry"
+    ("If there's a towel on the floor, where it goes depends on whether it's wet or dry: a wet white one "
+     "goes in the hamper, a wet coloured one on the rail.", ("laundry_room",), "towel_color", "towel_wet"),
+])
+def test_a_factor_under_both_answers_of_a_question_is_still_asked(
+        text: str, rooms: tuple[str, ...], factor: str, dep: str) -> None:
+    """"depends on whether it's dirty or clean: a dirty red one ...": the question stated before the
+    cases puts both of its answers in the context of what follows; conditions that exclude each other
+    allow what either allows (`analysis._consistent`), so the factor is asked on some path."""
+    a = analyse(brief(text, rooms), CATALOG)
+    f = next((f for f in a.factors if f.id == factor), None)
+    assert f is not None, [g.id for g in a.factors]
+    allowed = [values for d, values in f.context if d == dep]
+    assert len(allowed) <= 1 and all(values for values in allowed)
+
+
+def test_consistent_conditions_on_one_factor_keep_their_common_values() -> None:
+    from logicenveval.offline.analysis import _consistent
+
+    assert _consistent([("a", frozenset({"x", "y"})), ("a", frozenset({"y", "z"})), ("b", frozenset({"no"}))]) == [
+        ("a", frozenset({"y"})), ("b", frozenset({"no"}))]
+    assert _consistent([("a", frozenset({"yes"})), ("a", frozenset({"no"}))]) == [("a", frozenset({"yes", "no"}))]
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # a bedroom note: a clean shirt, the cases joined by "and"
+    ("If the shirt on the bed is clean, whites go into the drawer and coloured ones into the wardrobe.",
+     ("bedroom",), "attr(shirt, color, white)"),
+    # a question and its answer, a capitalised colour noun
+    ("Socks on the floor? Whites go in the washing machine, coloured ones in the hamper.", ("laundry_room",),
+     "attr(sock, color, white)"),
+])
+def test_a_colour_said_as_a_plural_noun_asks_the_colour(text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"dirty whites go into the washing machine": a colour adjective used as a plural noun is
+    "white ones" (`implied._COLOUR_NOUN`), a kind of the thing the sentence speaks of, as a bare
+    plural "ones" with the value before it is (`_Reader._attribute`)."""
+    assert _asks(text, rooms, condition), _factors(text, rooms)
+
+
+@pytest.mark.parametrize("sentence", [
+    "Beat the egg whites in the bowl.",      # a noun before it: egg whites are no colour
+    "The whites of the eyes were red.",       # "the whites of": a noun phrase, not a subject that goes
+])
+def test_other_plural_colour_words_are_left_alone(sentence: str) -> None:
+    assert implied(sentence) == sentence

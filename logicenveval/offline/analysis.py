@@ -115,6 +115,8 @@ PARTS = frozenset({"door", "lid", "leaf", "screen", "soil", "surface", "top", "i
                    # torch's batteries are dead" ask the lamp's and the torch's state
                    "bulb", "battery", "batteries", "wick", "lens"})
 PRONOUNS = frozenset({"it", "they", "them", "one", "ones", "its", "their", "whose"})
+#: determiners of a definite plural: "the white ones" are particular things, "white ones" a kind
+DEFINITE_PLURAL = frozenset({"the", "these", "those", "your", "my", "our", "their", "its"})
 #: the parts by which a piece of furniture opens: said alone ("open the drawer"), they mean the
 #: piece last named that opens (`_Reader._opener`)
 OPENING_PARTS = frozenset({"drawer", "door"})
@@ -1428,8 +1430,10 @@ class _Reader:
                     key, value = hit
                     # "a dirty white one goes in the washing machine": an indefinite "one" with
                     # the value before it describes which of its kind is meant, as "a ripe one" does
-                    one = bool(before) and w == before[0] and words[m.start] in ("one", "ones") and any(
-                        x in ("a", "an") for x in words[max(0, m.start - 3):m.start - 1])
+                    # (or a bare plural "ones": "dirty white ones go in the washing machine")
+                    one = bool(before) and w == before[0] and words[m.start] in ("one", "ones") and (any(
+                        x in ("a", "an") for x in words[max(0, m.start - 3):m.start - 1]) or m.start in self.plural_at
+                        and not set(words[max(0, m.start - 3):m.start - 1]) & DEFINITE_PLURAL)
                     out.append(Fact(r, f"attr({r}, {key}, {value})", "attr", key,
                                     negated=negated and bool(after) and w == after[0], modifier=one))
         return out
@@ -2611,11 +2615,25 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             dep = slot_factor.get(slot_c)
             if dep is not None and dep is not factor:
                 factor.context.append((dep.id, _allowed(dep, negated, value)))
+        factor.context = _consistent(factor.context)
     factors += _alternatives_put_back(factors, clauses)
     factors.sort(key=lambda f: (f.order, _RANK[f.kind], f.id))
     groups, group_roles = _group(factors, _moves_into(factors, clauses) + _answers(factors))
     covered = set().union(*group_roles) if group_roles else set()
     return TaskAnalysis(sentences, clauses, factors, groups, group_roles, set(lex.roles) - covered)
+
+
+def _consistent(context: list[tuple[str, frozenset[str]]]) -> list[tuple[str, frozenset[str]]]:
+    """A factor's context with each factor it depends on once: the values allowed by every
+    condition on it, or, when those conditions exclude each other, the values any of them allows
+    ("where it goes depends on whether it's dirty or clean: a dirty white one goes ...": both
+    answers of the question before the cases, which no path meets, so the factor under them would
+    never be asked)."""
+    merged: dict[str, frozenset[str]] = {}
+    for dep, allowed in context:
+        both = merged.get(dep, allowed) & allowed
+        merged[dep] = both or merged[dep] | allowed
+    return list(merged.items())
 
 
 #: words by which a later instruction speaks of whichever of two alternatives was used ("put

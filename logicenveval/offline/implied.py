@@ -115,6 +115,18 @@ _CHECK_AT = re.compile(
     re.I | re.M)
 
 
+#: colour adjectives used as plural nouns, as laundry is sorted ("dirty whites go in the machine,
+#: darks in the hamper"): each is "<colour> ones", the kind the sentence speaks of in that colour
+COLOUR_NOUNS = {"whites": "white", "darks": "dark", "coloureds": "coloured", "colors": "colored",
+                "colours": "coloured"}
+#: a colour noun as a subject, after the start of a clause or a state adjective and before the
+#: verb that moves it ("dirty whites go into ...", "Whites -> machine"): not "egg whites"
+_COLOUR_NOUN = re.compile(
+    r"(?P<lead>(?:^|[;:,(]|\band|\bbut)\s*(?:(?:dirty|clean|wet|dry|washed|soiled)\s+)?)"
+    r"(?P<noun>" + "|".join(COLOUR_NOUNS) + r")(?=\s+(?:go|goes|get|gets|should|must|belong|are|need|into|in|to)\b"
+    r"|\s*(?:->|\u2192|:))", re.I | re.M)
+
+
 def _any_found(m: re.Match[str]) -> str:
     cue = "If" if m.group("any")[0].isupper() else "if"
     return f"{cue} {m.group('who')} {m.group('verb')} any there, they {m.group('go')}"
@@ -149,6 +161,7 @@ def implied(sentence: str) -> str:
     `sentences.expand`)."""
     said = _cases(_EQUALS.sub(" -> ", _DASH_BULLET.sub(r"\1-", sentence)))
     said = _ANY_FOUND.sub(_any_found, _DIRECTED_THERE.sub("", said))
+    said = _COLOUR_NOUN.sub(lambda m: f"{m.group('lead')}{COLOUR_NOUNS[m.group('noun').lower()]} ones", said)
     said = _CHECK_AT.sub(lambda m: f"{m.group('verb')} {m.group('thing')} if it is {m.group('prep')} "
                                    f"{m.group('place')}", said)
     said = _WHICHEVER.sub(lambda m: f"{m.group('lead')}{'I' if m.group(0).lstrip()[:1].isupper() else 'i'}f any "
