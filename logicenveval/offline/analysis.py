@@ -2663,7 +2663,7 @@ def _alternatives_put_back(factors: list[Factor], clauses: list[Clause]) -> list
                     x.negated and x.condition == f.values["yes"] for x in clauses[j - 1].facts))), None)
             # the next two sentences, each read whole ("whichever u used -> back on counter": cut
             # at the arrow)
-            later = {}
+            later: dict[int, tuple[str, set[str]]] = {}
             for cl in clauses[ci + 1:]:
                 if sentence < cl.sentence <= sentence + 2 or cl.sentence == sentence:
                     text, mentions = later.get(cl.sentence, ("", set()))
