@@ -112,8 +112,13 @@ MOTION = frozenset(
 )
 PARTS = frozenset({"door", "lid", "leaf", "screen", "soil", "surface", "top", "inside", "water",
                    "content", "bottom", "side", "handle", "shelf", "drawer", "bag", "glass", "bottle",
-                   "box", "pack", "packet", "jar", "carton", "tub", "container", "roll"})
+                   "box", "pack", "packet", "jar", "carton", "tub", "container", "roll",
+                   # parts whose failure is their thing's: "unless its bulb is broken", "if the
+                   # torch's batteries are dead" ask the lamp's and the torch's state
+                   "bulb", "battery", "batteries", "wick", "lens"})
 PRONOUNS = frozenset({"it", "they", "them", "one", "ones", "its", "their", "whose"})
+#: determiners of a definite plural: "the white ones" are particular things, "white ones" a kind
+DEFINITE_PLURAL = frozenset({"the", "these", "those", "your", "my", "our", "their", "its"})
 #: the parts by which a piece of furniture opens: said alone ("open the drawer"), they mean the
 #: piece last named that opens (`_Reader._opener`)
 OPENING_PARTS = frozenset({"drawer", "door"})
@@ -1491,8 +1496,10 @@ class _Reader:
                     key, value = hit
                     # "a dirty white one goes in the washing machine": an indefinite "one" with
                     # the value before it describes which of its kind is meant, as "a ripe one" does
-                    one = bool(before) and w == before[0] and words[m.start] in ("one", "ones") and any(
-                        x in ("a", "an") for x in words[max(0, m.start - 3):m.start - 1])
+                    # (or a bare plural "ones": "dirty white ones go in the washing machine")
+                    one = bool(before) and w == before[0] and words[m.start] in ("one", "ones") and (any(
+                        x in ("a", "an") for x in words[max(0, m.start - 3):m.start - 1]) or m.start in self.plural_at
+                        and not set(words[max(0, m.start - 3):m.start - 1]) & DEFINITE_PLURAL)
                     out.append(Fact(r, f"attr({r}, {key}, {value})", "attr", key,
                                     negated=negated and bool(after) and w == after[0], modifier=one))
         return out
@@ -2571,6 +2578,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # "I believe I may have left my wristwatch in the flatlet. If it is there, ...": in a
                 # task of one room, being in that room is being there at all
                 f = Fact(f.subject, f"exists({f.subject})", "exists", negated=f.negated)
+            if conditional and f.kind == "location" and not f.goal and f.condition == f"on({f.subject}, floor)" \
+                    and _floor_bound(brief, catalog, f.subject):
+                # "in case there's a puddle on the floor": a thing that can be nowhere but on the
+                # floor and is never carried (a puddle, a stain, a rug) is there if it is at all
+                f = Fact(f.subject, f"exists({f.subject})", "exists", negated=f.negated)
             slot = (f.subject, f.kind, f.key if f.kind in ("state", "attr") else "")
             entry = found.setdefault(slot, {"order": ci, "sentence": cl.sentence, "clause": ci,
                                            "targets": [], "values": [],
@@ -2669,10 +2681,82 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             dep = slot_factor.get(slot_c)
             if dep is not None and dep is not factor:
                 factor.context.append((dep.id, _allowed(dep, negated, value)))
+        factor.context = _consistent(factor.context)
+    factors += _alternatives_put_back(factors, clauses)
     factors.sort(key=lambda f: (f.order, _RANK[f.kind], f.id))
     groups, group_roles = _group(factors, _moves_into(factors, clauses) + _answers(factors))
     covered = set().union(*group_roles) if group_roles else set()
     return TaskAnalysis(sentences, clauses, factors, groups, group_roles, set(lex.roles) - covered)
+
+
+def _consistent(context: list[tuple[str, frozenset[str]]]) -> list[tuple[str, frozenset[str]]]:
+    """A factor's context with each factor it depends on once: the values allowed by every
+    condition on it, or, when those conditions exclude each other, the values any of them allows
+    ("where it goes depends on whether it's dirty or clean: a dirty white one goes ...": both
+    answers of the question before the cases, which no path meets, so the factor under them would
+    never be asked)."""
+    merged: dict[str, frozenset[str]] = {}
+    for dep, allowed in context:
+        both = merged.get(dep, allowed) & allowed
+        merged[dep] = both or merged[dep] | allowed
+    return list(merged.items())
+
+
+#: words by which a later instruction speaks of whichever of two alternatives was used ("put
+#: whichever you used back on the counter", "whatever was used goes back in the drawer")
+_EITHER_USED = re.compile(r"\b(?:whichever|whatever|either one|either of them)\b.*\bback\b")
+
+
+def _alternatives_put_back(factors: list[Factor], clauses: list[Clause]) -> list[Factor]:
+    """An alternative used when a thing is not at a place, later put back there with the thing
+    ("wipe it with the sponge if the sponge is on the counter; otherwise use the cloth. Put
+    whichever you used back on the counter"): "back" says the alternative was there too, as far as
+    the thing was, so whether it is there is asked where the thing is not (a factor under the
+    thing's "no"), as a reader asks what else lies on the counter."""
+    out: list[Factor] = []
+    asked = {(f.subject, v) for f in factors for v in f.values.values()}
+    for f in factors:
+        at = _at(f.values.get("yes", "")) if f.kind == "location" and set(f.values) == {"yes", "no"} else None
+        if at is None:
+            continue
+        thing, holder = at
+        for sentence, ci in sorted(f.places):
+            rest = [j for j in range(ci + 1, len(clauses)) if clauses[j].sentence == sentence]
+            # "otherwise use the cloth", "and if it's not, use the cloth": the instruction for the
+            # thing's absence
+            alternative = next((j for j in rest if clauses[j].role == "else" or (
+                clauses[j].role == "consequence" and clauses[j - 1].role == "condition" and any(
+                    x.negated and x.condition == f.values["yes"] for x in clauses[j - 1].facts))), None)
+            # the next two sentences, each read whole ("whichever u used -> back on counter": cut
+            # at the arrow)
+            later: dict[int, tuple[str, set[str]]] = {}
+            for cl in clauses[ci + 1:]:
+                if sentence < cl.sentence <= sentence + 2 or cl.sentence == sentence:
+                    text, mentions = later.get(cl.sentence, ("", set()))
+                    later[cl.sentence] = (f"{text} {cl.text.lower()}", mentions | set(cl.mentions))
+            back = any(_EITHER_USED.search(text) and holder in mentions for text, mentions in later.values())
+            if alternative is None or not back:
+                continue
+            for other in clauses[alternative].mentions:
+                cond = f.values["yes"].replace(f"({thing},", f"({other},", 1)
+                if other in (thing, holder) or (other, cond) in asked:
+                    continue
+                asked.add((other, cond))
+                g = Factor(f"{other}_{cond.split('(')[0]}_{holder}", other, _question(other, "location", "", [holder]),
+                           {"yes": cond, "no": f"not {cond}"}, "location", alternative, sentence, alternative,
+                           [clauses[alternative].text], set(clauses[alternative].mentions))
+                g.context = [*f.context, (f.id, frozenset({"no"}))]
+                out.append(g)
+    return out
+
+
+def _floor_bound(brief: Mapping[str, Any], catalog: Catalog, role: str) -> bool:
+    """Whether the role's kind can be nowhere but on the floor and is neither carried nor a holder
+    (a puddle, a stain, a rug: no furniture, which a location never moves): where it is not on the
+    floor, it is not at all."""
+    cat = catalog.get(str(dict(dict(brief.get("roles") or {}).get(role) or {}).get("category", "")))
+    return cat is not None and not cat.pickable and set(cat.placement) == {"floor"} and not (
+        cat.surface or cat.container)
 
 
 def _moved(clause: Clause, subject: str) -> bool:

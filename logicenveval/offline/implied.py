@@ -100,6 +100,33 @@ _WHICHEVER = re.compile(r"^(?P<lead>\W*)whichever\s+(?P<rest>[a-z][a-z' -]*?\s+(
                         r"seems?|gets?|got)\b[^,;:]*,)", re.I)
 
 
+#: verbs of looking a thing over: an instruction to check a thing at a place leaves whether it is
+#: there to the one who looks ("check the towel on the drying rack: once it's dry, ...")
+INSPECTING = ("check", "examine", "inspect", "look at", "have a look at", "take a look at")
+#: "check the towel on the drying rack: once it's dry, ...", "Examine the mug in the sink.": an
+#: inspecting verb, a definite thing and the place it is looked at, the clause ending there, is
+#: "check the towel if it is on the drying rack" (a check that goes on, "check the lamp on the
+#: desk is off", is a check of a state, read by `analysis._ensured`)
+_NOUN_WORD = r"(?!(?:is|are|was|were|has|have|be|been|looks?|seems?|and|or|then|before|after|when|if|on|in)\b)[a-z][a-z-]*"
+_CHECK_AT = re.compile(
+    r"\b(?P<verb>" + "|".join(v.replace(" ", r"\s+") for v in INSPECTING) + r")\s+"
+    rf"(?P<thing>(?:the|your|my|our)(?:\s+{_NOUN_WORD}){{1,3}})\s+(?P<prep>on|in|inside)\s+"
+    rf"(?P<place>(?:the|your|my|our)(?:\s+{_NOUN_WORD}){{1,3}})\s*(?=[:;,.!?\u2013\u2014]|\s-\s|$)",
+    re.I | re.M)
+
+
+#: colour adjectives used as plural nouns, as laundry is sorted ("dirty whites go in the machine,
+#: darks in the hamper"): each is "<colour> ones", the kind the sentence speaks of in that colour
+COLOUR_NOUNS = {"whites": "white", "darks": "dark", "coloureds": "coloured", "colors": "colored",
+                "colours": "coloured"}
+#: a colour noun as a subject, after the start of a clause or a state adjective and before the
+#: verb that moves it ("dirty whites go into ...", "Whites -> machine"): not "egg whites"
+_COLOUR_NOUN = re.compile(
+    r"(?P<lead>(?:^|[;:,(]|\band|\bbut)\s*(?:(?:dirty|clean|wet|dry|washed|soiled)\s+)?)"
+    r"(?P<noun>" + "|".join(COLOUR_NOUNS) + r")(?=\s+(?:go|goes|get|gets|should|must|belong|are|need|into|in|to)\b"
+    r"|\s*(?:->|\u2192|:))", re.I | re.M)
+
+
 def _any_found(m: re.Match[str]) -> str:
     cue = "If" if m.group("any")[0].isupper() else "if"
     return f"{cue} {m.group('who')} {m.group('verb')} any there, they {m.group('go')}"
@@ -127,12 +154,16 @@ def _cases(sentence: str) -> str:
 def implied(sentence: str) -> str:
     """`sentence` with the conditions its grammar implies spelled out as conditionals: an
     instruction that holds "if need be" (`_IF_NEED_BE`), an obligation to a state (`_OBLIGED`)
-    "any you find there go ..." (`_ANY_FOUND`) and "whichever X is Y, ..." (`_WHICHEVER`); "down there" as "there"
+    "any you find there go ..." (`_ANY_FOUND`), "whichever X is Y, ..." (`_WHICHEVER`) and "check
+    the X on the Y" (`_CHECK_AT`); "down there" as "there"
     (`_DIRECTED_THERE`), a spaced "=" as an arrow (`_EQUALS`), a dash opening a line as a bullet
     (`_DASH_BULLET`), "a" before a case "<adjective> one ->" (`_cases`); any other sentence as it is ("on top of" is "on" for every reader:
     `sentences.expand`)."""
     said = _cases(_EQUALS.sub(" -> ", _DASH_BULLET.sub(r"\1-", sentence)))
     said = _ANY_FOUND.sub(_any_found, _DIRECTED_THERE.sub("", said))
+    said = _COLOUR_NOUN.sub(lambda m: f"{m.group('lead')}{COLOUR_NOUNS[m.group('noun').lower()]} ones", said)
+    said = _CHECK_AT.sub(lambda m: f"{m.group('verb')} {m.group('thing')} if it is {m.group('prep')} "
+                                   f"{m.group('place')}", said)
     said = _WHICHEVER.sub(lambda m: f"{m.group('lead')}{'I' if m.group(0).lstrip()[:1].isupper() else 'i'}f any "
                                     f"{m.group('rest')}", said)
     return _OBLIGED.sub(_obliged, _IF_NEED_BE.sub(_if_needed, said))

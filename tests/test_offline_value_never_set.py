@@ -1,0 +1,178 @@
+"""Values a task's trees ask that the offline reader never set (`--losses`: "a value never set"),
+from the built-in tasks that lost paths in the eleventh session and their rewordings: a state said
+of a thing's part; an alternative put back where the thing it stands in for was asked. Each rule is tried on sentences written here, in at least two texts of other
+registers and rooms, and on near misses it must not misread."""
+
+from __future__ import annotations
+
+import pytest
+from reading import CATALOG, brief
+from reading import asks as _asks
+from reading import factors as _factors
+
+from logicenveval.offline.analysis import analyse
+from logicenveval.offline.implied import implied
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # an instruction with a trailing "unless", a possessive pronoun
+    ("The reading lamp should be on; if it's off, switch it on, unless its bulb is broken - then "
+     "light a candle instead.", ("study",), "state(desk_lamp, broken)"),
+    # a workshop note, the thing named by a genitive, a part in the plural, a perfect tense
+    ("Torch goes back in the drawer. If the torch's batteries have blown, leave it on the bench.",
+     ("garage",), "state(flashlight, broken)"),
+    # a terse checklist, "cracked" said of a part
+    ("Check the flashlight: lens cracked? Then put it in the bin.", ("garage",), "state(flashlight, broken)"),
+])
+def test_a_state_of_a_part_is_its_things(text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """A part whose failure is its thing's (`analysis.PARTS`: "bulb", "battery", "wick", "lens"):
+    "unless its bulb is broken" asks whether the lamp is broken."""
+    assert _asks(text, rooms, condition), _factors(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms"), [
+    # a spare bulb is a thing of its own, not a part of anything
+    ("We might have a new light bulb lying around; put it in the drawer.", ("garage",)),
+    # batteries named as things to put away: no state is asked
+    ("Put the torch in the drawer and the batteries on the shelf.", ("garage",)),
+])
+def test_a_part_named_as_a_thing_asks_no_broken_state(text: str, rooms: tuple[str, ...]) -> None:
+    assert not any("broken" in c for values in _factors(text, rooms).values() for c in values)
+
+
+@pytest.mark.parametrize(("text", "rooms", "factor", "under"), [
+    # a workshop note: "otherwise", "whichever ... back in"
+    ("If the workbench is dusty, brush it down with the brush if the brush is in the drawer; otherwise "
+     "use the rag. Put whichever you used back in the drawer.", ("study",),
+     "inside(cloth, drawer)", ("scrub_brush_inside_drawer", "no")),
+    # a formal passive, "or else", "whatever was used goes back on"
+    ("Should the mirror be dirty, clean it with the sponge if the sponge is on the shelf, or else with a "
+     "towel. Whatever was used goes back on the shelf.", ("bathroom",),
+     "on(towel, wall_shelf)", ("sponge_on_wall_shelf", "no")),
+    # a terse note: the absence restated as a condition ("and if it is not"), "whichever one"
+    ("Mirror dirty? Use the sponge if it is on the shelf, and if it is not, use a towel. Whichever one "
+     "you used, put it back on the shelf.", ("bathroom",), "on(towel, wall_shelf)", ("sponge_on_wall_shelf", "no")),
+])
+def test_an_alternative_put_back_is_asked_where_the_thing_is_not(
+        text: str, rooms: tuple[str, ...], factor: str, under: tuple[str, str]) -> None:
+    """"use X if X is on Y; otherwise Z. Put whichever you used back on Y": "back" says Z was on Y
+    as much as X was, so whether Z is on Y is asked when X is not (`analysis._alternatives_put_back`)."""
+    a = analyse(brief(text, rooms), CATALOG)
+    f = next((f for f in a.factors if factor in f.values.values()), None)
+    assert f is not None, [g.values for g in a.factors]
+    assert (under[0], frozenset({under[1]})) in f.context
+
+
+@pytest.mark.parametrize(("text", "rooms"), [
+    # the thing itself is put back: nothing says the alternative was there
+    ("Should the mirror be dirty, clean it with the sponge if the sponge is on the shelf; otherwise use a "
+     "towel. Put the sponge back on the shelf.", ("bathroom",)),
+    # whichever was used goes somewhere else, not back
+    ("Clean the mirror with the sponge if the sponge is on the shelf; otherwise use a towel. Whichever you "
+     "used, drop it in the hamper.", ("bathroom",)),
+])
+def test_an_alternative_not_put_back_there_is_not_asked(text: str, rooms: tuple[str, ...]) -> None:
+    assert not any("towel" in c for values in _factors(text, rooms).values() for c in values)
+
+
+@pytest.mark.parametrize(("text", "rooms", "thing"), [
+    # a hallway note: "there's a stain on the floor"
+    ("Hallway: if there's a stain on the floor, scrub it with the brush.", ("hallway",), "floor_stain"),
+    # a formal "should" with a perfect tense and a place beside the floor
+    ("Should a puddle have formed on the floor by the sink, mop it up.", ("kitchen",), "water_puddle"),
+])
+def test_a_thing_only_ever_on_the_floor_is_asked_whether_it_is_there(
+        text: str, rooms: tuple[str, ...], thing: str) -> None:
+    """A thing that can be nowhere but on the floor and is never carried (`analysis._floor_bound`: a
+    puddle, a stain, a rug) is on the floor if it is at all: "is there a puddle on the floor" asks
+    whether there is one, not where it is."""
+    assert _asks(text, rooms, f"exists({thing})"), _factors(text, rooms)
+    assert not _asks(text, rooms, f"on({thing}, floor)")
+
+
+@pytest.mark.parametrize(("text", "thing"), [
+    # a mop and a towel are carried: off the floor they are elsewhere
+    ("If the mop is lying on the floor, stand it in the corner.", "mop"),
+    ("If the towel is on the floor, hang it on the rail.", "towel"),
+])
+def test_a_carried_thing_on_the_floor_is_still_asked_where_it_is(text: str, thing: str) -> None:
+    assert _asks(text, ("bathroom",), f"on({thing}, floor)"), _factors(text, ("bathroom",))
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # a host's note: "examine", a colon and a condition after it
+    ("Before you leave, examine the mug on the coffee table: if it's dirty, take it to the sink.",
+     ("living_room",), "on(mug, coffee_table)"),
+    # a polite request: "have a look at", "in", the case in the next sentence
+    ("Please have a look at the towel in the hamper. A wet one gets hung on the rail.", ("bathroom",),
+     "inside(towel, hamper)"),
+])
+def test_a_thing_checked_at_a_place_is_asked_whether_it_is_there(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"check the towel on the drying rack: once it's dry, ...": the one who looks finds whether
+    it is there (`implied._CHECK_AT`: "check the X if it is on the Y")."""
+    assert _asks(text, rooms, condition), _factors(text, rooms)
+
+
+@pytest.mark.parametrize("sentence", [
+    # a check that goes on is a check of a state ("check that the lamp on the desk is off")
+    "Check the lamp on the desk is off.",
+    "Check the lamp on the desk is off before bed.",
+    # no verb of looking: an instruction placing a thing
+    "Put the mug on the coffee table.",
+    # a place that is no thing's: "look at the weather in the morning" has no definite place noun
+    "Look at the bills in a minute.",
+])
+def test_other_sentences_are_not_read_as_a_check_at_a_place(sentence: str) -> None:
+    assert implied(sentence) == sentence
+
+
+@pytest.mark.parametrize(("text", "rooms", "factor", "dep"), [
+    # a kitchen note: "whether ... dirty or clean decides where it goes", then the cases
+    ("Whether the mug on the desk is dirty or clean decides where it goes: a dirty red one goes in the "
+     "sink, any other dirty mug in the dishwasher.", ("kitchen",), "mug_color", "mug_dirty"),
+    # a chatty laundry note: "where it goes depends on whether it's wet or dry"
+    ("If there's a towel on the floor, where it goes depends on whether it's wet or dry: a wet white one "
+     "goes in the hamper, a wet coloured one on the rail.", ("laundry_room",), "towel_color", "towel_wet"),
+])
+def test_a_factor_under_both_answers_of_a_question_is_still_asked(
+        text: str, rooms: tuple[str, ...], factor: str, dep: str) -> None:
+    """"depends on whether it's dirty or clean: a dirty red one ...": the question stated before the
+    cases puts both of its answers in the context of what follows; conditions that exclude each other
+    allow what either allows (`analysis._consistent`), so the factor is asked on some path."""
+    a = analyse(brief(text, rooms), CATALOG)
+    f = next((f for f in a.factors if f.id == factor), None)
+    assert f is not None, [g.id for g in a.factors]
+    allowed = [values for d, values in f.context if d == dep]
+    assert len(allowed) <= 1 and all(values for values in allowed)
+
+
+def test_consistent_conditions_on_one_factor_keep_their_common_values() -> None:
+    from logicenveval.offline.analysis import _consistent
+
+    assert _consistent([("a", frozenset({"x", "y"})), ("a", frozenset({"y", "z"})), ("b", frozenset({"no"}))]) == [
+        ("a", frozenset({"y"})), ("b", frozenset({"no"}))]
+    assert _consistent([("a", frozenset({"yes"})), ("a", frozenset({"no"}))]) == [("a", frozenset({"yes", "no"}))]
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # a bedroom note: a clean shirt, the cases joined by "and"
+    ("If the shirt on the bed is clean, whites go into the drawer and coloured ones into the wardrobe.",
+     ("bedroom",), "attr(shirt, color, white)"),
+    # a question and its answer, a capitalised colour noun
+    ("Socks on the floor? Whites go in the washing machine, coloured ones in the hamper.", ("laundry_room",),
+     "attr(sock, color, white)"),
+])
+def test_a_colour_said_as_a_plural_noun_asks_the_colour(text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"dirty whites go into the washing machine": a colour adjective used as a plural noun is
+    "white ones" (`implied._COLOUR_NOUN`), a kind of the thing the sentence speaks of, as a bare
+    plural "ones" with the value before it is (`_Reader._attribute`)."""
+    assert _asks(text, rooms, condition), _factors(text, rooms)
+
+
+@pytest.mark.parametrize("sentence", [
+    "Beat the egg whites in the bowl.",      # a noun before it: egg whites are no colour
+    "The whites of the eyes were red.",       # "the whites of": a noun phrase, not a subject that goes
+])
+def test_other_plural_colour_words_are_left_alone(sentence: str) -> None:
+    assert implied(sentence) == sentence
