@@ -942,18 +942,25 @@ class _Reader:
         metal rack", "the top drawer of the dresser", `FURNITURE_PARTS`): the part names no object
         of its own; the phrase after "of" names the furniture, of a kind that has such parts
         (`has_part`, read by `bare_noun` through `part_for`)."""
+        whole = self.whole_said_after(i)
+        if whole is not None:
+            self.part_for[whole] = self.text.words[i]
+        return whole is not None
+
+    def whole_said_after(self, i: int) -> int | None:
+        """The last word of the furniture a part at word `i` is said "of" ("the top drawer of the
+        dresser": "dresser"), or None when word `i` is no part so said (`part_said_of`)."""
         words, gaps = self.text.words, self.text.gaps
         if words[i] not in FURNITURE_PARTS or i + 2 >= len(words) or words[i + 1] != "of" \
                 or any(gaps[k].strip() for k in (i + 1, i + 2)) or words[i + 2] not in _ARTICLES:
-            return False
+            return None
         k = i + 3
         while k < min(i + 6, len(words)) and not gaps[k].strip():
             n, category = self.match(k)
             if category is not None or words[k] in self.heads:
-                self.part_for[k + n - 1] = words[i]
-                return True
+                return k + n - 1
             k += 1
-        return False
+        return None
 
     def part_by_other_name(self, i: int, n: int, category: str) -> bool:
         """Whether the `n` words at `i` name a piece of furniture by none of its catalog's own
@@ -1118,7 +1125,10 @@ class _Reader:
             k = j + n  # the word after the noun phrase
             plural = n > 0 and self.text.raw[k - 1] != words[k - 1]
             listed = plural and k < len(words) and bool(_HEADING.search(self.text.gaps[k]))
-            ordinal_part = words[k - 1] in _PARTS and i > 0 and words[i - 1] in _ORDINALS
+            # (a ranked part said "of" a piece of furniture, "the bottom shelf of the bookcase", is
+            # that furniture's part and heads no list: `part_said_of`)
+            ordinal_part = words[k - 1] in _PARTS and i > 0 and words[i - 1] in _ORDINALS \
+                and self.whole_said_after(k - 1) is None
             if not (count or listed or ordinal_part):
                 i += 1
                 continue
