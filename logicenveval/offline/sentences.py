@@ -517,6 +517,17 @@ _DICTATED_MARK = re.compile(r"\s*\b(" + "|".join(sorted(DICTATED_MARKS, key=len,
                             + r")\b[ \t]*", re.I)
 
 
+#: a line of four words or more that ends on a word (or a comma), then a line that opens in lower case: verse
+#: or a wrapped paragraph ("where there may lie / a book, an alarm clock"), one sentence running on
+_RUN_ON_LINE = re.compile(r"(?m)^([^\n]*?[A-Za-z][^\n]*?\s+\S+\s+\S+\s+[A-Za-z]+,?)[ \t]*\n[ \t]*(?=[a-z])")
+
+
+def _runs_on(text: str) -> str:
+    """The text with a line that runs on into the next (`_RUN_ON_LINE`) joined to it: a line break
+    there ends no sentence, as it would end a list's item ("mug / plate", lines too short)."""
+    return _RUN_ON_LINE.sub(r"\1 ", text)
+
+
 def _dictated(text: str) -> str:
     """A dictated text's spoken marks as the marks they stand for ("the can is on the bench full
     stop if it's empty fill it" is "the can is on the bench. If it's empty fill it"), when it
@@ -767,7 +778,8 @@ def unquote(text: str) -> str:
     subject spelled out
     ("if found on" -> "if it is found on"), and a dropped subject pronoun ("if is lighted" -> "if
     it is lighted": `_DROPPED_SUBJECT`); a telegram's "STOP" and "QUERY" as "." and "?"
-    (`TELEGRAM_MARKS`); a dictated text's spoken marks as marks (`DICTATED_MARKS`); "No X by the Y then ..." as the question "No X by the Y? Then ..."
+    (`TELEGRAM_MARKS`); a dictated text's spoken marks as marks (`DICTATED_MARKS`); a line running on into the next as one
+    line (`_runs_on`); "No X by the Y then ..." as the question "No X by the Y? Then ..."
     (`_NO_THEN`); a bare state and a comma before an instruction as its condition ("wet, stand
     it in the stand": `_STATE_CASE`); "other kind of toy" as "other toy" (`_KIND_OF`); a state word said only as a predicate in its state's
     common word ("the dishwasher's already going": "running", `PREDICATE_STATES`); a table of items and places as its sentences
@@ -777,7 +789,7 @@ def unquote(text: str) -> str:
     citation marks (`_CITATION`)."""
     text = _OCCASION_IF.sub(_occasion_if, text)
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
-    text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_dictated(_modern(_NATIVE_IF.sub(_native_if, text)))))))
+    text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_dictated(_runs_on(_modern(_NATIVE_IF.sub(_native_if, text))))))))
     text = _TO_BE_CHECKED.sub(" may be ", _OTHER_THAN.sub(r"\1 else than", text))
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), _SPELLED[m.group(0).lower()]), text))
     text = starred(_TIME_STAMP.sub(r"\1", _CITATION.sub("", text)))
