@@ -370,6 +370,8 @@ def _participle(words: list[str], k: int) -> bool:
     return any(lemma != words[k] for lemma in getAllLemmas(words[k]).get("VERB", ()))
 
 
+#: what fills a container: "there is water in it" says it is filled
+FILLINGS = frozenset({"water", "coffee", "tea", "milk", "juice", "soup", "liquid", "fluid", "oil"})
 #: the subordinators of a time clause ("when you come in", "once we're back")
 _TIME_CUES = frozenset({"when", "whenever", "once"})
 
@@ -380,6 +382,19 @@ def _before_time_clause(words: list[str]) -> list[str]:
     state; all the words when there is none."""
     cut = next((k for k in range(1, len(words) - 1) if words[k] in _TIME_CUES and words[k + 1] in AGENTS), None)
     return words if cut is None else words[:cut]
+
+
+def _home_said(text: str, opens: bool) -> bool:
+    """Whether a statement of a home says it of the thing itself, not of one pointed to ("there's
+    one in the vanity"): no pronoun, or "it"/"they" opening its sentence (`opens`) as the subject
+    of the verb of home ("It lives in the vanity, so it goes back in there": the cloth's home, as
+    "The cloth lives in the vanity"). Inside a sentence ("clean it with the cloth if we still have
+    one; it lives in the vanity") the pronoun may take up the clause's own object, which the
+    pronoun reader does not tell apart, so no home is read there."""
+    words = [w for w, _, _ in tokens(text)]
+    pointing = set(words) & {"it", "they", "them", "one"}
+    return not pointing or opens and words[:1] in (["it"], ["they"]) and words[1:2] != [] \
+        and words[1] in HOMES and pointing <= {"it", "they"}
 
 
 def _perfect_moved(words: list[str], start: int, k: int) -> bool:
@@ -847,6 +862,13 @@ class _Reader:
                 break
             # "there may or may not be a loaf", "if we still have one", "if one is still to be had"
             before = words[max(0, m.start - 8) : m.start]
+            if m.kind == "pronoun" and before[-1:] and before[-1] in PREP_IN and _existential(before):
+                # "If there was water in it already, leave it": the thing is the container, and a
+                # filling in it says it is filled (`FILLINGS`), not that it is there at all
+                if set(before) & FILLINGS:
+                    facts += [Fact(r, f"state({r}, filled)", "state", "filled",
+                                   negated=negated != ("no" in before)) for r in m.roles]
+                break
             if _existential(before) or "no" in before[-2:] or _WE_HAVE.search(" ".join(before[-6:])) or (
                     m.start == 0 and m.kind == "pronoun" and words[0] == "one"):
                 facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
@@ -1961,12 +1983,19 @@ def _cataphor(reader: _Reader, condition: str, main: str) -> tuple[str, ...] | N
         return None
     words = [w for w, _, _ in tokens(expand(main).lower())]
     for m in reader.lex.find_mentions(tokens(expand(main).lower())):
+        if set(words[:m.start]) & {"it", "they", "them"}:
+            return None  # "If it is dusty, it will be wiped with the cloth": the main clause's own "it"
         lead = m.start - 1
         while lead >= 0 and words[lead] in ARTICLES:
             lead -= 1
-        if m.kind == "role" and not (lead >= 0 and words[lead] in PREP_ON | PREP_IN | PLACE_PREPS | {"at"}):
+        if m.kind == "role" and not (lead >= 0 and words[lead] in PREP_ON | PREP_IN | PLACE_PREPS | _INSTRUMENTAL):
             return m.roles
     return None
+
+
+#: prepositions of place and means before which a thing is no cataphor's ("switch off the lamp at
+#: the wall", "wipe it with the cloth")
+_INSTRUMENTAL = frozenset({"at", "with", "using"})
 
 
 #: verbs of an instruction whose particle says the state it leaves ("switch it off", "turn it on")
@@ -2558,8 +2587,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                                                f.kind == "exists" and c[0][0] == f.subject)]
                                            or [c for c in carried if c[0] != slot and f.kind == "exists"]})
             entry.setdefault("places", set()).add((cl.sentence, ci))
-            entry["home"] = entry.get("home", True) and f.home and cl.role == "statement" and not (
-                {w for w, _, _ in tokens(cl.text)} & {"it", "they", "them", "one"})
+            entry["home"] = entry.get("home", True) and f.home and cl.role == "statement" and _home_said(
+                cl.text, opens=ci == 0 or clauses[ci - 1].sentence != cl.sentence)
             if cl.role == "condition":
                 value = f.condition.rsplit(", ", 1)[1][:-1] if f.kind == "attr" else f.key
                 # "unless it is already in the box, put it in: open the box first if ...": what
