@@ -285,12 +285,14 @@ def test_a_line_that_runs_on_is_one_sentence() -> None:
     # verse and a wrapped form field
     text = "The bookshelf's three levels hold novels, essays, and\nall other books - top, middle, bottom."
     assert {"novel_shelf", "essay_shelf", "other_shelf"} <= set(named(text, ("bedroom",)))
-    assert unquote("My study has a desk, where there may lie\na pen, a mug, or a phone.") == \
-        "My study has a desk, where there may lie a pen, a mug, or a phone."
+    assert unquote("Clear the desk of the pen, the mug and\nthe phone.") == "Clear the desk of the pen, the mug and the phone."
 
 
-def test_short_lines_of_a_list_stay_apart() -> None:
+def test_lines_ending_on_a_content_word_stay_apart() -> None:
+    # a list's lines, a chat's messages and a YAML file's keys each end their line
     assert unquote("Shopping:\nmug\nplate\nspoon") == "Shopping:\nmug\nplate\nspoon"
+    assert unquote("ok the mug is on the desk\nthe towel is still on the rail") == \
+        "ok the mug is on the desk\nthe towel is still on the rail"
     assert unquote("- put the mug in the sink\n- wipe the table") == "- put the mug in the sink\n- wipe the table"
 
 

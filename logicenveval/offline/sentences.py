@@ -517,14 +517,18 @@ _DICTATED_MARK = re.compile(r"\s*\b(" + "|".join(sorted(DICTATED_MARKS, key=len,
                             + r")\b[ \t]*", re.I)
 
 
-#: a line of four words or more that ends on a word (or a comma), then a line that opens in lower case: verse
-#: or a wrapped paragraph ("where there may lie / a book, an alarm clock"), one sentence running on
-_RUN_ON_LINE = re.compile(r"(?m)^([^\n]*?[A-Za-z][^\n]*?\s+\S+\s+\S+\s+[A-Za-z]+,?)[ \t]*\n[ \t]*(?=[a-z])")
+#: a line that ends on a word no clause ends on (a conjunction, an article, a preposition), then a
+#: line that opens in lower case: verse or a wrapped field ("hold novels, essays, and / all other
+#: books"), one sentence running on. A line ending on any other word may end its message (a chat's
+#: lines, a YAML file's keys): it stays a line
+RUN_ON_WORDS = frozenset({"and", "or", "but", "so", "nor", "the", "a", "an", "of", "to", "with", "in", "on",
+                          "for", "from", "by", "at", "into", "onto", "under", "my", "your", "our", "their", "its"})
+_RUN_ON_LINE = re.compile(r"(?im)\b(" + "|".join(sorted(RUN_ON_WORDS)) + r")[ \t]*\n[ \t]*(?=[a-z])")
 
 
 def _runs_on(text: str) -> str:
     """The text with a line that runs on into the next (`_RUN_ON_LINE`) joined to it: a line break
-    there ends no sentence, as it would end a list's item ("mug / plate", lines too short)."""
+    there ends no sentence."""
     return _RUN_ON_LINE.sub(r"\1 ", text)
 
 
