@@ -49,6 +49,7 @@ from logicenveval.offline.sentences import (
     ARROW,
     FORMS,
     PERSONAL_SUBJECTS,
+    RUN_ON_WORDS,
     STATE_WORDS,
     binned,
     expand,
@@ -90,8 +91,6 @@ _PREPOSITIONS = frozenset({"on", "onto", "in", "into", "inside", "from", "by", "
 _NAME_LINKS = _PREPOSITIONS | {"for", "up", "down", "out", "off", "over"}
 #: words that make a noun phrase indefinite: a thing of its own, not a part of one named
 _INDEFINITE = frozenset({"a", "an", "another", "some", "any"})
-#: words a clause cannot end on: a line ending on one runs on into the next (`_Reader`)
-_RUN_ON = _ARTICLES | _PREPOSITIONS | frozenset({"and", "or", "but", "so", "nor", "for", "to", "with"})
 _COUNTS = {"two": 2, "three": 3, "four": 4, "five": 5, "both": 2, "2": 2, "3": 3, "4": 4, "5": 5}
 #: "a fresh bag": the spare when the kind was already named in use ("the full bag"), else the
 #: one in use ("a fresh diaper is lying on the changing table")
@@ -299,7 +298,7 @@ class _Reader:
         gaps = [text[toks[k - 1][2] if k else 0:toks[k][1]] for k in range(len(toks))]
         # a line that ends on a word that cannot end a clause (verse, a form's wrapped field:
         # "hold novels, essays, and / all other books") goes on on the next line: no sentence end
-        gaps = [" " if k and "\n" in g and not g.strip() and raw[k - 1] in _RUN_ON else g for k, g in enumerate(gaps)]
+        gaps = [" " if k and "\n" in g and not g.strip() and raw[k - 1] in RUN_ON_WORDS else g for k, g in enumerate(gaps)]
         self.text = _Text([w for w, _, _ in toks], raw, gaps)
         self.named: set[str] = set()  # kinds named outright (by a full name or synonym)
         self.context = self._context()

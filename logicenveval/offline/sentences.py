@@ -517,12 +517,13 @@ _DICTATED_MARK = re.compile(r"\s*\b(" + "|".join(sorted(DICTATED_MARKS, key=len,
                             + r")\b[ \t]*", re.I)
 
 
-#: a line that ends on a word no clause ends on (a conjunction, an article, a preposition), then a
+#: a line that ends on a word no clause ends on (a conjunction, an article, a preposition that is no
+#: particle or state: not "on", "in", "off", "to", "so": "if: the kettle is still on"), then a
 #: line that opens in lower case: verse or a wrapped field ("hold novels, essays, and / all other
 #: books"), one sentence running on. A line ending on any other word may end its message (a chat's
 #: lines, a YAML file's keys): it stays a line
-RUN_ON_WORDS = frozenset({"and", "or", "but", "so", "nor", "the", "a", "an", "of", "to", "with", "in", "on",
-                          "for", "from", "by", "at", "into", "onto", "under", "my", "your", "our", "their", "its"})
+RUN_ON_WORDS = frozenset({"and", "or", "but", "nor", "the", "a", "an", "of", "with", "from", "into", "onto",
+                          "my", "your", "our", "their", "its"})
 _RUN_ON_LINE = re.compile(r"(?im)\b(" + "|".join(sorted(RUN_ON_WORDS)) + r")[ \t]*\n[ \t]*(?=[a-z])")
 
 
