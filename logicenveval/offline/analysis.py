@@ -95,6 +95,8 @@ DESCRIPTIVE = frozenset(
      # a verb of posture before a state is the copula: "if its door is hanging open", as "the
      # safe is standing open" (where a thing hangs is read by the location reader all the same)
      "hanging", "hangs",
+     # (and its base form, also the singular the tokens make of "hangs": "should its door hang open")
+     "hang",
      # verbs of falling (`FALLS`): "a pillow may have tumbled to the floor"
      "tumbled", "tumbles", "toppled", "slid",
      # the British progressive of resting with the participle ("if they're already sat on the
@@ -160,7 +162,10 @@ ELSEWHERE = ("anywhere else", "elsewhere", "somewhere else", "any other place", 
 #: verbs whose "from" names a source ("fill the bowl from the bag"), not a location
 #: verb particles between an object and its place ("rolled out onto the floor")
 PARTICLES = frozenset({"out", "down", "over", "around", "away", "about"})
-SOURCE_VERBS = frozenset({"fill", "refill", "pour", "top", "water", "feed"})
+SOURCE_VERBS = frozenset({"fill", "refill", "pour", "top", "water", "feed",
+                          # a past act of taking: where the thing was, not where it is ("borrowed
+                          # the headphones from the hall cupboard?", "took a towel from the shelf")
+                          "borrowed", "took", "taken", "fetched", "grabbed", "removed", "collected"})
 #: the forms of "use" and what may stand before them when someone's using a thing is said
 #: (`_Reader._used`: "if you didn't use it", "have you used the mug?")
 USING = frozenset({"used", "use", "using"})
@@ -370,6 +375,45 @@ def _participle(words: list[str], k: int) -> bool:
     if k == 0 or words[k - 1] not in ("been", "has", "have", "had") or not words[k].endswith(("ed", "en", "wn", "ung")):
         return False
     return any(lemma != words[k] for lemma in getAllLemmas(words[k]).get("VERB", ()))
+
+
+#: what fills a container: "there is water in it" says it is filled
+FILLINGS = frozenset({"water", "coffee", "tea", "milk", "juice", "soup", "liquid", "fluid", "oil"})
+#: the subordinators of a time clause ("when you come in", "once we're back")
+_TIME_CUES = frozenset({"when", "whenever", "once"})
+
+
+def _before_time_clause(words: list[str]) -> list[str]:
+    """The words before a time clause whose subject is the reader or the speaker ("Spinning when
+    you come in?", "still on once we've left?"): the clause says when the state is asked, not the
+    state; all the words when there is none."""
+    cut = next((k for k in range(1, len(words) - 1) if words[k] in _TIME_CUES and words[k + 1] in AGENTS), None)
+    return words if cut is None else words[:cut]
+
+
+def _home_said(text: str, opens: bool) -> bool:
+    """Whether a statement of a home says it of the thing itself, not of one pointed to ("there's
+    one in the vanity"): no pronoun, or "it"/"they" opening its sentence (`opens`) as the subject
+    of the verb of home ("It lives in the vanity, so it goes back in there": the cloth's home, as
+    "The cloth lives in the vanity"). Inside a sentence ("clean it with the cloth if we still have
+    one; it lives in the vanity") the pronoun may take up the clause's own object, which the
+    pronoun reader does not tell apart, so no home is read there."""
+    words = [w for w, _, _ in tokens(text)]
+    pointing = set(words) & {"it", "they", "them", "one"}
+    return not pointing or opens and words[:1] in (["it"], ["they"]) and words[1:2] != [] \
+        and words[1] in HOMES and pointing <= {"it", "they"}
+
+
+def _perfect_moved(words: list[str], start: int, k: int) -> bool:
+    """Whether a perfect moved the thing at `start` before the "to" at `k` ("if the wind has
+    thrown it to the floor", "if the cat has knocked the vase to the floor", "if it has been
+    blown to the floor"): the participle of a perfect (`_participle`) right before the thing
+    (past its determiners) or between it and "to". Then "to" says where the thing came to rest,
+    as after a verb of falling (`FALLS`); an instruction's "take it to the shelf" stays a goal."""
+    j = start - 1
+    while j > 0 and words[j] in ARTICLES:
+        j -= 1
+    return j >= 0 and _participle(words, j) or any(_participle(words, i) for i in range(start + 1, k))
 
 
 #: verbs of giving that take two objects, the receiver first ("bring the plant the can", "hand
@@ -887,6 +931,13 @@ class _Reader:
                 break
             # "there may or may not be a loaf", "if we still have one", "if one is still to be had"
             before = words[max(0, m.start - 8) : m.start]
+            if m.kind == "pronoun" and before[-1:] and before[-1] in PREP_IN and _existential(before):
+                # "If there was water in it already, leave it": the thing is the container, and a
+                # filling in it says it is filled (`FILLINGS`), not that it is there at all
+                if set(before) & FILLINGS:
+                    facts += [Fact(r, f"state({r}, filled)", "state", "filled",
+                                   negated=negated != ("no" in before)) for r in m.roles]
+                break
             if _existential(before) or "no" in before[-2:] or _WE_HAVE.search(" ".join(before[-6:])) or (
                     m.start == 0 and m.kind == "pronoun" and words[0] == "one"):
                 facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
@@ -928,13 +979,15 @@ class _Reader:
                     facts += [self._fit(Fact(r, f"state({r}, {flag})", "state", flag, negated=neg))
                               for r in self.topic]
                     break
-        if not subjects and not facts and self.topic and self.topic_kind == "role" and len(words) <= 4:
+        core = _before_time_clause(words)
+        if not subjects and not facts and self.topic and self.topic_kind == "role" and len(core) <= 4:
             # an elliptic condition about the topic: "when dry, ...", "if not ripe, ..."; states
             # joined by "and" / "but" are each asked ("if clean but wet", "clean and dry"), a later
-            # one negated only by its own "not"
+            # one negated only by its own "not"; a time clause after it says when, not what
+            # ("Spinning when you come in?")
             flags: set[str] = set()
-            for k, w in enumerate(words):
-                if w in STATE_WORDS and (w not in PARTICLE_STATES or _stranded(words, k)) \
+            for k, w in enumerate(core):
+                if w in STATE_WORDS and (w not in PARTICLE_STATES or _stranded(core, k)) \
                         and STATE_WORDS[w][0] not in flags:
                     if flags and words[k - 1] not in ("and", "but", "not", "still", "yet"):
                         break
@@ -1310,7 +1363,8 @@ class _Reader:
             return []
         if habit:
             skipped = [w for w in skipped if w not in aspect and w != "to"]
-        if words[k] == "to" and not self._is_goal(words, m, skipped) and not set(skipped) & FALLS:
+        if words[k] == "to" and not self._is_goal(words, m, skipped) and not set(skipped) & FALLS \
+                and not _perfect_moved(words, m.start, k):
             return []  # "to" names a place only where something is moved: "returned to the armchair"
         if words[k] == "from" and (skipped or m.kind != "role" or set(words[max(0, m.start - 4) : m.start]) & SOURCE_VERBS):
             return []  # "fill it from the bag" names a source, not where the object is
@@ -1323,6 +1377,13 @@ class _Reader:
             set(words[: prev.start]) & MOTION)  # (its adjectives too: "... and a clean one on the counter")
         goal = words[k] != "from" and (self._is_goal(words, m, skipped) or gapped or (
             words[k] in ("into", "onto") and not set(skipped) & SITUATION_PARTICIPLES))
+        # "Return any board game found lying on the floor to the bookcase", "bring the mug left on
+        # the desk to the sink": a participle of situation after the verb's object says where the
+        # object is ("on", "in"); only a place after it that the verb moves it to ("to") is the goal
+        situated = goal and words[k] in PREP_ON | PREP_IN and bool(set(skipped) & SITUATION_PARTICIPLES) \
+            and not set(skipped) & MOTION
+        moved = goal
+        goal = goal and not situated
         article = determiner(words, m.start)
         # where a thing is kept or lives is a norm `_settle_stated` weighs against the rest of
         # the text
@@ -1356,10 +1417,12 @@ class _Reader:
                     else:
                         cond = f"inside({s}, {t})"
                     out.append(Fact(s, cond, "location", t, negated=negated and not goal, goal=goal,
-                                    modifier=modifier, definite=definite, home=bool(set(skipped) & HOMES),
+                                    modifier=modifier and not goal, definite=definite, home=bool(set(skipped) & HOMES),
                                     presupposed=prep == "from" and _taken(words, m.start)))
             k = target.end
             alternative = k < len(words) and words[k] == "or"
+            if situated and not alternative:
+                goal = moved  # the verb's own goal after the object's place ("... to the bookcase")
             while k < len(words) and words[k] in {"or", "and", "either", "the", "a"}:
                 k += 1
             elided = alternative and self._elided_place(words, mentions, k)
@@ -1656,6 +1719,9 @@ DISCOVERY = frozenset({"find", "found", "spot", "spotted", "see", "saw", "seen",
 
 
 _HERE = frozenset({"there", "here"})
+#: a room said as the place of a finding ("if you find any in the media room", "should you spot
+#: one in this room"): where the finder is, "here"
+_THIS_ROOM = re.compile(r"\b(?:in|inside)\s+(?:the|this)\s+(?:[a-z]+\s+)?room\b", re.I)
 #: the indefinite pronouns of "if you find one there", "should you spot any there": one of the
 #: things the clause before said may be there, not whether such a thing exists at all
 FOUND_ONE = frozenset({"one", "ones", "any", "some"})
@@ -1669,7 +1735,7 @@ def _state_of(f: Fact, role: str) -> Fact:
 def _anaphoric(text: str, facts: list[Fact]) -> bool:
     """A condition with no fact of its own whose words only point back ("if it is not" too; "should
     you find it there": an agent coming upon the thing, `DISCOVERY`)."""
-    words = {w for w, _, _ in tokens(expand(text))}
+    words = {w for w, _, _ in tokens(_THIS_ROOM.sub(" here ", expand(text)))}
     if words & DISCOVERY and words & AGENTS and words & _HERE and words & FOUND_ONE \
             and all(f.goal or f.kind == "exists" for f in facts):
         # "if you find one there": the one found is one of the things just said to be there
@@ -1990,12 +2056,19 @@ def _cataphor(reader: _Reader, condition: str, main: str) -> tuple[str, ...] | N
         return None
     words = [w for w, _, _ in tokens(expand(main).lower())]
     for m in reader.lex.find_mentions(tokens(expand(main).lower())):
+        if set(words[:m.start]) & {"it", "they", "them"}:
+            return None  # "If it is dusty, it will be wiped with the cloth": the main clause's own "it"
         lead = m.start - 1
         while lead >= 0 and words[lead] in ARTICLES:
             lead -= 1
-        if m.kind == "role" and not (lead >= 0 and words[lead] in PREP_ON | PREP_IN | PLACE_PREPS | {"at"}):
+        if m.kind == "role" and not (lead >= 0 and words[lead] in PREP_ON | PREP_IN | PLACE_PREPS | _INSTRUMENTAL):
             return m.roles
     return None
+
+
+#: prepositions of place and means before which a thing is no cataphor's ("switch off the lamp at
+#: the wall", "wipe it with the cloth")
+_INSTRUMENTAL = frozenset({"at", "with", "using"})
 
 
 #: verbs of an instruction whose particle says the state it leaves ("switch it off", "turn it on")
@@ -2442,7 +2515,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             low = expand(said).lower() if role == "condition" else ""
             there = _THERE.match(low)
             if role == "condition" and _anaphoric(said, facts):
-                facts, names = _antecedent(clauses, grammatical, pointing)
+                # (a finding in the room itself, "if you find any in the media room", asks whether
+                # the thing is there at all, whatever the clause before said of it: `_come_upon`)
+                facts, names = ([], ()) if _THIS_ROOM.search(said) else _antecedent(clauses, grammatical, pointing)
                 if not facts:
                     facts, names = _come_upon(clauses, grammatical, said)
                 pointing.add(len(clauses))
@@ -2590,8 +2665,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                                                f.kind == "exists" and c[0][0] == f.subject)]
                                            or [c for c in carried if c[0] != slot and f.kind == "exists"]})
             entry.setdefault("places", set()).add((cl.sentence, ci))
-            entry["home"] = entry.get("home", True) and f.home and cl.role == "statement" and not (
-                {w for w, _, _ in tokens(cl.text)} & {"it", "they", "them", "one"})
+            entry["home"] = entry.get("home", True) and f.home and cl.role == "statement" and _home_said(
+                cl.text, opens=ci == 0 or clauses[ci - 1].sentence != cl.sentence)
             if cl.role == "condition":
                 value = f.condition.rsplit(", ", 1)[1][:-1] if f.kind == "attr" else f.key
                 # "unless it is already in the box, put it in: open the box first if ...": what

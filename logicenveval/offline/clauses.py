@@ -509,6 +509,8 @@ def _imperative_cut(cond: str) -> int | None:
             and imperative([w.group() for w in ws[k + 2:k + 4]])
         if gap.strip() or ws[k - 1].group() in _NO_IMPERATIVE_AFTER and not request:
             continue
+        if said[ws[k].end():ws[k + 1].start()].strip():
+            continue  # "if it was left open (the cleaner ...)": a verb's object follows it directly, not past a bracket
         if not {w.group() for w in ws[:k]} & _PREDICATES:
             continue
         # a terse instruction with its verb dropped after a bare state ("if wet into laundry

@@ -196,6 +196,15 @@ _NAMED_BEFORE = re.compile(rf"(?P<name>{_NAME})(?:,\s+(?:her|his|my|our|their|yo
 _NAMED_AFTER = re.compile(rf"\b(?:her|his|my|our|their|your|the)\s+(?P<noun>{_NOUN}),\s+(?P<name>{_NAME})(?=\s*[,.;:!?)]|$)")
 
 
+#: the words that name the room a task of one room is in, after a determiner of `_THIS_ROOM`
+#: ("the room", "this room", "each room")
+_ROOM_WORDS = frozenset({"room"})
+_THIS_ROOM = frozenset({"the", "this", "each", "every"})
+#: a list item's label ending the text before a word ("a) On the desk ...", "2. Blanket", "(iii)
+#: Lamp"): the word opens its item as it would open a sentence
+_ITEM_LABEL_END = re.compile(r"(?:^|\n)[ \t]*\(?(?:[a-z]|[0-9]{1,2}|[ivx]{1,4})[).]$", re.I)
+
+
 def _named_things(text: str, phrases: Mapping[tuple[str, ...], set[str]]) -> dict[tuple[str, ...], set[str]]:
     """The given names a text calls one role by: a capitalised name in apposition with a noun
     phrase that names exactly one role ("First, the princess had to find Lady Rosabel, her doll.
@@ -207,7 +216,7 @@ def _named_things(text: str, phrases: Mapping[tuple[str, ...], set[str]]) -> dic
     for m in (*_NAMED_BEFORE.finditer(text), *_NAMED_AFTER.finditer(text)):
         name = m.group("name")
         lead = text[:m.start("name")].rstrip(" \t")
-        opens = not lead or lead[-1] in ".!?:\n\"'(-*"
+        opens = not lead or lead[-1] in ".!?:\n\"'(-*" or bool(_ITEM_LABEL_END.search(lead))
         first = name.split()[0].lower().rstrip(".")
         if opens and first not in TITLES and (len(name.split()) < 2 or first in _GREETINGS):
             continue
@@ -378,6 +387,11 @@ class Lexicon:
                     break
             if found is None and words[i] == "floor":
                 found = Mention(("floor",), i, i + 1, "floor")
+            if found is None and words[i] in _ROOM_WORDS and len(self.rooms) == 1 and i > 0 \
+                    and words[i - 1] in _THIS_ROOM:
+                # "if a hair dryer is found in the room": in a task of one room, "the room" is that
+                # room (`offline.placement` reads it alike)
+                found = Mention((self.rooms[0],), i, i + 1, "room")
             if found is not None and found.kind == "role" and words[found.end:found.end + 1] and \
                     words[found.end] in TIME_HEADS:
                 i = found.end + 1  # "on trash day", "bath time": a time, not the thing

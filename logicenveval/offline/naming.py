@@ -49,6 +49,7 @@ from logicenveval.offline.sentences import (
     ARROW,
     FORMS,
     PERSONAL_SUBJECTS,
+    RUN_ON_WORDS,
     STATE_WORDS,
     binned,
     expand,
@@ -293,8 +294,12 @@ class _Reader:
         self.controls = _control_kinds(catalog)
         text = expand(binned(unquote(description)))
         toks = tokens(text)
-        self.text = _Text([w for w, _, _ in toks], [text[a:b].lower() for _, a, b in toks],
-                          [text[toks[k - 1][2] if k else 0:toks[k][1]] for k in range(len(toks))])
+        raw = [text[a:b].lower() for _, a, b in toks]
+        gaps = [text[toks[k - 1][2] if k else 0:toks[k][1]] for k in range(len(toks))]
+        # a line that ends on a word that cannot end a clause (verse, a form's wrapped field:
+        # "hold novels, essays, and / all other books") goes on on the next line: no sentence end
+        gaps = [" " if k and "\n" in g and not g.strip() and raw[k - 1] in RUN_ON_WORDS else g for k, g in enumerate(gaps)]
+        self.text = _Text([w for w, _, _ in toks], raw, gaps)
         self.named: set[str] = set()  # kinds named outright (by a full name or synonym)
         self.context = self._context()
         self.room_types = {room_type_of(r) for r in rooms}
@@ -944,18 +949,25 @@ class _Reader:
         metal rack", "the top drawer of the dresser", `FURNITURE_PARTS`): the part names no object
         of its own; the phrase after "of" names the furniture, of a kind that has such parts
         (`has_part`, read by `bare_noun` through `part_for`)."""
+        whole = self.whole_said_after(i)
+        if whole is not None:
+            self.part_for[whole] = self.text.words[i]
+        return whole is not None
+
+    def whole_said_after(self, i: int) -> int | None:
+        """The last word of the furniture a part at word `i` is said "of" ("the top drawer of the
+        dresser": "dresser"), or None when word `i` is no part so said (`part_said_of`)."""
         words, gaps = self.text.words, self.text.gaps
         if words[i] not in FURNITURE_PARTS or i + 2 >= len(words) or words[i + 1] != "of" \
                 or any(gaps[k].strip() for k in (i + 1, i + 2)) or words[i + 2] not in _ARTICLES:
-            return False
+            return None
         k = i + 3
         while k < min(i + 6, len(words)) and not gaps[k].strip():
             n, category = self.match(k)
             if category is not None or words[k] in self.heads:
-                self.part_for[k + n - 1] = words[i]
-                return True
+                return k + n - 1
             k += 1
-        return False
+        return None
 
     def part_by_other_name(self, i: int, n: int, category: str) -> bool:
         """Whether the `n` words at `i` name a piece of furniture by none of its catalog's own
@@ -1120,7 +1132,10 @@ class _Reader:
             k = j + n  # the word after the noun phrase
             plural = n > 0 and self.text.raw[k - 1] != words[k - 1]
             listed = plural and k < len(words) and bool(_HEADING.search(self.text.gaps[k]))
-            ordinal_part = words[k - 1] in _PARTS and i > 0 and words[i - 1] in _ORDINALS
+            # (a ranked part said "of" a piece of furniture, "the bottom shelf of the bookcase", is
+            # that furniture's part and heads no list: `part_said_of`)
+            ordinal_part = words[k - 1] in _PARTS and i > 0 and words[i - 1] in _ORDINALS \
+                and self.whole_said_after(k - 1) is None
             if not (count or listed or ordinal_part):
                 i += 1
                 continue
@@ -1171,6 +1186,8 @@ class _Reader:
         folk one has the cracked case)"), so the search stops at an opening bracket."""
         opening = next((k for k in range(start, end) if "(" in self.text.gaps[k]), end)
         colon = next((k for k in range(start, opening) if _HEADING.search(self.text.gaps[k])), None)
+        if colon is not None and any("," in self.text.gaps[k] for k in range(start + 1, colon)):
+            return start  # "three levels hold novels, essays, and other books - top, middle, bottom": the list came first
         return start if colon is None or colon == start else colon
 
     def group_kind(self, j: int) -> tuple[int, str | None]:

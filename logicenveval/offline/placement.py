@@ -979,10 +979,13 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         k = start - 1
         while k > clause.start and words[k] in ADVERBS:
             k -= 1
-        before = words[k] if k >= clause.start else ""
+        # (a name's last word is no auxiliary: "the watering can is on the bench", "the trash can
+        # stands by the door": "can" ends the subject's name, `_named_word`)
+        before = words[k] if k >= clause.start and not _named_word(ms, k) else ""
+        reported = _reported(before, group, words[clause.start:k])
         guessed = before == "will" and (_if_anywhere(words, clause.end) or _if_present(words, clause.start))
         if before in NORMATIVE and not (before in PERFECT and group[:1] == ["been"]) and not guessed \
-                or before in ("you", "we", "i") and not set(group) & KEEP_VERBS:
+                or before in ("you", "we", "i") and not set(group) & KEEP_VERBS and not reported:
             continue  # a norm or a goal ("should be in"), or what someone does ("which you hang on")
         if kind is None or clause.mood == "instruction" and _finite(group):
             continue  # an instruction places only through its noun phrases ("the coat the kids dumped ...")
@@ -1015,7 +1018,9 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
                 after = _np_list(sent, ms, end, at)
                 # "someone left a mark on the floor"; "the coat the kids dumped in the hallway"
                 subjects, end = (after, at) if after else (_np_list(sent, ms, lo, who), end)
-                kind = kind if clause.mood == "statement" else "presumed"
+                # (a speaker's report of their own act is presumed: a later "if it is still on
+                # the floor" asks again, `_reported`)
+                kind = kind if clause.mood == "statement" and not reported else "presumed"
             elif clause.mood == "statement" and words[who:who + 1] == [","] and _resting_participle(group):
                 subjects = _adjunct_subject(sent, ms, lo, who)  # "the telly's on, sitting on the stand"
             else:
@@ -1192,6 +1197,26 @@ def _adjunct_subject(sent: _Sentence, ms: list[Mention], lo: int, comma: int) ->
                         for k, w in enumerate(words[lo:comma], lo)):
         return subjects
     return []
+
+
+def _named_word(ms: list[Mention], k: int) -> bool:
+    """Whether token `k` is a word of a thing's name (a mention), not a word of the clause's own."""
+    return any(m.start <= k < m.end for m in ms)
+
+
+#: the speakers whose own past act of putting says where a thing is now ("I put the basket on the
+#: dresser", "we set the box on the stool"); "you put ..." is as often an instruction or a
+#: generic "you" ("you put the mug on the rack"), so it is no report
+_REPORTERS = frozenset({"i", "we"})
+
+
+def _reported(subject: str, group: list[str], lead: list[str]) -> bool:
+    """Whether a first-person subject and a lone verb of result ("I put", "we set", "I placed",
+    `RESULT`) report where the speaker left a thing: a past act, read as a statement of place
+    (`_verb_kind`: an active past), presumed only, so that a later condition ("I left her
+    blanket on the floor. If it is still on the floor, ...") asks it again. Not when the words
+    before the subject doubt it ("Maybe I left one on the table": the task's question)."""
+    return subject in _REPORTERS and len(group) == 1 and group[0] in RESULT and not doubts(lead)
 
 
 def _finite(group: list[str]) -> bool:

@@ -15,8 +15,8 @@ from logicenveval.offline.lexicon import COLOR_WORDS, verb_form
 STATE_WORDS: dict[str, tuple[str, bool]] = {
     "open": ("open", True), "opened": ("open", True), "ajar": ("open", True),
     "closed": ("open", False), "shut": ("open", False),
-    "on": ("toggled_on", True), "lit": ("toggled_on", True), "running": ("toggled_on", True),
-    "burning": ("toggled_on", True), "off": ("toggled_on", False),
+    "on": ("toggled_on", True), "lit": ("toggled_on", True), "lighted": ("toggled_on", True), "running": ("toggled_on", True),
+    "burning": ("toggled_on", True), "glowing": ("toggled_on", True), "off": ("toggled_on", False),
     "dirty": ("dirty", True), "stained": ("dirty", True), "messy": ("dirty", True),
     "dusty": ("dirty", True), "muddy": ("dirty", True), "greasy": ("dirty", True),
     "sticky": ("dirty", True), "used": ("dirty", True), "clean": ("dirty", False),
@@ -226,6 +226,12 @@ _ITEM_END = re.compile(r"[ \t]*;(?:[ \t]+(?:and|or))?[ \t]*\n(?=[ \t]*(?:\((?:[a
 #: work order's "if found on the chair", a manual's "when left open"): "if it is found ..."
 _ELIDED_SUBJECT = re.compile(
     rf"\b(if|unless|when|whenever|once|while)\s+(?=(?:{'|'.join(sorted(FOUND_PARTICIPLES))})\b)", re.I)
+#: a condition whose subject pronoun is dropped, as a speaker of a null-subject language drops it
+#: (Spanish, Italian, Portuguese: "si está encendida"; a hasty text: "if is still on, turn it
+#: off", "unless are dry"): "if" or "unless" then a finite "be" that no "there" follows, read with
+#: its pronoun ("if it is", "unless they are"); a question's "is there" stays
+_DROPPED_SUBJECT = re.compile(r"\b(if|unless)\s+(?=(is|are|was|were)\s+(?!there\b)[a-z])", re.I)
+_DROPPED_PRONOUN = {"is": "it", "was": "it", "are": "they", "were": "they"}
 #: the same before a state word that ends its clause inside brackets or after an arrow's answer
 #: ("alarm clock -> nightstand (silence it first if ringing)", "(wash it first if dirty)"): the
 #: elided subject is the "it" the bracket's instruction acts on, not the place named last
@@ -501,6 +507,46 @@ def _telegram(text: str) -> str:
     return _TELEGRAM_MARK.sub(lambda m: TELEGRAM_MARKS[m.group(1)], text)
 
 
+#: voice typing's spoken punctuation (the words a dictation app turns into marks: "comma", "full
+#: stop", "new paragraph"), read only in a text that speaks two kinds of mark or more
+#: (`_dictated`): there a sentence ends at "full stop", not at the next written mark
+DICTATED_MARKS = {"full stop": ".", "period": ".", "comma": ",", "question mark": "?",
+                  "exclamation mark": "!", "exclamation point": "!", "new paragraph": ".\n\n",
+                  "new line": ".\n", "semicolon": ";", "colon": ":"}
+_DICTATED_MARK = re.compile(r"\s*\b(" + "|".join(sorted(DICTATED_MARKS, key=len, reverse=True)).replace(" ", r"\s+")
+                            + r")\b[ \t]*", re.I)
+
+
+#: a line that ends on a word no clause ends on (a conjunction, an article, a preposition that is no
+#: particle or state: not "on", "in", "off", "to", "so": "if: the kettle is still on"), then a
+#: line that opens in lower case: verse or a wrapped field ("hold novels, essays, and / all other
+#: books"), one sentence running on. A line ending on any other word may end its message (a chat's
+#: lines, a YAML file's keys): it stays a line
+RUN_ON_WORDS = frozenset({"and", "or", "but", "nor", "the", "a", "an", "of", "with", "from", "into", "onto",
+                          "my", "your", "our", "their", "its"})
+_RUN_ON_LINE = re.compile(r"(?im)\b(" + "|".join(sorted(RUN_ON_WORDS)) + r")[ \t]*\n[ \t]*(?=[a-z])")
+
+
+def _runs_on(text: str) -> str:
+    """The text with a line that runs on into the next (`_RUN_ON_LINE`) joined to it: a line break
+    there ends no sentence."""
+    return _RUN_ON_LINE.sub(r"\1 ", text)
+
+
+def _dictated(text: str) -> str:
+    """A dictated text's spoken marks as the marks they stand for ("the can is on the bench full
+    stop if it's empty fill it" is "the can is on the bench. If it's empty fill it"), when it
+    speaks at least two kinds of them, three times or more: "put a comma after the date" or
+    "the period after lunch" alone is the text's own word."""
+    spoken = [re.sub(r"\s+", " ", m.group(1).lower()) for m in _DICTATED_MARK.finditer(text)]
+    if len(set(spoken)) < 2 or len(spoken) < 3:
+        return text
+    out = _DICTATED_MARK.sub(lambda m: DICTATED_MARKS[re.sub(r"\s+", " ", m.group(1).lower())] + " ", text)
+    out = re.sub(r"([.?!;:,])(?:\s*[.,;:])+", r"\1", out)  # "... new paragraph" after a full stop: one mark
+    out = re.sub(r"\n[ \t]+", "\n", out)
+    return re.sub(r"([.?!]\s+)([a-z])", lambda m: m.group(1) + m.group(2).upper(), out).strip()
+
+
 #: "No roll by the toilet then take a spare", "no bag in the bin then fetch one": a sentence that
 #: opens with "no" and a noun phrase, then "then" and an instruction, asks whether there is one
 #: (as "No roll by the toilet? Then take a spare" does)
@@ -738,8 +784,10 @@ def unquote(text: str) -> str:
     the fridge door is shut"), a note-taker's shorthand spelled out ("resp.", "&", `_SHORTHAND`), and a doubt about having got a thing as one about whether there is
     one ("not sure I even got bread": "there may or may not be bread"); a condition's elided
     subject spelled out
-    ("if found on" -> "if it is found on"); a telegram's "STOP" and "QUERY" as "." and "?"
-    (`TELEGRAM_MARKS`); "No X by the Y then ..." as the question "No X by the Y? Then ..."
+    ("if found on" -> "if it is found on"), and a dropped subject pronoun ("if is lighted" -> "if
+    it is lighted": `_DROPPED_SUBJECT`); a telegram's "STOP" and "QUERY" as "." and "?"
+    (`TELEGRAM_MARKS`); a dictated text's spoken marks as marks (`DICTATED_MARKS`); a line running on into the next as one
+    line (`_runs_on`); "No X by the Y then ..." as the question "No X by the Y? Then ..."
     (`_NO_THEN`); a bare state and a comma before an instruction as its condition ("wet, stand
     it in the stand": `_STATE_CASE`); "other kind of toy" as "other toy" (`_KIND_OF`); a state word said only as a predicate in its state's
     common word ("the dishwasher's already going": "running", `PREDICATE_STATES`); a table of items and places as its sentences
@@ -749,7 +797,7 @@ def unquote(text: str) -> str:
     citation marks (`_CITATION`)."""
     text = _OCCASION_IF.sub(_occasion_if, text)
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
-    text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_modern(_NATIVE_IF.sub(_native_if, text))))))
+    text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_dictated(_runs_on(_modern(_NATIVE_IF.sub(_native_if, text))))))))
     text = _TO_BE_CHECKED.sub(" may be ", _OTHER_THAN.sub(r"\1 else than", text))
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), _SPELLED[m.group(0).lower()]), text))
     text = starred(_TIME_STAMP.sub(r"\1", _CITATION.sub("", text)))
@@ -762,6 +810,7 @@ def unquote(text: str) -> str:
     plain = _PREDICATE_STATE.sub(lambda m: m.group(1) + PREDICATE_STATES[_ARTICLE_IN.sub("in ", m.group(2).lower())], plain)
     plain = _EMPHATIC_DO.sub("", plain)
     plain = _ELIDED_END_STATE.sub(r"\1 it is ", _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", plain)))
+    plain = _DROPPED_SUBJECT.sub(lambda m: f"{m.group(1)} {_DROPPED_PRONOUN[m.group(2).lower()]} ", plain)
     plain = _ACTED_STATE.sub(_acted_state, plain)
     plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)
     plain = _KIND_OF.sub(r"\1 ", _STATE_CASE.sub(_state_case, plain))
