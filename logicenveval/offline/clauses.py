@@ -30,7 +30,7 @@ from typing import NamedTuple
 
 from lemminflect import getAllLemmas
 
-from logicenveval.offline.lexicon import WORD, tokens
+from logicenveval.offline.lexicon import WORD, singular, tokens
 from logicenveval.offline.sentences import (
     ACTIONS,
     ARROW,
@@ -249,10 +249,11 @@ _FRONTED_PLACE = frozenset({"on", "in", "inside", "under", "by", "beside", "upon
 
 
 def _plural_finite(words: list[str]) -> bool:
-    """Whether a bare verb of `PLURAL_FINITE` follows a plural noun ("cups sit", "towels hang")
-    or, after a fronted place, comes before its subject ("On the counter sit two mugs")."""
+    """Whether a bare verb of `PLURAL_FINITE` follows a plural noun ("cups sit", "towels hang":
+    a word the lemmatiser gives another noun lemma, `lexicon.singular`) or, after a fronted
+    place, comes before its subject ("On the counter sit two mugs")."""
     return any(w in PLURAL_FINITE and k > 0 and (
-        len(words[k - 1]) > 3 and words[k - 1].endswith("s") and not words[k - 1].endswith(("ss", "us", "is"))
+        singular(words[k - 1]) != words[k - 1]
         or words[0] in _FRONTED_PLACE and k > 2) for k, w in enumerate(words))
 
 
