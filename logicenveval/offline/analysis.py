@@ -39,6 +39,7 @@ from logicenveval.offline.clauses import (
     Piece,
     imperative,
     points_back,
+    presence_asked,
     split_clauses,
     uncertain_words,
 )
@@ -47,6 +48,7 @@ from logicenveval.offline.lexicon import (
     COLOR_WORDS,
     PART_TIES,
     VERB_OBJECTS,
+    WORD,
     Lexicon,
     Mention,
     singular,
@@ -272,17 +274,6 @@ _FIND_NAMED = re.compile(r"^\W*(?:you|we|i)\s+(?:(?:ever|do|does|did|should|can|
 _FRONTED_FINDING = re.compile(r"(?:you|we|i)\s+(?:(?:can|will|would|should|also|still|often|sometimes)\s+)*"
                               r"(?:may|might|could|probably|possibly|perhaps)\s+(?:(?:also|still|well|even)\s+)*"
                               r"(?:find|spot|see|notice|discover)\b")
-#: a condition that only says its thing is, or is not, there ("if it's there", "if they're still
-#: there", "if it isn't there")
-_THERE = re.compile(r"^\W*(?:it|they) (?:is|are) (?:still )?(?P<not>not )?there\W*$")
-#: a condition that only says its thing appears, or is anywhere at all ("if it turns up", "if they
-#: show up", "if it's anywhere", "if it is here at all"): whether the thing is there at all
-#: ("anywhere else" is a place, `ELSEWHERE`); its subject a pronoun or the thing's noun phrase
-#: ("if your wallet turns up", "if the spare key shows up": the condition names it)
-_APPEARS = re.compile(r"^\W*(?:it|they|(?:the|a|an|your|my|our|his|her|their|its)(?: [a-z'-]+){1,3}) "
-                      r"(?:(?:ever|still|does|do|did) )?"
-                      r"(?:turns? up|shows? up|turned up|showed up|(?:is|are) found|(?:re)?appears?|(?:re)?appeared"
-                      r"|(?:is|are) (?:anywhere|around|(?:here|there|around) at all))\W*$")
 #: a trailing ellipsis ("... if it's dirty straight into the washing machine...")
 _TRAILING = ("...", "\u2026")
 #: "it is the X", "that's the X": a clause that says which thing was spoken of
@@ -2513,7 +2504,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # agent has already done to the thing moved asks whether it is already there
                 facts = done
             low = expand(said).lower() if role == "condition" else ""
-            there = _THERE.match(low)
+            # "if it's there", "if it turns up", "if it isn't there": a condition that asks only
+            # whether its thing is there at all (True: that it is not)
+            present = presence_asked(WORD.findall(low)) if role == "condition" else None
             if role == "condition" and _anaphoric(said, facts):
                 # (a finding in the room itself, "if you find any in the media room", asks whether
                 # the thing is there at all, whatever the clause before said of it: `_come_upon`)
@@ -2524,18 +2517,17 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 if "not" in {w for w, _, _ in tokens(expand(said))}:
                     # "the drawer might already be open, and if it isn't, open it": the opposite
                     facts = [replace(f, negated=not f.negated) for f in facts]
-            elif role == "condition" and names and there and (asked := _presence_asked(clauses, grammatical, names)):
+            elif role == "condition" and names and present is not None \
+                    and (asked := _presence_asked(clauses, grammatical, names)):
                 # "If you find a credit card anywhere in the office, put it on the desk ... If it
                 # isn't there, nothing to do": after a condition asking whether the thing is there
                 # at all, "there" is that presence, not the place the instruction put it
-                facts = [Fact(r, f"exists({r})", "exists", negated=bool(there.group("not"))) for r in asked]
-            elif role == "condition" and not facts and names and _APPEARS.match(low):
-                # "If it turns up, put it on the desk", "it'll be on the floor if it's anywhere":
-                # a thing spoken of that may turn up, or be anywhere at all, may be absent
-                facts = [Fact(r, f"exists({r})", "exists") for r in names[:1]]
-            elif role == "condition" and not facts and names and there and not there.group("not"):
-                # "Wallet. If it's there, lost property basket": with no place named before to
-                # point to, "it is there" asks whether the thing is there at all
+                facts = [Fact(r, f"exists({r})", "exists", negated=present) for r in asked]
+            elif role == "condition" and not facts and names and present is False:
+                # "If it turns up, put it on the desk", "it'll be on the floor if it's anywhere",
+                # "Wallet. If it's there, lost property basket": a thing spoken of that may turn
+                # up, or be there at all, may be absent (with no place named before to point to,
+                # "it is there" asks whether the thing is there at all)
                 facts = [Fact(r, f"exists({r})", "exists") for r in names[:1]]
             elif role == "condition" and names and not any(not f.goal for f in facts) \
                     and _FIND_NAMED.match(low):

@@ -244,6 +244,50 @@ PLURAL_FINITE = frozenset({"lie", "sit", "stand", "rest", "hang", "stay", "wait"
                            "contain"})
 
 
+#: what a condition asks when it asks only whether its thing is there at all: "if it is there",
+#: "if they are here at all", "if it's anywhere" (`presence_asked`)
+PRESENT = frozenset({"there", "here", "anywhere", "around", "about"})
+#: verb groups of a thing coming to be there: "if it turns up", "if the key shows up", "if they
+#: are found", "if it reappears" (`presence_asked`)
+APPEARING = frozenset({("turn", "up"), ("turns", "up"), ("turned", "up"), ("show", "up"), ("shows", "up"),
+                       ("showed", "up"), ("is", "found"), ("are", "found"), ("appear",), ("appears",),
+                       ("appeared",), ("reappear",), ("reappears",), ("reappeared",)})
+#: a subject's determiners in a presence condition that names its thing ("if your wallet turns up")
+_PRESENCE_DETERMINERS = frozenset({"the", "a", "an", "your", "my", "our", "his", "her", "their", "its"})
+#: words a presence condition's verb group may carry that ask nothing more ("if it ever turns up",
+#: "if they're still there", "if it does show up")
+_PRESENCE_FILLERS = frozenset({"ever", "still", "do", "does", "did"})
+
+
+def presence_asked(words: list[str]) -> bool | None:
+    """Whether a condition's words (after its "if", contractions spelled out, no punctuation) ask
+    only whether its thing is there at all, and if so whether they ask that it is *not* there
+    (True) or that it is (False); None when they ask more. The subject is "it", "they" or the
+    thing's noun phrase ("your wallet"), or left out ("if anywhere", "if there at all"); then a
+    verb of appearing (`APPEARING`: "turns up", "is found") or "is" with a word of presence
+    (`PRESENT`: "if it's there", "if they are not here"), that word's "at all" ("if it is here
+    at all"), or "anywhere" and whatever place follows, never "anywhere else" (a place of its
+    own). Both readers ask it: the condition reader makes such a condition the thing's
+    existence (`analysis`), and the placement reader takes "it will be on the floor" beside it
+    as where the thing is if it is there, not a goal (`placement`). One definition, so that
+    what one reads as a question of presence the other does too."""
+    for n in (0, 1, 2, 3, 4):
+        if n == 1 and words[:1] not in (["it"], ["they"]) or n > 1 and (
+                not words or words[0] not in _PRESENCE_DETERMINERS):
+            continue
+        rest = [w for w in words[n:] if w not in _PRESENCE_FILLERS]
+        if tuple(rest) in APPEARING:
+            return False
+        if n and rest[:1] in (["is"], ["are"]):
+            rest = rest[1:]
+        negated = rest[:1] == ["not"]
+        rest = rest[negated:]
+        if rest[:1] == ["anywhere"] and rest[1:2] != ["else"] or len(rest) in (1, 3) and rest[0] in PRESENT \
+                and rest[1:] in ([], ["at", "all"]):
+            return negated
+    return None
+
+
 #: the prepositions a fronted place opens with before an inverted verb ("On the counter sit two mugs")
 _FRONTED_PLACE = frozenset({"on", "in", "inside", "under", "by", "beside", "upon", "atop", "over", "behind"})
 

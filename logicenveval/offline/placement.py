@@ -44,6 +44,7 @@ from logicenveval.offline.clauses import (
     Span,
     clause_spans,
     doubts,
+    presence_asked,
 )
 from logicenveval.offline.lexicon import (
     COLOR_WORDS,
@@ -923,39 +924,26 @@ def _room_words(sent: _Sentence, lex: Lexicon, reading: _Reading) -> None:
 _CLAUSE_LEADS = frozenset({"so", "and", "then", "but"})
 
 
-def _if_anywhere(words: list[str], at: int) -> bool:
-    """Whether the words from `at` are a condition that only asks whether the thing is there at all
-    ("if it is anywhere", "if they are here at all", "if anywhere"): then "it will be on the
-    floor" before it is the speaker's guess where the thing is, if it is there (a stated place of
-    a thing that may be absent), not a goal."""
-    rest = [w for w in words[at:at + 7] if w.isalpha()]
-    if rest[:1] != ["if"]:
-        return False
-    rest = rest[1:]
-    if rest[:1] in (["it"], ["they"]) and rest[1:2] in (["is"], ["are"]):
-        rest = rest[2:]
-    rest = [w for w in rest if w != "still"]
-    return rest[:1] == ["anywhere"] and rest[1:2] != ["else"] or rest[1:3] == ["at", "all"]
-
-
-#: what a condition asks when it only asks whether a thing is there at all: "if it is there", "if
-#: she did leave it" (then "it will be on the armchair" after it is where the thing is, if it is)
-PRESENT = frozenset({"there", "here", "anywhere", "around", "about"})
+#: what a condition asks when it asks whether an agent left the thing there ("if she did leave
+#: it", "if you forgot them"): then "it will be on the armchair" is where it is, if it is
 LEAVING = frozenset({"leave", "left", "forget", "forgot", "forgotten", "drop", "dropped", "lose", "lost"})
 
 
-def _if_present(words: list[str], start: int) -> bool:
-    """Whether the clause before token `start` is a condition that only asks whether the thing is
-    there ("If it is there, it will be on the armchair", "If she did leave it, it'll be on the
-    armchair"): `_if_anywhere` with the condition put first."""
-    cue = max((n for n in range(start) if words[n] == "if"), default=None)
+def _if_there(words: list[str], clause: Span) -> bool:
+    """Whether a condition right after the clause ("it will be on the floor if it is anywhere")
+    or before it ("If it is there, it will be on the armchair", "If she did leave it, it'll be on
+    the armchair") only asks whether the thing is there (`clauses.presence_asked`, or an agent
+    leaving it, `LEAVING`): then "it will be on the floor" is the speaker's guess where the
+    thing is, if it is there (a stated place of a thing that may be absent), not a goal."""
+    after = [w for w in words[clause.end:clause.end + 7] if w[0].isalnum()]
+    if after[:1] == ["if"] and presence_asked(after[1:]) is False:
+        return True
+    cue = max((n for n in range(clause.start) if words[n] == "if"), default=None)
     if cue is None:
         return False
-    asked = [w for w in words[cue + 1:start] if w.isalpha() and w != "still"]
-    if not 2 <= len(asked) <= 4 or set(asked) & NEGATIONS:
-        return False
-    return asked[:1] in (["it"], ["they"]) and asked[1:2] in (["is"], ["are"]) and asked[2:] in ([w] for w in PRESENT) \
-        or asked[-1] in ("it", "them") and bool(set(asked) & LEAVING)
+    asked = [w for w in words[cue + 1:clause.start] if w[0].isalnum() and w != "still"]
+    return presence_asked(asked) is False or 2 <= len(asked) <= 4 and not set(asked) & NEGATIONS \
+        and asked[-1] in ("it", "them") and bool(set(asked) & LEAVING)
 
 
 def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
@@ -983,7 +971,7 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         # stands by the door": "can" ends the subject's name, `_named_word`)
         before = words[k] if k >= clause.start and not _named_word(ms, k) else ""
         reported = _reported(before, group, words[clause.start:k])
-        guessed = before == "will" and (_if_anywhere(words, clause.end) or _if_present(words, clause.start))
+        guessed = before == "will" and _if_there(words, clause)
         if before in NORMATIVE and not (before in PERFECT and group[:1] == ["been"]) and not guessed \
                 or before in ("you", "we", "i") and not set(group) & KEEP_VERBS and not reported:
             continue  # a norm or a goal ("should be in"), or what someone does ("which you hang on")
