@@ -2039,9 +2039,6 @@ def _resumed(sent: _Sentence, ms: list[Mention], a: int, b: int) -> list[tuple[s
 # Placements by structure (tenth session): the fallback's forms read wherever they occur
 # ---------------------------------------------------------------------------------------------
 
-#: adverbs that make a place said of a thing its usual one, a home ("Upon the stove there commonly
-#: stands the saucepan", "On the hook usually hangs the key")
-NORMAL_ADVERBS = NORM_ADVERBS | frozenset({"commonly", "ordinarily", "customarily"})
 #: participles of placing whose present passive, right before the place and said of a definite
 #: thing, states where it is ("The bag of my wife is put on the low table"); "is put back in",
 #: "is to be put", "is put on the shelf once it is dry" (a procedure) do not (`_passive_state`)
@@ -2092,8 +2089,8 @@ def _fronted(sent: _Sentence, before: _Before, ms: list[Mention], a: int,
     if found is None:
         return []
     k, kind = found[1].end, "settled"
-    while k < b and (words[k] in ADVERBS or words[k] in NORMAL_ADVERBS):
-        kind = "kept" if words[k] in NORMAL_ADVERBS else kind
+    while k < b and (words[k] in ADVERBS or words[k] in NORM_ADVERBS):
+        kind = "kept" if words[k] in NORM_ADVERBS else kind
         k += 1
     if k >= b or not _finite_word(words[k]) or words[k] in _GAP_STOPS or any(m.start <= k < m.end for m in ms):
         return []

@@ -94,7 +94,11 @@ def determiner(words: list[str], start: int) -> str:
 #: since with one of being they state the norm ("Normally a fresh diaper is lying on the table")
 FREQUENCY = frozenset({"often", "frequently", "regularly", "repeatedly", "constantly", "sometimes",
                        "occasionally", "forever"})
-NORM_ADVERBS = frozenset({"usually", "normally", "generally", "typically", "always"})
+#: adverbs of a norm; said with a verb of resting they make a place a thing's usual one, a home
+#: ("Upon the stove there commonly stands the saucepan", "On the hook usually hangs the key":
+#: `placement`), with one of an event a habit (`habitual`)
+NORM_ADVERBS = frozenset({"usually", "normally", "generally", "typically", "always", "commonly", "ordinarily",
+                          "customarily"})
 EVENT_VERBS = frozenset({"get", "gets", "got", "getting", "end", "ends", "ended", "ending", "wind", "winds",
                          "wound", "fall", "falls", "roll", "rolls", "slip", "slips", "turn", "turns"})
 #: "tends to <verb>"; "keeps <verb>-ing"
