@@ -82,6 +82,8 @@ def test_a_condition_that_only_asks_presence(condition: str, negated: bool) -> N
     "they are there on the desk",    # a place after "there"
     "the kids turn up late",         # more than the verb of appearing
     "she did leave it",              # an agent's leaving: the placement reader's own (`LEAVING`)
+    "its flame still flickers there",  # a verb of its own before "there" (a tale)
+    "the old key hangs there",         # a verb of resting before "there" (a note)
     "it is not on the shelf",
     "",
 ])

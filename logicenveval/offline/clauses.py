@@ -278,7 +278,9 @@ def presence_asked(words: list[str]) -> bool | None:
         rest = [w for w in words[n:] if w not in _PRESENCE_FILLERS]
         if tuple(rest) in APPEARING:
             return False
-        if n and rest[:1] in (["is"], ["are"]):
+        if n:  # a subject's presence is said by "is" ("if its flame yet gutters there" asks more)
+            if rest[:1] not in (["is"], ["are"]):
+                continue
             rest = rest[1:]
         negated = rest[:1] == ["not"]
         rest = rest[negated:]
