@@ -31,12 +31,10 @@ from logicenveval.offline.analysis import Factor, analyse
 from logicenveval.offline.handlers import handler
 from logicenveval.offline.keyed import keyed, keyed_selection
 from logicenveval.offline.realise import task_objects
+from logicenveval.offline.scene_answers import AREA
 from logicenveval.scene.guessed_layout import guess_coordinates
 
-#: typical floor area (m²) per room type
-AREA = {"LivingRoom": 22.0, "Kitchen": 13.0, "Bedroom": 15.0, "Bathroom": 7.0, "Study": 11.0,
-        "Hallway": 9.0, "LaundryRoom": 8.0, "DiningRoom": 15.0, "KidsRoom": 13.0, "Garage": 20.0,
-        "Balcony": 6.0, "Office": 12.0, "Pantry": 5.0, "Entryway": 7.0}
+# (`AREA`, the typical floor area per room type, is the scene answers' table: one for both)
 #: pairs that usually stand together (object category, anchor category)
 COMPANIONS = {"dining_chair": "dining_table", "office_chair": "desk", "nightstand": "bed",
               "armchair": "coffee_table", "ottoman": "sofa", "bar_stool": "kitchen_island",
