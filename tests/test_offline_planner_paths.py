@@ -1,0 +1,44 @@
+"""Paths combined (docs/reader.md, "Paths combined and the last structural losses (eleventh
+session)"): factors whose instructions decide one thing's fate are asked in one subtask, so the
+planner combines their values on one path. Each rule is tried on sentences written for the test in
+two registers, with near misses that must stay apart; each test fails without its rule."""
+
+from __future__ import annotations
+
+from reading import CATALOG, brief
+
+from logicenveval.offline.analysis import analyse
+
+
+def _groups(text: str, rooms: tuple[str, ...]) -> list[list[str]]:
+    return analyse(brief(text, rooms), CATALOG).groups
+
+
+# -- an instruction that replaces one given before is asked in that instruction's subtask ----------
+
+
+def test_an_instruction_said_instead_joins_the_subtask_it_replaces() -> None:
+    # plain: the first instruction does not name the dishwasher, the second names the mug
+    assert _groups("Should the mug be dirty, it is to be washed. If the dishwasher is running, the mug goes in "
+                   "the sink instead.", ("kitchen",)) == [["mug_dirty", "dishwasher_toggled_on"]]
+    # formal, "instead" inside the verb group and a "however" aside
+    assert _groups("A wet towel is to be dried in the dryer. Whilst the dryer is running, however, the towel is "
+                   "instead to be hung on the towel rack.", ("laundry_room",)) == [["towel_wet", "dryer_toggled_on"]]
+
+
+def test_instead_split_off_as_an_alternative_also_replaces() -> None:
+    # spoken, no comma after the condition: "instead" ends the sentence and is read as an `else`
+    # clause; the pronoun names no mug, the first instruction names the dishwasher
+    assert _groups("If the mug is dirty, it goes into the dishwasher. If the dishwasher is running you put it in "
+                   "the sink instead.", ("kitchen",)) == [["mug_dirty", "dishwasher_toggled_on"]]
+
+
+def test_a_following_condition_without_a_replacement_stays_its_own_subtask() -> None:
+    # near misses: the second instruction acts on the machine itself, or on neither thing
+    assert _groups("If the mug is dirty, it goes into the dishwasher. If the dishwasher is running, switch it off.",
+                   ("kitchen",)) == [["mug_dirty"], ["dishwasher_toggled_on"]]
+    assert _groups("A wet towel is to be dried. If the dryer is running, open the window.",
+                   ("laundry_room",)) == [["towel_wet"], ["dryer_toggled_on"]]
+    # "instead" alone does not join what neither instruction names
+    assert _groups("A wet towel is to be dried. If the dryer is running, open the window instead.",
+                   ("laundry_room",)) == [["towel_wet"], ["dryer_toggled_on"]]
