@@ -42,3 +42,31 @@ def test_a_following_condition_without_a_replacement_stays_its_own_subtask() -> 
     # "instead" alone does not join what neither instruction names
     assert _groups("A wet towel is to be dried. If the dryer is running, open the window instead.",
                    ("laundry_room",)) == [["towel_wet"], ["dryer_toggled_on"]]
+
+
+# -- a verbless directive is an instruction to put the thing there ---------------------------------
+
+
+def _goals(text: str, rooms: tuple[str, ...]) -> set[tuple[str, str]]:
+    return {(f.subject, f.key) for c in analyse(brief(text, rooms), CATALOG).clauses for f in c.facts
+            if f.goal and f.kind == "location"}
+
+
+def test_a_place_with_it_is_an_instruction_to_put_it_there() -> None:
+    # a note on the fridge, and a parent's shout: the elided verb of putting, its thing "with it"
+    assert _goals("Mug on the desk? Into the sink with it.", ("kitchen",)) == {("mug", "sink")}
+    assert _goals("Toys on the floor? Back in the toy box with them!", ("bedroom",)) == {("toy", "toy_box")}
+    # the container's being open is then asked for that move, in the thing's subtask
+    assert _groups("Left the milk on the table again? Into the fridge with it. The fridge might still be open, "
+                   "so shut it after.", ("kitchen",)) == [["milk_carton_on_dining_table", "fridge_open"]]
+
+
+def test_a_place_of_motion_after_a_question_answers_it() -> None:
+    assert _goals("Shirt on the chair? Straight into the hamper.", ("bedroom",)) == {("shirt", "hamper")}
+    assert _goals("Mug on the desk? Into the sink.", ("kitchen",)) == {("mug", "sink")}
+
+
+def test_a_place_that_may_say_where_a_thing_is_stays_no_instruction() -> None:
+    # "on" after a question may answer where the thing is; a verb of its own keeps its thing
+    assert _goals("Where is the towel? On the rack.", ("bathroom",)) == set()
+    assert _goals("Mug on the desk? Into the kitchen, then wash it.", ("kitchen",)) == set()
