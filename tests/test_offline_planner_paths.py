@@ -44,6 +44,22 @@ def test_a_following_condition_without_a_replacement_stays_its_own_subtask() -> 
                    ("laundry_room",)) == [["towel_wet"], ["dryer_toggled_on"]]
 
 
+def test_an_instruction_said_first_joins_the_subtask_it_prepares() -> None:
+    # a house rule and a formal manual: the machine's instruction prepares the thing's move
+    assert _groups("If the shirt is dirty, put it in the washing machine. If the washing machine is running, "
+                   "switch it off first.", ("laundry_room",)) == [["shirt_dirty", "washing_machine_toggled_on"]]
+    assert _groups("Should the mug be dirty, it belongs in the dishwasher. Where the dishwasher is running, let it "
+                   "finish beforehand.", ("kitchen",)) == [["mug_dirty", "dishwasher_toggled_on"]]
+
+
+def test_first_opening_a_clause_orders_steps_and_joins_nothing() -> None:
+    assert _groups("If the plant is dry, water it. First, if the lamp is off, switch it on.",
+                   ("study",)) == [["potted_plant_wet"], ["floor_lamp_toggled_on"]]
+    # neither instruction names the other's thing
+    assert _groups("If the shirt is dirty, wash it. If the washing machine is running, switch it off first.",
+                   ("laundry_room",)) == [["shirt_dirty"], ["washing_machine_toggled_on"]]
+
+
 # -- a verbless directive is an instruction to put the thing there ---------------------------------
 
 

@@ -2972,18 +2972,24 @@ def _moves_into(factors: list[Factor], clauses: list[Clause]) -> list[tuple[str,
 
 
 #: Words by which an instruction replaces one given before ("..., the shirt goes on the rack
-#: instead"): the instruction it replaces was given under a factor of the sentence before, so
-#: both are asked in one subtask (`_answers`; "instead" after the instruction is also split off
-#: as an `else` clause, clauses.py)
+#: instead"; "instead" after the instruction is also split off as an `else` clause, clauses.py),
+#: and words by which it prepares one ("If the can's empty, fill it at the sink first"; opening
+#: its clause, "first" orders steps instead: "First, the plant."). The instruction it relates to
+#: was given under a factor of the sentence before, so both are asked in one subtask (`_answers`)
 REPLACING_WORDS = frozenset({"instead"})
+PREPARING_WORDS = frozenset({"first", "beforehand"})
 
 
-def _replaces(sentence: int, clauses: list[Clause]) -> bool:
-    """Whether the sentence's instruction replaces an earlier one (a word of `REPLACING_WORDS`,
-    or an alternative the clause reader split off as an `else` clause: "you put it in the sink
-    instead")."""
-    return any(c.role == "else" or any(w in REPLACING_WORDS for w in re.findall(r"[a-z]+", c.text.lower()))
-               for c in clauses if c.sentence == sentence)
+def _relates(sentence: int, clauses: list[Clause]) -> bool:
+    """Whether the sentence's instruction replaces or prepares an earlier one (`REPLACING_WORDS`,
+    an `else` clause, or `PREPARING_WORDS` after its clause's first word)."""
+    for c in clauses:
+        if c.sentence != sentence:
+            continue
+        words = re.findall(r"[a-z]+", c.text.lower())
+        if c.role == "else" or set(words) & REPLACING_WORDS or set(words[1:]) & PREPARING_WORDS:
+            return True
+    return False
 
 
 def _answers(factors: list[Factor], clauses: list[Clause]) -> list[tuple[str, str]]:
@@ -2998,10 +3004,10 @@ def _answers(factors: list[Factor], clauses: list[Clause]) -> list[tuple[str, st
         # on that thing ("If it is dirty, it goes straight into the washing machine. Be advised:
         # when the machine is already running, the shirt goes into the hamper instead"): where the
         # thing goes depends on both, one subtask, as when one sentence says both
-        # (one of the two named suffices when the instruction replaces one given before: "Should
-        # it be wet, dry it there. Whilst the dryer is running, the shirt goes on the rack
-        # instead" names no dryer in the first instruction)
-        either = _replaces(b.sentence, clauses)
+        # (one of the two named suffices when the instruction replaces or prepares one given
+        # before: "Should it be wet, dry it there. Whilst the dryer is running, the shirt goes on
+        # the rack instead" names no dryer in the first instruction)
+        either = _relates(b.sentence, clauses)
         sent = [a.subject for a in factors if b.sentence >= 1 and a.subject != b.subject
                 and (a.sentence == b.sentence - 1 or any(at == b.sentence - 1 for at, _ in a.places))
                 and ((b.subject in a.roles) + (a.subject in b.roles) >= (1 if either else 2))]
