@@ -86,3 +86,19 @@ def test_a_place_that_may_say_where_a_thing_is_stays_no_instruction() -> None:
     # "on" after a question may answer where the thing is; a verb of its own keeps its thing
     assert _goals("Where is the towel? On the rack.", ("bathroom",)) == set()
     assert _goals("Mug on the desk? Into the kitchen, then wash it.", ("kitchen",)) == set()
+
+
+def test_an_alternative_of_its_own_condition_relates_to_nothing_before() -> None:
+    # "else" with words of its own answers the sentence's own condition; a bare "instead" closing
+    # the instruction replaces one said before
+    from logicenveval.offline.analysis import _relates
+
+    def relates(text: str, rooms: tuple[str, ...]) -> bool:
+        a = analyse(brief(text, rooms), CATALOG)
+        return _relates(max(c.sentence for c in a.clauses), a.clauses)
+
+    assert not relates("Counter dirty? Wipe it with the sponge if the sponge is on the counter, else the dish cloth.",
+                       ("kitchen",))
+    assert not relates("Should the table be sticky, wipe it with the sponge if it is there, otherwise with the cloth.",
+                       ("dining_room",))
+    assert relates("If the dishwasher is running you put it in the sink instead.", ("kitchen",))

@@ -2982,12 +2982,15 @@ PREPARING_WORDS = frozenset({"first", "beforehand"})
 
 def _relates(sentence: int, clauses: list[Clause]) -> bool:
     """Whether the sentence's instruction replaces or prepares an earlier one (`REPLACING_WORDS`,
-    an `else` clause, or `PREPARING_WORDS` after its clause's first word)."""
+    an empty `else` clause, or `PREPARING_WORDS` after its clause's first word)."""
     for c in clauses:
         if c.sentence != sentence:
             continue
         words = re.findall(r"[a-z]+", c.text.lower())
-        if c.role == "else" or set(words) & REPLACING_WORDS or set(words[1:]) & PREPARING_WORDS:
+        # (an `else` clause with no words of its own is "instead" closing the instruction before
+        # it; one with words is the alternative of its own sentence's condition: "wipe w/ sponge
+        # if sponge is on the counter, else dish cloth" replaces nothing said before)
+        if c.role == "else" and not words or set(words) & REPLACING_WORDS or set(words[1:]) & PREPARING_WORDS:
             return True
     return False
 
