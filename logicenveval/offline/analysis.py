@@ -2751,7 +2751,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         factor.context = _consistent(factor.context)
     factors += _alternatives_put_back(factors, clauses)
     factors.sort(key=lambda f: (f.order, _RANK[f.kind], f.id))
-    groups, group_roles = _group(factors, _moves_into(factors, clauses) + _answers(factors))
+    groups, group_roles = _group(factors, _moves_into(factors, clauses) + _answers(factors, clauses))
     covered = set().union(*group_roles) if group_roles else set()
     return TaskAnalysis(sentences, clauses, factors, groups, group_roles, set(lex.roles) - covered)
 
@@ -2963,7 +2963,31 @@ def _moves_into(factors: list[Factor], clauses: list[Clause]) -> list[tuple[str,
     return out
 
 
-def _answers(factors: list[Factor]) -> list[tuple[str, str]]:
+#: Words by which an instruction replaces one given before ("..., the shirt goes on the rack
+#: instead"; "instead" after the instruction is also split off as an `else` clause, clauses.py),
+#: and words by which it prepares one ("If the can's empty, fill it at the sink first"; opening
+#: its clause, "first" orders steps instead: "First, the plant."). The instruction it relates to
+#: was given under a factor of the sentence before, so both are asked in one subtask (`_answers`)
+REPLACING_WORDS = frozenset({"instead"})
+PREPARING_WORDS = frozenset({"first", "beforehand"})
+
+
+def _relates(sentence: int, clauses: list[Clause]) -> bool:
+    """Whether the sentence's instruction replaces or prepares an earlier one (`REPLACING_WORDS`,
+    an empty `else` clause, or `PREPARING_WORDS` after its clause's first word)."""
+    for c in clauses:
+        if c.sentence != sentence:
+            continue
+        words = re.findall(r"[a-z]+", c.text.lower())
+        # (an `else` clause with no words of its own is "instead" closing the instruction before
+        # it; one with words is the alternative of its own sentence's condition: "wipe w/ sponge
+        # if sponge is on the counter, else dish cloth" replaces nothing said before)
+        if c.role == "else" and not words or set(words) & REPLACING_WORDS or set(words[1:]) & PREPARING_WORDS:
+            return True
+    return False
+
+
+def _answers(factors: list[Factor], clauses: list[Clause]) -> list[tuple[str, str]]:
     """(thing, other) for each factor on another object, asked alone in its sentence, whose
     instruction acts on a thing whose place or presence is asked in the sentence just before (not
     a place a thing goes to, whose state was asked there) ("Q: What about a towel in
@@ -2975,9 +2999,13 @@ def _answers(factors: list[Factor]) -> list[tuple[str, str]]:
         # on that thing ("If it is dirty, it goes straight into the washing machine. Be advised:
         # when the machine is already running, the shirt goes into the hamper instead"): where the
         # thing goes depends on both, one subtask, as when one sentence says both
+        # (one of the two named suffices when the instruction replaces or prepares one given
+        # before: "Should it be wet, dry it there. Whilst the dryer is running, the shirt goes on
+        # the rack instead" names no dryer in the first instruction)
+        either = _relates(b.sentence, clauses)
         sent = [a.subject for a in factors if b.sentence >= 1 and a.subject != b.subject
                 and (a.sentence == b.sentence - 1 or any(at == b.sentence - 1 for at, _ in a.places))
-                and b.subject in a.roles and a.subject in b.roles]
+                and ((b.subject in a.roles) + (a.subject in b.roles) >= (1 if either else 2))]
         if sent:
             out.append((sent[-1], b.subject))
             continue

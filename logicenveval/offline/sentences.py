@@ -797,7 +797,8 @@ def unquote(text: str) -> str:
     common word ("the dishwasher's already going": "running", `PREDICATE_STATES`); a table of items and places as its sentences
     (`detable`); a rule written as a record of keyed lines as its conditional (`derecord`); a heading answered by a verb with no subject of its own with the heading as that
     subject (`_SUBJECTLESS`); a chat message's `*`-correction made in the message it corrects
-    (`starred`), a place "to be checked" as one that "may be" (`_TO_BE_CHECKED`), without a chat line's time stamp (`_TIME_STAMP`) and without a reference work's
+    (`starred`), a verbless directive as its imperative ("Into the fridge with it": "Put it into the
+    fridge", `_DIRECTIVE_WITH`, `_DIRECTIVE_AFTER_QUESTION`), a place "to be checked" as one that "may be" (`_TO_BE_CHECKED`), without a chat line's time stamp (`_TIME_STAMP`) and without a reference work's
     citation marks (`_CITATION`)."""
     text = _OCCASION_IF.sub(_occasion_if, text)
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
@@ -818,7 +819,31 @@ def unquote(text: str) -> str:
     plain = _ACTED_STATE.sub(_acted_state, plain)
     plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)
     plain = _KIND_OF.sub(r"\1 ", _STATE_CASE.sub(_state_case, plain))
+    plain = _DIRECTIVE_AFTER_QUESTION.sub(_directive, _DIRECTIVE_WITH.sub(_directive, plain))
     return _SUBJECTLESS.sub(r"\1\2\3the \2 \4", detable(derecord(_STATE_SUBJECT.sub(_state_subject, plain))))
+
+
+#: a verbless directive, a place and the thing sent there ("Into the fridge with it.", "Straight
+#: back on the shelf with them!"), or after a question a place a thing is sent into ("Milk still
+#: out? Straight into the fridge."): an imperative whose verb of putting is elided, read with it
+#: ("Put it into the fridge.") so its thing and place are read as an instruction's goal. A bare
+#: "on"/"in" after a question may answer where a thing is ("Where is the towel? On the rack."),
+#: so after a question only a preposition of motion ("into", "onto") counts
+_DIRECTIVE_WITH = re.compile(
+    r"(?:(?<=^)|(?<=[.!?:;]\s)|(?<=\n))[ \t]*(?P<adv>(?:straight|right|directly|back)\s+)?"
+    r"(?P<place>(?:into|onto|in|on|to)\s+(?:the|a|an|my|our|your|its|their)\s+[A-Za-z][A-Za-z' -]{0,40}?)"
+    r"\s+with\s+(?P<thing>it|them)(?=\s*[.!])", re.I | re.M)
+_DIRECTIVE_AFTER_QUESTION = re.compile(
+    r"(?<=\?)(?P<gap>\s+)(?P<adv>(?:straight|right|directly|back)\s+)?"
+    r"(?P<place>(?:into|onto)\s+(?:the|a|an|my|our|your|its|their)\s+[A-Za-z][A-Za-z' -]{0,40}?)(?=\s*[.!])",
+    re.I)
+
+
+def _directive(m: re.Match[str]) -> str:
+    """"Put it into the fridge" for "Into the fridge with it" (`_DIRECTIVE_WITH`)."""
+    thing = m.groupdict().get("thing") or "it"
+    place = m.group("place")
+    return f"{m.groupdict().get('gap') or ''}Put {thing.lower()} {(m.group('adv') or '').lower()}{place[0].lower()}{place[1:]}"
 
 
 #: "Desk lamp: stays on the desk.", "- Sunscreen - lives in the cabinet", "Washing powder. Stays on
