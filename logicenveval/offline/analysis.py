@@ -274,7 +274,8 @@ _FRONTED_FINDING = re.compile(r"(?:you|we|i)\s+(?:(?:can|will|would|should|also|
                               r"(?:find|spot|see|notice|discover)\b")
 #: a condition that only says its thing is, or is not, there ("if it's there", "if they're still
 #: there", "if it isn't there")
-_THERE = re.compile(r"^\W*(?:it|they) (?:is|are) (?:still )?(?P<not>not )?there\W*$")
+_THERE = re.compile(r"^\W*(?:it|they|(?P<noun>(?:the|a|an|your|my|our|his|her|their)(?: [a-z'-]+){1,3})) (?:is|are) "
+                    r"(?:still )?(?P<not>not )?there\W*$")
 #: a condition that only says its thing appears, or is anywhere at all ("if it turns up", "if they
 #: show up", "if it's anywhere", "if it is here at all"): whether the thing is there at all
 #: ("anywhere else" is a place, `ELSEWHERE`); its subject a pronoun or the thing's noun phrase
@@ -2533,10 +2534,13 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # "If it turns up, put it on the desk", "it'll be on the floor if it's anywhere":
                 # a thing spoken of that may turn up, or be anywhere at all, may be absent
                 facts = [Fact(r, f"exists({r})", "exists") for r in names[:1]]
-            elif role == "condition" and not facts and names and there and not there.group("not"):
+            elif role == "condition" and not facts and names and there and (
+                    not there.group("not") or there.group("noun")):
                 # "Wallet. If it's there, lost property basket": with no place named before to
-                # point to, "it is there" asks whether the thing is there at all
-                facts = [Fact(r, f"exists({r})", "exists") for r in names[:1]]
+                # point to, "it is there" asks whether the thing is there at all; so does "the
+                # mug is not there" with the thing named in the condition itself (a pronoun,
+                # "if it is not there", points back to a place the sentence before may have named)
+                facts = [Fact(r, f"exists({r})", "exists", negated=bool(there.group("not"))) for r in names[:1]]
             elif role == "condition" and names and not any(not f.goal for f in facts) \
                     and _FIND_NAMED.match(low):
                 # "If you find a wallet, put it on the side table", "If you find a credit card
