@@ -191,7 +191,9 @@ def _case(connective: str, subject: str, verb_form: str, state: State, kind: str
     if "{Q}" in template:
         if verb.finite in ("'s",) or subject == "elided":
             return None
-        fill_q = f"{verb.finite} {said} {verb.rest}"
+        # only the first auxiliary goes before the subject: "Hasn't my mug been emptied?"
+        first, _, more = verb.finite.partition(" ")
+        fill_q = f"{first} {said} {more} {verb.rest}".replace("  ", " ")
     else:
         fill_q = ""
     finite = {"'s": "is", "might": "is", "hasn't been": "has", "isn't": "is"}.get(verb.finite, verb.finite)
