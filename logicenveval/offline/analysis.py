@@ -34,6 +34,7 @@ from logicenveval.offline.clauses import (
     NEGATIONS,
     OBJECT_STARTS,
     PLACE_PREPS,
+    PRESENCE_DETERMINERS,
     SOFTENERS,
     UNCERTAIN,
     Piece,
@@ -2506,7 +2507,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             low = expand(said).lower() if role == "condition" else ""
             # "if it's there", "if it turns up", "if it isn't there": a condition that asks only
             # whether its thing is there at all (True: that it is not)
-            present = presence_asked(WORD.findall(low)) if role == "condition" else None
+            low_words = WORD.findall(low)
+            present = presence_asked(low_words) if role == "condition" else None
             if role == "condition" and _anaphoric(said, facts):
                 # (a finding in the room itself, "if you find any in the media room", asks whether
                 # the thing is there at all, whatever the clause before said of it: `_come_upon`)
@@ -2523,12 +2525,15 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # isn't there, nothing to do": after a condition asking whether the thing is there
                 # at all, "there" is that presence, not the place the instruction put it
                 facts = [Fact(r, f"exists({r})", "exists", negated=present) for r in asked]
-            elif role == "condition" and not facts and names and present is False:
+            elif role == "condition" and not facts and names and (
+                    present is False or present is True and low_words[:1] != [] and low_words[0] in PRESENCE_DETERMINERS):
                 # "If it turns up, put it on the desk", "it'll be on the floor if it's anywhere",
                 # "Wallet. If it's there, lost property basket": a thing spoken of that may turn
                 # up, or be there at all, may be absent (with no place named before to point to,
-                # "it is there" asks whether the thing is there at all)
-                facts = [Fact(r, f"exists({r})", "exists") for r in names[:1]]
+                # "it is there" asks whether the thing is there at all); so does "the mug is not
+                # there" with the thing named in the condition itself (a pronoun, "if it is not
+                # there", points back to a place the sentence before may have named)
+                facts = [Fact(r, f"exists({r})", "exists", negated=bool(present)) for r in names[:1]]
             elif role == "condition" and names and not any(not f.goal for f in facts) \
                     and _FIND_NAMED.match(low):
                 # "If you find a wallet, put it on the side table", "If you find a credit card

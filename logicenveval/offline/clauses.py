@@ -253,7 +253,7 @@ APPEARING = frozenset({("turn", "up"), ("turns", "up"), ("turned", "up"), ("show
                        ("showed", "up"), ("is", "found"), ("are", "found"), ("appear",), ("appears",),
                        ("appeared",), ("reappear",), ("reappears",), ("reappeared",)})
 #: a subject's determiners in a presence condition that names its thing ("if your wallet turns up")
-_PRESENCE_DETERMINERS = frozenset({"the", "a", "an", "your", "my", "our", "his", "her", "their", "its"})
+PRESENCE_DETERMINERS = frozenset({"the", "a", "an", "your", "my", "our", "his", "her", "their", "its"})
 #: words a presence condition's verb group may carry that ask nothing more ("if it ever turns up",
 #: "if they're still there", "if it does show up")
 _PRESENCE_FILLERS = frozenset({"ever", "still", "do", "does", "did"})
@@ -273,7 +273,7 @@ def presence_asked(words: list[str]) -> bool | None:
     what one reads as a question of presence the other does too."""
     for n in (0, 1, 2, 3, 4):
         if n == 1 and words[:1] not in (["it"], ["they"]) or n > 1 and (
-                not words or words[0] not in _PRESENCE_DETERMINERS):
+                not words or words[0] not in PRESENCE_DETERMINERS):
             continue
         rest = [w for w in words[n:] if w not in _PRESENCE_FILLERS]
         if tuple(rest) in APPEARING:

@@ -230,6 +230,14 @@ _ITEM_END = re.compile(r"[ \t]*;(?:[ \t]+(?:and|or))?[ \t]*\n(?=[ \t]*(?:\((?:[a
 #: work order's "if found on the chair", a manual's "when left open"): "if it is found ..."
 _ELIDED_SUBJECT = re.compile(
     rf"\b(if|unless|when|whenever|once|while)\s+(?=(?:{'|'.join(sorted(FOUND_PARTICIPLES))})\b)", re.I)
+#: the same before a place ("the towel: if on the floor, pick it up", "grab the sock if still on
+#: the rug"): a condition with no subject and no verb whose predicate is a surface place speaks of the
+#: thing just named, "if it is on the floor"; a place the preposition "in" opens is left alone
+#: ("when in the kitchen, ..." is where the listener is, not the thing), and so are "once" and
+#: "while" (a time: "while on the phone")
+_ELIDED_PLACE = re.compile(
+    r"\b(if|unless|when|whenever)\s+(?=(?:(?:still|already|left|lying)\s+)?(?:on|upon)\s+"
+    r"(?:the|a|an|your|my|our|his|her|their)\s)", re.I)
 #: a condition whose subject pronoun is dropped, as a speaker of a null-subject language drops it
 #: (Spanish, Italian, Portuguese: "si está encendida"; a hasty text: "if is still on, turn it
 #: off", "unless are dry"): "if" or "unless" then a finite "be" that no "there" follows, read with
@@ -473,13 +481,19 @@ _POLITE = re.compile(r"\bbe (?:so )?(?:good|kind)(?: enough to| as to)\s+", re.I
 #: the progressive of opening and closing said as the state it leaves, as learners and translated
 #: texts say it ("When the mouth of the bag is opening, please close it", "if the window is
 #: opening, shut it"): only as a predicate at a clause's end, where a thing's state is asked
-PREDICATE_STATES = {"going": "running", "in operation": "running", "opening": "open", "closing": "closed"}
+PREDICATE_STATES = {"going": "running", "in operation": "running", "opening": "open", "closing": "closed",
+                    # the participle of a verb whose result is a state, said of the thing ("if the
+                    # bowl has been washed" is clean, "if the bucket was emptied" is empty), and a
+                    # verb of the state in progress ("if the towel is still dripping" is wet); only
+                    # as a predicate: "1 washed shirt" describes the thing and asks nothing
+                    "washed": "clean", "rinsed": "clean", "scrubbed": "clean", "emptied": "empty",
+                    "dried": "dry", "dripping": "wet"}
 #: a predicate state's "in" may take an article (`PREDICATE_STATES`)
 _ARTICLE_OPTIONAL = re.compile(r"^in ")
 _IN_ARTICLE = r"in\\s+(?:the\\s+)?"
 _ARTICLE_IN = re.compile(r"in\s+(?:the\s+)?")
 _PREDICATE_STATE = re.compile(
-    rf"((?:\b(?:is|are|was|were|be)|'s|\u2019s)(?:\s+(?:still|already|just|now))*\s+|\b(?:still|already)\s+)"
+    rf"((?:\b(?:is|are|was|were|be|been)|'s|\u2019s)(?:\s+(?:still|already|just|now))*\s+|\b(?:still|already)\s+)"
     rf"({'|'.join(_ARTICLE_OPTIONAL.sub(_IN_ARTICLE, k) for k in PREDICATE_STATES)})"
     r"(?=\s*(?:[,.;:!?)]|$|\s(?:then|and|or|but|so|already|still|now|again)\b))", re.I | re.M)
 
@@ -814,7 +828,7 @@ def unquote(text: str) -> str:
     plain = _unabbreviated(plain)
     plain = _PREDICATE_STATE.sub(lambda m: m.group(1) + PREDICATE_STATES[_ARTICLE_IN.sub("in ", m.group(2).lower())], plain)
     plain = _EMPHATIC_DO.sub("", plain)
-    plain = _ELIDED_END_STATE.sub(r"\1 it is ", _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", plain)))
+    plain = _ELIDED_END_STATE.sub(r"\1 it is ", _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", _ELIDED_PLACE.sub(r"\1 it is ", plain))))
     plain = _DROPPED_SUBJECT.sub(lambda m: f"{m.group(1)} {_DROPPED_PRONOUN[m.group(2).lower()]} ", plain)
     plain = _ACTED_STATE.sub(_acted_state, plain)
     plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)

@@ -1,0 +1,273 @@
+"""How well the offline reader reads a condition in its ordinary grammatical forms (issue 47).
+
+The development sets say each condition in one wording; unseen text says it in any. This
+benchmark composes condition sentences from data tables — a connective (if, when, unless, "X?
+Then ...", "Is X ...? If so ...", ...) x a subject (the noun, a pronoun after an earlier
+mention, an elided subject, a left-dislocated noun) x a verb group (simple, progressive,
+perfect, passive, modal, negated, contracted) x a state (on, off, open, closed, dirty, clean,
+wet, empty, full, on the floor, there or missing) for several catalog kinds and rooms — sets
+each inside a short description with an action clause, and checks that the reader
+(`offline.analysis.analyse`, on the brief the offline model names itself, the entry the model's
+factor reply comes from) asks the condition's factor: one factor whose values are the expected
+fact and its negation. Which branch the action falls under is not checked (the figure is
+whether the condition is read at all, the loss "a value never set" on unseen text).
+
+Combinations that English does not form ("Should the lamp might be on") are left out by the
+tables (`None` cells), so every sentence measured is one a writer could write.
+
+    python benchmarks/condition_forms.py            # the matrix, last line `condition_forms overall=...`
+    python benchmarks/condition_forms.py --why      # and every sentence misread
+    python benchmarks/condition_forms.py --smoke    # a small sample, seconds
+"""
+
+from __future__ import annotations
+
+import argparse
+from collections import defaultdict
+from dataclasses import dataclass
+from typing import Any
+
+from logicenveval.domain.catalog import Catalog, load_catalog
+from logicenveval.offline.analysis import analyse
+from logicenveval.offline.naming import name_objects
+
+
+@dataclass(frozen=True)
+class Verb:
+    """One verb group saying a state: the finite word (for a question or "if it is"), the rest
+    after the subject, the form after an inverted "should" (None: not formed), and whether
+    a subject may be left out before it ("if left open")."""
+
+    finite: str
+    rest: str
+    base: str | None
+    elidable: bool = False
+
+    def clause(self, subject: str) -> str:
+        return f"{subject} {self.finite} {self.rest}".replace(" 's", "'s").strip()
+
+
+@dataclass(frozen=True)
+class State:
+    """A state one kind can be in: the expected fact (`{x}` the kind), the action that follows,
+    and its verb groups by form."""
+
+    name: str
+    fact: str
+    action: str
+    verbs: dict[str, Verb]
+
+
+def _state(name: str, fact: str, action: str, simple: str, *, progressive: str | None = None,
+           participle: str | None = None, negated: tuple[str, str] | None = None) -> State:
+    """The verb groups of one state from its words: `simple` after "is", `progressive` after
+    "is still", `participle` after "has been" / "was" (perfect, passive), `negated` the finite
+    word and rest of a negated group with the same meaning ("isn't", "switched off")."""
+    verbs: dict[str, Verb] = {
+        "simple": Verb("is", simple, f"be {simple}", elidable=True),
+        "contracted": Verb("'s", simple, None),
+        "modal": Verb("might", f"still be {simple}", None),
+    }
+    if progressive:
+        verbs["progressive"] = Verb("is", f"still {progressive}", f"still be {progressive}")
+    if participle:
+        verbs["perfect"] = Verb("has", f"been {participle}", f"have been {participle}")
+        verbs["passive"] = Verb("was", participle, f"be {participle}", elidable=True)
+    if negated:
+        verbs["negated"] = Verb(negated[0], negated[1], None)
+    return State(name, fact, action, verbs)
+
+
+#: the states, each with its expected fact and verb groups
+STATES: dict[str, State] = {s.name: s for s in (
+    _state("on", "state({x}, toggled_on)", "switch it off", "switched on", progressive="running",
+           participle="left on", negated=("isn't", "switched off")),
+    _state("off", "state({x}, toggled_on)", "switch it on", "off", participle="switched off",
+           negated=("isn't", "on")),
+    _state("open", "state({x}, open)", "close it", "open", participle="left open", negated=("isn't", "shut")),
+    _state("closed", "state({x}, open)", "open it", "closed", participle="shut", negated=("isn't", "open")),
+    _state("dirty", "state({x}, dirty)", "wash it", "dirty", participle="left dirty",
+           negated=("hasn't been", "washed")),
+    _state("clean", "state({x}, dirty)", "put it away", "clean", participle="washed", negated=("isn't", "dirty")),
+    _state("wet", "state({x}, wet)", "hang it up to dry", "wet", participle="left wet",
+           progressive="dripping", negated=("isn't", "dry")),
+    _state("empty", "state({x}, filled)", "fill it", "empty", participle="emptied", negated=("isn't", "full")),
+    _state("full", "state({x}, filled)", "empty it", "full", participle="filled up",
+           negated=("hasn't been", "emptied")),
+    _state("on the floor", "on({x}, floor)", "pick it up", "on the floor", progressive="lying on the floor",
+           participle="left on the floor"),
+    _state("missing", "exists({x})", "tell me", "missing", participle="taken", negated=("isn't", "there")),
+)}
+
+#: kinds by state: (catalog kind, the noun used, its room, a possessive or article)
+KINDS: dict[str, tuple[tuple[str, str, str, str], ...]] = {
+    "on": (("table_lamp", "lamp", "living_room", "the"), ("television", "telly", "bedroom", "your"),
+           ("kettle", "kettle", "kitchen", "the")),
+    "off": (("table_lamp", "bedside lamp", "bedroom", "my"), ("television", "tv", "living_room", "the")),
+    "open": (("fridge", "fridge", "kitchen", "the"), ("microwave", "microwave", "kitchen", "our"),
+             ("cabinet", "cupboard", "bathroom", "the")),
+    "closed": (("fridge", "fridge", "kitchen", "the"), ("laptop", "laptop", "office", "my")),
+    "dirty": (("mug", "mug", "kitchen", "my"), ("plate", "plate", "dining_room", "the")),
+    "clean": (("mug", "coffee mug", "office", "the"), ("bowl", "bowl", "kitchen", "your")),
+    "wet": (("towel", "towel", "bathroom", "the"), ("towel", "bath towel", "laundry_room", "my")),
+    "empty": (("bucket", "bucket", "laundry_room", "the"), ("kettle", "kettle", "kitchen", "our")),
+    "full": (("bucket", "pail", "garage", "the"), ("mug", "mug", "living_room", "his")),
+    "on the floor": (("sock", "sock", "bedroom", "a"), ("towel", "towel", "bathroom", "the")),
+    "missing": (("mug", "mug", "kitchen", "the"), ("table_lamp", "lamp", "bedroom", "your")),
+}
+
+#: how the subject of the condition is said: a noun phrase, a pronoun after the thing was named
+#: in the sentence before, nothing (an elided subject after a colon), a noun set before the clause
+SUBJECTS = ("noun", "pronoun", "elided", "dislocated")
+
+#: connectives: a template over {C} (the condition clause), {A} (the action), {Q} (the
+#: question form of the condition), {S} (the clause after an inverted "should"), {F} (the
+#: finite word for an answer, "if it is"); a connective that needs {Q} or {S} is skipped when the
+#: verb group has none
+CONNECTIVES: dict[str, str] = {
+    "if": "If {C}, {A}.",
+    "when": "When {C}, {A}.",
+    "whenever": "Whenever {C}, {A}.",
+    "in case": "In case {C}, {A}.",
+    "should": "Should {S}, {A}.",
+    "unless": "Unless {C}, leave it alone; otherwise {A}.",
+    "otherwise": "If {C}, {A}; otherwise leave it.",
+    "after": "{A} if {C}.",
+    "if not": "Look whether {C}. If not, leave it; if yes, {A}.",
+    "if that's the case": "Maybe {C}. If that's the case, {A}.",
+    "X? Then": "{C}? Then {A}.",
+    "Is X? If so": "{Q}? If so, {A}.",
+    "check whether; if it is": "Check whether {C}; if {P} {F}, {A}.",
+}
+
+#: openings before the condition, one per subject form: the room, and where the subject is a
+#: pronoun or left out, the thing named first
+OPENINGS: dict[str, str] = {
+    "noun": "Please go to the {room}.",
+    "pronoun": "Please go to the {room} and have a look at {det} {noun}.",
+    "elided": "Please go to the {room} and have a look at {det} {noun}:",
+    "dislocated": "Please go to the {room}.",
+}
+
+
+@dataclass(frozen=True)
+class Case:
+    text: str
+    fact: str
+    connective: str
+    subject: str
+    verb: str
+    state: str
+    kind: str
+    room: str
+
+
+def _room_words(room: str) -> str:
+    return room.replace("_", " ")
+
+
+def _case(connective: str, subject: str, verb_form: str, state: State, kind: str, noun: str, room: str,
+          det: str) -> Case | None:
+    """The description for one cell of the matrix, or None where English does not form it."""
+    verb = state.verbs.get(verb_form)
+    if verb is None:
+        return None
+    np = f"{det} {noun}"
+    if subject == "elided" and not verb.elidable:
+        return None
+    if subject == "elided" and connective not in ("if", "when", "whenever", "unless", "otherwise"):
+        return None
+    if det == "a" and subject in ("noun", "dislocated"):
+        np = f"the {noun}"
+    said = {"noun": np, "pronoun": "it", "dislocated": "it", "elided": ""}[subject]
+    cond = verb.clause(said) if subject != "elided" else verb.rest
+    template = CONNECTIVES[connective]
+    if "{S}" in template:
+        if verb.base is None or subject == "elided":
+            return None
+        fill_s = f"{said} {verb.base}"
+    else:
+        fill_s = ""
+    if "{Q}" in template:
+        if verb.finite in ("'s",) or subject == "elided":
+            return None
+        # only the first auxiliary goes before the subject: "Hasn't my mug been emptied?"
+        first, _, more = verb.finite.partition(" ")
+        fill_q = f"{first} {said} {more} {verb.rest}".replace("  ", " ")
+    else:
+        fill_q = ""
+    finite = {"'s": "is", "might": "is", "hasn't been": "has", "isn't": "is"}.get(verb.finite, verb.finite)
+    if verb.finite.startswith(("isn't", "hasn't")):
+        finite = f"{finite}n't" if finite != "is" else "isn't"
+    body = template.format(C=cond, A=state.action, Q=fill_q, S=fill_s, F=finite, P="it")
+    body = body[0].upper() + body[1:]
+    opening = OPENINGS[subject].format(room=_room_words(room), det=det, noun=noun)
+    if subject == "dislocated":
+        body = f"{np[0].upper()}{np[1:]} - {body[0].lower()}{body[1:]}"
+    if subject == "elided":
+        body = body[0].lower() + body[1:]
+    text = f"{opening} {body} Then tell me when you're done."
+    return Case(text, state.fact.format(x=kind), connective, subject, verb_form, state.name, kind, room)
+
+
+def cases() -> list[Case]:
+    """Every sentence of the matrix English forms, in a fixed order."""
+    out: list[Case] = []
+    for name, state in STATES.items():
+        for kind, noun, room, det in KINDS[name]:
+            for connective in CONNECTIVES:
+                for subject in SUBJECTS:
+                    for verb_form in state.verbs:
+                        case = _case(connective, subject, verb_form, state, kind, noun, room, det)
+                        if case is not None:
+                            out.append(case)
+    return out
+
+
+def _brief(text: str, room: str, catalog: Catalog) -> dict[str, Any]:
+    """The brief the offline model builds from its own naming (as tests/reading.py does)."""
+    roles: dict[str, Any] = {}
+    for o in name_objects(text, catalog, rooms=(room,)):
+        roles.setdefault(o["name"], {"category": o["category"], "attributes": o["attributes"]})
+    return {"id": "t", "description": text, "rooms": [room], "roles": roles}
+
+
+def read_right(case: Case, catalog: Catalog) -> bool:
+    """Whether the reader asks the case's fact: a factor with the fact and its negation."""
+    factors = analyse(_brief(case.text, case.room, catalog), catalog).factors
+    return any({case.fact, f"not {case.fact}"} <= set(f.values.values()) for f in factors)
+
+
+DIMENSIONS = ("connective", "subject", "verb", "state")
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--why", action="store_true", help="print every sentence misread")
+    ap.add_argument("--smoke", action="store_true", help="every 25th sentence only (seconds)")
+    args = ap.parse_args()
+    catalog = load_catalog()
+    todo = cases()[::25] if args.smoke else cases()
+    tally: dict[str, dict[str, list[int]]] = {d: defaultdict(lambda: [0, 0]) for d in DIMENSIONS}
+    missed: list[Case] = []
+    for case in todo:
+        ok = read_right(case, catalog)
+        for d in DIMENSIONS:
+            cell = tally[d][getattr(case, d)]
+            cell[0] += ok
+            cell[1] += 1
+        if not ok:
+            missed.append(case)
+    for d in DIMENSIONS:
+        print(f"by {d}:")
+        for value, (good, total) in sorted(tally[d].items(), key=lambda kv: kv[1][0] / kv[1][1]):
+            print(f"  {value:28s} {good:5d}/{total:<5d} {good / total:.3f}")
+    if args.why:
+        for case in missed:
+            print(f"MISSED [{case.connective} | {case.subject} | {case.verb} | {case.state}] {case.fact}: {case.text}")
+    good = len(todo) - len(missed)
+    print(f"condition_forms overall={good / len(todo):.4f} read={good} sentences={len(todo)}")
+
+
+if __name__ == "__main__":
+    main()
