@@ -84,11 +84,14 @@ def adjective_only(word: str) -> bool:
     return set(lemmas) == {"ADJ"} and word in lemmas["ADJ"]
 
 
+#: quantifiers the lemmatiser's dictionary lists as nouns: after a noun one floats off its subject
+#: ("the mugs both go", "the plates each need", "asleep on the couch all day"), never a head
+QUANTIFIERS = frozenset({"all", "both", "each", "none", "many", "some", "any", "neither", "another"})
 #: closed-class words the lemmatiser's dictionary also lists as nouns ("or", a heraldic gold; "i",
-#: the letter): never the head of a noun compound (`compound_head`)
+#: the letter; the quantifiers): never the head of a noun compound (`compound_head`)
 FUNCTION_WORDS = frozenset({"or", "and", "but", "nor", "i", "me", "it", "itself", "them", "themselves", "us",
                             "you", "he", "him", "she", "we", "they", "this", "that", "these", "those", "if",
-                            "as", "than", "who", "which", "what"})
+                            "as", "than", "who", "which", "what"}) | QUANTIFIERS
 
 
 def compound_head(word: str, after_plural: bool) -> bool:

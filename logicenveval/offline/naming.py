@@ -184,6 +184,9 @@ _POSSESSOR = re.compile(r"\b([A-Z][a-z]+)'s\s+[a-z]")
 #: a number as written, and what may end the reading a label and a number make ("bar 1016,")
 _NUMBER = re.compile(r"\d+")
 _READING_END = re.compile(r"\s*(?:[,;.]|\n|$)")
+#: what may stand between the two halves of one word written as two (`_Reader.closed_match`): a
+#: hyphen ("piano-forte") or one space ("tooth brush"), never a line break or other punctuation
+COMPOUND_JOINS = frozenset({"-", " "})
 #: punctuation no name runs across (a hyphen inside a word does not count: "toy-box")
 _BREAK = re.compile(r"[,;:.!?()\u2013\u2014\n]|\s-|-\s")
 
@@ -345,9 +348,25 @@ class _Reader:
         stretch of words without punctuation ("the floor is wet, mop it" names no wet mop)."""
         words, gaps = self.text.words, self.text.gaps
         stretch = next((k for k in range(i + 1, len(words)) if _BREAK.search(gaps[k])), len(words)) - i
-        return next(((n, self.phrases[tuple(words[i:i + n])])
-                     for n in range(min(self.longest, len(words) - i, stretch), 0, -1)
-                     if tuple(words[i:i + n]) in self.phrases), (1, None))
+        found = next(((n, self.phrases[tuple(words[i:i + n])])
+                      for n in range(min(self.longest, len(words) - i, stretch), 0, -1)
+                      if tuple(words[i:i + n]) in self.phrases), (1, None))
+        closed = self.closed_match(i, stretch)
+        return closed if closed is not None and closed[0] > found[0] else found
+
+    def closed_match(self, i: int, stretch: int) -> tuple[int, str] | None:
+        """(length, category) of the longest catalog name starting at word `i` when words `i` and
+        `i + 1` are one word written hyphenated or open (`COMPOUND_JOINS`) where the catalog
+        writes it closed: "the piano-forte" (the pianoforte), "the tooth brush", "the bed-side
+        table" (the bedside table). An English compound is written all three ways; the catalog
+        lists one. Only a longer reading than the words as written give is taken (`match`)."""
+        words, gaps, raw = self.text.words, self.text.gaps, self.text.raw
+        if stretch < 2 or gaps[i + 1] not in COMPOUND_JOINS or not raw[i].isalpha() or not raw[i + 1].isalpha():
+            return None
+        joined = singular(raw[i] + raw[i + 1])
+        return next(((n + 1, self.phrases[(joined, *words[i + 2:i + 1 + n])])
+                     for n in range(min(self.longest, len(words) - i - 1, stretch - 1), 0, -1)
+                     if (joined, *words[i + 2:i + 1 + n]) in self.phrases), None)
 
     def leads_noun(self, i: int, strict: bool = False) -> bool:
         """Whether word `i` stands where a noun phrase starts: after a determiner, a colour or a
