@@ -1374,7 +1374,6 @@ class _Reader:
         # object is ("on", "in"); only a place after it that the verb moves it to ("to") is the goal
         situated = goal and words[k] in PREP_ON | PREP_IN and bool(set(skipped) & SITUATION_PARTICIPLES) \
             and not set(skipped) & MOTION
-        moved = goal
         goal = goal and not situated
         article = determiner(words, m.start)
         # where a thing is kept or lives is a norm `_settle_stated` weighs against the rest of
@@ -1414,7 +1413,7 @@ class _Reader:
             k = target.end
             alternative = k < len(words) and words[k] == "or"
             if situated and not alternative:
-                goal = moved  # the verb's own goal after the object's place ("... to the bookcase")
+                goal = True  # the verb's own goal after the object's place ("... to the bookcase")
             while k < len(words) and words[k] in {"or", "and", "either", "the", "a"}:
                 k += 1
             elided = alternative and self._elided_place(words, mentions, k)
@@ -2526,7 +2525,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # at all, "there" is that presence, not the place the instruction put it
                 facts = [Fact(r, f"exists({r})", "exists", negated=present) for r in asked]
             elif role == "condition" and not facts and names and (
-                    present is False or present is True and low_words[:1] != [] and low_words[0] in PRESENCE_DETERMINERS):
+                    present is False or present is True and bool(set(low_words[:1]) & PRESENCE_DETERMINERS)):
                 # "If it turns up, put it on the desk", "it'll be on the floor if it's anywhere",
                 # "Wallet. If it's there, lost property basket": a thing spoken of that may turn
                 # up, or be there at all, may be absent (with no place named before to point to,
@@ -2651,7 +2650,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # task of one room, being in that room is being there at all
                 f = Fact(f.subject, f"exists({f.subject})", "exists", negated=f.negated)
             if conditional and f.kind == "location" and not f.goal and f.condition == f"on({f.subject}, floor)" \
-                    and _floor_bound(brief, catalog, f.subject):
+                    and _floor_bound(kinds.get(f.subject)):
                 # "in case there's a puddle on the floor": a thing that can be nowhere but on the
                 # floor and is never carried (a puddle, a stain, a rug) is there if it is at all
                 f = Fact(f.subject, f"exists({f.subject})", "exists", negated=f.negated)
@@ -2725,7 +2724,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         elif kind == "attr":
             # a class the text names (`attribute_classes`) is bound by the kind's catalog domain
             # as a stated value is (`_Reader._offered`)
-            cat = catalog.get(str(dict(dict(brief.get("roles") or {}).get(subject) or {}).get("category", "")))
+            cat = kinds.get(subject)
             domain = dict(cat.attributes or {}) if cat is not None else {}
             real = [v for v in e["values"] if v != "other" and (key not in domain or v in domain[key])]
             if not real:
@@ -2822,11 +2821,10 @@ def _alternatives_put_back(factors: list[Factor], clauses: list[Clause]) -> list
     return out
 
 
-def _floor_bound(brief: Mapping[str, Any], catalog: Catalog, role: str) -> bool:
-    """Whether the role's kind can be nowhere but on the floor and is neither carried nor a holder
+def _floor_bound(cat: Category | None) -> bool:
+    """Whether a role's kind can be nowhere but on the floor and is neither carried nor a holder
     (a puddle, a stain, a rug: no furniture, which a location never moves): where it is not on the
     floor, it is not at all."""
-    cat = catalog.get(str(dict(dict(brief.get("roles") or {}).get(role) or {}).get("category", "")))
     return cat is not None and not cat.pickable and set(cat.placement) == {"floor"} and not (
         cat.surface or cat.container)
 

@@ -308,7 +308,7 @@ def _with_aliases(sentences: list[_Sentence]) -> list[_Sentence]:
         words = sent.words
         extra = [Mention(aliases[sent.toks[k].lemma].roles, k, k + 1, "role") for k in range(2, len(words))
                  if sent.toks[k].lemma in aliases and words[k - 1] == "the" and words[k - 2] in FALLBACK_AT
-                 and not any(m.start <= k < m.end for m in sent.mentions)]
+                 and not _named_word(sent.mentions, k)]
         out.append(_Sentence(sent.toks, sorted(sent.mentions + extra, key=lambda m: m.start)) if extra else sent)
     return out
 
@@ -1246,7 +1246,7 @@ def _gapped(sent: _Sentence, clause: Span, ms: list[Mention], after: int, kind: 
         found = _holder_after(sent, ms, j, clause.end)
         subjects = _np_list(sent, ms, i + 1, j)
         if found is not None and subjects and all(w in LIST_GLUE or w in COLOR_WORDS
-                                                  or any(m.start <= k < m.end for m in subjects)
+                                                  or _named_word(subjects, k)
                                                   for k, w in enumerate(words[i + 1:j], i + 1)):
             for m in subjects:
                 for role in _roles(m, sent):
@@ -1869,7 +1869,7 @@ def _verb_gap(words: list[str], ms: list[Mention], i: int, hi: int) -> int | Non
     j = i
     while j < hi and j - i < 4 and words[j].isalpha() and words[j] not in FALLBACK_AT \
             and words[j] not in RESTING_OVER and words[j] not in _GAP_STOPS \
-            and not any(m.start <= j < m.end for m in ms):
+            and not _named_word(ms, j):
         j += 1
     gap = words[i:j]
     if not any(_finite_word(w) for w in gap):
@@ -2092,7 +2092,7 @@ def _fronted(sent: _Sentence, before: _Before, ms: list[Mention], a: int,
     while k < b and (words[k] in ADVERBS or words[k] in NORM_ADVERBS):
         kind = "kept" if words[k] in NORM_ADVERBS else kind
         k += 1
-    if k >= b or not _finite_word(words[k]) or words[k] in _GAP_STOPS or any(m.start <= k < m.end for m in ms):
+    if k >= b or not _finite_word(words[k]) or words[k] in _GAP_STOPS or _named_word(ms, k):
         return []
     kind = "kept" if words[k] in KEEP_VERBS else kind
     things = _np_list(sent, ms, k + 1, b)
@@ -2180,7 +2180,7 @@ def _of_complement(words: list[str], ms: list[Mention], j: int, hi: int) -> int:
         return j
     k = j + 1
     while k < hi and k - j <= 3 and words[k].isalpha() and words[k] not in VERBS and words[k] not in RELATIVE \
-            and not any(m.start <= k < m.end for m in ms):
+            and not _named_word(ms, k):
         k += 1
     return k if k > j + 1 and k < hi and (words[k] in RELATIVE or words[k] in BE) else j
 
@@ -2239,7 +2239,7 @@ def _asked_activity(sent: _Sentence, clause: Span) -> list[tuple[str, str, str, 
     for i in range(clause.start, clause.end):
         w = words[i]
         if not w.endswith("ing") or not verb_form(w) or w in STATIVE | KEEP_VERBS | RESULT | PERCEIVE \
-                or any(m.start <= i < m.end for m in sent.mentions):
+                or _named_word(sent.mentions, i):
             continue
         k = i + 1
         while k < clause.end and (words[k] in _ACTIVITY_PARTICLES or words[k] in ADVERBS):

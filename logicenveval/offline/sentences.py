@@ -551,15 +551,20 @@ def _runs_on(text: str) -> str:
     return _RUN_ON_LINE.sub(r"\1 ", text)
 
 
+def _spoken_mark(m: re.Match[str]) -> str:
+    """The spoken mark a `_DICTATED_MARK` match says, as `DICTATED_MARKS` keys it ("Full  stop")."""
+    return " ".join(m.group(1).lower().split())
+
+
 def _dictated(text: str) -> str:
     """A dictated text's spoken marks as the marks they stand for ("the can is on the bench full
     stop if it's empty fill it" is "the can is on the bench. If it's empty fill it"), when it
     speaks at least two kinds of them, three times or more: "put a comma after the date" or
     "the period after lunch" alone is the text's own word."""
-    spoken = [re.sub(r"\s+", " ", m.group(1).lower()) for m in _DICTATED_MARK.finditer(text)]
+    spoken = [_spoken_mark(m) for m in _DICTATED_MARK.finditer(text)]
     if len(set(spoken)) < 2 or len(spoken) < 3:
         return text
-    out = _DICTATED_MARK.sub(lambda m: DICTATED_MARKS[re.sub(r"\s+", " ", m.group(1).lower())] + " ", text)
+    out = _DICTATED_MARK.sub(lambda m: DICTATED_MARKS[_spoken_mark(m)] + " ", text)
     out = re.sub(r"([.?!;:,])(?:\s*[.,;:])+", r"\1", out)  # "... new paragraph" after a full stop: one mark
     out = re.sub(r"\n[ \t]+", "\n", out)
     return re.sub(r"([.?!]\s+)([a-z])", lambda m: m.group(1) + m.group(2).upper(), out).strip()
