@@ -130,7 +130,8 @@ prints LogCov / SceVR / FauDR for each, then per task:
   sheet, a call-centre agent's script, a scientific paper's Materials and Methods section) and six
   new tasks in rooms none of the sets above use (a vet nurse's SBAR handover, a builder's
   snagging list, an on-call runbook, a mathematician's claim and proof, an ecologist's field
-  record sheet, a Mandarin speaker's note). Fresh (`FRESH`) until measured;
+  record sheet, a Mandarin speaker's note). Fresh (`FRESH`) until measured three times (eleventh
+  session), then a development set;
 - `dev20 reworded` and `dev20 new`: tests/data/reader_dev20/ — the twentieth development set,
   written in the eleventh session beside dev 19 (each in its own family of registers) in family,
   community, leisure and entertainment registers no set used and the English of a Greek speaker:
@@ -138,7 +139,7 @@ prints LogCov / SceVR / FauDR for each, then per task:
   caller's calls, a Christmas round-robin letter) and six new tasks in rooms none of the sets
   above use (a Greek grandfather's note, a Scout badge card, a fan-fiction chapter, a podcast's
   opening housekeeping, a bingo caller's patter, a best man's speech). Fresh (`FRESH`) until
-  measured;
+  measured three times (eleventh session), then a development set;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -170,8 +171,8 @@ was written for (a rule too wide shows as a task of another set falling):
     python benchmarks/reader_generalisation.py --dev-only --json before.json   # on main
     python benchmarks/reader_generalisation.py --dev-only --compare before.json # with the rule
 
-`--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: dev 19
-and dev 20, written in the eleventh session after dev 17 and dev 18 left it), so a tuner's runs never show them; `--dev-only --fresh` keeps them, to measure
+`--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`; dev 19
+and dev 20 left it at the start of the twelfth session), so a tuner's runs never show them; `--dev-only --fresh` keeps them, to measure
 them. `--skip 'dev9 reworded,dev9 new'` leaves any other rows' sets out as well.
 
 `--placements` measures instead the reader's recall of stated placements, without running a
@@ -301,7 +302,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH: frozenset[str] = frozenset({"dev19 reworded", "dev19 new", "dev20 reworded", "dev20 new"})
+FRESH: frozenset[str] = frozenset()
 GENERATOR = "logicenvgen"
 
 
