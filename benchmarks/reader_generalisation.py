@@ -146,9 +146,9 @@ prints LogCov / SceVR / FauDR for each, then per task:
   speaker: one rewording each of 3 built-in descriptions (a tour operator's day itinerary, a
   medicine's patient information leaflet, a primary school's end-of-term report card) and six new
   tasks in rooms none of the sets above use (a swimming coach's session sheet, a walking
-  guidebook's bothy entry, a physiotherapist's home exercise programme, a cover lesson plan for a
-  supply teacher, a Polish agritourism host's note, a golf club's scorecard with local rules).
-  Fresh (`FRESH`) until measured;
+  guidebook's bothy entry, a physiotherapist's home exercise programme, a language lab induction
+  worksheet for Year 7, a Polish agritourism host's note, a golf club's scorecard with local
+  rules). Fresh (`FRESH`) until measured;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms

@@ -49,8 +49,8 @@ letter n-z.
 dev 21 was written in the twelfth session beside dev 22 (each in its own family of registers):
 sport, travel, health and education writing (a swimming coach's session sheet, a golf club's
 scorecard with local rules, a walking guidebook's bothy entry, a tour operator's itinerary, a
-physiotherapist's home exercise programme, a medicine's patient information leaflet, a cover
-lesson plan for a supply teacher, a primary school's end-of-term report card) and the English of
+physiotherapist's home exercise programme, a medicine's patient information leaflet, a language
+lab induction worksheet for Year 7, a primary school's end-of-term report card) and the English of
 a Polish speaker, in room ids beginning with a letter a-m.
 """
 
