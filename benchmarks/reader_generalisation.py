@@ -149,6 +149,14 @@ prints LogCov / SceVR / FauDR for each, then per task:
   guidebook's bothy entry, a physiotherapist's home exercise programme, a language lab induction
   worksheet for Year 7, a Polish agritourism host's note, a golf club's scorecard with local
   rules). Fresh (`FRESH`) until measured;
+- `dev22 reworded` and `dev22 new`: tests/data/reader_dev22/ — the twenty-second development set,
+  written in the twelfth session (beside dev 21, each in its own family of registers) in
+  registers of law, religion, history, the arts and the old-fashioned no set used and the English
+  of a Polish speaker: one rewording each of 3 built-in descriptions (an Act of Parliament, a
+  medieval chronicle's annal, an opera libretto) and six new tasks in rooms none of the sets above
+  use (a mock last will and testament, a monastic rule for a refectory, a wartime public
+  information leaflet, an artist's instruction pieces, a Polish landlady's note, an old-fashioned
+  reading primer). Fresh (`FRESH`) until the coordinator's first measurement;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -165,7 +173,7 @@ like-for-like gap.
 Every run is computed afresh (`fresh=True`: a stored unit is never reused, since the run's
 fingerprint does not cover the reader's code) with the offline model's reply cache off.
 
-    python benchmarks/reader_generalisation.py            # all forty-five rows (~3-6 min on 2 cores)
+    python benchmarks/reader_generalisation.py            # all forty-seven rows (~3-6 min on 2 cores)
     python benchmarks/reader_generalisation.py --smoke    # two tasks per set (~1 min)
     python benchmarks/reader_generalisation.py --why      # and why each task lost environments
     python benchmarks/reader_generalisation.py --dev-only # without the held-out sets (for tuning)
@@ -180,8 +188,8 @@ was written for (a rule too wide shows as a task of another set falling):
     python benchmarks/reader_generalisation.py --dev-only --json before.json   # on main
     python benchmarks/reader_generalisation.py --dev-only --compare before.json # with the rule
 
-`--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: dev 21,
-written in the twelfth session after dev 19 and dev 20 left it at its start), so a tuner's runs
+`--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: dev 21 and
+dev 22, written in the twelfth session after dev 19 and dev 20 left it at its start), so a tuner's runs
 never show them; `--dev-only --fresh` keeps them, to measure them. `--skip 'dev9 reworded,dev9 new'` leaves any other rows' sets out as well.
 
 `--placements` measures instead the reader's recall of stated placements, without running a
@@ -234,7 +242,7 @@ dev5_new=... dev6_reworded=... dev6_new=... dev7_reworded=... dev7_new=... dev8_
 dev8_new=... dev9_reworded=... dev9_new=... dev10_reworded=... dev10_new=... dev11_reworded=...
 dev11_new=... dev12_reworded=... dev12_new=... dev13_reworded=... dev13_new=... dev14_reworded=... dev14_new=...
 dev15_reworded=... dev15_new=... dev16_reworded=... dev16_new=... dev17_reworded=... dev17_new=...
-dev18_reworded=... dev18_new=... dev19_reworded=... dev19_new=... dev20_reworded=... dev20_new=... dev21_reworded=... dev21_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
+dev18_reworded=... dev18_new=... dev19_reworded=... dev19_new=... dev20_reworded=... dev20_new=... dev21_reworded=... dev21_new=... dev22_reworded=... dev22_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
 rows only).
 """
 
@@ -281,6 +289,7 @@ DEV18 = ROOT / "tests" / "data" / "reader_dev18"
 DEV19 = ROOT / "tests" / "data" / "reader_dev19"
 DEV20 = ROOT / "tests" / "data" / "reader_dev20"
 DEV21 = ROOT / "tests" / "data" / "reader_dev21"
+DEV22 = ROOT / "tests" / "data" / "reader_dev22"
 HOLDOUT2 = ROOT / "tests" / "data" / "reader_holdout2"
 #: (row name, tasks folder; None = the built-in tasks)
 SETS: tuple[tuple[str, Path | None], ...] = (
@@ -305,6 +314,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
     ("dev19 reworded", DEV19 / "tasks_reworded"), ("dev19 new", DEV19 / "tasks_new"),
     ("dev20 reworded", DEV20 / "tasks_reworded"), ("dev20 new", DEV20 / "tasks_new"),
     ("dev21 reworded", DEV21 / "tasks_reworded"), ("dev21 new", DEV21 / "tasks_new"),
+    ("dev22 reworded", DEV22 / "tasks_reworded"), ("dev22 new", DEV22 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
     ("held-out2 reworded", HOLDOUT2 / "tasks_reworded"), ("held-out2 new", HOLDOUT2 / "tasks_new"),
 )
@@ -313,7 +323,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH: frozenset[str] = frozenset({"dev21 reworded", "dev21 new"})
+FRESH: frozenset[str] = frozenset({"dev21 reworded", "dev21 new", "dev22 reworded", "dev22 new"})
 GENERATOR = "logicenvgen"
 
 
