@@ -1,0 +1,102 @@
+"""Reader rules from dev 19 and dev 20's losses other than naming (twelfth session, issue 47).
+
+Each rule reads a structure of English, not a phrase of the sets: every test uses sentences
+written for this file, in at least two registers, and near misses the rule must not misread.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+
+from logicenveval.domain.catalog import load_catalog
+from logicenveval.offline.analysis import analyse
+from logicenveval.offline.placement import described_placements
+
+CATALOG = load_catalog()
+
+
+def brief(description: str, roles: dict[str, str], rooms: tuple[str, ...] = ("living_room",)) -> dict[str, Any]:
+    return {"id": "t", "description": description, "rooms": list(rooms),
+            "roles": {name: {"category": cat, "attributes": {}} for name, cat in roles.items()}}
+
+
+def asked(description: str, roles: dict[str, str], rooms: tuple[str, ...] = ("living_room",)) -> set[str]:
+    """Every condition a factor of the reading may take."""
+    return {v for f in analyse(brief(description, roles, rooms), CATALOG).factors for v in f.values.values()}
+
+
+def groups(description: str, roles: dict[str, str], rooms: tuple[str, ...] = ("living_room",)) -> list[set[str]]:
+    """The reading's subtasks, as the sets of their factors' subjects."""
+    a = analyse(brief(description, roles, rooms), CATALOG)
+    by_id = {f.id: f.subject for f in a.factors}
+    return [{by_id[i] for i in g} for g in a.groups]
+
+
+def placed(description: str, roles: dict[str, str], rooms: tuple[str, ...] = ("living_room",)) -> list[str]:
+    return described_placements(brief(description, roles, rooms), CATALOG)
+
+
+LOUNGE = {"remote": "remote_control", "tv_stand": "tv_stand", "keys": "key", "drawer": "drawer",
+          "mug": "mug", "desk": "desk", "jacket": "jacket", "sofa": "sofa", "hamper": "hamper",
+          "scarf": "scarf", "coat_rack": "coat_rack", "floor_lamp": "floor_lamp"}
+
+
+# ----- a question in quotation marks ------------------------------------------------------------
+
+@pytest.mark.parametrize("text", [
+    # a call-centre script
+    'Ask: "Is the kettle on the counter?" If not, skip the tea. Either way, say goodbye.',
+    # a story's dialogue
+    'Gran looked up. "Is the kettle on the counter?" Tom nodded, so she said: "Then fill it at the sink."',
+    # the same question unquoted reads the same
+    "Ask: Is the kettle on the counter? If not, skip the tea. Either way, say goodbye.",
+])
+def test_a_quoted_question_asks_about_the_scene(text: str) -> None:
+    got = asked(text, {"kettle": "kettle", "counter": "kitchen_counter", "sink": "sink"}, ("kitchen",))
+    assert {"on(kettle, counter)", "not on(kettle, counter)"} <= got, got
+
+
+def test_a_quoted_statement_ends_no_sentence_of_its_own() -> None:
+    # near miss: a quoted statement's full stop before narration ('"The pot." She pointed at it')
+    # keeps the narration with it, so "it" in the next sentence is still the pot
+    text = ('"The pot." She pointed her pen at the iron pot, which sat on the stool. "Look inside it. Dirty? '
+            'Into the sink with it."')
+    got = asked(text, {"pot": "pot", "stool": "stool", "sink": "sink", "pen": "pen"}, ("kitchen",))
+    assert "state(pot, dirty)" in got and "state(pen, dirty)" not in got, got
+
+
+def test_a_quoted_question_groups_with_what_its_answer_asks() -> None:
+    # a call script: the kettle's place and its water are asked in one subtask
+    text = ('Ask: "Is the kettle on the counter?" NO: skip the tea. YES: ask: "Is there any water in it?" '
+            "If it's empty, fill it at the sink first. Then switch it on.")
+    got = groups(text, {"kettle": "kettle", "counter": "kitchen_counter", "sink": "sink"}, ("kitchen",))
+    assert {"kettle"} in got and len(got) == 1, got
+
+
+# ----- a modal of doubt with its subject dropped after a topic -----------------------------------
+
+BATH = {"toothbrush": "toothbrush", "vanity": "bathroom_vanity", "trash_can": "trash_can", "kettle": "kettle",
+        "sink": "sink", "counter": "kitchen_counter"}
+
+
+@pytest.mark.parametrize(("text", "fact", "rooms"), [
+    # a data sheet's item
+    ("Toothbrush (spare). May have fallen on the floor. If so, put it back on the vanity.",
+     "on(toothbrush, floor)", ("bathroom",)),
+    # a hurried text with a colon
+    ("kettle: might be empty. if so fill it at the sink", "state(kettle, filled)", ("kitchen",)),
+    # a to-do list line
+    ("Toothbrush - could have been knocked onto the floor. If so, bin it.", "on(toothbrush, floor)",
+     ("bathroom",)),
+])
+def test_a_doubt_with_no_subject_after_a_topic_is_asked_of_the_topic(text: str, fact: str,
+                                                                      rooms: tuple[str, ...]) -> None:
+    assert {fact, f"not {fact}"} <= asked(text, BATH, rooms)
+
+
+def test_a_request_opening_with_could_keeps_its_subject() -> None:
+    # near miss: "Could you ..." asks the reader to act; it is no doubt about the topic
+    got = asked("Kettle. Could you fill it at the sink? Then put it on the counter.", BATH, ("kitchen",))
+    assert "state(kettle, filled)" not in got and "not state(kettle, filled)" not in got, got
