@@ -75,6 +75,30 @@ def test_a_quoted_question_groups_with_what_its_answer_asks() -> None:
     assert {"kettle"} in got and len(got) == 1, got
 
 
+# ----- an object "it" of a placing verb after a topic ---------------------------------------------
+
+@pytest.mark.parametrize("text", [
+    # a best man's speech reading out a message
+    "My jacket. I left it on the sofa. If it's dirty, put it in the hamper.",
+    # a note with a heading and a colon
+    "Jacket: I left it on the sofa. If it's dirty, put it in the hamper.",
+    # an email with a dash
+    "About the jacket - we dropped it on the sofa. If it's dirty, put it in the hamper.",
+])
+def test_it_after_a_topic_is_the_topic_a_placing_verb_placed(text: str) -> None:
+    assert "on(jacket, sofa)" in placed(text, LOUNGE)
+
+
+@pytest.mark.parametrize("text", [
+    # near misses: a condition, a doubt, and a machine left running place nothing
+    "My jacket. If I left it on the sofa, put it in the hamper.",
+    "My jacket. Maybe I left it on the sofa. If it's dirty, put it in the hamper.",
+    "The floor lamp. I left it on. Switch it off.",
+])
+def test_it_left_under_a_condition_or_a_doubt_is_no_placement(text: str) -> None:
+    assert not any(f.startswith("on(jacket") or f.startswith("on(floor_lamp") for f in placed(text, LOUNGE))
+
+
 # ----- a modal of doubt with its subject dropped after a topic -----------------------------------
 
 BATH = {"toothbrush": "toothbrush", "vanity": "bathroom_vanity", "trash_can": "trash_can", "kettle": "kettle",
@@ -100,3 +124,28 @@ def test_a_request_opening_with_could_keeps_its_subject() -> None:
     # near miss: "Could you ..." asks the reader to act; it is no doubt about the topic
     got = asked("Kettle. Could you fill it at the sink? Then put it on the counter.", BATH, ("kitchen",))
     assert "state(kettle, filled)" not in got and "not state(kettle, filled)" not in got, got
+
+
+# ----- a relative "where" after a room -----------------------------------------------------------
+
+STUDY = {"laptop": "laptop", "desk": "desk", "office_chair": "office_chair", "mug": "mug"}
+FLAT = ("living_room", "bedroom", "study")
+
+
+@pytest.mark.parametrize("text", [
+    # a square-dance caller's call
+    "Sashay to the study, where in the study the laptop belongs on the desk: if it's on the office chair, "
+    "put it on the desk!",
+    # an estate agent's description
+    "The hall leads on to the study, where a desk stands under the window. Put the laptop on the desk.",
+    # a plain instruction
+    "Take the mug to the study, where it belongs on the desk.",
+])
+def test_a_relative_where_after_a_room_frames_what_it_names(text: str) -> None:
+    assert "in_room(desk, study)" in placed(text, STUDY, FLAT)
+
+
+def test_a_room_after_the_relative_ends_the_frame() -> None:
+    # near miss: a second, other room named in the relative frames what follows it instead
+    text = "Go to the study, where the laptop is; then in the bedroom put the mug on the desk."
+    assert "in_room(desk, study)" not in placed(text, STUDY, FLAT)
