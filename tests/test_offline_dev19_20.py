@@ -43,6 +43,34 @@ LOUNGE = {"remote": "remote_control", "tv_stand": "tv_stand", "keys": "key", "dr
           "scarf": "scarf", "coat_rack": "coat_rack", "floor_lamp": "floor_lamp"}
 
 
+# ----- an aside between a subject and its predicate ---------------------------------------------
+
+@pytest.mark.parametrize(("text", "fact"), [
+    # a family letter
+    ("The remote, as ever, belongs on the TV stand, so if it is lying anywhere else, take it back there.",
+     "on(remote, tv_stand)"),
+    # a colleague's handover note
+    ("The keys, as far as I know, live in the drawer. If they are anywhere else, put them back in it.",
+     "inside(keys, drawer)"),
+    # a terse memo
+    ("Mug, as usual, belongs on the desk; if it's somewhere else, return it.", "on(mug, desk)"),
+])
+def test_an_aside_after_the_subject_leaves_its_place_read(text: str, fact: str) -> None:
+    got = asked(text, LOUNGE)
+    assert {fact, f"not {fact}"} <= got, got
+
+
+@pytest.mark.parametrize("text", [
+    # near misses: an aside that names a place or lists things is read as it stands
+    "The mug, on the desk, is dirty. If it is dirty, wash it.",
+    "The mug, the remote and the keys are on the desk. If the mug is dirty, wash it.",
+])
+def test_an_aside_naming_a_place_or_a_thing_is_no_aside(text: str) -> None:
+    got = asked(text, LOUNGE)
+    assert "state(mug, dirty)" in got, got
+    assert not any(c.startswith(("on(remote", "on(keys", "inside(keys")) for c in got), got
+
+
 # ----- a question in quotation marks ------------------------------------------------------------
 
 @pytest.mark.parametrize("text", [
@@ -124,6 +152,69 @@ def test_a_request_opening_with_could_keeps_its_subject() -> None:
     # near miss: "Could you ..." asks the reader to act; it is no doubt about the topic
     got = asked("Kettle. Could you fill it at the sink? Then put it on the counter.", BATH, ("kitchen",))
     assert "state(kettle, filled)" not in got and "not state(kettle, filled)" not in got, got
+
+
+# ----- "put it away": where the thing belongs ----------------------------------------------------
+
+CLOSET = {"medicine": "medicine_bottle", "vanity": "bathroom_vanity", "medicine_cabinet": "medicine_cabinet",
+          "mug": "mug", "cupboard": "cabinet", "desk": "desk"}
+
+
+@pytest.mark.parametrize(("text", "goal", "rooms"), [
+    # a house rule sheet
+    ("The medicine bottle belongs in the medicine cabinet. If it is standing on the vanity, put it away.",
+     "inside(medicine, medicine_cabinet)", ("bathroom",)),
+    # an office note: a home, then "tidy ... away"
+    ("The mug lives in the cupboard. If it's on the desk, tidy the mug away.", "inside(mug, cupboard)",
+     ("office",)),
+])
+def test_put_away_sends_a_thing_where_it_belongs(text: str, goal: str, rooms: tuple[str, ...]) -> None:
+    a = analyse(brief(text, CLOSET, rooms), CATALOG)
+    goals = {f.condition for c in a.clauses if c.role == "consequence" for f in c.facts if f.goal}
+    assert goal in goals, goals
+
+
+def test_put_away_groups_the_container_asked_after_it() -> None:
+    # the cabinet's door is asked for the bottle's move into it: one subtask
+    text = ("The medicine bottle belongs in the medicine cabinet. If it is standing on the vanity, put it away. "
+            "The medicine cabinet may be open or shut; either way, make sure it ends up closed.")
+    got = groups(text, CLOSET, ("bathroom",))
+    assert {"medicine", "medicine_cabinet"} in got, got
+
+
+def test_throw_away_sends_nothing_where_it_belongs() -> None:
+    # near miss: "throw it away" is no "put it away"
+    text = "The mug belongs in the cupboard. If it is chipped, throw it away."
+    a = analyse(brief(text, CLOSET, ("kitchen",)), CATALOG)
+    goals = {f.condition for c in a.clauses[1:] for f in c.facts if f.goal}
+    assert "inside(mug, cupboard)" not in goals, goals
+
+
+# ----- a shortened name before a synonym of another kind -----------------------------------------
+
+@pytest.mark.parametrize("text", [
+    # a methods section in the passive
+    "The towel on the drying rack was checked. A dry towel was taken to the utility shelf; a wet towel was "
+    "left on the rack.",
+    # a chatty note
+    "Have a look at the towel on the drying rack. Dry? Pop it on the utility shelf. Still wet? Leave it on the "
+    "rack.",
+])
+def test_a_word_of_a_things_own_name_means_that_thing(text: str) -> None:
+    # "rack" shortens "drying rack", not the utility shelf (whose kind is also called "storage rack")
+    got = asked(text, {"towel": "towel", "drying_rack": "drying_rack", "shelf": "utility_shelf"}, ("laundry_room",))
+    assert "on(towel, drying_rack)" in got and "on(towel, shelf)" not in got, got
+
+
+def test_a_synonym_alone_still_names_its_kind() -> None:
+    # near miss: the synonym said in full ("storage rack"), or "rack" with no thing named so, is the shelf
+    roles = {"towel": "towel", "drying_rack": "drying_rack", "shelf": "utility_shelf"}
+    text = "If the towel is on the drying rack and it is dry, put it on the storage rack."
+    a = analyse(brief(text, roles, ("laundry_room",)), CATALOG)
+    assert "on(towel, shelf)" in {f.condition for c in a.clauses for f in c.facts if f.goal}
+    got = asked("If the towel is dry, put it on the utility shelf. Wet? It stays on the rack.",
+                {"towel": "towel", "shelf": "utility_shelf"}, ("laundry_room",))
+    assert "state(towel, wet)" in got, got
 
 
 # ----- a relative "where" after a room -----------------------------------------------------------

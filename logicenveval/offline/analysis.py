@@ -139,6 +139,12 @@ HOMES = frozenset({"kept", "lives", "live",
 #: the words as `tokens` gives them: the noun lemma of a verb form ("lives" -> "life")
 HOMES |= frozenset(singular(w) for w in HOMES)
 DESCRIPTIVE |= frozenset(singular(w) for w in HOMES)
+#: the verbs that put a thing away where it belongs ("put it away", "tidy the mug away",
+#: `_Reader._back_home`); "throw it away", "give it away" send it nowhere it belongs
+PUT_AWAY = frozenset({"put", "tidy", "pack", "store", "clear"})
+#: at most how many words an aside between a subject and its predicate runs to ("as ever",
+#: "as far as I know", `_Reader._aside_end`)
+ASIDE_WORDS = 5
 #: prepositions of direction: after one, a participle of the perfect that is also a state word
 #: ("has blown onto", "have smashed into") says where the thing went, not its state ("the fuse
 #: has blown", "a smashed cup"); "when it is running, into the hamper" keeps its state
@@ -675,8 +681,16 @@ class _Reader:
         and a red mug), means every candidate."""
         if m.kind != "role" or len(m.roles) < 2 or _quantified(words, m.start) or m.end - 1 in self.plural_at:
             return m
-        known = [r for r in self.recent if r in m.roles]
+        # "the drying rack ... the utility shelf ... left on the rack": a word of a thing's own
+        # name shortens that name, before a word only a synonym of another's kind has ("storage rack")
+        own = [r for r in m.roles if self._own_name(r, words[m.end - 1])]
+        known = [r for r in self.recent if r in (own if 0 < len(own) < len(m.roles) else m.roles)]
         return Mention((known[-1],), m.start, m.end, m.kind) if known else m
+
+    def _own_name(self, role: str, word: str) -> bool:
+        """Whether `word` (a noun of a mention) is a word of the role's name or of its kind's."""
+        names = {role, str(self.lex.roles.get(role, {}).get("category") or "")}
+        return any(singular(word) in n.split("_") or word in n.split("_") for n in names)
 
     def _opener(self, before: list[str]) -> str | None:
         """The furniture piece last named (in the clause, else before it) whose kind opens and
@@ -1061,14 +1075,25 @@ class _Reader:
         "your doll sleeps on the bed. Put her there")."""
         there = [k for k in range(1, len(words)) if words[k] == "there" and any(
             m.end == k and m.kind == "pronoun" for m in mentions)]
-        if "back" not in words and not there or any(f.kind == "location" for f in facts) or not imperative(words):
+        # "put it away", "tidy the mug away": a verb of putting away sends the thing where it
+        # belongs, as "back" does ("throw it away" sends it nowhere it belongs)
+        away = [k for k in range(2, len(words)) if words[k] == "away" and any(
+            m.end == k and m.kind in ("pronoun", "role") and m.start > 0 and (
+                words[m.start - 1] in PUT_AWAY or m.start > 1 and words[m.start - 2] in PUT_AWAY)
+            for m in mentions)]
+        if "back" not in words and not there and not away or any(f.kind == "location" for f in facts) \
+                or not imperative(words):
             return []
-        k = words.index("back") if "back" in words else there[0]
+        k = words.index("back") if "back" in words else there[0] if there else away[0]
         if any(m.kind in ("role", "room", "floor") and m.start > k for m in mentions):
             return []
-        moved = [r for m in mentions if m.kind == "pronoun" and m.end <= k for r in m.roles]
-        return [replace(self.homes[r], goal=True, negated=False, definite=False, home=False, modifier=False)
-                for r in dict.fromkeys(moved) if r in self.homes]
+        kinds = ("pronoun", "role") if away and k == away[0] else ("pronoun",)
+        moved = [r for m in mentions if m.kind in kinds and m.end <= k for r in m.roles]
+        # (where it belongs, said as a goal: "The bottle belongs in the cabinet. ... put it away")
+        belongs = {self.last_goal.subject: self.last_goal} if away and self.last_goal is not None else {}
+        return [replace(self.homes.get(r) or belongs[r], goal=True, negated=False, definite=False, home=False,
+                        modifier=False)
+                for r in dict.fromkeys(moved) if r in self.homes or r in belongs]
 
     def _holds(self, f: Fact) -> bool:
         """A thing on or in a role that cannot hold it (a sofa in a toy box, a phone on a book:
@@ -1335,7 +1360,7 @@ class _Reader:
         if idx + 1 < len(mentions) and mentions[idx + 1].kind in ("role", "pronoun") and _joined(
                 words, m, mentions[idx + 1], self.commas):
             return []  # the last item of a list carries the location
-        k = m.end
+        k = self._aside_end(words, mentions, m.end)
         skipped: list[str] = []
         # "keeps ending up on", "tends to end up on", "usually gets left on": the habitual form's
         # words lead to the place, and its event verb moves nothing (`sentences.habitual`)
@@ -1418,6 +1443,19 @@ class _Reader:
                 k += 1
             elided = alternative and self._elided_place(words, mentions, k)
         return out
+
+    def _aside_end(self, words: list[str], mentions: list[Mention], k: int) -> int:
+        """Where the predicate goes on after a short aside set off by commas right after the
+        subject ("The remote, as ever, belongs on the stand", "the key, I think, is in the
+        drawer"): the aside says nothing of the thing, and its place is read after it. An aside
+        naming a thing or a place ("the mug, on the desk, ...", "the mug, the plate ...") is none."""
+        if k not in self.commas:
+            return k
+        end = next((j for j in sorted(self.commas) if k < j <= k + ASIDE_WORDS), None)
+        if end is None or any(k <= x.start < end for x in mentions) or set(words[k:end]) & (
+                PREP_ON | PREP_IN | {"to", "from", "and", "or"}):
+            return k
+        return end
 
     def _elided_place(self, words: list[str], mentions: list[Mention], k: int) -> bool:
         """After "on the office chair or", a place with no preposition of its own ("the floor")
