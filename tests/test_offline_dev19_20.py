@@ -217,6 +217,50 @@ def test_a_synonym_alone_still_names_its_kind() -> None:
     assert "state(towel, wet)" in got, got
 
 
+# ----- labelled answers to a question ------------------------------------------------------------
+
+DESK = {"lamp": "floor_lamp", "mug": "mug", "sink": "sink", "desk": "desk", "bread": "bread",
+        "counter": "kitchen_counter", "toaster": "toaster", "plate": "plate"}
+
+
+def contexts(description: str, roles: dict[str, str], rooms: tuple[str, ...]) -> dict[str, list[tuple[str, frozenset[str]]]]:
+    return {f.id: list(f.context) for f in analyse(brief(description, roles, rooms), CATALOG).factors}
+
+
+@pytest.mark.parametrize(("text", "rooms", "question", "asked_under", "answer"), [
+    # a flowchart written out with arrows
+    ("Q: Is the mug on the desk?\nYes -> take it to the sink, and if the lamp is on, switch it off.\n"
+     "No -> nothing to do.", ("office",), "mug_on_desk", "lamp_toggled_on", "yes"),
+    # a call script with quoted speech
+    ('Ask: "Is there bread on the counter?"\n> YES: "Great. Put it on the plate. Is the toaster on? If not, '
+     'switch it on."\n> NO: "No toast today, then."', ("kitchen",), "bread_on_counter", "toaster_toggled_on", "yes"),
+    # an FAQ: the answer under "No"
+    ("Is the mug on the desk?\nNo: then check the lamp; if it is on, switch it off.\nYes: take it to the sink.",
+     ("office",), "mug_on_desk", "lamp_toggled_on", "no"),
+])
+def test_a_factor_in_a_labelled_answer_is_asked_under_it(text: str, rooms: tuple[str, ...], question: str,
+                                                         asked_under: str, answer: str) -> None:
+    got = contexts(text, DESK, rooms)
+    assert (question, frozenset({answer})) in got.get(asked_under, []), got
+
+
+@pytest.mark.parametrize("text", [
+    # near misses: a step on a line of its own after the answers, and a "No:" that answers nothing
+    "Is the mug on the desk?\nYES: take it to the sink.\nNO: leave it.\nIf the lamp is on, switch it off.",
+    "No: I never said that. If the lamp is on, switch it off. Is the mug on the desk? Then take it to the sink.",
+])
+def test_a_step_outside_the_answer_is_asked_on_its_own(text: str) -> None:
+    got = contexts(text, DESK, ("office",))
+    assert got.get("lamp_toggled_on") == [], got
+
+
+def test_an_answers_gloss_says_the_thing_may_be_missing() -> None:
+    # a call script: "NO (it is elsewhere, or there is none)" asks whether there is any at all
+    text = ('Ask: "Is there a loaf of bread on the counter?"\n> YES: put it on the plate.\n'
+            "> NO (the bread is somewhere else, or we are out of bread): skip the toast.")
+    assert {"exists(bread)", "not exists(bread)", "on(bread, counter)"} <= asked(text, DESK, ("kitchen",))
+
+
 # ----- a relative "where" after a room -----------------------------------------------------------
 
 STUDY = {"laptop": "laptop", "desk": "desk", "office_chair": "office_chair", "mug": "mug"}

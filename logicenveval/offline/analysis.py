@@ -2454,7 +2454,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     cut = [split_clauses(sent) for sent in sentences]
     bullets = _bullet_items(any_at(str(brief["description"])), found_in_text)
     speakers = _speakers(reader, unquote(str(brief["description"])))
+    lines = _lines(any_at(unquote(str(brief["description"]))))
+    #: per grammatical sentence, (line, paragraph) of the text it starts on (`_answered`)
+    line_of: dict[int, tuple[int, int]] = {}
     for si, sent in enumerate(sentences):
+        line_of.setdefault(grammatical, lines[si] if si < len(lines) else (-1, -1))
         pieces = cut[si]
         # the piece after each (a heading's answer may open the next part: "On the floor: into ...")
         after = [p.text for p in pieces[1:]] + [cut[si + 1][0].text if si + 1 < len(cut) and cut[si + 1] and not
@@ -2650,7 +2654,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             slot0, neg0, key0 = context[-1]
             context[-1] = (slot0, not neg0, key0)
         # "put it in the fridge - the fridge door may already be open": an uncertain remark
-        conditional = cl.role in ("condition", "uncertain") or (
+        # ("NO (it is somewhere else, or we are out of it):": an answer's gloss says what it covers)
+        conditional = cl.role in ("condition", "uncertain") or _label(cl) is not None or (
             cl.role == "consequence" and bool(uncertain_words(re.findall(r"[a-z]+", cl.text.lower()))))
         added: list[tuple[tuple[str, str, str], bool, str]] = []
         if cl.role == "condition":
@@ -2734,7 +2739,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     # (where a thing is kept is no place it is expected now: "Use the cloth if we still have one.
     # The cloth lives in the vanity." still asks whether there is one)
     subjects_with_location = {s for (s, k, _), e in found.items() if k == "location" and not e.get("home")}
-    absence_stated = {f.subject for cl in clauses if cl.role in ("condition", "uncertain") for f in cl.facts
+    absence_stated = {f.subject for cl in clauses if cl.role in ("condition", "uncertain") or _label(cl) is not None
+                      for f in cl.facts
                       if f.kind == "exists" and not f.goal and (
                           f.negated and cl.role == "uncertain"
                           # "if it is elsewhere, or we have none": two alternatives, not "no plate on the counter"
@@ -2791,11 +2797,86 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             if dep is not None and dep is not factor:
                 factor.context.append((dep.id, _allowed(dep, negated, value)))
         factor.context = _consistent(factor.context)
+    _answered(factors, clauses, line_of)
     factors += _alternatives_put_back(factors, clauses)
     factors.sort(key=lambda f: (f.order, _RANK[f.kind], f.id))
     groups, group_roles = _group(factors, _moves_into(factors, clauses) + _answers(factors, clauses))
     covered = set().union(*group_roles) if group_roles else set()
     return TaskAnalysis(sentences, clauses, factors, groups, group_roles, set(lex.roles) - covered)
+
+
+#: a label answering the question before it ("> YES: ...", "NO (or not sure): ...", "Yes ->"): what
+#: follows, up to the next label, question or capitalised heading, holds under that answer
+_ANSWER_LABEL = re.compile(r"^\W*(yes|no)\b\s*(?:\([^()]*\))?\W*$", re.I)
+
+
+def _label(clause: Clause) -> str | None:
+    """The answer ("yes", "no") a clause is the label of, if it is one (`_ANSWER_LABEL`): a bare
+    "yes"/"no" (a bracket may gloss it) before a colon, a dash or an arrow."""
+    m = _ANSWER_LABEL.match(clause.text)
+    if m is None or not (clause.cue in (":", "-", "->") or re.search(r"[:>-]\s*$", clause.text)):
+        return None
+    return m.group(1).lower()
+
+
+def _asks(clause: Clause) -> bool:
+    """Whether a clause is a question about the scene (a condition asked with "?")."""
+    return clause.cue == "?" or clause.text.rstrip().rstrip('"\u201d').rstrip().endswith("?")
+
+
+def _lines(text: str) -> list[tuple[int, int]]:
+    """(line, paragraph) of the text each of its sentences (`split_sentences`) starts on, found by
+    its first words in order (a sentence not found verbatim, a line joined to the next, takes the
+    place of the one before)."""
+    out: list[tuple[int, int]] = []
+    pos = 0
+    for sent in split_sentences(text):
+        k = text.find(sent[:24], pos)
+        pos = k if k >= 0 else pos
+        out.append((text.count("\n", 0, pos), len(re.findall(r"\n[ \t]*\n", text[:pos]))))
+    return out
+
+
+def _answered(factors: list[Factor], clauses: list[Clause], line_of: Mapping[int, tuple[int, int]]) -> None:
+    """A call script's, flowchart's or FAQ's labelled answers ("Ask: 'Is there bread on the
+    counter?' > YES: put it on the plate, and switch the toaster on if it is off. > NO: skip the
+    toast."): a factor first raised after a "yes" or "no" label, in the rest of its line (or, for
+    a label alone on its line, of its paragraph) and before the next label, question or capitalised
+    heading, is asked only under that answer to the question before the label (the yes/no factors
+    the question raised), and so in its subtask. A line after the answer's own is a step of its own
+    ("NO: leave it. / If the lamp is on, switch it off.")."""
+    answering: set[int] = set()  # clauses within an answer (a question there asks within it)
+    for li, label in enumerate(clauses):
+        answer = _label(label)
+        if answer is None:
+            continue
+        asked = next((ci for ci in range(li - 1, -1, -1) if _asks(clauses[ci]) and ci not in answering), None)
+        if asked is None or any(_label(c) is None and _asks(c) and ci not in answering
+                                for ci, c in enumerate(clauses[asked + 1:li], asked + 1)):
+            continue
+        line, paragraph = line_of.get(label.sentence, (-1, -1))
+        alone = li + 1 < len(clauses) and line_of.get(clauses[li + 1].sentence, (-1, -1))[0] != line
+        # (on the label's own line a question asks within the answer: "YES: Is the toaster on? ...")
+        end = next((ci for ci in range(li + 1, len(clauses)) if _label(clauses[ci]) is not None
+                    or alone and _asks(clauses[ci]) or _capitalised(clauses[ci].text)
+                    or line_of.get(clauses[ci].sentence, (-1, -1))[1 if alone else 0] != (paragraph if alone else line)),
+                   len(clauses))
+        answering |= set(range(li + 1, end))
+        questions = [a for a in factors if (clauses[asked].sentence, asked) in a.places
+                     and set(a.values) == {"yes", "no"}]
+        for b in factors:
+            first = min((ci for _, ci in b.places), default=-1)
+            if not li < first < end:
+                continue
+            for a in questions:
+                if a.subject != b.subject and all(dep != a.id for dep, _ in b.context):
+                    b.context.append((a.id, frozenset({answer})))
+
+
+def _capitalised(text: str) -> bool:
+    """Whether a clause is a heading written in capitals ("STEP 2", "CLOSING")."""
+    letters = re.sub(r"[^A-Za-z]", "", text)
+    return len(letters) >= 3 and letters.isupper() and _ANSWER_LABEL.match(text) is None
 
 
 def _consistent(context: list[tuple[str, frozenset[str]]]) -> list[tuple[str, frozenset[str]]]:
