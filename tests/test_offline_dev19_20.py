@@ -284,3 +284,26 @@ def test_a_room_after_the_relative_ends_the_frame() -> None:
     # near miss: a second, other room named in the relative frames what follows it instead
     text = "Go to the study, where the laptop is; then in the bedroom put the mug on the desk."
     assert "in_room(desk, study)" not in placed(text, STUDY, FLAT)
+
+
+# ----- a Markdown sub-heading names its section's situation --------------------------------------
+
+OFFICE = {"notebook": "notebook", "desk": "desk", "mug": "mug", "sink": "sink"}
+
+
+@pytest.mark.parametrize("text", [
+    # an on-call runbook
+    "## Checks\n### 3. Notebook on the floor\nMy notebook goes on the desk. Found it on the floor? Put it on the "
+    "desk. Anywhere else: leave it.",
+    # a wiki page for a shared office
+    "## Notebook on the floor\nIt belongs on the desk, so pick it up and put it there.",
+])
+def test_a_markdown_heading_is_no_statement_of_where_a_thing_is(text: str) -> None:
+    assert {"on(notebook, floor)", "not on(notebook, floor)"} <= asked(text, OFFICE, ("office",))
+
+
+def test_a_comment_in_code_is_no_heading() -> None:
+    # near miss: one "#" opens a comment in code or YAML; the line is read as it was
+    text = "# the mug is in the sink\nif mug.dirty: wash(mug)"
+    before = asked(text.replace("# ", ""), OFFICE, ("office",))
+    assert asked(text, OFFICE, ("office",)) == before

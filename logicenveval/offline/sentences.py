@@ -212,6 +212,11 @@ _QUOTED_PREMISE = re.compile(r"^(?P<q>[ \t]*>[^\n]*?[^\s?!.:>])[ \t]*\.?[ \t]*(?
 #: a reference work's marks after a word or a full stop (an encyclopedia article, a report: "shut
 #: afterwards.[3] The bat ...", "is meant to be displayed.[citation needed]", "on the bar[a]"):
 #: they say where a claim comes from, never what it claims, and hide the sentence's end
+#: a Markdown sub-heading ("### 3. Notebook on the floor", "## Kitchen"): a document's section
+#: title, which names the situation or the thing its section deals with, as a checklist's heading
+#: before a colon does ("Notebook on the floor: ..."); read so, not as a statement that the
+#: notebook is on the floor. (One "#" also opens a comment in code and YAML, and is left alone.)
+_MARKDOWN_HEADING = re.compile(r"^[ \t]*#{2,6}[ \t]+(?:\d+[.)][ \t]+)?(?P<title>[^\n]*?[^\s.:?!])[ \t]*$", re.M)
 _CITATION = re.compile(r"(?<=\S)\[(?:\d+(?:\s*[,\u2013-]\s*\d+)*|[a-z]|(?:citation|clarification) needed"
                        r"|dubious(?: [^\]\n]{0,30})?|who\?|when\?|by whom\?|according to whom\?)\]", re.I)
 
@@ -830,14 +835,15 @@ def unquote(text: str) -> str:
     (`detable`); a rule written as a record of keyed lines as its conditional (`derecord`); a heading answered by a verb with no subject of its own with the heading as that
     subject (`_SUBJECTLESS`); a chat message's `*`-correction made in the message it corrects
     (`starred`), a verbless directive as its imperative ("Into the fridge with it": "Put it into the
-    fridge", `_DIRECTIVE_WITH`, `_DIRECTIVE_AFTER_QUESTION`), a place "to be checked" as one that "may be" (`_TO_BE_CHECKED`), without a chat line's time stamp (`_TIME_STAMP`) and without a reference work's
-    citation marks (`_CITATION`)."""
+    fridge", `_DIRECTIVE_WITH`, `_DIRECTIVE_AFTER_QUESTION`), a place "to be checked" as one that "may be" (`_TO_BE_CHECKED`), without a chat line's time stamp (`_TIME_STAMP`), without a reference work's
+    citation marks (`_CITATION`) and with a Markdown sub-heading as a heading before a colon
+    (`_MARKDOWN_HEADING`)."""
     text = _OCCASION_IF.sub(_occasion_if, text)
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
     text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_dictated(_runs_on(_modern(_NATIVE_IF.sub(_native_if, text))))))))
     text = _TO_BE_CHECKED.sub(" may be ", _OTHER_THAN.sub(r"\1 else than", text))
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), _SPELLED[m.group(0).lower()]), text))
-    text = starred(_TIME_STAMP.sub(r"\1", _CITATION.sub("", text)))
+    text = starred(_TIME_STAMP.sub(r"\1", _CITATION.sub("", _MARKDOWN_HEADING.sub(r"\g<title>:", text))))
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
     plain = _IF_ANY.sub(_if_any, plain)
     plain = _FRONTED_ALREADY.sub(_postposed, plain)
