@@ -139,6 +139,12 @@ HOMES = frozenset({"kept", "lives", "live",
 #: the words as `tokens` gives them: the noun lemma of a verb form ("lives" -> "life")
 HOMES |= frozenset(singular(w) for w in HOMES)
 DESCRIPTIVE |= frozenset(singular(w) for w in HOMES)
+#: the verbs that put a thing away where it belongs ("put it away", "tidy the mug away",
+#: `_Reader._back_home`); "throw it away", "give it away" send it nowhere it belongs
+PUT_AWAY = frozenset({"put", "tidy", "pack", "store", "clear"})
+#: at most how many words an aside between a subject and its predicate runs to ("as ever",
+#: "as far as I know", `_Reader._aside_end`)
+ASIDE_WORDS = 5
 #: prepositions of direction: after one, a participle of the perfect that is also a state word
 #: ("has blown onto", "have smashed into") says where the thing went, not its state ("the fuse
 #: has blown", "a smashed cup"); "when it is running, into the hamper" keeps its state
@@ -675,8 +681,16 @@ class _Reader:
         and a red mug), means every candidate."""
         if m.kind != "role" or len(m.roles) < 2 or _quantified(words, m.start) or m.end - 1 in self.plural_at:
             return m
-        known = [r for r in self.recent if r in m.roles]
+        # "the drying rack ... the utility shelf ... left on the rack": a word of a thing's own
+        # name shortens that name, before a word only a synonym of another's kind has ("storage rack")
+        own = [r for r in m.roles if self._own_name(r, words[m.end - 1])]
+        known = [r for r in self.recent if r in (own if 0 < len(own) < len(m.roles) else m.roles)]
         return Mention((known[-1],), m.start, m.end, m.kind) if known else m
+
+    def _own_name(self, role: str, word: str) -> bool:
+        """Whether `word` (a noun of a mention) is a word of the role's name or of its kind's."""
+        names = {role, str(self.lex.roles.get(role, {}).get("category") or "")}
+        return any(singular(word) in n.split("_") or word in n.split("_") for n in names)
 
     def _opener(self, before: list[str]) -> str | None:
         """The furniture piece last named (in the clause, else before it) whose kind opens and
@@ -1061,14 +1075,25 @@ class _Reader:
         "your doll sleeps on the bed. Put her there")."""
         there = [k for k in range(1, len(words)) if words[k] == "there" and any(
             m.end == k and m.kind == "pronoun" for m in mentions)]
-        if "back" not in words and not there or any(f.kind == "location" for f in facts) or not imperative(words):
+        # "put it away", "tidy the mug away": a verb of putting away sends the thing where it
+        # belongs, as "back" does ("throw it away" sends it nowhere it belongs)
+        away = [k for k in range(2, len(words)) if words[k] == "away" and any(
+            m.end == k and m.kind in ("pronoun", "role") and m.start > 0 and (
+                words[m.start - 1] in PUT_AWAY or m.start > 1 and words[m.start - 2] in PUT_AWAY)
+            for m in mentions)]
+        if "back" not in words and not there and not away or any(f.kind == "location" for f in facts) \
+                or not imperative(words):
             return []
-        k = words.index("back") if "back" in words else there[0]
+        k = words.index("back") if "back" in words else there[0] if there else away[0]
         if any(m.kind in ("role", "room", "floor") and m.start > k for m in mentions):
             return []
-        moved = [r for m in mentions if m.kind == "pronoun" and m.end <= k for r in m.roles]
-        return [replace(self.homes[r], goal=True, negated=False, definite=False, home=False, modifier=False)
-                for r in dict.fromkeys(moved) if r in self.homes]
+        kinds = ("pronoun", "role") if away and k == away[0] else ("pronoun",)
+        moved = [r for m in mentions if m.kind in kinds and m.end <= k for r in m.roles]
+        # (where it belongs, said as a goal: "The bottle belongs in the cabinet. ... put it away")
+        belongs = {self.last_goal.subject: self.last_goal} if away and self.last_goal is not None else {}
+        return [replace(self.homes.get(r) or belongs[r], goal=True, negated=False, definite=False, home=False,
+                        modifier=False)
+                for r in dict.fromkeys(moved) if r in self.homes or r in belongs]
 
     def _holds(self, f: Fact) -> bool:
         """A thing on or in a role that cannot hold it (a sofa in a toy box, a phone on a book:
@@ -1335,7 +1360,7 @@ class _Reader:
         if idx + 1 < len(mentions) and mentions[idx + 1].kind in ("role", "pronoun") and _joined(
                 words, m, mentions[idx + 1], self.commas):
             return []  # the last item of a list carries the location
-        k = m.end
+        k = self._aside_end(words, mentions, m.end)
         skipped: list[str] = []
         # "keeps ending up on", "tends to end up on", "usually gets left on": the habitual form's
         # words lead to the place, and its event verb moves nothing (`sentences.habitual`)
@@ -1418,6 +1443,19 @@ class _Reader:
                 k += 1
             elided = alternative and self._elided_place(words, mentions, k)
         return out
+
+    def _aside_end(self, words: list[str], mentions: list[Mention], k: int) -> int:
+        """Where the predicate goes on after a short aside set off by commas right after the
+        subject ("The remote, as ever, belongs on the stand", "the key, I think, is in the
+        drawer"): the aside says nothing of the thing, and its place is read after it. An aside
+        naming a thing or a place ("the mug, on the desk, ...", "the mug, the plate ...") is none."""
+        if k not in self.commas:
+            return k
+        end = next((j for j in sorted(self.commas) if k < j <= k + ASIDE_WORDS), None)
+        if end is None or any(k <= x.start < end for x in mentions) or set(words[k:end]) & (
+                PREP_ON | PREP_IN | {"to", "from", "and", "or"}):
+            return k
+        return end
 
     def _elided_place(self, words: list[str], mentions: list[Mention], k: int) -> bool:
         """After "on the office chair or", a place with no preposition of its own ("the floor")
@@ -2416,7 +2454,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     cut = [split_clauses(sent) for sent in sentences]
     bullets = _bullet_items(any_at(str(brief["description"])), found_in_text)
     speakers = _speakers(reader, unquote(str(brief["description"])))
+    lines = _lines(any_at(unquote(str(brief["description"]))))
+    #: per grammatical sentence, (line, paragraph) of the text it starts on (`_answered`)
+    line_of: dict[int, tuple[int, int]] = {}
     for si, sent in enumerate(sentences):
+        line_of.setdefault(grammatical, lines[si] if si < len(lines) else (-1, -1))
         pieces = cut[si]
         # the piece after each (a heading's answer may open the next part: "On the floor: into ...")
         after = [p.text for p in pieces[1:]] + [cut[si + 1][0].text if si + 1 < len(cut) and cut[si + 1] and not
@@ -2612,7 +2654,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             slot0, neg0, key0 = context[-1]
             context[-1] = (slot0, not neg0, key0)
         # "put it in the fridge - the fridge door may already be open": an uncertain remark
-        conditional = cl.role in ("condition", "uncertain") or (
+        # ("NO (it is somewhere else, or we are out of it):": an answer's gloss says what it covers)
+        conditional = cl.role in ("condition", "uncertain") or _label(cl) is not None or (
             cl.role == "consequence" and bool(uncertain_words(re.findall(r"[a-z]+", cl.text.lower()))))
         added: list[tuple[tuple[str, str, str], bool, str]] = []
         if cl.role == "condition":
@@ -2696,7 +2739,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     # (where a thing is kept is no place it is expected now: "Use the cloth if we still have one.
     # The cloth lives in the vanity." still asks whether there is one)
     subjects_with_location = {s for (s, k, _), e in found.items() if k == "location" and not e.get("home")}
-    absence_stated = {f.subject for cl in clauses if cl.role in ("condition", "uncertain") for f in cl.facts
+    absence_stated = {f.subject for cl in clauses if cl.role in ("condition", "uncertain") or _label(cl) is not None
+                      for f in cl.facts
                       if f.kind == "exists" and not f.goal and (
                           f.negated and cl.role == "uncertain"
                           # "if it is elsewhere, or we have none": two alternatives, not "no plate on the counter"
@@ -2753,11 +2797,86 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             if dep is not None and dep is not factor:
                 factor.context.append((dep.id, _allowed(dep, negated, value)))
         factor.context = _consistent(factor.context)
+    _answered(factors, clauses, line_of)
     factors += _alternatives_put_back(factors, clauses)
     factors.sort(key=lambda f: (f.order, _RANK[f.kind], f.id))
     groups, group_roles = _group(factors, _moves_into(factors, clauses) + _answers(factors, clauses))
     covered = set().union(*group_roles) if group_roles else set()
     return TaskAnalysis(sentences, clauses, factors, groups, group_roles, set(lex.roles) - covered)
+
+
+#: a label answering the question before it ("> YES: ...", "NO (or not sure): ...", "Yes ->"): what
+#: follows, up to the next label, question or capitalised heading, holds under that answer
+_ANSWER_LABEL = re.compile(r"^\W*(yes|no)\b\s*(?:\([^()]*\))?\W*$", re.I)
+
+
+def _label(clause: Clause) -> str | None:
+    """The answer ("yes", "no") a clause is the label of, if it is one (`_ANSWER_LABEL`): a bare
+    "yes"/"no" (a bracket may gloss it) before a colon, a dash or an arrow."""
+    m = _ANSWER_LABEL.match(clause.text)
+    if m is None or not (clause.cue in (":", "-", "->") or re.search(r"[:>-]\s*$", clause.text)):
+        return None
+    return m.group(1).lower()
+
+
+def _asks(clause: Clause) -> bool:
+    """Whether a clause is a question about the scene (a condition asked with "?")."""
+    return clause.cue == "?" or clause.text.rstrip().rstrip('"\u201d').rstrip().endswith("?")
+
+
+def _lines(text: str) -> list[tuple[int, int]]:
+    """(line, paragraph) of the text each of its sentences (`split_sentences`) starts on, found by
+    its first words in order (a sentence not found verbatim, a line joined to the next, takes the
+    place of the one before)."""
+    out: list[tuple[int, int]] = []
+    pos = 0
+    for sent in split_sentences(text):
+        k = text.find(sent[:24], pos)
+        pos = k if k >= 0 else pos
+        out.append((text.count("\n", 0, pos), len(re.findall(r"\n[ \t]*\n", text[:pos]))))
+    return out
+
+
+def _answered(factors: list[Factor], clauses: list[Clause], line_of: Mapping[int, tuple[int, int]]) -> None:
+    """A call script's, flowchart's or FAQ's labelled answers ("Ask: 'Is there bread on the
+    counter?' > YES: put it on the plate, and switch the toaster on if it is off. > NO: skip the
+    toast."): a factor first raised after a "yes" or "no" label, in the rest of its line (or, for
+    a label alone on its line, of its paragraph) and before the next label, question or capitalised
+    heading, is asked only under that answer to the question before the label (the yes/no factors
+    the question raised), and so in its subtask. A line after the answer's own is a step of its own
+    ("NO: leave it. / If the lamp is on, switch it off.")."""
+    answering: set[int] = set()  # clauses within an answer (a question there asks within it)
+    for li, label in enumerate(clauses):
+        answer = _label(label)
+        if answer is None:
+            continue
+        asked = next((ci for ci in range(li - 1, -1, -1) if _asks(clauses[ci]) and ci not in answering), None)
+        if asked is None or any(_label(c) is None and _asks(c) and ci not in answering
+                                for ci, c in enumerate(clauses[asked + 1:li], asked + 1)):
+            continue
+        line, paragraph = line_of.get(label.sentence, (-1, -1))
+        alone = li + 1 < len(clauses) and line_of.get(clauses[li + 1].sentence, (-1, -1))[0] != line
+        # (on the label's own line a question asks within the answer: "YES: Is the toaster on? ...")
+        end = next((ci for ci in range(li + 1, len(clauses)) if _label(clauses[ci]) is not None
+                    or alone and _asks(clauses[ci]) or _capitalised(clauses[ci].text)
+                    or line_of.get(clauses[ci].sentence, (-1, -1))[1 if alone else 0] != (paragraph if alone else line)),
+                   len(clauses))
+        answering |= set(range(li + 1, end))
+        questions = [a for a in factors if (clauses[asked].sentence, asked) in a.places
+                     and set(a.values) == {"yes", "no"}]
+        for b in factors:
+            first = min((ci for _, ci in b.places), default=-1)
+            if not li < first < end:
+                continue
+            for a in questions:
+                if a.subject != b.subject and all(dep != a.id for dep, _ in b.context):
+                    b.context.append((a.id, frozenset({answer})))
+
+
+def _capitalised(text: str) -> bool:
+    """Whether a clause is a heading written in capitals ("STEP 2", "CLOSING")."""
+    letters = re.sub(r"[^A-Za-z]", "", text)
+    return len(letters) >= 3 and letters.isupper() and _ANSWER_LABEL.match(text) is None
 
 
 def _consistent(context: list[tuple[str, frozenset[str]]]) -> list[tuple[str, frozenset[str]]]:

@@ -413,10 +413,12 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
                 return _split(f"if it is not{sentence[m.end():]}")
             return [(sentence[m.end():].strip(" ,"), cue, "else")]
     best = _first_cue(low, CONDITIONAL)
-    if best is not None and best[1] in AGENT_TIMES and low.rstrip().endswith("?") and best[0] > 0 \
+    # (a question in quotation marks asks as one does without them: '"Is the kettle on the counter?"')
+    asks = low.rstrip().rstrip('"\u201d').rstrip().endswith("?")
+    if best is not None and best[1] in AGENT_TIMES and asks and best[0] > 0 \
             and re.match(rf"\W*(?:{'|'.join(sorted(AGENTS))})\b", expand(low[best[0] + len(best[1]):])):
         best = None  # "is it on when you're done for the day?": asked of the scene at a time of the agent's
-    if best is None and low.rstrip().endswith("?"):
+    if best is None and asks:
         return [(sentence, "?", "condition")]  # "Are the keys on the floor?" asks about the situation
     if best is None:
         # (as `clause_spans` does: "and" before a subject pronoun starts a clause of its own, "there's

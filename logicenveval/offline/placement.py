@@ -879,8 +879,8 @@ def _frame(sent: _Sentence, reading: _Reading, lo: int) -> None:
     for later in sent.mentions:
         if later.start < first.end:
             continue
-        if later.kind == "room" or later.start > end:
-            break
+        if later.kind == "room" and later.roles != first.roles or later.start > end:
+            break  # (the room named again goes on framing: "the study, where in the study ...")
         if later.kind == "role" and not _indefinite_doubt(sent, later) and _named(words, later.start):
             for role in _roles(later, sent):
                 reading.room("settled", role, first.roles[0])
@@ -891,11 +891,17 @@ def _clause_frame(words: list[str], lo: int, start: int) -> bool:
     """Whether the room at `start` opens a clause of its own after a comma or a semicolon, as
     `_frame` reads a room opening its sentence: "The dining room opens onto the kitchen, and there
     in the kitchen you have the dishwasher, the sink ...", "The hall leads to the kitchen; in the
-    kitchen you will find a fridge and a sink"."""
+    kitchen you will find a fridge and a sink"; or a room a relative "where" follows ("Go on to the
+    study, where (in the study) the laptop belongs on the desk")."""
+    if words[start + 1:start + 3] == [",", "where"] and start + 1 < len(words):
+        # "Sashay to the study, where the laptop belongs on the desk": a relative "where" after
+        # the room speaks of what is there
+        return True
     if words[max(lo, start - 2):start] != ["in", "the"]:
         return False
     k = start - 3
-    while k >= lo and words[k] in _LEADS | {"there"}:
+    # (", where in the study the laptop belongs on the desk": the relative's own fronted room)
+    while k >= lo and words[k] in _LEADS | {"there", "where"}:
         k -= 1
     return k >= lo and words[k] in (",", ";")
 
@@ -1004,6 +1010,11 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
             elif who >= lo and words[who] in SUBJECT_PRONOUNS and group[-1] in RESULT:
                 at = next((k for k in range(end, clause.end) if words[k] in AT), clause.end)
                 after = _np_list(sent, ms, end, at)
+                if not after and words[end:at] == ["it"]:
+                    # "My jacket. I left it on the sofa.", "My jacket: I left it on the sofa": the
+                    # object "it" is the thing the text last spoke of, as a subject "it" is ("The
+                    # jacket. It is on the sofa.")
+                    after = _object_it(sent, clause, last, earlier)
                 # "someone left a mark on the floor"; "the coat the kids dumped in the hallway"
                 subjects, end = (after, at) if after else (_np_list(sent, ms, lo, who), end)
                 # (a speaker's report of their own act is presumed: a later "if it is still on
@@ -1040,6 +1051,18 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         lo = _gapped(sent, clause, ms, holder.end, kind, lex, catalog, reading)
     if clause.mood == "statement":
         _fragment(sent, clause, ms, lex, catalog, reading)
+
+
+def _object_it(sent: _Sentence, clause: Span, last: Mention | None, earlier: bool) -> list[Mention]:
+    """The thing an object "it" of a statement's placing verb takes up: the topic its clause
+    follows after a colon or dash ("My jacket: I left it on the sofa"), else, when its sentence
+    names no thing before it, the last statement's subject ("My jacket. I left it on the sofa")."""
+    if earlier:
+        if clause.start == 0 or sent.words[clause.start - 1] not in (":", "-"):
+            return []
+        topic = [m for m in sent.mentions if m.end < clause.start and m.kind == "role"]
+        return topic[-1:] if len(topic) == 1 and len(topic[0].roles) == 1 else []
+    return [last] if last is not None and last.kind == "role" and len(last.roles) == 1 else []
 
 
 def _believed(lead: list[str]) -> bool:

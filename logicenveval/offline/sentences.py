@@ -159,8 +159,12 @@ ARROW_MARK = r"(?:->|=>|\u2192)"
 #: an arrow says "then": what follows it is the instruction of what came before ("Coffee machine:
 #: still on? -> switch OFF.", "Lamp on => off"), never a sentence of its own
 ARROW = re.compile(rf"\s*{ARROW_MARK}\s*")
-_SENT = re.compile(rf"(?<=[.!?;:])\s+(?!{ARROW_MARK})|\n+|(?<=\))\s+(?=[A-Z])")
-_FULL_STOP = re.compile(r"(?<=[.!])\s+|\n+")
+#: a closing quotation mark after a question or exclamation mark ends the sentence with it ("Ask:
+#: "Is the kettle on the counter?" If not, ..."): a question quoted in a script, a story or a
+#: transcript asks as one does unquoted (a quoted statement's full stop may end a line of speech
+#: that the narration after it goes on with: '"The cauldron." She pointed at it')
+_SENT = re.compile(rf"(?:(?<=[.!?;:])|(?<=[!?][\"\u201d]))\s+(?!{ARROW_MARK})|\n+|(?<=\))\s+(?=[A-Z])")
+_FULL_STOP = re.compile(r"(?:(?<=[.!])|(?<=[!?][\"\u201d]))\s+|\n+")
 _ABBREV = re.compile(r"\b(e\.g|i\.e|etc|approx|vs)\.", re.I)
 
 
@@ -208,6 +212,11 @@ _QUOTED_PREMISE = re.compile(r"^(?P<q>[ \t]*>[^\n]*?[^\s?!.:>])[ \t]*\.?[ \t]*(?
 #: a reference work's marks after a word or a full stop (an encyclopedia article, a report: "shut
 #: afterwards.[3] The bat ...", "is meant to be displayed.[citation needed]", "on the bar[a]"):
 #: they say where a claim comes from, never what it claims, and hide the sentence's end
+#: a Markdown sub-heading ("### 3. Notebook on the floor", "## Kitchen"): a document's section
+#: title, which names the situation or the thing its section deals with, as a checklist's heading
+#: before a colon does ("Notebook on the floor: ..."); read so, not as a statement that the
+#: notebook is on the floor. (One "#" also opens a comment in code and YAML, and is left alone.)
+_MARKDOWN_HEADING = re.compile(r"^[ \t]*#{2,6}[ \t]+(?:\d+[.)][ \t]+)?(?P<title>[^\n]*?[^\s.:?!])[ \t]*$", re.M)
 _CITATION = re.compile(r"(?<=\S)\[(?:\d+(?:\s*[,\u2013-]\s*\d+)*|[a-z]|(?:citation|clarification) needed"
                        r"|dubious(?: [^\]\n]{0,30})?|who\?|when\?|by whom\?|according to whom\?)\]", re.I)
 
@@ -244,6 +253,14 @@ _ELIDED_PLACE = re.compile(
 #: its pronoun ("if it is", "unless they are"); a question's "is there" stays
 _DROPPED_SUBJECT = re.compile(r"\b(if|unless)\s+(?=(is|are|was|were)\s+(?!there\b)[a-z])", re.I)
 _DROPPED_PRONOUN = {"is": "it", "was": "it", "are": "they", "were": "they"}
+#: a note's sentence that opens with a modal of doubt and no subject, after a topic ("Toothbrush.
+#: May have fallen on the floor. If so, ...", "Kettle: might be empty", "Mug - could be dirty"): the
+#: dropped subject is "it", the thing of the topic, so the doubt is read as the uncertain remark it
+#: is ("It may have fallen on the floor"); a request ("Could you ...") has a subject and is no such
+#: sentence
+_DROPPED_MODAL_SUBJECT = re.compile(r"(?:(?<=^)|(?<=[.!?:]\s)|(?<=\s[-\u2013\u2014]\s)|(?<=\n))([ \t]*)"
+                                    r"(may|might|could)\s+(?=(?:well\s+|still\s+|already\s+|not\s+)?(?:have|be)\b)",
+                                    re.I | re.M)
 #: the same before a state word that ends its clause inside brackets or after an arrow's answer
 #: ("alarm clock -> nightstand (silence it first if ringing)", "(wash it first if dirty)"): the
 #: elided subject is the "it" the bracket's instruction acts on, not the place named last
@@ -808,7 +825,8 @@ def unquote(text: str) -> str:
     one ("not sure I even got bread": "there may or may not be bread"); a condition's elided
     subject spelled out
     ("if found on" -> "if it is found on"), and a dropped subject pronoun ("if is lighted" -> "if
-    it is lighted": `_DROPPED_SUBJECT`); a telegram's "STOP" and "QUERY" as "." and "?"
+    it is lighted": `_DROPPED_SUBJECT`), and a note's "May have fallen ..." after a topic as "It may
+    have fallen ..." (`_DROPPED_MODAL_SUBJECT`); a telegram's "STOP" and "QUERY" as "." and "?"
     (`TELEGRAM_MARKS`); a dictated text's spoken marks as marks (`DICTATED_MARKS`); a line running on into the next as one
     line (`_runs_on`); "No X by the Y then ..." as the question "No X by the Y? Then ..."
     (`_NO_THEN`); a bare state and a comma before an instruction as its condition ("wet, stand
@@ -817,14 +835,15 @@ def unquote(text: str) -> str:
     (`detable`); a rule written as a record of keyed lines as its conditional (`derecord`); a heading answered by a verb with no subject of its own with the heading as that
     subject (`_SUBJECTLESS`); a chat message's `*`-correction made in the message it corrects
     (`starred`), a verbless directive as its imperative ("Into the fridge with it": "Put it into the
-    fridge", `_DIRECTIVE_WITH`, `_DIRECTIVE_AFTER_QUESTION`), a place "to be checked" as one that "may be" (`_TO_BE_CHECKED`), without a chat line's time stamp (`_TIME_STAMP`) and without a reference work's
-    citation marks (`_CITATION`)."""
+    fridge", `_DIRECTIVE_WITH`, `_DIRECTIVE_AFTER_QUESTION`), a place "to be checked" as one that "may be" (`_TO_BE_CHECKED`), without a chat line's time stamp (`_TIME_STAMP`), without a reference work's
+    citation marks (`_CITATION`) and with a Markdown sub-heading as a heading before a colon
+    (`_MARKDOWN_HEADING`)."""
     text = _OCCASION_IF.sub(_occasion_if, text)
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
     text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_dictated(_runs_on(_modern(_NATIVE_IF.sub(_native_if, text))))))))
     text = _TO_BE_CHECKED.sub(" may be ", _OTHER_THAN.sub(r"\1 else than", text))
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), _SPELLED[m.group(0).lower()]), text))
-    text = starred(_TIME_STAMP.sub(r"\1", _CITATION.sub("", text)))
+    text = starred(_TIME_STAMP.sub(r"\1", _CITATION.sub("", _MARKDOWN_HEADING.sub(r"\g<title>:", text))))
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
     plain = _IF_ANY.sub(_if_any, plain)
     plain = _FRONTED_ALREADY.sub(_postposed, plain)
@@ -835,6 +854,7 @@ def unquote(text: str) -> str:
     plain = _EMPHATIC_DO.sub("", plain)
     plain = _ELIDED_END_STATE.sub(r"\1 it is ", _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", _ELIDED_PLACE.sub(r"\1 it is ", plain))))
     plain = _DROPPED_SUBJECT.sub(lambda m: f"{m.group(1)} {_DROPPED_PRONOUN[m.group(2).lower()]} ", plain)
+    plain = _DROPPED_MODAL_SUBJECT.sub(lambda m: f"{m.group(1)}{_match_case(m.group(2), 'it')} {m.group(2).lower()} ", plain)
     plain = _ACTED_STATE.sub(_acted_state, plain)
     plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)
     plain = _KIND_OF.sub(r"\1 ", _STATE_CASE.sub(_state_case, plain))
