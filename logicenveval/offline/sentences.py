@@ -209,14 +209,14 @@ def _forum_quote(m: re.Match[str]) -> str:
 
 _QUOTED_PREMISE = re.compile(r"^(?P<q>[ \t]*>[^\n]*?[^\s?!.:>])[ \t]*\.?[ \t]*(?P<gap>\n(?:[ \t]*\n)*)"
                              r"(?=[ \t]*Then\b)", re.M)
-#: a reference work's marks after a word or a full stop (an encyclopedia article, a report: "shut
-#: afterwards.[3] The bat ...", "is meant to be displayed.[citation needed]", "on the bar[a]"):
-#: they say where a claim comes from, never what it claims, and hide the sentence's end
 #: a Markdown sub-heading ("### 3. Notebook on the floor", "## Kitchen"): a document's section
 #: title, which names the situation or the thing its section deals with, as a checklist's heading
 #: before a colon does ("Notebook on the floor: ..."); read so, not as a statement that the
 #: notebook is on the floor. (One "#" also opens a comment in code and YAML, and is left alone.)
 _MARKDOWN_HEADING = re.compile(r"^[ \t]*#{2,6}[ \t]+(?:\d+[.)][ \t]+)?(?P<title>[^\n]*?[^\s.:?!])[ \t]*$", re.M)
+#: a reference work's marks after a word or a full stop (an encyclopedia article, a report: "shut
+#: afterwards.[3] The bat ...", "is meant to be displayed.[citation needed]", "on the bar[a]"):
+#: they say where a claim comes from, never what it claims, and hide the sentence's end
 _CITATION = re.compile(r"(?<=\S)\[(?:\d+(?:\s*[,\u2013-]\s*\d+)*|[a-z]|(?:citation|clarification) needed"
                        r"|dubious(?: [^\]\n]{0,30})?|who\?|when\?|by whom\?|according to whom\?)\]", re.I)
 
