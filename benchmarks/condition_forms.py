@@ -1,11 +1,13 @@
 """How well the offline reader reads a condition in its ordinary grammatical forms (issue 47).
 
 The development sets say each condition in one wording; unseen text says it in any. This
-benchmark composes condition sentences from data tables — a connective (if, when, unless, "X?
-Then ...", "Is X ...? If so ...", ...) x a subject (the noun, a pronoun after an earlier
-mention, an elided subject, a left-dislocated noun) x a verb group (simple, progressive,
-perfect, passive, modal, negated, contracted) x a state (on, off, open, closed, dirty, clean,
-wet, empty, full, on the floor, there or missing) for several catalog kinds and rooms — sets
+benchmark composes condition sentences from data tables — a connective (if, when, once, unless,
+"X? Then ...", "Is X ...? If so ...", "Suppose X. Then ...", ...) x a subject (the noun, a
+pronoun after an earlier mention, an elided subject, a left-dislocated noun) x a verb group
+(simple, progressive, perfect, passive, modal, negated, contracted, a state before an adverbial
+of time or place, "trailing": "is on in there", "was emptied overnight", and a state's idioms:
+"has gone", "is nowhere to be seen") x a state (on, off, open, closed, dirty, clean, wet, empty,
+full, on the floor, there or missing) for several catalog kinds and rooms — sets
 each inside a short description with an action clause, and checks that the reader
 (`offline.analysis.analyse`, on the brief the offline model names itself, the entry the model's
 factor reply comes from) asks the condition's factor: one factor whose values are the expected
