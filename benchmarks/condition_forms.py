@@ -1,11 +1,13 @@
 """How well the offline reader reads a condition in its ordinary grammatical forms (issue 47).
 
 The development sets say each condition in one wording; unseen text says it in any. This
-benchmark composes condition sentences from data tables — a connective (if, when, unless, "X?
-Then ...", "Is X ...? If so ...", ...) x a subject (the noun, a pronoun after an earlier
-mention, an elided subject, a left-dislocated noun) x a verb group (simple, progressive,
-perfect, passive, modal, negated, contracted) x a state (on, off, open, closed, dirty, clean,
-wet, empty, full, on the floor, there or missing) for several catalog kinds and rooms — sets
+benchmark composes condition sentences from data tables — a connective (if, when, once, unless,
+"X? Then ...", "Is X ...? If so ...", "Suppose X. Then ...", ...) x a subject (the noun, a
+pronoun after an earlier mention, an elided subject, a left-dislocated noun) x a verb group
+(simple, progressive, perfect, passive, modal, negated, contracted, a state before an adverbial
+of time or place, "trailing": "is on in there", "was emptied overnight", and a state's idioms:
+"has gone", "is nowhere to be seen") x a state (on, off, open, closed, dirty, clean, wet, empty,
+full, on the floor, there or missing) for several catalog kinds and rooms — sets
 each inside a short description with an action clause, and checks that the reader
 (`offline.analysis.analyse`, on the brief the offline model names itself, the entry the model's
 factor reply comes from) asks the condition's factor: one factor whose values are the expected
@@ -59,44 +61,60 @@ class State:
 
 
 def _state(name: str, fact: str, action: str, simple: str, *, progressive: str | None = None,
-           participle: str | None = None, negated: tuple[str, str] | None = None) -> State:
+           participle: str | None = None, negated: tuple[str, str] | None = None,
+           adjunct: str = "again", later: str = "earlier", idioms: tuple[Verb, ...] = ()) -> State:
     """The verb groups of one state from its words: `simple` after "is", `progressive` after
     "is still", `participle` after "has been" / "was" (perfect, passive), `negated` the finite
-    word and rest of a negated group with the same meaning ("isn't", "switched off")."""
+    word and rest of a negated group with the same meaning ("isn't", "switched off"); `adjunct`
+    a word or phrase after the simple state and `later` one after the passive (the state not at
+    the clause's end: "is on in the hall", "was emptied overnight"); `idioms` other verb groups
+    of the same state ("has gone", "is nowhere to be seen"), each its own form `idiom N`."""
     verbs: dict[str, Verb] = {
         "simple": Verb("is", simple, f"be {simple}", elidable=True),
         "contracted": Verb("'s", simple, None),
         "modal": Verb("might", f"still be {simple}", None),
+        "trailing": Verb("is", f"{simple} {adjunct}", f"be {simple} {adjunct}", elidable=True),
     }
     if progressive:
         verbs["progressive"] = Verb("is", f"still {progressive}", f"still be {progressive}")
     if participle:
         verbs["perfect"] = Verb("has", f"been {participle}", f"have been {participle}")
         verbs["passive"] = Verb("was", participle, f"be {participle}", elidable=True)
+        verbs["trailing passive"] = Verb("was", f"{participle} {later}", f"be {participle} {later}",
+                                         elidable=True)
     if negated:
         verbs["negated"] = Verb(negated[0], negated[1], None)
+    for n, idiom in enumerate(idioms, 1):
+        verbs[f"idiom {n}"] = idiom
     return State(name, fact, action, verbs)
 
 
 #: the states, each with its expected fact and verb groups
 STATES: dict[str, State] = {s.name: s for s in (
     _state("on", "state({x}, toggled_on)", "switch it off", "switched on", progressive="running",
-           participle="left on", negated=("isn't", "switched off")),
+           participle="left on", negated=("isn't", "switched off"), adjunct="in there", later="all night"),
     _state("off", "state({x}, toggled_on)", "switch it on", "off", participle="switched off",
-           negated=("isn't", "on")),
-    _state("open", "state({x}, open)", "close it", "open", participle="left open", negated=("isn't", "shut")),
-    _state("closed", "state({x}, open)", "open it", "closed", participle="shut", negated=("isn't", "open")),
+           negated=("isn't", "on"), adjunct="right now"),
+    _state("open", "state({x}, open)", "close it", "open", participle="left open", negated=("isn't", "shut"),
+           adjunct="again", later="this morning"),
+    _state("closed", "state({x}, open)", "open it", "closed", participle="shut", negated=("isn't", "open"),
+           adjunct="by now"),
     _state("dirty", "state({x}, dirty)", "wash it", "dirty", participle="left dirty",
-           negated=("hasn't been", "washed")),
-    _state("clean", "state({x}, dirty)", "put it away", "clean", participle="washed", negated=("isn't", "dirty")),
+           negated=("hasn't been", "washed"), adjunct="again", later="after lunch"),
+    _state("clean", "state({x}, dirty)", "put it away", "clean", participle="washed", negated=("isn't", "dirty"),
+           adjunct="already", later="yesterday"),
     _state("wet", "state({x}, wet)", "hang it up to dry", "wet", participle="left wet",
-           progressive="dripping", negated=("isn't", "dry")),
-    _state("empty", "state({x}, filled)", "fill it", "empty", participle="emptied", negated=("isn't", "full")),
+           progressive="dripping", negated=("isn't", "dry"), adjunct="still", later="overnight"),
+    _state("empty", "state({x}, filled)", "fill it", "empty", participle="emptied", negated=("isn't", "full"),
+           adjunct="at the moment", later="overnight"),
     _state("full", "state({x}, filled)", "empty it", "full", participle="filled up",
-           negated=("hasn't been", "emptied")),
+           negated=("hasn't been", "emptied"), adjunct="to the brim", later="this morning"),
     _state("on the floor", "on({x}, floor)", "pick it up", "on the floor", progressive="lying on the floor",
-           participle="left on the floor"),
-    _state("missing", "exists({x})", "tell me", "missing", participle="taken", negated=("isn't", "there")),
+           participle="left on the floor", adjunct="again"),
+    _state("missing", "exists({x})", "tell me", "missing", participle="taken", negated=("isn't", "there"),
+           adjunct="again", idioms=(Verb("has", "gone", "have gone", elidable=True),
+                                    Verb("is", "nowhere to be seen", "be nowhere to be seen"),
+                                    Verb("has", "disappeared", "have disappeared"))),
 )}
 
 #: kinds by state: (catalog kind, the noun used, its room, a possessive or article)
@@ -128,6 +146,9 @@ CONNECTIVES: dict[str, str] = {
     "if": "If {C}, {A}.",
     "when": "When {C}, {A}.",
     "whenever": "Whenever {C}, {A}.",
+    "once": "Once {C}, {A}.",
+    "suppose; then": "Suppose {C}. Then {A}.",
+    "supposing": "Supposing {C}, {A}.",
     "in case": "In case {C}, {A}.",
     "should": "Should {S}, {A}.",
     "unless": "Unless {C}, leave it alone; otherwise {A}.",
@@ -175,7 +196,9 @@ def _case(connective: str, subject: str, verb_form: str, state: State, kind: str
     np = f"{det} {noun}"
     if subject == "elided" and not verb.elidable:
         return None
-    if subject == "elided" and connective not in ("if", "when", "whenever", "unless", "otherwise"):
+    if connective in ("once", "suppose; then", "supposing") and verb.finite == "might":
+        return None  # "once" says a state reached, a supposition no doubt
+    if subject == "elided" and connective not in ("if", "when", "whenever", "once", "unless", "otherwise"):
         return None
     if det == "a" and subject in ("noun", "dislocated"):
         np = f"the {noun}"

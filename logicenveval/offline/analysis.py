@@ -70,6 +70,7 @@ from logicenveval.offline.sentences import (
     STATE_WORDS,
     TAKING_FROM,
     TEND,
+    TRAILING_ADVERBIALS,
     code_switched,
     determiner,
     expand,
@@ -381,12 +382,23 @@ FILLINGS = frozenset({"water", "coffee", "tea", "milk", "juice", "soup", "liquid
 _TIME_CUES = frozenset({"when", "whenever", "once"})
 
 
+#: `TRAILING_ADVERBIALS` as word tuples
+_ADVERBIAL_WORDS = tuple(sorted((tuple(a.split()) for a in TRAILING_ADVERBIALS), key=len, reverse=True))
+
+
 def _before_time_clause(words: list[str]) -> list[str]:
     """The words before a time clause whose subject is the reader or the speaker ("Spinning when
     you come in?", "still on once we've left?"): the clause says when the state is asked, not the
     state; all the words when there is none."""
     cut = next((k for k in range(1, len(words) - 1) if words[k] in _TIME_CUES and words[k + 1] in AGENTS), None)
-    return words if cut is None else words[:cut]
+    core = words if cut is None else words[:cut]
+    # and before an adverbial of time or of the place spoken of that ends it ("the lamp: if off
+    # right now", "if switched on in there": `TRAILING_ADVERBIALS`), so a state before it ends
+    # the clause as its predicate
+    while len(core) > 1 and (ending := next((a for a in _ADVERBIAL_WORDS if len(a) < len(core)
+                                             and tuple(core[-len(a):]) == a), None)):
+        core = core[:-len(ending)]
+    return core
 
 
 def _home_said(text: str, opens: bool) -> bool:
@@ -1777,6 +1789,16 @@ def _anaphoric(text: str, facts: list[Fact]) -> bool:
     return points_back(text)
 
 
+def _place_before(clauses: list[Clause], sentence: int, names: tuple[str, ...]) -> bool:
+    """Whether a clause of this sentence or the one before says where one of `names` is, goes or
+    lives: what a pronoun's "if it is not there" may point back to ("The remote goes on the TV
+    stand. If it is not there, ..."). With no such place ("Have a look at the mug. If it isn't
+    there, tell me"), "there" is the scene itself and the condition asks whether the thing is
+    there at all."""
+    return any(f.kind == "location" and f.subject in names for cl in clauses if cl.sentence >= sentence - 1
+               for f in cl.facts)
+
+
 def _presence_asked(clauses: list[Clause], sentence: int, names: tuple[str, ...]) -> tuple[str, ...]:
     """Which of `names` a condition of this or the previous sentence asked the presence of
     (`exists`, not negated: "if you find a wallet"), the nearest such condition first."""
@@ -2567,7 +2589,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # at all, "there" is that presence, not the place the instruction put it
                 facts = [Fact(r, f"exists({r})", "exists", negated=present) for r in asked]
             elif role == "condition" and not facts and names and (
-                    present is False or present is True and bool(set(low_words[:1]) & PRESENCE_DETERMINERS)):
+                    present is False or present is True and bool(set(low_words[:1]) & PRESENCE_DETERMINERS)
+                    or present is True and not _place_before(clauses, grammatical, names)):
                 # "If it turns up, put it on the desk", "it'll be on the floor if it's anywhere",
                 # "Wallet. If it's there, lost property basket": a thing spoken of that may turn
                 # up, or be there at all, may be absent (with no place named before to point to,

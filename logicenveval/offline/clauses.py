@@ -37,6 +37,7 @@ from logicenveval.offline.sentences import (
     BELIEFS,
     PERSONAL_SUBJECTS,
     STATE_WORDS,
+    TRAILING_ADVERBIALS,
     expand,
     habitual,
 )
@@ -188,7 +189,7 @@ def _apposition(sentence: str) -> str:
 
 
 #: what may follow an inverted "should" ("should the hamper be full", "should its doors be open")
-_INVERTING = ("the|there|a|an|it|they|any|one|your|my|our|its|their|this|that|these|those|some|no|you|we|"
+_INVERTING = ("the|there|a|an|it|they|any|one|your|my|our|its|their|his|her|this|that|these|those|some|no|you|we|"
               "either|neither|each|both|anyone|someone|somebody|anybody")
 #: an inverted "should" after its main clause with no comma ("close the wardrobe should its doors
 #: be open", "put the cover back on should the rain start"): its subject, then "be" or a verb
@@ -562,6 +563,8 @@ def _imperative_cut(cond: str) -> int | None:
             continue  # "if it was left open (the cleaner ...)": a verb's object follows it directly, not past a bracket
         if not {w.group() for w in ws[:k]} & _PREDICATES:
             continue
+        if " ".join(said[ws[k].end():].strip(" .,;:!?").split()) in TRAILING_ADVERBIALS:
+            continue  # "if it was left open this morning": a state, then when; no verb and its object
         # a terse instruction with its verb dropped after a bare state ("if wet into laundry
         # basket", "IF DIRTY ONTO THE PILE"): the direction starts it (`DIRECTIONS`)
         bare = ws[k].group() in DIRECTIONS and ws[k - 1].group() in STATE_WORDS

@@ -194,6 +194,12 @@ _QUOTE_MARK = re.compile(r"^[ \t]*(?:>[ \t]?)+", re.M)
 _FORUM_QUOTE = re.compile(r"^[ \t]*Quote from:[^\n]*\n(?P<lines>(?:[ \t]*>[^\n]*(?:\n|$))+)", re.M | re.I)
 _FIRST_PERSON = re.compile(r"\b(?:i|i'm|i've|i'd|me|my|mine|we|we're|we've|our|ours)\b", re.I)
 _QUOTED_SENTENCE = re.compile(r"[^.!?\n]+(?:[.!?]+|$)")
+#: a whole question in double quotes, its question mark inside them (a call script's 'Ask: "Is the
+#: kettle on the counter?" YES: ...', a story's '"Is the fridge open?" YES: ...'): the marks only
+#: say who asks, and left in place they hide that the sentence is a question; it is read without
+#: them. Quoted words that end no question ('the "good" towel') keep their marks, and so does a
+#: quoted statement (a story's dialogue keeps its turns: '"The cauldron." She pointed at ...')
+_QUOTED_WHOLE = re.compile(r"[\"\u201c]([A-Z][^\"\u201c\u201d\n]{1,300}?\?)[\"\u201d]")
 
 
 def _forum_quote(m: re.Match[str]) -> str:
@@ -253,14 +259,24 @@ _ELIDED_PLACE = re.compile(
 #: its pronoun ("if it is", "unless they are"); a question's "is there" stays
 _DROPPED_SUBJECT = re.compile(r"\b(if|unless)\s+(?=(is|are|was|were)\s+(?!there\b)[a-z])", re.I)
 _DROPPED_PRONOUN = {"is": "it", "was": "it", "are": "they", "were": "they"}
-#: a note's sentence that opens with a modal of doubt and no subject, after a topic ("Toothbrush.
-#: May have fallen on the floor. If so, ...", "Kettle: might be empty", "Mug - could be dirty"): the
-#: dropped subject is "it", the thing of the topic, so the doubt is read as the uncertain remark it
-#: is ("It may have fallen on the floor"); a request ("Could you ...") has a subject and is no such
-#: sentence
-_DROPPED_MODAL_SUBJECT = re.compile(r"(?:(?<=^)|(?<=[.!?:]\s)|(?<=\s[-\u2013\u2014]\s)|(?<=\n))([ \t]*)"
-                                    r"(may|might|could)\s+(?=(?:well\s+|still\s+|already\s+|not\s+)?(?:have|be)\b)",
-                                    re.I | re.M)
+#: a condition's second predicate joined by "and" with its subject left out ("if the mug had fallen
+#: and was lying on the floor", "if they'd been knocked over and were lying about", "when the lamp
+#: is old and is flickering"): the second predicate speaks of the condition's subject, read with
+#: its pronoun ("and it was lying ...") so that it is a clause the reader reads; only after a
+#: subject that is a thing (a pronoun of a thing or a noun phrase with its determiner), not "you"
+#: or "we" ("if you are home and are tired" asks nothing of a thing)
+_SHARED_SUBJECT = re.compile(
+    r"\b(?P<head>(?:if|when|whenever|unless)\s+(?:it|they|(?:the|my|your|our|his|her|its|their|a|an|any)\s+"
+    r"[a-z-]+(?:\s+[a-z-]+)?)\b[^,.;:?!()\n]{1,60}?\s+and)\s+(?P<be>was|were|is|are)\s+(?=[a-z])", re.I)
+_BE_PRONOUN = {"was": "it", "is": "it", "were": "they", "are": "they"}
+#: a note's sentence of doubt with its subject dropped after the thing was named ("Toothbrush
+#: (mine). May have fallen on the floor.", "The scarf - might be on the radiator", "Spare key:
+#: could still be in the drawer"): a modal of doubt opening its sentence or the part after a
+#: heading's colon or dash, before "have", "be" or "still"/"already", read with its pronoun ("It
+#: may have fallen ..."), as the hedge it is when the subject is said; a request ("Could you ...")
+#: has its subject
+_DROPPED_DOUBT = re.compile(r"(?:(?<=^)|(?<=[.!?:;]\s)|(?<=\n)|(?<=\s[-\u2013\u2014]\s))([ \t]*)(may|might|could)"
+                            r"(?=\s+(?:(?:well|not)\s+)?(?:have|be|still|already)\b)", re.I | re.M)
 #: the same before a state word that ends its clause inside brackets or after an arrow's answer
 #: ("alarm clock -> nightstand (silence it first if ringing)", "(wash it first if dirty)"): the
 #: elided subject is the "it" the bracket's instruction acts on, not the place named last
@@ -509,10 +525,53 @@ PREDICATE_STATES = {"going": "running", "in operation": "running", "opening": "o
 _ARTICLE_OPTIONAL = re.compile(r"^in ")
 _IN_ARTICLE = r"in\\s+(?:the\\s+)?"
 _ARTICLE_IN = re.compile(r"in\s+(?:the\s+)?")
+#: adverbials of time or of the place already spoken of that may follow a predicate state before
+#: its clause ends ("if the bucket was emptied overnight", "if the mug has been taken again", "the
+#: lamp: if off right now, ..."): they say when, not what, so the state is still its clause's
+#: predicate; a place or a direction after the participle ("emptied into the sink", "taken to the
+#: kitchen") is no such adverbial and leaves the verb a verb
+TRAILING_ADVERBIALS = ("already", "still", "now", "again", "overnight", "earlier", "yesterday", "today",
+                       "tonight", "lately", "recently", "this morning", "this afternoon", "this evening",
+                       "last night", "all night", "all day", "at the moment", "right now", "by now",
+                       "for now", "in there", "in here")
+#: words after a predicate state that go on to another clause ("if it's still going, then ...")
+_GOING_ON = ("then", "and", "or", "but", "so")
+_SPACED = re.compile(" ")
+_ADVERBIALS = "|".join(_SPACED.sub(r"\\s+", a) for a in TRAILING_ADVERBIALS)
+_CLAUSE_END = r"(?=\s*(?:[,.;:!?)]|$|\s(?:" + "|".join(_GOING_ON) + "|" + _ADVERBIALS + r")\b))"
+#: participles and phrases that say a thing is not where it should be at all, as a predicate at a
+#: clause's end: "if the mug has been taken", "if the lamp was removed", "when it has
+#: disappeared", "if the remote is nowhere to be seen" (read as "missing", `analysis.ABSENT`).
+#: Only as a predicate: "taken to the kitchen", "taken out", "removed from the shelf" say where it
+#: went, and "has taken the mug" is an act of someone's
+ABSENCE_PREDICATES = ("taken away", "taken", "removed", "disappeared", "vanished", "gone missing",
+                      "nowhere to be seen", "nowhere to be found", "not anywhere to be seen")
+_PREDICATE_WORDS = "|".join([_ARTICLE_OPTIONAL.sub(_IN_ARTICLE, k) for k in PREDICATE_STATES]
+                            + [_SPACED.sub(r"\\s+", a) for a in ABSENCE_PREDICATES])
 _PREDICATE_STATE = re.compile(
-    rf"((?:\b(?:is|are|was|were|be|been)|'s|\u2019s)(?:\s+(?:still|already|just|now))*\s+|\b(?:still|already)\s+)"
-    rf"({'|'.join(_ARTICLE_OPTIONAL.sub(_IN_ARTICLE, k) for k in PREDICATE_STATES)})"
-    r"(?=\s*(?:[,.;:!?)]|$|\s(?:then|and|or|but|so|already|still|now|again)\b))", re.I | re.M)
+    rf"((?:\b(?:is|are|was|were|be|been)|'s|\u2019s)(?:\s+(?:still|already|just|now))*\s+|\b(?:still|already)\s+"
+    # an intransitive verb of going says its absence in the perfect: "if the mug has disappeared"
+    rf"|\b(?:has|have|had)(?:\s+(?:just|now|already))*\s+(?=(?:disappeared|vanished|gone\s+missing)\b))"
+    rf"({_PREDICATE_WORDS}){_CLAUSE_END}", re.I | re.M)
+#: the same participle in a question that puts its auxiliary first ("Was the bowl washed?", "Has
+#: my mug been taken?"): the participle before the question mark is the predicate of the subject
+#: between them, read as its state
+_QUESTION_PREDICATE = re.compile(
+    rf"((?:^|(?<=[.!?:;]\s)|(?<=\n)|(?<=\s-\s))[ \t]*(?:was|were|is|are|has|have|had)\s+(?:it|they|the|my|your"
+    rf"|our|his|her|their|this|that|these|those)\b[^.?!,;:\n]{{0,40}}?\s)({_PREDICATE_WORDS})"
+    rf"(?=(?:\s+(?:{_ADVERBIALS}))?\s*\?)", re.I | re.M)
+#: a condition with its subject and verb elided before such a predicate ("the mug: if washed, put it
+#: away", "the remote - if missing, tell me", "if taken, let me know"), read "if it is ...";
+#: not after "once" ("wash the mug and once washed, ..." is a step after the washing, not a question)
+_ELIDED_PREDICATE = re.compile(
+    rf"\b(if|unless|when|whenever)\s+(?=(?:(?:still|already)\s+)?(?:{_PREDICATE_WORDS}|missing|gone){_CLAUSE_END})",
+    re.I | re.M)
+
+
+def _predicate(word: str) -> str:
+    """The state word a predicate of `PREDICATE_STATES` or `ABSENCE_PREDICATES` says."""
+    said = " ".join(_ARTICLE_IN.sub("in ", word.lower()).split())
+    return PREDICATE_STATES.get(said, "missing")
 
 
 #: "In the case the heater is on", "in the event that the tap is running": a condition opened by
@@ -522,6 +581,25 @@ _PREDICATE_STATE = re.compile(
 #: clause; "put it in the case the optician gave you" puts it in a case)
 _OCCASION_IF = re.compile(r"(?:(?<=^)|(?<=[.!?;:,)\n])|(?<=[.!?;:,)]\s)|(?<=\band\s)|(?<=\bbut\s))[ \t]*\b"
                           r"in\s+the\s+(?:case|event)(?:\s+that)?\b(?!\s+of\b)", re.I | re.M)
+
+
+#: a supposition put as an imperative or a participle ("Suppose the lamp is on. Then switch it
+#: off", "Supposing the bin is full, empty it", "Assuming that the kettle is cold, ...": a proof's,
+#: a puzzle's or a lawyer's "if"), read as "if" (`_occasion_if`); only where a sentence or a clause
+#: starts, so a belief with its subject ("I suppose the lamp is on") stays a hedge
+#: (`clauses.DOUBT`), and not before "so" or "not" ("Suppose so.")
+_SUPPOSED_IF = re.compile(r"(?:(?<=^)|(?<=[.!?;:)\n])|(?<=[.!?;:)]\s)|(?<=\s-\s))[ \t]*\b(?:suppose|supposing|assume|assuming"
+                          r"|let(?:'s|\s+us)\s+(?:say|suppose|assume))(?:\s+(?:instead|now))?(?:\s+that)?\b"
+                          r"(?!\s+(?:so|not)\b)", re.I | re.M)
+
+
+#: comment adverbials a writer sets off with commas inside a clause ("The remote, as ever, belongs
+#: on the stand", "the kettle, of course, lives on the counter", "the mat is, as usual, on the
+#: floor"): they say what the writer thinks of the clause, nothing of the scene, and between a
+#: subject and its verb they hide the statement; dropped with their commas
+COMMENT_ASIDES = ("as ever", "as always", "as usual", "of course", "naturally", "by the way",
+                  "incidentally", "as you know", "as you'll know", "needless to say", "as it happens")
+_COMMENT_ASIDE = re.compile(rf"(?<=\w),\s+(?:{'|'.join(re.escape(a) for a in COMMENT_ASIDES)}),\s+(?=\w)", re.I)
 
 
 def _occasion_if(m: re.Match[str]) -> str:
@@ -826,7 +904,7 @@ def unquote(text: str) -> str:
     subject spelled out
     ("if found on" -> "if it is found on"), and a dropped subject pronoun ("if is lighted" -> "if
     it is lighted": `_DROPPED_SUBJECT`), and a note's "May have fallen ..." after a topic as "It may
-    have fallen ..." (`_DROPPED_MODAL_SUBJECT`); a telegram's "STOP" and "QUERY" as "." and "?"
+    have fallen ..." (`_DROPPED_DOUBT`); a telegram's "STOP" and "QUERY" as "." and "?"
     (`TELEGRAM_MARKS`); a dictated text's spoken marks as marks (`DICTATED_MARKS`); a line running on into the next as one
     line (`_runs_on`); "No X by the Y then ..." as the question "No X by the Y? Then ..."
     (`_NO_THEN`); a bare state and a comma before an instruction as its condition ("wet, stand
@@ -836,9 +914,14 @@ def unquote(text: str) -> str:
     subject (`_SUBJECTLESS`); a chat message's `*`-correction made in the message it corrects
     (`starred`), a verbless directive as its imperative ("Into the fridge with it": "Put it into the
     fridge", `_DIRECTIVE_WITH`, `_DIRECTIVE_AFTER_QUESTION`), a place "to be checked" as one that "may be" (`_TO_BE_CHECKED`), without a chat line's time stamp (`_TIME_STAMP`), without a reference work's
-    citation marks (`_CITATION`) and with a Markdown sub-heading as a heading before a colon
-    (`_MARKDOWN_HEADING`)."""
-    text = _OCCASION_IF.sub(_occasion_if, text)
+    citation marks (`_CITATION`), with a Markdown sub-heading as a heading before a colon
+    (`_MARKDOWN_HEADING`); a supposition as "if" (`_SUPPOSED_IF`), a comment aside between
+    commas dropped (`COMMENT_ASIDES`), a whole question in quotes without them (`_QUOTED_WHOLE`), a
+    thing gone said as "missing" (`ABSENCE_PREDICATES`), a predicate state's elided subject, a
+    second predicate's shared subject and a note's dropped subject of doubt spelled out
+    (`_ELIDED_PREDICATE`, `_SHARED_SUBJECT`, `_DROPPED_DOUBT`), and an inverted question's
+    participle read as its state (`_QUESTION_PREDICATE`)."""
+    text = _SUPPOSED_IF.sub(_occasion_if, _OCCASION_IF.sub(_occasion_if, _COMMENT_ASIDE.sub(" ", _QUOTED_WHOLE.sub(r"\1", text))))
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
     text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_dictated(_runs_on(_modern(_NATIVE_IF.sub(_native_if, text))))))))
     text = _TO_BE_CHECKED.sub(" may be ", _OTHER_THAN.sub(r"\1 else than", text))
@@ -850,11 +933,16 @@ def unquote(text: str) -> str:
     plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _ITEM_END.sub(".\n", _QUOTE_MARK.sub("", _QUOTED_PREMISE.sub(
         r"\g<q>?\g<gap>", _FORUM_QUOTE.sub(_forum_quote, _ATTRIBUTION.sub("", plain)))))))
     plain = _unabbreviated(plain)
-    plain = _PREDICATE_STATE.sub(lambda m: m.group(1) + PREDICATE_STATES[_ARTICLE_IN.sub("in ", m.group(2).lower())], plain)
+    plain = _ELIDED_PREDICATE.sub(r"\1 it is ", plain)
+    plain = _PREDICATE_STATE.sub(lambda m: m.group(1) + _predicate(m.group(2)), plain)
+    plain = _QUESTION_PREDICATE.sub(lambda m: m.group(1) + _predicate(m.group(2)), plain)
     plain = _EMPHATIC_DO.sub("", plain)
     plain = _ELIDED_END_STATE.sub(r"\1 it is ", _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", _ELIDED_PLACE.sub(r"\1 it is ", plain))))
     plain = _DROPPED_SUBJECT.sub(lambda m: f"{m.group(1)} {_DROPPED_PRONOUN[m.group(2).lower()]} ", plain)
-    plain = _DROPPED_MODAL_SUBJECT.sub(lambda m: f"{m.group(1)}{_match_case(m.group(2), 'it')} {m.group(2).lower()} ", plain)
+    plain = _SHARED_SUBJECT.sub(lambda m: f"{m.group('head')} {_BE_PRONOUN[m.group('be').lower()]} {m.group('be')} ",
+                                plain)
+    plain = _DROPPED_DOUBT.sub(lambda m: f"{m.group(1)}{'It' if m.group(2)[0].isupper() else 'it'} {m.group(2).lower()}",
+                               plain)
     plain = _ACTED_STATE.sub(_acted_state, plain)
     plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)
     plain = _KIND_OF.sub(r"\1 ", _STATE_CASE.sub(_state_case, plain))
