@@ -98,3 +98,34 @@ def test_a_time_a_part_or_another_head_is_no_hint(text: str, not_kind: str) -> N
 def test_a_dropped_modifier_said_elsewhere_still_hints(text: str, kind: str) -> None:
     assert kind in _kinds(text)
 
+
+# -- "<vessel> of <contents>" is the catalog's "<contents> <vessel>" (`_Reader.vessel_of`) --
+
+
+@pytest.mark.parametrize(("text", "kind"), [
+    # a gym's lost-property list
+    ("Item 4: a bottle of water, blue lid, found in the changing room.", "water_bottle"),
+    # a dinner-party host's note
+    ("A bottle of red wine is breathing on the sideboard - leave it be.", "wine_bottle"),
+    ("The bottle of vermouth goes back in the drinks cabinet.", "wine_bottle"),
+    # a nurse's handover
+    ("Pt's bottle of pills is on the bedside table.", "medicine_bottle"),
+    # a child's tidy-up chart
+    ("the box of tissues goes on the shelf", "tissue_box"),
+    ("Put the box of toys under the bed.", "toy_box"),
+])
+def test_a_vessel_of_its_contents_is_the_contents_vessel(text: str, kind: str) -> None:
+    kinds = _kinds(text)
+    assert kind in kinds
+    assert "bottle" not in kinds  # one object, not a bottle beside it
+
+
+@pytest.mark.parametrize(("text", "kinds"), [
+    # contents whose kind is named for no such vessel: a vessel and its contents, as before
+    ("A box of books is waiting in the hall.", {"cardboard_box", "book"}),
+    ("The bottle of dish soap is by the sink.", {"bottle", "dish_soap"}),
+    # "of" after a vessel is not always its contents: a part of it
+    ("The lid of the bottle is on the floor.", {"bottle"}),
+])
+def test_other_vessels_of_things_stay_as_they_were(text: str, kinds: set[str]) -> None:
+    assert kinds <= set(_kinds(text))

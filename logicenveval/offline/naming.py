@@ -364,8 +364,34 @@ class _Reader:
         found = next(((n, self.phrases[tuple(words[i:i + n])])
                       for n in range(min(self.longest, len(words) - i, stretch), 0, -1)
                       if tuple(words[i:i + n]) in self.phrases), (1, None))
-        closed = self.closed_match(i, stretch)
+        closed = self.closed_match(i, stretch) or self.vessel_of(i, stretch)
         return closed if closed is not None and closed[0] > found[0] else found
+
+    def vessel_of(self, i: int, stretch: int) -> tuple[int, str] | None:
+        """(length, category) of "<vessel> of <contents>" at word `i` when "<contents> <vessel>" is
+        a catalog name: "a bottle of water" is a water bottle, "the bottle of wine" a wine bottle,
+        "a box of tissues" a tissue box, "the tub of ice cream" an ice-cream tub. English writes
+        the compound either way round; the catalog lists one. The contents are the words after
+        "of" (and an article) up to the stretch's end, read whole: "a bottle of dish soap" is no
+        soap bottle. Contents that name a kind one of whose names is "<X> <vessel>" are that
+        kind too: "a bottle of red wine", "a bottle of vermouth" (WordNet names of the wine bottle,
+        "wine bottle"), one object, where "a bottle of milk" (a milk carton) and "a box of books"
+        stay a vessel and its contents."""
+        words = self.text.words
+        if stretch < 3 or words[i] not in _VESSELS or words[i + 1] != "of":
+            return None
+        j = i + 2 + (words[i + 2] in _ARTICLES)
+        if j >= i + stretch:
+            return None
+        whole = next(((j + n - i, self.phrases[(*words[j:j + n], words[i])])
+                      for n in range(min(self.longest - 1, i + stretch - j), 0, -1)
+                      if (*words[j:j + n], words[i]) in self.phrases), None)
+        if whole is not None:
+            return whole
+        n, kind = self.match(j)
+        if kind is None or not any(words_of(text)[-1] == words[i] for text in (kind, *_own(self.catalog.categories[kind]))):
+            return None
+        return j + n - i, kind
 
     def closed_match(self, i: int, stretch: int) -> tuple[int, str] | None:
         """(length, category) of the longest catalog name starting at word `i` when words `i` and
