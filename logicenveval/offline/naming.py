@@ -370,7 +370,7 @@ class _Reader:
     def vessel_of(self, i: int, stretch: int) -> tuple[int, str] | None:
         """(length, category) of "<vessel> of <contents>" at word `i` when "<contents> <vessel>" is
         a catalog name: "a bottle of water" is a water bottle, "the bottle of wine" a wine bottle,
-        "a box of tissues" a tissue box, "the tub of ice cream" an ice-cream tub. English writes
+        "a box of tissues" a tissue box, "a bottle of pills" a pill bottle. English writes
         the compound either way round; the catalog lists one. The contents are the words after
         "of" (and an article) up to the stretch's end, read whole: "a bottle of dish soap" is no
         soap bottle. Contents that name a kind one of whose names is "<X> <vessel>" are that
@@ -612,7 +612,9 @@ class _Reader:
         nightstand (bedside table) with a lamp": a bedside lamp); then the kind most specific to the
         task's rooms (the rooms whose ids name a known type: a guessed type says nothing); then the
         kind whose name (not a synonym) it heads. A noun that names no kind itself must start a
-        noun phrase."""
+        noun phrase. A sort the text names by a noun no kind's name holds ("the card table") is the
+        head's sense in general use (`sort_named`, `HEAD_SENSES`) before its sentence is asked; the
+        words that hint a kind are the modifiers its names drop (`dropped_modifiers`)."""
         word = self.text.words[i]
         options = list(dict.fromkeys(self.heads.get(word, [])))
         part = self.part_for.get(i)
