@@ -143,6 +143,13 @@ REGIONAL_SENSES: tuple[tuple[frozenset[str], dict[str, str]], ...] = (
     (frozenset({"arvo", "jandal", "chilly bin", "servo", "chur", "kia ora"}),
      {"bench": "kitchen_counter"}),
 )
+#: a head noun several kinds share, with no kind of its own name, and the kind it names in general
+#: use (a dictionary's first sense): a "table" is "a piece of furniture with a flat top ... used for
+#: such purposes as eating, writing, working, or playing games" (Oxford), the catalog's dining
+#: table; a bedside, coffee, console, side or changing table is named for a use or place of its
+#: own. Read when the text names its own sort by a modifier no kind's name holds ("the card table",
+#: "a trestle table", "the folding table": `_Reader.bare_noun`)
+HEAD_SENSES = {"table": "dining_table"}
 #: words naming an animal kept at home, as the catalog's kinds for one are named ("pet bowl",
 #: "dog bowl", "cat bed") and as a text names the animal ("the cat flap", "walk the dog")
 ANIMAL_WORDS = frozenset({"pet", "dog", "cat", "puppy", "kitten", "rabbit", "hamster", "guinea",
@@ -215,6 +222,12 @@ class _Text:
         """Every word of the text (singular forms), once: what the rules asking whether the text
         says a word anywhere (`_Reader.marked`, `_Reader.animal_kind`) look in."""
         return frozenset(self.words)
+
+    def part_of_next(self, k: int) -> bool:
+        """Whether word `k` names a part of what follows it ("at the end of the night", "the top of
+        the fridge"): no word of a thing's name there ("end table"), as `_Reader.bare_noun` reads
+        the text's words for hints."""
+        return self.words[k] in PART_HEADS and self.words[k + 1:k + 2] == ["of"]
 
     def sentence_end(self, i: int) -> int:
         """Index of the first word of the next sentence after word `i`."""
@@ -351,8 +364,34 @@ class _Reader:
         found = next(((n, self.phrases[tuple(words[i:i + n])])
                       for n in range(min(self.longest, len(words) - i, stretch), 0, -1)
                       if tuple(words[i:i + n]) in self.phrases), (1, None))
-        closed = self.closed_match(i, stretch)
+        closed = self.closed_match(i, stretch) or self.vessel_of(i, stretch)
         return closed if closed is not None and closed[0] > found[0] else found
+
+    def vessel_of(self, i: int, stretch: int) -> tuple[int, str] | None:
+        """(length, category) of "<vessel> of <contents>" at word `i` when "<contents> <vessel>" is
+        a catalog name: "a bottle of water" is a water bottle, "the bottle of wine" a wine bottle,
+        "a box of tissues" a tissue box, "a bottle of pills" a pill bottle. English writes
+        the compound either way round; the catalog lists one. The contents are the words after
+        "of" (and an article) up to the stretch's end, read whole: "a bottle of dish soap" is no
+        soap bottle. Contents that name a kind one of whose names is "<X> <vessel>" are that
+        kind too: "a bottle of red wine", "a bottle of vermouth" (WordNet names of the wine bottle,
+        "wine bottle"), one object, where "a bottle of milk" (a milk carton) and "a box of books"
+        stay a vessel and its contents."""
+        words = self.text.words
+        if stretch < 3 or words[i] not in _VESSELS or words[i + 1] != "of":
+            return None
+        j = i + 2 + (words[i + 2] in _ARTICLES)
+        if j >= i + stretch:
+            return None
+        whole = next(((j + n - i, self.phrases[(*words[j:j + n], words[i])])
+                      for n in range(min(self.longest - 1, i + stretch - j), 0, -1)
+                      if (*words[j:j + n], words[i]) in self.phrases), None)
+        if whole is not None:
+            return whole
+        n, kind = self.match(j)
+        if kind is None or not any(words_of(text)[-1] == words[i] for text in (kind, *_own(self.catalog.categories[kind]))):
+            return None
+        return j + n - i, kind
 
     def closed_match(self, i: int, stretch: int) -> tuple[int, str] | None:
         """(length, category) of the longest catalog name starting at word `i` when words `i` and
@@ -573,7 +612,9 @@ class _Reader:
         nightstand (bedside table) with a lamp": a bedside lamp); then the kind most specific to the
         task's rooms (the rooms whose ids name a known type: a guessed type says nothing); then the
         kind whose name (not a synonym) it heads. A noun that names no kind itself must start a
-        noun phrase."""
+        noun phrase. A sort the text names by a noun no kind's name holds ("the card table") is the
+        head's sense in general use (`sort_named`, `HEAD_SENSES`) before its sentence is asked; the
+        words that hint a kind are the modifiers its names drop (`dropped_modifiers`)."""
         word = self.text.words[i]
         options = list(dict.fromkeys(self.heads.get(word, [])))
         part = self.part_for.get(i)
@@ -609,8 +650,9 @@ class _Reader:
         said = self.sentence_context(i)
 
         writing = self.written_in(i)
+        unlisted = self.sort_named(i, [c for c in candidates if c is not None])
 
-        def score(category: str | None) -> tuple[bool, bool, bool, int, bool, bool, int, int, bool, bool]:
+        def score(category: str | None) -> tuple[bool, bool, bool, bool, int, bool, bool, int, int, bool, bool]:
             assert category is not None
             cat = self.catalog.categories[category]
             # the other words of its names that say what it is: not a preposition of a name made
@@ -623,9 +665,17 @@ class _Reader:
             own = category.replace("_", " ") == self.text.raw[i] or words_of(category) == (word,) and _lemma_named(category)
             # a book one writes in: the kind named for writing ("notebook") before the head's own
             for_writing = writing and any(w.startswith(tuple(_WRITING)) for w in others)
-            return (for_writing, prev in others, own, len(others & said),
+            hints = self.dropped_modifiers(category, word)
+            return (for_writing, prev in others, own,
+                    # a sort named by its own modifier is that sort, whatever else its sentence says
+                    unlisted and HEAD_SENSES.get(word) == category,
+                    len(hints & said),
                     written != word and self.plural_named(category, word), category == exact,
-                    len(others & self.context),
+                    # the text's words elsewhere, as the modifier a short name dropped ("bedside"
+                    # said, then "the table"): a modifier of a name the word heads, never a time
+                    # ("last night" is no night table) or another name's head ("cabinet" of
+                    # "bedside cabinet" names a cabinet, no bedside table)
+                    len(hints & self.context),
                     -len(rooms) if rooms & self.room_evidence() else -1000,
                     # then a kind whose name says no use the text does not ("keep it on the rack,
                     # the metal one" with no shoes, coats or drying said: the storage rack)
@@ -635,6 +685,35 @@ class _Reader:
                     words_of(category)[-1] == word)
 
         return max(candidates, key=score)
+
+    def sort_named(self, i: int, options: list[str]) -> bool:
+        """Whether the text names its own sort of the thing at word `i` by a noun before it that no
+        option's name holds ("the card table", "the trestle table", "a folding table", "the
+        mahjong table"): a compound's modifier that says what sort it is, not what it is like (a
+        word the lemmatiser knows as an adjective, "the small table", "the round table", or a value
+        of an option's attribute, "the metal table"). Such a thing is the head's sense in general
+        use (`HEAD_SENSES`), whatever the catalog's other sorts are named for."""
+        if not self.modified(i):
+            return False
+        prev = self.text.raw[i - 1]
+        if "ADJ" in getAllLemmas(prev):
+            return False
+        for c in options:
+            cat = self.catalog.categories[c]
+            if any(prev in words_of(text) for text in (c, *_own(cat))) or \
+                    any(prev in values for values in cat.attributes.values()):
+                return False
+        return True
+
+    def dropped_modifiers(self, category: str, word: str) -> set[str]:
+        """The words a short name `word` may have dropped from a name of `category` it heads
+        ("bedside", "night" of "bedside table", "night table" for "table"), else, for a kind the
+        word does not head, the other words of its names; no noun of time (`TIME_HEADS`): the text
+        says "night" of a time ("at night", "troop night") far more often than of a thing."""
+        names = [words_of(text) for text in (category, *_own(self.catalog.categories[category]))]
+        headed = {w for n in names if len(n) > 1 and n[-1] == word for w in n[:-1]}
+        others = {w for n in names for w in n} - {word}
+        return (headed or others) - _NAME_LINKS - TIME_HEADS
 
     def written_in(self, i: int) -> bool:
         """Whether the thing the noun at word `i` names is written in: a verb of writing
@@ -713,6 +792,7 @@ class _Reader:
             if n > 1 and category is not None and not k <= i < k + n:
                 taken.update(range(k, k + n))
             k += n
+        taken.update(k for k in range(start, end) if self.text.part_of_next(k))
         return {words[k] for k in range(start, end) if k not in taken} - _NOT_CONTEXT
 
     def plural_names(self, category: str, word: str) -> list[bool]:
@@ -742,7 +822,7 @@ class _Reader:
         """The description's words and the words of every name of the kinds it names outright
         (by a name that is not the head noun of several kinds: "shelf" names no kind outright)."""
         words = self.text.words
-        out = set(words)
+        out = {words[k] for k in range(len(words)) if not self.text.part_of_next(k)}
         for i in range(len(words)):
             n, category = self.match(i)
             if category is None or n == 1 and (self.verb(i) or self.place_sense(i)):
