@@ -14,8 +14,8 @@ from logicenveval.offline.naming import name_objects
 
 STRAYS = Path(__file__).parent / "data" / "naming_forms" / "strays.tsv"
 #: stray rows of `STRAYS` naming their kind: 25 of 41 before this section's rules, 19 after the
-#: complement-adjective rule, 12 after the fixed expressions, 9 after the head-alone rule
-STRAYS_AT_MOST = 9
+#: complement-adjective rule, 12 after the fixed expressions, 9 after the head-alone rule, 7 after "a fan of"
+STRAYS_AT_MOST = 7
 #: real rows of `STRAYS` naming their kind: 20 of 21 before and after every rule
 REAL_AT_LEAST = 20
 
@@ -88,6 +88,9 @@ def test_the_same_word_as_the_thing_is_kept(text: str, kind: str) -> None:
     # a review of a film
     ("A box-office flop, but a cult hit on video.", "cardboard_box"),
     ("Sink or swim: the new hires get no training.", "sink"),
+    # a dating profile, a fan letter: "be a fan of", a person
+    ("Not a fan of early mornings, but I love a long walk.", "ceiling_fan"),
+    ("Dear Ms Hale, I have been a huge fan of your novels since school.", "ceiling_fan"),
 ])
 def test_a_fixed_expression_names_no_thing(text: str, not_kind: str) -> None:
     assert not_kind not in _kinds(text)
@@ -99,6 +102,7 @@ def test_a_fixed_expression_names_no_thing(text: str, not_kind: str) -> None:
     ("The ball is in the garden.", "ball"),
     ("Put the book on the shelf by the box.", "book"),
     ("Leave the box of tissues by the sink.", "sink"),
+    ("The fan of the cooker hood is noisy.", "ceiling_fan"),
 ])
 def test_the_words_outside_the_expression_still_name_things(text: str, kind: str) -> None:
     assert kind in _kinds(text)

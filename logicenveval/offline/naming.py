@@ -174,6 +174,7 @@ FIXED_EXPRESSIONS: tuple[tuple[str, ...], ...] = (
     ("cup", "final"), ("world", "cup"), ("cup", "tie"),
     ("kettle", "of", "fish"), ("go", "to", "pot"), ("pot", "luck"),
     ("mirror", "image"), ("bed", "of", "rose"),
+    ("a", "fan", "of"), ("big", "fan", "of"), ("huge", "fan", "of"),
 )
 #: words naming an animal kept at home, as the catalog's kinds for one are named ("pet bowl",
 #: "dog bowl", "cat bed") and as a text names the animal ("the cat flap", "walk the dog")
