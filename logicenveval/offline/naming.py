@@ -201,6 +201,10 @@ _PARTS = {"level": "shelf", "tier": "shelf", "shelf": "shelf"}
 #: words that rank parts or say which one ("on the next", "the top one")
 _ORDINALS = frozenset({"first", "second", "third", "fourth", "next", "last", "top", "middle", "bottom",
                        "upper", "lower", "left", "right", "other", "one", "front", "back"})
+#: ordinals of a series of events or rounds: "the last game", "the next game" (`_Reader.head_alone`)
+_SERIES = frozenset({"first", "second", "third", "next", "last", "final", "previous"})
+#: prepositions placing a person at a place: "behind the bar", "at the bar" (`_Reader.head_alone`)
+_STANDING_AT = frozenset({"behind", "at"})
 #: verbs that lead a list of what each part holds ("three levels hold novels, essays and ...")
 _HOLDING = frozenset({"hold", "keep", "store", "contain", "take", "carry", "be", "are", "is", "for"})
 #: words of an item that say nothing of which one it is
@@ -756,18 +760,21 @@ class _Reader:
 
     def head_alone(self, i: int, category: str) -> bool:
         """Whether the word at `i`, no kind's name by itself and the head of names of `category`
-        only ("bar" of "soap bar" and "bar of soap", "game" of "board game"), stands alone: no
-        word the names add to it (`dropped_modifiers`: "soap", "board") is said anywhere in the
-        text and no noun before it names a sort ("fly spray": a sort of spray, `modified`); an
-        ordinal says which one of a series, no sort ("the last game"). Such a head names its
-        other senses ("behind the bar", "the last game", "the bar is open"), not the kind: a
-        head names a kind alone only where the text speaks of that kind (its modifiers, or the
-        kind named before, `bare_noun`)."""
+        only ("bar" of "soap bar" and "bar of soap", "game" of "board game"), stands where its
+        other senses do: after a series ordinal (`_SERIES`: "the last game", "the next game", a
+        game of a series, a match) or as the place a person stands behind or at (`_STANDING_AT`:
+        "behind the bar", "at the bar"), of a kind one picks up (no one stands behind a bar of
+        soap) - with no word those names add ("soap", "board": `dropped_modifiers`) said anywhere
+        in the text. Elsewhere a head alone names its one kind, as everyday speech does ("put the
+        racket on the shelf", "my controller", "my bat"); a kind named before is read by
+        `bare_noun`'s earlier steps."""
         words = self.text.words
-        if self.dropped_modifiers(category, words[i]) & self.text.said:
+        if self.dropped_modifiers(category, words[i]) & self.text.said or i < 2 or words[i - 1] not in _ARTICLES \
+                and words[i - 1] not in _SERIES:
             return False
-        prev = self.text.raw[i - 1] if i > 0 else ""
-        return not (self.modified(i) and prev not in _ORDINALS and "NOUN" in getAllLemmas(prev))
+        if words[i - 1] in _SERIES:
+            return words[i - 2] in _ARTICLES
+        return words[i - 2] in _STANDING_AT and self.catalog.categories[category].pickable
 
     def sort_named(self, i: int, options: list[str]) -> bool:
         """Whether the text names its own sort of the thing at word `i` by a noun before it that no
