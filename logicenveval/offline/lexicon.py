@@ -84,6 +84,40 @@ def adjective_only(word: str) -> bool:
     return set(lemmas) == {"ADJ"} and word in lemmas["ADJ"]
 
 
+#: verbs (lemmas) after which a bare word that is also an adjective is their complement, no noun: a
+#: verb of being or becoming ("is it safe", "stay safe", "keep safe", "feel fine") or a verb of
+#: moving or doing that takes a flat adverb ("drive safe", "pack light", "travel light", "play fair")
+#: (no verb a terse note puts before a thing: "turn light on", "get light bulb", "hold fan")
+COMPLEMENT_VERBS = frozenset({"be", "stay", "remain", "keep", "seem", "look", "feel", "become", "go", "sound", "grow",
+                              "drive", "ride", "travel", "pack", "play", "fly", "walk", "arrive"})
+#: an object (or subject) pronoun: a bare adjective right after one is its complement ("keep it
+#: safe", "is it safe", "hold them steady"); "her", also a possessive, is left out
+OBJECT_PRONOUNS = frozenset({"it", "them", "me", "us", "him", "you", "everyone", "everybody", "everything"})
+
+#: adverbs of place a verb of moving takes before its complement ("get home safe", "got back safe",
+#: "made it there safe"); after a determiner they are nouns ("the back safe")
+PLACE_ADVERBS = frozenset({"home", "back", "there", "here"})
+
+
+def complement_adjective(word: str, prev: str, prev_lead: str) -> bool:
+    """Whether `word` (as written), with `prev` right before it and `prev_lead` before that, is an
+    adjective or adverb said of something, no noun: a word the lemmatiser's dictionary lists as an
+    adjective or adverb standing with no determiner after a verb of being or a verb taking a flat
+    adverb (`COMPLEMENT_VERBS`: "drive safe", "is safe", "pack light"), after an object pronoun
+    ("keep it safe", "is it safe") or an adverb of place (`PLACE_ADVERBS`: "get home safe"), or after a plural noun its verb's object ("keeps the kids
+    safe"); a singular noun after a determiner there is a compound's modifier ("the wall safe")."""
+    lemmas = getAllLemmas(word)
+    if not {"ADJ", "ADV"} & set(lemmas) or not prev.isalpha():
+        return False
+    if prev in OBJECT_PRONOUNS or prev in PLACE_ADVERBS and prev_lead not in VERB_OBJECTS:
+        return True
+    verbs = getAllLemmas(prev, upos="VERB").get("VERB", ())
+    if COMPLEMENT_VERBS & set(verbs) and prev_lead not in NOT_BEFORE_VERBS and prev_lead not in VERB_OBJECTS:
+        return True
+    plural = noun_lemma(prev) != prev and "NOUN" in getAllLemmas(prev)
+    return plural and prev_lead in {"the", "my", "our", "your", "their", "his", "her"}
+
+
 #: quantifiers the lemmatiser's dictionary lists as nouns: after a noun one floats off its subject
 #: ("the mugs both go", "the plates each need", "asleep on the couch all day"), never a head
 QUANTIFIERS = frozenset({"all", "both", "each", "none", "many", "some", "any", "neither", "another"})

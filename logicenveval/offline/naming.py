@@ -38,6 +38,7 @@ from logicenveval.offline.lexicon import (
     SPARE_WORDS,
     TIME_HEADS,
     adjective_only,
+    complement_adjective,
     compound_head,
     gerund_of,
     singular,
@@ -150,6 +151,31 @@ REGIONAL_SENSES: tuple[tuple[frozenset[str], dict[str, str]], ...] = (
 #: own. Read when the text names its own sort by a modifier no kind's name holds ("the card table",
 #: "a trestle table", "the folding table": `_Reader.bare_noun`)
 HEAD_SENSES = {"table": "dining_table"}
+
+#: fixed expressions of general English in which a catalog kind's word names no thing (idioms a
+#: dictionary of idioms lists, and compounds of another sense): as the text writes them, each word
+#: singular, a verb by its lemma. Their words name nothing (`_Reader.fixed`): "bar none", "threw in
+#: the towel", "outside the box", "a box-office hit", "a sink or swim moment"
+FIXED_EXPRESSIONS: tuple[tuple[str, ...], ...] = (
+    ("bar", "none"), ("raise", "the", "bar"), ("set", "the", "bar"),
+    ("by", "the", "book"), ("in", "my", "book"), ("hit", "the", "book"), ("cook", "the", "book"),
+    ("an", "open", "book"),
+    ("outside", "the", "box"), ("box", "office"), ("tick", "the", "box"), ("tick", "a", "box"),
+    ("sink", "or", "swim"), ("but", "the", "kitchen", "sink"),
+    ("throw", "in", "the", "towel"),
+    ("get", "the", "ball", "rolling"), ("start", "the", "ball", "rolling"), ("keep", "the", "ball", "rolling"),
+    ("on", "the", "ball"), ("drop", "the", "ball"), ("have", "a", "ball"),
+    ("glass", "ceiling"),
+    ("on", "the", "safe", "side"), ("safe", "bet"), ("safe", "and", "sound"),
+    ("in", "light", "of"), ("shed", "light", "on"), ("come", "to", "light"), ("green", "light"),
+    ("make", "light", "of"),
+    ("turn", "the", "table"), ("under", "the", "table"),
+    ("around", "the", "clock"), ("round", "the", "clock"), ("against", "the", "clock"), ("on", "the", "clock"),
+    ("cup", "final"), ("world", "cup"), ("cup", "tie"),
+    ("kettle", "of", "fish"), ("go", "to", "pot"), ("pot", "luck"),
+    ("mirror", "image"), ("bed", "of", "rose"),
+    ("a", "fan", "of"), ("big", "fan", "of"), ("huge", "fan", "of"),
+)
 #: words naming an animal kept at home, as the catalog's kinds for one are named ("pet bowl",
 #: "dog bowl", "cat bed") and as a text names the animal ("the cat flap", "walk the dog")
 ANIMAL_WORDS = frozenset({"pet", "dog", "cat", "puppy", "kitten", "rabbit", "hamster", "guinea",
@@ -175,6 +201,10 @@ _PARTS = {"level": "shelf", "tier": "shelf", "shelf": "shelf"}
 #: words that rank parts or say which one ("on the next", "the top one")
 _ORDINALS = frozenset({"first", "second", "third", "fourth", "next", "last", "top", "middle", "bottom",
                        "upper", "lower", "left", "right", "other", "one", "front", "back"})
+#: ordinals of a series of events or rounds: "the last game", "the next game" (`_Reader.head_alone`)
+_SERIES = frozenset({"first", "second", "third", "next", "last", "final", "previous"})
+#: prepositions placing a person at a place: "behind the bar", "at the bar" (`_Reader.head_alone`)
+_STANDING_AT = frozenset({"behind", "at"})
 #: verbs that lead a list of what each part holds ("three levels hold novels, essays and ...")
 _HOLDING = frozenset({"hold", "keep", "store", "contain", "take", "carry", "be", "are", "is", "for"})
 #: words of an item that say nothing of which one it is
@@ -316,6 +346,7 @@ class _Reader:
         # "hold novels, essays, and / all other books") goes on on the next line: no sentence end
         gaps = [" " if k and "\n" in g and not g.strip() and raw[k - 1] in RUN_ON_WORDS else g for k, g in enumerate(gaps)]
         self.text = _Text([w for w, _, _ in toks], raw, gaps)
+        self.fixed = self._fixed_expressions()
         self.named: set[str] = set()  # kinds named outright (by a full name or synonym)
         self.context = self._context()
         self.room_types = {room_type_of(r) for r in rooms}
@@ -354,12 +385,36 @@ class _Reader:
         #: rack": a rack with shelves, `part_said_of`)
         self.part_for: dict[int, str] = {}
 
+    def _fixed_expressions(self) -> frozenset[int]:
+        """The words of the text's fixed expressions (`FIXED_EXPRESSIONS`), within one stretch of
+        words without punctuation but a hyphen ("a box-office hit"): they name no thing."""
+        words, raw, gaps = self.text.words, self.text.raw, self.text.gaps
+        lemmas: dict[int, tuple[str, ...]] = {}
+
+        def fits(k: int, word: str) -> bool:
+            if words[k] == word:
+                return True
+            if k not in lemmas:
+                lemmas[k] = getAllLemmas(raw[k], upos="VERB").get("VERB", ())
+            return word in lemmas[k]
+
+        out: set[int] = set()
+        for i in range(len(words)):
+            for expression in FIXED_EXPRESSIONS:
+                n = len(expression)
+                if i + n <= len(words) and all(fits(i + k, w) and (k == 0 or gaps[i + k] in COMPOUND_JOINS)
+                                               for k, w in enumerate(expression)):
+                    out.update(range(i, i + n))
+        return frozenset(out)
+
     # -- noun phrases ----------------------------------------------------------------------
 
     def match(self, i: int) -> tuple[int, str | None]:
         """(length, category) of the longest catalog name starting at word `i`, within one
         stretch of words without punctuation ("the floor is wet, mop it" names no wet mop)."""
         words, gaps = self.text.words, self.text.gaps
+        if i in self.fixed:  # "bar none", "threw in the towel": no thing
+            return 1, None
         stretch = next((k for k in range(i + 1, len(words)) if _BREAK.search(gaps[k])), len(words)) - i
         found = next(((n, self.phrases[tuple(words[i:i + n])])
                       for n in range(min(self.longest, len(words) - i, stretch), 0, -1)
@@ -442,7 +497,7 @@ class _Reader:
             return 1, None  # "a bag of pet food": the food is the object
         if word in _PACKAGING and nxt == "of" and self.other_contents(i, category):
             return 1, None  # "a whole bag of crisps": no trash bag
-        if self.verb(i) or self.place_sense(i) or self.reading_label(i):
+        if self.verb(i) or self.place_sense(i) or self.reading_label(i) or self.adjective_sense(i):
             return 1, None
         if (laundry := self.laundry_heading(i)) is not None:
             self.said_as[laundry] = word  # "Used scrubs - ... into the laundry hamper": laundry
@@ -551,6 +606,21 @@ class _Reader:
         return prev not in _DETERMINERS and prev not in _COUNTS and prev not in self.possessors \
             and not (j < len(words) and not gaps[j].strip() and (self.match(j)[1] is not None or words[j] in self.heads))
 
+    def adjective_sense(self, i: int) -> bool:
+        """Whether the one-word name at word `i` is an adjective or adverb where it stands, no
+        thing: the complement of a verb of being, a flat adverb or an object's complement with no
+        determiner (`lexicon.complement_adjective`: "drive safe", "is it safe", "keeps the kids
+        safe", "pack light"), or a degree before a colour word ("the light blue mug", "a light
+        grey coat"). A heading or list item's first word ("Safe: code 1234") stays a noun."""
+        raw, gaps = self.text.raw, self.text.gaps
+        nxt = raw[i + 1] if i + 1 < len(raw) and not gaps[i + 1].strip() else ""
+        if nxt in COLOR_WORDS and "ADJ" in getAllLemmas(raw[i]):
+            return True
+        if i == 0 or gaps[i].strip():
+            return False
+        lead = raw[i - 2] if i > 1 and not gaps[i - 1].strip() else ""
+        return complement_adjective(raw[i], raw[i - 1], lead)
+
     def place_sense(self, i: int) -> bool:
         """Whether the one-word name at word `i` is a thing's usual place ("its designated spot",
         `_PLACE_SENSES`), not an object."""
@@ -642,6 +712,8 @@ class _Reader:
                 return ahead  # "And the light - is it on? Then flick off the switch": one thing
         if exact is None and (not options or not (self.leads_noun(i) or self.modified(i)) or word in self.room_heads):
             return None
+        if exact is None and len(set(options)) == 1 and self.head_alone(i, options[0]):
+            return None  # "behind the bar", "the last game" (no soap, no board said): no soap bar, no board game
         prev = self.text.words[i - 1] if i > 0 else ""
         candidates = options if options else [exact]
         written = self.text.raw[i]
@@ -685,6 +757,24 @@ class _Reader:
                     words_of(category)[-1] == word)
 
         return max(candidates, key=score)
+
+    def head_alone(self, i: int, category: str) -> bool:
+        """Whether the word at `i`, no kind's name by itself and the head of names of `category`
+        only ("bar" of "soap bar" and "bar of soap", "game" of "board game"), stands where its
+        other senses do: after a series ordinal (`_SERIES`: "the last game", "the next game", a
+        game of a series, a match) or as the place a person stands behind or at (`_STANDING_AT`:
+        "behind the bar", "at the bar"), of a kind one picks up (no one stands behind a bar of
+        soap) - with no word those names add ("soap", "board": `dropped_modifiers`) said anywhere
+        in the text. Elsewhere a head alone names its one kind, as everyday speech does ("put the
+        racket on the shelf", "my controller", "my bat"); a kind named before is read by
+        `bare_noun`'s earlier steps."""
+        words = self.text.words
+        if self.dropped_modifiers(category, words[i]) & self.text.said or i < 2 or words[i - 1] not in _ARTICLES \
+                and words[i - 1] not in _SERIES:
+            return False
+        if words[i - 1] in _SERIES:
+            return words[i - 2] in _ARTICLES
+        return words[i - 2] in _STANDING_AT and self.catalog.categories[category].pickable
 
     def sort_named(self, i: int, options: list[str]) -> bool:
         """Whether the text names its own sort of the thing at word `i` by a noun before it that no
@@ -1557,6 +1647,9 @@ class _Reader:
         while i < len(words):
             # (a word of the sentence before is no determiner: "... the right one. Dolls go in ...")
             prev = words[i - 1] if i > 0 and not _SENTENCE_END.search(self.text.gaps[i]) else ""
+            if i in self.fixed:
+                i += 1  # "bar none", "threw in the towel": a fixed expression names no thing
+                continue
             if i in self.consumed:
                 n, category = self.match(i)
                 if category is not None:
