@@ -11,8 +11,12 @@ full, on the floor, there or missing) for several catalog kinds and rooms — se
 each inside a short description with an action clause, and checks that the reader
 (`offline.analysis.analyse`, on the brief the offline model names itself, the entry the model's
 factor reply comes from) asks the condition's factor: one factor whose values are the expected
-fact and its negation. Which branch the action falls under is not checked (the figure is
-whether the condition is read at all, the loss "a value never set" on unseen text).
+fact and its negation (`read`, the loss "a value never set" on unseen text), and that the plan
+`analysis.nest` builds puts the sentence's action under the value the condition says and not
+under the other (`branch`: "if the tv is off, switch it on" under "no"; a negated verb group in
+a question makes a negative question, which asks the positive proposition). The figure of the
+r22 connectives alone is printed too (0.9965 when the later forms were added), so that the
+forms added since do not hide a fall.
 
 Combinations that English does not form ("Should the lamp might be on") are left out by the
 tables (`None` cells), so every sentence measured is one a writer could write.
@@ -26,11 +30,11 @@ from __future__ import annotations
 
 import argparse
 from collections import defaultdict
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 from logicenveval.domain.catalog import Catalog, load_catalog
-from logicenveval.offline.analysis import analyse
+from logicenveval.offline.analysis import analyse, nest
 from logicenveval.offline.naming import name_objects
 
 
@@ -58,11 +62,15 @@ class State:
     fact: str
     action: str
     verbs: dict[str, Verb]
+    #: the state is the fact's negation ("off" of `state(x, toggled_on)`): the action falls
+    #: under the factor's "no"
+    negative: bool = False
 
 
 def _state(name: str, fact: str, action: str, simple: str, *, progressive: str | None = None,
            participle: str | None = None, negated: tuple[str, str] | None = None,
-           adjunct: str = "again", later: str = "earlier", idioms: tuple[Verb, ...] = ()) -> State:
+           adjunct: str = "again", later: str = "earlier", idioms: tuple[Verb, ...] = (),
+           negative: bool = False) -> State:
     """The verb groups of one state from its words: `simple` after "is", `progressive` after
     "is still", `participle` after "has been" / "was" (perfect, passive), `negated` the finite
     word and rest of a negated group with the same meaning ("isn't", "switched off"); `adjunct`
@@ -86,7 +94,7 @@ def _state(name: str, fact: str, action: str, simple: str, *, progressive: str |
         verbs["negated"] = Verb(negated[0], negated[1], None)
     for n, idiom in enumerate(idioms, 1):
         verbs[f"idiom {n}"] = idiom
-    return State(name, fact, action, verbs)
+    return State(name, fact, action, verbs, negative)
 
 
 #: the states, each with its expected fact and verb groups
@@ -94,27 +102,27 @@ STATES: dict[str, State] = {s.name: s for s in (
     _state("on", "state({x}, toggled_on)", "switch it off", "switched on", progressive="running",
            participle="left on", negated=("isn't", "switched off"), adjunct="in there", later="all night"),
     _state("off", "state({x}, toggled_on)", "switch it on", "off", participle="switched off",
-           negated=("isn't", "on"), adjunct="right now"),
+           negated=("isn't", "on"), adjunct="right now", negative=True),
     _state("open", "state({x}, open)", "close it", "open", participle="left open", negated=("isn't", "shut"),
            adjunct="again", later="this morning"),
     _state("closed", "state({x}, open)", "open it", "closed", participle="shut", negated=("isn't", "open"),
-           adjunct="by now"),
+           adjunct="by now", negative=True),
     _state("dirty", "state({x}, dirty)", "wash it", "dirty", participle="left dirty",
            negated=("hasn't been", "washed"), adjunct="again", later="after lunch"),
     _state("clean", "state({x}, dirty)", "put it away", "clean", participle="washed", negated=("isn't", "dirty"),
-           adjunct="already", later="yesterday"),
+           adjunct="already", later="yesterday", negative=True),
     _state("wet", "state({x}, wet)", "hang it up to dry", "wet", participle="left wet",
            progressive="dripping", negated=("isn't", "dry"), adjunct="still", later="overnight"),
     _state("empty", "state({x}, filled)", "fill it", "empty", participle="emptied", negated=("isn't", "full"),
-           adjunct="at the moment", later="overnight"),
+           adjunct="at the moment", later="overnight", negative=True),
     _state("full", "state({x}, filled)", "empty it", "full", participle="filled up",
            negated=("hasn't been", "emptied"), adjunct="to the brim", later="this morning"),
     _state("on the floor", "on({x}, floor)", "pick it up", "on the floor", progressive="lying on the floor",
            participle="left on the floor", adjunct="again"),
-    _state("missing", "exists({x})", "tell me", "missing", participle="taken", negated=("isn't", "there"),
+    _state("missing", "exists({x})", "let me know", "missing", participle="taken", negated=("isn't", "there"),
            adjunct="again", idioms=(Verb("has", "gone", "have gone", elidable=True),
                                     Verb("is", "nowhere to be seen", "be nowhere to be seen"),
-                                    Verb("has", "disappeared", "have disappeared"))),
+                                    Verb("has", "disappeared", "have disappeared")), negative=True),
 )}
 
 #: kinds by state: (catalog kind, the noun used, its room, a possessive or article)
@@ -159,7 +167,26 @@ CONNECTIVES: dict[str, str] = {
     "X? Then": "{C}? Then {A}.",
     "Is X? If so": "{Q}? If so, {A}.",
     "check whether; if it is": "Check whether {C}; if {P} {F}, {A}.",
+    # the forms r22 found missing (twelfth session, second round)
+    "Isn't X? If so": "{N}? If so, {A}.",
+    "X, isn't it? Then": "{C}, {T}? Then {A}.",
+    "Is X? If yes; if no": "{Q}? If yes, {A}. If no, leave it.",
+    "either; first case": "Either {C} or not. In the first case, {A}; in the second, leave it.",
+    "if; else": "If {C}, {A}; else leave it.",
+    "if; if not": "If {C}, {A}. If not, leave it as it is.",
+    "only if": "{A} only if {C}.",
+    "as long as": "As long as {C}, {A}.",
+    "provided that": "Provided that {C}, {A}.",
 }
+
+#: the r22 matrix's connectives, whose figure (0.9965) the later forms are not to lower
+R22_CONNECTIVES = tuple(CONNECTIVES)[:16]
+
+#: the finite word of a question's tag after each finite word, of the reverse polarity
+#: ("it's on, isn't it?", "it isn't off, is it?"), and of a negative question ("Isn't the lamp
+#: on?") after a positive one; a finite word not here forms neither
+_TAGS: dict[str, str] = {"is": "isn't", "'s": "isn't", "has": "hasn't", "was": "wasn't", "isn't": "is",
+                         "hasn't been": "has"}
 
 #: openings before the condition, one per subject form: the room, and where the subject is a
 #: pronoun or left out, the thing named first
@@ -181,6 +208,9 @@ class Case:
     state: str
     kind: str
     room: str
+    #: the action the sentence says, and whether it falls under the fact's negation ("off")
+    action: str = ""
+    negative: bool = False
 
 
 def _room_words(room: str) -> str:
@@ -219,10 +249,18 @@ def _case(connective: str, subject: str, verb_form: str, state: State, kind: str
         fill_q = f"{first} {said} {more} {verb.rest}".replace("  ", " ")
     else:
         fill_q = ""
+    fill_n = fill_t = ""
+    if "{N}" in template or "{T}" in template:
+        if subject == "elided" or verb.finite not in _TAGS:
+            return None
+        if "{N}" in template and verb.finite not in ("is", "has", "was"):
+            return None  # "Is the lamp not off?" is another form, not a negative question
+        fill_n = f"{_TAGS[verb.finite]} {said} {verb.rest}"
+        fill_t = f"{_TAGS[verb.finite]} it"
     finite = {"'s": "is", "might": "is", "hasn't been": "has", "isn't": "is"}.get(verb.finite, verb.finite)
     if verb.finite.startswith(("isn't", "hasn't")):
         finite = f"{finite}n't" if finite != "is" else "isn't"
-    body = template.format(C=cond, A=state.action, Q=fill_q, S=fill_s, F=finite, P="it")
+    body = template.format(C=cond, A=state.action, Q=fill_q, S=fill_s, F=finite, P="it", N=fill_n, T=fill_t)
     body = body[0].upper() + body[1:]
     opening = OPENINGS[subject].format(room=_room_words(room), det=det, noun=noun)
     if subject == "dislocated":
@@ -230,7 +268,11 @@ def _case(connective: str, subject: str, verb_form: str, state: State, kind: str
     if subject == "elided":
         body = body[0].lower() + body[1:]
     text = f"{opening} {body} Then tell me when you're done."
-    return Case(text, state.fact.format(x=kind), connective, subject, verb_form, state.name, kind, room)
+    # a negated verb group in a question makes a negative question, which asks the positive
+    # proposition ("Isn't the tv on? If so, ..." is "if the tv is on"): the action's branch turns
+    asks_positive = bool(fill_q) and verb_form == "negated"
+    return Case(text, state.fact.format(x=kind), connective, subject, verb_form, state.name, kind, room,
+                state.action, state.negative != asks_positive)
 
 
 def cases() -> list[Case]:
@@ -255,10 +297,23 @@ def _brief(text: str, room: str, catalog: Catalog) -> dict[str, Any]:
     return {"id": "t", "description": text, "rooms": [room], "roles": roles}
 
 
-def read_right(case: Case, catalog: Catalog) -> bool:
-    """Whether the reader asks the case's fact: a factor with the fact and its negation."""
+def reading(case: Case, catalog: Catalog) -> tuple[bool, bool]:
+    """Whether the reader asks the case's fact (a factor with the fact and its negation), and
+    whether the plan it builds (`analysis.nest`, the tree the offline model's leaves come from)
+    puts the case's action under the value the condition says and not under the other: a
+    condition read but with its action under the wrong answer plans the task backwards."""
     factors = analyse(_brief(case.text, case.room, catalog), catalog).factors
-    return any({case.fact, f"not {case.fact}"} <= set(f.values.values()) for f in factors)
+    asked = [f for f in factors if {case.fact, f"not {case.fact}"} <= set(f.values.values())]
+    if not asked:
+        return False, False
+    f = replace(asked[0], context=[])
+    said = f"not {case.fact}" if case.negative else case.fact
+    tree = nest([f])
+
+    def acts(value: str) -> bool:
+        return case.action in " ".join(tree["branches"][value].get("plan") or []).lower()
+
+    return True, all(acts(v) == (cond == said) for v, cond in f.values.items())
 
 
 DIMENSIONS = ("connective", "subject", "verb", "state")
@@ -271,26 +326,34 @@ def main() -> None:
     args = ap.parse_args()
     catalog = load_catalog()
     todo = cases()[::25] if args.smoke else cases()
-    tally: dict[str, dict[str, list[int]]] = {d: defaultdict(lambda: [0, 0]) for d in DIMENSIONS}
-    missed: list[Case] = []
+    tally: dict[str, dict[str, list[int]]] = {d: defaultdict(lambda: [0, 0, 0]) for d in DIMENSIONS}
+    missed: list[tuple[Case, bool]] = []
+    read = branch = r22_read = r22_total = 0
     for case in todo:
-        ok = read_right(case, catalog)
+        ok, under = reading(case, catalog)
+        read += ok
+        branch += under
+        if case.connective in R22_CONNECTIVES:
+            r22_read += ok
+            r22_total += 1
         for d in DIMENSIONS:
             cell = tally[d][getattr(case, d)]
             cell[0] += ok
-            cell[1] += 1
-        if not ok:
-            missed.append(case)
+            cell[1] += under
+            cell[2] += 1
+        if not under:
+            missed.append((case, ok))
     for d in DIMENSIONS:
-        print(f"by {d}:")
-        for value, (good, total) in sorted(tally[d].items(), key=lambda kv: kv[1][0] / kv[1][1]):
-            print(f"  {value:28s} {good:5d}/{total:<5d} {good / total:.3f}")
+        print(f"by {d}:            read  branch")
+        for value, (good, right, total) in sorted(tally[d].items(), key=lambda kv: kv[1][0] / kv[1][2]):
+            print(f"  {value:28s} {good:5d}/{total:<5d} {good / total:.3f}  {right / total:.3f}")
     if args.why:
-        for case in missed:
-            print(f"MISSED [{case.connective} | {case.subject} | {case.verb} | {case.state}] {case.fact}: {case.text}")
-    good = len(todo) - len(missed)
-    print(f"condition_forms overall={good / len(todo):.4f} read={good} sentences={len(todo)}")
-
+        for case, ok in missed:
+            what = "BRANCH" if ok else "MISSED"
+            print(f"{what} [{case.connective} | {case.subject} | {case.verb} | {case.state}] {case.fact}: {case.text}")
+    print(f"condition_forms r22 connectives read={r22_read / max(r22_total, 1):.4f} sentences={r22_total}")
+    print(f"condition_forms overall={read / len(todo):.4f} branch={branch / len(todo):.4f} read={read} "
+          f"sentences={len(todo)}")
 
 if __name__ == "__main__":
     main()

@@ -71,7 +71,7 @@ def test_a_small_sample_is_composed_and_read() -> None:
     should = by_cell[("should", "dislocated", "passive", "open", "fridge")]
     assert "The fridge - should it be left open, close it." in should.text
     for case in (fridge, question, should):
-        assert FORMS.read_right(case, catalog)
+        assert FORMS.reading(case, catalog) == (True, True)  # read, and its action under the right answer
 
 
 # -- the participle of a verb whose result is a state says that state --------------------------

@@ -233,6 +233,10 @@ class Factor:
     clause: int = -1
     consequences: list[str] = field(default_factory=list)
     roles: set[str] = field(default_factory=set)
+    #: for each consequence, whether it holds when the factor's condition does ("if the lamp is
+    #: on, switch it off") or when it does not ("if the lamp is off, ...", "unless ...", an
+    #: "otherwise" after the condition): the branch `nest` plans it under
+    under: list[bool] = field(default_factory=list)
     #: (factor id, values) under which this factor is asked: the conditions it was stated under
     context: list[tuple[str, frozenset[str]]] = field(default_factory=list)
     raw_context: list[tuple[tuple[str, str, str], bool, str]] = field(default_factory=list, repr=False)
@@ -313,6 +317,24 @@ PHRASAL_STATES = tuple((re.compile(rf"\b(?:{verbs}) (?:{particles})\b"), state) 
 LIQUIDS = ("water", "wine", "milk", "juice", "coffee", "tea", "beer", "soup", "oil", "soda", "liquid", "drink")
 _CONTENTS = re.compile(rf"\bthere (?:is|are) (?:still |some |any |already |now |even )*(no |not any )?(?:{'|'.join(LIQUIDS)})"
                        rf"(?: left)? (?:in|inside) (it|them)\b")
+
+
+#: the auxiliaries that open a question or make its tag
+_AUX = r"(?:is|are|was|were|has|have|had|does|do|did|will|would|can|could|should)"
+#: a question's tag, after `expand` ("it's on, isn't it?" -> "it is on, is not it?"): it asks for
+#: agreement and says nothing of the clause, whatever its polarity
+_QUESTION_TAG = re.compile(rf",\s*{_AUX}(?: not)? (?:it|they|he|she|there|you|we|i)(?: not)?\s*(?=\?\s*$)")
+#: a negative question ("isn't the mug there?", "hasn't the bin been emptied?"): its "not" is
+#: the asker's expectation, not the proposition asked, which is the positive one; a negative
+#: polarity word ("isn't there any milk?", "hasn't it been washed yet?") keeps the negation
+_NEGATIVE_QUESTION = re.compile(rf"^(\W*{_AUX}) not\b(?=(?:(?!\b(?:any|anything|anyone|anybody|anywhere|ever|yet)\b)"
+                                rf"[^?])*\?\s*$)")
+
+
+def _unbiased(said: str) -> str:
+    """A question's proposition without its bias: the tag dropped and a negative question's
+    "not" (`_QUESTION_TAG`, `_NEGATIVE_QUESTION`); a statement is left as it is."""
+    return _NEGATIVE_QUESTION.sub(r"\1", _QUESTION_TAG.sub("", said))
 
 
 def _contents(said: str) -> str:
@@ -876,7 +898,7 @@ class _Reader:
         return found
 
     def facts(self, text: str) -> tuple[list[Fact], tuple[str, ...]]:
-        said = expand(text).lower()
+        said = _unbiased(expand(text).lower())
         for pattern, state in PHRASAL_STATES:
             said = pattern.sub(state, said)
         said = RAISING.sub("is", said)
@@ -1733,7 +1755,8 @@ def _copy(a: TaskAnalysis) -> TaskAnalysis:
     return TaskAnalysis(
         sentences=list(a.sentences),
         clauses=list(a.clauses),
-        factors=[replace(f, values=dict(f.values), consequences=list(f.consequences), roles=set(f.roles),
+        factors=[replace(f, values=dict(f.values), consequences=list(f.consequences), under=list(f.under),
+                         roles=set(f.roles),
                          context=list(f.context), raw_context=list(f.raw_context),
                          places=set(f.places)) for f in a.factors],
         groups=[list(g) for g in a.groups],
@@ -2454,6 +2477,11 @@ def _ensured(sentence: str) -> str:
     return _ENSURE.sub(plain, sentence)
 
 
+#: cues of a clause that asks, not conditions: the instruction before "whether" ("Check whether
+#: the lamp is on") is done either way, no branch of the answer
+_ASKING_CUES = frozenset({"whether"})
+
+
 def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     lex = Lexicon.build(brief, reading_catalog(catalog))
     kinds = {name: cat for name, role in dict(brief.get("roles") or {}).items()
@@ -2642,6 +2670,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     #: ("Clean the mirror if it is dirty. Use the cloth if we still have one; if there is no
     #: cloth, ..."): an absence stated there is only asked under those conditions
     carried: list[tuple[tuple[str, str, str], bool, str]] = []
+    #: whether the last condition said of each slot is its fact holding (see `Factor.under`)
+    holds: dict[tuple[str, str, str], bool] = {}
+    #: the sentence opens with "Then" after a sentence that was only a condition ("Suppose the
+    #: lamp is on. Then switch it off."): its instructions are that condition's consequences
+    answers_premise = False
     roles_of: dict[int, set[str]] = {}
     for cl in clauses:
         roles_of.setdefault(cl.sentence, set()).add(cl.role)
@@ -2660,6 +2693,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             carried = (context or carried) if cl.role in ("statement", "consequence") and not any(
                 not f.goal and not f.derived and not f.home for f in cl.facts) else []
             current_sentence, context = cl.sentence, (context if premise else [])
+            answers_premise = premise
         elif (cl.role == "condition" and ci >= 2 and clauses[ci - 1].role == "consequence"
               and clauses[ci - 2].role == "condition" and clauses[ci - 2].sentence == cl.sentence
               and (clauses[ci - 1].cue != cl.cue or (
@@ -2736,6 +2770,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # one, "the pillow, unless there is a pan - in that case ...", ends its instruction)
                 leading = ci == 0 or clauses[ci - 1].sentence != cl.sentence or clauses[ci - 1].role != "consequence"
                 added.append((slot, f.negated != (cl.cue == "unless" and leading), value))
+                holds[slot] = not added[-1][1]
+            elif conditional:
+                holds[slot] = not f.negated
             if f.kind == "location" and cl.role == "condition" and (
                     cl.cue == "unless" or re.search(r"\balready\b", cl.text.lower()) is not None):
                 entry["reached"] = True  # where the instruction puts it: see `Factor.stops`
@@ -2748,9 +2785,20 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                     entry["values"].append(value)
             entry.setdefault("condition", f.condition)
             last_key = slot
+            if cl.role == "condition" and cl.cue not in _ASKING_CUES and ci > 0 \
+                    and clauses[ci - 1].role == "consequence" \
+                    and clauses[ci - 1].sentence == cl.sentence and all(
+                        c.role == "statement" and not c.facts for c in clauses[:ci - 1] if c.sentence == cl.sentence):
+                # "Switch it off if it is on", "Empty it only if it is full", "The sock - pick it
+                # up if it is on the floor": an instruction opening the sentence (after a topic
+                # at most), its condition put after it, is the condition's branch
+                entry.setdefault("consequences", []).append(clauses[ci - 1].text)
+                entry.setdefault("under", []).append(holds[slot])
         context += added
-        if cl.role in ("consequence", "else") and last_key is not None:
+        if (cl.role in ("consequence", "else") or answers_premise and cl.role == "statement") \
+                and last_key is not None:
             found[last_key].setdefault("consequences", []).append(cl.text)
+            found[last_key].setdefault("under", []).append(holds.get(last_key, True) == (cl.role != "else"))
             found[last_key].setdefault("roles", set()).update(cl.mentions)
     for (role, attr_key), classes in reader.attribute_classes(unquote(str(brief["description"]))).items():
         entry = found.setdefault((role, "attr", attr_key), {"order": len(clauses), "sentence": -1,
@@ -2809,6 +2857,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
         factor.raw_context = e.get("context", [])
         factor.places = set(e.get("places", set()))
         factor.stops = not e.get("reached", False)
+        factor.under = list(e.get("under", []))
         slot_factor[(subject, kind, key)] = factor
         factors.append(factor)
     homes = {f.condition for cl in clauses if cl.role == "statement" and {w for w, _, _ in tokens(cl.text)} & HOMES
@@ -3212,6 +3261,16 @@ def _group(factors: list[Factor],
     return groups, roles
 
 
+def _consequence_under(f: Factor, holding: bool) -> str:
+    """The first instruction said for the branch where the factor's condition holds (or does
+    not): "if the lamp is off, switch it on" plans its action under "no", and a branch nothing
+    is said for leaves the thing as it is. A factor read without branches (one built from a
+    reply, `Factor.under` empty) keeps its first instruction under the condition."""
+    under = f.under or [True] * len(f.consequences)
+    said = [c for c, u in zip(f.consequences, under, strict=False) if u == holding]
+    return said[0] if said else "leave it as it is"
+
+
 def nest(factors: list[Factor]) -> dict[str, Any]:
     """A decision tree over one subtask's factors.
 
@@ -3240,8 +3299,7 @@ def nest(factors: list[Factor]) -> dict[str, Any]:
                 continue
             leaf = branches[value]
             if "plan" in leaf and not leaf["plan"]:
-                leaf["plan"] = [f.consequences[0] if value not in ("no", "elsewhere", "other")
-                                else "leave it as it is"]
+                leaf["plan"] = [_consequence_under(f, value not in ("no", "elsewhere", "other"))]
         return {"var": f.id, "query": f.question, "branches": branches}
 
     return build(0, frozenset(), {})

@@ -386,12 +386,32 @@ _PASSIVE_INSTRUCTION = (r",\s*(?:the|a|an|any|its|their|this|that|each|every)\s+
                         r"(?:will|shall|must|should|is\s+to|are\s+to)\s+(?:then\s+|also\s+|now\s+)?be\s+[a-z]+(?:ed|en|t)\b")
 
 
+#: "Either the mug is dirty or it is not.", "Either M lies on the floor or not": a proposition
+#: and its bare negation offered as two cases asks the proposition, as a question does
+_EITHER_OR_NOT = re.compile(r"^\W*either\s+(?P<asked>.+?),?\s+or\s+(?:(?:it|they|he|she|there|that|this|we|you|i)\s+"
+                            r"(?:is|are|was|were|does|do|did|has|have|had|can|will)(?:\s+not|n't)|not)\W*$", re.I)
+#: the cases of such a question named by their order, opening a clause ("In the first case,
+#: wash it; in the second, put it away", "If the former, ...; if the latter, ..."): the first is
+#: the case the proposition holds, as "if so" says, the second the other, as "if not"
+_BY_ORDER = re.compile(r"(^\W*|[;,:]\s*)(?:(?:in|for)\s+the\s+(first|former|second|latter)(?:\s+case\b|(?=\s*[,:]))"
+                       r"|if\s+the\s+(former|latter)\b)", re.I)
+_ORDER_CUES = {"first": "if so", "former": "if so", "second": "if not", "latter": "if not"}
+
+
+def _by_order(sentence: str) -> str:
+    """The cases named by order said as the pointing cues they stand for (`_BY_ORDER`)."""
+    return _BY_ORDER.sub(lambda m: m.group(1) + _ORDER_CUES[(m.group(2) or m.group(3)).lower()], sentence)
+
+
 def _split(sentence: str) -> list[tuple[str, str | None, str]]:
     """(text, cue, role) pieces of a sentence, recursively for chained conditionals; a verbless
     heading (`_heading`) is a `heading` piece, its instruction read after it."""
     # "still on? -> switch OFF.", "Laptop on the floor -> put it on the desk": the arrow is "then"
     sentence = ARROW.sub(" - ", re.sub(rf"([?:!]){ARROW.pattern}", r"\1 ", sentence))
-    sentence = _IF_NOT_PLACE.sub(", otherwise ", sentence)
+    sentence = _by_order(_IF_NOT_PLACE.sub(", otherwise ", sentence))
+    either = _EITHER_OR_NOT.match(sentence)
+    if either is not None:
+        return [(either.group("asked") + "?", "?", "condition")]
     states = _state_places(sentence)
     if states:
         return states  # "Bath towel on the floor: wet to the basket, dry to the rack"
@@ -508,6 +528,10 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
             pieces.append((tail[other.end():], "otherwise", "else"))
         return pieces
     cond, cons = (tail[: m.start()], tail[m.end():]) if m else (tail, "")
+    if cue in POINTING_CUES and cond.strip(" ."):
+        # "If so wash it.", "if so just leave it": a cue that is a whole condition by itself
+        # needs no comma; what follows it is its instruction
+        cond, cons = "", tail.lstrip()
     # "if its not in there put it in there": no comma; or before the comma of an alternative ("if
     # its dirty put it in the sink, otherwise in the cupboard": the instruction came before it)
     before_else = m is not None and re.match(
