@@ -87,9 +87,14 @@ FORMS: dict[str, tuple[str, tuple[str, ...]]] = {
     "progressive": ("{X} is sitting {P} {Y}.", ("the", "my", "name's", "pronoun")),
     "habitual usually": ("{X} usually stays {P} {Y}.", ("the", "my", "name's", "pronoun")),
     "third-person report": ("Tom left {X} {P} {Y} this morning.", ("the", "my", "name's", "pronoun")),
+    "titled third person": ("The cleaner had put {X} {P} {Y}.", ("the", "my", "name's", "pronoun")),
     "you'll find": ("You'll find {X} {P} {Y}.", ("the", "my", "name's", "pronoun")),
     "found": ("I found {X} {P} {Y}.", ("the", "my", "name's", "pronoun")),
+    "seen": ("I saw {X} sitting {P} {Y} this morning.", ("a", "the", "my", "name's")),
     "with on it": ("Look at {Y} with {X} {Pit} it.", ("a", "my", "name's")),
+    "terse participle": ("{X} left {P} {Y} overnight.", ("bare", "a", "my", "name's")),
+    "label colon": ("{X}: {P} {Y}.", ("the", "my", "name's")),
+    "label dash": ("{X} - {P} {Y}, as far as I know.", ("the", "my", "name's")),
     "relative where": ("Have a look at {Y}, where {X} is.", ("the", "my", "name's")),
     "relative which": ("{X}, which is {P} {Y}, needs a wipe.", ("the", "my", "name's")),
     "topic pronoun": ("As for {X}: it's {P} {Y}.", ("the", "my", "name's")),
@@ -97,7 +102,8 @@ FORMS: dict[str, tuple[str, tuple[str, ...]]] = {
     "aside brackets": ("{X} (it's {P} {Y}) needs a wipe.", ("the", "my", "name's")),
 }
 
-#: near misses: no current placement is stated; {X} the thing ("the ..."), {Y} the holder ("belongs
+#: near misses: no current placement is stated ("Find the mug on the counter" is no near miss:
+#: an instruction's definite noun phrase takes its place for granted, `placement._resting`); {X} the thing ("the ..."), {Y} the holder ("belongs
 #: on" names where a thing goes, `placement.MOTION`, which a condition may then doubt)
 NEAR_MISSES: dict[str, str] = {
     "condition if": "If {X} is {P} {Y}, take it out.",
@@ -115,10 +121,21 @@ NEAR_MISSES: dict[str, str] = {
     "prohibition": "Don't put {X} {P} {Y}.",
     "future": "{X} will go {P} {Y} later.",
     "where it belongs": "{X} belongs {P} {Y}.",
+    "condition third person": "If Tom left {X} {P} {Y}, bring it back.",
+    "question third person": "Did Tom leave {X} {P} {Y}?",
+    "negated report": "I didn't put {X} {P} {Y}.",
+    "doubted report": "Maybe Tom put {X} {P} {Y}.",
+    "doubted finding": "You might find {X} {P} {Y}.",
+    "condition finding": "If you see {X} {P} {Y}, leave it there.",
+    "habit third person": "Tom always leaves {X} {P} {Y}.",
+    "label question": "{X}: {P} {Y}?",
+    "label choice": "{X}: {P} {Y} or in the car.",
+    "generic participle": "Every {N} left {P} {Y} gets in the way.",
+    "condition participle": "If {X} left {P} {Y}, take it out.",
 }
 
 #: how the thing is said by subject form; "pronoun" names it the sentence before
-SUBJECT_DETS: dict[str, str] = {"the": "the", "my": "my", "a": "a", "name's": "Sam's", "pronoun": "the"}
+SUBJECT_DETS: dict[str, str] = {"the": "the", "my": "my", "a": "a", "name's": "Sam's", "pronoun": "the", "bare": ""}
 
 
 @dataclass(frozen=True)
@@ -141,6 +158,8 @@ def _cap(s: str) -> str:
 def _article(det: str, noun: str) -> str:
     if det == "a" and noun[0] in "aeiou":
         return f"an {noun}"
+    if not det:  # the terse register's bare noun ("Sock left in the drawer")
+        return noun
     return f"{det} {noun}"
 
 
@@ -192,7 +211,7 @@ def near_misses() -> list[Case]:
     for pair in PAIRS:
         for form, template in NEAR_MISSES.items():
             for prep in pair.preps:
-                body = _cap(template.format(X=f"the {pair.noun}", Y=f"the {pair.place}", P=prep))
+                body = _cap(template.format(X=f"the {pair.noun}", Y=f"the {pair.place}", P=prep, N=pair.noun))
                 text = f"Please go to the {pair.room.replace('_', ' ')}. {body} Then tell me when you're done."
                 out.append(Case(text, _fact(pair, prep), form, "the", prep, f"{pair.noun}/{pair.place}",
                                 pair.room, pair.item, pair.holder))
@@ -210,8 +229,12 @@ def facts(case: Case, catalog: Catalog) -> list[str]:
 
 
 def read_right(case: Case, catalog: Catalog) -> bool:
-    """Whether the reader states the case's placement."""
-    return case.fact.replace(" ", "") in facts(case, catalog)
+    """Whether the reader states the case's placement; "where" says no preposition, so on a
+    holder that is both a surface and a container (a nightstand) either relation is read right."""
+    told = facts(case, catalog)
+    if case.form == "relative where":
+        return any(f"({case.item},{case.holder})" in f for f in told)
+    return case.fact.replace(" ", "") in told
 
 
 def misread(case: Case, catalog: Catalog) -> bool:
