@@ -93,6 +93,7 @@ FORMS: dict[str, tuple[str, tuple[str, ...]]] = {
     "seen": ("I saw {X} sitting {P} {Y} this morning.", ("a", "the", "my", "name's")),
     "with on it": ("Look at {Y} with {X} {Pit} it.", ("a", "my", "name's")),
     "terse participle": ("{X} left {P} {Y} overnight.", ("bare", "a", "my", "name's")),
+    "appositive holder": ("{X} is {P} the whatsit, {Y}.", ("the", "my", "name's", "pronoun")),
     "label colon": ("{X}: {P} {Y}.", ("the", "my", "name's")),
     "label dash": ("{X} - {P} {Y}, as far as I know.", ("the", "my", "name's")),
     "relative where": ("Have a look at {Y}, where {X} is.", ("the", "my", "name's")),
@@ -132,6 +133,7 @@ NEAR_MISSES: dict[str, str] = {
     "label choice": "{X}: {P} {Y} or in the car.",
     "generic participle": "Every {N} left {P} {Y} gets in the way.",
     "condition participle": "If {X} left {P} {Y}, take it out.",
+    "apposition after a clause": "{X} fell {P} the way, {Y} wobbled.",
 }
 
 #: how the thing is said by subject form; "pronoun" names it the sentence before

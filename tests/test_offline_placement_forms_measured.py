@@ -179,3 +179,22 @@ def test_headline_participle(text: str, fact: str) -> None:
 ])
 def test_headline_near_misses(text: str, item: str, holder: str) -> None:
     assert not _placed(text, item, holder)
+
+
+# --- an apposition names a place the task's names do not ("on the taburete, the little stool") --
+
+@pytest.mark.parametrize(("text", "fact"), [
+    ("Mi abuela's book is on the mesita, the coffee table, as always.", "on(book,coffee_table)"),  # code-switched
+    ("The laptop sits on the bureau, the desk by the window.", "on(laptop,desk)"),  # a letter
+    ("Beta, your jacket is in the almirah, the wardrobe, please don't forget it.", "inside(jacket,wardrobe)"),
+])
+def test_apposed_holder(text: str, fact: str) -> None:
+    assert fact in _read(text)
+
+
+@pytest.mark.parametrize(("text", "item", "holder"), [
+    ("The mug is on its way, the desk is next.", "mug", "desk"),  # a new clause
+    ("If the book is on the mesita, the coffee table, move it.", "book", "coffee_table"),  # a condition
+])
+def test_apposed_near_misses(text: str, item: str, holder: str) -> None:
+    assert not _placed(text, item, holder)

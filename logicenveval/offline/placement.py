@@ -673,6 +673,26 @@ def _verb_kind(group: list[str]) -> str | None:
     return None
 
 
+#: prepositions that may go on an apposed place as its own modifier ("the desk by the window")
+_APPOSED_MODIFIERS = frozenset({"by", "near", "next", "beside", "under", "at"})
+
+
+def _apposed(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> Mention | None:
+    """The thing an apposition after a place no name of the task names says the place is ("on
+    the taburete, the little stool", "in the armoire, the big wardrobe", "on the whatsit, the
+    sideboard"): from `j`, a definite noun phrase (the article, adjectives) naming one role that
+    ends the clause or is followed by a comma or its own modifier ("the desk by the window"); else
+    None ("on the way, the mug fell" goes on)."""
+    words = sent.words
+    if j >= hi or words[j] != "the":
+        return None
+    m = next((t for t in ms if t.start > j and t.kind == "role"), None)
+    if m is None or len(m.roles) != 1 or not all(w.isalpha() and w not in VERBS | AT for w in words[j + 1:m.start]) \
+            or m.start - j > 3:
+        return None
+    return m if m.end >= hi or words[m.end] in PUNCT | _APPOSED_MODIFIERS else None
+
+
 def _active_perfect(group: list[str]) -> bool:
     """An active perfect of a verb of result ("had put", "have left", "has dropped"): a past act
     with its object after it, as the simple past is ("put", "left"); not a passive ("has been left")."""
@@ -708,6 +728,9 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
         # "lives on the props table", "on the wooden box": one modifier that names nothing
         # between the article and the place (as the naming step reads it, `naming.modified`)
         m = next((t for t in ms if t.start == k + 1 and t.kind == "role"), None)
+    if m is None and k + 2 < hi and words[k].isalpha() and words[k] not in PREP_OF_PLACE | VERBS \
+            and not any(t.start <= k < t.end for t in ms) and words[k + 1] == ",":
+        m = _apposed(sent, ms, k + 2, hi)  # "on the taburete, the little stool"
     if m is not None and m.kind == "room":
         # "sits on the cloakroom counter", "on the bedroom dresser": a room's name before a thing's
         # names which one (`_room_words`); the place is the thing
