@@ -165,7 +165,8 @@ def test_label_near_misses(text: str, item: str, holder: str) -> None:
 
 @pytest.mark.parametrize(("text", "fact"), [
     ("Item 3 of the claim. Old bath towel put down on the floor to soak up the leak.", "on(towel,floor)"),
-    ("Night log, 02:10: sock left in the drawer, laptop found on the desk.", "inside(sock,drawer)"),
+    ("Night log, 02:10: sock left in the drawer. Laptop found on the desk.", "inside(sock,drawer)"),
+    ("Night log, 02:10: sock left in the drawer. Laptop found on the desk.", "on(laptop,desk)"),
     ("Sam's jacket left in the wardrobe overnight.", "inside(jacket,wardrobe)"),  # a note
 ])
 def test_headline_participle(text: str, fact: str) -> None:
@@ -176,6 +177,8 @@ def test_headline_participle(text: str, fact: str) -> None:
     ("Every sock left in the drawer gets in the way.", "sock", "drawer"),  # generic, a verb follows
     ("If towel left on the floor, hang it up.", "towel", "floor"),  # a condition
     ("Pick up a sock lying in the drawer.", "sock", "drawer"),  # an instruction's indefinite thing
+    ("A mug left upon the desk, if it be dirty, goes in the sink.", "mug", "desk"),  # a case, its verb later
+    ("Laptop left on the desk? Put it away.", "laptop", "desk"),  # a question
 ])
 def test_headline_near_misses(text: str, item: str, holder: str) -> None:
     assert not _placed(text, item, holder)

@@ -1039,8 +1039,9 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
             if subjects and subjects[-1].end == start:  # "the keys lying on the floor": a modifier
                 if _definite(sent.words, subjects[-1].start):
                     kind = "presumed"
-                elif not (clause.mood == "statement" and (_held_list(words, clause, subjects[-1].start)
-                                                          or _headline(sent, clause, subjects, start, end))):
+                elif clause.mood == "statement" and _headline(sent, clause, subjects, start, end):
+                    kind = "presumed"  # a report ("Torch found on the bunk again"): a later "if on bunk" asks it
+                elif not (clause.mood == "statement" and _held_list(words, clause, subjects[-1].start)):
                     kind = ""
                 subjects = subjects[-1:]
             elif who >= lo and _agent(sent, ms, lo, who) and group[-1] in RESULT \
@@ -1114,17 +1115,19 @@ def _headline(sent: _Sentence, clause: Span, subjects: list[Mention], start: int
     """Whether a clause is only a noun-phrase list, a participle and its place, the terse
     register's statement (a claim form's "Old bath towel put down on the floor", a log's "Sock
     left in the drawer", a headline's "Laptop found on desk"), as a verbless "Bath mat on the
-    floor" is (`_fragment`): the list opens the clause and no finite verb follows the place before
-    a comma ("a towel left on the floor gets mouldy" says what happens to any)."""
+    floor" is (`_fragment`): the list opens the clause, its place is no "it", and no verb, no
+    subordinate clause and no question follow the place in its sentence ("a towel left on the
+    floor gets mouldy" says what happens to any; "Milk left in it -> ..." is a case of a list)."""
     words = sent.words
     covered = {k for m in subjects for k in range(m.start, m.end)}
     lo = clause.start + 1 if _possessor(words, clause.start, subjects[0].start) else clause.start
     opening = all(k in covered or w in LIST_GLUE or w in COLOR_WORDS or w in STATE_WORDS
                   for k, w in enumerate(words[lo:start], lo))
-    stop = next((k for k in range(end, clause.end) if words[k] in (",", ";")), clause.end)
-    # (a purpose "to soak up the leak" is no finite verb; a comma ends one headline of a list:
-    # "sock left in the drawer, laptop found on the desk")
-    return opening and not any(w in VERBS or w in NORMATIVE - {"to"} for w in words[end:stop])
+    # (a purpose "to soak up the leak" is no finite verb; a verb after a comma or in a clause of
+    # its own is this noun phrase's: "A bottle left upon the table, if it be empty, goes ...")
+    rest = words[end:]
+    return opening and rest[1:2] != ["it"] and not any(
+        w in VERBS or w in NORMATIVE - {"to"} or w in SUBORDINATORS or w == "?" for w in rest)
 
 
 def _held_list(words: list[str], clause: Span, start: int) -> bool:
