@@ -22,6 +22,7 @@ could write.
 
     python benchmarks/placement_forms.py            # the matrix, last line `placement_forms overall=...`
     python benchmarks/placement_forms.py --why      # and every sentence misread, every false reading
+    python benchmarks/placement_forms.py --smoke    # every 10th sentence, a second
 """
 
 from __future__ import annotations
@@ -251,9 +252,10 @@ DIMENSIONS = ("form", "subject", "prep", "pair")
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--why", action="store_true", help="print every sentence misread and every false reading")
+    ap.add_argument("--smoke", action="store_true", help="every 10th sentence and near miss only")
     args = ap.parse_args()
     catalog = load_catalog()
-    todo = cases()
+    todo = cases()[::10] if args.smoke else cases()
     tally: dict[str, dict[str, list[int]]] = {d: defaultdict(lambda: [0, 0]) for d in DIMENSIONS}
     missed: list[Case] = []
     for case in todo:
@@ -268,7 +270,7 @@ def main() -> None:
         print(f"by {d}:")
         for value, (good, total) in sorted(tally[d].items(), key=lambda kv: kv[1][0] / kv[1][1]):
             print(f"  {value:28s} {good:5d}/{total:<5d} {good / total:.3f}")
-    misses = near_misses()
+    misses = near_misses()[::10] if args.smoke else near_misses()
     false: list[Case] = [c for c in misses if misread(c, catalog)]
     by_miss: dict[str, list[int]] = defaultdict(lambda: [0, 0])
     for c in misses:
