@@ -21,6 +21,7 @@ BENCHMARKS = ROOT / "benchmarks"
 #: script (and extra arguments) -> text its output must hold
 QUICK: dict[tuple[str, ...], str] = {
     ("condition_forms.py",): "condition_forms overall=",
+    ("placement_forms.py",): "placement_forms overall=",
     ("holodeck_solver.py",): "placed_ratio=",
     ("hostile_inputs.py",): "worst_refusal_ms=",
     ("layout.py",): "DEFAULT_SOLVER='cpsat'",

@@ -60,6 +60,7 @@ from logicenveval.offline.sentences import (
     ACTIONS,
     ARROW_MARK,
     BELIEFS,
+    FREQUENCY,
     NORM_ADVERBS,
     PERSONAL_SUBJECTS,
     PREP_IN,
@@ -413,6 +414,7 @@ def _read_sentence(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Re
             _possessive(sent, clause, ms, lex, catalog, reading)
         if clause.mood == "statement" and not clause.doubted:
             _existential(sent, clause, ms, lex, catalog, reading)
+            _perceived(sent, clause, ms, lex, catalog, reading)
         if clause.mood == "statement" and not clause.doubted or _epithet_heading(sent, clause):
             _inverted(sent, clause, ms, lex, catalog, reading)
         if clause.mood != "condition" and not clause.doubted:
@@ -422,6 +424,8 @@ def _read_sentence(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Re
             _kept(sent, clause, ms, lex, catalog, reading)
         if clause.mood == "statement" and not clause.doubted:
             _with(sent, clause, ms, lex, catalog, reading)
+        elif clause.mood == "instruction" and plain:
+            _with(sent, clause, ms, lex, catalog, reading, kind="presumed")
         _in_room(sent, clause, ms, reading)
         _resting(sent, clause, ms, lex, catalog, reading)
         subjects = [m for m in ms if m.kind in ("role", "room")]
@@ -660,12 +664,40 @@ def _verb_kind(group: list[str]) -> str | None:
         return "settled"
     if last in RESULT:
         perfect = bool(set(verbs) & PERFECT) and "been" in verbs
-        active_past = len(verbs) == 1  # "someone left a mark on the floor" (with its subject)
+        # "someone left a mark on the floor", "we had put the box on the stool" (with its subject)
+        active_past = len(verbs) == 1 or _active_perfect(verbs)
         # a past passive reports what was done, where a present one may instruct ("two cups were
         # left on the trolley", "the keys were dropped on the mat"; not "the plate is put away")
         past = len(verbs) == 2 and verbs[0] in PAST_BE
         return "settled" if perfect or last in PASSIVE_STATIVE or active_past or past else None
     return None
+
+
+#: prepositions that may go on an apposed place as its own modifier ("the desk by the window")
+_APPOSED_MODIFIERS = frozenset({"by", "near", "next", "beside", "under", "at"})
+
+
+def _apposed(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> Mention | None:
+    """The thing an apposition after a place no name of the task names says the place is ("on
+    the taburete, the little stool", "in the armoire, the big wardrobe", "on the whatsit, the
+    sideboard"): from `j`, a definite noun phrase (the article, adjectives) naming one role that
+    ends the clause or is followed by a comma or its own modifier ("the desk by the window"); else
+    None ("on the way, the mug fell" goes on)."""
+    words = sent.words
+    if j >= hi or words[j] != "the":
+        return None
+    m = next((t for t in ms if t.start > j and t.kind == "role"), None)
+    if m is None or len(m.roles) != 1 or not all(w.isalpha() and w not in VERBS | AT for w in words[j + 1:m.start]) \
+            or m.start - j > 3:
+        return None
+    return m if m.end >= hi or words[m.end] in PUNCT | _APPOSED_MODIFIERS else None
+
+
+def _active_perfect(group: list[str]) -> bool:
+    """An active perfect of a verb of result ("had put", "have left", "has dropped"): a past act
+    with its object after it, as the simple past is ("put", "left"); not a passive ("has been left")."""
+    verbs = [w for w in group if w not in ADVERBS]
+    return len(verbs) == 2 and verbs[0] in PERFECT and verbs[1] in RESULT
 
 
 def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[str, Mention] | None:
@@ -696,6 +728,9 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
         # "lives on the props table", "on the wooden box": one modifier that names nothing
         # between the article and the place (as the naming step reads it, `naming.modified`)
         m = next((t for t in ms if t.start == k + 1 and t.kind == "role"), None)
+    if m is None and k + 2 < hi and words[k].isalpha() and words[k] not in PREP_OF_PLACE | VERBS \
+            and not any(t.start <= k < t.end for t in ms) and words[k + 1] == ",":
+        m = _apposed(sent, ms, k + 2, hi)  # "on the taburete, the little stool"
     if m is not None and m.kind == "room":
         # "sits on the cloakroom counter", "on the bedroom dresser": a room's name before a thing's
         # names which one (`_room_words`); the place is the thing
@@ -997,17 +1032,21 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         if not subjects and (_finite(group) or guessed) and said == ["it"] and last is not None \
                 and last.kind == "role" and len(last.roles) == 1 and (guessed or not earlier):
             subjects = [last]  # "Broom. ... Not agreed; it stays standing on the floor"
-        if not _finite(group):
+        if not _finite(group) or _active_perfect(group):
             who = start - 1
             while who > lo and words[who] in ADVERBS:
                 who -= 1
             if subjects and subjects[-1].end == start:  # "the keys lying on the floor": a modifier
                 if _definite(sent.words, subjects[-1].start):
                     kind = "presumed"
+                elif clause.mood == "statement" and _headline(sent, clause, subjects, start, end):
+                    kind = "presumed"  # a report ("Torch found on the bunk again"): a later "if on bunk" asks it
                 elif not (clause.mood == "statement" and _held_list(words, clause, subjects[-1].start)):
                     kind = ""
                 subjects = subjects[-1:]
-            elif who >= lo and words[who] in SUBJECT_PRONOUNS and group[-1] in RESULT:
+            elif who >= lo and _agent(sent, ms, lo, who) and group[-1] in RESULT \
+                    and not set(words[who + 1:start]) & (NORM_ADVERBS | FREQUENCY):
+                # (not a habit: "my husband always puts it on the floor" says where it tends to be)
                 at = next((k for k in range(end, clause.end) if words[k] in AT), clause.end)
                 after = _np_list(sent, ms, end, at)
                 if not after and words[end:at] == ["it"]:
@@ -1072,6 +1111,25 @@ def _believed(lead: list[str]) -> bool:
         "sure" in lead and "not" in lead)
 
 
+def _headline(sent: _Sentence, clause: Span, subjects: list[Mention], start: int, end: int) -> bool:
+    """Whether a clause is only a noun-phrase list, a participle and its place, the terse
+    register's statement (a claim form's "Old bath towel put down on the floor", a log's "Sock
+    left in the drawer", a headline's "Laptop found on desk"), as a verbless "Bath mat on the
+    floor" is (`_fragment`): the list opens the clause, its place is no "it", and no verb, no
+    subordinate clause and no question follow the place in its sentence ("a towel left on the
+    floor gets mouldy" says what happens to any; "Milk left in it -> ..." is a case of a list)."""
+    words = sent.words
+    covered = {k for m in subjects for k in range(m.start, m.end)}
+    lo = clause.start + 1 if _possessor(words, clause.start, subjects[0].start) else clause.start
+    opening = all(k in covered or w in LIST_GLUE or w in COLOR_WORDS or w in STATE_WORDS
+                  for k, w in enumerate(words[lo:start], lo))
+    # (a purpose "to soak up the leak" is no finite verb; a verb after a comma or in a clause of
+    # its own is this noun phrase's: "A bottle left upon the table, if it be empty, goes ...")
+    rest = words[end:]
+    return opening and rest[1:2] != ["it"] and not any(
+        w in VERBS or w in NORMATIVE - {"to"} or w in SUBORDINATORS or w == "?" for w in rest)
+
+
 def _held_list(words: list[str], clause: Span, start: int) -> bool:
     """Whether the thing at `start` is listed as what a statement's subject holds ("The shed holds a
     mower and a rake leaning on the wall", "said mezzanine comprising ..., a box disposed on a
@@ -1129,6 +1187,9 @@ def _fragment(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
                 and m.roles[0] in lex.holders]
         found = (words[j], held[-1]) if held else None
     body = set(words[clause.start:clause.end])
+    lo = clause.start
+    if not subjects and j == clause.start and found is not None:
+        lo, subjects = _label(sent, clause.start)  # "Torch: on the bench", "Keys - in the drawer"
     if not subjects or found is None or body & (DOUBT | VERBS | {"or"}):
         return  # doubted, a choice of places ("on the floor or on the sofa"), or it has a verb
     covered = {k for m in subjects for k in range(m.start, m.end)}
@@ -1140,13 +1201,42 @@ def _fragment(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         covered |= {k for a, b in _segments(words, clause.start, j) if b < j and any(foreign(w) for w in words[a:b])
                     for k in range(a, b)}
     if not all(k in covered or w in LIST_GLUE or w in COLOR_WORDS or w in STATE_WORDS
-               for k, w in enumerate(words[clause.start:j], clause.start)):
+               for k, w in enumerate(words[lo:j], lo) if lo == clause.start or k < clause.start - 1):
         return
     for m in subjects:
         if _generic(sent, m):
             continue  # "Toys on the floor!": a heading about a class, no statement of where one is
         for role in _roles(m, sent):
             _put(reading, "settled", catalog, lex, role, found[1], found[0])
+
+
+#: the marks after a label in a record, a list or a form ("Torch: on the bench", "Keys - in the drawer")
+_LABEL_MARKS = frozenset({":", "-", "\u2013", "\u2014"})
+#: what ends the stretch before a label
+_LABEL_STOPS = frozenset({".", ";", ",", "(", ")", "\n", "?"}) | _LABEL_MARKS
+
+
+def _label(sent: _Sentence, start: int) -> tuple[int, list[Mention]]:
+    """(where the label starts, its things) when the clause at `start` follows a label and its
+    mark, the record's or list's way of saying a thing's place ("Torch: on the bench by the
+    window", "- Keys - in the key bowl", "Laptop: on the desk, charging"): the label is the
+    stretch before the mark back to the sentence's start or a stop; (start, []) when there is none."""
+    words = sent.words
+    if start == 0 or words[start - 1] not in _LABEL_MARKS:
+        return start, []
+    lo = start - 1
+    while lo > 0 and words[lo - 1] not in _LABEL_STOPS:
+        lo -= 1
+    things = [m for m in sent.mentions if lo <= m.start and m.end < start and m.kind == "role"]
+    if things and _possessor(words, lo, things[0].start):
+        lo += 1  # "Sam's jacket: in the wardrobe"
+    return lo, things
+
+
+def _possessor(words: list[str], k: int, first: int) -> bool:
+    """Whether the word at `k`, right before the first thing of a list opening at `first`, is a
+    possessor whose "'s" the text normalising dropped ("Sam's jacket" read "sam jacket")."""
+    return first == k + 1 and words[k].isalpha() and words[k] not in _NO_AGENT
 
 
 def _pronoun_holder(sent: _Sentence, clause: Span, j: int, lex: Lexicon,
@@ -1227,7 +1317,27 @@ def _reported(subject: str, group: list[str], lead: list[str]) -> bool:
     (`_verb_kind`: an active past), presumed only, so that a later condition ("I left her
     blanket on the floor. If it is still on the floor, ...") asks it again. Not when the words
     before the subject doubt it ("Maybe I left one on the table": the task's question)."""
-    return subject in _REPORTERS and len(group) == 1 and group[0] in RESULT and not doubts(lead)
+    return subject in _REPORTERS and (len(group) == 1 and group[0] in RESULT or _active_perfect(group)) \
+        and not doubts(lead)
+
+
+#: words that never stand in a person's name before a verb of result (`_agent`)
+_NO_AGENT = VERBS | NORMATIVE | AT | SOURCE | NEGATIONS | SUBORDINATORS | DOUBT | ARTICLES | RELATIVE \
+    | THING_PRONOUNS | PLACE_PRONOUNS | frozenset({"please", "then", "and", "or", "but", "so", "if"})
+
+
+def _agent(sent: _Sentence, ms: list[Mention], lo: int, who: int) -> bool:
+    """Whether words [lo, who] are the subject of an active verb of result that is no thing of
+    the task: a personal pronoun ("someone left ...", `SUBJECT_PRONOUNS`) or a person's name or
+    title of one or two words naming no role ("Tom left my mug on the counter", "Mum had put the
+    towels in the basket", "the cleaner left the wallet on ..."): its object is the thing placed."""
+    if sent.words[who] in SUBJECT_PRONOUNS:
+        return True
+    span = sent.words[lo:who + 1]
+    if span[:1] and span[0] in ("the", "my", "our", "your", "his", "her", "their"):
+        span = span[1:]  # "the cleaner", "my sister": a person's title
+    return 1 <= len(span) <= 2 and not any(lo <= m.start <= who for m in ms) \
+        and all(w.isalpha() and w not in _NO_AGENT for w in span)
 
 
 def _finite(group: list[str]) -> bool:
@@ -1454,6 +1564,51 @@ def _existential(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon,
         return
 
 
+#: verbs of finding and seeing whose object is then at the place after it ("you will find the keys
+#: in the drawer", "I saw a mug sitting on the desk"), and the words that make them a statement of
+#: what is there: a subject "you"/"I"/"we" with "will"/"can" or a past form
+PERCEIVING = frozenset({"find", "see", "spot", "notice", "saw", "spotted", "noticed", "found"})
+_PERCEIVED_PAST = frozenset({"saw", "spotted", "noticed", "found"})
+_PERCEIVERS = frozenset({"you", "i", "we"})
+
+
+def _perceived(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
+               reading: _Reading) -> None:
+    """"You will find my mug on the counter", "you can see a mug lying on the desk", "I spotted the
+    towel in the basket": what a perceiver finds or sees is at the place after it, a resting
+    participle between ("lying", "sitting") or not; an object "it" is the thing last spoken of
+    (`_object_it`). Presumed, as a speaker's report is
+    (`_reported`): a later condition may ask it again. Not "you might find" (a doubt: the clause
+    is doubted), not "if you see" (a condition: not a statement), not "find the mug" (an
+    instruction, no perceiver)."""
+    words = sent.words
+    for i in range(clause.start + 1, clause.end):
+        if words[i] not in PERCEIVING:
+            continue
+        if words[i] in _PERCEIVED_PAST:
+            ok = words[i - 1] in _PERCEIVERS
+        else:
+            ok = words[i - 1] in ("will", "can") and i - 2 >= clause.start and words[i - 2] in _PERCEIVERS
+        if not ok:
+            continue
+        j = i + 1
+        while j < clause.end and words[j] not in AT:
+            j += 1
+        k = j - 1
+        while k > i and (words[k] in STATIVE or words[k] in RESULT or words[k] in ADVERBS):
+            k -= 1  # "lying", "left", "still sitting": the object's participle, before the place
+        found = _holder_after(sent, ms, j, clause.end)
+        if found is None:
+            continue
+        objects = _np_list(sent, ms, i + 1, k + 1)
+        if not objects and words[i + 1:k + 1] == ["it"]:  # "The mug? You will find it on the counter."
+            earlier = any(m.end <= clause.start and m.kind == "role" for m in sent.mentions)
+            objects = _object_it(sent, clause, reading.last_subject, earlier)
+        for m in objects:
+            for role in _roles(m, sent):
+                _put(reading, "presumed", catalog, lex, role, found[1], found[0])
+
+
 def _where(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
            reading: _Reading, *, homes_only: bool = False) -> None:
     """"the kitchen, where the dishwasher, the sink ... are", "a nightstand on which a lamp
@@ -1600,13 +1755,17 @@ def _kept(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalo
 
 
 def _with(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
-          reading: _Reading) -> None:
+          reading: _Reading, kind: str = "settled") -> None:
     """"a nightstand with a lamp", "the nightstand with a lamp on it", "nightstand with lamp": a
     carried thing on (or in) the piece it is said to come with (not "a table with a mop leaning
-    against it", which says where the mop stands; not "wipe it with the sponge", an instrument)."""
+    against it", which says where the mop stands; not "wipe it with the sponge", an instrument).
+    In an instruction (`kind` "presumed": "dust the shelf with the vase on it", "look in the
+    drawer with my socks in it") only the phrase that ends "on it"/"in it" places: a bare "with"
+    there names an instrument ("wipe the counter with a cloth")."""
     words = sent.words
     for a in ms:
-        if a.kind == "room" and a.end < clause.end and words[a.end] == "with":
+        # (a room "with" in an instruction says what is carried there: "go to the kitchen with the mug")
+        if kind == "settled" and a.kind == "room" and a.end < clause.end and words[a.end] == "with":
             stop = next((m.start for m in ms if m.start > a.end and m.kind == "room"), clause.end)
             for m in _np_list(sent, ms, a.end + 1, stop):
                 for role in _roles(m, sent):
@@ -1615,19 +1774,31 @@ def _with(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalo
         if a.kind != "role" or b.kind != "role" or len(a.roles) != 1 or len(b.roles) != 1:
             continue
         between = words[a.end:b.start]
-        if not between or between[0] != "with" or not all(w in ARTICLES for w in between[1:]):
+        tied = words[b.end:b.end + 2] in (["on", "it"], ["in", "it"])
+        if not between or between[0] != "with" or not _determined(between[1:], tied):
             continue
         cat = catalog.get(str(lex.roles[b.roles[0]]["category"]))
         if cat is None or not cat.pickable:
             continue
         after = words[b.end:b.end + 2]
-        if b.end < clause.end and not (after in (["on", "it"], ["in", "it"]) or words[b.end] in PUNCT | {"and"}):
+        if b.end < clause.end and not (tied or words[b.end] in PUNCT | {"and"}) or kind != "settled" and not tied:
             continue
         if b.end < len(words) and words[b.end] in STATIVE | {"leaning", "propped"}:
             continue
         fact = _contain(catalog, lex, b.roles[0], a.roles[0], "in" if after == ["in", "it"] else "on")
         if fact is not None:
-            reading.place("settled", b.roles[0], fact)
+            reading.place(kind, b.roles[0], fact)
+
+
+def _determined(words: list[str], tied: bool) -> bool:
+    """Words that may open a noun phrase after "with": articles, and where "on it"/"in it" ties
+    the thing to the holder (`tied`) one more word, a possessor whose "'s" the text normalising
+    dropped ("with Sam's mug on it") or an adjective ("with dirty socks in it"); never a negation
+    ("with no mug on it"), a verb or a preposition. Untied, "the vanity with the other spares"
+    says what else is there, not that this thing is."""
+    extra = [w for w in words if w not in ARTICLES]
+    return not extra or tied and len(extra) == 1 and extra[0].isalpha() \
+        and extra[0] not in VERBS | AT | NEGATIONS | SOURCE | {"other", "same"}
 
 
 def _in_room(sent: _Sentence, clause: Span, ms: list[Mention], reading: _Reading) -> None:
@@ -1661,6 +1832,38 @@ def _moved(words: list[str], start: int, clause: Span) -> bool:
         lemma in ACTIONS for lemma in getAllLemmas(words[j]).get("VERB", ())))
 
 
+#: verbs of putting whose habitual present ("Tom leaves his keys in the bowl", "she always puts the
+#: mug on the desk") says where a thing tends to go, not where it is (`_habitually_put`)
+_PUTTING = frozenset({"leave", "put", "drop", "throw", "set", "place", "dump", "stick", "park", "stuff"})
+
+
+def _habitually_put(words: list[str], start: int, clause: Span) -> bool:
+    """The noun phrase at `start` is the object of a verb of putting in the habitual present (a
+    third person's "-s" form, or a frequency or norm adverb before it: "my husband always puts the
+    jacket on the sofa", "Tom leaves the wallet in the drawer", "they often throw a sock in
+    there"): the place after it is where the habit takes it, which a later condition asks."""
+    j = start - 1
+    while j >= clause.start and (words[j] in ARTICLES or words[j] in STATE_WORDS or words[j] in COLOR_WORDS):
+        j -= 1
+    if j < clause.start or not set(getAllLemmas(words[j]).get("VERB", ())) & _PUTTING:
+        return False
+    present = words[j].endswith("s") and words[j] not in _PUTTING
+    return present or j > clause.start and words[j - 1] in NORM_ADVERBS | FREQUENCY
+
+
+def _unfound(words: list[str], start: int, clause: Span) -> bool:
+    """The noun phrase at `start` is the object of a doubted or negated verb of finding or seeing
+    (`PERCEIVING`: "you might find the mug on the desk", "you won't see the apple in the fridge"):
+    the place after it is the verb's complement, which the doubt or negation leaves open, not a
+    modifier that takes the place for granted."""
+    j = start - 1
+    while j >= clause.start and (words[j] in ARTICLES or words[j] in STATE_WORDS or words[j] in COLOR_WORDS):
+        j -= 1
+    if j < clause.start or words[j] not in PERCEIVING:
+        return False
+    return clause.doubted or bool(set(words[max(clause.start, j - 3):j]) & NEGATIONS)
+
+
 def _resting(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
              reading: _Reading) -> None:
     """"check the towel on the drying rack", "if the mug on the coffee table is dirty": a definite
@@ -1684,7 +1887,8 @@ def _resting(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, cat
         pointed = _pointed_out(words, a.start, clause)
         if cat is None or not cat.pickable or determiner(words, a.start) != "the" and not pointed:
             continue
-        if _moved(words, a.start, clause) or clause.goal:
+        if _moved(words, a.start, clause) or clause.goal or _unfound(words, a.start, clause) \
+                or _habitually_put(words, a.start, clause):
             continue
         described = clause.mood == "condition" and (_described_subject(words, a.start, b.end, clause) or pointed)
         if clause.mood == "condition" and not described:

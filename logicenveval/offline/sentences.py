@@ -126,10 +126,15 @@ FOUND_PARTICIPLES = frozenset({"found", "left", "seen", "spotted", "discovered",
 _HAS_AFTER = ("been", "got", "gotten")
 _IS_AFTER = tuple(STATE_WORDS) + ("already", "still", "not", "probably", "just", "now", "in", "on", "under",
                                   "lying", "sitting", "left", "gone", "missing", "there", "here")
+_IS_BEFORE_PLACE = ("inside", "atop", "underneath", "beneath", "behind", "beside", "by")
+_PLACE_OPENERS = ("the", "a", "an", "my", "your", "our", "his", "her", "their", "this", "that")
 _CONTRACTIONS = [
     (r"\b(it|that|there|what|where|who|how|here|he|she)'s\b", r"\1 is"), (r"\b(they|we|you)'re\b", r"\1 are"),
     (rf"\b(\w+)'s(?=\s+(?:{'|'.join(_HAS_AFTER)})\b)", r"\1 has"),
     (rf"\b(\w+)'s(?=\s+(?:{'|'.join(_IS_AFTER)})\b)", r"\1 is"),
+    # a preposition of place that is also a noun ("the box's inside is dirty") is "is" before it
+    # only where a place follows: "the wallet's inside the drawer", "the kettle's beside the sink"
+    (rf"\b(\w+)'s(?=\s+(?:{'|'.join(_IS_BEFORE_PLACE)})\s+(?:{'|'.join(_PLACE_OPENERS)})\b)", r"\1 is"),
     # typed or dictated without the apostrophe ("if its not in there", "if its dirty"): "its",
     # "thats", "theres" before what follows "is" are "it is", never a possessive
     (rf"\b(it|that|there|what|where)s(?=\s+(?:{'|'.join(_IS_AFTER)})\b)", r"\1 is"),

@@ -1,0 +1,294 @@
+"""How well the offline reader reads a stated placement in its ordinary grammatical forms (issue 47).
+
+The development sets state each placement in one wording; unseen text says it in any. This
+benchmark composes placement sentences from data tables — a statement form (copular "the mug is
+on the counter", existential "there is a mug on the counter", inverted "On the counter sits a
+mug", possessive "the counter has a mug on it", participial "a mug lying on the counter", passive
+and habitual "the mug is kept in ...", "the mug lives on ...", a speaker's report "I left the mug
+on ...", relative "the counter, where the mug is", a pronoun after a topic, an aside) x a subject
+(the, my, a, a person's name's, a pronoun after a naming sentence) x a preposition (on, on top
+of, in, inside: only what an `on`/`inside` fact says) x catalog kind pairs where the holder can
+hold the thing — sets each inside a short description, and checks that the reader
+(`offline.placement.described_placements`, the entry `reader_generalisation.py --placements`
+measures, given the sentence's own roles so naming is out of the figure) states the placement.
+
+It also composes near misses that state *no* current placement (a condition, an instruction, a
+goal, a negation, a past state, a question, a doubt) and counts every one read as a placement
+of the thing at the holder: a false reading, which must stay at zero.
+
+Combinations English does not form ("There is my mug on the counter", "It has been put..." with
+no thing named) are left out by the tables (`None` cells), so every sentence is one a writer
+could write.
+
+    python benchmarks/placement_forms.py            # the matrix, last line `placement_forms overall=...`
+    python benchmarks/placement_forms.py --why      # and every sentence misread, every false reading
+    python benchmarks/placement_forms.py --smoke    # every 10th sentence, a second
+"""
+
+from __future__ import annotations
+
+import argparse
+from collections import defaultdict
+from dataclasses import dataclass
+from typing import Any
+
+from logicenveval.domain.catalog import Catalog, load_catalog
+from logicenveval.offline.placement import described_placements
+
+
+@dataclass(frozen=True)
+class Pair:
+    """A thing and a holder that can hold it: catalog kinds, the nouns said, the room, and the
+    prepositions that fit (`on` surfaces, `in` containers)."""
+
+    item: str
+    noun: str
+    holder: str
+    place: str
+    room: str
+    preps: tuple[str, ...]
+
+
+#: kind pairs that fit (the holder holds the thing), across rooms and both relations
+PAIRS: tuple[Pair, ...] = (
+    Pair("mug", "mug", "kitchen_counter", "counter", "kitchen", ("on", "on top of")),
+    Pair("book", "book", "coffee_table", "coffee table", "living_room", ("on", "on top of")),
+    Pair("remote_control", "remote", "sofa", "sofa", "living_room", ("on",)),
+    Pair("laptop", "laptop", "desk", "desk", "office", ("on", "on top of")),
+    Pair("pillow", "pillow", "bed", "bed", "bedroom", ("on",)),
+    Pair("wallet", "wallet", "nightstand", "nightstand", "bedroom", ("on", "on top of", "in", "inside")),
+    Pair("towel", "towel", "laundry_basket", "laundry basket", "laundry_room", ("in", "inside")),
+    Pair("sock", "sock", "drawer", "drawer", "bedroom", ("in", "inside")),
+    Pair("apple", "apple", "fridge", "fridge", "kitchen", ("in", "inside")),
+    Pair("jacket", "jacket", "wardrobe", "wardrobe", "bedroom", ("in", "inside")),
+)
+
+#: statement forms: a template over {X} (the thing as the subject form says it), {Y} (the holder,
+#: "the ..."), {P} (the preposition), {T} (the thing's naming sentence before, for a pronoun), and
+#: which subject forms the form takes (an existential or inverted subject is indefinite)
+FORMS: dict[str, tuple[str, tuple[str, ...]]] = {
+    "copular": ("{X} is {P} {Y}.", ("the", "my", "name's", "pronoun")),
+    "copular contracted": ("{X}'s {P} {Y}.", ("the", "my", "name's", "pronoun")),
+    "copular still": ("{X} is still {P} {Y} from last night.", ("the", "my", "name's", "pronoun")),
+    "existential": ("There is {X} {P} {Y}.", ("a",)),
+    "existential contracted": ("There's {X} {P} {Y}.", ("a",)),
+    "existential participle": ("There's {X} sitting {P} {Y}.", ("a",)),
+    "inverted be": ("{P} {Y} is {X}.", ("a", "my", "name's")),
+    "inverted sits": ("{P} {Y} sits {X}.", ("a", "my", "name's")),
+    "possessive has": ("{Y} has {X} {Pit} it.", ("a", "my", "name's")),
+    "participial": ("You'll see {X} lying {P} {Y}.", ("a", "the", "my", "name's")),
+    "passive kept": ("{X} is kept {P} {Y}.", ("the", "my", "name's", "pronoun")),
+    "passive left": ("{X} was left {P} {Y}.", ("the", "my", "name's", "pronoun")),
+    "habitual lives": ("{X} lives {P} {Y}.", ("the", "my", "name's", "pronoun")),
+    "stative sits": ("{X} sits {P} {Y}.", ("the", "my", "name's", "pronoun")),
+    "report left": ("I left {X} {P} {Y}.", ("the", "my", "name's", "pronoun")),
+    "report put": ("I put {X} {P} {Y} earlier.", ("the", "my", "name's", "pronoun")),
+    "report past perfect": ("We had put {X} {P} {Y}.", ("the", "my", "name's", "pronoun")),
+    "perfect passive": ("{X} has been left {P} {Y}.", ("the", "my", "name's", "pronoun")),
+    "progressive": ("{X} is sitting {P} {Y}.", ("the", "my", "name's", "pronoun")),
+    "habitual usually": ("{X} usually stays {P} {Y}.", ("the", "my", "name's", "pronoun")),
+    "third-person report": ("Tom left {X} {P} {Y} this morning.", ("the", "my", "name's", "pronoun")),
+    "titled third person": ("The cleaner had put {X} {P} {Y}.", ("the", "my", "name's", "pronoun")),
+    "you'll find": ("You'll find {X} {P} {Y}.", ("the", "my", "name's", "pronoun")),
+    "found": ("I found {X} {P} {Y}.", ("the", "my", "name's", "pronoun")),
+    "seen": ("I saw {X} sitting {P} {Y} this morning.", ("a", "the", "my", "name's")),
+    "with on it": ("Look at {Y} with {X} {Pit} it.", ("a", "my", "name's")),
+    "terse participle": ("{X} left {P} {Y} overnight.", ("bare", "a", "my", "name's")),
+    "appositive holder": ("{X} is {P} the whatsit, {Y}.", ("the", "my", "name's", "pronoun")),
+    "label colon": ("{X}: {P} {Y}.", ("the", "my", "name's")),
+    "label dash": ("{X} - {P} {Y}, as far as I know.", ("the", "my", "name's")),
+    "relative where": ("Have a look at {Y}, where {X} is.", ("the", "my", "name's")),
+    "relative which": ("{X}, which is {P} {Y}, needs a wipe.", ("the", "my", "name's")),
+    "topic pronoun": ("As for {X}: it's {P} {Y}.", ("the", "my", "name's")),
+    "aside dash": ("{X} - it's {P} {Y} - needs a wipe.", ("the", "my", "name's")),
+    "aside brackets": ("{X} (it's {P} {Y}) needs a wipe.", ("the", "my", "name's")),
+}
+
+#: near misses: no current placement is stated ("Find the mug on the counter" is no near miss:
+#: an instruction's definite noun phrase takes its place for granted, `placement._resting`); {X} the thing ("the ..."), {Y} the holder ("belongs
+#: on" names where a thing goes, `placement.MOTION`, which a condition may then doubt)
+NEAR_MISSES: dict[str, str] = {
+    "condition if": "If {X} is {P} {Y}, take it out.",
+    "condition when": "When {X} is {P} {Y}, tell me.",
+    "instruction put": "Put {X} {P} {Y}.",
+    "goal make sure": "Make sure {X} ends up {P} {Y}.",
+    "goal should": "{X} should be {P} {Y} when you're done.",
+    "negation": "{X} is not {P} {Y}.",
+    "negation contracted": "{X} isn't {P} {Y} any more.",
+    "past used to": "{X} used to be {P} {Y}.",
+    "question": "Is {X} {P} {Y}?",
+    "check whether": "Check whether {X} is {P} {Y}.",
+    "doubt": "{X} might be {P} {Y}.",
+    "instruction leave": "Leave {X} {P} {Y} if it's there.",
+    "prohibition": "Don't put {X} {P} {Y}.",
+    "future": "{X} will go {P} {Y} later.",
+    "where it belongs": "{X} belongs {P} {Y}.",
+    "condition third person": "If Tom left {X} {P} {Y}, bring it back.",
+    "question third person": "Did Tom leave {X} {P} {Y}?",
+    "negated report": "I didn't put {X} {P} {Y}.",
+    "doubted report": "Maybe Tom put {X} {P} {Y}.",
+    "doubted finding": "You might find {X} {P} {Y}.",
+    "condition finding": "If you see {X} {P} {Y}, leave it there.",
+    "habit third person": "Tom always leaves {X} {P} {Y}.",
+    "label question": "{X}: {P} {Y}?",
+    "label choice": "{X}: {P} {Y} or in the car.",
+    "generic participle": "Every {N} left {P} {Y} gets in the way.",
+    "condition participle": "If {X} left {P} {Y}, take it out.",
+    "apposition after a clause": "{X} fell {P} the way, {Y} wobbled.",
+}
+
+#: how the thing is said by subject form; "pronoun" names it the sentence before
+SUBJECT_DETS: dict[str, str] = {"the": "the", "my": "my", "a": "a", "name's": "Sam's", "pronoun": "the", "bare": ""}
+
+
+@dataclass(frozen=True)
+class Case:
+    text: str
+    fact: str
+    form: str
+    subject: str
+    prep: str
+    pair: str
+    room: str
+    item: str
+    holder: str
+
+
+def _cap(s: str) -> str:
+    return s[0].upper() + s[1:]
+
+
+def _article(det: str, noun: str) -> str:
+    if det == "a" and noun[0] in "aeiou":
+        return f"an {noun}"
+    if not det:  # the terse register's bare noun ("Sock left in the drawer")
+        return noun
+    return f"{det} {noun}"
+
+
+def _fact(pair: Pair, prep: str) -> str:
+    """The placement a reader states: `inside` for "in"/"inside" (or "where" in a container
+    only), `on` otherwise."""
+    rel = "inside" if prep in ("in", "inside") else "on"
+    return f"{rel}({pair.item}, {pair.holder})"
+
+
+def _case(form: str, subject: str, pair: Pair, prep: str) -> Case | None:
+    """The description for one cell of the matrix, or None where English does not form it."""
+    template, subjects = FORMS[form]
+    if subject not in subjects:
+        return None
+    if "{Pit}" in template and prep == "on top of":
+        return None  # "has a mug on top of it" is formed, but says no more than "on it"
+    if form == "relative where" and prep != pair.preps[0]:
+        return None  # "where" says no preposition: one cell per pair
+    np = _article(SUBJECT_DETS[subject], pair.noun)
+    said = "it" if subject == "pronoun" else np
+    body = template.format(X=said, Y=f"the {pair.place}", P=prep, Pit=prep.replace("inside", "in"))
+    body = _cap(body)
+    opening = f"Please go to the {pair.room.replace('_', ' ')}."
+    if subject == "pronoun":
+        opening += f" I bought {np} last week."
+    text = f"{opening} {body} Then tell me when you're done."
+    fact_prep = prep if form != "relative where" else pair.preps[0]
+    return Case(text, _fact(pair, fact_prep), form, subject, prep, f"{pair.noun}/{pair.place}", pair.room,
+                pair.item, pair.holder)
+
+
+def cases() -> list[Case]:
+    """Every statement of the matrix English forms, in a fixed order."""
+    out: list[Case] = []
+    for pair in PAIRS:
+        for form in FORMS:
+            for subject in SUBJECT_DETS:
+                for prep in pair.preps:
+                    case = _case(form, subject, pair, prep)
+                    if case is not None:
+                        out.append(case)
+    return out
+
+
+def near_misses() -> list[Case]:
+    """Every near miss: one per form, pair and preposition, the thing said "the ..."."""
+    out: list[Case] = []
+    for pair in PAIRS:
+        for form, template in NEAR_MISSES.items():
+            for prep in pair.preps:
+                body = _cap(template.format(X=f"the {pair.noun}", Y=f"the {pair.place}", P=prep, N=pair.noun))
+                text = f"Please go to the {pair.room.replace('_', ' ')}. {body} Then tell me when you're done."
+                out.append(Case(text, _fact(pair, prep), form, "the", prep, f"{pair.noun}/{pair.place}",
+                                pair.room, pair.item, pair.holder))
+    return out
+
+
+def _brief(case: Case) -> dict[str, Any]:
+    """The sentence's roles (the thing and the holder by their kinds), so naming is out of the figure."""
+    roles = {case.item: {"category": case.item}, case.holder: {"category": case.holder}}
+    return {"id": "t", "description": case.text, "rooms": [case.room], "roles": roles}
+
+
+def facts(case: Case, catalog: Catalog) -> list[str]:
+    return [f.replace(" ", "") for f in described_placements(_brief(case), catalog)]
+
+
+def read_right(case: Case, catalog: Catalog) -> bool:
+    """Whether the reader states the case's placement; "where" says no preposition, so on a
+    holder that is both a surface and a container (a nightstand) either relation is read right."""
+    told = facts(case, catalog)
+    if case.form == "relative where":
+        return any(f"({case.item},{case.holder})" in f for f in told)
+    return case.fact.replace(" ", "") in told
+
+
+def misread(case: Case, catalog: Catalog) -> bool:
+    """Whether a near miss is read as a placement of the thing at the holder (on or inside)."""
+    told = facts(case, catalog)
+    return any(f"({case.item},{case.holder})" in f for f in told)
+
+
+DIMENSIONS = ("form", "subject", "prep", "pair")
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--why", action="store_true", help="print every sentence misread and every false reading")
+    ap.add_argument("--smoke", action="store_true", help="every 10th sentence and near miss only")
+    args = ap.parse_args()
+    catalog = load_catalog()
+    todo = cases()[::10] if args.smoke else cases()
+    tally: dict[str, dict[str, list[int]]] = {d: defaultdict(lambda: [0, 0]) for d in DIMENSIONS}
+    missed: list[Case] = []
+    for case in todo:
+        ok = read_right(case, catalog)
+        for d in DIMENSIONS:
+            cell = tally[d][getattr(case, d)]
+            cell[0] += ok
+            cell[1] += 1
+        if not ok:
+            missed.append(case)
+    for d in DIMENSIONS:
+        print(f"by {d}:")
+        for value, (good, total) in sorted(tally[d].items(), key=lambda kv: kv[1][0] / kv[1][1]):
+            print(f"  {value:28s} {good:5d}/{total:<5d} {good / total:.3f}")
+    misses = near_misses()[::10] if args.smoke else near_misses()
+    false: list[Case] = [c for c in misses if misread(c, catalog)]
+    by_miss: dict[str, list[int]] = defaultdict(lambda: [0, 0])
+    for c in misses:
+        by_miss[c.form][1] += 1
+    for c in false:
+        by_miss[c.form][0] += 1
+    print("near misses read as a placement (must be 0):")
+    for value, (bad, total) in by_miss.items():
+        print(f"  {value:28s} {bad:5d}/{total:<5d}")
+    if args.why:
+        for case in missed:
+            print(f"MISSED [{case.form} | {case.subject} | {case.prep}] {case.fact}: {case.text}")
+        for case in false:
+            print(f"FALSE [{case.form} | {case.prep}] {facts(case, catalog)}: {case.text}")
+    good = len(todo) - len(missed)
+    print(f"placement_forms overall={good / len(todo):.4f} read={good} sentences={len(todo)} "
+          f"false={len(false)}/{len(misses)}")
+
+
+if __name__ == "__main__":
+    main()
