@@ -15,8 +15,10 @@ from logicenveval.offline.naming import name_objects
 STRAYS = Path(__file__).parent / "data" / "naming_forms" / "strays.tsv"
 #: stray rows of `STRAYS` naming their kind: 25 of 41 before this section's rules, 19 after the
 #: complement-adjective rule, 12 after the fixed expressions, 9 after the head-alone rule, 7 after "a fan of",
-#: 8 after the head-alone rule was narrowed to a series ordinal or a place one stands at ("the bar is open")
-STRAYS_AT_MOST = 8
+#: 8 after the head-alone rule was narrowed to a series ordinal or a place one stands at ("the bar is open"),
+#: 9 once the idioms a room's text can also mean literally left the fixed expressions ("by the book":
+#: "the key is by the book on the shelf")
+STRAYS_AT_MOST = 9
 #: real rows of `STRAYS` naming their kind: 20 of 21 before and after every rule
 REAL_AT_LEAST = 20
 
@@ -80,11 +82,9 @@ def test_the_same_word_as_the_thing_is_kept(text: str, kind: str) -> None:
 @pytest.mark.parametrize(("text", "not_kind"), [
     # a football report
     ("United threw in the towel after the second goal.", "towel"),
-    ("Their keeper was on the ball all afternoon.", "ball"),
     ("It was the best save of the season, bar none.", "soap_bar"),
     # an office memo
     ("We need to think outside the box on the budget.", "cardboard_box"),
-    ("Please do everything by the book until the audit.", "book"),
     ("Could someone get the ball rolling on the rota?", "ball"),
     # a review of a film
     ("A box-office flop, but a cult hit on video.", "cardboard_box"),
@@ -140,3 +140,21 @@ def test_a_head_alone_names_no_kind_the_text_does_not_speak_of(text: str, not_ki
 ])
 def test_a_head_with_its_kind_spoken_of_names_it(text: str, kind: str) -> None:
     assert kind in _kinds(text)
+
+
+@pytest.mark.parametrize(("text", "kind"), [
+    # a house-sitter's note: where the real things are, in words an idiom also uses
+    ("The dog is asleep under the table.", "table"),
+    ("There is an open book on the desk.", "book"),
+    ("The spare key is by the book on the shelf.", "book"),
+    # a parent's message
+    ("We have a ball in the shed, fetch it for the kids.", "ball"),
+    ("Don't drop the ball on the rug, it leaves marks.", "ball"),
+    # a caretaker's list
+    ("Stick the reminder on the clock.", "clock"),
+    ("Turn the table so that its drawer faces the wall.", "table"),
+])
+def test_words_an_idiom_shares_still_name_the_thing_when_meant_literally(text: str, kind: str) -> None:
+    """Only idioms a room's text cannot mean literally are fixed expressions (`FIXED_EXPRESSIONS`):
+    "under the table" or "have a ball" also say where a real thing is or what is done with it."""
+    assert any(kind in k for k in _kinds(text))
