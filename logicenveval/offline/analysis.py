@@ -38,6 +38,7 @@ from logicenveval.offline.clauses import (
     SOFTENERS,
     UNCERTAIN,
     Piece,
+    ends_asking,
     imperative,
     points_back,
     presence_asked,
@@ -2893,7 +2894,7 @@ def _label(clause: Clause) -> str | None:
 
 def _asks(clause: Clause) -> bool:
     """Whether a clause is a question about the scene (a condition asked with "?")."""
-    return clause.cue == "?" or clause.text.rstrip().rstrip('"\u201d').rstrip().endswith("?")
+    return clause.cue == "?" or ends_asking(clause.text)
 
 
 def _lines(text: str) -> list[tuple[int, int]]:

@@ -403,6 +403,13 @@ def _by_order(sentence: str) -> str:
     return _BY_ORDER.sub(lambda m: m.group(1) + _ORDER_CUES[(m.group(2) or m.group(3)).lower()], sentence)
 
 
+def ends_asking(text: str) -> bool:
+    """Whether `text` ends with a question mark, inside closing quotation marks or not: a question
+    quoted in a script or a story asks as one does without them ('"Is the kettle on the counter?"').
+    One test for the clause splitter (`_split`) and the analyser's answer labels (`analysis._asks`)."""
+    return text.rstrip().rstrip('"\u201d').rstrip().endswith("?")
+
+
 def _split(sentence: str) -> list[tuple[str, str | None, str]]:
     """(text, cue, role) pieces of a sentence, recursively for chained conditionals; a verbless
     heading (`_heading`) is a `heading` piece, its instruction read after it."""
@@ -434,8 +441,7 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
                 return _split(f"if it is not{sentence[m.end():]}")
             return [(sentence[m.end():].strip(" ,"), cue, "else")]
     best = _first_cue(low, CONDITIONAL)
-    # (a question in quotation marks asks as one does without them: '"Is the kettle on the counter?"')
-    asks = low.rstrip().rstrip('"\u201d').rstrip().endswith("?")
+    asks = ends_asking(low)
     if best is not None and best[1] in AGENT_TIMES and asks and best[0] > 0 \
             and re.match(rf"\W*(?:{'|'.join(sorted(AGENTS))})\b", expand(low[best[0] + len(best[1]):])):
         best = None  # "is it on when you're done for the day?": asked of the scene at a time of the agent's

@@ -946,8 +946,7 @@ def unquote(text: str) -> str:
     plain = _DROPPED_SUBJECT.sub(lambda m: f"{m.group(1)} {_DROPPED_PRONOUN[m.group(2).lower()]} ", plain)
     plain = _SHARED_SUBJECT.sub(lambda m: f"{m.group('head')} {_BE_PRONOUN[m.group('be').lower()]} {m.group('be')} ",
                                 plain)
-    plain = _DROPPED_DOUBT.sub(lambda m: f"{m.group(1)}{'It' if m.group(2)[0].isupper() else 'it'} {m.group(2).lower()}",
-                               plain)
+    plain = _DROPPED_DOUBT.sub(lambda m: f"{m.group(1)}{_match_case(m.group(2), 'it')} {m.group(2).lower()}", plain)
     plain = _ACTED_STATE.sub(_acted_state, plain)
     plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)
     plain = _KIND_OF.sub(r"\1 ", _STATE_CASE.sub(_state_case, plain))
