@@ -4,7 +4,8 @@
 # every reply already in the cache is a hit, so only the questions not yet answered reach the model.
 # The model writes to a working copy of the committed cache (`WORK`, outside git's view), never to
 # the committed file itself: after each method, and on demand (`record.sh snapshot`), a consistent
-# copy taken with SQLite's backup API replaces the committed file, which is then what to commit.
+# copy taken with SQLite's backup API replaces the committed file when it holds more replies, which
+# is then what to commit.
 # Needs: python tools/install_local.py && python tools/local_model.py qwen2.5-coder-1.5b
 set -u
 cd "$(dirname "$0")/../.."
@@ -16,6 +17,10 @@ snapshot() {
   python - "$WORK" "$COMMITTED" <<'PY'
 import sqlite3, sys
 src, dst = sqlite3.connect(sys.argv[1], timeout=60), sqlite3.connect(sys.argv[2])
+count = "select count(*) from replies"
+if src.execute(count).fetchone() == dst.execute(count).fetchone():  # replies are only added
+    print(f"{sys.argv[2]}: up to date")
+    sys.exit(0)
 src.backup(dst)
 dst.execute("PRAGMA journal_mode=DELETE")
 dst.commit()
