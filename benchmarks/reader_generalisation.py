@@ -148,7 +148,7 @@ prints LogCov / SceVR / FauDR for each, then per task:
   tasks in rooms none of the sets above use (a swimming coach's session sheet, a walking
   guidebook's bothy entry, a physiotherapist's home exercise programme, a language lab induction
   worksheet for Year 7, a Polish agritourism host's note, a golf club's scorecard with local
-  rules). Fresh (`FRESH`) until measured;
+  rules). Fresh (`FRESH`) until measured three times (twelfth session), then a development set;
 - `dev22 reworded` and `dev22 new`: tests/data/reader_dev22/ — the twenty-second development set,
   written in the twelfth session (beside dev 21, each in its own family of registers) in
   registers of law, religion, history, the arts and the old-fashioned no set used and the English
@@ -156,7 +156,8 @@ prints LogCov / SceVR / FauDR for each, then per task:
   medieval chronicle's annal, an opera libretto) and six new tasks in rooms none of the sets above
   use (a mock last will and testament, a monastic rule for a refectory, a wartime public
   information leaflet, an artist's instruction pieces, a Polish landlady's note, an old-fashioned
-  reading primer). Fresh (`FRESH`) until the coordinator's first measurement;
+  reading primer). Fresh (`FRESH`) until measured three times (twelfth session), then a
+  development set;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -188,8 +189,8 @@ was written for (a rule too wide shows as a task of another set falling):
     python benchmarks/reader_generalisation.py --dev-only --json before.json   # on main
     python benchmarks/reader_generalisation.py --dev-only --compare before.json # with the rule
 
-`--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: dev 21 and
-dev 22, written in the twelfth session after dev 19 and dev 20 left it at its start), so a tuner's runs
+`--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: dev 23 and
+dev 24, written in the thirteenth session after dev 21 and dev 22 left it at its start), so a tuner's runs
 never show them; `--dev-only --fresh` keeps them, to measure them. `--skip 'dev9 reworded,dev9 new'` leaves any other rows' sets out as well.
 
 `--placements` measures instead the reader's recall of stated placements, without running a
@@ -323,7 +324,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH: frozenset[str] = frozenset({"dev21 reworded", "dev21 new", "dev22 reworded", "dev22 new"})
+FRESH: frozenset[str] = frozenset()
 GENERATOR = "logicenvgen"
 
 
