@@ -1,7 +1,7 @@
-"""The reader's fifth to twenty-third development sets (tests/data/reader_dev5/, reader_dev6/,
+"""The reader's fifth to twenty-fourth development sets (tests/data/reader_dev5/, reader_dev6/,
 reader_dev7/, reader_dev8/, reader_dev9/, reader_dev10/, reader_dev11/, reader_dev12/, reader_dev13/,
 reader_dev14/, reader_dev15/, reader_dev16/, reader_dev17/, reader_dev18/, reader_dev19/, reader_dev20/,
-reader_dev21/, reader_dev22/, reader_dev23/): new tasks and rewordings written from the task format, the
+reader_dev21/, reader_dev22/, reader_dev23/, reader_dev24/): new tasks and rewordings written from the task format, the
 catalog and the built-in tasks, without reading the offline reader or running it on them, for rounds of reader
 rules to be tuned on. One table of what differs between them; the same checks for each.
 
@@ -63,6 +63,12 @@ hive inspection record, a seed packet, a wine merchant's tasting note, a dog wal
 text, a shipping forecast, a farmer's almanac page, a restaurant critic's review, a bird field
 guide's species account) and the English of a Swahili speaker, in room ids beginning with a
 letter a-m.
+dev 24 was written in the thirteenth session beside dev 23 (each in its own family of registers):
+writing of commerce, the media, the internet and officialdom (an online marketplace listing, a
+customer's product review, a newspaper's corrections and clarifications column, a planning
+decision notice, a to-do app's automated e-mail digest, a cleaning firm's quotation, a
+government guidance web page, a TV listings page) and the English of a Swedish speaker, in room
+ids beginning with a letter n-z.
 """
 
 from __future__ import annotations
@@ -136,6 +142,7 @@ SETS = (
     DevSet("reader_dev21", "_d21", 3, 6, ("bothy_walking_guidebook", "kids_room_toy_cleanup_d21")),
     DevSet("reader_dev22", "_d22", 3, 6, ("wireless_room_blackout_leaflet", "hallway_entry_tidy_d22")),
     DevSet("reader_dev23", "_d23", 3, 6, ("chart_room_shipping_forecast", "dining_table_clear_d23")),
+    DevSet("reader_dev24", "_d24", 3, 6, ("outhouse_planning_decision_notice", "clean_living_room_d24")),
 )
 IDS = [s.name for s in SETS]
 ENTRIES = {s.name: rewordings(DATA / s.name) for s in SETS}
