@@ -85,6 +85,9 @@ _NOUN_LEADS = frozenset({"with", "and", "or", "plus"})
 #: prepositions: an item holding one is a clause, not a noun phrase ("are in the kitchen")
 _PREPOSITIONS = frozenset({"on", "onto", "in", "into", "inside", "from", "by", "near", "under", "of",
                            "to", "at", "beside", "behind", "with"})
+#: prepositions of place a dictionary also lists as nouns ("above", "below"): after a part word
+#: ("the gable end above the river") they end its noun phrase (`_Text.part_of_other`)
+_PLACE_ADVERBS = frozenset({"above", "below", "beneath", "across", "along", "beyond", "opposite", "past"})
 #: the linking words and particles of a name made as a phrase ("bag of trash", "chest of drawers",
 #: "drying rack for dishes", "washing-up liquid"): no word of what the kind is, so no clue to it in
 #: a sentence ("if either of them has ended up on the floor" says nothing of a bag or a washing-up
@@ -254,11 +257,23 @@ class _Text:
         says a word anywhere (`_Reader.marked`, `_Reader.animal_kind`) look in."""
         return frozenset(self.words)
 
-    def part_of_next(self, k: int) -> bool:
-        """Whether word `k` names a part of what follows it ("at the end of the night", "the top of
-        the fridge"): no word of a thing's name there ("end table"), as `_Reader.bare_noun` reads
-        the text's words for hints."""
-        return self.words[k] in PART_HEADS and self.words[k + 1:k + 2] == ["of"]
+    def part_of_other(self, k: int) -> bool:
+        """Whether word `k` names a part of another thing: of what follows it ("at the end of the
+        night", "the top of the fridge") or of what its own modifier names ("the gable end", "the
+        north side", "the far end", a noun phrase the part word heads): no word of a thing's name
+        there ("end table", "side table"), as `_Reader.bare_noun` reads the text's words for hints.
+        A part word after a determiner alone ("at the side", "the end table") may still be one."""
+        if self.words[k] not in PART_HEADS:
+            return False
+        if self.words[k + 1:k + 2] == ["of"]:
+            return True
+        before = self.words[k - 1] if k > 0 and self.gaps[k] == " " else ""
+        modified = before.isalpha() and before not in _DETERMINERS and before not in _NAME_LINKS
+        # the phrase ends at the part word: a break or a word no noun after it, not a noun it
+        # modifies ("the gable end above the river", not "a low end table")
+        ends = k + 1 == len(self.words) or self.gaps[k + 1] != " " or self.words[k + 1] in _NAME_LINKS \
+            or self.words[k + 1] in _PLACE_ADVERBS or "NOUN" not in getAllLemmas(self.raw[k + 1])
+        return modified and ends
 
     def sentence_end(self, i: int) -> int:
         """Index of the first word of the next sentence after word `i`."""
@@ -724,8 +739,10 @@ class _Reader:
 
         writing = self.written_in(i)
         unlisted = self.sort_named(i, [c for c in candidates if c is not None])
+        described = i > 0 and self.text.gaps[i] == " " and self.text.words[i - 1] not in _DETERMINERS \
+            and "ADJ" in getAllLemmas(self.text.raw[i - 1])
 
-        def score(category: str | None) -> tuple[bool, bool, bool, bool, int, bool, bool, int, int, bool, bool]:
+        def score(category: str | None) -> tuple[bool, bool, bool, bool, int, bool, bool, bool, int, bool, int, bool, bool]:
             assert category is not None
             cat = self.catalog.categories[category]
             # the other words of its names that say what it is: not a preposition of a name made
@@ -748,7 +765,16 @@ class _Reader:
                     # said, then "the table"): a modifier of a name the word heads, never a time
                     # ("last night" is no night table) or another name's head ("cabinet" of
                     # "bedside cabinet" names a cabinet, no bedside table)
+                    # a kind of the task's own rooms before one a word said elsewhere hints ("tea
+                    # and coffee in the tin" in a kitchen: no coffee table, a living room's)
+                    bool(rooms & self.known_room_types),
                     len(hints & self.context),
+                    # a head described by an adjective ("a sturdy table", "the long table") is its
+                    # sense in general use, where nothing the text says tells its sorts apart:
+                    # before the rooms the kinds it names outright suggest (a guess: bunk beds make
+                    # no bothy a bedroom) and before the catalog's order; the task's own rooms
+                    # still come first
+                    described and not self.known_room_types and HEAD_SENSES.get(word) == category,
                     -len(rooms) if rooms & self.room_evidence() else -1000,
                     # then a kind whose name says no use the text does not ("keep it on the rack,
                     # the metal one" with no shoes, coats or drying said: the storage rack)
@@ -883,7 +909,7 @@ class _Reader:
             if n > 1 and category is not None and not k <= i < k + n:
                 taken.update(range(k, k + n))
             k += n
-        taken.update(k for k in range(start, end) if self.text.part_of_next(k))
+        taken.update(k for k in range(start, end) if self.text.part_of_other(k))
         return {words[k] for k in range(start, end) if k not in taken} - _NOT_CONTEXT
 
     def plural_names(self, category: str, word: str) -> list[bool]:
@@ -913,7 +939,7 @@ class _Reader:
         """The description's words and the words of every name of the kinds it names outright
         (by a name that is not the head noun of several kinds: "shelf" names no kind outright)."""
         words = self.text.words
-        out = {words[k] for k in range(len(words)) if not self.text.part_of_next(k)}
+        out = {words[k] for k in range(len(words)) if not self.text.part_of_other(k)}
         for i in range(len(words)):
             n, category = self.match(i)
             if category is None or n == 1 and (self.verb(i) or self.place_sense(i)):
