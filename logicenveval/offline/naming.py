@@ -186,6 +186,13 @@ ANIMAL_WORDS = frozenset({"pet", "dog", "cat", "puppy", "kitten", "rabbit", "ham
                           "budgie", "parrot", "tortoise", "ferret"})
 #: what an animal's bowl holds ("the water bowl", "a bowl of food": `animal_kind`)
 FEED_WORDS = frozenset({"water", "food", "feed", "drinking", "feeding", "kibble", "biscuit"})
+#: the words that open a clause or phrase saying what the thing before them is for ("the towel
+#: you dry your hands on", "the towel wherewith the brethren dry their hands", "a bottle for the
+#: pills"): relative words, the subject pronouns of a contact clause, "for" (`_Reader.use_clause`)
+USE_OPENERS = frozenset({"that", "which", "wherewith", "wherein", "whereon", "where", "for",
+                         "you", "we", "they", "i", "he", "she", "people", "everyone"})
+#: how many words of such a clause are read: a clause of use is short
+_USE_SPAN = 8
 #: words too common to say which of several categories a bare noun means
 _NOT_CONTEXT = frozenset({"floor", "wall", "ceiling", "room"})
 #: "that is a ...", "it was a ...": a predicate noun of a thing already named (`predicate_noun`)
@@ -739,10 +746,11 @@ class _Reader:
 
         writing = self.written_in(i)
         unlisted = self.sort_named(i, [c for c in candidates if c is not None])
+        use = self.use_clause(i) or self.use_said_later(i)
         described = i > 0 and self.text.gaps[i] == " " and self.text.words[i - 1] not in _DETERMINERS \
             and "ADJ" in getAllLemmas(self.text.raw[i - 1])
 
-        def score(category: str | None) -> tuple[bool, bool, bool, bool, int, bool, bool, bool, int, bool, int, bool, bool]:
+        def score(category: str | None) -> tuple[bool, bool, bool, bool, bool, int, bool, bool, bool, int, bool, int, bool, bool]:
             assert category is not None
             cat = self.catalog.categories[category]
             # the other words of its names that say what it is: not a preposition of a name made
@@ -756,18 +764,23 @@ class _Reader:
             # a book one writes in: the kind named for writing ("notebook") before the head's own
             for_writing = writing and any(w.startswith(tuple(_WRITING)) for w in others)
             hints = self.dropped_modifiers(category, word)
-            return (for_writing, prev in others, own,
+            return (for_writing, prev in others,
+                    # what the noun's own clause says it is for ("the towel you dry your hands on",
+                    # "a bottle for the pills") names its sort before the head's own name does
+                    bool(hints & use),
+                    own,
                     # a sort named by its own modifier is that sort, whatever else its sentence says
                     unlisted and HEAD_SENSES.get(word) == category,
+                    # a kind of the task's own rooms before one a word said near or elsewhere hints
+                    # ("there's coffee in the jar; the post is on the table" in a kitchen: no
+                    # coffee table, a living room's); nothing, where no room id names a type
+                    bool(rooms & self.known_room_types),
                     len(hints & said),
                     written != word and self.plural_named(category, word), category == exact,
                     # the text's words elsewhere, as the modifier a short name dropped ("bedside"
                     # said, then "the table"): a modifier of a name the word heads, never a time
                     # ("last night" is no night table) or another name's head ("cabinet" of
                     # "bedside cabinet" names a cabinet, no bedside table)
-                    # a kind of the task's own rooms before one a word said elsewhere hints ("tea
-                    # and coffee in the tin" in a kitchen: no coffee table, a living room's)
-                    bool(rooms & self.known_room_types),
                     len(hints & self.context),
                     # a head described by an adjective ("a sturdy table", "the long table") is its
                     # sense in general use, where nothing the text says tells its sorts apart:
@@ -784,6 +797,33 @@ class _Reader:
                     words_of(category)[-1] == word)
 
         return max(candidates, key=score)
+
+    def use_clause(self, i: int) -> set[str]:
+        """The words of the clause or phrase right after the noun at word `i` that says what it is
+        for (`USE_OPENERS`: a relative word, a subject pronoun, "for"): "the towel wherewith the
+        brethren dry their hands", "the bottle we keep the pills in", "a basket for the clothes"),
+        to the next break; none when another word follows the noun. A word there that a kind's
+        name adds to the head ("hand" of "hand towel") says the thing is of that kind."""
+        words, gaps = self.text.words, self.text.gaps
+        if i + 1 >= len(words) or gaps[i + 1] != " " or words[i + 1] not in USE_OPENERS:
+            return set()
+        out: set[str] = set()
+        for k in range(i + 2, min(i + 2 + _USE_SPAN, len(words))):
+            if gaps[k] != " ":
+                break
+            out.add(words[k])
+        return out - _NOT_CONTEXT
+
+    def use_said_later(self, i: int) -> set[str]:
+        """The use clause (`use_clause`) of the next mention of the noun at word `i` by "the" or
+        "this" ("OF THE TOWEL. The towel wherewith the brethren dry their hands ..."): a later
+        mention of a head named before is read as that thing (`bare_noun`'s first step), so what
+        it says the thing is for tells the first mention's kind too."""
+        words = self.text.words
+        for k in range(i + 1, len(words)):
+            if words[k] == words[i] and words[k - 1] in {"the", "this"}:
+                return self.use_clause(k)
+        return set()
 
     def head_alone(self, i: int, category: str) -> bool:
         """Whether the word at `i`, no kind's name by itself and the head of names of `category`
