@@ -154,6 +154,11 @@ REGIONAL_SENSES: tuple[tuple[frozenset[str], dict[str, str]], ...] = (
 #: own. Read when the text names its own sort by a modifier no kind's name holds ("the card table",
 #: "a trestle table", "the folding table": `_Reader.bare_noun`)
 HEAD_SENSES = {"table": "dining_table"}
+#: adjectives that describe the catalog's other sorts of a `HEAD_SENSES` head as a dictionary
+#: defines them ("side table: a small table", "coffee table: a low table"; Oxford): a head
+#: described by one ("the small table by the bed") is no more the general sense than a bare one,
+#: where one described by another ("a sturdy table", "the long table") is (`_Reader.bare_noun`)
+SORT_ADJECTIVES = frozenset({"small", "little", "tiny", "low", "occasional"})
 
 #: fixed expressions of general English in which a catalog kind's word names no thing (idioms a
 #: dictionary of idioms lists, and compounds of another sense): as the text writes them, each word
@@ -748,7 +753,7 @@ class _Reader:
         unlisted = self.sort_named(i, [c for c in candidates if c is not None])
         use = self.use_clause(i) or self.use_said_later(i)
         described = i > 0 and self.text.gaps[i] == " " and self.text.words[i - 1] not in _DETERMINERS \
-            and "ADJ" in getAllLemmas(self.text.raw[i - 1])
+            and self.text.words[i - 1] not in SORT_ADJECTIVES and "ADJ" in getAllLemmas(self.text.raw[i - 1])
 
         def score(category: str | None) -> tuple[bool, bool, bool, bool, bool, int, bool, bool, bool, int, bool, int, bool, bool]:
             assert category is not None
@@ -764,6 +769,7 @@ class _Reader:
             # a book one writes in: the kind named for writing ("notebook") before the head's own
             for_writing = writing and any(w.startswith(tuple(_WRITING)) for w in others)
             hints = self.dropped_modifiers(category, word)
+            fits = bool(rooms & self.known_room_types) or not self.known_room_types
             return (for_writing, prev in others,
                     # what the noun's own clause says it is for ("the towel you dry your hands on",
                     # "a bottle for the pills") names its sort before the head's own name does
@@ -771,12 +777,14 @@ class _Reader:
                     own,
                     # a sort named by its own modifier is that sort, whatever else its sentence says
                     unlisted and HEAD_SENSES.get(word) == category,
-                    # a kind of the task's own rooms before one a word said near or elsewhere hints
-                    # ("there's coffee in the jar; the post is on the table" in a kitchen: no
-                    # coffee table, a living room's); nothing, where no room id names a type
-                    bool(rooms & self.known_room_types),
-                    len(hints & said),
+                    # a word of its sentence hints only a kind of the task's own rooms ("there's
+                    # coffee in the jar; the post is on the table" in a kitchen: no coffee table,
+                    # a living room's), any kind where no room id names a type
+                    len(hints & said) if fits else 0,
                     written != word and self.plural_named(category, word), category == exact,
+                    # a kind of the task's own rooms before one a word said elsewhere hints ("tea
+                    # and coffee are in the tin" in a kitchen)
+                    fits,
                     # the text's words elsewhere, as the modifier a short name dropped ("bedside"
                     # said, then "the table"): a modifier of a name the word heads, never a time
                     # ("last night" is no night table) or another name's head ("cabinet" of
