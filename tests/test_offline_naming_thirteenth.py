@@ -5,12 +5,16 @@ note, a text message, a rule book); none is copied from a task."""
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 
 import pytest
 
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.offline.naming import name_objects
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
+import wordnet_names as tool  # noqa: E402
 
 FORMS = Path(__file__).parent / "data" / "naming_forms" / "forms_thirteenth.tsv"
 #: sentences of `FORMS` naming their row's kind: 10 of 32 before the thirteenth session's rules,
@@ -152,3 +156,58 @@ def test_a_later_mentions_use_clause_names_the_heading() -> None:
 ])
 def test_a_clause_of_place_names_no_sort(text: str, kind: str) -> None:
     assert kind in _kinds(text)
+
+
+# -- what a vessel holds, by WordNet: the hyponyms of a vessel kind's contents at any depth, read
+# only as the contents of that vessel (`_Reader.held_by`, `tools/wordnet_names.py`
+# `build_contents`) --
+
+
+@pytest.mark.parametrize("text", [
+    # a best man's speech
+    "There's a bottle of champagne on the island from last night.",
+    # a dinner-party host's note
+    "A bottle of Pinot Noir is breathing on the sideboard.",
+    # a text message
+    "someone left the merlot bottle on the piano!!",
+    # a wine-club newsletter
+    "Each member brings a bottle of Rioja to the tasting.",
+])
+def test_a_vessels_contents_name_the_vessel_kind(text: str) -> None:
+    assert "wine_bottle" in _kinds(text)
+
+
+def test_contents_name_another_vessel_kind_the_same_way() -> None:
+    # WordNet's cereals under the cereal box's contents
+    assert "cereal_box" in _kinds("Put the box of grits back in the pantry.")
+
+
+@pytest.mark.parametrize("text", [
+    # the contents in another vessel, or alone: no bottle
+    "Pour a glass of claret for the vicar.",
+    "The claret is finished, sadly.",
+    "We toasted with champagne at midnight.",
+])
+def test_contents_without_their_vessel_name_no_vessel(text: str) -> None:
+    assert "wine_bottle" not in _kinds(text)
+
+
+def test_tool_collects_a_vessels_contents_at_any_depth_in_any_sense() -> None:
+    data = {
+        "1": tool.Synset("1", 13, ["wine"], "", ["2"]),
+        "2": tool.Synset("2", 13, ["red_wine"], "", ["3"]),
+        "3": tool.Synset("3", 13, ["Bordeaux"], "", ["4"]),
+        "4": tool.Synset("4", 13, ["claret", "must"], "", []),  # depth 3
+        "5": tool.Synset("5", 13, ["juice"], "", ["7"]),
+        "7": tool.Synset("7", 13, ["grape_juice", "must"], "", []),
+        "6": tool.Synset("6", 6, ["chair"], "", ["8"]),
+        "8": tool.Synset("8", 6, ["armchair"], "", []),
+    }
+    catalog: dict[str, dict[str, object]] = {"wine_bottle": {"synonyms": ["wine"]},
+                                             "juice_carton": {"synonyms": []}, "chair": {"synonyms": []}}
+    senses: dict[str, list[dict[str, object]]] = {"wine_bottle": [{"offset": "1"}],
+                                                  "juice_carton": [{"offset": "5"}], "chair": [{"offset": "6"}]}
+    contents = tool.build_contents(senses, catalog, data)
+    # every depth, capitals lowered; "must" claimed by two kinds; a kind named for no vessel gives none
+    assert contents == {"red wine": "wine_bottle", "bordeaux": "wine_bottle", "claret": "wine_bottle",
+                        "grape juice": "juice_carton"}

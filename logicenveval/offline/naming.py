@@ -57,7 +57,7 @@ from logicenveval.offline.sentences import (
     unquote,
 )
 from logicenveval.offline.vocabulary import reading_catalog
-from logicenveval.offline.wordnet import is_wordnet_name
+from logicenveval.offline.wordnet import contents_names, is_wordnet_name
 from logicenveval.scene.compat import can_hold
 
 
@@ -447,7 +447,7 @@ class _Reader:
         found = next(((n, self.phrases[tuple(words[i:i + n])])
                       for n in range(min(self.longest, len(words) - i, stretch), 0, -1)
                       if tuple(words[i:i + n]) in self.phrases), (1, None))
-        closed = self.closed_match(i, stretch) or self.vessel_of(i, stretch)
+        closed = self.closed_match(i, stretch) or self.vessel_of(i, stretch) or self.contents_vessel(i, stretch)
         return closed if closed is not None and closed[0] > found[0] else found
 
     def vessel_of(self, i: int, stretch: int) -> tuple[int, str] | None:
@@ -472,9 +472,36 @@ class _Reader:
         if whole is not None:
             return whole
         n, kind = self.match(j)
-        if kind is None or not any(words_of(text)[-1] == words[i] for text in (kind, *_own(self.catalog.categories[kind]))):
+        if kind is None:
+            held = self.held_by(j, words[i], i + stretch)
+            return None if held is None else (held[0] + j - i, held[1])
+        if not any(words_of(text)[-1] == words[i] for text in (kind, *_own(self.catalog.categories[kind]))):
             return None
         return j + n - i, kind
+
+    def held_by(self, j: int, vessel: str, end: int) -> tuple[int, str] | None:
+        """(length, kind) of the WordNet contents word at word `j` (`contents_names`: "claret",
+        "champagne", "pinot noir") when `vessel` heads a name of the kind that holds it: "a
+        bottle of claret" and "the merlot bottle" are wine bottles, where "a glass of claret"
+        names no bottle and "claret" alone names nothing."""
+        words = self.text.words
+        for n in range(min(3, end - j), 0, -1):
+            kind = contents_names().get(" ".join(words[j:j + n]))
+            if kind is not None and kind in self.catalog.categories and any(
+                    words_of(text)[-1] == vessel for text in (kind, *_own(self.catalog.categories[kind]))):
+                return n, kind
+        return None
+
+    def contents_vessel(self, i: int, stretch: int) -> tuple[int, str] | None:
+        """(length, kind) of "<contents> <vessel>" at word `i` for WordNet contents
+        (`held_by`): "the merlot bottle", "a champagne bottle" are wine bottles."""
+        words = self.text.words
+        for n in range(min(3, stretch - 1), 0, -1):
+            if self.text.gaps[i + n] == " " and words[i + n] in _VESSELS:
+                held = self.held_by(i, words[i + n], i + n)
+                if held is not None and held[0] == n:
+                    return n + 1, held[1]
+        return None
 
     def closed_match(self, i: int, stretch: int) -> tuple[int, str] | None:
         """(length, category) of the longest catalog name starting at word `i` when words `i` and
