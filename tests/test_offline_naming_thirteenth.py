@@ -18,8 +18,8 @@ import wordnet_names as tool  # noqa: E402
 
 FORMS = Path(__file__).parent / "data" / "naming_forms" / "forms_thirteenth.tsv"
 #: sentences of `FORMS` naming their row's kind: 10 of 32 before the thirteenth session's rules,
-#: 18 after them (the rows left: docs/reader.md, "What it still misreads")
-NAMED_AT_LEAST = 18
+#: 20 after them (the rows left: docs/reader.md, "What it still misreads")
+NAMED_AT_LEAST = 20
 
 
 def _kinds(text: str, rooms: tuple[str, ...] = ()) -> list[str]:
