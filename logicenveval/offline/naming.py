@@ -57,7 +57,7 @@ from logicenveval.offline.sentences import (
     unquote,
 )
 from logicenveval.offline.vocabulary import reading_catalog
-from logicenveval.offline.wordnet import is_wordnet_name
+from logicenveval.offline.wordnet import contents_names, is_wordnet_name
 from logicenveval.scene.compat import can_hold
 
 
@@ -85,6 +85,9 @@ _NOUN_LEADS = frozenset({"with", "and", "or", "plus"})
 #: prepositions: an item holding one is a clause, not a noun phrase ("are in the kitchen")
 _PREPOSITIONS = frozenset({"on", "onto", "in", "into", "inside", "from", "by", "near", "under", "of",
                            "to", "at", "beside", "behind", "with"})
+#: prepositions of place a dictionary also lists as nouns ("above", "below"): after a part word
+#: ("the gable end above the river") they end its noun phrase (`_Text.part_of_other`)
+_PLACE_ADVERBS = frozenset({"above", "below", "beneath", "across", "along", "beyond", "opposite", "past"})
 #: the linking words and particles of a name made as a phrase ("bag of trash", "chest of drawers",
 #: "drying rack for dishes", "washing-up liquid"): no word of what the kind is, so no clue to it in
 #: a sentence ("if either of them has ended up on the floor" says nothing of a bag or a washing-up
@@ -151,6 +154,11 @@ REGIONAL_SENSES: tuple[tuple[frozenset[str], dict[str, str]], ...] = (
 #: own. Read when the text names its own sort by a modifier no kind's name holds ("the card table",
 #: "a trestle table", "the folding table": `_Reader.bare_noun`)
 HEAD_SENSES = {"table": "dining_table"}
+#: adjectives that describe the catalog's other sorts of a `HEAD_SENSES` head as a dictionary
+#: defines them ("side table: a small table", "coffee table: a low table"; Oxford): a head
+#: described by one ("the small table by the bed") is no more the general sense than a bare one,
+#: where one described by another ("a sturdy table", "the long table") is (`_Reader.bare_noun`)
+SORT_ADJECTIVES = frozenset({"small", "little", "tiny", "low", "occasional"})
 
 #: fixed expressions of general English in which a catalog kind's word names no thing (idioms a
 #: dictionary of idioms lists, and compounds of another sense): as the text writes them, each word
@@ -183,6 +191,13 @@ ANIMAL_WORDS = frozenset({"pet", "dog", "cat", "puppy", "kitten", "rabbit", "ham
                           "budgie", "parrot", "tortoise", "ferret"})
 #: what an animal's bowl holds ("the water bowl", "a bowl of food": `animal_kind`)
 FEED_WORDS = frozenset({"water", "food", "feed", "drinking", "feeding", "kibble", "biscuit"})
+#: the words that open a clause or phrase saying what the thing before them is for ("the towel
+#: you dry your hands on", "the towel wherewith the brethren dry their hands", "a bottle for the
+#: pills"): relative words, the subject pronouns of a contact clause, "for" (`_Reader.use_clause`)
+USE_OPENERS = frozenset({"that", "which", "wherewith", "wherein", "whereon", "where", "for",
+                         "you", "we", "they", "i", "he", "she", "people", "everyone"})
+#: how many words of such a clause are read: a clause of use is short
+_USE_SPAN = 8
 #: words too common to say which of several categories a bare noun means
 _NOT_CONTEXT = frozenset({"floor", "wall", "ceiling", "room"})
 #: "that is a ...", "it was a ...": a predicate noun of a thing already named (`predicate_noun`)
@@ -254,11 +269,23 @@ class _Text:
         says a word anywhere (`_Reader.marked`, `_Reader.animal_kind`) look in."""
         return frozenset(self.words)
 
-    def part_of_next(self, k: int) -> bool:
-        """Whether word `k` names a part of what follows it ("at the end of the night", "the top of
-        the fridge"): no word of a thing's name there ("end table"), as `_Reader.bare_noun` reads
-        the text's words for hints."""
-        return self.words[k] in PART_HEADS and self.words[k + 1:k + 2] == ["of"]
+    def part_of_other(self, k: int) -> bool:
+        """Whether word `k` names a part of another thing: of what follows it ("at the end of the
+        night", "the top of the fridge") or of what its own modifier names ("the gable end", "the
+        north side", "the far end", a noun phrase the part word heads): no word of a thing's name
+        there ("end table", "side table"), as `_Reader.bare_noun` reads the text's words for hints.
+        A part word after a determiner alone ("at the side", "the end table") may still be one."""
+        if self.words[k] not in PART_HEADS:
+            return False
+        if self.words[k + 1:k + 2] == ["of"]:
+            return True
+        before = self.words[k - 1] if k > 0 and self.gaps[k] == " " else ""
+        modified = before.isalpha() and before not in _DETERMINERS and before not in _NAME_LINKS
+        # the phrase ends at the part word: a break or a word no noun after it, not a noun it
+        # modifies ("the gable end above the river", not "a low end table")
+        ends = k + 1 == len(self.words) or self.gaps[k + 1] != " " or self.words[k + 1] in _NAME_LINKS \
+            or self.words[k + 1] in _PLACE_ADVERBS or "NOUN" not in getAllLemmas(self.raw[k + 1])
+        return modified and ends
 
     def sentence_end(self, i: int) -> int:
         """Index of the first word of the next sentence after word `i`."""
@@ -420,7 +447,7 @@ class _Reader:
         found = next(((n, self.phrases[tuple(words[i:i + n])])
                       for n in range(min(self.longest, len(words) - i, stretch), 0, -1)
                       if tuple(words[i:i + n]) in self.phrases), (1, None))
-        closed = self.closed_match(i, stretch) or self.vessel_of(i, stretch)
+        closed = self.closed_match(i, stretch) or self.vessel_of(i, stretch) or self.contents_vessel(i, stretch)
         return closed if closed is not None and closed[0] > found[0] else found
 
     def vessel_of(self, i: int, stretch: int) -> tuple[int, str] | None:
@@ -445,9 +472,36 @@ class _Reader:
         if whole is not None:
             return whole
         n, kind = self.match(j)
-        if kind is None or not any(words_of(text)[-1] == words[i] for text in (kind, *_own(self.catalog.categories[kind]))):
+        if kind is None:
+            held = self.held_by(j, words[i], i + stretch)
+            return None if held is None else (held[0] + j - i, held[1])
+        if not any(words_of(text)[-1] == words[i] for text in (kind, *_own(self.catalog.categories[kind]))):
             return None
         return j + n - i, kind
+
+    def held_by(self, j: int, vessel: str, end: int) -> tuple[int, str] | None:
+        """(length, kind) of the WordNet contents word at word `j` (`contents_names`: "claret",
+        "champagne", "pinot noir") when `vessel` heads a name of the kind that holds it: "a
+        bottle of claret" and "the merlot bottle" are wine bottles, where "a glass of claret"
+        names no bottle and "claret" alone names nothing."""
+        words = self.text.words
+        for n in range(min(3, end - j), 0, -1):
+            kind = contents_names().get(" ".join(words[j:j + n]))
+            if kind is not None and kind in self.catalog.categories and any(
+                    words_of(text)[-1] == vessel for text in (kind, *_own(self.catalog.categories[kind]))):
+                return n, kind
+        return None
+
+    def contents_vessel(self, i: int, stretch: int) -> tuple[int, str] | None:
+        """(length, kind) of "<contents> <vessel>" at word `i` for WordNet contents
+        (`held_by`): "the merlot bottle", "a champagne bottle" are wine bottles."""
+        words = self.text.words
+        for n in range(min(3, stretch - 1), 0, -1):
+            if self.text.gaps[i + n] == " " and words[i + n] in _VESSELS:
+                held = self.held_by(i, words[i + n], i + n)
+                if held is not None and held[0] == n:
+                    return n + 1, held[1]
+        return None
 
     def closed_match(self, i: int, stretch: int) -> tuple[int, str] | None:
         """(length, category) of the longest catalog name starting at word `i` when words `i` and
@@ -724,8 +778,11 @@ class _Reader:
 
         writing = self.written_in(i)
         unlisted = self.sort_named(i, [c for c in candidates if c is not None])
+        use = self.use_clause(i) or self.use_said_later(i)
+        described = i > 0 and self.text.gaps[i] == " " and self.text.words[i - 1] not in _DETERMINERS \
+            and self.text.words[i - 1] not in SORT_ADJECTIVES and "ADJ" in getAllLemmas(self.text.raw[i - 1])
 
-        def score(category: str | None) -> tuple[bool, bool, bool, bool, int, bool, bool, int, int, bool, bool]:
+        def score(category: str | None) -> tuple[bool, bool, bool, bool, bool, int, bool, bool, bool, int, bool, int, bool, bool]:
             assert category is not None
             cat = self.catalog.categories[category]
             # the other words of its names that say what it is: not a preposition of a name made
@@ -739,16 +796,33 @@ class _Reader:
             # a book one writes in: the kind named for writing ("notebook") before the head's own
             for_writing = writing and any(w.startswith(tuple(_WRITING)) for w in others)
             hints = self.dropped_modifiers(category, word)
-            return (for_writing, prev in others, own,
+            fits = bool(rooms & self.known_room_types) or not self.known_room_types
+            return (for_writing, prev in others,
+                    # what the noun's own clause says it is for ("the towel you dry your hands on",
+                    # "a bottle for the pills") names its sort before the head's own name does
+                    bool(hints & use),
+                    own,
                     # a sort named by its own modifier is that sort, whatever else its sentence says
                     unlisted and HEAD_SENSES.get(word) == category,
-                    len(hints & said),
+                    # a word of its sentence hints only a kind of the task's own rooms ("there's
+                    # coffee in the jar; the post is on the table" in a kitchen: no coffee table,
+                    # a living room's), any kind where no room id names a type
+                    len(hints & said) if fits else 0,
                     written != word and self.plural_named(category, word), category == exact,
+                    # a kind of the task's own rooms before one a word said elsewhere hints ("tea
+                    # and coffee are in the tin" in a kitchen)
+                    fits,
                     # the text's words elsewhere, as the modifier a short name dropped ("bedside"
                     # said, then "the table"): a modifier of a name the word heads, never a time
                     # ("last night" is no night table) or another name's head ("cabinet" of
                     # "bedside cabinet" names a cabinet, no bedside table)
                     len(hints & self.context),
+                    # a head described by an adjective ("a sturdy table", "the long table") is its
+                    # sense in general use, where nothing the text says tells its sorts apart:
+                    # before the rooms the kinds it names outright suggest (a guess: bunk beds make
+                    # no bothy a bedroom) and before the catalog's order; the task's own rooms
+                    # still come first
+                    described and not self.known_room_types and HEAD_SENSES.get(word) == category,
                     -len(rooms) if rooms & self.room_evidence() else -1000,
                     # then a kind whose name says no use the text does not ("keep it on the rack,
                     # the metal one" with no shoes, coats or drying said: the storage rack)
@@ -758,6 +832,33 @@ class _Reader:
                     words_of(category)[-1] == word)
 
         return max(candidates, key=score)
+
+    def use_clause(self, i: int) -> set[str]:
+        """The words of the clause or phrase right after the noun at word `i` that says what it is
+        for (`USE_OPENERS`: a relative word, a subject pronoun, "for"): "the towel wherewith the
+        brethren dry their hands", "the bottle we keep the pills in", "a basket for the clothes"),
+        to the next break; none when another word follows the noun. A word there that a kind's
+        name adds to the head ("hand" of "hand towel") says the thing is of that kind."""
+        words, gaps = self.text.words, self.text.gaps
+        if i + 1 >= len(words) or gaps[i + 1] != " " or words[i + 1] not in USE_OPENERS:
+            return set()
+        out: set[str] = set()
+        for k in range(i + 2, min(i + 2 + _USE_SPAN, len(words))):
+            if gaps[k] != " ":
+                break
+            out.add(words[k])
+        return out - _NOT_CONTEXT
+
+    def use_said_later(self, i: int) -> set[str]:
+        """The use clause (`use_clause`) of the next mention of the noun at word `i` by "the" or
+        "this" ("OF THE TOWEL. The towel wherewith the brethren dry their hands ..."): a later
+        mention of a head named before is read as that thing (`bare_noun`'s first step), so what
+        it says the thing is for tells the first mention's kind too."""
+        words = self.text.words
+        for k in range(i + 1, len(words)):
+            if words[k] == words[i] and words[k - 1] in {"the", "this"}:
+                return self.use_clause(k)
+        return set()
 
     def head_alone(self, i: int, category: str) -> bool:
         """Whether the word at `i`, no kind's name by itself and the head of names of `category`
@@ -883,7 +984,7 @@ class _Reader:
             if n > 1 and category is not None and not k <= i < k + n:
                 taken.update(range(k, k + n))
             k += n
-        taken.update(k for k in range(start, end) if self.text.part_of_next(k))
+        taken.update(k for k in range(start, end) if self.text.part_of_other(k))
         return {words[k] for k in range(start, end) if k not in taken} - _NOT_CONTEXT
 
     def plural_names(self, category: str, word: str) -> list[bool]:
@@ -913,7 +1014,7 @@ class _Reader:
         """The description's words and the words of every name of the kinds it names outright
         (by a name that is not the head noun of several kinds: "shelf" names no kind outright)."""
         words = self.text.words
-        out = {words[k] for k in range(len(words)) if not self.text.part_of_next(k)}
+        out = {words[k] for k in range(len(words)) if not self.text.part_of_other(k)}
         for i in range(len(words)):
             n, category = self.match(i)
             if category is None or n == 1 and (self.verb(i) or self.place_sense(i)):

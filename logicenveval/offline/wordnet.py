@@ -20,6 +20,15 @@ def wordnet_names() -> dict[str, str]:
     return names
 
 
+@lru_cache(maxsize=1)
+def contents_names() -> dict[str, str]:
+    """Word (spaces between words) -> the vessel kind that holds what it names ("claret": the
+    wine bottle), read only as a vessel's contents ("a bottle of claret", "the merlot bottle":
+    `offline.naming`), never as a name of its own (`tools/wordnet_names.py`, `build_contents`)."""
+    names: dict[str, str] = json.loads(WORDNET_NAMES.read_text(encoding="utf-8"))["contents"]
+    return names
+
+
 def is_wordnet_name(text: str) -> bool:
     """Whether a synonym of the reading catalog is a WordNet name (not the catalog's own): such
     a name is matched as a whole phrase only, never lends its head noun ("lady's slipper", a
