@@ -2446,6 +2446,12 @@ def _there_named(reader: _Reader, said: str, clauses: list[Clause], sentence: in
     return said
 
 
+#: the verb a placement is asked with ("is it on the floor now?", "should it be found lying on
+#: the floor"); a verb of seeing or living asks no place ("see that bottle on the bench?",
+#: "whether it could live somewhere else")
+_ASKED_BE = frozenset({"is", "are", "was", "were", "be", "been"})
+
+
 def _asked_again(said: str, facts: list[Fact]) -> set[str]:
     """The placements a condition asks of the situation: "Ned left his exercise book on the
     floor. ... Is it on the floor now? Then pick it up", "A counter with a plate upon it ...
@@ -2454,8 +2460,14 @@ def _asked_again(said: str, facts: list[Fact]) -> set[str]:
     is does not know it, whatever a statement (a past one, a stage direction, a habit in an
     aside) said of it; so the statement does not settle the factor (`_settle_stated`). Not a
     goal, a home, nor "already" (`_already`: "put it on the shelf unless it's already there"
-    asks whether the instruction is done, which a statement of where it is does answer)."""
-    if "already" in {w for w, _, _ in tokens(expand(said))}:
+    asks whether the instruction is done, which a statement of where it is does answer). Only a
+    condition that asks only where one thing is (or whether it is there at all), with a verb "be":
+    in "if the mug on the coffee table is dirty" the
+    place names the mug and the state is asked; a clause read with an instruction and an aside
+    ("take the spare roll (we keep spares in the vanity cabinet), put it ...") asks no place."""
+    words = {w for w, _, _ in tokens(expand(said))}
+    if "already" in words or not words & _ASKED_BE or len({f.subject for f in facts}) != 1 or any(
+            f.kind not in ("location", "exists") for f in facts):
         return set()
     return {f.condition for f in facts if f.kind == "location" and not (f.goal or f.home)}
 
@@ -2663,7 +2675,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 facts = [replace(f, goal=False) for f in facts]
             if spread[0] == grammatical:
                 facts = list(_distributed(tuple(facts), spread[1]))
-            if role == "condition":
+            if role == "condition" and text.strip() in found_in_text[si]:
+                # (a condition the writer wrote, not one `implied` spelled out: "Examine the mug on
+                # the coffee table" is "examine the mug if it is on the coffee table")
                 reader.doubted |= _asked_again(said, facts)
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
         if bullets[si] is not None and si + 1 < len(sentences) and bullets[si + 1] == bullets[si]:

@@ -283,8 +283,10 @@ def presence_asked(words: list[str]) -> bool | None:
             words = words[:-len(time)]
             break
     if words[:1] and words[0] in _PRESENCE_QUESTION:
+        # (the thing named: "are they there?" after "I forgot my glasses on the coffee table"
+        # asks the place the sentence before named, not whether they exist)
         lead = 2 if words[1:2] == ["not"] else 1
-        for n in (1, 2, 3):
+        for n in (2, 3):
             said = _presence(words[lead:lead + n] + words[:1] + words[lead + n:])
             if said is not None:
                 return said
