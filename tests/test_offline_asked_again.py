@@ -46,6 +46,14 @@ def test_a_placement_stated_and_then_asked_stays_a_question(text: str, rooms: tu
     # "already" asks whether the instruction is done; the statement answers it
     ("The book is on the shelf. Put the book on the shelf unless it is already there.", ("study",),
      "on(book, shelf)"),
+    # the place names the thing, the state is asked
+    ("There's a desk with a mug on it. If the mug on the desk is dirty, wash it.", ("office",), "on(mug, desk)"),
+    # a check the reader implies ("examine X on Y"), not the writer's question
+    ("A bench with a towel on it. Examine the towel on the bench. Is it wet? Then hang it up.", ("bathroom",),
+     "on(towel, bench)"),
+    # a verb of seeing asks no place
+    ("Right, team: the water bottle is on the bench. See that water bottle on the bench? Bin it.", ("mudroom",),
+     "on(water_bottle, bench)"),
 ])
 def test_a_placement_stated_and_not_asked_is_no_question(text: str, rooms: tuple[str, ...], fact: str) -> None:
     assert _no_factor_of(text, rooms, fact)
@@ -139,3 +147,14 @@ def test_a_condition_without_its_comma_keeps_its_predicate(text: str, rooms: tup
 def test_a_participle_describing_a_thing_asks_nothing() -> None:
     # "washed" before its noun describes the plates; no condition
     assert _no_factor_of("Washed plates go on the shelf.", ("kitchen",), "state(plate, dirty)")
+
+
+
+def test_a_room_said_in_a_time_clause_is_not_asked_again() -> None:
+    from logicenveval.offline.analysis import Fact, _asked_again
+    # an advice column: "when" opens an aside about the house, not a question of where the sink is
+    sink = Fact("sink", "in_room(sink, kitchen)", "location", "kitchen")
+    assert _asked_again(", as in your house, the nearest sink is in the kitchen next door.", [sink]) == set()
+    # a diary: where a thing is, asked of a holder
+    towel = Fact("towel", "on(towel, floor)", "location", "floor")
+    assert _asked_again("Is it on the floor now?", [towel]) == {"on(towel, floor)"}

@@ -2461,15 +2461,18 @@ def _asked_again(said: str, facts: list[Fact]) -> set[str]:
     aside) said of it; so the statement does not settle the factor (`_settle_stated`). Not a
     goal, a home, nor "already" (`_already`: "put it on the shelf unless it's already there"
     asks whether the instruction is done, which a statement of where it is does answer). Only a
-    condition that asks only where one thing is (or whether it is there at all), with a verb "be":
-    in "if the mug on the coffee table is dirty" the
-    place names the mug and the state is asked; a clause read with an instruction and an aside
-    ("take the spare roll (we keep spares in the vanity cabinet), put it ...") asks no place."""
+    condition that asks only where one thing is (or whether it is there at all), with a verb "be",
+    and only of a thing on or in a holder: in "if the mug on the coffee table is dirty" the place
+    names the mug and the state is asked; a clause read with an instruction and an aside ("take
+    the spare roll (we keep spares in the vanity cabinet), put it ...") asks no place; a room is
+    where the scene is set ("even when, as in your house, the nearest sink is in the kitchen next
+    door" asks nothing)."""
     words = {w for w, _, _ in tokens(expand(said))}
     if "already" in words or not words & _ASKED_BE or len({f.subject for f in facts}) != 1 or any(
             f.kind not in ("location", "exists") for f in facts):
         return set()
-    return {f.condition for f in facts if f.kind == "location" and not (f.goal or f.home)}
+    return {f.condition for f in facts if f.kind == "location" and not (f.goal or f.home)
+            and f.condition.startswith(("on(", "inside("))}
 
 
 #: the conjunctions "make sure" may follow ("... is lovely but do make sure it's off"); after a
