@@ -15,8 +15,12 @@ fact and its negation (`read`, the loss "a value never set" on unseen text), and
 `analysis.nest` builds puts the sentence's action under the value the condition says and not
 under the other (`branch`: "if the tv is off, switch it on" under "no"; a negated verb group in
 a question makes a negative question, which asks the positive proposition). The figure of the
-r22 connectives alone is printed too (0.9965 when the later forms were added), so that the
-forms added since do not hide a fall.
+r22 connectives alone is printed too (0.9965 when the later forms were added), and that of the
+grid as it stood before the thirteenth session (`old grid`, 0.9909 read / 0.9871 branch then), so
+that the forms added since do not hide a fall. The thirteenth session's forms (a presence asked as
+such, a state said of an earlier time and asked again, a condition without its comma, an aside
+between dashes after the connective or of habit in brackets after the condition, a future "will
+be" asked by "if so") are measured alone with `--new`.
 
 Combinations that English does not form ("Should the lamp might be on") are left out by the
 tables (`None` cells), so every sentence measured is one a writer could write.
@@ -24,6 +28,7 @@ tables (`None` cells), so every sentence measured is one a writer could write.
     python benchmarks/condition_forms.py            # the matrix, last line `condition_forms overall=...`
     python benchmarks/condition_forms.py --why      # and every sentence misread
     python benchmarks/condition_forms.py --smoke    # a small sample, seconds
+    python benchmarks/condition_forms.py --new      # the thirteenth session's forms only
 """
 
 from __future__ import annotations
