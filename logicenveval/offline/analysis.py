@@ -77,6 +77,7 @@ from logicenveval.offline.sentences import (
     expand,
     foreign,
     habitual,
+    predicate_state,
     split_sentences,
     taken_word,
     unquote,
@@ -672,7 +673,8 @@ class _Reader:
         #: places asked by "unless it's already there" (`_already`): a home does not settle them
         self.asked_already: set[str] = set()
         #: placements said, then asked by a condition pointing back with "there" ("There's a plate
-        #: on the counter ... no plate there at all?", `_there_named`): no statement settles them
+        #: on the counter ... no plate there at all?", `_there_named`) or naming them again
+        #: (`_asked_again`): no statement settles them
         self.doubted: set[str] = set()
         self.last_state: dict[str, Fact] = {}
         #: the thing last spoken of, not a place it goes to ("Bath towel on the floor? Wet: into
@@ -2444,6 +2446,35 @@ def _there_named(reader: _Reader, said: str, clauses: list[Clause], sentence: in
     return said
 
 
+#: the verb a placement is asked with ("is it on the floor now?", "should it be found lying on
+#: the floor"); a verb of seeing or living asks no place ("see that bottle on the bench?",
+#: "whether it could live somewhere else")
+_ASKED_BE = frozenset({"is", "are", "was", "were", "be", "been"})
+
+
+def _asked_again(said: str, facts: list[Fact]) -> set[str]:
+    """The placements a condition asks of the situation: "Ned left his exercise book on the
+    floor. ... Is it on the floor now? Then pick it up", "A counter with a plate upon it ...
+    And if there is no plate on the counter at all?", "Should it be found lying on the floor
+    (it is always found lying on the floor), pick it up". Why: a writer who asks where a thing
+    is does not know it, whatever a statement (a past one, a stage direction, a habit in an
+    aside) said of it; so the statement does not settle the factor (`_settle_stated`). Not a
+    goal, a home, nor "already" (`_already`: "put it on the shelf unless it's already there"
+    asks whether the instruction is done, which a statement of where it is does answer). Only a
+    condition that asks only where one thing is (or whether it is there at all), with a verb "be",
+    and only of a thing on or in a holder: in "if the mug on the coffee table is dirty" the place
+    names the mug and the state is asked; a clause read with an instruction and an aside ("take
+    the spare roll (we keep spares in the vanity cabinet), put it ...") asks no place; a room is
+    where the scene is set ("even when, as in your house, the nearest sink is in the kitchen next
+    door" asks nothing)."""
+    words = {w for w, _, _ in tokens(expand(said))}
+    if "already" in words or not words & _ASKED_BE or len({f.subject for f in facts}) != 1 or any(
+            f.kind not in ("location", "exists") for f in facts):
+        return set()
+    return {f.condition for f in facts if f.kind == "location" and not (f.goal or f.home)
+            and f.condition.startswith(("on(", "inside("))}
+
+
 #: the conjunctions "make sure" may follow ("... is lovely but do make sure it's off"); after a
 #: condition earlier in the sentence (`_IN_CONDITION`) it is part of that condition's instruction
 #: and asks nothing of its own
@@ -2574,7 +2605,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             reader.own_it = own
             reader.group = spread[1] if spread[0] == grammatical else ()
             if role == "condition":
-                said = _there_named(reader, said, clauses, grammatical)
+                # "if my mug hasn't been washed wash it": the predicate the cut ended
+                said = _there_named(reader, predicate_state(said), clauses, grammatical)
             thing = reader.heading_topic or (reader.topic if reader.topic_kind == "role" else ())
             facts, names = reader.facts("there is " + said if cue == "should there be" else said)
             reader.own_it = False
@@ -2617,7 +2649,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # isn't there, nothing to do": after a condition asking whether the thing is there
                 # at all, "there" is that presence, not the place the instruction put it
                 facts = [Fact(r, f"exists({r})", "exists", negated=present) for r in asked]
-            elif role == "condition" and not facts and names and (
+            elif role == "condition" and all(f.derived for f in facts) and names and (
                     present is False or present is True and bool(set(low_words[:1]) & PRESENCE_DETERMINERS)
                     or present is True and not _place_before(clauses, grammatical, names)):
                 # "If it turns up, put it on the desk", "it'll be on the floor if it's anywhere",
@@ -2625,7 +2657,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # up, or be there at all, may be absent (with no place named before to point to,
                 # "it is there" asks whether the thing is there at all); so does "the mug is not
                 # there" with the thing named in the condition itself (a pronoun, "if it is not
-                # there", points back to a place the sentence before may have named)
+                # there", points back to a place the sentence before may have named); an attribute
+                # only guessed from a word ("right" of "if the mug is there right now") is no reading
                 facts = [Fact(r, f"exists({r})", "exists", negated=bool(present)) for r in names[:1]]
             elif role == "condition" and names and not any(not f.goal for f in facts) \
                     and _FIND_NAMED.match(low):
@@ -2645,6 +2678,10 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 facts = [replace(f, goal=False) for f in facts]
             if spread[0] == grammatical:
                 facts = list(_distributed(tuple(facts), spread[1]))
+            if role == "condition" and text.strip() in found_in_text[si]:
+                # (a condition the writer wrote, not one `implied` spelled out: "Examine the mug on
+                # the coffee table" is "examine the mug if it is on the coffee table")
+                reader.doubted |= _asked_again(said, facts)
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
         if bullets[si] is not None and si + 1 < len(sentences) and bullets[si + 1] == bullets[si]:
             continue  # "* Bedroom: table lamp on? -> off. Wardrobe doors open? -> close.": one item

@@ -260,7 +260,41 @@ PRESENCE_DETERMINERS = frozenset({"the", "a", "an", "your", "my", "our", "his", 
 _PRESENCE_FILLERS = frozenset({"ever", "still", "do", "does", "did"})
 
 
+#: the finite words a presence question opens with ("Is the mug there?", "Isn't the remote here?")
+_PRESENCE_QUESTION = frozenset({"is", "are", "was", "were"})
+#: modals before "be" in a presence condition ("if the mug might still be there", "should the
+#: towel be here", "if it will be there"); a bare "be" after an inverted "should" too
+_PRESENCE_MODALS = frozenset({"might", "may", "could", "should", "will", "would", "must", "can"})
+#: adverbials of time after a presence that say when, not where ("if the mug is there right now",
+#: "is it here at the moment?"); not "already" ("if it's there already" asks whether an
+#: instruction is done, `analysis._already`) nor a place ("in there")
+_PRESENCE_TIMES = tuple(sorted((tuple(a.split()) for a in TRAILING_ADVERBIALS
+                               if a not in ("already", "in there", "in here")), key=len, reverse=True))
+
+
 def presence_asked(words: list[str]) -> bool | None:
+    """`_presence` of the condition's words, also in the forms writers ask it in (the thirteenth
+    session): an adverbial of time after it dropped (`_PRESENCE_TIMES`), a modal before "be"
+    ("if the mug might still be there", "should the towel be here") and a question with its finite
+    word first ("Is the mug there?"; a negative question, "Isn't the mug there?", asks the same
+    as the positive one, `analysis._unbiased`). Why: a presence was read only as "X is there"."""
+    for time in _PRESENCE_TIMES:
+        if len(words) > len(time) + 1 and tuple(words[-len(time):]) == time:
+            words = words[:-len(time)]
+            break
+    if words[:1] and words[0] in _PRESENCE_QUESTION:
+        # (the thing named: "are they there?" after "I forgot my glasses on the coffee table"
+        # asks the place the sentence before named, not whether they exist)
+        lead = 2 if words[1:2] == ["not"] else 1
+        for n in (2, 3):
+            said = _presence(words[lead:lead + n] + words[:1] + words[lead + n:])
+            if said is not None:
+                return said
+        return None
+    return _presence(words)
+
+
+def _presence(words: list[str]) -> bool | None:
     """Whether a condition's words (after its "if", contractions spelled out, no punctuation) ask
     only whether its thing is there at all, and if so whether they ask that it is *not* there
     (True) or that it is (False); None when they ask more. The subject is "it", "they" or the
@@ -280,7 +314,9 @@ def presence_asked(words: list[str]) -> bool | None:
         if tuple(rest) in APPEARING:
             return False
         if n:  # a subject's presence is said by "is" ("if its flame yet gutters there" asks more)
-            if rest[:1] not in (["is"], ["are"]):
+            if rest[:1] and rest[0] in _PRESENCE_MODALS and rest[1:2] == ["be"]:
+                rest = rest[1:]
+            if rest[:1] not in (["is"], ["are"], ["be"]):
                 continue
             rest = rest[1:]
         negated = rest[:1] == ["not"]
@@ -595,6 +631,10 @@ def _imperative_cut(cond: str) -> int | None:
             continue
         if " ".join(said[ws[k].end():].strip(" .,;:!?").split()) in TRAILING_ADVERBIALS:
             continue  # "if it was left open this morning": a state, then when; no verb and its object
+        if ws[k].group() in STATE_WORDS and any(
+                " ".join(w.group() for w in ws[k + 1:k + 1 + len(a.split())]) == a and k + len(a.split()) + 1 < len(ws)
+                for a in TRAILING_ADVERBIALS):
+            continue  # "if the fridge was left open this morning close it": the state, when, then the verb
         # a terse instruction with its verb dropped after a bare state ("if wet into laundry
         # basket", "IF DIRTY ONTO THE PILE"): the direction starts it (`DIRECTIONS`)
         bare = ws[k].group() in DIRECTIONS and ws[k - 1].group() in STATE_WORDS

@@ -579,6 +579,15 @@ def _predicate(word: str) -> str:
     return PREDICATE_STATES.get(said, "missing")
 
 
+def predicate_state(clause: str) -> str:
+    """The clause with a predicate of `PREDICATE_STATES` or `ABSENCE_PREDICATES` at its end read
+    as its state word, as `unquote` reads it before a mark: for a condition cut from its
+    instruction where the writer typed no comma ("if my mug hasn't been washed wash it", "if the
+    towel is still dripping hang it up", `clauses._imperative_cut`), whose predicate no mark
+    ended when the text was normalised (the thirteenth session)."""
+    return _PREDICATE_STATE.sub(lambda m: m.group(1) + _predicate(m.group(2)), clause)
+
+
 #: "In the case the heater is on", "in the event that the tap is running": a condition opened by
 #: a noun of occasion ("in the case (that)", "in the event (that)"; Merriam-Webster, "in the event
 #: that": "if it happens that"), read as "if"; only where a clause starts (its sentence's or item's
@@ -605,6 +614,20 @@ _SUPPOSED_IF = re.compile(r"(?:(?<=^)|(?<=[.!?;:)\n])|(?<=[.!?;:)]\s)|(?<=\s-\s)
 COMMENT_ASIDES = ("as ever", "as always", "as usual", "of course", "naturally", "by the way",
                   "incidentally", "as you know", "as you'll know", "needless to say", "as it happens")
 _COMMENT_ASIDE = re.compile(rf"(?<=\w),\s+(?:{'|'.join(re.escape(a) for a in COMMENT_ASIDES)}),\s+(?=\w)", re.I)
+
+
+#: connectives a writer may break off after, an aside between dashes before the clause they open
+#: ("If - and it does happen - the lamp is on, ...", "Unless - ah, unless! - the dishwasher is
+#: already running: ...", "When - not if - the bin is full, ..."): the aside says how the writer
+#: feels about the case, nothing of it, and hides the condition from its cue; dropped with its
+#: dashes. Only straight after the connective and up to `_DASHED_ASIDE_WORDS` words, so a dash
+#: after a condition ("if it's dirty - sink") and a dashed list are left alone
+DASHED_ASIDE_CONNECTIVES = ("if", "unless", "when", "whenever", "once", "should", "provided that", "as long as",
+                            "in case")
+_DASHED_ASIDE_WORDS = 6
+_DASHED_ASIDE = re.compile(
+    rf"\b(?P<cue>{'|'.join(re.escape(c) for c in DASHED_ASIDE_CONNECTIVES)})[ \t]+(?:-|--|\u2013|\u2014)[ \t]+"
+    rf"(?:[^\s.?\n\u2013\u2014-]+[ \t]+){{1,{_DASHED_ASIDE_WORDS}}}(?:-|--|\u2013|\u2014)[ \t]+(?=\w)", re.I)
 
 
 def _occasion_if(m: re.Match[str]) -> str:
@@ -921,11 +944,13 @@ def unquote(text: str) -> str:
     fridge", `_DIRECTIVE_WITH`, `_DIRECTIVE_AFTER_QUESTION`), a place "to be checked" as one that "may be" (`_TO_BE_CHECKED`), without a chat line's time stamp (`_TIME_STAMP`), without a reference work's
     citation marks (`_CITATION`), with a Markdown sub-heading as a heading before a colon
     (`_MARKDOWN_HEADING`); a supposition as "if" (`_SUPPOSED_IF`), a comment aside between
-    commas dropped (`COMMENT_ASIDES`), a whole question in quotes without them (`_QUOTED_WHOLE`), a
+    commas dropped (`COMMENT_ASIDES`), an aside between dashes after a connective dropped
+    (`DASHED_ASIDE_CONNECTIVES`), a whole question in quotes without them (`_QUOTED_WHOLE`), a
     thing gone said as "missing" (`ABSENCE_PREDICATES`), a predicate state's elided subject, a
     second predicate's shared subject and a note's dropped subject of doubt spelled out
     (`_ELIDED_PREDICATE`, `_SHARED_SUBJECT`, `_DROPPED_DOUBT`), and an inverted question's
     participle read as its state (`_QUESTION_PREDICATE`)."""
+    text = _DASHED_ASIDE.sub(r"\g<cue> ", text)
     text = _SUPPOSED_IF.sub(_occasion_if, _OCCASION_IF.sub(_occasion_if, _COMMENT_ASIDE.sub(" ", _QUOTED_WHOLE.sub(r"\1", text))))
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
     text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_dictated(_runs_on(_modern(_NATIVE_IF.sub(_native_if, text))))))))
