@@ -149,7 +149,7 @@ HARDER_FORMS: dict[str, tuple[str, tuple[str, ...], str | None]] = {
     "standing rule at all times": ("{X} should be {P} {Y} at all times.", ("the", "my", "name's", "pronoun"), None),
     "standing rule always": ("{X} must always be {P} {Y}, day and night.", ("the", "my", "name's"), None),
     "reduced relative left": ("{X} left {P} {Y} needs a wipe.", ("the", "my", "name's"), None),
-    "reduced relative sitting": ("{X} sitting {P} {Y} is mine.", ("the", "my", "name's"), None),
+    "reduced relative sitting": ("{X} sitting {P} {Y} is still dirty.", ("the", "my", "name's"), None),
     "locative inversion stands": ("{P} {Y} stands {X}.", ("a", "my", "name's"), None),
     "locative inversion lies": ("{P} {Y} lies {X}, untouched.", ("a", "my", "name's"), None),
     "coordinated subject": ("{X} and {O} are {P} {Y}.", ("the", "my", "name's"), None),

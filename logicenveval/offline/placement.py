@@ -141,6 +141,28 @@ VERBS = BE | PERFECT | STATIVE | RESULT | KEEP_VERBS | HAVE_VERBS | MOTION
 #: ("the shirt should be in the basket", "it needs to go on the desk", "is to be put away")
 NORMATIVE = frozenset({"should", "must", "ought", "shall", "would", "will", "can", "to", "needs", "need",
                        "has", "have", "wants", "want"})
+#: modals of a rule that, said with a time covering every moment (`STANDING_TIMES`), state where
+#: a thing stays, so where it is when the task is done ("your phone should be on the bedside table
+#: at all times", "the fire blanket must always be on its hook"); said with no such time ("should be
+#: in the basket when you're done") they name a goal
+STANDING_MODALS = frozenset({"should", "must"})
+#: times that cover every moment (word sequences, after the modal anywhere in its clause)
+STANDING_TIMES: tuple[tuple[str, ...], ...] = (
+    ("at", "all", "times"), ("always",), ("permanently",), ("constantly",), ("day", "and", "night"),
+    ("round", "the", "clock"), ("around", "the", "clock"), ("whatever", "happens"))
+#: the predictive "will be" of a notice or a host's note: where the reader will find a thing when
+#: they get there ("Where one was issued, the hair dryer will be on the desk", "your key will be in
+#: the lockbox"), unless a time of completion follows (`COMPLETION_TIMES`: "will be on the desk once
+#: you have finished" is a goal) or a condition of presence governs it (`_if_there`, read apart)
+COMPLETION_TIMES: tuple[tuple[str, ...], ...] = (
+    ("once",), ("after",), ("afterwards",), ("until",), ("till",), ("later",), ("done",), ("finished",), ("soon",),
+    ("by", "then"), ("by", "the", "time"), ("by", "this"), ("by", "tonight"), ("by", "tomorrow"),
+    ("tomorrow",), ("tonight",))
+#: words of a speaker's hope or doubt about a clause that follows ("I doubt the mug is on the
+#: counter", "hopefully the keys are in the drawer", "I wonder if ..."): a hedge, as `BELIEFS` are
+HEDGES = frozenset({"doubt", "doubts", "doubtful", "hope", "hopes", "hopefully", "wonder", "wonders"})
+#: the correlative negation of places ("the mug is neither on the counter nor in the car")
+CORRELATIVE_NEGATIONS = frozenset({"neither", "nor"})
 #: where a thing rests (not "into"/"onto", which say where it goes)
 AT = frozenset({"on", "in", "inside", "atop", "upon"})
 #: relative pronouns and the prepositions that lead into them ("on which", "in which")
@@ -1013,7 +1035,9 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         before = words[k] if k >= clause.start and not _named_word(ms, k) else ""
         reported = _reported(before, group, words[clause.start:k])
         guessed = before == "will" and _if_there(words, clause)
-        if before in NORMATIVE and not (before in PERFECT and group[:1] == ["been"]) and not guessed \
+        standing = _standing(words, clause, before, group, end)
+        ruled = standing or _predicted(words, clause, before, group, end)
+        if before in NORMATIVE and not (before in PERFECT and group[:1] == ["been"]) and not guessed and not ruled \
                 or before in ("you", "we", "i") and not set(group) & KEEP_VERBS and not reported:
             continue  # a norm or a goal ("should be in"), or what someone does ("which you hang on")
         if kind is None or clause.mood == "instruction" and _finite(group):
@@ -1024,15 +1048,18 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         if kind == "settled" and group[-1] in STATIVE and (set(group) | set(words[k + 1:start])) & NORM_ADVERBS:
             kind = "kept"  # "flowers that normally sit on the bench": where they belong, not where they are
         subjects = _np_list(sent, ms, lo, start)
-        said = [w for w in words[lo:k + 1] if not guessed or w not in _CLAUSE_LEADS and w != "will"]
+        said = [w for w in words[lo:k + 1] if not (guessed or standing) or w not in _CLAUSE_LEADS and w != before]
         last = reading.last_carried if guessed else reading.last_subject
         # "wipe the puddle with the old towel - it's kept in the vanity": "it" is a thing its own
         # sentence named (`_kept` reads that), not the last statement's subject
         earlier = any(m.end <= clause.start and m.kind == "role" for m in sent.mentions)
-        if not subjects and (_finite(group) or guessed) and said == ["it"] and last is not None \
+        if not subjects and (_finite(group) or guessed or standing) and said == ["it"] and last is not None \
                 and last.kind == "role" and len(last.roles) == 1 and (guessed or not earlier):
             subjects = [last]  # "Broom. ... Not agreed; it stays standing on the floor"
-        if not _finite(group) or _active_perfect(group):
+        if ruled:
+            if not subjects:
+                continue  # the rule's subject is the noun phrase before its modal, or a standing rule's "it"
+        elif not _finite(group) or _active_perfect(group):
             who = start - 1
             while who > lo and words[who] in ADVERBS:
                 who -= 1
@@ -1080,7 +1107,8 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         said = words[max(lo, first - 3):found[1].end]
         # (a speaker's belief before the subject doubts it too: "I think I left the torch on the shelf")
         believed = _believed(words[clause.start:first])
-        if not subjects or words[clause.start] == "there" or doubts(said) or habitual(said) or believed:
+        if not subjects or words[clause.start] == "there" or doubts(said) or habitual(said) or believed \
+                or _alternative_place(words, found[1].end, len(words)):
             lo = found[1].end
             continue  # no subject, an existential (`_existential`), a doubt ("may have been put") or a habit
         prep, holder = found
@@ -1090,6 +1118,54 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         lo = _gapped(sent, clause, ms, holder.end, kind, lex, catalog, reading)
     if clause.mood == "statement":
         _fragment(sent, clause, ms, lex, catalog, reading)
+
+
+def _said_after(words: list[str], lo: int, hi: int, phrases: tuple[tuple[str, ...], ...]) -> bool:
+    """Whether one of `phrases` (word sequences) stands in words[lo:hi]."""
+    return any(tuple(words[k:k + len(p)]) == p for k in range(lo, hi) for p in phrases if k + len(p) <= hi)
+
+
+def _only_be(group: list[str]) -> bool:
+    """A verb group of "be" and a verb of resting at most ("be", "be sitting", "always be")."""
+    verbs = [w for w in group if w not in ADVERBS]
+    return verbs[:1] == ["be"] and all(w in STATIVE for w in verbs[1:])
+
+
+def _standing(words: list[str], clause: Span, before: str, group: list[str], end: int) -> bool:
+    """A standing rule (`STANDING_MODALS` with one of `STANDING_TIMES`, no negation and no time of
+    completion in the clause): "the phone should be on the bedside table at all times"."""
+    tail = _tail(words, clause.end)  # the time may follow a comma: "on the sofa, day and night"
+    return before in STANDING_MODALS and _only_be(group) and not set(words[clause.start:clause.end]) & NEGATIONS \
+        and _said_after(words, clause.start, tail, STANDING_TIMES) \
+        and not _said_after(words, end, tail, COMPLETION_TIMES)
+
+
+def _tail(words: list[str], end: int) -> int:
+    """Where an adverbial set off by a comma after a clause ends: four words on at most, up to the
+    sentence's next full stop, semicolon or question mark."""
+    k = end
+    while k < min(len(words), end + 4) and words[k] not in (".", ";", "?"):
+        k += 1
+    return k
+
+
+def _predicted(words: list[str], clause: Span, before: str, group: list[str], end: int) -> bool:
+    """The predictive "will be" (`COMPLETION_TIMES`) of a named thing, with no condition before it:
+    "the hair dryer will be on the desk" ("if it is dirty, it will be on the armchair" is the
+    condition's consequence; "It will be on the armchair" after a doubt a guess, `_if_there`)."""
+    return before == "will" and _only_be(group) and clause.mood == "statement" \
+        and not set(words[:clause.start]) & CONDITION_CUES \
+        and not set(words[clause.start:clause.end]) & NEGATIONS \
+        and not _said_after(words, end, _tail(words, clause.end), COMPLETION_TIMES)
+
+
+def _alternative_place(words: list[str], j: int, hi: int) -> bool:
+    """Whether a place is followed by another offered in its stead ("on the counter or in the
+    car", "in the drawer, or else on the shelf"): a choice, no place stated."""
+    k = j
+    while k < hi and words[k] in (",", "or", "else", "maybe", "perhaps", "possibly"):
+        k += 1
+    return "or" in words[j:k] and k < hi and (words[k] in AT or words[k] in ("under", "behind", "at", "by", "near"))
 
 
 def _object_it(sent: _Sentence, clause: Span, last: Mention | None, earlier: bool) -> list[Mention]:
@@ -1108,7 +1184,7 @@ def _believed(lead: list[str]) -> bool:
     """Whether the words before a statement's subject are a speaker's belief (`BELIEFS` after a
     subject pronoun: "I think", "we reckon", "I'm not sure"), which hedges what follows."""
     return any(w in BELIEFS and k > 0 and lead[k - 1] in PERSONAL_SUBJECTS for k, w in enumerate(lead)) or (
-        "sure" in lead and "not" in lead)
+        "sure" in lead and "not" in lead) or bool(set(lead) & HEDGES)
 
 
 def _headline(sent: _Sentence, clause: Span, subjects: list[Mention], start: int, end: int) -> bool:
@@ -1977,7 +2053,8 @@ WHERE_PREPS = {"whereon": "on", "whereupon": "on", "wherein": "in"}
 #: words that keep a clause from stating a fact: negation, modality, a goal, a hedge, a condition
 UNSTATED = frozenset({"not", "never", "no", "nothing", "should", "must", "ought", "shall", "would", "will",
                       "can", "could", "might", "may", "to", "need", "needs", "want", "wants", "if", "unless",
-                      "whether", "anywhere", "somewhere", "when", "whenever", "once", "until", "let"}) | DOUBT
+                      "whether", "anywhere", "somewhere", "when", "whenever", "once", "until", "let"}) | DOUBT \
+    | HEDGES | CORRELATIVE_NEGATIONS
 #: words that may stand before a subject at the head of a clause ("and whereas on the piano ...")
 SUBJECT_LEADS = LEAD_INS | FRONT_LEADS | frozenset({",", "whereas", "while", "meanwhile", "as", "yes", "also",
                                                     # interjections ("Uh-oh, the floor is stained!")
@@ -2035,7 +2112,9 @@ def _fallback(sent: _Sentence, before: _Before, lex: Lexicon, catalog: Catalog, 
                 continue  # "where the carton remains on the table, ...": a condition's register
             # the "to" of "has moved to" is where the thing went, of "next to" where it is: no goal
             stated = not {w for k, w in enumerate(words[a:b], a)
-                          if w != "to" or words[k - 1] not in MOVED | PLACE_BEFORE_TO} & UNSTATED
+                          if w != "to" or words[k - 1] not in MOVED | PLACE_BEFORE_TO} & UNSTATED \
+                and not any(_alternative_place(words, k, len(words)) for k in range(a, min(b + 2, len(words)))
+                            if words[k] == "or")
             for kind, item, prep, holder in _fallback_forms(sent, ms, a, b, lex, stated) \
                     + (_structures(sent, before, ms, a, b, lex) if stated else []):
                 _put_new(reading, kind, catalog, lex, item, holder, prep)

@@ -1,0 +1,101 @@
+"""Stated placements in the harder forms `benchmarks/placement_forms.py` measures since the
+thirteenth session (issue 47): a standing rule ("should be on ... at all times"), the predictive
+"will be on", a place at a part of its holder ("at the far end of the table"), and the near misses
+beside them (a hedge, "neither ... nor", a choice of places, a time of completion). Sentences are
+written here, in several registers (a care plan, a hotel notice, a chat, a museum's house rules, a
+lab sheet, a holiday let's welcome book); none is copied from a development set."""
+
+from __future__ import annotations
+
+import pytest
+
+from logicenveval.domain.catalog import Catalog, load_catalog
+from logicenveval.offline.placement import described_placements
+
+
+@pytest.fixture(scope="module")
+def catalog() -> Catalog:
+    return load_catalog()
+
+
+def _read(text: str, roles: dict[str, str], catalog: Catalog, room: str = "living_room") -> list[str]:
+    brief = {"id": "t", "description": text, "rooms": [room],
+             "roles": {name: {"category": kind} for name, kind in roles.items()}}
+    return described_placements(brief, catalog)
+
+
+# --- a standing rule: a modal with a time covering every moment ----------------------------------
+
+@pytest.mark.parametrize("text, roles, fact", [
+    # a care plan
+    ("Care notes for the night staff. The call bell must be on the nightstand at all times so she can reach it.",
+     {"bell": "bell", "nightstand": "nightstand"}, "on(bell, nightstand)"),
+    # a lab's house rules
+    ("LAB RULES. The fire blanket should always be in the cabinet by the door.",
+     {"fire_blanket": "blanket", "cabinet": "cabinet"}, "inside(fire_blanket, cabinet)"),
+    # a chat, with the thing taken up by "it"
+    ("ok so the remote should be on the sofa, day and night lol. dont lose it again",
+     {"remote": "remote_control", "sofa": "sofa"}, "on(remote, sofa)"),
+])
+def test_a_standing_rule_states_where_the_thing_is(text: str, roles: dict[str, str], fact: str,
+                                                   catalog: Catalog) -> None:
+    assert fact in _read(text, roles, catalog)
+
+
+@pytest.mark.parametrize("text", [
+    "The call bell should be on the nightstand when you leave the room.",  # a goal
+    "The call bell must never be on the nightstand at all times.",  # negated
+    "The call bell should be on the nightstand by this evening, always remember that.",  # a deadline
+    "Before you go, make sure the call bell is on the nightstand.",
+])
+def test_a_modal_without_a_standing_time_places_nothing(text: str, catalog: Catalog) -> None:
+    assert not any("(bell, nightstand)" in f for f in _read(text, {"bell": "bell", "nightstand": "nightstand"}, catalog))
+
+
+# --- the predictive "will be" -------------------------------------------------------------------
+
+@pytest.mark.parametrize("text, roles, fact", [
+    # a holiday let's welcome book
+    ("Welcome to Sea View! The spare key will be in the drawer of the hall table.",
+     {"key": "key", "drawer": "drawer"}, "inside(key, drawer)"),
+    # an office notice
+    ("NOTICE TO CLEANERS. From Monday the new laptop will be on the desk nearest the window.",
+     {"laptop": "laptop", "desk": "desk"}, "on(laptop, desk)"),
+    ("Your laptop will be on the desk next to the printer when you get in.",
+     {"laptop": "laptop", "desk": "desk"}, "on(laptop, desk)"),
+])
+def test_the_predictive_will_be_states_where_the_thing_is(text: str, roles: dict[str, str], fact: str,
+                                                          catalog: Catalog) -> None:
+    assert fact in _read(text, roles, catalog)
+
+
+@pytest.mark.parametrize("text", [
+    "The laptop will be on the desk once you have finished setting it up.",  # a goal
+    "The laptop will be on the desk later, when Jo brings it.",
+    "The laptop will not be on the desk.",
+    "The laptop will go on the desk.",
+])
+def test_a_will_of_completion_or_motion_places_nothing(text: str, catalog: Catalog) -> None:
+    assert not any("(laptop, desk)" in f for f in _read(text, {"laptop": "laptop", "desk": "desk"}, catalog))
+
+
+# --- hedges, correlative negation and a choice of places -------------------------------------------
+
+@pytest.mark.parametrize("text", [
+    "I doubt the book is on the coffee table.",
+    "Hopefully the book is on the coffee table, I'm not certain.",
+    "The book is neither on the coffee table nor under the sofa.",
+    "The book is on the coffee table or in my bag.",
+    "The book is on the coffee table, or maybe on the shelf.",
+])
+def test_a_hedged_negated_or_offered_place_places_nothing(text: str, catalog: Catalog) -> None:
+    placed = _read(text, {"book": "book", "coffee_table": "coffee_table"}, catalog)
+    assert not any("(book, coffee_table)" in f for f in placed)
+
+
+@pytest.mark.parametrize("text, fact", [
+    ("The book is on the coffee table and the mug or the plate is on the shelf.", "on(book, coffee_table)"),
+    ("Neither of us moved it: the book is on the coffee table.", "on(book, coffee_table)"),
+])
+def test_an_or_elsewhere_leaves_a_stated_place(text: str, fact: str, catalog: Catalog) -> None:
+    assert fact in _read(text, {"book": "book", "coffee_table": "coffee_table"}, catalog)
