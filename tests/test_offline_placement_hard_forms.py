@@ -99,3 +99,36 @@ def test_a_hedged_negated_or_offered_place_places_nothing(text: str, catalog: Ca
 ])
 def test_an_or_elsewhere_leaves_a_stated_place(text: str, fact: str, catalog: Catalog) -> None:
     assert fact in _read(text, {"book": "book", "coffee_table": "coffee_table"}, catalog)
+
+
+# --- a place at a part of its holder: "at the head of the table", "at the bottom of the basket" -----
+
+@pytest.mark.parametrize("text, roles, fact, room", [
+    # a museum's house rules
+    ("The visitors' book sits at the far end of the reception desk, by the donations box.",
+     {"book": "book", "desk": "desk"}, "on(book, desk)", "office"),
+    # a wedding run sheet
+    ("Table plan: the cake knife is at the head of the dining table, next to the bride's glass.",
+     {"knife": "knife", "table": "dining_table"}, "on(knife, table)", "dining_room"),
+    # a chat
+    ("ur sock is right at the bottom of the laundry basket btw",
+     {"sock": "sock", "laundry_basket": "laundry_basket"}, "inside(sock, laundry_basket)", "laundry_room"),
+    # a landlord's inventory
+    ("Inventory, bedroom 2. The spare pillow lies at the back of the wardrobe, under two blankets.",
+     {"pillow": "pillow", "wardrobe": "wardrobe"}, "inside(pillow, wardrobe)", "bedroom"),
+])
+def test_a_place_at_a_part_of_its_holder(text: str, roles: dict[str, str], fact: str, room: str,
+                                         catalog: Catalog) -> None:
+    assert fact in _read(text, roles, catalog, room)
+
+
+@pytest.mark.parametrize("text", [
+    "The stool is at the side of the dining table.",  # beside it
+    "The stool is at the foot of the dining table.",
+    "Put the stool at the end of the dining table.",  # an instruction: where it goes
+    "If the stool is at the end of the dining table, move it.",
+    "The stool is not at the end of the dining table.",
+])
+def test_a_part_beside_or_a_goal_places_nothing(text: str, catalog: Catalog) -> None:
+    placed = _read(text, {"stool": "stool", "table": "dining_table"}, catalog, "dining_room")
+    assert not any("(stool, table)" in f for f in placed)

@@ -177,6 +177,16 @@ OUTER_PARTS = frozenset({"door", "side", "edge", "rim", "lid", "front", "back", 
                          "arm", "armrest"})
 #: the preposition `_holder_after` gives a place on an outer part (`_contain`: on a surface, else none)
 ON_PART = "on_part"
+#: the parts of a holder an "at the <part> of" names, and the preposition a thing there is at the
+#: holder by: at the end, head, edge or corner of a thing it rests on that thing's top ("the bowl is
+#: at the head of the long table", "a lamp at the far end of the desk": `ON_PART`, never in it);
+#: at the bottom or back of it, it is in it where it holds things ("at the bottom of the laundry
+#: basket", "right at the back of the wardrobe"), else on it ("at the back of the shelf")
+AT_PARTS = {"end": ON_PART, "head": ON_PART, "edge": ON_PART, "corner": ON_PART, "bottom": "in", "back": "in"}
+#: words that make a place exact and say nothing of it ("right at the back of", "bang on the table")
+PLACE_INTENSIFIERS = frozenset({"right", "bang", "smack", "slap"})
+#: words that may stand before such a part ("at the far end of", "at the very bottom of")
+AT_PART_MODIFIERS = frozenset({"far", "very", "near", "other", "top", "bottom", "back", "front", "left", "right"})
 ARTICLES = frozenset({"a", "an", "the", "some", "its", "their", "our", "my", "your", "this", "that",
                       "his", "her", "these", "those", "two", "three", "four", "one", "both", "another"})
 #: words that may stand between the nouns of a list ("the sink, the fridge and a cabinet")
@@ -727,6 +737,10 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
     words = sent.words
     if j < hi and _covers(words, j):
         words = [*words[:j], "on", *words[j + 1:]]  # "spread over the bed": on the bed
+    if j + 1 < hi and words[j] in PLACE_INTENSIFIERS and (words[j + 1] in AT or words[j + 1] == "at"):
+        j += 1  # "right at the back of the wardrobe", "bang in the middle of the table"
+    if j < hi and words[j] == "at":
+        return _at_part(sent, ms, j, hi)
     if j >= hi or words[j] not in AT:
         return None
     k = j + 1
@@ -758,6 +772,29 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
         # names which one (`_room_words`); the place is the thing
         m = next((t for t in ms if t.start == m.end and t.kind == "role"), m)
     return (words[j], m) if m is not None else None
+
+
+def _at_part(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[str, Mention] | None:
+    """(preposition, holder) of "at the [far] <part> of [the ...] <holder>" (`AT_PARTS`): "at the
+    head of the long table" is on the table, "at the bottom of the basket" in it; "at the side of"
+    or "at the foot of" a thing is beside it, no place on or in it."""
+    words = sent.words
+    k = j + 1
+    if k >= hi or words[k] not in ("the", "its", "their"):
+        return None
+    k += 1
+    while k < hi and words[k] in AT_PART_MODIFIERS and words[k + 1:k + 2] != ["of"]:
+        k += 1
+    if k + 2 >= hi or words[k] not in AT_PARTS or words[k + 1] != "of" or any(t.start <= k < t.end for t in ms):
+        return None
+    n = k + 2
+    while n < hi and words[n] in ARTICLES:
+        n += 1
+    m = next((t for t in ms if t.start == n and t.kind == "role" and len(t.roles) == 1), None)
+    if m is None and n + 1 < hi and words[n].isalpha() and words[n] not in VERBS | AT \
+            and not any(t.start <= n < t.end for t in ms):
+        m = next((t for t in ms if t.start == n + 1 and t.kind == "role" and len(t.roles) == 1), None)  # "the long table"
+    return (AT_PARTS[words[k]], m) if m is not None else None
 
 
 def _tied_whole(sent: _Sentence, ms: list[Mention], j: int, k: int, hi: int) -> Mention | None:
