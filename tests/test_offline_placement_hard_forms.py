@@ -132,3 +132,28 @@ def test_a_place_at_a_part_of_its_holder(text: str, roles: dict[str, str], fact:
 def test_a_part_beside_or_a_goal_places_nothing(text: str, catalog: Catalog) -> None:
     placed = _read(text, {"stool": "stool", "table": "dining_table"}, catalog, "dining_room")
     assert not any("(stool, table)" in f for f in placed)
+
+
+# --- a reduced relative after a name's possessive: "Sam's mug left on the counter needs a wipe" ----
+
+@pytest.mark.parametrize("text, roles, fact, room", [
+    # a flatmate's note
+    ("Kitchen rota. Priya's mug left on the counter needs a proper scrub, it's been there since Friday.",
+     {"mug": "mug", "kitchen_counter": "kitchen_counter"}, "on(mug, kitchen_counter)", "kitchen"),
+    # a boarding-house matron's list
+    ("Dormitory inspection. Hughes's towel lying in the laundry basket is not his own; return it to the store.",
+     {"towel": "towel", "laundry_basket": "laundry_basket"}, "inside(towel, laundry_basket)", "laundry_room"),
+])
+def test_a_reduced_relative_after_a_possessor(text: str, roles: dict[str, str], fact: str, room: str,
+                                             catalog: Catalog) -> None:
+    assert fact in _read(text, roles, catalog, room)
+
+
+@pytest.mark.parametrize("text", [
+    "Every mug left on the counter gets washed at six.",  # a kind of thing, no mug of the scene
+    "Any mug left on the counter goes in the sink.",
+    "If Priya's mug is left on the counter, wash it.",
+])
+def test_a_quantified_or_conditional_reduced_relative_places_nothing(text: str, catalog: Catalog) -> None:
+    placed = _read(text, {"mug": "mug", "kitchen_counter": "kitchen_counter"}, catalog, "kitchen")
+    assert not any("(mug, kitchen_counter)" in f for f in placed)

@@ -1101,7 +1101,7 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
             while who > lo and words[who] in ADVERBS:
                 who -= 1
             if subjects and subjects[-1].end == start:  # "the keys lying on the floor": a modifier
-                if _definite(sent.words, subjects[-1].start):
+                if _definite(sent.words, subjects[-1].start) or _named_possessor(words, clause.start, subjects[-1].start):
                     kind = "presumed"
                 elif clause.mood == "statement" and _headline(sent, clause, subjects, start, end):
                     kind = "presumed"  # a report ("Torch found on the bunk again"): a later "if on bunk" asks it
@@ -1350,6 +1350,20 @@ def _possessor(words: list[str], k: int, first: int) -> bool:
     """Whether the word at `k`, right before the first thing of a list opening at `first`, is a
     possessor whose "'s" the text normalising dropped ("Sam's jacket" read "sam jacket")."""
     return first == k + 1 and words[k].isalpha() and words[k] not in _NO_AGENT
+
+
+#: words before a noun that quantify it, no possessor ("every mug left on the counter gets in the way")
+QUANTIFIERS = frozenset({"every", "each", "any", "all", "no", "most", "many", "few", "several", "some"})
+
+
+def _named_possessor(words: list[str], lo: int, start: int) -> bool:
+    """Whether the thing at `start` opens its clause after a possessor whose "'s" was dropped ("Sam's
+    mug left on the counter needs a wipe", read "sam mug ..."): a definite noun phrase, as "the mug"
+    and "my mug" are, which takes the reduced relative's place for granted; not a quantifier, a
+    colour or a state ("every mug left ...", "dirty mug left ...")."""
+    k = start - 1
+    return k == lo and _possessor(words, k, start) and words[k] not in QUANTIFIERS \
+        and words[k] not in COLOR_WORDS and words[k] not in STATE_WORDS
 
 
 def _pronoun_holder(sent: _Sentence, clause: Span, j: int, lex: Lexicon,
