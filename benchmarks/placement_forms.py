@@ -142,7 +142,8 @@ NEAR_MISSES: dict[str, str] = {
 #: forms it takes, and the prepositions it is composed with: `None` for the pair's own (the
 #: template says {P}), else a relation the template says itself ("at the far end of" a surface is
 #: `on` it; "at the bottom of" a container is `inside` it) and which holders it fits ("on": a
-#: surface, "in": a container). {O} is a second thing, no role of the sentence.
+#: surface, "in": a container). {O} is a second thing, no role of the sentence; {Yn} the holder's
+#: noun alone (a gloss in brackets). The bracketed glosses were added with their rule (dev 22).
 HARDER_FORMS: dict[str, tuple[str, tuple[str, ...], str | None]] = {
     "predictive will be": ("{X} will be {P} {Y} when you get there.", ("the", "my", "name's"), None),
     "predictive you'll see": ("When you come in, {X} will be {P} {Y}.", ("the", "my", "name's"), None),
@@ -157,6 +158,8 @@ HARDER_FORMS: dict[str, tuple[str, tuple[str, ...], str | None]] = {
     "place before its list": ("{P} {Y}: {X}, {O}.", ("a", "my", "name's"), None),
     "subject gloss": ("{X}, the thing I mean, is {P} {Y}.", ("the", "my", "name's"), None),
     "holder gloss brackets": ("{X} is {P} {Y} (the old one).", ("the", "my", "name's", "pronoun"), None),
+    "bracketed gloss of a holder": ("{X} is {P} the kredens ({Yn}).", ("the", "my", "name's", "pronoun"), None),
+    "bracketed gloss, bare holder": ("{X} stands {P} kredens ({Yn}), near the window.", ("the", "my", "name's"), None),
     "far end of a surface": ("{X} is left at the far end of {Y}.", ("the", "my", "name's", "pronoun"), "on"),
     "head of a surface": ("{X} sits at the head of {Y}.", ("the", "my", "name's"), "on"),
     "edge of a surface": ("{X} is at the edge of {Y}.", ("the", "my", "name's", "pronoun"), "on"),
@@ -178,6 +181,8 @@ HARDER_NEAR_MISSES: dict[str, str] = {
     "side of": "{X} is at the side of {Y}.",
     "hoped": "Hopefully {X} is {P} {Y}.",
     "negated standing rule": "{X} should never be {P} {Y}.",
+    "negated bracketed gloss": "{X} is not {P} the kredens ({Yn}).",
+    "conditional bracketed gloss": "If {X} is {P} the kredens ({Yn}), leave it.",
 }
 
 #: the second thing of a coordinated form: a word the catalog names as no role of the sentence
@@ -280,7 +285,7 @@ def harder_cases() -> list[Case]:
                 for prep in preps:
                     np = _article(SUBJECT_DETS[subject], pair.noun)
                     said = "it" if subject == "pronoun" else np
-                    body = _cap(template.format(X=said, Y=f"the {pair.place}", P=prep, O=OTHER_THING))
+                    body = _cap(template.format(X=said, Y=f"the {pair.place}", P=prep, O=OTHER_THING, Yn=pair.place))
                     opening = f"Please go to the {pair.room.replace('_', ' ')}."
                     if subject == "pronoun":
                         opening += f" I bought {np} last week."
@@ -296,7 +301,8 @@ def harder_near_misses() -> list[Case]:
     for pair in PAIRS:
         for form, template in HARDER_NEAR_MISSES.items():
             for prep in pair.preps:
-                body = _cap(template.format(X=f"the {pair.noun}", Y=f"the {pair.place}", P=prep, O=OTHER_THING))
+                body = _cap(template.format(X=f"the {pair.noun}", Y=f"the {pair.place}", P=prep, O=OTHER_THING,
+                                            Yn=pair.place))
                 text = f"Please go to the {pair.room.replace('_', ' ')}. {body} Then tell me when you're done."
                 out.append(Case(text, _fact(pair, prep), form, "the", prep, f"{pair.noun}/{pair.place}",
                                 pair.room, pair.item, pair.holder))

@@ -157,3 +157,35 @@ def test_a_reduced_relative_after_a_possessor(text: str, roles: dict[str, str], 
 def test_a_quantified_or_conditional_reduced_relative_places_nothing(text: str, catalog: Catalog) -> None:
     placed = _read(text, {"mug": "mug", "kitchen_counter": "kitchen_counter"}, catalog, "kitchen")
     assert not any("(mug, kitchen_counter)" in f for f in placed)
+
+
+# --- a place named by a word of another language, glossed in brackets: "on wersalka (sofa)" -------
+
+@pytest.mark.parametrize("text, roles, fact, room", [
+    # a Polish grandmother's note
+    ("Kochanie, the blanket is on wersalka (sofa), please fold it nicely.",
+     {"blanket": "blanket", "sofa": "sofa"}, "on(blanket, sofa)", "living_room"),
+    # a Japanese host's welcome card
+    ("Welcome! The vase stands on the chabudai (the coffee table) - please do not move it.",
+     {"vase": "vase", "coffee_table": "coffee_table"}, "on(vase, coffee_table)", "living_room"),
+    # a German flatmate's chat
+    ("btw my laptop is on the Schreibtisch (desk) if u need it",
+     {"laptop": "laptop", "desk": "desk"}, "on(laptop, desk)", "office"),
+])
+def test_a_bracketed_gloss_names_the_place(text: str, roles: dict[str, str], fact: str, room: str,
+                                           catalog: Catalog) -> None:
+    placed = _read(text, roles, catalog, room)
+    item, holder = fact[fact.index("(") + 1:-1].split(", ")
+    assert any(f"({item}, {holder})" in f for f in placed), placed
+
+
+@pytest.mark.parametrize("text", [
+    "The blanket is not on wersalka (sofa).",
+    "If the blanket is on wersalka (sofa), fold it.",
+    "The blanket is on the left (sofa side).",
+    "Put the blanket on wersalka (sofa).",
+])
+def test_a_bracketed_gloss_in_a_negation_condition_or_instruction_places_nothing(text: str,
+                                                                                 catalog: Catalog) -> None:
+    placed = _read(text, {"blanket": "blanket", "sofa": "sofa"}, catalog)
+    assert not any("(blanket, sofa)" in f for f in placed)

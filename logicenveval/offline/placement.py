@@ -725,6 +725,21 @@ def _apposed(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> Mention | N
     return m if m.end >= hi or words[m.end] in PUNCT | _APPOSED_MODIFIERS else None
 
 
+def _bracket_gloss(sent: _Sentence, j: int) -> Mention | None:
+    """The thing a bracket right after a place no name of the task names glosses it as ("on
+    wersalka (sofa)", "in the kufer (the trunk)", "on the chabudai (the coffee table)"): the
+    bracket holds only a name of one role, its article and modifiers at most. The bracket is a
+    clause of its own (`clause_spans` cuts at brackets), so it is read past the clause's end."""
+    words = sent.words
+    close = next((c for c in range(j, min(j + 6, len(words))) if words[c] == ")"), None)
+    if close is None:
+        return None
+    m = next((t for t in sent.mentions if j <= t.start and t.end == close and t.kind == "role"), None)
+    if m is None or len(m.roles) != 1 or not all(w.isalpha() and w not in VERBS | AT for w in words[j:m.start]):
+        return None
+    return m
+
+
 def _active_perfect(group: list[str]) -> bool:
     """An active perfect of a verb of result ("had put", "have left", "has dropped"): a past act
     with its object after it, as the simple past is ("put", "left"); not a passive ("has been left")."""
@@ -767,6 +782,9 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
     if m is None and k + 2 < hi and words[k].isalpha() and words[k] not in PREP_OF_PLACE | VERBS \
             and not any(t.start <= k < t.end for t in ms) and words[k + 1] == ",":
         m = _apposed(sent, ms, k + 2, hi)  # "on the taburete, the little stool"
+    if m is None and k + 2 < len(words) and words[k + 1] == "(" and words[k].isalpha() \
+            and words[k] not in PREP_OF_PLACE | VERBS and not any(t.start <= k < t.end for t in sent.mentions):
+        m = _bracket_gloss(sent, k + 2)  # "on wersalka (sofa)", "in the kufer (the trunk)"
     if m is not None and m.kind == "room":
         # "sits on the cloakroom counter", "on the bedroom dresser": a room's name before a thing's
         # names which one (`_room_words`); the place is the thing
