@@ -189,3 +189,29 @@ def test_a_bracketed_gloss_in_a_negation_condition_or_instruction_places_nothing
                                                                                  catalog: Catalog) -> None:
     placed = _read(text, {"blanket": "blanket", "sofa": "sofa"}, catalog)
     assert not any("(blanket, sofa)" in f for f in placed)
+
+
+# --- a time clause of the reader's arrival frames what they will find ------------------------------
+
+@pytest.mark.parametrize("text, roles, fact, room", [
+    # a holiday let's welcome message
+    ("Hi both! When you arrive, the spare key will be in the drawer by the door.",
+     {"key": "key", "drawer": "drawer"}, "inside(key, drawer)", "hallway"),
+    # a hotel housekeeping sheet
+    ("Room 12. When the guests check in, the hair dryer is on the desk and the kettle next to it.",
+     {"hair_dryer": "hair_dryer", "desk": "desk"}, "on(hair_dryer, desk)", "bedroom"),
+])
+def test_an_arrival_frames_what_the_reader_will_find(text: str, roles: dict[str, str], fact: str, room: str,
+                                                     catalog: Catalog) -> None:
+    assert fact in _read(text, roles, catalog, room)
+
+
+@pytest.mark.parametrize("text", [
+    "When the key is dirty, it will be in the drawer.",  # a condition on the thing
+    "When you arrive, put the key in the drawer.",  # an instruction
+    "When you arrive, the key may be in the drawer.",  # a doubt
+    "When you arrive, the key will be in the drawer once Jo has locked up.",  # a goal
+])
+def test_an_arrival_frame_places_no_condition_instruction_doubt_or_goal(text: str, catalog: Catalog) -> None:
+    placed = _read(text, {"key": "key", "drawer": "drawer"}, catalog, "hallway")
+    assert not any("(key, drawer)" in f for f in placed)

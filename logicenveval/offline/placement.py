@@ -158,6 +158,13 @@ COMPLETION_TIMES: tuple[tuple[str, ...], ...] = (
     ("once",), ("after",), ("afterwards",), ("until",), ("till",), ("later",), ("done",), ("finished",), ("soon",),
     ("by", "then"), ("by", "the", "time"), ("by", "this"), ("by", "tonight"), ("by", "tomorrow"),
     ("tomorrow",), ("tonight",))
+#: a time clause of the reader's arrival, which frames a description of what they will find
+#: ("When you come in, the hair dryer will be on the desk", "When you get there, your key is in the
+#: lockbox"): "when", a person, one of these verbs and its particle at most, then a comma
+ARRIVING = frozenset({"arrive", "arrives", "come", "comes", "get", "gets", "walk", "walks", "check", "checks",
+                      "wake", "wakes", "return", "returns"})
+ARRIVING_PARTICLES = frozenset({"in", "back", "there", "here", "home", "up", "round", "over", "tonight",
+                                "tomorrow", "later", "first"})
 #: words of a speaker's hope or doubt about a clause that follows ("I doubt the mug is on the
 #: counter", "hopefully the keys are in the drawer", "I wonder if ..."): a hedge, as `BELIEFS` are
 HEDGES = frozenset({"doubt", "doubts", "doubtful", "hope", "hopes", "hopefully", "wonder", "wonders"})
@@ -436,6 +443,10 @@ def _read_sentence(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Re
     plain = not any(c.mood == "condition" or c.doubted for c in spans)
     for clause in spans:
         ms = [m for m in sent.mentions if clause.start <= m.start < clause.end]
+        framed = _arrival_frame(words, clause.start, clause.end) if clause.mood == "condition" else None
+        if framed is not None:  # "When you come in, the mug will be on the counter": what they will find
+            _locative(sent, Span(framed, clause.end, "statement", clause.doubted), [m for m in ms if m.start >= framed],
+                      lex, catalog, reading)
         if clause.mood == "instruction" and plain:
             _taken_from(sent, clause, ms, lex, catalog, reading)
         if clause.mood != "condition":
@@ -1209,9 +1220,29 @@ def _predicted(words: list[str], clause: Span, before: str, group: list[str], en
     "the hair dryer will be on the desk" ("if it is dirty, it will be on the armchair" is the
     condition's consequence; "It will be on the armchair" after a doubt a guess, `_if_there`)."""
     return before == "will" and _only_be(group) and clause.mood == "statement" \
-        and not set(words[:clause.start]) & CONDITION_CUES \
+        and (not set(words[:clause.start]) & CONDITION_CUES or _arrival_frame(words, 0, clause.end) == clause.start) \
         and not set(words[clause.start:clause.end]) & NEGATIONS \
         and not _said_after(words, end, _tail(words, clause.end), COMPLETION_TIMES)
+
+
+def _arrival_frame(words: list[str], lo: int, hi: int) -> int | None:
+    """Where the main clause after a time clause of arrival starts (`ARRIVING`: "when you come
+    in, ...", "when the guests arrive, ..."), else None: a person or "the" and a noun, the verb,
+    its particles, then a comma."""
+    if hi - lo < 4 or words[lo] != "when":
+        return None
+    k = lo + 1
+    if words[k] == "the":
+        k += 1
+    if words[k] not in ("you", "we", "they", "i", "guests", "guest", "visitors", "everyone"):
+        return None
+    k += 1
+    if k >= hi or words[k] not in ARRIVING:
+        return None
+    k += 1
+    while k < hi and words[k] in ARRIVING_PARTICLES:
+        k += 1
+    return k + 1 if k + 1 < hi and words[k] == "," else None
 
 
 def _alternative_place(words: list[str], j: int, hi: int) -> bool:
