@@ -111,6 +111,9 @@ RESULT = frozenset({"left", "dropped", "put", "placed", "thrown", "set", "found"
                     "kept", "stored", "dumped", "abandoned", "forgotten", "parked", "stuck", "present",
                     "spread", "draped", "slung"}) | PLACED
 PASSIVE_STATIVE = frozenset({"found", "kept", "stored",
+                             # "leave" is "let stay": "the bowl is left at the head of the table"
+                             # is where it stays ("is to be left", "should be left": a norm)
+                             "left",
                              "present",  # "a dirty mark is present on the floor"
                              "spread", "draped", "slung"}) | PLACED  # "the throw is draped over the sofa"
 #: verbs of covering and hanging after which "over" names the thing under, which holds it ("the
@@ -1216,25 +1219,33 @@ def _tail(words: list[str], end: int) -> int:
 
 
 def _predicted(words: list[str], clause: Span, before: str, group: list[str], end: int) -> bool:
-    """The predictive "will be" (`COMPLETION_TIMES`) of a named thing, with no condition before it:
-    "the hair dryer will be on the desk" ("if it is dirty, it will be on the armchair" is the
-    condition's consequence; "It will be on the armchair" after a doubt a guess, `_if_there`)."""
-    return before == "will" and _only_be(group) and clause.mood == "statement" \
-        and (not set(words[:clause.start]) & CONDITION_CUES or _arrival_frame(words, 0, clause.end) == clause.start) \
-        and not set(words[clause.start:clause.end]) & NEGATIONS \
-        and not _said_after(words, end, _tail(words, clause.end), COMPLETION_TIMES)
+    """The predictive "will be" of what the reader will find (`COMPLETION_TIMES`): framed by their
+    arrival, before it ("When you come in, the mug will be on the counter", `_arrival_frame`) or
+    after it ("... will be on the desk when you get there"), or by a case the sentence opens with
+    ("Where one was issued, the hair dryer will be on the desk"). Said alone ("The mug will be on
+    the desk. Wash it.") or under a condition ("... if it is dirty") it stays a goal."""
+    if before != "will" or not _only_be(group) or clause.mood != "statement" \
+            or set(words[clause.start:clause.end]) & NEGATIONS:
+        return False
+    tail = _tail(words, clause.end)
+    stop = next((x for x in range(end, len(words)) if words[x] in (".", ";", "?")), len(words))
+    if _said_after(words, end, tail, COMPLETION_TIMES) or set(words[end:stop]) & {"if", "unless"}:
+        return False
+    framed = _arrival_frame(words, 0, clause.end) == clause.start
+    arriving = any(_arrival_time(words, x, tail) is not None for x in range(end, tail))
+    case = words[clause.start] == "where" and "," in words[clause.start:end]
+    return framed or arriving or case
 
 
-def _arrival_frame(words: list[str], lo: int, hi: int) -> int | None:
-    """Where the main clause after a time clause of arrival starts (`ARRIVING`: "when you come
-    in, ...", "when the guests arrive, ..."), else None: a person or "the" and a noun, the verb,
-    its particles, then a comma."""
-    if hi - lo < 4 or words[lo] != "when":
+def _arrival_time(words: list[str], lo: int, hi: int) -> int | None:
+    """The end of a time clause of the reader's arrival at `lo` ("when you come in", "when the
+    guests arrive": "when", a person, `ARRIVING` and its particles), else None."""
+    if hi - lo < 3 or words[lo] != "when":
         return None
     k = lo + 1
     if words[k] == "the":
         k += 1
-    if words[k] not in ("you", "we", "they", "i", "guests", "guest", "visitors", "everyone"):
+    if k >= hi or words[k] not in ("you", "we", "they", "i", "guests", "guest", "visitors", "everyone"):
         return None
     k += 1
     if k >= hi or words[k] not in ARRIVING:
@@ -1242,7 +1253,14 @@ def _arrival_frame(words: list[str], lo: int, hi: int) -> int | None:
     k += 1
     while k < hi and words[k] in ARRIVING_PARTICLES:
         k += 1
-    return k + 1 if k + 1 < hi and words[k] == "," else None
+    return k
+
+
+def _arrival_frame(words: list[str], lo: int, hi: int) -> int | None:
+    """Where the main clause after a time clause of arrival (`_arrival_time`) and its comma starts,
+    else None."""
+    k = _arrival_time(words, lo, hi)
+    return k + 1 if k is not None and k + 1 < hi and words[k] == "," else None
 
 
 def _alternative_place(words: list[str], j: int, hi: int) -> bool:
