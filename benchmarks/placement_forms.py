@@ -16,6 +16,12 @@ It also composes near misses that state *no* current placement (a condition, an 
 goal, a negation, a past state, a question, a doubt) and counts every one read as a placement
 of the thing at the holder: a false reading, which must stay at zero.
 
+Since the thirteenth session a second table, `HARDER_FORMS` with `HARDER_NEAR_MISSES`, composes
+the harder ways people refer to a place (a standing rule, a predictive "will be" framed by the
+reader's arrival, reduced relatives, locative inversion, coordination, a place before its list,
+glosses, a place at a part of its holder) and the hedged, negated or offered places that must place
+nothing; its line `placement_forms harder=...` is printed before the old forms' `overall=` line.
+
 Combinations English does not form ("There is my mug on the counter", "It has been put..." with
 no thing named) are left out by the tables (`None` cells), so every sentence is one a writer
 could write.
