@@ -16,6 +16,12 @@ It also composes near misses that state *no* current placement (a condition, an 
 goal, a negation, a past state, a question, a doubt) and counts every one read as a placement
 of the thing at the holder: a false reading, which must stay at zero.
 
+Since the thirteenth session a second table, `HARDER_FORMS` with `HARDER_NEAR_MISSES`, composes
+the harder ways people refer to a place (a standing rule, a predictive "will be" framed by the
+reader's arrival, reduced relatives, locative inversion, coordination, a place before its list,
+glosses, a place at a part of its holder) and the hedged, negated or offered places that must place
+nothing; its line `placement_forms harder=...` is printed before the old forms' `overall=` line.
+
 Combinations English does not form ("There is my mug on the counter", "It has been put..." with
 no thing named) are left out by the tables (`None` cells), so every sentence is one a writer
 could write.
@@ -137,6 +143,57 @@ NEAR_MISSES: dict[str, str] = {
     "apposition after a clause": "{X} fell {P} the way, {Y} wobbled.",
 }
 
+#: harder statement forms (the thirteenth session, written before its rules): the ways people
+#: refer to a place beyond the ordinary forms above. Each is a template as in `FORMS`, the subject
+#: forms it takes, and the prepositions it is composed with: `None` for the pair's own (the
+#: template says {P}), else a relation the template says itself ("at the far end of" a surface is
+#: `on` it; "at the bottom of" a container is `inside` it) and which holders it fits ("on": a
+#: surface, "in": a container). {O} is a second thing, no role of the sentence; {Yn} the holder's
+#: noun alone (a gloss in brackets). The bracketed glosses were added with their rule (dev 22).
+HARDER_FORMS: dict[str, tuple[str, tuple[str, ...], str | None]] = {
+    "predictive will be": ("{X} will be {P} {Y} when you get there.", ("the", "my", "name's"), None),
+    "predictive you'll see": ("When you come in, {X} will be {P} {Y}.", ("the", "my", "name's"), None),
+    "standing rule at all times": ("{X} should be {P} {Y} at all times.", ("the", "my", "name's", "pronoun"), None),
+    "standing rule always": ("{X} must always be {P} {Y}, day and night.", ("the", "my", "name's"), None),
+    "reduced relative left": ("{X} left {P} {Y} needs a wipe.", ("the", "my", "name's"), None),
+    "reduced relative sitting": ("{X} sitting {P} {Y} is still dirty.", ("the", "my", "name's"), None),
+    "locative inversion stands": ("{P} {Y} stands {X}.", ("a", "my", "name's"), None),
+    "locative inversion lies": ("{P} {Y} lies {X}, untouched.", ("a", "my", "name's"), None),
+    "coordinated subject": ("{X} and {O} are {P} {Y}.", ("the", "my", "name's"), None),
+    "coordinated subject first": ("{O} and {X} are both {P} {Y}.", ("the", "my", "name's"), None),
+    "place before its list": ("{P} {Y}: {X}, {O}.", ("a", "my", "name's"), None),
+    "subject gloss": ("{X}, the thing I mean, is {P} {Y}.", ("the", "my", "name's"), None),
+    "holder gloss brackets": ("{X} is {P} {Y} (the old one).", ("the", "my", "name's", "pronoun"), None),
+    "bracketed gloss of a holder": ("{X} is {P} the kredens ({Yn}).", ("the", "my", "name's", "pronoun"), None),
+    "bracketed gloss, bare holder": ("{X} stands {P} kredens ({Yn}), near the window.", ("the", "my", "name's"), None),
+    "far end of a surface": ("{X} is left at the far end of {Y}.", ("the", "my", "name's", "pronoun"), "on"),
+    "head of a surface": ("{X} sits at the head of {Y}.", ("the", "my", "name's"), "on"),
+    "edge of a surface": ("{X} is at the edge of {Y}.", ("the", "my", "name's", "pronoun"), "on"),
+    "bottom of a container": ("{X} is at the bottom of {Y}.", ("the", "my", "name's", "pronoun"), "in"),
+    "back of a container": ("{X} is right at the back of {Y}.", ("the", "my", "name's"), "in"),
+}
+
+#: harder near misses: no current placement of the thing at the holder ({O} a second thing)
+HARDER_NEAR_MISSES: dict[str, str] = {
+    "will be once done": "{X} will be {P} {Y} once you have finished.",
+    "supposed to be": "{X} is supposed to be {P} {Y}, but it never is.",
+    "meant to be": "{X} is meant to be {P} {Y}.",
+    "no longer": "{X} is no longer {P} {Y}.",
+    "neither nor": "{X} is neither {P} {Y} nor in the car.",
+    "doubted statement": "I doubt {X} is {P} {Y}.",
+    "disjunction of places": "{X} is {P} {Y} or in the car.",
+    "other thing coordinated": "{O} are {P} {Y}, and {X} is in the car.",
+    "should be by evening": "{X} should be {P} {Y} by this evening.",
+    "side of": "{X} is at the side of {Y}.",
+    "hoped": "Hopefully {X} is {P} {Y}.",
+    "negated standing rule": "{X} should never be {P} {Y}.",
+    "negated bracketed gloss": "{X} is not {P} the kredens ({Yn}).",
+    "conditional bracketed gloss": "If {X} is {P} the kredens ({Yn}), leave it.",
+}
+
+#: the second thing of a coordinated form: a word the catalog names as no role of the sentence
+OTHER_THING = "some papers"
+
 #: how the thing is said by subject form; "pronoun" names it the sentence before
 SUBJECT_DETS: dict[str, str] = {"the": "the", "my": "my", "a": "a", "name's": "Sam's", "pronoun": "the", "bare": ""}
 
@@ -221,6 +278,43 @@ def near_misses() -> list[Case]:
     return out
 
 
+def harder_cases() -> list[Case]:
+    """Every statement of the harder forms English forms (`HARDER_FORMS`), in a fixed order; a
+    form whose template says its own relation is composed once per pair whose holder fits it."""
+    out: list[Case] = []
+    for pair in PAIRS:
+        for form, (template, subjects, relation) in HARDER_FORMS.items():
+            for subject in SUBJECT_DETS:
+                if subject not in subjects:
+                    continue
+                preps = pair.preps if relation is None else (relation,) if relation in pair.preps else ()
+                for prep in preps:
+                    np = _article(SUBJECT_DETS[subject], pair.noun)
+                    said = "it" if subject == "pronoun" else np
+                    body = _cap(template.format(X=said, Y=f"the {pair.place}", P=prep, O=OTHER_THING, Yn=pair.place))
+                    opening = f"Please go to the {pair.room.replace('_', ' ')}."
+                    if subject == "pronoun":
+                        opening += f" I bought {np} last week."
+                    text = f"{opening} {body} Then tell me when you're done."
+                    out.append(Case(text, _fact(pair, prep), form, subject, prep, f"{pair.noun}/{pair.place}",
+                                    pair.room, pair.item, pair.holder))
+    return out
+
+
+def harder_near_misses() -> list[Case]:
+    """Every harder near miss (`HARDER_NEAR_MISSES`): one per form, pair and preposition."""
+    out: list[Case] = []
+    for pair in PAIRS:
+        for form, template in HARDER_NEAR_MISSES.items():
+            for prep in pair.preps:
+                body = _cap(template.format(X=f"the {pair.noun}", Y=f"the {pair.place}", P=prep, O=OTHER_THING,
+                                            Yn=pair.place))
+                text = f"Please go to the {pair.room.replace('_', ' ')}. {body} Then tell me when you're done."
+                out.append(Case(text, _fact(pair, prep), form, "the", prep, f"{pair.noun}/{pair.place}",
+                                pair.room, pair.item, pair.holder))
+    return out
+
+
 def _brief(case: Case) -> dict[str, Any]:
     """The sentence's roles (the thing and the holder by their kinds), so naming is out of the figure."""
     roles = {case.item: {"category": case.item}, case.holder: {"category": case.holder}}
@@ -285,6 +379,32 @@ def main() -> None:
             print(f"MISSED [{case.form} | {case.subject} | {case.prep}] {case.fact}: {case.text}")
         for case in false:
             print(f"FALSE [{case.form} | {case.prep}] {facts(case, catalog)}: {case.text}")
+    hard = harder_cases()[::10] if args.smoke else harder_cases()
+    hard_missed = [c for c in hard if not read_right(c, catalog)]
+    hard_misses = harder_near_misses()[::10] if args.smoke else harder_near_misses()
+    hard_false = [c for c in hard_misses if misread(c, catalog)]
+    by_hard: dict[str, list[int]] = defaultdict(lambda: [0, 0])
+    for c in hard:
+        by_hard[c.form][0] += c not in hard_missed
+        by_hard[c.form][1] += 1
+    print("harder forms (thirteenth session):")
+    for value, (good_h, total_h) in by_hard.items():
+        print(f"  {value:28s} {good_h:5d}/{total_h:<5d} {good_h / total_h:.3f}")
+    by_hard_miss: dict[str, list[int]] = defaultdict(lambda: [0, 0])
+    for c in hard_misses:
+        by_hard_miss[c.form][1] += 1
+    for c in hard_false:
+        by_hard_miss[c.form][0] += 1
+    print("harder near misses read as a placement (must be 0):")
+    for value, (bad, total) in by_hard_miss.items():
+        print(f"  {value:28s} {bad:5d}/{total:<5d}")
+    if args.why:
+        for case in hard_missed:
+            print(f"MISSED HARDER [{case.form} | {case.subject} | {case.prep}] {case.fact}: {case.text}")
+        for case in hard_false:
+            print(f"FALSE HARDER [{case.form} | {case.prep}] {facts(case, catalog)}: {case.text}")
+    print(f"placement_forms harder={(len(hard) - len(hard_missed)) / len(hard):.4f} "
+          f"read={len(hard) - len(hard_missed)} sentences={len(hard)} false={len(hard_false)}/{len(hard_misses)}")
     good = len(todo) - len(missed)
     print(f"placement_forms overall={good / len(todo):.4f} read={good} sentences={len(todo)} "
           f"false={len(false)}/{len(misses)}")

@@ -1964,6 +1964,23 @@ def _instructs(reader: _Reader, text: str) -> bool:
         m.kind == "role" and not _placed(words, m) for m in reader.lex.find_mentions(toks))
 
 
+def _answers_quality(reader: _Reader, heading: str, answer: str) -> bool:
+    """Whether a heading whose only reading is a quality the catalog has no attribute for ("Ripe:",
+    "Not ripe yet:", said of the thing last spoken of) is answered as a case of that thing: the
+    heading names a thing itself, or the piece after it names a thing, a room or the floor ("Ripe:
+    fridge", "Unripe -> the fruit bowl") or instructs ("Cracked: bin it"). A heading answered by
+    nothing of the scene ("Included: all walking between rooms. Not included: meals, travel
+    insurance") heads a list of its own (a question's answer in its next sentence, "A ripe one? It
+    goes into the fridge.", is not seen here: kept): it says no quality of the thing, and a factor on it
+    decides nothing and makes every environment state a key no task reads."""
+    if any(m.kind == "role" for m in reader.lex.find_mentions(tokens(expand(heading)))):
+        return True
+    toks = tokens(expand(answer))
+    words = [w for w, _, _ in toks]
+    return not words or imperative(words) or _instructs(reader, answer) or any(
+        m.kind in ("role", "room", "floor") for m in reader.lex.find_mentions(toks))
+
+
 #: an instruction's opening verb and the bare noun after it, its article dropped as notes drop
 #: it ("open washing machine; put shirt in; close door")
 _TELEGRAPHIC = re.compile(r"^(\W*)([A-Za-z]+)(\s+)(?=[A-Za-z])")
@@ -2559,6 +2576,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                     clauses.append(Clause(text, grammatical, cue, "statement", (), ()))
                     continue
                 facts, names = _read_heading(reader, text)
+                if facts and all(f.derived for f in facts) and not _answers_quality(reader, text, after[pi]):
+                    facts = []  # "Included: all walking. Not included: meals": a list's heading
                 if spread[0] == grammatical:
                     facts = list(_distributed(tuple(facts), spread[1]))
                 role = "condition" if any(not f.goal and not f.derived for f in facts) else "statement"

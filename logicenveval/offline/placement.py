@@ -111,6 +111,9 @@ RESULT = frozenset({"left", "dropped", "put", "placed", "thrown", "set", "found"
                     "kept", "stored", "dumped", "abandoned", "forgotten", "parked", "stuck", "present",
                     "spread", "draped", "slung"}) | PLACED
 PASSIVE_STATIVE = frozenset({"found", "kept", "stored",
+                             # "leave" is "let stay": "the bowl is left at the head of the table"
+                             # is where it stays ("is to be left", "should be left": a norm)
+                             "left",
                              "present",  # "a dirty mark is present on the floor"
                              "spread", "draped", "slung"}) | PLACED  # "the throw is draped over the sofa"
 #: verbs of covering and hanging after which "over" names the thing under, which holds it ("the
@@ -141,6 +144,35 @@ VERBS = BE | PERFECT | STATIVE | RESULT | KEEP_VERBS | HAVE_VERBS | MOTION
 #: ("the shirt should be in the basket", "it needs to go on the desk", "is to be put away")
 NORMATIVE = frozenset({"should", "must", "ought", "shall", "would", "will", "can", "to", "needs", "need",
                        "has", "have", "wants", "want"})
+#: modals of a rule that, said with a time covering every moment (`STANDING_TIMES`), state where
+#: a thing stays, so where it is when the task is done ("your phone should be on the bedside table
+#: at all times", "the fire blanket must always be on its hook"); said with no such time ("should be
+#: in the basket when you're done") they name a goal
+STANDING_MODALS = frozenset({"should", "must"})
+#: times that cover every moment (word sequences, after the modal anywhere in its clause)
+STANDING_TIMES: tuple[tuple[str, ...], ...] = (
+    ("at", "all", "times"), ("always",), ("permanently",), ("constantly",), ("day", "and", "night"),
+    ("round", "the", "clock"), ("around", "the", "clock"), ("whatever", "happens"))
+#: the predictive "will be" of a notice or a host's note: where the reader will find a thing when
+#: they get there ("Where one was issued, the hair dryer will be on the desk", "your key will be in
+#: the lockbox"), unless a time of completion follows (`COMPLETION_TIMES`: "will be on the desk once
+#: you have finished" is a goal) or a condition of presence governs it (`_if_there`, read apart)
+COMPLETION_TIMES: tuple[tuple[str, ...], ...] = (
+    ("once",), ("after",), ("afterwards",), ("until",), ("till",), ("later",), ("done",), ("finished",), ("soon",),
+    ("by", "then"), ("by", "the", "time"), ("by", "this"), ("by", "tonight"), ("by", "tomorrow"),
+    ("tomorrow",), ("tonight",))
+#: a time clause of the reader's arrival, which frames a description of what they will find
+#: ("When you come in, the hair dryer will be on the desk", "When you get there, your key is in the
+#: lockbox"): "when", a person, one of these verbs and its particle at most, then a comma
+ARRIVING = frozenset({"arrive", "arrives", "come", "comes", "get", "gets", "walk", "walks", "check", "checks",
+                      "wake", "wakes", "return", "returns"})
+ARRIVING_PARTICLES = frozenset({"in", "back", "there", "here", "home", "up", "round", "over", "tonight",
+                                "tomorrow", "later", "first"})
+#: words of a speaker's hope or doubt about a clause that follows ("I doubt the mug is on the
+#: counter", "hopefully the keys are in the drawer", "I wonder if ..."): a hedge, as `BELIEFS` are
+HEDGES = frozenset({"doubt", "doubts", "doubtful", "hope", "hopes", "hopefully", "wonder", "wonders"})
+#: the correlative negation of places ("the mug is neither on the counter nor in the car")
+CORRELATIVE_NEGATIONS = frozenset({"neither", "nor"})
 #: where a thing rests (not "into"/"onto", which say where it goes)
 AT = frozenset({"on", "in", "inside", "atop", "upon"})
 #: relative pronouns and the prepositions that lead into them ("on which", "in which")
@@ -155,6 +187,16 @@ OUTER_PARTS = frozenset({"door", "side", "edge", "rim", "lid", "front", "back", 
                          "arm", "armrest"})
 #: the preposition `_holder_after` gives a place on an outer part (`_contain`: on a surface, else none)
 ON_PART = "on_part"
+#: the parts of a holder an "at the <part> of" names, and the preposition a thing there is at the
+#: holder by: at the end, head, edge or corner of a thing it rests on that thing's top ("the bowl is
+#: at the head of the long table", "a lamp at the far end of the desk": `ON_PART`, never in it);
+#: at the bottom or back of it, it is in it where it holds things ("at the bottom of the laundry
+#: basket", "right at the back of the wardrobe"), else on it ("at the back of the shelf")
+AT_PARTS = {"end": ON_PART, "head": ON_PART, "edge": ON_PART, "corner": ON_PART, "bottom": "in", "back": "in"}
+#: words that make a place exact and say nothing of it ("right at the back of", "bang on the table")
+PLACE_INTENSIFIERS = frozenset({"right", "bang", "smack", "slap"})
+#: words that may stand before such a part ("at the far end of", "at the very bottom of")
+AT_PART_MODIFIERS = frozenset({"far", "very", "near", "other", "top", "bottom", "back", "front", "left", "right"})
 ARTICLES = frozenset({"a", "an", "the", "some", "its", "their", "our", "my", "your", "this", "that",
                       "his", "her", "these", "those", "two", "three", "four", "one", "both", "another"})
 #: words that may stand between the nouns of a list ("the sink, the fridge and a cabinet")
@@ -404,6 +446,10 @@ def _read_sentence(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Re
     plain = not any(c.mood == "condition" or c.doubted for c in spans)
     for clause in spans:
         ms = [m for m in sent.mentions if clause.start <= m.start < clause.end]
+        framed = _arrival_frame(words, clause.start, clause.end) if clause.mood == "condition" else None
+        if framed is not None:  # "When you come in, the mug will be on the counter": what they will find
+            _locative(sent, Span(framed, clause.end, "statement", clause.doubted), [m for m in ms if m.start >= framed],
+                      lex, catalog, reading)
         if clause.mood == "instruction" and plain:
             _taken_from(sent, clause, ms, lex, catalog, reading)
         if clause.mood != "condition":
@@ -693,6 +739,21 @@ def _apposed(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> Mention | N
     return m if m.end >= hi or words[m.end] in PUNCT | _APPOSED_MODIFIERS else None
 
 
+def _bracket_gloss(sent: _Sentence, j: int) -> Mention | None:
+    """The thing a bracket right after a place no name of the task names glosses it as ("on
+    wersalka (sofa)", "in the kufer (the trunk)", "on the chabudai (the coffee table)"): the
+    bracket holds only a name of one role, its article and modifiers at most. The bracket is a
+    clause of its own (`clause_spans` cuts at brackets), so it is read past the clause's end."""
+    words = sent.words
+    close = next((c for c in range(j, min(j + 6, len(words))) if words[c] == ")"), None)
+    if close is None:
+        return None
+    m = next((t for t in sent.mentions if j <= t.start and t.end == close and t.kind == "role"), None)
+    if m is None or len(m.roles) != 1 or not all(w.isalpha() and w not in VERBS | AT for w in words[j:m.start]):
+        return None
+    return m
+
+
 def _active_perfect(group: list[str]) -> bool:
     """An active perfect of a verb of result ("had put", "have left", "has dropped"): a past act
     with its object after it, as the simple past is ("put", "left"); not a passive ("has been left")."""
@@ -705,6 +766,10 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
     words = sent.words
     if j < hi and _covers(words, j):
         words = [*words[:j], "on", *words[j + 1:]]  # "spread over the bed": on the bed
+    if j + 1 < hi and words[j] in PLACE_INTENSIFIERS and (words[j + 1] in AT or words[j + 1] == "at"):
+        j += 1  # "right at the back of the wardrobe", "bang in the middle of the table"
+    if j < hi and words[j] == "at":
+        return _at_part(sent, ms, j, hi)
     if j >= hi or words[j] not in AT:
         return None
     k = j + 1
@@ -731,11 +796,37 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
     if m is None and k + 2 < hi and words[k].isalpha() and words[k] not in PREP_OF_PLACE | VERBS \
             and not any(t.start <= k < t.end for t in ms) and words[k + 1] == ",":
         m = _apposed(sent, ms, k + 2, hi)  # "on the taburete, the little stool"
+    if m is None and k + 2 < len(words) and words[k + 1] == "(" and words[k].isalpha() \
+            and words[k] not in PREP_OF_PLACE | VERBS and not any(t.start <= k < t.end for t in sent.mentions):
+        m = _bracket_gloss(sent, k + 2)  # "on wersalka (sofa)", "in the kufer (the trunk)"
     if m is not None and m.kind == "room":
         # "sits on the cloakroom counter", "on the bedroom dresser": a room's name before a thing's
         # names which one (`_room_words`); the place is the thing
         m = next((t for t in ms if t.start == m.end and t.kind == "role"), m)
     return (words[j], m) if m is not None else None
+
+
+def _at_part(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[str, Mention] | None:
+    """(preposition, holder) of "at the [far] <part> of [the ...] <holder>" (`AT_PARTS`): "at the
+    head of the long table" is on the table, "at the bottom of the basket" in it; "at the side of"
+    or "at the foot of" a thing is beside it, no place on or in it."""
+    words = sent.words
+    k = j + 1
+    if k >= hi or words[k] not in ("the", "its", "their"):
+        return None
+    k += 1
+    while k < hi and words[k] in AT_PART_MODIFIERS and words[k + 1:k + 2] != ["of"]:
+        k += 1
+    if k + 2 >= hi or words[k] not in AT_PARTS or words[k + 1] != "of" or any(t.start <= k < t.end for t in ms):
+        return None
+    n = k + 2
+    while n < hi and words[n] in ARTICLES:
+        n += 1
+    m = next((t for t in ms if t.start == n and t.kind == "role" and len(t.roles) == 1), None)
+    if m is None and n + 1 < hi and words[n].isalpha() and words[n] not in VERBS | AT \
+            and not any(t.start <= n < t.end for t in ms):
+        m = next((t for t in ms if t.start == n + 1 and t.kind == "role" and len(t.roles) == 1), None)  # "the long table"
+    return (AT_PARTS[words[k]], m) if m is not None else None
 
 
 def _tied_whole(sent: _Sentence, ms: list[Mention], j: int, k: int, hi: int) -> Mention | None:
@@ -1013,7 +1104,9 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         before = words[k] if k >= clause.start and not _named_word(ms, k) else ""
         reported = _reported(before, group, words[clause.start:k])
         guessed = before == "will" and _if_there(words, clause)
-        if before in NORMATIVE and not (before in PERFECT and group[:1] == ["been"]) and not guessed \
+        standing = _standing(words, clause, before, group, end)
+        ruled = standing or _predicted(words, clause, before, group, end)
+        if before in NORMATIVE and not (before in PERFECT and group[:1] == ["been"]) and not guessed and not ruled \
                 or before in ("you", "we", "i") and not set(group) & KEEP_VERBS and not reported:
             continue  # a norm or a goal ("should be in"), or what someone does ("which you hang on")
         if kind is None or clause.mood == "instruction" and _finite(group):
@@ -1024,20 +1117,23 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         if kind == "settled" and group[-1] in STATIVE and (set(group) | set(words[k + 1:start])) & NORM_ADVERBS:
             kind = "kept"  # "flowers that normally sit on the bench": where they belong, not where they are
         subjects = _np_list(sent, ms, lo, start)
-        said = [w for w in words[lo:k + 1] if not guessed or w not in _CLAUSE_LEADS and w != "will"]
+        said = [w for w in words[lo:k + 1] if not (guessed or standing) or w not in _CLAUSE_LEADS and w != before]
         last = reading.last_carried if guessed else reading.last_subject
         # "wipe the puddle with the old towel - it's kept in the vanity": "it" is a thing its own
         # sentence named (`_kept` reads that), not the last statement's subject
         earlier = any(m.end <= clause.start and m.kind == "role" for m in sent.mentions)
-        if not subjects and (_finite(group) or guessed) and said == ["it"] and last is not None \
+        if not subjects and (_finite(group) or guessed or standing) and said == ["it"] and last is not None \
                 and last.kind == "role" and len(last.roles) == 1 and (guessed or not earlier):
             subjects = [last]  # "Broom. ... Not agreed; it stays standing on the floor"
-        if not _finite(group) or _active_perfect(group):
+        if ruled:
+            if not subjects:
+                continue  # the rule's subject is the noun phrase before its modal, or a standing rule's "it"
+        elif not _finite(group) or _active_perfect(group):
             who = start - 1
             while who > lo and words[who] in ADVERBS:
                 who -= 1
             if subjects and subjects[-1].end == start:  # "the keys lying on the floor": a modifier
-                if _definite(sent.words, subjects[-1].start):
+                if _definite(sent.words, subjects[-1].start) or _named_possessor(words, clause.start, subjects[-1].start):
                     kind = "presumed"
                 elif clause.mood == "statement" and _headline(sent, clause, subjects, start, end):
                     kind = "presumed"  # a report ("Torch found on the bunk again"): a later "if on bunk" asks it
@@ -1080,7 +1176,8 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         said = words[max(lo, first - 3):found[1].end]
         # (a speaker's belief before the subject doubts it too: "I think I left the torch on the shelf")
         believed = _believed(words[clause.start:first])
-        if not subjects or words[clause.start] == "there" or doubts(said) or habitual(said) or believed:
+        if not subjects or words[clause.start] == "there" or doubts(said) or habitual(said) or believed \
+                or _alternative_place(words, found[1].end, len(words)):
             lo = found[1].end
             continue  # no subject, an existential (`_existential`), a doubt ("may have been put") or a habit
         prep, holder = found
@@ -1090,6 +1187,89 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         lo = _gapped(sent, clause, ms, holder.end, kind, lex, catalog, reading)
     if clause.mood == "statement":
         _fragment(sent, clause, ms, lex, catalog, reading)
+
+
+def _said_after(words: list[str], lo: int, hi: int, phrases: tuple[tuple[str, ...], ...]) -> bool:
+    """Whether one of `phrases` (word sequences) stands in words[lo:hi]."""
+    return any(tuple(words[k:k + len(p)]) == p for k in range(lo, hi) for p in phrases if k + len(p) <= hi)
+
+
+def _only_be(group: list[str]) -> bool:
+    """A verb group of "be" and a verb of resting at most ("be", "be sitting", "always be")."""
+    verbs = [w for w in group if w not in ADVERBS]
+    return verbs[:1] == ["be"] and all(w in STATIVE for w in verbs[1:])
+
+
+def _standing(words: list[str], clause: Span, before: str, group: list[str], end: int) -> bool:
+    """A standing rule (`STANDING_MODALS` with one of `STANDING_TIMES`, no negation and no time of
+    completion in the clause): "the phone should be on the bedside table at all times"."""
+    tail = _tail(words, clause.end)  # the time may follow a comma: "on the sofa, day and night"
+    return before in STANDING_MODALS and _only_be(group) and not set(words[clause.start:clause.end]) & NEGATIONS \
+        and _said_after(words, clause.start, tail, STANDING_TIMES) \
+        and not _said_after(words, end, tail, COMPLETION_TIMES)
+
+
+def _tail(words: list[str], end: int) -> int:
+    """Where an adverbial set off by a comma after a clause ends: four words on at most, up to the
+    sentence's next full stop, semicolon or question mark."""
+    k = end
+    while k < min(len(words), end + 4) and words[k] not in (".", ";", "?"):
+        k += 1
+    return k
+
+
+def _predicted(words: list[str], clause: Span, before: str, group: list[str], end: int) -> bool:
+    """The predictive "will be" of what the reader will find (`COMPLETION_TIMES`): framed by their
+    arrival, before it ("When you come in, the mug will be on the counter", `_arrival_frame`) or
+    after it ("... will be on the desk when you get there"), or by a case the sentence opens with
+    ("Where one was issued, the hair dryer will be on the desk"). Said alone ("The mug will be on
+    the desk. Wash it.") or under a condition ("... if it is dirty") it stays a goal."""
+    if before != "will" or not _only_be(group) or clause.mood != "statement" \
+            or set(words[clause.start:clause.end]) & NEGATIONS:
+        return False
+    tail = _tail(words, clause.end)
+    stop = next((x for x in range(end, len(words)) if words[x] in (".", ";", "?")), len(words))
+    if _said_after(words, end, tail, COMPLETION_TIMES) or set(words[end:stop]) & {"if", "unless"}:
+        return False
+    framed = _arrival_frame(words, 0, clause.end) == clause.start
+    arriving = any(_arrival_time(words, x, tail) is not None for x in range(end, tail))
+    case = words[clause.start] == "where" and "," in words[clause.start:end]
+    return framed or arriving or case
+
+
+def _arrival_time(words: list[str], lo: int, hi: int) -> int | None:
+    """The end of a time clause of the reader's arrival at `lo` ("when you come in", "when the
+    guests arrive": "when", a person, `ARRIVING` and its particles), else None."""
+    if hi - lo < 3 or words[lo] != "when":
+        return None
+    k = lo + 1
+    if words[k] == "the":
+        k += 1
+    if k >= hi or words[k] not in ("you", "we", "they", "i", "guests", "guest", "visitors", "everyone"):
+        return None
+    k += 1
+    if k >= hi or words[k] not in ARRIVING:
+        return None
+    k += 1
+    while k < hi and words[k] in ARRIVING_PARTICLES:
+        k += 1
+    return k
+
+
+def _arrival_frame(words: list[str], lo: int, hi: int) -> int | None:
+    """Where the main clause after a time clause of arrival (`_arrival_time`) and its comma starts,
+    else None."""
+    k = _arrival_time(words, lo, hi)
+    return k + 1 if k is not None and k + 1 < hi and words[k] == "," else None
+
+
+def _alternative_place(words: list[str], j: int, hi: int) -> bool:
+    """Whether a place is followed by another offered in its stead ("on the counter or in the
+    car", "in the drawer, or else on the shelf"): a choice, no place stated."""
+    k = j
+    while k < hi and words[k] in (",", "or", "else", "maybe", "perhaps", "possibly"):
+        k += 1
+    return "or" in words[j:k] and k < hi and (words[k] in AT or words[k] in ("under", "behind", "at", "by", "near"))
 
 
 def _object_it(sent: _Sentence, clause: Span, last: Mention | None, earlier: bool) -> list[Mention]:
@@ -1108,7 +1288,7 @@ def _believed(lead: list[str]) -> bool:
     """Whether the words before a statement's subject are a speaker's belief (`BELIEFS` after a
     subject pronoun: "I think", "we reckon", "I'm not sure"), which hedges what follows."""
     return any(w in BELIEFS and k > 0 and lead[k - 1] in PERSONAL_SUBJECTS for k, w in enumerate(lead)) or (
-        "sure" in lead and "not" in lead)
+        "sure" in lead and "not" in lead) or bool(set(lead) & HEDGES)
 
 
 def _headline(sent: _Sentence, clause: Span, subjects: list[Mention], start: int, end: int) -> bool:
@@ -1237,6 +1417,20 @@ def _possessor(words: list[str], k: int, first: int) -> bool:
     """Whether the word at `k`, right before the first thing of a list opening at `first`, is a
     possessor whose "'s" the text normalising dropped ("Sam's jacket" read "sam jacket")."""
     return first == k + 1 and words[k].isalpha() and words[k] not in _NO_AGENT
+
+
+#: words before a noun that quantify it, no possessor ("every mug left on the counter gets in the way")
+QUANTIFIERS = frozenset({"every", "each", "any", "all", "no", "most", "many", "few", "several", "some"})
+
+
+def _named_possessor(words: list[str], lo: int, start: int) -> bool:
+    """Whether the thing at `start` opens its clause after a possessor whose "'s" was dropped ("Sam's
+    mug left on the counter needs a wipe", read "sam mug ..."): a definite noun phrase, as "the mug"
+    and "my mug" are, which takes the reduced relative's place for granted; not a quantifier, a
+    colour or a state ("every mug left ...", "dirty mug left ...")."""
+    k = start - 1
+    return k == lo and _possessor(words, k, start) and words[k] not in QUANTIFIERS \
+        and words[k] not in COLOR_WORDS and words[k] not in STATE_WORDS
 
 
 def _pronoun_holder(sent: _Sentence, clause: Span, j: int, lex: Lexicon,
@@ -1977,7 +2171,8 @@ WHERE_PREPS = {"whereon": "on", "whereupon": "on", "wherein": "in"}
 #: words that keep a clause from stating a fact: negation, modality, a goal, a hedge, a condition
 UNSTATED = frozenset({"not", "never", "no", "nothing", "should", "must", "ought", "shall", "would", "will",
                       "can", "could", "might", "may", "to", "need", "needs", "want", "wants", "if", "unless",
-                      "whether", "anywhere", "somewhere", "when", "whenever", "once", "until", "let"}) | DOUBT
+                      "whether", "anywhere", "somewhere", "when", "whenever", "once", "until", "let"}) | DOUBT \
+    | HEDGES | CORRELATIVE_NEGATIONS
 #: words that may stand before a subject at the head of a clause ("and whereas on the piano ...")
 SUBJECT_LEADS = LEAD_INS | FRONT_LEADS | frozenset({",", "whereas", "while", "meanwhile", "as", "yes", "also",
                                                     # interjections ("Uh-oh, the floor is stained!")
@@ -2035,7 +2230,9 @@ def _fallback(sent: _Sentence, before: _Before, lex: Lexicon, catalog: Catalog, 
                 continue  # "where the carton remains on the table, ...": a condition's register
             # the "to" of "has moved to" is where the thing went, of "next to" where it is: no goal
             stated = not {w for k, w in enumerate(words[a:b], a)
-                          if w != "to" or words[k - 1] not in MOVED | PLACE_BEFORE_TO} & UNSTATED
+                          if w != "to" or words[k - 1] not in MOVED | PLACE_BEFORE_TO} & UNSTATED \
+                and not any(_alternative_place(words, k, len(words)) for k in range(a, min(b + 2, len(words)))
+                            if words[k] == "or")
             for kind, item, prep, holder in _fallback_forms(sent, ms, a, b, lex, stated) \
                     + (_structures(sent, before, ms, a, b, lex) if stated else []):
                 _put_new(reading, kind, catalog, lex, item, holder, prep)
