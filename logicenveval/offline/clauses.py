@@ -265,23 +265,13 @@ _PRESENCE_QUESTION = frozenset({"is", "are", "was", "were"})
 #: modals before "be" in a presence condition ("if the mug might still be there", "should the
 #: towel be here", "if it will be there"); a bare "be" after an inverted "should" too
 _PRESENCE_MODALS = frozenset({"might", "may", "could", "should", "will", "would", "must", "can"})
-#: adverbials of time after a presence that say when, not where ("if the mug is there right now",
-#: "is it here at the moment?"); not "already" ("if it's there already" asks whether an
-#: instruction is done, `analysis._already`) nor a place ("in there")
-_PRESENCE_TIMES = tuple(sorted((tuple(a.split()) for a in TRAILING_ADVERBIALS
-                               if a not in ("already", "in there", "in here")), key=len, reverse=True))
-
 
 def presence_asked(words: list[str]) -> bool | None:
     """`_presence` of the condition's words, also in the forms writers ask it in (the thirteenth
-    session): an adverbial of time after it dropped (`_PRESENCE_TIMES`), a modal before "be"
-    ("if the mug might still be there", "should the towel be here") and a question with its finite
+    session): a modal before "be" ("if the mug might still be there", "should the towel be here")
+    and a question with its finite
     word first ("Is the mug there?"; a negative question, "Isn't the mug there?", asks the same
     as the positive one, `analysis._unbiased`). Why: a presence was read only as "X is there"."""
-    for time in _PRESENCE_TIMES:
-        if len(words) > len(time) + 1 and tuple(words[-len(time):]) == time:
-            words = words[:-len(time)]
-            break
     if words[:1] and words[0] in _PRESENCE_QUESTION:
         # (the thing named: "are they there?" after "I forgot my glasses on the coffee table"
         # asks the place the sentence before named, not whether they exist)
