@@ -5,6 +5,7 @@ a sentence the way the model does."""
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Any
 
 from logicenveval.domain.catalog import load_catalog
@@ -45,3 +46,14 @@ def asks(text: str, rooms: tuple[str, ...], condition: str) -> bool:
 def placed(text: str, rooms: tuple[str, ...]) -> set[str]:
     """The placements the text states (`on(x, y)`, `inside(x, y)`, `in_room(x, r)`)."""
     return set(described_placements(brief(text, rooms), CATALOG))
+
+
+def forms_named(path: Path, rooms: tuple[str, ...] = ()) -> int:
+    """How many sentences of a naming-forms file (tests/data/naming_forms/: tab-separated kind,
+    form, sentence; "#" comments) name their row's kind, for the files' floors."""
+    count = 0
+    for line in path.read_text(encoding="utf-8").splitlines():
+        if line.strip() and not line.startswith("#"):
+            kind, _, sentence = line.split("\t")
+            count += kind in {o["category"] for o in name_objects(sentence, CATALOG, rooms=rooms)}
+    return count

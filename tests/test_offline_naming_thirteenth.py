@@ -9,6 +9,7 @@ import sys
 from pathlib import Path
 
 import pytest
+from reading import forms_named
 
 from logicenveval.domain.catalog import load_catalog
 from logicenveval.offline.naming import name_objects
@@ -26,18 +27,8 @@ def _kinds(text: str, rooms: tuple[str, ...] = ()) -> list[str]:
     return [o["category"] for o in name_objects(text, load_catalog(), rooms=rooms)]
 
 
-def _rows() -> list[tuple[str, str, str]]:
-    rows = []
-    for line in FORMS.read_text(encoding="utf-8").splitlines():
-        if line.strip() and not line.startswith("#"):
-            kind, form, sentence = line.split("\t")
-            rows.append((kind, form, sentence))
-    return rows
-
-
 def test_thirteenth_session_forms_do_not_fall() -> None:
-    named = sum(kind in _kinds(sentence) for kind, _, sentence in _rows())
-    assert named >= NAMED_AT_LEAST
+    assert forms_named(FORMS) >= NAMED_AT_LEAST
 
 
 # -- a part word heading its own noun phrase is a part of another thing, no dropped modifier of a
