@@ -9,24 +9,30 @@ from __future__ import annotations
 import json
 from functools import lru_cache
 from pathlib import Path
+from typing import Any
 
 WORDNET_NAMES = Path(__file__).with_name("wordnet_names.json")
 
 
 @lru_cache(maxsize=1)
+def _tables() -> dict[str, Any]:
+    """The file, read once for both of its tables (`wordnet_names`, `contents_names`)."""
+    tables: dict[str, Any] = json.loads(WORDNET_NAMES.read_text(encoding="utf-8"))
+    return tables
+
+
 def wordnet_names() -> dict[str, str]:
     """Word (spaces between words) -> catalog kind."""
-    names: dict[str, str] = json.loads(WORDNET_NAMES.read_text(encoding="utf-8"))["names"]
+    names: dict[str, str] = _tables()["names"]
     return names
 
 
-@lru_cache(maxsize=1)
 def contents_names() -> dict[str, str]:
     """Word (spaces between words) -> the vessel kind that holds what it names ("claret": the
     wine bottle), read only as a vessel's contents ("a bottle of claret", "the merlot bottle":
     `offline.naming`), never as a name of its own (`tools/wordnet_names.py`, `build_contents`)."""
-    names: dict[str, str] = json.loads(WORDNET_NAMES.read_text(encoding="utf-8"))["contents"]
-    return names
+    contents: dict[str, str] = _tables()["contents"]
+    return contents
 
 
 def is_wordnet_name(text: str) -> bool:
