@@ -343,6 +343,18 @@ def misread(case: Case, catalog: Catalog) -> bool:
 DIMENSIONS = ("form", "subject", "prep", "pair")
 
 
+def _print_near_misses(title: str, misses: list[Case], false: list[Case]) -> None:
+    """Per form of a near-miss table, how many of its sentences were read as a placement."""
+    by_form: dict[str, list[int]] = defaultdict(lambda: [0, 0])
+    for c in misses:
+        by_form[c.form][1] += 1
+    for c in false:
+        by_form[c.form][0] += 1
+    print(title)
+    for value, (bad, total) in by_form.items():
+        print(f"  {value:28s} {bad:5d}/{total:<5d}")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--why", action="store_true", help="print every sentence misread and every false reading")
@@ -366,38 +378,25 @@ def main() -> None:
             print(f"  {value:28s} {good:5d}/{total:<5d} {good / total:.3f}")
     misses = near_misses()[::10] if args.smoke else near_misses()
     false: list[Case] = [c for c in misses if misread(c, catalog)]
-    by_miss: dict[str, list[int]] = defaultdict(lambda: [0, 0])
-    for c in misses:
-        by_miss[c.form][1] += 1
-    for c in false:
-        by_miss[c.form][0] += 1
-    print("near misses read as a placement (must be 0):")
-    for value, (bad, total) in by_miss.items():
-        print(f"  {value:28s} {bad:5d}/{total:<5d}")
+    _print_near_misses("near misses read as a placement (must be 0):", misses, false)
     if args.why:
         for case in missed:
             print(f"MISSED [{case.form} | {case.subject} | {case.prep}] {case.fact}: {case.text}")
         for case in false:
             print(f"FALSE [{case.form} | {case.prep}] {facts(case, catalog)}: {case.text}")
     hard = harder_cases()[::10] if args.smoke else harder_cases()
-    hard_missed = [c for c in hard if not read_right(c, catalog)]
+    hard_read = [read_right(c, catalog) for c in hard]
+    hard_missed = [c for c, ok in zip(hard, hard_read, strict=True) if not ok]
     hard_misses = harder_near_misses()[::10] if args.smoke else harder_near_misses()
     hard_false = [c for c in hard_misses if misread(c, catalog)]
     by_hard: dict[str, list[int]] = defaultdict(lambda: [0, 0])
-    for c in hard:
-        by_hard[c.form][0] += c not in hard_missed
+    for c, ok in zip(hard, hard_read, strict=True):
+        by_hard[c.form][0] += ok
         by_hard[c.form][1] += 1
     print("harder forms (thirteenth session):")
     for value, (good_h, total_h) in by_hard.items():
         print(f"  {value:28s} {good_h:5d}/{total_h:<5d} {good_h / total_h:.3f}")
-    by_hard_miss: dict[str, list[int]] = defaultdict(lambda: [0, 0])
-    for c in hard_misses:
-        by_hard_miss[c.form][1] += 1
-    for c in hard_false:
-        by_hard_miss[c.form][0] += 1
-    print("harder near misses read as a placement (must be 0):")
-    for value, (bad, total) in by_hard_miss.items():
-        print(f"  {value:28s} {bad:5d}/{total:<5d}")
+    _print_near_misses("harder near misses read as a placement (must be 0):", hard_misses, hard_false)
     if args.why:
         for case in hard_missed:
             print(f"MISSED HARDER [{case.form} | {case.subject} | {case.prep}] {case.fact}: {case.text}")
