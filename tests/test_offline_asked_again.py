@@ -99,6 +99,8 @@ def test_dashes_not_after_a_connective_are_left(text: str) -> None:
      "exists(kettle)"),
     # a formal notice, "should" inverted
     ("Should the hair dryer be there, it is to be unplugged.", ("bathroom",), "exists(hair_dryer)"),
+    # a house-sitter's note: a modifier the reader guesses an attribute from blocks no presence
+    ("Is the right remote there? If so, put it on the TV stand.", ("living_room",), "exists(remote_control)"),
 ])
 def test_a_presence_asked_as_a_question_or_with_a_modal_asks_whether_the_thing_is_there(
         text: str, rooms: tuple[str, ...], condition: str) -> None:

@@ -2677,7 +2677,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # "it is there" asks whether the thing is there at all); so does "the mug is not
                 # there" with the thing named in the condition itself (a pronoun, "if it is not
                 # there", points back to a place the sentence before may have named); an attribute
-                # only guessed from a word ("right" of "if the mug is there right now") is no reading
+                # only guessed from a modifier ("right" of "Is the right remote there?") is no reading
                 facts = [Fact(r, f"exists({r})", "exists", negated=bool(present)) for r in names[:1]]
             elif role == "condition" and names and not any(not f.goal for f in facts) \
                     and _FIND_NAMED.match(low):
