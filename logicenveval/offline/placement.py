@@ -163,7 +163,9 @@ COMPLETION_TIMES: tuple[tuple[str, ...], ...] = (
     ("tomorrow",), ("tonight",))
 #: a time clause of the reader's arrival, which frames a description of what they will find
 #: ("When you come in, the hair dryer will be on the desk", "When you get there, your key is in the
-#: lockbox"): "when", a person, one of these verbs and its particle at most, then a comma
+#: lockbox"): "when", a person (`ARRIVERS`), one of these verbs (`ARRIVING`) and its particle at
+#: most, then a comma
+ARRIVERS = frozenset({"you", "we", "they", "i", "guests", "guest", "visitors", "everyone"})
 ARRIVING = frozenset({"arrive", "arrives", "come", "comes", "get", "gets", "walk", "walks", "check", "checks",
                       "wake", "wakes", "return", "returns"})
 ARRIVING_PARTICLES = frozenset({"in", "back", "there", "here", "home", "up", "round", "over", "tonight",
@@ -793,11 +795,12 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
         # "lives on the props table", "on the wooden box": one modifier that names nothing
         # between the article and the place (as the naming step reads it, `naming.modified`)
         m = next((t for t in ms if t.start == k + 1 and t.kind == "role"), None)
-    if m is None and k + 2 < hi and words[k].isalpha() and words[k] not in PREP_OF_PLACE | VERBS \
-            and not any(t.start <= k < t.end for t in ms) and words[k + 1] == ",":
+    # a place the text names by a word no name of the task holds, said again after it
+    unknown = m is None and k + 2 < len(words) and words[k].isalpha() and words[k] not in PREP_OF_PLACE | VERBS \
+        and not any(t.start <= k < t.end for t in sent.mentions)
+    if unknown and k + 2 < hi and words[k + 1] == ",":
         m = _apposed(sent, ms, k + 2, hi)  # "on the taburete, the little stool"
-    if m is None and k + 2 < len(words) and words[k + 1] == "(" and words[k].isalpha() \
-            and words[k] not in PREP_OF_PLACE | VERBS and not any(t.start <= k < t.end for t in sent.mentions):
+    if unknown and m is None and words[k + 1] == "(":
         m = _bracket_gloss(sent, k + 2)  # "on wersalka (sofa)", "in the kufer (the trunk)"
     if m is not None and m.kind == "room":
         # "sits on the cloakroom counter", "on the bedroom dresser": a room's name before a thing's
@@ -1245,7 +1248,7 @@ def _arrival_time(words: list[str], lo: int, hi: int) -> int | None:
     k = lo + 1
     if words[k] == "the":
         k += 1
-    if k >= hi or words[k] not in ("you", "we", "they", "i", "guests", "guest", "visitors", "everyone"):
+    if k >= hi or words[k] not in ARRIVERS:
         return None
     k += 1
     if k >= hi or words[k] not in ARRIVING:
