@@ -24,8 +24,8 @@ from logicenveval.benchmark import load_task_file, tasks_dir
 from logicenveval.domain.catalog import Catalog, load_catalog
 from logicenveval.errors import LogicEnvEvalError, PolicyFormatError, TaskFormatError
 from logicenveval.limits import limit, raise_hint, read_text
-from logicenveval.model.conditions import And, Cond, Const, Not, Or, Pred, atoms, parse
-from logicenveval.model.rooms import room_type_of
+from logicenveval.logic.axioms import Axioms
+from logicenveval.model.conditions import parse
 from logicenveval.model.task import FAULTY_KINDS, POLICY_KINDS, Leaf, Node, Task
 from logicenveval.model.tree import Trajectory, task_paths
 from logicenveval.sim.worlds import DEFAULT_WORLDS
@@ -210,88 +210,14 @@ def _check_constraints(task: Task, cat: Catalog, add: _Add) -> None:
 
 # ----- exclusive / exhaustive values ----------------------------------------------------------
 
-class _Axioms:
-    """Predicates as free z3 booleans, constrained by the physical axioms of DESIGN.md §4."""
-
-    def __init__(self, task: Task, extra: tuple[Cond, ...] = ()) -> None:
-        self.vars: dict[Pred, z3.BoolRef] = {}
-        preds: set[Pred] = {p for c in extra for p in atoms(c)}
-        for var in task.variables.values():
-            for text in var.values.values():
-                preds |= set(atoms(parse(text)))
-        self.axioms: list[z3.BoolRef] = []
-        mentioned_exists = {p.args[0] for p in preds if p.name == "exists"}
-        for role, spec in task.roles.items():
-            if role not in mentioned_exists and not spec.optional:
-                self.axioms.append(self.atom(Pred("exists", (role,))))
-        by_subject: dict[str, list[Pred]] = {}
-        for p in sorted(preds, key=str):
-            by_subject.setdefault(p.args[0], []).append(p)
-        for subject, ps in by_subject.items():
-            placed = [self.atom(p) for p in ps if p.name in ("on", "inside")]
-            rooms = {room_type_of(p.args[1]): p for p in ps if p.name == "in_room"}
-            self._at_most_one(placed)
-            self._at_most_one([self.atom(p) for p in rooms.values()])
-            keys = {p.args[1] for p in ps if p.name == "attr"}
-            for key in keys:
-                self._at_most_one([self.atom(p) for p in ps if p.name == "attr" and p.args[1] == key])
-            if subject in task.roles:
-                ex = self.atom(Pred("exists", (subject,)))
-                for p in ps:
-                    if p.name != "exists":
-                        self.axioms.append(z3.Implies(self.atom(p), ex))
-        for p in preds:
-            if p.name in ("on", "inside") and p.args[1] in task.roles:
-                self.axioms.append(z3.Implies(self.atom(p), self.atom(Pred("exists", (p.args[1],)))))
-
-    def _at_most_one(self, lits: list[z3.BoolRef]) -> None:
-        for a, b in itertools.combinations(lits, 2):
-            self.axioms.append(z3.Not(z3.And(a, b)))
-
-    def atom(self, p: Pred) -> z3.BoolRef:
-        if p.name == "in_room":
-            p = Pred("in_room", (p.args[0], room_type_of(p.args[1])))
-        got = self.vars.get(p)
-        if got is None:
-            got = self.vars[p] = z3.Bool(f"{p.name}({', '.join(p.args)})")
-        return got
-
-    def cond(self, c: Cond) -> z3.BoolRef:
-        if isinstance(c, Const):
-            return z3.BoolVal(c.value)
-        if isinstance(c, Pred):
-            return self.atom(c)
-        if isinstance(c, Not):
-            return z3.Not(self.cond(c.operand))
-        if isinstance(c, And):
-            return z3.And(*[self.cond(o) for o in c.operands])
-        assert isinstance(c, Or)
-        return z3.Or(*[self.cond(o) for o in c.operands])
-
-    def witness(self, *formulas: z3.BoolRef) -> str | None:
-        """A satisfying assignment of the true atoms, or None when the formulas are unsat."""
-        s = z3.Solver()
-        s.add(*self.axioms, *formulas)
-        if s.check() != z3.sat:
-            return None
-        m = s.model()
-        facts = []
-        for p, v in sorted(self.vars.items(), key=lambda kv: str(kv[1])):
-            holds = z3.is_true(m.eval(v, model_completion=True))
-            if p.name == "exists":
-                facts += [] if holds else [f"not {v}"]  # present objects are the default
-            elif holds:
-                facts.append(str(v))
-        return "{" + (", ".join(facts) or "every predicate false") + "}"
-
-
 def _check_values(task: Task, add: _Add) -> None:
-    enc = _Axioms(task)
+    extra = [parse(t) for var in task.variables.values() for t in var.values.values()]
+    enc = Axioms(task.roles, extra)
     for st in task.subtasks:
         _check_node(task, enc, st.tree, [], f"subtasks.{st.id}.tree", add)
 
 
-def _check_node(task: Task, enc: _Axioms, node: Node | Leaf, path: list[z3.BoolRef], where: str,
+def _check_node(task: Task, enc: Axioms, node: Node | Leaf, path: list[z3.BoolRef], where: str,
                 add: _Add) -> None:
     if isinstance(node, Leaf):
         return

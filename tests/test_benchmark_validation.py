@@ -12,7 +12,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from logicenveval.benchmark import DEFAULT_TASKS_DIR, load_task
-from logicenveval.benchmark_validation import _Axioms, situations, validate_all, validate_task
+from logicenveval.benchmark_validation import situations, validate_all, validate_task
+from logicenveval.logic.axioms import Axioms
 from logicenveval.model.conditions import evaluate, parse
 
 FIXTURES = Path(__file__).parent / "fixtures" / "broken_tasks"
@@ -100,7 +101,7 @@ def _axioms_hold(world: dict[str, bool]) -> bool:
 def test_overlap_check_matches_truth_table(a: str, b: str) -> None:
     task = load_task("clean_living_room").model_copy(update={"variables": {}})
     ca, cb = parse(a), parse(b)
-    enc = _Axioms(task, (ca, cb))
+    enc = Axioms(task.roles, (ca, cb))
     z3_overlap = enc.witness(enc.cond(ca), enc.cond(cb)) is not None
     brute = False
     for bits in itertools.product([False, True], repeat=len(_ATOMS)):

@@ -116,11 +116,11 @@ def test_catalog_attribute_keys_and_purpose_stand_and_the_first_of_a_name_counts
     assert changes == [Retrieved("box", "attributes", "running", "")]
 
 
-def test_protocol_6_is_the_default_and_a_later_one_is_refused() -> None:
+def test_protocol_7_is_the_default_and_a_later_one_is_refused() -> None:
     from logicenveval.errors import ConfigError
     from logicenveval.llm.registry import request_protocol
 
-    assert request_protocol(None) == 6 == request_protocol("protocol=6")
-    assert request_protocol("protocol=5") == 5
-    with pytest.raises(ConfigError, match="use one of 1, 2, 3, 4, 5, 6"):
-        request_protocol("protocol=7")
+    assert request_protocol(None) == 7 == request_protocol("protocol=7")
+    assert request_protocol("protocol=6") == 6
+    with pytest.raises(ConfigError, match="use one of 1, 2, 3, 4, 5, 6, 7"):
+        request_protocol("protocol=8")

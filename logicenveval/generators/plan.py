@@ -5,7 +5,8 @@ task's own vocabulary); rule-guided verification checks
 (a) independence of subtasks (no shared factor, no shared tested role), (b) syntax/schema,
 (c) every internal node grounded in an identified factor, and (d) every factor value a condition
 on the task's roles (DESIGN.md §3) that their kinds can meet (from request protocol 6 on:
-`generators.feasibility`). Violations go back to the LLM as feedback, a bounded number
+`generators.feasibility`) and that can hold at all (from protocol 7 on: `logic.axioms`; a tree
+then asks on a path only factors whose every response the path leaves possible). Violations go back to the LLM as feedback, a bounded number
 of times (rule (a): the decomposition is asked again with the dependent pairs named; rule (d):
 the factors are asked again); what still fails is repaired by rule (merge dependent subtasks,
 drop ungrounded factors) and logged, so the plan is always a valid `Task` built from the brief alone.
@@ -13,6 +14,7 @@ drop ungrounded factors) and logged, so the plan is always a valid `Task` built 
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import lru_cache
 from typing import Any
@@ -36,6 +38,7 @@ from logicenveval.llm.replies import (
 )
 from logicenveval.llm.structured import to_text
 from logicenveval.llm.vocab import SNAKE, Words
+from logicenveval.logic.axioms import Axioms
 from logicenveval.model.conditions import AGENT_PREDICATES, atoms, parse, subject_roles
 from logicenveval.model.rooms import ROOM_TYPES
 from logicenveval.model.task import Task, TaskBrief
@@ -56,9 +59,12 @@ def _payload(brief: TaskBrief, **extra: Any) -> dict[str, Any]:
     return {"task": brief.model_dump(mode="json"), **extra}
 
 
-def check_factor(brief: TaskBrief, factor: FactorDraft, catalog: Catalog | None = None) -> list[str]:
+def check_factor(brief: TaskBrief, factor: FactorDraft, catalog: Catalog | None = None,
+                 axioms: bool = False) -> list[str]:
     """Rule (d): every value parses and speaks about the task's roles (or rooms/floor); given the
-    catalog, every value can hold of the roles' kinds (`feasibility.impossible`)."""
+    catalog, every value can hold of the roles' kinds (`feasibility.impossible`); with `axioms`,
+    every value can hold at all under the physical axioms (`logic.axioms`: nothing rests on
+    itself or in two places, an attribute has one value)."""
     problems = []
     known = set(brief.roles) | set(brief.rooms) | set(ROOM_TYPES) | {"floor"}
     for value, text in factor.values.items():
@@ -76,9 +82,12 @@ def check_factor(brief: TaskBrief, factor: FactorDraft, catalog: Catalog | None 
                 if arg not in known:
                     problems.append(f"factor {factor.id!r} value {value!r} names {arg!r}, which is not "
                                     f"a role, a room or floor; roles are {sorted(brief.roles)}")
-        if catalog is not None:
-            problems += [f"factor {factor.id!r} value {value!r}: {why}; ask about something that can "
-                         "differ between environments of this task" for why in impossible(cond, brief.roles, catalog)]
+        reasons = impossible(cond, brief.roles, catalog) if catalog is not None else []
+        if axioms and not reasons and not Axioms(brief.roles, [cond]).possible(cond):
+            reasons = [f"{text} can never hold: it puts an object on or in itself or in two places, "
+                       "or gives one attribute two values"]
+        problems += [f"factor {factor.id!r} value {value!r}: {why}; ask about something that can "
+                     "differ between environments of this task" for why in reasons]
     return problems
 
 
@@ -202,9 +211,10 @@ def _decompose(brief: TaskBrief, ctx: GenerationContext, vocab: dict[str, Words]
 def _identify(brief: TaskBrief, ctx: GenerationContext, vocab: dict[str, Words], log: PlanLog,
               st: SubtaskDraft, max_refinements: int) -> list[FactorDraft]:
     """The subtask's factors, re-asked with rule (d)'s feedback; ungrounded ones dropped. Packs
-    recorded before protocol 6 were not asked again for a value their kinds cannot meet, so
-    their replay asks the same."""
+    recorded before protocol 6 were not asked again for a value their kinds cannot meet, nor
+    before protocol 7 for a value no environment can meet, so their replay asks the same."""
     catalog = ctx.catalog if protocol_of(ctx.model) >= 6 else None
+    axioms = protocol_of(ctx.model) >= 7
     feedback: list[str] = []
     checked: list[tuple[FactorDraft, list[str]]] = []  # each draft with its problems
     for attempt in range(max_refinements + 1):
@@ -216,7 +226,7 @@ def _identify(brief: TaskBrief, ctx: GenerationContext, vocab: dict[str, Words],
             log.add("identify_factors", "no valid reply; the subtask keeps no factors",
                     subtask=st.id, error=exc.message)
             return []
-        checked = [(d, check_factor(brief, d, catalog)) for d in (f.draft() for f in reply.factors)]
+        checked = [(d, check_factor(brief, d, catalog, axioms)) for d in (f.draft() for f in reply.factors)]
         feedback = [p for _, problems in checked for p in problems]
         if not feedback:
             break
@@ -256,10 +266,13 @@ def _grow_tree(brief: TaskBrief, ctx: GenerationContext, st: SubtaskDraft,
     base = _payload(brief, subtask=st.model_dump(), factors=[f.model_dump() for f in factors.values()])
     budget = [MAX_TREE_STEPS]
     leaves: list[list[tuple[str, str]]] = []
+    opened = _open_factors(brief, factors) if protocol_of(ctx.model) >= 7 else None
 
     def grow(path: list[tuple[str, str]]) -> QueryNode | PlanLeaf:
         asked = {var for var, _ in path}
         remaining = [f for f in factors if f not in asked]
+        if opened is not None:
+            remaining = [f for f in remaining if opened(path, f)]
         if not remaining or budget[0] <= 0:
             leaves.append(path)
             return PlanLeaf(plan=[st.description], goal="true")
@@ -302,6 +315,23 @@ def _grow_tree(brief: TaskBrief, ctx: GenerationContext, st: SubtaskDraft,
             v: fill(c, [*path, (node.var, v)]) for v, c in node.branches.items()})
 
     return fill(tree, [])
+
+
+def _open_factors(brief: TaskBrief,
+                  factors: dict[str, FactorDraft]) -> Callable[[list[tuple[str, str]], str], bool]:
+    """Whether a factor is still open on a path: each of its responses can hold together with the
+    responses the path took (`logic.axioms`). A factor the path decides ("is the bottle on the
+    floor?" after "on the vanity? yes"), or one a response of which the path rules out, is not
+    offered there, so no planned situation contradicts itself (from request protocol 7 on; a
+    tree's branches stay exactly its query's responses, rule (c))."""
+    conds = {(f, v): parse(t) for f, d in factors.items() for v, t in d.values.items()}
+    axioms = Axioms(brief.roles, conds.values())
+
+    def opened(path: list[tuple[str, str]], factor: str) -> bool:
+        facts = [conds[step] for step in path]
+        return all(axioms.possible(*facts, conds[factor, v]) for v in factors[factor].values)
+
+    return opened
 
 
 #: the `tree_step` answer that ends a path with a leaf
