@@ -158,6 +158,20 @@ prints LogCov / SceVR / FauDR for each, then per task:
   information leaflet, an artist's instruction pieces, a Polish landlady's note, an old-fashioned
   reading primer). Fresh (`FRESH`) until measured three times (twelfth session), then a
   development set;
+- `dev23 reworded` and `dev23 new`: tests/data/reader_dev23/ — the twenty-third development set,
+  written in the thirteenth session (beside dev 24, each in its own family of registers) in
+  registers of food and drink, farming and gardening, animals, nature and the weather no set used
+  and the English of a Swahili speaker: one rewording each of 3 built-in descriptions (an
+  almanac page, a restaurant review, a field guide) and six new tasks in rooms none of the sets
+  above use (a beekeeper's record, a seed packet, a tasting note, a dog walker's handover, a
+  shipping-forecast pastiche, a Swahili speaker's SMS). Fresh (`FRESH`) until measured three times;
+- `dev24 reworded` and `dev24 new`: tests/data/reader_dev24/ — the twenty-fourth development set,
+  written in the thirteenth session (beside dev 23) in registers of commerce, the media, the
+  internet and officialdom no set used and the English of a Swedish speaker: one rewording each
+  of 3 built-in descriptions (a cleaning quote, a GOV.UK-style page, TV listings) and six new
+  tasks in rooms none of the sets above use (a marketplace listing, a product review, a
+  corrections column, a planning decision notice, an app's e-mail digest, a Swedish speaker's
+  note). Fresh (`FRESH`) until measured three times;
 - `dev25 reworded` and `dev25 new`: tests/data/reader_dev25/ — the twenty-fifth development set,
   written in the fourteenth session (beside dev 26, each in its own family of registers) in
   registers of sport, games and hobbies, travel and transport no set used and the English of a
@@ -166,8 +180,15 @@ prints LogCov / SceVR / FauDR for each, then per task:
   rooms none of the sets above use (a karate club's dojo etiquette sheet, a railway
   engineering-works notice, a cycling club's ride sheet, a chess arbiter's announcement, an
   airline boarding pass, a Vietnamese aunt's note). Fresh (`FRESH`) until first measured;
-FRESH: frozenset[str] = frozenset({"dev23 reworded", "dev23 new", "dev24 reworded", "dev24 new",
-                                    "dev25 reworded", "dev25 new"})
+- `dev26 reworded` and `dev26 new`: tests/data/reader_dev26/ — the twenty-sixth development set,
+  written in the fourteenth session (beside dev 25, each in its own family of registers) in
+  registers of science, medicine, engineering and the trades no set used and the English of a
+  Finnish speaker: one rewording each of 3 built-in descriptions (a surgical safety checklist, a
+  garage's vehicle health check, a clinical trial protocol synopsis) and six new tasks in rooms
+  none of the sets above use (a GP's referral letter, an electrical installation condition
+  report's observations, a service manual's troubleshooting table, a peer reviewer's report, a
+  maintenance task card, a Finnish cottage owner's note about the sauna). Fresh (`FRESH`) until
+  the coordinator's first measurement;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -184,7 +205,7 @@ like-for-like gap.
 Every run is computed afresh (`fresh=True`: a stored unit is never reused, since the run's
 fingerprint does not cover the reader's code) with the offline model's reply cache off.
 
-    python benchmarks/reader_generalisation.py            # all fifty-four rows (~3-6 min on 2 cores)
+    python benchmarks/reader_generalisation.py            # all fifty-six rows (~3-6 min on 2 cores)
     python benchmarks/reader_generalisation.py --smoke    # two tasks per set (~1 min)
     python benchmarks/reader_generalisation.py --why      # and why each task lost environments
     python benchmarks/reader_generalisation.py --dev-only # without the held-out sets (for tuning)
@@ -200,7 +221,7 @@ was written for (a rule too wide shows as a task of another set falling):
     python benchmarks/reader_generalisation.py --dev-only --compare before.json # with the rule
 
 `--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: dev 23 and
-dev 24, written in the thirteenth session after dev 21 and dev 22 left it at its start, and dev 25,
+dev 24, written in the thirteenth session after dev 21 and dev 22 left it at its start, dev 25 and dev 26,
 written in the fourteenth), so a tuner's runs
 never show them; `--dev-only --fresh` keeps them, to measure them. `--skip 'dev9 reworded,dev9 new'` leaves any other rows' sets out as well.
 
@@ -254,7 +275,7 @@ dev5_new=... dev6_reworded=... dev6_new=... dev7_reworded=... dev7_new=... dev8_
 dev8_new=... dev9_reworded=... dev9_new=... dev10_reworded=... dev10_new=... dev11_reworded=...
 dev11_new=... dev12_reworded=... dev12_new=... dev13_reworded=... dev13_new=... dev14_reworded=... dev14_new=...
 dev15_reworded=... dev15_new=... dev16_reworded=... dev16_new=... dev17_reworded=... dev17_new=...
-dev18_reworded=... dev18_new=... dev19_reworded=... dev19_new=... dev20_reworded=... dev20_new=... dev21_reworded=... dev21_new=... dev22_reworded=... dev22_new=... dev23_reworded=... dev23_new=... dev24_reworded=... dev24_new=... dev25_reworded=... dev25_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
+dev18_reworded=... dev18_new=... dev19_reworded=... dev19_new=... dev20_reworded=... dev20_new=... dev21_reworded=... dev21_new=... dev22_reworded=... dev22_new=... dev23_reworded=... dev23_new=... dev24_reworded=... dev24_new=... dev25_reworded=... dev25_new=... dev26_reworded=... dev26_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
 rows only).
 """
 
@@ -305,6 +326,7 @@ DEV22 = ROOT / "tests" / "data" / "reader_dev22"
 DEV23 = ROOT / "tests" / "data" / "reader_dev23"
 DEV24 = ROOT / "tests" / "data" / "reader_dev24"
 DEV25 = ROOT / "tests" / "data" / "reader_dev25"
+DEV26 = ROOT / "tests" / "data" / "reader_dev26"
 HOLDOUT2 = ROOT / "tests" / "data" / "reader_holdout2"
 #: (row name, tasks folder; None = the built-in tasks)
 SETS: tuple[tuple[str, Path | None], ...] = (
@@ -333,6 +355,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
     ("dev23 reworded", DEV23 / "tasks_reworded"), ("dev23 new", DEV23 / "tasks_new"),
     ("dev24 reworded", DEV24 / "tasks_reworded"), ("dev24 new", DEV24 / "tasks_new"),
     ("dev25 reworded", DEV25 / "tasks_reworded"), ("dev25 new", DEV25 / "tasks_new"),
+    ("dev26 reworded", DEV26 / "tasks_reworded"), ("dev26 new", DEV26 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
     ("held-out2 reworded", HOLDOUT2 / "tasks_reworded"), ("held-out2 new", HOLDOUT2 / "tasks_new"),
 )
@@ -342,7 +365,7 @@ UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
 FRESH: frozenset[str] = frozenset({"dev23 reworded", "dev23 new", "dev24 reworded", "dev24 new",
-                                    "dev25 reworded", "dev25 new"})
+                                    "dev25 reworded", "dev25 new", "dev26 reworded", "dev26 new"})
 GENERATOR = "logicenvgen"
 
 
