@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import itertools
 import json
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -30,7 +29,6 @@ from logicenveval.logic.axioms import Axioms
 from logicenveval.model.conditions import parse
 from logicenveval.model.task import Role, TaskBrief
 
-ROOT = Path(__file__).resolve().parents[1]
 CATALOG = load_catalog()
 ROLES = {"bottle": Role(category="medicine_bottle"), "vanity": Role(category="bathroom_vanity"),
          "cabinet": Role(category="medicine_cabinet"), "towel": Role(category="towel"),
@@ -66,25 +64,6 @@ def test_what_an_environment_can_meet(texts: tuple[str, ...]) -> None:
     """Near misses: two objects in two places, an optional role absent, a disjunction, two
     attributes, one room named by its id and its type."""
     assert _possible(*texts)
-
-
-def _task_files() -> list[Path]:
-    return sorted([*ROOT.glob("benchmark_data/tasks/*/task.json"), *ROOT.glob("tests/data/*/tasks_*/*/task.json")])
-
-
-def test_no_ground_truth_factor_response_of_any_task_is_refused() -> None:
-    """Calibration on data written apart from the rule: every response of every factor of the 25
-    tasks and of every test set can hold, and each GT path's responses hold together."""
-    files = _task_files()
-    assert len(files) > 200
-    refused = []
-    for path in files:
-        task = json.loads(path.read_text())
-        roles = {r: Role.model_validate(v) for r, v in task["roles"].items()}
-        factor = {(f, v): parse(t) for f, d in task.get("variables", {}).items() for v, t in d["values"].items()}
-        axioms = Axioms(roles, factor.values())
-        refused += [(path.parent.name, k) for k, c in factor.items() if not axioms.possible(c)]
-    assert refused == []
 
 
 #: Qwen2.5-Coder-1.5B's protocol-6 factor for bathroom_counter_sort, as recorded (its brief named
