@@ -84,7 +84,7 @@ def test_outputs_and_result_keys(first_run: Path) -> None:
     assert set(cost["logicenvgen"]["clean_living_room"]) == {
         "generation_seconds", "requests", "cache_hits", "reasks", "prompt_tokens", "completion_tokens", "latency_s",
         "recorded_replies", "recorded_prompt_tokens", "recorded_completion_tokens", "recorded_seconds"}
-    assert results["protocol"] == 6 and results["results"]["logicenvgen"]["realised_share"] == 1.0
+    assert results["protocol"] == 7 and results["results"]["logicenvgen"]["realised_share"] == 1.0
 
 
 def test_same_command_same_results_and_resume(first_run: Path, tmp_path: Path) -> None:
