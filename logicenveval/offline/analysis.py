@@ -642,6 +642,23 @@ PARTICLE_STATES = frozenset({"on", "off", "out"})
 STRANDED_STATES = frozenset({"on", "off"})
 
 
+#: adverbs of degree before a state word ("wide open", "very dirty", "completely empty", "soaking
+#: wet", "bone dry", "half open"): they grade the state and leave it the state it is
+DEGREE = frozenset({"very", "really", "quite", "rather", "so", "completely", "totally", "fully", "entirely",
+                    "wide", "half", "partly", "partially", "slightly", "somewhat", "extremely", "pretty",
+                    "super", "soaking", "sopping", "bone", "properly", "absolutely", "thoroughly"})
+
+
+def _graded(words: list[str], k: int) -> bool:
+    """Whether the word at `k` is an adverb of degree (`DEGREE`) whose run of degree words ends in
+    a state word other than a particle ("wide open", "really very dirty"; not "so on the shelf",
+    nor "pretty" before a noun): the state after it is read as if the adverb were not there."""
+    j = k
+    while j < len(words) and words[j] in DEGREE:
+        j += 1
+    return j > k and j < len(words) and words[j] in STATE_WORDS and words[j] not in PARTICLE_STATES
+
+
 def _stranded(words: list[str], k: int) -> bool:
     """Whether the particle at `k` (`STRANDED_STATES`) ends its clause, with no object after it:
     then it is the predicate of an elided "it is" ("Heater: if on, switch it off", "The lamp - if
@@ -1507,7 +1524,7 @@ class _Reader:
         skipped: list[str] = []
         while k < len(words) and len(skipped) < 8 and (words[k] in DESCRIPTIVE | PARTS | NEGATIONS
                                                        | {"but", "and", "that", "which"}
-                                                       or self._pp_at(words, k)):
+                                                       or self._pp_at(words, k) or _graded(words, k)):
             if self._pp_at(words, k):
                 k = self._pp_at(words, k)
                 continue
@@ -2464,9 +2481,12 @@ def _there_named(reader: _Reader, said: str, clauses: list[Clause], sentence: in
 
 
 #: the verb a placement is asked with ("is it on the floor now?", "should it be found lying on
-#: the floor"); a verb of seeing or living asks no place ("see that bottle on the bench?",
-#: "whether it could live somewhere else")
-_ASKED_BE = frozenset({"is", "are", "was", "were", "be", "been"})
+#: the floor"), a "be" or a verb of resting in its finite or bare form ("if it lies upon the
+#: floor", "if they still sit on the bench", "does it hang on the hook?": where a thing lies is
+#: where it is); a verb of seeing, living or belonging asks no place ("see that bottle on the
+#: bench?", "whether it could live somewhere else", "if it belongs on the shelf" is its home)
+_ASKED_BE = frozenset({"is", "are", "was", "were", "be", "been",
+                       "lies", "lie", "sits", "sit", "stands", "stand", "rests", "rest", "hangs", "hang"})
 
 
 def _asked_again(said: str, facts: list[Fact]) -> set[str]:
