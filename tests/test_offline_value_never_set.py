@@ -245,3 +245,95 @@ def test_a_state_graded_by_an_adverb_of_degree_is_asked(text: str, rooms: tuple[
 ])
 def test_a_degree_word_before_no_state_asks_no_state(text: str, rooms: tuple[str, ...]) -> None:
     assert not any(c.startswith("state(") for values in _factors(text, rooms).values() for c in values)
+
+
+# --- fourteenth session: a hedged "there" in a relative clause of place ---
+# Composed before the rule: 0 of 4 asked where the thing may be (a presence, a wrong thing or
+# nothing: the relative was no place to the reader); after, 4.
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # a poem's inverted verb, "where"
+    ("My bedroom has a bed, where there may lie a book or a phone. Put the book on the shelf and the phone on "
+     "the desk.", ("bedroom",), "on(book, bed)"),
+    # a plain note, "on which", "might"
+    ("There is a sofa, on which there might be a cushion. Put the cushion in the basket.", ("living_room",),
+     "on(sofa_pillow, sofa)"),
+    # a formal inventory, "in which", "could"
+    ("By the bed stands a chest of drawers, in which there could be a dirty sock; put it in the hamper.",
+     ("bedroom",), "inside(sock, dresser)"),
+    # an instruction, "where" after a checked place
+    ("Check the counter, where there may be a dirty mug; it goes in the sink.", ("kitchen",),
+     "on(mug, kitchen_counter)"),
+])
+def test_a_hedged_there_in_a_relative_of_place_asks_the_place(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"a bed, where there may lie a book": the things after the hedged "there" may be at the
+    holder, read as "On the bed there may lie a book" (`implied._WHERE_THERE`)."""
+    assert _asks(text, rooms, condition), _factors(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms", "unasked"), [
+    # a relative of place with no hedged "there": a statement of where things are
+    ("The counter, on which there is a kettle, needs wiping.", ("kitchen",), "on(kettle, kitchen_counter)"),
+    # "where" of a room, no "there"
+    ("The kitchen, where the kettle is, has a sink; fill the kettle there.", ("kitchen",), "on(kettle, sink)"),
+])
+def test_a_relative_of_place_without_a_hedge_asks_no_place(text: str, rooms: tuple[str, ...], unasked: str) -> None:
+    assert not _asks(text, rooms, unasked), _factors(text, rooms)
+
+
+# --- fourteenth session: a restrictive relative with "already" at a place ---
+# Composed before the rule: 0 of 3 asked (the relative's place was a stated placement or the goal
+# of the verb the thing is the object of); after, 3.
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # an Act's subsection, a bare plural, "which are already"
+    ("Wet shoes go on the drying rack. Dry shoes go on the shoe rack; dry shoes which are already on the shoe "
+     "rack are left where they are.", ("hallway",), "on(shoe, shoe_rack)"),
+    # a plain note, an indefinite, "that is already in"
+    ("Put the mug in the sink. A mug that is already in the sink stays there.", ("kitchen",), "inside(mug, sink)"),
+    # a terse rule, "leave any ... that is already"
+    ("Books go on the shelf; leave any book that is already on the shelf.", ("study",), "on(book, bookshelf)"),
+])
+def test_a_relative_with_already_asks_whether_the_thing_is_there(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"dry shoes which are already on the shoe rack are left where they are": the relative picks
+    out the things the instruction finds done, as "unless they are already on it" does
+    (`analysis._already_relative`), so whether they are there is asked."""
+    assert _asks(text, rooms, condition), _factors(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms", "settled"), [
+    # a plain statement with "already", no relative: a placement the text states
+    ("The mug is already in the sink, so wash it there.", ("kitchen",), "inside(mug, sink)"),
+    # a relative with a state, no "already" place
+    ("A mug that is dirty goes in the sink.", ("kitchen",), "inside(mug, sink)"),
+])
+def test_already_outside_a_relative_asks_no_place(text: str, rooms: tuple[str, ...], settled: str) -> None:
+    assert not _asks(text, rooms, settled), _factors(text, rooms)
+
+
+# --- fourteenth session: a container's contents said with "there is ... left" or "has ... in it" ---
+# Composed before the rule: 1 of 4 asked whether the container is full (the others asked whether
+# there was a carton or a bottle at all, or nothing); after, 4.
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # a passive rule, the liquid left with no container named: the liquid's own carton
+    ("The milk carton, if it is still on the table, goes back in the fridge when there is milk left and into "
+     "the recycling bin when it is empty.", ("kitchen",), "state(milk_carton, filled)"),
+    # a plain note, "left in the <container>"
+    ("If there's still juice left in the bottle, put it in the fridge; otherwise recycle it.", ("kitchen",),
+     "state(bottle, filled)"),
+    # "has ... in it"
+    ("If the milk carton still has milk in it, put it in the fridge.", ("kitchen",), "state(milk_carton, filled)"),
+    # a terse note, "no ... left in it"
+    ("Water jug: if there's no water left in it, fill it at the sink.", ("kitchen",), "state(bottle, filled)"),
+])
+def test_a_containers_contents_ask_whether_it_is_full(text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"when there is milk left", "if there's still juice left in the bottle", "if the carton still
+    has milk in it": what a container holds says it is full or empty (`analysis._contents`)."""
+    assert _asks(text, rooms, condition), _factors(text, rooms)
+
+
+def test_milk_left_said_after_another_container_is_the_cartons() -> None:
+    """"If there is milk left" after a kettle was spoken of asks of the milk's carton, not of the
+    kettle (`analysis._LEFT` reads "the milk is full")."""
+    found = _factors("Put the kettle on the stove. If there is milk left, add some to the tea.", ("kitchen",))
+    assert not any("kettle" in c for values in found.values() for c in values), found

@@ -313,12 +313,23 @@ PHRASAL_STATES = tuple((re.compile(rf"\b(?:{verbs}) (?:{particles})\b"), state) 
 ))
 
 
-#: what a container is filled with: "there is still wine in it", "if there's already water in it"
-#: say the bottle (the pot) is full, not that
-#: there is a wine bottle ("wine" also names the bottle); read as the state before the clause is
+#: what a container is filled with: "there is still wine in it" and "there's still juice left in
+#: the bottle" say the bottle is full, "there is milk left" (of the carton spoken of) and "the
+#: carton still has milk in it" that the carton is, not that there is a wine bottle or a milk
+#: carton ("wine", "milk" also name them); read as the state before the clause is (`_contents`)
 LIQUIDS = ("water", "wine", "milk", "juice", "coffee", "tea", "beer", "soup", "oil", "soda", "liquid", "drink")
-_CONTENTS = re.compile(rf"\bthere (?:is|are) (?:still |some |any |already |now |even )*(no |not any )?(?:{'|'.join(LIQUIDS)})"
-                       rf"(?: left)? (?:in|inside) (it|them)\b")
+_LIQUID = rf"(?:{'|'.join(LIQUIDS)})"
+#: the amount words between "there is" and the liquid ("there is still some milk")
+_AMOUNT = r"(?:still |some |any |already |now |even |a little |a bit of |a drop of )*"
+#: the container a "there is ... in" names: "it", "them" or a short definite noun phrase ending its clause
+_HELD_IN = r"(?P<np>it|them|(?:the|your|my|our|this|that) [a-z]+(?: [a-z]+)?(?=\s*(?:[,;:.!?)]|$)))"
+_CONTENTS = re.compile(rf"\bthere (?:is|are) {_AMOUNT}(?P<no>no |not any )?{_LIQUID}(?: left)? (?:in|inside) {_HELD_IN}")
+#: "when there is milk left" (no container named): the liquid's own container is full, as "the
+#: milk" names the carton ("if there is milk left" asks of the carton, not of the kettle spoken
+#: of before); "left" is needed, as "if there is milk" asks whether there is any milk at all
+_LEFT = re.compile(rf"\bthere (?:is|are) {_AMOUNT}(?P<no>no |not any )?(?P<liquid>{_LIQUID}) left\b(?! (?:in|inside|on|over)\b)")
+#: "the carton still has milk in it", "if the bottle has no juice left in it": its subject holds it
+_HAS_IN = re.compile(rf"\b(?P<has>has|have) {_AMOUNT}(?P<no>no |not any )?{_LIQUID}(?: left)? (?:in|inside) (?:it|them)\b")
 
 
 #: the auxiliaries that open a question or make its tag
@@ -340,8 +351,14 @@ def _unbiased(said: str) -> str:
 
 
 def _contents(said: str) -> str:
-    """"there is still wine in it" -> "it is full"; "there is no water left in it" -> "it is empty"."""
-    return _CONTENTS.sub(lambda m: f"{m.group(2)} is {'empty' if m.group(1) else 'full'}", said)
+    """"there is still wine in it" -> "it is full"; "there is no water left in the jug" -> "the
+    jug is empty"; "there is milk left" -> "the milk is full"; "it still has milk in it" -> "it is full"
+    (`_CONTENTS`, `_LEFT`, `_HAS_IN`)."""
+    def state(m: re.Match[str]) -> str:
+        return "empty" if m.group("no") else "full"
+    said = _CONTENTS.sub(lambda m: f"{m.group('np')} {'are' if m.group('np') == 'them' else 'is'} {state(m)}", said)
+    said = _LEFT.sub(lambda m: f"the {m.group('liquid')} is {state(m)}", said)
+    return _HAS_IN.sub(lambda m: f"{'are' if m.group('has') == 'have' else 'is'} {state(m)}", said)
 
 
 def _plural_only(word: str) -> bool:
@@ -2512,6 +2529,25 @@ def _asked_again(said: str, facts: list[Fact]) -> set[str]:
             and f.condition.startswith(("on(", "inside("))}
 
 
+#: a restrictive relative clause that says a thing is already at a place ("dry shoes which are
+#: already on the shoe rack are left where they are", "leave any book that is already on the
+#: shelf"): the class it picks out is those things the instruction finds done, as "unless they
+#: are already on it" says, so whether the thing is there is asked
+_ALREADY_RELATIVE = re.compile(r"\b(?:that|which|who)\s+(?:is|are)\s+(?:still\s+|now\s+)?already\s+"
+                               r"(?:on|in|inside|upon|at)\b")
+
+
+def _already_relative(said: str, facts: list[Fact]) -> list[Fact]:
+    """`facts` of `said` with the place a restrictive relative with "already" gives its thing
+    (`_ALREADY_RELATIVE`) read as where the thing is, not where it goes ("move dry shoes which
+    are already on the shoe rack": the rack is no goal of "move"), when the clause names one
+    place only; a placement said plainly ("the mug is already in the sink") is left as it is."""
+    if not _ALREADY_RELATIVE.search(" ".join(w for w, _, _ in tokens(expand(said)))) or len(
+            {f.key for f in facts if f.kind == "location"}) != 1:
+        return facts
+    return [replace(f, goal=False, modifier=True) if f.kind == "location" and not f.home else f for f in facts]
+
+
 #: the conjunctions "make sure" may follow ("... is lovely but do make sure it's off"); after a
 #: condition earlier in the sentence (`_IN_CONDITION`) it is part of that condition's instruction
 #: and asks nothing of its own
@@ -2717,10 +2753,16 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 facts = [replace(f, goal=False) for f in facts]
             if spread[0] == grammatical:
                 facts = list(_distributed(tuple(facts), spread[1]))
+            before_relative = facts
             if role == "condition" and text.strip() in found_in_text[si]:
                 # (a condition the writer wrote, not one `implied` spelled out: "Examine the mug on
                 # the coffee table" is "examine the mug if it is on the coffee table")
                 reader.doubted |= _asked_again(said, facts)
+            facts = _already_relative(said, facts)
+            if facts is not before_relative:
+                # (which no statement settles: `_settle_stated`)
+                reader.doubted |= {f.condition for f in facts if f.kind == "location" and not f.home
+                                   and f.condition.startswith(("on(", "inside("))}
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
         if bullets[si] is not None and si + 1 < len(sentences) and bullets[si + 1] == bullets[si]:
             continue  # "* Bedroom: table lamp on? -> off. Wardrobe doors open? -> close.": one item
