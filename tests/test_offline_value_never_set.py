@@ -337,3 +337,51 @@ def test_milk_left_said_after_another_container_is_the_cartons() -> None:
     kettle (`analysis._LEFT` reads "the milk is full")."""
     found = _factors("Put the kettle on the stove. If there is milk left, add some to the tea.", ("kitchen",))
     assert not any("kettle" in c for values in found.values() for c in values), found
+
+
+# --- fourteenth session: a verbless heading that asks a thing's place ---
+# Composed before the rule: 0 of 3 asked (the statement of place settled the factor: only a
+# condition with a verb counted as asking again); after, 3.
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # a chef's list, "=" between the case and its answer
+    ("The kettle sits on the counter. Kettle on the counter = switch it on. Kettle not on the counter: skip it.",
+     ("kitchen",), "on(kettle, kitchen_counter)"),
+    # a home, a question mark heading
+    ("The kettle lives on the counter. Kettle on the counter? Fill it. Kettle not on the counter: skip tea.",
+     ("kitchen",), "on(kettle, kitchen_counter)"),
+    # a past statement, "still"
+    ("The towel was left on the floor. Towel still on the floor? Hang it on the rail.", ("bathroom",),
+     "on(towel, floor)"),
+])
+def test_a_verbless_heading_of_place_is_not_settled_by_a_statement(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"Kettle on the counter = ...": a heading that asks where its thing is, its verb left out,
+    asks as "is the kettle on the counter?" does (`analysis._asked_again` of a heading
+    condition), so a statement of the place does not settle it."""
+    assert _asks(text, rooms, condition), _factors(text, rooms)
+
+
+# --- fourteenth session: an alternative answered a turn or a question later, then put back ---
+# Composed before the rule: 0 of 2 asked where the alternative is (the alternative had to be in
+# the condition's own sentence); after, 2.
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # a Q&A, "What if it is not? Then use ..."
+    ("If the mirror is dirty, clean it with the sponge if the sponge is on the shelf. What if it is not? Then use a "
+     "towel. Whichever you used goes back on the shelf.", ("bathroom",), "on(towel, wall_shelf)"),
+    # a dialogue with speaker labels between the turns
+    ("MUM: Wipe the desk with the cloth, if the cloth is in the drawer. ME: And if it isn't? MUM: Then with the "
+     "sponge. ME: And after? MUM: Whatever you used goes back in the drawer.", ("study",), "inside(sponge, drawer)"),
+])
+def test_an_alternative_answered_later_and_put_back_is_asked(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"With the sponge, if it is on the counter! - And if it is not? - Then with the dish cloth!
+    - Whichever was used goes back on the counter": the absence asked in a later sentence and
+    answered in the next is the alternative (`analysis._answered_absence`), asked where the
+    thing is not, as when it is said in one sentence."""
+    assert _asks(text, rooms, condition), _factors(text, rooms)
+
+
+def test_an_alternative_answered_later_but_not_put_back_is_not_asked() -> None:
+    text = ("If the mirror is dirty, clean it with the sponge if the sponge is on the shelf. What if it is not? "
+            "Then use a towel. Hang the towel on the rail after.")
+    assert not _asks(text, ("bathroom",), "on(towel, wall_shelf)"), _factors(text, ("bathroom",))

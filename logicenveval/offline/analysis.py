@@ -2506,7 +2506,23 @@ _ASKED_BE = frozenset({"is", "are", "was", "were", "be", "been",
                        "lies", "lie", "sits", "sit", "stands", "stand", "rests", "rest", "hangs", "hang"})
 
 
-def _asked_again(said: str, facts: list[Fact]) -> set[str]:
+#: what a verbless condition of place may hold besides its thing and its place ("Kettle not on the
+#: counter", "Towel still on the floor?")
+_VERBLESS_WORDS = ARTICLES | PLACE_PREPS | NEGATIONS | {"still", "now", "there"}
+
+
+def _verbless_place(toks: list[tuple[str, int, int]], lex: Lexicon) -> bool:
+    """Whether a condition is a thing and a place and nothing else ("Kettle on the counter = it
+    ends up switched on", "Towel still on the floor?"): a heading that asks where the thing is as
+    "is the kettle on the counter?" does, its verb left out."""
+    found = [m for m in lex.find_mentions(toks) if m.kind in ("role", "floor")]
+    covered = {k for m in found for k in range(m.start, m.end)}
+    words = [w for w, _, _ in toks]
+    return len(found) >= 2 and all(k in covered or w in _VERBLESS_WORDS or not w.isalnum()
+                                   for k, w in enumerate(words))
+
+
+def _asked_again(said: str, facts: list[Fact], lex: Lexicon) -> set[str]:
     """The placements a condition asks of the situation: "Ned left his exercise book on the
     floor. ... Is it on the floor now? Then pick it up", "A counter with a plate upon it ...
     And if there is no plate on the counter at all?", "Should it be found lying on the floor
@@ -2521,8 +2537,10 @@ def _asked_again(said: str, facts: list[Fact]) -> set[str]:
     the spare roll (we keep spares in the vanity cabinet), put it ...") asks no place; a room is
     where the scene is set ("even when, as in your house, the nearest sink is in the kitchen next
     door" asks nothing)."""
-    words = {w for w, _, _ in tokens(expand(said))}
-    if "already" in words or not words & _ASKED_BE or len({f.subject for f in facts}) != 1 or any(
+    toks = tokens(expand(said))
+    words = {w for w, _, _ in toks}
+    if "already" in words or not (words & _ASKED_BE or _verbless_place(toks, lex)) or len(
+            {f.subject for f in facts}) != 1 or any(
             f.kind not in ("location", "exists") for f in facts):
         return set()
     return {f.condition for f in facts if f.kind == "location" and not (f.goal or f.home)
@@ -2645,6 +2663,10 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                     facts = [replace(f, modifier=False) for f in facts]  # a heading drops its articles
                 headed = grammatical if role == "condition" else headed
                 named = grammatical if names else named
+                if role == "condition":
+                    # "Kettle on the counter = ...", "Kettle not on the counter: skip it": a
+                    # heading that asks where its thing is, its verb left out, as "is it ...?" does
+                    reader.doubted |= _asked_again(text, facts, lex)
                 clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
                 continue
             if role in ("statement", "scene") and headed == grammatical:
@@ -2757,7 +2779,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             if role == "condition" and text.strip() in found_in_text[si]:
                 # (a condition the writer wrote, not one `implied` spelled out: "Examine the mug on
                 # the coffee table" is "examine the mug if it is on the coffee table")
-                reader.doubted |= _asked_again(said, facts)
+                reader.doubted |= _asked_again(said, facts, reader.lex)
             facts = _already_relative(said, facts)
             if facts is not before_relative:
                 # (which no statement settles: `_settle_stated`)
@@ -3088,6 +3110,29 @@ def _consistent(context: list[tuple[str, frozenset[str]]]) -> list[tuple[str, fr
 _EITHER_USED = re.compile(r"\b(?:whichever|whatever|either one|either of them)\b.*\bback\b")
 
 
+#: the sentences after a condition within which its absence may be asked and answered ("With the
+#: sponge, if the sponge is on the counter! - And if it is not? - Then with the dish cloth!")
+_ABSENCE_REACH = 4
+
+
+def _answered_absence(clauses: list[Clause], ci: int, condition: str) -> int | None:
+    """The clause that answers a later condition of the absence of `condition` in its own
+    sentence ("And if it is not?" then "Then with the dish cloth!", a dialogue's turns or a Q&A):
+    the first clause after that condition, in the sentences that follow it, that names a thing,
+    whatever speaker labels come between; None when no such condition follows."""
+    sentence = clauses[ci].sentence
+    for j in range(ci + 1, len(clauses)):
+        cl = clauses[j]
+        if cl.sentence > sentence + _ABSENCE_REACH:
+            return None
+        if cl.sentence > sentence and cl.role == "condition" and any(
+                x.negated and x.condition == condition for x in cl.facts):
+            return next((k for k in range(j + 1, len(clauses)) if clauses[k].sentence > cl.sentence
+                         and clauses[k].sentence <= cl.sentence + 2 and clauses[k].mentions
+                         and clauses[k].role in ("statement", "consequence")), None)
+    return None
+
+
 def _alternatives_put_back(factors: list[Factor], clauses: list[Clause]) -> list[Factor]:
     """An alternative used when a thing is not at a place, later put back there with the thing
     ("wipe it with the sponge if the sponge is on the counter; otherwise use the cloth. Put
@@ -3108,11 +3153,14 @@ def _alternatives_put_back(factors: list[Factor], clauses: list[Clause]) -> list
             alternative = next((j for j in rest if clauses[j].role == "else" or (
                 clauses[j].role == "consequence" and clauses[j - 1].role == "condition" and any(
                     x.negated and x.condition == f.values["yes"] for x in clauses[j - 1].facts))), None)
+            if alternative is None:
+                alternative = _answered_absence(clauses, ci, f.values["yes"])
+            end = sentence if alternative is None else clauses[alternative].sentence
             # the next two sentences, each read whole ("whichever u used -> back on counter": cut
             # at the arrow)
             later: dict[int, tuple[str, set[str]]] = {}
             for cl in clauses[ci + 1:]:
-                if sentence < cl.sentence <= sentence + 2 or cl.sentence == sentence:
+                if sentence < cl.sentence <= end + 2 or cl.sentence == sentence:
                     text, mentions = later.get(cl.sentence, ("", set()))
                     later[cl.sentence] = (f"{text} {cl.text.lower()}", mentions | set(cl.mentions))
             back = any(_EITHER_USED.search(text) and holder in mentions for text, mentions in later.values())
