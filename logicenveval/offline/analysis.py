@@ -750,9 +750,6 @@ class _Reader:
         quantifier opens (`any drawer that is open`, `each cup`, `both drawers`, `all the
         drawers`: `_quantified`), or written in the plural ("if the mugs are dirty" with a blue
         and a red mug), means every candidate."""
-        shortened = self._shortened(m, words)
-        if shortened is not None:
-            return shortened
         if m.kind != "role" or len(m.roles) < 2 or _quantified(words, m.start) or m.end - 1 in self.plural_at:
             return m
         # "the drying rack ... the utility shelf ... left on the rack": a word of a thing's own
@@ -760,23 +757,6 @@ class _Reader:
         own = [r for r in m.roles if self._own_name(r, words[m.end - 1])]
         known = [r for r in self.recent if r in (own if 0 < len(own) < len(m.roles) else m.roles)]
         return Mention((known[-1],), m.start, m.end, m.kind) if known else m
-
-    def _shortened(self, m: Mention, words: list[str]) -> Mention | None:
-        """"bring the plant the watering can - if you find the can empty, fill it": a bare head
-        noun said of one thing ("the can") names the thing spoken of last whose compound name ends
-        in it (the watering can), when that was spoken of after every thing the word names by
-        itself (a food can named earlier, "the old biscuit tin"): a speaker shortens the name just
-        used. None when the word names its own thing more recently, or is no bare singular."""
-        if m.kind != "role" or m.end - m.start != 1 or _quantified(words, m.start) or m.end - 1 in self.plural_at:
-            return None
-        head = singular(words[m.start])
-        for r in reversed(self.recent):
-            if r in m.roles:
-                return None
-            names = {r, str(self.lex.roles.get(r, {}).get("category") or "")}
-            if any("_" in n and n.rsplit("_", 1)[1] == head for n in names):
-                return Mention((r,), m.start, m.end, m.kind)
-        return None
 
     def _own_name(self, role: str, word: str) -> bool:
         """Whether `word` (a noun of a mention) is a word of the role's name or of its kind's."""
@@ -2542,7 +2522,7 @@ def _verbless_place(toks: list[tuple[str, int, int]], lex: Lexicon) -> bool:
                                    for k, w in enumerate(words))
 
 
-def _asked_again(said: str, facts: list[Fact], lex: Lexicon) -> set[str]:
+def _asked_again(said: str, facts: list[Fact], lex: Lexicon | None = None) -> set[str]:
     """The placements a condition asks of the situation: "Ned left his exercise book on the
     floor. ... Is it on the floor now? Then pick it up", "A counter with a plate upon it ...
     And if there is no plate on the counter at all?", "Should it be found lying on the floor
@@ -2551,7 +2531,8 @@ def _asked_again(said: str, facts: list[Fact], lex: Lexicon) -> set[str]:
     aside) said of it; so the statement does not settle the factor (`_settle_stated`). Not a
     goal, a home, nor "already" (`_already`: "put it on the shelf unless it's already there"
     asks whether the instruction is done, which a statement of where it is does answer). Only a
-    condition that asks only where one thing is (or whether it is there at all), with a verb "be",
+    condition that asks only where one thing is (or whether it is there at all), with a verb "be"
+    or of resting, or none at all in a heading (`_verbless_place`, given the lexicon `lex`),
     and only of a thing on or in a holder: in "if the mug on the coffee table is dirty" the place
     names the mug and the state is asked; a clause read with an instruction and an aside ("take
     the spare roll (we keep spares in the vanity cabinet), put it ...") asks no place; a room is
@@ -2559,7 +2540,7 @@ def _asked_again(said: str, facts: list[Fact], lex: Lexicon) -> set[str]:
     door" asks nothing)."""
     toks = tokens(expand(said))
     words = {w for w, _, _ in toks}
-    if "already" in words or not (words & _ASKED_BE or _verbless_place(toks, lex)) or len(
+    if "already" in words or not (words & _ASKED_BE or lex is not None and _verbless_place(toks, lex)) or len(
             {f.subject for f in facts}) != 1 or any(
             f.kind not in ("location", "exists") for f in facts):
         return set()
