@@ -313,12 +313,23 @@ PHRASAL_STATES = tuple((re.compile(rf"\b(?:{verbs}) (?:{particles})\b"), state) 
 ))
 
 
-#: what a container is filled with: "there is still wine in it", "if there's already water in it"
-#: say the bottle (the pot) is full, not that
-#: there is a wine bottle ("wine" also names the bottle); read as the state before the clause is
+#: what a container is filled with: "there is still wine in it" and "there's still juice left in
+#: the bottle" say the bottle is full, "there is milk left" (of the carton spoken of) and "the
+#: carton still has milk in it" that the carton is, not that there is a wine bottle or a milk
+#: carton ("wine", "milk" also name them); read as the state before the clause is (`_contents`)
 LIQUIDS = ("water", "wine", "milk", "juice", "coffee", "tea", "beer", "soup", "oil", "soda", "liquid", "drink")
-_CONTENTS = re.compile(rf"\bthere (?:is|are) (?:still |some |any |already |now |even )*(no |not any )?(?:{'|'.join(LIQUIDS)})"
-                       rf"(?: left)? (?:in|inside) (it|them)\b")
+_LIQUID = rf"(?:{'|'.join(LIQUIDS)})"
+#: the amount words between "there is" and the liquid ("there is still some milk")
+_AMOUNT = r"(?:still |some |any |already |now |even |a little |a bit of |a drop of )*"
+#: the container a "there is ... in" names: "it", "them" or a short definite noun phrase ending its clause
+_HELD_IN = r"(?P<np>it|them|(?:the|your|my|our|this|that) [a-z]+(?: [a-z]+)?(?=\s*(?:[,;:.!?)]|$)))"
+_CONTENTS = re.compile(rf"\bthere (?:is|are) {_AMOUNT}(?P<no>no |not any )?{_LIQUID}(?: left)? (?:in|inside) {_HELD_IN}")
+#: "when there is milk left" (no container named): the liquid's own container is full, as "the
+#: milk" names the carton ("if there is milk left" asks of the carton, not of the kettle spoken
+#: of before); "left" is needed, as "if there is milk" asks whether there is any milk at all
+_LEFT = re.compile(rf"\bthere (?:is|are) {_AMOUNT}(?P<no>no |not any )?(?P<liquid>{_LIQUID}) left\b(?! (?:in|inside|on|over)\b)")
+#: "the carton still has milk in it", "if the bottle has no juice left in it": its subject holds it
+_HAS_IN = re.compile(rf"\b(?P<has>has|have) {_AMOUNT}(?P<no>no |not any )?{_LIQUID}(?: left)? (?:in|inside) (?:it|them)\b")
 
 
 #: the auxiliaries that open a question or make its tag
@@ -340,8 +351,14 @@ def _unbiased(said: str) -> str:
 
 
 def _contents(said: str) -> str:
-    """"there is still wine in it" -> "it is full"; "there is no water left in it" -> "it is empty"."""
-    return _CONTENTS.sub(lambda m: f"{m.group(2)} is {'empty' if m.group(1) else 'full'}", said)
+    """"there is still wine in it" -> "it is full"; "there is no water left in the jug" -> "the
+    jug is empty"; "there is milk left" -> "the milk is full"; "it still has milk in it" -> "it is full"
+    (`_CONTENTS`, `_LEFT`, `_HAS_IN`)."""
+    def state(m: re.Match[str]) -> str:
+        return "empty" if m.group("no") else "full"
+    said = _CONTENTS.sub(lambda m: f"{m.group('np')} {'are' if m.group('np') == 'them' else 'is'} {state(m)}", said)
+    said = _LEFT.sub(lambda m: f"the {m.group('liquid')} is {state(m)}", said)
+    return _HAS_IN.sub(lambda m: f"{'are' if m.group('has') == 'have' else 'is'} {state(m)}", said)
 
 
 def _plural_only(word: str) -> bool:
@@ -640,6 +657,23 @@ def _bare_place(words: list[str], found: list[Mention]) -> bool:
 #: (`_stranded`); a stranded "out" stays a place ("the mug. If out, put it away": left out)
 PARTICLE_STATES = frozenset({"on", "off", "out"})
 STRANDED_STATES = frozenset({"on", "off"})
+
+
+#: adverbs of degree before a state word ("wide open", "very dirty", "completely empty", "soaking
+#: wet", "bone dry", "half open"): they grade the state and leave it the state it is
+DEGREE = frozenset({"very", "really", "quite", "rather", "so", "completely", "totally", "fully", "entirely",
+                    "wide", "half", "partly", "partially", "slightly", "somewhat", "extremely", "pretty",
+                    "super", "soaking", "sopping", "bone", "properly", "absolutely", "thoroughly"})
+
+
+def _graded(words: list[str], k: int) -> bool:
+    """Whether the word at `k` is an adverb of degree (`DEGREE`) whose run of degree words ends in
+    a state word other than a particle ("wide open", "really very dirty"; not "so on the shelf",
+    nor "pretty" before a noun): the state after it is read as if the adverb were not there."""
+    j = k
+    while j < len(words) and words[j] in DEGREE:
+        j += 1
+    return j > k and j < len(words) and words[j] in STATE_WORDS and words[j] not in PARTICLE_STATES
 
 
 def _stranded(words: list[str], k: int) -> bool:
@@ -1507,7 +1541,7 @@ class _Reader:
         skipped: list[str] = []
         while k < len(words) and len(skipped) < 8 and (words[k] in DESCRIPTIVE | PARTS | NEGATIONS
                                                        | {"but", "and", "that", "which"}
-                                                       or self._pp_at(words, k)):
+                                                       or self._pp_at(words, k) or _graded(words, k)):
             if self._pp_at(words, k):
                 k = self._pp_at(words, k)
                 continue
@@ -2464,12 +2498,31 @@ def _there_named(reader: _Reader, said: str, clauses: list[Clause], sentence: in
 
 
 #: the verb a placement is asked with ("is it on the floor now?", "should it be found lying on
-#: the floor"); a verb of seeing or living asks no place ("see that bottle on the bench?",
-#: "whether it could live somewhere else")
-_ASKED_BE = frozenset({"is", "are", "was", "were", "be", "been"})
+#: the floor"), a "be" or a verb of resting in its finite or bare form ("if it lies upon the
+#: floor", "if they still sit on the bench", "does it hang on the hook?": where a thing lies is
+#: where it is); a verb of seeing, living or belonging asks no place ("see that bottle on the
+#: bench?", "whether it could live somewhere else", "if it belongs on the shelf" is its home)
+_ASKED_BE = frozenset({"is", "are", "was", "were", "be", "been",
+                       "lies", "lie", "sits", "sit", "stands", "stand", "rests", "rest", "hangs", "hang"})
 
 
-def _asked_again(said: str, facts: list[Fact]) -> set[str]:
+#: what a verbless condition of place may hold besides its thing and its place ("Kettle not on the
+#: counter", "Towel still on the floor?")
+_VERBLESS_WORDS = ARTICLES | PLACE_PREPS | NEGATIONS | {"still", "now", "there"}
+
+
+def _verbless_place(toks: list[tuple[str, int, int]], lex: Lexicon) -> bool:
+    """Whether a condition is a thing and a place and nothing else ("Kettle on the counter = it
+    ends up switched on", "Towel still on the floor?"): a heading that asks where the thing is as
+    "is the kettle on the counter?" does, its verb left out."""
+    found = [m for m in lex.find_mentions(toks) if m.kind in ("role", "floor")]
+    covered = {k for m in found for k in range(m.start, m.end)}
+    words = [w for w, _, _ in toks]
+    return len(found) >= 2 and all(k in covered or w in _VERBLESS_WORDS or not w.isalnum()
+                                   for k, w in enumerate(words))
+
+
+def _asked_again(said: str, facts: list[Fact], lex: Lexicon | None = None) -> set[str]:
     """The placements a condition asks of the situation: "Ned left his exercise book on the
     floor. ... Is it on the floor now? Then pick it up", "A counter with a plate upon it ...
     And if there is no plate on the counter at all?", "Should it be found lying on the floor
@@ -2478,18 +2531,40 @@ def _asked_again(said: str, facts: list[Fact]) -> set[str]:
     aside) said of it; so the statement does not settle the factor (`_settle_stated`). Not a
     goal, a home, nor "already" (`_already`: "put it on the shelf unless it's already there"
     asks whether the instruction is done, which a statement of where it is does answer). Only a
-    condition that asks only where one thing is (or whether it is there at all), with a verb "be",
+    condition that asks only where one thing is (or whether it is there at all), with a verb "be"
+    or of resting, or none at all in a heading (`_verbless_place`, given the lexicon `lex`),
     and only of a thing on or in a holder: in "if the mug on the coffee table is dirty" the place
     names the mug and the state is asked; a clause read with an instruction and an aside ("take
     the spare roll (we keep spares in the vanity cabinet), put it ...") asks no place; a room is
     where the scene is set ("even when, as in your house, the nearest sink is in the kitchen next
     door" asks nothing)."""
-    words = {w for w, _, _ in tokens(expand(said))}
-    if "already" in words or not words & _ASKED_BE or len({f.subject for f in facts}) != 1 or any(
+    toks = tokens(expand(said))
+    words = {w for w, _, _ in toks}
+    if "already" in words or not (words & _ASKED_BE or lex is not None and _verbless_place(toks, lex)) or len(
+            {f.subject for f in facts}) != 1 or any(
             f.kind not in ("location", "exists") for f in facts):
         return set()
     return {f.condition for f in facts if f.kind == "location" and not (f.goal or f.home)
             and f.condition.startswith(("on(", "inside("))}
+
+
+#: a restrictive relative clause that says a thing is already at a place ("dry shoes which are
+#: already on the shoe rack are left where they are", "leave any book that is already on the
+#: shelf"): the class it picks out is those things the instruction finds done, as "unless they
+#: are already on it" says, so whether the thing is there is asked
+_ALREADY_RELATIVE = re.compile(r"\b(?:that|which|who)\s+(?:is|are)\s+(?:still\s+|now\s+)?already\s+"
+                               r"(?:on|in|inside|upon|at)\b")
+
+
+def _already_relative(said: str, facts: list[Fact]) -> list[Fact]:
+    """`facts` of `said` with the place a restrictive relative with "already" gives its thing
+    (`_ALREADY_RELATIVE`) read as where the thing is, not where it goes ("move dry shoes which
+    are already on the shoe rack": the rack is no goal of "move"), when the clause names one
+    place only; a placement said plainly ("the mug is already in the sink") is left as it is."""
+    if not _ALREADY_RELATIVE.search(" ".join(w for w, _, _ in tokens(expand(said)))) or len(
+            {f.key for f in facts if f.kind == "location"}) != 1:
+        return facts
+    return [replace(f, goal=False, modifier=True) if f.kind == "location" and not f.home else f for f in facts]
 
 
 #: the conjunctions "make sure" may follow ("... is lovely but do make sure it's off"); after a
@@ -2589,6 +2664,10 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                     facts = [replace(f, modifier=False) for f in facts]  # a heading drops its articles
                 headed = grammatical if role == "condition" else headed
                 named = grammatical if names else named
+                if role == "condition":
+                    # "Kettle on the counter = ...", "Kettle not on the counter: skip it": a
+                    # heading that asks where its thing is, its verb left out, as "is it ...?" does
+                    reader.doubted |= _asked_again(text, facts, lex)
                 clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
                 continue
             if role in ("statement", "scene") and headed == grammatical:
@@ -2697,10 +2776,16 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 facts = [replace(f, goal=False) for f in facts]
             if spread[0] == grammatical:
                 facts = list(_distributed(tuple(facts), spread[1]))
+            before_relative = facts
             if role == "condition" and text.strip() in found_in_text[si]:
                 # (a condition the writer wrote, not one `implied` spelled out: "Examine the mug on
                 # the coffee table" is "examine the mug if it is on the coffee table")
-                reader.doubted |= _asked_again(said, facts)
+                reader.doubted |= _asked_again(said, facts, reader.lex)
+            facts = _already_relative(said, facts)
+            if facts is not before_relative:
+                # (which no statement settles: `_settle_stated`)
+                reader.doubted |= {f.condition for f in facts if f.kind == "location" and not f.home
+                                   and f.condition.startswith(("on(", "inside("))}
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
         if bullets[si] is not None and si + 1 < len(sentences) and bullets[si + 1] == bullets[si]:
             continue  # "* Bedroom: table lamp on? -> off. Wardrobe doors open? -> close.": one item
@@ -3026,6 +3111,29 @@ def _consistent(context: list[tuple[str, frozenset[str]]]) -> list[tuple[str, fr
 _EITHER_USED = re.compile(r"\b(?:whichever|whatever|either one|either of them)\b.*\bback\b")
 
 
+#: the sentences after a condition within which its absence may be asked and answered ("With the
+#: sponge, if the sponge is on the counter! - And if it is not? - Then with the dish cloth!")
+_ABSENCE_REACH = 4
+
+
+def _answered_absence(clauses: list[Clause], ci: int, condition: str) -> int | None:
+    """The clause that answers a later condition of the absence of `condition` in its own
+    sentence ("And if it is not?" then "Then with the dish cloth!", a dialogue's turns or a Q&A):
+    the first clause after that condition, in the sentences that follow it, that names a thing,
+    whatever speaker labels come between; None when no such condition follows."""
+    sentence = clauses[ci].sentence
+    for j in range(ci + 1, len(clauses)):
+        cl = clauses[j]
+        if cl.sentence > sentence + _ABSENCE_REACH:
+            return None
+        if cl.sentence > sentence and cl.role == "condition" and any(
+                x.negated and x.condition == condition for x in cl.facts):
+            return next((k for k in range(j + 1, len(clauses)) if clauses[k].sentence > cl.sentence
+                         and clauses[k].sentence <= cl.sentence + 2 and clauses[k].mentions
+                         and clauses[k].role in ("statement", "consequence")), None)
+    return None
+
+
 def _alternatives_put_back(factors: list[Factor], clauses: list[Clause]) -> list[Factor]:
     """An alternative used when a thing is not at a place, later put back there with the thing
     ("wipe it with the sponge if the sponge is on the counter; otherwise use the cloth. Put
@@ -3046,11 +3154,14 @@ def _alternatives_put_back(factors: list[Factor], clauses: list[Clause]) -> list
             alternative = next((j for j in rest if clauses[j].role == "else" or (
                 clauses[j].role == "consequence" and clauses[j - 1].role == "condition" and any(
                     x.negated and x.condition == f.values["yes"] for x in clauses[j - 1].facts))), None)
+            if alternative is None:
+                alternative = _answered_absence(clauses, ci, f.values["yes"])
+            end = sentence if alternative is None else clauses[alternative].sentence
             # the next two sentences, each read whole ("whichever u used -> back on counter": cut
             # at the arrow)
             later: dict[int, tuple[str, set[str]]] = {}
             for cl in clauses[ci + 1:]:
-                if sentence < cl.sentence <= sentence + 2 or cl.sentence == sentence:
+                if sentence < cl.sentence <= end + 2 or cl.sentence == sentence:
                     text, mentions = later.get(cl.sentence, ("", set()))
                     later[cl.sentence] = (f"{text} {cl.text.lower()}", mentions | set(cl.mentions))
             back = any(_EITHER_USED.search(text) and holder in mentions for text, mentions in later.values())

@@ -127,6 +127,26 @@ _COLOUR_NOUN = re.compile(
     r"|\s*(?:->|\u2192|:))", re.I | re.M)
 
 
+#: a holder and a relative clause of place whose subject is a hedged "there" ("a bed, where there
+#: may lie a book", "a console table, on which there might be a set of keys", "a drawer, in which
+#: there could be a sock"): the things after it may be at the holder, as after "On the bed there
+#: may lie"; read so, the relative's preposition kept ("where" as "on": a place one finds things at)
+_WHERE_THERE = re.compile(
+    r"\b(?P<np>(?:a|an|the|my|your|our|his|her|their)\s+[a-z][a-z-]*(?:\s+[a-z][a-z-]*){0,2}?)\s*,?\s+"
+    r"(?P<rel>where|(?P<prep>on|upon|in|inside|on\s+top\s+of)\s+which)\s+there\s+"
+    r"(?=(?:(?:often|sometimes|also|still|well|perhaps|possibly|probably)\s+)*"
+    r"(?:may|might|could|can|will|would)\s+(?:(?:also|still|well|even)\s+)*(?:be|lie|sit|stand|rest|hang)\b)",
+    re.I)
+#: the preposition each relative is read with
+_WHERE_PREPS = {"where": "on", "on": "on", "upon": "on", "on top of": "on", "in": "in", "inside": "in"}
+
+
+def _where_there(m: re.Match[str]) -> str:
+    noun = m.group("np").split(None, 1)[1]
+    prep = _WHERE_PREPS[" ".join((m.group("prep") or "where").lower().split())]
+    return f"{m.group('np')}; {prep} the {noun} there "
+
+
 def _any_found(m: re.Match[str]) -> str:
     cue = "If" if m.group("any")[0].isupper() else "if"
     return f"{cue} {m.group('who')} {m.group('verb')} any there, they {m.group('go')}"
@@ -154,13 +174,14 @@ def _cases(sentence: str) -> str:
 def implied(sentence: str) -> str:
     """`sentence` with the conditions its grammar implies spelled out as conditionals: an
     instruction that holds "if need be" (`_IF_NEED_BE`), an obligation to a state (`_OBLIGED`)
-    "any you find there go ..." (`_ANY_FOUND`), "whichever X is Y, ..." (`_WHICHEVER`) and "check
+    "any you find there go ..." (`_ANY_FOUND`), "a bed, where there may lie ..." (`_WHERE_THERE`), "whichever X is Y, ..." (`_WHICHEVER`) and "check
     the X on the Y" (`_CHECK_AT`); "down there" as "there"
     (`_DIRECTED_THERE`), a spaced "=" as an arrow (`_EQUALS`), a dash opening a line as a bullet
     (`_DASH_BULLET`), "a" before a case "<adjective> one ->" (`_cases`); any other sentence as it is ("on top of" is "on" for every reader:
     `sentences.expand`)."""
     said = _cases(_EQUALS.sub(" -> ", _DASH_BULLET.sub(r"\1-", sentence)))
     said = _ANY_FOUND.sub(_any_found, _DIRECTED_THERE.sub("", said))
+    said = _WHERE_THERE.sub(_where_there, said)
     said = _COLOUR_NOUN.sub(lambda m: f"{m.group('lead')}{COLOUR_NOUNS[m.group('noun').lower()]} ones", said)
     said = _CHECK_AT.sub(lambda m: f"{m.group('verb')} {m.group('thing')} if it is {m.group('prep')} "
                                    f"{m.group('place')}", said)
