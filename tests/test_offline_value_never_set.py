@@ -386,3 +386,27 @@ def test_an_alternative_answered_later_but_not_put_back_is_not_asked() -> None:
             "Then use a towel. Hang the towel on the rail after.")
     assert not _asks(text, ("bathroom",), "on(towel, wall_shelf)"), _factors(text, ("bathroom",))
 
+
+# --- fourteenth session: a bare head noun shortens the compound name just used ---
+# Composed before the rule: 0 of 2 (the bare "can" named the food can of an earlier "tin", its
+# own alias); after, 2.
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # a letter, the food can named from "the old biscuit tin" first
+    ("I'm sealing this in the old biscuit tin. If the plant is dry, bring it the watering can - if you find the "
+     "can empty, fill it at the sink first.", ("study",), "state(watering_can, filled)"),
+    # a note, a tin of beans before
+    ("There's a tin of beans in the cupboard. Take the watering can to the balcony; if the can is empty, fill it "
+     "at the sink.", ("kitchen",), "state(watering_can, filled)"),
+])
+def test_a_bare_head_noun_names_the_compound_just_spoken_of(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"bring the watering can - if you find the can empty": a bare head noun names the thing
+    spoken of last whose compound name ends in it, when that was spoken of after every thing the
+    word names by itself (`analysis._Reader._shortened`)."""
+    assert _asks(text, rooms, condition), _factors(text, rooms)
+
+
+def test_a_head_noun_keeps_its_own_thing_named_more_recently() -> None:
+    """"the food can" spoken of after the watering can: "the can" is the food can."""
+    text = "Take the watering can to the plant. The food can goes in the bin; if the can is empty, recycle it."
+    assert _asks(text, ("kitchen",), "state(food_can, filled)"), _factors(text, ("kitchen",))

@@ -750,6 +750,9 @@ class _Reader:
         quantifier opens (`any drawer that is open`, `each cup`, `both drawers`, `all the
         drawers`: `_quantified`), or written in the plural ("if the mugs are dirty" with a blue
         and a red mug), means every candidate."""
+        shortened = self._shortened(m, words)
+        if shortened is not None:
+            return shortened
         if m.kind != "role" or len(m.roles) < 2 or _quantified(words, m.start) or m.end - 1 in self.plural_at:
             return m
         # "the drying rack ... the utility shelf ... left on the rack": a word of a thing's own
@@ -757,6 +760,23 @@ class _Reader:
         own = [r for r in m.roles if self._own_name(r, words[m.end - 1])]
         known = [r for r in self.recent if r in (own if 0 < len(own) < len(m.roles) else m.roles)]
         return Mention((known[-1],), m.start, m.end, m.kind) if known else m
+
+    def _shortened(self, m: Mention, words: list[str]) -> Mention | None:
+        """"bring the plant the watering can - if you find the can empty, fill it": a bare head
+        noun said of one thing ("the can") names the thing spoken of last whose compound name ends
+        in it (the watering can), when that was spoken of after every thing the word names by
+        itself (a food can named earlier, "the old biscuit tin"): a speaker shortens the name just
+        used. None when the word names its own thing more recently, or is no bare singular."""
+        if m.kind != "role" or m.end - m.start != 1 or _quantified(words, m.start) or m.end - 1 in self.plural_at:
+            return None
+        head = singular(words[m.start])
+        for r in reversed(self.recent):
+            if r in m.roles:
+                return None
+            names = {r, str(self.lex.roles.get(r, {}).get("category") or "")}
+            if any("_" in n and n.rsplit("_", 1)[1] == head for n in names):
+                return Mention((r,), m.start, m.end, m.kind)
+        return None
 
     def _own_name(self, role: str, word: str) -> bool:
         """Whether `word` (a noun of a mention) is a word of the role's name or of its kind's."""
