@@ -134,6 +134,9 @@ OPENING_PARTS = frozenset({"drawer", "door"})
 #: pronouns that may then mean them (`_Reader.mentions`)
 PERSONIFIED = frozenset({"doll", "teddy_bear"})
 PERSON_PRONOUNS = frozenset({"she", "he", "her", "him"})
+#: the personal pronouns that refer to one particular thing or group already named ("it", "them";
+#: not "one", "ones", which stand for any thing of a kind): a placement said of one is stated
+DEFINITE_REFERENCE = frozenset({"it", "they", "them"}) | PERSON_PRONOUNS
 #: verbs that say where a thing belongs ("it is kept in the vanity", "the remote lives on the
 #: stand"): said of a definite object they are still askable (see `Fact.definite`)
 HOMES = frozenset({"kept", "lives", "live",
@@ -331,6 +334,11 @@ _QUESTION_TAG = re.compile(rf",\s*{_AUX}(?: not)? (?:it|they|he|she|there|you|we
 #: polarity word ("isn't there any milk?", "hasn't it been washed yet?") keeps the negation
 _NEGATIVE_QUESTION = re.compile(rf"^(\W*{_AUX}) not\b(?=(?:(?!\b(?:any|anything|anyone|anybody|anywhere|ever|yet)\b)"
                                 rf"[^?])*\?\s*$)")
+
+
+#: a tag after a statement, wherever it ends (before a vocative, a full stop or a question mark:
+#: "there's one on the floor, isn't there, Maureen.", "it lives on the hook, doesn't it?")
+_TAG = re.compile(rf",\s*{_AUX}(?: not)? (?:it|they|he|she|there|you|we|i)(?: not)?\s*(?=[,.?!]|$)", re.M)
 
 
 def _unbiased(said: str) -> str:
@@ -1438,11 +1446,17 @@ class _Reader:
             and not set(skipped) & MOTION
         goal = goal and not situated
         article = determiner(words, m.start)
+        # "My jacket. I left it on the sofa.", "The tea towel. It is on the counter": a personal
+        # pronoun is the particular thing it points back to, as definite as a name with "the" or
+        # "my" (`DEFINITE_REFERENCE`); a participle of situation after it ("finding it lying on
+        # the floor", "wherever they lie") still describes how the thing may be found
+        particular = m.kind == "pronoun" and words[m.start] in DEFINITE_REFERENCE \
+            and not set(skipped) & SITUATION_PARTICIPLES - HOMES
         # where a thing is kept or lives is a norm `_settle_stated` weighs against the rest of
         # the text
-        definite = article in DEFINITE and not set(skipped) & HOMES
+        definite = (article in DEFINITE or particular) and not set(skipped) & HOMES
         described = bool(set(skipped) & SITUATION_PARTICIPLES) or (
-            not skipped and (article in INDEFINITE or article not in ARTICLES)) or (
+            not skipped and not particular and (article in INDEFINITE or article not in ARTICLES)) or (
             skipped[:1] in (["that"], ["which"]) and article in INDEFINITE)  # "any toy that is on the floor"
         modifier = not goal and described
         subjects = self._subjects(words, mentions, idx)
@@ -1823,6 +1837,34 @@ def _place_before(clauses: list[Clause], sentence: int, names: tuple[str, ...]) 
     there at all."""
     return any(f.kind == "location" and f.subject in names for cl in clauses if cl.sentence >= sentence - 1
                for f in cl.facts)
+
+
+def _there_before(clauses: list[Clause], sentence: int, names: tuple[str, ...],
+                  words: list[str]) -> list[Fact]:
+    """What a presence said with an existential and a deictic "there" ("if there's a bin bag (down)
+    there", "is there a cup over there?") asks: whether the thing is at the place a clause of this
+    sentence or the one before put it (`_place_before`'s reach; a location said of it, not a
+    goal unless others habitually put it there, whatever its polarity there: "there's always one
+    left on the floor, isn't there"). A
+    presence with no deictic "there" after the thing ("if there's a bin bag, ...") or no such
+    place before asks whether the thing is there at all: nothing here."""
+    if "there" not in words[1:] or sum(w in ("there", "theres") for w in words) < 2:
+        return []  # (a chat's "theres" is the existential too)
+    k = len(words) - 1 - words[::-1].index("there")
+    if words[k - 1] in _BE_WORDS | {"there"} or k < len(words) - 2:
+        return []  # the deictic after the thing ends the condition ("... down there", "... there now")
+    for cl in reversed(clauses):
+        if cl.sentence < sentence - 1:
+            break
+        # (where others habitually leave a thing is where it may be: "The lodgers leave their cups
+        # on the windowsill", as `_antecedent` reads it)
+        habit = _habit_of_others(cl.text)
+        said = [replace(f, negated=False, goal=False, modifier=False, definite=False, home=False)
+                for f in cl.facts if f.kind == "location" and f.subject in names and not f.home
+                and (not f.goal or habit)]
+        if said:
+            return said[:1]
+    return []
 
 
 def _presence_asked(clauses: list[Clause], sentence: int, names: tuple[str, ...]) -> tuple[str, ...]:
@@ -2679,6 +2721,13 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # there", points back to a place the sentence before may have named); an attribute
                 # only guessed from a modifier ("right" of "Is the right remote there?") is no reading
                 facts = [Fact(r, f"exists({r})", "exists", negated=bool(present)) for r in names[:1]]
+            elif role == "condition" and names and facts and all(
+                    f.kind == "exists" and not f.negated for f in facts) and (
+                    placed := _there_before(clauses, grammatical, names, low_words)):
+                # "One always gets left on the floor by the door. If there's a bin bag down there,
+                # ...": a thing said to be there, "there" the place the sentence before put it, asks
+                # whether it is at that place, not whether such a thing exists at all
+                facts = placed
             elif role == "condition" and names and not any(not f.goal for f in facts) \
                     and _FIND_NAMED.match(low):
                 # "If you find a wallet, put it on the side table", "If you find a credit card
@@ -3113,7 +3162,10 @@ def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Cat
     is doubted: its factor stays; so is a placement a later condition asks by "there" (`doubted`:
     "There's a plate on the counter ... and no plate there at all?")."""
 
-    low = " ".join(w for w, _, _ in tokens(expand(unquote(str(brief.get("description", ""))))))
+    # "There's always one left by the door, isn't there, Maureen.": a tag asks for agreement and
+    # says nothing of anywhere else, so its "not there" is no cue of another place (`_TAG`)
+    said = _TAG.sub(" ", expand(unquote(str(brief.get("description", "")))))
+    low = " ".join(w for w, _, _ in tokens(said))
     elsewhere = any(re.search(rf"\b{cue}\b", low) for cue in ELSEWHERE + ("wherever",))
     settled = set(described_placements(brief, catalog, kinds=frozenset({"settled"} | (
         set() if elsewhere else {"kept"}))))

@@ -1,0 +1,199 @@
+"""Objects and stated facts (issue 47, fourteenth session): the structures behind development
+tasks that lose to a violated stated fact or an unbound role, each as a composed set of sentences
+written for these tests in several registers (a speech, a chat, a landlady's note, a shift log, a
+club notice, a text message); none is copied from a task."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+
+from logicenveval.domain.catalog import load_catalog
+from logicenveval.offline.analysis import analyse
+from logicenveval.offline.placement import described_placements
+
+
+def _brief(text: str, roles: dict[str, str]) -> dict[str, Any]:
+    return {"id": "t", "description": text, "rooms": ["room"],
+            "roles": {r: {"category": c} for r, c in roles.items()}}
+
+
+def _location_factors(text: str, roles: dict[str, str]) -> list[str]:
+    """The yes/no and multi-place location factors the condition reader asks of `text`."""
+    return [f.id for f in analyse(_brief(text, roles), load_catalog()).factors if f.kind == "location"]
+
+
+def _placements(text: str, roles: dict[str, str]) -> list[str]:
+    return described_placements(_brief(text, roles), load_catalog())
+
+
+# -- a thing named alone as a topic ("My jacket.", "The tea towel.") and then placed by a
+# statement through a personal pronoun ("I left it on the sofa", "It lives on the counter"): the
+# pronoun is that particular thing, as definite as its name, so the statement places it (a fact
+# the environment keeps), where a bare or indefinite noun ("a cup on the desk") describes a thing
+# that may or may not be so --
+
+JACKET = {"jacket": "jacket", "sofa": "sofa", "laundry_basket": "laundry_basket"}
+TOWEL = {"hand_towel": "hand_towel", "counter": "kitchen_counter", "towel_rack": "towel_rack"}
+MUG = {"mug": "mug", "desk": "desk", "sink": "sink"}
+KEY = {"key": "key", "bowl": "bowl", "drawer": "drawer"}
+SCARF = {"scarf": "scarf", "hook": "coat_hook", "basket": "laundry_basket"}
+
+#: (text, roles, the placement stated): a topic, then a plain statement placing it by a pronoun
+TOPIC_THEN_PRONOUN: list[tuple[str, dict[str, str], str]] = [
+    # a speech read out
+    ("Now, my jacket. I left it on the sofa. If it's dirty, put it in the laundry basket.",
+     JACKET, "on(jacket, sofa)"),
+    # a club caller's jobs
+    ("Number two! The tea towel. It lives on the counter. If it's wet, hang it on the towel rail.",
+     TOWEL, "on(hand_towel, counter)"),
+    # a landlady's note
+    ("Your mug. It is on the desk, by the window. If it is dirty, take it to the sink.",
+     MUG, "on(mug, desk)"),
+    # a text message
+    ("spare key!! i put it in the bowl. if it is bent, move it to the drawer pls",
+     KEY, "inside(key, bowl)"),
+    # a shift log
+    ("Scarf: we hung it on the hook. If it's wet, put it in the laundry basket.",
+     SCARF, "on(scarf, hook)"),
+    # a club caller again, the home with a participle of how it lies
+    ("Legs eleven! The tea towel. It lives on the counter by the hatch, folded over the end. If it's wet, "
+     "hang it on the towel rail.", TOWEL, "on(hand_towel, counter)"),
+    # a chat, the thing named in a sentence of its own before
+    ("Oh and the mug. It sits on the desk. If it's dirty, bring it to the sink.",
+     MUG, "on(mug, desk)"),
+]
+
+#: a pronoun in a condition, a doubt or a habit asks where the thing is: still a factor
+NEAR_MISSES: list[tuple[str, dict[str, str]]] = [
+    ("My jacket. If it's on the sofa, put it in the laundry basket.", JACKET),
+    ("My jacket. It might be on the sofa; if so, put it in the laundry basket.", JACKET),
+    ("The tea towel. Is it on the counter? Then hang it on the towel rail.", TOWEL),
+    ("Your mug. Maybe it is on the desk. If it is, take it to the sink.", MUG),
+]
+#: sentences of `TOPIC_THEN_PRONOUN` stated and not asked: 3 of 7 before the rule
+#: (`analysis.DEFINITE_REFERENCE`), 6 after it ("we hung it on the hook" places nothing: the
+#: placement reader's, not this structure's)
+STATED_AT_LEAST = 6
+
+
+def test_a_topic_placed_by_a_pronoun_is_stated() -> None:
+    stated = sum(1 for text, roles, fact in TOPIC_THEN_PRONOUN
+                 if not _location_factors(text, roles) and fact in _placements(text, roles))
+    assert stated >= STATED_AT_LEAST
+
+
+@pytest.mark.parametrize(("text", "roles", "fact"), [row for row in TOPIC_THEN_PRONOUN if "hung" not in row[0]])
+def test_each_topic_placed_by_a_pronoun_asks_no_place(text: str, roles: dict[str, str], fact: str) -> None:
+    assert not _location_factors(text, roles)
+    assert fact in _placements(text, roles)
+
+
+@pytest.mark.parametrize(("text", "roles"), NEAR_MISSES)
+def test_a_pronoun_in_a_condition_or_a_doubt_still_asks(text: str, roles: dict[str, str]) -> None:
+    assert _location_factors(text, roles)
+
+
+@pytest.mark.parametrize(("text", "roles"), [
+    # an indefinite "one" stands for any thing of the kind: where it lies is described, not stated
+    ("Mugs. There's often one left on the desk; if so, take it to the sink.", MUG),
+    ("scarves: one is often left on the hook, if so put it in the basket", SCARF),
+])
+def test_an_indefinite_one_is_no_particular_thing(text: str, roles: dict[str, str]) -> None:
+    assert _location_factors(text, roles)
+
+
+# -- a tag after a statement ("..., isn't there, Maureen.", "..., doesn't it?") asks for agreement:
+# its "not there" is no cue that the thing may be somewhere else, so a home stated anywhere in the
+# text stays stated (`analysis._TAG`) --
+
+@pytest.mark.parametrize("text", [
+    # a club caller
+    "The tea towel. It lives on the counter. If it's wet, hang it on the towel rail. Bin bags: there's "
+    "always one by the door, isn't there, Maureen.",
+    # a landlady's note
+    "The tea towel lives on the counter; if it is wet, hang it on the towel rail. There is always a queue "
+    "for the bathroom, isn't there?",
+    # a chat
+    "tea towel is kept on the counter, if its wet hang it on the towel rail. there's always a queue, "
+    "isn't there.",
+])
+def test_a_tag_question_is_no_elsewhere(text: str) -> None:
+    assert not _location_factors(text, TOWEL)
+    assert "on(hand_towel, counter)" in _placements(text, TOWEL)
+
+
+@pytest.mark.parametrize("text", [
+    # said outright, "not there" does say it may be elsewhere
+    "The tea towel lives on the counter. If it's not there, look on the towel rail and hang it up.",
+    "The tea towel lives on the counter, but it may be somewhere else today. Hang it on the towel rail if it is wet.",
+])
+def test_an_elsewhere_said_outright_still_asks(text: str) -> None:
+    assert _location_factors(text, TOWEL)
+
+
+@pytest.mark.parametrize(("text", "roles"), [
+    # a participle of situation after the pronoun describes how the thing may be found
+    ("SHED RULES. The scarf is to hang on the hook. Anyone finding it lying on the floor is asked to put it "
+     "in the basket.", SCARF),
+    ("Mugs: wherever they lie on the desk, they go to the sink.", MUG),
+])
+def test_a_pronoun_with_a_participle_of_situation_still_asks(text: str, roles: dict[str, str]) -> None:
+    assert _location_factors(text, roles)
+
+
+# -- a presence said with an existential and a deictic "there" after the thing ("if there's a bin
+# bag down there", "is there a cup over there?") after a sentence putting such a thing somewhere:
+# "there" is that place, so the condition asks whether the thing is at it, not whether such a
+# thing exists at all (`analysis._there_before`) --
+
+BAG = {"garbage_bag": "garbage_bag", "trash_can": "trash_can"}
+CUP = {"cup": "cup", "windowsill": "windowsill", "sink": "sink"}
+BROOM = {"broom": "broom", "hook": "coat_hook"}
+
+#: (text, roles, the location asked)
+THERE_AFTER_PLACE: list[tuple[str, dict[str, str], str]] = [
+    # a club caller
+    ("Bin bags. There's usually one left on the floor by the fire door. If there's a bin bag down there, "
+     "drop it in the dustbin.", BAG, "on(garbage_bag, floor)"),
+    # a landlady's note
+    ("The lodgers always leave their cups on the windowsill. If there is a cup there, kindly take it to the sink.",
+     CUP, "on(cup, windowsill)"),
+    # a text message
+    ("ppl always leave a cup on the windowsill. if theres a cup over there pls bring it to the sink",
+     CUP, "on(cup, windowsill)"),
+    # a shift log
+    ("Broom found on the floor by the door at 18:00. If there is a broom there at close, hang it on the hook.",
+     BROOM, "on(broom, floor)"),
+]
+
+
+def _asked(text: str, roles: dict[str, str]) -> set[str]:
+    return {v for f in analyse(_brief(text, roles), load_catalog()).factors for v in f.values.values()}
+
+
+#: sentences of `THERE_AFTER_PLACE` asking the place: 0 of 4 before the rule, 4 after it
+THERE_AT_LEAST = 4
+
+
+def test_a_deictic_there_after_a_place_asks_that_place() -> None:
+    assert sum(1 for text, roles, fact in THERE_AFTER_PLACE if fact in _asked(text, roles)) >= THERE_AT_LEAST
+
+
+@pytest.mark.parametrize(("text", "roles", "fact"), THERE_AFTER_PLACE)
+def test_each_deictic_there_asks_no_existence(text: str, roles: dict[str, str], fact: str) -> None:
+    asked = _asked(text, roles)
+    assert fact in asked
+    assert not any(v.startswith("exists(") for v in asked)
+
+
+@pytest.mark.parametrize(("text", "roles", "thing"), [
+    # no deictic "there" after the thing: whether one is there at all
+    ("Bin bags. One always gets left on the floor by the fire door. If there's a bin bag, drop it in the "
+     "dustbin.", BAG, "garbage_bag"),
+    # a deictic "there" with no place said of the thing before: the scene itself
+    ("Go to the shed. If there is a broom there, hang it on the hook.", BROOM, "broom"),
+])
+def test_a_presence_with_no_place_pointed_to_asks_existence(text: str, roles: dict[str, str], thing: str) -> None:
+    assert f"exists({thing})" in _asked(text, roles)
