@@ -252,3 +252,46 @@ def test_a_subject_that_names_a_thing_keeps_it(text: str, roles: dict[str, str],
 def test_an_aside_with_no_placing_statement_places_nothing(text: str, roles: dict[str, str]) -> None:
     assert not _placements(text, roles)
 
+
+# -- a list item's number ("2. Cardboard box + contents", "3) Bath towels - two") is a label, no
+# count: the item names one thing of its kind, as a sentence naming it would, not as many things as
+# its number says (`naming._Reader.enumerations`) --
+
+#: (text, kind): a numbered list whose item names a kind the text names once elsewhere
+NUMBERED_ITEMS: list[tuple[str, str]] = [
+    # a claim form
+    ("The utility shelf has a cardboard box of photographs on it. Damaged items: 1. Carpet tiles "
+     "2. Cardboard box + contents (photos), see above 3. Wall paint", "cardboard_box"),
+    # a lost-property log
+    ("Lost property log: 1. Umbrella 2. Backpack + contents (books, a lunch box) 3. Scarf", "backpack"),
+    # a packing list
+    ("Packing list: 1. Kettle 2. Storage box with contents (tools, tape) 3. Lamp", "storage_box"),
+    # a note of things to return
+    ("To return: 1) Mug 2) Laundry basket, contents: socks, towels 3) Iron", "laundry_basket"),
+    # a florist's delivery note
+    ("Items: 1. Rug 2. Vase + flowers (roses, lilies) 3. Lamp", "vase"),
+]
+
+
+def _named(text: str, kind: str) -> int:
+    from logicenveval.offline.naming import name_objects
+    return sum(1 for o in name_objects(text, load_catalog()) if o["category"] == kind)
+
+
+#: items of `NUMBERED_ITEMS` naming one object of their kind: 0 of 5 before the rule, 5 after it
+ONE_EACH_AT_LEAST = 5
+
+
+def test_a_numbered_item_names_one_thing() -> None:
+    assert sum(1 for text, kind in NUMBERED_ITEMS if _named(text, kind) == 1) >= ONE_EACH_AT_LEAST
+
+
+@pytest.mark.parametrize(("text", "kind"), [
+    # a number that counts, in words or in digits, still tells several things apart
+    ("The cat has 2 bowls: a food bowl and a water bowl. Fill them both.", "bowl"),
+    ("we've got two towels, a green one and a white one; hang the wet one up", "towel"),
+    ("Checklist: 1. There are 2 bowls - a food bowl and a water bowl. 2. Lock the door.", "bowl"),
+])
+def test_a_count_still_counts(text: str, kind: str) -> None:
+    assert _named(text, kind) == 2
+
