@@ -295,3 +295,74 @@ def test_a_numbered_item_names_one_thing() -> None:
 def test_a_count_still_counts(text: str, kind: str) -> None:
     assert _named(text, kind) == 2
 
+
+# -- "one" ranked after "be" ("Wren was the last one left in the classroom", "I'm the only one
+# here") says who the subject is: said of a subject that names no thing, it is that person, not the
+# thing named last (`analysis._says_who`) --
+
+OFFICE = {"tv": "television", "lamp": "desk_lamp", "desk": "desk", "kettle": "kettle"}
+
+#: texts naming a thing and then ranking a person with "the ... one"
+RANKED_ONE: list[str] = [
+    # a story
+    "Chapter 3. The TV was off. Priya was the last one left in the office, as usual. \"The lamp on the "
+    "desk,\" her boss said. \"If it's on, switch it off.\"",
+    # a text message
+    "tv off already. im the only one left in the office lol. if the kettle is on pls switch it off",
+    # a caretaker's log
+    "Desk lamp checked. Mr Hart is always the last one left in the office. If the kettle is on, switch it off.",
+]
+
+
+def _factor_ids(text: str, roles: dict[str, str]) -> list[str]:
+    brief = {**_brief(text, roles), "rooms": ["office"]}
+    return [f.id for f in analyse(brief, load_catalog()).factors]
+
+
+@pytest.mark.parametrize("text", RANKED_ONE)
+def test_a_ranked_one_said_of_a_person_is_no_thing(text: str) -> None:
+    assert not [f for f in _factor_ids(text, OFFICE) if "in_room" in f or "present" in f]
+
+
+@pytest.mark.parametrize(("text", "factor"), [
+    # the subject names a thing: "the only one" is that thing
+    ("The kettle is the only one in the office; if it is on, switch it off.", "kettle_toggled_on"),
+    # a ranked "one" that is no predicate of "be" still takes up the kind named
+    ("Lamps: if the last one on the desk is on, switch it off.", "lamp_toggled_on"),
+])
+def test_a_ranked_one_of_a_thing_still_refers(text: str, factor: str) -> None:
+    assert factor in _factor_ids(text, OFFICE)
+
+
+# -- "gone" with a particle is a phrasal verb, no absence ("if it has gone out on its own", "if the
+# heater's gone off", "the milk's gone off"): the thing is there, its flame or its power or its
+# freshness is what changed (`analysis.GONE_PARTICLES`) --
+
+#: (text, roles, thing): "gone out" / "gone off" said of a thing of the task
+GONE_PHRASAL: list[tuple[str, dict[str, str], str]] = [
+    # a teacher's words in a story
+    ("The candle on my desk. If it's still lit, blow it out. If it has gone out on its own, leave it.",
+     {"candle": "candle", "desk": "desk"}, "candle"),
+    # a house-sitter's note
+    ("The heater in the hall: if it's gone off by itself, switch it back on.", {"heater": "space_heater"},
+     "heater"),
+    # a text message
+    ("milk in the fridge - if it's gone off pls pour it away", {"milk": "milk", "fridge": "fridge"}, "milk"),
+    # a keeper's log
+    ("Lantern by the door. Should it have gone out in the night, light it again.", {"lantern": "lantern"},
+     "lantern"),
+]
+
+
+@pytest.mark.parametrize(("text", "roles", "thing"), GONE_PHRASAL)
+def test_gone_with_a_particle_asks_no_presence(text: str, roles: dict[str, str], thing: str) -> None:
+    assert f"exists({thing})" not in _asked(text, roles)
+
+
+@pytest.mark.parametrize(("text", "roles", "thing"), [
+    ("The candle on my desk. If it is gone, fetch a new one.", {"candle": "candle", "desk": "desk"}, "candle"),
+    ("If the remote has gone missing, tell me.", {"remote": "remote_control"}, "remote"),
+    ("bread gone? then grab a loaf on the way home", {"bread": "bread"}, "bread"),
+])
+def test_gone_alone_is_still_absence(text: str, roles: dict[str, str], thing: str) -> None:
+    assert f"exists({thing})" in _asked(text, roles)

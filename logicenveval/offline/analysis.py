@@ -189,6 +189,9 @@ USERS = frozenset({"you", "i", "we", "they", "someone", "somebody", "not", "neve
 ARRIVALS = frozenset({"arrived", "come", "turned", "appeared", "shown", "showed", "been", "behind"})
 #: words that say an object is absent: "the roll is missing"
 ABSENT = frozenset({"missing", "absent", "gone", "lacking", "unavailable"})
+#: the particles that make "gone" a phrasal verb, no absence: "if it has gone out" (a candle, a
+#: fire: no longer burning), "if the heater's gone off", "the milk has gone off"
+GONE_PARTICLES = frozenset({"out", "off"})
 
 
 @dataclass(frozen=True)
@@ -796,6 +799,9 @@ class _Reader:
                                           or words[i + 1 : i + 2] == ["of"]):
                 continue  # "one of the cushions", "each one": not an anaphoric "one"
             before = [m for m in found if m.kind == "role" and m.end <= i]
+            if w == "one" and not before and _says_who(words, i):
+                continue  # "Wren was the last one left in the classroom": the subject, a person
+
             places = [m for m in found if m.kind in ("role", "floor") and m.end <= i]
             if w in ("one", "ones"):  # "a dirty one": the kind the clause or sentence is about
                 before = [m for m in before if all(x in ARTICLES | set(STATE_WORDS) or self._unknown(x)
@@ -976,8 +982,10 @@ class _Reader:
             k = m.end
             while k < len(words) and (words[k] in DESCRIPTIVE or self._pp_at(words, k)):
                 k = self._pp_at(words, k) or k + 1
-            if k < len(words) and words[k] in ABSENT or words[max(0, m.start - 2) : m.start] == ["out", "of"]:
-                # "the roll by the toilet is missing", "we are out of bread"
+            phrasal = words[k:k + 1] == ["gone"] and bool(set(words[k + 1:k + 2]) & GONE_PARTICLES)
+            if k < len(words) and words[k] in ABSENT and not phrasal or words[max(0, m.start - 2) : m.start] == ["out", "of"]:
+                # "the roll by the toilet is missing", "we are out of bread" (not "it has gone out",
+                # "the milk's gone off": a phrasal verb of a flame, a machine or food, `GONE_PARTICLES`)
                 facts += [Fact(r, f"exists({r})", "exists", negated=True) for r in m.roles]
                 break
             # "there may or may not be a loaf", "if we still have one", "if one is still to be had"
@@ -2451,6 +2459,21 @@ def _parallel(said: str, facts: list[Fact], clauses: list[Clause], sentence: int
 #: prepositions of a place "there" may take up (the place, not where something goes through)
 _THERE_PREPS = {"on": "on", "onto": "on", "in": "in", "into": "in", "inside": "in"}
 _BE_WORDS = frozenset({"is", "are", "was", "were", "be", "been"})
+#: the words that rank a "one" said of a subject ("the last one", "the only one", "the first one")
+_RANKS = frozenset({"last", "first", "only", "next", "sole"})
+
+
+def _says_who(words: list[str], i: int) -> bool:
+    """Whether the "one" at `i` is a predicate noun ranking its clause's subject ("Wren was the last
+    one left in the classroom", "I'm the only one here", "Gran is always the first one up"): "be",
+    an adverb or none, "the" and a rank (`_RANKS`) before it. Said of a subject that names no thing
+    of the task (the caller's `not before`), the "one" is that subject, a person, not a thing the
+    text named before it."""
+    if i < 3 or words[i - 1] not in _RANKS or words[i - 2] != "the":
+        return False
+    # (the words as `tokens` gives them: "always" -> "alway")
+    k = i - 4 if words[i - 3] in _HABIT_ADVERBS | {singular(w) for w in _HABIT_ADVERBS} | {"still"} else i - 3
+    return k >= 0 and words[k] in _BE_WORDS | {"am"}
 #: pronoun subjects of such a condition before a participle of finding or leaving, or "still"
 #: ("if they're still there": not "already", which asks of a goal, `_already`): "If found
 #: there" (its subject elided, read "if it is found there", `sentences._ELIDED_SUBJECT`) after
