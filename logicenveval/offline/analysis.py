@@ -134,6 +134,9 @@ OPENING_PARTS = frozenset({"drawer", "door"})
 #: pronouns that may then mean them (`_Reader.mentions`)
 PERSONIFIED = frozenset({"doll", "teddy_bear"})
 PERSON_PRONOUNS = frozenset({"she", "he", "her", "him"})
+#: the personal pronouns that refer to one particular thing or group already named ("it", "them";
+#: not "one", "ones", which stand for any thing of a kind): a placement said of one is stated
+DEFINITE_REFERENCE = frozenset({"it", "they", "them"}) | PERSON_PRONOUNS
 #: verbs that say where a thing belongs ("it is kept in the vanity", "the remote lives on the
 #: stand"): said of a definite object they are still askable (see `Fact.definite`)
 HOMES = frozenset({"kept", "lives", "live",
@@ -186,6 +189,9 @@ USERS = frozenset({"you", "i", "we", "they", "someone", "somebody", "not", "neve
 ARRIVALS = frozenset({"arrived", "come", "turned", "appeared", "shown", "showed", "been", "behind"})
 #: words that say an object is absent: "the roll is missing"
 ABSENT = frozenset({"missing", "absent", "gone", "lacking", "unavailable"})
+#: the particles that make "gone" a phrasal verb, no absence: "if it has gone out" (a candle, a
+#: fire: no longer burning), "if the heater's gone off", "the milk has gone off"
+GONE_PARTICLES = frozenset({"out", "off"})
 
 
 @dataclass(frozen=True)
@@ -342,6 +348,11 @@ _QUESTION_TAG = re.compile(rf",\s*{_AUX}(?: not)? (?:it|they|he|she|there|you|we
 #: polarity word ("isn't there any milk?", "hasn't it been washed yet?") keeps the negation
 _NEGATIVE_QUESTION = re.compile(rf"^(\W*{_AUX}) not\b(?=(?:(?!\b(?:any|anything|anyone|anybody|anywhere|ever|yet)\b)"
                                 rf"[^?])*\?\s*$)")
+
+
+#: a tag after a statement, wherever it ends (before a vocative, a full stop or a question mark:
+#: "there's one on the floor, isn't there, Maureen.", "it lives on the hook, doesn't it?")
+_TAG = re.compile(rf",\s*{_AUX}(?: not)? (?:it|they|he|she|there|you|we|i)(?: not)?\s*(?=[,.?!]|$)", re.M)
 
 
 def _unbiased(said: str) -> str:
@@ -842,6 +853,9 @@ class _Reader:
                                           or words[i + 1 : i + 2] == ["of"]):
                 continue  # "one of the cushions", "each one": not an anaphoric "one"
             before = [m for m in found if m.kind == "role" and m.end <= i]
+            if w == "one" and not before and _says_who(words, i):
+                continue  # "Wren was the last one left in the classroom": the subject, a person
+
             places = [m for m in found if m.kind in ("role", "floor") and m.end <= i]
             if w in ("one", "ones"):  # "a dirty one": the kind the clause or sentence is about
                 before = [m for m in before if all(x in ARTICLES | set(STATE_WORDS) or self._unknown(x)
@@ -1022,8 +1036,10 @@ class _Reader:
             k = m.end
             while k < len(words) and (words[k] in DESCRIPTIVE or self._pp_at(words, k)):
                 k = self._pp_at(words, k) or k + 1
-            if k < len(words) and words[k] in ABSENT or words[max(0, m.start - 2) : m.start] == ["out", "of"]:
-                # "the roll by the toilet is missing", "we are out of bread"
+            phrasal = words[k:k + 1] == ["gone"] and bool(set(words[k + 1:k + 2]) & GONE_PARTICLES)
+            if k < len(words) and words[k] in ABSENT and not phrasal or words[max(0, m.start - 2) : m.start] == ["out", "of"]:
+                # "the roll by the toilet is missing", "we are out of bread" (not "it has gone out",
+                # "the milk's gone off": a phrasal verb of a flame, a machine or food, `GONE_PARTICLES`)
                 facts += [Fact(r, f"exists({r})", "exists", negated=True) for r in m.roles]
                 break
             # "there may or may not be a loaf", "if we still have one", "if one is still to be had"
@@ -1492,11 +1508,17 @@ class _Reader:
             and not set(skipped) & MOTION
         goal = goal and not situated
         article = determiner(words, m.start)
+        # "My jacket. I left it on the sofa.", "The tea towel. It is on the counter": a personal
+        # pronoun is the particular thing it points back to, as definite as a name with "the" or
+        # "my" (`DEFINITE_REFERENCE`); a participle of situation after it ("finding it lying on
+        # the floor", "wherever they lie") still describes how the thing may be found
+        particular = m.kind == "pronoun" and words[m.start] in DEFINITE_REFERENCE \
+            and not set(skipped) & SITUATION_PARTICIPLES - HOMES
         # where a thing is kept or lives is a norm `_settle_stated` weighs against the rest of
         # the text
-        definite = article in DEFINITE and not set(skipped) & HOMES
+        definite = (article in DEFINITE or particular) and not set(skipped) & HOMES
         described = bool(set(skipped) & SITUATION_PARTICIPLES) or (
-            not skipped and (article in INDEFINITE or article not in ARTICLES)) or (
+            not skipped and not particular and (article in INDEFINITE or article not in ARTICLES)) or (
             skipped[:1] in (["that"], ["which"]) and article in INDEFINITE)  # "any toy that is on the floor"
         modifier = not goal and described
         subjects = self._subjects(words, mentions, idx)
@@ -1877,6 +1899,34 @@ def _place_before(clauses: list[Clause], sentence: int, names: tuple[str, ...]) 
     there at all."""
     return any(f.kind == "location" and f.subject in names for cl in clauses if cl.sentence >= sentence - 1
                for f in cl.facts)
+
+
+def _there_before(clauses: list[Clause], sentence: int, names: tuple[str, ...],
+                  words: list[str]) -> list[Fact]:
+    """What a presence said with an existential and a deictic "there" ("if there's a bin bag (down)
+    there", "is there a cup over there?") asks: whether the thing is at the place a clause of this
+    sentence or the one before put it (`_place_before`'s reach; a location said of it, not a
+    goal unless others habitually put it there, whatever its polarity there: "there's always one
+    left on the floor, isn't there"). A
+    presence with no deictic "there" after the thing ("if there's a bin bag, ...") or no such
+    place before asks whether the thing is there at all: nothing here."""
+    if "there" not in words[1:] or sum(w in ("there", "theres") for w in words) < 2:
+        return []  # (a chat's "theres" is the existential too)
+    k = len(words) - 1 - words[::-1].index("there")
+    if words[k - 1] in _BE_WORDS | {"there"} or k < len(words) - 2:
+        return []  # the deictic after the thing ends the condition ("... down there", "... there now")
+    for cl in reversed(clauses):
+        if cl.sentence < sentence - 1:
+            break
+        # (where others habitually leave a thing is where it may be: "The lodgers leave their cups
+        # on the windowsill", as `_antecedent` reads it)
+        habit = _habit_of_others(cl.text)
+        said = [replace(f, negated=False, goal=False, modifier=False, definite=False, home=False)
+                for f in cl.facts if f.kind == "location" and f.subject in names and not f.home
+                and (not f.goal or habit)]
+        if said:
+            return said[:1]
+    return []
 
 
 def _presence_asked(clauses: list[Clause], sentence: int, names: tuple[str, ...]) -> tuple[str, ...]:
@@ -2463,6 +2513,21 @@ def _parallel(said: str, facts: list[Fact], clauses: list[Clause], sentence: int
 #: prepositions of a place "there" may take up (the place, not where something goes through)
 _THERE_PREPS = {"on": "on", "onto": "on", "in": "in", "into": "in", "inside": "in"}
 _BE_WORDS = frozenset({"is", "are", "was", "were", "be", "been"})
+#: the words that rank a "one" said of a subject ("the last one", "the only one", "the first one")
+_RANKS = frozenset({"last", "first", "only", "next", "sole"})
+
+
+def _says_who(words: list[str], i: int) -> bool:
+    """Whether the "one" at `i` is a predicate noun ranking its clause's subject ("Wren was the last
+    one left in the classroom", "I'm the only one here", "Gran is always the first one up"): "be",
+    an adverb or none, "the" and a rank (`_RANKS`) before it. Said of a subject that names no thing
+    of the task (the caller's `not before`), the "one" is that subject, a person, not a thing the
+    text named before it."""
+    if i < 3 or words[i - 1] not in _RANKS or words[i - 2] != "the":
+        return False
+    # (the words as `tokens` gives them: "always" -> "alway")
+    k = i - 4 if words[i - 3] in _HABIT_ADVERBS | {singular(w) for w in _HABIT_ADVERBS} | {"still"} else i - 3
+    return k >= 0 and words[k] in _BE_WORDS | {"am"}
 #: pronoun subjects of such a condition before a participle of finding or leaving, or "still"
 #: ("if they're still there": not "already", which asks of a goal, `_already`): "If found
 #: there" (its subject elided, read "if it is found there", `sentences._ELIDED_SUBJECT`) after
@@ -2778,6 +2843,13 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # there", points back to a place the sentence before may have named); an attribute
                 # only guessed from a modifier ("right" of "Is the right remote there?") is no reading
                 facts = [Fact(r, f"exists({r})", "exists", negated=bool(present)) for r in names[:1]]
+            elif role == "condition" and names and facts and all(
+                    f.kind == "exists" and not f.negated for f in facts) and (
+                    placed := _there_before(clauses, grammatical, names, low_words)):
+                # "One always gets left on the floor by the door. If there's a bin bag down there,
+                # ...": a thing said to be there, "there" the place the sentence before put it, asks
+                # whether it is at that place, not whether such a thing exists at all
+                facts = placed
             elif role == "condition" and names and not any(not f.goal for f in facts) \
                     and _FIND_NAMED.match(low):
                 # "If you find a wallet, put it on the side table", "If you find a credit card
@@ -3244,7 +3316,10 @@ def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Cat
     is doubted: its factor stays; so is a placement a later condition asks by "there" (`doubted`:
     "There's a plate on the counter ... and no plate there at all?")."""
 
-    low = " ".join(w for w, _, _ in tokens(expand(unquote(str(brief.get("description", ""))))))
+    # "There's always one left by the door, isn't there, Maureen.": a tag asks for agreement and
+    # says nothing of anywhere else, so its "not there" is no cue of another place (`_TAG`)
+    said = _TAG.sub(" ", expand(unquote(str(brief.get("description", "")))))
+    low = " ".join(w for w, _, _ in tokens(said))
     elsewhere = any(re.search(rf"\b{cue}\b", low) for cue in ELSEWHERE + ("wherever",))
     settled = set(described_placements(brief, catalog, kinds=frozenset({"settled"} | (
         set() if elsewhere else {"kept"}))))

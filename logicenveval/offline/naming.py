@@ -96,6 +96,8 @@ _NAME_LINKS = _PREPOSITIONS | {"for", "up", "down", "out", "off", "over"}
 #: words that make a noun phrase indefinite: a thing of its own, not a part of one named
 _INDEFINITE = frozenset({"a", "an", "another", "some", "any"})
 _COUNTS = {"two": 2, "three": 3, "four": 4, "five": 5, "both": 2, "2": 2, "3": 3, "4": 4, "5": 5}
+#: what follows a list item's number ("2. ", "3) "): the number labels the item, it counts nothing
+_ITEM_NUMBER = re.compile(r"^[.)]")
 #: "a fresh bag": the spare when the kind was already named in use ("the full bag"), else the
 #: one in use ("a fresh diaper is lying on the changing table")
 _FRESH = frozenset({"fresh", "new"})
@@ -1412,7 +1414,9 @@ class _Reader:
         words = self.text.words
         i = 0
         while i < len(words):
-            count = _COUNTS.get(words[i], 0)
+            # "2. Cardboard box + contents (photos)": a list item's number is its label, no count
+            count = 0 if _ITEM_NUMBER.match(self.text.gaps[i + 1] if i + 1 < len(words) else "") \
+                and words[i].isdigit() else _COUNTS.get(words[i], 0)
             j = i + 1 if count else i
             n, category = self.group_kind(j)
             if category is None and count and words[i] != "both":

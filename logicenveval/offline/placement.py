@@ -319,9 +319,10 @@ def _sentences(text: str, lex: Lexicon) -> list[_Sentence]:
                        m.start(), m.end()) for m in _TOKEN.finditer(low)]
         toks = [t for t in toks if t.word != "\n"]
         mentions = lex.find_mentions([(t.lemma, t.start, t.end) for t in toks])
-        kept = _without_asides(toks, mentions)
-        if len(kept) < len(toks):  # an aside dropped: the mentions after it moved
-            toks, mentions = kept, lex.find_mentions([(t.lemma, t.start, t.end) for t in kept])
+        for drop in (_without_asides, _held_in_aside):
+            kept = drop(toks, mentions)
+            if len(kept) < len(toks):  # an aside dropped: the mentions after it moved
+                toks, mentions = kept, lex.find_mentions([(t.lemma, t.start, t.end) for t in kept])
         mentions = [m for m in mentions if not _verb_mention(toks, mentions, m)]
         mentions = without_modifiers(mentions, [(t.lemma, t.start, t.end) for t in toks], [t.word for t in toks])
         out.append(_Sentence(toks, _with_room_word(toks, mentions, lex)))
@@ -387,6 +388,32 @@ def _without_asides(toks: list[_Token], mentions: list[Mention]) -> list[_Token]
             continue
         del out[m.end:close + 1]
     return out
+
+
+#: the prepositions of an aside naming what holds the thing spoken of ("the photo, in the silver frame, ...")
+_HELD_IN = frozenset({"in", "inside"})
+
+
+def _held_in_aside(toks: list[_Token], mentions: list[Mention]) -> list[_Token]:
+    """The tokens with the holder an aside names as the subject, where the sentence opens with a
+    thing named by what it holds and naming nothing of the task ("The photo of me and Gran, in the
+    silver frame, is on the sideboard", "The roses, in the blue vase, are on the windowsill"): a
+    framed photo is its frame, flowers in a vase are the vase, so the statement places the holder
+    ("the silver frame is on the sideboard"). Only a subject with no thing, room or verb of its own
+    before the aside's comma, an aside of "in"/"inside" ending in one thing's name and the
+    statement's verb right after it; the tokens unchanged otherwise."""
+    words = [t.word for t in toks]
+    first = next((k for k, w in enumerate(words) if w == ","), None)
+    if first is None or first == 0 or first + 2 >= len(words) or words[first + 1] not in _HELD_IN \
+            or any(w in VERBS for w in words[:first]) or any(m.start < first for m in mentions):
+        return toks
+    close = next((k for k in range(first + 2, min(len(words), first + 8)) if words[k] == ","), None)
+    if close is None or close + 1 >= len(words) or words[close + 1] not in VERBS:
+        return toks
+    held = [m for m in mentions if first + 1 < m.start < close]
+    if len(held) != 1 or held[0].kind != "role" or held[0].end != close or len(held[0].roles) != 1:
+        return toks
+    return toks[first + 2:close] + toks[close + 1:]
 
 
 def _with_room_word(toks: list[_Token], mentions: list[Mention], lex: Lexicon) -> list[Mention]:
