@@ -85,3 +85,25 @@ def test_rescoring_a_pack_keeps_its_replies_and_names_its_model(tmp_path: Path) 
     assert kept == {**recorded, "model": results["model"]} and cache.read_bytes() == replies
     assert all((pack / name).exists() for name in DERIVED)
     assert same_metrics(results, replay(pack, tmp_path / "again", cache=cache))
+
+
+PAPER_SETUP = REPO / "reports" / "real" / "qwen2.5-coder-1.5b-description"
+
+
+@pytest.mark.skipif(not (PAPER_SETUP / "results.json").is_file(), reason="the paper-setup Qwen pack is not committed")
+def test_the_paper_setup_pack_builds_the_situations_its_plans_claim(tmp_path: Path) -> None:
+    """Issue 46: with Qwen2.5-Coder-1.5B under protocol 7, LogicEnvGen's environments realise the
+    situation their plan claims (`realised_share` >= 0.90), each environment of a task another
+    one; the same replies replayed under protocol 6 (kept in the cache) give the 0.5625 of the
+    recording before, whose bathroom plan put one bottle in two places."""
+    from llm_validity import replay
+
+    recorded = json.loads((PAPER_SETUP / "results.json").read_text(encoding="utf-8"))
+    assert recorded["protocol"] == 7 and recorded["results"]["logicenvgen"]["realised_share"] >= 0.90
+    for task in recorded["tasks"]:
+        plan = PAPER_SETUP / "envs" / "logicenvgen" / task / "plan.json"
+        if plan.is_file():
+            claimed = json.loads(plan.read_text(encoding="utf-8"))["trajectories"]
+            assert len(set(claimed)) == len(claimed) > 1, task
+    before = replay(PAPER_SETUP, tmp_path, protocol=6)
+    assert before["protocol"] == 6 and before["results"]["logicenvgen"]["realised_share"] == 0.5625
