@@ -2260,12 +2260,23 @@ def _fallback(sent: _Sentence, before: _Before, lex: Lexicon, catalog: Catalog, 
                 continue  # "where the carton remains on the table, ...": a condition's register
             # the "to" of "has moved to" is where the thing went, of "next to" where it is: no goal
             stated = not {w for k, w in enumerate(words[a:b], a)
-                          if w != "to" or words[k - 1] not in MOVED | PLACE_BEFORE_TO} & UNSTATED \
+                          if (w != "to" or words[k - 1] not in MOVED | PLACE_BEFORE_TO)
+                          and not _corrective_not(words, a, k)} & UNSTATED \
                 and not any(_alternative_place(words, k, len(words)) for k in range(a, min(b + 2, len(words)))
                             if words[k] == "or")
             for kind, item, prep, holder in _fallback_forms(sent, ms, a, b, lex, stated) \
                     + (_structures(sent, before, ms, a, b, lex) if stated else []):
                 _put_new(reading, kind, catalog, lex, item, holder, prep)
+
+
+def _corrective_not(words: list[str], a: int, k: int) -> bool:
+    """Whether the "not" at token `k` opens a corrective tail after a place its part (from `a`)
+    has already stated: "it was left on the filing cabinet, not on the desk", "it's on the shelf,
+    not the desk". The tail denies another place, not the statement; a "not" before the place
+    ("left, not on the cabinet, but ...") or on the verb ("was not left on ...") still does."""
+    return words[k] == "not" and k > a and words[k - 1] == "," and k + 1 < len(words) \
+        and (words[k + 1] in FALLBACK_AT or words[k + 1] in ARTICLES) \
+        and any(w in FALLBACK_AT for w in words[a:k - 1])
 
 
 def _parts(words: list[str], clause: Span) -> list[tuple[int, int]]:
