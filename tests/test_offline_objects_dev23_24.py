@@ -41,6 +41,8 @@ ROOM_KIND_NEAR: tuple[tuple[tuple[str, ...], str, str], ...] = (
     (("cabin",), "Put the candle back on the shelf, please.", "wall_shelf"),
     (("potting_shed",), "Boots go by the coat rack; the trowel lives on the shelf.", "wall_shelf"),
     (("village_hall",), "Clean cups go straight up on the shelf above the urn.", "wall_shelf"),
+    # the synonym's own kind fits the room too: it stays ("bin" in a kitchen, no recycling bin)
+    (("kitchen",), "If the bin is full, empty it before bed.", "trash_can"),
 )
 
 
@@ -161,3 +163,42 @@ def test_another_items_cue_leaves_a_home_settled(text: str) -> None:
 @pytest.mark.parametrize("text", HOME_AFTER_CUE_NEAR)
 def test_a_cue_of_the_things_own_block_still_asks(text: str) -> None:
     assert _bottle_asked(text)
+
+
+# -- a verbless statement whose subject carries a possessor or a noun modifier its name does not
+# cover ("Biscuit's water bowl, on the floor by the door") still places it (`placement._premodifiers`) --
+
+#: (sentence, roles, the placement): a listing's item, an inventory line, a sitter's note, a memo
+LOOSE_SUBJECT: tuple[tuple[str, dict[str, str], str], ...] = (
+    ("Item 2 - Rex's water bowl, on the floor by the back door. Fill it if it's empty.",
+     {"pet_bowl": "pet_bowl"}, "on(pet_bowl, floor)"),
+    ("Inventory: the guest towel, in the laundry basket. Nothing else to note.",
+     {"towel": "towel", "laundry_basket": "laundry_basket"}, "inside(towel, laundry_basket)"),
+    ("Dad's work laptop, on the desk. Leave it there.", {"laptop": "laptop", "desk": "desk"}, "on(laptop, desk)"),
+    ("The staff kettle, on the counter by the sink. Switch it off at night.",
+     {"kettle": "kettle", "counter": "kitchen_counter"}, "on(kettle, counter)"),
+)
+
+#: near misses: a verb opens the clause, or a hedge does
+LOOSE_SUBJECT_NEAR: tuple[tuple[str, dict[str, str], str], ...] = (
+    ("Fill Rex's bowl, on the floor by the back door.", {"pet_bowl": "pet_bowl"}, "on(pet_bowl, floor)"),
+    ("Maybe Rex's water bowl, on the floor by the door.", {"pet_bowl": "pet_bowl"}, "on(pet_bowl, floor)"),
+    ("Put the staff kettle, on the counter.", {"kettle": "kettle", "counter": "kitchen_counter"},
+     "on(kettle, counter)"),
+)
+
+
+def _placed_roles(text: str, roles: dict[str, str]) -> list[str]:
+    brief = {"id": "t", "description": text, "rooms": ["kitchen"],
+             "roles": {r: {"category": c} for r, c in roles.items()}}
+    return described_placements(brief, load_catalog())
+
+
+@pytest.mark.parametrize(("text", "roles", "fact"), LOOSE_SUBJECT)
+def test_a_verbless_subject_with_loose_modifiers_is_placed(text: str, roles: dict[str, str], fact: str) -> None:
+    assert fact in _placed_roles(text, roles)
+
+
+@pytest.mark.parametrize(("text", "roles", "fact"), LOOSE_SUBJECT_NEAR)
+def test_a_verb_or_hedge_before_the_subject_places_nothing(text: str, roles: dict[str, str], fact: str) -> None:
+    assert fact not in _placed_roles(text, roles)

@@ -1410,6 +1410,7 @@ def _fragment(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         # ("then hoy the towel in the hamper", a dialect's instruction, is no statement)
         covered |= {k for a, b in _segments(words, clause.start, j) if b < j and any(foreign(w) for w in words[a:b])
                     for k in range(a, b)}
+    covered |= _premodifiers(words, clause.start, min(m.start for m in subjects))
     if not all(k in covered or w in LIST_GLUE or w in COLOR_WORDS or w in STATE_WORDS
                for k, w in enumerate(words[lo:j], lo) if lo == clause.start or k < clause.start - 1):
         return
@@ -1418,6 +1419,31 @@ def _fragment(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
             continue  # "Toys on the floor!": a heading about a class, no statement of where one is
         for role in _roles(m, sent):
             _put(reading, "settled", catalog, lex, role, found[1], found[0])
+
+
+#: how many words a verbless statement's subject may carry before its name that the names do not
+#: cover: a possessor and a modifier ("Biscuit's water bowl, on the floor by the door")
+_PREMODIFIERS = 2
+
+
+def _premodifiers(words: list[str], start: int, first: int) -> set[int]:
+    """The tokens between a verbless clause's start and its first subject's name that only modify
+    that name: after an article, or opening the sentence or a labelled item ("Item 3 - Biscuit's
+    water bowl, on the floor": the possessive's "'s" is gone from the words), at most
+    `_PREMODIFIERS` words that are nouns and no verb of place ("water" of "the water bowl"), all
+    of them, or none. A clause opened by a verb ("fill Biscuit's bowl, on the floor") is no noun
+    phrase."""
+    if first <= start:
+        return set()
+    article = words[start] in ARTICLES
+    opens = start == 0 or words[start - 1] in _LABEL_MARKS
+    if not article and not (opens and not verb_form(words[start])):
+        return set()
+    loose = list(range(start + 1 if article else start, first))
+    if len(loose) > _PREMODIFIERS or any(not words[k].isalpha() or words[k] in VERBS
+                                         or "NOUN" not in getAllLemmas(words[k]) for k in loose):
+        return set()
+    return set(range(start, first))
 
 
 #: the marks after a label in a record, a list or a form ("Torch: on the bench", "Keys - in the drawer")
