@@ -17,40 +17,6 @@ def _kinds(text: str, rooms: tuple[str, ...] = ()) -> list[str]:
     return [o["category"] for o in name_objects(text, load_catalog(), rooms=rooms)]
 
 
-# -- a bare head whose catalog synonym names a kind the task's room never holds is the kind of that
-# head the room does hold: a laundry's or a garage's shelf is its utility shelf, a pantry's its
-# pantry shelf (the room type its id names; `_Reader.bare_noun`) --
-
-#: (rooms, sentence, the kind the head names): a house-sitter's note, a text message, a rota, a
-#: landlord's inventory, a chore chart
-ROOM_KIND: tuple[tuple[tuple[str, ...], str, str], ...] = (
-    (("laundry_room",), "Once the sheets are dry, fold them and put them on the shelf.", "utility_shelf"),
-    (("laundry_room",), "pls leave the iron on the shelf when ur done x", "utility_shelf"),
-    (("garage",), "The drill goes back on the shelf by the side door.", "utility_shelf"),
-    (("garage",), "Inventory: one shelf (metal), holding paint tins; one bicycle.", "utility_shelf"),
-    (("pantry",), "The jar of honey lives on the shelf next to the flour.", "pantry_shelf"),
-)
-
-#: near misses: a room that holds the synonym's own kind, or an id naming no room type (the kinds
-#: the text names are too weak a sign of the room to overrule the synonym: a shed with boots and a
-#: hall stand is no hallway)
-ROOM_KIND_NEAR: tuple[tuple[tuple[str, ...], str, str], ...] = (
-    (("bedroom",), "Once the sheets are dry, fold them and put them on the shelf.", "wall_shelf"),
-    (("living_room",), "The candle lives on the shelf above the sofa.", "wall_shelf"),
-    (("kitchen",), "The jar of honey lives on the shelf next to the kettle.", "wall_shelf"),
-    (("cabin",), "Put the candle back on the shelf, please.", "wall_shelf"),
-    (("potting_shed",), "Boots go by the coat rack; the trowel lives on the shelf.", "wall_shelf"),
-    (("village_hall",), "Clean cups go straight up on the shelf above the urn.", "wall_shelf"),
-    # the synonym's own kind fits the room too: it stays ("bin" in a kitchen, no recycling bin)
-    (("kitchen",), "If the bin is full, empty it before bed.", "trash_can"),
-)
-
-
-@pytest.mark.parametrize(("rooms", "text", "kind"), ROOM_KIND + ROOM_KIND_NEAR)
-def test_a_bare_head_is_the_kind_its_room_holds(rooms: tuple[str, ...], text: str, kind: str) -> None:
-    assert kind in _kinds(text, rooms)
-
-
 # -- a head several kinds share, placed on the floor by its own phrase, is the kind the catalog
 # stands on the floor: a bowl on the floor is a pet's bowl, a lamp on the floor a floor lamp
 # (`_Reader.floor_stood`) --

@@ -795,7 +795,7 @@ class _Reader:
 
         floor = self.floor_stood(i)
 
-        def score(category: str | None) -> tuple[bool, bool, bool, bool, bool, bool, int, bool, bool, bool, bool, int, bool, int, bool, bool]:
+        def score(category: str | None) -> tuple[bool, bool, bool, bool, bool, bool, int, bool, bool, bool, int, bool, int, bool, bool]:
             assert category is not None
             cat = self.catalog.categories[category]
             # the other words of its names that say what it is: not a preposition of a name made
@@ -825,12 +825,6 @@ class _Reader:
                     # a living room's), any kind where no room id names a type
                     len(hints & said) if fits else 0,
                     written != word and self.plural_named(category, word),
-                    # a kind named by the word as its head ("utility shelf") or by it outright
-                    # that the room its id names holds, before a synonym's kind it never holds: a laundry's or a
-                    # garage's "shelf" is its utility shelf, not the wall shelf "shelf" names (the
-                    # type the kinds named outright lead to is too weak for this, and a kind the
-                    # word only loosely names is no sort of it: a church hall's shelf is no shoe rack)
-                    bool(rooms & self.known_room_types) and (words_of(category)[-1] == word or category == exact),
                     category == exact,
                     # a kind of the task's own rooms before one a word said elsewhere hints ("tea
                     # and coffee are in the tin" in a kitchen)
