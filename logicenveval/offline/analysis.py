@@ -16,7 +16,7 @@ from __future__ import annotations
 import json
 import re
 from collections import Counter
-from collections.abc import Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -56,6 +56,7 @@ from logicenveval.offline.lexicon import (
     singular,
     tokens,
     without_modifiers,
+    words_of,
 )
 from logicenveval.offline.placement import described_placements
 from logicenveval.offline.sentences import (
@@ -3316,13 +3317,10 @@ def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Cat
     is doubted: its factor stays; so is a placement a later condition asks by "there" (`doubted`:
     "There's a plate on the counter ... and no plate there at all?")."""
 
-    # "There's always one left by the door, isn't there, Maureen.": a tag asks for agreement and
-    # says nothing of anywhere else, so its "not there" is no cue of another place (`_TAG`)
-    said = _TAG.sub(" ", expand(unquote(str(brief.get("description", "")))))
-    low = " ".join(w for w, _, _ in tokens(said))
-    elsewhere = any(re.search(rf"\b{cue}\b", low) for cue in ELSEWHERE + ("wherever",))
-    settled = set(described_placements(brief, catalog, kinds=frozenset({"settled"} | (
-        set() if elsewhere else {"kept"}))))
+    cued = _elsewhere_cued(unquote(str(brief.get("description", ""))))
+    settled = set(described_placements(brief, catalog, kinds=frozenset({"settled"})))
+    settled |= {f for f in described_placements(brief, catalog, kinds=frozenset({"settled", "kept"}))
+                if not cued(f.split("(", 1)[1].split(",", 1)[0])}
     # where the placement reader or this reader ("The shampoo and the soap are kept in the wall
     # cabinet") finds a thing kept
     kept = set(described_placements(brief, catalog, kinds=frozenset({"kept"}))) | homes
@@ -3343,7 +3341,7 @@ def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Cat
                 if g is f:
                     del slot_factor[slot]
             continue
-        if f.kind == "location" and "elsewhere" in f.values and kept & values and not elsewhere:
+        if f.kind == "location" and "elsewhere" in f.values and kept & values and not cued(f.subject):
             _drop_home(f, kept)
         out.append(f)
     return out
@@ -3356,6 +3354,34 @@ def _at(fact: str) -> tuple[str, str] | None:
     """(thing, holder) of an `on`/`inside` fact, whichever of the two it says."""
     m = _AT.match(fact)
     return (m.group(1), m.group(2)) if m else None
+
+
+#: a line that opens a list item or a new paragraph: where a bulleted note moves on to its next thing
+_BLOCK_BREAK = re.compile(r"\n\s*\n|\n(?=\s*(?:[-*\u2022\u2013]|\d+[.)])\s)")
+
+
+def _elsewhere_cued(description: str) -> Callable[[str], bool]:
+    """Which things a cue of somewhere else (`ELSEWHERE`: "on the hook, or anywhere else, nothing
+    to do") may speak of: in a text of one block, every thing; in a text of paragraphs or list
+    items, the things named in the blocks that say a cue (`_BLOCK_BREAK`), so that one item's
+    "anywhere else" leaves another item's home ("the water bottle lives on the bench") settled.
+    A thing whose role's words no block says is taken as spoken of (the old, text-wide reading)."""
+    # "There's always one left by the door, isn't there, Maureen.": a tag asks for agreement and
+    # says nothing of anywhere else, so its "not there" is no cue of another place (`_TAG`)
+    said = [_TAG.sub(" ", expand(b)) for b in _BLOCK_BREAK.split(description) if b.strip()]
+    blocks = [{w for w, _, _ in tokens(b)} for b in said]
+    texts = [" ".join(w for w, _, _ in tokens(b)) for b in said]
+    flags = [any(re.search(rf"\b{cue}\b", t) for cue in ELSEWHERE + ("wherever",)) for t in texts]
+
+    def cued(role: str) -> bool:
+        if not any(flags):
+            return False
+        if len(blocks) == 1:
+            return True
+        named = [set(words_of(role)) <= b for b in blocks]
+        return not any(named) or any(n and f for n, f in zip(named, flags, strict=True))
+
+    return cued
 
 
 def _drop_home(f: Factor, kept: set[str]) -> None:

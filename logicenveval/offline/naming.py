@@ -200,6 +200,15 @@ USE_OPENERS = frozenset({"that", "which", "wherewith", "wherein", "whereon", "wh
                          "you", "we", "they", "i", "he", "she", "people", "everyone"})
 #: how many words of such a clause are read: a clause of use is short
 _USE_SPAN = 8
+
+#: the words that may stand between a noun and "on the floor" in its own phrase, saying where the
+#: thing stands ("the bowl, which sits on the floor", "a lamp that stands on the floor"): a
+#: relative word and a verb of standing, never a verb of action ("put the bowl on the table and
+#: mop the floor", "the bowl fell on the floor" say where it went, not what kind it is)
+FLOOR_LINKS = frozenset({"which", "that", "is", "sits", "sit", "stands", "stand", "lives", "live", "stays", "stay",
+                         "lies", "lie"})
+#: the nouns of the floor said as the place a thing stands on
+FLOOR_WORDS = frozenset({"floor", "ground"})
 #: words too common to say which of several categories a bare noun means
 _NOT_CONTEXT = frozenset({"floor", "wall", "ceiling", "room"})
 #: "that is a ...", "it was a ...": a predicate noun of a thing already named (`predicate_noun`)
@@ -784,7 +793,9 @@ class _Reader:
         described = i > 0 and self.text.gaps[i] == " " and self.text.words[i - 1] not in _DETERMINERS \
             and self.text.words[i - 1] not in SORT_ADJECTIVES and "ADJ" in getAllLemmas(self.text.raw[i - 1])
 
-        def score(category: str | None) -> tuple[bool, bool, bool, bool, bool, int, bool, bool, bool, int, bool, int, bool, bool]:
+        floor = self.floor_stood(i)
+
+        def score(category: str | None) -> tuple[bool, bool, bool, bool, bool, bool, int, bool, bool, bool, int, bool, int, bool, bool]:
             assert category is not None
             cat = self.catalog.categories[category]
             # the other words of its names that say what it is: not a preposition of a name made
@@ -803,6 +814,9 @@ class _Reader:
                     # what the noun's own clause says it is for ("the towel you dry your hands on",
                     # "a bottle for the pills") names its sort before the head's own name does
                     bool(hints & use),
+                    # the floor its own phrase stands it on names the kind the catalog stands on
+                    # the floor ("the bowl on the floor by the door": a pet's bowl, no cereal bowl)
+                    floor and "floor" in cat.placement,
                     own,
                     # a sort named by its own modifier is that sort, whatever else its sentence says
                     unlisted and HEAD_SENSES.get(word) == category,
@@ -810,7 +824,8 @@ class _Reader:
                     # coffee in the jar; the post is on the table" in a kitchen: no coffee table,
                     # a living room's), any kind where no room id names a type
                     len(hints & said) if fits else 0,
-                    written != word and self.plural_named(category, word), category == exact,
+                    written != word and self.plural_named(category, word),
+                    category == exact,
                     # a kind of the task's own rooms before one a word said elsewhere hints ("tea
                     # and coffee are in the tin" in a kitchen)
                     fits,
@@ -834,6 +849,20 @@ class _Reader:
                     words_of(category)[-1] == word)
 
         return max(candidates, key=score)
+
+    def floor_stood(self, i: int) -> bool:
+        """Whether the noun at word `i` is stood on the floor by its own phrase: "on the floor"
+        (`FLOOR_WORDS`, one modifier allowed: "the kitchen floor") right after it, after a comma
+        or a relative word and a verb of standing (`FLOOR_LINKS`), before the sentence ends."""
+        words, gaps = self.text.words, self.text.gaps
+        k = i + 1
+        while k < len(words) and words[k] in FLOOR_LINKS and gaps[k] in (" ", ", "):
+            k += 1
+        if k + 2 >= len(words) or words[k] != "on" or gaps[k] not in (" ", ", ") or words[k + 1] != "the":
+            return False
+        if words[k + 2] in FLOOR_WORDS and gaps[k + 2] == " ":
+            return True
+        return k + 3 < len(words) and words[k + 3] in FLOOR_WORDS and gaps[k + 2] == gaps[k + 3] == " "
 
     def use_clause(self, i: int) -> set[str]:
         """The words of the clause or phrase right after the noun at word `i` that says what it is

@@ -1410,6 +1410,7 @@ def _fragment(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         # ("then hoy the towel in the hamper", a dialect's instruction, is no statement)
         covered |= {k for a, b in _segments(words, clause.start, j) if b < j and any(foreign(w) for w in words[a:b])
                     for k in range(a, b)}
+    covered |= _premodifiers(words, clause.start, min(m.start for m in subjects))
     if not all(k in covered or w in LIST_GLUE or w in COLOR_WORDS or w in STATE_WORDS
                for k, w in enumerate(words[lo:j], lo) if lo == clause.start or k < clause.start - 1):
         return
@@ -1418,6 +1419,31 @@ def _fragment(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
             continue  # "Toys on the floor!": a heading about a class, no statement of where one is
         for role in _roles(m, sent):
             _put(reading, "settled", catalog, lex, role, found[1], found[0])
+
+
+#: how many words a verbless statement's subject may carry before its name that the names do not
+#: cover: a possessor and a modifier ("Biscuit's water bowl, on the floor by the door")
+_PREMODIFIERS = 2
+
+
+def _premodifiers(words: list[str], start: int, first: int) -> set[int]:
+    """The tokens between a verbless clause's start and its first subject's name that only modify
+    that name: after an article, or opening the sentence or a labelled item ("Item 3 - Biscuit's
+    water bowl, on the floor": the possessive's "'s" is gone from the words), at most
+    `_PREMODIFIERS` words that are nouns and no verb of place ("water" of "the water bowl"), all
+    of them, or none. A clause opened by a verb ("fill Biscuit's bowl, on the floor") is no noun
+    phrase."""
+    if first <= start:
+        return set()
+    article = words[start] in ARTICLES
+    opens = start == 0 or words[start - 1] in _LABEL_MARKS
+    if not article and not (opens and not verb_form(words[start])):
+        return set()
+    loose = list(range(start + 1 if article else start, first))
+    if len(loose) > _PREMODIFIERS or any(not words[k].isalpha() or words[k] in VERBS
+                                         or "NOUN" not in getAllLemmas(words[k]) for k in loose):
+        return set()
+    return set(range(start, first))
 
 
 #: the marks after a label in a record, a list or a form ("Torch: on the bench", "Keys - in the drawer")
@@ -2260,12 +2286,23 @@ def _fallback(sent: _Sentence, before: _Before, lex: Lexicon, catalog: Catalog, 
                 continue  # "where the carton remains on the table, ...": a condition's register
             # the "to" of "has moved to" is where the thing went, of "next to" where it is: no goal
             stated = not {w for k, w in enumerate(words[a:b], a)
-                          if w != "to" or words[k - 1] not in MOVED | PLACE_BEFORE_TO} & UNSTATED \
+                          if (w != "to" or words[k - 1] not in MOVED | PLACE_BEFORE_TO)
+                          and not _corrective_not(words, a, k)} & UNSTATED \
                 and not any(_alternative_place(words, k, len(words)) for k in range(a, min(b + 2, len(words)))
                             if words[k] == "or")
             for kind, item, prep, holder in _fallback_forms(sent, ms, a, b, lex, stated) \
                     + (_structures(sent, before, ms, a, b, lex) if stated else []):
                 _put_new(reading, kind, catalog, lex, item, holder, prep)
+
+
+def _corrective_not(words: list[str], a: int, k: int) -> bool:
+    """Whether the "not" at token `k` opens a corrective tail after a place its part (from `a`)
+    has already stated: "it was left on the filing cabinet, not on the desk", "it's on the shelf,
+    not the desk". The tail denies another place, not the statement; a "not" before the place
+    ("left, not on the cabinet, but ...") or on the verb ("was not left on ...") still does."""
+    return words[k] == "not" and k > a and words[k - 1] == "," and k + 1 < len(words) \
+        and (words[k + 1] in FALLBACK_AT or words[k + 1] in ARTICLES) \
+        and any(w in FALLBACK_AT for w in words[a:k - 1])
 
 
 def _parts(words: list[str], clause: Span) -> list[tuple[int, int]]:
