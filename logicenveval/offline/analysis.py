@@ -2924,8 +2924,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             # ... unless it speaks of a situation of its own ("Finally, a dirty mirror is cleaned:")
             # ("Mirror dirty? Clean it. Use the cloth if we still have one.": an instruction
             # standing alone after a question passes its conditions on)
+            # ("Wipe the table if it's dirty. Use the sponge to wipe it, if there is one.": an
+            # instruction with its tool's availability is an instruction too, see `_serves`)
             carried = (context or carried) if cl.role in ("statement", "consequence") and not any(
-                not f.goal and not f.derived and not f.home for f in cl.facts) else []
+                not f.goal and not f.derived and not f.home for f in cl.facts) or _serves(cl) else (
+                carried if _tool_missing(cl, clauses, current_sentence) else [])
             current_sentence, context = cl.sentence, (context if premise else [])
             answers_premise = premise
         elif (cl.role == "condition" and ci >= 2 and clauses[ci - 1].role == "consequence"
@@ -3183,6 +3186,31 @@ def _capitalised(text: str) -> bool:
     """Whether a clause is a heading written in capitals ("STEP 2", "CLOSING")."""
     letters = re.sub(r"[^A-Za-z]", "", text)
     return len(letters) >= 3 and letters.isupper() and _ANSWER_LABEL.match(text) is None
+
+
+#: the cue of a clause that is an instruction with its tool's availability ("use the sponge, if
+#: there is one"), see `clauses.py`
+_IF_AVAILABLE = "if available"
+
+
+def _serves(cl: Clause) -> bool:
+    """An instruction said with its tool's availability ("Use the sponge to wipe it, if there is
+    one."): it serves the instruction before, as a plain instruction would, so the tool is asked
+    for under that instruction's conditions, not beside them."""
+    return cl.role == "uncertain" and cl.cue == _IF_AVAILABLE and all(
+        f.kind == "exists" for f in cl.facts if not f.goal)
+
+
+def _tool_missing(cl: Clause, clauses: list[Clause], previous: int) -> bool:
+    """A sentence opening with a tool's absence ("If there is no sponge, use a paper towel.")
+    right after a sentence speaking of the tool ("Use the sponge and leave it on the counter."):
+    the fallback of that sentence's instruction, asked under the same conditions. An absence of
+    something the sentence before never spoke of ("Feed the cat. If there is no cat food, ...")
+    is a question of its own."""
+    asked = [f for f in cl.facts if not f.goal]
+    spoken = {m for c in clauses if c.sentence == previous for m in c.mentions}
+    return cl.role == "condition" and bool(asked) and all(
+        f.kind == "exists" and f.subject in spoken for f in asked)
 
 
 def _consistent(context: list[tuple[str, frozenset[str]]]) -> list[tuple[str, frozenset[str]]]:

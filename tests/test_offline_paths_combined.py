@@ -1,0 +1,63 @@
+"""Paths the planner must combine (issue 47, the fourteenth session's second round): every value
+of the task is set somewhere, but a factor asked in a subtask of its own is paired with the other
+subtasks' values as the trajectory cover pleases, so a combination the text nests is never built.
+Each structure below is a composed table written here (several registers and kinds), with near
+misses that must keep their factors apart."""
+
+from __future__ import annotations
+
+import pytest
+from reading import CATALOG
+from reading import brief as _brief
+
+from logicenveval.offline.analysis import analyse
+
+
+def _nested(text: str, rooms: tuple[str, ...]) -> set[tuple[str, str]]:
+    """(factor, factor it is asked under) pairs of the reading of `text`."""
+    return {(f.id, dep) for f in analyse(_brief(text, rooms), CATALOG).factors for dep, _ in f.context}
+
+
+# ----- a tool's availability, said after the instruction it serves ----------------------------------
+# "Wipe the table if it's dirty. Use the sponge to wipe it, if there is one." (an instruction and
+# the tool's availability in one sentence) and "... wipe it down. Use the sponge and leave it on the
+# counter. If there is no sponge, use a paper towel." (the tool's absence opening the sentence after
+# the one using it): the tool is only asked for when the instruction it serves is carried out.
+
+TOOL_AFTER_INSTRUCTION = [
+    # an instruction, then the tool with "if there is one" in a sentence of its own
+    ("Clean the stove if it is dirty. Use the scrubbing brush to do it, if there is one. "
+     "If there is no brush, use a sponge.", ("kitchen",), ("scrub_brush_present", "stove_dirty")),
+    ("fridge dirty? clean it. use the sponge if there is one. no sponge? just use a cloth.",
+     ("kitchen",), ("sponge_present", "fridge_dirty")),
+    ("Please wipe the desk if it is dirty. Use the cloth for it, if there is one; put it in the drawer "
+     "afterwards.", ("office",), ("cloth_present", "desk_dirty")),
+    # an instruction using the tool, then a sentence opening with the tool's absence
+    ("If the mirror is dirty, clean it. Use the cloth and hang it on the rail afterwards. "
+     "If there is no cloth, use a tissue.", ("bathroom",), ("cloth_present", "mirror_dirty")),
+    ("bathtub dirty? scrub it. grab the brush and rinse it under the tap after. "
+     "if theres no brush use the sponge.", ("bathroom",), ("scrub_brush_present", "bathtub_dirty")),
+    ("If the desk is dirty, it must be wiped. The cloth is to be used for this and put back in the "
+     "drawer afterwards. If there is no cloth, a tissue will do.", ("office",), ("cloth_present", "desk_dirty")),
+]
+
+TOOL_NEAR_MISSES = [
+    # the absence is of something the instruction before never spoke of
+    ("Wipe the table if it is dirty. Feed the cat. If there is no cat food, buy some.", ("kitchen",)),
+    ("Clean the mirror if it is dirty. Put the towel on the rail. If there is no soap, tell me.", ("bathroom",)),
+    # an uncertain remark of its own, no instruction: a situation, not the instruction's tool
+    ("Wipe the table if it is dirty. There may be a sponge in the sink.", ("kitchen",)),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "pair"), TOOL_AFTER_INSTRUCTION)
+def test_a_tool_said_after_its_instruction_is_asked_under_its_conditions(
+        text: str, rooms: tuple[str, ...], pair: tuple[str, str]) -> None:
+    """The tool's presence is asked only under the conditions of the instruction it serves, so the
+    planner builds the table dirty both with and without a sponge."""
+    assert pair in _nested(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms"), TOOL_NEAR_MISSES)
+def test_an_unrelated_absence_stays_a_question_of_its_own(text: str, rooms: tuple[str, ...]) -> None:
+    assert not _nested(text, rooms)
