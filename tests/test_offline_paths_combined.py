@@ -61,3 +61,34 @@ def test_a_tool_said_after_its_instruction_is_asked_under_its_conditions(
 @pytest.mark.parametrize(("text", "rooms"), TOOL_NEAR_MISSES)
 def test_an_unrelated_absence_stays_a_question_of_its_own(text: str, rooms: tuple[str, ...]) -> None:
     assert not _nested(text, rooms)
+
+
+# ----- where a tool is, said right after the instruction naming it as the tool ----------------------
+# "Should it be dirty - I wipe it down! - With the sponge, if the sponge is lying on the counter!":
+# the tool's place is its availability, asked under the instruction's conditions like "if there is one".
+
+TOOL_PLACED = [
+    ("Scrub the bathtub if it is dirty. Use the brush if it is on the shelf; if it is not, use the sponge.",
+     ("bathroom",), ("scrub_brush_on_wall_shelf", "bathtub_dirty")),
+    ("desk dirty? wipe it. with the cloth if the cloth is in the drawer. if not, a tissue.",
+     ("office",), ("cloth_inside_drawer", "desk_dirty")),
+    ("MUM: And the stove, should it be dirty -\nKID: I clean it!\nMUM: With the sponge, if the sponge is "
+     "lying in the sink!", ("kitchen",), ("sponge_inside_sink", "stove_dirty")),
+]
+
+TOOL_PLACED_NEAR_MISSES = [
+    # the condition is on where the thing acted on is, not the tool
+    ("Wipe the table if it is dirty. Put the cup in the sink if it is on the table.", ("kitchen",)),
+    ("Clean the mirror if it is dirty. Take the towel to the laundry basket if it is on the floor.", ("bathroom",)),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "pair"), TOOL_PLACED)
+def test_where_a_tool_is_is_asked_under_its_instructions_conditions(
+        text: str, rooms: tuple[str, ...], pair: tuple[str, str]) -> None:
+    assert pair in _nested(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms"), TOOL_PLACED_NEAR_MISSES)
+def test_where_the_thing_acted_on_is_stays_a_question_of_its_own(text: str, rooms: tuple[str, ...]) -> None:
+    assert not _nested(text, rooms)

@@ -2996,7 +2996,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                                            "targets": [], "values": [],
                                            "context": [c for c in context if c[0] != slot and not (
                                                f.kind == "exists" and c[0][0] == f.subject)]
-                                           or [c for c in carried if c[0] != slot and f.kind == "exists"]})
+                                           or [c for c in carried if c[0] != slot and (
+                                               f.kind == "exists" or _tool_placed(clauses, ci, f.subject))]})
             entry.setdefault("places", set()).add((cl.sentence, ci))
             entry["home"] = entry.get("home", True) and f.home and cl.role == "statement" and _home_said(
                 cl.text, opens=ci == 0 or clauses[ci - 1].sentence != cl.sentence)
@@ -3211,6 +3212,23 @@ def _tool_missing(cl: Clause, clauses: list[Clause], previous: int) -> bool:
     spoken = {m for c in clauses if c.sentence == previous for m in c.mentions}
     return cl.role == "condition" and bool(asked) and all(
         f.kind == "exists" and f.subject in spoken for f in asked)
+
+
+#: words naming the tool an instruction is carried out with ("use the sponge", "with the cloth")
+TOOL_WORDS = USING | {"with"}
+
+
+def _tool_placed(clauses: list[Clause], ci: int, subject: str) -> bool:
+    """A condition on where a tool is, right after the instruction naming it as the tool ("With
+    the sponge, if the sponge is lying on the counter!", "use the brush if it is on the shelf"):
+    where the tool is, is whether it is at hand, asked under the conditions of the instruction it
+    serves as its availability is (see `_serves`). A condition on where the thing acted on is
+    ("Put the cup in the sink if it is on the table") is no tool's and stays a question of its own."""
+    if ci == 0 or clauses[ci].role != "condition":
+        return False
+    before = clauses[ci - 1]
+    return before.role == "consequence" and before.sentence == clauses[ci].sentence and (
+        subject in before.mentions) and bool(TOOL_WORDS & set(re.findall(r"[a-z]+", before.text.lower())))
 
 
 def _consistent(context: list[tuple[str, frozenset[str]]]) -> list[tuple[str, frozenset[str]]]:
