@@ -47,6 +47,11 @@ TOOL_NEAR_MISSES = [
     ("Clean the mirror if it is dirty. Put the towel on the rail. If there is no soap, tell me.", ("bathroom",)),
     # an uncertain remark of its own, no instruction: a situation, not the instruction's tool
     ("Wipe the table if it is dirty. There may be a sponge in the sink.", ("kitchen",)),
+    # a topic with "if there is one", no instruction: it carries nothing on
+    ("Put the mug in the sink if it is dirty. Towel, if there is one: hang it on the rail.", ("kitchen",)),
+    # a state of the thing acted on "with" a tool, not where a tool is
+    ("If the mug is dirty, wash it with the sponge. Then clean the stove with a cloth when it is dirty.",
+     ("kitchen",)),
 ]
 
 

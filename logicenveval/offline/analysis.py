@@ -2997,7 +2997,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                                            "context": [c for c in context if c[0] != slot and not (
                                                f.kind == "exists" and c[0][0] == f.subject)]
                                            or [c for c in carried if c[0] != slot and (
-                                               f.kind == "exists" or _tool_placed(clauses, ci, f.subject))]})
+                                               f.kind == "exists" or f.kind == "location"
+                                               and _tool_placed(clauses, ci, f.subject))]})
             entry.setdefault("places", set()).add((cl.sentence, ci))
             entry["home"] = entry.get("home", True) and f.home and cl.role == "statement" and _home_said(
                 cl.text, opens=ci == 0 or clauses[ci - 1].sentence != cl.sentence)
@@ -3198,8 +3199,9 @@ def _serves(cl: Clause) -> bool:
     """An instruction said with its tool's availability ("Use the sponge to wipe it, if there is
     one."): it serves the instruction before, as a plain instruction would, so the tool is asked
     for under that instruction's conditions, not beside them."""
-    return cl.role == "uncertain" and cl.cue == _IF_AVAILABLE and all(
-        f.kind == "exists" for f in cl.facts if not f.goal)
+    # ("Umbrella, if there is one: when it's wet, ..." is a topic, no instruction: it carries nothing)
+    return cl.role == "uncertain" and cl.cue == _IF_AVAILABLE and imperative(
+        re.findall(r"[a-z]+", cl.text.lower())[:2]) and all(f.kind == "exists" for f in cl.facts if not f.goal)
 
 
 def _tool_missing(cl: Clause, clauses: list[Clause], previous: int) -> bool:
