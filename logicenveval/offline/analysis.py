@@ -2925,11 +2925,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             # ... unless it speaks of a situation of its own ("Finally, a dirty mirror is cleaned:")
             # ("Mirror dirty? Clean it. Use the cloth if we still have one.": an instruction
             # standing alone after a question passes its conditions on)
-            # ("Wipe the table if it's dirty. Use the sponge to wipe it, if there is one.": an
-            # instruction with its tool's availability is an instruction too, see `_serves`)
             carried = (context or carried) if cl.role in ("statement", "consequence") and not any(
-                not f.goal and not f.derived and not f.home for f in cl.facts) or _serves(cl) else (
-                carried if _tool_missing(cl, clauses, current_sentence) else [])
+                not f.goal and not f.derived and not f.home for f in cl.facts) else []
             current_sentence, context = cl.sentence, (context if premise else [])
             answers_premise = premise
         elif (cl.role == "condition" and ci >= 2 and clauses[ci - 1].role == "consequence"
@@ -2997,9 +2994,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                                            "targets": [], "values": [],
                                            "context": [c for c in context if c[0] != slot and not (
                                                f.kind == "exists" and c[0][0] == f.subject)]
-                                           or [c for c in carried if c[0] != slot and (
-                                               f.kind == "exists" or f.kind == "location"
-                                               and _tool_placed(clauses, ci, f.subject))]})
+                                           or [c for c in carried if c[0] != slot and f.kind == "exists"]})
             entry.setdefault("places", set()).add((cl.sentence, ci))
             entry["home"] = entry.get("home", True) and f.home and cl.role == "statement" and _home_said(
                 cl.text, opens=ci == 0 or clauses[ci - 1].sentence != cl.sentence)
@@ -3189,49 +3184,6 @@ def _capitalised(text: str) -> bool:
     """Whether a clause is a heading written in capitals ("STEP 2", "CLOSING")."""
     letters = re.sub(r"[^A-Za-z]", "", text)
     return len(letters) >= 3 and letters.isupper() and _ANSWER_LABEL.match(text) is None
-
-
-#: the cue of a clause that is an instruction with its tool's availability ("use the sponge, if
-#: there is one"), see `clauses.py`
-_IF_AVAILABLE = "if available"
-
-
-def _serves(cl: Clause) -> bool:
-    """An instruction said with its tool's availability ("Use the sponge to wipe it, if there is
-    one."): it serves the instruction before, as a plain instruction would, so the tool is asked
-    for under that instruction's conditions, not beside them."""
-    # ("Umbrella, if there is one: when it's wet, ..." is a topic, no instruction: it carries nothing)
-    return cl.role == "uncertain" and cl.cue == _IF_AVAILABLE and imperative(
-        re.findall(r"[a-z]+", cl.text.lower())[:2]) and all(f.kind == "exists" for f in cl.facts if not f.goal)
-
-
-def _tool_missing(cl: Clause, clauses: list[Clause], previous: int) -> bool:
-    """A sentence opening with a tool's absence ("If there is no sponge, use a paper towel.")
-    right after a sentence speaking of the tool ("Use the sponge and leave it on the counter."):
-    the fallback of that sentence's instruction, asked under the same conditions. An absence of
-    something the sentence before never spoke of ("Feed the cat. If there is no cat food, ...")
-    is a question of its own."""
-    asked = [f for f in cl.facts if not f.goal]
-    spoken = {m for c in clauses if c.sentence == previous for m in c.mentions}
-    return cl.role == "condition" and bool(asked) and all(
-        f.kind == "exists" and f.subject in spoken for f in asked)
-
-
-#: words naming the tool an instruction is carried out with ("use the sponge", "with the cloth")
-TOOL_WORDS = USING | {"with"}
-
-
-def _tool_placed(clauses: list[Clause], ci: int, subject: str) -> bool:
-    """A condition on where a tool is, right after the instruction naming it as the tool ("With
-    the sponge, if the sponge is lying on the counter!", "use the brush if it is on the shelf"):
-    where the tool is, is whether it is at hand, asked under the conditions of the instruction it
-    serves as its availability is (see `_serves`). A condition on where the thing acted on is
-    ("Put the cup in the sink if it is on the table") is no tool's and stays a question of its own."""
-    if ci == 0 or clauses[ci].role != "condition":
-        return False
-    before = clauses[ci - 1]
-    return before.role == "consequence" and before.sentence == clauses[ci].sentence and (
-        subject in before.mentions) and bool(TOOL_WORDS & set(re.findall(r"[a-z]+", before.text.lower())))
 
 
 def _consistent(context: list[tuple[str, frozenset[str]]]) -> list[tuple[str, frozenset[str]]]:
@@ -3505,14 +3457,10 @@ PREPARING_WORDS = frozenset({"first", "beforehand"})
 
 def _relates(sentence: int, clauses: list[Clause]) -> bool:
     """Whether the sentence's instruction replaces or prepares an earlier one (`REPLACING_WORDS`,
-    an empty `else` clause, or `PREPARING_WORDS` after its clause's first word), or opens with
-    "unless": "If it is dirty, into the dishwasher it goes! Unless the dishwasher is already
-    running: then into the sink" is the exception to the instruction before, as "instead" would
-    say."""
-    own = [c for c in clauses if c.sentence == sentence]
-    if own and own[0].role == "condition" and own[0].cue == "unless":
-        return True
-    for c in own:
+    an empty `else` clause, or `PREPARING_WORDS` after its clause's first word)."""
+    for c in clauses:
+        if c.sentence != sentence:
+            continue
         words = re.findall(r"[a-z]+", c.text.lower())
         # (an `else` clause with no words of its own is "instead" closing the instruction before
         # it; one with words is the alternative of its own sentence's condition: "wipe w/ sponge
