@@ -91,13 +91,18 @@ class Axioms:
         return z3.Or(*[self.cond(o) for o in c.operands])
 
     def possible(self, *conds: Cond) -> bool:
-        """Whether `conds` can all hold in one environment under the axioms."""
-        return self.witness(*(self.cond(c) for c in conds)) is not None
+        """Whether `conds` can all hold in one environment under the axioms (a plain check: the
+        planner asks it per factor response on every path, and needs no model)."""
+        return bool(self._solver(*(self.cond(c) for c in conds)).check() == z3.sat)
+
+    def _solver(self, *formulas: z3.BoolRef) -> z3.Solver:
+        s = z3.Solver(ctx=self.ctx)
+        s.add(*self.axioms, *formulas)
+        return s
 
     def witness(self, *formulas: z3.BoolRef) -> str | None:
         """A satisfying assignment of the true atoms, or None when the formulas are unsat."""
-        s = z3.Solver(ctx=self.ctx)
-        s.add(*self.axioms, *formulas)
+        s = self._solver(*formulas)
         if s.check() != z3.sat:
             return None
         m = s.model()
