@@ -1966,6 +1966,9 @@ def _come_upon(clauses: list[Clause], sentence: int, text: str) -> tuple[list[Fa
 
 #: adverbs that make what someone does a habit ("always", "never" too: "the door never gets shut")
 _HABIT_ADVERBS = FREQUENCY | NORM_ADVERBS | {"never"}
+#: the adverbs that may stand between "be" and a ranked "one" (`_says_who`), as `tokens` gives
+#: them ("always" -> "alway")
+_RANK_ADVERBS = _HABIT_ADVERBS | {singular(w) for w in _HABIT_ADVERBS} | {"still"}
 
 
 def _habit_of_others(text: str) -> bool:
@@ -2526,8 +2529,7 @@ def _says_who(words: list[str], i: int) -> bool:
     text named before it."""
     if i < 3 or words[i - 1] not in _RANKS or words[i - 2] != "the":
         return False
-    # (the words as `tokens` gives them: "always" -> "alway")
-    k = i - 4 if words[i - 3] in _HABIT_ADVERBS | {singular(w) for w in _HABIT_ADVERBS} | {"still"} else i - 3
+    k = i - 4 if words[i - 3] in _RANK_ADVERBS else i - 3
     return k >= 0 and words[k] in _BE_WORDS | {"am"}
 #: pronoun subjects of such a condition before a participle of finding or leaving, or "still"
 #: ("if they're still there": not "already", which asks of a goal, `_already`): "If found
@@ -2630,6 +2632,12 @@ def _asked_again(said: str, facts: list[Fact], lex: Lexicon | None = None) -> se
             {f.subject for f in facts}) != 1 or any(
             f.kind not in ("location", "exists") for f in facts):
         return set()
+    return _placed_where(facts)
+
+
+def _placed_where(facts: list[Fact]) -> set[str]:
+    """The on/inside placements among `facts` that say where a thing is (no goal, no home): what
+    a condition asking a place again, or an "already" relative, leaves unsettled."""
     return {f.condition for f in facts if f.kind == "location" and not (f.goal or f.home)
             and f.condition.startswith(("on(", "inside("))}
 
@@ -2877,8 +2885,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             facts = _already_relative(said, facts)
             if facts is not before_relative:
                 # (which no statement settles: `_settle_stated`)
-                reader.doubted |= {f.condition for f in facts if f.kind == "location" and not f.home
-                                   and f.condition.startswith(("on(", "inside("))}
+                reader.doubted |= _placed_where(facts)
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
         if bullets[si] is not None and si + 1 < len(sentences) and bullets[si + 1] == bullets[si]:
             continue  # "* Bedroom: table lamp on? -> off. Wardrobe doors open? -> close.": one item
@@ -3368,9 +3375,9 @@ def _elsewhere_cued(description: str) -> Callable[[str], bool]:
     A thing whose role's words no block says is taken as spoken of (the old, text-wide reading)."""
     # "There's always one left by the door, isn't there, Maureen.": a tag asks for agreement and
     # says nothing of anywhere else, so its "not there" is no cue of another place (`_TAG`)
-    said = [_TAG.sub(" ", expand(b)) for b in _BLOCK_BREAK.split(description) if b.strip()]
-    blocks = [{w for w, _, _ in tokens(b)} for b in said]
-    texts = [" ".join(w for w, _, _ in tokens(b)) for b in said]
+    said = [[w for w, _, _ in tokens(_TAG.sub(" ", expand(b)))] for b in _BLOCK_BREAK.split(description) if b.strip()]
+    blocks = [set(ws) for ws in said]
+    texts = [" ".join(ws) for ws in said]
     flags = [any(re.search(rf"\b{cue}\b", t) for cue in ELSEWHERE + ("wherever",)) for t in texts]
 
     def cued(role: str) -> bool:
