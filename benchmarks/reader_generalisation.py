@@ -191,6 +191,24 @@ prints LogCov / SceVR / FauDR for each, then per task:
   report's observations, a service manual's troubleshooting table, a peer reviewer's report, a
   maintenance task card, a Finnish cottage owner's note about the sauna). Fresh (`FRESH`) until
   the coordinator's first measurement;
+- `dev27 reworded` and `dev27 new`: tests/data/reader_dev27/ — the twenty-seventh development set,
+  written in the fifteenth session (beside dev 28, each in its own family of registers) in
+  registers of law, finance, insurance, government forms and religious life no set used and the
+  English of a Turkish speaker: one rewording each of 3 built-in descriptions (a family court's
+  consent order, a company's notice of annual general meeting, a catechism) and six new tasks in
+  rooms none of the sets above use (a solicitor's letter before action, a building society's
+  account statement, an insurance product information document, an application form for a
+  weekend pass, a chapel's order of service, a Turkish host's note about the guest room). Fresh
+  (`FRESH`) until the coordinator's first measurement;
+- `dev28 reworded` and `dev28 new`: tests/data/reader_dev28/ — the twenty-eighth development set,
+  written in the fifteenth session (beside dev 27, each in its own family of registers) in
+  registers of childcare, elder care, hospitality, retail and farming no set used and the English
+  of a Hungarian speaker: one rewording each of 3 built-in descriptions (a telecare operator's
+  call-out sheet, a garden centre's aftercare job card, a farm volunteer's morning card) and six
+  new tasks in rooms none of the sets above use (a day nursery's daily diary, a home care
+  agency's daily visit record, a pub's taproom close-down card, a store chain's weekly store
+  communication, a dairy farm's relief milker notes, a Hungarian flatmate's note). Fresh
+  (`FRESH`) until the coordinator's first measurement;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -224,7 +242,7 @@ was written for (a rule too wide shows as a task of another set falling):
 
 `--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: dev 25 and
 dev 26, written in the fourteenth session, in which dev 23 and dev 24 left it after their third
-measurement), so a tuner's runs
+measurement, and dev 27 and dev 28, written in the fifteenth), so a tuner's runs
 never show them; `--dev-only --fresh` keeps them, to measure them. `--skip 'dev9 reworded,dev9 new'` leaves any other rows' sets out as well.
 
 `--placements` measures instead the reader's recall of stated placements, without running a
@@ -277,7 +295,7 @@ dev5_new=... dev6_reworded=... dev6_new=... dev7_reworded=... dev7_new=... dev8_
 dev8_new=... dev9_reworded=... dev9_new=... dev10_reworded=... dev10_new=... dev11_reworded=...
 dev11_new=... dev12_reworded=... dev12_new=... dev13_reworded=... dev13_new=... dev14_reworded=... dev14_new=...
 dev15_reworded=... dev15_new=... dev16_reworded=... dev16_new=... dev17_reworded=... dev17_new=...
-dev18_reworded=... dev18_new=... dev19_reworded=... dev19_new=... dev20_reworded=... dev20_new=... dev21_reworded=... dev21_new=... dev22_reworded=... dev22_new=... dev23_reworded=... dev23_new=... dev24_reworded=... dev24_new=... dev25_reworded=... dev25_new=... dev26_reworded=... dev26_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
+dev18_reworded=... dev18_new=... dev19_reworded=... dev19_new=... dev20_reworded=... dev20_new=... dev21_reworded=... dev21_new=... dev22_reworded=... dev22_new=... dev23_reworded=... dev23_new=... dev24_reworded=... dev24_new=... dev25_reworded=... dev25_new=... dev26_reworded=... dev26_new=... dev27_reworded=... dev27_new=... dev28_reworded=... dev28_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
 rows only).
 """
 
@@ -329,6 +347,8 @@ DEV23 = ROOT / "tests" / "data" / "reader_dev23"
 DEV24 = ROOT / "tests" / "data" / "reader_dev24"
 DEV25 = ROOT / "tests" / "data" / "reader_dev25"
 DEV26 = ROOT / "tests" / "data" / "reader_dev26"
+DEV27 = ROOT / "tests" / "data" / "reader_dev27"
+DEV28 = ROOT / "tests" / "data" / "reader_dev28"
 HOLDOUT2 = ROOT / "tests" / "data" / "reader_holdout2"
 #: (row name, tasks folder; None = the built-in tasks)
 SETS: tuple[tuple[str, Path | None], ...] = (
@@ -358,6 +378,8 @@ SETS: tuple[tuple[str, Path | None], ...] = (
     ("dev24 reworded", DEV24 / "tasks_reworded"), ("dev24 new", DEV24 / "tasks_new"),
     ("dev25 reworded", DEV25 / "tasks_reworded"), ("dev25 new", DEV25 / "tasks_new"),
     ("dev26 reworded", DEV26 / "tasks_reworded"), ("dev26 new", DEV26 / "tasks_new"),
+    ("dev27 reworded", DEV27 / "tasks_reworded"), ("dev27 new", DEV27 / "tasks_new"),
+    ("dev28 reworded", DEV28 / "tasks_reworded"), ("dev28 new", DEV28 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
     ("held-out2 reworded", HOLDOUT2 / "tasks_reworded"), ("held-out2 new", HOLDOUT2 / "tasks_new"),
 )
@@ -366,7 +388,9 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH: frozenset[str] = frozenset({"dev25 reworded", "dev25 new", "dev26 reworded", "dev26 new"})
+FRESH: frozenset[str] = frozenset({"dev25 reworded", "dev25 new", "dev26 reworded", "dev26 new",
+                                   "dev27 reworded", "dev27 new",
+                                   "dev28 reworded", "dev28 new"})
 GENERATOR = "logicenvgen"
 
 

@@ -1,7 +1,8 @@
-"""The reader's fifth to twenty-sixth development sets (tests/data/reader_dev5/, reader_dev6/,
+"""The reader's fifth to twenty-eighth development sets (tests/data/reader_dev5/, reader_dev6/,
 reader_dev7/, reader_dev8/, reader_dev9/, reader_dev10/, reader_dev11/, reader_dev12/, reader_dev13/,
 reader_dev14/, reader_dev15/, reader_dev16/, reader_dev17/, reader_dev18/, reader_dev19/, reader_dev20/,
-reader_dev21/, reader_dev22/, reader_dev23/, reader_dev24/, reader_dev25/, reader_dev26/): new tasks and rewordings written from the task format, the
+reader_dev21/, reader_dev22/, reader_dev23/, reader_dev24/, reader_dev25/, reader_dev26/,
+reader_dev27/, reader_dev28/): new tasks and rewordings written from the task format, the
 catalog and the built-in tasks, without reading the offline reader or running it on them, for rounds of reader
 rules to be tuned on. One table of what differs between them; the same checks for each.
 
@@ -81,6 +82,18 @@ installation condition report's observations, a service manual's troubleshooting
 reviewer's report, an engineering maintenance task card, a surgical safety checklist, a garage's
 vehicle health check, a clinical trial protocol synopsis) and the English of a Finnish speaker, in
 room ids beginning with a letter n-z.
+dev 27 was written in the fifteenth session beside dev 28 (each in its own family of registers):
+writing of law, finance, insurance, government forms and religious life (a solicitor's letter
+before action, a building society's account statement, an insurance product information
+document, an application form with its guidance notes, a chapel's order of service, a family
+court's consent order, a company's notice of annual general meeting, a catechism) and the English
+of a Turkish speaker, in room ids beginning with a letter a-m.
+dev 28 was written in the fifteenth session beside dev 27 (each in its own family of registers):
+writing of childcare, elder care, hospitality, retail and farming (a day nursery's daily diary, a
+home care agency's daily visit record, a pub's taproom close-down card, a store chain's weekly
+store communication, a dairy farm's relief milker notes, a telecare operator's call-out sheet, a
+garden centre's aftercare job card, a farm volunteer's morning card) and the English of a
+Hungarian speaker, in room ids beginning with a letter n-z.
 """
 
 from __future__ import annotations
@@ -157,6 +170,8 @@ SETS = (
     DevSet("reader_dev24", "_d24", 3, 6, ("outhouse_planning_decision_notice", "clean_living_room_d24")),
     DevSet("reader_dev25", "_d25", 3, 6, ("cycle_store_club_run_sheet", "multi_room_pet_care_d25")),
     DevSet("reader_dev26", "_d26", 3, 6, ("plant_room_eicr_observations", "hallway_coat_and_bag_d26")),
+    DevSet("reader_dev27", "_d27", 3, 6, ("chapel_order_of_service", "bathroom_counter_sort_d27")),
+    DevSet("reader_dev28", "_d28", 3, 6, ("taproom_pub_close_down_card", "living_room_plant_care_d28")),
 )
 IDS = [s.name for s in SETS]
 ENTRIES = {s.name: rewordings(DATA / s.name) for s in SETS}
