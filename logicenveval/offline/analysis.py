@@ -3464,10 +3464,14 @@ PREPARING_WORDS = frozenset({"first", "beforehand"})
 
 def _relates(sentence: int, clauses: list[Clause]) -> bool:
     """Whether the sentence's instruction replaces or prepares an earlier one (`REPLACING_WORDS`,
-    an empty `else` clause, or `PREPARING_WORDS` after its clause's first word)."""
-    for c in clauses:
-        if c.sentence != sentence:
-            continue
+    an empty `else` clause, or `PREPARING_WORDS` after its clause's first word), or opens with
+    "unless": "If it is dirty, into the dishwasher it goes! Unless the dishwasher is already
+    running: then into the sink" is the exception to the instruction before, as "instead" would
+    say."""
+    own = [c for c in clauses if c.sentence == sentence]
+    if own and own[0].role == "condition" and own[0].cue == "unless":
+        return True
+    for c in own:
         words = re.findall(r"[a-z]+", c.text.lower())
         # (an `else` clause with no words of its own is "instead" closing the instruction before
         # it; one with words is the alternative of its own sentence's condition: "wipe w/ sponge

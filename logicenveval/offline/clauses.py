@@ -549,7 +549,10 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
         nested = _first_cue(cond.lower()[1:], CONDITIONAL)
         if nested:
             cut = nested[0] + 1
-            pieces.append((cond[:cut], cue, "condition"))
+            main = _imperative_cut(cond[:cut], subjects_only=True)
+            pieces.append((cond[:cut] if main is None else cond[:main], cue, "condition"))
+            if main is not None:  # "if it is off the helper switches it on - unless ...": its main clause
+                pieces.append((cond[main:cut], cue, "consequence"))
             pieces += _split(cond[cut:])
         else:
             imp = _imperative_cut(cond)
@@ -568,7 +571,9 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
     # its dirty put it in the sink, otherwise in the cupboard": the instruction came before it)
     before_else = m is not None and re.match(
         rf",\s*(?:{'|'.join(re.escape(c) for c in ALTERNATIVES)})\b", tail[m.start():], re.I) is not None
-    imp = _imperative_cut(cond) if m is None or before_else else None
+    # ("so if it is off the helper switches it on - unless ...": before the condition's dash or
+    # comma, a main clause with a subject of its own still ends it, see `_main_clause`)
+    imp = _imperative_cut(cond) if m is None or before_else else _imperative_cut(cond, subjects_only=True)
     if imp is not None:
         cond, cons = cond[:imp], cond[imp:] + (tail[m.start():] if m else "")
     alt = re.match(r"\s*or\s+[^,;]*,\s*", cons, re.I) if m and tail[m.start()] == "," else None
@@ -598,13 +603,36 @@ DIRECTIONS = frozenset({"into", "onto"})
 _PREDICATES = frozenset({"is", "are", "was", "were", "has", "have", "had", "there"}) | frozenset(STATE_WORDS)
 
 
-def _imperative_cut(cond: str) -> int | None:
+#: subjects that open a main clause of their own after a condition typed without its comma
+MAIN_SUBJECTS = frozenset({"you", "we", "i", "they", "he", "she"})
+
+
+def _main_clause(ws: list[str], k: int) -> bool:
+    """A main clause with a subject of its own right after a condition's state word, the comma
+    left out ("if it is off the helper switches it on", "if the window is open you close it"):
+    a subject pronoun, or "the" and one or two words, then a verb and its object. The state
+    word must end the condition: "if the cup is off the table the helper ..." has a place after
+    "off", and "the table" is followed by no verb; "if it is off the shelf put it back" has an
+    imperative, no verb agreeing with "the shelf"."""
+    if ws[k - 1] not in STATE_WORDS:
+        return False
+    if ws[k] in MAIN_SUBJECTS:
+        return imperative(ws[k + 1:k + 3])
+    # (the verb agrees with its subject: "the helper switches it", not "off the shelf put it back")
+    return ws[k] == "the" and any(
+        ws[k + n].endswith("s") and ws[k + n] not in getAllLemmas(ws[k + n]).get("VERB", (ws[k + n],))
+        and ws[k + n + 1] in OBJECT_STARTS for n in (2, 3) if k + n + 1 < len(ws))
+
+
+def _imperative_cut(cond: str, subjects_only: bool = False) -> int | None:
     """Where a condition typed without a comma runs into its instruction ("if its not in there
     put it in there", "if the lamp is still on turn it off", "if empty bin it"): before the first
     imperative (a base-form verb and its object or particle, `imperative`) that follows a
     predicate (a copula, "there" or a state word), not its subject or a modal, or before a
     request ("if it still is can you shut it"). None if there is no such verb (the whole text is
-    the condition)."""
+    the condition). Before the condition's own comma or dash (`subjects_only`) only a main clause
+    with a subject of its own ends it: an imperative there is the condition's ("if you find it
+    off the shelf put back, ...") as often as not."""
     said = expand(cond).lower()
     ws = list(re.finditer(r"[a-z]+", said))
     for k in range(1, len(ws) - 1):
@@ -628,7 +656,8 @@ def _imperative_cut(cond: str) -> int | None:
         # a terse instruction with its verb dropped after a bare state ("if wet into laundry
         # basket", "IF DIRTY ONTO THE PILE"): the direction starts it (`DIRECTIONS`)
         bare = ws[k].group() in DIRECTIONS and ws[k - 1].group() in STATE_WORDS
-        if request or bare or imperative([ws[k].group(), ws[k + 1].group()]):
+        if not subjects_only and (request or bare or imperative([ws[k].group(), ws[k + 1].group()])) or _main_clause(
+                [w.group() for w in ws], k):
             # the same words in the text as written (the expansion only lengthens what is before)
             rest = said[ws[k].start():]
             at = cond.lower().rfind(rest)
