@@ -11,7 +11,6 @@ from reading import brief as _brief
 
 from logicenveval.offline.analysis import analyse
 
-
 # ----- a leading condition with no comma before a main clause with a subject of its own -------------
 # "so if it is off the helper switches it on - unless its bulb is broken": without the comma the
 # condition ran on into its main clause, read "on" (of "switches it on") as the condition's state,

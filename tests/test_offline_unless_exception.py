@@ -11,7 +11,6 @@ from reading import brief as _brief
 
 from logicenveval.offline.analysis import analyse
 
-
 # ----- a sentence opening with "Unless", after an instruction that names its thing ------------------
 # "If it is dirty, into the dishwasher it goes! Unless - ah, unless! - the dishwasher is already
 # running: then into the sink": the exception to the instruction before, so the dishwasher's state
