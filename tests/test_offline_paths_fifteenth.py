@@ -84,3 +84,51 @@ def test_an_elided_existential_after_its_instruction_asks_for_the_tool(text: str
     assert tool in {f.id for f in a.factors}
     assert a.groups == groups
 
+
+# -- an exception opening with "unless" after a label, to an instruction read from a modifier ------
+#
+# "A clean lunch box goes in the cupboard, a dirty one in the dishwasher. Advisory: unless the
+# dishwasher is running - then leave it on the counter": the sentence opening with "unless" is the
+# exception to the instruction before (`_relates`), whatever label ("Note:", "NB:", "Caution -")
+# opens it, and the thing its instruction moves ("leave it on the counter") is the thing of the
+# factor before, though that factor, read from a modifier ("a dirty one"), has no instruction of its
+# own naming the machine.
+
+#: (text, rooms, the subtask that must hold both factors)
+EXCEPTION: list[tuple[str, tuple[str, ...], list[str]]] = [
+    # a work sheet: a label before the exception, the thing's factor from an instruction
+    ("If the mug is dirty, it goes into the dishwasher. Note: unless the dishwasher is already running - in "
+     "which case leave it in the sink.", ("kitchen",), ["mug_dirty", "dishwasher_toggled_on"]),
+    # a house rule: the thing's factor from a modifier, no label
+    ("A dirty mug goes into the dishwasher. Unless the dishwasher is already running - in which case leave it "
+     "in the sink.", ("kitchen",), ["mug_dirty", "dishwasher_toggled_on"]),
+    # a terse checklist: both, another room, thing and machine
+    ("A wet towel goes in the dryer. NB: unless the dryer is running, in which case hang it on the towel rack.",
+     ("laundry_room",), ["towel_wet", "dryer_toggled_on"]),
+    # a formal notice, a dash after the label
+    ("Soiled shirts are to be placed in the washing machine. Caution - unless the washing machine is running, in "
+     "which case the shirt is to be put in the hamper.", ("laundry_room",),
+     ["shirt_dirty", "washing_machine_toggled_on"]),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "group"), EXCEPTION)
+def test_an_exception_after_a_label_joins_the_instruction_it_excepts(text: str, rooms: tuple[str, ...],
+                                                                     group: list[str]) -> None:
+    assert group in _groups(text, rooms)
+
+
+#: near misses: a label before a condition that is no exception ("if"), an exception whose
+#: instruction moves nothing and names neither thing, a label that is a statement of its own
+EXCEPTION_APART: list[tuple[str, tuple[str, ...], list[list[str]]]] = [
+    ("A dirty mug goes into the dishwasher. Note: if the kettle is on, switch it off.", ("kitchen",),
+     [["mug_dirty"], ["kettle_toggled_on"]]),
+    ("A wet towel goes in the dryer. NB: unless the lamp is off, switch it off.", ("laundry_room",),
+     [["towel_wet"], ["ceiling_lamp_toggled_on"]]),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "groups"), EXCEPTION_APART)
+def test_a_label_before_no_exception_joins_nothing(text: str, rooms: tuple[str, ...],
+                                                   groups: list[list[str]]) -> None:
+    assert _groups(text, rooms) == groups
