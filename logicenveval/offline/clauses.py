@@ -502,7 +502,11 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
     after = re.match(r"\W*([a-z' ]{0,30}?)\W*(?:$|[,;]|\s-\s)", expand(low[start + len(cue):]))
     if cue in ("if", "in case") and after and set(after.group(1).split()) & AVAILABILITY \
             and len(after.group(1).split()) <= 3 and not set(after.group(1).split()) & NEGATIONS \
-            and after.group(1).split()[0] not in _THING_PRONOUNS:
+            and after.group(1).split()[0] not in _THING_PRONOUNS and not (
+                ELIDED_EXISTENTIAL.match(after.group(1).strip())
+                and set(re.findall(r"[a-z]+", low[:start])) <= DISCOURSE):
+        # (an elided existential opening its sentence, "Is there a towel inside? If there is,
+        # ...", has no instruction before it to give a tool: it points back, `points_back`)
         # "with the wipes if there are any, else with the mop": the alternative is its own piece
         other = re.search(r"[,;]\s*(?:otherwise|else|or else|failing that)\b", sentence[start:], re.I)
         if other is not None:
@@ -722,11 +726,18 @@ def either_state(words: list[str]) -> bool:
     return False
 
 
+#: an existential said without its noun ("Is there a towel inside the dryer? If there is, ...",
+#: "if there aren't"): the question's "there is a towel" elided, as "if so" leaves it out
+ELIDED_EXISTENTIAL = re.compile(r"^there (?:is|are|was|were)(?: not)?$")
+
+
 def points_back(text: str) -> bool:
     """Whether a condition's words only point back to a clause before it ("if so", "if it is not",
-    "should that be the case", "when that happens"): its content is that clause's, which the
-    reader links it to (an empty condition, the text of "if so", points back too)."""
-    return all(w in ANAPHORIC | {"not"} for w, _, _ in tokens(expand(text)))
+    "should that be the case", "when that happens", "if there is": `ELIDED_EXISTENTIAL`): its
+    content is that clause's, which the reader links it to (an empty condition, the text of "if
+    so", points back too)."""
+    words = [w for w, _, _ in tokens(expand(text))]
+    return all(w in ANAPHORIC | {"not"} for w in words) or ELIDED_EXISTENTIAL.match(" ".join(words)) is not None
 
 
 # ---------------------------------------------------------------------------------------------
