@@ -326,6 +326,26 @@ _FRONTED_ALREADY = re.compile(
 _TAKEN_UP = re.compile(r"\b(?:it|them)\b", re.I)
 
 
+#: a learner's participle without its ending at a condition's end ("If curtain still close, open
+#: it", "if bucket not fill yet", "if the door already close"): after the subject and "is"/"are",
+#: "still", "already" or "not", a verb's plain form whose "-ed" form is a state (`STATE_WORDS`:
+#: "closed", "filled", "cracked") and that ends its clause is that state; "close to the house" goes
+#: on, "if you still use it" has a person for its subject and an object, and neither is read so
+_BARE_PARTICIPLE = re.compile(
+    r"\b(?P<head>(?:if|unless|when|whenever)\s+(?:(?:the|my|your|our|his|her|their|this|that)\s+)?"
+    r"(?P<subj>[a-z]+)(?:\s+[a-z]+)?\s+(?P<marks>(?:(?:is|are|still|already|not)\s+)+))(?P<verb>[a-z]+)"
+    r"(?=\s*(?:[,.;:!?)]|$)|\s+(?:already|yet|then|please|pls)\b)", re.I | re.M)
+
+
+def _participle_state(m: re.Match[str]) -> str:
+    """The `_BARE_PARTICIPLE` match with its verb as the state's participle, when it is one."""
+    verb = m.group("verb").lower()
+    done = next((f for f in (verb + "ed", verb + "d") if f in STATE_WORDS), None)
+    if done is None or verb in STATE_WORDS or m.group("subj").lower() in PERSONAL_SUBJECTS:
+        return m.group(0)
+    return m.group("head") + done
+
+
 def _postposed(m: re.Match[str]) -> str:
     """The sentence with its fronted condition after the main clause's instruction. When the main
     clause goes on after a comma with words that take up no thing by a pronoun ("Unless it's
@@ -961,7 +981,8 @@ def unquote(text: str) -> str:
     thing gone said as "missing" (`ABSENCE_PREDICATES`), a predicate state's elided subject, a
     second predicate's shared subject and a note's dropped subject of doubt spelled out
     (`_ELIDED_PREDICATE`, `_SHARED_SUBJECT`, `_DROPPED_DOUBT`), and an inverted question's
-    participle read as its state (`_QUESTION_PREDICATE`)."""
+    participle read as its state (`_QUESTION_PREDICATE`), and a learner's participle without its
+    ending at a condition's end as the state ("if curtain still close": `_BARE_PARTICIPLE`)."""
     text = _DASHED_ASIDE.sub(r"\g<cue> ", text)
     text = _SUPPOSED_IF.sub(_occasion_if, _OCCASION_IF.sub(_occasion_if, _COMMENT_ASIDE.sub(" ", _QUOTED_WHOLE.sub(r"\1", text))))
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
@@ -978,6 +999,7 @@ def unquote(text: str) -> str:
     plain = _ELIDED_PREDICATE.sub(r"\1 it is ", plain)
     plain = _PREDICATE_STATE.sub(lambda m: m.group(1) + _predicate(m.group(2)), plain)
     plain = _QUESTION_PREDICATE.sub(lambda m: m.group(1) + _predicate(m.group(2)), plain)
+    plain = _BARE_PARTICIPLE.sub(_participle_state, plain)
     plain = _EMPHATIC_DO.sub("", plain)
     plain = _ELIDED_END_STATE.sub(r"\1 it is ", _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", _ELIDED_PLACE.sub(r"\1 it is ", plain))))
     plain = _DROPPED_SUBJECT.sub(lambda m: f"{m.group(1)} {_DROPPED_PRONOUN[m.group(2).lower()]} ", plain)
