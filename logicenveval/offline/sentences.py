@@ -322,9 +322,41 @@ _FRONTED_ALREADY = re.compile(
     r"(?P<main>[^,.;:!?\n][^.;:!?\n]*?)(?P<end>[.;!?]|$)", re.M)
 
 
+#: a thing taken up by a pronoun, in a main clause's first stretch or in what follows its comma
+_TAKEN_UP = re.compile(r"\b(?:it|them)\b", re.I)
+
+
+#: a learner's participle without its ending at a condition's end ("If curtain still close, open
+#: it", "if bucket not fill yet", "if the door already close"): after the subject and "is"/"are",
+#: "still", "already" or "not", a verb's plain form whose "-ed" form is a state (`STATE_WORDS`:
+#: "closed", "filled", "cracked") and that ends its clause is that state; "close to the house" goes
+#: on, "if you still use it" has a person for its subject and an object, and neither is read so
+_BARE_PARTICIPLE = re.compile(
+    r"\b(?P<head>(?:if|unless|when|whenever)\s+(?:(?:the|my|your|our|his|her|their|this|that)\s+)?"
+    r"(?P<subj>[a-z]+)(?:\s+[a-z]+)?\s+(?P<marks>(?:(?:is|are|still|already|not)\s+)+))(?P<verb>[a-z]+)"
+    r"(?=\s*(?:[,.;:!?)]|$)|\s+(?:already|yet|then|please|pls)\b)", re.I | re.M)
+
+
+def _participle_state(m: re.Match[str]) -> str:
+    """The `_BARE_PARTICIPLE` match with its verb as the state's participle, when it is one."""
+    verb = m.group("verb").lower()
+    done = next((f for f in (verb + "ed", verb + "d") if f in STATE_WORDS), None)
+    if done is None or verb in STATE_WORDS or m.group("subj").lower() in PERSONAL_SUBJECTS:
+        return m.group(0)
+    return m.group("head") + done
+
+
 def _postposed(m: re.Match[str]) -> str:
-    main = m.group("main")
-    return f"{m.group('lead')}{main[:1].upper()}{main[1:]}, {m.group('cue').lower()} {m.group('cond')}{m.group('end')}"
+    """The sentence with its fronted condition after the main clause's instruction. When the main
+    clause goes on after a comma with words that take up no thing by a pronoun ("Unless it's
+    already full, fill it at the sink, ready for when we get back with our frames"), the condition
+    goes before that tail, beside the instruction whose result "already" asks: after the tail its
+    pronoun would take up the last thing the tail names."""
+    main, cond = m.group("main"), f"{m.group('cue').lower()} {m.group('cond')}"
+    head, comma, tail = main.partition(", ")
+    if comma and _TAKEN_UP.search(head) and not _TAKEN_UP.search(tail):
+        main, cond = head, f"{cond}, {tail}"
+    return f"{m.group('lead')}{main[:1].upper()}{main[1:]}, {cond}{m.group('end')}"
 
 
 _SELF_CORRECTION = re.compile(rf"\b{_PLACE_PREP}[^,.;:!?()]{{1,40}}?[\s,\-\u2013\u2014]+"
@@ -949,7 +981,8 @@ def unquote(text: str) -> str:
     thing gone said as "missing" (`ABSENCE_PREDICATES`), a predicate state's elided subject, a
     second predicate's shared subject and a note's dropped subject of doubt spelled out
     (`_ELIDED_PREDICATE`, `_SHARED_SUBJECT`, `_DROPPED_DOUBT`), and an inverted question's
-    participle read as its state (`_QUESTION_PREDICATE`)."""
+    participle read as its state (`_QUESTION_PREDICATE`), and a learner's participle without its
+    ending at a condition's end as the state ("if curtain still close": `_BARE_PARTICIPLE`)."""
     text = _DASHED_ASIDE.sub(r"\g<cue> ", text)
     text = _SUPPOSED_IF.sub(_occasion_if, _OCCASION_IF.sub(_occasion_if, _COMMENT_ASIDE.sub(" ", _QUOTED_WHOLE.sub(r"\1", text))))
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
@@ -966,6 +999,7 @@ def unquote(text: str) -> str:
     plain = _ELIDED_PREDICATE.sub(r"\1 it is ", plain)
     plain = _PREDICATE_STATE.sub(lambda m: m.group(1) + _predicate(m.group(2)), plain)
     plain = _QUESTION_PREDICATE.sub(lambda m: m.group(1) + _predicate(m.group(2)), plain)
+    plain = _BARE_PARTICIPLE.sub(_participle_state, plain)
     plain = _EMPHATIC_DO.sub("", plain)
     plain = _ELIDED_END_STATE.sub(r"\1 it is ", _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", _ELIDED_PLACE.sub(r"\1 it is ", plain))))
     plain = _DROPPED_SUBJECT.sub(lambda m: f"{m.group(1)} {_DROPPED_PRONOUN[m.group(2).lower()]} ", plain)
@@ -1259,11 +1293,27 @@ _LINE_PLACES = frozenset({"on", "in", "inside", "under", "by", "near", "beside",
                           "next", "against", "upon", "atop"})
 
 
+#: words that open a clause of their own (a condition's cue, a conjunction, "then"): after a pause
+#: they go on as a sentence of their own would, whose conditions the reader joins up itself ("Your
+#: shirt... if it's clean fold it away in the wardrobe... if it's dirty ...": read as one sentence
+#: with commas, the first condition would run on to "in the wardrobe in your bedroom")
+PAUSE_CLAUSE_WORDS = ("if", "unless", "when", "whenever", "once", "should", "in case", "then", "and", "but",
+                      "or", "otherwise", "else")
+#: suspension points before a word in small letters ("A ripe one... goes into the fridge", "a wet
+#: one… well, that goes in the hamper"): a speaker's pause between a thing and what is said of
+#: it, not a sentence's end, so the sentence goes on as after a comma; before a capital they end it
+#: ("Wait... Now the mug"), and before a word that opens a clause (`PAUSE_CLAUSE_WORDS`) they stay
+_SUSPENSION = re.compile(r"(?<=\w)[ \t]*(?:\.{3,}|\u2026)[ \t]+(?=[a-z])(?!(?:"
+                         + "|".join(w.replace(" ", r"\s+") for w in PAUSE_CLAUSE_WORDS) + r")\b)")
+
+
 def split_sentences(text: str, *, full_stops_only: bool = False) -> list[str]:
     """The text's sentences (and `;`/`:`-separated parts), abbreviations kept whole, a line
-    broken inside a sentence joined (`_BROKEN_LINE`, `_CONTINUED_LINE`). With `full_stops_only`, only at a full
+    broken inside a sentence joined (`_BROKEN_LINE`, `_CONTINUED_LINE`), a pause inside one kept
+    in it (`_SUSPENSION`). With `full_stops_only`, only at a full
     stop, "!" or a line break: for a reader that cuts the rest itself
     (`offline.clauses.clause_spans` cuts at ";", ":", "?" and brackets)."""
-    protected = _ABBREV.sub(lambda m: m.group(0).replace(".", "\u2024"), _BROKEN_LINE.sub(" ", _CONTINUED_LINE.sub(_continued, text)))
+    protected = _ABBREV.sub(lambda m: m.group(0).replace(".", "\u2024"),
+                            _SUSPENSION.sub(", ", _BROKEN_LINE.sub(" ", _CONTINUED_LINE.sub(_continued, text))))
     parts = [p.strip().replace("\u2024", ".") for p in (_FULL_STOP if full_stops_only else _SENT).split(protected)]
     return [p for p in parts if p]
