@@ -1139,12 +1139,27 @@ class _Reader:
         if j >= len(words) or self.text.gaps[j].strip():
             return n, category
         m, second = self.match(j)
+        kinds = set(self.heads.get(words[j], []))
+        holder = self.named_holder(category, words[j], kinds) if m == 1 else None
+        if holder is not None:
+            return n + 1, holder
         if second is None or m > 1:
             return n, category
-        kinds = set(self.heads.get(words[j], []))
         if words[j] in _PACKAGING or len(kinds) > 1:
             return n + 1, category
         return n, category
+
+    def named_holder(self, category: str, head: str, kinds: set[str]) -> str | None:
+        """The kind among `kinds` (those `head` heads) named "<`category`'s own name> <head>": a
+        modifier naming a kind by another of its names ("boot", "sneaker": a shoe; "brolly": an
+        umbrella; "couch": a sofa) before a head of several kinds names the holder or companion
+        of that kind ("the boot rack", "the sneaker shelf": a shoe rack; "the brolly stand": an
+        umbrella stand; "the couch pillow": a sofa pillow), as the catalog's name would; English
+        builds such a compound from any name of its first kind, the catalog lists one."""
+        mine = words_of(category)
+        return next((kind for kind in sorted(kinds) if kind != category
+                     and any(words_of(text) == (*mine, head)
+                             for text in (kind, *_own(self.catalog.categories[kind])))), None)
 
     def modifies_other(self, i: int, n: int) -> bool:
         """Whether the one-word name at word `i` only modifies the noun right after it, a noun that
