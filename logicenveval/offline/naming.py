@@ -1138,13 +1138,34 @@ class _Reader:
         j = i + n
         if j >= len(words) or self.text.gaps[j].strip():
             return n, category
+        holder = self.named_holder(i, n, category)
+        if holder is not None:
+            return n + 1, holder
         m, second = self.match(j)
+        kinds = set(self.heads.get(words[j], []))
         if second is None or m > 1:
             return n, category
-        kinds = set(self.heads.get(words[j], []))
         if words[j] in _PACKAGING or len(kinds) > 1:
             return n + 1, category
         return n, category
+
+    def named_holder(self, i: int, n: int, category: str) -> str | None:
+        """The kind named "<`category`'s own name> <head>" when the name of `category` at word `i`
+        (`n` words) is followed at once by a one-word head of other kinds: a modifier naming a
+        kind by another of its names ("boot", "sneaker": a shoe; "brolly": an umbrella; "couch":
+        a sofa) names the holder or companion of that kind ("the boot rack", "the sneaker shelf":
+        a shoe rack; "the brolly stand": an umbrella stand; "the couch pillow": a sofa pillow), as
+        the catalog's name would; English builds such a compound from any name of its first
+        kind, the catalog lists one."""
+        words = self.text.words
+        j = i + n
+        if j >= len(words) or self.text.gaps[j].strip() or self.match(j)[0] > 1:
+            return None
+        head, mine = words[j], words_of(category)
+        kinds = set(self.heads.get(head, []))
+        return next((kind for kind in sorted(kinds) if kind != category
+                     and any(words_of(text) == (*mine, head)
+                             for text in (kind, *_own(self.catalog.categories[kind])))), None)
 
     def modifies_other(self, i: int, n: int) -> bool:
         """Whether the one-word name at word `i` only modifies the noun right after it, a noun that
@@ -1838,7 +1859,7 @@ class _Reader:
             if shared is None and self.modifies_other(i, n):
                 i += n  # "Car park gate open", "the food bank pick-up": a park, a bank, no car or food
                 continue
-            if shared is None and self.modifies_next(i, n):
+            if shared is None and self.modifies_next(i, n) and self.named_holder(i, n, category) is None:
                 i += n  # "the collection basket", "the chart table drawer": the last noun is the head
                 continue
             if shared is None:

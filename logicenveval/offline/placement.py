@@ -621,7 +621,7 @@ def _bracketed_place(sent: _Sentence, lex: Lexicon, k: int) -> tuple[str, Mentio
     ms = [x for x in sent.mentions if k <= x.start < close]
     if words[k] in AT:
         found = _holder_after(sent, ms, k, close)
-        return found if found is not None and found[1].end == close else None
+        return found if found is not None and _place_closes(words, found[1].end, close) else None
     part = k + (words[k] in ARTICLES)
     part += words[part] in RANKS
     if part + 1 >= close or words[part] not in FURNITURE_PARTS or words[part + 1] != "of":
@@ -629,6 +629,22 @@ def _bracketed_place(sent: _Sentence, lex: Lexicon, k: int) -> tuple[str, Mentio
     # the furniture's name ends the bracket, with what describes it before ("the metal rack")
     m = next((x for x in ms if x.start >= part + 2 and x.end == close), None)
     return ("in", m) if m is not None and m.kind == "role" else None
+
+
+#: prepositions that place a place by another thing ("the utility shelf above the sink"): said
+#: after a bracket's place, they say which one it is, not a second place of the thing
+_PLACE_MODIFIERS = frozenset({"by", "near", "next", "beside", "under", "at", "above", "below", "behind", "opposite", "over"})
+
+
+def _place_closes(words: list[str], end: int, close: int) -> bool:
+    """Whether the place ending at word `end` is all a bracket closing at `close` says of where
+    the thing is: it ends the bracket, or what follows only tells the place apart ("(on the
+    utility shelf above the sink)", "(in the cupboard by the door)") or the thing ("(on the
+    workbench, the green one)": an apposition after a comma); never an alternative ("(on the
+    shelf or in the drawer)") or a second clause."""
+    if end == close:
+        return True
+    return words[end] in _PLACE_MODIFIERS or words[end] == "," and end + 1 < close and words[end + 1] in ARTICLES
 
 
 def _roles(m: Mention, sent: _Sentence) -> tuple[str, ...]:
@@ -1606,10 +1622,22 @@ def _definite(words: list[str], start: int) -> bool:
     return j >= 0 and words[j] in ("the", "my", "our", "your", "his", "her", "their", "its")
 
 
+#: prepositions whose noun completes the noun before it (what it is for, what it holds): a
+#: relative clause after the phrase speaks of the head noun (`_antecedent`)
+COMPLEMENT_PREPOSITIONS = frozenset({"for", "of"})
+
+
 def _antecedent(sent: _Sentence, clause: Span) -> Mention | None:
     """The noun a relative clause ("..., which stands on the floor") speaks of: the last mention
-    before it in its sentence."""
+    before it in its sentence, or the head of the noun phrase that mention completes ("the
+    wicker basket for journals, which stands on the floor", "the jar of buttons, which sits on
+    the shelf": the basket, the jar; `COMPLEMENT_PREPOSITIONS`)."""
     before = [m for m in sent.mentions if m.end <= clause.start and m.kind == "role"]
+    if len(before) >= 2:
+        words, head, last = sent.words, before[-2], before[-1]
+        between = [w for w in words[head.end:last.start] if w not in ARTICLES]
+        if between and between[0] in COMPLEMENT_PREPOSITIONS and len(between) == 1:
+            return head
     return before[-1] if before else None
 
 
@@ -2135,10 +2163,13 @@ def _resting(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, cat
             continue
         cat = catalog.get(str(lex.roles[a.roles[0]]["category"]))
         pointed = _pointed_out(words, a.start, clause)
-        if cat is None or not cat.pickable or determiner(words, a.start) != "the" and not pointed:
+        # "the work boots", "the garden hose": a noun modifier that is a verb's form too
+        # (`_the_before`) still opens a definite phrase, which starts at the modifier
+        start = a.start - (determiner(words, a.start) != "the" and _the_before(words, a.start))
+        if cat is None or not cat.pickable or determiner(words, start) != "the" and not pointed:
             continue
-        if _moved(words, a.start, clause) or clause.goal or _unfound(words, a.start, clause) \
-                or _habitually_put(words, a.start, clause):
+        if _moved(words, start, clause) or clause.goal or _unfound(words, start, clause) \
+                or _habitually_put(words, start, clause):
             continue
         described = clause.mood == "condition" and (_described_subject(words, a.start, b.end, clause) or pointed)
         if clause.mood == "condition" and not described:
