@@ -200,7 +200,7 @@ prints LogCov / SceVR / FauDR for each, then per task:
   rooms none of the sets above use (a solicitor's letter before action, a building society's
   account statement, an insurance product information document, an application form for a
   weekend pass, a chapel's order of service, a Turkish host's note about the guest room). Fresh
-  (`FRESH`) until the coordinator's first measurement;
+  (`FRESH`) until measured five times (fifteenth session), then a development set;
 - `dev28 reworded` and `dev28 new`: tests/data/reader_dev28/ — the twenty-eighth development set,
   written in the fifteenth session (beside dev 27, each in its own family of registers) in
   registers of childcare, elder care, hospitality, retail and farming no set used and the English
@@ -209,7 +209,7 @@ prints LogCov / SceVR / FauDR for each, then per task:
   new tasks in rooms none of the sets above use (a day nursery's daily diary, a home care
   agency's daily visit record, a pub's taproom close-down card, a store chain's weekly store
   communication, a dairy farm's relief milker notes, a Hungarian flatmate's note). Fresh
-  (`FRESH`) until the coordinator's first measurement;
+  (`FRESH`) until measured five times (fifteenth session), then a development set;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -241,9 +241,9 @@ was written for (a rule too wide shows as a task of another set falling):
     python benchmarks/reader_generalisation.py --dev-only --json before.json   # on main
     python benchmarks/reader_generalisation.py --dev-only --compare before.json # with the rule
 
-`--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: dev 27 and
-dev 28, written in the fifteenth session, in which dev 25 and dev 26 left it after their third
-measurement), so a tuner's runs
+`--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: none
+between rounds; dev 25 and dev 26 left it in the fifteenth session after their third measurement,
+and dev 27 and dev 28, written in that session, after their fifth), so a tuner's runs
 never show them; `--dev-only --fresh` keeps them, to measure them. `--skip 'dev9 reworded,dev9 new'` leaves any other rows' sets out as well.
 
 `--placements` measures instead the reader's recall of stated placements, without running a
@@ -389,7 +389,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH: frozenset[str] = frozenset({"dev27 reworded", "dev27 new", "dev28 reworded", "dev28 new"})
+FRESH: frozenset[str] = frozenset()
 GENERATOR = "logicenvgen"
 
 
