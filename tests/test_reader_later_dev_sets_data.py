@@ -1,8 +1,8 @@
-"""The reader's fifth to twenty-eighth development sets (tests/data/reader_dev5/, reader_dev6/,
+"""The reader's fifth to twenty-eighth and thirtieth development sets (tests/data/reader_dev5/, reader_dev6/,
 reader_dev7/, reader_dev8/, reader_dev9/, reader_dev10/, reader_dev11/, reader_dev12/, reader_dev13/,
 reader_dev14/, reader_dev15/, reader_dev16/, reader_dev17/, reader_dev18/, reader_dev19/, reader_dev20/,
 reader_dev21/, reader_dev22/, reader_dev23/, reader_dev24/, reader_dev25/, reader_dev26/,
-reader_dev27/, reader_dev28/): new tasks and rewordings written from the task format, the
+reader_dev27/, reader_dev28/, reader_dev30/): new tasks and rewordings written from the task format, the
 catalog and the built-in tasks, without reading the offline reader or running it on them, for rounds of reader
 rules to be tuned on. One table of what differs between them; the same checks for each.
 
@@ -94,6 +94,12 @@ home care agency's daily visit record, a pub's taproom close-down card, a store 
 store communication, a dairy farm's relief milker notes, a telecare operator's call-out sheet, a
 garden centre's aftercare job card, a farm volunteer's morning card) and the English of a
 Hungarian speaker, in room ids beginning with a letter n-z.
+dev 30 was written in the fifteenth session beside dev 29 (each in its own family of registers):
+registers of emergency services, the armed forces, aviation, shipping and security (a fire
+station's watch handover log, a battalion's Part One Orders, a flying club's crew-room NOTAM, a
+ship master's night order book, a guarding company's assignment instructions, a cargo
+superintendent's stowage instruction, a QRH non-normal checklist, a control room's protocol card)
+and the English of a Romanian speaker, in room ids beginning with a letter n-z.
 """
 
 from __future__ import annotations
@@ -172,6 +178,7 @@ SETS = (
     DevSet("reader_dev26", "_d26", 3, 6, ("plant_room_eicr_observations", "hallway_coat_and_bag_d26")),
     DevSet("reader_dev27", "_d27", 3, 6, ("chapel_order_of_service", "bathroom_counter_sort_d27")),
     DevSet("reader_dev28", "_d28", 3, 6, ("taproom_pub_close_down_card", "living_room_plant_care_d28")),
+    DevSet("reader_dev30", "_d30", 3, 6, ("officers_mess_night_order_book", "lamp_or_pillow_fetch_d30")),
 )
 IDS = [s.name for s in SETS]
 ENTRIES = {s.name: rewordings(DATA / s.name) for s in SETS}
