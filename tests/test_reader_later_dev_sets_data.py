@@ -1,8 +1,8 @@
-"""The reader's fifth to twenty-ninth development sets (tests/data/reader_dev5/, reader_dev6/,
+"""The reader's fifth to thirtieth development sets (tests/data/reader_dev5/, reader_dev6/,
 reader_dev7/, reader_dev8/, reader_dev9/, reader_dev10/, reader_dev11/, reader_dev12/, reader_dev13/,
 reader_dev14/, reader_dev15/, reader_dev16/, reader_dev17/, reader_dev18/, reader_dev19/, reader_dev20/,
 reader_dev21/, reader_dev22/, reader_dev23/, reader_dev24/, reader_dev25/, reader_dev26/,
-reader_dev27/, reader_dev28/, reader_dev29/): new tasks and rewordings written from the task format, the
+reader_dev27/, reader_dev28/, reader_dev29/, reader_dev30/): new tasks and rewordings written from the task format, the
 catalog and the built-in tasks, without reading the offline reader or running it on them, for rounds of reader
 rules to be tuned on. One table of what differs between them; the same checks for each.
 
@@ -99,6 +99,12 @@ writing of the arts, music, theatre, crafts and museums (a stage manager's rehea
 band's set list, a life-drawing class's session plan, a historic house museum's housekeeping
 schedule, a pottery studio's members' notice, a radio play's script, a quilting pattern, a concert
 programme note) and the English of an Arabic speaker, in room ids beginning with a letter a-m.
+dev 30 was written in the fifteenth session beside dev 29 (each in its own family of registers):
+registers of emergency services, the armed forces, aviation, shipping and security (a fire
+station's watch handover log, a battalion's Part One Orders, a flying club's crew-room NOTAM, a
+ship master's night order book, a guarding company's assignment instructions, a cargo
+superintendent's stowage instruction, a QRH non-normal checklist, a control room's protocol card)
+and the English of a Romanian speaker, in room ids beginning with a letter n-z.
 """
 
 from __future__ import annotations
@@ -178,6 +184,7 @@ SETS = (
     DevSet("reader_dev27", "_d27", 3, 6, ("chapel_order_of_service", "bathroom_counter_sort_d27")),
     DevSet("reader_dev28", "_d28", 3, 6, ("taproom_pub_close_down_card", "living_room_plant_care_d28")),
     DevSet("reader_dev29", "_d29", 3, 6, ("kiln_room_members_notice", "laundry_drying_rack_d29")),
+    DevSet("reader_dev30", "_d30", 3, 6, ("officers_mess_night_order_book", "lamp_or_pillow_fetch_d30")),
 )
 IDS = [s.name for s in SETS]
 ENTRIES = {s.name: rewordings(DATA / s.name) for s in SETS}
