@@ -664,6 +664,21 @@ def _bare_place(words: list[str], found: list[Mention]) -> bool:
         k in covered or w in _BARE_PLACE_WORDS | PLACE_PREPS for k, w in enumerate(words))
 
 
+#: the words that may stand between "no" and the thing said to be absent ("no clean sponge")
+_ABSENT_GAP = 2
+
+
+def _absent_only(words: list[str], found: list[Mention]) -> bool:
+    """Whether the clause says one thing is absent and speaks of nothing else ("No sponge?", "If
+    there's no sponge", "we have no clean cloth left"): a thing said not to be there is no topic a
+    later "it" takes up ("No sponge? Then wipe it out with a paper towel" wipes the bowl spoken of
+    before). A thing missing from a place ("If there is no lid on the pot, put it on") names the
+    place too and sets the topic as before."""
+    things = [m for m in found if m.kind in ("role", "floor", "room", "pronoun")]
+    return len(things) == 1 and things[0].kind == "role" and "no" in words[
+        max(0, things[0].start - 1 - _ABSENT_GAP):things[0].start]
+
+
 #: the state words that are also particles of place or of a phrasal verb ("on the table", "off
 #: the shelf", "out of the box"), and those of them that are a state where nothing follows them
 #: (`_stranded`); a stranded "out" stays a place ("the mug. If out, put it away": left out)
@@ -962,7 +977,8 @@ class _Reader:
             named_as = next((m for m in found if m.kind == "role" and m.start >= lead + 2), None)
             if named_as is not None and not any(w in PLACE_PREPS for w in words[lead + 2:named_as.start]):
                 first = named_as
-        if first is not None and first.kind != "pronoun" and not _bare_place(words, found):
+        if first is not None and first.kind != "pronoun" and not _bare_place(words, found) and not (
+                self.topic and _absent_only(words, found)):
             self.topic, self.topic_kind = first.roles, first.kind
         thing = next((m for m in found if m.kind == "role" and not _placed(words, m)), None)
         if thing is not None:
@@ -2912,6 +2928,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     #: ("Clean the mirror if it is dirty. Use the cloth if we still have one; if there is no
     #: cloth, ..."): an absence stated there is only asked under those conditions
     carried: list[tuple[tuple[str, str, str], bool, str]] = []
+    #: the tool a sentence opening with a verbless "with" phrase names (`_with_tool`): any
+    #: condition of its sentence on it is asked under the conditions carried on
+    with_tool: set[str] = set()
     #: whether the last condition said of each slot is its fact holding (see `Factor.under`)
     holds: dict[tuple[str, str, str], bool] = {}
     #: the sentence opens with "Then" after a sentence that was only a condition ("Suppose the
@@ -2932,9 +2951,12 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             # ... unless it speaks of a situation of its own ("Finally, a dirty mirror is cleaned:")
             # ("Mirror dirty? Clean it. Use the cloth if we still have one.": an instruction
             # standing alone after a question passes its conditions on)
+            # ("Wipe the table if it's dirty. Use the sponge to wipe it, if there is one.": a tool
+            # sentence whose purpose takes up the instruction before is that instruction, `_takes_up`)
             carried = (context or carried) if cl.role in ("statement", "consequence") and not any(
-                not f.goal and not f.derived and not f.home for f in cl.facts) else []
-            current_sentence, context = cl.sentence, (context if premise else [])
+                not f.goal and not f.derived and not f.home for f in cl.facts) or _takes_up(
+                    cl, clauses, current_sentence) else []
+            current_sentence, context, with_tool = cl.sentence, (context if premise else []), set()
             answers_premise = premise
         elif (cl.role == "condition" and ci >= 2 and clauses[ci - 1].role == "consequence"
               and clauses[ci - 2].role == "condition" and clauses[ci - 2].sentence == cl.sentence
@@ -2949,6 +2971,12 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             # "switch off the lamp in case it is on, and shut the wardrobe if it is open": a new
             # instruction with its own postposed condition, not nested under the previous one
             context = []
+        if _with_tool(cl) and all(c.role == "statement" and not c.facts for c in clauses[:ci]
+                                  if c.sentence == cl.sentence):
+            # ("With the sponge, if the sponge is on the counter!", after a speaker's name at most:
+            # a verbless tool phrase goes on with the instruction before, whatever its condition
+            # asks of the tool, `_with_tool`)
+            with_tool = set(cl.mentions)
         if cl.role == "else" and context:
             slot0, neg0, key0 = context[-1]
             context[-1] = (slot0, not neg0, key0)
@@ -3001,7 +3029,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                                            "targets": [], "values": [],
                                            "context": [c for c in context if c[0] != slot and not (
                                                f.kind == "exists" and c[0][0] == f.subject)]
-                                           or [c for c in carried if c[0] != slot and f.kind == "exists"]})
+                                           or [c for c in carried if c[0] != slot and (
+                                               f.kind == "exists" or f.subject in with_tool)]})
             entry.setdefault("places", set()).add((cl.sentence, ci))
             entry["home"] = entry.get("home", True) and f.home and cl.role == "statement" and _home_said(
                 cl.text, opens=ci == 0 or clauses[ci - 1].sentence != cl.sentence)
@@ -3185,6 +3214,43 @@ def _answered(factors: list[Factor], clauses: list[Clause], line_of: Mapping[int
             for a in questions:
                 if a.subject != b.subject and all(dep != a.id for dep, _ in b.context):
                     b.context.append((a.id, frozenset({answer})))
+
+
+#: a tool sentence whose purpose is an instruction's verb with a pronoun object ("Use the sponge
+#: to wipe it", "grab a cloth to dry them", "take the brush to do so"): the verb is the group
+_PURPOSE_TOOL = re.compile(r"^\W*(?:(?:just|then|and|so|please|now)\W+)*(?:use|take|grab|get|fetch|pick\s+up)\s+"
+                           r"[^,;:.!?]*?\bto\s+([a-z]+)\s+(?:it|them|this|that|so|those|these)\b", re.I)
+#: verbs that stand for any instruction before them ("to do it", "to do so")
+_PRO_VERBS = frozenset({"do"})
+#: a sentence that is only a tool phrase ("With the sponge, if ...", "And with the dish cloth!"):
+#: "with", a determiner at most, and a name of up to three words, nothing after it
+_WITH_ONLY = re.compile(r"^\W*(?:(?:and|then|but|so|or|now)\W+)*with\s+(?:(?:the|a|an|your|our|my|some|that|this)\s+)?"
+                        r"[a-z]+(?:[ -][a-z]+){0,2}\W*$", re.I)
+
+
+def _takes_up(cl: Clause, clauses: list[Clause], previous: int) -> bool:
+    """A tool sentence whose purpose takes up the verb of the instruction before ("You only need to
+    wipe the table if it is dirty. Use the sponge to wipe it, if there is one."): it says how that
+    instruction is done, so its tool is asked under that instruction's conditions. A tool sentence
+    with a verb of its own ("Use the cloth to dust the shelf") or an object of its own ("to wipe
+    the counter") is an instruction of its own."""
+    m = _PURPOSE_TOOL.match(cl.text)
+    if m is None or cl.role not in ("uncertain", "consequence", "statement"):
+        return False
+    verbs = set(getAllLemmas(m.group(1).lower()).get("VERB", ()))
+    if verbs & _PRO_VERBS:
+        return any(c.sentence == previous and c.role == "consequence" for c in clauses)
+    said = {lemma for c in clauses if c.sentence == previous and c.role in ("consequence", "statement")
+            for w in re.findall(r"[a-z]+", c.text.lower()) for lemma in getAllLemmas(w).get("VERB", ())}
+    return bool(verbs & said)
+
+
+def _with_tool(cl: Clause) -> bool:
+    """A sentence opening with a verbless "with" phrase ("With the sponge, if the sponge is lying
+    on the counter!"): the tool of the instruction before, so a condition on the tool, of any kind,
+    is asked under that instruction's conditions. A "with" phrase opening an instruction of its
+    own ("With the sponge, wipe the shelf") has a verb and is not this."""
+    return cl.role in ("consequence", "statement") and _WITH_ONLY.match(cl.text) is not None
 
 
 def _capitalised(text: str) -> bool:
