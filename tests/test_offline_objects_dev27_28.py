@@ -1,6 +1,6 @@
 """Objects and placements of dev 27 and dev 28 (issue 47, fifteenth session's third round): the
-structures behind the broken stated placements of their new tasks, read through the offline
-model's `described_placements`. Every sentence is written for these tests, in several registers (a
+structures behind the broken stated placements and the ill-formed environment of their new tasks,
+read through the offline model's `described_placements` and `name_objects`. Every sentence is written for these tests, in several registers (a
 statement's note, an office memo, a care-home log, a shop notice, a text message, a farm diary);
 none is copied from a task."""
 
@@ -105,4 +105,47 @@ def test_a_holder_after_two_modifiers_is_the_place(text: str, fact: str) -> None
 ])
 def test_a_place_beyond_another_is_not_the_holder(text: str, not_fact: str) -> None:
     assert not_fact not in _placed(text)
+
+
+# -- a predictive "will be <place>" followed by the habit that puts the thing there ("..., where
+# Dad always leaves it"): the habit is why the writer expects it there, so the reader finds it
+# there (`_habit_where`, a case of `_predicted`) --
+
+#: (sentence, fact): 0 of 4 read before the rule, 4 after
+HABIT_WHERE = [
+    # a pub's close-down card
+    ("The remote will be on the sofa, where Dad always leaves it.", "on(remote_control, sofa)"),
+    # a house-sitter's note
+    ("Your keys will be in the bowl, where you usually drop them after work.", "inside(keys, bowl)"),
+    # a farm diary
+    ("The watering can will be on the bench where Grandpa normally keeps it.", "on(watering_can, bench)"),
+    # a care-home handover
+    ("Her glasses will be on the side table, where she often puts them at night.", "on(glasses, side_table)"),
+]
+
+HABIT_ROLES = {"remote_control": "remote_control", "sofa": "sofa", "keys": "keys", "bowl": "bowl",
+               "watering_can": "watering_can", "bench": "bench", "glasses": "glasses", "side_table": "side_table"}
+
+
+def _placed_among(text: str, roles: dict[str, str]) -> list[str]:
+    brief = {"description": text, "rooms": ["room"], "roles": {r: {"category": c} for r, c in roles.items()}}
+    return [f for f in described_placements(brief) if not f.startswith("in_room(")]
+
+
+@pytest.mark.parametrize(("text", "fact"), HABIT_WHERE)
+def test_will_be_where_someone_always_leaves_it_is_where_it_is(text: str, fact: str) -> None:
+    assert fact in _placed_among(text, HABIT_ROLES)
+
+
+@pytest.mark.parametrize("text", [
+    # said alone, it stays a goal
+    "The remote will be on the sofa. Tidy the rest.",
+    # where it belongs or where someone will put it is no habit: a goal
+    "The remote will be on the sofa, where it belongs.",
+    "The watering can will be on the bench, where the gardener will collect it.",
+    # a condition after it keeps it a goal
+    "The keys will be in the bowl, where you usually drop them, if you remember.",
+])
+def test_will_be_without_a_habit_stays_a_goal(text: str) -> None:
+    assert _placed_among(text, HABIT_ROLES) == []
 

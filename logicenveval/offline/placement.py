@@ -1304,7 +1304,24 @@ def _predicted(words: list[str], clause: Span, before: str, group: list[str], en
     framed = _arrival_frame(words, 0, clause.end) == clause.start
     arriving = any(_arrival_time(words, x, tail) is not None for x in range(end, tail))
     case = words[clause.start] == "where" and "," in words[clause.start:end]
-    return framed or arriving or case
+    return framed or arriving or case or _habit_where(words, end, stop)
+
+
+#: object pronouns a habitual relative takes the thing up by ("where Dad always leaves it")
+_HABIT_OBJECTS = frozenset({"it", "them", "one"})
+
+
+def _habit_where(words: list[str], end: int, stop: int) -> bool:
+    """Whether, after the place of a predictive "will be" (from `end` to the sentence's `stop`), a
+    relative "where" says the habit that puts the thing there: an adverb of norm or frequency
+    (`NORM_ADVERBS`, `FREQUENCY`) and the thing taken up by a pronoun ("The remote will be on the
+    sofa, where Dad always leaves it", "your keys will be in the bowl where you usually drop
+    them"). The habit is why the writer expects the thing there, so the reader will find it there.
+    "where it belongs" or "where the porter will collect it" says no habit: the "will be" stays
+    a goal."""
+    x = next((k for k in range(end, stop) if words[k] == "where"), stop)
+    rel = set(words[x + 1:stop])
+    return x < stop and bool(rel & (NORM_ADVERBS | FREQUENCY)) and bool(rel & _HABIT_OBJECTS)
 
 
 def _arrival_time(words: list[str], lo: int, hi: int) -> int | None:
