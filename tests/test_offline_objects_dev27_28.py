@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import pytest
 
+from logicenveval.domain.catalog import load_catalog
+from logicenveval.offline.naming import name_objects
 from logicenveval.offline.placement import described_placements
 
 ROLES = {
@@ -149,3 +151,33 @@ def test_will_be_where_someone_always_leaves_it_is_where_it_is(text: str, fact: 
 def test_will_be_without_a_habit_stays_a_goal(text: str) -> None:
     assert _placed_among(text, HABIT_ROLES) == []
 
+
+# -- a plural "spares" takes up the nearest plural noun before it, even one naming no kind
+# ("batteries cost a fortune and the spares are flat": spare batteries, no second torch;
+# `naming._Reader.spare_of_unnamed`) --
+
+
+def _of_kind(text: str, kind: str) -> int:
+    return sum(o["category"] == kind for o in name_objects(text, load_catalog()))
+
+
+@pytest.mark.parametrize(("text", "kind"), [
+    # a farm office note
+    ("Switch the torch off, batteries cost a fortune and the spares are flat.", "flashlight"),
+    # a text message
+    ("remote's on the sofa, its batteries are dead and the spares are in the kitchen drawer", "remote_control"),
+    # a holiday-let welcome sheet
+    ("The torch hangs by the door; its bulbs blow easily, so the spares live in the drawer.", "flashlight"),
+])
+def test_spares_of_an_unnamed_plural_are_no_second_object(text: str, kind: str) -> None:
+    assert _of_kind(text, kind) == 1
+
+
+@pytest.mark.parametrize(("text", "kind"), [
+    # nothing plural between: the spares are of the thing named, a second object
+    ("The torch is on the desk. The spares are in the drawer.", "flashlight"),
+    ("Leave the torch on the shelf; we keep the spares in the drawer.", "flashlight"),
+    ("The hand towel is damp, so grab one of the spares from the cupboard.", "hand_towel"),
+])
+def test_spares_of_the_thing_named_are_its_spare(text: str, kind: str) -> None:
+    assert _of_kind(text, kind) == 2
