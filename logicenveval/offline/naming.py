@@ -1697,6 +1697,27 @@ class _Reader:
             return False
         return i + 1 == len(words) or words[i + 1] == "one" or self.match(i + 1)[1] is None
 
+    def spare_of_unnamed(self, i: int) -> bool:
+        """Whether a plural "spares" at word `i` takes up a plural noun that names no kind, said
+        nearer before it in its sentence than any thing named ("Switch the torch off, batteries
+        cost a fortune and the spares are flat": spare batteries, no second torch; "the remote's
+        batteries are dead, the spares are in the drawer"). A noun phrase's number tells what an
+        elided head takes up: a plural "spares" the nearest plural noun. A plural that may be a
+        verb ("keys", "bags") counts after a determiner only ("the torch bulbs ... the spares").
+        Why: the nearest *named* thing was taken, a second object of a kind the text has one of."""
+        words, raw = self.text.words, self.text.raw
+        if "spare" not in getAllLemmas(raw[i]).get("NOUN", ()) or raw[i] == "spare":
+            return False
+        for k in range(i - 1, self.text.sentence_start(i) - 1, -1):
+            if self.match(k)[1] is not None:
+                return False
+            lemmas = getAllLemmas(raw[k])
+            nouns = lemmas.get("NOUN", ())
+            if raw[k].isalpha() and nouns and raw[k] not in nouns \
+                    and ("VERB" not in lemmas or k > 0 and words[k - 1] in _DETERMINERS | _POSSESSIVES):
+                return True
+        return False
+
     def heading_spare(self, i: int) -> bool:
         """Whether word `i` ("spare"), definite or owned ("my spare one", "the spare"), is the thing
         the heading right before its sentence names: an item's heading ("- Torch.", "Phone
@@ -1832,7 +1853,8 @@ class _Reader:
             if words[i] in SPARE_WORDS and prev in _DETERMINERS and (
                     i + 1 == len(words) or words[i + 1] not in self.heads and self.match(i + 1)[1] is None):
                 # "a spare" as a noun: "fetch a spare from the dresser", "we store the spares"
-                spare = next((c for c in reversed(self.recent) if self.catalog.categories[c].pickable), None)
+                spare = None if self.spare_of_unnamed(i) else next(
+                    (c for c in reversed(self.recent) if self.catalog.categories[c].pickable), None)
                 if spare is not None:
                     kind = self.kinds.setdefault(spare, _Kind())
                     if not any(name.startswith("spare_") for name in kind.instances):

@@ -833,11 +833,8 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
     if tied is not None:
         return ON_PART, tied
     m = next((m for m in ms if m.start == k), None)
-    if m is None and k > j + 1 and words[k - 1] in ARTICLES and k + 1 < hi and words[k].isalpha() \
-            and words[k] not in AT | PREP_OF_PLACE and not any(t.start <= k < t.end for t in ms):
-        # "lives on the props table", "on the wooden box": one modifier that names nothing
-        # between the article and the place (as the naming step reads it, `naming.modified`)
-        m = next((t for t in ms if t.start == k + 1 and t.kind == "role"), None)
+    if m is None and k > j + 1 and words[k - 1] in ARTICLES:
+        m = _modified_holder(words, ms, k, hi)
     # a place the text names by a word no name of the task holds, said again after it
     unknown = m is None and k + 2 < len(words) and words[k].isalpha() and words[k] not in PREP_OF_PLACE | VERBS \
         and not any(t.start <= k < t.end for t in sent.mentions)
@@ -850,6 +847,33 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
         # names which one (`_room_words`); the place is the thing
         m = next((t for t in ms if t.start == m.end and t.kind == "role"), m)
     return (words[j], m) if m is not None else None
+
+
+#: how many modifiers naming nothing may stand between a place's article and its head: "on the
+#: props table" (one), "on the steel cage trolley", "on the old oak desk" (two: a material or a
+#: make and what the thing is, as shops and notes name furniture)
+_HOLDER_MODIFIERS = 2
+
+
+def _modified_holder(words: list[str], ms: list[Mention], k: int, hi: int) -> Mention | None:
+    """The holder after one or two modifiers from token `k` that name nothing, are words and are
+    no verb or preposition ("lives on the props table", "kept on the steel cage trolley", "on the
+    old oak desk"): the noun phrase's head is the place, as the naming step reads one modifier
+    (`naming.modified`). Why two: a place named with a material and a kind before its head ("wire
+    cage trolley", "glass top coffee table") is as common as one with a single modifier. A
+    preposition among them ("on its way to the cart", "on the shelf next to the table") ends the
+    phrase: the place is another."""
+    for n in range(1, _HOLDER_MODIFIERS + 1):
+        mods = range(k, k + n)
+        # (one modifier may be a verb's form too, "the drying rack"; of two, neither is)
+        if k + n >= hi or not all(words[i].isalpha() and words[i] not in AT | PREP_OF_PLACE
+                                  and (n == 1 or words[i] not in VERBS)
+                                  and not any(t.start <= i < t.end for t in ms) for i in mods):
+            return None
+        m = next((t for t in ms if t.start == k + n and t.kind == "role"), None)
+        if m is not None:
+            return m
+    return None
 
 
 def _at_part(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[str, Mention] | None:
@@ -1280,7 +1304,24 @@ def _predicted(words: list[str], clause: Span, before: str, group: list[str], en
     framed = _arrival_frame(words, 0, clause.end) == clause.start
     arriving = any(_arrival_time(words, x, tail) is not None for x in range(end, tail))
     case = words[clause.start] == "where" and "," in words[clause.start:end]
-    return framed or arriving or case
+    return framed or arriving or case or _habit_where(words, end, stop)
+
+
+#: object pronouns a habitual relative takes the thing up by ("where Dad always leaves it")
+_HABIT_OBJECTS = frozenset({"it", "them", "one"})
+
+
+def _habit_where(words: list[str], end: int, stop: int) -> bool:
+    """Whether, after the place of a predictive "will be" (from `end` to the sentence's `stop`), a
+    relative "where" says the habit that puts the thing there: an adverb of norm or frequency
+    (`NORM_ADVERBS`, `FREQUENCY`) and the thing taken up by a pronoun ("The remote will be on the
+    sofa, where Dad always leaves it", "your keys will be in the bowl where you usually drop
+    them"). The habit is why the writer expects the thing there, so the reader will find it there.
+    "where it belongs" or "where the porter will collect it" says no habit: the "will be" stays
+    a goal."""
+    x = next((k for k in range(end, stop) if words[k] == "where"), stop)
+    rel = set(words[x + 1:stop])
+    return x < stop and bool(rel & (NORM_ADVERBS | FREQUENCY)) and bool(rel & _HABIT_OBJECTS)
 
 
 def _arrival_time(words: list[str], lo: int, hi: int) -> int | None:
@@ -2313,6 +2354,9 @@ def _fallback(sent: _Sentence, before: _Before, lex: Lexicon, catalog: Catalog, 
         for a, b in _parts(words, clause):
             ms = [m for m in sent.mentions if a <= m.start and m.end <= b]
             lead = next((w for w in words[a:b] if w not in SUBJECT_LEADS), "")
+            if ms and habitual(words[a:b]) and lead not in SUBORDINATORS | _WHERE_LEADS:
+                for item, prep, holder in _habit_subject(sent, ms, a, b):
+                    _put_new(reading, "presumed", catalog, lex, item, holder, prep)
             if not ms or habitual(words[a:b]) or lead in SUBORDINATORS | _WHERE_LEADS:
                 continue  # "where the carton remains on the table, ...": a condition's register
             # the "to" of "has moved to" is where the thing went, of "next to" where it is: no goal
@@ -2324,6 +2368,44 @@ def _fallback(sent: _Sentence, before: _Before, lex: Lexicon, catalog: Catalog, 
             for kind, item, prep, holder in _fallback_forms(sent, ms, a, b, lex, stated) \
                     + (_structures(sent, before, ms, a, b, lex) if stated else []):
                 _put_new(reading, kind, catalog, lex, item, holder, prep)
+
+
+#: finite forms of "be" that end a subject before its predicate (`_habit_subject`)
+_SUBJECT_END_BE = frozenset({"is", "are", "was", "were"})
+
+
+def _habit_subject(sent: _Sentence, ms: list[Mention], a: int, b: int) -> list[tuple[str, str, Mention]]:
+    """(thing, preposition, holder) of a habitual statement part (from `a` to `b`) whose definite
+    subject names a thing with its place ("The desktop computer on the desk is left running more
+    often than not", "the printer on the desk is often left on"): the habit speaks of what
+    happens to the thing, while the definite subject's place is where the thing is now. The
+    subject ends at the first finite "be", before any word of the habit, and is "the", the thing
+    and its place, nothing else. A generic subject ("Printers on the desk are often left on", "A
+    computer on the desk ...") and a habit of place ("The mug is often on the desk", "the mug
+    often ends up on the desk") are no such subject."""
+    words = sent.words
+    v = next((k for k in range(a + 1, b) if words[k] in _SUBJECT_END_BE), b)
+    if words[a] != "the" or v == b or habitual(words[a:v + 1]):
+        return []
+    thing = next((m for m in ms if m.kind == "role" and len(m.roles) == 1 and m.end < v), None)
+    if thing is None or not _subject_at(words, thing.start, a):
+        return []
+    found = _place_at(sent, ms, thing.end, v, False)
+    # (the holder's room may follow it: "the computer on the desk in the study is ...")
+    if found is None or found[1].end != v and not _room_after(sent, found[1].end, v):
+        return []
+    return [(thing.roles[0], found[0], found[1])]
+
+
+def _room_after(sent: _Sentence, k: int, end: int) -> bool:
+    """Whether the tokens from `k` to `end` are "in the <room>" (a room the brief names), which
+    says where the holder before them is, not another place."""
+    words = sent.words
+    j = k + 1
+    while j < end and words[j] in ARTICLES:
+        j += 1
+    return k < end and words[k] == "in" and any(m.kind == "room" and m.start == j and m.end == end
+                                                 for m in sent.mentions)
 
 
 def _corrective_not(words: list[str], a: int, k: int) -> bool:
