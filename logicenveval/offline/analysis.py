@@ -1119,6 +1119,7 @@ class _Reader:
                  else self._fit_place(f, words) if f.kind == "location" and f.subject in said_by_pronoun
                  else self._fit_named(f, mentions)
                  for f in facts if self._holds(f)]
+        facts = [self._switched(f) for f in facts]
         facts = [g for f in facts if (g := self._offered(f)) is not None]
         facts += self._back_home(words, mentions, facts)
         goals = [f for f in facts if f.kind == "location" and f.goal]
@@ -1253,6 +1254,17 @@ class _Reader:
         if state is None or state[0] not in _MACHINE_STATES:
             return None
         return next((r for r in reversed(self.recent + before) if state[0] in self.capable.get(r, ())), None)
+
+    def _switched(self, f: Fact) -> Fact:
+        """"If the air conditioner is open, please close it": a state said of a thing that cannot
+        take it but can take its switched sense (`SWITCHED_SENSE`) is that sense, as the speakers
+        of the many languages that open and close a light, a fan or a television say it; a thing
+        that opens (a laptop, a washing machine) keeps its "open", and a pronoun's "open" goes to
+        a thing nearby that opens first (`_fit`)."""
+        sense = SWITCHED_SENSE.get(f.key) if f.kind == "state" else None
+        if sense is None or not self._misfit(f) or sense not in self.capable.get(f.subject, ()):
+            return f
+        return replace(f, key=sense, condition=f"state({f.subject}, {sense})")
 
     def _can_take(self, f: Fact, roles: Iterable[str]) -> list[str]:
         """The roles among `roles`, other than `f`'s subject, that can take `f`'s state, in order,
@@ -2339,6 +2351,10 @@ def _read_heading(reader: _Reader, text: str) -> tuple[list[Fact], tuple[str, ..
 #: with the catalog capability that allows each
 FITTED_BY = {"open": "openable", "toggled_on": "toggleable", "filled": "fillable"}
 FITTED = frozenset(FITTED_BY)
+#: a state's sense for a thing that switches but cannot take the state itself: "open" / "closed"
+#: said of an air conditioner, a lamp or a television is on / off (Turkish "açık", Chinese "开",
+#: Greek "ανοιχτό", Arabic "مفتوح" say both), `_Reader._switched`
+SWITCHED_SENSE = {"open": "toggled_on"}
 #: prepositions with a sense of place only (not "on", "in": "left on", "plugged in"), after which
 #: a bare noun phrase is a place even without an article ("lamp over chart table", "kettle
 #: beside sink": `_pp_at`)

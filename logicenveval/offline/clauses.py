@@ -161,6 +161,12 @@ _WITHOUT = re.compile(r"^(\W*)(?:without|with no|in the absence of|absent|failin
 _SUBJECT_TO = re.compile(r"^(\W*)(?:subject to|in the event of|on condition of)\s+((?:the|a|an|its|their|your|my|our)\s+[^,;]+?)\s+being\b", re.I)
 _WHERE = re.compile(r"^(\W*)where\b(?=[^?]*,[^?]*$)", re.I)
 _PROVISO = re.compile(r"\bprovided that,?\s+(?:where|if|when|in case)\b", re.I)
+#: an exception's connective after a comma before a clause-opening "where" ("..., save that where
+#: the machine is already running it shall go into the hamper", "..., except where the window is
+#: already closed", "..., but where the projector is already off, ..."): the exception's
+#: condition, read "but if" as the proviso's is; with no comma before it the connective takes a
+#: place ("anywhere except where the lamp is", "not on the shelf but where the plates are kept")
+_EXCEPT_WHERE = re.compile(r",\s*(?:(?:save|except)(?:\s+that)?|but),?\s+where\b(?!\s+(?:is|are|was|were|do|does|did|should|shall|can|could|would|will)\b)", re.I)
 #: "A plate left on the table shall, if clean, be placed in the cabinet": a condition put between
 #: a modal and its verb is the condition of the whole clause
 _INTERPOSED = re.compile(r"^(?P<head>.+?\b(?:shall|must|will|should|is to|are to|has to|have to|needs to|need to))"
@@ -174,7 +180,7 @@ def _apposition(sentence: str) -> str:
     a fronted `without a sponge, ...` is the condition `if there is no sponge, ...`."""
     sentence = _WITHOUT.sub(r"\1if there is no ", sentence)  # "without a sponge, use ...": a condition
     sentence = _SUBJECT_TO.sub(r"\1if \2 is", sentence)
-    sentence = _PROVISO.sub("but if", _WHERE.sub(r"\1if", sentence))
+    sentence = _EXCEPT_WHERE.sub(", but if", _PROVISO.sub("but if", _WHERE.sub(r"\1if", sentence)))
     interposed = _INTERPOSED.match(sentence)
     if interposed is not None:
         cond = interposed.group("cond")
