@@ -731,6 +731,10 @@ class _Reader:
         #: role -> whether the last pronoun that took it up was plural ("them", not "it"): a topic
         #: named in the plural and still taken up so is none an "it" speaks of
         self.plural_ref: dict[str, bool] = {}
+        #: the clause before named a thing's part (`PARTS` in the plural: "Potted plant. Check the
+        #: leaves."): a "they" after it takes up the part, which is its thing's, not a thing named
+        #: in the plural before it
+        self.parts_last = False
         #: the clause read starts with the reader's own "it" ("dry:" read as "it is dry", "-> on
         #: the rack" as "it goes on the rack"): the topic it set, whatever its number
         self.own_it = False
@@ -907,7 +911,8 @@ class _Reader:
                 self.topic = self.group
                 found.append(Mention(self.group, i, i + 1, "pronoun"))
             elif w in ("they", "them") and self.topic_kind == "role" and not self.plural & set(self.topic) \
-                    and not self.coordinated and any(r in self.plural for r in self.recent):
+                    and not self.coordinated and any(r in self.plural for r in self.recent) \
+                    and not (self.parts_last or any(words[k] in PARTS and k in self.plural_at for k in range(i))):
                 # "The mark is cleaned - with the wet wipes if they are on the table": a plural
                 # pronoun means the nearest thing named in the plural, not a singular topic
                 found.append(Mention((next(r for r in reversed(self.recent) if r in self.plural),), i, i + 1,
@@ -967,6 +972,12 @@ class _Reader:
         thing = next((m for m in found if m.kind == "role" and not _placed(words, m)), None)
         if thing is not None:
             self.heading_topic = thing.roles  # the thing spoken of, not a place it goes to
+        # (for the next clause only, and unless a thing named in the plural follows the part: "1
+        # dresser (the chest of drawers ...)" said in a list of materials is long past when a
+        # later row's "If they are not on the floor" speaks of the scissors)
+        parts = [k for k, w in enumerate(words) if w in PARTS and k in self.plural_at]
+        self.parts_last = bool(parts) and not any(m.kind == "role" and m.start > parts[-1]
+                                                  and m.end - 1 in self.plural_at for m in found)
         return found
 
     def facts(self, text: str) -> tuple[list[Fact], tuple[str, ...]]:
@@ -2965,7 +2976,10 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             # "switch off the lamp in case it is on, and shut the wardrobe if it is open": a new
             # instruction with its own postposed condition, not nested under the previous one
             context = []
-        if cl.role == "else" and context:
+        if cl.role == "else" and context and WORD.search(cl.text):
+            # (an `else` clause with no words is "instead" closing the instruction before it: "but
+            # if the machine is running it goes into the hamper instead; and if the hamper is
+            # full, ...": what follows is asked under that condition, not its opposite)
             slot0, neg0, key0 = context[-1]
             context[-1] = (slot0, not neg0, key0)
         # "put it in the fridge - the fridge door may already be open": an uncertain remark

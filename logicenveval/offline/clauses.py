@@ -540,6 +540,10 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
         pieces += own
         head = ""
     if head:
+        step = _last_step(head) if not _first_cue(head.lower(), CONDITIONAL) else None
+        if step is not None:  # "Open the fridge, get the pan onto the stove unless ...": the last step's
+            pieces += _split(head[:step])
+            head = head[step:].lstrip(" ,")
         pieces += _split(head) if _first_cue(head.lower(), CONDITIONAL) else [(head, cue, "consequence")]
         if pieces and pieces[-1][2] in ("statement", "scene"):
             pieces[-1] = (pieces[-1][0], cue, "consequence")
@@ -566,9 +570,13 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
             pieces += _split(cond[cut:])
         else:
             imp = _imperative_cut(cond)
-            pieces.append((cond if imp is None else cond[:imp], cue, "condition"))
+            step = _next_step(cond) if imp is None else None
+            pieces.append((cond if imp is None else cond[:imp], cue, "condition") if step is None
+                          else (cond[:step], cue, "condition"))
             if imp is not None:  # "the towel, if dirty wash it": the instruction follows
                 pieces.append((cond[imp:], cue, "consequence"))
+            if step is not None:  # "..., take an egg and put it in the pan": the list's next step
+                pieces += _split(cond[step:].lstrip(" ,"))
         if other:
             pieces.append((tail[other.end():], "otherwise", "else"))
         return pieces
@@ -632,6 +640,30 @@ def _main_clause(ws: list[str], k: int) -> bool:
     return ws[k] == "the" and any(
         ws[k + n].endswith("s") and ws[k + n] not in getAllLemmas(ws[k + n]).get("VERB", (ws[k + n],))
         and ws[k + n + 1] in OBJECT_STARTS for n in (2, 3) if k + n + 1 < len(ws))
+
+
+def _next_step(cond: str) -> int | None:
+    """Where a condition put after its instruction in a list of steps ends at a comma before the
+    list's next step ("Open the fridge, get the pan onto the stove unless it's there already,
+    take an egg and put it in the pan", "wipe the desk if it is dusty, lock the drawer and ..."):
+    a comma, then an imperative (`imperative`: a verb's base form and its object). None when no
+    step follows: the condition runs to its end ("... if it is on the desk, the shelf or the
+    floor")."""
+    for comma in re.finditer(r",\s*(?:and\s+)?", cond):
+        if imperative(re.findall(r"[a-z']+", expand(cond[comma.end():]).lower())[:2]):
+            return comma.start()
+    return None
+
+
+def _last_step(head: str) -> int | None:
+    """Where the last step of a list of steps before a condition put after it starts ("Open the
+    fridge, get the pan onto the stove unless it's there already": the condition is the pan's
+    step's, the fridge is opened whatever): the last comma before an imperative that opens
+    neither the list (its first step) nor a bare "and" list of things. None with one step."""
+    steps = [c for c in re.finditer(r",\s*(?:and\s+|then\s+)?", head)
+             if imperative(re.findall(r"[a-z']+", expand(head[c.end():]).lower())[:2])
+             and imperative(re.findall(r"[a-z']+", expand(head).lower())[:2])]
+    return steps[-1].start() if steps else None
 
 
 def _imperative_cut(cond: str, subjects_only: bool = False) -> int | None:
