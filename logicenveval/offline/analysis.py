@@ -746,6 +746,10 @@ class _Reader:
         #: role -> whether the last pronoun that took it up was plural ("them", not "it"): a topic
         #: named in the plural and still taken up so is none an "it" speaks of
         self.plural_ref: dict[str, bool] = {}
+        #: the clause before named a thing's part (`PARTS` in the plural: "Potted plant. Check the
+        #: leaves."): a "they" after it takes up the part, which is its thing's, not a thing named
+        #: in the plural before it
+        self.parts_last = False
         #: the clause read starts with the reader's own "it" ("dry:" read as "it is dry", "-> on
         #: the rack" as "it goes on the rack"): the topic it set, whatever its number
         self.own_it = False
@@ -922,7 +926,8 @@ class _Reader:
                 self.topic = self.group
                 found.append(Mention(self.group, i, i + 1, "pronoun"))
             elif w in ("they", "them") and self.topic_kind == "role" and not self.plural & set(self.topic) \
-                    and not self.coordinated and any(r in self.plural for r in self.recent):
+                    and not self.coordinated and any(r in self.plural for r in self.recent) \
+                    and not (self.parts_last or any(words[k] in PARTS and k in self.plural_at for k in range(i))):
                 # "The mark is cleaned - with the wet wipes if they are on the table": a plural
                 # pronoun means the nearest thing named in the plural, not a singular topic
                 found.append(Mention((next(r for r in reversed(self.recent) if r in self.plural),), i, i + 1,
@@ -983,6 +988,12 @@ class _Reader:
         thing = next((m for m in found if m.kind == "role" and not _placed(words, m)), None)
         if thing is not None:
             self.heading_topic = thing.roles  # the thing spoken of, not a place it goes to
+        # (for the next clause only, and unless a thing named in the plural follows the part: "1
+        # dresser (the chest of drawers ...)" said in a list of materials is long past when a
+        # later row's "If they are not on the floor" speaks of the scissors)
+        parts = [k for k, w in enumerate(words) if w in PARTS and k in self.plural_at]
+        self.parts_last = bool(parts) and not any(m.kind == "role" and m.start > parts[-1]
+                                                  and m.end - 1 in self.plural_at for m in found)
         return found
 
     def facts(self, text: str) -> tuple[list[Fact], tuple[str, ...]]:
@@ -1135,6 +1146,7 @@ class _Reader:
                  else self._fit_place(f, words) if f.kind == "location" and f.subject in said_by_pronoun
                  else self._fit_named(f, mentions)
                  for f in facts if self._holds(f)]
+        facts = [self._switched(f) for f in facts]
         facts = [g for f in facts if (g := self._offered(f)) is not None]
         facts += self._back_home(words, mentions, facts)
         goals = [f for f in facts if f.kind == "location" and f.goal]
@@ -1269,6 +1281,17 @@ class _Reader:
         if state is None or state[0] not in _MACHINE_STATES:
             return None
         return next((r for r in reversed(self.recent + before) if state[0] in self.capable.get(r, ())), None)
+
+    def _switched(self, f: Fact) -> Fact:
+        """"If the air conditioner is open, please close it": a state said of a thing that cannot
+        take it but can take its switched sense (`SWITCHED_SENSE`) is that sense, as the speakers
+        of the many languages that open and close a light, a fan or a television say it; a thing
+        that opens (a laptop, a washing machine) keeps its "open", and a pronoun's "open" goes to
+        a thing nearby that opens first (`_fit`)."""
+        sense = SWITCHED_SENSE.get(f.key) if f.kind == "state" else None
+        if sense is None or not self._misfit(f) or sense not in self.capable.get(f.subject, ()):
+            return f
+        return replace(f, key=sense, condition=f"state({f.subject}, {sense})")
 
     def _can_take(self, f: Fact, roles: Iterable[str]) -> list[str]:
         """The roles among `roles`, other than `f`'s subject, that can take `f`'s state, in order,
@@ -2355,6 +2378,10 @@ def _read_heading(reader: _Reader, text: str) -> tuple[list[Fact], tuple[str, ..
 #: with the catalog capability that allows each
 FITTED_BY = {"open": "openable", "toggled_on": "toggleable", "filled": "fillable"}
 FITTED = frozenset(FITTED_BY)
+#: a state's sense for a thing that switches but cannot take the state itself: "open" / "closed"
+#: said of an air conditioner, a lamp or a television is on / off (Turkish "açık", Chinese "开",
+#: Greek "ανοιχτό", Arabic "مفتوح" say both), `_Reader._switched`
+SWITCHED_SENSE = {"open": "toggled_on"}
 #: prepositions with a sense of place only (not "on", "in": "left on", "plugged in"), after which
 #: a bare noun phrase is a place even without an article ("lamp over chart table", "kettle
 #: beside sink": `_pp_at`)
@@ -2977,7 +3004,10 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             # a verbless tool phrase goes on with the instruction before, whatever its condition
             # asks of the tool, `_with_tool`)
             with_tool = set(cl.mentions)
-        if cl.role == "else" and context:
+        if cl.role == "else" and context and WORD.search(cl.text):
+            # (an `else` clause with no words is "instead" closing the instruction before it: "but
+            # if the machine is running it goes into the hamper instead; and if the hamper is
+            # full, ...": what follows is asked under that condition, not its opposite)
             slot0, neg0, key0 = context[-1]
             context[-1] = (slot0, not neg0, key0)
         # "put it in the fridge - the fridge door may already be open": an uncertain remark

@@ -161,6 +161,12 @@ _WITHOUT = re.compile(r"^(\W*)(?:without|with no|in the absence of|absent|failin
 _SUBJECT_TO = re.compile(r"^(\W*)(?:subject to|in the event of|on condition of)\s+((?:the|a|an|its|their|your|my|our)\s+[^,;]+?)\s+being\b", re.I)
 _WHERE = re.compile(r"^(\W*)where\b(?=[^?]*,[^?]*$)", re.I)
 _PROVISO = re.compile(r"\bprovided that,?\s+(?:where|if|when|in case)\b", re.I)
+#: an exception's connective after a comma before a clause-opening "where" ("..., save that where
+#: the machine is already running it shall go into the hamper", "..., except where the window is
+#: already closed", "..., but where the projector is already off, ..."): the exception's
+#: condition, read "but if" as the proviso's is; with no comma before it the connective takes a
+#: place ("anywhere except where the lamp is", "not on the shelf but where the plates are kept")
+_EXCEPT_WHERE = re.compile(r",\s*(?:(?:save|except)(?:\s+that)?|but),?\s+where\b(?!\s+(?:is|are|was|were|do|does|did|should|shall|can|could|would|will)\b)", re.I)
 #: "A plate left on the table shall, if clean, be placed in the cabinet": a condition put between
 #: a modal and its verb is the condition of the whole clause
 _INTERPOSED = re.compile(r"^(?P<head>.+?\b(?:shall|must|will|should|is to|are to|has to|have to|needs to|need to))"
@@ -174,7 +180,7 @@ def _apposition(sentence: str) -> str:
     a fronted `without a sponge, ...` is the condition `if there is no sponge, ...`."""
     sentence = _WITHOUT.sub(r"\1if there is no ", sentence)  # "without a sponge, use ...": a condition
     sentence = _SUBJECT_TO.sub(r"\1if \2 is", sentence)
-    sentence = _PROVISO.sub("but if", _WHERE.sub(r"\1if", sentence))
+    sentence = _EXCEPT_WHERE.sub(", but if", _PROVISO.sub("but if", _WHERE.sub(r"\1if", sentence)))
     interposed = _INTERPOSED.match(sentence)
     if interposed is not None:
         cond = interposed.group("cond")
@@ -534,6 +540,10 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
         pieces += own
         head = ""
     if head:
+        step = _last_step(head) if not _first_cue(head.lower(), CONDITIONAL) else None
+        if step is not None:  # "Open the fridge, get the pan onto the stove unless ...": the last step's
+            pieces += _split(head[:step])
+            head = head[step:].lstrip(" ,")
         pieces += _split(head) if _first_cue(head.lower(), CONDITIONAL) else [(head, cue, "consequence")]
         if pieces and pieces[-1][2] in ("statement", "scene"):
             pieces[-1] = (pieces[-1][0], cue, "consequence")
@@ -560,9 +570,13 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
             pieces += _split(cond[cut:])
         else:
             imp = _imperative_cut(cond)
-            pieces.append((cond if imp is None else cond[:imp], cue, "condition"))
+            step = _next_step(cond) if imp is None else None
+            pieces.append((cond if imp is None else cond[:imp], cue, "condition") if step is None
+                          else (cond[:step], cue, "condition"))
             if imp is not None:  # "the towel, if dirty wash it": the instruction follows
                 pieces.append((cond[imp:], cue, "consequence"))
+            if step is not None:  # "..., take an egg and put it in the pan": the list's next step
+                pieces += _split(cond[step:].lstrip(" ,"))
         if other:
             pieces.append((tail[other.end():], "otherwise", "else"))
         return pieces
@@ -626,6 +640,30 @@ def _main_clause(ws: list[str], k: int) -> bool:
     return ws[k] == "the" and any(
         ws[k + n].endswith("s") and ws[k + n] not in getAllLemmas(ws[k + n]).get("VERB", (ws[k + n],))
         and ws[k + n + 1] in OBJECT_STARTS for n in (2, 3) if k + n + 1 < len(ws))
+
+
+def _next_step(cond: str) -> int | None:
+    """Where a condition put after its instruction in a list of steps ends at a comma before the
+    list's next step ("Open the fridge, get the pan onto the stove unless it's there already,
+    take an egg and put it in the pan", "wipe the desk if it is dusty, lock the drawer and ..."):
+    a comma, then an imperative (`imperative`: a verb's base form and its object). None when no
+    step follows: the condition runs to its end ("... if it is on the desk, the shelf or the
+    floor")."""
+    for comma in re.finditer(r",\s*(?:and\s+)?", cond):
+        if imperative(re.findall(r"[a-z']+", expand(cond[comma.end():]).lower())[:2]):
+            return comma.start()
+    return None
+
+
+def _last_step(head: str) -> int | None:
+    """Where the last step of a list of steps before a condition put after it starts ("Open the
+    fridge, get the pan onto the stove unless it's there already": the condition is the pan's
+    step's, the fridge is opened whatever): the last comma before an imperative that opens
+    neither the list (its first step) nor a bare "and" list of things. None with one step."""
+    steps = [c for c in re.finditer(r",\s*(?:and\s+|then\s+)?", head)
+             if imperative(re.findall(r"[a-z']+", expand(head[c.end():]).lower())[:2])
+             and imperative(re.findall(r"[a-z']+", expand(head).lower())[:2])]
+    return steps[-1].start() if steps else None
 
 
 def _imperative_cut(cond: str, subjects_only: bool = False) -> int | None:

@@ -573,8 +573,19 @@ TRAILING_ADVERBIALS = ("already", "still", "now", "again", "overnight", "earlier
                        "for now", "in there", "in here")
 #: words after a predicate state that go on to another clause ("if it's still going, then ...")
 _GOING_ON = ("then", "and", "or", "but", "so")
+#: the times of a day a state may be said to have held since, after, from or during ("was it left
+#: going after the last nap?", "if the heater is still going since lunch", "still going from last
+#: night"): a preposition of time before one of these says when, as `TRAILING_ADVERBIALS` do, so
+#: the state is still its clause's predicate; "going after the cat" or "going in the cupboard
+#: after lunch" name no such time straight after "going" and leave the verb a verb
+TIMES_OF_DAY = ("nap", "naps", "sleep", "breakfast", "lunch", "dinner", "supper", "tea", "meal", "film",
+                "movie", "meeting", "shift", "party", "class", "lesson", "service", "session", "night",
+                "morning", "afternoon", "evening", "weekend", "bath", "visit", "match", "game", "show")
+_TIME_PREPOSITIONS = ("after", "since", "from", "before", "during", "through", "over")
+_TIME_AFTER = (rf"(?:{'|'.join(_TIME_PREPOSITIONS)})\s+(?:(?:the|this|that|last|her|his|their|our|my|your)\s+){{0,2}}"
+               rf"(?:{'|'.join(TIMES_OF_DAY)})(?![\w-])")
 _SPACED = re.compile(" ")
-_ADVERBIALS = "|".join(_SPACED.sub(r"\\s+", a) for a in TRAILING_ADVERBIALS)
+_ADVERBIALS = "|".join([_SPACED.sub(r"\\s+", a) for a in TRAILING_ADVERBIALS] + [_TIME_AFTER])
 _CLAUSE_END = r"(?=\s*(?:[,.;:!?)]|$|\s(?:" + "|".join(_GOING_ON) + "|" + _ADVERBIALS + r")\b))"
 #: participles and phrases that say a thing is not where it should be at all, as a predicate at a
 #: clause's end: "if the mug has been taken", "if the lamp was removed", "when it has
