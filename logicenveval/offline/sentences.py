@@ -340,7 +340,7 @@ _BARE_PARTICIPLE = re.compile(
 def _participle_state(m: re.Match[str]) -> str:
     """The `_BARE_PARTICIPLE` match with its verb as the state's participle, when it is one."""
     verb = m.group("verb").lower()
-    done = next((f for f in (verb + "ed", verb + "d") if f in STATE_WORDS), None)
+    done: str | None = next((str(f) for f in getInflection(verb, tag="VBN") if f in STATE_WORDS), None)
     if done is None or verb in STATE_WORDS or m.group("subj").lower() in PERSONAL_SUBJECTS:
         return m.group(0)
     return m.group("head") + done
