@@ -571,8 +571,8 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
         else:
             imp = _imperative_cut(cond)
             step = _next_step(cond) if imp is None else None
-            pieces.append((cond if imp is None else cond[:imp], cue, "condition") if step is None
-                          else (cond[:step], cue, "condition"))
+            end = imp if imp is not None else step
+            pieces.append((cond if end is None else cond[:end], cue, "condition"))
             if imp is not None:  # "the towel, if dirty wash it": the instruction follows
                 pieces.append((cond[imp:], cue, "consequence"))
             if step is not None:  # "..., take an egg and put it in the pan": the list's next step
@@ -642,6 +642,12 @@ def _main_clause(ws: list[str], k: int) -> bool:
         and ws[k + n + 1] in OBJECT_STARTS for n in (2, 3) if k + n + 1 < len(ws))
 
 
+def _opens_step(text: str) -> bool:
+    """Whether `text` opens with an imperative (`imperative`: a verb's base form and its object),
+    a step of a list of steps."""
+    return imperative(re.findall(r"[a-z']+", expand(text).lower())[:2])
+
+
 def _next_step(cond: str) -> int | None:
     """Where a condition put after its instruction in a list of steps ends at a comma before the
     list's next step ("Open the fridge, get the pan onto the stove unless it's there already,
@@ -649,10 +655,7 @@ def _next_step(cond: str) -> int | None:
     a comma, then an imperative (`imperative`: a verb's base form and its object). None when no
     step follows: the condition runs to its end ("... if it is on the desk, the shelf or the
     floor")."""
-    for comma in re.finditer(r",\s*(?:and\s+)?", cond):
-        if imperative(re.findall(r"[a-z']+", expand(cond[comma.end():]).lower())[:2]):
-            return comma.start()
-    return None
+    return next((c.start() for c in re.finditer(r",\s*(?:and\s+)?", cond) if _opens_step(cond[c.end():])), None)
 
 
 def _last_step(head: str) -> int | None:
@@ -660,9 +663,9 @@ def _last_step(head: str) -> int | None:
     fridge, get the pan onto the stove unless it's there already": the condition is the pan's
     step's, the fridge is opened whatever): the last comma before an imperative that opens
     neither the list (its first step) nor a bare "and" list of things. None with one step."""
-    steps = [c for c in re.finditer(r",\s*(?:and\s+|then\s+)?", head)
-             if imperative(re.findall(r"[a-z']+", expand(head[c.end():]).lower())[:2])
-             and imperative(re.findall(r"[a-z']+", expand(head).lower())[:2])]
+    if not _opens_step(head):
+        return None
+    steps = [c for c in re.finditer(r",\s*(?:and\s+|then\s+)?", head) if _opens_step(head[c.end():])]
     return steps[-1].start() if steps else None
 
 
@@ -677,6 +680,7 @@ def _imperative_cut(cond: str, subjects_only: bool = False) -> int | None:
     off the shelf put back, ...") as often as not."""
     said = expand(cond).lower()
     ws = list(re.finditer(r"[a-z]+", said))
+    plain = [w.group() for w in ws]
     for k in range(1, len(ws) - 1):
         gap = said[ws[k - 1].end():ws[k].start()]
         # "if it still is can you shut it": a request ("can you", "could you") opens the
@@ -698,8 +702,7 @@ def _imperative_cut(cond: str, subjects_only: bool = False) -> int | None:
         # a terse instruction with its verb dropped after a bare state ("if wet into laundry
         # basket", "IF DIRTY ONTO THE PILE"): the direction starts it (`DIRECTIONS`)
         bare = ws[k].group() in DIRECTIONS and ws[k - 1].group() in STATE_WORDS
-        if not subjects_only and (request or bare or imperative([ws[k].group(), ws[k + 1].group()])) or _main_clause(
-                [w.group() for w in ws], k):
+        if not subjects_only and (request or bare or imperative(plain[k:k + 2])) or _main_clause(plain, k):
             # the same words in the text as written (the expansion only lengthens what is before)
             rest = said[ws[k].start():]
             at = cond.lower().rfind(rest)

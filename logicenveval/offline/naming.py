@@ -1142,9 +1142,9 @@ class _Reader:
         if holder is not None:
             return n + 1, holder
         m, second = self.match(j)
-        kinds = set(self.heads.get(words[j], []))
         if second is None or m > 1:
             return n, category
+        kinds = set(self.heads.get(words[j], []))
         if words[j] in _PACKAGING or len(kinds) > 1:
             return n + 1, category
         return n, category

@@ -2354,10 +2354,11 @@ def _fallback(sent: _Sentence, before: _Before, lex: Lexicon, catalog: Catalog, 
         for a, b in _parts(words, clause):
             ms = [m for m in sent.mentions if a <= m.start and m.end <= b]
             lead = next((w for w in words[a:b] if w not in SUBJECT_LEADS), "")
-            if ms and habitual(words[a:b]) and lead not in SUBORDINATORS | _WHERE_LEADS:
+            habit = habitual(words[a:b])
+            if ms and habit and lead not in SUBORDINATORS | _WHERE_LEADS:
                 for item, prep, holder in _habit_subject(sent, ms, a, b):
                     _put_new(reading, "presumed", catalog, lex, item, holder, prep)
-            if not ms or habitual(words[a:b]) or lead in SUBORDINATORS | _WHERE_LEADS:
+            if not ms or habit or lead in SUBORDINATORS | _WHERE_LEADS:
                 continue  # "where the carton remains on the table, ...": a condition's register
             # the "to" of "has moved to" is where the thing went, of "next to" where it is: no goal
             stated = not {w for k, w in enumerate(words[a:b], a)
