@@ -217,7 +217,8 @@ prints LogCov / SceVR / FauDR for each, then per task:
   quilting pattern, a concert programme note) and six new tasks in rooms none of the sets above
   use (a stage manager's rehearsal report, a band's set list, a life-drawing class's session plan,
   a historic house museum's housekeeping schedule, a pottery studio's members' notice, an Arabic
-  speaker's note about the majlis). Fresh (`FRESH`) until first measured;
+  speaker's note about the majlis). Fresh (`FRESH`) until measured six times (sixteenth session),
+  then a development set;
 - `dev30 reworded` and `dev30 new`: tests/data/reader_dev30/ — the thirtieth development set,
   written in the fifteenth session (beside dev 29, each in its own family of registers) in
   registers of emergency services, the armed forces, aviation, shipping and security no set used
@@ -226,7 +227,7 @@ prints LogCov / SceVR / FauDR for each, then per task:
   card) and six new tasks in rooms none of the sets above use (a fire station's watch handover
   log, a battalion's Part One Orders, a flying club's crew-room NOTAM, a ship master's night order
   book, a guarding company's assignment instructions, a Romanian neighbour's note). Fresh
-  (`FRESH`) until first measured;
+  (`FRESH`) until measured six times (sixteenth session), then a development set;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -259,8 +260,9 @@ was written for (a rule too wide shows as a task of another set falling):
     python benchmarks/reader_generalisation.py --dev-only --compare before.json # with the rule
 
 `--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: the
-rows of dev 29 and dev 30, written in the fifteenth session, until measured; dev 25 and dev 26 left
-it in that session after their third measurement, and dev 27 and dev 28 after their fifth), so a tuner's runs
+sets written in a session, until measured; dev 25 and dev 26 left it in the fifteenth session after
+their third measurement, dev 27 and dev 28 after their fifth, and dev 29 and dev 30 in the sixteenth
+after their sixth), so a tuner's runs
 never show them; `--dev-only --fresh` keeps them, to measure them. `--skip 'dev9 reworded,dev9 new'` leaves any other rows' sets out as well.
 
 `--placements` measures instead the reader's recall of stated placements, without running a
@@ -410,7 +412,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH: frozenset[str] = frozenset({"dev29 reworded", "dev29 new", "dev30 reworded", "dev30 new"})
+FRESH: frozenset[str] = frozenset()
 GENERATOR = "logicenvgen"
 
 
