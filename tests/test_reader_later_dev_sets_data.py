@@ -1,8 +1,8 @@
-"""The reader's fifth to thirtieth development sets (tests/data/reader_dev5/, reader_dev6/,
+"""The reader's fifth to thirty-first development sets (tests/data/reader_dev5/, reader_dev6/,
 reader_dev7/, reader_dev8/, reader_dev9/, reader_dev10/, reader_dev11/, reader_dev12/, reader_dev13/,
 reader_dev14/, reader_dev15/, reader_dev16/, reader_dev17/, reader_dev18/, reader_dev19/, reader_dev20/,
 reader_dev21/, reader_dev22/, reader_dev23/, reader_dev24/, reader_dev25/, reader_dev26/,
-reader_dev27/, reader_dev28/, reader_dev29/, reader_dev30/): new tasks and rewordings written from the task format, the
+reader_dev27/, reader_dev28/, reader_dev29/, reader_dev30/, reader_dev31/): new tasks and rewordings written from the task format, the
 catalog and the built-in tasks, without reading the offline reader or running it on them, for rounds of reader
 rules to be tuned on. One table of what differs between them; the same checks for each.
 
@@ -185,6 +185,7 @@ SETS = (
     DevSet("reader_dev28", "_d28", 3, 6, ("taproom_pub_close_down_card", "living_room_plant_care_d28")),
     DevSet("reader_dev29", "_d29", 3, 6, ("kiln_room_members_notice", "laundry_drying_rack_d29")),
     DevSet("reader_dev30", "_d30", 3, 6, ("officers_mess_night_order_book", "lamp_or_pillow_fetch_d30")),
+    DevSet("reader_dev31", "_d31", 3, 6, ("despatch_bay_pick_list", "bathroom_counter_sort_d31")),
 )
 IDS = [s.name for s in SETS]
 ENTRIES = {s.name: rewordings(DATA / s.name) for s in SETS}
