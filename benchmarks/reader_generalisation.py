@@ -236,6 +236,16 @@ prints LogCov / SceVR / FauDR for each, then per task:
   specification) and six new tasks in rooms none of the sets above use (a peer reviewer's report,
   a builder's site diary, a warehouse pick list, a surveyor's home survey report, a game's patch
   notes, a Persian aunt's note). Fresh (`FRESH`) until first measured;
+- `dev32 reworded` and `dev32 new`: tests/data/reader_dev32/ — the thirty-second development set,
+  written in the sixteenth session (beside dev 31, each in its own family of registers) in
+  registers of utilities and energy, broadcasting and telecoms, zoos and wildlife parks, surveying
+  and mapping, and beekeeping and brewing no set used and the English of an Indonesian speaker:
+  one rewording each of 3 built-in descriptions (a beekeeping association's jobs-for-the-month
+  column, a live television running order, a water company's notice to a customer) and six new
+  tasks in rooms none of the sets above use (an electricity network's planned power-cut notice, a
+  broadband engineer's appointment confirmation, a zoo keeper's daily round sheet, a land
+  surveyor's field notes, a home brewer's batch log, an Indonesian host's note about the ruang
+  tamu). Fresh (`FRESH`) until first measured;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -268,7 +278,7 @@ was written for (a rule too wide shows as a task of another set falling):
     python benchmarks/reader_generalisation.py --dev-only --compare before.json # with the rule
 
 `--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: the
-sets written in a session, until measured: now dev 31, written in the sixteenth session; dev 25 and
+sets written in a session, until measured: now dev 31 and dev 32, written in the sixteenth session; dev 25 and
 dev 26 left it in the fifteenth session after their third measurement, dev 27 and dev 28 after their
 fifth, and dev 29 and dev 30 in the sixteenth after their sixth), so a tuner's runs
 never show them; `--dev-only --fresh` keeps them, to measure them. `--skip 'dev9 reworded,dev9 new'` leaves any other rows' sets out as well.
@@ -323,7 +333,7 @@ dev5_new=... dev6_reworded=... dev6_new=... dev7_reworded=... dev7_new=... dev8_
 dev8_new=... dev9_reworded=... dev9_new=... dev10_reworded=... dev10_new=... dev11_reworded=...
 dev11_new=... dev12_reworded=... dev12_new=... dev13_reworded=... dev13_new=... dev14_reworded=... dev14_new=...
 dev15_reworded=... dev15_new=... dev16_reworded=... dev16_new=... dev17_reworded=... dev17_new=...
-dev18_reworded=... dev18_new=... dev19_reworded=... dev19_new=... dev20_reworded=... dev20_new=... dev21_reworded=... dev21_new=... dev22_reworded=... dev22_new=... dev23_reworded=... dev23_new=... dev24_reworded=... dev24_new=... dev25_reworded=... dev25_new=... dev26_reworded=... dev26_new=... dev27_reworded=... dev27_new=... dev28_reworded=... dev28_new=... dev29_reworded=... dev29_new=... dev30_reworded=... dev30_new=... dev31_reworded=... dev31_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
+dev18_reworded=... dev18_new=... dev19_reworded=... dev19_new=... dev20_reworded=... dev20_new=... dev21_reworded=... dev21_new=... dev22_reworded=... dev22_new=... dev23_reworded=... dev23_new=... dev24_reworded=... dev24_new=... dev25_reworded=... dev25_new=... dev26_reworded=... dev26_new=... dev27_reworded=... dev27_new=... dev28_reworded=... dev28_new=... dev29_reworded=... dev29_new=... dev30_reworded=... dev30_new=... dev31_reworded=... dev31_new=... dev32_reworded=... dev32_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
 rows only).
 """
 
@@ -380,6 +390,7 @@ DEV28 = ROOT / "tests" / "data" / "reader_dev28"
 DEV29 = ROOT / "tests" / "data" / "reader_dev29"
 DEV30 = ROOT / "tests" / "data" / "reader_dev30"
 DEV31 = ROOT / "tests" / "data" / "reader_dev31"
+DEV32 = ROOT / "tests" / "data" / "reader_dev32"
 HOLDOUT2 = ROOT / "tests" / "data" / "reader_holdout2"
 #: (row name, tasks folder; None = the built-in tasks)
 SETS: tuple[tuple[str, Path | None], ...] = (
@@ -414,6 +425,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
     ("dev29 reworded", DEV29 / "tasks_reworded"), ("dev29 new", DEV29 / "tasks_new"),
     ("dev30 reworded", DEV30 / "tasks_reworded"), ("dev30 new", DEV30 / "tasks_new"),
     ("dev31 reworded", DEV31 / "tasks_reworded"), ("dev31 new", DEV31 / "tasks_new"),
+    ("dev32 reworded", DEV32 / "tasks_reworded"), ("dev32 new", DEV32 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
     ("held-out2 reworded", HOLDOUT2 / "tasks_reworded"), ("held-out2 new", HOLDOUT2 / "tasks_new"),
 )
@@ -422,7 +434,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH: frozenset[str] = frozenset({"dev31 reworded", "dev31 new"})
+FRESH: frozenset[str] = frozenset({"dev31 reworded", "dev31 new", "dev32 reworded", "dev32 new"})
 GENERATOR = "logicenvgen"
 
 
