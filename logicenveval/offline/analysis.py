@@ -58,7 +58,7 @@ from logicenveval.offline.lexicon import (
     without_modifiers,
     words_of,
 )
-from logicenveval.offline.placement import described_placements
+from logicenveval.offline.placement import LEFT_PASSIVES, described_placements
 from logicenveval.offline.sentences import (
     ACTIONS,
     EVENT_VERBS,
@@ -562,6 +562,41 @@ def _determines(words: list[str], i: int, m: Mention) -> bool:
     return 0 <= len(between) <= 2 and all(
         (lemmas := getAllLemmas(w)) and not lemmas.get("VERB") and (lemmas.get("ADJ") or lemmas.get("NOUN"))
         for w in between)
+
+
+def _modified_determiner(words: list[str], start: int) -> str:
+    """`determiner`, reading through one noun modifier that is also a verb's form ("the work
+    boots", "my tea cup", "the wash bag"): `determiner` takes such a word for the determiner, as
+    it would a verb ("put the ..."), so a definite thing named with its place ("Inspect the work
+    boots on the boot rack") read as a thing described by its place, an uncertain factor. A
+    participle or a state word there ("the drying rack", "the folded towel", "the dirty mug") is
+    still no modifier of this kind (as the placement reader's `_the_before`)."""
+    article = determiner(words, start)
+    if start > 1 and article == words[start - 1] and words[start - 2] in DEFINITE and article.isalpha() \
+            and article not in ARTICLES | DEFINITE | STATE_WORDS.keys() and not article.endswith(("ing", "ed")) \
+            and getAllLemmas(article).get("NOUN"):
+        return words[start - 2]
+    return article
+
+
+def _habit_of_state(said: str) -> bool:
+    """Whether a statement is a habit of its subject's state said after the subject's place: a
+    definite or bare singular subject with a place ("the TV on the TV stand", "printer on desk"),
+    then, with or without "is", an adverb of frequency and a participle of leaving or switching
+    ("is frequently left running", "often left on"), and no place after it. A habit of place ("the
+    mug often ends up on the desk", "the laptop is often left on the desk") or a generic subject
+    ("printers on the desk are often left on", "a printer on ...") is none: there the place is
+    what may or may not be so."""
+    words = re.findall(r"[a-z']+", said.lower())  # (as written: `tokens` makes "sometimes" "sometime")
+    h = next((k for k, w in enumerate(words) if w in FREQUENCY), None)
+    if h is None or h < 3 or words[0] in INDEFINITE or words[h - 1] in ("are", "were"):
+        return False
+    before, after = words[:h], words[h + 1:]
+    if not set(before) & (PREP_ON | PREP_IN) or after[:1] not in ([w] for w in LEFT_PASSIVES):
+        return False
+    place_after = any(w in PREP_ON | PREP_IN and after[k + 1:k + 2] and (after[k + 1] in ARTICLES | DEFINITE)
+                      for k, w in enumerate(after))
+    return not place_after
 
 
 def _a_participle(word: str) -> bool:
@@ -1547,7 +1582,7 @@ class _Reader:
         situated = goal and words[k] in PREP_ON | PREP_IN and bool(set(skipped) & SITUATION_PARTICIPLES) \
             and not set(skipped) & MOTION
         goal = goal and not situated
-        article = determiner(words, m.start)
+        article = _modified_determiner(words, m.start)
         # "My jacket. I left it on the sofa.", "The tea towel. It is on the counter": a personal
         # pronoun is the particular thing it points back to, as definite as a name with "the" or
         # "my" (`DEFINITE_REFERENCE`); a participle of situation after it ("finding it lying on
@@ -1645,6 +1680,8 @@ class _Reader:
             if w in ("on", "off") and k + 1 < len(words) and words[k + 1] in ARTICLES | PRONOUNS | {"floor"} \
                     and not (skipped and skipped[-1] in ("switched", "turned")):
                 break  # `on the table` is a place, not `switched on`
+            if w == "off" and skipped and skipped[-1] in FALLS:
+                break  # "it has slipped off", "if it fell off": the fall's particle, not switched off
             if w == "used":
                 break  # "the cloth is used": the passive of "use"; only "a used cloth" is dirty
             if k + 1 < len(words) and words[k + 1] in TOWARDS and set(skipped) & PERFECT:
@@ -2918,6 +2955,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # floor": in a condition a moved object's place is the situation, not a goal; so
                 # in a guess at what has happened ("wet wipes may have been put on the table")
                 facts = [replace(f, goal=False) for f in facts]
+            if role == "uncertain" and _habit_of_state(said):
+                # "The TV on the TV stand is frequently left running", "Printer on desk often left
+                # on": the habit is the thing's state; the subject's place is where it is (the
+                # placement reader states it), not what the doubt asks
+                facts = [f for f in facts if f.kind != "location" or f.goal]
             if spread[0] == grammatical:
                 facts = list(_distributed(tuple(facts), spread[1]))
             before_relative = facts

@@ -369,6 +369,15 @@ def imperative(words: list[str]) -> bool:
     return words[0] in lemmas and words[1] in OBJECT_STARTS
 
 
+#: after a spaced dash, a noun phrase that names again the thing before the dash ("The tablet on
+#: the workbench - the one we use for photos", "Kettle on the hob - the old whistling one", "The
+#: lamp by the sofa - that's the one with the dimmer"): an apposition telling which thing is meant,
+#: neither an instruction nor a case's answer, so the part before the dash is no heading asking
+#: where the thing is; "the one" and "the <one or two words> one", or "that is the one"
+_RENAMING = re.compile(r"^(?:(?:that|this|it) is\s+)?(?:the|that|this)\s+(?:[a-z'-]+\s+){0,2}?ones?\b(?!\s+(?:of|more)\b)",
+                       re.I)
+
+
 def _heading(sentence: str) -> tuple[str, str, str] | None:
     """A verbless heading and its instruction: "Pillow on the floor: back on the bed", "Mirror
     dirty? Clean it", "dirty - into the hamper", "Table dirty:" (the instruction in the next piece).
@@ -384,7 +393,7 @@ def _heading(sentence: str) -> tuple[str, str, str] | None:
     if _first_cue(head.lower(), CONDITIONAL) or any(w in UNCERTAIN for w in words) and words[0] not in PLACE_PREPS:
         return None  # (a place may carry a doubt: "On the bed, maybe: a book, a phone")
     mark = m.group("mark").strip()
-    if mark == "-" and not rest:
+    if mark == "-" and (not rest or _RENAMING.match(rest)):
         return None
     return head, mark, rest
 

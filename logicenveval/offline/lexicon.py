@@ -264,6 +264,29 @@ def _named_things(text: str, phrases: Mapping[tuple[str, ...], set[str]]) -> dic
     return {k: v for k, v in out.items() if len(v) == 1}
 
 
+def _modifier_synonyms(roles: Mapping[str, Mapping[str, Any]], catalog: Catalog) -> dict[tuple[str, ...], set[str]]:
+    """"<modifier> <head>" phrases for a role whose kind is named by a two-word compound whose
+    modifier is another kind's name, with that modifier said by one of its kind's own one-word
+    synonyms: "the boot rack" and "the sneaker rack" are the shoe rack ("boot", "sneaker": a
+    shoe), "the couch pillow" the sofa pillow, "the brolly stand" the umbrella stand. English
+    builds such a compound from any name of its first kind, the catalog lists one; the naming
+    reader names the object so (`naming._Reader.named_holder`), and the other readers find the
+    role by the same words. WordNet names lend no modifier."""
+    one_word = {words_of(c)[0]: c for c in catalog.categories if len(words_of(c)) == 1}
+    out: dict[tuple[str, ...], set[str]] = {}
+    for name, role in roles.items():
+        cat = catalog.get(role["category"])
+        for n in {role["category"], *(cat.synonyms if cat else ())}:
+            phrase = words_of(n)
+            if len(phrase) != 2 or is_wordnet_name(n) or phrase[0] not in one_word:
+                continue
+            modifier = catalog.categories[one_word[phrase[0]]]
+            for other in modifier.synonyms:
+                if len(words_of(other)) == 1 and not is_wordnet_name(other):
+                    out.setdefault((words_of(other)[0], phrase[1]), set()).add(name)
+    return out
+
+
 @per_catalog
 def _one_word_names(catalog: Catalog) -> frozenset[tuple[str, ...]]:
     """Every catalog name and synonym of one word ("bench", "chair")."""
@@ -374,6 +397,8 @@ class Lexicon:
                 phrase = words_of(n)
                 if len(phrase) == 2 and "of" not in phrase and not is_wordnet_name(n):
                     lex.phrases.setdefault((singular("".join(phrase)),), {name})
+        for key, meant in _modifier_synonyms(roles, catalog).items():
+            lex.phrases.setdefault(key, meant)
         for name, role in roles.items():
             phrase = words_of(role["category"])
             if len(phrase) == 2 and phrase[1] in CONTROL_HEADS and phrase[:1] not in lex.phrases:

@@ -490,6 +490,29 @@ class _Reader:
             return None
         return j + n - i, kind
 
+    def of_its_place(self, i: int, category: str | None) -> str | None:
+        """The kind named "<place> <thing>" when the one-word name at word `i` (of `category`, or of
+        several kinds: "the lamp") is
+        followed by "from" or "of" and a definite one-word place ("the pillow from the sofa" is a
+        sofa pillow, "the mat from the bathroom" a bathroom mat, "the lamp of the desk" a desk
+        lamp): English says a compound's modifier after its head as a place the thing comes from,
+        as `vessel_of` reads "a bottle of water" a water bottle, and the catalog lists the
+        compound. The place stays a thing of its own (the sofa is named too); a place that is no
+        compound's modifier ("the pillow from the bed": a bed pillow is a pillow), a longer place
+        ("from the sofa bed") or an owner ("the pillow of my sister") names the thing's own kind."""
+        words, gaps = self.text.words, self.text.gaps
+        j = i + 3
+        if j >= len(words) or words[i + 1] not in ("from", "of") or words[i + 2] not in ("the", "this", "that") \
+                or any(_BREAK.search(gaps[k]) for k in range(i + 1, j + 1)):
+            return None
+        if j + 1 < len(words) and not _BREAK.search(gaps[j + 1]) and (words[j + 1] in self.heads or self.match(j)[0] > 1):
+            return None  # "from the sofa bed", "of the coffee table": the place goes on
+        # the place as written ("the bathroom") or by its kind's own name ("the couch": a sofa)
+        place = self.match(j)[1]
+        said = [words[j], *([place] if place is not None and len(words_of(place)) == 1 else [])]
+        kind = next((self.phrases[(w, words[i])] for w in said if (w, words[i]) in self.phrases), None)
+        return kind if kind is not None and kind != category else None
+
     def held_by(self, j: int, vessel: str, end: int) -> tuple[int, str] | None:
         """(length, kind) of the WordNet contents word at word `j` (`contents_names`: "claret",
         "champagne", "pinot noir") when `vessel` heads a name of the kind that holds it: "a
@@ -557,6 +580,8 @@ class _Reader:
         n, category = self.match(i)
         if n > 1:
             return n, category
+        if words[i].isalpha() and (of_place := self.of_its_place(i, category)) is not None:
+            return 1, of_place  # "the pillow from the sofa": a sofa pillow, the sofa named apart
         word = words[i]
         nxt = words[i + 1] if i + 1 < len(words) else ""
         if word in _PACKAGING and nxt == "of" and self.contents_named(i + 2):

@@ -2383,19 +2383,39 @@ def _habit_subject(sent: _Sentence, ms: list[Mention], a: int, b: int) -> list[t
     subject ends at the first finite "be", before any word of the habit, and is "the", the thing
     and its place, nothing else. A generic subject ("Printers on the desk are often left on", "A
     computer on the desk ...") and a habit of place ("The mug is often on the desk", "the mug
-    often ends up on the desk") are no such subject."""
+    often ends up on the desk") are no such subject. A notice's telegraphic line drops "the" and
+    "is" ("TV on TV stand frequently left running"): a bare singular thing opening the part, with
+    its place, ends at the habit's adverb when a participle of leaving or switching follows it."""
     words = sent.words
     v = next((k for k in range(a + 1, b) if words[k] in _SUBJECT_END_BE), b)
-    if words[a] != "the" or v == b or habitual(words[a:v + 1]):
+    thing = next((m for m in ms if m.kind == "role" and len(m.roles) == 1), None)
+    if v == b and thing is not None and thing.start == a and sent.toks[thing.end - 1].word == sent.toks[thing.end - 1].lemma:
+        # (the telegraphic line: the subject ends where the habit's adverb starts)
+        v = next((k for k in range(thing.end, b) if words[k] in FREQUENCY | NORM_ADVERBS), b)
+        if v == b or not _participle_after(words, v + 1, b):
+            return []
+    elif words[a] != "the" or v == b or habitual(words[a:v + 1]):
         return []
-    thing = next((m for m in ms if m.kind == "role" and len(m.roles) == 1 and m.end < v), None)
-    if thing is None or not _subject_at(words, thing.start, a):
+    if thing is None or thing.end >= v or not _subject_at(words, thing.start, a):
         return []
     found = _place_at(sent, ms, thing.end, v, False)
     # (the holder's room may follow it: "the computer on the desk in the study is ...")
     if found is None or found[1].end != v and not _room_after(sent, found[1].end, v):
         return []
     return [(thing.roles[0], found[0], found[1])]
+
+
+#: participles of a thing left as it is, or switched so ("often left running", "regularly switched
+#: on", "frequently forgotten"): a habit of the thing's state (`_participle_after`; the factor
+#: reader's `analysis._habit_of_state`)
+LEFT_PASSIVES = frozenset({"left", "switched", "turned", "forgotten"})
+
+
+def _participle_after(words: list[str], k: int, end: int) -> bool:
+    """Whether the word at `k` (before `end`) is a past participle ("left", "switched"): a
+    telegraphic line's passive with its "is" dropped ("... often left running"), not a verb of
+    place ("... often ends up on the desk": a habit of place, which places nothing)."""
+    return k < end and words[k] in LEFT_PASSIVES
 
 
 def _room_after(sent: _Sentence, k: int, end: int) -> bool:

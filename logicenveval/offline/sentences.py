@@ -233,9 +233,13 @@ _CITATION = re.compile(r"(?<=\S)\[(?:\d+(?:\s*[,\u2013-]\s*\d+)*|[a-z]|(?:citati
 
 
 #: the label of a lettered or numbered item at a line's start ("(b) Bedroom: ...", "c) ...",
-#: "2. Check ...", "(iv) ..."): it orders the items and says nothing, and left in place it hides a
-#: heading after it ("(b) Bedroom:" is no room heading)
-_ITEM_LABEL = re.compile(r"^[ \t]*(?:\((?:[a-z]|[ivx]+|\d{1,2})\)|(?:[a-z]|[ivx]+|\d{1,2})\)|\d{1,2}\.)[ \t]+",
+#: "2. Check ...", "(iv) ..."; a sub-item's "3.2 ...", "1.2.1 ...", as a task card, a manual or a
+#: procedure numbers its steps, one digit after each point, so that a clock time "7.10 ..." stays):
+#: it orders the items and says nothing, and left in place it hides a heading after it ("(b)
+#: Bedroom:" is no room heading) and is a word before the step's condition ("3.2 If muddy, ..."
+#: is no instruction ending "... 3.2 if muddy")
+_ITEM_LABEL = re.compile(r"^[ \t]*(?:\((?:[a-z]|[ivx]+|\d{1,2})\)|(?:[a-z]|[ivx]+|\d{1,2})\)|\d{1,2}\.|\d{1,2}(?:\.\d(?!\d))+\.?)"
+                         r"[ \t]+",
                          re.M | re.I)
 
 
@@ -269,11 +273,26 @@ _DROPPED_PRONOUN = {"is": "it", "was": "it", "are": "they", "were": "they"}
 #: is old and is flickering"): the second predicate speaks of the condition's subject, read with
 #: its pronoun ("and it was lying ...") so that it is a clause the reader reads; only after a
 #: subject that is a thing (a pronoun of a thing or a noun phrase with its determiner), not "you"
-#: or "we" ("if you are home and are tired" asks nothing of a thing)
+#: or "we" ("if you are home and are tired" asks nothing of a thing); so a condition inverted with
+#: "should", whose second predicate's "be" is the base form the modal governs ("Should it have
+#: slipped off and be lying on the floor", "should the towels have fallen and be lying about"):
+#: "and it be lying ...", with "they" after "they" (`_shared_pronoun`)
 _SHARED_SUBJECT = re.compile(
-    r"\b(?P<head>(?:if|when|whenever|unless)\s+(?:it|they|(?:the|my|your|our|his|her|its|their|a|an|any)\s+"
-    r"[a-z-]+(?:\s+[a-z-]+)?)\b[^,.;:?!()\n]{1,60}?\s+and)\s+(?P<be>was|were|is|are)\s+(?=[a-z])", re.I)
+    r"\b(?P<head>(?P<cue>if|when|whenever|unless|should)\s+(?P<subject>it|they|(?:the|my|your|our|his|her|its|their|a|an|any)\s+"
+    r"[a-z-]+(?:\s+[a-z-]+)?)\b[^,.;:?!()\n]{1,60}?\s+and)\s+(?P<be>was|were|is|are|be)\s+(?=[a-z])", re.I)
 _BE_PRONOUN = {"was": "it", "is": "it", "were": "they", "are": "they"}
+
+
+def _shared_pronoun(m: re.Match[str]) -> str:
+    """`_SHARED_SUBJECT`'s second predicate with its pronoun: by the finite "be"'s number, or after
+    an inverted "should" (whose "be" is the base form, of either number) by the subject's ("they"
+    only after "they"); a finite "be" after "should" is a new clause, left as it is."""
+    be = m.group("be")
+    inverted = m.group("cue").lower() == "should"
+    if inverted != (be.lower() == "be"):
+        return m.group(0)
+    pronoun = ("they" if m.group("subject").lower() == "they" else "it") if inverted else _BE_PRONOUN[be.lower()]
+    return f"{m.group('head')} {pronoun} {be} "
 #: a note's sentence of doubt with its subject dropped after the thing was named ("Toothbrush
 #: (mine). May have fallen on the floor.", "The scarf - might be on the radiator", "Spare key:
 #: could still be in the drawer"): a modal of doubt opening its sentence or the part after a
@@ -1014,8 +1033,7 @@ def unquote(text: str) -> str:
     plain = _EMPHATIC_DO.sub("", plain)
     plain = _ELIDED_END_STATE.sub(r"\1 it is ", _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", _ELIDED_PLACE.sub(r"\1 it is ", plain))))
     plain = _DROPPED_SUBJECT.sub(lambda m: f"{m.group(1)} {_DROPPED_PRONOUN[m.group(2).lower()]} ", plain)
-    plain = _SHARED_SUBJECT.sub(lambda m: f"{m.group('head')} {_BE_PRONOUN[m.group('be').lower()]} {m.group('be')} ",
-                                plain)
+    plain = _SHARED_SUBJECT.sub(_shared_pronoun, plain)
     plain = _DROPPED_DOUBT.sub(lambda m: f"{m.group(1)}{_match_case(m.group(2), 'it')} {m.group(2).lower()}", plain)
     plain = _ACTED_STATE.sub(_acted_state, plain)
     plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)
