@@ -2343,6 +2343,53 @@ def _undone(reader: _Reader, condition: str, instruction: str) -> list[Fact]:
             for r in reader.topic if flag in reader.capable.get(r, frozenset())]
 
 
+#: verbs whose bare use leaves a thing in a state ("close it", "empty the bin"), as the state word
+#: that state is said by: for a condition whose predicate is elided (`_elided`)
+RESULT_VERBS: dict[str, str] = {
+    "close": "closed", "shut": "shut", "open": "open", "empty": "empty", "fill": "full", "refill": "full",
+    "clean": "clean", "wash": "clean", "dry": "dry",
+}
+#: verbs whose particle says the state they leave ("switch off the lamp", "turn the lights on",
+#: "shut the laptop down"), and what each particle says
+_PARTICLE_VERBS = frozenset({"switch", "turn", "flick", "power", "shut"})
+_PARTICLES = {"on": "on", "off": "off", "down": "off", "out": "off"}
+#: the words an elided condition has besides its subject ("if it isn't already", "unless they
+#: already are", "if it has not been yet"): no state, place or thing of its own
+_ELIDED_WORDS = ALREADY_FILLER | {"has", "have", "had", "done", "do", "does", "did", "pls", "please"}
+
+
+def _elided(reader: _Reader, condition: str, names: tuple[str, ...], instruction: str) -> list[Fact]:
+    """A condition whose predicate is elided ("close the microwave if it isn't already", "unless
+    they already are, turn the lights off"): "already" or "yet" with only a thing's pronoun and
+    "be" / "have" says the thing is (not) yet in the state the instruction it goes with leaves it
+    in, so that state is asked. The state is the instruction's particle ("switch off", "turn ...
+    on") or its verb's result (`RESULT_VERBS`); a place ("put it in the sink unless it already
+    is") is `_Reader._already`'s. Only of the thing the pronoun means (or, put first, the thing the
+    instruction names)."""
+    words = WORD.findall(expand(condition.split(",")[0]).lower())  # a vocative after a comma ("..., love")
+    if not words or words[0] not in ("it", "they") or not set(words) & {"already", "yet"} \
+            or not set(words[1:]) <= _ELIDED_WORDS:
+        return []
+    said = [w for w, _, _ in tokens(expand(instruction).lower())]
+    state = ""
+    for k, w in enumerate(said):
+        particle = next((p for p in said[k + 1 : k + 6] if p in _PARTICLES), None) if w in _PARTICLE_VERBS else None
+        if particle is not None:
+            state = _PARTICLES[particle]
+        elif w in RESULT_VERBS:
+            state = RESULT_VERBS[w]
+        if state:
+            break
+    if not state:
+        return []
+    flag, pol = STATE_WORDS[state]
+    things = names or tuple(r for m in reader.lex.find_mentions(tokens(expand(instruction)))
+                            if m.kind == "role" for r in m.roles)[:1]
+    negated = "not" in words
+    # (a state the thing cannot take means the nearest thing that can, as a stated one does: `_fit`)
+    return [reader._fit(Fact(r, f"state({r}, {flag})", "state", flag, negated=negated != (not pol))) for r in things]
+
+
 def _role_after(cut: list[list[Piece]], si: int, pi: int) -> str:
     """The role of the piece after piece `pi` of sentence `si`, whether it ends the sentence's
     heading (the next sentence goes on after a colon) or not; "" after a full stop."""
@@ -2853,6 +2900,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 facts = _parallel(said, facts, clauses, grammatical)
             if cue == "if available" and not any(f.kind in ("location", "exists") and not f.home for f in facts):
                 facts += _available(reader, said)
+            if role == "condition" and not facts and (elided := _elided(
+                    reader, said, names, pieces[pi - 1].text if pi > 0 and pieces[pi - 1].role == "consequence"
+                    else pieces[pi + 1].text if pi + 1 < len(pieces) else "")):
+                # "close the microwave if it isn't already": the state its instruction sets
+                facts, names = elided, tuple(dict.fromkeys(f.subject for f in elided))
             if role == "condition" and all(f.derived for f in facts) and pi + 1 < len(pieces) and (
                     undone := _undone(reader, said, pieces[pi + 1].text)):
                 # "if they've been drawn, open them right up": a condition the reader cannot read,
