@@ -56,3 +56,100 @@ def test_an_elided_condition_asks_the_state_its_instruction_sets(
 def test_a_condition_not_elided_is_not_read_as_the_instructions_state(
         text: str, rooms: tuple[str, ...], word: str) -> None:
     assert not any(word in c for values in factors(text, rooms).values() for c in values), factors(text, rooms)
+
+
+# -- a question offering alternatives: "Bread anywhere else, or none left?" ------------------------
+#
+# After a question of where a thing is, a verbless question (or condition) offering the other
+# places and its absence ("X anywhere else, or none left?", "elsewhere, or none at all?") asks the
+# place's other value and whether there is one at all: "or none" is an elided "or there is none".
+
+#: (text, rooms, the location asked, the presence asked)
+ALTERNATIVES: list[tuple[str, tuple[str, ...], str, str]] = [
+    # a cook's card, terse questions, "none left"
+    ("Bread on the counter? Slice it. Bread anywhere else, or none left? No toast then.", ("kitchen",),
+     "on(bread, kitchen_counter)", "exists(bread)"),
+    # a chat message, lower case, "somewhere else ... none at all", no comma
+    ("towel on the towel rail? hang it straight. towel somewhere else or none at all? grab a fresh one",
+     ("bathroom",), "on(towel, towel_rack)", "exists(towel)"),
+    # a formal instruction, the question after "if so"
+    ("Is the remote control on the sofa? If so, place it on the TV stand. The remote control elsewhere, "
+     "or none at all? No action is required.", ("living_room",), "on(remote_control, sofa)",
+     "exists(remote_control)"),
+    # a Q&A sheet, a condition with "if" and the elided alternative
+    ("Q: Where's the mug? A: If the mug is on the desk, wash it; if it is elsewhere, or none, leave it.",
+     ("study",), "on(mug, desk)", "exists(mug)"),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "place", "presence"), ALTERNATIVES)
+def test_an_elided_none_among_alternatives_asks_the_things_presence(
+        text: str, rooms: tuple[str, ...], place: str, presence: str) -> None:
+    """`analysis._Reader.facts`: "or none" after an alternative of place is "or there is none"."""
+    assert asks(text, rooms, place) and asks(text, rooms, presence), factors(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms", "thing"), [
+    # "none of them": a choice among things, not an absence
+    ("Wash the mugs on the desk, or none of them if you're short of time.", ("study",), "exists(mug)"),
+    # "or none" as an amount of an instruction ("one biscuit or none") asks nothing
+    ("Put one cushion on the sofa or none, as you like.", ("living_room",), "exists(pillow)"),
+])
+def test_none_as_an_amount_asks_no_presence(text: str, rooms: tuple[str, ...], thing: str) -> None:
+    assert not any(thing in c for values in factors(text, rooms).values() for c in values), factors(text, rooms)
+
+
+# -- a thing named with its place, then "if it's there": "the sponge on the shelf, if it's there" --
+#
+# An instruction names a thing (a tool, mostly) with the place it should be at ("wipe it with the
+# sponge on the shelf", "the wet wipes on the table"), then a condition asks only "if it's
+# there": "there" is that place and "it" that thing (not the topic the instruction works on), so
+# the condition asks whether the thing is at the place. Not after a verb of putting, whose place
+# is a goal ("put the mug on the shelf").
+
+#: (text, rooms, the location asked)
+NAMED_THERE: list[tuple[str, tuple[str, ...], str]] = [
+    # a cleaning rota, a plural tool, a comma before the condition
+    ("The floor is stained. Clean the stain with the wet wipes on the coffee table, if they are there. "
+     "Otherwise use the mop.", ("living_room",), "on(wet_wipe, coffee_table)"),
+    # a flatmate's note, the topic spoken of by "it" too
+    ("The mirror is dirty. Wipe it with the sponge on the shelf if it's there; if not, use a towel.",
+     ("bathroom",), "on(sponge, wall_shelf)"),
+    # a terse card, a container, a dash
+    ("Dust the desk with the cloth in the drawer, if it's there - otherwise use a tissue.", ("study",),
+     "inside(cloth, drawer)"),
+    # a verbless method line
+    ("The sink is grimy. Best method: the sponge on the counter, if it is still there. Not there? "
+     "Then a cloth.", ("kitchen",), "on(sponge, kitchen_counter)"),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "place"), NAMED_THERE)
+def test_there_after_a_thing_named_with_its_place_asks_that_place(
+        text: str, rooms: tuple[str, ...], place: str) -> None:
+    """`analysis._named_with_place`: "if it's there" asks the thing at the place it was named at."""
+    f = factors(text, rooms)
+    assert any(place in c and "exists" not in c for values in f.values() for c in values), f
+
+
+@pytest.mark.parametrize(("text", "rooms", "word"), [
+    # a place after a verb of putting is a goal: "if it's there" is not asked of the mug's goal
+    ("Put the mug on the shelf if it's there.", ("kitchen",), "on(mug, wall_shelf)"),
+    # no place named with the thing: "there" is presence, as before
+    ("Wipe the table with the sponge if it's there; otherwise the cloth.", ("kitchen",), "on(sponge"),
+])
+def test_there_without_a_thing_named_at_a_place_is_not_read_as_one(
+        text: str, rooms: tuple[str, ...], word: str) -> None:
+    assert not any(word in c for values in factors(text, rooms).values() for c in values), factors(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms"), [
+    # things listed, then "or none": no alternative of place, so no absence of the first thing
+    ("The sofa may have a cushion, the remote control or a mug on it, or any of them, or none. Put the "
+     "mug in the sink if it is on the sofa.", ("living_room",)),
+    ("On the desk: a book, a mug, or none. If the book is on the desk, shelve it.", ("study",)),
+])
+def test_or_none_after_listed_things_asks_no_absence(text: str, rooms: tuple[str, ...]) -> None:
+    assert not any(c.startswith("exists") for values in factors(text, rooms).values() for c in values), \
+        factors(text, rooms)
+

@@ -1086,6 +1086,9 @@ class _Reader:
         else:
             none = next((i for i, w in enumerate(words) if i > 0 and (
                 w == "none" and words[i - 1] in {"have", "has", "is", "are", "there"}
+                # "Bread anywhere else, or none left?": "or none" after an alternative of place is
+                # "or there is none" (not "a book, a phone, or any of them, or none": things listed)
+                or w == "none" and words[i - 1] == "or" and any(p in " ".join(words[:i]) for p in ELSEWHERE)
                 # "or we haven't got any", "if we do not have any": "none" said with a negation
                 or w == "any" and words[i - 1] in {"have", "has", "got"} and any(_negation(x) for x in words[:i]))),
                 None)
@@ -2629,6 +2632,48 @@ def _says_who(words: list[str], i: int) -> bool:
 _THERE_SUBJECTS = frozenset({"it", "they"})
 
 
+#: the words of a condition that asks only whether its thing is (still) there ("if it's there",
+#: "if they are still there", "unless it isn't there"), for `_named_with_place`
+_STILL_THERE = frozenset({"it", "they", "is", "are", "still", "not", "there"})
+#: prepositions of a place said with a thing's name that a condition asks ("the sponge on the
+#: shelf", "the cloth in the drawer"; "by the wall" is no place the conditions read)
+_WITH_PREPS = frozenset(_THERE_PREPS)
+
+
+def _named_with_place(reader: _Reader, said: str, instruction: str) -> str:
+    """"Wipe it with the sponge on the shelf if it's there", "Preferred method: the wet wipes on
+    the table, if they are there": a condition that asks only "if it is there", after an
+    instruction (of its sentence) that names a thing with the place it should be at, asks whether
+    that thing is at that place; read as "if the sponge is on the shelf" (the pronoun is the thing
+    named with a place, not the topic the instruction works on, and "there" is that place, not the
+    scene). Not after a verb of putting (`ACTIONS`: "put the mug on the shelf" names a goal)."""
+    text = expand(said)
+    words = WORD.findall(text.lower())
+    if "there" not in words or words[0] not in ("it", "they") or not set(words) <= _STILL_THERE:
+        return said
+    source = expand(instruction)
+    toks = tokens(source)
+    verbs = [w for w, _, _ in toks if w != "please"]
+    if not verbs or verbs[0] in ACTIONS:
+        return said
+    iw = [w for w, _, _ in toks]
+    mentions = reader.lex.find_mentions(toks)
+    for m in reversed(mentions):
+        if m.kind != "role" or m.end >= len(iw) or iw[m.end] not in _WITH_PREPS:
+            continue
+        k = m.end + 1
+        while k < len(iw) and iw[k] in ARTICLES:
+            k += 1
+        place = next((x for x in mentions if x.start == k and x.kind in ("role", "floor")), None)
+        if place is None:
+            continue
+        thing = "the " + source[toks[m.start][1] : toks[m.end - 1][2]]
+        where = source[toks[m.end][1] : toks[place.end - 1][2]]
+        text = re.sub(r"\b(?:it|they)\b", thing, text, count=1, flags=re.I)
+        return re.sub(r"\bthere\b", where, text, count=1, flags=re.I)
+    return said
+
+
 def _there_named(reader: _Reader, said: str, clauses: list[Clause], sentence: int) -> str:
     """"Pillows are not to be left on the floor. Should a pillow have fallen there, ...", "Keep
     the lead off the sofa; if the lead has been dropped there, ...": in a condition that names
@@ -2886,6 +2931,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             said = _BARE_BOTH.sub(r"\1 of them", _BARE_EITHER.sub(r"\1 of them", said))
             reader.own_it = own
             reader.group = spread[1] if spread[0] == grammatical else ()
+            if role == "condition" and pi > 0 and pieces[pi - 1].role == "consequence":
+                # "wipe it with the sponge on the shelf if it's there": the thing at that place
+                said = _named_with_place(reader, said, pieces[pi - 1].text)
             if role == "condition":
                 # "if my mug hasn't been washed wash it": the predicate the cut ended
                 said = _there_named(reader, predicate_state(said), clauses, grammatical)
