@@ -7,7 +7,9 @@ from a development set."""
 from __future__ import annotations
 
 import pytest
-from reading import asks, factors
+from reading import CATALOG, asks, brief, factors
+
+from logicenveval.offline.analysis import analyse
 
 # -- a condition whose predicate is elided: "close the microwave if it isn't already" -------------
 #
@@ -153,3 +155,60 @@ def test_or_none_after_listed_things_asks_no_absence(text: str, rooms: tuple[str
     assert not any(c.startswith("exists") for values in factors(text, rooms).values() for c in values), \
         factors(text, rooms)
 
+
+# -- a part named again bare: "the plant's soil ... If the soil is dry" -----------------------------
+#
+# A part named with its thing ("the plant's soil", "the soil of the potted plant", "the washing
+# machine's door") and named again bare later ("if the soil is dry", "Soil dry ->") is still that
+# thing's part, whatever thing the clauses between spoke of (a book, a mug): the state is the
+# thing's, not the topic's.
+
+#: (text, rooms, the condition asked, a factor that must not be made)
+PART_AGAIN: list[tuple[str, tuple[str, ...], str, str]] = [
+    # a numbered check list, a question between
+    ("Check whether the plant's soil is dry. Then look at the book on the desk: is it a novel? If the soil "
+     "is dry, water the plant.", ("study",), "state(potted_plant, wet)", "book_wet"),
+    # a chat message, lower case, "soil's"
+    ("the plant's soil might be dry lol. also is the mug on the desk dirty?? if the soil's dry give the "
+     "plant some water", ("study",), "state(potted_plant, wet)", "mug_wet"),
+    # a formal inspection, "the soil of the potted plant"
+    ("Inspect the soil of the potted plant. Is the book on the shelf a novel? If the soil is wet, leave the "
+     "plant alone.", ("living_room",), "state(potted_plant, wet)", "book_wet"),
+    # a laundry note, a door (read before as the nearest thing that opens)
+    ("The washing machine's door may be open. Is the towel on the floor wet? If the door is open, shut it.",
+     ("laundry_room",), "state(washing_machine, open)", "towel_open"),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition", "wrong"), PART_AGAIN)
+def test_a_part_named_again_is_its_things(text: str, rooms: tuple[str, ...], condition: str, wrong: str) -> None:
+    """`analysis._Reader.part_of`: the thing the part was last named of."""
+    f = factors(text, rooms)
+    assert any(condition in c for values in f.values() for c in values) and wrong not in f, f
+
+
+def test_a_part_named_of_a_later_thing_is_that_things() -> None:
+    text = "The washing machine's door is shut. The dryer's door may be open. If the door is open, shut it."
+    f = factors(text, ("laundry_room",))
+    assert "dryer_open" in f and "washing_machine_open" not in f, f
+
+
+#: a heading that names the part bare ("Soil dry ->", "soil dry ="): (text, rooms, a factor that
+#: must not be made, the factors one subtask must hold)
+PART_HEADING: list[tuple[str, tuple[str, ...], str, list[str]]] = [
+    # a dispatcher's card, questions first, then arrows
+    ("Questions: is the plant's soil dry? Is the mug on the desk dirty? Answers: Soil dry -> bring the plant "
+     "the watering can. If the can is empty, fill it at the sink first.", ("study",), "mug_wet",
+     ["potted_plant_wet", "watering_can_filled"]),
+    # a chat message with "=" for "then"
+    ("check the plant's soil pls. and is the book on the desk a novel? soil dry = water the plant with the "
+     "watering can, and if the can's empty fill it first", ("study",), "book_wet",
+     ["potted_plant_wet", "watering_can_filled"]),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "wrong", "group"), PART_HEADING)
+def test_a_part_heading_is_its_things(text: str, rooms: tuple[str, ...], wrong: str, group: list[str]) -> None:
+    """`analysis._read_heading`: a heading opening with a part named of a thing is that thing's."""
+    a = analyse(brief(text, rooms), CATALOG)
+    assert wrong not in factors(text, rooms) and any(set(group) <= set(g) for g in a.groups), a.groups

@@ -750,6 +750,10 @@ class _Reader:
         #: leaves."): a "they" after it takes up the part, which is its thing's, not a thing named
         #: in the plural before it
         self.parts_last = False
+        #: part word -> the thing it was last named as a part of ("the plant's soil", "the lid of
+        #: the kettle"): a later bare "if the soil is dry" / "Soil dry ->" is said of that thing,
+        #: not of the topic of the clauses between (`_read_heading` too)
+        self.part_of: dict[str, tuple[str, ...]] = {}
         #: the clause read starts with the reader's own "it" ("dry:" read as "it is dry", "-> on
         #: the rack" as "it goes on the rack"): the topic it set, whatever its number
         self.own_it = False
@@ -988,6 +992,11 @@ class _Reader:
         thing = next((m for m in found if m.kind == "role" and not _placed(words, m)), None)
         if thing is not None:
             self.heading_topic = thing.roles  # the thing spoken of, not a place it goes to
+        for k, w in enumerate(words):
+            part_owner = next((m for m in found if m.kind == "role" and (
+                m.end == k or words[k + 1 : k + 2] == ["of"] and m.start in (k + 2, k + 3))), None) if w in PARTS else None
+            if part_owner is not None:
+                self.part_of[w] = part_owner.roles  # "the plant's soil", "the soil of the fern"
         # (for the next clause only, and unless a thing named in the plural follows the part: "1
         # dresser (the chest of drawers ...)" said in a list of materials is long past when a
         # later row's "If they are not on the floor" speaks of the scissors)
@@ -1110,7 +1119,7 @@ class _Reader:
                 if w in STATE_WORDS and w not in ("on", "off", "out") and words[i + 1] in PARTS:
                     flag, pol = STATE_WORDS[w]
                     facts += [Fact(r, f"state({r}, {flag})", "state", flag, negated=not pol, modifier=True)
-                              for r in self.topic]
+                              for r in self.part_of.get(words[i + 1], self.topic)]
                     break
                 # "if the door is shut": a part's state is its thing's - the nearest that can take it
                 j = i + 1
@@ -1121,7 +1130,7 @@ class _Reader:
                     flag, pol = STATE_WORDS[words[j]]
                     neg = any(_negation(x) for x in words[i + 1 : j]) != (not pol)
                     facts += [self._fit(Fact(r, f"state({r}, {flag})", "state", flag, negated=neg))
-                              for r in self.topic]
+                              for r in self.part_of.get(w, self.topic)]
                     break
         core = _before_time_clause(words)
         if not subjects and not facts and self.topic and self.topic_kind == "role" and len(core) <= 4:
@@ -2416,6 +2425,10 @@ def _read_heading(reader: _Reader, text: str) -> tuple[list[Fact], tuple[str, ..
         return facts, names
     # "Bath towel on the floor? Wet: into the basket. Dry: ...": said of the last heading's
     # object, whatever the instructions between named
+    part = WORD.findall(text.lower())[:1]
+    if part and part[0] in reader.part_of:
+        # "Soil dry -> water it" after "the plant's soil": the state of the part named, its thing's
+        return reader.facts(re.sub(rf"^\W*{part[0]}\b", f"the {part[0]} is", text, count=1, flags=re.I))
     reader.topic, reader.topic_kind = reader.heading_topic or reader.topic, "role"
     reader.own_it = True
     try:
