@@ -785,6 +785,10 @@ class _Reader:
         #: leaves."): a "they" after it takes up the part, which is its thing's, not a thing named
         #: in the plural before it
         self.parts_last = False
+        #: part word -> the thing it was last named as a part of ("the plant's soil", "the lid of
+        #: the kettle"): a later bare "if the soil is dry" / "Soil dry ->" is said of that thing,
+        #: not of the topic of the clauses between (`_read_heading` too)
+        self.part_of: dict[str, tuple[str, ...]] = {}
         #: the clause read starts with the reader's own "it" ("dry:" read as "it is dry", "-> on
         #: the rack" as "it goes on the rack"): the topic it set, whatever its number
         self.own_it = False
@@ -1023,6 +1027,11 @@ class _Reader:
         thing = next((m for m in found if m.kind == "role" and not _placed(words, m)), None)
         if thing is not None:
             self.heading_topic = thing.roles  # the thing spoken of, not a place it goes to
+        for k, w in enumerate(words):
+            part_owner = next((m for m in found if m.kind == "role" and (
+                m.end == k or words[k + 1 : k + 2] == ["of"] and m.start in (k + 2, k + 3))), None) if w in PARTS else None
+            if part_owner is not None:
+                self.part_of[w] = part_owner.roles  # "the plant's soil", "the soil of the fern"
         # (for the next clause only, and unless a thing named in the plural follows the part: "1
         # dresser (the chest of drawers ...)" said in a list of materials is long past when a
         # later row's "If they are not on the floor" speaks of the scissors)
@@ -1121,6 +1130,9 @@ class _Reader:
         else:
             none = next((i for i, w in enumerate(words) if i > 0 and (
                 w == "none" and words[i - 1] in {"have", "has", "is", "are", "there"}
+                # "Bread anywhere else, or none left?": "or none" after an alternative of place is
+                # "or there is none" (not "a book, a phone, or any of them, or none": things listed)
+                or w == "none" and words[i - 1] == "or" and any(p in " ".join(words[:i]) for p in ELSEWHERE)
                 # "or we haven't got any", "if we do not have any": "none" said with a negation
                 or w == "any" and words[i - 1] in {"have", "has", "got"} and any(_negation(x) for x in words[:i]))),
                 None)
@@ -1142,7 +1154,7 @@ class _Reader:
                 if w in STATE_WORDS and w not in ("on", "off", "out") and words[i + 1] in PARTS:
                     flag, pol = STATE_WORDS[w]
                     facts += [Fact(r, f"state({r}, {flag})", "state", flag, negated=not pol, modifier=True)
-                              for r in self.topic]
+                              for r in self.part_of.get(words[i + 1], self.topic)]
                     break
                 # "if the door is shut": a part's state is its thing's - the nearest that can take it
                 j = i + 1
@@ -1153,7 +1165,7 @@ class _Reader:
                     flag, pol = STATE_WORDS[words[j]]
                     neg = any(_negation(x) for x in words[i + 1 : j]) != (not pol)
                     facts += [self._fit(Fact(r, f"state({r}, {flag})", "state", flag, negated=neg))
-                              for r in self.topic]
+                              for r in self.part_of.get(w, self.topic)]
                     break
         core = _before_time_clause(words)
         if not subjects and not facts and self.topic and self.topic_kind == "role" and len(core) <= 4:
@@ -2380,6 +2392,53 @@ def _undone(reader: _Reader, condition: str, instruction: str) -> list[Fact]:
             for r in reader.topic if flag in reader.capable.get(r, frozenset())]
 
 
+#: verbs whose bare use leaves a thing in a state ("close it", "empty the bin"), as the state word
+#: that state is said by: for a condition whose predicate is elided (`_elided`)
+RESULT_VERBS: dict[str, str] = {
+    "close": "closed", "shut": "shut", "open": "open", "empty": "empty", "fill": "full", "refill": "full",
+    "clean": "clean", "wash": "clean", "dry": "dry",
+}
+#: verbs whose particle says the state they leave ("switch off the lamp", "turn the lights on",
+#: "shut the laptop down"), and what each particle says
+_PARTICLE_VERBS = frozenset({"switch", "turn", "flick", "power", "shut"})
+_PARTICLES = {"on": "on", "off": "off", "down": "off", "out": "off"}
+#: the words an elided condition has besides its subject ("if it isn't already", "unless they
+#: already are", "if it has not been yet"): no state, place or thing of its own
+_ELIDED_WORDS = ALREADY_FILLER | {"has", "have", "had", "done", "do", "does", "did", "pls", "please"}
+
+
+def _elided(reader: _Reader, condition: str, names: tuple[str, ...], instruction: str) -> list[Fact]:
+    """A condition whose predicate is elided ("close the microwave if it isn't already", "unless
+    they already are, turn the lights off"): "already" or "yet" with only a thing's pronoun and
+    "be" / "have" says the thing is (not) yet in the state the instruction it goes with leaves it
+    in, so that state is asked. The state is the instruction's particle ("switch off", "turn ...
+    on") or its verb's result (`RESULT_VERBS`); a place ("put it in the sink unless it already
+    is") is `_Reader._already`'s. Only of the thing the pronoun means (or, put first, the thing the
+    instruction names)."""
+    words = WORD.findall(expand(condition.split(",")[0]).lower())  # a vocative after a comma ("..., love")
+    if not words or words[0] not in ("it", "they") or not set(words) & {"already", "yet"} \
+            or not set(words[1:]) <= _ELIDED_WORDS:
+        return []
+    said = [w for w, _, _ in tokens(expand(instruction).lower())]
+    state = ""
+    for k, w in enumerate(said):
+        particle = next((p for p in said[k + 1 : k + 6] if p in _PARTICLES), None) if w in _PARTICLE_VERBS else None
+        if particle is not None:
+            state = _PARTICLES[particle]
+        elif w in RESULT_VERBS:
+            state = RESULT_VERBS[w]
+        if state:
+            break
+    if not state:
+        return []
+    flag, pol = STATE_WORDS[state]
+    things = names or tuple(r for m in reader.lex.find_mentions(tokens(expand(instruction)))
+                            if m.kind == "role" for r in m.roles)[:1]
+    negated = "not" in words
+    # (a state the thing cannot take means the nearest thing that can, as a stated one does: `_fit`)
+    return [reader._fit(Fact(r, f"state({r}, {flag})", "state", flag, negated=negated != (not pol))) for r in things]
+
+
 def _role_after(cut: list[list[Piece]], si: int, pi: int) -> str:
     """The role of the piece after piece `pi` of sentence `si`, whether it ends the sentence's
     heading (the next sentence goes on after a colon) or not; "" after a full stop."""
@@ -2403,6 +2462,10 @@ def _read_heading(reader: _Reader, text: str) -> tuple[list[Fact], tuple[str, ..
         return facts, names
     # "Bath towel on the floor? Wet: into the basket. Dry: ...": said of the last heading's
     # object, whatever the instructions between named
+    part = WORD.findall(text.lower())[:1]
+    if part and part[0] in reader.part_of:
+        # "Soil dry -> water it" after "the plant's soil": the state of the part named, its thing's
+        return reader.facts(re.sub(rf"^\W*{part[0]}\b", f"the {part[0]} is", text, count=1, flags=re.I))
     reader.topic, reader.topic_kind = reader.heading_topic or reader.topic, "role"
     reader.own_it = True
     try:
@@ -2617,6 +2680,48 @@ def _says_who(words: list[str], i: int) -> bool:
 #: "Scissors are not to be left out on the counter" ("if they're already there" is no such place:
 #: it asks whether they are where the instruction before put them)
 _THERE_SUBJECTS = frozenset({"it", "they"})
+
+
+#: the words of a condition that asks only whether its thing is (still) there ("if it's there",
+#: "if they are still there", "unless it isn't there"), for `_named_with_place`
+_STILL_THERE = frozenset({"it", "they", "is", "are", "still", "not", "there"})
+#: prepositions of a place said with a thing's name that a condition asks ("the sponge on the
+#: shelf", "the cloth in the drawer"; "by the wall" is no place the conditions read)
+_WITH_PREPS = frozenset(_THERE_PREPS)
+
+
+def _named_with_place(reader: _Reader, said: str, instruction: str) -> str:
+    """"Wipe it with the sponge on the shelf if it's there", "Preferred method: the wet wipes on
+    the table, if they are there": a condition that asks only "if it is there", after an
+    instruction (of its sentence) that names a thing with the place it should be at, asks whether
+    that thing is at that place; read as "if the sponge is on the shelf" (the pronoun is the thing
+    named with a place, not the topic the instruction works on, and "there" is that place, not the
+    scene). Not after a verb of putting (`ACTIONS`: "put the mug on the shelf" names a goal)."""
+    text = expand(said)
+    words = WORD.findall(text.lower())
+    if "there" not in words or words[0] not in ("it", "they") or not set(words) <= _STILL_THERE:
+        return said
+    source = expand(instruction)
+    toks = tokens(source)
+    verbs = [w for w, _, _ in toks if w != "please"]
+    if not verbs or verbs[0] in ACTIONS:
+        return said
+    iw = [w for w, _, _ in toks]
+    mentions = reader.lex.find_mentions(toks)
+    for m in reversed(mentions):
+        if m.kind != "role" or m.end >= len(iw) or iw[m.end] not in _WITH_PREPS:
+            continue
+        k = m.end + 1
+        while k < len(iw) and iw[k] in ARTICLES:
+            k += 1
+        place = next((x for x in mentions if x.start == k and x.kind in ("role", "floor")), None)
+        if place is None:
+            continue
+        thing = "the " + source[toks[m.start][1] : toks[m.end - 1][2]]
+        where = source[toks[m.end][1] : toks[place.end - 1][2]]
+        text = re.sub(r"\b(?:it|they)\b", thing, text, count=1, flags=re.I)
+        return re.sub(r"\bthere\b", where, text, count=1, flags=re.I)
+    return said
 
 
 def _there_named(reader: _Reader, said: str, clauses: list[Clause], sentence: int) -> str:
@@ -2876,6 +2981,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             said = _BARE_BOTH.sub(r"\1 of them", _BARE_EITHER.sub(r"\1 of them", said))
             reader.own_it = own
             reader.group = spread[1] if spread[0] == grammatical else ()
+            if role == "condition" and pi > 0 and pieces[pi - 1].role == "consequence":
+                # "wipe it with the sponge on the shelf if it's there": the thing at that place
+                said = _named_with_place(reader, said, pieces[pi - 1].text)
             if role == "condition":
                 # "if my mug hasn't been washed wash it": the predicate the cut ended
                 said = _there_named(reader, predicate_state(said), clauses, grammatical)
@@ -2890,6 +2998,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 facts = _parallel(said, facts, clauses, grammatical)
             if cue == "if available" and not any(f.kind in ("location", "exists") and not f.home for f in facts):
                 facts += _available(reader, said)
+            if role == "condition" and not facts and (elided := _elided(
+                    reader, said, names, pieces[pi - 1].text if pi > 0 and pieces[pi - 1].role == "consequence"
+                    else pieces[pi + 1].text if pi + 1 < len(pieces) else "")):
+                # "close the microwave if it isn't already": the state its instruction sets
+                facts, names = elided, tuple(dict.fromkeys(f.subject for f in elided))
             if role == "condition" and all(f.derived for f in facts) and pi + 1 < len(pieces) and (
                     undone := _undone(reader, said, pieces[pi + 1].text)):
                 # "if they've been drawn, open them right up": a condition the reader cannot read,
