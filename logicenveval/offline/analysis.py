@@ -317,7 +317,20 @@ PHRASAL_STATES = tuple((re.compile(rf"\b(?:{verbs}) (?:{particles})\b"), state) 
     # a machine "shut down" or "powered down/off" is off, not shut like a door
     ("shut|shuts|shutting|powered|powers|power", "down", "off"),
     ("powered|powers|power", "off", "off"),
+    # a covering (curtains, drapes, blinds) is drawn across to shut it and drawn back to open it
+    ("drawn", "shut|closed|across|together", "shut"),
+    ("drawn|pulled", "back|apart|aside", "open"),
 ))
+#: a participle whose sense as a state is fixed only as a clause's predicate, after a form of
+#: "be" (or "still", "already", "left", a question's subject) and before the clause ends: "unless
+#: they are already drawn, close them", "are they drawn?" say the covering is drawn across (shut),
+#: where "the plan is drawn up", "a map drawn on the pad", "drawn to the light" say nothing of it
+PREDICATE_STATES = tuple(
+    (re.compile("(?:" + "|".join(rf"(?<=\b{lead} )" for lead in (
+        "is", "are", "was", "were", "be", "been", "still", "already", "left", "kept", "stay", "stays", "remain",
+        "remains", "it", "they")) + rf"){word}(?=\s*(?:[^\w\s]|$)| (?:and|or|but|at|during|before|after|when|"
+        rf"while|overnight|all|again|now|then|so|because|if|unless)\b)"), state)
+    for word, state in (("drawn", "shut"),))
 
 
 #: what a container is filled with: "there is still wine in it" and "there's still juice left in
@@ -1000,6 +1013,11 @@ class _Reader:
         said = _unbiased(expand(text).lower())
         for pattern, state in PHRASAL_STATES:
             said = pattern.sub(state, said)
+        # the flags a predicate participle gave, kept only for a thing that can take them ("if the
+        # curtains are drawn" is shut, "if the bath is drawn" asks nothing of the bath)
+        predicated = frozenset(STATE_WORDS[state][0] for pattern, state in PREDICATE_STATES if pattern.search(said))
+        for pattern, state in PREDICATE_STATES:
+            said = pattern.sub(state, said)
         said = RAISING.sub("is", said)
         said = _contents(said)
         toks = tokens(said)
@@ -1161,6 +1179,7 @@ class _Reader:
                 self.last_goal = f
             if f.kind == "state":
                 self.last_state[f.key] = f
+        facts = [f for f in facts if f.key not in predicated or not self._misfit(f)]
         names = tuple(dict.fromkeys(r for m in subjects for r in m.roles))
         return list(dict.fromkeys(facts)), names
 
