@@ -66,6 +66,7 @@ from logicenveval.offline.sentences import (
     FOUND_PARTICIPLES,
     FREQUENCY,
     HABITUAL_WORDS,
+    MACHINE_EPITHETS,
     NORM_ADVERBS,
     PREP_IN,
     PREP_ON,
@@ -332,6 +333,9 @@ PREDICATE_STATES = tuple(
         rf"while|overnight|all|again|now|then|so|because|if|unless)\b)"), state)
     for word, state in (("drawn", "shut"),))
 
+
+#: a general noun for a machine after its determiner (`_Reader.machine_again`)
+_EPITHET = re.compile(rf"\b(the|this|that) ({'|'.join(sorted(MACHINE_EPITHETS))})\b(?!['-])")
 
 #: what a container is filled with: "there is still wine in it" and "there's still juice left in
 #: the bottle" say the bottle is full, "there is milk left" (of the carton spoken of) and "the
@@ -1018,6 +1022,7 @@ class _Reader:
         predicated = frozenset(STATE_WORDS[state][0] for pattern, state in PREDICATE_STATES if pattern.search(said))
         for pattern, state in PREDICATE_STATES:
             said = pattern.sub(state, said)
+        said = self.machine_again(said)
         said = RAISING.sub("is", said)
         said = _contents(said)
         toks = tokens(said)
@@ -1283,6 +1288,23 @@ class _Reader:
             if self._holds(other):
                 return other
         return f
+
+    def machine_again(self, said: str) -> str:
+        """"If the unit is still running, switch it off", "is the appliance on?": a general noun
+        for a machine (`MACHINE_EPITHETS`) after "the" / "this" / "that", when the thing named
+        last switches on and off and no thing of the task is called by the noun, is that thing
+        spoken of again, read as "it"; after a preposition of place ("on the unit") it stays a
+        place."""
+        last = self.recent[-1] if self.recent else None
+        if last is None or "toggled_on" not in self.capable.get(last, ()):
+            return said
+
+        def again(m: re.Match[str]) -> str:
+            before = said[: m.start()].split()[-1:]
+            if (m.group(2),) in self.lex.phrases or before and before[0] in PLACE_PREPS | PREP_ON | PREP_IN:
+                return m.group(0)
+            return "it"
+        return _EPITHET.sub(again, said)
 
     def _misfit(self, f: Fact) -> bool:
         """Whether `f` is an on/open state (`FITTED`) of a thing that cannot take it."""
