@@ -2325,6 +2325,51 @@ def _done_before(clauses: list[Clause], sentence: int, said: str, names: tuple[s
             if f.goal and f.kind == "location" and f.subject in names]
 
 
+#: a condition whose predicate is elided after "already" / "yet" ("if it isn't already", "unless
+#: they already are", "if not already"), after `expand`: it asks the state its instruction leaves
+_ELIDED = re.compile(r"^\W*(?:(?:it|they)\s+)?(?:(?:is|are|has been|have been)\s+)?(?P<not>not\s+)?(?:already|yet)"
+                     r"(?:\s+(?:is|are|has|have|been|done))*\W*$")
+#: verbs whose bare instruction leaves the state they name ("close it", "open the curtains")
+_RESULT_VERBS = {"close": "closed", "open": "open", "shut": "shut"}
+
+
+def _result(instruction: str) -> tuple[str, bool] | None:
+    """The state (flag, polarity) an instruction leaves its thing in: a verb that names its
+    result ("close the wardrobe", "open them") or a verb of switching with its particle before or
+    after the thing ("turn off the television", "switch the lamp off"); None for any other."""
+    words = [w for w, _, _ in tokens(expand(instruction).lower())]
+    while words and words[0] in ("please", "and", "then", "just", "also"):
+        words = words[1:]
+    if len(words) < 2:
+        return None
+    if words[0] in _RESULT_VERBS:
+        return STATE_WORDS[_RESULT_VERBS[words[0]]]
+    if words[0] in _SETTERS:
+        particle = words[1] if words[1] in ("on", "off") else words[-1]
+        return STATE_WORDS[particle] if particle in ("on", "off") else None
+    return STATE_WORDS[_STOPPERS[words[0]]] if words[0] in _STOPPERS else None
+
+
+def _elided(reader: _Reader, clauses: list[Clause], sentence: int, said: str,
+            names: tuple[str, ...]) -> list[Fact]:
+    """"Switch the lamp off if it isn't already", "close the wardrobe unless it already is": a
+    condition with its predicate elided after "already" (`_ELIDED`) asks the state the
+    instruction before it in its sentence leaves (`_result`), of the thing the condition speaks
+    of: not yet in it with "not", in it without ("unless it already is", its cue inverting it).
+    Nothing when no instruction comes before it in its sentence or that instruction sets no
+    state ("put the book on the shelf if it isn't already" asks where the book is elsewhere)."""
+    m = _ELIDED.match(expand(said).lower())
+    if m is None or not clauses or clauses[-1].sentence != sentence:
+        return []
+    state = _result(clauses[-1].text.split(":")[-1])
+    if state is None:
+        return []
+    flag, result = state
+    things = [r for r in names or clauses[-1].mentions if flag in reader.capable.get(r, frozenset())]
+    return [Fact(r, f"state({r}, {flag})", "state", flag, negated=result if m.group("not") else not result)
+            for r in things]
+
+
 def _cataphor(reader: _Reader, condition: str, main: str) -> tuple[str, ...] | None:
     """The thing a pronoun of a condition put first speaks of when nothing was named just before
     it (the caller's test) and the condition names nothing itself: the first thing its main
@@ -2904,6 +2949,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # "the bin bag goes in the bin, unless Maya already took it down": an action some
                 # agent has already done to the thing moved asks whether it is already there
                 facts = done
+            if role == "condition" and not facts and (elided := _elided(reader, clauses, grammatical, said, names)):
+                # "switch the lamp off if it isn't already": the state the instruction leaves
+                facts = elided
             low = expand(said).lower() if role == "condition" else ""
             # "if it's there", "if it turns up", "if it isn't there": a condition that asks only
             # whether its thing is there at all (True: that it is not)
