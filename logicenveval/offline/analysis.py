@@ -66,6 +66,7 @@ from logicenveval.offline.sentences import (
     FOUND_PARTICIPLES,
     FREQUENCY,
     HABITUAL_WORDS,
+    MACHINE_EPITHETS,
     NORM_ADVERBS,
     PREP_IN,
     PREP_ON,
@@ -317,8 +318,24 @@ PHRASAL_STATES = tuple((re.compile(rf"\b(?:{verbs}) (?:{particles})\b"), state) 
     # a machine "shut down" or "powered down/off" is off, not shut like a door
     ("shut|shuts|shutting|powered|powers|power", "down", "off"),
     ("powered|powers|power", "off", "off"),
+    # a covering (curtains, drapes, blinds) is drawn across to shut it and drawn back to open it
+    ("drawn", "shut|closed|across|together", "shut"),
+    ("drawn|pulled", "back|apart|aside", "open"),
 ))
+#: a participle whose sense as a state is fixed only as a clause's predicate, after a form of
+#: "be" (or "still", "already", "left", a question's subject) and before the clause ends: "unless
+#: they are already drawn, close them", "are they drawn?" say the covering is drawn across (shut),
+#: where "the plan is drawn up", "a map drawn on the pad", "drawn to the light" say nothing of it
+PREDICATE_STATES = tuple(
+    (re.compile("(?:" + "|".join(rf"(?<=\b{lead} )" for lead in (
+        "is", "are", "was", "were", "be", "been", "still", "already", "left", "kept", "stay", "stays", "remain",
+        "remains", "it", "they")) + rf"){word}(?=\s*(?:[^\w\s]|$)| (?:and|or|but|at|during|before|after|when|"
+        rf"while|overnight|all|again|now|then|so|because|if|unless)\b)"), state)
+    for word, state in (("drawn", "shut"),))
 
+
+#: a general noun for a machine after its determiner (`_Reader.machine_again`)
+_EPITHET = re.compile(rf"\b(the|this|that) ({'|'.join(sorted(MACHINE_EPITHETS))})\b(?!['-])")
 
 #: what a container is filled with: "there is still wine in it" and "there's still juice left in
 #: the bottle" say the bottle is full, "there is milk left" (of the carton spoken of) and "the
@@ -1044,6 +1061,12 @@ class _Reader:
         said = _unbiased(expand(text).lower())
         for pattern, state in PHRASAL_STATES:
             said = pattern.sub(state, said)
+        # the flags a predicate participle gave, kept only for a thing that can take them ("if the
+        # curtains are drawn" is shut, "if the bath is drawn" asks nothing of the bath)
+        predicated = frozenset(STATE_WORDS[state][0] for pattern, state in PREDICATE_STATES if pattern.search(said))
+        for pattern, state in PREDICATE_STATES:
+            said = pattern.sub(state, said)
+        said = self.machine_again(said)
         said = RAISING.sub("is", said)
         said = _contents(said)
         toks = tokens(said)
@@ -1208,6 +1231,7 @@ class _Reader:
                 self.last_goal = f
             if f.kind == "state":
                 self.last_state[f.key] = f
+        facts = [f for f in facts if f.key not in predicated or not self._misfit(f)]
         names = tuple(dict.fromkeys(r for m in subjects for r in m.roles))
         return list(dict.fromkeys(facts)), names
 
@@ -1311,6 +1335,23 @@ class _Reader:
             if self._holds(other):
                 return other
         return f
+
+    def machine_again(self, said: str) -> str:
+        """"If the unit is still running, switch it off", "is the appliance on?": a general noun
+        for a machine (`MACHINE_EPITHETS`) after "the" / "this" / "that", when the thing named
+        last switches on and off and no thing of the task is called by the noun, is that thing
+        spoken of again, read as "it"; after a preposition of place ("on the unit") it stays a
+        place."""
+        last = self.recent[-1] if self.recent else None
+        if last is None or "toggled_on" not in self.capable.get(last, ()):
+            return said
+
+        def again(m: re.Match[str]) -> str:
+            before = said[: m.start()].split()[-1:]
+            if (m.group(2),) in self.lex.phrases or before and before[0] in PLACE_PREPS | PREP_ON | PREP_IN:
+                return m.group(0)
+            return "it"
+        return _EPITHET.sub(again, said)
 
     def _misfit(self, f: Fact) -> bool:
         """Whether `f` is an on/open state (`FITTED`) of a thing that cannot take it."""
@@ -2409,14 +2450,14 @@ _ELIDED_WORDS = ALREADY_FILLER | {"has", "have", "had", "done", "do", "does", "d
 
 def _elided(reader: _Reader, condition: str, names: tuple[str, ...], instruction: str) -> list[Fact]:
     """A condition whose predicate is elided ("close the microwave if it isn't already", "unless
-    they already are, turn the lights off"): "already" or "yet" with only a thing's pronoun and
+    they already are, turn the lights off", "switch it off if not already"): "already" or "yet" with only a thing's pronoun and
     "be" / "have" says the thing is (not) yet in the state the instruction it goes with leaves it
     in, so that state is asked. The state is the instruction's particle ("switch off", "turn ...
     on") or its verb's result (`RESULT_VERBS`); a place ("put it in the sink unless it already
     is") is `_Reader._already`'s. Only of the thing the pronoun means (or, put first, the thing the
     instruction names)."""
     words = WORD.findall(expand(condition.split(",")[0]).lower())  # a vocative after a comma ("..., love")
-    if not words or words[0] not in ("it", "they") or not set(words) & {"already", "yet"} \
+    if not words or words[0] not in ("it", "they", "not", "already") or not set(words) & {"already", "yet"} \
             or not set(words[1:]) <= _ELIDED_WORDS:
         return []
     said = [w for w, _, _ in tokens(expand(instruction).lower())]
@@ -2434,6 +2475,8 @@ def _elided(reader: _Reader, condition: str, names: tuple[str, ...], instruction
     flag, pol = STATE_WORDS[state]
     things = names or tuple(r for m in reader.lex.find_mentions(tokens(expand(instruction)))
                             if m.kind == "role" for r in m.roles)[:1]
+    if not things and set(said) & _OBJECT_PRONOUNS and reader.topic_kind == "role":
+        things = reader.topic  # "Kettle: switch it off if not already": the pronoun's thing is the topic
     negated = "not" in words
     # (a state the thing cannot take means the nearest thing that can, as a stated one does: `_fit`)
     return [reader._fit(Fact(r, f"state({r}, {flag})", "state", flag, negated=negated != (not pol))) for r in things]

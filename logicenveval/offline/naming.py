@@ -49,6 +49,7 @@ from logicenveval.offline.lexicon import (
 from logicenveval.offline.sentences import (
     ARROW,
     FORMS,
+    MACHINE_EPITHETS,
     PERSONAL_SUBJECTS,
     RUN_ON_WORDS,
     STATE_WORDS,
@@ -79,6 +80,8 @@ PART_HEADS = frozenset({"door", "lid", "edge", "side", "top", "bottom", "back", 
 _ARTICLES = frozenset({"a", "an", "the", "any", "some", "its", "their", "our", "my", "your", "this",
                        "that", "each", "every", "all", "both", "his", "her"})
 _DETERMINERS = _ARTICLES | {"no", "one", "other"}
+#: the determiners that point back to a thing spoken of
+_DEMONSTRATIVE = frozenset({"the", "this", "that"})
 #: words after which a bare noun starts a noun phrase as after a determiner ("a nightstand with
 #: lamp", "bed, wardrobe and lamp")
 _NOUN_LEADS = frozenset({"with", "and", "or", "plus"})
@@ -794,6 +797,8 @@ class _Reader:
                 and any(len(h) > len(word) + 2 and h.endswith(word) for h in self.used.get(c, ()))]
         if tail and self.leads_noun(i):
             return tail[0]
+        if self.machine_again(i):
+            return None  # "Air conditioner. The unit is not to run overnight": the air conditioner
         if exact is None:
             control = [c for c in self.recent if c in self.controls.get(word, ())]
             if control:
@@ -915,6 +920,16 @@ class _Reader:
             if words[k] == words[i] and words[k - 1] in {"the", "this"}:
                 return self.use_clause(k)
         return set()
+
+    def machine_again(self, i: int) -> bool:
+        """Whether the word at `i` is a general noun for the machine named last (`MACHINE_EPITHETS`:
+        "Air conditioner. The unit is not to run overnight"), so no thing of the kind whose name it
+        heads (a shelving unit): after a demonstrative or "the", not after a preposition ("put the
+        books on the unit" is a place), with the kind named last one that switches on and off."""
+        words = self.text.words
+        return words[i] in MACHINE_EPITHETS and i > 0 and words[i - 1] in _DEMONSTRATIVE \
+            and (i < 2 or words[i - 2] not in _PREPOSITIONS | _PLACE_ADVERBS) \
+            and bool(self.recent) and self.catalog.categories[self.recent[-1]].toggleable
 
     def head_alone(self, i: int, category: str) -> bool:
         """Whether the word at `i`, no kind's name by itself and the head of names of `category`

@@ -34,6 +34,11 @@ STATE_WORDS: dict[str, tuple[str, bool]] = {
     "grubby": ("dirty", True), "filthy": ("dirty", True), "soiled": ("dirty", True),
     "grimy": ("dirty", True), "smudged": ("dirty", True), "mucky": ("dirty", True),
 }
+#: general nouns that trade and service writing uses for a machine it has just named ("Air
+#: conditioner. The unit is not to run overnight", "the dishwasher ... if the appliance is still
+#: running"): after "the" / "this" / "that", and not as a place, they speak of that machine again
+#: (`naming`'s `machine_again`: no shelving unit named; `analysis._Reader.machine_again`: "it")
+MACHINE_EPITHETS = frozenset({"unit", "appliance", "device", "machine"})
 #: the personal pronouns that can be a clause's subject; each reader adds the other subjects it
 #: needs (`clauses.SUBJECTS`, `placement.SUBJECT_PRONOUNS`, `naming`'s relative-clause test)
 PERSONAL_SUBJECTS = frozenset({"i", "we", "you", "he", "she", "they"})
