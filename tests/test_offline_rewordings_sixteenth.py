@@ -1,0 +1,85 @@
+"""Values never set and paths not combined in the rewordings, sixteenth session (docs/reader.md,
+"Question-and-answer layouts (sixteenth session)"). Each structure is written first as a table of
+composed texts in several registers (measured before its rule and after), with near misses that
+must not be misread; every text is written for the test, none copied from a development set."""
+
+from __future__ import annotations
+
+import pytest
+from reading import CATALOG, brief
+
+from logicenveval.offline.analysis import analyse
+from logicenveval.offline.sentences import answered_questions
+
+
+def _nested(text: str, rooms: tuple[str, ...], inner: str, outer: str) -> bool:
+    """Whether the factor asking `inner` is asked under the factor asking `outer` (its context)."""
+    fs = analyse(brief(text, rooms), CATALOG).factors
+    outer_ids = {f.id for f in fs if outer in f.values.values()}
+    return any(inner in f.values.values() and any(c in outer_ids for c, _ in f.context) for f in fs)
+
+
+def _asked(text: str, rooms: tuple[str, ...]) -> dict[str, set[str]]:
+    return {f.id: set(f.values.values()) for f in analyse(brief(text, rooms), CATALOG).factors}
+
+
+# -- a question-and-answer layout: the answer's conditions under its question's ---------------------
+#
+# A catechism, an FAQ, a quiz, a training sheet: "Q. What must you do if there is a mug on the desk?
+# A. If it is dirty, I take it to the sink." The question states the case ("what ... if X?", "and
+# if X?"); its answer is the instruction for that case, so a condition the answer asks is asked
+# under X, as a reader nests it. A follow-up question on the answer's own condition ("But what if
+# it is not dirty? A. Then ...") is that condition's other branch, under X as well.
+
+#: (text, rooms, the inner condition, the outer condition it is asked under)
+ANSWERED: list[tuple[str, tuple[str, ...], str, str]] = [
+    # a catechism, numbered questions, a follow-up on the answer's condition
+    ("Q. 1. What must you do if there is a mug on the desk?\nA. If the mug is dirty, I take it to the sink.\n"
+     "Q. 2. But what if the mug is not dirty?\nA. Then I put it in the cupboard.",
+     ("study", "kitchen"), "state(mug, dirty)", "on(mug, desk)"),
+    # a holiday let's FAQ, "Q:"/"A:" labels, the answer with its own "otherwise"
+    ("Q: What do I do if the towel is on the floor?\nA: If it is wet, hang it on the towel rack; otherwise "
+     "put it in the hamper.", ("bathroom",), "state(towel, wet)", "on(towel, floor)"),
+    # a quiz sheet, "Question 3:" and "Answer:", "when" for the case
+    ("Question 3: What should the robot do when the laptop is on the bed?\nAnswer: If the laptop is open, "
+     "it closes it first, then it puts it on the desk.", ("bedroom",), "state(laptop, open)",
+     "on(laptop, bed)"),
+    # a chat-like FAQ in small letters, "and if" with no "what"
+    ("q: and if there is a book on the floor?\na: if it is open, close it, then put it on the shelf.",
+     ("living_room",), "state(book, open)", "on(book, floor)"),
+    # a training handout, a case of a state, the answer's "when"
+    ("Question: What happens if the fridge is open?\nAnswer: When the milk is on the counter, put the "
+     "milk in the fridge first, then close the fridge.", ("kitchen",), "on(milk_carton, kitchen_counter)",
+     "state(fridge, open)"),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "inner", "outer"), ANSWERED)
+def test_an_answers_condition_is_asked_under_its_questions(
+        text: str, rooms: tuple[str, ...], inner: str, outer: str) -> None:
+    """`sentences.answered_questions`: "Q. ... if X? A. If Y, ..." is "If X: if Y, ..."."""
+    assert _nested(text, rooms, inner, outer), _asked(text, rooms)
+
+
+@pytest.mark.parametrize("text", [
+    # an indirect question asks no case: "know if" is "whether"
+    "Q: Do you know if the mug is clean?\nA: Yes, it is clean.",
+    # a question with no case: its answer's condition stays where it is
+    "Question 2: Where does the book go?\nAnswer: If it is a novel, on the shelf.",
+    # no labels: prose's own question and answer are read as they were
+    "What if the mug is dirty? Then wash it in the sink.",
+    # a question with a case and no answer after it
+    "Q. What do you do if the lamp is on?\nThe lamp is in the study.",
+])
+def test_a_layout_that_states_no_answered_case_is_left_as_it_is(text: str) -> None:
+    assert answered_questions(text) == text
+
+
+def test_a_follow_up_on_another_thing_is_a_case_of_its_own() -> None:
+    """"And what if the lamp is on?" after an answer about the mug shares no word with the
+    answer's condition: not that condition's other branch, so not asked under the mug's case."""
+    text = ("Q: What should I do if there is a mug on the desk?\nA: If it is dirty, take it to the sink.\n"
+            "Q: And what if the desk lamp is on?\nA: Switch it off.")
+    assert "If the desk lamp is on: Switch it off." in answered_questions(text)
+    assert not _nested(text, ("study", "kitchen"), "state(desk_lamp, toggled_on)", "on(mug, desk)")
+    assert _nested(text, ("study", "kitchen"), "state(mug, dirty)", "on(mug, desk)")
