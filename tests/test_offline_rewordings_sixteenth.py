@@ -83,3 +83,59 @@ def test_a_follow_up_on_another_thing_is_a_case_of_its_own() -> None:
     assert "If the desk lamp is on: Switch it off." in answered_questions(text)
     assert not _nested(text, ("study", "kitchen"), "state(desk_lamp, toggled_on)", "on(mug, desk)")
     assert _nested(text, ("study", "kitchen"), "state(mug, dirty)", "on(mug, desk)")
+
+
+def _under(text: str, rooms: tuple[str, ...], inner: str, outer: str) -> bool:
+    """Whether the factor asking `inner` is asked only where `outer` (one of a factor's values'
+    conditions, "not ..." for its other branch) holds."""
+    fs = analyse(brief(text, rooms), CATALOG).factors
+    by_id = {f.id: f for f in fs}
+    return any(inner in f.values.values() and any(
+        c in by_id and {by_id[c].values[v] for v in vs} == {outer} for c, vs in f.context) for f in fs)
+
+
+# -- an arrow flowchart: a question answered by "YES ->" / "NO ->", a question after an arrow ------
+#
+# A decision tree typed as text ("Clean? YES -> fold it. / NO -> Machine running? / YES -> ...") puts
+# each answer's label under the question it answers (the same column) and a further question after
+# an arrow: that question is asked only on its arrow's branch, and its answers, one indentation
+# deeper, under it. Read as the nested conditional it draws ("if it is not clean: if the machine
+# is running, ...").
+
+#: (text, rooms, the inner condition, the outer condition (branch) it is asked under)
+FLOWCHARTS: list[tuple[str, tuple[str, ...], str, str]] = [
+    # a kitchen card, three levels, a topic line before the chart
+    ("The plates:\n  Dirty? YES -> Dishwasher open?\n                YES -> load them.\n"
+     "                NO -> open it, then load them.\n         NO -> put them in the cupboard.",
+     ("kitchen",), "state(dishwasher, open)", "state(plate, dirty)"),
+    # a tea-making card, the NO branch first, "already"
+    ("Kettle:\n  Full? NO -> fill it at the sink.\n        YES -> Stove already on?\n"
+     "                 YES -> put the kettle on the stove.\n                 NO -> switch it on first.",
+     ("kitchen",), "state(stove, toggled_on)", "state(kettle, filled)"),
+    # a bedtime chart in small letters, a typographic arrow
+    ("the desk lamp\n  on? yes \u2192 Book open?\n           yes \u2192 close the book.\n"
+     "           no \u2192 leave it.\n      no \u2192 nothing to do.", ("bedroom",), "state(book, open)",
+     "state(desk_lamp, toggled_on)"),
+    # an office flowchart, the inner question after the NO arrow of a state's antonym
+    ("Mug on the desk:\n  Clean? YES -> put it in the cupboard.\n         NO -> Sink empty?\n"
+     "                 YES -> put it in the sink.\n                 NO -> leave it on the counter.",
+     ("office", "kitchen"), "state(sink, filled)", "state(mug, dirty)"),
+    # a laundry-room sign, "dry" for the towel's wetness, the question on its NO branch
+    ("Bath towel\n  Dry? YES -> fold it.\n       NO -> Dryer already running?\n"
+     "               YES -> hang it on the towel rack.\n               NO -> put it in the dryer.",
+     ("bathroom", "laundry_room"), "state(dryer, toggled_on)", "state(towel, wet)"),
+    # a caretaker's card, "empty" for a fill, the YES branch of the opposite word
+    ("KETTLE\n  Empty? YES -> Sink full of dishes?\n                YES -> fill it in the bathroom.\n"
+     "                NO -> fill it at the sink.\n         NO -> switch it on.", ("kitchen", "bathroom"),
+     "state(sink, filled)", "not state(kettle, filled)"),
+    # a call script's colon labels, a question in "closed" on the NO label's line
+    ("Is the laptop closed?\nNO: Is the desk lamp on? If it is, switch it off, then close the laptop.\n"
+     "YES: put it in the drawer.", ("study",), "state(desk_lamp, toggled_on)", "state(laptop, open)"),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "inner", "outer"), FLOWCHARTS)
+def test_a_question_after_an_arrow_is_asked_on_that_branch(
+        text: str, rooms: tuple[str, ...], inner: str, outer: str) -> None:
+    """`sentences.unflowchart`: "Q? YES -> ... / NO -> Q2? / YES -> ..." asks Q2 on Q's branch."""
+    assert _under(text, rooms, inner, outer), _asked(text, rooms)

@@ -3398,7 +3398,16 @@ def _answered(factors: list[Factor], clauses: list[Clause], line_of: Mapping[int
                 continue
             for a in questions:
                 if a.subject != b.subject and all(dep != a.id for dep, _ in b.context):
-                    b.context.append((a.id, frozenset({answer})))
+                    b.context.append((a.id, frozenset({_answer_value(a, clauses[asked], answer)})))
+
+
+def _answer_value(factor: Factor, question: Clause, answer: str) -> str:
+    """The factor's value a "yes" or "no" answer to the question gives: the answer itself, or
+    the other one where the question asks the factor's state in its opposite word ("Clean? NO ->
+    ..." answers the mug's dirtiness "yes", "Kettle empty? YES -> ..." its fill "no"), as the
+    question's fact is the negation of the factor's "yes"."""
+    said = [x.negated for x in question.facts if x.condition == factor.values["yes"]]
+    return {"yes": "no", "no": "yes"}[answer] if said and all(said) else answer
 
 
 #: a tool sentence whose purpose is an instruction's verb with a pronoun object ("Use the sponge
