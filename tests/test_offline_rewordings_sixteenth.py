@@ -5,10 +5,12 @@ must not be misread; every text is written for the test, none copied from a deve
 
 from __future__ import annotations
 
+from typing import Any
+
 import pytest
 from reading import CATALOG, brief
 
-from logicenveval.offline.analysis import analyse
+from logicenveval.offline.analysis import analyse, nest
 from logicenveval.offline.sentences import answered_questions
 
 
@@ -139,3 +141,51 @@ def test_a_question_after_an_arrow_is_asked_on_that_branch(
         text: str, rooms: tuple[str, ...], inner: str, outer: str) -> None:
     """`sentences.unflowchart`: "Q? YES -> ... / NO -> Q2? / YES -> ..." asks Q2 on Q's branch."""
     assert _under(text, rooms, inner, outer), _asked(text, rooms)
+
+
+# -- a flowchart's question within an answer has answers of its own --------------------------------
+#
+# "NO -> Dishwasher running?" on an indented line, and under it, one indentation deeper, "NO -> ..."
+# / "YES -> Sink full?": the deeper labels answer the question within the answer (the nearest one on
+# a line indented less than the label), not the chart's first question; and a question asked only
+# under that inner question's answer is not asked on a branch where the inner question is not.
+
+#: (text, rooms, the innermost condition, the middle condition (branch) it is asked under)
+DEEP_FLOWCHARTS: list[tuple[str, tuple[str, ...], str, str]] = [
+    # a kitchen poster, the inner question on the NO branch of an opposite word
+    ("Mug:\n  Clean? YES -> cupboard.\n         NO -> Dishwasher running?\n"
+     "                 NO -> load it in the dishwasher.\n                 YES -> Sink full?\n"
+     "                          NO -> put it in the sink.\n                          YES -> leave it on the counter.",
+     ("kitchen",), "state(sink, filled)", "state(dishwasher, toggled_on)"),
+    # a study's bedtime chart in small letters, the inner question on the "no" of a second one
+    ("the desk lamp\n  on? no -> nothing to do.\n      yes -> Wardrobe open?\n"
+     "              yes -> close the wardrobe first.\n              no -> Laptop open?\n"
+     "                      yes -> close the laptop, then switch the lamp off.\n"
+     "                      no -> switch the lamp off.", ("study", "bedroom"), "state(laptop, open)",
+     "not state(wardrobe, open)"),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "inner", "outer"), DEEP_FLOWCHARTS)
+def test_a_deeper_label_answers_the_question_within_the_answer(
+        text: str, rooms: tuple[str, ...], inner: str, outer: str) -> None:
+    """`analysis._answered`: an indented label answers the nearest question on a line indented less."""
+    assert _under(text, rooms, inner, outer), _asked(text, rooms)
+
+
+def _vars(tree: dict[str, Any]) -> set[str]:
+    return {tree["var"]} | set().union(*(_vars(b) for b in tree["branches"].values())) if "var" in tree else set()
+
+
+def test_a_question_under_an_inner_answer_is_not_asked_where_the_inner_question_is_not() -> None:
+    """`analysis.nest`: the sink's question, asked under the dishwasher's "YES", is not asked where
+    the mug is clean (the dishwasher's question is not asked there)."""
+    text, rooms = DEEP_FLOWCHARTS[0][:2]
+    result = analyse(brief(text, rooms), CATALOG)
+    by_id = {f.id: f for f in result.factors}
+    mug = next(f for f in result.factors if f.values["yes"] == "state(mug, dirty)")
+    group = next(g for g in result.groups if mug.id in g)
+    tree = nest([by_id[i] for i in group])
+    assert tree["var"] == mug.id
+    sink = next(f.id for f in result.factors if f.values["yes"] == "state(sink, filled)")
+    assert sink not in _vars(tree["branches"]["no"]) and sink in _vars(tree["branches"]["yes"])
