@@ -1081,7 +1081,9 @@ def unquote(text: str) -> str:
     second predicate's shared subject and a note's dropped subject of doubt spelled out
     (`_ELIDED_PREDICATE`, `_SHARED_SUBJECT`, `_DROPPED_DOUBT`), and an inverted question's
     participle read as its state (`_QUESTION_PREDICATE`), and a learner's participle without its
-    ending at a condition's end as the state ("if curtain still close": `_BARE_PARTICIPLE`)."""
+    ending at a condition's end as the state ("if curtain still close": `_BARE_PARTICIPLE`); a
+    question-and-answer layout's answer framed by the case its question states, first
+    (`answered_questions`)."""
     text = _DASHED_ASIDE.sub(r"\g<cue> ", answered_questions(text))
     text = _SUPPOSED_IF.sub(_occasion_if, _OCCASION_IF.sub(_occasion_if, _COMMENT_ASIDE.sub(" ", _QUOTED_WHOLE.sub(r"\1", text))))
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
