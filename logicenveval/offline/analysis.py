@@ -3368,7 +3368,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             if dep is not None and dep is not factor:
                 factor.context.append((dep.id, _allowed(dep, negated, value)))
         factor.context = _consistent(factor.context)
-    _answered(factors, clauses, line_of)
+    _answered(factors, clauses, line_of, any_at(unquote(str(brief["description"]))).split("\n"))
     factors += _alternatives_put_back(factors, clauses)
     factors.sort(key=lambda f: (f.order, _RANK[f.kind], f.id))
     groups, group_roles = _group(factors, _moves_into(factors, clauses) + _answers(factors, clauses))
@@ -3408,24 +3408,44 @@ def _lines(text: str) -> list[tuple[int, int]]:
     return out
 
 
-def _answered(factors: list[Factor], clauses: list[Clause], line_of: Mapping[int, tuple[int, int]]) -> None:
+def _opening_indent(texts: list[str], line: int, answer: str) -> int:
+    """The indentation of a text's line that opens with the answer label `answer` ("         NO ->
+    ..."), or -1 when the line is not indented or opens with something else."""
+    text = texts[line] if 0 <= line < len(texts) else ""
+    body = text.lstrip(" \t")
+    return len(text) - len(body) if body.lower().startswith(answer) and len(body) < len(text) else -1
+
+
+def _answered(factors: list[Factor], clauses: list[Clause], line_of: Mapping[int, tuple[int, int]],
+              texts: list[str]) -> None:
     """A call script's, flowchart's or FAQ's labelled answers ("Ask: 'Is there bread on the
     counter?' > YES: put it on the plate, and switch the toaster on if it is off. > NO: skip the
     toast."): a factor first raised after a "yes" or "no" label, in the rest of its line (or, for
     a label alone on its line, of its paragraph) and before the next label, question or capitalised
     heading, is asked only under that answer to the question before the label (the yes/no factors
     the question raised), and so in its subtask. A line after the answer's own is a step of its own
-    ("NO: leave it. / If the lamp is on, switch it off.")."""
+    ("NO: leave it. / If the lamp is on, switch it off."). In a text flowchart, where a label
+    opens an indented line ("Clean? YES -> ... / NO -> Machine running? / YES -> ..."), the label
+    answers the nearest question before it on a line indented less than the label: its answers
+    stand one indentation deeper than the question, so a question within an answer has answers
+    of its own (`texts`: the text's lines)."""
     answering: set[int] = set()  # clauses within an answer (a question there asks within it)
     for li, label in enumerate(clauses):
         answer = _label(label)
         if answer is None:
             continue
-        asked = next((ci for ci in range(li - 1, -1, -1) if _asks(clauses[ci]) and ci not in answering), None)
-        if asked is None or any(_label(c) is None and _asks(c) and ci not in answering
-                                for ci, c in enumerate(clauses[asked + 1:li], asked + 1)):
-            continue
         line, paragraph = line_of.get(label.sentence, (-1, -1))
+        indent = _opening_indent(texts, line, answer)
+        if indent > 0:
+            asked = next((ci for ci in range(li - 1, -1, -1) if _asks(clauses[ci]) and _indent_of(
+                texts, line_of.get(clauses[ci].sentence, (-1, -1))[0]) < indent), None)
+        else:
+            asked = next((ci for ci in range(li - 1, -1, -1) if _asks(clauses[ci]) and ci not in answering), None)
+            if asked is not None and any(_label(c) is None and _asks(c) and ci not in answering
+                                         for ci, c in enumerate(clauses[asked + 1:li], asked + 1)):
+                asked = None
+        if asked is None:
+            continue
         alone = li + 1 < len(clauses) and line_of.get(clauses[li + 1].sentence, (-1, -1))[0] != line
         # (on the label's own line a question asks within the answer: "YES: Is the toaster on? ...")
         end = next((ci for ci in range(li + 1, len(clauses)) if _label(clauses[ci]) is not None
@@ -3441,7 +3461,23 @@ def _answered(factors: list[Factor], clauses: list[Clause], line_of: Mapping[int
                 continue
             for a in questions:
                 if a.subject != b.subject and all(dep != a.id for dep, _ in b.context):
-                    b.context.append((a.id, frozenset({answer})))
+                    b.context.append((a.id, frozenset({_answer_value(a, clauses[asked], answer)})))
+
+
+def _indent_of(texts: list[str], line: int) -> int:
+    """The indentation of a text's line (a large number for a line not found)."""
+    if not 0 <= line < len(texts):
+        return 1 << 16
+    return len(texts[line]) - len(texts[line].lstrip(" \t"))
+
+
+def _answer_value(factor: Factor, question: Clause, answer: str) -> str:
+    """The factor's value a "yes" or "no" answer to the question gives: the answer itself, or
+    the other one where the question asks the factor's state in its opposite word ("Clean? NO ->
+    ..." answers the mug's dirtiness "yes", "Kettle empty? YES -> ..." its fill "no"), as the
+    question's fact is the negation of the factor's "yes"."""
+    said = [x.negated for x in question.facts if x.condition == factor.values["yes"]]
+    return {"yes": "no", "no": "yes"}[answer] if said and all(said) else answer
 
 
 #: a tool sentence whose purpose is an instruction's verb with a pronoun object ("Use the sponge
@@ -3887,9 +3923,15 @@ def nest(factors: list[Factor]) -> dict[str, Any]:
     subjects = list(dict.fromkeys(f.subject for f in factors))
     ordered = sorted(factors, key=lambda f: (subjects.index(f.subject), _RANK[f.kind], f.order))
 
+    # a factor asked only under another's value is not asked on a path that passed that other
+    # by (its own context unmet: "Machine running? YES -> Hamper full?" is not asked where the
+    # machine's question is not)
+    rank = {f.id: k for k, f in enumerate(ordered)}
+
     def asked(f: Factor, skipped: frozenset[str], path: dict[str, str]) -> bool:
         return f.subject not in skipped and all(
-            path[dep] in allowed for dep, allowed in f.context if dep in path)
+            path[dep] in allowed if dep in path else rank.get(dep, len(ordered)) > rank[f.id]
+            for dep, allowed in f.context)
 
     def build(i: int, skipped: frozenset[str], path: dict[str, str]) -> dict[str, Any]:
         while i < len(ordered) and not asked(ordered[i], skipped, path):

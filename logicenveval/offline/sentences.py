@@ -980,6 +980,75 @@ def _creole(text: str) -> str:
                   text, flags=re.I)
 
 
+#: a question's or an answer's label in a question-and-answer layout: a catechism's "Q. 5." and
+#: "A.", an FAQ's "Q:" / "A:", a quiz's "Question 3:" / "Answer:" (a label needs its mark or its
+#: number, so that "A mug ..." is no answer)
+_QA_LABEL = re.compile(r"^[ \t]*(?P<kind>q|question|a|answer)[ \t]*(?:[.:)\-][ \t]*(?:\d{1,3}[ \t]*[.:)]?[ \t]*)?"
+                       r"|\d{1,3}[ \t]*[.:)\-][ \t]*)", re.I)
+#: a question that states a case and asks what to do in it: "What must you do if X?", "And if
+#: X?", "But what if X?", "What should the robot do when X?" (not "Do you know if X?": an
+#: indirect question asks no case)
+_CASE_QUESTION = re.compile(r"^(?P<follow>(?:and|but|or|so|now)\b[ \t,]*)?(?:(?P<what>what|how)\b[^?]*?\b)?"
+                            r"(?:if|when|in case)\s+(?P<case>[^?]+?)\s*\?\s*$", re.I)
+#: a condition an answer asks of its own ("If the mop is standing on the floor, ...")
+_OWN_CASE = re.compile(r"\b(?:if|when|unless)\s+(?P<case>[^,;:.]+)", re.I)
+#: the words two conditions may share without speaking of the same thing
+_CASE_FUNCTION_WORDS = frozenset({"the", "a", "an", "it", "its", "is", "are", "not", "there", "this", "that", "they",
+                                  "them", "was", "were", "be", "been", "still", "any", "some", "one", "no"})
+_THEN = re.compile(r"^then\b[ \t,]*", re.I)
+
+
+def _case_words(case: str) -> set[str]:
+    return {w for w in re.findall(r"[a-z]+", case.lower()) if w not in _CASE_FUNCTION_WORDS}
+
+
+def answered_questions(text: str) -> str:
+    """A question-and-answer layout (a catechism, an FAQ, a quiz sheet) whose question states a
+    case ("Q. What must you do if there is a mug on the desk?" / "A. If it is dirty, I take it to
+    the sink.") as the conditional it stands for, the question's case framing its answer: "If
+    there is a mug on the desk: If it is dirty, I take it to the sink." A reader asks the answer's
+    own conditions under the question's case; read apart, the question is no instruction and the
+    answer's conditions would be asked in a subtask of their own. A follow-up question on the
+    answer's own condition ("But what if it is not dirty?" / "A. Then I put it away") is that
+    condition's other branch in the same frame: it is joined to the answer before ("...; if it is
+    not dirty, then I put it away"). A question that states no case, an answer with no question
+    before it and every other line stay as they are."""
+    lines = text.split("\n")
+    out: list[str] = []
+    last: int | None = None  # the index in `out` of the last answer read, and its own case
+    last_case = ""
+    i = 0
+    while i < len(lines):
+        q = _QA_LABEL.match(lines[i])
+        if q is None or q.group("kind").lower() not in ("q", "question"):
+            out.append(lines[i])
+            i += 1
+            continue
+        j = i + 1
+        while j < len(lines) and not lines[j].strip():
+            j += 1
+        a = _QA_LABEL.match(lines[j]) if j < len(lines) else None
+        case = _CASE_QUESTION.match(lines[i][q.end():].strip())
+        if a is None or a.group("kind").lower() not in ("a", "answer") or case is None:
+            out.append(lines[i])
+            last = None
+            i += 1
+            continue
+        answer = lines[j][a.end():].strip()
+        said = case.group("case").strip()
+        own = _OWN_CASE.search(answer)
+        if (last is not None and (case.group("follow") or case.group("what"))
+                and _case_words(said) & _case_words(last_case)):
+            # the other branch of the answer before's own condition: joined to that answer
+            out[last] = f"{out[last].rstrip().rstrip('.')}; if {said}, {_THEN.sub('then ', answer)}"
+            last = None
+        else:
+            out.append(f"If {said}: {_THEN.sub('', answer)}")
+            last, last_case = (len(out) - 1, own.group("case")) if own is not None else (None, "")
+        i = j + 1
+    return "\n".join(out)
+
+
 def unquote(text: str) -> str:
     """The text with British and older spellings of function words in their common form
     (`VARIANTS`) and British spellings of catalog words in the catalog's (`SPELLINGS`) and without a formula of politeness before a verb (`_POLITE`), with a typographic
@@ -1017,8 +1086,10 @@ def unquote(text: str) -> str:
     second predicate's shared subject and a note's dropped subject of doubt spelled out
     (`_ELIDED_PREDICATE`, `_SHARED_SUBJECT`, `_DROPPED_DOUBT`), and an inverted question's
     participle read as its state (`_QUESTION_PREDICATE`), and a learner's participle without its
-    ending at a condition's end as the state ("if curtain still close": `_BARE_PARTICIPLE`)."""
-    text = _DASHED_ASIDE.sub(r"\g<cue> ", text)
+    ending at a condition's end as the state ("if curtain still close": `_BARE_PARTICIPLE`); a
+    question-and-answer layout's answer framed by the case its question states, first
+    (`answered_questions`)."""
+    text = _DASHED_ASIDE.sub(r"\g<cue> ", answered_questions(text))
     text = _SUPPOSED_IF.sub(_occasion_if, _OCCASION_IF.sub(_occasion_if, _COMMENT_ASIDE.sub(" ", _QUOTED_WHOLE.sub(r"\1", text))))
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
     text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_dictated(_runs_on(_modern(_NATIVE_IF.sub(_native_if, text))))))))
