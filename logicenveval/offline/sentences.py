@@ -129,7 +129,9 @@ _IS_AFTER = tuple(STATE_WORDS) + ("already", "still", "not", "probably", "just",
 _IS_BEFORE_PLACE = ("inside", "atop", "underneath", "beneath", "behind", "beside", "by")
 _PLACE_OPENERS = ("the", "a", "an", "my", "your", "our", "his", "her", "their", "this", "that")
 _CONTRACTIONS = [
-    (r"\b(it|that|there|what|where|who|how|here|he|she)'s\b", r"\1 is"), (r"\b(they|we|you)'re\b", r"\1 are"),
+    # "it's got" is "it has got" (possession: "unless it's got water in it"), as a noun's "'s" is
+    (r"\b(it|that|there|what|where|who|how|here|he|she)'s\b(?!\s+got\b)", r"\1 is"),
+    (r"\b(they|we|you)'re\b", r"\1 are"),
     (rf"\b(\w+)'s(?=\s+(?:{'|'.join(_HAS_AFTER)})\b)", r"\1 has"),
     (rf"\b(\w+)'s(?=\s+(?:{'|'.join(_IS_AFTER)})\b)", r"\1 is"),
     # a preposition of place that is also a noun ("the box's inside is dirty") is "is" before it

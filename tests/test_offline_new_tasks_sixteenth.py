@@ -1,0 +1,70 @@
+"""Values never set in the new tasks, sixteenth session's second round (docs/reader.md, "Values
+never set: possession, ... (sixteenth session)"). Each structure is written first as a table of
+composed sentences in several registers, kinds and states (measured before its rule and after),
+with near misses that must not be misread; every sentence is written for the test, none copied
+from a development set."""
+
+from __future__ import annotations
+
+import pytest
+from reading import asks, factors
+
+from logicenveval.offline.sentences import expand
+
+# -- "have got" of possession: "unless it's got water in it" ---------------------------------------
+#
+# British English says possession with "have got" as often as with "have": "it's got water in it",
+# "the vase hasn't got any water in it". The reader read "it's" as "it is" before "got" and took
+# "has ... water in it" only without "got", so a container's filling was never asked (0 of 7 of
+# the table below before the rule, 7 of 7 after).
+
+#: (text, rooms, the condition asked)
+HAVE_GOT: list[tuple[str, tuple[str, ...], str]] = [
+    # a kitchen card, a heading, "unless"
+    ("Kettle. Unless it's got water in it, fill it at the sink.", ("kitchen",), "state(kettle, filled)"),
+    # a gardener's note, a full noun subject, "otherwise"
+    ("If the watering can has got water in it, leave it; otherwise fill it at the sink.", ("garden",),
+     "state(watering_can, filled)"),
+    # a text message, lower case, "no"
+    ("the dog bowl - if it's got no water in it, top it up at the sink pls", ("kitchen",),
+     "state(pet_bowl, filled)"),
+    # a house-sitter's list, the negation contracted, "any"
+    ("If the vase hasn't got any water in it, fill it at the sink.", ("living_room",), "state(vase, filled)"),
+    # a shed checklist, "if not" after
+    ("Water bottle on the bench: if it has got water in it, leave it there, if not, fill it at the sink.",
+     ("garage",), "state(water_bottle, filled)"),
+    # a formal notice, an inverted condition with "have got"
+    ("Guests are asked to check the kettle. Should it have got water in it, it must be emptied into the sink.",
+     ("kitchen",), "state(kettle, filled)"),
+    # a flatmate's note, another liquid, "still" after
+    ("The mug on the desk - if it's got coffee in it still, tip it into the sink.", ("study",),
+     "state(mug, filled)"),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), HAVE_GOT)
+def test_have_got_a_liquid_in_it_asks_whether_the_container_is_filled(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """`sentences._CONTRACTIONS` ("it's got" -> "it has got"), `analysis._HAS_IN` ("has got")."""
+    assert asks(text, rooms, condition), factors(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms", "word"), [
+    # "has got" of becoming before a state stays the state ("has been wet"), not a filling
+    ("If the towel's got wet, hang it on the towel rail.", ("bathroom",), "filled"),
+    # what it has got is no liquid: no filling asked
+    ("If the vase has got a crack in it, put it in the bin.", ("living_room",), "filled"),
+    # the speaker's "you've got", of another thing: the kettle is not asked
+    ("If you've got water in your bottle, leave the kettle alone.", ("kitchen",), "kettle"),
+])
+def test_have_got_without_a_liquid_in_the_thing_is_no_filling(
+        text: str, rooms: tuple[str, ...], word: str) -> None:
+    assert not any(word in c for values in factors(text, rooms).values() for c in values), factors(text, rooms)
+
+
+def test_it_is_stays_it_is_before_everything_but_got() -> None:
+    assert expand("it's got water in it") == "it has got water in it"
+    assert expand("it's gone") == "it is gone"
+    assert expand("that's on the floor") == "that is on the floor"
+    assert "towel_wet" in factors("If the towel's got wet, hang it on the towel rail.", ("bathroom",))
+
