@@ -68,3 +68,55 @@ def test_it_is_stays_it_is_before_everything_but_got() -> None:
     assert expand("that's on the floor") == "that is on the floor"
     assert "towel_wet" in factors("If the towel's got wet, hang it on the towel rail.", ("bathroom",))
 
+
+# -- a place asked alone: "The towel. On the floor? Hang it up." ------------------------------------
+#
+# A checklist or a note names a thing, then asks its place with a question that is only the place
+# ("On the floor?", "Still on the bed?"): the subject and copula are elided, as in "if on the
+# floor". The reader read such a question only when the sentence before had said the same place
+# (2 of 7 of the table below before the rule, 7 of 7 after).
+
+#: (text, rooms, the condition asked)
+PLACE_ASKED: list[tuple[str, tuple[str, ...], str]] = [
+    # a checklist, a heading sentence
+    ("The remote control. On the sofa? Put it on the TV stand.", ("living_room",), "on(remote_control, sofa)"),
+    # a numbered list
+    ("2. The towel. On the floor? Hang it on the towel rail.", ("bathroom",), "on(towel, floor)"),
+    # a note, a doubt that says no place
+    ("The towel may have fallen. On the floor? Hang it on the towel rail.", ("bathroom",), "on(towel, floor)"),
+    # a story-like note, the thing the object of another verb
+    ("I took my hat off in a hurry. On the floor? Hang it on the coat hook.", ("hallway",), "on(hat, floor)"),
+    # a chat message, lower case, "still"
+    ("ok so the laptop. still on the bed? move it to the desk pls", ("bedroom",), "on(laptop, bed)"),
+    # a terse card, "lying"
+    ("Pillow. Lying on the floor? Put it back on the bed.", ("bedroom",), "on(pillow, floor)"),
+    # a polite notice, another place said before
+    ("The umbrella was last seen by the door. On the floor? Please place it in the umbrella stand.",
+     ("hallway",), "on(umbrella, floor)"),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), PLACE_ASKED)
+def test_a_place_asked_alone_is_asked_of_the_thing_named_before(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """`sentences._ELIDED_PLACE_QUESTION`: "On the floor?" -> "Is it on the floor?"."""
+    assert asks(text, rooms, condition), factors(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms", "word"), [
+    # an idiom of "on" that is no place: the lamp's state is still asked, no place
+    ("The lamp is on the desk. On your way out? Switch it off.", ("study",), "on(desk_lamp"),
+    # "in": where the listener is, not the thing
+    ("In the kitchen? Switch the kettle off.", ("kitchen",), "inside(kettle"),
+    # a question with a subject of its own (a tag) is not given another
+    ("The mug. On the desk, is it? Put it in the sink.", ("study",), "it, desk"),
+])
+def test_a_question_that_is_no_elided_place_is_not_read_as_one(
+        text: str, rooms: tuple[str, ...], word: str) -> None:
+    assert not any(word in c for values in factors(text, rooms).values() for c in values), factors(text, rooms)
+
+
+def test_an_idiom_of_on_keeps_its_thing_s_state() -> None:
+    assert asks("The lamp is on the desk. On your way out? Switch it off.", ("study",),
+                "state(desk_lamp, toggled_on)")
+

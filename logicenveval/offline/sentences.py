@@ -264,6 +264,25 @@ _ELIDED_SUBJECT = re.compile(
 _ELIDED_PLACE = re.compile(
     r"\b(if|unless|when|whenever)\s+(?=(?:(?:still|already|left|lying)\s+)?(?:on|upon)\s+"
     r"(?:the|a|an|your|my|our|his|her|their)\s)", re.I)
+#: the same as a question of its own, after the thing was named ("The towel. On the floor? Hang
+#: it up.", "I took my hat off in a hurry. Still on the floor? ..."): a sentence that is only a
+#: surface place and its question mark asks it of the thing spoken of, "Is it on the floor?"; a
+#: place after a heading's colon or dash is the heading's (read there), and a question with a verb
+#: or subject of its own ("On the sofa, is it?") or with "in" ("In the kitchen?": where the
+#: listener is) is left alone, as is an idiom of "on" that is no place (`IDIOM_PLACES`: "On your
+#: way out?", "On the phone?")
+IDIOM_PLACES = ("way", "phone", "call", "whole", "list", "go", "own", "shift", "duty", "rota", "agenda")
+_ELIDED_PLACE_QUESTION = re.compile(
+    r"(?:(?<=^)|(?<=[.!?;]\s)|(?<=\n))(?:(?:still|already|left|lying)\s+)?(?:on|upon|under|underneath|behind)\s+"
+    rf"(?:the|a|an|your|my|our|his|her|their)\s+(?!(?:{'|'.join(IDIOM_PLACES)})\b)"
+    r"(?:(?!(?:is|are|was|were|it|they)\b)[^\s?.!,;:]+\s*){1,4}\?",
+    re.I | re.M)
+
+
+def _asked_place(m: re.Match[str]) -> str:
+    """`_ELIDED_PLACE_QUESTION`'s question with its subject and copula: "Is it on the floor?"."""
+    said = m.group(0)
+    return f"{_match_case(said, 'is it')} {said[:1].lower()}{said[1:]}"
 #: a condition whose subject pronoun is dropped, as a speaker of a null-subject language drops it
 #: (Spanish, Italian, Portuguese: "si está encendida"; a hasty text: "if is still on, turn it
 #: off", "unless are dry"): "if" or "unless" then a finite "be" that no "there" follows, read with
@@ -1034,6 +1053,7 @@ def unquote(text: str) -> str:
     plain = _BARE_PARTICIPLE.sub(_participle_state, plain)
     plain = _EMPHATIC_DO.sub("", plain)
     plain = _ELIDED_END_STATE.sub(r"\1 it is ", _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", _ELIDED_PLACE.sub(r"\1 it is ", plain))))
+    plain = _ELIDED_PLACE_QUESTION.sub(_asked_place, plain)
     plain = _DROPPED_SUBJECT.sub(lambda m: f"{m.group(1)} {_DROPPED_PRONOUN[m.group(2).lower()]} ", plain)
     plain = _SHARED_SUBJECT.sub(_shared_pronoun, plain)
     plain = _DROPPED_DOUBT.sub(lambda m: f"{m.group(1)}{_match_case(m.group(2), 'it')} {m.group(2).lower()}", plain)
