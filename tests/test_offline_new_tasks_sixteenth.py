@@ -9,6 +9,7 @@ from __future__ import annotations
 import pytest
 from reading import asks, factors
 
+from logicenveval.offline.lexicon import _named_things
 from logicenveval.offline.sentences import expand
 
 # -- "have got" of possession: "unless it's got water in it" ---------------------------------------
@@ -119,4 +120,47 @@ def test_a_question_that_is_no_elided_place_is_not_read_as_one(
 def test_an_idiom_of_on_keeps_its_thing_s_state() -> None:
     assert asks("The lamp is on the desk. On your way out? Switch it off.", ("study",),
                 "state(desk_lamp, toggled_on)")
+
+
+# -- a vocative after a place: "Take it to the sink, Tom, and put it in." ---------------------------
+#
+# A note to a named reader calls them by name after an instruction's place ("to the sink, Tom"):
+# the name is the listener's, not the place's given name (as "her doll, Lady Rosabel" is the
+# doll's). Read as the place's name, every later "Tom left ..." spoke of the sink and its pronouns
+# after (2 of 5 of the table below were misread before the rule, 0 after; the other 3 held).
+
+#: (text, rooms, the condition asked)
+VOCATIVES: list[tuple[str, tuple[str, ...], str]] = [
+    # a primer-like note, the name as subject before and as vocative after
+    ("Tom left his towel on the floor. Is it on the floor now? Then hang it on the towel rail. "
+     "Is the cup dirty? Take it to the sink, Tom, and put it in.", ("bathroom",), "on(towel, floor)"),
+    # a parent's note, the vocative first
+    ("Put the mug in the sink, Anna. Anna left her scarf on the chair. If it is on the chair, hang it on "
+     "the coat hook.", ("hallway",), "on(scarf, chair)"),
+    # a chat message, lower case but the name
+    ("pls put the remote on the tv stand, Jo. Jo left the blanket on the sofa. if it's on the sofa fold it "
+     "and put it in the basket", ("living_room",), "on(blanket, sofa)"),
+    # a formal notice, a title before the name
+    ("Kindly return the kettle to the counter, Mr Hale. Mr Hale left his umbrella on the floor; if it is on "
+     "the floor, it should be placed in the umbrella stand.", ("kitchen",), "on(umbrella, floor)"),
+    # an exclamation, the name opening the next sentence
+    ("Hang your coat on the hook, Sam! Sam, your book: is it on the bed? Then put it on the shelf.",
+     ("bedroom",), "on(book, bed)"),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), VOCATIVES)
+def test_a_name_after_a_place_is_the_listener_not_the_place(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """`lexicon._VOCATIVE_PREPS`: "to the sink, Tom" names no sink "Tom"."""
+    assert asks(text, rooms, condition), factors(text, rooms)
+
+
+def test_a_vocative_names_nothing_and_an_apposition_still_does() -> None:
+    phrases = {("sink",): {"sink"}, ("kettle",): {"kettle"}, ("doll",): {"doll"}, ("hook",): {"coat_hook"}}
+    assert _named_things("Take it to the sink, Tom, and put it in.", phrases) == {}
+    assert _named_things("Hang it on the hook, Anna.", phrases) == {}
+    # the noun phrase no place: the name is still the thing's
+    assert _named_things("Please check our kettle, Bessie.", phrases) == {("bessie",): {"kettle"}}
+    assert _named_things("She went to find her doll, Lady Rosabel.", phrases) == {("lady", "rosabel"): {"doll"}}
 
