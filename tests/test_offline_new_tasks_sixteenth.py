@@ -7,7 +7,7 @@ from a development set."""
 from __future__ import annotations
 
 import pytest
-from reading import asks, factors
+from reading import asks, factors, named
 
 from logicenveval.offline.lexicon import _named_things
 from logicenveval.offline.sentences import expand
@@ -163,4 +163,58 @@ def test_a_vocative_names_nothing_and_an_apposition_still_does() -> None:
     # the noun phrase no place: the name is still the thing's
     assert _named_things("Please check our kettle, Bessie.", phrases) == {("bessie",): {"kettle"}}
     assert _named_things("She went to find her doll, Lady Rosabel.", phrases) == {("lady", "rosabel"): {"doll"}}
+
+
+# -- a heading's bare kind, then the thing by its colour: "3. The folder. ... the blue folder ..." --
+#
+# A list item opens with its topic's bare kind as a heading ("3. The folder.", "Mug:", "TOWEL -")
+# and then names the thing by its colour: one thing, not a plain folder and a blue one (two
+# objects, the factor asked of the blue one while the plain one stands in the scene). 0 of 6 of the
+# table below named one object before the rule, 6 of 6 after.
+
+#: (text, rooms, the kind, the one object's name, the condition asked)
+HEADED: list[tuple[str, tuple[str, ...], str, str, str]] = [
+    # a legal letter, a numbered paragraph
+    ("3. The folder. Our client believes the blue folder has slipped off the desk. If it's lying on the "
+     "floor, put it back on the desk.", ("office",), "folder", "blue_folder", "on(blue_folder, floor)"),
+    # a terse card, a colon
+    ("Mug: my blue mug is on the desk. If it's dirty, put it in the sink.", ("study",), "mug", "blue_mug",
+     "state(blue_mug, dirty)"),
+    # a notice in capitals, a dash
+    ("TOWEL - the green towel is probably on the floor. If it is, hang it on the towel rail.", ("bathroom",),
+     "towel", "green_towel", "on(green_towel, floor)"),
+    # a numbered list, a possessive
+    ("2. The mug. My blue mug is on the desk. If it's dirty, put it in the sink.", ("study",), "mug",
+     "blue_mug", "state(blue_mug, dirty)"),
+    # the plain kind said again after the colour
+    ("The folder. Our client says the blue folder has slipped off the desk. If the folder is on the floor, "
+     "put it on the desk.", ("office",), "folder", "blue_folder", "on(blue_folder, floor)"),
+    # a chat message, lower case
+    ("the scarf. my red scarf might be on the floor, if it is hang it on the coat hook pls", ("hallway",),
+     "scarf", "red_scarf", "on(red_scarf, floor)"),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "kind", "name", "condition"), HEADED)
+def test_a_heading_s_kind_and_the_coloured_thing_after_it_are_one(
+        text: str, rooms: tuple[str, ...], kind: str, name: str, condition: str) -> None:
+    """`naming._Reader.heading_mention`: the heading names the coloured thing's topic."""
+    assert [n for n, (category, _) in named(text, rooms).items() if category == kind] == [name]
+    assert asks(text, rooms, condition), factors(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms", "kind", "names"), [
+    # a plain mention that says something of its own is a thing of its own
+    ("The folder is on the desk. The blue folder is on the shelf.", ("office",), "folder",
+     {"folder", "blue_folder"}),
+    # a plural heading over two coloured things
+    ("Folders. The blue folder is on the desk and the red folder is on the floor.", ("office",), "folder",
+     {"blue_folder", "red_folder"}),
+    # a heading of the kind over two things told apart otherwise: the heading is no thing of its own
+    ("Towels: the green towel is on the floor, the spare towel is in the cupboard.", ("bathroom",), "towel",
+     {"green_towel", "spare_towel"}),
+])
+def test_a_plain_mention_that_is_no_lone_heading_keeps_its_own_thing(
+        text: str, rooms: tuple[str, ...], kind: str, names: set[str]) -> None:
+    assert {n for n, (category, _) in named(text, rooms).items() if category == kind} == names
 
