@@ -218,3 +218,49 @@ def test_a_plain_mention_that_is_no_lone_heading_keeps_its_own_thing(
         text: str, rooms: tuple[str, ...], kind: str, names: set[str]) -> None:
     assert {n for n, (category, _) in named(text, rooms).items() if category == kind} == names
 
+
+# -- a proposition offered with its negation: "Either the magazine lies on the floor or it does not."
+#
+# "Either P or it does not", "P or it isn't", "P or not" leave P open, as "maybe P" does; the
+# conditions after take it up ("If so", "If it is", or in order, "In the first case ... In the
+# second case ..."). A lexical verb's negation ("or it does not") and the cases taken up in order
+# were not read (5 of 7 of the table below before the rule, 7 of 7 after).
+
+#: (text, rooms, the condition asked)
+OPEN_DISJUNCTIONS: list[tuple[str, tuple[str, ...], str]] = [
+    # a mathematician's note, the cases in order
+    ("Either the magazine lies on the floor or it does not. In the first case, put it on the coffee table. "
+     "In the second case, leave it.", ("living_room",), "on(magazine, floor)"),
+    # a legal letter, "the former case"
+    ("Either the umbrella is still open or it is not. In the former case, it is to be closed.", ("hallway",),
+     "state(umbrella, open)"),
+    # a text message, lower case, "isn't"
+    ("the desk lamp is on or it isn't. if it is, switch it off pls", ("study",), "state(desk_lamp, toggled_on)"),
+    # a terse card, "or not"
+    ("Kettle on or not. If on, switch it off.", ("kitchen",), "state(kettle, toggled_on)"),
+    # a care plan, the second case only
+    ("Either the towel is wet or it isn't. In the second case, fold it and put it on the shelf.", ("bathroom",),
+     "state(towel, wet)"),
+    # a shed list, a semicolon
+    ("Either the box is open or not; if it is, close it.", ("garage",), "state(cardboard_box, open)"),
+    # a lecture-like note, "either" after the subject
+    ("The remote either lies on the sofa or it does not. In the first case, put it on the TV stand.",
+     ("living_room",), "on(remote_control, sofa)"),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), OPEN_DISJUNCTIONS)
+def test_a_proposition_offered_with_its_negation_is_asked(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """`sentences._OPEN_DISJUNCTION` ("Maybe ..."), `sentences._CASE_TAKEN_UP` ("If so", "If not")."""
+    assert asks(text, rooms, condition), factors(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms"), [
+    # a warning of what follows if the instruction is not done: no negation of its clause
+    ("Wipe the table now or it will not dry by morning.", ("kitchen",)),
+    ("Put the milk in the fridge, or it does not keep.", ("kitchen",)),
+    ("Shut the fridge or it is not cold by morning.", ("kitchen",)),
+])
+def test_an_instruction_or_its_consequence_is_no_open_proposition(text: str, rooms: tuple[str, ...]) -> None:
+    assert factors(text, rooms) == {}
