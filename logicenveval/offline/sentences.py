@@ -574,33 +574,29 @@ _OTHER_THAN = re.compile(r"\b(anywhere|somewhere|everywhere|nowhere)\s+other\s+t
 #: a place said to be checked or confirmed ("1 towel, to be checked on the drying rack", "the
 #: spare key, still to be confirmed in the drawer") is left open, as "may be" leaves it: the
 #: writer does not know yet (read as "1 towel may be on the drying rack")
-#: a proposition offered with its own negation ("Either the magazine lies on the floor or it does
-#: not.", "The lamp is on or it isn't.", "either the box is open or not"): the writer leaves it open,
-#: as "maybe" does, so it is read "Maybe the magazine lies on the floor." (an open statement the
-#: conditions after it take up: "If so", "If it is"); only a whole sentence, its negation ending it
-#: ("or it will not dry by morning" is a consequence, no negation of the clause)
+#: a proposition offered with its own negation by a lexical verb's "do" ("Either the magazine lies
+#: on the floor or it does not.", "The remote either sits on the sofa or it doesn't."): the writer
+#: leaves it open, as "maybe" does, so it is read "Maybe the magazine lies on the floor." (an open
+#: statement the conditions after it take up: "If so", "If it does"), and a first case taken up
+#: right after it ("In the first case, ...") as "If so"; only a whole sentence, its negation
+#: ending it ("or it does not keep" is a consequence). "Either it is on the floor or not. In the
+#: first case ..." is `analysis`'s own reading of "either", left to it
 _OPEN_DISJUNCTION = re.compile(
-    r"(?:(?<=^)|(?<=[.!?;]\s)|(?<=\n))(?:either\s+)?(?P<clause>[^.!?;:\n]{3,120}?),?\s+or\s+(?:(?:it|they|he|she)\s+"
-    r"(?:does|do|did|is|are|was|were|has|have|had)(?:\s+not|n't|n\u2019t)|not)(?=\s*[.!;\n]|\s*$)", re.I | re.M)
-#: the cases of such a disjunction taken up in order ("In the first case, pick it up. In the second
-#: case, leave it."): the first is the proposition's, the second its negation's
-_CASE_TAKEN_UP = re.compile(r"(?:(?<=^)|(?<=[.!?;]\s)|(?<=\n))in\s+the\s+(?P<which>first|former|second|latter|other)"
-                            r"(?:\s+case)?(?=\s*,)", re.I | re.M)
+    r"(?:(?<=^)|(?<=[.!?;]\s)|(?<=\n))(?:either\s+)?(?P<clause>[^.!?;:\n]{3,120}?),?\s+or\s+(?:it|they|he|she)\s+"
+    r"(?:does|do|did)(?:\s+not|n't|n\u2019t)(?=\s*[.!;\n]|\s*$)(?P<gap>[.!;]?\s*)"
+    r"(?P<case>in\s+the\s+(?:first|former)(?:\s+case)?(?=\s*,))?", re.I | re.M)
 
 
 def _open_disjunction(m: re.Match[str]) -> str:
-    """`_OPEN_DISJUNCTION`'s proposition as an open statement: "Maybe <clause>" ("either" in it dropped)."""
+    """`_OPEN_DISJUNCTION`'s proposition as an open statement: "Maybe <clause>" ("either" in it
+    dropped), and its first case after it as "If so"."""
     clause = re.sub(r"\s+either\b", "", m.group("clause"))
     first = clause.split()[0]
     # its first word loses the capital it had as the sentence's first, unless all of it is capitals
     # (a letter naming a thing, "M lies ...", or a notice in capitals)
     opened = clause if first.isupper() else clause[:1].lower() + clause[1:]
-    return f"{_match_case(m.group(0), 'maybe')} {opened}"
-
-
-def _case_taken_up(m: re.Match[str]) -> str:
-    """`_CASE_TAKEN_UP` as the condition it stands for: "If so" (the first case), "If not" (the second)."""
-    return _match_case(m.group(0), "if so" if m.group("which").lower() in ("first", "former") else "if not")
+    case = _match_case(m.group("case"), "if so") if m.group("case") else ""
+    return f"{_match_case(m.group(0), 'maybe')} {opened}{m.group('gap')}{case}"
 
 
 _TO_BE_CHECKED = re.compile(r",?\s+(?:still\s+|yet\s+)?to\s+be\s+(?:checked|confirmed|verified|double-checked)"
@@ -1068,7 +1064,7 @@ def unquote(text: str) -> str:
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
     text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_dictated(_runs_on(_modern(_NATIVE_IF.sub(_native_if, text))))))))
     text = _TO_BE_CHECKED.sub(" may be ", _OTHER_THAN.sub(r"\1 else than", text))
-    text = _CASE_TAKEN_UP.sub(_case_taken_up, _OPEN_DISJUNCTION.sub(_open_disjunction, text))
+    text = _OPEN_DISJUNCTION.sub(_open_disjunction, text)
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), _SPELLED[m.group(0).lower()]), text))
     text = starred(_TIME_STAMP.sub(r"\1", _CITATION.sub("", _MARKDOWN_HEADING.sub(r"\g<title>:", text))))
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
