@@ -223,8 +223,9 @@ def test_a_plain_mention_that_is_no_lone_heading_keeps_its_own_thing(
 #
 # "Either P or it does not", "P or it isn't", "P or not" leave P open, as "maybe P" does; the
 # conditions after take it up ("If so", "If it is", or in order, "In the first case ... In the
-# second case ..."). A lexical verb's negation ("or it does not") and the cases taken up in order
-# were not read (5 of 7 of the table below before the rule, 7 of 7 after).
+# second case ..."). The forms with "be" and "or not" were read already (analysis's "either"); a
+# lexical verb's negation ("or it does not") was not (5 of 7 of the table below before the rule,
+# 7 of 7 after).
 
 #: (text, rooms, the condition asked)
 OPEN_DISJUNCTIONS: list[tuple[str, tuple[str, ...], str]] = [
@@ -252,7 +253,7 @@ OPEN_DISJUNCTIONS: list[tuple[str, tuple[str, ...], str]] = [
 @pytest.mark.parametrize(("text", "rooms", "condition"), OPEN_DISJUNCTIONS)
 def test_a_proposition_offered_with_its_negation_is_asked(
         text: str, rooms: tuple[str, ...], condition: str) -> None:
-    """`sentences._OPEN_DISJUNCTION` ("Maybe ..."), `sentences._CASE_TAKEN_UP` ("If so", "If not")."""
+    """`sentences._OPEN_DISJUNCTION` ("Maybe ...", its first case "If so")."""
     assert asks(text, rooms, condition), factors(text, rooms)
 
 
