@@ -352,8 +352,11 @@ _CONTENTS = re.compile(rf"\bthere (?:is|are) {_AMOUNT}(?P<no>no |not any )?{_LIQ
 #: milk" names the carton ("if there is milk left" asks of the carton, not of the kettle spoken
 #: of before); "left" is needed, as "if there is milk" asks whether there is any milk at all
 _LEFT = re.compile(rf"\bthere (?:is|are) {_AMOUNT}(?P<no>no |not any )?(?P<liquid>{_LIQUID}) left\b(?! (?:in|inside|on|over)\b)")
-#: "the carton still has milk in it", "if the bottle has no juice left in it": its subject holds it
-_HAS_IN = re.compile(rf"\b(?P<has>has|have) {_AMOUNT}(?P<no>no |not any )?{_LIQUID}(?: left)? (?:in|inside) (?:it|them)\b")
+#: "the carton still has milk in it", "if the bottle has no juice left in it": its subject holds it;
+#: "have got" is the same "have" of possession, as British English says it ("unless it's got
+#: water in it", "if the vase hasn't got any water in it": "not ... any" is "no")
+_HAS_IN = re.compile(rf"\b(?P<has>has|have)(?P<not> not)?(?: got)? {_AMOUNT}(?P<no>no |not any |any )?"
+                     rf"{_LIQUID}(?: left)? (?:in|inside) (?:it|them)\b")
 
 
 #: the auxiliaries that open a question or make its tag
@@ -384,7 +387,8 @@ def _contents(said: str) -> str:
     jug is empty"; "there is milk left" -> "the milk is full"; "it still has milk in it" -> "it is full"
     (`_CONTENTS`, `_LEFT`, `_HAS_IN`)."""
     def state(m: re.Match[str]) -> str:
-        return "empty" if m.group("no") else "full"
+        empty = m.group("no") not in (None, "any ") or m.groupdict().get("not") is not None
+        return "empty" if empty else "full"
     said = _CONTENTS.sub(lambda m: f"{m.group('np')} {'are' if m.group('np') == 'them' else 'is'} {state(m)}", said)
     said = _LEFT.sub(lambda m: f"the {m.group('liquid')} is {state(m)}", said)
     return _HAS_IN.sub(lambda m: f"{'are' if m.group('has') == 'have' else 'is'} {state(m)}", said)

@@ -231,6 +231,11 @@ _NOUN_END = r"(?=\s*(?:[,.;:!?)]|$)|\s+(?:who|which|that|is|was|has|had|sat|sits
 #: "her doll, Lady Rosabel", "Mr Snuggles the teddy bear" (`_named_things`)
 _NAMED_BEFORE = re.compile(rf"(?P<name>{_NAME})(?:,\s+(?:her|his|my|our|their|your|the)|\s+the)\s+(?P<noun>{_NOUN}){_NOUN_END}")
 _NAMED_AFTER = re.compile(rf"\b(?:her|his|my|our|their|your|the)\s+(?P<noun>{_NOUN}),\s+(?P<name>{_NAME})(?=\s*[,.;:!?)]|$)")
+#: prepositions of place and motion before which a noun phrase ending its clause is where a thing
+#: goes or is: a name after it is the listener's, a vocative ("Take it to the sink, Tom, and put it
+#: in", "Hang it on the hook, Anna."), not the place's given name (`_named_things`)
+_VOCATIVE_PREPS = frozenset({"to", "into", "onto", "on", "in", "at", "under", "by", "off", "from", "inside",
+                             "beside", "behind", "over", "next"})
 
 
 #: the words that name the room a task of one room is in, after a determiner of `_THIS_ROOM`
@@ -257,6 +262,8 @@ def _named_things(text: str, phrases: Mapping[tuple[str, ...], set[str]]) -> dic
         first = name.split()[0].lower().rstrip(".")
         if opens and first not in TITLES and (len(name.split()) < 2 or first in _GREETINGS):
             continue
+        if m.re is _NAMED_AFTER and (text[: m.start()].split()[-1:] or [""])[0].lower() in _VOCATIVE_PREPS:
+            continue  # "to the sink, Tom": the listener, called by name
         meant = phrases.get(words_of(m.group("noun")))
         key = words_of(name)
         if meant and len(meant) == 1 and key and key not in phrases:

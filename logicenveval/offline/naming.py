@@ -426,6 +426,9 @@ class _Reader:
         #: the head word of "the <part> of the <N>" -> the part ("the lower shelf of the metal
         #: rack": a rack with shelves, `part_said_of`)
         self.part_for: dict[int, str] = {}
+        #: kind -> whether every plain mention of it so far was a heading of its own ("3. The
+        #: folder.", "Mug:"), which a later coloured mention names again (`heading_mention`)
+        self.headed: dict[str, bool] = {}
 
     def _fixed_expressions(self) -> frozenset[int]:
         """The words of the text's fixed expressions (`FIXED_EXPRESSIONS`), within one stretch of
@@ -1156,19 +1159,33 @@ class _Reader:
         names = (category, *_own(self.catalog.categories[category]))
         return before if any(len(words_of(t)) > 1 and words_of(t)[-1] == head for t in names) else None
 
-    def names_the_colored_one(self, i: int, n: int, kind: _Kind, prev: str) -> bool:
+    def names_the_colored_one(self, i: int, n: int, kind: _Kind, prev: str, category: str) -> bool:
         """Whether a plain singular mention of a kind is the one thing of it the text has already
         named by its colour ("The blue cup is on the table. If the cup is dirty ...", "My blue cup
         ... If cup is dirty"): a definite or bare mention after exactly one coloured instance and
         no plain mention before it names that instance again, not a second thing. An indefinite
         or counted mention ("a cup", "another cup", "two cups") or a plural one still names things
-        of its own."""
-        if kind.generic or kind.count > 1 or len(kind.instances) != 1:
+        of its own. A plain mention before it that was only a heading (`heading_mention`: "3. The
+        folder. ... the blue folder ...") was of the same thing."""
+        if kind.generic and not self.headed.get(category) or kind.count > 1 or len(kind.instances) != 1:
             return False
         (attrs,) = kind.instances.values()
         if set(attrs) != {"color"} or prev in _INDEFINITE | _ANOTHER | _COUNTS.keys() | {"no", "one", "other"}:
             return False
         return self.text.raw[i + n - 1].lower() == self.text.words[i + n - 1]
+
+    def heading_mention(self, i: int, n: int) -> bool:
+        """Whether the mention at words [i, i + n) is a heading of its own: its sentence or line
+        holds only it and its article, and a full stop, colon, dash or line break ends it ("3. The
+        folder.", "Mug:", "TOWEL - the green towel ..."). A heading names the topic of what
+        follows by its bare kind, so the thing the item then names by its colour ("the blue
+        folder has slipped off the desk") is the heading's one thing, not a second one."""
+        words, gaps = self.text.words, self.text.gaps
+        start = self.text.sentence_start(i)
+        if any(w not in _ARTICLES for w in words[start:i]):
+            return False
+        end = i + n
+        return end == len(words) or bool(_SENTENCE_END.search(gaps[end]) or _HEADING.search(gaps[end]))
 
     def compound(self, i: int, n: int, category: str) -> tuple[int, str]:
         """"the vanity cabinet", "the pet food bag": a name followed at once by a head noun of
@@ -1971,9 +1988,11 @@ class _Reader:
                     self.instance(category, f"spare_{last}", {})
             elif prev in _ANOTHER and known and kind.generic:
                 self.instance(category, f"other_{last}", {})  # "a lamp on the desk and another lamp"
-            elif self.names_the_colored_one(i, n, kind, prev):
+            elif self.names_the_colored_one(i, n, kind, prev, category):
                 pass  # "My blue cup is standing on kitchen table. If cup is dirty": the blue cup again
             else:
+                self.headed[category] = self.headed.get(category, True) and not kind.instances \
+                    and self.heading_mention(i, n)
                 kind.generic = True
                 if prev in _DETERMINERS or prev in _COUNTS or self.text.raw[i + n - 1] == words[i + n - 1]:
                     self.particular.add(category)
@@ -1997,6 +2016,9 @@ class _Reader:
             if kind.generic and not told_apart and kind.instances and category not in self.particular \
                     and all(name.startswith("spare_") for name in kind.instances):
                 generic = False  # "THE SPARE BULB ... BROKEN BULBS GO IN THE BIN": a rule for the spare
+            elif kind.generic and self.headed.get(category) and kind.count <= 1 and len(kind.instances) == 1 \
+                    and all(set(attrs) == {"color"} for attrs in kind.instances.values()):
+                generic = False  # "3. The folder. ... the blue folder has slipped off the desk": one folder
             else:
                 generic = kind.generic and not told_apart
             if generic:

@@ -134,7 +134,9 @@ _IS_AFTER = tuple(STATE_WORDS) + ("already", "still", "not", "probably", "just",
 _IS_BEFORE_PLACE = ("inside", "atop", "underneath", "beneath", "behind", "beside", "by")
 _PLACE_OPENERS = ("the", "a", "an", "my", "your", "our", "his", "her", "their", "this", "that")
 _CONTRACTIONS = [
-    (r"\b(it|that|there|what|where|who|how|here|he|she)'s\b", r"\1 is"), (r"\b(they|we|you)'re\b", r"\1 are"),
+    # "it's got" is "it has got" (possession: "unless it's got water in it"), as a noun's "'s" is
+    (r"\b(it|that|there|what|where|who|how|here|he|she)'s\b(?!\s+got\b)", r"\1 is"),
+    (r"\b(they|we|you)'re\b", r"\1 are"),
     (rf"\b(\w+)'s(?=\s+(?:{'|'.join(_HAS_AFTER)})\b)", r"\1 has"),
     (rf"\b(\w+)'s(?=\s+(?:{'|'.join(_IS_AFTER)})\b)", r"\1 is"),
     # a preposition of place that is also a noun ("the box's inside is dirty") is "is" before it
@@ -267,6 +269,25 @@ _ELIDED_SUBJECT = re.compile(
 _ELIDED_PLACE = re.compile(
     r"\b(if|unless|when|whenever)\s+(?=(?:(?:still|already|left|lying)\s+)?(?:on|upon)\s+"
     r"(?:the|a|an|your|my|our|his|her|their)\s)", re.I)
+#: the same as a question of its own, after the thing was named ("The towel. On the floor? Hang
+#: it up.", "I took my hat off in a hurry. Still on the floor? ..."): a sentence that is only a
+#: surface place and its question mark asks it of the thing spoken of, "Is it on the floor?"; a
+#: place after a heading's colon or dash is the heading's (read there), and a question with a verb
+#: or subject of its own ("On the sofa, is it?") or with "in" ("In the kitchen?": where the
+#: listener is) is left alone, as is an idiom of "on" that is no place (`IDIOM_PLACES`: "On your
+#: way out?", "On the phone?")
+IDIOM_PLACES = ("way", "phone", "call", "whole", "list", "go", "own", "shift", "duty", "rota", "agenda")
+_ELIDED_PLACE_QUESTION = re.compile(
+    r"(?:(?<=^)|(?<=[.!?;]\s)|(?<=\n))(?:(?:still|already|left|lying)\s+)?(?:on|upon|under|underneath|behind)\s+"
+    rf"(?:the|a|an|your|my|our|his|her|their)\s+(?!(?:{'|'.join(IDIOM_PLACES)})\b)"
+    r"(?:(?!(?:is|are|was|were|it|they)\b)[^\s?.!,;:]+\s*){1,4}\?",
+    re.I | re.M)
+
+
+def _asked_place(m: re.Match[str]) -> str:
+    """`_ELIDED_PLACE_QUESTION`'s question with its subject and copula: "Is it on the floor?"."""
+    said = m.group(0)
+    return f"{_match_case(said, 'is it')} {said[:1].lower()}{said[1:]}"
 #: a condition whose subject pronoun is dropped, as a speaker of a null-subject language drops it
 #: (Spanish, Italian, Portuguese: "si está encendida"; a hasty text: "if is still on, turn it
 #: off", "unless are dry"): "if" or "unless" then a finite "be" that no "there" follows, read with
@@ -558,6 +579,31 @@ _OTHER_THAN = re.compile(r"\b(anywhere|somewhere|everywhere|nowhere)\s+other\s+t
 #: a place said to be checked or confirmed ("1 towel, to be checked on the drying rack", "the
 #: spare key, still to be confirmed in the drawer") is left open, as "may be" leaves it: the
 #: writer does not know yet (read as "1 towel may be on the drying rack")
+#: a proposition offered with its own negation by a lexical verb's "do" ("Either the magazine lies
+#: on the floor or it does not.", "The remote either sits on the sofa or it doesn't."): the writer
+#: leaves it open, as "maybe" does, so it is read "Maybe the magazine lies on the floor." (an open
+#: statement the conditions after it take up: "If so", "If it does"), and a first case taken up
+#: right after it ("In the first case, ...") as "If so"; only a whole sentence, its negation
+#: ending it ("or it does not keep" is a consequence). "Either it is on the floor or not. In the
+#: first case ..." is `analysis`'s own reading of "either", left to it
+_OPEN_DISJUNCTION = re.compile(
+    r"(?:(?<=^)|(?<=[.!?;]\s)|(?<=\n))(?:either\s+)?(?P<clause>[^.!?;:\n]{3,120}?),?\s+or\s+(?:it|they|he|she)\s+"
+    r"(?:does|do|did)(?:\s+not|n't|n\u2019t)(?=\s*[.!;\n]|\s*$)(?P<gap>[.!;]?\s*)"
+    r"(?P<case>in\s+the\s+(?:first|former)(?:\s+case)?(?=\s*,))?", re.I | re.M)
+
+
+def _open_disjunction(m: re.Match[str]) -> str:
+    """`_OPEN_DISJUNCTION`'s proposition as an open statement: "Maybe <clause>" ("either" in it
+    dropped), and its first case after it as "If so"."""
+    clause = re.sub(r"\s+either\b", "", m.group("clause"))
+    first = clause.split()[0]
+    # its first word loses the capital it had as the sentence's first, unless all of it is capitals
+    # (a letter naming a thing, "M lies ...", or a notice in capitals)
+    opened = clause if first.isupper() else clause[:1].lower() + clause[1:]
+    case = _match_case(m.group("case"), "if so") if m.group("case") else ""
+    return f"{_match_case(m.group(0), 'maybe')} {opened}{m.group('gap')}{case}"
+
+
 _TO_BE_CHECKED = re.compile(r",?\s+(?:still\s+|yet\s+)?to\s+be\s+(?:checked|confirmed|verified|double-checked)"
                             r"\s+(?=(?:on|in|inside|under|by|near|at)\s)", re.I)
 
@@ -1094,6 +1140,7 @@ def unquote(text: str) -> str:
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
     text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_dictated(_runs_on(_modern(_NATIVE_IF.sub(_native_if, text))))))))
     text = _TO_BE_CHECKED.sub(" may be ", _OTHER_THAN.sub(r"\1 else than", text))
+    text = _OPEN_DISJUNCTION.sub(_open_disjunction, text)
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), _SPELLED[m.group(0).lower()]), text))
     text = starred(_TIME_STAMP.sub(r"\1", _CITATION.sub("", _MARKDOWN_HEADING.sub(r"\g<title>:", text))))
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
@@ -1108,6 +1155,7 @@ def unquote(text: str) -> str:
     plain = _BARE_PARTICIPLE.sub(_participle_state, plain)
     plain = _EMPHATIC_DO.sub("", plain)
     plain = _ELIDED_END_STATE.sub(r"\1 it is ", _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", _ELIDED_PLACE.sub(r"\1 it is ", plain))))
+    plain = _ELIDED_PLACE_QUESTION.sub(_asked_place, plain)
     plain = _DROPPED_SUBJECT.sub(lambda m: f"{m.group(1)} {_DROPPED_PRONOUN[m.group(2).lower()]} ", plain)
     plain = _SHARED_SUBJECT.sub(_shared_pronoun, plain)
     plain = _DROPPED_DOUBT.sub(lambda m: f"{m.group(1)}{_match_case(m.group(2), 'it')} {m.group(2).lower()}", plain)
