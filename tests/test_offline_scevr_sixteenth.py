@@ -101,6 +101,51 @@ def test_a_thing_had_at_all_is_still_asked(text: str, rooms: tuple[str, ...], as
     assert asked in factors(text, rooms)
 
 
+# -- a permission's "may" ("Guests may use the kettle in the kitchenette") ------------------------
+#
+# A rule or a notice that lets people do something ("Guests may use ...", "A member may open ...")
+# grants; it doubts nothing of the scene, so the thing it names gets no existence factor from a
+# doubt (in a task of one room, "in the ROOM" under a doubt would ask whether it is there at
+# all). After a thing, or before a perfect, a "be" or a verb of finding, "may" still doubts.
+
+#: (text, rooms, the factor that must not be asked, a factor that must still be)
+PERMITTED: list[tuple[str, tuple[str, ...], str, str]] = [
+    # a holiday let's notice
+    ("Guests may use the kettle in the kitchenette. If the kettle is still on at night, switch it off.",
+     ("kitchenette",), "kettle_present", "kettle_toggled_on"),
+    # club rules, a thing put on a holder
+    ("Members may hang a wet coat on the rack in the cloakroom. If the heater is on, switch it off.",
+     ("cloakroom",), "coat_rack_present", "radiator_toggled_on"),
+    # an office policy
+    ("Staff may leave the laptop in the office overnight. If the laptop is on, shut it down.", ("office",),
+     "laptop_present", "laptop_toggled_on"),
+    # a school's rules, a negated permission
+    ("Pupils may not take the laptop in the classroom home. If the desk lamp is on, switch it off.",
+     ("classroom",), "laptop_present", "desk_lamp_toggled_on"),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "absent", "asked"), PERMITTED)
+def test_a_permission_doubts_nothing(text: str, rooms: tuple[str, ...], absent: str, asked: str) -> None:
+    found = factors(text, rooms)
+    assert absent not in found
+    assert asked in found
+
+
+#: near misses: a thing's "may", a person's "may have", "may find" still doubt
+STILL_DOUBTED: list[tuple[str, tuple[str, ...], str]] = [
+    ("The laptop may be in the office. If so, shut it down.", ("office",), "laptop_present"),
+    ("Visitors may have left the laptop in the office. If so, shut it down.", ("office",), "laptop_present"),
+    ("You may find the laptop in the office. If so, shut it down.", ("office",), "laptop_present"),
+    ("the kettle may still be on - switch it off if so", ("kitchen",), "kettle_toggled_on"),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "asked"), STILL_DOUBTED)
+def test_a_doubt_after_may_is_still_asked(text: str, rooms: tuple[str, ...], asked: str) -> None:
+    assert asked in factors(text, rooms)
+
+
 # -- a place that names the thing in a doubt about its state ("the lamp on the nightstand may be on")
 #
 # A place said in the subject's phrase, before the predicate ("the lamp on the nightstand", "the
