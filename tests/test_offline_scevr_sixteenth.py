@@ -1,8 +1,10 @@
-"""Invalid environments, sixteenth session (docs/reader.md, "Existence asked of no doubted thing
-(sixteenth session)"): a thing whose being there nothing doubts gets no existence factor, so no
-path leaves out a role the scene needs. Each structure is written as composed sentences in several
-registers, kinds and rooms, with near misses that must still be read as before; every sentence is
-written for the test, none copied from a development set."""
+"""Invalid environments, sixteenth session (docs/reader.md, "Existence and places asked of no
+doubted thing (sixteenth session)"): a thing whose being there, or whose place, nothing doubts
+gets no existence or location factor, so no path leaves out a role the scene needs or moves a
+thing off its stated place; and a thing of the floor ruled off it goes on a free surface, so the
+layout stays possible. Each structure is written as composed sentences in several registers,
+kinds and rooms, with near misses that must still be read as before; every sentence is written
+for the test, none copied from a development set."""
 
 from __future__ import annotations
 
