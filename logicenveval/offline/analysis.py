@@ -1150,6 +1150,9 @@ class _Reader:
                     facts += [Fact(r, f"state({r}, filled)", "state", "filled",
                                    negated=negated != ("no" in before)) for r in m.roles]
                 break
+            if _WE_HAVE.search(" ".join(before[-6:])) and _had_somewhere(words, m) and not _existential(before):
+                # "maybe I have it in my bag": where the thing is had, not whether it is at all
+                break
             if _existential(before) or "no" in before[-2:] or _WE_HAVE.search(" ".join(before[-6:])) or (
                     m.start == 0 and m.kind == "pronoun" and words[0] == "one"):
                 facts += [Fact(r, f"exists({r})", "exists", negated=negated) for r in m.roles]
@@ -3230,6 +3233,10 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # thing is kept, said in a condition or an instruction, asks nothing (a stated home
                 # is weighed against the rest of the text by `_settle_stated`)
                 continue
+            if cl.role == "uncertain" and _identifying_place(f, cl):
+                # "The lamp on the nightstand may be on": the doubt is whether it is on; the
+                # place names which lamp is meant
+                continue
             if f.goal or not (conditional or (f.modifier and cl.role not in ("scene",)
                                               # "The tablet is lying on the chair.": stated, kept
                                               and not ((f.definite or _norm(cl)) and cl.role == "statement")
@@ -3248,6 +3255,10 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 continue
             if conditional and f.kind == "location" and not f.goal and f.condition.startswith("in_room(") \
                     and list(brief.get("rooms") or []) == [f.key]:
+                if _holds_another(f.subject, cl.facts):
+                    # "The lamp on the nightstand in the bedroom may be on": the room says which
+                    # holder is meant; the doubt is the lamp's, not whether the nightstand is there
+                    continue
                 # "I believe I may have left my wristwatch in the flatlet. If it is there, ...": in a
                 # task of one room, being in that room is being there at all
                 f = Fact(f.subject, f"exists({f.subject})", "exists", negated=f.negated)
@@ -3612,6 +3623,46 @@ def _alternatives_put_back(factors: list[Factor], clauses: list[Clause]) -> list
                 g.context = [*f.context, (f.id, frozenset({"no"}))]
                 out.append(g)
     return out
+
+
+#: the pronouns that take up a definite thing: "have it in my bag" (not "have one", any thing)
+_DEFINITE_PRONOUNS = frozenset({"it", "them"})
+
+
+def _had_somewhere(words: list[str], m: Mention) -> bool:
+    """Whether a thing "had" (`_WE_HAVE`) is a definite pronoun with a place right after it
+    ("I think I have it in my bag", "we might have them on the desk"): the place it is had in,
+    an alternative to the place the text doubts, not a doubt that it is there at all."""
+    return m.kind == "pronoun" and words[m.start] in _DEFINITE_PRONOUNS and m.end < len(words) \
+        and words[m.end] in PREP_IN | PREP_ON
+
+
+#: the words a clause's predicate opens with (a copula, a perfect, a modal, a verb of resting):
+#: a place said before one is in the subject's phrase ("the lamp on the nightstand may be on")
+_PREDICATE_OPENERS = frozenset({
+    "is", "are", "was", "were", "be", "been", "has", "have", "had", "may", "might", "could", "can",
+    "will", "would", "should", "must", "seems", "seem", "looks", "appears", "gets", "got", "stays",
+    "remains", "keeps", "sits", "lies", "stands", "hangs"})
+
+
+def _identifying_place(f: Fact, cl: Clause) -> bool:
+    """Whether `f` is the place a thing is named by ("the lamp on the nightstand", "the desktop
+    computer on the desk"), said before the predicate, in a doubt whose predicate is the thing's
+    state ("... may be on", "... is left running more often than not"): the doubt is the
+    state's, the place says which thing is meant, as it would in a plain statement. A place in
+    the predicate ("the towel might be on the floor and wet") is still doubted."""
+    if f.kind != "location" or f.goal or not any(
+            g.subject == f.subject and g.kind == "state" and not g.goal for g in cl.facts):
+        return False
+    words = re.findall(r"[a-z']+", cl.text.lower())
+    verb = next((k for k, w in enumerate(words) if w in _PREDICATE_OPENERS), len(words))
+    return any(w in PREP_ON | PREP_IN for w in words[1:verb])
+
+
+def _holds_another(role: str, facts: Iterable[Fact]) -> bool:
+    """Whether the clause places another thing on or in `role` ("the lamp on the nightstand in
+    the bedroom"): then a room said after `role` names which holder is meant, no doubt of it."""
+    return any(g.kind == "location" and not g.goal and g.key == role and g.subject != role for g in facts)
 
 
 def _floor_bound(cat: Category | None) -> bool:

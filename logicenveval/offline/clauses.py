@@ -908,9 +908,33 @@ def uncertain_words(words: list[str]) -> set[str]:
     ("might you scrub it", "could you wipe it") asks the listener to act, it doubts nothing of
     the scene ("the bowl might be dirty" still does)."""
     return {w for k, w in enumerate(words) if w in UNCERTAIN and not request_modal(words, k)
+            and not permission(words, k)
             # a speaker's belief ("I think I left it on the shelf", "we reckon", "I'm not sure")
             or w in BELIEFS and k > 0 and words[k - 1] in PERSONAL_SUBJECTS
             or w == "sure" and words[k - 1:k] == ["not"]}
+
+
+#: who a rule or a notice lets do something ("Guests may use the kettle", "A member may open a
+#: wet umbrella"): people, never a thing of the scene
+PERMITTED = PERSONAL_SUBJECTS | frozenset({
+    "guest", "guests", "member", "members", "visitor", "visitors", "resident", "residents", "staff",
+    "pupil", "pupils", "student", "students", "player", "players", "tenant", "tenants", "user", "users",
+    "children", "kids", "everyone", "anyone", "customers", "campers", "volunteers"})
+#: what a person "may" do that still doubts the scene: "may have left it", "may be using it",
+#: "you may find it on the floor", "may well", "may need to"
+_EPISTEMIC_AFTER = frozenset({"be", "have", "well", "also", "still", "already", "find", "see", "spot",
+                              "notice", "discover", "come", "need", "want", "wish", "forget"})
+
+
+def permission(words: list[str], k: int) -> bool:
+    """Whether `words[k]` is the "may" of a permission: a person (`PERMITTED`) lets do an act
+    ("Guests may use the kettle in the kitchenette", "you may open the window"): it grants, it
+    doubts nothing of the scene. After a thing ("the kettle may be on"), or before a perfect, a
+    "be" or a verb of finding (`_EPISTEMIC_AFTER`), "may" still doubts."""
+    if words[k] != "may" or k == 0 or words[k - 1] not in PERMITTED:
+        return False
+    nxt = words[k + 2:k + 3] if words[k + 1:k + 2] == ["not"] else words[k + 1:k + 2]
+    return bool(nxt) and nxt[0] not in _EPISTEMIC_AFTER
 
 
 def request_modal(words: list[str], k: int) -> bool:

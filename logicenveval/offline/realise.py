@@ -219,6 +219,16 @@ def _places(choice: dict[str, RoleChoice], roles: dict[str, Any], catalog: Catal
         if typical[0] == "inside":
             surfaces = [h for h in preferred if h.startswith("inside:")] + surfaces
         options = surfaces or preferred
+        if typical[0] == "floor" and surfaces:
+            # a thing of the floor a path rules off it (the scrubs "if found on floor") goes on a
+            # surface nothing else rests on yet; where every surface of the room already holds
+            # something ("the mug lives on the bedside table"), on one added for it: a small
+            # holder seldom takes two things, and the layout then fails
+            taken = {oc.placement for other, oc in choice.items() if other != r}
+            options = [h for h in surfaces if h not in taken]
+            if not options:
+                c.placement = NEEDS_SURFACE
+                continue
         if options:
             c.placement = options[0]
         elif typical == ["inside"]:
