@@ -238,3 +238,25 @@ PLACE_DOUBTED: list[tuple[str, tuple[str, ...], str]] = [
 @pytest.mark.parametrize(("text", "rooms", "place"), PLACE_DOUBTED)
 def test_a_place_in_the_predicate_is_still_doubted(text: str, rooms: tuple[str, ...], place: str) -> None:
     assert place in factors(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "names_by_place"), [
+    # a doubt of the place itself, no predicate before which a subject phrase could name the thing
+    ("Maybe I forgot my torch on the bench", False),
+    ("Possibly left the radio in the shed", False),
+    # the place in the subject's phrase, before the predicate: it names which thing is meant
+    ("The torch on the bench may be on", True),
+    ("The radio in the shed is often left playing", True),
+])
+def test_a_place_names_the_thing_only_before_a_predicate(text: str, names_by_place: bool) -> None:
+    """`analysis._identifying_place`: a place names the thing only when it stands in the subject's
+    phrase, before a predicate opener ("is", "may", ...). A clause with no such opener ("Maybe I
+    forgot my torch on the bench") doubts the place itself, even when a state of the thing was
+    also read in it (a development text's untranslated holder name made "on" read as switched on,
+    and the place stopped being asked: the coordinator's narrowing at the merge)."""
+    from logicenveval.offline.analysis import Clause, Fact, _identifying_place
+    thing, holder = ("flashlight", "bench") if "torch" in text else ("radio", "shed")
+    place = Fact(thing, f"on({thing}, {holder})", "location", holder)
+    state = Fact(thing, f"state({thing}, toggled_on)", "state", "toggled_on")
+    clause = Clause(text, 0, None, "uncertain", (place, state), (thing,))
+    assert _identifying_place(place, clause) is names_by_place

@@ -3655,8 +3655,10 @@ def _identifying_place(f: Fact, cl: Clause) -> bool:
             g.subject == f.subject and g.kind == "state" and not g.goal for g in cl.facts):
         return False
     words = re.findall(r"[a-z']+", cl.text.lower())
-    verb = next((k for k, w in enumerate(words) if w in _PREDICATE_OPENERS), len(words))
-    return any(w in PREP_ON | PREP_IN for w in words[1:verb])
+    verb = next((k for k, w in enumerate(words) if w in _PREDICATE_OPENERS), None)
+    # (no predicate opener, no subject phrase to name the thing by: "Maybe I forgot my glasses
+    # on the table" doubts the place itself)
+    return verb is not None and any(w in PREP_ON | PREP_IN for w in words[1:verb])
 
 
 def _holds_another(role: str, facts: Iterable[Fact]) -> bool:
