@@ -445,12 +445,13 @@ def _state_case(m: re.Match[str]) -> str:
 #: thing acted on ("whether the fridge door is shut"), as a direct question would put it
 _DOER = r"(?:i|we|you|they|he|she|someone|somebody|anyone|anybody)"
 _THING = r"(?P<thing>(?:the|my|our|your)\s+[a-z]+(?:\s+[a-z]+){0,2}?)"
-_CLAUSE_END = r"(?=\s*(?:[,.;:!?)]|$|\s(?:or|and|so|but|when|before|after)\b))"
+#: where the acted-on thing's phrase ends: a mark, or a conjunction or time word after it
+_ACTED_END = r"(?=\s*(?:[,.;:!?)]|$|\s(?:or|and|so|but|when|before|after)\b))"
 _ACTED_STATE = re.compile(
     rf"\b(?P<cue>whether|if)\s+{_DOER}\s+(?:(?:already|actually|even|ever)\s+)?(?:"
     rf"(?P<verb>{'|'.join(w for w, (flag, _) in STATE_WORDS.items() if flag == 'open' and w != 'ajar')})\s+{_THING}"
     rf"|(?:turned|switched)\s+(?P<pre>on|off)\s+{_THING.replace('thing', 'thing2')}"
-    rf"|(?:turned|switched)\s+{_THING.replace('thing', 'thing3')}\s+(?P<post>on|off)){_CLAUSE_END}", re.I | re.M)
+    rf"|(?:turned|switched)\s+{_THING.replace('thing', 'thing3')}\s+(?P<post>on|off)){_ACTED_END}", re.I | re.M)
 
 
 #: what makes an "if" clause an indirect question ("not sure if", "can't remember if", "check if"),
@@ -576,9 +577,6 @@ _VARIANT = re.compile(rf"\b(?:{'|'.join(_SPELLED)})\b", re.I)
 #: "any other <kind>", a class ("If the bread is anywhere other than the counter, or we have no
 #: bread at all" lost its "no bread")
 _OTHER_THAN = re.compile(r"\b(anywhere|somewhere|everywhere|nowhere)\s+other\s+than\b", re.I)
-#: a place said to be checked or confirmed ("1 towel, to be checked on the drying rack", "the
-#: spare key, still to be confirmed in the drawer") is left open, as "may be" leaves it: the
-#: writer does not know yet (read as "1 towel may be on the drying rack")
 #: a proposition offered with its own negation by a lexical verb's "do" ("Either the magazine lies
 #: on the floor or it does not.", "The remote either sits on the sofa or it doesn't."): the writer
 #: leaves it open, as "maybe" does, so it is read "Maybe the magazine lies on the floor." (an open
@@ -604,6 +602,9 @@ def _open_disjunction(m: re.Match[str]) -> str:
     return f"{_match_case(m.group(0), 'maybe')} {opened}{m.group('gap')}{case}"
 
 
+#: a place said to be checked or confirmed ("1 towel, to be checked on the drying rack", "the
+#: spare key, still to be confirmed in the drawer") is left open, as "may be" leaves it: the
+#: writer does not know yet (read as "1 towel may be on the drying rack")
 _TO_BE_CHECKED = re.compile(r",?\s+(?:still\s+|yet\s+)?to\s+be\s+(?:checked|confirmed|verified|double-checked)"
                             r"\s+(?=(?:on|in|inside|under|by|near|at)\s)", re.I)
 
