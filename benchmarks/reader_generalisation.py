@@ -282,6 +282,9 @@ sets written in a session, until measured: now dev 31 and dev 32, written in the
 dev 26 left it in the fifteenth session after their third measurement, dev 27 and dev 28 after their
 fifth, and dev 29 and dev 30 in the sixteenth after their sixth), so a tuner's runs
 never show them; `--dev-only --fresh` keeps them, to measure them. `--skip 'dev9 reworded,dev9 new'` leaves any other rows' sets out as well.
+`--only 'held-out reworded,held-out2 reworded'` measures those rows alone: to find which commit of a
+merged branch moved an unseen row, run it at each commit (every tree has those rows, where a skip
+list would name sets an older tree lacks).
 
 `--placements` measures instead the reader's recall of stated placements, without running a
 generator: per row, the share of the tasks' stated placement facts (each constraint whose `fact` is
@@ -697,6 +700,18 @@ def compare(old: dict[str, Any], new: dict[str, Any]) -> tuple[list[str], int]:
     return lines, fell
 
 
+def skipped_rows(skip: str, only: str) -> set[str]:
+    """The rows `--skip` and `--only` leave out: the rows named by `skip`, and with `only` every
+    row it does not name. A name no row has is a ValueError (a misspelt fresh set must not run)."""
+    names = {name for name, _ in SETS}
+    skipped = {s.strip() for s in skip.split(",") if s.strip()}
+    kept = {s.strip() for s in only.split(",") if s.strip()}
+    for option, said in (("--skip", skipped), ("--only", kept)):
+        if said - names:
+            raise ValueError(f"{option}: no set named {', '.join(sorted(said - names))}")
+    return skipped | (names - kept if kept else set())
+
+
 def selected(dev_only: bool, fresh: bool, skipped: set[str]) -> list[tuple[str, Path | None]]:
     """The sets a run measures: all, or with `dev_only` neither the held-out nor (unless `fresh`)
     the fresh ones; never the `skipped` ones."""
@@ -738,6 +753,10 @@ def main() -> None:
     ap.add_argument("--skip", default="", metavar="SET[,SET]",
                     help="also skip these rows' sets, e.g. 'dev10 reworded,dev10 new': a fresh set "
                          "kept unseen while others tune the reader")
+    ap.add_argument("--only", default="", metavar="SET[,SET]",
+                    help="measure only these rows' sets, e.g. 'held-out reworded,held-out2 reworded' to bisect "
+                         "a move of an unseen row on its aggregate at each commit (every tree has those rows, "
+                         "so no skip list per tree); --dev-only still leaves the held-out and fresh rows out")
     ap.add_argument("--placements", action="store_true",
                     help="print instead each row's recall of stated placements (no generator is run); "
                          "with --why, each missed one (development rows only)")
@@ -745,10 +764,10 @@ def main() -> None:
                     help="instead of the per-task lines, per row how many tasks lose in each loss class "
                          "(counts only); with --why, the task ids per class (development rows only)")
     args = ap.parse_args()
-    skipped = {s.strip() for s in args.skip.split(",") if s.strip()}
-    unknown = skipped - {name for name, _ in SETS}
-    if unknown:
-        ap.error(f"--skip: no set named {', '.join(sorted(unknown))}")
+    try:
+        skipped = skipped_rows(args.skip, args.only)
+    except ValueError as exc:
+        ap.error(str(exc))
     sets = selected(args.dev_only, args.fresh, skipped)
     if args.placements:
         print_placements(sets, args.smoke, args.why)

@@ -121,6 +121,26 @@ def test_skip_names_a_set_of_the_benchmark_or_stops_before_running() -> None:
     assert done.returncode == 2 and "no set named dev 10 new" in done.stderr
 
 
+def test_only_keeps_the_rows_it_names_and_refuses_a_name_no_row_has() -> None:
+    """`--only` (bisecting an unseen row's move on its aggregate) leaves out every other row, and
+    like `--skip` stops on a misspelt row rather than run the wrong sets."""
+    import sys
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
+    import reader_generalisation as bench
+
+    names = {name for name, _ in bench.SETS}
+    kept = {name for name, _ in bench.selected(False, False, bench.skipped_rows("", "held-out reworded,dev9 new"))}
+    assert kept == {"held-out reworded", "dev9 new"}
+    assert bench.skipped_rows("dev9 new", "") == {"dev9 new"}
+    assert bench.skipped_rows("", "") == set() and len(names) > 2
+    # --dev-only still wins: a held-out row named by --only is not run for a tuner
+    tuning = {name for name, _ in bench.selected(True, False, bench.skipped_rows("", "held-out reworded,dev9 new"))}
+    assert tuning == {"dev9 new"}
+    with pytest.raises(ValueError, match="--only: no set named held out"):
+        bench.skipped_rows("", "held out")
+
+
 def test_dev_only_leaves_out_the_held_out_and_the_fresh_sets() -> None:
     """A tuner runs `--dev-only`: neither the held-out nor the fresh sets may show in it."""
     import sys
