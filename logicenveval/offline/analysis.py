@@ -1067,9 +1067,11 @@ class _Reader:
             said = pattern.sub(state, said)
         # the flags a predicate participle gave, kept only for a thing that can take them ("if the
         # curtains are drawn" is shut, "if the bath is drawn" asks nothing of the bath)
-        predicated = frozenset(STATE_WORDS[state][0] for pattern, state in PREDICATE_STATES if pattern.search(said))
+        predicated: set[str] = set()
         for pattern, state in PREDICATE_STATES:
-            said = pattern.sub(state, said)
+            said, found = pattern.subn(state, said)
+            if found:
+                predicated.add(STATE_WORDS[state][0])
         said = self.machine_again(said)
         said = RAISING.sub("is", said)
         said = _contents(said)
@@ -2941,10 +2943,13 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
              if (cat := catalog.get(str(role.get("category", "")))) is not None}
     reader = _Reader(lex, _capabilities(brief, catalog), kinds)
     categories = {name: str(role.get("category", "")) for name, role in dict(brief.get("roles") or {}).items()}
+    # the description as the readers read it (`unquote`, a long chain of rewrites), made once
+    plain = unquote(str(brief["description"]))
+    described = any_at(plain)
     # the conditions a sentence implies without a cue are spelled out after its bullet item is
     # found (`_bullet_items` finds a sentence by its words in the text)
     found_in_text = [_ensured(_checked(_remark_dropped(sent, lex), lex, kinds))
-                     for sent in split_sentences(any_at(unquote(str(brief["description"]))))]
+                     for sent in split_sentences(described)]
     sentences = [implied(sent) for sent in found_in_text]
     clauses: list[Clause] = []
     grammatical = 0  # pieces split at ':' or ';' still belong to one sentence for grouping
@@ -2956,8 +2961,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     spread: tuple[int, tuple[str, ...]] = (-1, ())
     cut = [split_clauses(sent) for sent in sentences]
     bullets = _bullet_items(any_at(str(brief["description"])), found_in_text)
-    speakers = _speakers(reader, unquote(str(brief["description"])))
-    lines = _lines(any_at(unquote(str(brief["description"]))))
+    speakers = _speakers(reader, plain)
+    lines = _lines(described)
     #: per grammatical sentence, (line, paragraph) of the text it starts on (`_answered`)
     line_of: dict[int, tuple[int, int]] = {}
     for si, sent in enumerate(sentences):
@@ -3148,7 +3153,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             # (a bullet item ends its unit, full stop or not: "- racket too if its lying on the floor")
             grammatical += 1
 
-    contrasted = _contrasted(clauses, unquote(str(brief["description"])))
+    contrasted = _contrasted(clauses, plain)
     # collect condition facts per (subject, kind, key)
     found: dict[tuple[str, str, str], dict[str, Any]] = {}
     last_key: tuple[str, str, str] | None = None
@@ -3314,7 +3319,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             found[last_key].setdefault("consequences", []).append(cl.text)
             found[last_key].setdefault("under", []).append(holds.get(last_key, True) == (cl.role != "else"))
             found[last_key].setdefault("roles", set()).update(cl.mentions)
-    for (role, attr_key), classes in reader.attribute_classes(unquote(str(brief["description"]))).items():
+    for (role, attr_key), classes in reader.attribute_classes(plain).items():
         entry = found.setdefault((role, "attr", attr_key), {"order": len(clauses), "sentence": -1,
                                                             "clause": -1, "targets": [], "values": []})
         entry["values"] += [v for v in classes if v not in entry["values"]]
@@ -3383,7 +3388,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             if dep is not None and dep is not factor:
                 factor.context.append((dep.id, _allowed(dep, negated, value)))
         factor.context = _consistent(factor.context)
-    _answered(factors, clauses, line_of, any_at(unquote(str(brief["description"]))).split("\n"))
+    _answered(factors, clauses, line_of, described.split("\n"))
     factors += _alternatives_put_back(factors, clauses)
     factors.sort(key=lambda f: (f.order, _RANK[f.kind], f.id))
     groups, group_roles = _group(factors, _moves_into(factors, clauses) + _answers(factors, clauses))
@@ -3424,11 +3429,11 @@ def _lines(text: str) -> list[tuple[int, int]]:
 
 
 def _opening_indent(texts: list[str], line: int, answer: str) -> int:
-    """The indentation of a text's line that opens with the answer label `answer` ("         NO ->
-    ..."), or -1 when the line is not indented or opens with something else."""
-    text = texts[line] if 0 <= line < len(texts) else ""
-    body = text.lstrip(" \t")
-    return len(text) - len(body) if body.lower().startswith(answer) and len(body) < len(text) else -1
+    """The indentation (`_indent_of`) of a text's line that opens with the answer label `answer`
+    ("         NO -> ..."), or -1 when the line is not indented or opens with something else."""
+    if not 0 <= line < len(texts) or not texts[line].lstrip(" \t").lower().startswith(answer):
+        return -1
+    return _indent_of(texts, line) or -1
 
 
 def _answered(factors: list[Factor], clauses: list[Clause], line_of: Mapping[int, tuple[int, int]],
