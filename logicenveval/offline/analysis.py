@@ -2356,12 +2356,26 @@ _TAKING = frozenset({"take", "bring", "carry"})
 
 def _elaborates(clauses: list[Clause], sentence: int, text: str) -> bool:
     """The piece has no verb of its own (no finite or modal verb, no action) and follows, in the
-    same sentence, a clause whose verb moves things (`MOTION`): it lists what goes where."""
-    if not clauses or clauses[-1].sentence != sentence or clauses[-1].role not in ("statement", "consequence"):
+    same sentence, a clause whose verb moves things (`MOTION`): it lists what goes where. Items
+    before it that are such a list's items themselves (their places all goals: "put each thing in
+    its place: the book on the shelf; the alarm clock on the nightstand; the phone on the desk")
+    carry the list on to it."""
+    last = len(clauses) - 1
+    while last > 0 and clauses[last].sentence == sentence and clauses[last].role == "statement" and any(
+            f.goal and f.kind == "location" for f in clauses[last].facts) and all(
+            f.goal for f in clauses[last].facts if f.kind == "location") and _verbless(clauses[last].text):
+        last -= 1
+    if last < 0 or clauses[last].sentence != sentence or clauses[last].role not in ("statement", "consequence"):
         return False
+    before = {w for w, _, _ in tokens(expand(clauses[last].text))}
+    return bool(before & (MOTION | _TAKING)) and _verbless(text)
+
+
+def _verbless(text: str) -> bool:
+    """Whether a piece has no verb of its own (`_elaborates`): no finite or modal verb, action,
+    verb of moving or description, no hedge."""
     words = {w for w, _, _ in tokens(expand(text))}
-    before = {w for w, _, _ in tokens(expand(clauses[-1].text))}
-    return bool(before & (MOTION | _TAKING)) and not words & (CLAUSE_WORDS | ACTIONS | MOTION | DESCRIPTIVE | UNCERTAIN)
+    return not words & (CLAUSE_WORDS | ACTIONS | MOTION | DESCRIPTIVE | UNCERTAIN)
 
 
 def _place_heading(reader: _Reader, text: str) -> bool:
