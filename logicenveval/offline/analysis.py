@@ -942,10 +942,14 @@ class _Reader:
                                                    for x in words[: m.start])]
             elif (w == "it" and words[i + 1 : i + 3] in (["is", "a"], ["is", "an"])
                   or w in ("it", "they") and i > 0 and words[i - 1] in ("is", "are", "was", "were")
-                  and i - 1 in self.commas) and len(before) > 1:
+                  and i - 1 in self.commas
+                  or w in ("it", "they") and i > 0 and words[i - 1] in CONJOINED_SUBJECT
+                  and words[i + 1 : i + 2] in ([b] for b in COPULAS)) and len(before) > 1:
                 # "a document on the desk and it is a bill": the pronoun of a predicate noun is the
                 # clause's subject, not a place named after a preposition; so is the pronoun of a
                 # question asked of a thing put first ("the wine bottle on the table, is it empty?")
+                # and the subject of a second conjunct ("if a plate is on the counter and it is
+                # dirty", "there are towels on the rail but they are still wet")
                 subj = [m for m in before if m.start == 0 or words[m.start - 1] not in PREP_ON | PREP_IN]
                 before = subj[:1] or before
             elif i > 0 and words[i - 1] in ACTIONS and any(_placed(words, m) for m in before):
@@ -2352,12 +2356,26 @@ _TAKING = frozenset({"take", "bring", "carry"})
 
 def _elaborates(clauses: list[Clause], sentence: int, text: str) -> bool:
     """The piece has no verb of its own (no finite or modal verb, no action) and follows, in the
-    same sentence, a clause whose verb moves things (`MOTION`): it lists what goes where."""
-    if not clauses or clauses[-1].sentence != sentence or clauses[-1].role not in ("statement", "consequence"):
+    same sentence, a clause whose verb moves things (`MOTION`): it lists what goes where. Items
+    before it that are such a list's items themselves (their places all goals: "put each thing in
+    its place: the book on the shelf; the alarm clock on the nightstand; the phone on the desk")
+    carry the list on to it."""
+    last = len(clauses) - 1
+    while last > 0 and clauses[last].sentence == sentence and clauses[last].role == "statement" and any(
+            f.goal and f.kind == "location" for f in clauses[last].facts) and all(
+            f.goal for f in clauses[last].facts if f.kind == "location") and _verbless(clauses[last].text):
+        last -= 1
+    if last < 0 or clauses[last].sentence != sentence or clauses[last].role not in ("statement", "consequence"):
         return False
+    before = {w for w, _, _ in tokens(expand(clauses[last].text))}
+    return bool(before & (MOTION | _TAKING)) and _verbless(text)
+
+
+def _verbless(text: str) -> bool:
+    """Whether a piece has no verb of its own (`_elaborates`): no finite or modal verb, action,
+    verb of moving or description, no hedge."""
     words = {w for w, _, _ in tokens(expand(text))}
-    before = {w for w, _, _ in tokens(expand(clauses[-1].text))}
-    return bool(before & (MOTION | _TAKING)) and not words & (CLAUSE_WORDS | ACTIONS | MOTION | DESCRIPTIVE | UNCERTAIN)
+    return not words & (CLAUSE_WORDS | ACTIONS | MOTION | DESCRIPTIVE | UNCERTAIN)
 
 
 def _place_heading(reader: _Reader, text: str) -> bool:
@@ -2489,6 +2507,50 @@ def _elided(reader: _Reader, condition: str, names: tuple[str, ...], instruction
     negated = "not" in words
     # (a state the thing cannot take means the nearest thing that can, as a stated one does: `_fit`)
     return [reader._fit(Fact(r, f"state({r}, {flag})", "state", flag, negated=negated != (not pol))) for r in things]
+
+
+#: the conjunctions after which a pronoun opening a conjunct with its verb "be" is the subject of
+#: the conjunct before ("a plate on the counter and it is dirty"), not a place named in it
+CONJOINED_SUBJECT = frozenset({"and", "but"})
+#: the forms of "be" (and "seem", "look") that make that conjunct say a state of the pronoun
+COPULAS = frozenset({"is", "are", "was", "were", "seems", "seem", "looks", "look", "feels", "feel"})
+
+#: the determiners that open a heading about a thing that may not be there at all ("A bottle left
+#: on the coffee table: if it's empty, ...", "Any book on the bed - if it's a novel, ...")
+MAYBE_THERE = frozenset({"a", "an", "any", "some"})
+
+
+def _indefinite_heading(text: str) -> bool:
+    """Whether a heading names its thing with an indefinite determiner ("A mug on the desk:",
+    "Any towel on the floor -"): the writer does not know the thing is there, so where it lies
+    is asked as well as the condition after the heading; a bare or definite heading ("Towel on
+    the shelves: if it's dirty", "The lamp on the desk: if it's on") only says what is spoken
+    of and where it is."""
+    words = [w for w, _, _ in tokens(expand(text))]
+    return bool(words) and words[0] in MAYBE_THERE
+
+
+#: the words that make a sentence without an instruction a supposition a "Then" sentence answers:
+#: a thing absent or a state denied ("no spare bag anywhere", "the lamp is not on") or a state
+#: the instruction would set being so already ("the kettle is already on")
+SUPPOSED = frozenset({"no", "not", "none", "nothing", "never", "already", "still"})
+
+
+def _premise_of_then(reader: _Reader, text: str, cut: list[list[Piece]], si: int) -> bool:
+    """Whether a sentence that only says how things are, with no instruction of its own, is the
+    premise of the next sentence opening with "Then" and an instruction ("Exception: no spare bag
+    anywhere in the house. Then just take the full bag out.", "The kettle is already on. Then
+    leave it."): said as a supposition, the way "Suppose ..." or a question would say it, when it
+    says what is not so or is so already (`SUPPOSED`). A sentence that instructs ("Put the book
+    away. Then shut the drawer.") is a step before the next, and a plain description ("The kettle
+    is on the counter. Then fill it.") the scene the next step starts from, not a premise."""
+    if si + 1 >= len(cut) or not cut[si + 1] or not _THEN_OPENS.match(cut[si + 1][0].text):
+        return False
+    words = [w for w, _, _ in tokens(expand(text))]
+    then = [w for w, _, _ in tokens(expand(_THEN_OPENS.sub("", cut[si + 1][0].text)))]
+    then = then[1:] if then[:1] == ["just"] else then
+    return bool(set(words) & SUPPOSED) and not imperative(words) and not _instructs(reader, text) \
+        and imperative(then)
 
 
 def _role_after(cut: list[list[Piece]], si: int, pi: int) -> str:
@@ -2990,7 +3052,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 if spread[0] == grammatical:
                     facts = list(_distributed(tuple(facts), spread[1]))
                 role = "condition" if any(not f.goal and not f.derived for f in facts) else "statement"
-                if role == "condition" and names and _role_after(cut, si, pi) == "condition":
+                if role == "condition" and names and _role_after(cut, si, pi) == "condition" \
+                        and not _indefinite_heading(text):
                     # "towel on the shelves: if it's dirty -> ...": the condition comes after the
                     # heading, which only says what is spoken of and where it is (a question
                     # would end with "?": "dumbbell on the floor? put it ...")
@@ -3006,6 +3069,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 continue
             if role in ("statement", "scene") and headed == grammatical:
                 role = "consequence"
+            if role == "statement" and len(pieces) == 1 and _premise_of_then(reader, text, cut, si):
+                role = "condition"  # "No spare bag anywhere. Then skip the re-stock."
             # "should there be an umbrella: ..." - the cue itself says the object may be absent
             # "if we still have one (it lives in the vanity - ...)": a closing aside says where the
             # object is kept (offline.placement), it asks nothing
@@ -3557,8 +3622,11 @@ def _consistent(context: list[tuple[str, frozenset[str]]]) -> list[tuple[str, fr
 
 
 #: words by which a later instruction speaks of whichever of two alternatives was used ("put
-#: whichever you used back on the counter", "whatever was used goes back in the drawer")
-_EITHER_USED = re.compile(r"\b(?:whichever|whatever|either one|either of them)\b.*\bback\b")
+#: whichever you used back on the counter", "whatever was used goes back in the drawer",
+#: "whichever you used must be returned to the counter", "return whichever you used to the shelf")
+_EITHER = r"\b(?:whichever|whatever|either one|either of them)\b"
+_RETURNED = r"\b(?:back|return|returns|returned|replace|replaced)\b"
+_EITHER_USED = re.compile(rf"{_EITHER}.*{_RETURNED}|{_RETURNED}.*{_EITHER}")
 
 
 #: the sentences after a condition within which its absence may be asked and answered ("With the

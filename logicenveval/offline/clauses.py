@@ -852,6 +852,11 @@ def clause_spans(words: list[str], lo: int, hi: int, *, verbs: frozenset[str],
         follows_goal = (a > 0 and words[a - 1] in ("-", ":") and not set(body) & verbs and bool(out)
                         and (out[-1].mood == "instruction" or _says_goal(words[out[-1].start:out[-1].end],
                                                                            goal_words)))
+        # "... in its place: the book on the shelf; the alarm clock on the nightstand (if it rings,
+        # silence it first); the phone on the desk": a list of such goals goes on after a semicolon,
+        # past an item's own condition and instruction
+        follows_goal = follows_goal or (a > 0 and words[a - 1] == ";" and not set(body) & verbs
+                                        and any(o.goal for o in out))
         first = next((w for w in body if w not in LEAD_INS), "")
         if first in SUBORDINATORS or body[:2] == ["in", "case"] or question:
             mood = "condition"

@@ -26,6 +26,7 @@ STATE_WORDS: dict[str, tuple[str, bool]] = {
     "cooked": ("cooked", True), "raw": ("cooked", False), "sliced": ("sliced", True),
     "out": ("toggled_on", False), "extinguished": ("toggled_on", False),
     "ringing": ("toggled_on", True), "beeping": ("toggled_on", True), "playing": ("toggled_on", True),
+    "buzzing": ("toggled_on", True),
     "silent": ("toggled_on", False), "stopped": ("toggled_on", False), "idle": ("toggled_on", False),
     "broken": ("broken", True), "cracked": ("broken", True), "blown": ("broken", True),
     "busted": ("broken", True), "faulty": ("broken", True), "shattered": ("broken", True),
@@ -702,6 +703,22 @@ def predicate_state(clause: str) -> str:
     return _PREDICATE_STATE.sub(lambda m: m.group(1) + _predicate(m.group(2)), clause)
 
 
+#: a device's sound said as the finite verb of a condition ("if the alarm clock rings, silence it",
+#: "when the timer beeps", "if it ring" in verse or a learner's English): the device is going, as
+#: "is ringing" says (`STATE_WORDS`); only right after a condition's cue and a short subject, so
+#: "the phone that rings" or "ring the bell" asks nothing
+SOUNDS = {"ring": "ringing", "rings": "ringing", "beep": "beeping", "beeps": "beeping",
+          "buzz": "buzzing", "buzzes": "buzzing", "bleep": "beeping", "bleeps": "beeping"}
+_SOUNDING = re.compile(r"\b(if|when|whenever|unless|once|in\s+case)\s+((?:it|they|(?:the|my|your|our|his|her|this|that)"
+                       rf"(?:\s+[a-z]+){{1,3}}?))\s+({'|'.join(SOUNDS)})\b(?!\s+(?:the|a|an|my|your|it|them)\b)", re.I)
+
+
+def _sounding(m: re.Match[str]) -> str:
+    """"if the alarm rings" as "if the alarm is ringing" (`_SOUNDING`)."""
+    be = "are" if m.group(2).lower() == "they" else "is"
+    return f"{m.group(1)} {m.group(2)} {be} {SOUNDS[m.group(3).lower()]}"
+
+
 #: "In the case the heater is on", "in the event that the tap is running": a condition opened by
 #: a noun of occasion ("in the case (that)", "in the event (that)"; Merriam-Webster, "in the event
 #: that": "if it happens that"), read as "if"; only where a clause starts (its sentence's or item's
@@ -782,10 +799,27 @@ RUN_ON_WORDS = frozenset({"and", "or", "but", "nor", "the", "a", "an", "of", "wi
 _RUN_ON_LINE = re.compile(r"(?im)\b(" + "|".join(sorted(RUN_ON_WORDS)) + r")[ \t]*\n[ \t]*(?=[a-z])")
 
 
+#: the marks a line of verse or of wrapped prose ends its line with when the line ends its clause
+_LINE_END_MARKS = tuple(".,;:!?)-\u2013\u2014")
+#: a line with no mark at its end, then a line that opens in lower case (`_punctuated_lines`)
+_UNMARKED_BREAK = re.compile(r"(?m)(?<=[a-z])[ \t]*\n[ \t]*(?=[a-z])")
+
+
+def _punctuated_lines(text: str) -> bool:
+    """Whether the text marks the end of its lines' clauses: of its lines of three words or more,
+    at least two in three end on a mark (`_LINE_END_MARKS`), as verse and wrapped prose do; a
+    chat's or a list's lines, most of them unmarked, each end a message or an item."""
+    lines = [line.strip() for line in text.splitlines() if len(line.split()) >= 3]
+    return len(lines) >= 4 and 3 * sum(line.endswith(_LINE_END_MARKS) for line in lines) >= 2 * len(lines)
+
+
 def _runs_on(text: str) -> str:
     """The text with a line that runs on into the next (`_RUN_ON_LINE`) joined to it: a line break
-    there ends no sentence."""
-    return _RUN_ON_LINE.sub(r"\1 ", text)
+    there ends no sentence; in a text that marks its lines' ends (`_punctuated_lines`: "My bedroom
+    has a bed, where there may lie / a book, an alarm clock, or else a phone;") an unmarked line
+    before one in lower case runs on too."""
+    joined = _RUN_ON_LINE.sub(r"\1 ", text)
+    return _UNMARKED_BREAK.sub(" ", joined) if _punctuated_lines(joined) else joined
 
 
 def _spoken_mark(m: re.Match[str]) -> str:
@@ -1151,7 +1185,7 @@ def unquote(text: str) -> str:
         r"\g<q>?\g<gap>", _FORUM_QUOTE.sub(_forum_quote, _ATTRIBUTION.sub("", plain)))))))
     plain = _unabbreviated(plain)
     plain = _ELIDED_PREDICATE.sub(r"\1 it is ", plain)
-    plain = _PREDICATE_STATE.sub(lambda m: m.group(1) + _predicate(m.group(2)), plain)
+    plain = _PREDICATE_STATE.sub(lambda m: m.group(1) + _predicate(m.group(2)), _SOUNDING.sub(_sounding, plain))
     plain = _QUESTION_PREDICATE.sub(lambda m: m.group(1) + _predicate(m.group(2)), plain)
     plain = _BARE_PARTICIPLE.sub(_participle_state, plain)
     plain = _EMPHATIC_DO.sub("", plain)
