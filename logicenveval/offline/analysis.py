@@ -990,6 +990,12 @@ class _Reader:
                 self.topic = self.group
                 found.append(Mention(self.group, i, i + 1, "pronoun"))
             elif w in ("they", "them") and self.topic_kind == "role" and not self.plural & set(self.topic) \
+                    and not any(r in self.plural for r in self.recent) and _in_time_clause(words, i):
+                # "If it's still on when the last of them's gone", "once they have left": a plural
+                # pronoun in a time clause, with nothing plural named, is the people the time is
+                # told by, not the singular thing spoken of (whose absence "gone" would ask)
+                pass
+            elif w in ("they", "them") and self.topic_kind == "role" and not self.plural & set(self.topic) \
                     and not self.coordinated and any(r in self.plural for r in self.recent) \
                     and not (self.parts_last or any(words[k] in PARTS and k in self.plural_at for k in range(i))):
                 # "The mark is cleaned - with the wet wipes if they are on the table": a plural
@@ -1149,10 +1155,11 @@ class _Reader:
                 break
             # "there may or may not be a loaf", "if we still have one", "if one is still to be had"
             before = words[max(0, m.start - 8) : m.start]
-            if m.kind == "pronoun" and before[-1:] and before[-1] in PREP_IN and _existential(before):
-                # "If there was water in it already, leave it": the thing is the container, and a
-                # filling in it says it is filled (`FILLINGS`), not that it is there at all
-                if set(before) & FILLINGS:
+            if _existential_place(before, m.kind == "pronoun"):
+                # "If there was water in it already, leave it", "Is there a film on it?": the thing
+                # is the place of what may be there, and a filling in it says it is filled
+                # (`FILLINGS`), not that it is there at all
+                if before[-1] in PREP_IN and set(before) & FILLINGS:
                     facts += [Fact(r, f"state({r}, filled)", "state", "filled",
                                    negated=negated != ("no" in before)) for r in m.roles]
                 break
@@ -2309,9 +2316,41 @@ def _available(reader: _Reader, text: str) -> list[Fact]:
     return []
 
 
+#: the words that open a clause telling a time ("when they have gone", "once they've left")
+_TIME_OPENERS = frozenset({"when", "once", "after", "until", "till", "before", "whenever"})
+
+
+def _in_time_clause(words: list[str], i: int) -> bool:
+    """Whether the pronoun at word `i` is the subject of a time clause: a time word
+    (`_TIME_OPENERS`) right before it, or before "the last/rest/first of" it ("when the last of
+    them's gone")."""
+    k = i - 1
+    if k >= 2 and words[k] == "of" and words[k - 1] in ("last", "rest", "first", "all") and words[k - 2] == "the":
+        k -= 3
+    elif k >= 1 and words[k] == "of" and words[k - 1] == "all":
+        k -= 2
+    return k >= 0 and words[k] in _TIME_OPENERS
+
+
 #: a subject before a form of "be": "there" right after them is a place ("it's there", "they are
 #: still there"), not the existential "there" ("there is a towel", "is there a towel")
 _THERE_SUBJECTS_BE = frozenset({"it", "they", "he", "she", "this", "that"})
+
+
+#: what stands between a place preposition and a thing named after it ("on the towel", "in my mug")
+_PLACE_DETERMINERS = ARTICLES | frozenset({"my", "your", "his", "her", "its", "our", "their", "this", "that"})
+
+
+def _existential_place(before: list[str], pronoun: bool) -> bool:
+    """Whether the thing named after `before` is the place of an existential ("is there a film
+    on it?", "if there is a stain on the towel", "should there be water in it"): a place
+    preposition right before it (a determiner between for a noun), and before that an
+    existential "there". What may or may not be there is the existential's own thing (no role:
+    a role said there is read first); the thing named is where."""
+    k = len(before) - 1
+    while not pronoun and k >= 0 and before[k] in _PLACE_DETERMINERS:
+        k -= 1
+    return k >= 1 and before[k] in PREP_IN | PREP_ON and _existential(before[:k])
 
 
 def _existential(before: list[str]) -> bool:

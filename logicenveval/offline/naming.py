@@ -88,6 +88,16 @@ _NOUN_LEADS = frozenset({"with", "and", "or", "plus"})
 #: prepositions: an item holding one is a clause, not a noun phrase ("are in the kitchen")
 _PREPOSITIONS = frozenset({"on", "onto", "in", "into", "inside", "from", "by", "near", "under", "of",
                            "to", "at", "beside", "behind", "with"})
+#: the words of a phrase that says where a thing is, by what it is near ("by the door", "next to
+#: the sink", "in front of the fire"): a definite head so placed tells which thing it is
+_LOCATING = frozenset({"by", "near", "beside", "behind", "under", "underneath", "beneath", "above", "below",
+                       "opposite", "next", "in", "nearest", "closest", "close"})
+#: the words that go on such a phrase's first word ("next to", "in front of", "close to")
+_LOCATING_LINKS = frozenset({"to", "front", "of"})
+#: prepositions of company: "with the spares" after a place says whom a thing joins there
+_COMPANY = frozenset({"with", "beside", "among", "amongst", "alongside"})
+#: prepositions that put a thing in or on a place ("goes on the shelf", "put it in the drawer")
+_PUT_PLACES = frozenset({"on", "onto", "in", "into", "inside"})
 #: prepositions of place a dictionary also lists as nouns ("above", "below"): after a part word
 #: ("the gable end above the river") they end its noun phrase (`_Text.part_of_other`)
 _PLACE_ADVERBS = frozenset({"above", "below", "beneath", "across", "along", "beyond", "opposite", "past"})
@@ -789,7 +799,7 @@ class _Reader:
             having = [c for c in options if self.has_part(c, part)]
             options = [c for c in having if not self.marked(c, word)] or having or options
         named = [c for c in reversed(self.recent) if c in options and word in self.used.get(c, ())]
-        if named:
+        if named and not self.placed_apart(i, named[0]):
             return named[0]
         fed = self.animal_kind(i, options)
         if fed is not None:
@@ -798,7 +808,7 @@ class _Reader:
         # armchair ... the chair"): the same thing, said short
         tail = [c for c in reversed(self.recent) if word in self.heads
                 and any(len(h) > len(word) + 2 and h.endswith(word) for h in self.used.get(c, ()))]
-        if tail and self.leads_noun(i):
+        if tail and self.leads_noun(i) and not self.placed_apart(i, tail[0]):
             return tail[0]
         if self.machine_again(i):
             return None  # "Air conditioner. The unit is not to run overnight": the air conditioner
@@ -882,6 +892,41 @@ class _Reader:
                     words_of(category)[-1] == word)
 
         return max(candidates, key=score)
+
+    def placed_apart(self, i: int, named: str) -> bool:
+        """Whether the head alone at word `i`, which would take up the compound `named` said
+        before ("the step stool ... the stool"), is a thing of its own: the word is a kind's own
+        name, and its phrase places it by a landmark (`_LOCATING`: "the stool by the door", "the
+        basket under the sink") that the compound's sentence, up to this word, does not say ("the
+        step stool next to the sink"). A definite noun restricted by another place than the one
+        its compound was said at tells a second thing apart, as English does for things of one
+        kind. The phrase must be a place itself or a subject (after a preposition or opening its
+        sentence: "on the stool by the door", "The stool by the door is ..."): after a verb ("put
+        the stool by the door") the place is where it goes, not which one it is."""
+        words, gaps = self.text.words, self.text.gaps
+        word = words[i]
+        if word not in self.catalog.categories or word == named or i < 1 or words[i - 1] != "the":
+            return False
+        start = self.text.sentence_start(i)
+        if i - 1 != start and (i < 2 or words[i - 2] not in _PREPOSITIONS | _PLACE_ADVERBS or gaps[i - 1] != " "):
+            return False
+        k = i + 1
+        if k < len(words) and gaps[k] == " " and words[k] in _LOCATING:
+            k += 1
+            while k < len(words) and gaps[k] == " " and words[k] in _LOCATING_LINKS:
+                k += 1
+        if k == i + 1 or k >= len(words) or gaps[k] != " ":
+            return False
+        while k < len(words) and gaps[k] == " " and (words[k] in _ARTICLES or words[k] in _POSSESSIVES):
+            k += 1
+        if k >= len(words):
+            return False
+        at = self.first_at.get(named)
+        if at is None:
+            return False
+        first = self.text.sentence_start(at)
+        said = set(words[first:min(self.text.sentence_end(at), i)])
+        return words[k] not in said
 
     def floor_stood(self, i: int) -> bool:
         """Whether the noun at word `i` is stood on the floor by its own phrase: "on the floor"
@@ -1125,7 +1170,13 @@ class _Reader:
         if at < self.text.sentence_start(i) or i - at > 4 or len(self.used.get(before, ())) != 1:
             return None
         head, fuller = words_of(before), words_of(category)
-        return before if len(fuller) > len(head) and fuller[-len(head):] == head else None
+        if len(fuller) > len(head) and fuller[-len(head):] == head:
+            return before
+        # "the small table (the side table)", "the lamp (the floor lamp)": the thing was called by
+        # its head alone, which the first reading took for one of the head's kinds (a guess the
+        # bracket corrects), and the bracket's kind has that head too
+        (said,) = self.used[before]
+        return before if self.text.words[at] == said and len(fuller) > 1 and fuller[-1] == said else None
 
     def renamed_fuller(self, i: int, n: int, category: str) -> str | None:
         """The kind of the thing named last, when the noun phrase at words [i, i + n) names it
@@ -1288,20 +1339,24 @@ class _Reader:
 
     def appositive(self, i: int, n: int, category: str) -> bool:
         """Whether the noun phrase at words [i, i + n) renames the thing named right before it, set
-        off by commas ("Papa ka kurta, the white shirt, ...", "My jumper, the blue jumper, is on the
-        chair"): a definite phrase of the same kind, after a comma that follows that thing's
-        name, closed by a comma or the sentence's end; one object, told by the fuller name."""
+        off by commas or brackets ("Papa ka kurta, the white shirt, ...", "My jumper, the blue
+        jumper, is on the chair", "ITEM: cloth (the blue rag)"): a definite phrase of the same
+        kind, after a comma or an opening bracket that follows that thing's name, closed by a
+        comma, the bracket or the sentence's end; one object, told by the fuller name."""
         words, gaps = self.text.words, self.text.gaps
         start = self.color_before(i + n - 1)
         the = (start if start is not None else i) - 1
-        if the < 1 or words[the] != "the" or "," not in gaps[the] or not self.recent or self.recent[-1] != category:
+        if the < 1 or words[the] != "the" or not ("," in gaps[the] or "(" in gaps[the]) or not self.recent \
+                or self.recent[-1] != category:
             return False
         kind = self.kinds.get(category)
         if kind is None or kind.instances or words[the - 1] not in self.used.get(category, set()):
             return False
         end = i + n
-        if end == len(words) or _SENTENCE_END.search(gaps[end]):
+        if end == len(words) or _SENTENCE_END.search(gaps[end]) or "(" in gaps[the] and ")" in gaps[end]:
             return True
+        if "(" in gaps[the]:
+            return False  # "The mugs (the red mug and the blue mug)": a list in the bracket
         nxt = end
         while nxt < len(words) and (words[nxt] in _DETERMINERS or words[nxt] in COLOR_WORDS):
             nxt += 1
@@ -1775,6 +1830,18 @@ class _Reader:
                 return True
         return False
 
+    def company_at_place(self, i: int) -> bool:
+        """Whether a plural "the spares" at word `i` is the company a thing is put with: after a
+        preposition of company (`_COMPANY`: "with", "beside", "among") in a sentence that puts
+        something in or on a place before it ("it goes on the shelf, bin 3, with the spares", "put
+        it in the drawer with the spares"). Those spares are where the thing joins others of its
+        kind, as "with the others" is; no second object the task needs. A spare used ("replace
+        the batteries with the spares": no place) or fetched ("fetch a spare") is still one."""
+        words, raw = self.text.words, self.text.raw
+        if raw[i] == "spare" or i < 3 or words[i - 1] != "the" or words[i - 2] not in _COMPANY:
+            return False
+        return any(w in _PUT_PLACES for w in words[self.text.sentence_start(i):i - 2])
+
     def heading_spare(self, i: int) -> bool:
         """Whether word `i` ("spare"), definite or owned ("my spare one", "the spare"), is the thing
         the heading right before its sentence names: an item's heading ("- Torch.", "Phone
@@ -1910,7 +1977,7 @@ class _Reader:
             if words[i] in SPARE_WORDS and prev in _DETERMINERS and (
                     i + 1 == len(words) or words[i + 1] not in self.heads and self.match(i + 1)[1] is None):
                 # "a spare" as a noun: "fetch a spare from the dresser", "we store the spares"
-                spare = None if self.spare_of_unnamed(i) else next(
+                spare = None if self.spare_of_unnamed(i) or self.company_at_place(i) else next(
                     (c for c in reversed(self.recent) if self.catalog.categories[c].pickable), None)
                 if spare is not None:
                     kind = self.kinds.setdefault(spare, _Kind())
