@@ -8,7 +8,7 @@ development set."""
 from __future__ import annotations
 
 import pytest
-from reading import CATALOG, brief
+from reading import CATALOG, brief, placed
 
 from logicenveval.offline.analysis import analyse
 
@@ -182,3 +182,42 @@ def test_a_condition_on_another_thing_after_a_carried_instruction_stays_independ
     assert any(inner in v for v in asked.values()) and any(outer in v for v in asked.values()), asked
     assert not _nested(text, rooms, inner, outer), asked
 
+
+# -- a yes/no question asking whether a thing is in a room ------------------------------------------
+#
+# "Is there a towel in the bathroom? If so, ..." asks the room presence the branch turns on; the
+# placement reader took the room as the thing's stated place (a noun phrase's own room, whatever
+# the mood), which settled the factor away. A question that goes on to ask something else ("Is the
+# lamp in the bedroom on?") still names which thing is meant by its room.
+
+ROOMS = ("living_room", "kitchen", "study", "bedroom", "bathroom")
+
+ROOM_ASKED: list[tuple[str, str]] = [
+    # a house-sitter's note: "is there", "if so"
+    ("Is there a towel in the bathroom? If so, hang it on the rack.", "in_room(towel, bathroom)"),
+    # a parent's text: a definite thing, both answers
+    ("Is the laptop in the study? If it is, bring it to the sofa; if not, bring the book.",
+     "in_room(laptop, study)"),
+    # a chat message: a greeting first, "still", the condition after its instruction
+    ("Hi! Is the laptop still in the study? bring it to the sofa if it is.", "in_room(laptop, study)"),
+    # a checklist: a plural, "any"
+    ("Are there any apples in the kitchen? If yes, put one on the plate.", "in_room(apple, kitchen)"),
+]
+
+
+@pytest.mark.parametrize(("text", "condition"), ROOM_ASKED)
+def test_a_question_whether_a_thing_is_in_a_room_asks_it(text: str, condition: str) -> None:
+    assert any(condition in v for v in _asked(text, ROOMS).values()), _asked(text, ROOMS)
+    assert condition not in placed(text, ROOMS)
+
+
+@pytest.mark.parametrize(("text", "condition"), [
+    # the room says which lamp the question asks about
+    ("Is the lamp in the bedroom on? If so, switch it off.", "in_room(table_lamp, bedroom)"),
+    # a statement, then a question of the thing's state
+    ("The towel is in the bathroom. Is it wet? If so, hang it on the rack.", "in_room(towel, bathroom)"),
+    # a question of a state after the room, in small letters
+    ("is the towel in the bathroom still wet? if so hang it on the rack", "in_room(towel, bathroom)"),
+])
+def test_a_room_that_names_which_thing_is_meant_stays_stated(text: str, condition: str) -> None:
+    assert condition in placed(text, ROOMS)
