@@ -3463,7 +3463,10 @@ def _frame(clauses: list[Clause], sentence: int, colon_closed: set[int], colon_e
     if not all(clauses[ci].role == "condition" for ci in own) or not _takes_up_frame(clauses, first, after):
         return set()
     if _asks(clauses[first]):
-        return {sentence + 1} if clauses[after[0]].role != "condition" else set()
+        # (a question put to the reader asks for a deed, not whether the scene is so: "The kids
+        # dropped their coat and bag in the hallway - could you sort them out?")
+        addressed = set(re.findall(r"[a-z]+", clauses[first].text.lower())) & AGENTS
+        return {sentence + 1} if clauses[after[0]].role != "condition" and not addressed else set()
     return _framed(clauses, sentence, line_of, by_paragraph=False)
 
 
