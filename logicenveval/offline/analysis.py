@@ -3456,7 +3456,9 @@ def _frame(clauses: list[Clause], sentence: int, colon_closed: set[int], colon_e
     first = _framing(clauses, sentence)
     own = own[own.index(first):] if first in own else []
     after = [ci for ci, c in enumerate(clauses) if c.sentence == sentence + 1]
-    if not own or not after or clauses[first].role != "condition":
+    if not own or not after or clauses[first].role != "condition" or _label(clauses[after[0]]) is not None:
+        # (a sentence opening with an answer's label, "Is the mug on the desk?\nNo: then ...",
+        # is answered by that label, `_answered`)
         return set()
     if first in colon_closed:
         return _framed(clauses, sentence, line_of, by_paragraph=first in colon_ends_line)
