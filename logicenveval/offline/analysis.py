@@ -3058,6 +3058,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     named = -1  # the sentence whose heading named an object ("Keys - on the floor: ...")
     place: tuple[int, str] = (-1, "")  # a place heading ("On the floor: ...") and its sentence
     pointing: set[int] = set()  # clauses that point back ("if it isn't"): never an antecedent
+    colon_closed: set[int] = set()  # conditions closed by a colon ("If X: ..."): `_frame`
+    colon_ends_line: set[int] = set()  # ... where the colon ends its line ("If X:" over a list)
     #: (sentence, members) of a distributive phrase: its sentence's facts hold for each member
     spread: tuple[int, tuple[str, ...]] = (-1, ())
     cut = [split_clauses(sent) for sent in sentences]
@@ -3243,6 +3245,10 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             if facts is not before_relative:
                 # (which no statement settles: `_settle_stated`)
                 reader.doubted |= _placed_where(facts)
+            if role == "condition" and re.search(re.escape(text.strip().rstrip(":")) + r"\s*:", sent):
+                colon_closed.add(len(clauses))
+                if re.search(re.escape(text.strip().rstrip(":")) + r"\s*:[ \t]*\n", described):
+                    colon_ends_line.add(len(clauses))
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
         if bullets[si] is not None and si + 1 < len(sentences) and bullets[si + 1] == bullets[si]:
             continue  # "* Bedroom: table lamp on? -> off. Wardrobe doors open? -> close.": one item
@@ -3277,11 +3283,34 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     #: the sentence opens with "Then" after a sentence that was only a condition ("Suppose the
     #: lamp is on. Then switch it off."): its instructions are that condition's consequences
     answers_premise = False
+    #: the conditions a framing sentence sets over the sentences after it (`_frame`), and the
+    #: sentences it covers
+    frame: list[tuple[tuple[str, str, str], bool, str]] = []
+    framed: set[int] = set()
     roles_of: dict[int, set[str]] = {}
     for cl in clauses:
         roles_of.setdefault(cl.sentence, set()).add(cl.role)
     for ci, cl in enumerate(clauses):
         if cl.sentence != current_sentence:
+            frame_answered = False
+            if cl.sentence == current_sentence + 1 and (
+                    scope := _frame(clauses, current_sentence, colon_closed, colon_ends_line, line_of)):
+                # "Only if there are eggs in the fridge. Open the fridge, get the pan onto the stove
+                # unless it is there already", "If it is on the vanity: put it away. The cabinet may
+                # be open or shut; ...", "Bread on the counter? Onto the plate with it, and see that
+                # the toaster is on - it may be on already": the conditions of a sentence that frames
+                # the ones after it hold over those (`_frame`)
+                # (the frame is the framing condition's own: "If there is:\n- put it in the cabinet if
+                # it's clean" frames the list by the plate's being there, not by its first item's)
+                asked_first = {(f.subject, f.kind, f.key if f.kind in ("state", "attr") else "")
+                               for f in clauses[_framing(clauses, current_sentence)].facts}
+                frame, framed = [c for c in context if c[0] in asked_first], scope
+                # (a sentence of conditions only is answered by the first sentence it frames, as
+                # by one opening with "Then" below; a colon frame has its own instruction)
+                frame_answered = not roles_of.get(current_sentence, set()) & {"consequence", "else"} and not any(
+                    c in colon_closed for c, x in enumerate(clauses) if x.sentence == current_sentence)
+            elif cl.sentence not in framed:
+                frame, framed = [], set()
             # "EGGS are conditional: only if there are eggs in the fridge. Then the sequence is:
             # ... put the frying pan on the stove, unless it is already there": a sentence of a
             # condition with no consequence of its own, answered by a sentence opening with
@@ -3296,9 +3325,15 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             # sentence whose purpose takes up the instruction before is that instruction, `_takes_up`)
             carried = (context or carried) if cl.role in ("statement", "consequence") and not any(
                 not f.goal and not f.derived and not f.home for f in cl.facts) or _takes_up(
-                    cl, clauses, current_sentence) else []
-            current_sentence, context, with_tool = cl.sentence, (context if premise else []), set()
-            answers_premise = premise
+                    cl, clauses, current_sentence) or (
+                # "Wipe it if it's dirty. Use the sponge, then leave it on the counter. If there is no
+                # sponge, ...": a condition on the thing the instruction carried on used is that
+                # instruction's alternative, under the same conditions
+                cl.role == "condition" and carried and not context and bool(
+                    {f.subject for f in cl.facts if not f.goal} & {
+                        m for c in clauses if c.sentence == current_sentence for m in c.mentions})) else []
+            answers_premise = premise or frame_answered
+            current_sentence, context, with_tool = cl.sentence, (context if premise else list(frame)), set()
         elif (cl.role == "condition" and ci >= 2 and clauses[ci - 1].role == "consequence"
               and clauses[ci - 2].role == "condition" and clauses[ci - 2].sentence == cl.sentence
               and (clauses[ci - 1].cue != cl.cue or (
@@ -3310,8 +3345,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                           & (set(clauses[ci - 1].mentions) | set(clauses[ci - 2].mentions)))
                   and bool(cl.facts))):
             # "switch off the lamp in case it is on, and shut the wardrobe if it is open": a new
-            # instruction with its own postposed condition, not nested under the previous one
-            context = []
+            # instruction with its own postposed condition, not nested under the previous one (but
+            # still under a sentence that frames it)
+            context = list(frame)
         if _with_tool(cl) and all(c.role == "statement" and not c.facts for c in clauses[:ci]
                                   if c.sentence == cl.sentence):
             # ("With the sponge, if the sponge is on the counter!", after a speaker's name at most:
@@ -3498,6 +3534,86 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
     groups, group_roles = _group(factors, _moves_into(factors, clauses) + _answers(factors, clauses))
     covered = set().union(*group_roles) if group_roles else set()
     return TaskAnalysis(sentences, clauses, factors, groups, group_roles, set(lex.roles) - covered)
+
+
+#: words by which a sentence takes up the thing of the sentence before it ("Only if the cereal box is
+#: in the cupboard. Take it out, ...")
+_TAKING_UP = frozenset({"it", "them", "they", "there", "its", "their"})
+#: words that may be cut off before a framing condition as a clause of their own ("only when ...")
+_FRAME_LEADS = frozenset({"only", "just", "but", "and", "so"})
+
+
+def _frame(clauses: list[Clause], sentence: int, colon_closed: set[int], colon_ends_line: set[int],
+           line_of: Mapping[int, tuple[int, int]]) -> set[int]:
+    """The sentences after `sentence` that its conditions frame (empty when it frames none).
+
+    A sentence frames the ones after it when it opens (after a fact-less heading: "EGGS -", "Q.")
+    with a condition and either closes that condition with a colon ("If the laptop is on the
+    desk: put it on the shelf. The cabinet may be open; ...") or says nothing but conditions
+    ("Only if there are apples in the bowl.", "Laptop on the bed?"), and the sentence after it
+    takes up a thing of its conditions (names it or its place, or points back: "it", "there").
+    A colon frame covers the rest of its line (the sentences up to one opening with a condition
+    of its own), or, where the colon ends the line, its paragraph (the list under "If X:"); a
+    sentence of conditions only covers the rest of its line the same way, and a question only
+    the sentence after it, an instruction answering it ("... ? Onto the plate with it")."""
+    own = [ci for ci, c in enumerate(clauses) if c.sentence == sentence]
+    first = _framing(clauses, sentence)
+    own = own[own.index(first):] if first in own else []
+    after = [ci for ci, c in enumerate(clauses) if c.sentence == sentence + 1]
+    if not own or not after or clauses[first].role != "condition" or _label(clauses[after[0]]) is not None:
+        # (a sentence opening with an answer's label, "Is the mug on the desk?\nNo: then ...",
+        # is answered by that label, `_answered`)
+        return set()
+    if first in colon_closed:
+        return _framed(clauses, sentence, line_of, by_paragraph=first in colon_ends_line)
+    if not all(clauses[ci].role == "condition" for ci in own) or not _takes_up_frame(clauses, first, after):
+        return set()
+    if _asks(clauses[first]):
+        # (a question put to the reader asks for a deed, not whether the scene is so: "The kids
+        # dropped their coat and bag in the hallway - could you sort them out?")
+        addressed = set(re.findall(r"[a-z]+", clauses[first].text.lower())) & AGENTS
+        return {sentence + 1} if clauses[after[0]].role != "condition" and not addressed else set()
+    return _framed(clauses, sentence, line_of, by_paragraph=False)
+
+
+def _framing(clauses: list[Clause], sentence: int) -> int:
+    """The clause a sentence opens with after a fact-less heading or lead ("EGGS - Only if ...",
+    "only when ...", its "only" cut off as a clause of its own); -1 for a sentence with none."""
+    own = [ci for ci, c in enumerate(clauses) if c.sentence == sentence]
+    while own and not clauses[own[0]].facts and (clauses[own[0]].role == "statement" or set(
+            re.findall(r"[a-z]+", clauses[own[0]].text.lower())) <= _FRAME_LEADS):
+        own = own[1:]
+    return own[0] if own else -1
+
+
+def _takes_up_frame(clauses: list[Clause], first: int, after: list[int]) -> bool:
+    """Whether the sentence of clauses `after` takes up a thing of the condition `first`: names
+    the thing or its place, or points back to it ("it", "there") before it names anything else
+    ("Is the mug on the desk? Switch the lamp off if it is on" takes up the lamp, not the mug)."""
+    things = {x for f in clauses[first].facts for x in (f.subject, f.key if f.kind == "location" else "")} - {""}
+    named = False
+    for ci in after:
+        if set(clauses[ci].mentions) & things or not named and set(
+                re.findall(r"[a-z]+", clauses[ci].text.lower())) & _TAKING_UP:
+            return True
+        named = named or bool(clauses[ci].mentions)
+    return False
+
+
+def _framed(clauses: list[Clause], sentence: int, line_of: Mapping[int, tuple[int, int]], *,
+            by_paragraph: bool) -> set[int]:
+    """The sentences after `sentence` on its line, up to one opening with a condition of its own
+    (or, `by_paragraph`, every sentence of its paragraph)."""
+    line, paragraph = line_of.get(sentence, (-1, -1))
+    covered: set[int] = set()
+    for s in sorted({c.sentence for c in clauses if c.sentence > sentence}):
+        at = line_of.get(s, (-1, -1))
+        opening = next((c for c in clauses if c.sentence == s and (c.role != "statement" or c.facts)), None)
+        if (at[1] != paragraph if by_paragraph else at[0] != line) or (
+                not by_paragraph and opening is not None and opening.role == "condition" and s != sentence + 1):
+            break
+        covered.add(s)
+    return covered
 
 
 #: a label answering the question before it ("> YES: ...", "NO (or not sure): ...", "Yes ->"): what
