@@ -404,6 +404,14 @@ def _plural_only(word: str) -> bool:
 #: still going"); `_Reader._offered` reads them as the state `OPERATION`, never as an attribute
 OPERATION = "toggled_on"
 OPERATION_WORDS = frozenset({"working", "operating", "functioning", "going", "running", "whirring", "humming"})
+#: words of a machine's being out of order in the varieties and registers of English, said as a
+#: predicate ("the ceiling fan spoil already" and "the kettle is spoilt" in Singapore, Malaysian,
+#: Indian and Nigerian English; "the printer's kaput", "the toaster's bust", "the drill is
+#: knackered" in informal British and American English; Malay "rosak" in a Singlish or Manglish
+#: chat): `_Reader._offered` reads them as `BREAKAGE`, only of a thing that switches on, since of
+#: food "spoilt" is gone off and of a person "knackered" is tired, neither a broken thing
+BREAKAGE = "broken"
+BREAKAGE_WORDS = frozenset({"spoil", "spoils", "spoilt", "spoiled", "kaput", "bust", "knackered", "rosak"})
 
 
 #: a verb that raises its subject before "to be" says what the subject is, as "is" does ("it
@@ -1520,7 +1528,8 @@ class _Reader:
         bounds its values. So an attribute whose value is a word of a state (`STATE_WORDS`) or of
         operation (`OPERATION`: "if the oven is working") is that state where the kind takes it
         and nothing where it does not (never `attr(oven, workingness, working)`, which no brief
-        offers and which makes every environment refused), and a value outside the kind's domain
+        offers and which makes every environment refused), a word of breakage (`BREAKAGE_WORDS`:
+        "the fan spoil already") is `broken` of a machine and nothing of anything else, and a value outside the kind's domain
         for one of its catalog keys is dropped. A key the catalog has for no kind, made from a
         word the text contrasts ("a ripe one ... an unripe one": `ripeness`), stays: the prompts
         bound no other key (the plan's schema takes any snake_case key)."""
@@ -1534,6 +1543,12 @@ class _Reader:
         domain = dict(kind.attributes or {}) if kind is not None else {}
         if f.key in domain:
             return f if value in domain[f.key] else None
+        if value in BREAKAGE_WORDS:
+            if "toggled_on" not in self.capable.get(f.subject, frozenset()):
+                return None  # "the milk is spoilt", "the dog is knackered": no machine out of order
+            # said of it, not a doubted modifier: "the fan spoil already" states the fan's state
+            return replace(f, condition=f"state({f.subject}, {BREAKAGE})", kind="state", key=BREAKAGE,
+                           derived=False, modifier=False)
         flag, pol = STATE_WORDS.get(value) or ((OPERATION, True) if value in OPERATION_WORDS else ("", True))
         if not flag:
             return f
