@@ -5,7 +5,7 @@ that must not be misread. docs/reader.md, "Broken machines and stated facts (sev
 from __future__ import annotations
 
 import pytest
-from reading import CATALOG, brief
+from reading import CATALOG, brief, placed
 
 from logicenveval.offline.analysis import analyse
 
@@ -59,3 +59,45 @@ def test_a_word_of_breakage_not_said_of_a_machine_breaks_nothing(text: str, room
     assert not any(c.endswith(", broken)") for c in _stated(text, rooms) | _asked(text, rooms))
     assert not any("spoil" in c or "bust" in c or "knacker" in c for c in _stated(text, rooms))
 
+
+# -- a thing called by its kind's word in the writer's language ----------------------------------
+# Structure: a learner's or code-switched note names a thing by the word of the writer's own
+# language, a cognate of the English kind's word spelt by that language's letters ("Telewizor"
+# in a Polish note, "televisor" in a Spanish one, "televisi" in an Indonesian one), or by a
+# slip of the English spelling. Before the rule the word named no role, so a placement stated of
+# it was never read and the realiser put the thing where its kind usually goes (dev 22: the
+# television on the wall, every environment invalid).
+COGNATES = [
+    # a Polish speaker's note (the role named elsewhere as "TV")
+    ("Telewizor stands on the chest of drawers. If the TV is on, switch it off.", ("living_room",),
+     "on(television, dresser)"),
+    # a Spanish speaker's email
+    ("Hola! The televisor is on the cabinet, and the remote is next to it. If the TV is on, turn it off.",
+     ("living_room",), "on(television, cabinet)"),
+    # an Indonesian speaker's chat
+    ("the televisi is on the cabinet ya. if TV still on, pls turn off", ("living_room",),
+     "on(television, cabinet)"),
+    # a hurried text with a slip
+    ("the televsion is on the shelf, if the television is on pls turn it off", ("living_room",),
+     "on(television, wall_shelf)"),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "fact"), COGNATES)
+def test_a_cognate_of_a_kinds_word_names_its_role(text: str, rooms: tuple[str, ...], fact: str) -> None:
+    assert fact in placed(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms", "fact"), [
+    # a name or a place like no kind's word
+    ("Tomek stands on the chest of drawers. If the TV is on, switch it off.", ("living_room",),
+     "on(television, dresser)"),
+    # an English word of its own sense, however like a kind's name ("lamps" is no cognate; "lame"
+    # and "tell" are English)
+    ("The lame dog sleeps on the sofa. If the lamp is on, switch it off.", ("living_room",), "on(lamp, sofa)"),
+    # a cognate of another kind's word ("telefon", a phone) is not the television it half resembles
+    ("The telefon is on the desk. If the television is on, switch it off.", ("office",),
+     "on(television, desk)"),
+])
+def test_a_word_like_no_one_kinds_word_names_nothing(text: str, rooms: tuple[str, ...], fact: str) -> None:
+    assert fact not in placed(text, rooms)
