@@ -101,3 +101,39 @@ def test_a_cognate_of_a_kinds_word_names_its_role(text: str, rooms: tuple[str, .
 ])
 def test_a_word_like_no_one_kinds_word_names_nothing(text: str, rooms: tuple[str, ...], fact: str) -> None:
     assert fact not in placed(text, rooms)
+
+
+# -- a rule's quantified subject with a state, then a modal passive -------------------------------
+# Structure: club rules, notices, procedures and house rules state a condition as a quantified
+# subject described by its state, then "must / should / is to be <done>" ("Any umbrella still open
+# when the last four-ball is in must be closed", dev 21's scorecard). Before the rule none of
+# these asked the state (a value never set); "Any open umbrella must be closed" already did.
+QUANTIFIED = [
+    # a golf club's local rule
+    ("Any umbrella still open when the last four-ball is in must be closed.", ("locker_room",),
+     "state(umbrella, open)"),
+    # an office closing notice
+    ("Every desk lamp left on overnight must be switched off.", ("office",), "state(desk_lamp, toggled_on)"),
+    # a staff-room procedure
+    ("Any kettle that is still on is to be switched off.", ("kitchen",), "state(kettle, toggled_on)"),
+    # a meeting room's house rules
+    ("Each mug found dirty after the meeting must be washed.", ("office",), "state(mug, dirty)"),
+    # a hostel's rules, with a time phrase and "should"
+    ("Any lamp still on at closing time should be switched off.", ("bedroom",), "state(table_lamp, toggled_on)"),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), QUANTIFIED)
+def test_a_quantified_subject_with_a_state_asks_the_state(text: str, rooms: tuple[str, ...],
+                                                           condition: str) -> None:
+    assert {condition, f"not {condition}"} <= _asked(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms"), [
+    ("Any plate still on the table must be cleared.", ("kitchen",)),  # a place, not a state
+    ("Every window must be shut.", ("bedroom",)),  # no state said of the subject
+    ("Any mug must be washed before it is put away.", ("kitchen",)),  # the state is the goal's
+])
+def test_a_quantified_subject_without_a_state_asks_no_state(text: str, rooms: tuple[str, ...]) -> None:
+    assert not any(v.startswith("state(") for v in _asked(text, rooms))
+
