@@ -137,3 +137,42 @@ def test_a_quantified_subject_with_a_state_asks_the_state(text: str, rooms: tupl
 def test_a_quantified_subject_without_a_state_asks_no_state(text: str, rooms: tuple[str, ...]) -> None:
     assert not any(v.startswith("state(") for v in _asked(text, rooms))
 
+
+# -- a state the text gives a thing outright is kept by the realiser ------------------------------
+# Structure: a plain statement of a thing's state no factor asks ("the ceiling fan in there spoil
+# already", "the kettle in the shed is broken"): the realiser set the places the text states but
+# never its states, so dev 8's fan was not broken in any environment (a constraint violated).
+STATED_STATES = [
+    ("the ceiling fan in there spoil already, no need to on it. if the light is on pls off it",
+     ("household_shelter",), "ceiling_fan", "broken", True),
+    ("Just so you know, the kettle in the kitchen is broken. If the lamp is on, switch it off.",
+     ("kitchen",), "kettle", "broken", True),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "role", "flag", "value"), STATED_STATES)
+def test_a_stated_state_is_realised(text: str, rooms: tuple[str, ...], role: str, flag: str,
+                                    value: bool) -> None:
+    from logicenveval.offline.realise import realise
+    b = brief(text, rooms)
+    assert realise(b, [], CATALOG)[role].states.get(flag) is value
+
+
+def test_a_state_a_situation_fact_speaks_of_is_the_facts() -> None:
+    from logicenveval.offline.realise import realise
+    b = brief("The desk lamp is on. If the lamp is on, switch it off.", ("office",))
+    assert realise(b, ["not state(desk_lamp, toggled_on)"], CATALOG)["desk_lamp"].states.get("toggled_on") is False
+    # a state asked by a factor is no stated state, and a goal's state is none either
+    b = brief("If the kettle is broken, use the pan. Make sure the lamp is off.", ("kitchen",))
+    from logicenveval.offline.analysis import stated_states
+    assert stated_states(b, CATALOG) == []
+
+
+def test_a_state_said_both_ways_states_cases_not_the_scene() -> None:
+    # a quiz's questions and a trainer's scenarios state each case in turn (written for the test)
+    from logicenveval.offline.analysis import stated_states
+    for text, rooms in [("Q1. The mug on the desk is dirty. What do you do? Q2. The mug on the desk is clean. "
+                         "What do you do?", ("office",)),
+                        ("Scenario A: the kettle is on. Scenario B: the kettle is off. Say what you would do.",
+                         ("kitchen",))]:
+        assert stated_states(brief(text, rooms), CATALOG) == []

@@ -1983,6 +1983,37 @@ def analyse(brief: Mapping[str, Any], catalog: Catalog | None = None) -> TaskAna
     return _copy(hit[1])
 
 
+#: a state atom of a factor's value ("on(shirt, floor) and state(shirt, dirty)")
+_STATE_ATOM = re.compile(r"state\([a-z0-9_]+, [a-z_]+\)")
+
+
+def stated_states(brief: Mapping[str, Any], catalog: Catalog | None = None) -> list[str]:
+    """States the description gives a thing outright, in a plain statement, that no factor asks
+    ("the ceiling fan in there spoil already", "the kettle in the shed is broken", "the fridge
+    door is open, the seal went"): the environment keeps them, as it keeps the places the text
+    states (`described_placements`), so `offline.realise` sets them where no situation fact
+    speaks of the state. A state read from a modifier, a goal or a derived word is no such fact."""
+    a = analyse(brief, catalog)
+    roles = set(brief.get("roles") or {})
+    # a state any factor's value speaks of, alone or in a conjunction, is asked
+    asked = {atom for f in a.factors for v in f.values.values() for atom in _STATE_ATOM.findall(v)}
+    out: list[str] = []
+    for c in a.clauses:
+        if c.role != "statement":
+            continue
+        for f in c.facts:
+            if f.kind != "state" or f.goal or f.modifier or f.derived or f.subject not in roles:
+                continue
+            if f.condition in asked or f"not {f.condition}" in asked:
+                continue
+            said = f"not {f.condition}" if f.negated else f.condition
+            if said not in out:
+                out.append(said)
+    # a state said both ways ("The shirt on the floor is dirty ... The shirt on the floor is
+    # clean" in a quiz's questions) states cases, not the scene: neither is kept
+    both = {c.removeprefix("not ") for c in out if c.startswith("not ")} & set(out)
+    return [c for c in out if c.removeprefix("not ") not in both]
+
 def _copy(a: TaskAnalysis) -> TaskAnalysis:
     """A copy whose containers are the caller's own (clauses and tuples are immutable)."""
     return TaskAnalysis(
