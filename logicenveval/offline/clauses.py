@@ -175,14 +175,15 @@ _INTERPOSED = re.compile(r"^(?P<head>.+?\b(?:shall|must|will|should|is to|are to
 
 #: a rule's quantified subject described by its state, then a modal passive ("Any umbrella still
 #: open when the last four-ball is in must be closed", "Every lamp left on at close should be
-#: switched off", "Any kettle that is still on is to be switched off"): club rules, notices and
+#: switched off"; a relative "that is still on" is read already and spreads over every member
+#: the text enumerated, so it is left as written): club rules, notices and
 #: procedures state a condition so, as "if the umbrella is still open ..., it must be closed";
 #: the state word is read only before a time clause or the modal, so a place ("any plate still
 #: on the table") is not a state
 _STATE_WORD = "|".join(sorted((re.escape(w) for w in STATE_WORDS), key=len, reverse=True))
 _QUANTIFIED_STATE = re.compile(
     r"^(?P<lead>\W*)(?:any|every|each)\s+(?P<noun>[a-z]+(?:\s+(?!still\b|left\b|found\b|that\b|which\b)[a-z]+)?)\s+"
-    rf"(?:(?:that|which)\s+is\s+)?(?P<state>(?:(?:still|left|found)\s+)?(?:{_STATE_WORD}))"
+    rf"(?P<state>(?:(?:still|left|found)\s+)?(?:{_STATE_WORD}))"
     r"(?P<rest>(?:\s+(?:when|at|after|before|by|overnight|during|once|until)\b[^,;]*?)?)\s*,?\s+"
     r"(?P<modal>must|should|shall|is\s+to|has\s+to|needs\s+to)\s+be\s+(?P<done>\S.*)$", re.I)
 
