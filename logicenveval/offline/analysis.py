@@ -404,6 +404,14 @@ def _plural_only(word: str) -> bool:
 #: still going"); `_Reader._offered` reads them as the state `OPERATION`, never as an attribute
 OPERATION = "toggled_on"
 OPERATION_WORDS = frozenset({"working", "operating", "functioning", "going", "running", "whirring", "humming"})
+#: words of a machine's being out of order in the varieties and registers of English, said as a
+#: predicate ("the ceiling fan spoil already" and "the kettle is spoilt" in Singapore, Malaysian,
+#: Indian and Nigerian English; "the printer's kaput", "the toaster's bust", "the drill is
+#: knackered" in informal British and American English; Malay "rosak" in a Singlish or Manglish
+#: chat): `_Reader._offered` reads them as `BREAKAGE`, only of a thing that switches on, since of
+#: food "spoilt" is gone off and of a person "knackered" is tired, neither a broken thing
+BREAKAGE = "broken"
+BREAKAGE_WORDS = frozenset({"spoil", "spoils", "spoilt", "spoiled", "kaput", "bust", "knackered", "rosak"})
 
 
 #: a verb that raises its subject before "to be" says what the subject is, as "is" does ("it
@@ -1531,7 +1539,8 @@ class _Reader:
         bounds its values. So an attribute whose value is a word of a state (`STATE_WORDS`) or of
         operation (`OPERATION`: "if the oven is working") is that state where the kind takes it
         and nothing where it does not (never `attr(oven, workingness, working)`, which no brief
-        offers and which makes every environment refused), and a value outside the kind's domain
+        offers and which makes every environment refused), a word of breakage (`BREAKAGE_WORDS`:
+        "the fan spoil already") is `broken` of a machine and nothing of anything else, and a value outside the kind's domain
         for one of its catalog keys is dropped. A key the catalog has for no kind, made from a
         word the text contrasts ("a ripe one ... an unripe one": `ripeness`), stays: the prompts
         bound no other key (the plan's schema takes any snake_case key)."""
@@ -1545,6 +1554,12 @@ class _Reader:
         domain = dict(kind.attributes or {}) if kind is not None else {}
         if f.key in domain:
             return f if value in domain[f.key] else None
+        if value in BREAKAGE_WORDS:
+            if "toggled_on" not in self.capable.get(f.subject, frozenset()):
+                return None  # "the milk is spoilt", "the dog is knackered": no machine out of order
+            # said of it, not a doubted modifier: "the fan spoil already" states the fan's state
+            return replace(f, condition=f"state({f.subject}, {BREAKAGE})", kind="state", key=BREAKAGE,
+                           derived=False, modifier=False)
         flag, pol = STATE_WORDS.get(value) or ((OPERATION, True) if value in OPERATION_WORDS else ("", True))
         if not flag:
             return f
@@ -1978,6 +1993,37 @@ def analyse(brief: Mapping[str, Any], catalog: Catalog | None = None) -> TaskAna
         hit = _MEMO[key] = (catalog, _analyse(brief, catalog))
     return _copy(hit[1])
 
+
+#: a state atom of a factor's value ("on(shirt, floor) and state(shirt, dirty)")
+_STATE_ATOM = re.compile(r"state\([a-z0-9_]+, [a-z_]+\)")
+
+
+def stated_states(brief: Mapping[str, Any], catalog: Catalog | None = None) -> list[str]:
+    """States the description gives a thing outright, in a plain statement, that no factor asks
+    ("the ceiling fan in there spoil already", "the kettle in the shed is broken", "the fridge
+    door is open, the seal went"): the environment keeps them, as it keeps the places the text
+    states (`described_placements`), so `offline.realise` sets them where no situation fact
+    speaks of the state. A state read from a modifier, a goal or a derived word is no such fact."""
+    a = analyse(brief, catalog)
+    roles = set(brief.get("roles") or {})
+    # a state any factor's value speaks of, alone or in a conjunction, is asked
+    asked = {atom for f in a.factors for v in f.values.values() for atom in _STATE_ATOM.findall(v)}
+    out: list[str] = []
+    for c in a.clauses:
+        if c.role != "statement":
+            continue
+        for f in c.facts:
+            if f.kind != "state" or f.goal or f.modifier or f.derived or f.subject not in roles:
+                continue
+            if f.condition in asked or f"not {f.condition}" in asked:
+                continue
+            said = f"not {f.condition}" if f.negated else f.condition
+            if said not in out:
+                out.append(said)
+    # a state said both ways ("The shirt on the floor is dirty ... The shirt on the floor is
+    # clean" in a quiz's questions) states cases, not the scene: neither is kept
+    both = {c.removeprefix("not ") for c in out if c.startswith("not ")} & set(out)
+    return [c for c in out if c.removeprefix("not ") not in both]
 
 def _copy(a: TaskAnalysis) -> TaskAnalysis:
     """A copy whose containers are the caller's own (clauses and tuples are immutable)."""

@@ -173,12 +173,38 @@ _INTERPOSED = re.compile(r"^(?P<head>.+?\b(?:shall|must|will|should|is to|are to
                          r"\s*,\s*(?P<cue>if|unless|when|where|once)\s+(?P<cond>[^,;]+?)\s*,\s*(?P<rest>[^,;]+?)"
                          r"(?P<end>[;.!]?\s*)$", re.I)
 
+#: a rule's quantified subject described by its state, then a modal passive ("Any umbrella still
+#: open when the last four-ball is in must be closed", "Every lamp left on at close should be
+#: switched off"; a relative "that is still on" is read already and spreads over every member
+#: the text enumerated, so it is left as written): club rules, notices and
+#: procedures state a condition so, as "if the umbrella is still open ..., it must be closed";
+#: the state word is read only before a time clause or the modal, so a place ("any plate still
+#: on the table") is not a state
+_STATE_WORD = "|".join(sorted((re.escape(w) for w in STATE_WORDS), key=len, reverse=True))
+_QUANTIFIED_STATE = re.compile(
+    r"^(?P<lead>\W*)(?:any|every|each)\s+(?P<noun>[a-z]+(?:\s+(?!still\b|left\b|found\b|that\b|which\b)[a-z]+)?)\s+"
+    rf"(?P<state>(?:(?:still|left|found)\s+)?(?:{_STATE_WORD}))"
+    r"(?P<rest>(?:\s+(?:when|at|after|before|by|overnight|during|once|until)\b[^,;]*?)?)\s*,?\s+"
+    r"(?P<modal>must|should|shall|is\s+to|has\s+to|needs\s+to)\s+be\s+(?P<done>\S.*)$", re.I)
+
+
+def _quantified_state(sentence: str) -> str:
+    """`_QUANTIFIED_STATE`'s rule as a plain condition: "If the umbrella is still open when ...,
+    it must be closed" (the subject's state is the condition, the modal passive its action)."""
+    m = _QUANTIFIED_STATE.match(sentence)
+    if m is None:
+        return sentence
+    return (f"{m.group('lead')}If the {m.group('noun')} is {m.group('state')}{m.group('rest')}, "
+            f"it {m.group('modal')} be {m.group('done')}")
+
 
 def _apposition(sentence: str) -> str:
     """`Whatever is lying on it - a book, a clock, a phone - goes ...`: the listed objects are the
     subject of the generic word's predicate (`a book, a clock, a phone is lying on it - goes ...`);
-    a fronted `without a sponge, ...` is the condition `if there is no sponge, ...`."""
+    a fronted `without a sponge, ...` is the condition `if there is no sponge, ...`, and so is a
+    rule's quantified subject with a state (`_quantified_state`)."""
     sentence = _WITHOUT.sub(r"\1if there is no ", sentence)  # "without a sponge, use ...": a condition
+    sentence = _quantified_state(sentence)  # "Any umbrella still open ... must be closed"
     sentence = _SUBJECT_TO.sub(r"\1if \2 is", sentence)
     sentence = _EXCEPT_WHERE.sub(", but if", _PROVISO.sub("but if", _WHERE.sub(r"\1if", sentence)))
     interposed = _INTERPOSED.match(sentence)

@@ -6,6 +6,7 @@ and attribute domains), so it generalises to any task written with the same cata
 
 from __future__ import annotations
 
+import difflib
 import re
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field, replace
@@ -271,6 +272,51 @@ def _named_things(text: str, phrases: Mapping[tuple[str, ...], set[str]]) -> dic
     return {k: v for k, v in out.items() if len(v) == 1}
 
 
+#: letters that stand for one another between English and the languages a loanword or cognate
+#: comes from ("telewizor" / "television": Polish w and z; "telefon": f for ph; "kamera":
+#: k for c), compared after this spelling is evened out (`_cognates`)
+_COGNATE_SPELLING = (("ph", "f"), ("w", "v"), ("z", "s"), ("k", "c"), ("y", "i"))
+#: how alike (difflib's ratio) an unknown word and a kind's one-word name must be, once spelt
+#: alike, to be that word in the writer's own language: "televisor", "telewizor", "televisi"
+#: against "television" (0.84 to 0.89), "kamera" against "camera" (1.0); a name, a place or a
+#: word of another sense stays far below ("Tomek", "Kraków", "komoda": 0.3 at most)
+_COGNATE_LIKENESS = 0.8
+
+
+def _spelt_alike(word: str) -> str:
+    for letters, same in _COGNATE_SPELLING:
+        word = word.replace(letters, same)
+    return word
+
+
+def _cognates(text: str, roles: Mapping[str, Mapping[str, Any]], catalog: Catalog,
+              phrases: Mapping[tuple[str, ...], set[str]]) -> dict[tuple[str, ...], set[str]]:
+    """Words of no English a text calls one role by, because they are that role's kind's word in
+    the writer's language or a slip of its spelling: "Telewizor stands on the chest of drawers"
+    in a Polish speaker's note, "the televisor is on the cabinet" in a Spanish speaker's,
+    "televisi" in an Indonesian one's, "the televsion" typed in haste. A word lemminflect does not
+    know, of five letters or more, not already a phrase, as like one role's one-word kind name or
+    synonym (`_COGNATE_LIKENESS`, after `_COGNATE_SPELLING`) and no other role's, with the same
+    first letter, is that role wherever it is said. A known English word is never taken so (it
+    has a sense of its own), nor a word two roles' names are equally like."""
+    names: dict[str, set[str]] = {}
+    for name, role in roles.items():
+        cat = catalog.get(role["category"])
+        for n in {role["category"], *(cat.synonyms if cat else ())}:
+            if len(words_of(n)) == 1 and not is_wordnet_name(n):
+                names.setdefault(_spelt_alike(words_of(n)[0]), set()).add(name)
+    out: dict[tuple[str, ...], set[str]] = {}
+    for word in {w for w, _, _ in tokens(text)}:
+        if len(word) < 5 or not word.isalpha() or (word,) in phrases or getAllLemmas(word):
+            continue
+        alike = _spelt_alike(word)
+        meant = {r for n, rs in names.items() if n[:1] == alike[:1]
+                 and difflib.SequenceMatcher(None, alike, n).ratio() >= _COGNATE_LIKENESS for r in rs}
+        if len(meant) == 1:
+            out[(word,)] = meant
+    return out
+
+
 def _modifier_synonyms(roles: Mapping[str, Mapping[str, Any]], catalog: Catalog) -> dict[tuple[str, ...], set[str]]:
     """"<modifier> <head>" phrases for a role whose kind is named by a two-word compound whose
     modifier is another kind's name, with that modifier said by one of its kind's own one-word
@@ -416,6 +462,9 @@ class Lexicon:
                 meant = {name for name, role in roles.items() if _abbreviates(short.lower(), role["category"])}
                 if len(meant) == 1:
                     lex.phrases[(short.lower(),)] = meant
+        # "Telewizor stands on the chest of drawers": the kind's word in the writer's language
+        for key, meant in _cognates(str(brief.get("description", "")), roles, catalog, lex.phrases).items():
+            lex.phrases.setdefault(key, meant)
         # "Lady Rosabel, her doll": a given name of one role
         for key, meant in _named_things(str(brief.get("description", "")), lex.phrases).items():
             lex.phrases.setdefault(key, meant)

@@ -16,6 +16,7 @@ from logicenveval.domain.catalog import Catalog
 from logicenveval.llm.scene_words import furniture
 from logicenveval.model.conditions import And, Cond, Const, Not, Or, Pred, parse
 from logicenveval.model.rooms import room_type_of
+from logicenveval.offline.analysis import stated_states
 from logicenveval.offline.placement import described_placements
 from logicenveval.scene.compat import can_hold
 
@@ -62,6 +63,7 @@ def realise(brief: Mapping[str, Any], facts: list[str], catalog: Catalog) -> dic
         for pred, pos in _literals(parse(text)):
             _apply(choice, pred, pos)
     _described(choice, brief, facts, catalog)
+    _stated(choice, brief, facts, catalog)
     _possible(choice, roles, catalog)
     for r, c in choice.items():
         cat = catalog.get(roles[r]["category"])
@@ -135,6 +137,20 @@ def _described(choice: dict[str, RoleChoice], brief: Mapping[str, Any], facts: l
                 continue
             _apply(choice, pred, pos)
 
+
+def _stated(choice: dict[str, RoleChoice], brief: Mapping[str, Any], facts: list[str], catalog: Catalog) -> None:
+    """States the description gives a thing outright ("the ceiling fan in there is broken":
+    `analysis.stated_states`), for a present object whose state no situation fact speaks of: a
+    reader of the text makes the fan broken, as `_described` puts a thing where the text says."""
+    spoken = {(pred.args[0], pred.args[1]) for text in facts for pred, _ in _literals(parse(text))
+              if pred.name == "state"}
+    if not brief.get("description"):
+        return
+    for text in stated_states(brief, catalog):
+        for pred, pos in _literals(parse(text)):
+            c = choice.get(pred.args[0])
+            if pred.name == "state" and c is not None and c.present and (pred.args[0], pred.args[1]) not in spoken:
+                _apply(choice, pred, pos)
 
 def _possible(choice: dict[str, RoleChoice], roles: dict[str, Any], catalog: Catalog) -> None:
     """A placement the scene's words rule out (`llm.scene_words`: furniture rests on nothing, an
