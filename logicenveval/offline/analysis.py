@@ -2006,14 +2006,24 @@ def stated_states(brief: Mapping[str, Any], catalog: Catalog | None = None) -> l
     speaks of the state. A state read from a modifier, a goal or a derived word is no such fact."""
     a = analyse(brief, catalog)
     roles = set(brief.get("roles") or {})
+    capable = _capabilities(brief, catalog) if catalog is not None else {}
     # a state any factor's value speaks of, alone or in a conjunction, is asked
     asked = {atom for f in a.factors for v in f.values.values() for atom in _STATE_ATOM.findall(v)}
     out: list[str] = []
     for c in a.clauses:
-        if c.role != "statement":
+        # an instruction ("open it, load them, shut the door") states no state of the scene
+        if c.role != "statement" or imperative(re.findall(r"[a-z0-9']+", c.text.lower())):
             continue
         for f in c.facts:
             if f.kind != "state" or f.goal or f.modifier or f.derived or f.subject not in roles:
+                continue
+            # the statement's subject is the thing it names first ("the ceiling fan in there spoil
+            # already"): a state the clause's words give a thing named later ("dirty white ones go
+            # into the washing machine (open it, ...)") is an instruction's or another thing's
+            if not c.mentions or c.mentions[0] != f.subject:
+                continue
+            # a state the thing's kind cannot take ("the cup ... on") is a misreading, not a fact
+            if f.key in FITTED and f.key not in capable.get(f.subject, FITTED):
                 continue
             if f.condition in asked or f"not {f.condition}" in asked:
                 continue
