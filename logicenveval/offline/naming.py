@@ -1154,13 +1154,17 @@ class _Reader:
         self.recent = [c for c in self.recent if c != category] + [category]
         self.used.setdefault(category, set()).add(head)
 
-    def glossed(self, i: int, category: str) -> str | None:
+    def glossed(self, i: int, n: int, category: str) -> str | None:
         """The kind a bracket opening at word `i` names again by a fuller name of its own kind:
         "Cupboard on wall (wall cabinet, over sink)", "the rack (the towel rack)". The bracket
         opens within three words of the thing's first and only reading, in its sentence, and its
         first noun is a kind whose name ends in the head of that thing's kind and says more
-        ("wall cabinet" after "cupboard", a cabinet): one object, of the fuller kind."""
-        opens = i - (i > 0 and self.text.words[i - 1] in _ARTICLES)
+        ("wall cabinet" after "cupboard", a cabinet), or is written as one word that ends in the
+        word the thing was called by ("the field book (yellow notebook)", "the chair (the
+        armchair)", "the pan (saucepan)": English closes many compounds): one object, of the
+        fuller kind."""
+        opens = i - (i > 0 and self.text.words[i - 1] in COLOR_WORDS and "(" not in self.text.gaps[i])
+        opens -= opens > 0 and self.text.words[opens - 1] in _ARTICLES and "(" not in self.text.gaps[opens]
         if "(" not in self.text.gaps[opens] or not self.recent or self.recent[-1] == category:
             return None
         before = self.recent[-1]
@@ -1176,6 +1180,12 @@ class _Reader:
         # its head alone, which the first reading took for one of the head's kinds (a guess the
         # bracket corrects), and the bracket's kind has that head too
         (said,) = self.used[before]
+        words, end = self.text.words, i + n
+        # a bracket that goes on with a verb of its own is a clause about another thing ("the
+        # chair is wet (the armchair is dry)")
+        goes_on = end < len(words) and not _BREAK.search(self.text.gaps[end]) and words[end] in _CLAUSE_VERBS
+        if len(words[end - 1]) > len(said) + 2 and words[end - 1].endswith(said) and not goes_on:
+            return before
         return before if self.text.words[at] == said and len(fuller) > 1 and fuller[-1] == said else None
 
     def renamed_fuller(self, i: int, n: int, category: str) -> str | None:
@@ -1321,7 +1331,7 @@ class _Reader:
         # what the head is for ("the bread knife" is a knife, no bread), where a
         # piece of furniture before one is the thing ("the vanity cabinet", `compound`) and so is
         # the contents before a vessel ("the detergent bottle", `_VESSELS`)
-        return first is None or m == 1 and words[j] not in _VESSELS and len(set(self.heads.get(words[j], []))) > 1 \
+        return first is None or m == 1 and words[j] not in _VESSELS \
             and self.catalog.categories[first].pickable and self.text.raw[i] == words[i]
 
     def color_before(self, i: int) -> int | None:
@@ -2032,7 +2042,7 @@ class _Reader:
                     self.colors[category] = words[told]
                 i += n
                 continue
-            if shared is None and (glossed := self.glossed(i, category) or self.renamed_fuller(i, n, category)) is not None:
+            if shared is None and (glossed := self.glossed(i, n, category) or self.renamed_fuller(i, n, category)) is not None:
                 # "Cupboard on wall (wall cabinet, over sink)": one thing, named by the fuller name
                 del self.kinds[glossed]
                 self.recent.remove(glossed)
