@@ -107,3 +107,37 @@ def test_a_picked_up_modifier_before_a_one_kind_head_names_no_thing(text: str, k
 ])
 def test_a_modifier_that_is_a_thing_or_a_list_stays_named(text: str, kinds: set[str]) -> None:
     assert kinds <= _kinds(text)
+
+
+# -- a piece of furniture's part, once named as its own ("goes into the nightstand drawer"), said
+# again further on by "the drawer", or by "a drawer" opening a clause of sound or sight ("A DRAWER
+# SLIDES SHUT"), is that part: no drawer of its own (`naming._Reader.part_said_again`) --
+
+@pytest.mark.parametrize(("text", "holder"), [
+    # a radio play's sound effects
+    ("ANNA: The socks go in the nightstand drawer.\nSFX: RAIN. FOOTSTEPS.\nANNA: Is that the kettle?\n"
+     "SFX: A DRAWER SLIDES SHUT.", "nightstand"),
+    # a caretaker's log
+    ("Spare fuses live in the dresser drawers. Tea break at eleven. Boiler checked. Later a drawer bangs; "
+     "is it open?", "dresser"),
+    # an office memo
+    ("Signed forms go in the filing cabinet drawer. The printer is fixed. Lunch is at one. Please check "
+     "the drawer is shut before you leave.", "filing_cabinet"),
+])
+def test_a_part_said_again_is_the_named_furnitures(text: str, holder: str) -> None:
+    kinds = _kinds(text)
+    assert holder in kinds
+    assert "drawer" not in kinds
+
+
+@pytest.mark.parametrize("text", [
+    # "a drawer" as a goal or after "there is": another drawer
+    "The socks go into the nightstand drawer. The phone rings. Put the pens in a drawer.",
+    "Spare fuses live in the dresser drawers. The phone rings. There is a drawer under the stairs.",
+    # "a drawer" a place follows
+    "The socks go into the nightstand drawer. The phone rings. A drawer in the hall is open.",
+    # no furniture was named with the part
+    "The phone rings. The kettle boils. The drawer is open.",
+])
+def test_another_drawer_stays_a_drawer(text: str) -> None:
+    assert "drawer" in _kinds(text)

@@ -225,6 +225,8 @@ FLOOR_WORDS = frozenset({"floor", "ground"})
 #: words too common to say which of several categories a bare noun means
 _NOT_CONTEXT = frozenset({"floor", "wall", "ceiling", "room"})
 #: "that is a ...", "it was a ...": a predicate noun of a thing already named (`predicate_noun`)
+#: words before an indefinite subject that still open its clause ("Then a drawer slams")
+_TIME_OPENERS = frozenset({"then", "later", "suddenly", "now", "meanwhile", "somewhere", "again"})
 _POINTERS = frozenset({"that", "it", "this", "which"})
 _COPULAS = frozenset({"is", "was"})
 #: the pronouns that take up a thing named before (`_Reader.heading_spare`)
@@ -439,6 +441,9 @@ class _Reader:
         #: kind -> whether every plain mention of it so far was a heading of its own ("3. The
         #: folder.", "Mug:"), which a later coloured mention names again (`heading_mention`)
         self.headed: dict[str, bool] = {}
+        #: part kind -> the furniture the text named it as a part of ("the nightstand drawer"),
+        #: whose part a later "the drawer" is (`part_said_again`)
+        self.part_holders: dict[str, set[str]] = {}
 
     def _fixed_expressions(self) -> frozenset[int]:
         """The words of the text's fixed expressions (`FIXED_EXPRESSIONS`), within one stretch of
@@ -1507,7 +1512,11 @@ class _Reader:
         no furniture is named with are drawers of their own."""
         cat = self.catalog.categories[category]
         last = i + n - 1
-        if cat.placement != ["inside"] or prev in _COUNTS or prev in _INDEFINITE:
+        if cat.placement != ["inside"] or prev in _COUNTS:
+            return False
+        if self.part_said_again(i, n, category, prev):
+            return True
+        if prev in _INDEFINITE:
             return False
         start = self.text.sentence_start(i)
         start = self.text.sentence_start(start - 1) if start > 0 else start  # or the one before
@@ -1522,7 +1531,32 @@ class _Reader:
         if i > start:
             before = self.text.words[i - 1]
             named += [c for c in self.recent if before in self.used.get(c, ())]
-        return any(self.holds_as_part(cat, other) for other in named if other not in (None, category))
+        holders = {other for other in named if other not in (None, category) and self.holds_as_part(cat, other)}
+        self.part_holders.setdefault(category, set()).update(h for h in holders if h in self.kinds)
+        return bool(holders)
+
+    def part_said_again(self, i: int, n: int, category: str, prev: str) -> bool:
+        """Whether a part of furniture (a drawer) said again, anywhere after the text named it as
+        one piece of furniture's own ("goes into the nightstand drawer", "keep them in the desk
+        drawer"), is that part: "the drawer" (as far back as it was named), or "a drawer" as the
+        subject that opens its clause, a sound or a sight of the part ("SFX: A DRAWER SLIDES
+        SHUT", "Later a drawer bangs"). Not when a second piece of furniture that holds such a
+        part is named, nor "a drawer" after a verb or preposition ("put the pens in a drawer",
+        "there is a drawer"), nor one a place or "of" follows ("a drawer in the hall"): a drawer
+        of its own."""
+        holders = self.part_holders.get(category, set())
+        if len(holders) != 1 or prev not in _DEMONSTRATIVE | _INDEFINITE:
+            return False
+        cat = self.catalog.categories[category]
+        if any(self.holds_as_part(cat, other) for other in self.kinds if other not in holders):
+            return False
+        if prev in _DEMONSTRATIVE:
+            return True
+        words, gaps, end = self.text.words, self.text.gaps, i + n
+        opens = i == 1 or i > 1 and (_SENTENCE_END.search(gaps[i - 1]) is not None or ":" in gaps[i - 1]
+                                     or words[i - 2] in _TIME_OPENERS)
+        placed = end < len(words) and (words[end] in _PREPOSITIONS or words[end] in _LOCATING)
+        return opens and not placed
 
     def holder_in_name(self, i: int, n: int, category: str) -> str | None:
         """The piece of furniture a part's own name starts with ("the dresser drawers", a name the
@@ -2025,7 +2059,9 @@ class _Reader:
                 i += room  # "Laundry room - FAQ": the task's room, no laundry in it
                 continue
             if (holder := self.holder_in_name(i, n, category)) is not None:
-                category = holder  # "the dresser drawers": the dresser
+                # "the dresser drawers": the dresser (whose drawer a later "the drawer" is)
+                self.part_holders.setdefault(category, set()).add(holder)
+                category = holder
             elif self.part_of_its_furniture(i, n, category, prev):
                 i += n  # "file it in the filing cabinet - the drawer may be pulled out": its drawer
                 continue
