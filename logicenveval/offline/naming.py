@@ -226,7 +226,7 @@ FLOOR_WORDS = frozenset({"floor", "ground"})
 _NOT_CONTEXT = frozenset({"floor", "wall", "ceiling", "room"})
 #: "that is a ...", "it was a ...": a predicate noun of a thing already named (`predicate_noun`)
 #: words before an indefinite subject that still open its clause ("Then a drawer slams")
-_TIME_OPENERS = frozenset({"then", "later", "suddenly", "now", "meanwhile", "somewhere", "again"})
+_OPENING_ADVERBS = frozenset({"then", "later", "suddenly", "now", "meanwhile", "somewhere", "again"})
 _POINTERS = frozenset({"that", "it", "this", "which"})
 _COPULAS = frozenset({"is", "was"})
 #: the pronouns that take up a thing named before (`_Reader.heading_spare`)
@@ -1554,7 +1554,7 @@ class _Reader:
             return True
         words, gaps, end = self.text.words, self.text.gaps, i + n
         opens = i == 1 or i > 1 and (_SENTENCE_END.search(gaps[i - 1]) is not None or ":" in gaps[i - 1]
-                                     or words[i - 2] in _TIME_OPENERS)
+                                     or words[i - 2] in _OPENING_ADVERBS)
         placed = end < len(words) and (words[end] in _PREPOSITIONS or words[end] in _LOCATING)
         return opens and not placed
 
