@@ -1193,6 +1193,26 @@ class _Reader:
             return before
         return before if self.text.words[at] == said and len(fuller) > 1 and fuller[-1] == said else None
 
+    def glossed_spare(self, i: int, n: int, category: str) -> tuple[str, str] | None:
+        """The kind of a spare named right before a bracket that names it again by a compound
+        written as one word ending in the word it was called by ("The spare field book (yellow
+        notebook)", "the spare pan (the saucepan)"): the spare is a thing of the bracket's kind,
+        the kind's other mentions ("2) Field book." as a heading) stay as they were."""
+        opens = i - (i > 0 and self.text.words[i - 1] in COLOR_WORDS and "(" not in self.text.gaps[i])
+        opens -= opens > 0 and self.text.words[opens - 1] in _ARTICLES and "(" not in self.text.gaps[opens]
+        if "(" not in self.text.gaps[opens] or opens < 2 or not self.recent or self.recent[-1] == category:
+            return None
+        words, before = self.text.words, self.recent[-1]
+        said, spare = words[opens - 1], f"spare_{words[opens - 1]}"
+        kind = self.kinds.get(before)
+        if kind is None or spare not in kind.instances or not any(
+                w in SPARE_WORDS for w in words[max(0, opens - 4):opens - 1]):
+            return None
+        end = i + n
+        goes_on = end < len(words) and not _BREAK.search(self.text.gaps[end]) and words[end] in _CLAUSE_VERBS
+        closed = len(words[end - 1]) > len(said) + 2 and words[end - 1].endswith(said)
+        return (before, spare) if closed and not goes_on else None
+
     def renamed_fuller(self, i: int, n: int, category: str) -> str | None:
         """The kind of the thing named last, when the noun phrase at words [i, i + n) names it
         again by a fuller name that ends in the word it was called by: as the predicate of an
@@ -2083,6 +2103,13 @@ class _Reader:
                 del self.kinds[glossed]
                 self.recent.remove(glossed)
                 self.particular.discard(glossed)
+            if shared is None and (spare_of := self.glossed_spare(i, n, category)) is not None:
+                # "The spare field book (yellow notebook)": the spare is the notebook
+                before, spare = spare_of
+                del self.kinds[before].instances[spare]
+                if not self.kinds[before].instances and not self.kinds[before].generic:
+                    del self.kinds[before]
+                    self.recent.remove(before)
             kind = self.kinds.setdefault(category, _Kind())
             self.first_at.setdefault(category, i)
             if (subject := self.unnamed_subject(i)) is not None:
