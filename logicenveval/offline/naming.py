@@ -225,6 +225,8 @@ FLOOR_WORDS = frozenset({"floor", "ground"})
 #: words too common to say which of several categories a bare noun means
 _NOT_CONTEXT = frozenset({"floor", "wall", "ceiling", "room"})
 #: "that is a ...", "it was a ...": a predicate noun of a thing already named (`predicate_noun`)
+#: words before an indefinite subject that still open its clause ("Then a drawer slams")
+_OPENING_ADVERBS = frozenset({"then", "later", "suddenly", "now", "meanwhile", "somewhere", "again"})
 _POINTERS = frozenset({"that", "it", "this", "which"})
 _COPULAS = frozenset({"is", "was"})
 #: the pronouns that take up a thing named before (`_Reader.heading_spare`)
@@ -439,6 +441,9 @@ class _Reader:
         #: kind -> whether every plain mention of it so far was a heading of its own ("3. The
         #: folder.", "Mug:"), which a later coloured mention names again (`heading_mention`)
         self.headed: dict[str, bool] = {}
+        #: part kind -> the furniture the text named it as a part of ("the nightstand drawer"),
+        #: whose part a later "the drawer" is (`part_said_again`)
+        self.part_holders: dict[str, set[str]] = {}
 
     def _fixed_expressions(self) -> frozenset[int]:
         """The words of the text's fixed expressions (`FIXED_EXPRESSIONS`), within one stretch of
@@ -1154,13 +1159,17 @@ class _Reader:
         self.recent = [c for c in self.recent if c != category] + [category]
         self.used.setdefault(category, set()).add(head)
 
-    def glossed(self, i: int, category: str) -> str | None:
+    def glossed(self, i: int, n: int, category: str) -> str | None:
         """The kind a bracket opening at word `i` names again by a fuller name of its own kind:
         "Cupboard on wall (wall cabinet, over sink)", "the rack (the towel rack)". The bracket
         opens within three words of the thing's first and only reading, in its sentence, and its
         first noun is a kind whose name ends in the head of that thing's kind and says more
-        ("wall cabinet" after "cupboard", a cabinet): one object, of the fuller kind."""
-        opens = i - (i > 0 and self.text.words[i - 1] in _ARTICLES)
+        ("wall cabinet" after "cupboard", a cabinet), or is written as one word that ends in the
+        word the thing was called by ("the field book (yellow notebook)", "the chair (the
+        armchair)", "the pan (saucepan)": English closes many compounds): one object, of the
+        fuller kind."""
+        opens = i - (i > 0 and self.text.words[i - 1] in COLOR_WORDS and "(" not in self.text.gaps[i])
+        opens -= opens > 0 and self.text.words[opens - 1] in _ARTICLES and "(" not in self.text.gaps[opens]
         if "(" not in self.text.gaps[opens] or not self.recent or self.recent[-1] == category:
             return None
         before = self.recent[-1]
@@ -1176,7 +1185,33 @@ class _Reader:
         # its head alone, which the first reading took for one of the head's kinds (a guess the
         # bracket corrects), and the bracket's kind has that head too
         (said,) = self.used[before]
+        words, end = self.text.words, i + n
+        # a bracket that goes on with a verb of its own is a clause about another thing ("the
+        # chair is wet (the armchair is dry)")
+        goes_on = end < len(words) and not _BREAK.search(self.text.gaps[end]) and words[end] in _CLAUSE_VERBS
+        if len(words[end - 1]) > len(said) + 2 and words[end - 1].endswith(said) and not goes_on:
+            return before
         return before if self.text.words[at] == said and len(fuller) > 1 and fuller[-1] == said else None
+
+    def glossed_spare(self, i: int, n: int, category: str) -> tuple[str, str] | None:
+        """The kind of a spare named right before a bracket that names it again by a compound
+        written as one word ending in the word it was called by ("The spare field book (yellow
+        notebook)", "the spare pan (the saucepan)"): the spare is a thing of the bracket's kind,
+        the kind's other mentions ("2) Field book." as a heading) stay as they were."""
+        opens = i - (i > 0 and self.text.words[i - 1] in COLOR_WORDS and "(" not in self.text.gaps[i])
+        opens -= opens > 0 and self.text.words[opens - 1] in _ARTICLES and "(" not in self.text.gaps[opens]
+        if "(" not in self.text.gaps[opens] or opens < 2 or not self.recent or self.recent[-1] == category:
+            return None
+        words, before = self.text.words, self.recent[-1]
+        said, spare = words[opens - 1], f"spare_{words[opens - 1]}"
+        kind = self.kinds.get(before)
+        if kind is None or spare not in kind.instances or not any(
+                w in SPARE_WORDS for w in words[max(0, opens - 4):opens - 1]):
+            return None
+        end = i + n
+        goes_on = end < len(words) and not _BREAK.search(self.text.gaps[end]) and words[end] in _CLAUSE_VERBS
+        closed = len(words[end - 1]) > len(said) + 2 and words[end - 1].endswith(said)
+        return (before, spare) if closed and not goes_on else None
 
     def renamed_fuller(self, i: int, n: int, category: str) -> str | None:
         """The kind of the thing named last, when the noun phrase at words [i, i + n) names it
@@ -1321,7 +1356,7 @@ class _Reader:
         # what the head is for ("the bread knife" is a knife, no bread), where a
         # piece of furniture before one is the thing ("the vanity cabinet", `compound`) and so is
         # the contents before a vessel ("the detergent bottle", `_VESSELS`)
-        return first is None or m == 1 and words[j] not in _VESSELS and len(set(self.heads.get(words[j], []))) > 1 \
+        return first is None or m == 1 and words[j] not in _VESSELS \
             and self.catalog.categories[first].pickable and self.text.raw[i] == words[i]
 
     def color_before(self, i: int) -> int | None:
@@ -1497,7 +1532,11 @@ class _Reader:
         no furniture is named with are drawers of their own."""
         cat = self.catalog.categories[category]
         last = i + n - 1
-        if cat.placement != ["inside"] or prev in _COUNTS or prev in _INDEFINITE:
+        if cat.placement != ["inside"] or prev in _COUNTS:
+            return False
+        if self.part_said_again(i, n, category, prev):
+            return True
+        if prev in _INDEFINITE:
             return False
         start = self.text.sentence_start(i)
         start = self.text.sentence_start(start - 1) if start > 0 else start  # or the one before
@@ -1512,7 +1551,32 @@ class _Reader:
         if i > start:
             before = self.text.words[i - 1]
             named += [c for c in self.recent if before in self.used.get(c, ())]
-        return any(self.holds_as_part(cat, other) for other in named if other not in (None, category))
+        holders = {other for other in named if other not in (None, category) and self.holds_as_part(cat, other)}
+        self.part_holders.setdefault(category, set()).update(h for h in holders if h in self.kinds)
+        return bool(holders)
+
+    def part_said_again(self, i: int, n: int, category: str, prev: str) -> bool:
+        """Whether a part of furniture (a drawer) said again, anywhere after the text named it as
+        one piece of furniture's own ("goes into the nightstand drawer", "keep them in the desk
+        drawer"), is that part: "the drawer" (as far back as it was named), or "a drawer" as the
+        subject that opens its clause, a sound or a sight of the part ("SFX: A DRAWER SLIDES
+        SHUT", "Later a drawer bangs"). Not when a second piece of furniture that holds such a
+        part is named, nor "a drawer" after a verb or preposition ("put the pens in a drawer",
+        "there is a drawer"), nor one a place or "of" follows ("a drawer in the hall"): a drawer
+        of its own."""
+        holders = self.part_holders.get(category, set())
+        if len(holders) != 1 or prev not in _DEMONSTRATIVE | _INDEFINITE:
+            return False
+        cat = self.catalog.categories[category]
+        if any(self.holds_as_part(cat, other) for other in self.kinds if other not in holders):
+            return False
+        if prev in _DEMONSTRATIVE:
+            return True
+        words, gaps, end = self.text.words, self.text.gaps, i + n
+        opens = i == 1 or i > 1 and (_SENTENCE_END.search(gaps[i - 1]) is not None or ":" in gaps[i - 1]
+                                     or words[i - 2] in _OPENING_ADVERBS)
+        placed = end < len(words) and (words[end] in _PREPOSITIONS or words[end] in _LOCATING)
+        return opens and not placed
 
     def holder_in_name(self, i: int, n: int, category: str) -> str | None:
         """The piece of furniture a part's own name starts with ("the dresser drawers", a name the
@@ -2015,7 +2079,9 @@ class _Reader:
                 i += room  # "Laundry room - FAQ": the task's room, no laundry in it
                 continue
             if (holder := self.holder_in_name(i, n, category)) is not None:
-                category = holder  # "the dresser drawers": the dresser
+                # "the dresser drawers": the dresser (whose drawer a later "the drawer" is)
+                self.part_holders.setdefault(category, set()).add(holder)
+                category = holder
             elif self.part_of_its_furniture(i, n, category, prev):
                 i += n  # "file it in the filing cabinet - the drawer may be pulled out": its drawer
                 continue
@@ -2032,11 +2098,18 @@ class _Reader:
                     self.colors[category] = words[told]
                 i += n
                 continue
-            if shared is None and (glossed := self.glossed(i, category) or self.renamed_fuller(i, n, category)) is not None:
+            if shared is None and (glossed := self.glossed(i, n, category) or self.renamed_fuller(i, n, category)) is not None:
                 # "Cupboard on wall (wall cabinet, over sink)": one thing, named by the fuller name
                 del self.kinds[glossed]
                 self.recent.remove(glossed)
                 self.particular.discard(glossed)
+            if shared is None and (spare_of := self.glossed_spare(i, n, category)) is not None:
+                # "The spare field book (yellow notebook)": the spare is the notebook
+                before, spare = spare_of
+                del self.kinds[before].instances[spare]
+                if not self.kinds[before].instances and not self.kinds[before].generic:
+                    del self.kinds[before]
+                    self.recent.remove(before)
             kind = self.kinds.setdefault(category, _Kind())
             self.first_at.setdefault(category, i)
             if (subject := self.unnamed_subject(i)) is not None:
