@@ -7,13 +7,19 @@ in each test's docstring).
 - a modal doubt said with its own negation ("A tape roll may or may not be on the cart. If
   present, ...", "may or may not lie on the floor. If it does, ..."): read as the modal alone;
 - a bracketed appositive of "one" between a thing and its place ("left a mug (the blue one) on
-  the desk. If so, ..."): read as between commas."""
+  the desk. If so, ..."): read as between commas;
+- a condition typed without its comma before an instruction to report to the speaker ("If the
+  mug is missing let me know", "if the heater's on tell us"): the speaker ("me", "us") is the
+  instruction's object, so the condition ends before the verb."""
 
 from __future__ import annotations
 
 import pytest
-from reading import asks, factors
+from dataclasses import replace
 
+from reading import CATALOG, asks, brief, factors
+
+from logicenveval.offline.analysis import analyse, nest
 from logicenveval.offline.sentences import unquote
 
 #: a thing, a modal doubt with its negation, then an elliptical condition taking the clause up:
@@ -106,3 +112,58 @@ def test_bracketed_gloss_stays_a_bracket() -> None:
     assert unquote("left the headset (headphones) on the table") == "left the headset (headphones) on the table"
     assert unquote("Take the mug (the blue one). Then wash up.") == "Take the mug (the blue one). Then wash up."
     assert "(" not in unquote("left a mug (the blue one) on the desk")
+
+
+#: a condition without its comma, then an instruction whose object is the speaker: (text, rooms,
+#: the condition, the value the instruction falls under, the instruction's first words). Before
+#: the rule 0 of 8 put the instruction under its value (the condition ran on to the sentence's
+#: end, so neither answer held an instruction)
+REPORT_BACK = [
+    # a flatmate's note: an absence, "let me know"
+    ("If the mug is missing let me know.", ("kitchen",), "exists(mug)", "no", "let me know"),
+    # a landlord's message: a device's state, "tell us"
+    ("If the heater is still on tell us and we will sort it.", ("living_room",), "state(radiator, toggled_on)",
+     "yes", "tell us"),
+    # a parent's text in small letters: wet, "text me"
+    ("if the towel is wet phone me pls", ("bathroom",), "state(towel, wet)", "yes", "phone me"),
+    # a dislocated subject: a negated presence, "let us know"
+    ("The laptop - if it isn't there let us know.", ("office",), "exists(laptop)", "no", "let us know"),
+    # an office rule: open, "call me" and an adverbial
+    ("If the fridge is open call me straight away.", ("kitchen",), "state(fridge, open)", "yes", "call me"),
+    # a formal register: "inform us"
+    ("Should the kettle be dirty inform us at once.", ("kitchen",), "state(kettle, dirty)", "yes", "inform us"),
+    # a carer's note: on the floor, "call me"
+    ("If the blanket is on the floor call me.", ("bedroom",), "on(blanket, floor)", "yes", "call me"),
+    # a chat message: "give me a shout"
+    ("if the lamp's on give me a shout", ("bedroom",), "state(table_lamp, toggled_on)", "yes", "give me"),
+]
+
+
+def _instruction_under(text: str, rooms: tuple[str, ...], condition: str) -> dict[str, str]:
+    """The plan `analysis.nest` builds under each value of the condition's factor, joined."""
+    asked = [f for f in analyse(brief(text, rooms), CATALOG).factors
+             if {condition, f"not {condition}"} <= set(f.values.values())]
+    if not asked:
+        return {}
+    tree = nest([replace(asked[0], context=[])])
+    return {("yes" if cond == condition else "no"): " ".join(tree["branches"][v].get("plan") or []).lower()
+            for v, cond in asked[0].values.items()}
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition", "value", "words"), REPORT_BACK)
+def test_report_back_without_comma_is_the_instruction(text: str, rooms: tuple[str, ...], condition: str,
+                                                      value: str, words: str) -> None:
+    """"If the mug is missing let me know" (`benchmarks/condition_forms.py`, "if, no comma"): the
+    speaker as a verb's object makes it an instruction (`clauses.OBJECT_STARTS`), which ends a
+    condition typed without its comma (`clauses._imperative_cut`)."""
+    under = _instruction_under(text, rooms, condition)
+    other = "no" if value == "yes" else "yes"
+    assert words in under.get(value, "") and words not in under.get(other, ""), under
+
+
+def test_speaker_after_a_preposition_stays_in_the_condition() -> None:
+    """"next to me": the speaker after a preposition is no instruction's object, and the
+    condition runs on to the instruction after it."""
+    under = _instruction_under("If the lamp is on next to me switch it off.", ("bedroom",),
+                               "state(table_lamp, toggled_on)")
+    assert "switch it off" in under.get("yes", ""), under

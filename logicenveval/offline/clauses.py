@@ -350,7 +350,10 @@ def verbless(words: list[str]) -> bool:
 OBJECT_STARTS = ARTICLES | frozenset({"it", "them", "up", "out", "back", "away", "down", "off", "over",
                                       "with", "at", "from", "onto", "into",
                                       # a doll or a teddy spoken of as a person ("put her there")
-                                      "her", "him"})
+                                      "her", "him",
+                                      # the speaker as the object: an instruction to report back
+                                      # ("let me know", "tell us", "text me", "give me a shout")
+                                      "me", "us"})
 #: a heading ends where its instruction starts: at a colon, a question mark or a spaced dash
 _HEADING = re.compile(r"^(?P<head>[^:?\u2013]+?)(?P<mark>\?|:|\s+(?:-|\u2013)\s+)(?P<rest>.*)$", re.S)
 
