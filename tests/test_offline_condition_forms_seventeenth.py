@@ -10,7 +10,9 @@ in each test's docstring).
   the desk. If so, ..."): read as between commas;
 - a condition typed without its comma before an instruction to report to the speaker ("If the
   mug is missing let me know", "if the heater's on tell us"): the speaker ("me", "us") is the
-  instruction's object, so the condition ends before the verb."""
+  instruction's object, so the condition ends before the verb;
+- a plural pronoun in a time clause after a thing named in the singular in the same clause ("If
+  the lamp is still on when they've gone"): the people the time is told by, not the thing."""
 
 from __future__ import annotations
 
@@ -167,3 +169,43 @@ def test_speaker_after_a_preposition_stays_in_the_condition() -> None:
     under = _instruction_under("If the lamp is on next to me switch it off.", ("bedroom",),
                                "state(table_lamp, toggled_on)")
     assert "switch it off" in under.get("yes", ""), under
+
+
+#: a condition on a thing named in the singular, then a time clause whose subject is "they" (the
+#: people): (text, rooms, the condition asked, the presence that must not be asked). Before the
+#: rule 3 of 6 were read without asking the thing's presence (the other three asked it too: "gone"
+#: read of the thing)
+TIME_CLAUSE_PEOPLE = [
+    # a party host's note
+    ("If the lamp is still on when they've gone, switch it off.", ("living_room",),
+     "state(table_lamp, toggled_on)", "exists(table_lamp)"),
+    # an office closing rule: "once they have left", a device
+    ("Unless the heater is off once they have left, turn it off.", ("office",),
+     "state(radiator, toggled_on)", "exists(radiator)"),
+    # a holiday-let card: "after they've gone", a place
+    ("If the towel is on the floor after they've gone, hang it up.", ("bathroom",), "on(towel, floor)", "exists(towel)"),
+    # a B&B owner's text in small letters: "when the last of them's gone"
+    ("if the kettle is still on when the last of them's gone switch it off", ("kitchen",),
+     "state(kettle, toggled_on)", "exists(kettle)"),
+    # a caretaker's rota: "once they've all gone", open
+    ("If the fridge is open once they've all gone, shut it.", ("kitchen",), "state(fridge, open)", "exists(fridge)"),
+    # a formal register: an inverted "should", "when the last of them has gone"
+    ("Should the desk lamp still be on when the last of them has gone, switch it off.", ("office",),
+     "state(desk_lamp, toggled_on)", "exists(desk_lamp)"),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition", "not_asked"), TIME_CLAUSE_PEOPLE)
+def test_they_in_a_time_clause_are_people(text: str, rooms: tuple[str, ...], condition: str,
+                                          not_asked: str) -> None:
+    """"If the lamp is still on when they've gone" (docs/reader.md "What it still misreads"): the
+    time clause's "they" is no mention of the lamp (`analysis._in_time_clause`)."""
+    assert asks(text, rooms, condition), factors(text, rooms)
+    assert not asks(text, rooms, not_asked), factors(text, rooms)
+
+
+def test_they_of_a_plural_thing_in_a_time_clause_stays_the_thing() -> None:
+    """A plural thing named before the time clause is what "they" take up ("the cups ... when
+    they have dried")."""
+    assert asks("If the cups are still on the table when they have dried, put them away.", ("living_room",),
+                "on(cup, coffee_table)")
