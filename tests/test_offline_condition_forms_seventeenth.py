@@ -18,9 +18,9 @@ in each test's docstring).
 
 from __future__ import annotations
 
-import pytest
 from dataclasses import replace
 
+import pytest
 from reading import CATALOG, asks, brief, factors
 
 from logicenveval.offline.analysis import analyse, nest
