@@ -974,6 +974,13 @@ class _Reader:
                     listed.append(m)
                 # the place spoken about first in the clause ("the floor ... a toy on it")
                 before = [m for m in places if m not in listed][:1]
+            if w in ("they", "them") and before and _in_time_clause(words, i) and not any(
+                    r in self.plural for m in before for r in m.roles):
+                # "If the lamp is still on when they've gone", "unless the heater is off once they
+                # have left": a plural pronoun in a time clause after a thing named in the singular
+                # in the same clause is the people the time is told by (as after a topic, below),
+                # not the thing, whose absence "gone" would ask
+                continue
             if before:
                 found.append(Mention(before[-1].roles, i, i + 1,
                                      "pronoun" if before[-1].kind == "role" else before[-1].kind))

@@ -292,6 +292,13 @@ PRESENCE_DETERMINERS = frozenset({"the", "a", "an", "your", "my", "our", "his", 
 _PRESENCE_FILLERS = frozenset({"ever", "still", "do", "does", "did"})
 
 
+#: a time said after a word of presence ("if the mug is there right now", "if it's still there
+#: this morning"): when the thing is there, not where (`TRAILING_ADVERBIALS`); not "already",
+#: which makes the condition the instruction's result (`analysis._Reader._already`), nor a
+#: place ("in there")
+_PRESENCE_TIMES = frozenset(TRAILING_ADVERBIALS) - {"already", "in there", "in here"}
+
+
 #: the finite words a presence question opens with ("Is the mug there?", "Isn't the remote here?")
 _PRESENCE_QUESTION = frozenset({"is", "are", "was", "were"})
 #: modals before "be" in a presence condition ("if the mug might still be there", "should the
@@ -343,8 +350,8 @@ def _presence(words: list[str]) -> bool | None:
             rest = rest[1:]
         negated = rest[:1] == ["not"]
         rest = rest[negated:]
-        if rest[:1] == ["anywhere"] and rest[1:2] != ["else"] or len(rest) in (1, 3) and rest[0] in PRESENT \
-                and rest[1:] in ([], ["at", "all"]):
+        if rest[:1] == ["anywhere"] and rest[1:2] != ["else"] or rest[:1] and rest[0] in PRESENT \
+                and (rest[1:] in ([], ["at", "all"]) or " ".join(rest[1:]) in _PRESENCE_TIMES):
             return negated
     return None
 
@@ -376,7 +383,10 @@ def verbless(words: list[str]) -> bool:
 OBJECT_STARTS = ARTICLES | frozenset({"it", "them", "up", "out", "back", "away", "down", "off", "over",
                                       "with", "at", "from", "onto", "into",
                                       # a doll or a teddy spoken of as a person ("put her there")
-                                      "her", "him"})
+                                      "her", "him",
+                                      # the speaker as the object: an instruction to report back
+                                      # ("let me know", "tell us", "text me", "give me a shout")
+                                      "me", "us"})
 #: a heading ends where its instruction starts: at a colon, a question mark or a spaced dash
 _HEADING = re.compile(r"^(?P<head>[^:?\u2013]+?)(?P<mark>\?|:|\s+(?:-|\u2013)\s+)(?P<rest>.*)$", re.S)
 

@@ -610,6 +610,25 @@ _TO_BE_CHECKED = re.compile(r",?\s+(?:still\s+|yet\s+)?to\s+be\s+(?:checked|conf
                             r"\s+(?=(?:on|in|inside|under|by|near|at)\s)", re.I)
 
 
+#: a modal doubt said with its own negation after a thing ("A tape roll may or may not be on the
+#: cart", "the mug might or might not lie on the floor", "the lamp may, or may not, still be on"):
+#: the negation only says the doubt runs both ways, which a modal alone already says, so it is
+#: read as the modal ("may be on the cart") and a following "If so" / "If present" / "If it
+#: does" takes up the clause as after "may be". After an existential "there" the doubt is
+#: whether there is one at all ("there may or may not be bread"), which the readers of presence
+#: read as such, so it is kept
+_MODAL_DOUBT = re.compile(r"(?<!there )\b(may|might|could)\s*,?\s+or\s+(?:may|might|could)\s+not\s*,?(?=\s)", re.I)
+
+
+#: a bracketed appositive of "one" between a thing and its place ("left a mug (the blue one) on
+#: the desk", "a towel (the big white ones) in the hamper"): it only tells the thing apart, as the
+#: same words between commas do, but a bracket cuts the clause (`clauses.clause_spans`) and
+#: parts the thing from its place; it is read between commas. Only "one"/"ones" after a
+#: determiner: a bracketed noun is a gloss or a fuller name (`naming.glossed`), kept as it is
+_ONE_APPOSITIVE = re.compile(r"\s*\(((?:the|my|your|his|her|our|their|that|this)\s+(?:[A-Za-z'-]+\s+){0,3}ones?)\)"
+                             r"(?=\s+(?:on|in|inside|under|by|near|next to|beside|behind|at|onto|into)\s)", re.I)
+
+
 #: a formula of politeness before an instruction's verb ("be good enough to examine the towel",
 #: "be so kind as to shut it"): it asks the listener to act, as the bare verb does, and is dropped
 _POLITE = re.compile(r"\bbe (?:so )?(?:good|kind)(?: enough to| as to)\s+", re.I)
@@ -1175,6 +1194,7 @@ def unquote(text: str) -> str:
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
     text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_dictated(_runs_on(_modern(_NATIVE_IF.sub(_native_if, text))))))))
     text = _TO_BE_CHECKED.sub(" may be ", _OTHER_THAN.sub(r"\1 else than", text))
+    text = _ONE_APPOSITIVE.sub(r", \1,", _MODAL_DOUBT.sub(r"\1", text))
     text = _OPEN_DISJUNCTION.sub(_open_disjunction, text)
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), _SPELLED[m.group(0).lower()]), text))
     text = starred(_TIME_STAMP.sub(r"\1", _CITATION.sub("", _MARKDOWN_HEADING.sub(r"\g<title>:", text))))
