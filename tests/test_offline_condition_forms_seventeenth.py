@@ -12,9 +12,7 @@ in each test's docstring).
   mug is missing let me know", "if the heater's on tell us"): the speaker ("me", "us") is the
   instruction's object, so the condition ends before the verb;
 - a plural pronoun in a time clause after a thing named in the singular in the same clause ("If
-  the lamp is still on when they've gone"): the people the time is told by, not the thing;
-- a presence said with a time after it ("if the mug is there right now", "if it's still there
-  this morning"): still whether the thing is there at all."""
+  the lamp is still on when they've gone"): the people the time is told by, not the thing."""
 
 from __future__ import annotations
 
@@ -24,7 +22,6 @@ import pytest
 from reading import CATALOG, asks, brief, factors
 
 from logicenveval.offline.analysis import analyse, nest
-from logicenveval.offline.clauses import presence_asked
 from logicenveval.offline.sentences import unquote
 
 #: a thing, a modal doubt with its negation, then an elliptical condition taking the clause up:
@@ -212,41 +209,3 @@ def test_they_of_a_plural_thing_in_a_time_clause_stays_the_thing() -> None:
     they have dried")."""
     assert asks("If the cups are still on the table when they have dried, put them away.", ("living_room",),
                 "on(cup, coffee_table)")
-
-
-#: a condition asking whether a thing is there, a time adverbial after "there": (text, rooms, the
-#: presence asked). Before the rule 0 of 7 were asked
-PRESENCE_THEN_TIME = [
-    # a colleague's note: "right now"
-    ("If the mug is there right now, put it away.", ("office",), "exists(mug)"),
-    # a carer's log: "still there this morning"
-    ("Check the blanket. If it's still there this morning, put it in the laundry basket.", ("bedroom",),
-     "exists(blanket)"),
-    # a formal register: an inverted "should", "at the moment"
-    ("Should the umbrella be there at the moment, leave it by the door.", ("living_room",), "exists(umbrella)"),
-    # a chat message in small letters: "there again"
-    ("the remote - if its there again, pls put it on the tv stand", ("living_room",), "exists(remote_control)"),
-    # a question form: "there today"
-    ("Is the laptop there today? If so, put it on the desk.", ("office",), "exists(laptop)"),
-    # a negated presence: "not there tonight"
-    ("If the kettle is not there tonight, tell me.", ("kitchen",), "exists(kettle)"),
-    # a landlord's note: "there by now", a plural
-    ("If the towels are there by now, hang them on the rail.", ("bathroom",), "exists(towel)"),
-]
-
-
-@pytest.mark.parametrize(("text", "rooms", "condition"), PRESENCE_THEN_TIME)
-def test_presence_with_a_time_after_it_is_asked(text: str, rooms: tuple[str, ...], condition: str) -> None:
-    """"If the mug is there right now" (`benchmarks/condition_forms.py`, the "trailing" verb group
-    of the state "there"): a time after "there" says when, not where (`clauses._presence`,
-    `sentences.TRAILING_ADVERBIALS`)."""
-    assert asks(text, rooms, condition), factors(text, rooms)
-
-
-def test_presence_with_a_place_after_it_asks_more() -> None:
-    """"there on the desk", "there or on the floor": a place after "there" is asked, not the
-    presence alone; "unless it is there already" is still the instruction's result."""
-    assert presence_asked(["the", "mug", "is", "there", "on", "the", "desk"]) is None
-    assert presence_asked(["it", "is", "there", "or", "on", "the", "floor"]) is None
-    assert presence_asked(["it", "is", "there", "already"]) is None
-    assert presence_asked(["it", "is", "there", "right", "now"]) is False

@@ -292,13 +292,6 @@ PRESENCE_DETERMINERS = frozenset({"the", "a", "an", "your", "my", "our", "his", 
 _PRESENCE_FILLERS = frozenset({"ever", "still", "do", "does", "did"})
 
 
-#: a time said after a word of presence ("if the mug is there right now", "if it's still there
-#: this morning"): when the thing is there, not where (`TRAILING_ADVERBIALS`); not "already",
-#: which makes the condition the instruction's result (`analysis._Reader._already`), nor a
-#: place ("in there")
-_PRESENCE_TIMES = frozenset(TRAILING_ADVERBIALS) - {"already", "in there", "in here"}
-
-
 #: the finite words a presence question opens with ("Is the mug there?", "Isn't the remote here?")
 _PRESENCE_QUESTION = frozenset({"is", "are", "was", "were"})
 #: modals before "be" in a presence condition ("if the mug might still be there", "should the
@@ -350,8 +343,8 @@ def _presence(words: list[str]) -> bool | None:
             rest = rest[1:]
         negated = rest[:1] == ["not"]
         rest = rest[negated:]
-        if rest[:1] == ["anywhere"] and rest[1:2] != ["else"] or rest[:1] and rest[0] in PRESENT \
-                and (rest[1:] in ([], ["at", "all"]) or " ".join(rest[1:]) in _PRESENCE_TIMES):
+        if rest[:1] == ["anywhere"] and rest[1:2] != ["else"] or len(rest) in (1, 3) and rest[0] in PRESENT \
+                and rest[1:] in ([], ["at", "all"]):
             return negated
     return None
 
