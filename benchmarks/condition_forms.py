@@ -136,7 +136,10 @@ STATES: dict[str, State] = {s.name: s for s in (
 #: printed apart so that the forms added since do not hide a fall
 OLD_STATES = tuple(STATES)[:11]
 
-#: kinds by state: (catalog kind, the noun used, its room, a possessive or article)
+#: kinds by state: (catalog kind, the noun used, its room, a possessive or article); "my hand
+#: towel" expected the kind `towel` until the seventeenth session, though the catalog has a
+#: `hand_towel` the reader rightly names: 336 of the new cells' 677 misreads were that entry's
+#: (new cells 0.8809 / 0.8773 -> 0.9224 / 0.9180 with it fixed; the old grid does not use it)
 KINDS: dict[str, tuple[tuple[str, str, str, str], ...]] = {
     "on": (("table_lamp", "lamp", "living_room", "the"), ("television", "telly", "bedroom", "your"),
            ("kettle", "kettle", "kitchen", "the")),
@@ -152,7 +155,7 @@ KINDS: dict[str, tuple[tuple[str, str, str, str], ...]] = {
     "on the floor": (("sock", "sock", "bedroom", "a"), ("towel", "towel", "bathroom", "the")),
     "missing": (("mug", "mug", "kitchen", "the"), ("table_lamp", "lamp", "bedroom", "your")),
     "there": (("mug", "mug", "office", "the"), ("remote_control", "remote", "living_room", "the"),
-              ("towel", "hand towel", "bathroom", "my")),
+              ("hand_towel", "hand towel", "bathroom", "my")),
 }
 
 #: how the subject of the condition is said: a noun phrase, a pronoun after the thing was named
