@@ -142,15 +142,16 @@ def _stated(choice: dict[str, RoleChoice], brief: Mapping[str, Any], facts: list
     """States the description gives a thing outright ("the ceiling fan in there is broken":
     `analysis.stated_states`), for a present object whose state no situation fact speaks of: a
     reader of the text makes the fan broken, as `_described` puts a thing where the text says."""
-    spoken = {(pred.args[0], pred.args[1]) for text in facts for pred, _ in _literals(parse(text))
-              if pred.name == "state"}
     if not brief.get("description"):
         return
+    spoken = {(pred.args[0], pred.args[1]) for text in facts for pred, _ in _literals(parse(text))
+              if pred.name == "state"}
     for text in stated_states(brief, catalog):
         for pred, pos in _literals(parse(text)):
             c = choice.get(pred.args[0])
             if pred.name == "state" and c is not None and c.present and (pred.args[0], pred.args[1]) not in spoken:
                 _apply(choice, pred, pos)
+
 
 def _possible(choice: dict[str, RoleChoice], roles: dict[str, Any], catalog: Catalog) -> None:
     """A placement the scene's words rule out (`llm.scene_words`: furniture rests on nothing, an
