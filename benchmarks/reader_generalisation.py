@@ -273,8 +273,8 @@ prints LogCov / SceVR / FauDR for each, then per task:
   written in the eighteenth session (beside dev 35, each in its own family of registers) in
   registers of tram and bus transit operations, ballet and dance, postal and parcel services,
   circus and stage magic, and locksmithing and home security no set used and the English of a
-  Bengali speaker: one rewording each of 3 built-in descriptions (a parcel courier's driver
-  delivery instructions, a circus ring crew's cue sheet, a bus driver's duty card) and six new
+  Bengali speaker: one rewording each of 3 built-in descriptions (a line-dance step sheet, a
+  circus ring crew's cue sheet, a bus driver's duty card) and six new
   tasks in rooms none of the sets above use (a tram depot's notice to drivers, a ballet
   mistress's rehearsal notes, a sub-postmaster's instructions to a relief, a stage magician's
   routine sheet, a locksmith's home security survey, a Bengali aunt's note about the shobar

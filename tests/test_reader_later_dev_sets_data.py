@@ -130,8 +130,8 @@ dev 36 was written in the eighteenth session beside dev 35 (each in its own fami
 neither opened by the other): registers of tram and bus transit operations, ballet and dance,
 postal and parcel services, circus and stage magic, and locksmithing and home security (a tram
 depot's notice to drivers, a ballet mistress's rehearsal notes, a sub-postmaster's instructions to
-a relief, a stage magician's routine sheet, a locksmith's home security survey, a parcel courier's
-driver delivery instructions, a circus ring crew's cue sheet, a bus driver's duty card) and the
+a relief, a stage magician's routine sheet, a locksmith's home security survey, a line-dance step
+sheet, a circus ring crew's cue sheet, a bus driver's duty card) and the
 English of a Bengali speaker, in room ids beginning with a letter n-z.
 """
 
