@@ -70,7 +70,13 @@ def _context() -> z3.Context:
 
 
 class _Literals:
-    """Literals as z3 booleans with the physical axioms over the atoms they mention."""
+    """Literals as z3 booleans with the physical axioms over the atoms they mention.
+
+    Not `logic.axioms.Axioms`, whose axioms these resemble: a reply's factor is checked before any
+    role table is bound, so every subject it names is present unless the factor asks (no optional
+    roles), a room is the exact room the reply names (not its type, `room_type_of`), and nothing is
+    said of a thing resting on itself or of its support's existence. Sharing `Axioms` would change
+    which replies are re-asked, a change of request protocol (`MEANING_KEY`), so the two stay."""
 
     def __init__(self, conditions: Sequence[Sequence[dict[str, Any]]]) -> None:
         self.ctx = _context()

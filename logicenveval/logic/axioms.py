@@ -34,7 +34,12 @@ class Axioms:
     whose predicates were among them), for the roles `roles`.
 
     Each instance has its own z3 context, so instances in different threads never share solver
-    state and a result never depends on earlier solves in the process."""
+    state and a result never depends on earlier solves in the process.
+
+    Not `llm.meaning._Literals`: that one checks a model's reply literals with no role table (every
+    subject present unless asked, rooms by exact id), and its findings decide what a model is
+    asked again; these axioms hold a task's roles (optional ones, room types, supports), as the
+    benchmark's trees are checked."""
 
     def __init__(self, roles: Mapping[str, Role], conds: Iterable[Cond]) -> None:
         self.ctx = z3.Context()

@@ -460,8 +460,16 @@ def _participle(words: list[str], k: int) -> bool:
 
 #: what fills a container: "there is water in it" says it is filled
 FILLINGS = frozenset({"water", "coffee", "tea", "milk", "juice", "soup", "liquid", "fluid", "oil"})
-#: the subordinators of a time clause ("when you come in", "once we're back")
-_TIME_CUES = frozenset({"when", "whenever", "once"})
+#: the words that open a clause telling a time ("when they have gone", "once they've left",
+#: "until the last of them leaves"): a plural pronoun right after one is the people the time is
+#: told by (`_in_time_clause`)
+_TIME_OPENERS = frozenset({"when", "whenever", "once", "after", "until", "till", "before"})
+#: of `_TIME_OPENERS`, those that say *at* what time a state is asked ("Spinning when you come
+#: in?", "still on once we've left?", `_before_time_clause`, as `clauses.AGENT_TIMES` tells the
+#: splitter): "before", "after", "until" with the reader as subject more often say by when or how
+#: long ("keep it on until you leave"), and cutting at them too would change what is read, so the
+#: narrower use stays a part of the one table, not a second list
+_TIME_CUES = _TIME_OPENERS - {"after", "until", "till", "before"}
 
 
 #: `TRAILING_ADVERBIALS` as word tuples
@@ -891,6 +899,30 @@ class _Reader:
                 return role
         return None
 
+    def _group_taken_up(self) -> bool:
+        """Whether a plural pronoun means the group its sentence takes up (`PLURAL_REFERENCE`:
+        "The cabinet has two drawers: one for forks, one for spoons. If they're open, shut them")
+        rather than a singular topic outside it (the cabinet)."""
+        return bool(self.group) and self.topic_kind == "role" and bool(self.topic) \
+            and not self.plural & set(self.topic) and not set(self.topic) <= set(self.group)
+
+    def _time_people(self, words: list[str], i: int, before: list[Mention]) -> bool:
+        """Whether the plural pronoun at word `i`, the subject of a time clause (`_in_time_clause`),
+        is the people the time is told by, not a thing ("If the lamp is still on when they've
+        gone", "unless the heater is off once they have left", "If it's still on when the last of
+        them's gone"): so when nothing it could mean is plural. What it could mean is the things
+        named before it in its clause (`before`), else, with none, a group its sentence takes up
+        (`_group_taken_up`: plural, so never the people), else the topic and the things named
+        lately. One test for both cases, a thing named in the clause or only before it, where two
+        branches of `mentions` once asked them apart; the thing's absence, which "gone" would ask,
+        is not read either way."""
+        if words[i] not in ("they", "them") or not _in_time_clause(words, i):
+            return False
+        if before:
+            return not any(r in self.plural for m in before for r in m.roles)
+        return self.topic_kind == "role" and not self._group_taken_up() and not self.plural & set(self.topic) \
+            and not any(r in self.plural for r in self.recent)
+
     def mentions(self, words: list[str], toks: list[tuple[str, int, int]], surface: list[str]) -> list[Mention]:
         """The clause's mentions of things, pronouns resolved; `surface`: its words as written."""
         found = [self._recent_first(m, words) for m in self.lex.find_mentions(toks) if not _verb_read(toks, m)]
@@ -974,13 +1006,8 @@ class _Reader:
                     listed.append(m)
                 # the place spoken about first in the clause ("the floor ... a toy on it")
                 before = [m for m in places if m not in listed][:1]
-            if w in ("they", "them") and before and _in_time_clause(words, i) and not any(
-                    r in self.plural for m in before for r in m.roles):
-                # "If the lamp is still on when they've gone", "unless the heater is off once they
-                # have left": a plural pronoun in a time clause after a thing named in the singular
-                # in the same clause is the people the time is told by (as after a topic, below),
-                # not the thing, whose absence "gone" would ask
-                continue
+            if self._time_people(words, i, before):
+                continue  # "If the lamp is still on when they've gone": the people, not the lamp
             if before:
                 found.append(Mention(before[-1].roles, i, i + 1,
                                      "pronoun" if before[-1].kind == "role" else before[-1].kind))
@@ -996,20 +1023,13 @@ class _Reader:
                 # ceiling fan named before it)
                 things = [r for r in self.recent if r not in self.lex.holders or self._carried(r)] or self.recent
                 found.append(Mention(prior[-1].roles if prior else (things[-1],), i, i + 1, "pronoun"))
-            elif w in ("they", "them") and self.group and self.topic_kind == "role" and self.topic \
-                    and not self.plural & set(self.topic) and not set(self.topic) <= set(self.group):
+            elif w in ("they", "them") and self._group_taken_up():
                 # "The cabinet has two drawers: one for forks, one for spoons. If they're open,
                 # shut them": a plural pronoun in a sentence that takes up a group (`PLURAL_REFERENCE`)
                 # is the group, not a singular topic outside it (the cabinet); so is an elided
                 # subject after it ("Check each of them; if open, ...")
                 self.topic = self.group
                 found.append(Mention(self.group, i, i + 1, "pronoun"))
-            elif w in ("they", "them") and self.topic_kind == "role" and not self.plural & set(self.topic) \
-                    and not any(r in self.plural for r in self.recent) and _in_time_clause(words, i):
-                # "If it's still on when the last of them's gone", "once they have left": a plural
-                # pronoun in a time clause, with nothing plural named, is the people the time is
-                # told by, not the singular thing spoken of (whose absence "gone" would ask)
-                pass
             elif w in ("they", "them") and self.topic_kind == "role" and not self.plural & set(self.topic) \
                     and not self.coordinated and any(r in self.plural for r in self.recent) \
                     and not (self.parts_last or any(words[k] in PARTS and k in self.plural_at for k in range(i))):
@@ -1731,7 +1751,12 @@ class _Reader:
         """Where the predicate goes on after a short aside set off by commas right after the
         subject ("The remote, as ever, belongs on the stand", "the key, I think, is in the
         drawer"): the aside says nothing of the thing, and its place is read after it. An aside
-        naming a thing or a place ("the mug, on the desk, ...", "the mug, the plate ...") is none."""
+        naming a thing or a place ("the mug, on the desk, ...", "the mug, the plate ...") is none.
+
+        Not `sentences.COMMENT_ASIDES`: those named comment adverbials are dropped from the whole
+        text before any reading (a condition's or a state's too); this passes over any short
+        aside ("I think", "if memory serves"), but only between a subject and its place, where
+        an unnamed aside can hide nothing else."""
         if k not in self.commas:
             return k
         end = next((j for j in sorted(self.commas) if k < j <= k + ASIDE_WORDS), None)
@@ -2379,10 +2404,6 @@ def _available(reader: _Reader, text: str) -> list[Fact]:
     return []
 
 
-#: the words that open a clause telling a time ("when they have gone", "once they've left")
-_TIME_OPENERS = frozenset({"when", "once", "after", "until", "till", "before", "whenever"})
-
-
 def _in_time_clause(words: list[str], i: int) -> bool:
     """Whether the pronoun at word `i` is the subject of a time clause: a time word
     (`_TIME_OPENERS`) right before it, or before "the last/rest/first of" it ("when the last of
@@ -2531,8 +2552,15 @@ def _cataphor(reader: _Reader, condition: str, main: str) -> tuple[str, ...] | N
 _INSTRUMENTAL = frozenset({"at", "with", "using"})
 
 
-#: verbs of an instruction whose particle says the state it leaves ("switch it off", "turn it on")
-_SETTERS = frozenset({"switch", "turn", "flick", "put", "shut", "power"})
+#: verbs whose particle says the state they leave ("switch off the lamp", "turn the lights on",
+#: "shut the laptop down"), and what each particle says
+_PARTICLE_VERBS = frozenset({"switch", "turn", "flick", "power", "shut"})
+_PARTICLES = {"on": "on", "off": "off", "down": "off", "out": "off"}
+#: the verbs of an instruction whose particle, right after its pronoun, says the state it leaves
+#: (`_undone`: "switch it off", "turn them on", "put it on"): `_PARTICLE_VERBS` and "put", which
+#: sets a state only in that tight order ("put the kettle on" may be a place's "on", so
+#: `_elided`, which looks a few words on, leaves it out)
+_SETTERS = _PARTICLE_VERBS | {"put"}
 #: verbs that, said of a running device, switch it off with no particle ("if it's still going kill
 #: it", "if the fan is still whirring, stop it"): the state word they mean
 _STOPPERS = {"kill": "off", "stop": "off"}
@@ -2544,7 +2572,11 @@ def _undone(reader: _Reader, condition: str, instruction: str) -> list[Fact]:
     read off its answer: an instruction
     that sets a state of the thing the condition's pronoun means ("if they've been drawn, open
     them": not open; "if it's been left like that, switch it off": on). Only when both clauses
-    speak of the thing by a pronoun, the thing is the topic and can take the state."""
+    speak of the thing by a pronoun, the thing is the topic and can take the state.
+
+    Not `_elided`: that one reads a condition that *says* "already"/"yet" and takes the state from
+    anywhere in its instruction; this one reads a condition it cannot read at all, so it trusts
+    only an instruction that opens with the setting verb and the pronoun, and answers "not yet"."""
     said = {w for w, _, _ in tokens(expand(condition).lower())}
     words = [w for w, _, _ in tokens(expand(instruction).lower())]
     if not said & {"it", "they"} or not reader.topic or reader.topic_kind != "role" or len(words) < 2:
@@ -2568,10 +2600,6 @@ RESULT_VERBS: dict[str, str] = {
     "close": "closed", "shut": "shut", "open": "open", "empty": "empty", "fill": "full", "refill": "full",
     "clean": "clean", "wash": "clean", "dry": "dry",
 }
-#: verbs whose particle says the state they leave ("switch off the lamp", "turn the lights on",
-#: "shut the laptop down"), and what each particle says
-_PARTICLE_VERBS = frozenset({"switch", "turn", "flick", "power", "shut"})
-_PARTICLES = {"on": "on", "off": "off", "down": "off", "out": "off"}
 #: the words an elided condition has besides its subject ("if it isn't already", "unless they
 #: already are", "if it has not been yet"): no state, place or thing of its own
 _ELIDED_WORDS = ALREADY_FILLER | {"has", "have", "had", "done", "do", "does", "did", "pls", "please"}
@@ -2584,7 +2612,11 @@ def _elided(reader: _Reader, condition: str, names: tuple[str, ...], instruction
     in, so that state is asked. The state is the instruction's particle ("switch off", "turn ...
     on") or its verb's result (`RESULT_VERBS`); a place ("put it in the sink unless it already
     is") is `_Reader._already`'s. Only of the thing the pronoun means (or, put first, the thing the
-    instruction names)."""
+    instruction names).
+
+    Not `_undone`: the condition here says by its "already"/"yet" that the instruction's state is
+    asked, so the state may be read further into the instruction and its polarity is the
+    condition's own "not"; `_undone` has no such word."""
     words = WORD.findall(expand(condition.split(",")[0]).lower())  # a vocative after a comma ("..., love")
     if not words or words[0] not in ("it", "they", "not", "already") or not set(words) & {"already", "yet"} \
             or not set(words[1:]) <= _ELIDED_WORDS:

@@ -35,6 +35,7 @@ from logicenveval.offline.sentences import (
     ACTIONS,
     ARROW,
     BELIEFS,
+    CLOSING_QUOTES,
     PERSONAL_SUBJECTS,
     STATE_WORDS,
     TRAILING_ADVERBIALS,
@@ -476,8 +477,11 @@ def _by_order(sentence: str) -> str:
 def ends_asking(text: str) -> bool:
     """Whether `text` ends with a question mark, inside closing quotation marks or not: a question
     quoted in a script or a story asks as one does without them ('"Is the kettle on the counter?"').
-    One test for the clause splitter (`_split`) and the analyser's answer labels (`analysis._asks`)."""
-    return text.rstrip().rstrip('"\u201d').rstrip().endswith("?")
+    One test for the clause splitter (`_split`) and the analyser's answer labels (`analysis._asks`).
+    Not `sentences._QUOTED_WHOLE`, which takes the marks off a capitalised whole question in the
+    text once; this sees each clause (lower-cased, or quoted in ways that leaves) and reads past
+    the same closing marks (`sentences.CLOSING_QUOTES`)."""
+    return text.rstrip().rstrip(CLOSING_QUOTES).rstrip().endswith("?")
 
 
 def _split(sentence: str) -> list[tuple[str, str | None, str]]:

@@ -206,13 +206,17 @@ _QUOTE_MARK = re.compile(r"^[ \t]*(?:>[ \t]?)+", re.M)
 #: reply names as its own ("My phone may be lying on the bed"); those sentences are dropped
 _FORUM_QUOTE = re.compile(r"^[ \t]*Quote from:[^\n]*\n(?P<lines>(?:[ \t]*>[^\n]*(?:\n|$))+)", re.M | re.I)
 _FIRST_PERSON = re.compile(r"\b(?:i|i'm|i've|i'd|me|my|mine|we|we're|we've|our|ours)\b", re.I)
+#: the marks that close a quotation: one table for `_QUOTED_WHOLE` and `clauses.ends_asking`
+CLOSING_QUOTES = "\"\u201d"
 _QUOTED_SENTENCE = re.compile(r"[^.!?\n]+(?:[.!?]+|$)")
 #: a whole question in double quotes, its question mark inside them (a call script's 'Ask: "Is the
 #: kettle on the counter?" YES: ...', a story's '"Is the fridge open?" YES: ...'): the marks only
 #: say who asks, and left in place they hide that the sentence is a question; it is read without
 #: them. Quoted words that end no question ('the "good" towel') keep their marks, and so does a
-#: quoted statement (a story's dialogue keeps its turns: '"The cauldron." She pointed at ...')
-_QUOTED_WHOLE = re.compile(r"[\"\u201c]([A-Z][^\"\u201c\u201d\n]{1,300}?\?)[\"\u201d]")
+#: quoted statement (a story's dialogue keeps its turns: '"The cauldron." She pointed at ...').
+#: (Not `clauses.ends_asking`, which tells a clause a question by the same closing marks: a
+#: quoted question this leaves in place, one opening in lower case or longer than a line, still asks)
+_QUOTED_WHOLE = re.compile(rf"[\"\u201c]([A-Z][^\"\u201c\u201d\n]{{1,300}}?\?)[{CLOSING_QUOTES}]")
 
 
 def _forum_quote(m: re.Match[str]) -> str:
@@ -760,7 +764,9 @@ _SUPPOSED_IF = re.compile(r"(?:(?<=^)|(?<=[.!?;:)\n])|(?<=[.!?;:)]\s)|(?<=\s-\s)
 #: comment adverbials a writer sets off with commas inside a clause ("The remote, as ever, belongs
 #: on the stand", "the kettle, of course, lives on the counter", "the mat is, as usual, on the
 #: floor"): they say what the writer thinks of the clause, nothing of the scene, and between a
-#: subject and its verb they hide the statement; dropped with their commas
+#: subject and its verb they hide the statement; dropped with their commas. (Not
+#: `analysis._Reader._aside_end`, which passes over any short aside but only before a place: a
+#: named list may drop its asides everywhere, an open one only where it hides no condition)
 COMMENT_ASIDES = ("as ever", "as always", "as usual", "of course", "naturally", "by the way",
                   "incidentally", "as you know", "as you'll know", "needless to say", "as it happens")
 _COMMENT_ASIDE = re.compile(rf"(?<=\w),\s+(?:{'|'.join(re.escape(a) for a in COMMENT_ASIDES)}),\s+(?=\w)", re.I)
