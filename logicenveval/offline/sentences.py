@@ -725,11 +725,14 @@ def predicate_state(clause: str) -> str:
 #: a device's sound said as the finite verb of a condition ("if the alarm clock rings, silence it",
 #: "when the timer beeps", "if it ring" in verse or a learner's English): the device is going, as
 #: "is ringing" says (`STATE_WORDS`); only right after a condition's cue and a short subject, so
-#: "the phone that rings" or "ring the bell" asks nothing
+#: "the phone that rings" or "ring the bell" asks nothing. A subject holds no copula and the verb
+#: no object: "if the lamp is on ring me", "if the fridge is open buzz us" end their condition at
+#: an instruction to call the speaker (the eighteenth session)
 SOUNDS = {"ring": "ringing", "rings": "ringing", "beep": "beeping", "beeps": "beeping",
           "buzz": "buzzing", "buzzes": "buzzing", "bleep": "beeping", "bleeps": "beeping"}
 _SOUNDING = re.compile(r"\b(if|when|whenever|unless|once|in\s+case)\s+((?:it|they|(?:the|my|your|our|his|her|this|that)"
-                       rf"(?:\s+[a-z]+){{1,3}}?))\s+({'|'.join(SOUNDS)})\b(?!\s+(?:the|a|an|my|your|it|them)\b)", re.I)
+                       r"(?:\s+(?!(?:is|are|was|were|be|been|being)\b)[a-z]+){1,3}?))\s+"
+                       rf"({'|'.join(SOUNDS)})\b(?!\s+(?:the|a|an|my|your|it|them|me|us)\b)", re.I)
 
 
 def _sounding(m: re.Match[str]) -> str:
