@@ -12,6 +12,9 @@ stay as they are; each table was measured before its rule (the counts in each ta
   on when they have gone? If so, ...", "Switch the lamp off when they have gone"): the time
   clause was cut off as a condition of its own, whose "they" took up the thing and whose "gone"
   asked the thing's absence;
+- a doubt said with a false friend ("Eventually my mug is also on the desk. Bring it to the
+  kitchen", French "éventuellement", German "eventuell"): the open statement the instruction after
+  it answers was read as a settled one ("in the end"), so its condition was never asked;
 - a trailing presence condition after a thing named by a place of nearness ("Wipe the table with
   the sponge by the sink, if it is still there"): "it" took up the thing worked on, not the thing
   the place was said of."""
@@ -168,3 +171,41 @@ def test_near_misses_of_a_thing_named_by_its_place() -> None:
     assert asks("Wipe the table with the sponge on the counter, if it is still there.", ("kitchen",),
                 "on(sponge, kitchen_counter)")
     assert asks("Put the mug by the sink, if it is still there.", ("kitchen",), "exists(mug)")
+
+
+#: "eventually" with a present-tense state of the scene, the false friend of "possibly", then what
+#: to do about it: (text, rooms, the condition asked). Before the rule 0 of 6 were asked
+EVENTUALLY_POSSIBLY = [
+    # a French speaker's email: "also", an instruction after it
+    ("Eventually my mug is also on the desk. Bring it to the kitchen.", ("office", "kitchen"), "on(mug, desk)"),
+    # a German speaker's note: an existential, "If so"
+    ("Eventually there is a towel on the bathroom floor. If so, hang it up.", ("bathroom",), "on(towel, floor)"),
+    # a Dutch speaker's chat: after the copula
+    ("The remote is eventually on the sofa. Put it on the coffee table.", ("living_room",),
+     "on(remote_control, sofa)"),
+    # an Italian speaker's house rules: a comma after it, plural
+    ("Eventually, the keys are in the bowl. Leave them there and lock the door.", ("hallway",), "inside(keys, bowl)"),
+    # a Spanish speaker's text: the instruction in the same sentence
+    ("Hi! Eventually the book is on the floor, then put it back on the shelf please.", ("bedroom",),
+     "on(book, floor)"),
+    # a Polish speaker's list: a semicolon, "you" and the steps
+    ("Eventually the blanket is on the couch; you fold it and put it in the basket.", ("living_room",),
+     "on(blanket, sofa)"),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), EVENTUALLY_POSSIBLY)
+def test_eventually_with_a_present_state_is_a_doubt(text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"Eventually my mug is also on the desk" (dev 14 study_desk_cleanup_d14): English "eventually"
+    says "in the end" only of an event, so with a state said now it is the hedge of French
+    "éventuellement" (`sentences._EVENTUAL_BEFORE`, `_EVENTUAL_AFTER`)."""
+    assert asks(text, rooms, condition), factors(text, rooms)
+
+
+def test_eventually_of_an_event_or_an_instruction_asks_nothing() -> None:
+    """Near misses: a future ("Eventually the kettle will boil"), an instruction ("Eventually, put
+    the mug in the sink") and a passive's participle ending a procedure ("Eventually the kettle is
+    switched off") keep "in the end"."""
+    assert not factors("Eventually the kettle will boil; then switch it off.", ("kitchen",))
+    assert not factors("Eventually, put the mug in the sink.", ("kitchen",))
+    assert not factors("Wash up. Eventually the kettle is switched off.", ("kitchen",))

@@ -603,6 +603,19 @@ def _open_disjunction(m: re.Match[str]) -> str:
     return f"{_match_case(m.group(0), 'maybe')} {opened}{m.group('gap')}{case}"
 
 
+#: "eventually" before or after a present-tense "is" / "are" of the scene ("Eventually my mug is
+#: also on the desk", "If eventually there is a document on the desk", "The remote is eventually on
+#: the sofa"): English says "in the end" only of an event to come or past, so a state said now with
+#: it is the false friend of French "éventuellement", Spanish and Italian "eventualmente", German
+#: "eventuell", Dutch "eventueel", Polish "ewentualnie": "possibly". Read as "perhaps" (before) and
+#: "may be" (after the copula); not before a passive's participle ("Eventually the kettle is
+#: switched off" is the end of a procedure), a future or a past ("eventually it will boil") nor
+#: an instruction ("Eventually, put the mug in the sink") (the eighteenth session)
+_NOT_PARTICIPLE = r"(?!\s+(?:also\s+|still\s+)?[a-z]+(?:ed|en)\b)"
+_EVENTUAL_BEFORE = re.compile(
+    r"\beventually\b,?(?=\s+(?:there\s+(?:is|are)\b|there's\b|(?:it|they|(?:my|the|your|our|his|her|this|that|a|an|some)"
+    rf"(?:\s+[a-z]+){{1,3}}?)\s+(?:is|are)\b{_NOT_PARTICIPLE}))", re.I)
+_EVENTUAL_AFTER = re.compile(rf"\b(?:is|are)\s+eventually\b{_NOT_PARTICIPLE}", re.I)
 #: a place said to be checked or confirmed ("1 towel, to be checked on the drying rack", "the
 #: spare key, still to be confirmed in the drawer") is left open, as "may be" leaves it: the
 #: writer does not know yet (read as "1 towel may be on the drying rack")
@@ -1197,6 +1210,7 @@ def unquote(text: str) -> str:
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
     text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_dictated(_runs_on(_modern(_NATIVE_IF.sub(_native_if, text))))))))
     text = _TO_BE_CHECKED.sub(" may be ", _OTHER_THAN.sub(r"\1 else than", text))
+    text = _EVENTUAL_AFTER.sub("may be", _EVENTUAL_BEFORE.sub(lambda m: _match_case(m.group(0), "perhaps"), text))
     text = _ONE_APPOSITIVE.sub(r", \1,", _MODAL_DOUBT.sub(r"\1", text))
     text = _OPEN_DISJUNCTION.sub(_open_disjunction, text)
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), _SPELLED[m.group(0).lower()]), text))
