@@ -15,6 +15,9 @@ stay as they are; each table was measured before its rule (the counts in each ta
 - a doubt said with a false friend ("Eventually my mug is also on the desk. Bring it to the
   kitchen", French "éventuellement", German "eventuell"): the open statement the instruction after
   it answers was read as a settled one ("in the end"), so its condition was never asked;
+- a quiz whose answer key is given apart from its questions ("Q1. <case>. What do you do? a) ...
+  b) ..." and "ANSWER KEY: 1 b, 2 a" at the bottom): the cases were read as questions with no
+  answer, the key not at all;
 - a trailing presence condition after a thing named by a place of nearness ("Wipe the table with
   the sponge by the sink, if it is still there"): "it" took up the thing worked on, not the thing
   the place was said of."""
@@ -27,6 +30,7 @@ import pytest
 from reading import CATALOG, asks, brief, factors
 
 from logicenveval.offline.analysis import analyse, nest
+from logicenveval.offline.sentences import keyed_answers
 
 
 def _under(text: str, rooms: tuple[str, ...], condition: str) -> dict[str, str]:
@@ -209,3 +213,51 @@ def test_eventually_of_an_event_or_an_instruction_asks_nothing() -> None:
     assert not factors("Eventually the kettle will boil; then switch it off.", ("kitchen",))
     assert not factors("Eventually, put the mug in the sink.", ("kitchen",))
     assert not factors("Wash up. Eventually the kettle is switched off.", ("kitchen",))
+
+
+#: a quiz: numbered cases asking what to do, lettered options, and an answer key given apart:
+#: (text, rooms, the condition asked, the keyed option's words under its "yes"). Before the rule
+#: 0 of 4 put the keyed option under the case (the cases were asked as questions with no answer)
+FIRE_WARDEN_QUIZ = """FIRE WARDEN REFRESHER
+Question 1: The kettle in the staff kitchen is still on at the end of the day. What should you do?
+(a) Leave it, someone will come back. (b) Switch it off.
+Question 2: The fridge door is open. What should you do?
+(a) Close it. (b) Leave it.
+
+Answers: 1-b, 2-a"""
+CHORE_QUIZ = """Chore Quiz!
+1) Your teddy bear is on the floor. What do you do?
+   a. Put it on the bed
+   b. Kick it under the bed
+2) The towel is wet. What do you do?
+   a. Leave it on the floor
+   b. Hang it on the towel rail
+Key: 1 a 2 b"""
+QUIZZES = [
+    # a workplace training quiz: "Question N:", bracketed letters, "Answers: 1-b"
+    (FIRE_WARDEN_QUIZ, ("kitchen",), "state(kettle, toggled_on)", "switch it off"),
+    (FIRE_WARDEN_QUIZ, ("kitchen",), "state(fridge, open)", "close it"),
+    # a child's chore quiz: "1)", options one a line, "Key: 1 a 2 b"
+    (CHORE_QUIZ, ("bedroom",), "on(teddy_bear, floor)", "put it on the bed"),
+    (CHORE_QUIZ, ("bathroom",), "state(towel, wet)", "hang it on the towel rail"),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition", "words"), QUIZZES)
+def test_a_quiz_answer_key_gives_the_branch(text: str, rooms: tuple[str, ...], condition: str, words: str) -> None:
+    """dev 14 laundry_sorting_d14's structure: "Q1. <case>. What do you do? a) ... b) ..." and an
+    answer key at the bottom; the keyed option is what to do in the case
+    (`sentences.keyed_answers`), and the others are not."""
+    under = _under(text, rooms, condition)
+    assert words in under.get("yes", ""), under
+    assert "kick" not in under.get("yes", "") and "leave it, someone" not in under.get("yes", ""), under
+
+
+def test_a_quiz_without_its_key_is_left_as_it_is() -> None:
+    """Near misses: without a key (or a key of one answer) which option is right is not said, and
+    a "Key:" line that keys nothing ("Key: in the drawer") is no answer key."""
+    unkeyed = CHORE_QUIZ.rsplit("\n", 1)[0]
+    assert keyed_answers(unkeyed) == unkeyed
+    assert keyed_answers(unkeyed + "\nKey: 1 a") == unkeyed + "\nKey: 1 a"
+    steps = "1. Lock the door.\n2. Water the plant.\nKey: in the drawer by the door."
+    assert keyed_answers(steps) == steps
