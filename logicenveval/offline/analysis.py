@@ -829,6 +829,9 @@ class _Reader:
         #: the clause read starts with the reader's own "it" ("dry:" read as "it is dry", "-> on
         #: the rack" as "it goes on the rack"): the topic it set, whatever its number
         self.own_it = False
+        #: the clause read is a time clause cut from its main clause, its opener the cue ("Is the
+        #: lamp still on | when they have gone?"): its first word is the time clause's subject
+        self.timed = False
         #: the last clause joined things with "and" ("the pillow ... and the toy ..."): "they" is them
         self.coordinated = False
         #: the words of the clause being read that a comma stands before (`_joined`)
@@ -907,7 +910,7 @@ class _Reader:
             and not self.plural & set(self.topic) and not set(self.topic) <= set(self.group)
 
     def _time_people(self, words: list[str], i: int, before: list[Mention]) -> bool:
-        """Whether the plural pronoun at word `i`, the subject of a time clause (`_in_time_clause`),
+        """Whether the plural pronoun at word `i`, the subject of a time clause (`_in_time`),
         is the people the time is told by, not a thing ("If the lamp is still on when they've
         gone", "unless the heater is off once they have left", "If it's still on when the last of
         them's gone"): so when nothing it could mean is plural. What it could mean is the things
@@ -916,7 +919,7 @@ class _Reader:
         lately. One test for both cases, a thing named in the clause or only before it, where two
         branches of `mentions` once asked them apart; the thing's absence, which "gone" would ask,
         is not read either way."""
-        if words[i] not in ("they", "them") or not _in_time_clause(words, i):
+        if words[i] not in ("they", "them") or not self._in_time(words, i):
             return False
         if before:
             return not any(r in self.plural for m in before for r in m.roles)
@@ -1105,6 +1108,11 @@ class _Reader:
         self.parts_last = bool(parts) and not any(m.kind == "role" and m.start > parts[-1]
                                                   and m.end - 1 in self.plural_at for m in found)
         return found
+
+    def _in_time(self, words: list[str], i: int) -> bool:
+        """Whether the pronoun at word `i` is a time clause's subject (`_in_time_clause`), or opens
+        a time clause whose opener the clause cut took as its cue (`timed`)."""
+        return _in_time_clause(words, i) or self.timed and _in_time_clause(["when", *words], i + 1)
 
     def facts(self, text: str) -> tuple[list[Fact], tuple[str, ...]]:
         said = _unbiased(expand(text).lower())
@@ -2936,6 +2944,10 @@ _STILL_THERE = frozenset({"it", "they", "is", "are", "still", "not", "there"})
 #: prepositions of a place said with a thing's name that a condition asks ("the sponge on the
 #: shelf", "the cloth in the drawer"; "by the wall" is no place the conditions read)
 _WITH_PREPS = frozenset(_THERE_PREPS)
+#: prepositions of nearness said with a thing's name ("the sponge by the sink", "the cloth next
+#: to the tap", "the torch beside the bed"): no place the conditions read, but they tell the thing
+#: "if it is still there" takes up, whose presence it then asks (the eighteenth session)
+_NEAR_PREPS = frozenset({"by", "near", "beside", "next", "alongside"})
 
 
 def _named_with_place(reader: _Reader, said: str, instruction: str) -> str:
@@ -2944,7 +2956,9 @@ def _named_with_place(reader: _Reader, said: str, instruction: str) -> str:
     instruction (of its sentence) that names a thing with the place it should be at, asks whether
     that thing is at that place; read as "if the sponge is on the shelf" (the pronoun is the thing
     named with a place, not the topic the instruction works on, and "there" is that place, not the
-    scene). Not after a verb of putting (`ACTIONS`: "put the mug on the shelf" names a goal)."""
+    scene). Not after a verb of putting (`ACTIONS`: "put the mug on the shelf" names a goal).
+    A thing named by a place the conditions do not read (`_NEAR_PREPS`: "the sponge by the sink,
+    if it is still there") is the pronoun's too, and "there" then asks whether it is there at all."""
     text = expand(said)
     words = WORD.findall(text.lower())
     if "there" not in words or words[0] not in ("it", "they") or not set(words) <= _STILL_THERE:
@@ -2957,9 +2971,17 @@ def _named_with_place(reader: _Reader, said: str, instruction: str) -> str:
     iw = [w for w, _, _ in toks]
     mentions = reader.lex.find_mentions(toks)
     for m in reversed(mentions):
-        if m.kind != "role" or m.end >= len(iw) or iw[m.end] not in _WITH_PREPS:
+        if m.kind != "role" or m.end >= len(iw) or iw[m.end] not in _WITH_PREPS | _NEAR_PREPS:
             continue
         k = m.end + 1
+        if iw[m.end] in _NEAR_PREPS:
+            # (the place need not be a thing the catalog knows: "the cloth near the printer")
+            k += iw[k:k + 1] == ["to"]
+            if k < len(iw) and iw[k] in _PLACE_DETERMINERS or any(
+                    x.start == k and x.kind in ("role", "floor") for x in mentions):
+                thing = "the " + source[toks[m.start][1] : toks[m.end - 1][2]]
+                return re.sub(r"\b(?:it|they)\b", thing, text, count=1, flags=re.I)
+            continue
         while k < len(iw) and iw[k] in ARTICLES:
             k += 1
         place = next((x for x in mentions if x.start == k and x.kind in ("role", "floor")), None)
@@ -3244,8 +3266,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # "if my mug hasn't been washed wash it": the predicate the cut ended
                 said = _there_named(reader, predicate_state(said), clauses, grammatical)
             thing = reader.heading_topic or (reader.topic if reader.topic_kind == "role" else ())
+            # "Is the desk lamp still on when they have gone?": the question is cut at its time
+            # clause, read with "they" as the people, not the lamp (whose absence "gone" asks)
+            reader.timed = role == "condition" and cue in _TIME_OPENERS
             facts, names = reader.facts("there is " + said if cue == "should there be" else said)
-            reader.own_it = False
+            reader.own_it = reader.timed = False
             if role == "condition" and not facts and (mixed := reader.code_switched(text, thing)):
                 # "If naka-on pa, pakipatay lang": a condition in another language's grammar
                 # still asks what its English words say, of the item's topic

@@ -69,6 +69,13 @@ POINTING_CUES = frozenset({"if so"})
 AGENT_TIMES = frozenset({"when", "whenever", "once", "while"})
 #: who acts in such a time clause
 AGENTS = frozenset({"you", "we", "i", "u"})
+#: other people a question's time clause may be told by ("Is the lamp still on when they have
+#: gone?", "... once everyone has left?", "... when the last of them has gone?"): as the agent's,
+#: the time says when the question is asked, not a condition of its own; "they" and "them" only
+#: after a question naming no thing in the plural ("Are the towels dry when they come out?")
+PEOPLE = frozenset({"everyone", "everybody", "he", "she", "they", "all of them", "the last of them",
+                    "the rest of them"})
+_PLURAL_PEOPLE = frozenset({"they", "all of them", "the last of them", "the rest of them"})
 #: words that open a sentence without saying anything of the scene ("Then, if ...", "Oh, and
 #: should ...")
 DISCOURSE = frozenset({"then", "and", "also", "so", "first", "second", "third", "next", "finally", "last",
@@ -237,6 +244,18 @@ def late_should(words: list[str], i: int) -> bool:
     return bool(_LATE_SHOULD.match(" ".join(words[i:i + 6]))) and not _WH.search(" ".join(words[:i]))
 
 
+def _timed_by_people(question: str, time: str) -> bool:
+    """Whether a question's time clause (`time`, after its cue) is told by what people do: its
+    subject is the agent (`AGENTS`) or other people (`PEOPLE`), "they" only where the question
+    (`question`, before the cue) names nothing in the plural, which "they" would take up."""
+    subject = next((p for p in sorted(AGENTS | PEOPLE, key=len, reverse=True)
+                    if re.match(rf"\W*{p}\b", time)), None)
+    if subject is None:
+        return False
+    return subject not in _PLURAL_PEOPLE or not any(
+        w.endswith("s") and w not in getAllLemmas(w).get("NOUN", (w,)) for w in re.findall(r"[a-z]+", question))
+
+
 def _first_cue(low: str, cues: tuple[str, ...]) -> tuple[int, str] | None:
     best: tuple[int, str] | None = None
     for cue in cues:
@@ -389,12 +408,21 @@ _HEADING = re.compile(r"^(?P<head>[^:?\u2013]+?)(?P<mark>\?|:|\s+(?:-|\u2013)\s+
 SOFTENERS = frozenset({"just", "simply"})
 
 
+#: verbs of sending a message that the lemma table knows only as nouns ("text me", "whatsapp us",
+#: "msg me", "dm me"): before the speaker they are an instruction to report back, as "call me"
+MESSAGING = frozenset({"text", "txt", "whatsapp", "msg", "dm", "sms"})
+#: the speaker as a verb's object
+SPEAKER_OBJECTS = frozenset({"me", "us"})
+
+
 def imperative(words: list[str]) -> bool:
     """The segment opens with a verb in its base form followed by its object or particle."""
     if words[:1] and words[0] in SOFTENERS:
         words = words[1:]  # "just chuck it in the sink", "simply hang it up"
     if len(words) < 2:
         return False
+    if words[0] in MESSAGING:
+        return words[1] in SPEAKER_OBJECTS
     lemmas = getAllLemmas(words[0]).get("VERB", ())
     return words[0] in lemmas and words[1] in OBJECT_STARTS
 
@@ -517,7 +545,7 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
     best = _first_cue(low, CONDITIONAL)
     asks = ends_asking(low)
     if best is not None and best[1] in AGENT_TIMES and asks and best[0] > 0 \
-            and re.match(rf"\W*(?:{'|'.join(sorted(AGENTS))})\b", expand(low[best[0] + len(best[1]):])):
+            and _timed_by_people(low[:best[0]], expand(low[best[0] + len(best[1]):])):
         best = None  # "is it on when you're done for the day?": asked of the scene at a time of the agent's
     if best is None and asks:
         return [(sentence, "?", "condition")]  # "Are the keys on the floor?" asks about the situation

@@ -607,6 +607,19 @@ def _open_disjunction(m: re.Match[str]) -> str:
     return f"{_match_case(m.group(0), 'maybe')} {opened}{m.group('gap')}{case}"
 
 
+#: "eventually" before or after a present-tense "is" / "are" of the scene ("Eventually my mug is
+#: also on the desk", "If eventually there is a document on the desk", "The remote is eventually on
+#: the sofa"): English says "in the end" only of an event to come or past, so a state said now with
+#: it is the false friend of French "éventuellement", Spanish and Italian "eventualmente", German
+#: "eventuell", Dutch "eventueel", Polish "ewentualnie": "possibly". Read as "perhaps" (before) and
+#: "may be" (after the copula); not before a passive's participle ("Eventually the kettle is
+#: switched off" is the end of a procedure), a future or a past ("eventually it will boil") nor
+#: an instruction ("Eventually, put the mug in the sink") (the eighteenth session)
+_NOT_PARTICIPLE = r"(?!\s+(?:also\s+|still\s+)?[a-z]+(?:ed|en)\b)"
+_EVENTUAL_BEFORE = re.compile(
+    r"\beventually\b,?(?=\s+(?:there\s+(?:is|are)\b|there's\b|(?:it|they|(?:my|the|your|our|his|her|this|that|a|an|some)"
+    rf"(?:\s+[a-z]+){{1,3}}?)\s+(?:is|are)\b{_NOT_PARTICIPLE}))", re.I)
+_EVENTUAL_AFTER = re.compile(rf"\b(?:is|are)\s+eventually\b{_NOT_PARTICIPLE}", re.I)
 #: a place said to be checked or confirmed ("1 towel, to be checked on the drying rack", "the
 #: spare key, still to be confirmed in the drawer") is left open, as "may be" leaves it: the
 #: writer does not know yet (read as "1 towel may be on the drying rack")
@@ -729,11 +742,14 @@ def predicate_state(clause: str) -> str:
 #: a device's sound said as the finite verb of a condition ("if the alarm clock rings, silence it",
 #: "when the timer beeps", "if it ring" in verse or a learner's English): the device is going, as
 #: "is ringing" says (`STATE_WORDS`); only right after a condition's cue and a short subject, so
-#: "the phone that rings" or "ring the bell" asks nothing
+#: "the phone that rings" or "ring the bell" asks nothing. A subject holds no copula and the verb
+#: no object: "if the lamp is on ring me", "if the fridge is open buzz us" end their condition at
+#: an instruction to call the speaker (the eighteenth session)
 SOUNDS = {"ring": "ringing", "rings": "ringing", "beep": "beeping", "beeps": "beeping",
           "buzz": "buzzing", "buzzes": "buzzing", "bleep": "beeping", "bleeps": "beeping"}
 _SOUNDING = re.compile(r"\b(if|when|whenever|unless|once|in\s+case)\s+((?:it|they|(?:the|my|your|our|his|her|this|that)"
-                       rf"(?:\s+[a-z]+){{1,3}}?))\s+({'|'.join(SOUNDS)})\b(?!\s+(?:the|a|an|my|your|it|them)\b)", re.I)
+                       r"(?:\s+(?!(?:is|are|was|were|be|been|being)\b)[a-z]+){1,3}?))\s+"
+                       rf"({'|'.join(SOUNDS)})\b(?!\s+(?:the|a|an|my|your|it|them|me|us)\b)", re.I)
 
 
 def _sounding(m: re.Match[str]) -> str:
@@ -1155,6 +1171,60 @@ def answered_questions(text: str) -> str:
     return "\n".join(out)
 
 
+#: an answer key ("ANSWER KEY: 1 b, 2 a, 3 c", "Answers: 1-c; 2-a", "Key: 1) b 2) d"): a question's
+#: number and the letter of its right option, at least two of them on one line
+_KEY_LINE = re.compile(r"^[ \t]*(?:the[ \t]+)?(?:answer[ \t]+key|answers|key|solutions?)[ \t]*[:\-][ \t]*(?P<pairs>.+)$",
+                       re.I | re.M)
+_KEY_PAIR = re.compile(r"\b(?P<n>\d{1,2})[ \t]*[.:)=\-]?[ \t]*(?P<letter>[a-e])\b", re.I)
+#: a quiz's numbered question ("Q1.", "Question 3:", "2)") opening its line
+_QUIZ_QUESTION = re.compile(r"^[ \t]*(?:q(?:uestion)?[ \t]*)?(?P<n>\d{1,2})[ \t]*[.:)][ \t]+(?P<body>\S.*)$", re.I)
+#: a lettered option ("a) Put it ...", "(b) Leave it", "c. Fold it ..."), several to a line
+_QUIZ_OPTION = re.compile(r"(?:^|(?<=\s))\(?(?P<letter>[a-e])[).][ \t]+(?P<said>.+?)(?=\s+\(?[a-e][).][ \t]|\s*$)", re.I)
+#: the question a scenario ends with, asking what to do in it ("What do you do with it?", "What
+#: should you do?", "How do you handle this?")
+_WHAT_TO_DO = re.compile(r"\s*\b(?:what|how)\b[^.?!]*\?\s*$", re.I)
+
+
+def keyed_answers(text: str) -> str:
+    """A quiz whose answer key is given apart (the eighteenth session: dev 14 laundry_sorting_d14's
+    "Q1. There's a dirty white shirt on the floor. What do you do with it? a) ... b) ..." and
+    "ANSWER KEY: 1 b, 2 a, ..." at the bottom): each numbered question that states a case and asks
+    what to do, with lettered options, becomes "If <case>, <the keyed option>." and the key line
+    goes, so the case is read as the condition of the action the key names. Training quizzes,
+    safety drills and onboarding tests write rules so. A quiz without a key, or a question whose
+    number the key does not give, is left as it is (which option is right is not said)."""
+    keys = list(_KEY_LINE.finditer(text))
+    key = {int(p.group("n")): p.group("letter").lower() for k in keys for p in _KEY_PAIR.finditer(k.group("pairs"))}
+    if len(key) < 2:
+        return text
+    lines = text.split("\n")
+    out: list[str] = []
+    i = 0
+    while i < len(lines):
+        q = _QUIZ_QUESTION.match(lines[i])
+        if q is None or int(q.group("n")) not in key:
+            out.append(lines[i])
+            i += 1
+            continue
+        # the question's own lines: up to the next question, the key or a blank line
+        j = i + 1
+        while j < len(lines) and lines[j].strip() and not _QUIZ_QUESTION.match(lines[j]) \
+                and not _KEY_LINE.match(lines[j]):
+            j += 1
+        block = " ".join([q.group("body"), *(ln.strip() for ln in lines[i + 1:j])])
+        first = re.search(r"(?:^|\s)\(?[a-e][).][ \t]", block, re.I)
+        options = {o.group("letter").lower(): o.group("said").strip() for o in
+                   _QUIZ_OPTION.finditer(block[first.start():] if first else "")}
+        case = _WHAT_TO_DO.sub("", block[:first.start()] if first else "").strip().rstrip(".")
+        chosen = options.get(key[int(q.group("n"))])
+        if not chosen or not case or case == block.strip():
+            out.extend(lines[i:j])
+        else:
+            out.append(f"{q.group('n')}. If {case[:1].lower() + case[1:]}, {chosen[:1].lower() + chosen[1:]}")
+        i = j
+    return "\n".join(line for line in out if not _KEY_LINE.match(line) or len(list(_KEY_PAIR.finditer(line))) < 2)
+
+
 def unquote(text: str) -> str:
     """The text with British and older spellings of function words in their common form
     (`VARIANTS`) and British spellings of catalog words in the catalog's (`SPELLINGS`) and without a formula of politeness before a verb (`_POLITE`), with a typographic
@@ -1194,12 +1264,13 @@ def unquote(text: str) -> str:
     participle read as its state (`_QUESTION_PREDICATE`), and a learner's participle without its
     ending at a condition's end as the state ("if curtain still close": `_BARE_PARTICIPLE`); a
     question-and-answer layout's answer framed by the case its question states, first
-    (`answered_questions`)."""
-    text = _DASHED_ASIDE.sub(r"\g<cue> ", answered_questions(text))
+    (`answered_questions`), and before it a quiz's keyed option framed so (`keyed_answers`)."""
+    text = _DASHED_ASIDE.sub(r"\g<cue> ", answered_questions(keyed_answers(text)))
     text = _SUPPOSED_IF.sub(_occasion_if, _OCCASION_IF.sub(_occasion_if, _COMMENT_ASIDE.sub(" ", _QUOTED_WHOLE.sub(r"\1", text))))
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
     text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_dictated(_runs_on(_modern(_NATIVE_IF.sub(_native_if, text))))))))
     text = _TO_BE_CHECKED.sub(" may be ", _OTHER_THAN.sub(r"\1 else than", text))
+    text = _EVENTUAL_AFTER.sub("may be", _EVENTUAL_BEFORE.sub(lambda m: _match_case(m.group(0), "perhaps"), text))
     text = _ONE_APPOSITIVE.sub(r", \1,", _MODAL_DOUBT.sub(r"\1", text))
     text = _OPEN_DISJUNCTION.sub(_open_disjunction, text)
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), _SPELLED[m.group(0).lower()]), text))
