@@ -1361,8 +1361,16 @@ class _Reader:
         the vanity, unless somebody's stuffed it in the cabinet": the towel, not the puddle the
         item spoke of; "mop up the spill with the cloth, unless you left it in the bucket"):
         pronouns go to the nearest fitting mention. `f` unchanged (and then dropped) when none
-        fits."""
+        fits, or when the referent is itself a thing carried about and the place is of the kind
+        that takes such things (a surface for "on", a container for "in"): only the catalog's sizes
+        rule it out ("is the hat on the floor? hang it back on the hook", "the coat - if it's still
+        on its peg, leave it": a hat or coat hangs on a hook its top cannot hold), and the pronoun
+        still means the thing just spoken of, not one named paragraphs before (a torch)."""
         relation = f.condition.split("(", 1)[0]
+        item, holder = self.kinds.get(f.subject), self.kinds.get(f.key)
+        if item is not None and holder is not None and item.pickable and (
+                holder.surface if relation == "on" else holder.container):
+            return f
         for r in reversed(self.recent):
             if r in (f.subject, f.key) or not self._carried(r):
                 continue
