@@ -2369,6 +2369,27 @@ def _bare_goal(reader: _Reader, text: str) -> tuple[str, str] | None:
     return ("in" if kind.container and not kind.surface else "on"), text
 
 
+#: imperatives that take a thing up to use it where the work is, and put it nowhere: a place said
+#: on or in after their object is where the thing is ("use the wet wipes on the tea table", "grab
+#: the torch in the drawer"), not where it goes, as after "put" (`_where_taken_from`)
+TAKEN_FOR_USE = frozenset({"use", "grab", "fetch", "borrow"})
+
+
+def _where_taken_from(said: str, facts: list[Fact]) -> list[Fact]:
+    """"Use the wet wipes on the tea table if there are any", "grab the spare bulb in the drawer
+    if there is one": an instruction that takes a thing for use (`TAKEN_FOR_USE`), under a
+    condition of its availability, says where the thing is, and the condition asks whether it is
+    there (as "wipe it with the paper towels on the counter if there are any" does); a place it
+    is moved to ("use it, then put it in the drawer", "into", "to") stays a goal, and so does a
+    room ("borrow the stepladder in the garage if there is one" asks whether there is one at all)."""
+    words = [w for w, _, _ in tokens(expand(said).lower())]
+    lead = next((i for i, w in enumerate(words) if w not in LEAD_INS | SOFTENERS), len(words))
+    if words[lead:lead + 1] and words[lead] in TAKEN_FOR_USE and not set(words) & (MOTION | {"into", "onto", "to"}):
+        return [replace(f, goal=False) if f.kind == "location" and f.goal and f.condition.startswith(("on(", "inside("))
+                else f for f in facts]
+    return facts
+
+
 def _available(reader: _Reader, text: str) -> list[Fact]:
     """"clean it with the microfibre cloth if any": with no place said, whether there is one of
     the thing named last before the cue (not a place it is used on or kept in)."""
@@ -3228,6 +3249,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 facts, names = mixed, tuple(dict.fromkeys(f.subject for f in mixed))
             if role == "condition":
                 facts = _parallel(said, facts, clauses, grammatical)
+            if cue == "if available":
+                facts = _where_taken_from(said, facts)
             if cue == "if available" and not any(f.kind in ("location", "exists") and not f.home for f in facts):
                 facts += _available(reader, said)
             if role == "condition" and not facts and (elided := _elided(
