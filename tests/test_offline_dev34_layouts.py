@@ -158,6 +158,16 @@ def test_an_appliance_with_no_place_of_its_own_goes_on_a_free_holder_first(
     assert _placements(text, rooms, roles, [])[role] == free
 
 
+def test_an_appliance_stands_on_no_machine_however_free() -> None:
+    # near miss: the counter holds the bread and the kettle, the hob is free, the toaster still
+    # goes on the counter: a stove's top is for its pans
+    placed = _placements("If there's bread on the counter, toast it. The kettle is on the counter.", ["kitchen"],
+                         {"bread": "bread", "kitchen_counter": "kitchen_counter", "toaster": "toaster",
+                          "kettle": "kettle", "pan": "pan", "stove": "stove"},
+                         ["on(bread, kitchen_counter)", "on(kettle, kitchen_counter)"])
+    assert placed["toaster"] == "on:kitchen_counter"
+
+
 def test_a_carried_thing_with_no_place_still_goes_on_the_first_holder() -> None:
     # near miss: a book is no appliance, and shares the nightstand the lamp stands on, as before
     placed = _placements("The lamp is on the nightstand. If the book is on the floor, put it away.", ["bedroom"],

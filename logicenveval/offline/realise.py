@@ -149,6 +149,12 @@ def _fits_on(item: str, holder: str, relation: str, roles: Mapping[str, Any], ca
     return a is None or b is None or can_hold(a, b, relation)
 
 
+def _machine(role: str, roles: Mapping[str, Any], catalog: Catalog) -> bool:
+    """Whether the role's kind switches on and off (a stove, a washing machine: `Category.toggleable`)."""
+    kind = catalog.get(roles[role]["category"]) if role in roles else None
+    return kind is not None and kind.toggleable
+
+
 def _stated(choice: dict[str, RoleChoice], brief: Mapping[str, Any], facts: list[str], catalog: Catalog) -> None:
     """States the description gives a thing outright ("the ceiling fan in there is broken":
     `analysis.stated_states`), for a present object whose state no situation fact speaks of: a
@@ -250,8 +256,11 @@ def _places(choice: dict[str, RoleChoice], roles: dict[str, Any], catalog: Catal
             # an appliance nobody carries (a desktop computer, a microwave) with no place of its
             # own stands on a holder nothing rests on yet ("the desktop computer" on the desk, not
             # on the shelving unit the box of cables sits on), as a person setting up a room puts
-            # it: it takes most of a top, and the layout fails where it shares one
-            preferred = [h for h in preferred if h not in taken] + [h for h in preferred if h in taken]
+            # it: it takes most of a top, and the layout fails where it shares one. A holder that
+            # is itself a machine (a stove, a washing machine) is no place for it: its top is for
+            # its own use (a toaster on the hob keeps the pan off it)
+            free = [h for h in preferred if h not in taken and not _machine(h.partition(":")[2], roles, catalog)]
+            preferred = free + [h for h in preferred if h not in free]
         surfaces = [h for h in preferred if h.startswith("on:")]
         if typical[0] == "inside":
             surfaces = [h for h in preferred if h.startswith("inside:")] + surfaces
