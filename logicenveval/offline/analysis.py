@@ -1389,8 +1389,16 @@ class _Reader:
         the vanity, unless somebody's stuffed it in the cabinet": the towel, not the puddle the
         item spoke of; "mop up the spill with the cloth, unless you left it in the bucket"):
         pronouns go to the nearest fitting mention. `f` unchanged (and then dropped) when none
-        fits."""
+        fits, or when the referent is itself a thing carried about and the place is of the kind
+        that takes such things (a surface for "on", a container for "in"): only the catalog's sizes
+        rule it out ("is the hat on the floor? hang it back on the hook", "the coat - if it's still
+        on its peg, leave it": a hat or coat hangs on a hook its top cannot hold), and the pronoun
+        still means the thing just spoken of, not one named paragraphs before (a torch)."""
         relation = f.condition.split("(", 1)[0]
+        item, holder = self.kinds.get(f.subject), self.kinds.get(f.key)
+        if item is not None and holder is not None and item.pickable and (
+                holder.surface if relation == "on" else holder.container):
+            return f
         for r in reversed(self.recent):
             if r in (f.subject, f.key) or not self._carried(r):
                 continue
@@ -2394,6 +2402,27 @@ def _bare_goal(reader: _Reader, text: str) -> tuple[str, str] | None:
     return ("in" if kind.container and not kind.surface else "on"), text
 
 
+#: imperatives that take a thing up to use it where the work is, and put it nowhere: a place said
+#: on or in after their object is where the thing is ("use the wet wipes on the tea table", "grab
+#: the torch in the drawer"), not where it goes, as after "put" (`_where_taken_from`)
+TAKEN_FOR_USE = frozenset({"use", "grab", "fetch", "borrow"})
+
+
+def _where_taken_from(said: str, facts: list[Fact]) -> list[Fact]:
+    """"Use the wet wipes on the tea table if there are any", "grab the spare bulb in the drawer
+    if there is one": an instruction that takes a thing for use (`TAKEN_FOR_USE`), under a
+    condition of its availability, says where the thing is, and the condition asks whether it is
+    there (as "wipe it with the paper towels on the counter if there are any" does); a place it
+    is moved to ("use it, then put it in the drawer", "into", "to") stays a goal, and so does a
+    room ("borrow the stepladder in the garage if there is one" asks whether there is one at all)."""
+    words = [w for w, _, _ in tokens(expand(said).lower())]
+    lead = next((i for i, w in enumerate(words) if w not in LEAD_INS | SOFTENERS), len(words))
+    if words[lead:lead + 1] and words[lead] in TAKEN_FOR_USE and not set(words) & (MOTION | {"into", "onto", "to"}):
+        return [replace(f, goal=False) if f.kind == "location" and f.goal and f.condition.startswith(("on(", "inside("))
+                else f for f in facts]
+    return facts
+
+
 def _available(reader: _Reader, text: str) -> list[Fact]:
     """"clean it with the microfibre cloth if any": with no place said, whether there is one of
     the thing named last before the cue (not a place it is used on or kept in)."""
@@ -3277,6 +3306,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 facts, names = mixed, tuple(dict.fromkeys(f.subject for f in mixed))
             if role == "condition":
                 facts = _parallel(said, facts, clauses, grammatical)
+            if cue == "if available":
+                facts = _where_taken_from(said, facts)
             if cue == "if available" and not any(f.kind in ("location", "exists") and not f.home for f in facts):
                 facts += _available(reader, said)
             if role == "condition" and not facts and (elided := _elided(

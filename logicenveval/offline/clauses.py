@@ -512,6 +512,11 @@ def ends_asking(text: str) -> bool:
     return text.rstrip().rstrip(CLOSING_QUOTES).rstrip().endswith("?")
 
 
+#: a parenthesised aside ending the words after a cue, dropped before they are read as a
+#: condition of availability (`AVAILABILITY`)
+_AFTER_ASIDE = re.compile(r"\s*\([^()]*\)")
+
+
 def _split(sentence: str) -> list[tuple[str, str | None, str]]:
     """(text, cue, role) pieces of a sentence, recursively for chained conditionals; a verbless
     heading (`_heading`) is a `heading` piece, its instruction read after it."""
@@ -575,7 +580,9 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
                             else "statement"))
         return out
     start, cue = best
-    after = re.match(r"\W*([a-z' ]{0,30}?)\W*(?:$|[,;]|\s-\s)", expand(low[start + len(cue):]))
+    # (an aside after it is no part of the condition: "if there are any (they are not always
+    # restocked); ...", "if there is one (Gran borrows it), ...")
+    after = re.match(r"\W*([a-z' ]{0,30}?)\W*(?:$|[,;]|\s-\s)", _AFTER_ASIDE.sub("", expand(low[start + len(cue):])))
     if cue in ("if", "in case") and after and set(after.group(1).split()) & AVAILABILITY \
             and len(after.group(1).split()) <= 3 and not set(after.group(1).split()) & NEGATIONS \
             and after.group(1).split()[0] not in _THING_PRONOUNS and not (
@@ -584,6 +591,7 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
         # (an elided existential opening its sentence, "Is there a towel inside? If there is,
         # ...", has no instruction before it to give a tool: it points back, `points_back`)
         # "with the wipes if there are any, else with the mop": the alternative is its own piece
+        sentence = sentence[:start] + _AFTER_ASIDE.sub("", sentence[start:], count=1)
         other = re.search(r"[,;]\s*(?:otherwise|else|or else|failing that)\b", sentence[start:], re.I)
         if other is not None:
             cut = start + other.start()

@@ -133,9 +133,26 @@ def _described(choice: dict[str, RoleChoice], brief: Mapping[str, Any], facts: l
                     continue
             elif pred.name in ("on", "inside") and (
                     pred.args[1] not in choice or not choice[pred.args[1]].present
-                    or f"{pred.name}:{pred.args[1]}" in c.banned_places):
+                    or f"{pred.name}:{pred.args[1]}" in c.banned_places
+                    or not _fits_on(pred.args[0], pred.args[1], pred.name, brief["roles"], catalog)):
                 continue
             _apply(choice, pred, pos)
+
+
+def _fits_on(item: str, holder: str, relation: str, roles: Mapping[str, Any], catalog: Catalog) -> bool:
+    """Whether the catalog lets `item` be `relation` (on / inside) `holder` (`scene.compat.can_hold`):
+    a place the text states that the layout cannot build ("my hat hangs on the hook behind the
+    door", where a hook's top holds no hat) is left, and the thing goes to its typical place, so
+    that the situation can still be built; a stated place is a description, not a condition the
+    task asks about."""
+    a, b = catalog.get(roles[item]["category"]), catalog.get(roles[holder]["category"])
+    return a is None or b is None or can_hold(a, b, relation)
+
+
+def _machine(role: str, roles: Mapping[str, Any], catalog: Catalog) -> bool:
+    """Whether the role's kind switches on and off (a stove, a washing machine: `Category.toggleable`)."""
+    kind = catalog.get(roles[role]["category"]) if role in roles else None
+    return kind is not None and kind.toggleable
 
 
 def _stated(choice: dict[str, RoleChoice], brief: Mapping[str, Any], facts: list[str], catalog: Catalog) -> None:
@@ -227,11 +244,23 @@ def _places(choice: dict[str, RoleChoice], roles: dict[str, Any], catalog: Catal
                 # dish rack or a microwave stands on a counter, it is no counter for the coffee
                 # machine (only a fact or the text puts a thing on or in one)
                 continue
-            if ocat.surface and not ocat.pickable:
+            # (a holder the catalog's sizes rule out is none: a hat on a hook's small top has no layout)
+            if ocat.surface and not ocat.pickable and (cat is None or can_hold(cat, ocat, "on")):
                 holders.append(f"on:{other}")
-            elif ocat.container and not ocat.openable and not ocat.pickable:
+            elif ocat.container and not ocat.openable and not ocat.pickable and (
+                    cat is None or can_hold(cat, ocat, "inside")):
                 holders.append(f"inside:{other}")
         preferred = [h for h in holders if h not in c.banned_places]
+        taken = {oc.placement for other, oc in choice.items() if other != r}
+        if cat is not None and not cat.pickable:
+            # an appliance nobody carries (a desktop computer, a microwave) with no place of its
+            # own stands on a holder nothing rests on yet ("the desktop computer" on the desk, not
+            # on the shelving unit the box of cables sits on), as a person setting up a room puts
+            # it: it takes most of a top, and the layout fails where it shares one. A holder that
+            # is itself a machine (a stove, a washing machine) is no place for it: its top is for
+            # its own use (a toaster on the hob keeps the pan off it)
+            free = [h for h in preferred if h not in taken and not _machine(h.partition(":")[2], roles, catalog)]
+            preferred = free + [h for h in preferred if h not in free]
         surfaces = [h for h in preferred if h.startswith("on:")]
         if typical[0] == "inside":
             surfaces = [h for h in preferred if h.startswith("inside:")] + surfaces
@@ -241,7 +270,6 @@ def _places(choice: dict[str, RoleChoice], roles: dict[str, Any], catalog: Catal
             # surface nothing else rests on yet; where every surface of the room already holds
             # something ("the mug lives on the bedside table"), on one added for it: a small
             # holder seldom takes two things, and the layout then fails
-            taken = {oc.placement for other, oc in choice.items() if other != r}
             options = [h for h in surfaces if h not in taken]
             if not options:
                 c.placement = NEEDS_SURFACE
