@@ -278,17 +278,31 @@ _ELIDED_PLACE = re.compile(
 #: listener is) is left alone, as is an idiom of "on" that is no place (`IDIOM_PLACES`: "On your
 #: way out?", "On the phone?")
 IDIOM_PLACES = ("way", "phone", "call", "whole", "list", "go", "own", "shift", "duty", "rota", "agenda")
+#: a question of place whose writer kept the finite verb and dropped its subject, as a speaker of
+#: a null-subject language does (Ukrainian, Russian, Spanish: "Lies on the floor?", "Is on the
+#: sofa?", "Still lie on the rug?"): the verb "be" or of resting, and whether it is singular
+_DROPPED_VERBS = {"is": True, "are": False, "lies": True, "lie": False, "sits": True, "sit": False,
+                  "stands": True, "stand": False, "rests": True, "rest": False}
 _ELIDED_PLACE_QUESTION = re.compile(
-    r"(?:(?<=^)|(?<=[.!?;]\s)|(?<=\n))(?:(?:still|already|left|lying)\s+)?(?:on|upon|under|underneath|behind)\s+"
+    r"(?:(?<=^)|(?<=[.!?;]\s)|(?<=\n))(?:(?:still|already|left|lying)\s+)?"
+    rf"(?:(?:{'|'.join(_DROPPED_VERBS)})\s+(?:(?:still|already|now)\s+)?)?(?:on|upon|under|underneath|behind)\s+"
     rf"(?:the|a|an|your|my|our|his|her|their)\s+(?!(?:{'|'.join(IDIOM_PLACES)})\b)"
     r"(?:(?!(?:is|are|was|were|it|they)\b)[^\s?.!,;:]+\s*){1,4}\?",
     re.I | re.M)
 
 
 def _asked_place(m: re.Match[str]) -> str:
-    """`_ELIDED_PLACE_QUESTION`'s question with its subject and copula: "Is it on the floor?"."""
+    """`_ELIDED_PLACE_QUESTION`'s question with its subject and copula: "Is it on the floor?"; a
+    finite verb of resting its writer kept, the subject dropped ("Lies on the floor?", "Still lie
+    on the rug?"), gives way to the copula of its number ("Is it on the floor?", "Are they on the
+    rug?")."""
     said = m.group(0)
-    return f"{_match_case(said, 'is it')} {said[:1].lower()}{said[1:]}"
+    verb = re.match(rf"(?:(?:still|already)\s+)?({'|'.join(_DROPPED_VERBS)})\s+", said, re.I)
+    if verb is None:
+        return f"{_match_case(said, 'is it')} {said[:1].lower()}{said[1:]}"
+    rest = said[:verb.start(1)] + said[verb.end():]
+    asked = "is it" if _DROPPED_VERBS[verb.group(1).lower()] else "are they"
+    return f"{_match_case(said, asked)} {rest[:1].lower()}{rest[1:]}"
 #: a condition whose subject pronoun is dropped, as a speaker of a null-subject language drops it
 #: (Spanish, Italian, Portuguese: "si está encendida"; a hasty text: "if is still on, turn it
 #: off", "unless are dry"): "if" or "unless" then a finite "be" that no "there" follows, read with
@@ -355,7 +369,7 @@ _EMPHATIC_DO = re.compile(rf"(?<=\w)\s+(?:do|does|did)(?=\s+(?:{'|'.join(sorted(
 #: hamper", "put it on the desk - I mean on the shelf"): the corrected place, with the words that
 #: retract it, is dropped, so only the place meant is read
 _PLACE_PREP = r"(?:in|on|into|onto|to|under|inside|next to|by)\b"
-_RETRACT = r"(?:no,?\s+wait|wait,?\s+no|no,?\s+sorry|sorry|i mean|or rather|scratch that|actually|correction)"
+_RETRACT = r"(?:no,?\s+wait|wait,?\s+no|no,?\s+sorry|sorry|i mean|or rather|scratch that|actually|correction|no)"
 #: "Unless Maya already took it down, the bag goes in the bin", "If it's not already in the
 #: basket, put the towel there": a condition put first that asks, of a thing it names only by a
 #: pronoun, whether it is already where or as its main clause makes it. The pronoun points forward
@@ -405,8 +419,11 @@ def _postposed(m: re.Match[str]) -> str:
     return f"{m.group('lead')}{main[:1].upper()}{main[1:]}, {cond}{m.group('end')}"
 
 
-_SELF_CORRECTION = re.compile(rf"\b{_PLACE_PREP}[^,.;:!?()]{{1,40}}?[\s,\-\u2013\u2014]+"
-                              rf"(?:{_RETRACT}[\s,\-\u2013\u2014]+)+(?={_PLACE_PREP})", re.I)
+#: what stands between the place taken back, the words that retract it and the place meant: a
+#: comma, a dash, or suspension points ("put in the cabinet... no, on the cabinet")
+_RETRACT_GAP = r"(?:[\s,\-\u2013\u2014\u2026]|\.{2,})+"
+_SELF_CORRECTION = re.compile(rf"\b{_PLACE_PREP}[^,.;:!?()\u2026]{{1,40}}?{_RETRACT_GAP}"
+                              rf"(?:{_RETRACT}{_RETRACT_GAP})+(?={_PLACE_PREP})", re.I)
 
 
 #: a bare state word as the subject of a verb of going ("dirty goes in the hamper", "wet go on the
