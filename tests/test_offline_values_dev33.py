@@ -247,3 +247,45 @@ def test_a_statement_or_an_idiom_asks_no_place(text: str, rooms: tuple[str, ...]
     """Near misses: a sentence with the verb that is no question, or an idiom of "on", asks
     nothing."""
     assert not asks(text, rooms, condition), factors(text, rooms)
+
+
+#: a container that has "run dry" or "run empty", asked or said in any tense: (text, rooms, the
+#: state asked). Before the rule 0 of 6 were asked ("dry" read as not wet, or nothing read)
+RUN_DRY = [
+    # a magazine's feature: the question form
+    ("The vase is on the table. Has it run dry? Then fill it at the sink.", ("dining_room", "kitchen"),
+     "state(vase, filled)"),
+    # a kitchen card: the perfect in a condition
+    ("The kettle sits on the counter. If it has run dry, fill it at the sink.", ("kitchen",), "state(kettle, filled)"),
+    # a gardener's note: the present
+    ("Watering can by the back door - when it runs dry, refill it at the sink.", ("kitchen",),
+     "state(watering_can, filled)"),
+    # an office sticky note: the subject and the auxiliary dropped
+    ("Water bottle on the desk. Run dry? Fill it up at the kitchen sink.", ("office", "kitchen"),
+     "state(water_bottle, filled)"),
+    # a gym's card: "it's run dry"
+    ("Check the water bottle on the bench: if it's run dry, fill it at the sink.", ("garage", "kitchen"),
+     "state(water_bottle, filled)"),
+    # a café's closing list: "run empty", "already"
+    ("The teapot on the table: has it already run empty? Then fill it at the sink.", ("dining_room", "kitchen"),
+     "state(pot, filled)"),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), RUN_DRY)
+def test_a_container_run_dry_is_empty(text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """"Has it run dry? Then Ben carries it to the butler's sink ... fills it" (dev 33
+    breakfast_room_interiors_feature): "run dry" is said of a container and means empty, as "run
+    empty" does (`sentences._RUN_DRY`, `analysis._RUN_EMPTY_ASKED`, `_RUN_EMPTY`). Measured before
+    the rule: 0 of 6; after: 6 of 6."""
+    assert asks(text, rooms, condition), factors(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # "dry" alone of a cloth is still not wet
+    ("If the towel is dry, fold it and put it on the shelf.", ("bathroom",), "state(towel, wet)"),
+    ("The towel on the rail: if it has gone dry, fold it.", ("bathroom",), "state(towel, wet)"),
+])
+def test_dry_alone_is_still_not_wet(text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """Near misses: "dry" without "run" asks whether the thing is wet."""
+    assert asks(text, rooms, condition), factors(text, rooms)

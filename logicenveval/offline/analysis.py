@@ -382,10 +382,22 @@ def _unbiased(said: str) -> str:
     return _NEGATIVE_QUESTION.sub(r"\1", _QUESTION_TAG.sub("", said))
 
 
+#: a container that has run empty ("run dry" is read so by `expand`) is empty, asked ("has it run
+#: empty?", "Run empty?", its subject dropped; its perfect said is "has been empty" by then) or
+#: said in the present or the past ("when it runs empty", "it's run empty" spelled "it is run")
+_RUN_EMPTY_ASKED = re.compile(r"(?:\b(?:has|have|had) (?P<np>it|they) |^\W*)(?P<adv>(?:already |now |just )?)run empty\b"
+                              r"(?= *\?)")
+_RUN_EMPTY = re.compile(r"\b(?:(?P<be>is|are) run|runs|ran) empty\b")
+
+
 def _contents(said: str) -> str:
     """"there is still wine in it" -> "it is full"; "there is no water left in the jug" -> "the
-    jug is empty"; "there is milk left" -> "the milk is full"; "it still has milk in it" -> "it is full"
-    (`_CONTENTS`, `_LEFT`, `_HAS_IN`)."""
+    jug is empty"; "there is milk left" -> "the milk is full"; "it still has milk in it" -> "it is full";
+    "has it run dry?" -> "is it empty?", "when it runs dry" -> "when it is empty" (`_CONTENTS`,
+    `_LEFT`, `_HAS_IN`, `_RUN_EMPTY`)."""
+    said = _RUN_EMPTY_ASKED.sub(lambda m: f"{'are they' if m.group('np') == 'they' else 'is it'} {m.group('adv')}empty",
+                                said)
+    said = _RUN_EMPTY.sub(lambda m: f"{m.group('be') or 'is'} empty", said)
     def state(m: re.Match[str]) -> str:
         empty = m.group("no") not in (None, "any ") or m.groupdict().get("not") is not None
         return "empty" if empty else "full"

@@ -1427,6 +1427,9 @@ _ON_TOP = re.compile(r"\bon\s+top\s+of\b", re.I)
 #: a verb of becoming in the perfect before a state word is the copula: "if it has run empty",
 #: "if the vase has gone dry", "once the towel has got wet" say it is so now, as "has been" does
 #: (not "gone" alone, which is absence, nor a particle: "has gone off", "has turned on")
+#: "run dry" is said of a container or a spring, never of a towel: it has run empty ("has the vase
+#: run dry?", "when the can runs dry"), whatever "dry" alone says (`_BECOME` then reads the perfect)
+_RUN_DRY = re.compile(r"\b(run|runs|ran)\s+dry\b", re.I)
 _BECOME = re.compile(r"\b(has|have|had)\s+(?:(just|already|now)\s+)?(?:run|gone|got|gotten|become|turned|grown)\s+(?=(?:"
                      + "|".join(w for w in STATE_WORDS if w not in ("on", "off", "out")) + r")\b)", re.I)
 
@@ -1475,12 +1478,12 @@ def _participle(m: re.Match[str]) -> str:
 def expand(text: str) -> str:
     """The text with contractions spelled out ("it's" -> "it is"), possessives dropped, "w/" read
     as "with", "and/or" as "or", a slash between words as "or", a dropped "g" restored
-    (`_g_restored`) and a verb of becoming in the perfect before a state as "been" (`_BECOME`),
-    "on top of" as "on" (`_ON_TOP`)."""
+    (`_g_restored`), "run dry" as "run empty" (`_RUN_DRY`) and a verb of becoming in the perfect
+    before a state as "been" (`_BECOME`), "on top of" as "on" (`_ON_TOP`)."""
     out = _SLASH.sub(" or ", _AND_OR.sub("or", _WITH.sub("with ", _ON_TOP.sub("on", text.replace("\u2019", "'")))))
     for pat, repl in _CONTRACTIONS:
         out = re.sub(pat, repl, out, flags=re.I)
-    out = _PAST_AS_PARTICIPLE.sub(_participle, _DROPPED_G.sub(_g_restored, out))
+    out = _RUN_DRY.sub(r"\1 empty", _PAST_AS_PARTICIPLE.sub(_participle, _DROPPED_G.sub(_g_restored, out)))
     return _BECOME.sub(lambda m: f"{m.group(1)} {m.group(2) + ' ' if m.group(2) else ''}been ", out)
 
 
