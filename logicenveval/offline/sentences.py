@@ -246,6 +246,25 @@ _CITATION = re.compile(r"(?<=\S)\[(?:\d+(?:\s*[,\u2013-]\s*\d+)*|[a-z]|(?:citati
 #: it orders the items and says nothing, and left in place it hides a heading after it ("(b)
 #: Bedroom:" is no room heading) and is a word before the step's condition ("3.2 If muddy, ..."
 #: is no instruction ending "... 3.2 if muddy")
+#: a branch labelled by the case it is for, in a bracket before the colon ("PRIMARY TARGET (pan in the
+#: kitchen): ...", "Plan B (no mug on the desk): ...", "Case 2 (no laptop on the desk): skip"): a
+#: thing and its place with no verb, the thing said absent by "no"; read as the condition it is
+#: ("PRIMARY TARGET: if there is a pan in the kitchen, ..."). A bracket that names a place alone
+#: ("Step 2 (kitchen):"), holds a verb ("(the one I bought)") or opens with "in"/"on" is left alone
+_CASE_LABEL = re.compile(r"[ \t]*\((?P<no>no[ \t]+)?(?P<thing>[a-z]+(?:[ \t][a-z]+)?)[ \t]+"
+                         r"(?P<prep>in|on|inside|under)[ \t]+(?P<place>(?:the|my|your|our)[ \t]+[a-z]+(?:[ \t][a-z]+)?)"
+                         r"\)[ \t]*:[ \t]*", re.I)
+_CASE_VERBS = frozenset({"is", "are", "was", "were", "be", "has", "have", "had", "lies", "sits", "stands"})
+
+
+def _case_label(m: re.Match[str]) -> str:
+    """`_CASE_LABEL`'s bracket as the condition it labels its branch by."""
+    if set(m.group("thing").lower().split()) & _CASE_VERBS:
+        return m.group(0)
+    said = "no" if m.group("no") else "a"
+    return f": if there is {said} {m.group('thing')} {m.group('prep')} {m.group('place')}, "
+
+
 _ITEM_LABEL = re.compile(r"^[ \t]*(?:\((?:[a-z]|[ivx]+|\d{1,2})\)|(?:[a-z]|[ivx]+|\d{1,2})\)|\d{1,2}\.|\d{1,2}(?:\.\d(?!\d))+\.?)"
                          r"[ \t]+",
                          re.M | re.I)
@@ -1217,7 +1236,7 @@ def unquote(text: str) -> str:
     text = starred(_TIME_STAMP.sub(r"\1", _CITATION.sub("", _MARKDOWN_HEADING.sub(r"\g<title>:", text))))
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
     plain = _IF_ANY.sub(_if_any, plain)
-    plain = _FRONTED_ALREADY.sub(_postposed, plain)
+    plain = _CASE_LABEL.sub(_case_label, _FRONTED_ALREADY.sub(_postposed, plain))
     plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _ITEM_END.sub(".\n", _QUOTE_MARK.sub("", _QUOTED_PREMISE.sub(
         r"\g<q>?\g<gap>", _FORUM_QUOTE.sub(_forum_quote, _ATTRIBUTION.sub("", plain)))))))
     plain = _unabbreviated(plain)
