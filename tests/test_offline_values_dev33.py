@@ -322,10 +322,9 @@ def test_a_bracketed_case_label_is_a_condition(text: str, rooms: tuple[str, ...]
 
 
 @pytest.mark.parametrize(("text", "rooms"), [
-    # a room alone, an aside with "one", a bracket that opens with its preposition
+    # a room alone, an aside with "one"
     ("Step 2 (kitchen): wipe the counter.", ("kitchen",)),
     ("The cart (the one by the door): push it to the wall.", ("office",)),
-    ("Sofa (in the living room): fold the blanket on it.", ("living_room",)),
 ])
 def test_a_bracket_of_no_case_asks_nothing(text: str, rooms: tuple[str, ...]) -> None:
     """Near misses: a bracket that is no thing and its place labels no case."""
