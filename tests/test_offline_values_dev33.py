@@ -322,9 +322,11 @@ def test_a_bracketed_case_label_is_a_condition(text: str, rooms: tuple[str, ...]
 
 
 @pytest.mark.parametrize(("text", "rooms"), [
-    # a room alone, an aside with "one"
+    # a room alone, an aside with "one", an instruction or a clause in the bracket
     ("Step 2 (kitchen): wipe the counter.", ("kitchen",)),
     ("The cart (the one by the door): push it to the wall.", ("office",)),
+    ("Step 3 (put it on the desk): then wipe the counter.", ("kitchen", "office")),
+    ("Note (it is on the desk): take the mug to the sink.", ("kitchen", "office")),
 ])
 def test_a_bracket_of_no_case_asks_nothing(text: str, rooms: tuple[str, ...]) -> None:
     """Near misses: a bracket that is no thing and its place labels no case."""

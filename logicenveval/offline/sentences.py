@@ -254,12 +254,16 @@ _CITATION = re.compile(r"(?<=\S)\[(?:\d+(?:\s*[,\u2013-]\s*\d+)*|[a-z]|(?:citati
 _CASE_LABEL = re.compile(r"[ \t]*\((?P<no>no[ \t]+)?(?P<thing>[a-z]+(?:[ \t][a-z]+)?)[ \t]+"
                          r"(?P<prep>in|on|inside|under)[ \t]+(?P<place>(?:the|my|your|our)[ \t]+[a-z]+(?:[ \t][a-z]+)?)"
                          r"\)[ \t]*:[ \t]*", re.I)
-_CASE_VERBS = frozenset({"is", "are", "was", "were", "be", "has", "have", "had", "lies", "sits", "stands"})
+#: words that make the bracket's words before the place no thing ("(it is on the desk)", "(put
+#: it on the desk)": a verb or a pronoun); an instruction's verb (`ACTIONS`) neither
+_NO_CASE_THING = frozenset({"is", "are", "was", "were", "be", "has", "have", "had", "lies", "sits", "stands",
+                            "it", "them", "they", "one", "ones", "this", "that"})
 
 
 def _case_label(m: re.Match[str]) -> str:
     """`_CASE_LABEL`'s bracket as the condition it labels its branch by."""
-    if set(m.group("thing").lower().split()) & _CASE_VERBS:
+    said = m.group("thing").lower().split()
+    if set(said) & _NO_CASE_THING or said[0] in ACTIONS:
         return m.group(0)
     said = "no" if m.group("no") else "a"
     return f": if there is {said} {m.group('thing')} {m.group('prep')} {m.group('place')}, "
