@@ -382,10 +382,22 @@ def _unbiased(said: str) -> str:
     return _NEGATIVE_QUESTION.sub(r"\1", _QUESTION_TAG.sub("", said))
 
 
+#: a container that has run empty ("run dry" is read so by `expand`) is empty, asked ("has it run
+#: empty?", "Run empty?", its subject dropped; its perfect said is "has been empty" by then) or
+#: said in the present or the past ("when it runs empty", "it's run empty" spelled "it is run")
+_RUN_EMPTY_ASKED = re.compile(r"(?:\b(?:has|have|had) (?P<np>it|they) |^\W*)(?P<adv>(?:already |now |just )?)run empty\b"
+                              r"(?= *\?)")
+_RUN_EMPTY = re.compile(r"\b(?:(?P<be>is|are) run|runs|ran) empty\b")
+
+
 def _contents(said: str) -> str:
     """"there is still wine in it" -> "it is full"; "there is no water left in the jug" -> "the
-    jug is empty"; "there is milk left" -> "the milk is full"; "it still has milk in it" -> "it is full"
-    (`_CONTENTS`, `_LEFT`, `_HAS_IN`)."""
+    jug is empty"; "there is milk left" -> "the milk is full"; "it still has milk in it" -> "it is full";
+    "has it run dry?" -> "is it empty?", "when it runs dry" -> "when it is empty" (`_CONTENTS`,
+    `_LEFT`, `_HAS_IN`, `_RUN_EMPTY`)."""
+    said = _RUN_EMPTY_ASKED.sub(lambda m: f"{'are they' if m.group('np') == 'they' else 'is it'} {m.group('adv')}empty",
+                                said)
+    said = _RUN_EMPTY.sub(lambda m: f"{m.group('be') or 'is'} empty", said)
     def state(m: re.Match[str]) -> str:
         empty = m.group("no") not in (None, "any ") or m.groupdict().get("not") is not None
         return "empty" if empty else "full"
@@ -735,6 +747,22 @@ def _bare_place(words: list[str], found: list[Mention]) -> bool:
         m.kind != "pronoun" for m in found) and all(
         k in covered or w in _BARE_PLACE_WORDS | PLACE_PREPS for k, w in enumerate(words))
 
+
+#: what may open an instruction before its verb ("Then just put back on the counter")
+_INSTRUCTION_LEADS = frozenset({"then", "just", "please", "so", "and"})
+
+
+def _objectless_move(words: list[str], found: list[Mention]) -> bool:
+    """Whether the clause is an instruction of moving with its object left out, then only its
+    place ("Is it dirty? Then put on the trolley.", "Dirty? Take to the sink.", "put back on the
+    counter"): it moves the thing spoken of, so, as with a bare place (`_bare_place`), its place is
+    no new topic and a later "if it is clean" still speaks of that thing."""
+    k = next((i for i, w in enumerate(words) if w not in _INSTRUCTION_LEADS), len(words))
+    if k >= len(words) or words[k] not in ACTIONS:
+        return False
+    k += 1 + (words[k + 1:k + 2] == ["back"])
+    return _bare_place(words[k:], [replace(m, start=m.start - k, end=m.end - k) for m in found if m.start >= k]) \
+        and all(m.start >= k for m in found)
 
 #: the words that may stand between "no" and the thing said to be absent ("no clean sponge")
 _ABSENT_GAP = 2
@@ -1091,7 +1119,7 @@ class _Reader:
             if named_as is not None and not any(w in PLACE_PREPS for w in words[lead + 2:named_as.start]):
                 first = named_as
         if first is not None and first.kind != "pronoun" and not _bare_place(words, found) and not (
-                self.topic and _absent_only(words, found)):
+                self.topic and (_absent_only(words, found) or _objectless_move(words, found))):
             self.topic, self.topic_kind = first.roles, first.kind
         thing = next((m for m in found if m.kind == "role" and not _placed(words, m)), None)
         if thing is not None:
@@ -3078,6 +3106,11 @@ _ASKED_BE = frozenset({"is", "are", "was", "were", "be", "been",
                        "lies", "lie", "sits", "sit", "stands", "stand", "rests", "rest", "hangs", "hang"})
 
 
+#: the modal words of a guess at the present ("it may be lying on the bed", "the keys might be on
+#: the counter"): a placement guessed is not known, as one asked is not; a habit ("sometimes",
+#: "occasionally") says how things often are, not that the writer does not know how they are now
+_HEDGES = frozenset({"may", "might", "could", "possibly", "perhaps", "maybe", "probably", "likely"})
+
 #: what a verbless condition of place may hold besides its thing and its place ("Kettle not on the
 #: counter", "Towel still on the floor?")
 _VERBLESS_WORDS = ARTICLES | PLACE_PREPS | NEGATIONS | {"still", "now", "there"}
@@ -3391,6 +3424,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             if role == "condition" and text.strip() in found_in_text[si]:
                 # (a condition the writer wrote, not one `implied` spelled out: "Examine the mug on
                 # the coffee table" is "examine the mug if it is on the coffee table")
+                reader.doubted |= _asked_again(said, facts, reader.lex)
+            elif role == "uncertain" and {w for w, _, _ in tokens(said)} & _HEDGES:
+                # "IMPACT - Phone on the bed at 0% on waking. ... ACTIONS 1. Phone. It may be lying
+                # on the bed.": a writer who says a thing may be somewhere does not know it, as one
+                # who asks does not, whatever a report said before (`_asked_again`)
                 reader.doubted |= _asked_again(said, facts, reader.lex)
             facts = _already_relative(said, facts)
             if facts is not before_relative:

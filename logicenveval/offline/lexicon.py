@@ -199,6 +199,12 @@ class Mention:
 
 #: a word of two or three capitals ("DW", "WM"): an initialism, when it abbreviates one role's name
 _INITIALISM = re.compile(r"\b[A-Z]{2,3}\b")
+#: English function words a writer puts in capitals for stress ("put it ON the shelf", "do NOT
+#: open", "NO pens on the desk", "SO put it away"): the word itself, never an initialism, though
+#: its letters may spell one ("ON" the ottoman's or the oven's, "NO" the notebook's)
+_STRESSED_WORDS = frozenset({"on", "in", "at", "to", "by", "up", "off", "out", "no", "not", "so", "do", "did", "or",
+                             "and", "but", "it", "is", "am", "are", "was", "the", "all", "any", "me", "my",
+                             "we", "us", "you", "now", "too", "yes", "can", "may", "for"})
 
 
 def _abbreviates(short: str, category: str) -> bool:
@@ -458,7 +464,7 @@ class Lexicon:
                 lex.phrases[phrase[:1]] = {name}  # "the light" of a light switch
         for short in set(_INITIALISM.findall(str(brief.get("description", "")))):
             # "DW already running?", "WM door": a note's initialism of a role's name
-            if (short.lower(),) not in lex.phrases:
+            if (short.lower(),) not in lex.phrases and short.lower() not in _STRESSED_WORDS:
                 meant = {name for name, role in roles.items() if _abbreviates(short.lower(), role["category"])}
                 if len(meant) == 1:
                     lex.phrases[(short.lower(),)] = meant

@@ -385,6 +385,14 @@ def _phrase_tables(catalog: Catalog) -> tuple[dict[tuple[str, ...], str], dict[s
     return phrases, heads, max(len(p) for p in phrases)
 
 
+
+#: the determiners that open a phrase renaming the thing just named (`_Reader.appositive`): "the"
+#: after a comma or a bracket, a possessive too between dashes
+_RENAMING_DETERMINERS = frozenset({"the", "my", "your", "our", "his", "her", "their"})
+#: a dash set between words, as a gap holds it (" - ", " – ", " — ")
+_DASH_GAP = re.compile(r"\s[-\u2013\u2014]\s|[\u2013\u2014]")
+
+
 class _Reader:
     """One reading of one description (the state `name_objects` builds up word by word)."""
 
@@ -1377,19 +1385,26 @@ class _Reader:
         off by commas or brackets ("Papa ka kurta, the white shirt, ...", "My jumper, the blue
         jumper, is on the chair", "ITEM: cloth (the blue rag)"): a definite phrase of the same
         kind, after a comma or an opening bracket that follows that thing's name, closed by a
-        comma, the bracket or the sentence's end; one object, told by the fuller name."""
+        comma, the bracket or the sentence's end; one object, told by the fuller name. Between
+        dashes, the phrase may open with a possessive too ("a campaign cap - my red hat - lying on
+        the chair", "a beaker – your green cup – on the bench"): the dashes close it on both sides."""
         words, gaps = self.text.words, self.text.gaps
         start = self.color_before(i + n - 1)
         the = (start if start is not None else i) - 1
-        if the < 1 or words[the] != "the" or not ("," in gaps[the] or "(" in gaps[the]) or not self.recent \
+        dashed = the >= 1 and bool(_DASH_GAP.search(gaps[the]))
+        if the < 1 or words[the] not in _RENAMING_DETERMINERS or words[the] != "the" and not dashed \
+                or not ("," in gaps[the] or "(" in gaps[the] or dashed) or not self.recent \
                 or self.recent[-1] != category:
             return False
         kind = self.kinds.get(category)
         if kind is None or kind.instances or words[the - 1] not in self.used.get(category, set()):
             return False
         end = i + n
-        if end == len(words) or _SENTENCE_END.search(gaps[end]) or "(" in gaps[the] and ")" in gaps[end]:
+        if end == len(words) or _SENTENCE_END.search(gaps[end]) or "(" in gaps[the] and ")" in gaps[end] \
+                or dashed and _DASH_GAP.search(gaps[end]):
             return True
+        if dashed:
+            return False
         if "(" in gaps[the]:
             return False  # "The mugs (the red mug and the blue mug)": a list in the bracket
         nxt = end

@@ -784,19 +784,42 @@ def _apposed(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> Mention | N
     return m if m.end >= hi or words[m.end] in PUNCT | _APPOSED_MODIFIERS else None
 
 
+#: the words a gloss's bracket may hold after its name and a comma, which say which one it is
+#: ("pufyk (the ottoman, small soft one)", "the komoda (the dresser, left of the door)")
+_GLOSS_TAIL = 6
+
+
 def _bracket_gloss(sent: _Sentence, j: int) -> Mention | None:
     """The thing a bracket right after a place no name of the task names glosses it as ("on
     wersalka (sofa)", "in the kufer (the trunk)", "on the chabudai (the coffee table)"): the
-    bracket holds only a name of one role, its article and modifiers at most. The bracket is a
-    clause of its own (`clause_spans` cuts at brackets), so it is read past the clause's end."""
+    bracket holds only a name of one role, its article and modifiers at most, and after a comma
+    at most a few words that tell it apart ("on pufyk (the ottoman, small soft one)"). The bracket
+    is a clause of its own (`clause_spans` cuts at brackets), so it is read past the clause's end."""
     words = sent.words
-    close = next((c for c in range(j, min(j + 6, len(words))) if words[c] == ")"), None)
+    close = next((c for c in range(j, min(j + 6 + _GLOSS_TAIL, len(words))) if words[c] == ")"), None)
     if close is None:
         return None
-    m = next((t for t in sent.mentions if j <= t.start and t.end == close and t.kind == "role"), None)
+    named = min([c for c in range(j, close) if words[c] == ","] + [close])
+    if close - named > _GLOSS_TAIL + 1 or named - j > 5 or "(" in words[j:close]:
+        return None
+    m = next((t for t in sent.mentions if j <= t.start and t.end == named and t.kind == "role"), None)
     if m is None or len(m.roles) != 1 or not all(w.isalpha() and w not in VERBS | AT for w in words[j:m.start]):
         return None
     return m
+
+
+def _glossed_place(sent: _Sentence, a: int, b: int) -> list[Mention]:
+    """The thing a bracket right after the part [a, b) glosses its last word as, when that word is
+    a place no name of the task names, after a preposition of place ("it stands on pufyk (the
+    ottoman, small soft one)"): the part's holder, though the bracket is a part of its own; none
+    otherwise."""
+    words = sent.words
+    if b + 1 >= len(words) or words[b] != "(" or b - a < 2 or any(m.start <= b - 1 < m.end for m in sent.mentions) \
+            or not (words[b - 2] in FALLBACK_AT or words[b - 3:b - 2] and words[b - 3] in FALLBACK_AT
+                    and words[b - 2] in ARTICLES):
+        return []
+    gloss = _bracket_gloss(sent, b + 1)
+    return [gloss] if gloss is not None else []
 
 
 def _active_perfect(group: list[str]) -> bool:
@@ -2362,7 +2385,7 @@ def _fallback(sent: _Sentence, before: _Before, lex: Lexicon, catalog: Catalog, 
         if clause.mood != "statement":
             continue
         for a, b in _parts(words, clause):
-            ms = [m for m in sent.mentions if a <= m.start and m.end <= b]
+            ms = [m for m in sent.mentions if a <= m.start and m.end <= b] + _glossed_place(sent, a, b)
             lead = next((w for w in words[a:b] if w not in SUBJECT_LEADS), "")
             habit = habitual(words[a:b])
             if ms and habit and lead not in SUBORDINATORS | _WHERE_LEADS:

@@ -250,6 +250,29 @@ _CITATION = re.compile(r"(?<=\S)\[(?:\d+(?:\s*[,\u2013-]\s*\d+)*|[a-z]|(?:citati
 #: it orders the items and says nothing, and left in place it hides a heading after it ("(b)
 #: Bedroom:" is no room heading) and is a word before the step's condition ("3.2 If muddy, ..."
 #: is no instruction ending "... 3.2 if muddy")
+#: a branch labelled by the case it is for, in a bracket before the colon ("PRIMARY TARGET (pan in the
+#: kitchen): ...", "Plan B (no mug on the desk): ...", "Case 2 (no laptop on the desk): skip"): a
+#: thing and its place with no verb, the thing said absent by "no"; read as the condition it is
+#: ("PRIMARY TARGET: if there is a pan in the kitchen, ..."). A bracket that names a place alone
+#: ("Step 2 (kitchen):"), holds a verb ("(the one I bought)") or opens with "in"/"on" is left alone
+_CASE_LABEL = re.compile(r"[ \t]*\((?P<no>no[ \t]+)?(?P<thing>[a-z]+(?:[ \t][a-z]+)?)[ \t]+"
+                         r"(?P<prep>in|on|inside|under)[ \t]+(?P<place>(?:the|my|your|our)[ \t]+[a-z]+(?:[ \t][a-z]+)?)"
+                         r"\)[ \t]*:[ \t]*", re.I)
+#: words that make the bracket's words before the place no thing ("(it is on the desk)", "(put
+#: it on the desk)": a verb or a pronoun); an instruction's verb (`ACTIONS`) neither
+_NO_CASE_THING = frozenset({"is", "are", "was", "were", "be", "has", "have", "had", "lies", "sits", "stands",
+                            "it", "them", "they", "one", "ones", "this", "that"})
+
+
+def _case_label(m: re.Match[str]) -> str:
+    """`_CASE_LABEL`'s bracket as the condition it labels its branch by."""
+    said = m.group("thing").lower().split()
+    if set(said) & _NO_CASE_THING or said[0] in ACTIONS:
+        return m.group(0)
+    said = "no" if m.group("no") else "a"
+    return f": if there is {said} {m.group('thing')} {m.group('prep')} {m.group('place')}, "
+
+
 _ITEM_LABEL = re.compile(r"^[ \t]*(?:\((?:[a-z]|[ivx]+|\d{1,2})\)|(?:[a-z]|[ivx]+|\d{1,2})\)|\d{1,2}\.|\d{1,2}(?:\.\d(?!\d))+\.?)"
                          r"[ \t]+",
                          re.M | re.I)
@@ -282,17 +305,31 @@ _ELIDED_PLACE = re.compile(
 #: listener is) is left alone, as is an idiom of "on" that is no place (`IDIOM_PLACES`: "On your
 #: way out?", "On the phone?")
 IDIOM_PLACES = ("way", "phone", "call", "whole", "list", "go", "own", "shift", "duty", "rota", "agenda")
+#: a question of place whose writer kept the finite verb and dropped its subject, as a speaker of
+#: a null-subject language does (Ukrainian, Russian, Spanish: "Lies on the floor?", "Is on the
+#: sofa?", "Still lie on the rug?"): the verb "be" or of resting, and whether it is singular
+_DROPPED_VERBS = {"is": True, "are": False, "lies": True, "lie": False, "sits": True, "sit": False,
+                  "stands": True, "stand": False, "rests": True, "rest": False}
 _ELIDED_PLACE_QUESTION = re.compile(
-    r"(?:(?<=^)|(?<=[.!?;]\s)|(?<=\n))(?:(?:still|already|left|lying)\s+)?(?:on|upon|under|underneath|behind)\s+"
+    r"(?:(?<=^)|(?<=[.!?;]\s)|(?<=\n))(?:(?:still|already|left|lying)\s+)?"
+    rf"(?:(?:{'|'.join(_DROPPED_VERBS)})\s+(?:(?:still|already|now)\s+)?)?(?:on|upon|under|underneath|behind)\s+"
     rf"(?:the|a|an|your|my|our|his|her|their)\s+(?!(?:{'|'.join(IDIOM_PLACES)})\b)"
     r"(?:(?!(?:is|are|was|were|it|they)\b)[^\s?.!,;:]+\s*){1,4}\?",
     re.I | re.M)
 
 
 def _asked_place(m: re.Match[str]) -> str:
-    """`_ELIDED_PLACE_QUESTION`'s question with its subject and copula: "Is it on the floor?"."""
+    """`_ELIDED_PLACE_QUESTION`'s question with its subject and copula: "Is it on the floor?"; a
+    finite verb of resting its writer kept, the subject dropped ("Lies on the floor?", "Still lie
+    on the rug?"), gives way to the copula of its number ("Is it on the floor?", "Are they on the
+    rug?")."""
     said = m.group(0)
-    return f"{_match_case(said, 'is it')} {said[:1].lower()}{said[1:]}"
+    verb = re.match(rf"(?:(?:still|already)\s+)?({'|'.join(_DROPPED_VERBS)})\s+", said, re.I)
+    if verb is None:
+        return f"{_match_case(said, 'is it')} {said[:1].lower()}{said[1:]}"
+    rest = said[:verb.start(1)] + said[verb.end():]
+    asked = "is it" if _DROPPED_VERBS[verb.group(1).lower()] else "are they"
+    return f"{_match_case(said, asked)} {rest[:1].lower()}{rest[1:]}"
 #: a condition whose subject pronoun is dropped, as a speaker of a null-subject language drops it
 #: (Spanish, Italian, Portuguese: "si está encendida"; a hasty text: "if is still on, turn it
 #: off", "unless are dry"): "if" or "unless" then a finite "be" that no "there" follows, read with
@@ -359,7 +396,7 @@ _EMPHATIC_DO = re.compile(rf"(?<=\w)\s+(?:do|does|did)(?=\s+(?:{'|'.join(sorted(
 #: hamper", "put it on the desk - I mean on the shelf"): the corrected place, with the words that
 #: retract it, is dropped, so only the place meant is read
 _PLACE_PREP = r"(?:in|on|into|onto|to|under|inside|next to|by)\b"
-_RETRACT = r"(?:no,?\s+wait|wait,?\s+no|no,?\s+sorry|sorry|i mean|or rather|scratch that|actually|correction)"
+_RETRACT = r"(?:no,?\s+wait|wait,?\s+no|no,?\s+sorry|sorry|i mean|or rather|scratch that|actually|correction|no)"
 #: "Unless Maya already took it down, the bag goes in the bin", "If it's not already in the
 #: basket, put the towel there": a condition put first that asks, of a thing it names only by a
 #: pronoun, whether it is already where or as its main clause makes it. The pronoun points forward
@@ -409,8 +446,11 @@ def _postposed(m: re.Match[str]) -> str:
     return f"{m.group('lead')}{main[:1].upper()}{main[1:]}, {cond}{m.group('end')}"
 
 
-_SELF_CORRECTION = re.compile(rf"\b{_PLACE_PREP}[^,.;:!?()]{{1,40}}?[\s,\-\u2013\u2014]+"
-                              rf"(?:{_RETRACT}[\s,\-\u2013\u2014]+)+(?={_PLACE_PREP})", re.I)
+#: what stands between the place taken back, the words that retract it and the place meant: a
+#: comma, a dash, or suspension points ("put in the cabinet... no, on the cabinet")
+_RETRACT_GAP = r"(?:[\s,\-\u2013\u2014\u2026]|\.{2,})+"
+_SELF_CORRECTION = re.compile(rf"\b{_PLACE_PREP}[^,.;:!?()\u2026]{{1,40}}?{_RETRACT_GAP}"
+                              rf"(?:{_RETRACT}{_RETRACT_GAP})+(?={_PLACE_PREP})", re.I)
 
 
 #: a bare state word as the subject of a verb of going ("dirty goes in the hamper", "wet go on the
@@ -1277,7 +1317,7 @@ def unquote(text: str) -> str:
     text = starred(_TIME_STAMP.sub(r"\1", _CITATION.sub("", _MARKDOWN_HEADING.sub(r"\g<title>:", text))))
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
     plain = _IF_ANY.sub(_if_any, plain)
-    plain = _FRONTED_ALREADY.sub(_postposed, plain)
+    plain = _CASE_LABEL.sub(_case_label, _FRONTED_ALREADY.sub(_postposed, plain))
     plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _ITEM_END.sub(".\n", _QUOTE_MARK.sub("", _QUOTED_PREMISE.sub(
         r"\g<q>?\g<gap>", _FORUM_QUOTE.sub(_forum_quote, _ATTRIBUTION.sub("", plain)))))))
     plain = _unabbreviated(plain)
@@ -1487,6 +1527,9 @@ _ON_TOP = re.compile(r"\bon\s+top\s+of\b", re.I)
 #: a verb of becoming in the perfect before a state word is the copula: "if it has run empty",
 #: "if the vase has gone dry", "once the towel has got wet" say it is so now, as "has been" does
 #: (not "gone" alone, which is absence, nor a particle: "has gone off", "has turned on")
+#: "run dry" is said of a container or a spring, never of a towel: it has run empty ("has the vase
+#: run dry?", "when the can runs dry"), whatever "dry" alone says (`_BECOME` then reads the perfect)
+_RUN_DRY = re.compile(r"\b(run|runs|ran)\s+dry\b", re.I)
 _BECOME = re.compile(r"\b(has|have|had)\s+(?:(just|already|now)\s+)?(?:run|gone|got|gotten|become|turned|grown)\s+(?=(?:"
                      + "|".join(w for w in STATE_WORDS if w not in ("on", "off", "out")) + r")\b)", re.I)
 
@@ -1535,12 +1578,12 @@ def _participle(m: re.Match[str]) -> str:
 def expand(text: str) -> str:
     """The text with contractions spelled out ("it's" -> "it is"), possessives dropped, "w/" read
     as "with", "and/or" as "or", a slash between words as "or", a dropped "g" restored
-    (`_g_restored`) and a verb of becoming in the perfect before a state as "been" (`_BECOME`),
-    "on top of" as "on" (`_ON_TOP`)."""
+    (`_g_restored`), "run dry" as "run empty" (`_RUN_DRY`) and a verb of becoming in the perfect
+    before a state as "been" (`_BECOME`), "on top of" as "on" (`_ON_TOP`)."""
     out = _SLASH.sub(" or ", _AND_OR.sub("or", _WITH.sub("with ", _ON_TOP.sub("on", text.replace("\u2019", "'")))))
     for pat, repl in _CONTRACTIONS:
         out = re.sub(pat, repl, out, flags=re.I)
-    out = _PAST_AS_PARTICIPLE.sub(_participle, _DROPPED_G.sub(_g_restored, out))
+    out = _RUN_DRY.sub(r"\1 empty", _PAST_AS_PARTICIPLE.sub(_participle, _DROPPED_G.sub(_g_restored, out)))
     return _BECOME.sub(lambda m: f"{m.group(1)} {m.group(2) + ' ' if m.group(2) else ''}been ", out)
 
 
