@@ -883,6 +883,77 @@ _BE_THEN = re.compile(r"(^|[.!?;:]\s+|\n\s*)((?:is|are|was|were)\s+(?:the|a|an|t
                       r"\b[^.!?;:,\n]{1,80}?)\s*,\s*then\s+(?=[a-z])", re.I)
 
 
+#: "connected" / "disconnected" for a machine's on and off, the calque of the Portuguese
+#: "ligado/desligado" and the Spanish "conectado/desconectado" ("if the air conditioner is
+#: connected, please disconnect it", "if is still connected, disconnect"): as a state after a
+#: copula or "still"/"already", and as the verb before its pronoun, when no "to", "from" or "with"
+#: says what it is connected to ("if the printer is connected to the laptop" is a link, and stays)
+_CONNECTED = re.compile(r"\b(?P<before>(?:is|are|was|were|be|still|already|stays|remains)\s+)(?P<dis>dis)?connected\b"
+                        r"(?!\s+(?:to|from|with|by|into|up)\b)", re.I)
+_CONNECT_IT = re.compile(r"\b(?P<dis>dis)?connect\s+(?P<obj>it|them)\b(?!\s+(?:to|from|with|into|up)\b)", re.I)
+
+
+def connected_as_on(text: str) -> str:
+    """The text with `_CONNECTED` states said "on"/"off" and `_CONNECT_IT` verbs "switch ... on/off"."""
+    text = _CONNECTED.sub(lambda m: m.group("before") + ("off" if m.group("dis") else "on"), text)
+    return _CONNECT_IT.sub(lambda m: f"switch {m.group('obj')} {'off' if m.group('dis') else 'on'}", text)
+
+
+#: a yes/no question that puts its subject after its predicate, the order of the asker's own
+#: language (Greek, Spanish, Italian, Portuguese, Romanian, Arabic: "Is on the floor again the
+#: board game?", "Is still open the laptop?", "Are dirty the cups?"): a copula opening its
+#: sentence, then a place or a state word, then the subject with its determiner before the
+#: question mark; read in English order ("Is the board game on the floor again?")
+_SUBJECT_LAST = re.compile(r"(?P<lead>^|[.!?;:]\s+|\n\s*)(?P<be>is|are|was|were)\s+(?P<rest>[a-z][a-z' ]{2,80}?)\s*\?",
+                           re.I | re.M)
+#: adverbs that may stand on either side of the fronted predicate
+_SUBJECT_LAST_ADVERBS = frozenset({"still", "again", "already", "now", "maybe", "perhaps", "really", "also"})
+#: what a postposed subject opens with, and the determiner of a fronted place
+_SUBJECT_LAST_DETERMINERS = frozenset({"the", "my", "your", "our", "his", "her", "their", "this", "that", "these",
+                                       "those", "a", "an"})
+_SUBJECT_LAST_PLACES = frozenset({"on", "in", "inside", "under", "by", "near", "behind", "beside", "onto", "into"})
+
+
+def _subject_last(m: re.Match[str]) -> str:
+    """The `_SUBJECT_LAST` question in English order, when its words after the copula are
+    adverbs, a place (a preposition, a determiner and one or two nouns) or a state word
+    (`STATE_WORDS`), adverbs, and a subject with its determiner; any other question ("Is the lamp
+    on?", "Is there a mug?", "Is on the floor?") stays as it is."""
+    words = m.group("rest").split()
+    return _subject_last_order(m, words, place=True) or _subject_last_order(m, words, place=False) or m.group(0)
+
+
+def _subject_last_order(m: re.Match[str], words: list[str], place: bool) -> str | None:
+    """`_subject_last` with the predicate read as a place (`place`) or as a state word: "on" is
+    either ("Is on the desk my mug?", "Is still on the lamp?"). None when the words do not fit."""
+    i = 0
+    while i < len(words) and words[i].lower() in _SUBJECT_LAST_ADVERBS:
+        i += 1
+    start = i
+    if not place and i < len(words) and words[i].lower() in STATE_WORDS and (
+            words[i].lower() not in _SUBJECT_LAST_PLACES or {w.lower() for w in words[:i]} & {"still", "already"}):
+        i += 1  # ("on" as a state only after "still"/"already": "Is on the floor?" asks of no floor)
+    elif place and i + 2 < len(words) and words[i].lower() in _SUBJECT_LAST_PLACES \
+            and words[i + 1].lower() in _SUBJECT_LAST_DETERMINERS:
+        i += 3
+        if i < len(words) and words[i].lower() not in _SUBJECT_LAST_ADVERBS | _SUBJECT_LAST_DETERMINERS \
+                | _SUBJECT_LAST_PLACES:
+            i += 1  # a place of two words ("on the coffee table")
+    else:
+        return None
+    predicate = words[start:i]
+    while i < len(words) and words[i].lower() in _SUBJECT_LAST_ADVERBS:
+        i += 1
+    subject = words[i:]
+    if not 2 <= len(subject) <= 4 or subject[0].lower() not in _SUBJECT_LAST_DETERMINERS \
+            or set(w.lower() for w in subject) & (_SUBJECT_LAST_PLACES | set(STATE_WORDS)):
+        return None
+    adverbs = [w for w in words[:i] if w.lower() in _SUBJECT_LAST_ADVERBS and w not in predicate]
+    # (a state after its adverbs, "is the laptop still open"; a place before them, "... on the floor again")
+    said = adverbs + predicate if len(predicate) == 1 else predicate + adverbs
+    return f"{m.group('lead')}{m.group('be')} {' '.join(subject + said)}?"
+
+
 def _no_then(m: re.Match[str]) -> str:
     words = m.group(2).lower().split()
     if set(words[1:]) & (ACTIONS | {"is", "are", "was", "were", "need", "needs", "one", "way", "matter"}):
@@ -1197,6 +1268,7 @@ def unquote(text: str) -> str:
     (`answered_questions`)."""
     text = _DASHED_ASIDE.sub(r"\g<cue> ", answered_questions(text))
     text = _SUPPOSED_IF.sub(_occasion_if, _OCCASION_IF.sub(_occasion_if, _COMMENT_ASIDE.sub(" ", _QUOTED_WHOLE.sub(r"\1", text))))
+    text = _SUBJECT_LAST.sub(_subject_last, connected_as_on(text))
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
     text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_dictated(_runs_on(_modern(_NATIVE_IF.sub(_native_if, text))))))))
     text = _TO_BE_CHECKED.sub(" may be ", _OTHER_THAN.sub(r"\1 else than", text))
