@@ -3,17 +3,19 @@ English (eighteenth session)"): structures the English of speakers of other lang
 each written here as composed sentences in the English of several language backgrounds (none
 from the task sets), with near misses that must stay apart:
 
-- (a) a yes/no question with its subject after its predicate, the order of Greek, Spanish,
-  Italian, Portuguese, Romanian and Arabic ("Is on the floor again the board game? Then ...",
-  `sentences._subject_last`);
+- (a) a yes/no question, a condition or a doubt with its subject after its predicate, the order
+  of Greek, Spanish, Italian, Portuguese, Romanian and Arabic ("Is on the floor again the board
+  game? Then ...", "If is open the laptop, close it", `sentences._subject_last`,
+  `sentences._subject_last_if`);
 - (b) a request with its "you" dropped after a condition typed without its comma, as speakers of
   languages that drop a known subject ask (Singapore/Malaysian English, Chinese, Indonesian,
   Thai: "if the fan still on can help me off it", `clauses._subjectless_request`);
 - (c) "connected"/"disconnected" for a machine's on and off, the Portuguese and Spanish calque
   ("if the air conditioner is connected, please disconnect it", `sentences.connected_as_on`).
 
-Measured on the tables below on the tree before the rules: (a) 0 of 6 asked, (b) 4 of 6, (c) 0 of 6; after:
-all of them, and every near miss as before."""
+Measured on the tables below on the tree before the rules: (a) 0 of 6 asked in questions and 0 of
+6 in conditions and doubts, (b) 4 of 6, (c) 0 of 6; after: all of them, and every near miss as
+before."""
 
 from __future__ import annotations
 
@@ -21,7 +23,13 @@ import pytest
 from reading import asks, factors
 
 from logicenveval.offline.clauses import split_clauses
-from logicenveval.offline.sentences import _SUBJECT_LAST, _subject_last, connected_as_on
+from logicenveval.offline.sentences import (
+    _SUBJECT_LAST,
+    _SUBJECT_LAST_IF,
+    _subject_last,
+    _subject_last_if,
+    connected_as_on,
+)
 
 # -- (a) the subject after its predicate in a yes/no question ---------------------------------
 
@@ -63,6 +71,34 @@ def test_the_question_is_read_in_english_order(question: str, english: str) -> N
 ])
 def test_other_questions_stay_as_they_are(question: str) -> None:
     assert _SUBJECT_LAST.sub(_subject_last, question) == question
+
+
+SUBJECT_LAST_CLAUSE = [
+    # the same order in a condition or a doubt, up to its comma or full stop
+    ("Spanish", "If is open the laptop, close it, the battery is old.", "office", "state(laptop, open)"),
+    ("Portuguese", "In case are on the floor the towels, hang them on the towel rail.", "bathroom",
+     "on(towel, floor)"),
+    ("Greek", "When is still on the kettle, switch it off, is dangerous.", "kitchen", "state(kettle, toggled_on)"),
+    ("Italian", "Maybe is still on the lamp. If yes, switch it off.", "bedroom", "state(table_lamp, toggled_on)"),
+    ("Romanian", "Perhaps is on the sofa again my scarf. If yes, hang it on the coat hook.", "living room",
+     "on(scarf, sofa)"),
+    ("Arabic", "If is dirty the mug, put it in the sink.", "kitchen", "state(mug, dirty)"),
+]
+
+
+@pytest.mark.parametrize(("background", "text", "room", "condition"), SUBJECT_LAST_CLAUSE)
+def test_a_condition_with_its_subject_last_asks_it(background: str, text: str, room: str, condition: str) -> None:
+    assert asks(text, (room,), condition), background
+
+
+@pytest.mark.parametrize("text", [
+    "If is on, close it.",                       # the subject dropped: read as before, of the thing spoken of
+    "if is on the floor, pick it up",            # the same with a place
+    "Maybe is better to leave it.",              # no state or place after the copula
+    "If are on the floor any towels, hang them.",  # a quantifier, not a determiner: left alone
+])
+def test_a_condition_with_no_subject_after_its_predicate_stays(text: str) -> None:
+    assert _SUBJECT_LAST_IF.sub(_subject_last_if, text) == text
 
 
 # -- (b) a request with its "you" dropped ------------------------------------------------------

@@ -906,6 +906,10 @@ def connected_as_on(text: str) -> str:
 #: question mark; read in English order ("Is the board game on the floor again?")
 _SUBJECT_LAST = re.compile(r"(?P<lead>^|[.!?;:]\s+|\n\s*)(?P<be>is|are|was|were)\s+(?P<rest>[a-z][a-z' ]{2,80}?)\s*\?",
                            re.I | re.M)
+#: the same order in a condition ("If is open the laptop, close it", "in case are on the floor the
+#: towels, ...") or a doubt ("Maybe is still on the lamp."), up to its comma or full stop
+_SUBJECT_LAST_IF = re.compile(r"(?P<lead>\b(?:if|when|unless|in case|maybe|perhaps)\s+)(?P<be>is|are|was|were)\s+"
+                              r"(?P<rest>[a-z][a-z' ]{2,80}?)(?P<end>\s*[,.])", re.I)
 #: adverbs that may stand on either side of the fronted predicate
 _SUBJECT_LAST_ADVERBS = frozenset({"still", "again", "already", "now", "maybe", "perhaps", "really", "also"})
 #: what a postposed subject opens with, and the determiner of a fronted place
@@ -920,10 +924,20 @@ def _subject_last(m: re.Match[str]) -> str:
     (`STATE_WORDS`), adverbs, and a subject with its determiner; any other question ("Is the lamp
     on?", "Is there a mug?", "Is on the floor?") stays as it is."""
     words = m.group("rest").split()
-    return _subject_last_order(m, words, place=True) or _subject_last_order(m, words, place=False) or m.group(0)
+    order = _subject_last_order(words, place=True) or _subject_last_order(words, place=False)
+    return m.group(0) if order is None else f"{m.group('lead')}{m.group('be')} {order[0]} {order[1]}?"
 
 
-def _subject_last_order(m: re.Match[str], words: list[str], place: bool) -> str | None:
+def _subject_last_if(m: re.Match[str]) -> str:
+    """The `_SUBJECT_LAST_IF` condition in English order ("if the laptop is open,"), as
+    `_subject_last` reads the question; a condition with no subject after its predicate ("if is
+    on, close it") stays as it is."""
+    words = m.group("rest").split()
+    order = _subject_last_order(words, place=True) or _subject_last_order(words, place=False)
+    return m.group(0) if order is None else f"{m.group('lead')}{order[0]} {m.group('be')} {order[1]}{m.group('end')}"
+
+
+def _subject_last_order(words: list[str], place: bool) -> tuple[str, str] | None:
     """`_subject_last` with the predicate read as a place (`place`) or as a state word: "on" is
     either ("Is on the desk my mug?", "Is still on the lamp?"). None when the words do not fit."""
     i = 0
@@ -951,7 +965,7 @@ def _subject_last_order(m: re.Match[str], words: list[str], place: bool) -> str 
     adverbs = [w for w in words[:i] if w.lower() in _SUBJECT_LAST_ADVERBS and w not in predicate]
     # (a state after its adverbs, "is the laptop still open"; a place before them, "... on the floor again")
     said = adverbs + predicate if len(predicate) == 1 else predicate + adverbs
-    return f"{m.group('lead')}{m.group('be')} {' '.join(subject + said)}?"
+    return " ".join(subject), " ".join(said)
 
 
 def _no_then(m: re.Match[str]) -> str:
@@ -1268,7 +1282,7 @@ def unquote(text: str) -> str:
     (`answered_questions`)."""
     text = _DASHED_ASIDE.sub(r"\g<cue> ", answered_questions(text))
     text = _SUPPOSED_IF.sub(_occasion_if, _OCCASION_IF.sub(_occasion_if, _COMMENT_ASIDE.sub(" ", _QUOTED_WHOLE.sub(r"\1", text))))
-    text = _SUBJECT_LAST.sub(_subject_last, connected_as_on(text))
+    text = _SUBJECT_LAST_IF.sub(_subject_last_if, _SUBJECT_LAST.sub(_subject_last, connected_as_on(text)))
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
     text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_dictated(_runs_on(_modern(_NATIVE_IF.sub(_native_if, text))))))))
     text = _TO_BE_CHECKED.sub(" may be ", _OTHER_THAN.sub(r"\1 else than", text))
