@@ -899,6 +899,26 @@ def connected_as_on(text: str) -> str:
     return _CONNECT_IT.sub(lambda m: f"switch {m.group('obj')} {'off' if m.group('dis') else 'on'}", text)
 
 
+#: a condition that puts the place before an existential, the order of Chinese, Russian, Polish,
+#: Hungarian, Turkish and Korean ("If on the desk there is a mug,", "when on the sofa is a
+#: blanket,", "if on the table got a mug,", "if on the floor have towels,"; English allows the
+#: first two too): read "if there is a mug on the desk," so that the place is no state of the thing
+#: ("on" after "if") and the thing is asked there; only up to the condition's comma, with a thing
+#: of one to three words after its determiner or none
+#: (a word of the thing: no state or adverb, "when in the kitchen is the kettle still on," asks a state)
+_THING_WORD = rf"(?!(?:{'|'.join(sorted(STATE_WORDS))}|still|already|not|again)\b)[a-z]+"
+_PLACE_FIRST_EXISTENTIAL = re.compile(
+    r"(?P<lead>\b(?:if|when|whenever|unless|in case)\s+)(?P<place>(?:on|in|inside|under|by|near|beside|behind)\s+"
+    r"(?:the|my|your|our|his|her|their)\s+(?:(?!(?:there|is|are|has|have|got)\b)[a-z]+\s+){1,2})"
+    r"(?P<verb>there\s+is|there\s+are|there's|is|are|has|have|got)\s+"
+    rf"(?P<thing>(?:(?:a|an|some|any|the)\s+)?{_THING_WORD}(?:\s+{_THING_WORD}){{0,2}}?)(?P<end>\s*,)", re.I)
+
+
+def _place_first_existential(m: re.Match[str]) -> str:
+    plural = m.group("verb").lower() in ("are", "have", "there are") or m.group("thing").lower().startswith("some ")
+    return f"{m.group('lead')}there {'are' if plural else 'is'} {m.group('thing')} {m.group('place').strip()}{m.group('end')}"
+
+
 #: a yes/no question that puts its subject after its predicate, the order of the asker's own
 #: language (Greek, Spanish, Italian, Portuguese, Romanian, Arabic: "Is on the floor again the
 #: board game?", "Is still open the laptop?", "Are dirty the cups?"): a copula opening its
@@ -1283,6 +1303,7 @@ def unquote(text: str) -> str:
     text = _DASHED_ASIDE.sub(r"\g<cue> ", answered_questions(text))
     text = _SUPPOSED_IF.sub(_occasion_if, _OCCASION_IF.sub(_occasion_if, _COMMENT_ASIDE.sub(" ", _QUOTED_WHOLE.sub(r"\1", text))))
     text = _SUBJECT_LAST_IF.sub(_subject_last_if, _SUBJECT_LAST.sub(_subject_last, connected_as_on(text)))
+    text = _PLACE_FIRST_EXISTENTIAL.sub(_place_first_existential, text)
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
     text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_dictated(_runs_on(_modern(_NATIVE_IF.sub(_native_if, text))))))))
     text = _TO_BE_CHECKED.sub(" may be ", _OTHER_THAN.sub(r"\1 else than", text))
