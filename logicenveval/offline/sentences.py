@@ -886,8 +886,9 @@ _BE_THEN = re.compile(r"(^|[.!?;:]\s+|\n\s*)((?:is|are|was|were)\s+(?:the|a|an|t
 #: "connected" / "disconnected" for a machine's on and off, the calque of the Portuguese
 #: "ligado/desligado" and the Spanish "conectado/desconectado" ("if the air conditioner is
 #: connected, please disconnect it", "if is still connected, disconnect"): as a state after a
-#: copula or "still"/"already", and as the verb before its pronoun, when no "to", "from" or "with"
-#: says what it is connected to ("if the printer is connected to the laptop" is a link, and stays)
+#: copula, "still", "already", "stays" or "remains", and as the verb before its pronoun, when no
+#: "to", "from", "with", "by", "into" or "up" says what it is linked to ("if the printer is
+#: connected to the laptop" is a link, and stays)
 _CONNECTED = re.compile(r"\b(?P<before>(?:is|are|was|were|be|still|already|stays|remains)\s+)(?P<dis>dis)?connected\b"
                         r"(?!\s+(?:to|from|with|by|into|up)\b)", re.I)
 _CONNECT_IT = re.compile(r"\b(?P<dis>dis)?connect\s+(?P<obj>it|them)\b(?!\s+(?:to|from|with|into|up)\b)", re.I)
@@ -899,14 +900,15 @@ def connected_as_on(text: str) -> str:
     return _CONNECT_IT.sub(lambda m: f"switch {m.group('obj')} {'off' if m.group('dis') else 'on'}", text)
 
 
+#: a word of that thing: no state word or adverb ("when in the kitchen is the kettle still on," asks
+#: a state of the kettle, no existential)
+_THING_WORD = rf"(?!(?:{'|'.join(sorted(STATE_WORDS))}|still|already|not|again)\b)[a-z]+"
 #: a condition that puts the place before an existential, the order of Chinese, Russian, Polish,
 #: Hungarian, Turkish and Korean ("If on the desk there is a mug,", "when on the sofa is a
 #: blanket,", "if on the table got a mug,", "if on the floor have towels,"; English allows the
 #: first two too): read "if there is a mug on the desk," so that the place is no state of the thing
 #: ("on" after "if") and the thing is asked there; only up to the condition's comma, with a thing
-#: of one to three words after its determiner or none
-#: (a word of the thing: no state or adverb, "when in the kitchen is the kettle still on," asks a state)
-_THING_WORD = rf"(?!(?:{'|'.join(sorted(STATE_WORDS))}|still|already|not|again)\b)[a-z]+"
+#: of one to three words after its determiner or none (`_THING_WORD`)
 _PLACE_FIRST_EXISTENTIAL = re.compile(
     r"(?P<lead>\b(?:if|when|whenever|unless|in case)\s+)(?P<place>(?:on|in|inside|under|by|near|beside|behind)\s+"
     r"(?:the|my|your|our|his|her|their)\s+(?:(?!(?:there|is|are|has|have|got)\b)[a-z]+\s+){1,2})"
@@ -915,6 +917,7 @@ _PLACE_FIRST_EXISTENTIAL = re.compile(
 
 
 def _place_first_existential(m: re.Match[str]) -> str:
+    """The `_PLACE_FIRST_EXISTENTIAL` condition as "there is/are <thing> <place>"."""
     plural = m.group("verb").lower() in ("are", "have", "there are") or m.group("thing").lower().startswith("some ")
     return f"{m.group('lead')}there {'are' if plural else 'is'} {m.group('thing')} {m.group('place').strip()}{m.group('end')}"
 
@@ -1299,7 +1302,9 @@ def unquote(text: str) -> str:
     participle read as its state (`_QUESTION_PREDICATE`), and a learner's participle without its
     ending at a condition's end as the state ("if curtain still close": `_BARE_PARTICIPLE`); a
     question-and-answer layout's answer framed by the case its question states, first
-    (`answered_questions`)."""
+    (`answered_questions`); a learner's subject after its predicate in a question, condition or
+    doubt in English order (`_SUBJECT_LAST`, `_SUBJECT_LAST_IF`), "connected" for on
+    (`connected_as_on`) and a place put before an existential after it (`_PLACE_FIRST_EXISTENTIAL`)."""
     text = _DASHED_ASIDE.sub(r"\g<cue> ", answered_questions(text))
     text = _SUPPOSED_IF.sub(_occasion_if, _OCCASION_IF.sub(_occasion_if, _COMMENT_ASIDE.sub(" ", _QUOTED_WHOLE.sub(r"\1", text))))
     text = _SUBJECT_LAST_IF.sub(_subject_last_if, _SUBJECT_LAST.sub(_subject_last, connected_as_on(text)))
