@@ -747,6 +747,17 @@ def _last_step(head: str) -> int | None:
     return steps[-1].start() if steps else None
 
 
+def _subjectless_request(words: list[str], k: int) -> bool:
+    """A request with its "you" dropped right after a condition's state word, the comma left out
+    ("if the fan still on can help me off it", "if the laptop open can close it pls", "if still
+    on could switch off for me"): the English of speakers whose languages drop a known subject
+    (Singapore and Malaysian English, Chinese, Indonesian, Thai, Vietnamese, Korean) asks with the
+    modal alone. Only after a state word (`STATE_WORDS`) ending the condition and before an
+    imperative (`imperative`); "if it can be moved", "if the lamp is on it can overheat" have a
+    subject before the modal or no imperative after it."""
+    return words[k] in REQUESTS and words[k - 1] in STATE_WORDS and imperative(words[k + 1:k + 3])
+
+
 def _imperative_cut(cond: str, subjects_only: bool = False) -> int | None:
     """Where a condition typed without a comma runs into its instruction ("if its not in there
     put it in there", "if the lamp is still on turn it off", "if empty bin it"): before the first
@@ -755,7 +766,8 @@ def _imperative_cut(cond: str, subjects_only: bool = False) -> int | None:
     request ("if it still is can you shut it"). None if there is no such verb (the whole text is
     the condition). Before the condition's own comma or dash (`subjects_only`) only a main clause
     with a subject of its own ends it: an imperative there is the condition's ("if you find it
-    off the shelf put back, ...") as often as not."""
+    off the shelf put back, ...") as often as not; so does a request with its "you" dropped
+    (`_subjectless_request`: "if still on can help me off it, the switch is on the left")."""
     said = expand(cond).lower()
     ws = list(re.finditer(r"[a-z]+", said))
     plain = [w.group() for w in ws]
@@ -780,7 +792,8 @@ def _imperative_cut(cond: str, subjects_only: bool = False) -> int | None:
         # a terse instruction with its verb dropped after a bare state ("if wet into laundry
         # basket", "IF DIRTY ONTO THE PILE"): the direction starts it (`DIRECTIONS`)
         bare = ws[k].group() in DIRECTIONS and ws[k - 1].group() in STATE_WORDS
-        if not subjects_only and (request or bare or imperative(plain[k:k + 2])) or _main_clause(plain, k):
+        if not subjects_only and (request or bare or imperative(plain[k:k + 2])) or _main_clause(plain, k) \
+                or _subjectless_request(plain, k):
             # the same words in the text as written (the expansion only lengthens what is before)
             rest = said[ws[k].start():]
             at = cond.lower().rfind(rest)

@@ -939,6 +939,114 @@ _BE_THEN = re.compile(r"(^|[.!?;:]\s+|\n\s*)((?:is|are|was|were)\s+(?:the|a|an|t
                       r"\b[^.!?;:,\n]{1,80}?)\s*,\s*then\s+(?=[a-z])", re.I)
 
 
+#: "connected" / "disconnected" for a machine's on and off, the calque of the Portuguese
+#: "ligado/desligado" and the Spanish "conectado/desconectado" ("if the air conditioner is
+#: connected, please disconnect it", "if is still connected, disconnect"): as a state after a
+#: copula, "still", "already", "stays" or "remains", and as the verb before its pronoun, when no
+#: "to", "from", "with", "by", "into" or "up" says what it is linked to ("if the printer is
+#: connected to the laptop" is a link, and stays)
+_CONNECTED = re.compile(r"\b(?P<before>(?:is|are|was|were|be|still|already|stays|remains)\s+)(?P<dis>dis)?connected\b"
+                        r"(?!\s+(?:to|from|with|by|into|up)\b)", re.I)
+_CONNECT_IT = re.compile(r"\b(?P<dis>dis)?connect\s+(?P<obj>it|them)\b(?!\s+(?:to|from|with|into|up)\b)", re.I)
+
+
+def connected_as_on(text: str) -> str:
+    """The text with `_CONNECTED` states said "on"/"off" and `_CONNECT_IT` verbs "switch ... on/off"."""
+    text = _CONNECTED.sub(lambda m: m.group("before") + ("off" if m.group("dis") else "on"), text)
+    return _CONNECT_IT.sub(lambda m: f"switch {m.group('obj')} {'off' if m.group('dis') else 'on'}", text)
+
+
+#: a word of that thing: no state word or adverb ("when in the kitchen is the kettle still on," asks
+#: a state of the kettle, no existential)
+_THING_WORD = rf"(?!(?:{'|'.join(sorted(STATE_WORDS))}|still|already|not|again)\b)[a-z]+"
+#: a condition that puts the place before an existential, the order of Chinese, Russian, Polish,
+#: Hungarian, Turkish and Korean ("If on the desk there is a mug,", "when on the sofa is a
+#: blanket,", "if on the table got a mug,", "if on the floor have towels,"; English allows the
+#: first two too): read "if there is a mug on the desk," so that the place is no state of the thing
+#: ("on" after "if") and the thing is asked there; only up to the condition's comma, with a thing
+#: of one to three words after its determiner or none (`_THING_WORD`)
+_PLACE_FIRST_EXISTENTIAL = re.compile(
+    r"(?P<lead>\b(?:if|when|whenever|unless|in case)\s+)(?P<place>(?:on|in|inside|under|by|near|beside|behind)\s+"
+    r"(?:the|my|your|our|his|her|their)\s+(?:(?!(?:there|is|are|has|have|got)\b)[a-z]+\s+){1,2})"
+    r"(?P<verb>there\s+is|there\s+are|there's|is|are|has|have|got)\s+"
+    rf"(?P<thing>(?:(?:a|an|some|any|the)\s+)?{_THING_WORD}(?:\s+{_THING_WORD}){{0,2}}?)(?P<end>\s*,)", re.I)
+
+
+def _place_first_existential(m: re.Match[str]) -> str:
+    """The `_PLACE_FIRST_EXISTENTIAL` condition as "there is/are <thing> <place>"."""
+    plural = m.group("verb").lower() in ("are", "have", "there are") or m.group("thing").lower().startswith("some ")
+    return f"{m.group('lead')}there {'are' if plural else 'is'} {m.group('thing')} {m.group('place').strip()}{m.group('end')}"
+
+
+#: a yes/no question that puts its subject after its predicate, the order of the asker's own
+#: language (Greek, Spanish, Italian, Portuguese, Romanian, Arabic: "Is on the floor again the
+#: board game?", "Is still open the laptop?", "Are dirty the cups?"): a copula opening its
+#: sentence, then a place or a state word, then the subject with its determiner before the
+#: question mark; read in English order ("Is the board game on the floor again?")
+_SUBJECT_LAST = re.compile(r"(?P<lead>^|[.!?;:]\s+|\n\s*)(?P<be>is|are|was|were)\s+(?P<rest>[a-z][a-z' ]{2,80}?)\s*\?",
+                           re.I | re.M)
+#: the same order in a condition ("If is open the laptop, close it", "in case are on the floor the
+#: towels, ...") or a doubt ("Maybe is still on the lamp."), up to its comma or full stop
+_SUBJECT_LAST_IF = re.compile(r"(?P<lead>\b(?:if|when|unless|in case|maybe|perhaps)\s+)(?P<be>is|are|was|were)\s+"
+                              r"(?P<rest>[a-z][a-z' ]{2,80}?)(?P<end>\s*[,.])", re.I)
+#: adverbs that may stand on either side of the fronted predicate
+_SUBJECT_LAST_ADVERBS = frozenset({"still", "again", "already", "now", "maybe", "perhaps", "really", "also"})
+#: what a postposed subject opens with, and the determiner of a fronted place
+_SUBJECT_LAST_DETERMINERS = frozenset({"the", "my", "your", "our", "his", "her", "their", "this", "that", "these",
+                                       "those", "a", "an"})
+_SUBJECT_LAST_PLACES = frozenset({"on", "in", "inside", "under", "by", "near", "behind", "beside", "onto", "into"})
+
+
+def _subject_last(m: re.Match[str]) -> str:
+    """The `_SUBJECT_LAST` question in English order, when its words after the copula are
+    adverbs, a place (a preposition, a determiner and one or two nouns) or a state word
+    (`STATE_WORDS`), adverbs, and a subject with its determiner; any other question ("Is the lamp
+    on?", "Is there a mug?", "Is on the floor?") stays as it is."""
+    words = m.group("rest").split()
+    order = _subject_last_order(words, place=True) or _subject_last_order(words, place=False)
+    return m.group(0) if order is None else f"{m.group('lead')}{m.group('be')} {order[0]} {order[1]}?"
+
+
+def _subject_last_if(m: re.Match[str]) -> str:
+    """The `_SUBJECT_LAST_IF` condition in English order ("if the laptop is open,"), as
+    `_subject_last` reads the question; a condition with no subject after its predicate ("if is
+    on, close it") stays as it is."""
+    words = m.group("rest").split()
+    order = _subject_last_order(words, place=True) or _subject_last_order(words, place=False)
+    return m.group(0) if order is None else f"{m.group('lead')}{order[0]} {m.group('be')} {order[1]}{m.group('end')}"
+
+
+def _subject_last_order(words: list[str], place: bool) -> tuple[str, str] | None:
+    """`_subject_last` with the predicate read as a place (`place`) or as a state word: "on" is
+    either ("Is on the desk my mug?", "Is still on the lamp?"). None when the words do not fit."""
+    i = 0
+    while i < len(words) and words[i].lower() in _SUBJECT_LAST_ADVERBS:
+        i += 1
+    start = i
+    if not place and i < len(words) and words[i].lower() in STATE_WORDS and (
+            words[i].lower() not in _SUBJECT_LAST_PLACES or {w.lower() for w in words[:i]} & {"still", "already"}):
+        i += 1  # ("on" as a state only after "still"/"already": "Is on the floor?" asks of no floor)
+    elif place and i + 2 < len(words) and words[i].lower() in _SUBJECT_LAST_PLACES \
+            and words[i + 1].lower() in _SUBJECT_LAST_DETERMINERS:
+        i += 3
+        if i < len(words) and words[i].lower() not in _SUBJECT_LAST_ADVERBS | _SUBJECT_LAST_DETERMINERS \
+                | _SUBJECT_LAST_PLACES:
+            i += 1  # a place of two words ("on the coffee table")
+    else:
+        return None
+    predicate = words[start:i]
+    while i < len(words) and words[i].lower() in _SUBJECT_LAST_ADVERBS:
+        i += 1
+    subject = words[i:]
+    if not 2 <= len(subject) <= 4 or subject[0].lower() not in _SUBJECT_LAST_DETERMINERS \
+            or set(w.lower() for w in subject) & (_SUBJECT_LAST_PLACES | set(STATE_WORDS)):
+        return None
+    adverbs = [w for w in words[:i] if w.lower() in _SUBJECT_LAST_ADVERBS and w not in predicate]
+    # (a state after its adverbs, "is the laptop still open"; a place before them, "... on the floor again")
+    said = adverbs + predicate if len(predicate) == 1 else predicate + adverbs
+    return " ".join(subject), " ".join(said)
+
+
 def _no_then(m: re.Match[str]) -> str:
     words = m.group(2).lower().split()
     if set(words[1:]) & (ACTIONS | {"is", "are", "was", "were", "need", "needs", "one", "way", "matter"}):
@@ -1304,9 +1412,14 @@ def unquote(text: str) -> str:
     participle read as its state (`_QUESTION_PREDICATE`), and a learner's participle without its
     ending at a condition's end as the state ("if curtain still close": `_BARE_PARTICIPLE`); a
     question-and-answer layout's answer framed by the case its question states, first
-    (`answered_questions`), and before it a quiz's keyed option framed so (`keyed_answers`)."""
+    (`answered_questions`), and before it a quiz's keyed option framed so (`keyed_answers`); a
+    learner's subject after its predicate in a question, condition or doubt in English order
+    (`_SUBJECT_LAST`, `_SUBJECT_LAST_IF`), "connected" for on (`connected_as_on`) and a place put
+    before an existential after it (`_PLACE_FIRST_EXISTENTIAL`)."""
     text = _DASHED_ASIDE.sub(r"\g<cue> ", answered_questions(keyed_answers(text)))
     text = _SUPPOSED_IF.sub(_occasion_if, _OCCASION_IF.sub(_occasion_if, _COMMENT_ASIDE.sub(" ", _QUOTED_WHOLE.sub(r"\1", text))))
+    text = _SUBJECT_LAST_IF.sub(_subject_last_if, _SUBJECT_LAST.sub(_subject_last, connected_as_on(text)))
+    text = _PLACE_FIRST_EXISTENTIAL.sub(_place_first_existential, text)
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
     text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_dictated(_runs_on(_modern(_NATIVE_IF.sub(_native_if, text))))))))
     text = _TO_BE_CHECKED.sub(" may be ", _OTHER_THAN.sub(r"\1 else than", text))
