@@ -4,15 +4,18 @@ an enumeration whose last item follows "or else" ("a book, an alarm clock, or el
 sonnet's rewording); a verbless instruction, a thing and its place, with "unless it's (already)
 there" (a chef's list: "frying pan on the stove unless it's there already"); a sentence of verse or
 of hard-wrapped prose going on after a line that ends on a comma, a semicolon or a colon (a
-sonnet's "put each thing in the place where it should go: / ... / the phone upon the desk"). Each
-structure is written here as composed sentences in several registers, rooms and kinds, with near
-misses that must stay apart (none copied from the task sets)."""
+sonnet's "put each thing in the place where it should go: / ... / the phone upon the desk"); a
+holder "for" a bare plural set against one "for other <kind>" (a list's "a red toy box for dolls and
+a white toy box for other toys", where the original said "a red one for dolls"). Each structure is written here as
+composed sentences in several registers, rooms and kinds, with near misses that must stay apart
+(none copied from the task sets)."""
 
 from __future__ import annotations
 
 import pytest
 from reading import asks as _asks
 from reading import factors as _factors
+from reading import kinds
 
 from logicenveval.offline.sentences import unquote
 
@@ -149,3 +152,34 @@ def test_only_a_text_marking_its_line_ends_runs_on_and_only_into_lower_case(text
     only into a line that opens in lower case."""
     assert (unquote(text).count("\n") < text.count("\n")) == joined, unquote(text)
 
+
+# -- (d) a holder "for" a class, set against one "for other <kind>" ------------------------------
+
+#: holders each for a class of things, one of them for "other <kind>": the classes are that kind's
+#: kinds (a toy's doll, ball; a book's novel), asked of the thing, no objects of their own
+PURPOSE_CLASSES = [
+    # a room list, the kind named only after the holders
+    ("In the room: a sofa; a red toy box for dolls and a white toy box for other toys. A toy found on the "
+     "floor is put into the matching toy box.", ("living_room",), "attr(toy, kind, doll)"),
+    # a terse heading, crates
+    ("Den: a blue crate for balls and a green crate for other toys. If there's a toy on the rug, it goes "
+     "in the matching crate.", ("living_room",), "attr(toy, kind, ball)"),
+    # a house description, shelves for books
+    ("The study has a low shelf for novels and a high shelf for other books. A book left on the desk goes "
+     "on the right shelf.", ("study",), "attr(book, kind, novel)"),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), PURPOSE_CLASSES)
+def test_a_holder_for_a_class_against_other_kind_asks_the_kind(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    assert _asks(text, rooms, condition), _factors(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms", "kind"), [
+    # no "other": the plural after "for" may be the things themselves
+    ("There is a red box for dolls. Put the dolls from the floor in it.", ("kids_room",), "doll"),
+    ("There is a basket for towels by the door. Put the towels from the floor in it.", ("bathroom",), "towel"),
+])
+def test_a_holder_for_things_with_no_other_kind_keeps_the_things(text: str, rooms: tuple[str, ...], kind: str) -> None:
+    assert kind in kinds(text, rooms)
