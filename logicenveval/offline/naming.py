@@ -1969,6 +1969,22 @@ class _Reader:
             return False
         return bool(kinds)
 
+    def purpose_class(self, i: int, n: int, prev: str) -> bool:
+        """Whether the bare plural at word `i` (`n` words) after "for" is a class a holder is for,
+        set against "other <kind>" in its sentence, of whose `kind` values it is one: "a red toy box
+        for dolls and a white toy box for other toys", "a top shelf for novels, a lower one for
+        other books". The kind may be named only after it (`kind_value` asks for one named
+        before), so the class is known by the contrast; a plural after "for" with no "other" of its
+        kind ("a basket for the towels", "a hook for keys") stays an object."""
+        words = self.text.words
+        head = words[i + n - 1]
+        if prev != "for" or self.text.raw[i + n - 1] == head:
+            return False
+        said = words[self.text.sentence_start(i):self.text.sentence_end(i)]
+        others = {said[k + 1] for k, w in enumerate(said[:-1]) if w == "other"}
+        return any(words_of(c)[-1] in others and head in cat.attributes.get(key, ())
+                   for c, cat in self.catalog.categories.items() for key in KIND_ATTRIBUTES)
+
     def bare_heading(self, i: int, n: int) -> bool:
         """Whether the `n` words at `i` are a heading of their own: a bare singular noun opening its
         sentence, right before a colon ("Novel: to the bookshelf", "Textbook: to the desk"), said
@@ -2103,7 +2119,7 @@ class _Reader:
             if self.predicate_noun(i):
                 i += n  # "The essay collection is on the desk, that's a library book"
                 continue
-            if self.kind_value(i, n, prev):
+            if self.kind_value(i, n, prev) or self.purpose_class(i, n, prev):
                 i += n  # "a toy on the floor ... dolls in the red box, toy cars in the blue box"
                 continue
             if shared is None and self.appositive(i, n, category):

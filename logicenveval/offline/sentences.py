@@ -660,6 +660,44 @@ _EVENTUAL_BEFORE = re.compile(
     r"\beventually\b,?(?=\s+(?:there\s+(?:is|are)\b|there's\b|(?:it|they|(?:my|the|your|our|his|her|this|that|a|an|some)"
     rf"(?:\s+[a-z]+){{1,3}}?)\s+(?:is|are)\b{_NOT_PARTICIPLE}))", re.I)
 _EVENTUAL_AFTER = re.compile(rf"\b(?:is|are)\s+eventually\b{_NOT_PARTICIPLE}", re.I)
+
+
+#: an enumeration of two or more things, each with "a"/"an", whose last item follows "or else" ("a
+#: book, an alarm clock, or else a phone"; "a mug, a stapler, or else a pen on the desk"): "else"
+#: only stresses the list's last alternative, so it reads as "or" and the item stays one of the list's
+#: things (as a clause's "else" it would start an alternative instruction and drop the thing). After
+#: one thing ("with the sponge, or else a towel") it is an alternative and stays
+_LISTED_OR_ELSE = re.compile(r"\b(?P<items>(?:an?\s+[a-z-]+(?:\s+[a-z-]+)?,\s+){2,})or\s+else\s+(?=an?\s+[a-z])", re.I)
+
+
+#: a verbless instruction, a thing and the place it goes, with "unless it's (already) there"
+#: ("frying pan on the stove unless it's there already", "- Towels in the basket unless they're
+#: already there"): a list's or a note's way of telling where a thing goes, whose condition asks
+#: whether it is there; read with its verb of putting ("put frying pan on the stove unless ...") so
+#: the place is an instruction's goal and the condition asks it. The thing is one or two words
+#: after a clause's start, none a verb or "be" (`_NOT_A_THING`): "The pan is on the stove" states
+_VERBLESS_UNLESS_THERE = re.compile(
+    r"(?P<lead>(?:^|(?<=[.!?;:,(])|(?<=[.!?;:,(]\s))[ \t]*(?:[-*\u2022][ \t]+)?)"
+    r"(?P<thing>(?:(?:the|my|your|our|a|an|one|two)\s+)?[a-z][a-z-]*(?:\s+[a-z][a-z-]*)?)\s+"
+    r"(?P<place>(?:on|in|into|onto|inside|under)\s+(?:the|my|your|our)\s+[a-z-]+(?:\s+[a-z-]+)?"
+    r",?\s+unless\s+(?:it|they)(?:'s|'re|\u2019s|\u2019re|\s+is|\s+are)\s+(?:already\s+there|there\s+already)\b)",
+    re.I | re.M)
+_NOT_A_THING = ACTIONS | PERSONAL_SUBJECTS | {"is", "are", "was", "were", "be", "it", "keep", "get", "go", "goes",
+                                             "check", "see", "make", "have", "has", "there", "that", "this"}
+
+
+def _verbless_put(m: re.Match[str]) -> str:
+    """`_VERBLESS_UNLESS_THERE`'s instruction with "put" before its thing (and "the" when it has no
+    determiner: the reader takes a bare word after a verb for no thing), unless a word of the thing
+    is a verb, "be" or a pronoun (then it has a verb or says where a thing is: left as it is) or
+    it is a bare state ("clean onto the armchair": the state is the case, `_STATE_CASE`)."""
+    thing = m.group("thing")
+    if _NOT_A_THING & set(thing.lower().split()) or thing.lower() in STATE_WORDS:
+        return m.group(0)
+    said = thing if thing.split()[0].lower() in DETERMINERS else f"the {thing}"
+    return f"{m.group('lead')}{_match_case(thing, 'put')} {said[:1].lower()}{said[1:]} {m.group('place')}"
+
+
 #: a place said to be checked or confirmed ("1 towel, to be checked on the drying rack", "the
 #: spare key, still to be confirmed in the drawer") is left open, as "may be" leaves it: the
 #: writer does not know yet (read as "1 towel may be on the drying rack")
@@ -882,8 +920,11 @@ _RUN_ON_LINE = re.compile(r"(?im)\b(" + "|".join(sorted(RUN_ON_WORDS)) + r")[ \t
 
 #: the marks a line of verse or of wrapped prose ends its line with when the line ends its clause
 _LINE_END_MARKS = tuple(".,;:!?)-\u2013\u2014")
-#: a line with no mark at its end, then a line that opens in lower case (`_punctuated_lines`)
-_UNMARKED_BREAK = re.compile(r"(?m)(?<=[a-z])[ \t]*\n[ \t]*(?=[a-z])")
+#: a line with no mark at its end, or with a mark inside a sentence (a comma, a semicolon, a colon:
+#: "the alarm clock on the nightstand - but, if it ring, / first silence it"; "put each thing where
+#: it should go: / a book on its level; / the phone on the desk"), then a line that opens in lower
+#: case (`_punctuated_lines`)
+_UNMARKED_BREAK = re.compile(r"(?m)(?<=[a-z,;:])[ \t]*\n[ \t]*(?=[a-z])")
 
 
 def _punctuated_lines(text: str) -> bool:
@@ -898,7 +939,10 @@ def _runs_on(text: str) -> str:
     """The text with a line that runs on into the next (`_RUN_ON_LINE`) joined to it: a line break
     there ends no sentence; in a text that marks its lines' ends (`_punctuated_lines`: "My bedroom
     has a bed, where there may lie / a book, an alarm clock, or else a phone;") an unmarked line
-    before one in lower case runs on too."""
+    before one in lower case runs on too, and so does a line ending on a comma, a semicolon or a
+    colon: such a text opens its sentences in capitals, so a line in lower case goes on with the
+    sentence before it (a list after "put each thing where it goes:" stays that instruction's, its
+    items no statements of where things are)."""
     joined = _RUN_ON_LINE.sub(r"\1 ", text)
     return _UNMARKED_BREAK.sub(" ", joined) if _punctuated_lines(joined) else joined
 
@@ -1424,6 +1468,8 @@ def unquote(text: str) -> str:
     text = _NO_THEN.sub(_no_then, _creole(_scots(_telegram(_dictated(_runs_on(_modern(_NATIVE_IF.sub(_native_if, text))))))))
     text = _TO_BE_CHECKED.sub(" may be ", _OTHER_THAN.sub(r"\1 else than", text))
     text = _EVENTUAL_AFTER.sub("may be", _EVENTUAL_BEFORE.sub(lambda m: _match_case(m.group(0), "perhaps"), text))
+    text = _LISTED_OR_ELSE.sub(r"\g<items>or ", text)
+    text = _VERBLESS_UNLESS_THERE.sub(_verbless_put, text)
     text = _ONE_APPOSITIVE.sub(r", \1,", _MODAL_DOUBT.sub(r"\1", text))
     text = _OPEN_DISJUNCTION.sub(_open_disjunction, text)
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), _SPELLED[m.group(0).lower()]), text))
