@@ -1348,13 +1348,23 @@ _CONDITION_HEAD = re.compile(r"^(?:(?P<cue>(?:if|when|whenever|in case)\b[^|]*?)
 #: the fields of a rule written as a record of keyed lines (YAML, a config file, a form: "when:
 #: ..." / "do: ..." / "else: ..."), by what each says: its condition, its action, what to do
 #: otherwise and a note; the other fields ("name:", "id:") only label the record (`derecord`)
+#: A troubleshooting table, a fault card or a maintenance log writes its rules the same way: the
+#: fault it supposes ("Possible cause: kettle left on.", "Problem: towel on the floor.") is the
+#: condition, its remedy ("Remedy:", "Fix:", "Solution:") the action; the symptom, what is seen,
+#: only labels the record (the cause says the thing's state).
 RECORD_FIELDS = {
-    "condition": frozenset({"when", "if", "condition", "trigger", "case", "situation"}),
-    "action": frozenset({"do", "then", "action", "actions", "task", "run"}),
+    "condition": frozenset({"when", "if", "condition", "trigger", "case", "situation",
+                            "cause", "fault", "problem", "issue"}),
+    "action": frozenset({"do", "then", "action", "actions", "task", "run", "remedy", "fix", "solution"}),
     "else": frozenset({"else", "otherwise", "if_not", "elif_not"}),
     "note": frozenset({"note", "notes", "comment"}),
 }
-_KEYED = re.compile(r"^(?P<indent>[ \t]*)(?P<dash>-[ \t]+)?(?P<key>[A-Za-z_]+)[ \t]*:(?:[ \t]+(?P<value>.*?))?[ \t]*$")
+#: the hedges a field's label may carry ("Possible cause:", "Likely cause:", "Corrective action:"):
+#: the label is the field it hedges; no other word opens a label of two words ("Kitchen door:" is
+#: a heading, not a field)
+FIELD_HEDGES = ("possible", "probable", "likely", "suspected", "corrective", "recommended")
+_KEYED = re.compile(r"^(?P<indent>[ \t]*)(?P<dash>-[ \t]+)?(?:(?:" + "|".join(FIELD_HEDGES) + r")[ \t]+)?"
+                    r"(?P<key>[A-Za-z_]+)[ \t]*:(?:[ \t]+(?P<value>.*?))?[ \t]*$", re.I)
 _FIELD_COMMENT = re.compile(r"\s+#.*$")
 
 

@@ -1,0 +1,90 @@
+"""Values set by conditions that documents lay out in their own ways (issue 47, eighteenth session).
+
+A troubleshooting table, a fault card or a maintenance log writes a rule as labelled lines: the
+fault it supposes ("Possible cause: desktop computer left switched on.", "Fault: kettle left
+on.") and what to do about it ("Remedy: shut the desktop computer down."). The supposed fault is
+the rule's condition, as "If the kettle is left on, switch it off" would say it. The documents
+below are composed for these tests, each in a register of its own (a service manual, an IT
+helpdesk sheet, a café's fault card, a landlord's maintenance log, a caravan handbook, a lab's
+equipment notice), with near misses that must not be read as a condition.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+
+from logicenveval.offline.analysis import analyse
+from logicenveval.offline.sentences import derecord
+
+
+def _brief(text: str, roles: list[str], room: str) -> dict[str, Any]:
+    return {"id": "t", "description": text, "rooms": [room], "roles": {r: {"category": r} for r in roles}}
+
+
+def _values(text: str, roles: list[str], room: str) -> set[str]:
+    return {v for f in analyse(_brief(text, roles, room)).factors for v in f.values.values()}
+
+
+#: (document, roles, room, the value its supposed fault sets)
+TROUBLESHOOTING = [
+    # a service manual's troubleshooting table
+    ("Symptom: no picture after the end of the shift.\nProbable cause: monitor left switched on.\n"
+     "Remedy: switch the monitor off.", ["monitor", "desk"], "office", "state(monitor, toggled_on)"),
+    # a café's fault card by the kettle
+    ("FAULT CARD - COUNTER\nFault: kettle left on.\nAction: switch the kettle off at the wall.",
+     ["kettle", "countertop"], "kitchen", "state(kettle, toggled_on)"),
+    # a landlord's maintenance log
+    ("Flat 3, bedroom\nProblem: window left open overnight.\nFix: close the window and check the catch.",
+     ["window", "bed"], "bedroom", "state(window, open)"),
+    # an IT helpdesk sheet
+    ("Ticket 4411\nIssue: laptop left running in the meeting room.\nSolution: shut the laptop down.",
+     ["laptop", "table"], "office", "state(laptop, toggled_on)"),
+    # a caravan handbook
+    ("Likely cause: fridge door left open.\nCorrective action: shut the fridge firmly.",
+     ["fridge"], "kitchen", "state(fridge, open)"),
+    # a lab's equipment notice, its cause a full clause
+    ("Suspected cause: the microwave is still on.\nRemedy: switch the microwave off.",
+     ["microwave", "countertop"], "kitchen", "state(microwave, toggled_on)"),
+    # a housekeeping card: a thing where it should not be
+    ("Problem: towel on the floor.\nFix: hang it on the towel rack.",
+     ["towel", "towel_rack"], "bathroom", "on(towel, floor)"),
+]
+
+
+@pytest.mark.parametrize(("text", "roles", "room", "value"), TROUBLESHOOTING)
+def test_a_supposed_fault_is_the_remedys_condition(text: str, roles: list[str], room: str, value: str) -> None:
+    """A labelled fault ("Possible cause:", "Fault:", "Problem:", "Issue:") before its labelled
+    remedy ("Remedy:", "Fix:", "Solution:", "Action:") asks the state the fault supposes."""
+    assert value in _values(text, roles, room)
+
+
+#: near misses: labelled lines that suppose no fault, or a remedy with no fault before it
+NEAR_MISSES = [
+    # a cause that names no state of a thing
+    ("Cause: unknown.\nRemedy: call the landlord.", ["kettle", "countertop"], "kitchen"),
+    # a remedy alone: an instruction, no condition
+    ("Remedy: leave the kettle on.", ["kettle", "countertop"], "kitchen"),
+    # a fault with no remedy after it is a report, not a rule
+    ("Fault: kettle left on.\nReported by: Sam.", ["kettle", "countertop"], "kitchen"),
+]
+
+
+@pytest.mark.parametrize(("text", "roles", "room"), NEAR_MISSES)
+def test_no_fault_no_condition(text: str, roles: list[str], room: str) -> None:
+    assert not analyse(_brief(text, roles, room)).factors
+
+
+def test_the_record_reads_as_its_conditional() -> None:
+    """The hedge before a label ("Possible", "Likely") keeps it the label it hedges; the symptom,
+    what is seen, is a label the conditional leaves out (the cause says the thing's state)."""
+    said = derecord("Symptom: fan noise.\nPossible cause: computer left on.\nRemedy: shut the computer down.")
+    assert said == "If computer left on, shut the computer down."
+
+
+def test_a_label_of_more_words_is_no_field() -> None:
+    """Only a known hedge opens a label of two words: "Porthole curtain:" or "Kitchen door:"
+    stay the headings they are, inside a record or out of one."""
+    text = "Kitchen door: if it is open, shut it.\nWhen: you leave\nDo: lock up"
+    assert derecord(text).startswith("Kitchen door: if it is open, shut it.")
