@@ -88,3 +88,60 @@ def test_a_label_of_more_words_is_no_field() -> None:
     stay the headings they are, inside a record or out of one."""
     text = "Kitchen door: if it is open, shut it.\nWhen: you leave\nDo: lock up"
     assert derecord(text).startswith("Kitchen door: if it is open, shut it.")
+
+
+#: (notice in capitals, roles, room, the value its doubted place sets): a bracketed gloss in a line
+#: of capitals ("HEADSET (HEADPHONES) ON COFFEE TABLE") goes on with the sentence, as it does in
+#: small letters; a notice, a telegram, a sign on a door
+CAPITALS = [
+    ("GUESTS MAY HAVE LEFT PORTABLE COMPUTER (LAPTOP) ON DESK. IF FOUND, LOCK IN SAFE.",
+     ["laptop", "desk", "safe"], "bedroom", "on(laptop, desk)"),
+    ("CLEANER MAY HAVE LEFT BUCKET (PAIL) ON FLOOR. IF PRESENT, PUT IN CLOSET. IF NOT, NIL.",
+     ["bucket", "closet"], "hallway", "on(bucket, floor)"),
+    ("KIDS MAY HAVE LEFT FOOTBALL (BALL) ON BED. IF THERE, PUT IN TOY BOX.",
+     ["ball", "bed", "toy_box"], "bedroom", "on(ball, bed)"),
+]
+
+
+@pytest.mark.parametrize(("text", "roles", "room", "value"), CAPITALS)
+def test_a_bracket_in_capitals_ends_no_sentence(text: str, roles: list[str], room: str, value: str) -> None:
+    assert value in _values(text, roles, room)
+
+
+def test_a_bracket_before_a_sentence_in_small_letters_still_ends_it() -> None:
+    """The near miss: in small letters a capital after ")" opens a new sentence ("(the tall one)
+    Then switch it off"), as before."""
+    from logicenveval.offline.sentences import split_sentences
+    assert split_sentences("Check the lamp (the tall one) Then switch it off.") == [
+        "Check the lamp (the tall one)", "Then switch it off."]
+
+
+#: (text, roles, room, the doubted place asked): an anecdote of an earlier occasion ("last time",
+#: "the time before") tells where a thing was then, not where it is, so the doubt stays a question
+EARLIER = [
+    # a club notice with the secretary's remarks
+    ("A member may have left an umbrella on the bench. If present, hang it on the coat hook. Please check, "
+     "folks: the heater ran all night last time and somebody's umbrella lay on that bench for a month.",
+     ["umbrella", "bench", "coat_hook", "heater"], "hallway", "on(umbrella, bench)"),
+    # a flatmate's note
+    ("Might be a mug on the desk - if so, wash it. The time before, somebody's mug sat on that desk for a week!",
+     ["mug", "desk", "sink"], "office", "on(mug, desk)"),
+    # a housekeeper's card
+    ("Guests may have left a towel on the floor. If there, hang it on the rail. On the previous occasion a "
+     "towel lay on the floor all weekend.", ["towel", "towel_rack"], "bathroom", "on(towel, floor)"),
+]
+
+
+@pytest.mark.parametrize(("text", "roles", "room", "value"), EARLIER)
+def test_an_earlier_occasion_settles_no_place(text: str, roles: list[str], room: str, value: str) -> None:
+    assert value in _values(text, roles, room)
+
+
+def test_the_present_after_an_earlier_occasion_is_still_read() -> None:
+    """Near misses: a place said of now ("now", "today") beside an earlier occasion, and the
+    same anecdote with no earlier occasion named, are stated as before."""
+    from logicenveval.offline.placement import described_placements
+    text = "Last time the lamp was on the shelf; now the lamp is on the desk."
+    assert described_placements(_brief(text, ["floor_lamp", "shelf", "desk"], "office")) == ["on(floor_lamp, desk)"]
+    text = "Please check, folks: somebody's umbrella lay on that bench for a month."
+    assert described_placements(_brief(text, ["umbrella", "bench"], "hallway")) == ["on(umbrella, bench)"]

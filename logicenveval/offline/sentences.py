@@ -176,7 +176,7 @@ ARROW = re.compile(rf"\s*{ARROW_MARK}\s*")
 #: "Is the kettle on the counter?" If not, ..."): a question quoted in a script, a story or a
 #: transcript asks as one does unquoted (a quoted statement's full stop may end a line of speech
 #: that the narration after it goes on with: '"The cauldron." She pointed at it')
-_SENT = re.compile(rf"(?:(?<=[.!?;:])|(?<=[!?][\"\u201d]))\s+(?!{ARROW_MARK})|\n+|(?<=\))\s+(?=[A-Z])")
+_SENT = re.compile(rf"(?:(?<=[.!?;:])|(?<=[!?][\"\u201d]))\s+(?!{ARROW_MARK})|\n+|(?<=\))\s+(?=[A-Z](?![A-Z]))")
 _FULL_STOP = re.compile(r"(?:(?<=[.!])|(?<=[!?][\"\u201d]))\s+|\n+")
 _ABBREV = re.compile(r"\b(e\.g|i\.e|etc|approx|vs)\.", re.I)
 
