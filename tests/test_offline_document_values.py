@@ -16,7 +16,7 @@ from typing import Any
 import pytest
 
 from logicenveval.offline.analysis import analyse
-from logicenveval.offline.sentences import derecord
+from logicenveval.offline.sentences import dealias, derecord
 
 
 def _brief(text: str, roles: list[str], room: str) -> dict[str, Any]:
@@ -145,3 +145,42 @@ def test_the_present_after_an_earlier_occasion_is_still_read() -> None:
     assert described_placements(_brief(text, ["floor_lamp", "shelf", "desk"], "office")) == ["on(floor_lamp, desk)"]
     text = "Please check, folks: somebody's umbrella lay on that bench for a month."
     assert described_placements(_brief(text, ["umbrella", "bench"], "hallway")) == ["on(umbrella, bench)"]
+
+
+#: (text, roles, room, the values its letters' conditions set): a thing named by a capital letter
+#: in apposition ("a floor lamp L", "a towel T") is that thing wherever the letter is used again,
+#: as in a proof, a puzzle, a specification or an exam question
+LETTERS = [
+    # a logic puzzle
+    ("Puzzle for the night porter. The lobby holds a desk D, a mug G and a lamp L. If L is on, switch it "
+     "off. If G is dirty, wash it in the sink.", ["desk", "mug", "floor_lamp", "sink"], "office",
+     ["state(floor_lamp, toggled_on)", "state(mug, dirty)"]),
+    # a specification
+    ("3.1 Objects. The bathroom contains a towel T and a towel rack R.\n3.2 Behaviour. If T is on the floor, "
+     "the operator SHALL hang T on R. If T is already on R, no action is required.",
+     ["towel", "towel_rack"], "bathroom", ["on(towel, floor)"]),
+    # an exam question
+    ("Question 4. A kitchen has a kettle K and a window W. (a) If K is on, switch it off. (b) If W is open, "
+     "close it.", ["kettle", "window"], "kitchen", ["state(kettle, toggled_on)", "state(window, open)"]),
+]
+
+
+@pytest.mark.parametrize(("text", "roles", "room", "values"), LETTERS)
+def test_a_letter_names_the_thing_it_follows(text: str, roles: list[str], room: str, values: list[str]) -> None:
+    got = _values(text, roles, room)
+    assert all(v in got for v in values)
+
+
+@pytest.mark.parametrize("text", [
+    "Plan B: if the kettle is on, switch it off. Take vitamin C with your tea.",  # no article before it
+    "Buy a size M towel. Dr F. Okoye left it here.",  # a word after the letter; an initial
+    "The beach path is at the end of row C, past the shop.",  # never used again: the name's end
+    "There is a mug M and a cup M. Wash M.",  # one letter for two things
+])
+def test_a_letter_that_names_nothing_stays(text: str) -> None:
+    assert dealias(text) == text
+
+
+def test_a_letter_is_dropped_where_it_is_given() -> None:
+    assert dealias("The lobby holds a mug G and a lamp L. If L is on, switch it off.") == \
+        "The lobby holds a mug G and a lamp. If the lamp is on, switch it off."
