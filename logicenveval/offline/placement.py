@@ -764,6 +764,23 @@ def _verb_kind(group: list[str]) -> str | None:
     return None
 
 
+#: words that set a sentence on an earlier occasion of what the text asks for now ("last time the
+#: headset sat on that table for a fortnight", "the time before, the mug stood on the desk"): where
+#: a thing was then is an anecdote, not where it is; a clause that says "now", "today" or
+#: "currently" speaks of the present again ("last time the lamp was on the shelf; now it is on
+#: the desk")
+EARLIER_OCCASION = (("last", "time"), ("the", "time", "before"), ("previous", "time"), ("previous", "occasion"))
+_PRESENT_AGAIN = frozenset({"now", "today", "currently", "tonight"})
+
+
+def _earlier_occasion(words: list[str], clause: Span) -> bool:
+    """Whether a statement's clause tells of an earlier occasion (`EARLIER_OCCASION` in its
+    sentence, no word of the present in the clause)."""
+    if set(words[clause.start:clause.end]) & _PRESENT_AGAIN:
+        return False
+    return any(tuple(words[k:k + len(p)]) == p for p in EARLIER_OCCASION for k in range(len(words)))
+
+
 #: prepositions that may go on an apposed place as its own modifier ("the desk by the window")
 _APPOSED_MODIFIERS = frozenset({"by", "near", "next", "beside", "under", "at"})
 
@@ -1204,6 +1221,8 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
             continue  # a norm or a goal ("should be in"), or what someone does ("which you hang on")
         if kind is None or clause.mood == "instruction" and _finite(group):
             continue  # an instruction places only through its noun phrases ("the coat the kids dumped ...")
+        if kind == "settled" and _earlier_occasion(words, clause):
+            continue  # "last time the headset sat on that table for a fortnight": then, not now
         named_end = max((m.end for m in ms if lo <= m.start and m.end <= start), default=lo)
         if set(words[named_end:start]) & NEGATIONS:
             continue  # "the mug never ever stands on the table", "does not sit on": no place stated
@@ -2382,8 +2401,8 @@ def _fallback(sent: _Sentence, before: _Before, lex: Lexicon, catalog: Catalog, 
         if clause.mood == "condition" and clause.end < len(words) and words[clause.end] == "?":
             for kind, item, prep, holder in _asked_activity(sent, clause):
                 _put_new(reading, kind, catalog, lex, item, holder, prep)
-        if clause.mood != "statement":
-            continue
+        if clause.mood != "statement" or _earlier_occasion(words, clause):
+            continue  # (an anecdote of an earlier occasion places nothing now)
         for a, b in _parts(words, clause):
             ms = [m for m in sent.mentions if a <= m.start and m.end <= b] + _glossed_place(sent, a, b)
             lead = next((w for w in words[a:b] if w not in SUBJECT_LEADS), "")

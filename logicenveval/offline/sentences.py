@@ -176,7 +176,7 @@ ARROW = re.compile(rf"\s*{ARROW_MARK}\s*")
 #: "Is the kettle on the counter?" If not, ..."): a question quoted in a script, a story or a
 #: transcript asks as one does unquoted (a quoted statement's full stop may end a line of speech
 #: that the narration after it goes on with: '"The cauldron." She pointed at it')
-_SENT = re.compile(rf"(?:(?<=[.!?;:])|(?<=[!?][\"\u201d]))\s+(?!{ARROW_MARK})|\n+|(?<=\))\s+(?=[A-Z])")
+_SENT = re.compile(rf"(?:(?<=[.!?;:])|(?<=[!?][\"\u201d]))\s+(?!{ARROW_MARK})|\n+|(?<=\))\s+(?=[A-Z](?![A-Z]))")
 _FULL_STOP = re.compile(r"(?:(?<=[.!])|(?<=[!?][\"\u201d]))\s+|\n+")
 _ABBREV = re.compile(r"\b(e\.g|i\.e|etc|approx|vs)\.", re.I)
 
@@ -1417,6 +1417,46 @@ def keyed_answers(text: str) -> str:
     return "\n".join(line for line in out if not _KEY_LINE.match(line) or len(list(_KEY_PAIR.finditer(line))) < 2)
 
 
+#: a capital letter that names the thing before it, the way a proof, a puzzle or a specification
+#: names its objects ("a floor lamp L, a coffee table T and a cup C", "the storage box B;"): an
+#: article and up to four words in small letters (no article among them), then a capital letter standing alone before a
+#: mark, "and" or the line's end. "A" and "I" are words, never such names; a letter with a word
+#: after it is part of a name or a size ("a size M towel", "Plan B") and names nothing
+_LETTER_ALIAS = re.compile(r"\b(?P<det>[Aa]n?|[Tt]he)\s+(?P<np>(?!(?:an?|the)\b)[a-z][a-z-]*"
+                           r"(?:\s+(?!(?:an?|the)\b)[a-z][a-z-]*){0,3}?)"
+                           r"\s+(?P<letter>[B-HJ-Z])(?=\s*(?:[,;:.)]|\band\b|$))", re.M)
+#: the letter's later uses: standing alone, not an initial inside a name ("F. Okoye") nor part of
+#: a word or a code ("3B", "D-day")
+_LETTER_USE = r"(?<![\w.'\u2019/-]){}(?![\w'\u2019/-]|\.\w)"
+
+
+def dealias(text: str) -> str:
+    """A text that names its things by letters ("In D there are a floor lamp L and a magazine M.
+    Suppose L is on. Then switch it off. Either M lies on the floor or it does not.") with each
+    letter as the thing it names ("Suppose the floor lamp is on ... Either the magazine lies on
+    the floor ..."): a reader takes "L" as the lamp for the rest of the text, as the apposition
+    said. The letter is dropped where it is given (`_LETTER_ALIAS`); a letter given twice, for
+    two things, is left alone, since which one a later use means is not known, and so is one
+    never used again (it ends a name: "the end of row C")."""
+    given: dict[str, str] = {}
+    twice: set[str] = set()
+    for m in _LETTER_ALIAS.finditer(text):
+        letter, name = m.group("letter"), m.group("np")
+        if given.get(letter, name) != name:
+            twice.add(letter)
+        given[letter] = name
+    # (a letter used nowhere else is part of the name it ends, "at the end of row C", no alias)
+    given = {k: v for k, v in given.items()
+             if k not in twice and len(re.findall(_LETTER_USE.format(k), text)) > text.count(f"{v} {k}")}
+    if not given:
+        return text
+    text = _LETTER_ALIAS.sub(lambda m: m.group(0) if m.group("letter") not in given
+                             else f"{m.group('det')} {m.group('np')}", text)
+    for letter, name in given.items():
+        text = re.sub(_LETTER_USE.format(letter), f"the {name}", text)
+    return text
+
+
 def unquote(text: str) -> str:
     """The text with British and older spellings of function words in their common form
     (`VARIANTS`) and British spellings of catalog words in the catalog's (`SPELLINGS`) and without a formula of politeness before a verb (`_POLITE`), with a typographic
@@ -1456,11 +1496,12 @@ def unquote(text: str) -> str:
     participle read as its state (`_QUESTION_PREDICATE`), and a learner's participle without its
     ending at a condition's end as the state ("if curtain still close": `_BARE_PARTICIPLE`); a
     question-and-answer layout's answer framed by the case its question states, first
-    (`answered_questions`), and before it a quiz's keyed option framed so (`keyed_answers`); a
-    learner's subject after its predicate in a question, condition or doubt in English order
-    (`_SUBJECT_LAST`, `_SUBJECT_LAST_IF`), "connected" for on (`connected_as_on`) and a place put
-    before an existential after it (`_PLACE_FIRST_EXISTENTIAL`)."""
-    text = _DASHED_ASIDE.sub(r"\g<cue> ", answered_questions(keyed_answers(text)))
+    (`answered_questions`), and before it a quiz's keyed option framed so (`keyed_answers`), and
+    before all a thing named by a letter as the thing (`dealias`); a learner's subject after its
+    predicate in a question, condition or doubt in English order (`_SUBJECT_LAST`,
+    `_SUBJECT_LAST_IF`), "connected" for on (`connected_as_on`) and a place put before an
+    existential after it (`_PLACE_FIRST_EXISTENTIAL`)."""
+    text = _DASHED_ASIDE.sub(r"\g<cue> ", answered_questions(keyed_answers(dealias(text))))
     text = _SUPPOSED_IF.sub(_occasion_if, _OCCASION_IF.sub(_occasion_if, _COMMENT_ASIDE.sub(" ", _QUOTED_WHOLE.sub(r"\1", text))))
     text = _SUBJECT_LAST_IF.sub(_subject_last_if, _SUBJECT_LAST.sub(_subject_last, connected_as_on(text)))
     text = _PLACE_FIRST_EXISTENTIAL.sub(_place_first_existential, text)
@@ -1547,13 +1588,23 @@ _CONDITION_HEAD = re.compile(r"^(?:(?P<cue>(?:if|when|whenever|in case)\b[^|]*?)
 #: the fields of a rule written as a record of keyed lines (YAML, a config file, a form: "when:
 #: ..." / "do: ..." / "else: ..."), by what each says: its condition, its action, what to do
 #: otherwise and a note; the other fields ("name:", "id:") only label the record (`derecord`)
+#: A troubleshooting table, a fault card or a maintenance log writes its rules the same way: the
+#: fault it supposes ("Possible cause: kettle left on.", "Problem: towel on the floor.") is the
+#: condition, its remedy ("Remedy:", "Fix:", "Solution:") the action; the symptom, what is seen,
+#: only labels the record (the cause says the thing's state).
 RECORD_FIELDS = {
-    "condition": frozenset({"when", "if", "condition", "trigger", "case", "situation"}),
-    "action": frozenset({"do", "then", "action", "actions", "task", "run"}),
+    "condition": frozenset({"when", "if", "condition", "trigger", "case", "situation",
+                            "cause", "fault", "problem", "issue"}),
+    "action": frozenset({"do", "then", "action", "actions", "task", "run", "remedy", "fix", "solution"}),
     "else": frozenset({"else", "otherwise", "if_not", "elif_not"}),
     "note": frozenset({"note", "notes", "comment"}),
 }
-_KEYED = re.compile(r"^(?P<indent>[ \t]*)(?P<dash>-[ \t]+)?(?P<key>[A-Za-z_]+)[ \t]*:(?:[ \t]+(?P<value>.*?))?[ \t]*$")
+#: the hedges a field's label may carry ("Possible cause:", "Likely cause:", "Corrective action:"):
+#: the label is the field it hedges; no other word opens a label of two words ("Kitchen door:" is
+#: a heading, not a field)
+FIELD_HEDGES = ("possible", "probable", "likely", "suspected", "corrective", "recommended")
+_KEYED = re.compile(r"^(?P<indent>[ \t]*)(?P<dash>-[ \t]+)?(?:(?:" + "|".join(FIELD_HEDGES) + r")[ \t]+)?"
+                    r"(?P<key>[A-Za-z_]+)[ \t]*:(?:[ \t]+(?P<value>.*?))?[ \t]*$", re.I)
 _FIELD_COMMENT = re.compile(r"\s+#.*$")
 
 
