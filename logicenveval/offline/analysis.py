@@ -1523,6 +1523,9 @@ class _Reader:
         so is a place said only as "in there" / "on there" of a pronoun ("leo's car goes in the
         toy box. if it's not in there put it in there", "the mugs go on the rack; if they are not
         on there, ..."): "there" is where the instruction before put it."""
+        while words and words[-1] in SIGN_OFFS:  # "unless they're there already, thx": a note's thanks
+            words = words[:-1]
+        mentions = [m for m in mentions if m.start < len(words)]  # "cheers" may be read as a name
         if any(m.kind == "role" for m in mentions) or len(words) > 6:
             return []
         if "already" not in words and "now" in words and set(words) & {"there", "here"}:
@@ -2665,6 +2668,11 @@ RESULT_VERBS: dict[str, str] = {
     "close": "closed", "shut": "shut", "open": "open", "empty": "empty", "fill": "full", "refill": "full",
     "clean": "clean", "wash": "clean", "dry": "dry",
 }
+#: a note's thanks or plea said after its last clause ("unless they're there already, thx", "...
+#: already, cheers"; lemmatised "cheer", "thank"): no word of the condition, so an elided
+#: condition ending in one is still read
+SIGN_OFFS = frozenset({"thx", "thanks", "thank", "ta", "cheers", "cheer", "ty", "pls", "plz", "please"})
+
 #: the words an elided condition has besides its subject ("if it isn't already", "unless they
 #: already are", "if it has not been yet"): no state, place or thing of its own
 _ELIDED_WORDS = ALREADY_FILLER | {"has", "have", "had", "done", "do", "does", "did", "pls", "please"}
