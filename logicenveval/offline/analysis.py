@@ -764,6 +764,7 @@ def _objectless_move(words: list[str], found: list[Mention]) -> bool:
     return _bare_place(words[k:], [replace(m, start=m.start - k, end=m.end - k) for m in found if m.start >= k]) \
         and all(m.start >= k for m in found)
 
+
 #: the words that may stand between "no" and the thing said to be absent ("no clean sponge")
 _ABSENT_GAP = 2
 
