@@ -1921,6 +1921,15 @@ class _Reader:
             return False
         return any(w in _PUT_PLACES for w in words[self.text.sentence_start(i):i - 2])
 
+    def contents_modifier(self, i: int) -> bool:
+        """Whether word `i`, a spare word before a noun, is written plural ("the spares box", "an
+        extras drawer", "the replacements bin"): an attributive plural noun says what the thing
+        holds, as "a parts bin" or "the sales team" do, so the box is the one the text names again
+        ("The cardboard box of spare track"), no spare box beside it. The adjective ("a spare
+        box") still names a spare."""
+        raw = self.text.raw[i]
+        return raw != self.text.words[i] and raw.endswith("s")
+
     def heading_spare(self, i: int) -> bool:
         """Whether word `i` ("spare"), definite or owned ("my spare one", "the spare"), is the thing
         the heading right before its sentence names: an item's heading ("- Torch.", "Phone
@@ -2154,7 +2163,7 @@ class _Reader:
                 for color in self.coordinated(told, allowed):
                     self.instance(category, f"{color}_{category}", {"color": color})
                 last_colored = category
-            elif prev in SPARE_WORDS or prev in _FRESH and known and kind.generic:
+            elif prev in SPARE_WORDS and not self.contents_modifier(i - 1) or prev in _FRESH and known and kind.generic:
                 if not any(name.startswith("spare_") for name in kind.instances):
                     self.instance(category, f"spare_{last}", {})
             elif prev in _ANOTHER and known and kind.generic:
