@@ -1723,8 +1723,10 @@ class _Reader:
     def _is_goal(self, words: list[str], m: Mention, skipped: list[str]) -> bool:
         before = words[max(0, m.start - 4) : m.start]
         # "pop it on the desk": where an imperative's object goes ("a pack of wipes on the
-        # table" is no action: the word after an article is a noun)
-        verbs = [w for i, w in enumerate(before) if w in ACTIONS and not (i > 0 and before[i - 1] in ARTICLES)]
+        # table" is no action: the word after an article is a noun, and so is one before "of":
+        # "a spare set of keys on the side table", "a tall stack of plates")
+        verbs = [w for i, w in enumerate(before) if w in ACTIONS and not (i > 0 and before[i - 1] in ARTICLES)
+                 and before[i + 1:i + 2] != ["of"]]
         # (after words that say nothing of the mood: "Then pop it in the laundry basket", "simply hang it up")
         lead = next((i for i, w in enumerate(words) if w not in LEAD_INS | SOFTENERS), len(words))
         return bool(set(skipped) & MOTION) or bool(verbs) or (

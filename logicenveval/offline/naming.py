@@ -120,6 +120,10 @@ _ANOTHER = frozenset({"another", "second"})
 _RUBBISH = frozenset({"trash", "rubbish", "garbage", "refuse", "waste", "litter"})
 #: "a bag of pet food", "a pack of wipes", "the pet food bag": the contents are the object
 _PACKAGING = frozenset({"bag", "pack", "packet", "carton"})
+#: nouns of a group or a quantity that, before "of", name no thing of their own: "a spare set of
+#: keys", "a pair of socks", "a bunch of keys" are the keys and the socks ("set" alone is also a
+#: television set's last word)
+_COLLECTIVES = frozenset({"set", "pair", "bunch", "bundle", "pile", "stack", "heap", "couple"})
 #: vessels: a thing one picks up named before one is what it holds, the object as the catalog
 #: keeps it ("the detergent bottle" is the detergent, "the soap dish" the soap's): no noun
 #: compound whose head names the object (`modifies_next`)
@@ -2091,6 +2095,9 @@ class _Reader:
                 continue
             if self.part_said_of(i):
                 i += 1  # "the lower shelf of the metal rack": the rack's shelf, no object
+                continue
+            if words[i] in _COLLECTIVES and words[i + 1:i + 2] == ["of"]:
+                i += 1  # "a spare set of keys": the keys, no television set
                 continue
             if self.part_of_named(i, prev):
                 i += 1  # "Shelving unit - the storage box lives on the bottom shelf": its shelf
