@@ -171,6 +171,10 @@ HARDER_FORMS: dict[str, tuple[str, tuple[str, ...], str | None]] = {
     "edge of a surface": ("{X} is at the edge of {Y}.", ("the", "my", "name's", "pronoun"), "on"),
     "bottom of a container": ("{X} is at the bottom of {Y}.", ("the", "my", "name's", "pronoun"), "in"),
     "back of a container": ("{X} is right at the back of {Y}.", ("the", "my", "name's"), "in"),
+    # (the nineteenth session, written before its rule: a topic put first, then a report of placing
+    # it with the object left unsaid, as learners from topic-first languages and afterthoughts write)
+    "fronted topic, dash": ("{X} - I have put {P} {Y} for you.", ("the", "my", "name's"), None),
+    "fronted topic, comma": ("{X}, we left {P} {Y}.", ("the", "my", "name's"), None),
 }
 
 #: harder near misses: no current placement of the thing at the holder ({O} a second thing)
@@ -189,6 +193,8 @@ HARDER_NEAR_MISSES: dict[str, str] = {
     "negated standing rule": "{X} should never be {P} {Y}.",
     "negated bracketed gloss": "{X} is not {P} the kredens ({Yn}).",
     "conditional bracketed gloss": "If {X} is {P} the kredens ({Yn}), leave it.",
+    "fronted topic with its own verb": "{X} is dirty, I have put {P} {Y} some papers.",
+    "conditional fronted topic": "If {X} - I have put {P} {Y}, fine.",
 }
 
 #: the second thing of a coordinated form: a word the catalog names as no role of the sentence

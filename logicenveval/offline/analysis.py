@@ -127,6 +127,9 @@ PARTS = frozenset({"door", "lid", "leaf", "screen", "soil", "surface", "top", "i
                    # torch's batteries are dead" ask the lamp's and the torch's state
                    "bulb", "battery", "batteries", "wick", "lens"})
 PRONOUNS = frozenset({"it", "they", "them", "one", "ones", "its", "their", "whose"})
+#: prepositions of time whose noun is an occasion, not a thing spoken of ("after bath", "during
+#: the show": `_Reader._occasion`); not "before", also a place ("before the fire")
+OCCASION_PREPS = frozenset({"after", "during"})
 #: determiners of a definite plural: "the white ones" are particular things, "white ones" a kind
 DEFINITE_PLURAL = frozenset({"the", "these", "those", "your", "my", "our", "their", "its"})
 #: the parts by which a piece of furniture opens: said alone ("open the drawer"), they mean the
@@ -750,18 +753,32 @@ def _bare_place(words: list[str], found: list[Mention]) -> bool:
 
 #: what may open an instruction before its verb ("Then just put back on the counter")
 _INSTRUCTION_LEADS = frozenset({"then", "just", "please", "so", "and"})
+#: the subjects of a report of one's own or another's move ("I have put on the chair") and the
+#: verbs such a report uses, by their lemma (`_objectless_move`)
+_REPORTERS = frozenset({"i", "we", "he", "she", "they"})
+_REPORTED_MOVES = ACTIONS | {"keep"}
+#: whom a move is done for, after its place ("put on the chair for you")
+_BENEFICIARIES = frozenset({"you", "me", "him", "her", "us", "them"})
 
 
 def _objectless_move(words: list[str], found: list[Mention]) -> bool:
     """Whether the clause is an instruction of moving with its object left out, then only its
     place ("Is it dirty? Then put on the trolley.", "Dirty? Take to the sink.", "put back on the
-    counter"): it moves the thing spoken of, so, as with a bare place (`_bare_place`), its place is
-    no new topic and a later "if it is clean" still speaks of that thing."""
+    counter"), or someone's report of such a move ("Your gamchha - the towel - I have put on the
+    chair", "The scarf: we left on the sofa"): it moves the thing spoken of, so, as with a bare
+    place (`_bare_place`), its place is no new topic and a later "if it is clean" still speaks of
+    that thing."""
     k = next((i for i, w in enumerate(words) if w not in _INSTRUCTION_LEADS), len(words))
-    if k >= len(words) or words[k] not in ACTIONS:
+    if k < len(words) and words[k] in _REPORTERS:
+        k += 1 + (words[k + 1:k + 2] in (["have"], ["has"], ["had"]))
+        if k >= len(words) or not set(getAllLemmas(words[k]).get("VERB", ())) & _REPORTED_MOVES:
+            return False
+    elif k >= len(words) or words[k] not in ACTIONS:
         return False
     k += 1 + (words[k + 1:k + 2] == ["back"])
-    return _bare_place(words[k:], [replace(m, start=m.start - k, end=m.end - k) for m in found if m.start >= k]) \
+    # (whom it is done for follows the place and leaves it bare: "put on the chair for you")
+    end = len(words) - 2 if words[-2:-1] == ["for"] and words[-1] in _BENEFICIARIES else len(words)
+    return _bare_place(words[k:end], [replace(m, start=m.start - k, end=m.end - k) for m in found if m.start >= k]) \
         and all(m.start >= k for m in found)
 
 
@@ -955,12 +972,25 @@ class _Reader:
         return self.topic_kind == "role" and not self._group_taken_up() and not self.plural & set(self.topic) \
             and not any(r in self.plural for r in self.recent)
 
+    def _occasion(self, words: list[str], m: Mention) -> bool:
+        """Whether mention `m` is the occasion of a time phrase that ends its clause or is set off by
+        a comma ("After bath if it is wet, hang it on the rack", "after your shower, if it is
+        damp", "During the show, if it falls ..."): the bath or the shower is when, not a thing the
+        clause speaks of, so it becomes no topic a later "it" takes up (the towel spoken of before
+        stays). A clause after the word ("after the bath is drained") is no such phrase."""
+        k = m.start - 1
+        while k >= 0 and words[k] in ARTICLES:
+            k -= 1
+        return m.kind == "role" and k >= 0 and words[k] in OCCASION_PREPS \
+            and (m.end == len(words) or m.end in self.commas)
+
     def mentions(self, words: list[str], toks: list[tuple[str, int, int]], surface: list[str]) -> list[Mention]:
         """The clause's mentions of things, pronouns resolved; `surface`: its words as written."""
         found = [self._recent_first(m, words) for m in self.lex.find_mentions(toks) if not _verb_read(toks, m)]
         # "the kitchen sink", "the bathroom mirror": a room's name right before a thing's names the thing
         found = [m for m in found if m.kind != "room" or not any(x.start == m.end and x.kind == "role" for x in found)]
         found = without_modifiers(found, toks, surface)
+        found = [m for m in found if not self._occasion(words, m)]
         relative = words[:1] in (["which"], ["who"]) and bool(self.recent) and self.topic_kind == "role"
         if relative:
             # "... hung in the wardrobe, which is opened first if its door is closed": a clause
@@ -1693,8 +1723,10 @@ class _Reader:
     def _is_goal(self, words: list[str], m: Mention, skipped: list[str]) -> bool:
         before = words[max(0, m.start - 4) : m.start]
         # "pop it on the desk": where an imperative's object goes ("a pack of wipes on the
-        # table" is no action: the word after an article is a noun)
-        verbs = [w for i, w in enumerate(before) if w in ACTIONS and not (i > 0 and before[i - 1] in ARTICLES)]
+        # table" is no action: the word after an article is a noun, and so is one before "of":
+        # "a spare set of keys on the side table", "a tall stack of plates")
+        verbs = [w for i, w in enumerate(before) if w in ACTIONS and not (i > 0 and before[i - 1] in ARTICLES)
+                 and before[i + 1:i + 2] != ["of"]]
         # (after words that say nothing of the mood: "Then pop it in the laundry basket", "simply hang it up")
         lead = next((i for i, w in enumerate(words) if w not in LEAD_INS | SOFTENERS), len(words))
         return bool(set(skipped) & MOTION) or bool(verbs) or (

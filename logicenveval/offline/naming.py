@@ -120,6 +120,10 @@ _ANOTHER = frozenset({"another", "second"})
 _RUBBISH = frozenset({"trash", "rubbish", "garbage", "refuse", "waste", "litter"})
 #: "a bag of pet food", "a pack of wipes", "the pet food bag": the contents are the object
 _PACKAGING = frozenset({"bag", "pack", "packet", "carton"})
+#: nouns of a group or a quantity that, before "of", name no thing of their own: "a spare set of
+#: keys", "a pair of socks", "a bunch of keys" are the keys and the socks ("set" alone is also a
+#: television set's last word)
+_COLLECTIVES = frozenset({"set", "pair", "bunch", "bundle", "pile", "stack", "heap", "couple"})
 #: vessels: a thing one picks up named before one is what it holds, the object as the catalog
 #: keeps it ("the detergent bottle" is the detergent, "the soap dish" the soap's): no noun
 #: compound whose head names the object (`modifies_next`)
@@ -1921,6 +1925,15 @@ class _Reader:
             return False
         return any(w in _PUT_PLACES for w in words[self.text.sentence_start(i):i - 2])
 
+    def contents_modifier(self, i: int) -> bool:
+        """Whether word `i`, a spare word before a noun, is written plural ("the spares box", "an
+        extras drawer", "the replacements bin"): an attributive plural noun says what the thing
+        holds, as "a parts bin" or "the sales team" do, so the box is the one the text names again
+        ("The cardboard box of spare track"), no spare box beside it. The adjective ("a spare
+        box") still names a spare."""
+        raw = self.text.raw[i]
+        return raw != self.text.words[i] and raw.endswith("s")
+
     def heading_spare(self, i: int) -> bool:
         """Whether word `i` ("spare"), definite or owned ("my spare one", "the spare"), is the thing
         the heading right before its sentence names: an item's heading ("- Torch.", "Phone
@@ -2083,6 +2096,9 @@ class _Reader:
             if self.part_said_of(i):
                 i += 1  # "the lower shelf of the metal rack": the rack's shelf, no object
                 continue
+            if words[i] in _COLLECTIVES and words[i + 1:i + 2] == ["of"]:
+                i += 1  # "a spare set of keys": the keys, no television set
+                continue
             if self.part_of_named(i, prev):
                 i += 1  # "Shelving unit - the storage box lives on the bottom shelf": its shelf
                 continue
@@ -2154,7 +2170,7 @@ class _Reader:
                 for color in self.coordinated(told, allowed):
                     self.instance(category, f"{color}_{category}", {"color": color})
                 last_colored = category
-            elif prev in SPARE_WORDS or prev in _FRESH and known and kind.generic:
+            elif prev in SPARE_WORDS and not self.contents_modifier(i - 1) or prev in _FRESH and known and kind.generic:
                 if not any(name.startswith("spare_") for name in kind.instances):
                     self.instance(category, f"spare_{last}", {})
             elif prev in _ANOTHER and known and kind.generic:

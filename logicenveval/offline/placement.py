@@ -1262,6 +1262,8 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
                     # object "it" is the thing the text last spoke of, as a subject "it" is ("The
                     # jacket. It is on the sofa.")
                     after = _object_it(sent, clause, last, earlier)
+                elif not after and end == at:
+                    after = _gapped_topic(sent, clause, at)
                 # "someone left a mark on the floor"; "the coat the kids dumped in the hallway"
                 subjects, end = (after, at) if after else (_np_list(sent, ms, lo, who), end)
                 # (a speaker's report of their own act is presumed: a later "if it is still on
@@ -1411,6 +1413,32 @@ def _object_it(sent: _Sentence, clause: Span, last: Mention | None, earlier: boo
         topic = [m for m in sent.mentions if m.end < clause.start and m.kind == "role"]
         return topic[-1:] if len(topic) == 1 and len(topic[0].roles) == 1 else []
     return [last] if last is not None and last.kind == "role" and len(last.roles) == 1 else []
+
+
+#: marks that close off a fronted topic before the clause that says what was done with it
+_TOPIC_MARKS = frozenset({":", "-", ",", ")"})
+
+
+def _gapped_topic(sent: _Sentence, clause: Span, at: int) -> list[Mention]:
+    """The object a placing verb leaves unsaid ("I have put on the chair", no "it") when a topic is
+    fronted before its clause and set off by a dash, colon, comma or bracket: "Your gamchha - the
+    towel - I have put on the chair for you", "The spare keys, we have hung on the key hook", "My
+    dupatta (the scarf) I left on the sofa". A topic-first order learners of English bring from
+    Bengali, Hindi or Chinese, and a speaker's afterthought in any register. Only a topic that
+    names one thing and has no verb of its own ("The kettle is boiling, I have put on the radio"
+    is two statements), under no condition, and a clause that names nothing but the place after
+    the verb ("I have put on the chair the coat": the coat is the object)."""
+    words = sent.words
+    if clause.start == 0 or words[clause.start - 1] not in _TOPIC_MARKS:
+        return []
+    lead = words[:clause.start]
+    if set(lead) & (VERBS | CONDITION_CUES):
+        return []
+    topic = [m for m in sent.mentions if m.end < clause.start and m.kind == "role"]
+    after = [m for m in sent.mentions if at <= m.start < clause.end and m.kind == "role"]
+    if len(topic) != 1 or len(topic[0].roles) != 1 or len(after) > 1:
+        return []
+    return topic
 
 
 def _believed(lead: list[str]) -> bool:

@@ -32,6 +32,9 @@ STATE_WORDS: dict[str, tuple[str, bool]] = {
     "busted": ("broken", True), "faulty": ("broken", True), "shattered": ("broken", True),
     "smashed": ("broken", True),
     "spinning": ("toggled_on", True), "whirring": ("toggled_on", True), "unlit": ("toggled_on", False),
+    # the predicative adjective of burning, beside "lit" and "burning" ("if the candle is still
+    # alight", "the fire was alight when I left")
+    "alight": ("toggled_on", True),
     "grubby": ("dirty", True), "filthy": ("dirty", True), "soiled": ("dirty", True),
     "grimy": ("dirty", True), "smudged": ("dirty", True), "mucky": ("dirty", True),
 }
