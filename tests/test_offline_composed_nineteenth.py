@@ -15,12 +15,14 @@ docstring).
   chair"): "on"; not "over an hour", "over there", "over the weekend";
 - a guess at a place before a time clause ("The pillow might be on the armchair when you arrive -
   if so, ..."): a guess, whatever an earlier report stated (the xfail of
-  `tests/test_offline_values_dev33.py`)."""
+  `tests/test_offline_values_dev33.py`);
+- a letter defined by a sentence of its own ("Let D denote the drawing room", "Write P for the
+  pillow", "... - call it R"): the letter's later uses are the thing."""
 
 from __future__ import annotations
 
 import pytest
-from reading import CATALOG, asks, brief, factors
+from reading import CATALOG, asks, brief, factors, placed
 
 from logicenveval.offline.analysis import analyse
 
@@ -215,3 +217,47 @@ def test_a_guess_at_a_state_leaves_the_place_stated() -> None:
     text = "The laptop is on the bed. It might be switched on when you arrive; if so, shut it down."
     assert not asks(text, ("bedroom",), "on(laptop, bed)")
     assert asks(text, ("bedroom",), "state(laptop, toggled_on)")
+
+
+#: a letter defined apart, then used: (text, rooms, the place asked). Before the rule 0 of 4
+LETTER_DEFINED = [
+    # a puzzle
+    ("Let M stand for the mug. Suppose M is on the floor. Then put M on the table.", ("kitchen",), "on(mug, floor)"),
+    # a game's rules, a question
+    ("Write P for the pillow. Is P on the armchair? If so, put P on the bed.", ("bedroom",), "on(pillow, armchair)"),
+    # a chatty note, "call it"
+    ("There's a remote in here somewhere - call it R. If R is on the sofa, put R on the TV stand.", ("living_room",),
+     "on(remote_control, sofa)"),
+    # a proof
+    ("Let B denote the book. Either B lies on the floor or it does not. If it does, put B on the shelf.",
+     ("bedroom",), "on(book, floor)"),
+]
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), LETTER_DEFINED)
+def test_a_letter_defined_apart_is_the_thing(text: str, rooms: tuple[str, ...], condition: str) -> None:
+    assert asks(text, rooms, condition), factors(text, rooms)
+
+
+def test_a_room_defined_by_a_letter_is_where_things_are() -> None:
+    text = "Let D denote the drawing room. In D there is a floor lamp L. If L is on, switch it off."
+    assert "in_room(floor_lamp, drawing_room)" in placed(text, ("drawing_room",))
+
+
+@pytest.mark.parametrize(("text", "rooms", "ids"), [
+    # near misses: "let" of permission, a letter in a name, a small letter of mathematics
+    ("Let me know if the lamp is on. If it is, switch it off.", ("bedroom",), {"table_lamp_toggled_on"}),
+    ("Plan B: if the mug is dirty, wash it.", ("kitchen",), {"mug_dirty"}),
+    ("Let x be the number of cups. If the mug is dirty, wash it.", ("kitchen",), {"mug_dirty"}),
+])
+def test_no_letter_defined_reads_as_before(text: str, rooms: tuple[str, ...], ids: set[str]) -> None:
+    assert set(factors(text, rooms)) == ids
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), [
+    # near misses: a bracket that glosses a word naming no thing is the thing's only name
+    ("The sufuria (pot) is on the stool. Is it dirty? Put it in the sink.", ("kitchen",), "state(pot, dirty)"),
+    ("Le torchon (tea towel) may be on the floor; if so, hang it on the rail.", ("kitchen",), "on(hand_towel, floor)"),
+])
+def test_a_bracket_glossing_an_unknown_word_is_kept(text: str, rooms: tuple[str, ...], condition: str) -> None:
+    assert asks(text, rooms, condition), factors(text, rooms)

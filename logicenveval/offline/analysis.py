@@ -406,18 +406,22 @@ _BRACKET_CLAUSE = PREP_ON | PREP_IN | frozenset({
 _BRACKET_WORDS = 4
 
 
-def _bracket_read_past(said: str) -> str:
+def _bracket_read_past(said: str, named: Callable[[str], bool]) -> str:
     """The text with a short bracket between a thing and its place dropped: "someone may have
     left the laptop (silver) on the desk" is "... the laptop on the desk". In any register the
     bracket says which thing is meant (a colour, "the green one", an owner) or gives it another
     name ("(jug)", "(the clicker)"); the place after it is the thing's, and a reader that stops at
     the bracket asks nothing. A bracket with a place, a condition, a time or a negation of its
     own (`_BRACKET_CLAUSE`), a state word, or more words than `_BRACKET_WORDS` is more than that,
-    and kept."""
+    and kept; so is a bracket after a word that names no thing of the task (`named`: whether the
+    text up to it ends with a thing's name), which glosses it ("the sufuria (pot) is on the
+    stool": the bracket is the only name the reader knows)."""
     def drop(m: re.Match[str]) -> str:
         inner = re.findall(r"[a-z0-9']+", m.group(1))
         kept = set(inner) & (_BRACKET_CLAUSE | set(STATE_WORDS))
-        return "" if inner and len(inner) <= _BRACKET_WORDS and not kept else m.group(0)
+        if not inner or len(inner) > _BRACKET_WORDS or kept or not named(said[:m.start()]):
+            return m.group(0)
+        return ""
     return _BRACKET_BEFORE_PLACE.sub(drop, said)
 
 
@@ -1222,6 +1226,11 @@ class _Reader:
         a time clause whose opener the clause cut took as its cue (`timed`)."""
         return _in_time_clause(words, i) or self.timed and _in_time_clause(["when", *words], i + 1)
 
+    def _ends_named(self, said: str) -> bool:
+        """Whether `said` ends with the name of a thing of the task (a role's mention)."""
+        toks = tokens(said)
+        return any(m.kind == "role" and m.end == len(toks) for m in self.lex.find_mentions(toks))
+
     def facts(self, text: str) -> tuple[list[Fact], tuple[str, ...]]:
         said = _done_by_someone(_unbiased(expand(text).lower()))
         for pattern, state in PHRASAL_STATES:
@@ -1235,7 +1244,7 @@ class _Reader:
                 predicated.add(STATE_WORDS[state][0])
         said = self.machine_again(said)
         said = RAISING.sub("is", said)
-        said = _OVER.sub("on", _bracket_read_past(_contents(said)))
+        said = _OVER.sub("on", _bracket_read_past(_contents(said), self._ends_named))
         toks = tokens(said)
         words = [t[0] for t in toks]
         self.commas = frozenset(k for k in range(1, len(toks)) if "," in said[toks[k - 1][2]:toks[k][1]])
