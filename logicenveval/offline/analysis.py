@@ -393,6 +393,83 @@ _RUN_EMPTY_ASKED = re.compile(r"(?:\b(?:has|have|had) (?P<np>it|they) |^\W*)(?P<
 _RUN_EMPTY = re.compile(r"\b(?:(?P<be>is|are) run|runs|ran) empty\b")
 
 
+#: a bracket of a few words right after a word and right before a preposition of place ("the
+#: laptop (silver) on the desk", "KETTLE (JUG) ON COUNTER", "the towel (the green one) on the
+#: floor", "a pillow (small, square) may be on the armchair"; its verb of being between them):
+#: an attribute or another name of the thing before it (`_bracket_read_past`)
+_BRACKET_BEFORE_PLACE = re.compile(r"(?<=[a-z0-9'])\s*\(([^()]{1,40})\)"
+                                   r"(?=\s+(?:(?:is|are|may|might|could|be|probably|still|have|has|been|left|lying)\s+){0,3}"
+                                   r"(?:on|onto|atop|upon|in|inside|into|within)\b)")
+#: words that make a bracket more than an attribute: a place of its own ("(on the desk)"), a
+#: condition or a time ("(if dry)", "(when you're done)"), a negation ("(not the red one)"); a
+#: state word (`STATE_WORDS`: "(dirty)", "(still on)") is kept too, a state the text gives the thing
+_BRACKET_CLAUSE = PREP_ON | PREP_IN | frozenset({
+    "if", "unless", "when", "once", "whenever", "while", "until", "or", "not", "no", "under", "by", "at", "behind"})
+#: the most words a bracket read past holds
+_BRACKET_WORDS = 4
+
+
+def _bracket_read_past(said: str, named: Callable[[str], bool]) -> str:
+    """The text with a short bracket between a thing and its place dropped: "someone may have
+    left the laptop (silver) on the desk" is "... the laptop on the desk". In any register the
+    bracket says which thing is meant (a colour, "the green one", an owner) or gives it another
+    name ("(jug)", "(the clicker)"); the place after it is the thing's, and a reader that stops at
+    the bracket asks nothing. A bracket with a place, a condition, a time or a negation of its
+    own (`_BRACKET_CLAUSE`), a state word, or more words than `_BRACKET_WORDS` is more than that,
+    and kept; so is a bracket after a word that names no thing of the task (`named`: whether the
+    text up to it ends with a thing's name), which glosses it ("the sufuria (pot) is on the
+    stool": the bracket is the only name the reader knows)."""
+    def drop(m: re.Match[str]) -> str:
+        inner = re.findall(r"[a-z0-9']+", m.group(1))
+        kept = set(inner) & (_BRACKET_CLAUSE | set(STATE_WORDS))
+        if not inner or len(inner) > _BRACKET_WORDS or kept or not named(said[:m.start()]):
+            return m.group(0)
+        return ""
+    return _BRACKET_BEFORE_PLACE.sub(drop, said)
+
+
+#: the state a definite thing is left in by an act done to it (`_done_by_someone`): "closed the
+#: laptop" leaves it closed, "emptied the bin" empty, "switched the lamp off" off
+RESULT_STATES = {"closed": "closed", "shut": "closed", "opened": "open", "emptied": "empty", "filled": "full",
+                 "washed": "clean", "cleaned": "clean", "wiped": "clean", "dried": "dry",
+                 "switched off": "off", "turned off": "off", "switched on": "on", "turned on": "on"}
+#: people no one names, as a clause's subject: "nobody" denies the act, "someone" asserts it
+_NOBODY = frozenset({"nobody", "no one", "no-one", "noone"})
+_SOMEONE = frozenset({"someone", "somebody", "anyone", "anybody", "someone else", "somebody else"})
+_RESULT_VERB = "|".join(sorted({v.split()[0] for v in RESULT_STATES}, key=len, reverse=True))
+_DONE_BY_SOMEONE = re.compile(
+    rf"\b(?P<who>{'|'.join(sorted(_NOBODY | _SOMEONE, key=len, reverse=True))})\s+(?:(?:has|have|had)\s+)?"
+    rf"(?:(?:already|yet|ever)\s+)?(?P<verb>{_RESULT_VERB})\s+(?:(?P<p1>off|on)\s+)?"
+    r"(?P<np>(?:the|my|your|our|his|her|their|this|that)\s+[a-z'-]+(?:\s+[a-z'-]+){0,2}?)(?:\s+(?P<p2>off|on))?"
+    r"(?:\s+(?P<adv>yet|already|today|tonight))?(?=\s*(?:[,.;:!?)]|\s-|$))")
+
+
+def _done_by_someone(said: str) -> str:
+    """"if nobody closed the laptop" -> "if the laptop is not closed"; "unless someone has emptied
+    the bin" -> "unless the bin is empty". An act by nobody named, said of a definite thing, asks
+    the state the act leaves it in (`RESULT_STATES`): denied with "nobody" / "no one" (a double
+    negation, "if nobody closed it, close it": it is open), asserted with "someone" / "anyone".
+    People say it so in any register (a house rule, a rota, a text); the reader otherwise finds
+    no state word after the thing. A verb with no result state ("nobody used the laptop") or a
+    subject who is named ("if Sam closed it") is left as it is."""
+    def state(m: re.Match[str]) -> str:
+        verb = m.group("verb")
+        particle = m.group("p1") or m.group("p2")
+        result = RESULT_STATES.get(f"{verb} {particle}" if particle else verb)
+        if result is None:
+            return m.group(0)
+        negation = "not " if m.group("who") in _NOBODY else ""
+        return f"{m.group('np')} is {negation}{result}"
+    return _DONE_BY_SOMEONE.sub(state, said)
+
+
+#: "over" before a determiner: where a thing lies draped or laid on another ("the towel may be
+#: over the chair", "is my coat still over the armchair?", "the scarf is draped over the bed"); not
+#: a quantity or a time ("over an hour", "over 30 degrees", "over the weekend" name no thing) nor a
+#: direction ("over there", "over here", no determiner)
+_OVER = re.compile(r"\bover(?=\s+(?:the|my|your|his|her|our|their|this|that|its)\s)")
+
+
 def _contents(said: str) -> str:
     """"there is still wine in it" -> "it is full"; "there is no water left in the jug" -> "the
     jug is empty"; "there is milk left" -> "the milk is full"; "it still has milk in it" -> "it is full";
@@ -821,6 +898,12 @@ def _graded(words: list[str], k: int) -> bool:
     return j > k and j < len(words) and words[j] in STATE_WORDS and words[j] not in PARTICLE_STATES
 
 
+#: a word after "on" or "off" with no article that makes it a place, not a state: "the box with
+#: the blanket on top", "put it on the cabinet, on top", "the towel has slid off top" ("on top
+#: of", "on the top" are places by their "of" or article too)
+PLACE_AFTER_ON = frozenset({"top"})
+
+
 def _stranded(words: list[str], k: int) -> bool:
     """Whether the particle at `k` (`STRANDED_STATES`) ends its clause, with no object after it:
     then it is the predicate of an elided "it is" ("Heater: if on, switch it off", "The lamp - if
@@ -1173,8 +1256,13 @@ class _Reader:
         a time clause whose opener the clause cut took as its cue (`timed`)."""
         return _in_time_clause(words, i) or self.timed and _in_time_clause(["when", *words], i + 1)
 
+    def _ends_named(self, said: str) -> bool:
+        """Whether `said` ends with the name of a thing of the task (a role's mention)."""
+        toks = tokens(said)
+        return any(m.kind == "role" and m.end == len(toks) for m in self.lex.find_mentions(toks))
+
     def facts(self, text: str) -> tuple[list[Fact], tuple[str, ...]]:
-        said = _unbiased(expand(text).lower())
+        said = _done_by_someone(_unbiased(expand(text).lower()))
         for pattern, state in PHRASAL_STATES:
             said = pattern.sub(state, said)
         # the flags a predicate participle gave, kept only for a thing that can take them ("if the
@@ -1186,7 +1274,7 @@ class _Reader:
                 predicated.add(STATE_WORDS[state][0])
         said = self.machine_again(said)
         said = RAISING.sub("is", said)
-        said = _contents(said)
+        said = _OVER.sub("on", _bracket_read_past(_contents(said), self._ends_named))
         toks = tokens(said)
         words = [t[0] for t in toks]
         self.commas = frozenset(k for k in range(1, len(toks)) if "," in said[toks[k - 1][2]:toks[k][1]])
@@ -1877,9 +1965,10 @@ class _Reader:
                 break  # `take it out` is an action, `it is out` a state
             if w == "out" and k + 1 < len(words) and words[k + 1] in PREP_ON | PREP_IN | {"of", "there", "here"}:
                 break  # "still out on the table", "out of the box": where it is, not switched off
-            if w in ("on", "off") and k + 1 < len(words) and words[k + 1] in ARTICLES | PRONOUNS | {"floor"} \
+            if w in ("on", "off") and k + 1 < len(words) and (words[k + 1] in ARTICLES | PRONOUNS | {"floor"} or (
+                    words[k + 1] in PLACE_AFTER_ON and k + 1 not in self.commas)) \
                     and not (skipped and skipped[-1] in ("switched", "turned")):
-                break  # `on the table` is a place, not `switched on`
+                break  # `on the table`, `with a book on top` are places, not `switched on`
             if w == "off" and skipped and skipped[-1] in FALLS:
                 break  # "it has slipped off", "if it fell off": the fall's particle, not switched off
             if w == "used":
@@ -3151,6 +3240,10 @@ _ASKED_BE = frozenset({"is", "are", "was", "were", "be", "been",
 #: the counter"): a placement guessed is not known, as one asked is not; a habit ("sometimes",
 #: "occasionally") says how things often are, not that the writer does not know how they are now
 _HEDGES = frozenset({"may", "might", "could", "possibly", "perhaps", "maybe", "probably", "likely"})
+#: the roles of a clause a hedge makes a guess: a doubt read as such, and a main clause the cut
+#: reads as a statement or as the consequence of a time clause after it ("The pillow might be on
+#: the armchair when you arrive - if so, ...")
+_HEDGED_ROLES = frozenset({"uncertain", "statement", "consequence"})
 
 #: what a verbless condition of place may hold besides its thing and its place ("Kettle not on the
 #: counter", "Towel still on the floor?")
@@ -3466,10 +3559,13 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # (a condition the writer wrote, not one `implied` spelled out: "Examine the mug on
                 # the coffee table" is "examine the mug if it is on the coffee table")
                 reader.doubted |= _asked_again(said, facts, reader.lex)
-            elif role == "uncertain" and {w for w, _, _ in tokens(said)} & _HEDGES:
+            elif role in _HEDGED_ROLES and {w for w, _, _ in tokens(said)} & _HEDGES:
                 # "IMPACT - Phone on the bed at 0% on waking. ... ACTIONS 1. Phone. It may be lying
                 # on the bed.": a writer who says a thing may be somewhere does not know it, as one
-                # who asks does not, whatever a report said before (`_asked_again`)
+                # who asks does not, whatever a report said before (`_asked_again`); so when the
+                # guess is a main clause before a condition of its own ("The pillow might be on
+                # the armchair when you arrive - if so, ...": the cut reads it as the time
+                # clause's consequence)
                 reader.doubted |= _asked_again(said, facts, reader.lex)
             facts = _already_relative(said, facts)
             if facts is not before_relative:

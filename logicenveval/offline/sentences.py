@@ -1433,6 +1433,40 @@ _LETTER_ALIAS = re.compile(r"\b(?P<det>[Aa]n?|[Tt]he)\s+(?P<np>(?!(?:an?|the)\b)
 _LETTER_USE = r"(?<![\w.'\u2019/-]){}(?![\w'\u2019/-]|\.\w)"
 
 
+#: a letter defined by a sentence of its own, the way a proof or a puzzle does ("Let D denote the
+#: drawing room.", "Let C be the cup on the desk", "Write B for the book", "... a towel on the
+#: floor - call it T"): the letter, then the thing it names (an article and up to four words in
+#: small letters), or the thing (and up to five words of where it is), then "call it" and the
+#: letter
+_LETTER_DEFINED = re.compile(
+    r"\b(?:[Ll]et\s+(?P<letter>[B-HJ-Z])\s+(?:denote|be|stand\s+for|mean|name)|[Ww]rite\s+(?P<letter2>[B-HJ-Z])\s+for)"
+    r"\s+(?P<det>an?|the)\s+(?P<np>(?!(?:an?|the)\b)[a-z][a-z-]*(?:\s+(?!(?:an?|the|on|in|by|at)\b)[a-z][a-z-]*){0,3}?)"
+    r"(?=\s*(?:[,;:.)]|\s(?:on|in|by|at|under|inside)\s|\band\b|$))"
+    r"|(?P<det3>\b[Aa]n?|\b[Tt]he)\s+(?P<np3>(?!(?:an?|the)\b)[a-z][a-z-]*(?:\s+(?!(?:an?|the)\b)[a-z][a-z-]*){0,3}?)"
+    r"(?P<rest>(?:\s+[a-z][a-z'-]*){0,5}?)"
+    r"\s*(?:[,;(]|\s-+|\s\u2013|\s\u2014)\s*(?:(?:we(?:'ll)?|I(?:'ll)?|let's)\s+)?call\s+it\s+(?P<letter3>[B-HJ-Z])\b\)?",
+    re.M)
+
+
+def _defined_letters(text: str) -> dict[str, str]:
+    """The letters `text` defines by a sentence of their own (`_LETTER_DEFINED`): letter -> the
+    words of the thing it names."""
+    out: dict[str, str] = {}
+    for m in _LETTER_DEFINED.finditer(text):
+        letter = m.group("letter") or m.group("letter2") or m.group("letter3")
+        name = m.group("np") or m.group("np3")
+        out[letter] = name if out.get(letter, name) == name else ""
+    return out
+
+
+def _defined_as(m: re.Match[str]) -> str:
+    """A letter's definition said as the thing it names: "Let C be the cup" -> "The cup",
+    "a towel on the floor - call it T" -> "a towel on the floor"."""
+    if m.group("letter3"):
+        return f"{m.group('det3')} {m.group('np3')}{m.group('rest')}"
+    return f"{m.group('det').capitalize()} {m.group('np')}"
+
+
 def dealias(text: str) -> str:
     """A text that names its things by letters ("In D there are a floor lamp L and a magazine M.
     Suppose L is on. Then switch it off. Either M lies on the floor or it does not.") with each
@@ -1451,10 +1485,19 @@ def dealias(text: str) -> str:
     # (a letter used nowhere else is part of the name it ends, "at the end of row C", no alias)
     given = {k: v for k, v in given.items()
              if k not in twice and len(re.findall(_LETTER_USE.format(k), text)) > text.count(f"{v} {k}")}
-    if not given:
+    # a letter defined apart ("Let D denote the drawing room"), used after its definition; one
+    # defined twice, or also given in apposition to another thing, is left alone
+    defined = {k: v for k, v in _defined_letters(text).items()
+               if v and given.get(k, v) == v and k not in twice and len(re.findall(_LETTER_USE.format(k), text)) > 1}
+    if not given and not defined:
         return text
     text = _LETTER_ALIAS.sub(lambda m: m.group(0) if m.group("letter") not in given
                              else f"{m.group('det')} {m.group('np')}", text)
+    # the definition says the thing is there, as a mention of it does: "the drawing room." (and
+    # where it is, "the cup on the desk."); the letter's later uses are the thing
+    text = _LETTER_DEFINED.sub(lambda m: m.group(0) if (m.group("letter") or m.group("letter2") or m.group("letter3"))
+                               not in defined else _defined_as(m), text)
+    given = {**defined, **given}
     for letter, name in given.items():
         text = re.sub(_LETTER_USE.format(letter), f"the {name}", text)
     return text
