@@ -1660,6 +1660,9 @@ class _Reader:
                 and words[i].isdigit() else _COUNTS.get(words[i], 0)
             j = i + 1 if count else i
             n, category = self.group_kind(j)
+            if category is not None and count and self.numbered_heading(i):
+                i += 1  # "Finding 2 - Filing cabinet (risk rating: high)": the finding's number
+                continue
             if category is None and count and words[i] != "both":
                 n, category = 0, self.counted_before(i)  # "Tea towels. There are two, a green one and ..."
             if category is None:
@@ -1693,6 +1696,16 @@ class _Reader:
                 i = end
                 continue
             i += 1
+
+    def numbered_heading(self, i: int) -> bool:
+        """Whether the number at word `i` numbers a heading rather than counting the things after
+        it: a numeral followed by a colon or a dash and then a name ("Finding 2 - Filing cabinet
+        (risk rating: high)", "Task 2 — Wardrobe (deadline: tonight)", "Action 7: Laptop"), as
+        reports, tickets and checklists number their entries. A count runs straight into its noun
+        ("2 mugs: a red one and a blue one"); what follows such a heading's name in brackets says
+        more of the one thing, no list of several."""
+        gaps = self.text.gaps
+        return self.text.words[i].isdigit() and i + 1 < len(gaps) and bool(_HEADING.search(gaps[i + 1]))
 
     def counted_before(self, i: int) -> str | None:
         """The kind a count standing alone counts ("Tea towels. There are two, a green one and a

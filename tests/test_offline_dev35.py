@@ -1,0 +1,95 @@
+"""Structures behind dev 35's losses (issue 47, docs/reader.md "Numbered headings, observed
+places, verbs of state and afterthoughts (nineteenth session)"), each written here as composed
+sentences in several registers, rooms, things and states (none from the task sets), with near
+misses that must stay apart:
+
+- (a) a numbered heading: "Finding 2 - Filing cabinet (risk rating: high)", the numbering of
+  reports, tickets, checklists and minutes; a numeral followed by a dash or a colon labels the
+  entry, it counts nothing, so the bracket after the name is no list of several things
+  (`naming._Reader.numbered_heading`);
+- (b) a place reported as observed: "a cup was noted on the desk", the past or perfect passive of
+  a verb of observing or recording in inspections, audits and logs, states where the thing was
+  (`placement.OBSERVED`); a present one after "where"/"if" stays a condition.
+
+Measured on the tables below on the tree before the rules: (a) 8 of 10 named once, (b) 0 of 8
+read as stated; after: all of them, and every near miss as before."""
+
+from __future__ import annotations
+
+import pytest
+from reading import named, placed
+
+# -- (a) a numbered heading names one thing ---------------------------------------------------
+
+NUMBERED_HEADINGS = [
+    # (register, room, text, the kind named once)
+    ("audit", "office", "Finding 4 - Fridge (risk rating: high). Close it before you leave.", "fridge"),
+    ("ticket", "office", "Ticket 14 – Desk lamp (reported by: Ann). If it is on, switch it off.", "desk_lamp"),
+    ("recipe", "kitchen", "Step 4 - Kettle (allow: five minutes). If it is on, switch it off.", "kettle"),
+    ("minutes", "office", "Action 7: Laptop (owner: Sam). Please shut it.", "laptop"),
+    ("chore list", "bedroom", "Task 2 — Wardrobe (deadline: tonight). If the wardrobe is open, close it.", "wardrobe"),
+    ("inspection", "bathroom", "Defect 3 - Towel (category: hygiene). Hang it up if it is wet.", "towel"),
+    ("puzzle", "living room", "Clue 6 - Television (answer: switch off). If it is on, switch it off.", "television"),
+    ("incident log", "kitchen", "Issue 9: Dishwasher (impact: medium). If the dishwasher is open, shut it.",
+     "dishwasher"),
+    ("handover", "studio", "Note 2 - Laptop (battery: low). If the laptop is open, close it.", "laptop"),
+    ("lesson plan", "classroom", "Section 5 - Desk lamp (teacher: Mr Brown). If the lamp is on, turn it off.",
+     "desk_lamp"),
+]
+
+
+@pytest.mark.parametrize(("register", "room", "text", "kind"), NUMBERED_HEADINGS)
+def test_a_numbered_heading_names_one_thing(register: str, room: str, text: str, kind: str) -> None:
+    names = [name for name, (category, _) in named(text, (room,)).items() if category == kind]
+    assert names == [kind], register
+
+
+@pytest.mark.parametrize(("room", "text", "names"), [
+    # a count runs into its noun, or stands alone after the plural it counts: still a count
+    ("kitchen", "2 mugs: a red one and a blue one. Put them in the sink.", {"red_mug", "blue_mug"}),
+    ("kitchen", "Mugs - 2 - a red one and a blue one. Put them in the sink.", {"red_mug", "blue_mug"}),
+    ("kitchen", "Bowls: 2 - a food bowl and a water bowl.", {"food_bowl", "water_bowl"}),
+    ("kitchen", "2 bowls - a food bowl and a water bowl.", {"food_bowl", "water_bowl"}),
+    ("bathroom", "Towels: 2 (a green one and a white one).", {"green_towel", "white_towel"}),
+])
+def test_a_count_still_counts(room: str, text: str, names: set[str]) -> None:
+    assert names <= set(named(text, (room,)))
+
+
+# -- (b) a place reported as observed ---------------------------------------------------------
+
+OBSERVED = [
+    # (register, room, text, the placement stated)
+    ("audit", "office", "Observation: a cup was noted on the desk during the walk-round. Should the cup be "
+     "dirty, place it on the cart.", "on(cup, desk)"),
+    ("memo", "office", "A cup was noted on the desk. If it is dirty, put it in the sink.", "on(cup, desk)"),
+    ("lab report", "office", "A cup was observed on the desk. If it is dirty, put it in the sink.", "on(cup, desk)"),
+    ("house-sitter", "kitchen", "A mug was spotted on the counter this morning. If it is dirty, wash it.",
+     "on(mug, kitchen_counter)"),
+    ("hotel inspection", "bedroom", "A towel was recorded on the bed during the inspection. If it is wet, hang "
+     "it on the towel rail.", "on(towel, bed)"),
+    ("logbook", "living room", "Inspector's note: a book has been logged on the sofa since 9am. Put it on "
+     "the bookshelf.", "on(book, sofa)"),
+    ("police", "office", "A cup was reported on the desk by the cleaner. If it is dirty, put it in the sink.",
+     "on(cup, desk)"),
+    ("survey", "bedroom", "A towel was photographed on the bed. If it is wet, hang it on the towel rail.",
+     "on(towel, bed)"),
+]
+
+
+@pytest.mark.parametrize(("register", "room", "text", "fact"), OBSERVED)
+def test_a_place_reported_as_observed_is_stated(register: str, room: str, text: str, fact: str) -> None:
+    assert fact in placed(text, (room,)), register
+
+
+@pytest.mark.parametrize("text", [
+    "If a cup is spotted on the desk, put it in the sink.",
+    "Any cup noted on the desk must be washed.",
+    "Should a cup be observed on the desk, wash it.",
+    "Where a cup is recorded on the desk, wash it.",   # a present passive: the condition's
+    "Where a cup is noted on the desk, wash it.",
+    "Nothing was noted on the desk. If a cup is there, wash it.",
+    "A cup was not observed on the desk, so check the shelf too.",
+])
+def test_an_observation_asked_or_denied_states_nothing(text: str) -> None:
+    assert "on(cup, desk)" not in placed(text, ("office",))
