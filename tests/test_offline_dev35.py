@@ -9,15 +9,21 @@ misses that must stay apart:
   (`naming._Reader.numbered_heading`);
 - (b) a place reported as observed: "a cup was noted on the desk", the past or perfect passive of
   a verb of observing or recording in inspections, audits and logs, states where the thing was
-  (`placement.OBSERVED`); a present one after "where"/"if" stays a condition.
+  (`placement.OBSERVED`); a present one after "where"/"if" stays a condition;
+- (c) a device's activity said as the finite verb of a condition ("if it still burns", "if the
+  fan no longer runs", a learner's "if it already not burns"), the eighteenth session's sounding
+  devices widened to burning, running, glowing, spinning and playing, with an adverb of time or a
+  negation before the verb (`sentences.SOUNDS`, `_SOUNDING`).
 
 Measured on the tables below on the tree before the rules: (a) 8 of 10 named once, (b) 0 of 8
-read as stated; after: all of them, and every near miss as before."""
+read as stated, (c) 1 of 8 asked; after: all of them, and every near miss as before."""
 
 from __future__ import annotations
 
 import pytest
-from reading import named, placed
+from reading import asks, factors, named, placed
+
+from logicenveval.offline.sentences import _SOUNDING, _sounding
 
 # -- (a) a numbered heading names one thing ---------------------------------------------------
 
@@ -93,3 +99,51 @@ def test_a_place_reported_as_observed_is_stated(register: str, room: str, text: 
 ])
 def test_an_observation_asked_or_denied_states_nothing(text: str) -> None:
     assert "on(cup, desk)" not in placed(text, ("office",))
+
+
+# -- (c) a device's activity said as a condition's finite verb ---------------------------------
+
+ACTIVITY_VERBS = [
+    # (register, room, text, condition asked)
+    ("note", "living room", "The candle on the coffee table: if it still burns, blow it out.",
+     "state(candle, toggled_on)"),
+    ("house rules", "bedroom", "If the ceiling fan still runs, switch it off.", "state(ceiling_fan, toggled_on)"),
+    ("laundry card", "laundry room", "Dryer: if it no longer runs, take the towels out; if it runs, leave it alone.",
+     "state(dryer, toggled_on)"),
+    ("parent's text", "living room", "If the television still plays, turn it off please.",
+     "state(television, toggled_on)"),
+    ("learner (Slavic)", "living room", "Fireplace. If it already not burns, it is OK; if it burns, put it out.",
+     "state(fireplace, toggled_on)"),
+    ("cabin rules", "bedroom", "Candle by the bed - if it doesn't burn any more, leave it; if it still burns, "
+     "blow it out.", "state(candle, toggled_on)"),
+    ("caretaker", "living room", "If the floor lamp still glows, switch it off.", "state(floor_lamp, toggled_on)"),
+    ("study rules", "bedroom", "When the ceiling fan spins, the papers fly; if it spins, turn it off.",
+     "state(ceiling_fan, toggled_on)"),
+]
+
+
+@pytest.mark.parametrize(("register", "room", "text", "condition"), ACTIVITY_VERBS)
+def test_an_activity_as_a_finite_verb_asks_the_state(register: str, room: str, text: str, condition: str) -> None:
+    assert asks(text, (room,), condition), register
+
+
+@pytest.mark.parametrize(("clause", "read"), [
+    ("if it no longer runs, take", "if it is no longer running, take"),
+    ("If it already not burns, it is OK", "If it is already not burning, it is OK"),
+    ("if it doesn't burn any more, leave it", "if it is not burning any more, leave it"),
+    ("if they still run", "if they are still running"),
+])
+def test_the_activity_is_read_as_its_state_word(clause: str, read: str) -> None:
+    assert _SOUNDING.sub(_sounding, clause) == read
+
+
+@pytest.mark.parametrize(("room", "text"), [
+    ("office", "If the printer runs out of paper, put more paper in the tray."),  # a particle: another verb
+    ("living room", "If the candle burns down, throw it away."),
+    ("living room", "If the television plays up again, unplug it."),
+    ("kitchen", "If the tap runs over, call me."),
+    ("bedroom", "Let the candle burn for an hour."),                               # no condition
+    ("kitchen", "If you run the dishwasher, add a tablet."),                       # a person's act
+])
+def test_another_verb_asks_no_state(room: str, text: str) -> None:
+    assert not any("toggled_on" in c for values in factors(text, (room,)).values() for c in values)
