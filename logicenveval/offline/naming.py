@@ -1414,6 +1414,29 @@ class _Reader:
         return "," in gaps[end] and words[end] not in _NOUN_LEADS and (
             nxt == len(words) or self.match(nxt)[1] != category)
 
+    def subject_renamed(self, i: int, n: int, category: str) -> bool:
+        """Whether the noun phrase at words [i, i + n) is an afterthought renaming the subject of
+        its sentence ("The table lamp is on the desk - my reading lamp", "The laundry basket sits
+        on the floor – the wicker basket", "the floor lamp is by the bed — her reading lamp"):
+        set off by a dash, opened by "the" or a possessive with at most two words before the
+        name, ending its sentence, and of a kind whose head noun is the head noun of the thing the
+        sentence opens with, named before. A writer adds the name they use for the thing they have
+        just placed; after a dash, the last thing named (the desk) is no antecedent of a lamp."""
+        words, gaps = self.text.words, self.text.gaps
+        end = i + n
+        if end < len(words) and not _SENTENCE_END.search(gaps[end]):
+            return False
+        the = next((k for k in range(i - 1, max(i - 4, 0) - 1, -1) if words[k] in _RENAMING_DETERMINERS), None)
+        if the is None or the < 1 or not _DASH_GAP.search(gaps[the]) or any(
+                _DASH_GAP.search(gaps[k]) or self.match(k)[1] is not None for k in range(the + 1, i)):
+            return False
+        start = self.text.sentence_start(the)
+        while start < the and words[start] in _DETERMINERS:
+            start += 1
+        subject = self.match(start)[1]
+        return subject is not None and subject in self.kinds and start < the \
+            and words_of(subject)[-1] == words_of(category)[-1]
+
     def which_one_color(self, i: int) -> str | None:
         """The colour "the <colour> one" at word `i` ("one") gives the thing named last, when it
         says which one that thing is: as a predicate ("It's the red one by the slider") or as a
@@ -2134,6 +2157,9 @@ class _Reader:
                 continue
             if self.kind_value(i, n, prev) or self.purpose_class(i, n, prev):
                 i += n  # "a toy on the floor ... dolls in the red box, toy cars in the blue box"
+                continue
+            if shared is None and self.subject_renamed(i, n, category):
+                i += n  # "The table lamp is on the desk - my reading lamp": the lamp said again
                 continue
             if shared is None and self.appositive(i, n, category):
                 # "Papa ka kurta, the white shirt, ...": the shirt named again, its colour said
