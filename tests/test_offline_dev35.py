@@ -16,10 +16,15 @@ misses that must stay apart:
   negation before the verb (`sentences.SOUNDS`, `_SOUNDING`);
 - (d) an afterthought after a dash renaming the thing the sentence opens with ("The table lamp
   stands on the desk - my reading lamp"): the writer's own name for the thing just placed, of the
-  same head noun, no second lamp (`naming._Reader.subject_renamed`).
+  same head noun, no second lamp (`naming._Reader.subject_renamed`);
+- (e) a colour sorted against its complement ("a white shirt goes in the washing machine, a
+  coloured shirt in the hamper", "a towel of any other colour"): an indefinite thing's colour is
+  then a condition on any one thing of the kind, no particular white shirt
+  (`naming._Reader.color_class`).
 
 Measured on the tables below on the tree before the rules: (a) 8 of 10 named once, (b) 0 of 8
-read as stated, (c) 1 of 8 asked, (d) 1 of 4 named once; after: all of them, and every near miss as before."""
+read as stated, (c) 1 of 8 asked, (d) 1 of 4 named once, (e) 0 of 6 asked; after: all of
+them, and every near miss as before."""
 
 from __future__ import annotations
 
@@ -186,4 +191,44 @@ def test_the_renamed_subject_is_the_one_asked() -> None:
     ("kitchen", "The mug is on the counter - my cup. Wash both.", {"mug", "cup"}),  # another head noun
 ])
 def test_another_thing_after_a_dash_is_still_named(room: str, text: str, names: set[str]) -> None:
+    assert names <= set(named(text, (room,)))
+
+
+# -- (e) a colour sorted against its complement -------------------------------------------------
+
+COLOR_CLASSES = [
+    # (register, room, text, the one kind named, the colour asked)
+    ("laundry card", "laundry room", "A white shirt goes in the washing machine. A coloured shirt goes in the hamper.",
+     "shirt", "attr(shirt, color, white)"),
+    ("kitchen rota", "kitchen", "Dishes: a white plate goes in the dishwasher; a coloured plate is washed by hand "
+     "in the sink.", "plate", "attr(plate, color, white)"),
+    ("hotel rules", "bathroom", "Bathroom rules: a white towel goes in the laundry basket, a towel of any other "
+     "colour goes on the towel rail.", "towel", "attr(towel, color, white)"),
+    ("text message", "bedroom", "Sock on the floor? A white sock goes in the hamper, a colored sock in the "
+     "laundry basket.", "sock", "attr(sock, color, white)"),
+    ("office kitchen sign", "kitchen", "If you find a dirty white mug, put it in the dishwasher; a dirty coloured "
+     "mug goes in the sink.", "mug", "attr(mug, color, white)"),
+    ("cleaner's brief", "living room", "Cushion on the floor: a white cushion must be put on the sofa, a coloured "
+     "cushion is to be placed on the armchair.", "sofa_pillow", "attr(sofa_pillow, color, white)"),
+]
+
+
+@pytest.mark.parametrize(("register", "room", "text", "kind", "condition"), COLOR_CLASSES)
+def test_a_colour_sorted_against_its_complement_is_asked(register: str, room: str, text: str, kind: str,
+                                                          condition: str) -> None:
+    names = [name for name, (category, _) in named(text, (room,)).items() if category == kind]
+    assert names == [kind], register
+    assert asks(text, (room,), condition), register
+
+
+@pytest.mark.parametrize(("room", "text", "names"), [
+    # colours that tell particular things apart: still two things, or the one coloured thing
+    ("kitchen", "The white mug is on the shelf and the blue mug is in the sink. Wash the blue mug.",
+     {"white_mug", "blue_mug"}),
+    ("kitchen", "A white mug and a blue mug are on the table. Put both in the sink.", {"white_mug", "blue_mug"}),
+    ("bedroom", "My white shirt is on the bed. Put it in the wardrobe; the coloured cushions stay on the sofa.",
+     {"white_shirt"}),
+    ("kitchen", "A white plate is on the counter. Put it in the sink.", {"white_plate"}),
+])
+def test_colours_of_particular_things_still_name_them(room: str, text: str, names: set[str]) -> None:
     assert names <= set(named(text, (room,)))

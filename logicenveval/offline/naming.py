@@ -389,6 +389,10 @@ def _phrase_tables(catalog: Catalog) -> tuple[dict[tuple[str, ...], str], dict[s
 #: the determiners that open a phrase renaming the thing just named (`_Reader.appositive`): "the"
 #: after a comma or a bracket, a possessive too between dashes
 _RENAMING_DETERMINERS = frozenset({"the", "my", "your", "our", "his", "her", "their"})
+#: the words that name the complement of a colour as a class ("a coloured shirt", `color_class`)
+_COMPLEMENT_COLORS = frozenset({"coloured", "colored"})
+#: the nouns of colour after "other" ("a towel of any other colour")
+_COLOR_NOUNS = frozenset({"colour", "colours", "color", "colors"})
 #: a dash set between words, as a gap holds it (" - ", " – ", " — ")
 _DASH_GAP = re.compile(r"\s[-\u2013\u2014]\s|[\u2013\u2014]")
 
@@ -1437,6 +1441,28 @@ class _Reader:
         return subject is not None and subject in self.kinds and start < the \
             and words_of(subject)[-1] == words_of(category)[-1]
 
+    def color_class(self, told: int, category: str) -> bool:
+        """Whether the colour at word `told` sorts things of `category` into classes rather than
+        naming one of them: an indefinite phrase ("a white shirt goes in the washing machine", "a
+        dirty white mug", a state word or two between the article and the colour) of a kind the
+        text also names by the complement of a colour ("a coloured shirt goes in the hamper", "a
+        towel of any other colour goes on the rail"). What is sorted is any one thing of the kind,
+        its colour a condition, as laundry is sorted into whites and coloureds; "a white mug and a
+        blue mug" name two mugs."""
+        words = self.text.words
+        k = told - 1
+        while k >= 0 and told - k <= 3 and words[k] in STATE_WORDS:
+            k -= 1
+        if k < 0 or words[k] not in ("a", "an"):
+            return False
+        for j, w in enumerate(words):
+            if w in _COMPLEMENT_COLORS and any(self.match(x)[1] == category for x in range(j + 1, min(j + 3, len(words)))):
+                return True  # "a coloured shirt", "a dirty colored sock"
+            if w in _COLOR_NOUNS and j > 0 and words[j - 1] in ("other", "another") and any(
+                    self.match(x)[1] == category for x in range(max(0, j - 7), j - 1)):
+                return True  # "a towel of any other colour", "shirts in another colour"
+        return False
+
     def which_one_color(self, i: int) -> str | None:
         """The colour "the <colour> one" at word `i` ("one") gives the thing named last, when it
         says which one that thing is: as a predicate ("It's the red one by the slider") or as a
@@ -2189,7 +2215,7 @@ class _Reader:
             allowed = self.catalog.categories[category].attributes.get("color", [])
             last = words[i + n - 1] if words[i + n - 1] not in _PACKAGING else words_of(category)[-1]
             told = self.color_before(i)
-            if told is not None and words[told] in allowed:
+            if told is not None and words[told] in allowed and not self.color_class(told, category):
                 for color in self.coordinated(told, allowed):
                     self.instance(category, f"{color}_{category}", {"color": color})
                 last_colored = category
