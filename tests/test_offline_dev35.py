@@ -1,7 +1,7 @@
 """Structures behind dev 35's losses (issue 47, docs/reader.md "Numbered headings, observed
-places, verbs of state and afterthoughts (nineteenth session)"), each written here as composed
-sentences in several registers, rooms, things and states (none from the task sets), with near
-misses that must stay apart:
+places, verbs of state, afterthoughts and colour classes (nineteenth session)"), each written
+here as composed sentences in several registers, rooms, things and states (none from the task
+sets), with near misses that must stay apart:
 
 - (a) a numbered heading: "Finding 2 - Filing cabinet (risk rating: high)", the numbering of
   reports, tickets, checklists and minutes; a numeral followed by a dash or a colon labels the
