@@ -393,6 +393,10 @@ def _phrase_tables(catalog: Catalog) -> tuple[dict[tuple[str, ...], str], dict[s
 #: the determiners that open a phrase renaming the thing just named (`_Reader.appositive`): "the"
 #: after a comma or a bracket, a possessive too between dashes
 _RENAMING_DETERMINERS = frozenset({"the", "my", "your", "our", "his", "her", "their"})
+#: the words that name the complement of a colour as a class ("a coloured shirt", `color_class`)
+_COMPLEMENT_COLORS = frozenset({"coloured", "colored"})
+#: the nouns of colour after "other" ("a towel of any other colour")
+_COLOR_NOUNS = frozenset({"colour", "colours", "color", "colors"})
 #: a dash set between words, as a gap holds it (" - ", " – ", " — ")
 _DASH_GAP = re.compile(r"\s[-\u2013\u2014]\s|[\u2013\u2014]")
 
@@ -1418,6 +1422,51 @@ class _Reader:
         return "," in gaps[end] and words[end] not in _NOUN_LEADS and (
             nxt == len(words) or self.match(nxt)[1] != category)
 
+    def subject_renamed(self, i: int, n: int, category: str) -> bool:
+        """Whether the noun phrase at words [i, i + n) is an afterthought renaming the subject of
+        its sentence ("The table lamp is on the desk - my reading lamp", "The laundry basket sits
+        on the floor – the wicker basket", "the floor lamp is by the bed — her reading lamp"):
+        set off by a dash, opened by "the" or a possessive with at most two words before the
+        name, ending its sentence, and of a kind whose head noun is the head noun of the thing the
+        sentence opens with, named before. A writer adds the name they use for the thing they have
+        just placed; after a dash, the last thing named (the desk) is no antecedent of a lamp."""
+        words, gaps = self.text.words, self.text.gaps
+        end = i + n
+        if end < len(words) and not _SENTENCE_END.search(gaps[end]):
+            return False
+        the = next((k for k in range(i - 1, max(i - 4, 0) - 1, -1) if words[k] in _RENAMING_DETERMINERS), None)
+        if the is None or the < 1 or not _DASH_GAP.search(gaps[the]) or any(
+                _DASH_GAP.search(gaps[k]) or self.match(k)[1] is not None for k in range(the + 1, i)):
+            return False
+        start = self.text.sentence_start(the)
+        while start < the and words[start] in _DETERMINERS:
+            start += 1
+        subject = self.match(start)[1]
+        return subject is not None and subject in self.kinds and start < the \
+            and words_of(subject)[-1] == words_of(category)[-1]
+
+    def color_class(self, told: int, category: str) -> bool:
+        """Whether the colour at word `told` sorts things of `category` into classes rather than
+        naming one of them: an indefinite phrase ("a white shirt goes in the washing machine", "a
+        dirty white mug", a state word or two between the article and the colour) of a kind the
+        text also names by the complement of a colour ("a coloured shirt goes in the hamper", "a
+        towel of any other colour goes on the rail"). What is sorted is any one thing of the kind,
+        its colour a condition, as laundry is sorted into whites and coloureds; "a white mug and a
+        blue mug" name two mugs."""
+        words = self.text.words
+        k = told - 1
+        while k >= 0 and told - k <= 3 and words[k] in STATE_WORDS:
+            k -= 1
+        if k < 0 or words[k] not in ("a", "an"):
+            return False
+        for j, w in enumerate(words):
+            if w in _COMPLEMENT_COLORS and any(self.match(x)[1] == category for x in range(j + 1, min(j + 3, len(words)))):
+                return True  # "a coloured shirt", "a dirty colored sock"
+            if w in _COLOR_NOUNS and j > 0 and words[j - 1] in ("other", "another") and any(
+                    self.match(x)[1] == category for x in range(max(0, j - 7), j - 1)):
+                return True  # "a towel of any other colour", "shirts in another colour"
+        return False
+
     def which_one_color(self, i: int) -> str | None:
         """The colour "the <colour> one" at word `i` ("one") gives the thing named last, when it
         says which one that thing is: as a predicate ("It's the red one by the slider") or as a
@@ -1664,6 +1713,9 @@ class _Reader:
                 and words[i].isdigit() else _COUNTS.get(words[i], 0)
             j = i + 1 if count else i
             n, category = self.group_kind(j)
+            if category is not None and count and self.numbered_heading(i):
+                i += 1  # "Finding 2 - Filing cabinet (risk rating: high)": the finding's number
+                continue
             if category is None and count and words[i] != "both":
                 n, category = 0, self.counted_before(i)  # "Tea towels. There are two, a green one and ..."
             if category is None:
@@ -1697,6 +1749,16 @@ class _Reader:
                 i = end
                 continue
             i += 1
+
+    def numbered_heading(self, i: int) -> bool:
+        """Whether the number at word `i` numbers a heading rather than counting the things after
+        it: a numeral followed by a colon or a dash and then a name ("Finding 2 - Filing cabinet
+        (risk rating: high)", "Task 2 — Wardrobe (deadline: tonight)", "Action 7: Laptop"), as
+        reports, tickets and checklists number their entries. A count runs straight into its noun
+        ("2 mugs: a red one and a blue one"); what follows such a heading's name in brackets says
+        more of the one thing, no list of several."""
+        gaps = self.text.gaps
+        return self.text.words[i].isdigit() and i + 1 < len(gaps) and bool(_HEADING.search(gaps[i + 1]))
 
     def counted_before(self, i: int) -> str | None:
         """The kind a count standing alone counts ("Tea towels. There are two, a green one and a
@@ -2138,6 +2200,9 @@ class _Reader:
             if self.kind_value(i, n, prev) or self.purpose_class(i, n, prev):
                 i += n  # "a toy on the floor ... dolls in the red box, toy cars in the blue box"
                 continue
+            if shared is None and self.subject_renamed(i, n, category):
+                i += n  # "The table lamp is on the desk - my reading lamp": the lamp said again
+                continue
             if shared is None and self.appositive(i, n, category):
                 # "Papa ka kurta, the white shirt, ...": the shirt named again, its colour said
                 told = self.color_before(i + n - 1)
@@ -2166,7 +2231,7 @@ class _Reader:
             allowed = self.catalog.categories[category].attributes.get("color", [])
             last = words[i + n - 1] if words[i + n - 1] not in _PACKAGING else words_of(category)[-1]
             told = self.color_before(i)
-            if told is not None and words[told] in allowed:
+            if told is not None and words[told] in allowed and not self.color_class(told, category):
                 for color in self.coordinated(told, allowed):
                     self.instance(category, f"{color}_{category}", {"color": color})
                 last_colored = category

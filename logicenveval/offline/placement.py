@@ -107,9 +107,15 @@ STATIVE = frozenset({"lie", "lies", "lay", "lying", "sit", "sits", "sat", "sitti
 #: say where a thing is, as "located" does, never where it should go
 PLACED = frozenset({"located", "situated", "disposed", "positioned", "arranged", "mounted", "received",
                     "housed", "seated", "perched", "stationed"})
+#: participles of observing and recording: in a report's past or perfect passive ("a cup was noted
+#: on the desk", "a towel was recorded on the bed during the inspection", "a book has been logged
+#: on the sofa") they say where the thing was when it was seen, never where it should go; not
+#: `PASSIVE_STATIVE`: a present one is a condition's ("where a cup is noted on the desk, wash it")
+OBSERVED = frozenset({"noted", "observed", "recorded", "logged", "reported", "sighted", "photographed",
+                      "spotted", "noticed"})
 RESULT = frozenset({"left", "dropped", "put", "placed", "thrown", "set", "found", "knocked",
                     "kept", "stored", "dumped", "abandoned", "forgotten", "parked", "stuck", "present",
-                    "spread", "draped", "slung"}) | PLACED
+                    "spread", "draped", "slung"}) | PLACED | OBSERVED
 PASSIVE_STATIVE = frozenset({"found", "kept", "stored",
                              # "leave" is "let stay": "the bowl is left at the head of the table"
                              # is where it stays ("is to be left", "should be left": a norm)

@@ -820,23 +820,40 @@ def predicate_state(clause: str) -> str:
     return _PREDICATE_STATE.sub(lambda m: m.group(1) + _predicate(m.group(2)), clause)
 
 
-#: a device's sound said as the finite verb of a condition ("if the alarm clock rings, silence it",
-#: "when the timer beeps", "if it ring" in verse or a learner's English): the device is going, as
-#: "is ringing" says (`STATE_WORDS`); only right after a condition's cue and a short subject, so
-#: "the phone that rings" or "ring the bell" asks nothing. A subject holds no copula and the verb
-#: no object: "if the lamp is on ring me", "if the fridge is open buzz us" end their condition at
-#: an instruction to call the speaker (the eighteenth session)
+#: a device's sound or activity said as the finite verb of a condition ("if the alarm clock rings,
+#: silence it", "when the timer beeps", "if the candle still burns, blow it out", "if the fan
+#: still runs", "if it ring" in verse or a learner's English): the device is going, as "is
+#: ringing" / "is burning" says (`STATE_WORDS`); only right after a condition's cue and a short
+#: subject, so "the phone that rings" or "ring the bell" asks nothing. A subject holds no copula
+#: and the verb no object: "if the lamp is on ring me", "if the fridge is open buzz us" end their
+#: condition at an instruction to call the speaker (the eighteenth session). An adverb of time
+#: ("still", "already") and a negation ("no longer", "doesn't", a learner's "not burns") may
+#: stand before the verb, as before "is burning"; a particle after it makes another verb ("runs
+#: out", "burns down", "plays up": stock run out, a thing broken), never the thing's activity (the
+#: nineteenth session)
 SOUNDS = {"ring": "ringing", "rings": "ringing", "beep": "beeping", "beeps": "beeping",
-          "buzz": "buzzing", "buzzes": "buzzing", "bleep": "beeping", "bleeps": "beeping"}
+          "buzz": "buzzing", "buzzes": "buzzing", "bleep": "beeping", "bleeps": "beeping",
+          "burn": "burning", "burns": "burning", "run": "running", "runs": "running",
+          "glow": "glowing", "glows": "glowing", "spin": "spinning", "spins": "spinning",
+          "whirr": "whirring", "whirrs": "whirring", "play": "playing", "plays": "playing"}
+#: the adverbs of time and the negations that may stand between the subject and the verb
+_SOUNDING_BEFORE = {"still": "still", "already": "already", "no longer": "no longer", "not": "not",
+                    "doesn't": "not", "does not": "not", "don't": "not", "do not": "not",
+                    "still not": "still not", "already not": "already not", "never": "not"}
 _SOUNDING = re.compile(r"\b(if|when|whenever|unless|once|in\s+case)\s+((?:it|they|(?:the|my|your|our|his|her|this|that)"
-                       r"(?:\s+(?!(?:is|are|was|were|be|been|being)\b)[a-z]+){1,3}?))\s+"
-                       rf"({'|'.join(SOUNDS)})\b(?!\s+(?:the|a|an|my|your|it|them|me|us)\b)", re.I)
+                       r"(?:\s+(?!(?:is|are|was|were|be|been|being|still|already|not|no|never|doesn't|does|don't|do)\b)"
+                       r"[a-z]+){1,3}?))\s+"
+                       rf"(?:({'|'.join(sorted(_SOUNDING_BEFORE, key=len, reverse=True))})\s+)?"
+                       rf"({'|'.join(SOUNDS)})\b(?!\s+(?:the|a|an|my|your|it|them|me|us|out|down|up|over|off|low|short"
+                       r"|dry|away|into|through)\b)", re.I)
 
 
 def _sounding(m: re.Match[str]) -> str:
-    """"if the alarm rings" as "if the alarm is ringing" (`_SOUNDING`)."""
+    """"if the alarm rings" as "if the alarm is ringing", "if it no longer burns" as "if it is no
+    longer burning" (`_SOUNDING`)."""
     be = "are" if m.group(2).lower() == "they" else "is"
-    return f"{m.group(1)} {m.group(2)} {be} {SOUNDS[m.group(3).lower()]}"
+    before = f"{_SOUNDING_BEFORE[' '.join(m.group(3).lower().split())]} " if m.group(3) else ""
+    return f"{m.group(1)} {m.group(2)} {be} {before}{SOUNDS[m.group(4).lower()]}"
 
 
 #: "In the case the heater is on", "in the event that the tap is running": a condition opened by
