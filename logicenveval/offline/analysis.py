@@ -3396,10 +3396,12 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             low_words = WORD.findall(_unbiased(low))
             present = presence_asked(low_words) if role == "condition" else None
             if present is not None and _pronoun_question(low_words) and any(
-                    f.kind == "location" and f.subject in names for cl in clauses for f in cl.facts):
+                    f.kind == "location" and (f.subject in names or cl.sentence >= grammatical - 2)
+                    for cl in clauses for f in cl.facts):
                 # "I forgot my glasses on the coffee table. ... Are they there?": a pronoun's
-                # question after a place said of its thing asks that place, not whether the thing
-                # is there at all (left to the reading of "there" as it was)
+                # question after a place said of its thing, or of any thing just before (the
+                # pronoun may be that thing's, however it is resolved), asks that place, not
+                # whether the thing is there at all (left to the reading of "there" as it was)
                 present = None
             if role == "condition" and _anaphoric(said, facts):
                 # (a finding in the room itself, "if you find any in the media room", asks whether
