@@ -3244,6 +3244,27 @@ _HEDGES = frozenset({"may", "might", "could", "possibly", "perhaps", "maybe", "p
 #: reads as a statement or as the consequence of a time clause after it ("The pillow might be on
 #: the armchair when you arrive - if so, ...")
 _HEDGED_ROLES = frozenset({"uncertain", "statement", "consequence"})
+#: the adverbs of `_HEDGES`: they say how sure the writer is, not what is guessed ("maybe the mug
+#: is there" guesses "the mug is there"); the modals are part of the guess's verb group
+_DOUBT_ADVERBS = _HEDGES - {"may", "might", "could"}
+#: the finite words a question opens with before its subject ("is it there?", "might it be?")
+AUX_OPENERS = frozenset({"is", "are", "was", "were", "might", "may", "could", "will", "would"})
+
+
+def _pronoun_question(words: list[str]) -> bool:
+    """Whether a condition's words are a question whose subject is a pronoun ("are they there?",
+    "isn't it here?", "might it still be there?")."""
+    lead = 2 if words[1:2] == ["not"] else 1
+    return len(words) > lead and words[0] in AUX_OPENERS and words[lead] in ("it", "they")
+
+
+def _doubted_presence(said: str) -> bool:
+    """Whether a guess ("Maybe the mug is there", "it will probably be here", "the keys might
+    still be there") guesses only that its thing is there at all: its words without the adverbs
+    of doubt (`_DOUBT_ADVERBS`) ask a presence (`clauses.presence_asked`; the nineteenth session:
+    "if that's the case" after such a guess pointed back to a clause with nothing read)."""
+    words = [w for w in WORD.findall(expand(said).lower()) if w not in _DOUBT_ADVERBS]
+    return presence_asked(words) is False
 
 #: what a verbless condition of place may hold besides its thing and its place ("Kettle not on the
 #: counter", "Towel still on the floor?")
@@ -3495,8 +3516,18 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             low = expand(said).lower() if role == "condition" else ""
             # "if it's there", "if it turns up", "if it isn't there": a condition that asks only
             # whether its thing is there at all (True: that it is not)
-            low_words = WORD.findall(low)
+            # (a question's tag dropped: "the mug is there, isn't it? Then ..." asks what "is the
+            # mug there?" does, `_unbiased`)
+            low_words = WORD.findall(_unbiased(low))
             present = presence_asked(low_words) if role == "condition" else None
+            if present is not None and _pronoun_question(low_words) and any(
+                    f.kind == "location" and (f.subject in names or cl.sentence >= grammatical - 2)
+                    for cl in clauses for f in cl.facts):
+                # "I forgot my glasses on the coffee table. ... Are they there?": a pronoun's
+                # question after a place said of its thing, or of any thing just before (the
+                # pronoun may be that thing's, however it is resolved), asks that place, not
+                # whether the thing is there at all (left to the reading of "there" as it was)
+                present = None
             if role == "condition" and _anaphoric(said, facts):
                 # (a finding in the room itself, "if you find any in the media room", asks whether
                 # the thing is there at all, whatever the clause before said of it: `_come_upon`)
@@ -3535,6 +3566,12 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                     and _FIND_NAMED.match(low):
                 # "If you find a wallet, put it on the side table", "If you find a credit card
                 # anywhere in the office, ...": coming upon a thing named, nowhere in particular
+                facts = [Fact(r, f"exists({r})", "exists") for r in names[:1]]
+            elif role == "uncertain" and names and all(f.derived for f in facts) and _doubted_presence(said) \
+                    and not _place_before(clauses, grammatical, names):
+                # "Maybe the mug is there. If that's the case, ...", "The remote will probably be
+                # here": a guess that the thing is there at all, as the condition "if it is there"
+                # asks (with a place said before, "there" may be that place: left as it was)
                 facts = [Fact(r, f"exists({r})", "exists") for r in names[:1]]
             elif role == "statement" and _elaborates(clauses, grammatical, said):
                 # "anything on the floor should go where it belongs - the book on the couch, a toy

@@ -312,8 +312,19 @@ PRESENCE_DETERMINERS = frozenset({"the", "a", "an", "your", "my", "our", "his", 
 _PRESENCE_FILLERS = frozenset({"ever", "still", "do", "does", "did"})
 
 
-#: the finite words a presence question opens with ("Is the mug there?", "Isn't the remote here?")
-_PRESENCE_QUESTION = frozenset({"is", "are", "was", "were"})
+#: adverbials of time a presence word may be followed by and still ask only the presence ("if
+#: the mug is there right now", "should the keys be here at the moment", the nineteenth
+#: session): they say when it is asked, not where. Not "in there"/"in here" (a place), nor
+#: "already" ("unless it is there already" asks whether an instruction's goal is reached,
+#: `analysis._Reader._already`)
+PRESENCE_TIMES = frozenset(tuple(a.split()) for a in TRAILING_ADVERBIALS
+                           if a not in ("in there", "in here", "already"))
+
+
+#: the finite words a presence question opens with ("Is the mug there?", "Isn't the remote here?",
+#: and a modal of likelihood, the nineteenth session: "Might it still be there?", "Could the keys
+#: be here?"; not "should", "must" or "can", which ask what ought to or may be, not what is)
+_PRESENCE_QUESTION = frozenset({"is", "are", "was", "were", "might", "may", "could", "will", "would"})
 #: modals before "be" in a presence condition ("if the mug might still be there", "should the
 #: towel be here", "if it will be there"); a bare "be" after an inverted "should" too
 _PRESENCE_MODALS = frozenset({"might", "may", "could", "should", "will", "would", "must", "can"})
@@ -325,10 +336,10 @@ def presence_asked(words: list[str]) -> bool | None:
     word first ("Is the mug there?"; a negative question, "Isn't the mug there?", asks the same
     as the positive one, `analysis._unbiased`). Why: a presence was read only as "X is there"."""
     if words[:1] and words[0] in _PRESENCE_QUESTION:
-        # (the thing named: "are they there?" after "I forgot my glasses on the coffee table"
-        # asks the place the sentence before named, not whether they exist)
+        # the subject is the thing's noun phrase, or since the nineteenth session "it"/"they"
+        # as in the statement: "Is it there? If so, ..." asks what "If it is there, ..." asks
         lead = 2 if words[1:2] == ["not"] else 1
-        for n in (2, 3):
+        for n in (1, 2, 3):
             said = _presence(words[lead:lead + n] + words[:1] + words[lead + n:])
             if said is not None:
                 return said
@@ -363,8 +374,8 @@ def _presence(words: list[str]) -> bool | None:
             rest = rest[1:]
         negated = rest[:1] == ["not"]
         rest = rest[negated:]
-        if rest[:1] == ["anywhere"] and rest[1:2] != ["else"] or len(rest) in (1, 3) and rest[0] in PRESENT \
-                and rest[1:] in ([], ["at", "all"]):
+        if rest[:1] == ["anywhere"] and rest[1:2] != ["else"] or rest[:1] and rest[0] in PRESENT \
+                and (rest[1:] in ([], ["at", "all"]) or tuple(rest[1:]) in PRESENCE_TIMES):
             return negated
     return None
 
@@ -696,7 +707,9 @@ _NO_IMPERATIVE_AFTER = frozenset({
 #: what makes the words before a cut a condition of their own: a copula, "there", a state word
 #: prepositions of motion that open an instruction whose verb is dropped ("into the basket")
 DIRECTIONS = frozenset({"into", "onto"})
-_PREDICATES = frozenset({"is", "are", "was", "were", "has", "have", "had", "there"}) | frozenset(STATE_WORDS)
+#: (and "be" after a modal, the nineteenth session: "if the mug might still be missing let me
+#: know" ends its condition where "if the mug is missing let me know" does)
+_PREDICATES = frozenset({"is", "are", "was", "were", "be", "has", "have", "had", "there"}) | frozenset(STATE_WORDS)
 
 
 #: subjects that open a main clause of their own after a condition typed without its comma
