@@ -4,7 +4,8 @@ written here, in several registers, rooms, kinds and presences, with near misses
 as they are; each table was measured before its rule (the counts in each test's docstring).
 
 - a presence followed by an adverbial of time ("if the mug is there right now", "should the keys
-  be here at the moment"): read as "is there" alone (`clauses._presence`);
+  be here at the moment"): its rule was withdrawn at the merge (an unseen row fell), so these
+  cases are strict xfails (`WITHDRAWN`);
 - a presence asked as a question whose subject is a pronoun or whose finite word is a modal of
   likelihood ("Is it there? If so, ...", "Might the keys still be here?"): read as the statement
   "if it is there" (`clauses.presence_asked`);
@@ -24,25 +25,31 @@ from reading import CATALOG, asks, brief, factors
 
 from logicenveval.offline.analysis import analyse, nest
 
+#: a presence followed by an adverbial of time ("if the mug is there right now") is not read: the
+#: rule that read it (`clauses.PRESENCE_TIMES`, 282 of the grid's 409 unread cells) was withdrawn
+#: at its merge, because the held-out 2 set's new tasks fell with it (LogCov 78.1 -> 74.0, SceVR
+#: 68.0 -> 64.0, FauDR 75.0 -> 66.7); docs/reader.md, "What it still misreads"
+WITHDRAWN = pytest.mark.xfail(strict=True, reason="presence before an adverbial of time: rule withdrawn")
+
 #: a presence condition whose "there"/"here" is followed by an adverbial of time: (text, rooms,
 #: the condition asked). Before the rule 1 of 8 was asked (the chat message's "now")
 PRESENCE_THEN_TIME = [
     # a flatmate's note: "right now", a pronoun after the thing named
-    ("Have a look at my mug. If it is there right now, put it in the sink.", ("kitchen",), "exists(mug)"),
+    pytest.param("Have a look at my mug. If it is there right now, put it in the sink.", ("kitchen",), "exists(mug)", marks=WITHDRAWN),
     # an office rota: the noun, "at the moment"
-    ("If the stapler is here at the moment, leave it on the desk.", ("office",), "exists(stapler)"),
+    pytest.param("If the stapler is here at the moment, leave it on the desk.", ("office",), "exists(stapler)", marks=WITHDRAWN),
     # a formal register: an inverted "should", "this morning"
-    ("Should the umbrella be there this morning, hang it by the door.", ("hallway",), "exists(umbrella)"),
+    pytest.param("Should the umbrella be there this morning, hang it by the door.", ("hallway",), "exists(umbrella)", marks=WITHDRAWN),
     # a chat message in small letters: a contraction, "now"
     ("if the remote's there now can u put it on the table", ("living_room",), "exists(remote_control)"),
     # a negated presence, "by now": the answer is the negation
-    ("Unless the laptop is there by now, let me know.", ("office",), "exists(laptop)"),
+    pytest.param("Unless the laptop is there by now, let me know.", ("office",), "exists(laptop)", marks=WITHDRAWN),
     # a carer's note: "again"
-    ("If the blanket is there again, fold it.", ("bedroom",), "exists(blanket)"),
+    pytest.param("If the blanket is there again, fold it.", ("bedroom",), "exists(blanket)", marks=WITHDRAWN),
     # a time of day after "still" ("still" asks nothing more)
-    ("If the towel is still there tonight, put it in the laundry basket.", ("bathroom",), "exists(towel)"),
+    pytest.param("If the towel is still there tonight, put it in the laundry basket.", ("bathroom",), "exists(towel)", marks=WITHDRAWN),
     # a negated presence said outright
-    ("If the book isn't here today, tell me.", ("living_room",), "exists(book)"),
+    pytest.param("If the book isn't here today, tell me.", ("living_room",), "exists(book)", marks=WITHDRAWN),
 ]
 
 
@@ -87,10 +94,10 @@ PRESENCE_QUESTIONS = [
     ("Go and look at the teddy bear. Isn't it there? If so, put it on the bed.", ("bedroom",),
      "exists(teddy_bear)"),
     # a future "will" asked
-    ("Will the laptop be here tonight? If not, let me know.", ("office",), "exists(laptop)"),
+    pytest.param("Will the laptop be here tonight? If not, let me know.", ("office",), "exists(laptop)", marks=WITHDRAWN),
     # a carer's note: "still" and a time after the presence
-    ("Have a look at the blanket. Is it still there this evening? If so, fold it.", ("living_room",),
-     "exists(blanket)"),
+    pytest.param("Have a look at the blanket. Is it still there this evening? If so, fold it.", ("living_room",),
+                 "exists(blanket)", marks=WITHDRAWN),
     # a house-sitter's note: a dislocated noun, "If not"
     ("The cat's bowl - is it there? If not, put out a new one.", ("kitchen",), "exists(pet_bowl)"),
 ]
@@ -136,7 +143,7 @@ PRESENCE_GUESSED = [
     # a tag question, a contracted pronoun after the thing named
     ("Have a look at the mug. It's there, isn't it? Then wash it.", ("kitchen",), "exists(mug)"),
     # a plural tag after a guess of time
-    ("The scissors are here right now, aren't they? Then put them in the drawer.", ("office",), "exists(scissors)"),
+    pytest.param("The scissors are here right now, aren't they? Then put them in the drawer.", ("office",), "exists(scissors)", marks=WITHDRAWN),
     # a modal guess with "possibly"
     ("The charger might possibly be there. If so, plug it in.", ("office",), "exists(phone_charger)"),
 ]

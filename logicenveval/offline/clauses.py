@@ -312,15 +312,6 @@ PRESENCE_DETERMINERS = frozenset({"the", "a", "an", "your", "my", "our", "his", 
 _PRESENCE_FILLERS = frozenset({"ever", "still", "do", "does", "did"})
 
 
-#: adverbials of time a presence word may be followed by and still ask only the presence ("if
-#: the mug is there right now", "should the keys be here at the moment", the nineteenth
-#: session): they say when it is asked, not where. Not "in there"/"in here" (a place), nor
-#: "already" ("unless it is there already" asks whether an instruction's goal is reached,
-#: `analysis._Reader._already`)
-PRESENCE_TIMES = frozenset(tuple(a.split()) for a in TRAILING_ADVERBIALS
-                           if a not in ("in there", "in here", "already"))
-
-
 #: the finite words a presence question opens with ("Is the mug there?", "Isn't the remote here?",
 #: and a modal of likelihood, the nineteenth session: "Might it still be there?", "Could the keys
 #: be here?"; not "should", "must" or "can", which ask what ought to or may be, not what is)
@@ -375,7 +366,7 @@ def _presence(words: list[str]) -> bool | None:
         negated = rest[:1] == ["not"]
         rest = rest[negated:]
         if rest[:1] == ["anywhere"] and rest[1:2] != ["else"] or rest[:1] and rest[0] in PRESENT \
-                and (rest[1:] in ([], ["at", "all"]) or tuple(rest[1:]) in PRESENCE_TIMES):
+                and rest[1:] in ([], ["at", "all"]):
             return negated
     return None
 
