@@ -3933,12 +3933,26 @@ def _taken_up_under(factors: list[Factor], clauses: list[Clause]) -> None:
         own = by_sentence.get(previous, [])
         naming = [k for k, (_, c) in enumerate(own) if c.role in ("consequence", "statement") and (
             b.subject in c.mentions or any(f.goal and f.key == b.subject for f in c.facts))]
+        if naming and _only_where_sent(b, own[naming[-1]][1]) and not (
+                any(v.startswith(f"state({b.subject}, open)") for v in b.values.values())
+                or _relates(b.sentence, clauses)):
+            # "If the mug is dirty, put it in the dishwasher. If the dishwasher is full, run it.":
+            # where a thing is sent has cases of its own; only its opening for the thing, or an
+            # instruction that replaces or prepares the move (`_relates`), is the move's
+            continue
         if naming:
             branch = _branch_of(factors, clauses, own, naming[-1], b.subject)
             # (a branch asked under this very condition, read from elsewhere, would make a circle
             # no path meets: the reading already nests them the other way)
             if not _asked_under(b.id, [dep for dep, _ in branch], factors):
                 b.context = branch
+
+
+def _only_where_sent(b: Factor, instruction: Clause) -> bool:
+    """Whether the instruction names b's thing only as where another thing goes (a goal's place),
+    not as a thing it brings, acts on or uses."""
+    goals = [f for f in instruction.facts if f.goal and f.kind == "location"]
+    return any(f.key == b.subject for f in goals) and not any(f.subject == b.subject for f in goals)
 
 
 def _asked_under(target: str, deps: list[str], factors: list[Factor]) -> bool:
