@@ -3892,6 +3892,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 factor.context.append((dep.id, _allowed(dep, negated, value)))
         factor.context = _consistent(factor.context)
     _answered(factors, clauses, line_of, described.split("\n"))
+    _taken_up_under(factors, clauses)
     factors += _alternatives_put_back(factors, clauses)
     factors.sort(key=lambda f: (f.order, _RANK[f.kind], f.id))
     groups, group_roles = _group(factors, _moves_into(factors, clauses) + _answers(factors, clauses))
@@ -4065,6 +4066,129 @@ def _answered(factors: list[Factor], clauses: list[Clause], line_of: Mapping[int
             for a in questions:
                 if a.subject != b.subject and all(dep != a.id for dep, _ in b.context):
                     b.context.append((a.id, frozenset({_answer_value(a, clauses[asked], answer)})))
+
+
+#: sentences of asides (a speaker's name with a remark that asks and moves nothing, a stage
+#: direction) that may stand between an instruction and the condition that takes up its thing
+_ASIDE_REACH = 2
+
+
+def _taken_up_under(factors: list[Factor], clauses: list[Clause]) -> None:
+    """A condition asked alone in its sentence on a thing that the instruction just before brings,
+    sends or puts something into, under a branch of its own ("If there's a pan in the kitchen, bring
+    me the desk lamp. If it's on, switch it off first"; "Any other book goes into the nightstand
+    drawer. - It sticks. - Then open it, unless it's already open"): the thing is only dealt with on
+    that branch, so its condition is asked only there, not across every situation. Asides with no
+    fact between the two sentences (a listener's remark, a stage direction) do not part them
+    (`_ASIDE_REACH`). A condition on a thing the instruction before never names ("If the bed is
+    unmade, make it. If the lamp is on, ...") or an instruction with no branch ("Bring me the lamp.
+    If it's on, ...") sets no such scope (`_branch_of`)."""
+    by_sentence: dict[int, list[tuple[int, Clause]]] = {}
+    for ci, c in enumerate(clauses):
+        by_sentence.setdefault(c.sentence, []).append((ci, c))
+    for b in factors:
+        if b.context or b.sentence < 1 or any(a.sentence == b.sentence and a.subject != b.subject for a in factors) \
+                or not any(s == b.sentence and clauses[ci].role == "condition" for s, ci in b.places):
+            continue
+        previous = b.sentence - 1
+        for _ in range(_ASIDE_REACH):
+            if previous < 1 or any(c.facts or c.role != "statement" for _, c in by_sentence.get(previous, [])):
+                break
+            previous -= 1
+        own = by_sentence.get(previous, [])
+        naming = [k for k, (_, c) in enumerate(own) if c.role in ("consequence", "statement") and (
+            b.subject in c.mentions or any(f.goal and f.key == b.subject for f in c.facts))]
+        if naming and _only_where_sent(b, own[naming[-1]][1]) and not (
+                any(v.startswith(f"state({b.subject}, open)") for v in b.values.values())
+                or _relates(b.sentence, clauses)):
+            # "If the mug is dirty, put it in the dishwasher. If the dishwasher is full, run it.":
+            # where a thing is sent has cases of its own; only its opening for the thing, or an
+            # instruction that replaces or prepares the move (`_relates`), is the move's
+            continue
+        if naming:
+            branch = _branch_of(factors, clauses, own, naming[-1], b.subject)
+            # (a branch asked under this very condition, read from elsewhere, would make a circle
+            # no path meets: the reading already nests them the other way)
+            if not _asked_under(b.id, [dep for dep, _ in branch], factors):
+                b.context = branch
+
+
+def _only_where_sent(b: Factor, instruction: Clause) -> bool:
+    """Whether the instruction names b's thing only as where another thing goes (a goal's place),
+    not as a thing it brings, acts on or uses."""
+    goals = [f for f in instruction.facts if f.goal and f.kind == "location"]
+    return any(f.key == b.subject for f in goals) and not any(f.subject == b.subject for f in goals)
+
+
+def _asked_under(target: str, deps: list[str], factors: list[Factor]) -> bool:
+    """Whether any of `deps` is asked under `target`, directly or through the factors it is asked
+    under."""
+    context = {f.id: [d for d, _ in f.context] for f in factors}
+    seen: set[str] = set()
+    todo = list(deps)
+    while todo:
+        dep = todo.pop()
+        if dep == target:
+            return True
+        if dep not in seen:
+            seen.add(dep)
+            todo += context.get(dep, [])
+    return False
+
+
+def _branch_of(factors: list[Factor], clauses: list[Clause], own: list[tuple[int, Clause]], said: int,
+               thing: str) -> list[tuple[str, frozenset[str]]]:
+    """The branch the instruction `own[said]` of a sentence is given under (`_taken_up_under`): the
+    nearest condition before it in its sentence, the instructions between at most (or, with none
+    before, the condition put right after it: "Bring me the lamp if there's a pan"), the values it
+    asks of the factors on other things; where the thing has a place and a state asked together
+    ("Shirt on the floor and not dirty: hang it up"), the place says which thing and the state is
+    the case; a sentence that says the condition's fact both ways ("if they are not clean, ...
+    - dusty leaves ...", or a misread negation) names no one branch, and the condition stays
+    asked everywhere. A list's case with no condition of its own ("a novel -> the shelf; any other book ->
+    the drawer") is the value of the moved thing's kind its words name ("other"); none, or an
+    instruction with no branch, gives no scope."""
+    k = said - 1
+    while k >= 0 and own[k][1].role == "consequence":
+        k -= 1
+    if k >= 0 and own[k][1].role == "statement" and not own[k][1].facts:
+        return _case_named(factors, [own[k][1], own[said][1]], thing)
+    if k < 0 and said + 1 < len(own) and own[said + 1][1].role == "condition":
+        k = said + 1
+    if not 0 <= k < len(own) or own[k][1].role != "condition":
+        return _case_named(factors, [own[said][1]], thing) if k < 0 else []
+    ci, c = own[k]
+    facts = [f for f in c.facts if not f.goal and f.subject != thing]
+    cases = [f for f in facts if f.kind not in ("location", "exists")]
+    branch: list[tuple[str, frozenset[str]]] = []
+    for f in facts:
+        if f.kind in ("location", "exists") and any(g.subject == f.subject for g in cases):
+            continue
+        if any(g.condition == f.condition and g.negated != f.negated and not g.goal for _, o in own for g in o.facts):
+            # (a sentence saying the condition's fact both ways names no one branch)
+            return []
+        for a in factors:
+            if a.subject == f.subject and (c.sentence, ci) in a.places and f.condition in {
+                    v.removeprefix("not ") for v in a.values.values()}:
+                value = f.condition.rsplit(", ", 1)[1][:-1] if f.kind == "attr" else f.key
+                # (the instruction before "unless ..." is given when its condition does not hold)
+                branch.append((a.id, _allowed(a, f.negated != (c.cue == "unless"), value)))
+                break
+    return _consistent(branch)
+
+
+def _case_named(factors: list[Factor], said: list[Clause], thing: str) -> list[tuple[str, frozenset[str]]]:
+    """The one value of a moved thing's kind that a case's words name ("Any other book goes into
+    the drawer": the kind's `other`; "Novels go on the shelf": `novel`), as the case's branch."""
+    words = {w for c in said for w in re.findall(r"[a-z]+", c.text.lower())}
+    moved = {f.subject for c in said for f in c.facts if f.goal and f.kind == "location"} | {
+        m for c in said for m in c.mentions}
+    for a in factors:
+        if a.kind == "attr" and a.subject in moved and a.subject != thing:
+            named = [v for v in a.values if {v, f"{v}s", f"{v}es"} & words]
+            if len(named) == 1:
+                return [(a.id, frozenset(named))]
+    return []
 
 
 def _indent_of(texts: list[str], line: int) -> int:
@@ -4561,6 +4685,28 @@ def _consequence_under(f: Factor, holding: bool) -> str:
     return said[0] if said else "leave it as it is"
 
 
+def _after_their_conditions(subjects: list[str], factors: list[Factor]) -> list[str]:
+    """The subjects in asking order, each after the subjects of the factors it is asked under: a
+    condition taken up on a branch ("Any other book goes into the drawer. Open it unless it is
+    open") may be said before the branch's own factor is read (a kind read from a list of cases),
+    and one asked before its branch's factor would be asked on every path. A circle of such
+    conditions keeps the order said."""
+    order = list(subjects)
+    subject_of = {f.id: f.subject for f in factors}
+    for _ in range(len(order)):
+        moved = False
+        for f in factors:
+            for dep, _allowed_values in f.context:
+                before = subject_of.get(dep)
+                if before is not None and before != f.subject and order.index(before) > order.index(f.subject):
+                    order.remove(f.subject)
+                    order.insert(order.index(before) + 1, f.subject)
+                    moved = True
+        if not moved:
+            break
+    return order
+
+
 def nest(factors: list[Factor]) -> dict[str, Any]:
     """A decision tree over one subtask's factors.
 
@@ -4568,7 +4714,7 @@ def nest(factors: list[Factor]) -> dict[str, Any]:
     an object is not where the task handles it (a location's `no`/`elsewhere` branch, or absent),
     its remaining factors are not asked, but other subjects' factors still are.
     """
-    subjects = list(dict.fromkeys(f.subject for f in factors))
+    subjects = _after_their_conditions(list(dict.fromkeys(f.subject for f in factors)), factors)
     ordered = sorted(factors, key=lambda f: (subjects.index(f.subject), _RANK[f.kind], f.order))
 
     # a factor asked only under another's value is not asked on a path that passed that other
