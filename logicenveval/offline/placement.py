@@ -107,15 +107,19 @@ STATIVE = frozenset({"lie", "lies", "lay", "lying", "sit", "sits", "sat", "sitti
 #: say where a thing is, as "located" does, never where it should go
 PLACED = frozenset({"located", "situated", "disposed", "positioned", "arranged", "mounted", "received",
                     "housed", "seated", "perched", "stationed"})
+#: participles of putting a thing away (the nineteenth session): "the apple is tucked in the
+#: fridge", "a spare key was stashed in the bowl", "the scarf is stowed in the basket". Like `kept`
+#: they say where the thing now is, after a plain "is" too, so they join `PASSIVE_STATIVE`
+STOWED = frozenset({"tucked", "stashed", "stowed", "hidden"})
 RESULT = frozenset({"left", "dropped", "put", "placed", "thrown", "set", "found", "knocked",
                     "kept", "stored", "dumped", "abandoned", "forgotten", "parked", "stuck", "present",
-                    "spread", "draped", "slung"}) | PLACED
+                    "spread", "draped", "slung"}) | PLACED | STOWED
 PASSIVE_STATIVE = frozenset({"found", "kept", "stored",
                              # "leave" is "let stay": "the bowl is left at the head of the table"
                              # is where it stays ("is to be left", "should be left": a norm)
                              "left",
                              "present",  # "a dirty mark is present on the floor"
-                             "spread", "draped", "slung"}) | PLACED  # "the throw is draped over the sofa"
+                             "spread", "draped", "slung"}) | PLACED | STOWED  # "the throw is draped over the sofa"
 #: verbs of covering and hanging after which "over" names the thing under, which holds it ("the
 #: blanket, spread over the bed", "a towel draped over the chair", "the coat hanging over the
 #: banister"): there "over" is "on" (elsewhere "over" is a particle: "knocked over", "fell over")
@@ -138,7 +142,9 @@ MOTION = frozenset({"go", "goes", "went", "belong", "belongs", "get", "gets", "c
 #: been left", "are both kept")
 ADVERBS = frozenset({"still", "already", "always", "usually", "normally", "often", "again", "also",
                      "just", "both", "all", "then", "now", "currently", "out", "over", "down", "up",
-                     "back", "there", "here", "too", "each", "mostly", "generally", "typically"})
+                     "back", "there", "here", "too", "each", "mostly", "generally", "typically",
+                     # "tucked away in the drawer", "has been put away in the cupboard"
+                     "away"})
 VERBS = BE | PERFECT | STATIVE | RESULT | KEEP_VERBS | HAVE_VERBS | MOTION
 #: modal and semi-modal words before a verb group that make it a norm or a goal, not a fact
 #: ("the shirt should be in the basket", "it needs to go on the desk", "is to be put away")
@@ -474,6 +480,8 @@ def _read_sentence(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Re
     # a condition or a doubt anywhere in the sentence governs what its instructions take for granted
     plain = not any(c.mood == "condition" or c.doubted for c in spans)
     for clause in spans:
+        if clause.mood == "statement" and _ended_past(words, clause.start, clause.end):
+            continue  # "the mug was on the counter until this morning": then, not now
         ms = [m for m in sent.mentions if clause.start <= m.start < clause.end]
         framed = _arrival_frame(words, clause.start, clause.end) if clause.mood == "condition" else None
         if framed is not None:  # "When you come in, the mug will be on the counter": what they will find
@@ -781,6 +789,33 @@ def _earlier_occasion(words: list[str], clause: Span) -> bool:
     return any(tuple(words[k:k + len(p)]) == p for p in EARLIER_OCCASION for k in range(len(words)))
 
 
+#: the nineteenth session's ended past: a past placement the sentence itself says has ended is
+#: no current one ("the mug was on the counter until this morning", "the rug was formerly kept in
+#: the hall", "the lamp sat on the desk yesterday, but Sam moved it"). Past forms of a verb of
+#: being or resting; adverbs of a former state; words that bound a past state; verbs (after "but")
+#: that undo it
+ENDED_PAST_VERBS = PAST_BE | frozenset({"had", "sat", "lay", "stood", "hung", "stayed", "remained", "lived"})
+FORMER = frozenset({"formerly", "previously", "originally"})
+BOUNDS = frozenset({"until", "till", "til"})
+UNDOING = frozenset({"moved", "took", "taken", "removed", "cleared", "shifted", "gone", "emptied", "tidied"})
+_UNDO_REACH = 4
+_UNDONE = frozenset({"it", "them", "they"})
+
+
+def _ended_past(words: list[str], lo: int, hi: int) -> bool:
+    """Whether the statement in words[lo:hi] tells of a past placement its sentence ends: a past
+    verb of being or resting (`ENDED_PAST_VERBS`) with a former-state adverb in it, a bound
+    ("until ...") in it or opening the next part, or "but" later in the sentence followed within a
+    few words by a verb that undoes it and "it"/"them" ("but Sam moved it", "but it's gone")."""
+    if not set(words[lo:hi]) & ENDED_PAST_VERBS:
+        return False
+    # (the clause ends before a bound's subordinate clause: "until" may be its first word)
+    if set(words[lo:hi]) & FORMER or set(words[lo:hi + 1]) & BOUNDS:
+        return True
+    return any(set(near) & UNDOING and set(near) & _UNDONE
+               for near in (words[k + 1:k + 1 + _UNDO_REACH] for k in range(lo, len(words)) if words[k] == "but"))
+
+
 #: prepositions that may go on an apposed place as its own modifier ("the desk by the window")
 _APPOSED_MODIFIERS = frozenset({"by", "near", "next", "beside", "under", "at"})
 
@@ -875,6 +910,8 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
     m = next((m for m in ms if m.start == k), None)
     if m is None and k > j + 1 and words[k - 1] in ARTICLES:
         m = _modified_holder(words, ms, k, hi)
+    elif m is None and k == j + 1:
+        m = _owned_holder(words, ms, k, hi)
     # a place the text names by a word no name of the task holds, said again after it
     unknown = m is None and k + 2 < len(words) and words[k].isalpha() and words[k] not in PREP_OF_PLACE | VERBS \
         and not any(t.start <= k < t.end for t in sent.mentions)
@@ -914,6 +951,16 @@ def _modified_holder(words: list[str], ms: list[Mention], k: int, hi: int) -> Me
         if m is not None:
             return m
     return None
+
+
+def _owned_holder(words: list[str], ms: list[Mention], k: int, hi: int) -> Mention | None:
+    """The holder after one word naming nothing with no article before it: a person's possessive,
+    whose "'s" `expand` has dropped ("on Sam's desk" reads "on sam desk", "in Grandma's wardrobe",
+    "under Dad's bed"), or a terse note's modifier ("in wooden box"). The word stands where "my"
+    would, so the place is the head after it; two such words are no place (`_modified_holder`
+    reads two only after an article)."""
+    m = _modified_holder(words, ms, k, hi)
+    return m if m is not None and m.start == k + 1 else None
 
 
 def _at_part(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[str, Mention] | None:
@@ -2203,6 +2250,25 @@ def _moved(words: list[str], start: int, clause: Span) -> bool:
         lemma in ACTIONS for lemma in getAllLemmas(words[j]).get("VERB", ())))
 
 
+#: verbs of wanting and imagining that take a thing and a place as one complement (the
+#: nineteenth session): "Sam wants the mug on the counter", "imagine the lamp on the desk", "I'd
+#: prefer the rug in the hall" say where it should be or might be, not where it is (`_wished`)
+WISHING = frozenset({"want", "wants", "wanted", "need", "needs", "needed", "imagine", "imagines", "imagined",
+                     "picture", "pictures", "prefer", "prefers", "preferred", "envisage", "envision"})
+
+
+def _wished(words: list[str], start: int, end: int, clause: Span) -> bool:
+    """The object at `start`, with its place ending at `end`, follows a verb of wanting or
+    imagining (`WISHING`): its place is a wish, no place the thing rests in. A state after the
+    place ("Sam wants the mug on the counter washed") makes the place the thing's own, a definite
+    noun phrase's, and the wish the state."""
+    j = start - 1
+    while j >= clause.start and (words[j] in ARTICLES or words[j] in STATE_WORDS or words[j] in COLOR_WORDS):
+        j -= 1
+    stated = end < clause.end and (words[end] in STATE_WORDS or re.fullmatch(r"[a-z]+ed", words[end]) is not None)
+    return j >= clause.start and words[j] in WISHING and not stated
+
+
 #: verbs of putting whose habitual present ("Tom leaves his keys in the bowl", "she always puts the
 #: mug on the desk") says where a thing tends to go, not where it is (`_habitually_put`)
 _PUTTING = frozenset({"leave", "put", "drop", "throw", "set", "place", "dump", "stick", "park", "stuff"})
@@ -2262,7 +2328,7 @@ def _resting(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, cat
         if cat is None or not cat.pickable or determiner(words, start) != "the" and not pointed:
             continue
         if _moved(words, start, clause) or clause.goal or _unfound(words, start, clause) \
-                or _habitually_put(words, start, clause):
+                or _habitually_put(words, start, clause) or _wished(words, start, b.end, clause):
             continue
         described = clause.mood == "condition" and (_described_subject(words, a.start, b.end, clause) or pointed)
         if clause.mood == "condition" and not described:
@@ -2401,8 +2467,9 @@ def _fallback(sent: _Sentence, before: _Before, lex: Lexicon, catalog: Catalog, 
         if clause.mood == "condition" and clause.end < len(words) and words[clause.end] == "?":
             for kind, item, prep, holder in _asked_activity(sent, clause):
                 _put_new(reading, kind, catalog, lex, item, holder, prep)
-        if clause.mood != "statement" or _earlier_occasion(words, clause):
-            continue  # (an anecdote of an earlier occasion places nothing now)
+        if clause.mood != "statement" or _earlier_occasion(words, clause) \
+                or _ended_past(words, clause.start, clause.end):
+            continue  # (an anecdote of an earlier occasion, a state since ended, places nothing now)
         for a, b in _parts(words, clause):
             ms = [m for m in sent.mentions if a <= m.start and m.end <= b] + _glossed_place(sent, a, b)
             lead = next((w for w in words[a:b] if w not in SUBJECT_LEADS), "")
