@@ -156,3 +156,36 @@ DESCRIBED = [
 def test_a_definite_thing_with_its_place_is_still_presumed_there(text: str, item: str, holder: str,
                                                                 fact: str) -> None:
     assert fact in _read(text, item, holder)
+
+
+# --- counts, a place before its list after a dash, a checklist's boxes --------------------------
+
+COUNTED_READ = [
+    ("Packing list: 1 x mug - on the counter.", "mug", "counter", "on(mug, counter)"),
+    ("Shipping manifest, crate 4: 2x books - on the coffee table, 1 candle - on the dresser.", "book",
+     "coffee_table", "on(book, coffee_table)"),
+    ("Inventory of the flat. 3 socks in the drawer.", "sock", "drawer", "inside(sock, drawer)"),
+    ("On the counter - 1 mug.", "mug", "counter", "on(mug, counter)"),
+    ("In the drawer - two socks, clean.", "sock", "drawer", "inside(sock, drawer)"),
+    ("Checklist:\n[x] my phone on the dining table\n[x] lights off", "phone", "table", "on(phone, table)"),
+    ("Before we left:\n\u2713 candle on the dresser\n\u2713 windows shut", "candle", "dresser",
+     "on(candle, dresser)"),
+]
+
+
+@pytest.mark.parametrize(("text", "item", "holder", "fact"), COUNTED_READ)
+def test_counted_items_and_list_lines_state_a_place(text: str, item: str, holder: str, fact: str) -> None:
+    assert fact in _read(text, item, holder)
+
+
+COUNTED_NEAR_MISSES = [
+    ("Mugs on the counter!", "mug", "counter"),  # a heading about a class: no count
+    ("To do:\n[ ] put the mug on the counter", "mug", "counter"),
+    ("On the counter - if there is a mug, wash it.", "mug", "counter"),
+    ("Packing list: 1 x mug - on the counter or in the car?", "mug", "counter"),
+]
+
+
+@pytest.mark.parametrize(("text", "item", "holder"), COUNTED_NEAR_MISSES)
+def test_uncounted_classes_tasks_and_questions_place_nothing(text: str, item: str, holder: str) -> None:
+    assert not any(f"({item}, {holder})" in f for f in _read(text, item, holder))

@@ -317,9 +317,15 @@ class _Reading:
 _THEN_ARROW = re.compile(rf"(?<![?:!])\s*{ARROW_MARK}\s*")
 
 
+#: a checklist's box at a line's start, ticked or not ("[x] mug on the counter", "[ ] lights off",
+#: "✓ keys in the bowl"): the nineteenth session reads it as the item's boundary, as a
+#: semicolon, so the line is a list item of its own and not the tail of the line before
+_TICK_BOX = re.compile(r"^[ \t]*(?:\[[ \t]*[xX\u2713\u2714]?[ \t]*\]|[\u2713\u2714\u2611\u2610])[ \t]*", re.M)
+
+
 def _sentences(text: str, lex: Lexicon) -> list[_Sentence]:
     out = []
-    for part in split_sentences(expand(text), full_stops_only=True):
+    for part in split_sentences(expand(_TICK_BOX.sub("; ", text)), full_stops_only=True):
         low = _THEN_ARROW.sub(": ", part.lower())
         toks = [_Token(m.group(0), singular(m.group(0)) if m.group(0)[0].isalnum() else m.group(0),
                        m.start(), m.end()) for m in _TOKEN.finditer(low)]
@@ -1096,14 +1102,26 @@ def _contain(catalog: Catalog, lex: Lexicon, item: str, holder: str, prep: str) 
 # --- the forms -------------------------------------------------------------------------------
 
 
+def _heading_mark(words: list[str]) -> int | None:
+    """Where a heading ends: its colon, or (the nineteenth session) a dash after a heading that
+    opens with a preposition of place, as inventories and notes write a place before its list
+    ("On the counter - 1 mug", "In the top drawer – socks, a belt"); a dash after any other
+    opening is a label's or an aside's (`_label`)."""
+    if ":" in words:
+        return words.index(":")
+    if words[:1] and words[0] in AT:
+        return next((k for k, w in enumerate(words) if w in _LABEL_MARKS), None)
+    return None
+
+
 def _heading(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Reading) -> int:
     """"Bedroom: the table lamp, ...", "Kitchen: two pet bowls", "On the floor: a dirty mark, and
     possibly a book", "In the room: a sofa; a table": a heading naming a room or a place before a
     colon, and the list after it. Returns where the body starts (0 without a heading)."""
     words = sent.words
-    if ":" not in words:
+    colon = _heading_mark(words)
+    if colon is None:
         return 0
-    colon = words.index(":")
     head = [m for m in sent.mentions if m.end <= colon]
     if len(head) != 1 or head[0].kind == "role" and len(head[0].roles) != 1:
         return 0
@@ -1557,7 +1575,7 @@ def _fragment(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         covered |= {k for a, b in _segments(words, clause.start, j) if b < j and any(foreign(w) for w in words[a:b])
                     for k in range(a, b)}
     covered |= _premodifiers(words, clause.start, min(m.start for m in subjects))
-    if not all(k in covered or w in LIST_GLUE or w in COLOR_WORDS or w in STATE_WORDS
+    if not all(k in covered or w in LIST_GLUE or w in COLOR_WORDS or w in STATE_WORDS or _quantity(words, k)
                for k, w in enumerate(words[lo:j], lo) if lo == clause.start or k < clause.start - 1):
         return
     for m in subjects:
@@ -1565,6 +1583,20 @@ def _fragment(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
             continue  # "Toys on the floor!": a heading about a class, no statement of where one is
         for role in _roles(m, sent):
             _put(reading, "settled", catalog, lex, role, found[1], found[0])
+
+
+#: the multiplication sign of a manifest's or packing list's count ("2 x mugs"; a "×" is no token)
+_TIMES = frozenset({"x"})
+
+
+def _quantity(words: list[str], k: int) -> bool:
+    """Whether the word at `k` is a count before a list item's thing (the nineteenth session): a
+    number ("1 mug", "2x mugs") or the sign after or before one ("1 x mug", "x2"). Manifests,
+    packing lists and inventories count the thing where prose says "a" or "two"."""
+    w = words[k]
+    if re.fullmatch(r"\d+x?|x\d+", w):
+        return True
+    return w in _TIMES and (k > 0 and words[k - 1].isdigit() or k + 1 < len(words) and words[k + 1].isdigit())
 
 
 #: how many words a verbless statement's subject may carry before its name that the names do not
@@ -1944,12 +1976,13 @@ def _modifies(gap: list[str]) -> bool:
 
 
 def _generic(sent: _Sentence, m: Mention) -> bool:
-    """A bare plural ("novels", "other books"): a kind of thing, not the things of the scene."""
+    """A bare plural ("novels", "other books"): a kind of thing, not the things of the scene; a
+    counted plural ("2 mugs", "3 x mugs") is the scene's, as "two mugs" is."""
     last = sent.toks[m.end - 1]
     j = m.start - 1
     while j >= 0 and (sent.words[j] in COLOR_WORDS or sent.words[j] in STATE_WORDS or sent.words[j] in ("other",)):
         j -= 1
-    return last.word != last.lemma and not (j >= 0 and sent.words[j] in ARTICLES)
+    return last.word != last.lemma and not (j >= 0 and (sent.words[j] in ARTICLES or _quantity(sent.words, j)))
 
 
 def _existential(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
