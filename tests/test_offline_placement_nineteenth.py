@@ -189,3 +189,35 @@ COUNTED_NEAR_MISSES = [
 @pytest.mark.parametrize(("text", "item", "holder"), COUNTED_NEAR_MISSES)
 def test_uncounted_classes_tasks_and_questions_place_nothing(text: str, item: str, holder: str) -> None:
     assert not any(f"({item}, {holder})" in f for f in _read(text, item, holder))
+
+
+# --- a result participle after a verbless noun phrase and a comma (`_result_participle`) ---------
+
+ADJUNCT_READ = [
+    ("The mug, left on the counter by Sam.", "mug", "counter", "on(mug, counter)"),
+    ("Hall log, Tuesday. My scarf, tucked in the basket, is still damp.", "scarf", "basket",
+     "inside(scarf, basket)"),
+    ("Exhibit 12. The candle, placed on the dresser by the maid in 1890.", "candle", "dresser",
+     "on(candle, dresser)"),
+]
+
+
+@pytest.mark.parametrize(("text", "item", "holder", "fact"), ADJUNCT_READ)
+def test_a_result_participle_after_a_comma_states_a_place(text: str, item: str, holder: str, fact: str) -> None:
+    assert fact in _read(text, item, holder)
+
+
+ADJUNCT_NEAR_MISSES = [
+    ("If the mug, left on the counter, is dirty, wash it.", "mug", "counter"),
+    ("Is the scarf, tucked in the basket, dry?", "scarf", "basket"),
+    ("The candle, which should be placed on the dresser, is new.", "candle", "dresser"),
+]
+
+
+@pytest.mark.parametrize(("text", "item", "holder"), ADJUNCT_NEAR_MISSES)
+def test_a_participle_in_a_condition_question_or_norm_places_nothing(text: str, item: str, holder: str) -> None:
+    assert not any(f"({item}, {holder})" in f for f in _read(text, item, holder))
+
+
+def test_an_instruction_after_a_label_comma_places_nothing() -> None:
+    assert not any("(mug, counter)" in f for f in _read("The mug, put it on the counter later.", "mug", "counter"))

@@ -1332,7 +1332,8 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
                 # (a speaker's report of their own act is presumed: a later "if it is still on
                 # the floor" asks again, `_reported`)
                 kind = kind if clause.mood == "statement" and not reported else "presumed"
-            elif clause.mood == "statement" and words[who:who + 1] == [","] and _resting_participle(group):
+            elif clause.mood == "statement" and words[who:who + 1] == [","] and (
+                    _resting_participle(group) or _result_participle(group) and not set(words[lo:who]) & (BE | PERFECT)):
                 subjects = _adjunct_subject(sent, ms, lo, who)  # "the telly's on, sitting on the stand"
             else:
                 continue
@@ -1698,6 +1699,16 @@ def _resting_participle(group: list[str]) -> bool:
     """A bare participle of resting or covering ("sitting", "lying up there", "spread")."""
     verbs = [w for w in group if w not in ADVERBS]
     return len(verbs) == 1 and (verbs[0] in STATIVE and verbs[0].endswith("ing") or verbs[0] in COVERING)
+
+
+def _result_participle(group: list[str]) -> bool:
+    """A bare participle of a result (`RESULT`: "left", "kept", "tucked", "placed", "dropped"),
+    after a verbless noun phrase and a comma (the nineteenth session): "The mug, left on the
+    counter by Sam.", "My scarf, tucked in the basket, is still damp", a museum label's "the
+    candle, placed on the dresser by the maid" say the thing is there, as "sitting" does after a
+    comma (an "it" after "put" is an instruction's object, and no place follows the verb)."""
+    verbs = [w for w in group if w not in ADVERBS]
+    return len(verbs) == 1 and verbs[0] in RESULT
 
 
 def _adjunct_subject(sent: _Sentence, ms: list[Mention], lo: int, comma: int) -> list[Mention]:
