@@ -113,15 +113,19 @@ PLACED = frozenset({"located", "situated", "disposed", "positioned", "arranged",
 #: `PASSIVE_STATIVE`: a present one is a condition's ("where a cup is noted on the desk, wash it")
 OBSERVED = frozenset({"noted", "observed", "recorded", "logged", "reported", "sighted", "photographed",
                       "spotted", "noticed"})
+#: participles of putting a thing away (the nineteenth session): "the apple is tucked in the
+#: fridge", "a spare key was stashed in the bowl", "the scarf is stowed in the basket". Like `kept`
+#: they say where the thing now is, after a plain "is" too, so they join `PASSIVE_STATIVE`
+STOWED = frozenset({"tucked", "stashed", "stowed", "hidden"})
 RESULT = frozenset({"left", "dropped", "put", "placed", "thrown", "set", "found", "knocked",
                     "kept", "stored", "dumped", "abandoned", "forgotten", "parked", "stuck", "present",
-                    "spread", "draped", "slung"}) | PLACED | OBSERVED
+                    "spread", "draped", "slung"}) | PLACED | OBSERVED | STOWED
 PASSIVE_STATIVE = frozenset({"found", "kept", "stored",
                              # "leave" is "let stay": "the bowl is left at the head of the table"
                              # is where it stays ("is to be left", "should be left": a norm)
                              "left",
                              "present",  # "a dirty mark is present on the floor"
-                             "spread", "draped", "slung"}) | PLACED  # "the throw is draped over the sofa"
+                             "spread", "draped", "slung"}) | PLACED | STOWED  # "the throw is draped over the sofa"
 #: verbs of covering and hanging after which "over" names the thing under, which holds it ("the
 #: blanket, spread over the bed", "a towel draped over the chair", "the coat hanging over the
 #: banister"): there "over" is "on" (elsewhere "over" is a particle: "knocked over", "fell over")
@@ -144,7 +148,9 @@ MOTION = frozenset({"go", "goes", "went", "belong", "belongs", "get", "gets", "c
 #: been left", "are both kept")
 ADVERBS = frozenset({"still", "already", "always", "usually", "normally", "often", "again", "also",
                      "just", "both", "all", "then", "now", "currently", "out", "over", "down", "up",
-                     "back", "there", "here", "too", "each", "mostly", "generally", "typically"})
+                     "back", "there", "here", "too", "each", "mostly", "generally", "typically",
+                     # "tucked away in the drawer", "has been put away in the cupboard"
+                     "away"})
 VERBS = BE | PERFECT | STATIVE | RESULT | KEEP_VERBS | HAVE_VERBS | MOTION
 #: modal and semi-modal words before a verb group that make it a norm or a goal, not a fact
 #: ("the shirt should be in the basket", "it needs to go on the desk", "is to be put away")
@@ -317,9 +323,15 @@ class _Reading:
 _THEN_ARROW = re.compile(rf"(?<![?:!])\s*{ARROW_MARK}\s*")
 
 
+#: a checklist's box at a line's start, ticked or not ("[x] mug on the counter", "[ ] lights off",
+#: "✓ keys in the bowl"): the nineteenth session reads it as the item's boundary, as a
+#: semicolon, so the line is a list item of its own and not the tail of the line before
+_TICK_BOX = re.compile(r"^[ \t]*(?:\[[ \t]*[xX\u2713\u2714]?[ \t]*\]|[\u2713\u2714\u2611\u2610])[ \t]*", re.M)
+
+
 def _sentences(text: str, lex: Lexicon) -> list[_Sentence]:
     out = []
-    for part in split_sentences(expand(text), full_stops_only=True):
+    for part in split_sentences(expand(_TICK_BOX.sub("; ", text)), full_stops_only=True):
         low = _THEN_ARROW.sub(": ", part.lower())
         toks = [_Token(m.group(0), singular(m.group(0)) if m.group(0)[0].isalnum() else m.group(0),
                        m.start(), m.end()) for m in _TOKEN.finditer(low)]
@@ -480,6 +492,8 @@ def _read_sentence(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Re
     # a condition or a doubt anywhere in the sentence governs what its instructions take for granted
     plain = not any(c.mood == "condition" or c.doubted for c in spans)
     for clause in spans:
+        if clause.mood == "statement" and _ended_past(words, clause.start, clause.end):
+            continue  # "the mug was on the counter until this morning": then, not now
         ms = [m for m in sent.mentions if clause.start <= m.start < clause.end]
         framed = _arrival_frame(words, clause.start, clause.end) if clause.mood == "condition" else None
         if framed is not None:  # "When you come in, the mug will be on the counter": what they will find
@@ -787,6 +801,33 @@ def _earlier_occasion(words: list[str], clause: Span) -> bool:
     return any(tuple(words[k:k + len(p)]) == p for p in EARLIER_OCCASION for k in range(len(words)))
 
 
+#: the nineteenth session's ended past: a past placement the sentence itself says has ended is
+#: no current one ("the mug was on the counter until this morning", "the rug was formerly kept in
+#: the hall", "the lamp sat on the desk yesterday, but Sam moved it"). Past forms of a verb of
+#: being or resting; adverbs of a former state; words that bound a past state; verbs (after "but")
+#: that undo it
+ENDED_PAST_VERBS = PAST_BE | frozenset({"had", "sat", "lay", "stood", "hung", "stayed", "remained", "lived"})
+FORMER = frozenset({"formerly", "previously", "originally"})
+BOUNDS = frozenset({"until", "till", "til"})
+UNDOING = frozenset({"moved", "took", "taken", "removed", "cleared", "shifted", "gone", "emptied", "tidied"})
+_UNDO_REACH = 4
+_UNDONE = frozenset({"it", "them", "they"})
+
+
+def _ended_past(words: list[str], lo: int, hi: int) -> bool:
+    """Whether the statement in words[lo:hi] tells of a past placement its sentence ends: a past
+    verb of being or resting (`ENDED_PAST_VERBS`) with a former-state adverb in it, a bound
+    ("until ...") in it or opening the next part, or "but" later in the sentence followed within a
+    few words by a verb that undoes it and "it"/"them" ("but Sam moved it", "but it's gone")."""
+    if not set(words[lo:hi]) & ENDED_PAST_VERBS:
+        return False
+    # (the clause ends before a bound's subordinate clause: "until" may be its first word)
+    if set(words[lo:hi]) & FORMER or set(words[lo:hi + 1]) & BOUNDS:
+        return True
+    return any(set(near) & UNDOING and set(near) & _UNDONE
+               for near in (words[k + 1:k + 1 + _UNDO_REACH] for k in range(lo, len(words)) if words[k] == "but"))
+
+
 #: prepositions that may go on an apposed place as its own modifier ("the desk by the window")
 _APPOSED_MODIFIERS = frozenset({"by", "near", "next", "beside", "under", "at"})
 
@@ -881,6 +922,8 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
     m = next((m for m in ms if m.start == k), None)
     if m is None and k > j + 1 and words[k - 1] in ARTICLES:
         m = _modified_holder(words, ms, k, hi)
+    elif m is None and k == j + 1:
+        m = _owned_holder(words, ms, k, hi)
     # a place the text names by a word no name of the task holds, said again after it
     unknown = m is None and k + 2 < len(words) and words[k].isalpha() and words[k] not in PREP_OF_PLACE | VERBS \
         and not any(t.start <= k < t.end for t in sent.mentions)
@@ -920,6 +963,16 @@ def _modified_holder(words: list[str], ms: list[Mention], k: int, hi: int) -> Me
         if m is not None:
             return m
     return None
+
+
+def _owned_holder(words: list[str], ms: list[Mention], k: int, hi: int) -> Mention | None:
+    """The holder after one word naming nothing with no article before it: a person's possessive,
+    whose "'s" `expand` has dropped ("on Sam's desk" reads "on sam desk", "in Grandma's wardrobe",
+    "under Dad's bed"), or a terse note's modifier ("in wooden box"). The word stands where "my"
+    would, so the place is the head after it; two such words are no place (`_modified_holder`
+    reads two only after an article)."""
+    m = _modified_holder(words, ms, k, hi)
+    return m if m is not None and m.start == k + 1 else None
 
 
 def _at_part(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[str, Mention] | None:
@@ -1055,14 +1108,26 @@ def _contain(catalog: Catalog, lex: Lexicon, item: str, holder: str, prep: str) 
 # --- the forms -------------------------------------------------------------------------------
 
 
+def _heading_mark(words: list[str]) -> int | None:
+    """Where a heading ends: its colon, or (the nineteenth session) a dash after a heading that
+    opens with a preposition of place, as inventories and notes write a place before its list
+    ("On the counter - 1 mug", "In the top drawer – socks, a belt"); a dash after any other
+    opening is a label's or an aside's (`_label`)."""
+    if ":" in words:
+        return words.index(":")
+    if words[:1] and words[0] in AT:
+        return next((k for k, w in enumerate(words) if w in _LABEL_MARKS), None)
+    return None
+
+
 def _heading(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Reading) -> int:
     """"Bedroom: the table lamp, ...", "Kitchen: two pet bowls", "On the floor: a dirty mark, and
     possibly a book", "In the room: a sofa; a table": a heading naming a room or a place before a
     colon, and the list after it. Returns where the body starts (0 without a heading)."""
     words = sent.words
-    if ":" not in words:
+    colon = _heading_mark(words)
+    if colon is None:
         return 0
-    colon = words.index(":")
     head = [m for m in sent.mentions if m.end <= colon]
     if len(head) != 1 or head[0].kind == "role" and len(head[0].roles) != 1:
         return 0
@@ -1275,7 +1340,8 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
                 # (a speaker's report of their own act is presumed: a later "if it is still on
                 # the floor" asks again, `_reported`)
                 kind = kind if clause.mood == "statement" and not reported else "presumed"
-            elif clause.mood == "statement" and words[who:who + 1] == [","] and _resting_participle(group):
+            elif clause.mood == "statement" and words[who:who + 1] == [","] and (
+                    _resting_participle(group) or _result_participle(group) and not set(words[lo:who]) & (BE | PERFECT)):
                 subjects = _adjunct_subject(sent, ms, lo, who)  # "the telly's on, sitting on the stand"
             else:
                 continue
@@ -1544,7 +1610,7 @@ def _fragment(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         covered |= {k for a, b in _segments(words, clause.start, j) if b < j and any(foreign(w) for w in words[a:b])
                     for k in range(a, b)}
     covered |= _premodifiers(words, clause.start, min(m.start for m in subjects))
-    if not all(k in covered or w in LIST_GLUE or w in COLOR_WORDS or w in STATE_WORDS
+    if not all(k in covered or w in LIST_GLUE or w in COLOR_WORDS or w in STATE_WORDS or _quantity(words, k)
                for k, w in enumerate(words[lo:j], lo) if lo == clause.start or k < clause.start - 1):
         return
     for m in subjects:
@@ -1552,6 +1618,20 @@ def _fragment(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
             continue  # "Toys on the floor!": a heading about a class, no statement of where one is
         for role in _roles(m, sent):
             _put(reading, "settled", catalog, lex, role, found[1], found[0])
+
+
+#: the multiplication sign of a manifest's or packing list's count ("2 x mugs"; a "×" is no token)
+_TIMES = frozenset({"x"})
+
+
+def _quantity(words: list[str], k: int) -> bool:
+    """Whether the word at `k` is a count before a list item's thing (the nineteenth session): a
+    number ("1 mug", "2x mugs") or the sign after or before one ("1 x mug", "x2"). Manifests,
+    packing lists and inventories count the thing where prose says "a" or "two"."""
+    w = words[k]
+    if re.fullmatch(r"\d+x?|x\d+", w):
+        return True
+    return w in _TIMES and (k > 0 and words[k - 1].isdigit() or k + 1 < len(words) and words[k + 1].isdigit())
 
 
 #: how many words a verbless statement's subject may carry before its name that the names do not
@@ -1653,6 +1733,16 @@ def _resting_participle(group: list[str]) -> bool:
     """A bare participle of resting or covering ("sitting", "lying up there", "spread")."""
     verbs = [w for w in group if w not in ADVERBS]
     return len(verbs) == 1 and (verbs[0] in STATIVE and verbs[0].endswith("ing") or verbs[0] in COVERING)
+
+
+def _result_participle(group: list[str]) -> bool:
+    """A bare participle of a result (`RESULT`: "left", "kept", "tucked", "placed", "dropped"),
+    after a verbless noun phrase and a comma (the nineteenth session): "The mug, left on the
+    counter by Sam.", "My scarf, tucked in the basket, is still damp", a museum label's "the
+    candle, placed on the dresser by the maid" say the thing is there, as "sitting" does after a
+    comma (an "it" after "put" is an instruction's object, and no place follows the verb)."""
+    verbs = [w for w in group if w not in ADVERBS]
+    return len(verbs) == 1 and verbs[0] in RESULT
 
 
 def _adjunct_subject(sent: _Sentence, ms: list[Mention], lo: int, comma: int) -> list[Mention]:
@@ -1931,12 +2021,13 @@ def _modifies(gap: list[str]) -> bool:
 
 
 def _generic(sent: _Sentence, m: Mention) -> bool:
-    """A bare plural ("novels", "other books"): a kind of thing, not the things of the scene."""
+    """A bare plural ("novels", "other books"): a kind of thing, not the things of the scene; a
+    counted plural ("2 mugs", "3 x mugs") is the scene's, as "two mugs" is."""
     last = sent.toks[m.end - 1]
     j = m.start - 1
     while j >= 0 and (sent.words[j] in COLOR_WORDS or sent.words[j] in STATE_WORDS or sent.words[j] in ("other",)):
         j -= 1
-    return last.word != last.lemma and not (j >= 0 and sent.words[j] in ARTICLES)
+    return last.word != last.lemma and not (j >= 0 and (sent.words[j] in ARTICLES or _quantity(sent.words, j)))
 
 
 def _existential(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
@@ -2237,6 +2328,25 @@ def _moved(words: list[str], start: int, clause: Span) -> bool:
         lemma in ACTIONS for lemma in getAllLemmas(words[j]).get("VERB", ())))
 
 
+#: verbs of wanting and imagining that take a thing and a place as one complement (the
+#: nineteenth session): "Sam wants the mug on the counter", "imagine the lamp on the desk", "I'd
+#: prefer the rug in the hall" say where it should be or might be, not where it is (`_wished`)
+WISHING = frozenset({"want", "wants", "wanted", "need", "needs", "needed", "imagine", "imagines", "imagined",
+                     "picture", "pictures", "prefer", "prefers", "preferred", "envisage", "envision"})
+
+
+def _wished(words: list[str], start: int, end: int, clause: Span) -> bool:
+    """The object at `start`, with its place ending at `end`, follows a verb of wanting or
+    imagining (`WISHING`): its place is a wish, no place the thing rests in. A state after the
+    place ("Sam wants the mug on the counter washed") makes the place the thing's own, a definite
+    noun phrase's, and the wish the state."""
+    j = start - 1
+    while j >= clause.start and (words[j] in ARTICLES or words[j] in STATE_WORDS or words[j] in COLOR_WORDS):
+        j -= 1
+    stated = end < clause.end and (words[end] in STATE_WORDS or re.fullmatch(r"[a-z]+ed", words[end]) is not None)
+    return j >= clause.start and words[j] in WISHING and not stated
+
+
 #: verbs of putting whose habitual present ("Tom leaves his keys in the bowl", "she always puts the
 #: mug on the desk") says where a thing tends to go, not where it is (`_habitually_put`)
 _PUTTING = frozenset({"leave", "put", "drop", "throw", "set", "place", "dump", "stick", "park", "stuff"})
@@ -2296,7 +2406,7 @@ def _resting(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, cat
         if cat is None or not cat.pickable or determiner(words, start) != "the" and not pointed:
             continue
         if _moved(words, start, clause) or clause.goal or _unfound(words, start, clause) \
-                or _habitually_put(words, start, clause):
+                or _habitually_put(words, start, clause) or _wished(words, start, b.end, clause):
             continue
         described = clause.mood == "condition" and (_described_subject(words, a.start, b.end, clause) or pointed)
         if clause.mood == "condition" and not described:
@@ -2435,8 +2545,9 @@ def _fallback(sent: _Sentence, before: _Before, lex: Lexicon, catalog: Catalog, 
         if clause.mood == "condition" and clause.end < len(words) and words[clause.end] == "?":
             for kind, item, prep, holder in _asked_activity(sent, clause):
                 _put_new(reading, kind, catalog, lex, item, holder, prep)
-        if clause.mood != "statement" or _earlier_occasion(words, clause):
-            continue  # (an anecdote of an earlier occasion places nothing now)
+        if clause.mood != "statement" or _earlier_occasion(words, clause) \
+                or _ended_past(words, clause.start, clause.end):
+            continue  # (an anecdote of an earlier occasion, a state since ended, places nothing now)
         for a, b in _parts(words, clause):
             ms = [m for m in sent.mentions if a <= m.start and m.end <= b] + _glossed_place(sent, a, b)
             lead = next((w for w in words[a:b] if w not in SUBJECT_LEADS), "")
