@@ -58,7 +58,7 @@ from logicenveval.offline.sentences import (
     unquote,
 )
 from logicenveval.offline.vocabulary import reading_catalog
-from logicenveval.offline.wordnet import contents_names, is_wordnet_name
+from logicenveval.offline.wordnet import contents_names, is_wordnet_name, room_words
 from logicenveval.scene.compat import can_hold
 
 
@@ -151,6 +151,10 @@ _RUN_OPENERS = frozenset({"a", "an", "any", "every", "each"})
 #: the red box")
 _GENERIC_ONE = frozenset({"a", "an", "every", "each"})
 _RUN = 4
+#: the prepositions before which a room word that also names its fixture (WordNet's room sense of
+#: the toilet: "lavatory", "washroom", "loo"; `offline.wordnet.room_words`) is the room: a place
+#: something is in, goes into or to, or comes from ("in the lavatory", "go to the loo")
+ROOM_PLACE_LINKS = frozenset({"in", "into", "inside", "to", "from", "at", "through"})
 #: words whose sense in a regional variety of English is another catalog kind than the one they
 #: name elsewhere, with the words that mark a text as written in that variety (each found in
 #: that variety only): (marks, {word: kind}). Dictionary senses: in Australian and New Zealand
@@ -488,7 +492,20 @@ class _Reader:
                       for n in range(min(self.longest, len(words) - i, stretch), 0, -1)
                       if tuple(words[i:i + n]) in self.phrases), (1, None))
         closed = self.closed_match(i, stretch) or self.vessel_of(i, stretch) or self.contents_vessel(i, stretch)
-        return closed if closed is not None and closed[0] > found[0] else found
+        found = closed if closed is not None and closed[0] > found[0] else found
+        return (found[0], None) if found[1] is not None and self.room_as_place(i, found[0]) else found
+
+    def room_as_place(self, i: int, n: int) -> bool:
+        """Whether the `n` words at `i` are a room word of a fixture's (`ROOM_PLACE_LINKS`'s
+        note: "the lavatory", "the washroom") said as the place something is in or goes to ("the
+        soap is in the lavatory", "go to the loo"): the room, no thing; "the lav is blocked",
+        "clean the washroom's lavatory" and "sat on the loo" name the fixture."""
+        if " ".join(self.text.words[i:i + n]) not in room_words():
+            return False
+        k = i - 1
+        while k >= 0 and self.text.words[k] in _DETERMINERS | _POSSESSIVES:
+            k -= 1
+        return k >= 0 and self.text.words[k] in ROOM_PLACE_LINKS
 
     def vessel_of(self, i: int, stretch: int) -> tuple[int, str] | None:
         """(length, category) of "<vessel> of <contents>" at word `i` when "<contents> <vessel>" is
@@ -1301,7 +1318,7 @@ class _Reader:
         return n, category
 
     def named_holder(self, i: int, n: int, category: str) -> str | None:
-        """The kind named "<`category`'s own name> <head>" when the name of `category` at word `i`
+        """The kind named "<a name of `category`> <head>" when the name of `category` at word `i`
         (`n` words) is followed at once by a one-word head of other kinds: a modifier naming a
         kind by another of its names ("boot", "sneaker": a shoe; "brolly": an umbrella; "couch":
         a sofa) names the holder or companion of that kind ("the boot rack", "the sneaker shelf":
@@ -1312,10 +1329,13 @@ class _Reader:
         j = i + n
         if j >= len(words) or self.text.gaps[j].strip() or self.match(j)[0] > 1:
             return None
-        head, mine = words[j], words_of(category)
+        head = words[j]
+        # the compound may be built from any name of the modifier's kind, its own first ("the
+        # plate rack": a dish rack, "dish" a name of the plate; "the tub mat": a bath mat)
+        mine = [words_of(text) for text in (category, *_own(self.catalog.categories[category]))]
         kinds = set(self.heads.get(head, []))
-        return next((kind for kind in sorted(kinds) if kind != category
-                     and any(words_of(text) == (*mine, head)
+        return next((kind for name in mine for kind in sorted(kinds) if kind != category
+                     and any(words_of(text) == (*name, head)
                              for text in (kind, *_own(self.catalog.categories[kind])))), None)
 
     def modifies_other(self, i: int, n: int) -> bool:
