@@ -155,6 +155,14 @@ _RUN = 4
 #: the toilet: "lavatory", "washroom", "loo"; `offline.wordnet.room_words`) is the room: a place
 #: something is in, goes into or to, or comes from ("in the lavatory", "go to the loo")
 ROOM_PLACE_LINKS = frozenset({"in", "into", "inside", "to", "from", "at", "through"})
+#: head nouns a speaker puts in place of a thing's name they do not reach for ("the drying thing",
+#: "the ironing whatsit"): after the -ing form that opens one kind's two-word name they stand for
+#: that name's head (`_Reader.placeholder`)
+PLACEHOLDER_HEADS = frozenset({"thing", "thingy", "thingie", "whatsit", "gadget", "contraption", "doodah",
+                               "thingamajig", "thingummy"})
+#: what follows "the <word> thing" when it is a matter, not a thing ("the drying thing is that it
+#: takes a week", "the ironing thing about Sundays")
+_MATTER_AFTER = frozenset({"about", "that", "is", "was", "with"})
 #: words whose sense in a regional variety of English is another catalog kind than the one they
 #: name elsewhere, with the words that mark a text as written in that variety (each found in
 #: that variety only): (marks, {word: kind}). Dictionary senses: in Australian and New Zealand
@@ -390,6 +398,24 @@ def _phrase_tables(catalog: Catalog) -> tuple[dict[tuple[str, ...], str], dict[s
 
 
 
+@per_catalog
+def _use_kinds(catalog: Catalog) -> dict[str, set[str]]:
+    """First word -> the kinds whose name (the catalog's own, of two words) it opens, for a verb's
+    -ing form that is no name of its own: the use the name says ("drying": the drying rack;
+    "ironing": the ironing board). An adjective ("the easy thing") or a noun ("the room thing")
+    before a placeholder says no use; a synonym's participle often says how the thing is, not
+    what it is for ("floating shelf", "standing lamp": "the floating thing" is no shelf), so only
+    the kind's own name is taken.
+    Built once per catalog; callers only read it."""
+    phrases = _phrase_tables(catalog)[0]
+    out: dict[str, set[str]] = {}
+    for name in catalog.categories:
+        phrase = words_of(name)
+        if len(phrase) == 2 and (phrase[0],) not in phrases and gerund_of(phrase[0]):
+            out.setdefault(phrase[0], set()).add(name)
+    return out
+
+
 #: the determiners that open a phrase renaming the thing just named (`_Reader.appositive`): "the"
 #: after a comma or a bracket, a possessive too between dashes
 _RENAMING_DETERMINERS = frozenset({"the", "my", "your", "our", "his", "her", "their"})
@@ -493,7 +519,24 @@ class _Reader:
                       if tuple(words[i:i + n]) in self.phrases), (1, None))
         closed = self.closed_match(i, stretch) or self.vessel_of(i, stretch) or self.contents_vessel(i, stretch)
         found = closed if closed is not None and closed[0] > found[0] else found
-        return (found[0], None) if found[1] is not None and self.room_as_place(i, found[0]) else found
+        if found[1] is None:
+            return self.placeholder(i, stretch) or found
+        return (found[0], None) if self.room_as_place(i, found[0]) else found
+
+    def placeholder(self, i: int, stretch: int) -> tuple[int, str] | None:
+        """(2, kind) when word `i`, naming no kind itself, opens the two-word own name of one kind
+        only and a placeholder head follows it (`PLACEHOLDER_HEADS`): "the drying thing" is the
+        drying rack, "the ironing whatsit" the ironing board, "the watering thingy" the can.
+        A speaker names the thing by its use and leaves the head out; the use word opening a
+        name of several kinds ("the washing thing": a machine or a powder) says none, and a
+        matter ("the drying thing is that it takes a week") is no thing."""
+        words = self.text.words
+        if stretch < 2 or words[i + 1] not in PLACEHOLDER_HEADS or self.text.gaps[i + 1] != " ":
+            return None
+        if i + 2 < len(words) and words[i + 2] in _MATTER_AFTER:
+            return None
+        kinds = _use_kinds(self.catalog).get(words[i], set())
+        return (2, next(iter(kinds))) if len(kinds) == 1 else None
 
     def room_as_place(self, i: int, n: int) -> bool:
         """Whether the `n` words at `i` are a room word of a fixture's (`ROOM_PLACE_LINKS`'s
