@@ -145,8 +145,8 @@ _MATERIAL_SENSES = {"paper": "document"}
 #: their spot"): after a possessive, with at most one word between, they name a place, no object
 _PLACE_SENSES = frozenset({"spot"})
 _POSSESSIVES = frozenset({"its", "their", "his", "her", "your", "my", "our"})
-#: words that may stand between a determiner and a colour ("the same blue mug", "one small red
-#: scarf"): skipped back over to find what leads a coloured mention (`_Reader.restates_plain`)
+#: words that may stand before a colour in a list's item ("one small red scarf", "a large blue
+#: towel"): skipped back over to find the colon that opens the list (`_Reader.restates_plain`)
 _RESTATING_LEADS = frozenset({"same", "small", "big", "large", "little", "old", "new", "one"})
 #: attributes whose values say what a thing is (a toy's kind: doll, car, ball): a bare plural
 #: of such a value after the thing is named is a class of it (`_Reader.kind_value`)
@@ -1281,22 +1281,20 @@ class _Reader:
             return False
         return self.text.raw[i + n - 1].lower() == self.text.words[i + n - 1]
 
-    def restates_plain(self, told: int) -> bool:
+    def restates_plain(self, told: int, category: str) -> bool:
         """Whether a coloured mention starting at word `told` (its colour) names again the thing a
-        plain mention before it named: definite ("I have a mug. The blue mug is on the shelf.", "my
-        blue mug") or an item of a list after a label's colon in its sentence ("The magician waves a
-        scarf. PROPS: one red scarf, a hat"): a list or a fuller name says the same thing more
-        fully. An indefinite mention in prose ("a mug on the desk and a blue mug on the shelf")
-        is another thing, so it restates nothing."""
-        words, gaps = self.text.words, self.text.gaps
-        start = told
-        while start > 0 and words[start - 1] in _RESTATING_LEADS:
-            start -= 1
-        lead = words[start - 1] if start > 0 else ""
-        if lead in {"the"} | _POSSESSIVES:
-            return True
+        plain mention before it named: an item of a list after a label's colon in its sentence
+        ("The magician waves a scarf. PROPS: one red scarf, a hat", "A towel hangs by the sink.
+        Props: a blue towel, a bucket"), a later sentence of its own: a list says again, more
+        fully, what the prose named. A mention in prose, definite or not ("A cup is on the desk.
+        The blue cup is on the shelf.", "a mug on the desk and a blue mug on the shelf"), may set
+        another thing against the first, so it restates nothing."""
+        gaps = self.text.gaps
         first = self.text.sentence_start(told)
-        return any(":" in gaps[k] for k in range(first + 1, start + 1))
+        start = told
+        while start > 0 and self.text.words[start - 1] in _RESTATING_LEADS | _ARTICLES:
+            start -= 1
+        return self.first_at.get(category, first) < first and any(":" in gaps[k] for k in range(first + 1, start + 1))
 
     def heading_mention(self, i: int, n: int) -> bool:
         """Whether the mention at words [i, i + n) is a heading of its own: its sentence or line
@@ -2259,7 +2257,7 @@ class _Reader:
             last = words[i + n - 1] if words[i + n - 1] not in _PACKAGING else words_of(category)[-1]
             told = self.color_before(i)
             if told is not None and words[told] in allowed and not self.color_class(told, category):
-                if kind.generic and not kind.instances and self.restates_plain(told):
+                if kind.generic and not kind.instances and self.restates_plain(told, category):
                     self.restated.add(category)  # "a silk scarf ... PROPS: one red silk scarf"
                 for color in self.coordinated(told, allowed):
                     self.instance(category, f"{color}_{category}", {"color": color})
@@ -2302,7 +2300,7 @@ class _Reader:
                 generic = False  # "3. The folder. ... the blue folder has slipped off the desk": one folder
             elif kind.generic and category in self.restated and kind.count <= 1 and len(kind.instances) == 1 \
                     and all(set(attrs) == {"color"} for attrs in kind.instances.values()):
-                generic = False  # "I have a mug. The blue mug is on the shelf.": one mug, now told fully
+                generic = False  # "a silk scarf ... PROPS: one red silk scarf": one scarf, now told fully
             else:
                 generic = kind.generic and not told_apart
             if generic:
