@@ -145,6 +145,9 @@ _MATERIAL_SENSES = {"paper": "document"}
 #: their spot"): after a possessive, with at most one word between, they name a place, no object
 _PLACE_SENSES = frozenset({"spot"})
 _POSSESSIVES = frozenset({"its", "their", "his", "her", "your", "my", "our"})
+#: words that may stand before a colour in a list's item ("one small red scarf", "a large blue
+#: towel"): skipped back over to find the colon that opens the list (`_Reader.restates_plain`)
+_RESTATING_LEADS = frozenset({"same", "small", "big", "large", "little", "old", "new", "one"})
 #: attributes whose values say what a thing is (a toy's kind: doll, car, ball): a bare plural
 #: of such a value after the thing is named is a class of it (`_Reader.kind_value`)
 KIND_ATTRIBUTES = ("kind",)
@@ -487,6 +490,8 @@ class _Reader:
         #: kind -> whether every plain mention of it so far was a heading of its own ("3. The
         #: folder.", "Mug:"), which a later coloured mention names again (`heading_mention`)
         self.headed: dict[str, bool] = {}
+        #: kinds whose one coloured instance restates a plain mention made before it (`restates_plain`)
+        self.restated: set[str] = set()
         #: part kind -> the furniture the text named it as a part of ("the nightstand drawer"),
         #: whose part a later "the drawer" is (`part_said_again`)
         self.part_holders: dict[str, set[str]] = {}
@@ -1336,6 +1341,21 @@ class _Reader:
             return False
         return self.text.raw[i + n - 1].lower() == self.text.words[i + n - 1]
 
+    def restates_plain(self, told: int, category: str) -> bool:
+        """Whether a coloured mention starting at word `told` (its colour) names again the thing a
+        plain mention before it named: an item of a list after a label's colon in its sentence
+        ("The magician waves a scarf. PROPS: one red scarf, a hat", "A towel hangs by the sink.
+        Props: a blue towel, a bucket"), a later sentence of its own: a list says again, more
+        fully, what the prose named. A mention in prose, definite or not ("A cup is on the desk.
+        The blue cup is on the shelf.", "a mug on the desk and a blue mug on the shelf"), may set
+        another thing against the first, so it restates nothing."""
+        gaps = self.text.gaps
+        first = self.text.sentence_start(told)
+        start = told
+        while start > 0 and self.text.words[start - 1] in _RESTATING_LEADS | _ARTICLES:
+            start -= 1
+        return self.first_at.get(category, first) < first and any(":" in gaps[k] for k in range(first + 1, start + 1))
+
     def heading_mention(self, i: int, n: int) -> bool:
         """Whether the mention at words [i, i + n) is a heading of its own: its sentence or line
         holds only it and its article, and a full stop, colon, dash or line break ends it ("3. The
@@ -1488,14 +1508,17 @@ class _Reader:
     def subject_renamed(self, i: int, n: int, category: str) -> bool:
         """Whether the noun phrase at words [i, i + n) is an afterthought renaming the subject of
         its sentence ("The table lamp is on the desk - my reading lamp", "The laundry basket sits
-        on the floor – the wicker basket", "the floor lamp is by the bed — her reading lamp"):
+        on the floor – the wicker basket", "the floor lamp is by the bed — her reading lamp"), or
+        between two dashes right after the subject's name ("The table lamp - my reading lamp - is on
+        the desk", "the laundry basket – the wicker basket – stands by the door"):
         set off by a dash, opened by "the" or a possessive with at most two words before the
         name, ending its sentence, and of a kind whose head noun is the head noun of the thing the
         sentence opens with, named before. A writer adds the name they use for the thing they have
         just placed; after a dash, the last thing named (the desk) is no antecedent of a lamp."""
         words, gaps = self.text.words, self.text.gaps
         end = i + n
-        if end < len(words) and not _SENTENCE_END.search(gaps[end]):
+        final = end == len(words) or bool(_SENTENCE_END.search(gaps[end]))
+        if not final and not _DASH_GAP.search(gaps[end]):
             return False
         the = next((k for k in range(i - 1, max(i - 4, 0) - 1, -1) if words[k] in _RENAMING_DETERMINERS), None)
         if the is None or the < 1 or not _DASH_GAP.search(gaps[the]) or any(
@@ -1504,9 +1527,11 @@ class _Reader:
         start = self.text.sentence_start(the)
         while start < the and words[start] in _DETERMINERS:
             start += 1
-        subject = self.match(start)[1]
+        length, subject = self.match(start)
+        # between two dashes mid-sentence, the renaming stands right after the subject's name
+        # ("The table lamp - my reading lamp - is on the desk"), never after a later thing
         return subject is not None and subject in self.kinds and start < the \
-            and words_of(subject)[-1] == words_of(category)[-1]
+            and (final or start + length == the) and words_of(subject)[-1] == words_of(category)[-1]
 
     def color_class(self, told: int, category: str) -> bool:
         """Whether the colour at word `told` sorts things of `category` into classes rather than
@@ -2295,6 +2320,8 @@ class _Reader:
             last = words[i + n - 1] if words[i + n - 1] not in _PACKAGING else words_of(category)[-1]
             told = self.color_before(i)
             if told is not None and words[told] in allowed and not self.color_class(told, category):
+                if kind.generic and not kind.instances and self.restates_plain(told, category):
+                    self.restated.add(category)  # "a silk scarf ... PROPS: one red silk scarf"
                 for color in self.coordinated(told, allowed):
                     self.instance(category, f"{color}_{category}", {"color": color})
                 last_colored = category
@@ -2334,6 +2361,9 @@ class _Reader:
             elif kind.generic and self.headed.get(category) and kind.count <= 1 and len(kind.instances) == 1 \
                     and all(set(attrs) == {"color"} for attrs in kind.instances.values()):
                 generic = False  # "3. The folder. ... the blue folder has slipped off the desk": one folder
+            elif kind.generic and category in self.restated and kind.count <= 1 and len(kind.instances) == 1 \
+                    and all(set(attrs) == {"color"} for attrs in kind.instances.values()):
+                generic = False  # "a silk scarf ... PROPS: one red silk scarf": one scarf, now told fully
             else:
                 generic = kind.generic and not told_apart
             if generic:
