@@ -46,6 +46,7 @@ from __future__ import annotations
 
 import argparse
 from collections import defaultdict
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -488,18 +489,24 @@ def _print_near_misses(title: str, misses: list[Case], false: list[Case]) -> Non
         print(f"  {value:28s} {bad:5d}/{total:<5d}")
 
 
+def _print_by_form(title: str, cases: Sequence[Case], read: Sequence[bool]) -> None:
+    """Per form of a grid, how many of its sentences are read (shared by the harder and the
+    nineteenth-session grids)."""
+    by_form: dict[str, list[int]] = defaultdict(lambda: [0, 0])
+    for c, ok in zip(cases, read, strict=True):
+        by_form[c.form][0] += ok
+        by_form[c.form][1] += 1
+    print(title)
+    for value, (good, total) in by_form.items():
+        print(f"  {value:28s} {good:5d}/{total:<5d} {good / total:.3f}")
+
+
 def _nineteenth(catalog: Catalog, why: bool, smoke: bool) -> None:
     """The nineteenth session's grid: per form, how many are read; its near misses; its summary line
     `placement_forms nineteenth=...`, printed before the old forms' `overall=` line."""
     todo = nineteenth_cases()[::10] if smoke else nineteenth_cases()
     read = [read_right(c, catalog) for c in todo]
-    by_form: dict[str, list[int]] = defaultdict(lambda: [0, 0])
-    for c, ok in zip(todo, read, strict=True):
-        by_form[c.form][0] += ok
-        by_form[c.form][1] += 1
-    print("nineteenth-session forms (registers, quantities, participles):")
-    for value, (good, total) in by_form.items():
-        print(f"  {value:28s} {good:5d}/{total:<5d} {good / total:.3f}")
+    _print_by_form("nineteenth-session forms (registers, quantities, participles):", todo, read)
     misses = nineteenth_near_misses()[::10] if smoke else nineteenth_near_misses()
     false = [c for c in misses if misread(c, catalog)]
     _print_near_misses("nineteenth near misses read as a placement (must be 0):", misses, false)
@@ -548,13 +555,7 @@ def main() -> None:
     hard_missed = [c for c, ok in zip(hard, hard_read, strict=True) if not ok]
     hard_misses = harder_near_misses()[::10] if args.smoke else harder_near_misses()
     hard_false = [c for c in hard_misses if misread(c, catalog)]
-    by_hard: dict[str, list[int]] = defaultdict(lambda: [0, 0])
-    for c, ok in zip(hard, hard_read, strict=True):
-        by_hard[c.form][0] += ok
-        by_hard[c.form][1] += 1
-    print("harder forms (thirteenth session):")
-    for value, (good_h, total_h) in by_hard.items():
-        print(f"  {value:28s} {good_h:5d}/{total_h:<5d} {good_h / total_h:.3f}")
+    _print_by_form("harder forms (thirteenth session):", hard, hard_read)
     _print_near_misses("harder near misses read as a placement (must be 0):", hard_misses, hard_false)
     if args.why:
         for case in hard_missed:

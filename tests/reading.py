@@ -5,11 +5,12 @@ a sentence the way the model does."""
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
 from logicenveval.domain.catalog import load_catalog
-from logicenveval.offline.analysis import analyse
+from logicenveval.offline.analysis import analyse, nest
 from logicenveval.offline.naming import name_objects
 from logicenveval.offline.placement import described_placements
 
@@ -57,3 +58,15 @@ def forms_named(path: Path, rooms: tuple[str, ...] = ()) -> int:
             kind, _, sentence = line.split("\t")
             count += kind in {o["category"] for o in name_objects(sentence, CATALOG, rooms=rooms)}
     return count
+
+
+def instruction_under(text: str, rooms: tuple[str, ...], condition: str) -> dict[str, str]:
+    """The plan `analysis.nest` builds under each value of the condition's factor, joined ("yes":
+    under the condition, "no": under its negation); shared by the comma-less condition tests."""
+    asked = [f for f in analyse(brief(text, rooms), CATALOG).factors
+             if {condition, f"not {condition}"} <= set(f.values.values())]
+    if not asked:
+        return {}
+    tree = nest([replace(asked[0], context=[])])
+    return {("yes" if cond == condition else "no"): " ".join(tree["branches"][v].get("plan") or []).lower()
+            for v, cond in asked[0].values.items()}

@@ -18,12 +18,8 @@ as they are; each table was measured before its rule (the counts in each test's 
 
 from __future__ import annotations
 
-from dataclasses import replace
-
 import pytest
-from reading import CATALOG, asks, brief, factors
-
-from logicenveval.offline.analysis import analyse, nest
+from reading import asks, factors, instruction_under
 
 #: a presence followed by an adverbial of time ("if the mug is there right now") is not read: the
 #: rule that read it (`clauses.PRESENCE_TIMES`, 282 of the grid's 409 unread cells) was withdrawn
@@ -196,17 +192,6 @@ MODAL_BE_NO_COMMA = [
 ]
 
 
-def _instruction_under(text: str, rooms: tuple[str, ...], condition: str) -> dict[str, str]:
-    """The plan `analysis.nest` builds under each value of the condition's factor, joined."""
-    asked = [f for f in analyse(brief(text, rooms), CATALOG).factors
-             if {condition, f"not {condition}"} <= set(f.values.values())]
-    if not asked:
-        return {}
-    tree = nest([replace(asked[0], context=[])])
-    return {("yes" if cond == condition else "no"): " ".join(tree["branches"][v].get("plan") or []).lower()
-            for v, cond in asked[0].values.items()}
-
-
 @pytest.mark.parametrize(("text", "rooms", "condition", "value", "words"), MODAL_BE_NO_COMMA)
 def test_modal_be_without_comma_ends_the_condition(text: str, rooms: tuple[str, ...], condition: str,
                                                    value: str, words: str) -> None:
@@ -214,7 +199,7 @@ def test_modal_be_without_comma_ends_the_condition(text: str, rooms: tuple[str, 
     "missing" with a modal: the instruction fell under neither value): "be" after a modal is the
     condition's copula (`clauses._PREDICATES`), so the instruction after it is cut off as after
     "is" (`clauses._imperative_cut`)."""
-    under = _instruction_under(text, rooms, condition)
+    under = instruction_under(text, rooms, condition)
     other = "no" if value == "yes" else "yes"
     assert words in under.get(value, "") and words not in under.get(other, ""), under
 

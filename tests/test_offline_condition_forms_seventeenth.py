@@ -16,12 +16,9 @@ in each test's docstring).
 
 from __future__ import annotations
 
-from dataclasses import replace
-
 import pytest
-from reading import CATALOG, asks, brief, factors
+from reading import asks, factors, instruction_under
 
-from logicenveval.offline.analysis import analyse, nest
 from logicenveval.offline.sentences import unquote
 
 #: a thing, a modal doubt with its negation, then an elliptical condition taking the clause up:
@@ -141,24 +138,13 @@ REPORT_BACK = [
 ]
 
 
-def _instruction_under(text: str, rooms: tuple[str, ...], condition: str) -> dict[str, str]:
-    """The plan `analysis.nest` builds under each value of the condition's factor, joined."""
-    asked = [f for f in analyse(brief(text, rooms), CATALOG).factors
-             if {condition, f"not {condition}"} <= set(f.values.values())]
-    if not asked:
-        return {}
-    tree = nest([replace(asked[0], context=[])])
-    return {("yes" if cond == condition else "no"): " ".join(tree["branches"][v].get("plan") or []).lower()
-            for v, cond in asked[0].values.items()}
-
-
 @pytest.mark.parametrize(("text", "rooms", "condition", "value", "words"), REPORT_BACK)
 def test_report_back_without_comma_is_the_instruction(text: str, rooms: tuple[str, ...], condition: str,
                                                       value: str, words: str) -> None:
     """"If the mug is missing let me know" (`benchmarks/condition_forms.py`, "if, no comma"): the
     speaker as a verb's object makes it an instruction (`clauses.OBJECT_STARTS`), which ends a
     condition typed without its comma (`clauses._imperative_cut`)."""
-    under = _instruction_under(text, rooms, condition)
+    under = instruction_under(text, rooms, condition)
     other = "no" if value == "yes" else "yes"
     assert words in under.get(value, "") and words not in under.get(other, ""), under
 
@@ -166,7 +152,7 @@ def test_report_back_without_comma_is_the_instruction(text: str, rooms: tuple[st
 def test_speaker_after_a_preposition_stays_in_the_condition() -> None:
     """"next to me": the speaker after a preposition is no instruction's object, and the
     condition runs on to the instruction after it."""
-    under = _instruction_under("If the lamp is on next to me switch it off.", ("bedroom",),
+    under = instruction_under("If the lamp is on next to me switch it off.", ("bedroom",),
                                "state(table_lamp, toggled_on)")
     assert "switch it off" in under.get("yes", ""), under
 
