@@ -35,6 +35,7 @@ from logicenveval.offline.clauses import (
     OBJECT_STARTS,
     PLACE_PREPS,
     PRESENCE_DETERMINERS,
+    PRESENCE_QUESTION,
     SOFTENERS,
     UNCERTAIN,
     Piece,
@@ -3247,15 +3248,13 @@ _HEDGED_ROLES = frozenset({"uncertain", "statement", "consequence"})
 #: the adverbs of `_HEDGES`: they say how sure the writer is, not what is guessed ("maybe the mug
 #: is there" guesses "the mug is there"); the modals are part of the guess's verb group
 _DOUBT_ADVERBS = _HEDGES - {"may", "might", "could"}
-#: the finite words a question opens with before its subject ("is it there?", "might it be?")
-AUX_OPENERS = frozenset({"is", "are", "was", "were", "might", "may", "could", "will", "would"})
 
 
 def _pronoun_question(words: list[str]) -> bool:
     """Whether a condition's words are a question whose subject is a pronoun ("are they there?",
     "isn't it here?", "might it still be there?")."""
     lead = 2 if words[1:2] == ["not"] else 1
-    return len(words) > lead and words[0] in AUX_OPENERS and words[lead] in ("it", "they")
+    return len(words) > lead and words[0] in PRESENCE_QUESTION and words[lead] in ("it", "they")
 
 
 def _doubted_presence(said: str) -> bool:

@@ -315,7 +315,7 @@ _PRESENCE_FILLERS = frozenset({"ever", "still", "do", "does", "did"})
 #: the finite words a presence question opens with ("Is the mug there?", "Isn't the remote here?",
 #: and a modal of likelihood, the nineteenth session: "Might it still be there?", "Could the keys
 #: be here?"; not "should", "must" or "can", which ask what ought to or may be, not what is)
-_PRESENCE_QUESTION = frozenset({"is", "are", "was", "were", "might", "may", "could", "will", "would"})
+PRESENCE_QUESTION = frozenset({"is", "are", "was", "were", "might", "may", "could", "will", "would"})
 #: modals before "be" in a presence condition ("if the mug might still be there", "should the
 #: towel be here", "if it will be there"); a bare "be" after an inverted "should" too
 _PRESENCE_MODALS = frozenset({"might", "may", "could", "should", "will", "would", "must", "can"})
@@ -326,7 +326,7 @@ def presence_asked(words: list[str]) -> bool | None:
     and a question with its finite
     word first ("Is the mug there?"; a negative question, "Isn't the mug there?", asks the same
     as the positive one, `analysis._unbiased`). Why: a presence was read only as "X is there"."""
-    if words[:1] and words[0] in _PRESENCE_QUESTION:
+    if words[:1] and words[0] in PRESENCE_QUESTION:
         # the subject is the thing's noun phrase, or since the nineteenth session "it"/"they"
         # as in the statement: "Is it there? If so, ..." asks what "If it is there, ..." asks
         lead = 2 if words[1:2] == ["not"] else 1
