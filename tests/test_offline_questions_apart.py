@@ -24,25 +24,10 @@ stay as they are; each table was measured before its rule (the counts in each ta
 
 from __future__ import annotations
 
-from dataclasses import replace
-
 import pytest
-from reading import CATALOG, asks, brief, factors
+from reading import asks, factors, instruction_under
 
-from logicenveval.offline.analysis import analyse, nest
 from logicenveval.offline.sentences import keyed_answers
-
-
-def _under(text: str, rooms: tuple[str, ...], condition: str) -> dict[str, str]:
-    """The plan `analysis.nest` builds under each value of the condition's factor, joined."""
-    asked = [f for f in analyse(brief(text, rooms), CATALOG).factors
-             if {condition, f"not {condition}"} <= set(f.values.values())]
-    if not asked:
-        return {}
-    tree = nest([replace(asked[0], context=[])])
-    return {("yes" if cond == condition else "no"): " ".join(tree["branches"][v].get("plan") or []).lower()
-            for v, cond in asked[0].values.items()}
-
 
 #: a condition typed without its comma, then an instruction to call or message the speaker:
 #: (text, rooms, the condition, the value the instruction falls under, its words). Before the
@@ -76,7 +61,7 @@ def test_calling_the_speaker_ends_a_condition(text: str, rooms: tuple[str, ...],
     to call, not the thing sounding (`sentences._SOUNDING`: no copula in the subject, no "me" /
     "us" after the verb), and a verb of messaging before the speaker opens an instruction
     (`clauses.MESSAGING`), which ends a condition typed without its comma."""
-    under = _under(text, rooms, condition)
+    under = instruction_under(text, rooms, condition)
     other = "no" if value == "yes" else "yes"
     assert words in under.get(value, "") and words not in under.get(other, ""), under
 
@@ -84,11 +69,11 @@ def test_calling_the_speaker_ends_a_condition(text: str, rooms: tuple[str, ...],
 def test_a_device_sounding_is_still_its_state() -> None:
     """Near misses: a device's own sound after a condition's cue is still its state ("if the
     alarm clock rings", "if my phone buzzes"), and the form with its comma is read as before."""
-    assert "switch it off" in _under("If the alarm clock rings switch it off.", ("bedroom",),
+    assert "switch it off" in instruction_under("If the alarm clock rings switch it off.", ("bedroom",),
                                      "state(alarm_clock, toggled_on)").get("yes", "")
-    assert "put it on the desk" in _under("if my phone buzzes put it on the desk", ("office",),
+    assert "put it on the desk" in instruction_under("if my phone buzzes put it on the desk", ("office",),
                                           "state(cell_phone, toggled_on)").get("yes", "")
-    assert "text me" in _under("If the towel is wet, text me.", ("bathroom",), "state(towel, wet)").get("yes", "")
+    assert "text me" in instruction_under("If the towel is wet, text me.", ("bathroom",), "state(towel, wet)").get("yes", "")
 
 
 #: a question (or an instruction) with a time clause told by other people, then its answer:
@@ -248,7 +233,7 @@ def test_a_quiz_answer_key_gives_the_branch(text: str, rooms: tuple[str, ...], c
     """dev 14 laundry_sorting_d14's structure: "Q1. <case>. What do you do? a) ... b) ..." and an
     answer key at the bottom; the keyed option is what to do in the case
     (`sentences.keyed_answers`), and the others are not."""
-    under = _under(text, rooms, condition)
+    under = instruction_under(text, rooms, condition)
     assert words in under.get("yes", ""), under
     assert "kick" not in under.get("yes", "") and "leave it, someone" not in under.get("yes", ""), under
 
