@@ -23,6 +23,7 @@ from typing import Any
 from lemminflect import getAllLemmas, getInflection
 
 from logicenveval.domain.catalog import Catalog, Category, load_catalog
+from logicenveval.domain.lemmas import noun_plurals
 from logicenveval.offline.clauses import (
     ANAPHORIC,
     ARTICLES,
@@ -431,6 +432,8 @@ def _bracket_read_past(said: str, named: Callable[[str], bool]) -> str:
 
 #: the state a definite thing is left in by an act done to it (`_done_by_someone`): "closed the
 #: laptop" leaves it closed, "emptied the bin" empty, "switched the lamp off" off
+#: `DEFINITE` of one thing: the determiners before the thing an act by nobody or "over" speaks of
+_SINGULAR_DEFINITE = DEFINITE - {"these", "those"}
 RESULT_STATES = {"closed": "closed", "shut": "closed", "opened": "open", "emptied": "empty", "filled": "full",
                  "washed": "clean", "cleaned": "clean", "wiped": "clean", "dried": "dry",
                  "switched off": "off", "turned off": "off", "switched on": "on", "turned on": "on"}
@@ -441,7 +444,7 @@ _RESULT_VERB = "|".join(sorted({v.split()[0] for v in RESULT_STATES}, key=len, r
 _DONE_BY_SOMEONE = re.compile(
     rf"\b(?P<who>{'|'.join(sorted(_NOBODY | _SOMEONE, key=len, reverse=True))})\s+(?:(?:has|have|had)\s+)?"
     rf"(?:(?:already|yet|ever)\s+)?(?P<verb>{_RESULT_VERB})\s+(?:(?P<p1>off|on)\s+)?"
-    r"(?P<np>(?:the|my|your|our|his|her|their|this|that)\s+[a-z'-]+(?:\s+[a-z'-]+){0,2}?)(?:\s+(?P<p2>off|on))?"
+    rf"(?P<np>(?:{'|'.join(sorted(_SINGULAR_DEFINITE - {'its'}))})\s+[a-z'-]+(?:\s+[a-z'-]+){{0,2}}?)(?:\s+(?P<p2>off|on))?"
     r"(?:\s+(?P<adv>yet|already|today|tonight))?(?=\s*(?:[,.;:!?)]|\s-|$))")
 
 
@@ -468,7 +471,7 @@ def _done_by_someone(said: str) -> str:
 #: over the chair", "is my coat still over the armchair?", "the scarf is draped over the bed"); not
 #: a quantity or a time ("over an hour", "over 30 degrees", "over the weekend" name no thing) nor a
 #: direction ("over there", "over here", no determiner)
-_OVER = re.compile(r"\bover(?=\s+(?:the|my|your|his|her|our|their|this|that|its)\s)")
+_OVER = re.compile(rf"\bover(?=\s+(?:{'|'.join(sorted(_SINGULAR_DEFINITE))})\s)")
 
 
 def _contents(said: str) -> str:
@@ -4184,7 +4187,7 @@ def _case_named(factors: list[Factor], said: list[Clause], thing: str) -> list[t
         m for c in said for m in c.mentions}
     for a in factors:
         if a.kind == "attr" and a.subject in moved and a.subject != thing:
-            named = [v for v in a.values if {v, f"{v}s", f"{v}es"} & words]
+            named = [v for v in a.values if ({v} | set(noun_plurals(v))) & words]
             if len(named) == 1:
                 return [(a.id, frozenset(named))]
     return []
