@@ -311,6 +311,15 @@ prints LogCov / SceVR / FauDR for each, then per task:
   closing checklist, a tower controller's position relief briefing, a letterpress job docket, a
   tailor's alteration ticket, an Israeli grandmother's note about the salon). Fresh (`FRESH`)
   until measured ten times (twentieth session), then a development set;
+- `dev39 reworded` and `dev39 new`: tests/data/reader_dev39/ — the thirty-ninth development set,
+  written in the twenty-first session (beside dev 40, each in its own family of registers) in
+  registers of veterinary practice, church bell-ringing, chess arbitration, pharmacy and livery
+  yards no set used and the English of a Malay speaker: one rewording each of 3 built-in
+  descriptions (a change-ringing method sheet, a pharmacy dispensing label, a dressage test sheet)
+  and six new tasks in rooms none of the sets above use (a vet nurse's dog-ward close-down sheet,
+  a tower captain's practice notes, a chess arbiter's venue checklist, a pharmacist's locum
+  handover, a livery yard's holiday cover sheet, a Malay auntie's note about the dapur). Fresh
+  (`FRESH`) until measured ten times, then a development set;
 - `dev40 reworded` and `dev40 new`: tests/data/reader_dev40/ — the fortieth development set,
   written in the twenty-first session (beside dev 39, each in its own family of registers) in
   registers of railway signalling, barbering, rowing, wine service and motor racing no set used
@@ -412,7 +421,7 @@ dev5_new=... dev6_reworded=... dev6_new=... dev7_reworded=... dev7_new=... dev8_
 dev8_new=... dev9_reworded=... dev9_new=... dev10_reworded=... dev10_new=... dev11_reworded=...
 dev11_new=... dev12_reworded=... dev12_new=... dev13_reworded=... dev13_new=... dev14_reworded=... dev14_new=...
 dev15_reworded=... dev15_new=... dev16_reworded=... dev16_new=... dev17_reworded=... dev17_new=...
-dev18_reworded=... dev18_new=... dev19_reworded=... dev19_new=... dev20_reworded=... dev20_new=... dev21_reworded=... dev21_new=... dev22_reworded=... dev22_new=... dev23_reworded=... dev23_new=... dev24_reworded=... dev24_new=... dev25_reworded=... dev25_new=... dev26_reworded=... dev26_new=... dev27_reworded=... dev27_new=... dev28_reworded=... dev28_new=... dev29_reworded=... dev29_new=... dev30_reworded=... dev30_new=... dev31_reworded=... dev31_new=... dev32_reworded=... dev32_new=... dev33_reworded=... dev33_new=... dev34_reworded=... dev34_new=... dev35_reworded=... dev35_new=... dev36_reworded=... dev36_new=... dev37_reworded=... dev37_new=... dev38_reworded=... dev38_new=... dev40_reworded=... dev40_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
+dev18_reworded=... dev18_new=... dev19_reworded=... dev19_new=... dev20_reworded=... dev20_new=... dev21_reworded=... dev21_new=... dev22_reworded=... dev22_new=... dev23_reworded=... dev23_new=... dev24_reworded=... dev24_new=... dev25_reworded=... dev25_new=... dev26_reworded=... dev26_new=... dev27_reworded=... dev27_new=... dev28_reworded=... dev28_new=... dev29_reworded=... dev29_new=... dev30_reworded=... dev30_new=... dev31_reworded=... dev31_new=... dev32_reworded=... dev32_new=... dev33_reworded=... dev33_new=... dev34_reworded=... dev34_new=... dev35_reworded=... dev35_new=... dev36_reworded=... dev36_new=... dev37_reworded=... dev37_new=... dev38_reworded=... dev38_new=... dev39_reworded=... dev39_new=... dev40_reworded=... dev40_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
 rows only).
 """
 
@@ -476,6 +485,7 @@ DEV35 = ROOT / "tests" / "data" / "reader_dev35"
 DEV36 = ROOT / "tests" / "data" / "reader_dev36"
 DEV37 = ROOT / "tests" / "data" / "reader_dev37"
 DEV38 = ROOT / "tests" / "data" / "reader_dev38"
+DEV39 = ROOT / "tests" / "data" / "reader_dev39"
 DEV40 = ROOT / "tests" / "data" / "reader_dev40"
 HOLDOUT2 = ROOT / "tests" / "data" / "reader_holdout2"
 #: (row name, tasks folder; None = the built-in tasks)
@@ -518,6 +528,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
     ("dev36 reworded", DEV36 / "tasks_reworded"), ("dev36 new", DEV36 / "tasks_new"),
     ("dev37 reworded", DEV37 / "tasks_reworded"), ("dev37 new", DEV37 / "tasks_new"),
     ("dev38 reworded", DEV38 / "tasks_reworded"), ("dev38 new", DEV38 / "tasks_new"),
+    ("dev39 reworded", DEV39 / "tasks_reworded"), ("dev39 new", DEV39 / "tasks_new"),
     ("dev40 reworded", DEV40 / "tasks_reworded"), ("dev40 new", DEV40 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
     ("held-out2 reworded", HOLDOUT2 / "tasks_reworded"), ("held-out2 new", HOLDOUT2 / "tasks_new"),
@@ -527,7 +538,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH: frozenset[str] = frozenset({"dev40 reworded", "dev40 new"})
+FRESH: frozenset[str] = frozenset({"dev39 reworded", "dev39 new", "dev40 reworded", "dev40 new"})
 GENERATOR = "logicenvgen"
 
 
