@@ -4094,7 +4094,8 @@ def _taken_up_under(factors: list[Factor], clauses: list[Clause]) -> None:
             continue
         previous = b.sentence - 1
         for _ in range(_ASIDE_REACH):
-            if previous < 1 or any(c.facts or c.role != "statement" for _, c in by_sentence.get(previous, [])):
+            if previous < 1 or any(c.facts or c.role != "statement" or _opens_with_action(c.text)
+                                   for _, c in by_sentence.get(previous, [])):
                 break
             previous -= 1
         own = by_sentence.get(previous, [])
@@ -4113,6 +4114,16 @@ def _taken_up_under(factors: list[Factor], clauses: list[Clause]) -> None:
             # no path meets: the reading already nests them the other way)
             if not _asked_under(b.id, [dep for dep, _ in branch], factors):
                 b.context = branch
+
+
+def _opens_with_action(text: str) -> bool:
+    """Whether a clause opens with a verb of acting (after an instruction's lead-ins): an
+    instruction, even one whose object a label left out ("Any other kind of book: place in the
+    nightstand drawer. To do so, pull the drawer out unless it is already open"), is never an aside
+    between an instruction and the condition that takes up its thing ("- It sticks. -" is)."""
+    words = re.findall(r"[a-z']+", text.lower())
+    k = next((i for i, w in enumerate(words) if w not in _INSTRUCTION_LEADS), len(words))
+    return k < len(words) and words[k] in ACTIONS
 
 
 def _only_where_sent(b: Factor, instruction: Clause) -> bool:

@@ -95,6 +95,11 @@ COMPLEMENT_VERBS = frozenset({"be", "stay", "remain", "keep", "seem", "look", "f
 #: safe", "is it safe", "hold them steady"); "her", also a possessive, is left out
 OBJECT_PRONOUNS = frozenset({"it", "them", "me", "us", "him", "you", "everyone", "everybody", "everything"})
 
+#: relative pronouns: a clause one opens says more of the thing before it ("the shelf, which is
+#: by the door"; "on which", "in which": `placement`), no thing of its own (`naming`: "a blue box,
+#: which is for dolls, and a white box")
+RELATIVE = frozenset({"which", "that", "who"})
+
 #: adverbs of place a verb of moving takes before its complement ("get home safe", "got back safe",
 #: "made it there safe"); after a determiner they are nouns ("the back safe")
 PLACE_ADVERBS = frozenset({"home", "back", "there", "here"})

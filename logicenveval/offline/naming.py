@@ -35,6 +35,7 @@ from logicenveval.offline.lexicon import (
     FUNCTION_WORDS,
     FURNITURE_PARTS,
     PART_TIES,
+    RELATIVE,
     SPARE_WORDS,
     TIME_HEADS,
     adjective_only,
@@ -1918,7 +1919,7 @@ class _Reader:
         head = words_of(category)[-1]
         allowed = self.catalog.categories[category].attributes.get("color", [])
         out: list[tuple[str, dict[str, str], list[int]]] = []
-        for a, b in self.text.items(start, end):
+        for a, b in self.relatives_joined(self.text.items(start, end)):
             item = words[a:b]
             if item[0] in _HOLDING and len(item) > 1 and not out:
                 item, a = item[1:], a + 1  # "hold novels, essays and ..."
@@ -1973,6 +1974,22 @@ class _Reader:
             parts = [] if ordinal_at is not None else modifiers[:1]
             parts += [purpose] if purpose and purpose not in parts else []
             out.append(("_".join([*parts, said_head]), {}, read))
+        return out
+
+    def relatives_joined(self, spans: list[tuple[int, int]]) -> list[tuple[int, int]]:
+        """The list's item spans with an item that opens with a relative pronoun joined to the one
+        before it: "two toy boxes - a blue box, which is for dolls, and a white box", "three
+        hooks: a brass one, which takes the coat, ..." set off by commas a clause that says more
+        of the item before (its purpose, what it holds), no item of its own. "that" is also a
+        demonstrative opening an item ("this one for tea and that one for coffee"), so it joins
+        only before "is" / "was" ("a red bowl, that is for the batter")."""
+        words = self.text.words
+        out: list[tuple[int, int]] = []
+        for a, b in spans:
+            if out and words[a] in RELATIVE and (words[a] != "that" or words[a + 1 : a + 2] and words[a + 1] in _COPULAS):
+                out[-1] = (out[-1][0], b)
+            else:
+                out.append((a, b))
         return out
 
     @staticmethod

@@ -50,6 +50,7 @@ from logicenveval.offline.lexicon import (
     COLOR_WORDS,
     FURNITURE_PARTS,
     PART_TIES,
+    RELATIVE,
     Lexicon,
     Mention,
     singular,
@@ -189,8 +190,6 @@ HEDGES = frozenset({"doubt", "doubts", "doubtful", "hope", "hopes", "hopefully",
 CORRELATIVE_NEGATIONS = frozenset({"neither", "nor"})
 #: where a thing rests (not "into"/"onto", which say where it goes)
 AT = frozenset({"on", "in", "inside", "atop", "upon"})
-#: relative pronouns and the prepositions that lead into them ("on which", "in which")
-RELATIVE = frozenset({"which", "that", "who"})
 #: words after an article that are no modifier of a place ("on the top of", "in the middle of")
 PREP_OF_PLACE = frozenset({"top", "middle", "side", "end", "edge", "back", "front", "corner", "bottom", "left",
                            "right", "same", "other", "one", "floor"})
@@ -2299,21 +2298,27 @@ def _in_room(sent: _Sentence, clause: Span, ms: list[Mention], reading: _Reading
         between = [w for w in words[a.end:b.start] if w != "the"]
         if not between or between[-1] not in AT or not all(w in BE | ADVERBS for w in between[:-1]):
             continue
-        if _moved(words, a.start, clause) or _indefinite_doubt(sent, a) or _room_asked(words, clause, b.end):
+        if _moved(words, a.start, clause) or _indefinite_doubt(sent, a) or _room_asked(words, clause, a.start, b.end):
             continue
+        if determiner(words, a.start) in NEGATIONS:
+            continue  # "No pan in the kitchen?", "no towel in the bathroom": the thing is denied there
         if clause.doubted and clause.mood == "statement":
             continue  # "I believe I may have left my watch in the flat": a hedged place is open
         reading.room("settled", a.roles[0], b.roles[0])  # a noun phrase's own place, whatever the mood
 
 
-def _room_asked(words: list[str], clause: Span, after_room: int) -> bool:
+def _room_asked(words: list[str], clause: Span, start: int, after_room: int) -> bool:
     """"Is there a towel in the bathroom?", "Is the laptop in the study?", "Are the keys still in
     the hall?": a yes/no question (opening with a form of "be") whose room ends it asks whether the
     thing is in that room, which the factor reader reads; the room of a question that goes on to
-    ask something else ("Is the lamp in the bedroom on?") still says which thing is meant."""
+    ask something else ("Is the lamp in the bedroom on?") still says which thing is meant. So does
+    a verbless one, the thing (at `start`) and its room only ("Pan in the kitchen? Then ...", "Any
+    towels in the bathroom?"), as a checklist, a note or a broadcast asks it."""
     lead = next((w for w in words[clause.start:after_room] if w not in LEAD_INS), "")
+    verbless = all(w in LEAD_INS or w in ARTICLES or w in NEGATIONS for w in words[clause.start:start])
     rest = words[after_room:clause.end + 1]
-    return lead in BE and "?" in rest and all(w in ADVERBS or w in {"now", "right", "?"} for w in rest[:rest.index("?") + 1])
+    return (lead in BE or verbless) and "?" in rest and all(
+        w in ADVERBS or w in {"now", "right", "?"} for w in rest[:rest.index("?") + 1])
 
 
 def _moved(words: list[str], start: int, clause: Span) -> bool:

@@ -9,7 +9,7 @@ from collections.abc import Callable
 
 from lemminflect import getAllInflections, getAllLemmas, getInflection
 
-from logicenveval.offline.lexicon import COLOR_WORDS, verb_form
+from logicenveval.offline.lexicon import COLOR_WORDS, singular, verb_form
 
 #: adjective/participle -> (state flag, polarity)
 STATE_WORDS: dict[str, tuple[str, bool]] = {
@@ -699,6 +699,42 @@ def _verbless_put(m: re.Match[str]) -> str:
         return m.group(0)
     said = thing if thing.split()[0].lower() in DETERMINERS else f"the {thing}"
     return f"{m.group('lead')}{_match_case(thing, 'put')} {said[:1].lower()}{said[1:]} {m.group('place')}"
+
+
+#: a verbless case and its verbless answer ("SOCK ON THE FLOOR, INTO THE BASKET", "shirt not in the
+#: basket, no action", "- samples on the bench, back into the fridge"): a broadcast's, a
+#: checklist's or a protocol's way of telling what to do with a thing where it is found, a case
+#: as "if the sock is on the floor, ..." says it, no statement of where it is. Only a thing of one
+#: or two words opening its clause, a place of up to three words, and after the comma a goal with
+#: no verb ("into", "onto", "to", "back in/on") or no action at all (after a list's mark or an item's
+#: number at most: "7.1 Bottle on the floor, onto the shelf"): "mug in the sink, plate on the rack"
+#: (a second thing), "towel on the rail, please" and "the kettle on the worktop, to the left of the
+#: hob" (where it stands beside another, "to the ... of") stay as they are
+_VERBLESS_CASE = re.compile(
+    r"(?P<lead>(?:^|(?<=[.!?;:(])|(?<=[.!?;:(]\s))[ \t]*(?:[-*\u2022][ \t]+|\d{1,2}(?:[.)]|(?:\.\d{1,2})+[.)]?)[ \t]+)?)"
+    r"(?P<thing>(?:(?:the|my|your|our|a|an|any)\s+)?[a-z][a-z-]*(?:\s+(?!not\b)[a-z][a-z-]*)?)\s+(?P<neg>not\s+)?"
+    r"(?P<place>(?:on|in|inside|under)\s+(?:the|my|your|our)\s+[a-z-]+(?:\s+[a-z-]+){0,2}),\s+"
+    r"(?P<answer>(?:(?:back|straight)\s+)?(?:into|onto|to)\s+(?:the|my|your|our|its|their)\s(?![a-z]+\s+of\b)"
+    r"|back\s+(?:in|on)\s"
+    r"|no\s+action\b|nothing\s+to\s+do\b)",
+    re.I | re.M)
+
+
+def _verbless_case(m: re.Match[str]) -> str:
+    """`_VERBLESS_CASE` as a condition ("If the sock is on the floor, put it into the basket"),
+    unless a word of the thing is a verb, "be" or a pronoun (`_NOT_A_THING`: "put mug in the
+    sink, into ..." has its verb) or it is a bare state ("clean on the rack, ..." is a case of a
+    state, `_STATE_CASE`)."""
+    thing = m.group("thing")
+    if _NOT_A_THING & set(thing.lower().split()) or thing.lower() in STATE_WORDS:
+        return m.group(0)
+    said = thing if thing.split()[0].lower() in DETERMINERS else f"the {thing}"
+    answer = m.group("answer")
+    head = thing.split()[-1].lower()
+    plural = singular(head) != head  # "samples on the bench, ...": "if the samples are ..., put them ..."
+    put = "" if answer[:1].lower() == "n" else f"put {'them' if plural else 'it'} "
+    return (f"{m.group('lead')}{_match_case(thing, 'if')} {said[:1].lower()}{said[1:]} {'are' if plural else 'is'} "
+            f"{m.group('neg') or ''}{m.group('place')}, {put}{answer}")
 
 
 #: a place said to be checked or confirmed ("1 towel, to be checked on the drying rack", "the
@@ -1574,6 +1610,7 @@ def unquote(text: str) -> str:
     text = _EVENTUAL_AFTER.sub("may be", _EVENTUAL_BEFORE.sub(lambda m: _match_case(m.group(0), "perhaps"), text))
     text = _LISTED_OR_ELSE.sub(r"\g<items>or ", text)
     text = _VERBLESS_UNLESS_THERE.sub(_verbless_put, text)
+    text = _VERBLESS_CASE.sub(_verbless_case, text)
     text = _ONE_APPOSITIVE.sub(r", \1,", _MODAL_DOUBT.sub(r"\1", text))
     text = _OPEN_DISJUNCTION.sub(_open_disjunction, text)
     text = _POLITE.sub("", _VARIANT.sub(lambda m: _match_case(m.group(0), _SPELLED[m.group(0).lower()]), text))
