@@ -60,7 +60,7 @@ from logicenveval.offline.lexicon import (
     without_modifiers,
     words_of,
 )
-from logicenveval.offline.placement import LEFT_PASSIVES, described_placements
+from logicenveval.offline.placement import LEFT_PASSIVES, RESULT, STATIVE, described_placements
 from logicenveval.offline.sentences import (
     ACTIONS,
     EVENT_VERBS,
@@ -863,6 +863,17 @@ def _objectless_move(words: list[str], found: list[Mention]) -> bool:
         and all(m.start >= k for m in found)
 
 
+def _participle_place(words: list[str], found: list[Mention]) -> bool:
+    """Whether the clause is a bare participle of a result or of resting, its subject left out,
+    then its place ("b) My cup. Left on the desk, next to the scales, as ever.", "Kettle. Sitting
+    on the stove, as usual.", "Torch. Kept on the shelf by the door."): the terse item says where
+    the thing its heading named is (`placement._headed_participle`), so, as with a bare place
+    (`_bare_place`), the place is no new topic and a later "If it's dirty" still speaks of the
+    thing. A participle with an object of its own ("Left the mug on the desk") is none."""
+    return len(words) > 2 and (words[0] in RESULT or words[0] in STATIVE and words[0].endswith("ing")) \
+        and words[1] in PLACE_PREPS and bool(found) and all(m.kind == "role" and m.start > 1 for m in found)
+
+
 #: the words that may stand between "no" and the thing said to be absent ("no clean sponge")
 _ABSENT_GAP = 2
 
@@ -965,6 +976,8 @@ class _Reader:
         #: the clause read is a time clause cut from its main clause, its opener the cue ("Is the
         #: lamp still on | when they have gone?"): its first word is the time clause's subject
         self.timed = False
+        #: the clause read is a condition that opens its sentence (`mentions`' "one")
+        self.opening = False
         #: the last clause joined things with "and" ("the pillow ... and the toy ..."): "they" is them
         self.coordinated = False
         #: the words of the clause being read that a comma stands before (`_joined`)
@@ -1171,6 +1184,11 @@ class _Reader:
                 # If there is one, into the lost property box" asks of the lunch box, not of a
                 # ceiling fan named before it)
                 things = [r for r in self.recent if r not in self.lex.holders or self._carried(r)] or self.recent
+                # (a condition opening its sentence, "If there isn't one, fine", asks again of the
+                # thing spoken of, the else of "There might be a magazine on the stool. If so, put
+                # it in the basket": not the basket named last as where it goes, `opening`)
+                if self.opening and self.topic_kind == "role" and len(self.topic) == 1 and self.topic[0] in things:
+                    things = [*things, self.topic[0]]
                 found.append(Mention(prior[-1].roles if prior else (things[-1],), i, i + 1, "pronoun"))
             elif w in ("they", "them") and self._group_taken_up():
                 # "The cabinet has two drawers: one for forks, one for spoons. If they're open,
@@ -1236,7 +1254,8 @@ class _Reader:
             named_as = next((m for m in found if m.kind == "role" and m.start >= lead + 2), None)
             if named_as is not None and not any(w in PLACE_PREPS for w in words[lead + 2:named_as.start]):
                 first = named_as
-        if first is not None and first.kind != "pronoun" and not _bare_place(words, found) and not (
+        if first is not None and first.kind != "pronoun" and not _bare_place(words, found) \
+                and not _participle_place(words, found) and not (
                 self.topic and (_absent_only(words, found) or _objectless_move(words, found))):
             self.topic, self.topic_kind = first.roles, first.kind
         thing = next((m for m in found if m.kind == "role" and not _placed(words, m)), None)
@@ -1297,7 +1316,9 @@ class _Reader:
                     self.plural.discard(m.roles[0])
         subjects = [m for m in mentions if m.kind in ("role", "pronoun")]
         negated = any(_negation(w) for w in words)
-        already = self._already(words, mentions, negated)
+        # ("If it is already closed" of an air conditioner: off, as the same state is read
+        # without "already", `_switched`)
+        already = [self._switched(f) for f in self._already(words, mentions, negated)]
         if already:
             self.asked_already |= {f.condition for f in already if f.kind == "location"}
             return already, tuple(dict.fromkeys(f.subject for f in already))
@@ -2643,6 +2664,13 @@ def _existential(before: list[str]) -> bool:
             j -= 1
         if j >= 1 and before[j] in _BE_WORDS and before[j - 1] in _THERE_SUBJECTS_BE:
             continue
+        # (the twenty-first session) after a verb of the agent's own and before no "be" or modal,
+        # "there" is where they are: "When you finish up there at night it should be off", "once
+        # you get there"; "I think there is a cloth" is still an existential
+        lemmas = getAllLemmas(before[j]) if j >= 0 else {}
+        if j >= 0 and "VERB" in lemmas and "AUX" not in lemmas and not (
+                k + 1 < len(before) and "AUX" in getAllLemmas(before[k + 1])):
+            continue
         return True
     return False
 
@@ -3488,8 +3516,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             # "Is the desk lamp still on when they have gone?": the question is cut at its time
             # clause, read with "they" as the people, not the lamp (whose absence "gone" asks)
             reader.timed = role == "condition" and cue in _TIME_OPENERS
+            reader.opening = role == "condition" and pi == 0
             facts, names = reader.facts("there is " + said if cue == "should there be" else said)
-            reader.own_it = reader.timed = False
+            reader.own_it = reader.timed = reader.opening = False
             if role == "condition" and not facts and (mixed := reader.code_switched(text, thing)):
                 # "If naka-on pa, pakipatay lang": a condition in another language's grammar
                 # still asks what its English words say, of the item's topic

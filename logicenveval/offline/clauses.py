@@ -796,8 +796,11 @@ def _imperative_cut(cond: str, subjects_only: bool = False) -> int | None:
         # a terse instruction with its verb dropped after a bare state ("if wet into laundry
         # basket", "IF DIRTY ONTO THE PILE"): the direction starts it (`DIRECTIONS`)
         bare = ws[k].group() in DIRECTIONS and ws[k - 1].group() in STATE_WORDS
-        if not subjects_only and (request or bare or imperative(plain[k:k + 2])) or _main_clause(plain, k) \
-                or _subjectless_request(plain, k):
+        # (a main clause's subject and verb are never parted by a bracket: "if it's lying on the
+        # floor (he flings it at tea), hang it" has an aside with a subject and verb of its own)
+        aside = "(" in said[ws[k].start():ws[min(k + 3, len(ws) - 1)].start()]
+        if not subjects_only and (request or bare or imperative(plain[k:k + 2])) \
+                or _main_clause(plain, k) and not aside or _subjectless_request(plain, k):
             # the same words in the text as written (the expansion only lengthens what is before)
             rest = said[ws[k].start():]
             at = cond.lower().rfind(rest)

@@ -1362,10 +1362,13 @@ class _Reader:
         holds only it and its article, and a full stop, colon, dash or line break ends it ("3. The
         folder.", "Mug:", "TOWEL - the green towel ..."). A heading names the topic of what
         follows by its bare kind, so the thing the item then names by its colour ("the blue
-        folder has slipped off the desk") is the heading's one thing, not a second one."""
+        folder has slipped off the desk") is the heading's one thing, not a second one; so does
+        an owner's name before it ("Umpire's hat.")."""
         words, gaps = self.text.words, self.text.gaps
         start = self.text.sentence_start(i)
-        if any(w not in _ARTICLES for w in words[start:i]):
+        # (an owner's name may stand for the article, the twenty-first session: "Umpire's hat.
+        # Stan's white cap ought to be on the hook" is one cap; "Dad's mug.", "Rex's bowl.")
+        if any(w not in _ARTICLES and w not in self.possessors for w in words[start:i]):
             return False
         end = i + n
         return end == len(words) or bool(_SENTENCE_END.search(gaps[end]) or _HEADING.search(gaps[end]))

@@ -34,6 +34,7 @@ from lemminflect import getAllLemmas
 
 from logicenveval.domain.catalog import Catalog, load_catalog
 from logicenveval.offline.clauses import (
+    AGENT_TIMES,
     DOUBT,
     FRONT_LEADS,
     IMPERATIVES,
@@ -1296,7 +1297,8 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         named_end = max((m.end for m in ms if lo <= m.start and m.end <= start), default=lo)
         if set(words[named_end:start]) & NEGATIONS:
             continue  # "the mug never ever stands on the table", "does not sit on": no place stated
-        if kind == "settled" and group[-1] in STATIVE and (set(group) | set(words[k + 1:start])) & NORM_ADVERBS:
+        if kind == "settled" and group[-1] in STATIVE and (
+                (set(group) | set(words[k + 1:start])) & NORM_ADVERBS or _timed_rest(words, clause, group)):
             kind = "kept"  # "flowers that normally sit on the bench": where they belong, not where they are
         subjects = _np_list(sent, ms, lo, start)
         said = [w for w in words[lo:k + 1] if not (guessed or standing) or w not in _CLAUSE_LEADS and w != before]
@@ -1342,6 +1344,9 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
             elif clause.mood == "statement" and words[who:who + 1] == [","] and (
                     _resting_participle(group) or _result_participle(group) and not set(words[lo:who]) & (BE | PERFECT)):
                 subjects = _adjunct_subject(sent, ms, lo, who)  # "the telly's on, sitting on the stand"
+            elif start == 0 and clause.mood == "statement" and _headed_participle(sent, ms, group, end, reading):
+                # "b) My cup. Left on the desk, next to the scales.": the heading's one thing
+                subjects, kind = [last] if last is not None else [], "presumed"
             else:
                 continue
             if not kind:
@@ -1372,6 +1377,24 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         lo = _gapped(sent, clause, ms, holder.end, kind, lex, catalog, reading)
     if clause.mood == "statement":
         _fragment(sent, clause, ms, lex, catalog, reading)
+
+
+def _timed_rest(words: list[str], clause: Span, group: list[str]) -> bool:
+    """Whether a present verb of resting is bounded by a time clause of its own sentence
+    (`clauses.AGENT_TIMES`, the twenty-first session): "It hangs on the hook when nobody's
+    gathering", "The kettle sits on the stove when it's not in use", "the mop stands in the
+    bucket while not in use" say where the thing is at such times, its home, as "usually hangs" does,
+    not where it is now; a later "Found it lying on the floor?" asks. A past ("the coat hung on
+    the hook when I left"), a participle, and a time of the reader's arrival ("when you come in":
+    what they will find, `_arrival_time`) are none, and so is a condition set off after a comma
+    or "and" ("The lamp sits on the desk, and when it's on, ..." asks of the lamp, no time of its
+    resting)."""
+    verb = group[-1]
+    if verb in ENDED_PAST_VERBS or verb.endswith("ing") or not _finite(group) or set(group) & (BE | PERFECT):
+        return False
+    # (the time clause right after the place; one put first makes the whole a condition, read there)
+    return clause.end < len(words) and words[clause.end] in AGENT_TIMES \
+        and _arrival_time(words, clause.end, len(words)) is None
 
 
 def _said_after(words: list[str], lo: int, hi: int, phrases: tuple[tuple[str, ...], ...]) -> bool:
@@ -1742,6 +1765,29 @@ def _result_participle(group: list[str]) -> bool:
     comma (an "it" after "put" is an instruction's object, and no place follows the verb)."""
     verbs = [w for w in group if w not in ADVERBS]
     return len(verbs) == 1 and verbs[0] in RESULT
+
+
+def _headed_participle(sent: _Sentence, ms: list[Mention], group: list[str], end: int, reading: _Reading) -> bool:
+    """Whether a sentence that opens with a bare participle of a result or of resting and names
+    no subject ("Left on the desk, next to the scales, as ever.", "Kept in the nightstand, like
+    always.", "Sitting on the stove, as usual.") speaks of the one thing a verbless heading just
+    before it named ("b) My cup.", "Item 4: Umbrella.", "- Kettle."): the terse register of
+    context sheets, handover notes and logs, which name a thing once as the item's heading and
+    then say where it is with the subject left out, as "My jacket. I left it on the sofa" leaves
+    it to "it" (`_object_it`). Only when the heading has no verb of its own (a statement before
+    it may be of another matter), its subject is one thing, and after the place nothing says the
+    participle is a condition, a question or the modifier of another clause's subject ("My cup.
+    If left on the desk, ...", "Left on the desk?", "Left on the desk overnight, coffee goes
+    mouldy"). Presumed, as a headline's report is (`_headline`): a later condition may ask it."""
+    last, heading = reading.last_subject, reading.last_subject_sent
+    if last is None or heading is None or heading is sent or last.kind != "role" or len(last.roles) != 1:
+        return False
+    if not (_result_participle(group) or _resting_participle(group)) or any(
+            w in VERBS | BE | PERFECT | STATIVE | RESULT | KEEP_VERBS for w in heading.words):
+        return False
+    found = _holder_after(sent, ms, end, len(sent.words))
+    return found is not None and not any(
+        w in VERBS or w in CONDITION_CUES or w == "?" for w in sent.words[found[1].end:])
 
 
 def _adjunct_subject(sent: _Sentence, ms: list[Mention], lo: int, comma: int) -> list[Mention]:
@@ -2183,7 +2229,7 @@ def _kept(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalo
     at the place last named, for "there")."""
     words = sent.words
     for i in range(clause.start, clause.end):
-        if words[i] not in KEEP_VERBS:
+        if words[i] not in KEEP_VERBS and not _provided(words, i, clause):
             continue
         if clause.mood == "instruction" and words[clause.start:i + 1][-1] == words[clause.start]:
             return  # "keep the door shut": an instruction
@@ -2237,6 +2283,32 @@ def _kept(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalo
             if role in lex.roles and role != holder.roles[0]:
                 _put(reading, "kept", catalog, lex, role, holder, prep)
         return
+
+
+#: verbs of letting a thing stay whose present said by the writer of their own doing is a
+#: provision, where the thing is kept for the reader (the twenty-first session): "I leave a towel
+#: on the chair for drying your hands", "We leave a spare blanket in the wardrobe", as "we keep
+#: ..." is (`_provided`)
+PROVIDING = frozenset({"leave"})
+
+
+def _provided(words: list[str], i: int, clause: Span) -> bool:
+    """Whether the verb at `i` is a writer's provision: a verb of `PROVIDING` in its plain present
+    ("leave", not "left", a past report read as such; not "leaves", a third person's habit, which
+    says where a thing tends to go, `_habitually_put`), whose subject "I" or "we" opens its
+    statement, with at most adverbs of a norm or manner between ("I always leave", "we leave";
+    the learner's "I leave always" too). A frequency ("Sometimes I leave the mug on the desk"), a
+    negation, a modal ("I'll leave", "I will leave"), a question's auxiliary ("Do I leave") or a
+    condition ("If I leave") leaves the place open: those are no clause opened by the subject, or
+    no statement."""
+    if clause.mood != "statement" or words[i] not in PROVIDING \
+            or words[i] not in getAllLemmas(words[i]).get("VERB", ()):
+        return False
+    k = i - 1
+    while k >= clause.start and words[k] in ADVERBS | NORM_ADVERBS and words[k] not in FREQUENCY:
+        k -= 1
+    return k >= clause.start and words[k] in ("i", "we") and all(w in _LEADS for w in words[clause.start:k]) \
+        and "?" not in words[clause.end:clause.end + 1]
 
 
 def _with(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, catalog: Catalog,
