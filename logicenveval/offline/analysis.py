@@ -1157,7 +1157,8 @@ class _Reader:
             elif (w == "it" and words[i + 1 : i + 3] in (["is", "a"], ["is", "an"])
                   or w in ("it", "they") and i > 0 and words[i - 1] in ("is", "are", "was", "were")
                   and i - 1 in self.commas
-                  or w in ("it", "they") and i > 0 and words[i - 1] in CONJOINED_SUBJECT
+                  or w in ("it", "they") and i > 0 and (words[i - 1] in CONJOINED_SUBJECT or words[i - 2:i] in (
+                      [c, "if"] for c in CONJOINED_SUBJECT))
                   and words[i + 1 : i + 2] in ([b] for b in COPULAS)) and len(before) > 1:
                 # "a document on the desk and it is a bill": the pronoun of a predicate noun is the
                 # clause's subject, not a place named after a preposition; so is the pronoun of a
@@ -2869,8 +2870,10 @@ def _elided(reader: _Reader, condition: str, names: tuple[str, ...], instruction
 
 
 #: the conjunctions after which a pronoun opening a conjunct with its verb "be" is the subject of
-#: the conjunct before ("a plate on the counter and it is dirty"), not a place named in it
-CONJOINED_SUBJECT = frozenset({"and", "but"})
+#: the conjunct before ("a plate on the counter and it is dirty"), not a place named in it; so
+#: after an alternative's "or" ("if the mug is on the desk, or it's on the floor", "or if it's
+#: on the floor": the twenty-first session)
+CONJOINED_SUBJECT = frozenset({"and", "but", "or"})
 #: the forms of "be" (and "seem", "look") that make that conjunct say a state of the pronoun
 COPULAS = frozenset({"is", "are", "was", "were", "seems", "seem", "looks", "look", "feels", "feel"})
 
