@@ -650,6 +650,31 @@ def _later_object(words: list[str], found: list[Mention], commas: frozenset[int]
     return None
 
 
+#: the words that open a clause of result after its reason ("We need light at the desk, so the desk
+#: lamp should be on", "The stove remains in use; therefore the pot must be clean")
+RESULT_CUES = frozenset({"so", "therefore", "hence", "thus", "consequently"})
+
+
+def _result_subject(words: list[str], found: list[Mention], first: Mention | None) -> Mention | None:
+    """The thing a sentence speaks of when a clause of result follows its reason ("We need light at
+    the desk, so the desk lamp should be on. If it's off, ...", "grandma sleeps on the sofa tonight,
+    so the blanket has to be clean. if it's dirty, ..."): the reason says why, the result says what
+    must be so of its subject, and a pronoun after it means that subject, not the reason's first
+    thing; otherwise `first`. Only a result whose subject is a thing named right after the cue
+    (determiners between) and followed by its predicate; "so" before an instruction ("so bring it
+    to the sink"), a condition ("so if it's wet"), a degree ("so dirty") or an inversion ("and so is
+    the mug") opens no such clause."""
+    if first is None or first.kind not in ("role", "floor"):
+        return first
+    for k in (k for k, w in enumerate(words) if w in RESULT_CUES and k > first.start):
+        subject = next((m for m in found if m.kind == "role" and m.start > k), None)
+        if subject is not None and all(w in ARTICLES for w in words[k + 1:subject.start]) \
+                and subject.end < len(words) and (words[subject.end] in _PREDICATE_OPENERS
+                                                  or words[subject.end] in CLAUSE_WORDS):
+            return subject
+    return first
+
+
 #: prepositions of a fronted place, a covering verb's "across" and "over" included
 _FRONT_PREPS = frozenset({"on", "in", "inside", "upon", "atop", "across", "over"})
 #: the words that tie a second place to a fronted place ("on the mantelpiece above the fireplace",
@@ -1145,7 +1170,8 @@ class _Reader:
             elif (w == "it" and words[i + 1 : i + 3] in (["is", "a"], ["is", "an"])
                   or w in ("it", "they") and i > 0 and words[i - 1] in ("is", "are", "was", "were")
                   and i - 1 in self.commas
-                  or w in ("it", "they") and i > 0 and words[i - 1] in CONJOINED_SUBJECT
+                  or w in ("it", "they") and i > 0 and (words[i - 1] in CONJOINED_SUBJECT or words[i - 2:i] in (
+                      [c, "if"] for c in CONJOINED_SUBJECT))
                   and words[i + 1 : i + 2] in ([b] for b in COPULAS)) and len(before) > 1:
                 # "a document on the desk and it is a bill": the pronoun of a predicate noun is the
                 # clause's subject, not a place named after a preposition; so is the pronoun of a
@@ -1246,6 +1272,7 @@ class _Reader:
         # filling the mister at the sink first if it has run empty")
         first = _later_object(words, found, self.commas | self.dashes) or first
         first = _fronted_thing(words, found, first)
+        first = _result_subject(words, found, first)
         lead = next((k for k, w in enumerate(words) if w not in _HEDGE_LEADS), len(words))
         if words[lead:lead + 2] in _IDENTIFYING and words[lead + 2:lead + 3] and words[lead + 2] in ARTICLES:
             # "Tech log ... ON BRIEFING DESK. It's the blue binder - if it's been knocked onto the
@@ -2871,8 +2898,10 @@ def _elided(reader: _Reader, condition: str, names: tuple[str, ...], instruction
 
 
 #: the conjunctions after which a pronoun opening a conjunct with its verb "be" is the subject of
-#: the conjunct before ("a plate on the counter and it is dirty"), not a place named in it
-CONJOINED_SUBJECT = frozenset({"and", "but"})
+#: the conjunct before ("a plate on the counter and it is dirty"), not a place named in it; so
+#: after an alternative's "or" ("if the mug is on the desk, or it's on the floor", "or if it's
+#: on the floor": the twenty-first session)
+CONJOINED_SUBJECT = frozenset({"and", "but", "or"})
 #: the forms of "be" (and "seem", "look") that make that conjunct say a state of the pronoun
 COPULAS = frozenset({"is", "are", "was", "were", "seems", "seem", "looks", "look", "feels", "feel"})
 

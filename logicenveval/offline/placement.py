@@ -2374,20 +2374,25 @@ def _in_room(sent: _Sentence, clause: Span, ms: list[Mention], reading: _Reading
             continue
         if determiner(words, a.start) in NEGATIONS:
             continue  # "No pan in the kitchen?", "no towel in the bathroom": the thing is denied there
+        if clause.mood == "condition" and set(between) & BE:
+            continue  # "If the book is in the bedroom, bring it": the room is what the condition asks
         if clause.doubted and clause.mood == "statement":
             continue  # "I believe I may have left my watch in the flat": a hedged place is open
         reading.room("settled", a.roles[0], b.roles[0])  # a noun phrase's own place, whatever the mood
 
 
-def _room_asked(words: list[str], clause: Span, start: int, after_room: int) -> bool:
+def _room_asked(words: list[str], clause: Span, thing: int, after_room: int) -> bool:
     """"Is there a towel in the bathroom?", "Is the laptop in the study?", "Are the keys still in
     the hall?": a yes/no question (opening with a form of "be") whose room ends it asks whether the
     thing is in that room, which the factor reader reads; the room of a question that goes on to
     ask something else ("Is the lamp in the bedroom on?") still says which thing is meant. So does
-    a verbless one, the thing (at `start`) and its room only ("Pan in the kitchen? Then ...", "Any
-    towels in the bathroom?"), as a checklist, a note or a broadcast asks it."""
+    a question with no verb before its thing (the thing at word `thing`): a verbless one ("Book in
+    the bedroom? If so, ...", "Pan in the kitchen? Then ...", "Any towels in the bathroom?", a
+    checklist's "Mug in the study? -> ...") or one in a statement's order ("The book is in the
+    bedroom?"), as a checklist, a note or a broadcast asks it."""
     lead = next((w for w in words[clause.start:after_room] if w not in LEAD_INS), "")
-    verbless = all(w in LEAD_INS or w in ARTICLES or w in NEGATIONS for w in words[clause.start:start])
+    verbless = all(w in LEAD_INS or w in ARTICLES or w in NEGATIONS or not w.isalnum()
+                   for w in words[clause.start:thing])
     rest = words[after_room:clause.end + 1]
     return (lead in BE or verbless) and "?" in rest and all(
         w in ADVERBS or w in {"now", "right", "?"} for w in rest[:rest.index("?") + 1])

@@ -922,6 +922,37 @@ COMMENT_ASIDES = ("as ever", "as always", "as usual", "of course", "naturally", 
 _COMMENT_ASIDE = re.compile(rf"(?<=\w),\s+(?:{'|'.join(re.escape(a) for a in COMMENT_ASIDES)}),\s+(?=\w)", re.I)
 
 
+#: the subjects an alternative condition opens with after its "or" ("or we have none at all", "or
+#: it's on the floor", "or if there isn't one", "or should it be on"): a clause, not a second thing
+#: or an alternative instruction ("- or put it in the basket", "- or on the desk")
+_ALTERNATIVE_SUBJECTS = ("we", "you", "they", "it", "there", "i", "he", "she", "someone", "somebody", "nobody",
+                         "no one")
+_DASH_MARK = r"(?:-|--|\u2013|\u2014)"
+#: an alternative condition set off by dashes or a bracket, or closed by a colon or an arrow ("If
+#: it is anywhere else - or we have none at all - leave it", "If the book is on the sofa (or it's
+#: on the floor), ...", "If it's anywhere else, or we have none: leave it", "The detergent is
+#: anywhere else - or we have none at all.", or a quiz's case turned into a condition, "If it is
+#: anywhere else - or we have none at all, leave it"): written with commas ("If it is anywhere else, or we
+#: have none at all, leave it"), as the condition reader reads two alternatives; the dash, the
+#: bracket or the colon otherwise cut the alternative off as an aside or an instruction
+_SET_OFF_ALTERNATIVE = re.compile(
+    rf"(?P<open>[ \t]+{_DASH_MARK}[ \t]+|[ \t]*\(|,[ \t]*)"
+    rf"(?P<alt>or[ \t]+(?:(?:if|should|when)[ \t]+)?(?:{'|'.join(s.replace(' ', '[ ]') for s in _ALTERNATIVE_SUBJECTS)})"
+    r"\b[^,.?!;:\n()\u2013\u2014-]*?)"
+    rf"(?P<end>[ \t]+{_DASH_MARK}[ \t]+|[ \t]*\)[ \t]*,?[ \t]*|[ \t]*(?::|->|\u2192)[ \t]*|(?=[ \t]*[.?!])|(?<=[^,])(?=,))",
+    re.I)
+
+
+def _set_off_alternative(m: re.Match[str]) -> str:
+    """`_SET_OFF_ALTERNATIVE`'s alternative between commas (a comma after it only where something
+    follows in the sentence). A bracket is one only with both its marks: in "> NO (the bread is
+    somewhere else, or we are out of bread): skip the toast" the bracket is an answer's gloss, and
+    its alternative after a comma is read within it already."""
+    if (m.group("open").strip() == "(") != (m.group("end").strip().startswith(")")):
+        return m.group(0)
+    return f", {m.group('alt')}" + (", " if m.group("end") and not m.string.startswith(",", m.end()) else "")
+
+
 #: connectives a writer may break off after, an aside between dashes before the clause they open
 #: ("If - and it does happen - the lamp is on, ...", "Unless - ah, unless! - the dishwasher is
 #: already running: ...", "When - not if - the bin is full, ..."): the aside says how the writer
@@ -1601,6 +1632,7 @@ def unquote(text: str) -> str:
     `_SUBJECT_LAST_IF`), "connected" for on (`connected_as_on`) and a place put before an
     existential after it (`_PLACE_FIRST_EXISTENTIAL`)."""
     text = _DASHED_ASIDE.sub(r"\g<cue> ", answered_questions(keyed_answers(dealias(text))))
+    text = _SET_OFF_ALTERNATIVE.sub(_set_off_alternative, text)
     text = _SUPPOSED_IF.sub(_occasion_if, _OCCASION_IF.sub(_occasion_if, _COMMENT_ASIDE.sub(" ", _QUOTED_WHOLE.sub(r"\1", text))))
     text = _SUBJECT_LAST_IF.sub(_subject_last_if, _SUBJECT_LAST.sub(_subject_last, connected_as_on(text)))
     text = _PLACE_FIRST_EXISTENTIAL.sub(_place_first_existential, text)
