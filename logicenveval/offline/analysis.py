@@ -499,7 +499,11 @@ def _plural_only(word: str) -> bool:
 #: words of operation: said of a thing, it is switched on ("if the oven is working", "the fan is
 #: still going"); `_Reader._offered` reads them as the state `OPERATION`, never as an attribute
 OPERATION = "toggled_on"
-OPERATION_WORDS = frozenset({"working", "operating", "functioning", "going", "running", "whirring", "humming"})
+OPERATION_WORDS = frozenset({"working", "operating", "functioning", "going", "running", "whirring", "humming",
+                             # a light or a kettle going ("the lamp is still shining", "the kettle
+                             # is whistling"): of a thing that cannot be switched on ("the floor is
+                             # shining") nothing is read (`_offered`)
+                             "shining", "whistling"})
 #: words of a machine's being out of order in the varieties and registers of English, said as a
 #: predicate ("the ceiling fan spoil already" and "the kettle is spoilt" in Singapore, Malaysian,
 #: Indian and Nigerian English; "the printer's kaput", "the toaster's bust", "the drill is

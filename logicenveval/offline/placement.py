@@ -274,7 +274,7 @@ def described_placements(brief: Mapping[str, Any], catalog: Catalog | None = Non
 # Tokens, mentions, clauses
 # ---------------------------------------------------------------------------------------------
 
-_TOKEN = re.compile(r"[a-z0-9]+(?:'[a-z]+)?|[,;:()?]|(?<=\s)[-\u2013\u2014](?=\s)|\n")
+_TOKEN = re.compile(r"[a-z0-9]+(?:'[a-z]+)?|[,;:()?]|(?<=\s)-(?=\s)|\n")
 
 
 @dataclass(frozen=True)
@@ -327,14 +327,27 @@ _THEN_ARROW = re.compile(rf"(?<![?:!])\s*{ARROW_MARK}\s*")
 #: "✓ keys in the bowl"): the nineteenth session reads it as the item's boundary, as a
 #: semicolon, so the line is a list item of its own and not the tail of the line before
 _TICK_BOX = re.compile(r"^[ \t]*(?:\[[ \t]*[xX\u2713\u2714]?[ \t]*\]|[\u2713\u2714\u2611\u2610])[ \t]*", re.M)
+#: a box after an item's label mark, the checklist written item first ("Mug — [x] on the shelf",
+#: "Laptop: [x] on the desk", "Lamp: [ ] on the desk"): a ticked box says the line holds, so it is
+#: dropped and the label reads its place as "Mug — on the shelf" does; an unticked one says it
+#: is not (yet) so, so it cuts the line as a full stop would, and the place after it is no one's
+_LABELLED_TICK = re.compile(r"(?<=[:\-\u2013\u2014])[ \t]*(?:\[[ \t]*[xX\u2713\u2714][ \t]*\]|[\u2713\u2714\u2611])[ \t]*")
+_LABELLED_UNTICKED = re.compile(r"(?<=[:\-\u2013\u2014])[ \t]*(?:\[[ \t]*\]|\u2610)[ \t]*")
+
+
+#: an en or em dash set off by spaces is the dash a clause or a label ends at, as " - " is
+#: ("Mug — on the counter", "Lamp – switch it off"): the clause cut (`clauses._HARD`) knows "-"
+#: only, so the tokens read every such dash as "-"
+_DASHES = re.compile(r"(?<=\s)[\u2013\u2014](?=\s)")
 
 
 def _sentences(text: str, lex: Lexicon) -> list[_Sentence]:
     out = []
-    for part in split_sentences(expand(_TICK_BOX.sub("; ", text)), full_stops_only=True):
+    boxed = _LABELLED_UNTICKED.sub(". ", _LABELLED_TICK.sub(" ", _TICK_BOX.sub("; ", text)))
+    for part in split_sentences(expand(boxed), full_stops_only=True):
         low = _THEN_ARROW.sub(": ", part.lower())
         toks = [_Token(m.group(0), singular(m.group(0)) if m.group(0)[0].isalnum() else m.group(0),
-                       m.start(), m.end()) for m in _TOKEN.finditer(low)]
+                       m.start(), m.end()) for m in _TOKEN.finditer(_DASHES.sub("-", low))]
         toks = [t for t in toks if t.word != "\n"]
         mentions = lex.find_mentions([(t.lemma, t.start, t.end) for t in toks])
         for drop in (_without_asides, _held_in_aside):
@@ -1132,14 +1145,17 @@ def _heading(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Reading)
     if len(head) != 1 or head[0].kind == "role" and len(head[0].roles) != 1:
         return 0
     place = head[0]
-    filler = [w for i, w in enumerate(words[:colon]) if not place.start <= i < place.end]
-    if not all(w in AT | ARTICLES | _LEADS for w in filler):
+    lo = _label_before(words, place.start)
+    filler = [words[i] for i in range(lo, colon) if not place.start <= i < place.end]
+    if not all(w in AT | ARTICLES | _LEADS or _heading_lead(filler, k) for k, w in enumerate(filler)):
         return 0
-    prep = next((w for w in filler if w in AT), "in")
+    prep = next((w for w in reversed(words[lo:place.start]) if w in AT), "in")  # "On display in the case"
     if place.kind == "role" and prep not in AT:
         return 0
     if place.kind == "role" and not set(filler) & AT:
-        return 0  # "Plate: ...", "Two toy boxes: ...": the thing spoken of, not a place
+        if not _holder_over_list(sent, place, colon, catalog, lex):
+            return 0  # "Plate: ...", "Two toy boxes: ...": the thing spoken of, not a place
+        prep = "on"  # "DESK: laptop": on a surface, in a container that is none (`_contain`)
     body = [m for m in sent.mentions if m.start > colon]
     for clause in _clauses(words, colon + 1, len(words)):
         if clause.mood == "condition" and place.kind != "room":
@@ -1155,6 +1171,58 @@ def _heading(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Reading)
     if place.kind == "room":
         reading.context_room = place.roles[0]
     return colon + 1
+
+
+#: nouns of being shown that "on" makes a state of place before a heading's own preposition ("On
+#: display in the cabinet: a vase", "on show on the shelf", "on view in the case"): a museum
+#: label's, a shop window's or an exhibition list's way of saying where the things are
+ON_SHOW = frozenset({"display", "show", "view"})
+
+
+def _heading_lead(filler: list[str], k: int) -> bool:
+    """Whether the heading word `filler[k]` leads into its place and leaves it a place where things
+    are: a participle that states where a thing is (`PASSIVE_STATIVE`, `OBSERVED`: "Found on the
+    floor: a sock, a mug", "Left on the bed: a towel", "Noted on the desk: a cup") opening the
+    heading right before its preposition, or "on display" / "on show" before one. Why: lost-property
+    lists, inventories, museum labels and inspection notes put the participle first; a base form
+    ("Put on the counter: ...", "Set on the counter: ...") may be an instruction, and a participle
+    of wanting ("Wanted on the desk: a lamp") says no thing is there, so neither is read; "Kept in
+    the drawer:" (`KEEP_VERBS`) says where things belong, not where they are now."""
+    before_place = k + 1 < len(filler) and filler[k + 1] in AT
+    if k == 0:
+        return before_place and filler[k] in (PASSIVE_STATIVE | OBSERVED) - KEEP_VERBS
+    return filler[k] in ON_SHOW and filler[k - 1] == "on" and before_place
+
+
+def _label_before(words: list[str], start: int) -> int:
+    """Where a heading's place phrase begins, after a label that names nothing: a document's field
+    or entry ("Contents, counter: 2 x mugs", "Room 12 - Nightstand: phone", "Shelf 3, on the left
+    - ...") set off by a comma or a dash before the place. A label with a condition, a doubt or a
+    negation ("If dirty, sink: ...") is no label: the heading is read as before (from its start)."""
+    mark = max((k for k in range(start) if words[k] in _HEADING_LABEL_MARKS), default=-1)
+    if mark < 0 or set(words[:mark]) & (SUBORDINATORS | DOUBT | NEGATIONS | {"if", "unless"}):
+        return 0
+    return mark + 1
+
+
+def _holder_over_list(sent: _Sentence, place: Mention, colon: int, catalog: Catalog, lex: Lexicon) -> bool:
+    """Whether a heading that is a holder's bare name heads a list of the things it holds ("DESK:
+    laptop, lamp", "Fridge: two apples", "Counter: 2 x mugs, the kettle"): an inventory's,
+    a packing list's, a stage plot's or a note's way of writing "on the desk: ...". Only a holder
+    (a surface or a container) and a body that is nothing but a list of things (names, articles,
+    colours, counts and the list's commas): a word of its own after the colon ("Plate: clean - into
+    the cabinet", "Lamp: switch it off", "Bed: pillow on the floor?") makes the heading the thing
+    spoken of, as before."""
+    cat = catalog.get(str(lex.roles[place.roles[0]]["category"])) if len(place.roles) == 1 else None
+    if cat is None or not (cat.surface or cat.container):
+        return False
+    words = sent.words
+    end = len(words) - (words[-1:] in ([","], ["."], [";"], ["!"]))
+    covered = {k for m in sent.mentions if m.start > colon for k in range(m.start, m.end)}
+    things = [m for m in sent.mentions if m.start > colon and m.kind == "role" and m.roles != place.roles]
+    return bool(things) and all(m.kind == "role" for m in sent.mentions if m.start > colon) and all(
+        k in covered or words[k] in LIST_GLUE or words[k] in COLOR_WORDS or _quantity(words, k)
+        for k in range(colon + 1, end))
 
 
 def _indefinite_doubt(sent: _Sentence, m: Mention) -> bool:
@@ -1682,7 +1750,10 @@ def _premodifiers(words: list[str], start: int, first: int) -> set[int]:
 
 
 #: the marks after a label in a record, a list or a form ("Torch: on the bench", "Keys - in the drawer")
-_LABEL_MARKS = frozenset({":", "-", "\u2013", "\u2014"})
+_LABEL_MARKS = frozenset({":", "-"})  # (an en or em dash is read as "-": `_DASHES`)
+#: what closes a document's label before a heading's place ("Contents, counter: ...", "Room 12 -
+#: Nightstand: ...")
+_HEADING_LABEL_MARKS = frozenset({","}) | _LABEL_MARKS - {":"}
 #: what ends the stretch before a label
 _LABEL_STOPS = frozenset({".", ";", ",", "(", ")", "\n", "?"}) | _LABEL_MARKS
 

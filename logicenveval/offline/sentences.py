@@ -871,7 +871,13 @@ SOUNDS = {"ring": "ringing", "rings": "ringing", "beep": "beeping", "beeps": "be
           "buzz": "buzzing", "buzzes": "buzzing", "bleep": "beeping", "bleeps": "beeping",
           "burn": "burning", "burns": "burning", "run": "running", "runs": "running",
           "glow": "glowing", "glows": "glowing", "spin": "spinning", "spins": "spinning",
-          "whirr": "whirring", "whirrs": "whirring", "play": "playing", "plays": "playing"}
+          "whirr": "whirring", "whirrs": "whirring", "play": "playing", "plays": "playing"} | {
+    # (the twenty-first session) a thing's steady activity while it is going, said of a machine
+    # or a light: "if the fan still hums", "if the lamp still shines", "when the kettle
+    # whistles"; their forms by the lemmatiser, the "-ing" form read as a word of operation
+    # (`analysis.OPERATION_WORDS`), so only of a thing that switches on
+    form: str(getInflection(verb, "VBG")[0]) for verb in ("hum", "shine", "whistle")
+    for form in (verb, str(getInflection(verb, "VBZ")[0]))}
 #: the adverbs of time and the negations that may stand between the subject and the verb
 _SOUNDING_BEFORE = {"still": "still", "already": "already", "no longer": "no longer", "not": "not",
                     "doesn't": "not", "does not": "not", "don't": "not", "do not": "not",
