@@ -22,6 +22,16 @@ such, a state said of an earlier time and asked again, a condition without its c
 between dashes after the connective or of habit in brackets after the condition, a future "will
 be" asked by "if so") are measured alone with `--new`.
 
+The twenty-first session's grid is not composed from tables but written out, sentence by sentence,
+in eleven registers (a text message, a legal notice, a child's note, a recipe, a workplace SOP,
+a radio log, a forum post, a poem-like note, a formal letter, learner English of a German and of a
+Spanish speaker): `tests/data/condition_forms/forms_twentyfirst.tsv`, each row a whole short
+description with its room, the fact its condition asks and the branch its action falls under, or
+a near miss (a stated fact, a time clause that is no condition) whose fact must not be asked. Its
+line, `condition_forms twentyfirst read=... branch=... sentences=... false=...`, counts the
+conditions read and branched over the rows with a condition, and the near misses read as one;
+`--twentyfirst` measures that grid alone, by form and register.
+
 Combinations that English does not form ("Should the lamp might be on") are left out by the
 tables (`None` cells), so every sentence measured is one a writer could write.
 
@@ -29,6 +39,7 @@ tables (`None` cells), so every sentence measured is one a writer could write.
     python benchmarks/condition_forms.py --why      # and every sentence misread
     python benchmarks/condition_forms.py --smoke    # a small sample, seconds
     python benchmarks/condition_forms.py --new      # the thirteenth session's forms only
+    python benchmarks/condition_forms.py --twentyfirst  # the written grid only, by form and register
 """
 
 from __future__ import annotations
@@ -36,6 +47,7 @@ from __future__ import annotations
 import argparse
 from collections import defaultdict
 from dataclasses import dataclass, replace
+from pathlib import Path
 from typing import Any
 
 from logicenveval.domain.catalog import Catalog, load_catalog
@@ -359,6 +371,55 @@ def reading(case: Case, catalog: Catalog) -> tuple[bool, bool]:
 
 DIMENSIONS = ("connective", "subject", "verb", "state")
 
+#: the twenty-first session's written grid (the module docstring)
+TWENTYFIRST = Path(__file__).resolve().parent.parent / "tests" / "data" / "condition_forms" / "forms_twentyfirst.tsv"
+
+
+def twentyfirst_cases(path: Path = TWENTYFIRST) -> list[tuple[Case, bool]]:
+    """The written grid's rows as cases, each with whether it is a near miss (its fact must not
+    be asked); `connective` holds the row's form and `state` its register."""
+    out: list[tuple[Case, bool]] = []
+    for line in path.read_text(encoding="utf-8").splitlines():
+        if not line.strip() or line.startswith("#"):
+            continue
+        register, form, room, fact, branch, action, text = line.split("\t")
+        kind = fact[fact.index("(") + 1:fact.index(",") if "," in fact else fact.index(")")]
+        out.append((Case(text, fact, form, "", "", register, kind, room, action, branch == "no"), branch == "none"))
+    return out
+
+
+def measure_twentyfirst(catalog: Catalog, *, why: bool = False, by: bool = False) -> str:
+    """The written grid's line: conditions read and branched over the rows with a condition, and
+    the near misses whose fact was asked (`false`); `by` prints the figures by form and register,
+    `why` every row misread."""
+    read = branch = total = false = misses = 0
+    tally: dict[str, dict[str, list[int]]] = {"form": defaultdict(lambda: [0, 0, 0]),
+                                              "register": defaultdict(lambda: [0, 0, 0])}
+    for case, near_miss in twentyfirst_cases():
+        ok, under = reading(case, catalog)
+        if near_miss:
+            misses += 1
+            false += ok
+            if ok and why:
+                print(f"FALSE [{case.connective} | {case.state}] {case.fact}: {case.text}")
+            continue
+        read += ok
+        branch += under
+        total += 1
+        for d, value in (("form", case.connective), ("register", case.state)):
+            tally[d][value][0] += ok
+            tally[d][value][1] += under
+            tally[d][value][2] += 1
+        if why and not under:
+            print(f"{'BRANCH' if ok else 'MISSED'} [{case.connective} | {case.state}] {case.fact}: {case.text}")
+    if by:
+        for d, cells in tally.items():
+            print(f"twentyfirst by {d}:  read  branch")
+            for value, (good, right, n) in sorted(cells.items(), key=lambda kv: kv[1][1] / kv[1][2]):
+                print(f"  {value:28s} {good:3d}/{n:<3d} {good / n:.3f}  {right / n:.3f}")
+    return (f"condition_forms twentyfirst read={read / max(total, 1):.4f} branch={branch / max(total, 1):.4f} "
+            f"sentences={total + misses} false={false}/{misses}")
+
 
 def _old(case: Case) -> bool:
     """Whether the case is a cell of the grid as it stood before the thirteenth session."""
@@ -370,8 +431,13 @@ def main() -> None:
     ap.add_argument("--why", action="store_true", help="print every sentence misread")
     ap.add_argument("--smoke", action="store_true", help="every 25th sentence only (seconds)")
     ap.add_argument("--new", action="store_true", help="the forms added in the thirteenth session only")
+    ap.add_argument("--twentyfirst", action="store_true",
+                    help="the twenty-first session's written grid only, by form and register")
     args = ap.parse_args()
     catalog = load_catalog()
+    if args.twentyfirst:
+        print(measure_twentyfirst(catalog, why=args.why, by=True))
+        return
     todo = cases()[::25] if args.smoke else cases()
     if args.new:
         todo = [c for c in todo if not _old(c)]
@@ -411,6 +477,7 @@ def main() -> None:
     new = len(todo) - old[2]
     print(f"condition_forms new forms read={(read - old[0]) / max(new, 1):.4f} "
           f"branch={(branch - old[1]) / max(new, 1):.4f} sentences={new}")
+    print(measure_twentyfirst(catalog, why=args.why))
     print(f"condition_forms overall={read / len(todo):.4f} branch={branch / len(todo):.4f} read={read} "
           f"sentences={len(todo)}")
 

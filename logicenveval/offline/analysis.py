@@ -25,6 +25,8 @@ from lemminflect import getAllLemmas, getInflection
 from logicenveval.domain.catalog import Catalog, Category, load_catalog
 from logicenveval.domain.lemmas import noun_plurals
 from logicenveval.offline.clauses import (
+    AGENT_TIMES,
+    AGENTS,
     ANAPHORIC,
     ARTICLES,
     AVAILABILITY,
@@ -63,6 +65,7 @@ from logicenveval.offline.lexicon import (
 from logicenveval.offline.placement import LEFT_PASSIVES, RESULT, STATIVE, described_placements
 from logicenveval.offline.sentences import (
     ACTIONS,
+    DISCOVERY,
     EVENT_VERBS,
     FORMS,
     FOUND_PARTICIPLES,
@@ -565,11 +568,11 @@ FILLINGS = frozenset({"water", "coffee", "tea", "milk", "juice", "soup", "liquid
 #: told by (`_in_time_clause`)
 _TIME_OPENERS = frozenset({"when", "whenever", "once", "after", "until", "till", "before"})
 #: of `_TIME_OPENERS`, those that say *at* what time a state is asked ("Spinning when you come
-#: in?", "still on once we've left?", `_before_time_clause`, as `clauses.AGENT_TIMES` tells the
-#: splitter): "before", "after", "until" with the reader as subject more often say by when or how
-#: long ("keep it on until you leave"), and cutting at them too would change what is read, so the
-#: narrower use stays a part of the one table, not a second list
-_TIME_CUES = _TIME_OPENERS - {"after", "until", "till", "before"}
+#: in?", "still on once we've left?", `_before_time_clause`): the splitter's own table of them,
+#: `clauses.AGENT_TIMES` (its "while" opens no time a state is asked at here); "before", "after",
+#: "until" with the reader as subject more often say by when or how long ("keep it on until you
+#: leave"), and cutting at them too would change what is read
+_TIME_CUES = AGENT_TIMES & _TIME_OPENERS
 
 
 #: `TRAILING_ADVERBIALS` as word tuples
@@ -2307,8 +2310,6 @@ def _copy(a: TaskAnalysis) -> TaskAnalysis:
     )
 
 
-#: people who act: a condition about what they do ("when you put it away") is no situation
-AGENTS = frozenset({"you", "we", "i"})
 #: adverbs of a norm ("Normally a fresh diaper is lying on the changing table"): a statement
 #: with one says how things should be, not what the situation is
 NORMS = frozenset({"normally", "usually", "generally", "ordinarily", "typically"})
@@ -2318,10 +2319,6 @@ def _norm(clause: Clause) -> bool:
     return bool({w for w, _, _ in tokens(clause.text)} & NORMS)
 
 
-#: verbs of coming upon a thing: "should you find it there", "if you spot them", "in case you see
-#: it" say no more than "if it is there" (what was just said of it), not what someone does
-DISCOVERY = frozenset({"find", "found", "spot", "spotted", "see", "saw", "seen", "notice", "noticed", "discover",
-                       "discovered", "come", "came", "across", "upon"})
 
 
 _HERE = frozenset({"there", "here"})
@@ -2859,8 +2856,9 @@ RESULT_VERBS: dict[str, str] = {
 SIGN_OFFS = frozenset({"thx", "thanks", "thank", "ta", "cheers", "cheer", "ty", "pls", "plz", "please"})
 
 #: the words an elided condition has besides its subject ("if it isn't already", "unless they
-#: already are", "if it has not been yet"): no state, place or thing of its own
-_ELIDED_WORDS = ALREADY_FILLER | {"has", "have", "had", "done", "do", "does", "did", "pls", "please"}
+#: already are", "if it has not been yet"): no state, place or thing of its own, and a note's
+#: thanks or plea (`SIGN_OFFS`: "if not already pls")
+_ELIDED_WORDS = ALREADY_FILLER | {"has", "have", "had", "done", "do", "does", "did"} | SIGN_OFFS
 
 
 def _elided(reader: _Reader, condition: str, names: tuple[str, ...], instruction: str) -> list[Fact]:
@@ -3877,9 +3875,16 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                         c.role == "statement" and not c.facts for c in clauses[:ci - 1] if c.sentence == cl.sentence):
                 # "Switch it off if it is on", "Empty it only if it is full", "The sock - pick it
                 # up if it is on the floor": an instruction opening the sentence (after a topic
-                # at most), its condition put after it, is the condition's branch
+                # at most), its condition put after it, is the condition's branch; before a
+                # trailing "unless" ("Close the curtains unless they're shut already", "fold up
+                # the brolly unless it's still wet") it is the branch where the condition does
+                # not hold, as after a leading one (the clauses after it, "- in that case ...",
+                # stay under the condition holding); a forbidden instruction before it ("dont
+                # turn my lamp on unless it's off", "I never clean the fridge unless it's dirty")
+                # is done only where the condition holds
+                forbidden = bool(set(re.findall(r"[a-z]+", expand(clauses[ci - 1].text).lower())) & NEGATIONS)
                 entry.setdefault("consequences", []).append(clauses[ci - 1].text)
-                entry.setdefault("under", []).append(holds[slot])
+                entry.setdefault("under", []).append(holds[slot] != (cl.cue == "unless" and not forbidden))
         context += added
         if (cl.role in ("consequence", "else") or answers_premise and cl.role == "statement") \
                 and last_key is not None:

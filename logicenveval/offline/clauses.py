@@ -67,7 +67,8 @@ POINTING_CUES = frozenset({"if so"})
 #: when a question is asked of the scene ("Is the light on when you're done for the day? Then
 #: switch it off"): the question is the condition, the time clause none
 AGENT_TIMES = frozenset({"when", "whenever", "once", "while"})
-#: who acts in such a time clause
+#: who acts in such a time clause, and for the factor reader in any condition: one about what
+#: they do ("when you put it away", "if u find it there") is no situation (`analysis`)
 AGENTS = frozenset({"you", "we", "i", "u"})
 #: other people a question's time clause may be told by ("Is the lamp still on when they have
 #: gone?", "... once everyone has left?", "... when the last of them has gone?"): as the agent's,

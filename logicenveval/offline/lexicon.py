@@ -234,8 +234,9 @@ def _abbreviates(short: str, category: str) -> bool:
 #: a name may open its sentence
 TITLES = frozenset({"mr", "mrs", "ms", "miss", "lady", "lord", "sir", "dame", "captain", "doctor", "dr", "prince",
                     "princess", "king", "queen", "aunt", "auntie", "uncle", "professor", "sergeant"})
-#: a greeting's first word: "Hi Sam, your mug ..." names the reader, not the mug
-_GREETINGS = frozenset({"hi", "hey", "hello", "dear", "morning", "evening", "thanks", "cheers", "love", "yo"})
+#: a greeting's first word: "Hi Sam, your mug ..." names the reader, not the mug (and a letter's
+#: or a message's salutation ends its own line: `sentences._SALUTATION`)
+GREETINGS = frozenset({"hi", "hey", "hello", "dear", "morning", "evening", "thanks", "cheers", "love", "yo"})
 _NAME = r"[A-Z][a-z]+\.?(?:\s+[A-Z][a-z]+){0,2}"
 _NOUN = r"[a-z]+(?:\s+[a-z]+){0,2}?"
 _NOUN_END = r"(?=\s*(?:[,.;:!?)]|$)|\s+(?:who|which|that|is|was|has|had|sat|sits|lay|lies)\b)"
@@ -272,7 +273,7 @@ def _named_things(text: str, phrases: Mapping[tuple[str, ...], set[str]]) -> dic
         lead = text[:m.start("name")].rstrip(" \t")
         opens = not lead or lead[-1] in ".!?:\n\"'(-*" or bool(_ITEM_LABEL_END.search(lead))
         first = name.split()[0].lower().rstrip(".")
-        if opens and first not in TITLES and (len(name.split()) < 2 or first in _GREETINGS):
+        if opens and first not in TITLES and (len(name.split()) < 2 or first in GREETINGS):
             continue
         if m.re is _NAMED_AFTER and (text[: m.start()].split()[-1:] or [""])[0].lower() in _VOCATIVE_PREPS:
             continue  # "to the sink, Tom": the listener, called by name

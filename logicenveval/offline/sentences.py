@@ -9,7 +9,8 @@ from collections.abc import Callable
 
 from lemminflect import getAllInflections, getAllLemmas, getInflection
 
-from logicenveval.offline.lexicon import COLOR_WORDS, singular, verb_form
+from logicenveval.domain.lemmas import noun_lemma
+from logicenveval.offline.lexicon import COLOR_WORDS, GREETINGS, singular, verb_form
 
 #: adjective/participle -> (state flag, polarity)
 STATE_WORDS: dict[str, tuple[str, bool]] = {
@@ -378,6 +379,15 @@ _DROPPED_DOUBT = re.compile(r"(?:(?<=^)|(?<=[.!?:;]\s)|(?<=\n)|(?<=\s[-\u2013\u2
 _ELIDED_STATE = re.compile(
     rf"(\([^()]*?\b(?:if|unless|when|whenever|once|while))\s+(?=(?:{'|'.join(sorted(w for w in STATE_WORDS if ' ' not in w))})\s*\))",
     re.I)
+#: the same after "not" where a sentence opens ("Check the cat bowl. If not full, fill it up", "Look
+#: in the pot. If not full, fill it with cold water", "Feel the soil. If not wet, water it"): a
+#: condition whose subject and copula are elided before a negated state speaks of the thing just
+#: named, "if it is not full", not of the alternative "if not," opens (`clauses.ELSE_CUES`: "Is
+#: it full? If not, fill it", where a comma follows "not")
+_ELIDED_NOT_STATE = re.compile(
+    rf"(?:(?<=^)|(?<=[.!?;:]\s)|(?<=\n))([ \t]*(?:if|unless|when|whenever))\s+(?=not\s+"
+    rf"(?:{'|'.join(sorted(w for w in STATE_WORDS if ' ' not in w))})\s*,)",
+    re.I | re.M)
 #: the same at the end of an instruction's clause, after its verb ("Tablet on the plinth: power
 #: off if still on.", "Heater by the door: switch off if running"): an instruction whose condition
 #: is a bare state, with or without "still" / "already", speaks of the thing it acts on, "if it is
@@ -971,6 +981,116 @@ _DASHED_ASIDE_WORDS = 6
 _DASHED_ASIDE = re.compile(
     rf"\b(?P<cue>{'|'.join(re.escape(c) for c in DASHED_ASIDE_CONNECTIVES)})[ \t]+(?:-|--|\u2013|\u2014)[ \t]+"
     rf"(?:[^\s.?\n\u2013\u2014-]+[ \t]+){{1,{_DASHED_ASIDE_WORDS}}}(?:-|--|\u2013|\u2014)[ \t]+(?=\w)", re.I)
+
+
+#: an exception put as a condition ("fold up the brolly except when it's still wet", "Baste the
+#: chicken every twenty minutes except when the oven is off", "Open it except if it is open
+#: already"; Merriam-Webster, "except" as a conjunction: "unless"): read as "unless", so that the
+#: instruction before it falls where the condition does not hold; "except where" is a statement's
+#: exception (`clauses._EXCEPT_WHERE`)
+EXCEPTIVE_CUES = ("except when", "except if")
+_EXCEPTIVE = re.compile(r"\b(?:" + "|".join(c.replace(" ", r"\s+") for c in EXCEPTIVE_CUES) + r")\b", re.I)
+
+#: a letter's or a message's salutation before a comma at the text's start ("Dear Ms Ames, if my
+#: spectacles are on the sofa, please put them in their case", "Dear colleague, got a dirty cup
+#: ...?", "Hi Sam, ..."): the greeting (`lexicon.GREETINGS`) and the name or title after it are a line
+#: of their own, as a letter sets them, not the instruction a condition after them is said of; the
+#: letter's first sentence opens with a capital (a line in small letters goes on the line before's
+#: sentence: `_BROKEN_LINE`)
+_SALUTATION = re.compile(r"\A(?P<greeting>[ \t]*(?i:" + "|".join(sorted(GREETINGS)) + r")(?:[ \t]+[A-Za-z][\w.'-]*){0,3})"
+                         r"[ \t]*,[ \t]*(?P<first>\S)")
+
+#: where a clause starts: a text's or line's start, after a sentence's or clause's mark (a comma
+#: too: "Dear Jo, the oven, if on, ..."), or after
+#: a log line's number ("2254 Were the microwave on, ...", "3.19 Desk lamps, if on, ...")
+_CLAUSE_START = r"(?:(?<=^)|(?<=[.!?;:,)\n])|(?<=[.!?;:,)]\s))(?P<lead>[ \t]*(?:\d+(?:\.\d+)*[ \t]+)?)"
+
+#: a condition by inversion with "were" ("Were the oven on when you get in, switch it off", "Were
+#: the washing machine to be left open, the Resident shall close it"; Quirk et al., the inverted
+#: conditional of "were", "had" and "should"), read as "if" with its verb after the subject ("If the
+#: oven were on ..."), as the reader reads "should" (`clauses.CONDITIONAL`). Only where a clause
+#: starts with a determiner after "were" and the clause ends in a comma: a question ("Were the
+#: lights on?") ends in its mark
+_INVERTED_WERE = re.compile(
+    _CLAUSE_START + rf"(?P<were>were)\s+(?P<clause>(?:{'|'.join(sorted(DETERMINERS))})\s+[^,.;:!?\n]{{1,80}}?)(?=\s*,)",
+    re.I | re.M)
+#: the words that end the subject of an inverted "were" and open what is said of it: a state, an
+#: adverb before one, "to be", or a place
+_WERE_PREDICATE = frozenset(STATE_WORDS) | {"still", "not", "already", "to", "left", "found", "switched",
+                                            "turned"} | PREP_ON | PREP_IN
+
+
+def _inverted_were(m: re.Match[str]) -> str:
+    """"Were the X on, ..." as "If the X were on, ..." (`_INVERTED_WERE`), "to be" dropped ("Were
+    the machine to be left open": "If the machine were left open"); kept as written when nothing
+    in the clause is said of its subject (`_WERE_PREDICATE`)."""
+    words = m.group("clause").split()
+    at = next((i for i, w in enumerate(words) if i > 1 and w.lower() in _WERE_PREDICATE), None)
+    if at is None:
+        return m.group(0)
+    said = words[at:]
+    if [w.lower() for w in said[:2]] == ["to", "be"]:
+        said = said[2:]
+    return f"{m.group('lead')}{_match_case(m.group('were'), 'if')} {' '.join(words[:at])} were {' '.join(said)}"
+
+
+#: a condition set inside the sentence after its topic ("The fan, if on, switch it off", "Alarm
+#: clock in bedroom one, if on, silence it", "The television, if on, shall be switched off by the
+#: last guest"): the topic is the condition's subject and the instruction after the second comma
+#: its branch, read as "If the fan is on, switch it off" ("If the television is on, it shall be
+#: ..."). The topic is a noun phrase of a few words, its determiner first if it has one, and the
+#: condition a state (`STATE_WORDS`) after "not", "still" or "already" at most
+_TOPIC_IF = re.compile(
+    _CLAUSE_START + r"(?P<topic>[A-Za-z][\w'-]*(?:[ \t]+[A-Za-z][\w'-]*){0,5}?)[ \t]*,[ \t]*if[ \t]+"
+    rf"(?P<state>(?:(?:not|still|already)\s+)?(?:{'|'.join(sorted(STATE_WORDS, key=len, reverse=True))}))"
+    r"\s*,\s*(?=(?P<rest>[A-Za-z]+))", re.I | re.M)
+#: words that make a "topic" a clause: a pronoun object ("Switch it off, if on"), a verb's particle
+#: ("Turn the heater down, if on") or a subject
+_NOT_TOPIC = frozenset({"it", "them", "him", "her", "you", "we", "they", "i", "u", "off", "on", "up", "down", "out",
+                        "away", "over", "back", "is", "are", "was", "were"})
+#: the finite words an instruction said of its topic opens with ("..., shall be switched off"): the
+#: topic is taken up by a pronoun before them
+_TOPIC_FINITE = frozenset({"shall", "should", "must", "is", "are", "will", "can", "may", "need", "needs", "has",
+                           "have"})
+
+
+def _topic_if(m: re.Match[str]) -> str:
+    """"The X, if on, ..." as "If the X is on, ..." (`_TOPIC_IF`); kept as written when the topic
+    is a clause (`_NOT_TOPIC`, a verb of putting first, a determiner inside it)."""
+    words = m.group("topic").split()
+    low = [w.lower() for w in words]
+    if set(low) & _NOT_TOPIC or low[0] in ACTIONS or any(w in DETERMINERS for w in low[1:]) and not (
+            set(low) & (PREP_ON | PREP_IN)):
+        return m.group(0)
+    head = next((w for w in reversed(low[:next((i for i, w in enumerate(low) if w in PREP_ON | PREP_IN), len(low))])),
+                low[-1])
+    plural = noun_lemma(head) != head
+    taken_up = f"{'they' if plural else 'it'} " if m.group("rest").lower() in _TOPIC_FINITE else ""
+    topic = m.group("topic")[0].lower() + m.group("topic")[1:]
+    return f"{m.group('lead')}If {topic} {'are' if plural else 'is'} {m.group('state')}, {taken_up}"
+
+
+#: a condition put as an imperative and "and you" ("Find the fridge open and you close it", "find
+#: the curtains open at 9 and u draw them": the conditional imperative, Quirk et al.'s "Do that
+#: and you'll regret it"), read as "If you find the fridge open, close it": the verbs of coming
+#: upon a thing (`DISCOVERY`, in their base form), a state or a place the thing is found in, and
+#: "and you" after it make it a condition; without "you" ("Find the keys on the hook and bring
+#: them") it is two instructions
+DISCOVERY = frozenset({"find", "found", "spot", "spotted", "see", "saw", "seen", "notice", "noticed", "discover",
+                       "discovered", "come", "came", "across", "upon"})
+_FINDING = sorted(w for w in DISCOVERY if getAllLemmas(w, upos="VERB").get("VERB", ("",))[0] == w)
+_FOUND_AND = re.compile(
+    _CLAUSE_START + rf"(?P<verb>{'|'.join(_FINDING)})\s+(?P<found>(?:{'|'.join(sorted(DETERMINERS))})\s+"
+    r"[^,.;:!?\n]{1,80}?)\s*,?\s+and\s+(?:you|u)\s+(?:(?:will|'ll|must|shall|should|then)\s+)?(?=[a-z])",
+    re.I | re.M)
+
+
+def _found_and(m: re.Match[str]) -> str:
+    """"Find the X open and you close it" as "If you find the X open, close it" (`_FOUND_AND`),
+    where the thing is found in a state or at a place; "Find the remote and you can watch" stays."""
+    if not set(m.group("found").lower().split()[1:]) & (set(STATE_WORDS) | PREP_ON | PREP_IN | {"under"}):
+        return m.group(0)
+    return f"{m.group('lead')}{_match_case(m.group('verb'), 'if')} you {m.group('verb').lower()} {m.group('found')}, "
 
 
 def _occasion_if(m: re.Match[str]) -> str:
@@ -1637,9 +1757,12 @@ def unquote(text: str) -> str:
     predicate in a question, condition or doubt in English order (`_SUBJECT_LAST`,
     `_SUBJECT_LAST_IF`), "connected" for on (`connected_as_on`) and a place put before an
     existential after it (`_PLACE_FIRST_EXISTENTIAL`)."""
+    text = _SALUTATION.sub(lambda m: f"{m.group('greeting')}\n{m.group('first').upper()}", _VERSE_LINE.sub(lambda m: _VERSE_SLASH.sub("\n", m.group(0)), text))
     text = _DASHED_ASIDE.sub(r"\g<cue> ", answered_questions(keyed_answers(dealias(text))))
     text = _SET_OFF_ALTERNATIVE.sub(_set_off_alternative, text)
     text = _SUPPOSED_IF.sub(_occasion_if, _OCCASION_IF.sub(_occasion_if, _COMMENT_ASIDE.sub(" ", _QUOTED_WHOLE.sub(r"\1", text))))
+    text = _EXCEPTIVE.sub(lambda m: _match_case(m.group(0), "unless"), text)
+    text = _FOUND_AND.sub(_found_and, _TOPIC_IF.sub(_topic_if, _INVERTED_WERE.sub(_inverted_were, text)))
     text = _SUBJECT_LAST_IF.sub(_subject_last_if, _SUBJECT_LAST.sub(_subject_last, connected_as_on(text)))
     text = _PLACE_FIRST_EXISTENTIAL.sub(_place_first_existential, text)
     text = _BE_THEN.sub(lambda m: f"{m.group(1)}{m.group(2)}? {_match_case(m.group(2), 'then')} ", text)
@@ -1664,6 +1787,7 @@ def unquote(text: str) -> str:
     plain = _QUESTION_PREDICATE.sub(lambda m: m.group(1) + _predicate(m.group(2)), plain)
     plain = _BARE_PARTICIPLE.sub(_participle_state, plain)
     plain = _EMPHATIC_DO.sub("", plain)
+    plain = _ELIDED_NOT_STATE.sub(r"\1 it is ", plain)
     plain = _ELIDED_END_STATE.sub(r"\1 it is ", _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", _ELIDED_PLACE.sub(r"\1 it is ", plain))))
     plain = _ELIDED_PLACE_QUESTION.sub(_asked_place, plain)
     plain = _DROPPED_SUBJECT.sub(lambda m: f"{m.group(1)} {_DROPPED_PRONOUN[m.group(2).lower()]} ", plain)
@@ -1955,6 +2079,18 @@ _BROKEN_LINE = re.compile(r"(?<=[A-Za-z])[ \t]*\n[ \t]*(?=(?:or|and|but|nor|is|a
 #: burning?" asks of the candle, not of its place)
 _CONTINUED_LINE = re.compile(r"(?:,|\b(?P<verb>lie|lies|sit|sits|stand|stands|hang|hangs|stay|stays|rest|rests|"
                              r"belong|belongs|live|lives|go|goes))[ \t]*\n[ \t]*(?P<next>[a-z]+)\b(?=[^?\n]*$)", re.M)
+#: a line of verse that opens with a condition's cue and ends in a word, with no mark ("if the
+#: candle's still burning / blow it out", "whenever a bowl is dirty / wash it / slowly"): the
+#: condition goes on in the next line when that opens with a small letter, as after a comma, so
+#: its instruction is its branch; the cues are the connectives of a condition
+#: (`DASHED_ASIDE_CONNECTIVES`; "in the event that" is "if" by then, `_OCCASION_IF`)
+_VERSE_CONDITION = re.compile(r"^(?P<line>[ \t]*(?:" + "|".join(c.replace(" ", r"\s+") for c in DASHED_ASIDE_CONNECTIVES)
+                              + r")\b[^\n.,;:!?]*[A-Za-z'])[ \t]*\n[ \t]*(?=[a-z])", re.M | re.I)
+#: verse written on one line, its line breaks as spaced slashes ("if the keys are not there / leave
+#: the door on the latch / quietly"): two or more in a line are line breaks, not the alternatives
+#: one slash offers (`_SLASH`: "on the chair / on the floor")
+_VERSE_SLASH = re.compile(r"[ \t]+/[ \t]+")
+_VERSE_LINE = re.compile(r"^[^\n]*?[ \t]/[ \t][^\n]*?[ \t]/[ \t][^\n]*$", re.M)
 
 
 def _continued(m: re.Match[str]) -> str:
@@ -1989,7 +2125,9 @@ def split_sentences(text: str, *, full_stops_only: bool = False) -> list[str]:
     in it (`_SUSPENSION`). With `full_stops_only`, only at a full
     stop, "!" or a line break: for a reader that cuts the rest itself
     (`offline.clauses.clause_spans` cuts at ";", ":", "?" and brackets)."""
-    protected = _ABBREV.sub(lambda m: m.group(0).replace(".", "\u2024"),
-                            _SUSPENSION.sub(", ", _BROKEN_LINE.sub(" ", _CONTINUED_LINE.sub(_continued, text))))
+    # (a condition's line of verse after the lines a conjunction or a verb goes on: "If the towel is
+    # on the floor / and wet, ..." is one clause)
+    joined = _VERSE_CONDITION.sub(r"\g<line>, ", _BROKEN_LINE.sub(" ", _CONTINUED_LINE.sub(_continued, text)))
+    protected = _ABBREV.sub(lambda m: m.group(0).replace(".", "\u2024"), _SUSPENSION.sub(", ", joined))
     parts = [p.strip().replace("\u2024", ".") for p in (_FULL_STOP if full_stops_only else _SENT).split(protected)]
     return [p for p in parts if p]
