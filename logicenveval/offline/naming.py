@@ -44,8 +44,10 @@ from logicenveval.offline.lexicon import (
     singular,
     tokens,
     verb_at,
+    verb_form,
     words_of,
 )
+from logicenveval.offline.placement import RELATIVE
 from logicenveval.offline.sentences import (
     ARROW,
     FORMS,
@@ -1922,6 +1924,8 @@ class _Reader:
             item = words[a:b]
             if item[0] in _HOLDING and len(item) > 1 and not out:
                 item, a = item[1:], a + 1  # "hold novels, essays and ..."
+            if self.relative_item(a, b):
+                continue  # "a blue box, which is for dolls, and a white box ...": the blue box's clause
             color = next((w for w in item if w in COLOR_WORDS and w in allowed), None)
             ranked = self.ranked_holding(item, self.text.raw[a:b], head)
             if ranked is not None and "for" not in item and color is None:
@@ -1974,6 +1978,19 @@ class _Reader:
             parts += [purpose] if purpose and purpose not in parts else []
             out.append(("_".join([*parts, said_head]), {}, read))
         return out
+
+    def relative_item(self, a: int, b: int) -> bool:
+        """Whether the list item between words `a` and `b` is a relative clause on the item before
+        it, no item of its own: it opens with a relative pronoun (`placement.RELATIVE`) and then a
+        verb or a subject pronoun ("a blue box, which is for dolls, and a white box for the rest",
+        "a green bin, that takes the garden waste, and ...", "a tall mug, which we keep for tea"),
+        as a writer sets a non-restrictive clause off with commas, which `_Text.items` splits at.
+        "That" before a noun or "one" is a determiner ("this hook for coats, that one for hats",
+        "that box for books"), and such an item names its thing as before."""
+        words, raw = self.text.words, self.text.raw
+        if b - a < 2 or words[a] not in RELATIVE or self.match(a + 1)[1] is not None or words[a + 1] == "one":
+            return False
+        return words[a + 1] in PERSONAL_SUBJECTS or verb_form(raw[a + 1])
 
     @staticmethod
     def ranked_holding(item: list[str], raw: list[str], head: str) -> tuple[int, int] | None:
