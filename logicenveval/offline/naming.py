@@ -830,6 +830,8 @@ class _Reader:
         raw, gaps = self.text.raw, self.text.gaps
         if self.adjective_before(i):
             return False  # "the acoustic curtain over the window": a noun after an article and adjective
+        if self.compound_object(i):
+            return False  # "in the wheelie bin out the back": a compound's head, in an object's phrase
         prev = raw[i - 1] if i > 0 and not gaps[i].strip() else ""
         nxt: list[str] = []
         for k in (i + 1, i + 2):  # the next words up to punctuation
@@ -867,6 +869,23 @@ class _Reader:
         words, gaps = self.text.words, self.text.gaps
         return i >= 2 and words[i - 2] in _ARTICLES and not gaps[i].strip() and not gaps[i - 1].strip() \
             and adjective_only(self.text.raw[i - 1])
+
+    def compound_object(self, i: int) -> bool:
+        """Whether word `i`, in its base form, heads a compound noun in an object's phrase rather than
+        being a verb: it follows an article and one word in the singular, and that article follows a
+        verb or a preposition of the same clause ("chuck it in the wheelie bin out the back", "wheel
+        the kitchen bin out the side gate", "take the recycling box down the drive"): the bare form
+        after a singular noun is a compound's head (`lexicon.compound_head`: a verb there would need
+        that noun as its subject, and a singular subject takes "bins", "boxes"), and an object's
+        phrase holds no subject at all. An article that opens its clause ("The family bin out the old papers", "when the
+        team mop up", a collective noun taking a plural verb) or a plural before the word ("the
+        kids mop up") leaves the verb."""
+        words, raw, gaps = self.text.words, self.text.raw, self.text.gaps
+        if i < 3 or any(gaps[k].strip() for k in (i - 2, i - 1, i)) or words[i - 2] not in _ARTICLES:
+            return False
+        lead = raw[i - 3]
+        return raw[i - 1].isalpha() and compound_head(raw[i], singular(raw[i - 1]) != raw[i - 1]) \
+            and (lead in _PREPOSITIONS or verb_form(lead) and lead not in FUNCTION_WORDS)
 
     def bare_noun(self, i: int, exact: str | None) -> str | None:
         """The kind a one-word noun means: the kind last named that it ends; else the kind whose
