@@ -45,6 +45,7 @@ from logicenveval.offline.lexicon import (
     singular,
     tokens,
     verb_at,
+    verb_form,
     words_of,
 )
 from logicenveval.offline.sentences import (
@@ -829,6 +830,8 @@ class _Reader:
         raw, gaps = self.text.raw, self.text.gaps
         if self.adjective_before(i):
             return False  # "the acoustic curtain over the window": a noun after an article and adjective
+        if self.compound_object(i):
+            return False  # "in the wheelie bin out the back": a compound's head, in an object's phrase
         prev = raw[i - 1] if i > 0 and not gaps[i].strip() else ""
         nxt: list[str] = []
         for k in (i + 1, i + 2):  # the next words up to punctuation
@@ -866,6 +869,23 @@ class _Reader:
         words, gaps = self.text.words, self.text.gaps
         return i >= 2 and words[i - 2] in _ARTICLES and not gaps[i].strip() and not gaps[i - 1].strip() \
             and adjective_only(self.text.raw[i - 1])
+
+    def compound_object(self, i: int) -> bool:
+        """Whether word `i`, in its base form, heads a compound noun in an object's phrase rather than
+        being a verb: it follows an article and one word in the singular, and that article follows a
+        verb or a preposition of the same clause ("chuck it in the wheelie bin out the back", "wheel
+        the kitchen bin out the side gate", "take the recycling box down the drive"): the bare form
+        after a singular noun is a compound's head (`lexicon.compound_head`: a verb there would need
+        that noun as its subject, and a singular subject takes "bins", "boxes"), and an object's
+        phrase holds no subject at all. An article that opens its clause ("The family bin out the old papers", "when the
+        team mop up", a collective noun taking a plural verb) or a plural before the word ("the
+        kids mop up") leaves the verb."""
+        words, raw, gaps = self.text.words, self.text.raw, self.text.gaps
+        if i < 3 or any(gaps[k].strip() for k in (i - 2, i - 1, i)) or words[i - 2] not in _ARTICLES:
+            return False
+        lead = raw[i - 3]
+        return raw[i - 1].isalpha() and compound_head(raw[i], singular(raw[i - 1]) != raw[i - 1]) \
+            and (lead in _PREPOSITIONS or verb_form(lead) and lead not in FUNCTION_WORDS)
 
     def bare_noun(self, i: int, exact: str | None) -> str | None:
         """The kind a one-word noun means: the kind last named that it ends; else the kind whose
@@ -1922,7 +1942,7 @@ class _Reader:
         head = words_of(category)[-1]
         allowed = self.catalog.categories[category].attributes.get("color", [])
         out: list[tuple[str, dict[str, str], list[int]]] = []
-        for a, b in self.relatives_joined(self.text.items(start, end)):
+        for a, b in self.without_relative_items(self.text.items(start, end)):
             item = words[a:b]
             if item[0] in _HOLDING and len(item) > 1 and not out:
                 item, a = item[1:], a + 1  # "hold novels, essays and ..."
@@ -1979,21 +1999,20 @@ class _Reader:
             out.append(("_".join([*parts, said_head]), {}, read))
         return out
 
-    def relatives_joined(self, spans: list[tuple[int, int]]) -> list[tuple[int, int]]:
-        """The list's item spans with an item that opens with a relative pronoun joined to the one
-        before it: "two toy boxes - a blue box, which is for dolls, and a white box", "three
-        hooks: a brass one, which takes the coat, ..." set off by commas a clause that says more
-        of the item before (its purpose, what it holds), no item of its own. "that" is also a
-        demonstrative opening an item ("this one for tea and that one for coffee"), so it joins
-        only before "is" / "was" ("a red bowl, that is for the batter")."""
-        words = self.text.words
-        out: list[tuple[int, int]] = []
-        for a, b in spans:
-            if out and words[a] in RELATIVE and (words[a] != "that" or words[a + 1 : a + 2] and words[a + 1] in _COPULAS):
-                out[-1] = (out[-1][0], b)
-            else:
-                out.append((a, b))
-        return out
+    def without_relative_items(self, spans: list[tuple[int, int]]) -> list[tuple[int, int]]:
+        """The list's item spans without an item that is a relative clause on the item before it:
+        "two toy boxes - a blue box, which is for dolls, and a white box", "a green bin, that
+        takes the garden waste, and ...", "a tall mug, which we keep for tea": set off by commas
+        (which `_Text.items` splits at), a clause that says more of the item before (its purpose,
+        what it holds), no item of its own. It opens with a relative pronoun (`lexicon.RELATIVE`)
+        and then a verb or a subject pronoun; "that" before a noun or "one" is a determiner ("this
+        hook for coats, that one for hats", "that box for books"), and such an item names its
+        thing as before."""
+        words, raw = self.text.words, self.text.raw
+        return [(a, b) for a, b in spans
+                if not (b - a >= 2 and words[a] in RELATIVE and self.match(a + 1)[1] is None
+                        and words[a + 1] != "one"
+                        and (words[a + 1] in PERSONAL_SUBJECTS or verb_form(raw[a + 1])))]
 
     @staticmethod
     def ranked_holding(item: list[str], raw: list[str], head: str) -> tuple[int, int] | None:
