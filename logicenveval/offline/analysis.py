@@ -2319,8 +2319,6 @@ def _norm(clause: Clause) -> bool:
     return bool({w for w, _, _ in tokens(clause.text)} & NORMS)
 
 
-
-
 _HERE = frozenset({"there", "here"})
 #: a room said as the place of a finding ("if you find any in the media room", "should you spot
 #: one in this room"): where the finder is, "here"

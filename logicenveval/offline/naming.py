@@ -877,9 +877,9 @@ class _Reader:
         the kitchen bin out the side gate", "take the recycling box down the drive"): the bare form
         after a singular noun is a compound's head (`lexicon.compound_head`: a verb there would need
         that noun as its subject, and a singular subject takes "bins", "boxes"), and an object's
-        phrase holds no subject at all. An article that opens its clause ("The family bin out the old papers", "when the
-        team mop up", a collective noun taking a plural verb) or a plural before the word ("the
-        kids mop up") leaves the verb."""
+        phrase holds no subject at all. An article that opens its clause ("The family bin out the
+        old papers", "when the team mop up", a collective noun taking a plural verb) or a plural
+        before the word ("the kids mop up") leaves the verb."""
         words, raw, gaps = self.text.words, self.text.raw, self.text.gaps
         if i < 3 or any(gaps[k].strip() for k in (i - 2, i - 1, i)) or words[i - 2] not in _ARTICLES:
             return False

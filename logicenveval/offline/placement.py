@@ -323,16 +323,20 @@ class _Reading:
 _THEN_ARROW = re.compile(rf"(?<![?:!])\s*{ARROW_MARK}\s*")
 
 
+#: a ticked box and an unticked one, as checklists write them ("[x]", "[ ]", a check mark, a ballot
+#: box)
+_TICKED = r"\[[ \t]*[xX\u2713\u2714][ \t]*\]|[\u2713\u2714\u2611]"
+_UNTICKED = r"\[[ \t]*\]|\u2610"
 #: a checklist's box at a line's start, ticked or not ("[x] mug on the counter", "[ ] lights off",
 #: "✓ keys in the bowl"): the nineteenth session reads it as the item's boundary, as a
 #: semicolon, so the line is a list item of its own and not the tail of the line before
-_TICK_BOX = re.compile(r"^[ \t]*(?:\[[ \t]*[xX\u2713\u2714]?[ \t]*\]|[\u2713\u2714\u2611\u2610])[ \t]*", re.M)
+_TICK_BOX = re.compile(rf"^[ \t]*(?:{_TICKED}|{_UNTICKED})[ \t]*", re.M)
 #: a box after an item's label mark, the checklist written item first ("Mug — [x] on the shelf",
 #: "Laptop: [x] on the desk", "Lamp: [ ] on the desk"): a ticked box says the line holds, so it is
 #: dropped and the label reads its place as "Mug — on the shelf" does; an unticked one says it
 #: is not (yet) so, so it cuts the line as a full stop would, and the place after it is no one's
-_LABELLED_TICK = re.compile(r"(?<=[:\-\u2013\u2014])[ \t]*(?:\[[ \t]*[xX\u2713\u2714][ \t]*\]|[\u2713\u2714\u2611])[ \t]*")
-_LABELLED_UNTICKED = re.compile(r"(?<=[:\-\u2013\u2014])[ \t]*(?:\[[ \t]*\]|\u2610)[ \t]*")
+_LABELLED_TICK = re.compile(rf"(?<=[:\-\u2013\u2014])[ \t]*(?:{_TICKED})[ \t]*")
+_LABELLED_UNTICKED = re.compile(rf"(?<=[:\-\u2013\u2014])[ \t]*(?:{_UNTICKED})[ \t]*")
 
 
 #: an en or em dash set off by spaces is the dash a clause or a label ends at, as " - " is

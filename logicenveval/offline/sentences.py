@@ -9,7 +9,6 @@ from collections.abc import Callable
 
 from lemminflect import getAllInflections, getAllLemmas, getInflection
 
-from logicenveval.domain.lemmas import noun_lemma
 from logicenveval.offline.lexicon import COLOR_WORDS, GREETINGS, singular, verb_form
 
 #: adjective/participle -> (state flag, polarity)
@@ -979,8 +978,8 @@ DASHED_ASIDE_CONNECTIVES = ("if", "unless", "when", "whenever", "once", "should"
                             "in case")
 _DASHED_ASIDE_WORDS = 6
 _DASHED_ASIDE = re.compile(
-    rf"\b(?P<cue>{'|'.join(re.escape(c) for c in DASHED_ASIDE_CONNECTIVES)})[ \t]+(?:-|--|\u2013|\u2014)[ \t]+"
-    rf"(?:[^\s.?\n\u2013\u2014-]+[ \t]+){{1,{_DASHED_ASIDE_WORDS}}}(?:-|--|\u2013|\u2014)[ \t]+(?=\w)", re.I)
+    rf"\b(?P<cue>{'|'.join(re.escape(c) for c in DASHED_ASIDE_CONNECTIVES)})[ \t]+{_DASH_MARK}[ \t]+"
+    rf"(?:[^\s.?\n\u2013\u2014-]+[ \t]+){{1,{_DASHED_ASIDE_WORDS}}}{_DASH_MARK}[ \t]+(?=\w)", re.I)
 
 
 #: an exception put as a condition ("fold up the brolly except when it's still wet", "Baste the
@@ -1064,7 +1063,7 @@ def _topic_if(m: re.Match[str]) -> str:
         return m.group(0)
     head = next((w for w in reversed(low[:next((i for i, w in enumerate(low) if w in PREP_ON | PREP_IN), len(low))])),
                 low[-1])
-    plural = noun_lemma(head) != head
+    plural = singular(head) != head
     taken_up = f"{'they' if plural else 'it'} " if m.group("rest").lower() in _TOPIC_FINITE else ""
     topic = m.group("topic")[0].lower() + m.group("topic")[1:]
     return f"{m.group('lead')}If {topic} {'are' if plural else 'is'} {m.group('state')}, {taken_up}"
