@@ -2049,8 +2049,9 @@ class _Reader:
                 if extra:
                     local_neg = any(_negation(x) for x in extra)
                 k = j
-        # "a dirty plate", "wet ones", but not "open it"
-        j = m.start - 1 if m.kind == "role" or words[m.start] in ("one", "ones") else -1
+        # "a dirty plate", "wet ones", "a full mop bucket", but not "open it"
+        named = self._past_modifiers(words, m.start - 1) + 1 if m.kind == "role" else m.start
+        j = named - 1 if m.kind == "role" or words[m.start] in ("one", "ones") else -1
         while j >= 0 and words[j] in set(STATE_WORDS) | {"and", "but"} and words[j] not in ("on", "off"):
             if words[j] in STATE_WORDS:
                 found.append((words[j], False, True))
@@ -2058,7 +2059,7 @@ class _Reader:
         # "grab a clean towel from the cupboard": the state a thing is taken in from its source is
         # presupposed with the source (`Fact.presupposed`)
         source = words[m.end:m.end + 1] == ["from"] or words[m.end:m.end + 2] == ["out", "of"]
-        taken = source and _taken(words, m.start)
+        taken = source and _taken(words, named)
         out = []
         for w, neg, modifier in found:
             flag, pol = STATE_WORDS[w]
@@ -2084,6 +2085,19 @@ class _Reader:
                     if ("dirty" not in FITTED or "dirty" in self.capable.get(r, FITTED))
                     and (kind := self.kinds.get(r)) is not None and kind.pickable]
         return []
+
+    def _past_modifiers(self, words: list[str], j: int) -> int:
+        """The word before the modifier nouns (at most `MODIFIER_NOUNS`) that end at `j`: in "a full
+        mop bucket", "a dirty dish towel" the state is said of the thing even where the task's
+        name for it is only the head noun, so the words between are skipped when the reader walks
+        back for a state. A modifier noun is one the lemmatiser knows as a noun, the reader has no
+        meaning for, and that starts no mention of its own."""
+        skipped = 0
+        while (j >= 0 and skipped < MODIFIER_NOUNS and j not in self.starts and self._unknown(words[j])
+               and getAllLemmas(words[j]).get("NOUN")):
+            j -= 1
+            skipped += 1
+        return j
 
     def _pp_at(self, words: list[str], k: int) -> int:
         """End of a short prepositional phrase `on the coffee table` starting at k, else 0; after a
@@ -2193,6 +2207,10 @@ ALREADY_FILLER = frozenset({"already", "is", "are", "be", "was", "were", "been",
 _RANK = {"exists": 0, "location": 1, "state": 2, "attr": 3}
 #: words that end a predicate adjective: "one that is not ripe yet belongs in the bowl"
 _AFTER_PREDICATE = frozenset({"yet", "enough", "anymore", "already", "now", "and", "or", "but"}) | MOTION
+#: how many modifier nouns may stand between a state word and the head of a thing's name ("a
+#: full mop bucket", "a dirty dish towel"): two covers the compounds of household speech, more
+#: would let a state word reach across a clause
+MODIFIER_NOUNS = 2
 #: words with a meaning of their own, never an attribute read from the wording
 _KNOWN_WORDS = (frozenset(STATE_WORDS) | DESCRIPTIVE | MOTION | ACTIONS | ARTICLES | PARTS | PRONOUNS
                 | NEGATIONS | UNCERTAIN | ABSENT | AVAILABILITY | PREP_ON | PREP_IN | COLOR_WORDS
