@@ -926,6 +926,74 @@ _SUPPOSED_IF = re.compile(r"(?:(?<=^)|(?<=[.!?;:)\n])|(?<=[.!?;:)]\s)|(?<=\s-\s)
                           r"(?!\s+(?:so|not)\b)", re.I | re.M)
 
 
+#: a proviso opened by a cue the reader's list (`clauses.CONDITIONAL`) does not hold: "providing
+#: (that)", a bare "provided", "on (the) condition that" (read as "provided that") and "so long
+#: as" (read as "as long as"; Merriam-Webster, "provided": "on condition that: if"). "provided" and
+#: "providing" only before a clause, a subject (a determiner and up to four words, or a pronoun)
+#: and its finite verb, so the participle ("the towels provided by the hotel", "the soap provided
+#: is ...") and the gerund ("for providing the towels") stay
+_PROVISO = re.compile(
+    r"\b(?:(?P<given>provided|providing)(?:\s+that)?|on\s+(?:the\s+)?condition\s+that|(?P<long>so\s+long\s+as))\b"
+    r"(?=(?:\s+that)?\s+(?:(?:the|a|an|my|our|your|his|her|its|their|this|these|those|no|every|each)"
+    r"(?:\s+(?!(?:that|which|who|with|for|to|and|or|but)\b)[a-z][\w-]*){1,4}"
+    r"|it|they|there|he|she|we|you|u|nobody|no\s+one|someone|somebody|everyone|everybody)"
+    r"(?:'s|'re|\s+(?:is|are|isn't|aren't|was|were|has|have|hasn't|haven't|does|do|doesn't|don't|can|will|looks|look"
+    r"|seems|seem|stays|stay|remains|remain|still|already|not))\b)", re.I)
+
+
+def _proviso(m: re.Match[str]) -> str:
+    """A proviso's cue as the one the reader reads (`_PROVISO`); "provided" / "providing" after an
+    auxiliary or a preposition is a verb's form ("we are providing the kids ...", "for providing
+    the towels"), kept as written."""
+    before = m.string[:m.start()].split()
+    if m.group("given") and before and before[-1].lower() in _VERB_BEFORE_PROVISO:
+        return m.group(0)
+    return _match_case(m.group(0), "as long as" if m.group("long") else "provided that")
+
+
+#: words after which "provided" / "providing" is a verb's participle or gerund, not a proviso
+_VERB_BEFORE_PROVISO = frozenset({"am", "is", "are", "was", "were", "be", "been", "being", "has", "have", "had",
+                                  "for", "by", "of", "about", "from", "not", "without"})
+
+
+#: the putative "should" of a condition ("If the kettle should be empty, fill it", "in case the
+#: towels should still be damp"; Quirk et al., the putative "should" in a conditional clause):
+#: what is, not what ought to be, so its verb is read finite ("If the kettle is empty"). Only
+#: right after the cue's subject (a determiner and up to four words, or "it" / "they"), so a
+#: consequence's "should" ("If it is empty, it should be filled") and a subject that is a clause
+#: ("if you need the pan it should be clean") stay; "you should find" is read as it is
+_PUTATIVE_SHOULD = re.compile(
+    r"\b(?P<cue>if|in\s+case|unless|provided\s+that|as\s+long\s+as)\s+(?P<subject>(?:the|a|an|my|our|your|his|her|its"
+    r"|their|this|these|those|any)(?:\s+[a-z][\w-]*){1,4}|it|they)\s+should\s+(?P<adverbs>(?:(?:still|ever|also|really"
+    r"|not|by\s+(?:any\s+)?chance)\s+)*)(?P<verb>[a-z]+)\b", re.I)
+_PUTATIVE_SUBJECT_STOPS = frozenset({"it", "they", "you", "we", "i", "u", "should", "is", "are"})
+
+
+def _putative_should(m: re.Match[str]) -> str:
+    """A condition's "should" + verb as the finite verb (`_PUTATIVE_SHOULD`): "is" / "are" for
+    "be", the third person singular or the base form by the subject's number, "does not" / "do
+    not" before a negated verb other than "be"; kept as written where the subject holds a
+    pronoun or a verb (a clause)."""
+    subject = m.group("subject").split()
+    if len(subject) > 1 and set(w.lower() for w in subject[1:]) & _PUTATIVE_SUBJECT_STOPS:
+        return m.group(0)
+    head = subject[-1].lower()
+    plural = head == "they" or (len(subject) > 1 and singular(head) != head)
+    verb = m.group("verb").lower()
+    adverbs = m.group("adverbs").split()
+    negated = [w for w in adverbs if w.lower() == "not"]
+    others = " ".join(w for w in adverbs if w.lower() != "not")
+    if verb == "be":
+        finite = f"{'are' if plural else 'is'}{' not' if negated else ''}"
+        said = " ".join(x for x in (finite, others) if x)
+    elif negated:
+        said = " ".join(x for x in ("do not" if plural else "does not", others, verb) if x)
+    else:
+        form = verb if plural else (getInflection(verb, "VBZ") or (verb + "s",))[0]
+        said = " ".join(x for x in (others, form) if x)
+    return f"{m.group('cue')} {m.group('subject')} {said}"
+
+
 #: comment adverbials a writer sets off with commas inside a clause ("The remote, as ever, belongs
 #: on the stand", "the kettle, of course, lives on the counter", "the mat is, as usual, on the
 #: floor"): they say what the writer thinks of the clause, nothing of the scene, and between a
@@ -1755,12 +1823,15 @@ def unquote(text: str) -> str:
     before all a thing named by a letter as the thing (`dealias`); a learner's subject after its
     predicate in a question, condition or doubt in English order (`_SUBJECT_LAST`,
     `_SUBJECT_LAST_IF`), "connected" for on (`connected_as_on`) and a place put before an
-    existential after it (`_PLACE_FIRST_EXISTENTIAL`)."""
+    existential after it (`_PLACE_FIRST_EXISTENTIAL`); a proviso's cue as "provided that" or "as
+    long as" (`_PROVISO`) and a condition's putative "should" as its finite verb
+    (`_PUTATIVE_SHOULD`)."""
     text = _SALUTATION.sub(lambda m: f"{m.group('greeting')}\n{m.group('first').upper()}", _VERSE_LINE.sub(lambda m: _VERSE_SLASH.sub("\n", m.group(0)), text))
     text = _DASHED_ASIDE.sub(r"\g<cue> ", answered_questions(keyed_answers(dealias(text))))
     text = _SET_OFF_ALTERNATIVE.sub(_set_off_alternative, text)
     text = _SUPPOSED_IF.sub(_occasion_if, _OCCASION_IF.sub(_occasion_if, _COMMENT_ASIDE.sub(" ", _QUOTED_WHOLE.sub(r"\1", text))))
     text = _EXCEPTIVE.sub(lambda m: _match_case(m.group(0), "unless"), text)
+    text = _PUTATIVE_SHOULD.sub(_putative_should, _PROVISO.sub(_proviso, text))
     text = _FOUND_AND.sub(_found_and, _TOPIC_IF.sub(_topic_if, _INVERTED_WERE.sub(_inverted_were, text)))
     text = _SUBJECT_LAST_IF.sub(_subject_last_if, _SUBJECT_LAST.sub(_subject_last, connected_as_on(text)))
     text = _PLACE_FIRST_EXISTENTIAL.sub(_place_first_existential, text)
