@@ -111,7 +111,9 @@ def test_a_verb_first_question_before_then_is_a_condition() -> None:
             "sink in the kitchen.")
     assert asks(text, ("living_room", "kitchen"), "state(mug, dirty)")
     assert asks("Is the kettle dirty, then wash it.", ("kitchen",), "state(kettle, dirty)")
-    assert asks("Are the lights still on, then switch them off.", ("hallway",), "state(light_switch, toggled_on)")
+    # (the lights are the hallway's ceiling lamp: "switch" is the verb here, not the light switch,
+    # since the twenty-third session's `naming._Reader.controls_ahead`)
+    assert asks("Are the lights still on, then switch them off.", ("hallway",), "state(ceiling_lamp, toggled_on)")
 
 
 def test_a_be_clause_that_asks_nothing_before_then_stays_a_statement() -> None:

@@ -1175,15 +1175,21 @@ class _Reader:
         sentence or the next says its head ("the switch", or the control's whole name: "If the
         lights are still on, flick the light switch off", the name written as one, not "the
         light. Switch off the fan"): the thing the text switches, the switch, as when it is named
-        first (`CONTROL_HEADS`)."""
+        first (`CONTROL_HEADS`). Only the head as a noun: after the thing's word ("the light
+        switch") or a determiner, with one word between at most ("the switch", "the main
+        switch"); the head said as a verb ("If the light is on, switch it off") switches the
+        thing itself."""
         word = self.text.words[i]
         kinds = self.controls.get(word, ())
         if len(kinds) != 1:
             return None
         end = self.text.sentence_end(self.text.sentence_end(i))
         head = words_of(kinds[0])[1]
-        return kinds[0] if any(self.text.words[k] == head and (self.text.words[k - 1] != word or self.text.gaps[k] == " ")
-                               for k in range(i + 1, min(end, len(self.text.words)))) else None
+        words, gaps = self.text.words, self.text.gaps
+        return kinds[0] if any(words[k] == head and (
+            words[k - 1] == word and gaps[k] == " " or words[k - 1] in _DETERMINERS
+            or k >= 2 and words[k - 2] in _DETERMINERS and not gaps[k - 1].strip() and not gaps[k].strip())
+            for k in range(i + 1, min(end, len(words)))) else None
 
     def room_evidence(self) -> set[str]:
         """The room types that tell a bare noun's kinds apart: those the task's room ids name; for
