@@ -1,8 +1,8 @@
-"""The reader's fifth to fortieth development sets (tests/data/reader_dev5/, reader_dev6/,
+"""The reader's fifth to forty-second development sets (tests/data/reader_dev5/, reader_dev6/,
 reader_dev7/, reader_dev8/, reader_dev9/, reader_dev10/, reader_dev11/, reader_dev12/, reader_dev13/,
 reader_dev14/, reader_dev15/, reader_dev16/, reader_dev17/, reader_dev18/, reader_dev19/, reader_dev20/,
 reader_dev21/, reader_dev22/, reader_dev23/, reader_dev24/, reader_dev25/, reader_dev26/,
-reader_dev27/, reader_dev28/, reader_dev29/, reader_dev30/, reader_dev31/, reader_dev32/, reader_dev33/, reader_dev34/, reader_dev35/, reader_dev36/, reader_dev37/, reader_dev38/, reader_dev39/, reader_dev40/): new tasks and rewordings written from the task format, the
+reader_dev27/, reader_dev28/, reader_dev29/, reader_dev30/, reader_dev31/, reader_dev32/, reader_dev33/, reader_dev34/, reader_dev35/, reader_dev36/, reader_dev37/, reader_dev38/, reader_dev39/, reader_dev40/, reader_dev42/): new tasks and rewordings written from the task format, the
 catalog and the built-in tasks, without reading the offline reader or running it on them, for rounds of reader
 rules to be tuned on. One table of what differs between them; the same checks for each.
 
@@ -257,6 +257,7 @@ SETS = (
     DevSet("reader_dev38", "_d38", 3, 6, ("tower_cab_atc_position_relief_brief", "laundry_drying_rack_d38")),
     DevSet("reader_dev39", "_d39", 3, 6, ("dapur_malay_auntie_note", "bathroom_counter_sort_d39")),
     DevSet("reader_dev40", "_d40", 3, 6, ("signal_box_signallers_handover", "study_plant_and_light_d40")),
+    DevSet("reader_dev42", "_d42", 3, 6, ("porters_lodge_night_handover", "multi_room_trash_run_d42")),
 )
 IDS = [s.name for s in SETS]
 ENTRIES = {s.name: rewordings(DATA / s.name) for s in SETS}
