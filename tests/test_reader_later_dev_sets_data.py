@@ -167,6 +167,13 @@ motor racing (a signaller's turn handover, a barber shop's closing routine, a ro
 notes, a cellar master's list, a pit garage's close-down sheet, a hair salon's junior training
 card, a module of a railway rule book, a pit-stop procedure) and the English of a Tamil speaker,
 in room ids beginning with a letter n-z.
+dev 42 was written after dev 40's tenth measurement (no other set opened but through its README,
+its rewordings' registers and its room ids): registers of technical and institutional work (a
+data-centre operations shift log, a university cleanroom's gowning notice, a hospital porters'
+note for nights, a Crown Court usher's notes for a relief usher, a register office's ceremony
+room clear-down sheet, a permit to work, a records retention and disposal schedule, a standard
+operating procedure) and the English of a Turkish speaker (a landlady's note to her tenant), in
+room ids beginning with a letter n-z.
 """
 
 from __future__ import annotations
