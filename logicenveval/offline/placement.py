@@ -1038,8 +1038,9 @@ OVER = frozenset({"over", "across"})
 
 def _covers(words: list[str], j: int) -> bool:
     """Whether words[j] is an "over" or "across" that names what a covering verb's thing lies on
-    (`COVERING`, `OVER`)."""
-    return words[j] in OVER and j > 0 and words[j - 1] in COVERING
+    (`COVERING`, `OVER`), or an outer part of a holder it hangs on, whatever the verb
+    (`_over_a_part`: "the towel is over the back of the chair")."""
+    return words[j] in OVER and (j > 0 and words[j - 1] in COVERING or _over_a_part(words, j, len(words)))
 
 
 def _outer_part(sent: _Sentence, ms: list[Mention], j: int, k: int, hi: int) -> Mention | None:
@@ -2817,12 +2818,24 @@ def _put_new(reading: _Reading, kind: str, catalog: Catalog, lex: Lexicon, item:
     _put(reading, kind, catalog, lex, item, holder, prep)
 
 
+def _over_a_part(words: list[str], j: int, hi: int) -> bool:
+    """Whether the "over" / "across" at j names an outer part of a holder ("over the back of the
+    chair", "across the arm of the sofa", "over the end of the bed"): a thing said to be there
+    hangs on it, whatever the verb (a copula too: "the towel is over the back of the chair"),
+    where "over the table" alone may be above it (a lamp over the table rests on none)."""
+    k = j + 1
+    while k < hi and words[k] in ARTICLES:
+        k += 1
+    return k + 1 < hi and words[k] in OUTER_PARTS and words[k + 1] == "of"
+
+
 def _place_at(sent: _Sentence, ms: list[Mention], j: int, hi: int, resting: bool,
               at: str | None = None) -> tuple[str, Mention] | None:
     """(preposition, holder) when token j is a preposition of place (`FALLBACK_AT`, or after a verb
     of resting "across"/"over"; or any, read as `at`) followed by a holder the brief names."""
     word = sent.words[j] if j < hi else ""
-    at = at or FALLBACK_AT.get(word) or ("on" if resting and word in RESTING_OVER else None)
+    at = at or FALLBACK_AT.get(word) or ("on" if word in RESTING_OVER and (resting or _over_a_part(sent.words, j, hi))
+                                         else None)
     if at is None:
         return None
     toks = list(sent.toks)
