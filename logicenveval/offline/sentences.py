@@ -956,6 +956,26 @@ _VERB_BEFORE_PROVISO = frozenset({"am", "is", "are", "was", "were", "be", "been"
                                   "for", "by", "of", "about", "from", "not", "without"})
 
 
+#: a thing gone missing said with the inchoative "go" in a simple tense ("If the remote goes
+#: missing", "Should the keys go missing", "if the scissors went missing again"): read as the
+#: state it comes to, "missing" after the copula of the same tense (`ABSENCE_PREDICATES` reads
+#: the perfect, "has gone missing", and the copula); the base form after a modal, "to" or "let"
+#: is "be"
+GOES_MISSING = {"goes": "is", "go": "are", "went": "was"}
+_GOES_MISSING = re.compile(r"\b(?P<before>\w+)(?P<gap>\s+(?:ever\s+|again\s+|suddenly\s+)?)(?P<go>goes|go|went)\s+missing\b",
+                           re.I)
+_BASE_BEFORE = frozenset({"should", "shall", "will", "would", "may", "might", "can", "could", "must", "to", "let"})
+
+
+def _goes_missing(m: re.Match[str]) -> str:
+    """"goes missing" as "is missing" (`GOES_MISSING`), an adverb of time between dropped ("ever goes
+    missing", "went missing again": it says when, not what); "go" after a modal, "to" or "let" as
+    "be"."""
+    go = m.group("go").lower()
+    be = "be" if go == "go" and m.group("before").lower() in _BASE_BEFORE else GOES_MISSING[go]
+    return f"{m.group('before')} {be} missing"
+
+
 #: the putative "should" of a condition ("If the kettle should be empty, fill it", "in case the
 #: towels should still be damp"; Quirk et al., the putative "should" in a conditional clause):
 #: what is, not what ought to be, so its verb is read finite ("If the kettle is empty"). Only
@@ -1832,6 +1852,7 @@ def unquote(text: str) -> str:
     text = _SUPPOSED_IF.sub(_occasion_if, _OCCASION_IF.sub(_occasion_if, _COMMENT_ASIDE.sub(" ", _QUOTED_WHOLE.sub(r"\1", text))))
     text = _EXCEPTIVE.sub(lambda m: _match_case(m.group(0), "unless"), text)
     text = _PUTATIVE_SHOULD.sub(_putative_should, _PROVISO.sub(_proviso, text))
+    text = _GOES_MISSING.sub(_goes_missing, text)
     text = _FOUND_AND.sub(_found_and, _TOPIC_IF.sub(_topic_if, _INVERTED_WERE.sub(_inverted_were, text)))
     text = _SUBJECT_LAST_IF.sub(_subject_last_if, _SUBJECT_LAST.sub(_subject_last, connected_as_on(text)))
     text = _PLACE_FIRST_EXISTENTIAL.sub(_place_first_existential, text)
