@@ -20,7 +20,6 @@ BENCHMARKS = ROOT / "benchmarks"
 
 #: script (and extra arguments) -> text its output must hold
 QUICK: dict[tuple[str, ...], str] = {
-    ("condition_forms.py",): "condition_forms overall=",
     ("placement_forms.py",): "placement_forms overall=",
     ("holodeck_solver.py",): "placed_ratio=",
     ("hostile_inputs.py",): "worst_refusal_ms=",
@@ -42,6 +41,9 @@ QUICK: dict[tuple[str, ...], str] = {
 }
 SLOW: dict[tuple[str, ...], str] = {
     ("llm_validity.py",): "metrics_reproduced=true",
+    # its smoke run grew to ~57 s on 2 cores with the grids (twenty-third session); the grids'
+    # floors stay in the default run (tests/test_offline_condition_forms*.py)
+    ("condition_forms.py",): "condition_forms overall=",
     ("robustness.py",): "rises_beyond_interval=0",
     ("run_scaling.py",): "speedup_2_workers=",
     ("cluster_scaling.py",): "cluster_speedup_2_nodes=",
