@@ -1844,8 +1844,8 @@ def unquote(text: str) -> str:
     predicate in a question, condition or doubt in English order (`_SUBJECT_LAST`,
     `_SUBJECT_LAST_IF`), "connected" for on (`connected_as_on`) and a place put before an
     existential after it (`_PLACE_FIRST_EXISTENTIAL`); a proviso's cue as "provided that" or "as
-    long as" (`_PROVISO`) and a condition's putative "should" as its finite verb
-    (`_PUTATIVE_SHOULD`)."""
+    long as" (`_PROVISO`), a condition's putative "should" as its finite verb
+    (`_PUTATIVE_SHOULD`) and a thing that "goes missing" as one that "is missing" (`_GOES_MISSING`)."""
     text = _SALUTATION.sub(lambda m: f"{m.group('greeting')}\n{m.group('first').upper()}", _VERSE_LINE.sub(lambda m: _VERSE_SLASH.sub("\n", m.group(0)), text))
     text = _DASHED_ASIDE.sub(r"\g<cue> ", answered_questions(keyed_answers(dealias(text))))
     text = _SET_OFF_ALTERNATIVE.sub(_set_off_alternative, text)
