@@ -402,7 +402,7 @@ def _verb_mention(toks: list[_Token], mentions: list[Mention], m: Mention) -> bo
         return False
     word, prev, nxt = toks[m.start].word, toks[m.start - 1].word, toks[m.end].word
     subject = prev in THING_PRONOUNS | PERSONAL_SUBJECTS or any(x.end == m.start and x.kind == "role" for x in mentions)
-    return word in STATIVE and word != toks[m.start].lemma and subject and nxt in AT | RESTING_OVER | ADVERBS
+    return word in STATIVE and word != toks[m.start].lemma and subject and nxt in AT | OVER | ADVERBS
 
 
 def _without_asides(toks: list[_Token], mentions: list[Mention]) -> list[_Token]:
@@ -1031,8 +1031,8 @@ def _tied_whole(sent: _Sentence, ms: list[Mention], j: int, k: int, hi: int) -> 
     return next((m for m in ms if m.start == n and m.kind == "role" and len(m.roles) == 1), None)
 
 
-#: prepositions that, after a verb of covering, name the thing under ("draped over the chair",
-#: "spread across the bed")
+#: prepositions that, after a verb of covering or of resting, name the thing under ("draped over
+#: the chair", "spread across the bed", "a blanket lies across the ottoman")
 OVER = frozenset({"over", "across"})
 
 
@@ -2646,8 +2646,6 @@ def _described_subject(words: list[str], start: int, end: int, clause: Span) -> 
 #: the prepositions of place the fallback reads, and the one each stands for ("into"/"onto" say
 #: where a thing goes; "under", "behind", "beside" name no holder)
 FALLBACK_AT = {"on": "on", "upon": "on", "atop": "on", "in": "in", "inside": "inside", "within": "in"}
-#: after a verb of resting these name what the thing rests on ("a blanket lies across the ottoman")
-RESTING_OVER = frozenset({"across", "over"})
 #: relative words of place of the formal and archaic registers ("a desk whereon a lamp sits")
 WHERE_PREPS = {"whereon": "on", "whereupon": "on", "wherein": "in"}
 #: words that keep a clause from stating a fact: negation, modality, a goal, a hedge, a condition
@@ -2834,7 +2832,7 @@ def _place_at(sent: _Sentence, ms: list[Mention], j: int, hi: int, resting: bool
     """(preposition, holder) when token j is a preposition of place (`FALLBACK_AT`, or after a verb
     of resting "across"/"over"; or any, read as `at`) followed by a holder the brief names."""
     word = sent.words[j] if j < hi else ""
-    at = at or FALLBACK_AT.get(word) or ("on" if word in RESTING_OVER and (resting or _over_a_part(sent.words, j, hi))
+    at = at or FALLBACK_AT.get(word) or ("on" if word in OVER and (resting or _over_a_part(sent.words, j, hi))
                                          else None)
     if at is None:
         return None
@@ -2860,7 +2858,7 @@ def _verb_gap(words: list[str], ms: list[Mention], i: int, hi: int) -> int | Non
     nothing, nor says where a thing goes or who did something (`_GAP_STOPS`)."""
     j = i
     while j < hi and j - i < 4 and words[j].isalpha() and words[j] not in FALLBACK_AT \
-            and words[j] not in RESTING_OVER and words[j] not in _GAP_STOPS \
+            and words[j] not in OVER and words[j] not in _GAP_STOPS \
             and not _named_word(ms, j):
         j += 1
     gap = words[i:j]

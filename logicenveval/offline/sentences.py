@@ -929,12 +929,14 @@ _SUPPOSED_IF = re.compile(r"(?:(?<=^)|(?<=[.!?;:)\n])|(?<=[.!?;:)]\s)|(?<=\s-\s)
 #: a proviso opened by a cue the reader's list (`clauses.CONDITIONAL`) does not hold: "providing
 #: (that)", a bare "provided", "on (the) condition that" (read as "provided that") and "so long
 #: as" (read as "as long as"; Merriam-Webster, "provided": "on condition that: if"). "provided" and
-#: "providing" only before a clause, a subject (a determiner and up to four words, or a pronoun)
+#: "providing" only before a clause, a subject (a determiner of `DETERMINERS` but "that", "any"
+#: and "some", which open a clause or a quantity more often than a subject, and up to four words,
+#: or a pronoun)
 #: and its finite verb, so the participle ("the towels provided by the hotel", "the soap provided
 #: is ...") and the gerund ("for providing the towels") stay
 _PROVISO = re.compile(
     r"\b(?:(?P<given>provided|providing)(?:\s+that)?|on\s+(?:the\s+)?condition\s+that|(?P<long>so\s+long\s+as))\b"
-    r"(?=(?:\s+that)?\s+(?:(?:the|a|an|my|our|your|his|her|its|their|this|these|those|no|every|each)"
+    rf"(?=(?:\s+that)?\s+(?:(?:{'|'.join(sorted(DETERMINERS - {'that', 'any', 'some'}))})"
     r"(?:\s+(?!(?:that|which|who|with|for|to|and|or|but)\b)[a-z][\w-]*){1,4}"
     r"|it|they|there|he|she|we|you|u|nobody|no\s+one|someone|somebody|everyone|everybody)"
     r"(?:'s|'re|\s+(?:is|are|isn't|aren't|was|were|has|have|hasn't|haven't|does|do|doesn't|don't|can|will|looks|look"
@@ -979,12 +981,14 @@ def _goes_missing(m: re.Match[str]) -> str:
 #: the putative "should" of a condition ("If the kettle should be empty, fill it", "in case the
 #: towels should still be damp"; Quirk et al., the putative "should" in a conditional clause):
 #: what is, not what ought to be, so its verb is read finite ("If the kettle is empty"). Only
-#: right after the cue's subject (a determiner and up to four words, or "it" / "they"), so a
+#: right after the cue's subject (a determiner of `DETERMINERS` short of "that" and the
+#: quantifiers but "any", and up to four words, or "it" / "they"), so a
 #: consequence's "should" ("If it is empty, it should be filled") and a subject that is a clause
 #: ("if you need the pan it should be clean") stay; "you should find" is read as it is
 _PUTATIVE_SHOULD = re.compile(
-    r"\b(?P<cue>if|in\s+case|unless|provided\s+that|as\s+long\s+as)\s+(?P<subject>(?:the|a|an|my|our|your|his|her|its"
-    r"|their|this|these|those|any)(?:\s+[a-z][\w-]*){1,4}|it|they)\s+should\s+(?P<adverbs>(?:(?:still|ever|also|really"
+    r"\b(?P<cue>if|in\s+case|unless|provided\s+that|as\s+long\s+as)\s+"
+    rf"(?P<subject>(?:{'|'.join(sorted(DETERMINERS - {'that', 'every', 'each', 'some', 'no'}))})"
+    r"(?:\s+[a-z][\w-]*){1,4}|it|they)\s+should\s+(?P<adverbs>(?:(?:still|ever|also|really"
     r"|not|by\s+(?:any\s+)?chance)\s+)*)(?P<verb>[a-z]+)\b", re.I)
 _PUTATIVE_SUBJECT_STOPS = frozenset({"it", "they", "you", "we", "i", "u", "should", "is", "are"})
 
