@@ -267,6 +267,18 @@ _NO_CASE_THING = frozenset({"is", "are", "was", "were", "be", "has", "have", "ha
                             "it", "them", "they", "one", "ones", "this", "that"})
 
 
+#: the same with a clause in the bracket ("Option A (the mug is dirty): wash it", "Plain lead (the
+#: shirt is clean): fold it away", a decision sheet's or a method sheet's cases): a label of at most
+#: four words opening its line, then a bracket whose clause has a subject (a determiner's noun
+#: phrase, "it", "they", "there") and a finite "be" or "have" before the colon: read as the
+#: condition it is ("Option A: if the mug is dirty, wash it"). A bracket without such a verb
+#: ("Step 2 (the kitchen):", "Mug (the blue one):") is a description and stays
+_CASE_CLAUSE = re.compile(
+    r"^(?P<label>[ \t]*(?:[\w'-]+[ \t]+){0,3}[\w'-]+)[ \t]*\((?P<clause>(?:the|my|your|our|his|her|their|its|it"
+    r"|they|there)\b[^()\n:]*?\b(?:is|are|isn't|aren't|was|were|has|have|hasn't|haven't)\b[^()\n:]*)\)[ \t]*:[ \t]*",
+    re.I | re.M)
+
+
 def _case_label(m: re.Match[str]) -> str:
     """`_CASE_LABEL`'s bracket as the condition it labels its branch by."""
     said = m.group("thing").lower().split()
@@ -292,14 +304,26 @@ _ITEM_END = re.compile(r"[ \t]*;(?:[ \t]+(?:and|or))?[ \t]*\n(?=[ \t]*(?:\((?:[a
 #: work order's "if found on the chair", a manual's "when left open"): "if it is found ..."
 _ELIDED_SUBJECT = re.compile(
     rf"\b(if|unless|when|whenever|once|while)\s+(?=(?:{'|'.join(sorted(FOUND_PARTICIPLES))})\b)", re.I)
+#: participles of a thing at rest where it was put or fell ("lying", "standing", British "sat"):
+#: they say no more than that it is there, so an elided condition's subject is the thing before
+#: them (`_ELIDED_PLACE`) and, before "there", they ask its presence as "there" alone does
+#: (`_RESTING_THERE`)
+RESTING_PARTICIPLES = ("left", "lying", "sitting", "standing", "resting", "sat", "stood")
 #: the same before a place ("the towel: if on the floor, pick it up", "grab the sock if still on
-#: the rug"): a condition with no subject and no verb whose predicate is a surface place speaks of the
-#: thing just named, "if it is on the floor"; a place the preposition "in" opens is left alone
-#: ("when in the kitchen, ..." is where the listener is, not the thing), and so are "once" and
-#: "while" (a time: "while on the phone")
+#: the rug", "if standing on the vanity, put it away"): a condition with no subject and no verb whose
+#: predicate is a surface place, or a resting participle and that place, speaks of the thing just
+#: named, "if it is on the floor"; a place the preposition "in" opens is left alone ("when in the
+#: kitchen, ..." is where the listener is, not the thing), and so are "once" and "while" (a time:
+#: "while on the phone")
 _ELIDED_PLACE = re.compile(
-    r"\b(if|unless|when|whenever)\s+(?=(?:(?:still|already|left|lying)\s+)?(?:on|upon)\s+"
-    r"(?:the|a|an|your|my|our|his|her|their)\s)", re.I)
+    rf"\b(if|unless|when|whenever)\s+(?=(?:(?:still|already)\s+)?(?:(?:{'|'.join(RESTING_PARTICIPLES)})\s+)?"
+    r"(?:on|upon)\s+(?:the|a|an|your|my|our|his|her|their)\s)", re.I)
+#: a resting participle between a thing's copula (or "still") and "there" / "here" ("if it's
+#: still lying there", "should it be sitting there still", "Still standing there?"): dropped, so
+#: the presence is asked as "if it's still there" is
+_RESTING_THERE = re.compile(
+    rf"\b(is|are|be|been|'s|'re|still)\s+(?:{'|'.join(RESTING_PARTICIPLES[1:])})\s+(?=(?:still\s+)?(?:there|here)\b)",
+    re.I)
 #: the same as a question of its own, after the thing was named ("The towel. On the floor? Hang
 #: it up.", "I took my hat off in a hurry. Still on the floor? ..."): a sentence that is only a
 #: surface place and its question mark asks it of the thing spoken of, "Is it on the floor?"; a
@@ -1874,10 +1898,11 @@ def unquote(text: str) -> str:
     plain = _CASE_AFTER_COMMA.sub("; ", _EMOJI.sub(_emoji, _ARROWS.sub(" -> ", text)))
     plain = _IF_ANY.sub(_if_any, plain)
     plain = _CASE_LABEL.sub(_case_label, _FRONTED_ALREADY.sub(_postposed, plain))
+    plain = _CASE_CLAUSE.sub(r"\g<label>: if \g<clause>, ", plain)
     plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _ITEM_END.sub(".\n", _QUOTE_MARK.sub("", _QUOTED_PREMISE.sub(
         r"\g<q>?\g<gap>", _FORUM_QUOTE.sub(_forum_quote, _ATTRIBUTION.sub("", plain)))))))
     plain = _unabbreviated(plain)
-    plain = _ELIDED_PREDICATE.sub(r"\1 it is ", plain)
+    plain = _ELIDED_PREDICATE.sub(r"\1 it is ", _RESTING_THERE.sub(r"\1 ", plain))
     plain = _PREDICATE_STATE.sub(lambda m: m.group(1) + _predicate(m.group(2)), _SOUNDING.sub(_sounding, plain))
     plain = _QUESTION_PREDICATE.sub(lambda m: m.group(1) + _predicate(m.group(2)), plain)
     plain = _BARE_PARTICIPLE.sub(_participle_state, plain)
