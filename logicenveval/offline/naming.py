@@ -1339,19 +1339,30 @@ class _Reader:
             return None
         before = self.recent[-1]
         kind, said = self.kinds.get(before), self.used.get(before, set())
-        if kind is None or kind.instances or kind.count > 1 or before in self.named or len(said) != 1:
+        if kind is None or kind.instances or kind.count > 1 or len(said) != 1:
             return None
         (head,) = said
         if any(self.match(k)[1] is not None for k in range(the + 1, i)):
             return None
-        copular = the >= 2 and words[the - 1] in _COPULAS and words[the - 2] == head
+        # the thing's word right before the identifying "is", or before a place said with it ("the
+        # cupboard in the bathroom is the medicine cabinet")
+        subject = next((k for k in range(the - 2, max(the - 7, 0) - 1, -1) if words[k] == head), None)
+        copular = the >= 2 and words[the - 1] in _COPULAS and subject is not None and (
+            subject == the - 2 or words[subject + 1] in _PREPOSITIONS
+            and not any(_BREAK.search(gaps[k]) or words[k] in _COPULAS for k in range(subject + 1, the - 1)))
+        # "the key cupboard is the little wall cabinet": a thing named outright by another word
+        # (a cupboard is a cabinet) and identified by a fuller kind whose name ends in its
+        # kind's name (a wall cabinet is a cabinet) is one object of the fuller kind
+        narrower = copular and len(words_of(category)) > 1 and words_of(category)[-1] == words_of(before)[-1]
+        if before in self.named and not narrower:
+            return None
         end = i + n
         goes_on = end < len(words) and not _BREAK.search(gaps[end]) and words[end] in _CLAUSE_VERBS
         apposed = "," in gaps[the] and not goes_on and (self.first_at.get(before, -1) >= self.text.sentence_start(i))
         if not (copular or apposed):
             return None
         names = (category, *_own(self.catalog.categories[category]))
-        return before if any(len(words_of(t)) > 1 and words_of(t)[-1] == head for t in names) else None
+        return before if narrower or any(len(words_of(t)) > 1 and words_of(t)[-1] == head for t in names) else None
 
     def names_the_colored_one(self, i: int, n: int, kind: _Kind, prev: str, category: str) -> bool:
         """Whether a plain singular mention of a kind is the one thing of it the text has already
