@@ -2953,8 +2953,9 @@ def _fallback_forms(sent: _Sentence, ms: list[Mention], a: int, b: int, lex: Lex
                 if holder is not None:
                     out.append(("settled", item, WHERE_PREPS[words[k]], holder))
         # a definite subject with its place, then its predicate: "the coffee machine on the
-        # worktop, to the left of the hob, takes a while": the place is taken for granted
-        if subject and determiner(words, m.start) == "the" and m.end < b and words[m.end] in FALLBACK_AT:
+        # worktop, to the left of the hob, takes a while", "my mug on the desk is dirty" (a
+        # possessive is as definite as "the"): the place is taken for granted
+        if subject and _definite(words, m.start) and m.end < b and words[m.end] in FALLBACK_AT:
             found = _place_at(sent, ms, m.end, b, False)
             if found is not None and any(w in BE | STATIVE or verb_form(w) for w in words[found[1].end:b]):
                 out.append(("presumed", item, found[0], found[1]))

@@ -1002,6 +1002,35 @@ def _goes_missing(m: re.Match[str]) -> str:
     return f"{m.group('before')} {be} missing"
 
 
+#: a left-dislocated noun phrase taken up by a pronoun after a dash ("The PC on the desk - it's
+#: a desktop computer, so ...", "My mug on the desk - it's dirty", "The towels - they're wet"), a
+#: sentence's opening in speech and notes: the noun phrase is the clause's subject, read as
+#: "The PC on the desk is a desktop computer". Only a noun phrase that opens its sentence (or a
+#: numbered or bulleted item) with a determiner and holds no finite verb or conjunction of its
+#: own (`_NOT_DISLOCATED`: "The mug is on the desk - it's dirty" is a clause and its comment); a
+#: comma's "That said, it's ..." is no noun phrase, so the comma is left alone
+_LEFT_DISLOCATED = re.compile(
+    r"(?P<lead>(?:^|(?<=[.!?])[ \t]+)[ \t]*(?:\d{1,2}[.)][ \t]+|[-*\u2022][ \t]+)?)"
+    r"(?P<np>(?:the|my|your|our|his|her|their|this|these|those)[ \t]+(?:[\w'-]+[ \t]+){0,5}?[\w'-]+)"
+    r"[ \t]+[-\u2013\u2014][ \t]+(?P<pron>it|they)(?P<be>'s|'re|[ \t]+is|[ \t]+are)(?P<after>[ \t]+\w+)",
+    re.I | re.M)
+_NOT_DISLOCATED = frozenset({"is", "are", "was", "were", "has", "have", "had", "be", "been", "do", "does", "did",
+                             "can", "will", "should", "must", "may", "might", "if", "when", "unless", "once",
+                             "while", "because", "so", "then", "it", "they", "you", "we", "i"})
+
+
+def _left_dislocated(m: re.Match[str]) -> str:
+    """`_LEFT_DISLOCATED`'s noun phrase as the subject of the pronoun's verb ("'s been" as "has
+    been")."""
+    if set(w.lower() for w in m.group("np").split()) & _NOT_DISLOCATED:
+        return m.group(0)
+    be = m.group("be").strip().lower()
+    after = m.group("after")
+    perfect = after.strip().lower() in ("been", "got", "gotten")
+    verb = {"'s": "has" if perfect else "is", "'re": "have" if perfect else "are"}.get(be, be)
+    return f"{m.group('lead')}{m.group('np')} {verb}{after}"
+
+
 #: the putative "should" of a condition ("If the kettle should be empty, fill it", "in case the
 #: towels should still be damp"; Quirk et al., the putative "should" in a conditional clause):
 #: what is, not what ought to be, so its verb is read finite ("If the kettle is empty"). Only
@@ -1880,7 +1909,7 @@ def unquote(text: str) -> str:
     text = _SUPPOSED_IF.sub(_occasion_if, _OCCASION_IF.sub(_occasion_if, _COMMENT_ASIDE.sub(" ", _QUOTED_WHOLE.sub(r"\1", text))))
     text = _EXCEPTIVE.sub(lambda m: _match_case(m.group(0), "unless"), text)
     text = _PUTATIVE_SHOULD.sub(_putative_should, _PROVISO.sub(_proviso, text))
-    text = _GOES_MISSING.sub(_goes_missing, text)
+    text = _LEFT_DISLOCATED.sub(_left_dislocated, _GOES_MISSING.sub(_goes_missing, text))
     text = _FOUND_AND.sub(_found_and, _TOPIC_IF.sub(_topic_if, _INVERTED_WERE.sub(_inverted_were, text)))
     text = _SUBJECT_LAST_IF.sub(_subject_last_if, _SUBJECT_LAST.sub(_subject_last, connected_as_on(text)))
     text = _PLACE_FIRST_EXISTENTIAL.sub(_place_first_existential, text)
