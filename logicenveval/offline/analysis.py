@@ -79,6 +79,7 @@ from logicenveval.offline.sentences import (
     TAKING_FROM,
     TEND,
     TRAILING_ADVERBIALS,
+    as_read,
     code_switched,
     determiner,
     expand,
@@ -87,7 +88,6 @@ from logicenveval.offline.sentences import (
     predicate_state,
     split_sentences,
     taken_word,
-    unquote,
 )
 from logicenveval.offline.vocabulary import reading_catalog
 from logicenveval.scene.compat import can_hold
@@ -3455,8 +3455,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
              if (cat := catalog.get(str(role.get("category", "")))) is not None}
     reader = _Reader(lex, _capabilities(brief, catalog), kinds)
     categories = {name: str(role.get("category", "")) for name, role in dict(brief.get("roles") or {}).items()}
-    # the description as the readers read it (`unquote`, a long chain of rewrites), made once
-    plain = unquote(str(brief["description"]))
+    # the description as the readers read it (`as_read`: `unquote`, a long chain of rewrites, and
+    # a subject's relative clause dropped), made once
+    plain = as_read(str(brief["description"]))
     described = any_at(plain)
     # the conditions a sentence implies without a cue are spelled out after its bullet item is
     # found (`_bullet_items` finds a sentence by its words in the text)
@@ -4522,7 +4523,7 @@ def _settle_stated(factors: list[Factor], brief: Mapping[str, Any], catalog: Cat
     is doubted: its factor stays; so is a placement a later condition asks by "there" (`doubted`:
     "There's a plate on the counter ... and no plate there at all?")."""
 
-    cued = _elsewhere_cued(unquote(str(brief.get("description", ""))))
+    cued = _elsewhere_cued(as_read(str(brief.get("description", ""))))
     settled = set(described_placements(brief, catalog, kinds=frozenset({"settled"})))
     settled |= {f for f in described_placements(brief, catalog, kinds=frozenset({"settled", "kept"}))
                 if not cued(f.split("(", 1)[1].split(",", 1)[0])}

@@ -69,13 +69,13 @@ from logicenveval.offline.sentences import (
     PREP_ON,
     STATE_WORDS,
     TAKING_FROM,
+    as_read,
     determiner,
     expand,
     foreign,
     habitual,
     split_sentences,
     taken_word,
-    unquote,
 )
 from logicenveval.offline.vocabulary import reading_catalog
 
@@ -477,7 +477,7 @@ def _read(brief: Mapping[str, Any], catalog: Catalog, kinds: frozenset[str]) -> 
     reading = _Reading({k: {} for k in _ORDER}, {k: {} for k in _ORDER})
     if len(lex.rooms) == 1:
         reading.context_room = lex.rooms[0]
-    sentences = _sentences(unquote(str(brief.get("description", ""))), lex)
+    sentences = _sentences(as_read(str(brief.get("description", ""))), lex)
     for sent in sentences:
         _read_sentence(sent, lex, catalog, reading)
     before = _Before()

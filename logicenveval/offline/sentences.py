@@ -265,8 +265,6 @@ _CASE_LABEL = re.compile(r"[ \t]*\((?P<no>no[ \t]+)?(?P<thing>[a-z]+(?:[ \t][a-z
 #: it on the desk)": a verb or a pronoun); an instruction's verb (`ACTIONS`) neither
 _NO_CASE_THING = frozenset({"is", "are", "was", "were", "be", "has", "have", "had", "lies", "sits", "stands",
                             "it", "them", "they", "one", "ones", "this", "that"})
-
-
 #: the same with a clause in the bracket ("Option A (the mug is dirty): wash it", "Plain lead (the
 #: shirt is clean): fold it away", a decision sheet's or a method sheet's cases): a label of at most
 #: four words opening its line, then a bracket whose clause has a subject (a determiner's noun
@@ -1029,6 +1027,47 @@ def _left_dislocated(m: re.Match[str]) -> str:
     perfect = after.strip().lower() in ("been", "got", "gotten")
     verb = {"'s": "has" if perfect else "is", "'re": "have" if perfect else "are"}.get(be, be)
     return f"{m.group('lead')}{m.group('np')} {verb}{after}"
+
+
+#: the subjects of a relative clause `_CONTACT_RELATIVE` drops: the pronouns and a household's
+#: people (not its pets: "if the bowl the cat eats from is empty" is left as it is written)
+RELATIVE_SUBJECTS = ("i", "you", "we", "they", "he", "she", "someone", "somebody", "the kids", "the children",
+                     "the guests", "the cleaner")
+_RELATIVE_SUBJECT = "|".join(w.replace(" ", r"\s+") for w in RELATIVE_SUBJECTS)
+#: a subject with a relative clause whose own subject is a pronoun or a household's people, "that"
+#: or "which" said or left out ("the old towel I use to dry legs is over the chair", "If the mug
+#: you left on the desk is dirty", "when the towel the kids used is wet"): the clause
+#: says which thing is meant, the predicate after it is the thing's, so the clause is dropped and
+#: a place it ends with is kept as the thing's place ("the mug on the desk is dirty": where it was
+#: left is where it is). Only a clause of one to eight words with no comma, opened by a verb (the
+#: lemmatiser's) and holding no pronoun, contraction or conjunction of a clause of its own, after a noun phrase
+#: with none either (`_NOT_RELATIVE`: "if you find the key you know it is in the bowl" and "wash the
+#: plate and we make sure our toaster is off" are two clauses)
+_CONTACT_RELATIVE = re.compile(
+    r"\b(?P<np>(?:the|my|your|our|his|her|their)\s+(?:[a-z-]+\s+){0,2}?[a-z-]+)\s+(?:(?:that|which)\s+)?"
+    rf"(?P<subject>{_RELATIVE_SUBJECT})\s+"
+    r"(?P<clause>(?:[a-z'-]+\s+){1,8}?)(?P<be>is|are|isn't|aren't|was|were|looks|seems)\b", re.I)
+_NOT_RELATIVE = frozenset({"it", "they", "them", "he", "she", "him", "her", "there", "that", "which", "if", "when",
+                           "and", "but", "or", "because", "so", "is", "are", "was", "were", "i", "you", "we",
+                           "this", "these", "those", "how", "what", "where", "who", "why",
+                           # a verb of thinking or saying whose clause the "be" is ("the mug I think is dirty")
+                           "think", "thought", "believe", "reckon", "guess", "suppose", "know", "say", "said"})
+#: the prepositions of place a dropped relative clause's place may open with, and the one kept
+_RELATIVE_PLACE = {"on": "on", "onto": "on", "in": "in", "into": "in", "inside": "inside", "under": "under",
+                   "by": "by", "beside": "beside", "over": "over"}
+
+
+def _contact_relative(m: re.Match[str]) -> str:
+    """`_CONTACT_RELATIVE`'s subject without its relative clause, with the place the clause ends
+    with."""
+    clause = m.group("clause").split()
+    said = [w.lower() for w in clause + m.group("np").split()[1:]]
+    if set(said) & _NOT_RELATIVE or any("'" in w for w in said) or "VERB" not in getAllLemmas(clause[0].lower()):
+        return m.group(0)
+    at = next((k for k in range(len(clause) - 2, -1, -1) if clause[k].lower() in _RELATIVE_PLACE
+               and clause[k + 1].lower() in DETERMINERS), None)
+    place = f" {_RELATIVE_PLACE[clause[at].lower()]} {' '.join(clause[at + 1:])}" if at is not None and at > 0 else ""
+    return f"{m.group('np')}{place} {m.group('be')}"
 
 
 #: the putative "should" of a condition ("If the kettle should be empty, fill it", "in case the
@@ -1947,6 +1986,14 @@ def unquote(text: str) -> str:
     plain = _KIND_OF.sub(r"\1 ", _STATE_CASE.sub(_state_case, plain))
     plain = _DIRECTIVE_AFTER_QUESTION.sub(_directive, _DIRECTIVE_WITH.sub(_directive, plain))
     return _SUBJECTLESS.sub(r"\1\2\3the \2 \4", detable(derecord(_STATE_SUBJECT.sub(_state_subject, plain))))
+
+
+def as_read(text: str) -> str:
+    """The description as the factor and placement readers read it: `unquote`'s text with a
+    subject's relative clause dropped (`_CONTACT_RELATIVE`). The namer reads `unquote`'s own, where
+    the clause may say what the thing is for ("the towel we wipe our hands with" is a hand towel,
+    "the bowl the cat eats from" a pet bowl)."""
+    return _CONTACT_RELATIVE.sub(_contact_relative, unquote(text))
 
 
 #: a verbless directive, a place and the thing sent there ("Into the fridge with it.", "Straight
