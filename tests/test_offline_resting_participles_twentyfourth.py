@@ -4,7 +4,8 @@ with "lying": a condition with its subject elided before such a participle and a
 ("IF STANDING ON THE VANITY, PUT IT AWAY", a dispensing label's, `sentences._ELIDED_PLACE`), and
 the participle between a thing's copula and "there" ("If it's still lying there", a tower
 captain's note, `sentences._RESTING_THERE`), which asked nothing where "if it's still there"
-asks where the thing was said to be. Found on dev 39's losses (the first row of each table); the
+asks where the thing was said to be; and, composed with it, "Still there?" as a question of its
+own (`sentences._STILL_THERE_QUESTION`). Found on dev 39's losses (the first row of the first two tables); the
 other rows were written here in other registers (a house rule, a text message, a cook's note, a
 formal notice, British speech, a list heading) before the rule and measured then (the counts in
 each test's docstring)."""
@@ -54,6 +55,21 @@ THERE = [
 ]
 
 
+#: "Still there?" as a question of its own (`sentences._STILL_THERE_QUESTION`), with or without a
+#: resting participle: (text, rooms, the placement asked)
+STILL_THERE = [
+    ("The mug has been on the desk all week. Still there? Wash it.", ("office",), "on(mug, desk)"),
+    ("The mug has been on the desk all week. Still sitting there? Wash it.", ("office",), "on(mug, desk)"),
+    ("The towel was on the floor this morning. Still lying there? Hang it on the rail.", ("bathroom",),
+     "on(towel, floor)"),
+    # a text message in lower case, over two lines
+    ("left my scarf on the bench this morning\nstill there? pls hang it on the hook", ("hallway",),
+     "on(scarf, bench)"),
+    # a note in capitals
+    ("REMOTE ON THE ARMCHAIR AT 6PM. STILL THERE? PUT IT ON THE TV STAND.", ("living_room",),
+     "on(remote_control, armchair)"),
+]
+
 def _asked(text: str, rooms: tuple[str, ...], condition: str) -> bool:
     return any({condition, f"not {condition}"} <= v for v in factors(text, rooms).values())
 
@@ -70,6 +86,15 @@ def test_a_resting_participle_before_there_asks_the_place_said_before(
         text: str, rooms: tuple[str, ...], condition: str) -> None:
     """Measured before the rule: 0 of 4 asked; after: 4 of 4."""
     assert _asked(text, rooms, condition), factors(text, rooms)
+
+
+@pytest.mark.parametrize(("text", "rooms", "condition"), STILL_THERE)
+def test_still_there_as_a_question_asks_the_place_said_before(
+        text: str, rooms: tuple[str, ...], condition: str) -> None:
+    """Measured before the rule: 0 of 5 asked; after: 5 of 5. "Still there at six?" (a time after
+    it) is left alone, as the bare form's time adverbials are (the nineteenth session)."""
+    assert _asked(text, rooms, condition), factors(text, rooms)
+    assert factors("The mug is on the desk. Still there at six? Ring me.", ("office",)) == {}
 
 
 @pytest.mark.parametrize(("text", "rooms"), [

@@ -376,6 +376,20 @@ _SHARED_SUBJECT = re.compile(
 _BE_PRONOUN = {"was": "it", "is": "it", "were": "they", "are": "they"}
 
 
+#: the same of "there" after "still", as a question of its own ("The mug has been on the desk all
+#: week. Still there? Wash it.", "Still lying there?"): the thing spoken of is asked whether it is
+#: still where it was said to be, "Is it still there?" (a resting participle says no more,
+#: `RESTING_PARTICIPLES`); without "still" a bare "There?" is left alone
+_STILL_THERE_QUESTION = re.compile(
+    r"(?:(?<=^)|(?<=[.!?;]\s)|(?<=\n))(?P<still>still)\s+"
+    rf"(?:(?:{'|'.join(RESTING_PARTICIPLES[1:])})\s+)?(?P<there>there|here)\?", re.I | re.M)
+
+
+def _still_there(m: re.Match[str]) -> str:
+    """`_STILL_THERE_QUESTION`'s question with its subject and verb: "Is it still there?"."""
+    return f"{_match_case(m.group('still'), 'is')} it still {m.group('there').lower()}?"
+
+
 def _shared_pronoun(m: re.Match[str]) -> str:
     """`_SHARED_SUBJECT`'s second predicate with its pronoun: by the finite "be"'s number, or after
     an inverted "should" (whose "be" is the base form, of either number) by the subject's ("they"
@@ -1941,7 +1955,11 @@ def unquote(text: str) -> str:
     `_SUBJECT_LAST_IF`), "connected" for on (`connected_as_on`) and a place put before an
     existential after it (`_PLACE_FIRST_EXISTENTIAL`); a proviso's cue as "provided that" or "as
     long as" (`_PROVISO`), a condition's putative "should" as its finite verb
-    (`_PUTATIVE_SHOULD`) and a thing that "goes missing" as one that "is missing" (`_GOES_MISSING`)."""
+    (`_PUTATIVE_SHOULD`) and a thing that "goes missing" as one that "is missing" (`_GOES_MISSING`);
+    a noun phrase put first before a dash as its pronoun's subject (`_LEFT_DISLOCATED`), a case
+    label's bracketed clause as its condition (`_CASE_CLAUSE`), a resting participle before
+    "there" dropped (`_RESTING_THERE`) and "Still there?" as "Is it still there?"
+    (`_STILL_THERE_QUESTION`). A subject's relative clause is dropped by `as_read`, not here."""
     text = _SALUTATION.sub(lambda m: f"{m.group('greeting')}\n{m.group('first').upper()}", _VERSE_LINE.sub(lambda m: _VERSE_SLASH.sub("\n", m.group(0)), text))
     text = _DASHED_ASIDE.sub(r"\g<cue> ", answered_questions(keyed_answers(dealias(text))))
     text = _SET_OFF_ALTERNATIVE.sub(_set_off_alternative, text)
@@ -1977,7 +1995,7 @@ def unquote(text: str) -> str:
     plain = _EMPHATIC_DO.sub("", plain)
     plain = _ELIDED_NOT_STATE.sub(r"\1 it is ", plain)
     plain = _ELIDED_END_STATE.sub(r"\1 it is ", _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", _ELIDED_PLACE.sub(r"\1 it is ", plain))))
-    plain = _ELIDED_PLACE_QUESTION.sub(_asked_place, plain)
+    plain = _STILL_THERE_QUESTION.sub(_still_there, _ELIDED_PLACE_QUESTION.sub(_asked_place, plain))
     plain = _DROPPED_SUBJECT.sub(lambda m: f"{m.group(1)} {_DROPPED_PRONOUN[m.group(2).lower()]} ", plain)
     plain = _SHARED_SUBJECT.sub(_shared_pronoun, plain)
     plain = _DROPPED_DOUBT.sub(lambda m: f"{m.group(1)}{_match_case(m.group(2), 'it')} {m.group(2).lower()}", plain)
