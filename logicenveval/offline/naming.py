@@ -1364,6 +1364,48 @@ class _Reader:
         names = (category, *_own(self.catalog.categories[category]))
         return before if narrower or any(len(words_of(t)) > 1 and words_of(t)[-1] == head for t in names) else None
 
+    def headed_fuller(self, i: int, n: int, category: str) -> str | None:
+        """The kind a heading line named, when the noun phrase at words [i, i + n) names its thing
+        again by a narrower kind right under it: a line that is only the thing's name, with its
+        place or not ("Towel on the bench", a rota app's task title; "Cabinet:"), then, within the
+        next three sentences and with no other thing of that head named between, a definite
+        mention of a kind whose name ends in the heading kind's name ("Notes: The hand towel's
+        been left on the bench by the back door again"). A heading names its topic by the bare
+        word, as `heading_mention` reads for a colour; the item's fuller name is the same object."""
+        words, gaps = self.text.words, self.text.gaps
+        head = words_of(category)[-1]
+        if len(words_of(category)) < 2 or i < 1 or words[i - 1] not in _RENAMING_DETERMINERS:
+            return None
+        before = next((c for c in reversed(self.recent) if c != category and tuple(words_of(c)) == (head,)), None)
+        kind = self.kinds.get(before) if before is not None else None
+        if before is None or kind is None or kind.instances or kind.count > 1:
+            return None
+        at = self.first_at[before]
+        line_end = self.text.sentence_end(at)
+        if not self.heading_line(at) or line_end >= i or "\n" not in gaps[line_end] \
+                or any(self.match(k)[1] in (before, category) for k in range(at + 1, i)):
+            return None
+        sentences, k = 0, line_end
+        while k <= i:
+            k = self.text.sentence_end(k)
+            sentences += 1
+        return before if sentences <= 3 else None
+
+    def heading_line(self, at: int) -> bool:
+        """Whether the mention starting at word `at` is a line of its own with at most its article
+        before it and a place after it ("Towel on the bench", "- The mug on the desk", "Cabinet:")."""
+        words, gaps = self.text.words, self.text.gaps
+        if at < 0:
+            return False
+        start = self.text.sentence_start(at)
+        if start > 0 and "\n" not in gaps[start] or any(w not in _ARTICLES for w in words[start:at]):
+            return False
+        n, _ = self.match(at)
+        end = self.text.sentence_end(at)
+        rest = words[at + n:end]
+        return not rest or rest[0] in _PREPOSITIONS and len(rest) <= 5 and not any(
+            getAllLemmas(w).get("VERB") and not getAllLemmas(w).get("NOUN") for w in rest)
+
     def names_the_colored_one(self, i: int, n: int, kind: _Kind, prev: str, category: str) -> bool:
         """Whether a plain singular mention of a kind is the one thing of it the text has already
         named by its colour ("The blue cup is on the table. If the cup is dirty ...", "My blue cup
@@ -2354,7 +2396,8 @@ class _Reader:
                     self.colors[category] = words[told]
                 i += n
                 continue
-            if shared is None and (glossed := self.glossed(i, n, category) or self.renamed_fuller(i, n, category)) is not None:
+            if shared is None and (glossed := self.glossed(i, n, category) or self.renamed_fuller(i, n, category)
+                                   or self.headed_fuller(i, n, category)) is not None:
                 # "Cupboard on wall (wall cabinet, over sink)": one thing, named by the fuller name
                 del self.kinds[glossed]
                 self.recent.remove(glossed)
