@@ -298,15 +298,26 @@ _ITEM_END = re.compile(r"[ \t]*;(?:[ \t]+(?:and|or))?[ \t]*\n(?=[ \t]*(?:\((?:[a
                        r"|(?:[a-z]|[ivx]+|\d{1,2})\)|\d{1,2}\.)[ \t]+)", re.I)
 
 
-#: a condition with its subject and copula elided before a participle of finding or leaving (a
-#: work order's "if found on the chair", a manual's "when left open"): "if it is found ..."
-_ELIDED_SUBJECT = re.compile(
-    rf"\b(if|unless|when|whenever|once|while)\s+(?=(?:{'|'.join(sorted(FOUND_PARTICIPLES))})\b)", re.I)
 #: participles of a thing at rest where it was put or fell ("lying", "standing", British "sat"):
 #: they say no more than that it is there, so an elided condition's subject is the thing before
 #: them (`_ELIDED_PLACE`) and, before "there", they ask its presence as "there" alone does
 #: (`_RESTING_THERE`)
 RESTING_PARTICIPLES = ("left", "lying", "sitting", "standing", "resting", "sat", "stood")
+#: the same but "left", which before "there" is the verb of leaving a thing somewhere ("if it's
+#: been left there", read by the factor reader with the place before it), not a thing at rest
+AT_REST = tuple(w for w in RESTING_PARTICIPLES if w != "left")
+#: a resting participle between a thing's copula (or "still") and "there" / "here" ("if it's
+#: still lying there", "should it be sitting there still", "Still standing there?"): dropped, so
+#: the presence is asked as "if it's still there" is
+_RESTING_THERE = re.compile(
+    rf"\b(is|are|be|been|'s|'re|still)\s+(?:{'|'.join(AT_REST)})\s+(?=(?:still\s+)?(?:there|here)\b)",
+    re.I)
+
+
+#: a condition with its subject and copula elided before a participle of finding or leaving (a
+#: work order's "if found on the chair", a manual's "when left open"): "if it is found ..."
+_ELIDED_SUBJECT = re.compile(
+    rf"\b(if|unless|when|whenever|once|while)\s+(?=(?:{'|'.join(sorted(FOUND_PARTICIPLES))})\b)", re.I)
 #: the same before a place ("the towel: if on the floor, pick it up", "grab the sock if still on
 #: the rug", "if standing on the vanity, put it away"): a condition with no subject and no verb whose
 #: predicate is a surface place, or a resting participle and that place, speaks of the thing just
@@ -316,12 +327,6 @@ RESTING_PARTICIPLES = ("left", "lying", "sitting", "standing", "resting", "sat",
 _ELIDED_PLACE = re.compile(
     rf"\b(if|unless|when|whenever)\s+(?=(?:(?:still|already)\s+)?(?:(?:{'|'.join(RESTING_PARTICIPLES)})\s+)?"
     r"(?:on|upon)\s+(?:the|a|an|your|my|our|his|her|their)\s)", re.I)
-#: a resting participle between a thing's copula (or "still") and "there" / "here" ("if it's
-#: still lying there", "should it be sitting there still", "Still standing there?"): dropped, so
-#: the presence is asked as "if it's still there" is
-_RESTING_THERE = re.compile(
-    rf"\b(is|are|be|been|'s|'re|still)\s+(?:{'|'.join(RESTING_PARTICIPLES[1:])})\s+(?=(?:still\s+)?(?:there|here)\b)",
-    re.I)
 #: the same as a question of its own, after the thing was named ("The towel. On the floor? Hang
 #: it up.", "I took my hat off in a hurry. Still on the floor? ..."): a sentence that is only a
 #: surface place and its question mark asks it of the thing spoken of, "Is it on the floor?"; a
@@ -379,10 +384,10 @@ _BE_PRONOUN = {"was": "it", "is": "it", "were": "they", "are": "they"}
 #: the same of "there" after "still", as a question of its own ("The mug has been on the desk all
 #: week. Still there? Wash it.", "Still lying there?"): the thing spoken of is asked whether it is
 #: still where it was said to be, "Is it still there?" (a resting participle says no more,
-#: `RESTING_PARTICIPLES`); without "still" a bare "There?" is left alone
+#: `AT_REST`); without "still" a bare "There?" is left alone
 _STILL_THERE_QUESTION = re.compile(
     r"(?:(?<=^)|(?<=[.!?;]\s)|(?<=\n))(?P<still>still)\s+"
-    rf"(?:(?:{'|'.join(RESTING_PARTICIPLES[1:])})\s+)?(?P<there>there|here)\?", re.I | re.M)
+    rf"(?:(?:{'|'.join(AT_REST)})\s+)?(?P<there>there|here)\?", re.I | re.M)
 
 
 def _still_there(m: re.Match[str]) -> str:
