@@ -50,6 +50,7 @@ from logicenveval.offline.lexicon import (
 )
 from logicenveval.offline.sentences import (
     ARROW,
+    DEFINITE_OPENERS,
     FORMS,
     MACHINE_EPITHETS,
     PERSONAL_SUBJECTS,
@@ -427,7 +428,7 @@ def _use_kinds(catalog: Catalog) -> dict[str, set[str]]:
 
 #: the determiners that open a phrase renaming the thing just named (`_Reader.appositive`): "the"
 #: after a comma or a bracket, a possessive too between dashes
-_RENAMING_DETERMINERS = frozenset({"the", "my", "your", "our", "his", "her", "their"})
+_RENAMING_DETERMINERS = DEFINITE_OPENERS
 #: the words that name the complement of a colour as a class ("a coloured shirt", `color_class`)
 _COMPLEMENT_COLORS = frozenset({"coloured", "colored"})
 #: the nouns of colour after "other" ("a towel of any other colour")

@@ -62,6 +62,7 @@ from logicenveval.offline.sentences import (
     ACTIONS,
     ARROW_MARK,
     BELIEFS,
+    DEFINITE_OPENERS,
     FREQUENCY,
     NORM_ADVERBS,
     PERSONAL_SUBJECTS,
@@ -1928,7 +1929,7 @@ def _agent(sent: _Sentence, ms: list[Mention], lo: int, who: int) -> bool:
     if sent.words[who] in SUBJECT_PRONOUNS:
         return True
     span = sent.words[lo:who + 1]
-    if span[:1] and span[0] in ("the", "my", "our", "your", "his", "her", "their"):
+    if span[:1] and span[0] in DEFINITE_OPENERS:
         span = span[1:]  # "the cleaner", "my sister": a person's title
     return 1 <= len(span) <= 2 and not any(lo <= m.start <= who for m in ms) \
         and all(w.isalpha() and w not in _NO_AGENT for w in span)
@@ -1947,7 +1948,7 @@ def _definite(words: list[str], start: int) -> bool:
     j = start - 1
     while j >= 0 and (words[j] in COLOR_WORDS or words[j] in STATE_WORDS):
         j -= 1
-    return j >= 0 and words[j] in ("the", "my", "our", "your", "his", "her", "their", "its")
+    return j >= 0 and (words[j] in DEFINITE_OPENERS or words[j] == "its")
 
 
 #: prepositions whose noun completes the noun before it (what it is for, what it holds): a

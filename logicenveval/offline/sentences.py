@@ -80,6 +80,9 @@ PREP_ON = frozenset({"on", "onto", "atop", "upon"})
 #: bottle is empty": the thing spoken of, in its roll or bottle (`naming`, `analysis.mentions`)
 FORMS = frozenset({"bag", "pack", "packet", "carton", "roll", "bottle", "tube", "jar", "tub", "can",
                    "container", "box", "spray"})
+#: "the" and the persons' possessive determiners: they open a noun phrase of a thing taken as
+#: known (a subject whose clause or place is said of it, a thing named again)
+DEFINITE_OPENERS = frozenset({"the", "my", "your", "our", "his", "her", "their"})
 #: words that open a noun phrase and say which one is meant (`determiner`)
 DETERMINERS = frozenset({"the", "a", "an", "my", "our", "your", "his", "her", "its", "their", "this",
                          "that", "these", "those", "any", "every", "each", "some", "no"})
@@ -1028,7 +1031,7 @@ def _goes_missing(m: re.Match[str]) -> str:
 #: comma's "That said, it's ..." is no noun phrase, so the comma is left alone
 _LEFT_DISLOCATED = re.compile(
     r"(?P<lead>(?:^|(?<=[.!?])[ \t]+)[ \t]*(?:\d{1,2}[.)][ \t]+|[-*\u2022][ \t]+)?)"
-    r"(?P<np>(?:the|my|your|our|his|her|their|this|these|those)[ \t]+(?:[\w'-]+[ \t]+){0,5}?[\w'-]+)"
+    rf"(?P<np>(?:{'|'.join(sorted(DEFINITE_OPENERS | {'this', 'these', 'those'}))})[ \t]+(?:[\w'-]+[ \t]+){{0,5}}?[\w'-]+)"
     r"[ \t]+[-\u2013\u2014][ \t]+(?P<pron>it|they)(?P<be>'s|'re|[ \t]+is|[ \t]+are)(?P<after>[ \t]+\w+)",
     re.I | re.M)
 _NOT_DISLOCATED = frozenset({"is", "are", "was", "were", "has", "have", "had", "be", "been", "do", "does", "did",
@@ -1063,7 +1066,7 @@ _RELATIVE_SUBJECT = "|".join(w.replace(" ", r"\s+") for w in RELATIVE_SUBJECTS)
 #: with none either (`_NOT_RELATIVE`: "if you find the key you know it is in the bowl" and "wash the
 #: plate and we make sure our toaster is off" are two clauses)
 _CONTACT_RELATIVE = re.compile(
-    r"\b(?P<np>(?:the|my|your|our|his|her|their)\s+(?:[a-z-]+\s+){0,2}?[a-z-]+)\s+(?:(?:that|which)\s+)?"
+    rf"\b(?P<np>(?:{'|'.join(sorted(DEFINITE_OPENERS))})\s+(?:[a-z-]+\s+){{0,2}}?[a-z-]+)\s+(?:(?:that|which)\s+)?"
     rf"(?P<subject>{_RELATIVE_SUBJECT})\s+"
     r"(?P<clause>(?:[a-z'-]+\s+){1,8}?)(?P<be>is|are|isn't|aren't|was|were|looks|seems)\b", re.I)
 _NOT_RELATIVE = frozenset({"it", "they", "them", "he", "she", "him", "her", "there", "that", "which", "if", "when",
