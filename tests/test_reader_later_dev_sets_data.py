@@ -180,6 +180,14 @@ note for nights, a Crown Court usher's notes for a relief usher, a register offi
 room clear-down sheet, a permit to work, a records retention and disposal schedule, a standard
 operating procedure) and the English of a Turkish speaker (a landlady's note to her tenant), in
 room ids beginning with a letter n-z.
+dev 43 was written after dev 42 (earlier sets read only through their READMEs, their rewordings'
+registers and their room ids, but for one dev 40 task taken whole as a template and the format of
+dev 40's rewordings.json; dev 41, dev 42 and dev 44 not opened at all): registers of care and
+service work done in other people's places (a district nurse's continuation notes, a funeral
+director's chapel of rest viewing checklist, a removal firm's pack and load sheet, a hotel's
+in-room dining collection card, a night nanny's log, a disabled employer's guide for her personal
+assistants, an au pair handbook's page, a home-from-hospital volunteer's task card) and the
+English of a Nepali speaker (a live-in carer's note), in room ids beginning with a letter a-m.
 """
 
 from __future__ import annotations
@@ -272,6 +280,7 @@ SETS = (
     DevSet("reader_dev40", "_d40", 3, 6, ("signal_box_signallers_handover", "study_plant_and_light_d40")),
     DevSet("reader_dev41", "_d41", 3, 6, ("lambing_shed_night_lamber_notes", "kitchen_fridge_restock_d41")),
     DevSet("reader_dev42", "_d42", 3, 6, ("porters_lodge_night_handover", "multi_room_trash_run_d42")),
+    DevSet("reader_dev43", "_d43", 3, 6, ("chapel_of_rest_viewing_checklist", "lamp_or_pillow_fetch_d43")),
 )
 IDS = [s.name for s in SETS]
 ENTRIES = {s.name: rewordings(DATA / s.name) for s in SETS}

@@ -14,6 +14,7 @@ so each folder gets a copy of the original's four BTs; `tests/test_reader_dev_da
 `tests/test_reader_holdout2_data.py` and `tests/test_reader_later_dev_sets_data.py` check
 that every copy still equals its original and that
 nothing but `id`, `description` and the constraints' `says` differs.
+The forty-third development set, `reader_dev43`, is built the same way (`--set reader_dev43`).
 
     python tools/build_reworded_tasks.py            # (re)write tests/data/reader_dev/tasks_reworded/
     python tools/build_reworded_tasks.py --set reader_holdout   # the held-out set's folders
@@ -57,6 +58,7 @@ nothing but `id`, `description` and the constraints' `says` differs.
     python tools/build_reworded_tasks.py --set reader_dev40     # the fortieth development set's folders
     python tools/build_reworded_tasks.py --set reader_dev41     # the forty-first development set's folders
     python tools/build_reworded_tasks.py --set reader_dev42     # the forty-second development set's folders
+    python tools/build_reworded_tasks.py --set reader_dev43     # the forty-third development set's folders
     python tools/build_reworded_tasks.py --mutants  # also ship killable_mutants.json (minutes)
 
 Folders of ids no longer listed are removed, so the directory always equals the JSON.
@@ -84,6 +86,7 @@ SETS = ("reader_dev", "reader_holdout", "reader_dev3", "reader_dev4", "reader_ho
         "reader_dev31", "reader_dev32", "reader_dev33", "reader_dev34", "reader_dev35",
         "reader_dev36", "reader_dev37", "reader_dev38", "reader_dev39",
         "reader_dev40", "reader_dev41", "reader_dev42")
+SETS += ("reader_dev43",)  # the forty-third development set
 BUILTIN = ROOT / "benchmark_data" / "tasks"
 
 
