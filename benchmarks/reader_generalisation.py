@@ -348,6 +348,24 @@ prints LogCov / SceVR / FauDR for each, then per task:
   log, a university cleanroom's gowning notice, a hospital porters' note for nights, a Crown Court
   usher's notes for a relief usher, a register office's ceremony room clear-down sheet, a Turkish
   landlady's note to her tenant). Fresh (`FRESH`) until measured ten times, then a development set;
+- `dev43 reworded` and `dev43 new`: tests/data/reader_dev43/ — the forty-third development set,
+  written in the twenty-fifth session (beside dev 44, each in its own family of registers, by
+  helpers who never read or ran the reader) in registers of care and service work in other
+  people's places no set used and the English of a Nepali speaker: one rewording each of 3 built-in
+  descriptions (a disabled employer's guide for her personal assistants, an au pair handbook's
+  page, a home-from-hospital volunteer's task card) and six new tasks in rooms none of the sets
+  above use (a district nurse's continuation notes, a chapel of rest viewing checklist, a removal
+  firm's pack and load sheet, a hotel's in-room dining collection card, a night nanny's log, a
+  Nepali live-in carer's note). Fresh (`FRESH`) until measured ten times, then a development set;
+- `dev44 reworded` and `dev44 new`: tests/data/reader_dev44/ — the forty-fourth development set,
+  written in the twenty-fifth session beside dev 43 in registers of making and repairing things no
+  set used and the English of a Nepali speaker (both helpers chose Nepali, each unaware of the
+  other): one rewording each of 3 built-in descriptions (a screen-print shop's end-of-run
+  checklist, a dolls' hospital's discharge and aftercare note, flat-pack furniture assembly
+  instructions) and six new tasks in rooms none of the sets above use (a bicycle workshop's job
+  card, a piano tuner's visit notes, a boatyard's winter lay-up list, a blacksmith's end-of-day
+  card, a repair café's closing sheet, a Nepali flatmate's note). Fresh (`FRESH`) until measured
+  ten times, then a development set;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -441,7 +459,7 @@ dev5_new=... dev6_reworded=... dev6_new=... dev7_reworded=... dev7_new=... dev8_
 dev8_new=... dev9_reworded=... dev9_new=... dev10_reworded=... dev10_new=... dev11_reworded=...
 dev11_new=... dev12_reworded=... dev12_new=... dev13_reworded=... dev13_new=... dev14_reworded=... dev14_new=...
 dev15_reworded=... dev15_new=... dev16_reworded=... dev16_new=... dev17_reworded=... dev17_new=...
-dev18_reworded=... dev18_new=... dev19_reworded=... dev19_new=... dev20_reworded=... dev20_new=... dev21_reworded=... dev21_new=... dev22_reworded=... dev22_new=... dev23_reworded=... dev23_new=... dev24_reworded=... dev24_new=... dev25_reworded=... dev25_new=... dev26_reworded=... dev26_new=... dev27_reworded=... dev27_new=... dev28_reworded=... dev28_new=... dev29_reworded=... dev29_new=... dev30_reworded=... dev30_new=... dev31_reworded=... dev31_new=... dev32_reworded=... dev32_new=... dev33_reworded=... dev33_new=... dev34_reworded=... dev34_new=... dev35_reworded=... dev35_new=... dev36_reworded=... dev36_new=... dev37_reworded=... dev37_new=... dev38_reworded=... dev38_new=... dev39_reworded=... dev39_new=... dev40_reworded=... dev40_new=... dev41_reworded=... dev41_new=... dev42_reworded=... dev42_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
+dev18_reworded=... dev18_new=... dev19_reworded=... dev19_new=... dev20_reworded=... dev20_new=... dev21_reworded=... dev21_new=... dev22_reworded=... dev22_new=... dev23_reworded=... dev23_new=... dev24_reworded=... dev24_new=... dev25_reworded=... dev25_new=... dev26_reworded=... dev26_new=... dev27_reworded=... dev27_new=... dev28_reworded=... dev28_new=... dev29_reworded=... dev29_new=... dev30_reworded=... dev30_new=... dev31_reworded=... dev31_new=... dev32_reworded=... dev32_new=... dev33_reworded=... dev33_new=... dev34_reworded=... dev34_new=... dev35_reworded=... dev35_new=... dev36_reworded=... dev36_new=... dev37_reworded=... dev37_new=... dev38_reworded=... dev38_new=... dev39_reworded=... dev39_new=... dev40_reworded=... dev40_new=... dev41_reworded=... dev41_new=... dev42_reworded=... dev42_new=... dev43_reworded=... dev43_new=... dev44_reworded=... dev44_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
 rows only).
 """
 
@@ -509,6 +527,8 @@ DEV39 = ROOT / "tests" / "data" / "reader_dev39"
 DEV40 = ROOT / "tests" / "data" / "reader_dev40"
 DEV41 = ROOT / "tests" / "data" / "reader_dev41"
 DEV42 = ROOT / "tests" / "data" / "reader_dev42"
+DEV43 = ROOT / "tests" / "data" / "reader_dev43"
+DEV44 = ROOT / "tests" / "data" / "reader_dev44"
 HOLDOUT2 = ROOT / "tests" / "data" / "reader_holdout2"
 #: (row name, tasks folder; None = the built-in tasks)
 SETS: tuple[tuple[str, Path | None], ...] = (
@@ -554,6 +574,8 @@ SETS: tuple[tuple[str, Path | None], ...] = (
     ("dev40 reworded", DEV40 / "tasks_reworded"), ("dev40 new", DEV40 / "tasks_new"),
     ("dev41 reworded", DEV41 / "tasks_reworded"), ("dev41 new", DEV41 / "tasks_new"),
     ("dev42 reworded", DEV42 / "tasks_reworded"), ("dev42 new", DEV42 / "tasks_new"),
+    ("dev43 reworded", DEV43 / "tasks_reworded"), ("dev43 new", DEV43 / "tasks_new"),
+    ("dev44 reworded", DEV44 / "tasks_reworded"), ("dev44 new", DEV44 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
     ("held-out2 reworded", HOLDOUT2 / "tasks_reworded"), ("held-out2 new", HOLDOUT2 / "tasks_new"),
 )
@@ -562,7 +584,8 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH: frozenset[str] = frozenset({"dev41 reworded", "dev41 new", "dev42 reworded", "dev42 new"})
+FRESH: frozenset[str] = frozenset({"dev41 reworded", "dev41 new", "dev42 reworded", "dev42 new",
+                                   "dev43 reworded", "dev43 new", "dev44 reworded", "dev44 new"})
 GENERATOR = "logicenvgen"
 
 
