@@ -91,6 +91,8 @@ _NOUN_LEADS = frozenset({"with", "and", "or", "plus"})
 #: prepositions: an item holding one is a clause, not a noun phrase ("are in the kitchen")
 _PREPOSITIONS = frozenset({"on", "onto", "in", "into", "inside", "from", "by", "near", "under", "of",
                            "to", "at", "beside", "behind", "with"})
+#: prepositions whose object is a noun phrase, with no subject in it (`_Reader.prepositional_object`)
+_OBJECT_PREPOSITIONS = _PREPOSITIONS | {"for", "about"}
 #: the words of a phrase that says where a thing is, by what it is near ("by the door", "next to
 #: the sink", "in front of the fire"): a definite head so placed tells which thing it is
 _LOCATING = frozenset({"by", "near", "beside", "behind", "under", "underneath", "beneath", "above", "below",
@@ -1512,10 +1514,22 @@ class _Reader:
         if self.material(i) or not compound_head(raw[j], raw[i] != words[i]) or self.verb(j):
             return False
         # a verb's bare form followed by its complement is the verb of a subject ("my bat and my
-        # racket go in the ..."), not a compound's head ("Car park gate open")
+        # racket go in the ..."), not a compound's head ("Car park gate open"); a preposition's
+        # object holds no subject ("for the bar staff on nights": the staff, no bar)
         after = words[j + 1] if j + 1 < len(words) and gaps[j + 1] == " " else ""
-        return not (getAllLemmas(raw[j]).get("VERB") and (after in _PREPOSITIONS or after in _DETERMINERS
-                                                           or after in FUNCTION_WORDS))
+        if getAllLemmas(raw[j]).get("VERB") and after in _PREPOSITIONS:
+            return self.prepositional_object(i)
+        return not (getAllLemmas(raw[j]).get("VERB") and (after in _DETERMINERS or after in FUNCTION_WORDS))
+
+    def prepositional_object(self, i: int) -> bool:
+        """Whether the singular noun at word `i` opens the object of a preposition, bare or after
+        an article ("Notes for bar staff", "for the bar staff on nights", `_OBJECT_PREPOSITIONS`):
+        a word after it in its base form is then a compound's head, never a verb of it as subject
+        (a verb's object is no such phrase: "let the cloth soak", "leave the mug drain")."""
+        words, gaps = self.text.words, self.text.gaps
+        k = i - 1 if i > 0 and words[i - 1] in _ARTICLES and not gaps[i].strip() else i
+        return k > 0 and not gaps[k].strip() and words[k - 1] in _OBJECT_PREPOSITIONS \
+            and singular(self.text.raw[i]) == self.text.raw[i]
 
     def modifies_next(self, i: int, n: int) -> bool:
         """Whether the one-word noun at word `i` modifies the noun right after it, the head of an
