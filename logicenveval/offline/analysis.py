@@ -70,6 +70,7 @@ from logicenveval.offline.sentences import (
     FORMS,
     FOUND_PARTICIPLES,
     FREQUENCY,
+    GOING_ON,
     HABITUAL_WORDS,
     MACHINE_EPITHETS,
     NORM_ADVERBS,
@@ -2030,8 +2031,8 @@ class _Reader:
                 break  # `on the table`, `with a book on top` are places, not `switched on`
             if w == "off" and skipped and skipped[-1] in FALLS:
                 break  # "it has slipped off", "if it fell off": the fall's particle, not switched off
-            if w == "used":
-                break  # "the cloth is used": the passive of "use"; only "a used cloth" is dirty
+            if w == "used" and not self._used_ends(words, k):
+                break  # "the cloth is used for wiping": the passive of "use", with its complement
             if k + 1 < len(words) and words[k + 1] in TOWARDS and set(skipped) & PERFECT:
                 break  # "has blown onto the floor", "have smashed into it": a motion, not a state
             if k in self.starts:
@@ -2064,6 +2065,8 @@ class _Reader:
         for w, neg, modifier in found:
             flag, pol = STATE_WORDS[w]
             for r in m.roles:
+                if w == "used" and not ((kind := self.kinds.get(r)) is not None and kind.pickable):
+                    continue  # a used towel or mug is dirty, a used bath or dishwasher is not (`_used`)
                 out.append(Fact(r, f"state({r}, {flag})", "state", flag, negated=neg != (not pol),
                                 modifier=modifier, presupposed=taken and modifier))
         return out
@@ -2085,6 +2088,17 @@ class _Reader:
                     if ("dirty" not in FITTED or "dirty" in self.capable.get(r, FITTED))
                     and (kind := self.kinds.get(r)) is not None and kind.pickable]
         return []
+
+    def _used_ends(self, words: list[str], k: int) -> bool:
+        """Whether "used" at `k` ends its clause as its predicate ("if it's been used, wash it",
+        "Used? Then it goes in the basket", "if it was used last night"): the clause's end, a
+        comma, a word going on to another clause, or an adverbial of time (`TRAILING_ADVERBIALS`).
+        So said, that a thing has been used says it is dirty, as "a used towel" does; with a
+        complement ("is used for wiping", "is used by the staff", "as a mat") it is the passive
+        of "use", which says nothing of the thing's state."""
+        rest = tuple(words[k + 1:])
+        return not rest or k + 1 in self.commas or rest[0] in GOING_ON \
+            or any(rest[:len(a)] == a for a in _ADVERBIAL_WORDS)
 
     def _past_modifiers(self, words: list[str], j: int) -> int:
         """The word before the modifier nouns (at most `MODIFIER_NOUNS`) that end at `j`: in "a full

@@ -850,7 +850,7 @@ TRAILING_ADVERBIALS = ("already", "still", "now", "again", "overnight", "earlier
                        "last night", "all night", "all day", "at the moment", "right now", "by now",
                        "for now", "in there", "in here")
 #: words after a predicate state that go on to another clause ("if it's still going, then ...")
-_GOING_ON = ("then", "and", "or", "but", "so")
+GOING_ON = ("then", "and", "or", "but", "so")
 #: the times of a day a state may be said to have held since, after, from or during ("was it left
 #: going after the last nap?", "if the heater is still going since lunch", "still going from last
 #: night"): a preposition of time before one of these says when, as `TRAILING_ADVERBIALS` do, so
@@ -864,7 +864,7 @@ _TIME_AFTER = (rf"(?:{'|'.join(_TIME_PREPOSITIONS)})\s+(?:(?:the|this|that|last|
                rf"(?:{'|'.join(TIMES_OF_DAY)})(?![\w-])")
 _SPACED = re.compile(" ")
 _ADVERBIALS = "|".join([_SPACED.sub(r"\\s+", a) for a in TRAILING_ADVERBIALS] + [_TIME_AFTER])
-_CLAUSE_END = r"(?=\s*(?:[,.;:!?)]|$|\s(?:" + "|".join(_GOING_ON) + "|" + _ADVERBIALS + r")\b))"
+_CLAUSE_END = r"(?=\s*(?:[,.;:!?)]|$|\s(?:" + "|".join(GOING_ON) + "|" + _ADVERBIALS + r")\b))"
 #: participles and phrases that say a thing is not where it should be at all, as a predicate at a
 #: clause's end: "if the mug has been taken", "if the lamp was removed", "when it has
 #: disappeared", "if the remote is nowhere to be seen" (read as "missing", `analysis.ABSENT`).
