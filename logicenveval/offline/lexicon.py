@@ -127,11 +127,14 @@ def complement_adjective(word: str, prev: str, prev_lead: str) -> bool:
 #: quantifiers the lemmatiser's dictionary lists as nouns: after a noun one floats off its subject
 #: ("the mugs both go", "the plates each need", "asleep on the couch all day"), never a head
 QUANTIFIERS = frozenset({"all", "both", "each", "none", "many", "some", "any", "neither", "another"})
+#: the indefinite pronouns of persons, which the dictionary lists as nouns too ("a someone"): after
+#: a noun they open a relative clause's subject ("the plate someone put in the sink"), no compound
+INDEFINITE_PERSONS = frozenset({"someone", "somebody", "anyone", "anybody", "everyone", "everybody", "nobody"})
 #: closed-class words the lemmatiser's dictionary also lists as nouns ("or", a heraldic gold; "i",
 #: the letter; the quantifiers): never the head of a noun compound (`compound_head`)
 FUNCTION_WORDS = frozenset({"or", "and", "but", "nor", "i", "me", "it", "itself", "them", "themselves", "us",
                             "you", "he", "him", "she", "we", "they", "this", "that", "these", "those", "if",
-                            "as", "than", "who", "which", "what"}) | QUANTIFIERS
+                            "as", "than", "who", "which", "what"}) | QUANTIFIERS | INDEFINITE_PERSONS
 
 
 def compound_head(word: str, after_plural: bool) -> bool:
