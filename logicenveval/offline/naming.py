@@ -246,6 +246,8 @@ FLOOR_LINKS = frozenset({"which", "that", "is", "sits", "sit", "stands", "stand"
                          "lies", "lie"})
 #: the nouns of the floor said as the place a thing stands on
 FLOOR_WORDS = frozenset({"floor", "ground"})
+#: the floor as `_Reader.stood_on` gives it: the support every room has, no catalog kind
+FLOOR = "floor"
 #: words too common to say which of several categories a bare noun means
 _NOT_CONTEXT = frozenset({"floor", "wall", "ceiling", "room"})
 #: "that is a ...", "it was a ...": a predicate noun of a thing already named (`predicate_noun`)
@@ -946,7 +948,7 @@ class _Reader:
         described = i > 0 and self.text.gaps[i] == " " and self.text.words[i - 1] not in _DETERMINERS \
             and self.text.words[i - 1] not in SORT_ADJECTIVES and "ADJ" in getAllLemmas(self.text.raw[i - 1])
 
-        floor = self.floor_stood(i)
+        support = self.stood_on(i)
 
         def score(category: str | None) -> tuple[bool, bool, bool, bool, bool, bool, int, bool, bool, bool, int, bool, int, bool, bool]:
             assert category is not None
@@ -968,8 +970,10 @@ class _Reader:
                     # "a bottle for the pills") names its sort before the head's own name does
                     bool(hints & use),
                     # the floor its own phrase stands it on names the kind the catalog stands on
-                    # the floor ("the bowl on the floor by the door": a pet's bowl, no cereal bowl)
-                    floor and "floor" in cat.placement,
+                    # the floor ("the bowl on the floor by the door": a pet's bowl, no cereal bowl),
+                    # a thing's top the kind the catalog stands on one ("the lamp lives on the
+                    # shelf": a desk or table lamp, no floor or ceiling lamp)
+                    support is not None and ("floor" if support == FLOOR else "surface") in cat.placement,
                     own,
                     # a sort named by its own modifier is that sort, whatever else its sentence says
                     unlisted and HEAD_SENSES.get(word) == category,
@@ -1038,19 +1042,24 @@ class _Reader:
         said = set(words[first:min(self.text.sentence_end(at), i)])
         return words[k] not in said
 
-    def floor_stood(self, i: int) -> bool:
-        """Whether the noun at word `i` is stood on the floor by its own phrase: "on the floor"
-        (`FLOOR_WORDS`, one modifier allowed: "the kitchen floor") right after it, after a comma
-        or a relative word and a verb of standing (`FLOOR_LINKS`), before the sentence ends."""
+    def stood_on(self, i: int) -> str | None:
+        """What the noun at word `i` is stood on by its own phrase: "on the" right after it, after
+        a comma or a relative word and a verb of standing (`FLOOR_LINKS`), then the floor
+        (`FLOOR_WORDS`, one modifier allowed: "the kitchen floor"; `FLOOR`) or a kind with a top
+        that holds things (`Category.surface`: "the lamp lives on the shelf", "a clock on the
+        bookshelf": the kind's name). None when its phrase stands it on neither."""
         words, gaps = self.text.words, self.text.gaps
         k = i + 1
-        while k < len(words) and words[k] in FLOOR_LINKS and gaps[k] in (" ", ", "):
+        # (as written: the singular of "lives" is "life")
+        while k < len(words) and self.text.raw[k] in FLOOR_LINKS and gaps[k] in (" ", ", "):
             k += 1
-        if k + 2 >= len(words) or words[k] != "on" or gaps[k] not in (" ", ", ") or words[k + 1] != "the":
-            return False
-        if words[k + 2] in FLOOR_WORDS and gaps[k + 2] == " ":
-            return True
-        return k + 3 < len(words) and words[k + 3] in FLOOR_WORDS and gaps[k + 2] == gaps[k + 3] == " "
+        if k + 2 >= len(words) or words[k] != "on" or gaps[k] not in (" ", ", ") or words[k + 1] != "the" \
+                or gaps[k + 2] != " ":
+            return None
+        if words[k + 2] in FLOOR_WORDS or k + 3 < len(words) and words[k + 3] in FLOOR_WORDS and gaps[k + 3] == " ":
+            return FLOOR
+        support = self.match(k + 2)[1]
+        return support if support is not None and self.catalog.categories[support].surface else None
 
     def use_clause(self, i: int) -> set[str]:
         """The words of the clause or phrase right after the noun at word `i` that says what it is
