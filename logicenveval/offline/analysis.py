@@ -3860,6 +3860,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                     # "The lamp on the nightstand in the bedroom may be on": the room says which
                     # holder is meant; the doubt is the lamp's, not whether the nightstand is there
                     continue
+                if _state_asked(f.subject, cl.facts):
+                    # "If the lamp in the bedroom is on", "Kettle in the kitchen still on?": in a
+                    # task of one room, the room says nothing of which thing or whether it is
+                    # there; the condition asks its state
+                    continue
                 # "I believe I may have left my wristwatch in the flatlet. If it is there, ...": in a
                 # task of one room, being in that room is being there at all
                 f = Fact(f.subject, f"exists({f.subject})", "exists", negated=f.negated)
@@ -4477,14 +4482,18 @@ def _identifying_place(f: Fact, cl: Clause) -> bool:
     state ("... may be on", "... is left running more often than not"): the doubt is the
     state's, the place says which thing is meant, as it would in a plain statement. A place in
     the predicate ("the towel might be on the floor and wet") is still doubted."""
-    if f.kind != "location" or f.goal or not any(
-            g.subject == f.subject and g.kind == "state" and not g.goal for g in cl.facts):
+    if f.kind != "location" or f.goal or not _state_asked(f.subject, cl.facts):
         return False
     words = re.findall(r"[a-z']+", cl.text.lower())
     verb = next((k for k, w in enumerate(words) if w in _PREDICATE_OPENERS), None)
     # (no predicate opener, no subject phrase to name the thing by: "Maybe I forgot my glasses
     # on the table" doubts the place itself)
     return verb is not None and any(w in PREP_ON | PREP_IN for w in words[1:verb])
+
+
+def _state_asked(role: str, facts: Iterable[Fact]) -> bool:
+    """Whether the clause asks a state of `role` (not one it is to be brought to)."""
+    return any(g.subject == role and g.kind == "state" and not g.goal for g in facts)
 
 
 def _holds_another(role: str, facts: Iterable[Fact]) -> bool:
