@@ -244,6 +244,13 @@ _USE_SPAN = 8
 #: mop the floor", "the bowl fell on the floor" say where it went, not what kind it is)
 FLOOR_LINKS = frozenset({"which", "that", "is", "sits", "sit", "stands", "stand", "lives", "live", "stays", "stay",
                          "lies", "lie"})
+#: deeds only people do, as written: leaving or forgetting a thing, coming round, saying (a thing
+#: "drops" or "is lost" too, so those are none): their subject is a person (`_Reader.person_subject`)
+PERSON_DEEDS = frozenset({"leave", "leaves", "left", "forget", "forgets", "forgot", "come", "comes", "came",
+                          "say", "says", "said"})
+#: what may stand between such a subject and its deed ("the cleaners have always left it on")
+_PERSON_DEED_LINKS = frozenset({"have", "has", "had", "always", "never", "often", "usually", "sometimes",
+                                "will", "may", "might", "did", "do", "does"})
 #: the nouns of the floor said as the place a thing stands on
 FLOOR_WORDS = frozenset({"floor", "ground"})
 #: the floor as `_Reader.stood_on` gives it: the support every room has, no catalog kind
@@ -935,6 +942,8 @@ class _Reader:
             return None
         if exact is None and len(set(options)) == 1 and self.head_alone(i, options[0]):
             return None  # "behind the bar", "the last game" (no soap, no board said): no soap bar, no board game
+        if exact is None and self.person_subject(i):
+            return None  # "If the cleaners have left it on": the people who clean, no vacuum cleaner
         prev = self.text.words[i - 1] if i > 0 else ""
         candidates = options if options else [exact]
         written = self.text.raw[i]
@@ -1115,6 +1124,18 @@ class _Reader:
         if words[i - 1] in _SERIES:
             return words[i - 2] in _ARTICLES
         return words[i - 2] in _STANDING_AT and self.catalog.categories[category].pickable
+
+    def person_subject(self, i: int) -> bool:
+        """Whether the word at `i`, no kind's name by itself (the head of longer names: "cleaner"
+        of "vacuum cleaner", "player" of "record player"), is the subject of a deed only people do
+        (`PERSON_DEEDS`: "the cleaners have left it on", "the cleaner came Tuesday", "the players
+        forgot their boots"), an auxiliary or "always"/"never" between at most: it names the
+        people the word also means, no thing."""
+        raw = self.text.raw
+        k = i + 1
+        while k < len(raw) and not self.text.gaps[k].strip() and raw[k] in _PERSON_DEED_LINKS:
+            k += 1
+        return k < len(raw) and not self.text.gaps[k].strip() and raw[k] in PERSON_DEEDS
 
     def sort_named(self, i: int, options: list[str]) -> bool:
         """Whether the text names its own sort of the thing at word `i` by a noun before it that no
