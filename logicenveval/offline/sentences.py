@@ -523,13 +523,17 @@ def _state_subject(m: re.Match[str]) -> str:
 
 #: a bare state word and a comma before an instruction ("If there's an umbrella: wet, stand it in
 #: the umbrella stand; dry, lay it on the console table"): the case of the thing spoken of, as
-#: "if it is wet, ..." (the verb of putting after the comma, `ACTIONS`); two states joined by
-#: "and" / "but" make one case ("clean but wet, hang it on the towel rack... clean and dry, leave
-#: it where it is")
+#: "if it is wet, ..." (the verb of putting after the comma, `ACTIONS`), or before a goal with no
+#: verb, as `_VERBLESS_CASE`'s answers are ("Your cup is on the bench. Dirty, in the sink. Clean,
+#: back on the shelf"); two states joined by "and" / "but" make one case ("clean but wet, hang it
+#: on the towel rack... clean and dry, leave it where it is")
 _CASE_STATES = "|".join(w for w, (flag, _) in STATE_WORDS.items() if flag in ("dirty", "wet"))
+#: (a plain "in" or "on" only before "the": "Clean, in my opinion" is no goal)
+_VERBLESS_GOAL = (r"(?:(?:back|straight)\s+(?:into|onto|to|in|on)|into|onto)\s+(?:the|my|your|our|its|their)\s"
+                  r"|(?:in|on|to)\s+the\s")
 _STATE_CASE = re.compile(
     rf"(?:(?<=^)|(?<=[.!?;:\n]))(\s*)((?:{_CASE_STATES})(?:\s+(?:and|but)\s+(?:still\s+)?(?:{_CASE_STATES}))?)"
-    rf",\s+(?=(?:just\s+)?(?:{'|'.join(sorted(ACTIONS))})\b)", re.I | re.M)
+    rf",\s+(?=(?:just\s+)?(?:{'|'.join(sorted(ACTIONS))})\b|{_VERBLESS_GOAL})", re.I | re.M)
 
 
 #: "any other kind of toy", "every other sort of book": the class itself ("any other toy")
