@@ -244,10 +244,14 @@ _USE_SPAN = 8
 #: mop the floor", "the bowl fell on the floor" say where it went, not what kind it is)
 FLOOR_LINKS = frozenset({"which", "that", "is", "sits", "sit", "stands", "stand", "lives", "live", "stays", "stay",
                          "lies", "lie"})
-#: deeds only people do, as written: leaving or forgetting a thing, coming round, saying (a thing
-#: "drops" or "is lost" too, so those are none): their subject is a person (`_Reader.person_subject`)
-PERSON_DEEDS = frozenset({"leave", "leaves", "left", "forget", "forgets", "forgot", "come", "comes", "came",
-                          "say", "says", "said"})
+#: deeds only people do to a thing, as written: leaving it somewhere or so, forgetting it (a thing
+#: "drops", "is lost", "comes on" or "says" a time too, so those are none); with the thing after
+#: them (`_DEED_OBJECTS`), their subject is a person (`_Reader.person_subject`)
+PERSON_DEEDS = frozenset({"leave", "leaves", "left", "forget", "forgets", "forgot"})
+#: what such a deed's object opens with ("left it on", "forgot to switch", "leaves the door open"):
+#: without one, "left" is a participle of the thing ("Was the lamp left on?")
+_DEED_OBJECTS = frozenset({"it", "them", "the", "a", "an", "his", "her", "their", "my", "our", "your", "this",
+                           "that", "to"})
 #: what may stand between such a subject and its deed ("the cleaners have always left it on")
 _PERSON_DEED_LINKS = frozenset({"have", "has", "had", "always", "never", "often", "usually", "sometimes",
                                 "will", "may", "might", "did", "do", "does"})
@@ -1126,16 +1130,17 @@ class _Reader:
         return words[i - 2] in _STANDING_AT and self.catalog.categories[category].pickable
 
     def person_subject(self, i: int) -> bool:
-        """Whether the word at `i`, no kind's name by itself (the head of longer names: "cleaner"
-        of "vacuum cleaner", "player" of "record player"), is the subject of a deed only people do
-        (`PERSON_DEEDS`: "the cleaners have left it on", "the cleaner came Tuesday", "the players
-        forgot their boots"), an auxiliary or "always"/"never" between at most: it names the
-        people the word also means, no thing."""
-        raw = self.text.raw
+        """Whether the word at `i`, no kind's name by itself (the head of a longer name: "cleaner"
+        of "vacuum cleaner"), is the subject of a deed only people do to a thing (`PERSON_DEEDS`
+        and its object, `_DEED_OBJECTS`: "the cleaners have left it on", "the cleaner always
+        leaves the blind open"), with an auxiliary or an adverb of frequency between at most
+        (`_PERSON_DEED_LINKS`): it names the people the word also means, no thing."""
+        raw, gaps = self.text.raw, self.text.gaps
         k = i + 1
-        while k < len(raw) and not self.text.gaps[k].strip() and raw[k] in _PERSON_DEED_LINKS:
+        while k < len(raw) and not gaps[k].strip() and raw[k] in _PERSON_DEED_LINKS:
             k += 1
-        return k < len(raw) and not self.text.gaps[k].strip() and raw[k] in PERSON_DEEDS
+        return k + 1 < len(raw) and not gaps[k].strip() and raw[k] in PERSON_DEEDS \
+            and not gaps[k + 1].strip() and raw[k + 1] in _DEED_OBJECTS
 
     def sort_named(self, i: int, options: list[str]) -> bool:
         """Whether the text names its own sort of the thing at word `i` by a noun before it that no
