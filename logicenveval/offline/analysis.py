@@ -2065,7 +2065,7 @@ class _Reader:
         for w, neg, modifier in found:
             flag, pol = STATE_WORDS[w]
             for r in m.roles:
-                if w == "used" and not ((kind := self.kinds.get(r)) is not None and kind.pickable):
+                if w == "used" and not self._carried(r):
                     continue  # a used towel or mug is dirty, a used bath or dishwasher is not (`_used`)
                 out.append(Fact(r, f"state({r}, {flag})", "state", flag, negated=neg != (not pol),
                                 modifier=modifier, presupposed=taken and modifier))
@@ -2086,7 +2086,7 @@ class _Reader:
             # (a carried thing: a used towel or mug is dirty, a used dishwasher is not)
             return [Fact(r, f"state({r}, dirty)", "state", "dirty", negated=negated) for r in m.roles
                     if ("dirty" not in FITTED or "dirty" in self.capable.get(r, FITTED))
-                    and (kind := self.kinds.get(r)) is not None and kind.pickable]
+                    and self._carried(r)]
         return []
 
     def _used_ends(self, words: list[str], k: int) -> bool:
