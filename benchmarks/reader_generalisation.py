@@ -368,6 +368,24 @@ prints LogCov / SceVR / FauDR for each, then per task:
   card, a piano tuner's visit notes, a boatyard's winter lay-up list, a blacksmith's end-of-day
   card, a repair café's closing sheet, a Nepali flatmate's note). Fresh (`FRESH`) until measured
   ten times, then a development set;
+- `dev45 reworded` and `dev45 new`: tests/data/reader_dev45/ — the forty-fifth development set,
+  written in the twenty-sixth session (beside dev 46, each in its own family of registers, by
+  helpers who never read or ran the reader) in registers of transport and travel work no set used
+  and the English of a Maltese speaker: one rewording each of 3 built-in descriptions (a sleeper
+  train host's cabin preparation card, a removal firm's evening-before e-mail, a coach driver's
+  walkaround check sheet as a bedtime house check) and six new tasks in rooms none of the sets above
+  use (a Gozo ferry bosun's note for the crew mess, a bus garage controller's handover log, a
+  railway station's closing-down book, a marina berthing master's cover e-mail, a removal crew's
+  group chat, a coach tour manager's departure letter). Fresh (`FRESH`) until measured ten times,
+  then a development set;
+- `dev46 reworded` and `dev46 new`: tests/data/reader_dev46/ — the forty-sixth development set,
+  written in the twenty-sixth session beside dev 45 in registers of education and children no set
+  used and the English of a Georgian speaker: one rewording each of 3 built-in descriptions (a Year
+  1 home challenge card, a boarding house matron's laundry room notice, Montessori practical-life
+  work cards) and six new tasks in rooms none of the sets above use (a day nursery's toddler room
+  closing handover, a school site manager's lettings note, a Scout quartermaster's camp returns
+  note, a children's library's Saturday close, a swimming club's gala pack-down sheet, a Georgian
+  piano teacher's note). Fresh (`FRESH`) until measured ten times, then a development set;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -461,7 +479,7 @@ dev5_new=... dev6_reworded=... dev6_new=... dev7_reworded=... dev7_new=... dev8_
 dev8_new=... dev9_reworded=... dev9_new=... dev10_reworded=... dev10_new=... dev11_reworded=...
 dev11_new=... dev12_reworded=... dev12_new=... dev13_reworded=... dev13_new=... dev14_reworded=... dev14_new=...
 dev15_reworded=... dev15_new=... dev16_reworded=... dev16_new=... dev17_reworded=... dev17_new=...
-dev18_reworded=... dev18_new=... dev19_reworded=... dev19_new=... dev20_reworded=... dev20_new=... dev21_reworded=... dev21_new=... dev22_reworded=... dev22_new=... dev23_reworded=... dev23_new=... dev24_reworded=... dev24_new=... dev25_reworded=... dev25_new=... dev26_reworded=... dev26_new=... dev27_reworded=... dev27_new=... dev28_reworded=... dev28_new=... dev29_reworded=... dev29_new=... dev30_reworded=... dev30_new=... dev31_reworded=... dev31_new=... dev32_reworded=... dev32_new=... dev33_reworded=... dev33_new=... dev34_reworded=... dev34_new=... dev35_reworded=... dev35_new=... dev36_reworded=... dev36_new=... dev37_reworded=... dev37_new=... dev38_reworded=... dev38_new=... dev39_reworded=... dev39_new=... dev40_reworded=... dev40_new=... dev41_reworded=... dev41_new=... dev42_reworded=... dev42_new=... dev43_reworded=... dev43_new=... dev44_reworded=... dev44_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
+dev18_reworded=... dev18_new=... dev19_reworded=... dev19_new=... dev20_reworded=... dev20_new=... dev21_reworded=... dev21_new=... dev22_reworded=... dev22_new=... dev23_reworded=... dev23_new=... dev24_reworded=... dev24_new=... dev25_reworded=... dev25_new=... dev26_reworded=... dev26_new=... dev27_reworded=... dev27_new=... dev28_reworded=... dev28_new=... dev29_reworded=... dev29_new=... dev30_reworded=... dev30_new=... dev31_reworded=... dev31_new=... dev32_reworded=... dev32_new=... dev33_reworded=... dev33_new=... dev34_reworded=... dev34_new=... dev35_reworded=... dev35_new=... dev36_reworded=... dev36_new=... dev37_reworded=... dev37_new=... dev38_reworded=... dev38_new=... dev39_reworded=... dev39_new=... dev40_reworded=... dev40_new=... dev41_reworded=... dev41_new=... dev42_reworded=... dev42_new=... dev43_reworded=... dev43_new=... dev44_reworded=... dev44_new=... dev45_reworded=... dev45_new=... dev46_reworded=... dev46_new=... held_out_reworded=... held_out_new=... held_out2_reworded=... held_out2_new=...` (with `--dev-only`, the development
 rows only).
 """
 
@@ -531,6 +549,8 @@ DEV41 = ROOT / "tests" / "data" / "reader_dev41"
 DEV42 = ROOT / "tests" / "data" / "reader_dev42"
 DEV43 = ROOT / "tests" / "data" / "reader_dev43"
 DEV44 = ROOT / "tests" / "data" / "reader_dev44"
+DEV45 = ROOT / "tests" / "data" / "reader_dev45"
+DEV46 = ROOT / "tests" / "data" / "reader_dev46"
 HOLDOUT2 = ROOT / "tests" / "data" / "reader_holdout2"
 #: (row name, tasks folder; None = the built-in tasks)
 SETS: tuple[tuple[str, Path | None], ...] = (
@@ -578,6 +598,8 @@ SETS: tuple[tuple[str, Path | None], ...] = (
     ("dev42 reworded", DEV42 / "tasks_reworded"), ("dev42 new", DEV42 / "tasks_new"),
     ("dev43 reworded", DEV43 / "tasks_reworded"), ("dev43 new", DEV43 / "tasks_new"),
     ("dev44 reworded", DEV44 / "tasks_reworded"), ("dev44 new", DEV44 / "tasks_new"),
+    ("dev45 reworded", DEV45 / "tasks_reworded"), ("dev45 new", DEV45 / "tasks_new"),
+    ("dev46 reworded", DEV46 / "tasks_reworded"), ("dev46 new", DEV46 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
     ("held-out2 reworded", HOLDOUT2 / "tasks_reworded"), ("held-out2 new", HOLDOUT2 / "tasks_new"),
 )
@@ -586,7 +608,8 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH: frozenset[str] = frozenset({"dev43 reworded", "dev43 new", "dev44 reworded", "dev44 new"})
+FRESH: frozenset[str] = frozenset({"dev43 reworded", "dev43 new", "dev44 reworded", "dev44 new",
+                                   "dev45 reworded", "dev45 new", "dev46 reworded", "dev46 new"})
 GENERATOR = "logicenvgen"
 
 
