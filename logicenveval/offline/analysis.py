@@ -40,6 +40,7 @@ from logicenveval.offline.clauses import (
     PRESENCE_DETERMINERS,
     PRESENCE_QUESTION,
     SOFTENERS,
+    SUBORDINATORS,
     UNCERTAIN,
     Piece,
     ends_asking,
@@ -432,6 +433,27 @@ def _bracket_read_past(said: str, named: Callable[[str], bool]) -> str:
             return m.group(0)
         return ""
     return _BRACKET_BEFORE_PLACE.sub(drop, said)
+
+
+#: a bracket holding a comma right after a word and right before the verb of its clause ("the dog
+#: bowl (metal, on the mat, by the back door) is empty", "the laptop (work one, silver, dented lid)
+#: still on?"): an aside about the thing before it (`_aside_read_past`)
+_ASIDE_BEFORE_VERB = re.compile(r"(?<=[a-z0-9'])\s*\(([^()]*,[^()]*)\)"
+                                r"(?=\s+(?:is|are|was|were|be|has|have|had|still|stays|remains|gets|got)\b)")
+
+
+def _aside_read_past(said: str, named: Callable[[str], bool]) -> str:
+    """The text with an aside between a thing and its verb dropped: its commas part the subject
+    from its predicate, so the state after it would fall on a thing the aside names ("the dog bowl
+    (metal, on the mat, by the back door) is empty" asks whether the bowl is empty, not the door).
+    An aside with a condition or a time of its own ("(if it rang, silence it)") is a clause, and a
+    bracket after a word that names no thing of the task (`named`) glosses it: both are kept."""
+    def drop(m: re.Match[str]) -> str:
+        inner = set(re.findall(r"[a-z']+", m.group(1).lower()))
+        if inner & SUBORDINATORS or not named(said[:m.start()]):
+            return m.group(0)
+        return ""
+    return _ASIDE_BEFORE_VERB.sub(drop, said)
 
 
 #: the state a definite thing is left in by an act done to it (`_done_by_someone`): "closed the
@@ -1332,7 +1354,8 @@ class _Reader:
                 predicated.add(STATE_WORDS[state][0])
         said = self.machine_again(said)
         said = RAISING.sub("is", said)
-        said = _OVER.sub("on", _bracket_read_past(_contents(said), self._ends_named))
+        said = _OVER.sub("on", _bracket_read_past(_aside_read_past(_contents(said), self._ends_named),
+                                                  self._ends_named))
         toks = tokens(said)
         words = [t[0] for t in toks]
         self.commas = frozenset(k for k in range(1, len(toks)) if "," in said[toks[k - 1][2]:toks[k][1]])

@@ -154,7 +154,23 @@ def split_clauses(sentence: str) -> list[Piece]:
     """The clauses of one sentence (as `split_sentences` gives it), in order, with their role and
     cue: a listed apposition and a fronted "without" rewritten first (`_apposition`), then the
     sentence cut at its cues (`_split`), then a condition cut where an action follows (`_subsplit`)."""
-    return [Piece(*p) for p in _subsplit(_split(_apposition(sentence)))]
+    masked = _BRACKETED_LIST.sub(_mask_commas, sentence)
+    return [Piece(t.replace(_MASK, ","), c, r) for t, c, r in _subsplit(_split(_apposition(masked)))]
+
+
+#: a bracketed aside holding commas ("If you've been in today (training swim, a rescue, whatever)
+#: and it's wet", "When the kettle (the old one, not the new one) is on"): its commas are the
+#: aside's own, so they cut no clause around it; an aside with a cue of its own ("(if it rings,
+#: silence it first)") is a clause and keeps them
+_BRACKETED_LIST = re.compile(r"\([^()]*,[^()]*\)")
+_MASK = "\u201a"
+
+
+def _mask_commas(m: re.Match[str]) -> str:
+    aside = m.group(0)
+    if _first_cue(aside.lower(), CONDITIONAL + ELSE_CUES) is not None:
+        return aside
+    return aside.replace(",", _MASK)
 
 
 _GENERIC = (r"whatever|anything|everything|something|all|(?:any|the|all the)\s+(?:items?|things?|objects?|stuff)"
