@@ -40,6 +40,7 @@ from logicenveval.offline.clauses import (
     PRESENCE_DETERMINERS,
     PRESENCE_QUESTION,
     SOFTENERS,
+    SUBJECTS,
     SUBORDINATORS,
     UNCERTAIN,
     Piece,
@@ -2442,6 +2443,46 @@ def _there_before(clauses: list[Clause], sentence: int, names: tuple[str, ...],
     return []
 
 
+#: the subjects of a conjunct about people, not the scene ("she hasn't come back", "you leave
+#: before six", "nobody's collected it"); "they" and "it" may be things, and are left out
+_PERSON_CONJUNCT = (SUBJECTS - {"they"}) | {"nobody", "noone", "everyone", "everybody"}
+
+
+def _conjunct_presence(words: list[str]) -> bool | None:
+    """`presence_asked` of the one conjunct of a condition that asks it, when every other
+    conjunct is about people ("If she hasn't come back and the bag's still here", "When we're
+    done and the kettle's still here"): what the people do or have done asks nothing of the
+    scene, so the condition asks what its other conjunct asks alone. None otherwise (two things'
+    conditions, "if the lamp is on and the bag's still here", are read as they were)."""
+    parts: list[list[str]] = [[]]
+    for w in words:
+        if w == "and":
+            parts.append([])
+        else:
+            parts[-1].append(w)
+    if len(parts) < 2 or not all(parts):
+        return None
+    found = [presence_asked(p) for p in parts]
+    asked = [f for f in found if f is not None]
+    if len(asked) == 1 and all(p[0] in _PERSON_CONJUNCT for p, f in zip(parts, found, strict=True) if f is None):
+        return asked[0]
+    return None
+
+
+def _absence_of_asked(facts: list[Fact], said: str, lex: Lexicon, clauses: list[Clause], sentence: int) -> list[Fact]:
+    """An absence that names nothing ("Gone - great, nothing to do", "Gone? Fine.", "Not here:
+    nothing to do") right after a condition asking whether a thing is there ("If the bag's still
+    here, lock it in the cupboard and shut the door."): that thing's absence, the other answer to
+    the question just asked, not the absence of whatever the instruction handled last (the
+    cupboard). `facts` unchanged otherwise."""
+    if not facts or not all(f.kind == "exists" and f.negated for f in facts) \
+            or any(m.kind == "role" for m in lex.find_mentions(tokens(expand(said)))):
+        return facts
+    everything = tuple(dict.fromkeys(f.subject for cl in clauses for f in cl.facts))
+    asked = _presence_asked(clauses, sentence, everything)
+    return [Fact(r, f"exists({r})", "exists", negated=True) for r in asked[:1]] if asked else facts
+
+
 def _presence_asked(clauses: list[Clause], sentence: int, names: tuple[str, ...]) -> tuple[str, ...]:
     """Which of `names` a condition of this or the previous sentence asked the presence of
     (`exists`, not negated: "if you find a wallet"), the nearest such condition first."""
@@ -3537,6 +3578,7 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                     clauses.append(Clause(text, grammatical, cue, "statement", (), ()))
                     continue
                 facts, names = _read_heading(reader, text)
+                facts = _absence_of_asked(facts, text, lex, clauses, grammatical)
                 if facts and all(f.derived for f in facts) and not _answers_quality(reader, text, after[pi]):
                     facts = []  # "Included: all walking. Not included: meals": a list's heading
                 if spread[0] == grammatical:
@@ -3635,7 +3677,10 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             # (a question's tag dropped: "the mug is there, isn't it? Then ..." asks what "is the
             # mug there?" does, `_unbiased`)
             low_words = WORD.findall(_unbiased(low))
-            present = presence_asked(low_words) if role == "condition" else None
+            present = (presence_asked(low_words) if presence_asked(low_words) is not None
+                       else _conjunct_presence(low_words)) if role == "condition" else None
+            if role == "condition":
+                facts = _absence_of_asked(facts, said, lex, clauses, grammatical)
             if present is not None and _pronoun_question(low_words) and any(
                     f.kind == "location" and (f.subject in names or cl.sentence >= grammatical - 2)
                     for cl in clauses for f in cl.facts):
