@@ -452,6 +452,12 @@ _COLOR_NOUNS = frozenset({"colour", "colours", "color", "colors"})
 _DASH_GAP = re.compile(r"\s[-\u2013\u2014]\s|[\u2013\u2014]")
 
 
+def _same_sort(a: Category, b: Category) -> bool:
+    """Whether two kinds are things of one sort, as the catalog describes them: where they stand
+    and whether they hold things on or in them (a desk and a dining table; not a desk and a lamp)."""
+    return (tuple(a.placement), a.surface, a.container) == (tuple(b.placement), b.surface, b.container)
+
+
 class _Reader:
     """One reading of one description (the state `name_objects` builds up word by word)."""
 
@@ -500,6 +506,8 @@ class _Reader:
                        if any(f" {mark} " in said for mark in marks) for word, kind in senses.items()
                        if kind in catalog.categories}
         self.said_as: dict[str, str] = {}
+        #: the kinds whose `said_as` a bracket gave (`glossed`: "the chart table (the little desk ...)")
+        self.glossed_as: set[str] = set()
         #: kind -> the colour "it is the red one" gives its one object
         self.colors: dict[str, str] = {}
         #: the head word of "the <part> of the <N>" -> the part ("the lower shelf of the metal
@@ -1316,8 +1324,14 @@ class _Reader:
         fuller kind."""
         opens = i - (i > 0 and self.text.words[i - 1] in COLOR_WORDS and "(" not in self.text.gaps[i])
         opens -= opens > 0 and self.text.words[opens - 1] in _ARTICLES and "(" not in self.text.gaps[opens]
-        if "(" not in self.text.gaps[opens] or not self.recent or self.recent[-1] == category:
+        # (an article and up to two words before the kind's noun: "(the little desk ...")
+        described = next((k for k in range(i - 1, max(i - 4, -1), -1) if "(" in self.text.gaps[k]
+                          and self.text.words[k] in _ARTICLES
+                          and all(not g.strip() for g in self.text.gaps[k + 1:i + 1])),
+                         None)
+        if "(" not in self.text.gaps[opens] and described is None or not self.recent or self.recent[-1] == category:
             return None
+        opens = opens if "(" in self.text.gaps[opens] else described if described is not None else opens
         before = self.recent[-1]
         kind, at = self.kinds.get(before), self.first_at.get(before)
         if kind is None or kind.instances or kind.count > 1 or at is None or not kind.generic:
@@ -1337,7 +1351,31 @@ class _Reader:
         goes_on = end < len(words) and not _BREAK.search(self.text.gaps[end]) and words[end] in _CLAUSE_VERBS
         if len(words[end - 1]) > len(said) + 2 and words[end - 1].endswith(said) and not goes_on:
             return before
-        return before if self.text.words[at] == said and len(fuller) > 1 and fuller[-1] == said else None
+        if self.text.words[at] == said and len(fuller) > 1 and fuller[-1] == said:
+            return before
+        # "the chart table (the little desk at the bottom of the steps)": the thing was called by
+        # a phrase whose head alone was read (a guess), and the bracket opens with an article
+        # and names a kind of the same sort (`_same_sort`) as its head noun: it says what the
+        # thing is ("(the desk one)" only tells which, and keeps the guess)
+        bracket = self.text.words[opens:end]
+        if self.text.words[at] == said and at > 0 and self.text.words[at - 1] not in _ARTICLES \
+                and bracket[:1] and bracket[0] in _ARTICLES and not goes_on \
+                and not (end < len(words) and words[end] == "one") \
+                and _same_sort(self.catalog.categories[before], self.catalog.categories[category]):
+            # the thing keeps the text's own name ("chart_table", a desk), so that the text's
+            # later "on the chart table" is read as that desk
+            self.said_as.setdefault(category, f"{self.text.words[at - 1]} {said}")
+            self.glossed_as.add(category)
+            return before
+        return None
+
+    def said_as_gloss(self, i: int) -> str | None:
+        """The kind a bracket said a two-word phrase is (`glossed`: "the chart table (the little
+        desk ...)"), when word `i` is that phrase's head again, after the same modifier."""
+        if i == 0:
+            return None
+        said = f"{self.text.words[i - 1]} {self.text.words[i]}"
+        return next((c for c, w in self.said_as.items() if w == said and c in self.kinds and c in self.glossed_as), None)
 
     def glossed_spare(self, i: int, n: int, category: str) -> tuple[str, str] | None:
         """The kind of a spare named right before a bracket that names it again by a compound
@@ -2405,6 +2443,9 @@ class _Reader:
                 continue
             shared = self.shared_head(i)
             n, category = (1, shared) if shared is not None else self.kind_at(i)
+            if shared is None and (glossed_as := self.said_as_gloss(i)) is not None:
+                # "the chart table (the little desk ...). ... on the chart table": the desk again
+                n, category = 1, glossed_as
             if category is None:
                 i += 1
                 continue
