@@ -473,6 +473,8 @@ class _Reader:
         # "hold novels, essays, and / all other books") goes on on the next line: no sentence end
         gaps = [" " if k and "\n" in g and not g.strip() and raw[k - 1] in RUN_ON_WORDS else g for k, g in enumerate(gaps)]
         self.text = _Text([w for w, _, _ in toks], raw, gaps)
+        #: the words written with a capital first letter (`line_of_its_own`: a new line's sentence)
+        self.capitalised = frozenset(k for k, (_, a, _) in enumerate(toks) if text[a:a + 1].isupper())
         self.fixed = self._fixed_expressions()
         self.named: set[str] = set()  # kinds named outright (by a full name or synonym)
         self.context = self._context()
@@ -854,6 +856,8 @@ class _Reader:
         raw, gaps = self.text.raw, self.text.gaps
         if self.adjective_before(i):
             return False  # "the acoustic curtain over the window": a noun after an article and adjective
+        if self.line_of_its_own(i):
+            return False  # "MUG\nIt is on the desk.", "QUENCH BUCKET\nIt stands ...": a heading's noun
         if self.compound_object(i):
             return False  # "in the wheelie bin out the back": a compound's head, in an object's phrase
         prev = raw[i - 1] if i > 0 and not gaps[i].strip() else ""
@@ -865,6 +869,16 @@ class _Reader:
         if ARROW.search(gaps[i]) and nxt[:1] == ["with"] and verb_at(raw[i], "to", nxt):
             return True  # "counter dirty? -> wipe w/ sponge": after an arrow, an instruction's verb
         return verb_at(raw[i], prev, nxt)
+
+    def line_of_its_own(self, i: int) -> bool:
+        """Whether word `i` ends a line of at most two words with no mark after it, the next line
+        opening a sentence with a capital ("MUG", "QUENCH BUCKET", then "It is on the desk."): a
+        heading's noun, which the next line's first words do not make a verb with an object ("mug
+        it", "bucket it"); a next line in lower case may go on with it ("Mop\nthe floor")."""
+        gaps = self.text.gaps
+        ends = i + 1 == len(gaps) or gaps[i + 1].strip() == "" and "\n" in gaps[i + 1] and i + 1 in self.capitalised
+        starts = next((j for j in (i, i - 1) if j == 0 or "\n" in gaps[j]), None)
+        return ends and starts is not None and all(not gaps[j].strip() for j in range(starts + 1, i + 1))
 
     def animal_kind(self, i: int, options: list[str]) -> str | None:
         """The kind among `options` named for an animal (`ANIMAL_WORDS`: "pet bowl", "dog bowl",
