@@ -877,15 +877,22 @@ def _native_state(words: list[str], k: int) -> str | None:
 _BARE_PLACE_WORDS = ARTICLES | NORM_ADVERBS | FREQUENCY | {"just", "right", "back", "over", "there"}
 
 
+#: adverbs that may lead a verbless goal (`_bare_place`)
+_GOING_LEADS = frozenset({"straight", "right", "directly", "back", "then", "just"})
+
+
 def _bare_place(words: list[str], found: list[Mention]) -> bool:
     """Whether the clause is a place and nothing else, opened by its preposition, with no verb or
     other thing ("Where does it live? On the TV stand.", "Where's the remote? In the drawer,
     normally."): the answer to where the thing spoken of is. Its place is no new topic: a later
     "it" ("If it's lying on the floor, ...") is still the thing, not the TV stand."""
     covered = {k for m in found for k in range(m.start, m.end)}
-    return bool(words) and words[0] in PLACE_PREPS and any(m.kind == "role" for m in found) and all(
+    # (an adverb of going may lead the place: "Dirty? Straight in the laundry basket.", "Back in
+    # the bucket", "Right into the washing machine": still the thing's goal, no new topic)
+    lead = next((k for k, w in enumerate(words) if w not in _GOING_LEADS), len(words))
+    return lead < len(words) and words[lead] in PLACE_PREPS and any(m.kind == "role" for m in found) and all(
         m.kind != "pronoun" for m in found) and all(
-        k in covered or w in _BARE_PLACE_WORDS | PLACE_PREPS for k, w in enumerate(words))
+        k in covered or w in _BARE_PLACE_WORDS | PLACE_PREPS | _GOING_LEADS for k, w in enumerate(words))
 
 
 #: what may open an instruction before its verb ("Then just put back on the counter")
