@@ -536,6 +536,15 @@ _STATE_CASE = re.compile(
     rf",\s+(?=(?:just\s+)?(?:{'|'.join(sorted(ACTIONS))})\b|{_VERBLESS_GOAL})", re.I | re.M)
 
 
+#: a bare "already" and a state, then a comma before a remark or an instruction, opening its
+#: sentence ("Switch it off once she's asleep. Already off, great.", "Already shut, nothing to do",
+#: "already empty, leave it"): the case of the thing spoken of, as "if it is already off, ..." (the
+#: dash and question forms, "Already off - fine", "Already off? Great", were read already)
+_ALREADY_CASE = re.compile(
+    rf"(?:(?<=^)|(?<=[.!?;:\n]))(\s*)already\s+((?:{'|'.join(sorted(STATE_WORDS, key=len, reverse=True))}))\s*,\s+",
+    re.I | re.M)
+
+
 #: "any other kind of toy", "every other sort of book": the class itself ("any other toy")
 _KIND_OF = re.compile(r"\b(other)\s+(?:kind|sort|type)s?\s+of\s+", re.I)
 
@@ -2014,6 +2023,7 @@ def unquote(text: str) -> str:
     plain = _ACTED_STATE.sub(_acted_state, plain)
     plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)
     plain = _KIND_OF.sub(r"\1 ", _STATE_CASE.sub(_state_case, plain))
+    plain = _ALREADY_CASE.sub(lambda m: f"{m.group(1)}if it is already {m.group(2).lower()}, ", plain)
     plain = _DIRECTIVE_AFTER_QUESTION.sub(_directive, _DIRECTIVE_WITH.sub(_directive, plain))
     return _SUBJECTLESS.sub(r"\1\2\3the \2 \4", detable(derecord(_STATE_SUBJECT.sub(_state_subject, plain))))
 
