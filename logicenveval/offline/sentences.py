@@ -545,6 +545,15 @@ _ALREADY_CASE = re.compile(
     re.I | re.M)
 
 
+#: a bare state word joined by "and" / "but" to a clause about another thing, before a colon or
+#: a question mark, opening its line or sentence ("- Wet and the dryer is idle: load it into the
+#: dryer", "Dirty but the dishwasher's running? Leave it in the sink"): the case of the thing spoken
+#: of and that clause, as "if it is wet and the dryer is idle, ..."
+_STATE_AND_CLAUSE = re.compile(
+    rf"(?:(?<=^)|(?<=[.!?;\n]))([ \t]*(?:[-*\u2022][ \t]*)?)((?:already\s+)?(?:{'|'.join(sorted(STATE_WORDS, key=len, reverse=True))}))"
+    r"\s+(and|but)\s+((?:the|its|my|your|our|their|his|her)\s[^:?\n.;]+?)\s*[:?]\s*", re.I | re.M)
+
+
 #: "any other kind of toy", "every other sort of book": the class itself ("any other toy")
 _KIND_OF = re.compile(r"\b(other)\s+(?:kind|sort|type)s?\s+of\s+", re.I)
 
@@ -2023,6 +2032,8 @@ def unquote(text: str) -> str:
     plain = _ACTED_STATE.sub(_acted_state, plain)
     plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)
     plain = _KIND_OF.sub(r"\1 ", _STATE_CASE.sub(_state_case, plain))
+    plain = _STATE_AND_CLAUSE.sub(lambda m: f"{m.group(1)}if it is {m.group(2).lower()} {m.group(3).lower()} {m.group(4)}, ",
+                                  plain)
     plain = _ALREADY_CASE.sub(lambda m: f"{m.group(1)}if it is already {m.group(2).lower()}, ", plain)
     plain = _DIRECTIVE_AFTER_QUESTION.sub(_directive, _DIRECTIVE_WITH.sub(_directive, plain))
     return _SUBJECTLESS.sub(r"\1\2\3the \2 \4", detable(derecord(_STATE_SUBJECT.sub(_state_subject, plain))))
