@@ -198,6 +198,12 @@ HEAD_SENSES = {"table": "dining_table"}
 #: described by one ("the small table by the bed") is no more the general sense than a bare one,
 #: where one described by another ("a sturdy table", "the long table") is (`_Reader.bare_noun`)
 SORT_ADJECTIVES = frozenset({"small", "little", "tiny", "low", "occasional"})
+#: the sort each of `SORT_ADJECTIVES` describes, as the dictionary defines the sorts ("side table:
+#: a small table", "coffee table: a low table", "occasional table: a small table"; Oxford): a
+#: head so described is that sort where the task's rooms do not tell (`_Reader.bare_noun`)
+SORT_SENSES = {("small", "table"): "side_table", ("little", "table"): "side_table",
+               ("tiny", "table"): "side_table", ("occasional", "table"): "side_table",
+               ("low", "table"): "coffee_table"}
 
 #: fixed expressions of general English in which a catalog kind's word names no thing (idioms a
 #: dictionary of idioms lists, and compounds of another sense): as the text writes them, each word
@@ -985,7 +991,8 @@ class _Reader:
 
         support = self.stood_on(i)
 
-        def score(category: str | None) -> tuple[bool, bool, bool, bool, bool, bool, int, bool, bool, bool, int, bool, int, bool, bool]:
+        def score(category: str | None) -> tuple[bool, bool, bool, bool, bool, bool, int, bool, bool, bool, bool, int, bool, int,
+                                                 bool, bool]:
             assert category is not None
             cat = self.catalog.categories[category]
             # the other words of its names that say what it is: not a preposition of a name made
@@ -1020,6 +1027,10 @@ class _Reader:
                     category == exact,
                     # a kind of the task's own rooms before one a word said elsewhere hints ("tea
                     # and coffee are in the tin" in a kitchen)
+                    # the sort the dictionary describes by the head's adjective ("the small table
+                    # near his chair": a side table), where no room of the task is of an unknown
+                    # type (one might hold it), before the kinds of the task's known rooms
+                    SORT_SENSES.get((self.text.words[i - 1] if i > 0 else "", word)) == category,
                     fits,
                     # the text's words elsewhere, as the modifier a short name dropped ("bedside"
                     # said, then "the table"): a modifier of a name the word heads, never a time
@@ -1225,7 +1236,11 @@ class _Reader:
         # the modifier after an article, or opening its sentence or list item ("* fly spray lives
         # on that shelf": a noun phrase as "the fly spray" is)
         opens = i == 1 or bool(_SENTENCE_END.search(gaps[i - 1]) or _ITEM_BREAK.search(gaps[i - 1]))
-        if not (i >= 2 and words[i - 2] in _ARTICLES and not gaps[i - 1].strip() or opens):
+        # (the article left out after a preposition, as learners' English and notes do: "on small
+        # table near his chair", "in big basket": an adjective alone then stands for it)
+        dropped = i >= 2 and words[i - 2] in _PREPOSITIONS - {"of"} and not gaps[i - 1].strip() \
+            and "ADJ" in getAllLemmas(self.text.raw[i - 1])
+        if not (i >= 2 and words[i - 2] in _ARTICLES and not gaps[i - 1].strip() or opens or dropped):
             return False
         return self.match(i - 1)[1] is None and not self.verb(i - 1) and words[i - 1].isalpha() \
             and words[i - 1] not in _PREPOSITIONS and words[i - 1] not in _DETERMINERS
