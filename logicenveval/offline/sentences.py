@@ -545,6 +545,15 @@ _ALREADY_CASE = re.compile(
     re.I | re.M)
 
 
+#: a bare "No" and a thing opening its sentence, a comma, colon or dash after it ("No flowers
+#: brought, nothing to do here", "No mug, nothing to do", "No tin out - fine"): the case of the
+#: thing's absence, as "if there is no mug, ..." (the question form, "No mug? Nothing to do", was
+#: read already); a place after the thing makes it a rule ("No shoes on the carpet, please"), left
+_NO_CASE = re.compile(r"(?:(?<=^)|(?<=[.!?;\n]))([ \t]*(?:[-*\u2022][ \t]*)?)no\s+"
+                      r"((?:(?!on\b|in\b|inside\b|at\b|under\b|by\b|near\b|onto\b|into\b)[a-z'-]+\s*){1,3}?)"
+                      r"\s*(?:,|:|\s-\s)\s*", re.I | re.M)
+
+
 #: a bare state word joined by "and" / "but" to a clause about another thing, before a colon or
 #: a question mark, opening its line or sentence ("- Wet and the dryer is idle: load it into the
 #: dryer", "Dirty but the dishwasher's running? Leave it in the sink"): the case of the thing spoken
@@ -2034,6 +2043,7 @@ def unquote(text: str) -> str:
     plain = _KIND_OF.sub(r"\1 ", _STATE_CASE.sub(_state_case, plain))
     plain = _STATE_AND_CLAUSE.sub(lambda m: f"{m.group(1)}if it is {m.group(2).lower()} {m.group(3).lower()} {m.group(4)}, ",
                                   plain)
+    plain = _NO_CASE.sub(lambda m: f"{m.group(1)}if there is no {m.group(2).strip()}, ", plain)
     plain = _ALREADY_CASE.sub(lambda m: f"{m.group(1)}if it is already {m.group(2).lower()}, ", plain)
     plain = _DIRECTIVE_AFTER_QUESTION.sub(_directive, _DIRECTIVE_WITH.sub(_directive, plain))
     return _SUBJECTLESS.sub(r"\1\2\3the \2 \4", detable(derecord(_STATE_SUBJECT.sub(_state_subject, plain))))
