@@ -36,6 +36,7 @@ from logicenveval.offline.clauses import (
     LEAD_INS,
     NEGATIONS,
     OBJECT_STARTS,
+    PERMITTED,
     PLACE_PREPS,
     PRESENCE_DETERMINERS,
     PRESENCE_QUESTION,
@@ -1022,6 +1023,10 @@ class _Reader:
         self.heading_topic: tuple[str, ...] = ()
         #: roles last named in the plural ("the wet wipes"), for "they" / "them"
         self.plural: set[str] = set()
+        #: whether the plural last named is people ("Families like it left going while they sit
+        #: with him. Once they've gone, ..."): a plural noun of persons (`PEOPLE_NOUNS`) after
+        #: the last thing named in the plural, for `_time_people`
+        self.people_last = False
         #: role -> whether the last pronoun that took it up was plural ("them", not "it"): a topic
         #: named in the plural and still taken up so is none an "it" speaks of
         self.plural_ref: dict[str, bool] = {}
@@ -1132,6 +1137,8 @@ class _Reader:
             return False
         if before:
             return not any(r in self.plural for m in before for r in m.roles)
+        if self.people_last:
+            return True  # "Families like it left going ... Once they've gone": the families
         return self.topic_kind == "role" and not self._group_taken_up() and not self.plural & set(self.topic) \
             and not any(r in self.plural for r in self.recent)
 
@@ -1304,6 +1311,11 @@ class _Reader:
                     self.plural_ref[r] = words[m.start] in ("they", "them", "their", "ones")
                 else:
                     self.plural_ref.pop(r, None)
+        covered = {k for m in found for k in range(m.start, m.end)}  # ("the guest bedroom": a room)
+        people = [k for k, w in enumerate(words) if w in PEOPLE_NOUNS and k not in covered]
+        things = [m.start for m in found if m.kind == "role" and any(r in self.plural for r in m.roles)]
+        if people or things:
+            self.people_last = max(people, default=-1) > max(things, default=-1)
         first = next((m for m in found if m.kind in ("role", "floor", "pronoun")), None)
         first = _direct_object(words, found, first)
         # a participle clause set off by a dash as by a comma ("mists them with the plant mister -
@@ -2522,6 +2534,13 @@ def _come_upon(clauses: list[Clause], sentence: int, text: str) -> tuple[list[Fa
             r = cl.mentions[0]
             return [Fact(r, f"exists({r})", "exists")], (r,)
     return [], ()
+
+
+#: nouns of persons, as a text names the people a time is told by ("Families like it left going
+#: while they sit with him. Once they've gone, ..."): `clauses.PERMITTED`'s nouns and the
+#: households' and visitors' other names, as `tokens` gives them (singular)
+PEOPLE_NOUNS = frozenset(singular(w) for w in PERMITTED if w not in SUBJECTS) | frozenset({
+    "family", "parent", "people", "friend", "relative", "mourner", "patient", "client", "child"})
 
 
 #: adverbs that make what someone does a habit ("always", "never" too: "the door never gets shut")
