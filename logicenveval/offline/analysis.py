@@ -1313,9 +1313,9 @@ class _Reader:
                     self.plural_ref.pop(r, None)
         covered = {k for m in found for k in range(m.start, m.end)}  # ("the guest bedroom": a room)
         people = [k for k, w in enumerate(words) if w in PEOPLE_NOUNS and k not in covered]
-        things = [m.start for m in found if m.kind == "role" and any(r in self.plural for r in m.roles)]
-        if people or things:
-            self.people_last = max(people, default=-1) > max(things, default=-1)
+        plural_at = [m.start for m in found if m.kind == "role" and any(r in self.plural for r in m.roles)]
+        if people or plural_at:
+            self.people_last = max(people, default=-1) > max(plural_at, default=-1)
         first = next((m for m in found if m.kind in ("role", "floor", "pronoun")), None)
         first = _direct_object(words, found, first)
         # a participle clause set off by a dash as by a comma ("mists them with the plant mister -

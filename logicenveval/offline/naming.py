@@ -193,17 +193,16 @@ REGIONAL_SENSES: tuple[tuple[frozenset[str], dict[str, str]], ...] = (
 #: own. Read when the text names its own sort by a modifier no kind's name holds ("the card table",
 #: "a trestle table", "the folding table": `_Reader.bare_noun`)
 HEAD_SENSES = {"table": "dining_table"}
-#: adjectives that describe the catalog's other sorts of a `HEAD_SENSES` head as a dictionary
-#: defines them ("side table: a small table", "coffee table: a low table"; Oxford): a head
-#: described by one ("the small table by the bed") is no more the general sense than a bare one,
-#: where one described by another ("a sturdy table", "the long table") is (`_Reader.bare_noun`)
-SORT_ADJECTIVES = frozenset({"small", "little", "tiny", "low", "occasional"})
-#: the sort each of `SORT_ADJECTIVES` describes, as the dictionary defines the sorts ("side table:
-#: a small table", "coffee table: a low table", "occasional table: a small table"; Oxford): a
-#: head so described is that sort where the task's rooms do not tell (`_Reader.bare_noun`)
+#: the sort an adjective describes a `HEAD_SENSES` head as, as the dictionary defines the catalog's
+#: other sorts ("side table: a small table", "coffee table: a low table", "occasional table: a small
+#: table"; Oxford): a head so described is that sort where the task's rooms do not tell
+#: (`_Reader.bare_noun`)
 SORT_SENSES = {("small", "table"): "side_table", ("little", "table"): "side_table",
                ("tiny", "table"): "side_table", ("occasional", "table"): "side_table",
                ("low", "table"): "coffee_table"}
+#: those adjectives: a head described by one ("the small table by the bed") is no more the general
+#: sense than a bare one, where one described by another ("a sturdy table", "the long table") is
+SORT_ADJECTIVES = frozenset(adjective for adjective, _ in SORT_SENSES)
 
 #: fixed expressions of general English in which a catalog kind's word names no thing (idioms a
 #: dictionary of idioms lists, and compounds of another sense): as the text writes them, each word
