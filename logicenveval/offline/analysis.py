@@ -1313,7 +1313,10 @@ class _Reader:
                     self.plural_ref.pop(r, None)
         covered = {k for m in found for k in range(m.start, m.end)}  # ("the guest bedroom": a room)
         people = [k for k, w in enumerate(words) if w in PEOPLE_NOUNS and k not in covered]
-        plural_at = [m.start for m in found if m.kind == "role" and any(r in self.plural for r in m.roles)]
+        # (a thing named in the plural here, as `facts` will record it, or before: "The keys are hung
+        # on the hook when they are on the floor", after "Everyone just came in")
+        plural_at = [m.start for m in found if m.kind == "role" and (
+            m.end - 1 in self.plural_at or _plural_only(surface[m.end - 1]) or any(r in self.plural for r in m.roles))]
         if people or plural_at:
             self.people_last = max(people, default=-1) > max(plural_at, default=-1)
         first = next((m for m in found if m.kind in ("role", "floor", "pronoun")), None)
