@@ -962,6 +962,9 @@ class _Reader:
             return tail[0]
         if self.machine_again(i):
             return None  # "Air conditioner. The unit is not to run overnight": the air conditioner
+        headed = self.heading_vessel(i)
+        if headed is not None:
+            return headed  # "Wine. The bottle's on the desk": the wine bottle the heading named
         if exact is None:
             control = [c for c in self.recent if c in self.controls.get(word, ())]
             if control:
@@ -2297,6 +2300,24 @@ class _Reader:
         box") still names a spare."""
         raw = self.text.raw[i]
         return raw != self.text.words[i] and raw.endswith("s")
+
+    def heading_vessel(self, i: int) -> str | None:
+        """The kind an item's heading named by its contents ("- Wine.", "Milk.": the catalog's wine
+        bottle and milk carton, by their synonyms) when the next sentence opens with the article and
+        the word its name ends in ("The bottle's on the desk as well", "The carton is on the
+        counter"): the same thing, said by its vessel, as "Wine: the bottle ..." (one sentence) was
+        read already; not a second, plain bottle. The heading is a sentence of that name alone."""
+        words = self.text.words
+        start = self.text.sentence_start(i)
+        if start < 1 or i != start + 1 or words[start] not in _ARTICLES:
+            return None
+        head = self.text.sentence_start(start - 1)
+        at = head + (words[head] in _ARTICLES)
+        n, category = self.match(at)
+        if category is None or at + n != start or category not in self.kinds \
+                or words_of(category)[-1] != words[i] or words[i] in words[at:at + n]:
+            return None
+        return category
 
     def heading_spare(self, i: int) -> bool:
         """Whether word `i` ("spare"), definite or owned ("my spare one", "the spare"), is the thing
