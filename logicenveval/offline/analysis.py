@@ -880,6 +880,8 @@ _BARE_PLACE_WORDS = ARTICLES | NORM_ADVERBS | FREQUENCY | {"just", "right", "bac
 
 #: adverbs that may lead a verbless goal (`_bare_place`)
 _GOING_LEADS = frozenset({"straight", "right", "directly", "back", "then", "just"})
+#: every word a bare place may hold besides its things' names (`_bare_place`), built once
+_BARE_PLACE_ALL = _BARE_PLACE_WORDS | PLACE_PREPS | _GOING_LEADS
 
 
 def _bare_place(words: list[str], found: list[Mention]) -> bool:
@@ -893,7 +895,7 @@ def _bare_place(words: list[str], found: list[Mention]) -> bool:
     lead = next((k for k, w in enumerate(words) if w not in _GOING_LEADS), len(words))
     return lead < len(words) and words[lead] in PLACE_PREPS and any(m.kind == "role" for m in found) and all(
         m.kind != "pronoun" for m in found) and all(
-        k in covered or w in _BARE_PLACE_WORDS | PLACE_PREPS | _GOING_LEADS for k, w in enumerate(words))
+        k in covered or w in _BARE_PLACE_ALL for k, w in enumerate(words))
 
 
 #: what may open an instruction before its verb ("Then just put back on the counter")
@@ -2467,7 +2469,7 @@ def _there_before(clauses: list[Clause], sentence: int, names: tuple[str, ...],
 
 #: the subjects of a conjunct about people, not the scene ("she hasn't come back", "you leave
 #: before six", "nobody's collected it"); "they" and "it" may be things, and are left out
-_PERSON_CONJUNCT = (SUBJECTS - {"they"}) | {"nobody", "noone", "everyone", "everybody"}
+_PERSON_CONJUNCT = (SUBJECTS - {"they"}) | _NOBODY | {"everyone", "everybody"}
 
 
 def _conjunct_presence(words: list[str]) -> bool | None:
@@ -3706,8 +3708,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
             # (a question's tag dropped: "the mug is there, isn't it? Then ..." asks what "is the
             # mug there?" does, `_unbiased`)
             low_words = WORD.findall(_unbiased(low))
-            present = (presence_asked(low_words) if presence_asked(low_words) is not None
-                       else _conjunct_presence(low_words)) if role == "condition" else None
+            present = presence_asked(low_words) if role == "condition" else None
+            if role == "condition" and present is None:
+                present = _conjunct_presence(low_words)
             if role == "condition":
                 facts = _absence_of_asked(facts, said, lex, clauses, grammatical)
             if present is not None and _pronoun_question(low_words) and any(

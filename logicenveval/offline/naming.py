@@ -1027,12 +1027,11 @@ class _Reader:
                     len(hints & said) if fits else 0,
                     written != word and self.plural_named(category, word),
                     category == exact,
+                    # the sort the dictionary describes by the head's adjective ("the small table
+                    # near his chair": a side table), before the kinds of the task's known rooms
+                    SORT_SENSES.get((self.text.words[i - 1] if i > 0 else "", word)) == category,
                     # a kind of the task's own rooms before one a word said elsewhere hints ("tea
                     # and coffee are in the tin" in a kitchen)
-                    # the sort the dictionary describes by the head's adjective ("the small table
-                    # near his chair": a side table), where no room of the task is of an unknown
-                    # type (one might hold it), before the kinds of the task's known rooms
-                    SORT_SENSES.get((self.text.words[i - 1] if i > 0 else "", word)) == category,
                     fits,
                     # the text's words elsewhere, as the modifier a short name dropped ("bedside"
                     # said, then "the table"): a modifier of a name the word heads, never a time
@@ -1355,14 +1354,16 @@ class _Reader:
         fuller kind."""
         opens = i - (i > 0 and self.text.words[i - 1] in COLOR_WORDS and "(" not in self.text.gaps[i])
         opens -= opens > 0 and self.text.words[opens - 1] in _ARTICLES and "(" not in self.text.gaps[opens]
-        # (an article and up to two words before the kind's noun: "(the little desk ...")
-        described = next((k for k in range(i - 1, max(i - 4, -1), -1) if "(" in self.text.gaps[k]
-                          and self.text.words[k] in _ARTICLES
-                          and all(not g.strip() for g in self.text.gaps[k + 1:i + 1])),
-                         None)
-        if "(" not in self.text.gaps[opens] and described is None or not self.recent or self.recent[-1] == category:
+        if "(" not in self.text.gaps[opens]:
+            # (an article and up to two words before the kind's noun: "(the little desk ...")
+            described = next((k for k in range(i - 1, max(i - 4, -1), -1) if "(" in self.text.gaps[k]
+                              and self.text.words[k] in _ARTICLES
+                              and all(not g.strip() for g in self.text.gaps[k + 1:i + 1])), None)
+            if described is None:
+                return None
+            opens = described
+        if not self.recent or self.recent[-1] == category:
             return None
-        opens = opens if "(" in self.text.gaps[opens] else described if described is not None else opens
         before = self.recent[-1]
         kind, at = self.kinds.get(before), self.first_at.get(before)
         if kind is None or kind.instances or kind.count > 1 or at is None or not kind.generic:

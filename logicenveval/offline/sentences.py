@@ -536,12 +536,19 @@ _STATE_CASE = re.compile(
     rf",\s+(?=(?:just\s+)?(?:{'|'.join(sorted(ACTIONS))})\b|{_VERBLESS_GOAL})", re.I | re.M)
 
 
+#: every state word as a regular expression's alternatives, the longest first (so "opened" is
+#: not read as "open" and a rest)
+_STATE_ALTERNATION = "|".join(sorted(STATE_WORDS, key=len, reverse=True))
+#: where a case opens: its text's, line's or sentence's start, with a list item's bullet if any
+_ITEM_START = r"(?:(?<=^)|(?<=[.!?;\n]))([ \t]*(?:[-*\u2022][ \t]*)?)"
+
+
 #: a bare "already" and a state, then a comma before a remark or an instruction, opening its
 #: sentence ("Switch it off once she's asleep. Already off, great.", "Already shut, nothing to do",
 #: "already empty, leave it"): the case of the thing spoken of, as "if it is already off, ..." (the
 #: dash and question forms, "Already off - fine", "Already off? Great", were read already)
 _ALREADY_CASE = re.compile(
-    rf"(?:(?<=^)|(?<=[.!?;:\n]))(\s*)already\s+((?:{'|'.join(sorted(STATE_WORDS, key=len, reverse=True))}))\s*,\s+",
+    rf"(?:(?<=^)|(?<=[.!?;:\n]))(\s*)already\s+((?:{_STATE_ALTERNATION}))\s*,\s+",
     re.I | re.M)
 
 
@@ -549,7 +556,7 @@ _ALREADY_CASE = re.compile(
 #: brought, nothing to do here", "No mug, nothing to do", "No tin out - fine"): the case of the
 #: thing's absence, as "if there is no mug, ..." (the question form, "No mug? Nothing to do", was
 #: read already); a place after the thing makes it a rule ("No shoes on the carpet, please"), left
-_NO_CASE = re.compile(r"(?:(?<=^)|(?<=[.!?;\n]))([ \t]*(?:[-*\u2022][ \t]*)?)no\s+"
+_NO_CASE = re.compile(_ITEM_START + r"no\s+"
                       r"((?:(?!on\b|in\b|inside\b|at\b|under\b|by\b|near\b|onto\b|into\b)[a-z'-]+\s*){1,3}?)"
                       r"\s*(?:,|:|\s-\s)\s*", re.I | re.M)
 
@@ -559,7 +566,7 @@ _NO_CASE = re.compile(r"(?:(?<=^)|(?<=[.!?;\n]))([ \t]*(?:[-*\u2022][ \t]*)?)no\
 #: dryer", "Dirty but the dishwasher's running? Leave it in the sink"): the case of the thing spoken
 #: of and that clause, as "if it is wet and the dryer is idle, ..."
 _STATE_AND_CLAUSE = re.compile(
-    rf"(?:(?<=^)|(?<=[.!?;\n]))([ \t]*(?:[-*\u2022][ \t]*)?)((?:already\s+)?(?:{'|'.join(sorted(STATE_WORDS, key=len, reverse=True))}))"
+    _ITEM_START + rf"((?:already\s+)?(?:{_STATE_ALTERNATION}))"
     r"\s+(and|but)\s+((?:the|its|my|your|our|their|his|her)\s[^:?\n.;]+?)\s*[:?]\s*", re.I | re.M)
 
 
@@ -1278,7 +1285,7 @@ def _inverted_were(m: re.Match[str]) -> str:
 #: condition a state (`STATE_WORDS`) after "not", "still" or "already" at most
 _TOPIC_IF = re.compile(
     _CLAUSE_START + r"(?P<topic>[A-Za-z][\w'-]*(?:[ \t]+[A-Za-z][\w'-]*){0,5}?)[ \t]*,[ \t]*if[ \t]+"
-    rf"(?P<state>(?:(?:not|still|already)\s+)?(?:{'|'.join(sorted(STATE_WORDS, key=len, reverse=True))}))"
+    rf"(?P<state>(?:(?:not|still|already)\s+)?(?:{_STATE_ALTERNATION}))"
     r"\s*,\s*(?=(?P<rest>[A-Za-z]+))", re.I | re.M)
 #: words that make a "topic" a clause: a pronoun object ("Switch it off, if on"), a verb's particle
 #: ("Turn the heater down, if on") or a subject
