@@ -923,8 +923,10 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
     if j >= hi or words[j] not in AT:
         return None
     k = j + 1
-    while k < hi and (words[k] in ARTICLES or words[k] in COLOR_WORDS or words[k] in STATE_WORDS
-                      or words[k] in RANKS and k + 1 < hi and words[k + 1] not in ("of", ",")):
+    # (a modifier that begins a name is the name's: "on the open shelves" is a shelving unit)
+    while k < hi and not any(m.start == k for m in ms) and (
+            words[k] in ARTICLES or words[k] in COLOR_WORDS or words[k] in STATE_WORDS
+            or words[k] in RANKS and k + 1 < hi and words[k + 1] not in ("of", ",")):
         k += 1
     outer = _outer_part(sent, ms, j, k, hi)
     if outer is not None:
