@@ -85,9 +85,10 @@ from logicenveval.offline.vocabulary import reading_catalog
 # ---------------------------------------------------------------------------------------------
 
 #: verbs that say where a thing belongs rather than where it is now ("it's kept in the vanity",
-#: "we store the spares in the vanity", "the cloth lives in the vanity")
+#: "we store the spares in the vanity", "the cloth lives in the vanity"; supplies "are stocked in
+#: the hall cupboard", as a shop or a store room says it)
 KEEP_VERBS = frozenset({"keep", "keeps", "kept", "store", "stores", "stored", "live", "lives", "lived",
-                        "sleep", "sleeps"})
+                        "sleep", "sleeps", "stock", "stocks", "stocked"})
 #: forms of "be" and of verbs of resting that state where a thing is ("is", "lies", "is lying",
 #: "stands", "sits", "rests", "hangs", "stays")
 BE = frozenset({"is", "are", "was", "were", "be", "been", "being", "am"})
