@@ -2081,6 +2081,7 @@ def _possessive(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, 
             continue
         if set(words[max(lo, i - 1):i + 2]) & NEGATIONS:
             return  # "the shelf has no book on it", "has not got", "does not have": it holds none
+        lo = _joined_clause(words, ms, lo, i)
         before = _np_list(sent, [m for m in ms if m.kind in ("role", "room")], lo, i)
         owner: Mention | None = before[0] if before else None
         if owner is None and set(words[lo:i]) & THING_PRONOUNS:
@@ -2103,6 +2104,24 @@ def _possessive(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, 
         if stop == clause.end:
             return
         lo = stop
+
+
+#: words that join a second clause to a first ("the hall is tiny but the bedroom has a bed")
+_CLAUSE_JOINS = frozenset({"and", "but", "so", "while", "whereas"})
+
+
+def _joined_clause(words: list[str], ms: list[Mention], lo: int, i: int) -> int:
+    """Where the clause of the verb at i begins when a joining word (`_CLAUSE_JOINS`) after a verb
+    of its own starts it: "your dining room opens onto the kitchen, and the kitchen has a sink"
+    (the kitchen has it, not the dining room); "the kitchen and the pantry have a shelf" has no
+    verb before its "and", so both are the subject. lo when none does."""
+    named = {k for m in ms for k in range(m.start, m.end)}
+    for c in range(i - 1, lo, -1):
+        if words[c] in _CLAUSE_JOINS and any(
+                k not in named and words[k].isalpha() and words[k] not in ARTICLES | AT and verb_form(words[k])
+                for k in range(lo, c)):
+            return c + 1
+    return lo
 
 
 def _taken_up(words: list[str], j: int, hi: int) -> str:
