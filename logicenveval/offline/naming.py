@@ -2260,6 +2260,24 @@ class _Reader:
             return False
         return i + 1 == len(words) or words[i + 1] == "one" or self.match(i + 1)[1] is None
 
+    def spare_word_before(self, i: int) -> int | None:
+        """Where the spare word of the noun at `i` stands: right before it ("a spare roll"), or
+        before a modifier that names no kind (`spare_before_head`: "the spare club towel")."""
+        words = self.text.words
+        if i >= 1 and words[i - 1] in SPARE_WORDS:
+            return i - 1
+        return i - 2 if i >= 2 and words[i - 2] in SPARE_WORDS and self.spare_before_head(i - 2) else None
+
+    def spare_before_head(self, i: int) -> bool:
+        """Whether word `i` ("spare") is an adjective before a modifier and a noun that names a kind
+        ("the spare club towel", "a spare guest pillow", "the spare staff mug"): the modifier
+        names no kind, so "spare" is no noun taking up the thing named before it ("fetch a spare
+        from the drawer" is)."""
+        words, gaps = self.text.words, self.text.gaps
+        return i + 2 < len(words) and gaps[i + 1] == " " and gaps[i + 2] == " " and words[i + 1].isalpha() \
+            and words[i + 1] not in _PREPOSITIONS and not self.verb(i + 1) \
+            and (words[i + 2] in self.heads or self.match(i + 2)[1] is not None)
+
     def spare_of_unnamed(self, i: int) -> bool:
         """Whether a plural "spares" at word `i` takes up a plural noun that names no kind, said
         nearer before it in its sentence than any thing named ("Switch the torch off, batteries
@@ -2469,7 +2487,8 @@ class _Reader:
                 i += 1  # "- Torch. Left my spare one behind, it's on the shelf": the heading's torch
                 continue
             if words[i] in SPARE_WORDS and prev in _DETERMINERS and (
-                    i + 1 == len(words) or words[i + 1] not in self.heads and self.match(i + 1)[1] is None):
+                    i + 1 == len(words) or words[i + 1] not in self.heads and self.match(i + 1)[1] is None) \
+                    and not self.spare_before_head(i):
                 # "a spare" as a noun: "fetch a spare from the dresser", "we store the spares"
                 spare = None if self.spare_of_unnamed(i) or self.company_at_place(i) else next(
                     (c for c in reversed(self.recent) if self.catalog.categories[c].pickable), None)
@@ -2565,7 +2584,8 @@ class _Reader:
                 for color in self.coordinated(told, allowed):
                     self.instance(category, f"{color}_{category}", {"color": color})
                 last_colored = category
-            elif prev in SPARE_WORDS and not self.contents_modifier(i - 1) or prev in _FRESH and known and kind.generic:
+            elif (spare_at := self.spare_word_before(i)) is not None and not self.contents_modifier(spare_at) \
+                    or prev in _FRESH and known and kind.generic:
                 if not any(name.startswith("spare_") for name in kind.instances):
                     self.instance(category, f"spare_{last}", {})
             elif prev in _ANOTHER and known and kind.generic:
