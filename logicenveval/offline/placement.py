@@ -291,6 +291,7 @@ class _Token:
 class _Sentence:
     toks: list[_Token]
     mentions: list[Mention]  # role, room and floor mentions (token indices)
+    new_line: bool = True  # whether a line break (or the text's start) comes before it
 
     @property
     def words(self) -> list[str]:
@@ -303,7 +304,9 @@ class _Reading:
 
     held: dict[str, dict[str, str]]
     rooms: dict[str, dict[str, str]]
-    context_room: str | None = None  # the room the text last spoke of as a whole
+    #: the room a dash heading set over its line ("3. STUDY - laptop. It belongs on the desk."):
+    #: the things the line's later sentences name are in it (`_in_section`)
+    section_room: str | None = None
     last_subject: Mention | None = None  # the subject of the last statement (for "it", "that")
     #: the sentence `last_subject` is a mention of: its token positions index that sentence only
     last_subject_sent: _Sentence | None = None
@@ -349,8 +352,12 @@ _DASHES = re.compile(r"(?<=\s)[\u2013\u2014](?=\s)")
 
 def _sentences(text: str, lex: Lexicon) -> list[_Sentence]:
     out = []
-    boxed = _LABELLED_UNTICKED.sub(". ", _LABELLED_TICK.sub(" ", _TICK_BOX.sub("; ", text)))
-    for part in split_sentences(expand(boxed), full_stops_only=True):
+    boxed = expand(_LABELLED_UNTICKED.sub(". ", _LABELLED_TICK.sub(" ", _TICK_BOX.sub("; ", text))))
+    at = 0
+    for part in split_sentences(boxed, full_stops_only=True):
+        found = boxed.find(part, at)
+        new_line = at == 0 or found < 0 or "\n" in boxed[at:found]
+        at = found + len(part) if found >= 0 else at
         low = _THEN_ARROW.sub(": ", part.lower())
         toks = [_Token(m.group(0), singular(m.group(0)) if m.group(0)[0].isalnum() else m.group(0),
                        m.start(), m.end()) for m in _TOKEN.finditer(_DASHES.sub("-", low))]
@@ -362,7 +369,7 @@ def _sentences(text: str, lex: Lexicon) -> list[_Sentence]:
                 toks, mentions = kept, lex.find_mentions([(t.lemma, t.start, t.end) for t in kept])
         mentions = [m for m in mentions if not _verb_mention(toks, mentions, m)]
         mentions = without_modifiers(mentions, [(t.lemma, t.start, t.end) for t in toks], [t.word for t in toks])
-        out.append(_Sentence(toks, _with_room_word(toks, mentions, lex)))
+        out.append(_Sentence(toks, _with_room_word(toks, mentions, lex), new_line))
     return _with_aliases(out)
 
 
@@ -477,10 +484,9 @@ def _clauses(words: list[str], lo: int, hi: int) -> list[Span]:
 def _read(brief: Mapping[str, Any], catalog: Catalog, kinds: frozenset[str]) -> list[str]:
     lex = Lexicon.build(brief, reading_catalog(catalog))
     reading = _Reading({k: {} for k in _ORDER}, {k: {} for k in _ORDER})
-    if len(lex.rooms) == 1:
-        reading.context_room = lex.rooms[0]
     sentences = _sentences(as_read(str(brief.get("description", ""))), lex)
     for sent in sentences:
+        _in_section(sent, reading)
         _read_sentence(sent, lex, catalog, reading)
     before = _Before()
     for sent in sentences:  # after every rule: a thing a rule placed keeps its place
@@ -499,6 +505,22 @@ def _read(brief: Mapping[str, Any], catalog: Catalog, kinds: frozenset[str]) -> 
     out += [f"in_room({role}, {room})" for role, room in rooms.items()
             if role not in held or held[role].endswith(", floor)")]
     return out
+
+
+def _in_section(sent: _Sentence, reading: _Reading) -> None:
+    """The things a sentence names are in the room a dash heading set over its line (`_heading`,
+    `_room_dash`, as `section_room`): "3. STUDY - laptop. It belongs on the desk." puts the desk in
+    the study too, as check sheets give each room a line. A line break or another room named ends
+    it."""
+    if sent.new_line or any(m.kind == "room" and m.roles != (reading.section_room,) for m in sent.mentions):
+        reading.section_room = None
+    if reading.section_room is None:
+        return
+    for m in sent.mentions:
+        # (a noun opening its sentence is a noun phrase too: "Wardrobe: doors open = defect")
+        if m.kind == "role" and not _indefinite_doubt(sent, m) and (m.start == 0 or _named(sent.words, m.start)):
+            for role in _roles(m, sent):
+                reading.room("settled", role, reading.section_room)
 
 
 def _read_sentence(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Reading) -> None:
@@ -1148,6 +1170,9 @@ def _heading(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Reading)
     colon, and the list after it. Returns where the body starts (0 without a heading)."""
     words = sent.words
     colon = _heading_mark(words)
+    dash = _room_dash(sent)
+    if dash is not None and (colon is None or dash < colon):
+        colon = dash
     if colon is None:
         return 0
     head = [m for m in sent.mentions if m.end <= colon]
@@ -1177,9 +1202,27 @@ def _heading(sent: _Sentence, lex: Lexicon, catalog: Catalog, reading: _Reading)
                     _put(reading, "settled", catalog, lex, role, place, prep)
         if place.kind != "room" and clause.doubted:
             break
-    if place.kind == "room":
-        reading.context_room = place.roles[0]
+    if place.kind == "room" and colon == dash:
+        # (a room's colon heading covers its own sentence only: carried over its line as well, it
+        # cost a held-out rewording, `docs/reader.md`)
+        reading.section_room = place.roles[0]
     return colon + 1
+
+
+def _room_dash(sent: _Sentence) -> int | None:
+    """Where a room's heading ends at a dash: a room's name alone before it, after an item's number
+    at most ("BEDROOM - table lamp: on = defect", "2) Bathroom - towel on the floor?", "Kitchen -
+    kettle: if it's on, ..."), as check sheets and notes head each room's part; what follows is in
+    that room (`_heading`). None when a thing's name or a word stands before the dash."""
+    words = sent.words
+    dash = next((k for k, w in enumerate(words) if w == "-"), None)
+    if dash is None:
+        return None
+    head = [m for m in sent.mentions if m.end <= dash]
+    after = next((m for m in sent.mentions if m.start > dash), None)
+    if len(head) != 1 or head[0].kind != "room" or head[0].end != dash or after is not None and after.kind == "room":
+        return None  # (not a list of rooms: "Hall - Kitchen - Lounge: lights off")
+    return dash if all(w.isdigit() or w in (")", ".") or w in ARTICLES for w in words[:head[0].start]) else None
 
 
 #: nouns of being shown that "on" makes a state of place before a heading's own preposition ("On
@@ -1268,7 +1311,6 @@ def _frame(sent: _Sentence, reading: _Reading, lo: int) -> None:
         if later.kind == "role" and not _indefinite_doubt(sent, later) and _named(words, later.start):
             for role in _roles(later, sent):
                 reading.room("settled", role, first.roles[0])
-    reading.context_room = first.roles[0]
 
 
 def _clause_frame(words: list[str], lo: int, start: int) -> bool:
