@@ -35,8 +35,11 @@ def test_the_vessel_after_a_heading_is_the_headings_thing(text: str, rooms: tupl
     assert fact in placed(text, rooms)
 
 
-@pytest.mark.parametrize(("text", "kind"), [("Shampoo. The bottle is on the shelf.", "bottle"),
+@pytest.mark.parametrize(("text", "kind"), [("Towel. The bottle is on the shelf.", "bottle"),
                                             ("Wine. The glass is on the desk.", "drinking_glass")])
 def test_another_thing_after_the_heading_stays_its_own(text: str, kind: str) -> None:
-    """Near misses: shampoo is a kind of its own, not a bottle's name; a glass is no wine bottle."""
+    """Near misses: a towel comes in no bottle; a glass is no wine bottle. (Until the
+    twenty-seventh session the first was "Shampoo. The bottle ...": the catalog names shampoo
+    "shampoo bottle" and its AI2-THOR type is a SoapBottle, so that bottle is the shampoo's now,
+    `test_offline_heading_vessel_twentyseventh`.)"""
     assert kind in {category for category, _ in named(text, ("suite",)).values()}

@@ -28,6 +28,7 @@ from lemminflect import getAllLemmas
 from logicenveval.domain.catalog import Catalog, Category, load_catalog, per_catalog
 from logicenveval.llm.base import ChatRequest
 from logicenveval.model.rooms import known_room_type, room_type_of
+from logicenveval.offline.clauses import SUBORDINATORS
 from logicenveval.offline.handlers import handler
 from logicenveval.offline.lexicon import (
     COLOR_WORDS,
@@ -2321,22 +2322,32 @@ class _Reader:
         return raw != self.text.words[i] and raw.endswith("s")
 
     def heading_vessel(self, i: int) -> str | None:
-        """The kind an item's heading named by its contents ("- Wine.", "Milk.": the catalog's wine
-        bottle and milk carton, by their synonyms) when the next sentence opens with the article and
-        the word its name ends in ("The bottle's on the desk as well", "The carton is on the
-        counter"): the same thing, said by its vessel, as "Wine: the bottle ..." (one sentence) was
-        read already; not a second, plain bottle. The heading is a sentence of that name alone."""
+        """The kind an item's heading named by its contents ("- Wine.", "Milk.", "DETERGENT.": the
+        catalog's wine bottle, milk carton and laundry detergent, by their synonyms) when the next
+        sentence opens with the article and the word of its vessel, after a subordinator at most
+        ("The bottle's on the desk as well", "The carton is on the counter", "If the bottle has
+        ended up on the floor"): the same thing, said by its vessel, as "Wine: the bottle ..." (one
+        sentence) was read already; not a second, plain bottle. Its vessel is the word its name
+        ends in, or the last word of its AI2-THOR type (a laundry detergent is a "SoapBottle", a
+        board game a "Box": `vessel_word`). The heading is a sentence of that name alone."""
         words = self.text.words
         start = self.text.sentence_start(i)
-        if start < 1 or i != start + 1 or words[start] not in _ARTICLES:
+        led = start + (words[start] in SUBORDINATORS)
+        if start < 1 or i != led + 1 or words[led] not in _ARTICLES:
             return None
         head = self.text.sentence_start(start - 1)
         at = head + (words[head] in _ARTICLES)
         n, category = self.match(at)
         if category is None or at + n != start or category not in self.kinds \
-                or words_of(category)[-1] != words[i] or words[i] in words[at:at + n]:
+                or words[i] not in (words_of(category)[-1], self.vessel_word(category)) or words[i] in words[at:at + n]:
             return None
         return category
+
+    def vessel_word(self, category: str) -> str:
+        """The last word of the kind's AI2-THOR type, lower case ("SoapBottle": "bottle"; "" when
+        it has none): what the simulator's own object is, so what a text may call it by."""
+        parts = re.findall(r"[A-Z][a-z]*", self.catalog.categories[category].ai2thor_type or "")
+        return parts[-1].lower() if parts else ""
 
     def heading_spare(self, i: int) -> bool:
         """Whether word `i` ("spare"), definite or owned ("my spare one", "the spare"), is the thing
