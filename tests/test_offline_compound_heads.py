@@ -20,7 +20,9 @@ def test_the_last_noun_of_a_compound_is_its_head() -> None:
                  ("cabin",)) == {"flashlight", "bunk_bed", "drawer"}
     # written for the test
     assert kinds("Put the pens in the table drawer.") == {"pen", "drawer"}
-    assert kinds("Drop the coins in the collection box by the door.", ("hall",)) == {"cardboard_box"}
+    # (a box named for its use is a storage box since the twenty-seventh session: `naming.HEAD_SENSES`;
+    # this test reads the head, whichever sort of box it is)
+    assert kinds("Drop the coins in the collection box by the door.", ("hall",)) == {"storage_box"}
 
 
 def test_a_name_of_its_own_before_a_generic_head_stays_the_thing() -> None:

@@ -191,9 +191,12 @@ REGIONAL_SENSES: tuple[tuple[frozenset[str], dict[str, str]], ...] = (
 #: use (a dictionary's first sense): a "table" is "a piece of furniture with a flat top ... used for
 #: such purposes as eating, writing, working, or playing games" (Oxford), the catalog's dining
 #: table; a bedside, coffee, console, side or changing table is named for a use or place of its
-#: own. Read when the text names its own sort by a modifier no kind's name holds ("the card table",
-#: "a trestle table", "the folding table": `_Reader.bare_noun`)
-HEAD_SENSES = {"table": "dining_table"}
+#: own. A "box" is "a container with a flat base and sides ... for holding or storing things"
+#: (Oxford): the catalog's storage box, where a cardboard box is named for its material and a toy
+#: box for its use. Read when the text names its own sort by a modifier no kind's name holds ("the
+#: card table", "a trestle table", "the folding table", "the lost property box", "the props box":
+#: `_Reader.bare_noun`)
+HEAD_SENSES = {"table": "dining_table", "box": "storage_box"}
 #: the sort an adjective describes a `HEAD_SENSES` head as, as the dictionary defines the catalog's
 #: other sorts ("side table: a small table", "coffee table: a low table", "occasional table: a small
 #: table"; Oxford): a head so described is that sort where the task's rooms do not tell
@@ -204,6 +207,9 @@ SORT_SENSES = {("small", "table"): "side_table", ("little", "table"): "side_tabl
 #: those adjectives: a head described by one ("the small table by the bed") is no more the general
 #: sense than a bare one, where one described by another ("a sturdy table", "the long table") is
 SORT_ADJECTIVES = frozenset(adjective for adjective, _ in SORT_SENSES)
+#: words that open or shut a thing, or name what does: a sort the catalog cannot open is not the
+#: thing they are said of (`_Reader.bare_noun`)
+_OPENING = frozenset({"open", "opened", "close", "closed", "shut", "lid", "flap"})
 
 #: fixed expressions of general English in which a catalog kind's word names no thing (idioms a
 #: dictionary of idioms lists, and compounds of another sense): as the text writes them, each word
@@ -993,6 +999,8 @@ class _Reader:
             and self.text.words[i - 1] not in SORT_ADJECTIVES and "ADJ" in getAllLemmas(self.text.raw[i - 1])
 
         support = self.stood_on(i)
+        opened = bool({self.text.words[k] for k in range(self.text.sentence_start(i), self.text.sentence_end(i))}
+                      & _OPENING)
 
         def score(category: str | None) -> tuple[bool, bool, bool, bool, bool, bool, int, bool, bool, bool, bool, int, bool, int,
                                                  bool, bool]:
@@ -1021,7 +1029,9 @@ class _Reader:
                     support is not None and ("floor" if support == FLOOR else "surface") in cat.placement,
                     own,
                     # a sort named by its own modifier is that sort, whatever else its sentence says
-                    unlisted and HEAD_SENSES.get(word) == category,
+                    # (not where its sentence opens or shuts it and the sort cannot be: "an open
+                    # craft box", "open the flaps" are a cardboard box's, no storage box's)
+                    unlisted and HEAD_SENSES.get(word) == category and (cat.openable or not opened),
                     # a word of its sentence hints only a kind of the task's own rooms ("there's
                     # coffee in the jar; the post is on the table" in a kitchen: no coffee table,
                     # a living room's), any kind where no room id names a type
@@ -1183,8 +1193,9 @@ class _Reader:
         mahjong table"): a compound's modifier that says what sort it is, not what it is like (a
         word the lemmatiser knows as an adjective, "the small table", "the round table", or a value
         of an option's attribute, "the metal table"). Such a thing is the head's sense in general
-        use (`HEAD_SENSES`), whatever the catalog's other sorts are named for."""
-        if not self.modified(i):
+        use (`HEAD_SENSES`), whatever the catalog's other sorts are named for. The modifier may be
+        a compound of two words ("the lost property box")."""
+        if not (self.modified(i) or self.compound_modified(i)):
             return False
         prev = self.text.raw[i - 1]
         if "ADJ" in getAllLemmas(prev):
@@ -1195,6 +1206,15 @@ class _Reader:
                     any(prev in values for values in cat.attributes.values()):
                 return False
         return True
+
+    def compound_modified(self, i: int) -> bool:
+        """Whether word `i` follows a determiner and a compound of two words that name no kind,
+        the second no verb ("the lost property box", "a big comics box"): a noun phrase, as
+        `modified` reads one modifier."""
+        words, gaps = self.text.words, self.text.gaps
+        return i >= 3 and words[i - 3] in _ARTICLES and all(g == " " for g in gaps[i - 2:i + 1]) \
+            and all(words[k].isalpha() and self.match(k)[1] is None and words[k] not in _PREPOSITIONS
+                    for k in (i - 2, i - 1)) and not self.verb(i - 1)
 
     def dropped_modifiers(self, category: str, word: str) -> set[str]:
         """The words a short name `word` may have dropped from a name of `category` it heads
@@ -1401,6 +1421,27 @@ class _Reader:
             self.glossed_as.add(category)
             return before
         return None
+
+    def one_glossed(self, i: int) -> tuple[str, str, str] | None:
+        """(the kind named before, its fuller kind, the word it was called by) when word `i` opens
+        "the <modifier> one" in a bracket or after a comma right after a thing is named (within six
+        words), and the modifier with that word is a catalog name of another kind ("the lost
+        property box (the cardboard one under the table)": a cardboard box, "the bin, the pedal
+        one": a pedal bin): the gloss says which sort the thing is, as `glossed` reads "(the
+        cardboard box)". A modifier that names no sort with the word ("(the red one)") keeps it."""
+        words, gaps = self.text.words, self.text.gaps
+        if i < 1 or i + 1 >= len(words) or words[i + 1] != "one" or words[i - 1] not in _ARTICLES \
+                or not ("(" in gaps[i - 1] or "," in gaps[i - 1]) or not self.recent:
+            return None
+        before = self.recent[-1]
+        kind = self.kinds.get(before)
+        said = next((words[k] for k in range(i - 2, max(i - 7, -1), -1) if words[k] in self.used.get(before, ())), None)
+        if kind is None or kind.instances or kind.count > 1 or said is None:
+            return None
+        category = self.phrases.get((words[i], said))
+        if category is None or category == before or words_of(category)[-1] != said:
+            return None
+        return before, category, said
 
     def said_as_gloss(self, i: int) -> str | None:
         """The kind a bracket said a two-word phrase is (`glossed`: "the chart table (the little
@@ -2508,6 +2549,19 @@ class _Reader:
                     if not any(name.startswith("spare_") for name in kind.instances):
                         self.instance(spare, f"spare_{words_of(spare)[-1]}", {})
                 i += 1
+                continue
+            if (reglossed := self.one_glossed(i)) is not None:
+                # "the lost property box (the cardboard one under the table)": the box is cardboard
+                before, category, said = reglossed
+                if self.first_at.get(before, i) >= i - 6:  # (its only naming: else the others keep it)
+                    del self.kinds[before]
+                    self.recent.remove(before)
+                    self.particular.discard(before)
+                self.kinds.setdefault(category, _Kind()).generic = True
+                self.first_at.setdefault(category, i)
+                self.particular.add(category)
+                self.mention(category, said)
+                i += 2
                 continue
             if self.part_said_of(i):
                 i += 1  # "the lower shelf of the metal rack": the rack's shelf, no object
