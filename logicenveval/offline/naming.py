@@ -269,6 +269,10 @@ _PERSON_DEED_LINKS = frozenset({"have", "has", "had", "always", "never", "often"
                                 "will", "may", "might", "did", "do", "does"})
 #: the nouns of the floor said as the place a thing stands on
 FLOOR_WORDS = frozenset({"floor", "ground"})
+#: verbs of being and of standing, as written, after which a learner's English may leave out the
+#: article of the thing that is or stands ("On piano is standing small lamp": `_Reader.modified`)
+_BEING = frozenset({"is", "are", "was", "were", "stands", "standing", "sits", "sitting", "lies", "lying",
+                    "hangs", "hanging"})
 #: the floor as `_Reader.stood_on` gives it: the support every room has, no catalog kind
 FLOOR = "floor"
 #: words too common to say which of several categories a bare noun means
@@ -1107,6 +1111,9 @@ class _Reader:
         that holds things (`Category.surface`: "the lamp lives on the shelf", "a clock on the
         bookshelf": the kind's name). None when its phrase stands it on neither."""
         words, gaps = self.text.words, self.text.gaps
+        fronted = self.fronted_support(i)
+        if fronted is not None:
+            return fronted
         k = i + 1
         # (as written: the singular of "lives" is "life")
         while k < len(words) and self.text.raw[k] in FLOOR_LINKS and gaps[k] in (" ", ", "):
@@ -1118,6 +1125,26 @@ class _Reader:
             return FLOOR
         support = self.match(k + 2)[1]
         return support if support is not None and self.catalog.categories[support].surface else None
+
+    def fronted_support(self, i: int) -> str | None:
+        """What the noun at word `i` stands on by a place its sentence opens with, before a verb of
+        being or standing and the noun's own phrase ("On the piano stands a small lamp", "On piano
+        is standing small lamp", "On the desk is a lamp"): a kind with a top that holds things,
+        as `stood_on` reads "on the" after the noun."""
+        words = self.text.words
+        start = self.text.sentence_start(i)
+        if words[start] != "on":
+            return None
+        at = start + 1 + (words[start + 1] in _ARTICLES)
+        n, support = self.match(at)
+        k = at + n
+        if support is None or not self.catalog.categories[support].surface or k >= i \
+                or self.text.raw[k] not in _BEING:
+            return None
+        k += 1 + (k + 1 < i and self.text.raw[k + 1] in _BEING)  # "is standing"
+        # then the noun's own phrase: an article, and an adjective at most
+        return support if i - k <= 2 and all(w in _ARTICLES or "ADJ" in getAllLemmas(self.text.raw[j])
+                                              for j, w in enumerate(words[k:i], k)) else None
 
     def use_clause(self, i: int) -> set[str]:
         """The words of the clause or phrase right after the noun at word `i` that says what it is
@@ -1258,10 +1285,11 @@ class _Reader:
         # the modifier after an article, or opening its sentence or list item ("* fly spray lives
         # on that shelf": a noun phrase as "the fly spray" is)
         opens = i == 1 or bool(_SENTENCE_END.search(gaps[i - 1]) or _ITEM_BREAK.search(gaps[i - 1]))
-        # (the article left out after a preposition, as learners' English and notes do: "on small
-        # table near his chair", "in big basket": an adjective alone then stands for it)
-        dropped = i >= 2 and words[i - 2] in _PREPOSITIONS - {"of"} and not gaps[i - 1].strip() \
-            and "ADJ" in getAllLemmas(self.text.raw[i - 1])
+        # (the article left out after a preposition or a verb of being or standing, as learners'
+        # English and notes do: "on small table near his chair", "in big basket", "On piano is
+        # standing small lamp": an adjective alone then stands for it)
+        dropped = i >= 2 and (words[i - 2] in _PREPOSITIONS - {"of"} or self.text.raw[i - 2] in _BEING) \
+            and not gaps[i - 1].strip() and "ADJ" in getAllLemmas(self.text.raw[i - 1])
         if not (i >= 2 and words[i - 2] in _ARTICLES and not gaps[i - 1].strip() or opens or dropped):
             return False
         return self.match(i - 1)[1] is None and not self.verb(i - 1) and words[i - 1].isalpha() \

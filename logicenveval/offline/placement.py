@@ -2085,9 +2085,13 @@ def _inverted(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         return
     covered = {n for m in subjects for n in range(m.start, m.end)}
     tail = stop if participle else subjects[0].start
+    # (an adjective with its article left out, as learners' English does: "On piano is standing
+    # small lamp")
     if not all(n in covered or w in LIST_GLUE or w in COLOR_WORDS or w in STATE_WORDS
-               for n, w in enumerate(words[k:tail], k)):
+               or n + 1 == tail and "ADJ" in getAllLemmas(w) for n, w in enumerate(words[k:tail], k)):
         return  # "On the shelf lies a note about the torch": the thing is not what follows the verb
+    if kind == "settled" and set(words[holder.end:subjects[0].start]) & NORM_ADVERBS:
+        kind = "kept"  # "On the stove usually sits the old pot": where it belongs, as `_locative` reads it
     for m in subjects:
         for role in _roles(m, sent):
             _put(reading, kind, catalog, lex, role, holder, prep)
