@@ -364,11 +364,23 @@ _CONTENTS = re.compile(rf"\bthere (?:is|are) {_AMOUNT}(?P<no>no |not any )?{_LIQ
 #: milk" names the carton ("if there is milk left" asks of the carton, not of the kettle spoken
 #: of before); "left" is needed, as "if there is milk" asks whether there is any milk at all
 _LEFT = re.compile(rf"\bthere (?:is|are) {_AMOUNT}(?P<no>no |not any )?(?P<liquid>{_LIQUID}) left\b(?! (?:in|inside|on|over)\b)")
+#: a bare "in" that ends its clause ("unless it's got water in, ..."): the thing spoken of holds it
+_IN_END = r"(?=\s*(?:[,;:.!?)]|$))"
 #: "the carton still has milk in it", "if the bottle has no juice left in it": its subject holds it;
 #: "have got" is the same "have" of possession, as British English says it ("unless it's got
 #: water in it", "if the vase hasn't got any water in it": "not ... any" is "no")
 _HAS_IN = re.compile(rf"\b(?P<has>has|have)(?P<not> not)?(?: got)? {_AMOUNT}(?P<no>no |not any |any )?"
-                     rf"{_LIQUID}(?: left)? (?:in|inside) (?:it|them)\b")
+                     rf"{_LIQUID}(?: left)? (?:in|inside)(?: (?:it|them)\b|{_IN_END})")
+#: the asked forms (the twenty-seventh session): "is there still water in the kettle?", "has the
+#: watering can still got water in it?", and the subject left out as notes leave it ("Still got
+#: water in? Leave it.": of the thing spoken of)
+_CONTENTS_ASKED = re.compile(rf"\b(?P<be>is|are) there {_AMOUNT}(?P<no>no |not any |any )?{_LIQUID}(?: left)? "
+                             rf"(?:in|inside) {_HELD_IN}")
+_HAS_IN_ASKED = re.compile(rf"\b(?P<has>has|have)(?P<not> not)? (?P<np>it|they|(?:the|your|my|our|this|that) [a-z]+"
+                           rf"(?: [a-z]+)?) {_AMOUNT}got {_AMOUNT}(?P<no>no |not any |any )?{_LIQUID}(?: left)? "
+                           rf"(?:in|inside)(?: (?:it|them)\b|{_IN_END})")
+_GOT_IN = re.compile(rf"(?:^|(?<=[.?!:;-] ))(?P<adv>(?:still |already )?)got {_AMOUNT}{_LIQUID}(?: left)? "
+                     rf"(?:in|inside)(?: (?:it|them))?(?= *\?)")
 
 
 #: the auxiliaries that open a question or make its tag
@@ -513,6 +525,9 @@ def _contents(said: str) -> str:
     def state(m: re.Match[str]) -> str:
         empty = m.group("no") not in (None, "any ") or m.groupdict().get("not") is not None
         return "empty" if empty else "full"
+    said = _CONTENTS_ASKED.sub(lambda m: f"{m.group('be')} {m.group('np')} {state(m)}", said)
+    said = _HAS_IN_ASKED.sub(lambda m: f"{'are' if m.group('np') == 'they' else 'is'} {m.group('np')} {state(m)}", said)
+    said = _GOT_IN.sub(lambda m: f"{m.group('adv')}full", said)
     said = _CONTENTS.sub(lambda m: f"{m.group('np')} {'are' if m.group('np') == 'them' else 'is'} {state(m)}", said)
     said = _LEFT.sub(lambda m: f"the {m.group('liquid')} is {state(m)}", said)
     return _HAS_IN.sub(lambda m: f"{'are' if m.group('has') == 'have' else 'is'} {state(m)}", said)
