@@ -155,6 +155,10 @@ ADVERBS = frozenset({"still", "already", "always", "usually", "normally", "often
                      "back", "there", "here", "too", "each", "mostly", "generally", "typically",
                      # "tucked away in the drawer", "has been put away in the cupboard"
                      "away"})
+#: participles of how a thing lies, not of putting it there ("left folded on the bench", "are
+#: stacked on the chair", "found scrunched in the basket"): read as the verb group's adverbs
+ARRANGED = frozenset({"folded", "stacked", "piled", "heaped", "crumpled", "scrunched", "rolled", "bundled",
+                      "coiled", "balled"})
 VERBS = BE | PERFECT | STATIVE | RESULT | KEEP_VERBS | HAVE_VERBS | MOTION
 #: modal and semi-modal words before a verb group that make it a norm or a goal, not a fact
 #: ("the shirt should be in the basket", "it needs to go on the desk", "is to be put away")
@@ -797,7 +801,7 @@ def _prep_before(words: list[str], start: int) -> str | None:
 def _verb_group(words: list[str], i: int, hi: int) -> tuple[int, list[str]]:
     """The verb group starting at token i (auxiliaries, adverbs, verbs), as (end, its words)."""
     j = i
-    while j < hi and (words[j] in BE | PERFECT | STATIVE | RESULT | KEEP_VERBS | ADVERBS | DOUBT
+    while j < hi and (words[j] in BE | PERFECT | STATIVE | RESULT | KEEP_VERBS | ADVERBS | DOUBT | ARRANGED
                       or words[j] in ("not", "never", "usually", "often") or words[j].endswith("ly")):
         j += 1
     return j, words[i:j]
@@ -806,9 +810,11 @@ def _verb_group(words: list[str], i: int, hi: int) -> tuple[int, list[str]]:
 def _verb_kind(group: list[str]) -> str | None:
     """What a verb group says of a place: `settled` ("is", "lies", "has been left", "are found"),
     `kept` ("are kept", "lives", "we store"), None for a goal ("is put", "goes") or no verb."""
-    verbs = [w for w in group if w not in ADVERBS]
+    verbs = [w for w in group if w not in ADVERBS | ARRANGED]
     if not verbs or set(verbs) & {"not", "never"}:
         return None
+    if set(group) & ARRANGED and all(w in BE for w in verbs):
+        return None  # "Books are stacked on the shelf by colour": what is done to them, a rule
     if set(verbs) & KEEP_VERBS:
         return "kept"
     last = verbs[-1]
