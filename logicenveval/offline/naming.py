@@ -1133,7 +1133,7 @@ class _Reader:
         as `stood_on` reads "on the" after the noun."""
         words = self.text.words
         start = self.text.sentence_start(i)
-        if words[start] != "on":
+        if words[start] != "on" or start + 1 >= i:
             return None
         at = start + 1 + (words[start + 1] in _ARTICLES)
         n, support = self.match(at)

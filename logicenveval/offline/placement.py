@@ -155,8 +155,9 @@ ADVERBS = frozenset({"still", "already", "always", "usually", "normally", "often
                      "back", "there", "here", "too", "each", "mostly", "generally", "typically",
                      # "tucked away in the drawer", "has been put away in the cupboard"
                      "away"})
-#: participles of how a thing lies, not of putting it there ("left folded on the bench", "are
-#: stacked on the chair", "found scrunched in the basket"): read as the verb group's adverbs
+#: participles of how a thing lies, not of putting it there ("left folded on the bench", "have
+#: been left stacked on the chair", "found scrunched in the basket"): read as the verb group's
+#: adverbs (`_verb_kind`: after a plain "is" alone they say what is done to things, a rule)
 ARRANGED = frozenset({"folded", "stacked", "piled", "heaped", "crumpled", "scrunched", "rolled", "bundled",
                       "coiled", "balled"})
 VERBS = BE | PERFECT | STATIVE | RESULT | KEEP_VERBS | HAVE_VERBS | MOTION
