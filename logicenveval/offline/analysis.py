@@ -357,28 +357,32 @@ LIQUIDS = ("water", "wine", "milk", "juice", "coffee", "tea", "beer", "soup", "o
 _LIQUID = rf"(?:{'|'.join(LIQUIDS)})"
 #: the amount words between "there is" and the liquid ("there is still some milk")
 _AMOUNT = r"(?:still |some |any |already |now |even |a little |a bit of |a drop of )*"
+#: where a clause ends: a mark or the text's end (a bare "in" there, "unless it's got water in, ...",
+#: has the thing spoken of hold it)
+_IN_END = r"(?=\s*(?:[,;:.!?)]|$))"
+#: a short definite noun phrase ("the kettle", "your watering can")
+_DEFINITE_NP = r"(?:the|your|my|our|this|that) [a-z]+(?: [a-z]+)?"
 #: the container a "there is ... in" names: "it", "them" or a short definite noun phrase ending its clause
-_HELD_IN = r"(?P<np>it|them|(?:the|your|my|our|this|that) [a-z]+(?: [a-z]+)?(?=\s*(?:[,;:.!?)]|$)))"
+_HELD_IN = rf"(?P<np>it|them|{_DEFINITE_NP}{_IN_END})"
+#: "in it", "in them", or "in" ending its clause: its subject holds the liquid
+_IN_IT = rf"(?:in|inside)(?: (?:it|them)\b|{_IN_END})"
 _CONTENTS = re.compile(rf"\bthere (?:is|are) {_AMOUNT}(?P<no>no |not any )?{_LIQUID}(?: left)? (?:in|inside) {_HELD_IN}")
 #: "when there is milk left" (no container named): the liquid's own container is full, as "the
 #: milk" names the carton ("if there is milk left" asks of the carton, not of the kettle spoken
 #: of before); "left" is needed, as "if there is milk" asks whether there is any milk at all
 _LEFT = re.compile(rf"\bthere (?:is|are) {_AMOUNT}(?P<no>no |not any )?(?P<liquid>{_LIQUID}) left\b(?! (?:in|inside|on|over)\b)")
-#: a bare "in" that ends its clause ("unless it's got water in, ..."): the thing spoken of holds it
-_IN_END = r"(?=\s*(?:[,;:.!?)]|$))"
 #: "the carton still has milk in it", "if the bottle has no juice left in it": its subject holds it;
 #: "have got" is the same "have" of possession, as British English says it ("unless it's got
 #: water in it", "if the vase hasn't got any water in it": "not ... any" is "no")
 _HAS_IN = re.compile(rf"\b(?P<has>has|have)(?P<not> not)?(?: got)? {_AMOUNT}(?P<no>no |not any |any )?"
-                     rf"{_LIQUID}(?: left)? (?:in|inside)(?: (?:it|them)\b|{_IN_END})")
+                     rf"{_LIQUID}(?: left)? {_IN_IT}")
 #: the asked forms (the twenty-seventh session): "is there still water in the kettle?", "has the
 #: watering can still got water in it?", and the subject left out as notes leave it ("Still got
 #: water in? Leave it.": of the thing spoken of)
 _CONTENTS_ASKED = re.compile(rf"\b(?P<be>is|are) there {_AMOUNT}(?P<no>no |not any |any )?{_LIQUID}(?: left)? "
                              rf"(?:in|inside) {_HELD_IN}")
-_HAS_IN_ASKED = re.compile(rf"\b(?P<has>has|have)(?P<not> not)? (?P<np>it|they|(?:the|your|my|our|this|that) [a-z]+"
-                           rf"(?: [a-z]+)?) {_AMOUNT}got {_AMOUNT}(?P<no>no |not any |any )?{_LIQUID}(?: left)? "
-                           rf"(?:in|inside)(?: (?:it|them)\b|{_IN_END})")
+_HAS_IN_ASKED = re.compile(rf"\b(?P<has>has|have)(?P<not> not)? (?P<np>it|they|{_DEFINITE_NP}) {_AMOUNT}got "
+                           rf"{_AMOUNT}(?P<no>no |not any |any )?{_LIQUID}(?: left)? {_IN_IT}")
 _GOT_IN = re.compile(rf"(?:^|(?<=[.?!:;-] ))(?P<adv>(?:still |already )?)got {_AMOUNT}{_LIQUID}(?: left)? "
                      rf"(?:in|inside)(?: (?:it|them))?(?= *\?)")
 

@@ -564,6 +564,11 @@ class _Reader:
 
     # -- noun phrases ----------------------------------------------------------------------
 
+    def names_kind(self, k: int) -> bool:
+        """Whether word `k` is the head of a kind's name ("towel", "box") or opens a catalog name
+        there ("coffee table"): a noun of the task's world, no modifier or verb."""
+        return self.text.words[k] in self.heads or self.match(k)[1] is not None
+
     def match(self, i: int) -> tuple[int, str | None]:
         """(length, category) of the longest catalog name starting at word `i`, within one
         stretch of words without punctuation ("the floor is wet, mop it" names no wet mop)."""
@@ -807,7 +812,7 @@ class _Reader:
         named for laundry: what goes in the laundry hamper is laundry, whatever the garment."""
         words, raw, gaps = self.text.words, self.text.raw, self.text.gaps
         laundry = self.phrases.get(("laundry",))
-        if laundry is None or raw[i] == words[i] or words[i] in self.heads or self.match(i)[1] is not None \
+        if laundry is None or raw[i] == words[i] or self.names_kind(i) \
                 or i + 1 >= len(words) or not _HEADING.search(gaps[i + 1]):
             return None
         start = self.text.sentence_start(i)
@@ -837,11 +842,11 @@ class _Reader:
             return False
         j = i + 1
         if j < len(words) and not gaps[j].strip() and raw[j].isalpha() and raw[j] != words[j] \
-                and self.match(j)[1] is None and words[j] not in self.heads and not getAllLemmas(raw[j], upos="VERB"):
+                and not self.names_kind(j) and not getAllLemmas(raw[j], upos="VERB"):
             return True  # a plural noun naming no kind (and no verb's form) after it: what the paper is made into
         prev = words[i - 1] if i > 0 and not _SENTENCE_END.search(gaps[i]) else ""
         return prev not in _DETERMINERS and prev not in _COUNTS and prev not in self.possessors \
-            and not (j < len(words) and not gaps[j].strip() and (self.match(j)[1] is not None or words[j] in self.heads))
+            and not (j < len(words) and not gaps[j].strip() and self.names_kind(j))
 
     def adjective_sense(self, i: int) -> bool:
         """Whether the one-word name at word `i` is an adjective or adverb where it stands, no
@@ -1681,7 +1686,7 @@ class _Reader:
         if n != 1 or j >= len(words) or gaps[j] not in (" ", "-"):
             return False
         nxt = words[j]
-        if nxt in self.heads or self.match(j)[1] is not None or nxt in PART_HEADS or nxt in FURNITURE_PARTS \
+        if self.names_kind(j) or nxt in PART_HEADS or nxt in FURNITURE_PARTS \
                 or nxt in TIME_HEADS or not raw[j].isalpha():
             return False
         if gaps[j] == "-":
@@ -2346,7 +2351,7 @@ class _Reader:
         words, gaps = self.text.words, self.text.gaps
         return i + 2 < len(words) and gaps[i + 1] == " " and gaps[i + 2] == " " and words[i + 1].isalpha() \
             and words[i + 1] not in _PREPOSITIONS and not self.verb(i + 1) \
-            and (words[i + 2] in self.heads or self.match(i + 2)[1] is not None)
+            and self.names_kind(i + 2)
 
     def spare_of_unnamed(self, i: int) -> bool:
         """Whether a plural "spares" at word `i` takes up a plural noun that names no kind, said
@@ -2567,7 +2572,7 @@ class _Reader:
                 i += 1  # "- Torch. Left my spare one behind, it's on the shelf": the heading's torch
                 continue
             if words[i] in SPARE_WORDS and prev in _DETERMINERS and (
-                    i + 1 == len(words) or words[i + 1] not in self.heads and self.match(i + 1)[1] is None) \
+                    i + 1 == len(words) or not self.names_kind(i + 1)) \
                     and not self.spare_before_head(i):
                 # "a spare" as a noun: "fetch a spare from the dresser", "we store the spares"
                 spare = None if self.spare_of_unnamed(i) or self.company_at_place(i) else next(
