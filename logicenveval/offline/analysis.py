@@ -65,7 +65,14 @@ from logicenveval.offline.lexicon import (
     without_modifiers,
     words_of,
 )
-from logicenveval.offline.placement import LEFT_PASSIVES, RESULT, STATIVE, described_placements
+from logicenveval.offline.placement import (
+    BECOMING,
+    GOING,
+    LEFT_PASSIVES,
+    RESULT,
+    STATIVE,
+    described_placements,
+)
 from logicenveval.offline.sentences import (
     ACTIONS,
     DISCOVERY,
@@ -2071,7 +2078,7 @@ class _Reader:
     def _state(self, words: list[str], m: Mention, negated: bool) -> list[Fact]:
         k = m.end
         skipped: list[str] = []
-        while k < len(words) and len(skipped) < 8 and (words[k] in DESCRIPTIVE | PARTS | NEGATIONS
+        while k < len(words) and len(skipped) < 8 and (words[k] in DESCRIPTIVE | PARTS | NEGATIONS | BECOMING
                                                        | {"but", "and", "that", "which"}
                                                        or self._pp_at(words, k) or _graded(words, k)):
             if self._pp_at(words, k):
@@ -2088,6 +2095,8 @@ class _Reader:
         relative = skipped[:1] in (["that"], ["which"]) and art >= 0 and words[art] in INDEFINITE
         while k < len(words) and words[k] in STATE_WORDS:
             w = words[k]
+            if w in ("on", "off", "out", "up") and set(skipped) & GOING:
+                break  # "if the smoke alarm goes off", "when the fire went out": it sounds, it dies down
             if w == "out" and not set(skipped) & {"is", "are", "was", "were", "already", "still"}:
                 break  # `take it out` is an action, `it is out` a state
             if w == "out" and k + 1 < len(words) and words[k + 1] in PREP_ON | PREP_IN | {"of", "there", "here"}:

@@ -2698,13 +2698,24 @@ def _pointed_out(words: list[str], start: int, clause: Span) -> bool:
         w in _ASKED_SEEING for w in lead)
 
 
+#: verbs of becoming, the predicate of a state a thing comes to be in ("if the towel on the rail
+#: gets wet", "has got dirty", "when the cloth in the bucket goes dry", "has become soiled")
+#: (the analysis reads the state after one too: "if the cloth gets wet", "once the bowl goes empty")
+GOING = frozenset({"go", "goes", "going", "gone", "went"})
+BECOMING = GOING | frozenset({"get", "gets", "got", "gotten", "getting", "become", "becomes", "became", "turn",
+                              "turns", "turned", "grow", "grows", "grown", "grew"})
+
+
 def _described_subject(words: list[str], start: int, end: int, clause: Span) -> bool:
     """"if the mug on the coffee table is dirty", "Is the lamp on the nightstand still on?": a
-    definite object whose state (not place) is in question: a state word follows its place."""
+    definite object whose state (not place) is in question: a state word follows its place, after
+    a verb of being, a perfect ("if the bath towel on the rail has been used", "should the mug on
+    the desk have got dirty", "has been left wet") or of becoming (`BECOMING`: "goes dry")."""
     j = end
     put_first = j < clause.end and words[j] == ","
     j += put_first
-    while j < clause.end and (words[j] in ADVERBS or words[j] in BE):
+    while j < clause.end and (words[j] in ADVERBS or words[j] in BE or words[j] in PERFECT or words[j] in BECOMING
+                              or words[j] == "left" and words[j - 1] in BE):
         j += 1
     if put_first and j < clause.end and words[j - 1] in BE and words[j] in RESUMPTIVE:
         # "the wine bottle on the table, is it empty?": the thing put first, then asked of by
