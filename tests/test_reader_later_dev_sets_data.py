@@ -229,8 +229,8 @@ this docstring): registers of religious, funeral and community caretaking work (
 notes for the relief verger, a mosque caretaker's note for the wudu area, a synagogue caretaker's
 Friday note for the cleaner, a crematorium's chapel attendants' between-services card, a Quaker
 meeting house warden's notes for the lock-up rota, a gurdwara langar kitchen note, a church good
-neighbours scheme's visit card, a retreat house guestmaster's guest room card, an almshouse warden's
-weekly check sheet) and the English of a Punjabi speaker (the langar kitchen note), in room ids
+neighbours scheme's visit card, a Salvation Army lifehouse's room changeover sheet, an almshouse
+warden's weekly check sheet) and the English of a Punjabi speaker (the langar kitchen note), in room ids
 beginning with a letter n-z.
 """
 
