@@ -405,6 +405,23 @@ prints LogCov / SceVR / FauDR for each, then per task:
   shop's sorting room day book, a florist's order book, a second-hand bookseller's letter, a
   hardware shop owner's closing note, a market trader's texts, a bridal boutique's stylist
   handbook). Fresh (`FRESH`) until measured ten times, then a development set;
+- `dev49 reworded` and `dev49 new`: tests/data/reader_dev49/ — the forty-ninth development set,
+  written in the twenty-eighth session (beside dev 50, by helpers who never read or ran the
+  reader) in registers of food and drink production work and the English of a Basque speaker: one
+  rewording each of 3 built-in descriptions (a vineyard winery's cellar work order, a chilled
+  desserts factory's hygiene lobby procedure, a confectionery factory's line clearance checklist)
+  and six new tasks in rooms none of the sets above use (a microbrewery head brewer's handover, a
+  Basque cider maker's note, a coffee roastery's close list, a smokehouse day book, a gin
+  distillery's Friday close e-mail, a farmhouse cheesemaker's make sheet). Fresh (`FRESH`) until
+  measured ten times, then a development set;
+- `dev50 reworded` and `dev50 new`: tests/data/reader_dev50/ — the fiftieth development set,
+  written in the twenty-eighth session beside dev 49 in registers of religious, funeral and
+  community caretaking work and the English of a Punjabi speaker: one rewording each of 3 built-in
+  descriptions (a church good neighbours scheme's visit card, a Salvation Army lifehouse's room
+  changeover sheet, an almshouse warden's weekly check sheet) and six new tasks in rooms none of the
+  sets above use (a church verger's relief notes, a mosque caretaker's note, a synagogue caretaker's
+  Friday note, a crematorium chapel attendants' card, a Quaker meeting house warden's notes, a
+  gurdwara langar kitchen note). Fresh (`FRESH`) until measured ten times, then a development set;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -437,7 +454,7 @@ was written for (a rule too wide shows as a task of another set falling):
     python benchmarks/reader_generalisation.py --dev-only --compare before.json # with the rule
 
 `--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: the
-sets written in a session, until measured: now dev 47 and dev 48; dev 25 and
+sets written in a session, until measured: now dev 47, dev 48, dev 49 and dev 50; dev 25 and
 dev 26 left it in the fifteenth session after their third measurement, dev 27 and dev 28 after their
 fifth, dev 29 and dev 30 in the sixteenth after their sixth, dev 31 and dev 32 in the
 seventeenth after their seventh, dev 33 and dev 34 in the eighteenth after their eighth, dev 35 and dev 36 in the
@@ -574,6 +591,8 @@ DEV45 = ROOT / "tests" / "data" / "reader_dev45"
 DEV46 = ROOT / "tests" / "data" / "reader_dev46"
 DEV47 = ROOT / "tests" / "data" / "reader_dev47"
 DEV48 = ROOT / "tests" / "data" / "reader_dev48"
+DEV49 = ROOT / "tests" / "data" / "reader_dev49"
+DEV50 = ROOT / "tests" / "data" / "reader_dev50"
 HOLDOUT2 = ROOT / "tests" / "data" / "reader_holdout2"
 #: (row name, tasks folder; None = the built-in tasks)
 SETS: tuple[tuple[str, Path | None], ...] = (
@@ -625,6 +644,8 @@ SETS: tuple[tuple[str, Path | None], ...] = (
     ("dev46 reworded", DEV46 / "tasks_reworded"), ("dev46 new", DEV46 / "tasks_new"),
     ("dev47 reworded", DEV47 / "tasks_reworded"), ("dev47 new", DEV47 / "tasks_new"),
     ("dev48 reworded", DEV48 / "tasks_reworded"), ("dev48 new", DEV48 / "tasks_new"),
+    ("dev49 reworded", DEV49 / "tasks_reworded"), ("dev49 new", DEV49 / "tasks_new"),
+    ("dev50 reworded", DEV50 / "tasks_reworded"), ("dev50 new", DEV50 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
     ("held-out2 reworded", HOLDOUT2 / "tasks_reworded"), ("held-out2 new", HOLDOUT2 / "tasks_new"),
 )
@@ -633,7 +654,8 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH: frozenset[str] = frozenset({"dev47 reworded", "dev47 new", "dev48 reworded", "dev48 new"})
+FRESH: frozenset[str] = frozenset({"dev47 reworded", "dev47 new", "dev48 reworded", "dev48 new",
+                                   "dev49 reworded", "dev49 new", "dev50 reworded", "dev50 new"})
 GENERATOR = "logicenvgen"
 
 

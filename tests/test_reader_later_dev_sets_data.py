@@ -1,8 +1,8 @@
-"""The reader's fifth to forty-ninth development sets (tests/data/reader_dev5/, reader_dev6/,
+"""The reader's fifth to fiftieth development sets (tests/data/reader_dev5/, reader_dev6/,
 reader_dev7/, reader_dev8/, reader_dev9/, reader_dev10/, reader_dev11/, reader_dev12/, reader_dev13/,
 reader_dev14/, reader_dev15/, reader_dev16/, reader_dev17/, reader_dev18/, reader_dev19/, reader_dev20/,
 reader_dev21/, reader_dev22/, reader_dev23/, reader_dev24/, reader_dev25/, reader_dev26/,
-reader_dev27/, reader_dev28/, reader_dev29/, reader_dev30/, reader_dev31/, reader_dev32/, reader_dev33/, reader_dev34/, reader_dev35/, reader_dev36/, reader_dev37/, reader_dev38/, reader_dev39/, reader_dev40/, reader_dev41/, reader_dev42/, reader_dev43/, reader_dev44/, reader_dev45/, reader_dev46/, reader_dev47/, reader_dev48/, reader_dev49/): new tasks and rewordings written from the task format, the
+reader_dev27/, reader_dev28/, reader_dev29/, reader_dev30/, reader_dev31/, reader_dev32/, reader_dev33/, reader_dev34/, reader_dev35/, reader_dev36/, reader_dev37/, reader_dev38/, reader_dev39/, reader_dev40/, reader_dev41/, reader_dev42/, reader_dev43/, reader_dev44/, reader_dev45/, reader_dev46/, reader_dev47/, reader_dev48/, reader_dev49/, reader_dev50/): new tasks and rewordings written from the task format, the
 catalog and the built-in tasks, without reading the offline reader or running it on them, for rounds of reader
 rules to be tuned on. One table of what differs between them; the same checks for each.
 
@@ -223,13 +223,22 @@ friend minding her shop, a hardware shop owner's closing note, a market trader's
 daughter locking up the lock-up, a bridal boutique's stylist handbook section, a furniture store's
 room-set display standards card, a supermarket's tannoy announcement to colleagues, a shop's returns
 and exchanges policy notice) and the English of a Bosnian speaker (the hardware shop owner's note),
-in room ids beginning with a letter n-z.dev 49 was written after dev 48 (beside dev 50, which it never opened; dev 43 known only through
+in room ids beginning with a letter n-z.
+dev 49 was written after dev 48 (beside dev 50, which it never opened; dev 43 known only through
 this docstring): registers of food and drink production work (a microbrewery head brewer's
 late-shift handover, a Basque cider maker's note to his helper, a coffee roastery's end-of-day close
 list, a smokehouse's day book with notes for the owner's son, a gin distillery manager's Friday close
 e-mail, a farmhouse cheesemaker's make sheet, a vineyard winery's vintage cellar work order, a chilled
 desserts factory's hygiene lobby procedure, a confectionery factory's line clearance checklist) and
 the English of a Basque speaker (the cider maker's note), in room ids beginning with a letter a-m.
+dev 50 was written after dev 48 (beside dev 49, which it never opened; dev 43 known only through
+this docstring): registers of religious, funeral and community caretaking work (a church verger's
+notes for the relief verger, a mosque caretaker's note for the wudu area, a synagogue caretaker's
+Friday note for the cleaner, a crematorium's chapel attendants' between-services card, a Quaker
+meeting house warden's notes for the lock-up rota, a gurdwara langar kitchen note, a church good
+neighbours scheme's visit card, a Salvation Army lifehouse's room changeover sheet, an almshouse
+warden's weekly check sheet) and the English of a Punjabi speaker (the langar kitchen note), in room ids
+beginning with a letter n-z.
 """
 
 from __future__ import annotations
@@ -329,6 +338,7 @@ SETS = (
     DevSet("reader_dev47", "_d47", 3, 6, ("guardhouse_condo_security_relief_note", "multi_room_pet_care_d47")),
     DevSet("reader_dev48", "_d48", 3, 6, ("trade_counter_hardware_shop_owner_note", "study_desk_cleanup_d48")),
     DevSet("reader_dev49", "_d49", 3, 6, ("cider_barn_basque_cider_maker_note", "hallway_entry_tidy_d49")),
+    DevSet("reader_dev50", "_d50", 3, 6, ("rasoi_gurdwara_langar_sewa_note", "bathroom_towel_refresh_d50")),
 )
 IDS = [s.name for s in SETS]
 ENTRIES = {s.name: rewordings(DATA / s.name) for s in SETS}
