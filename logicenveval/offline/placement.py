@@ -2630,8 +2630,9 @@ def _resting(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, cat
         whole = _part_of(sent, ms, part, clause.end) if between[:1] in ([w] for w in AT) else None
         if whole is not None:
             b = whole  # "the brown bottle on the lower shelf of the metal rack": on the rack
-        elif not between or between[0] not in AT or not all(w in ARTICLES or w in RANKS for w in between[1:]):
-            continue
+        elif not between or between[0] not in AT or not all(w in ARTICLES or w in RANKS for w in between[1:]) \
+                and _modified_holder(words, ms, part, clause.end) is not b:
+            continue  # ("the basket on the enquiry desk", "on the heated rail": the head after a modifier)
         cat = catalog.get(str(lex.roles[a.roles[0]]["category"]))
         pointed = _pointed_out(words, a.start, clause)
         # "the work boots", "the garden hose": a noun modifier that is a verb's form too
