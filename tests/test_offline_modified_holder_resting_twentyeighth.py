@@ -1,6 +1,6 @@
 """A definite thing named by its place, the place's name with a modifier that names nothing
 before its head ("the basket on the enquiry desk", "the bath towel on the heated rail"), from the
-twenty-eighth session (dev 46's children's library close and coach-tour departure letter): the
+twenty-eighth session (dev 46's children's library close and dev 45's coach-tour departure letter): the
 place is the head after the modifier, as it is with no modifier ("the basket on the desk"), so
 the thing is taken to rest there (`placement._resting` through `_modified_holder`). Rows written
 here in other registers before the rule and measured then: 1 of 6 (the potting bench); after: 6 of 6. The lamp's row first

@@ -1,6 +1,6 @@
 """A definite thing named by its place, then asked of a state through a perfect or a verb of
 becoming ("if the bath towel on the heated rail has been used", "should the mug on the desk have
-got dirty", "when the cloth in the bucket goes dry"), from the twenty-eighth session (dev 46's
+got dirty", "when the cloth in the bucket goes dry"), from the twenty-eighth session (dev 45's
 coach-tour departure letter): the place names which thing is meant and is taken for granted, as
 it is after "is" ("if the mug on the desk is dirty"); the condition asks the state only
 (`placement._described_subject`, `placement.BECOMING`). Rows written here in other registers
