@@ -722,6 +722,11 @@ _PREDICATES = frozenset({"is", "are", "was", "were", "be", "has", "have", "had",
 
 #: subjects that open a main clause of their own after a condition typed without its comma
 MAIN_SUBJECTS = frozenset({"you", "we", "i", "they", "he", "she"})
+#: the thing a condition spoke of, as the subject of its main clause with the comma left out
+#: (`_main_clause`); never after a state word that is also a preposition ("if the lamp is on it
+#: ...", "if a mug is in it ...": "on it", "in it" are places)
+THING_SUBJECTS = frozenset({"it", "they"})
+PLACE_STATES = frozenset({"on", "off", "in", "out", "up", "down"})
 
 
 def _main_clause(ws: list[str], k: int) -> bool:
@@ -731,6 +736,15 @@ def _main_clause(ws: list[str], k: int) -> bool:
     word must end the condition: "if the cup is off the table the helper ..." has a place after
     "off", and "the table" is followed by no verb; "if it is off the shelf put it back" has an
     imperative, no verb agreeing with "the shelf"."""
+    if ws[k] in THING_SUBJECTS and k + 1 < len(ws) and (
+            ws[k - 1] in STATE_WORDS and ws[k - 1] not in PLACE_STATES or ws[k - 1] in ("there", "here")):
+        # "if it's dirty it goes in the dishwasher", "if it's still there it belongs in the box": the
+        # thing itself, then a verb agreeing with it ("it goes", "they go"; no noun, no copula)
+        verb = ws[k + 1]
+        lemmas = getAllLemmas(verb).get("VERB", ())
+        if ws[k] == "they":  # "they go", "they need": the base form
+            return verb in lemmas and verb not in ("be", "have", "are", "were")
+        return verb.endswith("s") and bool(lemmas) and verb not in lemmas and verb not in ("is", "was", "has")
     if ws[k - 1] not in STATE_WORDS:
         return False
     if ws[k] in MAIN_SUBJECTS:
