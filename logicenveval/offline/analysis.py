@@ -1092,6 +1092,19 @@ class _Reader:
         #: `_members`): what its "they" / "them" means when the topic is a thing outside it
         self.group: tuple[str, ...] = ()
 
+    def _gone_thing(self, m: Mention) -> tuple[str, ...]:
+        """What a pronoun says has gone ("pop it in the fridge and close the door. Gone? She's
+        been."): the thing carried about that the last instruction put somewhere, when the
+        pronoun's own referent is that place, a piece of furniture or an appliance (the fridge,
+        whose door was closed last), which stays where it is. A pronoun that points to such a
+        thing with no such instruction before ("The old fridge was collected; if it's gone, ...")
+        keeps its referent."""
+        goal = self.last_goal
+        if m.kind != "pronoun" or goal is None or set(m.roles) != {goal.key} or any(self._carried(r) for r in m.roles) \
+                or not self._carried(goal.subject):
+            return m.roles
+        return (goal.subject,)
+
     def _carried(self, role: str) -> bool:
         """Whether the role's kind is carried about (`Category.pickable`)."""
         kind = self.kinds.get(role)
@@ -1475,7 +1488,7 @@ class _Reader:
             if k < len(words) and words[k] in ABSENT and not phrasal or words[max(0, m.start - 2) : m.start] == ["out", "of"]:
                 # "the roll by the toilet is missing", "we are out of bread" (not "it has gone out",
                 # "the milk's gone off": a phrasal verb of a flame, a machine or food, `GONE_PARTICLES`)
-                facts += [Fact(r, f"exists({r})", "exists", negated=True) for r in m.roles]
+                facts += [Fact(r, f"exists({r})", "exists", negated=True) for r in self._gone_thing(m)]
                 break
             # "there may or may not be a loaf", "if we still have one", "if one is still to be had"
             before = words[max(0, m.start - 8) : m.start]
