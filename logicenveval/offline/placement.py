@@ -799,11 +799,27 @@ def _prep_before(words: list[str], start: int) -> str | None:
     return None
 
 
+#: the auxiliary of the passive with "get" ("it gets dumped on the bench", "the towel got thrown
+#: on the floor"): where the thing ends up, a habit or a report, never an instruction as a present
+#: passive with "is" may be ("the plate is put away")
+GET_PASSIVE = frozenset({"get", "gets", "got", "gotten"})
+
+
+def _get_passive(words: list[str], j: int, hi: int) -> bool:
+    """Whether the word at `j` is a passive's "get" (`GET_PASSIVE`): a participle of putting or
+    leaving (`RESULT`) follows it, perhaps after an adverb ("gets always left")."""
+    k = j + 1
+    while k < hi and (words[k] in ADVERBS or words[k].endswith("ly")):
+        k += 1
+    return words[j] in GET_PASSIVE and k < hi and words[k] in RESULT
+
+
 def _verb_group(words: list[str], i: int, hi: int) -> tuple[int, list[str]]:
     """The verb group starting at token i (auxiliaries, adverbs, verbs), as (end, its words)."""
     j = i
     while j < hi and (words[j] in BE | PERFECT | STATIVE | RESULT | KEEP_VERBS | ADVERBS | DOUBT | ARRANGED
-                      or words[j] in ("not", "never", "usually", "often") or words[j].endswith("ly")):
+                      or words[j] in ("not", "never", "usually", "often") or words[j].endswith("ly")
+                      or _get_passive(words, j, hi)):
         j += 1
     return j, words[i:j]
 
@@ -821,6 +837,8 @@ def _verb_kind(group: list[str]) -> str | None:
     last = verbs[-1]
     if last in BE or last in STATIVE:
         return "settled"
+    if last in RESULT and set(verbs[:-1]) & GET_PASSIVE:
+        return "settled"  # "it gets dumped on the bench", "the towel got thrown on the floor"
     if last in RESULT:
         perfect = bool(set(verbs) & PERFECT) and "been" in verbs
         # "someone left a mark on the floor", "we had put the box on the stool" (with its subject)
@@ -1395,7 +1413,7 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
     words = sent.words
     i = lo = clause.start
     while i < clause.end:
-        if words[i] not in BE | PERFECT | STATIVE | RESULT | KEEP_VERBS:
+        if words[i] not in BE | PERFECT | STATIVE | RESULT | KEEP_VERBS and not _get_passive(words, i, clause.end):
             i += 1
             continue
         end, group = _verb_group(words, i, clause.end)
@@ -1991,7 +2009,7 @@ def _finite(group: list[str]) -> bool:
     """A verb group with a finite verb ("is lying", "lies", "has been left", "are kept"), not a
     bare participle ("lying", "left", "found") that modifies the noun before it."""
     verbs = [w for w in group if w not in ADVERBS and w not in DOUBT]
-    return bool(set(verbs) & (BE | PERFECT)) or any(
+    return bool(set(verbs) & (BE | PERFECT | GET_PASSIVE)) or any(
         (w in STATIVE or w in KEEP_VERBS) and not w.endswith(("ing", "ed")) and w not in RESULT for w in verbs)
 
 
