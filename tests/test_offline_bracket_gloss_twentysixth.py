@@ -27,8 +27,10 @@ GLOSSES = [
     pytest.param("Leave the keys on the telephone table (the small side table in the hall). If the keys are still "
                  "on the telephone table tonight, put them in the drawer.", ("hallway",), "keys", "side_table",
                  marks=_SAME_HEAD),
-    pytest.param("the kids' school bags get dumped on the craft table (the old dining table in the corner). If a bag "
-                 "is on the craft table, hang it up.", ("kitchen",), "backpack", "dining_table", marks=_SAME_HEAD),
+    # (an xfail until the twenty-eighth session: its placement, "get dumped", was what failed, read
+    # since by the passive with "get", `placement.GET_PASSIVE`)
+    ("the kids' school bags get dumped on the craft table (the old dining table in the corner). If a bag "
+     "is on the craft table, hang it up.", ("kitchen",), "backpack", "dining_table"),
     pytest.param("The phone charges on the hall stand (a narrow little desk by the door). Phone not on the hall "
                  "stand? Ring me.", ("hallway",), "cell_phone", "desk",
                  marks=pytest.mark.xfail(strict=True, reason="no kind names the head 'stand'")),
