@@ -926,6 +926,30 @@ class Span:
     goal: bool = False  # a verbless part going on with a goal ("- the book on the couch")
 
 
+#: prepositions of time that are subordinators too: "after the guests leave" is a clause, "after
+#: lunch the blanket was dumped on the bench" a phrase before the statement's subject
+TIME_PREPOSITIONS = frozenset({"after", "before", "until", "till", "since"})
+#: words that open a clause's subject after such a phrase
+_SUBJECT_OPENERS = frozenset({"it", "they", "he", "she", "we", "i", "you", "the", "a", "an", "my", "your", "his",
+                              "her", "our", "their", "this", "these", "those"})
+
+
+def fronted_time(words: list[str], verbs: frozenset[str]) -> int | None:
+    """Where the subject starts after a time phrase put first with a preposition that is also a
+    subordinator (`TIME_PREPOSITIONS`): "after a job it gets dumped", "after lunch the blanket
+    was dumped", "since Monday the laptop has been ...": a noun phrase with no verb (`verbs`) of
+    its own, then a subject's first word. None for a clause ("after the guests leave", "after
+    you've used it": a verb before any second subject) or no such preposition."""
+    if not words or words[0] not in TIME_PREPOSITIONS:
+        return None
+    for j in range(2, min(len(words), 6)):
+        if words[j] in verbs or words[j] in PUNCT:
+            return None
+        if words[j] in _SUBJECT_OPENERS and words[j - 1] not in ARTICLES:
+            return j
+    return None
+
+
 def clause_spans(words: list[str], lo: int, hi: int, *, verbs: frozenset[str],
                  goal_words: frozenset[str]) -> list[Span]:
     """The clauses of words[lo:hi]: cut at hard punctuation (`;`, a dash, brackets, `?`), before a
@@ -978,7 +1002,7 @@ def clause_spans(words: list[str], lo: int, hi: int, *, verbs: frozenset[str],
         follows_goal = follows_goal or (a > 0 and words[a - 1] == ";" and not set(body) & verbs
                                         and any(o.goal for o in out))
         first = next((w for w in body if w not in LEAD_INS), "")
-        if first in SUBORDINATORS or body[:2] == ["in", "case"] or question:
+        if first in SUBORDINATORS and fronted_time(body, verbs) is None or body[:2] == ["in", "case"] or question:
             mood = "condition"
         elif first in IMPERATIVES or body[0] in REQUESTS and body[1:2] == ["you"] or follows_goal:
             mood = "instruction"

@@ -45,6 +45,7 @@ from logicenveval.offline.clauses import (
     Span,
     clause_spans,
     doubts,
+    fronted_time,
     presence_asked,
 )
 from logicenveval.offline.lexicon import (
@@ -1450,8 +1451,10 @@ def _locative(sent: _Sentence, clause: Span, ms: list[Mention], lex: Lexicon, ca
         # "wipe the puddle with the old towel - it's kept in the vanity": "it" is a thing its own
         # sentence named (`_kept` reads that), not the last statement's subject
         earlier = any(m.end <= clause.start and m.kind == "role" for m in sent.mentions)
-        if not subjects and (_finite(group) or guessed or standing) and said == ["it"] and last is not None \
-                and last.kind == "role" and len(last.roles) == 1 and (guessed or not earlier):
+        # (after a time put first, "After a job it gets dumped on the bench", the same "it")
+        timed = said[-1:] == ["it"] and fronted_time(said, VERBS) == len(said) - 1
+        if not subjects and (_finite(group) or guessed or standing) and (said == ["it"] or timed) \
+                and last is not None and last.kind == "role" and len(last.roles) == 1 and (guessed or not earlier):
             subjects = [last]  # "Broom. ... Not agreed; it stays standing on the floor"
         if ruled:
             if not subjects:
