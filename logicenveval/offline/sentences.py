@@ -924,6 +924,13 @@ _QUESTION_PREDICATE = re.compile(
     rf"((?:^|(?<=[.!?:;]\s)|(?<=\n)|(?<=\s-\s))[ \t]*(?:was|were|is|are|has|have|had)\s+(?:it|they|the|my|your"
     rf"|our|his|her|their|this|that|these|those)\b[^.?!,;:\n]{{0,40}}?\s)({_PREDICATE_WORDS})"
     rf"(?=(?:\s+(?:{_ADVERBIALS}))?\s*\?)", re.I | re.M)
+#: a case put as what a state means, opening a clause ("Check it: still burning means it gets blown
+#: out", "Kettle. Empty means fill it", "Already off means no problem"): "if it is <state>, ..." of
+#: the thing just spoken of (`STATE_WORDS` only: "No kettle on the counter means no tea" and a
+#: definition, "'tidy' means put away", are left as they are)
+_MEANS_CASE = re.compile(
+    rf"((?:^|(?<=[.!?:;,]\s)|(?<=\n)|(?<=\s[-\u2013\u2014]\s))[ \t]*)((?:(?:still|already)\s+)?"
+    rf"(?:{'|'.join(sorted(w for w in STATE_WORDS if ' ' not in w))}))\s+means\s+", re.I | re.M)
 #: a condition with its subject and verb elided before such a predicate ("the mug: if washed, put it
 #: away", "the remote - if missing, tell me", "if taken, let me know"), read "if it is ...";
 #: not after "once" ("wash the mug and once washed, ..." is a step after the washing, not a question)
@@ -2034,6 +2041,8 @@ def unquote(text: str) -> str:
     plain = _SELF_CORRECTION.sub("", _ITEM_LABEL.sub("", _ITEM_END.sub(".\n", _QUOTE_MARK.sub("", _QUOTED_PREMISE.sub(
         r"\g<q>?\g<gap>", _FORUM_QUOTE.sub(_forum_quote, _ATTRIBUTION.sub("", plain)))))))
     plain = _unabbreviated(plain)
+    plain = _MEANS_CASE.sub(lambda m: f"{m.group(1)}{_match_case(m.group(2), 'if')} it is {m.group(2).lower()}, ",
+                            plain)
     plain = _ELIDED_PREDICATE.sub(r"\1 it is ", _RESTING_THERE.sub(r"\1 ", plain))
     plain = _PREDICATE_STATE.sub(lambda m: m.group(1) + _predicate(m.group(2)), _SOUNDING.sub(_sounding, plain))
     plain = _QUESTION_PREDICATE.sub(lambda m: m.group(1) + _predicate(m.group(2)), plain)
