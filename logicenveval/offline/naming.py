@@ -404,6 +404,14 @@ def _control_kinds(catalog: Catalog) -> dict[str, tuple[str, ...]]:
     return out
 
 
+def _plural_kind_name(category: str, word: str) -> bool:
+    """Whether the kind's own name is the plural of `word` ("glasses" of "glass", "scissors"): a
+    plurale tantum, never meant by the singular (a kind only a synonym names in the plural, the
+    document's "papers", is still "paper")."""
+    head = category.split("_")[-1]
+    return head != word and singular(head) == word
+
+
 @per_catalog
 def _phrase_tables(catalog: Catalog) -> tuple[dict[tuple[str, ...], str], dict[str, list[str]], int]:
     """Each category name and synonym as words -> its category; head noun -> the categories it
@@ -964,7 +972,11 @@ class _Reader:
         if part is not None:  # "the lower shelf of the metal rack": a rack with shelves, for no use unsaid
             having = [c for c in options if self.has_part(c, part)]
             options = [c for c in having if not self.marked(c, word)] or having or options
-        named = [c for c in reversed(self.recent) if c in options and word in self.used.get(c, ())]
+        # (never a plurale tantum named before for a singular: "my glasses ... the glass on the
+        # desk" is a drinking glass, as it is with no spectacles named first)
+        singular_said = self.text.raw[i] == word
+        named = [c for c in reversed(self.recent) if c in options and word in self.used.get(c, ())
+                 and not (singular_said and _plural_kind_name(c, word))]
         if named and not self.placed_apart(i, named[0]):
             return named[0]
         fed = self.animal_kind(i, options)
