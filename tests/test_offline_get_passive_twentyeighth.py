@@ -1,12 +1,16 @@
 """A placement in the passive with "get" ("After a job it gets dumped on the bench", "The towel got
 thrown on the floor again"), from the twenty-eighth session (dev 47's mountain rescue kit room
 card): "get" and a participle of putting say where the thing ends up, as "was thrown" does; a
-present one is a habit that leaves it there, never an instruction (`placement.GET_PASSIVE`,
-`_verb_kind`). Rows written here in other registers before the rule and measured then: 0 of 6;
+present one with a verb of careless leaving ("gets dumped", "gets left") is a habit that leaves it
+there (`placement.GET_PASSIVE`, `CARELESS`, `_verb_kind`); a present one with a verb of proper
+putting ("plates get put in the dishwasher") may be a rule of where things go, as "is put" may,
+and places nothing. Rows written here in other registers before the rule and measured then: 0 of 6;
 after: 3 of 6 (xfail: "it" after a time put first and "they" after a label, which fail with "was"
 too; a frequency adverb before "gets", read as a habit a later condition asks, where "is usually
 left" places it); 4 of 6 since the next rule of the session, a time put first
-(`clauses.fronted_time`). Near misses: a wish that it get put somewhere ("make sure it gets put on the
+(`clauses.fronted_time`); 3 of 6 after the rule was narrowed at the session's end to careless
+verbs in the present (the remote "gets put on the sofa": xfail), when the held-out paraphrases'
+floor fell with the wider rule (0.9491 -> 0.9268; the text not looked at). Near misses: a wish that it get put somewhere ("make sure it gets put on the
 rail") and a condition ("if the mug gets left on the desk") place nothing."""
 
 from __future__ import annotations
@@ -22,8 +26,9 @@ GOT = [
     pytest.param("my phone usually gets left on the armchair lol", ("lounge",), "on(cell_phone, armchair)",
                  marks=pytest.mark.xfail(reason="a frequency adverb before \"gets\" makes a habit, asked (`sentences.habitual`)",
                                          strict=True)),
-    ("Every evening the remote gets put on the sofa by whoever was watching.", ("den",),
-     "on(remote_control, sofa)"),
+    pytest.param("Every evening the remote gets put on the sofa by whoever was watching.", ("den",),
+                 "on(remote_control, sofa)", marks=pytest.mark.xfail(
+                     reason="a present \"get\" with a verb of proper putting may be a rule (narrowed)", strict=True)),
     ("The backpack had gotten dropped on the floor by the front door.", ("hallway",), "on(backpack, floor)"),
     pytest.param("Spare keys: they got placed in the bowl on the side table.", ("entrance_hall",),
                  "inside(keys, bowl)", marks=pytest.mark.xfail(

@@ -801,9 +801,13 @@ def _prep_before(words: list[str], start: int) -> str | None:
 
 
 #: the auxiliary of the passive with "get" ("it gets dumped on the bench", "the towel got thrown
-#: on the floor"): where the thing ends up, a habit or a report, never an instruction as a present
-#: passive with "is" may be ("the plate is put away")
+#: on the floor"): where the thing ends up, a report in the past; in the present only with a verb
+#: of leaving a thing carelessly (`CARELESS`), a habit: "dirty plates get put in the dishwasher" is
+#: a rule of where they go, as a present passive with "is" may be ("the plate is put away")
 GET_PASSIVE = frozenset({"get", "gets", "got", "gotten"})
+PAST_GET = frozenset({"got", "gotten"})
+CARELESS = frozenset({"left", "dumped", "dropped", "thrown", "abandoned", "forgotten", "knocked", "flung",
+                      "chucked", "tossed", "slung", "stuck"})
 
 
 def _get_passive(words: list[str], j: int, hi: int) -> bool:
@@ -839,7 +843,9 @@ def _verb_kind(group: list[str]) -> str | None:
     if last in BE or last in STATIVE:
         return "settled"
     if last in RESULT and set(verbs[:-1]) & GET_PASSIVE:
-        return "settled"  # "it gets dumped on the bench", "the towel got thrown on the floor"
+        # "it gets dumped on the bench", "the towel got thrown on the floor" (not "plates get put
+        # in the dishwasher": a rule)
+        return "settled" if set(verbs[:-1]) & PAST_GET or last in CARELESS else None
     if last in RESULT:
         perfect = bool(set(verbs) & PERFECT) and "been" in verbs
         # "someone left a mark on the floor", "we had put the box on the stool" (with its subject)
