@@ -929,9 +929,10 @@ class Span:
 #: prepositions of time that are subordinators too: "after the guests leave" is a clause, "after
 #: lunch the blanket was dumped on the bench" a phrase before the statement's subject
 TIME_PREPOSITIONS = frozenset({"after", "before", "until", "till", "since"})
-#: words that open a clause's subject after such a phrase
-_SUBJECT_OPENERS = frozenset({"it", "they", "he", "she", "we", "i", "you", "the", "a", "an", "my", "your", "his",
-                              "her", "our", "their", "this", "these", "those"})
+#: words that open a clause's subject after such a phrase: a personal pronoun, "it", or a
+#: determiner of a noun phrase
+_SUBJECT_OPENERS = PERSONAL_SUBJECTS | frozenset({"it", "the", "a", "an", "my", "your", "his", "her", "our", "their",
+                                                  "this", "these", "those"})
 
 
 def fronted_time(words: list[str], verbs: frozenset[str]) -> int | None:

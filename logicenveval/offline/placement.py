@@ -2730,8 +2730,8 @@ def _pointed_out(words: list[str], start: int, clause: Span) -> bool:
 #: gets wet", "has got dirty", "when the cloth in the bucket goes dry", "has become soiled")
 #: (the analysis reads the state after one too: "if the cloth gets wet", "once the bowl goes empty")
 GOING = frozenset({"go", "goes", "going", "gone", "went"})
-BECOMING = GOING | frozenset({"get", "gets", "got", "gotten", "getting", "become", "becomes", "became", "turn",
-                              "turns", "turned", "grow", "grows", "grown", "grew"})
+BECOMING = GOING | GET_PASSIVE | frozenset({"getting", "become", "becomes", "became", "turn", "turns", "turned",
+                                            "grow", "grows", "grown", "grew"})
 
 
 def _described_subject(words: list[str], start: int, end: int, clause: Span) -> bool:
