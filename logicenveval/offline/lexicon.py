@@ -192,6 +192,11 @@ PART_TIES = frozenset({"of", "above", "over"})
 #: time", "laundry day"): a noun modifying its head, which names no object
 TIME_HEADS = frozenset({"day", "night", "week", "morning", "evening", "time", "weekend"})
 
+#: the ordinal words, said of an order or a time ("first thing", "the second shelf", "next time",
+#: "last night") far more often than as a modifier of a thing's name: alone they hint no kind
+#: whose name holds them (`offline.naming`: "first" elsewhere is no first aid box)
+ORDER_WORDS = frozenset({"first", "second", "third", "next", "last"})
+
 
 def words_of(name: str) -> tuple[str, ...]:
     return tuple(singular(w) for w in WORD.findall(name.lower().replace("_", " ")))

@@ -35,6 +35,7 @@ from logicenveval.offline.lexicon import (
     CONTROL_HEADS,
     FUNCTION_WORDS,
     FURNITURE_PARTS,
+    ORDER_WORDS,
     PART_TIES,
     RELATIVE,
     SPARE_WORDS,
@@ -1029,8 +1030,9 @@ class _Reader:
             cat = self.catalog.categories[category]
             # the other words of its names that say what it is: not a preposition of a name made
             # as a phrase ("bag of trash", "drying rack for dishes"), which says nothing of the kind
-            # ("the mouth of the bag" is no bag of trash)
-            others = {w for text in (category, *_own(cat)) for w in words_of(text)} - {word} - _NAME_LINKS
+            # ("the mouth of the bag" is no bag of trash), nor a word of order ("the first box" on
+            # the trolley is no first aid box)
+            others = {w for text in (category, *_own(cat)) for w in words_of(text)} - {word} - _NAME_LINKS - ORDER_WORDS
             rooms = set(cat.rooms)
             # its own name: written as the text writes it ("glasses"), or the word's lemma ("chairs")
             # when the name is a lemma (not "glasses" for "glass", a drinking glass)
@@ -1264,11 +1266,13 @@ class _Reader:
         """The words a short name `word` may have dropped from a name of `category` it heads
         ("bedside", "night" of "bedside table", "night table" for "table"), else, for a kind the
         word does not head, the other words of its names; no noun of time (`TIME_HEADS`): the text
-        says "night" of a time ("at night", "troop night") far more often than of a thing."""
+        says "night" of a time ("at night", "troop night") far more often than of a thing; no word
+        of order (`ORDER_WORDS`): "first" said alone is an order or a time ("first thing", "do that
+        first"), and in a name it says what aid a first aid box holds, not what box it is."""
         names = [words_of(text) for text in (category, *_own(self.catalog.categories[category]))]
         headed = {w for n in names if len(n) > 1 and n[-1] == word for w in n[:-1]}
         others = {w for n in names for w in n} - {word}
-        return (headed or others) - _NAME_LINKS - TIME_HEADS
+        return (headed or others) - _NAME_LINKS - TIME_HEADS - ORDER_WORDS
 
     def written_in(self, i: int) -> bool:
         """Whether the thing the noun at word `i` names is written in: a verb of writing
