@@ -1,8 +1,8 @@
-"""The reader's fifth to fifty-first development sets (tests/data/reader_dev5/, reader_dev6/,
+"""The reader's fifth to fifty-second development sets (tests/data/reader_dev5/, reader_dev6/,
 reader_dev7/, reader_dev8/, reader_dev9/, reader_dev10/, reader_dev11/, reader_dev12/, reader_dev13/,
 reader_dev14/, reader_dev15/, reader_dev16/, reader_dev17/, reader_dev18/, reader_dev19/, reader_dev20/,
 reader_dev21/, reader_dev22/, reader_dev23/, reader_dev24/, reader_dev25/, reader_dev26/,
-reader_dev27/, reader_dev28/, reader_dev29/, reader_dev30/, reader_dev31/, reader_dev32/, reader_dev33/, reader_dev34/, reader_dev35/, reader_dev36/, reader_dev37/, reader_dev38/, reader_dev39/, reader_dev40/, reader_dev41/, reader_dev42/, reader_dev43/, reader_dev44/, reader_dev45/, reader_dev46/, reader_dev47/, reader_dev48/, reader_dev49/, reader_dev50/, reader_dev51/): new tasks and rewordings written from the task format, the
+reader_dev27/, reader_dev28/, reader_dev29/, reader_dev30/, reader_dev31/, reader_dev32/, reader_dev33/, reader_dev34/, reader_dev35/, reader_dev36/, reader_dev37/, reader_dev38/, reader_dev39/, reader_dev40/, reader_dev41/, reader_dev42/, reader_dev43/, reader_dev44/, reader_dev45/, reader_dev46/, reader_dev47/, reader_dev48/, reader_dev49/, reader_dev50/, reader_dev51/, reader_dev52/): new tasks and rewordings written from the task format, the
 catalog and the built-in tasks, without reading the offline reader or running it on them, for rounds of reader
 rules to be tuned on. One table of what differs between them; the same checks for each.
 
@@ -247,6 +247,15 @@ jockeys' room, a dry ski slope head of snowsports' WhatsApp hut list, an Iceland
 foaling unit night-watch note, a football ground safety officer's post-match sweep briefing, a
 parkrun run director's pre-run briefing, a racing yard's evening stables round card) and the English
 of an Icelandic speaker (the stud owner's note), in room ids beginning with a letter a-m.
+dev 52 was written after dev 50 (beside dev 51, which it never opened; dev 43 known only through
+this docstring): registers of laboratory and collections work (a herbarium curator's note for the
+mounting volunteer, a public aquarium's back-of-house aquarist handover, a seed bank technician's
+note to the student helper, a university teaching lab's end-of-practical checklist for
+demonstrators, a natural history museum spirit collection manager's e-mail, a geology rock
+preparation room technician's notes, a museum's integrated pest management inspection record, a
+university animal facility's daily husbandry check sheet, a museum registrar's object location
+audit) and the English of a Lithuanian speaker (the seed bank technician's note), in room ids
+beginning with a letter n-z.
 """
 
 from __future__ import annotations
@@ -348,6 +357,7 @@ SETS = (
     DevSet("reader_dev49", "_d49", 3, 6, ("cider_barn_basque_cider_maker_note", "hallway_entry_tidy_d49")),
     DevSet("reader_dev50", "_d50", 3, 6, ("rasoi_gurdwara_langar_sewa_note", "bathroom_towel_refresh_d50")),
     DevSet("reader_dev51", "_d51", 3, 6, ("foaling_unit_icelandic_stud_night_watch_note", "study_desk_cleanup_d51")),
+    DevSet("reader_dev52", "_d52", 3, 6, ("seed_room_seed_bank_lithuanian_technician_note", "multi_room_pet_care_d52")),
 )
 IDS = [s.name for s in SETS]
 ENTRIES = {s.name: rewordings(DATA / s.name) for s in SETS}
