@@ -415,7 +415,7 @@ prints LogCov / SceVR / FauDR for each, then per task:
   and six new tasks in rooms none of the sets above use (a microbrewery head brewer's handover, a
   Basque cider maker's note, a coffee roastery's close list, a smokehouse day book, a gin
   distillery's Friday close e-mail, a farmhouse cheesemaker's make sheet). Fresh (`FRESH`) until
-  measured ten times, then a development set;
+  measured ten times (the twenty-ninth session), then a development set;
 - `dev50 reworded` and `dev50 new`: tests/data/reader_dev50/ — the fiftieth development set,
   written in the twenty-eighth session beside dev 49 in registers of religious, funeral and
   community caretaking work and the English of a Punjabi speaker: one rewording each of 3 built-in
@@ -423,7 +423,26 @@ prints LogCov / SceVR / FauDR for each, then per task:
   changeover sheet, an almshouse warden's weekly check sheet) and six new tasks in rooms none of the
   sets above use (a church verger's relief notes, a mosque caretaker's note, a synagogue caretaker's
   Friday note, a crematorium chapel attendants' card, a Quaker meeting house warden's notes, a
-  gurdwara langar kitchen note). Fresh (`FRESH`) until measured ten times, then a development set;
+  gurdwara langar kitchen note). Fresh (`FRESH`) until measured ten times (the twenty-ninth
+  session), then a development set;
+- `dev51 reworded` and `dev51 new`: tests/data/reader_dev51/ — the fifty-first development set,
+  written in the twenty-ninth session (beside dev 52, by helpers who never read or ran the reader)
+  in registers of sports ground, stable and leisure facility work and the English of an Icelandic
+  speaker: one rewording each of 3 built-in descriptions (a football ground safety officer's
+  post-match sweep briefing, a parkrun run director's pre-run briefing, a racing yard's evening
+  stables round card) and six new tasks in rooms none of the sets above use (an ice rink's skate
+  hire close-down notes, a bowls club's pavilion lock-up card, a pool plant operator's log, a
+  racecourse head valet's notes, a dry ski slope's instructors' hut list, an Icelandic horse stud's
+  foaling night-watch note). Fresh (`FRESH`) until measured ten times, then a development set;
+- `dev52 reworded` and `dev52 new`: tests/data/reader_dev52/ — the fifty-second development set,
+  written in the twenty-ninth session beside dev 51 in registers of laboratory and collections work
+  and the English of a Lithuanian speaker: one rewording each of 3 built-in descriptions (a
+  museum's pest management inspection record, a university animal facility's husbandry check
+  sheet, a museum registrar's object location audit) and six new tasks in rooms none of the sets
+  above use (a herbarium curator's note, an aquarium aquarist's handover, a seed bank technician's
+  note, a teaching lab's end-of-practical checklist, a spirit collection manager's e-mail, a rock
+  preparation room technician's notes). Fresh (`FRESH`) until measured ten times, then a
+  development set;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -456,7 +475,7 @@ was written for (a rule too wide shows as a task of another set falling):
     python benchmarks/reader_generalisation.py --dev-only --compare before.json # with the rule
 
 `--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: the
-sets written in a session, until measured: now dev 49 and dev 50; dev 25 and
+sets written in a session, until measured: now dev 51 and dev 52; dev 25 and
 dev 26 left it in the fifteenth session after their third measurement, dev 27 and dev 28 after their
 fifth, dev 29 and dev 30 in the sixteenth after their sixth, dev 31 and dev 32 in the
 seventeenth after their seventh, dev 33 and dev 34 in the eighteenth after their eighth, dev 35 and dev 36 in the
@@ -464,7 +483,7 @@ nineteenth after their tenth, dev 37 and dev 38 in the twentieth after their ten
 twenty-third after its tenth, dev 39 after its tenth in the same session, dev 41 and dev 42 in the
 twenty-fifth after their tenth, dev 43 and dev 44 in the twenty-sixth after their tenth, dev 45 and
 dev 46 in the twenty-seventh after their tenth, dev 47 and dev 48 in the twenty-eighth after
-their tenth), so a tuner's runs
+their tenth, dev 49 and dev 50 in the twenty-ninth after their tenth), so a tuner's runs
 never show them; `--dev-only --fresh` keeps them, to measure them. `--skip 'dev9 reworded,dev9 new'` leaves any other rows' sets out as well.
 `--only 'held-out reworded,held-out2 reworded'` measures those rows alone: to find which commit of a
 merged branch moved an unseen row, run it at each commit (every tree has those rows, where a skip
@@ -596,6 +615,8 @@ DEV47 = ROOT / "tests" / "data" / "reader_dev47"
 DEV48 = ROOT / "tests" / "data" / "reader_dev48"
 DEV49 = ROOT / "tests" / "data" / "reader_dev49"
 DEV50 = ROOT / "tests" / "data" / "reader_dev50"
+DEV51 = ROOT / "tests" / "data" / "reader_dev51"
+DEV52 = ROOT / "tests" / "data" / "reader_dev52"
 HOLDOUT2 = ROOT / "tests" / "data" / "reader_holdout2"
 #: (row name, tasks folder; None = the built-in tasks)
 SETS: tuple[tuple[str, Path | None], ...] = (
@@ -649,6 +670,8 @@ SETS: tuple[tuple[str, Path | None], ...] = (
     ("dev48 reworded", DEV48 / "tasks_reworded"), ("dev48 new", DEV48 / "tasks_new"),
     ("dev49 reworded", DEV49 / "tasks_reworded"), ("dev49 new", DEV49 / "tasks_new"),
     ("dev50 reworded", DEV50 / "tasks_reworded"), ("dev50 new", DEV50 / "tasks_new"),
+    ("dev51 reworded", DEV51 / "tasks_reworded"), ("dev51 new", DEV51 / "tasks_new"),
+    ("dev52 reworded", DEV52 / "tasks_reworded"), ("dev52 new", DEV52 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
     ("held-out2 reworded", HOLDOUT2 / "tasks_reworded"), ("held-out2 new", HOLDOUT2 / "tasks_new"),
 )
@@ -657,7 +680,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH: frozenset[str] = frozenset({"dev49 reworded", "dev49 new", "dev50 reworded", "dev50 new"})
+FRESH: frozenset[str] = frozenset({"dev51 reworded", "dev51 new", "dev52 reworded", "dev52 new"})
 GENERATOR = "logicenvgen"
 
 
