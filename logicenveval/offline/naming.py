@@ -40,6 +40,7 @@ from logicenveval.offline.lexicon import (
     RELATIVE,
     SPARE_WORDS,
     TIME_HEADS,
+    WORD,
     adjective_only,
     complement_adjective,
     compound_head,
@@ -314,6 +315,9 @@ _SENTENCE_END = re.compile(r"[.!?]|\n")
 #: a person's name as a possessive before a noun ("Marco's glass", "Priya's cup"): capitalised,
 #: since "the dog's bowl" or "the lamp's switch" own nothing
 _POSSESSOR = re.compile(r"\b([A-Z][a-z]+)'s\s+[a-z]")
+#: a word and its possessive ending before the next word ("Dad's", "the dogs'"): a possessive
+#: where `expand` drops the ending, a contraction where it reads "is" or "has" (`_possessives`)
+_POSSESSIVE = re.compile(r"\b([A-Za-z]+?)(?:'s|s')\s+[A-Za-z]+")
 #: a number as written, and what may end the reading a label and a number make ("bar 1016,")
 _NUMBER = re.compile(r"\d+")
 _READING_END = re.compile(r"\s*(?:[,;.]|\n|$)")
@@ -522,6 +526,10 @@ class _Reader:
         #: people named as owners ("Marco's glass": `expand` drops the "'s", so they are read
         #: off the text as written) and, per kind, the owners of its mentions in order
         self.possessors = {m.group(1).lower() for m in _POSSESSOR.finditer(description.replace("\u2019", "'"))}
+        #: every word written as a possessive before another ("Today's brew sheet", "the chef's
+        #: prep sheet"; not "the kettle's still on", which `expand` reads as "is"): it stands where
+        #: an article does (`modified`)
+        self.possessives = _possessives(description)
         self.owners: dict[str, list[str]] = {}
         #: kinds named at least once as a particular thing (after a determiner or a count, or in
         #: the singular), not only by a bare plural (`class_of_named`)
@@ -1296,8 +1304,9 @@ class _Reader:
         return False
 
     def modified(self, i: int) -> bool:
-        """Whether word `i` follows a determiner and one modifier that names no kind and is no
-        verb ("on the props table", "the wooden box"), or such a modifier opening its sentence or
+        """Whether word `i` follows a determiner (or a possessive: "Today's brew sheet") and one
+        modifier that names no kind and is no verb ("on the props table", "the wooden box"), or
+        such a modifier opening its sentence or
         list item ("* fly spray lives on that shelf"): a noun phrase, as after the determiner
         alone (a head noun of several kinds is then one of them, `bare_noun`)."""
         words, gaps = self.text.words, self.text.gaps
@@ -1311,7 +1320,9 @@ class _Reader:
         # standing small lamp": an adjective alone then stands for it)
         dropped = i >= 2 and (words[i - 2] in _PREPOSITIONS - {"of"} or self.text.raw[i - 2] in _BEING) \
             and not gaps[i - 1].strip() and "ADJ" in getAllLemmas(self.text.raw[i - 1])
-        if not (i >= 2 and words[i - 2] in _ARTICLES and not gaps[i - 1].strip() or opens or dropped):
+        # (a possessive stands where an article does: "Today's brew sheet", "the chef's prep sheet")
+        article = i >= 2 and (words[i - 2] in _ARTICLES or words[i - 2] in self.possessives)
+        if not (article and not gaps[i - 1].strip() or opens or dropped):
             return False
         return self.match(i - 1)[1] is None and not self.verb(i - 1) and words[i - 1].isalpha() \
             and words[i - 1] not in _PREPOSITIONS and words[i - 1] not in _DETERMINERS
@@ -2766,6 +2777,14 @@ def _lemma_named(name: str) -> bool:
     """Whether a name is written as its words' lemmas ("glass", "chair"; not "glasses", the
     spectacles, whose lemma is another kind's name): only such a name is a word's own kind."""
     return words_of(name) == tuple(re.findall(r"[a-z0-9]+", name.lower().replace("_", " ")))
+
+
+def _possessives(description: str) -> frozenset[str]:
+    """The words (singular, lower case) the description writes as possessives: those whose "'s"
+    `expand` drops (not "the kettle's still on": "is")."""
+    text = description.replace("\u2019", "'")
+    return frozenset(singular(m.group(1).lower()) for m in _POSSESSIVE.finditer(text)
+                     if len(WORD.findall(expand(m.group(0)).lower())) == 2)
 
 
 def _snake(name: str) -> str:
