@@ -582,7 +582,8 @@ def _state_case(m: re.Match[str]) -> str:
 #: an indirect question about an action whose result is a state ("I can't remember whether I shut
 #: the fridge door", "not sure if we switched the heater off"): the question is the state of the
 #: thing acted on ("whether the fridge door is shut"), as a direct question would put it
-_DOER = r"(?:i|we|you|they|he|she|someone|somebody|anyone|anybody)"
+_DOERS = ("i", "we", "you", "they", "he", "she", "someone", "somebody", "anyone", "anybody")
+_DOER = f"(?:{'|'.join(_DOERS)})"
 _THING = r"(?P<thing>(?:the|my|our|your)\s+[a-z]+(?:\s+[a-z]+){0,2}?)"
 #: where the acted-on thing's phrase ends: a mark, or a conjunction or time word after it
 _ACTED_END = r"(?=\s*(?:[,.;:!?)]|$|\s(?:or|and|so|but|when|before|after)\b))"
@@ -591,6 +592,21 @@ _ACTED_STATE = re.compile(
     rf"(?P<verb>{'|'.join(w for w, (flag, _) in STATE_WORDS.items() if flag == 'open' and w != 'ajar')})\s+{_THING}"
     rf"|(?:turned|switched)\s+(?P<pre>on|off)\s+{_THING.replace('thing', 'thing2')}"
     rf"|(?:turned|switched)\s+{_THING.replace('thing', 'thing3')}\s+(?P<post>on|off)){_ACTED_END}", re.I | re.M)
+
+
+#: a condition whose verb phrase is elided after a doer, at its clause's end ("switch it off
+#: unless someone already has", "put it in the dishwasher if no one has yet", "unless somebody's
+#: done it already", "if somebody hasn't already"): whether the instruction's result holds
+#: already, as "unless it already is" asks of the thing the instruction acts on; a doer with an
+#: object of its own ("unless someone has a key") is no such clause, nor one whose doer is the
+#: one told ("if you haven't already" asks nothing of the scene: the agent has done nothing yet)
+_OTHER_DOER = f"(?:{'|'.join(d for d in _DOERS if d != 'you')})"
+_DONE_ALREADY = re.compile(
+    rf"\b(?:unless\s+{_OTHER_DOER}(?:\s+else)?(?:\s+already)?(?:\s+(?:has|have|had|did)|'s|’s|'ve|’ve)"
+    rf"|if\s+(?:no\s+one|no-one|nobody)(?:\s+else)?(?:\s+already)?(?:\s+(?:has|have|had|did)|'s|’s)"
+    rf"|if\s+{_OTHER_DOER}(?:\s+else)?\s+(?:has|have|had|did)(?:\s+not|n't|n’t))"
+    r"(?:\s+(?:already|yet))?(?:\s+done\s+(?:it|so|that|this))?(?:\s+(?:already|yet))?"
+    r"(?=\s*(?:[,.;:!?)]|$)|\s+[-\u2013\u2014]\s)", re.I | re.M)
 
 
 #: what makes an "if" clause an indirect question ("not sure if", "can't remember if", "check if"),
@@ -2054,7 +2070,7 @@ def unquote(text: str) -> str:
     plain = _DROPPED_SUBJECT.sub(lambda m: f"{m.group(1)} {_DROPPED_PRONOUN[m.group(2).lower()]} ", plain)
     plain = _SHARED_SUBJECT.sub(_shared_pronoun, plain)
     plain = _DROPPED_DOUBT.sub(lambda m: f"{m.group(1)}{_match_case(m.group(2), 'it')} {m.group(2).lower()}", plain)
-    plain = _ACTED_STATE.sub(_acted_state, plain)
+    plain = _ACTED_STATE.sub(_acted_state, _DONE_ALREADY.sub(lambda m: _match_case(m.group(0), "unless it already is"), plain))
     plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)
     plain = _KIND_OF.sub(r"\1 ", _STATE_CASE.sub(_state_case, plain))
     plain = _STATE_AND_CLAUSE.sub(lambda m: f"{m.group(1)}if it is {m.group(2).lower()} {m.group(3).lower()} {m.group(4)}, ",
