@@ -2454,6 +2454,29 @@ def _state_of(f: Fact, role: str) -> Fact:
     return replace(f, subject=role, condition=f"state({role}, {f.key})")
 
 
+def _second_case(reader: _Reader, clauses: list[Clause], text: str, facts: list[Fact]) -> list[Fact]:
+    """A case that names nothing ("Clean:", "Clean?") after another case of the same state
+    ("Dirty: open the dishwasher, put it in, shut the door. Clean: up on the shelf") speaks of
+    what that case asked of, not of a thing only its instructions named (the dishwasher): cases
+    of one state set side by side are the cases of one thing. Only instructions may stand
+    between them; a thing named in a heading or a statement between ("The sink: dirty?") is
+    spoken of anew."""
+    if not facts or any(f.kind != "state" for f in facts) or len({(f.subject, f.key) for f in facts}) != 1:
+        return facts
+    toks = tokens(expand(text))
+    if any(m.kind == "role" for m in reader.lex.find_mentions(toks)) or {w for w, _, _ in toks} & PRONOUNS:
+        return facts
+    for clause in reversed(clauses):
+        if clause.role == "condition":
+            asked = {f.subject for f in clause.facts if f.kind == "state" and f.key == facts[0].key}
+            subject = next(iter(asked)) if len(asked) == 1 else facts[0].subject
+            return [_state_of(f, subject) for f in facts]
+        if clause.role not in ("consequence", "else") and not (
+                clause.role == "statement" and imperative([w for w, _, _ in tokens(expand(clause.text))])):
+            return facts
+    return facts
+
+
 def _anaphoric(text: str, facts: list[Fact]) -> bool:
     """A condition with no fact of its own whose words only point back ("if it is not" too; "should
     you find it there": an agent coming upon the thing, `DISCOVERY`)."""
@@ -3669,6 +3692,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                     # "Kettle on the counter = ...", "Kettle not on the counter: skip it": a
                     # heading that asks where its thing is, its verb left out, as "is it ...?" does
                     reader.doubted |= _asked_again(text, facts, lex)
+                if role == "condition":
+                    facts = _second_case(reader, clauses, text, facts)
+                    names = tuple(dict.fromkeys(f.subject for f in facts)) or names
                 clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
                 continue
             if role in ("statement", "scene") and headed == grammatical:
@@ -3846,6 +3872,9 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 colon_closed.add(len(clauses))
                 if re.search(re.escape(text.strip().rstrip(":")) + r"\s*:[ \t]*\n", described):
                     colon_ends_line.add(len(clauses))
+            if role == "condition":
+                facts = _second_case(reader, clauses, text, facts)
+                names = tuple(dict.fromkeys(f.subject for f in facts)) or names
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
         if bullets[si] is not None and si + 1 < len(sentences) and bullets[si + 1] == bullets[si]:
             continue  # "* Bedroom: table lamp on? -> off. Wardrobe doors open? -> close.": one item
