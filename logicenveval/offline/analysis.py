@@ -55,6 +55,7 @@ from logicenveval.offline.clauses import (
 from logicenveval.offline.implied import any_at, implied
 from logicenveval.offline.lexicon import (
     COLOR_WORDS,
+    FUNCTION_WORDS,
     PART_TIES,
     VERB_OBJECTS,
     WORD,
@@ -542,6 +543,24 @@ def _contents(said: str) -> str:
     said = _CONTENTS.sub(lambda m: f"{m.group('np')} {'are' if m.group('np') == 'them' else 'is'} {state(m)}", said)
     said = _LEFT.sub(lambda m: f"the {m.group('liquid')} is {state(m)}", said)
     return _HAS_IN.sub(lambda m: f"{'are' if m.group('has') == 'have' else 'is'} {state(m)}", said)
+
+
+#: soil said to be on a thing (`_Reader._soiled`): a stain's name in any number ("a mark", "marks":
+#: the catalog's floor stain is a "stain", a "dirty mark", a "spot") or a bare noun that names no
+#: kind of the task ("whey", "grease", "sauce"); water on a thing wets it
+STAIN_WORDS = frozenset({"stain", "mark", "spot"})
+_SOIL = r"(?P<det>(?:any|some|no|a|an|a bit of|bits of) )?(?P<soil>[a-z]+)"
+_SOILED_GROUND = rf"(?P<np>it|they|them|{_DEFINITE_NP})"
+#: "has it got marks on it?", "have they got mud on them?"
+_SOIL_ASKED = re.compile(rf"\b(?P<has>has|have)(?P<not> not)? {_SOILED_GROUND} (?:got )?{_SOIL} on (?:it|them)\b")
+#: "it has got grease on it", "the coat has whey on it", "they have mud on them"
+_SOIL_HAD = re.compile(rf"\b{_SOILED_GROUND} (?P<has>has|have)(?P<not> not)? (?:got )?{_SOIL} on (?:it|them)\b")
+#: "there is a mark on it", "there are stains on the plate"
+_SOIL_THERE = re.compile(rf"\bthere (?:is|are)(?P<not> not)? {_SOIL} on {_SOILED_GROUND}")
+#: a question with its verb left out, opening its clause: "any mud on it?", "coffee on it?"
+_SOIL_BARE = re.compile(rf"^(?P<lead>\W*){_SOIL} on (?P<np>it|them)(?= *\?)")
+#: the floor and what covers it: a stain there is a floor stain, a thing of its own
+_FLOORING = frozenset({"floor", "ground", "carpet", "rug"})
 
 
 def _plural_only(word: str) -> bool:
@@ -1418,7 +1437,7 @@ class _Reader:
                 predicated.add(STATE_WORDS[state][0])
         said = self.machine_again(said)
         said = RAISING.sub("is", said)
-        said = _OVER.sub("on", _bracket_read_past(_aside_read_past(_contents(said), self._ends_named),
+        said = _OVER.sub("on", _bracket_read_past(_aside_read_past(self._soiled(_contents(said)), self._ends_named),
                                                   self._ends_named))
         toks = tokens(said)
         words = [t[0] for t in toks]
@@ -1783,6 +1802,56 @@ class _Reader:
         fitting = self._can_take(f, (r for m in mentions if m.kind == "role" for r in m.roles)) \
             if self._misfit(f) else []
         return _state_of(f, fitting[0]) if len(fitting) == 1 else f
+
+    def _soiled(self, said: str) -> str:
+        """Soil said to be on a thing, read as the thing's state ("has it got marks on it?" -> "is
+        it dirty", "the coat has whey on it" -> "the coat is dirty", "there is a mark on the plate"
+        -> "the plate is dirty", "any mud on them?" -> "are they dirty"; water: wet), so no stain
+        of its own is asked of (`STAIN_WORDS`, `_SOIL_ASKED`, `_SOIL_HAD`, `_SOIL_THERE`,
+        `_SOIL_BARE`). A stain on the floor or its covering (`_FLOORING`) is a floor stain; a
+        thing's part with its article ("a lid on it") or a kind's name soils nothing."""
+        def soil(m: re.Match[str]) -> str | None:
+            word, det = m.group("soil"), (m.group("det") or "").strip()
+            np = m.group("np")
+            if np.split()[-1] in _FLOORING or word in FUNCTION_WORDS:
+                return None
+            if singular(word) not in STAIN_WORDS:
+                bare = det in ("", "any", "some", "no", "a bit of", "bits of") and singular(word) == word
+                named = any(x.kind == "role" for x in self.lex.find_mentions(tokens(word)))
+                if not bare or named or "NOUN" not in getAllLemmas(word):
+                    return None
+            return "wet" if word == "water" else "dirty"
+
+        def negated(m: re.Match[str]) -> str:
+            return "not " if (m.groupdict().get("not") is not None) != ((m.group("det") or "").strip() == "no") else ""
+
+        def be(np: str) -> str:
+            return "are" if np in ("they", "them") else "is"
+
+        def subject(np: str) -> str:
+            return "they" if np == "them" else np
+
+        def asked(m: re.Match[str]) -> str:
+            state = soil(m)
+            return m.group(0) if state is None else f"{be(m.group('np'))} {m.group('np')} {negated(m)}{state}"
+
+        def had(m: re.Match[str]) -> str:
+            state = soil(m)
+            return m.group(0) if state is None else f"{m.group('np')} {be(m.group('np'))} {negated(m)}{state}"
+
+        def there(m: re.Match[str]) -> str:
+            state = soil(m)
+            np = subject(m.group("np"))
+            return m.group(0) if state is None else f"{np} {be(np)} {negated(m)}{state}"
+
+        def bare(m: re.Match[str]) -> str:
+            state = soil(m)
+            np = subject(m.group("np"))
+            return m.group(0) if state is None else f"{m.group('lead')}{be(np)} {np} {negated(m)}{state}"
+
+        said = _SOIL_ASKED.sub(asked, said)
+        said = _SOIL_HAD.sub(had, said)
+        return _SOIL_BARE.sub(bare, _SOIL_THERE.sub(there, said))
 
     def _already(self, words: list[str], mentions: list[Mention], negated: bool) -> list[Fact]:
         """`unless it is already there / on`: the condition is the previous instruction's result;
