@@ -76,6 +76,7 @@ from logicenveval.offline.placement import (
 )
 from logicenveval.offline.sentences import (
     ACTIONS,
+    CARELESS,
     DISCOVERY,
     EVENT_VERBS,
     FORMS,
@@ -128,7 +129,7 @@ DESCRIPTIVE = frozenset(
      # shoe rack", "if the laptop's sat on the sofa"): sitting ("stood" is also the passive of
      # standing a thing somewhere: "it is stood in the umbrella stand", a goal)
      "sat"]
-)
+) | CARELESS  # the participles of leaving a thing carelessly ("if it is dumped on the sofa")
 #: verbs after a subject that announce where it must go (a goal, not a condition)
 MOTION = frozenset(
     ["go", "goes", "going", "belong", "belongs", "should", "must", "needs", "need", "get", "gets", "gotten", "put", "placed", "hung", "moved", "returned", "stored", "back", "brought", "taken", "carried",

@@ -63,6 +63,7 @@ from logicenveval.offline.sentences import (
     ACTIONS,
     ARROW_MARK,
     BELIEFS,
+    CARELESS,
     DEFINITE_OPENERS,
     FREQUENCY,
     NORM_ADVERBS,
@@ -806,8 +807,6 @@ def _prep_before(words: list[str], start: int) -> str | None:
 #: a rule of where they go, as a present passive with "is" may be ("the plate is put away")
 GET_PASSIVE = frozenset({"get", "gets", "got", "gotten"})
 PAST_GET = frozenset({"got", "gotten"})
-CARELESS = frozenset({"left", "dumped", "dropped", "thrown", "abandoned", "forgotten", "knocked", "flung",
-                      "chucked", "tossed", "slung", "stuck"})
 
 
 def _get_passive(words: list[str], j: int, hi: int) -> bool:

@@ -132,6 +132,10 @@ PREP_IN = frozenset({"in", "inside", "into", "within"})
 #: participles that say where or how a thing was come upon; after a bare conditional they are the
 #: condition's verb with its subject elided ("if found on the floor", "unless left open")
 FOUND_PARTICIPLES = frozenset({"found", "left", "seen", "spotted", "discovered", "located", "noticed"})
+#: participles of leaving a thing carelessly (`offline.placement`: "it gets dumped on the bench" places
+#: it; before a place they are an elided condition's verb, "if dropped on the floor")
+CARELESS = frozenset({"left", "dumped", "dropped", "thrown", "abandoned", "forgotten", "knocked", "flung",
+                      "chucked", "tossed", "slung", "stuck"})
 
 #: words after a noun's "'s" that make it the verb, not a possessive: "the door's shut", "the
 #: pillow's been moved", "the dishwasher's already on" (but "the cat's ball")
@@ -318,9 +322,13 @@ _RESTING_THERE = re.compile(
 
 
 #: a condition with its subject and copula elided before a participle of finding or leaving (a
-#: work order's "if found on the chair", a manual's "when left open"): "if it is found ..."
+#: work order's "if found on the chair", a manual's "when left open"): "if it is found ..."; so
+#: before one of careless leaving and a place (a checklist's "Pencil -> desk, only if dropped on
+#: the floor", "into the hamper if thrown on the floor"), with no place a consequence ("if dropped,
+#: sweep up the pieces")
 _ELIDED_SUBJECT = re.compile(
-    rf"\b(if|unless|when|whenever|once|while)\s+(?=(?:{'|'.join(sorted(FOUND_PARTICIPLES))})\b)", re.I)
+    rf"\b(if|unless|when|whenever|once|while)\s+(?=(?:{'|'.join(sorted(FOUND_PARTICIPLES))})\b"
+    rf"|(?:{'|'.join(sorted(CARELESS))})\s+(?:on|onto|in|into|under|behind|beside|by)\b)", re.I)
 #: the same before a place ("the towel: if on the floor, pick it up", "grab the sock if still on
 #: the rug", "if standing on the vanity, put it away"): a condition with no subject and no verb whose
 #: predicate is a surface place, or a resting participle and that place, speaks of the thing just
