@@ -617,6 +617,14 @@ _DONE_ALREADY = re.compile(
     r"(?=\s*(?:[,.;:!?)]|$)|\s+[-\u2013\u2014]\s)", re.I | re.M)
 
 
+#: "where" of a case after "only", a bracket, a comma or a dash, before a clause of presence
+#: ("UMBRELLA (only where one is present)", "Kettle, where there is one: ..."): a procedure's
+#: "in a situation in which", read as "if"; "where" of a place ("put it where there is room")
+#: follows a verb, not these
+_CASE_WHERE = re.compile(r"(?:(?<=\()|(?<=,\s)|(?<=\s[-\u2013\u2014]\s)|(?<=\bonly\s))where"
+                         r"(?=\s+(?:there\s+(?:is|are)|(?:one|it|they|any|some)\s+(?:is|are)\s+present)\b)", re.I)
+
+
 #: what makes an "if" clause an indirect question ("not sure if", "can't remember if", "check if"),
 #: not a condition on what the listener does ("if you open the fridge, close it after")
 _ASKING = re.compile(r"\b(?:remember|recall|know|sure|certain|wonder|check|see|idea|forget|forgot)\W+$", re.I)
@@ -2078,6 +2086,7 @@ def unquote(text: str) -> str:
     plain = _DROPPED_SUBJECT.sub(lambda m: f"{m.group(1)} {_DROPPED_PRONOUN[m.group(2).lower()]} ", plain)
     plain = _SHARED_SUBJECT.sub(_shared_pronoun, plain)
     plain = _DROPPED_DOUBT.sub(lambda m: f"{m.group(1)}{_match_case(m.group(2), 'it')} {m.group(2).lower()}", plain)
+    plain = _CASE_WHERE.sub(lambda m: _match_case(m.group(0), "if"), plain)
     plain = _ACTED_STATE.sub(_acted_state, _DONE_ALREADY.sub(lambda m: _match_case(m.group(0), "unless it already is"), plain))
     plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)
     plain = _KIND_OF.sub(r"\1 ", _STATE_CASE.sub(_state_case, plain))
