@@ -617,6 +617,12 @@ _DONE_ALREADY = re.compile(
     r"(?=\s*(?:[,.;:!?)]|$)|\s+[-\u2013\u2014]\s)", re.I | re.M)
 
 
+#: a heading that is a free relative, its verb ending it at a colon or a dash ("Where things are:
+#: in the kitchen - the bin, the fridge", "Where everything lives -"): it names the topic of what
+#: follows and asks nothing, so it is dropped; a "where" with a predicate after its verb ("Where
+#: the bin is full: empty it") stays a condition
+_WHERE_HEADING = re.compile(r"^([ \t]*)where\b[^?,:.\n]*?\b(?:is|are|was|were|lives?|goes|go|belongs?|sits?|stays?|kept)"
+                            r"\s*(?::|\s[-\u2013\u2014])[ \t]*", re.I | re.M)
 #: "where" of a case after "only", a bracket, a comma or a dash, before a clause of presence
 #: ("UMBRELLA (only where one is present)", "Kettle, where there is one: ..."): a procedure's
 #: "in a situation in which", read as "if"; "where" of a place ("put it where there is room")
@@ -2086,7 +2092,7 @@ def unquote(text: str) -> str:
     plain = _DROPPED_SUBJECT.sub(lambda m: f"{m.group(1)} {_DROPPED_PRONOUN[m.group(2).lower()]} ", plain)
     plain = _SHARED_SUBJECT.sub(_shared_pronoun, plain)
     plain = _DROPPED_DOUBT.sub(lambda m: f"{m.group(1)}{_match_case(m.group(2), 'it')} {m.group(2).lower()}", plain)
-    plain = _CASE_WHERE.sub(lambda m: _match_case(m.group(0), "if"), plain)
+    plain = _CASE_WHERE.sub(lambda m: _match_case(m.group(0), "if"), _WHERE_HEADING.sub(r"\1", plain))
     plain = _ACTED_STATE.sub(_acted_state, _DONE_ALREADY.sub(lambda m: _match_case(m.group(0), "unless it already is"), plain))
     plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)
     plain = _KIND_OF.sub(r"\1 ", _STATE_CASE.sub(_state_case, plain))
