@@ -3019,6 +3019,18 @@ def _place_heading(reader: _Reader, text: str) -> bool:
         m.kind == "room" or m.kind == "role" and not _placed([w for w, _, _ in toks], m) for m in mentions)
 
 
+def _room_list_heading(reader: _Reader, text: str, after: str) -> bool:
+    """The heading is a room alone ("In the living room -") before a list of things it holds ("her
+    sofa and the coffee table"): it says where they are, as a place heading does, and asks nothing
+    of the thing spoken of before (a room heading before an instruction still says where the
+    instruction happens, `_read_heading`)."""
+    toks, next_toks = tokens(expand(text)), tokens(expand(after))
+    mentions = reader.lex.find_mentions(toks)
+    listed = reader.lex.find_mentions(next_toks)
+    return bool(toks) and toks[0][0] in PLACE_PREPS and bool(mentions) and all(m.kind == "room" for m in mentions) \
+        and any(m.kind == "role" and m.start <= 1 for m in listed) and not imperative([w for w, _, _ in next_toks])
+
+
 #: words that say an action is done before the instruction is carried out
 DONE_WORDS = frozenset({"already"})
 
@@ -3737,7 +3749,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 clauses.append(Clause(text, grammatical, cue, "statement", (), ()))
                 continue  # "DAD: ...", "ME: ...", "Q: ...": who speaks, nothing of the scene
             if role == "heading":
-                if _place_heading(reader, text) and named != grammatical and not _instructs(reader, after[pi]):
+                if (_place_heading(reader, text) or _room_list_heading(reader, text, after[pi])) \
+                        and named != grammatical and not _instructs(reader, after[pi]):
                     # "On the floor: a dirty mark, and possibly a book": the place of what follows
                     place = (grammatical, text)
                     clauses.append(Clause(text, grammatical, cue, "statement", (), ()))
