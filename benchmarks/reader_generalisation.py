@@ -433,7 +433,8 @@ prints LogCov / SceVR / FauDR for each, then per task:
   stables round card) and six new tasks in rooms none of the sets above use (an ice rink's skate
   hire close-down notes, a bowls club's pavilion lock-up card, a pool plant operator's log, a
   racecourse head valet's notes, a dry ski slope's instructors' hut list, an Icelandic horse stud's
-  foaling night-watch note). Fresh (`FRESH`) until measured ten times, then a development set;
+  foaling night-watch note). Fresh (`FRESH`) until measured ten times (the twenty-ninth session,
+  after its tenth reader commit), then a development set;
 - `dev52 reworded` and `dev52 new`: tests/data/reader_dev52/ — the fifty-second development set,
   written in the twenty-ninth session beside dev 51 in registers of laboratory and collections work
   and the English of a Lithuanian speaker: one rewording each of 3 built-in descriptions (a
@@ -441,8 +442,8 @@ prints LogCov / SceVR / FauDR for each, then per task:
   sheet, a museum registrar's object location audit) and six new tasks in rooms none of the sets
   above use (a herbarium curator's note, an aquarium aquarist's handover, a seed bank technician's
   note, a teaching lab's end-of-practical checklist, a spirit collection manager's e-mail, a rock
-  preparation room technician's notes). Fresh (`FRESH`) until measured ten times, then a
-  development set;
+  preparation room technician's notes). Fresh (`FRESH`) until measured ten times (the
+  twenty-ninth session, after its tenth reader commit), then a development set;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -475,7 +476,7 @@ was written for (a rule too wide shows as a task of another set falling):
     python benchmarks/reader_generalisation.py --dev-only --compare before.json # with the rule
 
 `--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: the
-sets written in a session, until measured: now dev 51 and dev 52; dev 25 and
+sets written in a session, until measured: none at the moment; dev 25 and
 dev 26 left it in the fifteenth session after their third measurement, dev 27 and dev 28 after their
 fifth, dev 29 and dev 30 in the sixteenth after their sixth, dev 31 and dev 32 in the
 seventeenth after their seventh, dev 33 and dev 34 in the eighteenth after their eighth, dev 35 and dev 36 in the
@@ -483,7 +484,8 @@ nineteenth after their tenth, dev 37 and dev 38 in the twentieth after their ten
 twenty-third after its tenth, dev 39 after its tenth in the same session, dev 41 and dev 42 in the
 twenty-fifth after their tenth, dev 43 and dev 44 in the twenty-sixth after their tenth, dev 45 and
 dev 46 in the twenty-seventh after their tenth, dev 47 and dev 48 in the twenty-eighth after
-their tenth, dev 49 and dev 50 in the twenty-ninth after their tenth), so a tuner's runs
+their tenth, dev 49 and dev 50 in the twenty-ninth after their tenth, and dev 51 and dev 52,
+written in the same session, after their tenth), so a tuner's runs
 never show them; `--dev-only --fresh` keeps them, to measure them. `--skip 'dev9 reworded,dev9 new'` leaves any other rows' sets out as well.
 `--only 'held-out reworded,held-out2 reworded'` measures those rows alone: to find which commit of a
 merged branch moved an unseen row, run it at each commit (every tree has those rows, where a skip
@@ -680,7 +682,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH: frozenset[str] = frozenset({"dev51 reworded", "dev51 new", "dev52 reworded", "dev52 new"})
+FRESH: frozenset[str] = frozenset()
 GENERATOR = "logicenvgen"
 
 
