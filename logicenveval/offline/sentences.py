@@ -604,8 +604,9 @@ _ACTED_STATE = re.compile(
 
 #: a condition whose verb phrase is elided after a doer, at its clause's end ("switch it off
 #: unless someone already has", "put it in the dishwasher if no one has yet", "unless somebody's
-#: done it already", "if somebody hasn't already"): whether the instruction's result holds
-#: already, as "unless it already is" asks of the thing the instruction acts on; a doer with an
+#: done it already", "if somebody hasn't already", "if nobody's beaten you to it"): whether the
+#: instruction's result holds already, as "unless it already is" asks of the thing the
+#: instruction acts on; a doer with an
 #: object of its own ("unless someone has a key") is no such clause, nor one whose doer is the
 #: one told ("if you haven't already" asks nothing of the scene: the agent has done nothing yet)
 _OTHER_DOER = f"(?:{'|'.join(d for d in _DOERS if d != 'you')})"
@@ -613,8 +614,8 @@ _DONE_ALREADY = re.compile(
     rf"\b(?:unless\s+{_OTHER_DOER}(?:\s+else)?(?:\s+already)?(?:\s+(?:has|have|had|did)|'s|’s|'ve|’ve)"
     rf"|if\s+(?:no\s+one|no-one|nobody)(?:\s+else)?(?:\s+already)?(?:\s+(?:has|have|had|did)|'s|’s)"
     rf"|if\s+{_OTHER_DOER}(?:\s+else)?\s+(?:has|have|had|did)(?:\s+not|n't|n’t))"
-    r"(?:\s+(?:already|yet))?(?:\s+done\s+(?:it|so|that|this))?(?:\s+(?:already|yet))?"
-    r"(?=\s*(?:[,.;:!?)]|$)|\s+[-\u2013\u2014]\s)", re.I | re.M)
+    r"(?:\s+(?:already|yet))?(?:\s+done\s+(?:it|so|that|this)|\s+beaten\s+(?:you|me|us|them|him|her)\s+to\s+it)?"
+    r"(?:\s+(?:already|yet))?(?=\s*(?:[,.;:!?)]|$)|\s+[-\u2013\u2014]\s)", re.I | re.M)
 
 
 #: a heading that is a free relative, its verb ending it at a colon or a dash ("Where things are:
@@ -969,6 +970,12 @@ _QUESTION_PREDICATE = re.compile(
 _MEANS_CASE = re.compile(
     rf"((?:^|(?<=[.!?:;,]\s)|(?<=\n)|(?<=\s[-\u2013\u2014]\s))[ \t]*)((?:(?:still|already)\s+)?"
     rf"(?:{'|'.join(sorted(w for w in STATE_WORDS if ' ' not in w))}))\s+means\s+", re.I | re.M)
+#: the same case put as what a thing's contents mean ("no water in it means fill it up", "water
+#: left in it means tip it away"): "if there is (no) water in it, ..." (what "there is ... in it"
+#: says of the container is the factor reader's, `offline.analysis`)
+_MEANS_THERE = re.compile(
+    r"((?:^|(?<=[.!?:;,]\s)|(?<=\n)|(?<=\s[-\u2013\u2014]\s))[ \t]*)((?:(?:no|some|any|still)\s+)?[a-z]+(?:\s+left)?"
+    r"\s+(?:in|inside)\s+(?:it|them))\s+means\s+", re.I | re.M)
 #: a condition with its subject and verb elided before such a predicate ("the mug: if washed, put it
 #: away", "the remote - if missing, tell me", "if taken, let me know"), read "if it is ...";
 #: not after "once" ("wash the mug and once washed, ..." is a step after the washing, not a question)
@@ -2050,7 +2057,8 @@ def unquote(text: str) -> str:
     a noun phrase put first before a dash as its pronoun's subject (`_LEFT_DISLOCATED`), a case
     label's bracketed clause as its condition (`_CASE_CLAUSE`), a resting participle before
     "there" dropped (`_RESTING_THERE`) and "Still there?" as "Is it still there?"
-    (`_STILL_THERE_QUESTION`). A subject's relative clause is dropped by `as_read`, not here."""
+    (`_STILL_THERE_QUESTION`), and a thing's contents that "mean" a step as the case they state
+    (`_MEANS_THERE`). A subject's relative clause is dropped by `as_read`, not here."""
     text = _SALUTATION.sub(lambda m: f"{m.group('greeting')}\n{m.group('first').upper()}", _VERSE_LINE.sub(lambda m: _VERSE_SLASH.sub("\n", m.group(0)), text))
     text = _DASHED_ASIDE.sub(r"\g<cue> ", answered_questions(keyed_answers(dealias(text))))
     text = _SET_OFF_ALTERNATIVE.sub(_set_off_alternative, text)
@@ -2081,6 +2089,8 @@ def unquote(text: str) -> str:
     plain = _unabbreviated(plain)
     plain = _MEANS_CASE.sub(lambda m: f"{m.group(1)}{_match_case(m.group(2), 'if')} it is {m.group(2).lower()}, ",
                             plain)
+    plain = _MEANS_THERE.sub(lambda m: f"{m.group(1)}{_match_case(m.group(2), 'if')} there is {m.group(2).lower()}, ",
+                             plain)
     plain = _ELIDED_PREDICATE.sub(r"\1 it is ", _RESTING_THERE.sub(r"\1 ", plain))
     plain = _PREDICATE_STATE.sub(lambda m: m.group(1) + _predicate(m.group(2)), _SOUNDING.sub(_sounding, plain))
     plain = _QUESTION_PREDICATE.sub(lambda m: m.group(1) + _predicate(m.group(2)), plain)
