@@ -53,3 +53,10 @@ def test_a_part_with_its_article_soils_nothing() -> None:
 def test_water_in_a_thing_still_fills_it() -> None:
     got = factors("The kettle is on the counter. Has it got water in it? If not, fill it.", ("kitchen",))
     assert any("state(kettle, filled)" in values for values in got.values()), got
+
+
+def test_a_thing_lying_on_a_thing_soils_nothing() -> None:
+    """"one" stands for a thing (found when "One on the sofa, put it back" was read as its
+    existential case)."""
+    got = factors("Books. If there is one on the sofa, put it back on the bookshelf.", ("snug",))
+    assert not any("dirty" in v for values in got.values() for v in values), got

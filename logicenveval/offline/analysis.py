@@ -562,6 +562,10 @@ _SOIL_THERE = re.compile(rf"\bthere (?:is|are)(?P<not> not)? {_SOIL} on {_SOILED
 _SOIL_BARE = re.compile(rf"^(?P<lead>\W*){_SOIL} on (?P<np>it|them)(?= *\?)")
 #: the floor and what covers it: a stain there is a floor stain, a thing of its own
 _FLOORING = frozenset({"floor", "ground", "carpet", "rug"})
+#: words that stand for things, not for what soils them ("there is one on the sofa", "there is
+#: stuff on the table": a thing lies there, the sofa is not dirty); "anything on it (leaks, sick)"
+#: of a blanket may be soil, as dev 46's nursery handover says it
+_NOT_SOIL = PRONOUNS | {"stuff", "thing"}
 
 
 def _plural_only(word: str) -> bool:
@@ -1814,7 +1818,7 @@ class _Reader:
         def soil(m: re.Match[str]) -> str | None:
             word, det = m.group("soil"), (m.group("det") or "").strip()
             np = m.group("np")
-            if np.split()[-1] in _FLOORING or word in FUNCTION_WORDS:
+            if np.split()[-1] in _FLOORING or word in FUNCTION_WORDS or word in _NOT_SOIL:
                 return None
             if singular(word) not in STAIN_WORDS:
                 bare = det in ("", "any", "some", "no", "a bit of", "bits of") and singular(word) == word

@@ -560,6 +560,13 @@ _ALREADY_CASE = re.compile(
     re.I | re.M)
 
 
+#: a verbless case opened by "one" and a place, then a comma and an instruction told by "you" or
+#: by a verb with "it"/"them" ("One on the floor, you pick it up", "one on the sofa, put it back"):
+#: "if there is one on the floor, ..." (the question form, "One on the floor? Pick it up", was read
+#: already); an inventory ("one on the floor, two on the sofa") tells nothing to do and is left
+_ONE_CASE = re.compile(r"(?:(?<=^)|(?<=[.!?:;]\s)|(?<=\n)|(?<=\s[-\u2013\u2014]\s))([ \t]*)(one)\s+"
+                       r"((?:on|in|inside|under|by)\s+(?:the|a|your|my|our|his|her|their)\s+[a-z]+(?:\s+[a-z]+)?)\s*,\s+"
+                       r"(?=you\s|(?:just\s+|please\s+)?[a-z]+\s+(?:it|them)\b)", re.I | re.M)
 #: a bare "No" and a thing opening its sentence, a comma, colon or dash after it ("No flowers
 #: brought, nothing to do here", "No mug, nothing to do", "No tin out - fine"): the case of the
 #: thing's absence, as "if there is no mug, ..." (the question form, "No mug? Nothing to do", was
@@ -2058,7 +2065,7 @@ def unquote(text: str) -> str:
     label's bracketed clause as its condition (`_CASE_CLAUSE`), a resting participle before
     "there" dropped (`_RESTING_THERE`) and "Still there?" as "Is it still there?"
     (`_STILL_THERE_QUESTION`), and a thing's contents that "mean" a step as the case they state
-    (`_MEANS_THERE`). A subject's relative clause is dropped by `as_read`, not here."""
+    (`_MEANS_THERE`), "One on the floor, you pick it up" as its case (`_ONE_CASE`). A subject's relative clause is dropped by `as_read`, not here."""
     text = _SALUTATION.sub(lambda m: f"{m.group('greeting')}\n{m.group('first').upper()}", _VERSE_LINE.sub(lambda m: _VERSE_SLASH.sub("\n", m.group(0)), text))
     text = _DASHED_ASIDE.sub(r"\g<cue> ", answered_questions(keyed_answers(dealias(text))))
     text = _SET_OFF_ALTERNATIVE.sub(_set_off_alternative, text)
@@ -2109,6 +2116,7 @@ def unquote(text: str) -> str:
     plain = _STATE_AND_CLAUSE.sub(lambda m: f"{m.group(1)}if it is {m.group(2).lower()} {m.group(3).lower()} {m.group(4)}, ",
                                   plain)
     plain = _NO_CASE.sub(lambda m: f"{m.group(1)}if there is no {m.group(2).strip()}, ", plain)
+    plain = _ONE_CASE.sub(lambda m: f"{m.group(1)}{_match_case(m.group(2), 'if')} there is one {m.group(3)}, ", plain)
     plain = _ALREADY_CASE.sub(lambda m: f"{m.group(1)}if it is already {m.group(2).lower()}, ", plain)
     plain = _DIRECTIVE_AFTER_QUESTION.sub(_directive, _DIRECTIVE_WITH.sub(_directive, plain))
     return _SUBJECTLESS.sub(r"\1\2\3the \2 \4", detable(derecord(_STATE_SUBJECT.sub(_state_subject, plain))))
