@@ -3779,9 +3779,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                     # "Kettle on the counter = ...", "Kettle not on the counter: skip it": a
                     # heading that asks where its thing is, its verb left out, as "is it ...?" does
                     reader.doubted |= _asked_again(text, facts, lex)
-                if role == "condition":
-                    facts = _second_case(reader, clauses, text, facts)
-                    names = tuple(dict.fromkeys(f.subject for f in facts)) or names
+                if role == "condition" and (paired := _second_case(reader, clauses, text, facts)) != facts:
+                    facts, names = paired, tuple(dict.fromkeys(f.subject for f in paired))
                 clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
                 continue
             if role in ("statement", "scene") and headed == grammatical:
@@ -3959,9 +3958,8 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 colon_closed.add(len(clauses))
                 if re.search(re.escape(text.strip().rstrip(":")) + r"\s*:[ \t]*\n", described):
                     colon_ends_line.add(len(clauses))
-            if role == "condition":
-                facts = _second_case(reader, clauses, text, facts)
-                names = tuple(dict.fromkeys(f.subject for f in facts)) or names
+            if role == "condition" and (paired := _second_case(reader, clauses, text, facts)) != facts:
+                facts, names = paired, tuple(dict.fromkeys(f.subject for f in paired))
             clauses.append(Clause(text, grammatical, cue, role, tuple(facts), names))
         if bullets[si] is not None and si + 1 < len(sentences) and bullets[si + 1] == bullets[si]:
             continue  # "* Bedroom: table lamp on? -> off. Wardrobe doors open? -> close.": one item
