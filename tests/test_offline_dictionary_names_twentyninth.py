@@ -2,7 +2,8 @@
 "shelving" (Oxford: "shelves collectively"; in dev 47's mountain rescue kit room and dev 49's
 coffee roastery and cheesemaker's make sheet) for the shelving unit, and "standard lamp" (Oxford,
 British: "a tall lamp set on the floor") for the floor lamp (dev 50's Quaker meeting house): the
-reader's own vocabulary (`vocabulary.DICTIONARY_NAMES`), read as WordNet's names are; catalog.json,
+reader's own vocabulary (`vocabulary.DICTIONARY_NAMES`), appended to the reading catalog's synonyms
+beside WordNet's names (but lending their heads, as the catalog's own names do); catalog.json,
 the judge and the prompts keep the catalog's names (a synonym there would change the catalog's
 fingerprint, which keys every shipped mutant list). Rows written here in other registers before
 the change and measured then: 1 of 6; after: 6 of 6. "Wash basket" (British for a laundry basket)

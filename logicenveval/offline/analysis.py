@@ -1827,36 +1827,23 @@ class _Reader:
                     return None
             return "wet" if word == "water" else "dirty"
 
-        def negated(m: re.Match[str]) -> str:
-            return "not " if (m.groupdict().get("not") is not None) != ((m.group("det") or "").strip() == "no") else ""
-
-        def be(np: str) -> str:
-            return "are" if np in ("they", "them") else "is"
+        def read(m: re.Match[str], np: str, asked: bool, lead: str = "") -> str:
+            """The soil's match as the thing's state: asked ("is it dirty") or said ("the coat is
+            dirty"), negated by "not" or by "no" soil; unchanged where it is no soil."""
+            state = soil(m)
+            if state is None:
+                return m.group(0)
+            be = "are" if np in ("they", "them") else "is"
+            negated = (m.groupdict().get("not") is not None) != ((m.group("det") or "").strip() == "no")
+            return f"{lead}{f'{be} {np}' if asked else f'{np} {be}'} {'not ' if negated else ''}{state}"
 
         def subject(np: str) -> str:
             return "they" if np == "them" else np
 
-        def asked(m: re.Match[str]) -> str:
-            state = soil(m)
-            return m.group(0) if state is None else f"{be(m.group('np'))} {m.group('np')} {negated(m)}{state}"
-
-        def had(m: re.Match[str]) -> str:
-            state = soil(m)
-            return m.group(0) if state is None else f"{m.group('np')} {be(m.group('np'))} {negated(m)}{state}"
-
-        def there(m: re.Match[str]) -> str:
-            state = soil(m)
-            np = subject(m.group("np"))
-            return m.group(0) if state is None else f"{np} {be(np)} {negated(m)}{state}"
-
-        def bare(m: re.Match[str]) -> str:
-            state = soil(m)
-            np = subject(m.group("np"))
-            return m.group(0) if state is None else f"{m.group('lead')}{be(np)} {np} {negated(m)}{state}"
-
-        said = _SOIL_ASKED.sub(asked, said)
-        said = _SOIL_HAD.sub(had, said)
-        return _SOIL_BARE.sub(bare, _SOIL_THERE.sub(there, said))
+        said = _SOIL_ASKED.sub(lambda m: read(m, m.group("np"), asked=True), said)
+        said = _SOIL_HAD.sub(lambda m: read(m, m.group("np"), asked=False), said)
+        said = _SOIL_THERE.sub(lambda m: read(m, subject(m.group("np")), asked=False), said)
+        return _SOIL_BARE.sub(lambda m: read(m, subject(m.group("np")), asked=True, lead=m.group("lead")), said)
 
     def _already(self, words: list[str], mentions: list[Mention], negated: bool) -> list[Fact]:
         """`unless it is already there / on`: the condition is the previous instruction's result;

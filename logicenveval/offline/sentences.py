@@ -613,9 +613,10 @@ _ACTED_STATE = re.compile(
 #: unless someone already has", "put it in the dishwasher if no one has yet", "unless somebody's
 #: done it already", "if somebody hasn't already", "if nobody's beaten you to it"): whether the
 #: instruction's result holds already, as "unless it already is" asks of the thing the
-#: instruction acts on; a doer with an
-#: object of its own ("unless someone has a key") is no such clause, nor one whose doer is the
-#: one told ("if you haven't already" asks nothing of the scene: the agent has done nothing yet)
+#: instruction acts on; a doer with an object of its own ("unless someone has a key") is no such
+#: clause, nor one whose doer is the one told ("if you haven't already" asks nothing of the
+#: scene: the agent has done nothing yet). `analysis._DONE_BY_SOMEONE` reads the deed said in
+#: full, with its object ("unless someone has emptied the bin").
 _OTHER_DOER = f"(?:{'|'.join(d for d in _DOERS if d != 'you')})"
 _DONE_ALREADY = re.compile(
     rf"\b(?:unless\s+{_OTHER_DOER}(?:\s+else)?(?:\s+already)?(?:\s+(?:has|have|had|did)|'s|’s|'ve|’ve)"
@@ -974,14 +975,15 @@ _QUESTION_PREDICATE = re.compile(
 #: out", "Kettle. Empty means fill it", "Already off means no problem"): "if it is <state>, ..." of
 #: the thing just spoken of (`STATE_WORDS` only: "No kettle on the counter means no tea" and a
 #: definition, "'tidy' means put away", are left as they are)
+_MEANS_LEAD = r"((?:^|(?<=[.!?:;,]\s)|(?<=\n)|(?<=\s[-\u2013\u2014]\s))[ \t]*)"  # where such a case opens
 _MEANS_CASE = re.compile(
-    rf"((?:^|(?<=[.!?:;,]\s)|(?<=\n)|(?<=\s[-\u2013\u2014]\s))[ \t]*)((?:(?:still|already)\s+)?"
+    rf"{_MEANS_LEAD}((?:(?:still|already)\s+)?"
     rf"(?:{'|'.join(sorted(w for w in STATE_WORDS if ' ' not in w))}))\s+means\s+", re.I | re.M)
 #: the same case put as what a thing's contents mean ("no water in it means fill it up", "water
 #: left in it means tip it away"): "if there is (no) water in it, ..." (what "there is ... in it"
 #: says of the container is the factor reader's, `offline.analysis`)
 _MEANS_THERE = re.compile(
-    r"((?:^|(?<=[.!?:;,]\s)|(?<=\n)|(?<=\s[-\u2013\u2014]\s))[ \t]*)((?:(?:no|some|any|still)\s+)?[a-z]+(?:\s+left)?"
+    rf"{_MEANS_LEAD}((?:(?:no|some|any|still)\s+)?[a-z]+(?:\s+left)?"
     r"\s+(?:in|inside)\s+(?:it|them))\s+means\s+", re.I | re.M)
 #: a condition with its subject and verb elided before such a predicate ("the mug: if washed, put it
 #: away", "the remote - if missing, tell me", "if taken, let me know"), read "if it is ...";
@@ -2065,7 +2067,8 @@ def unquote(text: str) -> str:
     label's bracketed clause as its condition (`_CASE_CLAUSE`), a resting participle before
     "there" dropped (`_RESTING_THERE`) and "Still there?" as "Is it still there?"
     (`_STILL_THERE_QUESTION`), and a thing's contents that "mean" a step as the case they state
-    (`_MEANS_THERE`), "One on the floor, you pick it up" as its case (`_ONE_CASE`). A subject's relative clause is dropped by `as_read`, not here."""
+    (`_MEANS_THERE`), "One on the floor, you pick it up" as its case (`_ONE_CASE`). A subject's
+    relative clause is dropped by `as_read`, not here."""
     text = _SALUTATION.sub(lambda m: f"{m.group('greeting')}\n{m.group('first').upper()}", _VERSE_LINE.sub(lambda m: _VERSE_SLASH.sub("\n", m.group(0)), text))
     text = _DASHED_ASIDE.sub(r"\g<cue> ", answered_questions(keyed_answers(dealias(text))))
     text = _SET_OFF_ALTERNATIVE.sub(_set_off_alternative, text)
