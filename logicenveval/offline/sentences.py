@@ -144,7 +144,17 @@ _IS_AFTER = tuple(STATE_WORDS) + ("already", "still", "not", "probably", "just",
                                   "lying", "sitting", "left", "gone", "missing", "there", "here")
 _IS_BEFORE_PLACE = ("inside", "atop", "underneath", "beneath", "behind", "beside", "by")
 _PLACE_OPENERS = ("the", "a", "an", "my", "your", "our", "his", "her", "their", "this", "that")
+#: a thing's place named by a possessed noun and said with a preposition is where the thing lives
+#: ("the laptop's position is on the desk", "the kettle's usual spot is on the worktop", "the
+#: books' place is on the shelf"): the owner is the subject, as in "the laptop lives on the desk";
+#: read with the possessive dropped, the noun of place would be the subject ("spot": a stain)
+_HOME_NOUNS = ("place", "position", "spot", "location", "home", "station")
+_HOME_QUALIFIERS = ("usual", "proper", "normal", "regular", "rightful", "right", "own", "designated", "allotted")
+_HOME_PREPOSITIONS = _IS_BEFORE_PLACE + ("on", "in", "under", "near", "next", "at", "against", "upon", "above")
+_HOME_OF = (rf"\s+(?:(?:{'|'.join(_HOME_QUALIFIERS)})\s+)?(?:{'|'.join(_HOME_NOUNS)})\s+(?:is|was)\s+"
+            rf"(?=(?:{'|'.join(_HOME_PREPOSITIONS)})\b)")
 _CONTRACTIONS = [
+    (rf"\b(\w+)'s{_HOME_OF}", r"\1 lives "), (rf"\b(\w+)s'{_HOME_OF}", r"\1s live "),
     # "it's got" is "it has got" (possession: "unless it's got water in it"), as a noun's "'s" is
     (r"\b(it|that|there|what|where|who|how|here|he|she)'s\b(?!\s+got\b)", r"\1 is"),
     (r"\b(they|we|you)'re\b", r"\1 are"),
