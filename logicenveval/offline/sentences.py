@@ -628,8 +628,17 @@ _ACTED_STATE = re.compile(
 #: scene: the agent has done nothing yet). `analysis._DONE_BY_SOMEONE` reads the deed said in
 #: full, with its object ("unless someone has emptied the bin").
 _OTHER_DOER = f"(?:{'|'.join(d for d in _DOERS if d != 'you')})"
+#: a doer named by a name or a noun phrase ("unless Priya has beaten you to it", "unless the night
+#: porter has done it already", "unless Lee from the cafe has", "unless one of the cleaners has"),
+#: with where they work after it: one only with the deed said ("done it", "beaten you to it"), since
+#: "unless Lee has a key" has an object of its own
+_NAMED_DOER = (r"(?:(?-i:(?:(?:Mr|Mrs|Ms|Miss|Dr)\.?\s+)?[A-Z][a-z]+)|the\s+[a-z]+(?:\s+[a-z]+)?|one\s+of\s+the\s+[a-z]+)"
+               r"(?:\s+(?:from|on|in|at)\s+the\s+[a-z]+(?:\s+[a-z]+)?)?")
+_DEED = r"(?:done\s+(?:it|so|that|this)|beaten\s+(?:you|me|us|them|him|her)\s+to\s+it)"
 _DONE_ALREADY = re.compile(
-    rf"\b(?:unless\s+{_OTHER_DOER}(?:\s+else)?(?:\s+already)?(?:\s+(?:has|have|had|did)|'s|’s|'ve|’ve)"
+    rf"\b(?:unless\s+{_NAMED_DOER}(?:\s+already)?(?:\s+(?:has|have|had)|'s|’s)(?:\s+already)?\s+{_DEED}"
+    rf"|if\s+{_NAMED_DOER}\s+(?:has|have|had)(?:\s+not|n't|n’t)(?:\s+already)?\s+{_DEED}"
+    rf"|unless\s+{_OTHER_DOER}(?:\s+else)?(?:\s+already)?(?:\s+(?:has|have|had|did)|'s|’s|'ve|’ve)"
     rf"|if\s+(?:no\s+one|no-one|nobody)(?:\s+else)?(?:\s+already)?(?:\s+(?:has|have|had|did)|'s|’s)"
     rf"|if\s+{_OTHER_DOER}(?:\s+else)?\s+(?:has|have|had|did)(?:\s+not|n't|n’t))"
     r"(?:\s+(?:already|yet))?(?:\s+done\s+(?:it|so|that|this)|\s+beaten\s+(?:you|me|us|them|him|her)\s+to\s+it)?"
