@@ -286,6 +286,9 @@ _POINTERS = frozenset({"that", "it", "this", "which"})
 _COPULAS = frozenset({"is", "was"})
 #: the pronouns that take up a thing named before (`_Reader.heading_spare`)
 _THING_PRONOUNS = frozenset({"it", "its", "they", "them", "their"})
+#: words that open a clause of their own inside a sentence: where the kinds said near a head
+#: stop (`_Reader.kinds_said_near`)
+_CLAUSE_LINKS = SUBORDINATORS | {"and", "but", "or", "so", "then", "because", "while"}
 #: verbs that, right after a noun phrase, make it the subject of a clause of its own
 #: (`_Reader.renamed_fuller`)
 _CLAUSE_VERBS = frozenset({"is", "was", "are", "were", "has", "had", "goes", "lives", "sits", "stands", "lies",
@@ -1021,6 +1024,7 @@ class _Reader:
         if written == word:  # a singular never names a plural-only kind: "Marco's glass" is no spectacles
             candidates = [c for c in candidates if c is None or not self.plural_only(c, word)] or candidates
         said = self.sentence_context(i)
+        near = self.kinds_said_near(i)
 
         writing = self.written_in(i)
         unlisted = self.sort_named(i, [c for c in candidates if c is not None])
@@ -1032,7 +1036,7 @@ class _Reader:
         opened = bool({self.text.words[k] for k in range(self.text.sentence_start(i), self.text.sentence_end(i))}
                       & _OPENING)
 
-        def score(category: str | None) -> tuple[bool, bool, bool, bool, bool, bool, int, bool, bool, bool, bool, int, bool, int,
+        def score(category: str | None) -> tuple[bool, bool, bool, bool, bool, bool, int, int, bool, bool, bool, bool, int, bool, int,
                                                  bool, bool]:
             assert category is not None
             cat = self.catalog.categories[category]
@@ -1067,6 +1071,10 @@ class _Reader:
                     # coffee in the jar; the post is on the table" in a kitchen: no coffee table,
                     # a living room's), any kind where no room id names a type
                     len(hints & said) if fits else 0,
+                    # the kinds said beside it, in a kind the word heads the own name of ("a boot
+                    # goes back on the racks": the shoe rack; "put the boots on the shelf" is no
+                    # shoe rack, whose "shoe shelf" is only a synonym)
+                    len(set(words_of(category)) & near) if words_of(category)[-1] == word else 0,
                     written != word and self.plural_named(category, word),
                     category == exact,
                     # the sort the dictionary describes by the head's adjective ("the small table
@@ -1375,6 +1383,34 @@ class _Reader:
             k += n
         taken.update(k for k in range(start, end) if self.text.part_of_other(k))
         return {words[k] for k in range(start, end) if k not in taken} - _NOT_CONTEXT
+
+    def kinds_said_near(self, i: int) -> set[str]:
+        """The words of the own names of the kinds that word `i`'s clause names outright (a
+        head of several kinds names none), and those from the sentence before when the clause
+        refers back by a pronoun: what the thing is for, said by what goes on it ("a boot left on
+        the floor goes back on the racks": a shoe, so the shoe rack; "Sneakers by the door? Line
+        them up on the rack"), where the head alone is no hint ("boot" is no word of "shoe rack").
+        The clause, not the sentence: "I've left the torch on the shelf charging; if it's still
+        on, ..." says nothing of boots a sentence before."""
+        words, gaps = self.text.words, self.text.gaps
+        start, end = i, i + 1
+        while start > 0 and not _BREAK.search(gaps[start]) and words[start - 1] not in _CLAUSE_LINKS:
+            start -= 1
+        while end < len(words) and not _BREAK.search(gaps[end]) and words[end] not in _CLAUSE_LINKS:
+            end += 1
+        if any(words[k] in _THING_PRONOUNS for k in range(start, end)):
+            sentence = self.text.sentence_start(i)
+            start = self.text.sentence_start(sentence - 1) if sentence > 0 else sentence
+        out: set[str] = set()
+        k = start
+        while k < end:
+            n, category = self.match(k)
+            if category is not None and not k <= i < k + n and (n > 1 or len(set(self.heads.get(words[k], []))) <= 1):
+                # the kind's own name, not the words written ("stand it on the dish rack;
+                # otherwise it goes up on the shelf": "rack" hints no rack of shelves)
+                out.update(set(words_of(category)) - set(words[k:k + n]))
+            k += n
+        return out - {words[i]}
 
     def plural_names(self, category: str, word: str) -> list[bool]:
         """For each name of `category` headed by `word` (singular), whether it is written in the
