@@ -492,9 +492,14 @@ def _read(brief: Mapping[str, Any], catalog: Catalog, kinds: frozenset[str]) -> 
     lex = Lexicon.build(brief, reading_catalog(catalog))
     reading = _Reading({k: {} for k in _ORDER}, {k: {} for k in _ORDER})
     sentences = _sentences(as_read(str(brief.get("description", ""))), lex)
+    goal_list = False
     for sent in sentences:
         _in_section(sent, reading)
-        _read_sentence(sent, lex, catalog, reading)
+        # the items of a list a goal's lead opens say where things go, not where they are
+        goal_list = goal_list and _list_item(sent)
+        if not goal_list:
+            _read_sentence(sent, lex, catalog, reading)
+        goal_list = goal_list or _goal_lead(sent)
     before = _Before()
     for sent in sentences:  # after every rule: a thing a rule placed keeps its place
         _fallback(sent, before, lex, catalog, reading)
@@ -512,6 +517,31 @@ def _read(brief: Mapping[str, Any], catalog: Catalog, kinds: frozenset[str]) -> 
     out += [f"in_room({role}, {room})" for role, room in rooms.items()
             if role not in held or held[role].endswith(", floor)")]
     return out
+
+
+#: the verbs of a lead that sends things somewhere ("Anything left on it goes where it is kept:",
+#: "Put things back as follows:", "Return these to their homes:"): the list after it gives
+#: destinations, not places (`_goal_lead`)
+_SENDING = MOTION | frozenset({"put", "return", "take", "move", "hang", "place", "store", "tidy", "clear", "sort"})
+
+
+def _goal_lead(sent: _Sentence) -> bool:
+    """Whether the sentence leads into a list of where things go: it ends at a colon and says
+    where things go or tells the reader to put them somewhere ("Anything left on it goes where it
+    is kept:", "Put things back as follows:", "Where everything belongs:"). The list's items
+    ("- the alarm clock: on the nightstand") are then destinations: read as where the things
+    are, they would settle what the text leaves open ("There may be a book, an alarm clock or a
+    phone left on the bed"). A lead that sends nothing ("Here is what you will find:") leaves its
+    items statements."""
+    words = sent.words
+    return bool(words) and words[-1] == ":" and bool(set(words) & _SENDING)
+
+
+def _list_item(sent: _Sentence) -> bool:
+    """Whether the sentence is a verbless item of a list: on a line of its own (its dash or
+    number dropped by `as_read`), a thing and its place at a colon ("- the phone: on the desk",
+    "2. mug: in the cupboard")."""
+    return sent.new_line and ":" in sent.words
 
 
 def _in_section(sent: _Sentence, reading: _Reading) -> None:
