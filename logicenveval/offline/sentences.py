@@ -643,6 +643,13 @@ _DONE_ALREADY = re.compile(
     rf"|if\s+{_OTHER_DOER}(?:\s+else)?\s+(?:has|have|had|did)(?:\s+not|n't|n’t))"
     r"(?:\s+(?:already|yet))?(?:\s+done\s+(?:it|so|that|this)|\s+beaten\s+(?:you|me|us|them|him|her)\s+to\s+it)?"
     r"(?:\s+(?:already|yet))?(?=\s*(?:[,.;:!?)]|$)|\s+[-\u2013\u2014]\s)", re.I | re.M)
+#: a condition that the one who should have done the deed forgot it, the deed elided ("switch it
+#: off if I forgot to", "in case we forgot", "if the kids forgot - they usually do"): whether the
+#: instruction's result is still to come about, as "unless it already is" asks; a forgetting with
+#: an object of its own ("if you forgot the keys", "if I forgot anything") is no such clause
+_FORGOT = re.compile(
+    rf"\b(?:if|in\s+case)\s+(?:{_DOER}|{_NAMED_DOER})\s+(?:(?:might|may|must)\s+have\s+|has\s+|have\s+|had\s+)?"
+    r"(?:forgot|forgotten)(?:\s+to)?(?=\s*(?:[,.;:!?)]|$)|\s+[-\u2013\u2014]\s)", re.I | re.M)
 
 
 #: a heading that is a free relative, its verb ending it at a colon or a dash ("Where things are:
@@ -2132,7 +2139,7 @@ def unquote(text: str) -> str:
     plain = _SHARED_SUBJECT.sub(_shared_pronoun, plain)
     plain = _DROPPED_DOUBT.sub(lambda m: f"{m.group(1)}{_match_case(m.group(2), 'it')} {m.group(2).lower()}", plain)
     plain = _CASE_WHERE.sub(lambda m: _match_case(m.group(0), "if"), _WHERE_HEADING.sub(r"\1", plain))
-    plain = _ACTED_STATE.sub(_acted_state, _DONE_ALREADY.sub(lambda m: _match_case(m.group(0), "unless it already is"), plain))
+    plain = _ACTED_STATE.sub(_acted_state, _FORGOT.sub(lambda m: _match_case(m.group(0), "unless it already is"), _DONE_ALREADY.sub(lambda m: _match_case(m.group(0), "unless it already is"), plain)))
     plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)
     plain = _KIND_OF.sub(r"\1 ", _STATE_CASE.sub(_state_case, plain))
     plain = _STATE_AND_CLAUSE.sub(lambda m: f"{m.group(1)}if it is {m.group(2).lower()} {m.group(3).lower()} {m.group(4)}, ",
