@@ -1752,6 +1752,10 @@ class _Reader:
         if self.names_kind(j) or nxt in PART_HEADS or nxt in FURNITURE_PARTS \
                 or nxt in TIME_HEADS or not raw[j].isalpha():
             return False
+        # a placeholder head names the thing its modifier names ("the scarf thing", "that kettle
+        # thingy", "the fan contraption"), unless it is a matter ("the scarf thing about ...")
+        if nxt in PLACEHOLDER_HEADS and words[j + 1:j + 2] not in (["about"], ["that"]):
+            return False
         if gaps[j] == "-":
             return True
         if self.material(i) or not compound_head(raw[j], raw[i] != words[i]) or self.verb(j):
