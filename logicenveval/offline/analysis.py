@@ -2248,7 +2248,19 @@ class _Reader:
         of "use", which says nothing of the thing's state."""
         rest = tuple(words[k + 1:])
         return not rest or k + 1 in self.commas or rest[0] in GOING_ON \
-            or any(rest[:len(a)] == a for a in _ADVERBIAL_WORDS)
+            or any(rest[:len(a)] == a for a in _ADVERBIAL_WORDS) or self._used_once(words, k)
+
+    @staticmethod
+    def _used_once(words: list[str], k: int) -> bool:
+        """Whether "used" at `k` with a complement of what for or by whom tells of one occasion, not
+        of the thing's purpose: in the past or the perfect, or opening its clause as a question
+        does ("Used for tea?", "if it was used by a guest", "if the cup has been used for
+        coffee"), and not for a deed ("is used for wiping" is what it is for)."""
+        rest = words[k + 1:k + 3]
+        if len(rest) < 2 or rest[0] not in ("for", "by") or rest[1].endswith("ing"):
+            return False
+        before = words[k - 1] if k > 0 else ""
+        return before in ("was", "were", "been") or k == 0 or before in LEAD_INS or before in ("-", ",")
 
     def _past_modifiers(self, words: list[str], j: int) -> int:
         """The word before the modifier nouns (at most `MODIFIER_NOUNS`) that end at `j`: in "a full
