@@ -601,9 +601,29 @@ class _Reader:
                       if tuple(words[i:i + n]) in self.phrases), (1, None))
         closed = self.closed_match(i, stretch) or self.vessel_of(i, stretch) or self.contents_vessel(i, stretch)
         found = closed if closed is not None and closed[0] > found[0] else found
+        if found[0] < 2 and stretch >= 2 and (by_synonym := self.head_by_synonym(i)) is not None:
+            found = by_synonym
         if found[1] is None:
             return self.placeholder(i, stretch) or found
         return (found[0], None) if self.room_as_place(i, found[0]) else found
+
+    def head_by_synonym(self, i: int) -> tuple[int, str] | None:
+        """(2, kind) when word `i` and the next make a kind's two-word name with the next said by a
+        synonym of its head: "the wall cupboard" is the wall cabinet, "the TV cupboard" the TV
+        cabinet, "the bedside cupboard" the bedside cabinet, as "cupboard" is a name of the
+        cabinet, "the medicine cupboard" the medicine cabinet; the synonym must name its kind
+        outright, and the modifier must make a name with that kind's own head ("the kitchen
+        cupboard" is a cupboard)."""
+        words = self.text.words
+        synonym = self.phrases.get((words[i + 1],))
+        if synonym is None:
+            return None
+        for text in (synonym, *_own(self.catalog.categories[synonym])):
+            head = words_of(text)[-1]
+            kind = self.phrases.get((words[i], head)) if head != words[i + 1] else None
+            if kind is not None and kind != synonym:
+                return 2, kind
+        return None
 
     def placeholder(self, i: int, stretch: int) -> tuple[int, str] | None:
         """(2, kind) when word `i`, naming no kind itself, opens the two-word own name of one kind
