@@ -625,6 +625,23 @@ class _Reader:
                 return 2, kind
         return None
 
+    def wall_sibling(self, k: int, category: str) -> str | None:
+        """The kind hung on a wall that `category`'s thing is when its own phrase, from word `k`,
+        says it hangs there: "on the wall", or "over" / "above" another thing ("the cupboard over
+        the kettle", "the cabinet on the wall by the door"): the kind whose name is "wall" and
+        the name's head (`Category.placement` "wall": the wall cabinet), where the catalog has one;
+        a cupboard under or by something stays a cupboard."""
+        words, gaps = self.text.words, self.text.gaps
+        if k + 2 >= len(words) or any(gaps[j] != " " for j in (k, k + 1, k + 2)):
+            return None
+        if not (words[k:k + 3] == ["on", "the", "wall"] or words[k] in ("over", "above") and words[k + 1] in _ARTICLES):
+            return None
+        for text in (category, *_own(self.catalog.categories[category])):
+            kind = self.phrases.get(("wall", words_of(text)[-1]))
+            if kind is not None and kind != category and "wall" in self.catalog.categories[kind].placement:
+                return kind
+        return None
+
     def placeholder(self, i: int, stretch: int) -> tuple[int, str] | None:
         """(2, kind) when word `i`, naming no kind itself, opens the two-word own name of one kind
         only and a placeholder head follows it (`PLACEHOLDER_HEADS`): "the drying thing" is the
@@ -2714,6 +2731,8 @@ class _Reader:
                 continue
             if shared is None:
                 n, category = self.compound(i, n, category)
+            if (on_wall := self.wall_sibling(i + n, category)) is not None:
+                category = on_wall  # "the cupboard over the kettle": the wall cabinet
             room = next((len(r) for r in self.room_ids if tuple(words[i:i + len(r)]) == r and len(r) > n), 0)
             if room:
                 i += room  # "Laundry room - FAQ": the task's room, no laundry in it
