@@ -2253,9 +2253,9 @@ class _Reader:
     @staticmethod
     def _used_once(words: list[str], k: int) -> bool:
         """Whether "used" at `k` with a complement of what for or by whom tells of one occasion, not
-        of the thing's purpose: in the past or the perfect, or opening its clause as a question
-        does ("Used for tea?", "if it was used by a guest", "if the cup has been used for
-        coffee"), and not for a deed ("is used for wiping" is what it is for)."""
+        of the thing's purpose: in the past or the perfect, or opening its clause ("if it was used
+        by a guest", "if the cup has been used for coffee"), and not for a deed ("is used for
+        wiping" is what it is for)."""
         rest = words[k + 1:k + 3]
         if len(rest) < 2 or rest[0] not in ("for", "by") or rest[1].endswith("ing"):
             return False
