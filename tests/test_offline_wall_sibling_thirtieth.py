@@ -5,9 +5,7 @@ wall whose name is "wall" and its head, where the catalog has one (`naming._Read
 described their wall cabinets so: dev 47's ambulance station day room, dev 51's pool plant room,
 dev 53's substation battery room, dev 54's stained glass studio). Rows written here in other
 registers before the rule and measured then: 0 of 6; after: 6 of 6. Near misses: a cupboard under
-or by something stays a cupboard; a shelf over the sink stays the wall shelf it was. Left: "if it
-is open" after "the cupboard over the kettle" (and "If the cupboard over the kettle is open") asks
-of the kettle: a state's subject after "over", "above" or "next to" is the nearest noun."""
+or by something stays a cupboard; a shelf over the sink stays the wall shelf it was."""
 
 from __future__ import annotations
 
@@ -32,8 +30,9 @@ def test_a_cabinet_hung_on_a_wall_is_the_wall_cabinet(text: str, rooms: tuple[st
 
 
 def test_the_wall_cabinets_state_is_asked() -> None:
-    got = factors(ON_THE_WALL[1][0], ON_THE_WALL[1][1])
-    assert any("state(wall_cabinet, open)" in values for values in got.values()), got
+    for text, rooms in ON_THE_WALL[:2]:
+        got = factors(text, rooms)
+        assert any("state(wall_cabinet, open)" in values for values in got.values()), got
 
 
 @pytest.mark.parametrize("text", ["Put it in the cupboard under the sink.", "The cupboard by the wall is open; close it."])

@@ -448,6 +448,22 @@ class Lexicon:
         for head, names in heads.items():
             if head not in lex.phrases:
                 lex.phrases[head] = set(names)  # ambiguous heads are resolved by recency
+        # "the wall cupboard", "the cupboard" for the wall cabinet: a head said by a one-word
+        # synonym of the kind the head names ("cupboard" of the cabinet), as `offline.naming` names
+        # it (`_Reader.head_by_synonym`, `_Reader.wall_sibling`), when that word names no role of
+        # its own
+        by_synonym: dict[tuple[str, ...], set[str]] = {}
+        for name, role in roles.items():
+            cat = catalog.get(role["category"])
+            for n in {role["category"], *(cat.synonyms if cat else ())}:
+                phrase = words_of(n)
+                head_kind = catalog.get(phrase[-1]) if len(phrase) > 1 and not is_wordnet_name(n) else None
+                for synonym in head_kind.synonyms if head_kind is not None else ():
+                    said = words_of(synonym)
+                    for key in (said, (*phrase[:-1], *said)) if len(said) == 1 else ():
+                        if key not in lex.phrases:
+                            by_synonym.setdefault(key, set()).add(name)
+        lex.phrases.update(by_synonym)
         # "the workbench ... the bench": a one-word name ending in another one-word catalog name is
         # also found by that tail, when no role is named so (`offline.naming` reads it alike)
         tails = {p[0] for p in _one_word_names(catalog)}
