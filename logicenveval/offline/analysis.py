@@ -1484,7 +1484,12 @@ class _Reader:
             if m.kind not in ("role", "pronoun"):
                 continue
             facts += self._location(words, mentions, idx, negated)
-            if not (m.kind == "role" and _prep_within(words, m, WHERE_PREPS | SPATIAL_PREPS) and any(
+            # (a place of "next to", "against" only right after its head: "the mug next to the
+            # kettle"; further on, as in an aside, the state is carried as before: "the lamp in the
+            # hall (by the door, next to the coats) is on")
+            beside = _prep_within(words, m, BESIDE_PREPS) and any(
+                x.kind == "role" and m.start - 4 <= x.end <= m.start for x in mentions)
+            if not (m.kind == "role" and (_prep_within(words, m, WHERE_PREPS | SPATIAL_PREPS) or beside) and any(
                     x.kind in ("role", "pronoun") and x.end <= m.start for x in mentions)
                     and words[m.end : m.end + 1] not in (["which"], ["that"])):
                 # "Candle on the coffee table still lit": the state is the candle's, not its place's
@@ -2279,8 +2284,12 @@ class _Reader:
         """End of a short prepositional phrase `on the coffee table` starting at k, else 0; after a
         preposition of place only (`SPATIAL_PREPS`), also without an article, as notes write it
         ("Desk lamp over chart table left on": the state is the lamp's)."""
-        if words[k] not in PREP_ON | PREP_IN | {"at", "by", "near", "under", "next"} | SPATIAL_PREPS:
+        if words[k] not in PREP_ON | PREP_IN | {"at", "by", "near", "under"} | SPATIAL_PREPS | BESIDE_PREPS:
             return 0
+        if words[k] == "next":
+            if words[k + 1 : k + 2] != ["to"]:
+                return 0  # "the bin next week": no place
+            k += 1  # "the mug next to the kettle": one preposition
         if words[k + 1 : k + 2] in (["there"], ["here"]):
             return k + 2  # "the ceiling fan in there is broken", "the mop out here is wet": the state is the fan's
         toks = [(w, 0, 0) for w in words[k + 1 : k + 6]]
@@ -2295,7 +2304,7 @@ class _Reader:
         while end < min(j + 2, len(words)) and words[end].isalpha() and words[end] not in (
                 STATE_WORDS.keys() | DESCRIPTIVE | NEGATIONS | MOTION | PREP_ON | PREP_IN | {"and", "or", "but"}):
             end += 1
-        return end if (j > k + 1 or words[k] in SPATIAL_PREPS) and end > j else 0
+        return end if (j > k + 1 or words[k] in SPATIAL_PREPS | BESIDE_PREPS) and end > j else 0
 
     def _attribute(self, words: list[str], m: Mention, negated: bool) -> list[Fact]:
         k = m.end
@@ -3266,6 +3275,10 @@ SWITCHED_SENSE = {"open": "toggled_on"}
 #: a bare noun phrase is a place even without an article ("lamp over chart table", "kettle
 #: beside sink": `_pp_at`)
 SPATIAL_PREPS = frozenset({"over", "above", "below", "beneath", "beside", "behind", "under", "near"})
+#: the other words of place a noun phrase's modifier opens ("the mug next to the kettle", "the mop
+#: against the fridge", "the towel alongside the sink"): the state said after it is the head's,
+#: as after `SPATIAL_PREPS`
+BESIDE_PREPS = frozenset({"next", "against", "alongside", "opposite"})
 
 
 def _capabilities(brief: Mapping[str, Any], catalog: Catalog) -> dict[str, frozenset[str]]:
