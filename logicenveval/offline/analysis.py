@@ -857,6 +857,15 @@ def _placed(words: list[str], m: Mention) -> bool:
     return _prep_within(words, m, PLACE_PREPS)
 
 
+def _beside_its_head(words: list[str], m: Mention, mentions: list[Mention]) -> bool:
+    """The mention is the place of a "next to" / "against" (`BESIDE_PREPS`) right after a thing's
+    name, its head ("the mug next to the kettle"); further on, as in an aside, it is not, and a
+    state said after it is carried as before ("the lamp in the hall (by the door, next to the
+    coats) is on")."""
+    return _prep_within(words, m, BESIDE_PREPS) and any(
+        x.kind == "role" and m.start - 4 <= x.end <= m.start for x in mentions)
+
+
 def _prep_within(words: list[str], m: Mention, preps: frozenset[str] | set[str]) -> bool:
     """One of `preps` within three words before the mention, and not one with no object of its
     own, right before "and" / "but" ("a towel inside and the dryer has stopped")."""
@@ -1484,12 +1493,8 @@ class _Reader:
             if m.kind not in ("role", "pronoun"):
                 continue
             facts += self._location(words, mentions, idx, negated)
-            # (a place of "next to", "against" only right after its head: "the mug next to the
-            # kettle"; further on, as in an aside, the state is carried as before: "the lamp in the
-            # hall (by the door, next to the coats) is on")
-            beside = _prep_within(words, m, BESIDE_PREPS) and any(
-                x.kind == "role" and m.start - 4 <= x.end <= m.start for x in mentions)
-            if not (m.kind == "role" and (_prep_within(words, m, WHERE_PREPS | SPATIAL_PREPS) or beside) and any(
+            if not (m.kind == "role" and (_prep_within(words, m, WHERE_PREPS | SPATIAL_PREPS)
+                                          or _beside_its_head(words, m, mentions)) and any(
                     x.kind in ("role", "pronoun") and x.end <= m.start for x in mentions)
                     and words[m.end : m.end + 1] not in (["which"], ["that"])):
                 # "Candle on the coffee table still lit": the state is the candle's, not its place's

@@ -616,13 +616,18 @@ class _Reader:
         cupboard" is a cupboard)."""
         words = self.text.words
         synonym = self.phrases.get((words[i + 1],))
-        if synonym is None:
-            return None
-        for text in (synonym, *_own(self.catalog.categories[synonym])):
-            head = words_of(text)[-1]
-            kind = self.phrases.get((words[i], head)) if head != words[i + 1] else None
-            if kind is not None and kind != synonym:
-                return 2, kind
+        kind = self.named_with(words[i], synonym) if synonym is not None else None
+        return None if kind is None else (2, kind)
+
+    def named_with(self, modifier: str, category: str, placement: str | None = None) -> str | None:
+        """The kind other than `category` whose two-word name is `modifier` and the head of one of
+        `category`'s own names ("wall" and "cabinet": the wall cabinet), and, with `placement`,
+        that the catalog places there (`head_by_synonym`, `wall_sibling`)."""
+        for text in (category, *_own(self.catalog.categories[category])):
+            kind = self.phrases.get((modifier, words_of(text)[-1]))
+            if kind is not None and kind != category and (
+                    placement is None or placement in self.catalog.categories[kind].placement):
+                return kind
         return None
 
     def wall_sibling(self, k: int, category: str) -> str | None:
@@ -636,11 +641,7 @@ class _Reader:
             return None
         if not (words[k:k + 3] == ["on", "the", "wall"] or words[k] in ("over", "above") and words[k + 1] in _ARTICLES):
             return None
-        for text in (category, *_own(self.catalog.categories[category])):
-            kind = self.phrases.get(("wall", words_of(text)[-1]))
-            if kind is not None and kind != category and "wall" in self.catalog.categories[kind].placement:
-                return kind
-        return None
+        return self.named_with("wall", category, placement="wall")
 
     def placeholder(self, i: int, stretch: int) -> tuple[int, str] | None:
         """(2, kind) when word `i`, naming no kind itself, opens the two-word own name of one kind
@@ -1061,7 +1062,8 @@ class _Reader:
         if written == word:  # a singular never names a plural-only kind: "Marco's glass" is no spectacles
             candidates = [c for c in candidates if c is None or not self.plural_only(c, word)] or candidates
         said = self.sentence_context(i)
-        near = self.kinds_said_near(i)
+        # (read only where there is a choice: with one candidate no score is compared)
+        near = self.kinds_said_near(i) if len(candidates) > 1 else set()
 
         writing = self.written_in(i)
         unlisted = self.sort_named(i, [c for c in candidates if c is not None])

@@ -641,7 +641,7 @@ _DONE_ALREADY = re.compile(
     rf"|unless\s+{_OTHER_DOER}(?:\s+else)?(?:\s+already)?(?:\s+(?:has|have|had|did)|'s|’s|'ve|’ve)"
     rf"|if\s+(?:no\s+one|no-one|nobody)(?:\s+else)?(?:\s+already)?(?:\s+(?:has|have|had|did)|'s|’s)"
     rf"|if\s+{_OTHER_DOER}(?:\s+else)?\s+(?:has|have|had|did)(?:\s+not|n't|n’t))"
-    r"(?:\s+(?:already|yet))?(?:\s+done\s+(?:it|so|that|this)|\s+beaten\s+(?:you|me|us|them|him|her)\s+to\s+it)?"
+    rf"(?:\s+(?:already|yet))?(?:\s+{_DEED})?"
     r"(?:\s+(?:already|yet))?(?=\s*(?:[,.;:!?)]|$)|\s+[-\u2013\u2014]\s)", re.I | re.M)
 #: a condition that the one who should have done the deed forgot it, the deed elided ("switch it
 #: off if I forgot to", "in case we forgot", "if the kids forgot - they usually do"): whether the
@@ -2139,7 +2139,9 @@ def unquote(text: str) -> str:
     plain = _SHARED_SUBJECT.sub(_shared_pronoun, plain)
     plain = _DROPPED_DOUBT.sub(lambda m: f"{m.group(1)}{_match_case(m.group(2), 'it')} {m.group(2).lower()}", plain)
     plain = _CASE_WHERE.sub(lambda m: _match_case(m.group(0), "if"), _WHERE_HEADING.sub(r"\1", plain))
-    plain = _ACTED_STATE.sub(_acted_state, _FORGOT.sub(lambda m: _match_case(m.group(0), "unless it already is"), _DONE_ALREADY.sub(lambda m: _match_case(m.group(0), "unless it already is"), plain)))
+    for elided in (_DONE_ALREADY, _FORGOT):  # the deed elided: does its result hold already?
+        plain = elided.sub(lambda m: _match_case(m.group(0), "unless it already is"), plain)
+    plain = _ACTED_STATE.sub(_acted_state, plain)
     plain = _GOT_DOUBT.sub(lambda m: f"there may or may not be {m.group('thing')}", plain)
     plain = _KIND_OF.sub(r"\1 ", _STATE_CASE.sub(_state_case, plain))
     plain = _STATE_AND_CLAUSE.sub(lambda m: f"{m.group(1)}if it is {m.group(2).lower()} {m.group(3).lower()} {m.group(4)}, ",
