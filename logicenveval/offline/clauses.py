@@ -680,8 +680,9 @@ def _split(sentence: str) -> list[tuple[str, str | None, str]]:
     cond, cons = (tail[: m.start()], tail[m.end():]) if m else (tail, "")
     if cue in POINTING_CUES and cond.strip(" ."):
         # "If so wash it.", "if so just leave it": a cue that is a whole condition by itself
-        # needs no comma; what follows it is its instruction
-        cond, cons = "", tail.lstrip()
+        # needs no comma; what follows it is its instruction, comma and all (no alternative after
+        # the comma joins the condition: "if so or the bin is full," kept no word twice)
+        cond, cons, m = "", tail.lstrip(), None
     # "if its not in there put it in there": no comma; or before the comma of an alternative ("if
     # its dirty put it in the sink, otherwise in the cupboard": the instruction came before it)
     before_else = m is not None and re.match(
