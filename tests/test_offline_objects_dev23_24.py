@@ -102,13 +102,16 @@ HOME_AFTER_CUE: tuple[str, ...] = (
     "The water bottle lives on the bench. When it's empty, fill it at the sink and put it back on the bench.",
 )
 
-#: near misses: the cue in the bottle's own block, or a text of one block, still asks where it is
+#: near misses: the cue in the bottle's own block, or in a text of one block after the bottle's
+#: home, still asks where it is (since the thirty-first session a cue looks back: in a text of one
+#: block, "...; anywhere else, leave it. The water bottle lives on the bench." leaves the home
+#: settled, tests/test_offline_cue_looks_back_thirtyfirst.py)
 HOME_AFTER_CUE_NEAR: tuple[str, ...] = (
     "Jobs:\n- Hat. If the hat is on the floor, hang it on the coat hook.\n- Bottle. The water bottle "
     "lives on the bench. If it's on the bench and empty, fill it at the sink and stand it back on the "
     "bench; if it's anywhere else, leave it.",
-    "If the hat is on the floor, hang it on the coat hook; anywhere else, leave it. The water bottle lives "
-    "on the bench. If it's on the bench and empty, fill it at the sink and stand it back on the bench.",
+    "The water bottle lives on the bench. If the hat is on the floor, hang it on the coat hook; anywhere "
+    "else, leave it. If it's on the bench and empty, fill it at the sink and stand it back on the bench.",
 )
 
 _HUT_ROLES = {"hat": {"category": "hat"}, "coat_hook": {"category": "coat_hook"},

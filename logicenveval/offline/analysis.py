@@ -4859,6 +4859,8 @@ def _at(fact: str) -> tuple[str, str] | None:
 
 #: a line that opens a list item or a new paragraph: where a bulleted note moves on to its next thing
 _BLOCK_BREAK = re.compile(r"\n\s*\n|\n(?=\s*(?:[-*\u2022\u2013]|\d+[.)])\s)")
+#: where a sentence of a block ends, for the sentences a cue of somewhere else looks back over
+_SENTENCE_BREAK = re.compile(r"(?<=[.!?])\s+|\n")
 
 
 def _elsewhere_cued(description: str) -> Callable[[str], bool]:
@@ -4866,23 +4868,35 @@ def _elsewhere_cued(description: str) -> Callable[[str], bool]:
     to do") may speak of: in a text of one block, every thing; in a text of paragraphs or list
     items, the things named in the blocks that say a cue (`_BLOCK_BREAK`), so that one item's
     "anywhere else" leaves another item's home ("the water bottle lives on the bench") settled.
-    A thing whose role's words no block says is taken as spoken of (the old, text-wide reading)."""
+    A thing whose role's words no block says is taken as spoken of (the old, text-wide reading);
+    one said by some of its words only ("the soap" of soap_bar) is found by them. A cue looks back: within its block it speaks of the things named up to the end of its
+    sentence, never of one named only after it ("Torch on the desk? Hang it up. Anywhere else,
+    leave it. The first aid kit is kept on the shelf." leaves the kit's home settled)."""
     # "There's always one left by the door, isn't there, Maureen.": a tag asks for agreement and
     # says nothing of anywhere else, so its "not there" is no cue of another place (`_TAG`)
-    said = [[w for w, _, _ in tokens(_TAG.sub(" ", expand(b)))] for b in _BLOCK_BREAK.split(description) if b.strip()]
-    blocks = [set(ws) for ws in said]
-    texts = [" ".join(ws) for ws in said]
-    flags = [any(re.search(rf"\b{cue}\b", t) for cue in ELSEWHERE + ("wherever",)) for t in texts]
+    said = [[[w for w, _, _ in tokens(_TAG.sub(" ", expand(s)))] for s in _SENTENCE_BREAK.split(b)]
+            for b in _BLOCK_BREAK.split(description) if b.strip()]
+    blocks = [{w for ws in sents for w in ws} for sents in said]
+    last = [max((i for i, ws in enumerate(sents) if _says_elsewhere(" ".join(ws))), default=-1) for sents in said]
+    before = [{w for ws in sents[:i + 1] for w in ws} for sents, i in zip(said, last, strict=True)]
 
     def cued(role: str) -> bool:
-        if not any(flags):
+        words = set(words_of(role))
+        if not any(i >= 0 for i in last):
             return False
-        if len(blocks) == 1:
+        # a role named by other words than its name ("the soap" for soap_bar) is found by any of them
+        said: Callable[[set[str]], bool] = (lambda b: words <= b) if any(words <= b for b in blocks) \
+            else (lambda b: bool(words & b))
+        if not any(said(b) for b in blocks):
             return True
-        named = [set(words_of(role)) <= b for b in blocks]
-        return not any(named) or any(n and f for n, f in zip(named, flags, strict=True))
+        return any(said(b) for b in before)
 
     return cued
+
+
+def _says_elsewhere(text: str) -> bool:
+    """Whether words joined by spaces say a cue of somewhere else (`ELSEWHERE`, "wherever")."""
+    return any(re.search(rf"\b{cue}\b", text) for cue in ELSEWHERE + ("wherever",))
 
 
 def _drop_home(f: Factor, kept: set[str]) -> None:
