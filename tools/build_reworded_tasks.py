@@ -5,7 +5,7 @@ held-out set `reader_holdout`, the second unseen set `reader_dev3`, the fourth d
 held-out set `reader_holdout2`, the fifth development set `reader_dev5`, the sixth development set `reader_dev6`, the seventh
 development set `reader_dev7`, the eighth development set `reader_dev8`, the ninth development set `reader_dev9`, the
 tenth development set `reader_dev10`, the eleventh development set `reader_dev11`, the twelfth development set
-`reader_dev12`, the thirteenth `reader_dev13`, the fourteenth `reader_dev14`, the fifteenth `reader_dev15`, the sixteenth `reader_dev16`, the seventeenth `reader_dev17`, the eighteenth `reader_dev18`, the nineteenth `reader_dev19`, the twentieth `reader_dev20`, the twenty-first `reader_dev21`, the twenty-second `reader_dev22`, the twenty-third `reader_dev23`, the twenty-fourth `reader_dev24` or the twenty-fifth `reader_dev25`, the twenty-sixth `reader_dev26`, the twenty-seventh `reader_dev27`, the twenty-eighth `reader_dev28`, the twenty-ninth `reader_dev29`, the thirtieth `reader_dev30`, the thirty-first `reader_dev31`, the thirty-second `reader_dev32`, the thirty-third `reader_dev33`, the thirty-fourth `reader_dev34`, the thirty-fifth `reader_dev35`, the thirty-sixth `reader_dev36`, the thirty-seventh `reader_dev37`, the thirty-eighth `reader_dev38`, the thirty-ninth `reader_dev39`, the fortieth `reader_dev40`, the forty-first `reader_dev41`, the forty-second `reader_dev42`, the forty-third `reader_dev43`, the forty-fourth `reader_dev44`, the forty-fifth `reader_dev45`, the forty-sixth `reader_dev46`, the forty-seventh `reader_dev47`, the forty-eighth `reader_dev48`, the forty-ninth `reader_dev49`, the fiftieth `reader_dev50`, the fifty-first `reader_dev51`, the fifty-second `reader_dev52`, the fifty-third `reader_dev53`, the fifty-fourth `reader_dev54`, the fifty-fifth `reader_dev55`, the fifty-sixth `reader_dev56`, the fifty-seventh `reader_dev57`. Its `rewordings.json` holds each rewording once: its new task id, the built-in
+`reader_dev12`, the thirteenth `reader_dev13`, the fourteenth `reader_dev14`, the fifteenth `reader_dev15`, the sixteenth `reader_dev16`, the seventeenth `reader_dev17`, the eighteenth `reader_dev18`, the nineteenth `reader_dev19`, the twentieth `reader_dev20`, the twenty-first `reader_dev21`, the twenty-second `reader_dev22`, the twenty-third `reader_dev23`, the twenty-fourth `reader_dev24` or the twenty-fifth `reader_dev25`, the twenty-sixth `reader_dev26`, the twenty-seventh `reader_dev27`, the twenty-eighth `reader_dev28`, the twenty-ninth `reader_dev29`, the thirtieth `reader_dev30`, the thirty-first `reader_dev31`, the thirty-second `reader_dev32`, the thirty-third `reader_dev33`, the thirty-fourth `reader_dev34`, the thirty-fifth `reader_dev35`, the thirty-sixth `reader_dev36`, the thirty-seventh `reader_dev37`, the thirty-eighth `reader_dev38`, the thirty-ninth `reader_dev39`, the fortieth `reader_dev40`, the forty-first `reader_dev41`, the forty-second `reader_dev42`, the forty-third `reader_dev43`, the forty-fourth `reader_dev44`, the forty-fifth `reader_dev45`, the forty-sixth `reader_dev46`, the forty-seventh `reader_dev47`, the forty-eighth `reader_dev48`, the forty-ninth `reader_dev49`, the fiftieth `reader_dev50`, the fifty-first `reader_dev51`, the fifty-second `reader_dev52`, the fifty-third `reader_dev53`, the fifty-fourth `reader_dev54`, the fifty-fifth `reader_dev55`, the fifty-sixth `reader_dev56`, the fifty-seventh `reader_dev57`, the fifty-eighth `reader_dev58`. Its `rewordings.json` holds each rewording once: its new task id, the built-in
 task it rewords, its register, the new description and, for every constraint fact of the
 original, the words of the new description that assert it (`says` must quote the description,
 docs/task-format.md). A task's policies must lie inside its own folder (`benchmark.policy_path`),
@@ -72,6 +72,7 @@ nothing but `id`, `description` and the constraints' `says` differs.
     python tools/build_reworded_tasks.py --set reader_dev55     # the fifty-fifth development set's folders
     python tools/build_reworded_tasks.py --set reader_dev56     # the fifty-sixth development set's folders
     python tools/build_reworded_tasks.py --set reader_dev57     # the fifty-seventh development set's folders
+    python tools/build_reworded_tasks.py --set reader_dev58     # the fifty-eighth development set's folders
     python tools/build_reworded_tasks.py --mutants  # also ship killable_mutants.json (minutes)
 
 Folders of ids no longer listed are removed, so the directory always equals the JSON.
@@ -101,7 +102,7 @@ SETS = ("reader_dev", "reader_holdout", "reader_dev3", "reader_dev4", "reader_ho
         "reader_dev40", "reader_dev41", "reader_dev42", "reader_dev43", "reader_dev44",
         "reader_dev45", "reader_dev46", "reader_dev47", "reader_dev48", "reader_dev49", "reader_dev50",
         "reader_dev51", "reader_dev52", "reader_dev53", "reader_dev54", "reader_dev55", "reader_dev56",
-        "reader_dev57")
+        "reader_dev57", "reader_dev58")
 BUILTIN = ROOT / "benchmark_data" / "tasks"
 
 
