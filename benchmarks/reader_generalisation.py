@@ -480,6 +480,22 @@ prints LogCov / SceVR / FauDR for each, then per task:
   room note, a flower farm's sorting shed note, a Christmas tree farm's netting shed card). Fresh
   (`FRESH`) until measured ten times (the thirtieth session, after its twelfth reader commit),
   then a development set;
+- `dev57 reworded` and `dev57 new`: tests/data/reader_dev57/ — the fifty-seventh development set,
+  written in the thirty-first session (beside dev 58, by helpers who never read or ran the reader)
+  in registers of health and care work and the English of a Malayalam speaker: one rewording each
+  of 3 built-in descriptions (a children's ward play specialist's note, a care home's en-suite check
+  card, a vet nurse's in-patient care sheet) and six new tasks in rooms none of the sets above use
+  (a dental decontamination room sheet, a care home assisted bathroom card, an endoscopy recovery
+  checklist, a dementia day centre activities room note, a hydrotherapy pool close-down, a birth
+  room turnaround card). Fresh (`FRESH`) until measured ten times, then a development set;
+- `dev58 reworded` and `dev58 new`: tests/data/reader_dev58/ — the fifty-eighth development set,
+  written in the thirty-first session beside dev 57 in registers of office, legal and
+  administrative work and the English of a Sinhala speaker: one rewording each of 3 built-in
+  descriptions (an office's clear desk policy, a house-sitting agreement's schedule, a service
+  level agreement's schedule) and six new tasks in rooms none of the sets above use (an accountancy
+  payroll room note, a solicitors' partners' room handover, a records office search room closing
+  procedure, a polling station's close-of-poll notes, an advice centre waiting room's notes, a call
+  centre training room note). Fresh (`FRESH`) until measured ten times, then a development set;
 - `held-out2 reworded` and `held-out2 new`: tests/data/reader_holdout2/ — the second held-out set,
   written after all of the above without reading the reader: one rewording each of 12 built-in
   descriptions and eight new tasks, each in a register no earlier set used, the new tasks in rooms
@@ -512,7 +528,7 @@ was written for (a rule too wide shows as a task of another set falling):
     python benchmarks/reader_generalisation.py --dev-only --compare before.json # with the rule
 
 `--dev-only` also leaves out the fresh development sets nobody has tuned on yet (`FRESH`: the
-sets written in a session, until measured: none now; dev 25 and
+sets written in a session, until measured: now dev 57 and dev 58; dev 25 and
 dev 26 left it in the fifteenth session after their third measurement, dev 27 and dev 28 after their
 fifth, dev 29 and dev 30 in the sixteenth after their sixth, dev 31 and dev 32 in the
 seventeenth after their seventh, dev 33 and dev 34 in the eighteenth after their eighth, dev 35 and dev 36 in the
@@ -660,6 +676,8 @@ DEV53 = ROOT / "tests" / "data" / "reader_dev53"
 DEV54 = ROOT / "tests" / "data" / "reader_dev54"
 DEV55 = ROOT / "tests" / "data" / "reader_dev55"
 DEV56 = ROOT / "tests" / "data" / "reader_dev56"
+DEV57 = ROOT / "tests" / "data" / "reader_dev57"
+DEV58 = ROOT / "tests" / "data" / "reader_dev58"
 HOLDOUT2 = ROOT / "tests" / "data" / "reader_holdout2"
 #: (row name, tasks folder; None = the built-in tasks)
 SETS: tuple[tuple[str, Path | None], ...] = (
@@ -719,6 +737,8 @@ SETS: tuple[tuple[str, Path | None], ...] = (
     ("dev54 reworded", DEV54 / "tasks_reworded"), ("dev54 new", DEV54 / "tasks_new"),
     ("dev55 reworded", DEV55 / "tasks_reworded"), ("dev55 new", DEV55 / "tasks_new"),
     ("dev56 reworded", DEV56 / "tasks_reworded"), ("dev56 new", DEV56 / "tasks_new"),
+    ("dev57 reworded", DEV57 / "tasks_reworded"), ("dev57 new", DEV57 / "tasks_new"),
+    ("dev58 reworded", DEV58 / "tasks_reworded"), ("dev58 new", DEV58 / "tasks_new"),
     ("held-out reworded", HOLDOUT / "tasks_reworded"), ("held-out new", HOLDOUT / "tasks_new"),
     ("held-out2 reworded", HOLDOUT2 / "tasks_reworded"), ("held-out2 new", HOLDOUT2 / "tasks_new"),
 )
@@ -727,7 +747,7 @@ SETS: tuple[tuple[str, Path | None], ...] = (
 UNSEEN = frozenset({"held-out reworded", "held-out new", "held-out2 reworded", "held-out2 new"})
 #: development sets nobody has tuned on yet: `--dev-only` leaves them out too (`--fresh` puts
 #: them back), so that a tuner's runs never show them; move a set out of here when its round starts
-FRESH: frozenset[str] = frozenset()
+FRESH: frozenset[str] = frozenset({"dev57 reworded", "dev57 new", "dev58 reworded", "dev58 new"})
 GENERATOR = "logicenvgen"
 
 
