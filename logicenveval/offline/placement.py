@@ -1048,6 +1048,12 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
 _HOLDER_MODIFIERS = 2
 
 
+#: words of `PREP_OF_PLACE` that are a modifier right before a holder's name, which side of a
+#: room or a row it is ("on the front desk", "the back counter", "the left shelf"), and a part only
+#: before "of" ("on the front of the desk"), which `_modified_holder` never reaches with a holder
+SIDE_MODIFIERS = frozenset({"front", "back", "left", "right", "middle", "end", "corner", "side", "other", "same"})
+
+
 def _modified_holder(words: list[str], ms: list[Mention], k: int, hi: int) -> Mention | None:
     """The holder after one or two modifiers from token `k` that name nothing, are words and are
     no verb or preposition ("lives on the props table", "kept on the steel cage trolley", "on the
@@ -1059,7 +1065,7 @@ def _modified_holder(words: list[str], ms: list[Mention], k: int, hi: int) -> Me
     for n in range(1, _HOLDER_MODIFIERS + 1):
         mods = range(k, k + n)
         # (one modifier may be a verb's form too, "the drying rack"; of two, neither is)
-        if k + n >= hi or not all(words[i].isalpha() and words[i] not in AT | PREP_OF_PLACE
+        if k + n >= hi or not all(words[i].isalpha() and words[i] not in AT | PREP_OF_PLACE - SIDE_MODIFIERS
                                   and (n == 1 or words[i] not in VERBS)
                                   and not any(t.start <= i < t.end for t in ms) for i in mods):
             return None
