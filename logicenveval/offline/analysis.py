@@ -3020,6 +3020,22 @@ def _elaborates(clauses: list[Clause], sentence: int, text: str) -> bool:
     return bool(before & (MOTION | _TAKING)) and _verbless(text)
 
 
+#: a request with no verb: a plea closing it, with at most thanks or a place it must not go after
+#: it ("Mugs in the sink please", "... please, not on the pipes", "... pls, ta"), or opening it
+_PLEA = re.compile(
+    r"^(?:\W*(?:please|pls|plz)\b[\s,:-]+(?P<after>.+?)"
+    r"|(?P<before>.*?\w)[\s,]+(?:please|pls|plz)\b(?:\W*(?:(?:and\s+)?(?:thank\s+you|thanks|thx|ta|cheers)\b)?"
+    r"|[\s,]+not\s+(?:on|in|into|onto|under|by)\b[^.;!?]*))\W*$", re.I | re.S)
+
+
+def _verbless_request(text: str) -> bool:
+    """Whether a piece is a request with no verb of its own (`_PLEA`, the rest `_verbless`):
+    "Wet towels in the basket please", "Cups in the dishwasher pls, not in the sink"; not
+    "Plates on the table please clear them away", whose plea opens an instruction of its own."""
+    m = _PLEA.match(text.strip())
+    return m is not None and _verbless(m.group("after") or m.group("before"))
+
+
 def _verbless(text: str) -> bool:
     """Whether a piece has no verb of its own (`_elaborates`): no finite or modal verb, action,
     verb of moving or description, no hedge."""
@@ -3940,6 +3956,10 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # "anything on the floor should go where it belongs - the book on the couch, a toy
                 # in the toy box": a verbless list after a clause that moves things says where each
                 # goes, not where it is
+                facts = [replace(f, goal=True) if f.kind == "location" else f for f in facts]
+            elif role == "statement" and _verbless_request(said):
+                # "Boots on the racks please, not on the pipes", "Cups in the dishwasher pls": a
+                # request with no verb says where things go, not where they are
                 facts = [replace(f, goal=True) if f.kind == "location" else f for f in facts]
             elif (role == "condition" or role == "uncertain" and "been" in {w for w, _, _ in tokens(said)}) \
                     and facts and all(f.goal for f in facts) and not set(w for w, _, _ in tokens(said)) & AGENTS:
