@@ -104,13 +104,15 @@ def determiner(words: list[str], start: int) -> str:
 #: gets left on the floor") says what may be so in a scene, not a fact of this one. Frequency
 #: adverbs always make it; adverbs of a norm only with a verb of an event ("usually gets left"),
 #: since with one of being they state the norm ("Normally a fresh diaper is lying on the table")
+#: Each set holds its words as written and as `lexicon.tokens` gives them ("sometimes" ->
+#: "sometime", "always" -> "alway"), since both readers test them on tokens.
 FREQUENCY = frozenset({"often", "frequently", "regularly", "repeatedly", "constantly", "sometimes",
-                       "occasionally", "forever"})
+                       "occasionally", "forever", "sometime"})
 #: adverbs of a norm; said with a verb of resting they make a place a thing's usual one, a home
 #: ("Upon the stove there commonly stands the saucepan", "On the hook usually hangs the key":
 #: `placement`), with one of an event a habit (`habitual`)
 NORM_ADVERBS = frozenset({"usually", "normally", "generally", "typically", "always", "commonly", "ordinarily",
-                          "customarily"})
+                          "customarily", "alway"})
 EVENT_VERBS = frozenset({"get", "gets", "got", "getting", "end", "ends", "ended", "ending", "wind", "winds",
                          "wound", "fall", "falls", "roll", "rolls", "slip", "slips", "turn", "turns"})
 #: "tends to <verb>"; "keeps <verb>-ing"
@@ -121,11 +123,12 @@ HABITUAL_WORDS = FREQUENCY | NORM_ADVERBS | TEND | KEEP | {"to"}
 
 
 def habitual(words: list[str]) -> bool:
-    """Whether a clause's words are in the habitual aspect (see `FREQUENCY`)."""
+    """Whether a clause's words are in the habitual aspect (see `FREQUENCY`; an adverb of a norm
+    with a participle of leaving a thing carelessly, "is always dropped on the floor", is one too)."""
     for k, w in enumerate(words):
         nxt = words[k + 1] if k + 1 < len(words) else ""
         if (w in FREQUENCY or w in TEND and nxt == "to" or w in KEEP and len(nxt) > 4 and nxt.endswith("ing")
-                or w in NORM_ADVERBS and bool(set(words[k + 1:k + 3]) & EVENT_VERBS)):
+                or w in NORM_ADVERBS and bool(set(words[k + 1:k + 3]) & (EVENT_VERBS | CARELESS))):
             return True
     return False
 PREP_IN = frozenset({"in", "inside", "into", "within"})
