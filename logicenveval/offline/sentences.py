@@ -405,18 +405,23 @@ _SHARED_SUBJECT = re.compile(
 _BE_PRONOUN = {"was": "it", "is": "it", "were": "they", "are": "they"}
 
 
+#: when a question asks its thing ("Still there at six?", "... when you finish?", "... by
+#: lunchtime?", "... tonight?"): a time, which says when to look and nothing of the thing
+_TIME_ADJUNCT = (r"\s+(?:(?:at|by|when|after|before|until|till|once|on|around|come)\s[^?.!\n]{1,40}"
+                 r"|tonight|today|later|this\s+(?:morning|afternoon|evening))")
 #: the same of "there" after "still", as a question of its own ("The mug has been on the desk all
 #: week. Still there? Wash it.", "Still lying there?"): the thing spoken of is asked whether it is
 #: still where it was said to be, "Is it still there?" (a resting participle says no more,
 #: `AT_REST`); without "still" a bare "There?" is left alone
 _STILL_THERE_QUESTION = re.compile(
     r"(?:(?<=^)|(?<=[.!?;]\s)|(?<=\n))(?P<still>still)\s+"
-    rf"(?:(?:{'|'.join(AT_REST)})\s+)?(?P<there>there|here)\?", re.I | re.M)
+    rf"(?:(?:{'|'.join(AT_REST)})\s+)?(?P<there>there|here)(?P<time>{_TIME_ADJUNCT})?\?", re.I | re.M)
 
 
 def _still_there(m: re.Match[str]) -> str:
-    """`_STILL_THERE_QUESTION`'s question with its subject and verb: "Is it still there?"."""
-    return f"{_match_case(m.group('still'), 'is')} it still {m.group('there').lower()}?"
+    """`_STILL_THERE_QUESTION`'s question with its subject and verb: "Is it still there?", its time
+    kept ("Still there at six?": "Is it still there at six?")."""
+    return f"{_match_case(m.group('still'), 'is')} it still {m.group('there').lower()}{m.group('time') or ''}?"
 
 
 def _shared_pronoun(m: re.Match[str]) -> str:
