@@ -72,8 +72,11 @@ ACTIONS = frozenset(
      # informal verbs of putting, by their dictionary senses: "stick" (Oxford: "put (something)
      # somewhere in a quick or careless way": "then just stick it in the sink"), "biff"
      # (NZ/Australian English, to throw: Collins English Dictionary), "plonk" and "bung" (British
-     # informal, to put down carelessly / to throw: Oxford Learner's Dictionaries)
-     "stick", "biff", "plonk", "bung"]
+     # informal, to put down carelessly / to throw: Oxford Learner's Dictionaries); "chuck"
+     # (informal, to throw carelessly), "pop" (British informal, to put somewhere quickly: "pop it
+     # in the fridge") and "sling" (British informal, to throw or put carelessly), the same
+     # dictionaries (thirty-first session)
+     "stick", "biff", "plonk", "bung", "chuck", "pop", "sling"]
 )
 PREP_ON = frozenset({"on", "onto", "atop", "upon"})
 #: what a carried thing comes in: "Tin foil: in case the roll has fallen", "Sunscreen - if the
