@@ -507,6 +507,10 @@ class _Reader:
         self.text = _Text([w for w, _, _ in toks], raw, gaps)
         #: the words written with a capital first letter (`line_of_its_own`: a new line's sentence)
         self.capitalised = frozenset(k for k, (_, a, _) in enumerate(toks) if text[a:a + 1].isupper())
+        #: every word written as a possessive before another ("Today's brew sheet", "the chef's
+        #: prep sheet"; not "the kettle's still on", which `expand` reads as "is"): it stands where
+        #: an article does (`modified`, `leads_noun`)
+        self.possessives = _possessives(description)
         self.fixed = self._fixed_expressions()
         self.named: set[str] = set()  # kinds named outright (by a full name or synonym)
         self.context = self._context()
@@ -529,10 +533,6 @@ class _Reader:
         #: people named as owners ("Marco's glass": `expand` drops the "'s", so they are read
         #: off the text as written) and, per kind, the owners of its mentions in order
         self.possessors = {m.group(1).lower() for m in _POSSESSOR.finditer(description.replace("\u2019", "'"))}
-        #: every word written as a possessive before another ("Today's brew sheet", "the chef's
-        #: prep sheet"; not "the kettle's still on", which `expand` reads as "is"): it stands where
-        #: an article does (`modified`)
-        self.possessives = _possessives(description)
         self.owners: dict[str, list[str]] = {}
         #: kinds named at least once as a particular thing (after a determiner or a count, or in
         #: the singular), not only by a bare plural (`class_of_named`)
@@ -761,12 +761,13 @@ class _Reader:
                      if (joined, *words[i + 2:i + 1 + n]) in self.phrases), None)
 
     def leads_noun(self, i: int, strict: bool = False) -> bool:
-        """Whether word `i` stands where a noun phrase starts: after a determiner, a colour or a
-        count, or (unless `strict`: a word that is as often a verb) at the start of a sentence or
+        """Whether word `i` stands where a noun phrase starts: after a determiner (a possessive
+        too), a colour or a count, or (unless `strict`: a word that is as often a verb) at the start of a sentence or
         list item or after "with", "and"."""
         lead = self.compound_start(i)
         prev = self.text.words[lead - 1] if lead > 0 else ""
-        if prev in _DETERMINERS or prev in COLOR_WORDS or prev in _COUNTS:
+        # (a possessive whose "'s" `expand` dropped is a determiner: "Sam's throw", "the kids' throw")
+        if prev in _DETERMINERS or prev in COLOR_WORDS or prev in _COUNTS or prev in self.possessives:
             return True
         return not strict and (i == 0 or prev in _NOUN_LEADS or bool(
             _ITEM_BREAK.search(self.text.gaps[i]) or _SENTENCE_END.search(self.text.gaps[i])))
