@@ -337,6 +337,17 @@ _RESTING_THERE = re.compile(
     re.I)
 
 
+#: a participle of finding or leaving fronted before its main clause, as a clause of its own ("Found
+#: on the floor, it goes back on its hook", "Left on the desk, the mug goes in the sink", "Found
+#: dirty, ..."): the case the main clause acts in, as "if found on the floor, ..." (then read by
+#: `_ELIDED_SUBJECT`); only a place or a state and a comma after the participle, then a main
+#: clause's subject or verb ("My cup. Left on the desk, next to the scales, as ever." describes)
+_FRONTED_FINDING = re.compile(
+    r"(?:(?<=^)|(?<=[.!?;:]\s)|(?<=\n)|(?<=\s[-\u2013\u2014]\s))([ \t]*)(found|left|spotted|discovered|seen)"
+    r"(?=\s+(?:still\s+|lying\s+|sitting\s+)?(?:(?:on|in|inside|under|behind|beside|by|near|upon)\s[^,.;:!?\n]{1,50}"
+    rf"|(?:{'|'.join(w for w in STATE_WORDS if ' ' not in w)}))\s*,\s+"
+    rf"(?:it|they|this|that|these|those|the|a|an|my|your|our|his|her|their|just|then|please|{'|'.join(sorted(ACTIONS))})\b)",
+    re.I | re.M)
 #: a condition with its subject and copula elided before a participle of finding or leaving (a
 #: work order's "if found on the chair", a manual's "when left open"): "if it is found ..."; so
 #: before one of careless leaving and a place (a checklist's "Pencil -> desk, only if dropped on
@@ -2144,6 +2155,7 @@ def unquote(text: str) -> str:
     plain = _BARE_PARTICIPLE.sub(_participle_state, plain)
     plain = _EMPHATIC_DO.sub("", plain)
     plain = _ELIDED_NOT_STATE.sub(r"\1 it is ", plain)
+    plain = _FRONTED_FINDING.sub(lambda m: f"{m.group(1)}{_match_case(m.group(2), 'if')} {m.group(2).lower()}", plain)
     plain = _ELIDED_END_STATE.sub(r"\1 it is ", _ELIDED_STATE.sub(r"\1 it is ", _ELIDED_SUBJECT.sub(r"\1 it is ", _ELIDED_PLACE.sub(r"\1 it is ", plain))))
     plain = _STILL_THERE_QUESTION.sub(_still_there, _ELIDED_PLACE_QUESTION.sub(_asked_place, plain))
     plain = _DROPPED_SUBJECT.sub(lambda m: f"{m.group(1)} {_DROPPED_PRONOUN[m.group(2).lower()]} ", plain)
