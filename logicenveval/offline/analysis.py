@@ -4889,9 +4889,10 @@ def _elsewhere_cued(description: str) -> Callable[[str], bool]:
     items, the things named in the blocks that say a cue (`_BLOCK_BREAK`), so that one item's
     "anywhere else" leaves another item's home ("the water bottle lives on the bench") settled.
     A thing whose role's words no block says is taken as spoken of (the old, text-wide reading);
-    one said by some of its words only ("the soap" of soap_bar) is found by them. A cue looks back: within its block it speaks of the things named up to the end of its
-    sentence, never of one named only after it ("Torch on the desk? Hang it up. Anywhere else,
-    leave it. The first aid kit is kept on the shelf." leaves the kit's home settled)."""
+    one said by some of its words only ("the soap" of soap_bar) is found by them. A cue looks
+    back: within its block it speaks of the things named up to the end of its sentence, never of
+    one named only after it ("Torch on the desk? Hang it up. Anywhere else, leave it. The first aid
+    kit is kept on the shelf." leaves the kit's home settled)."""
     # "There's always one left by the door, isn't there, Maureen.": a tag asks for agreement and
     # says nothing of anywhere else, so its "not there" is no cue of another place (`_TAG`)
     said = [[[w for w, _, _ in tokens(_TAG.sub(" ", expand(s)))] for s in _SENTENCE_BREAK.split(b)]

@@ -1048,9 +1048,9 @@ def _holder_after(sent: _Sentence, ms: list[Mention], j: int, hi: int) -> tuple[
 _HOLDER_MODIFIERS = 2
 
 
-#: words of `PREP_OF_PLACE` that are a modifier right before a holder's name, which side of a
-#: room or a row it is ("on the front desk", "the back counter", "the left shelf"), and a part only
-#: before "of" ("on the front of the desk"), which `_modified_holder` never reaches with a holder
+#: words of `PREP_OF_PLACE` that are a modifier right before a holder's name, telling which side
+#: of a room or a row it is ("on the front desk", "the back counter", "the left shelf"); before
+#: "of" they name a part of the holder ("on the front of the desk": on the desk all the same)
 SIDE_MODIFIERS = frozenset({"front", "back", "left", "right", "middle", "end", "corner", "side", "other", "same"})
 
 
