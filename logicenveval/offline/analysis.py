@@ -93,6 +93,7 @@ from logicenveval.offline.sentences import (
     TEND,
     TRAILING_ADVERBIALS,
     as_read,
+    as_tokens,
     code_switched,
     determiner,
     expand,
@@ -162,11 +163,10 @@ PERSON_PRONOUNS = frozenset({"she", "he", "her", "him"})
 DEFINITE_REFERENCE = frozenset({"it", "they", "them"}) | PERSON_PRONOUNS
 #: verbs that say where a thing belongs ("it is kept in the vanity", "the remote lives on the
 #: stand"): said of a definite object they are still askable (see `Fact.definite`)
-HOMES = frozenset({"kept", "lives", "live",
+#: (with the words as `tokens` gives them, `as_tokens`: the noun lemma of a verb form, "lives" -> "life")
+HOMES = as_tokens({"kept", "lives", "live",
                    # where a doll or a pet sleeps is its place (`placement.KEEP_VERBS` reads it so)
                    "sleeps", "sleep"})
-#: the words as `tokens` gives them: the noun lemma of a verb form ("lives" -> "life")
-HOMES |= frozenset(singular(w) for w in HOMES)
 DESCRIPTIVE |= frozenset(singular(w) for w in HOMES)
 #: the verbs that put a thing away where it belongs ("put it away", "tidy the mug away",
 #: `_Reader._back_home`); "throw it away", "give it away" send it nowhere it belongs
@@ -2701,9 +2701,9 @@ PEOPLE_NOUNS = frozenset(singular(w) for w in PERMITTED if w not in SUBJECTS) | 
 
 #: adverbs that make what someone does a habit ("always", "never" too: "the door never gets shut")
 _HABIT_ADVERBS = FREQUENCY | NORM_ADVERBS | {"never"}
-#: the adverbs that may stand between "be" and a ranked "one" (`_says_who`), as `tokens` gives
-#: them ("always" -> "alway")
-_RANK_ADVERBS = _HABIT_ADVERBS | {singular(w) for w in _HABIT_ADVERBS} | {"still"}
+#: the adverbs that may stand between "be" and a ranked "one" (`_says_who`; `_HABIT_ADVERBS`
+#: holds them as `tokens` gives them too, "always" -> "alway")
+_RANK_ADVERBS = _HABIT_ADVERBS | {"still"}
 
 
 def _habit_of_others(text: str) -> bool:
@@ -3952,14 +3952,11 @@ def _analyse(brief: Mapping[str, Any], catalog: Catalog) -> TaskAnalysis:
                 # here": a guess that the thing is there at all, as the condition "if it is there"
                 # asks (with a place said before, "there" may be that place: left as it was)
                 facts = [Fact(r, f"exists({r})", "exists") for r in names[:1]]
-            elif role == "statement" and _elaborates(clauses, grammatical, said):
+            elif role == "statement" and (_elaborates(clauses, grammatical, said) or _verbless_request(said)):
                 # "anything on the floor should go where it belongs - the book on the couch, a toy
                 # in the toy box": a verbless list after a clause that moves things says where each
-                # goes, not where it is
-                facts = [replace(f, goal=True) if f.kind == "location" else f for f in facts]
-            elif role == "statement" and _verbless_request(said):
-                # "Boots on the racks please, not on the pipes", "Cups in the dishwasher pls": a
-                # request with no verb says where things go, not where they are
+                # goes, not where it is; so does a request with no verb ("Boots on the racks please,
+                # not on the pipes", "Cups in the dishwasher pls")
                 facts = [replace(f, goal=True) if f.kind == "location" else f for f in facts]
             elif (role == "condition" or role == "uncertain" and "been" in {w for w, _, _ in tokens(said)}) \
                     and facts and all(f.goal for f in facts) and not set(w for w, _, _ in tokens(said)) & AGENTS:
@@ -4899,18 +4896,18 @@ def _elsewhere_cued(description: str) -> Callable[[str], bool]:
             for b in _BLOCK_BREAK.split(description) if b.strip()]
     blocks = [{w for ws in sents for w in ws} for sents in said]
     last = [max((i for i, ws in enumerate(sents) if _says_elsewhere(" ".join(ws))), default=-1) for sents in said]
+    # per block, the words up to the end of its last cue's sentence (none where it says no cue)
     before = [{w for ws in sents[:i + 1] for w in ws} for sents, i in zip(said, last, strict=True)]
+    any_cue = any(i >= 0 for i in last)
 
     def cued(role: str) -> bool:
-        words = set(words_of(role))
-        if not any(i >= 0 for i in last):
+        if not any_cue:
             return False
+        words = set(words_of(role))
         # a role named by other words than its name ("the soap" for soap_bar) is found by any of them
-        said: Callable[[set[str]], bool] = (lambda b: words <= b) if any(words <= b for b in blocks) \
+        names: Callable[[set[str]], bool] = (lambda b: words <= b) if any(words <= b for b in blocks) \
             else (lambda b: bool(words & b))
-        if not any(said(b) for b in blocks):
-            return True
-        return any(said(b) for b in before)
+        return not any(names(b) for b in blocks) or any(names(b) for b in before)
 
     return cued
 

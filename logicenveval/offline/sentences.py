@@ -102,20 +102,25 @@ def determiner(words: list[str], start: int) -> str:
         return words[start - 2]
     return before
 
+def as_tokens(words: set[str]) -> frozenset[str]:
+    """`words` as written and as `lexicon.tokens` gives them (its noun lemma, `singular`)."""
+    return frozenset(words | {singular(w) for w in words})
+
+
 #: habitual aspect: a statement of what keeps happening ("my ball keeps ending up on the floor",
 #: "the scarf tends to slip off the hook", "the remote often lies on the rug", "the towel usually
 #: gets left on the floor") says what may be so in a scene, not a fact of this one. Frequency
 #: adverbs always make it; adverbs of a norm only with a verb of an event ("usually gets left"),
 #: since with one of being they state the norm ("Normally a fresh diaper is lying on the table")
 #: Each set holds its words as written and as `lexicon.tokens` gives them ("sometimes" ->
-#: "sometime", "always" -> "alway"), since both readers test them on tokens.
-FREQUENCY = frozenset({"often", "frequently", "regularly", "repeatedly", "constantly", "sometimes",
-                       "occasionally", "forever", "sometime"})
+#: "sometime", "always" -> "alway": `as_tokens`), since both readers test them on tokens.
+FREQUENCY = as_tokens({"often", "frequently", "regularly", "repeatedly", "constantly", "sometimes",
+                        "occasionally", "forever"})
 #: adverbs of a norm; said with a verb of resting they make a place a thing's usual one, a home
 #: ("Upon the stove there commonly stands the saucepan", "On the hook usually hangs the key":
 #: `placement`), with one of an event a habit (`habitual`)
-NORM_ADVERBS = frozenset({"usually", "normally", "generally", "typically", "always", "commonly", "ordinarily",
-                          "customarily", "alway"})
+NORM_ADVERBS = as_tokens({"usually", "normally", "generally", "typically", "always", "commonly", "ordinarily",
+                           "customarily"})
 EVENT_VERBS = frozenset({"get", "gets", "got", "getting", "end", "ends", "ended", "ending", "wind", "winds",
                          "wound", "fall", "falls", "roll", "rolls", "slip", "slips", "turn", "turns"})
 #: "tends to <verb>"; "keeps <verb>-ing"
